@@ -1,0 +1,38 @@
+// The `k528` command line (shared/spec/cli.md): shared types of the
+// subcommands. Each subcommand lives in its own cmd_<name>.cpp and is listed
+// in commands.cpp.
+#pragma once
+
+#include <cstdio>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace k528::cli {
+
+// Exit codes everywhere (cli.md): 0 success; 1 the input has errors
+// (diagnostics printed, or the run ended in an alarm); 2 usage or I/O error.
+enum Exit : int { ExitOk = 0, ExitInputErrors = 1, ExitUsage = 2 };
+
+struct Command {
+    std::string_view name;
+    std::string_view usage;   // one line: "check [--json] FILE..."
+    std::string_view summary; // one sentence
+    std::string_view details; // option list shown by `k528 CMD --help`
+    int (*run)(std::span<const std::string> args);
+};
+
+std::span<const Command> commands();
+
+// Prints "k528: <message>" to stderr and returns ExitUsage.
+int usageError(std::string_view message);
+
+// Prints the help of one command to `out`.
+void printCommandHelp(const Command& c, std::FILE* out);
+
+// Reads a whole file; on failure returns false and sets `error` to a message
+// naming the file and the reason.
+bool readFile(const std::string& path, std::string& contents, std::string& error);
+
+} // namespace k528::cli

@@ -1,0 +1,53 @@
+// The table of `k528` subcommands. A new subcommand: write cmd_<name>.cpp with
+// a run function, declare it in cli.h (or here) and add one row.
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "cli.h"
+
+namespace k528::cli {
+
+std::span<const Command> commands() {
+    static const std::vector<Command> table = {
+    };
+    return table;
+}
+
+int usageError(std::string_view message) {
+    std::fprintf(stderr, "k528: %.*s\n", static_cast<int>(message.size()), message.data());
+    std::fprintf(stderr, "Try 'k528 --help'.\n");
+    return ExitUsage;
+}
+
+void printCommandHelp(const Command& c, std::FILE* out) {
+    std::fprintf(out, "Usage: k528 %.*s\n\n%.*s\n", static_cast<int>(c.usage.size()), c.usage.data(),
+                 static_cast<int>(c.summary.size()), c.summary.data());
+    if (!c.details.empty())
+        std::fprintf(out, "\n%.*s", static_cast<int>(c.details.size()), c.details.data());
+}
+
+bool readFile(const std::string& path, std::string& contents, std::string& error) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        error = "cannot read " + path + ": it is a directory";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = "cannot open " + path + ": " + std::strerror(errno);
+        return false;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) {
+        error = "cannot read " + path + ": " + std::strerror(errno);
+        return false;
+    }
+    contents = ss.str();
+    return true;
+}
+
+} // namespace k528::cli

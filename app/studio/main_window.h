@@ -1,0 +1,52 @@
+// The K528 Studio main window: a central work area (program, toolpath) and
+// dock areas for the K923 panel, the machine's control panel, messages and
+// axis state. Later modules put their widgets into these docks.
+#pragma once
+
+#include <QMainWindow>
+
+class QDockWidget;
+class QLabel;
+class QTabWidget;
+class QActionGroup;
+
+namespace k528::studio {
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+
+    // The docks, by role (object names "dock.k923", "dock.machine",
+    // "dock.messages", "dock.axes").
+    QDockWidget* k923Dock() const { return k923Dock_; }
+    QDockWidget* machineDock() const { return machineDock_; }
+    QDockWidget* messagesDock() const { return messagesDock_; }
+    QDockWidget* axesDock() const { return axesDock_; }
+    QTabWidget* workArea() const { return workArea_; }
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void createDocks();
+    void createMenus();
+    void retranslate();
+    QDockWidget* addDock(const char* objectName, Qt::DockWidgetArea area);
+
+    QTabWidget* workArea_ = nullptr;
+    QDockWidget* k923Dock_ = nullptr;
+    QDockWidget* machineDock_ = nullptr;
+    QDockWidget* messagesDock_ = nullptr;
+    QDockWidget* axesDock_ = nullptr;
+    QMenu* fileMenu_ = nullptr;
+    QMenu* viewMenu_ = nullptr;
+    QMenu* languageMenu_ = nullptr;
+    QMenu* helpMenu_ = nullptr;
+    QAction* quitAction_ = nullptr;
+    QAction* aboutAction_ = nullptr;
+    QAction* russianAction_ = nullptr;
+    QAction* englishAction_ = nullptr;
+};
+
+} // namespace k528::studio

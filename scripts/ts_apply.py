@@ -1,0 +1,45 @@
+#!/usr/bin/env python3
+"""Fills translations into a Qt Linguist .ts file.
+
+usage: scripts/ts_apply.py translations/k528studio_ru.ts < pairs.tsv
+
+Each input line is "source<TAB>translation" (\\n for a line break). Every
+message of the .ts file whose source matches gets the translation and loses
+its "unfinished" mark. Prints the sources still untranslated. Run the
+update_translations target first so the .ts file lists the current sources.
+"""
+import sys
+import xml.etree.ElementTree as ET
+
+
+def main() -> int:
+    path = sys.argv[1]
+    pairs = {}
+    for line in sys.stdin:
+        line = line.rstrip("\n")
+        if not line or line.startswith("#"):
+            continue
+        src, _, dst = line.partition("\t")
+        pairs[src.replace("\\n", "\n")] = dst.replace("\\n", "\n")
+    tree = ET.parse(path)
+    missing = []
+    for msg in tree.iter("message"):
+        src = msg.findtext("source")
+        tr = msg.find("translation")
+        if src in pairs:
+            tr.text = pairs[src]
+            tr.attrib.pop("type", None)
+        elif tr.get("type") == "unfinished" or not tr.text:
+            missing.append(src)
+    tree.write(path, encoding="utf-8", xml_declaration=True)
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text.replace("<?xml version='1.0' encoding='utf-8'?>", '<?xml version="1.0" encoding="utf-8"?>\n<!DOCTYPE TS>', 1))
+    for m in missing:
+        print("untranslated:", m.replace("\n", "\\n"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

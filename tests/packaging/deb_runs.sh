@@ -1,0 +1,24 @@
+#!/bin/sh
+# usage: deb_runs.sh PACKAGE_DIR VERSION — unpacks the .deb and runs it.
+set -eu
+dir=$1
+version=$2
+deb=$(ls "$dir"/*.deb | head -n 1)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+dpkg-deb -x "$deb" "$tmp/root"
+fail() { echo "FAIL: $*"; exit 1; }
+for f in usr/bin/k528 usr/bin/k528studio \
+         usr/share/applications/k528studio.desktop \
+         usr/share/icons/hicolor/scalable/apps/k528studio.svg \
+         usr/share/metainfo/io.github.k528studio.K528Studio.metainfo.xml \
+         usr/share/doc/k528studio/copyright; do
+    [ -e "$tmp/root/$f" ] || fail "$f missing from $deb"
+done
+out=$("$tmp/root/usr/bin/k528" --version) || fail "k528 --version exited $?"
+[ "$out" = "k528 $version (K528 Studio)" ] || fail "unexpected version output: $out"
+studio=$(QT_QPA_PLATFORM=offscreen "$tmp/root/usr/bin/k528studio" --version) || fail "k528studio --version failed"
+echo "$studio" | grep -q "$version" || fail "unexpected k528studio version output: $studio"
+depends=$(dpkg-deb -f "$deb" Depends)
+echo "$depends" | grep -q libqt6widgets6 || fail "Depends lacks Qt: $depends"
+echo "ok: $(basename "$deb") unpacks; $out; Depends: $depends"

@@ -1,0 +1,50 @@
+#include <QtTest>
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMenuBar>
+#include <QTabWidget>
+
+#include "language.h"
+#include "main_window.h"
+
+using k528::studio::MainWindow;
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTest");
+        QSettings().clear();
+    }
+    void hasTheDockAreas() {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        for (const char* name : {"dock.k923", "dock.machine", "dock.messages", "dock.axes"}) {
+            auto* dock = w.findChild<QDockWidget*>(name);
+            QVERIFY2(dock, name);
+            QVERIFY(!dock->windowTitle().isEmpty());
+        }
+        QCOMPARE(w.dockWidgetArea(w.k923Dock()), Qt::RightDockWidgetArea);
+        QCOMPARE(w.dockWidgetArea(w.messagesDock()), Qt::BottomDockWidgetArea);
+        QVERIFY(w.workArea());
+    }
+    void switchesLanguageAtRunTime() {
+        QVERIFY(k528::studio::setLanguage("en"));
+        MainWindow w;
+        QCOMPARE(w.windowTitle(), QString("K528 Studio"));
+        QCOMPARE(w.k923Dock()->windowTitle(), QString("K923 operator panel"));
+        QVERIFY(k528::studio::setLanguage("ru"));
+        // QApplication posts LanguageChange to every window: let it arrive.
+        QTRY_COMPARE(w.k923Dock()->windowTitle(), QString("Панель оператора K923"));
+        QCOMPARE(w.menuBar()->actions().first()->text(), QString("&Файл"));
+        QVERIFY(!k528::studio::setLanguage("de"));
+        QCOMPARE(k528::studio::currentLanguage(), QString("ru"));
+        QVERIFY(k528::studio::setLanguage("en"));
+        QTRY_COMPARE(w.k923Dock()->windowTitle(), QString("K923 operator panel"));
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"
