@@ -1,0 +1,92 @@
+#include "axis/mechanics.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace k528::axis {
+
+namespace {
+constexpr double kDacCodesPerVolt = 204.8; // 12-bit ±10 V: code 2048 = 10 V
+constexpr double kMaxVolts = 10.0;
+} // namespace
+
+Mechanics::Mechanics(const MechanicsSettings& s) : s_(s) {
+    motorMm_ = slideMm_ = s.startSlideMm;
+    updateEncoder(motorMm_);
+    markCrossed_ = false;
+}
+
+double Mechanics::driveVolts() const {
+    double u = static_cast<double>(dacCode_) / kDacCodesPerVolt;
+    if (s_.dacWiredInverted)
+        u = -u;
+    return std::clamp(u + s_.driftVolts, -kMaxVolts, kMaxVolts);
+}
+
+void Mechanics::setChannelBroken(int channel, bool broken) {
+    if (channel == 1)
+        channel1Broken_ = broken;
+    else
+        channel2Broken_ = broken;
+}
+
+void Mechanics::pushSlide(double deltaMm) {
+    const double before = motorMm_;
+    slideMm_ += deltaMm;
+    motorMm_ += deltaMm; // a free screw turns with the slide
+    updateEncoder(before);
+}
+
+void Mechanics::tick(double dt) {
+    if (dt != alphaDt_) {
+        alpha_ = s_.timeConstantMs > 0 ? 1.0 - std::exp(-dt / s_.timeConstantMs) : 1.0;
+        alphaDt_ = dt;
+    }
+    // Target motor speed in mm/ms of slide travel.
+    double target = 0;
+    double accelLimit = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
+    if (driveEnabled_) {
+        target = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
+        accelLimit = s_.maxAccelMmPerS2 * 1e-6 * dt;
+        const double change = std::clamp((target - motorSpeed_) * alpha_, -accelLimit, accelLimit);
+        motorSpeed_ += change;
+    } else {
+        // Regulator blocked: the motor coasts down against the brake.
+        if (std::fabs(motorSpeed_) <= accelLimit)
+            motorSpeed_ = 0;
+        else
+            motorSpeed_ -= motorSpeed_ > 0 ? accelLimit : -accelLimit;
+    }
+    if (jammed_)
+        motorSpeed_ = 0;
+    const double before = motorMm_;
+    motorMm_ += motorSpeed_ * dt;
+    // The slide follows the screw once the play is taken up.
+    const double half = s_.backlashMm * 0.5;
+    if (motorMm_ - slideMm_ > half)
+        slideMm_ = motorMm_ - half;
+    else if (slideMm_ - motorMm_ > half)
+        slideMm_ = motorMm_ + half;
+    updateEncoder(before);
+}
+
+void Mechanics::updateEncoder(double previousMotorMm) {
+    const double perCount = s_.mmPerCount();
+    markCrossed_ = false;
+    // Zero marks at motor positions phase + k·lead.
+    const double lead = s_.screwLeadMm;
+    const double k0 = std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
+    const double k1 = std::floor((motorMm_ - s_.zeroMarkPhaseMm) / lead);
+    if (k0 != k1 && !encoderFrozen_ && !channel1Broken_ && !channel2Broken_) {
+        const double markMm = s_.zeroMarkPhaseMm + std::max(k0, k1) * lead;
+        std::int64_t c = static_cast<std::int64_t>(std::llround(markMm / perCount));
+        markCount_ = s_.encoderWiredInverted ? -c : c;
+        markCrossed_ = true;
+    }
+    if (encoderFrozen_ || channel1Broken_ || channel2Broken_)
+        return; // the counter no longer follows the motor
+    std::int64_t c = static_cast<std::int64_t>(std::floor(motorMm_ / perCount));
+    count_ = s_.encoderWiredInverted ? -c : c;
+}
+
+} // namespace k528::axis
