@@ -7,11 +7,33 @@
 #include <sstream>
 
 #include "cli.h"
+#include "program_cli.h"
 
 namespace k528::cli {
 
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
+        {"check", "check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...",
+         "Validate program files: one line per diagnostic, or JSON.",
+         "Options:\n"
+         "  --json               print {\"files\":[{\"file\",\"programs\",\"diagnostics\"}]} (cli.md)\n"
+         "  --number N           number of the program of a file without %L header (default 1)\n"
+         "  --lang ru|en         language of the plain output (default ru)\n"
+         "  --profile NAME|PATH  also check against a machine's constants (software limits,\n"
+         "                       F УСК.АВТ., axes, discretes, nesting limit): built-in name or file\n"
+         "FILE '-' reads standard input. Exit codes: 0 no errors (warnings allowed),\n"
+         "1 errors found, 2 usage or I/O error.\n",
+         runCheck},
+        {"format", "format [--number N] [--lang ru|en] [--in-place | --check] FILE",
+         "Print the canonical text of a program file.",
+         "Options:\n"
+         "  --number N    number of the program of a file without %L header (default 1)\n"
+         "  --lang ru|en  language of error messages (default ru)\n"
+         "  --in-place    rewrite FILE instead of printing\n"
+         "  --check       print nothing; exit 1 if FILE is not in canonical form\n"
+         "A file with syntax errors is not formatted: they are printed on stderr (exit 1).\n"
+         "FILE '-' reads standard input.\n",
+         runFormat},
     };
     return table;
 }

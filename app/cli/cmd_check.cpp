@@ -1,0 +1,188 @@
+// k528 check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...
+// (shared/spec/cli.md; extensions in docs/program-language.md).
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+
+#include "args.h"
+#include "cli.h"
+#include "profile/builtin.h"
+#include "profile/text_format.h"
+#include "program/validator.h"
+#include "program_cli.h"
+#include "util/json.h"
+
+namespace k528::cli {
+
+namespace {
+
+using program::Decimal;
+
+// The constants of a machine profile that a program is checked against.
+// C-parameters of one axis are C(n) for X and C(n + 52) for Z (app. Е):
+// limits C46/C47 are display discretes of the machine system, F УСК.АВТ.
+// C42 is 10 discretes/min; the coordinate components come from the
+// profile's R presets.
+program::AxisLimits axisLimits(const profile::MachineProfile& p, catalog::Axis axis) {
+    program::AxisLimits a;
+    const units::AxisScale scale = profile::axisScale(p, axis);
+    const int decimals = scale.decimals();
+    a.present = profile::axisPresent(p, axis);
+    a.diameter = scale.diameter;
+    a.decimals = decimals;
+    a.softLimits = profile::axisValue(p, axis, 10) == 1;
+    a.minMm = Decimal::fromScaled(profile::axisValue(p, axis, 46), decimals);
+    a.maxMm = Decimal::fromScaled(profile::axisValue(p, axis, 47), decimals);
+    a.maxFeedMmPerMin = Decimal::fromScaled(profile::axisValue(p, axis, 42) * 10, decimals);
+    // Coordinate components preset in R-parameters (app. Л): X even, Z odd.
+    const int z = axis == catalog::Axis::Z ? 1 : 0;
+    auto preset = [&](int r) {
+        const auto it = p.r.find(r + z);
+        return Decimal::fromScaled(it == p.r.end() ? 0 : it->second, decimals);
+    };
+    a.zeroOffsetMm = preset(228);
+    a.dressingMm = preset(224);
+    a.correctionMm = preset(226);
+    a.handwheelMm = preset(230);
+    return a;
+}
+
+bool loadProfile(const std::string& nameOrPath, program::ValidateOptions& options) {
+    try {
+        const profile::MachineProfile p = profile::load(nameOrPath);
+        program::MachineLimits m;
+        m.x = axisLimits(p, catalog::Axis::X);
+        m.z = axisLimits(p, catalog::Axis::Z);
+        options.machine = m;
+        options.nestingLimit = static_cast<int>(p.simulation.getInt("nesting_limit", program::kDefaultNestingLimit));
+        return true;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "k528: %s\n", e.what());
+        return false;
+    }
+}
+
+json::Value fileJson(const std::string& file, const program::CheckResult& r) {
+    json::Value f;
+    f.set("file", file);
+    json::Array programs;
+    for (const int n : r.store.numbers())
+        programs.emplace_back(n);
+    f.set("programs", std::move(programs));
+    json::Array diags;
+    for (const auto& d : r.diagnostics) {
+        json::Value j;
+        j.set("line", d.line);
+        j.set("column", d.column);
+        j.set("end_column", d.endColumn);
+        j.set("severity", d.isError() ? "error" : "warning");
+        j.set("manual_number", d.manualNumber > 0 ? json::Value(d.manualNumber) : json::Value(nullptr));
+        j.set("message_ru", d.messageRu);
+        j.set("message_en", d.messageEn);
+        diags.push_back(std::move(j));
+    }
+    f.set("diagnostics", std::move(diags));
+    return f;
+}
+
+} // namespace
+
+bool parseLang(const std::string& text, Lang& lang) {
+    if (text == "ru")
+        lang = Lang::Ru;
+    else if (text == "en")
+        lang = Lang::En;
+    else
+        return false;
+    return true;
+}
+
+std::string displayName(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+bool readProgramFile(const std::string& path, std::string& contents) {
+    if (path == "-") {
+        contents.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        if (std::cin.bad()) {
+            std::fprintf(stderr, "k528: cannot read standard input\n");
+            return false;
+        }
+        return true;
+    }
+    std::string error;
+    if (!readFile(path, contents, error)) {
+        std::fprintf(stderr, "k528: %s\n", error.c_str());
+        return false;
+    }
+    return true;
+}
+
+void printDiagnostics(std::FILE* out, const std::string& file,
+                      const std::vector<program::Diagnostic>& diagnostics, Lang lang) {
+    for (const auto& d : diagnostics) {
+        const std::string& text = lang == Lang::Ru ? d.messageRu : d.messageEn;
+        std::fprintf(out, "%s:%d:%d: %s: ", file.c_str(), d.line, d.column, d.isError() ? "error" : "warning");
+        if (d.manualNumber > 0)
+            std::fprintf(out, "[M%02d] ", d.manualNumber);
+        std::fprintf(out, "%s\n", text.c_str());
+    }
+}
+
+bool parseProgramNumber(const std::optional<std::string>& value, int& number) {
+    if (!value)
+        return true;
+    const auto n = parseInt(*value);
+    if (!n || *n < 1 || *n > program::kMaxPrograms) {
+        usageError("--number needs a program number 1..99, not '" + *value + "'");
+        return false;
+    }
+    number = static_cast<int>(*n);
+    return true;
+}
+
+int runCheck(std::span<const std::string> argv) {
+    const Args args(argv, {"--json"}, {"--number", "--lang", "--profile"});
+    if (!args.ok())
+        return usageError(args.error());
+    if (args.positional().empty())
+        return usageError("check needs at least one FILE");
+    program::ParseOptions parseOptions;
+    if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
+        return ExitUsage;
+    Lang lang = Lang::Ru;
+    if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
+        return usageError("--lang is ru or en, not '" + *l + "'");
+    program::ValidateOptions options;
+    if (const auto p = args.value("--profile"); p && !loadProfile(*p, options))
+        return ExitUsage;
+
+    const bool asJson = args.has("--json");
+    bool ioError = false;
+    bool errors = false;
+    json::Array files;
+    for (const std::string& path : args.positional()) {
+        std::string text;
+        if (!readProgramFile(path, text)) {
+            ioError = true;
+            continue;
+        }
+        const program::CheckResult r = program::check(text, parseOptions, options);
+        errors = errors || r.hasErrors();
+        if (asJson)
+            files.push_back(fileJson(displayName(path), r));
+        else
+            printDiagnostics(stdout, displayName(path), r.diagnostics, lang);
+    }
+    if (asJson) {
+        json::Value root;
+        root.set("files", std::move(files));
+        std::printf("%s\n", root.dump().c_str());
+    }
+    std::fflush(stdout);
+    if (ioError)
+        return ExitUsage;
+    return errors ? ExitInputErrors : ExitOk;
+}
+
+} // namespace k528::cli

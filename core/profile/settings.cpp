@@ -1,0 +1,278 @@
+#include "profile/settings.h"
+
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+namespace k528::profile {
+
+namespace {
+
+std::string quoted(std::string_view s) {
+    return "'" + std::string(s) + "'";
+}
+
+std::vector<std::pair<std::string, std::string>>::const_iterator
+findEntry(const std::vector<std::pair<std::string, std::string>>& v, std::string_view key) {
+    return std::find_if(v.begin(), v.end(), [&](const auto& e) { return e.first == key; });
+}
+
+bool isBlank(char c) {
+    return c == ' ' || c == '\t';
+}
+
+} // namespace
+
+std::optional<std::int64_t> parseInt(std::string_view t) {
+    if (t.empty())
+        return std::nullopt;
+    std::size_t i = 0;
+    bool neg = false;
+    if (t[0] == '+' || t[0] == '-') {
+        neg = t[0] == '-';
+        i = 1;
+    }
+    if (i >= t.size())
+        return std::nullopt;
+    std::uint64_t v = 0;
+    const auto [p, ec] = std::from_chars(t.data() + i, t.data() + t.size(), v);
+    if (ec != std::errc() || p != t.data() + t.size())
+        return std::nullopt;
+    if (!neg && v > static_cast<std::uint64_t>(INT64_MAX))
+        return std::nullopt;
+    if (neg && v > static_cast<std::uint64_t>(INT64_MAX) + 1)
+        return std::nullopt;
+    return neg ? static_cast<std::int64_t>(0 - v) : static_cast<std::int64_t>(v);
+}
+
+std::optional<double> parseDouble(std::string_view t) {
+    if (t.empty())
+        return std::nullopt;
+    std::size_t i = t[0] == '+' ? 1 : 0;
+    if (i >= t.size())
+        return std::nullopt;
+    double v = 0;
+    const auto [p, ec] = std::from_chars(t.data() + i, t.data() + t.size(), v);
+    if (ec != std::errc() || p != t.data() + t.size() || !std::isfinite(v))
+        return std::nullopt;
+    return v;
+}
+
+std::optional<bool> parseBool(std::string_view t) {
+    if (t == "true" || t == "1" || t == "yes" || t == "on")
+        return true;
+    if (t == "false" || t == "0" || t == "no" || t == "off")
+        return false;
+    return std::nullopt;
+}
+
+std::string formatDouble(double v) {
+    char buf[64];
+    const auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    (void)ec;
+    return std::string(buf, p);
+}
+
+std::string Settings::keyError(std::string_view key) {
+    if (key.empty())
+        return "empty key";
+    if (key.size() > 64)
+        return "key longer than 64 characters";
+    if (!(key[0] >= 'a' && key[0] <= 'z'))
+        return "key " + quoted(key) + " does not start with a letter a-z";
+    for (char ch : key)
+        if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '.'))
+            return "key " + quoted(key) + " has a character other than a-z, 0-9, '_', '.'";
+    return {};
+}
+
+std::string Settings::valueError(std::string_view value) {
+    if (!utf8::isValid(value))
+        return "value is not valid UTF-8";
+    if (utf8::length(value) > 200)
+        return "value longer than 200 characters";
+    for (char ch : value) {
+        if (ch == '\n' || ch == '\r')
+            return "value spans lines";
+        if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t')
+            return "value has a control character";
+        if (ch == ';')
+            return "value has a ';' (starts a comment in machine files)";
+    }
+    if (!value.empty() && (isBlank(value.front()) || isBlank(value.back())))
+        return "value starts or ends with a blank";
+    return {};
+}
+
+void Settings::set(std::string_view key, std::string_view value) {
+    if (auto e = keyError(key); !e.empty())
+        throw SettingError("simulation setting: " + e);
+    if (auto e = valueError(value); !e.empty())
+        throw SettingError("simulation setting " + std::string(key) + ": " + e);
+    for (auto& entry : entries_) {
+        if (entry.first == key) {
+            entry.second = std::string(value);
+            return;
+        }
+    }
+    entries_.emplace_back(std::string(key), std::string(value));
+}
+
+void Settings::setInt(std::string_view key, std::int64_t value) {
+    set(key, std::to_string(value));
+}
+void Settings::setDouble(std::string_view key, double value) {
+    if (!std::isfinite(value))
+        throw SettingError("simulation setting " + std::string(key) + ": not a finite number");
+    set(key, formatDouble(value));
+}
+void Settings::setBool(std::string_view key, bool value) {
+    set(key, value ? "true" : "false");
+}
+
+bool Settings::erase(std::string_view key) {
+    const auto it = findEntry(entries_, key);
+    if (it == entries_.end())
+        return false;
+    entries_.erase(it);
+    return true;
+}
+
+bool Settings::has(std::string_view key) const {
+    return findEntry(entries_, key) != entries_.end();
+}
+
+std::optional<std::string> Settings::find(std::string_view key) const {
+    const auto it = findEntry(entries_, key);
+    if (it == entries_.end())
+        return std::nullopt;
+    return it->second;
+}
+
+std::string Settings::getString(std::string_view key, std::string_view fallback) const {
+    auto v = find(key);
+    return v ? *v : std::string(fallback);
+}
+
+std::int64_t Settings::getInt(std::string_view key, std::int64_t fallback) const {
+    const auto v = find(key);
+    if (!v)
+        return fallback;
+    const auto n = parseInt(*v);
+    if (!n)
+        throw SettingError("simulation setting " + std::string(key) + " = " + quoted(*v) +
+                           ": not a whole number");
+    return *n;
+}
+
+double Settings::getDouble(std::string_view key, double fallback) const {
+    const auto v = find(key);
+    if (!v)
+        return fallback;
+    const auto d = parseDouble(*v);
+    if (!d)
+        throw SettingError("simulation setting " + std::string(key) + " = " + quoted(*v) +
+                           ": not a number");
+    return *d;
+}
+
+bool Settings::getBool(std::string_view key, bool fallback) const {
+    const auto v = find(key);
+    if (!v)
+        return fallback;
+    const auto b = parseBool(*v);
+    if (!b)
+        throw SettingError("simulation setting " + std::string(key) + " = " + quoted(*v) +
+                           ": not true/false");
+    return *b;
+}
+
+std::int64_t Settings::requireInt(std::string_view key) const {
+    if (!has(key))
+        throw SettingError("simulation setting " + std::string(key) + " is missing");
+    return getInt(key, 0);
+}
+
+double Settings::requireDouble(std::string_view key) const {
+    if (!has(key))
+        throw SettingError("simulation setting " + std::string(key) + " is missing");
+    return getDouble(key, 0.0);
+}
+
+namespace {
+
+using T = SettingType;
+
+// clang-format off
+constexpr SimulationKey kKeys[] = {
+    {"tick_ms", T::Int, 1, 100, "1", "ms", "Simulation step: the controller, PLC and machine advance in ticks of this length.", "engine"},
+    {"nesting_limit", T::Int, 1, 99, "8", "", "Deepest subprogram nesting; deeper calls stop the program with message 48.", "engine, program"},
+    {"x.screw_lead_mm", T::Double, 0.01, 1000, "", "mm", "Slide travel per revolution of the ball screw.", "machine, profile calculator"},
+    {"x.gear_ratio", T::Double, 0.001, 1000, "1", "", "Motor (encoder) revolutions per screw revolution.", "machine, profile calculator"},
+    {"x.encoder_lines", T::Int, 1, 1000000, "", "lines/rev", "Encoder lines per motor revolution (the controller counts 4 pulses per line).", "machine, profile calculator"},
+    {"x.drive_max_volts", T::Double, 0.1, 10, "", "V", "Umax: command voltage at which the drive runs at x.drive_max_speed_mm_per_min.", "machine, profile calculator"},
+    {"x.drive_max_speed_mm_per_min", T::Double, 1, 200000, "", "mm/min", "Vmax: slide speed at x.drive_max_volts.", "machine, profile calculator"},
+    {"x.kv", T::Double, 0.01, 100, "", "(m/min)/mm", "Servo gain Kv used to design K(ОШИБ) (manual: 0.75...1.5).", "profile calculator"},
+    {"x.drive_time_constant_ms", T::Double, 0, 1000, "", "ms", "First-order lag of the drive's speed response.", "axis"},
+    {"z.screw_lead_mm", T::Double, 0.01, 1000, "", "mm", "As x.screw_lead_mm, for Z.", "machine, profile calculator"},
+    {"z.gear_ratio", T::Double, 0.001, 1000, "1", "", "As x.gear_ratio, for Z.", "machine, profile calculator"},
+    {"z.encoder_lines", T::Int, 1, 1000000, "", "lines/rev", "As x.encoder_lines, for Z.", "machine, profile calculator"},
+    {"z.drive_max_volts", T::Double, 0.1, 10, "", "V", "As x.drive_max_volts, for Z.", "machine, profile calculator"},
+    {"z.drive_max_speed_mm_per_min", T::Double, 1, 200000, "", "mm/min", "As x.drive_max_speed_mm_per_min, for Z.", "machine, profile calculator"},
+    {"z.kv", T::Double, 0.01, 100, "", "(m/min)/mm", "As x.kv, for Z.", "profile calculator"},
+    {"z.drive_time_constant_ms", T::Double, 0, 1000, "", "ms", "As x.drive_time_constant_ms, for Z.", "axis"},
+    {"handwheel1.lines", T::Int, 1, 10000, "100", "pulses/rev", "Pulses per revolution of handwheel 1.", "machine"},
+    {"handwheel2.lines", T::Int, 1, 10000, "100", "pulses/rev", "Pulses per revolution of handwheel 2.", "machine"},
+};
+// clang-format on
+
+} // namespace
+
+std::span<const SimulationKey> simulationKeys() {
+    return kKeys;
+}
+
+const SimulationKey* findSimulationKey(std::string_view key) {
+    for (const SimulationKey& k : kKeys)
+        if (k.key == key)
+            return &k;
+    return nullptr;
+}
+
+std::string checkSimulationValue(std::string_view key, std::string_view value) {
+    const SimulationKey* k = findSimulationKey(key);
+    if (!k)
+        return {};
+    const auto range = [&](double v) -> std::string {
+        if (v < k->min || v > k->max)
+            return "value " + std::string(value) + " is outside " + formatDouble(k->min) + ".." +
+                   formatDouble(k->max);
+        return {};
+    };
+    switch (k->type) {
+    case SettingType::Int: {
+        const auto n = parseInt(value);
+        if (!n)
+            return "value " + quoted(value) + " is not a whole number";
+        return range(static_cast<double>(*n));
+    }
+    case SettingType::Double: {
+        const auto d = parseDouble(value);
+        if (!d)
+            return "value " + quoted(value) + " is not a number";
+        return range(*d);
+    }
+    case SettingType::Bool:
+        if (!parseBool(value))
+            return "value " + quoted(value) + " is not true/false";
+        return {};
+    case SettingType::String:
+        return {};
+    }
+    return {};
+}
+
+} // namespace k528::profile

@@ -1,0 +1,466 @@
+#include "profile/validate.h"
+
+#include "catalog/rparams.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+namespace k528::profile {
+
+namespace cat = k528::catalog;
+namespace cc = k528::catalog::c;
+
+namespace {
+
+std::string num(std::int64_t v) {
+    return std::to_string(v);
+}
+
+std::string cKey(int n) {
+    return cat::cParam(n).key();
+}
+
+std::string keys(std::vector<int> ns) {
+    std::sort(ns.begin(), ns.end());
+    std::string s;
+    for (int n : ns) {
+        if (!s.empty())
+            s += ",";
+        s += cKey(n);
+    }
+    return s;
+}
+
+// «N ДОС» (C017)
+std::string named(int n) {
+    return "«" + std::string(cat::cParam(n).name) + "» (" + cKey(n) + ")";
+}
+
+std::string range(const cat::CParamDef& d) {
+    return num(d.min) + "..." + num(d.max);
+}
+
+// Text checks shared by messages, PLC texts and titles: "" or the problem.
+std::string lineTextError(std::string_view text, std::size_t maxChars, bool allowLeadingBlank) {
+    if (text.empty())
+        return "text is empty";
+    if (!utf8::isValid(text))
+        return "text is not valid UTF-8";
+    for (char ch : text)
+        if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
+            return "text has a control character or line break";
+    const std::size_t len = utf8::length(text);
+    if (len > maxChars)
+        return "text has " + std::to_string(len) + " characters, more than " +
+               std::to_string(maxChars);
+    if (text.back() == ' ')
+        return "text ends with a blank";
+    if (!allowLeadingBlank && text.front() == ' ')
+        return "text starts with a blank";
+    return {};
+}
+
+struct Collector {
+    std::vector<Finding> out;
+    void add(Severity s, std::vector<int> cs, std::optional<int> msg, std::string subject,
+             std::string ru, std::string en) {
+        std::sort(cs.begin(), cs.end());
+        out.push_back(
+            Finding{s, std::move(cs), msg, std::move(subject), std::move(ru), std::move(en)});
+    }
+    void addC(Severity s, std::vector<int> cs, std::optional<int> msg, std::string ru,
+              std::string en) {
+        std::string subject = keys(cs);
+        add(s, std::move(cs), msg, std::move(subject), std::move(ru), std::move(en));
+    }
+};
+
+// The manual message that reports a bad value of parameter n (15 unless a
+// dedicated one exists).
+int rangeMessage(int n) {
+    switch (n) {
+    case cc::kEncoderL:
+    case cc::kEncoderN:
+        return 13;
+    case cc::kEncoderL + cat::kAxisBlock:
+    case cc::kEncoderN + cat::kAxisBlock:
+        return 29;
+    case cc::kEncoderChannel:
+    case cc::kEncoderChannel + cat::kAxisBlock:
+        return 37;
+    case cc::kDacChannel:
+    case cc::kDacChannel + cat::kAxisBlock:
+        return 38;
+    case cc::kWheel1Channel:
+    case cc::kWheel2Channel:
+        return 39;
+    default:
+        return 15;
+    }
+}
+
+void checkAxis(Collector& col, std::span<const std::int64_t> c, cat::Axis axis) {
+    const auto P = [&](int x) { return cat::axisParam(x, axis); };
+    const auto V = [&](int x) { return c[static_cast<std::size_t>(P(x))]; };
+    const std::string ax(cat::axisName(axis));
+    const std::string osi = "Ось " + ax + ": ";
+    const std::string axisEn = "Axis " + ax + ": ";
+
+    // One display discrete (message 15: the manual has no message of its own).
+    const int flags = static_cast<int>((V(cc::kDiscrete0001) == 1) + (V(cc::kDiscrete001) == 1) +
+                                       (V(cc::kDiscrete01) == 1));
+    if (flags != 1)
+        col.addC(Severity::Error, {P(4), P(5), P(6)}, 15,
+                 osi + "должна быть задана ровно одна дискрета (" + keys({P(4), P(5), P(6)}) +
+                     "), задано " + std::to_string(flags),
+                 axisEn + "exactly one display discrete must be set (" + keys({P(4), P(5), P(6)}) +
+                     "), " + std::to_string(flags) + " set");
+
+    // L/N: the range check reports 0 or > 32767 with 13/29; a ratio above 1
+    // means one encoder pulse is more than one discrete.
+    const std::int64_t L = V(cc::kEncoderL), N = V(cc::kEncoderN);
+    if (L >= 1 && N >= 1 && L <= 32767 && N <= 32767 && L > N)
+        col.addC(Severity::Warning, {P(19), P(20)}, std::nullopt,
+                 osi + "L/N = " + num(L) + "/" + num(N) +
+                     " больше 1: один импульс ДОС больше дискреты, ось не позиционируется точнее " +
+                     "импульса",
+                 axisEn + "L/N = " + num(L) + "/" + num(N) +
+                     " is above 1: one encoder pulse is more than a discrete, the axis cannot "
+                     "position " +
+                     "finer than a pulse");
+
+    // ПРЕДЕЛ ЦАП against МАКС.ЦАП: 15-20 % above (table Е.1, parameter 28).
+    const std::int64_t limit = V(cc::kDacLimit), dmax = V(cc::kDacMax);
+    const int alarm = axis == cat::Axis::X ? 6 : 22;
+    if (dmax == 0) {
+        col.addC(Severity::Warning, {P(29)}, std::nullopt,
+                 osi + "МАКС.ЦАП = 0: привод не получит напряжения",
+                 axisEn + "DAC MAX = 0: the drive gets no voltage");
+    } else if (limit < dmax) {
+        col.addC(Severity::Error, {P(28), P(29)}, alarm,
+                 osi + "ПРЕДЕЛ ЦАП " + num(limit) + " меньше МАКС.ЦАП " + num(dmax) +
+                     ": на максимальной скорости будет сообщение " + std::to_string(alarm),
+                 axisEn + "DAC LIMIT " + num(limit) + " is below DAC MAX " + num(dmax) +
+                     ": message " + std::to_string(alarm) + " at full speed");
+    } else {
+        const auto lo = units::roundHalfAway(1.15 * static_cast<double>(dmax));
+        const auto hi = units::roundHalfAway(1.20 * static_cast<double>(dmax));
+        if (limit < lo || limit > hi)
+            col.addC(Severity::Warning, {P(28), P(29)}, std::nullopt,
+                     osi + "ПРЕДЕЛ ЦАП " + num(limit) + " не на 15-20 % выше МАКС.ЦАП " +
+                         num(dmax) + " (рекомендуется " + num(lo) + "..." + num(hi) + ")",
+                     axisEn + "DAC LIMIT " + num(limit) + " is not 15-20 % above DAC MAX " +
+                         num(dmax) + " (recommended " + num(lo) + "..." + num(hi) + ")");
+    }
+
+    // Motion constants a working axis needs.
+    if (V(cc::kAccel1) == 0)
+        col.addC(Severity::Warning, {P(22)}, std::nullopt, osi + "УСКОРЕНИЕ 1 = 0",
+                 axisEn + "ACCELERATION 1 = 0");
+    for (int x : {cc::kFeedNormal, cc::kFeedAutoRapid})
+        if (V(x) == 0)
+            col.addC(Severity::Warning, {P(x)}, std::nullopt,
+                     osi + std::string(cat::cParam(P(x)).name) + " = 0: ось не будет двигаться",
+                     axisEn + std::string(cat::cParam(P(x)).nameEn) +
+                         " = 0: the axis will not move");
+    if (V(cc::kAutoWithoutHoming) == 0) {
+        if (V(cc::kFeedHomeStart) == 0 || V(cc::kFeedHomeCreep) == 0)
+            col.addC(
+                Severity::Warning, {P(43), P(44)}, std::nullopt,
+                osi +
+                    "нулевая скорость привязки к базовой точке, а пуск программы требует привязки",
+                axisEn + "a homing speed is zero, yet programs need the axis homed");
+        else if (V(cc::kFeedHomeCreep) > V(cc::kFeedHomeStart))
+            col.addC(Severity::Warning, {P(43), P(44)}, std::nullopt,
+                     osi + "F ОТКЛ.БТ больше F СТАРТ БТ",
+                     axisEn + "F HOME CREEP is above F HOME START");
+    }
+
+    // Software limits.
+    if (V(cc::kSoftLimitsOn) == 1) {
+        const std::int64_t lo = V(cc::kLimitMinus), hi = V(cc::kLimitPlus),
+                           home = V(cc::kHomeValue);
+        if (lo >= hi)
+            col.addC(Severity::Error, {P(46), P(47)}, std::nullopt,
+                     osi + "-ОГРАНИЧЕН " + num(lo) + " не меньше +ОГРАНИЧЕН " + num(hi),
+                     axisEn + "-LIMIT " + num(lo) + " is not below +LIMIT " + num(hi));
+        else if (home < lo || home > hi)
+            col.addC(Severity::Warning, {P(45), P(46), P(47)}, std::nullopt,
+                     osi + "ЗНАЧЕНИЕ БТ " + num(home) + " вне программных конечников " + num(lo) +
+                         "..." + num(hi),
+                     axisEn + "HOME VALUE " + num(home) + " is outside the soft limits " + num(lo) +
+                         "..." + num(hi));
+    }
+
+    // Fast inputs of the axis' module: one function per input.
+    const int first = axis == cat::Axis::X ? cc::kFastInputX1 : cc::kFastInputZ1;
+    for (int i = 0; i < 8; ++i) {
+        const auto fi = c[static_cast<std::size_t>(first + i)];
+        if (fi == 0)
+            continue;
+        for (int j = i + 1; j < 8; ++j)
+            if (c[static_cast<std::size_t>(first + j)] == fi)
+                col.addC(Severity::Warning, {first + i, first + j}, std::nullopt,
+                         osi + "функция " + num(fi) + " назначена двум быстрым входам",
+                         axisEn + "function " + num(fi) + " is assigned to two fast inputs");
+    }
+}
+
+} // namespace
+
+std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
+                                  const std::map<int, std::string>* programs) {
+    Collector col;
+    if (c.size() < static_cast<std::size_t>(cat::kCParamCount + 1)) {
+        col.add(Severity::Error, {}, 15, "C", "Неполный набор С-параметров",
+                "Incomplete set of C-parameters");
+        return col.out;
+    }
+    const auto V = [&](int n) { return c[static_cast<std::size_t>(n)]; };
+
+    // Every value against its definition.
+    for (const cat::CParamDef& d : cat::cParams()) {
+        const std::int64_t v = V(d.number);
+        if (d.inRange(v))
+            continue;
+        col.addC(
+            Severity::Error, {d.number}, rangeMessage(d.number),
+            d.key() + " «" + std::string(d.name) + "» = " + num(v) + " вне диапазона " + range(d),
+            d.key() + " " + std::string(d.nameEn) + " = " + num(v) + " is outside " + range(d));
+    }
+
+    const bool px = V(cc::kAxisPresent) == 1;
+    const bool pz = V(cat::axisParam(cc::kAxisPresent, cat::Axis::Z)) == 1;
+    if (px)
+        checkAxis(col, c, cat::Axis::X);
+    if (pz)
+        checkAxis(col, c, cat::Axis::Z);
+    if (!px && !pz)
+        col.addC(Severity::Warning, {1, 53}, std::nullopt, "Нет ни одной оси (НАЛИЧ.ОСИ = 0)",
+                 "No axis is present (AXIS PRESENT = 0)");
+
+    // Channels of the two СР34.23 modules: encoders of present axes and the
+    // two handwheels each need their own channel (37); DACs of present axes
+    // their own DAC channel (38); the handwheels two channels (39).
+    const int encX = cc::kEncoderChannel, encZ = cat::axisParam(cc::kEncoderChannel, cat::Axis::Z);
+    const int dacX = cc::kDacChannel, dacZ = cat::axisParam(cc::kDacChannel, cat::Axis::Z);
+    const auto valid14 = [&](int n) { return V(n) >= 1 && V(n) <= 4; };
+    if (px && pz && valid14(encX) && V(encX) == V(encZ))
+        col.addC(Severity::Error, {encX, encZ}, 37,
+                 "Оба ДОС подключены к одному каналу " + num(V(encX)) + " (" + named(encX) + ", " +
+                     named(encZ) + ")",
+                 "Both encoders are on channel " + num(V(encX)) + " (" + keys({encX, encZ}) + ")");
+    for (int wheel : {cc::kWheel1Channel, cc::kWheel2Channel}) {
+        if (!valid14(wheel))
+            continue;
+        for (auto [present, enc] : {std::pair{px, encX}, std::pair{pz, encZ}})
+            if (present && V(enc) == V(wheel))
+                col.addC(Severity::Error, {enc, wheel}, 37,
+                         "Маховик и ДОС подключены к одному каналу " + num(V(wheel)) + " (" +
+                             named(wheel) + ", " + named(enc) + ")",
+                         "A handwheel and an encoder are on channel " + num(V(wheel)) + " (" +
+                             keys({wheel, enc}) + ")");
+    }
+    if (px && pz && valid14(dacX) && V(dacX) == V(dacZ))
+        col.addC(Severity::Error, {dacX, dacZ}, 38,
+                 "Оба привода подключены к одному каналу ЦАП " + num(V(dacX)) + " (" + named(dacX) +
+                     ", " + named(dacZ) + ")",
+                 "Both drives are on DAC channel " + num(V(dacX)) + " (" + keys({dacX, dacZ}) +
+                     ")");
+    if (valid14(cc::kWheel1Channel) && V(cc::kWheel1Channel) == V(cc::kWheel2Channel))
+        col.addC(Severity::Error, {cc::kWheel1Channel, cc::kWheel2Channel}, 39,
+                 "Оба маховика подключены к одному каналу " + num(V(cc::kWheel1Channel)),
+                 "Both handwheels are on channel " + num(V(cc::kWheel1Channel)));
+
+    // Manual cycles started by the PLC run programs of the profile (45).
+    if (programs) {
+        for (int k = 0; k < 8; ++k) {
+            const int n = cc::kManualCycle1 + k;
+            const auto prog = V(n);
+            if (prog >= 1 && prog <= 99 && !programs->contains(static_cast<int>(prog)))
+                col.addC(Severity::Warning, {n}, 45,
+                         "Ручной цикл " + std::to_string(k + 1) + ": программы L" + num(prog) +
+                             " нет",
+                         "Manual cycle " + std::to_string(k + 1) + ": program L" + num(prog) +
+                             " does not exist");
+        }
+    }
+    return col.out;
+}
+
+std::optional<int> programHeaderNumber(std::string_view line) {
+    std::size_t i = 0;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+        ++i;
+    if (i + 2 > line.size() || line[i] != '%' || (line[i + 1] != 'L' && line[i + 1] != 'l'))
+        return std::nullopt;
+    i += 2;
+    const std::size_t start = i;
+    int n = 0;
+    while (i < line.size() && line[i] >= '0' && line[i] <= '9' && i - start < 6)
+        n = n * 10 + (line[i++] - '0');
+    if (i == start)
+        return std::nullopt;
+    if (i < line.size() && line[i] >= '0' && line[i] <= '9')
+        return std::nullopt;
+    return n;
+}
+
+std::string checkName(std::string_view name) {
+    if (name.empty())
+        return "name is empty";
+    if (name.size() > 64)
+        return "name longer than 64 characters";
+    const auto alnum = [](char ch) { return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9'); };
+    if (!alnum(name[0]))
+        return "name '" + std::string(name) + "' does not start with a-z or 0-9";
+    for (char ch : name)
+        if (!alnum(ch) && ch != '-' && ch != '_' && ch != '.')
+            return "name '" + std::string(name) +
+                   "' has a character other than a-z, 0-9, '-', '_', '.'";
+    return {};
+}
+
+std::string checkTitle(std::string_view title) {
+    if (title.empty())
+        return {};
+    auto e = lineTextError(title, 120, false);
+    return e.empty() ? e : "title: " + e;
+}
+
+std::string checkCValue(int number, std::int64_t value) {
+    const cat::CParamDef* d = cat::findCParam(number);
+    if (!d)
+        return "no C-parameter " + std::to_string(number) + " (1..152)";
+    if (!d->inRange(value))
+        return d->key() + " = " + num(value) + " is outside the range " + range(*d) + " of «" +
+               std::string(d->name) + "»";
+    return {};
+}
+
+std::string checkRPreset(int number, std::int64_t value) {
+    const cat::RParamDef* d = cat::findRParam(number);
+    if (!d)
+        return "no R-parameter " + std::to_string(number) + " (0..299)";
+    if (d->readOnly())
+        return "R" + std::to_string(number) + " is read-only (R232..R262): it cannot be preset";
+    if (value < cat::kRMin || value > cat::kRMax)
+        return "R" + std::to_string(number) + " = " + num(value) + " is outside the 32-bit range";
+    return {};
+}
+
+std::string checkProgram(int number, std::string_view text) {
+    if (number < 1 || number > 99)
+        return "program number " + std::to_string(number) + " is outside 1..99";
+    const std::string l = "program L" + std::to_string(number) + ": ";
+    if (text.empty())
+        return l + "empty";
+    if (!utf8::isValid(text))
+        return l + "not valid UTF-8";
+    if (text.back() != '\n')
+        return l + "the text does not end with a line break";
+    if (text.find('\r') != std::string_view::npos)
+        return l + "carriage return in the text (lines end with LF)";
+    std::size_t pos = 0;
+    int lineNo = 0;
+    bool nonBlank = false;
+    while (pos < text.size()) {
+        const std::size_t end = text.find('\n', pos);
+        const std::string_view line = text.substr(pos, end - pos);
+        ++lineNo;
+        pos = end + 1;
+        const auto firstChar = line.find_first_not_of(" \t");
+        if (firstChar != std::string_view::npos && line[firstChar] == '[')
+            return l + "line " + std::to_string(lineNo) +
+                   " starts with '[' (reserved for machine-file sections)";
+        if (line.find_first_not_of(" \t") != std::string_view::npos)
+            nonBlank = true;
+        if (auto h = programHeaderNumber(line); h && *h != number)
+            return l + "line " + std::to_string(lineNo) + " is the header of program L" +
+                   std::to_string(*h) + " (one program per entry)";
+        std::string up = utf8::toUpper(line);
+        const auto first = up.find_first_not_of(" \t");
+        if (first != std::string::npos && up.compare(first, 9, "%MESSAGES") == 0)
+            return l + "line " + std::to_string(lineNo) +
+                   ": %MESSAGES belongs to the machine file's [messages] section";
+    }
+    if (!nonBlank)
+        return l + "only blank lines";
+    return {};
+}
+
+std::string checkMessage(int number, std::string_view text) {
+    if (number < 1 || number > cat::kTechMessageCount)
+        return "technological message number " + std::to_string(number) + " is outside 1..99";
+    auto e = lineTextError(text, cat::kTechMessageMaxChars, true);
+    return e.empty() ? e : "message #" + std::to_string(number) + ": " + e;
+}
+
+std::string checkPlcText(cat::PlcGroup group, int k, std::string_view text) {
+    const int count = cat::plcMessageCount(group);
+    const std::string key =
+        std::string(1, cat::plcGroupLetter(group)) + (k < 10 ? "0" : "") + std::to_string(k);
+    if (k < 1 || k > count)
+        return "PLC message " + key + " is outside 1.." + std::to_string(count);
+    auto e = lineTextError(text, cat::kPlcMessageMaxChars, true);
+    return e.empty() ? e : "PLC message " + key + ": " + e;
+}
+
+std::string checkSetting(std::string_view key, std::string_view value) {
+    if (auto e = Settings::keyError(key); !e.empty())
+        return "simulation: " + e;
+    if (auto e = Settings::valueError(value); !e.empty())
+        return "simulation " + std::string(key) + ": " + e;
+    if (auto e = checkSimulationValue(key, value); !e.empty())
+        return "simulation " + std::string(key) + ": " + e;
+    return {};
+}
+
+std::vector<Finding> validate(const MachineProfile& p) {
+    std::vector<Finding> out = checkCParams(p.cValues(), &p.programs);
+    Collector col;
+    const auto item = [&](const std::string& problem, std::string subject) {
+        if (!problem.empty())
+            col.add(Severity::Error, {}, std::nullopt, std::move(subject), problem, problem);
+    };
+    for (const auto& [n, v] : p.r)
+        item(checkRPreset(n, v), "R" + std::to_string(n));
+    for (const auto& [n, text] : p.programs)
+        item(checkProgram(n, text), "L" + std::to_string(n));
+    for (const auto& [n, text] : p.messages)
+        item(checkMessage(n, text), "#" + std::to_string(n));
+    for (cat::PlcGroup g : cat::kPlcGroups)
+        for (const auto& [k, text] : p.plcTexts(g))
+            item(checkPlcText(g, k, text),
+                 std::string(1, cat::plcGroupLetter(g)) + (k < 10 ? "0" : "") + std::to_string(k));
+    for (const auto& [key, value] : p.simulation.entries()) {
+        item(checkSetting(key, value), "simulation " + key);
+        if (Settings::keyError(key).empty() && !findSimulationKey(key))
+            col.add(Severity::Warning, {}, std::nullopt, "simulation " + key,
+                    "Параметр моделирования " + key + " не из реестра (опечатка?)",
+                    "Simulation setting " + key + " is not in the registry (a typo?)");
+    }
+    item(checkName(p.name), "name");
+    item(checkTitle(p.title), "title");
+    out.insert(out.end(), col.out.begin(), col.out.end());
+    return out;
+}
+
+bool hasErrors(const std::vector<Finding>& findings) {
+    return std::any_of(findings.begin(), findings.end(),
+                       [](const Finding& f) { return f.severity == Severity::Error; });
+}
+
+std::string formatFinding(const Finding& f) {
+    std::string s = f.severity == Severity::Error ? "error" : "warning";
+    if (f.message)
+        s += " [M" + std::to_string(*f.message) + "]";
+    if (!f.subject.empty())
+        s += " " + f.subject;
+    return s + ": " + f.textEn;
+}
+
+} // namespace k528::profile

@@ -1,0 +1,1100 @@
+#include "program/parser.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "program/gfunctions.h"
+#include "program/text_util.h"
+#include "util/utf8.h"
+
+namespace k528::program {
+
+namespace {
+
+using text::isDigit;
+using text::isSpace;
+using text::upper;
+
+// At most this many errors are reported on one line; the rest of a line
+// that bad is noise (documented in docs/program-language.md).
+constexpr int kMaxErrorsPerLine = 8;
+
+std::string quote(std::string_view s) {
+    std::string q = "«";
+    q += s;
+    q += "»";
+    return q;
+}
+
+std::string squote(std::string_view s) {
+    std::string q = "'";
+    q += s;
+    q += "'";
+    return q;
+}
+
+class Parser {
+public:
+    Parser(std::string_view text, const ParseOptions& options, ParseResult& out)
+        : text_(text), options_(options), out_(out) {}
+
+    void run();
+
+private:
+    enum class Section { Implicit, Program, Scratch, Messages };
+
+    // --- input -----------------------------------------------------------------
+    std::string_view text_;
+    ParseOptions options_;
+    ParseResult& out_;
+
+    // --- the current line --------------------------------------------------------
+    std::string_view line_;
+    int lineNo_ = 0;
+    bool lineAscii_ = true;
+    std::size_t colPos_ = 0; // column cache: byte offset ...
+    int colCol_ = 1;         // ... and its column
+    int lineErrors_ = 0;
+
+    // --- state ---------------------------------------------------------------------
+    Section section_ = Section::Implicit;
+    Program current_;                  // the program being read (Implicit, Program, Scratch)
+    int currentDiagProgram_ = 0;       // program number for diagnostics
+    std::vector<TriviaLine> pending_;  // trivia since the last frame / entry / header
+    bool sawProgramHeader_ = false;
+    bool implicitStored_ = false;  // the headerless program went into the store
+    bool anythingRead_ = false;    // a non-blank line was read
+    SourceSpan implicitFirst_;     // the first frame of the headerless part
+    std::array<int, kMaxPrograms + 1> programLine_{}; // header line of each program read
+    std::array<int, kMaxMessages + 1> messageLine_{};
+
+    // --- positions and diagnostics ---------------------------------------------------
+    int col(std::size_t pos) {
+        if (lineAscii_)
+            return static_cast<int>(pos) + 1;
+        if (pos < colPos_) {
+            colPos_ = 0;
+            colCol_ = 1;
+        }
+        colCol_ += static_cast<int>(utf8::length(line_.substr(colPos_, pos - colPos_)));
+        colPos_ = pos;
+        return colCol_;
+    }
+
+    ColSpan span(std::size_t b, std::size_t e) {
+        ColSpan s;
+        s.column = col(b);
+        s.endColumn = col(e > line_.size() ? line_.size() : e);
+        if (s.endColumn <= s.column)
+            s.endColumn = s.column + 1;
+        return s;
+    }
+
+    void report(Rule rule, int manual, std::size_t b, std::size_t e, std::string ru, std::string en,
+                Severity severity = Severity::Error) {
+        if (severity == Severity::Error && ++lineErrors_ > kMaxErrorsPerLine)
+            return;
+        Diagnostic d;
+        d.rule = rule;
+        d.severity = severity;
+        d.program = currentDiagProgram_;
+        d.line = lineNo_;
+        const ColSpan s = span(b, e);
+        d.column = s.column;
+        d.endColumn = s.endColumn;
+        d.manualNumber = manual;
+        d.messageRu = std::move(ru);
+        d.messageEn = std::move(en);
+        out_.diagnostics.push_back(std::move(d));
+    }
+
+    // --- lexing helpers ----------------------------------------------------------------
+    char at(std::size_t i) const { return i < line_.size() ? line_[i] : '\0'; }
+    void skipSpaces(std::size_t& i) const {
+        while (i < line_.size() && isSpace(line_[i]))
+            ++i;
+    }
+    bool keyword(std::size_t i, std::string_view kw) const {
+        if (i + kw.size() > line_.size())
+            return false;
+        for (std::size_t k = 0; k < kw.size(); ++k)
+            if (upper(line_[i + k]) != kw[k])
+                return false;
+        return true;
+    }
+    // Skips spaces and comments; comments are appended to `comments`.
+    // Returns false if an unclosed '(' was met (reported; the rest of the
+    // line is taken as its text).
+    void skipTrivia(std::size_t& i, std::vector<Comment>& comments);
+    // The end of a number lexeme: sign, digits and points.
+    std::size_t numberEnd(std::size_t i) const {
+        if (i < line_.size() && (line_[i] == '+' || line_[i] == '-'))
+            ++i;
+        while (i < line_.size() && (isDigit(line_[i]) || line_[i] == '.'))
+            ++i;
+        return i;
+    }
+    // Moves past an unreadable word to the next plausible word start.
+    std::size_t resync(std::size_t i) const {
+        if (i < line_.size())
+            i += text::sequenceLength(line_, i);
+        while (i < line_.size()) {
+            const char c = line_[i];
+            if ((upper(c) >= 'A' && upper(c) <= 'Z') || c == '#' || c == '(' || c == ';' ||
+                isSpace(c))
+                break;
+            i += text::sequenceLength(line_, i);
+        }
+        return i;
+    }
+
+    // --- lines ------------------------------------------------------------------------
+    std::size_t pos_ = 0; // start of the next line in text_
+    // Lines from here to the next header: room for the program's frames.
+    std::size_t estimateFrames() const {
+        std::size_t n = 1;
+        for (std::size_t p = pos_; p < text_.size() && n <= static_cast<std::size_t>(kMaxFrames);) {
+            const std::size_t eol = text_.find('\n', p);
+            if (eol == std::string_view::npos || eol + 1 >= text_.size() || text_[eol + 1] == '%')
+                break;
+            ++n;
+            p = eol + 1;
+        }
+        return n;
+    }
+    void processLine();
+    void headerLine(std::size_t i);
+    void programHeader(std::size_t start, std::size_t i);
+    void messagesHeader(std::size_t start, std::size_t i);
+    void messageLine(std::size_t i);
+    void frameLine(std::size_t i);
+    void reportBadCharacter(std::size_t i, Frame& f);
+
+    // Words of a frame. Each returns false after reporting an error.
+    bool intWord(std::size_t& i, std::size_t start, std::string_view name, Word& w, int manual = 0);
+    bool value(std::size_t& i, std::size_t start, std::string_view name, Value& v, int manual);
+    bool operand(std::size_t& i, Operand& o, std::vector<Comment>& comments);
+    void isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
+    void computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
+    void ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
+    void gotoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
+    bool jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comments);
+    void expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::string_view kindEn);
+
+    // --- sections ---------------------------------------------------------------------
+    void beginSection(); // before a header: closes the current section
+    void closeSection(std::vector<TriviaLine> trailing);
+    void frameOutsideProgram();
+};
+
+// ----------------------------------------------------------------------------------------
+
+void Parser::skipTrivia(std::size_t& i, std::vector<Comment>& comments) {
+    while (i < line_.size()) {
+        const char c = line_[i];
+        if (isSpace(c)) {
+            ++i;
+        } else if (c == ';') {
+            std::string_view t = line_.substr(i + 1);
+            while (!t.empty() && isSpace(t.back()))
+                t.remove_suffix(1);
+            comments.push_back({Comment::Style::Semicolon, std::string(t)});
+            i = line_.size();
+        } else if (c == '(') {
+            const std::size_t close = line_.find(')', i + 1);
+            if (close == std::string_view::npos) {
+                report(Rule::UnclosedComment, 0, i, line_.size(),
+                       "Комментарий не закрыт: нет «)» до конца строки",
+                       "comment not closed: no ')' before the end of the line");
+                comments.push_back({Comment::Style::Parens, std::string(line_.substr(i + 1))});
+                i = line_.size();
+            } else {
+                comments.push_back({Comment::Style::Parens, std::string(line_.substr(i + 1, close - i - 1))});
+                i = close + 1;
+            }
+        } else {
+            break;
+        }
+    }
+}
+
+void Parser::run() {
+    currentDiagProgram_ = options_.programNumber;
+    current_.number = options_.programNumber;
+    std::size_t pos = 0;
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") // a UTF-8 byte order mark
+        pos = 3;
+    while (pos < text_.size()) {
+        std::size_t eol = text_.find('\n', pos);
+        if (eol == std::string_view::npos)
+            eol = text_.size();
+        line_ = text_.substr(pos, eol - pos);
+        if (!line_.empty() && line_.back() == '\r')
+            line_.remove_suffix(1);
+        ++lineNo_;
+        pos_ = eol + 1;
+        processLine();
+        pos = eol + 1;
+    }
+    // End of text: close what is open.
+    closeSection(std::move(pending_));
+    out_.store.headerless = !sawProgramHeader_;
+}
+
+void Parser::processLine() {
+    lineErrors_ = 0;
+    lineAscii_ = text::isAscii(line_);
+    colPos_ = 0;
+    colCol_ = 1;
+    if (!lineAscii_ && !utf8::isValid(line_)) {
+        const std::size_t bad = text::firstInvalidUtf8(line_);
+        report(Rule::InvalidUtf8, 0, bad, bad + 1,
+               "Недопустимая последовательность байтов: текст программы должен быть в UTF-8",
+               "invalid byte sequence: program text must be UTF-8");
+    }
+    std::size_t i = 0;
+    skipSpaces(i);
+    if (i == line_.size()) {
+        // Blank lines: runs count as one, and none at the start of the text
+        // (the formatter writes them so; the model stays canonical).
+        if (pending_.empty() ? anythingRead_ : !pending_.back().blank())
+            pending_.emplace_back();
+        return;
+    }
+    anythingRead_ = true;
+    if (line_[i] == '%') {
+        headerLine(i);
+        return;
+    }
+    if (section_ == Section::Messages && line_[i] == '#') {
+        messageLine(i);
+        return;
+    }
+    frameLine(i);
+}
+
+// --- sections ----------------------------------------------------------------------------
+
+void Parser::frameOutsideProgram() {
+    // A %L header after frames that had none: those frames belong to no program.
+    const bool implicitOpen = section_ == Section::Implicit && !current_.frames.empty();
+    if (sawProgramHeader_ || (!implicitOpen && !implicitStored_))
+        return;
+    for (auto& d : out_.diagnostics)
+        if (d.program == options_.programNumber)
+            d.program = 0;
+    Diagnostic d;
+    d.rule = Rule::FrameOutsideProgram;
+    d.line = implicitFirst_.line;
+    d.column = implicitFirst_.column;
+    d.endColumn = implicitFirst_.endColumn;
+    d.messageRu = "Кадры до первого заголовка %L<n> не принадлежат ни одной программе: "
+                  "добавьте заголовок перед ними";
+    d.messageEn = "frames before the first %L<n> header belong to no program: add a header above them";
+    out_.diagnostics.push_back(std::move(d));
+    if (implicitOpen) {
+        current_.frames.clear();
+        section_ = Section::Scratch;
+    }
+    if (implicitStored_) {
+        out_.store.remove(options_.programNumber);
+        implicitStored_ = false;
+    }
+}
+
+void Parser::closeSection(std::vector<TriviaLine> trailing) {
+    while (!trailing.empty() && trailing.back().blank())
+        trailing.pop_back();
+    switch (section_) {
+    case Section::Implicit:
+        if (current_.frames.empty()) {
+            for (auto& t : trailing)
+                out_.store.preamble.push_back(std::move(t));
+        } else if (!sawProgramHeader_) {
+            // End of a text without headers: this is its one program.
+            current_.trailing = std::move(trailing);
+            out_.store.insert(std::move(current_));
+            implicitStored_ = true;
+        }
+        break;
+    case Section::Program:
+        current_.trailing = std::move(trailing);
+        out_.store.insert(std::move(current_));
+        break;
+    case Section::Scratch:
+        break;
+    case Section::Messages:
+        for (auto& t : trailing)
+            out_.store.messages.trailing.push_back(std::move(t));
+        break;
+    }
+    current_ = Program();
+}
+
+void Parser::beginSection() {
+    // Comment lines right above a header (no blank line between) belong to
+    // what the header starts; the rest closes the section before it.
+    std::size_t split = pending_.size();
+    while (split > 0 && !pending_[split - 1].blank())
+        --split;
+    std::vector<TriviaLine> above(std::make_move_iterator(pending_.begin() + static_cast<std::ptrdiff_t>(split)),
+                                  std::make_move_iterator(pending_.end()));
+    pending_.resize(split);
+    closeSection(std::move(pending_));
+    pending_ = std::move(above);
+}
+
+void Parser::headerLine(std::size_t start) {
+    std::size_t i = start + 1;
+    std::size_t w = i;
+    while (w < line_.size() && upper(line_[w]) >= 'A' && upper(line_[w]) <= 'Z')
+        ++w;
+    // "%L12": the word is "L" followed by digits; "%MESSAGES".
+    if (w > i && upper(line_[i]) == 'L' && (w == i + 1)) {
+        programHeader(start, i + 1);
+        return;
+    }
+    if (w - i == 8 && keyword(i, "MESSAGES")) {
+        messagesHeader(start, w);
+        return;
+    }
+    // An unknown header: the lines below still need a home; read them as
+    // a program that is not stored.
+    beginSection();
+    section_ = Section::Scratch;
+    currentDiagProgram_ = 0;
+    report(Rule::BadHeader, 0, start, w > i ? w : i + 1,
+           "Неизвестный заголовок " + quote(line_.substr(start, (w > i ? w : i + 1) - start)) +
+               ": ожидается %L<номер программы> или %MESSAGES",
+           "unknown header " + squote(line_.substr(start, (w > i ? w : i + 1) - start)) +
+               ": expected %L<program number> or %MESSAGES");
+}
+
+void Parser::programHeader(std::size_t start, std::size_t i) {
+    frameOutsideProgram();
+    beginSection();
+    skipSpaces(i);
+    const std::size_t numBegin = i;
+    const std::size_t numEnd = numberEnd(i);
+    const std::string_view lex = line_.substr(numBegin, numEnd - numBegin);
+    const auto value = text::parseUnsigned(lex);
+    int number = 0;
+    bool ok = true;
+    currentDiagProgram_ = 0;
+    if (!value) {
+        ok = false;
+        report(Rule::BadHeader, 0, start, numEnd > numBegin ? numEnd : numBegin + 1,
+               lex.empty() ? std::string("Заголовок программы без номера: ожидается %L<1..99>")
+                           : "Номер программы " + quote(lex) + " — не целое число 1..99",
+               lex.empty() ? std::string("program header without a number: expected %L<1..99>")
+                           : "program number " + squote(lex) + " is not a whole number 1..99");
+    } else if (*value < 1 || *value > kMaxPrograms) {
+        ok = false;
+        number = *value <= 999999999 ? static_cast<int>(*value) : 0;
+        report(Rule::ProgramNumberRange, 0, start, numEnd,
+               "Номер программы L" + std::string(lex) + " вне диапазона 1..99",
+               "program number L" + std::string(lex) + " is outside 1..99");
+    } else {
+        number = static_cast<int>(*value);
+        if (programLine_[static_cast<std::size_t>(number)] != 0) {
+            ok = false;
+            report(Rule::DuplicateProgram, 0, start, numEnd,
+                   "Программа L" + std::to_string(number) + " уже определена в строке " +
+                       std::to_string(programLine_[static_cast<std::size_t>(number)]),
+                   "program L" + std::to_string(number) + " is already defined on line " +
+                       std::to_string(programLine_[static_cast<std::size_t>(number)]));
+        }
+    }
+    sawProgramHeader_ = true;
+    current_ = Program();
+    current_.number = number;
+    current_.headerLine = lineNo_;
+    current_.leading = std::move(pending_);
+    pending_.clear();
+    currentDiagProgram_ = number;
+    if (ok) {
+        programLine_[static_cast<std::size_t>(number)] = lineNo_;
+        section_ = Section::Program;
+    } else {
+        section_ = Section::Scratch;
+    }
+    // Title and comments.
+    i = numEnd;
+    std::vector<Comment> comments;
+    skipTrivia(i, comments);
+    if (i < line_.size()) {
+        report(Rule::BadHeader, 0, i, line_.size(),
+               "Лишний текст после заголовка программы: " + quote(line_.substr(i)),
+               "unexpected text after the program header: " + squote(line_.substr(i)));
+    }
+    std::size_t first = 0;
+    if (!comments.empty() && comments.front().style == Comment::Style::Parens) {
+        current_.title = std::move(comments.front().text);
+        first = 1;
+    }
+    for (std::size_t k = first; k < comments.size(); ++k)
+        current_.headerComments.push_back(std::move(comments[k]));
+}
+
+void Parser::messagesHeader(std::size_t /*start*/, std::size_t i) {
+    beginSection();
+    currentDiagProgram_ = 0;
+    MessageTable& t = out_.store.messages;
+    if (!t.present) {
+        t.present = true;
+        t.headerLine = lineNo_;
+        t.leading = std::move(pending_);
+        pending_.clear();
+    }
+    // A second %MESSAGES section continues the table; comments above it
+    // stay with the next entry.
+    section_ = Section::Messages;
+    std::vector<Comment> comments;
+    skipTrivia(i, comments);
+    if (i < line_.size())
+        report(Rule::BadHeader, 0, i, line_.size(),
+               "Лишний текст после %MESSAGES: " + quote(line_.substr(i)),
+               "unexpected text after %MESSAGES: " + squote(line_.substr(i)));
+    for (auto& c : comments)
+        t.headerComments.push_back(std::move(c));
+}
+
+void Parser::messageLine(std::size_t start) {
+    std::size_t i = start + 1;
+    skipSpaces(i);
+    const std::size_t numBegin = i;
+    while (i < line_.size() && isDigit(line_[i]))
+        ++i;
+    const std::string_view lex = line_.substr(numBegin, i - numBegin);
+    skipSpaces(i);
+    if (lex.empty() || at(i) != '=') {
+        report(Rule::MessageSyntax, 0, start, line_.size(),
+               "Строка таблицы сообщений должна иметь вид #<1..99>=<текст>",
+               "a message table line must read #<1..99>=<text>");
+        return;
+    }
+    const auto value = text::parseUnsigned(lex);
+    std::string_view textPart = line_.substr(i + 1);
+    while (!textPart.empty() && isSpace(textPart.back()))
+        textPart.remove_suffix(1);
+    if (!value || *value < 1 || *value > kMaxMessages) {
+        report(Rule::MessageNumberRange, 0, start, numBegin + lex.size(),
+               "Номер сообщения #" + std::string(lex) + " вне диапазона 1..99",
+               "message number #" + std::string(lex) + " is outside 1..99");
+        return;
+    }
+    const int k = static_cast<int>(*value);
+    if (messageLine_[static_cast<std::size_t>(k)] != 0) {
+        report(Rule::DuplicateMessage, 0, start, numBegin + lex.size(),
+               "Сообщение #" + std::to_string(k) + " уже задано в строке " +
+                   std::to_string(messageLine_[static_cast<std::size_t>(k)]),
+               "message #" + std::to_string(k) + " is already defined on line " +
+                   std::to_string(messageLine_[static_cast<std::size_t>(k)]));
+        return;
+    }
+    messageLine_[static_cast<std::size_t>(k)] = lineNo_;
+    Message m;
+    m.number = k;
+    m.text = std::string(textPart);
+    m.span.line = lineNo_;
+    const ColSpan s = span(start, i + 1 + textPart.size());
+    m.span.column = s.column;
+    m.span.endColumn = s.endColumn;
+    m.textColumn = col(i + 1);
+    m.leading = std::move(pending_);
+    pending_.clear();
+    out_.store.messages.entries.push_back(std::move(m));
+}
+
+// --- frames -------------------------------------------------------------------------------
+
+void Parser::frameLine(std::size_t i) {
+    std::vector<Comment> comments;
+    skipTrivia(i, comments);
+    if (i >= line_.size()) {
+        // Comments only: not a frame.
+        TriviaLine t;
+        t.comments = std::move(comments);
+        pending_.push_back(std::move(t));
+        return;
+    }
+    if (section_ == Section::Messages) {
+        report(Rule::MessageSyntax, 0, i, line_.size(),
+               "В разделе %MESSAGES допустимы только строки #<1..99>=<текст> и комментарии",
+               "only #<1..99>=<text> lines and comments may stand in the %MESSAGES section");
+        return;
+    }
+    if (current_.frames.empty())
+        current_.frames.reserve(estimateFrames());
+    Frame& f = current_.frames.emplace_back(); // filled in place: a frame is a few hundred bytes
+    f.span.line = lineNo_;
+    f.comments = std::move(comments);
+    const std::size_t errorsBefore = out_.diagnostics.size();
+    const std::size_t contentBegin = i;
+    std::size_t contentEnd = i;
+    if (line_[i] == '/') {
+        f.skip = true;
+        ++i;
+        contentEnd = i;
+        skipTrivia(i, f.comments);
+    }
+    if (upper(at(i)) == 'N') {
+        const std::size_t s = i;
+        Word w;
+        ++i;
+        if (intWord(i, s, "N", w))
+            f.n = w;
+        else
+            f.malformed = true;
+        contentEnd = i;
+        skipTrivia(i, f.comments);
+    }
+    const char c = upper(at(i));
+    if (c == 'R') {
+        f.body = ComputeFrame();
+        computeFrame(i, f, contentEnd);
+    } else if (c == 'I' && upper(at(i + 1)) == 'F') {
+        f.body = IfGotoFrame();
+        ifFrame(i, f, contentEnd);
+    } else if (keyword(i, "GOTO")) {
+        f.body = GotoFrame();
+        gotoFrame(i, f, contentEnd);
+    } else {
+        isoFrame(i, f, contentEnd);
+    }
+    if (out_.diagnostics.size() != errorsBefore)
+        f.malformed = true;
+    const ColSpan s = span(contentBegin, contentEnd);
+    f.span.column = s.column;
+    f.span.endColumn = s.endColumn;
+    f.leading = std::move(pending_);
+    pending_.clear();
+    if (section_ == Section::Implicit && current_.frames.size() == 1)
+        implicitFirst_ = f.span;
+}
+
+bool Parser::intWord(std::size_t& i, std::size_t start, std::string_view name, Word& w, int manual) {
+    skipSpaces(i);
+    if (at(i) == '=') {
+        ++i;
+        skipSpaces(i);
+    }
+    const std::size_t b = i;
+    const std::size_t e = numberEnd(i);
+    i = e;
+    const std::string_view lex = line_.substr(b, e - b);
+    const std::string n(name);
+    if (lex.empty()) {
+        report(Rule::Syntax, manual, start, b,
+               "После адреса " + n + " нет числа", "address " + n + " is not followed by a number");
+        return false;
+    }
+    const auto v = text::parseUnsigned(lex);
+    if (!v) {
+        const bool tooLong = text::isAllDigits(lex);
+        report(Rule::BadNumber, manual, start, e,
+               tooLong ? n + std::string(lex) + ": слишком большое число"
+                       : n + ": " + quote(lex) + " — ожидается целое число без знака и точки",
+               tooLong ? n + std::string(lex) + ": number too large"
+                       : n + ": " + squote(lex) + " is not a whole number without sign or point");
+        return false;
+    }
+    w.number = static_cast<int>(*v);
+    w.span = span(start, e);
+    return true;
+}
+
+bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Value& v, int manual) {
+    const std::string n(name);
+    skipSpaces(i);
+    if (at(i) == '=') {
+        ++i;
+        skipSpaces(i);
+    }
+    if (upper(at(i)) == 'R') {
+        const std::size_t rStart = i;
+        ++i;
+        Word r;
+        if (!intWord(i, rStart, "R", r, manual))
+            return false;
+        v = Value::rParam(r.number);
+        v.span = span(start, i);
+        return true;
+    }
+    const std::size_t b = i;
+    const std::size_t e = numberEnd(i);
+    i = e;
+    const std::string_view lex = line_.substr(b, e - b);
+    if (lex.empty()) {
+        report(Rule::Syntax, manual, start, b,
+               "После адреса " + n + " нет значения: ожидается число или R-параметр",
+               "address " + n + " has no value: expected a number or an R-parameter");
+        return false;
+    }
+    if ((lex == "-" || lex == "+") && upper(at(e)) == 'R') {
+        report(Rule::Syntax, manual, start, e + 1,
+               n + ": знак перед R-параметром недопустим; вычислите R<i>=0-R<j> отдельным кадром",
+               n + ": a sign before an R-parameter is not allowed; compute R<i>=0-R<j> in a frame of its own");
+        return false;
+    }
+    const auto d = Decimal::parse(lex);
+    if (!d) {
+        const bool tooLong = text::countDigits(lex) > Decimal::kMaxDigits && text::isPlainDecimal(lex);
+        const std::string ru = manual ? "Задание координаты " + n + ": " : n + ": ";
+        const std::string en = manual ? n + " value: " : n + ": ";
+        report(Rule::BadNumber, manual, start, e,
+               tooLong ? ru + "в числе " + quote(lex) + " больше 18 значащих цифр" : ru + quote(lex) + " — не число",
+               tooLong ? en + squote(lex) + " has more than 18 significant digits" : en + squote(lex) + " is not a number");
+        return false;
+    }
+    v = Value::lit(*d);
+    v.span = span(start, e);
+    return true;
+}
+
+void Parser::reportBadCharacter(std::size_t i, Frame& f) {
+    f.malformed = true;
+    const std::size_t len = text::sequenceLength(line_, i);
+    const char32_t cp = text::decodeAt(line_, i);
+    if (cp >= 0x400 && cp <= 0x4FF) {
+        const char latin = text::latinLookalike(cp);
+        std::string ru = "Кириллическая буква " + quote(line_.substr(i, len)) +
+                         ": адреса кадра пишутся латинскими буквами";
+        std::string en = "Cyrillic letter " + squote(line_.substr(i, len)) +
+                         ": frame addresses are Latin letters";
+        if (latin) {
+            ru += std::string(" (") + latin + ")";
+            en += std::string(" (") + latin + ")";
+        }
+        report(Rule::CyrillicLetter, 0, i, i + len, std::move(ru), std::move(en));
+        return;
+    }
+    const char c = line_[i];
+    if (upper(c) >= 'A' && upper(c) <= 'Z') {
+        const std::string a(1, upper(c));
+        report(Rule::UnknownAddress, 0, i, i + 1,
+               "Неизвестный адрес " + quote(a) + ": в кадре допустимы N, G, M, #, L, X, Z, FX, FZ",
+               "unknown address " + squote(a) + ": a frame may contain N, G, M, #, L, X, Z, FX, FZ");
+        return;
+    }
+    std::string shown = static_cast<unsigned char>(c) < 0x20 || c == 0x7F
+                            ? "\\x" + text::hexByte(static_cast<unsigned char>(c))
+                            : std::string(line_.substr(i, len));
+    report(Rule::Syntax, 0, i, i + len, "Неожиданный символ " + quote(shown),
+           "unexpected character " + squote(shown));
+}
+
+void Parser::isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
+    IsoFrame& iso = *f.iso();
+    Axis lastAxis = Axis::None; // the word just before was X or Z
+    auto duplicate = [&](std::size_t s, std::size_t e, const std::string& name) {
+        report(Rule::DuplicateWord, 0, s, e, "Адрес " + name + " задан в кадре дважды",
+               name + " is given twice in the frame");
+    };
+    while (true) {
+        skipTrivia(i, f.comments);
+        if (i >= line_.size())
+            break;
+        const std::size_t s = i;
+        const char c = upper(line_[i]);
+        Axis thisAxis = Axis::None;
+        bool ok = true;
+        switch (c) {
+        case 'G': {
+            if (keyword(i, "GOTO")) {
+                report(Rule::Syntax, 0, s, s + 4,
+                       "GOTO — кадр безусловного перехода: в нём может быть только [/][N] GOTO <номер кадра>",
+                       "GOTO makes an unconditional jump frame: it holds only [/][N] GOTO <frame number>");
+                i += 4;
+                ok = false;
+                break;
+            }
+            ++i;
+            Word w;
+            ok = intWord(i, s, "G", w);
+            if (ok) {
+                if (iso.g.full()) {
+                    report(Rule::TooManyG, 0, s, i,
+                           "Больше трёх G-функций в кадре: " + gName(w.number) + " лишняя",
+                           "more than three G functions in the frame: " + gName(w.number) + " is one too many");
+                    ok = false;
+                } else {
+                    iso.g.push_back(w);
+                }
+            }
+            break;
+        }
+        case 'M': {
+            ++i;
+            Word w;
+            ok = intWord(i, s, "M", w);
+            if (ok) {
+                if (iso.m.full()) {
+                    report(Rule::TooManyM, 0, s, i,
+                           "Больше трёх M-функций в кадре: M" + std::to_string(w.number) + " лишняя",
+                           "more than three M functions in the frame: M" + std::to_string(w.number) +
+                               " is one too many");
+                    ok = false;
+                } else {
+                    iso.m.push_back(w);
+                }
+            }
+            break;
+        }
+        case '#':
+        case 'L': {
+            ++i;
+            Word w;
+            const std::string name(1, c);
+            ok = intWord(i, s, name, w);
+            if (ok) {
+                auto& slot = c == '#' ? iso.message : iso.call;
+                if (slot) {
+                    duplicate(s, i, name);
+                    ok = false;
+                } else {
+                    slot = w;
+                }
+            }
+            break;
+        }
+        case 'N': {
+            ++i;
+            Word w;
+            intWord(i, s, "N", w);
+            report(Rule::Syntax, 0, s, i, "Номер кадра N должен стоять в начале кадра",
+                   "the frame number N must come first in the frame");
+            ok = false;
+            break;
+        }
+        case 'X':
+        case 'Z': {
+            ++i;
+            const bool isX = c == 'X';
+            Value v;
+            ok = value(i, s, isX ? "X" : "Z", v, isX ? 33 : 49);
+            if (ok) {
+                auto& slot = isX ? iso.x : iso.z;
+                if (slot) {
+                    duplicate(s, i, isX ? "X" : "Z");
+                    ok = false;
+                } else {
+                    slot = v;
+                    thisAxis = isX ? Axis::X : Axis::Z;
+                }
+            }
+            break;
+        }
+        case 'F': {
+            ++i;
+            const char next = upper(at(i));
+            Axis axis = Axis::None;
+            if (next == 'X' || next == 'Z') {
+                axis = next == 'X' ? Axis::X : Axis::Z;
+                ++i;
+            } else if (lastAxis == Axis::Z) {
+                axis = lastAxis;
+            }
+            Value v;
+            const std::string name = axis == Axis::X ? "FX" : axis == Axis::Z ? "FZ" : "F";
+            ok = value(i, s, name, v, 0);
+            if (!ok)
+                break;
+            if (axis == Axis::None) {
+                report(Rule::FeedWithoutAxis, 0, s, i,
+                       "F без оси: F относится к слову X или Z непосредственно перед ним; напишите FX или FZ",
+                       "F without an axis: a bare F applies to the X or Z word directly before it; "
+                       "write FX or FZ");
+                ok = false;
+                break;
+            }
+            auto& slot = axis == Axis::X ? iso.fx : iso.fz;
+            if (slot) {
+                duplicate(s, i, name);
+                ok = false;
+            } else {
+                slot = v;
+            }
+            break;
+        }
+        case 'R':
+            report(Rule::Syntax, 0, s, s + 1,
+                   "R-параметр вне вычислительного кадра: R<i>=… пишется отдельным кадром, "
+                   "а в X, Z, FX, FZ — как X=R<i>",
+                   "R-parameter outside a computational frame: write R<i>=... as a frame of its own, "
+                   "and in X, Z, FX, FZ as X=R<i>");
+            ok = false;
+            i = resync(i);
+            break;
+        case 'I':
+            if (upper(at(i + 1)) == 'F') {
+                report(Rule::Syntax, 0, s, s + 2,
+                       "IF — кадр условного перехода: в нём может быть только [/][N] IF R<i>>0 GOTO <номер>",
+                       "IF makes a conditional jump frame: it holds only [/][N] IF R<i>>0 GOTO <number>");
+                ok = false;
+                i = line_.size();
+                break;
+            }
+            reportBadCharacter(i, f);
+            ok = false;
+            i = resync(i);
+            break;
+        case '/':
+            report(Rule::Syntax, 0, s, s + 1,
+                   "Признак пропуска «/» может стоять только в начале кадра",
+                   "the skip flag '/' may only stand at the start of the frame");
+            ok = false;
+            ++i;
+            break;
+        default:
+            reportBadCharacter(i, f);
+            ok = false;
+            i = resync(i);
+            break;
+        }
+        if (!ok)
+            f.malformed = true;
+        lastAxis = ok ? thisAxis : Axis::None;
+        contentEnd = i;
+    }
+}
+
+bool Parser::operand(std::size_t& i, Operand& o, std::vector<Comment>& comments) {
+    skipTrivia(i, comments);
+    const std::size_t s = i;
+    if (upper(at(i)) == 'R') {
+        ++i;
+        Word r;
+        if (!intWord(i, s, "R", r))
+            return false;
+        o = Operand::rParam(r.number);
+        o.span = span(s, i);
+        return true;
+    }
+    const std::size_t e = numberEnd(i);
+    const std::string_view lex = line_.substr(s, e - s);
+    if (lex.empty()) {
+        report(Rule::Syntax, 0, s, s + 1, "Ожидается целое число или R-параметр",
+               "expected a whole number or an R-parameter");
+        return false;
+    }
+    if ((lex == "-" || lex == "+") && upper(at(e)) == 'R') {
+        report(Rule::Syntax, 0, s, e + 1,
+               "Знак перед R-параметром недопустим: вместо -R<j> напишите 0-R<j>",
+               "a sign before an R-parameter is not allowed: write 0-R<j> instead of -R<j>");
+        i = e;
+        return false;
+    }
+    i = e;
+    if (lex.find('.') != std::string_view::npos) {
+        report(Rule::DecimalInCompute, 0, s, e,
+               "Десятичная точка в вычислительном кадре: R-параметры — целые числа (дискреты), " +
+                   quote(lex) + " недопустимо",
+               "decimal point in a computational frame: R-parameters are whole numbers (discretes), " +
+                   squote(lex) + " is not allowed");
+        return false;
+    }
+    const auto v = text::parseSigned(lex);
+    if (!v) {
+        if (text::countDigits(lex) == 0) {
+            report(Rule::Syntax, 0, s, e, quote(lex) + " — не число", squote(lex) + " is not a number");
+            return false;
+        }
+        report(Rule::LiteralRange, 0, s, e,
+               "Число " + std::string(lex) + " вне диапазона R-параметра (-2147483648..2147483647)",
+               "number " + std::string(lex) + " is outside the range of an R-parameter (-2147483648..2147483647)");
+        return false;
+    }
+    if (*v < INT32_MIN || *v > INT32_MAX) {
+        report(Rule::LiteralRange, 0, s, e,
+               "Число " + std::string(lex) + " вне диапазона R-параметра (-2147483648..2147483647)",
+               "number " + std::string(lex) + " is outside the range of an R-parameter (-2147483648..2147483647)");
+        return false;
+    }
+    o = Operand::lit(static_cast<std::int32_t>(*v));
+    o.span = span(s, e);
+    return true;
+}
+
+void Parser::expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::string_view kindEn) {
+    skipTrivia(i, f.comments);
+    if (i < line_.size()) {
+        report(Rule::Syntax, 0, i, line_.size(),
+               "Лишний текст в " + std::string(kindRu) + ": " + quote(line_.substr(i)),
+               "unexpected text in " + std::string(kindEn) + ": " + squote(line_.substr(i)));
+        f.malformed = true;
+        i = line_.size();
+    }
+}
+
+void Parser::computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
+    ComputeFrame& cf = *f.compute();
+    const std::size_t s = i;
+    ++i;
+    if (!intWord(i, s, "R", cf.target)) {
+        f.malformed = true;
+        return;
+    }
+    contentEnd = i;
+    skipTrivia(i, f.comments);
+    if (at(i) != '=') {
+        report(Rule::Syntax, 0, i, i + 1,
+               "Вычислительный кадр: после R" + std::to_string(cf.target.number) + " ожидается «=»",
+               "computational frame: '=' expected after R" + std::to_string(cf.target.number));
+        f.malformed = true;
+        return;
+    }
+    ++i;
+    if (!operand(i, cf.a, f.comments)) {
+        f.malformed = true;
+        return;
+    }
+    contentEnd = i;
+    skipTrivia(i, f.comments);
+    if (i < line_.size()) {
+        const char op = line_[i];
+        ArithOp a = ArithOp::None;
+        switch (op) {
+        case '+':
+            a = ArithOp::Add;
+            break;
+        case '-':
+            a = ArithOp::Sub;
+            break;
+        case '*':
+            a = ArithOp::Mul;
+            break;
+        case '/':
+            a = ArithOp::Div;
+            break;
+        default:
+            report(Rule::Syntax, 0, i, i + text::sequenceLength(line_, i),
+                   "Вычислительный кадр: ожидается знак операции + - * / или конец кадра, а не " +
+                       quote(line_.substr(i, text::sequenceLength(line_, i))),
+                   "computational frame: expected an operation + - * / or the end of the frame, not " +
+                       squote(line_.substr(i, text::sequenceLength(line_, i))));
+            f.malformed = true;
+            return;
+        }
+        ++i;
+        cf.op = a;
+        if (!operand(i, cf.b, f.comments)) {
+            f.malformed = true;
+            cf.op = ArithOp::None;
+            return;
+        }
+        contentEnd = i;
+    }
+    expectEnd(i, f, "вычислительном кадре", "a computational frame");
+}
+
+bool Parser::jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comments) {
+    skipTrivia(i, comments);
+    const std::size_t s = i;
+    if (upper(at(i)) == 'N') {
+        std::size_t j = i + 1;
+        Word w;
+        const bool ok = intWord(j, s, "N", w);
+        report(Rule::Syntax, 0, s, j,
+               ok ? "Номер кадра перехода пишется без N: GOTO " + std::to_string(w.number)
+                  : std::string("Номер кадра перехода пишется без N"),
+               ok ? "the jump target is written without N: GOTO " + std::to_string(w.number)
+                  : std::string("the jump target is written without N"));
+        i = j;
+        return false;
+    }
+    const std::size_t e = numberEnd(i);
+    const std::string_view lex = line_.substr(s, e - s);
+    i = e;
+    if (lex.empty()) {
+        report(Rule::Syntax, 0, s, s + 1, "После GOTO нет номера кадра",
+               "GOTO is not followed by a frame number");
+        return false;
+    }
+    const auto v = text::parseUnsigned(lex);
+    if (!v) {
+        report(Rule::BadNumber, 53, s, e,
+               "Номер кадра перехода " + quote(lex) + " — не целое число 1..999",
+               "jump target " + squote(lex) + " is not a whole number 1..999");
+        return false;
+    }
+    target.number = static_cast<int>(*v);
+    target.span = span(s, e);
+    return true;
+}
+
+void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
+    IfGotoFrame& jf = *f.ifGoto();
+    i += 2;
+    skipTrivia(i, f.comments);
+    const std::size_t rs = i;
+    if (upper(at(i)) != 'R') {
+        report(Rule::Syntax, 0, rs, rs + 1, "После IF ожидается R-параметр: IF R<i>>0 GOTO <номер>",
+               "IF must be followed by an R-parameter: IF R<i>>0 GOTO <number>");
+        f.malformed = true;
+        return;
+    }
+    ++i;
+    if (!intWord(i, rs, "R", jf.r)) {
+        f.malformed = true;
+        return;
+    }
+    contentEnd = i;
+    skipTrivia(i, f.comments);
+    const std::size_t cs = i;
+    while (i < line_.size() && (line_[i] == '>' || line_[i] == '<' || line_[i] == '=' || line_[i] == '!'))
+        ++i;
+    const std::string_view rel = line_.substr(cs, i - cs);
+    skipSpaces(i);
+    const std::size_t ve = numberEnd(i);
+    const std::string_view val = line_.substr(i, ve - i);
+    const bool zero = !val.empty() && text::isAllDigits(val) && val.find_first_not_of('0') == std::string_view::npos;
+    if (rel != ">" || !zero) {
+        report(Rule::BadCondition, 0, cs, ve > cs ? ve : cs + 1,
+               "Условие перехода может быть только R" + std::to_string(jf.r.number) +
+                   ">0 (руководство, 2.7.1.3); другое условие сведите к нему вычислительным кадром",
+               "the only jump condition is R" + std::to_string(jf.r.number) +
+                   ">0 (manual 2.7.1.3); reduce another condition to it with a computational frame");
+        f.malformed = true;
+        return;
+    }
+    i = ve;
+    contentEnd = i;
+    skipTrivia(i, f.comments);
+    if (!keyword(i, "GOTO")) {
+        report(Rule::Syntax, 0, i, i + 1, "После условия ожидается GOTO <номер кадра>",
+               "the condition must be followed by GOTO <frame number>");
+        f.malformed = true;
+        return;
+    }
+    i += 4;
+    if (!jumpTarget(i, jf.target, f.comments)) {
+        f.malformed = true;
+        return;
+    }
+    contentEnd = i;
+    expectEnd(i, f, "кадре условного перехода", "a conditional jump frame");
+}
+
+void Parser::gotoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
+    GotoFrame& gf = *f.gotoFrame();
+    i += 4;
+    if (!jumpTarget(i, gf.target, f.comments)) {
+        f.malformed = true;
+        return;
+    }
+    contentEnd = i;
+    expectEnd(i, f, "кадре безусловного перехода", "an unconditional jump frame");
+}
+
+} // namespace
+
+ParseResult parse(std::string_view text, const ParseOptions& options) {
+    ParseResult result;
+    Parser p(text, options, result);
+    p.run();
+    return result;
+}
+
+} // namespace k528::program

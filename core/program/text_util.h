@@ -1,0 +1,169 @@
+// Small byte- and code-point-level helpers shared by the parser and the
+// validator (internal to core/program).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace k528::program::text {
+
+constexpr bool isDigit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+constexpr char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+
+inline bool isAscii(std::string_view s) {
+    for (const char c : s)
+        if (static_cast<unsigned char>(c) >= 0x80)
+            return false;
+    return true;
+}
+
+// Length of a well-formed UTF-8 sequence at s[i], or 1 for a malformed byte.
+inline std::size_t sequenceLength(std::string_view s, std::size_t i) {
+    const auto b0 = static_cast<unsigned char>(s[i]);
+    std::size_t len = 1;
+    if (b0 < 0x80)
+        return 1;
+    if ((b0 & 0xE0) == 0xC0)
+        len = 2;
+    else if ((b0 & 0xF0) == 0xE0)
+        len = 3;
+    else if ((b0 & 0xF8) == 0xF0)
+        len = 4;
+    else
+        return 1;
+    if (i + len > s.size())
+        return 1;
+    for (std::size_t k = 1; k < len; ++k)
+        if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80)
+            return 1;
+    return len;
+}
+
+// The code point at s[i] (U+FFFD for a malformed byte).
+inline char32_t decodeAt(std::string_view s, std::size_t i) {
+    const std::size_t len = sequenceLength(s, i);
+    const auto b0 = static_cast<unsigned char>(s[i]);
+    if (len == 1)
+        return b0 < 0x80 ? b0 : 0xFFFD;
+    char32_t cp = len == 2 ? (b0 & 0x1F) : len == 3 ? (b0 & 0x0F) : (b0 & 0x07);
+    for (std::size_t k = 1; k < len; ++k)
+        cp = (cp << 6) | (static_cast<unsigned char>(s[i + k]) & 0x3F);
+    return cp;
+}
+
+// Byte offset of the first byte that is not part of well-formed UTF-8
+// (s.size() if there is none). Overlongs and surrogates count as malformed.
+inline std::size_t firstInvalidUtf8(std::string_view s) {
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t len = sequenceLength(s, i);
+        const auto b0 = static_cast<unsigned char>(s[i]);
+        if (len == 1 && b0 >= 0x80)
+            return i;
+        if (len > 1) {
+            const char32_t cp = decodeAt(s, i);
+            const char32_t min = len == 2 ? 0x80 : len == 3 ? 0x800 : 0x10000;
+            if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
+                return i;
+        }
+        i += len;
+    }
+    return s.size();
+}
+
+// The Latin capital a Cyrillic letter looks like (Х -> X), or 0.
+inline char latinLookalike(char32_t cp) {
+    switch (cp) {
+    case U'А': case U'а': return 'A';
+    case U'В': case U'в': return 'B';
+    case U'Е': case U'е': return 'E';
+    case U'К': case U'к': return 'K';
+    case U'М': case U'м': return 'M';
+    case U'Н': case U'н': return 'H';
+    case U'О': case U'о': return 'O';
+    case U'Р': case U'р': return 'P';
+    case U'С': case U'с': return 'C';
+    case U'Т': case U'т': return 'T';
+    case U'У': case U'у': return 'Y';
+    case U'Х': case U'х': return 'X';
+    default: return 0;
+    }
+}
+
+inline std::string hexByte(unsigned char b) {
+    static constexpr char digits[] = "0123456789ABCDEF";
+    return std::string{digits[b >> 4], digits[b & 15]};
+}
+
+inline bool isAllDigits(std::string_view s) {
+    if (s.empty())
+        return false;
+    for (const char c : s)
+        if (!isDigit(c))
+            return false;
+    return true;
+}
+
+inline int countDigits(std::string_view s) {
+    int n = 0;
+    for (const char c : s)
+        n += isDigit(c) ? 1 : 0;
+    return n;
+}
+
+// Significant digits (leading zeros skipped) of a "[sign]digits[.digits]" text.
+inline bool isPlainDecimal(std::string_view s) {
+    std::size_t i = 0;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-'))
+        ++i;
+    int points = 0;
+    int digits = 0;
+    for (; i < s.size(); ++i) {
+        if (s[i] == '.')
+            ++points;
+        else if (isDigit(s[i]))
+            ++digits;
+        else
+            return false;
+    }
+    return points <= 1 && digits > 0;
+}
+
+// Digits only, at most 9 significant digits.
+inline std::optional<std::int64_t> parseUnsigned(std::string_view s) {
+    if (!isAllDigits(s))
+        return std::nullopt;
+    std::size_t i = 0;
+    while (i + 1 < s.size() && s[i] == '0')
+        ++i;
+    if (s.size() - i > 9)
+        return std::nullopt;
+    std::int64_t v = 0;
+    for (; i < s.size(); ++i)
+        v = v * 10 + (s[i] - '0');
+    return v;
+}
+
+// "[+|-]digits", at most 18 significant digits.
+inline std::optional<std::int64_t> parseSigned(std::string_view s) {
+    bool negative = false;
+    if (!s.empty() && (s[0] == '+' || s[0] == '-')) {
+        negative = s[0] == '-';
+        s.remove_prefix(1);
+    }
+    if (!isAllDigits(s))
+        return std::nullopt;
+    std::size_t i = 0;
+    while (i + 1 < s.size() && s[i] == '0')
+        ++i;
+    if (s.size() - i > 18)
+        return std::nullopt;
+    std::int64_t v = 0;
+    for (; i < s.size(); ++i)
+        v = v * 10 + (s[i] - '0');
+    return negative ? -v : v;
+}
+
+} // namespace k528::program::text

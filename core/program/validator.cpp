@@ -1,0 +1,955 @@
+#include "program/validator.h"
+
+#include <algorithm>
+#include <climits>
+#include <string>
+
+#include "program/gfunctions.h"
+#include "program/text_util.h"
+#include "util/utf8.h"
+
+namespace k528::program {
+
+// --- CallGraph -----------------------------------------------------------------------------
+
+namespace {
+bool inProgramRange(int n) { return n >= 1 && n <= kMaxPrograms; }
+const std::vector<CallGraph::Call> kNoCalls;
+} // namespace
+
+CallGraph::CallGraph(const ProgramStore& store) {
+    for (const Program& p : store.programs())
+        update(p);
+}
+
+void CallGraph::update(const Program& program) {
+    if (!inProgramRange(program.number))
+        return;
+    const auto n = static_cast<std::size_t>(program.number);
+    auto& calls = calls_[n];
+    calls.clear();
+    edges_[n].reset();
+    for (std::size_t i = 0; i < program.frames.size(); ++i) {
+        const IsoFrame* iso = program.frames[i].iso();
+        if (!iso || !iso->call)
+            continue;
+        calls.push_back({iso->call->number, static_cast<int>(i)});
+        if (inProgramRange(iso->call->number))
+            edges_[n].set(static_cast<std::size_t>(iso->call->number));
+    }
+}
+
+void CallGraph::remove(int number) {
+    if (!inProgramRange(number))
+        return;
+    calls_[static_cast<std::size_t>(number)].clear();
+    edges_[static_cast<std::size_t>(number)].reset();
+}
+
+const std::vector<CallGraph::Call>& CallGraph::callsFrom(int number) const {
+    return inProgramRange(number) ? calls_[static_cast<std::size_t>(number)] : kNoCalls;
+}
+
+bool CallGraph::isCalled(int number) const { return callerCount(number) > 0; }
+
+int CallGraph::callerCount(int number) const {
+    if (!inProgramRange(number))
+        return 0;
+    int n = 0;
+    for (int c = 1; c <= kMaxPrograms; ++c)
+        n += edges_[static_cast<std::size_t>(c)].test(static_cast<std::size_t>(number)) ? 1 : 0;
+    return n;
+}
+
+namespace {
+
+// --- Analysis of the call graph: strongly connected components (call
+// cycles) and the longest call chain below each program. --------------------------------------
+struct CallAnalysis {
+    std::array<int, kMaxPrograms + 1> scc{};      // component id per program (0 = absent)
+    std::array<bool, kMaxPrograms + 1> cyclic{};  // program lies on a call cycle
+    std::array<int, kMaxPrograms + 1> height{};   // longest chain of calls below it (cycles cut)
+    std::array<int, kMaxPrograms + 1> next{};    // the callee that gives that height
+    std::array<std::bitset<kMaxPrograms + 1>, kMaxPrograms + 1> adj{}; // existing callee edges
+};
+
+CallAnalysis analyse(const ProgramStore& store, const CallGraph& graph) {
+    CallAnalysis a;
+    std::bitset<kMaxPrograms + 1> exists;
+    for (const Program& p : store.programs())
+        if (inProgramRange(p.number))
+            exists.set(static_cast<std::size_t>(p.number));
+    for (int p = 1; p <= kMaxPrograms; ++p) {
+        if (!exists.test(static_cast<std::size_t>(p)))
+            continue;
+        for (const auto& c : graph.callsFrom(p))
+            if (inProgramRange(c.callee) && exists.test(static_cast<std::size_t>(c.callee)))
+                a.adj[static_cast<std::size_t>(p)].set(static_cast<std::size_t>(c.callee));
+    }
+    // Tarjan's algorithm (recursive; at most 99 levels deep).
+    std::array<int, kMaxPrograms + 1> index{}, low{};
+    std::array<bool, kMaxPrograms + 1> onStack{};
+    std::vector<int> stack;
+    int counter = 0;
+    int components = 0;
+    auto strong = [&](auto&& self, int v) -> void {
+        const auto vi = static_cast<std::size_t>(v);
+        index[vi] = low[vi] = ++counter;
+        stack.push_back(v);
+        onStack[vi] = true;
+        for (int w = 1; w <= kMaxPrograms; ++w) {
+            const auto wi = static_cast<std::size_t>(w);
+            if (!a.adj[vi].test(wi))
+                continue;
+            if (index[wi] == 0) {
+                self(self, w);
+                low[vi] = std::min(low[vi], low[wi]);
+            } else if (onStack[wi]) {
+                low[vi] = std::min(low[vi], index[wi]);
+            }
+        }
+        if (low[vi] == index[vi]) {
+            ++components;
+            std::vector<int> members;
+            int w = 0;
+            do {
+                w = stack.back();
+                stack.pop_back();
+                onStack[static_cast<std::size_t>(w)] = false;
+                a.scc[static_cast<std::size_t>(w)] = components;
+                members.push_back(w);
+            } while (w != v);
+            const bool cyc = members.size() > 1 || a.adj[vi].test(vi);
+            for (int m : members)
+                a.cyclic[static_cast<std::size_t>(m)] = cyc;
+        }
+    };
+    for (int p = 1; p <= kMaxPrograms; ++p)
+        if (exists.test(static_cast<std::size_t>(p)) && index[static_cast<std::size_t>(p)] == 0)
+            strong(strong, p);
+    // Heights over the edges between components (a DAG).
+    std::array<bool, kMaxPrograms + 1> done{};
+    auto heightOf = [&](auto&& self, int v) -> int {
+        const auto vi = static_cast<std::size_t>(v);
+        if (done[vi])
+            return a.height[vi];
+        done[vi] = true; // set first: edges inside a component are skipped anyway
+        int best = 0;
+        int bestNext = 0;
+        for (int w = 1; w <= kMaxPrograms; ++w) {
+            const auto wi = static_cast<std::size_t>(w);
+            if (!a.adj[vi].test(wi) || a.scc[wi] == a.scc[vi])
+                continue;
+            const int h = 1 + self(self, w);
+            if (h > best) {
+                best = h;
+                bestNext = w;
+            }
+        }
+        a.height[vi] = best;
+        a.next[vi] = bestNext;
+        return best;
+    };
+    for (int p = 1; p <= kMaxPrograms; ++p)
+        if (exists.test(static_cast<std::size_t>(p)))
+            heightOf(heightOf, p);
+    return a;
+}
+
+// A call path from `from` back to `to` inside one component (breadth first).
+std::vector<int> cyclePath(const CallAnalysis& a, int from, int to) {
+    std::array<int, kMaxPrograms + 1> prev{};
+    std::array<bool, kMaxPrograms + 1> seen{};
+    std::vector<int> queue{from};
+    seen[static_cast<std::size_t>(from)] = true;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+        const int v = queue[q];
+        if (v == to)
+            break;
+        for (int w = 1; w <= kMaxPrograms; ++w) {
+            const auto wi = static_cast<std::size_t>(w);
+            if (a.adj[static_cast<std::size_t>(v)].test(wi) && !seen[wi] && a.scc[wi] == a.scc[static_cast<std::size_t>(from)]) {
+                seen[wi] = true;
+                prev[wi] = v;
+                queue.push_back(w);
+            }
+        }
+    }
+    std::vector<int> path;
+    if (!seen[static_cast<std::size_t>(to)])
+        return path;
+    for (int v = to; v != from; v = prev[static_cast<std::size_t>(v)])
+        path.push_back(v);
+    path.push_back(from);
+    std::reverse(path.begin(), path.end());
+    return path;
+}
+
+std::string chainText(const std::vector<int>& programs) {
+    std::string s;
+    for (std::size_t i = 0; i < programs.size(); ++i) {
+        if (i)
+            s += "→";
+        s += "L" + std::to_string(programs[i]);
+    }
+    return s;
+}
+
+std::string chainTextAscii(const std::vector<int>& programs) {
+    std::string s;
+    for (std::size_t i = 0; i < programs.size(); ++i) {
+        if (i)
+            s += "->";
+        s += "L" + std::to_string(programs[i]);
+    }
+    return s;
+}
+
+// --- Checking one program ------------------------------------------------------------------------
+
+class ProgramChecker {
+public:
+    ProgramChecker(const ProgramStore& store, const Program& program, const CallGraph& graph,
+                   const CallAnalysis& calls, const ValidateOptions& options, std::vector<Diagnostic>& out)
+        : store_(store), p_(program), graph_(graph), calls_(calls), options_(options), out_(out) {}
+
+    void run();
+
+private:
+    const ProgramStore& store_;
+    const Program& p_;
+    const CallGraph& graph_;
+    const CallAnalysis& calls_;
+    const ValidateOptions& options_;
+    std::vector<Diagnostic>& out_;
+    std::array<std::int32_t, kMaxFrameNumber + 1> firstOfN_{};
+
+    void add(Rule rule, Severity severity, int manual, int line, ColSpan span, std::string ru, std::string en) {
+        Diagnostic d;
+        d.rule = rule;
+        d.severity = severity;
+        d.program = p_.number;
+        d.line = line;
+        d.column = span.column > 0 ? span.column : 1;
+        d.endColumn = span.endColumn > d.column ? span.endColumn : d.column + 1;
+        d.manualNumber = manual;
+        d.messageRu = std::move(ru);
+        d.messageEn = std::move(en);
+        out_.push_back(std::move(d));
+    }
+    void error(Rule r, int manual, const Frame& f, ColSpan s, std::string ru, std::string en) {
+        add(r, Severity::Error, manual, f.span.line, s, std::move(ru), std::move(en));
+    }
+    void warning(Rule r, int manual, const Frame& f, ColSpan s, std::string ru, std::string en) {
+        add(r, Severity::Warning, manual, f.span.line, s, std::move(ru), std::move(en));
+    }
+    static ColSpan whole(const Frame& f) { return {f.span.column, f.span.endColumn}; }
+    std::string where(const Frame& f) const {
+        // " в кадре N12" / " in frame N12" (nothing when the frame has no N)
+        return f.n ? std::to_string(f.n->number) : std::string();
+    }
+
+    void frameNumbers();
+    void isoFrame(const Frame& f, const IsoFrame& iso);
+    std::array<GInfo, kMaxGPerFrame> gInfo_{}; // classifyG of the current ISO frame's G words
+    void gWords(const Frame& f, const IsoFrame& iso);
+    void values(const Frame& f, const IsoFrame& iso);
+    void combinations(const Frame& f, const IsoFrame& iso);
+    void rIndex(const Frame& f, int index, ColSpan s);
+    void computeFrame(const Frame& f, const ComputeFrame& c);
+    void jump(const Frame& f, const Word& target);
+    void reachability();
+    void subprogramEnd();
+    void nesting();
+    void machine();
+};
+
+void ProgramChecker::run() {
+    if (p_.frames.empty()) {
+        add(Rule::EmptyProgram, Severity::Warning, 0, p_.headerLine > 0 ? p_.headerLine : 1, {1, 2},
+            "Программа L" + std::to_string(p_.number) + " не содержит кадров",
+            "program L" + std::to_string(p_.number) + " has no frames");
+        return;
+    }
+    if (p_.frames.size() > static_cast<std::size_t>(kMaxFrames)) {
+        const Frame& f = p_.frames[kMaxFrames];
+        error(Rule::TooManyFrames, 0, f, whole(f),
+              "В программе L" + std::to_string(p_.number) + " " + std::to_string(p_.frames.size()) +
+                  " кадров: допускается не более 999; этот кадр — 1000-й",
+              "program L" + std::to_string(p_.number) + " has " + std::to_string(p_.frames.size()) +
+                  " frames: at most 999 are allowed; this is frame 1000");
+    }
+    frameNumbers();
+    for (const Frame& f : p_.frames) {
+        switch (f.kind()) {
+        case FrameKind::Iso:
+            isoFrame(f, *f.iso());
+            break;
+        case FrameKind::Compute:
+            computeFrame(f, *f.compute());
+            break;
+        case FrameKind::IfGoto:
+            rIndex(f, f.ifGoto()->r.number, f.ifGoto()->r.span);
+            jump(f, f.ifGoto()->target);
+            break;
+        case FrameKind::Goto:
+            jump(f, f.gotoFrame()->target);
+            break;
+        }
+    }
+    reachability();
+    subprogramEnd();
+    nesting();
+    if (options_.machine)
+        machine();
+}
+
+void ProgramChecker::frameNumbers() {
+    firstOfN_.fill(-1);
+    for (std::size_t i = 0; i < p_.frames.size(); ++i) {
+        const Frame& f = p_.frames[i];
+        if (!f.n)
+            continue;
+        const int n = f.n->number;
+        if (n < 1 || n > kMaxFrameNumber) {
+            error(Rule::FrameNumberRange, 0, f, f.n->span,
+                  "Номер кадра N" + std::to_string(n) + " вне диапазона 1..999",
+                  "frame number N" + std::to_string(n) + " is outside 1..999");
+            continue;
+        }
+        auto& first = firstOfN_[static_cast<std::size_t>(n)];
+        if (first < 0) {
+            first = static_cast<std::int32_t>(i);
+            continue;
+        }
+        const int firstLine = p_.frames[static_cast<std::size_t>(first)].span.line;
+        error(Rule::DuplicateFrameNumber, 54, f, f.n->span,
+              "Дублирование номеров кадров: N" + std::to_string(n) + " уже есть в строке " +
+                  std::to_string(firstLine),
+              "duplicate frame numbers: N" + std::to_string(n) + " is already used on line " +
+                  std::to_string(firstLine));
+    }
+}
+
+void ProgramChecker::rIndex(const Frame& f, int index, ColSpan s) {
+    if (index < 0 || index >= kRCount)
+        error(Rule::RIndexRange, 0, f, s, "R-параметр R" + std::to_string(index) + " не существует: номера 0..299",
+              "R-parameter R" + std::to_string(index) + " does not exist: numbers are 0..299");
+}
+
+void ProgramChecker::gWords(const Frame& f, const IsoFrame& iso) {
+    for (int i = 0; i < iso.g.size(); ++i)
+        gInfo_[static_cast<std::size_t>(i)] = classifyG(iso.g[i].number);
+    for (int i = 0; i < iso.g.size(); ++i) {
+        const Word& w = iso.g[i];
+        const GInfo& info = gInfo_[static_cast<std::size_t>(i)];
+        if (!info.known()) {
+            const bool range = w.number < 0 || w.number > kMaxG;
+            error(Rule::UnknownG, 47, f, w.span,
+                  "G?: " + (range ? "номер " + gName(w.number) + " вне диапазона 0..299"
+                                  : "функции " + gName(w.number) + " нет в таблице 5"),
+                  "G?: " + (range ? gName(w.number) + " is outside 0..299"
+                                  : gName(w.number) + " is not a G function of table 5"));
+            continue;
+        }
+        for (int j = 0; j < i; ++j) {
+            const GInfo& other = gInfo_[static_cast<std::size_t>(j)];
+            if (other.known() && other.group == info.group) {
+                const std::string group = std::to_string(groupNumber(info.group));
+                error(Rule::GSameGroup, 47, f, w.span,
+                      "G?: " + gName(iso.g[j].number) + " и " + gName(w.number) + " из одной группы " + group +
+                          ": в кадре допустима одна функция группы",
+                      "G?: " + gName(iso.g[j].number) + " and " + gName(w.number) + " are both of group " +
+                          group + ": a frame may hold one function of a group");
+                break;
+            }
+        }
+    }
+}
+
+void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
+    const bool dwell = iso.hasG(4);
+    auto coordinate = [&](const std::optional<Value>& v, char axis, int manual) {
+        if (!v)
+            return;
+        if (v->isR()) {
+            rIndex(f, v->rIndex, v->span);
+            return;
+        }
+        const std::string a(1, axis);
+        const Decimal& d = v->literal;
+        if (dwell && axis == 'X') {
+            if (d.isZero())
+                error(Rule::DwellNegative, 33, f, v->span,
+                      "Задание координаты X: выдержка времени G04 X" + d.toString() + " отрицательна",
+                      "X value: the dwell time G04 X" + d.toString() + " is negative");
+            else if (d > kMaxCoordinate)
+                error(Rule::CoordinateRange, 33, f, v->span,
+                      "Задание координаты X: выдержка X" + d.toString() + " с больше 9999.999 с",
+                      "X value: the dwell X" + d.toString() + " s is longer than 9999.999 s");
+            return;
+        }
+        const Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
+        if (d > kMaxCoordinate || d < neg)
+            error(Rule::CoordinateRange, manual, f, v->span,
+                  "Задание координаты " + a + ": " + a + d.toString() + " вне диапазона ±9999.999 мм",
+                  a + " value: " + a + d.toString() + " is outside ±9999.999 mm");
+    };
+    auto feed = [&](const std::optional<Value>& v, const char* name) {
+        if (!v)
+            return;
+        if (v->isR()) {
+            rIndex(f, v->rIndex, v->span);
+            return;
+        }
+        const Decimal& d = v->literal;
+        if (d < kMinFeed || d > kMaxFeed)
+            error(Rule::FeedRange, 0, f, v->span,
+                  std::string("Подача ") + name + d.toString() + " вне диапазона 0.001..10000 мм/мин",
+                  std::string("feed ") + name + d.toString() + " is outside 0.001..10000 mm/min");
+    };
+    coordinate(iso.x, 'X', 33);
+    coordinate(iso.z, 'Z', 49);
+    feed(iso.fx, "FX");
+    feed(iso.fz, "FZ");
+}
+
+void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
+    const Word* m17 = iso.findM(mfunc::kSubprogramEnd);
+    const Word* m2 = iso.findM(mfunc::kEnd);
+    const Word* m30 = iso.findM(mfunc::kEndRewind);
+    const std::string n = where(f);
+    const std::string inRu = n.empty() ? "в кадре" : "в кадре N" + n;
+    const std::string inEn = n.empty() ? "in the frame" : "in frame N" + n;
+    if (iso.call) {
+        const std::string l = "L" + std::to_string(iso.call->number);
+        if (iso.x)
+            error(Rule::AxisWithCall, 34, f, iso.x->span,
+                  "X/L: " + inRu + " с вызовом подпрограммы " + l + " задана координата X",
+                  "X/L: X is given " + inEn + " that calls subprogram " + l);
+        if (iso.z)
+            error(Rule::AxisWithCall, 50, f, iso.z->span,
+                  "Z/L: " + inRu + " с вызовом подпрограммы " + l + " задана координата Z",
+                  "Z/L: Z is given " + inEn + " that calls subprogram " + l);
+        if (m2)
+            error(Rule::EndCombination, 58, f, m30->span,
+                  "M30/L: конец программы M30 и вызов " + l + " " + inRu,
+                  "M30/L: end of program M30 and a call of " + l + " " + inEn);
+        if (m2)
+            error(Rule::EndCombination, 59, f, m2->span,
+                  "M2/L: конец программы M02 и вызов " + l + " " + inRu,
+                  "M2/L: end of program M02 and a call of " + l + " " + inEn);
+        if (m17)
+            error(Rule::EndCombination, 60, f, m17->span,
+                  "M17/L: конец подпрограммы M17 и вызов " + l + " " + inRu,
+                  "M17/L: end of subprogram M17 and a call of " + l + " " + inEn);
+    }
+    if (m17) {
+        if (iso.x)
+            error(Rule::AxisWithM17, 35, f, iso.x->span,
+                  "X/M17: " + inRu + " с концом подпрограммы M17 задана координата X",
+                  "X/M17: X is given " + inEn + " that ends the subprogram with M17");
+        if (iso.z)
+            error(Rule::AxisWithM17, 51, f, iso.z->span,
+                  "Z/M17: " + inRu + " с концом подпрограммы M17 задана координата Z",
+                  "Z/M17: Z is given " + inEn + " that ends the subprogram with M17");
+        if (m30)
+            error(Rule::EndCombination, 61, f, m30->span,
+                  "M30/M17: конец программы M30 и конец подпрограммы M17 " + inRu,
+                  "M30/M17: end of program M30 and end of subprogram M17 " + inEn);
+        if (m2)
+            error(Rule::EndCombination, 62, f, m2->span,
+                  "M2/M17: конец программы M02 и конец подпрограммы M17 " + inRu,
+                  "M2/M17: end of program M02 and end of subprogram M17 " + inEn);
+    }
+    if (const Word* g4 = iso.findG(4)) {
+        if (iso.z)
+            error(Rule::DwellWithZ, 63, f, iso.z->span,
+                  "G04/X/Z: " + inRu + " с выдержкой времени G04 задан Z; время задаётся только в X",
+                  "G04/X/Z: Z is given " + inEn + " with the dwell G04; the time goes in X only");
+        if (iso.call)
+            error(Rule::DwellWithCall, 64, f, iso.call->span,
+                  "G04/L: " + inRu + " с выдержкой времени G04 вызывается подпрограмма L" +
+                      std::to_string(iso.call->number),
+                  "G04/L: subprogram L" + std::to_string(iso.call->number) + " is called " + inEn +
+                      " with the dwell G04");
+        if (!iso.x)
+            warning(Rule::DwellWithoutTime, 0, f, g4->span,
+                    "G04 без X: время выдержки не задано (например, G04 X20.5 — 20,5 с)",
+                    "G04 without X: no dwell time is given (e.g. G04 X20.5 is 20.5 s)");
+    }
+    // Axis functions that need a value of their axis.
+    for (int i = 0; i < iso.g.size(); ++i) {
+        const Word& w = iso.g[i];
+        const GInfo& info = gInfo_[static_cast<std::size_t>(i)];
+        if (info.axis == Axis::None)
+            continue;
+        const bool has = info.axis == Axis::X ? iso.x.has_value() : iso.z.has_value();
+        const std::string a(1, axisLetter(info.axis));
+        switch (info.function) {
+        case GFunction::SetPosition:
+            if (!has)
+                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span,
+                        gName(w.number) + " без " + a + ": не задано, какое положение установить (например, " +
+                            gName(w.number) + " " + a + "12.324)",
+                        gName(w.number) + " without " + a + ": no position to set is given (e.g. " +
+                            gName(w.number) + " " + a + "12.324)");
+            break;
+        case GFunction::OscillationStart:
+            if (!has)
+                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span,
+                        gName(w.number) + " без " + a + ": не задан ход осцилляции (например, " +
+                            gName(w.number) + " " + a + "=-30.5 F" + a + "=100)",
+                        gName(w.number) + " without " + a + ": no oscillation stroke is given (e.g. " +
+                            gName(w.number) + " " + a + "=-30.5 F" + a + "=100)");
+            break;
+        case GFunction::StopOnSignal:
+            if (!has)
+                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span,
+                        gName(w.number) + " без " + a + ": нет перемещения по оси " + a +
+                            ", которое прерывает сигнал " + std::to_string(info.signal),
+                        gName(w.number) + " without " + a + ": there is no motion of axis " + a +
+                            " for signal " + std::to_string(info.signal) + " to interrupt");
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+void ProgramChecker::isoFrame(const Frame& f, const IsoFrame& iso) {
+    gWords(f, iso);
+    for (const Word& w : iso.m)
+        if (w.number < 0 || w.number > kMaxM)
+            error(Rule::MRange, 0, f, w.span, "M" + std::to_string(w.number) + ": номер M-функции вне диапазона 0..99",
+                  "M" + std::to_string(w.number) + ": M function number outside 0..99");
+    if (iso.message) {
+        const int k = iso.message->number;
+        if (k < 1 || k > kMaxMessages)
+            error(Rule::MessageRange, 0, f, iso.message->span,
+                  "#" + std::to_string(k) + ": номер технологического сообщения вне диапазона 1..99",
+                  "#" + std::to_string(k) + ": technological message number outside 1..99");
+        else if (store_.messages.present && !store_.messages.find(k))
+            warning(Rule::MessageUndefined, 0, f, iso.message->span,
+                    "Сообщения #" + std::to_string(k) + " нет в таблице сообщений: строка 2 индикатора будет пустой",
+                    "message #" + std::to_string(k) + " is not in the message table: LCD line 2 will be blank");
+    }
+    if (iso.call) {
+        const int l = iso.call->number;
+        if (l < 1 || l > kMaxPrograms)
+            error(Rule::CallRange, 0, f, iso.call->span,
+                  "L" + std::to_string(l) + ": номер вызываемой программы вне диапазона 1..99",
+                  "L" + std::to_string(l) + ": called program number outside 1..99");
+        else if (!store_.contains(l))
+            error(Rule::CallMissing, 45, f, iso.call->span,
+                  "L отсутствует: программы L" + std::to_string(l) + " нет",
+                  "L missing: there is no program L" + std::to_string(l));
+    }
+    values(f, iso);
+    combinations(f, iso);
+}
+
+void ProgramChecker::computeFrame(const Frame& f, const ComputeFrame& c) {
+    const int t = c.target.number;
+    if (t < 0 || t >= kRCount)
+        rIndex(f, t, c.target.span);
+    else if (t >= kFirstReadOnlyR && t <= kLastReadOnlyR)
+        error(Rule::ReadOnlyR, 0, f, c.target.span,
+              "R" + std::to_string(t) + " только для чтения (R232..R262, приложение Л): запись в него невозможна",
+              "R" + std::to_string(t) + " is read only (R232..R262, appendix Л): it cannot be written");
+    if (c.a.isR())
+        rIndex(f, c.a.rIndex, c.a.span);
+    if (c.op == ArithOp::None)
+        return;
+    if (c.b.isR())
+        rIndex(f, c.b.rIndex, c.b.span);
+    if (c.op == ArithOp::Div && !c.b.isR() && c.b.literal == 0) {
+        error(Rule::DivisionByZero, 46, f, c.b.span, "Переполнение: деление на ноль",
+              "overflow: division by zero");
+        return;
+    }
+    if (c.a.isR() || c.b.isR())
+        return;
+    const std::int64_t a = c.a.literal;
+    const std::int64_t b = c.b.literal;
+    std::int64_t r = 0;
+    switch (c.op) {
+    case ArithOp::Add:
+        r = a + b;
+        break;
+    case ArithOp::Sub:
+        r = a - b;
+        break;
+    case ArithOp::Mul:
+        r = a * b;
+        break;
+    case ArithOp::Div:
+        r = a / b;
+        break;
+    case ArithOp::None:
+        break;
+    }
+    if (r < INT32_MIN || r > INT32_MAX)
+        error(Rule::ConstantOverflow, 46, f, whole(f),
+              "Переполнение: результат " + std::to_string(r) + " вне диапазона -2147483648..2147483647",
+              "overflow: the result " + std::to_string(r) + " is outside -2147483648..2147483647");
+}
+
+void ProgramChecker::jump(const Frame& f, const Word& target) {
+    const int n = target.number;
+    if (n < 1 || n > kMaxFrameNumber) {
+        error(Rule::JumpTarget, 53, f, target.span,
+              "Ошибка перехода: номер кадра " + std::to_string(n) + " вне диапазона 1..999",
+              "jump error: frame number " + std::to_string(n) + " is outside 1..999");
+        return;
+    }
+    if (firstOfN_[static_cast<std::size_t>(n)] < 0)
+        error(Rule::JumpTarget, 53, f, target.span,
+              "Ошибка перехода: кадра N" + std::to_string(n) + " нет в программе L" + std::to_string(p_.number),
+              "jump error: there is no frame N" + std::to_string(n) + " in program L" + std::to_string(p_.number));
+}
+
+void ProgramChecker::reachability() {
+    // Control flow inside the program: a frame continues to the next one,
+    // except an unconditional jump, an end of program (M02, M30) and an end
+    // of subprogram (M17); a conditional jump goes both ways; a call comes
+    // back. A skipped frame ('/') just passes on to the next one.
+    const std::size_t count = p_.frames.size();
+    std::vector<char> reached(count, 0);
+    std::vector<std::size_t> work;
+    work.reserve(16);
+    auto visit = [&](std::size_t i) {
+        if (i < count && !reached[i]) {
+            reached[i] = 1;
+            work.push_back(i);
+        }
+    };
+    auto target = [&](int n) -> std::int64_t {
+        return n >= 1 && n <= kMaxFrameNumber ? firstOfN_[static_cast<std::size_t>(n)] : -1;
+    };
+    visit(0);
+    while (!work.empty()) {
+        // Walk straight runs without the work list.
+        std::size_t i = work.back();
+        work.pop_back();
+        while (true) {
+            const Frame& f = p_.frames[i];
+            bool next = true;
+            if (!f.skip) {
+                switch (f.kind()) {
+                case FrameKind::Iso: {
+                    const IsoFrame& iso = *f.iso();
+                    if (iso.hasM(mfunc::kEnd) || iso.hasM(mfunc::kEndRewind) || iso.hasM(mfunc::kSubprogramEnd))
+                        next = false;
+                    break;
+                }
+                case FrameKind::Compute:
+                    break;
+                case FrameKind::IfGoto: {
+                    const auto t = target(f.ifGoto()->target.number);
+                    if (t >= 0)
+                        visit(static_cast<std::size_t>(t));
+                    break;
+                }
+                case FrameKind::Goto: {
+                    const auto t = target(f.gotoFrame()->target.number);
+                    if (t >= 0)
+                        visit(static_cast<std::size_t>(t));
+                    next = false;
+                    break;
+                }
+                }
+            }
+            if (!next || i + 1 >= count || reached[i + 1])
+                break;
+            reached[++i] = 1;
+        }
+    }
+    for (std::size_t i = 0; i < count;) {
+        if (reached[i]) {
+            ++i;
+            continue;
+        }
+        std::size_t j = i;
+        while (j + 1 < count && !reached[j + 1])
+            ++j;
+        const Frame& first = p_.frames[i];
+        const Frame& last = p_.frames[j];
+        const std::string lines = i == j ? std::to_string(first.span.line)
+                                         : std::to_string(first.span.line) + "–" + std::to_string(last.span.line);
+        const std::string linesEn = i == j ? std::to_string(first.span.line)
+                                           : std::to_string(first.span.line) + "-" + std::to_string(last.span.line);
+        warning(Rule::Unreachable, 0, first, whole(first),
+                (i == j ? "Кадр в строке " + lines + " никогда не выполняется"
+                        : "Кадры в строках " + lines + " никогда не выполняются") +
+                    ": выше — безусловный переход или конец программы, а перехода сюда нет",
+                (i == j ? "the frame on line " + linesEn + " is never executed"
+                        : "the frames on lines " + linesEn + " are never executed") +
+                    ": an unconditional jump or an end of program precedes, and no jump leads here");
+        i = j + 1;
+    }
+}
+
+void ProgramChecker::subprogramEnd() {
+    if (!graph_.isCalled(p_.number))
+        return;
+    const Frame& last = p_.frames.back();
+    const IsoFrame* iso = last.iso();
+    if (!iso || last.skip || iso->hasM(mfunc::kSubprogramEnd))
+        return;
+    const std::string l = "L" + std::to_string(p_.number);
+    if (iso->x)
+        error(Rule::AxisAtSubprogramEnd, 36, last, iso->x->span,
+              "X/конец L: последний кадр подпрограммы " + l + " без M17 задаёт координату X",
+              "X/end of L: the last frame of subprogram " + l + " has no M17 and gives X");
+    if (iso->z)
+        error(Rule::AxisAtSubprogramEnd, 52, last, iso->z->span,
+              "Z/конец L: последний кадр подпрограммы " + l + " без M17 задаёт координату Z",
+              "Z/end of L: the last frame of subprogram " + l + " has no M17 and gives Z");
+}
+
+void ProgramChecker::nesting() {
+    const auto self = static_cast<std::size_t>(p_.number);
+    if (!inProgramRange(p_.number))
+        return;
+    const int limit = options_.nestingLimit;
+    for (const auto& c : graph_.callsFrom(p_.number)) {
+        if (!inProgramRange(c.callee) || !store_.contains(c.callee))
+            continue;
+        if (static_cast<std::size_t>(c.frameIndex) >= p_.frames.size())
+            continue;
+        const Frame& f = p_.frames[static_cast<std::size_t>(c.frameIndex)];
+        const ColSpan s = f.iso() && f.iso()->call ? f.iso()->call->span : whole(f);
+        const auto ci = static_cast<std::size_t>(c.callee);
+        if (calls_.scc[ci] == calls_.scc[self]) {
+            std::vector<int> cycle = cyclePath(calls_, c.callee, p_.number);
+            cycle.insert(cycle.begin(), p_.number);
+            warning(Rule::NestingCycle, 48, f, s,
+                    "Глубина вложения L: вызовы по кругу " + chainText(cycle) +
+                        "; если цикл не прерывается условием, вложение превысит предел " + std::to_string(limit),
+                    "subprogram nesting: calls go round in a circle " + chainTextAscii(cycle) +
+                        "; unless a condition breaks it, nesting exceeds the limit of " + std::to_string(limit));
+            continue;
+        }
+        const int depth = 1 + calls_.height[ci];
+        if (depth <= limit)
+            continue;
+        std::vector<int> chain{p_.number};
+        for (int v = c.callee; v != 0; v = calls_.next[static_cast<std::size_t>(v)])
+            chain.push_back(v);
+        warning(Rule::NestingDepth, 48, f, s,
+                "Глубина вложения L: цепочка вызовов " + chainText(chain) + " даёт " + std::to_string(depth) +
+                    " уровней вложения, предел " + std::to_string(limit),
+                "subprogram nesting: the call chain " + chainTextAscii(chain) + " nests " + std::to_string(depth) +
+                    " levels deep, the limit is " + std::to_string(limit));
+    }
+}
+
+std::string discreteText(int decimals) {
+    return Decimal::fromScaled(1, decimals).toString();
+}
+
+void ProgramChecker::machine() {
+    const MachineLimits& m = *options_.machine;
+    // Absolute or incremental X/Z, followed in text order: a program that
+    // never writes G91 is taken as absolute; otherwise only frames after a
+    // G90 are checked against the limits (best effort; jumps are ignored).
+    bool usesIncremental = false;
+    for (const Frame& f : p_.frames)
+        if (const IsoFrame* iso = f.iso(); iso && iso->hasG(91))
+            usesIncremental = true;
+    bool absolute = !usesIncremental;
+    int omitted = 54; // group 6: G54 (all components) at power-on, or the G50..G53 in force
+    for (const Frame& f : p_.frames) {
+        const IsoFrame* iso = f.iso();
+        if (!iso)
+            continue;
+        if (iso->hasG(90))
+            absolute = true;
+        if (iso->hasG(91))
+            absolute = false;
+        for (const Word& w : iso->g)
+            if (w.number >= 50 && w.number <= 54)
+                omitted = w.number;
+        const bool dwell = iso->hasG(4);
+        auto axis = [&](Axis which, const AxisLimits& lim, const std::optional<Value>& pos,
+                        const std::optional<Value>& feed) {
+            const char a = axisLetter(which);
+            const std::string as(1, a);
+            const bool dwellTime = dwell && which == Axis::X; // X of G04 is seconds
+            if (!lim.present) {
+                auto absent = [&](ColSpan s, const std::string& word) {
+                    warning(Rule::AxisAbsent, 0, f, s,
+                            word + ": оси " + as + " на этом станке нет (НАЛИЧ.ОСИ = 0)",
+                            word + ": this machine has no " + as + " axis (C-parameter НАЛИЧ.ОСИ = 0)");
+                };
+                if (pos && !dwellTime)
+                    absent(pos->span, as);
+                if (feed)
+                    absent(feed->span, "F" + as);
+                for (const Word& w : iso->g)
+                    if (classifyG(w.number).axis == which)
+                        absent(w.span, gName(w.number));
+                return;
+            }
+            bool setsPosition = false, stroke = false, handwheel = false;
+            for (const Word& w : iso->g) {
+                const GInfo info = classifyG(w.number);
+                if (info.axis != which)
+                    continue;
+                setsPosition |= info.function == GFunction::SetPosition;
+                stroke |= info.function == GFunction::OscillationStart;
+                handwheel |= info.function == GFunction::Handwheel;
+            }
+            if (pos && !pos->isR() && !dwellTime) {
+                const Decimal& v = pos->literal;
+                const bool motionTarget = absolute && !setsPosition && !stroke && !handwheel;
+                Decimal offset;
+                if (omitted != 53)
+                    offset = offset + lim.zeroOffsetMm;
+                if (omitted != 52)
+                    offset = offset + lim.dressingMm;
+                if (omitted != 51)
+                    offset = offset + lim.correctionMm;
+                if (omitted != 50)
+                    offset = offset + lim.handwheelMm;
+                const Decimal machinePos = v + offset;
+                if (lim.softLimits && motionTarget && (machinePos < lim.minMm || machinePos > lim.maxMm)) {
+                    const bool above = machinePos > lim.maxMm;
+                    const std::string bound = above ? "+ОГРАНИЧЕН " + lim.maxMm.toString()
+                                                    : "-ОГРАНИЧЕН " + lim.minMm.toString();
+                    const std::string dia = lim.diameter ? " (на диаметр)" : "";
+                    const std::string diaEn = lim.diameter ? " (diameter)" : "";
+                    const std::string inMachine =
+                        offset.isZero() ? "" : ", в системе станка " + machinePos.toString() + " мм,";
+                    const std::string inMachineEn =
+                        offset.isZero() ? "" : ", " + machinePos.toString() + " mm in the machine system,";
+                    warning(Rule::SoftLimit, which == Axis::X ? 12 : 28, f, pos->span,
+                            "Программный конечный выключатель (" + as + "): " + as + v.toString() + dia +
+                                inMachine + " за ограничением " + bound + " мм",
+                            "software limit (" + as + "): " + as + v.toString() + diaEn + inMachineEn +
+                                " is beyond " +
+                                (above ? "the + limit " + lim.maxMm.toString() : "the - limit " + lim.minMm.toString()) +
+                                " mm");
+                }
+                if (lim.decimals && v.fractionDigits() > *lim.decimals)
+                    warning(Rule::DiscreteRounding, 0, f, pos->span,
+                            as + v.toString() + ": дискрета оси " + as + " " + discreteText(*lim.decimals) +
+                                " мм, значение будет округлено до " + v.rounded(*lim.decimals).toString(),
+                            as + v.toString() + ": the discrete of axis " + as + " is " +
+                                discreteText(*lim.decimals) + " mm, the value is rounded to " +
+                                v.rounded(*lim.decimals).toString());
+            }
+            if (feed && !feed->isR()) {
+                const Decimal& v = feed->literal;
+                if (lim.maxFeedMmPerMin && v > *lim.maxFeedMmPerMin)
+                    warning(Rule::FeedAboveMax, 0, f, feed->span,
+                            "F" + as + v.toString() + " больше F УСК.АВТ. оси " + as + " (" +
+                                lim.maxFeedMmPerMin->toString() + " мм/мин)",
+                            "F" + as + v.toString() + " is above the axis' maximum program feed F УСК.АВТ. (" +
+                                lim.maxFeedMmPerMin->toString() + " mm/min)");
+                if (lim.decimals && v.fractionDigits() > *lim.decimals)
+                    warning(Rule::DiscreteRounding, 0, f, feed->span,
+                            "F" + as + v.toString() + ": дискрета оси " + as + " " + discreteText(*lim.decimals) +
+                                " мм, подача будет округлена до " + v.rounded(*lim.decimals).toString(),
+                            "F" + as + v.toString() + ": the discrete of axis " + as + " is " +
+                                discreteText(*lim.decimals) + " mm, the feed is rounded to " +
+                                v.rounded(*lim.decimals).toString());
+            }
+        };
+        axis(Axis::X, m.x, iso->x, iso->fx);
+        axis(Axis::Z, m.z, iso->z, iso->fz);
+    }
+}
+
+bool displayable(char32_t cp) {
+    return (cp >= 0x20 && cp < 0x7F) || (cp >= 0x410 && cp <= 0x44F) || cp == 0x401 || cp == 0x451 ||
+           cp == U'№';
+}
+
+} // namespace
+
+std::vector<Diagnostic> validateMessages(const MessageTable& table) {
+    std::vector<Diagnostic> out;
+    for (const Message& m : table.entries) {
+        const auto cps = utf8::decode(m.text);
+        auto add = [&](Rule rule, Severity sev, int col, int end, std::string ru, std::string en) {
+            Diagnostic d;
+            d.rule = rule;
+            d.severity = sev;
+            d.line = m.span.line;
+            d.column = col > 0 ? col : 1;
+            d.endColumn = end > d.column ? end : d.column + 1;
+            d.messageRu = std::move(ru);
+            d.messageEn = std::move(en);
+            out.push_back(std::move(d));
+        };
+        const int base = m.textColumn > 0 ? m.textColumn : 1;
+        if (cps.size() > static_cast<std::size_t>(kMessageLength))
+            add(Rule::MessageTooLong, Severity::Error, base + kMessageLength, base + static_cast<int>(cps.size()),
+                "Сообщение #" + std::to_string(m.number) + " длиннее 20 символов (" + std::to_string(cps.size()) +
+                    "): на индикаторе помещается 20",
+                "message #" + std::to_string(m.number) + " is longer than 20 characters (" +
+                    std::to_string(cps.size()) + "): the display shows 20");
+        bool warned = false;
+        for (std::size_t i = 0; i < cps.size(); ++i) {
+            const char32_t cp = cps[i];
+            const int col = base + static_cast<int>(i);
+            if (cp < 0x20 || cp == 0x7F || (cp >= 0x80 && cp < 0xA0)) {
+                add(Rule::MessageCharacter, Severity::Error, col, col + 1,
+                    "Управляющий символ в тексте сообщения #" + std::to_string(m.number),
+                    "control character in the text of message #" + std::to_string(m.number));
+            } else if (!displayable(cp) && !warned) {
+                warned = true;
+                std::string ch;
+                utf8::append(ch, cp);
+                add(Rule::MessageCharset, Severity::Warning, col, col + 1,
+                    "Символ «" + ch + "» в сообщении #" + std::to_string(m.number) +
+                        " может не отображаться на K923 (латиница, кириллица, цифры и знаки ASCII)",
+                    "character '" + ch + "' in message #" + std::to_string(m.number) +
+                        " may not show on the K923 (Latin, Cyrillic, digits and ASCII signs)");
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<Diagnostic> validateProgram(const ProgramStore& store, int number, const CallGraph& graph,
+                                        const ValidateOptions& options) {
+    std::vector<Diagnostic> out;
+    const Program* p = store.find(number);
+    if (!p)
+        return out;
+    const CallAnalysis calls = analyse(store, graph);
+    ProgramChecker(store, *p, graph, calls, options, out).run();
+    sortDiagnostics(out);
+    return out;
+}
+
+std::vector<Diagnostic> validate(const ProgramStore& store, const ValidateOptions& options) {
+    std::vector<Diagnostic> out;
+    const CallGraph graph(store);
+    const CallAnalysis calls = analyse(store, graph);
+    for (const Program& p : store.programs())
+        ProgramChecker(store, p, graph, calls, options, out).run();
+    auto messages = validateMessages(store.messages);
+    for (auto& d : messages)
+        out.push_back(std::move(d));
+    sortDiagnostics(out);
+    return out;
+}
+
+CheckResult check(std::string_view text, const ParseOptions& parseOptions, const ValidateOptions& options) {
+    ParseResult parsed = parse(text, parseOptions);
+    CheckResult r;
+    r.syntaxErrors = parsed.hasErrors();
+    r.diagnostics = std::move(parsed.diagnostics);
+    auto more = validate(parsed.store, options);
+    for (auto& d : more)
+        r.diagnostics.push_back(std::move(d));
+    sortDiagnostics(r.diagnostics);
+    r.store = std::move(parsed.store);
+    return r;
+}
+
+} // namespace k528::program

@@ -1,0 +1,106 @@
+#include <QtTest>
+
+#include <QTemporaryDir>
+
+#include "cli_runner.h"
+
+namespace {
+
+QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        return {};
+    f.write(text);
+    return path;
+}
+
+QByteArray read(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+const char* kMessy = "; shaft\n\n\n%l1 (main)\nn1 g01 x5.3420 f=50.00 z-1234.678 f=1000.00 ; c\n"
+                     "n2 r75 = 2 * r99\nn3 if r1 > 0 goto 1\nm30\n%messages\n#2=Б\n#1=А\n";
+const char* kCanonical = "; shaft\n\n%L1 (main)\nN1 G1 X5.342 FX50 Z-1234.678 FZ1000 ; c\n"
+                         "N2 R75=2*R99\nN3 IF R1>0 GOTO 1\nM30\n\n%MESSAGES\n#1=А\n#2=Б\n";
+
+} // namespace
+
+class TestCliFormat : public QObject {
+    Q_OBJECT
+private slots:
+    void printsTheCanonicalText() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "m.k528", kMessy);
+        const auto r = runK528({"format", f});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QString::fromUtf8(kCanonical));
+        QCOMPARE(r.err, QString());
+        // format of format's output is identical to it.
+        const QString g = write(dir, "c.k528", r.out.toUtf8());
+        QCOMPARE(runK528({"format", g}).out, r.out);
+        QCOMPARE(runK528({"format", "-"}, r.out.toUtf8()).out, r.out);
+    }
+    void semanticErrorsDoNotStopFormatting() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "e.k528", "goto 99\ng2 x1\n");
+        const auto r = runK528({"format", f});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QString("GOTO 99\nG2 X1\n"));
+    }
+    void syntaxErrorsStopFormatting() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "s.k528", "G1 X5..3\nG1 Q5\n");
+        const auto r = runK528({"format", "--lang", "en", f});
+        QCOMPARE(r.exitCode, 1);
+        QCOMPARE(r.out, QString());
+        QVERIFY(r.err.contains(f + ":1:4: error: [M33] X value: '5..3' is not a number"));
+        QVERIFY(r.err.contains(f + ":2:4: error: unknown address 'Q'"));
+        QVERIFY(r.err.contains("not formatted"));
+        QCOMPARE(read(f), QByteArray("G1 X5..3\nG1 Q5\n"));
+        QVERIFY(runK528({"format", f}).err.contains("не отформатирован"));
+    }
+    void checkOption() {
+        QTemporaryDir dir;
+        const QString messy = write(dir, "m.k528", kMessy);
+        const QString canon = write(dir, "c.k528", kCanonical);
+        QCOMPARE(runK528({"format", "--check", canon}).exitCode, 0);
+        const auto r = runK528({"format", "--check", messy});
+        QCOMPARE(r.exitCode, 1);
+        QCOMPARE(r.out, QString());
+        QVERIFY(r.err.contains("не в каноническом виде"));
+        QCOMPARE(read(messy), QByteArray(kMessy));
+    }
+    void inPlace() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "m.k528", kMessy);
+        const auto r = runK528({"format", "--in-place", f});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QString());
+        QCOMPARE(read(f), QByteArray(kCanonical));
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{"m.k528"}); // no temporary left
+        QCOMPARE(runK528({"format", "--in-place", f}).exitCode, 0);
+        QCOMPARE(read(f), QByteArray(kCanonical));
+    }
+    void headerlessFilesStayHeaderless() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "h.k528", "g1 x5\nm30\n");
+        QCOMPARE(runK528({"format", "--number", "12", f}).out, QString("G1 X5\nM30\n"));
+    }
+    void usageAndIoErrors() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "m.k528", "M30\n");
+        QCOMPARE(runK528({"format"}).exitCode, 2);
+        QCOMPARE(runK528({"format", f, f}).exitCode, 2);
+        QCOMPARE(runK528({"format", "--check", "--in-place", f}).exitCode, 2);
+        QCOMPARE(runK528({"format", "--in-place", "-"}, "M30\n").exitCode, 2);
+        QCOMPARE(runK528({"format", "--number", "0", f}).exitCode, 2);
+        const auto missing = runK528({"format", dir.filePath("nope.k528")});
+        QCOMPARE(missing.exitCode, 2);
+        QVERIFY(missing.err.startsWith("k528: cannot open"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliFormat)
+#include "test_cli_format.moc"
