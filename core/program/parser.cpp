@@ -793,7 +793,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
             if (next == 'X' || next == 'Z') {
                 axis = next == 'X' ? Axis::X : Axis::Z;
                 ++i;
-            } else if (lastAxis == Axis::Z) {
+            } else if (lastAxis != Axis::None) {
                 axis = lastAxis;
             }
             Value v;

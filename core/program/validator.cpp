@@ -379,7 +379,7 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
         const std::string a(1, axis);
         const Decimal& d = v->literal;
         if (dwell && axis == 'X') {
-            if (d.isZero())
+            if (d.isNegative())
                 error(Rule::DwellNegative, 33, f, v->span,
                       "Задание координаты X: выдержка времени G04 X" + d.toString() + " отрицательна",
                       "X value: the dwell time G04 X" + d.toString() + " is negative");
@@ -431,7 +431,7 @@ void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
             error(Rule::AxisWithCall, 50, f, iso.z->span,
                   "Z/L: " + inRu + " с вызовом подпрограммы " + l + " задана координата Z",
                   "Z/L: Z is given " + inEn + " that calls subprogram " + l);
-        if (m2)
+        if (m30)
             error(Rule::EndCombination, 58, f, m30->span,
                   "M30/L: конец программы M30 и вызов " + l + " " + inRu,
                   "M30/L: end of program M30 and a call of " + l + " " + inEn);
