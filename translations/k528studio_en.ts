@@ -2,6 +2,207 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>k528::studio::K923Keys</name>
+    <message>
+        <source>Mode AUTOMATIC: the machine works by the control program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode MANUAL: the machine&apos;s push-buttons and handwheels move the axes; R-parameters can be edited.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode REFERENCE POINT: the homing cycle ties the axes to the machine.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode PRESETS: technological parameters of the machine in groups.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode MACHINE CONSTANTS: editing the C-parameters (password).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode PROGRAM EDITING: editing the control programs (password).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode DATA MANAGEMENT: clearing memory and working with the PC (password).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mode key F8: the K528-05 has no eighth mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The key opens the main screen of the mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine function key K%1. The PLC program of the machine gives it its function: pressing sets Z1300.%2. Its LED is green by Z1906.%2, red by Z1907.%2, amber by both.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed override key L%1: selects the override whose code machine constant C%2 holds (codes 0–10 = 0…100 %). Its LED shows the override key in effect.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Digit %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves the marker up to the previous parameter or line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves the marker down to the next parameter or line.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves the marker left; in the axis screens, to the other axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moves the marker right; in the axis screens, to the other axis.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pages through the screens of the current mode.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enters the service screens (messages, faults, system, diagnostics) and returns from them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As the machine constants set it: cancels editing a parameter, resets the system, acknowledges error and fault messages.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switches keys with two functions to their second one: press SHIFT, then the key. The LED shows SHIFT engaged; pressing SHIFT again releases it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Goes to choosing a parameter by its number, and back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enters the number of the program for automatic mode; in the program editor, inserts a computing or jump frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inserts a new standard frame after the current one (program editor).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deletes a program, a frame or the value of a parameter.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enters the typed value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Decimal point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Addition.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subtraction; the minus sign.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Multiplication.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Division.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Assigns the result.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Types the letter R (R-parameters).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sets or clears the skip mark «/» of a frame (program editor).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SHIFT+▲: three lines up; in the program editor, the previous frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SHIFT+▼: three lines down; in the program editor, the next frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (latches like a click); or hold Shift with the other key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PC keyboard:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::K923Widget</name>
+    <message>
+        <source>Keyboard map…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copy the LCD text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LCD: yellow-green backlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LCD: blue backlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The K923 operator panel. Click it to work it from the PC keyboard too (each key&apos;s tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923 operator panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::KeyboardMapDialog</name>
+    <message>
+        <source>K923 keyboard map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel&apos;s SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Panel key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PC keyboard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Function</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -53,10 +254,6 @@
     </message>
     <message>
         <source>Axes and signals</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The K923 panel: 4×20 LCD, 26 keys, 17 LEDs.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -10,6 +10,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 
+#include "k923/k923_widget.h"
 #include "language.h"
 #include "util/version.h"
 
@@ -47,6 +48,12 @@ QDockWidget* MainWindow::addDock(const char* objectName, Qt::DockWidgetArea area
 
 void MainWindow::createDocks() {
     k923Dock_ = addDock("dock.k923", Qt::RightDockWidgetArea);
+    // The K923 panel. Until the panel model drives it, it shows what a
+    // switched-on panel without data shows: the lit, empty LCD, LEDs off.
+    delete k923Dock_->widget();
+    k923_ = new K923Widget(k923Dock_);
+    k923_->setDisplay(K923Widget::blankDisplay());
+    k923Dock_->setWidget(k923_);
     machineDock_ = addDock("dock.machine", Qt::RightDockWidgetArea);
     messagesDock_ = addDock("dock.messages", Qt::BottomDockWidgetArea);
     axesDock_ = addDock("dock.axes", Qt::BottomDockWidgetArea);
@@ -104,7 +111,6 @@ void MainWindow::retranslate() {
         if (auto* l = qobject_cast<QLabel*>(d->widget()))
             l->setText(text);
     };
-    hint(k923Dock_, tr("The K923 panel: 4×20 LCD, 26 keys, 17 LEDs."));
     hint(machineDock_, tr("The machine's push-buttons, handwheel, override and lamps."));
     hint(messagesDock_, tr("Alarms and messages of the controller and the machine."));
     hint(axesDock_, tr("Axis positions, following error, DAC and interface signals."));

@@ -12,6 +12,8 @@ class QActionGroup;
 
 namespace k528::studio {
 
+class K923Widget;
+
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -20,6 +22,8 @@ public:
     // The docks, by role (object names "dock.k923", "dock.machine",
     // "dock.messages", "dock.axes").
     QDockWidget* k923Dock() const { return k923Dock_; }
+    // The K923 panel in the dock "dock.k923".
+    K923Widget* k923() const { return k923_; }
     QDockWidget* machineDock() const { return machineDock_; }
     QDockWidget* messagesDock() const { return messagesDock_; }
     QDockWidget* axesDock() const { return axesDock_; }
@@ -36,6 +40,7 @@ private:
 
     QTabWidget* workArea_ = nullptr;
     QDockWidget* k923Dock_ = nullptr;
+    K923Widget* k923_ = nullptr;
     QDockWidget* machineDock_ = nullptr;
     QDockWidget* messagesDock_ = nullptr;
     QDockWidget* axesDock_ = nullptr;
