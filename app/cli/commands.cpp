@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli.h"
+#include "db_cli.h"
 #include "program_cli.h"
 
 namespace k528::cli {
@@ -34,6 +35,9 @@ std::span<const Command> commands() {
          "A file with syntax errors is not formatted: they are printed on stderr (exit 1).\n"
          "FILE '-' reads standard input.\n",
          runFormat},
+        {"db", "db init|machines|show|set|export|import|diff|calc|audit [--db PATH] ...",
+         "The database of machines: constants, R-parameters, programs, messages, history.",
+         kDbDetails, runDb},
     };
     return table;
 }

@@ -21,4 +21,7 @@ studio=$(QT_QPA_PLATFORM=offscreen "$tmp/root/usr/bin/k528studio" --version) || 
 echo "$studio" | grep -q "$version" || fail "unexpected k528studio version output: $studio"
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "$depends" | grep -q libqt6widgets6 || fail "Depends lacks Qt: $depends"
+echo "$depends" | grep -q libsqlite3 || fail "Depends lacks SQLite (core/db links it): $depends"
+db=$(K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" db init) || fail "k528 db init exited $?"
+echo "$db" | grep -q "schema    version" || fail "unexpected k528 db init output: $db"
 echo "ok: $(basename "$deb") unpacks; $out; Depends: $depends"

@@ -1,0 +1,314 @@
+// k528 db calc — the C-constant calculator (profile::calc) from physical
+// quantities: constants of one axis, how each was obtained, and the remark on
+// formula 1 of parameter 22 (docs/machine-constants.md).
+#include "args.h"
+#include "catalog/cparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/location.h"
+#include "db_cli.h"
+#include "profile/calculator.h"
+#include "profile/settings.h"
+#include "profile/text_format.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace k528::cli {
+
+namespace cat = k528::catalog;
+namespace cc = k528::catalog::c;
+namespace calc = k528::profile::calc;
+
+namespace {
+
+int calcFail(const std::string& message, int code = ExitUsage) {
+    std::fprintf(stderr, "k528: %s\n", message.c_str());
+    return code;
+}
+
+std::string pad(const std::string& s, std::size_t width) {
+    const std::size_t len = utf8::length(s);
+    return len >= width ? s : s + std::string(width - len, ' ');
+}
+
+std::string fmt(double v) {
+    return profile::formatDouble(v);
+}
+
+std::string fixed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+// "runup:5000:2000", "braking:5000:10", "value:0.5"
+bool parseAccel(const std::string& option, const std::string& text, calc::AccelSpec& a,
+                std::string& error) {
+    std::vector<std::string> parts;
+    std::size_t pos = 0;
+    while (true) {
+        const auto c = text.find(':', pos);
+        parts.push_back(text.substr(pos, c == std::string::npos ? std::string::npos : c - pos));
+        if (c == std::string::npos)
+            break;
+        pos = c + 1;
+    }
+    std::vector<double> nums;
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+        const auto v = parseNumber(parts[i]);
+        if (!v) {
+            error = option + " " + text + ": '" + parts[i] + "' is not a number";
+            return false;
+        }
+        nums.push_back(*v);
+    }
+    if (parts[0] == "runup" && nums.size() == 2) {
+        a.by = calc::AccelSpec::By::RunUp;
+        a.vmaxMmPerMin = nums[0];
+        a.runUpMs = nums[1];
+    } else if (parts[0] == "braking" && nums.size() == 2) {
+        a.by = calc::AccelSpec::By::Braking;
+        a.vmaxMmPerMin = nums[0];
+        a.brakingMm = nums[1];
+    } else if (parts[0] == "value" && nums.size() == 1) {
+        a.by = calc::AccelSpec::By::Value;
+        a.aMPerS2 = nums[0];
+    } else {
+        error = option + " " + text +
+                ": expected runup:MM_PER_MIN:MS, braking:MM_PER_MIN:MM or value:M_PER_S2";
+        return false;
+    }
+    return true;
+}
+
+std::string remark(const calc::AccelResult& r, const char* which, bool asPrinted) {
+    std::string s = std::string(which) + " by formula " + std::to_string(r.formula) + ": ";
+    if (r.formula == 1)
+        s += "the printed formula 0.8533·Vmax/T gives " + std::to_string(r.printedValue) +
+             ", which K528 Studio (unit 25600·A/Kd of formulas 2 and 3) reads as " +
+             fixed(r.printedMPerS2, 4) + " m/s², twice the " + fixed(r.describedMPerS2, 4) +
+             " m/s² the run-up describes; the consistent value is " +
+             std::to_string(r.consistentValue) + ". ";
+    else if (r.formula == 2)
+        s += "printed 3.556e-6·Vmax²/S gives " + std::to_string(r.printedValue) +
+             ", the exact coefficient 3.5556e-6 gives " + std::to_string(r.consistentValue) + ". ";
+    else
+        s += "25600·A/Kd = " + std::to_string(r.consistentValue) + ".";
+    if (r.formula != 3)
+        s += asPrinted ? "Entered as printed (--as-printed)."
+                       : "Entered: the consistent value (--as-printed enters the printed one).";
+    return s;
+}
+
+json::Value accelJson(const calc::AccelResult& r) {
+    json::Value j;
+    j.set("formula", r.formula);
+    j.set("printed_value", r.printedValue);
+    j.set("consistent_value", r.consistentValue);
+    j.set("described_m_per_s2", r.describedMPerS2);
+    j.set("printed_m_per_s2", r.printedMPerS2);
+    j.set("printed_factor", r.printedFactor());
+    return j;
+}
+
+} // namespace
+
+int runDbCalc(std::span<const std::string> argv) {
+    const Args a(argv, {"--diameter", "--as-printed", "--json"},
+                 {"--db", "--machine", "--axis", "--discrete", "--screw-lead", "--gear",
+                  "--encoder-lines", "--drive-volts", "--drive-speed", "--kv", "--feed", "--rapid",
+                  "--auto-rapid", "--home-start", "--home-creep", "--accel", "--accel2",
+                  "--dac-max", "--dac-limit-percent"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (!a.positional().empty())
+        return usageError("db calc takes options only ('k528 db --help' lists them)");
+
+    cat::Axis axis = cat::Axis::X;
+    if (const auto v = a.value("--axis")) {
+        if (*v == "X" || *v == "x")
+            axis = cat::Axis::X;
+        else if (*v == "Z" || *v == "z")
+            axis = cat::Axis::Z;
+        else
+            return usageError("--axis is X or Z, not '" + *v + "'");
+    }
+    const auto number = [&](const char* option, double& target) -> bool {
+        if (const auto v = a.value(option)) {
+            const auto n = parseNumber(*v);
+            if (!n || !std::isfinite(*n)) {
+                usageError(std::string(option) + ": '" + *v + "' is not a number");
+                return false;
+            }
+            target = *n;
+        }
+        return true;
+    };
+
+    calc::AxisDesign d;
+    std::optional<profile::MachineProfile> machine;
+    bool haveAccel1 = false;
+    if (const auto m = a.value("--machine")) {
+        try {
+            machine = db::loadProfile(*m, a.value("--db").value_or(""));
+            d = calc::designFromSettings(*machine, axis);
+            const calc::AxisSummary s = calc::summarizeAxis(*machine, axis);
+            d.feedNormalMmPerMin = s.feedNormalMmPerMin;
+            d.feedRapidMmPerMin = s.feedRapidMmPerMin;
+            d.feedAutoRapidMmPerMin = s.feedAutoRapidMmPerMin;
+            d.feedHomeStartMmPerMin = s.feedHomeStartMmPerMin;
+            d.feedHomeCreepMmPerMin = s.feedHomeCreepMmPerMin;
+            d.accel1 = calc::AccelSpec{};
+            d.accel1.aMPerS2 = s.accel1MPerS2;
+            haveAccel1 = true;
+            if (profile::axisValue(*machine, axis, cc::kAccel2) != 0) {
+                calc::AccelSpec a2;
+                a2.aMPerS2 = s.accel2MPerS2;
+                d.accel2 = a2;
+            }
+        } catch (const profile::SettingError& e) {
+            return calcFail("--machine " + *m + ": " + e.what() +
+                            " (give the physical data as options)");
+        } catch (const profile::FileError& e) {
+            return calcFail(e.what());
+        } catch (const db::Error& e) {
+            return calcFail(e.what());
+        }
+    } else {
+        for (const char* required : {"--screw-lead", "--encoder-lines", "--drive-speed", "--accel"})
+            if (!a.value(required))
+                return usageError(std::string("db calc needs ") + required +
+                                  " (or --machine NAME to take the machine's data)");
+    }
+    if (const auto v = a.value("--discrete")) {
+        if (*v == "0.01")
+            d.scale.discrete = units::Discrete::Mm0_01;
+        else if (*v == "0.001")
+            d.scale.discrete = units::Discrete::Mm0_001;
+        else if (*v == "0.0001")
+            d.scale.discrete = units::Discrete::Mm0_0001;
+        else
+            return usageError("--discrete is 0.01, 0.001 or 0.0001, not '" + *v + "'");
+    }
+    if (a.has("--diameter"))
+        d.scale.diameter = true;
+    double lines = static_cast<double>(d.encoderLines), dacMax = static_cast<double>(d.dacMax);
+    if (!number("--screw-lead", d.screwLeadMm) || !number("--gear", d.gearRatio) ||
+        !number("--encoder-lines", lines) || !number("--drive-volts", d.driveMaxVolts) ||
+        !number("--drive-speed", d.driveMaxSpeedMmPerMin) || !number("--kv", d.kv) ||
+        !number("--feed", d.feedNormalMmPerMin) || !number("--rapid", d.feedRapidMmPerMin) ||
+        !number("--auto-rapid", d.feedAutoRapidMmPerMin) ||
+        !number("--home-start", d.feedHomeStartMmPerMin) ||
+        !number("--home-creep", d.feedHomeCreepMmPerMin) || !number("--dac-max", dacMax) ||
+        !number("--dac-limit-percent", d.dacLimitPercent))
+        return ExitUsage;
+    if (lines != std::floor(lines) || lines < 1 || lines > 1e9)
+        return usageError("--encoder-lines must be a whole number of lines");
+    if (dacMax != std::floor(dacMax) || dacMax < 0 || dacMax > 2047)
+        return usageError("--dac-max must be a whole number 0..2047");
+    d.encoderLines = static_cast<std::int64_t>(lines);
+    d.dacMax = static_cast<std::int64_t>(dacMax);
+    std::string error;
+    const bool asPrinted = a.has("--as-printed");
+    if (const auto v = a.value("--accel")) {
+        if (!parseAccel("--accel", *v, d.accel1, error))
+            return usageError(error);
+        haveAccel1 = true;
+    }
+    if (const auto v = a.value("--accel2")) {
+        calc::AccelSpec a2;
+        if (!parseAccel("--accel2", *v, a2, error))
+            return usageError(error);
+        d.accel2 = a2;
+    }
+    (void)haveAccel1;
+    d.accel1.asPrinted = asPrinted;
+    if (d.accel2)
+        d.accel2->asPrinted = asPrinted;
+
+    calc::AxisConstants r;
+    try {
+        r = calc::designAxis(d);
+    } catch (const calc::CalcError& e) {
+        return calcFail(std::string("calc: ") + e.what(), ExitInputErrors);
+    }
+
+    std::vector<std::string> remarks;
+    remarks.push_back(remark(r.accel1, "ACCELERATION 1", asPrinted));
+    if (r.accel2)
+        remarks.push_back(remark(*r.accel2, "ACCELERATION 2", asPrinted));
+    // The remark on formula 1 is printed always: it is what a technologist
+    // checking appendix Ж's figures needs to know.
+    remarks.push_back("Formula 1 as printed gives twice the acceleration of formulas 2 and 3 "
+                      "for the same motion (appendix Ж's X value 2000 is 0.078 m/s² here); "
+                      "docs/machine-constants.md explains the choice.");
+
+    if (a.has("--json")) {
+        json::Value root;
+        root.set("axis", cat::axisName(axis));
+        if (machine)
+            root.set("machine", machine->name);
+        json::Array cs;
+        for (const auto& [x, v] : r.values) {
+            const int n = cat::axisParam(x, axis);
+            json::Value j;
+            j.set("number", n);
+            j.set("key", cat::cParam(n).key());
+            j.set("name", cat::cParam(n).name);
+            j.set("value", v);
+            if (machine)
+                j.set("current", machine->cValue(n));
+            cs.push_back(std::move(j));
+        }
+        root.set("constants", std::move(cs));
+        json::Value ratio;
+        ratio.set("l", r.ratio.l);
+        ratio.set("n", r.ratio.n);
+        ratio.set("exact", r.ratio.exact);
+        ratio.set("error_ppm", r.ratio.errorPpm);
+        root.set("encoder_ratio", std::move(ratio));
+        root.set("accel1", accelJson(r.accel1));
+        if (r.accel2)
+            root.set("accel2", accelJson(*r.accel2));
+        json::Array steps;
+        for (const auto& s : r.steps)
+            steps.push_back(s);
+        root.set("steps", std::move(steps));
+        json::Array rem;
+        for (const auto& s : remarks)
+            rem.push_back(s);
+        root.set("remarks", std::move(rem));
+        std::string text = root.dump() + "\n";
+        std::fwrite(text.data(), 1, text.size(), stdout);
+        return ExitOk;
+    }
+
+    std::string s = "Axis " + std::string(cat::axisName(axis)) + ", discrete " +
+                    fmt(d.scale.discreteMm()) + " mm" +
+                    (d.scale.diameter ? ", diameter display" : "") +
+                    (machine ? ", data of machine " + machine->name : "") + "\n\n";
+    for (const auto& [x, v] : r.values) {
+        const int n = cat::axisParam(x, axis);
+        const auto& def = cat::cParam(n);
+        s += def.key() + "  " + pad(std::string(def.name), 20) + " " + pad(std::to_string(v), 8);
+        if (machine) {
+            const auto cur = machine->cValue(n);
+            s += cur == v ? "  (as now)" : "  (now " + std::to_string(cur) + ")";
+        }
+        s += "\n";
+    }
+    s += "\nHow:\n";
+    for (const auto& step : r.steps)
+        s += "  " + step + "\n";
+    s += "\n";
+    for (const auto& rm : remarks)
+        s += rm + "\n";
+    std::fwrite(s.data(), 1, s.size(), stdout);
+    return ExitOk;
+}
+
+} // namespace k528::cli

@@ -1,0 +1,17 @@
+// `k528 db`: the database of machines (docs/database.md). cmd_db.cpp holds
+// the subcommands, cmd_db_calc.cpp the C-constant calculator.
+#pragma once
+
+#include <span>
+#include <string>
+
+namespace k528::cli {
+
+int runDb(std::span<const std::string> args);
+// `k528 db calc ...` (args after "calc"); `dbPath` is "" for the default.
+int runDbCalc(std::span<const std::string> args);
+
+// Help text of `k528 db` (all subcommands and options).
+extern const char* const kDbDetails;
+
+} // namespace k528::cli

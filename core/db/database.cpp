@@ -1,0 +1,1408 @@
+#include "db/database.h"
+
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "db/sha256.h"
+#include "db/sqlite.h"
+#include "profile/builtin.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <pwd.h>
+#include <set>
+#include <sqlite3.h>
+#include <sstream>
+#include <thread>
+#include <unistd.h>
+
+namespace k528::db {
+
+namespace fs = std::filesystem;
+namespace cat = k528::catalog;
+using profile::Change;
+using profile::DiffSection;
+using profile::MachineProfile;
+
+// ---------------------------------------------------------------------------
+// Small helpers
+
+Clock systemClock() {
+    return [] {
+        return static_cast<std::int64_t>(std::chrono::duration_cast<std::chrono::seconds>(
+                                             std::chrono::system_clock::now().time_since_epoch())
+                                             .count());
+    };
+}
+
+std::string formatTimestamp(std::int64_t t) {
+    // Days since the epoch -> civil date (H. Hinnant's algorithm).
+    std::int64_t days = t >= 0 ? t / 86400 : -((-t + 86399) / 86400);
+    std::int64_t secs = t - days * 86400;
+    days += 719468;
+    const std::int64_t era = (days >= 0 ? days : days - 146096) / 146097;
+    const std::int64_t doe = days - era * 146097;
+    const std::int64_t yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    std::int64_t y = yoe + era * 400;
+    const std::int64_t doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    const std::int64_t mp = (5 * doy + 2) / 153;
+    const std::int64_t d = doy - (153 * mp + 2) / 5 + 1;
+    const std::int64_t m = mp < 10 ? mp + 3 : mp - 9;
+    if (m <= 2)
+        ++y;
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%04lld-%02lld-%02lldT%02lld:%02lld:%02lldZ",
+                  static_cast<long long>(y), static_cast<long long>(m), static_cast<long long>(d),
+                  static_cast<long long>(secs / 3600), static_cast<long long>(secs / 60 % 60),
+                  static_cast<long long>(secs % 60));
+    return buf;
+}
+
+std::string defaultAuthor() {
+    for (const char* var : {"USER", "LOGNAME"})
+        if (const char* v = std::getenv(var); v && *v)
+            return v;
+    struct passwd pw {};
+    struct passwd* result = nullptr;
+    char buf[4096];
+    if (getpwuid_r(geteuid(), &pw, buf, sizeof buf, &result) == 0 && result && pw.pw_name)
+        return pw.pw_name;
+    return "unknown";
+}
+
+std::string_view errorKindName(ErrorKind k) {
+    switch (k) {
+    case ErrorKind::Io:
+        return "io";
+    case ErrorKind::Foreign:
+        return "foreign";
+    case ErrorKind::Corrupt:
+        return "corrupt";
+    case ErrorKind::TooNew:
+        return "too-new";
+    case ErrorKind::Busy:
+        return "busy";
+    case ErrorKind::NoMachine:
+        return "no-machine";
+    case ErrorKind::MachineExists:
+        return "machine-exists";
+    case ErrorKind::NoRevision:
+        return "no-revision";
+    case ErrorKind::Conflict:
+        return "conflict";
+    case ErrorKind::Invalid:
+        return "invalid";
+    case ErrorKind::Sql:
+        return "sql";
+    }
+    return "";
+}
+
+namespace {
+
+std::string two(int k) {
+    return (k < 10 ? "0" : "") + std::to_string(k);
+}
+
+std::string plcKey(cat::PlcGroup g, int k) {
+    return std::string(1, cat::plcGroupLetter(g)) + two(k);
+}
+
+std::optional<cat::PlcGroup> plcGroupOf(char letter) {
+    for (cat::PlcGroup g : cat::kPlcGroups)
+        if (cat::plcGroupLetter(g) == letter)
+            return g;
+    return std::nullopt;
+}
+
+std::optional<DiffSection> sectionFromName(std::string_view s) {
+    for (DiffSection d :
+         {DiffSection::Machine, DiffSection::C, DiffSection::R, DiffSection::Program,
+          DiffSection::Message, DiffSection::PlcMessage, DiffSection::Simulation})
+        if (profile::diffSectionName(d) == s)
+            return d;
+    return std::nullopt;
+}
+
+// The number after a one-character prefix ("C022" -> 22, "#3" -> 3).
+std::optional<int> keyNumber(std::string_view key) {
+    if (key.size() < 2)
+        return std::nullopt;
+    int n = 0;
+    for (char ch : key.substr(1)) {
+        if (ch < '0' || ch > '9' || n > 100000)
+            return std::nullopt;
+        n = n * 10 + (ch - '0');
+    }
+    return n;
+}
+
+std::optional<std::int64_t> toInt(const std::string& s) {
+    if (s.empty())
+        return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(s.c_str(), &end, 10);
+    if (errno != 0 || end != s.c_str() + s.size())
+        return std::nullopt;
+    return v;
+}
+
+const std::string kOrderKey = "(order)"; // simulation keys that only moved
+
+std::string joinKeys(const profile::Settings& s, char sep) {
+    std::string out;
+    for (const auto& [k, v] : s.entries()) {
+        if (!out.empty())
+            out += sep;
+        out += k;
+    }
+    return out;
+}
+
+bool sameFinding(const profile::Finding& a, const profile::Finding& b) {
+    return a.severity == b.severity && a.subject == b.subject && a.message == b.message;
+}
+
+// A finding about one item's own value (always rejected), as opposed to a
+// cross-check between constants.
+bool itemFinding(const profile::Finding& f, const MachineProfile& p) {
+    if (f.cParams.empty())
+        return f.severity == profile::Severity::Error;
+    if (f.cParams.size() == 1) {
+        const int n = f.cParams.front();
+        return n >= 1 && n <= cat::kCParamCount && !profile::checkCValue(n, p.cValue(n)).empty();
+    }
+    return false;
+}
+
+std::string formatFindings(const std::vector<profile::Finding>& fs) {
+    std::string s;
+    for (const auto& f : fs)
+        s += "\n  " + profile::formatFinding(f);
+    return s;
+}
+
+// Checks `neu` before it is written: returns its findings (warnings and
+// tolerated errors) or throws ValidationError.
+std::vector<profile::Finding> checkWrite(const MachineProfile* old, const MachineProfile& neu,
+                                         bool allowErrors) {
+    std::vector<profile::Finding> found = profile::validate(neu);
+    std::vector<profile::Finding> oldFound;
+    if (old)
+        oldFound = profile::validate(*old);
+    std::vector<profile::Finding> rejected;
+    for (const auto& f : found) {
+        if (f.severity != profile::Severity::Error)
+            continue;
+        if (itemFinding(f, neu)) {
+            rejected.push_back(f);
+            continue;
+        }
+        const bool existed = std::any_of(oldFound.begin(), oldFound.end(),
+                                         [&](const auto& o) { return sameFinding(o, f); });
+        if (!existed && !allowErrors)
+            rejected.push_back(f);
+    }
+    if (!rejected.empty())
+        throw ValidationError("machine " + neu.name + ": rejected, nothing was written (" +
+                                  std::to_string(rejected.size()) +
+                                  (rejected.size() == 1 ? " error" : " errors") +
+                                  "):" + formatFindings(rejected),
+                              rejected);
+    return found;
+}
+
+// The changes that turn `old` (nullptr: nothing) into `neu`. A new machine
+// records its name, title and all 152 constants explicitly.
+std::vector<Change> computeChanges(const MachineProfile* old, const MachineProfile& neu) {
+    if (!old) {
+        std::vector<Change> out;
+        out.push_back(Change{DiffSection::Machine, "name", "", std::nullopt, neu.name});
+        out.push_back(Change{DiffSection::Machine, "title", "", std::nullopt, neu.title});
+        for (const cat::CParamDef& d : cat::cParams())
+            out.push_back(Change{DiffSection::C, d.key(), std::string(d.name), std::nullopt,
+                                 std::to_string(neu.cValue(d.number))});
+        MachineProfile base;
+        base.name = neu.name;
+        base.title = neu.title;
+        base.c = neu.c;
+        const auto rest = profile::diff(base, neu);
+        out.insert(out.end(), rest.begin(), rest.end());
+        return out;
+    }
+    std::vector<Change> out = profile::diff(*old, neu);
+    // Keys of the simulation section that only moved: diff() does not report
+    // them, the history records the new order.
+    std::vector<std::string> expected;
+    for (const auto& [k, v] : old->simulation.entries())
+        if (neu.simulation.has(k))
+            expected.push_back(k);
+    for (const auto& [k, v] : neu.simulation.entries())
+        if (!old->simulation.has(k))
+            expected.push_back(k);
+    std::vector<std::string> actual;
+    for (const auto& [k, v] : neu.simulation.entries())
+        actual.push_back(k);
+    if (expected != actual)
+        out.push_back(Change{DiffSection::Simulation, kOrderKey, "", joinKeys(old->simulation, ' '),
+                             joinKeys(neu.simulation, ' ')});
+    return out;
+}
+
+std::string describeChanges(const std::vector<Change>& changes) {
+    std::string s;
+    std::size_t shown = 0;
+    for (const auto& c : changes) {
+        if (c.key == kOrderKey)
+            continue;
+        if (shown == 8) {
+            s += " and " + std::to_string(changes.size() - shown) + " more";
+            break;
+        }
+        s += (shown ? ", " : "") + c.key;
+        ++shown;
+    }
+    return s.empty() ? "order of simulation settings" : s;
+}
+
+// The definition rows' content, for detecting a changed catalog.
+std::string catalogDigest() {
+    std::string s;
+    const auto add = [&](std::string_view v) {
+        s += v;
+        s += '\x1f';
+    };
+    for (const cat::CParamDef& d : cat::cParams()) {
+        add(std::to_string(d.number));
+        add(cat::axisName(d.axis));
+        add(cat::kindName(d.kind));
+        add(cat::unitSymbol(d.unit));
+        add(cat::unitRu(d.unit));
+        add(cat::unitEn(d.unit));
+        add(std::to_string(d.min));
+        add(std::to_string(d.max));
+        add(d.address.text());
+        add(d.address.textEn());
+        add(d.name);
+        add(d.nameEn);
+        add(d.descriptionRu);
+        add(d.descriptionEn);
+        add(d.hintRu);
+        add(d.hintEn);
+        add(d.note);
+        s += '\x1e';
+    }
+    return sha256Hex(s);
+}
+
+struct FileHeader {
+    bool exists = false;
+    bool empty = false;
+    std::uint32_t applicationId = 0;
+    std::uint32_t userVersion = 0;
+};
+
+std::uint32_t be32(const unsigned char* p) {
+    return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
+           std::uint32_t(p[3]);
+}
+
+std::string hex32(std::uint32_t v) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%08X", v);
+    return buf;
+}
+
+// Looks at the file's first 100 bytes before SQLite opens it: refuses what
+// is certainly not ours without touching it.
+FileHeader readHeader(const fs::path& path, int latest) {
+    FileHeader h;
+    std::error_code ec;
+    const auto st = fs::status(path, ec);
+    if (ec || !fs::exists(st)) {
+        if (ec && ec != std::errc::no_such_file_or_directory)
+            throw Error(ErrorKind::Io, path.string() + ": " + ec.message());
+        return h;
+    }
+    h.exists = true;
+    if (fs::is_directory(st))
+        throw Error(ErrorKind::Io, path.string() + ": is a directory, not a database file");
+    const auto size = fs::file_size(path, ec);
+    if (ec)
+        throw Error(ErrorKind::Io, path.string() + ": " + ec.message());
+    if (size == 0) {
+        h.empty = true;
+        return h;
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error(ErrorKind::Io, "cannot read " + path.string() + ": " + std::strerror(errno));
+    unsigned char buf[100] = {};
+    in.read(reinterpret_cast<char*>(buf), sizeof buf);
+    const auto got = static_cast<std::size_t>(in.gcount());
+    static constexpr char kMagic[] = "SQLite format 3";
+    if (got < 100 || std::memcmp(buf, kMagic, sizeof kMagic) != 0)
+        throw Error(ErrorKind::Foreign,
+                    path.string() + ": not a K528 Studio database: " +
+                        (got < 100 ? "the file has only " + std::to_string(got) +
+                                         " bytes, too few for an SQLite database"
+                                   : std::string("the file does not start with the SQLite header "
+                                                 "(another kind of file, or a database whose "
+                                                 "first page is damaged)")) +
+                        "; it was left untouched");
+    h.userVersion = be32(buf + 60);
+    h.applicationId = be32(buf + 68);
+    if (h.applicationId != 0 && h.applicationId != static_cast<std::uint32_t>(kApplicationId))
+        throw Error(ErrorKind::Foreign,
+                    path.string() +
+                        ": not a K528 Studio database: it is another program's SQLite "
+                        "database (application_id " +
+                        hex32(h.applicationId) + ", ours is " +
+                        hex32(static_cast<std::uint32_t>(kApplicationId)) +
+                        "); it was left untouched");
+    if (h.applicationId == static_cast<std::uint32_t>(kApplicationId) &&
+        h.userVersion > static_cast<std::uint32_t>(latest))
+        throw Error(ErrorKind::TooNew,
+                    path.string() + ": the database has schema version " +
+                        std::to_string(h.userVersion) + ", written by a newer K528 Studio; this " +
+                        "program knows versions up to " + std::to_string(latest) +
+                        ". Use the newer program; the file was left untouched");
+    return h;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------
+// Edit
+
+std::string Edit::describe() const {
+    std::string s;
+    const auto add = [&](const std::string& k) { s += (s.empty() ? "" : " ") + k; };
+    if (title)
+        add("title");
+    for (const auto& [n, v] : c)
+        add(cat::cParam(n).key());
+    for (const auto& [n, v] : r)
+        add("R" + std::to_string(n));
+    for (const auto& [n, v] : messages)
+        add("#" + std::to_string(n));
+    for (const auto& [gk, v] : plc)
+        add(plcKey(gk.first, gk.second));
+    for (const auto& [k, v] : simulation)
+        add(k);
+    return s;
+}
+
+void Edit::applyTo(MachineProfile& p) const {
+    if (title)
+        p.title = *title;
+    for (const auto& [n, v] : c)
+        p.setC(n, v);
+    for (const auto& [n, v] : r) {
+        if (v)
+            p.r[n] = *v;
+        else
+            p.r.erase(n);
+    }
+    for (const auto& [n, v] : messages) {
+        if (v)
+            p.messages[n] = *v;
+        else
+            p.messages.erase(n);
+    }
+    for (const auto& [gk, v] : plc) {
+        auto& m = p.plcTexts(gk.first);
+        if (v)
+            m[gk.second] = *v;
+        else
+            m.erase(gk.second);
+    }
+    for (const auto& [k, v] : simulation) {
+        if (v)
+            p.simulation.set(k, *v);
+        else
+            p.simulation.erase(k);
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Database
+
+struct Database::Impl {
+    sqlite3* db = nullptr;
+    fs::path path;
+    OpenReport report;
+    Clock clock;
+    std::map<std::string, std::unique_ptr<sql::Stmt>, std::less<>> cache;
+
+    ~Impl() {
+        cache.clear();
+        if (db)
+            sqlite3_close_v2(db);
+    }
+
+    sql::Stmt& st(std::string_view text) {
+        auto it = cache.find(text);
+        if (it == cache.end())
+            it = cache.emplace(std::string(text), std::make_unique<sql::Stmt>(db, text)).first;
+        it->second->reset();
+        return *it->second;
+    }
+
+    std::string now() const { return formatTimestamp(clock()); }
+
+    struct Row {
+        std::int64_t id = 0;
+        MachineInfo info;
+    };
+
+    std::optional<Row> findMachine(std::string_view name) {
+        auto& q = st("SELECT id, name, title, revision, created_at, changed_at, changed_by "
+                     "FROM machines WHERE name = ?1");
+        q.bind(1, name);
+        if (!q.step())
+            return std::nullopt;
+        Row r;
+        r.id = q.i64(0);
+        r.info = MachineInfo{q.text(1), q.text(2), q.i32(3), q.text(4), q.text(5), q.text(6)};
+        q.reset();
+        return r;
+    }
+
+    Row requireMachine(std::string_view name) {
+        auto r = findMachine(name);
+        if (!r) {
+            std::string known;
+            auto& q = st("SELECT name FROM machines ORDER BY name");
+            while (q.step())
+                known += (known.empty() ? "" : ", ") + q.text(0);
+            throw Error(ErrorKind::NoMachine,
+                        "no machine \"" + std::string(name) + "\" in " + path.string() +
+                            " (machines: " + (known.empty() ? "none" : known) + ")");
+        }
+        return *r;
+    }
+
+    // `at` "": now.
+    void audit(const std::string& author, std::string_view action, std::string_view machine,
+               int revision, std::string_view detail, const std::string& at = {}) {
+        auto& q = st("INSERT INTO audit (at, author, action, machine, revision, detail) "
+                     "VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+        q.bind(1, at.empty() ? now() : at)
+            .bind(2, author)
+            .bind(3, action)
+            .bind(4, machine)
+            .bind(5, revision)
+            .bind(6, detail);
+        q.run();
+    }
+
+    MachineProfile loadCurrent(const Row& row);
+    MachineProfile loadAt(const Row& row, int revision);
+    SaveResult write(const std::optional<Row>& row, const MachineProfile* old,
+                     const MachineProfile& neu, const WriteOptions& o);
+    void syncDefinitions(const std::string& author);
+    void checkFile(bool walExisted);
+};
+
+namespace {
+
+// Resets statements left mid-iteration (an exception inside a loop), so no
+// read snapshot outlives the call that made it.
+void resetBusyStatements(sqlite3* db) {
+    for (sqlite3_stmt* s = sqlite3_next_stmt(db, nullptr); s; s = sqlite3_next_stmt(db, s))
+        if (sqlite3_stmt_busy(s))
+            sqlite3_reset(s);
+}
+
+// Read-only snapshot: the SELECTs of one load see one state of the file.
+class ReadTx {
+public:
+    template <typename D> explicit ReadTx(D& d) : db_(d.db) {
+        if (sqlite3_get_autocommit(db_)) {
+            sql::exec(db_, "BEGIN");
+            own_ = true;
+        }
+    }
+    ~ReadTx() {
+        if (own_) {
+            resetBusyStatements(db_);
+            sqlite3_exec(db_, "COMMIT", nullptr, nullptr, nullptr);
+        }
+    }
+    ReadTx(const ReadTx&) = delete;
+    ReadTx& operator=(const ReadTx&) = delete;
+
+private:
+    sqlite3* db_;
+    bool own_ = false;
+};
+
+// A write transaction: BEGIN IMMEDIATE takes the write lock at once (waiting
+// up to the busy timeout), so two writers never deadlock.
+class WriteTx {
+public:
+    template <typename D> explicit WriteTx(D& d) : db_(d.db) {
+        try {
+            sql::exec(db_, "BEGIN IMMEDIATE");
+        } catch (const Error& e) {
+            if (e.kind() != ErrorKind::Busy)
+                throw;
+            throw Error(ErrorKind::Busy, d.path.string() +
+                                             ": another process is writing to the database and "
+                                             "kept it locked longer than the busy timeout; "
+                                             "nothing was written, try again");
+        }
+    }
+    void commit() {
+        resetBusyStatements(db_);
+        sql::exec(db_, "COMMIT");
+        done_ = true;
+    }
+    ~WriteTx() {
+        if (!done_) {
+            resetBusyStatements(db_);
+            sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+        }
+    }
+    WriteTx(const WriteTx&) = delete;
+    WriteTx& operator=(const WriteTx&) = delete;
+
+private:
+    sqlite3* db_;
+    bool done_ = false;
+};
+
+} // namespace
+
+MachineProfile Database::Impl::loadCurrent(const Row& row) {
+    MachineProfile p;
+    p.name = row.info.name;
+    p.title = row.info.title;
+    const std::string where = "machine " + row.info.name + " in " + path.string();
+    {
+        auto& q = st("SELECT number, value FROM c_values WHERE machine_id = ?1");
+        q.bind(1, row.id);
+        int count = 0;
+        while (q.step()) {
+            const int n = q.i32(0);
+            if (n < 1 || n > cat::kCParamCount)
+                throw Error(ErrorKind::Corrupt,
+                            where + ": C-parameter number " + std::to_string(n) + " is not 1..152");
+            p.c[static_cast<std::size_t>(n)] = q.i64(1);
+            ++count;
+        }
+        if (count != cat::kCParamCount)
+            throw Error(ErrorKind::Corrupt, where + ": " + std::to_string(count) +
+                                                " of the 152 C-parameter values are stored");
+    }
+    {
+        auto& q = st("SELECT number, value FROM r_values WHERE machine_id = ?1");
+        q.bind(1, row.id);
+        while (q.step())
+            p.r[q.i32(0)] = q.i64(1);
+    }
+    {
+        auto& q = st("SELECT number, text, sha256, revision FROM programs WHERE machine_id = ?1");
+        q.bind(1, row.id);
+        while (q.step()) {
+            std::string text = q.text(1);
+            if (sha256Hex(text) != q.text(2))
+                throw Error(ErrorKind::Corrupt,
+                            where + ": program L" + std::to_string(q.i32(0)) + " of revision " +
+                                std::to_string(q.i32(3)) +
+                                " does not match its SHA-256 checksum (the text was altered "
+                                "outside K528 Studio)");
+            p.programs[q.i32(0)] = std::move(text);
+        }
+    }
+    {
+        auto& q = st("SELECT number, text FROM messages WHERE machine_id = ?1");
+        q.bind(1, row.id);
+        while (q.step())
+            p.messages[q.i32(0)] = q.text(1);
+    }
+    {
+        auto& q = st("SELECT grp, number, text FROM plc_messages WHERE machine_id = ?1");
+        q.bind(1, row.id);
+        while (q.step()) {
+            const std::string g = q.text(0);
+            const auto group = plcGroupOf(g.empty() ? '?' : g[0]);
+            if (!group)
+                throw Error(ErrorKind::Corrupt, where + ": unknown PLC message group " + g);
+            p.plcTexts(*group)[q.i32(1)] = q.text(2);
+        }
+    }
+    {
+        auto& q = st("SELECT key, value FROM settings WHERE machine_id = ?1 ORDER BY position");
+        q.bind(1, row.id);
+        while (q.step()) {
+            try {
+                p.simulation.set(q.text(0), q.text(1));
+            } catch (const profile::SettingError& e) {
+                throw Error(ErrorKind::Corrupt, where + ": simulation setting: " + e.what());
+            }
+        }
+    }
+    return p;
+}
+
+MachineProfile Database::Impl::loadAt(const Row& row, int revision) {
+    if (revision < 1 || revision > row.info.revision)
+        throw Error(ErrorKind::NoRevision, "machine " + row.info.name + " has revisions 1.." +
+                                               std::to_string(row.info.revision) +
+                                               "; there is no revision " +
+                                               std::to_string(revision));
+    MachineProfile p;
+    const std::string where = "machine " + row.info.name + " revision " + std::to_string(revision) +
+                              " in " + path.string();
+    const auto corrupt = [&](const std::string& what) {
+        return Error(ErrorKind::Corrupt, where + ": " + what);
+    };
+    auto& q = st("SELECT section, key, after, revision FROM changes WHERE machine_id = ?1 AND "
+                 "revision <= ?2 AND section <> 'program' ORDER BY revision, seq");
+    q.bind(1, row.id).bind(2, revision);
+    while (q.step()) {
+        const std::string sectionName = q.text(0), key = q.text(1);
+        const std::optional<std::string> after = q.optText(2);
+        const auto section = sectionFromName(sectionName);
+        const auto bad = [&] {
+            return corrupt("history entry " + sectionName + " " + key + " of revision " +
+                           std::to_string(q.i32(3)) + " cannot be read");
+        };
+        if (!section)
+            throw bad();
+        const auto num = keyNumber(key);
+        std::optional<std::int64_t> value;
+        switch (*section) {
+        case DiffSection::Machine:
+            if (!after)
+                throw bad();
+            if (key == "name")
+                p.name = *after;
+            else if (key == "title")
+                p.title = *after;
+            else
+                throw bad();
+            break;
+        case DiffSection::C:
+            if (!num || *num < 1 || *num > cat::kCParamCount || !after || !(value = toInt(*after)))
+                throw bad();
+            p.setC(*num, *value);
+            break;
+        case DiffSection::R:
+            if (!num)
+                throw bad();
+            if (!after)
+                p.r.erase(*num);
+            else if ((value = toInt(*after)))
+                p.r[*num] = *value;
+            else
+                throw bad();
+            break;
+        case DiffSection::Message:
+            if (!num)
+                throw bad();
+            if (after)
+                p.messages[*num] = *after;
+            else
+                p.messages.erase(*num);
+            break;
+        case DiffSection::PlcMessage: {
+            const auto g = plcGroupOf(key.empty() ? '?' : key[0]);
+            if (!g || !num)
+                throw bad();
+            if (after)
+                p.plcTexts(*g)[*num] = *after;
+            else
+                p.plcTexts(*g).erase(*num);
+            break;
+        }
+        case DiffSection::Simulation:
+            if (key == kOrderKey)
+                break;
+            try {
+                if (after)
+                    p.simulation.set(key, *after);
+                else
+                    p.simulation.erase(key);
+            } catch (const profile::SettingError&) {
+                throw bad();
+            }
+            break;
+        case DiffSection::Program:
+            break;
+        }
+    }
+    q.reset();
+    // The order of the simulation keys at that revision.
+    {
+        auto& o =
+            st("SELECT settings_order FROM revisions WHERE machine_id = ?1 AND revision = ?2");
+        o.bind(1, row.id).bind(2, revision);
+        if (!o.step())
+            throw corrupt("the revision is missing from the revision table");
+        const std::string order = o.text(0);
+        o.reset();
+        profile::Settings sorted;
+        std::size_t pos = 0;
+        while (pos < order.size()) {
+            auto end = order.find('\n', pos);
+            if (end == std::string::npos)
+                end = order.size();
+            const std::string key = order.substr(pos, end - pos);
+            const auto v = p.simulation.find(key);
+            if (!v)
+                throw corrupt("simulation key " + key + " of the stored order has no value");
+            sorted.set(key, *v);
+            pos = end + 1;
+        }
+        if (sorted.size() != p.simulation.size())
+            throw corrupt("the stored order of the simulation settings does not list every key");
+        p.simulation = std::move(sorted);
+    }
+    {
+        auto& pq = st("SELECT p.number, p.text, p.sha256, p.revision FROM program_revisions p "
+                      "WHERE p.machine_id = ?1 AND p.revision = (SELECT max(q.revision) FROM "
+                      "program_revisions q WHERE q.machine_id = p.machine_id AND q.number = "
+                      "p.number AND q.revision <= ?2) AND p.text IS NOT NULL");
+        pq.bind(1, row.id).bind(2, revision);
+        while (pq.step()) {
+            std::string text = pq.text(1);
+            if (sha256Hex(text) != pq.text(2))
+                throw corrupt("program L" + std::to_string(pq.i32(0)) + " of revision " +
+                              std::to_string(pq.i32(3)) + " does not match its SHA-256 checksum");
+            p.programs[pq.i32(0)] = std::move(text);
+        }
+    }
+    return p;
+}
+
+SaveResult Database::Impl::write(const std::optional<Row>& row, const MachineProfile* old,
+                                 const MachineProfile& neu, const WriteOptions& o) {
+    const std::string author = o.author.empty() ? defaultAuthor() : o.author;
+    SaveResult result;
+    result.findings = checkWrite(old, neu, o.allowErrors);
+    result.changes = computeChanges(old, neu);
+    const int revision = row ? row->info.revision + 1 : 1;
+    if (old && result.changes.empty()) {
+        result.changed = false;
+        result.revision = row->info.revision;
+        return result;
+    }
+    result.changed = true;
+    result.revision = revision;
+    const std::string at = now();
+    std::int64_t id = 0;
+    const std::size_t total = result.changes.size();
+    std::size_t done = 0;
+    const auto progress = [&] {
+        ++done;
+        if (o.progress)
+            o.progress(done, total);
+    };
+
+    if (!row) {
+        if (findMachine(neu.name))
+            throw Error(ErrorKind::MachineExists,
+                        "a machine named " + neu.name + " already exists in " + path.string());
+        auto& q = st("INSERT INTO machines (name, title, revision, created_at, changed_at, "
+                     "changed_by) VALUES (?1, ?2, 1, ?3, ?3, ?4)");
+        q.bind(1, neu.name).bind(2, neu.title).bind(3, at).bind(4, author);
+        q.run();
+        id = sqlite3_last_insert_rowid(db);
+    } else {
+        id = row->id;
+        if (neu.name != row->info.name && findMachine(neu.name))
+            throw Error(ErrorKind::MachineExists, "cannot rename " + row->info.name + " to " +
+                                                      neu.name + ": a machine of that name exists");
+        auto& q = st("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
+                     "changed_by = ?6 WHERE id = ?1");
+        q.bind(1, id)
+            .bind(2, neu.name)
+            .bind(3, neu.title)
+            .bind(4, revision)
+            .bind(5, at)
+            .bind(6, author);
+        q.run();
+    }
+
+    const std::string summary =
+        !o.summary.empty() ? o.summary
+                           : (row ? "changed " + describeChanges(result.changes) : "created");
+    {
+        auto& q = st("INSERT INTO revisions (machine_id, revision, author, at, summary, "
+                     "settings_order) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+        q.bind(1, id)
+            .bind(2, revision)
+            .bind(3, author)
+            .bind(4, at)
+            .bind(5, summary)
+            .bind(6, joinKeys(neu.simulation, '\n'));
+        q.run();
+    }
+
+    bool settingsChanged = false;
+    auto& ins = st("INSERT INTO changes (machine_id, revision, seq, section, key, label, before, "
+                   "after) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+    int seq = 0;
+    for (const Change& c : result.changes) {
+        std::optional<std::string> before = c.before, after = c.after;
+        const auto num = keyNumber(c.key);
+        switch (c.section) {
+        case DiffSection::Machine:
+            break; // the machines row above
+        case DiffSection::C: {
+            auto& q =
+                st(row ? "UPDATE c_values SET value = ?3 WHERE machine_id = ?1 AND number = ?2"
+                       : "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)");
+            q.bind(1, id).bind(2, *num).bind(3, neu.cValue(*num));
+            q.run();
+            break;
+        }
+        case DiffSection::R:
+            if (c.after) {
+                auto& q =
+                    st("INSERT INTO r_values (machine_id, number, value) VALUES (?1, ?2, ?3) "
+                       "ON CONFLICT (machine_id, number) DO UPDATE SET value = excluded.value");
+                q.bind(1, id).bind(2, *num).bind(3, neu.r.at(*num));
+                q.run();
+            } else {
+                auto& q = st("DELETE FROM r_values WHERE machine_id = ?1 AND number = ?2");
+                q.bind(1, id).bind(2, *num);
+                q.run();
+            }
+            break;
+        case DiffSection::Program: {
+            auto& q = st("INSERT INTO program_revisions (machine_id, number, revision, text, "
+                         "sha256) VALUES (?1, ?2, ?3, ?4, ?5)");
+            q.bind(1, id).bind(2, *num).bind(3, revision).bind(4, c.after);
+            if (c.after)
+                q.bind(5, sha256Hex(*c.after));
+            else
+                q.bindNull(5);
+            q.run();
+            if (before)
+                before = sha256Hex(*before);
+            if (after)
+                after = sha256Hex(*after);
+            break;
+        }
+        case DiffSection::Message:
+            if (c.after) {
+                auto& q = st("INSERT INTO messages (machine_id, number, text) VALUES (?1, ?2, ?3) "
+                             "ON CONFLICT (machine_id, number) DO UPDATE SET text = excluded.text");
+                q.bind(1, id).bind(2, *num).bind(3, *c.after);
+                q.run();
+            } else {
+                auto& q = st("DELETE FROM messages WHERE machine_id = ?1 AND number = ?2");
+                q.bind(1, id).bind(2, *num);
+                q.run();
+            }
+            break;
+        case DiffSection::PlcMessage:
+            if (c.after) {
+                auto& q = st("INSERT INTO plc_messages (machine_id, grp, number, text) VALUES "
+                             "(?1, ?2, ?3, ?4) ON CONFLICT (machine_id, grp, number) DO UPDATE "
+                             "SET text = excluded.text");
+                q.bind(1, id).bind(2, c.key.substr(0, 1)).bind(3, *num).bind(4, *c.after);
+                q.run();
+            } else {
+                auto& q = st("DELETE FROM plc_messages WHERE machine_id = ?1 AND grp = ?2 AND "
+                             "number = ?3");
+                q.bind(1, id).bind(2, c.key.substr(0, 1)).bind(3, *num);
+                q.run();
+            }
+            break;
+        case DiffSection::Simulation:
+            settingsChanged = true;
+            break;
+        }
+        ins.reset();
+        ins.bind(1, id)
+            .bind(2, revision)
+            .bind(3, seq++)
+            .bind(4, profile::diffSectionName(c.section))
+            .bind(5, c.key)
+            .bind(6, c.label)
+            .bind(7, before)
+            .bind(8, after);
+        ins.run();
+        progress();
+    }
+    if (settingsChanged) {
+        auto& del = st("DELETE FROM settings WHERE machine_id = ?1");
+        del.bind(1, id);
+        del.run();
+        auto& q =
+            st("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
+        int pos = 0;
+        for (const auto& [k, v] : neu.simulation.entries()) {
+            q.reset();
+            q.bind(1, id).bind(2, pos++).bind(3, k).bind(4, v);
+            q.run();
+        }
+    }
+    audit(author, o.action, neu.name, revision,
+          summary + " (" + std::to_string(result.changes.size()) +
+              (result.changes.size() == 1 ? " change)" : " changes)"),
+          at);
+    return result;
+}
+
+void Database::Impl::syncDefinitions(const std::string& author) {
+    const std::string digest = catalogDigest();
+    {
+        auto& q = st("SELECT value FROM meta WHERE key = 'catalog_sha256'");
+        if (q.step() && q.text(0) == digest) {
+            q.reset();
+            return;
+        }
+        q.reset();
+    }
+    auto& q = st(R"SQL(INSERT INTO c_definitions (number, axis, kind, unit, unit_ru, unit_en,
+        min_value, max_value, address, address_en, name, name_en, description_ru, description_en,
+        hint_ru, hint_en, note) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13,
+        ?14, ?15, ?16, ?17) ON CONFLICT (number) DO UPDATE SET axis = excluded.axis,
+        kind = excluded.kind, unit = excluded.unit, unit_ru = excluded.unit_ru,
+        unit_en = excluded.unit_en, min_value = excluded.min_value, max_value = excluded.max_value,
+        address = excluded.address, address_en = excluded.address_en, name = excluded.name,
+        name_en = excluded.name_en, description_ru = excluded.description_ru,
+        description_en = excluded.description_en, hint_ru = excluded.hint_ru,
+        hint_en = excluded.hint_en, note = excluded.note)SQL");
+    for (const cat::CParamDef& d : cat::cParams()) {
+        q.reset();
+        q.bind(1, d.number)
+            .bind(2, cat::axisName(d.axis))
+            .bind(3, cat::kindName(d.kind))
+            .bind(4, cat::unitSymbol(d.unit))
+            .bind(5, cat::unitRu(d.unit))
+            .bind(6, cat::unitEn(d.unit))
+            .bind(7, d.min)
+            .bind(8, d.max)
+            .bind(9, d.address.text())
+            .bind(10, d.address.textEn())
+            .bind(11, d.name)
+            .bind(12, d.nameEn)
+            .bind(13, d.descriptionRu)
+            .bind(14, d.descriptionEn)
+            .bind(15, d.hintRu)
+            .bind(16, d.hintEn)
+            .bind(17, d.note);
+        q.run();
+    }
+    auto& m = st("INSERT INTO meta (key, value) VALUES ('catalog_sha256', ?1) ON CONFLICT (key) "
+                 "DO UPDATE SET value = excluded.value");
+    m.bind(1, digest);
+    m.run();
+    audit(author, "definitions", "", 0,
+          "C-parameter definitions (appendix Е) written from the catalog, digest " +
+              digest.substr(0, 12));
+    report.definitionsUpdated = true;
+}
+
+Database::Database(std::unique_ptr<Impl> impl) : d_(std::move(impl)) {}
+Database::Database(Database&&) noexcept = default;
+Database& Database::operator=(Database&&) noexcept = default;
+Database::~Database() = default;
+
+Database Database::open(const fs::path& path, const OpenOptions& options) {
+    const auto& migrations = options.migrations;
+    if (migrations.empty())
+        throw Error(ErrorKind::Sql, "no schema migrations given");
+    const int latest = migrations.back().version;
+    const FileHeader header = readHeader(path, latest);
+    if (!header.exists && !options.create)
+        throw Error(ErrorKind::Io, "no database at " + path.string());
+    if (!header.exists) {
+        std::error_code ec;
+        const fs::path parent = path.parent_path();
+        if (!parent.empty() && !fs::is_directory(parent, ec))
+            throw Error(ErrorKind::Io, "cannot create the database " + path.string() +
+                                           ": the folder " + parent.string() + " does not exist");
+    }
+    std::error_code ec;
+    const bool walExisted = fs::exists(fs::path(path.string() + "-wal"), ec);
+
+    auto impl = std::make_unique<Impl>();
+    impl->path = path;
+    impl->clock = options.clock ? options.clock : systemClock();
+    const std::string author = options.author.empty() ? defaultAuthor() : options.author;
+    const int flags = SQLITE_OPEN_READWRITE | (options.create ? SQLITE_OPEN_CREATE : 0) |
+                      SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_EXRESCODE;
+    const int rc = sqlite3_open_v2(path.c_str(), &impl->db, flags, nullptr);
+    if (rc != SQLITE_OK) {
+        const std::string msg = impl->db ? sqlite3_errmsg(impl->db) : sqlite3_errstr(rc);
+        throw Error(ErrorKind::Io, "cannot open " + path.string() + ": " + msg);
+    }
+    sqlite3* db = impl->db;
+    sqlite3_busy_timeout(db, options.busyTimeoutMs);
+    sqlite3_extended_result_codes(db, 1);
+    // Every commit reaches the disk before it is reported (independent of
+    // how SQLite was compiled).
+    sql::exec(db, "PRAGMA synchronous = FULL");
+
+    // Checks before anything is written. On refusal the file is closed
+    // without a checkpoint and stays as it was.
+    const auto refuse = [&](ErrorKind kind, const std::string& what) -> Error {
+        if (walExisted)
+            sqlite3_db_config(db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
+        impl->cache.clear();
+        sqlite3_close_v2(db);
+        impl->db = nullptr;
+        return Error(kind, path.string() + ": " + what + "; the file was left untouched");
+    };
+    std::int64_t appId = 0, version = 0, objects = 0;
+    try {
+        sql::exec(db, "PRAGMA foreign_keys = ON");
+        appId = sql::queryInt(db, "PRAGMA application_id");
+        version = sql::queryInt(db, "PRAGMA user_version");
+        objects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
+    } catch (const Error& e) {
+        if (e.kind() == ErrorKind::Busy)
+            throw refuse(ErrorKind::Busy, e.what());
+        throw refuse(ErrorKind::Corrupt,
+                     std::string("cannot be read as a database (") + e.what() + ")");
+    }
+    const bool empty = appId == 0 && version == 0 && objects == 0;
+    if (!empty) {
+        if (appId != kApplicationId)
+            throw refuse(ErrorKind::Foreign,
+                         "not a K528 Studio database: it is another program's SQLite database "
+                         "(application_id " +
+                             hex32(static_cast<std::uint32_t>(appId)) + ", " +
+                             std::to_string(objects) + " schema objects)");
+        if (version > latest)
+            throw refuse(ErrorKind::TooNew,
+                         "the database has schema version " + std::to_string(version) +
+                             ", written by a newer K528 Studio; this program knows versions up "
+                             "to " +
+                             std::to_string(latest));
+        if (version < 1)
+            throw refuse(ErrorKind::Corrupt, "K528 Studio database without a schema version");
+        std::string problems;
+        try {
+            sql::Stmt ic(db, "PRAGMA integrity_check(10)");
+            while (ic.step())
+                if (const std::string line = ic.text(0); line != "ok")
+                    problems += (problems.empty() ? "" : "; ") + line;
+            sql::Stmt fk(db, "PRAGMA foreign_key_check");
+            int fkRows = 0;
+            std::string fkFirst;
+            while (fk.step())
+                if (fkRows++ == 0)
+                    fkFirst =
+                        fk.text(0) + " row " + std::to_string(fk.i64(1)) + " -> " + fk.text(2);
+            if (fkRows)
+                problems += (problems.empty() ? "" : "; ") + std::to_string(fkRows) +
+                            " rows break foreign keys (first: " + fkFirst + ")";
+        } catch (const Error& e) {
+            if (e.kind() == ErrorKind::Busy)
+                throw refuse(ErrorKind::Busy, e.what());
+            problems = e.what();
+        }
+        if (!problems.empty())
+            throw refuse(ErrorKind::Corrupt,
+                         "the database is damaged (integrity check: " + problems + ")");
+    }
+
+    // Now ours, intact, not newer: WAL, then create or migrate in one transaction.
+    impl->report.created = empty;
+    impl->report.fromVersion = static_cast<int>(version);
+    {
+        // Switching to WAL needs the file to itself for a moment; SQLite does
+        // not wait for that with the busy handler, so retry until the busy
+        // timeout (another process starting at the same time switches it too).
+        const auto deadline =
+            std::chrono::steady_clock::now() + std::chrono::milliseconds(options.busyTimeoutMs);
+        std::string mode;
+        for (int attempt = 0;; ++attempt) {
+            try {
+                {
+                    sql::Stmt jm(db, "PRAGMA journal_mode");
+                    mode = jm.step() ? jm.text(0) : "";
+                }
+                if (mode == "wal")
+                    break;
+                sql::Stmt set(db, "PRAGMA journal_mode = WAL");
+                mode = set.step() ? set.text(0) : "";
+                if (mode == "wal")
+                    break;
+            } catch (const Error& e) {
+                if (e.kind() != ErrorKind::Busy)
+                    throw;
+            }
+            if (std::chrono::steady_clock::now() > deadline)
+                throw Error(ErrorKind::Busy,
+                            path.string() + ": cannot switch to WAL journal mode (mode \"" + mode +
+                                "\"): another process kept the database busy longer than the "
+                                "busy timeout");
+            std::this_thread::sleep_for(std::chrono::milliseconds(attempt < 10 ? 2 : 20));
+        }
+    }
+    if (empty || version < latest) {
+        WriteTx tx(*impl);
+        // Another process may have created or migrated it meanwhile.
+        const std::int64_t now = sql::queryInt(db, "PRAGMA user_version");
+        const std::int64_t nowObjects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
+        if (now == 0 && nowObjects != 0)
+            throw Error(ErrorKind::Foreign, path.string() + ": another program wrote into the "
+                                                            "file while it was being created");
+        for (const Migration& m : migrations) {
+            if (m.version <= now)
+                continue;
+            try {
+                sql::exec(db, m.sql);
+            } catch (const Error& e) {
+                throw Error(ErrorKind::Sql, path.string() + ": migration to schema version " +
+                                                std::to_string(m.version) + " failed (" + e.what() +
+                                                "); nothing was changed");
+            }
+        }
+        if (now < latest) {
+            sql::exec(db, "PRAGMA application_id = " + std::to_string(kApplicationId));
+            sql::exec(db, "PRAGMA user_version = " + std::to_string(latest));
+            if (now == 0) {
+                auto& meta = impl->st("INSERT INTO meta (key, value) VALUES (?1, ?2)");
+                meta.bind(1, "created_at").bind(2, impl->now());
+                meta.run();
+                impl->audit(author, "create-database", "", 0,
+                            "schema version " + std::to_string(latest) + " created");
+                impl->syncDefinitions(author);
+                if (options.seedBuiltins)
+                    for (const std::string& name : profile::builtinNames()) {
+                        WriteOptions wo;
+                        wo.author = author;
+                        wo.action = "seed";
+                        wo.summary = "built-in profile " + name + " (first start)";
+                        impl->write(std::nullopt, nullptr, profile::builtin(name), wo);
+                        impl->report.seeded.push_back(name);
+                    }
+            } else {
+                impl->audit(author, "migrate", "", 0,
+                            "schema version " + std::to_string(now) + " -> " +
+                                std::to_string(latest));
+            }
+        }
+        tx.commit();
+        impl->report.fromVersion = static_cast<int>(now);
+        impl->report.created = now == 0; // not when another process created it meanwhile
+    }
+    impl->report.version = latest;
+    {
+        // A newer catalog (e.g. a corrected description) refreshes the definitions.
+        auto& q = impl->st("SELECT value FROM meta WHERE key = 'catalog_sha256'");
+        const bool same = q.step() && q.text(0) == catalogDigest();
+        q.reset();
+        if (!same) {
+            WriteTx tx(*impl);
+            impl->syncDefinitions(author);
+            tx.commit();
+        }
+    }
+    return Database(std::move(impl));
+}
+
+const fs::path& Database::path() const {
+    return d_->path;
+}
+
+const OpenReport& Database::openReport() const {
+    return d_->report;
+}
+
+int Database::schemaVersion() const {
+    return static_cast<int>(sql::queryInt(d_->db, "PRAGMA user_version"));
+}
+
+std::vector<MachineInfo> Database::machines() const {
+    std::vector<MachineInfo> out;
+    auto& q = d_->st("SELECT name, title, revision, created_at, changed_at, changed_by FROM "
+                     "machines ORDER BY name");
+    while (q.step())
+        out.push_back(MachineInfo{q.text(0), q.text(1), q.i32(2), q.text(3), q.text(4), q.text(5)});
+    return out;
+}
+
+std::optional<MachineInfo> Database::machine(std::string_view name) const {
+    auto r = d_->findMachine(name);
+    if (!r)
+        return std::nullopt;
+    return r->info;
+}
+
+bool Database::hasMachine(std::string_view name) const {
+    return d_->findMachine(name).has_value();
+}
+
+MachineProfile Database::loadMachine(std::string_view name) const {
+    ReadTx tx(*d_);
+    return d_->loadCurrent(d_->requireMachine(name));
+}
+
+MachineProfile Database::loadMachine(std::string_view name, int revision) const {
+    ReadTx tx(*d_);
+    return d_->loadAt(d_->requireMachine(name), revision);
+}
+
+SaveResult Database::createMachine(const MachineProfile& p, WriteOptions options) {
+    if (options.action == "save")
+        options.action = "create";
+    WriteTx tx(*d_);
+    SaveResult r = d_->write(std::nullopt, nullptr, p, options);
+    tx.commit();
+    return r;
+}
+
+SaveResult Database::saveMachine(std::string_view name, const MachineProfile& p,
+                                 WriteOptions options) {
+    WriteTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    if (options.expectedRevision && *options.expectedRevision != row.info.revision)
+        throw Error(ErrorKind::Conflict, "machine " + row.info.name + " is at revision " +
+                                             std::to_string(row.info.revision) + " (changed by " +
+                                             row.info.changedBy + " at " + row.info.changedAt +
+                                             "), not " + std::to_string(*options.expectedRevision) +
+                                             " as read: load it again and repeat the change");
+    const MachineProfile old = d_->loadCurrent(row);
+    SaveResult r = d_->write(row, &old, p, options);
+    tx.commit();
+    return r;
+}
+
+SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOptions options) {
+    if (options.action == "save")
+        options.action = "set";
+    WriteTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    if (options.expectedRevision && *options.expectedRevision != row.info.revision)
+        throw Error(ErrorKind::Conflict, "machine " + row.info.name + " is at revision " +
+                                             std::to_string(row.info.revision) + ", not " +
+                                             std::to_string(*options.expectedRevision));
+    const MachineProfile old = d_->loadCurrent(row);
+    MachineProfile neu = old;
+    try {
+        edit.applyTo(neu);
+    } catch (const profile::SettingError& e) {
+        throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
+    } catch (const std::out_of_range& e) {
+        throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
+    }
+    if (options.summary.empty())
+        options.summary = "set " + edit.describe();
+    SaveResult r = d_->write(row, &old, neu, options);
+    tx.commit();
+    return r;
+}
+
+void Database::removeMachine(std::string_view name, WriteOptions options) {
+    const std::string author = options.author.empty() ? defaultAuthor() : options.author;
+    WriteTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    auto& q = d_->st("DELETE FROM machines WHERE id = ?1");
+    q.bind(1, row.id);
+    q.run();
+    d_->audit(author, "delete", row.info.name, row.info.revision,
+              options.summary.empty()
+                  ? "machine deleted with its " + std::to_string(row.info.revision) + " revisions"
+                  : options.summary);
+    tx.commit();
+}
+
+std::vector<RevisionInfo> Database::revisions(std::string_view name) const {
+    ReadTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    std::vector<RevisionInfo> out;
+    auto& q =
+        d_->st("SELECT r.revision, r.author, r.at, r.summary, (SELECT count(*) FROM changes c "
+               "WHERE c.machine_id = r.machine_id AND c.revision = r.revision) FROM "
+               "revisions r WHERE r.machine_id = ?1 ORDER BY r.revision DESC");
+    q.bind(1, row.id);
+    while (q.step())
+        out.push_back(RevisionInfo{q.i32(0), q.text(1), q.text(2), q.text(3), q.i32(4)});
+    return out;
+}
+
+std::vector<HistoryEntry> Database::history(std::string_view name, std::optional<std::string> key,
+                                            int limitRevisions) const {
+    ReadTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    const int from = limitRevisions > 0 ? row.info.revision - limitRevisions + 1 : 1;
+    auto& q = d_->st(
+        "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
+        "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision "
+        "WHERE c.machine_id = ?1 AND c.revision >= ?2 AND (?3 IS NULL OR c.key = ?3) "
+        "ORDER BY c.revision DESC, c.seq");
+    q.bind(1, row.id).bind(2, from).bind(3, key);
+    std::vector<HistoryEntry> out;
+    while (q.step()) {
+        const auto section = sectionFromName(q.text(3));
+        if (!section)
+            throw Error(ErrorKind::Corrupt, "machine " + row.info.name +
+                                                ": history has an unknown section " + q.text(3));
+        out.push_back(
+            HistoryEntry{q.i32(0), q.text(1), q.text(2),
+                         Change{*section, q.text(4), q.text(5), q.optText(6), q.optText(7)}});
+    }
+    return out;
+}
+
+std::vector<ProgramVersion> Database::programHistory(std::string_view name, int number) const {
+    ReadTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    auto& q = d_->st("SELECT revision, text, sha256 FROM program_revisions WHERE machine_id = ?1 "
+                     "AND number = ?2 ORDER BY revision DESC");
+    q.bind(1, row.id).bind(2, number);
+    std::vector<ProgramVersion> out;
+    while (q.step())
+        out.push_back(ProgramVersion{q.i32(0), q.optText(1), q.optText(2)});
+    return out;
+}
+
+std::optional<std::string> Database::programText(std::string_view name, int number,
+                                                 int revision) const {
+    ReadTx tx(*d_);
+    const auto row = d_->requireMachine(name);
+    auto& q = d_->st("SELECT text, sha256 FROM program_revisions WHERE machine_id = ?1 AND "
+                     "number = ?2 AND revision <= ?3 ORDER BY revision DESC LIMIT 1");
+    q.bind(1, row.id).bind(2, number).bind(3, revision);
+    if (!q.step())
+        return std::nullopt;
+    auto text = q.optText(0);
+    if (text && sha256Hex(*text) != q.text(1))
+        throw Error(ErrorKind::Corrupt, "machine " + row.info.name + ": program L" +
+                                            std::to_string(number) +
+                                            " does not match its SHA-256 checksum");
+    return text;
+}
+
+std::vector<AuditEntry> Database::audit(int limit, std::string_view machine) const {
+    auto& q = d_->st("SELECT id, at, author, action, machine, revision, detail FROM audit WHERE "
+                     "(?1 = '' OR machine = ?1) ORDER BY id DESC LIMIT ?2");
+    q.bind(1, machine).bind(2, limit > 0 ? limit : -1);
+    std::vector<AuditEntry> out;
+    while (q.step())
+        out.push_back(
+            AuditEntry{q.i64(0), q.text(1), q.text(2), q.text(3), q.text(4), q.i32(5), q.text(6)});
+    return out;
+}
+
+std::string Database::checkIntegrity() const {
+    std::string problems;
+    sql::Stmt ic(d_->db, "PRAGMA integrity_check");
+    while (ic.step())
+        if (const std::string line = ic.text(0); line != "ok")
+            problems += (problems.empty() ? "" : "; ") + line;
+    sql::Stmt fk(d_->db, "PRAGMA foreign_key_check");
+    while (fk.step())
+        problems += (problems.empty() ? "" : "; ") + std::string("foreign key: ") + fk.text(0) +
+                    " row " + std::to_string(fk.i64(1));
+    return problems;
+}
+
+} // namespace k528::db

@@ -1,0 +1,186 @@
+// The database schema, one migration a version (PRAGMA user_version).
+// docs/database.md describes the tables. A new version: append a Migration
+// whose SQL turns version N-1 into N (never edit a released step), and test
+// the path from N-1 in tests/db/test_schema.cpp.
+#include "db/database.h"
+
+namespace k528::db {
+
+namespace {
+
+constexpr std::string_view kSchemaV1 = R"SQL(
+CREATE TABLE meta (
+    key   TEXT PRIMARY KEY,
+    value TEXT NOT NULL
+) WITHOUT ROWID;
+
+-- The 152 C-parameter definitions of appendix Е (table Е.1), from core/catalog.
+CREATE TABLE c_definitions (
+    number         INTEGER PRIMARY KEY CHECK (number BETWEEN 1 AND 152),
+    axis           TEXT NOT NULL CHECK (axis IN ('X', 'Z', '')),
+    kind           TEXT NOT NULL CHECK (kind IN ('flag', 'integer', 'code', 'reserved')),
+    unit           TEXT NOT NULL,
+    unit_ru        TEXT NOT NULL,
+    unit_en        TEXT NOT NULL,
+    min_value      INTEGER NOT NULL,
+    max_value      INTEGER NOT NULL CHECK (max_value >= min_value),
+    address        TEXT NOT NULL,
+    address_en     TEXT NOT NULL,
+    name           TEXT NOT NULL,
+    name_en        TEXT NOT NULL,
+    description_ru TEXT NOT NULL,
+    description_en TEXT NOT NULL,
+    hint_ru        TEXT NOT NULL,
+    hint_en        TEXT NOT NULL,
+    note           TEXT NOT NULL
+);
+
+CREATE TABLE machines (
+    id         INTEGER PRIMARY KEY,
+    name       TEXT NOT NULL UNIQUE,
+    title      TEXT NOT NULL,
+    revision   INTEGER NOT NULL CHECK (revision >= 1),
+    created_at TEXT NOT NULL,
+    changed_at TEXT NOT NULL,
+    changed_by TEXT NOT NULL
+);
+
+CREATE TABLE revisions (
+    machine_id     INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    revision       INTEGER NOT NULL CHECK (revision >= 1),
+    author         TEXT NOT NULL,
+    at             TEXT NOT NULL,
+    summary        TEXT NOT NULL,
+    settings_order TEXT NOT NULL,
+    PRIMARY KEY (machine_id, revision)
+) WITHOUT ROWID;
+
+CREATE TABLE c_values (
+    machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    number     INTEGER NOT NULL REFERENCES c_definitions(number),
+    value      INTEGER NOT NULL,
+    PRIMARY KEY (machine_id, number)
+) WITHOUT ROWID;
+
+CREATE TRIGGER c_values_range_insert BEFORE INSERT ON c_values
+WHEN NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
+                       AND (SELECT max_value FROM c_definitions WHERE number = NEW.number)
+BEGIN
+    SELECT RAISE(ABORT, 'C-parameter value outside the range of its definition');
+END;
+
+CREATE TRIGGER c_values_range_update BEFORE UPDATE OF value ON c_values
+WHEN NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
+                       AND (SELECT max_value FROM c_definitions WHERE number = NEW.number)
+BEGIN
+    SELECT RAISE(ABORT, 'C-parameter value outside the range of its definition');
+END;
+
+CREATE TABLE r_values (
+    machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    number     INTEGER NOT NULL CHECK (number BETWEEN 0 AND 299 AND number NOT BETWEEN 232 AND 262),
+    value      INTEGER NOT NULL CHECK (value BETWEEN -2147483648 AND 2147483647),
+    PRIMARY KEY (machine_id, number)
+) WITHOUT ROWID;
+
+CREATE TABLE messages (
+    machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    number     INTEGER NOT NULL CHECK (number BETWEEN 1 AND 99),
+    text       TEXT NOT NULL,
+    PRIMARY KEY (machine_id, number)
+) WITHOUT ROWID;
+
+CREATE TABLE plc_messages (
+    machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    grp        TEXT NOT NULL CHECK (grp IN ('A', 'W', 'S')),
+    number     INTEGER NOT NULL CHECK (number >= 1 AND number <= CASE grp WHEN 'S' THEN 16 ELSE 32 END),
+    text       TEXT NOT NULL,
+    PRIMARY KEY (machine_id, grp, number)
+) WITHOUT ROWID;
+
+CREATE TABLE settings (
+    machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    position   INTEGER NOT NULL,
+    key        TEXT NOT NULL,
+    value      TEXT NOT NULL,
+    PRIMARY KEY (machine_id, key),
+    UNIQUE (machine_id, position)
+) WITHOUT ROWID;
+
+-- Every version of every program; text NULL: deleted at that revision.
+-- (A rowid table: its rows are large, which WITHOUT ROWID stores poorly.)
+CREATE TABLE program_revisions (
+    id         INTEGER PRIMARY KEY,
+    machine_id INTEGER NOT NULL,
+    number     INTEGER NOT NULL CHECK (number BETWEEN 1 AND 99),
+    revision   INTEGER NOT NULL,
+    text       TEXT,
+    sha256     TEXT CHECK (sha256 IS NULL OR length(sha256) = 64),
+    CHECK ((text IS NULL) = (sha256 IS NULL)),
+    UNIQUE (machine_id, number, revision),
+    FOREIGN KEY (machine_id, revision) REFERENCES revisions(machine_id, revision) ON DELETE CASCADE
+);
+
+-- The current programs: the newest version of each number, unless deleted.
+CREATE VIEW programs AS
+SELECT p.machine_id, p.number, p.revision, p.text, p.sha256
+FROM program_revisions p
+WHERE p.revision = (SELECT max(q.revision) FROM program_revisions q
+                    WHERE q.machine_id = p.machine_id AND q.number = p.number)
+  AND p.text IS NOT NULL;
+
+-- What each revision changed, old -> new (NULL: absent). Programs: SHA-256.
+CREATE TABLE changes (
+    machine_id INTEGER NOT NULL,
+    revision   INTEGER NOT NULL,
+    seq        INTEGER NOT NULL,
+    section    TEXT NOT NULL CHECK (section IN ('machine', 'c', 'r', 'program', 'message',
+                                                'plc-message', 'simulation')),
+    key        TEXT NOT NULL,
+    label      TEXT NOT NULL,
+    before     TEXT,
+    after      TEXT,
+    PRIMARY KEY (machine_id, revision, seq),
+    FOREIGN KEY (machine_id, revision) REFERENCES revisions(machine_id, revision) ON DELETE CASCADE
+) WITHOUT ROWID;
+
+CREATE INDEX changes_by_key ON changes (machine_id, key, revision);
+
+-- C-parameter history for people using SQL directly.
+CREATE VIEW c_history AS
+SELECT m.name AS machine, ch.key AS parameter, ch.label AS name, ch.before AS old_value,
+       ch.after AS new_value, r.revision, r.author, r.at
+FROM changes ch
+JOIN revisions r ON r.machine_id = ch.machine_id AND r.revision = ch.revision
+JOIN machines m ON m.id = ch.machine_id
+WHERE ch.section = 'c';
+
+CREATE TABLE audit (
+    id       INTEGER PRIMARY KEY AUTOINCREMENT,
+    at       TEXT NOT NULL,
+    author   TEXT NOT NULL,
+    action   TEXT NOT NULL,
+    machine  TEXT NOT NULL,
+    revision INTEGER NOT NULL,
+    detail   TEXT NOT NULL
+);
+)SQL";
+
+const Migration kMigrations[] = {
+    {1,
+     "machines, C-parameter definitions and values, R presets, programs with revisions, "
+     "messages, PLC texts, settings, history, audit log",
+     kSchemaV1},
+};
+
+} // namespace
+
+std::span<const Migration> schemaMigrations() {
+    return kMigrations;
+}
+
+int latestSchemaVersion() {
+    return kMigrations[std::size(kMigrations) - 1].version;
+}
+
+} // namespace k528::db

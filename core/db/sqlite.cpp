@@ -1,0 +1,144 @@
+#include "db/sqlite.h"
+
+#include <sqlite3.h>
+
+namespace k528::db::sql {
+
+[[noreturn]] void fail(sqlite3* db, int rc, std::string_view what) {
+    failWith(rc, what, db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
+}
+
+[[noreturn]] void failWith(int rc, std::string_view what, const std::string& msg) {
+    ErrorKind kind = ErrorKind::Sql;
+    switch (rc & 0xff) {
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+        kind = ErrorKind::Busy;
+        break;
+    case SQLITE_CORRUPT:
+    case SQLITE_NOTADB:
+        kind = ErrorKind::Corrupt;
+        break;
+    case SQLITE_IOERR:
+    case SQLITE_CANTOPEN:
+    case SQLITE_FULL:
+    case SQLITE_READONLY:
+    case SQLITE_PERM:
+    case SQLITE_NOLFS:
+        kind = ErrorKind::Io;
+        break;
+    case SQLITE_CONSTRAINT:
+        kind = ErrorKind::Invalid;
+        break;
+    default:
+        break;
+    }
+    std::string text = std::string(what) + ": " + msg;
+    if (kind == ErrorKind::Busy)
+        text += " (another program kept the database locked longer than the busy timeout)";
+    throw Error(kind, text);
+}
+
+Stmt::Stmt(sqlite3* db, std::string_view sql) : db_(db), sql_(sql) {
+    const int rc = sqlite3_prepare_v3(db, sql.data(), static_cast<int>(sql.size()),
+                                      SQLITE_PREPARE_PERSISTENT, &st_, nullptr);
+    if (rc != SQLITE_OK)
+        fail(db, rc, "preparing \"" + sql_ + "\"");
+}
+
+Stmt::~Stmt() {
+    sqlite3_finalize(st_);
+}
+
+Stmt& Stmt::bind(int i, std::int64_t v) {
+    const int rc = sqlite3_bind_int64(st_, i, v);
+    if (rc != SQLITE_OK)
+        fail(db_, rc, "binding a value");
+    return *this;
+}
+
+Stmt& Stmt::bind(int i, std::string_view v) {
+    // A null data pointer would bind NULL: an empty text is "".
+    const int rc = sqlite3_bind_text64(st_, i, v.data() ? v.data() : "", v.size(), SQLITE_TRANSIENT,
+                                       SQLITE_UTF8);
+    if (rc != SQLITE_OK)
+        fail(db_, rc, "binding a text");
+    return *this;
+}
+
+Stmt& Stmt::bind(int i, const std::optional<std::string>& v) {
+    return v ? bind(i, std::string_view(*v)) : bindNull(i);
+}
+
+Stmt& Stmt::bindNull(int i) {
+    const int rc = sqlite3_bind_null(st_, i);
+    if (rc != SQLITE_OK)
+        fail(db_, rc, "binding NULL");
+    return *this;
+}
+
+bool Stmt::step() {
+    const int rc = sqlite3_step(st_);
+    if (rc == SQLITE_ROW)
+        return true;
+    if (rc == SQLITE_DONE)
+        return false;
+    const int code = sqlite3_extended_errcode(db_);
+    std::string what = "running \"" + sql_.substr(0, 80) + (sql_.size() > 80 ? "…" : "") + "\"";
+    sqlite3_reset(st_);
+    fail(db_, code, what);
+}
+
+void Stmt::run() {
+    while (step()) {
+    }
+    reset();
+}
+
+void Stmt::reset() {
+    sqlite3_reset(st_);
+    sqlite3_clear_bindings(st_);
+}
+
+std::int64_t Stmt::i64(int col) const {
+    return sqlite3_column_int64(st_, col);
+}
+
+std::string Stmt::text(int col) const {
+    const auto* p = sqlite3_column_text(st_, col);
+    const int n = sqlite3_column_bytes(st_, col);
+    return p ? std::string(reinterpret_cast<const char*>(p), static_cast<std::size_t>(n))
+             : std::string();
+}
+
+std::optional<std::string> Stmt::optText(int col) const {
+    if (isNull(col))
+        return std::nullopt;
+    return text(col);
+}
+
+bool Stmt::isNull(int col) const {
+    return sqlite3_column_type(st_, col) == SQLITE_NULL;
+}
+
+void exec(sqlite3* db, std::string_view sqlText) {
+    const std::string s(sqlText);
+    char* err = nullptr;
+    const int rc = sqlite3_exec(db, s.c_str(), nullptr, nullptr, &err);
+    if (rc != SQLITE_OK) {
+        const std::string msg = err ? err : sqlite3_errstr(rc);
+        sqlite3_free(err);
+        const int code = sqlite3_extended_errcode(db);
+        failWith(code != SQLITE_OK ? code : rc,
+                 "running \"" + s.substr(0, 80) + (s.size() > 80 ? "…" : "") + "\"", msg);
+    }
+}
+
+std::int64_t queryInt(sqlite3* db, std::string_view sqlText) {
+    Stmt st(db, sqlText);
+    if (!st.step())
+        throw Error(ErrorKind::Sql, "\"" + std::string(sqlText) + "\" returned no row");
+    return st.i64(0);
+}
+
+} // namespace k528::db::sql

@@ -1,0 +1,470 @@
+// `k528 db`: every subcommand once, with its errors and exit codes
+// (0 ok, 1 rejected input, 2 usage / unknown machine / unusable database).
+#include "cli_runner.h"
+#include "db_test_util.h"
+#include "profile/builtin.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace k528::testing;
+
+namespace {
+
+QString builtinText(const char* name) {
+    const auto t = k528::profile::builtinText(name);
+    return QString::fromUtf8(t.data(), static_cast<qsizetype>(t.size()));
+}
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+bool writeFile(const QString& path, const QByteArray& data) {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return false;
+    return f.write(data) == data.size();
+}
+
+// The line number (1-based) of the first line starting with `prefix`.
+int lineOf(const QString& text, const QString& prefix) {
+    const QStringList lines = text.split('\n');
+    for (int i = 0; i < lines.size(); ++i)
+        if (lines[i].startsWith(prefix))
+            return i + 1;
+    return 0;
+}
+
+} // namespace
+
+class TestCliDb : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir dir_;
+    QString db_;
+
+    CliResult db(QStringList args, const QByteArray& in = {}) {
+        args.prepend("db");
+        args << "--db" << db_;
+        return runK528(args, in);
+    }
+
+private slots:
+    void initTestCase() {
+        // Never the user's own database.
+        qputenv("K528_DB", (dir_.path() + "/must-not-be-used.db").toUtf8());
+    }
+    void init() {
+        static int n = 0;
+        db_ = dir_.filePath(QString("t%1.db").arg(++n));
+        QFile::remove(db_);
+    }
+
+    void initCreatesThenReports() {
+        auto r = db({"init"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("schema    version 1 (created)"), qPrintable(r.out));
+        QVERIFY(r.out.contains("loaded    grinder-205, training-lathe (built-in machines)"));
+        QVERIFY(r.out.contains("machines  2"));
+        r = db({"init"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("(up to date)"));
+        QVERIFY(!r.out.contains("loaded"));
+        QCOMPARE(runK528({"db", "init", "extra", "--db", db_}).exitCode, 2);
+    }
+
+    void explicitMissingDatabaseIsNotCreated() {
+        const auto r = db({"machines"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("no database at " + db_), qPrintable(r.err));
+        QVERIFY(r.err.contains("k528 db init --db"));
+        QVERIFY(!QFile::exists(db_));
+    }
+
+    void defaultLocationIsCreatedOnFirstUse() {
+        QTemporaryDir home;
+        const QByteArray old = qgetenv("K528_DB");
+        qunsetenv("K528_DB");
+        qputenv("XDG_DATA_HOME", home.path().toUtf8());
+        const auto r = runK528({"db", "machines"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("grinder-205"));
+        QVERIFY(QFile::exists(home.path() + "/k528studio/k528.db"));
+        // $K528_DB wins.
+        qputenv("K528_DB", (home.path() + "/other.db").toUtf8());
+        QCOMPARE(runK528({"db", "init"}).exitCode, 0);
+        QVERIFY(QFile::exists(home.path() + "/other.db"));
+        qunsetenv("XDG_DATA_HOME");
+        qputenv("K528_DB", old);
+    }
+
+    void machinesPlainAndJson() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        auto r = db({"machines"});
+        QCOMPARE(r.exitCode, 0);
+        const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3);
+        QVERIFY(lines[0].startsWith("MACHINE"));
+        QVERIFY(lines[1].startsWith("grinder-205 "));
+        QVERIFY(lines[1].contains("приложение Ж"));
+        r = db({"machines", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const auto ms = QJsonDocument::fromJson(r.out.toUtf8()).object()["machines"].toArray();
+        QCOMPARE(ms.size(), 2);
+        QCOMPARE(ms[1].toObject()["name"].toString(), QString("training-lathe"));
+        QCOMPARE(ms[1].toObject()["revision"].toInt(), 1);
+        QVERIFY(ms[0].toObject()["changed_at"].toString().endsWith("Z"));
+        QCOMPARE(db({"machines", "--bogus"}).exitCode, 2);
+    }
+
+    void showExplainsConstants() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        auto r = db({"show", "grinder-205"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.startsWith("machine   grinder-205 — Внутришлифовальный"));
+        const QStringList lines = r.out.split('\n');
+        const auto line = [&](const QString& start) {
+            for (const auto& l : lines)
+                if (l.startsWith(start))
+                    return l;
+            return QString();
+        };
+        QVERIFY(line("C022  УСКОРЕНИЕ 1").contains(" 2000  "));
+        QVERIFY(line("C022  УСКОРЕНИЕ 1").contains("= 0.0781 м/с²"));
+        QVERIFY(line("C040  F ОБЫЧНАЯ").contains("= 5000 мм/мин"));
+        QVERIFY(line("C069  N ДОС").contains("2-й модуль СР34.23, канал 1"));
+        QVERIFY(line("C143  N ручного цикла 1").contains("L11 (ВЫХОД В ИСХОДНОЕ)"));
+        QVERIFY(line("R204").contains("= 20.000 мм"));
+        QVERIFY(line("R204").contains("ДИАМЕТР НОВ.КРУГА"));
+        QVERIFY(r.out.contains("программы: 3 (L1, L11, L14)"));
+        r = db({"show", "grinder-205", "--lang", "en"});
+        QVERIFY(r.out.contains("ACCELERATION 1"));
+        QVERIFY(r.out.contains("= 5000 mm/min"));
+
+        r = db({"show", "grinder-205", "--c", "22"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("C022 УСКОРЕНИЕ 1 (ось X) = 2000"));
+        QVERIFY(r.out.contains("диапазон:  0...32767"));
+        QVERIFY(r.out.contains("Z4106"));
+        QVERIFY(r.out.contains("0,8533 * Vmax / Тразг")); // the manual's text
+        QVERIFY(r.out.contains("history of C022"));
+        QCOMPARE(db({"show", "grinder-205", "--c", "C074"}).out.contains("(ось Z) = 4445"), true);
+
+        r = db({"show", "grinder-205", "--r", "204"});
+        QVERIFY(r.out.contains("R204 = 20000 = 20.000 мм"));
+        QVERIFY(r.out.contains("УСТАНОВОЧНЫЕ ДАННЫЕ"));
+        r = db({"show", "grinder-205", "--programs"});
+        QVERIFY(r.out.contains("ПРАВКА КРУГА"));
+        QVERIFY(r.out.contains("sha256 "));
+        r = db({"show", "grinder-205", "--program", "14"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.startsWith("%L14 (ПРАВКА КРУГА)\n"));
+        QVERIFY(builtinText("grinder-205").contains(r.out));
+        r = db({"show", "grinder-205", "--messages"});
+        QVERIFY(r.out.contains("#1  ПОДВОД"));
+        QVERIFY(r.out.contains("A01  Z1900.0"));
+        QVERIFY(r.out.contains("Z1900.0   Нет давления в гидросистеме\n"));
+
+        r = db({"show", "grinder-205", "--json", "--c", "22"});
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o["name"].toString(), QString("grinder-205"));
+        const QJsonObject c = o["c"].toArray()[0].toObject();
+        QCOMPARE(c["value"].toInt(), 2000);
+        QCOMPARE(c["address"].toString(), QString("Z4106"));
+        QCOMPARE(c["explanation_en"].toString(),
+                 QString("= 0.0781 m/s²; run-up to F AUTO RAPID in 1067 ms"));
+        QCOMPARE(o["findings"].toArray().size(), 0);
+
+        // Errors.
+        r = db({"show", "lathe-9"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("no machine \"lathe-9\""));
+        QVERIFY(r.err.contains("grinder-205, training-lathe"));
+        QCOMPARE(db({"show", "grinder-205", "--c", "153"}).exitCode, 2);
+        QCOMPARE(db({"show", "grinder-205", "--r", "300"}).exitCode, 2);
+        QCOMPARE(db({"show", "grinder-205", "--c", "1", "--programs"}).exitCode, 2);
+        QCOMPARE(db({"show"}).exitCode, 2);
+        r = db({"show", "grinder-205@2"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("has revisions 1..1; there is no revision 2"));
+        QCOMPARE(db({"show", "grinder-205@x"}).exitCode, 2);
+    }
+
+    void setValidatesAndRecordsHistory() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        auto r =
+            db({"set", "grinder-205", "C022=2133", "R12=5", "#9=ПРОВЕРКА", "--author", "Иванов"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith("grinder-205: revision 2 (3 changes)"), qPrintable(r.out));
+        QVERIFY(r.out.contains("C022 УСКОРЕНИЕ 1: 2000 -> 2133"));
+        QVERIFY(r.out.contains("R12"));
+        // A cross-check error: rejected whole with the manual's message.
+        r = db({"set", "grinder-205", "C022=1000", "C069=1"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("rejected, nothing was written"), qPrintable(r.err));
+        QVERIFY(r.err.contains("error [M37] C017,C069:"));
+        r = db({"set", "grinder-205", "C020=0"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("[M13] C020"));
+        r = db({"set", "grinder-205", "C028=100", "--lang", "en"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("[M6]"));
+        // Nothing of the rejected writes landed.
+        r = db({"show", "grinder-205", "--c", "22"});
+        QVERIFY(r.out.contains("= 2133"));
+        QVERIFY(r.out.contains("revision 2"));
+        QVERIFY(r.out.contains("Иванов: 2000 -> 2133"));
+        // Allowed on purpose.
+        r = db({"set", "grinder-205", "C069=1", "--allow-errors"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("error [M37]"));
+        // Removing items; texts; simulation settings.
+        r = db(
+            {"set", "grinder-205", "R12=", "A10=Нет воздуха", "x.kv=1.5", "title=Шлифовальный 2"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("R12 Параметр пользователя: 5 -> (none)"));
+        r = db({"show", "grinder-205", "--history", "1"});
+        QVERIFY(r.out.contains("revision 4"));
+        QVERIFY(!r.out.contains("revision 3"));
+        QVERIFY(r.out.contains("x.kv: 1 -> 1.5"));
+        // Usage errors.
+        QCOMPARE(db({"set", "grinder-205"}).exitCode, 2);
+        QCOMPARE(db({"set", "grinder-205", "C153=1"}).exitCode, 2);
+        QCOMPARE(db({"set", "grinder-205", "C022=fast"}).exitCode, 2);
+        QCOMPARE(db({"set", "grinder-205", "Q1=1"}).exitCode, 2);
+        QCOMPARE(db({"set", "no-such", "C022=1"}).exitCode, 2);
+        r = db({"set", "grinder-205", "R240=1"});
+        QCOMPARE(r.exitCode, 1); // read only
+        QVERIFY(r.err.contains("R240"));
+    }
+
+    void exportIsTheMachineFile() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        auto r = db({"export", "grinder-205"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, builtinText("grinder-205"));
+        QCOMPARE(db({"set", "grinder-205", "C022=2133"}).exitCode, 0);
+        QCOMPARE(db({"export", "grinder-205@1"}).out, builtinText("grinder-205"));
+        const QString out = dir_.filePath("g.k528m");
+        QCOMPARE(db({"export", "grinder-205", "--out", out}).exitCode, 0);
+        const QString text = QString::fromUtf8(readAll(out));
+        QVERIFY(text.contains("C022=2133 ; УСКОРЕНИЕ 1\n"));
+        r = db({"export", "training-lathe", "--format", "csv"});
+        QVERIFY(r.out.startsWith("number;axis;name;value;unit\n1;X;НАЛИЧ.ОСИ;1;flag\n"));
+        QCOMPARE(r.out.count('\n'), 153);
+        QCOMPARE(db({"export", "grinder-205", "--format", "xml"}).exitCode, 2);
+        QCOMPARE(db({"export", "nope"}).exitCode, 2);
+        QCOMPARE(db({"export", "grinder-205", "--out", dir_.filePath("no/dir/x")}).exitCode, 2);
+    }
+
+    void importRejectsBadFilesWhole() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        const QString good = builtinText("training-lathe");
+        const QString f = dir_.filePath("lathe.k528m");
+        QVERIFY(writeFile(f, good.toUtf8()));
+        // Exists already.
+        auto r = db({"import", f});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("already exists"));
+        QVERIFY(r.err.contains("--replace"));
+        // Under another name: exact.
+        r = db({"import", f, "--as", "lathe-2", "--author", "Петров"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.startsWith("lathe-2: revision 1"));
+        QCOMPARE(db({"export", "lathe-2"}).out,
+                 QString(good).replace("name=training-lathe", "name=lathe-2"));
+        // A value outside its range: the file's line, nothing imported.
+        QString bad = good;
+        bad.replace("\nC040=", "\nC040=9999999 ; x\nC040_=");
+        const int badLine = lineOf(bad, "C040=");
+        bad.replace("\nC040_=", "\n;");
+        QVERIFY(writeFile(f, bad.toUtf8()));
+        r = db({"import", f, "--as", "lathe-3"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(f + ":" + QString::number(badLine) + ": "), qPrintable(r.err));
+        QVERIFY(r.err.contains("nothing was imported"));
+        QVERIFY(!db({"machines"}).out.contains("lathe-3"));
+        // A cross-check error: the line of the first constant involved.
+        QString cross = good;
+        const QString dac = "C070=";
+        const int dacLine = lineOf(cross, dac);
+        QVERIFY(dacLine > 0);
+        const QString c18 = cross.split('\n')[lineOf(cross, "C018=") - 1]; // "C018=v ; N ЦАП"
+        const QString v18 = c18.mid(5, c18.indexOf(' ') - 5);
+        QStringList lines = cross.split('\n');
+        lines[dacLine - 1] = "C070=" + v18 + " ; N ЦАП";
+        cross = lines.join('\n');
+        QVERIFY(writeFile(f, cross.toUtf8()));
+        r = db({"import", f, "--as", "lathe-4"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(
+            r.err.contains(f + ":" + QString::number(lineOf(cross, "C018=")) + ": error [M38]"),
+            qPrintable(r.err));
+        QVERIFY(!db({"machines"}).out.contains("lathe-4"));
+        QCOMPARE(db({"import", f, "--as", "lathe-4", "--allow-errors"}).exitCode, 0);
+        // --replace: the next revision of the machine.
+        QString changed = good;
+        changed.replace("name=training-lathe", "name=lathe-2");
+        changed.replace("\nC021=1000 ", "\nC021=1200 ");
+        QVERIFY(writeFile(f, changed.toUtf8()));
+        r = db({"import", f, "--replace"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith("lathe-2: revision 2 (1 change)"), qPrintable(r.out));
+        QVERIFY(r.out.contains("C021 T контроля ДОС: 1000 -> 1200"));
+        QVERIFY(db({"import", f, "--replace"}).out.contains("no changes"));
+        // From standard input.
+        r = db({"import", "-", "--as", "lathe-5"}, good.toUtf8());
+        QCOMPARE(r.exitCode, 0);
+        // CSV: the constants of an existing machine.
+        const QString csv = dir_.filePath("c.csv");
+        QString csvText = db({"export", "grinder-205", "--format", "csv"}).out;
+        csvText.replace("\n22;X;УСКОРЕНИЕ 1;2000;", "\n22;X;УСКОРЕНИЕ 1;2133;");
+        QVERIFY(writeFile(csv, csvText.toUtf8()));
+        r = db({"import", csv, "--as", "grinder-205"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("C022 УСКОРЕНИЕ 1: 2000 -> 2133"));
+        QCOMPARE(db({"import", csv}).exitCode, 2); // which machine?
+        csvText.replace("\n22;X;УСКОРЕНИЕ 1;2133;", "\n22;Z;УСКОРЕНИЕ 1;2133;");
+        QVERIFY(writeFile(csv, csvText.toUtf8()));
+        r = db({"import", csv, "--as", "grinder-205"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(csv + ":" + QString::number(lineOf(csvText, "22;")) + ":"),
+                 qPrintable(r.err));
+        // Usage.
+        QCOMPARE(db({"import"}).exitCode, 2);
+        QCOMPARE(db({"import", dir_.filePath("missing.k528m")}).exitCode, 2);
+        QCOMPARE(db({"import", f, "--as", "Bad Name"}).exitCode, 2);
+    }
+
+    void diffOfMachinesRevisionsAndFiles() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        QCOMPARE(db({"set", "grinder-205", "C022=2133", "C023=4266"}).exitCode, 0);
+        auto r = db({"diff", "grinder-205@1", "grinder-205"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out,
+                 QString("--- grinder-205@1\n+++ grinder-205@2\n"
+                         "C022 УСКОРЕНИЕ 1: 2000 -> 2133\nC023 УСКОРЕНИЕ 2: 4000 -> 4266\n"));
+        r = db({"diff", "grinder-205", "grinder-205"});
+        QVERIFY(r.out.endsWith("no differences\n"));
+        const QString f = dir_.filePath("g.k528m");
+        QVERIFY(writeFile(f, builtinText("grinder-205").toUtf8()));
+        r = db({"diff", f, "grinder-205", "--json"});
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o["a"].toString(), f);
+        QCOMPARE(o["changes"].toArray().size(), 2);
+        QCOMPARE(o["changes"].toArray()[0].toObject()["key"].toString(), QString("C022"));
+        QCOMPARE(o["changes"].toArray()[0].toObject()["before"].toString(), QString("2000"));
+        r = db({"diff", "grinder-205", "training-lathe"});
+        QVERIFY(r.out.contains("name: grinder-205 -> training-lathe"));
+        QVERIFY(r.out.contains("L1: changed") || r.out.contains("L1:"));
+        r = db({"diff", "grinder-205", "nothing-here"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("'nothing-here' is neither"));
+        QCOMPARE(db({"diff", "grinder-205@9", "grinder-205"}).exitCode, 2);
+        QCOMPARE(db({"diff", "grinder-205"}).exitCode, 2);
+    }
+
+    void calcFromPhysicalData() {
+        // Appendix Ж, axis X: 5 mm screw, 2500 lines, 10 V = 10 m/min, run-up
+        // to 5000 mm/min in 2 s.
+        const QStringList axis = {"--screw-lead",  "5",    "--encoder-lines", "2500",
+                                  "--drive-volts", "10",   "--drive-speed",   "10000",
+                                  "--feed",        "5000", "--rapid",         "8000",
+                                  "--auto-rapid",  "5000", "--home-start",    "50",
+                                  "--home-creep",  "5",    "--accel",         "runup:5000:2000",
+                                  "--diameter"};
+        auto r = runK528(QStringList{"db", "calc"} + axis);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("C022  УСКОРЕНИЕ 1          1066"), qPrintable(r.out));
+        QVERIFY(r.out.contains("C026  К(СКОР)              262"));
+        QVERIFY(r.out.contains("C027  К(ОШИБ)              26"));
+        QVERIFY(r.out.contains("C028  ПРЕДЕЛ ЦАП           2395"));
+        QVERIFY(r.out.contains("C019  L ИМП.ДОС            1"));
+        QVERIFY(r.out.contains("C020  N ИМП.ДОС            2"));
+        QVERIFY(r.out.contains("C040  F ОБЫЧНАЯ            500000"));
+        QVERIFY(r.out.contains("the printed formula 0.8533·Vmax/T gives 2133"));
+        QVERIFY(r.out.contains("Formula 1 as printed gives twice the acceleration"));
+        r = runK528(QStringList{"db", "calc", "--as-printed"} + axis);
+        QVERIFY(r.out.contains("C022  УСКОРЕНИЕ 1          2133"));
+        r = runK528(QStringList{"db", "calc", "--json", "--axis", "Z"} + axis);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o["axis"].toString(), QString("Z"));
+        QCOMPARE(o["accel1"].toObject()["printed_value"].toInt(), 2133);
+        QCOMPARE(o["accel1"].toObject()["formula"].toInt(), 1);
+        bool found = false;
+        for (const auto& c : o["constants"].toArray())
+            if (c.toObject()["number"].toInt() == 74)
+                found = c.toObject()["value"].toInt() == 1066;
+        QVERIFY(found);
+        // From a machine of the database.
+        QCOMPARE(db({"init"}).exitCode, 0);
+        r = db({"calc", "--machine", "grinder-205", "--axis", "Z"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains("C078  К(СКОР)              131       (as now)"),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains("data of machine grinder-205"));
+        // Errors.
+        r = runK528({"db", "calc", "--screw-lead", "5"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("needs --encoder-lines"));
+        QCOMPARE(runK528(QStringList{"db", "calc", "--accel", "fast"} + axis.mid(0, 8)).exitCode,
+                 2);
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--drive-speed", "100"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("above what the drive reaches"));
+        QCOMPARE(runK528(QStringList{"db", "calc", "--discrete", "0.5"} + axis).exitCode, 2);
+    }
+
+    void auditLog() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        QCOMPARE(db({"set", "grinder-205", "C022=2133", "--author", "Сидоров"}).exitCode, 0);
+        auto r = db({"audit", "--limit", "1"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out.count('\n'), 1);
+        QVERIFY(r.out.contains("Сидоров"));
+        QVERIFY(r.out.contains("set"));
+        QVERIFY(r.out.contains("grinder-205@2"));
+        r = db({"audit", "--json", "--machine", "training-lathe"});
+        const auto a = QJsonDocument::fromJson(r.out.toUtf8()).object()["audit"].toArray();
+        QCOMPARE(a.size(), 1);
+        QCOMPARE(a[0].toObject()["action"].toString(), QString("seed"));
+        QCOMPARE(db({"audit", "--limit", "x"}).exitCode, 2);
+    }
+
+    void unusableDatabaseIsLeftAlone() {
+        const QByteArray junk = "not a database at all\n" + QByteArray(200, 'x');
+        QVERIFY(writeFile(db_, junk));
+        for (const QStringList& args :
+             {QStringList{"init"}, QStringList{"machines"}, QStringList{"show", "grinder-205"},
+              QStringList{"set", "grinder-205", "C022=2133"}}) {
+            const auto r = db(args);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains("not a K528 Studio database"), qPrintable(r.err));
+        }
+        QCOMPARE(readAll(db_), junk);
+    }
+
+    void helpAndUsage() {
+        auto r = runK528({"db", "--help"});
+        QCOMPARE(r.exitCode, 0);
+        for (const char* sub :
+             {"init", "machines", "show", "set", "export", "import", "diff", "calc", "audit"})
+            QVERIFY2(r.out.contains(QString("  ") + sub), sub);
+        QVERIFY(runK528({"--help"}).out.contains("db "));
+        QCOMPARE(runK528({"db"}).exitCode, 2);
+        r = runK528({"db", "frobnicate"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("unknown db subcommand 'frobnicate'"));
+        // --db before the subcommand.
+        QCOMPARE(runK528({"db", "--db", db_, "init"}).exitCode, 0);
+        QVERIFY(QFile::exists(db_));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliDb)
+#include "test_cli_db.moc"

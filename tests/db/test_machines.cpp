@@ -1,0 +1,508 @@
+// Machines in the database: writes with validation, per-value history (who,
+// when, old -> new), revisions rebuilt exactly, renames, conflicts, deletion,
+// the audit log, explanations of values, and the engine's profile hook.
+#include "catalog/cparams.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_test_util.h"
+#include "profile/builtin.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "random_machine.h"
+
+#include <QtTest>
+#include <cstdlib>
+#include <random>
+
+using namespace k528;
+using namespace k528::testing;
+namespace fs = std::filesystem;
+using profile::MachineProfile;
+
+namespace {
+
+// A clock the test sets.
+struct ManualClock {
+    std::shared_ptr<std::int64_t> t = std::make_shared<std::int64_t>(1715934600);
+    db::Clock clock() const {
+        auto p = t;
+        return [p] { return *p; };
+    }
+};
+
+db::Edit editC(int n, std::int64_t v) {
+    db::Edit e;
+    e.c[n] = v;
+    return e;
+}
+
+template <typename F> db::ErrorKind errorKind(F f) {
+    try {
+        f();
+    } catch (const db::Error& e) {
+        return e.kind();
+    }
+    return db::ErrorKind::Sql; // "no error": never expected below
+}
+
+// A random change of a profile: constants without error cross-checks, R,
+// programs, messages, PLC texts, settings (values, new keys, order), title.
+void mutate(MachineProfile& p, std::mt19937& rng) {
+    const int kind = static_cast<int>(rng() % 9);
+    switch (kind) {
+    case 0: {
+        static const int free[] = {21, 22, 23, 30, 32, 36, 40, 41, 42, 74, 75, 92, 139, 140};
+        const int n = free[rng() % std::size(free)];
+        const auto& d = catalog::cParam(n);
+        p.setC(n, std::uniform_int_distribution<std::int64_t>(d.min, d.max)(rng));
+        break;
+    }
+    case 1:
+        p.r[static_cast<int>(rng() % 150)] = static_cast<std::int32_t>(rng());
+        break;
+    case 2:
+        if (!p.r.empty())
+            p.r.erase(std::next(p.r.begin(), static_cast<long>(rng() % p.r.size())));
+        break;
+    case 3: {
+        const int n = static_cast<int>(rng() % 20) + 20;
+        p.programs[n] = randomProgram(rng, n, static_cast<int>(rng() % 10) + 2);
+        break;
+    }
+    case 4:
+        for (auto it = p.programs.begin(); it != p.programs.end(); ++it)
+            if (it->first >= 20) {
+                p.programs.erase(it);
+                break;
+            }
+        break;
+    case 5:
+        if (rng() % 2)
+            p.messages[static_cast<int>(rng() % 99) + 1] = randomWord(rng, 20);
+        else if (!p.messages.empty())
+            p.messages.erase(p.messages.begin());
+        break;
+    case 6:
+        p.plcTexts(catalog::PlcGroup::Work)[static_cast<int>(rng() % 32) + 1] = randomWord(rng, 40);
+        break;
+    case 7: {
+        // Settings: a new key, a removed one, or the same keys in another order.
+        const int what = static_cast<int>(rng() % 3);
+        if (what == 0) {
+            p.simulation.set("custom.k" + std::to_string(rng() % 5), std::to_string(rng() % 100));
+        } else if (what == 1 && !p.simulation.empty()) {
+            p.simulation.erase(p.simulation.entries().front().first);
+        } else {
+            auto entries = p.simulation.entries();
+            std::shuffle(entries.begin(), entries.end(), rng);
+            p.simulation.clear();
+            for (const auto& [k, v] : entries)
+                p.simulation.set(k, v);
+        }
+        break;
+    }
+    default:
+        p.title = "Станок " + randomWord(rng, 20);
+        break;
+    }
+}
+
+} // namespace
+
+class TestMachines : public QObject {
+    Q_OBJECT
+private slots:
+    void historyOfEachChange() {
+        QTemporaryDir dir;
+        ManualClock clk;
+        db::Database d = db::Database::open(tempPath(dir, "h.db"), testOptions(clk.clock()));
+        *clk.t = 1715940000; // 2024-05-17T10:00:00Z
+        db::Edit e;
+        e.c[22] = 2133;
+        e.r[12] = 5;
+        e.messages[9] = "ПРОВЕРКА";
+        e.plc[{catalog::PlcGroup::Alarm, 10}] = "Нет воздуха";
+        e.simulation["x.kv"] = "1.5";
+        const auto r1 = d.applyEdit("grinder-205", e, by("Иванов И.И."));
+        QVERIFY(r1.changed);
+        QCOMPARE(r1.revision, 2);
+        QCOMPARE(r1.changes.size(), std::size_t(5));
+        *clk.t = 1716026400; // 2024-05-18T10:00:00Z
+        db::Edit e2;
+        e2.c[22] = 2000;
+        e2.r[12] = std::nullopt;
+        const auto r2 = d.applyEdit("grinder-205", e2, by("Петров"));
+        QCOMPARE(r2.revision, 3);
+
+        const auto h = d.history("grinder-205", std::string("C022"));
+        QCOMPARE(h.size(), std::size_t(3));
+        QCOMPARE(h[0].revision, 3);
+        QCOMPARE(h[0].author, std::string("Петров"));
+        QCOMPARE(h[0].at, std::string("2024-05-18T10:00:00Z"));
+        QCOMPARE(*h[0].change.before, std::string("2133"));
+        QCOMPARE(*h[0].change.after, std::string("2000"));
+        QCOMPARE(h[0].change.label, std::string("УСКОРЕНИЕ 1"));
+        QCOMPARE(h[1].author, std::string("Иванов И.И."));
+        QCOMPARE(h[1].at, std::string("2024-05-17T10:00:00Z"));
+        QCOMPARE(*h[1].change.before, std::string("2000"));
+        QCOMPARE(*h[1].change.after, std::string("2133"));
+        QCOMPARE(h[2].revision, 1);
+        QVERIFY(!h[2].change.before); // as first stored
+        QCOMPARE(h[2].author, std::string("tester"));
+
+        const auto hr = d.history("grinder-205", std::string("R12"));
+        QCOMPARE(hr.size(), std::size_t(2));
+        QVERIFY(!hr[0].change.after); // removed
+        QCOMPARE(*hr[0].change.before, std::string("5"));
+        QVERIFY(!hr[1].change.before); // added
+        QCOMPARE(d.history("grinder-205", std::string("#9")).size(), std::size_t(1));
+        QCOMPARE(*d.history("grinder-205", std::string("A10")).front().change.after,
+                 std::string("Нет воздуха"));
+        const auto hs = d.history("grinder-205", std::string("x.kv"));
+        QCOMPARE(hs.size(), std::size_t(2));
+        QCOMPARE(*hs[0].change.before, std::string("1"));
+        QCOMPARE(*hs[0].change.after, std::string("1.5"));
+
+        const auto revs = d.revisions("grinder-205");
+        QCOMPARE(revs.size(), std::size_t(3));
+        QCOMPARE(revs[0].revision, 3);
+        QCOMPARE(revs[0].changeCount, 2);
+        QCOMPARE(revs[0].summary, std::string("set C022 R12"));
+        QCOMPARE(revs[1].author, std::string("Иванов И.И."));
+        // The newest revision only.
+        QCOMPARE(d.history("grinder-205", std::nullopt, 1).size(), std::size_t(2));
+        // The machine row follows.
+        const auto m = *d.machine("grinder-205");
+        QCOMPARE(m.revision, 3);
+        QCOMPARE(m.changedBy, std::string("Петров"));
+        QCOMPARE(m.changedAt, std::string("2024-05-18T10:00:00Z"));
+        // The audit log has both writes.
+        const auto audit = d.audit(2);
+        QCOMPARE(audit[0].action, std::string("set"));
+        QCOMPARE(audit[0].author, std::string("Петров"));
+        QCOMPARE(audit[0].revision, 3);
+        QCOMPARE(audit[0].at, std::string("2024-05-18T10:00:00Z"));
+        QCOMPARE(audit[0].machine, std::string("grinder-205"));
+        QCOMPARE(audit[1].author, std::string("Иванов И.И."));
+        QCOMPARE(d.audit(0, "training-lathe").size(), std::size_t(1)); // its seeding
+    }
+
+    void equalProfileWritesNothing() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "n.db"), testOptions());
+        const auto auditBefore = d.audit().size();
+        const auto r = d.saveMachine("grinder-205", d.loadMachine("grinder-205"), by("x"));
+        QVERIFY(!r.changed);
+        QCOMPARE(r.revision, 1);
+        QCOMPARE(d.machine("grinder-205")->revision, 1);
+        QCOMPARE(d.audit().size(), auditBefore);
+        const auto r2 = d.applyEdit("grinder-205", editC(22, 2000), by("x"));
+        QVERIFY(!r2.changed);
+    }
+
+    void saveWholeProfile() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "s.db"), testOptions());
+        const MachineProfile old = d.loadMachine("training-lathe");
+        MachineProfile p = randomMachine(7, "training-lathe");
+        const auto r = d.saveMachine("training-lathe", p, by("техн."));
+        QVERIFY(r.changed);
+        QCOMPARE(r.revision, 2);
+        std::vector<profile::Change> expected = profile::diff(old, p);
+        // Programs are compared in full; the order row may follow.
+        QVERIFY(r.changes.size() >= expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            QVERIFY(r.changes[i] == expected[i]);
+        QVERIFY(d.loadMachine("training-lathe") == p);
+        QVERIFY(d.loadMachine("training-lathe", 1) == old);
+        QVERIFY(d.loadMachine("training-lathe", 2) == p);
+    }
+
+    void validationRejectsWholeAndWritesNothing() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "v.db"), testOptions());
+        const auto auditBefore = d.audit().size();
+        // A value outside its definition: never, even with allowErrors.
+        db::WriteOptions allow = by("x");
+        allow.allowErrors = true;
+        for (bool allowErrors : {false, true}) {
+            db::Edit e;
+            e.c[22] = 2133;  // fine
+            e.c[20] = 40000; // outside 1..32767
+            db::WriteOptions o = by("x");
+            o.allowErrors = allowErrors;
+            try {
+                d.applyEdit("grinder-205", e, o);
+                QFAIL("an out-of-range value was written");
+            } catch (const db::ValidationError& v) {
+                QCOMPARE(v.findings().size(), std::size_t(1));
+                QCOMPARE(*v.findings()[0].message, 13); // L/N of X
+                QCOMPARE(v.findings()[0].subject, std::string("C020"));
+                QVERIFY(std::string(v.what()).find("nothing was written") != std::string::npos);
+            }
+        }
+        // A cross-check error: message 37, both encoders on one channel.
+        try {
+            d.applyEdit("grinder-205", editC(69, 1), by("x"));
+            QFAIL("a cross-check error was written");
+        } catch (const db::ValidationError& v) {
+            QCOMPARE(v.findings().size(), std::size_t(1));
+            QCOMPARE(*v.findings()[0].message, 37);
+            QCOMPARE(v.findings()[0].cParams, (std::vector<int>{17, 69}));
+        }
+        // DAC limit below DAC max: message 6 (X).
+        try {
+            d.applyEdit("grinder-205", editC(28, 2000), by("x"));
+            QFAIL("ПРЕДЕЛ ЦАП < МАКС.ЦАП was written");
+        } catch (const db::ValidationError& v) {
+            QCOMPARE(*v.findings()[0].message, 6);
+        }
+        // R232..R262 are read only; PLC texts at most 40 characters.
+        db::Edit bad;
+        bad.r[240] = 1;
+        bad.plc[{catalog::PlcGroup::System, 1}] = std::string(41, 'x');
+        QCOMPARE(errorKind([&] { d.applyEdit("grinder-205", bad, allow); }),
+                 db::ErrorKind::Invalid);
+        QCOMPARE(d.machine("grinder-205")->revision, 1);
+        QCOMPARE(d.audit().size(), auditBefore);
+        QVERIFY(d.loadMachine("grinder-205") == profile::builtin("grinder-205"));
+
+        // Allowed on purpose (a training machine with a fault) ...
+        const auto r = d.applyEdit("grinder-205", editC(69, 1), allow);
+        QCOMPARE(r.revision, 2);
+        QVERIFY(profile::hasErrors(r.findings));
+        // ... after which other changes are not blocked by the known error,
+        const auto r2 = d.applyEdit("grinder-205", editC(22, 2133), by("x"));
+        QCOMPARE(r2.revision, 3);
+        // but a new error still is.
+        QCOMPARE(errorKind([&] { d.applyEdit("grinder-205", editC(70, 1), by("x")); }),
+                 db::ErrorKind::Invalid);
+        // Fixing the error is accepted.
+        const auto r3 = d.applyEdit("grinder-205", editC(69, 3), by("x"));
+        QVERIFY(!profile::hasErrors(r3.findings));
+    }
+
+    void createRenameRemove() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "c.db"), testOptions());
+        MachineProfile p = profile::builtin("grinder-205");
+        QCOMPARE(errorKind([&] { d.createMachine(p); }), db::ErrorKind::MachineExists);
+        p.name = "Bad Name";
+        QCOMPARE(errorKind([&] { d.createMachine(p); }), db::ErrorKind::Invalid);
+        p.name = "grinder-2";
+        const auto r = d.createMachine(p, by("Сидоров"));
+        QCOMPARE(r.revision, 1);
+        QCOMPARE(d.audit(1).front().action, std::string("create"));
+        QVERIFY(d.loadMachine("grinder-2") == p);
+
+        // Rename: history goes with the machine.
+        d.applyEdit("grinder-2", editC(22, 2100), by("x"));
+        MachineProfile q = d.loadMachine("grinder-2");
+        q.name = "grinder-3";
+        QCOMPARE(errorKind([&] {
+                     MachineProfile clash = q;
+                     clash.name = "training-lathe";
+                     d.saveMachine("grinder-2", clash);
+                 }),
+                 db::ErrorKind::MachineExists);
+        d.saveMachine("grinder-2", q, by("x"));
+        QVERIFY(!d.hasMachine("grinder-2"));
+        QCOMPARE(d.machine("grinder-3")->revision, 3);
+        QCOMPARE(d.loadMachine("grinder-3", 1).name, std::string("grinder-2"));
+        QCOMPARE(d.loadMachine("grinder-3", 3).name, std::string("grinder-3"));
+        QCOMPARE(d.history("grinder-3", std::string("C022")).size(), std::size_t(2));
+
+        d.removeMachine("grinder-3", by("x"));
+        QVERIFY(!d.hasMachine("grinder-3"));
+        QCOMPARE(d.audit(1).front().action, std::string("delete"));
+        QCOMPARE(d.audit(1).front().machine, std::string("grinder-3"));
+        try {
+            d.loadMachine("grinder-3");
+            QFAIL("a deleted machine loaded");
+        } catch (const db::Error& e) {
+            QCOMPARE(e.kind(), db::ErrorKind::NoMachine);
+            QVERIFY2(std::string(e.what()).find("grinder-205, training-lathe") != std::string::npos,
+                     e.what());
+        }
+        QCOMPARE(d.checkIntegrity(), std::string());
+    }
+
+    void staleWriterIsRefused() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "x.db"), testOptions());
+        db::WriteOptions o = by("desk");
+        o.expectedRevision = 1;
+        MachineProfile p = d.loadMachine("grinder-205");
+        d.applyEdit("grinder-205", editC(22, 2100), by("other"));
+        p.setC(23, 4100);
+        QCOMPARE(errorKind([&] { d.saveMachine("grinder-205", p, o); }), db::ErrorKind::Conflict);
+        o.expectedRevision = 2;
+        p = d.loadMachine("grinder-205");
+        p.setC(23, 4100);
+        QCOMPARE(d.saveMachine("grinder-205", p, o).revision, 3);
+    }
+
+    // Every revision of a long random history is rebuilt exactly, and diffs of
+    // revisions are the diffs of what was saved.
+    void revisionsRebuildExactly() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "r.db"), testOptions());
+        std::mt19937 rng(2024);
+        MachineProfile p = randomMachine(3, "lathe-7");
+        for (int n = 20; n < 40; ++n)
+            p.programs.erase(n);
+        std::vector<MachineProfile> saved{MachineProfile{}, p};
+        d.createMachine(p, by("a"));
+        for (int i = 0; i < 60; ++i) {
+            const int steps = 1 + static_cast<int>(rng() % 3);
+            for (int s = 0; s < steps; ++s)
+                mutate(p, rng);
+            if (i == 30) {
+                p.name = "lathe-8"; // renamed half way
+                d.saveMachine("lathe-7", p, by("b"));
+            } else {
+                const auto r = d.saveMachine(p.name, p, by("b"));
+                if (!r.changed)
+                    continue;
+            }
+            saved.push_back(p);
+        }
+        const int last = static_cast<int>(saved.size()) - 1;
+        QCOMPARE(d.machine("lathe-8")->revision, last);
+        QVERIFY(last > 50);
+        for (int r = 1; r <= last; ++r) {
+            const MachineProfile got = d.loadMachine("lathe-8", r);
+            if (!(got == saved[static_cast<std::size_t>(r)]))
+                QFAIL(("revision " + std::to_string(r) + " differs:\n" +
+                       profile::formatDiff(profile::diff(saved[static_cast<std::size_t>(r)], got)))
+                          .c_str());
+        }
+        QVERIFY(d.loadMachine("lathe-8") == saved.back());
+        // A reorder of the settings is recorded, not lost.
+        bool reorderSeen = false;
+        for (const auto& h : d.history("lathe-8"))
+            reorderSeen = reorderSeen || h.change.key == "(order)";
+        QVERIFY(reorderSeen);
+        for (int a : {1, 10, 31}) {
+            const auto changes =
+                profile::diff(d.loadMachine("lathe-8", a), d.loadMachine("lathe-8", last));
+            QVERIFY(changes == profile::diff(saved[static_cast<std::size_t>(a)], saved.back()));
+        }
+        QCOMPARE(errorKind([&] { d.loadMachine("lathe-8", 0); }), db::ErrorKind::NoRevision);
+        QCOMPARE(errorKind([&] { d.loadMachine("lathe-8", last + 1); }), db::ErrorKind::NoRevision);
+    }
+
+    void programRevisionsAndChecksums() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(tempPath(dir, "p.db"), testOptions());
+        MachineProfile p = d.loadMachine("grinder-205");
+        const std::string v1 = p.programs.at(11);
+        p.programs[11] = v1 + "N4 M30\n";
+        d.saveMachine("grinder-205", p, by("a"));
+        p.programs.erase(11);
+        d.saveMachine("grinder-205", p, by("a"));
+        const auto h = d.programHistory("grinder-205", 11);
+        QCOMPARE(h.size(), std::size_t(3));
+        QCOMPARE(h[0].revision, 3);
+        QVERIFY(!h[0].text && !h[0].sha256); // deleted
+        QCOMPARE(*h[1].text, v1 + "N4 M30\n");
+        QCOMPARE(*h[1].sha256, db::sha256Hex(v1 + "N4 M30\n"));
+        QCOMPARE(*h[2].text, v1);
+        QCOMPARE(*d.programText("grinder-205", 11, 1), v1);
+        QVERIFY(!d.programText("grinder-205", 11, 3));
+        // The change rows of programs carry the checksums.
+        const auto hc = d.history("grinder-205", std::string("L11"));
+        QCOMPARE(*hc[1].change.before, db::sha256Hex(v1));
+        QCOMPARE(*hc[1].change.after, db::sha256Hex(v1 + "N4 M30\n"));
+        // C143 names L11, which is gone: a warning (message 45), accepted.
+        QVERIFY(!profile::hasErrors(profile::validate(d.loadMachine("grinder-205"))));
+    }
+
+    void explanations() {
+        const MachineProfile g = profile::builtin("grinder-205");
+        using db::Lang;
+        QCOMPARE(db::explainCValue(g, 40, Lang::Ru), std::string("= 5000 мм/мин"));
+        QCOMPARE(db::explainCValue(g, 40, Lang::En), std::string("= 5000 mm/min"));
+        QCOMPARE(db::explainCValue(g, 29, Lang::Ru), std::string("= 10 В"));
+        QCOMPARE(db::explainCValue(g, 28, Lang::En), std::string("= 11.7 V"));
+        QCOMPARE(db::explainCValue(g, 17, Lang::Ru), std::string("1-й модуль СР34.23, канал 1"));
+        QCOMPARE(db::explainCValue(g, 69, Lang::En), std::string("СР34.23 module 2, channel 1"));
+        QCOMPARE(db::explainCValue(g, 70, Lang::Ru), std::string("канал 2 модуля СМ32.03"));
+        QCOMPARE(db::explainCValue(g, 143, Lang::Ru), std::string("L11 (ВЫХОД В ИСХОДНОЕ)"));
+        QCOMPARE(db::explainCValue(g, 144, Lang::Ru), std::string("цикл не задан"));
+        QCOMPARE(db::explainCValue(g, 107, Lang::Ru), std::string("Готовность привода оси"));
+        QCOMPARE(db::explainCValue(g, 114, Lang::Ru),
+                 std::string("Стирание остатка пути – сигнал 4 (от ПАК «размер»)"));
+        QCOMPARE(db::explainCValue(g, 119, Lang::En), std::string("input not used"));
+        QCOMPARE(db::explainCValue(g, 47, Lang::Ru), std::string("= 40.000 мм на диаметр"));
+        QCOMPARE(db::explainCValue(g, 99, Lang::Ru), std::string("= 200.000 мм"));
+        QCOMPARE(db::explainCValue(g, 19, Lang::Ru),
+                 std::string("L/N = 1/2: 0.0005 мм на импульс ДОС"));
+        QCOMPARE(db::explainCValue(g, 30, Lang::Ru), std::string("= 0.5 мм"));
+        QCOMPARE(db::explainCValue(g, 141, Lang::Ru), std::string("= 50 %"));
+        QCOMPARE(db::explainCValue(g, 21, Lang::En), std::string("= 2.5 s"));
+        QCOMPARE(db::explainCValue(g, 1, Lang::Ru), std::string("да"));
+        // УСКОРЕНИЕ 1 of Ж: 2000 = 0.078 m/s², 1.07 s to 5000 mm/min.
+        QCOMPARE(db::explainCValue(g, 22, Lang::En),
+                 std::string("= 0.0781 m/s²; run-up to F AUTO RAPID in 1067 ms"));
+        MachineProfile h = g;
+        h.programs.erase(11);
+        QCOMPARE(db::explainCValue(h, 143, Lang::Ru),
+                 std::string("L11: программы нет (сообщение 45)"));
+        QCOMPARE(db::programTitle("%L14 (ПРАВКА КРУГА)\nN1 G0\n"), std::string("ПРАВКА КРУГА"));
+        QCOMPARE(db::programTitle("N1 G0 (x)\n"), std::string());
+    }
+
+    void defaultLocation() {
+        const QByteArray oldDb = qgetenv("K528_DB"), oldXdg = qgetenv("XDG_DATA_HOME"),
+                         oldHome = qgetenv("HOME");
+        qputenv("K528_DB", "/data/shop.db");
+        QCOMPARE(db::defaultDatabasePath(), fs::path("/data/shop.db"));
+        qunsetenv("K528_DB");
+        qputenv("XDG_DATA_HOME", "/xdg");
+        QCOMPARE(db::defaultDatabasePath(), fs::path("/xdg/k528studio/k528.db"));
+        qunsetenv("XDG_DATA_HOME");
+        qputenv("HOME", "/home/ivan");
+        QCOMPARE(db::defaultDatabasePath(), fs::path("/home/ivan/.local/share/k528studio/k528.db"));
+        qputenv("XDG_DATA_HOME", "relative/path"); // not absolute: ignored (XDG spec)
+        QCOMPARE(db::defaultDatabasePath(), fs::path("/home/ivan/.local/share/k528studio/k528.db"));
+        oldDb.isNull() ? qunsetenv("K528_DB") : qputenv("K528_DB", oldDb);
+        oldXdg.isNull() ? qunsetenv("XDG_DATA_HOME") : qputenv("XDG_DATA_HOME", oldXdg);
+        oldHome.isNull() ? qunsetenv("HOME") : qputenv("HOME", oldHome);
+    }
+
+    // The engine's profile: the database's machine when it has one, else the
+    // built-in or the file; a missing database is not created.
+    void engineProfileHook() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "engine.db");
+        QVERIFY(db::loadProfile("grinder-205", p) == profile::builtin("grinder-205"));
+        QVERIFY(!fs::exists(p));
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            d.applyEdit("grinder-205", editC(22, 2133), by("x"));
+            MachineProfile mine = profile::builtin("training-lathe");
+            mine.name = "lathe-3";
+            d.createMachine(mine, by("x"));
+        }
+        QCOMPARE(db::loadProfile("grinder-205", p).cValue(22), std::int64_t(2133));
+        QCOMPARE(db::loadProfile("lathe-3", p).name, std::string("lathe-3"));
+        const fs::path file = tempPath(dir, "m.k528m");
+        profile::writeMachineFile(file, profile::builtin("training-lathe"));
+        QVERIFY(db::loadProfile(file.string(), p) == profile::builtin("training-lathe"));
+        QVERIFY_THROWS_EXCEPTION(profile::FileError, db::loadProfile("no-such-machine", p));
+        // A damaged database is an error, not a silent fallback.
+        std::string bytes = fileBytes(p);
+        for (std::size_t i = 4096 * 2; i < bytes.size(); i += 4096)
+            for (std::size_t j = 50; j < 400; ++j)
+                bytes[i + j] = 'Z';
+        writeBytes(p, bytes);
+        QVERIFY_THROWS_EXCEPTION(db::Error, db::loadProfile("grinder-205", p));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestMachines)
+#include "test_machines.moc"

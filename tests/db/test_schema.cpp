@@ -1,0 +1,424 @@
+// Opening, creating and migrating the database; refusing files that are not
+// ours, damaged or newer — and leaving them byte for byte as they were.
+#include "catalog/cparams.h"
+#include "db/database.h"
+#include "db_test_util.h"
+#include "profile/builtin.h"
+
+#include <QtTest>
+#include <filesystem>
+#include <sqlite3.h>
+
+using namespace k528;
+using namespace k528::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A plain SQLite connection for looking under the hood.
+struct Raw {
+    sqlite3* db = nullptr;
+    explicit Raw(const fs::path& p) {
+        if (sqlite3_open(p.c_str(), &db) != SQLITE_OK)
+            qFatal("cannot open %s", p.c_str());
+    }
+    ~Raw() { sqlite3_close(db); }
+    // Runs SQL; returns "" or SQLite's error message.
+    std::string exec(const std::string& sql) {
+        char* err = nullptr;
+        if (sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err) == SQLITE_OK)
+            return {};
+        std::string e = err ? err : "error";
+        sqlite3_free(err);
+        return e;
+    }
+    std::string text(const std::string& sql) {
+        sqlite3_stmt* st = nullptr;
+        if (sqlite3_prepare_v2(db, sql.c_str(), -1, &st, nullptr) != SQLITE_OK)
+            return "<prepare failed: " + std::string(sqlite3_errmsg(db)) + ">";
+        std::string r;
+        if (sqlite3_step(st) == SQLITE_ROW && sqlite3_column_text(st, 0))
+            r = reinterpret_cast<const char*>(sqlite3_column_text(st, 0));
+        sqlite3_finalize(st);
+        return r;
+    }
+    long long integer(const std::string& sql) { return std::stoll(text(sql)); }
+};
+
+// The error of opening `p`, checking its kind; "" if it opened.
+std::string openError(const fs::path& p, db::ErrorKind expected,
+                      const db::OpenOptions& o = testOptions()) {
+    try {
+        db::Database::open(p, o);
+    } catch (const db::Error& e) {
+        if (e.kind() != expected)
+            return std::string("wrong kind ") + std::string(db::errorKindName(e.kind())) + ": " +
+                   e.what();
+        return e.what();
+    }
+    return {};
+}
+
+fs::path makeDb(const QTemporaryDir& dir, const char* name = "k528.db") {
+    const fs::path p = tempPath(dir, name);
+    db::Database::open(p, testOptions());
+    return p;
+}
+
+const char* const kV2Sql =
+    "CREATE TABLE workshops (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE);"
+    "ALTER TABLE machines ADD COLUMN workshop_id INTEGER REFERENCES workshops(id);";
+
+} // namespace
+
+class TestSchema : public QObject {
+    Q_OBJECT
+private slots:
+    void newFileGetsSchemaDefinitionsAndBuiltins() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "new.db");
+        QVERIFY(!fs::exists(p));
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            const auto& r = d.openReport();
+            QVERIFY(r.created);
+            QCOMPARE(r.fromVersion, 0);
+            QCOMPARE(r.version, db::latestSchemaVersion());
+            QCOMPARE(r.seeded, profile::builtinNames());
+            QCOMPARE(d.schemaVersion(), 1);
+            // The built-ins are stored exactly.
+            for (const auto& name : profile::builtinNames()) {
+                QVERIFY(d.loadMachine(name) == profile::builtin(name));
+                QCOMPARE(d.machine(name)->revision, 1);
+                QCOMPARE(d.machine(name)->changedBy, std::string("tester"));
+            }
+            const auto audit = d.audit();
+            QCOMPARE(audit.back().action, std::string("create-database"));
+            QVERIFY(std::any_of(audit.begin(), audit.end(),
+                                [](const auto& a) { return a.action == "definitions"; }));
+            QCOMPARE(std::count_if(audit.begin(), audit.end(),
+                                   [](const auto& a) { return a.action == "seed"; }),
+                     2);
+        }
+        Raw raw(p);
+        QCOMPARE(raw.integer("PRAGMA application_id"), static_cast<long long>(db::kApplicationId));
+        QCOMPARE(raw.integer("PRAGMA user_version"), 1LL);
+        QCOMPARE(raw.text("PRAGMA journal_mode"), std::string("wal"));
+        QCOMPARE(raw.integer("SELECT count(*) FROM c_definitions"), 152LL);
+        // Appendix Е as printed: name, address, kind.
+        QCOMPARE(raw.text("SELECT name || '|' || address || '|' || kind || '|' || unit FROM "
+                          "c_definitions WHERE number = 22"),
+                 std::string("УСКОРЕНИЕ 1|Z4106|integer|25600*A/Kd"));
+        QCOMPARE(raw.text("SELECT name || '|' || address || '|' || kind FROM c_definitions WHERE "
+                          "number = 107"),
+                 std::string("N Б.ВХ. X1|Z4202, Мл.байт|code"));
+        QCOMPARE(raw.text("SELECT axis || '|' || kind || '|' || min_value || '..' || max_value "
+                          "FROM c_definitions WHERE number = 57"),
+                 std::string("Z|flag|0..1"));
+        QVERIFY(
+            raw.text("SELECT description_ru FROM c_definitions WHERE number = 22").find("0,8533") !=
+            std::string::npos);
+        // Every definition equals the catalog's.
+        for (const auto& def : catalog::cParams()) {
+            const std::string n = std::to_string(def.number);
+            QCOMPARE(raw.text("SELECT name FROM c_definitions WHERE number = " + n),
+                     std::string(def.name));
+            QCOMPARE(raw.integer("SELECT max_value FROM c_definitions WHERE number = " + n),
+                     static_cast<long long>(def.max));
+        }
+        QCOMPARE(raw.integer("SELECT count(*) FROM c_values"), 2LL * 152);
+    }
+
+    void emptyFileIsCreated() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "empty.db");
+        writeBytes(p, "");
+        db::Database d = db::Database::open(p, testOptions());
+        QVERIFY(d.openReport().created);
+        QCOMPARE(d.machines().size(), std::size_t(2));
+    }
+
+    void withoutSeedingTheDatabaseIsEmpty() {
+        QTemporaryDir dir;
+        auto o = testOptions();
+        o.seedBuiltins = false;
+        db::Database d = db::Database::open(tempPath(dir, "e.db"), o);
+        QVERIFY(d.machines().empty());
+    }
+
+    void reopeningWritesNothing() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        const std::string before = fileBytes(p);
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QVERIFY(!d.openReport().created);
+            QCOMPARE(d.openReport().fromVersion, 1);
+            QVERIFY(!d.openReport().definitionsUpdated);
+            QCOMPARE(d.machines().size(), std::size_t(2));
+            (void)d.loadMachine("grinder-205");
+        }
+        QVERIFY(fileBytes(p) == before);
+        QVERIFY(!fs::exists(p.string() + "-wal"));
+    }
+
+    void missingFileWithoutCreate() {
+        QTemporaryDir dir;
+        auto o = testOptions();
+        o.create = false;
+        const fs::path p = tempPath(dir, "none.db");
+        const std::string e = openError(p, db::ErrorKind::Io, o);
+        QVERIFY2(e.find("no database at") != std::string::npos, e.c_str());
+        QVERIFY(!fs::exists(p));
+        const std::string e2 = openError(tempPath(dir, "no/such/folder.db"), db::ErrorKind::Io);
+        QVERIFY2(e2.find("does not exist") != std::string::npos, e2.c_str());
+    }
+
+    // A later schema step is applied to a version-1 file in one transaction,
+    // keeping every machine.
+    void migrationFromVersion1() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            d.applyEdit(
+                "grinder-205",
+                [] {
+                    db::Edit e;
+                    e.c[22] = 2133;
+                    return e;
+                }(),
+                by("Петров"));
+        }
+        std::vector<db::Migration> steps(db::schemaMigrations().begin(),
+                                         db::schemaMigrations().end());
+        steps.push_back({2, "workshops", kV2Sql});
+        auto o = testOptions();
+        o.migrations = steps;
+        {
+            db::Database d = db::Database::open(p, o);
+            QVERIFY(!d.openReport().created);
+            QCOMPARE(d.openReport().fromVersion, 1);
+            QCOMPARE(d.openReport().version, 2);
+            QVERIFY(d.openReport().seeded.empty());
+            QCOMPARE(d.schemaVersion(), 2);
+            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
+            QCOMPARE(d.machine("grinder-205")->revision, 2);
+            QCOMPARE(d.audit(1).front().action, std::string("migrate"));
+            QCOMPARE(d.audit(1).front().detail, std::string("schema version 1 -> 2"));
+        }
+        {
+            Raw raw(p);
+            QCOMPARE(raw.integer("PRAGMA user_version"), 2LL);
+            QVERIFY(raw.exec("INSERT INTO workshops (name) VALUES ('цех 3')").empty());
+        }
+        // This program (schema 1) now refuses the file and leaves it alone.
+        const std::string bytes = fileBytes(p);
+        const std::string e = openError(p, db::ErrorKind::TooNew);
+        QVERIFY2(e.find("schema version 2") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == bytes);
+    }
+
+    // A new file gets every step at once.
+    void newFileWithTwoSteps() {
+        QTemporaryDir dir;
+        std::vector<db::Migration> steps(db::schemaMigrations().begin(),
+                                         db::schemaMigrations().end());
+        steps.push_back({2, "workshops", kV2Sql});
+        auto o = testOptions();
+        o.migrations = steps;
+        db::Database d = db::Database::open(tempPath(dir, "two.db"), o);
+        QCOMPARE(d.openReport().fromVersion, 0);
+        QCOMPARE(d.schemaVersion(), 2);
+        QCOMPARE(d.machines().size(), std::size_t(2));
+    }
+
+    void failedMigrationChangesNothing() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        const std::string bytes = fileBytes(p);
+        std::vector<db::Migration> steps(db::schemaMigrations().begin(),
+                                         db::schemaMigrations().end());
+        steps.push_back(
+            {2, "broken", "CREATE TABLE good (a INTEGER); INSERT INTO missing VALUES (1);"});
+        auto o = testOptions();
+        o.migrations = steps;
+        const std::string e = openError(p, db::ErrorKind::Sql, o);
+        QVERIFY2(e.find("migration to schema version 2 failed") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("no such table: missing") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == bytes);
+        db::Database d = db::Database::open(p, testOptions());
+        QCOMPARE(d.schemaVersion(), 1);
+        Raw raw(p);
+        QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'good'"), 0LL);
+    }
+
+    void foreignSqliteFileIsRefused() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "other.db");
+        {
+            Raw raw(p);
+            QVERIFY(raw.exec("CREATE TABLE customers (id INTEGER, name TEXT);"
+                             "INSERT INTO customers VALUES (1, 'ООО Ромашка');")
+                        .empty());
+        }
+        const std::string bytes = fileBytes(p);
+        const std::string e = openError(p, db::ErrorKind::Foreign);
+        QVERIFY2(e.find("not a K528 Studio database") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("left untouched") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == bytes);
+        QVERIFY(!fs::exists(p.string() + "-wal"));
+        // Another program's application_id, even without tables.
+        const fs::path q = tempPath(dir, "tagged.db");
+        {
+            Raw raw(q);
+            QVERIFY(raw.exec("PRAGMA application_id = 305419896").empty()); // 0x12345678
+        }
+        const std::string qbytes = fileBytes(q);
+        const std::string e2 = openError(q, db::ErrorKind::Foreign);
+        QVERIFY2(e2.find("0x12345678") != std::string::npos, e2.c_str());
+        QVERIFY(fileBytes(q) == qbytes);
+    }
+
+    void nonSqliteFileIsRefused() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "notes.db");
+        const std::string text = "[machine]\nformat=1\nname=x\n" + std::string(400, 'x');
+        writeBytes(p, text);
+        const std::string e = openError(p, db::ErrorKind::Foreign);
+        QVERIFY2(e.find("SQLite header") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == text);
+        const fs::path tiny = tempPath(dir, "tiny.db");
+        writeBytes(tiny, "SQLite");
+        const std::string e2 = openError(tiny, db::ErrorKind::Foreign);
+        QVERIFY2(e2.find("only 6 bytes") != std::string::npos, e2.c_str());
+        QVERIFY(fileBytes(tiny) == "SQLite");
+    }
+
+    void garbledFileIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        std::string bytes = fileBytes(p);
+        const std::size_t pageSize = 4096;
+        QVERIFY(bytes.size() > 8 * pageSize);
+        // Overwrite the middle of several b-tree pages.
+        for (std::size_t page = 2; page * pageSize < bytes.size(); page += 5)
+            for (std::size_t i = 0; i < 300; ++i)
+                bytes[page * pageSize + 100 + i] = static_cast<char>(0xA5 ^ i);
+        writeBytes(p, bytes);
+        const std::string e = openError(p, db::ErrorKind::Corrupt);
+        QVERIFY2(e.find("damaged") != std::string::npos ||
+                     e.find("cannot be read") != std::string::npos,
+                 e.c_str());
+        QVERIFY2(e.find("left untouched") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == bytes);
+        QVERIFY(!fs::exists(p.string() + "-wal"));
+        QVERIFY(!fs::exists(p.string() + "-shm"));
+    }
+
+    void truncatedFileIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        std::string bytes = fileBytes(p);
+        bytes.resize(bytes.size() / 2 / 4096 * 4096);
+        writeBytes(p, bytes);
+        const std::string e = openError(p, db::ErrorKind::Corrupt);
+        QVERIFY2(!e.empty(), "a truncated database opened");
+        QVERIFY(fileBytes(p) == bytes);
+        // A truncated header.
+        writeBytes(p, bytes.substr(0, 50));
+        QVERIFY(!openError(p, db::ErrorKind::Foreign).empty());
+        QCOMPARE(fileBytes(p).size(), std::size_t(50));
+    }
+
+    void newerSchemaIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        {
+            Raw raw(p);
+            QVERIFY(raw.exec("PRAGMA user_version = 7").empty());
+        }
+        const std::string bytes = fileBytes(p);
+        const std::string e = openError(p, db::ErrorKind::TooNew);
+        QVERIFY2(e.find("schema version 7") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("newer K528 Studio") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == bytes);
+    }
+
+    // The schema itself refuses values outside their definitions, for people
+    // who edit the file with other tools.
+    void schemaGuardsValues() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        Raw raw(p);
+        raw.exec("PRAGMA foreign_keys = ON");
+        QCOMPARE(raw.exec("UPDATE c_values SET value = 40000 WHERE number = 22"),
+                 std::string("C-parameter value outside the range of its definition"));
+        QVERIFY(raw.exec("INSERT INTO c_values (machine_id, number, value) VALUES (1, 153, 0)") !=
+                "");
+        QVERIFY(raw.exec("INSERT INTO r_values (machine_id, number, value) VALUES (1, 240, 5)")
+                    .find("CHECK") != std::string::npos);
+        QVERIFY(raw.exec("INSERT INTO plc_messages (machine_id, grp, number, text) VALUES "
+                         "(1, 'S', 17, 'x')")
+                    .find("CHECK") != std::string::npos);
+        QVERIFY(raw.exec("INSERT INTO messages (machine_id, number, text) VALUES (99, 1, 'x')")
+                    .find("FOREIGN KEY") != std::string::npos);
+        QCOMPARE(raw.integer("SELECT value FROM c_values WHERE number = 22 AND machine_id = "
+                             "(SELECT id FROM machines WHERE name = 'grinder-205')"),
+                 2000LL);
+    }
+
+    // Definitions edited outside are restored from the catalog on open.
+    void definitionsFollowTheCatalog() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        {
+            Raw raw(p);
+            QVERIFY(raw.exec("UPDATE c_definitions SET name = 'XXX' WHERE number = 22;"
+                             "UPDATE meta SET value = 'old' WHERE key = 'catalog_sha256'")
+                        .empty());
+        }
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QVERIFY(d.openReport().definitionsUpdated);
+            QCOMPARE(d.audit(1).front().action, std::string("definitions"));
+        }
+        Raw raw(p);
+        QCOMPARE(raw.text("SELECT name FROM c_definitions WHERE number = 22"),
+                 std::string("УСКОРЕНИЕ 1"));
+    }
+
+    // A program text altered outside K528 Studio no longer matches its
+    // SHA-256: loading says so instead of running it.
+    void alteredProgramIsDetected() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        {
+            Raw raw(p);
+            QVERIFY(raw.exec("UPDATE program_revisions SET text = replace(text, 'X=R220', "
+                             "'X=R221') WHERE number = 11")
+                        .empty());
+        }
+        db::Database d = db::Database::open(p, testOptions());
+        try {
+            d.loadMachine("grinder-205");
+            QFAIL("an altered program was loaded");
+        } catch (const db::Error& e) {
+            QCOMPARE(e.kind(), db::ErrorKind::Corrupt);
+            QVERIFY2(std::string(e.what()).find("program L11") != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find("SHA-256") != std::string::npos, e.what());
+        }
+        QVERIFY(d.loadMachine("training-lathe") == profile::builtin("training-lathe"));
+    }
+
+    void timestampsAreUtc() {
+        QCOMPARE(db::formatTimestamp(0), std::string("1970-01-01T00:00:00Z"));
+        QCOMPARE(db::formatTimestamp(1715934600), std::string("2024-05-17T08:30:00Z"));
+        QCOMPARE(db::formatTimestamp(951782400), std::string("2000-02-29T00:00:00Z"));
+        QCOMPARE(db::formatTimestamp(4102444799), std::string("2099-12-31T23:59:59Z"));
+        QCOMPARE(db::formatTimestamp(-1), std::string("1969-12-31T23:59:59Z"));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestSchema)
+#include "test_schema.moc"
