@@ -38,6 +38,24 @@ std::span<const Command> commands() {
         {"db", "db init|machines|show|set|export|import|diff|calc|audit [--db PATH] ...",
          "The database of machines: constants, R-parameters, programs, messages, history.",
          kDbDetails, runDb},
+        {"run",
+         "run [--json] [--profile NAME|PATH] [--program N] [--param N=V]... [--r N=V]... [--no-home]\n"
+         "           [--override PCT] [--max-seconds S] [--m0-wait S] [--number N] [--lang ru|en] FILE",
+         "Run a program on the simulated machine, headless, and report the end state.",
+         "Options:\n"
+         "  --json               print the end state as JSON (cli.md)\n"
+         "  --profile NAME|PATH  machine profile: grinder-205, training-lathe (default) or a file\n"
+         "  --program N          program of the file to start (default: the first)\n"
+         "  --param N=V          machine constant C<N> for this run (repeatable)\n"
+         "  --r N=V              preset R<N> before the start (repeatable)\n"
+         "  --no-home            skip the reference-point cycles (a program then needs АВТ.БЕЗ ПБТ)\n"
+         "  --override PCT       feed override: 0 1 2 5 10 20 35 50 75 90 100 (default 100)\n"
+         "  --max-seconds S      simulated-time limit of the program (default 3600): status timeout\n"
+         "  --m0-wait S          seconds an operator waits at M00 before «Пуск» (default 0)\n"
+         "  --number N           number of the program of a file without %L header (default 1)\n"
+         "  --lang ru|en         language of the plain output and diagnostics (default ru)\n"
+         "Exit codes: 0 completed; 1 errors in the file, an alarm or a timeout; 2 usage or I/O error.\n",
+         runRun},
     };
     return table;
 }

@@ -34,5 +34,6 @@ bool parseProgramNumber(const std::optional<std::string>& value, int& number);
 
 int runCheck(std::span<const std::string> args);
 int runFormat(std::span<const std::string> args);
+int runRun(std::span<const std::string> args); // cmd_run.cpp
 
 } // namespace k528::cli

@@ -57,7 +57,9 @@ void Mechanics::tick(double dt) {
         else
             motorSpeed_ -= motorSpeed_ > 0 ? accelLimit : -accelLimit;
     }
-    if (jammed_)
+    // Flush speeds far below one encoder count per hour: the lag would
+    // otherwise decay into subnormal numbers, which are very slow to compute.
+    if (jammed_ || std::fabs(motorSpeed_) < 1e-12)
         motorSpeed_ = 0;
     const double before = motorMm_;
     motorMm_ += motorSpeed_ * dt;
@@ -71,8 +73,10 @@ void Mechanics::tick(double dt) {
 }
 
 void Mechanics::updateEncoder(double previousMotorMm) {
-    const double perCount = s_.mmPerCount();
     markCrossed_ = false;
+    if (previousMotorMm == motorMm_ && countFresh_)
+        return; // the motor stood still: same count, no mark
+    const double perCount = s_.mmPerCount();
     // Zero marks at motor positions phase + k·lead.
     const double lead = s_.screwLeadMm;
     const double k0 = std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
@@ -83,7 +87,8 @@ void Mechanics::updateEncoder(double previousMotorMm) {
         markCount_ = s_.encoderWiredInverted ? -c : c;
         markCrossed_ = true;
     }
-    if (encoderFrozen_ || channel1Broken_ || channel2Broken_)
+    countFresh_ = !(encoderFrozen_ || channel1Broken_ || channel2Broken_);
+    if (!countFresh_)
         return; // the counter no longer follows the motor
     std::int64_t c = static_cast<std::int64_t>(std::floor(motorMm_ / perCount));
     count_ = s_.encoderWiredInverted ? -c : c;

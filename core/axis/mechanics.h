@@ -77,6 +77,7 @@ private:
     bool encoderFrozen_ = false;
     bool jammed_ = false;
     double alpha_ = 0, alphaDt_ = -1; // lag factor cached per tick length
+    bool countFresh_ = false;         // count_ matches motorMm_ (skip the work while it stands)
 };
 
 } // namespace k528::axis

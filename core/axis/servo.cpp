@@ -255,7 +255,9 @@ void Servo::tick(const ServoInputs& in, double dt) {
     const double e = traj_.position() - actual_;
     const double dac = v * static_cast<double>(k_.ks) * (3.0 / 128.0) +
                        e * static_cast<double>(k_.ke) / 256.0 + static_cast<double>(k_.driftCompDac);
-    dacRaw_ = static_cast<int>(std::lround(std::clamp(dac, -1e9, 1e9)));
+    // Round half away from zero, inline (std::lround is a library call, once a tick per axis).
+    const double dacClamped = std::clamp(dac, -1e9, 1e9);
+    dacRaw_ = static_cast<int>(dacClamped < 0 ? dacClamped - 0.5 : dacClamped + 0.5);
     const int clamped = static_cast<int>(std::clamp<std::int64_t>(dacRaw_, -k_.dacMax, k_.dacMax));
     dacOut_ = k_.dacInvert ? -clamped : clamped;
     if (k_.dacLimit > 0 && std::abs(dacRaw_) > k_.dacLimit)

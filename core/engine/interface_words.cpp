@@ -10,15 +10,7 @@ bool InterfaceWords::holds(int a) {
            (a >= 2000 && a <= 2008);
 }
 
-int InterfaceWords::slot(int a) {
-    if (a >= 1000 && a <= 1013)
-        return a - 1000;
-    if (a >= 1300 && a <= 1307)
-        return 14 + (a - 1300);
-    if (a >= 1900 && a <= 1907)
-        return 22 + (a - 1900);
-    if (a >= 2000 && a <= 2008)
-        return 30 + (a - 2000);
+void InterfaceWords::notHeld(int a) {
     throw std::out_of_range("no interface word Z" + std::to_string(a));
 }
 

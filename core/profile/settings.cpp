@@ -226,6 +226,17 @@ constexpr SimulationKey kKeys[] = {
     {"z.drive_time_constant_ms", T::Double, 0, 1000, "", "ms", "As x.drive_time_constant_ms, for Z.", "axis"},
     {"handwheel1.lines", T::Int, 1, 10000, "100", "pulses/rev", "Pulses per revolution of handwheel 1.", "machine"},
     {"handwheel2.lines", T::Int, 1, 10000, "100", "pulses/rev", "Pulses per revolution of handwheel 2.", "machine"},
+    {"m_code_lead_ms", T::Int, 0, 1000, "20", "ms", "M hand-over: time from the code on Z2001.0-6 to the strobe Z2001.7 (GOST 26642 T2).", "engine"},
+    {"plc.m_ack_delay_ms", T::Int, 0, 60000, "40", "ms", "Ideal PLC: time from the M strobe to its acknowledgement Z1000.11 (GOST T3).", "engine (ideal machine)"},
+    {"plc.pulse_ms", T::Int, 1, 1000, "20", "ms", "Ideal PLC: length of the Start, Stop, Reset, acknowledgement and cycle pulses.", "engine (ideal machine)"},
+    {"x.start_mm", T::Double, -100000, 100000, "", "mm", "Ideal machine: X at power-on, machine coordinates as displayed (default: 20 mm of slide before the deceleration cam, inside the soft limits).", "engine (ideal machine)"},
+    {"x.decel_cam_mm", T::Double, 0.1, 1000, "", "mm", "Ideal machine: length of the deceleration cam, mm of slide (default: 3/4 of S конечника БТ, 3 mm when it is 0).", "engine (ideal machine)"},
+    {"x.limit_minus_mm", T::Double, -100000, 100000, "", "mm", "Ideal machine: the - limit switch, machine coordinates (default: 2 mm of slide beyond -ОГРАНИЧЕН, the cam and the zero mark).", "engine (ideal machine)"},
+    {"x.limit_plus_mm", T::Double, -100000, 100000, "", "mm", "Ideal machine: the + limit switch, machine coordinates (default: 2 mm of slide beyond +ОГРАНИЧЕН, the cam and the zero mark).", "engine (ideal machine)"},
+    {"z.start_mm", T::Double, -100000, 100000, "", "mm", "As x.start_mm, for Z.", "engine (ideal machine)"},
+    {"z.decel_cam_mm", T::Double, 0.1, 1000, "", "mm", "As x.decel_cam_mm, for Z.", "engine (ideal machine)"},
+    {"z.limit_minus_mm", T::Double, -100000, 100000, "", "mm", "As x.limit_minus_mm, for Z.", "engine (ideal machine)"},
+    {"z.limit_plus_mm", T::Double, -100000, 100000, "", "mm", "As x.limit_plus_mm, for Z.", "engine (ideal machine)"},
 };
 // clang-format on
 

@@ -1,0 +1,278 @@
+// k528 run [options] FILE — runs a program on the simulated machine, headless
+// (shared/spec/cli.md; extensions in docs/engine.md).
+#include "args.h"
+#include "catalog/messages.h"
+#include "cli.h"
+#include "engine/rparams.h"
+#include "engine/run.h"
+#include "engine/self_test.h"
+#include "profile/builtin.h"
+#include "profile/validate.h"
+#include "program/validator.h"
+#include "program_cli.h"
+#include "util/json.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+
+namespace k528::cli {
+
+namespace {
+
+// "N=V" with integers; false if malformed.
+bool parseAssignment(const std::string& text, long long& n, long long& v) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos)
+        return false;
+    const auto a = parseInt(text.substr(0, eq));
+    const auto b = parseInt(text.substr(eq + 1));
+    if (!a || !b)
+        return false;
+    n = *a;
+    v = *b;
+    return true;
+}
+
+program::AxisLimits axisLimits(const profile::MachineProfile& p, catalog::Axis axis) {
+    program::AxisLimits a;
+    const units::AxisScale scale = profile::axisScale(p, axis);
+    const int decimals = scale.decimals();
+    a.present = profile::axisPresent(p, axis);
+    a.diameter = scale.diameter;
+    a.decimals = decimals;
+    a.softLimits = profile::axisValue(p, axis, 10) == 1;
+    a.minMm = program::Decimal::fromScaled(profile::axisValue(p, axis, 46), decimals);
+    a.maxMm = program::Decimal::fromScaled(profile::axisValue(p, axis, 47), decimals);
+    a.maxFeedMmPerMin =
+        program::Decimal::fromScaled(profile::axisValue(p, axis, 42) * 10, decimals);
+    return a;
+}
+
+json::Value resultJson(const engine::RunResult& r) {
+    json::Value root;
+    root.set("status", engine::runStatusName(r.status));
+    json::Array alarms;
+    for (const engine::AlarmView& a : r.alarms) {
+        json::Value j;
+        j.set("number", a.number);
+        j.set("text_ru", a.textRu);
+        j.set("program", a.program > 0 ? json::Value(a.program) : json::Value(nullptr));
+        j.set("line", a.line > 0 ? json::Value(a.line) : json::Value(nullptr));
+        alarms.push_back(std::move(j));
+    }
+    root.set("alarms", std::move(alarms));
+    root.set("time_s", r.timeS);
+    root.set("home_time_s", r.homeTimeS);
+    root.set("frames", static_cast<long long>(r.frames));
+    json::Value axes;
+    const char* names[2] = {"X", "Z"};
+    for (int i = 0; i < 2; ++i) {
+        const engine::RunAxis& a = r.axes[static_cast<std::size_t>(i)];
+        if (!a.present)
+            continue;
+        json::Value j;
+        j.set("current", units::discToMm(a.currentDisc, a.scale));
+        j.set("machine", units::discToMm(a.machineDisc, a.scale));
+        axes.set(names[i], std::move(j));
+    }
+    if (axes.isNull())
+        axes = json::Value(json::Object{});
+    root.set("axes", std::move(axes));
+    json::Value rv = json::Value(json::Object{});
+    for (int n = 0; n < 300; ++n)
+        rv.set(std::to_string(n), static_cast<long long>(r.r[static_cast<std::size_t>(n)]));
+    root.set("r", std::move(rv));
+    return root;
+}
+
+void printPlain(const engine::RunResult& r, Lang lang) {
+    std::printf("status     %s\n", std::string(engine::runStatusName(r.status)).c_str());
+    std::printf("time       %.3f s (reference-point cycles %.3f s)\n", r.timeS, r.homeTimeS);
+    std::printf("frames     %" PRId64 "\n", r.frames);
+    const char* names[2] = {"X", "Z"};
+    for (int i = 0; i < 2; ++i) {
+        const engine::RunAxis& a = r.axes[static_cast<std::size_t>(i)];
+        if (!a.present)
+            continue;
+        std::printf("%-10s current %12s   machine %12s%s\n", names[i],
+                    units::formatDisc(a.currentDisc, a.scale).c_str(),
+                    units::formatDisc(a.machineDisc, a.scale).c_str(),
+                    a.scale.diameter ? "   (diameter)" : "");
+    }
+    if (r.alarms.empty())
+        std::printf("alarms     none\n");
+    for (const engine::AlarmView& a : r.alarms) {
+        std::printf("alarm      %d.%s", a.number, (lang == Lang::Ru ? a.textRu : a.textEn).c_str());
+        if (a.program > 0)
+            std::printf("  (L%d, line %d)", a.program, a.line);
+        std::printf("\n");
+    }
+    if (r.program > 0) {
+        std::printf("stopped at L%d", r.program);
+        if (r.frameNumber > 0)
+            std::printf(" N%d", r.frameNumber);
+        if (r.line > 0)
+            std::printf(" (line %d)", r.line);
+        std::printf(", %s\n", std::string(engine::programStateName(r.state)).c_str());
+    }
+    if (r.messageNumber > 0)
+        std::printf("message    #%d %s\n", r.messageNumber, r.messageText.c_str());
+    if (!r.mFunctions.empty()) {
+        std::printf("M to PLC  ");
+        for (int m : r.mFunctions)
+            std::printf(" M%d", m);
+        std::printf("\n");
+    }
+    std::string user;
+    for (int n = 0; n < 150; ++n)
+        if (r.r[static_cast<std::size_t>(n)] != 0)
+            user +=
+                " R" + std::to_string(n) + "=" + std::to_string(r.r[static_cast<std::size_t>(n)]);
+    std::printf("R0..R149  %s\n", user.empty() ? " all 0" : user.c_str());
+}
+
+} // namespace
+
+int runRun(std::span<const std::string> argv) {
+    const Args args(argv, {"--json", "--no-home"},
+                    {"--profile", "--program", "--param", "--r", "--override", "--max-seconds",
+                     "--number", "--lang", "--m0-wait"});
+    if (!args.ok())
+        return usageError(args.error());
+    if (args.positional().size() != 1)
+        return usageError("run needs exactly one FILE");
+    Lang lang = Lang::Ru;
+    if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
+        return usageError("--lang is ru or en, not '" + *l + "'");
+    program::ParseOptions parseOptions;
+    if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
+        return ExitUsage;
+
+    profile::MachineProfile prof;
+    try {
+        prof =
+            profile::load(args.value("--profile").value_or(std::string(profile::kDefaultProfile)));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "k528: %s\n", e.what());
+        return ExitUsage;
+    }
+    for (const std::string& p : args.values("--param")) {
+        long long n = 0, v = 0;
+        if (!parseAssignment(p, n, v))
+            return usageError("--param needs N=V with whole numbers, not '" + p + "'");
+        if (n < 1 || n > 152)
+            return usageError("--param " + p + ": C-parameters are 1..152");
+        if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
+            return usageError("--param " + p + ": " + e);
+        prof.setC(static_cast<int>(n), v);
+    }
+    engine::RunOptions options;
+    for (const std::string& p : args.values("--r")) {
+        long long n = 0, v = 0;
+        if (!parseAssignment(p, n, v))
+            return usageError("--r needs N=V with whole numbers, not '" + p + "'");
+        if (n < 0 || n > 299)
+            return usageError("--r " + p + ": R-parameters are 0..299");
+        if (engine::rReadOnly(static_cast<int>(n)))
+            return usageError("--r " + p + ": R232..R262 are read only");
+        if (!engine::fitsR(v))
+            return usageError("--r " + p + ": the value is outside -2147483648..2147483647");
+        options.rPresets[static_cast<int>(n)] = v;
+    }
+    options.home = !args.has("--no-home");
+    if (const auto o = args.value("--override")) {
+        const auto pct = parseInt(*o);
+        if (!pct || units::overridePercentToCode(static_cast<int>(*pct)) < 0)
+            return usageError("--override is one of 0 1 2 5 10 20 35 50 75 90 100, not '" + *o +
+                              "'");
+        options.overridePercent = static_cast<int>(*pct);
+    }
+    if (const auto s = args.value("--max-seconds")) {
+        const auto v = parseNumber(*s);
+        if (!v || *v <= 0 || *v > 1e7)
+            return usageError("--max-seconds needs a number of seconds > 0, not '" + *s + "'");
+        options.maxSeconds = *v;
+    }
+    if (const auto s = args.value("--m0-wait")) {
+        const auto v = parseNumber(*s);
+        if (!v || *v < 0 || *v > 1e6)
+            return usageError("--m0-wait needs a number of seconds >= 0, not '" + *s + "'");
+        options.m0WaitS = *v;
+    }
+
+    // The program file: syntax first, then the rules over the machine's store.
+    const std::string path = args.positional().front();
+    std::string text;
+    if (!readProgramFile(path, text))
+        return ExitUsage;
+    const bool asJson = args.has("--json");
+    std::FILE* diagOut = asJson ? stderr : stdout;
+    program::ParseResult parsed = program::parse(text, parseOptions);
+    if (parsed.hasErrors()) {
+        printDiagnostics(diagOut, displayName(path), parsed.diagnostics, lang);
+        return ExitInputErrors;
+    }
+    if (parsed.store.empty()) {
+        std::fprintf(stderr, "k528: %s holds no program\n", displayName(path).c_str());
+        return ExitInputErrors;
+    }
+    bool intact = true;
+    program::ProgramStore merged = engine::loadStore(prof, intact);
+    std::set<int> filePrograms;
+    for (const program::Program& p : parsed.store.programs()) {
+        merged.insert(p);
+        filePrograms.insert(p.number);
+    }
+    for (const program::Message& m : parsed.store.messages.entries)
+        merged.messages.set(m.number, m.text);
+    program::ValidateOptions vo;
+    vo.nestingLimit =
+        static_cast<int>(prof.simulation.getInt("nesting_limit", program::kDefaultNestingLimit));
+    program::MachineLimits ml;
+    ml.x = axisLimits(prof, catalog::Axis::X);
+    ml.z = axisLimits(prof, catalog::Axis::Z);
+    vo.machine = ml;
+    std::vector<program::Diagnostic> diags;
+    for (program::Diagnostic& d : program::validate(merged, vo))
+        if (filePrograms.count(d.program) || (d.program == 0 && d.line > 0))
+            diags.push_back(std::move(d));
+    if (program::hasErrors(diags)) {
+        printDiagnostics(diagOut, displayName(path), diags, lang);
+        return ExitInputErrors;
+    }
+    if (!asJson && !diags.empty())
+        printDiagnostics(stderr, displayName(path), diags, lang);
+
+    // Which program: --program N, else the first of the file.
+    int number = 0;
+    if (const auto p = args.value("--program")) {
+        const auto n = parseInt(*p);
+        if (!n || *n < 1 || *n > 99)
+            return usageError("--program needs a program number 1..99, not '" + *p + "'");
+        if (!filePrograms.count(static_cast<int>(*n)))
+            return usageError("--program " + *p + ": " + displayName(path) + " has no program L" +
+                              *p);
+        number = static_cast<int>(*n);
+    } else {
+        int firstLine = 0;
+        for (const program::Program& p : parsed.store.programs())
+            if (number == 0 || p.headerLine < firstLine) {
+                number = p.number;
+                firstLine = p.headerLine;
+            }
+    }
+
+    const engine::RunResult result = engine::runProgram(prof, parsed.store, number, options);
+    if (asJson)
+        std::printf("%s\n", resultJson(result).dump().c_str());
+    else
+        printPlain(result, lang);
+    std::fflush(stdout);
+    return result.status == engine::RunStatus::Completed ? ExitOk : ExitInputErrors;
+}
+
+} // namespace k528::cli

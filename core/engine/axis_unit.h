@@ -1,0 +1,122 @@
+// One axis as the engine runs it: the servo and reference-point cycle of
+// core/axis, the axis' machine constants and scale, the signals decoded for
+// it this tick (limit switches, cam, drive ready, gauge signals), and who
+// owns its motion (a program frame, an oscillation, a jog, a handwheel, the
+// reference-point cycle).
+//
+// Positions: the servo works in internal units of the machine system;
+// `ipd` converts display discretes to internal units (2 on a radius axis, 1
+// on a diameter axis, docs/axis.md).
+#pragma once
+
+#include "axis/constants.h"
+#include "axis/homing.h"
+#include "axis/servo.h"
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace k528::engine {
+
+// Rounds half away from zero, inline (llround is a library call; this runs
+// several times a tick). Exact for |v| < 2^52.
+inline std::int64_t roundToInt(double v) {
+    return static_cast<std::int64_t>(v < 0 ? v - 0.5 : v + 0.5);
+}
+
+enum class MotionOwner : std::uint8_t {
+    None,
+    Program,        // a frame's positioning move (G00/G01, Gx36..39)
+    HandwheelFrame, // Gx10
+    Oscillation,    // Gx81
+    Jog,            // «ПЕРЕМЕЩЕНИЕ В +/-» in РУЧНОЙ
+    Handwheel,      // handwheel in РУЧНОЙ (and DRF)
+    Homing,         // reference-point cycle
+};
+
+// Motion that a program started (held by «Стоп», resumed by «Пуск»).
+constexpr bool programMotion(MotionOwner o) {
+    return o == MotionOwner::Program || o == MotionOwner::HandwheelFrame ||
+           o == MotionOwner::Oscillation;
+}
+
+struct AxisUnit {
+    AxisUnit(axis::AxisId axisId, const axis::Constants& constants)
+        : id(axisId), index(static_cast<int>(axisId)), k(constants), servo(axisId, constants) {
+        configure(constants);
+    }
+
+    // New constants: servo, scale, soft limits.
+    void configure(const axis::Constants& constants) {
+        k = constants;
+        present = k.present;
+        servo.setConstants(k);
+        ipd = k.scale.internalPerDisc();
+        softMin = static_cast<double>(k.softMinusDisc * ipd);
+        softMax = static_cast<double>(k.softPlusDisc * ipd);
+    }
+
+    // Soft limits act once the axis is referenced (C10/C62 ВКЛ.ПРГ.КОН).
+    bool softLimitsActive() const { return k.softLimitsOn && referenced; }
+    // «Базовая точка достигнута»: referenced, or homing blocked by АВТ.БЕЗ ПБТ.
+    bool referenceOk() const { return referenced || k.autoWithoutHoming; }
+
+    // Display discretes <-> internal units (machine system).
+    std::int64_t toDisc(double internal) const {
+        return roundToInt(internal / static_cast<double>(ipd));
+    }
+    double toInternal(std::int64_t disc) const { return static_cast<double>(disc * ipd); }
+    std::int64_t machineDisc() const { return toDisc(servo.actual()); }
+    // Display discretes per minute -> internal units per ms.
+    double speedFromDiscPerMin(double discPerMin) const {
+        return discPerMin * static_cast<double>(ipd) / 60000.0;
+    }
+    double discPerMinFromSpeed(double internalPerMs) const {
+        return internalPerMs * 60000.0 / static_cast<double>(ipd);
+    }
+
+    // Whether a motion in direction `dir` is blocked by a limit switch.
+    bool directionLocked(int dir) const {
+        return (dir > 0 && limitPlus) || (dir < 0 && limitMinus);
+    }
+
+    axis::AxisId id;
+    int index;
+    bool present = true;
+    axis::Constants k;
+    axis::Servo servo;
+    axis::HomingCycle homing;
+    std::int64_t ipd = 2;
+    double softMin = 0, softMax = 0; // internal units
+
+    bool referenced = false;
+    std::int64_t homeDistanceDisc = 0; // R246/R247
+
+    // Signals of this tick (PLC bit OR fast input).
+    bool limitPlus = false, limitMinus = false, cam = false, driveReady = true, displayMode = false;
+    std::array<bool, 4> erase{};
+
+    // Motion.
+    MotionOwner owner = MotionOwner::None;
+    double moveTarget = 0;   // program move target, internal (machine system)
+    double moveSpeed = 0;    // its speed, internal/ms
+    bool rapid = false;      // G00 or rapid jog (Z2005.5)
+    bool noOverride = false; // Gx56 in effect
+    int commandDir = 0;      // Z2005.1/.2: manual command + / -
+    int jogDir = 0;
+    bool jogRapid = false;
+    bool softLimitStop = false;              // a jog stopped at a soft limit (message 12/28 shown)
+    std::int64_t programmedDisc = 0;         // programmed position (machine system), for G91
+    int eraseSignal = 0;                     // Gx36..39 of the current frame: 1..4, 0 = none
+    bool erased = false;                     // the signal came; the rest of the path was dropped
+    // A mode change interrupted the program: the axis is free for РУЧНОЙ;
+    // «Пуск» gives it back to the frame (the move again to moveTarget, or the
+    // Gx10 frame).
+    bool resumeMove = false, resumeWheel = false;
+    double wheelMin = 0, wheelMax = 0;       // Gx10: the handwheel may move the target within these
+    std::array<std::int64_t, 2> wheelLast{}; // handwheel counters at the last tick
+    double overrideFactor = 1.0;
+};
+
+} // namespace k528::engine

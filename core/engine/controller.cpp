@@ -1,0 +1,989 @@
+#include "engine/controller.h"
+
+#include "catalog/messages.h"
+#include "engine/coordinates.h"
+#include "engine/self_test.h"
+#include "profile/validate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace k528::engine {
+
+namespace {
+
+constexpr std::int32_t clampR(std::int64_t v) {
+    return static_cast<std::int32_t>(v < kRMin ? kRMin : (v > kRMax ? kRMax : v));
+}
+constexpr bool rising(std::uint16_t now, std::uint16_t before, int bit) {
+    return ((now >> bit) & 1u) && !((before >> bit) & 1u);
+}
+constexpr bool on(std::uint16_t w, int bit) {
+    return ((w >> bit) & 1u) != 0;
+}
+
+// Message of axis a: X number for a = 0, the Z counterpart for a = 1.
+constexpr int axisMsg(int x, int z, int a) {
+    return a == 0 ? x : z;
+}
+
+// Concatenation without operator+ on temporaries (GCC 12 -Wrestrict false positives).
+template <class... T> std::string cat(const T&... parts) {
+    std::string s;
+    (s.append(parts), ...);
+    return s;
+}
+std::string num(std::int64_t v) {
+    return std::to_string(v);
+}
+
+int channelIndex(std::int64_t code) {
+    return code >= 1 && code <= 4 ? static_cast<int>(code - 1) : -1;
+}
+
+} // namespace
+
+Controller::Controller(const profile::MachineProfile& profile) : c_(profile), interp_(c_) {
+    bool intact = true;
+    c_.store = loadStore(profile, intact);
+    storeCorrupt_ = !intact;
+    for (const auto& [n, v] : profile.r)
+        if (rValid(n) && !rReadOnly(n) && fitsR(v))
+            c_.r.set(n, static_cast<std::int32_t>(v));
+}
+
+// ---------------------------------------------------------------------------
+// Power-on and the self-test
+
+void Controller::configurationCheck() {
+    configMessages_ = configurationMessages(c_.c);
+    for (int n : {13, 29, 37, 38, 39, 15})
+        c_.condition(n, configMessages_[static_cast<std::size_t>(n)]);
+}
+
+void Controller::programStoreCheck() {
+    c_.condition(31, storeCorrupt_ || !storeIntact(c_.store));
+}
+
+void Controller::powerOn() {
+    if (c_.powered)
+        return;
+    c_.powered = true;
+    c_.mode = c_.panelMode = Mode::Manual;
+    c_.state = ProgramState::Idle;
+    interp_.resetModal();
+    configurationCheck();
+    programStoreCheck();
+    c_.lastZ1000 = c_.words.word(1000);
+    c_.lastZ1001 = c_.words.word(1001);
+    for (int a = 0; a < kAxisCount; ++a) {
+        c_.lastAxisWord0[static_cast<std::size_t>(a)] =
+            c_.words.word(z::axisControlWord(axisAt(a), 0));
+        c_.lastAxisWord1[static_cast<std::size_t>(a)] =
+            c_.words.word(z::axisControlWord(axisAt(a), 1));
+        c_.lastAxisWord2[static_cast<std::size_t>(a)] =
+            c_.words.word(z::axisControlWord(axisAt(a), 2));
+    }
+    writeOutputs();
+}
+
+void Controller::advance(std::int64_t ms) {
+    const std::int64_t ticks = (ms + c_.tickMs - 1) / c_.tickMs;
+    for (std::int64_t i = 0; i < ticks; ++i)
+        tick();
+}
+
+// ---------------------------------------------------------------------------
+// One tick
+
+void Controller::tick() {
+    if (!c_.powered)
+        powerOn();
+    c_.nowMs += c_.tickMs;
+    readInputs();
+    c_.plc.update(c_.words);
+    systemChecks();
+    programControl();
+    manualFunctions();
+    for (AxisUnit& u : c_.axes)
+        if (u.present)
+            axisTick(u);
+    interp_.tick();
+    writeOutputs();
+}
+
+void Controller::readInputs() {
+    const std::uint16_t w = c_.words.word(1000);
+    // Handwheels (C105/C106 name their pulse channels).
+    for (int k = 0; k < 2; ++k) {
+        const int ch = channelIndex(c_.c[static_cast<std::size_t>(105 + k)]);
+        const std::int64_t count = ch >= 0 ? c_.io.pulse[static_cast<std::size_t>(ch)].count : 0;
+        wheelDelta_[static_cast<std::size_t>(k)] =
+            wheelInit_ ? count - wheelCount_[static_cast<std::size_t>(k)] : 0;
+        wheelCount_[static_cast<std::size_t>(k)] = count;
+    }
+    wheelInit_ = true;
+    for (AxisUnit& u : c_.axes)
+        if (u.present)
+            axisInputs(u);
+    // Emergency stop (and a lost PLC link) — message 9.
+    const bool estop = !on(w, 0);
+    if (estop && !c_.alarms.active(9)) {
+        c_.condition(9, true);
+        c_.stopAllMotion();
+    } else if (!estop) {
+        c_.condition(9, false);
+    }
+}
+
+void Controller::axisInputs(AxisUnit& u) {
+    const int a = u.index;
+    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t w1 = c_.words.word(z::axisControlWord(u.id, 1));
+    const std::uint8_t fi = c_.io.fastInputs[static_cast<std::size_t>(a)];
+    const FastInputMap& f = c_.fast;
+    u.limitPlus = on(w0, 5) || f.active(a, FastFunction::LimitPlus, fi);
+    u.limitMinus = on(w0, 6) || f.active(a, FastFunction::LimitMinus, fi);
+    u.cam = on(w0, 3) || f.active(a, FastFunction::DecelCam, fi);
+    u.driveReady =
+        !f.wired(a, FastFunction::DriveReady) || f.active(a, FastFunction::DriveReady, fi);
+    u.displayMode = f.active(a, FastFunction::DisplayMode, fi);
+    for (int n = 0; n < 4; ++n)
+        u.erase[static_cast<std::size_t>(n)] =
+            on(w1, 12 + n) ||
+            f.active(a, static_cast<FastFunction>(static_cast<int>(FastFunction::Erase1) + n), fi);
+}
+
+void Controller::systemChecks() {
+    const MachineIo& io = c_.io;
+    c_.condition(2, !io.pulseModule1Ok);
+    c_.condition(18, !io.pulseModule2Ok);
+    c_.condition(3, !io.dacModuleOk);
+    c_.condition(14, !io.commModuleOk);
+    c_.condition(19, !io.plcLinkOk);
+    c_.condition(25, !io.panelLinkOk);
+    c_.condition(30, !io.memoryOk);
+    c_.condition(55, c_.words.word(z::SystemMessagesWord) != 0);
+}
+
+// ---------------------------------------------------------------------------
+// Reset, acknowledgement, modes, program control
+
+void Controller::resetSystem() {
+    if (programActive(c_.state))
+        c_.abortProgram(ProgramState::Idle);
+    c_.state = ProgramState::Idle;
+    c_.mhs.cancel(c_.words);
+    for (std::size_t i = 0; i < c_.axes.size(); ++i) {
+        AxisUnit& u = c_.axes[i];
+        if (c_.osc[i].active())
+            c_.osc[i].abort(u.servo);
+        if (u.homing.running())
+            u.homing.cancel(u.servo);
+        if (u.owner != MotionOwner::None && u.servo.moving())
+            u.servo.stop();
+        u.owner = MotionOwner::None;
+        u.noOverride = false;
+    }
+    interp_.resetModal();
+    c_.programExclusion = 0;
+    c_.endOrReset = true;
+    c_.cycle = 0;
+    c_.alarms.acknowledge(AlarmCategory::Program);
+}
+
+void Controller::trackFault(AxisUnit& u) {
+    const std::size_t i = static_cast<std::size_t>(u.index);
+    const axis::Fault f = u.servo.fault();
+    if (f == lastFault_[i])
+        return;
+    if (lastFault_[i] != axis::Fault::None)
+        c_.alarms.clear(axis::faultMessage(lastFault_[i], u.id));
+    lastFault_[i] = f;
+    if (f != axis::Fault::None)
+        c_.raise(axis::faultMessage(f, u.id), 0, 0, true);
+}
+
+void Controller::acknowledgeFaults() {
+    for (AxisUnit& u : c_.axes) {
+        if (!u.present)
+            continue;
+        if (u.servo.fault() != axis::Fault::None)
+            u.servo.resetFault();
+        trackFault(u);
+        u.softLimitStop = false;
+    }
+    c_.alarms.acknowledge(AlarmCategory::Fault);
+    c_.plc.acknowledgeAlarms();
+}
+
+void Controller::acknowledgeSystem() {
+    c_.alarms.acknowledge(AlarmCategory::System);
+    c_.plc.acknowledgeSystem();
+}
+
+void Controller::escape() {
+    if (c_.c[123] != 0)
+        resetSystem();
+    if (c_.c[124] != 0)
+        acknowledgeFaults();
+    if (c_.c[125] != 0)
+        acknowledgeSystem();
+}
+
+void Controller::interrupt(bool dropPath) {
+    if (executing(c_.state) || c_.state == ProgramState::M0) {
+        c_.resumeState = c_.state;
+        c_.state = ProgramState::Interrupted;
+        c_.stopHold = true;
+    }
+    if (!dropPath || !programActive(c_.state))
+        return;
+    // A mode change: the motion stops and the axes are free (an operator may
+    // jog away in РУЧНОЙ); «Пуск» gives them back to the program.
+    for (std::size_t i = 0; i < c_.axes.size(); ++i) {
+        AxisUnit& u = c_.axes[i];
+        if (u.owner == MotionOwner::Program) {
+            if (u.servo.moving())
+                u.servo.stop();
+            u.resumeMove = !u.erased;
+            u.owner = MotionOwner::None;
+        } else if (u.owner == MotionOwner::HandwheelFrame) {
+            u.resumeWheel = true;
+            u.owner = MotionOwner::None;
+        } else if (u.owner == MotionOwner::Oscillation) {
+            c_.osc[i].pause(u.servo);
+            u.owner = MotionOwner::None;
+        }
+    }
+}
+
+void Controller::changeMode(Mode to) {
+    if (to == c_.mode)
+        return;
+    // «Если в предыдущем режиме выполнялось перемещение, оно прекращается.»
+    for (AxisUnit& u : c_.axes) {
+        if (!u.present)
+            continue;
+        if (u.owner == MotionOwner::Jog || u.owner == MotionOwner::Handwheel) {
+            u.servo.stop();
+            u.owner = MotionOwner::None;
+            u.jogDir = 0;
+        } else if (u.owner == MotionOwner::Homing) {
+            u.homing.cancel(u.servo);
+            u.owner = MotionOwner::None;
+        }
+    }
+    if (programActive(c_.state))
+        interrupt(true);
+    c_.mode = to;
+}
+
+void Controller::startProgram(int number, int cycle) {
+    if (c_.alarms.anyLatched())
+        return; // «Пуск» is refused while a message is shown
+    if (number < 1 || number > program::kMaxPrograms || !c_.store.contains(number)) {
+        c_.raise(45);
+        c_.state = ProgramState::Alarm;
+        return;
+    }
+    for (const AxisUnit& u : c_.axes)
+        if (u.present && !u.referenceOk()) {
+            c_.raise(42);
+            c_.state = ProgramState::Alarm;
+            return;
+        }
+    if (cycle == 0) {
+        // 43/44: the program is blocked, manual cycles are allowed.
+        const std::int32_t d = c_.r[r::WheelCurrent], dmin = c_.r[r::WheelMin],
+                           dmax = c_.r[r::WheelMax];
+        if (dmax > 0 && d > dmax) {
+            c_.raise(43);
+            c_.state = ProgramState::Alarm;
+            return;
+        }
+        if (dmin > 0 && d < dmin) {
+            c_.raise(44);
+            c_.state = ProgramState::Alarm;
+            return;
+        }
+    }
+    interp_.start(number, cycle, c_.mode);
+}
+
+void Controller::programControl() {
+    const std::uint16_t w = c_.words.word(1000), before = c_.lastZ1000;
+    const std::uint16_t w1 = c_.words.word(1001), before1 = c_.lastZ1001;
+    c_.lastZ1000 = w;
+    c_.lastZ1001 = w1;
+
+    // «Сброс»: Z1000.5 0->1 or fast input function 1 (either module).
+    bool fastReset = false;
+    for (int a = 0; a < kAxisCount; ++a)
+        fastReset = fastReset || c_.fast.active(a, FastFunction::Reset,
+                                                c_.io.fastInputs[static_cast<std::size_t>(a)]);
+    const bool resetEdge = rising(w, before, 5) || (fastReset && !c_.lastFastReset);
+    c_.lastFastReset = fastReset;
+    if (resetEdge)
+        resetSystem();
+    else if (c_.endOrReset && c_.state != ProgramState::Ended && c_.state != ProgramState::Idle)
+        c_.endOrReset = false;
+    // Acknowledgement of faults: positioner messages on the rising edge,
+    // remembered PLC alarm bits for as long as the signal is 1.
+    if (rising(w, before, 7))
+        acknowledgeFaults();
+    if (on(w, 7))
+        c_.plc.acknowledgeAlarms();
+
+    // Mode: the PLC's code, or the panel's choice.
+    const unsigned code = (w >> z::ModeCodeFirst) & 7u;
+    if (code != 0) {
+        c_.modeFromPlc = true;
+        changeMode(static_cast<Mode>(code));
+    } else {
+        if (c_.modeFromPlc)
+            c_.panelMode = c_.mode; // the PLC lets go: the mode stays
+        c_.modeFromPlc = false;
+        changeMode(c_.panelMode);
+    }
+
+    // Override: the PLC's code (Z1001.11) or the last L key.
+    const int ovCode = on(w1, 11) ? static_cast<int>((w1 >> 12) & 0xF) : c_.panelOverrideCode;
+    c_.overridePercent = units::overrideCodeToPercent(ovCode);
+
+    // «Стоп»: acts as feed hold plus data hold; «Пуск» continues.
+    if (rising(w, before, 4) && (executing(c_.state) || c_.state == ProgramState::M0))
+        interrupt(false);
+    // «Пуск» (with «Деблокировка пуска»).
+    if (rising(w, before, 3) && on(w, 2)) {
+        const bool held = c_.state == ProgramState::Interrupted || c_.state == ProgramState::M0;
+        if (c_.mode == Mode::Auto || c_.mode == Mode::Manual) {
+            if (held && c_.programMode == c_.mode)
+                interp_.resume();
+            else if (c_.mode == Mode::Auto && !programActive(c_.state))
+                startProgram(c_.r[r::SelectedProgram], 0);
+        }
+    }
+    // Manual cycles: Z1001.0..7 0->1. Cycle 1 («ВЫХОД В ИСХОДНОЕ») interrupts
+    // a running program; cycles 2..8 start in РУЧНОЙ when no program is active.
+    for (int n = 1; n <= 8; ++n) {
+        if (!rising(w1, before1, n - 1))
+            continue;
+        const int number = static_cast<int>(c_.c[static_cast<std::size_t>(142 + n)]);
+        if (number == 0)
+            continue; // «Цикл не задан»
+        if (n == 1 && (c_.mode == Mode::Auto || c_.mode == Mode::Manual)) {
+            if (programActive(c_.state))
+                c_.abortProgram(ProgramState::Idle);
+            startProgram(number, 1);
+        } else if (n > 1 && c_.mode == Mode::Manual && !programActive(c_.state)) {
+            startProgram(number, n);
+        }
+    }
+    c_.r.set(r::PlcBit, on(w1, 8) ? 1 : 0);
+}
+
+// ---------------------------------------------------------------------------
+// Manual functions: jog, handwheels, DRF, reference-point start, adjustments
+
+void Controller::jog(AxisUnit& u) {
+    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const int dir = on(w0, 7) == on(w0, 8) ? 0 : (on(w0, 7) ? 1 : -1);
+    const bool rapid = on(w0, 9);
+    if (dir != 0)
+        u.commandDir = dir;
+    if (u.owner == MotionOwner::Handwheel && dir != 0)
+        u.owner = MotionOwner::None; // the buttons have priority over the handwheel
+    if (u.owner != MotionOwner::None && u.owner != MotionOwner::Jog)
+        return;
+    if (dir == 0 || u.directionLocked(dir)) {
+        if (u.owner == MotionOwner::Jog) {
+            if (u.jogDir != 0) {
+                u.servo.jog(0, 0);
+                u.jogDir = 0;
+            }
+            if (!u.servo.moving())
+                u.owner = MotionOwner::None;
+        }
+        if (dir == 0)
+            u.softLimitStop = false;
+        return;
+    }
+    const int a = u.index;
+    if (u.owner == MotionOwner::Jog && u.jogDir == dir && u.jogRapid == rapid) {
+        // Reached the soft limit: stopped there, the message tells why.
+        if (u.softLimitsActive() && !u.servo.jogging() && !u.servo.moving() && !u.softLimitStop) {
+            u.softLimitStop = true;
+            c_.raise(axisMsg(12, 28, a));
+        }
+        return;
+    }
+    const double speed = u.k.speedParamToInternalPerMs(rapid ? u.k.feedRapid : u.k.feedNormal);
+    double limit = 0;
+    const double* lim = nullptr;
+    if (u.softLimitsActive()) {
+        limit = dir > 0 ? u.softMax : u.softMin;
+        lim = &limit;
+        const double pos = u.servo.target();
+        if ((dir > 0 && pos >= limit) || (dir < 0 && pos <= limit)) {
+            if (!u.softLimitStop) {
+                u.softLimitStop = true;
+                c_.raise(axisMsg(12, 28, a));
+            }
+            return;
+        }
+    }
+    if (u.servo.jog(dir, speed, lim)) {
+        u.owner = MotionOwner::Jog;
+        u.jogDir = dir;
+        u.jogRapid = rapid;
+        u.rapid = rapid;
+        u.softLimitStop = false;
+    }
+}
+
+void Controller::handwheels(AxisUnit& u) {
+    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    double delta = 0, drf = 0;
+    for (int k = 0; k < 2; ++k) {
+        const std::int64_t pulses = wheelDelta_[static_cast<std::size_t>(k)];
+        if (pulses == 0 || !on(w0, 10 + k))
+            continue;
+        const bool invert = k == 0 ? u.k.handwheel1Invert : u.k.handwheel2Invert;
+        const std::int64_t mult =
+            on(w0, 12 + k) ? (k == 0 ? u.k.handwheel1Mult : u.k.handwheel2Mult) : 1;
+        // Discretes of motion per pulse: 2 internal units each.
+        const double d = static_cast<double>((invert ? -pulses : pulses) * mult * 2);
+        delta += d;
+        if (on(w0, 14 + k))
+            drf += d;
+    }
+    if (delta == 0)
+        return;
+    const bool manual = c_.mode == Mode::Manual;
+    const double wheelSpeed = u.k.speedParamToInternalPerMs(u.k.feedRapid);
+    const double from = u.servo.target();
+    double to = from + delta;
+    if (u.owner == MotionOwner::HandwheelFrame) {
+        // Gx10: the handwheel drives the axis towards the programmed point, never past it.
+        to = std::clamp(to, u.wheelMin, u.wheelMax);
+        drf = 0;
+    } else if (!manual && drf == 0) {
+        return; // in АВТОМАТ only the DRF function moves an axis by handwheel
+    } else if (u.owner == MotionOwner::Program) {
+        // DRF during a program move: the target moves, the feed stays.
+        if (drf == 0)
+            return;
+        delta = drf;
+        to = from + delta;
+    } else if (u.owner != MotionOwner::None && u.owner != MotionOwner::Handwheel) {
+        return; // keys have priority over the handwheel; a cycle owns the axis
+    } else if (!manual) {
+        delta = drf;
+        to = from + delta;
+    }
+    if (u.softLimitsActive())
+        to = std::clamp(to, std::min(u.softMin, from), std::max(u.softMax, from));
+    const int dir = to > from ? 1 : (to < from ? -1 : 0);
+    if (dir == 0 || u.directionLocked(dir))
+        return;
+    const double speed = u.owner == MotionOwner::Program ? u.moveSpeed : wheelSpeed;
+    if (!u.servo.nudge(to - from, speed))
+        return;
+    u.commandDir = dir;
+    if (u.owner == MotionOwner::None)
+        u.owner = manual ? MotionOwner::Handwheel : MotionOwner::None;
+    if (u.owner == MotionOwner::Program)
+        u.moveTarget = to;
+    if (drf != 0) {
+        // DRF: the motion goes into the handwheel offset R230/R231; the
+        // current coordinate stays.
+        const std::int64_t disc = std::llround((to - from) / static_cast<double>(u.ipd));
+        if (!c_.r.add(r::DrfX + u.index, disc))
+            c_.raise(46);
+        u.programmedDisc += disc;
+    }
+}
+
+void Controller::homingStart(AxisUnit& u) {
+    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t before = c_.lastAxisWord0[static_cast<std::size_t>(u.index)];
+    const int bit = u.k.homeNegative ? 8 : 7; // «ПЕРЕМЕЩЕНИЕ В +» (or «В -» with ПБТ В "-")
+    if (!rising(w0, before, bit) || u.owner != MotionOwner::None || u.k.autoWithoutHoming)
+        return; // АВТ.БЕЗ ПБТ = 1: the reference point is blocked
+    u.referenced = false;
+    u.homeDistanceDisc = 0;
+    if (u.homing.start(u.servo, u.cam))
+        u.owner = MotionOwner::Homing;
+}
+
+void Controller::manualFunctions() {
+    for (AxisUnit& u : c_.axes) {
+        if (!u.present)
+            continue;
+        const std::size_t i = static_cast<std::size_t>(u.index);
+        const std::uint16_t w1 = c_.words.word(z::axisControlWord(u.id, 1));
+        const std::uint16_t w2 = c_.words.word(z::axisControlWord(u.id, 2));
+        u.commandDir = 0;
+        if (c_.mode == Mode::Manual)
+            jog(u);
+        else if (c_.mode == Mode::Reference)
+            homingStart(u);
+        if ((wheelDelta_[0] != 0 || wheelDelta_[1] != 0) &&
+            (c_.mode == Mode::Manual || c_.mode == Mode::Auto))
+            handwheels(u);
+        if (w1 == c_.lastAxisWord1[i] && w2 == c_.lastAxisWord2[i])
+            continue;
+        // Подналадка (C13 ВКЛ.ПОДНАЛ.): ±R218/R219 into the correction.
+        if (u.k.adjustEnabled) {
+            const int sign = rising(w1, c_.lastAxisWord1[i], 1)
+                                 ? 1
+                                 : (rising(w1, c_.lastAxisWord1[i], 2) ? -1 : 0);
+            if (sign != 0 &&
+                !c_.r.add(r::CorrectionX + u.index,
+                          sign * static_cast<std::int64_t>(c_.r[r::AdjustX + u.index])))
+                c_.raise(46);
+        }
+        // Компенсация правки: the dressing amount into the dressing sum.
+        for (int k = 0; k < 2; ++k) {
+            if (!rising(w2, c_.lastAxisWord2[i], k))
+                continue;
+            const int amount = u.index == 0 ? (k == 0 ? r::DressRoughX : r::DressFinishX)
+                                            : (k == 0 ? r::DressRoughZ : r::DressFinishZ);
+            if (!c_.r.add(r::DressingSumX + u.index, c_.r[amount]))
+                c_.raise(46);
+        }
+        c_.lastAxisWord1[i] = w1;
+        c_.lastAxisWord2[i] = w2;
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The axes
+
+void Controller::axisTick(AxisUnit& u) {
+    const int a = u.index;
+    const std::size_t i = static_cast<std::size_t>(a);
+    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t z1000 = c_.words.word(1000);
+    c_.lastAxisWord0[i] = w0;
+
+    // Limit switches: brake with acceleration 2, the direction locked.
+    c_.condition(axisMsg(11, 27, a), u.limitPlus);
+    c_.condition(axisMsg(10, 26, a), u.limitMinus);
+    const double v = u.servo.commandVelocity();
+    if ((u.limitPlus && v > 0) || (u.limitMinus && v < 0)) {
+        u.servo.stop(true);
+        if (c_.osc[i].active())
+            c_.osc[i].abort(u.servo);
+        if (u.homing.running())
+            u.homing.cancel(u.servo);
+    }
+
+    // Feed override; «Стоп» holds the feed of program motion.
+    const bool hold = c_.stopHold && programMotion(u.owner);
+    u.overrideFactor = programMotion(u.owner) && u.noOverride ? 1.0 : c_.overridePercent / 100.0;
+    u.servo.setOverride(u.overrideFactor);
+
+    axis::ServoInputs in;
+    const int ch = channelIndex(u.k.encoderChannel);
+    if (ch >= 0) {
+        const PulseChannel& p = c_.io.pulse[static_cast<std::size_t>(ch)];
+        in.encoderCount = p.count;
+        in.channel1Ok = p.line1Ok;
+        in.channel2Ok = p.line2Ok;
+        in.zeroMark = p.zeroMark;
+        in.zeroMarkCount = p.zeroMarkCount;
+    }
+    in.emergencyStop = !on(z1000, 0) || !c_.io.plcLinkOk;
+    in.loopOff = on(w0, 0) || u.displayMode;
+    in.regulatorEnable = on(w0, 1);
+    in.feedEnable = on(z1000, 1) && on(w0, 2) && !hold;
+    in.accel2 = on(w0, 4);
+    in.driveReady = u.driveReady;
+    u.servo.tick(in, c_.dtMs);
+    if (u.servo.fault() != lastFault_[i])
+        trackFault(u);
+
+    // Reference-point cycle.
+    if (u.homing.running() || u.owner == MotionOwner::Homing) {
+        u.homing.tick(u.servo, u.cam);
+        u.homeDistanceDisc = u.homing.distanceDisc();
+        if (!u.homing.running() && u.owner == MotionOwner::Homing) {
+            u.owner = MotionOwner::None;
+            if (u.homing.done())
+                u.referenced = true;
+            else if (u.homing.alarm() != 0)
+                c_.raise(u.homing.alarm());
+        }
+    }
+
+    // Oscillation.
+    Oscillation& osc = c_.osc[i];
+    if (osc.active()) {
+        osc.tick(u.servo, c_.dtMs);
+        if (!osc.active() && u.owner == MotionOwner::Oscillation)
+            u.owner = MotionOwner::None;
+    } else if (u.owner == MotionOwner::Oscillation) {
+        u.owner = MotionOwner::None;
+    }
+    if ((u.owner == MotionOwner::Jog || u.owner == MotionOwner::Handwheel) && !u.servo.moving() &&
+        u.jogDir == 0)
+        u.owner = MotionOwner::None;
+}
+
+// ---------------------------------------------------------------------------
+// Outputs
+
+void Controller::writeOutputs() {
+    InterfaceWords& w = c_.words;
+    // Machine side.
+    c_.io.dac.fill(0);
+    for (const AxisUnit& u : c_.axes) {
+        c_.io.regulatorEnable[static_cast<std::size_t>(u.index)] =
+            u.present && u.servo.regulatorOn();
+        const int ch = channelIndex(u.k.dacChannel);
+        if (u.present && ch >= 0)
+            c_.io.dac[static_cast<std::size_t>(ch)] = u.servo.dac();
+    }
+
+    // Z2000.
+    std::uint16_t s = 0;
+    const auto set = [&](int bit, bool v) {
+        if (v)
+            s = static_cast<std::uint16_t>(s | (1u << bit));
+    };
+    set(0, c_.powered && !c_.alarms.anyActive(AlarmCategory::System));
+    set(modeKey(c_.mode), c_.powered);
+    set(8, executing(c_.state));
+    set(9, c_.state == ProgramState::Interrupted);
+    set(10, c_.endOrReset);
+    set(11, c_.state == ProgramState::Dwell);
+    set(12, c_.state == ProgramState::M0);
+    set(14, c_.overridePercent == 0);
+    const std::int32_t wheel = c_.r[r::WheelCurrent], wmin = c_.r[r::WheelMin],
+                       wmax = c_.r[r::WheelMax];
+    set(15, wmin > 0 && wheel < wmin);
+    w.setWord(2000, s);
+    // Z2001.8..15: manual cycle n runs.
+    std::uint16_t w2001 = static_cast<std::uint16_t>(w.word(2001) & 0x00FF);
+    if (c_.cycle >= 1 && c_.cycle <= 8 && programActive(c_.state))
+        w2001 = static_cast<std::uint16_t>(w2001 | (1u << (7 + c_.cycle)));
+    w.setWord(2001, w2001);
+
+    // Z2005..Z2008 and R232..R262.
+    for (const AxisUnit& u : c_.axes) {
+        const std::int64_t machine = u.present ? u.machineDisc() : 0;
+        axisR(u, machine);
+        std::uint16_t st = 0;
+        const auto sb = [&](int bit, bool v) {
+            if (v)
+                st = static_cast<std::uint16_t>(st | (1u << bit));
+        };
+        if (u.present) {
+            const axis::Servo& sv = u.servo;
+            sb(0, sv.fault() != axis::Fault::None);
+            sb(1, u.commandDir > 0);
+            sb(2, u.commandDir < 0);
+            sb(3, sv.moving() || !sv.inPosition());
+            sb(4, u.referenceOk());
+            sb(5, u.rapid && sv.moving() &&
+                      (u.owner == MotionOwner::Program || u.owner == MotionOwner::Jog));
+            sb(6, sv.loopClosed());
+            sb(7, sv.regulatorOn());
+            sb(8, u.referenced && !sv.moving() &&
+                      std::llabs(u.toInternal(c_.r[r::InitialX + u.index]) - sv.actual()) <=
+                          static_cast<double>(u.k.posToleranceInternal));
+            sb(9, u.owner == MotionOwner::HandwheelFrame);
+            const std::int32_t zlo = c_.r[r::SafetyZoneXMinus + 2 * u.index];
+            const std::int32_t zhi = c_.r[r::SafetyZoneXMinus + 2 * u.index + 1];
+            sb(10, zlo < zhi && machine >= zlo && machine <= zhi);
+            if (u.index == 0) {
+                sb(11, wmin > 0 && wheel < wmin);
+                sb(12, wmax > 0 && wheel > wmax);
+            }
+        }
+        w.setWord(z::axisStateWord(u.id, 0), st);
+        w.setWord(z::axisStateWord(u.id, 1), c_.io.fastInputs[static_cast<std::size_t>(u.index)]);
+    }
+    c_.r.set(r::Override, c_.overridePercent);
+    c_.r.set(r::NestingLevel, interp_.level());
+}
+
+void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
+    RStore& r = c_.r;
+    const int a = u.index;
+    if (!u.present) {
+        for (int n : {r::MachineX, r::CurrentX, r::SpeedX, r::ErrorX, r::DacX, r::RemainingX, r::HomeDistanceX,
+                      r::PulsesX})
+            r.set(n + a, 0);
+        return;
+    }
+    const axis::Servo& sv = u.servo;
+    const double perDisc = u.ipd == 1 ? 1.0 : 0.5; // 1 / internal units per discrete
+    const std::uint8_t ex = c_.exclusion(a);
+    std::int64_t off = 0;
+    if (!(ex & ExcludeZeroOffset))
+        off += r[r::ZeroOffsetX + a];
+    if (!(ex & ExcludeDressing))
+        off += r[r::DressingSumX + a];
+    if (!(ex & ExcludeCorrection))
+        off += r[r::CorrectionX + a];
+    if (!(ex & ExcludeDrf))
+        off += r[r::DrfX + a];
+    r.set(r::MachineX + a, clampR(machine));
+    r.set(r::CurrentX + a, clampR(machine - off));
+    r.set(r::SpeedX + a, clampR(roundToInt(std::fabs(sv.commandVelocity()) * 60000.0 * perDisc)));
+    r.set(r::ErrorX + a, clampR(roundToInt(sv.followingError() * perDisc)));
+    r.set(r::DacX + a, sv.dac());
+    r.set(r::RemainingX + a, clampR(roundToInt((sv.target() - sv.setpoint()) * perDisc)));
+    r.set(r::HomeDistanceX + a, clampR(u.homeDistanceDisc));
+    r.set(r::PulsesX + a, clampR(sv.pulsesLastTick()));
+}
+
+void Controller::refreshR() {
+    for (const AxisUnit& u : c_.axes)
+        axisR(u, u.present ? u.machineDisc() : 0);
+    c_.r.set(r::Override, c_.overridePercent);
+    c_.r.set(r::NestingLevel, interp_.level());
+}
+
+// ---------------------------------------------------------------------------
+// Operator functions
+
+OpResult Controller::selectMode(Mode m) {
+    if (!validModeKey(modeKey(m)))
+        return OpResult::refused(Refusal::NoSuchKey, cat("F", num(modeKey(m)), " selects no mode"));
+    if (c_.modeFromPlc)
+        return OpResult::refused(Refusal::ModeFromPlc, cat("the PLC sets the mode (Z1000.8-10 = ",
+                                                           num(modeKey(c_.mode)), ")"));
+    c_.panelMode = m;
+    if (c_.powered)
+        changeMode(m);
+    return OpResult::accepted();
+}
+
+OpResult Controller::pressOverrideKey(int l) {
+    if (l < 1 || l > 4)
+        return OpResult::refused(Refusal::NoSuchKey,
+                                 cat("override keys are L1..L4, not L", num(l)));
+    const std::int64_t code = c_.c[static_cast<std::size_t>(138 + l)];
+    c_.panelOverrideCode = static_cast<int>(std::clamp<std::int64_t>(code, 0, 10));
+    if (!(c_.words.word(1001) & (1u << 11)))
+        c_.overridePercent = units::overrideCodeToPercent(c_.panelOverrideCode);
+    c_.r.set(r::Override, c_.overridePercent);
+    return OpResult::accepted();
+}
+
+OpResult Controller::selectProgram(int number) {
+    if (number < 1 || number > program::kMaxPrograms)
+        return OpResult::refused(Refusal::NoSuchProgram,
+                                 cat("program numbers are 1..99, not ", num(number)));
+    c_.r.set(r::SelectedProgram, number);
+    return OpResult::accepted();
+}
+
+OpResult Controller::setR(int number, std::int64_t value) {
+    if (!rValid(number))
+        return OpResult::refused(Refusal::NoSuchParameter,
+                                 cat("R-parameters are R0..R299, not R", num(number)));
+    if (rReadOnly(number))
+        return OpResult::refused(Refusal::ReadOnly,
+                                 cat("R", num(number), " is read only (R232..R262)"));
+    if (!fitsR(value))
+        return OpResult::refused(Refusal::ValueOutOfRange,
+                                 cat(num(value), " is outside -2147483648..2147483647"));
+    if (executing(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is executing");
+    c_.r.set(number, static_cast<std::int32_t>(value));
+    // R256/R257: the panel's write, as the K923 hands it to the positioner.
+    c_.r.set(r::PanelValue, static_cast<std::int32_t>(value));
+    c_.r.set(r::PanelAddress, static_cast<std::int32_t>((1 << 16) | number));
+    return OpResult::accepted();
+}
+
+OpResult Controller::setC(int number, std::int64_t value) {
+    if (number < 1 || number > kCCount)
+        return OpResult::refused(Refusal::NoSuchParameter,
+                                 cat("C-parameters are 1..152, not ", num(number)));
+    if (c_.mode != Mode::MachineData)
+        return OpResult::refused(Refusal::WrongMode,
+                                 "C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)");
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    if (const std::string e = profile::checkCValue(number, value); !e.empty())
+        return OpResult::refused(Refusal::ValueOutOfRange, e);
+    c_.c[static_cast<std::size_t>(number)] = value;
+    c_.profile.setC(number, value);
+    c_.applyConstants();
+    configurationCheck();
+    return OpResult::accepted();
+}
+
+OpResult Controller::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
+    AxisUnit& u = c_.axes[static_cast<std::size_t>(axisIndex(axis))];
+    if (!u.present)
+        return OpResult::refused(
+            Refusal::AxisAbsent,
+            cat("axis ", std::string(axis::axisName(axis)), " is not present"));
+    if (c_.mode != Mode::SetActual)
+        return OpResult::refused(Refusal::WrongMode,
+                                 "the current value is set in ПРЕДУСТАНОВКИ (F4)");
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    const std::int64_t zo =
+        zeroOffsetFor(u.machineDisc(), valueDisc, c_.r, u.index, c_.exclusion(u.index));
+    if (!fitsR(zo) || !fitsR(valueDisc))
+        return OpResult::refused(Refusal::ValueOutOfRange,
+                                 "the zero offset would leave the 32-bit range");
+    c_.r.set(r::ZeroOffsetX + u.index, static_cast<std::int32_t>(zo));
+    refreshR();
+    return OpResult::accepted();
+}
+
+program::ProgramStore* Controller::editablePrograms() {
+    return programActive(c_.state) ? nullptr : &c_.store;
+}
+
+OpResult Controller::programsEdited() {
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    for (program::Program& p : c_.store.programs())
+        p.reindex();
+    storeCorrupt_ = false;
+    programStoreCheck();
+    return OpResult::accepted();
+}
+
+OpResult Controller::clearCParameters() {
+    if (c_.mode != Mode::DataControl)
+        return OpResult::refused(Refusal::WrongMode,
+                                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    c_.c.fill(0);
+    c_.profile.c.fill(0);
+    c_.applyConstants();
+    configurationCheck();
+    return OpResult::accepted();
+}
+
+OpResult Controller::clearRParameters() {
+    if (c_.mode != Mode::DataControl)
+        return OpResult::refused(Refusal::WrongMode,
+                                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    c_.r.clear();
+    refreshR();
+    return OpResult::accepted();
+}
+
+OpResult Controller::clearPrograms() {
+    if (c_.mode != Mode::DataControl)
+        return OpResult::refused(Refusal::WrongMode,
+                                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    c_.store = program::ProgramStore{};
+    storeCorrupt_ = false;
+    programStoreCheck();
+    return OpResult::accepted();
+}
+
+// ---------------------------------------------------------------------------
+// Views
+
+AxisView Controller::axisView(AxisId axis) const {
+    const AxisUnit& u = c_.axes[static_cast<std::size_t>(axisIndex(axis))];
+    AxisView v;
+    v.axis = axis;
+    v.present = u.present;
+    v.scale = u.k.scale;
+    if (!u.present)
+        return v;
+    const axis::Servo& sv = u.servo;
+    const double ipd = static_cast<double>(u.ipd);
+    v.referenced = u.referenced;
+    v.referenceOk = u.referenceOk();
+    v.homing = u.homing.running();
+    v.machineDisc = u.machineDisc();
+    v.currentDisc = c_.currentDisc(u.index);
+    v.remainingDisc = std::llround((sv.target() - sv.setpoint()) / ipd);
+    v.feedDiscPerMin = std::llround(std::fabs(sv.commandVelocity()) * 60000.0 / ipd);
+    v.moving = sv.commandVelocity() != 0.0; // '*': the setpoint moves (not during a feed hold)
+    v.dac = sv.dac();
+    v.errorInternal = sv.followingError();
+    v.absInternal = sv.actual();
+    v.pulsesPerTick = sv.pulsesLastTick();
+    v.homeDistanceDisc = u.homeDistanceDisc;
+    v.limitPlus = u.limitPlus;
+    v.limitMinus = u.limitMinus;
+    v.decelCam = u.cam;
+    v.atSoftLimit = u.softLimitsActive() && (sv.actual() <= u.softMin || sv.actual() >= u.softMax);
+    v.loopClosed = sv.loopClosed();
+    v.regulatorOn = sv.regulatorOn();
+    v.inPosition = sv.inPosition();
+    v.oscillating = c_.osc[static_cast<std::size_t>(u.index)].active();
+    v.fault = axis::faultMessage(sv.fault(), u.id);
+    return v;
+}
+
+ProgramView Controller::programView() const {
+    ProgramView v;
+    v.mode = c_.mode;
+    v.modeFromPlc = c_.modeFromPlc;
+    v.state = c_.state;
+    v.selectedProgram = c_.r[r::SelectedProgram];
+    v.mainProgram = c_.r[r::CurrentProgram];
+    v.program = interp_.program();
+    v.cycle = programActive(c_.state) ? c_.cycle : 0;
+    v.frameIndex = interp_.frameIndex();
+    v.frameNumber = interp_.frameNumber();
+    v.line = interp_.line();
+    v.nesting = interp_.level();
+    v.messageNumber = c_.messageNumber;
+    if (c_.messageNumber > 0)
+        if (const std::string* t = c_.store.messages.text(c_.messageNumber))
+            v.messageText = *t;
+    v.overridePercent = c_.overridePercent;
+    v.overrideFromPlc = c_.words.bit(z::OverrideFromPlc);
+    v.endOrReset = c_.endOrReset;
+    v.mCode = c_.mhs.currentCode();
+    v.framesExecuted = c_.framesExecuted;
+    v.dataHold = c_.words.bit(z::DataHold);
+    return v;
+}
+
+std::vector<AlarmView> Controller::alarms() const {
+    std::vector<AlarmView> list;
+    for (const int n : c_.alarms.latchedList()) {
+        const AlarmEntry& e = c_.alarms.entry(n);
+        AlarmView a;
+        a.number = n;
+        a.axis = alarmAxis(n);
+        a.program = e.program;
+        a.line = e.line;
+        a.active = e.active;
+        a.latched = e.latched;
+        a.category = alarmCategory(n);
+        if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(n)) {
+            a.textRu = std::string(m->textRu);
+            a.textEn = std::string(m->textEn);
+        }
+        list.push_back(std::move(a));
+    }
+    return list;
+}
+
+PlcMessagesView Controller::plcMessages() const {
+    PlcMessagesView v;
+    v.alarms = c_.plc.alarms();
+    v.alarmsPresent = c_.plc.alarmsPresent();
+    v.work = c_.plc.work();
+    v.system = c_.plc.system();
+    v.systemPresent = c_.plc.systemPresent();
+    return v;
+}
+
+} // namespace k528::engine

@@ -1,0 +1,139 @@
+// The K528-05 positioner (БП): the public facade of core/engine.
+//
+// One Controller is built from a machine profile. Time advances only when
+// the caller ticks it (tick() = one tick of `tick_ms`, 1 ms by default); the
+// same inputs give the same outputs, bit for bit. Its doors:
+//   - the PLC interface words of appendix И (words()): the PLC side writes
+//     Z1000..Z1013, Z1300..Z1307, Z1900..Z1907 before a tick, the engine
+//     writes Z2000..Z2008 during it;
+//   - the machine-side I/O (io()): encoder and handwheel pulse channels, fast
+//     inputs, module health in; DAC codes and regulator enable out;
+//   - the operator functions of the K923 panel (selectMode, L keys, program
+//     number, R and C parameters, current value, programs, ESC);
+//   - read-only views for displays.
+// The order of one tick is fixed (docs/engine.md): inputs and edges, PLC
+// messages, system checks, emergency stop, reset and acknowledgement, mode,
+// program control, manual functions, the axes (limits, servo, reference
+// cycle, oscillation), the interpreter, outputs (Z2000..Z2008, DAC, R232..R262).
+#pragma once
+
+#include "engine/core.h"
+#include "engine/interpreter.h"
+#include "engine/views.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace k528::engine {
+
+class Controller {
+public:
+    explicit Controller(const profile::MachineProfile& profile);
+
+    // --- power and time -----------------------------------------------
+    // Power-on (2.6.1): the self-test (machine constants: 15, 13/29, 37..39;
+    // program store: 31), start in РУЧНОЙ. tick() powers on if needed.
+    void powerOn();
+    bool poweredOn() const { return c_.powered; }
+    void tick();
+    // Advances by `ms`, in whole ticks (rounded up).
+    void advance(std::int64_t ms);
+    std::int64_t timeMs() const { return c_.nowMs; }
+    std::int64_t tickMs() const { return c_.tickMs; }
+
+    // --- the doors --------------------------------------------------------
+    InterfaceWords& words() { return c_.words; }
+    const InterfaceWords& words() const { return c_.words; }
+    MachineIo& io() { return c_.io; }
+    const MachineIo& io() const { return c_.io; }
+
+    // --- operator functions (K923) ----------------------------------------
+    // F1..F7; refused while the PLC imposes a mode (Z1000.8-10 != 0).
+    OpResult selectMode(Mode m);
+    // L1..L4: the override code of C139..C142.
+    OpResult pressOverrideKey(int l);
+    // The program of АВТОМАТ (R252), 1..99 (a missing one gives 45 at «Пуск»).
+    OpResult selectProgram(int number);
+    // R-parameter from the panel: read-only ones refused; not while a program executes.
+    OpResult setR(int number, std::int64_t value);
+    // C-parameter (РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ only), checked against its
+    // definition; the servo constants follow, the cross-checks give
+    // messages 13/29, 37, 38, 39, 15.
+    OpResult setC(int number, std::int64_t value);
+    // «Установка фактического значения» (ПРЕДУСТАНОВКИ): the current
+    // coordinate of the axis becomes `valueDisc`; the zero offset (R228/R229)
+    // is recomputed.
+    OpResult setCurrentValue(AxisId axis, std::int64_t valueDisc);
+    // ESC: reset (C123), acknowledge machine faults (C124), system messages (C125).
+    void escape();
+    // Program store: editable only while no program is active (else nullptr);
+    // call programsEdited() after a change.
+    program::ProgramStore* editablePrograms();
+    const program::ProgramStore& programs() const { return c_.store; }
+    OpResult programsEdited();
+    // УПРАВЛЕНИЕ ДАННЫМИ: clear the C-parameters / R-parameters / programs.
+    OpResult clearCParameters();
+    OpResult clearRParameters();
+    OpResult clearPrograms();
+
+    // --- views ------------------------------------------------------------
+    AxisView axisView(AxisId axis) const;
+    ProgramView programView() const;
+    std::vector<AlarmView> alarms() const; // latched messages, in the order they came
+    const AlarmRegistry& alarmRegistry() const { return c_.alarms; }
+    PlcMessagesView plcMessages() const;
+    const RStore& r() const { return c_.r; }
+    std::int32_t r(int number) const { return c_.r[number]; }
+    std::span<const std::int64_t> c() const { return c_.c; }
+    const profile::MachineProfile& profile() const { return c_.profile; }
+    Mode mode() const { return c_.mode; }
+    ProgramState state() const { return c_.state; }
+    const ModalState& modal() const { return interp_.modal(); }
+    std::int64_t framesExecuted() const { return c_.framesExecuted; }
+    // Time the last program started / ended (ms), -1 if not yet.
+    std::int64_t programStartMs() const { return c_.programStartMs; }
+    std::int64_t programEndMs() const { return c_.programEndMs; }
+    // The servo of an axis (diagnostics, tests).
+    const axis::Servo& servo(AxisId a) const {
+        return c_.axes[static_cast<std::size_t>(axisIndex(a))].servo;
+    }
+    bool oscillating(AxisId a) const {
+        return c_.osc[static_cast<std::size_t>(axisIndex(a))].active();
+    }
+
+private:
+    void readInputs();
+    void systemChecks();
+    void programControl();
+    void resetSystem();
+    void acknowledgeFaults();
+    void acknowledgeSystem();
+    void changeMode(Mode to);
+    void interrupt(bool dropPath);
+    void startProgram(int number, int cycle);
+    void manualFunctions();
+    void axisInputs(AxisUnit& u);
+    void axisTick(AxisUnit& u);
+    void handwheels(AxisUnit& u);
+    void jog(AxisUnit& u);
+    void homingStart(AxisUnit& u);
+    void writeOutputs();
+    void refreshR();
+    void axisR(const AxisUnit& u, std::int64_t machineDisc);
+    void configurationCheck();
+    void programStoreCheck();
+    void trackFault(AxisUnit& u);
+
+    Core c_;
+    Interpreter interp_;
+    std::array<axis::Fault, kAxisCount> lastFault_{};
+    std::array<std::int64_t, 2> wheelDelta_{}; // handwheel pulses this tick
+    std::array<std::int64_t, 2> wheelCount_{};
+    bool wheelInit_ = false;
+    std::array<bool, 65> configMessages_{};
+    bool storeCorrupt_ = false;
+};
+
+} // namespace k528::engine

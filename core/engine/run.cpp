@@ -1,0 +1,143 @@
+#include "engine/run.h"
+
+#include "engine/controller.h"
+#include "engine/ideal_machine.h"
+
+#include <cmath>
+
+namespace k528::engine {
+
+std::string_view runStatusName(RunStatus s) {
+    switch (s) {
+    case RunStatus::Completed:
+        return "completed";
+    case RunStatus::Alarm:
+        return "alarm";
+    case RunStatus::Timeout:
+        return "timeout";
+    }
+    return "";
+}
+
+namespace {
+
+constexpr std::int64_t kHomingGuardMs = 3600 * 1000;
+
+void collect(const Controller& ctl, const IdealMachine& machine, RunResult& res) {
+    res.alarms = ctl.alarms();
+    res.frames = ctl.framesExecuted();
+    for (int i = 0; i < kAxisCount; ++i) {
+        const AxisView v = ctl.axisView(axisAt(i));
+        RunAxis& a = res.axes[static_cast<std::size_t>(i)];
+        a.present = v.present;
+        a.scale = v.scale;
+        a.currentDisc = v.currentDisc;
+        a.machineDisc = v.machineDisc;
+    }
+    const std::span<const std::int32_t> r = ctl.r().values();
+    std::copy(r.begin(), r.end(), res.r.begin());
+    const ProgramView p = ctl.programView();
+    res.state = p.state;
+    res.program = p.program;
+    res.frameNumber = p.frameNumber;
+    res.line = p.line;
+    res.messageNumber = p.messageNumber;
+    res.messageText = p.messageText;
+    res.mFunctions = machine.mLog();
+}
+
+} // namespace
+
+RunResult runProgram(const profile::MachineProfile& profile, const program::ProgramStore& programs,
+                     int number, const RunOptions& options) {
+    RunResult res;
+    Controller ctl(profile);
+    IdealMachine machine(ctl);
+    ctl.powerOn();
+    if (program::ProgramStore* store = ctl.editablePrograms()) {
+        for (const program::Program& p : programs.programs())
+            store->insert(p);
+        for (const program::Message& m : programs.messages.entries)
+            store->messages.set(m.number, m.text);
+        ctl.programsEdited();
+    }
+    for (const auto& [n, v] : options.rPresets)
+        ctl.setR(n, v);
+    const int code = units::overridePercentToCode(options.overridePercent);
+    machine.setOverrideCode(code >= 0 ? code : 10);
+    const std::int64_t limitMs =
+        static_cast<std::int64_t>(std::llround(options.maxSeconds * 1000.0));
+    machine.advance(10); // the PLC's first scans: regulators enabled, loops closed
+
+    const auto finish = [&](RunStatus s) {
+        res.status = s;
+        collect(ctl, machine, res);
+        return res;
+    };
+    if (ctl.alarmRegistry().anyLatched())
+        return finish(RunStatus::Alarm); // the power-on test found something
+
+    // Reference-point cycles, X first (as an operator retracts X before Z).
+    if (options.home) {
+        const std::int64_t t0 = ctl.timeMs();
+        ctl.selectMode(Mode::Reference);
+        for (int i = 0; i < kAxisCount; ++i) {
+            const AxisId a = axisAt(i);
+            const AxisView v = ctl.axisView(a);
+            if (!v.present || v.referenceOk)
+                continue;
+            const bool negative = ctl.c()[static_cast<std::size_t>(i == 0 ? 9 : 61)] != 0;
+            machine.setJog(a, negative ? -1 : 1);
+            machine.tick();
+            machine.setJog(a, 0);
+            // The cycle ends by itself (referenced, or 40/41 when the cam or the
+            // mark is missing, the axis stopping at a limit switch at the latest):
+            // an hour of machine time is only a guard.
+            const bool done = machine.runUntil(
+                [&] {
+                    const AxisView w = ctl.axisView(a);
+                    return w.referenced || !w.homing || ctl.alarmRegistry().anyLatched();
+                },
+                kHomingGuardMs);
+            res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
+            if (ctl.alarmRegistry().anyLatched())
+                return finish(RunStatus::Alarm);
+            if (!done || !ctl.axisView(a).referenced)
+                return finish(RunStatus::Timeout);
+        }
+        res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
+    }
+
+    ctl.selectMode(Mode::Auto);
+    ctl.selectProgram(number);
+    machine.pressStart();
+    const std::int64_t pressed = ctl.timeMs();
+    const std::int64_t m0WaitMs = static_cast<std::int64_t>(std::llround(options.m0WaitS * 1000.0));
+    std::int64_t m0Since = -1;
+    RunStatus status = RunStatus::Timeout;
+    while (ctl.timeMs() - pressed < limitMs) {
+        machine.tick();
+        const ProgramState s = ctl.state();
+        if (s == ProgramState::Ended) {
+            status = RunStatus::Completed;
+            break;
+        }
+        if (s == ProgramState::Alarm || (ctl.alarmRegistry().anyLatched() && !programActive(s))) {
+            status = RunStatus::Alarm;
+            break;
+        }
+        if (s == ProgramState::M0) {
+            if (m0Since < 0)
+                m0Since = ctl.timeMs();
+            if (ctl.timeMs() - m0Since >= m0WaitMs && !ctl.words().bit(z::Start)) {
+                machine.pressStart();
+                m0Since = -1;
+            }
+        }
+    }
+    const std::int64_t start = ctl.programStartMs() >= 0 ? ctl.programStartMs() : ctl.timeMs();
+    res.timeS = static_cast<double>(ctl.timeMs() - start) / 1000.0;
+    return finish(status);
+}
+
+} // namespace k528::engine

@@ -1,0 +1,61 @@
+#include "engine/self_test.h"
+
+#include "profile/validate.h"
+#include "program/parser.h"
+
+namespace k528::engine {
+
+std::array<bool, 65> configurationMessages(std::span<const std::int64_t> c) {
+    std::array<bool, 65> m{};
+    for (const profile::Finding& f : profile::checkCParams(c)) {
+        if (f.severity != profile::Severity::Error)
+            continue;
+        const int n = f.message.value_or(0);
+        switch (n) {
+        case 13:
+        case 29:
+        case 37:
+        case 38:
+        case 39:
+        case 15:
+            m[static_cast<std::size_t>(n)] = true;
+            break;
+        case 6:
+        case 22:
+            // ПРЕДЕЛ ЦАП below МАКС.ЦАП: a prediction, the servo raises 6/22
+            // when the DAC really exceeds it.
+            break;
+        default:
+            m[15] = true;
+            break;
+        }
+    }
+    return m;
+}
+
+program::ProgramStore loadStore(const profile::MachineProfile& p, bool& intact) {
+    program::ProgramStore store;
+    intact = true;
+    for (const auto& [number, text] : p.programs) {
+        program::ParseOptions o;
+        o.programNumber = number;
+        program::ParseResult pr = program::parse(text, o);
+        if (pr.hasErrors())
+            intact = false;
+        for (program::Program& prog : pr.store.programs())
+            store.insert(std::move(prog));
+    }
+    for (const auto& [k, text] : p.messages)
+        store.messages.set(k, text);
+    return store;
+}
+
+bool storeIntact(const program::ProgramStore& store) {
+    for (const program::Program& p : store.programs())
+        for (const program::Frame& f : p.frames)
+            if (f.malformed)
+                return false;
+    return true;
+}
+
+} // namespace k528::engine

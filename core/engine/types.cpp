@@ -1,0 +1,143 @@
+#include "engine/types.h"
+
+namespace k528::engine {
+
+std::string_view modeTagRu(Mode m) {
+    switch (m) {
+    case Mode::Auto:
+        return "АВТ";
+    case Mode::Manual:
+        return "РУЧ";
+    case Mode::Reference:
+        return "ПБТ";
+    case Mode::SetActual:
+        return "УСТ";
+    case Mode::MachineData:
+        return "ПАР";
+    case Mode::ProgramEdit:
+        return "РЕД";
+    case Mode::DataControl:
+        return "УПР";
+    }
+    return "";
+}
+
+std::string_view modeNameRu(Mode m) {
+    switch (m) {
+    case Mode::Auto:
+        return "АВТОМАТ";
+    case Mode::Manual:
+        return "РУЧНОЙ";
+    case Mode::Reference:
+        return "ПРИВЯЗКА К БАЗОВОЙ ТОЧКЕ";
+    case Mode::SetActual:
+        return "ПРЕДУСТАНОВКИ";
+    case Mode::MachineData:
+        return "РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ";
+    case Mode::ProgramEdit:
+        return "РЕДАКТИРОВАНИЕ УП";
+    case Mode::DataControl:
+        return "УПРАВЛЕНИЕ ДАННЫМИ";
+    }
+    return "";
+}
+
+std::string_view modeNameEn(Mode m) {
+    switch (m) {
+    case Mode::Auto:
+        return "automatic";
+    case Mode::Manual:
+        return "manual";
+    case Mode::Reference:
+        return "reference point";
+    case Mode::SetActual:
+        return "presets";
+    case Mode::MachineData:
+        return "machine constants";
+    case Mode::ProgramEdit:
+        return "program editing";
+    case Mode::DataControl:
+        return "data control";
+    }
+    return "";
+}
+
+std::string_view programStateName(ProgramState s) {
+    switch (s) {
+    case ProgramState::Idle:
+        return "idle";
+    case ProgramState::Running:
+        return "running";
+    case ProgramState::Dwell:
+        return "dwell";
+    case ProgramState::WaitingM:
+        return "waiting_m";
+    case ProgramState::M0:
+        return "m0";
+    case ProgramState::Interrupted:
+        return "interrupted";
+    case ProgramState::Ended:
+        return "ended";
+    case ProgramState::Alarm:
+        return "alarm";
+    }
+    return "";
+}
+
+std::string_view refusalTextEn(Refusal r) {
+    switch (r) {
+    case Refusal::None:
+        return "";
+    case Refusal::ModeFromPlc:
+        return "the PLC sets the mode";
+    case Refusal::WrongMode:
+        return "not in this mode";
+    case Refusal::ProgramActive:
+        return "a program is active";
+    case Refusal::ReadOnly:
+        return "read-only parameter";
+    case Refusal::NoSuchParameter:
+        return "no such parameter";
+    case Refusal::ValueOutOfRange:
+        return "value out of range";
+    case Refusal::NoSuchProgram:
+        return "no such program";
+    case Refusal::AxisAbsent:
+        return "the axis is not present";
+    case Refusal::NoSuchKey:
+        return "no such key";
+    case Refusal::NotPowered:
+        return "the controller is off";
+    }
+    return "";
+}
+
+std::string_view refusalTextRu(Refusal r) {
+    switch (r) {
+    case Refusal::None:
+        return "";
+    case Refusal::ModeFromPlc:
+        return "Режим задан из ПЛК";
+    case Refusal::WrongMode:
+        return "Не в этом режиме";
+    case Refusal::ProgramActive:
+        return "Выполняется программа";
+    case Refusal::ReadOnly:
+        return "Параметр только для чтения";
+    case Refusal::NoSuchParameter:
+        return "Нет такого параметра";
+    case Refusal::ValueOutOfRange:
+        return "Значение вне диапазона";
+    case Refusal::NoSuchProgram:
+        return "L отсутствует";
+    case Refusal::AxisAbsent:
+        return "Ось отсутствует";
+    case Refusal::NoSuchKey:
+        return "Нет такой клавиши";
+    case Refusal::NotPowered:
+        return "Устройство выключено";
+    }
+    return "";
+}
+
+} // namespace k528::engine

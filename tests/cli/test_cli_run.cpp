@@ -1,0 +1,175 @@
+// `k528 run` (shared/spec/cli.md): the JSON end state, options, exit codes,
+// determinism.
+#include "cli_runner.h"
+#include "util/json.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace k528;
+
+namespace {
+
+QString samples() {
+    return QStringLiteral(K528_SOURCE_DIR "/resources/samples/");
+}
+
+struct Files {
+    QTemporaryDir dir;
+    QString write(const QString& name, const QByteArray& text) {
+        const QString path = dir.filePath(name);
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        return path;
+    }
+};
+
+json::Value parseJson(const CliResult& r) {
+    return json::parse(r.out.toStdString());
+}
+
+} // namespace
+
+class TestCliRun : public QObject {
+    Q_OBJECT
+private slots:
+    void jsonShape() {
+        const auto r = runK528({"run", "--json", samples() + "lathe-shaft.k528"});
+        QCOMPARE(r.exitCode, 0);
+        const json::Value v = parseJson(r);
+        QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("completed"));
+        QVERIFY(v.find("alarms")->isArray());
+        QCOMPARE(v.find("alarms")->asArray().size(), std::size_t(0));
+        QVERIFY(v.find("time_s")->asDouble() > 100);
+        QVERIFY(v.find("home_time_s")->asDouble() > 1);
+        QVERIFY(v.find("frames")->asInt() > 20);
+        const json::Value* axes = v.find("axes");
+        QVERIFY(axes && axes->isObject());
+        // The shaft program ends with G0 X100 Z50 (X on the diameter).
+        QVERIFY(std::fabs(axes->find("X")->find("current")->asDouble() - 100.0) <= 0.01);
+        QVERIFY(std::fabs(axes->find("X")->find("machine")->asDouble() - 100.0) <= 0.01);
+        QVERIFY(std::fabs(axes->find("Z")->find("current")->asDouble() - 50.0) <= 0.01);
+        const json::Value* rv = v.find("r");
+        QCOMPARE(rv->asObject().size(), std::size_t(300));
+        QCOMPARE(rv->asObject().front().first, std::string("0"));
+        QCOMPARE(rv->asObject().back().first, std::string("299"));
+        QCOMPARE(rv->find("11")->asInt(), 2000); // R11 of the program
+        // The key order of cli.md.
+        std::vector<std::string> keys;
+        for (const auto& [k, val] : v.asObject())
+            keys.push_back(k);
+        QCOMPARE(keys, (std::vector<std::string>{"status", "alarms", "time_s", "home_time_s",
+                                                 "frames", "axes", "r"}));
+    }
+    void deterministic() {
+        const QStringList args{"run", "--json", "--profile", "grinder-205",
+                               samples() + "grinder-bore-205.k528"};
+        const auto a = runK528(args);
+        const auto b = runK528(args);
+        QCOMPARE(a.exitCode, 0);
+        QCOMPARE(a.out, b.out);
+        QVERIFY(!a.out.isEmpty());
+    }
+    // An alarm: status "alarm", exit 1, the message with program and line.
+    void alarmExit() {
+        Files f;
+        const QString p = f.write("ovf.k528", "%L3\nN1 R1=2147483647\nN2 R1=R1+1\n");
+        const auto r = runK528({"run", "--json", p});
+        QCOMPARE(r.exitCode, 1);
+        const json::Value v = parseJson(r);
+        QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("alarm"));
+        const json::Value& a = v.find("alarms")->asArray().at(0);
+        QCOMPARE(a.find("number")->asInt(), 46);
+        QCOMPARE(QString::fromStdString(a.find("text_ru")->asString()), QString("Переполнение"));
+        QCOMPARE(a.find("program")->asInt(), 3);
+        QCOMPARE(a.find("line")->asInt(), 3);
+        // --no-home on a machine that needs it: 42.
+        const auto n = runK528({"run", "--json", "--no-home", samples() + "lathe-grooves.k528"});
+        QCOMPARE(n.exitCode, 1);
+        const json::Value w = parseJson(n);
+        QCOMPARE(w.find("alarms")->asArray().at(0).find("number")->asInt(), 42);
+        QVERIFY(w.find("alarms")->asArray().at(0).find("line")->isNull());
+        QCOMPARE(w.find("home_time_s")->asDouble(), 0.0);
+    }
+    void timeout() {
+        Files f;
+        const QString p = f.write("loop.k528", "%L1\nN1 G1 Z-1 FZ600\nN2 G1 Z0\nN3 GOTO 1\n");
+        const auto r = runK528({"run", "--json", "--max-seconds", "5", p});
+        QCOMPARE(r.exitCode, 1);
+        const json::Value v = parseJson(r);
+        QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("timeout"));
+        QVERIFY(std::fabs(v.find("time_s")->asDouble() - 5.0) < 0.01);
+    }
+    void presetsAndOverrides() {
+        Files f;
+        const QString p = f.write("r.k528", "%L1\nN1 R11=R10+1\nN2 G0 Z-60\n");
+        const auto a = runK528({"run", "--json", "--r", "10=123", p});
+        QCOMPARE(a.exitCode, 0);
+        const json::Value v = parseJson(a);
+        QCOMPARE(v.find("r")->find("11")->asInt(), 124);
+        // C94 (F УСК.АВТ. of Z) halved: the rapid takes longer.
+        const auto b = runK528({"run", "--json", "--param", "94=300000", p});
+        QCOMPARE(b.exitCode, 0);
+        QVERIFY(parseJson(b).find("time_s")->asDouble() > v.find("time_s")->asDouble() + 0.4);
+        // 50 % override.
+        const auto c = runK528({"run", "--json", "--override", "50", p});
+        QVERIFY(parseJson(c).find("time_s")->asDouble() > v.find("time_s")->asDouble() + 0.4);
+        // --program picks one of the file.
+        const QString two = f.write("two.k528", "%L4\nN1 R1=4\n%L2\nN1 R1=2\n");
+        QCOMPARE(parseJson(runK528({"run", "--json", two})).find("r")->find("1")->asInt(), 4);
+        QCOMPARE(parseJson(runK528({"run", "--json", "--program", "2", two}))
+                     .find("r")
+                     ->find("1")
+                     ->asInt(),
+                 2);
+    }
+    void usageErrors() {
+        const QString s = samples() + "lathe-shaft.k528";
+        const QList<QStringList> bad = {
+            {"run"},
+            {"run", "--param", "29=5000", s},
+            {"run", "--param", "200=1", s},
+            {"run", "--param", "x", s},
+            {"run", "--r", "240=1", s},
+            {"run", "--r", "5=3000000000", s},
+            {"run", "--override", "33", s},
+            {"run", "--max-seconds", "-1", s},
+            {"run", "--profile", "no-such-machine", s},
+            {"run", "--program", "7", s},
+            {"run", "--frobnicate", s},
+            {"run", "/no/such/file.k528"},
+        };
+        for (const QStringList& args : bad) {
+            const auto r = runK528(args);
+            QVERIFY2(r.exitCode == 2, qPrintable(args.join(' ')));
+            QVERIFY2(r.err.startsWith("k528: "), qPrintable(args.join(' ') + ": " + r.err));
+        }
+        QVERIFY(runK528({"run", "--param", "29=5000", s}).err.contains("29"));
+    }
+    // A file with errors is not run: diagnostics as `check` prints them, exit 1.
+    void fileErrors() {
+        Files f;
+        const QString p = f.write("bad.k528", "%L1\nN1 G1 X=\nN2 GOTO 9\n");
+        const auto r = runK528({"run", p});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.out.contains("bad.k528:2:"));
+        QVERIFY(r.out.contains("error"));
+        const QString q = f.write("jump.k528", "%L1\nN1 GOTO 9\n");
+        const auto j = runK528({"run", "--json", q});
+        QCOMPARE(j.exitCode, 1);
+        QVERIFY(j.out.isEmpty());
+        QVERIFY(j.err.contains("[M53]"));
+    }
+    void plainOutput() {
+        const auto r =
+            runK528({"run", "--profile", "grinder-205", samples() + "grinder-bore-205.k528"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.startsWith("status     completed\n"));
+        QVERIFY(r.out.contains("(diameter)"));
+        QVERIFY(r.out.contains("M to PLC"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliRun)
+#include "test_cli_run.moc"
