@@ -12,6 +12,8 @@
 
 namespace k528::cli {
 
+int runPanel(std::span<const std::string> args); // cmd_panel.cpp
+
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
         {"check", "check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...",
@@ -56,6 +58,17 @@ std::span<const Command> commands() {
          "  --lang ru|en         language of the plain output and diagnostics (default ru)\n"
          "Exit codes: 0 completed; 1 errors in the file, an alarm or a timeout; 2 usage or I/O error.\n",
          runRun},
+        {"panel", "panel [--profile NAME|PATH] [--keys \"KEY KEY ...\"] [--json]",
+         "Press keys on the K923 panel of a freshly powered-on controller and print the LCD.",
+         "Options:\n"
+         "  --profile NAME|PATH  machine profile: grinder-205, training-lathe (default) or a file\n"
+         "  --keys \"KEY ...\"     keys in order: F1..F8 K1..K12 L1..L4 UP DOWN LEFT RIGHT MODE HELP\n"
+         "                       ESC SHIFT PAR ACK INS DEL ENTER 0..9 . + - * / = % !; SHIFT+KEY;\n"
+         "                       WAIT:S lets S seconds of machine time pass\n"
+         "  --json               print {\"lines\":[4],\"leds\":{\"green\":[K],\"red\":[K],\"override\":[L],\n"
+         "                       \"shift\":bool},\"blink\":{\"row\",\"column\",\"length\"}|null}\n"
+         "Prints the 4 LCD lines, 20 characters each. Screens: docs/panel.md.\n",
+         runPanel},
     };
     return table;
 }

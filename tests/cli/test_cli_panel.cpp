@@ -1,0 +1,115 @@
+// `k528 panel` (shared/spec/cli.md): the K923 of a freshly powered-on
+// controller, keys in order, the four lines (or JSON) out.
+#include "cli_runner.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest>
+
+namespace {
+QString lines(std::initializer_list<const char*> l) {
+    QString out;
+    for (const char* s : l)
+        out += QString::fromUtf8(s).leftJustified(20) + "\n";
+    return out;
+}
+} // namespace
+
+class TestCliPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void powerOn() {
+        const auto r = runK528({"panel"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, lines({"РУЧ            100%", "", " X    0.000    0.000",
+                               " Z    0.000    0.000"}));
+        QVERIFY(r.err.isEmpty());
+    }
+
+    void keys_data() {
+        QTest::addColumn<QString>("keys");
+        QTest::addColumn<QString>("out");
+        QTest::newRow("auto 2") << "F1 MODE"
+                                << lines({"АВТ            100%", "", " X    0.000 F=  0.00",
+                                          " Z    0.000 F=  0.00"});
+        QTest::newRow("presets") << "F4 SHIFT+DOWN"
+                                 << lines({"УСТ ПРЕДУСТАНОВКИ", " 2-ИСХОДНОЕ", " 3-ПОДНАЛАДКА",
+                                           ">4-ПРАВКА"});
+        QTest::newRow("cparams") << "F5 1 1 1 1 ENTER PAR 4 0 ENTER"
+                                 << lines({"ПАРАМЕТРЫ СТАНКА", "F ОБЫЧНАЯ", "N040>X=150000",
+                                           "N092 Z=200000"});
+        QTest::newRow("editor") << "F6 1 1 1 1 ENTER UP ENTER"
+                                << lines({" N1  G90 G0  G   #1", " M3  M8  M       L",
+                                          "X42.000    F=", "Z2.000     F="});
+        QTest::newRow("help") << "help 4"
+                              << lines({"ABS_X 0.000", "ERR_X 0.000", "DAC_X 0", "PLS_X 0"});
+        QTest::newRow("wait") << "F2 WAIT:0.5 MODE"
+                              << lines({"РУЧ            100%", "", " X    0.000 F=  0.00",
+                                        " Z    0.000 F=  0.00"});
+    }
+    void keys() {
+        QFETCH(QString, keys);
+        QFETCH(QString, out);
+        const auto r = runK528({"panel", "--keys", keys});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, out);
+    }
+
+    void otherProfile() {
+        // grinder-205 (appendix Ж): C140 = 4 -> L2 is 10 %.
+        const auto r = runK528({"panel", "--profile", "grinder-205", "--keys", "F1 L2"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith("АВТ             10%"), qPrintable(r.out));
+    }
+
+    void json() {
+        const auto r = runK528({"panel", "--json", "--keys", "F4 2 1"});
+        QCOMPARE(r.exitCode, 0);
+        QJsonParseError e;
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8(), &e).object();
+        QCOMPARE(e.error, QJsonParseError::NoError);
+        const QJsonArray l = o["lines"].toArray();
+        QCOMPARE(l.size(), 4);
+        QCOMPARE(l[0].toString(), QString("УСТ2 ИСХОДНОЕ     X "));
+        QCOMPARE(l[2].toString(), QString(">R220=1             "));
+        const QJsonObject leds = o["leds"].toObject();
+        QCOMPARE(leds["green"].toArray().size(), 0);
+        QCOMPARE(leds["red"].toArray().size(), 0);
+        QCOMPARE(leds["override"].toArray(), QJsonArray({4}));
+        QCOMPARE(leds["shift"].toBool(), false);
+        const QJsonObject blink = o["blink"].toObject();
+        QCOMPARE(blink["row"].toInt(), 2);
+        QCOMPARE(blink["column"].toInt(), 7);
+        QCOMPARE(blink["length"].toInt(), 1);
+        const auto n = runK528({"panel", "--json"});
+        QVERIFY(QJsonDocument::fromJson(n.out.toUtf8()).object()["blink"].isNull());
+    }
+
+    void errors_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("unknown key")
+            << QStringList{"panel", "--keys", "F1 FOO ENTER"} << "unknown key 'FOO'";
+        QTest::newRow("F9") << QStringList{"panel", "--keys", "F9"} << "unknown key 'F9'";
+        QTest::newRow("bad shift")
+            << QStringList{"panel", "--keys", "SHIFT+X"} << "unknown key 'SHIFT+X'";
+        QTest::newRow("bad wait") << QStringList{"panel", "--keys", "WAIT:abc"} << "WAIT:abc";
+        QTest::newRow("negative wait") << QStringList{"panel", "--keys", "WAIT:-1"} << "WAIT:-1";
+        QTest::newRow("unknown profile")
+            << QStringList{"panel", "--profile", "no-such-machine"} << "no-such-machine";
+        QTest::newRow("file argument") << QStringList{"panel", "x.k528"} << "takes no file";
+        QTest::newRow("unknown option") << QStringList{"panel", "--frob"} << "--frob";
+    }
+    void errors() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const auto r = runK528(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.out.isEmpty());
+        QVERIFY2(r.err.startsWith("k528: ") && r.err.contains(message), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliPanel)
+#include "test_cli_panel.moc"

@@ -1,0 +1,142 @@
+// The K923 model over a Controller on the ideal machine (as `k528 panel`
+// builds it): a built-in profile (tweaked by the test), keys given as in
+// `--keys` ("F2 MODE 1 2 ENTER WAIT:2"), the four lines read back.
+#pragma once
+
+#include "engine/controller.h"
+#include "engine/ideal_machine.h"
+#include "panel/lcd_font.h"
+#include "panel/panel.h"
+#include "panel/screens/cparams.h"
+#include "panel/screens/password.h"
+#include "panel/screens/presets.h"
+#include "panel/screens/program_editor.h"
+#include "profile/builtin.h"
+#include "program/parser.h"
+#include "util/utf8.h"
+
+#include <QtTest>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace prig {
+
+using namespace k528;
+using engine::AxisId;
+using engine::Mode;
+using panel::Key;
+using panel::KeyPress;
+
+inline constexpr AxisId X = AxisId::X;
+inline constexpr AxisId Z = AxisId::Z;
+
+struct Rig {
+    profile::MachineProfile prof;
+    std::unique_ptr<engine::Controller> ctl;
+    std::unique_ptr<engine::IdealMachine> m;
+    std::unique_ptr<panel::Panel> p;
+
+    explicit Rig(const std::function<void(profile::MachineProfile&)>& tweak = {},
+                 std::string_view name = "training-lathe") {
+        prof = profile::builtin(name);
+        if (tweak)
+            tweak(prof);
+        ctl = std::make_unique<engine::Controller>(prof);
+        m = std::make_unique<engine::IdealMachine>(*ctl);
+        ctl->powerOn();
+        m->advance(10);
+        p = std::make_unique<panel::Panel>(*ctl);
+    }
+
+    engine::Controller& c() { return *ctl; }
+
+    // Presses the keys of a --keys string; WAIT:S lets S seconds pass.
+    void keys(std::string_view text) {
+        for (const std::string& t : panel::splitKeys(text)) {
+            if (t.rfind("WAIT:", 0) == 0) {
+                m->advance(static_cast<std::int64_t>(std::stod(t.substr(5)) * 1000.0));
+                continue;
+            }
+            const auto k = panel::parseKey(t);
+            QVERIFY2(k.has_value(), t.c_str());
+            p->press(*k);
+        }
+    }
+
+    panel::Display display() { return p->display(); }
+
+    // The four lines, trailing blanks removed (each is checked to be
+    // exactly 20 characters the LCD can show).
+    QStringList lines() {
+        const panel::Display d = p->display();
+        QStringList out;
+        for (const std::string& l : d.lcd.lines) {
+            if (utf8::length(l) != 20)
+                qWarning("line is not 20 characters: [%s]", l.c_str());
+            if (const auto bad = panel::lcdFirstUnsupported(l))
+                qWarning("the LCD cannot show U+%04X in [%s]", static_cast<unsigned>(*bad),
+                         l.c_str());
+            QString s = QString::fromStdString(l);
+            while (s.endsWith(' '))
+                s.chop(1);
+            out << s;
+        }
+        return out;
+    }
+    QString line(int row) { return lines().at(row); }
+
+    // Loads programs from text into the store.
+    void load(const std::string& text) {
+        const program::ParseResult r = program::parse(text);
+        QVERIFY(!r.hasErrors());
+        program::ProgramStore* store = ctl->editablePrograms();
+        QVERIFY(store != nullptr);
+        for (const program::Program& pr : r.store.programs())
+            store->insert(pr);
+        for (const program::Message& msg : r.store.messages.entries)
+            store->messages.set(msg.number, msg.text);
+        QVERIFY(ctl->programsEdited().ok());
+    }
+
+    // Homes the present axes with the machine's direction buttons, X first.
+    bool home() {
+        if (!ctl->selectMode(Mode::Reference).ok())
+            return false;
+        for (AxisId a : {X, Z}) {
+            if (!ctl->axisView(a).present || ctl->axisView(a).referenceOk)
+                continue;
+            const bool negative = ctl->c()[a == X ? 9u : 61u] != 0;
+            m->setJog(a, negative ? -1 : 1);
+            m->tick();
+            m->setJog(a, 0);
+            if (!m->runUntil(
+                    [&] { return ctl->axisView(a).referenced || !ctl->axisView(a).homing; },
+                    600000))
+                return false;
+        }
+        m->advance(1000);
+        return ctl->axisView(X).referenced && ctl->axisView(Z).referenced;
+    }
+};
+
+// Trailing blanks removed, as Rig::lines() gives them.
+inline QStringList expect(std::initializer_list<const char*> l) {
+    QStringList out;
+    for (const char* s : l) {
+        QString q = QString::fromUtf8(s);
+        while (q.endsWith(' '))
+            q.chop(1);
+        out << q;
+    }
+    return out;
+}
+
+// A profile whose axes run programs without homing (АВТ.БЕЗ ПБТ = 1).
+inline void noHoming(profile::MachineProfile& p) {
+    p.setC(8, 1);
+    p.setC(60, 1);
+}
+
+} // namespace prig
