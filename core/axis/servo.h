@@ -16,6 +16,7 @@
 // offers the motions (move, jog, handwheel, stop) and reports what happened.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "axis/constants.h"
@@ -100,6 +101,10 @@ public:
     double actual() const { return actual_; }           // machine system, internal units
     double setpoint() const { return traj_.position(); }
     double target() const { return traj_.target(); }
+    // The rest of the path to the target; 0 for a jog without a limit
+    // (its target is an open end, not a path).
+    double remaining() const { return jogDir_ != 0 && std::fabs(traj_.target()) >= kOpenEnd ? 0.0 : traj_.remaining(); }
+    static constexpr double kOpenEnd = 1e11;
     double followingError() const { return traj_.position() - actual_; }
     double commandVelocity() const { return traj_.velocity(); } // internal/ms
     int dac() const { return dacOut_; }                          // as sent (ЗНАК ЦАП applied)

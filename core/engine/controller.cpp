@@ -736,7 +736,7 @@ void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
     r.set(r::SpeedX + a, clampR(roundToInt(std::fabs(sv.commandVelocity()) * 60000.0 * perDisc)));
     r.set(r::ErrorX + a, clampR(roundToInt(sv.followingError() * perDisc)));
     r.set(r::DacX + a, sv.dac());
-    r.set(r::RemainingX + a, clampR(roundToInt((sv.target() - sv.setpoint()) * perDisc)));
+    r.set(r::RemainingX + a, clampR(roundToInt(sv.remaining() * perDisc)));
     r.set(r::HomeDistanceX + a, clampR(u.homeDistanceDisc));
     r.set(r::PulsesX + a, clampR(sv.pulsesLastTick()));
 }
@@ -909,7 +909,7 @@ AxisView Controller::axisView(AxisId axis) const {
     v.homing = u.homing.running();
     v.machineDisc = u.machineDisc();
     v.currentDisc = c_.currentDisc(u.index);
-    v.remainingDisc = std::llround((sv.target() - sv.setpoint()) / ipd);
+    v.remainingDisc = std::llround(sv.remaining() / ipd);
     v.feedDiscPerMin = std::llround(std::fabs(sv.commandVelocity()) * 60000.0 / ipd);
     v.moving = sv.commandVelocity() != 0.0; // '*': the setpoint moves (not during a feed hold)
     v.dac = sv.dac();

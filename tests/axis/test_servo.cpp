@@ -316,6 +316,18 @@ private slots:
         QVERIFY(!r.servo.jogging());
     }
 
+    void remainingPathOfAJog() {
+        Rig r;
+        QVERIFY(r.servo.jog(+1, r.servo.constants().mmPerMinToInternalPerMs(1000)));
+        r.run(100);
+        QCOMPARE(r.servo.remaining(), 0.0); // an open-ended jog has no rest of path
+        const double limit = Rig::mm(150);
+        QVERIFY(r.servo.jog(+1, r.servo.constants().mmPerMinToInternalPerMs(1000), &limit));
+        r.run(100);
+        QVERIFY(r.servo.remaining() > Rig::mm(40));
+        QCOMPARE(r.servo.remaining(), r.servo.target() - r.servo.setpoint());
+    }
+
     void invalidRatioIsAFault() {
         Rig r(with([](Constants& k) { k.encoderN = 0; }));
         QCOMPARE(r.servo.fault(), Fault::RatioError);

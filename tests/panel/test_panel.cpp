@@ -340,13 +340,13 @@ private slots:
         const QString cur = QString::fromStdString(
             units::formatDisc(r.c().axisView(X).currentDisc, r.c().axisView(X).scale));
         QCOMPARE(r.line(2), "*X" + cur.rightJustified(9) + " F=1500.0");
-        // Screen 1: a jog without soft limits (not homed) runs towards a far
-        // point: no remaining path is shown.
+        // Screen 1: a jog without soft limits (not homed) has no end point:
+        // the remaining path (R244) is 0.
         r.keys("MODE MODE");
         const engine::AxisView v = r.c().axisView(X);
-        QVERIFY(std::llabs(v.remainingDisc) > 9999999);
+        QCOMPARE(v.remainingDisc, std::int64_t(0));
         QCOMPARE(r.line(2), "*X" + QString::fromStdString(units::formatDisc(v.currentDisc, v.scale))
-                                       .rightJustified(9));
+                                       .rightJustified(9) + "    0.000");
         r.m->setJog(X, 0);
         r.m->advance(3000);
         QVERIFY(r.line(2).startsWith(" X"));
