@@ -2,6 +2,225 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>k528::studio::AxesView</name>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rest, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed, mm/min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Volts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (dia.)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>absent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loop closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loop open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cam</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>limit +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>limit -</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fault %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z1000 PLC→</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E-stop released</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed enable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>start enable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>data hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acknowledge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M done</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z2000 →PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end/reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dwell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M00</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>override 0%</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>change wheel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z2001</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M strobe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M code %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cycle %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jog +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>jog -</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rapid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loop error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fast inputs </source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
@@ -203,6 +422,185 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::MachinePanelWidget</name>
+    <message>
+        <source>SPINDLE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>COOLANT</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LIMIT</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HOMED</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DOOR</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CLAMPED</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LUBE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WHEEL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GAUGE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TURRET</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HYDRAUL.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MACHINE CONTROL PANEL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DRIVES ON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CYCLE START</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rapid traverse: hold with a jog button</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog X+ (hold)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog X- (hold)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog Z+ (hold)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Jog Z- (hold)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HANDWHEEL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AXIS</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>STEP</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag round or turn the mouse wheel: one detent is one step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>FEED OVERRIDE %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: the panel&apos;s L1..L4 keys set the override</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CHUCK</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NEW WHEEL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per detent: %1 / %2 / %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wheel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Work</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gauge: bore %1 / %2 mm, wheel %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> in </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> touch </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> rough </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> finish </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> size</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -257,19 +655,170 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The machine&apos;s push-buttons, handwheel, override and lamps.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Alarms and messages of the controller and the machine.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Axis positions, following error, DAC and interface signals.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine time %1:%2:%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wheel spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>work spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coolant pump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lubrication pump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hydraulic pump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Encoder %1: channel %2 broken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed drive %1 not ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit switch %1%2 hit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency stop circuit open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interference on encoder %1 (DAC limit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC I/O module failure, place %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC - positioner link lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive not ready: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motor overheat: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motor overload: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chuck loses its clamping pressure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turret jammed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process gauge fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Pause the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Faults for training</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Clear all faults</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::MessagesView</name>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (L%1, line %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC system</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC alarm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>information</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No alarms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alarms: %1. Acknowledge with RESET on the machine panel or ESC on the K923 once the cause is gone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waits for acknowledgement</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

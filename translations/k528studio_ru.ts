@@ -2,6 +2,225 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
+    <name>k528::studio::AxesView</name>
+    <message>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <source>Current, mm</source>
+        <translation>Текущая, мм</translation>
+    </message>
+    <message>
+        <source>Machine, mm</source>
+        <translation>Станка, мм</translation>
+    </message>
+    <message>
+        <source>Rest, mm</source>
+        <translation>Остаток, мм</translation>
+    </message>
+    <message>
+        <source>Feed, mm/min</source>
+        <translation>Подача, мм/мин</translation>
+    </message>
+    <message>
+        <source>Error, µm</source>
+        <translation>Ошибка, мкм</translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation>ЦАП</translation>
+    </message>
+    <message>
+        <source>Volts</source>
+        <translation>Вольт</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <source> (dia.)</source>
+        <translation> (диам.)</translation>
+    </message>
+    <message>
+        <source>absent</source>
+        <translation>нет оси</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>привязка</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>привязана</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>не привязана</translation>
+    </message>
+    <message>
+        <source>loop closed</source>
+        <translation>контур замкнут</translation>
+    </message>
+    <message>
+        <source>loop open</source>
+        <translation>контур разомкнут</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>движение</translation>
+    </message>
+    <message>
+        <source>in position</source>
+        <translation>в позиции</translation>
+    </message>
+    <message>
+        <source>cam</source>
+        <translation>конечник торможения</translation>
+    </message>
+    <message>
+        <source>limit +</source>
+        <translation>конечник +</translation>
+    </message>
+    <message>
+        <source>limit -</source>
+        <translation>конечник -</translation>
+    </message>
+    <message>
+        <source>fault %1</source>
+        <translation>ошибка %1</translation>
+    </message>
+    <message>
+        <source>Z1000 PLC→</source>
+        <translation>Z1000 ПЛК→</translation>
+    </message>
+    <message>
+        <source>E-stop released</source>
+        <translation>нет аварийного стопа</translation>
+    </message>
+    <message>
+        <source>feed enable</source>
+        <translation>деблокировка подачи</translation>
+    </message>
+    <message>
+        <source>start enable</source>
+        <translation>деблокировка пуска</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>пуск</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>стоп</translation>
+    </message>
+    <message>
+        <source>reset</source>
+        <translation>сброс</translation>
+    </message>
+    <message>
+        <source>data hold</source>
+        <translation>блокировка ввода</translation>
+    </message>
+    <message>
+        <source>acknowledge</source>
+        <translation>квитирование</translation>
+    </message>
+    <message>
+        <source>M done</source>
+        <translation>M выполнена</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <translation>режим %1</translation>
+    </message>
+    <message>
+        <source>Z2000 →PLC</source>
+        <translation>Z2000 →ПЛК</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>готовность</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>программа выполняется</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>прерывание</translation>
+    </message>
+    <message>
+        <source>end/reset</source>
+        <translation>конец/сброс</translation>
+    </message>
+    <message>
+        <source>dwell</source>
+        <translation>выдержка</translation>
+    </message>
+    <message>
+        <source>M00</source>
+        <translation>M00</translation>
+    </message>
+    <message>
+        <source>override 0%</source>
+        <translation>корректор 0%</translation>
+    </message>
+    <message>
+        <source>change wheel</source>
+        <translation>смена круга</translation>
+    </message>
+    <message>
+        <source>Z2001</source>
+        <translation>Z2001</translation>
+    </message>
+    <message>
+        <source>M strobe</source>
+        <translation>строб M</translation>
+    </message>
+    <message>
+        <source>M code %1</source>
+        <translation>код M %1</translation>
+    </message>
+    <message>
+        <source>cycle %1</source>
+        <translation>цикл %1</translation>
+    </message>
+    <message>
+        <source>regulator</source>
+        <translation>регулятор</translation>
+    </message>
+    <message>
+        <source>feed</source>
+        <translation>подача</translation>
+    </message>
+    <message>
+        <source>jog +</source>
+        <translation>перемещение +</translation>
+    </message>
+    <message>
+        <source>jog -</source>
+        <translation>перемещение -</translation>
+    </message>
+    <message>
+        <source>rapid</source>
+        <translation>ускоренно</translation>
+    </message>
+    <message>
+        <source>loop</source>
+        <translation>контур</translation>
+    </message>
+    <message>
+        <source>loop error</source>
+        <translation>ошибка контура</translation>
+    </message>
+    <message>
+        <source>fast inputs </source>
+        <translation>быстрые входы </translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
@@ -203,6 +422,185 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::MachinePanelWidget</name>
+    <message>
+        <source>SPINDLE</source>
+        <translation>ШПИНДЕЛЬ</translation>
+    </message>
+    <message>
+        <source>COOLANT</source>
+        <translation>СОЖ</translation>
+    </message>
+    <message>
+        <source>LIMIT</source>
+        <translation>КОНЕЧНИК</translation>
+    </message>
+    <message>
+        <source>HOMED</source>
+        <translation>ПРИВЯЗКА</translation>
+    </message>
+    <message>
+        <source>DOOR</source>
+        <translation>ДВЕРЬ</translation>
+    </message>
+    <message>
+        <source>CLAMPED</source>
+        <translation>ЗАЖИМ</translation>
+    </message>
+    <message>
+        <source>ALARM</source>
+        <translation>АВАРИЯ</translation>
+    </message>
+    <message>
+        <source>LUBE</source>
+        <translation>СМАЗКА</translation>
+    </message>
+    <message>
+        <source>WHEEL</source>
+        <translation>КРУГ</translation>
+    </message>
+    <message>
+        <source>GAUGE</source>
+        <translation>ПАК</translation>
+    </message>
+    <message>
+        <source>TURRET</source>
+        <translation>РЕЗЦЕДЕРЖ.</translation>
+    </message>
+    <message>
+        <source>HYDRAUL.</source>
+        <translation>ГИДРАВЛ.</translation>
+    </message>
+    <message>
+        <source>MACHINE CONTROL PANEL</source>
+        <translation>ПУЛЬТ СТАНКА</translation>
+    </message>
+    <message>
+        <source>EMERGENCY STOP</source>
+        <translation>АВАРИЙНЫЙ СТОП</translation>
+    </message>
+    <message>
+        <source>DRIVES ON</source>
+        <translation>ПРИВОДЫ</translation>
+    </message>
+    <message>
+        <source>RESET</source>
+        <translation>СБРОС</translation>
+    </message>
+    <message>
+        <source>CYCLE START</source>
+        <translation>ПУСК</translation>
+    </message>
+    <message>
+        <source>STOP</source>
+        <translation>СТОП</translation>
+    </message>
+    <message>
+        <source>Rapid traverse: hold with a jog button</source>
+        <translation>Ускоренное перемещение: держать вместе с кнопкой оси</translation>
+    </message>
+    <message>
+        <source>Jog X+ (hold)</source>
+        <translation>Перемещение X+ (держать)</translation>
+    </message>
+    <message>
+        <source>Jog X- (hold)</source>
+        <translation>Перемещение X- (держать)</translation>
+    </message>
+    <message>
+        <source>Jog Z+ (hold)</source>
+        <translation>Перемещение Z+ (держать)</translation>
+    </message>
+    <message>
+        <source>Jog Z- (hold)</source>
+        <translation>Перемещение Z- (держать)</translation>
+    </message>
+    <message>
+        <source>JOG</source>
+        <translation>ПЕРЕМЕЩЕНИЕ</translation>
+    </message>
+    <message>
+        <source>HANDWHEEL</source>
+        <translation>МАХОВИК</translation>
+    </message>
+    <message>
+        <source>AXIS</source>
+        <translation>ОСЬ</translation>
+    </message>
+    <message>
+        <source>STEP</source>
+        <translation>ШАГ</translation>
+    </message>
+    <message>
+        <source>Drag round or turn the mouse wheel: one detent is one step</source>
+        <translation>Вращайте мышью или колесом мыши: одно деление — один шаг</translation>
+    </message>
+    <message>
+        <source>FEED OVERRIDE %</source>
+        <translation>КОРРЕКТОР ПОДАЧИ %</translation>
+    </message>
+    <message>
+        <source>K923: the panel's L1..L4 keys set the override</source>
+        <translation>K923: корректор задают клавиши L1..L4 панели</translation>
+    </message>
+    <message>
+        <source>CHUCK</source>
+        <translation>ПАТРОН</translation>
+    </message>
+    <message>
+        <source>NEW WHEEL</source>
+        <translation>КРУГ НОВЫЙ</translation>
+    </message>
+    <message>
+        <source>Per detent: %1 / %2 / %3 mm</source>
+        <translation>На деление: %1 / %2 / %3 мм</translation>
+    </message>
+    <message>
+        <source>Spindle</source>
+        <translation>Шпиндель</translation>
+    </message>
+    <message>
+        <source>Wheel</source>
+        <translation>Круг</translation>
+    </message>
+    <message>
+        <source>Work</source>
+        <translation>Изделие</translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation>об/мин</translation>
+    </message>
+    <message>
+        <source>Tool %1</source>
+        <translation>Инструмент %1</translation>
+    </message>
+    <message>
+        <source>Gauge: bore %1 / %2 mm, wheel %3 mm</source>
+        <translation>ПАК: отверстие %1 / %2 мм, круг %3 мм</translation>
+    </message>
+    <message>
+        <source> in </source>
+        <translation> подведён </translation>
+    </message>
+    <message>
+        <source> touch </source>
+        <translation> касание </translation>
+    </message>
+    <message>
+        <source> rough </source>
+        <translation> черн. </translation>
+    </message>
+    <message>
+        <source> finish </source>
+        <translation> чист. </translation>
+    </message>
+    <message>
+        <source> size</source>
+        <translation> размер</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -257,20 +655,171 @@
         <translation>Оси и сигналы</translation>
     </message>
     <message>
-        <source>The machine's push-buttons, handwheel, override and lamps.</source>
-        <translation>Кнопки пульта станка, маховик, корректор и лампы.</translation>
-    </message>
-    <message>
-        <source>Alarms and messages of the controller and the machine.</source>
-        <translation>Аварийные и рабочие сообщения УЧПУ и станка.</translation>
-    </message>
-    <message>
-        <source>Axis positions, following error, DAC and interface signals.</source>
-        <translation>Положение осей, рассогласование, ЦАП и сигналы интерфейса.</translation>
-    </message>
-    <message>
         <source>Ready</source>
         <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Machine time %1:%2:%3</source>
+        <translation>Время станка %1:%2:%3</translation>
+    </message>
+    <message>
+        <source>spindle</source>
+        <translation>шпиндель</translation>
+    </message>
+    <message>
+        <source>wheel spindle</source>
+        <translation>шпиндель круга</translation>
+    </message>
+    <message>
+        <source>work spindle</source>
+        <translation>шпиндель изделия</translation>
+    </message>
+    <message>
+        <source>coolant pump</source>
+        <translation>насос СОЖ</translation>
+    </message>
+    <message>
+        <source>lubrication pump</source>
+        <translation>насос смазки</translation>
+    </message>
+    <message>
+        <source>hydraulic pump</source>
+        <translation>гидронасос</translation>
+    </message>
+    <message>
+        <source>Encoder %1: channel %2 broken</source>
+        <translation>ДОС %1: обрыв канала %2</translation>
+    </message>
+    <message>
+        <source>Feed drive %1 not ready</source>
+        <translation>Нет готовности привода подачи %1</translation>
+    </message>
+    <message>
+        <source>Limit switch %1%2 hit</source>
+        <translation>Наезд на конечник %1%2</translation>
+    </message>
+    <message>
+        <source>Emergency stop circuit open</source>
+        <translation>Обрыв цепи аварийного останова</translation>
+    </message>
+    <message>
+        <source>Interference on encoder %1 (DAC limit)</source>
+        <translation>Помеха в линиях ДОС %1 (предел ЦАП)</translation>
+    </message>
+    <message>
+        <source>PLC I/O module failure, place %1</source>
+        <translation>Отказ модуля ввода-вывода ПЛК, место %1</translation>
+    </message>
+    <message>
+        <source>PLC - positioner link lost</source>
+        <translation>Нет связи ПЛК и БП</translation>
+    </message>
+    <message>
+        <source>Drive not ready: %1</source>
+        <translation>Нет готовности привода: %1</translation>
+    </message>
+    <message>
+        <source>Motor overheat: %1</source>
+        <translation>Перегрев двигателя: %1</translation>
+    </message>
+    <message>
+        <source>Motor overload: %1</source>
+        <translation>Перегрузка двигателя: %1</translation>
+    </message>
+    <message>
+        <source>Chuck loses its clamping pressure</source>
+        <translation>Патрон теряет давление зажима</translation>
+    </message>
+    <message>
+        <source>Turret jammed</source>
+        <translation>Резцедержатель заклинило</translation>
+    </message>
+    <message>
+        <source>In-process gauge fault</source>
+        <translation>Неисправность прибора активного контроля</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Станок</translation>
+    </message>
+    <message>
+        <source>&amp;Pause the machine</source>
+        <translation>&amp;Пауза</translation>
+    </message>
+    <message>
+        <source>&amp;Speed</source>
+        <translation>С&amp;корость</translation>
+    </message>
+    <message>
+        <source>&amp;Faults for training</source>
+        <translation>&amp;Неисправности для обучения</translation>
+    </message>
+    <message>
+        <source>&amp;Clear all faults</source>
+        <translation>&amp;Убрать все неисправности</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::MessagesView</name>
+    <message>
+        <source>Source</source>
+        <translation>Источник</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <source> (L%1, line %2)</source>
+        <translation> (L%1, строка %2)</translation>
+    </message>
+    <message>
+        <source>Positioner</source>
+        <translation>БП</translation>
+    </message>
+    <message>
+        <source>active</source>
+        <translation>есть</translation>
+    </message>
+    <message>
+        <source>PLC system</source>
+        <translation>ПЛК, системное</translation>
+    </message>
+    <message>
+        <source>PLC alarm</source>
+        <translation>ПЛК, авария</translation>
+    </message>
+    <message>
+        <source>PLC</source>
+        <translation>ПЛК</translation>
+    </message>
+    <message>
+        <source>information</source>
+        <translation>информация</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>No alarms.</source>
+        <translation>Аварийных сообщений нет.</translation>
+    </message>
+    <message>
+        <source>Alarms: %1. Acknowledge with RESET on the machine panel or ESC on the K923 once the cause is gone.</source>
+        <translation>Аварийных сообщений: %1. Квитируйте кнопкой СБРОС пульта станка или ESC панели K923, когда причина устранена.</translation>
+    </message>
+    <message>
+        <source>waits for acknowledgement</source>
+        <translation>ждёт квитирования</translation>
     </message>
 </context>
 </TS>

@@ -1,11 +1,13 @@
-// k528 run [options] FILE — runs a program on the simulated machine, headless
-// (shared/spec/cli.md; extensions in docs/engine.md).
+// k528 run [options] FILE — runs a program on the simulated machine (the
+// positioner, the PLC running the machine description, the plant: machine/run.h),
+// headless (shared/spec/cli.md; extensions in docs/engine.md).
 #include "args.h"
 #include "catalog/messages.h"
 #include "cli.h"
 #include "engine/rparams.h"
-#include "engine/run.h"
 #include "engine/self_test.h"
+#include "machine/run.h"
+#include "plc/description.h"
 #include "profile/builtin.h"
 #include "profile/validate.h"
 #include "program/validator.h"
@@ -266,7 +268,15 @@ int runRun(std::span<const std::string> argv) {
             }
     }
 
-    const engine::RunResult result = engine::runProgram(prof, parsed.store, number, options);
+    engine::RunResult result;
+    try {
+        result = machine::runProgram(prof, parsed.store, number, options);
+    } catch (const plc::DescriptionError& e) {
+        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        return ExitUsage;
+    } catch (const std::invalid_argument& e) {
+        return usageError(e.what());
+    }
     if (asJson)
         std::printf("%s\n", resultJson(result).dump().c_str());
     else

@@ -12,7 +12,14 @@
 
 #include "k923/k923_widget.h"
 #include "language.h"
+#include "machine/machine_panel.h"
+#include "machine/status_views.h"
+#include "profile/builtin.h"
+#include "session/simulation_session.h"
 #include "util/version.h"
+
+#include <QScrollArea>
+#include <QTimer>
 
 namespace k528::studio {
 
@@ -24,9 +31,21 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     workArea_->setDocumentMode(true);
     setCentralWidget(workArea_);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
+    session_ = new SimulationSession(profile::builtin(profile::kDefaultProfile), this);
     createDocks();
     createMenus();
-    statusBar();
+    timeLabel_ = new QLabel(this);
+    timeLabel_->setObjectName("status.machineTime");
+    statusBar()->addPermanentWidget(timeLabel_);
+    connect(session_, &SimulationSession::advanced, this, [this] {
+        const std::int64_t s = session_->timeMs() / 1000;
+        const QString t = tr("Machine time %1:%2:%3")
+                              .arg(s / 3600, 2, 10, QChar('0'))
+                              .arg(s / 60 % 60, 2, 10, QChar('0'))
+                              .arg(s % 60, 2, 10, QChar('0'));
+        if (timeLabel_->text() != t)
+            timeLabel_->setText(t);
+    });
     retranslate();
     resize(1280, 800);
 }
@@ -55,10 +74,30 @@ void MainWindow::createDocks() {
     k923_->setDisplay(K923Widget::blankDisplay());
     k923Dock_->setWidget(k923_);
     machineDock_ = addDock("dock.machine", Qt::RightDockWidgetArea);
+    delete machineDock_->widget();
+    auto* scroll = new QScrollArea(machineDock_);
+    scroll->setObjectName("machinePanelScroll");
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    machinePanel_ = new MachinePanelWidget(*session_, scroll);
+    scroll->setWidget(machinePanel_);
+    scroll->setMinimumWidth(machinePanel_->minimumSizeHint().width() + 16);
+    machineDock_->setWidget(scroll);
+    // The machine's panel beside the K923, as on the shop floor.
+    splitDockWidget(k923Dock_, machineDock_, Qt::Horizontal);
     messagesDock_ = addDock("dock.messages", Qt::BottomDockWidgetArea);
+    delete messagesDock_->widget();
+    messagesView_ = new MessagesView(*session_, messagesDock_);
+    messagesDock_->setWidget(messagesView_);
     axesDock_ = addDock("dock.axes", Qt::BottomDockWidgetArea);
+    delete axesDock_->widget();
+    axesView_ = new AxesView(*session_, axesDock_);
+    axesDock_->setWidget(axesView_);
     tabifyDockWidget(messagesDock_, axesDock_);
     messagesDock_->raise();
+    for (QDockWidget* d : {messagesDock_, axesDock_})
+        d->setMaximumHeight(140);
+
 }
 
 void MainWindow::createMenus() {
@@ -84,6 +123,8 @@ void MainWindow::createMenus() {
     connect(russianAction_, &QAction::triggered, this, [] { setLanguage("ru"); });
     connect(englishAction_, &QAction::triggered, this, [] { setLanguage("en"); });
 
+    createSimulationMenu();
+
     helpMenu_ = menuBar()->addMenu(QString());
     aboutAction_ = helpMenu_->addAction(QString(), this, [this] {
         QMessageBox::about(this, tr("About K528 Studio"),
@@ -93,6 +134,115 @@ void MainWindow::createMenus() {
                                .arg(QString::fromLatin1(k528::version_string)));
     });
 }
+
+void MainWindow::createSimulationMenu() {
+    simulationMenu_ = menuBar()->addMenu(QString());
+    simulationMenu_->setObjectName("menu.simulation");
+    pauseAction_ = simulationMenu_->addAction(QString());
+    pauseAction_->setObjectName("action.simulation.pause");
+    pauseAction_->setCheckable(true);
+    pauseAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Pause));
+    connect(pauseAction_, &QAction::toggled, session_,
+            [this](bool paused) { session_->setRunning(!paused); });
+    speedMenu_ = simulationMenu_->addMenu(QString());
+    auto* speeds = new QActionGroup(this);
+    for (double f : {1.0, 2.0, 5.0, 10.0}) {
+        QAction* a = speedMenu_->addAction(QStringLiteral("%1×").arg(f));
+        a->setObjectName(QStringLiteral("action.simulation.speed%1").arg(f));
+        a->setCheckable(true);
+        a->setChecked(f == 1.0);
+        a->setData(f);
+        speeds->addAction(a);
+        speedActions_ << a;
+        connect(a, &QAction::triggered, session_, [this, f] { session_->setSpeed(f); });
+    }
+    // Faults for training: the faults this machine can show, on and off.
+    faultsMenu_ = simulationMenu_->addMenu(QString());
+    faultsMenu_->setObjectName("menu.simulation.faults");
+    for (const machine::FaultSpec& f : session_->simulation().availableFaults()) {
+        QAction* a = faultsMenu_->addAction(QString());
+        a->setCheckable(true);
+        a->setObjectName(QStringLiteral("action.fault.%1.%2.%3.%4")
+                             .arg(QString::fromLatin1(machine::faultName(f.kind).data(),
+                                                      static_cast<qsizetype>(machine::faultName(f.kind).size())))
+                             .arg(f.axis == engine::AxisId::X ? "x" : "z")
+                             .arg(f.detail)
+                             .arg(QString::fromStdString(f.equipment)));
+        faultActions_ << a;
+        const machine::FaultSpec spec = f;
+        connect(a, &QAction::toggled, this, [this, spec](bool on) {
+            if (on)
+                session_->simulation().inject(spec);
+            else
+                session_->simulation().clear(spec);
+        });
+    }
+    faultsMenu_->addSeparator();
+    clearFaultsAction_ = faultsMenu_->addAction(QString(), this, [this] {
+        session_->simulation().clearFaults();
+        updateFaultActions();
+    });
+}
+
+void MainWindow::updateFaultActions() {
+    const auto faults = session_->simulation().availableFaults();
+    for (int i = 0; i < faultActions_.size(); ++i) {
+        const QSignalBlocker block(faultActions_[i]);
+        faultActions_[i]->setChecked(session_->simulation().faultActive(faults[static_cast<std::size_t>(i)]));
+    }
+}
+
+namespace {
+// The trainer's name of a fault, translated.
+QString faultTitle(const machine::FaultSpec& f) {
+    const QString ax = f.axis == engine::AxisId::X ? QStringLiteral("X") : QStringLiteral("Z");
+    const QString eq = QString::fromStdString(f.equipment);
+    const auto equipment = [&] {
+        if (eq == "spindle")
+            return MainWindow::tr("spindle");
+        if (eq == "wheel")
+            return MainWindow::tr("wheel spindle");
+        if (eq == "work")
+            return MainWindow::tr("work spindle");
+        if (eq == "coolant")
+            return MainWindow::tr("coolant pump");
+        if (eq == "lube")
+            return MainWindow::tr("lubrication pump");
+        if (eq == "hydraulics")
+            return MainWindow::tr("hydraulic pump");
+        return eq;
+    };
+    switch (f.kind) {
+    case machine::Fault::EncoderChannelBreak:
+        return MainWindow::tr("Encoder %1: channel %2 broken").arg(ax).arg(f.detail);
+    case machine::Fault::DriveNotReady:
+        return MainWindow::tr("Feed drive %1 not ready").arg(ax);
+    case machine::Fault::LimitSwitch:
+        return MainWindow::tr("Limit switch %1%2 hit").arg(ax, f.detail < 0 ? "-" : "+");
+    case machine::Fault::EmergencyStop:
+        return MainWindow::tr("Emergency stop circuit open");
+    case machine::Fault::DacLimit:
+        return MainWindow::tr("Interference on encoder %1 (DAC limit)").arg(ax);
+    case machine::Fault::PlcModuleFailure:
+        return MainWindow::tr("PLC I/O module failure, place %1").arg(f.detail);
+    case machine::Fault::LostLink:
+        return MainWindow::tr("PLC - positioner link lost");
+    case machine::Fault::SpindleDrive:
+        return MainWindow::tr("Drive not ready: %1").arg(equipment());
+    case machine::Fault::SpindleOverheat:
+        return MainWindow::tr("Motor overheat: %1").arg(equipment());
+    case machine::Fault::PumpOverload:
+        return MainWindow::tr("Motor overload: %1").arg(equipment());
+    case machine::Fault::ChuckPressure:
+        return MainWindow::tr("Chuck loses its clamping pressure");
+    case machine::Fault::TurretJam:
+        return MainWindow::tr("Turret jammed");
+    case machine::Fault::GaugeFault:
+        return MainWindow::tr("In-process gauge fault");
+    }
+    return {};
+}
+} // namespace
 
 void MainWindow::retranslate() {
     setWindowTitle(tr("K528 Studio"));
@@ -107,14 +257,28 @@ void MainWindow::retranslate() {
     machineDock_->setWindowTitle(tr("Machine control panel"));
     messagesDock_->setWindowTitle(tr("Messages"));
     axesDock_->setWindowTitle(tr("Axes and signals"));
-    const auto hint = [](QDockWidget* d, const QString& text) {
-        if (auto* l = qobject_cast<QLabel*>(d->widget()))
-            l->setText(text);
-    };
-    hint(machineDock_, tr("The machine's push-buttons, handwheel, override and lamps."));
-    hint(messagesDock_, tr("Alarms and messages of the controller and the machine."));
-    hint(axesDock_, tr("Axis positions, following error, DAC and interface signals."));
+    simulationMenu_->setTitle(tr("&Simulation"));
+    pauseAction_->setText(tr("&Pause the machine"));
+    speedMenu_->setTitle(tr("&Speed"));
+    faultsMenu_->setTitle(tr("&Faults for training"));
+    clearFaultsAction_->setText(tr("&Clear all faults"));
+    const auto faults = session_->simulation().availableFaults();
+    for (int i = 0; i < faultActions_.size(); ++i)
+        faultActions_[i]->setText(faultTitle(faults[static_cast<std::size_t>(i)]));
     statusBar()->showMessage(tr("Ready"));
+}
+
+void MainWindow::showEvent(QShowEvent* event) {
+    QMainWindow::showEvent(event);
+    if (!shown_) {
+        shown_ = true;
+        // The docks on the right get the height; messages and axes a strip:
+        // held low for the first layout, free to resize afterwards.
+        QTimer::singleShot(0, this, [this] {
+            for (QDockWidget* d : {messagesDock_, axesDock_})
+                d->setMaximumHeight(QWIDGETSIZE_MAX);
+        });
+    }
 }
 
 void MainWindow::changeEvent(QEvent* event) {

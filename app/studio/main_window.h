@@ -1,6 +1,9 @@
 // The K528 Studio main window: a central work area (program, toolpath) and
 // dock areas for the K923 panel, the machine's control panel, messages and
-// axis state. Later modules put their widgets into these docks.
+// axis state. At start-up it builds one simulated machine (SimulationSession
+// on the default profile) that advances with real time; the machine's panel,
+// the messages and the axes docks show it, the Simulation menu pauses it,
+// sets its speed and injects faults for training.
 #pragma once
 
 #include <QMainWindow>
@@ -13,6 +16,10 @@ class QActionGroup;
 namespace k528::studio {
 
 class K923Widget;
+class SimulationSession;
+class MachinePanelWidget;
+class MessagesView;
+class AxesView;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -28,13 +35,22 @@ public:
     QDockWidget* messagesDock() const { return messagesDock_; }
     QDockWidget* axesDock() const { return axesDock_; }
     QTabWidget* workArea() const { return workArea_; }
+    // The simulated machine the docks show (the K923 panel model goes over
+    // session()->controller()).
+    SimulationSession* session() const { return session_; }
+    MachinePanelWidget* machinePanel() const { return machinePanel_; }
+    MessagesView* messagesView() const { return messagesView_; }
+    AxesView* axesView() const { return axesView_; }
 
 protected:
     void changeEvent(QEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void createDocks();
     void createMenus();
+    void createSimulationMenu();
+    void updateFaultActions();
     void retranslate();
     QDockWidget* addDock(const char* objectName, Qt::DockWidgetArea area);
 
@@ -48,6 +64,19 @@ private:
     QMenu* viewMenu_ = nullptr;
     QMenu* languageMenu_ = nullptr;
     QMenu* helpMenu_ = nullptr;
+    QMenu* simulationMenu_ = nullptr;
+    QMenu* faultsMenu_ = nullptr;
+    QMenu* speedMenu_ = nullptr;
+    QAction* pauseAction_ = nullptr;
+    QAction* clearFaultsAction_ = nullptr;
+    QList<QAction*> speedActions_;
+    QList<QAction*> faultActions_;
+    QLabel* timeLabel_ = nullptr;
+    SimulationSession* session_ = nullptr;
+    MachinePanelWidget* machinePanel_ = nullptr;
+    MessagesView* messagesView_ = nullptr;
+    AxesView* axesView_ = nullptr;
+    bool shown_ = false;
     QAction* quitAction_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QAction* russianAction_ = nullptr;

@@ -4,6 +4,7 @@
 #include "engine/ideal_machine.h"
 
 #include <cmath>
+#include <functional>
 
 namespace k528::engine {
 
@@ -22,8 +23,11 @@ std::string_view runStatusName(RunStatus s) {
 namespace {
 
 constexpr std::int64_t kHomingGuardMs = 3600 * 1000;
+constexpr std::int64_t kSwitchOnMs = 10000;
+constexpr std::int64_t kHomingStartMs = 1000;
 
-void collect(const Controller& ctl, const IdealMachine& machine, RunResult& res) {
+void collect(RunMachine& machine, RunResult& res) {
+    const Controller& ctl = machine.controller();
     res.alarms = ctl.alarms();
     res.frames = ctl.framesExecuted();
     for (int i = 0; i < kAxisCount; ++i) {
@@ -43,16 +47,51 @@ void collect(const Controller& ctl, const IdealMachine& machine, RunResult& res)
     res.line = p.line;
     res.messageNumber = p.messageNumber;
     res.messageText = p.messageText;
-    res.mFunctions = machine.mLog();
+    res.mFunctions = machine.mFunctions();
 }
+
+bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t maxMs) {
+    Controller& ctl = m.controller();
+    const std::int64_t end = ctl.timeMs() + maxMs;
+    while (ctl.timeMs() < end) {
+        m.tick();
+        if (done())
+            return true;
+    }
+    return false;
+}
+
+// The ideal machine as a RunMachine.
+class IdealRunMachine final : public RunMachine {
+public:
+    explicit IdealRunMachine(const profile::MachineProfile& p) : ctl_(p), m_(ctl_) {}
+    Controller& controller() override { return ctl_; }
+    void tick() override { m_.tick(); }
+    bool switchOn(std::int64_t) override {
+        m_.advance(10); // the PLC's first scans: regulators enabled, loops closed
+        return true;
+    }
+    void setOverrideCode(int code) override { m_.setOverrideCode(code); }
+    void startReferenceCycle(AxisId a, int dir) override {
+        m_.setJog(a, dir);
+        m_.tick();
+        m_.setJog(a, 0);
+    }
+    void pressStart() override { m_.pressStart(); }
+    bool startHeld() const override { return ctl_.words().bit(z::Start); }
+    std::vector<int> mFunctions() const override { return m_.mLog(); }
+
+private:
+    Controller ctl_;
+    IdealMachine m_;
+};
 
 } // namespace
 
-RunResult runProgram(const profile::MachineProfile& profile, const program::ProgramStore& programs,
-                     int number, const RunOptions& options) {
+RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs, int number,
+                     const RunOptions& options) {
     RunResult res;
-    Controller ctl(profile);
-    IdealMachine machine(ctl);
+    Controller& ctl = machine.controller();
     ctl.powerOn();
     if (program::ProgramStore* store = ctl.editablePrograms()) {
         for (const program::Program& p : programs.programs())
@@ -67,15 +106,19 @@ RunResult runProgram(const profile::MachineProfile& profile, const program::Prog
     machine.setOverrideCode(code >= 0 ? code : 10);
     const std::int64_t limitMs =
         static_cast<std::int64_t>(std::llround(options.maxSeconds * 1000.0));
-    machine.advance(10); // the PLC's first scans: regulators enabled, loops closed
 
     const auto finish = [&](RunStatus s) {
         res.status = s;
-        collect(ctl, machine, res);
+        collect(machine, res);
         return res;
     };
     if (ctl.alarmRegistry().anyLatched())
         return finish(RunStatus::Alarm); // the power-on test found something
+    const bool ready = machine.switchOn(kSwitchOnMs);
+    if (ctl.alarmRegistry().anyLatched())
+        return finish(RunStatus::Alarm);
+    if (!ready)
+        return finish(RunStatus::Timeout);
 
     // Reference-point cycles, X first (as an operator retracts X before Z).
     if (options.home) {
@@ -87,13 +130,20 @@ RunResult runProgram(const profile::MachineProfile& profile, const program::Prog
             if (!v.present || v.referenceOk)
                 continue;
             const bool negative = ctl.c()[static_cast<std::size_t>(i == 0 ? 9 : 61)] != 0;
-            machine.setJog(a, negative ? -1 : 1);
-            machine.tick();
-            machine.setJog(a, 0);
-            // The cycle ends by itself (referenced, or 40/41 when the cam or the
-            // mark is missing, the axis stopping at a limit switch at the latest):
-            // an hour of machine time is only a guard.
-            const bool done = machine.runUntil(
+            machine.startReferenceCycle(a, negative ? -1 : 1);
+            // The cycle starts once the PLC has passed the button on; it ends
+            // by itself (referenced, or 40/41 when the cam or the mark is
+            // missing, the axis stopping at a limit switch at the latest): an
+            // hour of machine time is only a guard.
+            runUntil(
+                machine,
+                [&] {
+                    const AxisView w = ctl.axisView(a);
+                    return w.homing || w.referenced || ctl.alarmRegistry().anyLatched();
+                },
+                kHomingStartMs);
+            const bool done = runUntil(
+                machine,
                 [&] {
                     const AxisView w = ctl.axisView(a);
                     return w.referenced || !w.homing || ctl.alarmRegistry().anyLatched();
@@ -115,7 +165,12 @@ RunResult runProgram(const profile::MachineProfile& profile, const program::Prog
     const std::int64_t m0WaitMs = static_cast<std::int64_t>(std::llround(options.m0WaitS * 1000.0));
     std::int64_t m0Since = -1;
     RunStatus status = RunStatus::Timeout;
-    while (ctl.timeMs() - pressed < limitMs) {
+    // The limit counts from the moment the positioner saw «Пуск» (the PLC's
+    // debounce lies between the press and that moment).
+    const auto since = [&] {
+        return ctl.programStartMs() >= pressed ? ctl.programStartMs() : pressed;
+    };
+    while (ctl.timeMs() - since() < limitMs) {
         machine.tick();
         const ProgramState s = ctl.state();
         if (s == ProgramState::Ended) {
@@ -129,7 +184,7 @@ RunResult runProgram(const profile::MachineProfile& profile, const program::Prog
         if (s == ProgramState::M0) {
             if (m0Since < 0)
                 m0Since = ctl.timeMs();
-            if (ctl.timeMs() - m0Since >= m0WaitMs && !ctl.words().bit(z::Start)) {
+            if (ctl.timeMs() - m0Since >= m0WaitMs && !machine.startHeld()) {
                 machine.pressStart();
                 m0Since = -1;
             }
@@ -138,6 +193,12 @@ RunResult runProgram(const profile::MachineProfile& profile, const program::Prog
     const std::int64_t start = ctl.programStartMs() >= 0 ? ctl.programStartMs() : ctl.timeMs();
     res.timeS = static_cast<double>(ctl.timeMs() - start) / 1000.0;
     return finish(status);
+}
+
+RunResult runProgram(const profile::MachineProfile& profile, const program::ProgramStore& programs,
+                     int number, const RunOptions& options) {
+    IdealRunMachine machine(profile);
+    return runProgram(machine, programs, number, options);
 }
 
 } // namespace k528::engine

@@ -1,13 +1,19 @@
-// A headless run of a program on the ideal machine, as `k528 run` does it
-// (shared/spec/cli.md) and as the benchmark and the tests drive it:
-//   power on; load the programs into the store (over the profile's own);
-//   preset R-parameters; home every present axis that needs it (АВТ.БЕЗ
-//   ПБТ = 0), X first, unless told not to; АВТОМАТ, select the program,
-//   «Пуск»; run until the end of the program (M02/M30 or its last frame),
-//   a message that stops it, or the time limit. An M00 is continued with
-//   «Пуск» after `m0WaitS` (an operator at the machine).
+// A headless run of a program, as `k528 run` does it (shared/spec/cli.md) and
+// as the benchmark and the tests drive it:
+//   switch the machine on; load the programs into the store (over the
+//   profile's own); preset R-parameters; home every present axis that needs
+//   it (АВТ.БЕЗ ПБТ = 0), X first, unless told not to; АВТОМАТ, select the
+//   program, «Пуск»; run until the end of the program (M02/M30 or its last
+//   frame), a message that stops it, or the time limit. An M00 is continued
+//   with «Пуск» after `m0WaitS` (an operator at the machine).
+//
+// The run is written against RunMachine — what an operator does at the
+// machine — so that it drives the simulated machine of core/machine (what
+// `k528 run` uses, machine/run.h) and the engine's ideal machine (its test
+// double, below) the same way.
 #pragma once
 
+#include "engine/controller.h"
 #include "engine/views.h"
 #include "profile/profile.h"
 #include "program/model.h"
@@ -53,8 +59,35 @@ struct RunResult {
     std::vector<int> mFunctions; // M codes handed to the PLC, in order
 };
 
+// The machine around a Controller, as the run uses it: time, and the
+// operator's gestures at the machine's control panel.
+class RunMachine {
+public:
+    virtual ~RunMachine() = default;
+    virtual Controller& controller() = 0;
+    virtual void tick() = 0;
+    // Switches the machine on and waits (ticking) until it is ready to move:
+    // false if it is not within `maxMs`.
+    virtual bool switchOn(std::int64_t maxMs) = 0;
+    // Sets the feed override the operator would choose (a code 0..10).
+    virtual void setOverrideCode(int code) = 0;
+    // The push-button of direction `dir` of axis `a`, pressed and released
+    // as an operator starts the reference-point cycle in ПБТ.
+    virtual void startReferenceCycle(AxisId a, int dir) = 0;
+    // «Пуск» on the machine's panel; startHeld() while the press lasts.
+    virtual void pressStart() = 0;
+    virtual bool startHeld() const = 0;
+    // M codes handed to the PLC so far, in order.
+    virtual std::vector<int> mFunctions() const = 0;
+};
+
 // Runs program `number` of `programs` (merged over the profile's programs
-// and messages) on `profile`. The profile's C-parameters are used as given.
+// and messages) on `machine`, whose controller is fresh (not powered on).
+RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs, int number,
+                     const RunOptions& options);
+
+// The same on the engine's ideal machine and minimal PLC (engine/ideal_machine.h),
+// the engine's test double. `k528 run` uses the simulated machine (machine/run.h).
 RunResult runProgram(const profile::MachineProfile& profile, const program::ProgramStore& programs,
                      int number, const RunOptions& options);
 

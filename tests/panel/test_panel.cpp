@@ -305,7 +305,7 @@ private slots:
 
     // A PLC message without a text in the profile shows its address.
     void plcMessageWithoutText() {
-        Rig r;
+        Rig r([](profile::MachineProfile& p) { p.plcAlarm.erase(30); });
         r.m->setPlcAlarm(30, true);
         r.m->tick();
         r.keys("HELP 2");

@@ -1,0 +1,78 @@
+// The machine's own control panel (dock "dock.machine"), beside the K923:
+// the E-stop, «drives on», cycle start / stop / reset, jog ±X ±Z with rapid,
+// the handwheel with its axis selector and multiplier, the feed override
+// selector (when the machine has one), the door, the chuck foot switch, the
+// pilot lamps the machine description wires, and read-outs of the spindles,
+// the turret and (grinder) the in-process gauge. It drives the simulated
+// machine of a SimulationSession through machine::Simulation's operator API
+// and redraws on SimulationSession::advanced().
+#pragma once
+
+#include "machine/simulation.h"
+
+#include <QWidget>
+#include <map>
+
+class QLabel;
+class QGridLayout;
+
+namespace k528::studio {
+
+class SimulationSession;
+class PendantButton;
+class MushroomButton;
+class PilotLamp;
+class HandwheelDial;
+class SelectorSwitch;
+
+class MachinePanelWidget : public QWidget {
+    Q_OBJECT
+public:
+    explicit MachinePanelWidget(SimulationSession& session, QWidget* parent = nullptr);
+
+    // Controls by role (object names "machine.<role>", tests use them).
+    PendantButton* button(machine::Button b) const { return buttons_.at(b); }
+    MushroomButton* emergencyStop() const { return estop_; }
+    HandwheelDial* handwheel() const { return dial_; }
+    SelectorSwitch* handwheelAxis() const { return wheelAxis_; }
+    SelectorSwitch* handwheelMultiplier() const { return wheelMult_; }
+    SelectorSwitch* overrideSelector() const { return override_; } // nullptr without one
+    PendantButton* doorButton() const { return door_; }            // nullptr without a door
+    PilotLamp* lamp(const QString& id) const;                      // nullptr if not wired
+
+    // The override selector's positions: «K923» then the codes 0..10.
+    static int overrideCodeOfPosition(int position) { return position - 1; }
+
+public slots:
+    void refresh(); // from the simulation's state
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void changeEvent(QEvent*) override;
+
+private:
+    void build();
+    void retranslate();
+    QString lampLegend(const std::string& id) const;
+    void updateMultiplierLegends();
+
+    SimulationSession& session_;
+    std::map<machine::Button, PendantButton*> buttons_;
+    MushroomButton* estop_ = nullptr;
+    HandwheelDial* dial_ = nullptr;
+    SelectorSwitch* wheelAxis_ = nullptr;
+    SelectorSwitch* wheelMult_ = nullptr;
+    SelectorSwitch* override_ = nullptr;
+    PendantButton* door_ = nullptr;
+    PendantButton* changeWheel_ = nullptr;
+    std::map<std::string, PilotLamp*> lamps_;
+    QLabel* title_ = nullptr;
+    QLabel* readout_ = nullptr;
+    QLabel* gauge_ = nullptr;
+    QLabel* handwheelLabel_ = nullptr;
+    QLabel* overrideLabel_ = nullptr;
+    QLabel* jogLabel_ = nullptr;
+    QString lastReadout_, lastGauge_;
+};
+
+} // namespace k528::studio

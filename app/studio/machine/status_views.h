@@ -1,0 +1,67 @@
+// Live views of the simulated machine for the docks "dock.messages" and
+// "dock.axes", redrawn on SimulationSession::advanced() (only what changed).
+//
+// MessagesView: the positioner's messages 1..64 (appendix М, in the UI
+// language) and the PLC's machine alarms, system and work messages (the
+// profile's texts), newest state first within each group.
+//
+// AxesView: per axis the current and machine positions, the rest of the
+// path, the feed, the following error, the DAC, the reference and loop
+// state; and the main bits of the interface words of appendix И.
+#pragma once
+
+#include <QWidget>
+#include <vector>
+
+class QTreeWidget;
+class QTableWidget;
+class QLabel;
+
+namespace k528::studio {
+
+class SimulationSession;
+
+class MessagesView : public QWidget {
+    Q_OBJECT
+public:
+    explicit MessagesView(SimulationSession& session, QWidget* parent = nullptr);
+    QTreeWidget* list() const { return list_; }
+    QSize sizeHint() const override { return {640, 170}; }
+
+public slots:
+    void refresh();
+
+protected:
+    void changeEvent(QEvent*) override;
+
+private:
+    void retranslate();
+    SimulationSession& session_;
+    QTreeWidget* list_ = nullptr;
+    QLabel* summary_ = nullptr;
+    std::vector<QString> last_;
+};
+
+class AxesView : public QWidget {
+    Q_OBJECT
+public:
+    explicit AxesView(SimulationSession& session, QWidget* parent = nullptr);
+    QTableWidget* table() const { return table_; }
+    QLabel* bits() const { return bits_; }
+    QSize sizeHint() const override { return {640, 170}; }
+
+public slots:
+    void refresh();
+
+protected:
+    void changeEvent(QEvent*) override;
+
+private:
+    void retranslate();
+    SimulationSession& session_;
+    QTableWidget* table_ = nullptr;
+    QLabel* bits_ = nullptr;
+    QString lastBits_;
+};
+
+} // namespace k528::studio

@@ -1,0 +1,58 @@
+#include "session/simulation_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace k528::studio {
+
+SimulationSession::SimulationSession(const profile::MachineProfile& profile, QObject* parent)
+    : QObject(parent), sim_(std::make_unique<machine::Simulation>(profile)) {
+    sim_->powerOn();
+    timer_.setTimerType(Qt::PreciseTimer);
+    timer_.setInterval(kFrameIntervalMs);
+    connect(&timer_, &QTimer::timeout, this, &SimulationSession::frame);
+    setRunning(true);
+}
+
+SimulationSession::~SimulationSession() = default;
+
+void SimulationSession::setRunning(bool running) {
+    if (running == running_)
+        return;
+    running_ = running;
+    if (running) {
+        clock_.start();
+        owedMs_ = 0;
+        timer_.start();
+    } else {
+        timer_.stop();
+    }
+    emit runningChanged(running);
+}
+
+void SimulationSession::setSpeed(double factor) {
+    factor = std::clamp(factor, 0.1, 100.0);
+    if (factor == speed_)
+        return;
+    speed_ = factor;
+    emit speedChanged(factor);
+}
+
+void SimulationSession::advance(std::int64_t ms) {
+    if (ms > 0)
+        sim_->advance(ms);
+    emit advanced();
+}
+
+void SimulationSession::frame() {
+    const double realMs = std::min<double>(static_cast<double>(clock_.restart()), kMaxFrameMs);
+    owedMs_ += realMs * speed_;
+    const double tick = static_cast<double>(sim_->tickMs());
+    const auto ticks = static_cast<std::int64_t>(std::floor(owedMs_ / tick));
+    owedMs_ -= static_cast<double>(ticks) * tick;
+    for (std::int64_t i = 0; i < ticks; ++i)
+        sim_->tick();
+    emit advanced();
+}
+
+} // namespace k528::studio

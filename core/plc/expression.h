@@ -1,0 +1,61 @@
+// Boolean conditions of the machine description (docs/machine-description.md),
+// compiled once into a small stack program over the PLC's signal image.
+//
+//   expr    := or
+//   or      := and { ("|" | "or") and }
+//   and     := unary { ("&" | "and") unary }
+//   unary   := ("!" | "not") unary | primary
+//   primary := "(" expr ")" | "rise(" name ")" | "fall(" name ")" | "true" | "false" | name
+//   name    := [A-Za-z_][A-Za-z0-9_]*  |  Z<word>.<bit>  (e.g. Z2000.8)
+//
+// rise(x) is 1 in the scan where signal x turned 1 (it was 0 at the end of
+// the previous scan), fall(x) likewise for 1 -> 0. Names are resolved when
+// compiling: an unknown name is an error naming it. Evaluation never
+// allocates.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace k528::plc {
+
+class Expr {
+public:
+    enum class Op : std::uint8_t { Load, Rise, Fall, Not, And, Or, True, False };
+    struct Instr {
+        Op op;
+        std::uint32_t signal; // for Load / Rise / Fall
+    };
+
+    // The value given the signal image now and at the end of the previous scan.
+    bool eval(const std::uint8_t* now, const std::uint8_t* prev) const;
+    bool empty() const { return code_.empty(); }
+    const std::string& text() const { return text_; }
+    // Signals the expression reads (for dependency checks).
+    std::vector<std::uint32_t> reads() const;
+
+    static constexpr int kMaxDepth = 32; // evaluation stack
+
+private:
+    friend class ExprCompiler;
+    std::vector<Instr> code_;
+    std::string text_;
+};
+
+struct ExprError {
+    int column = 0; // 1-based, in bytes of the expression text
+    std::string message;
+};
+
+// Resolves a name to a signal index, or nullopt when the name is unknown.
+using NameResolver = std::function<std::optional<std::uint32_t>(std::string_view name)>;
+
+// Compiles `text`; nullopt and `error` filled when it is not a valid expression.
+std::optional<Expr> compileExpr(std::string_view text, const NameResolver& resolve,
+                                ExprError& error);
+
+} // namespace k528::plc

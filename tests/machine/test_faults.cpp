@@ -1,0 +1,291 @@
+// Fault injection for training: each fault shows the manual's message (or
+// the machine's PLC message) and its behaviour; clearing the cause and
+// acknowledging brings the machine back.
+#include "engine/interface_words.h"
+#include "machine_rig.h"
+
+using namespace mrig;
+namespace z = engine::z;
+
+namespace {
+// A lathe with its drives on and homed.
+std::unique_ptr<Rig> ready(std::string_view name = "training-lathe") {
+    auto r = std::make_unique<Rig>(name);
+    if (!r->drivesOn() || !r->home())
+        return nullptr;
+    r->advance(50);
+    return r;
+}
+} // namespace
+
+class TestFaults : public QObject {
+    Q_OBJECT
+private slots:
+    void encoderChannelBreak_data() {
+        QTest::addColumn<int>("axis");
+        QTest::addColumn<int>("channel");
+        QTest::addColumn<int>("message");
+        QTest::newRow("X ch1") << 0 << 1 << 4;
+        QTest::newRow("X ch2") << 0 << 2 << 5;
+        QTest::newRow("Z ch1") << 1 << 1 << 20;
+        QTest::newRow("Z ch2") << 1 << 2 << 21;
+    }
+    void encoderChannelBreak() {
+        QFETCH(int, axis);
+        QFETCH(int, channel);
+        QFETCH(int, message);
+        auto r = ready();
+        QVERIFY(r);
+        const FaultSpec f{Fault::EncoderChannelBreak, axis == 0 ? X : Z, channel};
+        r->s().inject(f);
+        r->advance(20);
+        QVERIFY2(r->hasAlarm(message), r->alarmList().c_str());
+        QVERIFY(r->bit(z::loopError(axis == 0 ? X : Z)));
+        // Acknowledged only when the cause is gone.
+        r->push(Button::Reset);
+        QVERIFY(r->hasAlarm(message));
+        r->s().clear(f);
+        r->advance(20);
+        r->push(Button::Reset);
+        QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+    }
+
+    void driveNotReady() {
+        for (const AxisId a : {X, Z}) {
+            auto r = ready();
+            QVERIFY(r);
+            r->s().inject({Fault::DriveNotReady, a});
+            r->advance(30);
+            const int msg = a == X ? 16 : 32;
+            QVERIFY2(r->hasAlarm(msg), r->alarmList().c_str());
+            QVERIFY(r->plcAlarm(a == X ? 25 : 26)); // the PLC sees the drive's relay too
+            r->s().clearFaults();
+            r->advance(30);
+            r->push(Button::Reset);
+            QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+            QVERIFY(!r->plcAlarm(a == X ? 25 : 26));
+        }
+    }
+
+    void limitSwitch_data() {
+        QTest::addColumn<int>("axis");
+        QTest::addColumn<int>("dir");
+        QTest::addColumn<int>("message");
+        QTest::newRow("X+") << 0 << 1 << 11;
+        QTest::newRow("X-") << 0 << -1 << 10;
+        QTest::newRow("Z+") << 1 << 1 << 27;
+        QTest::newRow("Z-") << 1 << -1 << 26;
+    }
+    void limitSwitch() {
+        QFETCH(int, axis);
+        QFETCH(int, dir);
+        QFETCH(int, message);
+        auto r = ready();
+        QVERIFY(r);
+        const AxisId a = axis == 0 ? X : Z;
+        r->s().inject({Fault::LimitSwitch, a, dir});
+        r->advance(30);
+        QVERIFY2(r->hasAlarm(message), r->alarmList().c_str());
+        QVERIFY(r->lamp("limit"));
+        QVERIFY(r->plcAlarm(27));
+        // The direction towards the switch is locked, the other is free.
+        r->c().selectMode(Mode::Manual);
+        const Button towards = a == X ? (dir > 0 ? Button::JogXPlus : Button::JogXMinus)
+                                      : (dir > 0 ? Button::JogZPlus : Button::JogZMinus);
+        const Button away = a == X ? (dir > 0 ? Button::JogXMinus : Button::JogXPlus)
+                                   : (dir > 0 ? Button::JogZMinus : Button::JogZPlus);
+        const double p0 = r->mm(a);
+        r->s().press(towards);
+        r->advance(300);
+        r->s().release(towards);
+        r->advance(100);
+        QVERIFY(std::fabs(r->mm(a) - p0) < 0.02);
+        r->s().press(away);
+        r->advance(300);
+        r->s().release(away);
+        r->advance(300);
+        QVERIFY(std::fabs(r->mm(a) - p0) > 1.0);
+        r->s().clearFaults();
+        r->advance(30);
+        r->push(Button::Reset);
+        QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+        QVERIFY(!r->lamp("limit"));
+    }
+
+    // The E-stop circuit opens (not the mushroom): 9, and the PLC tells a
+    // broken circuit from a pressed button.
+    void emergencyStopCircuit() {
+        auto r = ready();
+        QVERIFY(r);
+        r->s().inject({Fault::EmergencyStop});
+        r->advance(20);
+        QVERIFY(r->hasAlarm(9));
+        QVERIFY(!r->bit(z::EmergencyStopOk));
+        QVERIFY(r->plcAlarm(24));
+        QVERIFY(!r->plcAlarm(23));
+        QVERIFY(r->until([&] { return !r->s().view().drivesPower; }, 1000));
+        r->s().clearFaults();
+        r->advance(20);
+        r->push(Button::Reset);
+        QVERIFY(r->alarms().empty());
+        QVERIFY(r->drivesOn());
+    }
+
+    // Interference on the encoder lines: the loop demands more than
+    // ПРЕДЕЛ ЦАП at once: 6 (X), 22 (Z); the loop opens.
+    void dacLimit() {
+        for (const AxisId a : {X, Z}) {
+            auto r = ready();
+            QVERIFY(r);
+            r->s().inject({Fault::DacLimit, a});
+            r->advance(10);
+            const int msg = a == X ? 6 : 22;
+            QVERIFY2(r->hasAlarm(msg), r->alarmList().c_str());
+            QVERIFY(!r->c().axisView(a).loopClosed);
+            r->s().clearFaults();
+            r->advance(20);
+            r->push(Button::Reset);
+            QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+            // After the interference the count is right again: the position holds.
+            QVERIFY(r->until([&] { return r->c().axisView(a).loopClosed; }, 2000));
+            r->advance(1000);
+            QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+        }
+    }
+
+    // A PLC I/O module fails: 55 and the PLC's system message S(place+1);
+    // the module's outputs drop (place 2: the contactors — the spindle stops).
+    void plcModuleFailure() {
+        auto r = ready();
+        QVERIFY(r);
+        r->c().selectMode(Mode::Manual);
+        r->advance(20);
+        r->c().words().setBit(engine::ZBit{1300, z::keyBit(1)}, true); // K1: spindle
+        QVERIFY(r->until([&] { return r->rpm("spindle") > 700; }, 3000));
+        r->s().inject({Fault::PlcModuleFailure, X, 2});
+        r->advance(20);
+        QVERIFY2(r->hasAlarm(55), r->alarmList().c_str());
+        QVERIFY(r->system(3));
+        QVERIFY(r->plcAlarm(32));
+        QVERIFY(!r->bit(z::Ready)); // a system message: the positioner is not ready
+        QVERIFY(r->until([&] { return r->rpm("spindle") == 0; }, 5000));
+        QVERIFY(r->until([&] { return !r->s().view().drivesPower; }, 2000));
+        r->s().clearFaults();
+        r->advance(20);
+        // System messages are acknowledged with ESC (C125 = 1).
+        r->c().escape();
+        r->advance(20);
+        r->push(Button::Reset);
+        QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+        QVERIFY(!r->system(3));
+        QVERIFY(r->bit(z::Ready));
+    }
+
+    // The input module fails: its inputs read 0 — the E-stop circuit among them.
+    void inputModuleFailure() {
+        auto r = ready();
+        QVERIFY(r);
+        r->s().inject({Fault::PlcModuleFailure, X, 0});
+        r->advance(20);
+        QVERIFY(r->hasAlarm(55));
+        QVERIFY(r->system(1));
+        QVERIFY(r->hasAlarm(9));
+    }
+
+    void lostLink() {
+        auto r = ready();
+        QVERIFY(r);
+        r->s().inject({Fault::LostLink});
+        r->advance(20);
+        QVERIFY2(r->hasAlarm(19), r->alarmList().c_str());
+        QVERIFY(!r->c().axisView(X).loopClosed);
+        QCOMPARE(r->s().plc().signal("link_ok"), std::optional<bool>(false));
+        QVERIFY(r->until([&] { return !r->s().view().drivesPower; }, 2000));
+        r->s().clearFaults();
+        r->advance(20);
+        QVERIFY(r->plcAlarm(13)); // remembered until acknowledged
+        r->c().escape();
+        r->push(Button::Reset);
+        QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
+        QVERIFY(!r->plcAlarm(13));
+        QVERIFY(r->drivesOn());
+    }
+
+    void equipment_data() {
+        QTest::addColumn<QString>("machine");
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<QString>("equipment");
+        QTest::addColumn<int>("alarm");
+        QTest::newRow("lathe spindle drive")
+            << "training-lathe" << int(Fault::SpindleDrive) << "spindle" << 8;
+        QTest::newRow("lathe spindle overheat")
+            << "training-lathe" << int(Fault::SpindleOverheat) << "spindle" << 2;
+        QTest::newRow("lathe coolant pump")
+            << "training-lathe" << int(Fault::PumpOverload) << "coolant" << 5;
+        QTest::newRow("lathe lube pump")
+            << "training-lathe" << int(Fault::PumpOverload) << "lube" << 11;
+        QTest::newRow("lathe chuck pressure")
+            << "training-lathe" << int(Fault::ChuckPressure) << "" << 19;
+        QTest::newRow("grinder wheel drive")
+            << "grinder-205" << int(Fault::SpindleDrive) << "wheel" << 2;
+        QTest::newRow("grinder work drive")
+            << "grinder-205" << int(Fault::SpindleDrive) << "work" << 3;
+        QTest::newRow("grinder wheel overheat")
+            << "grinder-205" << int(Fault::SpindleOverheat) << "wheel" << 8;
+        QTest::newRow("grinder hydraulics")
+            << "grinder-205" << int(Fault::PumpOverload) << "hydraulics" << 1;
+        QTest::newRow("grinder coolant")
+            << "grinder-205" << int(Fault::PumpOverload) << "coolant" << 4;
+        QTest::newRow("grinder gauge") << "grinder-205" << int(Fault::GaugeFault) << "" << 9;
+        QTest::newRow("grinder chuck") << "grinder-205" << int(Fault::ChuckPressure) << "" << 6;
+    }
+    // Machine equipment faults show the machine's PLC alarm (the texts of the profile).
+    void equipment() {
+        QFETCH(QString, machine);
+        QFETCH(int, kind);
+        QFETCH(QString, equipment);
+        QFETCH(int, alarm);
+        auto r = ready(machine.toStdString());
+        QVERIFY(r);
+        const FaultSpec f{static_cast<Fault>(kind), X, 0, equipment.toStdString()};
+        r->s().inject(f);
+        r->advance(4000);
+        QVERIFY2(r->plcAlarm(alarm), r->alarmList().c_str());
+        const auto& texts = r->c().profile().plcAlarm;
+        QVERIFY(texts.count(alarm));
+        r->s().clear(f);
+        r->advance(5000);
+        r->push(Button::Reset);
+        QVERIFY2(!r->plcAlarm(alarm), r->alarmList().c_str());
+    }
+
+    // Every fault the machine offers can be injected and cleared; a fault that
+    // does not fit the machine is refused with the reason.
+    void availableAndRefused() {
+        Rig r;
+        const auto faults = r.s().availableFaults();
+        QVERIFY(faults.size() >= 20);
+        for (const FaultSpec& f : faults) {
+            r.s().inject(f);
+            QVERIFY(r.s().faultActive(f));
+            QVERIFY(!machine::describeFault(f).empty());
+        }
+        r.advance(100);
+        r.s().clearFaults();
+        QVERIFY(r.s().faults().empty());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, r.s().inject({Fault::GaugeFault}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 r.s().inject({Fault::EncoderChannelBreak, X, 3}));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 r.s().inject({Fault::PumpOverload, X, 0, "hydraulics"}));
+        try {
+            r.s().inject({Fault::SpindleDrive, X, 0, "wheel"});
+            QFAIL("no exception");
+        } catch (const std::invalid_argument& e) {
+            QVERIFY(std::string(e.what()).find("no spindle 'wheel'") != std::string::npos);
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFaults)
+#include "test_faults.moc"

@@ -1,0 +1,240 @@
+// Reading machine descriptions: every shipped one is valid; a bad one is
+// refused with the file, the path in the document and what is wrong.
+#include "machine/simulation.h"
+#include "plc/description.h"
+#include "plc/plc.h"
+#include "profile/builtin.h"
+
+#include <QtTest>
+
+using namespace k528;
+
+namespace {
+
+// A small valid description; tests break one thing at a time.
+std::string base(const std::string& extra = "") {
+    return R"json({"format": 1, "name": "t",
+ "modules": [{"place": 0}],
+ "inputs": [{"name": "btn", "signal": "pendant.cycle_start", "module": 0}],
+ "outputs": [{"name": "lamp", "signal": "lamp.cycle_start", "module": 0}],
+ "flags": ["f"],
+ "logic": [{"out": "lamp", "when": "btn"}])json" +
+           extra + "}";
+}
+
+// The error of reading (and compiling) `text`: "" if it was accepted.
+std::string errorOf(const std::string& text, std::string* path = nullptr) {
+    try {
+        const plc::MachineDescription d = plc::readDescription(text, "bad.json");
+        plc::Plc p(d);
+        machine::Simulation s(profile::builtin("training-lathe"), d);
+        return "";
+    } catch (const plc::DescriptionError& e) {
+        if (path)
+            *path = e.path();
+        if (e.source() != "bad.json")
+            return "wrong source " + e.source();
+        return e.what();
+    }
+}
+
+void expectError(const std::string& text, const std::string& wantPath,
+                 const std::string& wantText) {
+    std::string path;
+    const std::string e = errorOf(text, &path);
+    QVERIFY2(!e.empty(), ("accepted: " + text).c_str());
+    QVERIFY2(path == wantPath, (e + "  [path " + path + ", want " + wantPath + "]").c_str());
+    QVERIFY2(e.find(wantText) != std::string::npos, (e + "  [want: " + wantText + "]").c_str());
+    QVERIFY2(e.rfind("bad.json", 0) == 0, e.c_str());
+}
+
+} // namespace
+
+class TestDescription : public QObject {
+    Q_OBJECT
+private slots:
+    void shippedDescriptionsAreValid() {
+        const std::vector<std::string> names = plc::descriptionNames();
+        QCOMPARE(names, (std::vector<std::string>{"generic", "grinder-205", "training-lathe"}));
+        for (const std::string& n : names) {
+            const plc::MachineDescription d = plc::loadDescription(n);
+            QCOMPARE(d.name, n);
+            QVERIFY(!d.title.empty());
+            plc::Plc p(d);
+            QVERIFY(p.inputCount() > 10);
+        }
+        QVERIFY(errorOf(base()).empty());
+    }
+
+    void unknownNameListsTheMachines() {
+        try {
+            plc::loadDescription("no-such");
+            QFAIL("no exception");
+        } catch (const plc::DescriptionError& e) {
+            QVERIFY(std::string(e.what()).find("generic, grinder-205, training-lathe") !=
+                    std::string::npos);
+        }
+        QVERIFY_THROWS_EXCEPTION(plc::DescriptionError, plc::loadDescription("/no/such/file.json"));
+    }
+
+    void jsonSyntax() {
+        const std::string e = errorOf("{\"format\": 1,\n \"name\": \"t\",,}");
+        QVERIFY2(e.find("line 2") != std::string::npos, e.c_str());
+    }
+
+    void structure() {
+        expectError(R"json({"name": "t"})json", "format", "is missing");
+        expectError(R"json({"format": 2, "name": "t"})json", "format", "format 1");
+        expectError(R"json({"format": 1, "name": "t", "frobs": 1})json", "frobs", "unknown key");
+        expectError(R"json({"format": 1, "name": "t", "inputs": {}})json", "inputs",
+                    "expected an array");
+        expectError(R"json({"format": 1, "name": "t", "inputs": [{"name": "a"}]})json",
+                    "inputs[0].signal", "is missing");
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "a", "signal": "x", "contact": "maybe"}]})json",
+            "inputs[0].contact", "normally closed");
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "a", "signal": "x", "debounce_ms": 500}]})json",
+            "inputs[0].debounce_ms", "outside 0..100");
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "2a", "signal": "x"}]})json",
+            "inputs[0].name", "not a valid name");
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "K3", "signal": "x"}]})json",
+            "inputs[0].name", "reserved for the K923 keys");
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "link_ok", "signal": "x"}]})json",
+            "inputs[0].name", "reserved");
+        expectError(R"json({"format": 1, "name": "t", "modules": [{"place": 0}],
+                        "inputs": [{"name": "a", "signal": "x", "module": 3}]})json",
+                    "inputs[0].module", "no module at place 3");
+        expectError(base(R"json(, "logic": [])json"), "logic", "appears twice");
+    }
+
+    void names() {
+        expectError(base(R"json(, "interlocks": [{"name": "btn", "when": "true"}])json"),
+                    "interlocks[0]", "already used (inputs[0])");
+        expectError(R"json({"format": 1, "name": "t", "flags": ["f", "f"]})json", "flags[1]",
+                    "already used");
+    }
+
+    void conditions() {
+        expectError(base(R"json(, "alarms": [{"k": 1, "when": "btn & nosuch"}])json"),
+                    "alarms[0].when", "column 7: unknown signal 'nosuch'");
+        expectError(base(R"json(, "alarms": [{"k": 1, "when": "btn &"}])json"), "alarms[0].when",
+                    "ends too early");
+        expectError(base(R"json(, "alarms": [{"k": 40, "when": "btn"}])json"), "alarms[0].k",
+                    "outside 1..32");
+        expectError(base(R"json(, "alarms": [{"k": 1, "when": "btn"}, {"k": 1, "when": "f"}])json"),
+                    "alarms[1].k", "two conditions");
+    }
+
+    void writers() {
+        // An input cannot be written.
+        expectError(base(R"json(, "keys": [{"key": 1, "set": "btn"}])json"), "keys[0].set",
+                    "cannot be written");
+        // One coil per signal.
+        expectError(
+            R"json({"format": 1, "name": "t", "outputs": [{"name": "o", "signal": "lamp.alarm"}],
+                        "logic": [{"out": "o", "when": "true"}, {"out": "o", "when": "false"}]})json",
+            "logic[1].out", "already has a coil");
+        // A pulsed signal must not have a coil.
+        expectError(R"json({"format": 1, "name": "t", "flags": ["f"],
+                        "logic": [{"out": "f", "when": "true"}], "keys": [{"key": 2, "pulse": "f"}]})json",
+                    "flags[0]", "pulsed by an action and also has a coil");
+        // The positioner's state words are read only.
+        expectError(base(R"json(, "keys": [{"key": 1, "set": "Z2000.1"}])json"), "keys[0].set",
+                    "only Z1000..Z1013");
+        expectError(base(R"json(, "keys": [{"key": 1, "pulse": "Z1000.11"}])json"), "keys[0].pulse",
+                    "M acknowledged");
+        // A slot and a coil on one bit.
+        expectError(R"json({"format": 1, "name": "t", "flags": ["f"],
+                        "logic": [{"out": "Z1000.4", "when": "f"}],
+                        "positioner": {"stop": "f"}})json",
+                    "positioner.stop", "already has a coil");
+    }
+
+    void positionerSection() {
+        expectError(base(R"json(, "positioner": {"x": {"jog_plsu": "btn"}})json"),
+                    "positioner.x.jog_plsu", "not a signal of the positioner interface");
+        expectError(base(R"json(, "positioner": {"bits": {"Z1005.1": "btn"}})json"),
+                    "positioner.bits.Z1005.1", "free words Z1011..Z1013");
+        expectError(
+            base(
+                R"json(, "positioner": {"override": {"from_plc": "btn", "code": ["btn", "f"]}})json"),
+            "positioner.override.code", "four code bits");
+        expectError(base(R"json(, "positioner": {"mode": [{"code": 9, "when": "btn"}]})json"),
+                    "positioner.mode[0].code", "outside 0..7");
+    }
+
+    void mFunctionsKeysInterlocks() {
+        expectError(base(R"json(, "m_functions": [{"m": 3}, {"m": 3}])json"), "m_functions[1].m",
+                    "described twice");
+        expectError(base(R"json(, "m_functions": [{"m": 3, "timeout_ms": 100}])json"),
+                    "m_functions[0]", "go together");
+        expectError(base(R"json(, "m_functions": [{"m": 3, "done": "nosuch"}])json"),
+                    "m_functions[0].done", "unknown signal 'nosuch'");
+        expectError(base(R"json(, "unknown_m": {"acknowledge": true, "alarm": 3})json"),
+                    "unknown_m", "either");
+        expectError(base(R"json(, "keys": [{"key": 13, "set": "f"}])json"), "keys[0].key",
+                    "outside 1..12");
+        expectError(base(R"json(, "keys": [{"key": 2}])json"), "keys[0]", "needs an action");
+        expectError(base(R"json(, "keys": [{"key": 2, "set": "f"}, {"key": 2, "reset": "f"}])json"),
+                    "keys[1].key", "bound twice");
+        expectError(
+            base(R"json(, "interlocks": [{"name": "i", "when": "btn", "override_max": 15}])json"),
+            "interlocks[0].override_max", "not an override step");
+        expectError(
+            R"json({"format": 1, "name": "t", "logic": [{"timer": "t", "when": "true"}]})json",
+            "logic[0]", "exactly one of on_delay_ms");
+    }
+
+    // The wiring to the machine: signals the machine does not have, equipment.
+    void wiring() {
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "a", "signal": "spindle.at_sped"}]})json",
+            "inputs[0].signal", "is not a sensor of this machine");
+        expectError(
+            R"json({"format": 1, "name": "t", "outputs": [{"name": "a", "signal": "pendant.reset"}]})json",
+            "outputs[0].signal", "is not an actuator");
+        expectError(
+            R"json({"format": 1, "name": "t", "outputs": [{"name": "a", "signal": "lamp.alarm"},
+                        {"name": "b", "signal": "lamp.alarm"}]})json",
+            "outputs[1].signal", "driven by another output");
+        expectError(
+            R"json({"format": 1, "name": "t", "equipment": {"spindles": [{"name": "main", "rpm": 100}]}})json",
+            "equipment.spindles[0].name", "\"spindle\", \"wheel\" or \"work\"");
+        expectError(
+            R"json({"format": 1, "name": "t", "equipment": {"spindles": [{"name": "spindle"}]}})json",
+            "equipment.spindles[0].rpm", "is missing");
+        expectError(
+            R"json({"format": 1, "name": "t", "equipment": {"turret": {"positions": 9}}})json",
+            "equipment.turret.positions", "outside 2..7");
+        expectError(R"json({"format": 1, "name": "t", "equipment": {"grinding": {}}})json",
+                    "equipment.grinding.wheel", "is missing");
+        expectError(
+            R"json({"format": 1, "name": "t", "equipment": {"fast_inputs": {"x": {"erase1": "gauge.touch"}}}})json",
+            "equipment.fast_inputs.x.erase1", "unknown machine signal 'gauge.touch'");
+        expectError(
+            R"json({"format": 1, "name": "t", "equipment": {"pendant": {"handwheel": {"x": 3}}}})json",
+            "equipment.pendant.handwheel.x", "outside 1..2");
+    }
+
+    // A message without a text in the profile is a warning, not an error.
+    void missingTextsAreWarnings() {
+        const plc::MachineDescription d = plc::readDescription(
+            base(
+                R"json(, "alarms": [{"k": 31, "when": "btn"}], "work": [{"k": 30, "when": "f"}])json"),
+            "w.json");
+        profile::MachineProfile p = profile::builtin("training-lathe");
+        p.plcAlarm.erase(31);
+        p.plcWork.erase(30);
+        machine::Simulation s(p, d);
+        QCOMPARE(s.warnings().size(), std::size_t(2));
+        QVERIFY(s.warnings()[0].find("A31") != std::string::npos);
+        QVERIFY(s.warnings()[1].find("W30") != std::string::npos);
+    }
+};
+
+QTEST_APPLESS_MAIN(TestDescription)
+#include "test_description.moc"

@@ -1,0 +1,319 @@
+// The machine's control panel on the desktop: pressing its buttons with the
+// mouse drives the simulated machine (the engine reacts through the PLC),
+// its lamps follow the machine; the messages and axes docks show it; the
+// session advances with real time, pauses and runs faster.
+#include "engine/interface_words.h"
+#include "language.h"
+#include "machine/machine_panel.h"
+#include "machine/pendant_controls.h"
+#include "machine/status_views.h"
+#include "main_window.h"
+#include "profile/builtin.h"
+#include "program/parser.h"
+#include "session/simulation_session.h"
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QTableWidget>
+#include <QTreeWidget>
+#include <QtTest>
+
+using namespace k528;
+using namespace k528::studio;
+namespace z = engine::z;
+
+namespace {
+
+QPoint capCentre(PendantButton* b) {
+    return b->capRect().center().toPoint();
+}
+
+// Holds a button with the mouse for `ms` of machine time.
+void hold(SimulationSession& s, PendantButton* b, std::int64_t ms) {
+    QTest::mousePress(b, Qt::LeftButton, {}, capCentre(b));
+    s.advance(ms);
+    QTest::mouseRelease(b, Qt::LeftButton, {}, capCentre(b));
+    s.advance(20);
+}
+
+bool waitFor(SimulationSession& s, const std::function<bool()>& done, std::int64_t maxMs) {
+    for (std::int64_t t = 0; t < maxMs; t += 10) {
+        if (done())
+            return true;
+        s.advance(10);
+    }
+    return done();
+}
+
+bool hasMessage(MessagesView& v, const QString& number) {
+    for (int i = 0; i < v.list()->topLevelItemCount(); ++i)
+        if (v.list()->topLevelItem(i)->text(1) == number)
+            return true;
+    return false;
+}
+
+} // namespace
+
+class TestMachinePanel : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTest");
+        QSettings().clear();
+        QVERIFY(setLanguage("en"));
+    }
+
+    void buttonsDriveTheMachine() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        session.setRunning(false); // time by hand: deterministic
+        MachinePanelWidget panel(session);
+        MessagesView messages(session);
+        AxesView axes(session);
+        panel.resize(panel.sizeHint());
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        session.advance(20);
+        engine::Controller& ctl = session.controller();
+        PendantButton* drives = panel.button(machine::Button::DrivesOn);
+        QVERIFY(!drives->lit());
+        QVERIFY(hasMessage(messages, "W10")); // «Включите приводы»
+
+        // Drives on: the PLC enables the regulators, the button lights.
+        hold(session, drives, 100);
+        QVERIFY(waitFor(
+            session, [&] { return ctl.axisView(engine::AxisId::X).loopClosed; }, 2000));
+        QVERIFY(ctl.words().bit(z::regulatorEnable(engine::AxisId::X)));
+        QVERIFY(drives->lit());
+        QVERIFY(!hasMessage(messages, "W10"));
+
+        // Reference point: F3 on the K923, then +X / +Z held briefly.
+        QVERIFY(ctl.selectMode(engine::Mode::Reference).ok());
+        session.advance(20);
+        hold(session, panel.button(machine::Button::JogXPlus), 80);
+        QVERIFY(ctl.axisView(engine::AxisId::X).homing);
+        QVERIFY(waitFor(
+            session, [&] { return ctl.axisView(engine::AxisId::X).referenced; }, 120000));
+        hold(session, panel.button(machine::Button::JogZPlus), 80);
+        QVERIFY(waitFor(
+            session, [&] { return ctl.axisView(engine::AxisId::Z).referenced; }, 120000));
+        session.advance(30);
+        QVERIFY(panel.lamp("reference")->isOn());
+        QVERIFY(axes.table()->item(0, 8)->text().contains("homed"));
+
+        // Jog -Z while the button is held, rapid with it.
+        QVERIFY(ctl.selectMode(engine::Mode::Manual).ok());
+        session.advance(20);
+        PendantButton* zMinus = panel.button(machine::Button::JogZMinus);
+        const std::int64_t z0 = ctl.axisView(engine::AxisId::Z).currentDisc;
+        QTest::mousePress(zMinus, Qt::LeftButton, {}, capCentre(zMinus));
+        session.advance(300);
+        QVERIFY(ctl.words().bit(z::jogMinus(engine::AxisId::Z)));
+        QVERIFY(ctl.axisView(engine::AxisId::Z).moving);
+        QTest::mouseRelease(zMinus, Qt::LeftButton, {}, capCentre(zMinus));
+        session.advance(300);
+        QVERIFY(!ctl.axisView(engine::AxisId::Z).moving);
+        QVERIFY(ctl.axisView(engine::AxisId::Z).currentDisc < z0 - 5000);
+        QVERIFY(axes.bits()->text().contains("jog -"));
+
+        // The handwheel: axis X, step x10, three detents of the mouse wheel.
+        SelectorSwitch* axis = panel.handwheelAxis();
+        QTest::mouseClick(axis, Qt::LeftButton, {}, axis->legendCentre(1).toPoint());
+        QCOMPARE(axis->position(), 1);
+        SelectorSwitch* step = panel.handwheelMultiplier();
+        QTest::mouseClick(step, Qt::LeftButton, {}, step->legendCentre(1).toPoint());
+        QCOMPARE(step->position(), 1);
+        session.advance(30);
+        const double t0 = ctl.servo(engine::AxisId::X).target();
+        QWheelEvent wheel(QPointF(80, 80), panel.handwheel()->mapToGlobal(QPointF(80, 80)), {},
+                          QPoint(0, 360), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(panel.handwheel(), &wheel);
+        session.advance(500);
+        // 3 detents x МНОЖИТ.М1 10 discretes x 2 internal units.
+        QCOMPARE(ctl.servo(engine::AxisId::X).target() - t0, 60.0);
+
+        // The override selector: 50 %.
+        SelectorSwitch* ov = panel.overrideSelector();
+        QVERIFY(ov);
+        QTest::mouseClick(ov, Qt::LeftButton, {}, ov->legendCentre(8).toPoint());
+        QCOMPARE(ov->positions().at(ov->position()), QString("50"));
+        session.advance(30);
+        QCOMPARE(ctl.programView().overridePercent, 50);
+        QTest::mouseClick(ov, Qt::LeftButton, {}, ov->legendCentre(11).toPoint());
+        session.advance(30);
+        QCOMPARE(ctl.programView().overridePercent, 100);
+
+        // A program: «Пуск» lights the start button, «Стоп» interrupts it.
+        program::ParseResult parsed = program::parse("%L7\nN1 G1 Z-50 FZ500\nN2 M30\n");
+        for (const program::Program& p : parsed.store.programs())
+            ctl.editablePrograms()->insert(p);
+        QVERIFY(ctl.programsEdited().ok());
+        ctl.selectMode(engine::Mode::Auto);
+        ctl.selectProgram(7);
+        session.advance(20);
+        hold(session, panel.button(machine::Button::CycleStart), 100);
+        QCOMPARE(ctl.state(), engine::ProgramState::Running);
+        session.advance(200);
+        QVERIFY(panel.button(machine::Button::CycleStart)->lit());
+        hold(session, panel.button(machine::Button::CycleStop), 100);
+        QCOMPARE(ctl.state(), engine::ProgramState::Interrupted);
+        QVERIFY(panel.button(machine::Button::CycleStop)->lit());
+
+        // E-stop: the mushroom latches; message 9 in the messages dock.
+        QTest::mouseClick(panel.emergencyStop(), Qt::LeftButton, {},
+                          panel.emergencyStop()->rect().center());
+        QVERIFY(panel.emergencyStop()->isChecked());
+        session.advance(50);
+        QVERIFY(!ctl.words().bit(z::EmergencyStopOk));
+        QVERIFY(hasMessage(messages, "9"));
+        QVERIFY(hasMessage(messages, "A23"));
+        QVERIFY(panel.lamp("alarm")->isOn());
+        QVERIFY(messages.list()->topLevelItem(0)->text(2).contains("STOP"));
+        // Released by a second click, acknowledged with RESET.
+        QTest::mouseClick(panel.emergencyStop(), Qt::LeftButton, {},
+                          panel.emergencyStop()->rect().center());
+        QVERIFY(!panel.emergencyStop()->isChecked());
+        session.advance(50);
+        hold(session, panel.button(machine::Button::Reset), 100);
+        QVERIFY(!hasMessage(messages, "9"));
+        QVERIFY(!hasMessage(messages, "A23"));
+        QVERIFY(!panel.lamp("alarm")->isOn());
+
+        // The door: opens (no spindle, no program), its lamp lights.
+        QVERIFY(panel.doorButton());
+        QTest::mouseClick(panel.doorButton(), Qt::LeftButton, {}, capCentre(panel.doorButton()));
+        session.advance(30);
+        QVERIFY(!session.simulation().view().doorClosed);
+        QVERIFY(panel.lamp("door")->isOn());
+        QVERIFY(hasMessage(messages, "W01"));
+    }
+
+    // The grinder's panel shows its gauge read-out and its wheel lamp.
+    void grinderPanel() {
+        SimulationSession session(profile::builtin("grinder-205"));
+        session.setRunning(false);
+        MachinePanelWidget panel(session);
+        session.advance(20);
+        QVERIFY(panel.lamp("wheel"));
+        QVERIFY(panel.lamp("gauge"));
+        auto* gauge = panel.findChild<QLabel*>("machine.gauge");
+        QVERIFY(gauge);
+        QVERIFY(gauge->text().contains("24.7000"));
+        QVERIFY(panel.findChild<PendantButton*>("machine.changeWheel"));
+        QVERIFY(panel.findChild<PendantButton*>("machine.door"));
+    }
+
+    // Real time: the session advances by what elapsed, paused it stands,
+    // at 10x it runs ten times faster; a stalled frame is capped.
+    void realTime() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        QSignalSpy spy(&session, &SimulationSession::advanced);
+        QElapsedTimer wall;
+        wall.start();
+        QTest::qWait(300);
+        const double real = static_cast<double>(wall.elapsed());
+        const double sim = static_cast<double>(session.timeMs());
+        QVERIFY2(sim > 150 && sim <= real + 20, qPrintable(QString("%1 in %2").arg(sim).arg(real)));
+        QVERIFY(spy.count() >= 5);
+        session.setRunning(false);
+        const std::int64_t paused = session.timeMs();
+        QTest::qWait(100);
+        QCOMPARE(session.timeMs(), paused);
+        session.setSpeed(10);
+        session.setRunning(true);
+        wall.restart();
+        QTest::qWait(200);
+        const double fast = static_cast<double>(session.timeMs() - paused);
+        const double real2 = static_cast<double>(wall.elapsed());
+        QVERIFY2(fast > 5 * 100 && fast <= 10 * (real2 + 20),
+                 qPrintable(QString("%1 in %2").arg(fast).arg(real2)));
+    }
+
+    // The main window builds the session and puts the views into the docks.
+    void mainWindowDocks() {
+        MainWindow w;
+        QVERIFY(w.session());
+        QVERIFY(w.machineDock()->findChild<MachinePanelWidget*>());
+        QCOMPARE(w.messagesDock()->widget(), static_cast<QWidget*>(w.messagesView()));
+        QCOMPARE(w.axesDock()->widget(), static_cast<QWidget*>(w.axesView()));
+        QCOMPARE(w.session()->simulation().description().name, std::string("training-lathe"));
+        // The trainer's faults menu: inject the E-stop circuit fault.
+        QAction* a = w.findChild<QAction*>("action.fault.emergency_stop.x.0.");
+        QVERIFY(a);
+        w.session()->setRunning(false);
+        a->setChecked(true);
+        w.session()->advance(30);
+        QVERIFY(w.session()->controller().alarmRegistry().latched(9));
+        a->setChecked(false);
+        QVERIFY(w.session()->simulation().faults().empty());
+    }
+
+    // With K528_SCREENSHOTS=<dir>: pictures of the workstation in use (a
+    // running program on the lathe, a grinding cycle), to look at.
+    void screenshots() {
+        const QString dir = qEnvironmentVariable("K528_SCREENSHOTS");
+        if (dir.isEmpty())
+            QSKIP("set K528_SCREENSHOTS=<dir> to save pictures");
+        QVERIFY(setLanguage("ru"));
+        for (const char* machine : {"training-lathe", "grinder-205"}) {
+            MainWindow w;
+            w.resize(1600, 900);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            SimulationSession* s = w.session();
+            s->setRunning(false);
+            // The main window runs the default profile; the grinder gets its own session.
+            std::unique_ptr<SimulationSession> own;
+            std::unique_ptr<MachinePanelWidget> ownPanel;
+            if (std::string(machine) != "training-lathe") {
+                own = std::make_unique<SimulationSession>(profile::builtin(machine));
+                own->setRunning(false);
+                s = own.get();
+            }
+            machine::Simulation& sim = s->simulation();
+            sim.pressFor(machine::Button::DrivesOn, 100);
+            s->advance(600);
+            engine::Controller& ctl = s->controller();
+            ctl.selectMode(engine::Mode::Reference);
+            for (auto [a, b] :
+                 {std::pair{engine::AxisId::X,
+                            ctl.c()[9] ? machine::Button::JogXMinus : machine::Button::JogXPlus},
+                  std::pair{engine::AxisId::Z, machine::Button::JogZPlus}}) {
+                sim.pressFor(b, 100);
+                waitFor(
+                    *s, [&] { return ctl.axisView(a).homing; }, 1000);
+                waitFor(
+                    *s, [&] { return !ctl.axisView(a).homing; }, 600000);
+            }
+            ctl.selectMode(engine::Mode::Auto);
+            ctl.selectProgram(1);
+            s->advance(50);
+            sim.pressFor(machine::Button::CycleStart, 100);
+            if (own) {
+                // The gauge cycle: stop in the middle of finishing.
+                waitFor(
+                    *s, [&] { return ctl.programView().frameNumber == 6; }, 60000);
+                sim.selectHandwheel(machine::HandwheelAxis::X);
+                ownPanel = std::make_unique<MachinePanelWidget>(*s);
+                ownPanel->resize(560, 520);
+                s->advance(10);
+                QVERIFY(ownPanel->grab().save(dir + "/grinder-panel.png"));
+            } else {
+                sim.selectHandwheel(machine::HandwheelAxis::Z);
+                sim.setOverrideSwitch(9);
+                waitFor(
+                    *s, [&] { return ctl.programView().frameNumber == 8; }, 60000);
+                s->advance(700);
+                w.axesDock()->raise();
+                QApplication::processEvents();
+                QVERIFY(w.grab().save(dir + "/lathe-axes.png"));
+                w.messagesDock()->raise();
+                QApplication::processEvents();
+                QVERIFY(w.grab().save(dir + "/lathe-running.png"));
+            }
+        }
+        QVERIFY(setLanguage("en"));
+    }
+};
+
+QTEST_MAIN(TestMachinePanel)
+#include "test_machine_panel.moc"
