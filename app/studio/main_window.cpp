@@ -67,12 +67,17 @@ QDockWidget* MainWindow::addDock(const char* objectName, Qt::DockWidgetArea area
 
 void MainWindow::createDocks() {
     k923Dock_ = addDock("dock.k923", Qt::RightDockWidgetArea);
-    // The K923 panel. Until the panel model drives it, it shows what a
-    // switched-on panel without data shows: the lit, empty LCD, LEDs off.
+    // The K923 panel: the session's panel model draws it and takes its keys.
     delete k923Dock_->widget();
     k923_ = new K923Widget(k923Dock_);
-    k923_->setDisplay(K923Widget::blankDisplay());
+    k923_->setDisplay(session_->panel().display());
     k923Dock_->setWidget(k923_);
+    connect(k923_, &K923Widget::keyPressed, this, [this](panel::KeyPress k) {
+        session_->panel().press(k);
+        k923_->setDisplay(session_->panel().display());
+    });
+    connect(session_, &SimulationSession::advanced, k923_,
+            [this] { k923_->setDisplay(session_->panel().display()); });
     machineDock_ = addDock("dock.machine", Qt::RightDockWidgetArea);
     delete machineDock_->widget();
     auto* scroll = new QScrollArea(machineDock_);

@@ -3,6 +3,8 @@
 // its lamps follow the machine; the messages and axes docks show it; the
 // session advances with real time, pauses and runs faster.
 #include "engine/interface_words.h"
+#include "k923/k923_widget.h"
+#include "k923/panel_key.h"
 #include "language.h"
 #include "machine/machine_panel.h"
 #include "machine/pendant_controls.h"
@@ -245,6 +247,31 @@ private slots:
         QVERIFY(w.session()->controller().alarmRegistry().latched(9));
         a->setChecked(false);
         QVERIFY(w.session()->simulation().faults().empty());
+    }
+
+    // The K923 in the main window is the session's panel model: its LCD shows
+    // the engine's screens, its keys reach the engine, its LEDs follow Z1906.
+    void k923DrivesTheEngine() {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        SimulationSession* s = w.session();
+        s->setRunning(false);
+        s->advance(50);
+        K923Widget* k = w.k923();
+        QVERIFY(k);
+        QCOMPARE(QString::fromStdString(k->display().lcd.lines[0]).left(3), QString("РУЧ"));
+        QTest::mouseClick(k->key(panel::Key::F1), Qt::LeftButton);
+        QCOMPARE(s->controller().mode(), engine::Mode::Auto);
+        QCOMPARE(QString::fromStdString(k->display().lcd.lines[0]).left(3), QString("АВТ"));
+        // The PC keyboard: F2 is РУЧНОЙ.
+        k->setFocus();
+        QTest::keyClick(k, Qt::Key_F2);
+        QCOMPARE(s->controller().mode(), engine::Mode::Manual);
+        // The display follows the machine as time passes (no key pressed).
+        s->controller().selectMode(engine::Mode::Reference);
+        s->advance(20);
+        QCOMPARE(QString::fromStdString(k->display().lcd.lines[0]).left(3), QString("ПБТ"));
     }
 
     // With K528_SCREENSHOTS=<dir>: pictures of the workstation in use (a

@@ -8,6 +8,7 @@ namespace k528::studio {
 SimulationSession::SimulationSession(const profile::MachineProfile& profile, QObject* parent)
     : QObject(parent), sim_(std::make_unique<machine::Simulation>(profile)) {
     sim_->powerOn();
+    panel_ = std::make_unique<panel::Panel>(sim_->controller());
     timer_.setTimerType(Qt::PreciseTimer);
     timer_.setInterval(kFrameIntervalMs);
     connect(&timer_, &QTimer::timeout, this, &SimulationSession::frame);

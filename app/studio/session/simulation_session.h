@@ -5,11 +5,13 @@
 // kMaxFrameMs of real time, so a stalled window does not make the machine
 // leap. A trainer may pause it or run it faster (1×, 2×, 10× ...).
 //
-// Every view of the workstation redraws on advanced(). The K923 panel model
-// (panel::Panel) is built over controller() by the main window.
+// Every view of the workstation redraws on advanced(). The session also owns
+// the K923 panel model (panel::Panel) over controller(): the desktop K923
+// widget shows its display and hands it the keys, as the PC link will.
 #pragma once
 
 #include "machine/simulation.h"
+#include "panel/panel.h"
 #include "profile/profile.h"
 
 #include <QElapsedTimer>
@@ -34,6 +36,8 @@ public:
     machine::Simulation& simulation() { return *sim_; }
     const machine::Simulation& simulation() const { return *sim_; }
     engine::Controller& controller() { return sim_->controller(); }
+    // The K923 of this machine.
+    panel::Panel& panel() { return *panel_; }
 
     bool isRunning() const { return running_; }
     double speed() const { return speed_; }
@@ -57,6 +61,7 @@ private slots:
 
 private:
     std::unique_ptr<machine::Simulation> sim_;
+    std::unique_ptr<panel::Panel> panel_;
     QTimer timer_;
     QElapsedTimer clock_;
     double owedMs_ = 0; // simulated time not yet advanced (less than a tick)
