@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "cli.h"
+#include "machine_profile.h"
 #include "profile/builtin.h"
 #include "profile/text_format.h"
 #include "program/validator.h"
@@ -49,19 +50,18 @@ program::AxisLimits axisLimits(const profile::MachineProfile& p, catalog::Axis a
     return a;
 }
 
-bool loadProfile(const std::string& nameOrPath, program::ValidateOptions& options) {
-    try {
-        const profile::MachineProfile p = profile::load(nameOrPath);
-        program::MachineLimits m;
-        m.x = axisLimits(p, catalog::Axis::X);
-        m.z = axisLimits(p, catalog::Axis::Z);
-        options.machine = m;
-        options.nestingLimit = static_cast<int>(p.simulation.getInt("nesting_limit", program::kDefaultNestingLimit));
-        return true;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "k528: %s\n", e.what());
+// The machine's limits and feeds (--profile, --db) as validation options.
+bool machineOptions(const Args& args, program::ValidateOptions& options) {
+    const std::optional<profile::MachineProfile> p = machineProfile(args);
+    if (!p)
         return false;
-    }
+    program::MachineLimits m;
+    m.x = axisLimits(*p, catalog::Axis::X);
+    m.z = axisLimits(*p, catalog::Axis::Z);
+    options.machine = m;
+    options.nestingLimit =
+        static_cast<int>(p->simulation.getInt("nesting_limit", program::kDefaultNestingLimit));
+    return true;
 }
 
 json::Value fileJson(const std::string& file, const program::CheckResult& r) {
@@ -142,7 +142,7 @@ bool parseProgramNumber(const std::optional<std::string>& value, int& number) {
 }
 
 int runCheck(std::span<const std::string> argv) {
-    const Args args(argv, {"--json"}, {"--number", "--lang", "--profile"});
+    const Args args(argv, {"--json"}, {"--number", "--lang", "--profile", "--db"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().empty())
@@ -154,7 +154,7 @@ int runCheck(std::span<const std::string> argv) {
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
         return usageError("--lang is ru or en, not '" + *l + "'");
     program::ValidateOptions options;
-    if (const auto p = args.value("--profile"); p && !loadProfile(*p, options))
+    if (args.value("--profile") && !machineOptions(args, options))
         return ExitUsage;
 
     const bool asJson = args.has("--json");

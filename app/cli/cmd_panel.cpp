@@ -7,6 +7,7 @@
 // four LCD lines, or JSON with the LEDs.
 #include "args.h"
 #include "cli.h"
+#include "machine_profile.h"
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 #include "panel/keys.h"
@@ -59,7 +60,7 @@ json::Array ledList(std::uint32_t bits, int count) {
 } // namespace
 
 int runPanel(std::span<const std::string> argv) {
-    const Args args(argv, {"--json"}, {"--profile", "--keys"});
+    const Args args(argv, {"--json"}, {"--profile", "--db", "--keys"});
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
@@ -74,13 +75,10 @@ int runPanel(std::span<const std::string> argv) {
         steps.push_back(*step);
     }
 
-    profile::MachineProfile profile;
-    try {
-        profile =
-            profile::load(args.value("--profile").value_or(std::string(profile::kDefaultProfile)));
-    } catch (const std::exception& e) {
-        return usageError(e.what());
-    }
+    const std::optional<profile::MachineProfile> loaded = machineProfile(args);
+    if (!loaded)
+        return ExitUsage;
+    const profile::MachineProfile& profile = *loaded;
 
     engine::Controller controller(profile);
     engine::IdealMachine machine(controller);

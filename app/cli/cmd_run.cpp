@@ -4,6 +4,7 @@
 #include "args.h"
 #include "catalog/messages.h"
 #include "cli.h"
+#include "machine_profile.h"
 #include "engine/rparams.h"
 #include "engine/self_test.h"
 #include "machine/run.h"
@@ -141,7 +142,7 @@ void printPlain(const engine::RunResult& r, Lang lang) {
 
 int runRun(std::span<const std::string> argv) {
     const Args args(argv, {"--json", "--no-home"},
-                    {"--profile", "--program", "--param", "--r", "--override", "--max-seconds",
+                    {"--profile", "--db", "--program", "--param", "--r", "--override", "--max-seconds",
                      "--number", "--lang", "--m0-wait"});
     if (!args.ok())
         return usageError(args.error());
@@ -154,14 +155,10 @@ int runRun(std::span<const std::string> argv) {
     if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
         return ExitUsage;
 
-    profile::MachineProfile prof;
-    try {
-        prof =
-            profile::load(args.value("--profile").value_or(std::string(profile::kDefaultProfile)));
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "k528: %s\n", e.what());
+    const std::optional<profile::MachineProfile> loaded = machineProfile(args);
+    if (!loaded)
         return ExitUsage;
-    }
+    profile::MachineProfile prof = *loaded;
     for (const std::string& p : args.values("--param")) {
         long long n = 0, v = 0;
         if (!parseAssignment(p, n, v))

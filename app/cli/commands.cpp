@@ -16,14 +16,17 @@ int runPanel(std::span<const std::string> args); // cmd_panel.cpp
 
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
-        {"check", "check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...",
+        {"check", "check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] [--db PATH] FILE...",
          "Validate program files: one line per diagnostic, or JSON.",
          "Options:\n"
          "  --json               print {\"files\":[{\"file\",\"programs\",\"diagnostics\"}]} (cli.md)\n"
          "  --number N           number of the program of a file without %L header (default 1)\n"
          "  --lang ru|en         language of the plain output (default ru)\n"
          "  --profile NAME|PATH  also check against a machine's constants (software limits,\n"
-         "                       F УСК.АВТ., axes, discretes, nesting limit): built-in name or file\n"
+         "                       F УСК.АВТ., axes, discretes, nesting limit): a machine of the\n"
+         "                       database, a built-in name or a machine file\n"
+         "  --db PATH            the database of --profile (default $K528_DB or\n"
+         "                       ~/.local/share/k528studio/k528.db; a missing one is skipped)\n"
          "FILE '-' reads standard input. Exit codes: 0 no errors (warnings allowed),\n"
          "1 errors found, 2 usage or I/O error.\n",
          runCheck},
@@ -41,12 +44,15 @@ std::span<const Command> commands() {
          "The database of machines: constants, R-parameters, programs, messages, history.",
          kDbDetails, runDb},
         {"run",
-         "run [--json] [--profile NAME|PATH] [--program N] [--param N=V]... [--r N=V]... [--no-home]\n"
+         "run [--json] [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]... [--no-home]\n"
          "           [--override PCT] [--max-seconds S] [--m0-wait S] [--number N] [--lang ru|en] FILE",
          "Run a program on the simulated machine, headless, and report the end state.",
          "Options:\n"
          "  --json               print the end state as JSON (cli.md)\n"
-         "  --profile NAME|PATH  machine profile: grinder-205, training-lathe (default) or a file\n"
+         "  --profile NAME|PATH  machine profile: a machine of the database, else built in\n"
+         "                       grinder-205 or training-lathe (default), else a machine file\n"
+         "  --db PATH            the database of --profile (default $K528_DB or\n"
+         "                       ~/.local/share/k528studio/k528.db; a missing one is skipped)\n"
          "  --program N          program of the file to start (default: the first)\n"
          "  --param N=V          machine constant C<N> for this run (repeatable)\n"
          "  --r N=V              preset R<N> before the start (repeatable)\n"
@@ -58,10 +64,13 @@ std::span<const Command> commands() {
          "  --lang ru|en         language of the plain output and diagnostics (default ru)\n"
          "Exit codes: 0 completed; 1 errors in the file, an alarm or a timeout; 2 usage or I/O error.\n",
          runRun},
-        {"panel", "panel [--profile NAME|PATH] [--keys \"KEY KEY ...\"] [--json]",
+        {"panel", "panel [--profile NAME|PATH] [--db PATH] [--keys \"KEY KEY ...\"] [--json]",
          "Press keys on the K923 panel of a freshly powered-on controller and print the LCD.",
          "Options:\n"
-         "  --profile NAME|PATH  machine profile: grinder-205, training-lathe (default) or a file\n"
+         "  --profile NAME|PATH  machine profile: a machine of the database, else built in\n"
+         "                       grinder-205 or training-lathe (default), else a machine file\n"
+         "  --db PATH            the database of --profile (default $K528_DB or\n"
+         "                       ~/.local/share/k528studio/k528.db; a missing one is skipped)\n"
          "  --keys \"KEY ...\"     keys in order: F1..F8 K1..K12 L1..L4 UP DOWN LEFT RIGHT MODE HELP\n"
          "                       ESC SHIFT PAR ACK INS DEL ENTER 0..9 . + - * / = % !; SHIFT+KEY;\n"
          "                       WAIT:S lets S seconds of machine time pass\n"

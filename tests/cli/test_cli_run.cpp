@@ -124,6 +124,46 @@ private slots:
                      ->asInt(),
                  2);
     }
+    // --profile NAME takes the machine from the database first (the shop's
+    // constants as `k528 db set` left them), --db names it; without a
+    // database file the built-in profile runs.
+    void profileFromTheDatabase() {
+        Files f;
+        const QString p = f.write("rapid.k528", "%L1\nN1 G0 Z-60\n");
+        const QString db = f.dir.filePath("shop.db");
+        const auto builtin = runK528({"run", "--json", "--db", db, p});
+        QCOMPARE(builtin.exitCode, 0);
+        QVERIFY(!QFile::exists(db)); // looking for a machine creates nothing
+        QCOMPARE(runK528({"db", "init", "--db", db}).exitCode, 0);
+        const auto same = runK528({"run", "--json", "--db", db, p});
+        QCOMPARE(same.out, builtin.out); // the seeded machine is the built-in one
+        // C94 (F УСК.АВТ. of Z) halved in the database: the rapid takes longer.
+        const auto set = runK528({"db", "set", "training-lathe", "C094=300000", "--db", db});
+        QVERIFY2(set.exitCode == 0, qPrintable(set.err));
+        const auto slower = runK528({"run", "--json", "--db", db, p});
+        QCOMPARE(slower.exitCode, 0);
+        QVERIFY(parseJson(slower).find("time_s")->asDouble() >
+                parseJson(builtin).find("time_s")->asDouble() + 0.4);
+        // A machine only the database knows, under its own name.
+        const QString file = f.dir.filePath("lathe2.k528m");
+        QCOMPARE(runK528({"db", "export", "training-lathe", "--out", file, "--db", db}).exitCode, 0);
+        QCOMPARE(runK528({"db", "import", file, "--as", "lathe-2", "--db", db}).exitCode, 0);
+        const auto other = runK528({"run", "--json", "--profile", "lathe-2", "--db", db, p});
+        QVERIFY2(other.exitCode == 0, qPrintable(other.err));
+        QCOMPARE(other.out, slower.out);
+        // k528 check and k528 panel take the same machine.
+        const QString far = f.write("far.k528", "%L1\nN1 G0 Z-200\n");
+        QVERIFY(runK528({"check", "--profile", "lathe-2", "--db", db, far}).out.contains("[M"));
+        QCOMPARE(runK528({"panel", "--profile", "lathe-2", "--db", db}).exitCode, 0);
+        const auto unknown = runK528({"run", "--profile", "lathe-3", "--db", db, p});
+        QCOMPARE(unknown.exitCode, 2);
+        QVERIFY(unknown.err.contains("lathe-3"));
+        // A damaged database is an error, not a silent fall-back.
+        const QString bad = f.write("bad.db", QByteArray(4096, 'x'));
+        const auto damaged = runK528({"run", "--db", bad, p});
+        QCOMPARE(damaged.exitCode, 2);
+        QVERIFY(!damaged.err.isEmpty());
+    }
     void usageErrors() {
         const QString s = samples() + "lathe-shaft.k528";
         const QList<QStringList> bad = {

@@ -218,6 +218,9 @@ private slots:
     void descriptionLookup() {
         profile::MachineProfile p = profile::builtin("training-lathe");
         p.name = "my-lathe";
+        // The shipped profile names its description, so a copy keeps it.
+        QCOMPARE(machine::Simulation::descriptionFor(p).name, std::string("training-lathe"));
+        p.simulation.erase("machine");
         QCOMPARE(machine::Simulation::descriptionFor(p).name, std::string("generic"));
         machine::Simulation generic(p);
         QVERIFY(!generic.hasDoor());

@@ -44,6 +44,12 @@ private slots:
             QCOMPARE(r.c().mode(), Mode::MachineData); // open for viewing
             QCOMPARE(r.p->access(), panel::Access::ViewOnly);
         }
+        {
+            Rig r; // a fifth digit is not dropped: «11111» is not «1111»
+            r.keys("F6 1 1 1 1 1 ENTER");
+            QVERIFY(r.p->passwordShown());
+            QVERIFY(r.p->passwordScreen().closed());
+        }
         for (const char* f : {"F6", "F7"}) {
             Rig r;
             r.keys("F1");

@@ -58,6 +58,7 @@ private slots:
                                     << "%L5\nN1 X10\nN2\nN3 GOTO 1\n";
         QTest::newRow("F on X only") << "DOWN DOWN RIGHT 0 . 0 0 1 ENTER"
                                      << "%L5\nFX0.001\n";
+        QTest::newRow("F 10000") << "DOWN DOWN RIGHT 1 0 0 0 0 ENTER" << "%L5\nFX10000\n";
     }
     void typedFramesAreTheParsersModel() {
         QFETCH(QString, keys);
@@ -71,6 +72,16 @@ private slots:
         QCOMPARE(QString::fromStdString(programText(r.c(), 5)), text);
         QVERIFY(sameAsParsed(r.c(), 5, text.toStdString()));
         QVERIFY(!r.lines().contains("ОШИБКА ВВОДА"));
+    }
+
+    // F= has 7 cells: the largest feed, 10000, is shown with one decimal
+    // «10000.0», so that nothing is cut.
+    void largestFeedFitsItsField() {
+        Rig r;
+        r.keys(kOpen);
+        r.keys("5 ENTER DOWN DOWN RIGHT 1 0 0 0 0 ENTER DOWN 9 9 9 9 . 5 ENTER");
+        QCOMPARE(r.line(2), QString("X          F=10000.0"));
+        QCOMPARE(r.line(3), QString("Z          F=9999.50"));
     }
 
     // INS in the middle of a program; DEL of the frame; the rest stays.

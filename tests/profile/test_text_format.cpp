@@ -185,7 +185,7 @@ private slots:
         QVERIFY(text.find("\n[end program]\n") != std::string::npos);
         QVERIFY(text.find("\n#7=ПРАВКА КРУГА\n") != std::string::npos);
         QVERIFY(text.find("\nA01=") != std::string::npos);
-        QVERIFY(text.find("\n[simulation]\ntick_ms=1\nnesting_limit=8\n") != std::string::npos);
+        QVERIFY(text.find("\n[simulation]\nmachine=grinder-205\ntick_ms=1\nnesting_limit=8\n") != std::string::npos);
     }
 
     // Comments are ignored, keys may be written loosely, CRLF is fine.

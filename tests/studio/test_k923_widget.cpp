@@ -11,6 +11,7 @@
 #include "k923/lcd_widget.h"
 #include "k923/panel_key.h"
 #include "main_window.h"
+#include "session/simulation_session.h"
 #include "panel/lcd_font.h"
 
 #include <QAction>
@@ -606,16 +607,16 @@ private slots:
         QVERIFY(k528::studio::keyDescription(Key::L2).contains("C140"));
     }
 
-    void mainWindowCarriesTheBlankPanel() {
+    void mainWindowCarriesTheSessionsPanel() {
         k528::studio::MainWindow w;
         auto* panel = w.k923();
         QVERIFY(panel);
         QCOMPARE(w.k923Dock()->widget(), panel);
         QCOMPARE(w.findChild<K923Widget*>(), panel);
-        // Honest power-on: backlight on, nothing written, LEDs off.
-        QCOMPARE(panel->display(), K923Widget::blankDisplay());
+        // The powered-on controller's РУЧНОЙ screen, drawn by the panel model.
+        QCOMPARE(panel->display(), w.session()->panel().display());
         QVERIFY(panel->lcd()->backlight());
-        QCOMPARE(panel->lcd()->text(), QStringList(4, QString(20, ' ')).join('\n'));
+        QVERIFY(panel->lcd()->text().startsWith(QStringLiteral("РУЧ")));
     }
 
     void writesSampleImages() {

@@ -97,6 +97,15 @@ std::string valueText(const std::optional<Value>& v, int decimals) {
     return v->isR() ? "R" + std::to_string(v->rIndex) : literalText(v->literal, decimals);
 }
 
+// valueText padded to at most `decimals`, fewer when the field is too narrow
+// for them (F=10000.00 in 7 cells shows «10000.0»: the same feed).
+std::string fittedValueText(const std::optional<Value>& v, int decimals, int width) {
+    std::string t = valueText(v, decimals);
+    for (int d = decimals - 1; d >= 0 && static_cast<int>(t.size()) > width; --d)
+        t = valueText(v, d);
+    return t;
+}
+
 std::string operandText(const std::optional<Operand>& o) {
     if (!o)
         return {};
@@ -750,10 +759,10 @@ void FrameEditor::render(Canvas& c, const Context& ctx) const {
             value = valueText(d.z, decZ);
             break;
         case F::FX:
-            value = valueText(d.fx, 2);
+            value = fittedValueText(d.fx, 2, s.width);
             break;
         case F::FZ:
-            value = valueText(d.fz, 2);
+            value = fittedValueText(d.fz, 2, s.width);
             break;
         case F::A:
             value = operandText(d.a);

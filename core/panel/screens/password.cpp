@@ -6,12 +6,12 @@ void PasswordScreen::start(engine::Mode target, bool imposed) {
     target_ = target;
     imposed_ = imposed;
     closed_ = false;
-    entry_.start(Entry::Kind::Digits, 4);
+    entry_.start(Entry::Kind::Digits, kMaxTyped);
 }
 
 void PasswordScreen::setClosed() {
     closed_ = true;
-    entry_.start(Entry::Kind::Digits, 4);
+    entry_.start(Entry::Kind::Digits, kMaxTyped);
 }
 
 void PasswordScreen::render(Canvas& c, const Context&) const {

@@ -17,13 +17,16 @@ namespace k528::panel {
 
 class PasswordScreen : public Screen {
 public:
+    // Digits the line takes: more than the password's four, so that a
+    // mistyped fifth digit makes the password wrong rather than vanish.
+    static constexpr int kMaxTyped = 8;
     // Asks for the password of mode `target`; `imposed`: the PLC has already
     // put the engine in that mode (ESC cannot go back).
     void start(engine::Mode target, bool imposed);
     void render(Canvas& c, const Context& ctx) const override;
     void key(KeyPress k, Context& ctx) override;
     bool editing() const override { return !entry_.text().empty(); }
-    void cancelEdit() override { entry_.start(Entry::Kind::Digits, 4); }
+    void cancelEdit() override { entry_.start(Entry::Kind::Digits, kMaxTyped); }
 
     engine::Mode target() const { return target_; }
     bool imposed() const { return imposed_; }

@@ -1,0 +1,22 @@
+#include "machine_profile.h"
+
+#include "db/location.h"
+#include "profile/builtin.h"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+namespace k528::cli {
+
+std::optional<profile::MachineProfile> machineProfile(const Args& args) {
+    const std::string name = args.value("--profile").value_or(std::string(profile::kDefaultProfile));
+    try {
+        return db::loadProfile(name, args.value("--db").value_or(std::string()));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "k528: %s\n", e.what());
+        return std::nullopt;
+    }
+}
+
+} // namespace k528::cli
