@@ -163,6 +163,10 @@ void Interpreter::endProgram() {
         if (programMotion(u.owner))
             u.owner = MotionOwner::None;
     }
+    // M02/M30 in a subprogram ends the whole program: no level is open any
+    // more (R158 = 0); the program and frame numbers stay where it ended.
+    depth_ = 0;
+    c_.r.set(r::NestingLevel, 0);
     c_.state = ProgramState::Ended;
     c_.endOrReset = true;
     c_.stopHold = false;
@@ -538,7 +542,10 @@ bool Interpreter::startOscillation(int a, const std::optional<program::Value>& s
 
 void Interpreter::actions() {
     const program::IsoFrame& iso = *iso_;
-    // Gx92: the current coordinate becomes the value; the zero offset absorbs it.
+    // Gx92: the current coordinate becomes the value; the zero offset absorbs
+    // it. The current coordinate of a program is where it commanded the axis
+    // (the setpoint, standing at the last target): the servo's rest error,
+    // up to ДОПУСК ПОЗ, does not creep into the zero offset.
     for (int a = 0; a < kAxisCount; ++a) {
         const std::size_t i = static_cast<std::size_t>(a);
         if (!setPos_[i] || !(a == 0 ? iso.x : iso.z))
@@ -549,7 +556,7 @@ void Interpreter::actions() {
             return;
         }
         const std::int64_t zo =
-            zeroOffsetFor(u.machineDisc(), value_[i], c_.r, a, c_.programExclusion);
+            zeroOffsetFor(u.toDisc(u.servo.setpoint()), value_[i], c_.r, a, c_.programExclusion);
         if (!fitsR(zo)) {
             error(46);
             return;

@@ -102,8 +102,11 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     }
     for (const auto& [n, v] : options.rPresets)
         ctl.setR(n, v);
+    // The operator homes at 100 % and sets the program's override before
+    // «Пуск»: --override is the program's, not the reference-point cycle's.
+    constexpr int kFullOverrideCode = 10;
     const int code = units::overridePercentToCode(options.overridePercent);
-    machine.setOverrideCode(code >= 0 ? code : 10);
+    machine.setOverrideCode(kFullOverrideCode);
     const std::int64_t limitMs =
         static_cast<std::int64_t>(std::llround(options.maxSeconds * 1000.0));
 
@@ -134,7 +137,8 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
             // The cycle starts once the PLC has passed the button on; it ends
             // by itself (referenced, or 40/41 when the cam or the mark is
             // missing, the axis stopping at a limit switch at the latest): an
-            // hour of machine time is only a guard.
+            // hour of machine time is only a guard. --max-seconds is the
+            // program's limit and does not cut the homing short.
             runUntil(
                 machine,
                 [&] {
@@ -158,6 +162,7 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
         res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
     }
 
+    machine.setOverrideCode(code >= 0 ? code : kFullOverrideCode);
     ctl.selectMode(Mode::Auto);
     ctl.selectProgram(number);
     machine.pressStart();

@@ -100,6 +100,14 @@ private slots:
         const json::Value v = parseJson(r);
         QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("timeout"));
         QVERIFY(std::fabs(v.find("time_s")->asDouble() - 5.0) < 0.01);
+        // --override is the program's: the homing runs at 100 % and the
+        // program at 0 % stands still until the limit.
+        const auto z = runK528({"run", "--json", "--override", "0", "--max-seconds", "2", p});
+        QCOMPARE(z.exitCode, 1);
+        const json::Value w = parseJson(z);
+        QCOMPARE(QString::fromStdString(w.find("status")->asString()), QString("timeout"));
+        QCOMPARE(w.find("home_time_s")->asDouble(), v.find("home_time_s")->asDouble());
+        QVERIFY(std::fabs(w.find("time_s")->asDouble() - 2.0) < 0.01);
     }
     void presetsAndOverrides() {
         Files f;

@@ -45,6 +45,22 @@ private slots:
             QCOMPARE(r.ctl->r(1), 2); // from the top again; N3 never runs
         }
     }
+    // M02 inside a subprogram ends the program: R158 back to 0, «Пуск»
+    // starts the main program from its top.
+    void m02InSubprogram() {
+        Rig r("training-lathe", noHoming);
+        r.load("%L1\nN1 R1=R1+1\nN2 L2\nN3 R3=1\n%L2\nN1 L3\n%L3\nN1 M2\n");
+        r.start(1);
+        QVERIFY(r.runToEnd());
+        QCOMPARE(r.ctl->state(), ProgramState::Ended);
+        QCOMPARE(r.ctl->r(158), 0);
+        QCOMPARE(r.ctl->r(3), 0); // N3 of the main program never ran
+        r.m->pressStart();
+        r.advance(300);
+        QCOMPARE(r.ctl->state(), ProgramState::Ended);
+        QCOMPARE(r.ctl->r(1), 2);
+        QCOMPARE(r.ctl->r(158), 0);
+    }
     // The end of the main program without M02 is its end too.
     void endOfText() {
         Rig r("training-lathe", noHoming);
