@@ -601,6 +601,21 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::MachineSource</name>
+    <message>
+        <source>The machine database is not used: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>database %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>built-in</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -756,6 +771,26 @@
     </message>
     <message>
         <source>&amp;Clear all faults</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine: %1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -601,6 +601,21 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::MachineSource</name>
+    <message>
+        <source>The machine database is not used: %1</source>
+        <translation>База данных станков не используется: %1</translation>
+    </message>
+    <message>
+        <source>database %1</source>
+        <translation>база данных %1</translation>
+    </message>
+    <message>
+        <source>built-in</source>
+        <translation>встроенный</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -757,6 +772,26 @@
     <message>
         <source>&amp;Clear all faults</source>
         <translation>&amp;Убрать все неисправности</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>Станок %1 не загружается: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Machine</source>
+        <translation>&amp;Станок</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Станок: %1</translation>
+    </message>
+    <message>
+        <source>Machine: %1 (%2)</source>
+        <translation>Станок: %1 (%2)</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,8 @@
 
 #include "language.h"
 #include "main_window.h"
+#include "profile/builtin.h"
+#include "session/machine_source.h"
 #include "util/version.h"
 
 int main(int argc, char** argv) {
@@ -26,7 +28,12 @@ int main(int argc, char** argv) {
                                   "file.png");
     QCommandLineOption delayOption("screenshot-delay", "Milliseconds to run before the screenshot (default 800).",
                                    "ms", "800");
-    cli.addOptions({langOption, shotOption, delayOption});
+    QCommandLineOption profileOption(
+        "profile",
+        "Machine to simulate: a machine of the database, a built-in profile (training-lathe, "
+        "grinder-205) or a machine file (default: the last one chosen, else training-lathe).",
+        "name|path");
+    cli.addOptions({langOption, profileOption, shotOption, delayOption});
     cli.process(app);
 
     const QString lang = cli.isSet(langOption) ? cli.value(langOption) : k528::studio::savedOrSystemLanguage();
@@ -35,13 +42,34 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    k528::studio::MainWindow window;
-    window.show();
+    const QString wanted =
+        cli.isSet(profileOption) ? cli.value(profileOption) : k528::studio::startMachineName();
+    k528::studio::MachineChoice machine;
+    try {
+        machine = k528::studio::loadMachine(wanted);
+    } catch (const std::exception& e) {
+        if (cli.isSet(profileOption)) {
+            std::fprintf(stderr, "k528studio: %s\n", e.what());
+            return 2;
+        }
+        // The remembered machine is gone (deleted from the database): the default.
+        std::fprintf(stderr, "k528studio: %s; starting %s\n", e.what(),
+                     k528::profile::kDefaultProfile.data());
+        machine = k528::studio::loadMachine(QString::fromLatin1(k528::profile::kDefaultProfile.data()));
+    }
+    auto* window = new k528::studio::MainWindow(machine);
+    window->setAttribute(Qt::WA_DeleteOnClose);
+    window->show();
 
     if (cli.isSet(shotOption)) {
         const QString file = cli.value(shotOption);
-        QTimer::singleShot(cli.value(delayOption).toInt(), &window, [&window, file] {
-            const bool ok = window.grab().save(file, "PNG");
+        QTimer::singleShot(cli.value(delayOption).toInt(), &app, [file] {
+            // The main window shown now (File > Machine may have replaced it).
+            QWidget* shown = nullptr;
+            for (QWidget* w : QApplication::topLevelWidgets())
+                if (w->isVisible() && qobject_cast<k528::studio::MainWindow*>(w))
+                    shown = w;
+            const bool ok = shown && shown->grab().save(file, "PNG");
             if (!ok)
                 std::fprintf(stderr, "k528studio: cannot write %s\n", qPrintable(file));
             QApplication::exit(ok ? 0 : 2);

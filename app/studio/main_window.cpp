@@ -23,7 +23,12 @@
 
 namespace k528::studio {
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+MainWindow::MainWindow(QWidget* parent)
+    : MainWindow(MachineChoice{profile::builtin(profile::kDefaultProfile), QString(), QString()},
+                 parent) {}
+
+MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
+    : QMainWindow(parent), machine_(machine) {
     setObjectName("mainWindow");
     setWindowIcon(QIcon(":/icons/k528studio.svg"));
     workArea_ = new QTabWidget(this);
@@ -31,9 +36,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     workArea_->setDocumentMode(true);
     setCentralWidget(workArea_);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
-    session_ = new SimulationSession(profile::builtin(profile::kDefaultProfile), this);
+    session_ = new SimulationSession(machine_.profile, this);
     createDocks();
     createMenus();
+    machineLabel_ = new QLabel(this);
+    machineLabel_->setObjectName("status.machine");
+    statusBar()->addPermanentWidget(machineLabel_);
     timeLabel_ = new QLabel(this);
     timeLabel_->setObjectName("status.machineTime");
     statusBar()->addPermanentWidget(timeLabel_);
@@ -107,6 +115,11 @@ void MainWindow::createDocks() {
 
 void MainWindow::createMenus() {
     fileMenu_ = menuBar()->addMenu(QString());
+    machineMenu_ = fileMenu_->addMenu(QString());
+    machineMenu_->setObjectName("menu.machine");
+    connect(machineMenu_, &QMenu::aboutToShow, this, &MainWindow::fillMachineMenu);
+    fillMachineMenu();
+    fileMenu_->addSeparator();
     quitAction_ = fileMenu_->addAction(QString(), QKeySequence::Quit, qApp, &QApplication::quit);
     quitAction_->setObjectName("action.quit");
 
@@ -138,6 +151,42 @@ void MainWindow::createMenus() {
                               "<p>Licence: GNU GPL version 3 or later.</p>")
                                .arg(QString::fromLatin1(k528::version_string)));
     });
+}
+
+void MainWindow::fillMachineMenu() {
+    machineMenu_->clear();
+    QString warning;
+    const QStringList names = machineNames(&warning);
+    for (const QString& n : names) {
+        QAction* a = machineMenu_->addAction(n);
+        a->setObjectName("action.machine." + n);
+        a->setCheckable(true);
+        a->setChecked(QString::fromStdString(machine_.profile.name) == n);
+        connect(a, &QAction::triggered, this, [this, n] { switchMachine(n); });
+    }
+    if (!warning.isEmpty()) {
+        machineMenu_->addSeparator();
+        machineMenu_->addAction(warning)->setEnabled(false);
+    }
+}
+
+MainWindow* MainWindow::switchMachine(const QString& name) {
+    MachineChoice choice;
+    try {
+        choice = loadMachine(name);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Machine"),
+                             tr("The machine %1 cannot be loaded: %2").arg(name, QString::fromUtf8(e.what())));
+        return nullptr;
+    }
+    rememberMachine(name);
+    auto* w = new MainWindow(choice);
+    w->setAttribute(Qt::WA_DeleteOnClose);
+    w->setGeometry(geometry());
+    w->show();
+    session_->setRunning(false);
+    close();
+    return w;
 }
 
 void MainWindow::createSimulationMenu() {
@@ -252,6 +301,14 @@ QString faultTitle(const machine::FaultSpec& f) {
 void MainWindow::retranslate() {
     setWindowTitle(tr("K528 Studio"));
     fileMenu_->setTitle(tr("&File"));
+    machineMenu_->setTitle(tr("&Machine"));
+    {
+        const QString name = QString::fromStdString(machine_.profile.name);
+        machineLabel_->setText(machine_.source.isEmpty()
+                                   ? tr("Machine: %1").arg(name)
+                                   : tr("Machine: %1 (%2)").arg(name, machine_.source));
+        machineLabel_->setToolTip(machine_.warning);
+    }
     quitAction_->setText(tr("&Quit"));
     viewMenu_->setTitle(tr("&View"));
     languageMenu_->setTitle(tr("&Language"));
@@ -270,7 +327,7 @@ void MainWindow::retranslate() {
     const auto faults = session_->simulation().availableFaults();
     for (int i = 0; i < faultActions_.size(); ++i)
         faultActions_[i]->setText(faultTitle(faults[static_cast<std::size_t>(i)]));
-    statusBar()->showMessage(tr("Ready"));
+    statusBar()->showMessage(machine_.warning.isEmpty() ? tr("Ready") : machine_.warning);
 }
 
 void MainWindow::showEvent(QShowEvent* event) {

@@ -6,6 +6,8 @@
 // sets its speed and injects faults for training.
 #pragma once
 
+#include "session/machine_source.h"
+
 #include <QMainWindow>
 
 class QDockWidget;
@@ -24,7 +26,10 @@ class AxesView;
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
+    // The workstation on the built-in default profile (tests).
     explicit MainWindow(QWidget* parent = nullptr);
+    // The workstation on `machine` (loadMachine()).
+    explicit MainWindow(const MachineChoice& machine, QWidget* parent = nullptr);
 
     // The docks, by role (object names "dock.k923", "dock.machine",
     // "dock.messages", "dock.axes").
@@ -41,6 +46,16 @@ public:
     MachinePanelWidget* machinePanel() const { return machinePanel_; }
     MessagesView* messagesView() const { return messagesView_; }
     AxesView* axesView() const { return axesView_; }
+    // The machine this window simulates, and where it came from.
+    const MachineChoice& machine() const { return machine_; }
+    // File > Machine: the machines to choose from (rebuilt as it opens).
+    QMenu* machineMenu() const { return machineMenu_; }
+
+public slots:
+    // Replaces this window by one on machine `name` (database, built-in or
+    // file), keeping its geometry; a machine that cannot be loaded is said
+    // in a message box and this window stays. Returns the new window.
+    MainWindow* switchMachine(const QString& name);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -49,6 +64,7 @@ protected:
 private:
     void createDocks();
     void createMenus();
+    void fillMachineMenu();
     void createSimulationMenu();
     void updateFaultActions();
     void retranslate();
@@ -60,7 +76,10 @@ private:
     QDockWidget* machineDock_ = nullptr;
     QDockWidget* messagesDock_ = nullptr;
     QDockWidget* axesDock_ = nullptr;
+    MachineChoice machine_;
     QMenu* fileMenu_ = nullptr;
+    QMenu* machineMenu_ = nullptr;
+    QLabel* machineLabel_ = nullptr;
     QMenu* viewMenu_ = nullptr;
     QMenu* languageMenu_ = nullptr;
     QMenu* helpMenu_ = nullptr;

@@ -1,0 +1,79 @@
+#include "session/machine_source.h"
+
+#include "db/database.h"
+#include "db/location.h"
+#include "profile/builtin.h"
+#include "profile/validate.h"
+
+#include <QCoreApplication>
+#include <QSettings>
+#include <exception>
+
+namespace k528::studio {
+
+namespace {
+
+constexpr const char* kMachineKey = "machine/name";
+
+QString fromStd(const std::string& s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+// The database, created with the built-in machines when it does not exist.
+db::Database openDatabase() {
+    return db::Database::open(db::defaultDatabasePath());
+}
+
+QString databaseProblem(const std::exception& e) {
+    return QCoreApplication::translate("k528::studio::MachineSource",
+                                       "The machine database is not used: %1")
+        .arg(QString::fromUtf8(e.what()));
+}
+
+} // namespace
+
+MachineChoice loadMachine(const QString& nameOrPath) {
+    const std::string name = nameOrPath.toStdString();
+    MachineChoice c;
+    try {
+        const db::Database d = openDatabase();
+        if (profile::checkName(name).empty() && d.hasMachine(name)) {
+            c.profile = d.loadMachine(name);
+            c.source = QCoreApplication::translate("k528::studio::MachineSource", "database %1")
+                           .arg(fromStd(d.path().string()));
+            return c;
+        }
+    } catch (const std::exception& e) {
+        c.warning = databaseProblem(e);
+    }
+    c.profile = profile::load(name); // throws profile::FileError
+    c.source = profile::isBuiltin(name)
+                   ? QCoreApplication::translate("k528::studio::MachineSource", "built-in")
+                   : nameOrPath;
+    return c;
+}
+
+QStringList machineNames(QString* warning) {
+    QStringList names;
+    try {
+        for (const db::MachineInfo& m : openDatabase().machines())
+            names << fromStd(m.name);
+        return names;
+    } catch (const std::exception& e) {
+        if (warning)
+            *warning = databaseProblem(e);
+    }
+    for (const std::string& n : profile::builtinNames())
+        names << fromStd(n);
+    return names;
+}
+
+QString startMachineName() {
+    return QSettings().value(kMachineKey, fromStd(std::string(profile::kDefaultProfile))).toString();
+}
+
+void rememberMachine(const QString& name) {
+    QSettings().setValue(kMachineKey, name);
+}
+
+} // namespace k528::studio

@@ -1,0 +1,34 @@
+// Where the workstation's machines come from: the shop's database
+// (db::defaultDatabasePath(), $K528_DB; created with the built-in machines on
+// the first start), so that the simulated machine runs the constants,
+// programs and messages a technologist keeps there (`k528 db`). When the
+// database cannot be used the built-in profiles still run, and the reason is
+// told (a damaged file is never changed or replaced).
+#pragma once
+
+#include "profile/profile.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace k528::studio {
+
+struct MachineChoice {
+    profile::MachineProfile profile;
+    QString source;  // "database PATH" or "built-in" or the machine file's path
+    QString warning; // why the database was not used; empty when it was
+};
+
+// The machine `nameOrPath`: a machine of the database, else a built-in
+// profile, else a machine file. Throws profile::FileError when nothing fits.
+MachineChoice loadMachine(const QString& nameOrPath);
+
+// The machines to choose from: the database's, else the built-in ones.
+QStringList machineNames(QString* warning = nullptr);
+
+// The machine the workstation starts with: the last one chosen (settings),
+// else the default profile.
+QString startMachineName();
+void rememberMachine(const QString& name);
+
+} // namespace k528::studio

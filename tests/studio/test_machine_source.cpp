@@ -1,0 +1,115 @@
+// The workstation's machines come from the shop's database: created with the
+// built-in machines on the first start, its constants are the ones the
+// simulated machine runs; File > Machine switches the machine; a damaged
+// database is reported, left as it is, and the built-in machines still run.
+#include "cli_runner.h"
+#include "language.h"
+#include "main_window.h"
+#include "profile/builtin.h"
+#include "profile/text_format.h"
+#include "session/machine_source.h"
+#include "session/simulation_session.h"
+
+#include <QAction>
+#include <QCryptographicHash>
+#include <QFile>
+#include <QLabel>
+#include <QMenu>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace k528;
+using namespace k528::studio;
+
+namespace {
+
+QByteArray fileHash(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QCryptographicHash::hash(f.readAll(), QCryptographicHash::Sha256);
+}
+
+} // namespace
+
+class TestMachineSource : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString db_;
+
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTest");
+        QSettings().clear();
+        QVERIFY(setLanguage("en"));
+        db_ = dir_.filePath("shop.db");
+        qputenv("K528_DB", db_.toUtf8());
+    }
+
+    void firstStartCreatesTheDatabase() {
+        QVERIFY(!QFile::exists(db_));
+        QString warning;
+        const QStringList names = machineNames(&warning);
+        QVERIFY2(warning.isEmpty(), qPrintable(warning));
+        QVERIFY(QFile::exists(db_));
+        QVERIFY(names.contains("training-lathe"));
+        QVERIFY(names.contains("grinder-205"));
+    }
+
+    void theDatabasesConstantsRun() {
+        const auto set = runK528({"db", "set", "training-lathe", "C094=300000", "--db", db_});
+        QVERIFY2(set.exitCode == 0, qPrintable(set.err));
+        const MachineChoice c = loadMachine("training-lathe");
+        QVERIFY(c.warning.isEmpty());
+        QVERIFY(c.source.contains(db_));
+        QCOMPARE(c.profile.c[94], 300000);
+        QCOMPARE(profile::builtin("training-lathe").c[94], 600000);
+        MainWindow w(c);
+        QCOMPARE(w.session()->controller().c()[94], 300000);
+        QVERIFY(w.findChild<QLabel*>("status.machine")->text().contains("training-lathe"));
+        QVERIFY_THROWS_EXCEPTION(profile::FileError, loadMachine("no-such-machine"));
+    }
+
+    void fileMenuSwitchesTheMachine() {
+        auto* w = new MainWindow(loadMachine("training-lathe"));
+        w->setAttribute(Qt::WA_DeleteOnClose);
+        w->show();
+        QVERIFY(QTest::qWaitForWindowExposed(w));
+        QAction* lathe = w->machineMenu()->findChild<QAction*>("action.machine.training-lathe");
+        QAction* grinder = w->machineMenu()->findChild<QAction*>("action.machine.grinder-205");
+        QVERIFY(lathe && grinder);
+        QVERIFY(lathe->isChecked());
+        QVERIFY(!grinder->isChecked());
+        QPointer<MainWindow> old(w);
+        MainWindow* g = w->switchMachine("grinder-205");
+        QVERIFY(g);
+        QVERIFY(g->isVisible());
+        QTRY_VERIFY(old.isNull()); // closed and deleted
+        QCOMPARE(g->session()->simulation().description().name, std::string("grinder-205"));
+        QCOMPARE(startMachineName(), QString("grinder-205")); // the next start
+        g->close();
+        rememberMachine("training-lathe");
+    }
+
+    void damagedDatabaseIsReportedAndLeftAlone() {
+        const QString bad = dir_.filePath("damaged.db");
+        {
+            QFile f(bad);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(8192, 'x'));
+        }
+        const QByteArray before = fileHash(bad);
+        qputenv("K528_DB", bad.toUtf8());
+        const MachineChoice c = loadMachine("grinder-205");
+        QVERIFY(!c.warning.isEmpty());
+        QCOMPARE(c.profile.name, std::string("grinder-205")); // the built-in one runs
+        QString warning;
+        QCOMPARE(machineNames(&warning), (QStringList{"grinder-205", "training-lathe"}));
+        QVERIFY(!warning.isEmpty());
+        QCOMPARE(fileHash(bad), before);
+        qputenv("K528_DB", db_.toUtf8());
+    }
+};
+
+QTEST_MAIN(TestMachineSource)
+#include "test_machine_source.moc"
