@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds Release and starts the K528 Studio
-# workstation on the built-in training lathe with the sample programs.
+# workstation on the training lathe with its sample programs (later: the
+# machine chosen last in File > Machine).
 # Extra arguments go to k528studio (e.g. --lang en).
 set -euo pipefail
 cd "$(dirname "$0")/.."
