@@ -793,6 +793,30 @@
         <source>Machine: %1 (%2)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 0, failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 1, failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: DAC module CM32.03 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: communication module CP52.05 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: link to the K923 unstable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: RAM/ROM test fails</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>

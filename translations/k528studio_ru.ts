@@ -793,6 +793,30 @@
         <source>Machine: %1 (%2)</source>
         <translation>Станок: %1 (%2)</translation>
     </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 0, failed</source>
+        <translation>БП: отказ модуля ДОС CP34.23, место 0</translation>
+    </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 1, failed</source>
+        <translation>БП: отказ модуля ДОС CP34.23, место 1</translation>
+    </message>
+    <message>
+        <source>Positioner: DAC module CM32.03 failed</source>
+        <translation>БП: отказ модуля ЦАП CM32.03</translation>
+    </message>
+    <message>
+        <source>Positioner: communication module CP52.05 failed</source>
+        <translation>БП: отказ модуля связи CP52.05</translation>
+    </message>
+    <message>
+        <source>Positioner: link to the K923 unstable</source>
+        <translation>БП: неустойчивая связь с K923</translation>
+    </message>
+    <message>
+        <source>Positioner: RAM/ROM test fails</source>
+        <translation>БП: ошибка теста ОЗУ/ПЗУ</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>

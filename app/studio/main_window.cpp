@@ -293,6 +293,22 @@ QString faultTitle(const machine::FaultSpec& f) {
         return MainWindow::tr("Turret jammed");
     case machine::Fault::GaugeFault:
         return MainWindow::tr("In-process gauge fault");
+    case machine::Fault::PositionerModule:
+        switch (static_cast<machine::PositionerPart>(f.detail)) {
+        case machine::PositionerPart::PulseModule1:
+            return MainWindow::tr("Positioner: encoder module CP34.23, place 0, failed");
+        case machine::PositionerPart::PulseModule2:
+            return MainWindow::tr("Positioner: encoder module CP34.23, place 1, failed");
+        case machine::PositionerPart::DacModule:
+            return MainWindow::tr("Positioner: DAC module CM32.03 failed");
+        case machine::PositionerPart::CommModule:
+            return MainWindow::tr("Positioner: communication module CP52.05 failed");
+        case machine::PositionerPart::PanelLink:
+            return MainWindow::tr("Positioner: link to the K923 unstable");
+        case machine::PositionerPart::Memory:
+            return MainWindow::tr("Positioner: RAM/ROM test fails");
+        }
+        return {};
     }
     return {};
 }

@@ -375,6 +375,76 @@ FileHeader readHeader(const fs::path& path, int latest) {
     return h;
 }
 
+// Why open() refuses a file (the caller adds the path and what became of it).
+struct Refusal {
+    ErrorKind kind;
+    std::string what;
+    bool hotJournal = false; // a read-only connection met a hot journal it cannot roll back
+};
+
+struct Checked {
+    std::int64_t appId = 0, version = 0, objects = 0;
+};
+
+// The checks of open(), on a connection with nothing set yet: what the file
+// is (application_id, user_version, schema objects) and, when it is ours,
+// PRAGMA integrity_check and foreign_key_check. They only read. Every failure
+// is a Refusal.
+Checked inspect(sqlite3* db, int latest) {
+    Checked c;
+    try {
+        c.appId = sql::queryInt(db, "PRAGMA application_id");
+        c.version = sql::queryInt(db, "PRAGMA user_version");
+        c.objects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
+    } catch (const Error& e) {
+        if (sqlite3_extended_errcode(db) == SQLITE_READONLY_ROLLBACK)
+            throw Refusal{ErrorKind::Io, e.what(), true};
+        if (e.kind() == ErrorKind::Busy)
+            throw Refusal{ErrorKind::Busy, e.what()};
+        throw Refusal{ErrorKind::Corrupt,
+                      std::string("cannot be read as a database (") + e.what() + ")"};
+    }
+    if (c.appId == 0 && c.version == 0 && c.objects == 0)
+        return c; // empty: ours to fill
+    if (c.appId != kApplicationId)
+        throw Refusal{ErrorKind::Foreign,
+                      "not a K528 Studio database: it is another program's SQLite database "
+                      "(application_id " +
+                          hex32(static_cast<std::uint32_t>(c.appId)) + ", " +
+                          std::to_string(c.objects) + " schema objects)"};
+    if (c.version > latest)
+        throw Refusal{ErrorKind::TooNew,
+                      "the database has schema version " + std::to_string(c.version) +
+                          ", written by a newer K528 Studio; this program knows versions up to " +
+                          std::to_string(latest)};
+    if (c.version < 1)
+        throw Refusal{ErrorKind::Corrupt, "K528 Studio database without a schema version"};
+    std::string problems;
+    try {
+        sql::Stmt ic(db, "PRAGMA integrity_check(10)");
+        while (ic.step())
+            if (const std::string line = ic.text(0); line != "ok")
+                problems += (problems.empty() ? "" : "; ") + line;
+        sql::Stmt fk(db, "PRAGMA foreign_key_check");
+        int fkRows = 0;
+        std::string fkFirst;
+        while (fk.step())
+            if (fkRows++ == 0)
+                fkFirst = fk.text(0) + " row " + std::to_string(fk.i64(1)) + " -> " + fk.text(2);
+        if (fkRows)
+            problems += (problems.empty() ? "" : "; ") + std::to_string(fkRows) +
+                        " rows break foreign keys (first: " + fkFirst + ")";
+    } catch (const Error& e) {
+        if (e.kind() == ErrorKind::Busy)
+            throw Refusal{ErrorKind::Busy, e.what()};
+        problems = e.what();
+    }
+    if (!problems.empty())
+        throw Refusal{ErrorKind::Corrupt,
+                      "the database is damaged (integrity check: " + problems + ")"};
+    return c;
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------
@@ -507,7 +577,6 @@ struct Database::Impl {
     SaveResult write(const std::optional<Row>& row, const MachineProfile* old,
                      const MachineProfile& neu, const WriteOptions& o);
     void syncDefinitions(const std::string& author);
-    void checkFile(bool walExisted);
 };
 
 namespace {
@@ -1028,87 +1097,92 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
     }
     std::error_code ec;
     const bool walExisted = fs::exists(fs::path(path.string() + "-wal"), ec);
+    const fs::path journal = path.string() + "-journal";
+    const bool journalExisted = fs::exists(journal, ec) && fs::file_size(journal, ec) > 0 && !ec;
 
     auto impl = std::make_unique<Impl>();
     impl->path = path;
     impl->clock = options.clock ? options.clock : systemClock();
     const std::string author = options.author.empty() ? defaultAuthor() : options.author;
-    const int flags = SQLITE_OPEN_READWRITE | (options.create ? SQLITE_OPEN_CREATE : 0) |
-                      SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_EXRESCODE;
-    const int rc = sqlite3_open_v2(path.c_str(), &impl->db, flags, nullptr);
-    if (rc != SQLITE_OK) {
-        const std::string msg = impl->db ? sqlite3_errmsg(impl->db) : sqlite3_errstr(rc);
-        throw Error(ErrorKind::Io, "cannot open " + path.string() + ": " + msg);
-    }
-    sqlite3* db = impl->db;
-    sqlite3_busy_timeout(db, options.busyTimeoutMs);
-    sqlite3_extended_result_codes(db, 1);
-    // Every commit reaches the disk before it is reported (independent of
-    // how SQLite was compiled).
-    sql::exec(db, "PRAGMA synchronous = FULL");
 
-    // Checks before anything is written. On refusal the file is closed
-    // without a checkpoint and stays as it was.
-    const auto refuse = [&](ErrorKind kind, const std::string& what) -> Error {
+    // The checks come before any setting or write. On a refusal the file is
+    // closed without a checkpoint (a -wal stays as it was, not copied into
+    // the refused file) and nothing else was written.
+    bool recovered = false;
+    const auto untouched = [&] {
+        return recovered ? std::string("; only the unfinished transaction in ") + journal.string() +
+                               " was rolled back (SQLite's crash recovery of a K528 Studio "
+                               "database), nothing else was changed"
+                         : std::string("; the file was left untouched");
+    };
+    const auto refused = [&](const Refusal& r) {
+        return Error(r.kind, path.string() + ": " + r.what + untouched());
+    };
+    const auto connect = [&](int flags) {
+        sqlite3* db = nullptr;
+        const int rc = sqlite3_open_v2(path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+        if (rc != SQLITE_OK) {
+            const std::string msg = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
+            sqlite3_close_v2(db);
+            throw Error(ErrorKind::Io, "cannot open " + path.string() + ": " + msg +
+                                           (header.exists ? untouched() : std::string()));
+        }
+        sqlite3_extended_result_codes(db, 1);
+        sqlite3_busy_timeout(db, options.busyTimeoutMs);
         if (walExisted)
             sqlite3_db_config(db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
-        impl->cache.clear();
-        sqlite3_close_v2(db);
-        impl->db = nullptr;
-        return Error(kind, path.string() + ": " + what + "; the file was left untouched");
+        return db;
     };
-    std::int64_t appId = 0, version = 0, objects = 0;
-    try {
-        sql::exec(db, "PRAGMA foreign_keys = ON");
-        appId = sql::queryInt(db, "PRAGMA application_id");
-        version = sql::queryInt(db, "PRAGMA user_version");
-        objects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
-    } catch (const Error& e) {
-        if (e.kind() == ErrorKind::Busy)
-            throw refuse(ErrorKind::Busy, e.what());
-        throw refuse(ErrorKind::Corrupt,
-                     std::string("cannot be read as a database (") + e.what() + ")");
-    }
-    const bool empty = appId == 0 && version == 0 && objects == 0;
-    if (!empty) {
-        if (appId != kApplicationId)
-            throw refuse(ErrorKind::Foreign,
-                         "not a K528 Studio database: it is another program's SQLite database "
-                         "(application_id " +
-                             hex32(static_cast<std::uint32_t>(appId)) + ", " +
-                             std::to_string(objects) + " schema objects)");
-        if (version > latest)
-            throw refuse(ErrorKind::TooNew,
-                         "the database has schema version " + std::to_string(version) +
-                             ", written by a newer K528 Studio; this program knows versions up "
-                             "to " +
-                             std::to_string(latest));
-        if (version < 1)
-            throw refuse(ErrorKind::Corrupt, "K528 Studio database without a schema version");
-        std::string problems;
+    std::optional<Checked> checked;
+    if (journalExisted) {
+        // A rollback journal: if it is hot (its writer died), a read-write
+        // connection would roll it back at the first read. A read-only one
+        // cannot: the checks run there, and another program's unfinished
+        // transaction stays where it is.
+        std::unique_ptr<sqlite3, int (*)(sqlite3*)> ro(
+            connect(SQLITE_OPEN_READONLY | SQLITE_OPEN_EXRESCODE), sqlite3_close_v2);
         try {
-            sql::Stmt ic(db, "PRAGMA integrity_check(10)");
-            while (ic.step())
-                if (const std::string line = ic.text(0); line != "ok")
-                    problems += (problems.empty() ? "" : "; ") + line;
-            sql::Stmt fk(db, "PRAGMA foreign_key_check");
-            int fkRows = 0;
-            std::string fkFirst;
-            while (fk.step())
-                if (fkRows++ == 0)
-                    fkFirst =
-                        fk.text(0) + " row " + std::to_string(fk.i64(1)) + " -> " + fk.text(2);
-            if (fkRows)
-                problems += (problems.empty() ? "" : "; ") + std::to_string(fkRows) +
-                            " rows break foreign keys (first: " + fkFirst + ")";
-        } catch (const Error& e) {
-            if (e.kind() == ErrorKind::Busy)
-                throw refuse(ErrorKind::Busy, e.what());
-            problems = e.what();
+            checked = inspect(ro.get(), latest);
+        } catch (const Refusal& r) {
+            if (!r.hotJournal)
+                throw refused(r);
+            if (header.applicationId != static_cast<std::uint32_t>(kApplicationId))
+                throw refused(Refusal{
+                    ErrorKind::Foreign,
+                    "not a K528 Studio database: an SQLite database without K528 Studio's "
+                    "application_id, with an unfinished transaction of another program (the "
+                    "hot journal " +
+                        journal.string() + "), which is not ours to roll back",
+                    false});
+            // Ours (and not newer, see readHeader): rolling back our own
+            // interrupted transaction restores the last commit.
+            recovered = true;
         }
-        if (!problems.empty())
-            throw refuse(ErrorKind::Corrupt,
-                         "the database is damaged (integrity check: " + problems + ")");
+    }
+    const int flags =
+        SQLITE_OPEN_READWRITE | (options.create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_EXRESCODE;
+    impl->db = connect(flags);
+    sqlite3* db = impl->db;
+    if (!checked) {
+        try {
+            checked = inspect(db, latest);
+        } catch (const Refusal& r) {
+            throw refused(r);
+        }
+    }
+    const auto [appId, version, objects] = *checked;
+    const bool empty = appId == 0 && version == 0 && objects == 0;
+    if (walExisted)
+        sqlite3_db_config(db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 0, nullptr);
+
+    // Settings, now that the file is ours, intact and not newer.
+    try {
+        // Every commit reaches the disk before it is reported (independent
+        // of how SQLite was compiled).
+        sql::exec(db, "PRAGMA synchronous = FULL");
+        sql::exec(db, "PRAGMA foreign_keys = ON");
+    } catch (const Error& e) {
+        throw Error(e.kind(), path.string() + ": " + e.what());
     }
 
     // Now ours, intact, not newer: WAL, then create or migrate in one transaction.

@@ -26,7 +26,8 @@ constexpr std::string_view kFaultNames[kFaultCount] = {"encoder_channel_break",
                                                        "pump_overload",
                                                        "chuck_pressure",
                                                        "turret_jam",
-                                                       "gauge_fault"};
+                                                       "gauge_fault",
+                                                       "positioner_module"};
 
 int channelIndex(std::int64_t code) {
     return code >= 1 && code <= 4 ? static_cast<int>(code - 1) : -1;
@@ -76,6 +77,14 @@ std::string describeFault(const FaultSpec& f) {
         return "turret jammed";
     case Fault::GaugeFault:
         return "in-process gauge fault";
+    case Fault::PositionerModule: {
+        static constexpr std::string_view parts[] = {
+            "?", "pulse module CP34.23 at place 0", "pulse module CP34.23 at place 1",
+            "DAC module CM32.03", "communication module CP52.05", "link to the K923 panel",
+            "RAM/ROM test"};
+        return "positioner failure: " +
+               std::string(parts[f.detail >= 1 && f.detail <= kPositionerPartCount ? f.detail : 0]);
+    }
     }
     return "?";
 }
@@ -273,8 +282,21 @@ void Simulation::senseAxes(std::int64_t nowMs) {
 
 void Simulation::writePositionerInputs(bool changed) {
     engine::MachineIo& io = ctl_->io();
+    const auto broken = [&](PositionerPart p) {
+        return (brokenParts_ >> (static_cast<int>(p) - 1)) & 1u;
+    };
+    // A failed CP34.23 counts no more: both its channels stand still.
+    const auto channelDead = [&](int channel) {
+        return broken(channel < 2 ? PositionerPart::PulseModule1 : PositionerPart::PulseModule2);
+    };
+    io.pulseModule1Ok = !broken(PositionerPart::PulseModule1);
+    io.pulseModule2Ok = !broken(PositionerPart::PulseModule2);
+    io.dacModuleOk = !broken(PositionerPart::DacModule);
+    io.commModuleOk = !broken(PositionerPart::CommModule);
+    io.panelLinkOk = !broken(PositionerPart::PanelLink);
+    io.memoryOk = !broken(PositionerPart::Memory);
     for (const AxisPlant& x : axes_) {
-        if (!x.present || x.encoderChannel < 0)
+        if (!x.present || x.encoderChannel < 0 || channelDead(x.encoderChannel))
             continue;
         engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderChannel)];
         ch.count = x.mech->encoderCount() + x.glitchCounts;
@@ -285,7 +307,8 @@ void Simulation::writePositionerInputs(bool changed) {
     }
     if (eq_.pendant)
         for (int k = 0; k < 2; ++k)
-            if (wheelChannel_[static_cast<std::size_t>(k)] >= 0)
+            if (wheelChannel_[static_cast<std::size_t>(k)] >= 0 &&
+                !channelDead(wheelChannel_[static_cast<std::size_t>(k)]))
                 io.pulse[static_cast<std::size_t>(wheelChannel_[static_cast<std::size_t>(k)])]
                     .count = eq_.pendant->wheelCount(k + 1);
     io.plcLinkOk = !lostLink_;
@@ -344,7 +367,8 @@ void Simulation::actuate(double dtMs) {
         AxisPlant& x = axes_[static_cast<std::size_t>(i)];
         if (!x.present)
             continue;
-        x.mech->setDacCode(x.dacChannel >= 0 ? io.dac[static_cast<std::size_t>(x.dacChannel)] : 0);
+        const bool dacOut = x.dacChannel >= 0 && io.dacModuleOk; // a failed CM32.03 gives 0 V
+        x.mech->setDacCode(dacOut ? io.dac[static_cast<std::size_t>(x.dacChannel)] : 0);
         x.mech->setDriveEnabled(io.regulatorEnable[static_cast<std::size_t>(i)] &&
                                 signals_.sensor(x.readySig));
         x.mech->tick(dtMs);
@@ -558,6 +582,10 @@ void Simulation::checkFault(const FaultSpec& f) const {
         if (!eq_.grinding)
             bad("the machine has no gauge");
         break;
+    case Fault::PositionerModule:
+        if (f.detail < 1 || f.detail > kPositionerPartCount)
+            bad("the positioner parts are 1..6");
+        break;
     default:
         break;
     }
@@ -614,6 +642,11 @@ void Simulation::applyFault(const FaultSpec& f, bool on) {
     case Fault::GaugeFault:
         eq_.grinding->setGaugeFault(on);
         break;
+    case Fault::PositionerModule: {
+        const auto bit = static_cast<std::uint8_t>(1u << (f.detail - 1));
+        brokenParts_ = static_cast<std::uint8_t>(on ? brokenParts_ | bit : brokenParts_ & ~bit);
+        break;
+    }
     }
     signals_.markChanged();
 }
@@ -671,6 +704,8 @@ std::vector<FaultSpec> Simulation::availableFaults() const {
         v.push_back({Fault::TurretJam, AxisId::X, 0, {}});
     if (eq_.grinding)
         v.push_back({Fault::GaugeFault, AxisId::X, 0, {}});
+    for (int p = 1; p <= kPositionerPartCount; ++p)
+        v.push_back({Fault::PositionerModule, AxisId::X, p, {}});
     return v;
 }
 

@@ -54,8 +54,22 @@ enum class Fault : std::uint8_t {
     ChuckPressure,       // the chuck loses its clamping pressure
     TurretJam,           // the turret does not index
     GaugeFault,          // the in-process gauge reports a fault
+    PositionerModule,    // a part of the positioner itself (PositionerPart): 2, 18, 3, 14, 25, 30
 };
-inline constexpr int kFaultCount = 13;
+inline constexpr int kFaultCount = 14;
+
+// The parts of the positioner a PositionerModule fault breaks (its detail)
+// and the message each gives (appendix М, the power-on test and the
+// system checks of every tick).
+enum class PositionerPart : int {
+    PulseModule1 = 1, // CP34.23 at place 0 (axis X encoder, handwheel 1): 2; its counters stop
+    PulseModule2 = 2, // CP34.23 at place 1 (axis Z encoder, handwheel 2): 18; its counters stop
+    DacModule = 3,    // CM32.03: 3; the drives get 0 V
+    CommModule = 4,   // CP52.05: 14
+    PanelLink = 5,    // positioner <-> K923 exchange unstable: 25
+    Memory = 6,       // the RAM/ROM test fails: 30
+};
+inline constexpr int kPositionerPartCount = 6;
 std::string_view faultName(Fault f); // "encoder_channel_break", ...
 
 struct FaultSpec {
@@ -236,6 +250,7 @@ private:
     int drivesPowerAct_ = -1, drivesOnSig_ = -1;
     std::int64_t drivesPowerSinceMs_ = -1;
     bool lostLink_ = false;
+    std::uint8_t brokenParts_ = 0; // bit PositionerPart-1
     std::vector<TimedRelease> releases_;
     std::vector<FaultSpec> faults_;
     std::vector<std::string> warnings_;

@@ -6,8 +6,11 @@
 #include "profile/builtin.h"
 
 #include <QtTest>
+#include <csignal>
 #include <filesystem>
 #include <sqlite3.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace k528;
 using namespace k528::testing;
@@ -63,6 +66,54 @@ fs::path makeDb(const QTemporaryDir& dir, const char* name = "k528.db") {
     const fs::path p = tempPath(dir, name);
     db::Database::open(p, testOptions());
     return p;
+}
+
+// Leaves `p` as another program would after being killed in the middle of a
+// write: a child process begins a transaction large enough to spill into the
+// file (rollback journal), and is killed (SIGKILL) before it commits. The
+// -journal is then hot: the next read-write SQLite connection rolls it back.
+void leaveHotJournal(const fs::path& p) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        sqlite3* db = nullptr;
+        if (sqlite3_open(p.c_str(), &db) != SQLITE_OK)
+            _exit(3);
+        if (sqlite3_exec(db,
+                         "PRAGMA cache_size = 2; BEGIN; CREATE TABLE junk (x BLOB);"
+                         "WITH RECURSIVE c(i) AS (SELECT 1 UNION ALL SELECT i + 1 FROM c "
+                         "WHERE i < 3000) INSERT INTO junk SELECT randomblob(300) FROM c;",
+                         nullptr, nullptr, nullptr) != SQLITE_OK)
+            _exit(4);
+        kill(getpid(), SIGKILL);
+        _exit(5);
+    }
+    int status = 0;
+    QCOMPARE(waitpid(pid, &status, 0), pid);
+    QVERIFY2(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL, "the writer was not killed");
+    const fs::path journal = p.string() + "-journal";
+    QVERIFY(fs::exists(journal) && fs::file_size(journal) > 0);
+}
+
+// The refusal of `p` (kind `kind`, message with `text`) leaves the file and
+// its -journal byte for byte as they were; afterwards a plain SQLite
+// connection rolls the journal back (it was hot, the refusal was not moot).
+void refusedWithHotJournal(const fs::path& p, db::ErrorKind kind, const std::string& text) {
+    const fs::path journal = p.string() + "-journal";
+    const std::string bytes = fileBytes(p), journalBytes = fileBytes(journal);
+    const std::string e = openError(p, kind);
+    QVERIFY2(e.find(text) != std::string::npos, e.c_str());
+    QVERIFY2(e.find(p.string()) != std::string::npos, e.c_str());
+    QVERIFY2(e.find("left untouched") != std::string::npos, e.c_str());
+    QVERIFY(fileBytes(p) == bytes);
+    QVERIFY(fileBytes(journal) == journalBytes);
+    {
+        Raw raw(p);
+        QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'junk'"), 0LL);
+    }
+    QVERIFY(!fs::exists(journal));
+    QVERIFY(fileBytes(p) != bytes);
 }
 
 const char* const kV2Sql =
@@ -278,6 +329,102 @@ private slots:
         const std::string e2 = openError(q, db::ErrorKind::Foreign);
         QVERIFY2(e2.find("0x12345678") != std::string::npos, e2.c_str());
         QVERIFY(fileBytes(q) == qbytes);
+    }
+
+    // Another program's file with an unfinished transaction of its own: it
+    // is refused from the file header, never opened with SQLite (which would
+    // roll the journal back).
+    void foreignFileWithHotJournalIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "other.db");
+        {
+            Raw raw(p);
+            QVERIFY(raw.exec("PRAGMA application_id = 305419896;" // 0x12345678
+                             "CREATE TABLE customers (id INTEGER, name TEXT);"
+                             "INSERT INTO customers VALUES (1, 'ООО Ромашка');")
+                        .empty());
+        }
+        leaveHotJournal(p);
+        refusedWithHotJournal(p, db::ErrorKind::Foreign, "0x12345678");
+    }
+
+    // The same without an application_id: SQLite has to look at it (an empty
+    // SQLite file is ours to fill), but on a read-only connection, which
+    // cannot roll the journal back.
+    void untaggedFileWithHotJournalIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "untagged.db");
+        {
+            Raw raw(p);
+            QVERIFY(raw.exec("CREATE TABLE customers (id INTEGER, name TEXT);"
+                             "INSERT INTO customers VALUES (1, 'ООО Ромашка');")
+                        .empty());
+        }
+        leaveHotJournal(p);
+        refusedWithHotJournal(p, db::ErrorKind::Foreign, "unfinished transaction");
+    }
+
+    void newerSchemaWithHotJournalIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        {
+            Raw raw(p);
+            QCOMPARE(raw.text("PRAGMA journal_mode = DELETE"), std::string("delete"));
+            QVERIFY(raw.exec("PRAGMA user_version = 7").empty());
+        }
+        leaveHotJournal(p);
+        refusedWithHotJournal(p, db::ErrorKind::TooNew, "schema version 7");
+    }
+
+    // Our own file (converted to a rollback journal by another tool) with an
+    // unfinished transaction: SQLite's crash recovery rolls it back, and the
+    // database opens as of its last commit.
+    void ownFileWithHotJournalIsRecovered() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        {
+            Raw raw(p);
+            QCOMPARE(raw.text("PRAGMA journal_mode = DELETE"), std::string("delete"));
+        }
+        leaveHotJournal(p);
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QVERIFY(!d.openReport().created);
+            QCOMPARE(d.machines().size(), std::size_t(2));
+            QCOMPARE(d.checkIntegrity(), std::string());
+        }
+        QVERIFY(!fs::exists(p.string() + "-journal"));
+        Raw raw(p);
+        QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'junk'"), 0LL);
+        QCOMPARE(raw.text("PRAGMA journal_mode"), std::string("wal"));
+    }
+
+    // The schema table (page 1) damaged, with committed changes still in the
+    // -wal: refused with the file's name, and neither the file nor the -wal
+    // is changed (no checkpoint into the damaged file, the -wal is kept).
+    void damagedSchemaWithWalIsRefusedUntouched() {
+        QTemporaryDir dir;
+        const fs::path p = makeDb(dir);
+        const fs::path wal = p.string() + "-wal";
+        {
+            Raw raw(p);
+            sqlite3_db_config(raw.db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
+            QVERIFY(raw.exec("UPDATE machines SET title = 'из журнала' WHERE name = "
+                             "'grinder-205'")
+                        .empty());
+        }
+        QVERIFY(fs::exists(wal) && fs::file_size(wal) > 0);
+        std::string bytes = fileBytes(p);
+        for (std::size_t i = 100; i < 4096; ++i)
+            bytes[i] = static_cast<char>(0xA5 ^ i);
+        writeBytes(p, bytes);
+        const std::string walBytes = fileBytes(wal);
+        const std::string e = openError(p, db::ErrorKind::Corrupt);
+        QVERIFY2(e.find(p.string()) != std::string::npos, e.c_str());
+        QVERIFY2(e.find("cannot be read as a database") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("left untouched") != std::string::npos, e.c_str());
+        QVERIFY(fileBytes(p) == bytes);
+        QVERIFY(fileBytes(wal) == walBytes);
     }
 
     void nonSqliteFileIsRefused() {

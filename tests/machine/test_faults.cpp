@@ -5,6 +5,7 @@
 #include "machine_rig.h"
 
 using namespace mrig;
+using k528::machine::PositionerPart;
 namespace z = engine::z;
 
 namespace {
@@ -209,6 +210,47 @@ private slots:
         QVERIFY2(r->alarms().empty(), r->alarmList().c_str());
         QVERIFY(!r->plcAlarm(13));
         QVERIFY(r->drivesOn());
+    }
+
+    // The positioner's own parts: each gives its message of appendix М; a
+    // failed encoder module counts no more, a failed DAC module gives 0 V.
+    void positionerParts_data() {
+        QTest::addColumn<int>("part");
+        QTest::addColumn<int>("message");
+        QTest::newRow("CP34.23 place 0") << int(PositionerPart::PulseModule1) << 2;
+        QTest::newRow("CP34.23 place 1") << int(PositionerPart::PulseModule2) << 18;
+        QTest::newRow("CM32.03") << int(PositionerPart::DacModule) << 3;
+        QTest::newRow("CP52.05") << int(PositionerPart::CommModule) << 14;
+        QTest::newRow("K923 link") << int(PositionerPart::PanelLink) << 25;
+        QTest::newRow("RAM/ROM") << int(PositionerPart::Memory) << 30;
+    }
+    void positionerParts() {
+        QFETCH(int, part);
+        QFETCH(int, message);
+        auto r = ready();
+        QVERIFY(r);
+        const FaultSpec f{Fault::PositionerModule, X, part};
+        QVERIFY(std::find(r->s().availableFaults().begin(), r->s().availableFaults().end(), f) !=
+                r->s().availableFaults().end());
+        const std::int64_t zCount = r->c().io().pulse[2].count;
+        r->s().inject(f);
+        r->advance(20);
+        QVERIFY2(r->hasAlarm(message), r->alarmList().c_str());
+        if (part == int(PositionerPart::PulseModule2)) {
+            // The slide is pushed by hand (a jog would be refused now): the
+            // counter of the dead module does not follow.
+            r->s().inject({Fault::DacLimit, Z});
+            r->advance(5);
+            QCOMPARE(r->c().io().pulse[2].count, zCount);
+            r->s().clear({Fault::DacLimit, Z});
+        }
+        r->s().clearFaults();
+        r->advance(20);
+        r->c().escape();
+        r->push(Button::Reset);
+        QVERIFY2(!r->hasAlarm(message), r->alarmList().c_str());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
+                                 r->s().inject({Fault::PositionerModule, X, 7}));
     }
 
     void equipment_data() {
