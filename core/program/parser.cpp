@@ -1,5 +1,6 @@
 #include "program/parser.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -20,16 +21,18 @@ using text::upper;
 // that bad is noise (documented in docs/program-language.md).
 constexpr int kMaxErrorsPerLine = 8;
 
+// Quoted input text in a message: whole UTF-8 characters, bad bytes as \xHH
+// (a message is valid UTF-8 whatever the input).
 std::string quote(std::string_view s) {
     std::string q = "«";
-    q += s;
+    q += text::printable(s);
     q += "»";
     return q;
 }
 
 std::string squote(std::string_view s) {
     std::string q = "'";
-    q += s;
+    q += text::printable(s);
     q += "'";
     return q;
 }
@@ -56,6 +59,7 @@ private:
     std::size_t colPos_ = 0; // column cache: byte offset ...
     int colCol_ = 1;         // ... and its column
     int lineErrors_ = 0;
+    std::size_t invalidUtf8At_ = std::string_view::npos; // the byte reported as invalid-utf8
 
     // --- state ---------------------------------------------------------------------
     Section section_ = Section::Implicit;
@@ -111,6 +115,10 @@ private:
 
     // --- lexing helpers ----------------------------------------------------------------
     char at(std::size_t i) const { return i < line_.size() ? line_[i] : '\0'; }
+    // The end of the character at i (whole UTF-8 sequences; i + 1 at the end).
+    std::size_t charEnd(std::size_t i) const {
+        return i < line_.size() ? i + text::sequenceLength(line_, i) : i + 1;
+    }
     void skipSpaces(std::size_t& i) const {
         while (i < line_.size() && isSpace(line_[i]))
             ++i;
@@ -136,15 +144,17 @@ private:
         return i;
     }
     // Moves past an unreadable word to the next plausible word start.
+    // (A byte that is not UTF-8 counts as one character.)
     std::size_t resync(std::size_t i) const {
+        auto step = [&](std::size_t k) { return std::max<std::size_t>(1, text::validSequenceLength(line_, k)); };
         if (i < line_.size())
-            i += text::sequenceLength(line_, i);
+            i += step(i);
         while (i < line_.size()) {
             const char c = line_[i];
             if ((upper(c) >= 'A' && upper(c) <= 'Z') || c == '#' || c == '(' || c == ';' ||
                 isSpace(c))
                 break;
-            i += text::sequenceLength(line_, i);
+            i += step(i);
         }
         return i;
     }
@@ -180,6 +190,8 @@ private:
     void ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
     void gotoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
     bool jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comments);
+    // The next GOTO at or after i, or where a comment or the line begins/ends.
+    std::size_t findGoto(std::size_t i) const;
     void expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::string_view kindEn);
 
     // --- sections ---------------------------------------------------------------------
@@ -247,11 +259,14 @@ void Parser::processLine() {
     lineAscii_ = text::isAscii(line_);
     colPos_ = 0;
     colCol_ = 1;
+    invalidUtf8At_ = std::string_view::npos;
     if (!lineAscii_ && !utf8::isValid(line_)) {
         const std::size_t bad = text::firstInvalidUtf8(line_);
+        invalidUtf8At_ = bad;
+        const std::string byte = text::printable(line_.substr(bad, 1)); // "\xFF"
         report(Rule::InvalidUtf8, 0, bad, bad + 1,
-               "Недопустимая последовательность байтов: текст программы должен быть в UTF-8",
-               "invalid byte sequence: program text must be UTF-8");
+               "Недопустимая последовательность байтов " + byte + ": текст программы должен быть в UTF-8",
+               "invalid byte sequence " + byte + ": program text must be UTF-8");
     }
     std::size_t i = 0;
     skipSpaces(i);
@@ -364,10 +379,11 @@ void Parser::headerLine(std::size_t start) {
     beginSection();
     section_ = Section::Scratch;
     currentDiagProgram_ = 0;
-    report(Rule::BadHeader, 0, start, w > i ? w : i + 1,
-           "Неизвестный заголовок " + quote(line_.substr(start, (w > i ? w : i + 1) - start)) +
+    const std::size_t end = w > i ? w : charEnd(i);
+    report(Rule::BadHeader, 0, start, end,
+           "Неизвестный заголовок " + quote(line_.substr(start, end - start)) +
                ": ожидается %L<номер программы> или %MESSAGES",
-           "unknown header " + squote(line_.substr(start, (w > i ? w : i + 1) - start)) +
+           "unknown header " + squote(line_.substr(start, end - start)) +
                ": expected %L<program number> or %MESSAGES");
 }
 
@@ -655,6 +671,14 @@ bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Val
 
 void Parser::reportBadCharacter(std::size_t i, Frame& f) {
     f.malformed = true;
+    if (text::validSequenceLength(line_, i) == 0) {
+        // A byte that is not UTF-8: the line's first one is already reported
+        // (invalid-utf8); a later one is shown as \xHH.
+        if (i != invalidUtf8At_)
+            report(Rule::Syntax, 0, i, i + 1, "Неожиданный символ " + quote(line_.substr(i, 1)),
+                   "unexpected character " + squote(line_.substr(i, 1)));
+        return;
+    }
     const std::size_t len = text::sequenceLength(line_, i);
     const char32_t cp = text::decodeAt(line_, i);
     if (cp >= 0x400 && cp <= 0x4FF) {
@@ -678,11 +702,9 @@ void Parser::reportBadCharacter(std::size_t i, Frame& f) {
                "unknown address " + squote(a) + ": a frame may contain N, G, M, #, L, X, Z, FX, FZ");
         return;
     }
-    std::string shown = static_cast<unsigned char>(c) < 0x20 || c == 0x7F
-                            ? "\\x" + text::hexByte(static_cast<unsigned char>(c))
-                            : std::string(line_.substr(i, len));
-    report(Rule::Syntax, 0, i, i + len, "Неожиданный символ " + quote(shown),
-           "unexpected character " + squote(shown));
+    // (quote shows a control character as \xHH)
+    report(Rule::Syntax, 0, i, i + len, "Неожиданный символ " + quote(line_.substr(i, len)),
+           "unexpected character " + squote(line_.substr(i, len)));
 }
 
 void Parser::isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
@@ -993,15 +1015,21 @@ bool Parser::jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comm
     skipTrivia(i, comments);
     const std::size_t s = i;
     if (upper(at(i)) == 'N') {
+        // "GOTO N5": one error that says how to write it (the target stays unread).
         std::size_t j = i + 1;
-        Word w;
-        const bool ok = intWord(j, s, "N", w);
-        report(Rule::Syntax, 0, s, j,
-               ok ? "Номер кадра перехода пишется без N: GOTO " + std::to_string(w.number)
-                  : std::string("Номер кадра перехода пишется без N"),
-               ok ? "the jump target is written without N: GOTO " + std::to_string(w.number)
-                  : std::string("the jump target is written without N"));
-        i = j;
+        skipSpaces(j);
+        if (at(j) == '=') {
+            ++j;
+            skipSpaces(j);
+        }
+        const std::size_t e = numberEnd(j);
+        const auto v = text::parseUnsigned(line_.substr(j, e - j));
+        i = e > j ? e : i + 1;
+        report(Rule::Syntax, 0, s, i,
+               v ? "Номер кадра перехода пишется без N: GOTO " + std::to_string(*v)
+                 : std::string("Номер кадра перехода пишется без N: GOTO <номер кадра 1..999>"),
+               v ? "the jump target is written without N: GOTO " + std::to_string(*v)
+                 : std::string("the jump target is written without N: GOTO <frame number 1..999>"));
         return false;
     }
     const std::size_t e = numberEnd(i);
@@ -1024,53 +1052,72 @@ bool Parser::jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comm
     return true;
 }
 
+std::size_t Parser::findGoto(std::size_t i) const {
+    while (i < line_.size() && line_[i] != '(' && line_[i] != ';' && !keyword(i, "GOTO"))
+        i += text::sequenceLength(line_, i);
+    return i;
+}
+
 void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
     IfGotoFrame& jf = *f.ifGoto();
     i += 2;
+    contentEnd = i;
     skipTrivia(i, f.comments);
+    // After an error in the R-parameter or the condition, reading goes on at
+    // GOTO so that an error in the target is reported too.
+    bool bad = false;
     const std::size_t rs = i;
     if (upper(at(i)) != 'R') {
-        report(Rule::Syntax, 0, rs, rs + 1, "После IF ожидается R-параметр: IF R<i>>0 GOTO <номер>",
+        report(Rule::Syntax, 0, rs, charEnd(rs), "После IF ожидается R-параметр: IF R<i>>0 GOTO <номер>",
                "IF must be followed by an R-parameter: IF R<i>>0 GOTO <number>");
-        f.malformed = true;
-        return;
-    }
-    ++i;
-    if (!intWord(i, rs, "R", jf.r)) {
-        f.malformed = true;
-        return;
-    }
-    contentEnd = i;
-    skipTrivia(i, f.comments);
-    const std::size_t cs = i;
-    while (i < line_.size() && (line_[i] == '>' || line_[i] == '<' || line_[i] == '=' || line_[i] == '!'))
+        bad = true;
+        i = findGoto(i);
+    } else {
         ++i;
-    const std::string_view rel = line_.substr(cs, i - cs);
-    skipSpaces(i);
-    const std::size_t ve = numberEnd(i);
-    const std::string_view val = line_.substr(i, ve - i);
-    const bool zero = !val.empty() && text::isAllDigits(val) && val.find_first_not_of('0') == std::string_view::npos;
-    if (rel != ">" || !zero) {
-        report(Rule::BadCondition, 0, cs, ve > cs ? ve : cs + 1,
-               "Условие перехода может быть только R" + std::to_string(jf.r.number) +
-                   ">0 (руководство, 2.7.1.3); другое условие сведите к нему вычислительным кадром",
-               "the only jump condition is R" + std::to_string(jf.r.number) +
-                   ">0 (manual 2.7.1.3); reduce another condition to it with a computational frame");
-        f.malformed = true;
-        return;
+        const bool rOk = intWord(i, rs, "R", jf.r);
+        bad = !rOk;
+        contentEnd = i;
+        skipTrivia(i, f.comments);
+        const std::size_t cs = i;
+        while (i < line_.size() && (line_[i] == '>' || line_[i] == '<' || line_[i] == '=' || line_[i] == '!'))
+            ++i;
+        const std::string_view rel = line_.substr(cs, i - cs);
+        skipSpaces(i);
+        const std::size_t ve = numberEnd(i);
+        const std::string_view val = line_.substr(i, ve - i);
+        const bool zero =
+            !val.empty() && text::isAllDigits(val) && val.find_first_not_of('0') == std::string_view::npos;
+        const std::string r = rOk ? "R" + std::to_string(jf.r.number) : std::string("R<i>");
+        if (rel != ">" || !zero) {
+            report(Rule::BadCondition, 0, cs, ve > cs ? ve : charEnd(cs),
+                   "Условие перехода может быть только " + r +
+                       ">0 (руководство, 2.7.1.3); другое условие сведите к нему вычислительным кадром",
+                   "the only jump condition is " + r +
+                       ">0 (manual 2.7.1.3); reduce another condition to it with a computational frame");
+            bad = true;
+            i = findGoto(ve > cs ? ve : cs);
+        } else {
+            i = ve;
+            contentEnd = i;
+        }
     }
-    i = ve;
-    contentEnd = i;
+    if (bad) {
+        f.malformed = true;
+        contentEnd = std::max(contentEnd, i);
+    }
     skipTrivia(i, f.comments);
     if (!keyword(i, "GOTO")) {
-        report(Rule::Syntax, 0, i, i + 1, "После условия ожидается GOTO <номер кадра>",
-               "the condition must be followed by GOTO <frame number>");
+        if (!bad) // after an error, what stands here cannot be told from a broken condition
+            report(Rule::Syntax, 0, i, charEnd(i), "После условия ожидается GOTO <номер кадра>",
+                   "the condition must be followed by GOTO <frame number>");
         f.malformed = true;
         return;
     }
     i += 4;
+    contentEnd = i;
     if (!jumpTarget(i, jf.target, f.comments)) {
         f.malformed = true;
+        contentEnd = i;
         return;
     }
     contentEnd = i;

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "util/utf8.h"
+
 namespace k528::program::text {
 
 constexpr bool isDigit(char c) { return c >= '0' && c <= '9'; }
@@ -54,20 +56,19 @@ inline char32_t decodeAt(std::string_view s, std::size_t i) {
     return cp;
 }
 
+// Length of the well-formed UTF-8 character at s[i], or 0 if s[i] does not
+// start one (overlongs and surrogates count as malformed).
+inline std::size_t validSequenceLength(std::string_view s, std::size_t i) {
+    return utf8::validLength(s, i);
+}
+
 // Byte offset of the first byte that is not part of well-formed UTF-8
 // (s.size() if there is none). Overlongs and surrogates count as malformed.
 inline std::size_t firstInvalidUtf8(std::string_view s) {
     for (std::size_t i = 0; i < s.size();) {
-        const std::size_t len = sequenceLength(s, i);
-        const auto b0 = static_cast<unsigned char>(s[i]);
-        if (len == 1 && b0 >= 0x80)
+        const std::size_t len = validSequenceLength(s, i);
+        if (len == 0)
             return i;
-        if (len > 1) {
-            const char32_t cp = decodeAt(s, i);
-            const char32_t min = len == 2 ? 0x80 : len == 3 ? 0x800 : 0x10000;
-            if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))
-                return i;
-        }
         i += len;
     }
     return s.size();
@@ -95,6 +96,27 @@ inline char latinLookalike(char32_t cp) {
 inline std::string hexByte(unsigned char b) {
     static constexpr char digits[] = "0123456789ABCDEF";
     return std::string{digits[b >> 4], digits[b & 15]};
+}
+
+// `s` as a message may quote it: whole UTF-8 characters as they are, each
+// byte that is not part of one and each control character (tab aside) as
+// "\xHH". The result is always valid UTF-8.
+inline std::string printable(std::string_view s) {
+    std::string out;
+    out.reserve(s.size());
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t len = validSequenceLength(s, i);
+        const auto b = static_cast<unsigned char>(s[i]);
+        if (len == 0 || (len == 1 && ((b < 0x20 && b != '\t') || b == 0x7F))) {
+            out += "\\x";
+            out += hexByte(b);
+            ++i;
+            continue;
+        }
+        out.append(s.substr(i, len));
+        i += len;
+    }
+    return out;
 }
 
 inline bool isAllDigits(std::string_view s) {

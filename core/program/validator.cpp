@@ -65,11 +65,20 @@ namespace {
 
 // --- Analysis of the call graph: strongly connected components (call
 // cycles) and the longest call chain below each program. --------------------------------------
+//
+// Heights are per component: a program on a cycle reaches every call out of
+// its cycle, so its chain is the shortest way round the cycle to the member
+// that calls out, that call, and the longest chain below the callee. (The
+// cycle itself nests without bound; it has its own warning.)
 struct CallAnalysis {
     std::array<int, kMaxPrograms + 1> scc{};      // component id per program (0 = absent)
     std::array<bool, kMaxPrograms + 1> cyclic{};  // program lies on a call cycle
     std::array<int, kMaxPrograms + 1> height{};   // longest chain of calls below it (cycles cut)
-    std::array<int, kMaxPrograms + 1> next{};    // the callee that gives that height
+    // The chain that gives that height leaves the program's component by the
+    // call exitFrom -> exitTo (exitFrom is the program itself outside a
+    // cycle; both 0 when the component calls nothing outside itself).
+    std::array<int, kMaxPrograms + 1> exitFrom{};
+    std::array<int, kMaxPrograms + 1> exitTo{};
     std::array<std::bitset<kMaxPrograms + 1>, kMaxPrograms + 1> adj{}; // existing callee edges
 };
 
@@ -86,6 +95,48 @@ CallAnalysis analyse(const ProgramStore& store, const CallGraph& graph) {
             if (inProgramRange(c.callee) && exists.test(static_cast<std::size_t>(c.callee)))
                 a.adj[static_cast<std::size_t>(p)].set(static_cast<std::size_t>(c.callee));
     }
+    // Heights of a component's members. Tarjan completes a component after
+    // every component it calls, so the callees' heights are known.
+    auto heights = [&](std::vector<int>& members, int component) {
+        std::sort(members.begin(), members.end()); // ties go to the lowest number
+        std::array<int, kMaxPrograms + 1> dist{};
+        for (const int v : members) {
+            // Calls from v to each member inside the component (breadth first).
+            dist.fill(-1);
+            dist[static_cast<std::size_t>(v)] = 0;
+            if (members.size() > 1) {
+                std::vector<int> queue{v};
+                for (std::size_t q = 0; q < queue.size(); ++q) {
+                    const auto ui = static_cast<std::size_t>(queue[q]);
+                    for (const int w : members) {
+                        const auto wi = static_cast<std::size_t>(w);
+                        if (a.adj[ui].test(wi) && dist[wi] < 0) {
+                            dist[wi] = dist[ui] + 1;
+                            queue.push_back(w);
+                        }
+                    }
+                }
+            }
+            int best = 0;
+            for (const int m : members) {
+                const auto mi = static_cast<std::size_t>(m);
+                if (dist[mi] < 0)
+                    continue;
+                for (int w = 1; w <= kMaxPrograms; ++w) {
+                    const auto wi = static_cast<std::size_t>(w);
+                    if (!a.adj[mi].test(wi) || a.scc[wi] == component)
+                        continue;
+                    const int h = dist[mi] + 1 + a.height[wi];
+                    if (h > best) {
+                        best = h;
+                        a.exitFrom[static_cast<std::size_t>(v)] = m;
+                        a.exitTo[static_cast<std::size_t>(v)] = w;
+                    }
+                }
+            }
+            a.height[static_cast<std::size_t>(v)] = best;
+        }
+    };
     // Tarjan's algorithm (recursive; at most 99 levels deep).
     std::array<int, kMaxPrograms + 1> index{}, low{};
     std::array<bool, kMaxPrograms + 1> onStack{};
@@ -122,37 +173,12 @@ CallAnalysis analyse(const ProgramStore& store, const CallGraph& graph) {
             const bool cyc = members.size() > 1 || a.adj[vi].test(vi);
             for (int m : members)
                 a.cyclic[static_cast<std::size_t>(m)] = cyc;
+            heights(members, components);
         }
     };
     for (int p = 1; p <= kMaxPrograms; ++p)
         if (exists.test(static_cast<std::size_t>(p)) && index[static_cast<std::size_t>(p)] == 0)
             strong(strong, p);
-    // Heights over the edges between components (a DAG).
-    std::array<bool, kMaxPrograms + 1> done{};
-    auto heightOf = [&](auto&& self, int v) -> int {
-        const auto vi = static_cast<std::size_t>(v);
-        if (done[vi])
-            return a.height[vi];
-        done[vi] = true; // set first: edges inside a component are skipped anyway
-        int best = 0;
-        int bestNext = 0;
-        for (int w = 1; w <= kMaxPrograms; ++w) {
-            const auto wi = static_cast<std::size_t>(w);
-            if (!a.adj[vi].test(wi) || a.scc[wi] == a.scc[vi])
-                continue;
-            const int h = 1 + self(self, w);
-            if (h > best) {
-                best = h;
-                bestNext = w;
-            }
-        }
-        a.height[vi] = best;
-        a.next[vi] = bestNext;
-        return best;
-    };
-    for (int p = 1; p <= kMaxPrograms; ++p)
-        if (exists.test(static_cast<std::size_t>(p)))
-            heightOf(heightOf, p);
     return a;
 }
 
@@ -258,6 +284,11 @@ private:
     void rIndex(const Frame& f, int index, ColSpan s);
     void computeFrame(const Frame& f, const ComputeFrame& c);
     void jump(const Frame& f, const Word& target);
+    // False when the parser could not read the jump target of a malformed
+    // frame (it reported that): there is nothing to check, and the jump may
+    // lead anywhere.
+    static bool targetRead(const Frame& f, const Word& target) { return !f.malformed || target.span.column > 0; }
+    bool lostTarget_ = false; // some jump's target could not be read
     void reachability();
     void subprogramEnd();
     void nesting();
@@ -290,10 +321,16 @@ void ProgramChecker::run() {
             break;
         case FrameKind::IfGoto:
             rIndex(f, f.ifGoto()->r.number, f.ifGoto()->r.span);
-            jump(f, f.ifGoto()->target);
+            if (targetRead(f, f.ifGoto()->target))
+                jump(f, f.ifGoto()->target);
+            else
+                lostTarget_ = true;
             break;
         case FrameKind::Goto:
-            jump(f, f.gotoFrame()->target);
+            if (targetRead(f, f.gotoFrame()->target))
+                jump(f, f.gotoFrame()->target);
+            else
+                lostTarget_ = true;
             break;
         }
     }
@@ -614,6 +651,10 @@ void ProgramChecker::reachability() {
     // except an unconditional jump, an end of program (M02, M30) and an end
     // of subprogram (M17); a conditional jump goes both ways; a call comes
     // back. A skipped frame ('/') just passes on to the next one.
+    // A jump whose target could not be read may lead to any frame: nothing
+    // is reported as unreachable then (the syntax error comes first).
+    if (lostTarget_)
+        return;
     const std::size_t count = p_.frames.size();
     std::vector<char> reached(count, 0);
     std::vector<std::size_t> work;
@@ -735,8 +776,15 @@ void ProgramChecker::nesting() {
         if (depth <= limit)
             continue;
         std::vector<int> chain{p_.number};
-        for (int v = c.callee; v != 0; v = calls_.next[static_cast<std::size_t>(v)])
-            chain.push_back(v);
+        for (int v = c.callee; v != 0; v = calls_.exitTo[static_cast<std::size_t>(v)]) {
+            const int m = calls_.exitFrom[static_cast<std::size_t>(v)];
+            if (m == 0 || m == v) {
+                chain.push_back(v);
+                continue;
+            }
+            const std::vector<int> round = cyclePath(calls_, v, m); // v ... m inside the cycle
+            chain.insert(chain.end(), round.begin(), round.end());
+        }
         warning(Rule::NestingDepth, 48, f, s,
                 "Глубина вложения L: цепочка вызовов " + chainText(chain) + " даёт " + std::to_string(depth) +
                     " уровней вложения, предел " + std::to_string(limit),

@@ -365,9 +365,23 @@ Value& Value::push(Value v) {
     return a.back();
 }
 
+
 void writeString(std::string& out, std::string_view s) {
     out += '"';
-    for (const char c : s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        if (static_cast<unsigned char>(c) >= 0x80) {
+            // JSON text is UTF-8: a byte that is not part of a well-formed
+            // character becomes U+FFFD.
+            const std::size_t len = utf8::validLength(s, i);
+            if (len == 0) {
+                out += "\xEF\xBF\xBD";
+            } else {
+                out.append(s.substr(i, len));
+                i += len - 1;
+            }
+            continue;
+        }
         switch (c) {
         case '"':
             out += "\\\"";

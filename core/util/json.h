@@ -87,7 +87,9 @@ private:
 // Throws ParseError with the position of the first problem.
 Value parse(std::string_view text);
 
-// Appends `s` to `out` as a JSON string literal (UTF-8 kept as is).
+// Appends `s` to `out` as a JSON string literal (UTF-8 kept as is; a byte
+// that is not part of well-formed UTF-8 becomes U+FFFD, so the output is
+// always valid JSON text).
 void writeString(std::string& out, std::string_view s);
 
 // Shortest decimal text that reads back as exactly `d` ("6.214", "100", "1e-07").

@@ -43,6 +43,11 @@ std::size_t decodeOne(std::string_view s, std::size_t i, char32_t& cp) {
 
 } // namespace
 
+std::size_t validLength(std::string_view s, std::size_t i) {
+    char32_t cp;
+    return decodeOne(s, i, cp);
+}
+
 bool isValid(std::string_view s) {
     for (std::size_t i = 0; i < s.size();) {
         char32_t cp;

@@ -12,6 +12,10 @@ namespace k528::utf8 {
 // True if `s` is well-formed UTF-8 (no overlongs, no surrogates).
 bool isValid(std::string_view s);
 
+// Length of the well-formed character at s[i] (no overlongs, no
+// surrogates, at most U+10FFFF), or 0 if s[i] does not start one.
+std::size_t validLength(std::string_view s, std::size_t i);
+
 // Decodes `s` into code points; malformed bytes become U+FFFD.
 std::vector<char32_t> decode(std::string_view s);
 

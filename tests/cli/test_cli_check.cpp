@@ -3,6 +3,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 
@@ -111,6 +112,37 @@ private slots:
         const auto r = runK528({"check", "--lang", "en", "-"}, "N1 GOTO 2\n");
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.out.startsWith("<stdin>:1:9: error: [M53]"));
+    }
+    void jsonIsValidUtf8WhateverTheInput() {
+        // A stray byte in a frame, an unknown header of one Cyrillic letter,
+        // bad bytes after a header and after a jump frame.
+        const QByteArray input = "%L1\nG1 X5\xFF\n%\xD0\x96\nM30\n%L2 \xD0\x96\xFE\nN1 GOTO 1 \xC0\xAF\nM30\n";
+        QProcess p;
+        p.start(QStringLiteral(K528_CLI), {"check", "--json", "-"});
+        QVERIFY(p.waitForStarted());
+        p.write(input);
+        p.closeWriteChannel();
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 1);
+        const QByteArray out = p.readAllStandardOutput();
+        QVERIFY2(QString::fromUtf8(out).toUtf8() == out, out.constData()); // valid UTF-8
+        QVERIFY(!QString::fromUtf8(out).contains(QChar::ReplacementCharacter)); // escaped, not replaced
+        QJsonParseError pe;
+        const QJsonDocument doc = QJsonDocument::fromJson(out, &pe);
+        QCOMPARE(pe.error, QJsonParseError::NoError);
+        const QJsonArray d = doc.object()["files"].toArray()[0].toObject()["diagnostics"].toArray();
+        QStringList lines;
+        for (const auto& v : d) {
+            const QJsonObject o = v.toObject();
+            lines << QString("%1:%2 %3").arg(o["line"].toInt()).arg(o["column"].toInt()).arg(o["message_en"].toString());
+        }
+        const QString all = lines.join('\n');
+        // The stray byte once, shown escaped.
+        QVERIFY2(lines.filter(QRegularExpression("^2:")).size() == 1, qPrintable(all));
+        QVERIFY2(all.contains("2:6 invalid byte sequence \\xFF"), qPrintable(all));
+        QVERIFY2(all.contains("3:1 unknown header '%Ж'"), qPrintable(all));
+        QVERIFY2(all.contains("5:5 unexpected text after the program header: 'Ж\\xFE'"), qPrintable(all));
+        QVERIFY2(all.contains("6:11 unexpected text in an unconditional jump frame: '\\xC0\\xAF'"), qPrintable(all));
     }
     void usageAndIoErrors() {
         QTemporaryDir dir;

@@ -4,8 +4,10 @@
 
 #include "program/formatter.h"
 #include "program/parser.h"
+#include "util/utf8.h"
 
 using namespace k528::program;
+namespace utf8 = k528::utf8;
 
 namespace {
 
@@ -384,6 +386,93 @@ private slots:
         QCOMPARE(find(r, Rule::MessageNumberRange)->program, 0);
         QCOMPARE(find(r, Rule::DecimalInCompute)->program, 1);
         QCOMPARE(find(r, Rule::DecimalInCompute)->line, 4);
+    }
+    // Messages quote input text as whole UTF-8 characters and show bytes that
+    // are not UTF-8 as \xHH: a message is valid UTF-8 whatever the input.
+    void strayByteIsReportedOnceAndEscaped() {
+        const ParseResult r = parse("G1 X5\xFF\nM30\n");
+        QCOMPARE(r.diagnostics.size(), std::size_t(1));
+        const Diagnostic& d = r.diagnostics.front();
+        QCOMPARE(d.rule, Rule::InvalidUtf8);
+        QCOMPARE(d.line, 1);
+        QCOMPARE(d.column, 6);
+        QVERIFY(QString::fromStdString(d.messageEn).contains("\\xFF"));
+        QVERIFY(utf8::isValid(d.messageRu) && utf8::isValid(d.messageEn));
+        // A second bad byte on the line (the first one is invalid-utf8) and an
+        // overlong sequence are unexpected characters, shown escaped.
+        const ParseResult two = parse("G1 \xFE X5 \xC0\x80 Z1 \x80\n");
+        QCOMPARE(two.diagnostics.size(), std::size_t(3));
+        QCOMPARE(two.diagnostics[0].rule, Rule::InvalidUtf8);
+        QCOMPARE(two.diagnostics[0].column, 4);
+        QCOMPARE(two.diagnostics[1].rule, Rule::Syntax);
+        QCOMPARE(two.diagnostics[1].column, 9);
+        QCOMPARE(QString::fromStdString(two.diagnostics[1].messageRu), QString("Неожиданный символ «\\xC0»"));
+        QCOMPARE(two.diagnostics[2].column, 15);
+        QCOMPARE(QString::fromStdString(two.diagnostics[2].messageEn), QString("unexpected character '\\x80'"));
+        for (const auto& x : two.diagnostics)
+            QVERIFY(utf8::isValid(x.messageRu) && utf8::isValid(x.messageEn));
+    }
+    void quotedTextKeepsWholeCharacters() {
+        const ParseResult h = parse("%\xD0\x96\nM30\n"); // %Ж
+        const Diagnostic* d = find(h, Rule::BadHeader);
+        QVERIFY(d);
+        QCOMPARE(QString::fromStdString(d->messageRu), QString("Неизвестный заголовок «%Ж»: ожидается %L<номер программы> или %MESSAGES"));
+        QCOMPARE(QString::fromStdString(d->messageEn), QString("unknown header '%Ж': expected %L<program number> or %MESSAGES"));
+        QCOMPARE(d->column, 1);
+        QCOMPARE(d->endColumn, 3);
+        // Text after a header, after %MESSAGES and after a jump frame.
+        const struct {
+            const char* text;
+            Rule rule;
+            const char* quoted;
+        } cases[] = {
+            {"%L1 \xD0\x96\xFF\x01\nM30\n", Rule::BadHeader, "«Ж\\xFF\\x01»"},
+            {"%MESSAGES \xD0\x96\xFF\n", Rule::BadHeader, "«Ж\\xFF»"},
+            {"N1 GOTO 1 \xD0\x96\xFF\n", Rule::Syntax, "«Ж\\xFF»"},
+            {"R1=R2 \xD0\x96\n", Rule::Syntax, "«Ж»"},
+        };
+        for (const auto& c : cases) {
+            const ParseResult r = parse(c.text);
+            const Diagnostic* e = find(r, c.rule);
+            QVERIFY2(e, c.text);
+            QVERIFY2(QString::fromStdString(e->messageRu).contains(QString::fromUtf8(c.quoted)),
+                     e->messageRu.c_str());
+            for (const auto& x : r.diagnostics)
+                QVERIFY(utf8::isValid(x.messageRu) && utf8::isValid(x.messageEn));
+        }
+    }
+    // A bad condition or target is one error; the rest of the frame is still read.
+    void jumpFramesRecover_data() {
+        QTest::addColumn<QByteArray>("frame");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("bad condition") << QByteArray("IF R1>5 GOTO 9") << "1:6 bad-condition";
+        QTest::newRow("bad condition, GOTO N")
+            << QByteArray("IF R1>5 GOTO N9") << "1:6 bad-condition the only jump condition is R1>0|"
+                                                "1:14 syntax the jump target is written without N: GOTO 9";
+        QTest::newRow("bad condition, bad target")
+            << QByteArray("IF R1<0 GOTO 5.5") << "1:6 bad-condition|1:14 bad-number";
+        QTest::newRow("bad condition, trailing text")
+            << QByteArray("IF R1>=R2 GOTO 9 X") << "1:6 bad-condition|1:18 syntax";
+        QTest::newRow("bad condition, no GOTO") << QByteArray("IF R1>5") << "1:6 bad-condition";
+        QTest::newRow("R without number")
+            << QByteArray("IF R>0 GOTO N9") << "1:4 syntax address R|1:13 syntax the jump target is written";
+        QTest::newRow("no R") << QByteArray("IF 5>0 (c) GOTO 5.5") << "1:4 syntax IF must|1:17 bad-number";
+        QTest::newRow("GOTO N5") << QByteArray("GOTO N5") << "1:6 syntax the jump target is written without N: GOTO 5";
+        QTest::newRow("GOTO N5.5")
+            << QByteArray("GOTO N5.5") << "1:6 syntax the jump target is written without N: GOTO <frame number";
+    }
+    void jumpFramesRecover() {
+        QFETCH(QByteArray, frame);
+        QFETCH(QString, expected);
+        const ParseResult r = parse(frame.toStdString());
+        QStringList got;
+        for (const auto& d : r.diagnostics)
+            got << QString("%1:%2 %3 %4").arg(d.line).arg(d.column).arg(QString::fromStdString(std::string(ruleId(d.rule)))).arg(QString::fromStdString(d.messageEn));
+        const QStringList want = expected.split('|');
+        QVERIFY2(got.size() == want.size(), qPrintable(got.join('\n')));
+        for (int k = 0; k < want.size(); ++k)
+            QVERIFY2(got[k].startsWith(want[k]), qPrintable(got.join('\n')));
+        QVERIFY(r.store.programs()[0].frames[0].malformed);
     }
     void errorsPerLineAreCapped() {
         std::string line = "G1";

@@ -280,6 +280,80 @@ private slots:
         QVERIFY(QString::fromStdString(cyc[1]->messageEn).contains("L3->L2->L3"));
         QVERIFY(withRule(c, Rule::NestingDepth).empty()); // L1 calls into the cycle: no extra noise
     }
+    void nestingFollowsCallsOutOfACycle() {
+        // L1 -> L2, L2 <-> L3, L3 -> L4 -> ... -> L14: below the call L1 -> L2
+        // the chain L2 -> L3 -> L4 -> ... -> L14 nests 12 more levels.
+        std::string text = "%L1\nL2\nM30\n%L2\nL3\nM17\n%L3\nL2\nL4\nM17\n";
+        for (int i = 4; i <= 14; ++i) {
+            text += "%L" + std::to_string(i) + "\n";
+            if (i < 14)
+                text += "L" + std::to_string(i + 1) + "\n";
+            text += "M17\n";
+        }
+        const auto d = diags(text);
+        std::vector<const Diagnostic*> fromL1;
+        for (const Diagnostic* x : withRule(d, Rule::NestingDepth))
+            if (x->program == 1)
+                fromL1.push_back(x);
+        QVERIFY2(fromL1.size() == 1, dump(d).c_str());
+        const QString en = QString::fromStdString(fromL1.front()->messageEn);
+        QVERIFY2(en.contains("L1->L2->L3->L4->L5->L6->L7->L8->L9->L10->L11->L12->L13->L14 nests 13 levels"),
+                 qPrintable(en));
+        QCOMPARE(fromL1.front()->line, 2);
+        // The entry into the cycle from the other side goes round it first.
+        const auto e = diags("%L1\nL3\nM30\n" + text.substr(std::string("%L1\nL2\nM30\n").size()));
+        bool found = false;
+        for (const Diagnostic* x : withRule(e, Rule::NestingDepth))
+            if (x->program == 1)
+                found = QString::fromStdString(x->messageEn).contains("L1->L3->L4->") &&
+                        QString::fromStdString(x->messageEn).contains(" 12 levels");
+        QVERIFY2(found, dump(e).c_str());
+        // A member that calls out only through another member still gets the chain.
+        const auto f = diags("%L1\nL2\nM30\n%L2\nL3\nM17\n%L3\nL2\nL4\nM17\n%L4\nL5\nM17\n%L5\nM17\n",
+                             Limit3);
+        const auto deep = withRule(f, Rule::NestingDepth);
+        QVERIFY2(deep.size() == 1, dump(f).c_str());
+        QCOMPARE(deep.front()->program, 1);
+        QVERIFY(QString::fromStdString(deep.front()->messageEn).contains("L1->L2->L3->L4->L5 nests 4 levels"));
+    }
+    // A jump frame whose condition or target is malformed: only the syntax
+    // errors, no jump error for a target that was never read, no frames
+    // reported unreachable for want of it.
+    void malformedJumps_data() {
+        QTest::addColumn<QByteArray>("frame");
+        QTest::addColumn<QString>("expected");
+        QTest::addColumn<bool>("targetRead");
+        auto row = [](const char* frame, const char* expected, bool read) {
+            QTest::newRow(frame) << QByteArray(frame) << QString(expected) << read;
+        };
+        row("IF R1>5 GOTO 9", "2:6 bad-condition", true);
+        row("GOTO N5", "2:6 syntax", false);
+        row("IF R>0 GOTO 1", "2:4 syntax", true);
+        row("GOTO 5.5", "2:6 bad-number", false);
+        row("GOTO", "2:5 syntax", false);
+        row("IF 5>0 GOTO 9", "2:4 syntax", true);
+        row("IF R1>5 GOTO", "2:6 bad-condition|2:13 syntax", false);
+        // The target after a bad condition is still read and checked.
+        row("IF R1>5 GOTO 7", "2:6 bad-condition|2:14 jump-target", true);
+        row("IF R1>5 GOTO N9", "2:6 bad-condition|2:14 syntax", false);
+        row("IF R1>=0 GOTO 0", "2:6 bad-condition|2:15 jump-target", true);
+        // A target that was read is checked even in a malformed frame.
+        row("IF R1>0 GOTO 7 X", "2:14 jump-target|2:16 syntax", true);
+    }
+    void malformedJumps() {
+        QFETCH(QByteArray, frame);
+        QFETCH(QString, expected);
+        QFETCH(bool, targetRead);
+        const auto d = diags("N1 G1 X1\n" + frame.toStdString() + "\nN9 G1 X2\nM30\n");
+        QStringList got;
+        for (const auto& x : d)
+            got << QString("%1:%2 %3").arg(x.line).arg(x.column).arg(QString::fromStdString(std::string(ruleId(x.rule))));
+        QCOMPARE(got.join('|'), expected);
+        // Below GOTO 9 the next two frames are unreachable, unless the malformed
+        // jump among them lost its target: it may lead anywhere.
+        const auto u = withRule(diags("N1 GOTO 9\nG1 X1\n" + frame.toStdString() + "\nN9 M30\n"), Rule::Unreachable);
+        QCOMPARE(u.size(), std::size_t(targetRead ? 1 : 0));
+    }
     void unreachableGroupsARun() {
         const auto d = diags("N1 GOTO 9\nG1 X1\nG1 X2\nG1 X3\nN9 M30\nG1 X4\n");
         const auto u = withRule(d, Rule::Unreachable);

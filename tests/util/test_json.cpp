@@ -1,6 +1,7 @@
 #include <QtTest>
 
 #include "util/json.h"
+#include "util/utf8.h"
 
 using namespace k528;
 
@@ -40,6 +41,24 @@ private slots:
         const json::Value v = json::parse("[\"a\\\"b\\\\c\\n\\u0041\\u00e9\\ud83d\\ude00\"]");
         QCOMPARE(v.asArray()[0].asString(), std::string("a\"b\\c\nAé\xF0\x9F\x98\x80"));
         QCOMPARE(json::Value(std::string("tab\there\x01")).dump(), std::string("\"tab\\there\\u0001\""));
+    }
+
+    void invalidUtf8BecomesReplacementCharacters() {
+        // A stray byte, a cut sequence, an overlong and a surrogate: each byte
+        // that is not part of a well-formed character becomes U+FFFD.
+        const std::string fffd = "\xEF\xBF\xBD";
+        QCOMPARE(json::Value(std::string("a\xFF" "b")).dump(), "\"a" + fffd + "b\"");
+        QCOMPARE(json::Value(std::string("\xD0")).dump(), "\"" + fffd + "\"");
+        QCOMPARE(json::Value(std::string("\xC0\x80")).dump(), "\"" + fffd + fffd + "\"");
+        QCOMPARE(json::Value(std::string("\xED\xA0\x80")).dump(), "\"" + fffd + fffd + fffd + "\"");
+        QCOMPARE(json::Value(std::string("\xF4\x90\x80\x80")).dump(), "\"" + fffd + fffd + fffd + fffd + "\""); // above U+10FFFF
+        // Well-formed text of 2, 3 and 4 bytes is kept as it is.
+        const std::string ok = "\xD0\x96 \xE2\x82\xAC \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF";
+        QCOMPARE(json::Value(ok).dump(), "\"" + ok + "\"");
+        // The output reads back (it is valid JSON and valid UTF-8).
+        const std::string out = json::Value(std::string("%\xD0\x96\xFF\xD0")).dump();
+        QVERIFY(utf8::isValid(out));
+        QCOMPARE(json::parse(out).asString(), "%\xD0\x96" + fffd + fffd);
     }
 
     void shortestDoubles() {

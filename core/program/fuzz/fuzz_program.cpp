@@ -4,7 +4,8 @@
 //  - a text the parser accepts formats to a text it accepts again, with the
 //    same programs and frames (canonical frame text and comments equal);
 //  - format is a fixed point: format(parse(format(x))) == format(x);
-//  - validateProgram over every program gives what validate gives.
+//  - validateProgram over every program gives what validate gives;
+//  - every message is valid UTF-8 (input text is quoted escaped).
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include "program/formatter.h"
 #include "program/parser.h"
 #include "program/validator.h"
+#include "util/utf8.h"
 
 using namespace k528::program;
 
@@ -49,8 +51,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ParseOptions po;
     po.programNumber = size > 0 ? 1 + data[0] % kMaxPrograms : 1;
     const ParseResult parsed = parse(text, po);
-    for (const Diagnostic& d : parsed.diagnostics)
+    for (const Diagnostic& d : parsed.diagnostics) {
         require(d.line >= 1 && d.column >= 1 && d.endColumn > d.column);
+        require(k528::utf8::isValid(d.messageRu) && k528::utf8::isValid(d.messageEn));
+    }
 
     ValidateOptions vo;
     if (size > 1 && (data[1] & 1)) {
@@ -67,6 +71,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         vo.nestingLimit = 1 + data[1] % 9;
     }
     const auto all = validate(parsed.store, vo);
+    for (const Diagnostic& d : all)
+        require(k528::utf8::isValid(d.messageRu) && k528::utf8::isValid(d.messageEn));
     const CallGraph graph(parsed.store);
     std::size_t perProgram = 0;
     for (const Program& p : parsed.store.programs())
