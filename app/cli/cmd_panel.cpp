@@ -1,22 +1,28 @@
-// k528 panel [--profile NAME|PATH] [--keys "KEY KEY …"] [--json]
+// k528 panel [--profile NAME|PATH] [--db PATH] [--machine] [--keys "KEY KEY …"] [--json]
 // (shared/spec/cli.md; the screens in docs/panel.md).
 //
-// A freshly powered-on controller on the ideal machine of `k528 run`
-// (engine/ideal_machine.h), the K923 model over it (panel/panel.h), the keys
-// pressed in order; WAIT:S lets S seconds of machine time pass. Prints the
-// four LCD lines, or JSON with the LEDs.
+// A freshly powered-on controller on the engine's ideal machine
+// (engine/ideal_machine.h) — or, with --machine, on the simulated machine of
+// the profile (machine/simulation.h: its PLC, drives and pendant, whose
+// buttons PUSH:/HOLD:/PULL: tokens press) — the K923 model over it
+// (panel/panel.h), the keys pressed in order; WAIT:S lets S seconds of
+// machine time pass. Prints the four LCD lines, or JSON with the LEDs.
 #include "args.h"
 #include "cli.h"
 #include "machine_profile.h"
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
+#include "machine/simulation.h"
+#include "plc/description.h"
 #include "panel/keys.h"
 #include "panel/panel.h"
 #include "profile/builtin.h"
 #include "profile/text_format.h"
 #include "util/json.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -27,10 +33,89 @@ namespace k528::cli {
 
 namespace {
 
-// One token of --keys: a key press or a wait in milliseconds.
-using Step = std::variant<panel::KeyPress, std::int64_t>;
+// A push-button of the simulated machine's pendant (--machine): pressed for
+// holdMs, then released; the E-stop mushroom latches (PUSH:ESTOP) until it is
+// pulled (PULL:ESTOP).
+struct ButtonStep {
+    std::optional<machine::Button> button; // nullopt: the E-stop mushroom
+    std::int64_t holdMs = 0;
+    bool pull = false;
+};
+constexpr std::int64_t kPushMs = 100; // an operator's push
+constexpr std::int64_t kSeenMs = 30;  // time for the PLC's debounce to see the release
+
+// One token of --keys: a key press, a wait in milliseconds, a machine button.
+using Step = std::variant<panel::KeyPress, std::int64_t, ButtonStep>;
+
+struct ButtonName {
+    std::string_view name;
+    machine::Button button;
+};
+constexpr ButtonName kButtons[] = {
+    {"DRIVES_ON", machine::Button::DrivesOn}, {"START", machine::Button::CycleStart},
+    {"STOP", machine::Button::CycleStop},     {"RESET", machine::Button::Reset},
+    {"X+", machine::Button::JogXPlus},        {"X-", machine::Button::JogXMinus},
+    {"Z+", machine::Button::JogZPlus},        {"Z-", machine::Button::JogZMinus},
+    {"RAPID", machine::Button::Rapid},        {"CHUCK", machine::Button::ChuckPedal},
+};
+constexpr std::string_view kButtonList =
+    "DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP";
+
+std::string upper(std::string_view s) {
+    std::string u(s);
+    for (char& c : u)
+        if (c >= 'a' && c <= 'z')
+            c = static_cast<char>(c - 'a' + 'A');
+    return u;
+}
+
+// PUSH:NAME, HOLD:NAME:S, PULL:ESTOP.
+std::optional<Step> parseButton(const std::string& token, std::string& error) {
+    const std::string t = upper(token);
+    const auto colon = t.find(':');
+    const std::string verb = t.substr(0, colon);
+    std::string rest = t.substr(colon + 1);
+    ButtonStep b;
+    b.holdMs = kPushMs;
+    if (verb == "HOLD") {
+        const auto c2 = rest.rfind(':');
+        const auto s = c2 == std::string::npos ? std::nullopt
+                                               : parseNumber(std::string_view(rest).substr(c2 + 1));
+        if (!s || *s <= 0 || !std::isfinite(*s) || *s > 1e5) {
+            error = "bad --keys token '" + token + "': HOLD:BUTTON:S holds for S seconds, 0..100000";
+            return std::nullopt;
+        }
+        b.holdMs = std::max<std::int64_t>(1, std::llround(*s * 1000.0));
+        rest = rest.substr(0, c2);
+    }
+    if (rest == "ESTOP") {
+        if (verb == "HOLD") {
+            error = "bad --keys token '" + token + "': the E-stop latches: PUSH:ESTOP, PULL:ESTOP";
+            return std::nullopt;
+        }
+        b.pull = verb == "PULL";
+        return Step{b};
+    }
+    if (verb == "PULL") {
+        error = "bad --keys token '" + token + "': only the E-stop is pulled (PULL:ESTOP)";
+        return std::nullopt;
+    }
+    for (const ButtonName& n : kButtons)
+        if (rest == n.name) {
+            b.button = n.button;
+            return Step{b};
+        }
+    error = "unknown machine button in --keys token '" + token + "' (buttons: " +
+            std::string(kButtonList) + ")";
+    return std::nullopt;
+}
 
 std::optional<Step> parseStep(const std::string& token, std::string& error) {
+    {
+        const std::string t = upper(token.substr(0, 5));
+        if (t.rfind("PUSH:", 0) == 0 || t.rfind("HOLD:", 0) == 0 || t.rfind("PULL:", 0) == 0)
+            return parseButton(token, error);
+    }
     if (token.size() > 5 &&
         (token.compare(0, 5, "WAIT:") == 0 || token.compare(0, 5, "wait:") == 0)) {
         const auto s = parseNumber(std::string_view(token).substr(5));
@@ -45,9 +130,58 @@ std::optional<Step> parseStep(const std::string& token, std::string& error) {
     error = "unknown key '" + token +
             "' in --keys (keys: F1..F8 K1..K12 L1..L4 UP DOWN LEFT RIGHT MODE HELP ESC SHIFT PAR "
             "ACK INS DEL "
-            "ENTER 0..9 . + - * / = % !, SHIFT+KEY, WAIT:S)";
+            "ENTER 0..9 . + - * / = % !, SHIFT+KEY, WAIT:S; with --machine PUSH:BUTTON, "
+            "HOLD:BUTTON:S, PULL:ESTOP)";
     return std::nullopt;
 }
+
+// What the keys act on: the ideal machine, or the simulated one (--machine).
+class Bench {
+public:
+    virtual ~Bench() = default;
+    virtual engine::Controller& controller() = 0;
+    virtual void advance(std::int64_t ms) = 0;
+    virtual void button(const ButtonStep& b) = 0;
+};
+
+class IdealBench final : public Bench {
+public:
+    explicit IdealBench(const profile::MachineProfile& p) : ctl_(p), m_(ctl_) {
+        ctl_.powerOn();
+        m_.advance(10); // the PLC's first scans, as `k528 run` does
+    }
+    engine::Controller& controller() override { return ctl_; }
+    void advance(std::int64_t ms) override { m_.advance(ms); }
+    void button(const ButtonStep&) override {} // refused before anything runs
+
+private:
+    engine::Controller ctl_;
+    engine::IdealMachine m_;
+};
+
+class MachineBench final : public Bench {
+public:
+    explicit MachineBench(const profile::MachineProfile& p) : sim_(p) {
+        sim_.powerOn();
+        sim_.advance(10);
+    }
+    engine::Controller& controller() override { return sim_.controller(); }
+    void advance(std::int64_t ms) override { sim_.advance(ms); }
+    void button(const ButtonStep& b) override {
+        if (!b.button) {
+            b.pull ? sim_.releaseEmergencyStop() : sim_.pressEmergencyStop();
+            sim_.advance(kSeenMs);
+            return;
+        }
+        sim_.press(*b.button);
+        sim_.advance(b.holdMs);
+        sim_.release(*b.button);
+        sim_.advance(kSeenMs);
+    }
+
+private:
+    machine::Simulation sim_;
+};
 
 json::Array ledList(std::uint32_t bits, int count) {
     json::Array a;
@@ -60,18 +194,23 @@ json::Array ledList(std::uint32_t bits, int count) {
 } // namespace
 
 int runPanel(std::span<const std::string> argv) {
-    const Args args(argv, {"--json"}, {"--profile", "--db", "--keys"});
+    const Args args(argv, {"--json", "--machine"}, {"--profile", "--db", "--keys"});
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
         return usageError("panel takes no file: give the keys with --keys \"KEY KEY ...\"");
 
+    const bool onMachine = args.has("--machine");
     std::vector<Step> steps;
     for (const std::string& token : panel::splitKeys(args.value("--keys").value_or(""))) {
         std::string error;
         const auto step = parseStep(token, error);
         if (!step)
             return usageError(error);
+        if (std::holds_alternative<ButtonStep>(*step) && !onMachine)
+            return usageError("'" + token +
+                              "' presses a button of the machine: give --machine (the simulated "
+                              "machine with its PLC and pendant)");
         steps.push_back(*step);
     }
 
@@ -80,16 +219,24 @@ int runPanel(std::span<const std::string> argv) {
         return ExitUsage;
     const profile::MachineProfile& profile = *loaded;
 
-    engine::Controller controller(profile);
-    engine::IdealMachine machine(controller);
-    controller.powerOn();
-    machine.advance(10); // the PLC's first scans, as `k528 run` does
-    panel::Panel k923(controller);
+    std::unique_ptr<Bench> bench;
+    try {
+        if (onMachine)
+            bench = std::make_unique<MachineBench>(profile);
+        else
+            bench = std::make_unique<IdealBench>(profile);
+    } catch (const plc::DescriptionError& e) {
+        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        return ExitUsage;
+    }
+    panel::Panel k923(bench->controller());
     for (const Step& s : steps) {
         if (const auto* k = std::get_if<panel::KeyPress>(&s))
             k923.press(*k);
+        else if (const auto* b = std::get_if<ButtonStep>(&s))
+            bench->button(*b);
         else
-            machine.advance(std::get<std::int64_t>(s));
+            bench->advance(std::get<std::int64_t>(s));
     }
 
     const panel::Display d = k923.display();

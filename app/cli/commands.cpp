@@ -64,7 +64,7 @@ std::span<const Command> commands() {
          "  --lang ru|en         language of the plain output and diagnostics (default ru)\n"
          "Exit codes: 0 completed; 1 errors in the file, an alarm or a timeout; 2 usage or I/O error.\n",
          runRun},
-        {"panel", "panel [--profile NAME|PATH] [--db PATH] [--keys \"KEY KEY ...\"] [--json]",
+        {"panel", "panel [--profile NAME|PATH] [--db PATH] [--machine] [--keys \"KEY KEY ...\"] [--json]",
          "Press keys on the K923 panel of a freshly powered-on controller and print the LCD.",
          "Options:\n"
          "  --profile NAME|PATH  machine profile: a machine of the database, else built in\n"
@@ -74,6 +74,11 @@ std::span<const Command> commands() {
          "  --keys \"KEY ...\"     keys in order: F1..F8 K1..K12 L1..L4 UP DOWN LEFT RIGHT MODE HELP\n"
          "                       ESC SHIFT PAR ACK INS DEL ENTER 0..9 . + - * / = % !; SHIFT+KEY;\n"
          "                       WAIT:S lets S seconds of machine time pass\n"
+         "  --machine            the simulated machine of the profile (its PLC, drives and\n"
+         "                       pendant) instead of the engine's ideal one; --keys then also\n"
+         "                       takes PUSH:BUTTON (100 ms), HOLD:BUTTON:S, PUSH:ESTOP (latches),\n"
+         "                       PULL:ESTOP; buttons DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID\n"
+         "                       CHUCK\n"
          "  --json               print {\"lines\":[4],\"leds\":{\"green\":[K],\"red\":[K],\"override\":[L],\n"
          "                       \"shift\":bool},\"blink\":{\"row\",\"column\",\"length\"}|null}\n"
          "Prints the 4 LCD lines, 20 characters each. Screens: docs/panel.md.\n",

@@ -86,6 +86,40 @@ private slots:
         QVERIFY(QJsonDocument::fromJson(n.out.toUtf8()).object()["blink"].isNull());
     }
 
+    // --machine: the simulated machine of the profile, with its PLC — the K
+    // keys run the lathe's spindle and the PLC lights their LEDs (Z1906);
+    // the pendant's buttons switch the drives on and start the
+    // reference-point cycle; the E-stop mushroom gives message 9.
+    void onTheSimulatedMachine() {
+        const auto spindle = runK528(
+            {"panel", "--machine", "--json", "--keys", "PUSH:DRIVES_ON WAIT:1 F2 K1 WAIT:5"});
+        QCOMPARE(spindle.exitCode, 0);
+        const QJsonObject leds = QJsonDocument::fromJson(spindle.out.toUtf8()).object()["leds"].toObject();
+        QVERIFY2(leds["green"].toArray().contains(1), qPrintable(spindle.out)); // K1: spindle runs
+        // Without the drives the PLC refuses the spindle: K1 stays dark.
+        const auto refused = runK528({"panel", "--machine", "--json", "--keys", "F2 K1 WAIT:5"});
+        QVERIFY(!QJsonDocument::fromJson(refused.out.toUtf8())
+                     .object()["leds"].toObject()["green"].toArray().contains(1));
+        // The ideal machine's PLC does not read the K keys.
+        const auto ideal = runK528({"panel", "--json", "--keys", "F2 K1 WAIT:5"});
+        QVERIFY(QJsonDocument::fromJson(ideal.out.toUtf8()).object()["leds"].toObject()["green"]
+                    .toArray().isEmpty());
+        // Homing from the pendant: ПБТ, X+ then Z+, the homed flags on line 1.
+        const auto homed = runK528({"panel", "--machine", "--keys",
+                                    "PUSH:DRIVES_ON WAIT:1 F3 PUSH:X+ WAIT:60 PUSH:Z+ WAIT:60"});
+        QCOMPARE(homed.exitCode, 0);
+        QVERIFY2(homed.out.startsWith("ПБТ X Z"), qPrintable(homed.out));
+        // The E-stop: message 9 in the faults list (HELP 2), «!» on line 1.
+        const auto estop = runK528({"panel", "--machine", "--keys",
+                                    "PUSH:DRIVES_ON WAIT:1 PUSH:ESTOP WAIT:0.1 HELP 2"});
+        QCOMPARE(estop.exitCode, 0);
+        QVERIFY2(estop.out.contains("9."), qPrintable(estop.out));
+        const auto pulled = runK528({"panel", "--machine", "--keys",
+                                     "PUSH:DRIVES_ON WAIT:1 PUSH:ESTOP WAIT:0.1 PULL:ESTOP "
+                                     "PUSH:RESET WAIT:0.5 ESC"});
+        QVERIFY2(!pulled.out.section('\n', 0, 0).contains("!"), qPrintable(pulled.out));
+    }
+
     void errors_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");
@@ -100,6 +134,14 @@ private slots:
             << QStringList{"panel", "--profile", "no-such-machine"} << "no-such-machine";
         QTest::newRow("file argument") << QStringList{"panel", "x.k528"} << "takes no file";
         QTest::newRow("unknown option") << QStringList{"panel", "--frob"} << "--frob";
+        QTest::newRow("button without --machine")
+            << QStringList{"panel", "--keys", "PUSH:START"} << "give --machine";
+        QTest::newRow("unknown button")
+            << QStringList{"panel", "--machine", "--keys", "PUSH:FOO"} << "unknown machine button";
+        QTest::newRow("hold without time")
+            << QStringList{"panel", "--machine", "--keys", "HOLD:X+"} << "HOLD:BUTTON:S";
+        QTest::newRow("pull a button")
+            << QStringList{"panel", "--machine", "--keys", "PULL:START"} << "PULL:ESTOP";
     }
     void errors() {
         QFETCH(QStringList, args);
