@@ -89,6 +89,19 @@ private slots:
         QVERIFY(std::llabs(r.current(Z)) <= kRestTol);
         QVERIFY(std::llabs(r.machine(Z) - (m - 5000)) <= kRestTol);
     }
+    // The manual's «G192 X12.324» on the lathe's diameter axis: the zero
+    // offset R228 moves by exactly the commanded difference (diameter
+    // discretes), and X then counts from the new zero.
+    void setPositionOnDiameter() {
+        Rig r("training-lathe", noHoming);
+        r.load("%L1\nN1 G0 X50\nN2 G192 X12.324\nN3 G0 X0\n");
+        r.start(1);
+        QVERIFY(r.runToEnd());
+        QCOMPARE(r.ctl->state(), ProgramState::Ended);
+        QCOMPARE(r.ctl->r(228), 50000 - 12324);
+        QVERIFY(std::llabs(r.current(X)) <= kRestTol);
+        QVERIFY(std::llabs(r.machine(X) - (50000 - 12324)) <= kRestTol);
+    }
     // ПРЕДУСТАНОВКИ: «При установке текущего значения ... производится перерасчет «Смещения нуля»».
     void setCurrentValue() {
         Rig r("training-lathe");

@@ -161,6 +161,45 @@ private slots:
         QCOMPARE(w.stops[2].at, -16000.0);
         QVERIFY(std::fabs(r.ctl->servo(Z).commandVelocity()) <= 2000000.0 * 2 / 60000.0 + 1e-9);
     }
+    // X has its own presets (screen УСТ 7, R184..R191): G181 without a
+    // stroke oscillates X between -MX (R184) and +MX (R185) — diameter
+    // values on the lathe — at R186, and G180 ends after R191 spark-out
+    // strokes at the end point R190.
+    void xAxisPresets() {
+        Rig r("training-lathe", noHoming);
+        QVERIFY(r.ctl->setR(184, 10000).ok()); // -MX: X10 (diameter)
+        QVERIFY(r.ctl->setR(185, 30000).ok()); // +MX: X30
+        QVERIFY(r.ctl->setR(186, 2000000).ok());
+        QVERIFY(r.ctl->setR(190, 1).ok()); // end at -MX
+        QVERIFY(r.ctl->setR(191, 2).ok()); // two spark-out strokes
+        r.load("%L1\nN1 G181\nN2 G4 X3\nN3 G180\nN4 R1=1\n");
+        r.start(1);
+        // The X setpoint at each reverse point (internal units: one per
+        // display discrete on the lathe's diameter axis).
+        std::vector<double> stops, afterG180;
+        bool resting = true;
+        for (int t = 0; t < 30000 && r.ctl->r(1) == 0; ++t) {
+            r.tick();
+            const bool rest = r.ctl->servo(X).commandVelocity() == 0.0;
+            if (rest && !resting)
+                (r.ctl->programView().frameNumber == 3 ? afterG180 : stops)
+                    .push_back(r.ctl->servo(X).setpoint());
+            resting = rest;
+            QVERIFY(!r.ctl->oscillating(Z));
+        }
+        QCOMPARE(r.ctl->r(1), 1);
+        QVERIFY2(stops.size() >= 3, qPrintable(QString::number(stops.size())));
+        for (std::size_t i = 0; i < stops.size(); ++i) {
+            const double want = i % 2 == 0 ? 30000 : 10000; // the farther point first
+            QVERIFY2(std::fabs(stops[i] - want) <= 1.0,
+                     qPrintable(QString("%1: %2").arg(i).arg(stops[i])));
+        }
+        // After G180: the stroke in progress ends, two full strokes, and the
+        // axis stands at -MX.
+        QCOMPARE(int(afterG180.size()), 1 + 2);
+        QVERIFY(std::fabs(afterG180.back() - 10000) <= 1.0);
+        QVERIFY(std::llabs(r.current(X) - 10000) <= kRestTol);
+    }
     // A mode change stops the oscillation; «Пуск» back in АВТОМАТ resumes it.
     void modeChangePauses() {
         Rig r("training-lathe", noHoming);

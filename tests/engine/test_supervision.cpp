@@ -124,6 +124,40 @@ private slots:
         QVERIFY(r.until([&] { return r.hasAlarm(57); }, 500));
         QCOMPARE(r.ctl->state(), ProgramState::Alarm);
     }
+    // The same checks on X give X's messages: 7 (МАКС.ОШИБКА, C30),
+    // 8 (standstill), 56 (encoder stall).
+    void xAxisMessages() {
+        {
+            Rig r("training-lathe", [](auto& p) {
+                noHoming(p);
+                p.setC(30, 100);
+            });
+            r.load("%L1\nN1 G0 X100\n");
+            r.start(1);
+            QVERIFY(r.until([&] { return r.hasAlarm(7); }, 20000));
+            QVERIFY(r.bit(z::loopError(X)));
+            QVERIFY(!r.hasAlarm(23));
+        }
+        {
+            Rig r("training-lathe", noHoming);
+            r.advance(1000);
+            r.m->mechanics(X)->pushSlide(0.05);
+            r.advance(5);
+            QVERIFY2(r.hasAlarm(8), "standstill X");
+            QVERIFY(!r.hasAlarm(24));
+        }
+        {
+            Rig r("training-lathe", [](auto& p) {
+                noHoming(p);
+                p.setC(30, 0);
+            });
+            r.m->mechanics(X)->setEncoderFrozen(true);
+            r.load("%L1\nN1 G1 X50 FX500\n");
+            r.start(1);
+            QVERIFY(r.until([&] { return r.hasAlarm(56); }, 2000));
+            QVERIFY(!r.hasAlarm(57));
+        }
+    }
     // Z1000.0 = 0: emergency stop, 9; loop open at once, regulator blocked after ЗАДЕРЖКА БР.
     void emergencyStop() {
         Rig r("training-lathe", noHoming);
