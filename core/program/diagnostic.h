@@ -54,6 +54,7 @@ enum class Rule : std::uint16_t {
     UnknownG,     // 47
     GSameGroup,   // 47
     MRange,
+    MRepeated, // warning
     MessageRange,
     MessageUndefined, // warning
     CallRange,

@@ -556,10 +556,19 @@ void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
 
 void ProgramChecker::isoFrame(const Frame& f, const IsoFrame& iso) {
     gWords(f, iso);
-    for (const Word& w : iso.m)
+    for (int i = 0; i < iso.m.size(); ++i) {
+        const Word& w = iso.m[i];
         if (w.number < 0 || w.number > kMaxM)
             error(Rule::MRange, 0, f, w.span, "M" + std::to_string(w.number) + ": номер M-функции вне диапазона 0..99",
                   "M" + std::to_string(w.number) + ": M function number outside 0..99");
+        for (int j = 0; j < i; ++j)
+            if (iso.m[j].number == w.number) {
+                warning(Rule::MRepeated, 0, f, w.span,
+                        "M" + std::to_string(w.number) + " дважды в кадре: ПЛК получит её два раза",
+                        "M" + std::to_string(w.number) + " twice in the frame: the PLC gets it twice");
+                break;
+            }
+    }
     if (iso.message) {
         const int k = iso.message->number;
         if (k < 1 || k > kMaxMessages)

@@ -128,6 +128,7 @@ private slots:
         row("G180 G281", "G180 G281 Z-3 FZ5\nM30\n", "G180\nG281 Z-3 FZ5\nM30\n", Rule::GSameGroup, 47);
         row("G1 G1", "G1 G1 X1\nM30\n", "G1 X1\nM30\n", Rule::GSameGroup, 47);
         row("M100", "M100\nM30\n", "M99\nM30\n", Rule::MRange, 0);
+        row("M3 M3", "M3 M8 M3\nM30\n", "M3 M8 M4\nM30\n", Rule::MRepeated, 0, W);
         row("#0", "#0 X1\nM30\n", "#1 X1\nM30\n", Rule::MessageRange, 0);
         row("#100", "#100 X1\nM30\n", "#99 X1\nM30\n", Rule::MessageRange, 0);
         row("message undefined", "#5 X1\nM30\n%MESSAGES\n#4=A\n", "#5 X1\nM30\n%MESSAGES\n#5=A\n",
