@@ -1,6 +1,7 @@
 // k528 format [--number N] [--lang ru|en] [--in-place | --check] FILE
 // (shared/spec/cli.md; extensions in docs/program-language.md).
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "args.h"
@@ -52,7 +53,16 @@ int runFormat(std::span<const std::string> argv) {
     if (args.has("--in-place")) {
         if (canonical == text)
             return ExitOk;
-        const std::string tmp = path + ".k528-format.tmp";
+        // The file itself is replaced, not a link to it, and it keeps its
+        // permissions: write beside the real file, then rename over it.
+        std::error_code ec;
+        const std::filesystem::path real = std::filesystem::canonical(path, ec);
+        if (ec) {
+            std::fprintf(stderr, "k528: cannot resolve %s: %s\n", path.c_str(), ec.message().c_str());
+            return ExitUsage;
+        }
+        const std::filesystem::perms perms = std::filesystem::status(real, ec).permissions();
+        const std::string tmp = real.string() + ".k528-format.tmp";
         {
             std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
             out << canonical;
@@ -63,7 +73,8 @@ int runFormat(std::span<const std::string> argv) {
                 return ExitUsage;
             }
         }
-        if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::filesystem::permissions(tmp, perms, ec);
+        if (ec || std::rename(tmp.c_str(), real.c_str()) != 0) {
             std::remove(tmp.c_str());
             std::fprintf(stderr, "k528: cannot replace %s\n", path.c_str());
             return ExitUsage;

@@ -83,6 +83,23 @@ private slots:
         QCOMPARE(runK528({"format", "--in-place", f}).exitCode, 0);
         QCOMPARE(read(f), QByteArray(kCanonical));
     }
+    // --in-place keeps the file's permissions and replaces the file a
+    // symbolic link points to, not the link.
+    void inPlaceKeepsPermissionsAndLinks() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "m.k528", kMessy);
+        QVERIFY(QFile::setPermissions(f, QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup));
+        const QString link = dir.filePath("link.k528");
+        QVERIFY(QFile::link(f, link));
+        const auto r = runK528({"format", "--in-place", link});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(link).isSymLink());
+        QCOMPARE(read(f), QByteArray(kCanonical));
+        QCOMPARE(QFile::permissions(f),
+                 QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup | QFile::ReadUser |
+                     QFile::WriteUser);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::System).size(), 2); // no temporary left
+    }
     void headerlessFilesStayHeaderless() {
         QTemporaryDir dir;
         const QString f = write(dir, "h.k528", "g1 x5\nm30\n");
