@@ -242,9 +242,11 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
         col.addC(Severity::Warning, {1, 53}, std::nullopt, "Нет ни одной оси (НАЛИЧ.ОСИ = 0)",
                  "No axis is present (AXIS PRESENT = 0)");
 
-    // Channels of the two СР34.23 modules: encoders of present axes and the
-    // two handwheels each need their own channel (37); DACs of present axes
-    // their own DAC channel (38); the handwheels two channels (39).
+    // Channels of the two СР34.23 modules: encoders of present axes each need
+    // their own channel (37); DACs of present axes their own DAC channel
+    // (38); the handwheels two channels of their own (39: a handwheel on an
+    // encoder's channel is the handwheel's number set wrong, «Неверно задан
+    // номер маховика» — the encoders are wired to their axes).
     const int encX = cc::kEncoderChannel, encZ = cat::axisParam(cc::kEncoderChannel, cat::Axis::Z);
     const int dacX = cc::kDacChannel, dacZ = cat::axisParam(cc::kDacChannel, cat::Axis::Z);
     const auto valid14 = [&](int n) { return V(n) >= 1 && V(n) <= 4; };
@@ -258,7 +260,7 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
             continue;
         for (auto [present, enc] : {std::pair{px, encX}, std::pair{pz, encZ}})
             if (present && V(enc) == V(wheel))
-                col.addC(Severity::Error, {enc, wheel}, 37,
+                col.addC(Severity::Error, {enc, wheel}, 39,
                          "Маховик и ДОС подключены к одному каналу " + num(V(wheel)) + " (" +
                              named(wheel) + ", " + named(enc) + ")",
                          "A handwheel and an encoder are on channel " + num(V(wheel)) + " (" +
