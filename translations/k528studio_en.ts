@@ -817,6 +817,26 @@
         <source>Positioner: RAM/ROM test fails</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>K923: no link to the PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: no link to the positioner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: RAM fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: resident software corrupt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC in debug stop</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>

@@ -817,6 +817,26 @@
         <source>Positioner: RAM/ROM test fails</source>
         <translation>БП: ошибка теста ОЗУ/ПЗУ</translation>
     </message>
+    <message>
+        <source>K923: no link to the PLC</source>
+        <translation>K923: нет связи с ПЛК</translation>
+    </message>
+    <message>
+        <source>K923: no link to the positioner</source>
+        <translation>K923: нет связи с БП</translation>
+    </message>
+    <message>
+        <source>K923: RAM fault</source>
+        <translation>K923: неисправно ОЗУ</translation>
+    </message>
+    <message>
+        <source>K923: resident software corrupt</source>
+        <translation>K923: нарушен резидент</translation>
+    </message>
+    <message>
+        <source>PLC in debug stop</source>
+        <translation>ПЛК в режиме «ОТЛАДКА СТОП»</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>

@@ -229,11 +229,13 @@ void MainWindow::createSimulationMenu() {
                 session_->simulation().inject(spec);
             else
                 session_->simulation().clear(spec);
+            session_->advance(0); // the views (the K923 too) show it at once
         });
     }
     faultsMenu_->addSeparator();
     clearFaultsAction_ = faultsMenu_->addAction(QString(), this, [this] {
         session_->simulation().clearFaults();
+        session_->advance(0);
         updateFaultActions();
     });
 }
@@ -309,6 +311,20 @@ QString faultTitle(const machine::FaultSpec& f) {
             return MainWindow::tr("Positioner: RAM/ROM test fails");
         }
         return {};
+    case machine::Fault::K923:
+        switch (static_cast<machine::K923Part>(f.detail)) {
+        case machine::K923Part::PlcLink:
+            return MainWindow::tr("K923: no link to the PLC");
+        case machine::K923Part::PositionerLink:
+            return MainWindow::tr("K923: no link to the positioner");
+        case machine::K923Part::Ram:
+            return MainWindow::tr("K923: RAM fault");
+        case machine::K923Part::Resident:
+            return MainWindow::tr("K923: resident software corrupt");
+        }
+        return {};
+    case machine::Fault::PlcStopped:
+        return MainWindow::tr("PLC in debug stop");
     }
     return {};
 }

@@ -27,7 +27,9 @@ constexpr std::string_view kFaultNames[kFaultCount] = {"encoder_channel_break",
                                                        "chuck_pressure",
                                                        "turret_jam",
                                                        "gauge_fault",
-                                                       "positioner_module"};
+                                                       "positioner_module",
+                                                       "k923",
+                                                       "plc_stopped"};
 
 int channelIndex(std::int64_t code) {
     return code >= 1 && code <= 4 ? static_cast<int>(code - 1) : -1;
@@ -85,6 +87,15 @@ std::string describeFault(const FaultSpec& f) {
         return "positioner failure: " +
                std::string(parts[f.detail >= 1 && f.detail <= kPositionerPartCount ? f.detail : 0]);
     }
+    case Fault::K923: {
+        static constexpr std::string_view parts[] = {"?", "no link to the PLC",
+                                                     "no link to the positioner", "RAM fault",
+                                                     "resident software corrupt"};
+        return "K923 panel: " +
+               std::string(parts[f.detail >= 1 && f.detail <= kK923PartCount ? f.detail : 0]);
+    }
+    case Fault::PlcStopped:
+        return "PLC in debug stop";
     }
     return "?";
 }
@@ -586,6 +597,10 @@ void Simulation::checkFault(const FaultSpec& f) const {
         if (f.detail < 1 || f.detail > kPositionerPartCount)
             bad("the positioner parts are 1..6");
         break;
+    case Fault::K923:
+        if (f.detail < 1 || f.detail > kK923PartCount)
+            bad("the K923 parts are 1..4");
+        break;
     default:
         break;
     }
@@ -647,6 +662,11 @@ void Simulation::applyFault(const FaultSpec& f, bool on) {
         brokenParts_ = static_cast<std::uint8_t>(on ? brokenParts_ | bit : brokenParts_ & ~bit);
         break;
     }
+    case Fault::K923:
+        break; // the panel's own state: k923Health()
+    case Fault::PlcStopped:
+        plc_->setStopped(on);
+        break;
     }
     signals_.markChanged();
 }
@@ -706,7 +726,23 @@ std::vector<FaultSpec> Simulation::availableFaults() const {
         v.push_back({Fault::GaugeFault, AxisId::X, 0, {}});
     for (int p = 1; p <= kPositionerPartCount; ++p)
         v.push_back({Fault::PositionerModule, AxisId::X, p, {}});
+    for (int p = 1; p <= kK923PartCount; ++p)
+        v.push_back({Fault::K923, AxisId::X, p, {}});
+    v.push_back({Fault::PlcStopped, AxisId::X, 0, {}});
     return v;
+}
+
+panel::Health Simulation::k923Health() const {
+    const auto broken = [&](K923Part p) {
+        return faultActive({Fault::K923, AxisId::X, static_cast<int>(p), {}});
+    };
+    panel::Health h;
+    h.plcLink = !broken(K923Part::PlcLink);
+    h.positionerLink = !broken(K923Part::PositionerLink);
+    h.ramOk = !broken(K923Part::Ram);
+    h.residentOk = !broken(K923Part::Resident);
+    h.plcStopped = plc_->stopped();
+    return h;
 }
 
 // ---------------------------------------------------------------------------

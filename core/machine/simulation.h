@@ -22,6 +22,7 @@
 #include "engine/ideal_machine.h"
 #include "machine/equipment.h"
 #include "machine/signals.h"
+#include "panel/health.h"
 #include "plc/plc.h"
 #include "profile/profile.h"
 
@@ -55,8 +56,19 @@ enum class Fault : std::uint8_t {
     TurretJam,           // the turret does not index
     GaugeFault,          // the in-process gauge reports a fault
     PositionerModule,    // a part of the positioner itself (PositionerPart): 2, 18, 3, 14, 25, 30
+    K923,                // the operator panel (K923Part): its messages of table М.1
+    PlcStopped,          // the PLC in «ОТЛАДКА СТОП»: «Режим ПЛК СТОП !», outputs off, 9
 };
-inline constexpr int kFaultCount = 14;
+inline constexpr int kFaultCount = 16;
+
+// The parts of the K923 a K923 fault breaks (its detail), appendix М table М.1.
+enum class K923Part : int {
+    PlcLink = 1,        // «НЕТ СВЯЗИ С ПЛК»: K keys lost, K LEDs dark
+    PositionerLink = 2, // «НЕТ СВЯЗИ С БП»: no screens
+    Ram = 3,            // «НЕИСПРАВНО ОЗУ»
+    Resident = 4,       // «НАРУШЕН РЕЗИДЕНТ»
+};
+inline constexpr int kK923PartCount = 4;
 
 // The parts of the positioner a PositionerModule fault breaks (its detail)
 // and the message each gives (appendix М, the power-on test and the
@@ -194,6 +206,8 @@ public:
     const std::vector<FaultSpec>& faults() const { return faults_; }
     // The faults this machine can show (for a trainer's menu).
     std::vector<FaultSpec> availableFaults() const;
+    // The K923's state for its panel model (K923 and PlcStopped faults).
+    panel::Health k923Health() const;
 
     // --- views -----------------------------------------------------------------
     MachineView view() const;

@@ -145,6 +145,11 @@ void Panel::functionKey(int n) {
 }
 
 void Panel::press(KeyPress in) {
+    if (!health_.ramOk || !health_.residentOk)
+        return; // the K923 itself is down
+    // K keys go to the PLC (Z1300), every other key to the positioner.
+    if (isKKey(in.key) ? !health_.plcLink : !health_.positionerLink)
+        return;
     refresh();
     ctx_.clearMessage();
     KeyPress k = in;
@@ -207,7 +212,8 @@ Leds Panel::leds() const {
     const engine::InterfaceWords& w = engine_.words();
     const std::uint16_t green = w.word(engine::z::GreenLedsWord),
                         red = w.word(engine::z::RedLedsWord);
-    for (int k = 1; k <= 12; ++k) {
+    // K1..K12's LEDs are the PLC's (Z1906/Z1907): dark without its link.
+    for (int k = 1; k <= 12 && health_.plcLink; ++k) {
         const unsigned bit = engine::z::keyBit(k);
         if ((green >> bit) & 1u)
             l.green = static_cast<std::uint16_t>(l.green | (1u << (k - 1)));
@@ -229,6 +235,24 @@ Leds Panel::leds() const {
 }
 
 Display Panel::display() {
+    using catalog::PanelMessageId;
+    const auto text = [](PanelMessageId id) { return std::string(catalog::panelMessage(id).textRu); };
+    if (!health_.ramOk || !health_.residentOk) {
+        Canvas c;
+        c.put(0, 1, text(health_.ramOk ? PanelMessageId::ResidentCorrupt : PanelMessageId::RamFault));
+        Display d;
+        d.lcd = c.lcd();
+        return d; // no LED lights
+    }
+    if (!health_.positionerLink) {
+        Canvas c;
+        c.put(0, 1, text(PanelMessageId::NoPositionerLink));
+        Display d;
+        d.lcd = c.lcd();
+        d.leds = leds();
+        d.leds.override = 0; // the L keys' LEDs show the positioner's override
+        return d;
+    }
     refresh();
     Canvas c;
     Screen& s = current();
@@ -239,9 +263,15 @@ Display Panel::display() {
             utf8::append(m, mark);
             c.put(0, kLcdColumns, m);
         }
-    if (!ctx_.message().empty()) {
+    // Line 2: the message of the last key, else the PLC's state.
+    std::string line2 = ctx_.message();
+    if (line2.empty() && !health_.plcLink)
+        line2 = text(PanelMessageId::NoPlcLink);
+    else if (line2.empty() && health_.plcStopped)
+        line2 = text(PanelMessageId::PlcStop);
+    if (!line2.empty()) {
         c.clearRow(1);
-        c.put(1, 1, ctx_.message());
+        c.put(1, 1, line2);
         if (c.blinkRow() == 1)
             c.noBlink();
     }

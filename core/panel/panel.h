@@ -29,6 +29,7 @@
 
 #include "engine/controller.h"
 #include "panel/display.h"
+#include "panel/health.h"
 #include "panel/keys.h"
 #include "panel/screen.h"
 
@@ -65,6 +66,11 @@ public:
     // The LCD and the LEDs now.
     Display display();
 
+    // The K923's links and self-test (panel/health.h): what table М.1
+    // reports. The owner sets it whenever it may have changed.
+    void setHealth(const Health& h) { health_ = h; }
+    const Health& health() const { return health_; }
+
     // --- what the panel shows (tests, the desktop, the PC link plugin) -------
     engine::Mode shownMode() const { return shown_; }
     bool helpShown() const { return help_; }
@@ -94,6 +100,7 @@ private:
 
     engine::Controller& engine_;
     Context ctx_;
+    Health health_;
     std::unique_ptr<AutoManualScreens> auto_, manual_;
     std::unique_ptr<ReferenceScreen> reference_;
     std::unique_ptr<PresetScreens> presets_;

@@ -293,6 +293,39 @@ void Plc::setLinkOk(bool ok) {
             words_.setWord(w, 0); // «Нет ответа от БП»
 }
 
+void Plc::setStopped(bool stopped) {
+    if (stopped == stopped_)
+        return;
+    stopped_ = stopped;
+    dirty_ = true;
+    if (!stopped) {
+        // RUN again: a warm restart, as after power-on — nothing the program
+        // had latched (drives on, a spindle request, an M in progress, a
+        // remembered alarm) comes back by itself; the operator starts again.
+        for (std::size_t i = 0; i < latch_.size(); ++i)
+            if (latch_[i]) {
+                latch_[i] = 0;
+                if (!driven_[i])
+                    sig_[i] = 0;
+            }
+        std::fill(interlockLatched_.begin(), interlockLatched_.end(), 0);
+        pulses_.clear();
+        mActive_ = mAcked_ = mTimedOut_ = mUnknownAlarm_ = false;
+        keysPending_ = keysTaken_ = 0;
+        sig_[firstScanSig_] = 1;
+        wakeMs_ = 0;
+        return;
+    }
+    {
+        std::fill(outputs_.begin(), outputs_.end(), 0);
+        for (int a = 1000; a <= 1013; ++a)
+            words_.setWord(a, 0);
+        for (int a = 1900; a <= 1907; ++a)
+            words_.setWord(a, 0);
+        words_.setWord(engine::z::SystemMessagesWord, 0);
+    }
+}
+
 void Plc::unpackWord(int word, std::uint16_t value) {
     const std::uint32_t base = zSignal(word, 0);
     for (int b = 0; b < 16; ++b)
@@ -400,9 +433,13 @@ void Plc::apply(const CompiledActions& a, std::int64_t nowMs, int pulseMs) {
 // The scan
 
 void Plc::scan(std::int64_t nowMs) {
-    ++scans_;
     dirty_ = false;
     nextWake_ = kNever;
+    if (stopped_) {
+        wakeMs_ = kNever; // «ОТЛАДКА СТОП»: nothing runs until setStopped(false)
+        return;
+    }
+    ++scans_;
 
     // 1. Inputs with debounce: a new level counts once it has stood for the
     // input's debounce time.

@@ -93,6 +93,11 @@ public:
     // The exchange with the positioner works (built-in signal link_ok); while
     // it does not, the PLC reads 0 for Z2000..Z2008.
     void setLinkOk(bool ok);
+    // «ОТЛАДКА СТОП»: the program does not run; every output drops and the
+    // words to the positioner are 0 (its E-stop input Z1000.0 among them)
+    // until the PLC runs again, which then scans from the state it had.
+    void setStopped(bool stopped);
+    bool stopped() const { return stopped_; }
     bool linkOk() const { return linkOk_; }
 
     // --- views ----------------------------------------------------------------
@@ -226,6 +231,7 @@ private:
     std::uint16_t keysPending_ = 0, keysTaken_ = 0;
     std::uint16_t failedModules_ = 0;
     bool linkOk_ = true;
+    bool stopped_ = false;
     bool dirty_ = true;
     std::int64_t wakeMs_ = 0, nextWake_ = 0;
     std::int64_t scans_ = 0;

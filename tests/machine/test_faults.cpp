@@ -6,6 +6,7 @@
 
 using namespace mrig;
 using k528::machine::PositionerPart;
+using k528::machine::K923Part;
 namespace z = engine::z;
 
 namespace {
@@ -251,6 +252,51 @@ private slots:
         QVERIFY2(!r->hasAlarm(message), r->alarmList().c_str());
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument,
                                  r->s().inject({Fault::PositionerModule, X, 7}));
+    }
+
+    // The PLC in «ОТЛАДКА СТОП»: its outputs drop (drives, spindle), its
+    // words to the positioner are 0 — the E-stop input among them: 9 —, the
+    // K923 says «Режим ПЛК СТОП !»; running again, the machine comes back.
+    void plcStopped() {
+        auto r = ready();
+        QVERIFY(r);
+        QVERIFY(!r->s().k923Health().plcStopped);
+        r->s().inject({Fault::PlcStopped});
+        r->advance(20);
+        QVERIFY(r->s().k923Health().plcStopped);
+        QVERIFY(r->s().plc().stopped());
+        QVERIFY2(r->hasAlarm(9), r->alarmList().c_str());
+        QVERIFY(!r->s().view().drivesPower);
+        const std::int64_t scans = r->s().plc().scans();
+        r->advance(200);
+        QCOMPARE(r->s().plc().scans(), scans); // nothing runs
+        r->s().clear({Fault::PlcStopped});
+        r->advance(50);
+        QVERIFY(r->s().plc().scans() > scans);
+        QVERIFY(!r->s().k923Health().plcStopped);
+        // A warm restart: the drives stay off until the operator switches them on.
+        r->advance(1000);
+        QVERIFY(!r->s().view().drivesPower);
+        r->c().escape();
+        r->push(Button::Reset);
+        QVERIFY(r->drivesOn());
+        QVERIFY2(!r->hasAlarm(9), r->alarmList().c_str());
+    }
+
+    // K923 faults change only the panel's state (k923Health), each its own flag.
+    void k923Parts() {
+        auto r = ready();
+        QVERIFY(r);
+        QCOMPARE(r->s().k923Health(), panel::Health{});
+        r->s().inject({Fault::K923, X, int(K923Part::PlcLink)});
+        QCOMPARE(r->s().k923Health(), (panel::Health{.plcLink = false}));
+        r->s().inject({Fault::K923, X, int(K923Part::Ram)});
+        QCOMPARE(r->s().k923Health(), (panel::Health{.ramOk = false, .plcLink = false}));
+        r->advance(50);
+        QVERIFY2(r->alarms().empty(), r->alarmList().c_str()); // the machine runs on
+        r->s().clearFaults();
+        QCOMPARE(r->s().k923Health(), panel::Health{});
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, r->s().inject({Fault::K923, X, 5}));
     }
 
     void equipment_data() {

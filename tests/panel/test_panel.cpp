@@ -160,6 +160,55 @@ private slots:
         QCOMPARE(r.display().leds.green, std::uint16_t(0));
     }
 
+    // Table М.1: the K923's own messages, and what the hardware does then.
+    void k923Health() {
+        {
+            Rig r; // no link to the PLC: screens work, K keys and their LEDs do not
+            r.p->setHealth({.plcLink = false});
+            r.c().words().setWord(z::GreenLedsWord, 0x0101);
+            QCOMPARE(r.line(1), QString("НЕТ СВЯЗИ С ПЛК"));
+            QCOMPARE(r.display().leds.green, std::uint16_t(0));
+            QVERIFY(r.display().leds.overrideOn(4)); // the positioner's override
+            r.keys("K1");
+            QCOMPARE(int(r.c().words().word(z::KeysWord)), 0);
+            r.keys("F1");
+            QCOMPARE(r.c().mode(), Mode::Auto);
+            QCOMPARE(r.line(0), QString("АВТ            100%"));
+            QCOMPARE(r.line(1), QString("НЕТ СВЯЗИ С ПЛК"));
+            r.p->setHealth({});
+            QCOMPARE(r.line(1), QString());
+            QCOMPARE(r.display().leds.green, std::uint16_t((1u << 0) | (1u << 6)));
+        }
+        {
+            Rig r; // no link to the positioner: no screens, no modes; K keys still go
+            r.p->setHealth({.positionerLink = false});
+            QCOMPARE(r.lines(), expect({"НЕТ СВЯЗИ С БП", "", "", ""}));
+            r.keys("F1");
+            QCOMPARE(r.c().mode(), Mode::Manual);
+            r.keys("K1");
+            QCOMPARE(int(r.c().words().word(z::KeysWord)), 1);
+        }
+        for (const bool ram : {false, true}) {
+            Rig r; // the K923 itself is down: its message and nothing else
+            r.p->setHealth(ram ? panel::Health{.ramOk = false} : panel::Health{.residentOk = false});
+            r.c().words().setWord(z::GreenLedsWord, 0x0101);
+            QCOMPARE(r.lines(), expect({ram ? "НЕИСПРАВНО ОЗУ" : "НАРУШЕН РЕЗИДЕНТ", "", "", ""}));
+            QCOMPARE(r.display().leds, panel::Leds{});
+            r.keys("F1 K1");
+            QCOMPARE(r.c().mode(), Mode::Manual);
+            QCOMPARE(int(r.c().words().word(z::KeysWord)), 0);
+        }
+        {
+            Rig r; // the PLC in debug stop: line 2, until a key's own message
+            r.p->setHealth({.plcStopped = true});
+            QCOMPARE(r.line(1), QString("Режим ПЛК СТОП !"));
+            r.keys("F2 MODE MODE PAR 2 4 0 ENTER 5 ENTER"); // R240 is read only
+            QCOMPARE(r.line(1), QString("ОШИБКА ВВОДА"));
+            r.keys("DOWN"); // the next key takes it away
+            QCOMPARE(r.line(1), QString("Режим ПЛК СТОП !"));
+        }
+    }
+
     void overrideKeys() {
         Rig r;
         // Power-on: 100 %, the code of L4 (C142 = 10).

@@ -274,6 +274,32 @@ private slots:
         QCOMPARE(QString::fromStdString(k->display().lcd.lines[0]).left(3), QString("ПБТ"));
     }
 
+    // The trainer breaks the K923's link to the PLC: the desktop K923 says
+    // «НЕТ СВЯЗИ С ПЛК» at once and its K keys no longer reach Z1300.
+    void k923FaultsFromTheMenu() {
+        MainWindow w;
+        SimulationSession* s = w.session();
+        s->setRunning(false);
+        s->advance(50);
+        QAction* a = w.findChild<QAction*>("action.fault.k923.x.1.");
+        QVERIFY(a);
+        a->setChecked(true);
+        K923Widget* k = w.k923();
+        QCOMPARE(QString::fromStdString(k->display().lcd.lines[1]).trimmed(),
+                 QString("НЕТ СВЯЗИ С ПЛК"));
+        QTest::mouseClick(k->key(panel::Key::K1), Qt::LeftButton);
+        QCOMPARE(int(s->controller().words().word(z::KeysWord)), 0);
+        a->setChecked(false);
+        QCOMPARE(QString::fromStdString(k->display().lcd.lines[1]).trimmed(), QString());
+        // The PLC in debug stop: «Режим ПЛК СТОП !».
+        QAction* stop = w.findChild<QAction*>("action.fault.plc_stopped.x.0.");
+        QVERIFY(stop);
+        stop->setChecked(true);
+        QCOMPARE(QString::fromStdString(k->display().lcd.lines[1]).trimmed(),
+                 QString("Режим ПЛК СТОП !"));
+        stop->setChecked(false);
+    }
+
     // With K528_SCREENSHOTS=<dir>: pictures of the workstation in use (a
     // running program on the lathe, a grinding cycle), to look at.
     void screenshots() {

@@ -42,6 +42,11 @@ void SimulationSession::setSpeed(double factor) {
 void SimulationSession::advance(std::int64_t ms) {
     if (ms > 0)
         sim_->advance(ms);
+    advancedTo();
+}
+
+void SimulationSession::advancedTo() {
+    panel_->setHealth(sim_->k923Health()); // a fault may have changed the K923
     emit advanced();
 }
 
@@ -53,7 +58,7 @@ void SimulationSession::frame() {
     owedMs_ -= static_cast<double>(ticks) * tick;
     for (std::int64_t i = 0; i < ticks; ++i)
         sim_->tick();
-    emit advanced();
+    advancedTo();
 }
 
 } // namespace k528::studio

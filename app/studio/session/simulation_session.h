@@ -60,6 +60,10 @@ private slots:
     void frame();
 
 private:
+    // The views' moment: the K923's state follows the machine, then advanced().
+    void advancedTo();
+
+private:
     std::unique_ptr<machine::Simulation> sim_;
     std::unique_ptr<panel::Panel> panel_;
     QTimer timer_;
