@@ -837,6 +837,10 @@
         <source>PLC in debug stop</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -898,6 +902,57 @@
     </message>
     <message>
         <source>waits for acknowledgement</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ProgramMonitor</name>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dwell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waiting for the PLC (M)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>M00: waiting for START</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>interrupted: START continues</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ended</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped by a message: START begins again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow the controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>L%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, frame N%1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -141,11 +141,11 @@
     </message>
     <message>
         <source>ready</source>
-        <translation>готовность</translation>
+        <translation>готова</translation>
     </message>
     <message>
         <source>running</source>
-        <translation>программа выполняется</translation>
+        <translation>выполняется</translation>
     </message>
     <message>
         <source>interrupted</source>
@@ -837,6 +837,10 @@
         <source>PLC in debug stop</source>
         <translation>ПЛК в режиме «ОТЛАДКА СТОП»</translation>
     </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -899,6 +903,57 @@
     <message>
         <source>waits for acknowledgement</source>
         <translation>ждёт квитирования</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ProgramMonitor</name>
+    <message>
+        <source>ready</source>
+        <translation>готова</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>выполняется</translation>
+    </message>
+    <message>
+        <source>dwell</source>
+        <translation>выдержка</translation>
+    </message>
+    <message>
+        <source>waiting for the PLC (M)</source>
+        <translation>ожидание ПЛК (M)</translation>
+    </message>
+    <message>
+        <source>M00: waiting for START</source>
+        <translation>M00: ожидание «Пуск»</translation>
+    </message>
+    <message>
+        <source>interrupted: START continues</source>
+        <translation>прервана: «Пуск» продолжит</translation>
+    </message>
+    <message>
+        <source>ended</source>
+        <translation>закончена</translation>
+    </message>
+    <message>
+        <source>stopped by a message: START begins again</source>
+        <translation>остановлена сообщением: «Пуск» — с начала</translation>
+    </message>
+    <message>
+        <source>Follow the controller</source>
+        <translation>Следовать за БП</translation>
+    </message>
+    <message>
+        <source>L%1: %2</source>
+        <translation>L%1: %2</translation>
+    </message>
+    <message>
+        <source>no program</source>
+        <translation>нет программы</translation>
+    </message>
+    <message>
+        <source>, frame N%1</source>
+        <translation>, кадр N%1</translation>
     </message>
 </context>
 </TS>

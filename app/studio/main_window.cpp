@@ -15,6 +15,7 @@
 #include "machine/machine_panel.h"
 #include "machine/status_views.h"
 #include "profile/builtin.h"
+#include "monitor/program_monitor.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
 
@@ -37,6 +38,8 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     setCentralWidget(workArea_);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     session_ = new SimulationSession(machine_.profile, this);
+    programMonitor_ = new ProgramMonitor(*session_, workArea_);
+    workArea_->addTab(programMonitor_, QString());
     createDocks();
     createMenus();
     machineLabel_ = new QLabel(this);
@@ -347,6 +350,7 @@ void MainWindow::retranslate() {
     helpMenu_->setTitle(tr("&Help"));
     aboutAction_->setText(tr("&About K528 Studio"));
 
+    workArea_->setTabText(workArea_->indexOf(programMonitor_), tr("Program"));
     k923Dock_->setWindowTitle(tr("K923 operator panel"));
     machineDock_->setWindowTitle(tr("Machine control panel"));
     messagesDock_->setWindowTitle(tr("Messages"));

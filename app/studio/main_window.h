@@ -22,6 +22,7 @@ class SimulationSession;
 class MachinePanelWidget;
 class MessagesView;
 class AxesView;
+class ProgramMonitor;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -46,6 +47,8 @@ public:
     MachinePanelWidget* machinePanel() const { return machinePanel_; }
     MessagesView* messagesView() const { return messagesView_; }
     AxesView* axesView() const { return axesView_; }
+    // The tab "Program" of the work area: the program the controller runs.
+    ProgramMonitor* programMonitor() const { return programMonitor_; }
     // The machine this window simulates, and where it came from.
     const MachineChoice& machine() const { return machine_; }
     // File > Machine: the machines to choose from (rebuilt as it opens).
@@ -95,6 +98,7 @@ private:
     MachinePanelWidget* machinePanel_ = nullptr;
     MessagesView* messagesView_ = nullptr;
     AxesView* axesView_ = nullptr;
+    ProgramMonitor* programMonitor_ = nullptr;
     bool shown_ = false;
     QAction* quitAction_ = nullptr;
     QAction* aboutAction_ = nullptr;

@@ -851,6 +851,7 @@ OpResult Controller::programsEdited() {
     for (program::Program& p : c_.store.programs())
         p.reindex();
     storeCorrupt_ = false;
+    ++programsRevision_;
     programStoreCheck();
     return OpResult::accepted();
 }
@@ -887,6 +888,7 @@ OpResult Controller::clearPrograms() {
         return OpResult::refused(Refusal::ProgramActive, "a program is active");
     c_.store = program::ProgramStore{};
     storeCorrupt_ = false;
+    ++programsRevision_;
     programStoreCheck();
     return OpResult::accepted();
 }

@@ -73,6 +73,9 @@ public:
     program::ProgramStore* editablePrograms();
     const program::ProgramStore& programs() const { return c_.store; }
     OpResult programsEdited();
+    // Counts the changes of the program store (programsEdited, clearPrograms):
+    // a view redraws the programs when it changed.
+    std::uint64_t programsRevision() const { return programsRevision_; }
     // УПРАВЛЕНИЕ ДАННЫМИ: clear the C-parameters / R-parameters / programs.
     OpResult clearCParameters();
     OpResult clearRParameters();
@@ -134,6 +137,7 @@ private:
     bool wheelInit_ = false;
     std::array<bool, 65> configMessages_{};
     bool storeCorrupt_ = false;
+    std::uint64_t programsRevision_ = 0;
 };
 
 } // namespace k528::engine

@@ -10,6 +10,9 @@
 #include "machine/pendant_controls.h"
 #include "machine/status_views.h"
 #include "main_window.h"
+#include "monitor/program_monitor.h"
+#include <QComboBox>
+#include <QListWidget>
 #include "profile/builtin.h"
 #include "program/parser.h"
 #include "session/simulation_session.h"
@@ -272,6 +275,60 @@ private slots:
         s->controller().selectMode(engine::Mode::Reference);
         s->advance(20);
         QCOMPARE(QString::fromStdString(k->display().lcd.lines[0]).left(3), QString("ПБТ"));
+    }
+
+    // The work area's "Program" tab follows the controller: the selected
+    // program's frames, the frame being executed marked (a subprogram while
+    // it runs), a pinned program stays shown; an edit on the K923 shows up.
+    void programMonitorFollows() {
+        profile::MachineProfile p = profile::builtin("training-lathe");
+        p.setC(8, 1); // АВТ.БЕЗ ПБТ of X and Z: no homing for this test
+        p.setC(60, 1);
+        MainWindow w(MachineChoice{p, QString(), QString()});
+        SimulationSession* s = w.session();
+        s->setRunning(false);
+        ProgramMonitor* m = w.programMonitor();
+        QVERIFY(m);
+        QCOMPARE(w.workArea()->widget(0), static_cast<QWidget*>(m));
+        engine::Controller& ctl = s->controller();
+        program::ProgramStore* store = ctl.editablePrograms();
+        QVERIFY(store);
+        const auto parsed =
+            program::parse("%L7\nN1 R1=1\nN2 L8\nN3 G4 X5\n%L8\nN1 G4 X5\nN2 M17\n");
+        for (const program::Program& prog : parsed.store.programs())
+            store->insert(prog);
+        QVERIFY(ctl.programsEdited().ok());
+        s->advance(10);
+        QVERIFY(m->programChoice()->findData(8) >= 0); // the new programs are offered
+        machine::Simulation& sim = s->simulation();
+        sim.pressFor(machine::Button::DrivesOn, 100);
+        s->advance(600);
+        QVERIFY(ctl.selectMode(engine::Mode::Auto).ok());
+        QVERIFY(ctl.selectProgram(7).ok());
+        s->advance(20);
+        QCOMPARE(m->shownProgram(), 7);
+        QCOMPARE(m->frames()->count(), 3);
+        QCOMPARE(m->frames()->item(1)->text(), QString("N2 L8"));
+        QCOMPARE(m->executingRow(), -1); // nothing runs yet
+        sim.pressFor(machine::Button::CycleStart, 100);
+        QVERIFY(waitFor(*s, [&] { return ctl.programView().program == 8; }, 3000));
+        s->advance(100);
+        QCOMPARE(m->shownProgram(), 8); // the subprogram while it runs
+        QCOMPARE(m->executingRow(), 0);
+        QCOMPARE(m->frames()->item(0)->text(), QString("N1 G4 X5"));
+        // Pinned on L7, it stays while L8 runs.
+        m->programChoice()->setCurrentIndex(m->programChoice()->findData(7));
+        m->refresh();
+        QCOMPARE(m->shownProgram(), 7);
+        QCOMPARE(m->executingRow(), -1);
+        QVERIFY(waitFor(*s, [&] { return ctl.programView().program == 7; }, 10000));
+        s->advance(50);
+        QCOMPARE(m->executingRow(), 2); // back in L7: N3
+        m->programChoice()->setCurrentIndex(0); // follow again
+        QVERIFY(waitFor(*s, [&] { return ctl.state() == engine::ProgramState::Ended; }, 10000));
+        s->advance(20);
+        QCOMPARE(m->shownProgram(), 7);
+        QCOMPARE(m->executingRow(), -1);
     }
 
     // The trainer breaks the K923's link to the PLC: the desktop K923 says

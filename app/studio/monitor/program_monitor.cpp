@@ -1,0 +1,154 @@
+#include "monitor/program_monitor.h"
+
+#include "engine/controller.h"
+#include "program/formatter.h"
+#include "session/simulation_session.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QVBoxLayout>
+
+namespace k528::studio {
+
+namespace {
+
+QString fromStd(const std::string& s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+QString stateName(engine::ProgramState s) {
+    using engine::ProgramState;
+    switch (s) {
+    case ProgramState::Idle:
+        return ProgramMonitor::tr("ready");
+    case ProgramState::Running:
+        return ProgramMonitor::tr("running");
+    case ProgramState::Dwell:
+        return ProgramMonitor::tr("dwell");
+    case ProgramState::WaitingM:
+        return ProgramMonitor::tr("waiting for the PLC (M)");
+    case ProgramState::M0:
+        return ProgramMonitor::tr("M00: waiting for START");
+    case ProgramState::Interrupted:
+        return ProgramMonitor::tr("interrupted: START continues");
+    case ProgramState::Ended:
+        return ProgramMonitor::tr("ended");
+    case ProgramState::Alarm:
+        return ProgramMonitor::tr("stopped by a message: START begins again");
+    }
+    return {};
+}
+
+} // namespace
+
+ProgramMonitor::ProgramMonitor(SimulationSession& session, QWidget* parent)
+    : QWidget(parent), session_(session) {
+    setObjectName("programMonitor");
+    choice_ = new QComboBox(this);
+    choice_->setObjectName("programMonitor.choice");
+    status_ = new QLabel(this);
+    status_->setObjectName("programMonitor.status");
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    list_ = new QListWidget(this);
+    list_->setObjectName("programMonitor.frames");
+    list_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    list_->setSelectionMode(QAbstractItemView::NoSelection);
+    list_->setUniformItemSizes(true);
+    auto* top = new QHBoxLayout;
+    top->addWidget(choice_);
+    top->addWidget(status_, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(list_, 1);
+    connect(choice_, &QComboBox::activated, this, [this] { refresh(); });
+    connect(&session_, &SimulationSession::advanced, this, &ProgramMonitor::refresh);
+    retranslate();
+    refresh();
+}
+
+void ProgramMonitor::fillChoice() {
+    const int pinned = choice_->currentData().toInt();
+    choice_->clear();
+    choice_->addItem(tr("Follow the controller"), 0);
+    for (const program::Program& p : session_.controller().programs().programs())
+        choice_->addItem(p.title ? QStringLiteral("L%1 (%2)").arg(p.number).arg(fromStd(*p.title))
+                                 : QStringLiteral("L%1").arg(p.number),
+                         p.number);
+    const int at = choice_->findData(pinned);
+    choice_->setCurrentIndex(at < 0 ? 0 : at);
+}
+
+void ProgramMonitor::showProgram(int number) {
+    shown_ = number;
+    marked_ = -1;
+    list_->clear();
+    const program::Program* p = session_.controller().programs().find(number);
+    if (!p)
+        return;
+    for (const program::Frame& f : p->frames)
+        list_->addItem(fromStd(program::formatFrame(f)));
+}
+
+void ProgramMonitor::refresh() {
+    const engine::Controller& c = session_.controller();
+    if (c.programsRevision() != revision_) {
+        revision_ = c.programsRevision();
+        fillChoice();
+        shown_ = -1; // redraw
+    }
+    const engine::ProgramView v = c.programView();
+    const bool active = engine::programActive(v.state) || v.state == engine::ProgramState::Alarm;
+    const int pinned = choice_->currentData().toInt();
+    const int follow = active && v.program > 0 ? v.program : v.selectedProgram;
+    const int want = pinned > 0 ? pinned : follow;
+    if (want != shown_)
+        showProgram(want);
+    // The frame being executed, when this program is the one running.
+    const int row = active && v.program == shown_ && v.frameIndex >= 0 &&
+                            v.frameIndex < list_->count()
+                        ? v.frameIndex
+                        : -1;
+    if (row != marked_) {
+        if (marked_ >= 0 && marked_ < list_->count()) {
+            QListWidgetItem* old = list_->item(marked_);
+            old->setBackground(QBrush());
+            old->setForeground(QBrush());
+        }
+        marked_ = row;
+        if (row >= 0) {
+            QListWidgetItem* it = list_->item(row);
+            it->setBackground(palette().highlight());
+            it->setForeground(palette().highlightedText());
+            list_->scrollToItem(it, QAbstractItemView::PositionAtCenter);
+        }
+    }
+    QString text = shown_ > 0 ? tr("L%1: %2").arg(shown_).arg(stateName(v.state)) : tr("no program");
+    if (row >= 0 && v.frameNumber > 0)
+        text += tr(", frame N%1").arg(v.frameNumber);
+    if (row >= 0 && !v.messageText.empty())
+        text += QStringLiteral(" — «%1»").arg(fromStd(v.messageText));
+    if (text != statusText_) {
+        statusText_ = text;
+        status_->setText(text);
+    }
+}
+
+void ProgramMonitor::retranslate() {
+    if (choice_->count() > 0)
+        choice_->setItemText(0, tr("Follow the controller"));
+    statusText_.clear();
+}
+
+void ProgramMonitor::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        refresh();
+    }
+    QWidget::changeEvent(event);
+}
+
+} // namespace k528::studio
