@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>k528::studio</name>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has errors: nothing was loaded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 holds no program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A program is running: stop it (RESET) before loading programs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::AxesView</name>
     <message>
         <source>Axis</source>
@@ -839,6 +858,26 @@
     </message>
     <message>
         <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load programs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K528 programs (*.k528 *.txt);;All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loaded %1 from %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Loaded %1 from %2, with warnings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Load programs...</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

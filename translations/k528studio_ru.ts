@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
+    <name>k528::studio</name>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 не читается: %2</translation>
+    </message>
+    <message>
+        <source>%1 has errors: nothing was loaded.</source>
+        <translation>В %1 есть ошибки: ничего не загружено.</translation>
+    </message>
+    <message>
+        <source>%1 holds no program.</source>
+        <translation>В %1 нет программ.</translation>
+    </message>
+    <message>
+        <source>A program is running: stop it (RESET) before loading programs.</source>
+        <translation>Выполняется программа: остановите её («Сброс») перед загрузкой.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::AxesView</name>
     <message>
         <source>Axis</source>
@@ -840,6 +859,26 @@
     <message>
         <source>Program</source>
         <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Load programs</source>
+        <translation>Загрузка программ</translation>
+    </message>
+    <message>
+        <source>K528 programs (*.k528 *.txt);;All files (*)</source>
+        <translation>Программы K528 (*.k528 *.txt);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Loaded %1 from %2</source>
+        <translation>Загружены %1 из %2</translation>
+    </message>
+    <message>
+        <source>Loaded %1 from %2, with warnings.</source>
+        <translation>Загружены %1 из %2, есть предупреждения.</translation>
+    </message>
+    <message>
+        <source>&amp;Load programs...</source>
+        <translation>&amp;Загрузить программы...</translation>
     </message>
 </context>
 <context>

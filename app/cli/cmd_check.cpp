@@ -8,6 +8,7 @@
 
 #include "args.h"
 #include "cli.h"
+#include "engine/program_check.h"
 #include "machine_profile.h"
 #include "profile/builtin.h"
 #include "profile/text_format.h"
@@ -19,48 +20,14 @@ namespace k528::cli {
 
 namespace {
 
-using program::Decimal;
 
 // The constants of a machine profile that a program is checked against.
-// C-parameters of one axis are C(n) for X and C(n + 52) for Z (app. Е):
-// limits C46/C47 are display discretes of the machine system, F УСК.АВТ.
-// C42 is 10 discretes/min; the coordinate components come from the
-// profile's R presets.
-program::AxisLimits axisLimits(const profile::MachineProfile& p, catalog::Axis axis) {
-    program::AxisLimits a;
-    const units::AxisScale scale = profile::axisScale(p, axis);
-    const int decimals = scale.decimals();
-    a.present = profile::axisPresent(p, axis);
-    a.diameter = scale.diameter;
-    a.decimals = decimals;
-    a.softLimits = profile::axisValue(p, axis, 10) == 1;
-    a.minMm = Decimal::fromScaled(profile::axisValue(p, axis, 46), decimals);
-    a.maxMm = Decimal::fromScaled(profile::axisValue(p, axis, 47), decimals);
-    a.maxFeedMmPerMin = Decimal::fromScaled(profile::axisValue(p, axis, 42) * 10, decimals);
-    // Coordinate components preset in R-parameters (app. Л): X even, Z odd.
-    const int z = axis == catalog::Axis::Z ? 1 : 0;
-    auto preset = [&](int r) {
-        const auto it = p.r.find(r + z);
-        return Decimal::fromScaled(it == p.r.end() ? 0 : it->second, decimals);
-    };
-    a.zeroOffsetMm = preset(228);
-    a.dressingMm = preset(224);
-    a.correctionMm = preset(226);
-    a.handwheelMm = preset(230);
-    return a;
-}
-
 // The machine's limits and feeds (--profile, --db) as validation options.
 bool machineOptions(const Args& args, program::ValidateOptions& options) {
     const std::optional<profile::MachineProfile> p = machineProfile(args);
     if (!p)
         return false;
-    program::MachineLimits m;
-    m.x = axisLimits(*p, catalog::Axis::X);
-    m.z = axisLimits(*p, catalog::Axis::Z);
-    options.machine = m;
-    options.nestingLimit =
-        static_cast<int>(p->simulation.getInt("nesting_limit", program::kDefaultNestingLimit));
+    options = engine::validateOptionsFor(*p);
     return true;
 }
 

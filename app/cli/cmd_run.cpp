@@ -4,6 +4,7 @@
 #include "args.h"
 #include "catalog/messages.h"
 #include "cli.h"
+#include "engine/program_check.h"
 #include "machine_profile.h"
 #include "engine/rparams.h"
 #include "engine/self_test.h"
@@ -38,21 +39,6 @@ bool parseAssignment(const std::string& text, long long& n, long long& v) {
     n = *a;
     v = *b;
     return true;
-}
-
-program::AxisLimits axisLimits(const profile::MachineProfile& p, catalog::Axis axis) {
-    program::AxisLimits a;
-    const units::AxisScale scale = profile::axisScale(p, axis);
-    const int decimals = scale.decimals();
-    a.present = profile::axisPresent(p, axis);
-    a.diameter = scale.diameter;
-    a.decimals = decimals;
-    a.softLimits = profile::axisValue(p, axis, 10) == 1;
-    a.minMm = program::Decimal::fromScaled(profile::axisValue(p, axis, 46), decimals);
-    a.maxMm = program::Decimal::fromScaled(profile::axisValue(p, axis, 47), decimals);
-    a.maxFeedMmPerMin =
-        program::Decimal::fromScaled(profile::axisValue(p, axis, 42) * 10, decimals);
-    return a;
 }
 
 json::Value resultJson(const engine::RunResult& r) {
@@ -210,7 +196,11 @@ int runRun(std::span<const std::string> argv) {
         return ExitUsage;
     const bool asJson = args.has("--json");
     std::FILE* diagOut = asJson ? stderr : stdout;
-    program::ParseResult parsed = program::parse(text, parseOptions);
+    bool intact = true;
+    const engine::FileCheck checked =
+        engine::checkFileForMachine(text, parseOptions, prof, engine::loadStore(prof, intact));
+    const program::ParseResult& parsed = checked.parsed;
+    const std::set<int>& filePrograms = checked.programs;
     if (parsed.hasErrors()) {
         printDiagnostics(diagOut, displayName(path), parsed.diagnostics, lang);
         return ExitInputErrors;
@@ -219,32 +209,12 @@ int runRun(std::span<const std::string> argv) {
         std::fprintf(stderr, "k528: %s holds no program\n", displayName(path).c_str());
         return ExitInputErrors;
     }
-    bool intact = true;
-    program::ProgramStore merged = engine::loadStore(prof, intact);
-    std::set<int> filePrograms;
-    for (const program::Program& p : parsed.store.programs()) {
-        merged.insert(p);
-        filePrograms.insert(p.number);
-    }
-    for (const program::Message& m : parsed.store.messages.entries)
-        merged.messages.set(m.number, m.text);
-    program::ValidateOptions vo;
-    vo.nestingLimit =
-        static_cast<int>(prof.simulation.getInt("nesting_limit", program::kDefaultNestingLimit));
-    program::MachineLimits ml;
-    ml.x = axisLimits(prof, catalog::Axis::X);
-    ml.z = axisLimits(prof, catalog::Axis::Z);
-    vo.machine = ml;
-    std::vector<program::Diagnostic> diags;
-    for (program::Diagnostic& d : program::validate(merged, vo))
-        if (filePrograms.count(d.program) || (d.program == 0 && d.line > 0))
-            diags.push_back(std::move(d));
-    if (program::hasErrors(diags)) {
-        printDiagnostics(diagOut, displayName(path), diags, lang);
+    if (checked.hasErrors()) {
+        printDiagnostics(diagOut, displayName(path), checked.diagnostics, lang);
         return ExitInputErrors;
     }
-    if (!asJson && !diags.empty())
-        printDiagnostics(stderr, displayName(path), diags, lang);
+    if (!asJson && !checked.diagnostics.empty())
+        printDiagnostics(stderr, displayName(path), checked.diagnostics, lang);
 
     // Which program: --program N, else the first of the file.
     int number = 0;

@@ -3,6 +3,8 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QEvent>
 #include <QLabel>
 #include <QMenuBar>
@@ -16,6 +18,7 @@
 #include "machine/status_views.h"
 #include "profile/builtin.h"
 #include "monitor/program_monitor.h"
+#include "session/program_loader.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
 
@@ -118,6 +121,9 @@ void MainWindow::createDocks() {
 
 void MainWindow::createMenus() {
     fileMenu_ = menuBar()->addMenu(QString());
+    loadProgramsAction_ =
+        fileMenu_->addAction(QString(), QKeySequence::Open, this, &MainWindow::loadPrograms);
+    loadProgramsAction_->setObjectName("action.loadPrograms");
     machineMenu_ = fileMenu_->addMenu(QString());
     machineMenu_->setObjectName("menu.machine");
     connect(machineMenu_, &QMenu::aboutToShow, this, &MainWindow::fillMachineMenu);
@@ -154,6 +160,35 @@ void MainWindow::createMenus() {
                               "<p>Licence: GNU GPL version 3 or later.</p>")
                                .arg(QString::fromLatin1(k528::version_string)));
     });
+}
+
+void MainWindow::loadPrograms() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Load programs"), QString(), tr("K528 programs (*.k528 *.txt);;All files (*)"));
+    if (!path.isEmpty())
+        loadProgramsFrom(path);
+}
+
+bool MainWindow::loadProgramsFrom(const QString& path) {
+    const ProgramLoad r = loadProgramFile(*session_, path);
+    QStringList names;
+    for (int n : r.programs)
+        names << QStringLiteral("L%1").arg(n);
+    const QString file = QFileInfo(path).fileName();
+    if (r.loaded && r.findings.isEmpty()) {
+        statusBar()->showMessage(tr("Loaded %1 from %2").arg(names.join(", "), file), 10000);
+        return true;
+    }
+    QMessageBox box(r.loaded ? QMessageBox::Information : QMessageBox::Warning, tr("Load programs"),
+                    r.loaded ? tr("Loaded %1 from %2, with warnings.").arg(names.join(", "), file)
+                             : r.problem,
+                    QMessageBox::Ok, this);
+    box.setObjectName("programLoadReport");
+    box.setDetailedText(r.findings.join('\n'));
+    if (!r.findings.isEmpty())
+        box.setInformativeText(r.findings.mid(0, 5).join('\n'));
+    box.exec();
+    return r.loaded;
 }
 
 void MainWindow::fillMachineMenu() {
@@ -336,6 +371,7 @@ QString faultTitle(const machine::FaultSpec& f) {
 void MainWindow::retranslate() {
     setWindowTitle(tr("K528 Studio"));
     fileMenu_->setTitle(tr("&File"));
+    loadProgramsAction_->setText(tr("&Load programs..."));
     machineMenu_->setTitle(tr("&Machine"));
     {
         const QString name = QString::fromStdString(machine_.profile.name);

@@ -59,6 +59,11 @@ public slots:
     // file), keeping its geometry; a machine that cannot be loaded is said
     // in a message box and this window stays. Returns the new window.
     MainWindow* switchMachine(const QString& name);
+    // File > Load programs: asks for a program file and loads it
+    // (session/program_loader.h), telling what it found.
+    void loadPrograms();
+    // The same for a given file, without asking; returns whether it loaded.
+    bool loadProgramsFrom(const QString& path);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -101,6 +106,7 @@ private:
     ProgramMonitor* programMonitor_ = nullptr;
     bool shown_ = false;
     QAction* quitAction_ = nullptr;
+    QAction* loadProgramsAction_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QAction* russianAction_ = nullptr;
     QAction* englishAction_ = nullptr;

@@ -1,0 +1,82 @@
+#include "session/program_loader.h"
+
+#include "engine/program_check.h"
+#include "language.h"
+#include "session/simulation_session.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <algorithm>
+
+namespace k528::studio {
+
+namespace {
+
+QString tr(const char* text) {
+    return QCoreApplication::translate("k528::studio::ProgramLoader", text);
+}
+
+QString finding(const program::Diagnostic& d, bool russian) {
+    const std::string& m = russian ? d.messageRu : d.messageEn;
+    QString s = QStringLiteral("%1:%2: %3: ")
+                    .arg(d.line)
+                    .arg(d.column)
+                    .arg(d.isError() ? QStringLiteral("error") : QStringLiteral("warning"));
+    if (d.manualNumber > 0)
+        s += QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0'));
+    return s + QString::fromUtf8(m.data(), static_cast<qsizetype>(m.size()));
+}
+
+} // namespace
+
+ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
+    ProgramLoad r;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        r.problem = tr("%1 cannot be read: %2").arg(path, f.errorString());
+        return r;
+    }
+    const QByteArray text = f.readAll();
+    engine::Controller& ctl = session.controller();
+    const engine::FileCheck c = engine::checkFileForMachine(
+        std::string_view(text.constData(), static_cast<std::size_t>(text.size())), {},
+        session.simulation().profile(), ctl.programs());
+    const bool russian = currentLanguage() == QStringLiteral("ru");
+    for (const program::Diagnostic& d : c.diagnostics)
+        r.findings << finding(d, russian);
+    // The file's order, as `k528 run` picks the first.
+    std::vector<const program::Program*> order;
+    for (const program::Program& p : c.parsed.store.programs())
+        order.push_back(&p);
+    std::stable_sort(order.begin(), order.end(), [](const auto* a, const auto* b) {
+        return a->headerLine < b->headerLine;
+    });
+    for (const program::Program* p : order)
+        r.programs << p->number;
+    const QString name = QFileInfo(path).fileName();
+    if (c.hasErrors()) {
+        r.problem = tr("%1 has errors: nothing was loaded.").arg(name);
+        return r;
+    }
+    if (r.programs.isEmpty()) {
+        r.problem = tr("%1 holds no program.").arg(name);
+        return r;
+    }
+    program::ProgramStore* store = ctl.editablePrograms();
+    if (!store) {
+        r.problem = tr("A program is running: stop it (RESET) before loading programs.");
+        return r;
+    }
+    for (const program::Program& p : c.parsed.store.programs())
+        store->insert(p);
+    for (const program::Message& m : c.parsed.store.messages.entries)
+        store->messages.set(m.number, m.text);
+    ctl.programsEdited();
+    ctl.selectProgram(r.programs.front()); // R252: АВТОМАТ starts it
+    r.loaded = true;
+    session.advance(0); // the views show the new programs
+    return r;
+}
+
+} // namespace k528::studio

@@ -1,0 +1,26 @@
+// Loading a program file (shared/spec/program-language.md) into the
+// simulated controller, as a technologist proves a program written offline:
+// the file is checked for the machine it goes to (engine/program_check.h:
+// syntax, every rule, the machine's limits and feeds, over the programs the
+// controller already holds); with an error nothing is loaded, otherwise its
+// programs and messages replace those of the same numbers and the first of
+// its programs is selected for АВТОМАТ.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+namespace k528::studio {
+
+class SimulationSession;
+
+struct ProgramLoad {
+    bool loaded = false;
+    QList<int> programs;  // the file's program numbers, in the file's order
+    QStringList findings; // "LINE:COL: error|warning: [Mnn] text", in the UI language
+    QString problem;      // why nothing was loaded ("" when loaded)
+};
+
+ProgramLoad loadProgramFile(SimulationSession& session, const QString& path);
+
+} // namespace k528::studio
