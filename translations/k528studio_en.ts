@@ -880,6 +880,26 @@
         <source>&amp;Load programs...</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Keep in the database</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The memory of %1 was not kept: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the database already holds this memory (revision %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 kept in the database as revision %2 (%3 changes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Keep the controller&apos;s memory in the database</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>

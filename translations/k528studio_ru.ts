@@ -880,6 +880,26 @@
         <source>&amp;Load programs...</source>
         <translation>&amp;Загрузить программы...</translation>
     </message>
+    <message>
+        <source>Keep in the database</source>
+        <translation>Сохранение в базе данных</translation>
+    </message>
+    <message>
+        <source>The memory of %1 was not kept: %2</source>
+        <translation>Память %1 не сохранена: %2</translation>
+    </message>
+    <message>
+        <source>%1: the database already holds this memory (revision %2)</source>
+        <translation>%1: эта память уже в базе данных (редакция %2)</translation>
+    </message>
+    <message>
+        <source>%1 kept in the database as revision %2 (%3 changes)</source>
+        <translation>%1 сохранён в базе данных, редакция %2 (изменений: %3)</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the controller's memory in the database</source>
+        <translation>&amp;Сохранить память БП в базе данных</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>

@@ -12,6 +12,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 
+#include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
 #include "machine/machine_panel.h"
@@ -124,6 +125,8 @@ void MainWindow::createMenus() {
     loadProgramsAction_ =
         fileMenu_->addAction(QString(), QKeySequence::Open, this, &MainWindow::loadPrograms);
     loadProgramsAction_->setObjectName("action.loadPrograms");
+    keepAction_ = fileMenu_->addAction(QString(), QKeySequence::Save, this, [this] { keepInDatabase(); });
+    keepAction_->setObjectName("action.keepInDatabase");
     machineMenu_ = fileMenu_->addMenu(QString());
     machineMenu_->setObjectName("menu.machine");
     connect(machineMenu_, &QMenu::aboutToShow, this, &MainWindow::fillMachineMenu);
@@ -189,6 +192,27 @@ bool MainWindow::loadProgramsFrom(const QString& path) {
         box.setInformativeText(r.findings.mid(0, 5).join('\n'));
     box.exec();
     return r.loaded;
+}
+
+int MainWindow::keepInDatabase() {
+    const engine::Controller& c = session_->controller();
+    const profile::MachineProfile p =
+        engine::memoryProfile(session_->simulation().profile(), c.c(), c.rValues(), c.programs());
+    const MachineSave s = saveMachine(p);
+    const QString name = QString::fromStdString(p.name);
+    if (s.revision == 0) {
+        QMessageBox::warning(this, tr("Keep in the database"),
+                             tr("The memory of %1 was not kept: %2").arg(name, s.error));
+        return 0;
+    }
+    statusBar()->showMessage(
+        s.changes == 0 ? tr("%1: the database already holds this memory (revision %2)").arg(name).arg(s.revision)
+                       : tr("%1 kept in the database as revision %2 (%3 changes)")
+                             .arg(name)
+                             .arg(s.revision)
+                             .arg(s.changes),
+        10000);
+    return s.revision;
 }
 
 void MainWindow::fillMachineMenu() {
@@ -372,6 +396,7 @@ void MainWindow::retranslate() {
     setWindowTitle(tr("K528 Studio"));
     fileMenu_->setTitle(tr("&File"));
     loadProgramsAction_->setText(tr("&Load programs..."));
+    keepAction_->setText(tr("&Keep the controller's memory in the database"));
     machineMenu_->setTitle(tr("&Machine"));
     {
         const QString name = QString::fromStdString(machine_.profile.name);

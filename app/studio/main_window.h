@@ -64,6 +64,10 @@ public slots:
     void loadPrograms();
     // The same for a given file, without asking; returns whether it loaded.
     bool loadProgramsFrom(const QString& path);
+    // File > Keep in the database: the controller's memory (C, R, programs,
+    // messages; engine::memoryProfile) as a new revision of this machine.
+    // Returns the revision, 0 when it could not be kept (said in a box).
+    int keepInDatabase();
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -107,6 +111,7 @@ private:
     bool shown_ = false;
     QAction* quitAction_ = nullptr;
     QAction* loadProgramsAction_ = nullptr;
+    QAction* keepAction_ = nullptr;
     QAction* aboutAction_ = nullptr;
     QAction* russianAction_ = nullptr;
     QAction* englishAction_ = nullptr;

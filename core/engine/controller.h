@@ -89,6 +89,7 @@ public:
     PlcMessagesView plcMessages() const;
     const RStore& r() const { return c_.r; }
     std::int32_t r(int number) const { return c_.r[number]; }
+    std::span<const std::int32_t> rValues() const { return c_.r.values(); } // R0..R299
     std::span<const std::int64_t> c() const { return c_.c; }
     const profile::MachineProfile& profile() const { return c_.profile; }
     Mode mode() const { return c_.mode; }

@@ -1,5 +1,8 @@
 #include "engine/self_test.h"
 
+#include "engine/rparams.h"
+#include "program/formatter.h"
+
 #include "profile/validate.h"
 #include "program/parser.h"
 
@@ -48,6 +51,29 @@ program::ProgramStore loadStore(const profile::MachineProfile& p, bool& intact) 
     for (const auto& [k, text] : p.messages)
         store.messages.set(k, text);
     return store;
+}
+
+profile::MachineProfile memoryProfile(const profile::MachineProfile& base,
+                                      std::span<const std::int64_t> c,
+                                      std::span<const std::int32_t> r,
+                                      const program::ProgramStore& store) {
+    profile::MachineProfile p = base;
+    for (std::size_t n = 1; n < p.c.size() && n < c.size(); ++n)
+        p.c[n] = c[n];
+    p.r.clear();
+    for (std::size_t n = 0; n < r.size() && rValid(static_cast<int>(n)); ++n)
+        if (r[n] != 0 && !rReadOnly(static_cast<int>(n)))
+            p.r[static_cast<int>(n)] = r[n];
+    p.programs.clear();
+    for (const program::Program& prog : store.programs()) {
+        program::ProgramStore one;
+        one.insert(prog);
+        p.programs[prog.number] = program::format(one);
+    }
+    p.messages.clear();
+    for (const program::Message& m : store.messages.entries)
+        p.messages[m.number] = m.text;
+    return p;
 }
 
 bool storeIntact(const program::ProgramStore& store) {

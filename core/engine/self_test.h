@@ -29,4 +29,15 @@ program::ProgramStore loadStore(const profile::MachineProfile& p, bool& intact);
 // True if every frame of the store was read without a syntax error.
 bool storeIntact(const program::ProgramStore& store);
 
+// The inverse of loadStore for a whole memory: `base` (the machine's name,
+// title, PLC texts and simulation settings) with the C-parameters `c`, the
+// writable R-parameters that are not 0 as presets (the read-only R232..R262
+// are the machine's state, not settings), and every program of `store` in
+// canonical text with the store's messages. What «keep the controller's
+// memory» writes to the database.
+profile::MachineProfile memoryProfile(const profile::MachineProfile& base,
+                                      std::span<const std::int64_t> c,
+                                      std::span<const std::int32_t> r,
+                                      const program::ProgramStore& store);
+
 } // namespace k528::engine

@@ -7,6 +7,7 @@
 #include "main_window.h"
 #include "profile/builtin.h"
 #include "profile/text_format.h"
+#include "program/parser.h"
 #include "session/machine_source.h"
 #include "session/simulation_session.h"
 
@@ -89,6 +90,35 @@ private slots:
         QCOMPARE(startMachineName(), QString("grinder-205")); // the next start
         g->close();
         rememberMachine("training-lathe");
+    }
+
+    // File > Keep: the controller's memory becomes the next revision of the
+    // machine, and the next start runs it.
+    void keepTheMemory() {
+        MainWindow w(loadMachine("training-lathe"));
+        SimulationSession* s = w.session();
+        s->setRunning(false);
+        engine::Controller& ctl = s->controller();
+        QVERIFY(ctl.setR(100, 4321).ok());
+        program::ProgramStore* store = ctl.editablePrograms();
+        QVERIFY(store);
+        const auto parsed = program::parse("%L42 (kept)\nN1 G1 X40 FX100\nN2 M30\n");
+        for (const program::Program& p : parsed.store.programs())
+            store->insert(p);
+        QVERIFY(ctl.programsEdited().ok());
+        const int rev = w.keepInDatabase();
+        QVERIFY(rev >= 2);
+        const MachineChoice again = loadMachine("training-lathe");
+        QCOMPARE(again.profile.r.at(100), std::int64_t(4321));
+        QVERIFY(again.profile.programs.count(42));
+        QCOMPARE(again.profile.programs.at(42), std::string("%L42 (kept)\nN1 G1 X40 FX100\nN2 M30\n"));
+        QVERIFY(again.profile.programs.count(1)); // the machine's own programs stay
+        QCOMPARE(again.profile.c, w.session()->simulation().profile().c);
+        // Nothing new: the same revision.
+        QCOMPARE(w.keepInDatabase(), rev);
+        // The history says who and what (k528 db show --history).
+        const auto history = runK528({"db", "show", "training-lathe", "--history", "1", "--db", db_});
+        QVERIFY2(history.out.contains("R100"), qPrintable(history.out));
     }
 
     void damagedDatabaseIsReportedAndLeftAlone() {

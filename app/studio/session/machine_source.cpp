@@ -68,6 +68,24 @@ QStringList machineNames(QString* warning) {
     return names;
 }
 
+MachineSave saveMachine(const profile::MachineProfile& p) {
+    MachineSave s;
+    try {
+        db::Database d = openDatabase();
+        db::WriteOptions o;
+        o.summary = "kept from the simulated controller's memory (K528 Studio)";
+        // Constants a trainer made faulty on purpose stay as they are.
+        o.allowErrors = true;
+        const db::SaveResult r =
+            d.hasMachine(p.name) ? d.saveMachine(p.name, p, o) : d.createMachine(p, o);
+        s.revision = r.revision;
+        s.changes = static_cast<int>(r.changes.size());
+    } catch (const std::exception& e) {
+        s.error = QString::fromUtf8(e.what());
+    }
+    return s;
+}
+
 QString startMachineName() {
     return QSettings().value(kMachineKey, fromStd(std::string(profile::kDefaultProfile))).toString();
 }

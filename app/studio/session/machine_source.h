@@ -26,6 +26,17 @@ MachineChoice loadMachine(const QString& nameOrPath);
 // The machines to choose from: the database's, else the built-in ones.
 QStringList machineNames(QString* warning = nullptr);
 
+// Keeps `p` as the current state of machine p.name in the database (a new
+// revision, with its history; a new machine if the database has none of that
+// name). Returns the revision, or 0 and `error` why not (the database cannot
+// be used, a value the definitions refuse).
+struct MachineSave {
+    int revision = 0;
+    int changes = 0; // items changed by this revision (0: nothing was different)
+    QString error;
+};
+MachineSave saveMachine(const profile::MachineProfile& p);
+
 // The machine the workstation starts with: the last one chosen (settings),
 // else the default profile.
 QString startMachineName();
