@@ -38,6 +38,7 @@ std::string_view ruleId(Rule r) {
     case Rule::UnknownG: return "unknown-g";
     case Rule::GSameGroup: return "g-same-group";
     case Rule::MRange: return "m-range";
+    case Rule::NoProgram: return "no-program";
     case Rule::MRepeated: return "m-repeated";
     case Rule::MessageRange: return "message-range";
     case Rule::MessageUndefined: return "message-undefined";

@@ -49,6 +49,7 @@ enum class Rule : std::uint16_t {
     DuplicateFrameNumber, // 54
     TooManyFrames,
     EmptyProgram, // warning
+    NoProgram,    // warning: a file without any program
     CoordinateRange, // 33 / 49
     FeedRange,
     UnknownG,     // 47

@@ -1004,6 +1004,19 @@ CheckResult check(std::string_view text, const ParseOptions& parseOptions, const
     auto more = validate(parsed.store, options);
     for (auto& d : more)
         r.diagnostics.push_back(std::move(d));
+    // A file of nothing but comments or blank lines: say so, a batch check
+    // would otherwise pass it silently.
+    if (!r.syntaxErrors && parsed.store.empty() && parsed.store.messages.entries.empty()) {
+        Diagnostic d;
+        d.rule = Rule::NoProgram;
+        d.severity = Severity::Warning;
+        d.line = 1;
+        d.column = 1;
+        d.endColumn = 2;
+        d.messageRu = "В файле нет ни одной программы (ни одного кадра)";
+        d.messageEn = "the file holds no program (not a single frame)";
+        r.diagnostics.push_back(std::move(d));
+    }
     sortDiagnostics(r.diagnostics);
     r.store = std::move(parsed.store);
     return r;

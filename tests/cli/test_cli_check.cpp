@@ -33,6 +33,19 @@ private slots:
         QCOMPARE(r.out, QString());
         QCOMPARE(r.err, QString());
     }
+    // A file with nothing in it is not silently clean: a warning, exit 0.
+    void fileWithoutProgramsIsSaidSo() {
+        QTemporaryDir dir;
+        for (const char* text : {"", "; a comment only\n\n", "(remark)\n"}) {
+            const QString f = write(dir, "none.k528", text);
+            const auto r = runK528({"check", "--lang", "en", f});
+            QCOMPARE(r.exitCode, 0);
+            QVERIFY2(r.out.contains(":1:1: warning: the file holds no program"), qPrintable(r.out));
+        }
+        // Near miss: a message table alone is something.
+        const QString m = write(dir, "msg.k528", "%MESSAGES\n#1=ПРОБА\n");
+        QVERIFY(!runK528({"check", "--lang", "en", m}).out.contains("holds no program"));
+    }
     void plainLinesInRussianByDefault() {
         QTemporaryDir dir;
         const QString f = write(dir, "bad.k528", "%L1\nN1 GOTO 5\nG1 X1\nN2 M30\n");
