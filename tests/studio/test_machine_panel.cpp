@@ -290,6 +290,9 @@ private slots:
         ProgramMonitor* m = w.programMonitor();
         QVERIFY(m);
         QCOMPARE(w.workArea()->widget(0), static_cast<QWidget*>(m));
+        // Nothing selected after power-on: the catalog's first program.
+        s->advance(10);
+        QCOMPARE(m->shownProgram(), s->controller().programs().programs().front().number);
         engine::Controller& ctl = s->controller();
         program::ProgramStore* store = ctl.editablePrograms();
         QVERIFY(store);

@@ -104,7 +104,12 @@ void ProgramMonitor::refresh() {
     const bool active = engine::programActive(v.state) || v.state == engine::ProgramState::Alarm;
     const int pinned = choice_->currentData().toInt();
     const int follow = active && v.program > 0 ? v.program : v.selectedProgram;
-    const int want = pinned > 0 ? pinned : follow;
+    // Nothing selected yet (after power-on R252 = 0): the catalog's first
+    // program, as the editor menu shows it («номер первой существующей в
+    // каталоге программы»).
+    const auto& all = c.programs().programs();
+    const int first = all.empty() ? 0 : all.front().number;
+    const int want = pinned > 0 ? pinned : (follow > 0 ? follow : first);
     if (want != shown_)
         showProgram(want);
     // The frame being executed, when this program is the one running.

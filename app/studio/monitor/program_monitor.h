@@ -3,7 +3,8 @@
 // executed marked and kept in view, and above them the program, its state,
 // the frame number and the technological message. Read-only. It follows the
 // executing program (R253: a subprogram while it runs), else the one
-// selected for АВТОМАТ (R252); the trainer may pin another one.
+// selected for АВТОМАТ (R252), else the catalog's first; the trainer may pin
+// another one.
 #pragma once
 
 #include <QWidget>
