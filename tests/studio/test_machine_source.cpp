@@ -43,7 +43,7 @@ private slots:
         QCoreApplication::setOrganizationName("K528StudioTest");
         QSettings().clear();
         QVERIFY(setLanguage("en"));
-        db_ = dir_.filePath("shop.db");
+        db_ = dir_.filePath("new/folder/shop.db"); // a new machine: not even the folder exists
         qputenv("K528_DB", db_.toUtf8());
     }
 

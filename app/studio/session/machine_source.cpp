@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QSettings>
 #include <exception>
+#include <filesystem>
 
 namespace k528::studio {
 
@@ -19,9 +20,13 @@ QString fromStd(const std::string& s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-// The database, created with the built-in machines when it does not exist.
+// The database, created with the built-in machines (and its folder) when it
+// does not exist: the first start on a new machine.
 db::Database openDatabase() {
-    return db::Database::open(db::defaultDatabasePath());
+    const std::filesystem::path path = db::defaultDatabasePath();
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec); // open() says why if this failed
+    return db::Database::open(path);
 }
 
 QString databaseProblem(const std::exception& e) {
