@@ -87,13 +87,9 @@ bool readProgramFile(const std::string& path, std::string& contents) {
 
 void printDiagnostics(std::FILE* out, const std::string& file,
                       const std::vector<program::Diagnostic>& diagnostics, Lang lang) {
-    for (const auto& d : diagnostics) {
-        const std::string& text = lang == Lang::Ru ? d.messageRu : d.messageEn;
-        std::fprintf(out, "%s:%d:%d: %s: ", file.c_str(), d.line, d.column, d.isError() ? "error" : "warning");
-        if (d.manualNumber > 0)
-            std::fprintf(out, "[M%02d] ", d.manualNumber);
-        std::fprintf(out, "%s\n", text.c_str());
-    }
+    for (const auto& d : diagnostics)
+        std::fprintf(out, "%s:%s\n", file.c_str(),
+                     program::formatDiagnostic(d, lang == Lang::Ru).c_str());
 }
 
 bool parseProgramNumber(const std::optional<std::string>& value, int& number) {

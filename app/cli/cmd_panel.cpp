@@ -141,7 +141,6 @@ public:
     virtual ~Bench() = default;
     virtual engine::Controller& controller() = 0;
     virtual void advance(std::int64_t ms) = 0;
-    virtual void button(const ButtonStep& b) = 0;
 };
 
 class IdealBench final : public Bench {
@@ -152,7 +151,6 @@ public:
     }
     engine::Controller& controller() override { return ctl_; }
     void advance(std::int64_t ms) override { m_.advance(ms); }
-    void button(const ButtonStep&) override {} // refused before anything runs
 
 private:
     engine::Controller ctl_;
@@ -167,7 +165,8 @@ public:
     }
     engine::Controller& controller() override { return sim_.controller(); }
     void advance(std::int64_t ms) override { sim_.advance(ms); }
-    void button(const ButtonStep& b) override {
+    // Button steps exist only with --machine (checked before anything runs).
+    void button(const ButtonStep& b) {
         if (!b.button) {
             b.pull ? sim_.releaseEmergencyStop() : sim_.pressEmergencyStop();
             sim_.advance(kSeenMs);
@@ -220,11 +219,15 @@ int runPanel(std::span<const std::string> argv) {
     const profile::MachineProfile& profile = *loaded;
 
     std::unique_ptr<Bench> bench;
+    MachineBench* machineBench = nullptr;
     try {
-        if (onMachine)
-            bench = std::make_unique<MachineBench>(profile);
-        else
+        if (onMachine) {
+            auto m = std::make_unique<MachineBench>(profile);
+            machineBench = m.get();
+            bench = std::move(m);
+        } else {
             bench = std::make_unique<IdealBench>(profile);
+        }
     } catch (const plc::DescriptionError& e) {
         std::fprintf(stderr, "k528: machine description %s\n", e.what());
         return ExitUsage;
@@ -234,7 +237,7 @@ int runPanel(std::span<const std::string> argv) {
         if (const auto* k = std::get_if<panel::KeyPress>(&s))
             k923.press(*k);
         else if (const auto* b = std::get_if<ButtonStep>(&s))
-            bench->button(*b);
+            machineBench->button(*b);
         else
             bench->advance(std::get<std::int64_t>(s));
     }

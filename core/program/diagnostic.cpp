@@ -1,6 +1,7 @@
 #include "program/diagnostic.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace k528::program {
 
@@ -81,6 +82,17 @@ void sortDiagnostics(std::vector<Diagnostic>& d) {
 
 bool hasErrors(const std::vector<Diagnostic>& d) {
     return std::any_of(d.begin(), d.end(), [](const Diagnostic& x) { return x.isError(); });
+}
+
+std::string formatDiagnostic(const Diagnostic& d, bool russian) {
+    std::string s = std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
+                    (d.isError() ? "error" : "warning") + ": ";
+    if (d.manualNumber > 0) {
+        char m[24];
+        std::snprintf(m, sizeof m, "[M%02d] ", d.manualNumber);
+        s += m;
+    }
+    return s + (russian ? d.messageRu : d.messageEn);
 }
 
 std::size_t countErrors(const std::vector<Diagnostic>& d) {

@@ -103,6 +103,10 @@ struct Diagnostic {
 // Sorts by line, column, then errors before warnings (stable otherwise).
 void sortDiagnostics(std::vector<Diagnostic>& d);
 bool hasErrors(const std::vector<Diagnostic>& d);
+
+// "LINE:COL: error|warning: [M<nn>] text" in Russian or English: the plain
+// line of shared/spec/cli.md without its "FILE:" (the CLI and the desktop).
+std::string formatDiagnostic(const Diagnostic& d, bool russian);
 std::size_t countErrors(const std::vector<Diagnostic>& d);
 
 } // namespace k528::program

@@ -238,8 +238,8 @@ private slots:
         r->advance(20);
         QVERIFY2(r->hasAlarm(message), r->alarmList().c_str());
         if (part == int(PositionerPart::PulseModule2)) {
-            // The slide is pushed by hand (a jog would be refused now): the
-            // counter of the dead module does not follow.
+            // Counts arriving on the encoder lines (the DacLimit fault adds a
+            // burst): the counter of the dead module does not take them.
             r->s().inject({Fault::DacLimit, Z});
             r->advance(5);
             QCOMPARE(r->c().io().pulse[2].count, zCount);

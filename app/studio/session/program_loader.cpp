@@ -17,17 +17,6 @@ QString tr(const char* text) {
     return QCoreApplication::translate("k528::studio::ProgramLoader", text);
 }
 
-QString finding(const program::Diagnostic& d, bool russian) {
-    const std::string& m = russian ? d.messageRu : d.messageEn;
-    QString s = QStringLiteral("%1:%2: %3: ")
-                    .arg(d.line)
-                    .arg(d.column)
-                    .arg(d.isError() ? QStringLiteral("error") : QStringLiteral("warning"));
-    if (d.manualNumber > 0)
-        s += QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0'));
-    return s + QString::fromUtf8(m.data(), static_cast<qsizetype>(m.size()));
-}
-
 } // namespace
 
 ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
@@ -44,7 +33,7 @@ ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
         session.simulation().profile(), ctl.programs());
     const bool russian = currentLanguage() == QStringLiteral("ru");
     for (const program::Diagnostic& d : c.diagnostics)
-        r.findings << finding(d, russian);
+        r.findings << QString::fromStdString(program::formatDiagnostic(d, russian));
     // The file's order, as `k528 run` picks the first.
     std::vector<const program::Program*> order;
     for (const program::Program& p : c.parsed.store.programs())
