@@ -11,8 +11,11 @@ packages=(
     qt6-serialbus-dev qt6-tools-dev qt6-l10n-tools        # Modbus, Qt Test/Linguist tools
     libqt6sql6-sqlite libqt6svg6 qt6-qpa-plugins          # run-time plugins
     libvtk9-dev libeigen3-dev libsqlite3-dev              # VTK 9.1, Eigen, SQLite
+    nlohmann-json3-dev libboost-dev                       # JSON, Boost.Geometry (header-only)
+    libqscintilla2-qt6-dev qt6-charts-dev                 # program editor, oscilloscope
     libgl1-mesa-dri xvfb xauth                            # OpenGL in software, X server for GUI tests
     socat mbpoll                                          # serial-link test peers
+    python3-pymodbus python3-serial python3-serial-asyncio # a foreign Modbus RTU controller in tests
     dpkg-dev file                                         # packaging (dpkg-shlibdeps) and its tests
     clang libclang-rt-14-dev                              # libFuzzer targets (optional preset)
     fonts-dejavu-core                                     # a font with Cyrillic for offscreen rendering
