@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 namespace k528::cli {
 
@@ -85,7 +86,8 @@ std::optional<double> parseNumber(std::string_view s) {
     if (b != e && *b == '+')
         ++b;
     auto [ptr, ec] = std::from_chars(b, e, v, std::chars_format::fixed);
-    if (b == e || ec != std::errc() || ptr != e)
+    // "nan", "inf" and numbers out of range are not numbers of seconds, percent…
+    if (b == e || ec != std::errc() || ptr != e || !std::isfinite(v))
         return std::nullopt;
     return v;
 }

@@ -36,7 +36,8 @@ private:
 
 // Parses a whole decimal integer ("12", "-5"); nullopt on anything else.
 std::optional<long long> parseInt(std::string_view s);
-// Parses a decimal number ("12", "-0.5", "3600"); nullopt on anything else.
+// Parses a finite decimal number ("12", "-0.5", "3600"); nullopt on anything
+// else (also "nan", "inf").
 std::optional<double> parseNumber(std::string_view s);
 
 } // namespace k528::cli

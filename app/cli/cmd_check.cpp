@@ -14,6 +14,7 @@
 #include "profile/text_format.h"
 #include "program/validator.h"
 #include "program_cli.h"
+#include "util/input_file.h"
 #include "util/json.h"
 
 namespace k528::cli {
@@ -70,9 +71,9 @@ std::string displayName(const std::string& path) { return path == "-" ? "<stdin>
 
 bool readProgramFile(const std::string& path, std::string& contents) {
     if (path == "-") {
-        contents.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-        if (std::cin.bad()) {
-            std::fprintf(stderr, "k528: cannot read standard input\n");
+        std::string error;
+        if (!util::readInputStream(stdin, "standard input", contents, error)) {
+            std::fprintf(stderr, "k528: %s\n", error.c_str());
             return false;
         }
         return true;
@@ -142,7 +143,6 @@ int runCheck(std::span<const std::string> argv) {
         root.set("files", std::move(files));
         std::printf("%s\n", root.dump().c_str());
     }
-    std::fflush(stdout);
     if (ioError)
         return ExitUsage;
     return errors ? ExitInputErrors : ExitOk;

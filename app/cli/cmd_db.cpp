@@ -10,16 +10,19 @@
 #include "db/location.h"
 #include "db/sha256.h"
 #include "db_cli.h"
+#include "output_file.h"
 #include "profile/builtin.h"
 #include "profile/csv.h"
 #include "profile/diff.h"
 #include "profile/text_format.h"
 #include "profile/validate.h"
 #include "units/units.h"
+#include "util/input_file.h"
 #include "util/json.h"
 #include "util/utf8.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +31,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <map>
 #include <sstream>
 
 namespace k528::cli {
@@ -251,26 +255,9 @@ bool writeOutput(const std::optional<std::string>& outPath, const std::string& t
         out(text);
         return true;
     }
-    const fs::path target(*outPath);
-    const fs::path tmp = target.string() + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) {
-            fail("cannot write " + tmp.string() + ": " + std::strerror(errno));
-            return false;
-        }
-        f.write(text.data(), static_cast<std::streamsize>(text.size()));
-        f.flush();
-        if (!f) {
-            fail("cannot write " + tmp.string() + ": " + std::strerror(errno));
-            return false;
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        fail("cannot write " + target.string() + ": " + ec.message());
+    std::string error;
+    if (!writeOutputFile(*outPath, text, error)) {
+        fail(error);
         return false;
     }
     return true;
@@ -862,6 +849,16 @@ int cmdShow(std::span<const std::string> argvIn) {
 // --------------------------------------------------------------------------
 // set
 
+// The item an ITEM=VALUE names, the same for C22, c022 and C022.
+std::string itemKey(const std::string& item) {
+    std::string key = item.substr(0, item.find('='));
+    if (key.size() < 2 || std::string_view("CcRr#AWS").find(key[0]) == std::string_view::npos)
+        return key;
+    const std::size_t nz = key.find_first_not_of('0', 1);
+    const std::string digits = nz == std::string::npos ? "0" : key.substr(nz);
+    return std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(key[0])))) + digits;
+}
+
 // One ITEM=VALUE of `set` into the edit; "" or what is wrong.
 std::string parseItem(const std::string& item, db::Edit& e) {
     const auto eq = item.find('=');
@@ -976,9 +973,16 @@ int cmdSet(std::span<const std::string> argv) {
     if (!parseLangOption(a, lang))
         return ExitUsage;
     db::Edit edit;
-    for (std::size_t i = 1; i < a.positional().size(); ++i)
-        if (const auto err = parseItem(a.positional()[i], edit); !err.empty())
+    std::map<std::string, std::string> given; // item key -> the ITEM=VALUE that set it
+    for (std::size_t i = 1; i < a.positional().size(); ++i) {
+        const std::string& item = a.positional()[i];
+        if (const auto err = parseItem(item, edit); !err.empty())
             return usageError(err);
+        const auto [it, fresh] = given.emplace(itemKey(item), item);
+        if (!fresh)
+            return usageError(item.substr(0, item.find('=')) + " is given twice ('" + it->second +
+                              "' and '" + item + "'); give each item once");
+    }
     DbTarget t;
     if (!dbTarget(a, t))
         return ExitUsage;
@@ -1090,7 +1094,8 @@ int cmdImport(std::span<const std::string> argv) {
     const std::string file = a.positional()[0];
     std::string text, err;
     if (file == "-") {
-        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        if (!util::readInputStream(stdin, "standard input", text, err))
+            return fail(err);
     } else if (!readFile(file, text, err)) {
         return fail(err);
     }

@@ -1,11 +1,10 @@
 // k528 format [--number N] [--lang ru|en] [--in-place | --check] FILE
 // (shared/spec/cli.md; extensions in docs/program-language.md).
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "args.h"
 #include "cli.h"
+#include "output_file.h"
 #include "program/formatter.h"
 #include "program/parser.h"
 #include "program_cli.h"
@@ -54,35 +53,15 @@ int runFormat(std::span<const std::string> argv) {
         if (canonical == text)
             return ExitOk;
         // The file itself is replaced, not a link to it, and it keeps its
-        // permissions: write beside the real file, then rename over it.
-        std::error_code ec;
-        const std::filesystem::path real = std::filesystem::canonical(path, ec);
-        if (ec) {
-            std::fprintf(stderr, "k528: cannot resolve %s: %s\n", path.c_str(), ec.message().c_str());
-            return ExitUsage;
-        }
-        const std::filesystem::perms perms = std::filesystem::status(real, ec).permissions();
-        const std::string tmp = real.string() + ".k528-format.tmp";
-        {
-            std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-            out << canonical;
-            out.flush();
-            if (!out) {
-                std::remove(tmp.c_str());
-                std::fprintf(stderr, "k528: cannot write %s\n", tmp.c_str());
-                return ExitUsage;
-            }
-        }
-        std::filesystem::permissions(tmp, perms, ec);
-        if (ec || std::rename(tmp.c_str(), real.c_str()) != 0) {
-            std::remove(tmp.c_str());
-            std::fprintf(stderr, "k528: cannot replace %s\n", path.c_str());
+        // permissions (output_file.h).
+        std::string error;
+        if (!writeOutputFile(path, canonical, error)) {
+            std::fprintf(stderr, "k528: %s\n", error.c_str());
             return ExitUsage;
         }
         return ExitOk;
     }
     std::fwrite(canonical.data(), 1, canonical.size(), stdout);
-    std::fflush(stdout);
     return ExitOk;
 }
 

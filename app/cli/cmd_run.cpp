@@ -227,12 +227,8 @@ int runRun(std::span<const std::string> argv) {
                               *p);
         number = static_cast<int>(*n);
     } else {
-        int firstLine = 0;
-        for (const program::Program& p : parsed.store.programs())
-            if (number == 0 || p.headerLine < firstLine) {
-                number = p.number;
-                firstLine = p.headerLine;
-            }
+        // The first program as written (the one `k528 format` keeps first).
+        number = parsed.store.firstWritten();
     }
 
     engine::RunResult result;
@@ -248,7 +244,6 @@ int runRun(std::span<const std::string> argv) {
         std::printf("%s\n", resultJson(result).dump().c_str());
     else
         printPlain(result, lang);
-    std::fflush(stdout);
     return result.status == engine::RunStatus::Completed ? ExitOk : ExitInputErrors;
 }
 

@@ -1,14 +1,10 @@
 // The table of `k528` subcommands. A new subcommand: write cmd_<name>.cpp with
 // a run function, declare it in cli.h (or here) and add one row.
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "cli.h"
 #include "db_cli.h"
 #include "program_cli.h"
+#include "util/input_file.h"
 
 namespace k528::cli {
 
@@ -101,24 +97,7 @@ void printCommandHelp(const Command& c, std::FILE* out) {
 }
 
 bool readFile(const std::string& path, std::string& contents, std::string& error) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        error = "cannot read " + path + ": it is a directory";
-        return false;
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = "cannot open " + path + ": " + std::strerror(errno);
-        return false;
-    }
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) {
-        error = "cannot read " + path + ": " + std::strerror(errno);
-        return false;
-    }
-    contents = ss.str();
-    return true;
+    return util::readInputFile(path, contents, error);
 }
 
 } // namespace k528::cli

@@ -1,6 +1,9 @@
 // k528 — the command line of K528 Studio (shared/spec/cli.md).
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -32,19 +35,40 @@ void printHelp() {
                 "ended in an alarm); 2 usage or I/O error.\n");
 }
 
-} // namespace
+// Everything a command printed reaches standard output, or the run fails:
+// the one place that flushes it and checks for a lost write (a full disk,
+// /dev/full, a closed pipe). A backup `k528 db export M > file` on a full
+// disk must not report success.
+int finishStandardOutput(int exitCode) {
+    errno = 0;
+    const bool flushFailed = std::fflush(stdout) != 0;
+    const int flushErrno = errno;
+    if (flushFailed || std::ferror(stdout)) {
+        std::fprintf(stderr, "k528: cannot write standard output: %s\n",
+                     flushFailed && flushErrno != 0 ? std::strerror(flushErrno)
+                                                    : "a write failed");
+        return ExitUsage;
+    }
+    return exitCode;
+}
 
-int main(int argc, char** argv) {
+int dispatch(int argc, char** argv) {
     if (argc < 2) {
         printHelp();
         return ExitUsage;
     }
     const std::string first = argv[1];
     if (first == "--version" || first == "version") {
+        if (argc > 2)
+            return usageError(first + " takes no arguments, not '" + argv[2] + "'");
         printVersion();
         return ExitOk;
     }
     if (first == "--help" || first == "-h" || first == "help") {
+        if (first != "help" && argc > 2)
+            return usageError(first + " takes no arguments, not '" + argv[2] + "'");
+        if (first == "help" && argc > 3)
+            return usageError(std::string("help takes one COMMAND, not '") + argv[3] + "'");
         if (first == "help" && argc > 2) {
             for (const auto& c : commands())
                 if (c.name == argv[2]) {
@@ -70,4 +94,28 @@ int main(int argc, char** argv) {
     if (first.rfind("-", 0) == 0)
         return usageError("unknown option " + first);
     return usageError("unknown command '" + first + "'");
+}
+
+} // namespace
+
+// No command ends on an uncaught exception: whatever escapes a command
+// becomes one message and exit code 2.
+int main(int argc, char** argv) {
+    int rc = ExitUsage;
+    try {
+        rc = dispatch(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "k528: not enough memory to finish the command\n");
+        return ExitUsage;
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "k528: internal error: %s\n", e.what());
+        return ExitUsage;
+    } catch (...) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "k528: internal error: an unknown exception\n");
+        return ExitUsage;
+    }
+    return finishStandardOutput(rc);
 }

@@ -332,6 +332,15 @@ FileHeader readHeader(const fs::path& path, int latest) {
     h.exists = true;
     if (fs::is_directory(st))
         throw Error(ErrorKind::Io, path.string() + ": is a directory, not a database file");
+    if (!fs::is_regular_file(st))
+        throw Error(ErrorKind::Io,
+                    path.string() + ": is not a regular file (" +
+                        (fs::is_character_file(st) ? "a character device"
+                         : fs::is_block_file(st)   ? "a block device"
+                         : fs::is_fifo(st)         ? "a FIFO"
+                         : fs::is_socket(st)       ? "a socket"
+                                                   : "not a file") +
+                        "); a database is a regular file — give another --db path");
     const auto size = fs::file_size(path, ec);
     if (ec)
         throw Error(ErrorKind::Io, path.string() + ": " + ec.message());

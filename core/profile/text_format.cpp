@@ -1,4 +1,5 @@
 #include "profile/text_format.h"
+#include "util/input_file.h"
 
 #include "catalog/rparams.h"
 #include "profile/validate.h"
@@ -90,6 +91,13 @@ public:
             const std::string_view raw = lines_[i];
             if (!utf8::isValid(raw))
                 fail("not valid UTF-8");
+            // An invisible character would make the error below unreadable:
+            // name it. (One at the very start of the file is skipped above.)
+            if (const auto bom = raw.find("\xEF\xBB\xBF"); bom != std::string_view::npos)
+                fail("column " + std::to_string(utf8::length(raw.substr(0, bom)) + 1) +
+                     ": U+FEFF (byte-order mark), an invisible character; a byte-order mark may "
+                     "stand only at the very start of the file (files joined with `cat`?) — "
+                     "remove it");
             const std::string_view line = trim(raw);
             if (line.empty() || line[0] == ';')
                 continue;
@@ -399,14 +407,10 @@ std::string writeMachineText(const MachineProfile& p) {
 }
 
 MachineProfile readMachineFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw FileError(path.string(), 0, "cannot open the file");
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad())
-        throw FileError(path.string(), 0, "cannot read the file");
-    return readMachineText(ss.str(), path.string());
+    std::string text, error, reason;
+    if (!util::readInputFile(path.string(), text, error, util::kMaxInputBytes, &reason))
+        throw FileError(path.string(), 0, "cannot read the file: " + reason);
+    return readMachineText(text, path.string());
 }
 
 void writeMachineFile(const std::filesystem::path& path, const MachineProfile& p) {

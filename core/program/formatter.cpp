@@ -218,8 +218,10 @@ std::string format(const ProgramStore& store) {
     w.trivia(store.preamble);
     w.endBlock();
     const bool header = !(store.headerless && store.size() <= 1);
-    for (const Program& p : store.programs())
-        writeProgram(w, p, header);
+    // In the order written, not by number: `run` starts the first program of
+    // a file, and formatting must not change which one that is.
+    for (const Program* p : store.inWrittenOrder())
+        writeProgram(w, *p, header);
     const MessageTable& t = store.messages;
     if (t.present || !t.entries.empty()) {
         w.section();

@@ -1,6 +1,7 @@
 #include "program/model.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace k528::program {
@@ -109,6 +110,23 @@ bool ProgramStore::remove(int number) {
         return false;
     programs_.erase(it);
     return true;
+}
+
+std::vector<const Program*> ProgramStore::inWrittenOrder() const {
+    std::vector<const Program*> v;
+    v.reserve(programs_.size());
+    for (const Program& p : programs_)
+        v.push_back(&p);
+    const auto key = [](const Program* p) {
+        return std::pair(p->headerLine > 0 ? p->headerLine : std::numeric_limits<int>::max(), p->number);
+    };
+    std::sort(v.begin(), v.end(), [&](const Program* a, const Program* b) { return key(a) < key(b); });
+    return v;
+}
+
+int ProgramStore::firstWritten() const {
+    const auto v = inWrittenOrder();
+    return v.empty() ? 0 : v.front()->number;
 }
 
 std::vector<int> ProgramStore::numbers() const {

@@ -286,6 +286,13 @@ public:
     Program& insert(Program p);
     bool remove(int number);
     std::vector<int> numbers() const;
+    // The programs in the order their text was written: by headerLine, the
+    // ones without a header line (added by an editor, built in code) last, by
+    // number. `k528 format` writes them in this order and `k528 run` starts
+    // the first of it by default, so formatting never changes what runs.
+    std::vector<const Program*> inWrittenOrder() const;
+    // The number of the first program in written order; 0 for an empty store.
+    int firstWritten() const;
 
     MessageTable messages;
 

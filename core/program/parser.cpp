@@ -59,6 +59,7 @@ private:
     std::size_t colPos_ = 0; // column cache: byte offset ...
     int colCol_ = 1;         // ... and its column
     int lineErrors_ = 0;
+    bool crHintGiven_ = false; // the "CR alone is no line end" hint, once a text
     std::size_t invalidUtf8At_ = std::string_view::npos; // the byte reported as invalid-utf8
 
     // --- state ---------------------------------------------------------------------
@@ -180,6 +181,7 @@ private:
     void messageLine(std::size_t i);
     void frameLine(std::size_t i);
     void reportBadCharacter(std::size_t i, Frame& f);
+    void crLineEndHint();
 
     // Words of a frame. Each returns false after reporting an error.
     bool intWord(std::size_t& i, std::size_t start, std::string_view name, Word& w, int manual = 0);
@@ -247,11 +249,31 @@ void Parser::run() {
         ++lineNo_;
         pos_ = eol + 1;
         processLine();
+        crLineEndHint();
         pos = eol + 1;
     }
     // End of text: close what is open.
     closeSection(std::move(pending_));
     out_.store.headerless = !sawProgramHeader_;
+}
+
+// A CR alone is a blank (LF and CRLF end lines, program-language.md), so a
+// text with CR-only line ends (old Mac editors) reads as one long line with
+// errors that say nothing of line ends. Said once, on the first line with a
+// bare CR that has errors; a text that reads without errors is not touched.
+void Parser::crLineEndHint() {
+    if (crHintGiven_ || lineErrors_ == 0)
+        return;
+    const std::size_t cr = line_.find('\r');
+    if (cr == std::string_view::npos)
+        return;
+    crHintGiven_ = true;
+    lineErrors_ = 0; // the hint is shown even after kMaxErrorsPerLine errors
+    report(Rule::Syntax, 0, cr, cr + 1,
+           "Символ CR без LF не завершает строку: концы строк в тексте программы — LF или CR LF; "
+           "преобразуйте файл (например, tr '\\r' '\\n')",
+           "a CR without LF does not end a line: program text ends its lines with LF or CR LF; "
+           "convert the file (e.g. tr '\\r' '\\n')");
 }
 
 void Parser::processLine() {
@@ -656,12 +678,20 @@ bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Val
     }
     const auto d = Decimal::parse(lex);
     if (!d) {
-        const bool tooLong = text::countDigits(lex) > Decimal::kMaxDigits && text::isPlainDecimal(lex);
+        // A plain decimal fails for one of two reasons, said as such:
+        // leading zeros are not significant digits.
+        const bool plain = text::isPlainDecimal(lex);
+        const bool tooLong = plain && text::significantDigits(lex) > Decimal::kMaxDigits;
+        const bool tooFine = plain && !tooLong && text::fractionPlaces(lex) > Decimal::kMaxDigits;
         const std::string ru = manual ? "Задание координаты " + n + ": " : n + ": ";
         const std::string en = manual ? n + " value: " : n + ": ";
         report(Rule::BadNumber, manual, start, e,
-               tooLong ? ru + "в числе " + quote(lex) + " больше 18 значащих цифр" : ru + quote(lex) + " — не число",
-               tooLong ? en + squote(lex) + " has more than 18 significant digits" : en + squote(lex) + " is not a number");
+               tooLong   ? ru + "в числе " + quote(lex) + " больше 18 значащих цифр"
+               : tooFine ? ru + "в числе " + quote(lex) + " больше 18 цифр после точки"
+                         : ru + quote(lex) + " — не число",
+               tooLong   ? en + squote(lex) + " has more than 18 significant digits"
+               : tooFine ? en + squote(lex) + " has more than 18 digits after the decimal point"
+                         : en + squote(lex) + " is not a number");
         return false;
     }
     v = Value::lit(*d);

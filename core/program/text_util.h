@@ -135,7 +135,36 @@ inline int countDigits(std::string_view s) {
     return n;
 }
 
-// Significant digits (leading zeros skipped) of a "[sign]digits[.digits]" text.
+// Significant digits of a plain decimal text: from its first non-zero digit
+// to its last one that counts (leading zeros and the fraction's trailing
+// zeros are not significant): "00000.00000000000000000001" has 1, "1200" 4.
+inline int significantDigits(std::string_view s) {
+    const std::size_t point = s.find('.');
+    const std::string_view intPart = s.substr(0, point);
+    const std::string_view frac = point == std::string_view::npos ? std::string_view() : s.substr(point + 1);
+    std::string digits;
+    for (const char c : intPart)
+        if (isDigit(c))
+            digits += c;
+    const std::size_t lastFrac = frac.find_last_not_of('0');
+    if (lastFrac != std::string_view::npos)
+        for (const char c : frac.substr(0, lastFrac + 1))
+            if (isDigit(c))
+                digits += c;
+    const std::size_t first = digits.find_first_not_of('0');
+    return first == std::string::npos ? 0 : static_cast<int>(digits.size() - first);
+}
+
+// Digits after the point up to its last non-zero one: "0.0100" has 2.
+inline int fractionPlaces(std::string_view s) {
+    const std::size_t point = s.find('.');
+    if (point == std::string_view::npos)
+        return 0;
+    const std::size_t last = s.find_last_not_of('0');
+    return last == std::string_view::npos || last <= point ? 0 : static_cast<int>(last - point);
+}
+
+// True for "[sign]digits[.digits]" with at least one digit.
 inline bool isPlainDecimal(std::string_view s) {
     std::size_t i = 0;
     if (i < s.size() && (s[i] == '+' || s[i] == '-'))

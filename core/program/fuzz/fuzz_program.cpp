@@ -4,6 +4,8 @@
 //  - a text the parser accepts formats to a text it accepts again, with the
 //    same programs and frames (canonical frame text and comments equal);
 //  - format is a fixed point: format(parse(format(x))) == format(x);
+//  - format never changes what `k528 run` starts by default: the first
+//    program in written order is the same number with the same frames;
 //  - validateProgram over every program gives what validate gives;
 //  - every message is valid UTF-8 (input text is quoted escaped).
 #include <cstddef>
@@ -84,6 +86,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const ParseResult again = parse(once, po);
         require(!again.hasErrors());
         sameStore(parsed.store, again.store);
+        const int first = parsed.store.firstWritten();
+        require(again.store.firstWritten() == first);
+        if (first > 0) {
+            const Program* a = parsed.store.find(first);
+            const Program* b = again.store.find(first);
+            require(a && b && a->frames.size() == b->frames.size());
+            for (std::size_t i = 0; i < a->frames.size(); ++i)
+                require(formatFrame(a->frames[i]) == formatFrame(b->frames[i]));
+        }
         require(format(again.store) == once);
     }
     return 0;
