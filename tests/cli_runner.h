@@ -29,3 +29,22 @@ inline CliResult runK528(const QStringList& args, const QByteArray& stdinData = 
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
 }
+
+// Runs `k528` with its standard output sent to the file `outFile` (e.g.
+// /dev/full) and returns the exit code and what it printed on stderr.
+inline CliResult runK528ToFile(const QStringList& args, const QString& outFile,
+                               const QString& program = QStringLiteral(K528_CLI),
+                               const QStringList& programPrefix = {}) {
+    QProcess p;
+    p.setStandardOutputFile(outFile);
+    p.start(programPrefix.isEmpty() ? program : programPrefix.front(),
+            programPrefix.isEmpty() ? args : programPrefix.mid(1) + QStringList{program} + args);
+    if (!p.waitForStarted())
+        return {};
+    p.closeWriteChannel();
+    p.waitForFinished(600000);
+    CliResult r;
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}

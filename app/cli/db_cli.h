@@ -1,5 +1,6 @@
-// `k528 db`: the database of machines (docs/database.md). cmd_db.cpp holds
-// the subcommands, cmd_db_calc.cpp the C-constant calculator.
+// `k528 db`: the database of machines (docs/database.md). db_cli.cpp holds
+// the dispatcher and the helpers the subcommands share (db_cli_util.h), one
+// cmd_db_<sub>.cpp each subcommand, cmd_db_calc.cpp the C-constant calculator.
 #pragma once
 
 #include <span>

@@ -77,7 +77,9 @@ bool writeOutputFile(const std::string& path, const std::string& text, std::stri
         real = to.is_absolute() ? to : real.parent_path() / to;
     }
     const fs::path dir = real.has_parent_path() ? real.parent_path() : fs::path(".");
-    std::string tmp = (dir / ("." + real.filename().string() + ".k528-XXXXXX")).string();
+    std::string tmpName = ".";
+    tmpName.append(real.filename().string()).append(".k528-XXXXXX");
+    std::string tmp = (dir / tmpName).string();
     const int fd = ::mkstemp(tmp.data());
     if (fd < 0) {
         error = "cannot write " + path + ": cannot create a file in its folder " + dir.string() +

@@ -585,6 +585,31 @@ struct Database::Impl {
     MachineProfile loadAt(const Row& row, int revision);
     SaveResult write(const std::optional<Row>& row, const MachineProfile* old,
                      const MachineProfile& neu, const WriteOptions& o);
+    // The steps of write():
+    std::int64_t writeMachineRow(const std::optional<Row>& row, const MachineProfile& neu,
+                                 int revision, const std::string& at, const std::string& author);
+    void writeRevisionRow(std::int64_t id, int revision, const std::string& author,
+                          const std::string& at, const std::string& summary,
+                          const MachineProfile& neu);
+    // Applies one change to the tables of the current state and records it in
+    // `changes` (a program's texts as their checksums); true for a
+    // simulation setting (written whole by writeSettings).
+    bool writeChange(std::int64_t id, bool update, int revision, int seq,
+                     const MachineProfile& neu, const profile::Change& c);
+    void writeSettings(std::int64_t id, const MachineProfile& neu);
+
+    // The steps of Database::open():
+    // Connects read-write and inspects the file before anything is written;
+    // a hot journal of ours is rolled back, anything else refused.
+    Checked connectAndInspect(const FileHeader& header, const OpenOptions& options, int latest);
+    void applyConnectionSettings();
+    // WAL journal mode, retried up to the busy timeout.
+    void switchToWal(int busyTimeoutMs);
+    // Creates the schema (and seeds the built-ins) or migrates it, in one
+    // transaction.
+    void createOrMigrate(const OpenOptions& options, int latest, const std::string& author);
+    // A newer catalog (e.g. a corrected description) refreshes the definitions.
+    void refreshDefinitions(const std::string& author);
     void syncDefinitions(const std::string& author);
 };
 
@@ -861,6 +886,152 @@ MachineProfile Database::Impl::loadAt(const Row& row, int revision) {
     return p;
 }
 
+// A machine's row: inserted for a new machine, updated (name, title,
+// revision) otherwise. Returns its id.
+std::int64_t Database::Impl::writeMachineRow(const std::optional<Row>& row,
+                                             const MachineProfile& neu, int revision,
+                                             const std::string& at, const std::string& author) {
+    if (!row) {
+        if (findMachine(neu.name))
+            throw Error(ErrorKind::MachineExists,
+                        "a machine named " + neu.name + " already exists in " + path.string());
+        auto& q = st("INSERT INTO machines (name, title, revision, created_at, changed_at, "
+                     "changed_by) VALUES (?1, ?2, 1, ?3, ?3, ?4)");
+        q.bind(1, neu.name).bind(2, neu.title).bind(3, at).bind(4, author);
+        q.run();
+        return sqlite3_last_insert_rowid(db);
+    }
+    const std::int64_t id = row->id;
+    if (neu.name != row->info.name && findMachine(neu.name))
+        throw Error(ErrorKind::MachineExists, "cannot rename " + row->info.name + " to " +
+                                                  neu.name + ": a machine of that name exists");
+    auto& q = st("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
+                 "changed_by = ?6 WHERE id = ?1");
+    q.bind(1, id)
+        .bind(2, neu.name)
+        .bind(3, neu.title)
+        .bind(4, revision)
+        .bind(5, at)
+        .bind(6, author);
+    q.run();
+    return id;
+}
+
+void Database::Impl::writeRevisionRow(std::int64_t id, int revision, const std::string& author,
+                                      const std::string& at, const std::string& summary,
+                                      const MachineProfile& neu) {
+    auto& q = st("INSERT INTO revisions (machine_id, revision, author, at, summary, "
+                 "settings_order) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+    q.bind(1, id)
+        .bind(2, revision)
+        .bind(3, author)
+        .bind(4, at)
+        .bind(5, summary)
+        .bind(6, joinKeys(neu.simulation, '\n'));
+    q.run();
+}
+
+bool Database::Impl::writeChange(std::int64_t id, bool update, int revision, int seq,
+                                 const MachineProfile& neu, const Change& c) {
+    std::optional<std::string> before = c.before, after = c.after;
+    const auto num = keyNumber(c.key);
+    bool setting = false;
+    switch (c.section) {
+    case DiffSection::Machine:
+        break; // the machines row (writeMachineRow)
+    case DiffSection::C: {
+        auto& q =
+            st(update ? "UPDATE c_values SET value = ?3 WHERE machine_id = ?1 AND number = ?2"
+                      : "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)");
+        q.bind(1, id).bind(2, *num).bind(3, neu.cValue(*num));
+        q.run();
+        break;
+    }
+    case DiffSection::R:
+        if (c.after) {
+            auto& q = st("INSERT INTO r_values (machine_id, number, value) VALUES (?1, ?2, ?3) "
+                         "ON CONFLICT (machine_id, number) DO UPDATE SET value = excluded.value");
+            q.bind(1, id).bind(2, *num).bind(3, neu.r.at(*num));
+            q.run();
+        } else {
+            auto& q = st("DELETE FROM r_values WHERE machine_id = ?1 AND number = ?2");
+            q.bind(1, id).bind(2, *num);
+            q.run();
+        }
+        break;
+    case DiffSection::Program: {
+        auto& q = st("INSERT INTO program_revisions (machine_id, number, revision, text, "
+                     "sha256) VALUES (?1, ?2, ?3, ?4, ?5)");
+        q.bind(1, id).bind(2, *num).bind(3, revision).bind(4, c.after);
+        if (c.after)
+            q.bind(5, sha256Hex(*c.after));
+        else
+            q.bindNull(5);
+        q.run();
+        if (before)
+            before = sha256Hex(*before);
+        if (after)
+            after = sha256Hex(*after);
+        break;
+    }
+    case DiffSection::Message:
+        if (c.after) {
+            auto& q = st("INSERT INTO messages (machine_id, number, text) VALUES (?1, ?2, ?3) "
+                         "ON CONFLICT (machine_id, number) DO UPDATE SET text = excluded.text");
+            q.bind(1, id).bind(2, *num).bind(3, *c.after);
+            q.run();
+        } else {
+            auto& q = st("DELETE FROM messages WHERE machine_id = ?1 AND number = ?2");
+            q.bind(1, id).bind(2, *num);
+            q.run();
+        }
+        break;
+    case DiffSection::PlcMessage:
+        if (c.after) {
+            auto& q = st("INSERT INTO plc_messages (machine_id, grp, number, text) VALUES "
+                         "(?1, ?2, ?3, ?4) ON CONFLICT (machine_id, grp, number) DO UPDATE "
+                         "SET text = excluded.text");
+            q.bind(1, id).bind(2, c.key.substr(0, 1)).bind(3, *num).bind(4, *c.after);
+            q.run();
+        } else {
+            auto& q = st("DELETE FROM plc_messages WHERE machine_id = ?1 AND grp = ?2 AND "
+                         "number = ?3");
+            q.bind(1, id).bind(2, c.key.substr(0, 1)).bind(3, *num);
+            q.run();
+        }
+        break;
+    case DiffSection::Simulation:
+        setting = true;
+        break;
+    }
+    auto& ins = st("INSERT INTO changes (machine_id, revision, seq, section, key, label, before, "
+                   "after) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+    ins.reset();
+    ins.bind(1, id)
+        .bind(2, revision)
+        .bind(3, seq)
+        .bind(4, profile::diffSectionName(c.section))
+        .bind(5, c.key)
+        .bind(6, c.label)
+        .bind(7, before)
+        .bind(8, after);
+    ins.run();
+    return setting;
+}
+
+void Database::Impl::writeSettings(std::int64_t id, const MachineProfile& neu) {
+    auto& del = st("DELETE FROM settings WHERE machine_id = ?1");
+    del.bind(1, id);
+    del.run();
+    auto& q = st("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
+    int pos = 0;
+    for (const auto& [k, v] : neu.simulation.entries()) {
+        q.reset();
+        q.bind(1, id).bind(2, pos++).bind(3, k).bind(4, v);
+        q.run();
+    }
+}
+
 SaveResult Database::Impl::write(const std::optional<Row>& row, const MachineProfile* old,
                                  const MachineProfile& neu, const WriteOptions& o) {
     const std::string author = o.author.empty() ? defaultAuthor() : o.author;
@@ -876,156 +1047,20 @@ SaveResult Database::Impl::write(const std::optional<Row>& row, const MachinePro
     result.changed = true;
     result.revision = revision;
     const std::string at = now();
-    std::int64_t id = 0;
-    const std::size_t total = result.changes.size();
-    std::size_t done = 0;
-    const auto progress = [&] {
-        ++done;
-        if (o.progress)
-            o.progress(done, total);
-    };
-
-    if (!row) {
-        if (findMachine(neu.name))
-            throw Error(ErrorKind::MachineExists,
-                        "a machine named " + neu.name + " already exists in " + path.string());
-        auto& q = st("INSERT INTO machines (name, title, revision, created_at, changed_at, "
-                     "changed_by) VALUES (?1, ?2, 1, ?3, ?3, ?4)");
-        q.bind(1, neu.name).bind(2, neu.title).bind(3, at).bind(4, author);
-        q.run();
-        id = sqlite3_last_insert_rowid(db);
-    } else {
-        id = row->id;
-        if (neu.name != row->info.name && findMachine(neu.name))
-            throw Error(ErrorKind::MachineExists, "cannot rename " + row->info.name + " to " +
-                                                      neu.name + ": a machine of that name exists");
-        auto& q = st("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
-                     "changed_by = ?6 WHERE id = ?1");
-        q.bind(1, id)
-            .bind(2, neu.name)
-            .bind(3, neu.title)
-            .bind(4, revision)
-            .bind(5, at)
-            .bind(6, author);
-        q.run();
-    }
-
+    const std::int64_t id = writeMachineRow(row, neu, revision, at, author);
     const std::string summary =
         !o.summary.empty() ? o.summary
                            : (row ? "changed " + describeChanges(result.changes) : "created");
-    {
-        auto& q = st("INSERT INTO revisions (machine_id, revision, author, at, summary, "
-                     "settings_order) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
-        q.bind(1, id)
-            .bind(2, revision)
-            .bind(3, author)
-            .bind(4, at)
-            .bind(5, summary)
-            .bind(6, joinKeys(neu.simulation, '\n'));
-        q.run();
-    }
-
+    writeRevisionRow(id, revision, author, at, summary, neu);
     bool settingsChanged = false;
-    auto& ins = st("INSERT INTO changes (machine_id, revision, seq, section, key, label, before, "
-                   "after) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
     int seq = 0;
     for (const Change& c : result.changes) {
-        std::optional<std::string> before = c.before, after = c.after;
-        const auto num = keyNumber(c.key);
-        switch (c.section) {
-        case DiffSection::Machine:
-            break; // the machines row above
-        case DiffSection::C: {
-            auto& q =
-                st(row ? "UPDATE c_values SET value = ?3 WHERE machine_id = ?1 AND number = ?2"
-                       : "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)");
-            q.bind(1, id).bind(2, *num).bind(3, neu.cValue(*num));
-            q.run();
-            break;
-        }
-        case DiffSection::R:
-            if (c.after) {
-                auto& q =
-                    st("INSERT INTO r_values (machine_id, number, value) VALUES (?1, ?2, ?3) "
-                       "ON CONFLICT (machine_id, number) DO UPDATE SET value = excluded.value");
-                q.bind(1, id).bind(2, *num).bind(3, neu.r.at(*num));
-                q.run();
-            } else {
-                auto& q = st("DELETE FROM r_values WHERE machine_id = ?1 AND number = ?2");
-                q.bind(1, id).bind(2, *num);
-                q.run();
-            }
-            break;
-        case DiffSection::Program: {
-            auto& q = st("INSERT INTO program_revisions (machine_id, number, revision, text, "
-                         "sha256) VALUES (?1, ?2, ?3, ?4, ?5)");
-            q.bind(1, id).bind(2, *num).bind(3, revision).bind(4, c.after);
-            if (c.after)
-                q.bind(5, sha256Hex(*c.after));
-            else
-                q.bindNull(5);
-            q.run();
-            if (before)
-                before = sha256Hex(*before);
-            if (after)
-                after = sha256Hex(*after);
-            break;
-        }
-        case DiffSection::Message:
-            if (c.after) {
-                auto& q = st("INSERT INTO messages (machine_id, number, text) VALUES (?1, ?2, ?3) "
-                             "ON CONFLICT (machine_id, number) DO UPDATE SET text = excluded.text");
-                q.bind(1, id).bind(2, *num).bind(3, *c.after);
-                q.run();
-            } else {
-                auto& q = st("DELETE FROM messages WHERE machine_id = ?1 AND number = ?2");
-                q.bind(1, id).bind(2, *num);
-                q.run();
-            }
-            break;
-        case DiffSection::PlcMessage:
-            if (c.after) {
-                auto& q = st("INSERT INTO plc_messages (machine_id, grp, number, text) VALUES "
-                             "(?1, ?2, ?3, ?4) ON CONFLICT (machine_id, grp, number) DO UPDATE "
-                             "SET text = excluded.text");
-                q.bind(1, id).bind(2, c.key.substr(0, 1)).bind(3, *num).bind(4, *c.after);
-                q.run();
-            } else {
-                auto& q = st("DELETE FROM plc_messages WHERE machine_id = ?1 AND grp = ?2 AND "
-                             "number = ?3");
-                q.bind(1, id).bind(2, c.key.substr(0, 1)).bind(3, *num);
-                q.run();
-            }
-            break;
-        case DiffSection::Simulation:
-            settingsChanged = true;
-            break;
-        }
-        ins.reset();
-        ins.bind(1, id)
-            .bind(2, revision)
-            .bind(3, seq++)
-            .bind(4, profile::diffSectionName(c.section))
-            .bind(5, c.key)
-            .bind(6, c.label)
-            .bind(7, before)
-            .bind(8, after);
-        ins.run();
-        progress();
+        settingsChanged = writeChange(id, row.has_value(), revision, seq++, neu, c) || settingsChanged;
+        if (o.progress)
+            o.progress(static_cast<std::size_t>(seq), result.changes.size());
     }
-    if (settingsChanged) {
-        auto& del = st("DELETE FROM settings WHERE machine_id = ?1");
-        del.bind(1, id);
-        del.run();
-        auto& q =
-            st("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
-        int pos = 0;
-        for (const auto& [k, v] : neu.simulation.entries()) {
-            q.reset();
-            q.bind(1, id).bind(2, pos++).bind(3, k).bind(4, v);
-            q.run();
-        }
-    }
+    if (settingsChanged)
+        writeSettings(id, neu);
     audit(author, o.action, neu.name, revision,
           summary + " (" + std::to_string(result.changes.size()) +
               (result.changes.size() == 1 ? " change)" : " changes)"),
@@ -1089,30 +1124,12 @@ Database::Database(Database&&) noexcept = default;
 Database& Database::operator=(Database&&) noexcept = default;
 Database::~Database() = default;
 
-Database Database::open(const fs::path& path, const OpenOptions& options) {
-    const auto& migrations = options.migrations;
-    if (migrations.empty())
-        throw Error(ErrorKind::Sql, "no schema migrations given");
-    const int latest = migrations.back().version;
-    const FileHeader header = readHeader(path, latest);
-    if (!header.exists && !options.create)
-        throw Error(ErrorKind::Io, "no database at " + path.string());
-    if (!header.exists) {
-        std::error_code ec;
-        const fs::path parent = path.parent_path();
-        if (!parent.empty() && !fs::is_directory(parent, ec))
-            throw Error(ErrorKind::Io, "cannot create the database " + path.string() +
-                                           ": the folder " + parent.string() + " does not exist");
-    }
+Checked Database::Impl::connectAndInspect(const FileHeader& header, const OpenOptions& options,
+                                          int latest) {
     std::error_code ec;
     const bool walExisted = fs::exists(fs::path(path.string() + "-wal"), ec);
     const fs::path journal = path.string() + "-journal";
     const bool journalExisted = fs::exists(journal, ec) && fs::file_size(journal, ec) > 0 && !ec;
-
-    auto impl = std::make_unique<Impl>();
-    impl->path = path;
-    impl->clock = options.clock ? options.clock : systemClock();
-    const std::string author = options.author.empty() ? defaultAuthor() : options.author;
 
     // The checks come before any setting or write. On a refusal the file is
     // closed without a checkpoint (a -wal stays as it was, not copied into
@@ -1128,19 +1145,19 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
         return Error(r.kind, path.string() + ": " + r.what + untouched());
     };
     const auto connect = [&](int flags) {
-        sqlite3* db = nullptr;
-        const int rc = sqlite3_open_v2(path.c_str(), &db, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+        sqlite3* c = nullptr;
+        const int rc = sqlite3_open_v2(path.c_str(), &c, flags | SQLITE_OPEN_NOMUTEX, nullptr);
         if (rc != SQLITE_OK) {
-            const std::string msg = db ? sqlite3_errmsg(db) : sqlite3_errstr(rc);
-            sqlite3_close_v2(db);
+            const std::string msg = c ? sqlite3_errmsg(c) : sqlite3_errstr(rc);
+            sqlite3_close_v2(c);
             throw Error(ErrorKind::Io, "cannot open " + path.string() + ": " + msg +
                                            (header.exists ? untouched() : std::string()));
         }
-        sqlite3_extended_result_codes(db, 1);
-        sqlite3_busy_timeout(db, options.busyTimeoutMs);
+        sqlite3_extended_result_codes(c, 1);
+        sqlite3_busy_timeout(c, options.busyTimeoutMs);
         if (walExisted)
-            sqlite3_db_config(db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
-        return db;
+            sqlite3_db_config(c, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
+        return c;
     };
     std::optional<Checked> checked;
     if (journalExisted) {
@@ -1170,8 +1187,7 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
     }
     const int flags =
         SQLITE_OPEN_READWRITE | (options.create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_EXRESCODE;
-    impl->db = connect(flags);
-    sqlite3* db = impl->db;
+    db = connect(flags);
     if (!checked) {
         try {
             checked = inspect(db, latest);
@@ -1179,11 +1195,12 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
             throw refused(r);
         }
     }
-    const auto [appId, version, objects] = *checked;
-    const bool empty = appId == 0 && version == 0 && objects == 0;
     if (walExisted)
         sqlite3_db_config(db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 0, nullptr);
+    return *checked;
+}
 
+void Database::Impl::applyConnectionSettings() {
     // Settings, now that the file is ours, intact and not newer.
     try {
         // Every commit reaches the disk before it is reported (independent
@@ -1193,101 +1210,131 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
     } catch (const Error& e) {
         throw Error(e.kind(), path.string() + ": " + e.what());
     }
+}
 
+void Database::Impl::switchToWal(int busyTimeoutMs) {
+    // Switching to WAL needs the file to itself for a moment; SQLite does
+    // not wait for that with the busy handler, so retry until the busy
+    // timeout (another process starting at the same time switches it too).
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::milliseconds(busyTimeoutMs);
+    std::string mode;
+    for (int attempt = 0;; ++attempt) {
+        try {
+            {
+                sql::Stmt jm(db, "PRAGMA journal_mode");
+                mode = jm.step() ? jm.text(0) : "";
+            }
+            if (mode == "wal")
+                return;
+            sql::Stmt set(db, "PRAGMA journal_mode = WAL");
+            mode = set.step() ? set.text(0) : "";
+            if (mode == "wal")
+                return;
+        } catch (const Error& e) {
+            if (e.kind() != ErrorKind::Busy)
+                throw;
+        }
+        if (std::chrono::steady_clock::now() > deadline)
+            throw Error(ErrorKind::Busy,
+                        path.string() + ": cannot switch to WAL journal mode (mode \"" + mode +
+                            "\"): another process kept the database busy longer than the "
+                            "busy timeout");
+        std::this_thread::sleep_for(std::chrono::milliseconds(attempt < 10 ? 2 : 20));
+    }
+}
+
+void Database::Impl::createOrMigrate(const OpenOptions& options, int latest,
+                                     const std::string& author) {
+    WriteTx tx(*this);
+    // Another process may have created or migrated it meanwhile.
+    const std::int64_t now = sql::queryInt(db, "PRAGMA user_version");
+    const std::int64_t nowObjects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
+    if (now == 0 && nowObjects != 0)
+        throw Error(ErrorKind::Foreign, path.string() + ": another program wrote into the "
+                                                        "file while it was being created");
+    for (const Migration& m : options.migrations) {
+        if (m.version <= now)
+            continue;
+        try {
+            sql::exec(db, m.sql);
+        } catch (const Error& e) {
+            throw Error(ErrorKind::Sql, path.string() + ": migration to schema version " +
+                                            std::to_string(m.version) + " failed (" + e.what() +
+                                            "); nothing was changed");
+        }
+    }
+    if (now < latest) {
+        sql::exec(db, "PRAGMA application_id = " + std::to_string(kApplicationId));
+        sql::exec(db, "PRAGMA user_version = " + std::to_string(latest));
+        if (now == 0) {
+            auto& meta = st("INSERT INTO meta (key, value) VALUES (?1, ?2)");
+            meta.bind(1, "created_at").bind(2, this->now());
+            meta.run();
+            audit(author, "create-database", "", 0,
+                  "schema version " + std::to_string(latest) + " created");
+            syncDefinitions(author);
+            if (options.seedBuiltins)
+                for (const std::string& name : profile::builtinNames()) {
+                    WriteOptions wo;
+                    wo.author = author;
+                    wo.action = "seed";
+                    wo.summary = "built-in profile " + name + " (first start)";
+                    write(std::nullopt, nullptr, profile::builtin(name), wo);
+                    report.seeded.push_back(name);
+                }
+        } else {
+            audit(author, "migrate", "", 0,
+                  "schema version " + std::to_string(now) + " -> " + std::to_string(latest));
+        }
+    }
+    tx.commit();
+    report.fromVersion = static_cast<int>(now);
+    report.created = now == 0; // not when another process created it meanwhile
+}
+
+void Database::Impl::refreshDefinitions(const std::string& author) {
+    auto& q = st("SELECT value FROM meta WHERE key = 'catalog_sha256'");
+    const bool same = q.step() && q.text(0) == catalogDigest();
+    q.reset();
+    if (!same) {
+        WriteTx tx(*this);
+        syncDefinitions(author);
+        tx.commit();
+    }
+}
+
+Database Database::open(const fs::path& path, const OpenOptions& options) {
+    const auto& migrations = options.migrations;
+    if (migrations.empty())
+        throw Error(ErrorKind::Sql, "no schema migrations given");
+    const int latest = migrations.back().version;
+    const FileHeader header = readHeader(path, latest);
+    if (!header.exists && !options.create)
+        throw Error(ErrorKind::Io, "no database at " + path.string());
+    if (!header.exists) {
+        std::error_code ec;
+        const fs::path parent = path.parent_path();
+        if (!parent.empty() && !fs::is_directory(parent, ec))
+            throw Error(ErrorKind::Io, "cannot create the database " + path.string() +
+                                           ": the folder " + parent.string() + " does not exist");
+    }
+    auto impl = std::make_unique<Impl>();
+    impl->path = path;
+    impl->clock = options.clock ? options.clock : systemClock();
+    const std::string author = options.author.empty() ? defaultAuthor() : options.author;
+
+    const auto [appId, version, objects] = impl->connectAndInspect(header, options, latest);
+    const bool empty = appId == 0 && version == 0 && objects == 0;
+    impl->applyConnectionSettings();
     // Now ours, intact, not newer: WAL, then create or migrate in one transaction.
     impl->report.created = empty;
     impl->report.fromVersion = static_cast<int>(version);
-    {
-        // Switching to WAL needs the file to itself for a moment; SQLite does
-        // not wait for that with the busy handler, so retry until the busy
-        // timeout (another process starting at the same time switches it too).
-        const auto deadline =
-            std::chrono::steady_clock::now() + std::chrono::milliseconds(options.busyTimeoutMs);
-        std::string mode;
-        for (int attempt = 0;; ++attempt) {
-            try {
-                {
-                    sql::Stmt jm(db, "PRAGMA journal_mode");
-                    mode = jm.step() ? jm.text(0) : "";
-                }
-                if (mode == "wal")
-                    break;
-                sql::Stmt set(db, "PRAGMA journal_mode = WAL");
-                mode = set.step() ? set.text(0) : "";
-                if (mode == "wal")
-                    break;
-            } catch (const Error& e) {
-                if (e.kind() != ErrorKind::Busy)
-                    throw;
-            }
-            if (std::chrono::steady_clock::now() > deadline)
-                throw Error(ErrorKind::Busy,
-                            path.string() + ": cannot switch to WAL journal mode (mode \"" + mode +
-                                "\"): another process kept the database busy longer than the "
-                                "busy timeout");
-            std::this_thread::sleep_for(std::chrono::milliseconds(attempt < 10 ? 2 : 20));
-        }
-    }
-    if (empty || version < latest) {
-        WriteTx tx(*impl);
-        // Another process may have created or migrated it meanwhile.
-        const std::int64_t now = sql::queryInt(db, "PRAGMA user_version");
-        const std::int64_t nowObjects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
-        if (now == 0 && nowObjects != 0)
-            throw Error(ErrorKind::Foreign, path.string() + ": another program wrote into the "
-                                                            "file while it was being created");
-        for (const Migration& m : migrations) {
-            if (m.version <= now)
-                continue;
-            try {
-                sql::exec(db, m.sql);
-            } catch (const Error& e) {
-                throw Error(ErrorKind::Sql, path.string() + ": migration to schema version " +
-                                                std::to_string(m.version) + " failed (" + e.what() +
-                                                "); nothing was changed");
-            }
-        }
-        if (now < latest) {
-            sql::exec(db, "PRAGMA application_id = " + std::to_string(kApplicationId));
-            sql::exec(db, "PRAGMA user_version = " + std::to_string(latest));
-            if (now == 0) {
-                auto& meta = impl->st("INSERT INTO meta (key, value) VALUES (?1, ?2)");
-                meta.bind(1, "created_at").bind(2, impl->now());
-                meta.run();
-                impl->audit(author, "create-database", "", 0,
-                            "schema version " + std::to_string(latest) + " created");
-                impl->syncDefinitions(author);
-                if (options.seedBuiltins)
-                    for (const std::string& name : profile::builtinNames()) {
-                        WriteOptions wo;
-                        wo.author = author;
-                        wo.action = "seed";
-                        wo.summary = "built-in profile " + name + " (first start)";
-                        impl->write(std::nullopt, nullptr, profile::builtin(name), wo);
-                        impl->report.seeded.push_back(name);
-                    }
-            } else {
-                impl->audit(author, "migrate", "", 0,
-                            "schema version " + std::to_string(now) + " -> " +
-                                std::to_string(latest));
-            }
-        }
-        tx.commit();
-        impl->report.fromVersion = static_cast<int>(now);
-        impl->report.created = now == 0; // not when another process created it meanwhile
-    }
+    impl->switchToWal(options.busyTimeoutMs);
+    if (empty || version < latest)
+        impl->createOrMigrate(options, latest, author);
     impl->report.version = latest;
-    {
-        // A newer catalog (e.g. a corrected description) refreshes the definitions.
-        auto& q = impl->st("SELECT value FROM meta WHERE key = 'catalog_sha256'");
-        const bool same = q.step() && q.text(0) == catalogDigest();
-        q.reset();
-        if (!same) {
-            WriteTx tx(*impl);
-            impl->syncDefinitions(author);
-            tx.commit();
-        }
-    }
+    impl->refreshDefinitions(author);
     return Database(std::move(impl));
 }
 

@@ -56,7 +56,9 @@ MachineProfile load(std::string_view nameOrPath) {
         return builtin(nameOrPath);
     const std::filesystem::path path{std::string(nameOrPath)};
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
+    // Something that exists but is no regular file (/dev/zero, a FIFO) is
+    // refused by readMachineFile with its reason.
+    if (!std::filesystem::exists(path, ec))
         throw FileError(std::string(nameOrPath), 0,
                         "neither a built-in profile (" + builtinList() + ") nor a machine file");
     return readMachineFile(path);

@@ -1,5 +1,9 @@
 #include <QtTest>
 
+#include <QTemporaryDir>
+
+#include <sys/stat.h>
+
 #include "cli_runner.h"
 #include "util/version.h"
 
@@ -28,6 +32,125 @@ private slots:
         const auto o = runK528({"--frobnicate"});
         QCOMPARE(o.exitCode, 2);
         QVERIFY(o.err.contains("unknown option --frobnicate"));
+    }
+    // Issue 15: an extra word after --version / --help is a usage error.
+    void versionAndHelpTakeNoArguments() {
+        const auto v = runK528({"--version", "extra"});
+        QCOMPARE(v.exitCode, 2);
+        QCOMPARE(v.out, QString());
+        QVERIFY2(v.err.contains("--version takes no arguments, not 'extra'"), qPrintable(v.err));
+        QCOMPARE(runK528({"--help", "extra"}).exitCode, 2);
+        QCOMPARE(runK528({"help", "check", "extra"}).exitCode, 2);
+        QCOMPARE(runK528({"help", "check"}).exitCode, 0);
+    }
+
+    // Issue 15: output lost to a full disk is an I/O error (exit 2), never
+    // success — for every command that prints.
+    void lostStandardOutputIsAnError_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("format") << QStringList{"format", "@FILE"};
+        QTest::newRow("check --json") << QStringList{"check", "--json", "@FILE"};
+        QTest::newRow("check") << QStringList{"check", "@BAD"};
+        QTest::newRow("run --json") << QStringList{"run", "--json", "--no-home", "@FILE"};
+        QTest::newRow("panel") << QStringList{"panel", "--keys", "F1"};
+        QTest::newRow("--version") << QStringList{"--version"};
+        QTest::newRow("--help") << QStringList{"--help"};
+    }
+    void lostStandardOutputIsAnError() {
+        QFETCH(QStringList, args);
+        QTemporaryDir dir;
+        const QString file = dir.filePath("ok.k528");
+        const QString bad = dir.filePath("bad.k528");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("%L1\nG1 X5 F100\nM30\n");
+        f.close();
+        QFile b(bad);
+        QVERIFY(b.open(QIODevice::WriteOnly));
+        b.write("G1 X5..3\n");
+        b.close();
+        args.replaceInStrings("@FILE", file);
+        args.replaceInStrings("@BAD", bad);
+        QVERIFY(QFileInfo::exists("/dev/full"));
+        const auto r = runK528ToFile(args, "/dev/full");
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("k528: cannot write standard output: No space left on device"),
+                 qPrintable(r.err));
+        // The same command to a real file succeeds (or reports its errors: 1).
+        const auto ok = runK528ToFile(args, dir.filePath("out.txt"));
+        QVERIFY2(ok.exitCode == 0 || ok.exitCode == 1, qPrintable(ok.err));
+        QVERIFY(QFileInfo(dir.filePath("out.txt")).size() > 0);
+    }
+
+    // Issue 15: a device, a FIFO, a directory or a file far beyond what a
+    // controller holds is refused with exit 2 and the reason, by every
+    // command that reads a file (one reader, util/input_file.h).
+    void inputsHaveALimit_data() {
+        QTest::addColumn<QString>("command");
+        QTest::newRow("check") << "check";
+        QTest::newRow("format") << "format";
+        QTest::newRow("run") << "run";
+        QTest::newRow("panel --profile") << "panel";
+        QTest::newRow("db import") << "db";
+    }
+    void inputsHaveALimit() {
+        QFETCH(QString, command);
+        QTemporaryDir dir;
+        const auto call = [&](const QString& path) {
+            if (command == "panel")
+                return runK528({"panel", "--profile", path, "--db", dir.filePath("none.db")});
+            if (command == "db")
+                return runK528({"db", "import", path, "--db", dir.filePath("x.db")});
+            return runK528({command, path});
+        };
+        auto r = call("/dev/zero");
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("/dev/zero") && r.err.contains("a character device, not a regular file"),
+                 qPrintable(r.err));
+        const QString fifo = dir.filePath("fifo");
+        QCOMPARE(::mkfifo(fifo.toLocal8Bit().constData(), 0600), 0);
+        r = call(fifo);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("a FIFO (named pipe), not a regular file"), qPrintable(r.err));
+        // 17 MiB (sparse): beyond the 16 MiB limit, refused before it is read.
+        const QString big = dir.filePath("big.k528");
+        QFile f(big);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QVERIFY(f.resize(17 << 20));
+        f.close();
+        r = call(big);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("larger than 16 MiB") && r.err.contains("99 programs of 999 frames"),
+                 qPrintable(r.err));
+        if (command != "panel") {
+            QCOMPARE(call(dir.path()).exitCode, 2);
+        }
+    }
+    void standardInputHasTheLimitToo() {
+        QByteArray huge(17 << 20, 'M');
+        const auto r = runK528({"check", "-"}, huge);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot read standard input: it is larger than 16 MiB"), qPrintable(r.err));
+    }
+
+    // Issue 15: running out of memory ends in a message and exit 2, not an
+    // abort on an uncaught std::bad_alloc (address space capped by prlimit).
+    void outOfMemoryIsAMessage() {
+        if (!QFileInfo::exists("/usr/bin/prlimit"))
+            QSKIP("prlimit (util-linux) is not installed");
+        QTemporaryDir dir;
+        const QString file = dir.filePath("large.k528");
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        QByteArray frames;
+        for (int i = 0; i < 400000; ++i)
+            frames += "G1 X1.5 FX100 Z-2.25 FZ200 ; c\n";
+        f.write(frames);
+        f.close();
+        const auto r = runK528ToFile({"check", file}, dir.filePath("out.txt"), QStringLiteral(K528_CLI),
+                                     {"/usr/bin/prlimit", "--as=" + QString::number(96 << 20)});
+        QVERIFY2(r.exitCode == 2, qPrintable(QString("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains("not enough memory"), qPrintable(r.err));
     }
 };
 

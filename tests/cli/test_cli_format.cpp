@@ -2,6 +2,8 @@
 
 #include <QTemporaryDir>
 
+#include <unistd.h>
+
 #include "cli_runner.h"
 
 namespace {
@@ -99,6 +101,45 @@ private slots:
                  QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup | QFile::ReadUser |
                      QFile::WriteUser);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::System).size(), 2); // no temporary left
+    }
+    // Issue 15: `run` starts the first program of a file; formatting keeps
+    // the programs in the order written, so the formatted file runs the same.
+    void formattingKeepsWhatRunStarts() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "two.k528", "%L2\nG1 X5 F100\nM30\n%L1\nG1 X7 F100\nM30\n");
+        const auto before = runK528({"run", "--json", "--no-home", f});
+        QVERIFY2(before.exitCode == 0, qPrintable(before.err));
+        const auto formatted = runK528({"format", f});
+        QCOMPARE(formatted.exitCode, 0);
+        QVERIFY(formatted.out.indexOf("%L2") < formatted.out.indexOf("%L1"));
+        const QString g = write(dir, "formatted.k528", formatted.out.toUtf8());
+        const auto after = runK528({"run", "--json", "--no-home", g});
+        QCOMPARE(after.exitCode, 0);
+        QCOMPARE(after.out, before.out);
+        QVERIFY(before.out.contains("\"program\":2"));
+    }
+    // Issue 15: --in-place in a read-only folder names the file and the
+    // reason, not a temporary file.
+    void inPlaceInAReadOnlyFolderSaysWhy() {
+        if (::geteuid() == 0)
+            QSKIP("root writes into a read-only folder");
+        QTemporaryDir dir;
+        const QString sub = dir.filePath("ro");
+        QVERIFY(QDir().mkdir(sub));
+        const QString f = sub + "/m.k528";
+        QFile out(f);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(kMessy);
+        out.close();
+        QVERIFY(QFile::setPermissions(sub, QFile::ReadOwner | QFile::ExeOwner));
+        const auto r = runK528({"format", "--in-place", f});
+        QFile::setPermissions(sub, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot write " + f + ": cannot create a file in its folder " + sub +
+                                ": Permission denied"),
+                 qPrintable(r.err));
+        QVERIFY(!r.err.contains(".tmp"));
+        QCOMPARE(read(f), QByteArray(kMessy));
     }
     void headerlessFilesStayHeaderless() {
         QTemporaryDir dir;

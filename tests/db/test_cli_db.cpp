@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <sys/stat.h>
+
 using namespace k528::testing;
 
 namespace {
@@ -260,6 +262,103 @@ private slots:
         QCOMPARE(db({"export", "grinder-205", "--format", "xml"}).exitCode, 2);
         QCOMPARE(db({"export", "nope"}).exitCode, 2);
         QCOMPARE(db({"export", "grinder-205", "--out", dir_.filePath("no/dir/x")}).exitCode, 2);
+    }
+
+    // Issue 15: --out follows a symbolic link (the link stays), writes into
+    // a FIFO directly (it stays a FIFO), refuses a directory with the reason
+    // and reports a full device — never replacing what is there.
+    void exportOutFollowsLinksAndNeverReplacesSpecialFiles() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        const QString target = dir_.filePath("real.k528m");
+        QVERIFY(writeFile(target, "old\n"));
+        QVERIFY(QFile::setPermissions(target, QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup));
+        const QString link = dir_.filePath("link.k528m");
+        QFile::remove(link);
+        QVERIFY(QFile::link(target, link));
+        auto r = db({"export", "grinder-205", "--out", link});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(QFileInfo(link).isSymLink());
+        QCOMPARE(QString::fromUtf8(readAll(target)), builtinText("grinder-205"));
+        QVERIFY(QFile::permissions(target).testFlag(QFile::ReadGroup));
+        QVERIFY(!QFile::permissions(target).testFlag(QFile::ReadOther));
+
+        const QString fifo = dir_.filePath("backup.fifo");
+        QFile::remove(fifo);
+        QCOMPARE(::mkfifo(fifo.toLocal8Bit().constData(), 0600), 0);
+        QProcess p;
+        p.start(QStringLiteral(K528_CLI), {"db", "export", "grinder-205", "--out", fifo, "--db", db_});
+        QVERIFY(p.waitForStarted());
+        QFile reader(fifo);
+        QVERIFY(reader.open(QIODevice::ReadOnly)); // waits for the writer
+        const QByteArray got = reader.readAll();
+        reader.close();
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        QCOMPARE(QString::fromUtf8(got), builtinText("grinder-205"));
+        struct stat st {};
+        QCOMPARE(::lstat(fifo.toLocal8Bit().constData(), &st), 0);
+        QVERIFY(S_ISFIFO(st.st_mode));
+
+        r = db({"export", "grinder-205", "--out", dir_.path()});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot write " + dir_.path() + ": it is a directory"), qPrintable(r.err));
+        QVERIFY(!r.err.contains("Success"));
+        r = db({"export", "grinder-205", "--out", "/dev/full"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot write /dev/full: No space left on device"), qPrintable(r.err));
+        QVERIFY(QFileInfo("/dev/full").exists() && !QFileInfo("/dev/full").isFile());
+    }
+
+    // Issue 15: a backup to a full disk is not a success.
+    void lostStandardOutputIsAnError() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        for (const QStringList& args : {QStringList{"db", "export", "grinder-205"},
+                                        QStringList{"db", "machines"},
+                                        QStringList{"db", "machines", "--json"},
+                                        QStringList{"db", "show", "grinder-205"}}) {
+            const auto r = runK528ToFile(args + QStringList{"--db", db_}, "/dev/full");
+            QVERIFY2(r.exitCode == 2, qPrintable(args.join(' ')));
+            QVERIFY2(r.err.contains("cannot write standard output: No space left on device"),
+                     qPrintable(r.err));
+        }
+    }
+
+    // Issue 15: `db set` with one item twice names it instead of keeping the last.
+    void setRefusesARepeatedItem() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        auto r = db({"set", "grinder-205", "C022=2133", "C022=2000"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("C022 is given twice ('C022=2133' and 'C022=2000')"), qPrintable(r.err));
+        r = db({"set", "grinder-205", "c22=2133", "C022=2000"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("given twice"), qPrintable(r.err));
+        QCOMPARE(db({"set", "grinder-205", "R12=5", "R012="}).exitCode, 2);
+        QCOMPARE(db({"set", "grinder-205", "C022=2133", "C023=2000"}).exitCode, 0);
+        QVERIFY(db({"export", "grinder-205"}).out.contains("C022=2133 "));
+    }
+
+    // Issue 15: a device as the database is "not a regular file", not
+    // "Operation not supported".
+    void deviceAsDatabaseIsNamed() {
+        const auto r = runK528({"db", "init", "--db", "/dev/null"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("/dev/null: is not a regular file (a character device)"), qPrintable(r.err));
+        QVERIFY(!r.err.contains("Operation not supported"));
+    }
+
+    // Issue 15: a byte-order mark inside a machine file is shown visibly.
+    void byteOrderMarkInsideAMachineFileIsNamed() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        const QString f = dir_.filePath("joined.k528m");
+        QByteArray text = builtinText("grinder-205").toUtf8();
+        const int at = text.indexOf("\n[c]");
+        QVERIFY(at > 0);
+        text.insert(at + 1, "\xEF\xBB\xBF");
+        QVERIFY(writeFile(f, text));
+        const auto r = db({"import", f, "--as", "joined"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("U+FEFF (byte-order mark)"), qPrintable(r.err));
+        QVERIFY(!r.err.contains("\xEF\xBB\xBF"));
     }
 
     void importRejectsBadFilesWhole() {

@@ -94,6 +94,33 @@ private slots:
         QCOMPARE(fmt(in), QString::fromUtf8(out));
         QCOMPARE(fmt(out), QString::fromUtf8(out)); // fixed point
     }
+    // Issue 15: `run` starts a file's first program; `format` once sorted the
+    // programs, so %L2 then %L1 ran L1 after formatting. Written order stays.
+    void programsKeepTheOrderWritten() {
+        const char* in = "%L2\nG1 X5\nM30\n%L1\nG1 X7\nM30\n%L9\nM17\n";
+        const ParseResult r = parse(in, {});
+        QVERIFY(!r.hasErrors());
+        QCOMPARE(r.store.firstWritten(), 2);
+        const std::string once = format(r.store);
+        QCOMPARE(QString::fromStdString(once),
+                 QString("%L2\nG1 X5\nM30\n\n%L1\nG1 X7\nM30\n\n%L9\nM17\n"));
+        const ParseResult again = parse(once, {});
+        QCOMPARE(again.store.firstWritten(), 2);
+        QCOMPARE(QString::fromStdString(format(again.store)), QString::fromStdString(once));
+        // A program without a header line (added in an editor) comes after
+        // the written ones; among those, by number.
+        ProgramStore s = r.store;
+        Program added;
+        added.number = 1;
+        s.insert(added);
+        Program more;
+        more.number = 5;
+        s.insert(more);
+        std::vector<int> order;
+        for (const Program* p : s.inWrittenOrder())
+            order.push_back(p->number);
+        QCOMPARE(order, (std::vector<int>{2, 9, 1, 5}));
+    }
     void headerlessStaysHeaderless() {
         const char* in = "; shaft\nN1 G1 X5\nM30\n";
         QCOMPARE(fmt(in, 7), QString(in));

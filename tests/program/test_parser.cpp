@@ -227,6 +227,37 @@ private slots:
         QCOMPARE(QString::fromStdString(f.comments[0].text), QString(" c"));
         QCOMPARE(f.span.line, 2);
     }
+    // Issue 15: CR alone is no line end (LF or CRLF); a text with CR-only
+    // line ends gets an error that says so, once.
+    void crOnlyLineEndsAreNamed() {
+        const ParseResult r = p("%L1\rN1 G1 X5\rM30\r");
+        QVERIFY(r.hasErrors());
+        int hints = 0;
+        for (const Diagnostic& d : r.diagnostics)
+            if (d.messageEn.find("CR without LF does not end a line") != std::string::npos) {
+                ++hints;
+                QCOMPARE(d.line, 1);
+                QCOMPARE(d.column, 4);
+            }
+        QCOMPARE(hints, 1);
+        // A stray CR in a text that reads well stays a blank, without a hint.
+        QVERIFY(p("G1\rX5\nM30\n").diagnostics.empty());
+    }
+    // Issue 15: leading zeros are not significant digits; a value finer than
+    // 18 places is refused for that reason.
+    void leadingZerosAreNotSignificant() {
+        QVERIFY(p("G1 X000000000000000000000000005.5\n").diagnostics.empty());
+        QVERIFY(p("G1 X00000.000000000000000001\n").diagnostics.empty()); // 18 places
+        const ParseResult fine = p("G1 X00000.00000000000000000001\n");
+        QCOMPARE(fine.diagnostics.size(), std::size_t(1));
+        QVERIFY2(fine.diagnostics[0].messageEn.find("more than 18 digits after the decimal point") !=
+                     std::string::npos,
+                 fine.diagnostics[0].messageEn.c_str());
+        const ParseResult many = p("G1 X1234567890.123456789\n");
+        QCOMPARE(many.diagnostics.size(), std::size_t(1));
+        QVERIFY(many.diagnostics[0].messageEn.find("more than 18 significant digits") != std::string::npos);
+        QVERIFY(p("G1 X0001234567890.12345678000\n").diagnostics.empty()); // 18 significant
+    }
     void lastLineWithoutNewline() {
         const ParseResult r = p("G1 X5\nM30");
         QCOMPARE(r.store.programs()[0].frames.size(), std::size_t(2));

@@ -1,0 +1,88 @@
+// k528 db audit (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+int cmdAudit(std::span<const std::string> argv) {
+    const Args a(argv, {"--json"}, {"--db", "--limit", "--machine"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (!a.positional().empty())
+        return usageError("db audit takes no arguments");
+    int limit = 50;
+    if (const auto v = a.value("--limit")) {
+        const auto n = parseInt(*v);
+        if (!n || *n < 0)
+            return usageError("--limit N: N must be 0 (all) or more");
+        limit = static_cast<int>(*n);
+    }
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, false);
+    if (!d)
+        return ExitUsage;
+    const auto entries = d->audit(limit, a.value("--machine").value_or(""));
+    if (a.has("--json")) {
+        json::Array arr;
+        for (const auto& e : entries) {
+            json::Value j;
+            j.set("id", e.id);
+            j.set("at", e.at);
+            j.set("author", e.author);
+            j.set("action", e.action);
+            j.set("machine", e.machine);
+            j.set("revision", e.revision);
+            j.set("detail", e.detail);
+            arr.push_back(std::move(j));
+        }
+        json::Value root;
+        root.set("audit", std::move(arr));
+        out(root.dump() + "\n");
+        return ExitOk;
+    }
+    std::string s;
+    for (const auto& e : entries)
+        s += e.at + "  " + pad(e.author, 10) + "  " + pad(e.action, 15) + "  " +
+             (e.machine.empty()
+                  ? ""
+                  : e.machine + (e.revision ? "@" + std::to_string(e.revision) : "") + "  ") +
+             e.detail + "\n";
+    out(s);
+    return ExitOk;
+}
+
+} // namespace k528::cli::dbcli

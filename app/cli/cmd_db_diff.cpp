@@ -1,0 +1,120 @@
+// k528 db diff (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+namespace {
+
+// A side of a diff: MACHINE@REV, a machine of the database, a machine file,
+// or a built-in profile.
+bool resolveSide(const db::Database& d, const std::string& s, MachineProfile& p,
+                 std::string& label) {
+    try {
+        const auto at = s.rfind('@');
+        if (at != std::string::npos && at > 0 && parseInt(s.substr(at + 1)) &&
+            d.hasMachine(s.substr(0, at))) {
+            const auto ref = parseRef(s);
+            if (!ref)
+                return false;
+            p = loadRef(d, *ref);
+            label = s;
+            return true;
+        }
+        if (d.hasMachine(s)) {
+            p = d.loadMachine(s);
+            label = s + "@" + std::to_string(d.machine(s)->revision);
+            return true;
+        }
+        std::error_code ec;
+        if (fs::is_regular_file(s, ec)) {
+            p = profile::readMachineFile(s);
+            label = s;
+            return true;
+        }
+        if (profile::isBuiltin(s)) {
+            p = profile::builtin(s);
+            label = s + " (built-in)";
+            return true;
+        }
+        fail("'" + s + "' is neither a machine of " + d.path().string() +
+             ", MACHINE@REV, a machine file nor a built-in profile");
+        return false;
+    } catch (const profile::FileError& e) {
+        fail(e.what(), ExitInputErrors);
+        return false;
+    } catch (const db::Error& e) {
+        dbFail(e);
+        return false;
+    }
+}
+
+} // namespace
+
+int cmdDiff(std::span<const std::string> argv) {
+    const Args a(argv, {"--json"}, {"--db"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() != 2)
+        return usageError("db diff needs two sides: MACHINE, MACHINE@REV or FILE");
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, false);
+    if (!d)
+        return ExitUsage;
+    MachineProfile pa, pb;
+    std::string la, lb;
+    if (!resolveSide(*d, a.positional()[0], pa, la) || !resolveSide(*d, a.positional()[1], pb, lb))
+        return ExitUsage;
+    const auto changes = profile::diff(pa, pb);
+    if (a.has("--json")) {
+        json::Value root;
+        root.set("a", la);
+        root.set("b", lb);
+        json::Array cs;
+        for (const auto& c : changes)
+            cs.push_back(changeJson(c));
+        root.set("changes", std::move(cs));
+        out(root.dump() + "\n");
+        return ExitOk;
+    }
+    std::string s = "--- " + la + "\n+++ " + lb + "\n";
+    s += changes.empty() ? "no differences\n" : profile::formatDiff(changes);
+    out(s);
+    return ExitOk;
+}
+
+} // namespace k528::cli::dbcli

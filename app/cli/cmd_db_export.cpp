@@ -1,0 +1,67 @@
+// k528 db export (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+int cmdExport(std::span<const std::string> argv) {
+    const Args a(argv, {}, {"--db", "--format", "--out"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() != 1)
+        return usageError("db export needs one MACHINE (or MACHINE@REV)");
+    const std::string format = a.value("--format").value_or("k528m");
+    if (format != "k528m" && format != "csv")
+        return usageError("--format is k528m or csv, not '" + format + "'");
+    const auto ref = parseRef(a.positional()[0]);
+    if (!ref)
+        return ExitUsage;
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, false);
+    if (!d)
+        return ExitUsage;
+    try {
+        const MachineProfile p = loadRef(*d, *ref);
+        const std::string text =
+            format == "csv" ? profile::writeCParamsCsv(p.cValues()) : profile::writeMachineText(p);
+        return writeOutput(a.value("--out"), text) ? ExitOk : ExitUsage;
+    } catch (const db::Error& e) {
+        return dbFail(e);
+    }
+}
+
+} // namespace k528::cli::dbcli

@@ -1,0 +1,184 @@
+// k528 db import (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+namespace {
+
+// The line of `key` ("C017") in the [c] section of a machine file, 0 if none.
+int lineOfC(const std::string& text, int number) {
+    std::istringstream in(text);
+    std::string line;
+    int n = 0;
+    bool inC = false;
+    while (std::getline(in, line)) {
+        ++n;
+        std::string s = line;
+        while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t'))
+            s.pop_back();
+        const auto b = s.find_first_not_of(" \t");
+        if (b == std::string::npos)
+            continue;
+        s = s.substr(b);
+        if (s[0] == '[') {
+            inC = s == "[c]";
+            continue;
+        }
+        if (!inC || (s[0] != 'C' && s[0] != 'c'))
+            continue;
+        const auto eq = s.find('=');
+        if (eq == std::string::npos)
+            continue;
+        std::string k = s.substr(1, eq - 1);
+        while (!k.empty() && (k.back() == ' ' || k.back() == '\t'))
+            k.pop_back();
+        if (const auto v = parseInt(k); v && *v == number)
+            return n;
+    }
+    return 0;
+}
+
+bool looksLikeCsv(const std::string& path, const std::string& text) {
+    if (path.size() > 4 && path.substr(path.size() - 4) == ".csv")
+        return true;
+    std::string t = text.substr(0, 64);
+    if (t.rfind("\xEF\xBB\xBF", 0) == 0)
+        t = t.substr(3);
+    return t.rfind("number;", 0) == 0;
+}
+
+} // namespace
+
+int cmdImport(std::span<const std::string> argv) {
+    const Args a(argv, {"--replace", "--allow-errors"},
+                 {"--db", "--as", "--author", "--format", "--lang"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() != 1)
+        return usageError("db import needs one FILE (a machine file .k528m, or CSV with --as)");
+    Lang lang;
+    if (!parseLangOption(a, lang))
+        return ExitUsage;
+    const std::string file = a.positional()[0];
+    std::string text, err;
+    if (file == "-") {
+        if (!util::readInputStream(stdin, "standard input", text, err))
+            return fail(err);
+    } else if (!readFile(file, text, err)) {
+        return fail(err);
+    }
+    const std::string source = file == "-" ? "<stdin>" : file;
+    std::string format = a.value("--format").value_or("");
+    if (!format.empty() && format != "k528m" && format != "csv")
+        return usageError("--format is k528m or csv, not '" + format + "'");
+    if (format.empty())
+        format = looksLikeCsv(file, text) ? "csv" : "k528m";
+    const auto asName = a.value("--as");
+    if (asName) {
+        if (const auto e = profile::checkName(*asName); !e.empty())
+            return usageError("--as " + *asName + ": " + e);
+    }
+    db::WriteOptions o;
+    o.author = a.value("--author").value_or("");
+    o.allowErrors = a.has("--allow-errors");
+    o.action = "import";
+    o.summary = "import " + fs::path(source).filename().string();
+
+    // Read and check the whole file before the database is touched.
+    MachineProfile p;
+    profile::CValues csv{};
+    try {
+        if (format == "csv") {
+            if (!asName)
+                return usageError("a CSV file holds only the constants: name the machine whose "
+                                  "constants it replaces with --as NAME");
+            csv = profile::readCParamsCsv(text, source);
+        } else {
+            p = profile::readMachineText(text, source);
+            if (asName)
+                p.name = *asName;
+        }
+    } catch (const profile::FileError& e) {
+        return fail(std::string(e.what()) + " (nothing was imported)", ExitInputErrors);
+    }
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, true, o.author);
+    if (!d)
+        return ExitUsage;
+    const std::string machine = format == "csv" ? *asName : p.name;
+    try {
+        db::SaveResult r;
+        if (format == "csv") {
+            db::Edit e;
+            for (int n = 1; n <= cat::kCParamCount; ++n)
+                e.c[n] = csv[static_cast<std::size_t>(n)];
+            r = d->applyEdit(machine, e, o);
+        } else if (d->hasMachine(machine)) {
+            if (!a.has("--replace")) {
+                const auto info = *d->machine(machine);
+                return fail("machine " + machine + " already exists in " + t.path.string() +
+                            " (revision " + std::to_string(info.revision) +
+                            "): --replace stores the file as its next revision, --as NAME "
+                            "imports it under another name; nothing was imported");
+            }
+            r = d->saveMachine(machine, p, o);
+        } else {
+            r = d->createMachine(p, o);
+        }
+        out(savedText(machine, r, lang));
+        return ExitOk;
+    } catch (const db::ValidationError& e) {
+        const std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
+        std::fprintf(stderr, "k528: %s\n", first.c_str());
+        for (const auto& f : e.findings()) {
+            int line = 0;
+            if (format == "k528m")
+                for (int n : f.cParams)
+                    if (const int l = lineOfC(text, n); l && (!line || l < line))
+                        line = l;
+            std::fprintf(stderr, "%s:%s %s\n", source.c_str(),
+                         line ? (std::to_string(line) + ":").c_str() : "",
+                         findingText(f, lang).c_str());
+        }
+        return ExitInputErrors;
+    } catch (const db::Error& e) {
+        return dbFail(e);
+    }
+}
+
+} // namespace k528::cli::dbcli

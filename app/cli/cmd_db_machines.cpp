@@ -1,0 +1,83 @@
+// k528 db machines (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+int cmdMachines(std::span<const std::string> argv) {
+    const Args a(argv, {"--json"}, {"--db"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (!a.positional().empty())
+        return usageError("db machines takes no arguments");
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, false);
+    if (!d)
+        return ExitUsage;
+    const auto ms = d->machines();
+    if (a.has("--json")) {
+        json::Array arr;
+        for (const auto& m : ms) {
+            json::Value j;
+            j.set("name", m.name);
+            j.set("title", m.title);
+            j.set("revision", m.revision);
+            j.set("created_at", m.createdAt);
+            j.set("changed_at", m.changedAt);
+            j.set("changed_by", m.changedBy);
+            arr.push_back(std::move(j));
+        }
+        json::Value root;
+        root.set("database", t.path.string());
+        root.set("machines", std::move(arr));
+        out(root.dump() + "\n");
+        return ExitOk;
+    }
+    std::size_t w = 7;
+    for (const auto& m : ms)
+        w = std::max(w, utf8::length(m.name));
+    std::string s = pad("MACHINE", w) + "  REV  CHANGED               BY          TITLE\n";
+    for (const auto& m : ms)
+        s += pad(m.name, w) + "  " + padLeft(std::to_string(m.revision), 3) + "  " +
+             pad(m.changedAt, 20) + "  " + pad(m.changedBy, 10) + "  " + m.title + "\n";
+    if (ms.empty())
+        s += "(no machines: k528 db import FILE adds one)\n";
+    out(s);
+    return ExitOk;
+}
+
+} // namespace k528::cli::dbcli

@@ -1,0 +1,170 @@
+// k528 db set (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+namespace {
+
+// The item an ITEM=VALUE names, the same for C22, c022 and C022.
+std::string itemKey(const std::string& item) {
+    std::string key = item.substr(0, item.find('='));
+    if (key.size() < 2 || std::string_view("CcRr#AWS").find(key[0]) == std::string_view::npos)
+        return key;
+    const std::size_t nz = key.find_first_not_of('0', 1);
+    const std::string digits = nz == std::string::npos ? "0" : key.substr(nz);
+    return std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(key[0])))) + digits;
+}
+
+// One ITEM=VALUE of `set` into the edit; "" or what is wrong.
+std::string parseItem(const std::string& item, db::Edit& e) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0)
+        return "'" + item + "' is not ITEM=VALUE (e.g. C022=2133, R12=5, #3=TEXT, A01=TEXT)";
+    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+    const auto digits = [](const std::string& s) {
+        return !s.empty() &&
+               std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    const std::string rest = key.substr(1);
+    if ((key[0] == 'C' || key[0] == 'c') && digits(rest)) {
+        const auto n = parseInt(rest);
+        if (!n || *n < 1 || *n > cat::kCParamCount)
+            return key + ": no such C-parameter (1..152)";
+        const auto v = parseInt(value);
+        if (!v)
+            return key + ": '" + value + "' is not a whole number";
+        e.c[static_cast<int>(*n)] = *v;
+        return {};
+    }
+    if ((key[0] == 'R' || key[0] == 'r') && digits(rest)) {
+        const auto n = parseInt(rest);
+        if (!n || *n < 0 || *n >= cat::kRParamCount)
+            return key + ": no such R-parameter (0..299)";
+        if (value.empty()) {
+            e.r[static_cast<int>(*n)] = std::nullopt;
+            return {};
+        }
+        const auto v = parseInt(value);
+        if (!v)
+            return key + ": '" + value + "' is not a whole number";
+        e.r[static_cast<int>(*n)] = *v;
+        return {};
+    }
+    if (key[0] == '#' && digits(rest)) {
+        const auto n = parseInt(rest);
+        if (!n || *n < 1 || *n > cat::kTechMessageCount)
+            return key + ": no such technological message (#1..#99)";
+        e.messages[static_cast<int>(*n)] =
+            value.empty() ? std::nullopt : std::optional<std::string>(value);
+        return {};
+    }
+    if ((key[0] == 'A' || key[0] == 'W' || key[0] == 'S') && digits(rest)) {
+        const cat::PlcGroup g = key[0] == 'A'   ? cat::PlcGroup::Alarm
+                                : key[0] == 'W' ? cat::PlcGroup::Work
+                                                : cat::PlcGroup::System;
+        const auto n = parseInt(rest);
+        if (!n || *n < 1 || *n > cat::plcMessageCount(g))
+            return key + ": no such PLC message (" + std::string(1, key[0]) + "01.." +
+                   std::string(1, key[0]) + std::to_string(cat::plcMessageCount(g)) + ")";
+        e.plc[{g, static_cast<int>(*n)}] =
+            value.empty() ? std::nullopt : std::optional<std::string>(value);
+        return {};
+    }
+    if (key == "title") {
+        e.title = value;
+        return {};
+    }
+    if (profile::Settings::keyError(key).empty()) {
+        e.simulation[key] = value.empty() ? std::nullopt : std::optional<std::string>(value);
+        return {};
+    }
+    return "'" + key +
+           "' is not an item: C<n>, R<n>, #<n>, A<nn>, W<nn>, S<nn>, title or a "
+           "simulation key";
+}
+
+void printRejection(const db::ValidationError& e, Lang lang, const std::string& where) {
+    const std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
+    std::fprintf(stderr, "k528: %s\n", first.c_str());
+    for (const auto& f : e.findings())
+        std::fprintf(stderr, "%s%s\n", where.c_str(), findingText(f, lang).c_str());
+}
+
+} // namespace
+
+int cmdSet(std::span<const std::string> argv) {
+    const Args a(argv, {"--allow-errors"}, {"--db", "--author", "--lang"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() < 2)
+        return usageError("db set needs MACHINE and at least one ITEM=VALUE (e.g. C022=2133)");
+    Lang lang;
+    if (!parseLangOption(a, lang))
+        return ExitUsage;
+    db::Edit edit;
+    std::map<std::string, std::string> given; // item key -> the ITEM=VALUE that set it
+    for (std::size_t i = 1; i < a.positional().size(); ++i) {
+        const std::string& item = a.positional()[i];
+        if (const auto err = parseItem(item, edit); !err.empty())
+            return usageError(err);
+        const auto [it, fresh] = given.emplace(itemKey(item), item);
+        if (!fresh)
+            return usageError(item.substr(0, item.find('=')) + " is given twice ('" + it->second +
+                              "' and '" + item + "'); give each item once");
+    }
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, false, a.value("--author").value_or(""));
+    if (!d)
+        return ExitUsage;
+    const std::string machine = a.positional()[0];
+    try {
+        db::WriteOptions o;
+        o.author = a.value("--author").value_or("");
+        o.allowErrors = a.has("--allow-errors");
+        const auto r = d->applyEdit(machine, edit, o);
+        out(savedText(machine, r, lang));
+        return ExitOk;
+    } catch (const db::ValidationError& e) {
+        printRejection(e, lang, "  ");
+        return ExitInputErrors;
+    } catch (const db::Error& e) {
+        return dbFail(e);
+    }
+}
+
+} // namespace k528::cli::dbcli

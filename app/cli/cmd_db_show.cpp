@@ -1,0 +1,426 @@
+// k528 db show (docs/database.md); helpers in db_cli_util.h.
+#include "db_cli_util.h"
+#include "args.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "db/location.h"
+#include "db/sha256.h"
+#include "db_cli.h"
+#include "output_file.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "profile/validate.h"
+#include "units/units.h"
+#include "util/input_file.h"
+#include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+
+namespace k528::cli::dbcli {
+
+namespace {
+
+// "--history" may be followed by a number: "--history 5" -> "--history=5",
+// "--history" alone -> "--history=0" (all).
+std::vector<std::string> normalizeHistory(std::span<const std::string> argv) {
+    std::vector<std::string> v;
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        if (argv[i] == "--history") {
+            if (i + 1 < argv.size() && parseInt(argv[i + 1])) {
+                v.push_back("--history=" + argv[i + 1]);
+                ++i;
+            } else {
+                v.push_back("--history=0");
+            }
+            continue;
+        }
+        v.push_back(argv[i]);
+    }
+    return v;
+}
+
+std::optional<int> parseCNumber(const std::string& s) {
+    std::string t = s;
+    if (!t.empty() && (t[0] == 'C' || t[0] == 'c'))
+        t = t.substr(1);
+    const auto n = parseInt(t);
+    if (!n || *n < 1 || *n > cat::kCParamCount)
+        return std::nullopt;
+    return static_cast<int>(*n);
+}
+
+std::optional<int> parseRNumber(const std::string& s) {
+    std::string t = s;
+    if (!t.empty() && (t[0] == 'R' || t[0] == 'r'))
+        t = t.substr(1);
+    const auto n = parseInt(t);
+    if (!n || *n < 0 || *n >= cat::kRParamCount)
+        return std::nullopt;
+    return static_cast<int>(*n);
+}
+
+std::string historyText(const db::Database& d, const std::string& machine,
+                        const std::optional<std::string>& key, int limit) {
+    std::string s;
+    if (key) {
+        const auto h = d.history(machine, key, limit);
+        s += "history of " + *key + (h.empty() ? ": no changes recorded\n" : ":\n");
+        for (const auto& e : h) {
+            s += "  revision " + std::to_string(e.revision) + "  " + e.at + "  " + e.author + ": ";
+            if (e.change.section == profile::DiffSection::Program)
+                s += std::string(!e.change.before  ? "added"
+                                 : !e.change.after ? "removed"
+                                                   : "changed") +
+                     "\n";
+            else
+                s += e.change.before.value_or("(none)") + " -> " +
+                     e.change.after.value_or("(none)") + "\n";
+        }
+        return s;
+    }
+    const auto revs = d.revisions(machine);
+    const auto all = d.history(machine, std::nullopt, limit);
+    int shown = 0;
+    for (const auto& r : revs) {
+        if (limit > 0 && shown >= limit)
+            break;
+        ++shown;
+        s += "revision " + std::to_string(r.revision) + "  " + r.at + "  " + r.author + "  " +
+             r.summary + " (" + std::to_string(r.changeCount) +
+             (r.changeCount == 1 ? " change" : " changes") + ")\n";
+        if (r.revision == 1 && r.changeCount > 20) {
+            s += "  (the machine as first stored: k528 db export " + machine + "@1)\n";
+            continue;
+        }
+        std::vector<profile::Change> cs;
+        for (const auto& e : all)
+            if (e.revision == r.revision)
+                cs.push_back(e.change);
+        s += changeLines(cs, &d, machine, r.revision);
+    }
+    return s;
+}
+
+json::Value historyJson(const db::Database& d, const std::string& machine,
+                        const std::optional<std::string>& key, int limit) {
+    json::Array arr;
+    const auto all = d.history(machine, key, limit);
+    int shown = 0;
+    for (const auto& r : d.revisions(machine)) {
+        if (limit > 0 && shown >= limit)
+            break;
+        ++shown;
+        json::Array cs;
+        for (const auto& e : all)
+            if (e.revision == r.revision)
+                cs.push_back(changeJson(e.change));
+        if (key && cs.empty())
+            continue;
+        json::Value j;
+        j.set("revision", r.revision);
+        j.set("author", r.author);
+        j.set("at", r.at);
+        j.set("summary", r.summary);
+        j.set("changes", std::move(cs));
+        arr.push_back(std::move(j));
+    }
+    return arr;
+}
+
+json::Value cJson(const MachineProfile& p, const cat::CParamDef& d, bool full) {
+    json::Value j;
+    j.set("number", d.number);
+    j.set("key", d.key());
+    j.set("axis", cat::axisName(d.axis));
+    j.set("name", d.name);
+    j.set("name_en", d.nameEn);
+    j.set("value", p.cValue(d.number));
+    j.set("unit", cat::unitSymbol(d.unit));
+    j.set("explanation_ru", db::explainCValue(p, d.number, Lang::Ru));
+    j.set("explanation_en", db::explainCValue(p, d.number, Lang::En));
+    if (full) {
+        j.set("kind", cat::kindName(d.kind));
+        j.set("min", d.min);
+        j.set("max", d.max);
+        j.set("address", d.address.text());
+        j.set("description_ru", d.descriptionRu);
+        j.set("description_en", d.descriptionEn);
+        j.set("hint_ru", d.hintRu);
+        j.set("hint_en", d.hintEn);
+        j.set("note", d.note);
+    }
+    return j;
+}
+
+} // namespace
+
+int cmdShow(std::span<const std::string> argvIn) {
+    const auto argv = normalizeHistory(argvIn);
+    const Args a(argv, {"--programs", "--messages", "--json"},
+                 {"--db", "--c", "--r", "--program", "--history", "--lang"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() != 1)
+        return usageError("db show needs one MACHINE (or MACHINE@REV)");
+    Lang lang;
+    if (!parseLangOption(a, lang))
+        return ExitUsage;
+    const auto ref = parseRef(a.positional()[0]);
+    if (!ref)
+        return ExitUsage;
+    int views = 0;
+    for (const char* o : {"--c", "--r", "--program"})
+        views += a.value(o) ? 1 : 0;
+    views += a.has("--programs") + a.has("--messages");
+    if (views > 1)
+        return usageError("db show takes one of --c, --r, --programs, --program, --messages");
+    std::optional<int> cNumber, rNumber, programNumber;
+    if (const auto v = a.value("--c"); v && !(cNumber = parseCNumber(*v)))
+        return usageError("--c: '" + *v + "' is not a C-parameter number 1..152");
+    if (const auto v = a.value("--r"); v && !(rNumber = parseRNumber(*v)))
+        return usageError("--r: '" + *v + "' is not an R-parameter number 0..299");
+    if (const auto v = a.value("--program")) {
+        const auto n = parseInt(*v);
+        if (!n || *n < 1 || *n > 99)
+            return usageError("--program: '" + *v + "' is not a program number 1..99");
+        programNumber = static_cast<int>(*n);
+    }
+    std::optional<int> historyLimit;
+    if (const auto v = a.value("--history")) {
+        const auto n = parseInt(*v);
+        if (!n || *n < 0)
+            return usageError("--history N: N must be a number of revisions (0 = all)");
+        historyLimit = static_cast<int>(*n);
+    }
+    DbTarget t;
+    if (!dbTarget(a, t))
+        return ExitUsage;
+    auto d = openDb(t, false);
+    if (!d)
+        return ExitUsage;
+    try {
+        const MachineProfile p = loadRef(*d, *ref);
+        const db::MachineInfo info = *d->machine(ref->name);
+        const bool ru = lang == Lang::Ru;
+        std::optional<std::string> historyKey;
+        if (cNumber)
+            historyKey = cat::cParam(*cNumber).key();
+        else if (rNumber)
+            historyKey = "R" + std::to_string(*rNumber);
+        else if (programNumber)
+            historyKey = "L" + std::to_string(*programNumber);
+
+        if (a.has("--json")) {
+            json::Value root;
+            root.set("name", p.name);
+            root.set("title", p.title);
+            root.set("revision", ref->revision ? *ref->revision : info.revision);
+            root.set("current_revision", info.revision);
+            root.set("changed_at", info.changedAt);
+            root.set("changed_by", info.changedBy);
+            root.set("created_at", info.createdAt);
+            json::Array cs;
+            for (const auto& def : cat::cParams())
+                if (!cNumber || *cNumber == def.number)
+                    cs.push_back(cJson(p, def, cNumber.has_value()));
+            root.set("c", std::move(cs));
+            json::Array rs;
+            for (const auto& [n, v] : p.r)
+                if (!rNumber || *rNumber == n) {
+                    json::Value j;
+                    j.set("number", n);
+                    j.set("value", v);
+                    j.set("meaning_ru", rMeaning(n, Lang::Ru));
+                    j.set("meaning_en", rMeaning(n, Lang::En));
+                    rs.push_back(std::move(j));
+                }
+            root.set("r", std::move(rs));
+            json::Array ps;
+            for (const auto& [n, text] : p.programs)
+                if (!programNumber || *programNumber == n) {
+                    json::Value j;
+                    j.set("number", n);
+                    j.set("title", db::programTitle(text));
+                    j.set("lines",
+                          static_cast<long long>(std::count(text.begin(), text.end(), '\n')));
+                    j.set("sha256", db::sha256Hex(text));
+                    if (programNumber)
+                        j.set("text", text);
+                    ps.push_back(std::move(j));
+                }
+            root.set("programs", std::move(ps));
+            json::Value ms = json::Object{};
+            for (const auto& [n, text] : p.messages)
+                ms.set("#" + std::to_string(n), text);
+            root.set("messages", std::move(ms));
+            json::Value plc = json::Object{};
+            for (cat::PlcGroup g : cat::kPlcGroups)
+                for (const auto& [k, text] : p.plcTexts(g))
+                    plc.set(std::string(1, cat::plcGroupLetter(g)) + (k < 10 ? "0" : "") +
+                                std::to_string(k),
+                            text);
+            root.set("plc_messages", std::move(plc));
+            json::Array fs;
+            for (const auto& f : profile::validate(p))
+                fs.push_back(findingJson(f));
+            root.set("findings", std::move(fs));
+            if (historyLimit)
+                root.set("history", historyJson(*d, info.name, historyKey, *historyLimit));
+            out(root.dump() + "\n");
+            return ExitOk;
+        }
+
+        std::string s = machineHeader(info, ref->revision);
+        if (cNumber) {
+            const auto& def = cat::cParam(*cNumber);
+            s += "\n" + def.key() + " " + std::string(ru ? def.name : def.nameEn);
+            if (def.axis != cat::Axis::Common)
+                s += std::string(ru ? " (ось " : " (axis ") + std::string(cat::axisName(def.axis)) +
+                     ")";
+            s += " = " + std::to_string(p.cValue(*cNumber)) + "\n";
+            const std::string ex = db::explainCValue(p, *cNumber, lang);
+            if (!ex.empty())
+                s += std::string(ru ? "  значение:  " : "  meaning:   ") + ex + "\n";
+            s += std::string(ru ? "  единица:   " : "  unit:      ") + unitText(def.unit, lang) +
+                 "\n";
+            s += std::string(ru ? "  диапазон:  " : "  range:     ") + std::to_string(def.min) +
+                 "..." + std::to_string(def.max) + "\n";
+            s += std::string(ru ? "  тип:       " : "  kind:      ") +
+                 std::string(cat::kindName(def.kind)) + "\n";
+            if (!def.address.text().empty())
+                s += std::string(ru ? "  адрес в БП: " : "  address:   ") +
+                     (ru ? def.address.text() : def.address.textEn()) + "\n";
+            const std::string hint(ru ? def.hintRu : def.hintEn);
+            if (!hint.empty())
+                s += std::string(ru ? "  подсказка: " : "  hint:      ") + hint + "\n";
+            s += "  " + std::string(ru ? def.descriptionRu : def.descriptionEn) + "\n";
+            if (!def.note.empty())
+                s += "  note: " + std::string(def.note) + "\n";
+            for (const auto& f : profile::validate(p))
+                if (std::find(f.cParams.begin(), f.cParams.end(), *cNumber) != f.cParams.end())
+                    s += "  " + findingText(f, lang) + "\n";
+            s += historyText(*d, info.name, historyKey, historyLimit.value_or(0));
+        } else if (rNumber) {
+            const cat::RParamDef& def = cat::rParam(*rNumber);
+            const auto it = p.r.find(*rNumber);
+            s += "\nR" + std::to_string(*rNumber) + " = " +
+                 (it == p.r.end() ? std::string(ru ? "(не задан)" : "(not preset)")
+                                  : std::to_string(it->second) + " " +
+                                        rValueText(p, *rNumber, it->second, lang)) +
+                 "\n";
+            const std::string meaning = rMeaning(*rNumber, lang);
+            if (!meaning.empty())
+                s += "  " + meaning + "\n";
+            s += std::string("  ") +
+                 (def.readOnly() ? (ru ? "только чтение (R232..R262)" : "read only (R232..R262)")
+                  : def.user() ? (ru ? "параметр пользователя" : "user parameter")
+                               : (ru ? "системный параметр" : "system parameter")) +
+                 ", " + std::string(ru ? cat::rUnitRu(def.unit) : cat::rUnitEn(def.unit)) + "\n";
+            if (def.group > 0)
+                s += std::string(ru ? "  УСТАНОВОЧНЫЕ ДАННЫЕ " : "  preset screen ") +
+                     std::to_string(def.group) + " " +
+                     std::string(ru ? cat::rGroupNameRu(def.group) : cat::rGroupNameEn(def.group)) +
+                     "\n";
+            s += historyText(*d, info.name, historyKey, historyLimit.value_or(0));
+        } else if (programNumber) {
+            const auto it = p.programs.find(*programNumber);
+            if (it == p.programs.end())
+                return fail("machine " + p.name + " has no program L" +
+                            std::to_string(*programNumber));
+            if (historyLimit) {
+                out(s + historyText(*d, info.name, historyKey, *historyLimit));
+                return ExitOk;
+            }
+            out(it->second);
+            return ExitOk;
+        } else if (historyLimit) {
+            s += "\n" + historyText(*d, info.name, std::nullopt, *historyLimit);
+            out(s);
+            return ExitOk;
+        } else if (a.has("--programs")) {
+            s += "\n";
+            for (const auto& [n, text] : p.programs)
+                s += programSummary(n, text);
+            if (p.programs.empty())
+                s += ru ? "(нет программ)\n" : "(no programs)\n";
+        } else if (a.has("--messages")) {
+            s += ru ? "\nТехнологические сообщения:\n" : "\nTechnological messages:\n";
+            for (const auto& [n, text] : p.messages)
+                s += "  #" + pad(std::to_string(n), 3) + text + "\n";
+            for (cat::PlcGroup g : cat::kPlcGroups) {
+                s += "\n" + std::string(ru ? cat::plcGroupNameRu(g) : cat::plcGroupNameEn(g)) +
+                     ":\n";
+                for (const auto& [k, text] : p.plcTexts(g))
+                    s += "  " + std::string(1, cat::plcGroupLetter(g)) + (k < 10 ? "0" : "") +
+                         std::to_string(k) + "  " + pad(cat::plcMessageAddress(g, k), 8) + "  " +
+                         text + "\n";
+            }
+        } else {
+            s += "\n";
+            for (const auto& def : cat::cParams()) {
+                if (def.number == 1)
+                    s += ru ? "; ось X\n" : "; axis X\n";
+                else if (def.number == 53)
+                    s += ru ? "; ось Z\n" : "; axis Z\n";
+                else if (def.number == 105)
+                    s += ru ? "; общие\n" : "; common\n";
+                s += cLine(p, def, lang);
+            }
+            s += ru ? "\nR-параметры (предустановки):\n" : "\nR-parameter presets:\n";
+            for (const auto& [n, v] : p.r) {
+                const std::string vt = rValueText(p, n, v, lang);
+                s += "R" + pad(std::to_string(n), 4) + " " + padLeft(std::to_string(v), 11) + "  " +
+                     pad(vt, 18) + " " + rMeaning(n, lang) + "\n";
+            }
+            if (p.r.empty())
+                s += ru ? "(нет)\n" : "(none)\n";
+            s += (ru ? "\nпрограммы: " : "\nprograms: ") + std::to_string(p.programs.size());
+            if (!p.programs.empty()) {
+                s += " (";
+                bool first = true;
+                for (const auto& [n, text] : p.programs) {
+                    s += (first ? "L" : ", L") + std::to_string(n);
+                    first = false;
+                }
+                s += ")";
+            }
+            s += (ru ? "; сообщения: " : "; messages: ") + std::to_string(p.messages.size()) +
+                 (ru ? "; тексты ПЛК: " : "; PLC texts: ") +
+                 std::to_string(p.plcAlarm.size() + p.plcWork.size() + p.plcSystem.size()) + "\n";
+        }
+        if (!cNumber) {
+            const auto findings = profile::validate(p);
+            if (!findings.empty()) {
+                s += ru ? "\nпроверка:\n" : "\nchecks:\n";
+                for (const auto& f : findings)
+                    s += "  " + findingText(f, lang) + "\n";
+            }
+        }
+        if (historyLimit && (a.has("--programs") || a.has("--messages")))
+            s += "\n" + historyText(*d, info.name, std::nullopt, *historyLimit);
+        out(s);
+        return ExitOk;
+    } catch (const db::Error& e) {
+        return dbFail(e);
+    }
+}
+
+} // namespace k528::cli::dbcli

@@ -1,0 +1,106 @@
+// Shared by the `k528 db` subcommands (cmd_db_<sub>.cpp): output helpers,
+// opening the database, machine references, the texts that explain
+// constants and changes. Not for cmd_db_calc.cpp, which stands alone.
+#pragma once
+
+#include "args.h"
+#include "catalog/cparams.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db/explain.h"
+#include "profile/diff.h"
+#include "profile/profile.h"
+#include "profile/validate.h"
+#include "util/json.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace k528::cli::dbcli {
+
+namespace fs = std::filesystem;
+namespace cat = k528::catalog;
+using db::Lang;
+using profile::MachineProfile;
+
+struct DbTarget {
+    fs::path path;
+    bool explicitPath = false;
+};
+
+// "grinder-205@3" -> name, revision.
+struct MachineRef {
+    std::string name;
+    std::optional<int> revision;
+};
+
+void out(const std::string& s);
+
+std::string pad(const std::string& s, std::size_t width);
+
+std::string padLeft(const std::string& s, std::size_t width);
+
+std::string findingText(const profile::Finding& f, Lang lang);
+
+json::Value findingJson(const profile::Finding& f);
+
+json::Value optJson(const std::optional<std::string>& s);
+
+json::Value changeJson(const profile::Change& c);
+
+int fail(const std::string& message, int code = ExitUsage);
+
+int dbFail(const db::Error& e);
+
+bool parseLangOption(const Args& a, Lang& lang);
+
+// "--db PATH" of the subcommand, else the default location.
+bool dbTarget(const Args& a, DbTarget& t);
+
+// Opens the database. The default location is created on first use (with its
+// folder); an explicit --db path only by init and import.
+std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
+                                   const std::string& author = {});
+
+// "grinder-205@3" -> name, revision; a usage error printed when bad.
+std::optional<MachineRef> parseRef(const std::string& s);
+
+MachineProfile loadRef(const db::Database& d, const MachineRef& r);
+
+bool writeOutput(const std::optional<std::string>& outPath, const std::string& text);
+
+std::string unitText(cat::Unit u, Lang lang);
+
+std::size_t unitWidth(Lang lang);
+
+std::string cLine(const MachineProfile& p, const cat::CParamDef& d, Lang lang);
+
+std::string rMeaning(int n, Lang lang);
+
+std::string rValueText(const MachineProfile& p, int n, std::int64_t v, Lang lang);
+
+std::string machineHeader(const db::MachineInfo& m, std::optional<int> revision);
+
+std::string programSummary(int n, const std::string& text);
+
+// Changes of one revision, for --history and set.
+std::string changeLines(const std::vector<profile::Change>& changes, const db::Database* d,
+                        const std::string& machine, int revision);
+
+std::string savedText(const std::string& machine, const db::SaveResult& r, Lang lang);
+
+// The subcommands (args after the subcommand's name).
+int cmdInit(std::span<const std::string> argv);
+int cmdMachines(std::span<const std::string> argv);
+int cmdShow(std::span<const std::string> argv);
+int cmdSet(std::span<const std::string> argv);
+int cmdExport(std::span<const std::string> argv);
+int cmdImport(std::span<const std::string> argv);
+int cmdDiff(std::span<const std::string> argv);
+int cmdAudit(std::span<const std::string> argv);
+
+} // namespace k528::cli::dbcli
