@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "cli.h"
 #include "util/version.h"
 
@@ -101,6 +103,13 @@ int dispatch(int argc, char** argv) {
 // No command ends on an uncaught exception: whatever escapes a command
 // becomes one message and exit code 2.
 int main(int argc, char** argv) {
+    // Output to a file or a pipe is kept whole until the end (16 MiB, far more
+    // than any command prints; pages are touched only as they fill), so that
+    // a lost write is seen by finishStandardOutput() with its reason.
+    if (!::isatty(STDOUT_FILENO)) {
+        static char buffer[std::size_t{16} << 20];
+        std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
+    }
     int rc = ExitUsage;
     try {
         rc = dispatch(argc, argv);

@@ -51,7 +51,7 @@ private slots:
         QTest::newRow("format") << QStringList{"format", "@FILE"};
         QTest::newRow("check --json") << QStringList{"check", "--json", "@FILE"};
         QTest::newRow("check") << QStringList{"check", "@BAD"};
-        QTest::newRow("run --json") << QStringList{"run", "--json", "--no-home", "@FILE"};
+        QTest::newRow("run --json") << QStringList{"run", "--json", "@FILE"};
         QTest::newRow("panel") << QStringList{"panel", "--keys", "F1"};
         QTest::newRow("--version") << QStringList{"--version"};
         QTest::newRow("--help") << QStringList{"--help"};

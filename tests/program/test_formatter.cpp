@@ -71,10 +71,8 @@ private slots:
                          "; first\n"
                          "#1=ПРАВКА   \n"
                          "\n";
+        // Programs in the order written (issue 15), not by number.
         const char* out = "; K528 Studio sample\n"
-                          "\n"
-                          "%L3\n"
-                          "M17\n"
                           "\n"
                           "; main\n"
                           "%L12 (ring 205) ;  rough\n"
@@ -86,6 +84,9 @@ private slots:
                           "N3 IF R1>0 GOTO 2\n"
                           "M30\n"
                           "; after the end\n"
+                          "\n"
+                          "%L3\n"
+                          "M17\n"
                           "\n"
                           "%MESSAGES ; table\n"
                           "; first\n"
