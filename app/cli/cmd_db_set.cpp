@@ -7,32 +7,16 @@
 #include "cli.h"
 #include "db/database.h"
 #include "db/explain.h"
-#include "db/location.h"
-#include "db/sha256.h"
 #include "db_cli.h"
-#include "output_file.h"
-#include "profile/builtin.h"
-#include "profile/csv.h"
 #include "profile/diff.h"
-#include "profile/text_format.h"
 #include "profile/validate.h"
-#include "units/units.h"
-#include "util/input_file.h"
 #include "util/json.h"
-#include "util/utf8.h"
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <iterator>
 #include <map>
-#include <sstream>
 
 namespace k528::cli::dbcli {
 
