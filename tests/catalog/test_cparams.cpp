@@ -159,15 +159,15 @@ private slots:
             {38, "S поиска 0-метки"},
             {42, "F УСК.АВТ."},
             {46, "-ОГРАНИЧЕН"},
-            {48, "S конечника БТ"},
+            {48, "S кончика БТ"}, // as printed in its row (C100: «конечника»)
             {78, "К(СКОР)"},
             {100, "S конечника БТ"},
             {105, "N М1"},
             {107, "N Б.ВХ. X1"},
             {122, "N Б.ВХ. Z8"},
             {123, "ESC=сброс в исх.сост"},
-            {124, "ESC=квитир.авар.БЦС"},
-            {125, "ESC=квитир.сист.БЦС"},
+            {124, "ESC =квитир.авар.БЦС"}, // as printed: exactly 20 characters
+            {125, "ESC =квитир.сист.БЦС"}, // printed with 21: the blank after «=» goes
             {139, "Корректор по L1"},
             {143, "N ручного цикла 1"},
             {150, "N ручного цикла 8"},
@@ -300,6 +300,9 @@ private slots:
         QCOMPARE(findCParamByName("ESC =сброс в исх.сост", Axis::Common)->number, 123);
         QCOMPARE(findCParamByName("ОТМ=КВИТ.С.", Axis::Common)->number, 125);
         QCOMPARE(findCParamByName("S кончика БТ", Axis::Z)->number, 100);
+        QCOMPARE(findCParamByName("S кончика БТ", Axis::X)->number, 48);
+        QCOMPARE(findCParamByName("S конечника БТ", Axis::X)->number, 48);
+        QCOMPARE(findCParamByName("S конечника БТ", Axis::Z)->number, 100);
         QVERIFY(findCParamByName("НЕТ ТАКОГО", Axis::X) == nullptr);
         QVERIFY(findCParamByName("Резерв", Axis::X) == nullptr);
     }

@@ -37,7 +37,19 @@ private slots:
         QCOMPARE(positionerMessage(12).textRu, std::string_view("Программный конечный выключ.(X)"));
         QCOMPARE(positionerMessage(14).textRu, std::string_view("Отказ СР52.05 в БП"));
         QCOMPARE(positionerMessage(15).textRu, std::string_view("Разрушены С-параметры"));
-        QCOMPARE(positionerMessage(10).textRu, std::string_view("Конечник оси X в \"-\""));
+        // Quotes as table М.1 prints them: «» for 9..11, straight for 26/27.
+        QCOMPARE(positionerMessage(9).textRu, std::string_view("Аварийный «СТОП» от ПЛК"));
+        QCOMPARE(positionerMessage(10).textRu, std::string_view("Конечник оси X в «-»"));
+        QCOMPARE(positionerMessage(11).textRu, std::string_view("Конечник оси X в «+»"));
+        QCOMPARE(positionerMessage(26).textRu, std::string_view("Конечник оси Z в \"-\""));
+        // The blank after the number's dot where table М.1 prints one.
+        QCOMPARE(positionerMessage(37).panelText(), std::string("37. Ошибка N ДОС"));
+        QCOMPARE(positionerMessage(38).panelText(), std::string("38. Ошибка N ЦАП"));
+        QCOMPARE(positionerMessage(39).panelText(), std::string("39.Ошибка N маховика"));
+        QCOMPARE(positionerMessage(14).panelText(), std::string("14. Отказ СР52.05 в БП"));
+        QCOMPARE(positionerMessage(47).panelText(), std::string("47. G?"));
+        QCOMPARE(positionerMessage(54).panelText(), std::string("54.Дублирование номеров кадров"));
+        QCOMPARE(positionerMessage(64).panelText(), std::string("64. G04/L"));
         QCOMPARE(positionerMessage(41).textRu, std::string_view("Нет \"0\"-метки"));
         QCOMPARE(positionerMessage(46).textRu, std::string_view("Переполнение"));
         QCOMPARE(positionerMessage(47).textRu, std::string_view("G?"));

@@ -45,10 +45,12 @@ private slots:
             QCOMPARE(r.p->access(), panel::Access::ViewOnly);
         }
         {
-            Rig r; // a fifth digit is not dropped: «11111» is not «1111»
-            r.keys("F6 1 1 1 1 1 ENTER");
-            QVERIFY(r.p->passwordShown());
-            QVERIFY(r.p->passwordScreen().closed());
+            Rig r; // the password has four digits: a fifth is not taken
+            r.keys("F6 1 1 1 1 1");
+            QCOMPARE(r.p->passwordScreen().typed(), std::string("1111"));
+            r.keys("ENTER");
+            QVERIFY(!r.p->passwordShown());
+            QCOMPARE(r.c().mode(), Mode::ProgramEdit);
         }
         for (const char* f : {"F6", "F7"}) {
             Rig r;
@@ -325,7 +327,7 @@ private slots:
         QCOMPARE(r.line(0), QString("РУЧ            100%!"));
         r.keys("HELP 2");
         // 9 first (the positioner's, in the order they came), then the PLC's.
-        QCOMPARE(r.lines(), expect({"НЕИСПРАВНОСТИ    1/2", "9.Аварийный \"СТОП\"", "от ПЛК", ""}));
+        QCOMPARE(r.lines(), expect({"НЕИСПРАВНОСТИ    1/2", "9.Аварийный «СТОП»", "от ПЛК", ""}));
         r.keys("DOWN");
         QCOMPARE(r.lines(), expect({"НЕИСПРАВНОСТИ    2/2", "Перегрев двигателя", "шпинделя", ""}));
         // Gone but not acknowledged: still listed.

@@ -139,7 +139,7 @@ private slots:
         row("password", "F5", {"ПАРОЛЬ?", ">", "", ""});
         row("password typing", "F5 1 2 3", {"ПАРОЛЬ?", ">***", "", ""});
         row("password DEL", "F5 1 2 3 DEL", {"ПАРОЛЬ?", ">**", "", ""});
-        row("password five digits", "F5 1 2 3 4 5", {"ПАРОЛЬ?", ">*****", "", ""});
+        row("password five digits", "F5 1 2 3 4 5", {"ПАРОЛЬ?", ">****", "", ""}); // four taken
         row("password ESC", "F1 F5 ESC ESC",
             {"АВТ            100%", "", " X    0.000    0.000", " Z    0.000    0.000"});
         row("F6 wrong", "F6 1 2 3 4 ENTER", {"ПАРОЛЬ?", ">", "ДОСТУП ЗАКРЫТ", ""});
