@@ -319,6 +319,29 @@ private slots:
         QCOMPARE(r.line(0), QString("РУЧ            100%*"));
     }
 
+    // ПРЕДУСТАНОВКИ as 2.6.5 prints them: the «MX:» hint shows the machine
+    // coordinate («MX: -123.456»), R167 ДОПУСК two decimals («R167 = 1.00»).
+    void presetsHintAndTolerance() {
+        Rig r;
+        r.keys("F2");
+        r.m->setJog(engine::AxisId::X, -1);
+        r.m->advance(500);
+        r.m->setJog(engine::AxisId::X, 0);
+        r.m->advance(500);
+        const engine::AxisView x = r.c().axisView(engine::AxisId::X);
+        QVERIFY(x.machineDisc < -100);
+        r.keys("F4 2");
+        const QString hint = r.line(1).trimmed();
+        QVERIFY2(hint.startsWith("MX: -"), qPrintable(hint));
+        QCOMPARE(std::llround(hint.mid(4).toDouble() * 1000.0), static_cast<long long>(x.machineDisc));
+        r.keys("DOWN");
+        QCOMPARE(r.line(1).trimmed(), QString("MZ: 0.000"));
+        r.c().setR(167, 1000);
+        r.keys("F4 MODE 9 SHIFT+DOWN");
+        QVERIFY2(r.lines().join("|").contains("R167=1.00|") || r.lines().join("|").endsWith("R167=1.00"),
+                 qPrintable(r.lines().join("|")));
+    }
+
     void faults() {
         Rig r;
         r.m->setEmergencyStop(true);
@@ -349,7 +372,7 @@ private slots:
         QCOMPARE(r.line(0), QString("РУЧ            100%?")); // «?» before «*»
         r.keys("HELP 3");
         QCOMPARE(r.lines(),
-                 expect({"СИСТЕМА          1/2", "55.Отказ модулей", "ввода/вывода в ПЛК", ""}));
+                 expect({"СИСТЕМА          1/2", "55. Отказ модулей", "ввода/вывода в ПЛК", ""}));
         r.keys("DOWN");
         QCOMPARE(r.lines(), expect({"СИСТЕМА          2/2", "Отказ модуля ПЛК,", "место 0", ""}));
         r.m->setPlcAlarm(12, true);
