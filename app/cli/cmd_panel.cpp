@@ -312,20 +312,20 @@ int runPanel(std::span<const std::string> argv) {
     }
     panel::Panel k923(bench->controller());
     try {
-    for (const Step& s : steps) {
-        if (const auto* k = std::get_if<panel::KeyPress>(&s))
-            k923.press(*k);
-        else if (const auto* b = std::get_if<ButtonStep>(&s))
-            machineBench->button(*b);
-        else if (const auto* f = std::get_if<FaultStep>(&s))
-            machineBench->fault(*f);
-        else if (const auto* m = std::get_if<PlcModeStep>(&s))
-            bench->imposeMode(m->code);
-        else
-            bench->advance(std::get<std::int64_t>(s));
-        if (machineBench)
-            k923.setHealth(machineBench->health()); // a fault may have changed the K923
-    }
+        for (const Step& s : steps) {
+            if (const auto* k = std::get_if<panel::KeyPress>(&s))
+                k923.press(*k);
+            else if (const auto* b = std::get_if<ButtonStep>(&s))
+                machineBench->button(*b);
+            else if (const auto* f = std::get_if<FaultStep>(&s))
+                machineBench->fault(*f);
+            else if (const auto* m = std::get_if<PlcModeStep>(&s))
+                bench->imposeMode(m->code);
+            else
+                bench->advance(std::get<std::int64_t>(s));
+            if (machineBench)
+                k923.setHealth(machineBench->health()); // a fault may have changed the K923
+        }
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "k528: %s\n", e.what()); // a fault this machine cannot have
         return ExitUsage;
