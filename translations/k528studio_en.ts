@@ -2,6 +2,129 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>FaultTexts</name>
+    <message>
+        <source>spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wheel spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>work spindle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coolant pump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lubrication pump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hydraulic pump</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Encoder %1: channel %2 broken</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed drive %1 not ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limit switch %1%2 hit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Emergency stop circuit open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interference on encoder %1 (DAC limit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC I/O module failure, place %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC - positioner link lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive not ready: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motor overheat: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motor overload: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chuck loses its clamping pressure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turret jammed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In-process gauge fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 0, failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 1, failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: DAC module CM32.03 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: communication module CP52.05 failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: link to the K923 unstable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Positioner: RAM/ROM test fails</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: no link to the PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: no link to the positioner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: RAM fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>K923: resident software corrupt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC in debug stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -697,82 +820,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>spindle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>wheel spindle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>work spindle</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>coolant pump</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>lubrication pump</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>hydraulic pump</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Encoder %1: channel %2 broken</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed drive %1 not ready</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Limit switch %1%2 hit</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Emergency stop circuit open</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Interference on encoder %1 (DAC limit)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PLC I/O module failure, place %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PLC - positioner link lost</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Drive not ready: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Motor overheat: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Motor overload: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Chuck loses its clamping pressure</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Turret jammed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>In-process gauge fault</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Simulation</source>
         <translation type="unfinished"></translation>
     </message>
@@ -810,50 +857,6 @@
     </message>
     <message>
         <source>Machine: %1 (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Positioner: encoder module CP34.23, place 0, failed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Positioner: encoder module CP34.23, place 1, failed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Positioner: DAC module CM32.03 failed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Positioner: communication module CP52.05 failed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Positioner: link to the K923 unstable</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Positioner: RAM/ROM test fails</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>K923: no link to the PLC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>K923: no link to the positioner</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>K923: RAM fault</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>K923: resident software corrupt</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>PLC in debug stop</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

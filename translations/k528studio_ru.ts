@@ -2,6 +2,129 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
+    <name>FaultTexts</name>
+    <message>
+        <source>spindle</source>
+        <translation>шпиндель</translation>
+    </message>
+    <message>
+        <source>wheel spindle</source>
+        <translation>шпиндель круга</translation>
+    </message>
+    <message>
+        <source>work spindle</source>
+        <translation>шпиндель изделия</translation>
+    </message>
+    <message>
+        <source>coolant pump</source>
+        <translation>насос СОЖ</translation>
+    </message>
+    <message>
+        <source>lubrication pump</source>
+        <translation>насос смазки</translation>
+    </message>
+    <message>
+        <source>hydraulic pump</source>
+        <translation>гидронасос</translation>
+    </message>
+    <message>
+        <source>Encoder %1: channel %2 broken</source>
+        <translation>ДОС %1: обрыв канала %2</translation>
+    </message>
+    <message>
+        <source>Feed drive %1 not ready</source>
+        <translation>Нет готовности привода подачи %1</translation>
+    </message>
+    <message>
+        <source>Limit switch %1%2 hit</source>
+        <translation>Наезд на конечник %1%2</translation>
+    </message>
+    <message>
+        <source>Emergency stop circuit open</source>
+        <translation>Обрыв цепи аварийного останова</translation>
+    </message>
+    <message>
+        <source>Interference on encoder %1 (DAC limit)</source>
+        <translation>Помеха в линиях ДОС %1 (предел ЦАП)</translation>
+    </message>
+    <message>
+        <source>PLC I/O module failure, place %1</source>
+        <translation>Отказ модуля ввода-вывода ПЛК, место %1</translation>
+    </message>
+    <message>
+        <source>PLC - positioner link lost</source>
+        <translation>Нет связи ПЛК и БП</translation>
+    </message>
+    <message>
+        <source>Drive not ready: %1</source>
+        <translation>Нет готовности привода: %1</translation>
+    </message>
+    <message>
+        <source>Motor overheat: %1</source>
+        <translation>Перегрев двигателя: %1</translation>
+    </message>
+    <message>
+        <source>Motor overload: %1</source>
+        <translation>Перегрузка двигателя: %1</translation>
+    </message>
+    <message>
+        <source>Chuck loses its clamping pressure</source>
+        <translation>Патрон теряет давление зажима</translation>
+    </message>
+    <message>
+        <source>Turret jammed</source>
+        <translation>Резцедержатель заклинило</translation>
+    </message>
+    <message>
+        <source>In-process gauge fault</source>
+        <translation>Неисправность прибора активного контроля</translation>
+    </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 0, failed</source>
+        <translation>БП: отказ модуля ДОС CP34.23, место 0</translation>
+    </message>
+    <message>
+        <source>Positioner: encoder module CP34.23, place 1, failed</source>
+        <translation>БП: отказ модуля ДОС CP34.23, место 1</translation>
+    </message>
+    <message>
+        <source>Positioner: DAC module CM32.03 failed</source>
+        <translation>БП: отказ модуля ЦАП CM32.03</translation>
+    </message>
+    <message>
+        <source>Positioner: communication module CP52.05 failed</source>
+        <translation>БП: отказ модуля связи CP52.05</translation>
+    </message>
+    <message>
+        <source>Positioner: link to the K923 unstable</source>
+        <translation>БП: неустойчивая связь с K923</translation>
+    </message>
+    <message>
+        <source>Positioner: RAM/ROM test fails</source>
+        <translation>БП: ошибка теста ОЗУ/ПЗУ</translation>
+    </message>
+    <message>
+        <source>K923: no link to the PLC</source>
+        <translation>K923: нет связи с ПЛК</translation>
+    </message>
+    <message>
+        <source>K923: no link to the positioner</source>
+        <translation>K923: нет связи с БП</translation>
+    </message>
+    <message>
+        <source>K923: RAM fault</source>
+        <translation>K923: неисправно ОЗУ</translation>
+    </message>
+    <message>
+        <source>K923: resident software corrupt</source>
+        <translation>K923: нарушен резидент</translation>
+    </message>
+    <message>
+        <source>PLC in debug stop</source>
+        <translation>ПЛК в режиме «ОТЛАДКА СТОП»</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -697,82 +820,6 @@
         <translation>Время станка %1:%2:%3</translation>
     </message>
     <message>
-        <source>spindle</source>
-        <translation>шпиндель</translation>
-    </message>
-    <message>
-        <source>wheel spindle</source>
-        <translation>шпиндель круга</translation>
-    </message>
-    <message>
-        <source>work spindle</source>
-        <translation>шпиндель изделия</translation>
-    </message>
-    <message>
-        <source>coolant pump</source>
-        <translation>насос СОЖ</translation>
-    </message>
-    <message>
-        <source>lubrication pump</source>
-        <translation>насос смазки</translation>
-    </message>
-    <message>
-        <source>hydraulic pump</source>
-        <translation>гидронасос</translation>
-    </message>
-    <message>
-        <source>Encoder %1: channel %2 broken</source>
-        <translation>ДОС %1: обрыв канала %2</translation>
-    </message>
-    <message>
-        <source>Feed drive %1 not ready</source>
-        <translation>Нет готовности привода подачи %1</translation>
-    </message>
-    <message>
-        <source>Limit switch %1%2 hit</source>
-        <translation>Наезд на конечник %1%2</translation>
-    </message>
-    <message>
-        <source>Emergency stop circuit open</source>
-        <translation>Обрыв цепи аварийного останова</translation>
-    </message>
-    <message>
-        <source>Interference on encoder %1 (DAC limit)</source>
-        <translation>Помеха в линиях ДОС %1 (предел ЦАП)</translation>
-    </message>
-    <message>
-        <source>PLC I/O module failure, place %1</source>
-        <translation>Отказ модуля ввода-вывода ПЛК, место %1</translation>
-    </message>
-    <message>
-        <source>PLC - positioner link lost</source>
-        <translation>Нет связи ПЛК и БП</translation>
-    </message>
-    <message>
-        <source>Drive not ready: %1</source>
-        <translation>Нет готовности привода: %1</translation>
-    </message>
-    <message>
-        <source>Motor overheat: %1</source>
-        <translation>Перегрев двигателя: %1</translation>
-    </message>
-    <message>
-        <source>Motor overload: %1</source>
-        <translation>Перегрузка двигателя: %1</translation>
-    </message>
-    <message>
-        <source>Chuck loses its clamping pressure</source>
-        <translation>Патрон теряет давление зажима</translation>
-    </message>
-    <message>
-        <source>Turret jammed</source>
-        <translation>Резцедержатель заклинило</translation>
-    </message>
-    <message>
-        <source>In-process gauge fault</source>
-        <translation>Неисправность прибора активного контроля</translation>
-    </message>
-    <message>
         <source>&amp;Simulation</source>
         <translation>&amp;Станок</translation>
     </message>
@@ -811,50 +858,6 @@
     <message>
         <source>Machine: %1 (%2)</source>
         <translation>Станок: %1 (%2)</translation>
-    </message>
-    <message>
-        <source>Positioner: encoder module CP34.23, place 0, failed</source>
-        <translation>БП: отказ модуля ДОС CP34.23, место 0</translation>
-    </message>
-    <message>
-        <source>Positioner: encoder module CP34.23, place 1, failed</source>
-        <translation>БП: отказ модуля ДОС CP34.23, место 1</translation>
-    </message>
-    <message>
-        <source>Positioner: DAC module CM32.03 failed</source>
-        <translation>БП: отказ модуля ЦАП CM32.03</translation>
-    </message>
-    <message>
-        <source>Positioner: communication module CP52.05 failed</source>
-        <translation>БП: отказ модуля связи CP52.05</translation>
-    </message>
-    <message>
-        <source>Positioner: link to the K923 unstable</source>
-        <translation>БП: неустойчивая связь с K923</translation>
-    </message>
-    <message>
-        <source>Positioner: RAM/ROM test fails</source>
-        <translation>БП: ошибка теста ОЗУ/ПЗУ</translation>
-    </message>
-    <message>
-        <source>K923: no link to the PLC</source>
-        <translation>K923: нет связи с ПЛК</translation>
-    </message>
-    <message>
-        <source>K923: no link to the positioner</source>
-        <translation>K923: нет связи с БП</translation>
-    </message>
-    <message>
-        <source>K923: RAM fault</source>
-        <translation>K923: неисправно ОЗУ</translation>
-    </message>
-    <message>
-        <source>K923: resident software corrupt</source>
-        <translation>K923: нарушен резидент</translation>
-    </message>
-    <message>
-        <source>PLC in debug stop</source>
-        <translation>ПЛК в режиме «ОТЛАДКА СТОП»</translation>
     </message>
     <message>
         <source>Program</source>

@@ -4,9 +4,10 @@
 // A freshly powered-on controller on the engine's ideal machine
 // (engine/ideal_machine.h) — or, with --machine, on the simulated machine of
 // the profile (machine/simulation.h: its PLC, drives and pendant, whose
-// buttons PUSH:/HOLD:/PULL: tokens press) — the K923 model over it
-// (panel/panel.h), the keys pressed in order; WAIT:S lets S seconds of
-// machine time pass. Prints the four LCD lines, or JSON with the LEDs.
+// buttons PUSH:/HOLD:/PULL: tokens press, whose K923 and PLC FAULT:/CLEAR:
+// tokens break and mend) — the K923 model over it (panel/panel.h), the keys
+// pressed in order; WAIT:S lets S seconds of machine time pass; PLCMODE:N
+// makes the PLC impose mode N. Prints the four LCD lines, or JSON with the LEDs.
 #include "args.h"
 #include "cli.h"
 #include "machine_profile.h"
@@ -25,6 +26,7 @@
 #include <memory>
 #include <cstdio>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
@@ -44,8 +46,34 @@ struct ButtonStep {
 constexpr std::int64_t kPushMs = 100; // an operator's push
 constexpr std::int64_t kSeenMs = 30;  // time for the PLC's debounce to see the release
 
-// One token of --keys: a key press, a wait in milliseconds, a machine button.
-using Step = std::variant<panel::KeyPress, std::int64_t, ButtonStep>;
+// A fault of the K923's health or the PLC (--machine): FAULT:NAME injects it,
+// CLEAR:NAME mends it (docs/panel.md, table М.1 of appendix М).
+struct FaultStep {
+    machine::FaultSpec fault;
+    bool clear = false;
+};
+struct HealthFaultName {
+    std::string_view name;
+    machine::Fault kind;
+    int detail;
+};
+constexpr HealthFaultName kHealthFaults[] = {
+    {"PLC_LINK", machine::Fault::K923, static_cast<int>(machine::K923Part::PlcLink)},
+    {"BP_LINK", machine::Fault::K923, static_cast<int>(machine::K923Part::PositionerLink)},
+    {"RAM", machine::Fault::K923, static_cast<int>(machine::K923Part::Ram)},
+    {"RESIDENT", machine::Fault::K923, static_cast<int>(machine::K923Part::Resident)},
+    {"PLC_STOP", machine::Fault::PlcStopped, 0},
+};
+constexpr std::string_view kHealthFaultList = "PLC_LINK BP_LINK RAM RESIDENT PLC_STOP";
+
+// PLCMODE:N: the PLC imposes mode N (1..7) on Z1000.8-10; PLCMODE:0 lets go.
+struct PlcModeStep {
+    int code = 0;
+};
+
+// One token of --keys: a key press, a wait in milliseconds, a machine button,
+// a fault, a mode the PLC imposes.
+using Step = std::variant<panel::KeyPress, std::int64_t, ButtonStep, FaultStep, PlcModeStep>;
 
 struct ButtonName {
     std::string_view name;
@@ -110,7 +138,38 @@ std::optional<Step> parseButton(const std::string& token, std::string& error) {
     return std::nullopt;
 }
 
+// FAULT:NAME, CLEAR:NAME.
+std::optional<Step> parseFault(const std::string& token, std::string& error) {
+    const std::string t = upper(token);
+    const auto colon = t.find(':');
+    const std::string name = t.substr(colon + 1);
+    for (const HealthFaultName& f : kHealthFaults)
+        if (f.name == name)
+            return FaultStep{machine::FaultSpec(f.kind, engine::AxisId::X, f.detail),
+                             t.compare(0, colon, "CLEAR") == 0};
+    error = "unknown fault in --keys token '" + token + "' (faults: " +
+            std::string(kHealthFaultList) + ")";
+    return std::nullopt;
+}
+
+// PLCMODE:N, N = 0..7.
+std::optional<Step> parsePlcMode(const std::string& token, std::string& error) {
+    const std::string n = token.substr(8);
+    if (n.size() == 1 && n[0] >= '0' && n[0] <= '7')
+        return PlcModeStep{n[0] - '0'};
+    error = "bad --keys token '" + token +
+            "': PLCMODE:N imposes mode N (1 АВТОМАТ … 7 УПРАВЛЕНИЕ ДАННЫМИ), PLCMODE:0 lets go";
+    return std::nullopt;
+}
+
 std::optional<Step> parseStep(const std::string& token, std::string& error) {
+    {
+        const std::string t = upper(token);
+        if (t.rfind("FAULT:", 0) == 0 || t.rfind("CLEAR:", 0) == 0)
+            return parseFault(token, error);
+        if (t.rfind("PLCMODE:", 0) == 0)
+            return parsePlcMode(token, error);
+    }
     {
         const std::string t = upper(token.substr(0, 5));
         if (t.rfind("PUSH:", 0) == 0 || t.rfind("HOLD:", 0) == 0 || t.rfind("PULL:", 0) == 0)
@@ -131,7 +190,7 @@ std::optional<Step> parseStep(const std::string& token, std::string& error) {
             "' in --keys (keys: F1..F8 K1..K12 L1..L4 UP DOWN LEFT RIGHT MODE HELP ESC SHIFT PAR "
             "ACK INS DEL "
             "ENTER 0..9 . + - * / = % !, SHIFT+KEY, WAIT:S; with --machine PUSH:BUTTON, "
-            "HOLD:BUTTON:S, PULL:ESTOP)";
+            "HOLD:BUTTON:S, PULL:ESTOP, FAULT:NAME, CLEAR:NAME, PLCMODE:N)";
     return std::nullopt;
 }
 
@@ -141,6 +200,8 @@ public:
     virtual ~Bench() = default;
     virtual engine::Controller& controller() = 0;
     virtual void advance(std::int64_t ms) = 0;
+    // PLCMODE:N — the PLC's mode code, 0 = the K923 chooses.
+    virtual void imposeMode(int code) = 0;
 };
 
 class IdealBench final : public Bench {
@@ -151,6 +212,10 @@ public:
     }
     engine::Controller& controller() override { return ctl_; }
     void advance(std::int64_t ms) override { m_.advance(ms); }
+    void imposeMode(int code) override {
+        m_.setModeCode(code);
+        m_.advance(kSeenMs);
+    }
 
 private:
     engine::Controller ctl_;
@@ -165,6 +230,15 @@ public:
     }
     engine::Controller& controller() override { return sim_.controller(); }
     void advance(std::int64_t ms) override { sim_.advance(ms); }
+    void imposeMode(int code) override {
+        sim_.plc().imposeMode(code == 0 ? -1 : code); // 0: the description's rules again
+        sim_.advance(kSeenMs);
+    }
+    void fault(const FaultStep& f) {
+        f.clear ? sim_.clear(f.fault) : sim_.inject(f.fault);
+        sim_.advance(kSeenMs);
+    }
+    panel::Health health() const { return sim_.k923Health(); }
     // Button steps exist only with --machine (checked before anything runs).
     void button(const ButtonStep& b) {
         if (!b.button) {
@@ -210,6 +284,10 @@ int runPanel(std::span<const std::string> argv) {
             return usageError("'" + token +
                               "' presses a button of the machine: give --machine (the simulated "
                               "machine with its PLC and pendant)");
+        if (std::holds_alternative<FaultStep>(*step) && !onMachine)
+            return usageError("'" + token +
+                              "' breaks a part of the machine: give --machine (the simulated "
+                              "machine with its PLC and K923)");
         steps.push_back(*step);
     }
 
@@ -233,13 +311,24 @@ int runPanel(std::span<const std::string> argv) {
         return ExitUsage;
     }
     panel::Panel k923(bench->controller());
-    for (const Step& s : steps) {
-        if (const auto* k = std::get_if<panel::KeyPress>(&s))
-            k923.press(*k);
-        else if (const auto* b = std::get_if<ButtonStep>(&s))
-            machineBench->button(*b);
-        else
-            bench->advance(std::get<std::int64_t>(s));
+    try {
+        for (const Step& s : steps) {
+            if (const auto* k = std::get_if<panel::KeyPress>(&s))
+                k923.press(*k);
+            else if (const auto* b = std::get_if<ButtonStep>(&s))
+                machineBench->button(*b);
+            else if (const auto* f = std::get_if<FaultStep>(&s))
+                machineBench->fault(*f);
+            else if (const auto* m = std::get_if<PlcModeStep>(&s))
+                bench->imposeMode(m->code);
+            else
+                bench->advance(std::get<std::int64_t>(s));
+            if (machineBench)
+                k923.setHealth(machineBench->health()); // a fault may have changed the K923
+        }
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "k528: %s\n", e.what()); // a fault this machine cannot have
+        return ExitUsage;
     }
 
     const panel::Display d = k923.display();

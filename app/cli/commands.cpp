@@ -74,7 +74,10 @@ std::span<const Command> commands() {
          "                       pendant) instead of the engine's ideal one; --keys then also\n"
          "                       takes PUSH:BUTTON (100 ms), HOLD:BUTTON:S, PUSH:ESTOP (latches),\n"
          "                       PULL:ESTOP; buttons DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID\n"
-         "                       CHUCK\n"
+         "                       CHUCK; FAULT:NAME breaks, CLEAR:NAME mends the K923 or PLC:\n"
+         "                       PLC_LINK («НЕТ СВЯЗИ С ПЛК»), BP_LINK («НЕТ СВЯЗИ С БП»), RAM,\n"
+         "                       RESIDENT, PLC_STOP («Режим ПЛК СТОП !»)\n"
+         "                       PLCMODE:N the PLC imposes mode N (1..7, F1..F7); PLCMODE:0 lets go\n"
          "  --json               print {\"lines\":[4],\"leds\":{\"green\":[K],\"red\":[K],\"override\":[L],\n"
          "                       \"shift\":bool},\"blink\":{\"row\",\"column\",\"length\"}|null}\n"
          "Prints the 4 LCD lines, 20 characters each. Screens: docs/panel.md.\n",

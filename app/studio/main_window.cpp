@@ -15,6 +15,7 @@
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
+#include "machine/fault_texts.h"
 #include "machine/machine_panel.h"
 #include "machine/status_views.h"
 #include "profile/builtin.h"
@@ -309,88 +310,6 @@ void MainWindow::updateFaultActions() {
         faultActions_[i]->setChecked(session_->simulation().faultActive(faults[static_cast<std::size_t>(i)]));
     }
 }
-
-namespace {
-// The trainer's name of a fault, translated.
-QString faultTitle(const machine::FaultSpec& f) {
-    const QString ax = f.axis == engine::AxisId::X ? QStringLiteral("X") : QStringLiteral("Z");
-    const QString eq = QString::fromStdString(f.equipment);
-    const auto equipment = [&] {
-        if (eq == "spindle")
-            return MainWindow::tr("spindle");
-        if (eq == "wheel")
-            return MainWindow::tr("wheel spindle");
-        if (eq == "work")
-            return MainWindow::tr("work spindle");
-        if (eq == "coolant")
-            return MainWindow::tr("coolant pump");
-        if (eq == "lube")
-            return MainWindow::tr("lubrication pump");
-        if (eq == "hydraulics")
-            return MainWindow::tr("hydraulic pump");
-        return eq;
-    };
-    switch (f.kind) {
-    case machine::Fault::EncoderChannelBreak:
-        return MainWindow::tr("Encoder %1: channel %2 broken").arg(ax).arg(f.detail);
-    case machine::Fault::DriveNotReady:
-        return MainWindow::tr("Feed drive %1 not ready").arg(ax);
-    case machine::Fault::LimitSwitch:
-        return MainWindow::tr("Limit switch %1%2 hit").arg(ax, f.detail < 0 ? "-" : "+");
-    case machine::Fault::EmergencyStop:
-        return MainWindow::tr("Emergency stop circuit open");
-    case machine::Fault::DacLimit:
-        return MainWindow::tr("Interference on encoder %1 (DAC limit)").arg(ax);
-    case machine::Fault::PlcModuleFailure:
-        return MainWindow::tr("PLC I/O module failure, place %1").arg(f.detail);
-    case machine::Fault::LostLink:
-        return MainWindow::tr("PLC - positioner link lost");
-    case machine::Fault::SpindleDrive:
-        return MainWindow::tr("Drive not ready: %1").arg(equipment());
-    case machine::Fault::SpindleOverheat:
-        return MainWindow::tr("Motor overheat: %1").arg(equipment());
-    case machine::Fault::PumpOverload:
-        return MainWindow::tr("Motor overload: %1").arg(equipment());
-    case machine::Fault::ChuckPressure:
-        return MainWindow::tr("Chuck loses its clamping pressure");
-    case machine::Fault::TurretJam:
-        return MainWindow::tr("Turret jammed");
-    case machine::Fault::GaugeFault:
-        return MainWindow::tr("In-process gauge fault");
-    case machine::Fault::PositionerModule:
-        switch (static_cast<machine::PositionerPart>(f.detail)) {
-        case machine::PositionerPart::PulseModule1:
-            return MainWindow::tr("Positioner: encoder module CP34.23, place 0, failed");
-        case machine::PositionerPart::PulseModule2:
-            return MainWindow::tr("Positioner: encoder module CP34.23, place 1, failed");
-        case machine::PositionerPart::DacModule:
-            return MainWindow::tr("Positioner: DAC module CM32.03 failed");
-        case machine::PositionerPart::CommModule:
-            return MainWindow::tr("Positioner: communication module CP52.05 failed");
-        case machine::PositionerPart::PanelLink:
-            return MainWindow::tr("Positioner: link to the K923 unstable");
-        case machine::PositionerPart::Memory:
-            return MainWindow::tr("Positioner: RAM/ROM test fails");
-        }
-        return {};
-    case machine::Fault::K923:
-        switch (static_cast<machine::K923Part>(f.detail)) {
-        case machine::K923Part::PlcLink:
-            return MainWindow::tr("K923: no link to the PLC");
-        case machine::K923Part::PositionerLink:
-            return MainWindow::tr("K923: no link to the positioner");
-        case machine::K923Part::Ram:
-            return MainWindow::tr("K923: RAM fault");
-        case machine::K923Part::Resident:
-            return MainWindow::tr("K923: resident software corrupt");
-        }
-        return {};
-    case machine::Fault::PlcStopped:
-        return MainWindow::tr("PLC in debug stop");
-    }
-    return {};
-}
-} // namespace
 
 void MainWindow::retranslate() {
     setWindowTitle(tr("K528 Studio"));

@@ -292,7 +292,8 @@ constexpr Alias kAliases[] = {
     {"ОТМ=СБРОС", 123},
     {"ОТМ=КВИТ.Н.", 124},
     {"ОТМ=КВИТ.С.", 125},
-    {"S кончика БТ", 48},
+    {"S кончика БТ", 48},   // C48's printed name, asked for Z
+    {"S конечника БТ", 48}, // C100's printed name, asked for X
 };
 
 } // namespace

@@ -3,10 +3,12 @@
 // Panel texts are as printed, with the number kept apart. OCR slips fixed:
 //   - line-break hyphens of the two-line panel texts removed
 //     (8 «Контроль полож/за- жима», 12 «ко- нечный», 13 «пре- образования»);
-//   - the space after the number dropped («14. Отказ» -> number 14, «Отказ»);
+//   - the number kept apart: «14. Отказ» -> number 14, «Отказ»; the blank
+//     after the dot of the messages printed with one (14, 34..38, 47, 50..53,
+//     55..64) is given back by panelText();
 //   - module names in Latin letters (CP52.05, CP34.23) written in Cyrillic;
-//   - quotes: 9, 10, 11 print typographic «» (10 even «-«), 26, 27 print the
-//     straight quotes of the LCD («"-"»): all panel texts use straight quotes.
+//   - quotes as printed: 9, 10, 11 typographic «» (10's broken «-« closed as
+//     «-»), 26, 27, 40, 41 straight ("-").
 //   - comments of 26/27 print «←»/«→» for «-»/«+» (as in 10/11).
 #include "catalog/messages.h"
 
@@ -42,15 +44,15 @@ const PositionerMessage kMessages[kPositionerMessageCount] = {
     {8, "Контроль полож/зажима оси X", "Контроль положения оси X в остановленном состоянии по оси",
         "Position/clamp check X", "Position check of the stopped axis X (ДОПУСК КП exceeded)", X, 24, G::Servo,
         "Printed «Контроль полож/за- жима оси X» (line break)."},
-    {9, "Аварийный \"СТОП\" от ПЛК", "Есть сигнал аварийного отключения от ПЛК",
+    {9, "Аварийный «СТОП» от ПЛК", "Есть сигнал аварийного отключения от ПЛК",
         "Emergency \"STOP\" from PLC", "The PLC signals an emergency stop", N, 0, G::Hardware,
-        "Printed with «»; straight quotes as on the LCD."},
-    {10, "Конечник оси X в \"-\"", "Конечный выключатель по оси X в «-»",
+        ""},
+    {10, "Конечник оси X в «-»", "Конечный выключатель по оси X в «-»",
         "Limit switch X \"-\"", "Limit switch of axis X in «-»", X, 26, G::Servo,
-        "Printed «Конечник оси X в «-«» (broken quote); straight quotes as in message 26."},
-    {11, "Конечник оси X в \"+\"", "Конечный выключатель по оси X в «+»",
+        "Printed «Конечник оси X в «-«» (broken quote)."},
+    {11, "Конечник оси X в «+»", "Конечный выключатель по оси X в «+»",
         "Limit switch X \"+\"", "Limit switch of axis X in «+»", X, 27, G::Servo,
-        "Printed with «»; straight quotes as in message 27."},
+        ""},
     {12, "Программный конечный выключ.(X)", "Программный конечный выключатель по оси X",
         "Software limit switch (X)", "Software limit switch of axis X", X, 28, G::Servo,
         "Printed «Программный ко- нечный выключ.(X)» (line break)."},
@@ -211,8 +213,14 @@ std::string_view messageGroupName(MessageGroup g) {
     return "";
 }
 
+// Table М.1 prints these with a blank after the number's dot («37. Ошибка N ДОС»).
+static bool printedWithBlank(int number) {
+    return number == 14 || (number >= 34 && number <= 38) || number == 47 ||
+           (number >= 50 && number <= 53) || number >= 55;
+}
+
 std::string PositionerMessage::panelText() const {
-    return std::to_string(number) + "." + std::string(textRu);
+    return std::to_string(number) + (printedWithBlank(number) ? ". " : ".") + std::string(textRu);
 }
 
 std::span<const PositionerMessage> positionerMessages() {

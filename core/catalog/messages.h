@@ -40,7 +40,8 @@ struct PositionerMessage {
     MessageGroup group;
     std::string_view note; // OCR fixes (English) or ""
 
-    // "13.Ошибка коэфф.преобразования ДОС (X)": the number, a dot, the text,
+    // "13.Ошибка коэфф.преобразования ДОС (X)", "37. Ошибка N ДОС": the
+    // number, a dot (and the blank table М.1 prints after some), the text,
     // as the panel shows it.
     std::string panelText() const;
 };

@@ -1,5 +1,6 @@
 #include "engine/run.h"
 
+#include "catalog/messages.h"
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 
@@ -16,8 +17,21 @@ std::string_view runStatusName(RunStatus s) {
         return "alarm";
     case RunStatus::Timeout:
         return "timeout";
+    case RunStatus::Blocked:
+        return "blocked";
     }
     return "";
+}
+
+std::string describeBlocker(const RunBlocker& b, bool russian) {
+    const std::string& text = russian ? b.textRu : b.textEn;
+    if (b.number == 0)
+        return text;
+    const char letter = b.source == "plc_alarm" ? 'A' : b.source == "plc_work" ? 'W' : 'S';
+    std::string k = std::to_string(b.number);
+    if (k.size() < 2)
+        k = "0" + k;
+    return std::string(1, letter) + k + (text.empty() ? "" : " " + text);
 }
 
 namespace {
@@ -25,6 +39,8 @@ namespace {
 constexpr std::int64_t kHomingGuardMs = 3600 * 1000;
 constexpr std::int64_t kSwitchOnMs = 10000;
 constexpr std::int64_t kHomingStartMs = 1000;
+// After «Пуск» is let go: the PLC's debounce and scans have passed it on.
+constexpr std::int64_t kStartSeenMs = 1000;
 
 void collect(RunMachine& machine, RunResult& res) {
     const Controller& ctl = machine.controller();
@@ -48,6 +64,40 @@ void collect(RunMachine& machine, RunResult& res) {
     res.messageNumber = p.messageNumber;
     res.messageText = p.messageText;
     res.mFunctions = machine.mFunctions();
+}
+
+// Why the program did not start: what the panel shows (the PLC's messages)
+// and the signals of Z1000 that hold «Пуск» back. `what` is the step that
+// did not happen, added last when nothing else explains it.
+std::vector<RunBlocker> startBlockers(const Controller& ctl, RunBlocker what) {
+    std::vector<RunBlocker> out;
+    const InterfaceWords& w = ctl.words();
+    if (!w.bit(z::EmergencyStopOk))
+        out.push_back({"emergency_stop", 0, "Z1000.0 «Аварийный стоп» = 0",
+                       "Z1000.0 emergency stop = 0"});
+    if (!w.bit(z::StartEnable))
+        out.push_back({"start_enable", 0, "Z1000.2 «Деблокировка пуска программы» = 0",
+                       "Z1000.2 program start enable = 0"});
+    const unsigned code = (w.word(z::ModeCodeWord) >> z::ModeCodeFirst) & 7u;
+    if (code != 0 && code != static_cast<unsigned>(Mode::Auto))
+        out.push_back({"mode", 0,
+                       "Z1000.8-10: ПЛК задает режим " + std::to_string(code),
+                       "Z1000.8-10: the PLC imposes mode " + std::to_string(code)});
+    const PlcMessagesView m = ctl.plcMessages();
+    const auto add = [&](catalog::PlcGroup g, std::uint32_t bits, const char* source) {
+        const auto& texts = ctl.profile().plcTexts(g);
+        for (int k = 1; k <= catalog::plcMessageCount(g); ++k)
+            if ((bits >> (k - 1)) & 1u) {
+                const auto t = texts.find(k);
+                const std::string text = t == texts.end() ? std::string() : t->second;
+                out.push_back({source, k, text, text});
+            }
+    };
+    add(catalog::PlcGroup::Alarm, m.alarms, "plc_alarm");
+    add(catalog::PlcGroup::System, m.system, "plc_system");
+    add(catalog::PlcGroup::Work, m.work, "plc_work");
+    out.push_back(std::move(what));
+    return out;
 }
 
 bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t maxMs) {
@@ -120,8 +170,11 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     const bool ready = machine.switchOn(kSwitchOnMs);
     if (ctl.alarmRegistry().anyLatched())
         return finish(RunStatus::Alarm);
-    if (!ready)
-        return finish(RunStatus::Timeout);
+    if (!ready) {
+        res.blockedBy = startBlockers(
+            ctl, {"drives", 0, "станок не готов (приводы не включены)", "the machine is not ready (drives off)"});
+        return finish(RunStatus::Blocked);
+    }
 
     // Reference-point cycles, X first (as an operator retracts X before Z).
     if (options.home) {
@@ -139,13 +192,21 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
             // missing, the axis stopping at a limit switch at the latest): an
             // hour of machine time is only a guard. --max-seconds is the
             // program's limit and does not cut the homing short.
-            runUntil(
+            const bool started = runUntil(
                 machine,
                 [&] {
                     const AxisView w = ctl.axisView(a);
                     return w.homing || w.referenced || ctl.alarmRegistry().anyLatched();
                 },
                 kHomingStartMs);
+            if (!started) {
+                const std::string ax = a == AxisId::X ? "X" : "Z";
+                res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
+                res.blockedBy = startBlockers(
+                    ctl, {"homing", 0, "привязка к базовой точке по " + ax + " не началась",
+                          "the reference-point cycle of " + ax + " did not start"});
+                return finish(RunStatus::Blocked);
+            }
             const bool done = runUntil(
                 machine,
                 [&] {
@@ -169,6 +230,7 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     const std::int64_t pressed = ctl.timeMs();
     const std::int64_t m0WaitMs = static_cast<std::int64_t>(std::llround(options.m0WaitS * 1000.0));
     std::int64_t m0Since = -1;
+    std::int64_t releasedMs = -1; // the first «Пуск» let go
     RunStatus status = RunStatus::Timeout;
     // The limit counts from the moment the positioner saw «Пуск» (the PLC's
     // debounce lies between the press and that moment).
@@ -185,6 +247,18 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
         if (s == ProgramState::Alarm || (ctl.alarmRegistry().anyLatched() && !programActive(s))) {
             status = RunStatus::Alarm;
             break;
+        }
+        if (ctl.programStartMs() < pressed && !programActive(s)) {
+            // «Пуск» not taken: once the press is over and the PLC has had
+            // time to pass it on, the run is blocked; say by what.
+            if (releasedMs < 0 && !machine.startHeld())
+                releasedMs = ctl.timeMs();
+            if (releasedMs >= 0 && ctl.timeMs() - releasedMs >= kStartSeenMs) {
+                res.blockedBy = startBlockers(ctl, {"start", 0, "«Пуск» не принят позиционером",
+                                                    "«Пуск» was not taken by the positioner"});
+                status = RunStatus::Blocked;
+                break;
+            }
         }
         if (s == ProgramState::M0) {
             if (m0Since < 0)

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace k528::engine {
@@ -33,8 +34,27 @@ struct RunOptions {
     double m0WaitS = 0;        // operator's delay before «Пуск» after M00
 };
 
-enum class RunStatus { Completed, Alarm, Timeout };
-std::string_view runStatusName(RunStatus s); // "completed", "alarm", "timeout"
+// Blocked: the program never started — the machine did not get ready, a
+// reference-point cycle did not start, or «Пуск» was not taken; the result's
+// blockedBy says why (docs/engine.md). Never a silent timeout.
+enum class RunStatus { Completed, Alarm, Timeout, Blocked };
+// "completed", "alarm", "timeout", "blocked"
+std::string_view runStatusName(RunStatus s);
+
+// One reason a run did not start: a PLC message shown on the panel, or a
+// signal of the PLC interface that holds «Пуск» back.
+struct RunBlocker {
+    // "plc_alarm", "plc_work", "plc_system" (number = k, text = the profile's
+    // text); "emergency_stop", "start_enable", "mode" (Z1000 signals),
+    // "drives" (not ready), "homing" (a cycle did not start), "start"
+    // («Пуск» not seen).
+    std::string source;
+    int number = 0;
+    std::string textRu; // as the panel shows it / the manual names the signal
+    std::string textEn;
+};
+// "A05 Круг изношен" / "Z1000.2 «Деблокировка пуска программы» = 0": one line.
+std::string describeBlocker(const RunBlocker& b, bool russian);
 
 struct RunAxis {
     bool present = false;
@@ -57,6 +77,7 @@ struct RunResult {
     int messageNumber = 0;
     std::string messageText;
     std::vector<int> mFunctions; // M codes handed to the PLC, in order
+    std::vector<RunBlocker> blockedBy; // status Blocked: why, most direct first
 };
 
 // The machine around a Controller, as the run uses it: time, and the

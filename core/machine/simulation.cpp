@@ -50,54 +50,99 @@ std::string_view faultName(Fault f) {
     return kFaultNames[static_cast<int>(f)];
 }
 
-std::string describeFault(const FaultSpec& f) {
-    const std::string ax = std::string(" (") + axisLetter(f.axis) + ")";
+FaultText faultText(const FaultSpec& f) {
+    const std::string ax = axisLetter(f.axis);
+    const std::string id(faultName(f.kind));
     switch (f.kind) {
     case Fault::EncoderChannelBreak:
-        return "encoder channel " + std::to_string(f.detail) + " break" + ax;
+        return {id, {ax, std::to_string(f.detail)}};
     case Fault::DriveNotReady:
-        return "feed drive not ready" + ax;
-    case Fault::LimitSwitch:
-        return std::string("limit switch ") + (f.detail < 0 ? "-" : "+") + " hit" + ax;
-    case Fault::EmergencyStop:
-        return "emergency stop circuit open";
     case Fault::DacLimit:
-        return "interference on the encoder lines: DAC limit" + ax;
+        return {id, {ax}};
+    case Fault::LimitSwitch:
+        return {id, {ax, f.detail < 0 ? "-" : "+"}};
     case Fault::PlcModuleFailure:
-        return "PLC I/O module failure, place " + std::to_string(f.detail);
-    case Fault::LostLink:
-        return "PLC - positioner link lost";
+        return {id, {std::to_string(f.detail)}};
     case Fault::SpindleDrive:
-        return "spindle drive not ready (" + f.equipment + ")";
     case Fault::SpindleOverheat:
-        return "spindle motor overheat (" + f.equipment + ")";
     case Fault::PumpOverload:
-        return "pump motor overload (" + f.equipment + ")";
-    case Fault::ChuckPressure:
-        return "chuck clamping pressure lost";
-    case Fault::TurretJam:
-        return "turret jammed";
-    case Fault::GaugeFault:
-        return "in-process gauge fault";
+        return {id, {f.equipment}};
     case Fault::PositionerModule: {
-        static constexpr std::string_view parts[] = {
-            "?", "pulse module CP34.23 at place 0", "pulse module CP34.23 at place 1",
-            "DAC module CM32.03", "communication module CP52.05", "link to the K923 panel",
-            "RAM/ROM test"};
-        return "positioner failure: " +
-               std::string(parts[f.detail >= 1 && f.detail <= kPositionerPartCount ? f.detail : 0]);
+        static constexpr std::string_view parts[] = {"?",           "pulse_module_1", "pulse_module_2",
+                                                     "dac_module",  "comm_module",    "panel_link",
+                                                     "memory"};
+        const int d = f.detail >= 1 && f.detail <= kPositionerPartCount ? f.detail : 0;
+        return {id + "." + std::string(parts[d]), {}};
     }
     case Fault::K923: {
-        static constexpr std::string_view parts[] = {"?", "no link to the PLC",
-                                                     "no link to the positioner", "RAM fault",
-                                                     "resident software corrupt"};
-        return "K923 panel: " +
-               std::string(parts[f.detail >= 1 && f.detail <= kK923PartCount ? f.detail : 0]);
+        static constexpr std::string_view parts[] = {"?", "plc_link", "positioner_link", "ram",
+                                                     "resident"};
+        const int d = f.detail >= 1 && f.detail <= kK923PartCount ? f.detail : 0;
+        return {id + "." + std::string(parts[d]), {}};
     }
+    case Fault::EmergencyStop:
+    case Fault::LostLink:
+    case Fault::ChuckPressure:
+    case Fault::TurretJam:
+    case Fault::GaugeFault:
     case Fault::PlcStopped:
-        return "PLC in debug stop";
+        break;
     }
-    return "?";
+    return {id, {}};
+}
+
+namespace {
+// The English texts of the ids, %1 %2 the arguments.
+struct FaultTemplate {
+    std::string_view id, text;
+};
+constexpr FaultTemplate kFaultTemplates[] = {
+    {"encoder_channel_break", "encoder channel %2 break (%1)"},
+    {"drive_not_ready", "feed drive not ready (%1)"},
+    {"limit_switch", "limit switch %2 hit (%1)"},
+    {"emergency_stop", "emergency stop circuit open"},
+    {"dac_limit", "interference on the encoder lines: DAC limit (%1)"},
+    {"plc_module_failure", "PLC I/O module failure, place %1"},
+    {"lost_link", "PLC - positioner link lost"},
+    {"spindle_drive", "spindle drive not ready (%1)"},
+    {"spindle_overheat", "spindle motor overheat (%1)"},
+    {"pump_overload", "pump motor overload (%1)"},
+    {"chuck_pressure", "chuck clamping pressure lost"},
+    {"turret_jam", "turret jammed"},
+    {"gauge_fault", "in-process gauge fault"},
+    {"positioner_module.pulse_module_1", "positioner failure: pulse module CP34.23 at place 0"},
+    {"positioner_module.pulse_module_2", "positioner failure: pulse module CP34.23 at place 1"},
+    {"positioner_module.dac_module", "positioner failure: DAC module CM32.03"},
+    {"positioner_module.comm_module", "positioner failure: communication module CP52.05"},
+    {"positioner_module.panel_link", "positioner failure: link to the K923 panel"},
+    {"positioner_module.memory", "positioner failure: RAM/ROM test"},
+    {"k923.plc_link", "K923 panel: no link to the PLC"},
+    {"k923.positioner_link", "K923 panel: no link to the positioner"},
+    {"k923.ram", "K923 panel: RAM fault"},
+    {"k923.resident", "K923 panel: resident software corrupt"},
+    {"plc_stopped", "PLC in debug stop"},
+};
+} // namespace
+
+std::string describeFault(const FaultSpec& f) {
+    const FaultText t = faultText(f);
+    for (const FaultTemplate& tpl : kFaultTemplates) {
+        if (tpl.id != t.id)
+            continue;
+        std::string out;
+        for (std::size_t i = 0; i < tpl.text.size(); ++i) {
+            const char c = tpl.text[i];
+            if (c == '%' && i + 1 < tpl.text.size() && tpl.text[i + 1] >= '1' && tpl.text[i + 1] <= '9') {
+                const auto n = static_cast<std::size_t>(tpl.text[i + 1] - '1');
+                out += n < t.args.size() ? t.args[n] : std::string();
+                ++i;
+            } else {
+                out += c;
+            }
+        }
+        return out;
+    }
+    return t.id; // a part number outside the enum ("k923.?")
 }
 
 // ---------------------------------------------------------------------------

@@ -94,7 +94,25 @@ struct FaultSpec {
     std::string equipment; // spindle or pump name
     bool operator==(const FaultSpec&) const = default;
 };
-// English, e.g. "encoder channel 1 break (X)".
+// A fault as displays name it: a stable id and its arguments, which a
+// display translates (the desktop: app/studio/machine/fault_texts.cpp).
+//   encoder_channel_break {axis, channel}   drive_not_ready {axis}
+//   limit_switch {axis, "+"|"-"}            emergency_stop {}
+//   dac_limit {axis}                        plc_module_failure {place}
+//   lost_link {}                            spindle_drive {equipment}
+//   spindle_overheat {equipment}            pump_overload {equipment}
+//   chuck_pressure {}  turret_jam {}  gauge_fault {}  plc_stopped {}
+//   positioner_module.pulse_module_1 / .pulse_module_2 / .dac_module /
+//     .comm_module / .panel_link / .memory {}
+//   k923.plc_link / .positioner_link / .ram / .resident {}
+// (axis "X"/"Z", numbers in decimal, equipment by its description name).
+struct FaultText {
+    std::string id;
+    std::vector<std::string> args;
+};
+FaultText faultText(const FaultSpec& f);
+// English, e.g. "encoder channel 1 break (X)": the text of faultText for the
+// CLI and logs.
 std::string describeFault(const FaultSpec& f);
 
 // ---------------------------------------------------------------------------

@@ -293,6 +293,12 @@ void Plc::setLinkOk(bool ok) {
             words_.setWord(w, 0); // «Нет ответа от БП»
 }
 
+void Plc::imposeMode(int code) {
+    imposedMode_ = code >= 0 && code <= 7 ? code : -1;
+    modeImposedOnce_ = modeImposedOnce_ || imposedMode_ >= 0;
+    dirty_ = true;
+}
+
 void Plc::setStopped(bool stopped) {
     if (stopped == stopped_)
         return;
@@ -729,10 +735,10 @@ void Plc::segment0Out(std::int64_t nowMs) {
         sig_[zSignal(1000, 6)] = 1;
 
     // Mode code Z1000.8-10.
-    if (!modeRules_.empty()) {
-        int code = 0;
+    if (!modeRules_.empty() || modeImposedOnce_) {
+        int code = imposedMode_ >= 0 ? imposedMode_ : 0;
         for (const ModeRuleC& m : modeRules_)
-            if (m.when.eval(now, prev)) {
+            if (imposedMode_ < 0 && m.when.eval(now, prev)) {
                 code = m.code;
                 break;
             }

@@ -98,6 +98,11 @@ public:
     // until the PLC runs again, which then scans from the state it had.
     void setStopped(bool stopped);
     bool stopped() const { return stopped_; }
+    // A trainer's key switch: the PLC imposes mode `code` (1..7) on Z1000.8-10
+    // whatever the description's mode rules say; 0 lets the K923 choose,
+    // -1 gives the word back to the rules.
+    void imposeMode(int code);
+    int imposedMode() const { return imposedMode_; }
     bool linkOk() const { return linkOk_; }
 
     // --- views ----------------------------------------------------------------
@@ -224,6 +229,8 @@ private:
     std::vector<Message> alarms_, work_;
     std::vector<Slot> slots_;
     std::vector<ModeRuleC> modeRules_;
+    int imposedMode_ = -1;
+    bool modeImposedOnce_ = false; // the field is the PLC's from then on (0 when no rule holds)
     std::optional<Expr> overrideFromPlc_;
     std::array<std::uint32_t, 4> overrideBits_{};
 

@@ -4,6 +4,7 @@
 #include <climits>
 #include <string>
 
+#include "catalog/messages.h"
 #include "program/gfunctions.h"
 #include "program/text_util.h"
 #include "util/utf8.h"
@@ -881,8 +882,11 @@ void ProgramChecker::machine() {
                         offset.isZero() ? "" : ", в системе станка " + machinePos.toString() + " мм,";
                     const std::string inMachineEn =
                         offset.isZero() ? "" : ", " + machinePos.toString() + " mm in the machine system,";
-                    warning(Rule::SoftLimit, which == Axis::X ? 12 : 28, f, pos->span,
-                            "Программный конечный выключатель (" + as + "): " + as + v.toString() + dia +
+                    const int message = which == Axis::X ? 12 : 28;
+                    // The text of message 12/28 as `run` shows it (catalog, table М.1).
+                    const std::string name(catalog::positionerMessage(message).textRu);
+                    warning(Rule::SoftLimit, message, f, pos->span,
+                            name + ": " + as + v.toString() + dia +
                                 inMachine + " за ограничением " + bound + " мм",
                             "software limit (" + as + "): " + as + v.toString() + diaEn + inMachineEn +
                                 " is beyond " +

@@ -74,7 +74,9 @@ private slots:
         for (int n = 1; n <= 52; ++n) {
             const CParamDef& x = cParam(n);
             const CParamDef& z = cParam(n + 52);
-            QVERIFY2(x.name == z.name, x.key().c_str());
+            // The names as printed: C48 «S кончика БТ», C100 «S конечника БТ».
+            if (n != 48)
+                QVERIFY2(x.name == z.name, x.key().c_str());
             QVERIFY2(x.nameEn == z.nameEn, x.key().c_str());
             QVERIFY2(x.kind == z.kind && x.unit == z.unit, x.key().c_str());
             QVERIFY2(x.min == z.min && x.max == z.max, x.key().c_str());
@@ -159,15 +161,15 @@ private slots:
             {38, "S поиска 0-метки"},
             {42, "F УСК.АВТ."},
             {46, "-ОГРАНИЧЕН"},
-            {48, "S конечника БТ"},
+            {48, "S кончика БТ"}, // as printed in its row (C100: «конечника»)
             {78, "К(СКОР)"},
             {100, "S конечника БТ"},
             {105, "N М1"},
             {107, "N Б.ВХ. X1"},
             {122, "N Б.ВХ. Z8"},
             {123, "ESC=сброс в исх.сост"},
-            {124, "ESC=квитир.авар.БЦС"},
-            {125, "ESC=квитир.сист.БЦС"},
+            {124, "ESC =квитир.авар.БЦС"}, // as printed: exactly 20 characters
+            {125, "ESC =квитир.сист.БЦС"}, // printed with 21: the blank after «=» goes
             {139, "Корректор по L1"},
             {143, "N ручного цикла 1"},
             {150, "N ручного цикла 8"},
@@ -195,8 +197,10 @@ private slots:
                 QVERIFY2(utf8::isValid(text), key.c_str());
                 for (std::string_view bad :
                      {"<p>", "<b>", "</", "<math", "\\text", "_{", "^{", "  ", "кончик"})
-                    QVERIFY2(text.find(bad) == std::string_view::npos,
-                             (key + ": " + std::string(bad)).c_str());
+                    // C48 prints «кончик» in its name and description (the manual's letters).
+                    if (!(d.number == 48 && bad == "кончик"))
+                        QVERIFY2(text.find(bad) == std::string_view::npos,
+                                 (key + ": " + std::string(bad)).c_str());
                 const std::string mixed = mixedWord(text);
                 QVERIFY2(mixed.empty(), (key + ": mixed-script word " + mixed).c_str());
                 QVERIFY2(text.find("CP3") == std::string_view::npos,
@@ -300,6 +304,9 @@ private slots:
         QCOMPARE(findCParamByName("ESC =сброс в исх.сост", Axis::Common)->number, 123);
         QCOMPARE(findCParamByName("ОТМ=КВИТ.С.", Axis::Common)->number, 125);
         QCOMPARE(findCParamByName("S кончика БТ", Axis::Z)->number, 100);
+        QCOMPARE(findCParamByName("S кончика БТ", Axis::X)->number, 48);
+        QCOMPARE(findCParamByName("S конечника БТ", Axis::X)->number, 48);
+        QCOMPARE(findCParamByName("S конечника БТ", Axis::Z)->number, 100);
         QVERIFY(findCParamByName("НЕТ ТАКОГО", Axis::X) == nullptr);
         QVERIFY(findCParamByName("Резерв", Axis::X) == nullptr);
     }

@@ -37,21 +37,35 @@ private slots:
         QCOMPARE(positionerMessage(12).textRu, std::string_view("Программный конечный выключ.(X)"));
         QCOMPARE(positionerMessage(14).textRu, std::string_view("Отказ СР52.05 в БП"));
         QCOMPARE(positionerMessage(15).textRu, std::string_view("Разрушены С-параметры"));
-        QCOMPARE(positionerMessage(10).textRu, std::string_view("Конечник оси X в \"-\""));
+        // Quotes as table М.1 prints them: «» for 9..11, straight for 26/27.
+        QCOMPARE(positionerMessage(9).textRu, std::string_view("Аварийный «СТОП» от ПЛК"));
+        QCOMPARE(positionerMessage(10).textRu, std::string_view("Конечник оси X в «-»"));
+        QCOMPARE(positionerMessage(11).textRu, std::string_view("Конечник оси X в «+»"));
+        QCOMPARE(positionerMessage(26).textRu, std::string_view("Конечник оси Z в \"-\""));
+        // The blank after the number's dot where table М.1 prints one.
+        QCOMPARE(positionerMessage(37).panelText(), std::string("37. Ошибка N ДОС"));
+        QCOMPARE(positionerMessage(38).panelText(), std::string("38. Ошибка N ЦАП"));
+        QCOMPARE(positionerMessage(39).panelText(), std::string("39.Ошибка N маховика"));
+        QCOMPARE(positionerMessage(14).panelText(), std::string("14. Отказ СР52.05 в БП"));
+        QCOMPARE(positionerMessage(47).panelText(), std::string("47. G?"));
+        QCOMPARE(positionerMessage(54).panelText(), std::string("54.Дублирование номеров кадров"));
+        QCOMPARE(positionerMessage(64).panelText(), std::string("64. G04/L"));
         QCOMPARE(positionerMessage(41).textRu, std::string_view("Нет \"0\"-метки"));
         QCOMPARE(positionerMessage(46).textRu, std::string_view("Переполнение"));
         QCOMPARE(positionerMessage(47).textRu, std::string_view("G?"));
         QCOMPARE(positionerMessage(63).textRu, std::string_view("G04/X/Z"));
         QCOMPARE(positionerMessage(43).textRu, std::string_view("D круга > Dmax"));
         QCOMPARE(positionerMessage(33).commentRu, std::string_view("Ошибка в УП"));
-        // No OCR line-break hyphens, no leading blanks, no typographic quotes in panel texts.
+        // No OCR line-break hyphens, no leading blanks; typographic quotes
+        // only where table М.1 prints them (9, 10, 11).
         const std::regex brokenWord("[а-яА-Я]- [а-я]");
         for (const PositionerMessage& m : positionerMessages()) {
             const std::string t(m.textRu);
             QVERIFY2(!std::regex_search(t, brokenWord), t.c_str());
             QVERIFY2(t.front() != ' ', t.c_str());
-            QVERIFY2(t.find("«") == std::string::npos && t.find("»") == std::string::npos,
-                     t.c_str());
+            if (m.number < 9 || m.number > 11)
+                QVERIFY2(t.find("«") == std::string::npos && t.find("»") == std::string::npos,
+                         t.c_str());
         }
     }
 
@@ -67,11 +81,18 @@ private slots:
             QVERIFY(positionerMessage(z).axis == Axis::Z);
             QCOMPARE(messageForAxis(x, Axis::Z), z);
             QCOMPARE(messageForAxis(x, Axis::X), x);
-            // Same text with the axis letter changed.
+            // Same text with the axis letter changed (10/11 print «», 26/27 "").
             std::string xt(positionerMessage(x).textRu);
             for (auto& ch : xt)
                 if (ch == 'X')
                     ch = 'Z';
+            std::string plain; // « and » (two bytes each in UTF-8) as "
+            for (std::size_t i = 0; i < xt.size();) {
+                const bool quote = xt.compare(i, 2, "«") == 0 || xt.compare(i, 2, "»") == 0;
+                plain += quote ? '"' : xt[i];
+                i += quote ? 2 : 1;
+            }
+            xt = plain;
             QCOMPARE(xt, std::string(positionerMessage(z).textRu));
             paired.insert(x);
             paired.insert(z);

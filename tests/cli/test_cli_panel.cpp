@@ -120,6 +120,41 @@ private slots:
         QVERIFY2(!pulled.out.section('\n', 0, 0).contains("!"), qPrintable(pulled.out));
     }
 
+    // --machine FAULT:/CLEAR: — the K923's health faults of table М.1 and
+    // the PLC's debug stop, as a trainer scripts them; PLCMODE:N — the PLC
+    // imposes a mode (Z1000.8-10), the F keys are refused.
+    void healthFaultsAndImposedMode() {
+        const auto noPlc = runK528({"panel", "--machine", "--keys", "FAULT:PLC_LINK"});
+        QCOMPARE(noPlc.exitCode, 0);
+        QCOMPARE(noPlc.out.section('\n', 1, 1), QString("НЕТ СВЯЗИ С ПЛК").leftJustified(20));
+        const auto noBp = runK528({"panel", "--machine", "--keys", "FAULT:BP_LINK"});
+        QCOMPARE(noBp.out, lines({"НЕТ СВЯЗИ С БП", "", "", ""}));
+        const auto ram = runK528({"panel", "--machine", "--keys", "fault:ram F2"});
+        QCOMPARE(ram.out, lines({"НЕИСПРАВНО ОЗУ", "", "", ""}));
+        const auto resident = runK528({"panel", "--machine", "--keys", "FAULT:RESIDENT"});
+        QCOMPARE(resident.out, lines({"НАРУШЕН РЕЗИДЕНТ", "", "", ""}));
+        const auto stop = runK528({"panel", "--machine", "--keys", "FAULT:PLC_STOP WAIT:0.5"});
+        QCOMPARE(stop.out.section('\n', 1, 1), QString("Режим ПЛК СТОП !").leftJustified(20));
+        // Mended: the message goes.
+        const auto mended = runK528(
+            {"panel", "--machine", "--keys", "FAULT:PLC_LINK WAIT:0.5 CLEAR:PLC_LINK WAIT:0.5"});
+        QVERIFY2(!mended.out.contains("НЕТ СВЯЗИ"), qPrintable(mended.out));
+
+        const auto imposed = runK528({"panel", "--machine", "--keys", "PLCMODE:1 WAIT:0.1 F2"});
+        QCOMPARE(imposed.exitCode, 0);
+        QVERIFY2(imposed.out.startsWith("АВТ"), qPrintable(imposed.out));
+        QCOMPARE(imposed.out.section('\n', 1, 1), QString("РЕЖИМ ЗАДАН ПЛК").leftJustified(20));
+        const auto released =
+            runK528({"panel", "--machine", "--keys", "PLCMODE:1 WAIT:0.1 PLCMODE:0 F2"});
+        QVERIFY2(released.out.startsWith("РУЧ"), qPrintable(released.out));
+        // F5 imposed: the password is asked at once.
+        const auto data = runK528({"panel", "--machine", "--keys", "PLCMODE:5 WAIT:0.1"});
+        QVERIFY2(data.out.startsWith("ПАРОЛЬ?"), qPrintable(data.out));
+        // The ideal machine's PLC imposes a mode too.
+        const auto ideal = runK528({"panel", "--keys", "PLCMODE:1 F2"});
+        QVERIFY2(ideal.out.startsWith("АВТ"), qPrintable(ideal.out));
+    }
+
     void errors_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");
@@ -142,6 +177,12 @@ private slots:
             << QStringList{"panel", "--machine", "--keys", "HOLD:X+"} << "HOLD:BUTTON:S";
         QTest::newRow("pull a button")
             << QStringList{"panel", "--machine", "--keys", "PULL:START"} << "PULL:ESTOP";
+        QTest::newRow("fault without --machine")
+            << QStringList{"panel", "--keys", "FAULT:RAM"} << "give --machine";
+        QTest::newRow("unknown fault")
+            << QStringList{"panel", "--machine", "--keys", "FAULT:FOO"} << "faults: PLC_LINK";
+        QTest::newRow("bad mode")
+            << QStringList{"panel", "--machine", "--keys", "PLCMODE:8"} << "PLCMODE:0 lets go";
     }
     void errors() {
         QFETCH(QStringList, args);

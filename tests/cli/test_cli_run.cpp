@@ -5,6 +5,7 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+#include <tuple>
 
 using namespace k528;
 
@@ -91,6 +92,23 @@ private slots:
         QCOMPARE(w.find("alarms")->asArray().at(0).find("number")->asInt(), 42);
         QVERIFY(w.find("alarms")->asArray().at(0).find("line")->isNull());
         QCOMPARE(w.find("home_time_s")->asDouble(), 0.0);
+    }
+    // The wheel outside R205..R206: the positioner blocks the program with
+    // 44 «D круга < Dmin» / 43 «D круга > Dmax» (appendix М), never a
+    // silent timeout after 0 frames.
+    void wheelDiameterBlocksTheProgram() {
+        for (const auto& [r207, number, text] :
+             {std::tuple{"207=13000", 44, "D круга < Dmin"}, std::tuple{"207=21000", 43, "D круга > Dmax"}}) {
+            const auto r = runK528({"run", "--json", "--profile", "grinder-205", "--r", r207,
+                                    samples() + "grinder-bore-205.k528"});
+            QCOMPARE(r.exitCode, 1);
+            const json::Value v = parseJson(r);
+            QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("alarm"));
+            QCOMPARE(v.find("frames")->asInt(), 0);
+            const json::Value& a = v.find("alarms")->asArray().at(0);
+            QCOMPARE(a.find("number")->asInt(), number);
+            QCOMPARE(QString::fromStdString(a.find("text_ru")->asString()), QString::fromUtf8(text));
+        }
     }
     void timeout() {
         Files f;

@@ -4,6 +4,8 @@
 #include "engine/interface_words.h"
 #include "machine_rig.h"
 
+#include <set>
+
 using namespace mrig;
 using k528::machine::PositionerPart;
 using k528::machine::K923Part;
@@ -345,6 +347,45 @@ private slots:
         r->advance(5000);
         r->push(Button::Reset);
         QVERIFY2(!r->plcAlarm(alarm), r->alarmList().c_str());
+    }
+
+    // A fault is named by a stable id and its arguments (the desktop
+    // translates them); the CLI's English is built from the same id.
+    void faultIdsAndArguments() {
+        using machine::faultText;
+        const auto same = [](const machine::FaultText& t, const std::string& id,
+                             const std::vector<std::string>& args) {
+            return t.id == id && t.args == args;
+        };
+        QVERIFY(same(faultText({Fault::EncoderChannelBreak, Z, 2}), "encoder_channel_break", {"Z", "2"}));
+        QVERIFY(same(faultText({Fault::LimitSwitch, X, -1}), "limit_switch", {"X", "-"}));
+        QVERIFY(same(faultText({Fault::PumpOverload, X, 0, "coolant"}), "pump_overload", {"coolant"}));
+        QVERIFY(same(faultText({Fault::PlcModuleFailure, X, 3}), "plc_module_failure", {"3"}));
+        QVERIFY(same(faultText({Fault::K923, X, 1}), "k923.plc_link", {}));
+        QVERIFY(same(faultText({Fault::PositionerModule, X, 3}), "positioner_module.dac_module", {}));
+        QVERIFY(same(faultText({Fault::PlcStopped}), "plc_stopped", {}));
+        QCOMPARE(machine::describeFault({Fault::EncoderChannelBreak, X, 1}),
+                 std::string("encoder channel 1 break (X)"));
+        QCOMPARE(machine::describeFault({Fault::LimitSwitch, Z, 1}), std::string("limit switch + hit (Z)"));
+        QCOMPARE(machine::describeFault({Fault::SpindleOverheat, X, 0, "spindle"}),
+                 std::string("spindle motor overheat (spindle)"));
+        QCOMPARE(machine::describeFault({Fault::K923, X, 4}),
+                 std::string("K923 panel: resident software corrupt"));
+        // Every fault of both machines: an id of its own, a text without a
+        // placeholder left.
+        for (const char* name : {"training-lathe", "grinder-205"}) {
+            machine::Simulation sim(name);
+            std::set<std::string> ids;
+            for (const FaultSpec& f : sim.availableFaults()) {
+                const machine::FaultText t = faultText(f);
+                std::string key = t.id;
+                for (const std::string& a : t.args)
+                    key += "|" + a;
+                QVERIFY2(ids.insert(key).second, key.c_str());
+                const std::string text = machine::describeFault(f);
+                QVERIFY2(text.find('%') == std::string::npos && text != t.id, text.c_str());
+            }
+        }
     }
 
     // Every fault the machine offers can be injected and cleared; a fault that

@@ -172,8 +172,9 @@ private slots:
     }
 
     // The wheel below R205: «Необходима смена круга» Z2000.15, the work
-    // message, the red LED; a program start is refused (44); after a
-    // wheel change R207 = R204 and programs run again.
+    // message, the red LED; «Пуск» reaches the positioner, which blocks the
+    // program with message 44 «D круга < Dmin» (appendix М); after a wheel
+    // change and the acknowledgement, R207 = R204 and programs run again.
     void wheelChange() {
         Rig r("grinder-205", [](profile::MachineProfile& p) { p.r[207] = 13990; });
         QVERIFY(r.drivesOn());
@@ -183,11 +184,16 @@ private slots:
         QVERIFY(r.bit(z::WheelBelowMin));
         QVERIFY(r.work(5));
         QVERIFY((r.c().words().word(z::RedLedsWord) >> z::keyBit(3)) & 1u);
-        // Start inhibited by the PLC, and the positioner would refuse it (44).
-        QVERIFY(!r.bit(z::StartEnable));
+        // The PLC lets «Пуск» through; the positioner refuses the program (44).
+        QVERIFY(r.bit(z::StartEnable));
+        QVERIFY(!r.start(1)); // false: it ended in an alarm
+        QCOMPARE(r.c().state(), ProgramState::Alarm);
+        QVERIFY2(r.hasAlarm(44), r.alarmList().c_str());
+        QCOMPARE(r.c().framesExecuted(), std::int64_t(0));
         QVERIFY(std::fabs(r.sim->view().wheelMm - 13.99) < 1e-9);
         QVERIFY(r.sim->changeWheel());
-        r.advance(20);
+        r.push(Button::Reset); // acknowledges 44
+        QVERIFY2(!r.hasAlarm(44), r.alarmList().c_str());
         QCOMPARE(r.c().r(engine::r::WheelCurrent), 20000);
         QVERIFY(!r.bit(z::WheelChange));
         QVERIFY(r.bit(z::StartEnable));

@@ -213,6 +213,51 @@ private slots:
         QVERIFY(std::find(g.mFunctions.begin(), g.mFunctions.end(), 60) != g.mFunctions.end());
     }
 
+    // A run that never starts says why: the wheel below R205 Dmin ends with
+    // message 44 (as above R206 Dmax with 43), never a silent timeout; a
+    // «Пуск» the PLC holds back ends "blocked" with the PLC's message and the
+    // missing Z1000.2.
+    void aRunThatDoesNotStartSaysWhy() {
+        const auto text = resources::find("samples/grinder-bore-205.k528");
+        const auto bore = program::parse(std::string(*text));
+        const profile::MachineProfile grinder = profile::builtin("grinder-205");
+        engine::RunOptions small;
+        small.rPresets[207] = 13000;
+        const engine::RunResult a = machine::runProgram(grinder, bore.store, 5, small);
+        QCOMPARE(a.status, engine::RunStatus::Alarm);
+        QCOMPARE(a.frames, std::int64_t(0));
+        QVERIFY(!a.alarms.empty());
+        QCOMPARE(a.alarms.front().number, 44);
+        QCOMPARE(a.alarms.front().textRu, std::string("D круга < Dmin"));
+        engine::RunOptions large;
+        large.rPresets[207] = 21000;
+        const engine::RunResult b = machine::runProgram(grinder, bore.store, 5, large);
+        QCOMPARE(b.status, engine::RunStatus::Alarm);
+        QCOMPARE(b.alarms.front().number, 43);
+
+        // The wheel guard open: the PLC withholds «Деблокировка пуска» (A07).
+        machine::Simulation sim(grinder);
+        QVERIFY(sim.openDoor());
+        machine::SimulationRunMachine m(sim);
+        engine::RunOptions noHome;
+        noHome.home = false;
+        const engine::RunResult c = engine::runProgram(m, bore.store, 5, noHome);
+        QCOMPARE(c.status, engine::RunStatus::Blocked);
+        QCOMPARE(engine::runStatusName(c.status), std::string_view("blocked"));
+        QVERIFY(c.alarms.empty());
+        QVERIFY(c.timeS < 5);
+        std::vector<std::string> why;
+        for (const engine::RunBlocker& w : c.blockedBy)
+            why.push_back(w.source + " " + engine::describeBlocker(w, true));
+        const auto has = [&](const std::string& line) {
+            return std::find(why.begin(), why.end(), line) != why.end();
+        };
+        QVERIFY2(has("start_enable Z1000.2 «Деблокировка пуска программы» = 0"), why.front().c_str());
+        const std::string guard = grinder.plcTexts(catalog::PlcGroup::Alarm).at(7);
+        QVERIFY2(has("plc_alarm A07 " + guard), why.front().c_str());
+        QCOMPARE(c.blockedBy.back().source, std::string("start"));
+    }
+
     // A profile with another name runs on the generic machine, or on the
     // description its simulation key names.
     void descriptionLookup() {

@@ -45,10 +45,12 @@ private slots:
             QCOMPARE(r.p->access(), panel::Access::ViewOnly);
         }
         {
-            Rig r; // a fifth digit is not dropped: «11111» is not «1111»
-            r.keys("F6 1 1 1 1 1 ENTER");
-            QVERIFY(r.p->passwordShown());
-            QVERIFY(r.p->passwordScreen().closed());
+            Rig r; // the password has four digits: a fifth is not taken
+            r.keys("F6 1 1 1 1 1");
+            QCOMPARE(r.p->passwordScreen().typed(), std::string("1111"));
+            r.keys("ENTER");
+            QVERIFY(!r.p->passwordShown());
+            QCOMPARE(r.c().mode(), Mode::ProgramEdit);
         }
         for (const char* f : {"F6", "F7"}) {
             Rig r;
@@ -317,6 +319,29 @@ private slots:
         QCOMPARE(r.line(0), QString("РУЧ            100%*"));
     }
 
+    // ПРЕДУСТАНОВКИ as 2.6.5 prints them: the «MX:» hint shows the machine
+    // coordinate («MX: -123.456»), R167 ДОПУСК two decimals («R167 = 1.00»).
+    void presetsHintAndTolerance() {
+        Rig r;
+        r.keys("F2");
+        r.m->setJog(engine::AxisId::X, -1);
+        r.m->advance(500);
+        r.m->setJog(engine::AxisId::X, 0);
+        r.m->advance(500);
+        const engine::AxisView x = r.c().axisView(engine::AxisId::X);
+        QVERIFY(x.machineDisc < -100);
+        r.keys("F4 2");
+        const QString hint = r.line(1).trimmed();
+        QVERIFY2(hint.startsWith("MX: -"), qPrintable(hint));
+        QCOMPARE(std::llround(hint.mid(4).toDouble() * 1000.0), static_cast<long long>(x.machineDisc));
+        r.keys("DOWN");
+        QCOMPARE(r.line(1).trimmed(), QString("MZ: 0.000"));
+        r.c().setR(167, 1000);
+        r.keys("F4 MODE 9 SHIFT+DOWN");
+        QVERIFY2(r.lines().join("|").contains("R167=1.00|") || r.lines().join("|").endsWith("R167=1.00"),
+                 qPrintable(r.lines().join("|")));
+    }
+
     void faults() {
         Rig r;
         r.m->setEmergencyStop(true);
@@ -325,7 +350,7 @@ private slots:
         QCOMPARE(r.line(0), QString("РУЧ            100%!"));
         r.keys("HELP 2");
         // 9 first (the positioner's, in the order they came), then the PLC's.
-        QCOMPARE(r.lines(), expect({"НЕИСПРАВНОСТИ    1/2", "9.Аварийный \"СТОП\"", "от ПЛК", ""}));
+        QCOMPARE(r.lines(), expect({"НЕИСПРАВНОСТИ    1/2", "9.Аварийный «СТОП»", "от ПЛК", ""}));
         r.keys("DOWN");
         QCOMPARE(r.lines(), expect({"НЕИСПРАВНОСТИ    2/2", "Перегрев двигателя", "шпинделя", ""}));
         // Gone but not acknowledged: still listed.
@@ -347,7 +372,7 @@ private slots:
         QCOMPARE(r.line(0), QString("РУЧ            100%?")); // «?» before «*»
         r.keys("HELP 3");
         QCOMPARE(r.lines(),
-                 expect({"СИСТЕМА          1/2", "55.Отказ модулей", "ввода/вывода в ПЛК", ""}));
+                 expect({"СИСТЕМА          1/2", "55. Отказ модулей", "ввода/вывода в ПЛК", ""}));
         r.keys("DOWN");
         QCOMPARE(r.lines(), expect({"СИСТЕМА          2/2", "Отказ модуля ПЛК,", "место 0", ""}));
         r.m->setPlcAlarm(12, true);

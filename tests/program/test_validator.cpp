@@ -1,3 +1,5 @@
+#include "catalog/messages.h"
+
 #include <QtTest>
 
 #include <algorithm>
@@ -225,6 +227,11 @@ private slots:
         for (const Diagnostic* d : hits) {
             QCOMPARE(d->manualNumber, manual);
             QCOMPARE(d->severity, severity);
+            // One text per message: `check` opens with the text `run` shows
+            // (the catalog's, table М.1).
+            if (manual > 0)
+                QVERIFY2(d->messageRu.rfind(std::string(k528::catalog::positionerMessage(manual).textRu), 0) == 0,
+                         d->messageRu.c_str());
             QVERIFY(d->column >= 1 && d->endColumn > d->column);
             QVERIFY(!d->messageRu.empty() && !d->messageEn.empty());
         }

@@ -17,9 +17,9 @@ namespace k528::panel {
 
 class PasswordScreen : public Screen {
 public:
-    // Digits the line takes: more than the password's four, so that a
-    // mistyped fifth digit makes the password wrong rather than vanish.
-    static constexpr int kMaxTyped = 8;
+    // Digits the line takes: the password's four («ввести четырехзначный
+    // пароль»); a fifth digit is not taken (DEL takes one back).
+    static constexpr int kMaxTyped = 4;
     // Asks for the password of mode `target`; `imposed`: the PLC has already
     // put the engine in that mode (ESC cannot go back).
     void start(engine::Mode target, bool imposed);

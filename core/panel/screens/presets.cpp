@@ -67,7 +67,8 @@ const std::array<Group, PresetScreens::kGroups>& groups() {
           {"ДОП.СКОРОСТИ", 'Z', AxisId::Z, {{179, F::FeedZ}, {180, F::FeedZ}, {181, F::FeedZ}, {182, F::FeedZ}}}}},
         {"ОСЕВАЯ", true,
          {{"ОСЕВ.ОРИЕНТАЦИЯ", 0, AxisId::Z,
-           {{164, F::DiscZ}, {165, F::Integer}, {166, F::DiscZ}, {167, F::DiscZ}, {168, F::FeedZ},
+           // R167 ДОПУСК is printed «R167 = 1.00»: two decimals.
+           {{164, F::DiscZ}, {165, F::Integer}, {166, F::DiscZ}, {167, F::HundredthsZ}, {168, F::FeedZ},
             {169, F::FeedZ}, {170, F::DiscX}, {171, F::DiscZ}}}}},
     }};
     return g;
@@ -81,10 +82,21 @@ const Group& groupDef(int g) {
 // The explanatory line of a parameter (2.6.5 «Поясняющий текст», the
 // catalog's panel hint). «ЗАДЕРЖКА РЕВЕРСА, СЕК» is printed with 21
 // characters: the blank after the comma goes so that it fits the line.
-std::string hintOf(const Item& it) {
+// «MX: координата X» (R220, R200, R184 …) shows the machine coordinate of
+// the axis there, as the manual's example «MX: -123.456» does: «это значение
+// координаты в системе станка с учетом программирования на радиус/диаметр».
+std::string hintOf(const Item& it, const engine::Controller& c) {
     if (it.r == kCurrent)
         return "ТЕКУЩАЯ КООРДИНАТА";
     std::string h(catalog::rParam(it.r).panelHint);
+    for (const AxisId a : {AxisId::X, AxisId::Z}) {
+        const std::string placeholder = a == AxisId::X ? ": координата X" : ": координата Z";
+        if (const auto p = h.find(placeholder); p != std::string::npos) {
+            const engine::AxisView v = c.axisView(a);
+            h = h.substr(0, p) + ": " + formatCoordinate(v.machineDisc, v.scale);
+            break;
+        }
+    }
     if (textWidth(h) > kLcdColumns)
         if (const auto p = h.find(", "); p != std::string::npos)
             h.erase(p + 1, 1);
@@ -96,7 +108,8 @@ units::AxisScale scaleOf(const engine::Controller& c, AxisId a) {
 }
 
 AxisId formatAxis(RFormat f) {
-    return f == RFormat::DiscZ || f == RFormat::FeedZ ? AxisId::Z : AxisId::X;
+    return f == RFormat::DiscZ || f == RFormat::FeedZ || f == RFormat::HundredthsZ ? AxisId::Z
+                                                                                     : AxisId::X;
 }
 
 constexpr int kMenuRows = 3;
@@ -115,6 +128,7 @@ int rFormatDecimals(RFormat f, const engine::Controller& c) {
         return scaleOf(c, formatAxis(f)).decimals();
     case RFormat::FeedX:
     case RFormat::FeedZ:
+    case RFormat::HundredthsZ:
         return 2;
     case RFormat::Seconds:
         return 3;
@@ -131,6 +145,7 @@ std::string formatR(std::int64_t value, RFormat f, const engine::Controller& c) 
         return formatCoordinate(value, scaleOf(c, formatAxis(f)));
     case RFormat::FeedX:
     case RFormat::FeedZ:
+    case RFormat::HundredthsZ: // discretes as mm with 2 decimals, as a feed's mm/min
         return formatFeed(value, scaleOf(c, formatAxis(f)));
     case RFormat::Seconds:
         return formatSeconds(value);
@@ -142,8 +157,8 @@ std::optional<std::int64_t> parseR(std::string_view typed, RFormat f, const engi
     const auto v = evaluateEntry(typed, rFormatDecimals(f, c));
     if (!v)
         return std::nullopt;
-    if (f == RFormat::FeedX || f == RFormat::FeedZ) {
-        // Hundredths of mm/min -> discretes per minute (100, 1000 or 10000 per mm: exact).
+    if (f == RFormat::FeedX || f == RFormat::FeedZ || f == RFormat::HundredthsZ) {
+        // Hundredths of mm (/min) -> discretes (per minute): 100, 1000 or 10000 per mm, exact.
         const std::int64_t perMm = scaleOf(c, formatAxis(f)).discretesPerMm();
         return *v * (perMm / 100);
     }
@@ -202,7 +217,7 @@ void PresetScreens::renderGroup(Canvas& c, const Context& ctx) const {
     const int first = g.hint ? 2 : 1;
     const int rows = 4 - first;
     if (g.hint)
-        c.put(1, 1, hintOf(marked));
+        c.put(1, 1, hintOf(marked, e));
     for (int row = 0; row < rows; ++row) {
         const int i = top_ + row;
         if (i >= count)

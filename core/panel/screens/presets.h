@@ -31,6 +31,7 @@ enum class RFormat {
     FeedX, // discretes of X per minute as mm/min with 2 decimals: «100.00»
     FeedZ,
     Seconds, // milliseconds as seconds with 3 decimals: «1.000»
+    HundredthsZ, // display discretes of Z as mm with 2 decimals: «1.00» (R167 ДОПУСК)
 };
 
 // Digits after the point for the format on this machine.
