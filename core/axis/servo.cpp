@@ -163,9 +163,9 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
         stallTimerMs_ = 0;
         return;
     }
-    const double countsInWindow =
-        std::fabs(traj_.velocity()) * static_cast<double>(k_.encoderCheckMs) / ipc_;
-    const bool moveDemanded = traj_.velocity() != 0.0 && countsInWindow >= 4.0;
+    const bool moveDemanded =
+        traj_.velocity() != 0.0 &&
+        std::fabs(traj_.velocity()) * static_cast<double>(k_.encoderCheckMs) / ipc_ >= 4.0;
     const bool restDemanded = k_.encoderCheckAtRest && traj_.velocity() == 0.0 &&
                               std::fabs(followingError()) > static_cast<double>(k_.clampToleranceInternal);
     if ((moveDemanded || restDemanded) && pulses_ == 0) {

@@ -582,7 +582,11 @@ void Controller::axisTick(AxisUnit& u) {
 
     // Feed override; «Стоп» holds the feed of program motion.
     const bool hold = c_.stopHold && programMotion(u.owner);
-    u.overrideFactor = programMotion(u.owner) && u.noOverride ? 1.0 : c_.overridePercent / 100.0;
+    if (c_.overridePercent != overrideFactorPercent_) {
+        overrideFactorPercent_ = c_.overridePercent;
+        overrideFactor_ = c_.overridePercent / 100.0;
+    }
+    u.overrideFactor = programMotion(u.owner) && u.noOverride ? 1.0 : overrideFactor_;
     u.servo.setOverride(u.overrideFactor);
 
     axis::ServoInputs in;
