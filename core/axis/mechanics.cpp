@@ -10,7 +10,7 @@ constexpr double kDacCodesPerVolt = 204.8; // 12-bit ±10 V: code 2048 = 10 V
 constexpr double kMaxVolts = 10.0;
 } // namespace
 
-Mechanics::Mechanics(const MechanicsSettings& s) : s_(s) {
+Mechanics::Mechanics(const MechanicsSettings& s) : s_(s), perCountMm_(s.mmPerCount()) {
     motorMm_ = slideMm_ = s.startSlideMm;
     updateEncoder(motorMm_);
     markCrossed_ = false;
@@ -92,11 +92,17 @@ void Mechanics::updateEncoder(double previousMotorMm) {
     markCrossed_ = false;
     if (previousMotorMm == motorMm_ && countFresh_)
         return; // the motor stood still: same count, no mark
-    const double perCount = s_.mmPerCount();
-    // Zero marks at motor positions phase + k·lead.
+    const double perCount = perCountMm_;
+    // Zero marks at motor positions phase + k·lead (k of the previous
+    // position as the last call computed it).
     const double lead = s_.screwLeadMm;
-    const double k0 = std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
+    const double k0 = markRevFresh_ && previousMotorMm == markRevMotorMm_
+                          ? markRev_
+                          : std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
     const double k1 = std::floor((motorMm_ - s_.zeroMarkPhaseMm) / lead);
+    markRevMotorMm_ = motorMm_;
+    markRev_ = k1;
+    markRevFresh_ = true;
     if (k0 != k1 && !encoderFrozen_ && !channel1Broken_ && !channel2Broken_) {
         const double markMm = s_.zeroMarkPhaseMm + std::max(k0, k1) * lead;
         std::int64_t c = static_cast<std::int64_t>(std::llround(markMm / perCount));

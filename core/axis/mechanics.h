@@ -99,6 +99,9 @@ private:
     // The last tick left the motor at rest and nothing changed since: a
     // tick with no drive speed asked changes nothing.
     bool settled_ = false;
+    double perCountMm_ = 0;                  // s_.mmPerCount()
+    double markRevMotorMm_ = 0, markRev_ = 0; // revolution index (zero marks) of a motor position
+    bool markRevFresh_ = false;
     bool countFresh_ = false;         // count_ matches motorMm_ (skip the work while it stands)
 };
 
