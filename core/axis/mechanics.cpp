@@ -10,10 +10,16 @@ constexpr double kDacCodesPerVolt = 204.8; // 12-bit ±10 V: code 2048 = 10 V
 constexpr double kMaxVolts = 10.0;
 } // namespace
 
-Mechanics::Mechanics(const MechanicsSettings& s) : s_(s) {
+Mechanics::Mechanics(const MechanicsSettings& s) : s_(s), perCountMm_(s.mmPerCount()) {
     motorMm_ = slideMm_ = s.startSlideMm;
     updateEncoder(motorMm_);
     markCrossed_ = false;
+    refreshTarget();
+}
+
+void Mechanics::refreshTarget() {
+    targetSpeed_ = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
+    targetFresh_ = true;
 }
 
 double Mechanics::driveVolts() const {
@@ -24,6 +30,7 @@ double Mechanics::driveVolts() const {
 }
 
 void Mechanics::setChannelBroken(int channel, bool broken) {
+    settled_ = false;
     if (channel == 1)
         channel1Broken_ = broken;
     else
@@ -32,6 +39,7 @@ void Mechanics::setChannelBroken(int channel, bool broken) {
 
 void Mechanics::pushSlide(double deltaMm) {
     const double before = motorMm_;
+    settled_ = false;
     slideMm_ += deltaMm;
     motorMm_ += deltaMm; // a free screw turns with the slide
     updateEncoder(before);
@@ -40,14 +48,21 @@ void Mechanics::pushSlide(double deltaMm) {
 void Mechanics::tick(double dt) {
     if (dt != alphaDt_) {
         alpha_ = s_.timeConstantMs > 0 ? 1.0 - std::exp(-dt / s_.timeConstantMs) : 1.0;
+        brakeStep_ = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
+        accelStep_ = s_.maxAccelMmPerS2 * 1e-6 * dt;
         alphaDt_ = dt;
     }
+    // At rest with nothing to move it (no drive speed asked, nothing
+    // changed by hand): the same state, the same count, no mark.
+    if (settled_ && countFresh_ && (!driveEnabled_ || targetSpeed_ == 0.0)) {
+        markCrossed_ = false;
+        return;
+    }
     // Target motor speed in mm/ms of slide travel.
-    double target = 0;
-    double accelLimit = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
+    double accelLimit = brakeStep_;
     if (driveEnabled_) {
-        target = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
-        accelLimit = s_.maxAccelMmPerS2 * 1e-6 * dt;
+        const double target = targetSpeed_;
+        accelLimit = accelStep_;
         const double change = std::clamp((target - motorSpeed_) * alpha_, -accelLimit, accelLimit);
         motorSpeed_ += change;
     } else {
@@ -70,17 +85,24 @@ void Mechanics::tick(double dt) {
     else if (slideMm_ - motorMm_ > half)
         slideMm_ = motorMm_ + half;
     updateEncoder(before);
+    settled_ = motorSpeed_ == 0.0;
 }
 
 void Mechanics::updateEncoder(double previousMotorMm) {
     markCrossed_ = false;
     if (previousMotorMm == motorMm_ && countFresh_)
         return; // the motor stood still: same count, no mark
-    const double perCount = s_.mmPerCount();
-    // Zero marks at motor positions phase + k·lead.
+    const double perCount = perCountMm_;
+    // Zero marks at motor positions phase + k·lead (k of the previous
+    // position as the last call computed it).
     const double lead = s_.screwLeadMm;
-    const double k0 = std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
+    const double k0 = markRevFresh_ && previousMotorMm == markRevMotorMm_
+                          ? markRev_
+                          : std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
     const double k1 = std::floor((motorMm_ - s_.zeroMarkPhaseMm) / lead);
+    markRevMotorMm_ = motorMm_;
+    markRev_ = k1;
+    markRevFresh_ = true;
     if (k0 != k1 && !encoderFrozen_ && !channel1Broken_ && !channel2Broken_) {
         const double markMm = s_.zeroMarkPhaseMm + std::max(k0, k1) * lead;
         std::int64_t c = static_cast<std::int64_t>(std::llround(markMm / perCount));

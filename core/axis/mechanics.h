@@ -36,8 +36,16 @@ public:
     explicit Mechanics(const MechanicsSettings& s = {});
 
     // Inputs from the positioner, held until changed.
-    void setDacCode(int code) { dacCode_ = code; }
-    void setDriveEnabled(bool on) { driveEnabled_ = on; }
+    void setDacCode(int code) {
+        if (code != dacCode_ || !targetFresh_) {
+            dacCode_ = code;
+            refreshTarget();
+        }
+    }
+    void setDriveEnabled(bool on) {
+        settled_ = settled_ && on == driveEnabled_;
+        driveEnabled_ = on;
+    }
 
     // Advances the plant by dtMs.
     void tick(double dtMs);
@@ -57,13 +65,21 @@ public:
 
     // Faults for training (machine side).
     void setChannelBroken(int channel, bool broken);
-    void setEncoderFrozen(bool frozen) { encoderFrozen_ = frozen; } // reads a constant value
-    void setJammed(bool jammed) { jammed_ = jammed; }               // the slide cannot move
+    void setEncoderFrozen(bool frozen) { // reads a constant value
+        encoderFrozen_ = frozen;
+        settled_ = false;
+    }
+    void setJammed(bool jammed) { // the slide cannot move
+        jammed_ = jammed;
+        settled_ = false;
+    }
     // Moves the slide by hand / external force while the drive is off.
     void pushSlide(double deltaMm);
 
 private:
     void updateEncoder(double previousMotorMm);
+    void refreshTarget(); // targetSpeed_ from the DAC code
+
 
     MechanicsSettings s_;
     int dacCode_ = 0;
@@ -77,6 +93,15 @@ private:
     bool encoderFrozen_ = false;
     bool jammed_ = false;
     double alpha_ = 0, alphaDt_ = -1; // lag factor cached per tick length
+    double brakeStep_ = 0, accelStep_ = 0; // speed change limits per tick (of alphaDt_)
+    double targetSpeed_ = 0;          // mm/ms of slide travel the DAC code asks for
+    bool targetFresh_ = false;        // targetSpeed_ matches dacCode_
+    // The last tick left the motor at rest and nothing changed since: a
+    // tick with no drive speed asked changes nothing.
+    bool settled_ = false;
+    double perCountMm_ = 0;                  // s_.mmPerCount()
+    double markRevMotorMm_ = 0, markRev_ = 0; // revolution index (zero marks) of a motor position
+    bool markRevFresh_ = false;
     bool countFresh_ = false;         // count_ matches motorMm_ (skip the work while it stands)
 };
 

@@ -35,6 +35,7 @@ int faultMessage(Fault f, AxisId axis) {
 Servo::Servo(AxisId id, const Constants& k) : id_(id) { setConstants(k); }
 
 void Servo::setConstants(const Constants& k) {
+    steady_ = false;
     // Keep the machine-system position across a change of L/N.
     const double before = actual_;
     k_ = k;
@@ -59,6 +60,7 @@ double Servo::accelFor(bool accel2) const {
 }
 
 bool Servo::moveTo(double target, double speed) {
+    steady_ = false;
     if (fault_ != Fault::None)
         return false;
     if (!regulatorOn_) {
@@ -74,6 +76,7 @@ bool Servo::moveTo(double target, double speed) {
 }
 
 bool Servo::jog(int dir, double speed, const double* limit) {
+    steady_ = false;
     if (dir == 0) {
         if (jogDir_ != 0)
             stop();
@@ -98,6 +101,7 @@ bool Servo::jog(int dir, double speed, const double* limit) {
 }
 
 bool Servo::nudge(double delta, double speed) {
+    steady_ = false;
     if (fault_ != Fault::None || !loopClosed_)
         return false;
     jogDir_ = 0;
@@ -107,11 +111,13 @@ bool Servo::nudge(double delta, double speed) {
 }
 
 void Servo::stop(bool emergency) {
+    steady_ = false;
     jogDir_ = 0;
     traj_.stop(accelFor(emergency || accel2Input_));
 }
 
 void Servo::setActualValue(double value) {
+    steady_ = false;
     const double shift = value - actual_;
     offset_ += shift;
     actual_ += shift;
@@ -127,6 +133,7 @@ double Servo::countToInternal(std::int64_t rawCount) const {
 }
 
 void Servo::resetFault() {
+    steady_ = false;
     if (fault_ == Fault::RatioError && !k_.ratioValid())
         return; // stays until the constants are corrected
     fault_ = Fault::None;
@@ -137,6 +144,7 @@ void Servo::resetFault() {
 }
 
 void Servo::raise(Fault f) {
+    steady_ = false;
     if (fault_ == Fault::None)
         fault_ = f;
 }
@@ -163,9 +171,9 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
         stallTimerMs_ = 0;
         return;
     }
-    const double countsInWindow =
-        std::fabs(traj_.velocity()) * static_cast<double>(k_.encoderCheckMs) / ipc_;
-    const bool moveDemanded = traj_.velocity() != 0.0 && countsInWindow >= 4.0;
+    const bool moveDemanded =
+        traj_.velocity() != 0.0 &&
+        std::fabs(traj_.velocity()) * static_cast<double>(k_.encoderCheckMs) / ipc_ >= 4.0;
     const bool restDemanded = k_.encoderCheckAtRest && traj_.velocity() == 0.0 &&
                               std::fabs(followingError()) > static_cast<double>(k_.clampToleranceInternal);
     if ((moveDemanded || restDemanded) && pulses_ == 0) {
@@ -177,7 +185,23 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
     }
 }
 
+bool Servo::settled(double e) const {
+    return loopClosed_ && regulatorOn_ && fault_ == Fault::None && haveCount_ && traj_.atTarget() &&
+           !traj_.stopping() && pulses_ == 0 && jogDir_ == 0 && stallTimerMs_ == 0 &&
+           std::fabs(e) <= static_cast<double>(k_.clampToleranceInternal) &&
+           (inPosition_ || std::fabs(e) > static_cast<double>(k_.posToleranceInternal));
+}
+
 void Servo::tick(const ServoInputs& in, double dt) {
+    if (steady_ && dt == lastDt_ && in == lastIn_) {
+        // At rest, same inputs: the same count, regulator state, setpoint and
+        // DAC code; only the time at rest grows.
+        restTimerMs_ += dt;
+        return;
+    }
+    lastIn_ = in;
+    lastDt_ = dt;
+    steady_ = false;
     accel2Input_ = in.accel2;
     // --- encoder -> actual position ---
     const std::int64_t count = k_.encoderInvert ? -in.encoderCount : in.encoderCount;
@@ -292,6 +316,7 @@ void Servo::tick(const ServoInputs& in, double dt) {
         loopClosed_ = false;
         jogDir_ = 0;
     }
+    steady_ = atTarget && wasAtTarget && settled(e);
 }
 
 } // namespace k528::axis

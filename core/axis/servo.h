@@ -37,6 +37,7 @@ struct ServoInputs {
     bool feedEnable = true;          // Z1000.1 and Z1005.2 «Деблокировка подачи»
     bool accel2 = false;             // Z1005.4 acceleration 2 for all motion
     bool driveReady = true;          // fast input function 3 (true when not wired)
+    friend bool operator==(const ServoInputs&, const ServoInputs&) = default;
 };
 
 enum class Fault : std::uint8_t {
@@ -77,7 +78,10 @@ public:
     // Decelerate and drop the rest of the path. `emergency`: acceleration 2.
     void stop(bool emergency = false);
     // Speed factor: feed override (0..1). Feed hold comes from the inputs.
-    void setOverride(double factor) { override_ = factor; }
+    void setOverride(double factor) {
+        steady_ = steady_ && factor == override_;
+        override_ = factor;
+    }
 
     // --- reference -------------------------------------------------------
     // Shifts the machine system so that the current actual position reads
@@ -123,6 +127,9 @@ public:
 
 private:
     void openLoop();
+    // Whether the tick that just ended left a state that the same inputs
+    // would leave unchanged (closed loop at rest, no timer about to act).
+    bool settled(double e) const;
     void superviseEncoder(const ServoInputs& in, double dt);
     double accelFor(bool accel2) const;
 
@@ -152,6 +159,11 @@ private:
     int dacRaw_ = 0, dacOut_ = 0;
     bool markSeen_ = false;
     double markInternal_ = 0;
+    // The last tick left the axis settled and no command came since: a tick
+    // with the same inputs changes nothing but the rest timer.
+    bool steady_ = false;
+    ServoInputs lastIn_;
+    double lastDt_ = 0;
 };
 
 } // namespace k528::axis

@@ -53,6 +53,8 @@ struct AxisUnit {
         present = k.present;
         servo.setConstants(k);
         ipd = k.scale.internalPerDisc();
+        // 1/ipd is exact (ipd is 1 or 2): a product gives the quotient's bits.
+        perIpd = 1.0 / static_cast<double>(ipd);
         softMin = static_cast<double>(k.softMinusDisc * ipd);
         softMax = static_cast<double>(k.softPlusDisc * ipd);
     }
@@ -63,9 +65,7 @@ struct AxisUnit {
     bool referenceOk() const { return referenced || k.autoWithoutHoming; }
 
     // Display discretes <-> internal units (machine system).
-    std::int64_t toDisc(double internal) const {
-        return roundToInt(internal / static_cast<double>(ipd));
-    }
+    std::int64_t toDisc(double internal) const { return roundToInt(internal * perIpd); }
     double toInternal(std::int64_t disc) const { return static_cast<double>(disc * ipd); }
     std::int64_t machineDisc() const { return toDisc(servo.actual()); }
     // Display discretes per minute -> internal units per ms.
@@ -88,6 +88,7 @@ struct AxisUnit {
     axis::Servo servo;
     axis::HomingCycle homing;
     std::int64_t ipd = 2;
+    double perIpd = 0.5; // 1 / ipd
     double softMin = 0, softMax = 0; // internal units
 
     bool referenced = false;

@@ -116,7 +116,7 @@ void Controller::readInputs() {
     const std::uint16_t w = c_.words.word(1000);
     // Handwheels (C105/C106 name their pulse channels).
     for (int k = 0; k < 2; ++k) {
-        const int ch = channelIndex(c_.c[static_cast<std::size_t>(105 + k)]);
+        const int ch = channelIndex(c_.c[c::handwheelChannel(k)]);
         const std::int64_t count = ch >= 0 ? c_.io.pulse[static_cast<std::size_t>(ch)].count : 0;
         wheelDelta_[static_cast<std::size_t>(k)] =
             wheelInit_ ? count - wheelCount_[static_cast<std::size_t>(k)] : 0;
@@ -223,11 +223,11 @@ void Controller::acknowledgeSystem() {
 }
 
 void Controller::escape() {
-    if (c_.c[123] != 0)
+    if (c_.c[c::EscResets] != 0)
         resetSystem();
-    if (c_.c[124] != 0)
+    if (c_.c[c::EscAcknowledgesFaults] != 0)
         acknowledgeFaults();
-    if (c_.c[125] != 0)
+    if (c_.c[c::EscAcknowledgesSystem] != 0)
         acknowledgeSystem();
 }
 
@@ -369,7 +369,7 @@ void Controller::programControl() {
     for (int n = 1; n <= 8; ++n) {
         if (!rising(w1, before1, n - 1))
             continue;
-        const int number = static_cast<int>(c_.c[static_cast<std::size_t>(142 + n)]);
+        const int number = static_cast<int>(c_.c[c::manualCycle(n)]);
         if (number == 0)
             continue; // «Цикл не задан»
         if (n == 1 && (c_.mode == Mode::Auto || c_.mode == Mode::Manual)) {
@@ -582,7 +582,11 @@ void Controller::axisTick(AxisUnit& u) {
 
     // Feed override; «Стоп» holds the feed of program motion.
     const bool hold = c_.stopHold && programMotion(u.owner);
-    u.overrideFactor = programMotion(u.owner) && u.noOverride ? 1.0 : c_.overridePercent / 100.0;
+    if (c_.overridePercent != overrideFactorPercent_) {
+        overrideFactorPercent_ = c_.overridePercent;
+        overrideFactor_ = c_.overridePercent / 100.0;
+    }
+    u.overrideFactor = programMotion(u.owner) && u.noOverride ? 1.0 : overrideFactor_;
     u.servo.setOverride(u.overrideFactor);
 
     axis::ServoInputs in;
@@ -767,7 +771,7 @@ OpResult Controller::pressOverrideKey(int l) {
     if (l < 1 || l > 4)
         return OpResult::refused(Refusal::NoSuchKey,
                                  cat("override keys are L1..L4, not L", num(l)));
-    const std::int64_t code = c_.c[static_cast<std::size_t>(138 + l)];
+    const std::int64_t code = c_.c[c::overrideKey(l)];
     c_.panelOverrideCode = static_cast<int>(std::clamp<std::int64_t>(code, 0, 10));
     if (!(c_.words.word(1001) & (1u << 11)))
         c_.overridePercent = units::overrideCodeToPercent(c_.panelOverrideCode);

@@ -139,6 +139,8 @@ private:
     std::array<bool, 65> configMessages_{};
     bool storeCorrupt_ = false;
     std::uint64_t programsRevision_ = 0;
+    int overrideFactorPercent_ = -1; // overrideFactor_ = overridePercent / 100 of this percent
+    double overrideFactor_ = 1.0;
 };
 
 } // namespace k528::engine

@@ -7,6 +7,7 @@
 
 #include "engine/alarms.h"
 #include "engine/axis_unit.h"
+#include "engine/cparams.h"
 #include "engine/fast_inputs.h"
 #include "engine/interface_words.h"
 #include "engine/m_handshake.h"
@@ -21,8 +22,6 @@
 #include <cstdint>
 
 namespace k528::engine {
-
-inline constexpr int kCCount = 152;
 
 struct Core {
     explicit Core(const profile::MachineProfile& p);

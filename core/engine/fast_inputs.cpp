@@ -1,4 +1,5 @@
 #include "engine/fast_inputs.h"
+#include "engine/cparams.h"
 
 namespace k528::engine {
 
@@ -29,7 +30,7 @@ void FastInputMap::configure(std::span<const std::int64_t> c) {
             level_[static_cast<std::size_t>(a)][static_cast<std::size_t>(f)] =
                 fastActiveLevel(a, static_cast<FastFunction>(f));
         for (int i = 0; i < 8; ++i) {
-            const std::size_t n = static_cast<std::size_t>(107 + a * 8 + i);
+            const std::size_t n = c::fastInput(a, i);
             const std::int64_t v = n < c.size() ? c[n] : 0;
             const FastFunction f = v >= 1 && v < kFastFunctionCount ? static_cast<FastFunction>(v)
                                                                     : FastFunction::None;

@@ -1,4 +1,5 @@
 #include "engine/ideal_machine.h"
+#include "engine/cparams.h"
 
 #include <algorithm>
 #include <cmath>
@@ -121,14 +122,13 @@ IdealMachine::IdealMachine(Controller& controller) : c_(controller) {
         m.zeroMarkPhaseMm = x.place.zeroMarkMm;
         m.startSlideMm = x.place.startMm;
         x.mech.emplace(m);
-        const int base = i == 0 ? 0 : 52;
-        x.encoderChannel = channelIndex(cv[static_cast<std::size_t>(17 + base)]);
-        x.dacChannel = channelIndex(cv[static_cast<std::size_t>(18 + base)]);
+        x.encoderChannel = channelIndex(cv[c::ofAxis(c::EncoderChannelX, i)]);
+        x.dacChannel = channelIndex(cv[c::ofAxis(c::DacChannelX, i)]);
     }
     for (int i = 0; i < kAxisCount; ++i) {
         Axis& x = axes_[static_cast<std::size_t>(i)];
         for (int n = 0; n < 8; ++n) {
-            const std::int64_t fn = cv[static_cast<std::size_t>(107 + 8 * i + n)];
+            const std::int64_t fn = cv[c::fastInput(i, n)];
             const FastFunction f = fn >= 1 && fn < kFastFunctionCount
                                        ? static_cast<FastFunction>(fn)
                                        : FastFunction::None;
@@ -138,7 +138,7 @@ IdealMachine::IdealMachine(Controller& controller) : c_(controller) {
                 x.wiredFunctions |= 1u << static_cast<unsigned>(f);
         }
     }
-    wheelChannel_ = {channelIndex(cv[105]), channelIndex(cv[106])};
+    wheelChannel_ = {channelIndex(cv[c::Handwheel1Channel]), channelIndex(cv[c::Handwheel2Channel])};
     const std::int64_t pulseMs = p.simulation.getInt("plc.pulse_ms", 20);
     pulseTicks_ =
         static_cast<int>(std::max<std::int64_t>(1, (pulseMs + c_.tickMs() - 1) / c_.tickMs()));

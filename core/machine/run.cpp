@@ -35,7 +35,7 @@ void SimulationRunMachine::setOverrideCode(int code) {
         return; // 100 % at power-on
     engine::Controller& ctl = sim_.controller();
     for (int l = 1; l <= 4; ++l)
-        if (ctl.c()[static_cast<std::size_t>(138 + l)] == code) {
+        if (ctl.c()[engine::c::overrideKey(l)] == code) {
             ctl.pressOverrideKey(l);
             return;
         }

@@ -1,4 +1,5 @@
 #include "machine/simulation.h"
+#include "engine/cparams.h"
 
 #include "catalog/messages.h"
 #include "engine/rparams.h"
@@ -196,12 +197,11 @@ void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescr
             m.zeroMarkPhaseMm = x.place.zeroMarkMm;
             m.startSlideMm = x.place.startMm;
             x.mech.emplace(m);
-            const int base = i == 0 ? 0 : 52;
-            x.encoderChannel = channelIndex(cv[static_cast<std::size_t>(17 + base)]);
-            x.dacChannel = channelIndex(cv[static_cast<std::size_t>(18 + base)]);
+            x.encoderChannel = channelIndex(cv[engine::c::ofAxis(engine::c::EncoderChannelX, i)]);
+            x.dacChannel = channelIndex(cv[engine::c::ofAxis(engine::c::DacChannelX, i)]);
         }
         for (int k = 0; k < 8; ++k) {
-            const std::int64_t fn = cv[static_cast<std::size_t>(107 + 8 * i + k)];
+            const std::int64_t fn = cv[engine::c::fastInput(i, k)];
             const engine::FastFunction f = fn >= 1 && fn < engine::kFastFunctionCount
                                                ? static_cast<engine::FastFunction>(fn)
                                                : engine::FastFunction::None;
@@ -209,7 +209,7 @@ void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescr
             x.inputLevel[static_cast<std::size_t>(k)] = engine::fastActiveLevel(i, f);
         }
     }
-    wheelChannel_ = {channelIndex(cv[105]), channelIndex(cv[106])};
+    wheelChannel_ = {channelIndex(cv[engine::c::Handwheel1Channel]), channelIndex(cv[engine::c::Handwheel2Channel])};
 
     // The grinding wheel as the setter left it: R207 its diameter, R204 a new one.
     if (eq_.grinding) {
