@@ -1,6 +1,7 @@
 #include "engine/program_check.h"
 
 #include "catalog/cparams.h"
+#include "engine/load_programs.h"
 
 namespace k528::engine {
 
@@ -59,10 +60,7 @@ FileCheck checkFileForMachine(std::string_view text, const program::ParseOptions
         return r;
     }
     program::ProgramStore merged = machineStore;
-    for (const program::Program& p : r.parsed.store.programs())
-        merged.insert(p);
-    for (const program::Message& m : r.parsed.store.messages.entries)
-        merged.messages.set(m.number, m.text);
+    mergePrograms(merged, r.parsed.store);
     for (program::Diagnostic& d : program::validate(merged, validateOptionsFor(machine)))
         if (r.programs.count(d.program) || (d.program == 0 && d.line > 0))
             r.diagnostics.push_back(std::move(d));

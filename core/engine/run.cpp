@@ -3,6 +3,7 @@
 #include "catalog/messages.h"
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
+#include "engine/load_programs.h"
 
 #include <cmath>
 #include <functional>
@@ -143,13 +144,7 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     RunResult res;
     Controller& ctl = machine.controller();
     ctl.powerOn();
-    if (program::ProgramStore* store = ctl.editablePrograms()) {
-        for (const program::Program& p : programs.programs())
-            store->insert(p);
-        for (const program::Message& m : programs.messages.entries)
-            store->messages.set(m.number, m.text);
-        ctl.programsEdited();
-    }
+    loadPrograms(ctl, programs); // a fresh controller: no program runs
     for (const auto& [n, v] : options.rPresets)
         ctl.setR(n, v);
     // The operator homes at 100 % and sets the program's override before

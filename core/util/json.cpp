@@ -2,7 +2,11 @@
 
 #include "util/utf8.h"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <charconv>
+#include <limits>
 #include <cmath>
 #include <cstring>
 
@@ -14,28 +18,67 @@ namespace {
     throw std::runtime_error(std::string("JSON value is not ") + expected);
 }
 
-class Parser {
+// Builds a Value from nlohmann-json's SAX events: the syntax is nlohmann's
+// (RFC 8259, strict), the tree is ours (insertion order, exact int64).
+class Builder {
 public:
-    explicit Parser(std::string_view t) : t_(t) {}
+    explicit Builder(std::string_view text) : text_(text) {}
 
-    Value document() {
-        skipWs();
-        Value v = value(0);
-        skipWs();
-        if (p_ != t_.size())
-            fail("unexpected text after the JSON value");
-        return v;
+    bool null() { return add(Value()); }
+    bool boolean(bool b) { return add(Value(b)); }
+    bool number_integer(std::int64_t i) { return add(Value(static_cast<long long>(i))); }
+    bool number_unsigned(std::uint64_t u) {
+        if (u <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+            return add(Value(static_cast<long long>(u)));
+        return add(Value(static_cast<double>(u)));
+    }
+    bool number_float(double d, const std::string&) { return add(Value(d)); }
+    bool string(std::string& s) { return add(Value(std::move(s))); }
+    bool binary(std::vector<std::uint8_t>&) { return false; } // not in JSON text
+    bool start_object(std::size_t) { return open(Value(Object{})); }
+    bool key(std::string& k) {
+        key_ = std::move(k);
+        return true;
+    }
+    bool end_object() { return close(); }
+    bool start_array(std::size_t) { return open(Value(Array{})); }
+    bool end_array() { return close(); }
+    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
+        // A \u escape that is a lone surrogate is reported at its last hex
+        // digit; the column points past the escape, where the string goes wrong.
+        const std::string message = what(e);
+        fail(message.find("surrogate") != std::string::npos ? position + 1 : position, message);
     }
 
-private:
-    static constexpr int maxDepth = 256;
-    std::string_view t_;
-    std::size_t p_ = 0;
+    Value result() { return std::move(root_); }
 
-    [[noreturn]] void fail(const std::string& what) const {
+private:
+    static constexpr std::size_t maxDepth = 256;
+    std::string_view text_;
+    Value root_;
+    std::vector<Value*> stack_;
+    std::string key_;
+
+    // nlohmann's message without its "[json.exception.parse_error.101] parse
+    // error at line 1, column 6: syntax error while parsing value - " prefix.
+    static std::string what(const nlohmann::detail::exception& e) {
+        std::string m = e.what();
+        for (const char* marker : {" - ", ": "}) {
+            const auto p = m.rfind(marker);
+            if (p != std::string::npos) {
+                m = m.substr(p + std::strlen(marker));
+                break;
+            }
+        }
+        return m;
+    }
+
+    // `position` counts the bytes read, the offending one included.
+    [[noreturn]] void fail(std::size_t position, const std::string& message) const {
         int line = 1, col = 1;
-        for (std::size_t i = 0; i < p_ && i < t_.size(); ++i) {
-            if (t_[i] == '\n') {
+        const std::size_t end = position == 0 ? 0 : std::min(position - 1, text_.size());
+        for (std::size_t i = 0; i < end; ++i) {
+            if (text_[i] == '\n') {
                 ++line;
                 col = 1;
             } else {
@@ -43,232 +86,42 @@ private:
             }
         }
         throw ParseError("JSON line " + std::to_string(line) + ", column " + std::to_string(col) +
-                             ": " + what,
+                             ": " + message,
                          line, col);
     }
 
-    bool atEnd() const { return p_ >= t_.size(); }
-    char peek() const { return atEnd() ? '\0' : t_[p_]; }
-
-    void skipWs() {
-        while (!atEnd() && (t_[p_] == ' ' || t_[p_] == '\t' || t_[p_] == '\n' || t_[p_] == '\r'))
-            ++p_;
+    Value* place(Value v) {
+        if (stack_.empty()) {
+            root_ = std::move(v);
+            return &root_;
+        }
+        Value& parent = *stack_.back();
+        if (parent.isArray()) {
+            parent.asArray().push_back(std::move(v));
+            return &parent.asArray().back();
+        }
+        parent.asObject().emplace_back(std::move(key_), std::move(v));
+        return &parent.asObject().back().second;
     }
-
-    void expect(char c) {
-        if (peek() != c)
-            fail(std::string("expected '") + c + "'");
-        ++p_;
+    bool add(Value v) {
+        place(std::move(v));
+        return true;
     }
-
-    void literal(std::string_view word) {
-        if (t_.substr(p_, word.size()) != word)
-            fail("invalid literal");
-        p_ += word.size();
+    bool open(Value v) {
+        if (stack_.size() >= maxDepth)
+            throw ParseError("JSON nesting deeper than " + std::to_string(maxDepth), 1, 1);
+        stack_.push_back(place(std::move(v)));
+        return true;
     }
-
-    Value value(int depth) {
-        if (depth > maxDepth)
-            fail("nesting too deep");
-        switch (peek()) {
-        case '{':
-            return object(depth);
-        case '[':
-            return array(depth);
-        case '"':
-            return Value(string());
-        case 't':
-            literal("true");
-            return Value(true);
-        case 'f':
-            literal("false");
-            return Value(false);
-        case 'n':
-            literal("null");
-            return Value(nullptr);
-        default:
-            if (peek() == '-' || (peek() >= '0' && peek() <= '9'))
-                return number();
-            if (atEnd())
-                fail("unexpected end of text");
-            fail("unexpected character");
-        }
-    }
-
-    Value object(int depth) {
-        expect('{');
-        Object o;
-        skipWs();
-        if (peek() == '}') {
-            ++p_;
-            return Value(std::move(o));
-        }
-        for (;;) {
-            skipWs();
-            if (peek() != '"')
-                fail("expected a string key");
-            std::string key = string();
-            skipWs();
-            expect(':');
-            skipWs();
-            o.emplace_back(std::move(key), value(depth + 1));
-            skipWs();
-            if (peek() == ',') {
-                ++p_;
-                continue;
-            }
-            expect('}');
-            return Value(std::move(o));
-        }
-    }
-
-    Value array(int depth) {
-        expect('[');
-        Array a;
-        skipWs();
-        if (peek() == ']') {
-            ++p_;
-            return Value(std::move(a));
-        }
-        for (;;) {
-            skipWs();
-            a.push_back(value(depth + 1));
-            skipWs();
-            if (peek() == ',') {
-                ++p_;
-                continue;
-            }
-            expect(']');
-            return Value(std::move(a));
-        }
-    }
-
-    unsigned hex4() {
-        if (p_ + 4 > t_.size())
-            fail("truncated \\u escape");
-        unsigned v = 0;
-        for (int i = 0; i < 4; ++i) {
-            const char c = t_[p_++];
-            v <<= 4;
-            if (c >= '0' && c <= '9')
-                v |= static_cast<unsigned>(c - '0');
-            else if (c >= 'a' && c <= 'f')
-                v |= static_cast<unsigned>(c - 'a' + 10);
-            else if (c >= 'A' && c <= 'F')
-                v |= static_cast<unsigned>(c - 'A' + 10);
-            else
-                fail("invalid \\u escape");
-        }
-        return v;
-    }
-
-    std::string string() {
-        expect('"');
-        std::string out;
-        for (;;) {
-            if (atEnd())
-                fail("unterminated string");
-            const char c = t_[p_++];
-            if (c == '"')
-                return out;
-            if (static_cast<unsigned char>(c) < 0x20)
-                fail("control character in string");
-            if (c != '\\') {
-                out += c;
-                continue;
-            }
-            if (atEnd())
-                fail("unterminated escape");
-            const char e = t_[p_++];
-            switch (e) {
-            case '"':
-            case '\\':
-            case '/':
-                out += e;
-                break;
-            case 'b':
-                out += '\b';
-                break;
-            case 'f':
-                out += '\f';
-                break;
-            case 'n':
-                out += '\n';
-                break;
-            case 'r':
-                out += '\r';
-                break;
-            case 't':
-                out += '\t';
-                break;
-            case 'u': {
-                unsigned cp = hex4();
-                if (cp >= 0xD800 && cp <= 0xDBFF) {
-                    if (t_.substr(p_, 2) != "\\u")
-                        fail("unpaired surrogate");
-                    p_ += 2;
-                    const unsigned lo = hex4();
-                    if (lo < 0xDC00 || lo > 0xDFFF)
-                        fail("unpaired surrogate");
-                    cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
-                } else if (cp >= 0xDC00 && cp <= 0xDFFF) {
-                    fail("unpaired surrogate");
-                }
-                utf8::append(out, static_cast<char32_t>(cp));
-                break;
-            }
-            default:
-                fail("invalid escape");
-            }
-        }
-    }
-
-    Value number() {
-        const std::size_t start = p_;
-        if (peek() == '-')
-            ++p_;
-        if (peek() == '0') {
-            ++p_;
-        } else if (peek() >= '1' && peek() <= '9') {
-            while (peek() >= '0' && peek() <= '9')
-                ++p_;
-        } else {
-            fail("invalid number");
-        }
-        bool integral = true;
-        if (peek() == '.') {
-            integral = false;
-            ++p_;
-            if (!(peek() >= '0' && peek() <= '9'))
-                fail("invalid number");
-            while (peek() >= '0' && peek() <= '9')
-                ++p_;
-        }
-        if (peek() == 'e' || peek() == 'E') {
-            integral = false;
-            ++p_;
-            if (peek() == '+' || peek() == '-')
-                ++p_;
-            if (!(peek() >= '0' && peek() <= '9'))
-                fail("invalid number");
-            while (peek() >= '0' && peek() <= '9')
-                ++p_;
-        }
-        const char* b = t_.data() + start;
-        const char* e = t_.data() + p_;
-        if (integral) {
-            std::int64_t i = 0;
-            auto [ptr, ec] = std::from_chars(b, e, i);
-            if (ec == std::errc() && ptr == e)
-                return Value(static_cast<long long>(i));
-        }
-        double d = 0;
-        auto [ptr, ec] = std::from_chars(b, e, d);
-        if (ec != std::errc() || ptr != e)
-            fail("number out of range");
-        return Value(d);
+    bool close() {
+        stack_.pop_back();
+        return true;
     }
 };
+
+} // namespace
+
+namespace {
 
 void newline(std::string& out, int indent, int depth) {
     if (indent < 0)
@@ -367,55 +220,27 @@ Value& Value::push(Value v) {
 
 
 void writeString(std::string& out, std::string_view s) {
-    out += '"';
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const char c = s[i];
-        if (static_cast<unsigned char>(c) >= 0x80) {
-            // JSON text is UTF-8: a byte that is not part of a well-formed
-            // character becomes U+FFFD.
-            const std::size_t len = utf8::validLength(s, i);
+    // JSON text is UTF-8: each byte that is not part of a well-formed
+    // character becomes U+FFFD (one per byte, as utf8::validLength sees it;
+    // nlohmann's error_handler_t::replace would merge a truncated sequence
+    // into one), then nlohmann-json escapes the text.
+    std::string text;
+    if (!utf8::isValid(s)) {
+        text.reserve(s.size() + 8);
+        for (std::size_t i = 0; i < s.size();) {
+            const std::size_t len = static_cast<unsigned char>(s[i]) < 0x80 ? 1 : utf8::validLength(s, i);
             if (len == 0) {
-                out += "\xEF\xBF\xBD";
+                text += "\xEF\xBF\xBD";
+                ++i;
             } else {
-                out.append(s.substr(i, len));
-                i += len - 1;
-            }
-            continue;
-        }
-        switch (c) {
-        case '"':
-            out += "\\\"";
-            break;
-        case '\\':
-            out += "\\\\";
-            break;
-        case '\n':
-            out += "\\n";
-            break;
-        case '\r':
-            out += "\\r";
-            break;
-        case '\t':
-            out += "\\t";
-            break;
-        case '\b':
-            out += "\\b";
-            break;
-        case '\f':
-            out += "\\f";
-            break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20) {
-                static const char hex[] = "0123456789abcdef";
-                out += "\\u00";
-                out += hex[(c >> 4) & 0xF];
-                out += hex[c & 0xF];
-            } else {
-                out += c;
+                text.append(s.substr(i, len));
+                i += len;
             }
         }
+    } else {
+        text.assign(s);
     }
-    out += '"';
+    out += nlohmann::json(std::move(text)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 std::string formatDouble(double d) {
@@ -485,6 +310,11 @@ std::string Value::dump(int indent) const {
     return out;
 }
 
-Value parse(std::string_view text) { return Parser(text).document(); }
+Value parse(std::string_view text) {
+    Builder b(text);
+    nlohmann::json::sax_parse(text.begin(), text.end(), &b, nlohmann::json::input_format_t::json, true,
+                              false);
+    return b.result();
+}
 
 } // namespace k528::json

@@ -1,4 +1,4 @@
-// A small JSON value with a strict reader and a deterministic writer.
+// A small JSON value read with nlohmann-json and written deterministically.
 //
 // Core may use only the standard library, Eigen and sqlite3, so the CLI's
 // --json output and the machine descriptions of resources/machines are read

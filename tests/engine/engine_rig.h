@@ -5,6 +5,7 @@
 
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
+#include "engine/load_programs.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
 
@@ -52,13 +53,7 @@ struct Rig {
         const program::ParseResult r = program::parse(text);
         QVERIFY2(!r.hasErrors(),
                  r.diagnostics.empty() ? "parse error" : r.diagnostics.front().messageEn.c_str());
-        program::ProgramStore* store = ctl->editablePrograms();
-        QVERIFY(store != nullptr);
-        for (const program::Program& p : r.store.programs())
-            store->insert(p);
-        for (const program::Message& msg : r.store.messages.entries)
-            store->messages.set(msg.number, msg.text);
-        QVERIFY(ctl->programsEdited().ok());
+        QVERIFY(engine::loadPrograms(*ctl, r.store).ok());
     }
 
     void tick() { m->tick(); }

@@ -3,6 +3,7 @@
 // machine's panel and the K923, waiting, and the PLC's messages.
 #pragma once
 
+#include "engine/load_programs.h"
 #include "machine/simulation.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
@@ -98,13 +99,7 @@ struct Rig {
         const program::ParseResult r = program::parse(text);
         QVERIFY2(!r.hasErrors(),
                  r.diagnostics.empty() ? "parse error" : r.diagnostics.front().messageEn.c_str());
-        program::ProgramStore* store = c().editablePrograms();
-        QVERIFY(store != nullptr);
-        for (const program::Program& p : r.store.programs())
-            store->insert(p);
-        for (const program::Message& msg : r.store.messages.entries)
-            store->messages.set(msg.number, msg.text);
-        QVERIFY(c().programsEdited().ok());
+        QVERIFY(engine::loadPrograms(c(), r.store).ok());
     }
 
     // АВТОМАТ, program n, «Пуск» on the machine's panel, until it started.

@@ -5,6 +5,7 @@
 
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
+#include "engine/load_programs.h"
 #include "panel/lcd_font.h"
 #include "panel/panel.h"
 #include "panel/screens/cparams.h"
@@ -91,13 +92,7 @@ struct Rig {
     void load(const std::string& text) {
         const program::ParseResult r = program::parse(text);
         QVERIFY(!r.hasErrors());
-        program::ProgramStore* store = ctl->editablePrograms();
-        QVERIFY(store != nullptr);
-        for (const program::Program& pr : r.store.programs())
-            store->insert(pr);
-        for (const program::Message& msg : r.store.messages.entries)
-            store->messages.set(msg.number, msg.text);
-        QVERIFY(ctl->programsEdited().ok());
+        QVERIFY(engine::loadPrograms(*ctl, r.store).ok());
     }
 
     // Homes the present axes with the machine's direction buttons, X first.

@@ -1,5 +1,6 @@
 #include "session/program_loader.h"
 
+#include "engine/load_programs.h"
 #include "engine/program_check.h"
 #include "language.h"
 #include "session/simulation_session.h"
@@ -52,16 +53,10 @@ ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
         r.problem = tr("%1 holds no program.").arg(name);
         return r;
     }
-    program::ProgramStore* store = ctl.editablePrograms();
-    if (!store) {
+    if (!engine::loadPrograms(ctl, c.parsed.store).ok()) {
         r.problem = tr("A program is running: stop it (RESET) before loading programs.");
         return r;
     }
-    for (const program::Program& p : c.parsed.store.programs())
-        store->insert(p);
-    for (const program::Message& m : c.parsed.store.messages.entries)
-        store->messages.set(m.number, m.text);
-    ctl.programsEdited();
     ctl.selectProgram(r.programs.front()); // R252: АВТОМАТ starts it
     r.loaded = true;
     session.advance(0); // the views show the new programs
