@@ -54,6 +54,18 @@ json::Value resultJson(const engine::RunResult& r) {
         alarms.push_back(std::move(j));
     }
     root.set("alarms", std::move(alarms));
+    // Extension of cli.md (docs/engine.md): why a run with status "blocked"
+    // never started, most direct reason first.
+    json::Array blockers;
+    for (const engine::RunBlocker& b : r.blockedBy) {
+        json::Value j;
+        j.set("source", b.source);
+        j.set("number", b.number);
+        j.set("text_ru", engine::describeBlocker(b, true));
+        j.set("text_en", engine::describeBlocker(b, false));
+        blockers.push_back(std::move(j));
+    }
+    root.set("blocked_by", std::move(blockers));
     root.set("time_s", r.timeS);
     root.set("home_time_s", r.homeTimeS);
     root.set("frames", static_cast<long long>(r.frames));
@@ -100,6 +112,8 @@ void printPlain(const engine::RunResult& r, Lang lang) {
             std::printf("  (L%d, line %d)", a.program, a.line);
         std::printf("\n");
     }
+    for (const engine::RunBlocker& b : r.blockedBy)
+        std::printf("blocked by %s\n", engine::describeBlocker(b, lang == Lang::Ru).c_str());
     if (r.program > 0) {
         std::printf("stopped at L%d", r.program);
         if (r.frameNumber > 0)
