@@ -13,6 +13,7 @@
 namespace k528::cli {
 
 int runPanel(std::span<const std::string> args); // cmd_panel.cpp
+int runPath(std::span<const std::string> args);  // cmd_path.cpp
 
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
@@ -83,6 +84,23 @@ std::span<const Command> commands() {
          "                       \"shift\":bool},\"blink\":{\"row\",\"column\",\"length\"}|null}\n"
          "Prints the 4 LCD lines, 20 characters each. Screens: docs/panel.md.\n",
          runPanel},
+        {"path",
+         "path [--json] [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]...\n"
+         "           [--max-frames N] [--number N] [--lang ru|en] FILE",
+         "Print the programmed toolpath: the interpreter in preview, instant axes.",
+         "Options:\n"
+         "  --json               print {\"program\",\"segments\",\"dwells\",\"limits\",\"warnings\",\n"
+         "                       \"alarms\",\"end\",\"frames\",\"status\"} (cli.md)\n"
+         "  --profile NAME|PATH  machine profile (as for run)\n"
+         "  --program N          program of the file to start (default: the first)\n"
+         "  --param N=V          machine constant C<N> (repeatable)\n"
+         "  --r N=V              preset R<N> before the start (repeatable)\n"
+         "  --max-frames N       stop an endless program after N frames (default 1000000): status limit\n"
+         "One segment per motion frame, mm as the panel shows them (X a diameter on a diameter axis);\n"
+         "a frame moving X and Z has a corner where the first axis arrives. A segment beyond the\n"
+         "software limits (C46/C47, C98/C99) is marked ВНЕ ГРАНИЦ. Exit codes: 0 completed or\n"
+         "limit; 1 errors in the file or an alarm; 2 usage or I/O error.\n",
+         runPath},
     };
     return table;
 }

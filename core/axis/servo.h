@@ -78,6 +78,12 @@ public:
     void stop(bool emergency = false);
     // Speed factor: feed override (0..1). Feed hold comes from the inputs.
     void setOverride(double factor) { override_ = factor; }
+    // Preview (engine/preview.h): the axis stands at `internal` at once.
+    void place(double internal) {
+        traj_.reset(internal);
+        actual_ = internal;
+        inPosition_ = true;
+    }
 
     // --- reference -------------------------------------------------------
     // Shifts the machine system so that the current actual position reads

@@ -22,6 +22,8 @@
 
 namespace k528::engine {
 
+class PreviewSink; // engine/preview.h
+
 inline constexpr int kCCount = 152;
 
 struct Core {
@@ -69,6 +71,8 @@ struct Core {
     FastInputMap fast;
     MHandshake mhs;
     program::ProgramStore store;
+    // Preview mode (engine/preview.h): instant axes, motion reported here.
+    PreviewSink* preview = nullptr;
 
     // Mode.
     Mode mode = Mode::Manual;
