@@ -132,11 +132,22 @@ public:
                 farP[i] = hiFar ? hi : lo;
                 nearP[i] = hiFar ? lo : hi;
             }
+            double t = 0;
+            for (int i = 0; i < 2; ++i)
+                if (speed[i] > 0)
+                    t = std::max(t, (std::fabs(farP[i] - p[i]) + std::fabs(farP[i] - nearP[i]) +
+                                     std::fabs(nearP[i] - p[i])) / speed[i]);
+            s.durationS = static_cast<float>(t * 60.0);
             push(farP[0], farP[1]);
             push(nearP[0], nearP[1]);
             push(p[0], p[1]);
         } else {
             push(from[0], from[1]);
+            double t = 0;
+            for (int i = 0; i < 2; ++i)
+                if (moves[i] && speed[i] > 0)
+                    t = std::max(t, std::fabs(to[i] - from[i]) / speed[i]);
+            s.durationS = static_cast<float>(t * 60.0);
             if (moves[0] && moves[1] && speed[0] > 0 && speed[1] > 0) {
                 const double dx = to[0] - from[0], dz = to[1] - from[1];
                 const double tx = std::fabs(dx) / speed[0], tz = std::fabs(dz) / speed[1];

@@ -41,6 +41,7 @@ struct Segment {
     std::uint8_t pointCount = 0;
     std::uint32_t firstPoint = 0; // into ProgrammedPath::points
     float feedXMmMin = kNoFeed, feedZMmMin = kNoFeed; // programmed feed of a moving axis, NaN none
+    float durationS = 0; // without acceleration: the slower axis' time (an oscillation: one double stroke)
     std::uint64_t frameIndex = 0; // order of the frame among the motion frames
 };
 
