@@ -610,6 +610,14 @@ void Interpreter::actions() {
         }
     }
     if (c_.preview && (previewFrame_.axes[0].moves || previewFrame_.axes[1].moves)) {
+        for (int a = 0; a < kAxisCount; ++a) { // where the other axis stands (after a Gx92, too)
+            PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
+            const AxisUnit& u = c_.axes[static_cast<std::size_t>(a)];
+            if (m.moves || !u.present)
+                continue;
+            m.fromDisc = m.toDisc = u.toDisc(u.servo.target());
+            m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
+        }
         previewFrame_.program = program();
         previewFrame_.line = line_;
         previewFrame_.n = frameNumber();

@@ -16,7 +16,8 @@ enum class PreviewKind : std::uint8_t { Rapid, Feed, Oscillation, Signal, Handwh
 
 // One axis of a frame's motion, in display discretes of the axis (machine
 // system); `offsetDisc` = machine − current at that frame (the active
-// coordinate components), so current = machine − offset.
+// coordinate components), so current = machine − offset. An axis that does
+// not move has from = to = where it stands.
 struct PreviewAxisMotion {
     bool moves = false;
     std::int64_t fromDisc = 0, toDisc = 0;

@@ -47,7 +47,8 @@ public:
             pos_[i] = static_cast<double>(r.axes[static_cast<std::size_t>(i)].currentDisc) / dpm_[i];
             AxisLimits& l = i == 0 ? path_.limitX : path_.limitZ;
             const auto& a = r.axes[static_cast<std::size_t>(i)];
-            l.offsetMm = static_cast<double>(a.machineDisc - a.currentDisc) / dpm_[i];
+            offset_[i] = static_cast<double>(a.machineDisc - a.currentDisc) / dpm_[i];
+            l.offsetMm = offset_[i];
         }
         path_.start = {pos_[0], pos_[1]};
     }
@@ -82,8 +83,9 @@ public:
             const engine::PreviewAxisMotion& m = f.axes[static_cast<std::size_t>(i)];
             moves[i] = m.moves;
             if (!m.moves) {
-                from[i] = to[i] = pos_[i];
-                mfrom[i] = mto[i] = pos_[i] + offset_[i];
+                offset_[i] = static_cast<double>(m.offsetDisc) / dpm_[i];
+                from[i] = to[i] = static_cast<double>(m.fromDisc - m.offsetDisc) / dpm_[i];
+                mfrom[i] = mto[i] = static_cast<double>(m.fromDisc) / dpm_[i];
                 speed[i] = 0;
                 continue;
             }
@@ -109,6 +111,17 @@ public:
                     s.outside = true;
             }
         }
+        for (int i = 0; i < 2; ++i) {
+            if (moves[i] || !check_[i])
+                continue;
+            const double lo = static_cast<double>(minDisc_[i]) / dpm_[i];
+            const double hi = static_cast<double>(maxDisc_[i]) / dpm_[i];
+            if (mfrom[i] < lo || mfrom[i] > hi)
+                s.outside = true; // standing beyond a limit while the other axis moves
+        }
+        if (path_.segments.empty()) // the limits are drawn in the coordinates of the first motion
+            for (int i = 0; i < 2; ++i)
+                (i == 0 ? path_.limitX : path_.limitZ).offsetMm = offset_[i];
         const auto push = [&](double x, double z) {
             if (path_.points.size() > s.firstPoint) {
                 const PointMm& b = path_.points.back();

@@ -109,9 +109,12 @@ private slots:
                                        "N1 G192 X50\n"
                                        "/N2 G1 X99 FX100\n"
                                        "N3 G1 X60 FX100\n"
-                                       "N4 G4 X1.5\n");
+                                       "N4 G4 X1.5\n"
+                                       "N5 G192 X10\n"
+                                       "N6 G1 Z-5 FZ100\n");
         const QJsonArray segs = o["segments"].toArray();
-        QCOMPARE(segs.size(), 1); // the skipped frame draws nothing
+        QCOMPARE(segs.size(), 2); // the skipped frame draws nothing
+        QCOMPARE(points(o, 1), QString("10,0 10,-5")); // X stands where Gx92 put it
         QCOMPARE(points(o, 0), QString("50,0 60,0"));
         QCOMPARE(segs[0].toObject()["n"].toInt(), 3);
         const QJsonArray dw = o["dwells"].toArray();
@@ -121,15 +124,17 @@ private slots:
     }
     void outsideTheSoftLimits() {
         // training-lathe: X -4..272 (diameter), Z -115..295 (C46/C47, C98/C99).
-        const QJsonObject o = pathJson("%L1\nN1 G0 X100\nN7 G0 X300\nN8 G0 X100 Z-200\nN9 G0 Z0\n");
+        const QJsonObject o = pathJson("%L1\nN1 G0 X100\nN7 G0 X300\nN8 G0 X100 Z-200\nN9 G0 Z0\n"
+                                       "N10 G0 X300\nN11 G0 Z5\n");
         QCOMPARE(o["status"].toString(), QString("completed"));
         const QJsonArray segs = o["segments"].toArray();
         QCOMPARE(segs[0].toObject()["outside"].toBool(), false);
         QCOMPARE(segs[1].toObject()["outside"].toBool(), true);
         QCOMPARE(segs[2].toObject()["outside"].toBool(), true);
         QCOMPARE(segs[3].toObject()["outside"].toBool(), true); // starts at Z-200
+        QCOMPARE(segs[5].toObject()["outside"].toBool(), true); // Z moves, X stands beyond
         const QJsonArray w = o["warnings"].toArray();
-        QCOMPARE(w.size(), 3);
+        QCOMPARE(w.size(), 5);
         QCOMPARE(w[0].toObject()["n"].toInt(), 7);
         QCOMPARE(w[0].toObject()["text_ru"].toString(), QString::fromUtf8("ВНЕ ГРАНИЦ"));
         QCOMPARE(o["limits"].toObject()["X"].toArray()[1].toDouble(), 272.0);
