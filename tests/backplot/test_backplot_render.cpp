@@ -5,9 +5,11 @@
 // the frame. Plus the level of detail and the pick index headless.
 #include "backplot/backplot_scene.h"
 #include "backplot/offscreen.h"
+#include "cli_runner.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
 
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
@@ -110,6 +112,22 @@ private slots:
         QVERIFY(around(img, px(-50), py(100), backplot::kLimitColour));
         QVERIFY(around(img, px(-80), py(200), backplot::kOutsideColour));
         QVERIFY(!around(img, px(-80), py(200), backplot::kFeedColour));
+    }
+    void plotCommandWritesAPng() {
+        QTemporaryDir dir;
+        QFile f(dir.filePath("p.k528"));
+        f.open(QIODevice::WriteOnly);
+        f.write("; UCG,2,Z-100Z0,X100X0,S0S0,0,-5\n%L1\nN1 G0 X300\nN2 G1 Z-50 FZ200\n");
+        f.close();
+        const QString png = dir.filePath("p.png");
+        const CliResult r = runK528({"plot", "--size", "320x200", "--out", png, f.fileName()});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.err.contains(QString::fromUtf8("L1 N1 line 3: ВНЕ ГРАНИЦ")));
+        QFile out(png);
+        QVERIFY(out.open(QIODevice::ReadOnly));
+        QCOMPARE(out.read(8), QByteArray("\x89PNG\r\n\x1a\n", 8));
+        const CliResult bad = runK528({"plot", "--size", "3x2", "--out", png, f.fileName()});
+        QCOMPARE(bad.exitCode, 2);
     }
     void levelOfDetailKeepsCornersAndBoundsTheSize() {
         // 20,000 zig-zag passes: the full view collapses them, a zoom shows every corner.

@@ -157,7 +157,19 @@ vtkRenderer* BackplotScene::renderer() const {
 }
 
 void BackplotScene::setPath(const toolpath::ProgrammedPath& path) {
-    path_ = path;
+    setPath(toolpath::ProgrammedPath(path));
+}
+
+void BackplotScene::setInteracting(bool on) {
+    const bool overlays = !on && mode_ == ViewMode::XZ;
+    v_->legend->SetVisibility(overlays);
+    v_->warning->SetVisibility(!on);
+    v_->title->SetVisibility(!on);
+    v_->bar->SetVisibility(overlays && actual_ != nullptr);
+}
+
+void BackplotScene::setPath(toolpath::ProgrammedPath&& path) {
+    path_ = std::move(path);
     geom_.build(path_);
     cumulative_.resize(path_.segments.size());
     double t = 0;

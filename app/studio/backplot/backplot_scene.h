@@ -48,6 +48,10 @@ public:
     vtkRenderer* renderer() const;
 
     void setPath(const toolpath::ProgrammedPath& path);
+    void setPath(toolpath::ProgrammedPath&& path);
+    // While the user pans or zooms: the 2D overlays (rulers, texts) are
+    // hidden — they are rebuilt every frame and cost more than the path.
+    void setInteracting(bool on);
     void setActual(const toolpath::ActualPath* actual); // null: none
     void setStock(const std::optional<stock::Blank>& blank); // cut by the path when shown
     const toolpath::ProgrammedPath& path() const { return path_; }

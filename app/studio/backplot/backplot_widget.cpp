@@ -57,6 +57,7 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     outsideList_ = new QListWidget(this);
     outsideList_->setObjectName("backplot.outside");
     auto* side = new QWidget(this);
+    side->setMaximumWidth(240);
     auto* sideLayout = new QVBoxLayout(side);
     sideLayout->setContentsMargins(0, 0, 0, 0);
     sideLayout->addWidget(outsideTitle_);
@@ -125,14 +126,17 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     });
     connect(gl_, &VtkGlWidget::sizeChanged, this, [this](int w, int h) {
         pw_ = w, ph_ = h;
-        if (!fitted_) {
-            fitted_ = true;
+        if (!userMoved_) // until the user pans or zooms, the view keeps the whole path
             scene_->fit(pw_, ph_);
-        } else {
+        else
             scene_->refresh(pw_, ph_);
-        }
     });
-    connect(gl_, &VtkGlWidget::interactionEnded, this, &BackplotWidget::refresh);
+    connect(gl_, &VtkGlWidget::interactionStarted, this, [this] { scene_->setInteracting(true); });
+    connect(gl_, &VtkGlWidget::interactionEnded, this, [this] {
+        userMoved_ = true;
+        scene_->setInteracting(false);
+        refresh();
+    });
     connect(outsideList_, &QListWidget::currentRowChanged, this, [this](int row) {
         if (row < 0)
             return;
@@ -187,9 +191,8 @@ void BackplotWidget::retranslate() {
 void BackplotWidget::showProgram(const profile::MachineProfile& profile,
                                  const program::ProgramStore& store, int number,
                                  const std::optional<stock::Blank>& blank) {
-    const toolpath::ProgrammedPath path = toolpath::programmedPath(profile, store, number);
     scene_->setStock(blank);
-    showPath(path);
+    showPath(toolpath::programmedPath(profile, store, number));
 }
 
 void BackplotWidget::showActualRun(const profile::MachineProfile& profile,
@@ -202,9 +205,10 @@ void BackplotWidget::showActualRun(const profile::MachineProfile& profile,
     refresh();
 }
 
-void BackplotWidget::showPath(const toolpath::ProgrammedPath& path) {
-    scene_->setPath(path);
-    scene_->setActual(actual_ && path.program == scene_->path().program ? actual_.get() : nullptr);
+void BackplotWidget::showPath(toolpath::ProgrammedPath path) {
+    scene_->setPath(std::move(path));
+    scene_->setActual(actual_ && actual_->result.program == scene_->path().program ? actual_.get()
+                                                                                    : nullptr);
     playhead_ = -1;
     scrub_->setValue(kScrubSteps);
     updateOutsideList();
@@ -229,6 +233,7 @@ void BackplotWidget::updateOutsideList() {
 }
 
 void BackplotWidget::fit() {
+    userMoved_ = false;
     scene_->fit(pw_, ph_);
     gl_->update();
 }

@@ -40,7 +40,7 @@ public:
     // Runs the program on the simulated machine and overlays the actual path.
     void showActualRun(const profile::MachineProfile& profile, const program::ProgramStore& store,
                        int number);
-    void showPath(const toolpath::ProgrammedPath& path);
+    void showPath(toolpath::ProgrammedPath path);
 
     k528::backplot::BackplotScene& scene() { return *scene_; }
     VtkGlWidget* glWidget() const { return gl_; }
@@ -78,7 +78,7 @@ private:
     vtkInteractorStyle* style3d_ = nullptr;
     double playhead_ = -1;
     int pw_ = 1, ph_ = 1;
-    bool fitted_ = false;
+    bool userMoved_ = false; // panned or zoomed since the last fit
     QPoint pressPos_;
 };
 

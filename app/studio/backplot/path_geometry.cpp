@@ -38,12 +38,33 @@ void PathGeometry::build(const toolpath::ProgrammedPath& path) {
         by0 -= 0.5, by1 += 0.5;
     bounds_[0] = bx0, bounds_[1] = bx1, bounds_[2] = by0, bounds_[3] = by1;
 
-    // Pick grid: about 4 legs a cell, at most 1024 × 1024 cells.
-    const double n = static_cast<double>(std::max<std::size_t>(seg_.size(), 1));
+    // Axis-parallel legs: sorted lists; the rest: the grid.
+    horizontal_.clear(), vertical_.clear();
+    std::vector<std::uint32_t> others;
+    for (std::size_t i = 0; i < seg_.size(); ++i) {
+        if (y0_[i] == y1_[i])
+            horizontal_.push_back(static_cast<std::uint32_t>(i));
+        else if (x0_[i] == x1_[i])
+            vertical_.push_back(static_cast<std::uint32_t>(i));
+        else
+            others.push_back(static_cast<std::uint32_t>(i));
+    }
+    std::sort(horizontal_.begin(), horizontal_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return y0_[a] < y0_[b]; });
+    std::sort(vertical_.begin(), vertical_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return x0_[a] < x0_[b]; });
+    hKey_.resize(horizontal_.size());
+    vKey_.resize(vertical_.size());
+    for (std::size_t k = 0; k < horizontal_.size(); ++k)
+        hKey_[k] = y0_[horizontal_[k]];
+    for (std::size_t k = 0; k < vertical_.size(); ++k)
+        vKey_[k] = x0_[vertical_[k]];
+    // Grid: about 4 of the other legs a cell, at most 256 × 256 cells.
+    const double n = static_cast<double>(std::max<std::size_t>(others.size(), 1));
     const double aspect = (bx1 - bx0) / (by1 - by0);
-    const double cells = std::min(n / 4 + 1, 1024.0 * 1024.0);
-    gridW_ = std::clamp(static_cast<int>(std::sqrt(cells * aspect)), 1, 1024);
-    gridH_ = std::clamp(static_cast<int>(cells / gridW_), 1, 1024);
+    const double cells = std::min(n / 4 + 1, 256.0 * 256.0);
+    gridW_ = std::clamp(static_cast<int>(std::sqrt(cells * aspect)), 1, 256);
+    gridH_ = std::clamp(static_cast<int>(cells / gridW_), 1, 256);
     cellW_ = (bx1 - bx0) / gridW_;
     cellH_ = (by1 - by0) / gridH_;
     // The cells a leg passes through (stepping half a cell along it).
@@ -63,14 +84,14 @@ void PathGeometry::build(const toolpath::ProgrammedPath& path) {
         }
     };
     cellStart_.assign(static_cast<std::size_t>(gridW_) * gridH_ + 1, 0);
-    for (std::size_t i = 0; i < seg_.size(); ++i)
+    for (std::uint32_t i : others)
         forCells(i, [&](std::size_t c) { ++cellStart_[c + 1]; });
     for (std::size_t k = 1; k < cellStart_.size(); ++k)
         cellStart_[k] += cellStart_[k - 1];
     cellLegs_.assign(cellStart_.back(), 0);
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t i = 0; i < seg_.size(); ++i)
-        forCells(i, [&](std::size_t c) { cellLegs_[fill[c]++] = static_cast<std::uint32_t>(i); });
+    for (std::uint32_t i : others)
+        forCells(i, [&](std::size_t c) { cellLegs_[fill[c]++] = i; });
 }
 
 namespace {
@@ -92,10 +113,10 @@ double segDist(double px, double py, double ax, double ay, double bx, double by)
 LodLines PathGeometry::simplify(const ViewWindow& w, std::size_t segmentLimit,
                                 std::size_t maxPoints) const {
     LodLines out;
-    const double q = std::max(w.worldPerPixel / 4, 1e-9); // a quarter pixel
+    const double q = std::max(w.worldPerPixel / 2, 1e-9); // half a pixel
     const double mx = (w.x1 - w.x0) / 2, my = (w.y1 - w.y0) / 2;
     const double wx0 = w.x0 - mx, wx1 = w.x1 + mx, wy0 = w.y0 - my, wy1 = w.y1 + my;
-    // Grid coordinates relative to the window, 21 bits each (±1M quarter pixels).
+    // Grid coordinates relative to the window, 21 bits each (up to 1M half pixels).
     const auto gx = [&](double x) { return std::llround((x - wx0) / q); };
     const auto gy = [&](double y) { return std::llround((y - wy0) / q); };
     constexpr long long kMax = (1 << 20) - 1;
@@ -158,17 +179,27 @@ long PathGeometry::pick(double x, double y, double radius) const {
         return -1;
     double best = radius;
     long found = -1;
+    const auto consider = [&](std::uint32_t i) {
+        const double d = segDist(x, y, x0_[i], y0_[i], x1_[i], y1_[i]);
+        // Nearest; of equals the later segment (drawn on top).
+        if (d <= best && (found < 0 || d < best || seg_[i] > static_cast<std::uint32_t>(found))) {
+            best = d;
+            found = seg_[i];
+        }
+    };
+    const auto band = [&](const std::vector<float>& key, const std::vector<std::uint32_t>& legs,
+                          double at) {
+        auto it = std::lower_bound(key.begin(), key.end(), static_cast<float>(at - radius));
+        for (auto k = static_cast<std::size_t>(it - key.begin()); k < key.size() && key[k] <= at + radius; ++k)
+            consider(legs[k]);
+    };
+    band(hKey_, horizontal_, y);
+    band(vKey_, vertical_, x);
     for (int cy = cy0; cy <= cy1; ++cy)
         for (int cx = cx0; cx <= cx1; ++cx) {
             const std::size_t c = static_cast<std::size_t>(cy) * gridW_ + cx;
-            for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
-                const std::uint32_t i = cellLegs_[k];
-                const double d = segDist(x, y, x0_[i], y0_[i], x1_[i], y1_[i]);
-                if (d <= best && (found < 0 || d < best || seg_[i] > static_cast<std::uint32_t>(found))) {
-                    best = d;
-                    found = seg_[i];
-                }
-            }
+            for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k)
+                consider(cellLegs_[k]);
         }
     return found;
 }

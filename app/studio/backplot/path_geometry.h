@@ -3,14 +3,16 @@
 // (horizontal = Z, vertical = X as the machine shows it), its colour class
 // and its segment; a uniform 2D grid over the legs for picking (VTK's
 // pickers take 0.1–1.3 s over a million cells; this takes microseconds);
-// and the screen-space level of detail.
+// and the screen-space level of detail. Axis-parallel legs are indexed
+// apart, sorted by their constant coordinate (a grid over a million long
+// overlapping passes would hold each pass in hundreds of cells).
 //
 // Level of detail: for a view window and its size of a pixel, the legs that
 // touch the window (with a margin of half a window) are snapped to a grid of
-// a quarter pixel, legs that collapse to a point are dropped and legs that
+// half a pixel, legs that collapse to a point are dropped and legs that
 // snap to the same pair of grid points (and class) are drawn once. A corner
-// therefore moves by at most a quarter pixel and every corner that a pixel
-// can show stays. The result is bounded by what the window can show, not by
+// therefore moves by at most a quarter pixel (half a grid step) and every
+// corner that a pixel can show stays. The result is bounded by what the window can show, not by
 // the size of the program.
 #pragma once
 
@@ -54,7 +56,10 @@ private:
     std::vector<LineClass> cls_;
     std::size_t segCount_ = 0;
     double bounds_[4] = {0, 1, 0, 1};
-    // Pick grid (CSR): cells of gridW_ × gridH_.
+    // Pick index: axis-parallel legs (most of a positioner's) sorted by their
+    // constant coordinate; the others in a uniform grid (CSR), cells of gridW_ × gridH_.
+    std::vector<std::uint32_t> horizontal_, vertical_; // leg indices sorted by y / by x
+    std::vector<float> hKey_, vKey_;
     int gridW_ = 1, gridH_ = 1;
     double cellW_ = 1, cellH_ = 1;
     std::vector<std::uint32_t> cellStart_, cellLegs_;

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <utility>
 
 int main(int argc, char** argv) {
     std::string out, view = "xz";
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     k528::backplot::BackplotScene scene;
-    scene.setPath(path);
+    scene.setPath(std::move(path));
     if (!ucg.empty())
         scene.setStock(k528::stock::parseUcg(ucg));
     scene.setViewMode(view == "3d" ? k528::backplot::ViewMode::Solid3D : k528::backplot::ViewMode::XZ);

@@ -111,6 +111,7 @@ void VtkGlWidget::forwardMouse(QMouseEvent* e, unsigned long event) {
 }
 
 void VtkGlWidget::mousePressEvent(QMouseEvent* e) {
+    emit interactionStarted();
     const unsigned long ev = e->button() == Qt::LeftButton     ? vtkCommand::LeftButtonPressEvent
                              : e->button() == Qt::MiddleButton ? vtkCommand::MiddleButtonPressEvent
                                                                : vtkCommand::RightButtonPressEvent;
@@ -130,6 +131,7 @@ void VtkGlWidget::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void VtkGlWidget::wheelEvent(QWheelEvent* e) {
+    emit interactionStarted();
     const qreal dpr = devicePixelRatioF();
     const QPointF p = e->position();
     interactor_->SetEventInformationFlipY(static_cast<int>(p.x() * dpr), static_cast<int>(p.y() * dpr));

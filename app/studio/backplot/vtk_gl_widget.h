@@ -29,6 +29,7 @@ public:
 
 signals:
     void sizeChanged(int widthPx, int heightPx);
+    void interactionStarted();
     void interactionEnded();
 
 protected:
