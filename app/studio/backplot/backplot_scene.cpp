@@ -130,6 +130,7 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->legend->SetLabelModeToXYCoordinates();
     for (vtkAxisActor2D* a : {v_->legend->GetLeftAxis(), v_->legend->GetBottomAxis()}) {
         a->GetProperty()->SetColor(0.7, 0.7, 0.7);
+        a->SetNumberOfMinorTicks(0);
         a->GetLabelTextProperty()->SetColor(0.8, 0.8, 0.8);
     }
     v_->legend->GetLegendLabelProperty()->SetColor(0.8, 0.8, 0.8);
