@@ -1018,4 +1018,94 @@
         <translation>, кадр N%1</translation>
     </message>
 </context>
+<context>
+    <name>k528::studio::backplot::BackplotDock</name>
+    <message>
+        <source>Backplot</source>
+        <translation>Траектория</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Programmed path</source>
+        <translation>Программная траектория</translation>
+    </message>
+    <message>
+        <source>Simulate run</source>
+        <translation>Моделировать отработку</translation>
+    </message>
+    <message>
+        <source>Run the program on the simulated machine and overlay the actual path, coloured by following error</source>
+        <translation>Отработать программу на модели станка и наложить фактическую траекторию, окрашенную по ошибке рассогласования</translation>
+    </message>
+    <message>
+        <source>Blank (UCG)</source>
+        <translation>Заготовка (UCG)</translation>
+    </message>
+    <message>
+        <source>The backplot needs OpenGL (an X display)</source>
+        <translation>Для траектории нужен OpenGL (дисплей X)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::backplot::BackplotWidget</name>
+    <message>
+        <source>Fit</source>
+        <translation>Вписать</translation>
+    </message>
+    <message>
+        <source>Show the whole path (middle button pans, the wheel zooms)</source>
+        <translation>Показать всю траекторию (средняя кнопка сдвигает, колесо масштабирует)</translation>
+    </message>
+    <message>
+        <source>XZ view</source>
+        <translation>Вид XZ</translation>
+    </message>
+    <message>
+        <source>3D view</source>
+        <translation>Вид 3D</translation>
+    </message>
+    <message>
+        <source>fastest</source>
+        <translation>максимально</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Воспроизвести</translation>
+    </message>
+    <message>
+        <source>Previous frame</source>
+        <translation>Предыдущий кадр</translation>
+    </message>
+    <message>
+        <source>Next frame</source>
+        <translation>Следующий кадр</translation>
+    </message>
+    <message>
+        <source>Beyond the software limits</source>
+        <translation>За программными ограничениями</translation>
+    </message>
+    <message>
+        <source>Click a segment to find its frame</source>
+        <translation>Щёлкните по отрезку, чтобы найти его кадр</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>строка %1</translation>
+    </message>
+    <message>
+        <source>L%1 N%2, line %3</source>
+        <translation>L%1 N%2, строка %3</translation>
+    </message>
+    <message>
+        <source>No segment here</source>
+        <translation>Здесь нет отрезка</translation>
+    </message>
+</context>
 </TS>

@@ -9,6 +9,8 @@
 namespace k528::cli {
 
 int runPanel(std::span<const std::string> args); // cmd_panel.cpp
+int runPath(std::span<const std::string> args);  // cmd_path.cpp
+int runPlot(std::span<const std::string> args);  // cmd_plot.cpp
 
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
@@ -82,6 +84,36 @@ std::span<const Command> commands() {
          "                       \"shift\":bool},\"blink\":{\"row\",\"column\",\"length\"}|null}\n"
          "Prints the 4 LCD lines, 20 characters each. Screens: docs/panel.md.\n",
          runPanel},
+        {"path",
+         "path [--json] [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]...\n"
+         "           [--max-frames N] [--number N] [--lang ru|en] FILE",
+         "Print the programmed toolpath: the interpreter in preview, instant axes.",
+         "Options:\n"
+         "  --json               print {\"program\",\"segments\",\"dwells\",\"limits\",\"warnings\",\n"
+         "                       \"alarms\",\"end\",\"frames\",\"status\"} (cli.md)\n"
+         "  --profile NAME|PATH  machine profile (as for run)\n"
+         "  --program N          program of the file to start (default: the first)\n"
+         "  --param N=V          machine constant C<N> (repeatable)\n"
+         "  --r N=V              preset R<N> before the start (repeatable)\n"
+         "  --max-frames N       stop an endless program after N frames (default 1000000): status limit\n"
+         "One segment per motion frame, mm as the panel shows them (X a diameter on a diameter axis);\n"
+         "a frame moving X and Z has a corner where the first axis arrives. A segment beyond the\n"
+         "software limits (C46/C47, C98/C99) is marked ВНЕ ГРАНИЦ. Exit codes: 0 completed or\n"
+         "limit; 1 errors in the file or an alarm; 2 usage or I/O error.\n",
+         runPath},
+        {"plot",
+         "plot [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]...\n"
+         "           [--size WxH] [--view xz|3d] [--max-frames N] --out FILE.png FILE",
+         "Render the backplot of a program offscreen to a PNG.",
+         "Options:\n"
+         "  --out FILE.png       the image to write\n"
+         "  --size WxH           pixels (default 1280x800)\n"
+         "  --view xz|3d         the lathe view (Z horizontal, X vertical) or the revolved stock\n"
+         "  other options as for path. The blank is the file's UCG comment (docs/backplot.md).\n"
+         "Draws with k528-plot (VTK) from k528's folder. Debian's VTK needs an X server even\n"
+         "offscreen: run under xvfb-run -a -s \"-screen 0 1280x800x24\". Segments beyond the\n"
+         "software limits are listed on stderr as ВНЕ ГРАНИЦ.\n",
+         runPlot},
     };
     return table;
 }

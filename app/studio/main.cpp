@@ -6,6 +6,7 @@
 #include <QTimer>
 #include <cstdio>
 
+#include "backplot/vtk_gl_widget.h"
 #include "language.h"
 #include "main_window.h"
 #include "profile/builtin.h"
@@ -13,6 +14,7 @@
 #include "util/version.h"
 
 int main(int argc, char** argv) {
+    k528::studio::backplot::VtkGlWidget::setDefaultSurfaceFormat(); // before QApplication (VTK)
     QApplication app(argc, argv);
     QApplication::setOrganizationName("K528Studio");
     QApplication::setApplicationName("k528studio");

@@ -12,6 +12,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 
+#include "backplot/backplot_dock.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
@@ -118,6 +119,7 @@ void MainWindow::createDocks() {
     messagesDock_->raise();
     for (QDockWidget* d : {messagesDock_, axesDock_})
         d->setMaximumHeight(140);
+    backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
 
 }
 
@@ -138,6 +140,8 @@ void MainWindow::createMenus() {
 
     viewMenu_ = menuBar()->addMenu(QString());
     for (QDockWidget* d : {k923Dock_, machineDock_, messagesDock_, axesDock_})
+        viewMenu_->addAction(d->toggleViewAction());
+    if (auto* d = findChild<QDockWidget*>("dock.backplot"))
         viewMenu_->addAction(d->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());

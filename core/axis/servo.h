@@ -82,6 +82,13 @@ public:
         steady_ = steady_ && factor == override_;
         override_ = factor;
     }
+    // Preview (engine/preview.h): the axis stands at `internal` at once.
+    void place(double internal) {
+        traj_.reset(internal);
+        actual_ = internal;
+        inPosition_ = true;
+        steady_ = false;
+    }
 
     // --- reference -------------------------------------------------------
     // Shifts the machine system so that the current actual position reads

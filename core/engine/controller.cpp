@@ -605,7 +605,8 @@ void Controller::axisTick(AxisUnit& u) {
     in.feedEnable = on(z1000, 1) && on(w0, 2) && !hold;
     in.accel2 = on(w0, 4);
     in.driveReady = u.driveReady;
-    u.servo.tick(in, c_.dtMs);
+    if (!c_.preview) // preview: the interpreter places the axes (engine/preview.h)
+        u.servo.tick(in, c_.dtMs);
     if (u.servo.fault() != lastFault_[i])
         trackFault(u);
 

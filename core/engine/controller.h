@@ -103,6 +103,8 @@ public:
     const axis::Servo& servo(AxisId a) const {
         return c_.axes[static_cast<std::size_t>(axisIndex(a))].servo;
     }
+    // Preview mode (engine/preview.h; driven by engine/preview_run.h): null ends it.
+    void setPreview(PreviewSink* sink) { c_.preview = sink; }
     bool oscillating(AxisId a) const {
         return c_.osc[static_cast<std::size_t>(axisIndex(a))].active();
     }

@@ -23,6 +23,8 @@
 
 namespace k528::engine {
 
+class PreviewSink; // engine/preview.h
+
 struct Core {
     explicit Core(const profile::MachineProfile& p);
 
@@ -68,6 +70,8 @@ struct Core {
     FastInputMap fast;
     MHandshake mhs;
     program::ProgramStore store;
+    // Preview mode (engine/preview.h): instant axes, motion reported here.
+    PreviewSink* preview = nullptr;
 
     // Mode.
     Mode mode = Mode::Manual;

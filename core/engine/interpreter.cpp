@@ -1,6 +1,7 @@
 #include "engine/interpreter.h"
 
 #include "engine/coordinates.h"
+#include "engine/preview.h"
 
 #include <algorithm>
 #include <bitset>
@@ -419,7 +420,8 @@ void Interpreter::beginIso(const program::Frame& f) {
     m17_ = m17;
     callTarget_ = call ? iso.call->number : 0;
     c_.mhs.begin(m_.data(), mCount_, c_.nowMs);
-    step_ = mCount_ > 0 ? Step::Handshake : Step::OscStop;
+    // Preview: M functions are acknowledged at once.
+    step_ = mCount_ > 0 && !c_.preview ? Step::Handshake : Step::OscStop;
     if (step_ == Step::OscStop)
         for (int a = 0; a < kAxisCount; ++a)
             if (oscStop_[static_cast<std::size_t>(a)])
@@ -452,6 +454,8 @@ bool Interpreter::startMove(int a, std::int64_t targetDisc, bool handwheel, int 
         u.wheelMin = std::min(from, t);
         u.wheelMax = std::max(from, t);
         u.rapid = false;
+        if (c_.preview)
+            previewMove(u, from, t, u.k.speedParamToInternalPerMs(u.k.feedAutoMax));
         return true;
     }
     const double maxSpeed = u.k.speedParamToInternalPerMs(u.k.feedAutoMax);
@@ -468,7 +472,9 @@ bool Interpreter::startMove(int a, std::int64_t targetDisc, bool handwheel, int 
         error(forAxis(33, a)); // F УСК.АВТ. = 0: the axis cannot move in a program
         return false;
     }
-    if (!u.servo.moveTo(t, speed)) {
+    if (c_.preview) {
+        previewMove(u, from, t, speed);
+    } else if (!u.servo.moveTo(t, speed)) {
         const int f = axis::faultMessage(u.servo.fault(), u.id);
         error(f ? f : forAxis(1, a));
         return false;
@@ -530,6 +536,18 @@ bool Interpreter::startOscillation(int a, const std::optional<program::Value>& s
         error(forAxis(33, a));
         return false;
     }
+    if (c_.preview) { // the strokes are drawn, the axis stays where it is
+        PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
+        m.moves = true;
+        m.fromDisc = m.toDisc = u.toDisc(cur);
+        m.oscLoDisc = u.toDisc(lo);
+        m.oscHiDisc = u.toDisc(hi);
+        m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
+        m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
+        m.feedDiscPerMin = static_cast<double>(feed);
+        previewFrame_.kind = PreviewKind::Oscillation;
+        return true;
+    }
     if (!osc.start(u.servo, lo, hi, speed, towardsHi, presets(a))) {
         const int f = axis::faultMessage(u.servo.fault(), u.id);
         error(f ? f : forAxis(1, a));
@@ -563,12 +581,17 @@ void Interpreter::actions() {
         }
         c_.r.set(r::ZeroOffsetX + a, static_cast<std::int32_t>(zo));
     }
+    if (c_.preview)
+        previewFrame_ = PreviewFrame{};
     // Gx81
     for (int a = 0; a < kAxisCount; ++a)
         if (oscStart_[static_cast<std::size_t>(a)] && !startOscillation(a, a == 0 ? iso.x : iso.z))
             return;
     // G04
-    if (dwell_ && dwellLeftMs_ > 0) {
+    if (dwell_ && dwellLeftMs_ > 0 && c_.preview) {
+        c_.preview->dwell(PreviewDwell{program(), line_, frameNumber(), dwellLeftMs_});
+        dwellLeftMs_ = -1; // no waiting
+    } else if (dwell_ && dwellLeftMs_ > 0) {
         dwellFresh_ = true;
         c_.state = ProgramState::Dwell;
     }
@@ -586,6 +609,40 @@ void Interpreter::actions() {
             return;
         }
     }
+    if (c_.preview && (previewFrame_.axes[0].moves || previewFrame_.axes[1].moves)) {
+        for (int a = 0; a < kAxisCount; ++a) { // where the other axis stands (after a Gx92, too)
+            PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
+            const AxisUnit& u = c_.axes[static_cast<std::size_t>(a)];
+            if (m.moves || !u.present)
+                continue;
+            m.fromDisc = m.toDisc = u.toDisc(u.servo.target());
+            m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
+        }
+        previewFrame_.program = program();
+        previewFrame_.line = line_;
+        previewFrame_.n = frameNumber();
+        if (previewFrame_.kind != PreviewKind::Oscillation) {
+            const bool wheel = wheel_[0] || wheel_[1];
+            const bool signal = erase_[0] > 0 || erase_[1] > 0;
+            previewFrame_.kind = wheel    ? PreviewKind::Handwheel
+                                 : signal ? PreviewKind::Signal
+                                 : modal_.rapid ? PreviewKind::Rapid
+                                                : PreviewKind::Feed;
+        }
+        c_.preview->motion(previewFrame_);
+    }
+}
+
+void Interpreter::previewMove(AxisUnit& u, double from, double to, double speed) {
+    PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(u.index)];
+    m.moves = true;
+    m.fromDisc = u.toDisc(from);
+    m.toDisc = u.toDisc(to);
+    m.offsetDisc = activeOffset(components(c_.r, u.index), c_.programExclusion);
+    m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
+    const std::int64_t feed = modal_.feed[static_cast<std::size_t>(u.index)];
+    m.feedDiscPerMin = modal_.rapid || feed < 0 ? -1.0 : static_cast<double>(feed);
+    u.servo.place(to);
 }
 
 bool Interpreter::waitDone() {
@@ -631,6 +688,8 @@ bool Interpreter::waitDone() {
 }
 
 void Interpreter::afterFrame() {
+    if (m00_ && c_.preview)
+        m00_ = false; // preview: «Пуск» at once
     if (m00_) {
         m00_ = false;
         c_.state = ProgramState::M0;

@@ -20,6 +20,7 @@
 #pragma once
 
 #include "engine/core.h"
+#include "engine/preview.h"
 #include "program/gfunctions.h"
 #include "program/model.h"
 
@@ -92,6 +93,7 @@ private:
     bool startOscillation(int axis, const std::optional<program::Value>& stroke);
     OscillationPresets presets(int axis) const;
     void updateNumbers();
+    void previewMove(AxisUnit& u, double from, double to, double speed); // preview.h
 
     Core& c_;
     ModalState modal_;
@@ -119,6 +121,7 @@ private:
     std::array<bool, kAxisCount> wheel_{};    // Gx10
     std::array<int, kAxisCount> erase_{};     // Gx36..39: signal 1..4
     bool dwell_ = false;
+    PreviewFrame previewFrame_; // preview: the motion of the frame in progress
 };
 
 } // namespace k528::engine

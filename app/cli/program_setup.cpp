@@ -1,0 +1,105 @@
+#include "program_setup.h"
+
+#include "cli.h"
+#include "engine/program_check.h"
+#include "engine/rparams.h"
+#include "engine/self_test.h"
+#include "machine_profile.h"
+#include "profile/validate.h"
+
+#include <set>
+
+namespace k528::cli {
+
+namespace {
+bool parseAssignment(const std::string& text, long long& n, long long& v) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos)
+        return false;
+    const auto a = parseInt(text.substr(0, eq));
+    const auto b = parseInt(text.substr(eq + 1));
+    if (!a || !b)
+        return false;
+    n = *a;
+    v = *b;
+    return true;
+}
+} // namespace
+
+int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
+    if (args.positional().size() != 1)
+        return usageError("needs exactly one FILE");
+    if (const auto l = args.value("--lang"); l && !parseLang(*l, out.lang))
+        return usageError("--lang is ru or en, not '" + *l + "'");
+    program::ParseOptions parseOptions;
+    if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
+        return ExitUsage;
+    const std::optional<profile::MachineProfile> loaded = machineProfile(args);
+    if (!loaded)
+        return ExitUsage;
+    out.profile = *loaded;
+    for (const std::string& p : args.values("--param")) {
+        long long n = 0, v = 0;
+        if (!parseAssignment(p, n, v))
+            return usageError("--param needs N=V with whole numbers, not '" + p + "'");
+        if (n < 1 || n > 152)
+            return usageError("--param " + p + ": C-parameters are 1..152");
+        if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
+            return usageError("--param " + p + ": " + e);
+        out.profile.setC(static_cast<int>(n), v);
+    }
+    for (const std::string& p : args.values("--r")) {
+        long long n = 0, v = 0;
+        if (!parseAssignment(p, n, v))
+            return usageError("--r needs N=V with whole numbers, not '" + p + "'");
+        if (n < 0 || n > 299)
+            return usageError("--r " + p + ": R-parameters are 0..299");
+        if (engine::rReadOnly(static_cast<int>(n)))
+            return usageError("--r " + p + ": R232..R262 are read only");
+        if (!engine::fitsR(v))
+            return usageError("--r " + p + ": the value is outside -2147483648..2147483647");
+        out.rPresets[static_cast<int>(n)] = v;
+    }
+    const std::string path = args.positional().front();
+    std::string text;
+    if (!readProgramFile(path, text))
+        return ExitUsage;
+    bool intact = true;
+    const engine::FileCheck checked = engine::checkFileForMachine(
+        text, parseOptions, out.profile, engine::loadStore(out.profile, intact));
+    const program::ParseResult& parsed = checked.parsed;
+    if (parsed.hasErrors()) {
+        printDiagnostics(diagOut, displayName(path), parsed.diagnostics, out.lang);
+        return ExitInputErrors;
+    }
+    if (parsed.store.empty()) {
+        std::fprintf(stderr, "k528: %s holds no program\n", displayName(path).c_str());
+        return ExitInputErrors;
+    }
+    if (checked.hasErrors()) {
+        printDiagnostics(diagOut, displayName(path), checked.diagnostics, out.lang);
+        return ExitInputErrors;
+    }
+    if (!checked.diagnostics.empty())
+        printDiagnostics(stderr, displayName(path), checked.diagnostics, out.lang);
+    if (const auto p = args.value("--program")) {
+        const auto n = parseInt(*p);
+        if (!n || *n < 1 || *n > 99)
+            return usageError("--program needs a program number 1..99, not '" + *p + "'");
+        if (!checked.programs.count(static_cast<int>(*n)))
+            return usageError("--program " + *p + ": " + displayName(path) + " has no program L" +
+                              *p);
+        out.number = static_cast<int>(*n);
+    } else {
+        int firstLine = 0;
+        for (const program::Program& p : parsed.store.programs())
+            if (out.number == 0 || p.headerLine < firstLine) {
+                out.number = p.number;
+                firstLine = p.headerLine;
+            }
+    }
+    out.store = parsed.store;
+    return -1;
+}
+
+} // namespace k528::cli

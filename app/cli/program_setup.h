@@ -1,0 +1,33 @@
+// What `k528 path` and `k528 plot` share with `k528 run`: the machine profile
+// with --param overrides, --r presets, the program file checked against the
+// machine's store, and the program to start (--program N, else the first).
+#pragma once
+
+#include "args.h"
+#include "program_cli.h"
+#include "profile/profile.h"
+#include "program/model.h"
+
+#include <cstdint>
+#include <map>
+
+namespace k528::cli {
+
+struct ProgramSetup {
+    profile::MachineProfile profile;
+    program::ProgramStore store;
+    int number = 0;
+    std::map<int, std::int64_t> rPresets;
+    Lang lang = Lang::Ru;
+};
+
+// The options this reads (add them to the command's Args).
+inline const std::vector<std::string_view> kSetupOptions = {"--profile", "--db",     "--program",
+                                                           "--param",   "--r",      "--number",
+                                                           "--lang"};
+
+// Fills `out` from `args` (one positional FILE). Returns -1 on success, else
+// the exit code after printing the reason (diagnostics to `diagOut`).
+int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut);
+
+} // namespace k528::cli

@@ -1,0 +1,124 @@
+#include "backplot/backplot_dock.h"
+
+#include "backplot/backplot_widget.h"
+#include "session/simulation_session.h"
+
+#include <QDockWidget>
+#include <QEvent>
+#include <QGuiApplication>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMainWindow>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace k528::studio::backplot {
+
+namespace {
+
+class BackplotDock final : public QDockWidget {
+    Q_OBJECT
+public:
+    BackplotDock(QMainWindow* w, SimulationSession& session) : QDockWidget(w), session_(session) {
+        setObjectName("dock.backplot");
+        auto* box = new QWidget(this);
+        auto* row = new QHBoxLayout;
+        programLabel_ = new QLabel(box);
+        program_ = new QSpinBox(box);
+        program_->setObjectName("backplot.program");
+        program_->setRange(1, 99);
+        program_->setPrefix("L");
+        pathButton_ = new QPushButton(box);
+        pathButton_->setObjectName("backplot.computePath");
+        runButton_ = new QPushButton(box);
+        runButton_->setObjectName("backplot.simulateRun");
+        ucgLabel_ = new QLabel(box);
+        ucg_ = new QLineEdit(box);
+        ucg_->setObjectName("backplot.ucg");
+        ucg_->setText(QStringLiteral("UCG,2,Z-100Z0,X50X0,S0S0,0,-5"));
+        row->addWidget(programLabel_);
+        row->addWidget(program_);
+        row->addWidget(pathButton_);
+        row->addWidget(runButton_);
+        row->addWidget(ucgLabel_);
+        row->addWidget(ucg_, 1);
+        view_ = new BackplotWidget(box);
+        auto* layout = new QVBoxLayout(box);
+        layout->setContentsMargins(2, 2, 2, 2);
+        layout->addLayout(row);
+        layout->addWidget(view_, 1);
+        setWidget(box);
+        connect(pathButton_, &QPushButton::clicked, this, [this] { computePath(); });
+        connect(runButton_, &QPushButton::clicked, this, [this] {
+            view_->showActualRun(session_.simulation().profile(), session_.controller().programs(),
+                                 program_->value());
+        });
+        retranslate();
+        const program::ProgramStore& store = session_.controller().programs();
+        if (!store.programs().empty()) {
+            program_->setValue(store.programs().front().number);
+            computePath();
+        }
+    }
+
+protected:
+    void changeEvent(QEvent* e) override {
+        if (e->type() == QEvent::LanguageChange)
+            retranslate();
+        QDockWidget::changeEvent(e);
+    }
+
+private:
+    void computePath() {
+        const program::ProgramStore& store = session_.controller().programs();
+        if (!store.contains(program_->value()))
+            return;
+        view_->showProgram(session_.simulation().profile(), store, program_->value(),
+                           stock::parseUcg(ucg_->text().toStdString()));
+    }
+    void retranslate() {
+        setWindowTitle(tr("Backplot"));
+        programLabel_->setText(tr("Program"));
+        pathButton_->setText(tr("Programmed path"));
+        runButton_->setText(tr("Simulate run"));
+        runButton_->setToolTip(tr("Run the program on the simulated machine and overlay the "
+                                  "actual path, coloured by following error"));
+        ucgLabel_->setText(tr("Blank (UCG)"));
+    }
+
+    SimulationSession& session_;
+    QLabel *programLabel_ = nullptr, *ucgLabel_ = nullptr;
+    QSpinBox* program_ = nullptr;
+    QPushButton *pathButton_ = nullptr, *runButton_ = nullptr;
+    QLineEdit* ucg_ = nullptr;
+    BackplotWidget* view_ = nullptr;
+};
+
+} // namespace
+
+QDockWidget* addBackplotDock(QMainWindow* window, SimulationSession& session) {
+    QDockWidget* dock = nullptr;
+    if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
+        // QOpenGLWidget crashes on the offscreen platform (widget tests):
+        // the dock says so instead (platform.md).
+        dock = new QDockWidget(window);
+        dock->setObjectName("dock.backplot");
+        dock->setWindowTitle(BackplotDock::tr("Backplot"));
+        auto* label = new QLabel(BackplotDock::tr("The backplot needs OpenGL (an X display)"), dock);
+        label->setAlignment(Qt::AlignCenter);
+        label->setWordWrap(true);
+        dock->setWidget(label);
+    } else {
+        dock = new BackplotDock(window, session);
+    }
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
+                      QDockWidget::DockWidgetClosable);
+    window->addDockWidget(Qt::LeftDockWidgetArea, dock);
+    return dock;
+}
+
+} // namespace k528::studio::backplot
+
+#include "backplot_dock.moc"

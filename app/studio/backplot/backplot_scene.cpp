@@ -1,0 +1,483 @@
+#include "backplot/backplot_scene.h"
+
+#include <vtkActor.h>
+#include <vtkActor2D.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkLegendScaleActor.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
+#include <vtkCoordinate.h>
+#include <vtkRenderer.h>
+#include <vtkRotationalExtrusionFilter.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextActor.h>
+#include <vtkTriangleFilter.h>
+#include <vtkTextProperty.h>
+#include <vtkAxisActor2D.h>
+#include <vtkPolyDataNormals.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace k528::backplot {
+
+namespace {
+constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+struct Layer {
+    vtkNew<vtkPolyData> data;
+    vtkNew<vtkPolyDataMapper> mapper;
+    vtkNew<vtkActor> actor;
+    void init(vtkRenderer* r, Rgb c, double width) {
+        mapper->SetInputData(data);
+        mapper->ScalarVisibilityOff();
+        actor->SetMapper(mapper);
+        actor->GetProperty()->SetColor(c.r, c.g, c.b);
+        actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+        actor->GetProperty()->SetLighting(false);
+        actor->GetProperty()->SetAmbient(1);
+        actor->GetProperty()->SetDiffuse(0);
+        r->AddActor(actor);
+    }
+    // Replaces the contents with lines (4 floats a line) at depth z.
+    void lines(const std::vector<float>& v, double z) {
+        vtkNew<vtkPoints> pts;
+        pts->SetDataTypeToFloat();
+        const vtkIdType n = static_cast<vtkIdType>(v.size() / 4);
+        pts->SetNumberOfPoints(2 * n);
+        vtkNew<vtkCellArray> cells;
+        cells->AllocateExact(n, 2 * n);
+        for (vtkIdType i = 0; i < n; ++i) {
+            const float* f = v.data() + 4 * i;
+            pts->SetPoint(2 * i, f[0], f[1], z);
+            pts->SetPoint(2 * i + 1, f[2], f[3], z);
+            const vtkIdType ids[2] = {2 * i, 2 * i + 1};
+            cells->InsertNextCell(2, ids);
+        }
+        data->Initialize();
+        data->SetPoints(pts);
+        data->SetLines(cells);
+        data->Modified();
+    }
+};
+} // namespace
+
+struct BackplotScene::Vtk {
+    vtkNew<vtkRenderer> renderer;
+    Layer feed, rapid, outside, points, limit, tool, highlight, stock2d, stock3d, stockFill, actual;
+    vtkNew<vtkLookupTable> lut;
+    vtkNew<vtkScalarBarActor> bar;
+    vtkNew<vtkLegendScaleActor> legend;
+    vtkNew<vtkTextActor> warning;
+    vtkNew<vtkTextActor> title;
+};
+
+BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
+    vtkRenderer* r = v_->renderer;
+    r->SetBackground(kBackground.r, kBackground.g, kBackground.b);
+    v_->stock3d.init(r, kStockColour, 1);
+    v_->stock3d.actor->GetProperty()->SetLighting(true);
+    v_->stock3d.actor->GetProperty()->SetAmbient(0.25);
+    v_->stock3d.actor->GetProperty()->SetDiffuse(0.8);
+    v_->stock3d.actor->SetOrientation(0, 90, 0); // the revolution axis (z) along world x = Z
+    v_->stock3d.actor->VisibilityOff();
+    v_->stockFill.init(r, kStockColour, 1);
+    v_->stockFill.actor->GetProperty()->SetOpacity(0.35);
+    v_->stock2d.init(r, kStockColour, 2);
+    v_->limit.init(r, kLimitColour, 2);
+    v_->actual.init(r, kFeedColour, 2);
+    v_->actual.mapper->ScalarVisibilityOn();
+    v_->actual.mapper->SetLookupTable(v_->lut);
+    v_->actual.mapper->SetScalarModeToUsePointData();
+    v_->actual.mapper->UseLookupTableScalarRangeOn();
+    v_->feed.init(r, kFeedColour, 2);
+    v_->rapid.init(r, kRapidColour, 2);
+    v_->outside.init(r, kOutsideColour, 3);
+    v_->points.init(r, kPointColour, 1);
+    v_->highlight.init(r, {1, 1, 1}, 4);
+    v_->tool.init(r, kToolColour, 2);
+    v_->lut->SetHueRange(0.66, 0.0); // blue (0 µm) .. red (largest)
+    v_->lut->Build();
+    v_->bar->SetLookupTable(v_->lut);
+    v_->bar->SetTitle("\xC2\xB5m"); // µm
+    v_->bar->SetNumberOfLabels(5);
+    v_->bar->SetPosition(0.90, 0.15);
+    v_->bar->SetWidth(0.08);
+    v_->bar->SetHeight(0.7);
+    for (vtkTextProperty* t : {v_->bar->GetTitleTextProperty(), v_->bar->GetLabelTextProperty()}) {
+        t->SetFontFamily(VTK_FONT_FILE);
+        t->SetFontFile(kFont);
+        t->SetFontSize(12);
+        t->ShadowOff();
+        t->ItalicOff();
+    }
+    v_->bar->VisibilityOff();
+    r->AddActor2D(v_->bar);
+    v_->legend->SetLegendVisibility(true);
+    v_->legend->SetTopAxisVisibility(false);
+    v_->legend->SetRightAxisVisibility(false);
+    v_->legend->SetLabelModeToXYCoordinates();
+    for (vtkAxisActor2D* a : {v_->legend->GetLeftAxis(), v_->legend->GetBottomAxis()}) {
+        a->GetProperty()->SetColor(0.7, 0.7, 0.7);
+        a->SetNumberOfMinorTicks(0);
+        a->GetLabelTextProperty()->SetColor(0.8, 0.8, 0.8);
+    }
+    v_->legend->GetLegendLabelProperty()->SetColor(0.8, 0.8, 0.8);
+    v_->legend->GetLegendTitleProperty()->SetColor(0.8, 0.8, 0.8);
+    r->AddViewProp(v_->legend);
+    for (vtkTextActor* t : {v_->warning.GetPointer(), v_->title.GetPointer()}) {
+        t->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
+        t->GetTextProperty()->SetFontFile(kFont);
+        t->GetTextProperty()->SetFontSize(14);
+        r->AddActor2D(t);
+    }
+    v_->warning->GetTextProperty()->SetColor(kOutsideColour.r, kOutsideColour.g, kOutsideColour.b);
+    v_->warning->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    v_->warning->SetPosition(0.08, 0.93);
+    v_->title->GetTextProperty()->SetColor(0.85, 0.85, 0.85);
+    v_->title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    v_->title->SetPosition(0.55, 0.93);
+    r->GetActiveCamera()->ParallelProjectionOn();
+}
+
+BackplotScene::~BackplotScene() = default;
+
+vtkRenderer* BackplotScene::renderer() const {
+    return v_->renderer;
+}
+
+void BackplotScene::setPath(const toolpath::ProgrammedPath& path) {
+    setPath(toolpath::ProgrammedPath(path));
+}
+
+void BackplotScene::setInteracting(bool on) {
+    const bool overlays = !on && mode_ == ViewMode::XZ;
+    v_->legend->SetVisibility(overlays);
+    v_->warning->SetVisibility(!on);
+    v_->title->SetVisibility(!on);
+    v_->bar->SetVisibility(overlays && actual_ != nullptr);
+}
+
+void BackplotScene::setPath(toolpath::ProgrammedPath&& path) {
+    path_ = std::move(path);
+    geom_.build(path_);
+    cumulative_.resize(path_.segments.size());
+    double t = 0;
+    for (std::size_t i = 0; i < path_.segments.size(); ++i)
+        cumulative_[i] = t += path_.segments[i].durationS;
+    playhead_ = -1;
+    buildStatic();
+    buildStock();
+}
+
+void BackplotScene::setActual(const toolpath::ActualPath* a) {
+    actual_ = a;
+    if (!a || a->samples.size() < 2) {
+        v_->actual.data->Initialize();
+        v_->bar->VisibilityOff();
+        return;
+    }
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkFloatArray> err;
+    err->SetName("following_error_um");
+    vtkNew<vtkCellArray> line;
+    line->InsertNextCell(static_cast<vtkIdType>(a->samples.size()));
+    double maxUm = 0;
+    for (std::size_t i = 0; i < a->samples.size(); ++i) {
+        const toolpath::ActualSample& s = a->samples[i];
+        pts->InsertNextPoint(s.z, s.x, 0.2);
+        const double um = std::hypot(s.errX, s.errZ) * 1000.0;
+        maxUm = std::max(maxUm, um);
+        err->InsertNextValue(static_cast<float>(um));
+        line->InsertCellPoint(static_cast<vtkIdType>(i));
+    }
+    v_->actual.data->Initialize();
+    v_->actual.data->SetPoints(pts);
+    v_->actual.data->SetLines(line);
+    v_->actual.data->GetPointData()->SetScalars(err);
+    v_->lut->SetTableRange(0, std::max(maxUm, 1.0));
+    v_->lut->Build();
+    v_->bar->SetVisibility(mode_ == ViewMode::XZ);
+}
+
+void BackplotScene::setStock(const std::optional<stock::Blank>& blank) {
+    blank_ = blank;
+    buildStock();
+}
+
+void BackplotScene::buildStatic() {
+    // The limit rectangle in the current coordinates of the start.
+    std::vector<float> lim;
+    const toolpath::AxisLimits& lx = path_.limitX;
+    const toolpath::AxisLimits& lz = path_.limitZ;
+    if (lx.present && lz.present && lx.on && lz.on) {
+        const float x0 = static_cast<float>(lx.minMm - lx.offsetMm),
+                    x1 = static_cast<float>(lx.maxMm - lx.offsetMm);
+        const float z0 = static_cast<float>(lz.minMm - lz.offsetMm),
+                    z1 = static_cast<float>(lz.maxMm - lz.offsetMm);
+        lim = {z0, x0, z1, x0, z1, x0, z1, x1, z1, x1, z0, x1, z0, x1, z0, x0};
+    }
+    v_->limit.lines(lim, -0.1);
+    // «ВНЕ ГРАНИЦ» with the frames.
+    std::string text;
+    int count = 0;
+    for (const toolpath::Segment& s : path_.segments)
+        if (s.outside) {
+            if (count < 8)
+                text += (count ? ", L" : " L") + std::to_string(s.program) + " N" + std::to_string(s.n);
+            ++count;
+        }
+    if (count > 8)
+        text += " … (" + std::to_string(count) + ")";
+    v_->warning->SetInput(count ? ("ВНЕ ГРАНИЦ:" + text).c_str() : "");
+    char t[160];
+    std::snprintf(t, sizeof t, "L%d  %zu segments  X %s", path_.program, path_.segments.size(),
+                  path_.diameterX ? "\xE2\x8C\x80 diameter" : "radius");
+    v_->title->SetInput(t);
+}
+
+void BackplotScene::buildStock() {
+    if (!blank_) {
+        v_->stock2d.data->Initialize();
+        v_->stock3d.data->Initialize();
+        v_->stockFill.data->Initialize();
+        return;
+    }
+    stock::Stock s(*blank_);
+    s.cutPath(path_, stock::Tool{});
+    const double shown = path_.diameterX ? 2.0 : 1.0;
+    std::vector<float> outline;
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkCellArray> rings;
+    for (std::size_t i = 0; i < s.polygons(); ++i) {
+        std::vector<stock::Ring> all = s.holes(i);
+        all.insert(all.begin(), s.outer(i));
+        for (const stock::Ring& ring : all) {
+            const vtkIdType first = pts->GetNumberOfPoints();
+            rings->InsertNextCell(static_cast<vtkIdType>(ring.size() + 1));
+            for (std::size_t k = 0; k < ring.size(); ++k) {
+                const stock::PointZR& a = ring[k];
+                const stock::PointZR& b = ring[(k + 1) % ring.size()];
+                outline.insert(outline.end(), {static_cast<float>(a.z), static_cast<float>(a.r * shown),
+                                               static_cast<float>(b.z), static_cast<float>(b.r * shown)});
+                pts->InsertNextPoint(a.r, 0, a.z);
+                rings->InsertCellPoint(first + static_cast<vtkIdType>(k));
+            }
+            rings->InsertCellPoint(first);
+        }
+    }
+    v_->stock2d.lines(outline, -0.2);
+    {
+        vtkNew<vtkPoints> fp;
+        vtkNew<vtkCellArray> polys;
+        for (std::size_t i = 0; i < s.polygons(); ++i) {
+            const stock::Ring ring = s.outer(i);
+            polys->InsertNextCell(static_cast<vtkIdType>(ring.size()));
+            for (const stock::PointZR& q : ring)
+                polys->InsertCellPoint(fp->InsertNextPoint(q.z, q.r * shown, -0.3));
+        }
+        vtkNew<vtkPolyData> pd;
+        pd->SetPoints(fp);
+        pd->SetPolys(polys);
+        vtkNew<vtkTriangleFilter> tri;
+        tri->SetInputData(pd);
+        tri->Update();
+        v_->stockFill.data->DeepCopy(tri->GetOutput());
+    }
+    vtkNew<vtkPolyData> profile;
+    profile->SetPoints(pts);
+    profile->SetLines(rings);
+    vtkNew<vtkRotationalExtrusionFilter> revolve;
+    revolve->SetInputData(profile);
+    revolve->SetResolution(8 * (1 - blank_->detail) + 8); // detail -1..-5 -> 24..56
+    revolve->SetAngle(360);
+    revolve->CappingOff();
+    vtkNew<vtkPolyDataNormals> normals;
+    normals->SetInputConnection(revolve->GetOutputPort());
+    normals->Update();
+    v_->stock3d.data->DeepCopy(normals->GetOutput());
+}
+
+void BackplotScene::setViewMode(ViewMode m) {
+    mode_ = m;
+    const bool solid = m == ViewMode::Solid3D;
+    v_->stock3d.actor->SetVisibility(solid);
+    v_->stock2d.actor->SetVisibility(!solid);
+    v_->stockFill.actor->SetVisibility(!solid);
+    v_->limit.actor->SetVisibility(!solid);
+    v_->legend->SetVisibility(!solid);
+    v_->bar->SetVisibility(!solid && actual_ != nullptr);
+    // In 3D the path is drawn at its radius (the body is revolved in radius).
+    const double ys = solid && path_.diameterX ? 0.5 : 1.0;
+    for (Layer* l : {&v_->feed, &v_->rapid, &v_->outside, &v_->points, &v_->tool, &v_->highlight,
+                     &v_->actual})
+        l->actor->SetScale(1, ys, 1);
+    vtkCamera* cam = v_->renderer->GetActiveCamera();
+    cam->SetParallelProjection(!solid);
+}
+
+ViewWindow BackplotScene::window(int w, int h) const {
+    vtkCamera* cam = v_->renderer->GetActiveCamera();
+    double f[3];
+    cam->GetFocalPoint(f);
+    ViewWindow vw;
+    if (mode_ == ViewMode::XZ) {
+        const double half = cam->GetParallelScale();
+        vw.worldPerPixel = 2 * half / std::max(h, 1);
+        const double halfW = vw.worldPerPixel * w / 2;
+        vw.x0 = f[0] - halfW, vw.x1 = f[0] + halfW, vw.y0 = f[1] - half, vw.y1 = f[1] + half;
+    } else {
+        const double* b = geom_.bounds();
+        vw.x0 = b[0], vw.x1 = b[1], vw.y0 = b[2], vw.y1 = b[3];
+        const double d = cam->GetDistance() * std::tan(cam->GetViewAngle() * 3.14159265 / 360) * 2;
+        vw.worldPerPixel = d / std::max(h, 1);
+    }
+    return vw;
+}
+
+void BackplotScene::fit(int w, int h) {
+    const double* b = geom_.bounds();
+    double x0 = b[0], x1 = b[1], y0 = b[2], y1 = b[3];
+    const auto grow = [&](double x, double y) {
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    };
+    const toolpath::AxisLimits& lx = path_.limitX;
+    const toolpath::AxisLimits& lz = path_.limitZ;
+    if (lx.present && lz.present && lx.on && lz.on) {
+        grow(lz.minMm - lz.offsetMm, lx.minMm - lx.offsetMm);
+        grow(lz.maxMm - lz.offsetMm, lx.maxMm - lx.offsetMm);
+    }
+    if (blank_) {
+        grow(std::min(0.0, blank_->outerLengthMm), 0);
+        grow(std::max(0.0, blank_->outerLengthMm), blank_->outerDiameterMm * (path_.diameterX ? 1 : 0.5));
+    }
+    vtkCamera* cam = v_->renderer->GetActiveCamera();
+    const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    if (mode_ == ViewMode::XZ) {
+        const double aspect = static_cast<double>(std::max(w, 1)) / std::max(h, 1);
+        const double half = std::max((y1 - y0) / 2, (x1 - x0) / 2 / aspect) * 1.08;
+        cam->SetFocalPoint(cx, cy, 0);
+        cam->SetPosition(cx, cy, 1000);
+        cam->SetViewUp(0, 1, 0);
+        cam->SetParallelScale(std::max(half, 1e-3));
+        v_->renderer->ResetCameraClippingRange(cx - 1e6, cx + 1e6, cy - 1e6, cy + 1e6, -10, 10);
+    } else {
+        const double r = std::max(x1 - x0, y1 - y0);
+        cam->SetFocalPoint(cx, 0, 0);
+        cam->SetPosition(cx + r * 0.6, r * 0.9, r * 1.6);
+        cam->SetViewUp(0, 1, 0);
+        v_->renderer->ResetCameraClippingRange();
+        v_->renderer->ResetCamera();
+    }
+    refresh(w, h);
+}
+
+void BackplotScene::refresh(int w, int h) {
+    const ViewWindow vw = window(w, h);
+    const std::size_t limit = playhead_ < 0 ? path_.segments.size() : segmentAt(playhead_) + 1;
+    const LodLines lod = geom_.simplify(vw, limit);
+    v_->feed.lines(lod.feed, 0);
+    v_->outside.lines(lod.outside, 0.1);
+    // Dashes of 8 px with gaps of 5 px.
+    std::vector<float> dashes;
+    const double on = 8 * vw.worldPerPixel, period = 13 * vw.worldPerPixel;
+    for (std::size_t i = 0; i + 3 < lod.rapid.size() && dashes.size() < 4'000'000; i += 4) {
+        const double ax = lod.rapid[i], ay = lod.rapid[i + 1], bx = lod.rapid[i + 2], by = lod.rapid[i + 3];
+        const double len = std::hypot(bx - ax, by - ay);
+        if (len <= 0)
+            continue;
+        const double ux = (bx - ax) / len, uy = (by - ay) / len;
+        for (double s = 0; s < len; s += period) {
+            const double e = std::min(s + on, len);
+            dashes.insert(dashes.end(), {static_cast<float>(ax + ux * s), static_cast<float>(ay + uy * s),
+                                         static_cast<float>(ax + ux * e), static_cast<float>(ay + uy * e)});
+        }
+    }
+    v_->rapid.lines(dashes, 0);
+    // Diamonds of 4 px.
+    std::vector<float> dia;
+    const float d = static_cast<float>(4 * vw.worldPerPixel);
+    for (std::size_t i = 0; i + 1 < lod.points.size(); i += 2) {
+        const float x = lod.points[i], y = lod.points[i + 1];
+        dia.insert(dia.end(), {x - d, y, x, y + d, x, y + d, x + d, y, x + d, y, x, y - d, x, y - d, x - d, y});
+    }
+    v_->points.lines(dia, 0.05);
+    // The tool: where the playhead is (the end when all is shown), a cross of 8 px.
+    double tx = path_.end.z, ty = path_.end.x;
+    if (playhead_ >= 0 && !path_.segments.empty()) {
+        const std::size_t k = segmentAt(playhead_);
+        const toolpath::Segment& s = path_.segments[k];
+        const double t0 = segmentStart(k), dur = s.durationS;
+        double f = dur > 0 ? std::clamp((playhead_ - t0) / dur, 0.0, 1.0) : 1.0;
+        // Along the legs by length (the legs of a dogleg take their share of time).
+        const toolpath::PointMm* p = path_.pointsOf(s);
+        double total = 0;
+        for (int i = 1; i < s.pointCount; ++i)
+            total += std::hypot(p[i].z - p[i - 1].z, p[i].x - p[i - 1].x);
+        double want = f * total;
+        tx = p[0].z, ty = p[0].x;
+        for (int i = 1; i < s.pointCount; ++i) {
+            const double l = std::hypot(p[i].z - p[i - 1].z, p[i].x - p[i - 1].x);
+            if (want <= l && l > 0) {
+                tx = p[i - 1].z + (p[i].z - p[i - 1].z) * want / l;
+                ty = p[i - 1].x + (p[i].x - p[i - 1].x) * want / l;
+                break;
+            }
+            want -= l;
+            tx = p[i].z, ty = p[i].x;
+        }
+    }
+    const float c = static_cast<float>(8 * vw.worldPerPixel);
+    const float fx = static_cast<float>(tx), fy = static_cast<float>(ty);
+    v_->tool.lines({fx - c, fy, fx + c, fy, fx, fy - c, fx, fy + c, fx, fy, fx + c, fy + c}, 0.3);
+    // The selected line's segments.
+    std::vector<float> hl;
+    if (hlLine_ > 0)
+        for (const toolpath::Segment& s : path_.segments) {
+            if (s.line != hlLine_ || s.program != hlProgram_)
+                continue;
+            const toolpath::PointMm* p = path_.pointsOf(s);
+            for (int i = 1; i < s.pointCount && hl.size() < 400000; ++i)
+                hl.insert(hl.end(), {static_cast<float>(p[i - 1].z), static_cast<float>(p[i - 1].x),
+                                     static_cast<float>(p[i].z), static_cast<float>(p[i].x)});
+        }
+    v_->highlight.lines(hl, 0.25);
+}
+
+void BackplotScene::setPlayhead(double seconds) {
+    playhead_ = seconds;
+}
+
+std::size_t BackplotScene::segmentAt(double seconds) const {
+    if (cumulative_.empty())
+        return 0;
+    const auto it = std::lower_bound(cumulative_.begin(), cumulative_.end(), seconds);
+    return std::min<std::size_t>(static_cast<std::size_t>(it - cumulative_.begin()),
+                                 cumulative_.size() - 1);
+}
+
+long BackplotScene::pick(double dx, double dy, int w, int h) const {
+    if (mode_ != ViewMode::XZ)
+        return -1;
+    const ViewWindow vw = window(w, h);
+    const double x = vw.x0 + dx * vw.worldPerPixel, y = vw.y0 + dy * vw.worldPerPixel;
+    return geom_.pick(x, y, 5 * vw.worldPerPixel);
+}
+
+void BackplotScene::highlightLine(int program, int line) {
+    hlProgram_ = program;
+    hlLine_ = line;
+}
+
+} // namespace k528::backplot

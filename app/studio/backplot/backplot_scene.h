@@ -1,0 +1,99 @@
+// The backplot scene in VTK (no Qt: the studio's dock and `k528 plot` draw the
+// same scene): the lathe view with Z horizontal and X vertical (X as the
+// machine shows it: diameter or radius), feed solid and rapid dashed in
+// distinct colours (OpenGL2 has no stipple: dashes are separate cells),
+// segments beyond the software limits highlighted, programmed points as
+// diamonds, the tool, the limit rectangle (C46/C47, C98/C99, drawn in the
+// current coordinates of the start), a scale legend with rulers, the actual
+// path coloured by following error with a legend in µm, and the stock: its
+// half profile in XZ, revolved (vtkRotationalExtrusionFilter) in the 3D view.
+//
+// Level of detail: path_geometry.h simplifies for the camera; the scene's
+// polydata are static buffers rebuilt only by refresh() (after a zoom or
+// pan ends, or when the playhead moves), so interaction renders a few
+// thousand cells whatever the size of the program.
+#pragma once
+
+#include "backplot/path_geometry.h"
+#include "stock/stock.h"
+#include "toolpath/actual_path.h"
+#include "toolpath/programmed_path.h"
+
+#include <memory>
+#include <optional>
+
+class vtkRenderer;
+
+namespace k528::backplot {
+
+struct Rgb {
+    double r, g, b;
+};
+// The scene's colours (tests check pixels against them).
+inline constexpr Rgb kBackground{0.10, 0.11, 0.13};
+inline constexpr Rgb kFeedColour{0.15, 0.85, 0.25};
+inline constexpr Rgb kRapidColour{1.00, 0.70, 0.00};
+inline constexpr Rgb kOutsideColour{1.00, 0.15, 0.15};
+inline constexpr Rgb kLimitColour{0.30, 0.55, 1.00};
+inline constexpr Rgb kPointColour{0.90, 0.90, 0.90};
+inline constexpr Rgb kToolColour{1.00, 0.20, 1.00};
+inline constexpr Rgb kStockColour{0.45, 0.47, 0.52};
+
+enum class ViewMode { XZ, Solid3D };
+
+class BackplotScene {
+public:
+    BackplotScene();
+    ~BackplotScene();
+    vtkRenderer* renderer() const;
+
+    void setPath(const toolpath::ProgrammedPath& path);
+    void setPath(toolpath::ProgrammedPath&& path);
+    // While the user pans or zooms: the 2D overlays (rulers, texts) are
+    // hidden — they are rebuilt every frame and cost more than the path.
+    void setInteracting(bool on);
+    void setActual(const toolpath::ActualPath* actual); // null: none
+    void setStock(const std::optional<stock::Blank>& blank); // cut by the path when shown
+    const toolpath::ProgrammedPath& path() const { return path_; }
+    const PathGeometry& geometry() const { return geom_; }
+
+    void setViewMode(ViewMode m);
+    ViewMode viewMode() const { return mode_; }
+    // Camera to the whole path, limits and stock; window size in pixels.
+    void fit(int widthPx, int heightPx);
+    // Rebuilds the level of detail for the current camera (call after
+    // zoom/pan ends and after the window resized).
+    void refresh(int widthPx, int heightPx);
+
+    // Playback: the path drawn up to time `seconds` from the start (the tool
+    // there); a negative time shows all.
+    void setPlayhead(double seconds);
+    double totalSeconds() const { return cumulative_.empty() ? 0 : cumulative_.back(); }
+    // The start time of segment i (step by frame).
+    double segmentStart(std::size_t i) const { return i == 0 ? 0 : cumulative_[i - 1]; }
+    std::size_t segmentAt(double seconds) const;
+
+    // Display (pixels, origin bottom-left) -> world; the segment under it within 5 px, -1 none.
+    long pick(double displayX, double displayY, int widthPx, int heightPx) const;
+    // Highlights the segments of one source line (0: none).
+    void highlightLine(int program, int line);
+
+    // World coordinates (Z, X) of the window's centre and the size of a pixel.
+    ViewWindow window(int widthPx, int heightPx) const;
+
+private:
+    struct Vtk;
+    std::unique_ptr<Vtk> v_;
+    toolpath::ProgrammedPath path_;
+    PathGeometry geom_;
+    std::vector<double> cumulative_;
+    std::optional<stock::Blank> blank_;
+    const toolpath::ActualPath* actual_ = nullptr;
+    ViewMode mode_ = ViewMode::XZ;
+    double playhead_ = -1;
+    int hlProgram_ = 0, hlLine_ = 0;
+    void buildStatic();
+    void buildStock();
+};
+
+} // namespace k528::backplot

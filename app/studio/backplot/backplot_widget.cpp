@@ -1,0 +1,318 @@
+#include "backplot/backplot_widget.h"
+
+#include "backplot/vtk_gl_widget.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMouseEvent>
+#include <QSlider>
+#include <QSplitter>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleRubberBand2D.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+
+namespace k528::studio::backplot {
+
+namespace {
+constexpr double kSpeeds[] = {0.1, 0.5, 1, 2, 5, 10, 100, -1}; // -1: fastest
+constexpr int kScrubSteps = 10000;
+constexpr int kTickMs = 40;
+} // namespace
+
+BackplotWidget::BackplotWidget(QWidget* parent)
+    : QWidget(parent), scene_(std::make_unique<k528::backplot::BackplotScene>()) {
+    setObjectName("backplot");
+    auto* top = new QHBoxLayout;
+    fitButton_ = new QToolButton(this);
+    fitButton_->setObjectName("backplot.fit");
+    viewCombo_ = new QComboBox(this);
+    viewCombo_->setObjectName("backplot.view");
+    viewCombo_->addItems({QString(), QString()});
+    pickLabel_ = new QLabel(this);
+    pickLabel_->setObjectName("backplot.pick");
+    top->addWidget(fitButton_);
+    top->addWidget(viewCombo_);
+    top->addWidget(pickLabel_, 1);
+
+    gl_ = new VtkGlWidget(this);
+    gl_->setObjectName("backplot.gl");
+    gl_->setMinimumSize(320, 200);
+    gl_->renderWindow()->AddRenderer(scene_->renderer());
+    style2d_ = vtkInteractorStyleRubberBand2D::New();
+    style3d_ = vtkInteractorStyleTrackballCamera::New();
+    gl_->interactor()->SetInteractorStyle(style2d_);
+
+    outsideTitle_ = new QLabel(this);
+    outsideList_ = new QListWidget(this);
+    outsideList_->setObjectName("backplot.outside");
+    auto* side = new QWidget(this);
+    side->setMaximumWidth(240);
+    auto* sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(outsideTitle_);
+    sideLayout->addWidget(outsideList_);
+    auto* split = new QSplitter(this);
+    split->addWidget(gl_);
+    split->addWidget(side);
+    split->setStretchFactor(0, 5);
+    split->setStretchFactor(1, 1);
+
+    auto* bottom = new QHBoxLayout;
+    backButton_ = new QToolButton(this);
+    backButton_->setObjectName("backplot.stepBack");
+    backButton_->setText(QStringLiteral("|◀"));
+    playButton_ = new QToolButton(this);
+    playButton_->setObjectName("backplot.play");
+    playButton_->setCheckable(true);
+    forwardButton_ = new QToolButton(this);
+    forwardButton_->setObjectName("backplot.stepForward");
+    forwardButton_->setText(QStringLiteral("▶|"));
+    speedCombo_ = new QComboBox(this);
+    speedCombo_->setObjectName("backplot.speed");
+    for (double s : kSpeeds)
+        speedCombo_->addItem(s > 0 ? QStringLiteral("×%1").arg(s) : QString());
+    speedCombo_->setCurrentIndex(2);
+    scrub_ = new QSlider(Qt::Horizontal, this);
+    scrub_->setObjectName("backplot.scrub");
+    scrub_->setRange(0, kScrubSteps);
+    scrub_->setValue(kScrubSteps);
+    timeLabel_ = new QLabel(this);
+    timeLabel_->setObjectName("backplot.time");
+    bottom->addWidget(backButton_);
+    bottom->addWidget(playButton_);
+    bottom->addWidget(forwardButton_);
+    bottom->addWidget(speedCombo_);
+    bottom->addWidget(scrub_, 1);
+    bottom->addWidget(timeLabel_);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addLayout(top);
+    layout->addWidget(split, 1);
+    layout->addLayout(bottom);
+
+    timer_ = new QTimer(this);
+    timer_->setInterval(kTickMs);
+    connect(timer_, &QTimer::timeout, this, &BackplotWidget::tickPlayback);
+    connect(fitButton_, &QToolButton::clicked, this, &BackplotWidget::fit);
+    connect(viewCombo_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        setViewMode(i == 1 ? k528::backplot::ViewMode::Solid3D : k528::backplot::ViewMode::XZ);
+    });
+    connect(playButton_, &QToolButton::toggled, this, [this](bool on) {
+        if (on) {
+            if (playhead_ < 0 || playhead_ >= scene_->totalSeconds())
+                setPlayhead(0);
+            timer_->start();
+        } else {
+            timer_->stop();
+        }
+        retranslate();
+    });
+    connect(backButton_, &QToolButton::clicked, this, [this] { stepFrame(-1); });
+    connect(forwardButton_, &QToolButton::clicked, this, [this] { stepFrame(1); });
+    connect(scrub_, &QSlider::sliderMoved, this, [this](int v) {
+        setPlayhead(v >= kScrubSteps ? -1 : scene_->totalSeconds() * v / kScrubSteps);
+    });
+    connect(gl_, &VtkGlWidget::sizeChanged, this, [this](int w, int h) {
+        pw_ = w, ph_ = h;
+        if (!userMoved_) // until the user pans or zooms, the view keeps the whole path
+            scene_->fit(pw_, ph_);
+        else
+            scene_->refresh(pw_, ph_);
+    });
+    connect(gl_, &VtkGlWidget::interactionStarted, this, [this] { scene_->setInteracting(true); });
+    connect(gl_, &VtkGlWidget::interactionEnded, this, [this] {
+        userMoved_ = true;
+        scene_->setInteracting(false);
+        refresh();
+    });
+    connect(outsideList_, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (row < 0)
+            return;
+        const QListWidgetItem* it = outsideList_->item(row);
+        emit lineActivated(it->data(Qt::UserRole).toInt(), it->data(Qt::UserRole + 1).toInt());
+        selectLine(it->data(Qt::UserRole).toInt(), it->data(Qt::UserRole + 1).toInt());
+    });
+    gl_->installEventFilter(this);
+    retranslate();
+}
+
+BackplotWidget::~BackplotWidget() {
+    style2d_->Delete();
+    style3d_->Delete();
+}
+
+bool BackplotWidget::eventFilter(QObject* o, QEvent* e) {
+    if (o == gl_ && e->type() == QEvent::MouseButtonPress) {
+        auto* m = static_cast<QMouseEvent*>(e);
+        if (m->button() == Qt::LeftButton)
+            pressPos_ = m->position().toPoint();
+    } else if (o == gl_ && e->type() == QEvent::MouseButtonRelease) {
+        auto* m = static_cast<QMouseEvent*>(e);
+        if (m->button() == Qt::LeftButton &&
+            (m->position().toPoint() - pressPos_).manhattanLength() <= 3)
+            pickAt(pressPos_.x(), pressPos_.y());
+    }
+    return QWidget::eventFilter(o, e);
+}
+
+void BackplotWidget::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void BackplotWidget::retranslate() {
+    fitButton_->setText(tr("Fit"));
+    fitButton_->setToolTip(tr("Show the whole path (middle button pans, the wheel zooms)"));
+    viewCombo_->setItemText(0, tr("XZ view"));
+    viewCombo_->setItemText(1, tr("3D view"));
+    speedCombo_->setItemText(speedCombo_->count() - 1, tr("fastest"));
+    playButton_->setText(playButton_->isChecked() ? tr("Pause") : tr("Play"));
+    backButton_->setToolTip(tr("Previous frame"));
+    forwardButton_->setToolTip(tr("Next frame"));
+    outsideTitle_->setText(tr("Beyond the software limits"));
+    if (pickLabel_->text().isEmpty())
+        pickLabel_->setText(tr("Click a segment to find its frame"));
+    updateOutsideList();
+}
+
+void BackplotWidget::showProgram(const profile::MachineProfile& profile,
+                                 const program::ProgramStore& store, int number,
+                                 const std::optional<stock::Blank>& blank) {
+    scene_->setStock(blank);
+    showPath(toolpath::programmedPath(profile, store, number));
+}
+
+void BackplotWidget::showActualRun(const profile::MachineProfile& profile,
+                                   const program::ProgramStore& store, int number) {
+    engine::RunOptions ro;
+    ro.maxSeconds = 600;
+    actual_ = std::make_unique<toolpath::ActualPath>(
+        toolpath::actualPath(profile, store, number, ro, 1.0));
+    scene_->setActual(actual_.get());
+    refresh();
+}
+
+void BackplotWidget::showPath(toolpath::ProgrammedPath path) {
+    scene_->setPath(std::move(path));
+    scene_->setActual(actual_ && actual_->result.program == scene_->path().program ? actual_.get()
+                                                                                    : nullptr);
+    playhead_ = -1;
+    scrub_->setValue(kScrubSteps);
+    updateOutsideList();
+    fit();
+}
+
+void BackplotWidget::updateOutsideList() {
+    outsideList_->clear();
+    int shown = 0;
+    for (const toolpath::Segment& s : scene_->path().segments) {
+        if (!s.outside)
+            continue;
+        if (++shown > 1000)
+            break;
+        // «ВНЕ ГРАНИЦ» is the NC-200's own text (the panel's language).
+        auto* it = new QListWidgetItem(QStringLiteral("ВНЕ ГРАНИЦ  L%1 N%2  ").arg(s.program).arg(s.n) +
+                                       tr("line %1").arg(s.line));
+        it->setData(Qt::UserRole, s.program);
+        it->setData(Qt::UserRole + 1, s.line);
+        outsideList_->addItem(it);
+    }
+}
+
+void BackplotWidget::fit() {
+    userMoved_ = false;
+    scene_->fit(pw_, ph_);
+    gl_->update();
+}
+
+void BackplotWidget::refresh() {
+    scene_->refresh(pw_, ph_);
+    gl_->update();
+}
+
+void BackplotWidget::setViewMode(k528::backplot::ViewMode m) {
+    scene_->setViewMode(m);
+    gl_->interactor()->SetInteractorStyle(m == k528::backplot::ViewMode::XZ ? style2d_ : style3d_);
+    if (viewCombo_->currentIndex() != (m == k528::backplot::ViewMode::XZ ? 0 : 1))
+        viewCombo_->setCurrentIndex(m == k528::backplot::ViewMode::XZ ? 0 : 1);
+    fit();
+}
+
+void BackplotWidget::selectLine(int program, int line) {
+    scene_->highlightLine(program, line);
+    refresh();
+}
+
+void BackplotWidget::setPlayhead(double seconds) {
+    playhead_ = seconds;
+    scene_->setPlayhead(seconds);
+    const double total = scene_->totalSeconds();
+    const double t = seconds < 0 ? total : seconds;
+    timeLabel_->setText(QStringLiteral("%1 / %2 s").arg(t, 0, 'f', 1).arg(total, 0, 'f', 1));
+    if (!scrub_->isSliderDown())
+        scrub_->setValue(seconds < 0 || total <= 0 ? kScrubSteps
+                                                   : static_cast<int>(kScrubSteps * t / total));
+    refresh();
+}
+
+void BackplotWidget::stepFrame(int dir) {
+    const std::size_t n = scene_->path().segments.size();
+    if (n == 0)
+        return;
+    std::size_t k = playhead_ < 0 ? n - 1 : scene_->segmentAt(playhead_);
+    if (dir < 0 && k > 0)
+        --k;
+    else if (dir > 0 && k + 1 < n)
+        ++k;
+    else if (dir > 0) {
+        setPlayhead(-1);
+        return;
+    }
+    // The end of segment k.
+    setPlayhead(scene_->segmentStart(k) + scene_->path().segments[k].durationS);
+    const toolpath::Segment& s = scene_->path().segments[k];
+    pickLabel_->setText(tr("L%1 N%2, line %3").arg(s.program).arg(s.n).arg(s.line));
+    emit lineActivated(s.program, s.line);
+}
+
+void BackplotWidget::tickPlayback() {
+    const double speed = kSpeeds[std::clamp(speedCombo_->currentIndex(), 0, 7)];
+    const double total = scene_->totalSeconds();
+    double t = playhead_ < 0 ? 0 : playhead_;
+    t = speed < 0 ? total : t + speed * kTickMs / 1000.0;
+    if (t >= total) {
+        setPlayhead(-1);
+        playButton_->setChecked(false);
+        return;
+    }
+    setPlayhead(t);
+}
+
+long BackplotWidget::pickAt(int x, int y) {
+    const qreal dpr = devicePixelRatioF();
+    const long seg = scene_->pick(x * dpr, ph_ - y * dpr, pw_, ph_);
+    if (seg < 0) {
+        pickLabel_->setText(tr("No segment here"));
+        return -1;
+    }
+    const toolpath::Segment& s = scene_->path().segments[static_cast<std::size_t>(seg)];
+    pickLabel_->setText(tr("L%1 N%2, line %3").arg(s.program).arg(s.n).arg(s.line));
+    selectLine(s.program, s.line);
+    emit lineActivated(s.program, s.line);
+    return seg;
+}
+
+} // namespace k528::studio::backplot

@@ -1,0 +1,85 @@
+// The backplot view (issue 12): the VTK scene (backplot_scene.h) in our own
+// QOpenGLWidget bridge, with fit, pan (middle button), zoom (wheel, right
+// button), the XZ and 3D views, playback (play/pause, speed ×0.1…×100 and
+// fastest, scrub by time, step by frame), picking (a click names the frame
+// and line of the segment under the cursor and asks the editor to go there),
+// the list of segments «ВНЕ ГРАНИЦ», and the actual path of a simulated run
+// coloured by following error.
+#pragma once
+
+#include "backplot/backplot_scene.h"
+
+#include <QPoint>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QSlider;
+class QTimer;
+class QToolButton;
+class vtkInteractorStyle;
+
+namespace k528::studio::backplot {
+
+class VtkGlWidget;
+
+class BackplotWidget : public QWidget {
+    Q_OBJECT
+public:
+    explicit BackplotWidget(QWidget* parent = nullptr);
+    ~BackplotWidget() override;
+
+    // Computes the programmed path of program `number` (the engine's preview)
+    // and shows it; `blank` is the stock, if the file keeps one.
+    void showProgram(const profile::MachineProfile& profile, const program::ProgramStore& store,
+                     int number, const std::optional<stock::Blank>& blank = std::nullopt);
+    // Runs the program on the simulated machine and overlays the actual path.
+    void showActualRun(const profile::MachineProfile& profile, const program::ProgramStore& store,
+                       int number);
+    void showPath(toolpath::ProgrammedPath path);
+
+    k528::backplot::BackplotScene& scene() { return *scene_; }
+    VtkGlWidget* glWidget() const { return gl_; }
+    void fit();
+    void setViewMode(k528::backplot::ViewMode m);
+    // Selects the segments of a source line (the editor's cursor).
+    void selectLine(int program, int line);
+    // Picks at widget pixel (x, y from the top-left); the segment or -1.
+    long pickAt(int x, int y);
+    void changeEvent(QEvent* e) override;
+    bool eventFilter(QObject* o, QEvent* e) override;
+
+signals:
+    void lineActivated(int program, int line);
+
+private:
+    void retranslate();
+    void refresh();
+    void setPlayhead(double seconds);
+    void stepFrame(int dir);
+    void tickPlayback();
+    void updateOutsideList();
+
+    std::unique_ptr<k528::backplot::BackplotScene> scene_;
+    std::unique_ptr<toolpath::ActualPath> actual_;
+    VtkGlWidget* gl_ = nullptr;
+    QToolButton *fitButton_ = nullptr, *playButton_ = nullptr, *backButton_ = nullptr,
+                *forwardButton_ = nullptr;
+    QComboBox *viewCombo_ = nullptr, *speedCombo_ = nullptr;
+    QSlider* scrub_ = nullptr;
+    QLabel *timeLabel_ = nullptr, *pickLabel_ = nullptr, *outsideTitle_ = nullptr;
+    QListWidget* outsideList_ = nullptr;
+    QTimer* timer_ = nullptr;
+    vtkInteractorStyle* style2d_ = nullptr;
+    vtkInteractorStyle* style3d_ = nullptr;
+    double playhead_ = -1;
+    int pw_ = 1, ph_ = 1;
+    bool userMoved_ = false; // panned or zoomed since the last fit
+    QPoint pressPos_;
+};
+
+} // namespace k528::studio::backplot

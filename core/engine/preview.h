@@ -1,0 +1,49 @@
+// Preview mode of the one interpreter (issue 12): the engine runs a program
+// with instant axes — every move arrives at once, M functions are
+// acknowledged at once, dwells, M00 and moves-until-signal take no waiting —
+// and reports each frame's motion to a PreviewSink. Everything else (R
+// arithmetic, jumps, calls, G90/G91, Gx92, the coordinate components, the
+// diameter axis, the run-time checks and their messages) is the run's own
+// code. Set Core::preview (through engine/preview_run.h) to switch it on.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace k528::engine {
+
+enum class PreviewKind : std::uint8_t { Rapid, Feed, Oscillation, Signal, Handwheel };
+
+// One axis of a frame's motion, in display discretes of the axis (machine
+// system); `offsetDisc` = machine − current at that frame (the active
+// coordinate components), so current = machine − offset. An axis that does
+// not move has from = to = where it stands.
+struct PreviewAxisMotion {
+    bool moves = false;
+    std::int64_t fromDisc = 0, toDisc = 0;
+    std::int64_t offsetDisc = 0;
+    double speedDiscPerMin = 0; // the speed the axis runs at (feed or rapid, capped)
+    double feedDiscPerMin = -1; // the programmed feed (FX/FZ), -1 none (G00)
+    // Oscillation: the two reverse points.
+    std::int64_t oscLoDisc = 0, oscHiDisc = 0;
+};
+
+struct PreviewFrame {
+    int program = 0, line = 0, n = 0;
+    PreviewKind kind = PreviewKind::Feed;
+    std::array<PreviewAxisMotion, 2> axes{};
+};
+
+struct PreviewDwell {
+    int program = 0, line = 0, n = 0;
+    std::int64_t ms = 0;
+};
+
+class PreviewSink {
+public:
+    virtual ~PreviewSink() = default;
+    virtual void motion(const PreviewFrame& f) = 0;
+    virtual void dwell(const PreviewDwell& d) = 0;
+};
+
+} // namespace k528::engine

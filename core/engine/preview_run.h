@@ -1,0 +1,53 @@
+// The preview run (shared/spec/cli.md `k528 path`): the engine's interpreter
+// runs a program with instant axes (engine/preview.h) on the engine's ideal
+// machine and PLC, from the machine's power-on position, without homing
+// (АВТ.БЕЗ ПБТ is set for the preview, so the soft limits do not stop it:
+// the caller marks what leaves them). Stops at the program's end, at a
+// message that stops it, or after `maxFrames` executed frames.
+#pragma once
+
+#include "engine/preview.h"
+#include "engine/views.h"
+#include "profile/profile.h"
+#include "program/model.h"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <vector>
+
+namespace k528::engine {
+
+struct PreviewResult;
+
+struct PreviewOptions {
+    std::map<int, std::int64_t> rPresets; // writable R, checked by the caller
+    std::int64_t maxFrames = 1'000'000;
+    // Called once the machine stands ready, before «Пуск» (axes: the start).
+    std::function<void(const PreviewResult&)> onStart;
+};
+
+enum class PreviewStatus { Completed, Alarm, Limit };
+std::string_view previewStatusName(PreviewStatus s); // "completed", "alarm", "limit"
+
+struct PreviewAxisStart {
+    bool present = false;
+    units::AxisScale scale;
+    std::int64_t machineDisc = 0, currentDisc = 0; // at the start (power-on position)
+    std::int64_t endCurrentDisc = 0, endMachineDisc = 0;
+};
+
+struct PreviewResult {
+    PreviewStatus status = PreviewStatus::Completed;
+    std::vector<AlarmView> alarms;
+    std::int64_t frames = 0;
+    std::array<PreviewAxisStart, 2> axes{};
+    int program = 0, line = 0, frameNumber = 0; // where it stopped
+};
+
+PreviewResult runPreview(const profile::MachineProfile& profile,
+                         const program::ProgramStore& programs, int number,
+                         const PreviewOptions& options, PreviewSink& sink);
+
+} // namespace k528::engine

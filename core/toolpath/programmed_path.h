@@ -1,0 +1,83 @@
+// The programmed toolpath (issue 12; shared/spec/cli.md `k528 path`): the
+// engine's own interpreter runs the program in preview (engine/preview.h,
+// instant axes) and every motion frame becomes a segment — program, frame N,
+// source line, kind, feeds and its corner points in mm as the panel shows
+// them (current coordinates, X as a diameter on a diameter axis).
+//
+// The K528-05 is a positioner (manual 1.1.3): in a frame that moves X and Z
+// each axis runs at its own speed (G01: its FX/FZ; G00: its F УСК.АВТ.), so
+// the segment has a corner where the first axis arrives (a dogleg).
+// Acceleration is not modelled. An oscillation (Gx81) is drawn as its
+// stroke: start, the far reverse point, the near one.
+//
+// Software limits: C46/C47 (X) and C98/C99 (Z), machine system. A segment
+// with a point beyond them (on an axis whose ВКЛ.ПРГ.КОН C10/C62 is on) is
+// `outside` («ВНЕ ГРАНИЦ»). Storage is flat (one point array) so that a
+// million segments fit in ~50 MB.
+#pragma once
+
+#include "engine/preview_run.h"
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace k528::toolpath {
+
+enum class SegmentKind : std::uint8_t { Rapid, Feed, Oscillation, Signal, Handwheel };
+std::string_view kindName(SegmentKind k); // "rapid", "feed", "oscillation", "signal", "handwheel"
+
+struct PointMm {
+    double x = 0, z = 0;
+};
+
+inline constexpr double kNoFeed = std::numeric_limits<double>::quiet_NaN();
+
+struct Segment {
+    int program = 0, line = 0, n = 0;
+    SegmentKind kind = SegmentKind::Feed;
+    bool outside = false;
+    std::uint8_t pointCount = 0;
+    std::uint32_t firstPoint = 0; // into ProgrammedPath::points
+    float feedXMmMin = kNoFeed, feedZMmMin = kNoFeed; // programmed feed of a moving axis, NaN none
+    float durationS = 0; // without acceleration: the slower axis' time (an oscillation: one double stroke)
+    std::uint64_t frameIndex = 0; // order of the frame among the motion frames
+};
+
+struct Dwell {
+    int program = 0, line = 0, n = 0;
+    PointMm at;
+    double seconds = 0;
+};
+
+struct AxisLimits {
+    bool present = false;
+    bool on = false;          // ВКЛ.ПРГ.КОН
+    double minMm = 0, maxMm = 0; // machine system
+    double offsetMm = 0;      // machine − current at the start (to draw them in current coordinates)
+};
+
+struct ProgrammedPath {
+    int program = 0;
+    std::vector<Segment> segments;
+    std::vector<PointMm> points;
+    std::vector<Dwell> dwells;
+    AxisLimits limitX, limitZ;
+    bool diameterX = false;
+    PointMm start, end;
+    engine::PreviewResult run;
+
+    std::size_t size() const { return segments.size(); }
+    const PointMm* pointsOf(const Segment& s) const { return points.data() + s.firstPoint; }
+};
+
+struct PathOptions {
+    engine::PreviewOptions preview;
+};
+
+ProgrammedPath programmedPath(const profile::MachineProfile& profile,
+                              const program::ProgramStore& programs, int number,
+                              const PathOptions& options = {});
+
+} // namespace k528::toolpath
