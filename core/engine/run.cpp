@@ -3,6 +3,7 @@
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -177,6 +178,12 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     };
     while (ctl.timeMs() - since() < limitMs) {
         machine.tick();
+        for (int i = 0; i < kAxisCount; ++i) {
+            const AxisView v = ctl.axisView(axisAt(i));
+            double& peak = res.axes[static_cast<std::size_t>(i)].maxFollowingErrorDisc;
+            if (v.present)
+                peak = std::max(peak, std::fabs(units::internalToDisc(v.errorInternal, v.scale)));
+        }
         const ProgramState s = ctl.state();
         if (s == ProgramState::Ended) {
             status = RunStatus::Completed;
