@@ -19,6 +19,7 @@
 #include "machine/status_views.h"
 #include "profile/builtin.h"
 #include "monitor/program_monitor.h"
+#include "scope/scope_dock.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
@@ -117,6 +118,7 @@ void MainWindow::createDocks() {
     messagesDock_->raise();
     for (QDockWidget* d : {messagesDock_, axesDock_})
         d->setMaximumHeight(140);
+    addScopeDock(this, *session_);
 
 }
 
@@ -138,6 +140,8 @@ void MainWindow::createMenus() {
     viewMenu_ = menuBar()->addMenu(QString());
     for (QDockWidget* d : {k923Dock_, machineDock_, messagesDock_, axesDock_})
         viewMenu_->addAction(d->toggleViewAction());
+    if (auto* scope = findChild<QDockWidget*>("dock.scope"))
+        viewMenu_->addAction(scope->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);
