@@ -96,7 +96,7 @@ private slots:
         }
         QList<QPointF> out;
         b.decimate(0, ScopeSignal::FollowingError, 1, 60000, 800, out);
-        QVERIFY(out.size() <= 800 * 4 + 4);
+        QVERIFY(out.size() <= 800 * 2 + 2);
         QCOMPARE(maxAbs(out), 0.5);
         // A full ring drops the oldest.
         machine::TraceSample s;

@@ -47,47 +47,79 @@ std::size_t ScopeBuffer::lowerBound(std::int64_t tMs) const {
 
 void ScopeBuffer::decimate(int axis, ScopeSignal sig, std::int64_t t0Ms, std::int64_t t1Ms,
                            int columns, QList<QPointF>& out) const {
-    out.clear();
+    QList<QPointF>* outs[1] = {&out};
+    decimate(axis, &sig, 1, t0Ms, t1Ms, columns, outs);
+}
+
+void ScopeBuffer::decimate(int axis, const ScopeSignal* sigs, int count, std::int64_t t0Ms,
+                           std::int64_t t1Ms, int columns, QList<QPointF>* const* out) const {
+    constexpr int kMax = kScopeSignalCount;
+    count = std::min(count, kMax);
+    for (int k = 0; k < count; ++k)
+        out[k]->clear();
     if (size_ == 0 || t1Ms <= t0Ms || columns <= 0)
         return;
     const std::size_t begin = lowerBound(t0Ms), end = lowerBound(t1Ms + 1);
     if (begin >= end)
         return;
-    const double msPerColumn = static_cast<double>(t1Ms - t0Ms) / columns;
-    if (end - begin <= static_cast<std::size_t>(columns) * 4) {
-        for (std::size_t i = begin; i < end; ++i)
-            out.append(QPointF(at(i).tMs / 1000.0, scopeValue(at(i), axis, sig)));
-        return;
-    }
-    std::size_t i = begin;
-    while (i < end) {
-        const int col = static_cast<int>((at(i).tMs - t0Ms) / msPerColumn);
-        const machine::TraceSample& first = at(i);
-        double vFirst = scopeValue(first, axis, sig), vMin = vFirst, vMax = vFirst, vLast = vFirst;
-        std::int64_t tMin = first.tMs, tMax = first.tMs, tLast = first.tMs;
-        for (++i; i < end && static_cast<int>((at(i).tMs - t0Ms) / msPerColumn) == col; ++i) {
-            const double v = scopeValue(at(i), axis, sig);
-            if (v < vMin) {
-                vMin = v;
-                tMin = at(i).tMs;
-            }
-            if (v > vMax) {
-                vMax = v;
-                tMax = at(i).tMs;
-            }
-            vLast = v;
-            tLast = at(i).tMs;
+    const bool raw = end - begin <= static_cast<std::size_t>(columns) * 2;
+    for (int k = 0; k < count; ++k)
+        out[k]->reserve(raw ? static_cast<qsizetype>(end - begin) : columns * 2 + 2);
+    const double columnsPerMs = columns / static_cast<double>(t1Ms - t0Ms);
+    double vMin[kMax], vMax[kMax];
+    std::int64_t tMin[kMax], tMax[kMax];
+    int col = -1;
+    const auto flush = [&] {
+        for (int k = 0; k < count; ++k) {
+            // The smallest and the largest of the column, in their order: the
+            // line through them covers every sample of the column.
+            const bool minFirst = tMin[k] <= tMax[k];
+            out[k]->append(minFirst ? QPointF(tMin[k] / 1000.0, vMin[k])
+                                    : QPointF(tMax[k] / 1000.0, vMax[k]));
+            if (tMin[k] != tMax[k])
+                out[k]->append(minFirst ? QPointF(tMax[k] / 1000.0, vMax[k])
+                                        : QPointF(tMin[k] / 1000.0, vMin[k]));
         }
-        out.append(QPointF(first.tMs / 1000.0, vFirst));
-        if (tMin < tMax) {
-            out.append(QPointF(tMin / 1000.0, vMin));
-            out.append(QPointF(tMax / 1000.0, vMax));
-        } else {
-            out.append(QPointF(tMax / 1000.0, vMax));
-            out.append(QPointF(tMin / 1000.0, vMin));
+    };
+    // The ring as (at most) two contiguous runs.
+    const std::size_t n = ring_.size();
+    const std::size_t first = (head_ + n - size_ + begin) % n;
+    std::size_t left = end - begin;
+    for (std::size_t run = first; left > 0; run = 0) {
+        const std::size_t len = std::min(left, n - run);
+        for (const machine::TraceSample* p = ring_.data() + run; p != ring_.data() + run + len; ++p) {
+            if (raw) {
+                for (int k = 0; k < count; ++k)
+                    out[k]->append(QPointF(p->tMs / 1000.0, scopeValue(*p, axis, sigs[k])));
+                continue;
+            }
+            const int c = static_cast<int>(static_cast<double>(p->tMs - t0Ms) * columnsPerMs);
+            if (c != col) {
+                if (col >= 0)
+                    flush();
+                col = c;
+                for (int k = 0; k < count; ++k) {
+                    vMin[k] = vMax[k] = scopeValue(*p, axis, sigs[k]);
+                    tMin[k] = tMax[k] = p->tMs;
+                }
+                continue;
+            }
+            for (int k = 0; k < count; ++k) {
+                const double v = scopeValue(*p, axis, sigs[k]);
+                if (v < vMin[k]) {
+                    vMin[k] = v;
+                    tMin[k] = p->tMs;
+                }
+                if (v > vMax[k]) {
+                    vMax[k] = v;
+                    tMax[k] = p->tMs;
+                }
+            }
         }
-        out.append(QPointF(tLast / 1000.0, vLast));
+        left -= len;
     }
+    if (!raw && col >= 0)
+        flush();
 }
 
 } // namespace k528::studio

@@ -1,8 +1,8 @@
 // The oscilloscope's memory: the last window of servo-tick samples of both
 // axes (machine::sampleAxes, the same sampling as `k528 run --trace`), kept
 // in a ring, and their reduction to what a chart can draw — per pixel column
-// the first, the smallest, the largest and the last value (min/max
-// decimation keeps every peak of the following error visible).
+// the smallest and the largest value (min/max decimation keeps every peak
+// of the following error visible).
 #pragma once
 
 #include "machine/trace.h"
@@ -33,10 +33,13 @@ public:
         return ring_[(head_ + ring_.size() - size_ + i) % ring_.size()];
     }
     const machine::TraceSample& last() const { return at(size_ - 1); }
-    // Points of `sig` of `axis` over [t0Ms, t1Ms] reduced to at most 4 per
+    // Points of `sig` of `axis` over [t0Ms, t1Ms] reduced to at most 2 per
     // column of `columns` (x in seconds). Fills `out` (its memory reused).
     void decimate(int axis, ScopeSignal sig, std::int64_t t0Ms, std::int64_t t1Ms, int columns,
                   QList<QPointF>& out) const;
+    // The same for several signals of one axis in one pass over the samples.
+    void decimate(int axis, const ScopeSignal* sigs, int count, std::int64_t t0Ms,
+                  std::int64_t t1Ms, int columns, QList<QPointF>* const* out) const;
     // First index with tMs >= t (binary search over the ring).
     std::size_t lowerBound(std::int64_t tMs) const;
 

@@ -262,18 +262,17 @@ void ScopeView::draw(std::int64_t t0, std::int64_t t1) {
     for (int a = 0; a < 2; ++a) {
         AxisChart& c = charts_[static_cast<std::size_t>(a)];
         const int columns = std::max(50, static_cast<int>(c.chart->plotArea().width()));
-        QList<QPointF> sp, pos;
-        buffer_.decimate(a, ScopeSignal::Setpoint, t0, t1, columns, sp);
-        buffer_.decimate(a, ScopeSignal::Position, t0, t1, columns, pos);
-        fitAxis(c.mm, sp, &pos);
-        c.setpoint->replace(sp);
-        c.position->replace(pos);
-        buffer_.decimate(a, ScopeSignal::FollowingError, t0, t1, columns, scratch_);
-        fitAxis(c.error, scratch_);
-        c.followingError->replace(scratch_);
-        buffer_.decimate(a, extra, t0, t1, columns, scratch_);
-        fitAxis(c.extra, scratch_);
-        c.extraSeries->replace(scratch_);
+        const ScopeSignal sigs[4] = {ScopeSignal::Setpoint, ScopeSignal::Position,
+                                     ScopeSignal::FollowingError, extra};
+        QList<QPointF>* outs[4] = {&lists_[0], &lists_[1], &lists_[2], &lists_[3]};
+        buffer_.decimate(a, sigs, 4, t0, t1, columns, outs);
+        fitAxis(c.mm, lists_[0], &lists_[1]);
+        fitAxis(c.error, lists_[2]);
+        fitAxis(c.extra, lists_[3]);
+        c.setpoint->replace(lists_[0]);
+        c.position->replace(lists_[1]);
+        c.followingError->replace(lists_[2]);
+        c.extraSeries->replace(lists_[3]);
         zooming_ = true;
         c.time->setRange(t0 / 1000.0, t1 / 1000.0);
         zooming_ = false;

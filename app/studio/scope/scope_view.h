@@ -98,7 +98,7 @@ private:
     std::int64_t lastFrames_ = -1;
     std::size_t lastAlarms_ = 0;
     std::size_t checkedUpTo_ = 0; // samples looked at by the threshold trigger
-    QList<QPointF> scratch_;
+    std::array<QList<QPointF>, 4> lists_;
     QElapsedTimer fpsClock_;
     int fpsFrames_ = 0;
     double fps_ = 0;
