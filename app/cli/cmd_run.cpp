@@ -67,7 +67,7 @@ json::Value resultJson(const engine::RunResult& r) {
         json::Value j;
         j.set("current", units::discToMm(a.currentDisc, a.scale));
         j.set("machine", units::discToMm(a.machineDisc, a.scale));
-        j.set("max_following_error", units::discToMm(a.maxFollowingErrorDisc, a.scale));
+        j.set("max_following_error", units::fractionalDiscToMm(a.maxFollowingErrorDisc, a.scale));
         axes.set(names[i], std::move(j));
     }
     if (axes.isNull())

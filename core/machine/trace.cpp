@@ -21,8 +21,8 @@ TraceSample sampleAxes(const engine::Controller& ctl, const TraceSample* previou
         const double offsetDisc = static_cast<double>(v.currentDisc - v.machineDisc);
         const double positionDisc = units::internalToDisc(v.absInternal, v.scale) + offsetDisc;
         const double errorDisc = units::internalToDisc(v.errorInternal, v.scale);
-        a.positionMm = units::discToMm(positionDisc, v.scale);
-        a.followingErrorMm = units::discToMm(errorDisc, v.scale);
+        a.positionMm = units::fractionalDiscToMm(positionDisc, v.scale);
+        a.followingErrorMm = units::fractionalDiscToMm(errorDisc, v.scale);
         a.setpointMm = a.positionMm + a.followingErrorMm;
         a.dac = v.dac;
         if (previous && s.tMs > previous->tMs) {

@@ -95,7 +95,7 @@ inline double discToMm(std::int64_t disc, const AxisScale& s) {
     return static_cast<double>(disc) / static_cast<double>(s.discretesPerMm());
 }
 // A fractional number of display discretes (a following error, a trace) in mm.
-inline double discToMm(double disc, const AxisScale& s) {
+inline double fractionalDiscToMm(double disc, const AxisScale& s) {
     return disc / static_cast<double>(s.discretesPerMm());
 }
 

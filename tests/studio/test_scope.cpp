@@ -62,7 +62,7 @@ private slots:
         QVERIFY(view.buffer().size() > 1000);
         QVERIFY(view.buffer().size() < 60000);
         for (int a = 0; a < 2; ++a) {
-            const double engineMm = units::discToMm(r.axes[static_cast<std::size_t>(a)].maxFollowingErrorDisc,
+            const double engineMm = units::fractionalDiscToMm(r.axes[static_cast<std::size_t>(a)].maxFollowingErrorDisc,
                                                     r.axes[static_cast<std::size_t>(a)].scale);
             const QList<QPointF> pts = view.seriesPoints(a, ScopeSignal::FollowingError);
             QVERIFY(!pts.isEmpty());
