@@ -9,6 +9,7 @@
 #include "engine/rparams.h"
 #include "engine/self_test.h"
 #include "machine/run.h"
+#include "machine/trace.h"
 #include "plc/description.h"
 #include "profile/builtin.h"
 #include "profile/validate.h"
@@ -78,6 +79,7 @@ json::Value resultJson(const engine::RunResult& r) {
         json::Value j;
         j.set("current", units::discToMm(a.currentDisc, a.scale));
         j.set("machine", units::discToMm(a.machineDisc, a.scale));
+        j.set("max_following_error", units::fractionalDiscToMm(a.maxFollowingErrorDisc, a.scale));
         axes.set(names[i], std::move(j));
     }
     if (axes.isNull())
@@ -143,7 +145,7 @@ void printPlain(const engine::RunResult& r, Lang lang) {
 int runRun(std::span<const std::string> argv) {
     const Args args(argv, {"--json", "--no-home"},
                     {"--profile", "--db", "--program", "--param", "--r", "--override", "--max-seconds",
-                     "--number", "--lang", "--m0-wait"});
+                     "--number", "--lang", "--m0-wait", "--trace"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1)
@@ -245,13 +247,38 @@ int runRun(std::span<const std::string> argv) {
         number = parsed.store.firstWritten();
     }
 
+    // --trace FILE.csv: one row per tick (machine/trace.h, docs/engine.md).
+    std::FILE* traceFile = nullptr;
+    const auto tracePath = args.value("--trace");
+    if (tracePath) {
+        traceFile = std::fopen(tracePath->c_str(), "w");
+        if (!traceFile) {
+            std::fprintf(stderr, "k528: cannot write the trace %s\n", tracePath->c_str());
+            return ExitUsage;
+        }
+    }
     engine::RunResult result;
     try {
-        result = machine::runProgram(prof, parsed.store, number, options);
+        if (traceFile) {
+            machine::TraceRecorder trace(0, traceFile);
+            result = machine::runProgramTraced(prof, parsed.store, number, options, trace);
+            const bool failed = trace.writeFailed() | (std::fclose(traceFile) != 0);
+            traceFile = nullptr;
+            if (failed) {
+                std::fprintf(stderr, "k528: cannot write the trace %s\n", tracePath->c_str());
+                return ExitUsage;
+            }
+        } else {
+            result = machine::runProgram(prof, parsed.store, number, options);
+        }
     } catch (const plc::DescriptionError& e) {
+        if (traceFile)
+            std::fclose(traceFile);
         std::fprintf(stderr, "k528: machine description %s\n", e.what());
         return ExitUsage;
     } catch (const std::invalid_argument& e) {
+        if (traceFile)
+            std::fclose(traceFile);
         return usageError(e.what());
     }
     if (asJson)

@@ -21,6 +21,7 @@
 #include "machine/status_views.h"
 #include "profile/builtin.h"
 #include "monitor/program_monitor.h"
+#include "scope/scope_dock.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
@@ -120,6 +121,7 @@ void MainWindow::createDocks() {
     for (QDockWidget* d : {messagesDock_, axesDock_})
         d->setMaximumHeight(140);
     backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
+    addScopeDock(this, *session_);
 
 }
 
@@ -143,6 +145,8 @@ void MainWindow::createMenus() {
         viewMenu_->addAction(d->toggleViewAction());
     if (auto* d = findChild<QDockWidget*>("dock.backplot"))
         viewMenu_->addAction(d->toggleViewAction());
+    if (auto* scope = findChild<QDockWidget*>("dock.scope"))
+        viewMenu_->addAction(scope->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);

@@ -5,6 +5,7 @@
 #include "engine/ideal_machine.h"
 #include "engine/load_programs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -234,6 +235,12 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     };
     while (ctl.timeMs() - since() < limitMs) {
         machine.tick();
+        for (int i = 0; i < kAxisCount; ++i) {
+            const AxisView v = ctl.axisView(axisAt(i));
+            double& peak = res.axes[static_cast<std::size_t>(i)].maxFollowingErrorDisc;
+            if (v.present)
+                peak = std::max(peak, std::fabs(units::internalToDisc(v.errorInternal, v.scale)));
+        }
         const ProgramState s = ctl.state();
         if (s == ProgramState::Ended) {
             status = RunStatus::Completed;

@@ -61,6 +61,8 @@ struct RunAxis {
     units::AxisScale scale;
     std::int64_t currentDisc = 0;
     std::int64_t machineDisc = 0;
+    // The largest |following error| from «Пуск» to the end, display discretes.
+    double maxFollowingErrorDisc = 0;
 };
 
 struct RunResult {

@@ -473,6 +473,8 @@ void Simulation::tick() {
     }
     ctl_->tick();
     actuate(static_cast<double>(ctl_->tickMs()));
+    if (afterTick_)
+        afterTick_();
 }
 
 void Simulation::advance(std::int64_t ms) {

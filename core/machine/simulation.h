@@ -184,6 +184,8 @@ public:
     void tick();
     void advance(std::int64_t ms); // whole ticks
     bool runUntil(const std::function<bool()>& done, std::int64_t maxMs);
+    // Called at the end of every tick (a trace recorder: machine/trace.h).
+    void setAfterTick(std::function<void()> f) { afterTick_ = std::move(f); }
     std::int64_t timeMs() const { return ctl_->timeMs(); }
     std::int64_t tickMs() const { return ctl_->tickMs(); }
 
@@ -286,6 +288,7 @@ private:
     std::vector<TimedRelease> releases_;
     std::vector<FaultSpec> faults_;
     std::vector<std::string> warnings_;
+    std::function<void()> afterTick_;
 };
 
 } // namespace k528::machine

@@ -94,6 +94,10 @@ inline std::int64_t mmToDisc(double mm, const AxisScale& s) {
 inline double discToMm(std::int64_t disc, const AxisScale& s) {
     return static_cast<double>(disc) / static_cast<double>(s.discretesPerMm());
 }
+// A fractional number of display discretes (a following error, a trace) in mm.
+inline double fractionalDiscToMm(double disc, const AxisScale& s) {
+    return disc / static_cast<double>(s.discretesPerMm());
+}
 
 // Display discretes <-> internal units.
 constexpr std::int64_t discToInternal(std::int64_t disc, const AxisScale& s) {

@@ -241,6 +241,67 @@ private slots:
         QVERIFY(r.out.contains("(diameter)"));
         QVERIFY(r.out.contains("M to PLC"));
     }
+
+    // --trace FILE.csv (docs/engine.md): one row per tick with the columns of
+    // cli.md; its largest |following error| per axis is the engine's maximum
+    // (the JSON's max_following_error) within one discrete (0.001 mm).
+    void traceOfAKnownMove() {
+        Files f;
+        const QString p = f.write("move.k528", "%L1\nN1 G1 Z-20 FZ6000\nN2 G0 X40\n");
+        const QString csv = f.dir.filePath("trace.csv");
+        // АВТ.БЕЗ ПБТ (C8, C60) = 1: the program runs without the reference cycles.
+        const auto r = runK528({"run", "--json", "--no-home", "--param", "8=1", "--param", "60=1",
+                                "--trace", csv, p});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const json::Value v = parseJson(r);
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().split('\n');
+        QCOMPARE(lines.front(),
+                 QByteArray("t_ms,X_setpoint_mm,X_position_mm,X_velocity_mm_min,"
+                            "X_following_error_mm,X_dac,Z_setpoint_mm,Z_position_mm,"
+                            "Z_velocity_mm_min,Z_following_error_mm,Z_dac"));
+        double maxErr[2] = {0, 0};
+        double lastPos[2] = {0, 0};
+        double maxSpeedZ = 0;
+        qint64 lastT = 0;
+        int rows = 0;
+        for (qsizetype i = 1; i < lines.size(); ++i) {
+            if (lines[i].isEmpty())
+                continue;
+            const QList<QByteArray> c = lines[i].split(',');
+            QCOMPARE(c.size(), 11);
+            const qint64 t = c[0].toLongLong();
+            QCOMPARE(t, lastT + 1); // every 1 ms tick, none left out
+            lastT = t;
+            for (int a = 0; a < 2; ++a) {
+                const double sp = c[1 + 5 * a].toDouble(), pos = c[2 + 5 * a].toDouble();
+                const double err = c[4 + 5 * a].toDouble();
+                QVERIFY(std::fabs(sp - pos - err) < 2e-5); // error = setpoint - position
+                maxErr[a] = std::max(maxErr[a], std::fabs(err));
+                lastPos[a] = pos;
+            }
+            maxSpeedZ = std::max(maxSpeedZ, std::fabs(c[8].toDouble()));
+            ++rows;
+        }
+        QVERIFY(rows > 1000);
+        const json::Value* axes = v.find("axes");
+        const char* names[2] = {"X", "Z"};
+        for (int a = 0; a < 2; ++a) {
+            const double engineMax = axes->find(names[a])->find("max_following_error")->asDouble();
+            QVERIFY2(engineMax > 0.01, names[a]); // the move really lags
+            QVERIFY2(std::fabs(maxErr[a] - engineMax) <= 0.001,
+                     qPrintable(QString("%1: trace %2 engine %3")
+                                    .arg(names[a]).arg(maxErr[a]).arg(engineMax)));
+            QVERIFY(std::fabs(lastPos[a] - axes->find(names[a])->find("current")->asDouble()) <=
+                    0.002);
+        }
+        QVERIFY(maxSpeedZ > 1000.0 && maxSpeedZ < 6000.0 * 1.01); // FZ6000 mm/min at most
+        // A trace that cannot be written: exit 2 with the reason.
+        const auto bad = runK528({"run", "--no-home", "--trace", f.dir.filePath("no/such/t.csv"), p});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY(bad.err.contains("cannot write the trace"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestCliRun)

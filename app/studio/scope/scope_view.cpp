@@ -1,0 +1,373 @@
+#include "scope/scope_view.h"
+
+#include "machine/simulation.h"
+
+#include <QChart>
+#include <QChartView>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QMessageBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineSeries>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QValueAxis>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace k528::studio {
+
+namespace {
+
+void fitAxis(QValueAxis* axis, const QList<QPointF>& a, const QList<QPointF>* b = nullptr) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const QList<QPointF>* l : {&a, b})
+        if (l)
+            for (const QPointF& p : *l) {
+                lo = std::min(lo, p.y());
+                hi = std::max(hi, p.y());
+            }
+    if (!(lo <= hi)) {
+        lo = -1;
+        hi = 1;
+    }
+    const double pad = std::max((hi - lo) * 0.05, 1e-3);
+    axis->setRange(lo - pad, hi + pad);
+}
+
+} // namespace
+
+ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
+    setObjectName("scope");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    auto* bar = new QHBoxLayout;
+    pauseBox_ = new QCheckBox(this);
+    pauseBox_->setObjectName("scope.pause");
+    windowLabel_ = new QLabel(this);
+    windowBox_ = new QSpinBox(this);
+    windowBox_->setObjectName("scope.window");
+    windowBox_->setRange(1, 60);
+    windowBox_->setValue(windowS_);
+    extraLabel_ = new QLabel(this);
+    extraBox_ = new QComboBox(this);
+    extraBox_->setObjectName("scope.extra");
+    extraBox_->addItems({QString(), QString()});
+    triggerLabel_ = new QLabel(this);
+    triggerBox_ = new QComboBox(this);
+    triggerBox_->setObjectName("scope.trigger");
+    triggerBox_->addItems({QString(), QString(), QString(), QString()});
+    thresholdBox_ = new QDoubleSpinBox(this);
+    thresholdBox_->setObjectName("scope.threshold");
+    thresholdBox_->setDecimals(3);
+    thresholdBox_->setRange(0.001, 100);
+    thresholdBox_->setValue(0.1);
+    csvButton_ = new QPushButton(this);
+    csvButton_->setObjectName("scope.csv");
+    pngButton_ = new QPushButton(this);
+    pngButton_->setObjectName("scope.png");
+    for (QWidget* w : std::initializer_list<QWidget*>{pauseBox_, windowLabel_, windowBox_,
+                                                      extraLabel_, extraBox_, triggerLabel_,
+                                                      triggerBox_, thresholdBox_, csvButton_,
+                                                      pngButton_})
+        bar->addWidget(w);
+    bar->addStretch();
+    layout->addLayout(bar);
+
+    for (int a = 0; a < 2; ++a) {
+        AxisChart& c = charts_[static_cast<std::size_t>(a)];
+        c.chart = new QChart;
+        c.chart->setMargins(QMargins(2, 2, 2, 2));
+        c.chart->legend()->setAlignment(Qt::AlignRight);
+        c.time = new QValueAxis(c.chart);
+        c.mm = new QValueAxis(c.chart);
+        c.error = new QValueAxis(c.chart);
+        c.extra = new QValueAxis(c.chart);
+        c.chart->addAxis(c.time, Qt::AlignBottom);
+        c.chart->addAxis(c.mm, Qt::AlignLeft);
+        c.chart->addAxis(c.error, Qt::AlignRight);
+        c.chart->addAxis(c.extra, Qt::AlignRight);
+        const auto add = [&](QLineSeries*& s, QValueAxis* y, QColor colour) {
+            s = new QLineSeries(c.chart);
+            s->setUseOpenGL(false);
+            QPen pen(colour);
+            pen.setWidthF(1.0);
+            s->setPen(pen);
+            c.chart->addSeries(s);
+            s->attachAxis(c.time);
+            s->attachAxis(y);
+        };
+        add(c.setpoint, c.mm, QColor(40, 90, 200));
+        add(c.position, c.mm, QColor(20, 150, 60));
+        add(c.followingError, c.error, QColor(200, 40, 40));
+        add(c.extraSeries, c.extra, QColor(150, 100, 20));
+        c.error->setLabelFormat("%.3f");
+        c.error->setLinePenColor(QColor(200, 40, 40));
+        c.extra->setLinePenColor(QColor(150, 100, 20));
+        auto* view = new QChartView(c.chart, this);
+        view->setObjectName(a == 0 ? "scope.chart.X" : "scope.chart.Z");
+        view->setRenderHint(QPainter::Antialiasing, false);
+        view->setMouseTracking(true);
+        view->viewport()->installEventFilter(this);
+        views_[static_cast<std::size_t>(a)] = view;
+        layout->addWidget(view, 1);
+        connect(c.time, &QValueAxis::rangeChanged, this, [this](qreal lo, qreal hi) {
+            if (!zooming_ && paused_)
+                draw(std::llround(lo * 1000), std::llround(hi * 1000));
+        });
+    }
+    cursorLabel_ = new QLabel(this);
+    cursorLabel_->setObjectName("scope.cursor");
+    cursorLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(cursorLabel_);
+
+    connect(pauseBox_, &QCheckBox::toggled, this, &ScopeView::setPaused);
+    connect(windowBox_, &QSpinBox::valueChanged, this, &ScopeView::setWindowSeconds);
+    connect(extraBox_, &QComboBox::currentIndexChanged, this, [this] {
+        retranslate();
+        refresh();
+    });
+    connect(triggerBox_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        setTrigger(static_cast<Trigger>(i), thresholdBox_->value());
+    });
+    connect(csvButton_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), "scope.csv",
+                                                          tr("CSV (*.csv)"));
+        if (!path.isEmpty() && !exportCsv(path))
+            QMessageBox::warning(this, tr("Export CSV"), tr("Cannot write %1").arg(path));
+    });
+    connect(pngButton_, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export PNG"), "scope.png",
+                                                          tr("PNG (*.png)"));
+        if (!path.isEmpty() && !exportPng(path))
+            QMessageBox::warning(this, tr("Export PNG"), tr("Cannot write %1").arg(path));
+    });
+    retranslate();
+    fpsClock_.start();
+}
+
+ScopeView::~ScopeView() { detach(); }
+
+void ScopeView::attach(machine::Simulation& sim) {
+    detach();
+    sim_ = &sim;
+    buffer_.clear();
+    const engine::Controller* ctl = &sim.controller();
+    sim.setAfterTick([this, ctl] {
+        if (!paused_)
+            buffer_.record(*ctl);
+    });
+}
+
+void ScopeView::detach() {
+    if (sim_)
+        sim_->setAfterTick({});
+    sim_ = nullptr;
+}
+
+void ScopeView::setPaused(bool paused) {
+    if (paused_ == paused)
+        return;
+    paused_ = paused;
+    pauseBox_->setChecked(paused);
+    for (QChartView* v : views_)
+        v->setRubberBand(paused ? QChartView::HorizontalRubberBand : QChartView::NoRubberBand);
+    if (!paused) {
+        stopAtMs_ = triggeredAtMs_ = -1;
+        checkedUpTo_ = buffer_.size();
+    }
+    refresh();
+}
+
+void ScopeView::setWindowSeconds(int s) {
+    windowS_ = std::clamp(s, 1, 60);
+    windowBox_->setValue(windowS_);
+    refresh();
+}
+
+void ScopeView::setTrigger(Trigger t, double thresholdMm) {
+    triggerBox_->setCurrentIndex(static_cast<int>(t));
+    thresholdBox_->setValue(thresholdMm);
+    stopAtMs_ = triggeredAtMs_ = -1;
+    checkedUpTo_ = buffer_.size();
+    lastFrames_ = -1;
+    lastAlarms_ = sim_ ? sim_->controller().alarms().size() : 0;
+}
+
+ScopeSignal ScopeView::extraSignal() const {
+    return extraBox_->currentIndex() == 1 ? ScopeSignal::Dac : ScopeSignal::Velocity;
+}
+
+void ScopeView::checkTrigger() {
+    if (!sim_ || buffer_.size() == 0 || stopAtMs_ >= 0)
+        return;
+    const auto t = static_cast<Trigger>(triggerBox_->currentIndex());
+    const std::int64_t now = buffer_.last().tMs;
+    const engine::Controller& ctl = sim_->controller();
+    bool fired = false;
+    if (t == Trigger::FrameStart) {
+        const std::int64_t frames = ctl.framesExecuted();
+        fired = lastFrames_ >= 0 && frames != lastFrames_;
+        lastFrames_ = frames;
+    } else if (t == Trigger::Alarm) {
+        const std::size_t n = ctl.alarms().size();
+        fired = n > lastAlarms_;
+        lastAlarms_ = n;
+    } else if (t == Trigger::Threshold) {
+        const double limit = thresholdBox_->value();
+        checkedUpTo_ = std::min(checkedUpTo_, buffer_.size());
+        for (std::size_t i = checkedUpTo_; i < buffer_.size() && !fired; ++i)
+            for (const machine::TraceAxisSample& a : buffer_.at(i).axes)
+                if (std::fabs(a.followingErrorMm) > limit) {
+                    fired = true;
+                    break;
+                }
+        checkedUpTo_ = buffer_.size();
+    }
+    if (fired) {
+        triggeredAtMs_ = now;
+        stopAtMs_ = now + windowS_ * 500;
+    }
+}
+
+void ScopeView::refresh() {
+    if (!paused_) {
+        checkTrigger();
+        if (stopAtMs_ >= 0 && buffer_.size() > 0 && buffer_.last().tMs >= stopAtMs_) {
+            setPaused(true);
+            return;
+        }
+    }
+    if (buffer_.size() == 0) {
+        draw(0, windowS_ * 1000);
+        return;
+    }
+    const std::int64_t t1 =
+        paused_ && stopAtMs_ >= 0 ? std::min(stopAtMs_, buffer_.last().tMs) : buffer_.last().tMs;
+    draw(t1 - windowS_ * 1000, t1);
+}
+
+void ScopeView::draw(std::int64_t t0, std::int64_t t1) {
+    shownT0_ = t0;
+    shownT1_ = t1;
+    const ScopeSignal extra = extraSignal();
+    for (int a = 0; a < 2; ++a) {
+        AxisChart& c = charts_[static_cast<std::size_t>(a)];
+        const int columns = std::max(50, static_cast<int>(c.chart->plotArea().width()));
+        const ScopeSignal sigs[4] = {ScopeSignal::Setpoint, ScopeSignal::Position,
+                                     ScopeSignal::FollowingError, extra};
+        QList<QPointF>* outs[4] = {&lists_[0], &lists_[1], &lists_[2], &lists_[3]};
+        buffer_.decimate(a, sigs, 4, t0, t1, columns, outs);
+        fitAxis(c.mm, lists_[0], &lists_[1]);
+        fitAxis(c.error, lists_[2]);
+        fitAxis(c.extra, lists_[3]);
+        c.setpoint->replace(lists_[0]);
+        c.position->replace(lists_[1]);
+        c.followingError->replace(lists_[2]);
+        c.extraSeries->replace(lists_[3]);
+        zooming_ = true;
+        c.time->setRange(t0 / 1000.0, t1 / 1000.0);
+        zooming_ = false;
+    }
+    ++fpsFrames_;
+    if (fpsClock_.elapsed() >= 1000) {
+        fps_ = fpsFrames_ * 1000.0 / static_cast<double>(fpsClock_.restart());
+        fpsFrames_ = 0;
+    }
+}
+
+QList<QPointF> ScopeView::seriesPoints(int axis, ScopeSignal sig) const {
+    const AxisChart& c = charts_[static_cast<std::size_t>(axis)];
+    switch (sig) {
+    case ScopeSignal::Setpoint: return c.setpoint->points();
+    case ScopeSignal::Position: return c.position->points();
+    case ScopeSignal::FollowingError: return c.followingError->points();
+    default: return extraSignal() == sig ? c.extraSeries->points() : QList<QPointF>{};
+    }
+}
+
+bool ScopeView::exportCsv(const QString& path) const {
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return false;
+    f.write(QByteArray::fromStdString(machine::traceCsvHeader() + "\n"));
+    for (std::size_t i = buffer_.lowerBound(shownT0_); i < buffer_.lowerBound(shownT1_ + 1); ++i)
+        f.write(QByteArray::fromStdString(machine::traceCsvRow(buffer_.at(i)) + "\n"));
+    return f.error() == QFileDevice::NoError;
+}
+
+bool ScopeView::exportPng(const QString& path) { return grab().save(path, "PNG"); }
+
+void ScopeView::showCursor(int axis, double tS) {
+    const std::size_t i = buffer_.lowerBound(std::llround(tS * 1000));
+    if (i >= buffer_.size())
+        return;
+    const machine::TraceSample& s = buffer_.at(i);
+    const machine::TraceAxisSample& v = s.axes[static_cast<std::size_t>(axis)];
+    cursorLabel_->setText(tr("%1  t = %2 s  setpoint %3 mm  position %4 mm  speed %5 mm/min  "
+                             "following error %6 mm  DAC %7")
+                              .arg(axis == 0 ? "X" : "Z")
+                              .arg(s.tMs / 1000.0, 0, 'f', 3)
+                              .arg(v.setpointMm, 0, 'f', 4)
+                              .arg(v.positionMm, 0, 'f', 4)
+                              .arg(v.velocityMmMin, 0, 'f', 1)
+                              .arg(v.followingErrorMm, 0, 'f', 4)
+                              .arg(v.dac));
+}
+
+bool ScopeView::eventFilter(QObject* o, QEvent* e) {
+    if (e->type() == QEvent::MouseMove)
+        for (int a = 0; a < 2; ++a)
+            if (o == views_[static_cast<std::size_t>(a)]->viewport()) {
+                const auto* me = static_cast<QMouseEvent*>(e);
+                const QPointF v = charts_[static_cast<std::size_t>(a)].chart->mapToValue(
+                    me->position(), charts_[static_cast<std::size_t>(a)].setpoint);
+                showCursor(a, v.x());
+            }
+    return QWidget::eventFilter(o, e);
+}
+
+void ScopeView::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void ScopeView::retranslate() {
+    pauseBox_->setText(tr("Pause"));
+    windowLabel_->setText(tr("Window, s"));
+    extraLabel_->setText(tr("Fourth trace"));
+    extraBox_->setItemText(0, tr("Speed, mm/min"));
+    extraBox_->setItemText(1, tr("DAC code"));
+    triggerLabel_->setText(tr("Trigger"));
+    triggerBox_->setItemText(0, tr("Free running"));
+    triggerBox_->setItemText(1, tr("Frame start"));
+    triggerBox_->setItemText(2, tr("Alarm"));
+    triggerBox_->setItemText(3, tr("|Following error| over, mm"));
+    csvButton_->setText(tr("Export CSV…"));
+    pngButton_->setText(tr("Export PNG…"));
+    for (int a = 0; a < 2; ++a) {
+        AxisChart& c = charts_[static_cast<std::size_t>(a)];
+        c.chart->setTitle(a == 0 ? tr("Axis X") : tr("Axis Z"));
+        c.time->setTitleText(tr("Time, s"));
+        c.mm->setTitleText(tr("mm"));
+        c.error->setTitleText(tr("Error, mm"));
+        c.extra->setTitleText(extraSignal() == ScopeSignal::Dac ? tr("DAC") : tr("mm/min"));
+        c.setpoint->setName(tr("Setpoint"));
+        c.position->setName(tr("Position"));
+        c.followingError->setName(tr("Following error"));
+        c.extraSeries->setName(extraSignal() == ScopeSignal::Dac ? tr("DAC") : tr("Speed"));
+    }
+    if (cursorLabel_->text().isEmpty())
+        cursorLabel_->setText(tr("Move the mouse over a chart to read the values."));
+}
+
+} // namespace k528::studio

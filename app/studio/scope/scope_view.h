@@ -1,0 +1,108 @@
+// The axis oscilloscope (NC-200 23.x «режим осциллографирования»): per axis
+// X and Z a chart over the last window of servo ticks — setpoint and
+// position (mm, left scale), following error (mm, first right scale) and the
+// speed or the DAC code (second right scale) — drawn with Qt Charts from the
+// min/max decimation of ScopeBuffer. Triggers (a frame start, an alarm, a
+// threshold of |following error|) stop the picture half a window after the
+// event; pause; zoom with the mouse while stopped; a cursor that shows the
+// values under the mouse; CSV and PNG export.
+#pragma once
+
+#include "scope/scope_buffer.h"
+
+#include <QElapsedTimer>
+#include <QWidget>
+#include <array>
+
+class QChart;
+class QChartView;
+class QLineSeries;
+class QValueAxis;
+class QComboBox;
+class QCheckBox;
+class QDoubleSpinBox;
+class QSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace k528::machine {
+class Simulation;
+}
+
+namespace k528::studio {
+
+class ScopeView : public QWidget {
+    Q_OBJECT
+public:
+    explicit ScopeView(QWidget* parent = nullptr);
+    ~ScopeView() override;
+
+    // Records every tick of `sim` from now on (its after-tick hook).
+    void attach(machine::Simulation& sim);
+    void detach();
+    // The simulation is gone (its session was destroyed): stop touching it.
+    void forget() { sim_ = nullptr; }
+
+    const ScopeBuffer& buffer() const { return buffer_; }
+    bool isPaused() const { return paused_; }
+    void setPaused(bool paused);
+    void setWindowSeconds(int s);
+    int windowSeconds() const { return windowS_; }
+    // The points handed to the chart of `axis` for `sig` (after refresh()).
+    QList<QPointF> seriesPoints(int axis, ScopeSignal sig) const;
+    QChartView* chartView(int axis) const { return views_[static_cast<std::size_t>(axis)]; }
+
+    enum class Trigger { None, FrameStart, Alarm, Threshold };
+    void setTrigger(Trigger t, double thresholdMm = 0.1);
+
+    bool exportCsv(const QString& path) const;
+    bool exportPng(const QString& path);
+    double framesPerSecond() const { return fps_; }
+
+public slots:
+    // Redraws the window that ends at the newest sample (or the frozen one).
+    void refresh();
+
+protected:
+    void changeEvent(QEvent* e) override;
+    bool eventFilter(QObject* o, QEvent* e) override;
+
+private:
+    struct AxisChart {
+        QChart* chart = nullptr;
+        QValueAxis *time = nullptr, *mm = nullptr, *error = nullptr, *extra = nullptr;
+        QLineSeries *setpoint = nullptr, *position = nullptr, *followingError = nullptr,
+                    *extraSeries = nullptr;
+    };
+    void retranslate();
+    void draw(std::int64_t t0, std::int64_t t1);
+    void checkTrigger();
+    void showCursor(int axis, double tS);
+    ScopeSignal extraSignal() const;
+
+    ScopeBuffer buffer_;
+    machine::Simulation* sim_ = nullptr;
+    std::array<AxisChart, 2> charts_{};
+    std::array<QChartView*, 2> views_{};
+    QComboBox *extraBox_ = nullptr, *triggerBox_ = nullptr;
+    QDoubleSpinBox* thresholdBox_ = nullptr;
+    QSpinBox* windowBox_ = nullptr;
+    QCheckBox* pauseBox_ = nullptr;
+    QPushButton *csvButton_ = nullptr, *pngButton_ = nullptr;
+    QLabel *cursorLabel_ = nullptr, *triggerLabel_ = nullptr, *extraLabel_ = nullptr,
+           *windowLabel_ = nullptr;
+    bool paused_ = false;
+    int windowS_ = 10;
+    std::int64_t shownT0_ = 0, shownT1_ = 0;
+    std::int64_t stopAtMs_ = -1, triggeredAtMs_ = -1;
+    std::int64_t lastFrames_ = -1;
+    std::size_t lastAlarms_ = 0;
+    std::size_t checkedUpTo_ = 0; // samples looked at by the threshold trigger
+    std::array<QList<QPointF>, 4> lists_;
+    QElapsedTimer fpsClock_;
+    int fpsFrames_ = 0;
+    double fps_ = 0;
+    bool zooming_ = false;
+};
+
+} // namespace k528::studio
