@@ -2,26 +2,6 @@
 
 namespace k528::link {
 
-FrameBytes readFrameBytes(int count) {
-    return {8, 5 + 2 * count};
-}
-FrameBytes writeFrameBytes(int count) {
-    return count == 1 ? FrameBytes{8, 8} : FrameBytes{9 + 2 * count, 8};
-}
-FrameBytes writeReadFrameBytes(int writeCount, int readCount) {
-    return {13 + 2 * writeCount, 5 + 2 * readCount};
-}
-FrameBytes echoFrameBytes() {
-    return {8, 8};
-}
-FrameBytes exceptionFrameBytes(FrameBytes request) {
-    return {request.request, 5};
-}
-
-double wireSeconds(std::int64_t bytes, std::int64_t frames, int baud) {
-    return static_cast<double>(bytes) * 10.0 / baud + static_cast<double>(frames) * 0.00175;
-}
-
 Reply ImageTransport::account(FrameBytes f, Exception e) {
     if (e != Exception::None)
         f = exceptionFrameBytes(f);

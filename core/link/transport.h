@@ -50,11 +50,13 @@ public:
 struct FrameBytes {
     int request = 0, reply = 0;
 };
-FrameBytes readFrameBytes(int count);
-FrameBytes writeFrameBytes(int count); // FC 6 for one register, FC 16 otherwise
-FrameBytes writeReadFrameBytes(int writeCount, int readCount);
-FrameBytes echoFrameBytes();
-FrameBytes exceptionFrameBytes(FrameBytes request); // the request, and a 5-byte exception reply
+inline FrameBytes readFrameBytes(int count) { return {8, 5 + 2 * count}; }
+// FC 6 for one register, FC 16 otherwise.
+inline FrameBytes writeFrameBytes(int count) { return count == 1 ? FrameBytes{8, 8} : FrameBytes{9 + 2 * count, 8}; }
+inline FrameBytes writeReadFrameBytes(int writeCount, int readCount) { return {13 + 2 * writeCount, 5 + 2 * readCount}; }
+inline FrameBytes echoFrameBytes() { return {8, 8}; }
+// The request, and a 5-byte exception reply.
+inline FrameBytes exceptionFrameBytes(FrameBytes request) { return {request.request, 5}; }
 
 // The in-process transport: each exchange goes straight to a ControllerImage
 // (tests, benchmarks), counting the RTU bytes the same exchange would put on
@@ -80,6 +82,8 @@ private:
 
 // Wire time of `bytes` in `frames` at `baud`, 10 bits a byte (8N1), plus a
 // 1.75 ms gap per frame (the 3.5-character gap above 19200 baud).
-double wireSeconds(std::int64_t bytes, std::int64_t frames, int baud = 115200);
+inline double wireSeconds(std::int64_t bytes, std::int64_t frames, int baud = 115200) {
+    return static_cast<double>(bytes) * 10.0 / baud + static_cast<double>(frames) * 0.00175;
+}
 
 } // namespace k528::link
