@@ -230,6 +230,33 @@ private slots:
         QVERIFY(killedMidway > 0);
     }
 
+    void pullFromAForeignController() {
+        stopServe();
+        QProcess py;
+        py.start("/usr/bin/python3", {QStringLiteral(K528_SOURCE_DIR "/tests/link/foreign_controller.py"), a_});
+        QVERIFY(py.waitForStarted());
+        const QString file = dir_.filePath("foreign.k528m");
+        Run r;
+        for (int i = 0; i < 30; ++i) { // the interpreter takes a moment to open the port
+            r = link({"pull", "--out", file});
+            if (r.code == 0)
+                break;
+            QTest::qWait(200);
+        }
+        py.kill();
+        py.waitForFinished(3000);
+        removeLocks();
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QFile f(file);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY2(text.contains("C040=123456"), qPrintable(text.left(400)));
+        QVERIFY(text.contains("C017=2"));
+        QVERIFY(text.contains("C001=1"));
+        QVERIFY(text.contains("C007=1"));
+        QVERIFY(text.contains("R5=-7"));
+    }
+
     void foreignPluginsAreRefused() {
         const auto wrongIid = k528::linkplugin::loadFile(QStringLiteral(K528_FAKE_IID_PLUGIN));
         QVERIFY(!wrongIid.plugin);
