@@ -168,6 +168,9 @@ private slots:
         r = link({"push", file});
         QCOMPARE(r.code, 1);
         QVERIFY2(r.err.contains("РАБОТА С ПЭВМ"), qPrintable(r.err));
+        // Exception 06 on the line: a register write outside F7.
+        r = mbpoll({"-r", "5010", "-t", "4", b_, "5"});
+        QVERIFY2((r.out + r.err).contains("busy"), qPrintable(r.out + r.err));
     }
 
     void noAnswerIsExit2() {
