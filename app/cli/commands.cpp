@@ -11,6 +11,8 @@ namespace k528::cli {
 int runPanel(std::span<const std::string> args); // cmd_panel.cpp
 int runPath(std::span<const std::string> args);  // cmd_path.cpp
 int runPlot(std::span<const std::string> args);  // cmd_plot.cpp
+int runServe(std::span<const std::string> args); // cmd_link_forward.cpp
+int runLink(std::span<const std::string> args);  // cmd_link_forward.cpp
 
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
@@ -114,6 +116,31 @@ std::span<const Command> commands() {
          "offscreen: run under xvfb-run -a -s \"-screen 0 1280x800x24\". Segments beyond the\n"
          "software limits are listed on stderr as ВНЕ ГРАНИЦ.\n",
          runPlot},
+        {"serve", "serve --port DEVICE [--profile NAME|PATH] [--db PATH] [--address A] [--baud B] [--parity none|even|odd] [--keys \"KEY ...\"]",
+         "The simulated K528-05 as a Modbus RTU server on a serial device, in real time.",
+         "Options:\n"
+         "  --port DEVICE        serial port or one end of a pty pair\n"
+         "  --address A          station address 1..247 (default 1)\n"
+         "  --baud B             default 115200; --parity none|even|odd (default none); --stop-bits 1|2\n"
+         "  --profile, --db      the machine, as for `k528 run`\n"
+         "  --keys \"KEY ...\"     K923 keys pressed before serving (those of `k528 panel`), e.g.\n"
+         "                       \"F7 DOWN DOWN ENTER\" for УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ»\n"
+         "The register map: shared/spec/link.md, docs/link.md. Runs until SIGINT/SIGTERM.\n",
+         runServe},
+        {"link", "link --port DEVICE [--address A] [--baud B] [--parity none|even|odd] ping|status|pull|push|watch ... | link --list",
+         "The workstation's client of a K528-05 over RS485 (Modbus RTU plugin).",
+         "Commands:\n"
+         "  ping                 echo and identity\n"
+         "  status [--json]      the live state\n"
+         "  pull --out FILE      C, R, programs and messages into a machine file\n"
+         "  push FILE            a machine file into the controller (only in F7 «РАБОТА С ПЭВМ»),\n"
+         "                       each part verified by reading back, each program all or nothing\n"
+         "  watch [--json] [--seconds S] [--interval-ms MS]  the live state, every 100 ms\n"
+         "  --list               the plugins found (and refused) and the serial ports\n"
+         "  --timeout-ms MS      answer timeout (default 200)\n"
+         "Exit codes: 0 done; 1 the controller refused or a verification failed; 2 the line does\n"
+         "not answer, or usage.\n",
+         runLink},
     };
     return table;
 }

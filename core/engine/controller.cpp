@@ -861,6 +861,26 @@ OpResult Controller::programsEdited() {
     return OpResult::accepted();
 }
 
+OpResult Controller::loadCParameters(std::span<const std::int64_t> c) {
+    if (c_.mode != Mode::DataControl)
+        return OpResult::refused(Refusal::WrongMode,
+                                 "C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+    if (programActive(c_.state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    if (c.size() != static_cast<std::size_t>(kCCount) + 1)
+        return OpResult::refused(Refusal::NoSuchParameter, "153 values expected (C1..C152 at 1..152)");
+    for (int n = 1; n <= kCCount; ++n)
+        if (const std::string e = profile::checkCValue(n, c[static_cast<std::size_t>(n)]); !e.empty())
+            return OpResult::refused(Refusal::ValueOutOfRange, e);
+    for (int n = 1; n <= kCCount; ++n) {
+        c_.c[static_cast<std::size_t>(n)] = c[static_cast<std::size_t>(n)];
+        c_.profile.setC(n, c[static_cast<std::size_t>(n)]);
+    }
+    c_.applyConstants();
+    configurationCheck();
+    return OpResult::accepted();
+}
+
 OpResult Controller::clearCParameters() {
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,

@@ -78,6 +78,10 @@ public:
     std::uint64_t programsRevision() const { return programsRevision_; }
     // УПРАВЛЕНИЕ ДАННЫМИ: clear the C-parameters / R-parameters / programs.
     OpResult clearCParameters();
+    // УПРАВЛЕНИЕ ДАННЫМИ, «ввести в K528-05 С-параметры» (the PC link): all
+    // 152 values at once (index = number, element 0 unused), each checked
+    // against its definition; one bad value refuses all and changes nothing.
+    OpResult loadCParameters(std::span<const std::int64_t> c);
     OpResult clearRParameters();
     OpResult clearPrograms();
 

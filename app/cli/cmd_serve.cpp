@@ -1,0 +1,129 @@
+// k528 serve --port DEVICE [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
+// (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
+// K923 — as a Modbus RTU server (the plugin's QModbusRtuSerialServer) over
+// core's ControllerImage, in real time until SIGINT/SIGTERM.
+#include "cli.h"
+#include "link/image.h"
+#include "link_line.h"
+#include "machine/simulation.h"
+#include "machine_profile.h"
+#include "panel/keys.h"
+#include "panel/panel.h"
+#include "plc/description.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QTimer>
+#include <cmath>
+#include <cstdio>
+#include <variant>
+
+namespace k528::cli {
+
+namespace {
+
+class ImageHandler final : public linkplugin::RegisterHandler {
+public:
+    explicit ImageHandler(link::ControllerImage& im) : im_(im) {}
+    int read(int first, int count, std::vector<std::uint16_t>& out) override {
+        return static_cast<int>(im_.read(first, count, out));
+    }
+    int write(int first, std::span<const std::uint16_t> values) override {
+        return static_cast<int>(im_.write(first, values));
+    }
+
+private:
+    link::ControllerImage& im_;
+};
+
+} // namespace
+
+int runServeQt(std::span<const std::string> argv) {
+    std::vector<std::string_view> options = kLineOptions;
+    options.insert(options.end(), {"--profile", "--db", "--keys"});
+    const Args args(argv, {}, options);
+    if (!args.ok())
+        return usageError(args.error());
+    if (!args.positional().empty())
+        return usageError("serve takes no file");
+    const auto line = lineSettings(args);
+    if (!line)
+        return ExitUsage;
+    using Step = std::variant<panel::KeyPress, std::int64_t>;
+    std::vector<Step> steps;
+    for (const std::string& token : panel::splitKeys(args.value("--keys").value_or(""))) {
+        if (token.size() > 5 && (token.rfind("WAIT:", 0) == 0 || token.rfind("wait:", 0) == 0)) {
+            const auto s = parseNumber(std::string_view(token).substr(5));
+            if (!s || *s < 0 || *s > 1e6)
+                return usageError("bad time in --keys token '" + token + "': WAIT:S takes seconds");
+            steps.emplace_back(static_cast<std::int64_t>(std::llround(*s * 1000.0)));
+        } else if (const auto k = panel::parseKey(token)) {
+            steps.emplace_back(*k);
+        } else {
+            return usageError("unknown key '" + token + "' in --keys (the keys of `k528 panel`)");
+        }
+    }
+    const auto prof = machineProfile(args);
+    if (!prof)
+        return ExitUsage;
+    std::unique_ptr<machine::Simulation> sim;
+    try {
+        sim = std::make_unique<machine::Simulation>(*prof);
+    } catch (const plc::DescriptionError& e) {
+        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        return ExitUsage;
+    }
+    sim->powerOn();
+    sim->advance(10);
+    panel::Panel k923(sim->controller());
+    for (const Step& s : steps) {
+        if (const auto* k = std::get_if<panel::KeyPress>(&s))
+            k923.press(*k);
+        else
+            sim->advance(std::get<std::int64_t>(s));
+    }
+    link::ControllerImage image(sim->controller());
+    image.setPcReady([&] { return k923.pcLinkReady(); });
+    ImageHandler handler(image);
+
+    QString error;
+    linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
+    if (!plugin) {
+        std::fprintf(stderr, "k528: %s\n", error.toUtf8().constData());
+        return ExitUsage;
+    }
+    std::unique_ptr<linkplugin::Server> server = plugin->openServer(*line, handler, error);
+    if (!server) {
+        std::fprintf(stderr, "k528: cannot serve on %s: %s\n", line->port.toUtf8().constData(),
+                     error.toUtf8().constData());
+        return ExitUsage;
+    }
+    std::fprintf(stderr, "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
+                 prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
+                 line->parity, line->stopBits);
+    std::fflush(stderr);
+
+    installStopSignals();
+    QElapsedTimer clock;
+    clock.start();
+    std::int64_t simulatedMs = 0;
+    QTimer tick;
+    QObject::connect(&tick, &QTimer::timeout, [&] {
+        if (stopRequested()) {
+            QCoreApplication::quit();
+            return;
+        }
+        const std::int64_t now = clock.elapsed();
+        if (now > simulatedMs) {
+            sim->advance(now - simulatedMs); // real time: the machine catches up with the clock
+            simulatedMs = now;
+        }
+    });
+    tick.start(5);
+    QCoreApplication::exec();
+    std::fprintf(stderr, "k528 serve: stopped after %lld requests, %d texts committed\n",
+                 static_cast<long long>(server->requests()), image.commits());
+    return ExitOk;
+}
+
+} // namespace k528::cli

@@ -1,0 +1,13 @@
+// k528-link's copy of the one helper of commands.cpp its commands use (the
+// command table itself belongs to k528).
+#include "cli.h"
+
+namespace k528::cli {
+
+int usageError(std::string_view message) {
+    std::fprintf(stderr, "k528: %.*s\n", static_cast<int>(message.size()), message.data());
+    std::fprintf(stderr, "Try 'k528 --help'.\n");
+    return ExitUsage;
+}
+
+} // namespace k528::cli

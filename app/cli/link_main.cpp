@@ -1,0 +1,96 @@
+// k528-link: the Qt half of `k528 serve` and `k528 link` (docs/link.md). The
+// k528 command line is plain C++ and starts without Qt; these two commands
+// need Qt's event loop and the plugin loader, so k528 runs this program
+// (next to it, or in its libexec folder) with the same arguments.
+#include "cli.h"
+#include "link_line.h"
+
+#include <QCoreApplication>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+
+namespace k528::cli {
+
+int runServeQt(std::span<const std::string> args); // cmd_serve.cpp
+int runLinkQt(std::span<const std::string> args);  // cmd_link.cpp
+
+namespace {
+std::atomic<bool> g_stop{false};
+extern "C" void onStop(int) { g_stop = true; }
+} // namespace
+
+void installStopSignals() {
+    std::signal(SIGINT, onStop);
+    std::signal(SIGTERM, onStop);
+}
+bool stopRequested() { return g_stop; }
+
+std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
+    linkplugin::LineSettings s;
+    const auto port = args.value("--port");
+    if (!port || port->empty()) {
+        usageError("--port DEVICE is needed (a serial port, or one end of a pty pair)");
+        return std::nullopt;
+    }
+    s.port = QString::fromStdString(*port);
+    if (const auto a = args.value("--address")) {
+        const auto v = parseInt(*a);
+        if (!v || *v < 1 || *v > 247) {
+            usageError("--address takes a station address 1..247, not '" + *a + "'");
+            return std::nullopt;
+        }
+        s.address = static_cast<int>(*v);
+    }
+    if (const auto b = args.value("--baud")) {
+        const auto v = parseInt(*b);
+        if (!v || *v < 1200 || *v > 4000000) {
+            usageError("--baud takes a rate in bit/s (1200..4000000), not '" + *b + "'");
+            return std::nullopt;
+        }
+        s.baud = static_cast<int>(*v);
+    }
+    if (const auto p = args.value("--parity")) {
+        if (*p == "none")
+            s.parity = 'N';
+        else if (*p == "even")
+            s.parity = 'E';
+        else if (*p == "odd")
+            s.parity = 'O';
+        else {
+            usageError("--parity takes none, even or odd, not '" + *p + "'");
+            return std::nullopt;
+        }
+    }
+    if (const auto st = args.value("--stop-bits")) {
+        if (*st != "1" && *st != "2") {
+            usageError("--stop-bits takes 1 or 2");
+            return std::nullopt;
+        }
+        s.stopBits = *st == "2" ? 2 : 1;
+    }
+    return s;
+}
+
+} // namespace k528::cli
+
+int main(int argc, char** argv) {
+    QCoreApplication app(argc, argv);
+    if (argc < 2) {
+        std::fprintf(stderr, "k528-link: run as `k528 serve ...` or `k528 link ...`\n");
+        return k528::cli::ExitUsage;
+    }
+    const std::string cmd = argv[1];
+    std::vector<std::string> args(argv + 2, argv + argc);
+    try {
+        if (cmd == "serve")
+            return k528::cli::runServeQt(args);
+        if (cmd == "link")
+            return k528::cli::runLinkQt(args);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "k528 %s: %s\n", cmd.c_str(), e.what());
+        return k528::cli::ExitUsage;
+    }
+    std::fprintf(stderr, "k528-link: unknown command '%s' (serve, link)\n", cmd.c_str());
+    return k528::cli::ExitUsage;
+}

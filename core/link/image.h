@@ -1,0 +1,104 @@
+// The controller side of the link (shared/spec/link.md): what every holding
+// register reads and writes on an engine::Controller. The Modbus server (`k528
+// serve`, Qt's QModbusRtuSerialServer) hands each request's registers here;
+// the in-process transport of the tests does the same without a port.
+//
+// The F7 rule: a write of C- or R-parameters, and the commands that change
+// memory (begin writing, delete), need the controller ready for the PC —
+// УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ» on the K923 (the owner says so with
+// setPcReady; without it, the mode F7 with no program active) — else
+// exception 06. The transfer state machine keeps one text at a time; a
+// written text is parsed and checked with the controller's own rules at
+// commit and stored all or nothing.
+#pragma once
+
+#include "link/register_map.h"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace k528::engine {
+class Controller;
+}
+
+namespace k528::link {
+
+// Modbus exception codes of the map.
+enum class Exception : std::uint8_t {
+    None = 0,
+    IllegalFunction = 1, // 01
+    IllegalAddress = 2,  // 02 an address outside the map (or a read-only register written)
+    IllegalValue = 3,    // 03 a value outside its range; nothing of the request written
+    NotReady = 6,        // 06 not in F7 «РАБОТА С ПЭВМ»
+};
+
+// Status register 7002.
+enum class TransferStatus : std::uint16_t {
+    Idle = 0,
+    Ready = 1,
+    Committed = 2,
+    NotInF7 = 16,
+    NoSuchProgram = 17,
+    TextRefused = 18,
+    CrcMismatch = 19,
+    MemoryFull = 20,
+};
+
+enum class TransferCommand : std::uint16_t {
+    ReadProgram = 1,
+    WriteProgram = 2,
+    ReadMessages = 3,
+    WriteMessages = 4,
+    Commit = 5,
+    Abort = 6,
+    DeleteProgram = 7,
+};
+
+class ControllerImage {
+public:
+    explicit ControllerImage(engine::Controller& controller, const RegisterMap& map = k528Map());
+
+    // Who says the controller is ready for the PC (the K923's «РАБОТА С ПЭВМ»).
+    void setPcReady(std::function<bool()> ready) { pcReady_ = std::move(ready); }
+    bool pcReady() const;
+
+    // FC 3: `count` registers from `first`. Exception 03 for a count outside
+    // 1..125, 02 when any register is outside the map.
+    Exception read(int first, int count, std::vector<std::uint16_t>& out);
+    // FC 6 / 16: all or nothing. A write that covers the command register
+    // sets the other registers first, then runs the command.
+    Exception write(int first, std::span<const std::uint16_t> values);
+
+    TransferStatus status() const { return status_; }
+    const RegisterMap& map() const { return map_; }
+    // Texts committed through the link (tests, the serve log).
+    int commits() const { return commits_; }
+
+private:
+    std::uint16_t readOne(int reg) const;
+    Exception writeC(int first, std::span<const std::uint16_t> values);
+    Exception writeR(int first, std::span<const std::uint16_t> values);
+    Exception writeTransfer(int first, std::span<const std::uint16_t> values);
+    Exception command(std::uint16_t cmd);
+    void commit();
+    void checkStillReady();
+
+    enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages };
+
+    engine::Controller& ctl_;
+    const RegisterMap& map_;
+    std::function<bool()> pcReady_;
+    Phase phase_ = Phase::Idle;
+    TransferStatus status_ = TransferStatus::Idle;
+    std::uint16_t programNumber_ = 0;
+    std::uint16_t errorLine_ = 0;
+    std::uint32_t length_ = 0, crc_ = 0, offset_ = 0;
+    int transferProgram_ = 0; // the program of the transfer under way
+    std::string text_;        // read: the controller's text; write: the bytes received
+    int commits_ = 0;
+};
+
+} // namespace k528::link
