@@ -4,12 +4,14 @@
 // checked too; colours come from core's tokens; unsaved changes survive a
 // cancelled close; a screenshot of the editor with diagnostics.
 #include "editor/editor_tab.h"
+#include "editor/frame_master.h"
 #include "editor/program_editor.h"
 #include "program/tokens.h"
 #include "profile/builtin.h"
 #include "session/simulation_session.h"
 
 #include <QLabel>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -192,6 +194,61 @@ private slots:
         tab.currentEditor()->setText("%L43\nGOTO 5\nM30\n");
         QVERIFY(!tab.sendToController());
         QVERIFY(!session.controller().programs().contains(43));
+    }
+
+    void masterInsertsTheExpectedFrame() {
+        EditorTab tab(nullptr);
+        tab.newFile(); // "%L1\nM30\n"
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setCursorPosition(0, 0);
+        FrameMaster m;
+        m.setKind(FrameMaster::Iso);
+        QTest::keyClicks(m.field("N"), "12");
+        QTest::keyClicks(m.field("G"), "1");
+        QTest::keyClicks(m.field("X"), "5.3420");
+        QTest::keyClicks(m.field("FX"), "50");
+        QTest::keyClicks(m.field("Z"), "-1234.678");
+        QTest::keyClicks(m.field("FZ"), "1000");
+        QVERIFY(m.valid());
+        QCOMPARE(m.text(), QString("N12 G1 X5.342 FX50 Z-1234.678 FZ1000"));
+        tab.insertFromMaster(m.text(), false);
+        QCOMPARE(ed->text(), QString("%L1\nN12 G1 X5.342 FX50 Z-1234.678 FZ1000\nM30\n"));
+        // Validated as typed: G4 with Z is refused with its message number.
+        FrameMaster bad;
+        bad.setKind(FrameMaster::Iso);
+        QTest::keyClicks(bad.field("G"), "4");
+        QTest::keyClicks(bad.field("X"), "2");
+        QVERIFY(bad.valid());
+        QTest::keyClicks(bad.field("Z"), "1");
+        QVERIFY(!bad.valid());
+        QVERIFY(bad.problemsText().contains("[M63]"));
+        QTest::keyClicks(bad.field("X"), ".");
+        // Opened on an existing frame: its fields, edited, replace the line.
+        ed->setCursorPosition(1, 3);
+        FrameMaster edit;
+        QVERIFY(edit.setFromLine(ed->text(1).trimmed()));
+        QCOMPARE(edit.kind(), FrameMaster::Iso);
+        QCOMPARE(edit.field("X")->text(), QString("5.342"));
+        edit.field("X")->setText("7");
+        QCOMPARE(edit.text(), QString("N12 G1 X7 FX50 Z-1234.678 FZ1000"));
+        tab.insertFromMaster(edit.text(), true);
+        QCOMPARE(ed->text(), QString("%L1\nN12 G1 X7 FX50 Z-1234.678 FZ1000\nM30\n"));
+        // The other masters.
+        FrameMaster j;
+        QVERIFY(j.setFromLine("N3 IF R1>0 GOTO 12"));
+        QCOMPARE(j.kind(), FrameMaster::IfGoto);
+        QCOMPARE(j.text(), QString("N3 IF R1>0 GOTO 12"));
+        QVERIFY(j.setFromLine("r75 = 2 * r99"));
+        QCOMPARE(j.kind(), FrameMaster::Compute);
+        QCOMPARE(j.text(), QString("R75=2*R99"));
+        QVERIFY(j.setFromLine("G04 X20.500"));
+        QCOMPARE(j.kind(), FrameMaster::Dwell);
+        QCOMPARE(j.text(), QString("G4 X20.5"));
+        QVERIFY(j.setFromLine("#3=ПРАВКА"));
+        QCOMPARE(j.kind(), FrameMaster::Message);
+        QCOMPARE(j.text(), QString("#3=ПРАВКА"));
+        j.field("msgText")->setText("ПРАВКА КРУГА СЛИШКОМ ДЛИННО");
+        QVERIFY(!j.valid());
     }
 
     void screenshotWithDiagnostics() {

@@ -1,5 +1,6 @@
 #include "editor/editor_tab.h"
 
+#include "editor/frame_master.h"
 #include "editor/program_editor.h"
 #include "language.h"
 #include "session/program_loader.h"
@@ -53,6 +54,8 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     machineAction_->setChecked(true);
     connect(machineAction_, &QAction::toggled, this, &EditorTab::setCheckAgainstMachine);
     sendAction_ = toolbar_->addAction(QString(), this, [this] { sendToController(); });
+    toolbar_->addSeparator();
+    masterAction_ = toolbar_->addAction(QString(), this, &EditorTab::openMaster);
     newAction_->setShortcut(QKeySequence::New);
     saveAction_->setShortcut(QKeySequence::Save);
 
@@ -320,6 +323,61 @@ bool EditorTab::sendToController() {
     return r.loaded;
 }
 
+void EditorTab::openMaster() {
+    ProgramEditor* ed = currentEditor();
+    if (!ed)
+        return;
+    int line = 0, index = 0;
+    ed->getCursorPosition(&line, &index);
+    FrameMaster master(this);
+    QString current = ed->text(line);
+    while (current.endsWith('\n') || current.endsWith('\r'))
+        current.chop(1);
+    const bool editing = !current.trimmed().isEmpty() && !current.trimmed().startsWith('%') &&
+                         master.setFromLine(current);
+    if (master.exec() == QDialog::Accepted && master.valid())
+        insertFromMaster(master.text(), editing);
+}
+
+void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
+    ProgramEditor* ed = currentEditor();
+    if (!ed)
+        return;
+    int line = 0, index = 0;
+    ed->getCursorPosition(&line, &index);
+    ed->beginUndoAction();
+    if (replaceLine) {
+        QString old = ed->text(line);
+        int len = static_cast<int>(old.size());
+        while (len > 0 && (old.at(len - 1) == '\n' || old.at(len - 1) == '\r'))
+            --len;
+        // A comment on the line stays after the new frame.
+        const int cut = [&] {
+            for (int i = 0; i < len; ++i)
+                if (old.at(i) == ';')
+                    return i;
+            return len;
+        }();
+        QString rest = old.mid(cut, len - cut);
+        ed->setSelection(line, 0, line, len);
+        ed->replaceSelectedText(rest.isEmpty() ? text : text + " " + rest);
+    } else {
+        const QString cur = ed->text(line);
+        const bool emptyLine = cur.trimmed().isEmpty();
+        if (emptyLine) {
+            ed->setSelection(line, 0, line, static_cast<int>(cur.size()) - (cur.endsWith('\n') ? 1 : 0));
+            ed->replaceSelectedText(text);
+        } else {
+            ed->insertAt(text + "\n", line + 1, 0);
+            if (line + 1 >= ed->lines() - 1 && !cur.endsWith('\n'))
+                ed->insertAt("\n", line + 1, 0);
+            ++line;
+        }
+    }
+    ed->endUndoAction();
+    ed->setCursorPosition(line, 0);
+}
+
 void EditorTab::refreshProblems() {
     problems_->clear();
     ProgramEditor* ed = currentEditor();
@@ -416,6 +474,8 @@ void EditorTab::retranslate() {
     machineAction_->setText(tr("Check for the machine"));
     machineAction_->setToolTip(tr("Also check the machine's software limits, feeds and axes"));
     sendAction_->setText(tr("Send to the controller"));
+    masterAction_->setText(tr("Master…"));
+    masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
     outline_->setHeaderLabels({tr("Programs")});
     problems_->setHeaderLabels({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")});
     refreshTitles();

@@ -55,6 +55,12 @@ public slots:
     bool closeAll();
     // Sends the current file to the simulated controller (check, then load).
     bool sendToController();
+    // Opens the frame master on the cursor's line (editing it when it holds
+    // a frame or a message, else inserting a new frame after it).
+    void openMaster();
+    // The master's text into the current editor: replaces the cursor's line
+    // or inserts a line after it.
+    void insertFromMaster(const QString& text, bool replaceLine);
 
 signals:
     void problemCountChanged(int errors, int warnings);
@@ -86,7 +92,7 @@ private:
     int untitled_ = 0;
     std::function<CloseChoice(const QString&)> ask_;
     QAction *newAction_ = nullptr, *openAction_ = nullptr, *saveAction_ = nullptr, *saveAsAction_ = nullptr,
-            *sendAction_ = nullptr, *machineAction_ = nullptr, *recentAction_ = nullptr;
+            *sendAction_ = nullptr, *masterAction_ = nullptr, *machineAction_ = nullptr, *recentAction_ = nullptr;
 };
 
 } // namespace k528::studio
