@@ -86,6 +86,12 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(parent), alive_(st
     connect(this, &QsciScintilla::SCN_DWELLSTART, this, &ProgramEditor::dwellStart);
     connect(this, &QsciScintilla::SCN_DWELLEND, this, [](int, int, int) { QToolTip::hideText(); });
     connect(this, &QsciScintilla::SCN_CHARADDED, this, &ProgramEditor::charAdded);
+    connect(this, &QsciScintilla::SCN_UPDATEUI, this, [this](int) {
+        const int first = static_cast<int>(SendScintilla(SCI_GETFIRSTVISIBLELINE));
+        const int shown = static_cast<int>(SendScintilla(SCI_LINESONSCREEN));
+        lexer_->styleVisible(static_cast<int>(SendScintilla(SCI_DOCLINEFROMVISIBLE, first)),
+                             static_cast<int>(SendScintilla(SCI_DOCLINEFROMVISIBLE, first + shown)));
+    });
     connect(this, &QsciScintilla::userListActivated, this, &ProgramEditor::completionChosen);
 
     debounce_.setSingleShot(true);

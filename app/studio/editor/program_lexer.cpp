@@ -4,6 +4,7 @@
 
 #include <Qsci/qsciscintilla.h>
 #include <QFontDatabase>
+#include <algorithm>
 
 namespace k528::studio {
 
@@ -59,7 +60,17 @@ void ProgramLexer::styleText(int start, int end) {
     const int lastLine = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_LINEFROMPOSITION, end - 1));
     const int from = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, firstLine));
     startStyling(from);
-    for (int line = firstLine; line <= lastLine; ++line) {
+    int realFirst = firstLine;
+    if (lastLine - firstLine > 2 * kLookBehindLines) {
+        realFirst = lastLine - kLookBehindLines;
+        const int realFrom = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, realFirst));
+        setStyling(realFrom - from, static_cast<int>(TokenKind::Default));
+        for (int line = firstLine; line < realFirst; ++line)
+            ed->SendScintilla(QsciScintilla::SCI_SETFOLDLEVEL, line, QsciScintilla::SC_FOLDLEVELBASE + 1);
+        placeholderFrom_ = placeholderFrom_ < 0 ? firstLine : std::min(placeholderFrom_, firstLine);
+        placeholderTo_ = std::max(placeholderTo_, realFirst);
+    }
+    for (int line = realFirst; line <= lastLine; ++line) {
         const int lineStart = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, line));
         const int lineEnd = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_GETLINEENDPOSITION, line));
         const int next = line + 1 < ed->lines()
@@ -96,6 +107,24 @@ void ProgramLexer::styleText(int start, int end) {
                                  : QsciScintilla::SC_FOLDLEVELBASE + 1;
         ed->SendScintilla(QsciScintilla::SCI_SETFOLDLEVEL, line, level);
     }
+}
+
+void ProgramLexer::styleVisible(int firstLine, int lastLine) {
+    QsciScintilla* ed = editor();
+    if (!ed || placeholderFrom_ < 0 || lastLine < placeholderFrom_ || firstLine >= placeholderTo_)
+        return;
+    const int a = std::max(firstLine, placeholderFrom_);
+    const int b = std::min(lastLine + 1, placeholderTo_);
+    // Shrink the placeholder interval by the part coloured now (at its ends).
+    if (a <= placeholderFrom_)
+        placeholderFrom_ = b;
+    else if (b >= placeholderTo_)
+        placeholderTo_ = a;
+    if (placeholderFrom_ >= placeholderTo_)
+        placeholderFrom_ = placeholderTo_ = -1;
+    const int start = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, a));
+    const int end = static_cast<int>(ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, b));
+    styleText(start, std::max(start + 1, end));
 }
 
 } // namespace k528::studio

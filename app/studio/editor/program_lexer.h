@@ -18,6 +18,18 @@ public:
     QColor defaultColor(int style) const override;
     QFont defaultFont(int style) const override;
     void styleText(int start, int end) override;
+
+    // Scintilla asks for every line from the last styled one down to the
+    // screen: after a jump deep into a big file that would be thousands of
+    // lines at once. Lines more than kLookBehindLines above the requested
+    // end get the default style at once and are remembered as placeholders;
+    // styleVisible() colours the placeholders that come into view.
+    static constexpr int kLookBehindLines = 300;
+    void styleVisible(int firstLine, int lastLine);
+
+private:
+    int placeholderFrom_ = -1; // lines [from, to) hold placeholder styles
+    int placeholderTo_ = -1;
 };
 
 } // namespace k528::studio
