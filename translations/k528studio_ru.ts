@@ -363,6 +363,336 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::EditorTab</name>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Несохранённые изменения</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved changes. Save them?</source>
+        <translation>В %1 есть несохранённые изменения. Сохранить их?</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 не читается: %2</translation>
+    </message>
+    <message>
+        <source>Open program</source>
+        <translation>Открыть программу</translation>
+    </message>
+    <message>
+        <source>K528 programs (*.k528 *.txt);;All files (*)</source>
+        <translation>Программы K528 (*.k528 *.txt);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 не записывается: %2</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Сохранён %1</translation>
+    </message>
+    <message>
+        <source>Save program as</source>
+        <translation>Сохранить программу как</translation>
+    </message>
+    <message>
+        <source>File changed on disk</source>
+        <translation>Файл изменён на диске</translation>
+    </message>
+    <message>
+        <source>%1 was changed on disk. Reload it and lose your changes?</source>
+        <translation>%1 изменён на диске. Перечитать его, потеряв ваши изменения?</translation>
+    </message>
+    <message>
+        <source>Reloaded %1</source>
+        <translation>Перечитан %1</translation>
+    </message>
+    <message>
+        <source>Sent %1 to the controller</source>
+        <translation>%1 переданы в УЧПУ</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>ошибка</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>предупреждение</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2</source>
+        <translation>Ошибок: %1, предупреждений: %2</translation>
+    </message>
+    <message>
+        <source>untitled %1</source>
+        <translation>без имени %1</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Новый</translation>
+    </message>
+    <message>
+        <source>Open…</source>
+        <translation>Открыть…</translation>
+    </message>
+    <message>
+        <source>Recent</source>
+        <translation>Недавние</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Сохранить</translation>
+    </message>
+    <message>
+        <source>Save as…</source>
+        <translation>Сохранить как…</translation>
+    </message>
+    <message>
+        <source>Check for the machine</source>
+        <translation>Проверять для станка</translation>
+    </message>
+    <message>
+        <source>Also check the machine's software limits, feeds and axes</source>
+        <translation>Проверять также программные ограничения, подачи и оси станка</translation>
+    </message>
+    <message>
+        <source>Send to the controller</source>
+        <translation>Передать в УЧПУ</translation>
+    </message>
+    <message>
+        <source>Master…</source>
+        <translation>Мастер…</translation>
+    </message>
+    <message>
+        <source>Build or edit the frame at the cursor</source>
+        <translation>Построить или изменить кадр под курсором</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>Программы</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Важность</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Строка</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::FrameMaster</name>
+    <message>
+        <source>Frame master</source>
+        <translation>Мастер кадра</translation>
+    </message>
+    <message>
+        <source>ISO motion frame</source>
+        <translation>Кадр ISO (перемещение)</translation>
+    </message>
+    <message>
+        <source>Dwell (G4)</source>
+        <translation>Выдержка (G4)</translation>
+    </message>
+    <message>
+        <source>Subprogram call (L)</source>
+        <translation>Вызов подпрограммы (L)</translation>
+    </message>
+    <message>
+        <source>Oscillation start/stop</source>
+        <translation>Пуск/останов качания</translation>
+    </message>
+    <message>
+        <source>Move until signal</source>
+        <translation>Перемещение до сигнала</translation>
+    </message>
+    <message>
+        <source>Computational frame</source>
+        <translation>Вычислительный кадр</translation>
+    </message>
+    <message>
+        <source>Conditional jump (IF … GOTO)</source>
+        <translation>Условный переход (IF … GOTO)</translation>
+    </message>
+    <message>
+        <source>Unconditional jump (GOTO)</source>
+        <translation>Безусловный переход (GOTO)</translation>
+    </message>
+    <message>
+        <source>Technological message</source>
+        <translation>Технологическое сообщение</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Вид</translation>
+    </message>
+    <message>
+        <source>Skip flag «/» (the frame is not executed)</source>
+        <translation>Пропуск «/» (кадр не обрабатывается)</translation>
+    </message>
+    <message>
+        <source>1..999, empty = none</source>
+        <translation>1..999, пусто = нет</translation>
+    </message>
+    <message>
+        <source>Frame number N</source>
+        <translation>Номер кадра N</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <source>Operation</source>
+        <translation>Действие</translation>
+    </message>
+    <message>
+        <source>G-functions (up to 3)</source>
+        <translation>Функции G (до 3)</translation>
+    </message>
+    <message>
+        <source>M-functions (up to 3)</source>
+        <translation>Функции M (до 3)</translation>
+    </message>
+    <message>
+        <source>Message #</source>
+        <translation>Сообщение #</translation>
+    </message>
+    <message>
+        <source>Call program L</source>
+        <translation>Вызов программы L</translation>
+    </message>
+    <message>
+        <source>X, mm (or R…)</source>
+        <translation>X, мм (или R…)</translation>
+    </message>
+    <message>
+        <source>FX, mm/min (or R…)</source>
+        <translation>FX, мм/мин (или R…)</translation>
+    </message>
+    <message>
+        <source>Z, mm (or R…)</source>
+        <translation>Z, мм (или R…)</translation>
+    </message>
+    <message>
+        <source>FZ, mm/min (or R…)</source>
+        <translation>FZ, мм/мин (или R…)</translation>
+    </message>
+    <message>
+        <source>Dwell, s</source>
+        <translation>Выдержка, с</translation>
+    </message>
+    <message>
+        <source>Program 1..99</source>
+        <translation>Программа 1..99</translation>
+    </message>
+    <message>
+        <source>Start (1) / stop (0)</source>
+        <translation>Пуск (1) / останов (0)</translation>
+    </message>
+    <message>
+        <source>Stroke, mm</source>
+        <translation>Ход, мм</translation>
+    </message>
+    <message>
+        <source>Speed, mm/min</source>
+        <translation>Скорость, мм/мин</translation>
+    </message>
+    <message>
+        <source>Axis (X or Z)</source>
+        <translation>Ось (X или Z)</translation>
+    </message>
+    <message>
+        <source>Signal 1..4</source>
+        <translation>Сигнал 1..4</translation>
+    </message>
+    <message>
+        <source>Target, mm</source>
+        <translation>Цель, мм</translation>
+    </message>
+    <message>
+        <source>Feed, mm/min</source>
+        <translation>Подача, мм/мин</translation>
+    </message>
+    <message>
+        <source>Result R</source>
+        <translation>Результат R</translation>
+    </message>
+    <message>
+        <source>Operand a (number or R…)</source>
+        <translation>Операнд a (число или R…)</translation>
+    </message>
+    <message>
+        <source>Operand b (number or R…)</source>
+        <translation>Операнд b (число или R…)</translation>
+    </message>
+    <message>
+        <source>Condition R (&gt; 0)</source>
+        <translation>Условие R (&gt; 0)</translation>
+    </message>
+    <message>
+        <source>Jump to frame N</source>
+        <translation>Переход на кадр N</translation>
+    </message>
+    <message>
+        <source>Message number 1..99</source>
+        <translation>Номер сообщения 1..99</translation>
+    </message>
+    <message>
+        <source>Text (20 characters)</source>
+        <translation>Текст (20 символов)</translation>
+    </message>
+    <message>
+        <source>%1: «%2» is not a number or R-parameter</source>
+        <translation>%1: «%2» — не число и не R-параметр</translation>
+    </message>
+    <message>
+        <source>%1: «%2» is not a whole number</source>
+        <translation>%1: «%2» — не целое число</translation>
+    </message>
+    <message>
+        <source>N: «%1» is not a whole number</source>
+        <translation>N: «%1» — не целое число</translation>
+    </message>
+    <message>
+        <source>G: a list of numbers, e.g. «1 90»</source>
+        <translation>G: список номеров, например «1 90»</translation>
+    </message>
+    <message>
+        <source>M: a list of numbers, e.g. «3 8»</source>
+        <translation>M: список номеров, например «3 8»</translation>
+    </message>
+    <message>
+        <source>a: a whole number or R…</source>
+        <translation>a: целое число или R…</translation>
+    </message>
+    <message>
+        <source>b: a whole number or R…</source>
+        <translation>b: целое число или R…</translation>
+    </message>
+    <message>
+        <source>R: the number of the R-parameter written</source>
+        <translation>R: номер записываемого R-параметра</translation>
+    </message>
+    <message>
+        <source>R: the number of the R-parameter tested</source>
+        <translation>R: номер проверяемого R-параметра</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
@@ -902,6 +1232,10 @@
     <message>
         <source>&amp;Keep the controller's memory in the database</source>
         <translation>&amp;Сохранить память БП в базе данных</translation>
+    </message>
+    <message>
+        <source>Editor</source>
+        <translation>Редактор</translation>
     </message>
 </context>
 <context>

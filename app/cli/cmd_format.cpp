@@ -1,18 +1,24 @@
-// k528 format [--number N] [--lang ru|en] [--in-place | --check] FILE
+// k528 format [--number N] [--lang ru|en] [--renumber [--start N] [--step K]]
+//             [--in-place | --check] FILE
 // (shared/spec/cli.md; extensions in docs/program-language.md).
 #include <cstdio>
+#include <cstdlib>
+#include <utility>
+#include <filesystem>
+#include <fstream>
 
 #include "args.h"
 #include "cli.h"
 #include "output_file.h"
 #include "program/formatter.h"
 #include "program/parser.h"
+#include "program/refactor.h"
 #include "program_cli.h"
 
 namespace k528::cli {
 
 int runFormat(std::span<const std::string> argv) {
-    const Args args(argv, {"--in-place", "--check"}, {"--number", "--lang"});
+    const Args args(argv, {"--in-place", "--check", "--renumber"}, {"--number", "--lang", "--start", "--step"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1)
@@ -25,6 +31,23 @@ int runFormat(std::span<const std::string> argv) {
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
         return usageError("--lang is ru or en, not '" + *l + "'");
+    // --renumber: every program's frames become start, start+step, ... and
+    // every IF/GOTO target follows its frame (program/refactor.h).
+    int renumberStart = 1;
+    int renumberStep = 1;
+    for (const auto& [name, target] : {std::pair<const char*, int*>{"--start", &renumberStart},
+                                       std::pair<const char*, int*>{"--step", &renumberStep}}) {
+        const auto v = args.value(name);
+        if (!v)
+            continue;
+        if (!args.has("--renumber"))
+            return usageError(std::string(name) + " needs --renumber");
+        char* end = nullptr;
+        const long n = std::strtol(v->c_str(), &end, 10);
+        if (v->empty() || *end != '\0' || n < 1 || n > program::kMaxFrameNumber)
+            return usageError(std::string(name) + " is a number 1..999, not '" + *v + "'");
+        *target = static_cast<int>(n);
+    }
     const std::string& path = args.positional().front();
     if (args.has("--in-place") && path == "-")
         return usageError("--in-place needs a file, not standard input");
@@ -41,7 +64,18 @@ int runFormat(std::span<const std::string> argv) {
                                       : "not formatted: fix the syntax errors first");
         return ExitInputErrors;
     }
-    const std::string canonical = program::format(parsed.store);
+    program::ProgramStore store = parsed.store;
+    if (args.has("--renumber")) {
+        for (program::Program& p : store.programs()) {
+            const program::RefactorResult r = program::renumber(p, renumberStart, renumberStep);
+            if (!r.ok) {
+                std::fprintf(stderr, "k528: %s: L%d: %s\n", displayName(path).c_str(), p.number,
+                             (lang == Lang::Ru ? r.errorRu : r.errorEn).c_str());
+                return ExitInputErrors;
+            }
+        }
+    }
+    const std::string canonical = program::format(store);
     if (args.has("--check")) {
         if (canonical == text)
             return ExitOk;

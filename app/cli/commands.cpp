@@ -30,13 +30,15 @@ std::span<const Command> commands() {
          "FILE '-' reads standard input. Exit codes: 0 no errors (warnings allowed),\n"
          "1 errors found, 2 usage or I/O error.\n",
          runCheck},
-        {"format", "format [--number N] [--lang ru|en] [--in-place | --check] FILE",
+        {"format", "format [--number N] [--lang ru|en] [--renumber [--start N] [--step K]] [--in-place | --check] FILE",
          "Print the canonical text of a program file.",
          "Options:\n"
          "  --number N    number of the program of a file without %L header (default 1)\n"
          "  --lang ru|en  language of error messages (default ru)\n"
          "  --in-place    rewrite FILE instead of printing\n"
          "  --check       print nothing; exit 1 if FILE is not in canonical form\n"
+         "  --renumber    number every program's frames N<start>, N<start+step>, ... (default 1, 1),\n"
+         "                every GOTO/IF target following its frame (docs/program-language.md)\n"
          "A file with syntax errors is not formatted: they are printed on stderr (exit 1).\n"
          "FILE '-' reads standard input.\n",
          runFormat},

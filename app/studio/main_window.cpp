@@ -22,6 +22,7 @@
 #include "profile/builtin.h"
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
+#include "editor/editor_tab.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
@@ -47,6 +48,9 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     session_ = new SimulationSession(machine_.profile, this);
     programMonitor_ = new ProgramMonitor(*session_, workArea_);
     workArea_->addTab(programMonitor_, QString());
+    programEditor_ = new EditorTab(session_, workArea_);
+    workArea_->addTab(programEditor_, QString());
+    connect(programEditor_, &EditorTab::statusMessage, this, [this](const QString& m) { statusBar()->showMessage(m, 10000); });
     createDocks();
     createMenus();
     machineLabel_ = new QLabel(this);
@@ -339,6 +343,7 @@ void MainWindow::retranslate() {
     aboutAction_->setText(tr("&About K528 Studio"));
 
     workArea_->setTabText(workArea_->indexOf(programMonitor_), tr("Program"));
+    workArea_->setTabText(workArea_->indexOf(programEditor_), tr("Editor"));
     k923Dock_->setWindowTitle(tr("K923 operator panel"));
     machineDock_->setWindowTitle(tr("Machine control panel"));
     messagesDock_->setWindowTitle(tr("Messages"));

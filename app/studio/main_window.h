@@ -23,6 +23,7 @@ class MachinePanelWidget;
 class MessagesView;
 class AxesView;
 class ProgramMonitor;
+class EditorTab;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -49,6 +50,7 @@ public:
     AxesView* axesView() const { return axesView_; }
     // The tab "Program" of the work area: the program the controller runs.
     ProgramMonitor* programMonitor() const { return programMonitor_; }
+    EditorTab* programEditor() const { return programEditor_; }
     // The machine this window simulates, and where it came from.
     const MachineChoice& machine() const { return machine_; }
     // File > Machine: the machines to choose from (rebuilt as it opens).
@@ -108,6 +110,7 @@ private:
     MessagesView* messagesView_ = nullptr;
     AxesView* axesView_ = nullptr;
     ProgramMonitor* programMonitor_ = nullptr;
+    EditorTab* programEditor_ = nullptr;
     bool shown_ = false;
     QAction* quitAction_ = nullptr;
     QAction* loadProgramsAction_ = nullptr;

@@ -51,6 +51,23 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out, QString("GOTO 99\nG2 X1\n"));
     }
+    void renumberRewritesEveryJump() {
+        QTemporaryDir dir;
+        const QString f = write(dir, "r.k528", "%L1\nN5 G1 X1\nIF R1>0 GOTO 7\nN7 GOTO 5\nM30\n");
+        auto r = runK528({"format", "--renumber", f});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QString("%L1\nN1 G1 X1\nN2 IF R1>0 GOTO 3\nN3 GOTO 1\nN4 M30\n"));
+        r = runK528({"format", "--renumber", "--start", "10", "--step", "5", f});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QString("%L1\nN10 G1 X1\nN15 IF R1>0 GOTO 20\nN20 GOTO 10\nN25 M30\n"));
+        r = runK528({"format", "--renumber", "--start", "998", "--step", "5", "--lang", "en", f});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains("999"));
+        QCOMPARE(runK528({"format", "--step", "5", f}).exitCode, 2);
+        QCOMPARE(runK528({"format", "--renumber", "--step", "0", f}).exitCode, 2);
+        QCOMPARE(runK528({"format", "--renumber", "--in-place", f}).exitCode, 0);
+        QCOMPARE(read(f), QByteArray("%L1\nN1 G1 X1\nN2 IF R1>0 GOTO 3\nN3 GOTO 1\nN4 M30\n"));
+    }
     void syntaxErrorsStopFormatting() {
         QTemporaryDir dir;
         const QString f = write(dir, "s.k528", "G1 X5..3\nG1 Q5\n");

@@ -1,0 +1,485 @@
+#include "editor/editor_tab.h"
+
+#include "editor/frame_master.h"
+#include "editor/program_editor.h"
+#include "language.h"
+#include "session/program_loader.h"
+#include "session/simulation_session.h"
+
+#include <QDir>
+#include <QEvent>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTemporaryFile>
+#include <QToolBar>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace k528::studio {
+
+namespace {
+constexpr const char* kPathProperty = "k528.path";
+constexpr const char* kUntitledProperty = "k528.untitled";
+constexpr int kRecentMax = 8;
+} // namespace
+
+EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(parent), session_(session) {
+    setObjectName("programEditorTab");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    toolbar_ = new QToolBar(this);
+    toolbar_->setObjectName("editor.toolbar");
+    layout->addWidget(toolbar_);
+    newAction_ = toolbar_->addAction(QString(), this, &EditorTab::newFile);
+    openAction_ = toolbar_->addAction(QString(), this, &EditorTab::openDialog);
+    recentMenu_ = new QMenu(this);
+    recentAction_ = toolbar_->addAction(QString());
+    recentAction_->setMenu(recentMenu_);
+    if (auto* b = qobject_cast<QToolButton*>(toolbar_->widgetForAction(recentAction_)))
+        b->setPopupMode(QToolButton::InstantPopup);
+    saveAction_ = toolbar_->addAction(QString(), this, [this] { save(); });
+    saveAsAction_ = toolbar_->addAction(QString(), this, [this] { saveAs(); });
+    toolbar_->addSeparator();
+    machineAction_ = toolbar_->addAction(QString());
+    machineAction_->setCheckable(true);
+    machineAction_->setChecked(true);
+    connect(machineAction_, &QAction::toggled, this, &EditorTab::setCheckAgainstMachine);
+    sendAction_ = toolbar_->addAction(QString(), this, [this] { sendToController(); });
+    toolbar_->addSeparator();
+    masterAction_ = toolbar_->addAction(QString(), this, &EditorTab::openMaster);
+    newAction_->setShortcut(QKeySequence::New);
+    saveAction_->setShortcut(QKeySequence::Save);
+
+    auto* split = new QSplitter(Qt::Vertical, this);
+    auto* top = new QSplitter(Qt::Horizontal, split);
+    outline_ = new QTreeWidget(top);
+    outline_->setObjectName("editor.outline");
+    outline_->setColumnCount(1);
+    outline_->setRootIsDecorated(false);
+    tabs_ = new QTabWidget(top);
+    tabs_->setObjectName("editor.tabs");
+    tabs_->setTabsClosable(true);
+    tabs_->setDocumentMode(true);
+    top->addWidget(outline_);
+    top->addWidget(tabs_);
+    top->setStretchFactor(1, 4);
+    problems_ = new QTreeWidget(split);
+    problems_->setObjectName("editor.problems");
+    problems_->setColumnCount(5);
+    problems_->setRootIsDecorated(false);
+    problems_->header()->setStretchLastSection(true);
+    split->addWidget(top);
+    split->addWidget(problems_);
+    split->setStretchFactor(0, 4);
+    layout->addWidget(split, 1);
+    count_ = new QLabel(this);
+    count_->setObjectName("editor.problemCount");
+    layout->addWidget(count_);
+
+    connect(tabs_, &QTabWidget::tabCloseRequested, this, [this](int i) { closeDocument(i); });
+    connect(tabs_, &QTabWidget::currentChanged, this, [this] {
+        refreshProblems();
+        refreshOutline();
+    });
+    connect(problems_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+        ProgramEditor* ed = currentEditor();
+        if (!ed || !item)
+            return;
+        const int line = item->data(0, Qt::UserRole).toInt();
+        const int col = item->data(0, Qt::UserRole + 1).toInt();
+        ed->setCursorPosition(line - 1, std::max(0, col - 1));
+        ed->ensureLineVisible(line - 1);
+        ed->setFocus();
+    });
+    connect(outline_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+        if (ProgramEditor* ed = currentEditor(); ed && item) {
+            const int line = item->data(0, Qt::UserRole).toInt();
+            ed->setCursorPosition(std::max(0, line - 1), 0);
+            ed->ensureLineVisible(std::max(0, line - 1));
+        }
+    });
+    connect(&watcher_, &QFileSystemWatcher::fileChanged, this, &EditorTab::fileChangedOnDisk);
+    ask_ = [this](const QString& name) {
+        const auto b = QMessageBox::question(this, tr("Unsaved changes"),
+                                             tr("%1 has unsaved changes. Save them?").arg(name),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        return b == QMessageBox::Save ? CloseChoice::Save : b == QMessageBox::Discard ? CloseChoice::Discard
+                                                                                   : CloseChoice::Cancel;
+    };
+    retranslate();
+    fillRecentMenu();
+    // The unsaved-changes guard: the window does not close while a modified
+    // document's question is answered «Cancel».
+    if (parent && parent->window())
+        parent->window()->installEventFilter(this);
+}
+
+bool EditorTab::eventFilter(QObject* watched, QEvent* e) {
+    if (e->type() == QEvent::Close && watched == window() && !closeAll()) {
+        e->ignore();
+        return true;
+    }
+    return QWidget::eventFilter(watched, e);
+}
+
+ProgramEditor* EditorTab::currentEditor() const { return qobject_cast<ProgramEditor*>(tabs_->currentWidget()); }
+int EditorTab::documentCount() const { return tabs_->count(); }
+ProgramEditor* EditorTab::editorAt(int index) const { return qobject_cast<ProgramEditor*>(tabs_->widget(index)); }
+QString EditorTab::pathOf(int index) const {
+    QWidget* w = tabs_->widget(index);
+    return w ? w->property(kPathProperty).toString() : QString();
+}
+
+void EditorTab::setCheckAgainstMachine(bool on) {
+    checkMachine_ = on;
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (ProgramEditor* ed = editorAt(i)) {
+            if (on && session_)
+                ed->setMachine(session_->simulation().profile(), session_->controller().programs());
+            else
+                ed->setMachine(std::nullopt);
+        }
+}
+
+int EditorTab::addDocument(const QString& path, const QString& text) {
+    auto* ed = new ProgramEditor(tabs_);
+    ed->setProperty(kPathProperty, path);
+    if (path.isEmpty())
+        ed->setProperty(kUntitledProperty, ++untitled_);
+    if (checkMachine_ && session_)
+        ed->setMachine(session_->simulation().profile(), session_->controller().programs());
+    ed->setText(text);
+    ed->setModified(false);
+    connect(ed, &ProgramEditor::validated, this, [this, ed] {
+        if (ed == currentEditor()) {
+            refreshProblems();
+            refreshOutline();
+        }
+    });
+    connect(ed, &QsciScintilla::modificationChanged, this, &EditorTab::refreshTitles);
+    const int i = tabs_->addTab(ed, QString());
+    tabs_->setCurrentIndex(i);
+    refreshTitles();
+    ed->validateNow();
+    return i;
+}
+
+void EditorTab::newFile() { addDocument(QString(), QStringLiteral("%L1\nM30\n")); }
+
+bool EditorTab::openFile(const QString& path) {
+    const QString abs = QFileInfo(path).absoluteFilePath();
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (pathOf(i) == abs) {
+            tabs_->setCurrentIndex(i);
+            return true;
+        }
+    QFile f(abs);
+    if (!f.open(QIODevice::ReadOnly)) {
+        emit statusMessage(tr("%1 cannot be read: %2").arg(abs, f.errorString()));
+        return false;
+    }
+    addDocument(abs, QString::fromUtf8(f.readAll()));
+    watcher_.addPath(abs);
+    addRecent(abs);
+    return true;
+}
+
+void EditorTab::openDialog() {
+    const QStringList paths = QFileDialog::getOpenFileNames(this, tr("Open program"), QString(),
+                                                            tr("K528 programs (*.k528 *.txt);;All files (*)"));
+    for (const QString& p : paths)
+        openFile(p);
+}
+
+bool EditorTab::saveTo(int index, const QString& path) {
+    ProgramEditor* ed = editorAt(index);
+    if (!ed)
+        return false;
+    const QString old = pathOf(index);
+    if (!old.isEmpty())
+        watcher_.removePath(old);
+    QFile f(path);
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(ed->text().toUtf8()) < 0) {
+        emit statusMessage(tr("%1 cannot be written: %2").arg(path, f.errorString()));
+        if (!old.isEmpty())
+            watcher_.addPath(old);
+        return false;
+    }
+    f.close();
+    const QString abs = QFileInfo(path).absoluteFilePath();
+    ed->setProperty(kPathProperty, abs);
+    ed->setModified(false);
+    watcher_.addPath(abs);
+    addRecent(abs);
+    refreshTitles();
+    emit statusMessage(tr("Saved %1").arg(QFileInfo(abs).fileName()));
+    return true;
+}
+
+bool EditorTab::save() {
+    const int i = tabs_->currentIndex();
+    if (i < 0)
+        return false;
+    if (pathOf(i).isEmpty())
+        return saveAs();
+    return saveTo(i, pathOf(i));
+}
+
+bool EditorTab::saveAs() {
+    const int i = tabs_->currentIndex();
+    if (i < 0)
+        return false;
+    const QString p = QFileDialog::getSaveFileName(this, tr("Save program as"), pathOf(i),
+                                                   tr("K528 programs (*.k528 *.txt);;All files (*)"));
+    return !p.isEmpty() && saveTo(i, p);
+}
+
+bool EditorTab::closeDocument(int index) {
+    ProgramEditor* ed = editorAt(index);
+    if (!ed)
+        return false;
+    if (ed->isModified()) {
+        switch (ask_(tabs_->tabText(index))) {
+        case CloseChoice::Cancel:
+            return false;
+        case CloseChoice::Save:
+            tabs_->setCurrentIndex(index);
+            if (!save())
+                return false;
+            break;
+        case CloseChoice::Discard:
+            break;
+        }
+    }
+    if (!pathOf(index).isEmpty())
+        watcher_.removePath(pathOf(index));
+    tabs_->removeTab(index);
+    ed->deleteLater();
+    return true;
+}
+
+bool EditorTab::closeAll() {
+    while (tabs_->count() > 0)
+        if (!closeDocument(tabs_->count() - 1))
+            return false;
+    return true;
+}
+
+void EditorTab::fileChangedOnDisk(const QString& path) {
+    for (int i = 0; i < tabs_->count(); ++i) {
+        if (pathOf(i) != path)
+            continue;
+        ProgramEditor* ed = editorAt(i);
+        QFile f(path);
+        if (!f.exists() || !f.open(QIODevice::ReadOnly))
+            return;
+        const QString text = QString::fromUtf8(f.readAll());
+        if (text == ed->text())
+            return;
+        // Unsaved edits are never thrown away: ask first.
+        if (ed->isModified() &&
+            QMessageBox::question(this, tr("File changed on disk"),
+                                  tr("%1 was changed on disk. Reload it and lose your changes?").arg(path)) !=
+                QMessageBox::Yes)
+            return;
+        int line = 0, index = 0;
+        ed->getCursorPosition(&line, &index);
+        ed->setText(text);
+        ed->setModified(false);
+        ed->setCursorPosition(std::min(line, ed->lines() - 1), 0);
+        watcher_.addPath(path); // some editors replace the file
+        emit statusMessage(tr("Reloaded %1").arg(QFileInfo(path).fileName()));
+    }
+}
+
+bool EditorTab::sendToController() {
+    ProgramEditor* ed = currentEditor();
+    if (!ed || !session_)
+        return false;
+    // The loader reads a file: the editor's text as it is now, not the saved one.
+    QTemporaryFile tmp(QDir::tempPath() + "/k528-editor-XXXXXX.k528");
+    if (!tmp.open())
+        return false;
+    tmp.write(ed->text().toUtf8());
+    tmp.flush();
+    const ProgramLoad r = loadProgramFile(*session_, tmp.fileName());
+    if (r.loaded) {
+        QStringList names;
+        for (int n : r.programs)
+            names << QStringLiteral("L%1").arg(n);
+        emit statusMessage(tr("Sent %1 to the controller").arg(names.join(", ")));
+    } else {
+        emit statusMessage(r.problem);
+    }
+    return r.loaded;
+}
+
+void EditorTab::openMaster() {
+    ProgramEditor* ed = currentEditor();
+    if (!ed)
+        return;
+    int line = 0, index = 0;
+    ed->getCursorPosition(&line, &index);
+    FrameMaster master(this);
+    QString current = ed->text(line);
+    while (current.endsWith('\n') || current.endsWith('\r'))
+        current.chop(1);
+    const bool editing = !current.trimmed().isEmpty() && !current.trimmed().startsWith('%') &&
+                         master.setFromLine(current);
+    if (master.exec() == QDialog::Accepted && master.valid())
+        insertFromMaster(master.text(), editing);
+}
+
+void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
+    ProgramEditor* ed = currentEditor();
+    if (!ed)
+        return;
+    int line = 0, index = 0;
+    ed->getCursorPosition(&line, &index);
+    ed->beginUndoAction();
+    if (replaceLine) {
+        QString old = ed->text(line);
+        int len = static_cast<int>(old.size());
+        while (len > 0 && (old.at(len - 1) == '\n' || old.at(len - 1) == '\r'))
+            --len;
+        // A comment on the line stays after the new frame.
+        const int cut = [&] {
+            for (int i = 0; i < len; ++i)
+                if (old.at(i) == ';')
+                    return i;
+            return len;
+        }();
+        QString rest = old.mid(cut, len - cut);
+        ed->setSelection(line, 0, line, len);
+        ed->replaceSelectedText(rest.isEmpty() ? text : text + " " + rest);
+    } else {
+        const QString cur = ed->text(line);
+        const bool emptyLine = cur.trimmed().isEmpty();
+        if (emptyLine) {
+            ed->setSelection(line, 0, line, static_cast<int>(cur.size()) - (cur.endsWith('\n') ? 1 : 0));
+            ed->replaceSelectedText(text);
+        } else {
+            ed->insertAt(text + "\n", line + 1, 0);
+            if (line + 1 >= ed->lines() - 1 && !cur.endsWith('\n'))
+                ed->insertAt("\n", line + 1, 0);
+            ++line;
+        }
+    }
+    ed->endUndoAction();
+    ed->setCursorPosition(line, 0);
+}
+
+void EditorTab::refreshProblems() {
+    problems_->clear();
+    ProgramEditor* ed = currentEditor();
+    int errors = 0, warnings = 0;
+    if (ed) {
+        const bool ru = currentLanguage() == QStringLiteral("ru");
+        QList<QTreeWidgetItem*> items;
+        for (const program::Diagnostic& d : ed->diagnostics()) {
+            d.isError() ? ++errors : ++warnings;
+            if (items.size() >= 5000)
+                continue; // the count says how many; the list stays quick
+            auto* it = new QTreeWidgetItem;
+            it->setText(0, d.isError() ? tr("error") : tr("warning"));
+            it->setText(1, d.program > 0 ? QStringLiteral("L%1").arg(d.program) : QString());
+            it->setText(2, QString::number(d.line));
+            it->setText(3, d.manualNumber > 0 ? QStringLiteral("[M%1]").arg(d.manualNumber, 2, 10, QChar('0'))
+                                              : QString());
+            it->setText(4, QString::fromStdString(ru ? d.messageRu : d.messageEn));
+            it->setData(0, Qt::UserRole, d.line);
+            it->setData(0, Qt::UserRole + 1, d.column);
+            it->setForeground(0, d.isError() ? QColor(0xc0, 0, 0) : QColor(0xa0, 0x60, 0));
+            items << it;
+        }
+        problems_->addTopLevelItems(items);
+    }
+    count_->setText(tr("Errors: %1, warnings: %2").arg(errors).arg(warnings));
+    emit problemCountChanged(errors, warnings);
+}
+
+void EditorTab::refreshOutline() {
+    outline_->clear();
+    ProgramEditor* ed = currentEditor();
+    if (!ed)
+        return;
+    for (const program::Program& p : ed->store().programs()) {
+        auto* it = new QTreeWidgetItem(outline_);
+        QString t = QStringLiteral("L%1").arg(p.number);
+        if (p.title)
+            t += QStringLiteral("  ") + QString::fromStdString(*p.title);
+        it->setText(0, t);
+        it->setData(0, Qt::UserRole, p.headerLine);
+    }
+    if (ed->store().messages.present) {
+        auto* it = new QTreeWidgetItem(outline_);
+        it->setText(0, QStringLiteral("%MESSAGES"));
+        it->setData(0, Qt::UserRole, ed->store().messages.headerLine);
+    }
+}
+
+void EditorTab::refreshTitles() {
+    for (int i = 0; i < tabs_->count(); ++i) {
+        ProgramEditor* ed = editorAt(i);
+        const QString p = pathOf(i);
+        QString name = p.isEmpty() ? tr("untitled %1").arg(ed->property(kUntitledProperty).toInt())
+                                   : QFileInfo(p).fileName();
+        if (ed->isModified())
+            name += QStringLiteral(" *");
+        tabs_->setTabText(i, name);
+        tabs_->setTabToolTip(i, p);
+    }
+}
+
+void EditorTab::addRecent(const QString& path) {
+    QSettings s;
+    QStringList r = s.value("editor/recent").toStringList();
+    r.removeAll(path);
+    r.prepend(path);
+    while (r.size() > kRecentMax)
+        r.removeLast();
+    s.setValue("editor/recent", r);
+    fillRecentMenu();
+}
+
+void EditorTab::fillRecentMenu() {
+    recentMenu_->clear();
+    const QStringList r = QSettings().value("editor/recent").toStringList();
+    for (const QString& p : r)
+        recentMenu_->addAction(p, this, [this, p] { openFile(p); });
+    recentAction_->setEnabled(!r.isEmpty());
+}
+
+void EditorTab::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void EditorTab::retranslate() {
+    newAction_->setText(tr("New"));
+    openAction_->setText(tr("Open…"));
+    recentAction_->setText(tr("Recent"));
+    saveAction_->setText(tr("Save"));
+    saveAsAction_->setText(tr("Save as…"));
+    machineAction_->setText(tr("Check for the machine"));
+    machineAction_->setToolTip(tr("Also check the machine's software limits, feeds and axes"));
+    sendAction_->setText(tr("Send to the controller"));
+    masterAction_->setText(tr("Master…"));
+    masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
+    outline_->setHeaderLabels({tr("Programs")});
+    problems_->setHeaderLabels({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")});
+    refreshTitles();
+    refreshProblems();
+}
+
+} // namespace k528::studio

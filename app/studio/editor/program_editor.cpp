@@ -1,0 +1,322 @@
+#include "editor/program_editor.h"
+
+#include "editing/completion.h"
+#include "editor/program_lexer.h"
+#include "engine/program_check.h"
+#include "language.h"
+#include "program/validator.h"
+
+#include <QCoreApplication>
+#include <QFontDatabase>
+#include <QPointer>
+#include <QThreadPool>
+#include <QToolTip>
+
+namespace k528::studio {
+
+namespace {
+
+// One validation: what the worker computes from a copy of the text.
+struct Validation {
+    std::vector<program::Diagnostic> diagnostics;
+    program::ProgramStore store;
+};
+
+Validation validateText(const QByteArray& text, const std::optional<profile::MachineProfile>& machine,
+                        const program::ProgramStore& machinePrograms) {
+    const std::string_view t(text.constData(), static_cast<std::size_t>(text.size()));
+    Validation v;
+    if (machine) {
+        engine::FileCheck c = engine::checkFileForMachine(t, {}, *machine, machinePrograms);
+        v.diagnostics = std::move(c.diagnostics);
+        v.store = std::move(c.parsed.store);
+    } else {
+        program::CheckResult c = program::check(t);
+        v.diagnostics = std::move(c.diagnostics);
+        v.store = std::move(c.store);
+    }
+    return v;
+}
+
+constexpr int kUserListG = 1, kUserListM = 2, kUserListR = 3, kUserListL = 4, kUserListTarget = 5,
+              kUserListMessage = 6;
+const QString kDetailSeparator = QStringLiteral("  — ");
+
+} // namespace
+
+struct ProgramEditor::Result {
+    std::uint64_t generation = 0;
+    Validation v;
+};
+
+ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(parent), alive_(std::make_shared<bool>(true)) {
+    setObjectName("programEditor");
+    setUtf8(true);
+    lexer_ = new ProgramLexer(this);
+    setLexer(lexer_);
+    const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    setMarginsFont(mono);
+    // Margin 0: line numbers; 1: breakpoints and the executing frame; 2: folding.
+    setMarginType(0, NumberMargin);
+    setMarginWidth(0, "99999");
+    setMarginLineNumbers(0, true);
+    setMarginType(1, SymbolMargin);
+    setMarginWidth(1, 16);
+    setMarginSensitivity(1, true);
+    setMarginMarkerMask(1, (1 << kBreakpointMarker) | (1 << kExecutingMarker));
+    markerDefine(Circle, kBreakpointMarker);
+    setMarkerBackgroundColor(QColor(0xd0, 0x20, 0x20), kBreakpointMarker);
+    setMarkerForegroundColor(QColor(0x80, 0x00, 0x00), kBreakpointMarker);
+    markerDefine(RightArrow, kExecutingMarker);
+    setMarkerBackgroundColor(QColor(0xf0, 0xc0, 0x00), kExecutingMarker);
+    setFolding(BoxedTreeFoldStyle, 2);
+    connect(this, &QsciScintilla::marginClicked, this, [this](int margin, int line, Qt::KeyboardModifiers) {
+        if (margin == 1)
+            toggleBreakpoint(line);
+    });
+    // Squiggles.
+    indicatorDefine(SquiggleIndicator, kErrorIndicator);
+    setIndicatorForegroundColor(QColor(0xe0, 0x00, 0x00), kErrorIndicator);
+    indicatorDefine(SquiggleIndicator, kWarningIndicator);
+    setIndicatorForegroundColor(QColor(0xe0, 0x90, 0x00), kWarningIndicator);
+    setCaretLineVisible(true);
+    setCaretLineBackgroundColor(QColor(0xf4, 0xf4, 0xff));
+    setAutoIndent(false);
+    SendScintilla(SCI_SETMOUSEDWELLTIME, 400);
+    connect(this, &QsciScintilla::SCN_DWELLSTART, this, &ProgramEditor::dwellStart);
+    connect(this, &QsciScintilla::SCN_DWELLEND, this, [](int, int, int) { QToolTip::hideText(); });
+    connect(this, &QsciScintilla::SCN_CHARADDED, this, &ProgramEditor::charAdded);
+    connect(this, &QsciScintilla::SCN_UPDATEUI, this, [this](int) {
+        const int first = static_cast<int>(SendScintilla(SCI_GETFIRSTVISIBLELINE));
+        const int shown = static_cast<int>(SendScintilla(SCI_LINESONSCREEN));
+        lexer_->styleVisible(static_cast<int>(SendScintilla(SCI_DOCLINEFROMVISIBLE, first)),
+                             static_cast<int>(SendScintilla(SCI_DOCLINEFROMVISIBLE, first + shown)));
+    });
+    connect(this, &QsciScintilla::userListActivated, this, &ProgramEditor::completionChosen);
+
+    debounce_.setSingleShot(true);
+    debounce_.setInterval(kDebounceMs);
+    connect(&debounce_, &QTimer::timeout, this, &ProgramEditor::startValidation);
+    connect(this, &QsciScintilla::textChanged, this, &ProgramEditor::scheduleValidation);
+}
+
+ProgramEditor::~ProgramEditor() { *alive_ = false; }
+
+void ProgramEditor::setMachine(std::optional<profile::MachineProfile> machine, program::ProgramStore machinePrograms) {
+    machine_ = std::move(machine);
+    machinePrograms_ = std::move(machinePrograms);
+    scheduleValidation();
+}
+
+void ProgramEditor::scheduleValidation() {
+    ++generation_;
+    debounce_.start();
+}
+
+void ProgramEditor::startValidation() {
+    if (workerBusy_) {
+        pendingAgain_ = true; // the newest text is validated when the worker is done
+        return;
+    }
+    workerBusy_ = true;
+    const QByteArray text = this->text().toUtf8();
+    const std::uint64_t gen = generation_;
+    auto machine = machine_;
+    auto programs = machinePrograms_;
+    std::weak_ptr<bool> alive = alive_;
+    QPointer<ProgramEditor> self(this);
+    QThreadPool::globalInstance()->start([text, gen, machine, programs, self, alive] {
+        auto r = std::make_shared<Result>();
+        r->generation = gen;
+        r->v = validateText(text, machine, programs);
+        if (alive.expired())
+            return;
+        QMetaObject::invokeMethod(
+            QCoreApplication::instance(), [self, r] {
+                if (!self)
+                    return;
+                self->workerBusy_ = false;
+                if (r->generation == self->generation_)
+                    self->apply(*r);
+                if (self->pendingAgain_ || r->generation != self->generation_) {
+                    self->pendingAgain_ = false;
+                    self->startValidation();
+                }
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void ProgramEditor::validateNow() {
+    debounce_.stop();
+    Result r;
+    r.generation = generation_;
+    r.v = validateText(text().toUtf8(), machine_, machinePrograms_);
+    apply(r);
+}
+
+std::pair<int, int> ProgramEditor::spanPositions(const program::Diagnostic& d) const {
+    if (d.line < 1 || d.line > lines())
+        return {0, 0};
+    const int line = d.line - 1;
+    const int lineStart = static_cast<int>(SendScintilla(SCI_POSITIONFROMLINE, line));
+    const int lineEnd = static_cast<int>(SendScintilla(SCI_GETLINEENDPOSITION, line));
+    // Columns are code points: walk the characters from the line's start.
+    int pos = lineStart;
+    int col = 1;
+    const int column = std::max(1, d.column);
+    while (col < column && pos < lineEnd) {
+        pos = static_cast<int>(SendScintilla(SCI_POSITIONAFTER, pos));
+        ++col;
+    }
+    const int begin = pos;
+    while (col < d.endColumn && pos < lineEnd) {
+        pos = static_cast<int>(SendScintilla(SCI_POSITIONAFTER, pos));
+        ++col;
+    }
+    int end = pos;
+    if (end <= begin) // a span at the end of the line: mark the last character
+        end = std::min(lineEnd, begin + 1) > begin ? std::min(lineEnd, begin + 1) : begin;
+    return {begin, end};
+}
+
+void ProgramEditor::apply(const Result& r) {
+    ++validations_;
+    diagnostics_ = r.v.diagnostics;
+    store_ = r.v.store;
+    const int length = static_cast<int>(SendScintilla(SCI_GETLENGTH));
+    for (int ind : {kErrorIndicator, kWarningIndicator}) {
+        SendScintilla(SCI_SETINDICATORCURRENT, ind);
+        SendScintilla(SCI_INDICATORCLEARRANGE, 0, length);
+    }
+    diagnosticPositions_.clear();
+    diagnosticPositions_.reserve(diagnostics_.size());
+    for (const program::Diagnostic& d : diagnostics_) {
+        const auto [b, e] = spanPositions(d);
+        diagnosticPositions_.emplace_back(b, e);
+        if (e <= b)
+            continue;
+        SendScintilla(SCI_SETINDICATORCURRENT, d.isError() ? kErrorIndicator : kWarningIndicator);
+        SendScintilla(SCI_INDICATORFILLRANGE, b, e - b);
+    }
+    emit validated();
+}
+
+QString ProgramEditor::hoverText(int position) const {
+    const bool ru = currentLanguage() == QStringLiteral("ru");
+    QStringList out;
+    for (std::size_t i = 0; i < diagnostics_.size() && i < diagnosticPositions_.size(); ++i) {
+        const auto [b, e] = diagnosticPositions_[i];
+        if (position < b || position >= e)
+            continue;
+        const program::Diagnostic& d = diagnostics_[i];
+        QString t = QString::fromStdString(ru ? d.messageRu : d.messageEn);
+        if (d.manualNumber > 0)
+            t = QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0')) + t;
+        out << t;
+    }
+    return out.join('\n');
+}
+
+void ProgramEditor::dwellStart(int position, int x, int y) {
+    if (position < 0)
+        return;
+    const QString t = hoverText(position);
+    if (!t.isEmpty())
+        QToolTip::showText(viewport()->mapToGlobal(QPoint(x, y)), t, this);
+}
+
+int ProgramEditor::programAtLine(int line) const {
+    int found = 0;
+    for (const program::Program& p : store_.programs())
+        if (p.headerLine > 0 && p.headerLine - 1 <= line)
+            found = p.number;
+    if (found == 0 && store_.size() == 1)
+        found = store_.programs()[0].number;
+    return found;
+}
+
+QList<int> ProgramEditor::breakpointLines() const {
+    QList<int> out;
+    int line = markerFindNext(0, 1 << kBreakpointMarker);
+    while (line >= 0) {
+        out << line;
+        line = markerFindNext(line + 1, 1 << kBreakpointMarker);
+    }
+    return out;
+}
+
+void ProgramEditor::toggleBreakpoint(int line) {
+    if (markersAtLine(line) & (1 << kBreakpointMarker))
+        markerDelete(line, kBreakpointMarker);
+    else
+        markerAdd(line, kBreakpointMarker);
+}
+
+void ProgramEditor::setExecutingLine(int line) {
+    if (line == executingLine_)
+        return;
+    markerDeleteAll(kExecutingMarker);
+    executingLine_ = line;
+    if (line >= 0) {
+        markerAdd(line, kExecutingMarker);
+        ensureLineVisible(line);
+    }
+}
+
+void ProgramEditor::charAdded(int ch) {
+    int line = 0, index = 0;
+    getCursorPosition(&line, &index);
+    const QString before = text(line).left(index);
+    const QChar c = QChar(ch).toUpper();
+    const QChar prev = before.size() >= 2 ? before.at(before.size() - 2) : QChar(' ');
+    if (prev.isLetterOrNumber() && !(c == '#'))
+        return;
+    const bool ru = currentLanguage() == QStringLiteral("ru");
+    editing::CompletionContext ctx;
+    ctx.store = &store_;
+    ctx.currentProgram = programAtLine(line);
+    editing::CompletionKind kind;
+    int id = 0;
+    if (c == 'G') {
+        kind = editing::CompletionKind::G, id = kUserListG;
+    } else if (c == 'M') {
+        kind = editing::CompletionKind::M, id = kUserListM;
+    } else if (c == 'R') {
+        kind = editing::CompletionKind::R, id = kUserListR;
+    } else if (c == 'L') {
+        kind = editing::CompletionKind::Call, id = kUserListL;
+    } else if (c == '#') {
+        kind = editing::CompletionKind::Message, id = kUserListMessage;
+    } else if (c == ' ' && before.trimmed().toUpper().endsWith("GOTO")) {
+        kind = editing::CompletionKind::JumpTarget, id = kUserListTarget;
+    } else {
+        return;
+    }
+    QStringList items;
+    for (const editing::CompletionItem& it : editing::complete(editing::completionCatalog(ctx), kind, ""))
+        items << QString::fromStdString(it.word) + kDetailSeparator +
+                     QString::fromStdString(ru ? it.detailRu : it.detailEn);
+    if (!items.isEmpty())
+        showUserList(id, items);
+}
+
+void ProgramEditor::completionChosen(int id, const QString& text) {
+    const QString word = text.section(kDetailSeparator, 0, 0);
+    int line = 0, index = 0;
+    getCursorPosition(&line, &index);
+    // The typed address letter (or '#') is replaced by the whole word.
+    if (id != kUserListTarget && index > 0) {
+        setSelection(line, index - 1, line, index);
+        removeSelectedText();
+    }
+    insert(word);
+    setCursorPosition(line, (id != kUserListTarget && index > 0 ? index - 1 : index) + static_cast<int>(word.size()));
+    const QString detail = text.section(kDetailSeparator, 1);
+    if (!detail.isEmpty()) {
+        const QByteArray tip = (word + ": " + detail).toUtf8();
+        SendScintilla(SCI_CALLTIPSHOW, static_cast<long>(SendScintilla(SCI_GETCURRENTPOS)), tip.constData());
+    }
+}
+
+} // namespace k528::studio

@@ -1,0 +1,88 @@
+// One program file in a QScintilla editor (issue 11): line numbers, a
+// margin for breakpoints and the executing frame, folding by %L program and
+// %MESSAGES, colours from core's tokenizer (ProgramLexer), and live
+// validation — debounced, on a worker thread so typing never waits — by
+// core's one validator (program::check, or engine::checkFileForMachine
+// when a machine is chosen, as `k528 check --profile`). Diagnostics become
+// squiggles on their exact column span and hover text «[Mnn] text»;
+// completion of G, M, R, L, jump targets and #k comes from core's catalog.
+#pragma once
+
+#include "program/diagnostic.h"
+#include "program/model.h"
+#include "profile/profile.h"
+
+#include <Qsci/qsciscintilla.h>
+#include <QTimer>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace k528::studio {
+
+class ProgramLexer;
+
+class ProgramEditor : public QsciScintilla {
+    Q_OBJECT
+public:
+    static constexpr int kDebounceMs = 150;
+    static constexpr int kBreakpointMarker = 0;
+    static constexpr int kExecutingMarker = 1;
+    static constexpr int kErrorIndicator = 8;
+    static constexpr int kWarningIndicator = 9;
+
+    explicit ProgramEditor(QWidget* parent = nullptr);
+    ~ProgramEditor() override;
+
+    // The machine the file is for: its limits, feeds and axes are checked
+    // too, over the programs it holds. nullopt = the language only.
+    void setMachine(std::optional<profile::MachineProfile> machine, program::ProgramStore machinePrograms = {});
+    bool hasMachine() const { return machine_.has_value(); }
+
+    // Validates now, on this thread (tests, benchmarks, before sending).
+    void validateNow();
+    // The diagnostics of the last validation, and the store it read.
+    const std::vector<program::Diagnostic>& diagnostics() const { return diagnostics_; }
+    const program::ProgramStore& store() const { return store_; }
+    int validations() const { return validations_; }
+
+    // Document positions of a diagnostic's span.
+    std::pair<int, int> spanPositions(const program::Diagnostic& d) const;
+    // Text of the diagnostics covering `position` ("" if none).
+    QString hoverText(int position) const;
+    // The program (%L number) the 0-based line is in, 0 if none.
+    int programAtLine(int line) const;
+
+    // Breakpoints: 0-based lines with the marker.
+    QList<int> breakpointLines() const;
+    void toggleBreakpoint(int line);
+    void setExecutingLine(int line); // -1 = none
+
+signals:
+    void validated(); // diagnostics() and store() are new
+
+private:
+    struct Result;
+    void scheduleValidation();
+    void startValidation();
+    void apply(const Result& r);
+    void charAdded(int ch);
+    void completionChosen(int id, const QString& text);
+    void dwellStart(int position, int x, int y);
+
+    ProgramLexer* lexer_ = nullptr;
+    QTimer debounce_;
+    std::optional<profile::MachineProfile> machine_;
+    program::ProgramStore machinePrograms_;
+    std::vector<program::Diagnostic> diagnostics_;
+    std::vector<std::pair<int, int>> diagnosticPositions_;
+    program::ProgramStore store_;
+    std::uint64_t generation_ = 0;
+    bool workerBusy_ = false;
+    bool pendingAgain_ = false;
+    int validations_ = 0;
+    int executingLine_ = -1;
+    std::shared_ptr<bool> alive_;
+};
+
+} // namespace k528::studio

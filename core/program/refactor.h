@@ -1,0 +1,37 @@
+// Refactorings that keep a program store right (issue 11): renumbering the
+// frames of a program with every IF/GOTO target following its frame, and
+// moving or copying a program to another number with the L calls that name
+// it following. Pure functions over the model; the text comes back through
+// the canonical formatter (format()).
+#pragma once
+
+#include <string>
+
+#include "program/model.h"
+
+namespace k528::program {
+
+struct RefactorResult {
+    bool ok = true;
+    std::string errorRu; // why nothing was changed
+    std::string errorEn;
+};
+
+// Gives every frame of `program` the number start, start+step, ... in order
+// and rewrites every IF/GOTO target to the new number of the frame it named
+// (the first frame with that N, as the interpreter jumps). A target that
+// names no frame (message 53) is left as written. Fails, changing nothing,
+// when the last number would pass 999 or start/step are not >= 1.
+RefactorResult renumber(Program& program, int start = 1, int step = 1);
+
+// Program `from` becomes program `to` (which must not exist); every L call
+// in the store that named `from` names `to`. Fails, changing nothing, when
+// `from` does not exist, `to` exists or is out of 1..99.
+RefactorResult moveProgram(ProgramStore& store, int from, int to);
+
+// A copy of program `from` is stored as `to` (which must not exist). Calls
+// in other programs keep calling `from`; calls inside the copy that named
+// `from` itself name `to`.
+RefactorResult copyProgram(ProgramStore& store, int from, int to);
+
+} // namespace k528::program
