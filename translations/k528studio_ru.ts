@@ -1353,6 +1353,133 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::ScopeView</name>
+    <message>
+        <source>Export CSV</source>
+        <translation>Экспорт CSV</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1</source>
+        <translation>Не удаётся записать %1</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>Экспорт PNG</translation>
+    </message>
+    <message>
+        <source>PNG (*.png)</source>
+        <translation>PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>%1  t = %2 s  setpoint %3 mm  position %4 mm  speed %5 mm/min  following error %6 mm  DAC %7</source>
+        <translation>%1  t = %2 с  задание %3 мм  положение %4 мм  скорость %5 мм/мин  ошибка рассогласования %6 мм  ЦАП %7</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Window, s</source>
+        <translation>Окно, с</translation>
+    </message>
+    <message>
+        <source>Fourth trace</source>
+        <translation>Четвёртый график</translation>
+    </message>
+    <message>
+        <source>Speed, mm/min</source>
+        <translation>Скорость, мм/мин</translation>
+    </message>
+    <message>
+        <source>DAC code</source>
+        <translation>Код ЦАП</translation>
+    </message>
+    <message>
+        <source>Trigger</source>
+        <translation>Запуск</translation>
+    </message>
+    <message>
+        <source>Free running</source>
+        <translation>Непрерывно</translation>
+    </message>
+    <message>
+        <source>Frame start</source>
+        <translation>Начало кадра</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Авария</translation>
+    </message>
+    <message>
+        <source>|Following error| over, mm</source>
+        <translation>|Ошибка рассогласования| больше, мм</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Экспорт CSV…</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>Экспорт PNG…</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Ось X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Ось Z</translation>
+    </message>
+    <message>
+        <source>Time, s</source>
+        <translation>Время, с</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Error, mm</source>
+        <translation>Ошибка, мм</translation>
+    </message>
+    <message>
+        <source>DAC</source>
+        <translation>ЦАП</translation>
+    </message>
+    <message>
+        <source>mm/min</source>
+        <translation>мм/мин</translation>
+    </message>
+    <message>
+        <source>Setpoint</source>
+        <translation>Задание</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <source>Following error</source>
+        <translation>Ошибка рассогласования</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>Move the mouse over a chart to read the values.</source>
+        <translation>Наведите мышь на график, чтобы прочитать значения.</translation>
+    </message>
+    <message>
+        <source>Oscilloscope</source>
+        <translation>Осциллограф</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::backplot::BackplotDock</name>
     <message>
         <source>Backplot</source>
