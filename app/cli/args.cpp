@@ -92,4 +92,17 @@ std::optional<double> parseNumber(std::string_view s) {
     return v;
 }
 
+bool parseAssignment(const std::string& text, long long& n, long long& v) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos)
+        return false;
+    const auto a = parseInt(text.substr(0, eq));
+    const auto b = parseInt(text.substr(eq + 1));
+    if (!a || !b)
+        return false;
+    n = *a;
+    v = *b;
+    return true;
+}
+
 } // namespace k528::cli

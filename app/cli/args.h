@@ -39,5 +39,7 @@ std::optional<long long> parseInt(std::string_view s);
 // Parses a finite decimal number ("12", "-0.5", "3600"); nullopt on anything
 // else (also "nan", "inf").
 std::optional<double> parseNumber(std::string_view s);
+// "N=V" with whole integers (--param, --r); false if malformed.
+bool parseAssignment(const std::string& text, long long& n, long long& v);
 
 } // namespace k528::cli

@@ -28,20 +28,6 @@ namespace k528::cli {
 
 namespace {
 
-// "N=V" with integers; false if malformed.
-bool parseAssignment(const std::string& text, long long& n, long long& v) {
-    const auto eq = text.find('=');
-    if (eq == std::string::npos)
-        return false;
-    const auto a = parseInt(text.substr(0, eq));
-    const auto b = parseInt(text.substr(eq + 1));
-    if (!a || !b)
-        return false;
-    n = *a;
-    v = *b;
-    return true;
-}
-
 json::Value resultJson(const engine::RunResult& r) {
     json::Value root;
     root.set("status", engine::runStatusName(r.status));

@@ -11,21 +11,6 @@
 
 namespace k528::cli {
 
-namespace {
-bool parseAssignment(const std::string& text, long long& n, long long& v) {
-    const auto eq = text.find('=');
-    if (eq == std::string::npos)
-        return false;
-    const auto a = parseInt(text.substr(0, eq));
-    const auto b = parseInt(text.substr(eq + 1));
-    if (!a || !b)
-        return false;
-    n = *a;
-    v = *b;
-    return true;
-}
-} // namespace
-
 int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
     if (args.positional().size() != 1)
         return usageError("needs exactly one FILE");
