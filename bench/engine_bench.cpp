@@ -6,7 +6,7 @@
 // Targets (issue 15): ≥ 10,000× real time for the program on the training
 // lathe and ≤ 200 ns for everything in one tick; ≥ 20,000× for the idle machine.
 //
-// bench_engine [REPEATS]
+// bench_engine [REPEATS [IDLE_TICKS]]   (smaller for callgrind: bench_engine 1 200000)
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 #include "engine/run.h"
@@ -43,7 +43,8 @@ N10 M30
 } // namespace
 
 int main(int argc, char** argv) {
-    const int repeats = argc > 1 ? std::atoi(argv[1]) : 3;
+    const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
+    const std::int64_t idleTicks = argc > 2 ? std::max(1000LL, std::atoll(argv[2])) : 2000000;
     bench::Report report;
     const profile::MachineProfile prof = profile::builtin("training-lathe");
     const program::ParseResult parsed = program::parse(kProgram);
@@ -78,7 +79,7 @@ int main(int argc, char** argv) {
             return 1;
         }
         sim.advance(1000);
-        const std::int64_t ticks = 2000000;
+        const std::int64_t ticks = idleTicks;
         const double t0 = bench::nowSeconds();
         sim.advance(ticks);
         const double wall = bench::nowSeconds() - t0;

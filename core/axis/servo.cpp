@@ -197,8 +197,10 @@ void Servo::tick(const ServoInputs& in, double dt) {
         // At rest, same inputs: the same count, regulator state, setpoint and
         // DAC code; only the time at rest grows.
         restTimerMs_ += dt;
+        quietTick_ = true;
         return;
     }
+    quietTick_ = false;
     lastIn_ = in;
     lastDt_ = dt;
     steady_ = false;

@@ -131,6 +131,10 @@ public:
     bool zeroMarkSeen() const { return markSeen_; }
     double zeroMarkInternal() const { return markInternal_; }
     double backlashOffset() const { return backlashOffset_; }
+    // The last tick changed nothing a caller can see (settled at rest, the
+    // same inputs: only the rest timer ran) and no command came since: every
+    // value above is what it was before that tick.
+    bool quiet() const { return quietTick_ && steady_; }
 
 private:
     void openLoop();
@@ -169,6 +173,7 @@ private:
     // The last tick left the axis settled and no command came since: a tick
     // with the same inputs changes nothing but the rest timer.
     bool steady_ = false;
+    bool quietTick_ = false; // the last tick was such a tick
     ServoInputs lastIn_;
     double lastDt_ = 0;
 };

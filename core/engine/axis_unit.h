@@ -57,6 +57,7 @@ struct AxisUnit {
         perIpd = 1.0 / static_cast<double>(ipd);
         softMin = static_cast<double>(k.softMinusDisc * ipd);
         softMax = static_cast<double>(k.softPlusDisc * ipd);
+        inputsKnown = false; // the fast-input functions may have changed with C
     }
 
     // Soft limits act once the axis is referenced (C10/C62 ВКЛ.ПРГ.КОН).
@@ -97,6 +98,11 @@ struct AxisUnit {
     // Signals of this tick (PLC bit OR fast input).
     bool limitPlus = false, limitMinus = false, cam = false, driveReady = true, displayMode = false;
     std::array<bool, 4> erase{};
+    // The words and fast-input byte the signals above were decoded from
+    // (decoded again only when one of them changes, or the constants did).
+    bool inputsKnown = false;
+    std::uint16_t inputsW0 = 0, inputsW1 = 0;
+    std::uint8_t inputsFast = 0;
 
     // Motion.
     MotionOwner owner = MotionOwner::None;

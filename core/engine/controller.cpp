@@ -141,6 +141,12 @@ void Controller::axisInputs(AxisUnit& u) {
     const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
     const std::uint16_t w1 = c_.words.word(z::axisControlWord(u.id, 1));
     const std::uint8_t fi = c_.io.fastInputs[static_cast<std::size_t>(a)];
+    if (u.inputsKnown && w0 == u.inputsW0 && w1 == u.inputsW1 && fi == u.inputsFast)
+        return; // the same words and inputs decode to the same signals
+    u.inputsKnown = true;
+    u.inputsW0 = w0;
+    u.inputsW1 = w1;
+    u.inputsFast = fi;
     const FastInputMap& f = c_.fast;
     u.limitPlus = on(w0, 5) || f.active(a, FastFunction::LimitPlus, fi);
     u.limitMinus = on(w0, 6) || f.active(a, FastFunction::LimitMinus, fi);
@@ -156,6 +162,17 @@ void Controller::axisInputs(AxisUnit& u) {
 
 void Controller::systemChecks() {
     const MachineIo& io = c_.io;
+    // The checks' inputs as one word: the same inputs raise or clear nothing
+    // once they have been applied (a message acknowledged meanwhile is not
+    // raised again while its cause lasts: condition() acts on a change only).
+    const unsigned state = (io.pulseModule1Ok ? 1u : 0u) | (io.pulseModule2Ok ? 2u : 0u) |
+                           (io.dacModuleOk ? 4u : 0u) | (io.commModuleOk ? 8u : 0u) |
+                           (io.plcLinkOk ? 16u : 0u) | (io.panelLinkOk ? 32u : 0u) |
+                           (io.memoryOk ? 64u : 0u) |
+                           (c_.words.word(z::SystemMessagesWord) != 0 ? 128u : 0u);
+    if (state == lastSystemInputs_)
+        return;
+    lastSystemInputs_ = state;
     c_.condition(2, !io.pulseModule1Ok);
     c_.condition(18, !io.pulseModule2Ok);
     c_.condition(3, !io.dacModuleOk);
@@ -725,7 +742,6 @@ void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
         return;
     }
     const axis::Servo& sv = u.servo;
-    const double perDisc = u.ipd == 1 ? 1.0 : 0.5; // 1 / internal units per discrete
     const std::uint8_t ex = c_.exclusion(a);
     std::int64_t off = 0;
     if (!(ex & ExcludeZeroOffset))
@@ -736,17 +752,25 @@ void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
         off += r[r::CorrectionX + a];
     if (!(ex & ExcludeDrf))
         off += r[r::DrfX + a];
-    r.set(r::MachineX + a, clampR(machine));
     r.set(r::CurrentX + a, clampR(machine - off));
+    r.set(r::HomeDistanceX + a, clampR(u.homeDistanceDisc));
+    // What comes of the servo alone stays while its ticks are quiet (at rest,
+    // nothing asked): written when it may have changed.
+    bool& known = servoRKnown_[static_cast<std::size_t>(a)];
+    if (known && sv.quiet())
+        return;
+    known = true;
+    const double perDisc = u.ipd == 1 ? 1.0 : 0.5; // 1 / internal units per discrete
+    r.set(r::MachineX + a, clampR(machine));
     r.set(r::SpeedX + a, clampR(roundToInt(std::fabs(sv.commandVelocity()) * 60000.0 * perDisc)));
     r.set(r::ErrorX + a, clampR(roundToInt(sv.followingError() * perDisc)));
     r.set(r::DacX + a, sv.dac());
     r.set(r::RemainingX + a, clampR(roundToInt(sv.remaining() * perDisc)));
-    r.set(r::HomeDistanceX + a, clampR(u.homeDistanceDisc));
     r.set(r::PulsesX + a, clampR(sv.pulsesLastTick()));
 }
 
 void Controller::refreshR() {
+    servoRKnown_.fill(false);
     for (const AxisUnit& u : c_.axes)
         axisR(u, u.present ? u.machineDisc() : 0);
     c_.r.set(r::Override, c_.overridePercent);

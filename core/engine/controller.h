@@ -104,9 +104,14 @@ public:
     std::int64_t programStartMs() const { return c_.programStartMs; }
     std::int64_t programEndMs() const { return c_.programEndMs; }
     // The servo of an axis (diagnostics, tests).
-    const axis::Servo& servo(AxisId a) const {
-        return c_.axes[static_cast<std::size_t>(axisIndex(a))].servo;
-    }
+    const axis::Servo& servo(AxisId a) const { return unit(a).servo; }
+    // What axisView() tells of the reference point, without building a view
+    // (a run asks every tick): the axis is present; referenced; referenced
+    // or АВТ.БЕЗ ПБТ; its reference-point cycle runs.
+    bool axisPresent(AxisId a) const { return unit(a).present; }
+    bool referenced(AxisId a) const { return unit(a).referenced; }
+    bool referenceOk(AxisId a) const { return unit(a).referenceOk(); }
+    bool homing(AxisId a) const { return unit(a).homing.running(); }
     // Preview mode (engine/preview.h; driven by engine/preview_run.h): null ends it.
     void setPreview(PreviewSink* sink) { c_.preview = sink; }
     bool oscillating(AxisId a) const {
@@ -114,6 +119,7 @@ public:
     }
 
 private:
+    const AxisUnit& unit(AxisId a) const { return c_.axes[static_cast<std::size_t>(axisIndex(a))]; }
     void readInputs();
     void systemChecks();
     void programControl();
@@ -143,6 +149,8 @@ private:
     std::array<std::int64_t, 2> wheelCount_{};
     bool wheelInit_ = false;
     std::array<bool, 65> configMessages_{};
+    unsigned lastSystemInputs_ = ~0u; // systemChecks(): the inputs last applied
+    std::array<bool, kAxisCount> servoRKnown_{}; // axisR(): the servo's R values are written
     bool storeCorrupt_ = false;
     std::uint64_t programsRevision_ = 0;
     int overrideFactorPercent_ = -1; // overrideFactor_ = overridePercent / 100 of this percent

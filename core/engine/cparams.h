@@ -16,6 +16,7 @@ namespace c {
 // The axis blocks: C(XBlock + k) of X, C(ZBlock + k) of Z, k = 0..51.
 inline constexpr std::size_t XBlock = 1;
 inline constexpr std::size_t ZBlock = 53;
+inline constexpr std::size_t HomeNegativeX = 9;    // ПБТ В "-" (C61 for Z)
 inline constexpr std::size_t EncoderChannelX = 17; // N ДОС (C69 for Z)
 inline constexpr std::size_t DacChannelX = 18;     // N ЦАП (C70 for Z)
 inline constexpr std::size_t Handwheel1Channel = 105; // N М1

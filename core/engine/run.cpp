@@ -38,9 +38,7 @@ std::string describeBlocker(const RunBlocker& b, bool russian) {
 
 namespace {
 
-constexpr std::int64_t kHomingGuardMs = 3600 * 1000;
 constexpr std::int64_t kSwitchOnMs = 10000;
-constexpr std::int64_t kHomingStartMs = 1000;
 // After «Пуск» is let go: the PLC's debounce and scans have passed it on.
 constexpr std::int64_t kStartSeenMs = 1000;
 
@@ -68,9 +66,27 @@ void collect(RunMachine& machine, RunResult& res) {
     res.mFunctions = machine.mFunctions();
 }
 
-// Why the program did not start: what the panel shows (the PLC's messages)
-// and the signals of Z1000 that hold «Пуск» back. `what` is the step that
-// did not happen, added last when nothing else explains it.
+bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t maxMs) {
+    Controller& ctl = m.controller();
+    const std::int64_t end = ctl.timeMs() + maxMs;
+    while (ctl.timeMs() < end) {
+        m.tick();
+        if (done())
+            return true;
+    }
+    return false;
+}
+
+// An owning ideal machine for runProgram(profile, ...).
+struct OwnedIdealMachine {
+    explicit OwnedIdealMachine(const profile::MachineProfile& p) : ctl(p), m(ctl), run(ctl, m) {}
+    Controller ctl;
+    IdealMachine m;
+    IdealRunMachine run;
+};
+
+} // namespace
+
 std::vector<RunBlocker> startBlockers(const Controller& ctl, RunBlocker what) {
     std::vector<RunBlocker> out;
     const InterfaceWords& w = ctl.words();
@@ -102,43 +118,74 @@ std::vector<RunBlocker> startBlockers(const Controller& ctl, RunBlocker what) {
     return out;
 }
 
-bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t maxMs) {
-    Controller& ctl = m.controller();
-    const std::int64_t end = ctl.timeMs() + maxMs;
-    while (ctl.timeMs() < end) {
-        m.tick();
-        if (done())
-            return true;
-    }
-    return false;
+void IdealRunMachine::tick() {
+    m_.tick();
+}
+bool IdealRunMachine::switchOn(std::int64_t) {
+    m_.advance(10); // the PLC's first scans: regulators enabled, loops closed
+    return true;
+}
+void IdealRunMachine::setOverrideCode(int code) {
+    m_.setOverrideCode(code);
+}
+void IdealRunMachine::startReferenceCycle(AxisId a, int dir) {
+    m_.setJog(a, dir);
+    m_.tick();
+    m_.setJog(a, 0);
+}
+void IdealRunMachine::pressStart() {
+    m_.pressStart();
+}
+bool IdealRunMachine::startHeld() const {
+    return ctl_.words().bit(z::Start);
+}
+std::vector<int> IdealRunMachine::mFunctions() const {
+    return m_.mLog();
 }
 
-// The ideal machine as a RunMachine.
-class IdealRunMachine final : public RunMachine {
-public:
-    explicit IdealRunMachine(const profile::MachineProfile& p) : ctl_(p), m_(ctl_) {}
-    Controller& controller() override { return ctl_; }
-    void tick() override { m_.tick(); }
-    bool switchOn(std::int64_t) override {
-        m_.advance(10); // the PLC's first scans: regulators enabled, loops closed
-        return true;
+HomingResult homeAxes(RunMachine& machine) {
+    HomingResult res;
+    Controller& ctl = machine.controller();
+    const std::int64_t t0 = ctl.timeMs();
+    const auto elapsed = [&] { return static_cast<double>(ctl.timeMs() - t0) / 1000.0; };
+    const std::uint64_t latchedBefore = ctl.alarmRegistry().latchedMask();
+    const auto newAlarm = [&] { return (ctl.alarmRegistry().latchedMask() & ~latchedBefore) != 0; };
+    ctl.selectMode(Mode::Reference);
+    for (int i = 0; i < kAxisCount; ++i) {
+        const AxisId a = axisAt(i);
+        if (!ctl.axisPresent(a) || ctl.referenceOk(a))
+            continue;
+        const bool negative = ctl.c()[c::ofAxis(c::HomeNegativeX, i)] != 0;
+        machine.startReferenceCycle(a, negative ? -1 : 1);
+        // The cycle starts once the PLC has passed the button on.
+        const bool started = runUntil(
+            machine, [&] { return ctl.homing(a) || ctl.referenced(a) || newAlarm(); },
+            kHomingStartMs);
+        if (!started) {
+            const std::string ax = a == AxisId::X ? "X" : "Z";
+            res.status = RunStatus::Blocked;
+            res.timeS = elapsed();
+            res.blockedBy = startBlockers(
+                ctl, {"homing", 0, "привязка к базовой точке по " + ax + " не началась",
+                      "the reference-point cycle of " + ax + " did not start"});
+            return res;
+        }
+        const bool done = runUntil(
+            machine, [&] { return ctl.referenced(a) || !ctl.homing(a) || newAlarm(); },
+            kHomingGuardMs);
+        res.timeS = elapsed();
+        if (newAlarm()) {
+            res.status = RunStatus::Alarm;
+            return res;
+        }
+        if (!done || !ctl.referenced(a)) {
+            res.status = RunStatus::Timeout;
+            return res;
+        }
     }
-    void setOverrideCode(int code) override { m_.setOverrideCode(code); }
-    void startReferenceCycle(AxisId a, int dir) override {
-        m_.setJog(a, dir);
-        m_.tick();
-        m_.setJog(a, 0);
-    }
-    void pressStart() override { m_.pressStart(); }
-    bool startHeld() const override { return ctl_.words().bit(z::Start); }
-    std::vector<int> mFunctions() const override { return m_.mLog(); }
-
-private:
-    Controller ctl_;
-    IdealMachine m_;
-};
-
-} // namespace
+    res.timeS = elapsed();
+    return res;
+}
 
 RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs, int number,
                      const RunOptions& options) {
@@ -172,51 +219,13 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
         return finish(RunStatus::Blocked);
     }
 
-    // Reference-point cycles, X first (as an operator retracts X before Z).
     if (options.home) {
-        const std::int64_t t0 = ctl.timeMs();
-        ctl.selectMode(Mode::Reference);
-        for (int i = 0; i < kAxisCount; ++i) {
-            const AxisId a = axisAt(i);
-            const AxisView v = ctl.axisView(a);
-            if (!v.present || v.referenceOk)
-                continue;
-            const bool negative = ctl.c()[static_cast<std::size_t>(i == 0 ? 9 : 61)] != 0;
-            machine.startReferenceCycle(a, negative ? -1 : 1);
-            // The cycle starts once the PLC has passed the button on; it ends
-            // by itself (referenced, or 40/41 when the cam or the mark is
-            // missing, the axis stopping at a limit switch at the latest): an
-            // hour of machine time is only a guard. --max-seconds is the
-            // program's limit and does not cut the homing short.
-            const bool started = runUntil(
-                machine,
-                [&] {
-                    const AxisView w = ctl.axisView(a);
-                    return w.homing || w.referenced || ctl.alarmRegistry().anyLatched();
-                },
-                kHomingStartMs);
-            if (!started) {
-                const std::string ax = a == AxisId::X ? "X" : "Z";
-                res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
-                res.blockedBy = startBlockers(
-                    ctl, {"homing", 0, "привязка к базовой точке по " + ax + " не началась",
-                          "the reference-point cycle of " + ax + " did not start"});
-                return finish(RunStatus::Blocked);
-            }
-            const bool done = runUntil(
-                machine,
-                [&] {
-                    const AxisView w = ctl.axisView(a);
-                    return w.referenced || !w.homing || ctl.alarmRegistry().anyLatched();
-                },
-                kHomingGuardMs);
-            res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
-            if (ctl.alarmRegistry().anyLatched())
-                return finish(RunStatus::Alarm);
-            if (!done || !ctl.axisView(a).referenced)
-                return finish(RunStatus::Timeout);
+        HomingResult h = homeAxes(machine);
+        res.homeTimeS = h.timeS;
+        if (h.status != RunStatus::Completed) {
+            res.blockedBy = std::move(h.blockedBy);
+            return finish(h.status);
         }
-        res.homeTimeS = static_cast<double>(ctl.timeMs() - t0) / 1000.0;
     }
 
     machine.setOverrideCode(code >= 0 ? code : kFullOverrideCode);
@@ -233,13 +242,23 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     const auto since = [&] {
         return ctl.programStartMs() >= pressed ? ctl.programStartMs() : pressed;
     };
+    // The axes' presence and scale stay while a program runs (C-parameters
+    // are edited in another mode): read once, not a view each tick.
+    std::array<bool, kAxisCount> present{};
+    std::array<units::AxisScale, kAxisCount> scale{};
+    for (int i = 0; i < kAxisCount; ++i) {
+        const AxisView v = ctl.axisView(axisAt(i));
+        present[static_cast<std::size_t>(i)] = v.present;
+        scale[static_cast<std::size_t>(i)] = v.scale;
+    }
     while (ctl.timeMs() - since() < limitMs) {
         machine.tick();
         for (int i = 0; i < kAxisCount; ++i) {
-            const AxisView v = ctl.axisView(axisAt(i));
-            double& peak = res.axes[static_cast<std::size_t>(i)].maxFollowingErrorDisc;
-            if (v.present)
-                peak = std::max(peak, std::fabs(units::internalToDisc(v.errorInternal, v.scale)));
+            const std::size_t k = static_cast<std::size_t>(i);
+            double& peak = res.axes[k].maxFollowingErrorDisc;
+            if (present[k])
+                peak = std::max(peak, std::fabs(units::internalToDisc(
+                                          ctl.servo(axisAt(i)).followingError(), scale[k])));
         }
         const ProgramState s = ctl.state();
         if (s == ProgramState::Ended) {
@@ -278,8 +297,8 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
 
 RunResult runProgram(const profile::MachineProfile& profile, const program::ProgramStore& programs,
                      int number, const RunOptions& options) {
-    IdealRunMachine machine(profile);
-    return runProgram(machine, programs, number, options);
+    OwnedIdealMachine machine(profile);
+    return runProgram(machine.run, programs, number, options);
 }
 
 } // namespace k528::engine

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "engine/controller.h"
+#include "engine/ideal_machine.h"
 #include "engine/views.h"
 #include "profile/profile.h"
 #include "program/model.h"
@@ -102,6 +103,49 @@ public:
     virtual bool startHeld() const = 0;
     // M codes handed to the PLC so far, in order.
     virtual std::vector<int> mFunctions() const = 0;
+};
+
+// The reference-point cycles, as an operator does them in ПБТ and as `k528
+// run` and the test rigs all do them (one procedure): ПРИВЯЗКА К БАЗОВОЙ
+// ТОЧКЕ selected, then for every present axis not yet referenced that needs
+// it (АВТ.БЕЗ ПБТ = 0), X first (as an operator retracts X before Z), the
+// push-button of the direction C9/C61 (ПБТ В "-") is pressed; the cycle must
+// start within kHomingStartMs (else Blocked, blockedBy says why), then it
+// ends by itself — referenced, or 40/41 when the cam or the mark is missing,
+// the axis stopping at a limit switch at the latest (an hour of machine time
+// is only a guard: Timeout). A message latched during the cycles (one
+// latched before is not counted) ends them: Alarm.
+struct HomingResult {
+    RunStatus status = RunStatus::Completed; // Completed: every axis that needs it is referenced
+    double timeS = 0;                        // machine time the cycles took
+    std::vector<RunBlocker> blockedBy;       // status Blocked
+};
+inline constexpr std::int64_t kHomingStartMs = 1000;
+inline constexpr std::int64_t kHomingGuardMs = 3600 * 1000;
+HomingResult homeAxes(RunMachine& machine);
+
+// Why a program (or a cycle) does not start: what the panel shows (the
+// PLC's messages) and the signals of Z1000 that hold «Пуск» back; `what`,
+// the step that did not happen, comes last.
+std::vector<RunBlocker> startBlockers(const Controller& ctl, RunBlocker what);
+
+// The engine's ideal machine (engine/ideal_machine.h) as a RunMachine, over
+// a Controller and IdealMachine the caller owns (the rigs; runProgram below).
+class IdealRunMachine final : public RunMachine {
+public:
+    IdealRunMachine(Controller& ctl, IdealMachine& m) : ctl_(ctl), m_(m) {}
+    Controller& controller() override { return ctl_; }
+    void tick() override;
+    bool switchOn(std::int64_t maxMs) override;
+    void setOverrideCode(int code) override;
+    void startReferenceCycle(AxisId a, int dir) override;
+    void pressStart() override;
+    bool startHeld() const override;
+    std::vector<int> mFunctions() const override;
+
+private:
+    Controller& ctl_;
+    IdealMachine& m_;
 };
 
 // Runs program `number` of `programs` (merged over the profile's programs

@@ -6,6 +6,7 @@
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 #include "engine/load_programs.h"
+#include "engine/run.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
 
@@ -62,24 +63,11 @@ struct Rig {
         return m->runUntil(done, maxMs);
     }
 
-    // Homes every present axis that needs it, X first. False on failure.
+    // Homes every present axis that needs it, X first, as `k528 run` does
+    // (engine::homeAxes). False on failure.
     bool home() {
-        ctl->selectMode(Mode::Reference);
-        for (AxisId a : {X, Z}) {
-            if (!ctl->axisView(a).present || ctl->axisView(a).referenceOk)
-                continue;
-            const int i = a == X ? 0 : 1;
-            const bool negative = ctl->c()[static_cast<std::size_t>(i == 0 ? 9 : 61)] != 0;
-            m->setJog(a, negative ? -1 : 1);
-            tick();
-            m->setJog(a, 0);
-            if (!until([&] { return ctl->axisView(a).referenced || !ctl->axisView(a).homing; },
-                       600000))
-                return false;
-            if (!ctl->axisView(a).referenced)
-                return false;
-        }
-        return true;
+        engine::IdealRunMachine run(*ctl, *m);
+        return engine::homeAxes(run).status == engine::RunStatus::Completed;
     }
 
     // АВТОМАТ, program n, «Пуск»; ticks until the program started (or refused).

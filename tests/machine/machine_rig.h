@@ -4,6 +4,7 @@
 #pragma once
 
 #include "engine/load_programs.h"
+#include "machine/run.h"
 #include "machine/simulation.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
@@ -73,26 +74,11 @@ struct Rig {
             5000);
     }
 
-    // ПБТ with the jog buttons, X first. False on failure.
+    // ПБТ with the jog buttons, X first, as `k528 run` does
+    // (engine::homeAxes over the simulated machine). False on failure.
     bool home() {
-        if (!c().selectMode(Mode::Reference).ok())
-            return false;
-        for (AxisId a : {X, Z}) {
-            const engine::AxisView v = c().axisView(a);
-            if (!v.present || v.referenceOk)
-                continue;
-            const bool negative = c().c()[a == X ? 9u : 61u] != 0;
-            const Button b = a == X ? (negative ? Button::JogXMinus : Button::JogXPlus)
-                                    : (negative ? Button::JogZMinus : Button::JogZPlus);
-            sim->pressFor(b, 100);
-            if (!until([&] { return c().axisView(a).homing; }, 1000))
-                return false;
-            if (!until([&] { return !c().axisView(a).homing; }, 900000))
-                return false;
-            if (!c().axisView(a).referenced)
-                return false;
-        }
-        return true;
+        machine::SimulationRunMachine run(*sim);
+        return engine::homeAxes(run).status == engine::RunStatus::Completed;
     }
 
     void load(const std::string& text) {

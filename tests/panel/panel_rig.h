@@ -6,6 +6,7 @@
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 #include "engine/load_programs.h"
+#include "engine/run.h"
 #include "panel/lcd_font.h"
 #include "panel/panel.h"
 #include "panel/screens/cparams.h"
@@ -95,22 +96,12 @@ struct Rig {
         QVERIFY(engine::loadPrograms(*ctl, r.store).ok());
     }
 
-    // Homes the present axes with the machine's direction buttons, X first.
+    // Homes the present axes with the machine's direction buttons, X first,
+    // as `k528 run` does (engine::homeAxes); then a second for the displays.
     bool home() {
-        if (!ctl->selectMode(Mode::Reference).ok())
+        engine::IdealRunMachine run(*ctl, *m);
+        if (engine::homeAxes(run).status != engine::RunStatus::Completed)
             return false;
-        for (AxisId a : {X, Z}) {
-            if (!ctl->axisView(a).present || ctl->axisView(a).referenceOk)
-                continue;
-            const bool negative = ctl->c()[a == X ? 9u : 61u] != 0;
-            m->setJog(a, negative ? -1 : 1);
-            m->tick();
-            m->setJog(a, 0);
-            if (!m->runUntil(
-                    [&] { return ctl->axisView(a).referenced || !ctl->axisView(a).homing; },
-                    600000))
-                return false;
-        }
         m->advance(1000);
         return ctl->axisView(X).referenced && ctl->axisView(Z).referenced;
     }
