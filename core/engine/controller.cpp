@@ -383,7 +383,7 @@ void Controller::programControl() {
     }
     // Manual cycles: Z1001.0..7 0->1. Cycle 1 («ВЫХОД В ИСХОДНОЕ») interrupts
     // a running program; cycles 2..8 start in РУЧНОЙ when no program is active.
-    for (int n = 1; n <= 8; ++n) {
+    for (int n = 1; n <= 8 && (w1 & ~before1 & 0xFFu) != 0; ++n) { // no rising edge: none starts
         if (!rising(w1, before1, n - 1))
             continue;
         const int number = static_cast<int>(c_.c[c::manualCycle(n)]);
