@@ -45,7 +45,7 @@ char arithOpChar(ArithOp op) {
 // A sequence of items. Integers are variable-length (7 bits a byte, the
 // signed ones zigzag-coded); a span is written as the distance of its
 // column from the end of the item before (0 for the first) and its width.
-//   ISO:     items in the order g..., m..., #, L, X, FX, Z, FZ, each a tag
+//   ISO:     items in the order L, #, m..., g..., X, FX, Z, FZ, each a tag
 //            byte (slot, | 0x10 for an R-parameter) then the number (a
 //            literal value: mantissa and a scale byte) and the span.
 //   Compute: target word, operand a, op byte, operand b (operand: kind byte,
@@ -53,7 +53,9 @@ char arithOpChar(ArithOp op) {
 //   IfGoto:  r word, target word.   Goto: target word.
 namespace {
 
-enum IsoSlot : std::uint8_t { SlotG, SlotM, SlotMessage, SlotCall, SlotX, SlotFX, SlotZ, SlotFZ };
+// In this order in the bytes: L first and the M words early, so that
+// callTarget() and hasM() read only the start of a frame.
+enum IsoSlot : std::uint8_t { SlotCall, SlotMessage, SlotM, SlotG, SlotX, SlotFX, SlotZ, SlotFZ };
 constexpr std::uint8_t kRFlag = 0x10;
 
 std::uint64_t zig(std::int64_t v) {
@@ -201,21 +203,21 @@ void FrameBody::assign(FrameKind kind, const std::uint8_t* bytes, std::size_t n)
 
 FrameBody& FrameBody::operator=(const IsoFrame& v) {
     Writer w;
-    for (const Word& g : v.g) {
-        w.byte(SlotG);
-        w.word(g);
-    }
-    for (const Word& m : v.m) {
-        w.byte(SlotM);
-        w.word(m);
+    if (v.call) {
+        w.byte(SlotCall);
+        w.word(*v.call);
     }
     if (v.message) {
         w.byte(SlotMessage);
         w.word(*v.message);
     }
-    if (v.call) {
-        w.byte(SlotCall);
-        w.word(*v.call);
+    for (const Word& m : v.m) {
+        w.byte(SlotM);
+        w.word(m);
+    }
+    for (const Word& g : v.g) {
+        w.byte(SlotG);
+        w.word(g);
     }
     writeValue(w, SlotX, v.x);
     writeValue(w, SlotFX, v.fx);
@@ -346,21 +348,12 @@ int FrameBody::jumpTarget() const {
 }
 
 std::optional<int> FrameBody::callTarget() const {
-    if (kind_ != FrameKind::Iso)
+    if (kind_ != FrameKind::Iso || size_ == 0)
         return std::nullopt;
     Reader r(data(), size_);
-    while (!r.done()) {
-        const std::uint8_t tag = r.byte();
-        const auto slot = static_cast<IsoSlot>(tag & 0x0F);
-        if (slot == SlotCall)
-            return r.ivar();
-        if (slot > SlotCall)
-            break;
-        r.uvar(); // number
-        r.uvar(); // span
-        r.uvar();
-    }
-    return std::nullopt;
+    if (static_cast<IsoSlot>(r.byte() & 0x0F) != SlotCall) // L comes first
+        return std::nullopt;
+    return r.ivar();
 }
 
 void Program::reindex() {
