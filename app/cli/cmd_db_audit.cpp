@@ -30,9 +30,7 @@ int cmdAudit(std::span<const std::string> argv) {
         limit = static_cast<int>(*n);
     }
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, false);
+    auto d = openDbOf(a, t, false);
     if (!d)
         return ExitUsage;
     const auto entries = d->audit(limit, a.value("--machine").value_or(""));

@@ -72,9 +72,7 @@ int cmdDiff(std::span<const std::string> argv) {
     if (a.positional().size() != 2)
         return usageError("db diff needs two sides: MACHINE, MACHINE@REV or FILE");
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, false);
+    auto d = openDbOf(a, t, false);
     if (!d)
         return ExitUsage;
     MachineProfile pa, pb;

@@ -31,9 +31,7 @@ int cmdExport(std::span<const std::string> argv) {
     if (!ref)
         return ExitUsage;
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, false);
+    auto d = openDbOf(a, t, false);
     if (!d)
         return ExitUsage;
     try {

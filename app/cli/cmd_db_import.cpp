@@ -119,9 +119,7 @@ int cmdImport(std::span<const std::string> argv) {
         return fail(std::string(e.what()) + " (nothing was imported)", ExitInputErrors);
     }
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, true, o.author);
+    auto d = openDbOf(a, t, true, o.author);
     if (!d)
         return ExitUsage;
     const std::string machine = format == "csv" ? *asName : p.name;

@@ -23,9 +23,7 @@ int cmdInit(std::span<const std::string> argv) {
     if (!a.positional().empty())
         return usageError("db init takes no arguments");
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, true);
+    auto d = openDbOf(a, t, true);
     if (!d)
         return ExitUsage;
     const auto& r = d->openReport();

@@ -24,9 +24,7 @@ int cmdMachines(std::span<const std::string> argv) {
     if (!a.positional().empty())
         return usageError("db machines takes no arguments");
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, false);
+    auto d = openDbOf(a, t, false);
     if (!d)
         return ExitUsage;
     const auto ms = d->machines();

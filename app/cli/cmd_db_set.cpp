@@ -130,9 +130,7 @@ int cmdSet(std::span<const std::string> argv) {
                               "' and '" + item + "'); give each item once");
     }
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, false, a.value("--author").value_or(""));
+    auto d = openDbOf(a, t, false, a.value("--author").value_or(""));
     if (!d)
         return ExitUsage;
     const std::string machine = a.positional()[0];

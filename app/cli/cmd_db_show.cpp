@@ -194,9 +194,7 @@ int cmdShow(std::span<const std::string> argvIn) {
         historyLimit = static_cast<int>(*n);
     }
     DbTarget t;
-    if (!dbTarget(a, t))
-        return ExitUsage;
-    auto d = openDb(t, false);
+    auto d = openDbOf(a, t, false);
     if (!d)
         return ExitUsage;
     try {

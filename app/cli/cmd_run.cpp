@@ -15,6 +15,7 @@
 #include "profile/validate.h"
 #include "program/validator.h"
 #include "program_cli.h"
+#include "program_setup.h"
 #include "util/json.h"
 
 #include <algorithm>
@@ -147,29 +148,9 @@ int runRun(std::span<const std::string> argv) {
     if (!loaded)
         return ExitUsage;
     profile::MachineProfile prof = *loaded;
-    for (const std::string& p : args.values("--param")) {
-        long long n = 0, v = 0;
-        if (!parseAssignment(p, n, v))
-            return usageError("--param needs N=V with whole numbers, not '" + p + "'");
-        if (n < 1 || n > 152)
-            return usageError("--param " + p + ": C-parameters are 1..152");
-        if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
-            return usageError("--param " + p + ": " + e);
-        prof.setC(static_cast<int>(n), v);
-    }
     engine::RunOptions options;
-    for (const std::string& p : args.values("--r")) {
-        long long n = 0, v = 0;
-        if (!parseAssignment(p, n, v))
-            return usageError("--r needs N=V with whole numbers, not '" + p + "'");
-        if (n < 0 || n > 299)
-            return usageError("--r " + p + ": R-parameters are 0..299");
-        if (engine::rReadOnly(static_cast<int>(n)))
-            return usageError("--r " + p + ": R232..R262 are read only");
-        if (!engine::fitsR(v))
-            return usageError("--r " + p + ": the value is outside -2147483648..2147483647");
-        options.rPresets[static_cast<int>(n)] = v;
-    }
+    if (const int rc = applyParameterOptions(args, prof, options.rPresets); rc >= 0)
+        return rc;
     options.home = !args.has("--no-home");
     if (const auto o = args.value("--override")) {
         const auto pct = parseInt(*o);

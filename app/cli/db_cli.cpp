@@ -180,6 +180,12 @@ bool dbTarget(const Args& a, DbTarget& t) {
 
 // Opens the database. The default location is created on first use (with its
 // folder); an explicit --db path only by init and import.
+std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate, const std::string& author) {
+    if (!dbTarget(a, t))
+        return std::nullopt;
+    return openDb(t, mayCreate, author);
+}
+
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
                                    const std::string& author) {
     std::error_code ec;

@@ -66,6 +66,11 @@ bool dbTarget(const Args& a, DbTarget& t);
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
                                    const std::string& author = {});
 
+// dbTarget and openDb together: the database the command's --db names (its
+// path into `t`), or nullopt after printing why (exit ExitUsage).
+std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate,
+                                     const std::string& author = {});
+
 // "grinder-205@3" -> name, revision; a usage error printed when bad.
 std::optional<MachineRef> parseRef(const std::string& s);
 

@@ -11,6 +11,33 @@
 
 namespace k528::cli {
 
+int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
+                          std::map<int, std::int64_t>& rPresets) {
+    for (const std::string& p : args.values("--param")) {
+        long long n = 0, v = 0;
+        if (!parseAssignment(p, n, v))
+            return usageError("--param needs N=V with whole numbers, not '" + p + "'");
+        if (n < 1 || n > 152)
+            return usageError("--param " + p + ": C-parameters are 1..152");
+        if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
+            return usageError("--param " + p + ": " + e);
+        profile.setC(static_cast<int>(n), v);
+    }
+    for (const std::string& p : args.values("--r")) {
+        long long n = 0, v = 0;
+        if (!parseAssignment(p, n, v))
+            return usageError("--r needs N=V with whole numbers, not '" + p + "'");
+        if (n < 0 || n > 299)
+            return usageError("--r " + p + ": R-parameters are 0..299");
+        if (engine::rReadOnly(static_cast<int>(n)))
+            return usageError("--r " + p + ": R232..R262 are read only");
+        if (!engine::fitsR(v))
+            return usageError("--r " + p + ": the value is outside -2147483648..2147483647");
+        rPresets[static_cast<int>(n)] = v;
+    }
+    return -1;
+}
+
 int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
     if (args.positional().size() != 1)
         return usageError("needs exactly one FILE");
@@ -23,28 +50,8 @@ int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
     if (!loaded)
         return ExitUsage;
     out.profile = *loaded;
-    for (const std::string& p : args.values("--param")) {
-        long long n = 0, v = 0;
-        if (!parseAssignment(p, n, v))
-            return usageError("--param needs N=V with whole numbers, not '" + p + "'");
-        if (n < 1 || n > 152)
-            return usageError("--param " + p + ": C-parameters are 1..152");
-        if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
-            return usageError("--param " + p + ": " + e);
-        out.profile.setC(static_cast<int>(n), v);
-    }
-    for (const std::string& p : args.values("--r")) {
-        long long n = 0, v = 0;
-        if (!parseAssignment(p, n, v))
-            return usageError("--r needs N=V with whole numbers, not '" + p + "'");
-        if (n < 0 || n > 299)
-            return usageError("--r " + p + ": R-parameters are 0..299");
-        if (engine::rReadOnly(static_cast<int>(n)))
-            return usageError("--r " + p + ": R232..R262 are read only");
-        if (!engine::fitsR(v))
-            return usageError("--r " + p + ": the value is outside -2147483648..2147483647");
-        out.rPresets[static_cast<int>(n)] = v;
-    }
+    if (const int rc = applyParameterOptions(args, out.profile, out.rPresets); rc >= 0)
+        return rc;
     const std::string path = args.positional().front();
     std::string text;
     if (!readProgramFile(path, text))
@@ -76,12 +83,7 @@ int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
                               *p);
         out.number = static_cast<int>(*n);
     } else {
-        int firstLine = 0;
-        for (const program::Program& p : parsed.store.programs())
-            if (out.number == 0 || p.headerLine < firstLine) {
-                out.number = p.number;
-                firstLine = p.headerLine;
-            }
+        out.number = parsed.store.firstWritten(); // as `k528 run` starts it
     }
     out.store = parsed.store;
     return -1;

@@ -26,6 +26,12 @@ inline const std::vector<std::string_view> kSetupOptions = {"--profile", "--db",
                                                            "--param",   "--r",      "--number",
                                                            "--lang"};
 
+// --param N=V into the profile's C-parameters (each checked) and --r N=V
+// into `rPresets` (writable R, 32-bit). Returns -1, else the exit code after
+// printing the reason.
+int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
+                          std::map<int, std::int64_t>& rPresets);
+
 // Fills `out` from `args` (one positional FILE). Returns -1 on success, else
 // the exit code after printing the reason (diagnostics to `diagOut`).
 int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut);

@@ -96,7 +96,7 @@ void Interpreter::start(int number, int cycle, Mode mode) {
     index_ = 0;
     step_ = Step::Fetch;
     modal_ = ModalState{};
-    iso_ = nullptr;
+    iso_ = {};
     line_ = 0;
     c_.programExclusion = 0;
     c_.cycle = cycle;
@@ -220,7 +220,7 @@ bool Interpreter::executeZeroTime(const program::Frame& f) {
         return executing(c_.state);
     }
     case FrameKind::Goto:
-        jump(f.gotoFrame()->target.number);
+        jump(f.jumpTarget());
         return executing(c_.state);
     case FrameKind::Iso:
         break;
@@ -251,8 +251,8 @@ OscillationPresets Interpreter::presets(int axis) const {
 }
 
 void Interpreter::beginIso(const program::Frame& f) {
-    const program::IsoFrame& iso = *f.iso();
-    iso_ = &iso;
+    iso_ = *f.iso();
+    const program::IsoFrame& iso = iso_;
     line_ = f.span.line;
     moving_ = {};
     oscStop_ = {};
@@ -522,7 +522,7 @@ bool Interpreter::startOscillation(int a, const std::optional<program::Value>& s
         return false;
     }
     // Speed: F of this frame, else the preset СКОРОСТЬ ОСЦИЛЛЯЦИИ, else the modal F.
-    const bool frameFeed = a == 0 ? iso_->fx.has_value() : iso_->fz.has_value();
+    const bool frameFeed = a == 0 ? iso_.fx.has_value() : iso_.fz.has_value();
     std::int64_t feed = modal_.feed[static_cast<std::size_t>(a)];
     if (!frameFeed && c_.r[base + 2] > 0)
         feed = c_.r[base + 2];
@@ -559,7 +559,7 @@ bool Interpreter::startOscillation(int a, const std::optional<program::Value>& s
 }
 
 void Interpreter::actions() {
-    const program::IsoFrame& iso = *iso_;
+    const program::IsoFrame& iso = iso_;
     // Gx92: the current coordinate becomes the value; the zero offset absorbs
     // it. The current coordinate of a program is where it commanded the axis
     // (the setpoint, standing at the last target): the servo's rest error,

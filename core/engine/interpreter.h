@@ -105,7 +105,7 @@ private:
     Step step_ = Step::Fetch;
 
     // The ISO frame in progress.
-    const program::IsoFrame* iso_ = nullptr;
+    program::IsoFrame iso_; // the ISO frame being executed (decoded from its compact form)
     int line_ = 0;
     std::array<int, 3> m_{};
     int mCount_ = 0;

@@ -202,7 +202,7 @@ void appendFrame(std::string& out, const Frame& f) {
     case FrameKind::Goto:
         sep();
         out += "GOTO ";
-        appendInt(out, f.gotoFrame()->target.number);
+        appendInt(out, f.jumpTarget());
         break;
     }
 }

@@ -18,7 +18,8 @@
 #include <optional>
 #include <span>
 #include <string>
-#include <variant>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "program/decimal.h"
@@ -192,27 +193,203 @@ struct GotoFrame {
 
 enum class FrameKind : std::uint8_t { Iso, Compute, IfGoto, Goto };
 
-struct Frame {
-    std::variant<IsoFrame, ComputeFrame, IfGotoFrame, GotoFrame> body;
-    bool skip = false;         // '/': the frame is not executed
-    std::optional<Word> n;     // frame number N
-    SourceSpan span;           // the frame's text on its line, comments excluded
-    bool malformed = false;    // the parser reported an error in this frame
-    std::vector<Comment> comments;   // on the frame's line, in order
-    std::vector<TriviaLine> leading; // comment and blank lines just above it
+// A frame's data as read back from its compact form (FrameBody): a value
+// with a pointer's face. `if (const auto iso = f.iso()) use(iso->x);` — the
+// handle holds the decoded data, so keep it in a variable: `->` on a
+// temporary handle does not compile (it would point into a dead object),
+// while `*f.iso()` gives a copy (`const IsoFrame& i = *f.iso();` is safe).
+template <class T> class Decoded {
+public:
+    Decoded() = default;
+    explicit Decoded(const T& v) : value_(v), has_(true) {}
+    // Filled in place: fill(T&).
+    template <class F> Decoded(std::in_place_t, F&& fill) : has_(true) { fill(value_); }
+    explicit operator bool() const { return has_; }
+    bool has_value() const { return has_; }
+    const T* operator->() const& { return &value_; }
+    const T* operator->() const&& = delete;
+    const T& operator*() const& { return value_; }
+    T operator*() && { return std::move(value_); }
+    // The data by value (f.iso().value().x); an empty T for an empty handle.
+    T value() const { return value_; }
+    // The data, or nullptr (valid while the handle lives).
+    const T* get() const& { return has_ ? &value_ : nullptr; }
 
-    FrameKind kind() const { return static_cast<FrameKind>(body.index()); }
-    int number() const { return n ? n->number : 0; } // 0 = no N
-    const IsoFrame* iso() const { return std::get_if<IsoFrame>(&body); }
-    const ComputeFrame* compute() const { return std::get_if<ComputeFrame>(&body); }
-    const IfGotoFrame* ifGoto() const { return std::get_if<IfGotoFrame>(&body); }
-    const GotoFrame* gotoFrame() const { return std::get_if<GotoFrame>(&body); }
-    IsoFrame* iso() { return std::get_if<IsoFrame>(&body); }
-    ComputeFrame* compute() { return std::get_if<ComputeFrame>(&body); }
-    IfGotoFrame* ifGoto() { return std::get_if<IfGotoFrame>(&body); }
-    GotoFrame* gotoFrame() { return std::get_if<GotoFrame>(&body); }
-    // The jump target of an IF or GOTO frame (0 otherwise).
+private:
+    T value_{};
+    bool has_ = false;
+};
+
+// The data of a frame of any kind in a compact byte form (variable-length
+// integers; a word's position as offsets): about a tenth of the size of the
+// structures above, in place for ordinary frames (no allocation) and on the
+// heap for long ones. Assign a frame kind's structure to it; read it back
+// with the Frame accessors (iso(), compute(), ...). Program memory stays a
+// few times the size of the text (issue 15, bench parse_memory).
+class FrameBody {
+public:
+    FrameBody() = default; // an empty ISO frame
+    FrameBody(const IsoFrame& v) { *this = v; }
+    FrameBody(const ComputeFrame& v) { *this = v; }
+    FrameBody(const IfGotoFrame& v) { *this = v; }
+    FrameBody(const GotoFrame& v) { *this = v; }
+    FrameBody(const FrameBody& o) { assign(o.kind_, o.data(), o.size_); }
+    FrameBody(FrameBody&& o) noexcept { steal(o); }
+    FrameBody& operator=(const FrameBody& o) {
+        if (this != &o)
+            assign(o.kind_, o.data(), o.size_);
+        return *this;
+    }
+    FrameBody& operator=(FrameBody&& o) noexcept {
+        if (this != &o) {
+            release();
+            steal(o);
+        }
+        return *this;
+    }
+    ~FrameBody() { release(); }
+
+    FrameBody& operator=(const IsoFrame& v);
+    FrameBody& operator=(const ComputeFrame& v);
+    FrameBody& operator=(const IfGotoFrame& v);
+    FrameBody& operator=(const GotoFrame& v);
+
+    FrameKind kind() const { return kind_; }
+    std::size_t index() const { return static_cast<std::size_t>(kind_); } // as std::variant's
+    // The data (precondition: kind() matches).
+    IsoFrame isoFrame() const {
+        IsoFrame f;
+        decode(f);
+        return f;
+    }
+    void decode(IsoFrame& f) const; // f is empty
+    // An ISO frame has M<number> (false for other kinds), without decoding the rest.
+    bool hasM(int number) const;
+    ComputeFrame computeFrame() const;
+    IfGotoFrame ifGotoFrame() const;
+    GotoFrame gotoFrame() const;
+    // The jump target of an IF or GOTO frame (0 otherwise), without decoding the rest.
     int jumpTarget() const;
+    // The program an ISO frame calls with L (nullopt: none, or not an ISO frame).
+    std::optional<int> callTarget() const;
+    std::size_t encodedSize() const { return size_; }
+
+private:
+    static constexpr std::size_t kInline = 44;
+    const std::uint8_t* data() const { return heap_ ? heapPtr() : inline_; }
+    std::uint8_t* heapPtr() const;
+    void assign(FrameKind kind, const std::uint8_t* bytes, std::size_t n);
+    void release();
+    void steal(FrameBody& o) noexcept;
+
+    alignas(8) std::uint8_t inline_[kInline] = {}; // the bytes, or (heap_) a pointer to them
+    std::uint16_t size_ = 0;
+    FrameKind kind_ = FrameKind::Iso;
+    bool heap_ = false;
+};
+
+// A vector that is empty for most frames: one pointer (null when empty).
+// Reads like the std::vector it holds; edit() gives that vector to change.
+template <class T> class RareVec {
+public:
+    RareVec() = default;
+    RareVec(std::vector<T> v) { *this = std::move(v); }
+    RareVec(std::initializer_list<T> l) : RareVec(std::vector<T>(l)) {}
+    RareVec(const RareVec& o) : p_(o.p_ ? new std::vector<T>(*o.p_) : nullptr) {}
+    RareVec(RareVec&& o) noexcept : p_(o.p_) { o.p_ = nullptr; }
+    RareVec& operator=(const RareVec& o) {
+        if (this != &o)
+            *this = o.vec();
+        return *this;
+    }
+    RareVec& operator=(RareVec&& o) noexcept {
+        if (this != &o) {
+            delete p_;
+            p_ = o.p_;
+            o.p_ = nullptr;
+        }
+        return *this;
+    }
+    RareVec& operator=(std::vector<T> v) {
+        if (v.empty()) {
+            delete p_;
+            p_ = nullptr;
+        } else if (p_) {
+            *p_ = std::move(v);
+        } else {
+            p_ = new std::vector<T>(std::move(v));
+        }
+        return *this;
+    }
+    ~RareVec() { delete p_; }
+
+    const std::vector<T>& vec() const { return p_ ? *p_ : empty_(); }
+    operator const std::vector<T>&() const { return vec(); }
+    std::vector<T>& edit() {
+        if (!p_)
+            p_ = new std::vector<T>();
+        return *p_;
+    }
+
+    std::size_t size() const { return p_ ? p_->size() : 0; }
+    bool empty() const { return !p_ || p_->empty(); }
+    auto begin() const { return vec().begin(); }
+    auto end() const { return vec().end(); }
+    auto begin() { return p_ ? p_->begin() : typename std::vector<T>::iterator(); }
+    auto end() { return p_ ? p_->end() : typename std::vector<T>::iterator(); }
+    const T& operator[](std::size_t i) const { return (*p_)[i]; }
+    T& operator[](std::size_t i) { return (*p_)[i]; }
+    const T& front() const { return p_->front(); }
+    const T& back() const { return p_->back(); }
+    T& front() { return p_->front(); }
+    T& back() { return p_->back(); }
+    void push_back(const T& v) { edit().push_back(v); }
+    void push_back(T&& v) { edit().push_back(std::move(v)); }
+    template <class... A> T& emplace_back(A&&... a) { return edit().emplace_back(std::forward<A>(a)...); }
+    void clear() {
+        delete p_;
+        p_ = nullptr;
+    }
+
+    friend bool operator==(const RareVec& a, const RareVec& b) { return a.vec() == b.vec(); }
+    friend bool operator==(const RareVec& a, const std::vector<T>& b) { return a.vec() == b; }
+
+private:
+    static const std::vector<T>& empty_() {
+        static const std::vector<T> e;
+        return e;
+    }
+    std::vector<T>* p_ = nullptr;
+};
+
+struct Frame {
+    RareVec<Comment> comments;    // on the frame's line, in order
+    RareVec<TriviaLine> leading;  // comment and blank lines just above it
+    FrameBody body;               // the data of its kind (assign an IsoFrame, ComputeFrame, ...)
+    std::optional<Word> n;        // frame number N
+    SourceSpan span;              // the frame's text on its line, comments excluded
+    bool skip = false;            // '/': the frame is not executed
+    bool malformed = false;       // the parser reported an error in this frame
+
+    FrameKind kind() const { return body.kind(); }
+    int number() const { return n ? n->number : 0; } // 0 = no N
+    // The data of the frame's kind, or an empty handle for another kind.
+    Decoded<IsoFrame> iso() const {
+        return kind() == FrameKind::Iso ? Decoded<IsoFrame>(std::in_place, [this](IsoFrame& v) { body.decode(v); })
+                                        : Decoded<IsoFrame>();
+    }
+    Decoded<ComputeFrame> compute() const {
+        return kind() == FrameKind::Compute ? Decoded<ComputeFrame>(body.computeFrame())
+                                            : Decoded<ComputeFrame>();
+    }
+    Decoded<IfGotoFrame> ifGoto() const {
+        return kind() == FrameKind::IfGoto ? Decoded<IfGotoFrame>(body.ifGotoFrame()) : Decoded<IfGotoFrame>();
+    }
+    Decoded<GotoFrame> gotoFrame() const {
+        return kind() == FrameKind::Goto ? Decoded<GotoFrame>(body.gotoFrame()) : Decoded<GotoFrame>();
+    }
+    // The jump target of an IF or GOTO frame (0 otherwise).
+    int jumpTarget() const { return body.jumpTarget(); }
 };
 
 // --- Programs ---------------------------------------------------------------------

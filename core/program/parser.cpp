@@ -181,16 +181,17 @@ private:
     void messageLine(std::size_t i);
     void frameLine(std::size_t i);
     void reportBadCharacter(std::size_t i, Frame& f);
+    std::vector<Comment> fc_; // the comments of the frame being read
     void crLineEndHint();
 
     // Words of a frame. Each returns false after reporting an error.
     bool intWord(std::size_t& i, std::size_t start, std::string_view name, Word& w, int manual = 0);
     bool value(std::size_t& i, std::size_t start, std::string_view name, Value& v, int manual);
     bool operand(std::size_t& i, Operand& o, std::vector<Comment>& comments);
-    void isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
-    void computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
-    void ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
-    void gotoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd);
+    void isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& contentEnd);
+    void computeFrame(std::size_t& i, Frame& f, ComputeFrame& cf, std::size_t& contentEnd);
+    void ifFrame(std::size_t& i, Frame& f, IfGotoFrame& jf, std::size_t& contentEnd);
+    void gotoFrame(std::size_t& i, Frame& f, GotoFrame& gf, std::size_t& contentEnd);
     bool jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comments);
     // The next GOTO at or after i, or where a comment or the line begins/ends.
     std::size_t findGoto(std::size_t i) const;
@@ -565,9 +566,9 @@ void Parser::frameLine(std::size_t i) {
     }
     if (current_.frames.empty())
         current_.frames.reserve(estimateFrames());
-    Frame& f = current_.frames.emplace_back(); // filled in place: a frame is a few hundred bytes
+    Frame& f = current_.frames.emplace_back();
     f.span.line = lineNo_;
-    f.comments = std::move(comments);
+    fc_ = std::move(comments);
     const std::size_t errorsBefore = out_.diagnostics.size();
     const std::size_t contentBegin = i;
     std::size_t contentEnd = i;
@@ -575,7 +576,7 @@ void Parser::frameLine(std::size_t i) {
         f.skip = true;
         ++i;
         contentEnd = i;
-        skipTrivia(i, f.comments);
+        skipTrivia(i, fc_);
     }
     if (upper(at(i)) == 'N') {
         const std::size_t s = i;
@@ -586,21 +587,28 @@ void Parser::frameLine(std::size_t i) {
         else
             f.malformed = true;
         contentEnd = i;
-        skipTrivia(i, f.comments);
+        skipTrivia(i, fc_);
     }
     const char c = upper(at(i));
     if (c == 'R') {
-        f.body = ComputeFrame();
-        computeFrame(i, f, contentEnd);
+        ComputeFrame body;
+        computeFrame(i, f, body, contentEnd);
+        f.body = body;
     } else if (c == 'I' && upper(at(i + 1)) == 'F') {
-        f.body = IfGotoFrame();
-        ifFrame(i, f, contentEnd);
+        IfGotoFrame body;
+        ifFrame(i, f, body, contentEnd);
+        f.body = body;
     } else if (keyword(i, "GOTO")) {
-        f.body = GotoFrame();
-        gotoFrame(i, f, contentEnd);
+        GotoFrame body;
+        gotoFrame(i, f, body, contentEnd);
+        f.body = body;
     } else {
-        isoFrame(i, f, contentEnd);
+        IsoFrame body;
+        isoFrame(i, f, body, contentEnd);
+        f.body = body;
     }
+    f.comments = std::move(fc_);
+    fc_.clear();
     if (out_.diagnostics.size() != errorsBefore)
         f.malformed = true;
     const ColSpan s = span(contentBegin, contentEnd);
@@ -622,14 +630,15 @@ bool Parser::intWord(std::size_t& i, std::size_t start, std::string_view name, W
     const std::size_t e = numberEnd(i);
     i = e;
     const std::string_view lex = line_.substr(b, e - b);
-    const std::string n(name);
     if (lex.empty()) {
+        const std::string n(name);
         report(Rule::Syntax, manual, start, b,
                "После адреса " + n + " нет числа", "address " + n + " is not followed by a number");
         return false;
     }
     const auto v = text::parseUnsigned(lex);
     if (!v) {
+        const std::string n(name);
         const bool tooLong = text::isAllDigits(lex);
         report(Rule::BadNumber, manual, start, e,
                tooLong ? n + std::string(lex) + ": слишком большое число"
@@ -644,7 +653,6 @@ bool Parser::intWord(std::size_t& i, std::size_t start, std::string_view name, W
 }
 
 bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Value& v, int manual) {
-    const std::string n(name);
     skipSpaces(i);
     if (at(i) == '=') {
         ++i;
@@ -665,12 +673,14 @@ bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Val
     i = e;
     const std::string_view lex = line_.substr(b, e - b);
     if (lex.empty()) {
+        const std::string n(name);
         report(Rule::Syntax, manual, start, b,
                "После адреса " + n + " нет значения: ожидается число или R-параметр",
                "address " + n + " has no value: expected a number or an R-parameter");
         return false;
     }
     if ((lex == "-" || lex == "+") && upper(at(e)) == 'R') {
+        const std::string n(name);
         report(Rule::Syntax, manual, start, e + 1,
                n + ": знак перед R-параметром недопустим; вычислите R<i>=0-R<j> отдельным кадром",
                n + ": a sign before an R-parameter is not allowed; compute R<i>=0-R<j> in a frame of its own");
@@ -680,6 +690,7 @@ bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Val
     if (!d) {
         // A plain decimal fails for one of two reasons, said as such:
         // leading zeros are not significant digits.
+        const std::string n(name);
         const bool plain = text::isPlainDecimal(lex);
         const bool tooLong = plain && text::significantDigits(lex) > Decimal::kMaxDigits;
         const bool tooFine = plain && !tooLong && text::fractionPlaces(lex) > Decimal::kMaxDigits;
@@ -737,15 +748,15 @@ void Parser::reportBadCharacter(std::size_t i, Frame& f) {
            "unexpected character " + squote(line_.substr(i, len)));
 }
 
-void Parser::isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
-    IsoFrame& iso = *f.iso();
+void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& contentEnd) {
     Axis lastAxis = Axis::None; // the word just before was X or Z
-    auto duplicate = [&](std::size_t s, std::size_t e, const std::string& name) {
+    auto duplicate = [&](std::size_t s, std::size_t e, std::string_view sv) {
+        const std::string name(sv);
         report(Rule::DuplicateWord, 0, s, e, "Адрес " + name + " задан в кадре дважды",
                name + " is given twice in the frame");
     };
     while (true) {
-        skipTrivia(i, f.comments);
+        skipTrivia(i, fc_);
         if (i >= line_.size())
             break;
         const std::size_t s = i;
@@ -798,7 +809,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
         case 'L': {
             ++i;
             Word w;
-            const std::string name(1, c);
+            const std::string_view name = c == '#' ? "#" : "L";
             ok = intWord(i, s, name, w);
             if (ok) {
                 auto& slot = c == '#' ? iso.message : iso.call;
@@ -849,7 +860,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
                 axis = lastAxis;
             }
             Value v;
-            const std::string name = axis == Axis::X ? "FX" : axis == Axis::Z ? "FZ" : "F";
+            const std::string_view name = axis == Axis::X ? "FX" : axis == Axis::Z ? "FZ" : "F";
             ok = value(i, s, name, v, 0);
             if (!ok)
                 break;
@@ -970,7 +981,7 @@ bool Parser::operand(std::size_t& i, Operand& o, std::vector<Comment>& comments)
 }
 
 void Parser::expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::string_view kindEn) {
-    skipTrivia(i, f.comments);
+    skipTrivia(i, fc_);
     if (i < line_.size()) {
         report(Rule::Syntax, 0, i, line_.size(),
                "Лишний текст в " + std::string(kindRu) + ": " + quote(line_.substr(i)),
@@ -980,8 +991,7 @@ void Parser::expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::s
     }
 }
 
-void Parser::computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
-    ComputeFrame& cf = *f.compute();
+void Parser::computeFrame(std::size_t& i, Frame& f, ComputeFrame& cf, std::size_t& contentEnd) {
     const std::size_t s = i;
     ++i;
     if (!intWord(i, s, "R", cf.target)) {
@@ -989,7 +999,7 @@ void Parser::computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
         return;
     }
     contentEnd = i;
-    skipTrivia(i, f.comments);
+    skipTrivia(i, fc_);
     if (at(i) != '=') {
         report(Rule::Syntax, 0, i, i + 1,
                "Вычислительный кадр: после R" + std::to_string(cf.target.number) + " ожидается «=»",
@@ -998,12 +1008,12 @@ void Parser::computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
         return;
     }
     ++i;
-    if (!operand(i, cf.a, f.comments)) {
+    if (!operand(i, cf.a, fc_)) {
         f.malformed = true;
         return;
     }
     contentEnd = i;
-    skipTrivia(i, f.comments);
+    skipTrivia(i, fc_);
     if (i < line_.size()) {
         const char op = line_[i];
         ArithOp a = ArithOp::None;
@@ -1031,7 +1041,7 @@ void Parser::computeFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
         }
         ++i;
         cf.op = a;
-        if (!operand(i, cf.b, f.comments)) {
+        if (!operand(i, cf.b, fc_)) {
             f.malformed = true;
             cf.op = ArithOp::None;
             return;
@@ -1088,11 +1098,10 @@ std::size_t Parser::findGoto(std::size_t i) const {
     return i;
 }
 
-void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
-    IfGotoFrame& jf = *f.ifGoto();
+void Parser::ifFrame(std::size_t& i, Frame& f, IfGotoFrame& jf, std::size_t& contentEnd) {
     i += 2;
     contentEnd = i;
-    skipTrivia(i, f.comments);
+    skipTrivia(i, fc_);
     // After an error in the R-parameter or the condition, reading goes on at
     // GOTO so that an error in the target is reported too.
     bool bad = false;
@@ -1107,7 +1116,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
         const bool rOk = intWord(i, rs, "R", jf.r);
         bad = !rOk;
         contentEnd = i;
-        skipTrivia(i, f.comments);
+        skipTrivia(i, fc_);
         const std::size_t cs = i;
         while (i < line_.size() && (line_[i] == '>' || line_[i] == '<' || line_[i] == '=' || line_[i] == '!'))
             ++i;
@@ -1135,7 +1144,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
         f.malformed = true;
         contentEnd = std::max(contentEnd, i);
     }
-    skipTrivia(i, f.comments);
+    skipTrivia(i, fc_);
     if (!keyword(i, "GOTO")) {
         if (!bad) // after an error, what stands here cannot be told from a broken condition
             report(Rule::Syntax, 0, i, charEnd(i), "После условия ожидается GOTO <номер кадра>",
@@ -1145,7 +1154,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
     }
     i += 4;
     contentEnd = i;
-    if (!jumpTarget(i, jf.target, f.comments)) {
+    if (!jumpTarget(i, jf.target, fc_)) {
         f.malformed = true;
         contentEnd = i;
         return;
@@ -1154,10 +1163,9 @@ void Parser::ifFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
     expectEnd(i, f, "кадре условного перехода", "a conditional jump frame");
 }
 
-void Parser::gotoFrame(std::size_t& i, Frame& f, std::size_t& contentEnd) {
-    GotoFrame& gf = *f.gotoFrame();
+void Parser::gotoFrame(std::size_t& i, Frame& f, GotoFrame& gf, std::size_t& contentEnd) {
     i += 4;
-    if (!jumpTarget(i, gf.target, f.comments)) {
+    if (!jumpTarget(i, gf.target, fc_)) {
         f.malformed = true;
         return;
     }

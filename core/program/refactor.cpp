@@ -11,8 +11,11 @@ RefactorResult fail(std::string ru, std::string en) {
 
 void retargetCalls(Program& p, int from, int to) {
     for (Frame& f : p.frames)
-        if (IsoFrame* iso = f.iso(); iso && iso->call && iso->call->number == from)
-            iso->call->number = to;
+        if (f.body.callTarget() == from) {
+            IsoFrame iso = f.body.isoFrame();
+            iso.call->number = to;
+            f.body = iso;
+        }
 }
 
 RefactorResult checkNumbers(const ProgramStore& store, int from, int to) {
@@ -51,10 +54,15 @@ RefactorResult renumber(Program& program, int start, int step) {
     };
     for (std::size_t i = 0; i < program.frames.size(); ++i) {
         Frame& f = program.frames[i];
-        if (IfGotoFrame* j = f.ifGoto())
-            retarget(j->target);
-        else if (GotoFrame* g = f.gotoFrame())
-            retarget(g->target);
+        if (f.kind() == FrameKind::IfGoto) {
+            IfGotoFrame j = f.body.ifGotoFrame();
+            retarget(j.target);
+            f.body = j;
+        } else if (f.kind() == FrameKind::Goto) {
+            GotoFrame g = f.body.gotoFrame();
+            retarget(g.target);
+            f.body = g;
+        }
         Word n;
         if (f.n)
             n = *f.n;

@@ -107,7 +107,7 @@ private:
             return;
         if (f.n)
             add(line, f.n->span, TokenKind::FrameNumber);
-        if (const IsoFrame* iso = f.iso()) {
+        if (const auto iso = f.iso()) {
             for (const Word& g : iso->g)
                 add(line, g.span, TokenKind::GWord);
             for (const Word& m : iso->m)
@@ -120,15 +120,15 @@ private:
             value(line, iso->z, TokenKind::AxisValue);
             value(line, iso->fx, TokenKind::Feed);
             value(line, iso->fz, TokenKind::Feed);
-        } else if (const ComputeFrame* c = f.compute()) {
+        } else if (const auto c = f.compute()) {
             add(line, c->target.span, TokenKind::RParam);
             add(line, c->a.span, c->a.isR() ? TokenKind::RParam : TokenKind::Literal);
             if (c->op != ArithOp::None)
                 add(line, c->b.span, c->b.isR() ? TokenKind::RParam : TokenKind::Literal);
-        } else if (const IfGotoFrame* j = f.ifGoto()) {
+        } else if (const auto j = f.ifGoto()) {
             add(line, j->r.span, TokenKind::RParam);
             add(line, j->target.span, TokenKind::JumpTarget);
-        } else if (const GotoFrame* g = f.gotoFrame()) {
+        } else if (const auto g = f.gotoFrame()) {
             add(line, g->target.span, TokenKind::JumpTarget);
         }
     }

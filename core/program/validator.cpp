@@ -31,12 +31,12 @@ void CallGraph::update(const Program& program) {
     calls.clear();
     edges_[n].reset();
     for (std::size_t i = 0; i < program.frames.size(); ++i) {
-        const IsoFrame* iso = program.frames[i].iso();
-        if (!iso || !iso->call)
+        const std::optional<int> call = program.frames[i].body.callTarget();
+        if (!call)
             continue;
-        calls.push_back({iso->call->number, static_cast<int>(i)});
-        if (inProgramRange(iso->call->number))
-            edges_[n].set(static_cast<std::size_t>(iso->call->number));
+        calls.push_back({*call, static_cast<int>(i)});
+        if (inProgramRange(*call))
+            edges_[n].set(static_cast<std::size_t>(*call));
     }
 }
 
@@ -320,19 +320,23 @@ void ProgramChecker::run() {
         case FrameKind::Compute:
             computeFrame(f, *f.compute());
             break;
-        case FrameKind::IfGoto:
-            rIndex(f, f.ifGoto()->r.number, f.ifGoto()->r.span);
-            if (targetRead(f, f.ifGoto()->target))
-                jump(f, f.ifGoto()->target);
+        case FrameKind::IfGoto: {
+            const IfGotoFrame j = f.body.ifGotoFrame();
+            rIndex(f, j.r.number, j.r.span);
+            if (targetRead(f, j.target))
+                jump(f, j.target);
             else
                 lostTarget_ = true;
             break;
-        case FrameKind::Goto:
-            if (targetRead(f, f.gotoFrame()->target))
-                jump(f, f.gotoFrame()->target);
+        }
+        case FrameKind::Goto: {
+            const GotoFrame j = f.body.gotoFrame();
+            if (targetRead(f, j.target))
+                jump(f, j.target);
             else
                 lostTarget_ = true;
             break;
+        }
         }
     }
     reachability();
@@ -456,6 +460,12 @@ void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
     const Word* m17 = iso.findM(mfunc::kSubprogramEnd);
     const Word* m2 = iso.findM(mfunc::kEnd);
     const Word* m30 = iso.findM(mfunc::kEndRewind);
+    // Most frames have none of the words checked here: no texts built for them.
+    bool axisFunction = false;
+    for (int i = 0; i < iso.g.size(); ++i)
+        axisFunction |= gInfo_[static_cast<std::size_t>(i)].axis != Axis::None;
+    if (!iso.call && !m17 && !axisFunction && !iso.hasG(4))
+        return;
     const std::string n = where(f);
     const std::string inRu = n.empty() ? "в кадре" : "в кадре N" + n;
     const std::string inEn = n.empty() ? "in the frame" : "in frame N" + n;
@@ -689,21 +699,21 @@ void ProgramChecker::reachability() {
             if (!f.skip) {
                 switch (f.kind()) {
                 case FrameKind::Iso: {
-                    const IsoFrame& iso = *f.iso();
-                    if (iso.hasM(mfunc::kEnd) || iso.hasM(mfunc::kEndRewind) || iso.hasM(mfunc::kSubprogramEnd))
+                    if (f.body.hasM(mfunc::kEnd) || f.body.hasM(mfunc::kEndRewind) ||
+                        f.body.hasM(mfunc::kSubprogramEnd))
                         next = false;
                     break;
                 }
                 case FrameKind::Compute:
                     break;
                 case FrameKind::IfGoto: {
-                    const auto t = target(f.ifGoto()->target.number);
+                    const auto t = target(f.jumpTarget());
                     if (t >= 0)
                         visit(static_cast<std::size_t>(t));
                     break;
                 }
                 case FrameKind::Goto: {
-                    const auto t = target(f.gotoFrame()->target.number);
+                    const auto t = target(f.jumpTarget());
                     if (t >= 0)
                         visit(static_cast<std::size_t>(t));
                     next = false;
@@ -745,7 +755,7 @@ void ProgramChecker::subprogramEnd() {
     if (!graph_.isCalled(p_.number))
         return;
     const Frame& last = p_.frames.back();
-    const IsoFrame* iso = last.iso();
+    const auto iso = last.iso();
     if (!iso || last.skip || iso->hasM(mfunc::kSubprogramEnd))
         return;
     const std::string l = "L" + std::to_string(p_.number);
@@ -770,7 +780,8 @@ void ProgramChecker::nesting() {
         if (static_cast<std::size_t>(c.frameIndex) >= p_.frames.size())
             continue;
         const Frame& f = p_.frames[static_cast<std::size_t>(c.frameIndex)];
-        const ColSpan s = f.iso() && f.iso()->call ? f.iso()->call->span : whole(f);
+        const auto fi = f.iso();
+        const ColSpan s = fi && fi->call ? fi->call->span : whole(f);
         const auto ci = static_cast<std::size_t>(c.callee);
         if (calls_.scc[ci] == calls_.scc[self]) {
             std::vector<int> cycle = cyclePath(calls_, c.callee, p_.number);
@@ -814,12 +825,12 @@ void ProgramChecker::machine() {
     // G90 are checked against the limits (best effort; jumps are ignored).
     bool usesIncremental = false;
     for (const Frame& f : p_.frames)
-        if (const IsoFrame* iso = f.iso(); iso && iso->hasG(91))
+        if (const auto iso = f.iso(); iso && iso->hasG(91))
             usesIncremental = true;
     bool absolute = !usesIncremental;
     int omitted = 54; // group 6: G54 (all components) at power-on, or the G50..G53 in force
     for (const Frame& f : p_.frames) {
-        const IsoFrame* iso = f.iso();
+        const auto iso = f.iso();
         if (!iso)
             continue;
         if (iso->hasG(90))

@@ -95,7 +95,7 @@ private slots:
         const program::Program* p = r.c().programs().find(1);
         QCOMPARE(p->frames.size(), std::size_t(19));
         QCOMPARE(p->frames[2].number(), 100);
-        QVERIFY(p->frames[2].iso()->hasM(5));
+        QVERIFY(p->frames[2].iso().value().hasM(5));
         QCOMPARE(p->frames[3].number(), 3);
         QCOMPARE(r.lines(), expect({" N100G   G   G   #", " M5  M   M       L",
                                     "X          F=", "Z          F="}));
@@ -114,7 +114,7 @@ private slots:
         QCOMPARE(r.display().lcd.blinkColumn, 17); // «#», column 18
         r.keys("DEL");
         const program::Frame& f = r.c().programs().find(1)->frames[0];
-        QVERIFY(!f.iso()->message.has_value());
+        QVERIFY(!f.iso().value().message.has_value());
         QVERIFY(!f.leading.empty()); // the comment lines above N1 in the text
         QCOMPARE(r.line(0), QString(" N1  G90 G0  G   #"));
     }
@@ -131,10 +131,10 @@ private slots:
         QCOMPARE(r.line(0), QString(" N1  G90 G0  G   #1"));
         QCOMPARE(r.display().lcd.blinkColumn, 5); // the name «G» blinks again
         QCOMPARE(r.display().lcd.blinkLength, 1);
-        QVERIFY(r.c().programs().find(1)->frames[0].iso()->hasG(90));
+        QVERIFY(r.c().programs().find(1)->frames[0].iso().value().hasG(90));
         r.keys("9 1 RIGHT");
-        QVERIFY(r.c().programs().find(1)->frames[0].iso()->hasG(91));
-        QVERIFY(!r.c().programs().find(1)->frames[0].iso()->hasG(90));
+        QVERIFY(r.c().programs().find(1)->frames[0].iso().value().hasG(91));
+        QVERIFY(!r.c().programs().find(1)->frames[0].iso().value().hasG(90));
     }
 
     void outOfRange_data() {
@@ -190,7 +190,7 @@ private slots:
         QCOMPARE(r.line(0), QString(" N6  R1"));
         r.keys("DOWN DEL");
         QCOMPARE(r.lines(), expect({" N6  R1", "     =", "     -R12", ""}));
-        QVERIFY(r.c().programs().find(1)->frames[5].compute()->a.isR());
+        QVERIFY(r.c().programs().find(1)->frames[5].compute().value().a.isR());
         r.keys("SHIFT+DOWN SHIFT+UP");
         QCOMPARE(r.lines(), expect({" N6  R1", "     =R10", "     -R12", ""}));
     }

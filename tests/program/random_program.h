@@ -205,8 +205,8 @@ public:
             f.body = j;
         }
         // Never an empty frame: it would read back as a blank line.
-        if (const IsoFrame* i = f.iso(); i && i->empty() && !f.skip)
-            f.iso()->m.push_back({0, {}});
+        if (const auto i = f.iso(); i && i->empty() && !f.skip)
+            f.body = [&] { IsoFrame e = *f.iso(); e.m.push_back({0, {}}); return e; }();
         if (opt_.comments && rng_.chance(15)) {
             const int c = rng_.range(1, 2);
             for (int k = 0; k < c; ++k)

@@ -111,8 +111,8 @@ private slots:
                     QVERIFY(q);
                     QCOMPARE(q->frames.size(), p.frames.size());
                     for (std::size_t i = 0; i < p.frames.size(); ++i) {
-                        const IsoFrame* a = p.frames[i].iso();
-                        const IsoFrame* b = q->frames[i].iso();
+                        const auto a = p.frames[i].iso();
+                        const auto b = q->frames[i].iso();
                         if (!a || !a->call)
                             continue;
                         QVERIFY(b && b->call);

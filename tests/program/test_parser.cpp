@@ -64,33 +64,33 @@ private slots:
         QCOMPARE(canon(one("N12 R123=R1+12")), QString("N12 R123=R1+12"));
         QCOMPARE(canon(one("R5=-12")), QString("R5=-12"));
         QCOMPARE(canon(one("R5=R1--12")), QString("R5=R1--12"));
-        QCOMPARE(one("R5=-2147483648").compute()->a.literal, INT32_MIN);
+        QCOMPARE(one("R5=-2147483648").compute().value().a.literal, INT32_MIN);
     }
     void manualJumps() {
         Frame f = one("N202 IF R1>0 GOTO 301");
         QCOMPARE(f.kind(), FrameKind::IfGoto);
         QCOMPARE(f.number(), 202);
-        QCOMPARE(f.ifGoto()->r.number, 1);
-        QCOMPARE(f.ifGoto()->target.number, 301);
+        QCOMPARE(f.ifGoto().value().r.number, 1);
+        QCOMPARE(f.ifGoto().value().target.number, 301);
         QCOMPARE(f.jumpTarget(), 301);
         Frame g = one("N207 GOTO 33");
         QCOMPARE(g.kind(), FrameKind::Goto);
-        QCOMPARE(g.gotoFrame()->target.number, 33);
+        QCOMPARE(g.gotoFrame().value().target.number, 33);
         QCOMPARE(canon(one("n202 if r1 > 0 goto 301")), QString("N202 IF R1>0 GOTO 301"));
         QCOMPARE(canon(one("N202IFR1>0GOTO301")), QString("N202 IF R1>0 GOTO 301"));
     }
     void manualIsoFrames() {
         Frame dwell = one("G04 X20.500");
-        QCOMPARE(dwell.iso()->g.size(), 1);
-        QCOMPARE(dwell.iso()->g[0].number, 4);
-        QCOMPARE(QString::fromStdString(dwell.iso()->x->literal.toString()), QString("20.5"));
+        QCOMPARE(dwell.iso().value().g.size(), 1);
+        QCOMPARE(dwell.iso().value().g[0].number, 4);
+        QCOMPARE(QString::fromStdString(dwell.iso().value().x->literal.toString()), QString("20.5"));
         Frame osc = one("G281 Z=-30.5 Fz=100");
-        QCOMPARE(osc.iso()->g[0].number, 281);
-        QCOMPARE(QString::fromStdString(osc.iso()->z->literal.toString()), QString("-30.5"));
-        QCOMPARE(QString::fromStdString(osc.iso()->fz->literal.toString()), QString("100"));
+        QCOMPARE(osc.iso().value().g[0].number, 281);
+        QCOMPARE(QString::fromStdString(osc.iso().value().z->literal.toString()), QString("-30.5"));
+        QCOMPARE(QString::fromStdString(osc.iso().value().fz->literal.toString()), QString("100"));
         Frame set = one("G192 X12.324");
-        QCOMPARE(set.iso()->g[0].number, 192);
-        QCOMPARE(set.iso()->x->literal, *Decimal::parse("12.324"));
+        QCOMPARE(set.iso().value().g[0].number, 192);
+        QCOMPARE(set.iso().value().x->literal, *Decimal::parse("12.324"));
         // The panel's example frame (2.6.7): F= after each axis.
         QCOMPARE(canon(one("N12 X5.342 F=50.00 Z-1234.678 F=1000.00")),
                  QString("N12 X5.342 FX50 Z-1234.678 FZ1000"));
@@ -135,7 +135,7 @@ private slots:
     void emptyFrameWithNumberOnly() {
         Frame f = one("N40");
         QCOMPARE(f.kind(), FrameKind::Iso);
-        QVERIFY(f.iso()->empty());
+        QVERIFY(f.iso().value().empty());
         QCOMPARE(f.number(), 40);
     }
 
@@ -158,7 +158,7 @@ private slots:
         QCOMPARE(f.leading.size(), std::size_t(3)); // comment, comments, blank
         QVERIFY(f.leading[2].blank());
         QCOMPARE(f.leading[1].comments.size(), std::size_t(2));
-        QVERIFY(f.iso()->x.has_value());
+        QVERIFY(f.iso().value().x.has_value());
     }
     void semicolonInsideParensAndParensInsideSemicolon() {
         Frame f = one("G1 (a;b) X5 ; c (d)");
@@ -271,11 +271,11 @@ private slots:
         // "(подвод) " is 9 code points (16 bytes): N5 starts at column 10.
         QCOMPARE(f.n->span.column, 10);
         QCOMPARE(f.n->span.endColumn, 12);
-        QCOMPARE(f.iso()->g[0].span.column, 13);
-        QCOMPARE(f.iso()->x->span.column, 16);
-        QCOMPARE(f.iso()->x->span.endColumn, 21);
-        QCOMPARE(f.iso()->fz->span.column, 22);
-        QCOMPARE(f.iso()->fz->span.endColumn, 27);
+        QCOMPARE(f.iso().value().g[0].span.column, 13);
+        QCOMPARE(f.iso().value().x->span.column, 16);
+        QCOMPARE(f.iso().value().x->span.endColumn, 21);
+        QCOMPARE(f.iso().value().fz->span.column, 22);
+        QCOMPARE(f.iso().value().fz->span.endColumn, 27);
         QCOMPARE(f.span.column, 10);
         QCOMPARE(f.span.endColumn, 27);
         const ParseResult e = p("(ø) Q5\n");
@@ -406,11 +406,11 @@ private slots:
         QCOMPARE(p1.frames.size(), std::size_t(3));
         QVERIFY(p1.frames[0].malformed);
         QVERIFY(!p1.frames[1].malformed);
-        QCOMPARE(p1.frames[1].iso()->x->literal, Decimal::fromInt(5));
+        QCOMPARE(p1.frames[1].iso().value().x->literal, Decimal::fromInt(5));
         QVERIFY(p1.frames[2].malformed);
         // The malformed frame keeps its number and the words that were fine.
         QCOMPARE(p1.frames[0].number(), 1);
-        QCOMPARE(p1.frames[0].iso()->g[0].number, 1);
+        QCOMPARE(p1.frames[0].iso().value().g[0].number, 1);
         QCOMPARE(QString::fromStdString(*r.store.messages.text(1)), QString("B"));
         // Diagnostics name their program.
         QCOMPARE(find(r, Rule::DuplicateWord)->program, 2);

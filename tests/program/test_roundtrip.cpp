@@ -184,6 +184,91 @@ private slots:
             many += "%L" + std::to_string(i % 120) + "\nL" + std::to_string(i % 99 + 1) + "\n";
         exercise(many, 1);
     }
+
+    // The compact frame body (model.h FrameBody) gives back every field
+    // exactly, spans included, at the edges of each type, in place and on
+    // the heap, through copies and moves.
+    void frameBodyKeepsEveryFieldExactly() {
+        auto word = [](int n, int c, int e) { return Word{n, {c, e}}; };
+        IsoFrame full;
+        for (int k = 0; k < 3; ++k) {
+            full.g.push_back(word(INT32_MAX - k, 1 + k, 2000000000 + k));
+            full.m.push_back(word(INT32_MIN + k, 0, 0));
+        }
+        full.message = word(99, 7, 3); // an end before the column: a span not from a text
+        full.call = word(-1, INT32_MAX - 5, INT32_MAX);
+        Value x = Value::lit(Decimal::fromScaled(INT64_MIN + 1, 18));
+        x.span = {12, 40};
+        Value fx = Value::rParam(INT32_MAX);
+        fx.span = {-3, -1};
+        full.x = x;
+        full.fx = fx;
+        full.z = Value::lit(Decimal::fromScaled(INT64_MAX, 3));
+        full.fz = Value::rParam(0);
+        Frame f;
+        f.body = full;
+        QVERIFY(f.body.encodedSize() > 44); // long: on the heap
+        auto check = [&](const Frame& g) {
+            const auto iso = g.iso();
+            QVERIFY(iso);
+            QCOMPARE(iso->g.size(), 3);
+            QCOMPARE(iso->m.size(), 3);
+            for (int k = 0; k < 3; ++k) {
+                QCOMPARE(iso->g[k].number, INT32_MAX - k);
+                QCOMPARE(iso->g[k].span.column, 1 + k);
+                QCOMPARE(iso->g[k].span.endColumn, 2000000000 + k);
+                QCOMPARE(iso->m[k].number, INT32_MIN + k);
+            }
+            QCOMPARE(iso->message->span.column, 7);
+            QCOMPARE(iso->message->span.endColumn, 3);
+            QCOMPARE(iso->call->number, -1);
+            QCOMPARE(iso->call->span.endColumn, INT32_MAX);
+            QVERIFY(iso->x->literal == x.literal && !iso->x->isR());
+            QCOMPARE(iso->x->span.column, 12);
+            QVERIFY(iso->fx->isR());
+            QCOMPARE(iso->fx->rIndex, INT32_MAX);
+            QCOMPARE(iso->fx->span.column, -3);
+            QVERIFY(iso->z->literal == Decimal::fromScaled(INT64_MAX, 3));
+            QVERIFY(iso->fz->isR() && iso->fz->rIndex == 0);
+            QVERIFY(g.body.hasM(INT32_MIN + 2) && !g.body.hasM(0));
+            QCOMPARE(g.body.callTarget().value_or(7), -1);
+            QVERIFY(!g.compute() && !g.ifGoto() && !g.gotoFrame());
+        };
+        check(f);
+        Frame copy = f;
+        check(copy);
+        Frame moved = std::move(copy);
+        check(moved);
+        copy = moved; // assigning into a moved-from frame
+        check(copy);
+
+        ComputeFrame c;
+        c.target = word(231, 2, 6);
+        c.a = Operand::lit(INT32_MIN);
+        c.op = ArithOp::Div;
+        c.b = Operand::rParam(299);
+        c.b.span = {10, 14};
+        f.body = c; // from the heap back in place
+        QVERIFY(f.body.encodedSize() <= 44);
+        const auto cd = f.compute();
+        QVERIFY(cd && !f.iso());
+        QCOMPARE(cd->target.number, 231);
+        QCOMPARE(cd->a.literal, INT32_MIN);
+        QCOMPARE(cd->op, ArithOp::Div);
+        QVERIFY(cd->b.isR() && cd->b.rIndex == 299 && cd->b.span.endColumn == 14);
+
+        f.body = IfGotoFrame{word(7, 4, 6), word(301, 14, 17)};
+        QCOMPARE(f.jumpTarget(), 301);
+        QCOMPARE(f.ifGoto().value().r.number, 7);
+        f.body = GotoFrame{word(999, 6, 9)};
+        QCOMPARE(f.jumpTarget(), 999);
+        QCOMPARE(f.gotoFrame().value().target.span.column, 6);
+        Frame empty;
+        QVERIFY(empty.iso() && empty.iso().value().empty());
+    }
+
+    // The frame model stays small (issue 15: parse memory <= 5x the text).
+    void frameIsCompact() { QVERIFY(sizeof(Frame) <= 96); }
 };
 
 QTEST_APPLESS_MAIN(TestRoundTrip)

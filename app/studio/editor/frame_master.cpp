@@ -395,7 +395,7 @@ bool FrameMaster::setFromLine(const QString& line) {
     const Frame& fr = r.store.programs()[0].frames[0];
     skip_->setChecked(fr.skip);
     n_->setText(fr.n ? QString::number(fr.n->number) : QString());
-    if (const IsoFrame* iso = fr.iso()) {
+    if (const auto iso = fr.iso()) {
         QStringList g, m;
         for (const Word& w : iso->g)
             g << QString::number(w.number);
@@ -423,17 +423,17 @@ bool FrameMaster::setFromLine(const QString& line) {
             field("Z")->setText(valueText(iso->z));
             field("FZ")->setText(valueText(iso->fz));
         }
-    } else if (const ComputeFrame* c = fr.compute()) {
+    } else if (const auto c = fr.compute()) {
         setKind(Compute);
         field("R")->setText(QStringLiteral("R%1").arg(c->target.number));
         field("a")->setText(operandText(c->a));
         op_->setCurrentIndex(static_cast<int>(c->op));
         field("b")->setText(c->op != ArithOp::None ? operandText(c->b) : QString());
-    } else if (const IfGotoFrame* j = fr.ifGoto()) {
+    } else if (const auto j = fr.ifGoto()) {
         setKind(IfGoto);
         field("ifR")->setText(QStringLiteral("R%1").arg(j->r.number));
         field("ifTarget")->setText(QString::number(j->target.number));
-    } else if (const GotoFrame* g = fr.gotoFrame()) {
+    } else if (const auto g = fr.gotoFrame()) {
         setKind(Goto);
         field("gotoTarget")->setText(QString::number(g->target.number));
     }

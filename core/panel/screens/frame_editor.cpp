@@ -283,7 +283,7 @@ FrameDraft FrameDraft::from(const program::Frame& f) {
     d.skip = f.skip;
     if (f.n)
         d.n = f.n->number;
-    if (const auto* iso = f.iso()) {
+    if (const auto iso = f.iso()) {
         for (int i = 0; i < iso->g.size(); ++i)
             d.g[static_cast<std::size_t>(i)] = iso->g[i].number;
         for (int i = 0; i < iso->m.size(); ++i)
@@ -296,16 +296,16 @@ FrameDraft FrameDraft::from(const program::Frame& f) {
         d.fx = iso->fx;
         d.z = iso->z;
         d.fz = iso->fz;
-    } else if (const auto* c = f.compute()) {
+    } else if (const auto c = f.compute()) {
         d.target = c->target.number;
         d.a = c->a;
         d.op = c->op;
         if (c->op != ArithOp::None)
             d.b = c->b;
-    } else if (const auto* i = f.ifGoto()) {
+    } else if (const auto i = f.ifGoto()) {
         d.rTest = i->r.number;
         d.jump = i->target.number;
-    } else if (const auto* g = f.gotoFrame()) {
+    } else if (const auto g = f.gotoFrame()) {
         d.jump = g->target.number;
     }
     return d;
