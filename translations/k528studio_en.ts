@@ -363,6 +363,268 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::DebugPanel</name>
+    <message>
+        <source>Type an R-parameter number, R0..R299.</source>
+        <translation>Type an R-parameter number, R0..R299.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>A program is under way: stop it first.</translation>
+    </message>
+    <message>
+        <source>Open a program file first.</source>
+        <translation>Open a program file first.</translation>
+    </message>
+    <message>
+        <source>The program under way is another file's.</source>
+        <translation>The program under way is another file's.</translation>
+    </message>
+    <message>
+        <source>R-parameters are R0..R299, not R%1.</source>
+        <translation>R-parameters are R0..R299, not R%1.</translation>
+    </message>
+    <message>
+        <source>R%1 was not set: %2</source>
+        <translation>R%1 was not set: %2</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a whole number.</source>
+        <translation>R%1: «%2» is not a whole number.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Run</translation>
+    </message>
+    <message>
+        <source>Send the file and run its first program (homing as the operator would), or continue</source>
+        <translation>Send the file and run its first program (homing as the operator would), or continue</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Hold</translation>
+    </message>
+    <message>
+        <source>«Стоп»: the motion stops, «Пуск» continues</source>
+        <translation>«Стоп»: the motion stops, «Пуск» continues</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continue</translation>
+    </message>
+    <message>
+        <source>«Пуск»: continue the held program</source>
+        <translation>«Пуск»: continue the held program</translation>
+    </message>
+    <message>
+        <source>Single frame</source>
+        <translation>Single frame</translation>
+    </message>
+    <message>
+        <source>Stop after each frame; «Пуск» runs the next one</source>
+        <translation>Stop after each frame; «Пуск» runs the next one</translation>
+    </message>
+    <message>
+        <source>Run to cursor</source>
+        <translation>Run to cursor</translation>
+    </message>
+    <message>
+        <source>Run until the frame at the cursor, stopping before it</source>
+        <translation>Run until the frame at the cursor, stopping before it</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>«Сброс»: the program ends without continuation</source>
+        <translation>«Сброс»: the program ends without continuation</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
+        <translation>«Сброс» and ESC: end the program and acknowledge the messages</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Speed</translation>
+    </message>
+    <message>
+        <source>fastest</source>
+        <translation>fastest</translation>
+    </message>
+    <message>
+        <source>real time</source>
+        <translation>real time</translation>
+    </message>
+    <message>
+        <source>Call stack</source>
+        <translation>Call stack</translation>
+    </message>
+    <message>
+        <source>R158</source>
+        <translation>R158</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Watch</translation>
+    </message>
+    <message>
+        <source>Add an R-parameter: R12, Enter</source>
+        <translation>Add an R-parameter: R12, Enter</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DebugSession</name>
+    <message>
+        <source>There is no frame at or after line %1.</source>
+        <translation>There is no frame at or after line %1.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>A program is under way: stop it first.</translation>
+    </message>
+    <message>
+        <source>The controller holds no program L%1.</source>
+        <translation>The controller holds no program L%1.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed: pull it out on the machine's panel.</source>
+        <translation>The emergency stop is pressed: pull it out on the machine's panel.</translation>
+    </message>
+    <message>
+        <source>Switching the drives on…</source>
+        <translation>Switching the drives on…</translation>
+    </message>
+    <message>
+        <source>The reference-point mode was refused: %1</source>
+        <translation>The reference-point mode was refused: %1</translation>
+    </message>
+    <message>
+        <source>Reference point of %1…</source>
+        <translation>Reference point of %1…</translation>
+    </message>
+    <message>
+        <source>АВТОМАТ was refused: %1</source>
+        <translation>АВТОМАТ was refused: %1</translation>
+    </message>
+    <message>
+        <source>Program L%1 was refused: %2</source>
+        <translation>Program L%1 was refused: %2</translation>
+    </message>
+    <message>
+        <source>The machine did not get ready: the drives are off (see the machine's messages).</source>
+        <translation>The machine did not get ready: the drives are off (see the machine's messages).</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 stopped with a message.</source>
+        <translation>The reference-point cycle of %1 stopped with a message.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 ended without the reference point.</source>
+        <translation>The reference-point cycle of %1 ended without the reference point.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 did not start.</source>
+        <translation>The reference-point cycle of %1 did not start.</translation>
+    </message>
+    <message>
+        <source>L%1 runs.</source>
+        <translation>L%1 runs.</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
+        <translation>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</translation>
+    </message>
+    <message>
+        <source>L%1 ended.</source>
+        <translation>L%1 ended.</translation>
+    </message>
+    <message>
+        <source>The program stopped with a message: %1</source>
+        <translation>The program stopped with a message: %1</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>No machine</translation>
+    </message>
+    <message>
+        <source>Starting L%1…</source>
+        <translation>Starting L%1…</translation>
+    </message>
+    <message>
+        <source>L%1 N%2 (line %3)</source>
+        <translation>L%1 N%2 (line %3)</translation>
+    </message>
+    <message>
+        <source>L%1 (line %2)</source>
+        <translation>L%1 (line %2)</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>No program</translation>
+    </message>
+    <message>
+        <source>Running %1</source>
+        <translation>Running %1</translation>
+    </message>
+    <message>
+        <source>M00 at %1: «Пуск» continues</source>
+        <translation>M00 at %1: «Пуск» continues</translation>
+    </message>
+    <message>
+        <source>Breakpoint: before %1</source>
+        <translation>Breakpoint: before %1</translation>
+    </message>
+    <message>
+        <source>Single frame: before %1</source>
+        <translation>Single frame: before %1</translation>
+    </message>
+    <message>
+        <source>Run to cursor: before %1</source>
+        <translation>Run to cursor: before %1</translation>
+    </message>
+    <message>
+        <source>Held at %1: «Пуск» continues</source>
+        <translation>Held at %1: «Пуск» continues</translation>
+    </message>
+    <message>
+        <source>Ended at %1</source>
+        <translation>Ended at %1</translation>
+    </message>
+    <message>
+        <source>Stopped by a message at %1</source>
+        <translation>Stopped by a message at %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::EditorTab</name>
     <message>
         <source>Unsaved changes</source>

@@ -363,6 +363,268 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::DebugPanel</name>
+    <message>
+        <source>Type an R-parameter number, R0..R299.</source>
+        <translation>Введите номер R-параметра, R0..R299.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>Программа выполняется: сначала остановите её.</translation>
+    </message>
+    <message>
+        <source>Open a program file first.</source>
+        <translation>Сначала откройте файл программы.</translation>
+    </message>
+    <message>
+        <source>The program under way is another file's.</source>
+        <translation>Выполняется программа другого файла.</translation>
+    </message>
+    <message>
+        <source>R-parameters are R0..R299, not R%1.</source>
+        <translation>R-параметры: R0..R299, а не R%1.</translation>
+    </message>
+    <message>
+        <source>R%1 was not set: %2</source>
+        <translation>R%1 не записан: %2</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a whole number.</source>
+        <translation>R%1: «%2» — не целое число.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Выполнить</translation>
+    </message>
+    <message>
+        <source>Send the file and run its first program (homing as the operator would), or continue</source>
+        <translation>Передать файл и выполнить его первую программу (с привязкой к базовой точке, как оператор) или продолжить</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>«Стоп»: the motion stops, «Пуск» continues</source>
+        <translation>«Стоп»: перемещение останавливается, «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Продолжить</translation>
+    </message>
+    <message>
+        <source>«Пуск»: continue the held program</source>
+        <translation>«Пуск»: продолжить остановленную программу</translation>
+    </message>
+    <message>
+        <source>Single frame</source>
+        <translation>Покадрово</translation>
+    </message>
+    <message>
+        <source>Stop after each frame; «Пуск» runs the next one</source>
+        <translation>Останов после каждого кадра; «Пуск» выполняет следующий</translation>
+    </message>
+    <message>
+        <source>Run to cursor</source>
+        <translation>До курсора</translation>
+    </message>
+    <message>
+        <source>Run until the frame at the cursor, stopping before it</source>
+        <translation>Выполнять до кадра у курсора и остановиться перед ним</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Прервать</translation>
+    </message>
+    <message>
+        <source>«Сброс»: the program ends without continuation</source>
+        <translation>«Сброс»: программа прерывается без возможности продолжения</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Сброс</translation>
+    </message>
+    <message>
+        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
+        <translation>«Сброс» и ESC: прервать программу и квитировать сообщения</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>fastest</source>
+        <translation>максимально</translation>
+    </message>
+    <message>
+        <source>real time</source>
+        <translation>реальное время</translation>
+    </message>
+    <message>
+        <source>Call stack</source>
+        <translation>Стек вызовов</translation>
+    </message>
+    <message>
+        <source>R158</source>
+        <translation>R158</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Кадр</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Строка</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Наблюдение</translation>
+    </message>
+    <message>
+        <source>Add an R-parameter: R12, Enter</source>
+        <translation>Добавить R-параметр: R12, Enter</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Назначение</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DebugSession</name>
+    <message>
+        <source>There is no frame at or after line %1.</source>
+        <translation>В строке %1 и после неё нет кадра.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>Программа выполняется: сначала остановите её.</translation>
+    </message>
+    <message>
+        <source>The controller holds no program L%1.</source>
+        <translation>В позиционере нет программы L%1.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed: pull it out on the machine's panel.</source>
+        <translation>Нажат аварийный стоп: отпустите его на пульте станка.</translation>
+    </message>
+    <message>
+        <source>Switching the drives on…</source>
+        <translation>Включение приводов…</translation>
+    </message>
+    <message>
+        <source>The reference-point mode was refused: %1</source>
+        <translation>Режим привязки к базовой точке не принят: %1</translation>
+    </message>
+    <message>
+        <source>Reference point of %1…</source>
+        <translation>Привязка к базовой точке по %1…</translation>
+    </message>
+    <message>
+        <source>АВТОМАТ was refused: %1</source>
+        <translation>АВТОМАТ не принят: %1</translation>
+    </message>
+    <message>
+        <source>Program L%1 was refused: %2</source>
+        <translation>Программа L%1 не принята: %2</translation>
+    </message>
+    <message>
+        <source>The machine did not get ready: the drives are off (see the machine's messages).</source>
+        <translation>Станок не готов: приводы не включены (см. сообщения станка).</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 stopped with a message.</source>
+        <translation>Привязка к базовой точке по %1 прервана сообщением.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 ended without the reference point.</source>
+        <translation>Привязка к базовой точке по %1 закончилась без базовой точки.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 did not start.</source>
+        <translation>Привязка к базовой точке по %1 не началась.</translation>
+    </message>
+    <message>
+        <source>L%1 runs.</source>
+        <translation>L%1 выполняется.</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
+        <translation>«Пуск» не принят позиционером (деблокировка пуска, сообщения ПЛК).</translation>
+    </message>
+    <message>
+        <source>L%1 ended.</source>
+        <translation>L%1 закончена.</translation>
+    </message>
+    <message>
+        <source>The program stopped with a message: %1</source>
+        <translation>Программа остановлена сообщением: %1</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>Нет станка</translation>
+    </message>
+    <message>
+        <source>Starting L%1…</source>
+        <translation>Пуск L%1…</translation>
+    </message>
+    <message>
+        <source>L%1 N%2 (line %3)</source>
+        <translation>L%1 N%2 (строка %3)</translation>
+    </message>
+    <message>
+        <source>L%1 (line %2)</source>
+        <translation>L%1 (строка %2)</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Нет программы</translation>
+    </message>
+    <message>
+        <source>Running %1</source>
+        <translation>Выполняется %1</translation>
+    </message>
+    <message>
+        <source>M00 at %1: «Пуск» continues</source>
+        <translation>M00 в %1: «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Breakpoint: before %1</source>
+        <translation>Точка останова: перед %1</translation>
+    </message>
+    <message>
+        <source>Single frame: before %1</source>
+        <translation>Покадрово: перед %1</translation>
+    </message>
+    <message>
+        <source>Run to cursor: before %1</source>
+        <translation>До курсора: перед %1</translation>
+    </message>
+    <message>
+        <source>Held at %1: «Пуск» continues</source>
+        <translation>Остановлена в %1: «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Ended at %1</source>
+        <translation>Закончена в %1</translation>
+    </message>
+    <message>
+        <source>Stopped by a message at %1</source>
+        <translation>Остановлена сообщением в %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::EditorTab</name>
     <message>
         <source>Unsaved changes</source>

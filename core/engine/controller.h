@@ -114,6 +114,11 @@ public:
     bool homing(AxisId a) const { return unit(a).homing.running(); }
     // Preview mode (engine/preview.h; driven by engine/preview_run.h): null ends it.
     void setPreview(PreviewSink* sink) { c_.preview = sink; }
+    // The debugger's gate (engine/debug_gate.h): breakpoints, single frame,
+    // run to a frame; null detaches it. The gate outlives its attachment.
+    void setDebugGate(DebugGate* gate) { c_.debug = gate; }
+    DebugGate* debugGate() const { return c_.debug; }
+    const Interpreter& interpreter() const { return interp_; }
     bool oscillating(AxisId a) const {
         return c_.osc[static_cast<std::size_t>(axisIndex(a))].active();
     }

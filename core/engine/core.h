@@ -24,6 +24,7 @@
 namespace k528::engine {
 
 class PreviewSink; // engine/preview.h
+class DebugGate;   // engine/debug_gate.h
 
 struct Core {
     explicit Core(const profile::MachineProfile& p);
@@ -72,6 +73,8 @@ struct Core {
     program::ProgramStore store;
     // Preview mode (engine/preview.h): instant axes, motion reported here.
     PreviewSink* preview = nullptr;
+    // The editor's debugger (engine/debug_gate.h): stops before frames; null = none.
+    DebugGate* debug = nullptr;
 
     // Mode.
     Mode mode = Mode::Manual;

@@ -1,6 +1,7 @@
 #include "engine/interpreter.h"
 
 #include "engine/coordinates.h"
+#include "engine/debug_gate.h"
 #include "engine/preview.h"
 
 #include <algorithm>
@@ -117,6 +118,8 @@ void Interpreter::start(int number, int cycle, Mode mode) {
     }
     c_.r.set(r::CurrentProgram, number);
     updateNumbers();
+    if (c_.debug && !c_.preview)
+        c_.debug->started();
     if (prog_)
         if (const int dup = duplicateFrameLine(*prog_)) {
             line_ = dup;
@@ -133,6 +136,8 @@ void Interpreter::resume() {
     } else {
         return;
     }
+    if (c_.debug)
+        c_.debug->resumed(); // a frame the gate held runs now
     // Axes a mode change took from the program come back to it.
     for (std::size_t a = 0; a < c_.axes.size(); ++a) {
         AxisUnit& u = c_.axes[a];
@@ -763,6 +768,14 @@ void Interpreter::tick() {
             if (f.skip) {
                 ++index_; // «/ – кадр не будет обрабатываться»
                 break;
+            }
+            if (c_.debug && !c_.preview && c_.debug->beforeFrame(program(), index_, f.span.line)) {
+                // The debugger's stop before the frame: held as by «Стоп», «Пуск» runs it.
+                c_.resumeState = ProgramState::Running;
+                c_.state = ProgramState::Interrupted;
+                c_.stopHold = false;
+                updateNumbers();
+                return;
             }
             ++c_.framesExecuted;
             updateNumbers();

@@ -65,6 +65,13 @@ public:
     int line() const;        // source line of the current frame, 0 if none
     int level() const { return depth_; }
     bool oscillationStopWait() const { return step_ == Step::OscStop; }
+    // The call stack (engine/debug_gate.h): level i < level() called from
+    // frame callerReturnIndex(i) - 1 of callerProgram(i).
+    const program::Program* currentProgram() const { return prog_; }
+    const program::Program* callerProgram(int i) const {
+        return stack_[static_cast<std::size_t>(i)].program;
+    }
+    int callerReturnIndex(int i) const { return stack_[static_cast<std::size_t>(i)].returnIndex; }
 
 private:
     enum class Step : std::uint8_t { Fetch, Handshake, OscStop, Actions, Wait, Call };

@@ -1,5 +1,6 @@
 #include "editor/editor_tab.h"
 
+#include "editor/debug_panel.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
 #include "language.h"
@@ -72,6 +73,11 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     top->addWidget(outline_);
     top->addWidget(tabs_);
     top->setStretchFactor(1, 4);
+    if (session_) { // the debugger on the simulated machine
+        debug_ = new DebugPanel(this, session_, top);
+        top->addWidget(debug_);
+        connect(debug_, &DebugPanel::statusMessage, this, &EditorTab::statusMessage);
+    }
     problems_ = new QTreeWidget(split);
     problems_->setObjectName("editor.problems");
     problems_->setColumnCount(5);

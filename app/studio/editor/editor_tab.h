@@ -19,6 +19,7 @@ class QMenu;
 
 namespace k528::studio {
 
+class DebugPanel;
 class ProgramEditor;
 class SimulationSession;
 
@@ -36,6 +37,8 @@ public:
     QTreeWidget* problems() const { return problems_; }
     QTreeWidget* outline() const { return outline_; }
     QLabel* problemCount() const { return count_; }
+    // The debugger's pane (editor/debug_panel.h); null without a session.
+    DebugPanel* debugPanel() const { return debug_; }
 
     // Check the files against the session's machine (File > Machine).
     void setCheckAgainstMachine(bool on);
@@ -86,6 +89,7 @@ private:
     QTreeWidget* problems_ = nullptr;
     QTreeWidget* outline_ = nullptr;
     QLabel* count_ = nullptr;
+    DebugPanel* debug_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QFileSystemWatcher watcher_;
     bool checkMachine_ = true;

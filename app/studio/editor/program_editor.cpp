@@ -69,6 +69,8 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(parent), alive_(st
     setMarkerForegroundColor(QColor(0x80, 0x00, 0x00), kBreakpointMarker);
     markerDefine(RightArrow, kExecutingMarker);
     setMarkerBackgroundColor(QColor(0xf0, 0xc0, 0x00), kExecutingMarker);
+    markerDefine(Background, kExecutingLineMarker);
+    setMarkerBackgroundColor(QColor(0xff, 0xf0, 0xa0), kExecutingLineMarker);
     setFolding(BoxedTreeFoldStyle, 2);
     connect(this, &QsciScintilla::marginClicked, this, [this](int margin, int line, Qt::KeyboardModifiers) {
         if (margin == 1)
@@ -251,15 +253,18 @@ void ProgramEditor::toggleBreakpoint(int line) {
         markerDelete(line, kBreakpointMarker);
     else
         markerAdd(line, kBreakpointMarker);
+    emit breakpointsChanged();
 }
 
 void ProgramEditor::setExecutingLine(int line) {
     if (line == executingLine_)
         return;
     markerDeleteAll(kExecutingMarker);
+    markerDeleteAll(kExecutingLineMarker);
     executingLine_ = line;
     if (line >= 0) {
         markerAdd(line, kExecutingMarker);
+        markerAdd(line, kExecutingLineMarker);
         ensureLineVisible(line);
     }
 }

@@ -28,6 +28,7 @@ public:
     static constexpr int kDebounceMs = 150;
     static constexpr int kBreakpointMarker = 0;
     static constexpr int kExecutingMarker = 1;
+    static constexpr int kExecutingLineMarker = 2; // the executing line's background
     static constexpr int kErrorIndicator = 8;
     static constexpr int kWarningIndicator = 9;
 
@@ -60,6 +61,7 @@ public:
 
 signals:
     void validated(); // diagnostics() and store() are new
+    void breakpointsChanged(); // a breakpoint was set or cleared
 
 private:
     struct Result;

@@ -39,6 +39,14 @@ void SimulationSession::setSpeed(double factor) {
     emit speedChanged(factor);
 }
 
+void SimulationSession::setFastest(bool on) {
+    if (on == fastest_)
+        return;
+    fastest_ = on;
+    owedMs_ = 0;
+    emit fastestChanged(on);
+}
+
 void SimulationSession::advance(std::int64_t ms) {
     if (ms > 0)
         sim_->advance(ms);
@@ -52,6 +60,18 @@ void SimulationSession::advancedTo() {
 
 void SimulationSession::frame() {
     const double realMs = std::min<double>(static_cast<double>(clock_.restart()), kMaxFrameMs);
+    if (fastest_) {
+        // Whole ticks for a slice of real time, checked every few ticks.
+        QElapsedTimer budget;
+        budget.start();
+        do {
+            for (int i = 0; i < 64; ++i)
+                sim_->tick();
+        } while (budget.elapsed() < kFastestBudgetMs);
+        clock_.restart();
+        advancedTo();
+        return;
+    }
     owedMs_ += realMs * speed_;
     const double tick = static_cast<double>(sim_->tickMs());
     const auto ticks = static_cast<std::int64_t>(std::floor(owedMs_ / tick));

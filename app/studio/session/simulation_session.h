@@ -3,7 +3,9 @@
 // real time elapsed, measured here (core never reads a clock). A 60 Hz timer
 // catches up in whole ticks; a frame never advances by more than
 // kMaxFrameMs of real time, so a stalled window does not make the machine
-// leap. A trainer may pause it or run it faster (1×, 2×, 10× ...).
+// leap. A trainer may pause it or run it faster (1×, 2×, 10× ... 100×), or
+// as fast as the host allows («fastest»: each frame ticks for up to
+// kFastestBudgetMs of real time, so the window stays responsive).
 //
 // Every view of the workstation redraws on advanced(). The session also owns
 // the K923 panel model (panel::Panel) over controller(): the desktop K923
@@ -26,6 +28,7 @@ class SimulationSession : public QObject {
 public:
     static constexpr int kFrameIntervalMs = 16; // ~60 Hz
     static constexpr int kMaxFrameMs = 100;     // real time a frame may catch up
+    static constexpr int kFastestBudgetMs = 12; // real time a «fastest» frame ticks
 
     // Builds the machine of `profile` and switches the controller on (its
     // self-test); the drives stay off until the operator switches them on.
@@ -41,12 +44,14 @@ public:
 
     bool isRunning() const { return running_; }
     double speed() const { return speed_; }
+    bool isFastest() const { return fastest_; }
     // Simulated milliseconds since the session started.
     std::int64_t timeMs() const { return sim_->timeMs(); }
 
 public slots:
     void setRunning(bool running); // pause / resume with real time
     void setSpeed(double factor);  // 0.1 .. 100
+    void setFastest(bool on);      // as fast as the host allows (speed() is kept for off)
     // Advances the machine by `ms` of simulated time now (whole ticks) and
     // emits advanced(): for stepping while paused, and for tests.
     void advance(std::int64_t ms);
@@ -55,6 +60,7 @@ signals:
     void advanced();
     void runningChanged(bool running);
     void speedChanged(double factor);
+    void fastestChanged(bool on);
 
 private slots:
     void frame();
@@ -71,6 +77,7 @@ private:
     double owedMs_ = 0; // simulated time not yet advanced (less than a tick)
     double speed_ = 1.0;
     bool running_ = false;
+    bool fastest_ = false;
 };
 
 } // namespace k528::studio

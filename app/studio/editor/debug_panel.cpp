@@ -1,0 +1,392 @@
+#include "editor/debug_panel.h"
+
+#include "catalog/rparams.h"
+#include "editor/debug_session.h"
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "language.h"
+#include "session/simulation_session.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QShortcut>
+#include <QToolBar>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace k528::studio {
+
+namespace {
+
+// Real time, ×2…×100, fastest (0).
+constexpr double kSpeeds[] = {1, 2, 5, 10, 20, 50, 100, 0};
+
+QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+void setTextIfChanged(QTreeWidgetItem* it, int col, const QString& t) {
+    if (it->text(col) != t)
+        it->setText(col, t);
+}
+
+} // namespace
+
+DebugPanel::DebugPanel(EditorTab* tab, SimulationSession* session, QWidget* parent)
+    : QWidget(parent), tab_(tab), session_(session), debug_(new DebugSession(session, this)) {
+    setObjectName("debug.panel");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 0, 2, 0);
+    toolbar_ = new QToolBar(this);
+    toolbar_->setObjectName("debug.toolbar");
+    toolbar_->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    layout->addWidget(toolbar_);
+    runAction_ = toolbar_->addAction(QString(), this, [this] { run(); });
+    runAction_->setObjectName("debug.run");
+    runAction_->setShortcut(Qt::Key_F5);
+    holdAction_ = toolbar_->addAction(QString(), this, &DebugPanel::hold);
+    holdAction_->setObjectName("debug.hold");
+    resumeAction_ = toolbar_->addAction(QString(), this, &DebugPanel::resume);
+    resumeAction_->setObjectName("debug.resume");
+    stepAction_ = toolbar_->addAction(QString());
+    stepAction_->setObjectName("debug.singleFrame");
+    stepAction_->setCheckable(true);
+    connect(stepAction_, &QAction::toggled, this, &DebugPanel::setSingleFrame);
+    cursorAction_ = toolbar_->addAction(QString(), this, [this] { runToCursor(); });
+    cursorAction_->setObjectName("debug.runToCursor");
+    cursorAction_->setShortcut(Qt::CTRL | Qt::Key_F10);
+    stopAction_ = toolbar_->addAction(QString(), this, &DebugPanel::stop);
+    stopAction_->setObjectName("debug.stop");
+    resetAction_ = toolbar_->addAction(QString(), this, &DebugPanel::reset);
+    resetAction_->setObjectName("debug.reset");
+    for (QAction* a : {runAction_, cursorAction_})
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+
+    auto* speedRow = new QHBoxLayout;
+    speedLabel_ = new QLabel(this);
+    speed_ = new QComboBox(this);
+    speed_->setObjectName("debug.speed");
+    for (double f : kSpeeds)
+        speed_->addItem(QString(), f);
+    speedRow->addWidget(speedLabel_);
+    speedRow->addWidget(speed_, 1);
+    layout->addLayout(speedRow);
+    connect(speed_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (!session_ || i < 0)
+            return;
+        const double f = speed_->itemData(i).toDouble();
+        session_->setFastest(f == 0);
+        if (f > 0)
+            session_->setSpeed(f);
+    });
+
+    status_ = new QLabel(this);
+    status_->setObjectName("debug.status");
+    status_->setWordWrap(true);
+    layout->addWidget(status_);
+
+    stackLabel_ = new QLabel(this);
+    layout->addWidget(stackLabel_);
+    stack_ = new QTreeWidget(this);
+    stack_->setObjectName("debug.callStack");
+    stack_->setColumnCount(4);
+    stack_->setRootIsDecorated(false);
+    stack_->header()->setStretchLastSection(true);
+    layout->addWidget(stack_, 1);
+
+    watchLabel_ = new QLabel(this);
+    layout->addWidget(watchLabel_);
+    watchAdd_ = new QLineEdit(this);
+    watchAdd_->setObjectName("debug.watchAdd");
+    layout->addWidget(watchAdd_);
+    watch_ = new QTreeWidget(this);
+    watch_->setObjectName("debug.watch");
+    watch_->setColumnCount(3);
+    watch_->setRootIsDecorated(false);
+    watch_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    watch_->header()->setStretchLastSection(true);
+    layout->addWidget(watch_, 2);
+
+    connect(watchAdd_, &QLineEdit::returnPressed, this, [this] {
+        QString t = watchAdd_->text().trimmed();
+        if (t.startsWith('R', Qt::CaseInsensitive))
+            t = t.mid(1);
+        bool ok = false;
+        const int n = t.toInt(&ok);
+        if (ok && addWatch(n))
+            watchAdd_->clear();
+        else if (!ok)
+            emit statusMessage(tr("Type an R-parameter number, R0..R299."));
+    });
+    connect(watch_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* it, int col) {
+        if (it && col == 1)
+            watch_->editItem(it, 1);
+    });
+    connect(watch_, &QTreeWidget::itemChanged, this, &DebugPanel::watchEdited);
+    auto* del = new QShortcut(QKeySequence::Delete, watch_, nullptr, nullptr, Qt::WidgetShortcut);
+    connect(del, &QShortcut::activated, this, [this] {
+        if (QTreeWidgetItem* it = watch_->currentItem())
+            removeWatch(it->data(0, Qt::UserRole).toInt());
+    });
+    connect(stack_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* it) {
+        ProgramEditor* ed = debug_->target();
+        const int line = it ? it->data(0, Qt::UserRole).toInt() : 0;
+        if (ed && line > 0 && ed->store().find(it->data(0, Qt::UserRole + 1).toInt())) {
+            ed->setCursorPosition(line - 1, 0);
+            ed->ensureLineVisible(line - 1);
+        }
+    });
+
+    connect(debug_, &DebugSession::changed, this, &DebugPanel::refresh);
+    connect(debug_, &DebugSession::message, this, &DebugPanel::statusMessage);
+    if (session_) {
+        connect(session_, &SimulationSession::advanced, this, [this] {
+            refreshStack();
+            refreshWatch();
+        });
+        const auto showSpeed = [this] {
+            const double f = session_->isFastest() ? 0.0 : session_->speed();
+            const int i = speed_->findData(f);
+            if (i >= 0) {
+                const QSignalBlocker b(speed_);
+                speed_->setCurrentIndex(i);
+            }
+        };
+        connect(session_, &SimulationSession::speedChanged, this, showSpeed);
+        connect(session_, &SimulationSession::fastestChanged, this, showSpeed);
+        showSpeed();
+    }
+    for (int n : {1, 158})
+        addWatch(n);
+    retranslate();
+    refresh();
+}
+
+bool DebugPanel::run() {
+    if (!session_)
+        return false;
+    if (debug_->held()) {
+        debug_->resume();
+        return true;
+    }
+    if (debug_->programActive() || debug_->phase() != DebugSession::Phase::Idle) {
+        emit statusMessage(tr("A program is under way: stop it first."));
+        return false;
+    }
+    ProgramEditor* ed = tab_ ? tab_->currentEditor() : nullptr;
+    if (!ed) {
+        emit statusMessage(tr("Open a program file first."));
+        return false;
+    }
+    debug_->setTarget(ed);
+    if (!tab_->sendToController())
+        return false;
+    ed->validateNow(); // the store of the text just sent: lines of the frames
+    // The file's first program, as the loader selects it for АВТОМАТ.
+    int first = 0, firstLine = 0;
+    for (const program::Program& p : ed->store().programs())
+        if (first == 0 || p.headerLine < firstLine) {
+            first = p.number;
+            firstLine = p.headerLine;
+        }
+    if (first == 0)
+        return false;
+    return debug_->start(first);
+}
+
+void DebugPanel::hold() { debug_->hold(); }
+void DebugPanel::resume() { debug_->resume(); }
+void DebugPanel::stop() { debug_->stop(); }
+void DebugPanel::reset() { debug_->reset(); }
+
+void DebugPanel::setSingleFrame(bool on) {
+    if (stepAction_->isChecked() != on) {
+        const QSignalBlocker b(stepAction_);
+        stepAction_->setChecked(on);
+    }
+    debug_->setSingleFrame(on);
+}
+
+bool DebugPanel::runToCursor() {
+    ProgramEditor* ed = tab_ ? tab_->currentEditor() : nullptr;
+    if (!ed || !session_)
+        return false;
+    if (!debug_->programActive()) {
+        ed->validateNow();
+        debug_->setTarget(ed);
+    } else if (debug_->target() != ed) {
+        emit statusMessage(tr("The program under way is another file's."));
+        return false;
+    }
+    int line = 0, index = 0;
+    ed->getCursorPosition(&line, &index);
+    if (!debug_->setRunTo(line))
+        return false;
+    if (debug_->programActive())
+        return true; // continued when held; a running program stops there
+    if (!run()) {
+        debug_->gate().clearRunTo();
+        return false;
+    }
+    return true;
+}
+
+bool DebugPanel::addWatch(int number) {
+    if (number < 0 || number >= catalog::kRParamCount) {
+        emit statusMessage(tr("R-parameters are R0..R299, not R%1.").arg(number));
+        return false;
+    }
+    if (watched_.contains(number))
+        return true;
+    watched_ << number;
+    std::sort(watched_.begin(), watched_.end());
+    const QSignalBlocker b(watch_);
+    auto* it = new QTreeWidgetItem;
+    it->setText(0, QStringLiteral("R%1").arg(number));
+    it->setData(0, Qt::UserRole, number);
+    const catalog::RParamDef* def = catalog::findRParam(number);
+    if (def && def->readOnly())
+        it->setForeground(1, palette().color(QPalette::Disabled, QPalette::Text));
+    else
+        it->setFlags(it->flags() | Qt::ItemIsEditable);
+    watch_->insertTopLevelItem(static_cast<int>(watched_.indexOf(number)), it);
+    retranslate(); // the meaning column
+    refreshWatch();
+    return true;
+}
+
+void DebugPanel::removeWatch(int number) {
+    const qsizetype i = watched_.indexOf(number);
+    if (i < 0)
+        return;
+    watched_.removeAt(i);
+    delete watch_->takeTopLevelItem(static_cast<int>(i));
+}
+
+bool DebugPanel::setWatchValue(int number, qint64 value) {
+    if (!session_)
+        return false;
+    const engine::OpResult r = session_->controller().setR(number, value);
+    if (!r.ok()) {
+        const bool ru = currentLanguage() == QStringLiteral("ru");
+        emit statusMessage(tr("R%1 was not set: %2")
+                               .arg(number)
+                               .arg(fromView(ru ? engine::refusalTextRu(r.refusal) : engine::refusalTextEn(r.refusal))));
+        refreshWatch();
+        return false;
+    }
+    session_->advance(0); // every view shows the new value
+    return true;
+}
+
+void DebugPanel::watchEdited(QTreeWidgetItem* item, int column) {
+    if (refreshing_ || column != 1 || !item)
+        return;
+    bool ok = false;
+    const qint64 v = item->text(1).trimmed().toLongLong(&ok);
+    const int n = item->data(0, Qt::UserRole).toInt();
+    if (!ok) {
+        emit statusMessage(tr("R%1: «%2» is not a whole number.").arg(n).arg(item->text(1)));
+        refreshWatch();
+        return;
+    }
+    setWatchValue(n, v);
+}
+
+void DebugPanel::refreshWatch() {
+    if (!session_)
+        return;
+    refreshing_ = true;
+    const engine::Controller& ctl = session_->controller();
+    for (int i = 0; i < watch_->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* it = watch_->topLevelItem(i);
+        setTextIfChanged(it, 1, QString::number(ctl.r(it->data(0, Qt::UserRole).toInt())));
+    }
+    refreshing_ = false;
+}
+
+void DebugPanel::refreshStack() {
+    if (!session_)
+        return;
+    const std::vector<engine::CallLevel> levels = engine::callStack(session_->controller());
+    // Innermost first, as debuggers list it.
+    while (stack_->topLevelItemCount() > static_cast<int>(levels.size()))
+        delete stack_->takeTopLevelItem(stack_->topLevelItemCount() - 1);
+    while (stack_->topLevelItemCount() < static_cast<int>(levels.size()))
+        stack_->addTopLevelItem(new QTreeWidgetItem);
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        const engine::CallLevel& l = levels[levels.size() - 1 - k];
+        QTreeWidgetItem* it = stack_->topLevelItem(static_cast<int>(k));
+        setTextIfChanged(it, 0, QString::number(l.level));
+        setTextIfChanged(it, 1, QStringLiteral("L%1").arg(l.program));
+        setTextIfChanged(it, 2, l.frameNumber > 0 ? QStringLiteral("N%1").arg(l.frameNumber) : QString());
+        setTextIfChanged(it, 3, l.line > 0 ? QString::number(l.line) : QString());
+        it->setData(0, Qt::UserRole, l.line);
+        it->setData(0, Qt::UserRole + 1, l.program);
+    }
+}
+
+void DebugPanel::refresh() {
+    const bool active = debug_->programActive();
+    const bool idle = debug_->phase() == DebugSession::Phase::Idle;
+    const bool held = debug_->held();
+    runAction_->setEnabled(session_ && ((!active && idle) || held));
+    holdAction_->setEnabled(active && !held);
+    resumeAction_->setEnabled(held);
+    cursorAction_->setEnabled(session_ && (held || (!active && idle)));
+    stopAction_->setEnabled(session_ && (active || !idle));
+    resetAction_->setEnabled(session_ != nullptr);
+    status_->setText(debug_->statusText());
+    refreshStack();
+    refreshWatch();
+}
+
+void DebugPanel::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void DebugPanel::retranslate() {
+    runAction_->setText(tr("Run"));
+    runAction_->setToolTip(tr("Send the file and run its first program (homing as the operator would), or continue"));
+    holdAction_->setText(tr("Hold"));
+    holdAction_->setToolTip(tr("«Стоп»: the motion stops, «Пуск» continues"));
+    resumeAction_->setText(tr("Continue"));
+    resumeAction_->setToolTip(tr("«Пуск»: continue the held program"));
+    stepAction_->setText(tr("Single frame"));
+    stepAction_->setToolTip(tr("Stop after each frame; «Пуск» runs the next one"));
+    cursorAction_->setText(tr("Run to cursor"));
+    cursorAction_->setToolTip(tr("Run until the frame at the cursor, stopping before it"));
+    stopAction_->setText(tr("Stop"));
+    stopAction_->setToolTip(tr("«Сброс»: the program ends without continuation"));
+    resetAction_->setText(tr("Reset"));
+    resetAction_->setToolTip(tr("«Сброс» and ESC: end the program and acknowledge the messages"));
+    speedLabel_->setText(tr("Speed"));
+    for (int i = 0; i < speed_->count(); ++i) {
+        const double f = speed_->itemData(i).toDouble();
+        speed_->setItemText(i, f == 0 ? tr("fastest") : f == 1 ? tr("real time") : QStringLiteral("×%1").arg(f));
+    }
+    stackLabel_->setText(tr("Call stack"));
+    stack_->setHeaderLabels({tr("R158"), tr("Program"), tr("Frame"), tr("Line")});
+    watchLabel_->setText(tr("Watch"));
+    watchAdd_->setPlaceholderText(tr("Add an R-parameter: R12, Enter"));
+    watch_->setHeaderLabels({tr("R"), tr("Value"), tr("Meaning")});
+    const bool ru = currentLanguage() == QStringLiteral("ru");
+    for (int i = 0; i < watch_->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* it = watch_->topLevelItem(i);
+        const catalog::RParamDef* def = catalog::findRParam(it->data(0, Qt::UserRole).toInt());
+        const QSignalBlocker b(watch_);
+        if (def)
+            it->setText(2, fromView(ru ? def->meaningRu : def->meaningEn));
+    }
+    status_->setText(debug_->statusText());
+}
+
+} // namespace k528::studio
