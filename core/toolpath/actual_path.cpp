@@ -1,6 +1,7 @@
 #include "toolpath/actual_path.h"
 
 #include "machine/run.h"
+#include "machine/simulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,12 +60,10 @@ void Decimator::finish() {
     window_.clear();
 }
 
-void SamplingRunMachine::tick() {
-    m_.tick();
-    const engine::Controller& c = m_.controller();
+bool sampleOf(const engine::Controller& c, ActualSample& s) {
     if (!engine::programActive(c.state()))
-        return;
-    ActualSample s;
+        return false;
+    s = ActualSample{};
     s.tMs = static_cast<double>(c.timeMs());
     double* pos[2] = {&s.x, &s.z};
     double* err[2] = {&s.errX, &s.errZ};
@@ -77,13 +76,90 @@ void SamplingRunMachine::tick() {
         const double offsetDisc = static_cast<double>(v.machineDisc - v.currentDisc);
         *pos[i] = (v.absInternal / ipd - offsetDisc) / dpm;
         *err[i] = v.errorInternal / ipd / dpm;
-        path_.maxErrorUm = std::max(path_.maxErrorUm, std::fabs(*err[i]) * 1000.0);
     }
     const engine::ProgramView p = c.programView();
     s.program = p.program;
     s.line = p.line;
     s.n = p.frameNumber;
+    return true;
+}
+
+void SamplingRunMachine::tick() {
+    m_.tick();
+    ActualSample s;
+    if (!sampleOf(m_.controller(), s))
+        return;
+    path_.maxErrorUm = std::max({path_.maxErrorUm, std::fabs(s.errX) * 1000.0, std::fabs(s.errZ) * 1000.0});
     d_.add(s);
+}
+
+LiveActualPath::LiveActualPath(double toleranceUm)
+    : toleranceUm_(toleranceUm), path_(std::make_unique<ActualPath>()) {
+    path_->toleranceUm = toleranceUm;
+    decimator_ = std::make_unique<Decimator>(toleranceUm, path_->samples);
+}
+
+LiveActualPath::~LiveActualPath() {
+    detach();
+}
+
+void LiveActualPath::attach(machine::Simulation& sim) {
+    detach();
+    sim_ = &sim;
+    const engine::Controller* c = &sim.controller();
+    observer_ = sim.addTickObserver([this, c] { observe(*c); });
+}
+
+void LiveActualPath::detach() {
+    if (sim_)
+        sim_->removeTickObserver(observer_);
+    sim_ = nullptr;
+    observer_ = 0;
+}
+
+void LiveActualPath::observe(const engine::Controller& c) {
+    ActualSample s;
+    if (!sampleOf(c, s)) {
+        if (active_)
+            endPending_ = true;
+        active_ = false;
+        return;
+    }
+    if (!active_) { // a new run: what is pending belongs to the old one
+        if (!pending_.empty() || endPending_)
+            flush();
+        restartPending_ = true;
+        active_ = true;
+    }
+    pending_.push_back(s);
+}
+
+LiveActualPath::Batch LiveActualPath::flush() {
+    Batch b;
+    if (restartPending_) {
+        b.restarted = true;
+        restartPending_ = false;
+        endPending_ = false;
+        path_ = std::make_unique<ActualPath>();
+        path_->toleranceUm = toleranceUm_;
+        decimator_ = std::make_unique<Decimator>(toleranceUm_, path_->samples);
+        program_ = pending_.empty() ? 0 : pending_.front().program;
+    }
+    b.firstNew = path_->samples.size();
+    b.raw = pending_.size();
+    for (const ActualSample& s : pending_) {
+        path_->maxErrorUm =
+            std::max({path_->maxErrorUm, std::fabs(s.errX) * 1000.0, std::fabs(s.errZ) * 1000.0});
+        decimator_->add(s);
+    }
+    pending_.clear();
+    if (endPending_) { // the run ended: its last sample too
+        decimator_->finish();
+        endPending_ = false;
+    }
+    path_->rawSamples = decimator_->raw();
+    b.added = path_->samples.size() - b.firstNew;
+    return b;
 }
 
 ActualPath actualPath(const profile::MachineProfile& profile, const program::ProgramStore& programs,

@@ -15,7 +15,12 @@
 #include "engine/run.h"
 
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+namespace k528::machine {
+class Simulation;
+}
 
 namespace k528::toolpath {
 
@@ -70,6 +75,55 @@ private:
     engine::RunMachine& m_;
     Decimator& d_;
     ActualPath& path_;
+};
+
+// The sample of `c` now: actual position and following error in current
+// coordinates (mm as the panel shows them), program/N/line. Returns false
+// when no program is active (nothing to sample).
+bool sampleOf(const engine::Controller& c, ActualSample& s);
+
+// The actual path of a machine that runs in real time (the studio's
+// session) growing live. attach() observes every tick of the Simulation
+// (Simulation::addTickObserver); a tick with a program active only copies
+// its sample into a buffer, so the machine is not slowed. flush(), once per
+// UI frame, passes the batch through the Decimator (the bound above) into
+// path().samples. A new run (a program becomes active after none was)
+// starts a new path.
+class LiveActualPath {
+public:
+    explicit LiveActualPath(double toleranceUm = 1.0);
+    ~LiveActualPath();
+    LiveActualPath(const LiveActualPath&) = delete;
+    LiveActualPath& operator=(const LiveActualPath&) = delete;
+
+    void attach(machine::Simulation& sim);
+    void detach();
+    // The Simulation is gone (destroyed first): forget it without detaching.
+    void abandon() { sim_ = nullptr; }
+    // The per-tick observer (attach() installs it; tests may call it).
+    void observe(const engine::Controller& c);
+
+    struct Batch {
+        bool restarted = false;  // a new run began: path() was cleared first
+        std::size_t firstNew = 0; // path().samples[firstNew..] are new
+        std::size_t added = 0;    // kept samples added by this flush
+        std::size_t raw = 0;      // ticks sampled since the last flush
+    };
+    Batch flush();
+    const ActualPath& path() const { return *path_; }
+    bool running() const { return active_; }
+    // The program of the current or last run (the first sample's), 0 none.
+    int program() const { return program_; }
+
+private:
+    double toleranceUm_;
+    machine::Simulation* sim_ = nullptr;
+    int observer_ = 0;
+    std::unique_ptr<ActualPath> path_;
+    std::unique_ptr<Decimator> decimator_;
+    std::vector<ActualSample> pending_;
+    bool active_ = false, restartPending_ = false, endPending_ = false;
+    int program_ = 0;
 };
 
 // Runs the program on the simulated machine (as `k528 run`) and samples it.
