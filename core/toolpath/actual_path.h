@@ -31,7 +31,15 @@ struct ActualSample {
     int program = 0, line = 0, n = 0;
 };
 
-// Streaming decimator of samples (the bound above).
+// Streaming decimator of samples (the bound above), O(1) a sample: instead
+// of measuring every sample since the last kept one against each new chord,
+// each sample narrows the chords that may still replace it — directions
+// from the last kept sample within asin(tol / distance) of its own (so it
+// lies within tol of the chord's line), a chord at least as long as the
+// farthest of them (so within tol of the chord itself), and slopes of the
+// following error in time within ±tol of it. A sample is dropped only when
+// the new chord meets all of them: the bound holds (it may keep a few more
+// samples than an exhaustive test would).
 class Decimator {
 public:
     explicit Decimator(double toleranceUm, std::vector<ActualSample>& out)
@@ -42,10 +50,17 @@ public:
 
 private:
     bool fits(const ActualSample& end) const;
+    void restart();                       // a new kept sample: no constraints
+    void constrain(const ActualSample& s); // s joins the dropped-so-far
     double tol_;
     std::vector<ActualSample>& out_;
-    std::vector<ActualSample> window_; // samples since the last kept one
+    ActualSample last_;      // the latest sample since the last kept one
+    std::size_t pending_ = 0; // samples since the last kept one
     std::size_t raw_ = 0;
+    bool haveRef_ = false;
+    double ref_ = 0, lo_ = 0, hi_ = 0; // chord direction interval, radians relative to ref_
+    double farthest_ = 0;              // of the pending samples from the kept one
+    double exLo_ = 0, exHi_ = 0, ezLo_ = 0, ezHi_ = 0; // following-error slopes, mm/ms
     static constexpr std::size_t kMaxWindow = 512;
 };
 
