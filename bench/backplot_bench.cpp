@@ -5,12 +5,20 @@
 //   backplot.lod_rebuild_ms     rebuilding the level of detail when an interaction ends
 //   backplot.pick_max_ms        picking a segment through our own 2D index (worst of 1000)
 //   backplot.stock_100k_s       material removal of 100,000 moves (Boost.Geometry)
+//   backplot.live_tick_us       the live path's cost a simulated tick: a run on the simulated
+//                               machine with it (every tick sampled, a flush every 16 ticks)
+//                               against the same run without, over the ticks sampled
+//   backplot.live_frame_p95_ms  one UI frame of the live path at ×100 (1600 ticks): flush,
+//                               append to the scene's buffers, the tool (95th percentile)
 // Needs an X server (Debian's VTK): without DISPLAY it runs itself under xvfb-run.
 #include "backplot/backplot_scene.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
 #include "report.h"
+#include "machine/run.h"
+#include "machine/simulation.h"
 #include "stock/stock.h"
+#include "toolpath/actual_path.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -165,5 +173,106 @@ int main(int argc, char** argv) {
     std::printf("# stock: %zu moves, area %.3f mm2 left, %zu polygons\n", moves, blank.areaMm2(),
                 blank.polygons());
     report.figure("backplot.stock_100k_s", stockS, "s", 2.0, bench::Better::Lower);
+
+    // 6. The live path: the same run with and without it (best of 3 each, alternating).
+    {
+        const program::ParseResult lp =
+            program::parse("%L1\nN1 R1=4\nN2 G1 X40 FX2000 Z-30 FZ1000\nN3 G1 X20 FX2000\n"
+                           "N4 G1 Z-60 FZ500\nN5 G0 X80\nN6 G0 Z0\nN7 R1=R1-1\nN8 IF R1>0 GOTO 2\nM30\n");
+        if (lp.hasErrors())
+            return 2;
+        engine::RunOptions ro;
+        double plain = 1e9, live = 1e9, frameP95 = 0;
+        std::vector<double> frameTimes;
+        std::size_t kept = 0, raw = 0;
+        for (int round = 0; round < 3; ++round) {
+            {
+                machine::Simulation sim(prof);
+                machine::SimulationRunMachine m(sim);
+                const double t = bench::nowSeconds();
+                engine::runProgram(m, lp.store, 1, ro);
+                plain = std::min(plain, bench::nowSeconds() - t);
+            }
+            {
+                machine::Simulation sim(prof);
+                toolpath::LiveActualPath path(1.0);
+                path.attach(sim);
+                struct Frames final : engine::RunMachine {
+                    machine::SimulationRunMachine m;
+                    toolpath::LiveActualPath& p;
+                    int ticks = 0;
+                    Frames(machine::Simulation& s, toolpath::LiveActualPath& l) : m(s), p(l) {}
+                    engine::Controller& controller() override { return m.controller(); }
+                    void tick() override {
+                        m.tick();
+                        if (++ticks % 16 == 0)
+                            p.flush();
+                    }
+                    bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+                    void setOverrideCode(int c) override { m.setOverrideCode(c); }
+                    void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+                    void pressStart() override { m.pressStart(); }
+                    bool startHeld() const override { return m.startHeld(); }
+                    std::vector<int> mFunctions() const override { return m.mFunctions(); }
+                } frames(sim, path);
+                const double t = bench::nowSeconds();
+                engine::runProgram(frames, lp.store, 1, ro);
+                path.flush();
+                live = std::min(live, bench::nowSeconds() - t);
+                kept = path.path().samples.size();
+                raw = path.path().rawSamples;
+            }
+        }
+        // One UI frame at ×100: 1600 ticks sampled, then flushed and appended to the scene.
+        {
+            machine::Simulation sim(prof);
+            toolpath::LiveActualPath path(1.0);
+            path.attach(sim);
+            machine::SimulationRunMachine m(sim);
+            struct Frame final : engine::RunMachine {
+                machine::SimulationRunMachine& m;
+                toolpath::LiveActualPath& p;
+                backplot::BackplotScene& scene;
+                std::vector<double>& times;
+                int ticks = 0;
+                Frame(machine::SimulationRunMachine& mm, toolpath::LiveActualPath& l,
+                      backplot::BackplotScene& s, std::vector<double>& t)
+                    : m(mm), p(l), scene(s), times(t) {}
+                engine::Controller& controller() override { return m.controller(); }
+                void tick() override {
+                    m.tick();
+                    if (++ticks % 1600 == 0) {
+                        const double t = bench::nowSeconds();
+                        const toolpath::LiveActualPath::Batch b = p.flush();
+                        scene.appendActual(&p.path(), b.restarted ? 0 : b.firstNew);
+                        scene.refreshTool(1280, 800);
+                        if (b.raw > 0 && !b.restarted) // the first builds the buffers
+                            times.push_back(bench::nowSeconds() - t);
+                    }
+                }
+                bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+                void setOverrideCode(int c) override { m.setOverrideCode(c); }
+                void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+                void pressStart() override { m.pressStart(); }
+                bool startHeld() const override { return m.startHeld(); }
+                std::vector<int> mFunctions() const override { return m.mFunctions(); }
+            };
+            backplot::BackplotScene liveScene;
+            liveScene.setPath(toolpath::programmedPath(prof, lp.store, 1));
+            Frame frame(m, path, liveScene, frameTimes);
+            engine::runProgram(frame, lp.store, 1, ro);
+            std::sort(frameTimes.begin(), frameTimes.end());
+            if (!frameTimes.empty())
+                frameP95 = frameTimes[frameTimes.size() * 95 / 100];
+        }
+        std::printf("# live: %zu ticks sampled, %zu kept; run %.3f s plain, %.3f s live\n", raw, kept,
+                    plain, live);
+        // Per simulated tick: at ×1 the session runs 1000 ticks a second, at
+        // ×100 (its fastest) 100,000: 1 µs a tick is then 10 % of a core.
+        report.figure("backplot.live_tick_us", raw > 0 ? (live - plain) / static_cast<double>(raw) * 1e6 : 1e9,
+                      "us", 1.0, bench::Better::Lower);
+        std::printf("# live frames at x100: %zu, p95 %.3f ms\n", frameTimes.size(), frameP95 * 1000);
+        report.figure("backplot.live_frame_p95_ms", frameP95 * 1000, "ms", 4, bench::Better::Lower);
+    }
     return report.exitCode();
 }

@@ -10,9 +10,12 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QComboBox>
+#include <QListWidget>
 #include <QTabWidget>
 
 #include "backplot/backplot_dock.h"
+#include "backplot/backplot_widget.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
@@ -124,7 +127,30 @@ void MainWindow::createDocks() {
     messagesDock_->raise();
     for (QDockWidget* d : {messagesDock_, axesDock_})
         d->setMaximumHeight(140);
-    backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
+    QDockWidget* backplotDock = backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
+    if (auto* bp = backplotDock->findChild<backplot::BackplotWidget*>()) {
+        // A picked segment: the editor goes to its line (else the Program tab
+        // to its frame); the editor's line highlights its segments.
+        connect(bp, &backplot::BackplotWidget::lineActivated, this, [this](int program, int line) {
+            if (programEditor_->showLine(program, line)) {
+                workArea_->setCurrentWidget(programEditor_);
+                return;
+            }
+            if (programMonitor_->shownProgram() != program) { // pin it (it follows the controller otherwise)
+                const int choice = programMonitor_->programChoice()->findData(program);
+                if (choice < 0)
+                    return;
+                programMonitor_->programChoice()->setCurrentIndex(choice);
+                programMonitor_->refresh();
+            }
+            if (const program::Program* p = session_->controller().programs().find(program))
+                for (std::size_t i = 0; i < p->frames.size(); ++i)
+                    if (p->frames[i].span.line == line)
+                        programMonitor_->frames()->setCurrentRow(static_cast<int>(i));
+            workArea_->setCurrentWidget(programMonitor_);
+        });
+        connect(programEditor_, &EditorTab::cursorLineChanged, bp, &backplot::BackplotWidget::selectLine);
+    }
     addScopeDock(this, *session_);
 
 }

@@ -626,6 +626,7 @@ void Interpreter::actions() {
         previewFrame_.program = program();
         previewFrame_.line = line_;
         previewFrame_.n = frameNumber();
+        previewFrame_.wheelDiameterDisc = c_.r.get(r::WheelCurrent);
         if (previewFrame_.kind != PreviewKind::Oscillation) {
             const bool wheel = wheel_[0] || wheel_[1];
             const bool signal = erase_[0] > 0 || erase_[1] > 0;

@@ -32,6 +32,9 @@ struct PreviewFrame {
     int program = 0, line = 0, n = 0;
     PreviewKind kind = PreviewKind::Feed;
     std::array<PreviewAxisMotion, 2> axes{};
+    // R207 ТЕК.ДИАМЕТР КРУГА when the frame starts: the grinding wheel's
+    // current diameter in X discretes (without the diameter axis' halving).
+    std::int64_t wheelDiameterDisc = 0;
 };
 
 struct PreviewDwell {

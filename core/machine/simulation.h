@@ -34,6 +34,7 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include <utility>
 
 namespace k528::machine {
 
@@ -186,6 +187,10 @@ public:
     bool runUntil(const std::function<bool()>& done, std::int64_t maxMs);
     // Called at the end of every tick (a trace recorder: machine/trace.h).
     void setAfterTick(std::function<void()> f) { afterTick_ = std::move(f); }
+    // More observers of every tick, beside that hook (the backplot's live
+    // path): called after it, in the order added. The id removes it.
+    int addTickObserver(std::function<void()> f);
+    void removeTickObserver(int id);
     std::int64_t timeMs() const { return ctl_->timeMs(); }
     std::int64_t tickMs() const { return ctl_->tickMs(); }
 
@@ -289,6 +294,8 @@ private:
     std::vector<FaultSpec> faults_;
     std::vector<std::string> warnings_;
     std::function<void()> afterTick_;
+    std::vector<std::pair<int, std::function<void()>>> tickObservers_;
+    int nextObserver_ = 1;
 };
 
 } // namespace k528::machine

@@ -7,7 +7,7 @@
 namespace k528::toolpath {
 
 namespace {
-constexpr char kMagic[] = "K528PATH1\n";
+constexpr char kMagic[] = "K528PATH2\n";
 
 template <class T> bool put(std::FILE* f, const T& v) {
     return std::fwrite(&v, sizeof v, 1, f) == 1;
@@ -37,7 +37,7 @@ bool writePath(std::FILE* out, const ProgrammedPath& p, const std::string& ucg) 
     ok = ok && put(out, status) && put(out, frames);
     ok = ok && putVec(out, p.segments) && putVec(out, p.points);
     std::vector<Dwell> dw = p.dwells;
-    ok = ok && putVec(out, dw);
+    ok = ok && putVec(out, dw) && putVec(out, p.wheel);
     std::vector<char> u(ucg.begin(), ucg.end());
     ok = ok && putVec(out, u);
     return ok && std::fflush(out) == 0;
@@ -57,7 +57,8 @@ bool readPath(std::FILE* in, ProgrammedPath& p, std::string& ucg, std::string& e
                     get(in, p.diameterX) && get(in, p.start) && get(in, p.end) &&
                     get(in, status) && get(in, frames) &&
                     getVec(in, p.segments, 200'000'000) && getVec(in, p.points, 1'000'000'000) &&
-                    getVec(in, p.dwells, 100'000'000) && getVec(in, u, 4096);
+                    getVec(in, p.dwells, 100'000'000) &&
+                    getVec(in, p.wheel, 100'000'000) && getVec(in, u, 4096);
     if (!ok || status < 0 || status > 2) {
         error = "the path stream is truncated or damaged";
         return false;

@@ -2,7 +2,7 @@
 // binary stream: `k528 plot` computes the path in the core and hands it to
 // the renderer process k528-plot (VTK, app/cli/plot/) through a pipe, so that
 // `k528` itself never loads VTK (its start stays fast).
-// Format: "K528PATH1\n", then little-endian fields in the order of the
+// Format: "K528PATH2\n", then little-endian fields in the order of the
 // structs (docs/backplot.md).
 #pragma once
 

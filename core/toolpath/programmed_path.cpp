@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace k528::toolpath {
 
@@ -177,6 +178,11 @@ public:
                                            path_.points.size() - s.firstPoint);
         pos_[0] = to[0];
         pos_[1] = to[1];
+        if (f.wheelDiameterDisc != wheelDisc_) { // R207 is in X discretes (real mm, not halved)
+            wheelDisc_ = f.wheelDiameterDisc;
+            path_.wheel.push_back({static_cast<std::uint32_t>(path_.segments.size()),
+                                   units::discToMm(wheelDisc_, scale_[0])});
+        }
         path_.segments.push_back(s);
     }
 
@@ -193,9 +199,16 @@ private:
     bool check_[2] = {};
     double pos_[2] = {0, 0};
     double offset_[2] = {0, 0};
+    std::int64_t wheelDisc_ = 0;
 };
 
 } // namespace
+
+double ProgrammedPath::wheelDiameterAt(std::size_t i) const {
+    const auto it = std::upper_bound(wheel.begin(), wheel.end(), i,
+                                     [](std::size_t k, const WheelChange& c) { return k < c.segment; });
+    return it == wheel.begin() ? 0.0 : std::prev(it)->diameterMm;
+}
 
 ProgrammedPath programmedPath(const profile::MachineProfile& profile,
                               const program::ProgramStore& programs, int number,

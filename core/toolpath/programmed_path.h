@@ -51,6 +51,14 @@ struct Dwell {
     double seconds = 0;
 };
 
+// R207 (ТЕК.ДИАМЕТР КРУГА, the grinding wheel's current diameter) from
+// segment `segment` on; recorded where it changes (dressing lowers it), the
+// first entry at segment 0. Empty when R207 stays 0 (no wheel: a lathe).
+struct WheelChange {
+    std::uint32_t segment = 0;
+    double diameterMm = 0;
+};
+
 struct AxisLimits {
     bool present = false;
     bool on = false;          // ВКЛ.ПРГ.КОН
@@ -63,6 +71,7 @@ struct ProgrammedPath {
     std::vector<Segment> segments;
     std::vector<PointMm> points;
     std::vector<Dwell> dwells;
+    std::vector<WheelChange> wheel;
     AxisLimits limitX, limitZ;
     bool diameterX = false;
     PointMm start, end;
@@ -70,6 +79,8 @@ struct ProgrammedPath {
 
     std::size_t size() const { return segments.size(); }
     const PointMm* pointsOf(const Segment& s) const { return points.data() + s.firstPoint; }
+    // The wheel's diameter (mm) during segment i, 0 if none.
+    double wheelDiameterAt(std::size_t i) const;
 };
 
 struct PathOptions {

@@ -12,6 +12,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
+#include <vtkRenderer.h>
+
 #include <cmath>
 
 using namespace k528;
@@ -49,6 +53,22 @@ bool around(const Image& img, double x, double y, Rgb c, int r = 2) {
                 return true;
         }
     return false;
+}
+
+// A lit surface of colour c: the pixel is c scaled by one factor (ambient + diffuse).
+bool litAs(Rgb px, Rgb c) {
+    const double k = px.r / c.r;
+    return k > 0.3 && std::fabs(px.g - k * c.g) < 0.06 && std::fabs(px.b - k * c.b) < 0.06;
+}
+
+// World point -> pixel (origin bottom-left) through the scene's camera.
+std::pair<double, double> project(const backplot::BackplotScene& scene, double x, double y, double z) {
+    vtkCamera* cam = scene.renderer()->GetActiveCamera();
+    vtkMatrix4x4* m = cam->GetCompositeProjectionTransformMatrix(double(kW) / kH, -1, 1);
+    const double in[4] = {x, y, z, 1};
+    double out[4];
+    m->MultiplyPoint(in, out);
+    return {(out[0] / out[3] + 1) / 2 * kW, (out[1] / out[3] + 1) / 2 * kH};
 }
 
 } // namespace
@@ -128,6 +148,98 @@ private slots:
         QCOMPARE(out.read(8), QByteArray("\x89PNG\r\n\x1a\n", 8));
         const CliResult bad = runK528({"plot", "--size", "3x2", "--out", png, f.fileName()});
         QCOMPARE(bad.exitCode, 2);
+    }
+    void wheelIsACylinderOfR207() {
+        // grinder-205: X on the diameter, R207 = 18.5 mm; the program dresses it to 12 mm.
+        profile::MachineProfile prof = profile::builtin("grinder-205");
+        const toolpath::ProgrammedPath path = pathOf(
+            "%L1\nN1 G0 X40 Z150\nN2 G1 X30 FX100\nN3 R207=12000\nN4 G1 X20 FX100\n", prof);
+        QCOMPARE(path.segments.size(), std::size_t(3));
+        QCOMPARE(path.wheel.size(), std::size_t(2));
+        QCOMPARE(path.wheel[0].segment, 0u);
+        QCOMPARE(path.wheel[0].diameterMm, 18.5);
+        QCOMPARE(path.wheel[1].segment, 2u); // N4: after the dressing
+        QCOMPARE(path.wheel[1].diameterMm, 12.0);
+        backplot::BackplotScene scene;
+        scene.setPath(path);
+        Image img;
+        std::string error;
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        // XZ: the wheel at the end (X20 Z150): Z 150..160, X 20 - 2·12 .. 20 (a diameter axis).
+        const backplot::BackplotScene::WheelBox box = scene.wheelBox();
+        QVERIFY(box.shown);
+        QCOMPARE(box.diameterMm, 12.0);
+        QCOMPARE(box.z0, 150.0);
+        QCOMPARE(box.z1, 160.0);
+        QCOMPARE(box.x0, -4.0);
+        QCOMPARE(box.x1, 20.0);
+        const backplot::ViewWindow w = scene.window(kW, kH);
+        const auto px = [&](double z) { return (z - w.x0) / w.worldPerPixel; };
+        const auto py = [&](double x) { return (x - w.y0) / w.worldPerPixel; };
+        QVERIFY(around(img, px(155), py(-4), backplot::kWheelColour));  // the edge towards the axis
+        QVERIFY(around(img, px(160), py(2), backplot::kWheelColour));   // the +Z face
+        QVERIFY(around(img, px(157), py(20), backplot::kWheelColour));  // the working edge
+        QVERIFY(around(img, px(157), py(8), backplot::kWheelColour));   // its axis
+        QVERIFY(!around(img, px(157), py(14), backplot::kWheelColour, 3)); // inside: not filled
+        QVERIFY(!around(img, px(157), py(-9), backplot::kWheelColour, 3)); // beyond its diameter
+        // Before the dressing (the end of N2, X30) the wheel is 18.5 mm.
+        scene.setPlayhead(scene.segmentStart(1) + path.segments[1].durationS);
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        QCOMPARE(scene.wheelBox().diameterMm, 18.5);
+        QCOMPARE(scene.wheelBox().x1, 30.0);
+        QCOMPARE(scene.wheelBox().x0, 30.0 - 37.0);
+        const backplot::ViewWindow w2 = scene.window(kW, kH);
+        QVERIFY(around(img, (155 - w2.x0) / w2.worldPerPixel, (-7 - w2.y0) / w2.worldPerPixel,
+                       backplot::kWheelColour));
+        // 3D at the end: a lit cylinder of radius 6 about the axis at radius 10 - 6 = 4.
+        scene.setPlayhead(-1);
+        scene.setViewMode(backplot::ViewMode::Solid3D);
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        QVERIFY(scene.wheelBox().shown);
+        const auto front = project(scene, 155, 4, 6); // the point nearest the camera's side
+        QVERIFY2(litAs(img.at(int(front.first), int(front.second)), backplot::kWheelColour),
+                 qPrintable(QString("%1 %2 %3").arg(img.at(int(front.first), int(front.second)).r)
+                                .arg(img.at(int(front.first), int(front.second)).g)
+                                .arg(img.at(int(front.first), int(front.second)).b)));
+        const auto above = project(scene, 155, 4 + 6 + 3, 0);
+        QVERIFY(!litAs(img.at(int(above.first), int(above.second)), backplot::kWheelColour));
+        // A lathe (R207 = 0) has no wheel.
+        backplot::BackplotScene lathe;
+        lathe.setPath(pathOf("%L1\nN1 G0 X200\nN2 G1 Z-100 FZ500\n", profile::builtin("training-lathe")));
+        QVERIFY(lathe.path().wheel.empty());
+        QVERIFY2(backplot::renderOffscreen(lathe, kW, kH, "", &img.rgb, error), error.c_str());
+        QVERIFY(!lathe.wheelBox().shown);
+    }
+    void oscillationStrokes() {
+        profile::MachineProfile prof = profile::builtin("grinder-205");
+        const toolpath::ProgrammedPath path =
+            pathOf("%L1\nN1 G0 X40 Z150\nN2 G281 Z-8 FZ2000\nN3 G1 X30 FX100\nN4 G280\n", prof);
+        QCOMPARE(path.segments[1].kind, toolpath::SegmentKind::Oscillation);
+        backplot::BackplotScene scene;
+        scene.setPath(path);
+        Image img;
+        std::string error;
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        const backplot::ViewWindow w = scene.window(kW, kH);
+        const auto px = [&](double z) { return (z - w.x0) / w.worldPerPixel; };
+        const auto py = [&](double x) { return (x - w.y0) / w.worldPerPixel; };
+        // The stroke along Z at X40 from Z150 to the far reverse point Z142, in its colour.
+        QVERIFY(around(img, px(146), py(40), backplot::kOscillationColour));
+        QVERIFY(!around(img, px(146), py(40), backplot::kFeedColour, 0));
+        // A tick across each reverse point, none between them.
+        QVERIFY(around(img, px(142), py(40) + 4, backplot::kOscillationColour, 1));
+        QVERIFY(!around(img, px(146), py(40) + 4, backplot::kOscillationColour, 1));
+        // 3D: the wheel's swept band over the stroke, translucent, from Z142 (beside the wheel at Z150..160).
+        scene.setViewMode(backplot::ViewMode::Solid3D);
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        const double rc = 20 - 18.5 / 2; // the edge at radius 20, the wheel inside
+        const auto band = project(scene, 145, rc, 18.5 / 2);
+        const Rgb b = img.at(int(band.first), int(band.second));
+        QVERIFY2(b.g > backplot::kBackground.g + 0.08 && b.b > backplot::kBackground.b + 0.08 &&
+                     b.r < b.g,
+                 qPrintable(QString("%1 %2 %3").arg(b.r).arg(b.g).arg(b.b)));
+        const auto outside = project(scene, 135, rc, 18.5 / 2); // before the stroke's far point
+        QVERIFY(near(img.at(int(outside.first), int(outside.second)), backplot::kBackground));
     }
     void levelOfDetailKeepsCornersAndBoundsTheSize() {
         // 20,000 zig-zag passes: the full view collapses them, a zoom shows every corner.

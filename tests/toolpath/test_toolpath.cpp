@@ -3,6 +3,8 @@
 #include "cli_runner.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "machine/run.h"
+#include "machine/simulation.h"
 #include "toolpath/actual_path.h"
 #include "toolpath/programmed_path.h"
 
@@ -12,6 +14,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace k528;
@@ -185,6 +188,70 @@ private slots:
         // The programmed path of the same program.
         const toolpath::ProgrammedPath p = toolpath::programmedPath(prof, parsed.store, 1);
         QCOMPARE(p.segments.size(), std::size_t(2));
+    }
+    void livePathGrowsWithTheRun() {
+        // The session's way: every tick observed, a flush every 16 ticks (a UI
+        // frame at 60 Hz): the path grows batch by batch and ends as the
+        // offline actual path of the same run, sample for sample.
+        const profile::MachineProfile prof = profile::builtin("training-lathe");
+        const program::ParseResult parsed =
+            program::parse("%L1\nN1 G1 X40 FX2000 Z-30 FZ1000\nN2 G1 X20 FX2000\n");
+        QVERIFY(!parsed.hasErrors());
+        engine::RunOptions ro;
+        const toolpath::ActualPath offline = toolpath::actualPath(prof, parsed.store, 1, ro, 1.0);
+        machine::Simulation sim(prof);
+        toolpath::LiveActualPath live(1.0);
+        live.attach(sim);
+        struct Frames final : engine::RunMachine {
+            engine::RunMachine& m;
+            toolpath::LiveActualPath& live;
+            std::vector<std::size_t> sizes;
+            int ticks = 0, restarts = 0;
+            Frames(engine::RunMachine& inner, toolpath::LiveActualPath& l) : m(inner), live(l) {}
+            engine::Controller& controller() override { return m.controller(); }
+            void tick() override {
+                m.tick();
+                if (++ticks % 16 == 0)
+                    flush();
+            }
+            void flush() {
+                const toolpath::LiveActualPath::Batch b = live.flush();
+                restarts += b.restarted;
+                if (b.raw > 0)
+                    sizes.push_back(live.path().samples.size());
+                QCOMPARE(b.firstNew + b.added, live.path().samples.size());
+            }
+            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+            void setOverrideCode(int c) override { m.setOverrideCode(c); }
+            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+            void pressStart() override { m.pressStart(); }
+            bool startHeld() const override { return m.startHeld(); }
+            std::vector<int> mFunctions() const override { return m.mFunctions(); }
+        };
+        machine::SimulationRunMachine inner(sim);
+        Frames frames(inner, live);
+        const engine::RunResult r = engine::runProgram(frames, parsed.store, 1, ro);
+        QCOMPARE(r.status, engine::RunStatus::Completed);
+        frames.flush();
+        QVERIFY(!live.running());
+        QCOMPARE(live.program(), 1);
+        QCOMPARE(frames.restarts, 1);
+        QVERIFY(frames.sizes.size() > 20); // it grew over many frames
+        QVERIFY(std::is_sorted(frames.sizes.begin(), frames.sizes.end()));
+        QVERIFY(frames.sizes.front() < frames.sizes.back() / 4);
+        const toolpath::ActualPath& a = live.path();
+        QCOMPARE(a.rawSamples, offline.rawSamples);
+        QCOMPARE(a.samples.size(), offline.samples.size());
+        for (std::size_t i = 0; i < a.samples.size(); ++i) {
+            QCOMPARE(a.samples[i].tMs, offline.samples[i].tMs);
+            QCOMPARE(a.samples[i].x, offline.samples[i].x);
+            QCOMPARE(a.samples[i].z, offline.samples[i].z);
+            QCOMPARE(a.samples[i].errX, offline.samples[i].errX);
+        }
+        QCOMPARE(a.maxErrorUm, offline.maxErrorUm);
+        live.detach();
+        sim.advance(50); // no observer left
+        QCOMPARE(live.flush().raw, std::size_t(0));
     }
 };
 

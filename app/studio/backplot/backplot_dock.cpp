@@ -1,8 +1,11 @@
 #include "backplot/backplot_dock.h"
 
 #include "backplot/backplot_widget.h"
+#include "engine/rparams.h"
 #include "session/simulation_session.h"
+#include "toolpath/actual_path.h"
 
+#include <QCheckBox>
 #include <QDockWidget>
 #include <QEvent>
 #include <QGuiApplication>
@@ -38,10 +41,14 @@ public:
         ucg_ = new QLineEdit(box);
         ucg_->setObjectName("backplot.ucg");
         ucg_->setText(QStringLiteral("UCG,2,Z-100Z0,X50X0,S0S0,0,-5"));
+        follow_ = new QCheckBox(box);
+        follow_->setObjectName("backplot.followMachine");
+        follow_->setChecked(true);
         row->addWidget(programLabel_);
         row->addWidget(program_);
         row->addWidget(pathButton_);
         row->addWidget(runButton_);
+        row->addWidget(follow_);
         row->addWidget(ucgLabel_);
         row->addWidget(ucg_, 1);
         view_ = new BackplotWidget(box);
@@ -55,6 +62,11 @@ public:
             view_->showActualRun(session_.simulation().profile(), session_.controller().programs(),
                                  program_->value());
         });
+        // The path of a run on the session's machine grows live: every tick
+        // is sampled (a copy), each UI frame (advanced()) draws the batch.
+        live_.attach(session_.simulation());
+        connect(&session_, &QObject::destroyed, this, [this] { live_.abandon(); });
+        connect(&session_, &SimulationSession::advanced, this, [this] { liveFrame(); });
         retranslate();
         const program::ProgramStore& store = session_.controller().programs();
         if (!store.programs().empty()) {
@@ -71,10 +83,39 @@ protected:
     }
 
 private:
+    void liveFrame() {
+        const toolpath::LiveActualPath::Batch b = live_.flush();
+        if (!follow_->isChecked() || (b.raw == 0 && !b.restarted && !liveShown_))
+            return;
+        if (b.restarted) {
+            // The running program's programmed path under it (АВТОМАТ's choice, R252).
+            const program::ProgramStore& store = session_.controller().programs();
+            int number = session_.controller().r(engine::r::SelectedProgram);
+            if (!store.contains(number))
+                number = live_.program();
+            if (store.contains(number) && (number != view_->scene().path().program ||
+                                           session_.controller().programsRevision() != pathRevision_)) {
+                program_->setValue(number);
+                computePath();
+            }
+        }
+        std::optional<k528::backplot::BackplotScene::LiveTool> tool;
+        const toolpath::ActualPath& path = live_.path();
+        if (live_.running() && !path.samples.empty()) {
+            const toolpath::ActualSample& s = path.samples.back();
+            const engine::Controller& c = session_.controller();
+            const units::AxisScale sx = c.axisView(engine::AxisId::X).scale;
+            tool = k528::backplot::BackplotScene::LiveTool{
+                s.z, s.x, units::discToMm(c.r(engine::r::WheelCurrent), sx)};
+        }
+        view_->appendLive(path, b.restarted ? 0 : b.firstNew, tool);
+        liveShown_ = live_.running();
+    }
     void computePath() {
         const program::ProgramStore& store = session_.controller().programs();
         if (!store.contains(program_->value()))
             return;
+        pathRevision_ = session_.controller().programsRevision();
         view_->showProgram(session_.simulation().profile(), store, program_->value(),
                            stock::parseUcg(ucg_->text().toStdString()));
     }
@@ -86,6 +127,8 @@ private:
         runButton_->setToolTip(tr("Run the program on the simulated machine and overlay the "
                                   "actual path, coloured by following error"));
         ucgLabel_->setText(tr("Blank (UCG)"));
+        follow_->setText(tr("Follow the machine"));
+        follow_->setToolTip(tr("While the session's machine runs a program, its path grows here live"));
     }
 
     SimulationSession& session_;
@@ -93,7 +136,11 @@ private:
     QSpinBox* program_ = nullptr;
     QPushButton *pathButton_ = nullptr, *runButton_ = nullptr;
     QLineEdit* ucg_ = nullptr;
+    QCheckBox* follow_ = nullptr;
     BackplotWidget* view_ = nullptr;
+    toolpath::LiveActualPath live_;
+    bool liveShown_ = false;
+    std::uint64_t pathRevision_ = ~std::uint64_t{0}; // of the store the path was computed from
 };
 
 } // namespace

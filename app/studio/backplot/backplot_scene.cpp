@@ -24,6 +24,10 @@
 #include <vtkTextProperty.h>
 #include <vtkAxisActor2D.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkAppendPolyData.h>
+#include <vtkCylinderSource.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,6 +80,9 @@ struct Layer {
 struct BackplotScene::Vtk {
     vtkNew<vtkRenderer> renderer;
     Layer feed, rapid, outside, points, limit, tool, highlight, stock2d, stock3d, stockFill, actual;
+    Layer osc, oscTicks, wheel2d, wheel3d, oscSweep;
+    vtkNew<vtkCylinderSource> cylinder;
+    std::size_t sweepLimit = ~std::size_t{0};
     vtkNew<vtkLookupTable> lut;
     vtkNew<vtkScalarBarActor> bar;
     vtkNew<vtkLegendScaleActor> legend;
@@ -104,7 +111,22 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->feed.init(r, kFeedColour, 2);
     v_->rapid.init(r, kRapidColour, 2);
     v_->outside.init(r, kOutsideColour, 3);
+    v_->osc.init(r, kOscillationColour, 2);
+    v_->oscTicks.init(r, kOscillationColour, 1);
     v_->points.init(r, kPointColour, 1);
+    v_->wheel2d.init(r, kWheelColour, 2);
+    v_->wheel3d.init(r, kWheelColour, 1);
+    v_->wheel3d.actor->GetProperty()->SetLighting(true);
+    v_->wheel3d.actor->GetProperty()->SetAmbient(0.35);
+    v_->wheel3d.actor->GetProperty()->SetDiffuse(0.75);
+    v_->cylinder->SetResolution(48);
+    v_->cylinder->CappingOn();
+    v_->wheel3d.mapper->SetInputConnection(v_->cylinder->GetOutputPort());
+    v_->wheel3d.actor->SetOrientation(0, 0, 90); // the cylinder's axis (y) along world x = Z
+    v_->wheel3d.actor->VisibilityOff();
+    v_->oscSweep.init(r, kOscillationColour, 1);
+    v_->oscSweep.actor->GetProperty()->SetOpacity(0.3);
+    v_->oscSweep.actor->VisibilityOff();
     v_->highlight.init(r, {1, 1, 1}, 4);
     v_->tool.init(r, kToolColour, 2);
     v_->lut->SetHueRange(0.66, 0.0); // blue (0 µm) .. red (largest)
@@ -177,38 +199,74 @@ void BackplotScene::setPath(toolpath::ProgrammedPath&& path) {
     for (std::size_t i = 0; i < path_.segments.size(); ++i)
         cumulative_[i] = t += path_.segments[i].durationS;
     playhead_ = -1;
+    v_->sweepLimit = ~std::size_t{0};
     buildStatic();
     buildStock();
 }
 
 void BackplotScene::setActual(const toolpath::ActualPath* a) {
     actual_ = a;
+    v_->actual.data->Initialize();
     if (!a || a->samples.size() < 2) {
-        v_->actual.data->Initialize();
         v_->bar->VisibilityOff();
         return;
     }
     vtkNew<vtkPoints> pts;
     vtkNew<vtkFloatArray> err;
     err->SetName("following_error_um");
-    vtkNew<vtkCellArray> line;
-    line->InsertNextCell(static_cast<vtkIdType>(a->samples.size()));
-    double maxUm = 0;
-    for (std::size_t i = 0; i < a->samples.size(); ++i) {
-        const toolpath::ActualSample& s = a->samples[i];
-        pts->InsertNextPoint(s.z, s.x, 0.2);
-        const double um = std::hypot(s.errX, s.errZ) * 1000.0;
-        maxUm = std::max(maxUm, um);
-        err->InsertNextValue(static_cast<float>(um));
-        line->InsertCellPoint(static_cast<vtkIdType>(i));
-    }
-    v_->actual.data->Initialize();
+    vtkNew<vtkCellArray> lines;
     v_->actual.data->SetPoints(pts);
-    v_->actual.data->SetLines(line);
+    v_->actual.data->SetLines(lines);
     v_->actual.data->GetPointData()->SetScalars(err);
-    v_->lut->SetTableRange(0, std::max(maxUm, 1.0));
+    appendActual(a, 0);
+}
+
+void BackplotScene::appendActual(const toolpath::ActualPath* a, std::size_t from) {
+    if (a != actual_ || v_->actual.data->GetPoints() == nullptr) {
+        setActual(a); // (re)builds the buffers: it appends from 0
+        return;
+    }
+    if (!a)
+        return;
+    vtkPoints* pts = v_->actual.data->GetPoints();
+    auto* err = vtkFloatArray::SafeDownCast(v_->actual.data->GetPointData()->GetScalars());
+    vtkCellArray* lines = v_->actual.data->GetLines();
+    // Resume where the buffers end (they hold samples [0, shown)).
+    const std::size_t shown = static_cast<std::size_t>(pts->GetNumberOfPoints());
+    from = std::min(from, shown);
+    if (from < shown) { // rewritten samples: rebuild
+        pts->SetNumberOfPoints(static_cast<vtkIdType>(from));
+        err->SetNumberOfTuples(static_cast<vtkIdType>(from));
+        lines->Reset();
+        for (std::size_t i = 1; i < from; ++i) {
+            const vtkIdType ids[2] = {static_cast<vtkIdType>(i - 1), static_cast<vtkIdType>(i)};
+            lines->InsertNextCell(2, ids);
+        }
+    }
+    for (std::size_t i = from; i < a->samples.size(); ++i) {
+        const toolpath::ActualSample& s = a->samples[i];
+        const vtkIdType id = pts->InsertNextPoint(s.z, s.x, 0.2);
+        err->InsertNextValue(static_cast<float>(std::hypot(s.errX, s.errZ) * 1000.0));
+        if (id > 0) {
+            const vtkIdType ids[2] = {id - 1, id};
+            lines->InsertNextCell(2, ids);
+        }
+    }
+    pts->Modified();
+    err->Modified();
+    lines->Modified();
+    v_->actual.data->Modified();
+    double maxUm = 1.0;
+    if (err->GetNumberOfTuples() > 0)
+        maxUm = std::max(maxUm, static_cast<double>(err->GetRange()[1]));
+    v_->lut->SetTableRange(0, maxUm);
     v_->lut->Build();
-    v_->bar->SetVisibility(mode_ == ViewMode::XZ);
+    v_->bar->SetVisibility(mode_ == ViewMode::XZ && pts->GetNumberOfPoints() >= 2);
+}
+
+std::size_t BackplotScene::actualPointsShown() const {
+    vtkPoints* p = v_->actual.data->GetPoints();
+    return p ? static_cast<std::size_t>(p->GetNumberOfPoints()) : 0;
 }
 
 void BackplotScene::setStock(const std::optional<stock::Blank>& blank) {
@@ -316,12 +374,16 @@ void BackplotScene::setViewMode(ViewMode m) {
     v_->stock2d.actor->SetVisibility(!solid);
     v_->stockFill.actor->SetVisibility(!solid);
     v_->limit.actor->SetVisibility(!solid);
+    v_->wheel2d.actor->SetVisibility(!solid);
+    v_->oscTicks.actor->SetVisibility(!solid);
+    v_->wheel3d.actor->SetVisibility(solid && wheelBox_.shown);
+    v_->oscSweep.actor->SetVisibility(solid);
     v_->legend->SetVisibility(!solid);
     v_->bar->SetVisibility(!solid && actual_ != nullptr);
     // In 3D the path is drawn at its radius (the body is revolved in radius).
     const double ys = solid && path_.diameterX ? 0.5 : 1.0;
     for (Layer* l : {&v_->feed, &v_->rapid, &v_->outside, &v_->points, &v_->tool, &v_->highlight,
-                     &v_->actual})
+                     &v_->actual, &v_->osc})
         l->actor->SetScale(1, ys, 1);
     vtkCamera* cam = v_->renderer->GetActiveCamera();
     cam->SetParallelProjection(!solid);
@@ -361,6 +423,13 @@ void BackplotScene::fit(int w, int h) {
     if (blank_) {
         grow(std::min(0.0, blank_->outerLengthMm), 0);
         grow(std::max(0.0, blank_->outerLengthMm), blank_->outerDiameterMm * (path_.diameterX ? 1 : 0.5));
+    }
+    if (!path_.wheel.empty()) { // the wheel where the path ends (its largest diameter)
+        double d = 0;
+        for (const toolpath::WheelChange& c : path_.wheel)
+            d = std::max(d, c.diameterMm);
+        const double shown = path_.diameterX ? 2.0 : 1.0;
+        grow(path_.end.z + wheelGeom_.widthMm, path_.end.x + (wheelGeom_.inside ? -d : d) * shown);
     }
     vtkCamera* cam = v_->renderer->GetActiveCamera();
     const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
@@ -413,10 +482,41 @@ void BackplotScene::refresh(int w, int h) {
         dia.insert(dia.end(), {x - d, y, x, y + d, x, y + d, x + d, y, x + d, y, x, y - d, x, y - d, x - d, y});
     }
     v_->points.lines(dia, 0.05);
-    // The tool: where the playhead is (the end when all is shown), a cross of 8 px.
+    // Oscillation strokes: the stroke and a tick of 6 px at each reverse point.
+    v_->osc.lines(lod.oscillation, 0.02);
+    std::vector<float> ticks;
+    const float tk = static_cast<float>(6 * vw.worldPerPixel);
+    for (std::size_t i = 0; i + 3 < lod.oscillation.size() && ticks.size() < 400000; i += 4)
+        for (int e = 0; e < 2; ++e) {
+            const float x = lod.oscillation[i + 2 * e], y = lod.oscillation[i + 2 * e + 1];
+            ticks.insert(ticks.end(), {x, y - tk, x, y + tk});
+        }
+    v_->oscTicks.lines(ticks, 0.02);
+    buildOscillation3d(limit);
+    refreshTool(w, h);
+    // The selected line's segments.
+    std::vector<float> hl;
+    if (hlLine_ > 0)
+        for (const toolpath::Segment& s : path_.segments) {
+            if (s.line != hlLine_ || s.program != hlProgram_)
+                continue;
+            const toolpath::PointMm* p = path_.pointsOf(s);
+            for (int i = 1; i < s.pointCount && hl.size() < 400000; ++i)
+                hl.insert(hl.end(), {static_cast<float>(p[i - 1].z), static_cast<float>(p[i - 1].x),
+                                     static_cast<float>(p[i].z), static_cast<float>(p[i].x)});
+        }
+    v_->highlight.lines(hl, 0.25);
+}
+
+void BackplotScene::refreshTool(int w, int h) {
+    const ViewWindow vw = window(w, h);
+    // The tool: live, or where the playhead is (the end when all is shown), a cross of 8 px.
     double tx = path_.end.z, ty = path_.end.x;
-    if (playhead_ >= 0 && !path_.segments.empty()) {
-        const std::size_t k = segmentAt(playhead_);
+    std::size_t k = path_.segments.empty() ? 0 : path_.segments.size() - 1;
+    if (live_) {
+        tx = live_->z, ty = live_->x;
+    } else if (playhead_ >= 0 && !path_.segments.empty()) {
+        k = segmentAt(playhead_);
         const toolpath::Segment& s = path_.segments[k];
         const double t0 = segmentStart(k), dur = s.durationS;
         double f = dur > 0 ? std::clamp((playhead_ - t0) / dur, 0.0, 1.0) : 1.0;
@@ -441,18 +541,85 @@ void BackplotScene::refresh(int w, int h) {
     const float c = static_cast<float>(8 * vw.worldPerPixel);
     const float fx = static_cast<float>(tx), fy = static_cast<float>(ty);
     v_->tool.lines({fx - c, fy, fx + c, fy, fx, fy - c, fx, fy + c, fx, fy, fx + c, fy + c}, 0.3);
-    // The selected line's segments.
-    std::vector<float> hl;
-    if (hlLine_ > 0)
-        for (const toolpath::Segment& s : path_.segments) {
-            if (s.line != hlLine_ || s.program != hlProgram_)
-                continue;
-            const toolpath::PointMm* p = path_.pointsOf(s);
-            for (int i = 1; i < s.pointCount && hl.size() < 400000; ++i)
-                hl.insert(hl.end(), {static_cast<float>(p[i - 1].z), static_cast<float>(p[i - 1].x),
-                                     static_cast<float>(p[i].z), static_cast<float>(p[i].x)});
+    // The wheel there: its outline in XZ, a cylinder in 3D.
+    const double d = live_ ? live_->wheelMm : path_.wheelDiameterAt(k);
+    const double shown = path_.diameterX ? 2.0 : 1.0; // shown X per mm of radius
+    wheelBox_ = {};
+    if (d > 0) {
+        wheelBox_.shown = true;
+        wheelBox_.diameterMm = d;
+        wheelBox_.z0 = tx;
+        wheelBox_.z1 = tx + wheelGeom_.widthMm;
+        wheelBox_.x0 = wheelGeom_.inside ? ty - d * shown : ty;
+        wheelBox_.x1 = wheelGeom_.inside ? ty : ty + d * shown;
+        const float z0 = static_cast<float>(wheelBox_.z0), z1 = static_cast<float>(wheelBox_.z1);
+        const float x0 = static_cast<float>(wheelBox_.x0), x1 = static_cast<float>(wheelBox_.x1);
+        const float xc = static_cast<float>((wheelBox_.x0 + wheelBox_.x1) / 2);
+        // The outline and the wheel's axis (dash-dotted on a drawing; a line here).
+        v_->wheel2d.lines({z0, x0, z1, x0, z1, x0, z1, x1, z1, x1, z0, x1, z0, x1, z0, x0,
+                           z0 - static_cast<float>(4 * vw.worldPerPixel), xc,
+                           z1 + static_cast<float>(4 * vw.worldPerPixel), xc},
+                          0.35);
+        // 3D: at its radius (the body of revolution is in radius, world y).
+        const double rEdge = ty / shown;
+        const double rc = wheelGeom_.inside ? rEdge - d / 2 : rEdge + d / 2;
+        if (v_->cylinder->GetRadius() != d / 2 || v_->cylinder->GetHeight() != wheelGeom_.widthMm) {
+            v_->cylinder->SetRadius(d / 2);
+            v_->cylinder->SetHeight(wheelGeom_.widthMm);
         }
-    v_->highlight.lines(hl, 0.25);
+        v_->wheel3d.actor->SetPosition(tx + wheelGeom_.widthMm / 2, rc, 0);
+    } else {
+        v_->wheel2d.lines({}, 0.35);
+    }
+    v_->wheel3d.actor->SetVisibility(mode_ == ViewMode::Solid3D && wheelBox_.shown);
+}
+
+void BackplotScene::buildOscillation3d(std::size_t limit) {
+    if (limit == v_->sweepLimit)
+        return;
+    v_->sweepLimit = limit;
+    // The wheel's swept band over each stroke (the latest 64 up to the
+    // playhead): a cylinder from the near to the far reverse point + width.
+    vtkNew<vtkAppendPolyData> all;
+    int count = 0;
+    const double shown = path_.diameterX ? 2.0 : 1.0;
+    for (std::size_t i = std::min(limit, path_.segments.size()); i-- > 0 && count < 64;) {
+        const toolpath::Segment& s = path_.segments[i];
+        if (s.kind != toolpath::SegmentKind::Oscillation)
+            continue;
+        const double d = path_.wheelDiameterAt(i);
+        if (d <= 0)
+            continue;
+        const toolpath::PointMm* p = path_.pointsOf(s);
+        double z0 = p[0].z, z1 = p[0].z, x = p[0].x;
+        for (int k = 1; k < s.pointCount; ++k)
+            z0 = std::min(z0, p[k].z), z1 = std::max(z1, p[k].z);
+        z1 += wheelGeom_.widthMm;
+        const double rEdge = x / shown;
+        const double rc = wheelGeom_.inside ? rEdge - d / 2 : rEdge + d / 2;
+        vtkNew<vtkCylinderSource> cyl;
+        cyl->SetResolution(48);
+        cyl->SetRadius(d / 2 * 1.002); // just outside the wheel itself
+        cyl->SetHeight(z1 - z0);
+        vtkNew<vtkTransform> t;
+        t->Translate((z0 + z1) / 2, rc, 0);
+        t->RotateZ(90);
+        vtkNew<vtkTransformPolyDataFilter> tf;
+        tf->SetInputConnection(cyl->GetOutputPort());
+        tf->SetTransform(t);
+        all->AddInputConnection(tf->GetOutputPort());
+        ++count;
+    }
+    if (count == 0) {
+        v_->oscSweep.data->Initialize();
+        return;
+    }
+    all->Update();
+    v_->oscSweep.data->DeepCopy(all->GetOutput());
+}
+
+void BackplotScene::setLiveTool(const std::optional<LiveTool>& t) {
+    live_ = t;
 }
 
 void BackplotScene::setPlayhead(double seconds) {

@@ -38,6 +38,20 @@ inline constexpr Rgb kLimitColour{0.30, 0.55, 1.00};
 inline constexpr Rgb kPointColour{0.90, 0.90, 0.90};
 inline constexpr Rgb kToolColour{1.00, 0.20, 1.00};
 inline constexpr Rgb kStockColour{0.45, 0.47, 0.52};
+inline constexpr Rgb kOscillationColour{0.20, 0.85, 0.95};
+inline constexpr Rgb kWheelColour{0.85, 0.78, 0.60};
+
+// The grinding wheel as the view draws it: a cylinder of R207's diameter
+// (ProgrammedPath::wheel; 0: no wheel) whose axis is parallel to Z. The
+// programmed point is the wheel's working edge at its −Z face (as the lathe
+// tool's cutting corner, stock.h): the wheel extends `widthMm` along +Z and,
+// on an internal grinder (`inside`, grinder-205: the edge grinds the bore),
+// its diameter towards the work's axis; outside: away from it. R-parameters
+// give no width: 10 mm is the view's default (a setting, not a measurement).
+struct WheelGeometry {
+    double widthMm = 10.0;
+    bool inside = true;
+};
 
 enum class ViewMode { XZ, Solid3D };
 
@@ -53,6 +67,25 @@ public:
     // hidden — they are rebuilt every frame and cost more than the path.
     void setInteracting(bool on);
     void setActual(const toolpath::ActualPath* actual); // null: none
+    // The same path grown since the last call: samples [from, size) are
+    // appended to the buffers (a different path or from 0: setActual).
+    void appendActual(const toolpath::ActualPath* actual, std::size_t from);
+    std::size_t actualPointsShown() const;
+    // The live tool (a run on the session's machine): the cross and the
+    // wheel there, instead of the playhead's; nullopt: the playhead's.
+    struct LiveTool {
+        double z = 0, x = 0;     // current coordinates, mm as shown
+        double wheelMm = 0;      // R207 now, 0 none
+    };
+    void setLiveTool(const std::optional<LiveTool>& t);
+    void setWheelGeometry(const WheelGeometry& g) { wheelGeom_ = g; }
+    const WheelGeometry& wheelGeometry() const { return wheelGeom_; }
+    // Where the wheel is drawn now (world Z0..Z1 × shown X0..X1), empty when none.
+    struct WheelBox {
+        bool shown = false;
+        double z0 = 0, z1 = 0, x0 = 0, x1 = 0, diameterMm = 0;
+    };
+    WheelBox wheelBox() const { return wheelBox_; }
     void setStock(const std::optional<stock::Blank>& blank); // cut by the path when shown
     const toolpath::ProgrammedPath& path() const { return path_; }
     const PathGeometry& geometry() const { return geom_; }
@@ -77,9 +110,13 @@ public:
     long pick(double displayX, double displayY, int widthPx, int heightPx) const;
     // Highlights the segments of one source line (0: none).
     void highlightLine(int program, int line);
+    int highlightedProgram() const { return hlProgram_; }
+    int highlightedLine() const { return hlLine_; }
 
     // World coordinates (Z, X) of the window's centre and the size of a pixel.
     ViewWindow window(int widthPx, int heightPx) const;
+    // Rebuilds only the tool and the wheel (cheap: every live frame).
+    void refreshTool(int widthPx, int heightPx);
 
 private:
     struct Vtk;
@@ -92,7 +129,11 @@ private:
     ViewMode mode_ = ViewMode::XZ;
     double playhead_ = -1;
     int hlProgram_ = 0, hlLine_ = 0;
+    WheelGeometry wheelGeom_;
+    WheelBox wheelBox_;
+    std::optional<LiveTool> live_;
     void buildStatic();
+    void buildOscillation3d(std::size_t limit);
     void buildStock();
 };
 

@@ -158,6 +158,10 @@ bool BackplotWidget::eventFilter(QObject* o, QEvent* e) {
         auto* m = static_cast<QMouseEvent*>(e);
         if (m->button() == Qt::LeftButton)
             pressPos_ = m->position().toPoint();
+    } else if (o == gl_ && e->type() == QEvent::MouseMove) {
+        auto* m = static_cast<QMouseEvent*>(e);
+        if (m->buttons() == Qt::NoButton)
+            hoverAt(m->position().toPoint().x(), m->position().toPoint().y());
     } else if (o == gl_ && e->type() == QEvent::MouseButtonRelease) {
         auto* m = static_cast<QMouseEvent*>(e);
         if (m->button() == Qt::LeftButton &&
@@ -299,6 +303,28 @@ void BackplotWidget::tickPlayback() {
         return;
     }
     setPlayhead(t);
+}
+
+void BackplotWidget::appendLive(const toolpath::ActualPath& path, std::size_t from,
+                                const std::optional<k528::backplot::BackplotScene::LiveTool>& tool) {
+    scene_->appendActual(&path, from);
+    scene_->setLiveTool(tool);
+    scene_->refreshTool(pw_, ph_);
+    gl_->update();
+}
+
+QString BackplotWidget::pickText() const {
+    return pickLabel_->text();
+}
+
+long BackplotWidget::hoverAt(int x, int y) {
+    const qreal dpr = devicePixelRatioF();
+    const long seg = scene_->pick(x * dpr, ph_ - y * dpr, pw_, ph_);
+    if (seg >= 0) {
+        const toolpath::Segment& s = scene_->path().segments[static_cast<std::size_t>(seg)];
+        pickLabel_->setText(tr("L%1 N%2, line %3").arg(s.program).arg(s.n).arg(s.line));
+    }
+    return seg;
 }
 
 long BackplotWidget::pickAt(int x, int y) {

@@ -41,6 +41,11 @@ public:
     void showActualRun(const profile::MachineProfile& profile, const program::ProgramStore& store,
                        int number);
     void showPath(toolpath::ProgrammedPath path);
+    // A run on the session's machine, once per UI frame: the actual path
+    // grown from sample `from` (a new path or 0: drawn anew) and the tool
+    // where the machine stands (nullopt: the run ended, the playhead's again).
+    void appendLive(const toolpath::ActualPath& path, std::size_t from,
+                    const std::optional<k528::backplot::BackplotScene::LiveTool>& tool);
 
     k528::backplot::BackplotScene& scene() { return *scene_; }
     VtkGlWidget* glWidget() const { return gl_; }
@@ -49,7 +54,11 @@ public:
     // Selects the segments of a source line (the editor's cursor).
     void selectLine(int program, int line);
     // Picks at widget pixel (x, y from the top-left); the segment or -1.
+    // A click: names it, highlights its line and emits lineActivated.
     long pickAt(int x, int y);
+    // The segment under the cursor (hover): names it only.
+    long hoverAt(int x, int y);
+    QString pickText() const;
     void changeEvent(QEvent* e) override;
     bool eventFilter(QObject* o, QEvent* e) override;
 

@@ -14,6 +14,7 @@ void PathGeometry::build(const toolpath::ProgrammedPath& path) {
         const toolpath::Segment& s = path.segments[i];
         const LineClass c = s.outside                                  ? LineClass::Outside
                             : s.kind == toolpath::SegmentKind::Rapid ? LineClass::Rapid
+                            : s.kind == toolpath::SegmentKind::Oscillation ? LineClass::Oscillation
                                                                        : LineClass::Feed;
         const toolpath::PointMm* p = path.pointsOf(s);
         for (int k = 1; k < s.pointCount; ++k) {
@@ -150,6 +151,7 @@ LodLines PathGeometry::simplify(const ViewWindow& w, std::size_t segmentLimit,
             continue;
         std::vector<float>& dst = cls_[i] == LineClass::Outside ? out.outside
                                   : cls_[i] == LineClass::Rapid ? out.rapid
+                                  : cls_[i] == LineClass::Oscillation ? out.oscillation
                                                                 : out.feed;
         if (clipped) {
             dst.insert(dst.end(), {static_cast<float>(ax), static_cast<float>(ay),

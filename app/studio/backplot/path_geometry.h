@@ -23,7 +23,7 @@
 
 namespace k528::backplot {
 
-enum class LineClass : std::uint8_t { Feed, Rapid, Outside };
+enum class LineClass : std::uint8_t { Feed, Rapid, Outside, Oscillation };
 
 struct ViewWindow {
     double x0 = 0, y0 = 0, x1 = 1, y1 = 1; // world (Z, X)
@@ -31,7 +31,7 @@ struct ViewWindow {
 };
 
 struct LodLines {
-    std::vector<float> feed, rapid, outside; // 4 floats a leg: x0 y0 x1 y1
+    std::vector<float> feed, rapid, outside, oscillation; // 4 floats a leg: x0 y0 x1 y1
     std::vector<float> points;               // programmed points (diamonds): x y
     std::size_t legsConsidered = 0;
 };

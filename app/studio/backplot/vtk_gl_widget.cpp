@@ -22,6 +22,11 @@ void VtkGlWidget::setDefaultSurfaceFormat() {
     f.setDepthBufferSize(24);
     f.setStencilBufferSize(8);
     f.setSamples(0);
+    // Not forward-compatible: Qt asks GLX for a forward-compatible context
+    // unless DeprecatedFunctions is set, and there glLineWidth(> 1) is an
+    // error (Mesa: GL_INVALID_VALUE) while VTK, seeing the hardware range
+    // (1..255 on llvmpipe), relies on it: every wide line came out 1 px.
+    f.setOption(QSurfaceFormat::DeprecatedFunctions);
     QSurfaceFormat::setDefaultFormat(f);
 }
 

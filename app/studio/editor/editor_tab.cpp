@@ -172,11 +172,34 @@ int EditorTab::addDocument(const QString& path, const QString& text) {
         }
     });
     connect(ed, &QsciScintilla::modificationChanged, this, &EditorTab::refreshTitles);
+    connect(ed, &QsciScintilla::cursorPositionChanged, this, [this, ed](int line, int) {
+        if (ed == currentEditor() && line != ed->property("k528.cursorLine").toInt() - 1) {
+            ed->setProperty("k528.cursorLine", line + 1);
+            emit cursorLineChanged(ed->programAtLine(line), line + 1);
+        }
+    });
     const int i = tabs_->addTab(ed, QString());
     tabs_->setCurrentIndex(i);
     refreshTitles();
     ed->validateNow();
     return i;
+}
+
+bool EditorTab::showLine(int program, int line) {
+    QList<int> order{tabs_->currentIndex()};
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (i != tabs_->currentIndex())
+            order.append(i);
+    for (int i : order) {
+        ProgramEditor* ed = editorAt(i);
+        if (!ed || line < 1 || line > ed->lines() || ed->programAtLine(line - 1) != program)
+            continue;
+        tabs_->setCurrentIndex(i);
+        ed->setCursorPosition(line - 1, 0);
+        ed->ensureLineVisible(line - 1);
+        return true;
+    }
+    return false;
 }
 
 void EditorTab::newFile() { addDocument(QString(), QStringLiteral("%L1\nM30\n")); }

@@ -64,10 +64,16 @@ public slots:
     // The master's text into the current editor: replaces the cursor's line
     // or inserts a line after it.
     void insertFromMaster(const QString& text, bool replaceLine);
+    // The backplot's pick: puts the cursor on 1-based `line` of the document
+    // (the current one first) that holds program `program` there; false if none.
+    bool showLine(int program, int line);
 
 signals:
     void problemCountChanged(int errors, int warnings);
     void statusMessage(const QString& text);
+    // The current editor's cursor moved to another line: the program there
+    // and the 1-based line (the backplot highlights its segments).
+    void cursorLineChanged(int program, int line);
 
 protected:
     void changeEvent(QEvent* e) override;

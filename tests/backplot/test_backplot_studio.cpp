@@ -1,0 +1,235 @@
+// The backplot dock in the studio's main window (needs X: our QOpenGLWidget
+// bridge): a picked segment names its frame and the editor goes to its
+// line, the editor's line highlights its segments; a run on the session's
+// machine grows the path live, frame by frame; and a screenshot of the
+// studio from the X server shows wide vertical lines clean (no hatched
+// fringe), as the same scene offscreen does.
+#include "backplot/backplot_widget.h"
+#include "backplot/vtk_gl_widget.h"
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "machine/run.h"
+#include "main_window.h"
+#include "program/parser.h"
+#include "session/simulation_session.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QOpenGLContext>
+#include <QPushButton>
+#include <QScreen>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <vtkGenericOpenGLRenderWindow.h>
+
+#include <cmath>
+
+using namespace k528;
+using studio::MainWindow;
+using studio::backplot::BackplotWidget;
+
+namespace {
+
+// A feed along X at Z-40 (vertical on the screen), a rapid back, a feed along Z.
+constexpr const char* kProgram = "%L1\n"
+                                 "N1 G1 X60 FX2000\n"
+                                 "N2 G1 Z-40 FZ2000\n"
+                                 "N3 G1 X20 FX2000\n"
+                                 "N4 G0 Z-60\n"
+                                 "N5 G1 Z-80 FZ2000\n"
+                                 "M30\n";
+
+struct Studio {
+    QTemporaryDir dir;
+    MainWindow w;
+    BackplotWidget* view = nullptr;
+    studio::EditorTab* editor = nullptr;
+    bool exposed = false;
+    explicit Studio(const char* text = kProgram) {
+        w.show();
+        exposed = QTest::qWaitForWindowExposed(&w);
+        view = w.findChild<BackplotWidget*>();
+        editor = w.findChild<studio::EditorTab*>();
+        if (auto* d = w.findChild<QDockWidget*>("dock.backplot")) {
+            d->setFloating(false);
+            w.resizeDocks({d}, {760}, Qt::Horizontal);
+        }
+        const QString path = dir.filePath("p.k528");
+        QFile f(path);
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        f.close();
+        editor->setCloseQuestion([](const QString&) { return studio::EditorTab::CloseChoice::Discard; });
+        editor->openFile(path);
+    }
+    // Loads the editor's file into the session's controller and shows L1's path.
+    bool showPath() {
+        if (!editor->sendToController())
+            return false;
+        w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+        w.findChild<QPushButton*>("backplot.computePath")->click();
+        QTest::qWait(100);
+        return !view->scene().path().segments.empty();
+    }
+    // Widget pixel (from the top-left) of world point (Z, X).
+    QPoint pixelOf(double z, double x) const {
+        auto* gl = view->glWidget();
+        const k528::backplot::ViewWindow vw = view->scene().window(gl->width(), gl->height());
+        return {static_cast<int>(std::lround((z - vw.x0) / vw.worldPerPixel)),
+                gl->height() - 1 - static_cast<int>(std::lround((x - vw.y0) / vw.worldPerPixel))};
+    }
+};
+
+} // namespace
+
+class TestBackplotStudio : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTest");
+        QSettings().clear();
+    }
+    void pickGoesToTheEditorsLineAndTheLineHighlights() {
+        Studio s;
+        QVERIFY(s.view);
+        QVERIFY(s.showPath());
+        QCOMPARE(s.view->scene().path().segments.size(), std::size_t(5));
+        QSignalSpy spy(s.view, &BackplotWidget::lineActivated);
+        // The middle of N2 (Z -20 at X60) is on source line 3.
+        const QPoint p = s.pixelOf(-20, 60);
+        QCOMPARE(s.view->pickAt(p.x(), p.y()), 1L);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).toInt(), 1);
+        QCOMPARE(spy.at(0).at(1).toInt(), 3);
+        QVERIFY(s.view->pickText().contains("N2"));
+        int line = -1, index = -1;
+        s.editor->currentEditor()->getCursorPosition(&line, &index);
+        QCOMPARE(line, 2); // 0-based: line 3
+        auto* work = s.w.findChild<QTabWidget*>("workArea");
+        QCOMPARE(work->currentWidget(), static_cast<QWidget*>(s.editor));
+        QCOMPARE(s.view->scene().highlightedLine(), 3);
+        // The editor's cursor on line 6 (N5): its segment highlights.
+        s.editor->currentEditor()->setCursorPosition(5, 0);
+        QTRY_COMPARE(s.view->scene().highlightedLine(), 6);
+        QCOMPARE(s.view->scene().highlightedProgram(), 1);
+        // A click by the mouse does the same (N3 at Z-40, X40: line 4).
+        const QPoint q = s.pixelOf(-40, 40);
+        QTest::mouseClick(s.view->glWidget(), Qt::LeftButton, {}, q);
+        QTRY_COMPARE(spy.count(), 2);
+        QCOMPARE(spy.at(1).at(1).toInt(), 4);
+        s.editor->currentEditor()->getCursorPosition(&line, &index);
+        QCOMPARE(line, 3);
+    }
+    void aRunOnTheSessionsMachineGrowsThePathLive() {
+        Studio s;
+        QVERIFY(s.view);
+        const program::ParseResult parsed = program::parse(kProgram);
+        QVERIFY(!parsed.hasErrors());
+        studio::SimulationSession* session = s.w.findChild<studio::SimulationSession*>();
+        QVERIFY(session);
+        session->setRunning(false); // the test drives the time
+        // Each tick of the run advances the session by one tick and emits
+        // advanced(), the views' frame: the dock draws the batch each time.
+        std::vector<std::size_t> shown;
+        connect(session, &studio::SimulationSession::advanced, this,
+                [&] { shown.push_back(s.view->scene().actualPointsShown()); });
+        struct Stepper final : engine::RunMachine {
+            machine::SimulationRunMachine m;
+            studio::SimulationSession& session;
+            Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
+            engine::Controller& controller() override { return m.controller(); }
+            int ticks = 0;
+            void tick() override { // a UI frame every 16 ticks
+                m.tick();
+                if (++ticks % 16 == 0)
+                    session.advance(0);
+            }
+            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+            void setOverrideCode(int c) override { m.setOverrideCode(c); }
+            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+            void pressStart() override { m.pressStart(); }
+            bool startHeld() const override { return m.startHeld(); }
+            std::vector<int> mFunctions() const override { return m.mFunctions(); }
+        } stepper(*session);
+        engine::RunOptions ro;
+        const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, ro);
+        QCOMPARE(r.status, engine::RunStatus::Completed);
+        session->advance(1);
+        QVERIFY(shown.size() > 100);
+        // It grew: a few points early in the run, many at its end, never fewer.
+        std::size_t first = 0;
+        while (first < shown.size() && shown[first] == 0)
+            ++first;
+        QVERIFY(first < shown.size());
+        QVERIFY(std::is_sorted(shown.begin() + static_cast<long>(first), shown.end()));
+        QVERIFY2(shown[first] * 10 < shown.back(),
+                 qPrintable(QString("%1 .. %2").arg(shown[first]).arg(shown.back())));
+        // The programmed path of the running program under it.
+        QCOMPARE(s.view->scene().path().program, 1);
+        QCOMPARE(s.view->scene().path().segments.size(), std::size_t(5));
+        // The last point is where the run ended (X60 Z-80).
+        QVERIFY(s.view->scene().actualPointsShown() >= 10);
+    }
+    void screenshotOfTheStudioShowsWideVerticalLinesClean() {
+        Studio s;
+        QVERIFY(s.showPath());
+        s.view->selectLine(1, 6); // N5 drawn 4 px wide
+        auto* gl = s.view->glWidget();
+        gl->update();
+        QTest::qWait(300);
+        // From the X server, as a user sees it.
+        gl->makeCurrent();
+        qInfo() << "max hardware line width" << gl->renderWindow()->GetMaximumHardwareLineWidth()
+                << "deprecated functions" << gl->context()->format().testOption(QSurfaceFormat::DeprecatedFunctions)
+                << gl->context()->format();
+        gl->doneCurrent();
+        const QImage shot = s.w.screen()->grabWindow(s.w.winId()).toImage();
+        QVERIFY(!shot.isNull());
+        const QString out = QStringLiteral(K528_BINARY_DIR "/tests/backplot/studio_backplot.png");
+        QVERIFY(shot.save(out));
+        {
+            const QPoint c = gl->mapTo(&s.w, s.pixelOf(-40, 50));
+            shot.copy(c.x() - 30, c.y() - 30, 60, 60).scaled(480, 480).save(
+                QStringLiteral(K528_BINARY_DIR "/tests/backplot/studio_backplot_zoom.png"));
+        }
+        // The feed N3 runs vertically at Z-40 from X60 to X20, 2 px wide as
+        // offscreen. Along it every row must show the same run of lit pixels
+        // (a fringe alternates rows; a context without wide lines draws 1 px).
+        const QPoint origin = gl->mapTo(&s.w, QPoint(0, 0));
+        const QPoint top = s.pixelOf(-40, 55), bottom = s.pixelOf(-40, 25);
+        const int x = top.x() + origin.x();
+        QString rows, ref;
+        int differing = 0, rowsSeen = 0;
+        for (int y = top.y() + origin.y(); y <= bottom.y() + origin.y(); ++y, ++rowsSeen) {
+            QString lit; // the offsets -3..3 whose pixel is the feed's colour
+            for (int dx = -3; dx <= 3; ++dx) {
+                const QColor c(shot.pixel(x + dx, y));
+                const bool feed = std::fabs(c.redF() - k528::backplot::kFeedColour.r) < 0.08 &&
+                                  std::fabs(c.greenF() - k528::backplot::kFeedColour.g) < 0.08 &&
+                                  std::fabs(c.blueF() - k528::backplot::kFeedColour.b) < 0.08;
+                lit += feed ? QChar('#') : QChar('.');
+            }
+            if (ref.isEmpty())
+                ref = lit;
+            if (lit != ref)
+                ++differing;
+            if (rows.size() < 800)
+                rows += lit + " ";
+        }
+        QVERIFY(rowsSeen > 20);
+        QCOMPARE(ref.count('#'), 2);
+        QVERIFY2(differing == 0, qPrintable(QString("%1 rows differ: %2").arg(differing).arg(rows)));
+    }
+};
+
+int main(int argc, char** argv) {
+    studio::backplot::VtkGlWidget::setDefaultSurfaceFormat();
+    QApplication app(argc, argv);
+    TestBackplotStudio t;
+    return QTest::qExec(&t, argc, argv);
+}
+
+#include "test_backplot_studio.moc"
