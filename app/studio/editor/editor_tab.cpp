@@ -84,6 +84,7 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     count_ = new QLabel(this);
     count_->setObjectName("editor.problemCount");
     layout->addWidget(count_);
+    createTools();
 
     connect(tabs_, &QTabWidget::tabCloseRequested, this, [this](int i) { closeDocument(i); });
     connect(tabs_, &QTabWidget::currentChanged, this, [this] {
@@ -115,6 +116,11 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
         return b == QMessageBox::Save ? CloseChoice::Save : b == QMessageBox::Discard ? CloseChoice::Discard
                                                                                    : CloseChoice::Cancel;
     };
+    askReload_ = [this](const QString& path) {
+        return QMessageBox::question(this, tr("File changed on disk"),
+                                     tr("%1 was changed on disk. Reload it and lose your changes?").arg(path)) ==
+               QMessageBox::Yes;
+    };
     retranslate();
     fillRecentMenu();
     // The unsaved-changes guard: the window does not close while a modified
@@ -142,12 +148,8 @@ QString EditorTab::pathOf(int index) const {
 void EditorTab::setCheckAgainstMachine(bool on) {
     checkMachine_ = on;
     for (int i = 0; i < tabs_->count(); ++i)
-        if (ProgramEditor* ed = editorAt(i)) {
-            if (on && session_)
-                ed->setMachine(session_->simulation().profile(), session_->controller().programs());
-            else
-                ed->setMachine(std::nullopt);
-        }
+        if (ProgramEditor* ed = editorAt(i))
+            applyMachine(ed);
 }
 
 int EditorTab::addDocument(const QString& path, const QString& text) {
@@ -155,8 +157,7 @@ int EditorTab::addDocument(const QString& path, const QString& text) {
     ed->setProperty(kPathProperty, path);
     if (path.isEmpty())
         ed->setProperty(kUntitledProperty, ++untitled_);
-    if (checkMachine_ && session_)
-        ed->setMachine(session_->simulation().profile(), session_->controller().programs());
+    applyMachine(ed);
     ed->setText(text);
     ed->setModified(false);
     connect(ed, &ProgramEditor::validated, this, [this, ed] {
@@ -229,6 +230,8 @@ bool EditorTab::save() {
     const int i = tabs_->currentIndex();
     if (i < 0)
         return false;
+    if (!databaseMachine(i).isEmpty())
+        return saveToDatabase(i);
     if (pathOf(i).isEmpty())
         return saveAs();
     return saveTo(i, pathOf(i));
@@ -286,11 +289,10 @@ void EditorTab::fileChangedOnDisk(const QString& path) {
         if (text == ed->text())
             return;
         // Unsaved edits are never thrown away: ask first.
-        if (ed->isModified() &&
-            QMessageBox::question(this, tr("File changed on disk"),
-                                  tr("%1 was changed on disk. Reload it and lose your changes?").arg(path)) !=
-                QMessageBox::Yes)
+        if (ed->isModified() && !askReload_(path)) {
+            watcher_.addPath(path); // a file replaced on disk leaves the watch list
             return;
+        }
         int line = 0, index = 0;
         ed->getCursorPosition(&line, &index);
         ed->setText(text);
@@ -431,8 +433,7 @@ void EditorTab::refreshTitles() {
     for (int i = 0; i < tabs_->count(); ++i) {
         ProgramEditor* ed = editorAt(i);
         const QString p = pathOf(i);
-        QString name = p.isEmpty() ? tr("untitled %1").arg(ed->property(kUntitledProperty).toInt())
-                                   : QFileInfo(p).fileName();
+        QString name = documentName(i);
         if (ed->isModified())
             name += QStringLiteral(" *");
         tabs_->setTabText(i, name);
@@ -478,6 +479,7 @@ void EditorTab::retranslate() {
     masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
     outline_->setHeaderLabels({tr("Programs")});
     problems_->setHeaderLabels({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")});
+    retranslateTools();
     refreshTitles();
     refreshProblems();
 }
