@@ -1,6 +1,7 @@
 #include "editor/editor_tab.h"
 
 #include "editor/frame_master.h"
+#include "editor/problems_model.h"
 #include "editor/program_editor.h"
 #include "language.h"
 #include "session/program_loader.h"
@@ -21,6 +22,7 @@
 #include <QTemporaryFile>
 #include <QToolBar>
 #include <QToolButton>
+#include <QTreeView>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -72,10 +74,13 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     top->addWidget(outline_);
     top->addWidget(tabs_);
     top->setStretchFactor(1, 4);
-    problems_ = new QTreeWidget(split);
+    problems_ = new QTreeView(split);
     problems_->setObjectName("editor.problems");
-    problems_->setColumnCount(5);
+    problemsModel_ = new ProblemsModel(problems_);
+    problems_->setModel(problemsModel_);
     problems_->setRootIsDecorated(false);
+    problems_->setUniformRowHeights(true);
+    problems_->setAllColumnsShowFocus(true);
     problems_->header()->setStretchLastSection(true);
     split->addWidget(top);
     split->addWidget(problems_);
@@ -91,12 +96,12 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
         refreshProblems();
         refreshOutline();
     });
-    connect(problems_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+    connect(problems_, &QTreeView::activated, this, [this](const QModelIndex& index) {
         ProgramEditor* ed = currentEditor();
-        if (!ed || !item)
+        if (!ed || !index.isValid())
             return;
-        const int line = item->data(0, Qt::UserRole).toInt();
-        const int col = item->data(0, Qt::UserRole + 1).toInt();
+        const int line = index.data(ProblemsModel::kLineRole).toInt();
+        const int col = index.data(ProblemsModel::kColumnRole).toInt();
         ed->setCursorPosition(line - 1, std::max(0, col - 1));
         ed->ensureLineVisible(line - 1);
         ed->setFocus();
@@ -381,32 +386,15 @@ void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
 }
 
 void EditorTab::refreshProblems() {
-    problems_->clear();
     ProgramEditor* ed = currentEditor();
-    int errors = 0, warnings = 0;
+    problemsModel_->setDiagnostics(ed ? &ed->diagnostics() : nullptr);
+    std::size_t errors = 0, warnings = 0;
     if (ed) {
-        const bool ru = currentLanguage() == QStringLiteral("ru");
-        QList<QTreeWidgetItem*> items;
-        for (const program::Diagnostic& d : ed->diagnostics()) {
-            d.isError() ? ++errors : ++warnings;
-            if (items.size() >= 5000)
-                continue; // the count says how many; the list stays quick
-            auto* it = new QTreeWidgetItem;
-            it->setText(0, d.isError() ? tr("error") : tr("warning"));
-            it->setText(1, d.program > 0 ? QStringLiteral("L%1").arg(d.program) : QString());
-            it->setText(2, QString::number(d.line));
-            it->setText(3, d.manualNumber > 0 ? QStringLiteral("[M%1]").arg(d.manualNumber, 2, 10, QChar('0'))
-                                              : QString());
-            it->setText(4, QString::fromStdString(ru ? d.messageRu : d.messageEn));
-            it->setData(0, Qt::UserRole, d.line);
-            it->setData(0, Qt::UserRole + 1, d.column);
-            it->setForeground(0, d.isError() ? QColor(0xc0, 0, 0) : QColor(0xa0, 0x60, 0));
-            items << it;
-        }
-        problems_->addTopLevelItems(items);
+        errors = program::countErrors(ed->diagnostics());
+        warnings = ed->diagnostics().size() - errors;
     }
     count_->setText(tr("Errors: %1, warnings: %2").arg(errors).arg(warnings));
-    emit problemCountChanged(errors, warnings);
+    emit problemCountChanged(static_cast<int>(errors), static_cast<int>(warnings));
 }
 
 void EditorTab::refreshOutline() {
@@ -478,7 +466,8 @@ void EditorTab::retranslate() {
     masterAction_->setText(tr("Master…"));
     masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
     outline_->setHeaderLabels({tr("Programs")});
-    problems_->setHeaderLabels({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")});
+    problemsModel_->setTexts({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")}, tr("error"),
+                             tr("warning"));
     retranslateTools();
     refreshTitles();
     refreshProblems();

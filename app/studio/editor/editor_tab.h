@@ -18,6 +18,7 @@
 class QLabel;
 class QTabWidget;
 class QTreeWidget;
+class QTreeView;
 class QToolBar;
 class QMenu;
 
@@ -37,7 +38,8 @@ public:
     int documentCount() const;
     ProgramEditor* editorAt(int index) const;
     QString pathOf(int index) const;
-    QTreeWidget* problems() const { return problems_; }
+    // The Problems list: a view over ProblemsModel (problems_model.h).
+    QTreeView* problems() const { return problems_; }
     QTreeWidget* outline() const { return outline_; }
     QLabel* problemCount() const { return count_; }
 
@@ -128,7 +130,8 @@ private:
     SimulationSession* session_ = nullptr;
     QToolBar* toolbar_ = nullptr;
     QTabWidget* tabs_ = nullptr;
-    QTreeWidget* problems_ = nullptr;
+    QTreeView* problems_ = nullptr;
+    class ProblemsModel* problemsModel_ = nullptr;
     QTreeWidget* outline_ = nullptr;
     QLabel* count_ = nullptr;
     QMenu* recentMenu_ = nullptr;

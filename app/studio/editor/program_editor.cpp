@@ -12,6 +12,7 @@
 #include <QPointer>
 #include <QThreadPool>
 #include <QToolTip>
+#include <algorithm>
 
 namespace k528::studio {
 
@@ -202,7 +203,7 @@ void ProgramEditor::startValidation() {
         return;
     }
     workerBusy_ = true;
-    const QByteArray text = this->text().toUtf8();
+    const QByteArray text = documentBytes();
     const std::uint64_t gen = generation_;
     auto machine = machine_;
     auto programs = machinePrograms_;
@@ -220,7 +221,7 @@ void ProgramEditor::startValidation() {
                     return;
                 self->workerBusy_ = false;
                 if (r->generation == self->generation_)
-                    self->apply(*r);
+                    self->apply(std::move(*r), false);
                 if (self->pendingAgain_ || r->generation != self->generation_) {
                     self->pendingAgain_ = false;
                     self->startValidation();
@@ -234,55 +235,105 @@ void ProgramEditor::validateNow() {
     debounce_.stop();
     Result r;
     r.generation = generation_;
-    r.v = validateText(text().toUtf8(), machine_, machinePrograms_);
-    apply(r);
+    r.v = validateText(documentBytes(), machine_, machinePrograms_);
+    apply(std::move(r), true);
+}
+
+QByteArray ProgramEditor::documentBytes() const {
+    // The gap buffer made contiguous once (a move of the text after the gap),
+    // then one copy: a text() would convert 2.9 MB to UTF-16 and back.
+    const auto length = static_cast<qsizetype>(SendScintilla(SCI_GETLENGTH));
+    const auto* data = reinterpret_cast<const char*>(SendScintilla(SCI_GETCHARACTERPOINTER));
+    return data ? QByteArray(data, length) : text().toUtf8();
 }
 
 std::pair<int, int> ProgramEditor::spanPositions(const program::Diagnostic& d) const {
     if (d.line < 1 || d.line > lines())
         return {0, 0};
-    const int line = d.line - 1;
-    const int lineStart = static_cast<int>(SendScintilla(SCI_POSITIONFROMLINE, line));
-    const int lineEnd = static_cast<int>(SendScintilla(SCI_GETLINEENDPOSITION, line));
-    // Columns are code points: walk the characters from the line's start.
-    int pos = lineStart;
-    int col = 1;
+    const long line = d.line - 1;
+    const long lineStart = static_cast<long>(SendScintilla(SCI_POSITIONFROMLINE, line));
+    const long lineEnd = static_cast<long>(SendScintilla(SCI_GETLINEENDPOSITION, line));
+    // Columns are code points: Scintilla steps over whole characters (a
+    // position beyond the line stops at the line's end).
     const int column = std::max(1, d.column);
-    while (col < column && pos < lineEnd) {
-        pos = static_cast<int>(SendScintilla(SCI_POSITIONAFTER, pos));
-        ++col;
-    }
-    const int begin = pos;
-    while (col < d.endColumn && pos < lineEnd) {
-        pos = static_cast<int>(SendScintilla(SCI_POSITIONAFTER, pos));
-        ++col;
-    }
-    int end = pos;
+    long begin = column <= 1 ? lineStart : static_cast<long>(SendScintilla(SCI_POSITIONRELATIVE, lineStart, column - 1));
+    if (begin <= 0 && column > 1)
+        begin = lineEnd; // past the end of the document
+    begin = std::min(begin, lineEnd);
+    long end = d.endColumn > column
+                   ? static_cast<long>(SendScintilla(SCI_POSITIONRELATIVE, begin, d.endColumn - column))
+                   : begin;
+    if (end <= 0 || end > lineEnd)
+        end = lineEnd;
     if (end <= begin) // a span at the end of the line: mark the last character
-        end = std::min(lineEnd, begin + 1) > begin ? std::min(lineEnd, begin + 1) : begin;
-    return {begin, end};
+        end = std::min(lineEnd, begin + 1);
+    return {static_cast<int>(begin), static_cast<int>(end)};
 }
 
-void ProgramEditor::apply(const Result& r) {
+void ProgramEditor::apply(Result&& r, bool all) {
     ++validations_;
-    diagnostics_ = r.v.diagnostics;
-    store_ = r.v.store;
+    ++applied_;
+    diagnostics_ = std::move(r.v.diagnostics);
+    // The old store (99 x 999 frames at most) is freed on a worker: its
+    // destruction alone is milliseconds.
+    auto old = std::make_shared<program::ProgramStore>(std::move(store_));
+    store_ = std::move(r.v.store);
+    QThreadPool::globalInstance()->start([old]() mutable { old.reset(); });
     const int length = static_cast<int>(SendScintilla(SCI_GETLENGTH));
     for (int ind : {kErrorIndicator, kWarningIndicator}) {
         SendScintilla(SCI_SETINDICATORCURRENT, ind);
         SendScintilla(SCI_INDICATORCLEARRANGE, 0, length);
     }
-    diagnosticPositions_.clear();
-    diagnosticPositions_.reserve(diagnostics_.size());
-    for (const program::Diagnostic& d : diagnostics_) {
-        const auto [b, e] = spanPositions(d);
-        diagnosticPositions_.emplace_back(b, e);
-        if (e <= b)
-            continue;
-        SendScintilla(SCI_SETINDICATORCURRENT, d.isError() ? kErrorIndicator : kWarningIndicator);
-        SendScintilla(SCI_INDICATORFILLRANGE, b, e - b);
+    diagnosticPositions_.assign(diagnostics_.size(), {0, 0});
+    squiggledTo_ = 0;
+    if (all) {
+        drawSquiggles(0, diagnostics_.size());
+        squiggledTo_ = diagnostics_.size();
+    } else {
+        // The lines on screen first (diagnostics are sorted by line).
+        const int first = static_cast<int>(SendScintilla(SCI_DOCLINEFROMVISIBLE, SendScintilla(SCI_GETFIRSTVISIBLELINE)));
+        const int last = first + static_cast<int>(SendScintilla(SCI_LINESONSCREEN)) + 1;
+        auto lo = std::lower_bound(diagnostics_.begin(), diagnostics_.end(), first + 1,
+                                   [](const program::Diagnostic& d, int line) { return d.line < line; });
+        auto hi = std::upper_bound(lo, diagnostics_.end(), last + 1,
+                                   [](int line, const program::Diagnostic& d) { return line < d.line; });
+        if (std::is_sorted(diagnostics_.begin(), diagnostics_.end(),
+                           [](const program::Diagnostic& a, const program::Diagnostic& b) { return a.line < b.line; }))
+            drawSquiggles(static_cast<std::size_t>(lo - diagnostics_.begin()),
+                          static_cast<std::size_t>(hi - diagnostics_.begin()));
+        drawNextSlice();
     }
     emit validated();
+}
+
+void ProgramEditor::drawSquiggles(std::size_t from, std::size_t to) {
+    int current = -1;
+    for (std::size_t i = from; i < to && i < diagnostics_.size(); ++i) {
+        const program::Diagnostic& d = diagnostics_[i];
+        const auto [b, e] = spanPositions(d);
+        diagnosticPositions_[i] = {b, e};
+        if (e <= b)
+            continue;
+        const int ind = d.isError() ? kErrorIndicator : kWarningIndicator;
+        if (ind != current)
+            SendScintilla(SCI_SETINDICATORCURRENT, current = ind);
+        SendScintilla(SCI_INDICATORFILLRANGE, b, e - b);
+    }
+}
+
+void ProgramEditor::drawNextSlice() {
+    const std::size_t to = std::min(diagnostics_.size(), squiggledTo_ + kSquiggleSlice);
+    drawSquiggles(squiggledTo_, to);
+    squiggledTo_ = to;
+    if (squiggledTo_ >= diagnostics_.size())
+        return;
+    const std::uint64_t applied = applied_;
+    QTimer::singleShot(0, this, [this, applied] {
+        // A newer result, or an edit since (the positions would be stale:
+        // the next result draws them), stops this one.
+        if (applied == applied_ && !debounce_.isActive() && !workerBusy_)
+            drawNextSlice();
+    });
 }
 
 QString ProgramEditor::hoverText(int position) const {

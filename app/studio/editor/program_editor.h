@@ -73,7 +73,15 @@ private:
     struct Result;
     void scheduleValidation();
     void startValidation();
-    void apply(const Result& r);
+    // Takes a validation's result. The squiggles of the lines on screen are
+    // drawn at once, the others (all when `all`) in slices of kSquiggleSlice
+    // between events, so that 9000 diagnostics never hold the event loop.
+    void apply(Result&& r, bool all);
+    void drawSquiggles(std::size_t from, std::size_t to);
+    void drawNextSlice();
+    static constexpr std::size_t kSquiggleSlice = 1000;
+    // The document's bytes (UTF-8), copied without a detour through QString.
+    QByteArray documentBytes() const;
     void charAdded(int ch);
     void completionChosen(int id, const QString& text);
     void dwellStart(int position, int x, int y);
@@ -86,6 +94,8 @@ private:
     std::vector<std::pair<int, int>> diagnosticPositions_;
     program::ProgramStore store_;
     std::uint64_t generation_ = 0;
+    std::uint64_t applied_ = 0;        // counts apply(): a slice of an older one stops
+    std::size_t squiggledTo_ = 0;      // diagnostics [0, squiggledTo_) have their squiggles
     bool workerBusy_ = false;
     bool pendingAgain_ = false;
     int validations_ = 0;
