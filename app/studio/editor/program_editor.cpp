@@ -273,11 +273,15 @@ std::pair<int, int> ProgramEditor::spanPositions(const program::Diagnostic& d) c
 void ProgramEditor::apply(Result&& r, bool all) {
     ++validations_;
     ++applied_;
-    diagnostics_ = std::move(r.v.diagnostics);
-    // The old store (99 x 999 frames at most) is freed on a worker: its
-    // destruction alone is milliseconds.
-    auto old = std::make_shared<program::ProgramStore>(std::move(store_));
+    // The old store (99 x 999 frames at most) and diagnostics are freed on a
+    // worker: their destruction alone is milliseconds.
+    struct Old {
+        program::ProgramStore store;
+        std::vector<program::Diagnostic> diagnostics;
+    };
+    auto old = std::make_shared<Old>(Old{std::move(store_), std::move(diagnostics_)});
     store_ = std::move(r.v.store);
+    diagnostics_ = std::move(r.v.diagnostics);
     QThreadPool::globalInstance()->start([old]() mutable { old.reset(); });
     const int length = static_cast<int>(SendScintilla(SCI_GETLENGTH));
     for (int ind : {kErrorIndicator, kWarningIndicator}) {
