@@ -142,6 +142,62 @@
         <source>A program is running: stop it (RESET) before loading programs.</source>
         <translation type="unfinished" />
     </message>
+    <message>
+        <source>Fix the syntax errors first: %1</source>
+        <translation>Fix the syntax errors first: %1</translation>
+    </message>
+    <message>
+        <source>The file has no program L%1</source>
+        <translation>The file has no program L%1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>warning</translation>
+    </message>
+    <message>
+        <source>none (the language only)</source>
+        <translation>none (the language only)</translation>
+    </message>
+    <message>
+        <source>File: %1</source>
+        <translation>File: %1</translation>
+    </message>
+    <message>
+        <source>Machine: %1    Date: %2</source>
+        <translation>Machine: %1    Date: %2</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2    Page %3 of %4</source>
+        <translation>Errors: %1, warnings: %2    Page %3 of %4</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 cannot be written: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 cannot be written</translation>
+    </message>
+    <message>
+        <source>The database has no machine %1</source>
+        <translation>The database has no machine %1</translation>
+    </message>
+    <message>
+        <source>Not saved: fix the syntax errors first: %1</source>
+        <translation>Not saved: fix the syntax errors first: %1</translation>
+    </message>
+    <message>
+        <source>Not saved: every program needs its %L header in the machine's memory</source>
+        <translation>Not saved: every program needs its %L header in the machine's memory</translation>
+    </message>
+    <message>
+        <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
+        <translation>Not saved: %1 was changed in the database since revision %2 was opened (%3)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -753,6 +809,182 @@
     <message>
         <source>Message</source>
         <translation>Message</translation>
+    </message>
+    <message>
+        <source>&amp;Editor</source>
+        <translation>&amp;Editor</translation>
+    </message>
+    <message>
+        <source>Refactor</source>
+        <translation>Refactor</translation>
+    </message>
+    <message>
+        <source>Renumber frames…</source>
+        <translation>Renumber frames…</translation>
+    </message>
+    <message>
+        <source>Move or copy a program…</source>
+        <translation>Move or copy a program…</translation>
+    </message>
+    <message>
+        <source>Format the file</source>
+        <translation>Format the file</translation>
+    </message>
+    <message>
+        <source>Listing</source>
+        <translation>Listing</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>Print…</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Export PDF…</translation>
+    </message>
+    <message>
+        <source>Machine of this file</source>
+        <translation>Machine of this file</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Machine: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>The machine this file is checked for: its limits, feeds and axes</source>
+        <translation>The machine this file is checked for: its limits, feeds and axes</translation>
+    </message>
+    <message>
+        <source>Open from the database…</source>
+        <translation>Open from the database…</translation>
+    </message>
+    <message>
+        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
+        <translation>The programs and messages of a machine of the database; saving writes its next revision</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>The machine %1 cannot be loaded: %2</translation>
+    </message>
+    <message>
+        <source>No file is open</source>
+        <translation>No file is open</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (%1)</source>
+        <translation>The workstation's machine (%1)</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (none)</source>
+        <translation>The workstation's machine (none)</translation>
+    </message>
+    <message>
+        <source>None: the language only</source>
+        <translation>None: the language only</translation>
+    </message>
+    <message>
+        <source>Renumbered every program from %1 by %2</source>
+        <translation>Renumbered every program from %1 by %2</translation>
+    </message>
+    <message>
+        <source>Renumbered L%1 from %2 by %3</source>
+        <translation>Renumbered L%1 from %2 by %3</translation>
+    </message>
+    <message>
+        <source>Copied L%1 to L%2</source>
+        <translation>Copied L%1 to L%2</translation>
+    </message>
+    <message>
+        <source>Moved L%1 to L%2</source>
+        <translation>Moved L%1 to L%2</translation>
+    </message>
+    <message>
+        <source>Formatted</source>
+        <translation>Formatted</translation>
+    </message>
+    <message>
+        <source>Renumber frames</source>
+        <translation>Renumber frames</translation>
+    </message>
+    <message>
+        <source>Every program</source>
+        <translation>Every program</translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation>First number</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>The file has no program</source>
+        <translation>The file has no program</translation>
+    </message>
+    <message>
+        <source>Move or copy a program</source>
+        <translation>Move or copy a program</translation>
+    </message>
+    <message>
+        <source>Keep the program (copy)</source>
+        <translation>Keep the program (copy)</translation>
+    </message>
+    <message>
+        <source>New number</source>
+        <translation>New number</translation>
+    </message>
+    <message>
+        <source>%1 (database, revision %2)</source>
+        <translation>%1 (database, revision %2)</translation>
+    </message>
+    <message>
+        <source>Listing of %1 pages written to %2</source>
+        <translation>Listing of %1 pages written to %2</translation>
+    </message>
+    <message>
+        <source>Export the listing</source>
+        <translation>Export the listing</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Printed %1 pages</source>
+        <translation>Printed %1 pages</translation>
+    </message>
+    <message>
+        <source>The listing could not be printed</source>
+        <translation>The listing could not be printed</translation>
+    </message>
+    <message>
+        <source>Opened the programs of %1, revision %2</source>
+        <translation>Opened the programs of %1, revision %2</translation>
+    </message>
+    <message>
+        <source>The database has no machines</source>
+        <translation>The database has no machines</translation>
+    </message>
+    <message>
+        <source>Open from the database</source>
+        <translation>Open from the database</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>%1 saved as revision %2</source>
+        <translation>%1 saved as revision %2</translation>
+    </message>
+    <message>
+        <source>%1: the database already holds these programs (revision %2)</source>
+        <translation>%1: the database already holds these programs (revision %2)</translation>
     </message>
 </context>
 <context>
@@ -1433,11 +1665,11 @@
     </message>
     <message>
         <source>Machine</source>
-        <translation type="unfinished" />
+        <translation>Machine</translation>
     </message>
     <message>
         <source>The machine %1 cannot be loaded: %2</source>
-        <translation type="unfinished" />
+        <translation>The machine %1 cannot be loaded: %2</translation>
     </message>
     <message>
         <source>&amp;Machine</source>
@@ -1445,7 +1677,7 @@
     </message>
     <message>
         <source>Machine: %1</source>
-        <translation type="unfinished" />
+        <translation>Machine: %1</translation>
     </message>
     <message>
         <source>Machine: %1 (%2)</source>

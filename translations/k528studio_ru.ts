@@ -142,6 +142,62 @@
         <source>A program is running: stop it (RESET) before loading programs.</source>
         <translation>Выполняется программа: остановите её («Сброс») перед загрузкой.</translation>
     </message>
+    <message>
+        <source>Fix the syntax errors first: %1</source>
+        <translation>Сначала исправьте синтаксические ошибки: %1</translation>
+    </message>
+    <message>
+        <source>The file has no program L%1</source>
+        <translation>В файле нет программы L%1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>ошибка</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>предупреждение</translation>
+    </message>
+    <message>
+        <source>none (the language only)</source>
+        <translation>нет (только язык)</translation>
+    </message>
+    <message>
+        <source>File: %1</source>
+        <translation>Файл: %1</translation>
+    </message>
+    <message>
+        <source>Machine: %1    Date: %2</source>
+        <translation>Станок: %1    Дата: %2</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2    Page %3 of %4</source>
+        <translation>Ошибок: %1, предупреждений: %2    Лист %3 из %4</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 не записывается: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 не записывается</translation>
+    </message>
+    <message>
+        <source>The database has no machine %1</source>
+        <translation>В базе нет станка %1</translation>
+    </message>
+    <message>
+        <source>Not saved: fix the syntax errors first: %1</source>
+        <translation>Не сохранено: сначала исправьте синтаксические ошибки: %1</translation>
+    </message>
+    <message>
+        <source>Not saved: every program needs its %L header in the machine's memory</source>
+        <translation>Не сохранено: в памяти станка каждой программе нужен заголовок %L</translation>
+    </message>
+    <message>
+        <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
+        <translation>Не сохранено: %1 изменён в базе после того, как была открыта ревизия %2 (%3)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -753,6 +809,182 @@
     <message>
         <source>Message</source>
         <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>&amp;Editor</source>
+        <translation>&amp;Редактор</translation>
+    </message>
+    <message>
+        <source>Refactor</source>
+        <translation>Преобразовать</translation>
+    </message>
+    <message>
+        <source>Renumber frames…</source>
+        <translation>Перенумеровать кадры…</translation>
+    </message>
+    <message>
+        <source>Move or copy a program…</source>
+        <translation>Перенести или копировать программу…</translation>
+    </message>
+    <message>
+        <source>Format the file</source>
+        <translation>Форматировать файл</translation>
+    </message>
+    <message>
+        <source>Listing</source>
+        <translation>Листинг</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>Печать…</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Экспорт в PDF…</translation>
+    </message>
+    <message>
+        <source>Machine of this file</source>
+        <translation>Станок этого файла</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Станок: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>The machine this file is checked for: its limits, feeds and axes</source>
+        <translation>Станок, для которого проверяется файл: его пределы, подачи и оси</translation>
+    </message>
+    <message>
+        <source>Open from the database…</source>
+        <translation>Открыть из базы…</translation>
+    </message>
+    <message>
+        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
+        <translation>Программы и сообщения станка из базы; сохранение записывает его следующую ревизию</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>Станок %1 не загружается: %2</translation>
+    </message>
+    <message>
+        <source>No file is open</source>
+        <translation>Нет открытого файла</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (%1)</source>
+        <translation>Станок рабочего места (%1)</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (none)</source>
+        <translation>Станок рабочего места (нет)</translation>
+    </message>
+    <message>
+        <source>None: the language only</source>
+        <translation>Нет: только язык</translation>
+    </message>
+    <message>
+        <source>Renumbered every program from %1 by %2</source>
+        <translation>Все программы перенумерованы с %1 с шагом %2</translation>
+    </message>
+    <message>
+        <source>Renumbered L%1 from %2 by %3</source>
+        <translation>L%1 перенумерована с %2 с шагом %3</translation>
+    </message>
+    <message>
+        <source>Copied L%1 to L%2</source>
+        <translation>L%1 скопирована в L%2</translation>
+    </message>
+    <message>
+        <source>Moved L%1 to L%2</source>
+        <translation>L%1 перенесена в L%2</translation>
+    </message>
+    <message>
+        <source>Formatted</source>
+        <translation>Отформатировано</translation>
+    </message>
+    <message>
+        <source>Renumber frames</source>
+        <translation>Перенумеровать кадры</translation>
+    </message>
+    <message>
+        <source>Every program</source>
+        <translation>Все программы</translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation>Первый номер</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Шаг</translation>
+    </message>
+    <message>
+        <source>The file has no program</source>
+        <translation>В файле нет программ</translation>
+    </message>
+    <message>
+        <source>Move or copy a program</source>
+        <translation>Перенести или копировать программу</translation>
+    </message>
+    <message>
+        <source>Keep the program (copy)</source>
+        <translation>Сохранить программу (копия)</translation>
+    </message>
+    <message>
+        <source>New number</source>
+        <translation>Новый номер</translation>
+    </message>
+    <message>
+        <source>%1 (database, revision %2)</source>
+        <translation>%1 (база, ревизия %2)</translation>
+    </message>
+    <message>
+        <source>Listing of %1 pages written to %2</source>
+        <translation>Листинг на %1 листах записан в %2</translation>
+    </message>
+    <message>
+        <source>Export the listing</source>
+        <translation>Экспорт листинга</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Printed %1 pages</source>
+        <translation>Напечатано листов: %1</translation>
+    </message>
+    <message>
+        <source>The listing could not be printed</source>
+        <translation>Листинг не напечатан</translation>
+    </message>
+    <message>
+        <source>Opened the programs of %1, revision %2</source>
+        <translation>Открыты программы %1, ревизия %2</translation>
+    </message>
+    <message>
+        <source>The database has no machines</source>
+        <translation>В базе нет станков</translation>
+    </message>
+    <message>
+        <source>Open from the database</source>
+        <translation>Открыть из базы</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>%1 saved as revision %2</source>
+        <translation>%1 сохранён как ревизия %2</translation>
+    </message>
+    <message>
+        <source>%1: the database already holds these programs (revision %2)</source>
+        <translation>%1: в базе уже эти программы (ревизия %2)</translation>
     </message>
 </context>
 <context>

@@ -170,6 +170,7 @@ void MainWindow::createMenus() {
     quitAction_ = fileMenu_->addAction(QString(), QKeySequence::Quit, qApp, &QApplication::quit);
     quitAction_->setObjectName("action.quit");
 
+    menuBar()->addMenu(programEditor_->editorMenu()); // the Editor tab's tools (editor_tab_tools.cpp)
     viewMenu_ = menuBar()->addMenu(QString());
     for (QDockWidget* d : {k923Dock_, machineDock_, messagesDock_, axesDock_})
         viewMenu_->addAction(d->toggleViewAction());

@@ -3,7 +3,9 @@
 // validated after the debounce on a worker; the machine's limits are
 // checked too; colours come from core's tokens; unsaved changes survive a
 // cancelled close; a screenshot of the editor with diagnostics.
+#include "db/database.h"
 #include "editor/editor_tab.h"
+#include "editor/listing.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
 #include "program/tokens.h"
@@ -44,8 +46,14 @@ QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& t
 
 class TestEditor : public QObject {
     Q_OBJECT
+    QTemporaryDir dbDir_;
 private slots:
-    void initTestCase() { QCoreApplication::setOrganizationName("k528-test-editor"); }
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("k528-test-editor");
+        // The machines' database of these tests: a new one, never the shop's.
+        QVERIFY(dbDir_.isValid());
+        qputenv("K528_DB", dbDir_.filePath("machines.sqlite").toUtf8());
+    }
 
     void squiggleOnTheExactColumnsAndProblemsEntry() {
         EditorTab tab(nullptr);
@@ -65,17 +73,17 @@ private slots:
             const bool inside = c >= 6 && c < 11;
             QCOMPARE(indicatorAt(*ed, ProgramEditor::kErrorIndicator, lineStart + c), inside);
         }
-        QCOMPARE(tab.problems()->topLevelItemCount(), 1);
-        QTreeWidgetItem* item = tab.problems()->topLevelItem(0);
-        QCOMPARE(item->text(1), QString("L1"));
-        QCOMPARE(item->text(2), QString("3"));
-        QCOMPARE(item->text(3), QString("[M33]"));
+        QAbstractItemModel* problems = tab.problems()->model();
+        QCOMPARE(problems->rowCount(), 1);
+        QCOMPARE(problems->index(0, 1).data().toString(), QString("L1"));
+        QCOMPARE(problems->index(0, 2).data().toString(), QString("3"));
+        QCOMPARE(problems->index(0, 3).data().toString(), QString("[M33]"));
         QVERIFY(!ed->hoverText(lineStart + 7).isEmpty());
         QVERIFY(ed->hoverText(lineStart + 7).startsWith("[M33] "));
         QVERIFY(ed->hoverText(lineStart + 1).isEmpty());
         QVERIFY(tab.problemCount()->text().contains('1'));
         // The Problems entry jumps to the place.
-        emit tab.problems()->itemActivated(item, 0);
+        emit tab.problems()->activated(problems->index(0, 0));
         int line = -1, index = -1;
         ed->getCursorPosition(&line, &index);
         QCOMPARE(line, 2);
@@ -86,7 +94,7 @@ private slots:
         QVERIFY(ed->diagnostics().empty());
         for (int c = 0; c < 12; ++c)
             QVERIFY(!indicatorAt(*ed, ProgramEditor::kErrorIndicator, lineStart + c));
-        QCOMPARE(tab.problems()->topLevelItemCount(), 0);
+        QCOMPARE(problems->rowCount(), 0);
     }
 
     void typingIsValidatedAfterTheDebounce() {
@@ -251,6 +259,187 @@ private slots:
         QVERIFY(!j.valid());
     }
 
+    void renumberMoveCopyAndFormatKeepJumpsAndCalls() {
+        EditorTab tab(nullptr);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText("%L1\nN5 G1 X1 FX50\nN7 IF R1>0 GOTO 5\nL7\nM30\n\n%L7\nN1 G1 X2 FX50\nM17\n");
+        QVERIFY(tab.renumber(1, 10, 10));
+        const QString renumbered = ed->text();
+        QVERIFY2(renumbered.contains("N10 G1 X1 FX50"), qPrintable(renumbered));
+        QVERIFY2(renumbered.contains("N20 IF R1>0 GOTO 10"), qPrintable(renumbered));
+        QVERIFY(renumbered.contains("N1 G1 X2 FX50")); // L7 kept its numbers
+        // One undo step gives the text back.
+        ed->undo();
+        QCOMPARE(ed->text(), QString("%L1\nN5 G1 X1 FX50\nN7 IF R1>0 GOTO 5\nL7\nM30\n\n%L7\nN1 G1 X2 FX50\nM17\n"));
+        // Move L7 to L8: the call follows.
+        QVERIFY(tab.moveProgram(7, 8, false));
+        QVERIFY2(ed->text().contains("%L8") && !ed->text().contains("%L7"), qPrintable(ed->text()));
+        QVERIFY(ed->text().contains("\nL8\n"));
+        // Copy L8 to L9: the call stays on L8.
+        QVERIFY(tab.moveProgram(8, 9, true));
+        QVERIFY(ed->text().contains("%L8") && ed->text().contains("%L9") && ed->text().contains("\nL8\n"));
+        ed->validateNow();
+        QVERIFY(ed->diagnostics().empty());
+        // Onto an existing number: refused, nothing changed.
+        const QString before = ed->text();
+        QSignalSpy status(&tab, &EditorTab::statusMessage);
+        QVERIFY(!tab.moveProgram(8, 1, false));
+        QCOMPARE(ed->text(), before);
+        QVERIFY(!status.isEmpty());
+        // Format: the canonical text of core's formatter; a syntax error refuses.
+        ed->setText("%L1\nn5   g1 x1.500 fx50\nM30\n");
+        QVERIFY(tab.formatFile());
+        QCOMPARE(ed->text(), QString("%L1\nN5 G1 X1.5 FX50\nM30\n"));
+        ed->setText("%L1\nN2 G1 X5..3\nM30\n");
+        QVERIFY(!tab.formatFile());
+        QCOMPARE(ed->text(), QString("%L1\nN2 G1 X5..3\nM30\n"));
+    }
+
+    void listingAndPdfExport() {
+        EditorTab tab(nullptr);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        QString text = "%L1 (listing)\nN1 G1 X1 FX50\nN2 G1 X5..3\n";
+        for (int i = 3; i < 200; ++i)
+            text += QStringLiteral("N%1 G1 X%1 FX50\n").arg(i);
+        text += "M30\n";
+        ed->setText(text);
+        ed->validateNow();
+        QCOMPARE(int(ed->diagnostics().size()), 1);
+        const std::vector<ListingRow> rows = listingRows(ed->text(), ed->diagnostics());
+        QCOMPARE(int(rows.size()), 201 + 1); // every line, and the diagnostic under line 3
+        QCOMPARE(rows[2].line, 3);
+        QCOMPARE(rows[3].line, 0);
+        QVERIFY(rows[3].error);
+        QVERIFY2(rows[3].text.startsWith("      ^ ") && rows[3].text.contains("[M33]"), qPrintable(rows[3].text));
+        const ListingInfo info{"p.k528", "training-lathe", QDateTime(QDate(2026, 12, 2), QTime(1, 30))};
+        const QStringList header = listingHeader(info, ed->diagnostics(), 2, 5);
+        QVERIFY(header.join('\n').contains("p.k528"));
+        QVERIFY(header.join('\n').contains("training-lathe"));
+        QVERIFY(header.join('\n').contains("2026-12-02 01:30"));
+        QVERIFY(header.join('\n').contains("2") && header.join('\n').contains("5"));
+        // The PDF: as many page objects as pages painted, more than one here.
+        QTemporaryDir dir;
+        const QString path = dir.filePath("listing.pdf");
+        const int pages = tab.exportPdf(path);
+        QVERIFY(pages >= 2);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray pdf = f.readAll();
+        QVERIFY(pdf.startsWith("%PDF-"));
+        QCOMPARE(int(pdf.count("/Type /Page\n") + pdf.count("/Type /Page ") + pdf.count("/Type /Page/") +
+                     pdf.count("/Type /Page>")),
+                 pages);
+        // A place that cannot be written: said, nothing painted.
+        QCOMPARE(tab.exportPdf(dir.filePath("no/such/dir/listing.pdf")), 0);
+    }
+
+    void theMachineOfEachFile() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        EditorTab tab(&session);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText("%L1\nG1 X9999 FX50\nM30\n");
+        QCOMPARE(tab.checkedMachineName(0), QString("training-lathe"));
+        auto limits = [&] {
+            ed->validateNow();
+            bool found = false;
+            for (const auto& d : ed->diagnostics())
+                found |= d.rule == program::Rule::SoftLimit || d.rule == program::Rule::FeedAboveMax;
+            return found;
+        };
+        QVERIFY(limits());
+        QVERIFY(tab.setFileMachine(0, EditorTab::kNoMachine));
+        QCOMPARE(tab.checkedMachineName(0), QString());
+        QVERIFY(!limits());
+        QVERIFY(tab.setFileMachine(0, "grinder-205"));
+        QCOMPARE(tab.checkedMachineName(0), QString("grinder-205"));
+        QCOMPARE(tab.fileMachine(0), QString("grinder-205"));
+        QVERIFY(tab.setFileMachine(0, QString()));
+        QCOMPARE(tab.checkedMachineName(0), QString("training-lathe"));
+        // A machine that does not exist: said, checked for none.
+        QVERIFY(!tab.setFileMachine(0, "no-such-machine"));
+        QCOMPARE(tab.checkedMachineName(0), QString());
+    }
+
+    void databaseProgramsAreSavedAsTheNextRevision() {
+        const std::string dbPath = qgetenv("K528_DB").toStdString();
+        int before = 0;
+        {
+            const db::Database d = db::Database::open(dbPath); // seeded with the built-in machines
+            QVERIFY(d.hasMachine("training-lathe"));
+            before = d.machine("training-lathe")->revision;
+        }
+        EditorTab tab(nullptr);
+        tab.setCloseQuestion([](const QString&) { return EditorTab::CloseChoice::Discard; });
+        QVERIFY(tab.openFromDatabase("training-lathe"));
+        QCOMPARE(tab.databaseMachine(0), QString("training-lathe"));
+        QCOMPARE(tab.databaseRevision(0), before);
+        QCOMPARE(tab.checkedMachineName(0), QString("training-lathe"));
+        ProgramEditor* ed = tab.currentEditor();
+        const QString opened = ed->text();
+        QVERIFY(opened.contains("%L"));
+        // A new program before the messages (or at the end).
+        QString edited = opened;
+        const QString program = "%L98 (from the editor)\nN1 G1 X1 FX50\nM30\n";
+        const int messages = edited.indexOf("%MESSAGES");
+        edited.insert(messages >= 0 ? messages : edited.size(), program + "\n");
+        ed->setText(edited);
+        QVERIFY(ed->isModified());
+        QVERIFY(tab.save());
+        QVERIFY(!ed->isModified());
+        QCOMPARE(tab.databaseRevision(0), before + 1);
+        {
+            const db::Database d = db::Database::open(dbPath);
+            QCOMPARE(d.machine("training-lathe")->revision, before + 1);
+            const auto text = d.programText("training-lathe", 98, before + 1);
+            QVERIFY(text.has_value());
+            QCOMPARE(QString::fromStdString(*text), program);
+            // The programs that were not edited are not changes of the revision.
+            for (const db::HistoryEntry& h : d.history("training-lathe", std::nullopt, 1))
+                QCOMPARE(QString::fromStdString(h.change.key), QString("L98"));
+        }
+        // Saved again unchanged: no new revision.
+        QVERIFY(tab.save());
+        QCOMPARE(tab.databaseRevision(0), before + 1);
+        // Someone else saved meanwhile: refused, the edits stay.
+        EditorTab other(nullptr);
+        other.setCloseQuestion([](const QString&) { return EditorTab::CloseChoice::Discard; });
+        QVERIFY(other.openFromDatabase("training-lathe"));
+        other.currentEditor()->setText(other.currentEditor()->text().replace("X1 FX50", "X2 FX50"));
+        QVERIFY(other.save());
+        ed->setText(ed->text().replace("X1 FX50", "X3 FX50"));
+        QVERIFY(!tab.save());
+        QVERIFY(ed->isModified());
+        QVERIFY(ed->text().contains("X3 FX50"));
+    }
+
+    void reloadWhenChangedOnDisk() {
+        QTemporaryDir dir;
+        const QString path = write(dir, "r.k528", "%L1\nM30\n");
+        EditorTab tab(nullptr);
+        QVERIFY(tab.openFile(path));
+        ProgramEditor* ed = tab.currentEditor();
+        int asked = 0;
+        tab.setReloadQuestion([&](const QString&) {
+            ++asked;
+            return false;
+        });
+        // Not modified here: the new text is read without a question.
+        write(dir, "r.k528", "%L1\nG1 X1 FX50\nM30\n");
+        QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QString("%L1\nG1 X1 FX50\nM30\n"), 5000);
+        QCOMPARE(asked, 0);
+        QVERIFY(!ed->isModified());
+        // Modified here: asked; «no» keeps the edits.
+        ed->setCursorPosition(1, 0);
+        ed->insert("N1 ");
+        write(dir, "r.k528", "%L1\nG1 X2 FX50\nM30\n");
+        QTRY_COMPARE_WITH_TIMEOUT(asked, 1, 5000);
+        QCOMPARE(ed->text(), QString("%L1\nN1 G1 X1 FX50\nM30\n"));
+        QVERIFY(ed->isModified());
+    }
+
     void screenshotWithDiagnostics() {
         QMainWindow window;
         auto* tab = new EditorTab(nullptr, &window);
@@ -265,7 +454,7 @@ private slots:
         ed->validateNow();
         ed->toggleBreakpoint(4);
         ed->setExecutingLine(2);
-        QVERIFY(tab->problems()->topLevelItemCount() >= 2);
+        QVERIFY(tab->problems()->model()->rowCount() >= 2);
         QTest::qWait(50);
         const QImage img = window.grab().toImage();
         const QString out = QStringLiteral(K528_BINARY_DIR) + "/tests/studio/editor-screenshot.png";

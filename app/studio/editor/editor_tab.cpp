@@ -2,6 +2,7 @@
 
 #include "editor/debug_panel.h"
 #include "editor/frame_master.h"
+#include "editor/problems_model.h"
 #include "editor/program_editor.h"
 #include "language.h"
 #include "session/program_loader.h"
@@ -22,6 +23,7 @@
 #include <QTemporaryFile>
 #include <QToolBar>
 #include <QToolButton>
+#include <QTreeView>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -78,10 +80,13 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
         top->addWidget(debug_);
         connect(debug_, &DebugPanel::statusMessage, this, &EditorTab::statusMessage);
     }
-    problems_ = new QTreeWidget(split);
+    problems_ = new QTreeView(split);
     problems_->setObjectName("editor.problems");
-    problems_->setColumnCount(5);
+    problemsModel_ = new ProblemsModel(problems_);
+    problems_->setModel(problemsModel_);
     problems_->setRootIsDecorated(false);
+    problems_->setUniformRowHeights(true);
+    problems_->setAllColumnsShowFocus(true);
     problems_->header()->setStretchLastSection(true);
     split->addWidget(top);
     split->addWidget(problems_);
@@ -90,18 +95,19 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     count_ = new QLabel(this);
     count_->setObjectName("editor.problemCount");
     layout->addWidget(count_);
+    createTools();
 
     connect(tabs_, &QTabWidget::tabCloseRequested, this, [this](int i) { closeDocument(i); });
     connect(tabs_, &QTabWidget::currentChanged, this, [this] {
         refreshProblems();
         refreshOutline();
     });
-    connect(problems_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
+    connect(problems_, &QTreeView::activated, this, [this](const QModelIndex& index) {
         ProgramEditor* ed = currentEditor();
-        if (!ed || !item)
+        if (!ed || !index.isValid())
             return;
-        const int line = item->data(0, Qt::UserRole).toInt();
-        const int col = item->data(0, Qt::UserRole + 1).toInt();
+        const int line = index.data(ProblemsModel::kLineRole).toInt();
+        const int col = index.data(ProblemsModel::kColumnRole).toInt();
         ed->setCursorPosition(line - 1, std::max(0, col - 1));
         ed->ensureLineVisible(line - 1);
         ed->setFocus();
@@ -120,6 +126,11 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
         return b == QMessageBox::Save ? CloseChoice::Save : b == QMessageBox::Discard ? CloseChoice::Discard
                                                                                    : CloseChoice::Cancel;
+    };
+    askReload_ = [this](const QString& path) {
+        return QMessageBox::question(this, tr("File changed on disk"),
+                                     tr("%1 was changed on disk. Reload it and lose your changes?").arg(path)) ==
+               QMessageBox::Yes;
     };
     retranslate();
     fillRecentMenu();
@@ -148,12 +159,8 @@ QString EditorTab::pathOf(int index) const {
 void EditorTab::setCheckAgainstMachine(bool on) {
     checkMachine_ = on;
     for (int i = 0; i < tabs_->count(); ++i)
-        if (ProgramEditor* ed = editorAt(i)) {
-            if (on && session_)
-                ed->setMachine(session_->simulation().profile(), session_->controller().programs());
-            else
-                ed->setMachine(std::nullopt);
-        }
+        if (ProgramEditor* ed = editorAt(i))
+            applyMachine(ed);
 }
 
 int EditorTab::addDocument(const QString& path, const QString& text) {
@@ -161,8 +168,7 @@ int EditorTab::addDocument(const QString& path, const QString& text) {
     ed->setProperty(kPathProperty, path);
     if (path.isEmpty())
         ed->setProperty(kUntitledProperty, ++untitled_);
-    if (checkMachine_ && session_)
-        ed->setMachine(session_->simulation().profile(), session_->controller().programs());
+    applyMachine(ed);
     ed->setText(text);
     ed->setModified(false);
     connect(ed, &ProgramEditor::validated, this, [this, ed] {
@@ -258,6 +264,8 @@ bool EditorTab::save() {
     const int i = tabs_->currentIndex();
     if (i < 0)
         return false;
+    if (!databaseMachine(i).isEmpty())
+        return saveToDatabase(i);
     if (pathOf(i).isEmpty())
         return saveAs();
     return saveTo(i, pathOf(i));
@@ -315,11 +323,10 @@ void EditorTab::fileChangedOnDisk(const QString& path) {
         if (text == ed->text())
             return;
         // Unsaved edits are never thrown away: ask first.
-        if (ed->isModified() &&
-            QMessageBox::question(this, tr("File changed on disk"),
-                                  tr("%1 was changed on disk. Reload it and lose your changes?").arg(path)) !=
-                QMessageBox::Yes)
+        if (ed->isModified() && !askReload_(path)) {
+            watcher_.addPath(path); // a file replaced on disk leaves the watch list
             return;
+        }
         int line = 0, index = 0;
         ed->getCursorPosition(&line, &index);
         ed->setText(text);
@@ -408,32 +415,15 @@ void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
 }
 
 void EditorTab::refreshProblems() {
-    problems_->clear();
     ProgramEditor* ed = currentEditor();
-    int errors = 0, warnings = 0;
+    problemsModel_->setDiagnostics(ed ? &ed->diagnostics() : nullptr);
+    std::size_t errors = 0, warnings = 0;
     if (ed) {
-        const bool ru = currentLanguage() == QStringLiteral("ru");
-        QList<QTreeWidgetItem*> items;
-        for (const program::Diagnostic& d : ed->diagnostics()) {
-            d.isError() ? ++errors : ++warnings;
-            if (items.size() >= 5000)
-                continue; // the count says how many; the list stays quick
-            auto* it = new QTreeWidgetItem;
-            it->setText(0, d.isError() ? tr("error") : tr("warning"));
-            it->setText(1, d.program > 0 ? QStringLiteral("L%1").arg(d.program) : QString());
-            it->setText(2, QString::number(d.line));
-            it->setText(3, d.manualNumber > 0 ? QStringLiteral("[M%1]").arg(d.manualNumber, 2, 10, QChar('0'))
-                                              : QString());
-            it->setText(4, QString::fromStdString(ru ? d.messageRu : d.messageEn));
-            it->setData(0, Qt::UserRole, d.line);
-            it->setData(0, Qt::UserRole + 1, d.column);
-            it->setForeground(0, d.isError() ? QColor(0xc0, 0, 0) : QColor(0xa0, 0x60, 0));
-            items << it;
-        }
-        problems_->addTopLevelItems(items);
+        errors = program::countErrors(ed->diagnostics());
+        warnings = ed->diagnostics().size() - errors;
     }
     count_->setText(tr("Errors: %1, warnings: %2").arg(errors).arg(warnings));
-    emit problemCountChanged(errors, warnings);
+    emit problemCountChanged(static_cast<int>(errors), static_cast<int>(warnings));
 }
 
 void EditorTab::refreshOutline() {
@@ -460,8 +450,7 @@ void EditorTab::refreshTitles() {
     for (int i = 0; i < tabs_->count(); ++i) {
         ProgramEditor* ed = editorAt(i);
         const QString p = pathOf(i);
-        QString name = p.isEmpty() ? tr("untitled %1").arg(ed->property(kUntitledProperty).toInt())
-                                   : QFileInfo(p).fileName();
+        QString name = documentName(i);
         if (ed->isModified())
             name += QStringLiteral(" *");
         tabs_->setTabText(i, name);
@@ -506,7 +495,9 @@ void EditorTab::retranslate() {
     masterAction_->setText(tr("Master…"));
     masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
     outline_->setHeaderLabels({tr("Programs")});
-    problems_->setHeaderLabels({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")});
+    problemsModel_->setTexts({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")}, tr("error"),
+                             tr("warning"));
+    retranslateTools();
     refreshTitles();
     refreshProblems();
 }

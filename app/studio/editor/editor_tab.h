@@ -4,7 +4,11 @@
 // outline of the file's programs, the Problems list (severity, program,
 // line, [Mnn], text) that jumps to the place, the count of problems, the
 // machine the file is checked for, and «send to the controller» through the
-// check-then-load path (session/program_loader).
+// check-then-load path (session/program_loader). The tools of
+// editor_tab_tools.cpp: renumber / move / copy a program and format the file
+// (text_refactor.h), print and PDF listings (listing.h), the machine each
+// file is checked for, and the programs of a database machine opened and
+// saved as its next revision (database_programs.h).
 #pragma once
 
 #include <QFileSystemWatcher>
@@ -14,6 +18,7 @@
 class QLabel;
 class QTabWidget;
 class QTreeWidget;
+class QTreeView;
 class QToolBar;
 class QMenu;
 
@@ -34,7 +39,8 @@ public:
     int documentCount() const;
     ProgramEditor* editorAt(int index) const;
     QString pathOf(int index) const;
-    QTreeWidget* problems() const { return problems_; }
+    // The Problems list: a view over ProblemsModel (problems_model.h).
+    QTreeView* problems() const { return problems_; }
     QTreeWidget* outline() const { return outline_; }
     QLabel* problemCount() const { return count_; }
     // The debugger's pane (editor/debug_panel.h); null without a session.
@@ -45,6 +51,23 @@ public:
 
     // The question asked before a modified document is closed; tests replace it.
     void setCloseQuestion(std::function<CloseChoice(const QString& name)> ask) { ask_ = std::move(ask); }
+    // The question asked before a file changed on disk replaces unsaved edits
+    // (true = reload); tests replace it.
+    void setReloadQuestion(std::function<bool(const QString& path)> ask) { askReload_ = std::move(ask); }
+
+    // The machine document `index` is checked for: "" = the workstation's
+    // (File > Machine), kNoMachine = the language only, else a machine's
+    // name (database, built-in or file, as File > Machine offers them).
+    static inline const QString kNoMachine = QStringLiteral("-");
+    bool setFileMachine(int index, const QString& choice);
+    QString fileMachine(int index) const;
+    // The name of the machine the document is checked for now ("" = none).
+    QString checkedMachineName(int index) const;
+    // The Editor menu (refactoring, listing, database, machine) for the menu bar.
+    QMenu* editorMenu() const { return editorMenu_; }
+    // The database machine of document `index` ("" = a file) and its revision.
+    QString databaseMachine(int index) const;
+    int databaseRevision(int index) const;
 
 public slots:
     void newFile();
@@ -68,6 +91,23 @@ public slots:
     // (the current one first) that holds program `program` there; false if none.
     bool showLine(int program, int line);
 
+    // Refactoring of the current file (one undo step each; false and a
+    // status message why not). program 0 = every program.
+    bool renumber(int program, int start, int step);
+    bool moveProgram(int from, int to, bool copy);
+    bool formatFile();
+    void renumberDialog();
+    void moveProgramDialog();
+    // The listing of the current file: PDF (returns the pages, 0 = failed), print.
+    int exportPdf(const QString& path);
+    void exportPdfDialog();
+    void printDialog();
+    // The programs and messages of a database machine as a document; saving
+    // it writes the machine's next revision.
+    bool openFromDatabase(const QString& machine);
+    void openDatabaseDialog();
+    bool saveToDatabase(int index);
+
 signals:
     void problemCountChanged(int errors, int warnings);
     void statusMessage(const QString& text);
@@ -88,11 +128,19 @@ private:
     void addRecent(const QString& path);
     void fillRecentMenu();
     void retranslate();
+    // editor_tab_tools.cpp
+    void createTools();
+    void retranslateTools();
+    void applyMachine(ProgramEditor* ed);
+    void fillFileMachineMenu();
+    void replaceText(ProgramEditor* ed, const QString& text);
+    QString documentName(int index) const;
 
     SimulationSession* session_ = nullptr;
     QToolBar* toolbar_ = nullptr;
     QTabWidget* tabs_ = nullptr;
-    QTreeWidget* problems_ = nullptr;
+    QTreeView* problems_ = nullptr;
+    class ProblemsModel* problemsModel_ = nullptr;
     QTreeWidget* outline_ = nullptr;
     QLabel* count_ = nullptr;
     DebugPanel* debug_ = nullptr;
@@ -101,6 +149,11 @@ private:
     bool checkMachine_ = true;
     int untitled_ = 0;
     std::function<CloseChoice(const QString&)> ask_;
+    std::function<bool(const QString&)> askReload_;
+    QMenu *editorMenu_ = nullptr, *refactorMenu_ = nullptr, *listingMenu_ = nullptr, *fileMachineMenu_ = nullptr;
+    QAction *renumberAction_ = nullptr, *moveAction_ = nullptr, *formatAction_ = nullptr, *printAction_ = nullptr,
+            *pdfAction_ = nullptr, *openDbAction_ = nullptr, *fileMachineAction_ = nullptr,
+            *refactorAction_ = nullptr, *listingAction_ = nullptr;
     QAction *newAction_ = nullptr, *openAction_ = nullptr, *saveAction_ = nullptr, *saveAsAction_ = nullptr,
             *sendAction_ = nullptr, *masterAction_ = nullptr, *machineAction_ = nullptr, *recentAction_ = nullptr;
 };

@@ -1,0 +1,39 @@
+// The Problems list's model (issue 11): a table over the current editor's
+// diagnostics (severity, program, line, [Mnn], text), read in place. A new
+// validation resets it in constant time; the view asks only for the rows
+// it shows, so 9000 problems of a big file cost nothing while typing.
+#pragma once
+
+#include "program/diagnostic.h"
+
+#include <QAbstractTableModel>
+#include <QStringList>
+#include <vector>
+
+namespace k528::studio {
+
+class ProblemsModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    using QAbstractTableModel::QAbstractTableModel;
+    static constexpr int kLineRole = Qt::UserRole;
+    static constexpr int kColumnRole = Qt::UserRole + 1;
+
+    // The diagnostics shown (owned by the editor; nullptr = none). Call again
+    // after they changed.
+    void setDiagnostics(const std::vector<program::Diagnostic>* diagnostics);
+    // The texts of the header and of the two severities (translated by the tab).
+    void setTexts(const QStringList& headers, const QString& error, const QString& warning);
+
+    int rowCount(const QModelIndex& parent = {}) const override;
+    int columnCount(const QModelIndex& parent = {}) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+
+private:
+    const std::vector<program::Diagnostic>* diagnostics_ = nullptr;
+    QStringList headers_;
+    QString error_, warning_;
+};
+
+} // namespace k528::studio
