@@ -195,11 +195,11 @@
     </message>
     <message>
         <source>homed</source>
-        <translation type="unfinished" />
+        <translation>homed</translation>
     </message>
     <message>
         <source>not homed</source>
-        <translation type="unfinished" />
+        <translation>not homed</translation>
     </message>
     <message>
         <source>loop closed</source>
@@ -360,6 +360,297 @@
     <message>
         <source>fast inputs </source>
         <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>k528::studio::ControllerDock</name>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>&amp;Controller</source>
+        <translation>&amp;Controller</translation>
+    </message>
+    <message>
+        <source>&amp;Connect to the controller</source>
+        <translation>&amp;Connect to the controller</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>&amp;Pull into the database</source>
+        <translation>&amp;Pull into the database</translation>
+    </message>
+    <message>
+        <source>Push a &amp;file...</source>
+        <translation>Push a &amp;file...</translation>
+    </message>
+    <message>
+        <source>Push a database &amp;machine</source>
+        <translation>Push a database &amp;machine</translation>
+    </message>
+    <message>
+        <source>Line (RS485, Modbus RTU)</source>
+        <translation>Line (RS485, Modbus RTU)</translation>
+    </message>
+    <message>
+        <source>Live monitor</source>
+        <translation>Live monitor</translation>
+    </message>
+    <message>
+        <source>Plugin</source>
+        <translation>Plugin</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Parity</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>even</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>odd</translation>
+    </message>
+    <message>
+        <source>Ports</source>
+        <translation>Ports</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports again</source>
+        <translation>List the system's serial ports again</translation>
+    </message>
+    <message>
+        <source>Pull into the database</source>
+        <translation>Pull into the database</translation>
+    </message>
+    <message>
+        <source>Push a file...</source>
+        <translation>Push a file...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Show on the K923, Program, messages and axes</source>
+        <translation>Show on the K923, Program, messages and axes</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Disconnect</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connect</translation>
+    </message>
+    <message>
+        <source>No controller-link plugin was found (searched: %1). %2</source>
+        <translation>No controller-link plugin was found (searched: %1). %2</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the controller is on.</source>
+        <translation>Choose the serial port the controller is on.</translation>
+    </message>
+    <message>
+        <source>No connection on %1: %2</source>
+        <translation>No connection on %1: %2</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Connected: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>memory read</source>
+        <translation>memory read</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+    <message>
+        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
+        <translation>The push did not start: the controller's memory could not be read (%1); nothing was sent</translation>
+    </message>
+    <message>
+        <source>Pull failed: %1</source>
+        <translation>Pull failed: %1</translation>
+    </message>
+    <message>
+        <source>Pulled, but not kept in the database: %1</source>
+        <translation>Pulled, but not kept in the database: %1</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</source>
+        <translation>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs into %2, revision %3 (%4 changes)</source>
+        <translation>Pulled %1 programs into %2, revision %3 (%4 changes)</translation>
+    </message>
+    <message>
+        <source>pushed</source>
+        <translation>pushed</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>Pushed %1: written and verified %2</source>
+        <translation>Pushed %1: written and verified %2</translation>
+    </message>
+    <message>
+        <source>Push of %1 stopped: %2. Written and verified before: %3</source>
+        <translation>Push of %1 stopped: %2. Written and verified before: %3</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Connecting to %1...</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Disconnected</translation>
+    </message>
+    <message>
+        <source>Pulling the controller's memory...</source>
+        <translation>Pulling the controller's memory...</translation>
+    </message>
+    <message>
+        <source>Push a machine file</source>
+        <translation>Push a machine file</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m *.txt);;All files (*)</source>
+        <translation>Machine files (*.k528m *.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be pushed: %2; nothing was sent</source>
+        <translation>%1 cannot be pushed: %2; nothing was sent</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>The machine %1 cannot be loaded: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Reading the controller's memory to show what %1 changes...</translation>
+    </message>
+    <message>
+        <source>Push %1 to the controller</source>
+        <translation>Push %1 to the controller</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>The controller already holds what %1 has: nothing changes.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+    <message>
+        <source>Push</source>
+        <translation>Push</translation>
+    </message>
+    <message>
+        <source>Pushing %1...</source>
+        <translation>Pushing %1...</translation>
+    </message>
+    <message>
+        <source>Push of %1 not started; nothing was sent</source>
+        <translation>Push of %1 not started; nothing was sent</translation>
+    </message>
+    <message>
+        <source>Check what %1 changes, then push.</source>
+        <translation>Check what %1 changes, then push.</translation>
+    </message>
+    <message>
+        <source>Cancelling at the next exchange...</source>
+        <translation>Cancelling at the next exchange...</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
+        <translation>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>power-on</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, running</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>L%1, frame N%2</source>
+        <translation>L%1, frame N%2</translation>
+    </message>
+    <message>
+        <source>Override</source>
+        <translation>Override</translation>
+    </message>
+    <message>
+        <source>%1 mm (machine %2), following error %3 mm, %4</source>
+        <translation>%1 mm (machine %2), following error %3 mm, %4</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>homed</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>not homed</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>Alarms</translation>
+    </message>
+    <message>
+        <source>K LEDs</source>
+        <translation>K LEDs</translation>
+    </message>
+    <message>
+        <source>Machine messages</source>
+        <translation>Machine messages</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>Programs</translation>
     </message>
 </context>
 <context>
@@ -894,6 +1185,29 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkController</name>
+    <message>
+        <source>cancelled; nothing was kept</source>
+        <translation>cancelled; nothing was kept</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-parameters</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>messages</translation>
+    </message>
+    <message>
+        <source>cancelled; the program being sent was not committed</source>
+        <translation>cancelled; the program being sent was not committed</translation>
+    </message>
+    <message>
+        <source>%1, address %2, %3 bit/s</source>
+        <translation>%1, address %2, %3 bit/s</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MachinePanelWidget</name>
     <message>
         <source>SPINDLE</source>
@@ -1175,7 +1489,7 @@
     </message>
     <message>
         <source>The machine %1 cannot be loaded: %2</source>
-        <translation type="unfinished" />
+        <translation>The machine %1 cannot be loaded: %2</translation>
     </message>
     <message>
         <source>&amp;Machine</source>
@@ -1236,6 +1550,10 @@
     <message>
         <source>Editor</source>
         <translation>Editor</translation>
+    </message>
+    <message>
+        <source>The controller on the link takes no keys: press them on its own K923</source>
+        <translation>The controller on the link takes no keys: press them on its own K923</translation>
     </message>
 </context>
 <context>
@@ -1477,6 +1795,13 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Oscilloscope</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SimulatedController</name>
+    <message>
+        <source>simulated %1</source>
+        <translation>simulated %1</translation>
     </message>
 </context>
 <context>

@@ -363,6 +363,297 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::ControllerDock</name>
+    <message>
+        <source>Controller</source>
+        <translation>Контроллер</translation>
+    </message>
+    <message>
+        <source>&amp;Controller</source>
+        <translation>&amp;Контроллер</translation>
+    </message>
+    <message>
+        <source>&amp;Connect to the controller</source>
+        <translation>&amp;Подключиться к контроллеру</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Отключиться</translation>
+    </message>
+    <message>
+        <source>&amp;Pull into the database</source>
+        <translation>&amp;Считать в базу данных</translation>
+    </message>
+    <message>
+        <source>Push a &amp;file...</source>
+        <translation>Передать &amp;файл...</translation>
+    </message>
+    <message>
+        <source>Push a database &amp;machine</source>
+        <translation>Передать станок из &amp;базы данных</translation>
+    </message>
+    <message>
+        <source>Line (RS485, Modbus RTU)</source>
+        <translation>Линия (RS485, Modbus RTU)</translation>
+    </message>
+    <message>
+        <source>Live monitor</source>
+        <translation>Монитор</translation>
+    </message>
+    <message>
+        <source>Plugin</source>
+        <translation>Модуль</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Порт</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Чётность</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Адрес</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>чёт</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>нечёт</translation>
+    </message>
+    <message>
+        <source>Ports</source>
+        <translation>Порты</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports again</source>
+        <translation>Перечитать последовательные порты системы</translation>
+    </message>
+    <message>
+        <source>Pull into the database</source>
+        <translation>Считать в базу данных</translation>
+    </message>
+    <message>
+        <source>Push a file...</source>
+        <translation>Передать файл...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Show on the K923, Program, messages and axes</source>
+        <translation>Показывать на К923, в программе, сообщениях и осях</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Отключиться</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Подключиться</translation>
+    </message>
+    <message>
+        <source>No controller-link plugin was found (searched: %1). %2</source>
+        <translation>Модуль связи с контроллером не найден (искали: %1). %2</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the controller is on.</source>
+        <translation>Выберите последовательный порт контроллера.</translation>
+    </message>
+    <message>
+        <source>No connection on %1: %2</source>
+        <translation>Нет связи по %1: %2</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Подключено: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Контроллер не отвечает:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>memory read</source>
+        <translation>память считана</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>остановлено</translation>
+    </message>
+    <message>
+        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
+        <translation>Передача не начата: память контроллера не считана (%1); ничего не передано</translation>
+    </message>
+    <message>
+        <source>Pull failed: %1</source>
+        <translation>Считывание не удалось: %1</translation>
+    </message>
+    <message>
+        <source>Pulled, but not kept in the database: %1</source>
+        <translation>Считано, но не сохранено в базе данных: %1</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</source>
+        <translation>Считано программ: %1; база данных уже хранит эту память станка %2 (ревизия %3)</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs into %2, revision %3 (%4 changes)</source>
+        <translation>Считано программ: %1 в станок %2, ревизия %3 (изменений: %4)</translation>
+    </message>
+    <message>
+        <source>pushed</source>
+        <translation>передано</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>ничего</translation>
+    </message>
+    <message>
+        <source>Pushed %1: written and verified %2</source>
+        <translation>Передан %1: записано и проверено %2</translation>
+    </message>
+    <message>
+        <source>Push of %1 stopped: %2. Written and verified before: %3</source>
+        <translation>Передача %1 остановлена: %2. Записано и проверено до этого: %3</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Подключение к %1...</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Отключено</translation>
+    </message>
+    <message>
+        <source>Pulling the controller's memory...</source>
+        <translation>Считывание памяти контроллера...</translation>
+    </message>
+    <message>
+        <source>Push a machine file</source>
+        <translation>Передать файл станка</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m *.txt);;All files (*)</source>
+        <translation>Файлы станка (*.k528m *.txt);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be pushed: %2; nothing was sent</source>
+        <translation>%1 нельзя передать: %2; ничего не передано</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>Станок %1 не загружается: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Считывание памяти контроллера, чтобы показать, что изменит %1...</translation>
+    </message>
+    <message>
+        <source>Push %1 to the controller</source>
+        <translation>Передать %1 в контроллер</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>Контроллер уже хранит то, что есть в %1: ничего не изменится.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Изменений в памяти контроллера: %1. Каждая программа записывается целиком или никак и проверяется чтением; контроллер должен быть в F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+    <message>
+        <source>Push</source>
+        <translation>Передать</translation>
+    </message>
+    <message>
+        <source>Pushing %1...</source>
+        <translation>Передача %1...</translation>
+    </message>
+    <message>
+        <source>Push of %1 not started; nothing was sent</source>
+        <translation>Передача %1 не начата; ничего не передано</translation>
+    </message>
+    <message>
+        <source>Check what %1 changes, then push.</source>
+        <translation>Проверьте, что изменит %1, затем передайте.</translation>
+    </message>
+    <message>
+        <source>Cancelling at the next exchange...</source>
+        <translation>Отмена при следующем обмене...</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
+        <translation>%1: ответов %2, без ответа %3 (так кончается повреждённый кадр), неверных ответов %4, исключений %5, повторов %6; время обмена %7 мс (среднее %8 мс); загрузка линии %9 %</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>включение</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, выполнение</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Режим</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>L%1, frame N%2</source>
+        <translation>L%1, кадр N%2</translation>
+    </message>
+    <message>
+        <source>Override</source>
+        <translation>Коррекция</translation>
+    </message>
+    <message>
+        <source>%1 mm (machine %2), following error %3 mm, %4</source>
+        <translation>%1 мм (станок %2), ошибка слежения %3 мм, %4</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>привязана</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>не привязана</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>Аварийные сообщения</translation>
+    </message>
+    <message>
+        <source>K LEDs</source>
+        <translation>Светодиоды K</translation>
+    </message>
+    <message>
+        <source>Machine messages</source>
+        <translation>Сообщения станка</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>Программы</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::EditorTab</name>
     <message>
         <source>Unsaved changes</source>
@@ -894,6 +1185,29 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkController</name>
+    <message>
+        <source>cancelled; nothing was kept</source>
+        <translation>отменено; ничего не сохранено</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-параметры</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>сообщения</translation>
+    </message>
+    <message>
+        <source>cancelled; the program being sent was not committed</source>
+        <translation>отменено; передававшаяся программа не записана</translation>
+    </message>
+    <message>
+        <source>%1, address %2, %3 bit/s</source>
+        <translation>%1, адрес %2, %3 бит/с</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MachinePanelWidget</name>
     <message>
         <source>SPINDLE</source>
@@ -1237,6 +1551,10 @@
         <source>Editor</source>
         <translation>Редактор</translation>
     </message>
+    <message>
+        <source>The controller on the link takes no keys: press them on its own K923</source>
+        <translation>Контроллер на линии не принимает клавиши: нажимайте их на его собственном К923</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -1477,6 +1795,13 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Осциллограф</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SimulatedController</name>
+    <message>
+        <source>simulated %1</source>
+        <translation>имитация %1</translation>
     </message>
 </context>
 <context>

@@ -481,9 +481,9 @@ void ControllerDock::showPreview(const profile::MachineProfile& memory) {
     d->setWindowTitle(tr("Push %1 to the controller").arg(pendingWhat_));
     auto* lay = new QVBoxLayout(d);
     auto* head = new QLabel(changes.empty() ? tr("The controller already holds what %1 has: nothing changes.").arg(pendingWhat_)
-                                            : tr("%n change(s) in the controller's memory. Each program is committed "
-                                                 "all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».",
-                                                 nullptr, static_cast<int>(changes.size())),
+                                            : tr("Changes in the controller's memory: %1. Each program is committed "
+                                                 "all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».")
+                                                  .arg(changes.size()),
                             d);
     head->setWordWrap(true);
     lay->addWidget(head);

@@ -19,8 +19,9 @@ struct Cancelled {};
 // is up the next exchange throws, the procedure unwinds like a broken line.
 class MeterTransport final : public link::RegisterTransport {
 public:
-    MeterTransport(linkplugin::ClientTransport& t, std::shared_ptr<std::atomic<bool>> cancel)
-        : t_(t), cancel_(std::move(cancel)) {}
+    MeterTransport(linkplugin::ClientTransport& t, std::shared_ptr<std::atomic<bool>> cancel,
+                   std::shared_ptr<std::atomic<bool>> closing)
+        : t_(t), cancel_(std::move(cancel)), closing_(std::move(closing)) {}
     link::Reply read(int first, int count, std::vector<std::uint16_t>& out) override {
         return timed([&] { return t_.read(first, count, out); });
     }
@@ -40,7 +41,7 @@ public:
 
 private:
     template <class F> link::Reply timed(F&& f) {
-        if (cancellable && cancel_->load())
+        if ((cancellable && cancel_->load()) || closing_->load())
             throw Cancelled{};
         QElapsedTimer clock;
         clock.start();
@@ -53,35 +54,62 @@ private:
         return r;
     }
     linkplugin::ClientTransport& t_;
-    std::shared_ptr<std::atomic<bool>> cancel_;
+    std::shared_ptr<std::atomic<bool>> cancel_, closing_;
 };
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
 } // namespace
 
-// Lives on the controller's thread; owns the plugin's transport there.
+// Lives on the controller's thread; owns the plugin's transport there. The
+// plugin waits for each answer in a local event loop, which also delivers
+// this thread's timer and queued calls: one operation at a time (depth_),
+// a call that comes in the middle of one runs after it.
 class LinkWorker : public QObject {
 public:
     LinkWorker(LinkController* owner, linkplugin::LinkPlugin& plugin, linkplugin::LineSettings line,
-               std::shared_ptr<std::atomic<bool>> cancel)
-        : owner_(owner), plugin_(plugin), line_(std::move(line)), cancel_(std::move(cancel)) {}
+               std::shared_ptr<std::atomic<bool>> cancel, std::shared_ptr<std::atomic<bool>> closing)
+        : owner_(owner), plugin_(plugin), line_(std::move(line)), cancel_(std::move(cancel)),
+          closing_(std::move(closing)) {}
+
+    struct Busy {
+        LinkWorker& w;
+        explicit Busy(LinkWorker& worker) : w(worker) { ++w.depth_; }
+        ~Busy() {
+            if (--w.depth_ == 0 && w.closeRequested_)
+                w.close();
+        }
+    };
+    template <class F> bool later(F&& f) {
+        if (depth_ == 0)
+            return false;
+        QTimer::singleShot(5, this, std::forward<F>(f));
+        return true;
+    }
 
     void open() {
+        if (later([this] { open(); }))
+            return;
+        Busy busy(*this);
         QString error;
         t_ = plugin_.openClient(line_, error);
         if (!t_) {
             post([error](LinkController* c) { emit c->opened(false, error); });
             return;
         }
-        meter_ = std::make_unique<MeterTransport>(*t_, cancel_);
+        meter_ = std::make_unique<MeterTransport>(*t_, cancel_, closing_);
         link_ = std::make_unique<link::Link>(*meter_);
         link::LiveState live;
         std::vector<std::uint16_t> regs;
         const link::Block& cb = link_->map().block(link::BlockKind::C);
-        link::LinkError e = link::identify(*link_, live);
-        if (!e)
-            e = link_->read(cb.first, cb.count(), regs);
+        link::LinkError e;
+        try {
+            e = link::identify(*link_, live);
+            if (!e)
+                e = link_->read(cb.first, cb.count(), regs);
+        } catch (const Cancelled&) {
+            e = {link::LinkError::Kind::NoAnswer, 0, "closed"};
+        }
         if (e) {
             const QString why = fromStd(e.message);
             link_.reset();
@@ -102,10 +130,14 @@ public:
         timer_->setInterval(100);
         connect(timer_, &QTimer::timeout, this, [this] { poll(); });
         timer_->start();
-        poll();
     }
 
     void close() {
+        if (depth_ > 0) { // an exchange is under way: close when it unwinds
+            closeRequested_ = true;
+            return;
+        }
+        closeRequested_ = false;
         if (timer_)
             timer_->stop();
         link_.reset();
@@ -114,8 +146,16 @@ public:
     }
 
     void poll() {
-        if (!link_)
+        if (!link_ || depth_ > 0) // the next tick polls
             return;
+        Busy busy(*this);
+        try {
+            pollOnce();
+        } catch (const Cancelled&) {
+        }
+    }
+
+    void pollOnce() {
         link::LiveState live;
         engine::InterfaceWords words;
         std::vector<std::uint16_t> regs;
@@ -157,8 +197,11 @@ public:
     }
 
     void pull() {
+        if (later([this] { pull(); }))
+            return;
         if (!link_)
             return;
+        Busy busy(*this);
         cancel_->store(false);
         meter_->cancellable = true;
         link::PullResult r;
@@ -199,8 +242,11 @@ public:
     }
 
     void push(const profile::MachineProfile& file) {
+        if (later([this, file] { push(file); }))
+            return;
         if (!link_)
             return;
+        Busy busy(*this);
         cancel_->store(false);
         meter_->cancellable = true;
         link::PushReport rep;
@@ -246,7 +292,10 @@ private:
     }
     void abortTransfer() {
         const std::uint16_t abort[] = {static_cast<std::uint16_t>(link::TransferCommand::Abort)};
-        (void)link_->write(link_->map().transfer.command, abort);
+        try {
+            (void)link_->write(link_->map().transfer.command, abort);
+        } catch (const Cancelled&) { // closing: the controller drops the text on its own next begin
+        }
     }
     void report() {
         LineInfo info;
@@ -277,7 +326,9 @@ private:
     LinkController* owner_;
     linkplugin::LinkPlugin& plugin_;
     linkplugin::LineSettings line_;
-    std::shared_ptr<std::atomic<bool>> cancel_;
+    std::shared_ptr<std::atomic<bool>> cancel_, closing_;
+    int depth_ = 0;
+    bool closeRequested_ = false;
     std::unique_ptr<linkplugin::ClientTransport> t_;
     std::unique_ptr<MeterTransport> meter_;
     std::unique_ptr<link::Link> link_;
@@ -294,7 +345,7 @@ LinkController::LinkController(linkplugin::LinkPlugin& plugin, const linkplugin:
     state_.connected = false;
     state_.hasLcd = false;
     state_.hasServoData = false;
-    worker_ = new LinkWorker(this, plugin_, line_, cancel_);
+    worker_ = new LinkWorker(this, plugin_, line_, cancel_, closing_);
     worker_->moveToThread(&thread_);
     thread_.setObjectName("controller-link");
     thread_.start();
@@ -302,6 +353,7 @@ LinkController::LinkController(linkplugin::LinkPlugin& plugin, const linkplugin:
 
 LinkController::~LinkController() {
     cancel_->store(true);
+    closing_->store(true); // an operation under way unwinds at its next exchange
     QMetaObject::invokeMethod(worker_, [w = worker_] { w->close(); }, Qt::BlockingQueuedConnection);
     thread_.quit();
     thread_.wait();

@@ -87,6 +87,7 @@ private:
     QThread thread_;
     LinkWorker* worker_ = nullptr;
     std::shared_ptr<std::atomic<bool>> cancel_ = std::make_shared<std::atomic<bool>>(false);
+    std::shared_ptr<std::atomic<bool>> closing_ = std::make_shared<std::atomic<bool>>(false);
 };
 
 } // namespace k528::studio
