@@ -142,62 +142,6 @@
         <source>A program is running: stop it (RESET) before loading programs.</source>
         <translation type="unfinished" />
     </message>
-    <message>
-        <source>Fix the syntax errors first: %1</source>
-        <translation>Fix the syntax errors first: %1</translation>
-    </message>
-    <message>
-        <source>The file has no program L%1</source>
-        <translation>The file has no program L%1</translation>
-    </message>
-    <message>
-        <source>error</source>
-        <translation>error</translation>
-    </message>
-    <message>
-        <source>warning</source>
-        <translation>warning</translation>
-    </message>
-    <message>
-        <source>none (the language only)</source>
-        <translation>none (the language only)</translation>
-    </message>
-    <message>
-        <source>File: %1</source>
-        <translation>File: %1</translation>
-    </message>
-    <message>
-        <source>Machine: %1    Date: %2</source>
-        <translation>Machine: %1    Date: %2</translation>
-    </message>
-    <message>
-        <source>Errors: %1, warnings: %2    Page %3 of %4</source>
-        <translation>Errors: %1, warnings: %2    Page %3 of %4</translation>
-    </message>
-    <message>
-        <source>%1 cannot be written: %2</source>
-        <translation>%1 cannot be written: %2</translation>
-    </message>
-    <message>
-        <source>%1 cannot be written</source>
-        <translation>%1 cannot be written</translation>
-    </message>
-    <message>
-        <source>The database has no machine %1</source>
-        <translation>The database has no machine %1</translation>
-    </message>
-    <message>
-        <source>Not saved: fix the syntax errors first: %1</source>
-        <translation>Not saved: fix the syntax errors first: %1</translation>
-    </message>
-    <message>
-        <source>Not saved: every program needs its %L header in the machine's memory</source>
-        <translation>Not saved: every program needs its %L header in the machine's memory</translation>
-    </message>
-    <message>
-        <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
-        <translation>Not saved: %1 was changed in the database since revision %2 was opened (%3)</translation>
-    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -251,11 +195,11 @@
     </message>
     <message>
         <source>homed</source>
-        <translation type="unfinished" />
+        <translation>homed</translation>
     </message>
     <message>
         <source>not homed</source>
-        <translation type="unfinished" />
+        <translation>not homed</translation>
     </message>
     <message>
         <source>loop closed</source>
@@ -419,265 +363,294 @@
     </message>
 </context>
 <context>
-    <name>k528::studio::DebugPanel</name>
+    <name>k528::studio::ControllerDock</name>
     <message>
-        <source>Type an R-parameter number, R0..R299.</source>
-        <translation>Type an R-parameter number, R0..R299.</translation>
+        <source>Controller</source>
+        <translation>Controller</translation>
     </message>
     <message>
-        <source>A program is under way: stop it first.</source>
-        <translation>A program is under way: stop it first.</translation>
+        <source>&amp;Controller</source>
+        <translation>&amp;Controller</translation>
     </message>
     <message>
-        <source>Open a program file first.</source>
-        <translation>Open a program file first.</translation>
+        <source>&amp;Connect to the controller</source>
+        <translation>&amp;Connect to the controller</translation>
     </message>
     <message>
-        <source>The program under way is another file's.</source>
-        <translation>The program under way is another file's.</translation>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
     </message>
     <message>
-        <source>R-parameters are R0..R299, not R%1.</source>
-        <translation>R-parameters are R0..R299, not R%1.</translation>
+        <source>&amp;Pull into the database</source>
+        <translation>&amp;Pull into the database</translation>
     </message>
     <message>
-        <source>R%1 was not set: %2</source>
-        <translation>R%1 was not set: %2</translation>
+        <source>Push a &amp;file...</source>
+        <translation>Push a &amp;file...</translation>
     </message>
     <message>
-        <source>R%1: «%2» is not a whole number.</source>
-        <translation>R%1: «%2» is not a whole number.</translation>
+        <source>Push a database &amp;machine</source>
+        <translation>Push a database &amp;machine</translation>
     </message>
     <message>
-        <source>Run</source>
-        <translation>Run</translation>
+        <source>Line (RS485, Modbus RTU)</source>
+        <translation>Line (RS485, Modbus RTU)</translation>
     </message>
     <message>
-        <source>Send the file and run its first program (homing as the operator would), or continue</source>
-        <translation>Send the file and run its first program (homing as the operator would), or continue</translation>
+        <source>Live monitor</source>
+        <translation>Live monitor</translation>
     </message>
     <message>
-        <source>Hold</source>
-        <translation>Hold</translation>
+        <source>Plugin</source>
+        <translation>Plugin</translation>
     </message>
     <message>
-        <source>«Стоп»: the motion stops, «Пуск» continues</source>
-        <translation>«Стоп»: the motion stops, «Пуск» continues</translation>
+        <source>Port</source>
+        <translation>Port</translation>
     </message>
     <message>
-        <source>Continue</source>
-        <translation>Continue</translation>
+        <source>Baud</source>
+        <translation>Baud</translation>
     </message>
     <message>
-        <source>«Пуск»: continue the held program</source>
-        <translation>«Пуск»: continue the held program</translation>
+        <source>Parity</source>
+        <translation>Parity</translation>
     </message>
     <message>
-        <source>Single frame</source>
-        <translation>Single frame</translation>
+        <source>Address</source>
+        <translation>Address</translation>
     </message>
     <message>
-        <source>Stop after each frame; «Пуск» runs the next one</source>
-        <translation>Stop after each frame; «Пуск» runs the next one</translation>
+        <source>none</source>
+        <translation>none</translation>
     </message>
     <message>
-        <source>Run to cursor</source>
-        <translation>Run to cursor</translation>
+        <source>even</source>
+        <translation>even</translation>
     </message>
     <message>
-        <source>Run until the frame at the cursor, stopping before it</source>
-        <translation>Run until the frame at the cursor, stopping before it</translation>
+        <source>odd</source>
+        <translation>odd</translation>
     </message>
     <message>
-        <source>Stop</source>
-        <translation>Stop</translation>
+        <source>Ports</source>
+        <translation>Ports</translation>
     </message>
     <message>
-        <source>«Сброс»: the program ends without continuation</source>
-        <translation>«Сброс»: the program ends without continuation</translation>
+        <source>List the system's serial ports again</source>
+        <translation>List the system's serial ports again</translation>
     </message>
     <message>
-        <source>Reset</source>
-        <translation>Reset</translation>
+        <source>Pull into the database</source>
+        <translation>Pull into the database</translation>
     </message>
     <message>
-        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
-        <translation>«Сброс» and ESC: end the program and acknowledge the messages</translation>
+        <source>Push a file...</source>
+        <translation>Push a file...</translation>
     </message>
     <message>
-        <source>Speed</source>
-        <translation>Speed</translation>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
     </message>
     <message>
-        <source>fastest</source>
-        <translation>fastest</translation>
+        <source>Show on the K923, Program, messages and axes</source>
+        <translation>Show on the K923, Program, messages and axes</translation>
     </message>
     <message>
-        <source>real time</source>
-        <translation>real time</translation>
+        <source>Disconnect</source>
+        <translation>Disconnect</translation>
     </message>
     <message>
-        <source>Call stack</source>
-        <translation>Call stack</translation>
+        <source>Connect</source>
+        <translation>Connect</translation>
     </message>
     <message>
-        <source>R158</source>
-        <translation>R158</translation>
+        <source>No controller-link plugin was found (searched: %1). %2</source>
+        <translation>No controller-link plugin was found (searched: %1). %2</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the controller is on.</source>
+        <translation>Choose the serial port the controller is on.</translation>
+    </message>
+    <message>
+        <source>No connection on %1: %2</source>
+        <translation>No connection on %1: %2</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Connected: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>memory read</source>
+        <translation>memory read</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+    <message>
+        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
+        <translation>The push did not start: the controller's memory could not be read (%1); nothing was sent</translation>
+    </message>
+    <message>
+        <source>Pull failed: %1</source>
+        <translation>Pull failed: %1</translation>
+    </message>
+    <message>
+        <source>Pulled, but not kept in the database: %1</source>
+        <translation>Pulled, but not kept in the database: %1</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</source>
+        <translation>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs into %2, revision %3 (%4 changes)</source>
+        <translation>Pulled %1 programs into %2, revision %3 (%4 changes)</translation>
+    </message>
+    <message>
+        <source>pushed</source>
+        <translation>pushed</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>Pushed %1: written and verified %2</source>
+        <translation>Pushed %1: written and verified %2</translation>
+    </message>
+    <message>
+        <source>Push of %1 stopped: %2. Written and verified before: %3</source>
+        <translation>Push of %1 stopped: %2. Written and verified before: %3</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Connecting to %1...</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Disconnected</translation>
+    </message>
+    <message>
+        <source>Pulling the controller's memory...</source>
+        <translation>Pulling the controller's memory...</translation>
+    </message>
+    <message>
+        <source>Push a machine file</source>
+        <translation>Push a machine file</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m *.txt);;All files (*)</source>
+        <translation>Machine files (*.k528m *.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be pushed: %2; nothing was sent</source>
+        <translation>%1 cannot be pushed: %2; nothing was sent</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>The machine %1 cannot be loaded: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Reading the controller's memory to show what %1 changes...</translation>
+    </message>
+    <message>
+        <source>Push %1 to the controller</source>
+        <translation>Push %1 to the controller</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>The controller already holds what %1 has: nothing changes.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+    <message>
+        <source>Push</source>
+        <translation>Push</translation>
+    </message>
+    <message>
+        <source>Pushing %1...</source>
+        <translation>Pushing %1...</translation>
+    </message>
+    <message>
+        <source>Push of %1 not started; nothing was sent</source>
+        <translation>Push of %1 not started; nothing was sent</translation>
+    </message>
+    <message>
+        <source>Check what %1 changes, then push.</source>
+        <translation>Check what %1 changes, then push.</translation>
+    </message>
+    <message>
+        <source>Cancelling at the next exchange...</source>
+        <translation>Cancelling at the next exchange...</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
+        <translation>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>power-on</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, running</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
     </message>
     <message>
         <source>Program</source>
         <translation>Program</translation>
     </message>
     <message>
-        <source>Frame</source>
-        <translation>Frame</translation>
+        <source>L%1, frame N%2</source>
+        <translation>L%1, frame N%2</translation>
     </message>
     <message>
-        <source>Line</source>
-        <translation>Line</translation>
+        <source>Override</source>
+        <translation>Override</translation>
     </message>
     <message>
-        <source>Watch</source>
-        <translation>Watch</translation>
+        <source>%1 mm (machine %2), following error %3 mm, %4</source>
+        <translation>%1 mm (machine %2), following error %3 mm, %4</translation>
     </message>
     <message>
-        <source>Add an R-parameter: R12, Enter</source>
-        <translation>Add an R-parameter: R12, Enter</translation>
+        <source>homed</source>
+        <translation>homed</translation>
     </message>
     <message>
-        <source>R</source>
-        <translation>R</translation>
+        <source>not homed</source>
+        <translation>not homed</translation>
     </message>
     <message>
-        <source>Value</source>
-        <translation>Value</translation>
+        <source>Alarms</source>
+        <translation>Alarms</translation>
     </message>
     <message>
-        <source>Meaning</source>
-        <translation>Meaning</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::DebugSession</name>
-    <message>
-        <source>There is no frame at or after line %1.</source>
-        <translation>There is no frame at or after line %1.</translation>
+        <source>K LEDs</source>
+        <translation>K LEDs</translation>
     </message>
     <message>
-        <source>A program is under way: stop it first.</source>
-        <translation>A program is under way: stop it first.</translation>
+        <source>Machine messages</source>
+        <translation>Machine messages</translation>
     </message>
     <message>
-        <source>The controller holds no program L%1.</source>
-        <translation>The controller holds no program L%1.</translation>
+        <source>Message</source>
+        <translation>Message</translation>
     </message>
     <message>
-        <source>The emergency stop is pressed: pull it out on the machine's panel.</source>
-        <translation>The emergency stop is pressed: pull it out on the machine's panel.</translation>
-    </message>
-    <message>
-        <source>Switching the drives on…</source>
-        <translation>Switching the drives on…</translation>
-    </message>
-    <message>
-        <source>The reference-point mode was refused: %1</source>
-        <translation>The reference-point mode was refused: %1</translation>
-    </message>
-    <message>
-        <source>Reference point of %1…</source>
-        <translation>Reference point of %1…</translation>
-    </message>
-    <message>
-        <source>АВТОМАТ was refused: %1</source>
-        <translation>АВТОМАТ was refused: %1</translation>
-    </message>
-    <message>
-        <source>Program L%1 was refused: %2</source>
-        <translation>Program L%1 was refused: %2</translation>
-    </message>
-    <message>
-        <source>The machine did not get ready: the drives are off (see the machine's messages).</source>
-        <translation>The machine did not get ready: the drives are off (see the machine's messages).</translation>
-    </message>
-    <message>
-        <source>The reference-point cycle of %1 stopped with a message.</source>
-        <translation>The reference-point cycle of %1 stopped with a message.</translation>
-    </message>
-    <message>
-        <source>The reference-point cycle of %1 ended without the reference point.</source>
-        <translation>The reference-point cycle of %1 ended without the reference point.</translation>
-    </message>
-    <message>
-        <source>The reference-point cycle of %1 did not start.</source>
-        <translation>The reference-point cycle of %1 did not start.</translation>
-    </message>
-    <message>
-        <source>L%1 runs.</source>
-        <translation>L%1 runs.</translation>
-    </message>
-    <message>
-        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
-        <translation>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</translation>
-    </message>
-    <message>
-        <source>L%1 ended.</source>
-        <translation>L%1 ended.</translation>
-    </message>
-    <message>
-        <source>The program stopped with a message: %1</source>
-        <translation>The program stopped with a message: %1</translation>
-    </message>
-    <message>
-        <source>No machine</source>
-        <translation>No machine</translation>
-    </message>
-    <message>
-        <source>Starting L%1…</source>
-        <translation>Starting L%1…</translation>
-    </message>
-    <message>
-        <source>L%1 N%2 (line %3)</source>
-        <translation>L%1 N%2 (line %3)</translation>
-    </message>
-    <message>
-        <source>L%1 (line %2)</source>
-        <translation>L%1 (line %2)</translation>
-    </message>
-    <message>
-        <source>No program</source>
-        <translation>No program</translation>
-    </message>
-    <message>
-        <source>Running %1</source>
-        <translation>Running %1</translation>
-    </message>
-    <message>
-        <source>M00 at %1: «Пуск» continues</source>
-        <translation>M00 at %1: «Пуск» continues</translation>
-    </message>
-    <message>
-        <source>Breakpoint: before %1</source>
-        <translation>Breakpoint: before %1</translation>
-    </message>
-    <message>
-        <source>Single frame: before %1</source>
-        <translation>Single frame: before %1</translation>
-    </message>
-    <message>
-        <source>Run to cursor: before %1</source>
-        <translation>Run to cursor: before %1</translation>
-    </message>
-    <message>
-        <source>Held at %1: «Пуск» continues</source>
-        <translation>Held at %1: «Пуск» continues</translation>
-    </message>
-    <message>
-        <source>Ended at %1</source>
-        <translation>Ended at %1</translation>
-    </message>
-    <message>
-        <source>Stopped by a message at %1</source>
-        <translation>Stopped by a message at %1</translation>
+        <source>Programs</source>
+        <translation>Programs</translation>
     </message>
 </context>
 <context>
@@ -809,182 +782,6 @@
     <message>
         <source>Message</source>
         <translation>Message</translation>
-    </message>
-    <message>
-        <source>&amp;Editor</source>
-        <translation>&amp;Editor</translation>
-    </message>
-    <message>
-        <source>Refactor</source>
-        <translation>Refactor</translation>
-    </message>
-    <message>
-        <source>Renumber frames…</source>
-        <translation>Renumber frames…</translation>
-    </message>
-    <message>
-        <source>Move or copy a program…</source>
-        <translation>Move or copy a program…</translation>
-    </message>
-    <message>
-        <source>Format the file</source>
-        <translation>Format the file</translation>
-    </message>
-    <message>
-        <source>Listing</source>
-        <translation>Listing</translation>
-    </message>
-    <message>
-        <source>Print…</source>
-        <translation>Print…</translation>
-    </message>
-    <message>
-        <source>Export PDF…</source>
-        <translation>Export PDF…</translation>
-    </message>
-    <message>
-        <source>Machine of this file</source>
-        <translation>Machine of this file</translation>
-    </message>
-    <message>
-        <source>Machine: %1</source>
-        <translation>Machine: %1</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>none</translation>
-    </message>
-    <message>
-        <source>The machine this file is checked for: its limits, feeds and axes</source>
-        <translation>The machine this file is checked for: its limits, feeds and axes</translation>
-    </message>
-    <message>
-        <source>Open from the database…</source>
-        <translation>Open from the database…</translation>
-    </message>
-    <message>
-        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
-        <translation>The programs and messages of a machine of the database; saving writes its next revision</translation>
-    </message>
-    <message>
-        <source>The machine %1 cannot be loaded: %2</source>
-        <translation>The machine %1 cannot be loaded: %2</translation>
-    </message>
-    <message>
-        <source>No file is open</source>
-        <translation>No file is open</translation>
-    </message>
-    <message>
-        <source>The workstation's machine (%1)</source>
-        <translation>The workstation's machine (%1)</translation>
-    </message>
-    <message>
-        <source>The workstation's machine (none)</source>
-        <translation>The workstation's machine (none)</translation>
-    </message>
-    <message>
-        <source>None: the language only</source>
-        <translation>None: the language only</translation>
-    </message>
-    <message>
-        <source>Renumbered every program from %1 by %2</source>
-        <translation>Renumbered every program from %1 by %2</translation>
-    </message>
-    <message>
-        <source>Renumbered L%1 from %2 by %3</source>
-        <translation>Renumbered L%1 from %2 by %3</translation>
-    </message>
-    <message>
-        <source>Copied L%1 to L%2</source>
-        <translation>Copied L%1 to L%2</translation>
-    </message>
-    <message>
-        <source>Moved L%1 to L%2</source>
-        <translation>Moved L%1 to L%2</translation>
-    </message>
-    <message>
-        <source>Formatted</source>
-        <translation>Formatted</translation>
-    </message>
-    <message>
-        <source>Renumber frames</source>
-        <translation>Renumber frames</translation>
-    </message>
-    <message>
-        <source>Every program</source>
-        <translation>Every program</translation>
-    </message>
-    <message>
-        <source>First number</source>
-        <translation>First number</translation>
-    </message>
-    <message>
-        <source>Step</source>
-        <translation>Step</translation>
-    </message>
-    <message>
-        <source>The file has no program</source>
-        <translation>The file has no program</translation>
-    </message>
-    <message>
-        <source>Move or copy a program</source>
-        <translation>Move or copy a program</translation>
-    </message>
-    <message>
-        <source>Keep the program (copy)</source>
-        <translation>Keep the program (copy)</translation>
-    </message>
-    <message>
-        <source>New number</source>
-        <translation>New number</translation>
-    </message>
-    <message>
-        <source>%1 (database, revision %2)</source>
-        <translation>%1 (database, revision %2)</translation>
-    </message>
-    <message>
-        <source>Listing of %1 pages written to %2</source>
-        <translation>Listing of %1 pages written to %2</translation>
-    </message>
-    <message>
-        <source>Export the listing</source>
-        <translation>Export the listing</translation>
-    </message>
-    <message>
-        <source>PDF (*.pdf)</source>
-        <translation>PDF (*.pdf)</translation>
-    </message>
-    <message>
-        <source>Printed %1 pages</source>
-        <translation>Printed %1 pages</translation>
-    </message>
-    <message>
-        <source>The listing could not be printed</source>
-        <translation>The listing could not be printed</translation>
-    </message>
-    <message>
-        <source>Opened the programs of %1, revision %2</source>
-        <translation>Opened the programs of %1, revision %2</translation>
-    </message>
-    <message>
-        <source>The database has no machines</source>
-        <translation>The database has no machines</translation>
-    </message>
-    <message>
-        <source>Open from the database</source>
-        <translation>Open from the database</translation>
-    </message>
-    <message>
-        <source>Machine</source>
-        <translation>Machine</translation>
-    </message>
-    <message>
-        <source>%1 saved as revision %2</source>
-        <translation>%1 saved as revision %2</translation>
-    </message>
-    <message>
-        <source>%1: the database already holds these programs (revision %2)</source>
-        <translation>%1: the database already holds these programs (revision %2)</translation>
     </message>
 </context>
 <context>
@@ -1388,6 +1185,29 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkController</name>
+    <message>
+        <source>cancelled; nothing was kept</source>
+        <translation>cancelled; nothing was kept</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-parameters</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>messages</translation>
+    </message>
+    <message>
+        <source>cancelled; the program being sent was not committed</source>
+        <translation>cancelled; the program being sent was not committed</translation>
+    </message>
+    <message>
+        <source>%1, address %2, %3 bit/s</source>
+        <translation>%1, address %2, %3 bit/s</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MachinePanelWidget</name>
     <message>
         <source>SPINDLE</source>
@@ -1665,7 +1485,7 @@
     </message>
     <message>
         <source>Machine</source>
-        <translation>Machine</translation>
+        <translation type="unfinished" />
     </message>
     <message>
         <source>The machine %1 cannot be loaded: %2</source>
@@ -1677,7 +1497,7 @@
     </message>
     <message>
         <source>Machine: %1</source>
-        <translation>Machine: %1</translation>
+        <translation type="unfinished" />
     </message>
     <message>
         <source>Machine: %1 (%2)</source>
@@ -1730,6 +1550,10 @@
     <message>
         <source>Editor</source>
         <translation>Editor</translation>
+    </message>
+    <message>
+        <source>The controller on the link takes no keys: press them on its own K923</source>
+        <translation>The controller on the link takes no keys: press them on its own K923</translation>
     </message>
 </context>
 <context>
@@ -1971,6 +1795,13 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Oscilloscope</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SimulatedController</name>
+    <message>
+        <source>simulated %1</source>
+        <translation>simulated %1</translation>
     </message>
 </context>
 <context>

@@ -8,6 +8,7 @@
 
 #include "backplot/vtk_gl_widget.h"
 #include "language.h"
+#include "link_plugins.h"
 #include "main_window.h"
 #include "profile/builtin.h"
 #include "session/machine_source.h"
@@ -35,8 +36,20 @@ int main(int argc, char** argv) {
         "Machine to simulate: a machine of the database, a built-in profile (training-lathe, "
         "grinder-205) or a machine file (default: the last one chosen, else training-lathe).",
         "name|path");
-    cli.addOptions({langOption, profileOption, shotOption, delayOption});
+    QCommandLineOption pluginsOption("list-plugins",
+                                     "List the controller-link plugins found (the Controller menu's) and exit.");
+    cli.addOptions({langOption, profileOption, shotOption, delayOption, pluginsOption});
     cli.process(app);
+    if (cli.isSet(pluginsOption)) {
+        for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
+            if (f.plugin)
+                std::printf("plugin %s %s: %s (%s)\n", qPrintable(f.name), qPrintable(f.version),
+                            qPrintable(f.transport), qPrintable(f.file));
+            else
+                std::printf("refused %s: %s\n", qPrintable(f.file), qPrintable(f.refused));
+        std::printf("searched: %s\n", qPrintable(k528::linkplugin::searchPath().join(", ")));
+        return 0;
+    }
 
     const QString lang = cli.isSet(langOption) ? cli.value(langOption) : k528::studio::savedOrSystemLanguage();
     if (!k528::studio::setLanguage(lang)) {

@@ -16,6 +16,8 @@
 
 #include "backplot/backplot_dock.h"
 #include "backplot/backplot_widget.h"
+#include "controller/controller_dock.h"
+#include "controller/simulated_controller.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
@@ -49,7 +51,9 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     setCentralWidget(workArea_);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     session_ = new SimulationSession(machine_.profile, this);
-    programMonitor_ = new ProgramMonitor(*session_, workArea_);
+    simController_ = new SimulatedController(*session_, this);
+    viewed_ = simController_;
+    programMonitor_ = new ProgramMonitor(*viewed_, workArea_);
     workArea_->addTab(programMonitor_, QString());
     programEditor_ = new EditorTab(session_, workArea_);
     workArea_->addTab(programEditor_, QString());
@@ -95,14 +99,15 @@ void MainWindow::createDocks() {
     // The K923 panel: the session's panel model draws it and takes its keys.
     delete k923Dock_->widget();
     k923_ = new K923Widget(k923Dock_);
-    k923_->setDisplay(session_->panel().display());
+    k923_->setDisplay(viewed_->state().display);
     k923Dock_->setWidget(k923_);
     connect(k923_, &K923Widget::keyPressed, this, [this](panel::KeyPress k) {
-        session_->panel().press(k);
-        k923_->setDisplay(session_->panel().display());
+        if (viewed_->acceptsKeys())
+            viewed_->pressKey(k); // updated() redraws the panel
+        else
+            statusBar()->showMessage(tr("The controller on the link takes no keys: press them on its own K923"), 5000);
     });
-    connect(session_, &SimulationSession::advanced, k923_,
-            [this] { k923_->setDisplay(session_->panel().display()); });
+    connect(viewed_, &Controller::updated, k923_, [this] { k923_->setDisplay(viewed_->state().display); });
     machineDock_ = addDock("dock.machine", Qt::RightDockWidgetArea);
     delete machineDock_->widget();
     auto* scroll = new QScrollArea(machineDock_);
@@ -117,11 +122,11 @@ void MainWindow::createDocks() {
     splitDockWidget(k923Dock_, machineDock_, Qt::Horizontal);
     messagesDock_ = addDock("dock.messages", Qt::BottomDockWidgetArea);
     delete messagesDock_->widget();
-    messagesView_ = new MessagesView(*session_, messagesDock_);
+    messagesView_ = new MessagesView(*viewed_, messagesDock_);
     messagesDock_->setWidget(messagesView_);
     axesDock_ = addDock("dock.axes", Qt::BottomDockWidgetArea);
     delete axesDock_->widget();
-    axesView_ = new AxesView(*session_, axesDock_);
+    axesView_ = new AxesView(*viewed_, axesDock_);
     axesDock_->setWidget(axesView_);
     tabifyDockWidget(messagesDock_, axesDock_);
     messagesDock_->raise();
@@ -152,7 +157,26 @@ void MainWindow::createDocks() {
         connect(programEditor_, &EditorTab::cursorLineChanged, bp, &backplot::BackplotWidget::selectLine);
     }
     addScopeDock(this, *session_);
+    addControllerDock(this); // controller/controller_dock.cpp: the Controller menu and dock
 
+}
+
+void MainWindow::setViewedController(Controller* controller) {
+    Controller* c = controller ? controller : simController_;
+    if (c == viewed_)
+        return;
+    disconnect(viewed_, &Controller::updated, k923_, nullptr);
+    viewed_ = c;
+    connect(viewed_, &Controller::updated, k923_, [this] { k923_->setDisplay(viewed_->state().display); });
+    k923_->setDisplay(viewed_->state().display);
+    programMonitor_->setController(*viewed_);
+    messagesView_->setController(*viewed_);
+    axesView_->setController(*viewed_);
+    if (controller)
+        connect(controller, &QObject::destroyed, this, [this, controller] {
+            if (viewed_ == controller)
+                setViewedController(nullptr);
+        });
 }
 
 void MainWindow::createMenus() {
@@ -194,6 +218,10 @@ void MainWindow::createMenus() {
     connect(englishAction_, &QAction::triggered, this, [] { setLanguage("en"); });
 
     createSimulationMenu();
+    if (auto* c = findChild<ControllerDock*>("dock.controller")) {
+        menuBar()->addMenu(c->menu());
+        viewMenu_->addAction(c->toggleViewAction());
+    }
 
     helpMenu_ = menuBar()->addMenu(QString());
     aboutAction_ = helpMenu_->addAction(QString(), this, [this] {

@@ -24,6 +24,8 @@ class MessagesView;
 class AxesView;
 class ProgramMonitor;
 class EditorTab;
+class Controller;
+class SimulatedController;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -50,6 +52,12 @@ public:
     AxesView* axesView() const { return axesView_; }
     // The tab "Program" of the work area: the program the controller runs.
     ProgramMonitor* programMonitor() const { return programMonitor_; }
+    // The controller the K923 dock, the Program tab, the messages and the
+    // axes views show (controller/controller.h): the simulated one of this
+    // window, or a real one on the link (the Controller dock switches).
+    Controller* viewedController() const { return viewed_; }
+    SimulatedController* simulatedController() const { return simController_; }
+    void setViewedController(Controller* controller); // nullptr: the simulated one
     EditorTab* programEditor() const { return programEditor_; }
     // The machine this window simulates, and where it came from.
     const MachineChoice& machine() const { return machine_; }
@@ -106,6 +114,8 @@ private:
     QList<QAction*> faultActions_;
     QLabel* timeLabel_ = nullptr;
     SimulationSession* session_ = nullptr;
+    SimulatedController* simController_ = nullptr;
+    Controller* viewed_ = nullptr;
     MachinePanelWidget* machinePanel_ = nullptr;
     MessagesView* messagesView_ = nullptr;
     AxesView* axesView_ = nullptr;

@@ -8,7 +8,8 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 dpkg-deb -x "$deb" "$tmp/root"
 fail() { echo "FAIL: $*"; exit 1; }
-for f in usr/bin/k528 usr/bin/k528studio \
+for f in usr/bin/k528 usr/bin/k528studio usr/bin/k528-link \
+         usr/lib/k528studio/plugins/k528_modbus_rtu.so \
          usr/share/applications/k528studio.desktop \
          usr/share/icons/hicolor/scalable/apps/k528studio.svg \
          usr/share/metainfo/io.github.k528studio.K528Studio.metainfo.xml \
@@ -19,7 +20,16 @@ out=$("$tmp/root/usr/bin/k528" --version) || fail "k528 --version exited $?"
 [ "$out" = "k528 $version (K528 Studio)" ] || fail "unexpected version output: $out"
 studio=$(QT_QPA_PLATFORM=offscreen "$tmp/root/usr/bin/k528studio" --version) || fail "k528studio --version failed"
 echo "$studio" | grep -q "$version" || fail "unexpected k528studio version output: $studio"
+# The controller-link plugin in its installed place, found by k528 and the studio.
+plugins=$(env -u K528_PLUGIN_PATH "$tmp/root/usr/bin/k528" link --list) || fail "k528 link --list exited $?"
+echo "$plugins" | grep -q "^plugin modbus-rtu .*($tmp/root/usr/lib/k528studio/plugins/k528_modbus_rtu.so)" ||
+    fail "k528 link --list does not find the installed plugin: $plugins"
+splugins=$(env -u K528_PLUGIN_PATH QT_QPA_PLATFORM=offscreen "$tmp/root/usr/bin/k528studio" --list-plugins) ||
+    fail "k528studio --list-plugins exited $?"
+echo "$splugins" | grep -q "^plugin modbus-rtu .*($tmp/root/usr/lib/k528studio/plugins/k528_modbus_rtu.so)" ||
+    fail "k528studio does not find the installed plugin: $splugins"
 depends=$(dpkg-deb -f "$deb" Depends)
+echo "$depends" | grep -q libqt6serialbus6 || fail "Depends lacks Qt SerialBus (the link plugin): $depends"
 echo "$depends" | grep -q libqt6widgets6 || fail "Depends lacks Qt: $depends"
 echo "$depends" | grep -q libsqlite3 || fail "Depends lacks SQLite (core/db links it): $depends"
 db=$(K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" db init) || fail "k528 db init exited $?"

@@ -8,6 +8,7 @@
 #include "language.h"
 #include "machine/machine_panel.h"
 #include "machine/pendant_controls.h"
+#include "controller/simulated_controller.h"
 #include "machine/status_views.h"
 #include "main_window.h"
 #include "monitor/program_monitor.h"
@@ -72,8 +73,9 @@ private slots:
         SimulationSession session(profile::builtin("training-lathe"));
         session.setRunning(false); // time by hand: deterministic
         MachinePanelWidget panel(session);
-        MessagesView messages(session);
-        AxesView axes(session);
+        SimulatedController controller(session);
+        MessagesView messages(controller);
+        AxesView axes(controller);
         panel.resize(panel.sizeHint());
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));

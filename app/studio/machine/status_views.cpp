@@ -2,7 +2,7 @@
 
 #include "engine/interface_words.h"
 #include "language.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -32,8 +32,8 @@ QString dot(bool on, const char* color = "#2fbf4f") {
 // ---------------------------------------------------------------------------
 // MessagesView
 
-MessagesView::MessagesView(SimulationSession& session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+MessagesView::MessagesView(Controller& controller, QWidget* parent)
+    : QWidget(parent), controller_(&controller) {
     setObjectName("messagesView");
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(4, 4, 4, 4);
@@ -50,8 +50,17 @@ MessagesView::MessagesView(SimulationSession& session, QWidget* parent)
     list_->header()->setSectionResizeMode(2, QHeaderView::Stretch);
     lay->addWidget(list_);
     retranslate();
-    connect(&session_, &SimulationSession::advanced, this, &MessagesView::refresh);
+    connect(controller_, &Controller::updated, this, &MessagesView::refresh);
     refresh();
+}
+
+void MessagesView::setController(Controller& controller) {
+    if (controller_ == &controller)
+        return;
+    disconnect(controller_, nullptr, this, nullptr);
+    controller_ = &controller;
+    connect(controller_, &Controller::updated, this, &MessagesView::refresh);
+    retranslate();
 }
 
 void MessagesView::retranslate() {
@@ -67,7 +76,7 @@ void MessagesView::changeEvent(QEvent* e) {
 }
 
 void MessagesView::refresh() {
-    const engine::Controller& ctl = session_.controller();
+    const ControllerState& st = controller_->state();
     const bool ru = currentLanguage() == QLatin1String("ru");
     struct Row {
         QString source, number, text, state;
@@ -76,7 +85,7 @@ void MessagesView::refresh() {
     std::vector<Row> rows;
     const QColor red(0xb0, 0x1c, 0x1c), orange(0xb8, 0x62, 0x00), blue(0x1d, 0x4f, 0x91),
         grey(0x55, 0x5a, 0x60);
-    for (const engine::AlarmView& a : ctl.alarms()) {
+    for (const engine::AlarmView& a : st.alarms) {
         QString text = fromStd(ru ? a.textRu : a.textEn);
         if (a.program > 0)
             text += tr(" (L%1, line %2)").arg(a.program).arg(a.line);
@@ -84,8 +93,8 @@ void MessagesView::refresh() {
         rows.push_back({tr("Positioner"), QString::number(a.number), text,
                         a.active ? tr("active") : tr("waits for acknowledgement"), c});
     }
-    const engine::PlcMessagesView pm = ctl.plcMessages();
-    const profile::MachineProfile& prof = ctl.profile();
+    const engine::PlcMessagesView pm = st.plcMessages;
+    const profile::MachineProfile& prof = controller_->profile();
     const auto text = [&](const std::map<int, std::string>& texts, catalog::PlcGroup g, int k) {
         const auto it = texts.find(k);
         return it != texts.end() ? fromStd(it->second) : fromStd(catalog::plcMessageAddress(g, k));
@@ -109,7 +118,7 @@ void MessagesView::refresh() {
             rows.push_back({tr("PLC"), QStringLiteral("W%1").arg(k, 2, 10, QChar('0')),
                             text(prof.plcWork, catalog::PlcGroup::Work, k), tr("information"),
                             blue});
-    const engine::ProgramView pv = ctl.programView();
+    const engine::ProgramView& pv = st.program;
     if (pv.messageNumber > 0)
         rows.push_back({tr("Program"), QStringLiteral("#%1").arg(pv.messageNumber),
                         fromStd(pv.messageText), tr("information"), grey});
@@ -140,8 +149,8 @@ void MessagesView::refresh() {
 // ---------------------------------------------------------------------------
 // AxesView
 
-AxesView::AxesView(SimulationSession& session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+AxesView::AxesView(Controller& controller, QWidget* parent)
+    : QWidget(parent), controller_(&controller) {
     setObjectName("axesView");
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(4, 4, 4, 4);
@@ -173,7 +182,16 @@ AxesView::AxesView(SimulationSession& session, QWidget* parent)
     bits_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     lay->addWidget(bits_, 1);
     retranslate();
-    connect(&session_, &SimulationSession::advanced, this, &AxesView::refresh);
+    connect(controller_, &Controller::updated, this, &AxesView::refresh);
+}
+
+void AxesView::setController(Controller& controller) {
+    if (controller_ == &controller)
+        return;
+    disconnect(controller_, nullptr, this, nullptr);
+    controller_ = &controller;
+    connect(controller_, &Controller::updated, this, &AxesView::refresh);
+    retranslate();
 }
 
 void AxesView::retranslate() {
@@ -191,11 +209,9 @@ void AxesView::changeEvent(QEvent* e) {
 }
 
 void AxesView::refresh() {
-    const engine::Controller& ctl = session_.controller();
-    const machine::MachineView mv = session_.simulation().view();
+    const ControllerState& cs = controller_->state();
     for (int i = 0; i < 2; ++i) {
-        const engine::AxisId a = engine::axisAt(i);
-        const engine::AxisView v = ctl.axisView(a);
+        const engine::AxisView& v = cs.axes[static_cast<std::size_t>(i)];
         const auto set = [&](int c, const QString& s) {
             if (table_->item(i, c)->text() != s)
                 table_->item(i, c)->setText(s);
@@ -208,15 +224,17 @@ void AxesView::refresh() {
         }
         set(1, fromStd(units::formatDisc(v.currentDisc, v.scale)));
         set(2, fromStd(units::formatDisc(v.machineDisc, v.scale)));
-        set(3, fromStd(units::formatDisc(v.remainingDisc, v.scale)));
-        set(4,
-            QString::number(static_cast<double>(v.feedDiscPerMin) * v.scale.discreteMm(), 'f', 1));
+        // The link's map has no rest of path, feed or DAC: blank, not 0.
+        set(3, cs.hasServoData ? fromStd(units::formatDisc(v.remainingDisc, v.scale)) : QString());
+        set(4, cs.hasServoData
+                   ? QString::number(static_cast<double>(v.feedDiscPerMin) * v.scale.discreteMm(), 'f', 1)
+                   : QString());
         // Internal units: half a discrete of motion; µm of the displayed value.
         const double errUm = v.errorInternal / static_cast<double>(v.scale.internalPerDisc()) *
                              v.scale.discreteMm() * 1000.0;
         set(5, QString::number(errUm, 'f', 1));
-        set(6, QString::number(v.dac));
-        set(7, QString::number(v.dac / 204.8, 'f', 2));
+        set(6, cs.hasServoData ? QString::number(v.dac) : QString());
+        set(7, cs.hasServoData ? QString::number(v.dac / 204.8, 'f', 2) : QString());
         QStringList st;
         if (v.homing)
             st << tr("homing");
@@ -229,19 +247,19 @@ void AxesView::refresh() {
             st << tr("moving");
         else if (v.inPosition)
             st << tr("in position");
-        const machine::AxisPlantView& pv = mv.axes[static_cast<std::size_t>(i)];
-        if (pv.cam)
+        // The switches as the controller sees its inputs.
+        if (v.decelCam)
             st << tr("cam");
-        if (pv.limitPlus)
+        if (v.limitPlus)
             st << tr("limit +");
-        if (pv.limitMinus)
+        if (v.limitMinus)
             st << tr("limit -");
         if (v.fault)
             st << tr("fault %1").arg(v.fault);
         set(8, st.join(", "));
     }
 
-    const engine::InterfaceWords& w = ctl.words();
+    const engine::InterfaceWords& w = cs.words;
     const auto b = [&](engine::ZBit bit, const QString& label, const char* color = "#2fbf4f") {
         return dot(w.bit(bit), color) + QStringLiteral("&nbsp;") + label.toHtmlEscaped() +
                QStringLiteral("&nbsp;&nbsp; ");

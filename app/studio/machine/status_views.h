@@ -1,5 +1,6 @@
-// Live views of the simulated machine for the docks "dock.messages" and
-// "dock.axes", redrawn on SimulationSession::advanced() (only what changed).
+// Live views of the controller for the docks "dock.messages" and
+// "dock.axes", redrawn on Controller::updated() (only what changed): the
+// simulated one or a real one on the link (controller/controller.h).
 //
 // MessagesView: the positioner's messages 1..64 (appendix М, in the UI
 // language) and the PLC's machine alarms, system and work messages (the
@@ -19,12 +20,15 @@ class QLabel;
 
 namespace k528::studio {
 
-class SimulationSession;
+class Controller;
 
 class MessagesView : public QWidget {
     Q_OBJECT
 public:
-    explicit MessagesView(SimulationSession& session, QWidget* parent = nullptr);
+    explicit MessagesView(Controller& controller, QWidget* parent = nullptr);
+    // Shows another controller (the simulated one, or the link's).
+    void setController(Controller& controller);
+    Controller& controller() const { return *controller_; }
     QTreeWidget* list() const { return list_; }
     QSize sizeHint() const override { return {640, 170}; }
 
@@ -36,7 +40,7 @@ protected:
 
 private:
     void retranslate();
-    SimulationSession& session_;
+    Controller* controller_ = nullptr;
     QTreeWidget* list_ = nullptr;
     QLabel* summary_ = nullptr;
     std::vector<QString> last_;
@@ -45,7 +49,10 @@ private:
 class AxesView : public QWidget {
     Q_OBJECT
 public:
-    explicit AxesView(SimulationSession& session, QWidget* parent = nullptr);
+    explicit AxesView(Controller& controller, QWidget* parent = nullptr);
+    // Shows another controller (the simulated one, or the link's).
+    void setController(Controller& controller);
+    Controller& controller() const { return *controller_; }
     QTableWidget* table() const { return table_; }
     QLabel* bits() const { return bits_; }
     QSize sizeHint() const override { return {640, 170}; }
@@ -58,7 +65,7 @@ protected:
 
 private:
     void retranslate();
-    SimulationSession& session_;
+    Controller* controller_ = nullptr;
     QTableWidget* table_ = nullptr;
     QLabel* bits_ = nullptr;
     QString lastBits_;

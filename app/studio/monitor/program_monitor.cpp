@@ -1,8 +1,8 @@
 #include "monitor/program_monitor.h"
 
-#include "engine/controller.h"
+#include "controller/controller.h"
+#include "engine/types.h"
 #include "program/formatter.h"
-#include "session/simulation_session.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -45,8 +45,8 @@ QString stateName(engine::ProgramState s) {
 
 } // namespace
 
-ProgramMonitor::ProgramMonitor(SimulationSession& session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+ProgramMonitor::ProgramMonitor(Controller& controller, QWidget* parent)
+    : QWidget(parent), controller_(&controller) {
     setObjectName("programMonitor");
     choice_ = new QComboBox(this);
     choice_->setObjectName("programMonitor.choice");
@@ -65,8 +65,18 @@ ProgramMonitor::ProgramMonitor(SimulationSession& session, QWidget* parent)
     layout->addLayout(top);
     layout->addWidget(list_, 1);
     connect(choice_, &QComboBox::activated, this, [this] { refresh(); });
-    connect(&session_, &SimulationSession::advanced, this, &ProgramMonitor::refresh);
+    connect(controller_, &Controller::updated, this, &ProgramMonitor::refresh);
     retranslate();
+    refresh();
+}
+
+void ProgramMonitor::setController(Controller& controller) {
+    if (controller_ == &controller)
+        return;
+    disconnect(controller_, nullptr, this, nullptr);
+    controller_ = &controller;
+    connect(controller_, &Controller::updated, this, &ProgramMonitor::refresh);
+    revision_ = ~std::uint64_t{0};
     refresh();
 }
 
@@ -74,7 +84,7 @@ void ProgramMonitor::fillChoice() {
     const int pinned = choice_->currentData().toInt();
     choice_->clear();
     choice_->addItem(tr("Follow the controller"), 0);
-    for (const program::Program& p : session_.controller().programs().programs())
+    for (const program::Program& p : controller_->programs().programs())
         choice_->addItem(p.title ? QStringLiteral("L%1 (%2)").arg(p.number).arg(fromStd(*p.title))
                                  : QStringLiteral("L%1").arg(p.number),
                          p.number);
@@ -86,7 +96,7 @@ void ProgramMonitor::showProgram(int number) {
     shown_ = number;
     marked_ = -1;
     list_->clear();
-    const program::Program* p = session_.controller().programs().find(number);
+    const program::Program* p = controller_->programs().find(number);
     if (!p)
         return;
     for (const program::Frame& f : p->frames)
@@ -94,13 +104,13 @@ void ProgramMonitor::showProgram(int number) {
 }
 
 void ProgramMonitor::refresh() {
-    const engine::Controller& c = session_.controller();
+    const Controller& c = *controller_;
     if (c.programsRevision() != revision_) {
         revision_ = c.programsRevision();
         fillChoice();
         shown_ = -1; // redraw
     }
-    const engine::ProgramView v = c.programView();
+    const engine::ProgramView& v = c.state().program;
     const bool active = engine::programActive(v.state) || v.state == engine::ProgramState::Alarm;
     const int pinned = choice_->currentData().toInt();
     const int follow = active && v.program > 0 ? v.program : v.selectedProgram;

@@ -16,12 +16,14 @@ class QListWidget;
 
 namespace k528::studio {
 
-class SimulationSession;
+class Controller;
 
 class ProgramMonitor : public QWidget {
     Q_OBJECT
 public:
-    explicit ProgramMonitor(SimulationSession& session, QWidget* parent = nullptr);
+    explicit ProgramMonitor(Controller& controller, QWidget* parent = nullptr);
+    // Follows another controller (the simulated one, or the link's).
+    void setController(Controller& controller);
 
     // The program shown (0: none), and the row marked as executing (-1: none).
     int shownProgram() const { return shown_; }
@@ -40,7 +42,7 @@ private:
     void showProgram(int number);
     void retranslate();
 
-    SimulationSession& session_;
+    Controller* controller_ = nullptr;
     QComboBox* choice_ = nullptr; // "follow the controller", then L1..L99
     QLabel* status_ = nullptr;
     QListWidget* list_ = nullptr;

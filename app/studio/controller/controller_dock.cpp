@@ -1,0 +1,623 @@
+#include "controller/controller_dock.h"
+
+#include "controller/link_controller.h"
+#include "language.h"
+#include "link_plugins.h"
+#include "main_window.h"
+#include "profile/diff.h"
+#include "profile/text_format.h"
+#include "program/formatter.h"
+#include "program/parser.h"
+#include "session/machine_source.h"
+#include "units/units.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMainWindow>
+#include <QMenu>
+#include <QPlainTextEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+namespace k528::studio {
+
+namespace {
+
+QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+QString dot(bool on, const char* color) {
+    return QStringLiteral("<span style='color:%1'>●</span>").arg(on ? QString::fromLatin1(color) : QStringLiteral("#b9bdc1"));
+}
+
+QString mm(std::int64_t disc, const units::AxisScale& s) { return fromStd(units::formatDisc(disc, s)); }
+
+// What a push would leave in the controller: `memory` (just read) with what
+// `file` sends — C, R0..R149, the messages when it has any, its programs in
+// the canonical text the controller keeps (link::push).
+profile::MachineProfile afterPush(const profile::MachineProfile& memory, const profile::MachineProfile& file) {
+    profile::MachineProfile m = memory;
+    m.c = file.c;
+    for (int i = 0; i < 150; ++i) {
+        const auto it = file.r.find(i);
+        if (it != file.r.end() && it->second != 0)
+            m.r[i] = it->second;
+        else
+            m.r.erase(i);
+    }
+    if (!file.messages.empty())
+        m.messages = file.messages;
+    for (const auto& [n, text] : file.programs) {
+        program::ParseOptions po;
+        po.programNumber = n;
+        const program::ParseResult r = program::parse(text, po);
+        if (r.store.size() == 1) {
+            program::ProgramStore one;
+            one.insert(r.store.programs()[0]);
+            m.programs[n] = program::format(one);
+        } else {
+            m.programs[n] = text;
+        }
+    }
+    return m;
+}
+
+} // namespace
+
+ControllerDock* addControllerDock(MainWindow* window) {
+    auto* dock = new ControllerDock(window);
+    window->addDockWidget(Qt::RightDockWidgetArea, dock);
+    if (QDockWidget* machine = window->machineDock())
+        window->tabifyDockWidget(machine, dock);
+    if (QDockWidget* machine = window->machineDock())
+        machine->raise();
+    return dock;
+}
+
+ControllerDock::ControllerDock(MainWindow* window) : QDockWidget(window), window_(window) {
+    setObjectName("dock.controller");
+    setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+    for (const linkplugin::Found& f : linkplugin::discover()) {
+        if (f.plugin) {
+            plugins_.push_back(f.plugin);
+            pluginNames_ << QStringLiteral("%1 %2 (%3)").arg(f.name, f.version, f.transport);
+        } else {
+            pluginProblem_ += QStringLiteral("%1: %2\n").arg(f.file, f.refused);
+        }
+    }
+    build();
+    retranslate();
+    refreshPorts();
+    updateEnabled();
+}
+
+ControllerDock::~ControllerDock() = default;
+
+void ControllerDock::build() {
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the texts wrap to the dock's width
+    auto* body = new QWidget(scroll);
+    auto* lay = new QVBoxLayout(body);
+    lay->setContentsMargins(6, 6, 6, 6);
+
+    lineBox_ = new QGroupBox(body);
+    auto* form = new QFormLayout(lineBox_);
+    plugin_ = new QComboBox(lineBox_);
+    plugin_->setObjectName("controller.plugin");
+    plugin_->addItems(pluginNames_);
+    port_ = new QComboBox(lineBox_);
+    port_->setObjectName("controller.port");
+    port_->setEditable(true); // a pty or a port the system does not list
+    for (QComboBox* c : {plugin_, port_}) {
+        c->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        c->setMinimumContentsLength(14);
+    }
+    refreshPorts_ = new QPushButton(lineBox_);
+    refreshPorts_->setObjectName("controller.refreshPorts");
+    auto* portRow = new QHBoxLayout;
+    portRow->addWidget(port_, 1);
+    portRow->addWidget(refreshPorts_);
+    baud_ = new QComboBox(lineBox_);
+    baud_->setObjectName("controller.baud");
+    for (int b : {9600, 19200, 38400, 57600, 115200})
+        baud_->addItem(QString::number(b), b);
+    baud_->setCurrentIndex(baud_->count() - 1); // the manual's 115 200 (section 3.2)
+    parity_ = new QComboBox(lineBox_);
+    parity_->setObjectName("controller.parity");
+    parity_->addItem(QString(), QChar('N'));
+    parity_->addItem(QString(), QChar('E'));
+    parity_->addItem(QString(), QChar('O'));
+    address_ = new QSpinBox(lineBox_);
+    address_->setObjectName("controller.address");
+    address_->setRange(1, 247);
+    address_->setValue(1);
+    connect_ = new QPushButton(lineBox_);
+    connect_->setObjectName("controller.connect");
+    connect(connect_, &QPushButton::clicked, this, [this] {
+        if (link_)
+            disconnectLine();
+        else
+            connectLine();
+    });
+    connect(refreshPorts_, &QPushButton::clicked, this, &ControllerDock::refreshPorts);
+    for (int i = 0; i < 5; ++i)
+        captions_[i] = new QLabel(lineBox_);
+    form->addRow(captions_[0], plugin_);
+    form->addRow(captions_[1], portRow);
+    form->addRow(captions_[2], baud_);
+    form->addRow(captions_[3], parity_);
+    form->addRow(captions_[4], address_);
+    form->addRow(connect_);
+    lineState_ = new QLabel(lineBox_);
+    lineState_->setObjectName("controller.lineState");
+    lineState_->setWordWrap(true);
+    form->addRow(lineState_);
+    lay->addWidget(lineBox_);
+
+    auto* buttons = new QHBoxLayout;
+    pull_ = new QPushButton(body);
+    pull_->setObjectName("controller.pull");
+    push_ = new QPushButton(body);
+    push_->setObjectName("controller.push");
+    connect(pull_, &QPushButton::clicked, this, &ControllerDock::pullIntoDatabase);
+    connect(push_, &QPushButton::clicked, this, [this] { pushFile(); });
+    buttons->addWidget(pull_);
+    buttons->addWidget(push_);
+    lay->addLayout(buttons);
+    auto* prog = new QHBoxLayout;
+    progress_ = new QProgressBar(body);
+    progress_->setObjectName("controller.progress");
+    progress_->setRange(0, 1);
+    progress_->setValue(0);
+    progress_->setTextVisible(true);
+    progress_->setFormat(QString());
+    cancel_ = new QPushButton(body);
+    cancel_->setObjectName("controller.cancel");
+    connect(cancel_, &QPushButton::clicked, this, &ControllerDock::cancelTransfer);
+    prog->addWidget(progress_, 1);
+    prog->addWidget(cancel_);
+    lay->addLayout(prog);
+    transfer_ = new QLabel(body);
+    transfer_->setObjectName("controller.transfer");
+    transfer_->setWordWrap(true);
+    lay->addWidget(transfer_);
+    showOnViews_ = new QCheckBox(body);
+    showOnViews_->setObjectName("controller.showOnViews");
+    showOnViews_->setChecked(true);
+    connect(showOnViews_, &QCheckBox::toggled, this, [this](bool on) {
+        window_->setViewedController(on && link_ && link_->isOpen() ? link_.get() : nullptr);
+    });
+    lay->addWidget(showOnViews_);
+
+    monitorBox_ = new QGroupBox(body);
+    auto* mlay = new QVBoxLayout(monitorBox_);
+    monitor_ = new QLabel(monitorBox_);
+    monitor_->setObjectName("controller.monitor");
+    monitor_->setTextFormat(Qt::RichText);
+    monitor_->setWordWrap(true);
+    monitor_->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    monitor_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    mlay->addWidget(monitor_);
+    lay->addWidget(monitorBox_, 1);
+    lay->addStretch();
+    scroll->setWidget(body);
+    setWidget(scroll);
+
+    menu_ = new QMenu(this);
+    menu_->setObjectName("menu.controller");
+    connectAction_ = menu_->addAction(QString(), this, &ControllerDock::connectLine);
+    connectAction_->setObjectName("action.controller.connect");
+    disconnectAction_ = menu_->addAction(QString(), this, &ControllerDock::disconnectLine);
+    disconnectAction_->setObjectName("action.controller.disconnect");
+    menu_->addSeparator();
+    pullAction_ = menu_->addAction(QString(), this, &ControllerDock::pullIntoDatabase);
+    pullAction_->setObjectName("action.controller.pull");
+    pushFileAction_ = menu_->addAction(QString(), this, [this] { pushFile(); });
+    pushFileAction_->setObjectName("action.controller.pushFile");
+    pushMachineMenu_ = menu_->addMenu(QString());
+    pushMachineMenu_->setObjectName("menu.controller.pushMachine");
+    connect(pushMachineMenu_, &QMenu::aboutToShow, this, [this] {
+        pushMachineMenu_->clear();
+        for (const QString& n : machineNames())
+            pushMachineMenu_->addAction(n, this, [this, n] { pushMachine(n); })->setObjectName("action.controller.push." + n);
+    });
+    menu_->addSeparator();
+    menu_->addAction(toggleViewAction());
+}
+
+void ControllerDock::retranslate() {
+    setWindowTitle(tr("Controller"));
+    menu_->setTitle(tr("&Controller"));
+    connectAction_->setText(tr("&Connect to the controller"));
+    disconnectAction_->setText(tr("&Disconnect"));
+    pullAction_->setText(tr("&Pull into the database"));
+    pushFileAction_->setText(tr("Push a &file..."));
+    pushMachineMenu_->setTitle(tr("Push a database &machine"));
+    lineBox_->setTitle(tr("Line (RS485, Modbus RTU)"));
+    monitorBox_->setTitle(tr("Live monitor"));
+    captions_[0]->setText(tr("Plugin"));
+    captions_[1]->setText(tr("Port"));
+    captions_[2]->setText(tr("Baud"));
+    captions_[3]->setText(tr("Parity"));
+    captions_[4]->setText(tr("Address"));
+    parity_->setItemText(0, tr("none"));
+    parity_->setItemText(1, tr("even"));
+    parity_->setItemText(2, tr("odd"));
+    refreshPorts_->setText(tr("Ports"));
+    refreshPorts_->setToolTip(tr("List the system's serial ports again"));
+    pull_->setText(tr("Pull into the database"));
+    push_->setText(tr("Push a file..."));
+    cancel_->setText(tr("Cancel"));
+    showOnViews_->setText(tr("Show on the K923, Program, messages and axes"));
+    lastMonitor_.clear();
+    updateEnabled();
+    updateLine();
+    updateMonitor();
+}
+
+void ControllerDock::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QDockWidget::changeEvent(e);
+}
+
+void ControllerDock::refreshPorts() {
+    const QString current = port_->currentText();
+    port_->clear();
+    const int i = plugin_->currentIndex();
+    if (i >= 0 && i < static_cast<int>(plugins_.size()))
+        port_->addItems(plugins_[static_cast<std::size_t>(i)]->ports());
+    if (!current.isEmpty())
+        port_->setEditText(current);
+}
+
+void ControllerDock::updateEnabled() {
+    const bool open = link_ && link_->isOpen();
+    const bool busy = open && link_->busy();
+    const bool havePlugin = !plugins_.empty();
+    connect_->setText(link_ ? tr("Disconnect") : tr("Connect"));
+    connect_->setEnabled(havePlugin && !connecting_ && !busy);
+    for (QWidget* w : {static_cast<QWidget*>(plugin_), static_cast<QWidget*>(port_), static_cast<QWidget*>(baud_),
+                       static_cast<QWidget*>(parity_), static_cast<QWidget*>(address_)})
+        w->setEnabled(havePlugin && !link_);
+    connectAction_->setEnabled(havePlugin && !link_);
+    disconnectAction_->setEnabled(link_ && !busy);
+    for (QWidget* w : {static_cast<QWidget*>(pull_), static_cast<QWidget*>(push_)})
+        w->setEnabled(open && !busy && !preview_);
+    pullAction_->setEnabled(open && !busy && !preview_);
+    pushFileAction_->setEnabled(open && !busy && !preview_);
+    pushMachineMenu_->setEnabled(open && !busy && !preview_);
+    cancel_->setEnabled(busy);
+    if (!havePlugin)
+        lineState_->setText(tr("No controller-link plugin was found (searched: %1). %2")
+                                .arg(linkplugin::searchPath().join(", "), pluginProblem_.trimmed()));
+}
+
+void ControllerDock::say(const QString& text) {
+    lastMessage_ = text;
+    transfer_->setText(text);
+    window_->statusBar()->showMessage(text, 15000);
+}
+
+void ControllerDock::connectLine() {
+    if (link_ || plugins_.empty())
+        return;
+    const int i = std::max(0, plugin_->currentIndex());
+    linkplugin::LineSettings s;
+    s.port = port_->currentText().trimmed();
+    if (s.port.isEmpty()) {
+        say(tr("Choose the serial port the controller is on."));
+        return;
+    }
+    s.baud = baud_->currentData().toInt();
+    s.parity = parity_->currentData().toChar().toLatin1();
+    s.address = address_->value();
+    link_ = std::make_unique<LinkController>(*plugins_[static_cast<std::size_t>(i)], s, window_->machine().profile);
+    connecting_ = true;
+    LinkController* l = link_.get();
+    connect(l, &LinkController::opened, this, [this](bool ok, const QString& error) {
+        connecting_ = false;
+        if (!ok) {
+            say(tr("No connection on %1: %2").arg(link_->line().port, error));
+            link_.reset();
+            updateEnabled();
+            emit connectedChanged(false);
+            return;
+        }
+        say(tr("Connected: %1").arg(link_->description()));
+        if (showOnViews_->isChecked())
+            window_->setViewedController(link_.get());
+        updateEnabled();
+        emit connectedChanged(true);
+    });
+    connect(l, &LinkController::updated, this, &ControllerDock::updateMonitor);
+    connect(l, &LinkController::lineChanged, this, &ControllerDock::updateLine);
+    connect(l, &LinkController::lost, this, [this](const QString& why) {
+        lastMonitor_.clear();
+        monitor_->setText(tr("<b>The controller does not answer:</b> %1").arg(why.toHtmlEscaped()));
+    });
+    connect(l, &LinkController::progress, this, [this](const QString& what, int done, int total) {
+        progress_->setRange(0, std::max(1, total));
+        progress_->setValue(std::min(done, std::max(1, total)));
+        progress_->setFormat(what + QStringLiteral(" (%v/%m)"));
+    });
+    connect(l, &LinkController::pulled, this, [this](bool ok, const QString& message, const profile::MachineProfile& memory) {
+        progress_->setRange(0, 1);
+        progress_->setValue(ok ? 1 : 0);
+        progress_->setFormat(ok ? tr("memory read") : tr("stopped"));
+        if (pending_) { // a push waits for its preview
+            if (!ok) {
+                pending_.reset();
+                say(tr("The push did not start: the controller's memory could not be read (%1); nothing was sent").arg(message));
+                emit transferFinished(false, lastMessage_);
+            } else {
+                showPreview(memory);
+            }
+            updateEnabled();
+            return;
+        }
+        if (!ok) {
+            say(tr("Pull failed: %1").arg(message));
+            updateEnabled();
+            emit transferFinished(false, lastMessage_);
+            return;
+        }
+        const MachineSave s = saveMachine(memory);
+        const QString name = fromStd(memory.name);
+        if (s.revision == 0)
+            say(tr("Pulled, but not kept in the database: %1").arg(s.error));
+        else if (s.changes == 0)
+            say(tr("Pulled %1 programs; the database already holds this memory of %2 (revision %3)")
+                    .arg(memory.programs.size())
+                    .arg(name)
+                    .arg(s.revision));
+        else
+            say(tr("Pulled %1 programs into %2, revision %3 (%4 changes)")
+                    .arg(memory.programs.size())
+                    .arg(name)
+                    .arg(s.revision)
+                    .arg(s.changes));
+        lastRevision_ = s.revision;
+        updateEnabled();
+        emit transferFinished(s.revision != 0, lastMessage_);
+    });
+    connect(l, &LinkController::pushed, this, [this](bool ok, const QString& message, const QStringList& written) {
+        progress_->setRange(0, 1);
+        progress_->setValue(ok ? 1 : 0);
+        progress_->setFormat(ok ? tr("pushed") : tr("stopped"));
+        const QString done = written.isEmpty() ? tr("nothing") : written.join(", ");
+        say(ok ? tr("Pushed %1: written and verified %2").arg(pendingWhat_, done)
+               : tr("Push of %1 stopped: %2. Written and verified before: %3").arg(pendingWhat_, message, done));
+        updateEnabled();
+        emit transferFinished(ok, lastMessage_);
+    });
+    updateEnabled();
+    lineState_->setText(tr("Connecting to %1...").arg(s.port));
+    l->open();
+}
+
+void ControllerDock::disconnectLine() {
+    if (!link_ || link_->busy())
+        return;
+    window_->setViewedController(nullptr);
+    link_.reset();
+    connecting_ = false;
+    lastMonitor_.clear();
+    monitor_->setText(QString());
+    say(tr("Disconnected"));
+    updateEnabled();
+    emit connectedChanged(false);
+}
+
+void ControllerDock::pullIntoDatabase() {
+    if (!link_ || !link_->isOpen() || link_->busy() || preview_)
+        return;
+    pending_.reset();
+    say(tr("Pulling the controller's memory..."));
+    link_->pull();
+    updateEnabled();
+}
+
+void ControllerDock::pushFile(const QString& given) {
+    if (!link_ || !link_->isOpen() || link_->busy() || preview_)
+        return;
+    QString path = given;
+    if (path.isEmpty())
+        path = QFileDialog::getOpenFileName(this, tr("Push a machine file"), QString(),
+                                            tr("Machine files (*.k528m *.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    profile::MachineProfile file;
+    try {
+        file = profile::readMachineFile(path.toStdString());
+    } catch (const std::exception& e) {
+        say(tr("%1 cannot be pushed: %2; nothing was sent").arg(path, QString::fromUtf8(e.what())));
+        emit transferFinished(false, lastMessage_);
+        return;
+    }
+    startPush(file, QFileInfo(path).fileName());
+}
+
+void ControllerDock::pushMachine(const QString& name) {
+    if (!link_ || !link_->isOpen() || link_->busy() || preview_)
+        return;
+    try {
+        startPush(loadMachine(name).profile, name);
+    } catch (const std::exception& e) {
+        say(tr("The machine %1 cannot be loaded: %2").arg(name, QString::fromUtf8(e.what())));
+        emit transferFinished(false, lastMessage_);
+    }
+}
+
+void ControllerDock::startPush(const profile::MachineProfile& file, const QString& what) {
+    // First the controller's memory as it is, for the preview of what changes.
+    pending_ = std::make_unique<profile::MachineProfile>(file);
+    pendingWhat_ = what;
+    say(tr("Reading the controller's memory to show what %1 changes...").arg(what));
+    link_->pull();
+    updateEnabled();
+}
+
+void ControllerDock::showPreview(const profile::MachineProfile& memory) {
+    const profile::MachineProfile after = afterPush(memory, *pending_);
+    const std::vector<profile::Change> changes = profile::diff(memory, after);
+    auto* d = new QDialog(this);
+    d->setObjectName("controller.pushPreview");
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->setWindowTitle(tr("Push %1 to the controller").arg(pendingWhat_));
+    auto* lay = new QVBoxLayout(d);
+    auto* head = new QLabel(changes.empty() ? tr("The controller already holds what %1 has: nothing changes.").arg(pendingWhat_)
+                                            : tr("Changes in the controller's memory: %1. Each program is committed "
+                                                 "all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».")
+                                                  .arg(changes.size()),
+                            d);
+    head->setWordWrap(true);
+    lay->addWidget(head);
+    auto* text = new QPlainTextEdit(d);
+    text->setObjectName("controller.pushPreview.diff");
+    text->setReadOnly(true);
+    text->setFont(QFont("DejaVu Sans Mono"));
+    text->setPlainText(fromStd(profile::formatDiff(changes)));
+    lay->addWidget(text, 1);
+    auto* box = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, d);
+    box->button(QDialogButtonBox::Ok)->setText(tr("Push"));
+    lay->addWidget(box);
+    connect(box, &QDialogButtonBox::accepted, d, &QDialog::accept);
+    connect(box, &QDialogButtonBox::rejected, d, &QDialog::reject);
+    d->resize(640, 480);
+    preview_ = d;
+    connect(d, &QDialog::finished, this, [this](int result) {
+        preview_ = nullptr;
+        std::unique_ptr<profile::MachineProfile> file = std::move(pending_);
+        if (result == QDialog::Accepted && file && link_ && link_->isOpen()) {
+            say(tr("Pushing %1...").arg(pendingWhat_));
+            link_->push(*file);
+        } else {
+            say(tr("Push of %1 not started; nothing was sent").arg(pendingWhat_));
+            emit transferFinished(false, lastMessage_);
+        }
+        updateEnabled();
+    });
+    d->open();
+    say(tr("Check what %1 changes, then push.").arg(pendingWhat_));
+    emit previewShown();
+}
+
+void ControllerDock::cancelTransfer() {
+    if (link_ && link_->busy()) {
+        link_->cancel();
+        say(tr("Cancelling at the next exchange..."));
+    }
+}
+
+void ControllerDock::updateLine() {
+    if (!link_ || !link_->isOpen())
+        return;
+    const LineInfo& i = link_->lineInfo();
+    lineState_->setText(tr("%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, "
+                           "%5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %")
+                            .arg(link_->description())
+                            .arg(i.stats.exchanges)
+                            .arg(i.stats.noAnswer)
+                            .arg(i.stats.badReplies)
+                            .arg(i.stats.exceptions)
+                            .arg(i.stats.retries)
+                            .arg(i.lastRoundTripMs, 0, 'f', 1)
+                            .arg(i.meanRoundTripMs, 0, 'f', 1)
+                            .arg(i.busyPercent, 0, 'f', 0));
+}
+
+void ControllerDock::updateMonitor() {
+    if (!link_ || !link_->isOpen()) {
+        if (!lastMonitor_.isEmpty()) {
+            monitor_->clear();
+            lastMonitor_.clear();
+        }
+        return;
+    }
+    const ControllerState& s = link_->state();
+    const link::LiveState& live = link_->live();
+    const bool ru = currentLanguage() == QLatin1String("ru");
+    QString h = QStringLiteral("<table cellspacing='2'>");
+    const auto row = [&](const QString& k, const QString& v) {
+        h += QStringLiteral("<tr><td style='padding-right:8px'><b>%1</b></td><td>%2</td></tr>").arg(k, v);
+    };
+    QString mode = live.mode >= 1 && live.mode <= 7 ? QStringLiteral("F%1").arg(live.mode) : tr("power-on");
+    if (live.pcReady)
+        mode += QStringLiteral(" «РАБОТА С ПЭВМ»");
+    if (live.running)
+        mode += tr(", running");
+    row(tr("Mode"), mode);
+    row(tr("Program"), live.program > 0 ? tr("L%1, frame N%2").arg(live.program).arg(live.frame) : tr("none"));
+    row(tr("Override"), QStringLiteral("%1 %").arg(live.overridePercent));
+    for (int i = 0; i < 2; ++i) {
+        const engine::AxisView& a = s.axes[static_cast<std::size_t>(i)];
+        const std::int32_t err = i == 0 ? live.xError : live.zError;
+        row(i == 0 ? QStringLiteral("X") : QStringLiteral("Z"),
+            tr("%1 mm (machine %2), following error %3 mm, %4")
+                .arg(mm(a.currentDisc, a.scale), mm(a.machineDisc, a.scale), mm(err, a.scale),
+                     (i == 0 ? live.homedX : live.homedZ) ? tr("homed") : tr("not homed")));
+    }
+    QString alarms;
+    for (const engine::AlarmView& a : s.alarms)
+        alarms += QStringLiteral("<span style='color:#b01c1c'>%1. %2</span><br>")
+                      .arg(a.number)
+                      .arg(fromStd(ru ? a.textRu : a.textEn).toHtmlEscaped());
+    row(tr("Alarms"), alarms.isEmpty() ? tr("none") : alarms);
+    QString leds;
+    for (int k = 1; k <= 12; ++k) {
+        const bool g = s.display.leds.greenOn(k), r = s.display.leds.redOn(k);
+        leds += QStringLiteral("K%1").arg(k) + dot(g || r, r && g ? "#e0b000" : r ? "#d23a2a" : "#2fbf4f") +
+                (k == 6 ? QStringLiteral("<br>") : QStringLiteral("&nbsp; "));
+    }
+    row(tr("K LEDs"), leds);
+    const engine::InterfaceWords& w = s.words;
+    row(QStringLiteral("Z1301 / Z1302"),
+        QStringLiteral("%1 / %2").arg(w.word(1301), 4, 16, QChar('0')).arg(w.word(1302), 4, 16, QChar('0')));
+    QString msgs = QStringLiteral("Z1900..Z1903: %1 %2 %3 %4")
+                       .arg(w.word(1900), 4, 16, QChar('0'))
+                       .arg(w.word(1901), 4, 16, QChar('0'))
+                       .arg(w.word(1902), 4, 16, QChar('0'))
+                       .arg(w.word(1903), 4, 16, QChar('0'));
+    const profile::MachineProfile& prof = link_->profile();
+    const auto texts = [&](std::uint32_t bits, const std::map<int, std::string>& t, const char* prefix, const char* color) {
+        for (int k = 1; k <= 32; ++k)
+            if ((bits >> (k - 1)) & 1u) {
+                const auto it = t.find(k);
+                msgs += QStringLiteral("<br><span style='color:%1'>%2%3 %4</span>")
+                            .arg(QString::fromLatin1(color), QString::fromLatin1(prefix))
+                            .arg(k, 2, 10, QChar('0'))
+                            .arg(it == t.end() ? QString() : fromStd(it->second).toHtmlEscaped());
+            }
+    };
+    texts(s.plcMessages.alarms, prof.plcAlarm, "A", "#b01c1c");
+    texts(s.plcMessages.work, prof.plcWork, "W", "#1d4f91");
+    row(tr("Machine messages"), msgs);
+    if (live.message > 0)
+        row(tr("Message"), QStringLiteral("#%1 %2").arg(live.message).arg(fromStd(s.program.messageText).toHtmlEscaped()));
+    QStringList progs;
+    for (int p : live.programs)
+        progs << QStringLiteral("L%1").arg(p);
+    row(tr("Programs"), progs.isEmpty() ? tr("none") : progs.join(' '));
+    h += QStringLiteral("</table>");
+    if (h != lastMonitor_) {
+        lastMonitor_ = h;
+        monitor_->setText(h);
+    }
+}
+
+} // namespace k528::studio

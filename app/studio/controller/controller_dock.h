@@ -1,0 +1,130 @@
+// The Controller menu and dock (dock "dock.controller"): the operator's PC
+// beside a real K528-05 (or `k528 serve`). Connect through a link plugin
+// (port from the system's serial ports, baud, parity, station address), the
+// line's state (answers, no answer — a frame with a bad CRC is dropped and
+// ends there —, bad replies, exceptions, retries, round-trip time, how busy
+// the line is), pull the controller's memory into a new database revision of
+// this window's machine, push a machine file or a database machine after a
+// preview of what changes (core's profile diff against the memory just
+// read), with progress and cancel, and a live monitor: mode, program and
+// frame, coordinates and following errors, alarms with their texts, the K
+// LEDs and the machine messages (Z1301/Z1302, Z1900..Z1903). While
+// connected, the K923 dock, the Program tab, the messages and the axes views
+// show the real controller (the seam of controller/controller.h).
+#pragma once
+
+#include "profile/profile.h"
+
+#include <QDockWidget>
+#include <QStringList>
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QDialog;
+class QLabel;
+class QMenu;
+class QAction;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QGroupBox;
+
+namespace k528::linkplugin {
+class LinkPlugin;
+}
+
+namespace k528::studio {
+
+class MainWindow;
+class LinkController;
+
+class ControllerDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit ControllerDock(MainWindow* window);
+    ~ControllerDock() override;
+
+    QMenu* menu() const { return menu_; }
+    LinkController* link() const { return link_.get(); }
+    QComboBox* portBox() const { return port_; }
+    QComboBox* baudBox() const { return baud_; }
+    QComboBox* parityBox() const { return parity_; }
+    QSpinBox* addressBox() const { return address_; }
+    QLabel* lineLabel() const { return lineState_; }
+    QLabel* monitorLabel() const { return monitor_; }
+    QProgressBar* progressBar() const { return progress_; }
+    QPushButton* cancelButton() const { return cancel_; }
+    QDialog* preview() const { return preview_; } // the open push preview, if any
+    QString lastMessage() const { return lastMessage_; }
+    int lastRevision() const { return lastRevision_; }
+
+public slots:
+    void connectLine(); // from the form; connectedChanged() tells
+    void disconnectLine();
+    void pullIntoDatabase();
+    void pushFile(const QString& path = QString()); // asks for the file when empty
+    void pushMachine(const QString& name);           // a database / built-in machine
+    void cancelTransfer();
+    void refreshPorts();
+
+signals:
+    void connectedChanged(bool connected);
+    // A pull or push ended (ok or not); the message is also in the status bar.
+    void transferFinished(bool ok, const QString& message);
+    void previewShown();
+
+protected:
+    void changeEvent(QEvent* e) override;
+
+private:
+    void build();
+    void retranslate();
+    void updateEnabled();
+    void updateMonitor();
+    void updateLine();
+    void say(const QString& text);
+    void startPush(const profile::MachineProfile& file, const QString& what);
+    void showPreview(const profile::MachineProfile& memory);
+
+    MainWindow* window_;
+    std::vector<linkplugin::LinkPlugin*> plugins_;
+    QStringList pluginNames_;
+    QString pluginProblem_;
+    std::unique_ptr<LinkController> link_;
+    QMenu* menu_ = nullptr;
+    QAction* connectAction_ = nullptr;
+    QAction* disconnectAction_ = nullptr;
+    QAction* pullAction_ = nullptr;
+    QAction* pushFileAction_ = nullptr;
+    QMenu* pushMachineMenu_ = nullptr;
+    QGroupBox* lineBox_ = nullptr;
+    QGroupBox* monitorBox_ = nullptr;
+    QComboBox* plugin_ = nullptr;
+    QComboBox* port_ = nullptr;
+    QComboBox* baud_ = nullptr;
+    QComboBox* parity_ = nullptr;
+    QSpinBox* address_ = nullptr;
+    QPushButton* connect_ = nullptr;
+    QPushButton* refreshPorts_ = nullptr;
+    QPushButton* pull_ = nullptr;
+    QPushButton* push_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    QCheckBox* showOnViews_ = nullptr;
+    QLabel* lineState_ = nullptr;
+    QLabel* monitor_ = nullptr;
+    QLabel* transfer_ = nullptr;
+    QLabel* captions_[5] = {};
+    QProgressBar* progress_ = nullptr;
+    QDialog* preview_ = nullptr;
+    bool connecting_ = false;
+    std::unique_ptr<profile::MachineProfile> pending_; // the push waiting for its preview
+    QString pendingWhat_;
+    QString lastMessage_, lastMonitor_;
+    int lastRevision_ = 0;
+};
+
+// Builds the dock on `window` (right dock area, tabbed with the machine's panel).
+ControllerDock* addControllerDock(MainWindow* window);
+
+} // namespace k528::studio

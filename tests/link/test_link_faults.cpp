@@ -1,0 +1,222 @@
+// The link over a faulty line: `k528 link` — socat pair — fault_proxy.py —
+// socat pair — `k528 serve`. The proxy drops, corrupts and holds back bytes
+// (seeded). A push retries, reports what the line did, and whatever the
+// faults, never leaves a damaged program in the controller: each program is
+// afterwards either as it was (absent) or exactly the text sent, read
+// through a clean line.
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <csignal>
+
+namespace {
+
+const QString kCli = QStringLiteral(K528_CLI);
+const QString kProxy = QStringLiteral(K528_SOURCE_DIR "/tests/link/fault_proxy.py");
+
+struct Run {
+    int code = -1;
+    QString out, err;
+};
+
+Run run(const QStringList& args, int timeoutMs = 180000) {
+    QProcess p;
+    p.start(kCli, args);
+    Run r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = "timeout";
+        return r;
+    }
+    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+QString program(int number, int frames, int salt) {
+    QString t = QStringLiteral("[program %1]\n%L%1 (faults)\n").arg(number);
+    for (int i = 1; i <= frames; ++i)
+        t += QStringLiteral("N%1 G1 X%2 FX100\n").arg(i).arg((i * 7 + salt) % 90);
+    return t + "[end program]\n";
+}
+
+// The frames of program `number` in a machine file, as lines.
+QStringList framesOf(const QString& file, int number) {
+    const int at = file.indexOf(QStringLiteral("[program %1]").arg(number));
+    if (at < 0)
+        return {};
+    const int end = file.indexOf("[end program]", at);
+    QStringList lines = file.mid(at, end - at).split('\n', Qt::SkipEmptyParts);
+    QStringList frames;
+    for (const QString& l : lines)
+        if (l.startsWith('N'))
+            frames << l.trimmed();
+    return frames;
+}
+
+} // namespace
+
+class TestLinkFaults : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QProcess socat1_, socat2_, serve_, proxy_;
+    QString c_, p1_, p2_, s_; // client end, proxy ends, server end
+
+    void removeLocks() {
+        for (const QString& p : {c_, p1_, p2_, s_})
+            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
+    }
+    void startProxy(const QString& drop, const QString& corrupt, const QString& hold, const QString& holdMs,
+                    const QString& seed) {
+        stopProxy();
+        proxy_.start("/usr/bin/python3", {kProxy, p1_, p2_, seed, drop, corrupt, hold, holdMs});
+        QVERIFY(proxy_.waitForStarted());
+        QByteArray said;
+        QTRY_VERIFY_WITH_TIMEOUT((said += proxy_.readAllStandardError()).contains("proxy: ready") ||
+                                     proxy_.state() != QProcess::Running,
+                                 10000);
+        QVERIFY2(proxy_.state() == QProcess::Running, said.constData());
+    }
+    QString stopProxy() {
+        QString said;
+        if (proxy_.state() == QProcess::Running) {
+            proxy_.terminate();
+            proxy_.waitForFinished(5000);
+            said = QString::fromUtf8(proxy_.readAllStandardError());
+        }
+        return said;
+    }
+    QString pullClean() {
+        startProxy("0", "0", "0", "0", "1");
+        const QString file = dir_.filePath("now.k528m");
+        QFile::remove(file);
+        const Run r = run({"link", "--port", c_, "pull", "--out", file});
+        stopProxy();
+        removeLocks();
+        if (r.code != 0) {
+            qWarning("clean pull failed: %s", qPrintable(r.err));
+            return {};
+        }
+        QFile f(file);
+        return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+    }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        const QString tag = QString::number(QCoreApplication::applicationPid());
+        c_ = dir_.filePath("fc" + tag);
+        p1_ = dir_.filePath("fp1" + tag);
+        p2_ = dir_.filePath("fp2" + tag);
+        s_ = dir_.filePath("fs" + tag);
+        socat1_.start("socat", {"pty,raw,echo=0,link=" + c_, "pty,raw,echo=0,link=" + p1_});
+        socat2_.start("socat", {"pty,raw,echo=0,link=" + p2_, "pty,raw,echo=0,link=" + s_});
+        QVERIFY(socat1_.waitForStarted() && socat2_.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(c_) && QFile::exists(p1_) && QFile::exists(p2_) && QFile::exists(s_),
+                                 5000);
+        serve_.start(kCli, {"serve", "--port", s_, "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
+        QVERIFY(serve_.waitForStarted());
+        QByteArray said;
+        QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
+                                     serve_.state() != QProcess::Running,
+                                 10000);
+        QVERIFY2(serve_.state() == QProcess::Running, said.constData());
+    }
+    void cleanupTestCase() {
+        stopProxy();
+        serve_.terminate();
+        serve_.waitForFinished(5000);
+        for (QProcess* p : {&socat1_, &socat2_}) {
+            p->terminate();
+            p->waitForFinished(3000);
+        }
+        removeLocks();
+    }
+
+    void pushThroughAFaultyLine() {
+        const QString base = pullClean();
+        QVERIFY(base.contains("[program 1]"));
+        // Two new programs, one long (many windows).
+        QString file = base;
+        const int at = file.indexOf("[program ");
+        file.insert(at, program(51, 400, 3) + program(52, 30, 5));
+        const QString path = dir_.filePath("push.k528m");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(file.toUtf8());
+        }
+        // A bad line: 0.05 % of the bytes dropped, 0.05 % corrupted (a frame of 253 bytes is
+        // damaged one time in four), one chunk in 50 held up to 150 ms.
+        startProxy("0.0005", "0.0005", "0.02", "150", "528");
+        const Run r = run({"link", "--port", c_, "--timeout-ms", "100", "push", path});
+        const QString proxySaid = stopProxy();
+        removeLocks();
+        qInfo("push over the faulty line: exit %d; %s; %s", r.code,
+              qPrintable(r.err.section('\n', -2, -2)), qPrintable(proxySaid.trimmed()));
+        QVERIFY2(proxySaid.contains("corrupted"), qPrintable(proxySaid));
+        // The line's report is there, and the damage was met by retries.
+        const QRegularExpression retries("(\\d+) retries");
+        const auto m = retries.match(r.err);
+        QVERIFY2(m.hasMatch(), qPrintable(r.err));
+        QVERIFY2(m.captured(1).toInt() > 0, qPrintable(r.err));
+        QVERIFY2(r.code == 0, qPrintable(r.err)); // the retries carry it through
+
+        // Through a clean line: each program as it was (absent) or exactly as sent.
+        const QString now = pullClean();
+        QVERIFY(now.contains("[program 1]"));
+        for (int n : {51, 52}) {
+            const QStringList got = framesOf(now, n);
+            if (got.isEmpty()) {
+                QVERIFY2(r.code != 0, "a push that succeeded left a program out");
+                continue;
+            }
+            QCOMPARE(got, framesOf(file, n));
+        }
+        if (r.code == 0)
+            QVERIFY(r.out.contains("program 51") && r.out.contains("program 52"));
+    }
+
+    void aLineTooBadStopsCleanly() {
+        const QString base = pullClean();
+        QString file = base;
+        file.insert(file.indexOf("[program "), program(53, 600, 11));
+        const QString path = dir_.filePath("push2.k528m");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(file.toUtf8());
+        }
+        // 5 % of the bytes corrupted: most frames are damaged, the push gives up.
+        startProxy("0.01", "0.05", "0.05", "150", "9");
+        const Run r = run({"link", "--port", c_, "--timeout-ms", "60", "push", path});
+        stopProxy();
+        removeLocks();
+        qInfo("push over a very bad line: exit %d: %s", r.code, qPrintable(r.err.section('\n', -3).simplified()));
+        const QString now = pullClean();
+        QVERIFY(now.contains("[program 1]"));
+        const QStringList got = framesOf(now, 53);
+        if (r.code == 0)
+            QCOMPARE(got, framesOf(file, 53));
+        else {
+            QVERIFY2(r.err.contains("does not answer") || r.err.contains("k528 link:"), qPrintable(r.err));
+            QVERIFY(got.isEmpty() || got == framesOf(file, 53)); // never a part
+        }
+        // And run again on a good line, the push completes.
+        startProxy("0", "0", "0", "0", "2");
+        const Run again = run({"link", "--port", c_, "push", path});
+        stopProxy();
+        removeLocks();
+        QVERIFY2(again.code == 0, qPrintable(again.err));
+        QCOMPARE(framesOf(pullClean(), 53), framesOf(file, 53));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLinkFaults)
+#include "test_link_faults.moc"

@@ -1,0 +1,213 @@
+// The Controller dock against `k528 serve` on a socat pty pair (the RS485
+// line): connect through the Modbus RTU plugin, the live monitor and the
+// line's state, the workstation's views on the real controller (the seam of
+// controller/controller.h), pull into a new database revision, push a file
+// after its preview, cancel a push (nothing half-committed), disconnect.
+#include "controller/controller_dock.h"
+#include "controller/link_controller.h"
+#include "controller/simulated_controller.h"
+#include "k923/k923_widget.h"
+#include "language.h"
+#include "machine/status_views.h"
+#include "main_window.h"
+#include "monitor/program_monitor.h"
+#include "profile/text_format.h"
+#include "session/machine_source.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDialog>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QPlainTextEdit>
+#include <QProcess>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace k528;
+using namespace k528::studio;
+
+class TestController : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QProcess socat_, serve_;
+    QString a_, b_;
+
+    void removeLocks() {
+        for (const QString& p : {a_, b_})
+            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
+    }
+    static bool finished(QSignalSpy& spy, int ms) {
+        if (spy.isEmpty())
+            spy.wait(ms);
+        return !spy.isEmpty();
+    }
+    QString write(const QString& name, const QString& text) {
+        const QString path = dir_.filePath(name);
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly))
+            f.write(text.toUtf8());
+        return path;
+    }
+    static QString bigProgram(int number, int frames) {
+        QString t = QStringLiteral("[program %1]\n%L%1 (long)\n").arg(number);
+        for (int i = 1; i <= frames; ++i)
+            t += QStringLiteral("N%1 G1 X%2 FX100\n").arg(i).arg(i % 50);
+        return t + "[end program]\n";
+    }
+
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTest");
+        QSettings().clear();
+        QVERIFY(setLanguage("en"));
+        QVERIFY(dir_.isValid());
+        qputenv("K528_DB", dir_.filePath("shop.db").toUtf8());
+        qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_RTU_PLUGIN)).absolutePath().toUtf8());
+        const QString tag = QString::number(QCoreApplication::applicationPid());
+        a_ = dir_.filePath("ctla" + tag);
+        b_ = dir_.filePath("ctlb" + tag);
+        socat_.start("socat", {"pty,raw,echo=0,link=" + a_, "pty,raw,echo=0,link=" + b_});
+        QVERIFY(socat_.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a_) && QFile::exists(b_), 5000);
+        // training-lathe in F7 «РАБОТА С ПЭВМ» (the keys of link.line).
+        serve_.start(QStringLiteral(K528_CLI), {"serve", "--port", a_, "--profile", "training-lathe", "--keys",
+                                                "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
+        QVERIFY(serve_.waitForStarted());
+        QByteArray said;
+        QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
+                                     serve_.state() != QProcess::Running,
+                                 10000);
+        QVERIFY2(serve_.state() == QProcess::Running, said.constData());
+    }
+    void cleanupTestCase() {
+        serve_.terminate();
+        serve_.waitForFinished(5000);
+        socat_.terminate();
+        socat_.waitForFinished(3000);
+        removeLocks();
+    }
+
+    void controllerDockOnTheLine() {
+        MainWindow w(loadMachine("training-lathe"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* dock = w.findChild<ControllerDock*>("dock.controller");
+        QVERIFY(dock);
+        QVERIFY(w.findChild<QMenu*>("menu.controller"));
+        dock->show();
+        dock->raise();
+        QVERIFY(w.viewedController() == w.simulatedController());
+
+        // Connect: the plugin was found, the port typed (a pty is not listed).
+        QVERIFY2(dock->findChild<QComboBox*>("controller.plugin")->count() >= 1, qPrintable(dock->lineLabel()->text()));
+        dock->portBox()->setEditText(b_);
+        QSignalSpy connected(dock, &ControllerDock::connectedChanged);
+        dock->connectLine();
+        QVERIFY(finished(connected, 10000));
+        QVERIFY2(connected.first().first().toBool(), qPrintable(dock->lastMessage()));
+        QVERIFY(dock->link() && dock->link()->isOpen());
+        QTRY_VERIFY_WITH_TIMEOUT(dock->monitorLabel()->text().contains("РАБОТА С ПЭВМ"), 5000);
+        QVERIFY(dock->monitorLabel()->text().contains("F7"));
+        QVERIFY(dock->monitorLabel()->text().contains("K12"));
+        QTRY_VERIFY_WITH_TIMEOUT(dock->lineLabel()->text().contains(" answers"), 5000);
+        QVERIFY(dock->lineLabel()->text().contains("round trip"));
+
+        // The workstation's views show the real controller now.
+        QVERIFY(w.viewedController() == dock->link());
+        QCOMPARE(dock->link()->state().mode, 7);
+        QTRY_VERIFY_WITH_TIMEOUT(w.axesView()->table()->item(0, 1)->text() != QString(), 3000);
+        QCOMPARE(w.axesView()->table()->item(0, 6)->text(), QString()); // no DAC over the link
+        // Keys: the map has them read-only; the window says so instead of sending.
+        emit w.k923()->keyPressed(panel::KeyPress{panel::Key::F2, false});
+        QVERIFY(w.statusBar()->currentMessage().contains("takes no keys"));
+
+        // The live monitor of the line costs at most 30 % of it (100 ms poll).
+        QTest::qWait(1500);
+        const LineInfo& li = dock->link()->lineInfo();
+        qInfo("live monitor: line busy %.1f %% (%lld transactions)", li.busyPercent,
+              static_cast<long long>(li.wire.transactions));
+        QVERIFY2(li.busyPercent > 0 && li.busyPercent <= 30.0, qPrintable(QString::number(li.busyPercent)));
+
+        // Screenshot of the dock connected to `k528 serve`.
+        dock->setFloating(true);
+        dock->resize(460, 760);
+        QTest::qWait(300);
+        QVERIFY(dock->grab().save(QDir::current().filePath("controller_dock.png")));
+        dock->setFloating(false);
+
+        // Pull into a new database revision of the machine.
+        QSignalSpy done(dock, &ControllerDock::transferFinished);
+        dock->pullIntoDatabase();
+        QVERIFY(finished(done, 30000));
+        QVERIFY2(done.takeFirst().first().toBool(), qPrintable(dock->lastMessage()));
+        const int rev = dock->lastRevision();
+        QVERIFY2(rev > 0, qPrintable(dock->lastMessage()));
+        // The Program tab lists the controller's programs.
+        QVERIFY(w.programMonitor()->programChoice()->count() > 1);
+        const profile::MachineProfile pulled = loadMachine("training-lathe").profile;
+        QVERIFY(!pulled.programs.empty());
+
+        // Push a file: program 42 new, R5 changed; the preview shows both.
+        profile::MachineProfile file = pulled;
+        file.r[5] = 4321;
+        const QString fileText = QString::fromStdString(profile::writeMachineText(file));
+        QString with42 = fileText;
+        with42.insert(with42.indexOf("[program "), bigProgram(42, 12));
+        const QString path = write("push.k528m", with42);
+        QSignalSpy preview(dock, &ControllerDock::previewShown);
+        dock->pushFile(path);
+        QVERIFY(finished(preview, 30000));
+        QVERIFY(dock->preview());
+        const QString diff = dock->preview()->findChild<QPlainTextEdit*>("controller.pushPreview.diff")->toPlainText();
+        QVERIFY2(diff.contains("L42") && diff.contains("4321"), qPrintable(diff));
+        QVERIFY(dock->preview()->grab().save(QDir::current().filePath("controller_push_preview.png")));
+        dock->preview()->accept();
+        QVERIFY(finished(done, 60000));
+        QVERIFY2(done.takeFirst().first().toBool(), qPrintable(dock->lastMessage()));
+        QVERIFY2(dock->lastMessage().contains("L42"), qPrintable(dock->lastMessage()));
+
+        // Cancel a long push: the long program is not committed half-way.
+        QString big = fileText;
+        big.insert(big.indexOf("[program "), bigProgram(60, 900));
+        preview.clear();
+        dock->pushFile(write("big.k528m", big));
+        QVERIFY(finished(preview, 30000));
+        QVERIFY(dock->preview());
+        dock->preview()->accept();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->progressBar()->format().contains("program"), 20000);
+        QVERIFY(dock->cancelButton()->isEnabled());
+        dock->cancelTransfer();
+        QVERIFY(finished(done, 30000));
+        QVERIFY2(!done.takeFirst().first().toBool(), qPrintable(dock->lastMessage()));
+        QVERIFY2(dock->lastMessage().contains("cancelled"), qPrintable(dock->lastMessage()));
+
+        // What the controller holds now: L42 as sent, L60 absent (never half of it).
+        dock->pullIntoDatabase();
+        QVERIFY(finished(done, 30000));
+        QVERIFY2(done.takeFirst().first().toBool(), qPrintable(dock->lastMessage()));
+        QVERIFY(dock->lastRevision() > rev);
+        const profile::MachineProfile now = loadMachine("training-lathe").profile;
+        QVERIFY(now.programs.count(42));
+        QVERIFY(!now.programs.count(60));
+        QCOMPARE(now.r.at(5), std::int64_t{4321});
+
+        // Disconnect: the views go back to the simulated controller.
+        dock->disconnectLine();
+        QVERIFY(!dock->link());
+        QVERIFY(w.viewedController() == w.simulatedController());
+    }
+};
+
+QTEST_MAIN(TestController)
+#include "test_controller.moc"
