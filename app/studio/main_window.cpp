@@ -13,6 +13,7 @@
 #include <QTabWidget>
 
 #include "backplot/backplot_dock.h"
+#include "constants/constants_dock.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
@@ -20,6 +21,7 @@
 #include "machine/machine_panel.h"
 #include "machine/status_views.h"
 #include "profile/builtin.h"
+#include "rparams/rparams_dock.h"
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
 #include "editor/editor_tab.h"
@@ -126,6 +128,8 @@ void MainWindow::createDocks() {
         d->setMaximumHeight(140);
     backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
     addScopeDock(this, *session_);
+    addConstantsDock(this, *session_); // constants/constants_dock.cpp
+    addRParamsDock(this, *session_);   // rparams/rparams_dock.cpp
 
 }
 
@@ -151,6 +155,9 @@ void MainWindow::createMenus() {
         viewMenu_->addAction(d->toggleViewAction());
     if (auto* scope = findChild<QDockWidget*>("dock.scope"))
         viewMenu_->addAction(scope->toggleViewAction());
+    for (const char* name : {"dock.constants", "dock.rparams"})
+        if (auto* d = findChild<QDockWidget*>(name))
+            viewMenu_->addAction(d->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);
