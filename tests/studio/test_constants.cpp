@@ -23,6 +23,7 @@
 #include "session/simulation_session.h"
 #include "units/units.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QDir>
 #include <QFile>
@@ -416,6 +417,7 @@ private slots:
         QVERIFY(!cp->filter()->setData(valueIndex(*cp, 22), QStringLiteral("99999")));
         QTest::qWait(50);
         QVERIFY(c->grab().save(shots + "/constants.png"));
+        r->findChild<QComboBox*>("rparams.show")->setCurrentIndex(5); // not zero: the live values
         r->setFloating(true);
         r->resize(1000, 620);
         r->show();

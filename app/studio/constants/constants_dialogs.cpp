@@ -69,8 +69,7 @@ HistoryDialog::HistoryDialog(const MachineStore& store, int number, QWidget* par
                 table_->setItem(i, c, new QTableWidgetItem(cells[c]));
         }
         info->setText(h.empty() ? tr("No revision of %1 changed this constant.").arg(store.qName())
-                                : tr("%n revision(s) changed this constant, newest first.", nullptr,
-                                     static_cast<int>(h.size())));
+                                : tr("Revisions that changed this constant: %1 (newest first).").arg(h.size()));
     } catch (const std::exception& e) {
         info->setText(tr("The history cannot be read: %1").arg(QString::fromUtf8(e.what())));
     }
@@ -164,7 +163,7 @@ CalculatorDialog::CalculatorDialog(ConstantsEditor& editor, QWidget* parent)
     t_ = spin(1, 1e6, 2000, 0);
     s_ = spin(0.001, 1e5, 10, 3);
     a_ = spin(0.0001, 100, 0.5, 4);
-    vLabel_ = new QLabel(tr("Vmax, mm/min of the slide"), this);
+    vLabel_ = new QLabel(tr("Vmax, mm/min"), this);
     tLabel_ = new QLabel(tr("Tразг, ms"), this);
     sLabel_ = new QLabel(tr("S, mm of braking"), this);
     aLabel_ = new QLabel(tr("A, m/s²"), this);

@@ -188,11 +188,11 @@ ConstantsPane::ConstantsPane(SimulationSession& session, QWidget* parent)
     const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
     table_->setColumnWidth(ConstantsModel::Number, 5 * em);
     table_->setColumnWidth(ConstantsModel::Axis, 3 * em);
-    table_->setColumnWidth(ConstantsModel::Name, 11 * em);
+    table_->setColumnWidth(ConstantsModel::Name, 12 * em);
     table_->setColumnWidth(ConstantsModel::Meaning, 22 * em);
-    table_->setColumnWidth(ConstantsModel::Unit, 9 * em);
-    table_->setColumnWidth(ConstantsModel::Range, 9 * em);
-    table_->setColumnWidth(ConstantsModel::Address, 8 * em);
+    table_->setColumnWidth(ConstantsModel::Unit, 8 * em);
+    table_->setColumnWidth(ConstantsModel::Range, 7 * em);
+    table_->setColumnWidth(ConstantsModel::Address, 10 * em);
     table_->setColumnWidth(ConstantsModel::Value, 6 * em);
 
     status_ = new QLabel(this);
@@ -478,7 +478,7 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
             promise.setProgressValue(2);
             const auto changes = profile::diff(pa, pb);
             r.text = QString::fromStdString(profile::formatDiff(changes));
-            r.message = ConstantsPane::tr("%n change(s)", nullptr, static_cast<int>(changes.size()));
+            r.message = ConstantsPane::tr("Changes: %1").arg(changes.size());
             promise.setProgressValue(3);
         } catch (const std::exception& e) {
             r.error = QString::fromUtf8(e.what());

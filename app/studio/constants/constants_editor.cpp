@@ -18,10 +18,6 @@ namespace k528::studio {
 
 namespace {
 
-QString tr(const char* s) {
-    return QCoreApplication::translate("k528::studio::ConstantsEditor", s);
-}
-
 QString fromStd(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
@@ -40,10 +36,10 @@ std::set<ErrorKey> errorKeys(const std::vector<profile::Finding>& fs) {
 template <class F>
 QString inMode(engine::Controller& c, engine::Mode mode, F&& change) {
     if (engine::programActive(c.state()))
-        return tr("a program is under way: the constants are changed when it has ended");
+        return QCoreApplication::translate("k528::studio::ConstantsEditor", "a program is under way: the constants are changed when it has ended");
     for (engine::AxisId a : {engine::AxisId::X, engine::AxisId::Z})
         if (c.axisView(a).moving)
-            return tr("an axis is moving: the constants are changed at standstill");
+            return QCoreApplication::translate("k528::studio::ConstantsEditor", "an axis is moving: the constants are changed at standstill");
     const engine::Mode was = c.mode();
     if (was != mode) {
         const engine::OpResult r = c.selectMode(mode);
@@ -67,7 +63,7 @@ public:
     }
     void redo() override { run(after_, note_); }
     void undo() override {
-        run(before_, tr("undo: %1").arg(note_));
+        run(before_, QCoreApplication::translate("k528::studio::ConstantsEditor", "undo: %1").arg(note_));
     }
 
 private:
@@ -92,7 +88,7 @@ CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t 
     if (!d || c.size() < static_cast<std::size_t>(catalog::kCParamCount + 1)) {
         r.ok = false;
         r.message = 15;
-        r.text = tr("No C-parameter %1 (1..152)").arg(number);
+        r.text = QCoreApplication::translate("k528::studio::ConstantsEditor", "No C-parameter %1 (1..152)").arg(number);
         return r;
     }
     const std::vector<profile::Finding> before = profile::checkCParams(c);

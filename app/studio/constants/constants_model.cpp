@@ -37,8 +37,25 @@ ConstantsModel::ConstantsModel(ConstantsEditor& editor, QObject* parent)
 
 void ConstantsModel::fillTexts() {
     search_.assign(catalog::kCParamCount, QString());
+    cells_.assign(catalog::kCParamCount, {});
     for (int row = 0; row < catalog::kCParamCount; ++row) {
         const catalog::CParamDef& d = defAt(row);
+        auto& cell = cells_[static_cast<std::size_t>(row)];
+        cell[Number] = QStringLiteral("C%1").arg(d.number, 3, 10, QChar('0'));
+        cell[Axis] = fromStd(catalog::axisName(d.axis));
+        cell[Name] = fromStd(d.name); // as the K923 shows it
+        // The first words (the tooltip has all): a table cell shows about
+        // 40 characters, and shaping the whole text for every paint would
+        // cost more than the filter itself.
+        QString meaning = fromStd(russian_ ? d.descriptionRu : d.descriptionEn);
+        if (meaning.size() > 72) {
+            const qsizetype cut = meaning.lastIndexOf(QLatin1Char(' '), 70);
+            meaning = meaning.left(cut > 20 ? cut : 70) + QStringLiteral(" …");
+        }
+        cell[Meaning] = meaning;
+        cell[Unit] = fromStd(russian_ ? catalog::unitRu(d.unit) : catalog::unitEn(d.unit));
+        cell[Range] = QStringLiteral("%1…%2").arg(d.min).arg(d.max);
+        cell[Address] = fromStd(russian_ ? d.address.text() : d.address.textEn());
         QString s = QStringLiteral("c%1 c%2 %2 ").arg(d.number, 3, 10, QChar('0')).arg(d.number);
         s += fromStd(catalog::axisName(d.axis)) + ' ';
         for (std::string_view t : {d.name, d.nameEn, d.descriptionRu, d.descriptionEn, d.hintRu,
@@ -79,6 +96,7 @@ void ConstantsModel::refresh() {
 void ConstantsModel::retranslate() {
     beginResetModel();
     russian_ = currentLanguage() == QLatin1String("ru");
+    fillTexts();
     fillMeans();
     endResetModel();
     emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
@@ -104,22 +122,18 @@ QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::DisplayRole || role == Qt::EditRole) {
         switch (index.column()) {
         case Number:
-            return role == Qt::EditRole ? QVariant(d.number)
-                                        : QVariant(QStringLiteral("C%1").arg(d.number, 3, 10, QChar('0')));
+            if (role == Qt::EditRole)
+                return d.number;
+            [[fallthrough]];
         case Axis:
-            return fromStd(catalog::axisName(d.axis));
         case Name:
-            return fromStd(russian_ ? d.name : d.nameEn);
         case Meaning:
-            return fromStd(russian_ ? d.descriptionRu : d.descriptionEn);
         case Unit:
-            return fromStd(russian_ ? catalog::unitRu(d.unit) : catalog::unitEn(d.unit));
         case Range:
-            return QStringLiteral("%1…%2").arg(d.min).arg(d.max);
         case Address:
-            return fromStd(russian_ ? d.address.text() : d.address.textEn());
+            return cells_[static_cast<std::size_t>(index.row())][static_cast<std::size_t>(index.column())];
         case Value:
-            return role == Qt::EditRole ? QVariant(QString::number(v)) : QVariant(QString::number(v));
+            return QString::number(v);
         case Means:
             return means_[static_cast<std::size_t>(index.row())];
         default:
@@ -143,9 +157,12 @@ QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::ForegroundRole && d.reserved())
         return QBrush(QColor(0x80, 0x80, 0x80));
     if (role == Qt::FontRole && index.column() == Value) {
-        QFont f;
-        f.setBold(true);
-        return f;
+        static const QFont bold = [] {
+            QFont f;
+            f.setBold(true);
+            return f;
+        }();
+        return bold;
     }
     return {};
 }
@@ -167,7 +184,7 @@ QVariant ConstantsModel::headerData(int section, Qt::Orientation o, int role) co
     case Range:
         return tr("Range");
     case Address:
-        return tr("Address (table Е.1)");
+        return tr("Address (Е.1)");
     case Value:
         return tr("Value");
     case Means:

@@ -53,6 +53,8 @@ private:
     std::array<std::int64_t, 153> shown_{};
     std::vector<QString> means_;
     std::vector<QString> search_;
+    // The fixed texts of each row in the UI language (painting asks often).
+    std::vector<std::array<QString, ColumnCount>> cells_;
     bool russian_ = false;
 };
 

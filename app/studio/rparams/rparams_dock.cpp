@@ -261,7 +261,7 @@ void RParamsPane::applyPresets() {
         ++done;
     }
     session_.advance(0);
-    say(tr("%n preset(s) loaded into the controller", nullptr, done), false);
+    say(tr("Presets loaded into the controller: %1").arg(done), false);
 }
 
 QDockWidget* addRParamsDock(QMainWindow* window, SimulationSession& session) {
