@@ -14,6 +14,7 @@
 #include "constants/constants_model.h"
 #include "engine/run.h"
 #include "machine/run.h"
+#include "language.h"
 #include "main_window.h"
 #include "profile/builtin.h"
 #include "profile/csv.h"
@@ -417,6 +418,12 @@ private slots:
         QVERIFY(!cp->filter()->setData(valueIndex(*cp, 22), QStringLiteral("99999")));
         QTest::qWait(50);
         QVERIFY(c->grab().save(shots + "/constants.png"));
+        {
+            // The machine has run: homed, moved (the live coordinates, R232..).
+            program::ParseOptions o;
+            machine::SimulationRunMachine m(w.session()->simulation());
+            engine::runProgram(m, program::parse("%L1\nN1 G0 X150 Z-40\n", o).store, 1, engine::RunOptions{});
+        }
         r->findChild<QComboBox*>("rparams.show")->setCurrentIndex(5); // not zero: the live values
         r->setFloating(true);
         r->resize(1000, 620);
@@ -429,6 +436,12 @@ private slots:
         calc.show();
         QTest::qWait(50);
         QVERIFY(calc.grab().save(shots + "/constants-calculator.png"));
+        // In Russian, as the operators read it.
+        QVERIFY(setLanguage("ru"));
+        QTest::qWait(50);
+        QVERIFY(c->grab().save(shots + "/constants-ru.png"));
+        QVERIFY(r->grab().save(shots + "/rparams-ru.png"));
+        setLanguage("en");
     }
 };
 

@@ -193,7 +193,7 @@ ConstantsPane::ConstantsPane(SimulationSession& session, QWidget* parent)
     table_->setColumnWidth(ConstantsModel::Unit, 8 * em);
     table_->setColumnWidth(ConstantsModel::Range, 7 * em);
     table_->setColumnWidth(ConstantsModel::Address, 10 * em);
-    table_->setColumnWidth(ConstantsModel::Value, 6 * em);
+    table_->setColumnWidth(ConstantsModel::Value, 7 * em);
 
     status_ = new QLabel(this);
     status_->setObjectName("constants.status");

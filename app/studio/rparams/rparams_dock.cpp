@@ -104,9 +104,9 @@ RParamsPane::RParamsPane(SimulationSession& session, QWidget* parent)
     table_->horizontalHeader()->setStretchLastSection(true);
     const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
     table_->setColumnWidth(RParamsModel::Number, 4 * em);
-    table_->setColumnWidth(RParamsModel::Access, 6 * em);
-    table_->setColumnWidth(RParamsModel::Group, 12 * em);
-    table_->setColumnWidth(RParamsModel::Meaning, 24 * em);
+    table_->setColumnWidth(RParamsModel::Access, 8 * em);
+    table_->setColumnWidth(RParamsModel::Group, 14 * em);
+    table_->setColumnWidth(RParamsModel::Meaning, 30 * em);
     table_->setColumnWidth(RParamsModel::Value, 7 * em);
     table_->setColumnWidth(RParamsModel::Mm, 7 * em);
 
