@@ -195,11 +195,11 @@
     </message>
     <message>
         <source>homed</source>
-        <translation>homed</translation>
+        <translation type="unfinished" />
     </message>
     <message>
         <source>not homed</source>
-        <translation>not homed</translation>
+        <translation type="unfinished" />
     </message>
     <message>
         <source>loop closed</source>
@@ -291,7 +291,7 @@
     </message>
     <message>
         <source>interrupted</source>
-        <translation type="unfinished" />
+        <translation>interrupted</translation>
     </message>
     <message>
         <source>end/reset</source>
@@ -363,294 +363,334 @@
     </message>
 </context>
 <context>
-    <name>k528::studio::ControllerDock</name>
+    <name>k528::studio::CalculatorDialog</name>
     <message>
-        <source>Controller</source>
-        <translation>Controller</translation>
+        <source>C-constant calculator: acceleration (parameter 22)</source>
+        <translation>C-constant calculator: acceleration (parameter 22)</translation>
     </message>
     <message>
-        <source>&amp;Controller</source>
-        <translation>&amp;Controller</translation>
+        <source>Axis X (C22)</source>
+        <translation>Axis X (C22)</translation>
     </message>
     <message>
-        <source>&amp;Connect to the controller</source>
-        <translation>&amp;Connect to the controller</translation>
+        <source>Axis Z (C74)</source>
+        <translation>Axis Z (C74)</translation>
     </message>
     <message>
-        <source>&amp;Disconnect</source>
-        <translation>&amp;Disconnect</translation>
+        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
+        <translation>Formula 1: run-up from 0 to Vmax in Tразг</translation>
     </message>
     <message>
-        <source>&amp;Pull into the database</source>
-        <translation>&amp;Pull into the database</translation>
+        <source>Formula 2: braking from Vmax over S</source>
+        <translation>Formula 2: braking from Vmax over S</translation>
     </message>
     <message>
-        <source>Push a &amp;file...</source>
-        <translation>Push a &amp;file...</translation>
+        <source>Formula 3: acceleration A</source>
+        <translation>Formula 3: acceleration A</translation>
     </message>
     <message>
-        <source>Push a database &amp;machine</source>
-        <translation>Push a database &amp;machine</translation>
+        <source>Vmax, mm/min</source>
+        <translation>Vmax, mm/min</translation>
     </message>
     <message>
-        <source>Line (RS485, Modbus RTU)</source>
-        <translation>Line (RS485, Modbus RTU)</translation>
+        <source>Tразг, ms</source>
+        <translation>Tразг, ms</translation>
     </message>
     <message>
-        <source>Live monitor</source>
-        <translation>Live monitor</translation>
+        <source>S, mm of braking</source>
+        <translation>S, mm of braking</translation>
     </message>
     <message>
-        <source>Plugin</source>
-        <translation>Plugin</translation>
+        <source>A, m/s²</source>
+        <translation>A, m/s²</translation>
     </message>
     <message>
-        <source>Port</source>
-        <translation>Port</translation>
+        <source>Axis</source>
+        <translation>Axis</translation>
     </message>
     <message>
-        <source>Baud</source>
-        <translation>Baud</translation>
+        <source>Formula</source>
+        <translation>Formula</translation>
     </message>
     <message>
-        <source>Parity</source>
-        <translation>Parity</translation>
+        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
+        <translation>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</translation>
     </message>
     <message>
-        <source>Address</source>
-        <translation>Address</translation>
+        <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
+        <translation>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</translation>
     </message>
     <message>
-        <source>none</source>
-        <translation>none</translation>
+        <source>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</source>
+        <translation>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</translation>
     </message>
     <message>
-        <source>even</source>
-        <translation>even</translation>
+        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</source>
+        <translation>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</translation>
     </message>
     <message>
-        <source>odd</source>
-        <translation>odd</translation>
+        <source>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</source>
+        <translation>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</translation>
     </message>
     <message>
-        <source>Ports</source>
-        <translation>Ports</translation>
+        <source>Why formula 1 gives twice the value</source>
+        <translation>Why formula 1 gives twice the value</translation>
     </message>
     <message>
-        <source>List the system's serial ports again</source>
-        <translation>List the system's serial ports again</translation>
+        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
+        <translation>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
     </message>
     <message>
-        <source>Pull into the database</source>
-        <translation>Pull into the database</translation>
+        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
+        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
     </message>
     <message>
-        <source>Push a file...</source>
-        <translation>Push a file...</translation>
+        <source>Set C%1 to %2</source>
+        <translation>Set C%1 to %2</translation>
     </message>
     <message>
-        <source>Cancel</source>
-        <translation>Cancel</translation>
+        <source>calculator: %1 → C%2 = %3</source>
+        <translation>calculator: %1 → C%2 = %3</translation>
     </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsEditor</name>
     <message>
-        <source>Show on the K923, Program, messages and axes</source>
-        <translation>Show on the K923, Program, messages and axes</translation>
+        <source>a program is under way: the constants are changed when it has ended</source>
+        <translation>a program is under way: the constants are changed when it has ended</translation>
     </message>
     <message>
-        <source>Disconnect</source>
-        <translation>Disconnect</translation>
+        <source>an axis is moving: the constants are changed at standstill</source>
+        <translation>an axis is moving: the constants are changed at standstill</translation>
     </message>
     <message>
-        <source>Connect</source>
-        <translation>Connect</translation>
+        <source>undo: %1</source>
+        <translation>undo: %1</translation>
     </message>
     <message>
-        <source>No controller-link plugin was found (searched: %1). %2</source>
-        <translation>No controller-link plugin was found (searched: %1). %2</translation>
+        <source>No C-parameter %1 (1..152)</source>
+        <translation>No C-parameter %1 (1..152)</translation>
     </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsModel</name>
     <message>
-        <source>Choose the serial port the controller is on.</source>
-        <translation>Choose the serial port the controller is on.</translation>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
     <message>
-        <source>No connection on %1: %2</source>
-        <translation>No connection on %1: %2</translation>
+        <source>Axis</source>
+        <translation>Axis</translation>
     </message>
     <message>
-        <source>Connected: %1</source>
-        <translation>Connected: %1</translation>
+        <source>Panel name</source>
+        <translation>Panel name</translation>
     </message>
     <message>
-        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
-        <translation>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</translation>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
     </message>
     <message>
-        <source>memory read</source>
-        <translation>memory read</translation>
+        <source>Unit</source>
+        <translation>Unit</translation>
     </message>
     <message>
-        <source>stopped</source>
-        <translation>stopped</translation>
+        <source>Range</source>
+        <translation>Range</translation>
     </message>
     <message>
-        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
-        <translation>The push did not start: the controller's memory could not be read (%1); nothing was sent</translation>
+        <source>Address (Е.1)</source>
+        <translation>Address (Е.1)</translation>
     </message>
     <message>
-        <source>Pull failed: %1</source>
-        <translation>Pull failed: %1</translation>
+        <source>Value</source>
+        <translation>Value</translation>
     </message>
     <message>
-        <source>Pulled, but not kept in the database: %1</source>
-        <translation>Pulled, but not kept in the database: %1</translation>
+        <source>The value means</source>
+        <translation>The value means</translation>
     </message>
     <message>
-        <source>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</source>
-        <translation>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</translation>
+        <source>C%1: «%2» is not a whole number</source>
+        <translation>C%1: «%2» is not a whole number</translation>
     </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsPane</name>
     <message>
-        <source>Pulled %1 programs into %2, revision %3 (%4 changes)</source>
-        <translation>Pulled %1 programs into %2, revision %3 (%4 changes)</translation>
+        <source>«%1» is not a whole number</source>
+        <translation>«%1» is not a whole number</translation>
     </message>
     <message>
-        <source>pushed</source>
-        <translation>pushed</translation>
+        <source>Machine constants</source>
+        <translation>Machine constants</translation>
     </message>
     <message>
-        <source>nothing</source>
-        <translation>nothing</translation>
+        <source>Applied to the controller, but not kept in the database: %1</source>
+        <translation>Applied to the controller, but not kept in the database: %1</translation>
     </message>
     <message>
-        <source>Pushed %1: written and verified %2</source>
-        <translation>Pushed %1: written and verified %2</translation>
+        <source>%1 — kept as revision %2 of %3</source>
+        <translation>%1 — kept as revision %2 of %3</translation>
     </message>
     <message>
-        <source>Push of %1 stopped: %2. Written and verified before: %3</source>
-        <translation>Push of %1 stopped: %2. Written and verified before: %3</translation>
+        <source>Search: number, panel name, meaning, unit, address</source>
+        <translation>Search: number, panel name, meaning, unit, address</translation>
     </message>
     <message>
-        <source>Connecting to %1...</source>
-        <translation>Connecting to %1...</translation>
+        <source>All axes</source>
+        <translation>All axes</translation>
     </message>
     <message>
-        <source>Disconnected</source>
-        <translation>Disconnected</translation>
+        <source>Axis X</source>
+        <translation>Axis X</translation>
     </message>
     <message>
-        <source>Pulling the controller's memory...</source>
-        <translation>Pulling the controller's memory...</translation>
+        <source>Axis Z</source>
+        <translation>Axis Z</translation>
     </message>
     <message>
-        <source>Push a machine file</source>
-        <translation>Push a machine file</translation>
+        <source>Common</source>
+        <translation>Common</translation>
     </message>
     <message>
-        <source>Machine files (*.k528m *.txt);;All files (*)</source>
-        <translation>Machine files (*.k528m *.txt);;All files (*)</translation>
+        <source>Hide reserved</source>
+        <translation>Hide reserved</translation>
     </message>
     <message>
-        <source>%1 cannot be pushed: %2; nothing was sent</source>
-        <translation>%1 cannot be pushed: %2; nothing was sent</translation>
+        <source>Undo</source>
+        <translation>Undo</translation>
     </message>
     <message>
-        <source>The machine %1 cannot be loaded: %2</source>
-        <translation>The machine %1 cannot be loaded: %2</translation>
+        <source>Redo</source>
+        <translation>Redo</translation>
     </message>
     <message>
-        <source>Reading the controller's memory to show what %1 changes...</source>
-        <translation>Reading the controller's memory to show what %1 changes...</translation>
+        <source>History...</source>
+        <translation>History...</translation>
     </message>
     <message>
-        <source>Push %1 to the controller</source>
-        <translation>Push %1 to the controller</translation>
+        <source>Every revision that changed the selected constant</source>
+        <translation>Every revision that changed the selected constant</translation>
     </message>
     <message>
-        <source>The controller already holds what %1 has: nothing changes.</source>
-        <translation>The controller already holds what %1 has: nothing changes.</translation>
+        <source>Compare revisions...</source>
+        <translation>Compare revisions...</translation>
     </message>
     <message>
-        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
-        <translation>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
+        <source>Import...</source>
+        <translation>Import...</translation>
     </message>
     <message>
-        <source>Push</source>
-        <translation>Push</translation>
+        <source>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</source>
+        <translation>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</translation>
     </message>
     <message>
-        <source>Pushing %1...</source>
-        <translation>Pushing %1...</translation>
+        <source>Export...</source>
+        <translation>Export...</translation>
     </message>
     <message>
-        <source>Push of %1 not started; nothing was sent</source>
-        <translation>Push of %1 not started; nothing was sent</translation>
+        <source>Calculator...</source>
+        <translation>Calculator...</translation>
     </message>
     <message>
-        <source>Check what %1 changes, then push.</source>
-        <translation>Check what %1 changes, then push.</translation>
+        <source>Note:</source>
+        <translation>Note:</translation>
     </message>
     <message>
-        <source>Cancelling at the next exchange...</source>
-        <translation>Cancelling at the next exchange...</translation>
+        <source>why the next change is made (kept with its revision)</source>
+        <translation>why the next change is made (kept with its revision)</translation>
     </message>
     <message>
-        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
-        <translation>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</translation>
+        <source>Select a constant first</source>
+        <translation>Select a constant first</translation>
     </message>
     <message>
-        <source>power-on</source>
-        <translation>power-on</translation>
+        <source>Import machine constants</source>
+        <translation>Import machine constants</translation>
     </message>
     <message>
-        <source>, running</source>
-        <translation>, running</translation>
+        <source>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</source>
+        <translation>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</translation>
     </message>
     <message>
-        <source>Mode</source>
-        <translation>Mode</translation>
+        <source>Export machine constants</source>
+        <translation>Export machine constants</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Program</translation>
+        <source>Machine files (*.k528m);;Constants as CSV (*.csv)</source>
+        <translation>Machine files (*.k528m);;Constants as CSV (*.csv)</translation>
     </message>
     <message>
-        <source>L%1, frame N%2</source>
-        <translation>L%1, frame N%2</translation>
+        <source>Another operation is under way</source>
+        <translation>Another operation is under way</translation>
     </message>
     <message>
-        <source>Override</source>
-        <translation>Override</translation>
+        <source>interrupted</source>
+        <translation>interrupted</translation>
     </message>
     <message>
-        <source>%1 mm (machine %2), following error %3 mm, %4</source>
-        <translation>%1 mm (machine %2), following error %3 mm, %4</translation>
+        <source>Importing %1</source>
+        <translation>Importing %1</translation>
     </message>
     <message>
-        <source>homed</source>
-        <translation>homed</translation>
+        <source>%1 imported: revision %2 of %3 (%4 changes)</source>
+        <translation>%1 imported: revision %2 of %3 (%4 changes)</translation>
     </message>
     <message>
-        <source>not homed</source>
-        <translation>not homed</translation>
+        <source>Nothing was imported: %1</source>
+        <translation>Nothing was imported: %1</translation>
     </message>
     <message>
-        <source>Alarms</source>
-        <translation>Alarms</translation>
+        <source>the controller did not take them: %1</source>
+        <translation>the controller did not take them: %1</translation>
     </message>
     <message>
-        <source>K LEDs</source>
-        <translation>K LEDs</translation>
+        <source>Exporting %1</source>
+        <translation>Exporting %1</translation>
     </message>
     <message>
-        <source>Machine messages</source>
-        <translation>Machine messages</translation>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
     </message>
     <message>
-        <source>Message</source>
-        <translation>Message</translation>
+        <source>The constants written to %1</source>
+        <translation>The constants written to %1</translation>
     </message>
     <message>
-        <source>Programs</source>
-        <translation>Programs</translation>
+        <source>Nothing was exported: %1</source>
+        <translation>Nothing was exported: %1</translation>
+    </message>
+    <message>
+        <source>Changes: %1</source>
+        <translation>Changes: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DiffDialog</name>
+    <message>
+        <source>Compare revisions — %1</source>
+        <translation>Compare revisions — %1</translation>
+    </message>
+    <message>
+        <source>the controller now</source>
+        <translation>the controller now</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Compare</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>The revisions cannot be compared: %1</source>
+        <translation>The revisions cannot be compared: %1</translation>
+    </message>
+    <message>
+        <source>(no difference)</source>
+        <translation>(no difference)</translation>
     </message>
 </context>
 <context>
@@ -984,6 +1024,53 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::HistoryDialog</name>
+    <message>
+        <source>History of %1 %2 — %3</source>
+        <translation>History of %1 %2 — %3</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>When</source>
+        <translation>When</translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation>Who</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Before</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>After</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>No revision of %1 changed this constant.</source>
+        <translation>No revision of %1 changed this constant.</translation>
+    </message>
+    <message>
+        <source>The history cannot be read: %1</source>
+        <translation>The history cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>Revisions that changed this constant: %1 (newest first).</source>
+        <translation>Revisions that changed this constant: %1 (newest first).</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
@@ -1182,29 +1269,6 @@
     <message>
         <source>Function</source>
         <translation type="unfinished" />
-    </message>
-</context>
-<context>
-    <name>k528::studio::LinkController</name>
-    <message>
-        <source>cancelled; nothing was kept</source>
-        <translation>cancelled; nothing was kept</translation>
-    </message>
-    <message>
-        <source>C-parameters</source>
-        <translation>C-parameters</translation>
-    </message>
-    <message>
-        <source>messages</source>
-        <translation>messages</translation>
-    </message>
-    <message>
-        <source>cancelled; the program being sent was not committed</source>
-        <translation>cancelled; the program being sent was not committed</translation>
-    </message>
-    <message>
-        <source>%1, address %2, %3 bit/s</source>
-        <translation>%1, address %2, %3 bit/s</translation>
     </message>
 </context>
 <context>
@@ -1489,7 +1553,7 @@
     </message>
     <message>
         <source>The machine %1 cannot be loaded: %2</source>
-        <translation>The machine %1 cannot be loaded: %2</translation>
+        <translation type="unfinished" />
     </message>
     <message>
         <source>&amp;Machine</source>
@@ -1550,10 +1614,6 @@
     <message>
         <source>Editor</source>
         <translation>Editor</translation>
-    </message>
-    <message>
-        <source>The controller on the link takes no keys: press them on its own K923</source>
-        <translation>The controller on the link takes no keys: press them on its own K923</translation>
     </message>
 </context>
 <context>
@@ -1668,6 +1728,180 @@
     <message>
         <source>, frame N%1</source>
         <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>k528::studio::RParamsModel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>user</source>
+        <translation>user</translation>
+    </message>
+    <message>
+        <source>system</source>
+        <translation>system</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>read only</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserved</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Access</translation>
+    </message>
+    <message>
+        <source>Preset screen</source>
+        <translation>Preset screen</translation>
+    </message>
+    <message>
+        <source>Meaning (appendix Л)</source>
+        <translation>Meaning (appendix Л)</translation>
+    </message>
+    <message>
+        <source>Discretes</source>
+        <translation>Discretes</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Preset</source>
+        <translation>Preset</translation>
+    </message>
+    <message>
+        <source>R%1 is read only: the controller writes R232..R262</source>
+        <translation>R%1 is read only: the controller writes R232..R262</translation>
+    </message>
+    <message>
+        <source>A program is executing: R-parameters are changed when it stops, as on the K923</source>
+        <translation>A program is executing: R-parameters are changed when it stops, as on the K923</translation>
+    </message>
+    <message>
+        <source>%1 is outside the R-parameters' range -2147483648..2147483647</source>
+        <translation>%1 is outside the R-parameters' range -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a number</source>
+        <translation>R%1: «%2» is not a number</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RParamsPane</name>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-parameters</translation>
+    </message>
+    <message>
+        <source>The machine's presets are not read from the database: %1</source>
+        <translation>The machine's presets are not read from the database: %1</translation>
+    </message>
+    <message>
+        <source>Search: number or meaning</source>
+        <translation>Search: number or meaning</translation>
+    </message>
+    <message>
+        <source>All R0..R299</source>
+        <translation>All R0..R299</translation>
+    </message>
+    <message>
+        <source>User R0..R149</source>
+        <translation>User R0..R149</translation>
+    </message>
+    <message>
+        <source>System (writable)</source>
+        <translation>System (writable)</translation>
+    </message>
+    <message>
+        <source>Read only R232..R262</source>
+        <translation>Read only R232..R262</translation>
+    </message>
+    <message>
+        <source>With a preset</source>
+        <translation>With a preset</translation>
+    </message>
+    <message>
+        <source>Not zero</source>
+        <translation>Not zero</translation>
+    </message>
+    <message>
+        <source>Keep as preset</source>
+        <translation>Keep as preset</translation>
+    </message>
+    <message>
+        <source>The selected parameter's value becomes the machine's preset (a new revision)</source>
+        <translation>The selected parameter's value becomes the machine's preset (a new revision)</translation>
+    </message>
+    <message>
+        <source>Remove preset</source>
+        <translation>Remove preset</translation>
+    </message>
+    <message>
+        <source>Keep all as presets</source>
+        <translation>Keep all as presets</translation>
+    </message>
+    <message>
+        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</source>
+        <translation>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</translation>
+    </message>
+    <message>
+        <source>Load the presets</source>
+        <translation>Load the presets</translation>
+    </message>
+    <message>
+        <source>The machine's presets into the controller</source>
+        <translation>The machine's presets into the controller</translation>
+    </message>
+    <message>
+        <source>Note:</source>
+        <translation>Note:</translation>
+    </message>
+    <message>
+        <source>why the presets change (kept with the revision)</source>
+        <translation>why the presets change (kept with the revision)</translation>
+    </message>
+    <message>
+        <source>No preset changes</source>
+        <translation>No preset changes</translation>
+    </message>
+    <message>
+        <source>The presets were not kept: %1</source>
+        <translation>The presets were not kept: %1</translation>
+    </message>
+    <message>
+        <source>%1 — kept as revision %2 of %3</source>
+        <translation>%1 — kept as revision %2 of %3</translation>
+    </message>
+    <message>
+        <source>Select an R-parameter first</source>
+        <translation>Select an R-parameter first</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262): it cannot be preset</source>
+        <translation>R%1 is read only (R232..R262): it cannot be preset</translation>
+    </message>
+    <message>
+        <source>The selected R-parameter has no preset</source>
+        <translation>The selected R-parameter has no preset</translation>
+    </message>
+    <message>
+        <source>Presets loaded into the controller: %1</source>
+        <translation>Presets loaded into the controller: %1</translation>
     </message>
 </context>
 <context>
@@ -1795,13 +2029,6 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Oscilloscope</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::SimulatedController</name>
-    <message>
-        <source>simulated %1</source>
-        <translation>simulated %1</translation>
     </message>
 </context>
 <context>

@@ -18,6 +18,7 @@
 #include "backplot/backplot_widget.h"
 #include "controller/controller_dock.h"
 #include "controller/simulated_controller.h"
+#include "constants/constants_dock.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
@@ -25,6 +26,7 @@
 #include "machine/machine_panel.h"
 #include "machine/status_views.h"
 #include "profile/builtin.h"
+#include "rparams/rparams_dock.h"
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
 #include "editor/editor_tab.h"
@@ -158,6 +160,8 @@ void MainWindow::createDocks() {
     }
     addScopeDock(this, *session_);
     addControllerDock(this); // controller/controller_dock.cpp: the Controller menu and dock
+    addConstantsDock(this, *session_); // constants/constants_dock.cpp
+    addRParamsDock(this, *session_);   // rparams/rparams_dock.cpp
 
 }
 
@@ -202,6 +206,9 @@ void MainWindow::createMenus() {
         viewMenu_->addAction(d->toggleViewAction());
     if (auto* scope = findChild<QDockWidget*>("dock.scope"))
         viewMenu_->addAction(scope->toggleViewAction());
+    for (const char* name : {"dock.constants", "dock.rparams"})
+        if (auto* d = findChild<QDockWidget*>(name))
+            viewMenu_->addAction(d->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);

@@ -1,0 +1,498 @@
+#include "constants/constants_dock.h"
+
+#include "catalog/cparams.h"
+#include "constants/constants_dialogs.h"
+#include "constants/constants_editor.h"
+#include "constants/constants_model.h"
+#include "engine/controller.h"
+#include "profile/csv.h"
+#include "profile/text_format.h"
+#include "scope/dock_place.h"
+#include "session/simulation_session.h"
+#include "util/input_file.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMainWindow>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPromise>
+#include <QSaveFile>
+#include <QStyledItemDelegate>
+#include <QTableView>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace k528::studio {
+
+namespace {
+
+// The value column's editor: every keystroke is checked as the controller
+// would check the value (range and cross-checks); a value it would refuse
+// is shown red with the manual's message, and Enter does not commit it.
+class ValueDelegate : public QStyledItemDelegate {
+public:
+    ValueDelegate(ConstantsEditor& e, std::function<void(const QString&, bool)> say, QObject* parent)
+        : QStyledItemDelegate(parent), editor_(e), say_(std::move(say)) {}
+
+    QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex& index) const override {
+        auto* line = new QLineEdit(parent);
+        line->setObjectName("constants.valueEditor");
+        const int number = index.data(ConstantsModel::NumberRole).toInt();
+        QObject::connect(line, &QLineEdit::textEdited, line, [this, line, number](const QString& t) {
+            line->setProperty("refused", false);
+            bool ok = false;
+            const qlonglong v = t.trimmed().toLongLong(&ok);
+            QString why;
+            if (!ok && !t.trimmed().isEmpty() && t.trimmed() != QLatin1String("-"))
+                why = ConstantsPane::tr("«%1» is not a whole number").arg(t);
+            else if (ok) {
+                const CEditCheck c = editor_.check(number, v);
+                if (!c.ok)
+                    why = c.text;
+                else if (!c.warnings.isEmpty())
+                    say_(c.warnings.join(QLatin1Char('\n')), false);
+                else
+                    say_(QString(), false);
+            }
+            line->setProperty("refused", !why.isEmpty());
+            line->setStyleSheet(why.isEmpty() ? QString() : QStringLiteral("background:#ffd7d7;"));
+            line->setToolTip(why);
+            if (!why.isEmpty())
+                say_(why, true);
+        });
+        return line;
+    }
+    void setEditorData(QWidget* w, const QModelIndex& index) const override {
+        static_cast<QLineEdit*>(w)->setText(index.data(Qt::EditRole).toString());
+    }
+    void setModelData(QWidget* w, QAbstractItemModel* model, const QModelIndex& index) const override {
+        auto* line = static_cast<QLineEdit*>(w);
+        if (line->text() == index.data(Qt::EditRole).toString())
+            return;
+        model->setData(index, line->text(), Qt::EditRole);
+    }
+
+private:
+    ConstantsEditor& editor_;
+    std::function<void(const QString&, bool)> say_;
+};
+
+class ConstantsDock : public QDockWidget {
+public:
+    ConstantsDock(QMainWindow* window, SimulationSession& session) : QDockWidget(window) {
+        setObjectName("dock.constants");
+        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        setWidget(new ConstantsPane(session, this));
+        retranslate();
+    }
+
+protected:
+    void changeEvent(QEvent* e) override {
+        if (e->type() == QEvent::LanguageChange)
+            retranslate();
+        QDockWidget::changeEvent(e);
+    }
+
+private:
+    void retranslate() { setWindowTitle(ConstantsPane::tr("Machine constants")); }
+};
+
+QToolButton* button(QWidget* parent, const char* name) {
+    auto* b = new QToolButton(parent);
+    b->setObjectName(name);
+    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    b->setAutoRaise(true);
+    return b;
+}
+
+} // namespace
+
+ConstantsPane::ConstantsPane(SimulationSession& session, QWidget* parent)
+    : QWidget(parent), session_(session) {
+    setObjectName("constantsPane");
+    editor_ = new ConstantsEditor(session, this);
+    model_ = new ConstantsModel(*editor_, this);
+    filter_ = new ConstantsFilter(this);
+    filter_->setSourceModel(model_);
+
+    auto* top = new QHBoxLayout;
+    search_ = new QLineEdit(this);
+    search_->setObjectName("constants.search");
+    search_->setClearButtonEnabled(true);
+    axis_ = new QComboBox(this);
+    axis_->setObjectName("constants.axis");
+    axis_->addItems({QString(), QString(), QString(), QString()});
+    hideReserved_ = new QCheckBox(this);
+    hideReserved_->setObjectName("constants.hideReserved");
+    top->addWidget(search_, 1);
+    top->addWidget(axis_);
+    top->addWidget(hideReserved_);
+
+    auto* tools = new QHBoxLayout;
+    undoButton_ = button(this, "constants.undo");
+    redoButton_ = button(this, "constants.redo");
+    historyButton_ = button(this, "constants.history");
+    diffButton_ = button(this, "constants.diff");
+    importButton_ = button(this, "constants.import");
+    exportButton_ = button(this, "constants.export");
+    calcButton_ = button(this, "constants.calculator");
+    QUndoStack* undo = editor_->undoStack();
+    undoButton_->setEnabled(false);
+    redoButton_->setEnabled(false);
+    connect(undo, &QUndoStack::canUndoChanged, undoButton_, &QWidget::setEnabled);
+    connect(undo, &QUndoStack::canRedoChanged, redoButton_, &QWidget::setEnabled);
+    connect(undoButton_, &QToolButton::clicked, undo, &QUndoStack::undo);
+    connect(redoButton_, &QToolButton::clicked, undo, &QUndoStack::redo);
+    connect(historyButton_, &QToolButton::clicked, this, &ConstantsPane::showHistory);
+    connect(diffButton_, &QToolButton::clicked, this, &ConstantsPane::showDiff);
+    connect(importButton_, &QToolButton::clicked, this, &ConstantsPane::chooseImport);
+    connect(exportButton_, &QToolButton::clicked, this, &ConstantsPane::chooseExport);
+    connect(calcButton_, &QToolButton::clicked, this, &ConstantsPane::showCalculator);
+    for (QToolButton* b : {undoButton_, redoButton_, historyButton_, diffButton_, importButton_,
+                           exportButton_, calcButton_})
+        tools->addWidget(b);
+    tools->addSpacing(12);
+    noteLabel_ = new QLabel(this);
+    note_ = new QLineEdit(this);
+    note_->setObjectName("constants.note");
+    tools->addWidget(noteLabel_);
+    tools->addWidget(note_, 1);
+
+    table_ = new QTableView(this);
+    table_->setObjectName("constants.table");
+    table_->setModel(filter_);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                            QAbstractItemView::AnyKeyPressed);
+    table_->setAlternatingRowColors(true);
+    table_->setWordWrap(false);
+    table_->verticalHeader()->hide();
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->setItemDelegateForColumn(ConstantsModel::Value,
+                                     new ValueDelegate(*editor_, [this](const QString& t, bool bad) { say(t, bad); }, table_));
+    const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    table_->setColumnWidth(ConstantsModel::Number, 5 * em);
+    table_->setColumnWidth(ConstantsModel::Axis, 3 * em);
+    table_->setColumnWidth(ConstantsModel::Name, 12 * em);
+    table_->setColumnWidth(ConstantsModel::Meaning, 22 * em);
+    table_->setColumnWidth(ConstantsModel::Unit, 8 * em);
+    table_->setColumnWidth(ConstantsModel::Range, 7 * em);
+    table_->setColumnWidth(ConstantsModel::Address, 10 * em);
+    table_->setColumnWidth(ConstantsModel::Value, 7 * em);
+
+    status_ = new QLabel(this);
+    status_->setObjectName("constants.status");
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    progress_ = new QProgressBar(this);
+    progress_->setObjectName("constants.progress");
+    progress_->setMaximumWidth(220);
+    progress_->hide();
+    auto* bottom = new QHBoxLayout;
+    bottom->addWidget(status_, 1);
+    bottom->addWidget(progress_);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(top);
+    layout->addLayout(tools);
+    layout->addWidget(table_, 1);
+    layout->addLayout(bottom);
+
+    connect(search_, &QLineEdit::textChanged, filter_, &ConstantsFilter::setSearch);
+    connect(axis_, &QComboBox::currentIndexChanged, this, [this](int i) {
+        filter_->setAxisFilter(static_cast<ConstantsFilter::AxisFilter>(i));
+    });
+    connect(hideReserved_, &QCheckBox::toggled, filter_, &ConstantsFilter::setHideReserved);
+    editor_->setNoteProvider([this] { return note_->text(); });
+    connect(&session_, &SimulationSession::advanced, model_, &ConstantsModel::refresh);
+    connect(editor_, &ConstantsEditor::refused, this, [this](const QString& why) { say(why, true); });
+    connect(editor_, &ConstantsEditor::notKept, this, [this](const QString& why) {
+        say(tr("Applied to the controller, but not kept in the database: %1").arg(why), true);
+    });
+    connect(editor_, &ConstantsEditor::kept, this, [this](int revision, const QString& note) {
+        say(tr("%1 — kept as revision %2 of %3").arg(note).arg(revision).arg(editor_->store().qName()), false);
+        note_->clear();
+    });
+    retranslate();
+}
+
+void ConstantsPane::retranslate() {
+    search_->setPlaceholderText(tr("Search: number, panel name, meaning, unit, address"));
+    axis_->setItemText(0, tr("All axes"));
+    axis_->setItemText(1, tr("Axis X"));
+    axis_->setItemText(2, tr("Axis Z"));
+    axis_->setItemText(3, tr("Common"));
+    hideReserved_->setText(tr("Hide reserved"));
+    undoButton_->setText(tr("Undo"));
+    redoButton_->setText(tr("Redo"));
+    historyButton_->setText(tr("History..."));
+    historyButton_->setToolTip(tr("Every revision that changed the selected constant"));
+    diffButton_->setText(tr("Compare revisions..."));
+    importButton_->setText(tr("Import..."));
+    importButton_->setToolTip(tr("A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them"));
+    exportButton_->setText(tr("Export..."));
+    calcButton_->setText(tr("Calculator..."));
+    noteLabel_->setText(tr("Note:"));
+    note_->setPlaceholderText(tr("why the next change is made (kept with its revision)"));
+    model_->retranslate();
+}
+
+void ConstantsPane::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void ConstantsPane::say(const QString& text, bool bad) {
+    status_->setText(text);
+    status_->setStyleSheet(bad ? QStringLiteral("color:#b00000;") : QString());
+}
+
+QString ConstantsPane::statusText() const {
+    return status_->text();
+}
+
+int ConstantsPane::selectedNumber() const {
+    const QModelIndex i = table_->currentIndex();
+    return i.isValid() ? i.data(ConstantsModel::NumberRole).toInt() : 0;
+}
+
+void ConstantsPane::selectConstant(int number) {
+    const QModelIndex src = model_->index(ConstantsModel::rowOf(number), ConstantsModel::Value);
+    const QModelIndex i = filter_->mapFromSource(src);
+    if (i.isValid()) {
+        table_->setCurrentIndex(i);
+        table_->scrollTo(i);
+    }
+}
+
+void ConstantsPane::showHistory() {
+    const int n = selectedNumber();
+    if (n == 0) {
+        say(tr("Select a constant first"), true);
+        return;
+    }
+    auto* d = new HistoryDialog(editor_->store(), n, this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+}
+
+void ConstantsPane::showDiff() {
+    auto* d = new DiffDialog(*this, this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+}
+
+void ConstantsPane::showCalculator() {
+    auto* d = new CalculatorDialog(*editor_, this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+}
+
+void ConstantsPane::chooseImport() {
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Import machine constants"), QString(),
+        tr("Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)"));
+    if (!path.isEmpty())
+        importFile(path);
+}
+
+void ConstantsPane::chooseExport() {
+    QString selected;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export machine constants"), editor_->store().qName() + ".k528m",
+        tr("Machine files (*.k528m);;Constants as CSV (*.csv)"), &selected);
+    if (!path.isEmpty())
+        exportFile(path);
+}
+
+void ConstantsPane::runLong(const QString& what,
+                            std::function<LongResult(std::function<void(int, int)>)> work,
+                            std::function<void(const LongResult&)> done) {
+    if (busy_) {
+        say(tr("Another operation is under way"), true);
+        return;
+    }
+    busy_ = true;
+    for (QToolButton* b : {importButton_, exportButton_, diffButton_})
+        b->setEnabled(false);
+    progress_->setRange(0, 0);
+    progress_->setFormat(what + QStringLiteral(" %p%"));
+    progress_->show();
+    say(what, false);
+    auto* watcher = new QFutureWatcher<LongResult>(this);
+    connect(watcher, &QFutureWatcher<LongResult>::progressRangeChanged, progress_, &QProgressBar::setRange);
+    connect(watcher, &QFutureWatcher<LongResult>::progressValueChanged, progress_, &QProgressBar::setValue);
+    connect(watcher, &QFutureWatcher<LongResult>::finished, this, [this, watcher, done] {
+        LongResult r;
+        if (watcher->future().resultCount() > 0)
+            r = watcher->result();
+        else
+            r.error = tr("interrupted");
+        watcher->deleteLater();
+        progress_->hide();
+        busy_ = false;
+        for (QToolButton* b : {importButton_, exportButton_, diffButton_})
+            b->setEnabled(true);
+        done(r);
+        emit finished(r);
+    });
+    watcher->setFuture(QtConcurrent::run([work](QPromise<LongResult>& promise) {
+        promise.addResult(work([&promise](int done, int total) {
+            promise.setProgressRange(0, total);
+            promise.setProgressValue(done);
+        }));
+    }));
+}
+
+void ConstantsPane::importFile(const QString& path) {
+    const MachineStore store = editor_->store();
+    const QString file = QFileInfo(path).fileName();
+    runLong(tr("Importing %1").arg(file), [store, path, file](std::function<void(int, int)> progress) {
+        LongResult r;
+        std::string text, err;
+        if (!util::readInputFile(path.toStdString(), text, err)) {
+            r.error = QString::fromStdString(err);
+            return r;
+        }
+        const bool csv = path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive) ||
+                         text.rfind("number;", 0) == 0 || text.rfind("\xEF\xBB\xBFnumber;", 0) == 0;
+        profile::MachineProfile p;
+        try {
+            // The whole file is read and checked before the database is touched.
+            if (csv) {
+                p = store.current();
+                const profile::CValues c = profile::readCParamsCsv(text, file.toStdString());
+                p.c = c;
+            } else {
+                p = profile::readMachineText(text, file.toStdString());
+            }
+        } catch (const std::exception& e) {
+            r.error = QString::fromUtf8(e.what());
+            return r;
+        }
+        const MachineStore::Kept k = store.keepProfile(
+            p, QStringLiteral("import %1 (K528 Studio)").arg(file),
+            [&progress](std::size_t done, std::size_t total) {
+                progress(static_cast<int>(done), static_cast<int>(total));
+            });
+        if (k.revision == 0) {
+            r.error = k.error;
+            return r;
+        }
+        r.revision = k.revision;
+        r.haveConstants = true;
+        r.constants.assign(p.c.begin(), p.c.end());
+        r.message = ConstantsPane::tr("%1 imported: revision %2 of %3 (%4 changes)")
+                        .arg(file)
+                        .arg(k.revision)
+                        .arg(store.qName())
+                        .arg(k.changes);
+        return r;
+    }, [this](const LongResult& r) {
+        if (!r.error.isEmpty()) {
+            say(tr("Nothing was imported: %1").arg(r.error), true);
+            return;
+        }
+        const QString why = editor_->applyAll(r.constants);
+        if (!why.isEmpty())
+            say(r.message + QStringLiteral("; ") + tr("the controller did not take them: %1").arg(why), true);
+        else
+            say(r.message, false);
+    });
+}
+
+void ConstantsPane::exportFile(const QString& path) {
+    const MachineStore store = editor_->store();
+    const auto c = editor_->values();
+    profile::CValues values{};
+    std::copy(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(values.size()), values.begin());
+    const QString file = QFileInfo(path).fileName();
+    runLong(tr("Exporting %1").arg(file), [store, values, path, file](std::function<void(int, int)>) {
+        LongResult r;
+        try {
+            std::string text;
+            if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) {
+                text = profile::writeCParamsCsv(values);
+            } else {
+                profile::MachineProfile p = store.current();
+                p.c = values; // the constants the controller runs
+                text = profile::writeMachineText(p);
+            }
+            QSaveFile f(path);
+            if (!f.open(QIODevice::WriteOnly) ||
+                f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
+                !f.commit()) {
+                r.error = ConstantsPane::tr("cannot write %1: %2").arg(path, f.errorString());
+                return r;
+            }
+        } catch (const std::exception& e) {
+            r.error = QString::fromUtf8(e.what());
+            return r;
+        }
+        r.message = ConstantsPane::tr("The constants written to %1").arg(file);
+        return r;
+    }, [this](const LongResult& r) {
+        if (!r.error.isEmpty())
+            say(tr("Nothing was exported: %1").arg(r.error), true);
+        else
+            say(r.message, false);
+    });
+}
+
+QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
+    const MachineStore store = editor_->store();
+    const auto c = editor_->values();
+    profile::CValues values{};
+    std::copy(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(values.size()), values.begin());
+    return QtConcurrent::run([store, values, a, b](QPromise<LongResult>& promise) {
+        LongResult r;
+        promise.setProgressRange(0, 3);
+        try {
+            const auto at = [&](int rev) {
+                if (rev > 0)
+                    return store.load(rev);
+                profile::MachineProfile p = store.current();
+                p.c = values;
+                return p;
+            };
+            const profile::MachineProfile pa = at(a);
+            promise.setProgressValue(1);
+            const profile::MachineProfile pb = at(b);
+            promise.setProgressValue(2);
+            const auto changes = profile::diff(pa, pb);
+            r.text = QString::fromStdString(profile::formatDiff(changes));
+            r.message = ConstantsPane::tr("Changes: %1").arg(changes.size());
+            promise.setProgressValue(3);
+        } catch (const std::exception& e) {
+            r.error = QString::fromUtf8(e.what());
+        }
+        promise.addResult(r);
+    });
+}
+
+QDockWidget* addConstantsDock(QMainWindow* window, SimulationSession& session) {
+    auto* dock = new ConstantsDock(window, session);
+    window->addDockWidget(Qt::LeftDockWidgetArea, dock);
+    dock->hide(); // shown from the View menu; its place is remembered
+    rememberDockPlace(window, dock);
+    return dock;
+}
+
+} // namespace k528::studio

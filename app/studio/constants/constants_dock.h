@@ -1,0 +1,111 @@
+// The dock «Machine constants» (dock.constants): the table of the 152
+// C-parameters (ConstantsModel) with search and an axis filter, editing
+// checked as it is typed (ConstantsEditor::check), undo/redo, the note for
+// the next revision, the history of one constant, the diff of two
+// revisions, import/export of machine files and CSV and the C-constant
+// calculator. Imports, exports and diffs run on a worker thread with a
+// progress bar; the window goes on meanwhile.
+#pragma once
+
+#include <QFuture>
+#include <QString>
+#include <QWidget>
+#include <functional>
+
+class QComboBox;
+class QCheckBox;
+class QDockWidget;
+class QLabel;
+class QLineEdit;
+class QMainWindow;
+class QProgressBar;
+class QTableView;
+class QToolButton;
+
+namespace k528::studio {
+
+class ConstantsEditor;
+class ConstantsFilter;
+class ConstantsModel;
+class SimulationSession;
+
+// What a long operation gives back to the window.
+struct LongResult {
+    QString error;   // "" when it succeeded
+    QString message; // for the status line
+    QString text;    // a diff's text
+    int revision = 0;
+    bool haveConstants = false;
+    std::vector<std::int64_t> constants; // an import: the 153 values to apply
+};
+
+class ConstantsPane : public QWidget {
+    Q_OBJECT
+public:
+    ConstantsPane(SimulationSession& session, QWidget* parent = nullptr);
+
+    ConstantsEditor& editor() const { return *editor_; }
+    ConstantsModel* model() const { return model_; }
+    ConstantsFilter* filter() const { return filter_; }
+    QTableView* table() const { return table_; }
+    QLineEdit* searchField() const { return search_; }
+    QLineEdit* noteField() const { return note_; }
+    // The last refusal or confirmation shown under the table.
+    QString statusText() const;
+
+    // Long operations (started by the buttons after a file dialog; tests call
+    // them directly). Each returns at once; busy() until finished().
+    void importFile(const QString& path);
+    void exportFile(const QString& path); // .csv: the constants; else a machine file
+    // The text of the diff between two revisions (0: the controller's memory now).
+    QFuture<LongResult> diffRevisions(int a, int b);
+    bool busy() const { return busy_; }
+
+public slots:
+    void showHistory();    // of the selected constant
+    void showDiff();
+    void showCalculator();
+    void chooseImport();
+    void chooseExport();
+    void selectConstant(int number);
+
+signals:
+    void finished(const LongResult& r);
+
+protected:
+    void changeEvent(QEvent* e) override;
+
+private:
+    void retranslate();
+    void say(const QString& text, bool bad);
+    int selectedNumber() const;
+    void runLong(const QString& what, std::function<LongResult(std::function<void(int, int)>)> work,
+                 std::function<void(const LongResult&)> done);
+
+    SimulationSession& session_;
+    ConstantsEditor* editor_;
+    ConstantsModel* model_;
+    ConstantsFilter* filter_;
+    QTableView* table_;
+    QLineEdit* search_;
+    QComboBox* axis_;
+    QCheckBox* hideReserved_;
+    QLineEdit* note_;
+    QLabel* noteLabel_;
+    QToolButton* undoButton_;
+    QToolButton* redoButton_;
+    QToolButton* historyButton_;
+    QToolButton* diffButton_;
+    QToolButton* importButton_;
+    QToolButton* exportButton_;
+    QToolButton* calcButton_;
+    QLabel* status_;
+    QProgressBar* progress_;
+    bool busy_ = false;
+};
+
+// Adds the dock (right area, tabbed with nothing, hidden until chosen from
+// the View menu; its place remembered).
+QDockWidget* addConstantsDock(QMainWindow* window, SimulationSession& session);
+
+} // namespace k528::studio

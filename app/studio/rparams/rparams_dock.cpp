@@ -1,0 +1,275 @@
+#include "rparams/rparams_dock.h"
+
+#include "catalog/rparams.h"
+#include "constants/machine_store.h"
+#include "engine/controller.h"
+#include "engine/rparams.h"
+#include "rparams/rparams_model.h"
+#include "scope/dock_place.h"
+#include "session/simulation_session.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMainWindow>
+#include <QTableView>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace k528::studio {
+
+namespace {
+
+class RParamsDock : public QDockWidget {
+public:
+    RParamsDock(QMainWindow* window, SimulationSession& session) : QDockWidget(window) {
+        setObjectName("dock.rparams");
+        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        setWidget(new RParamsPane(session, this));
+        retranslate();
+    }
+
+protected:
+    void changeEvent(QEvent* e) override {
+        if (e->type() == QEvent::LanguageChange)
+            retranslate();
+        QDockWidget::changeEvent(e);
+    }
+
+private:
+    void retranslate() { setWindowTitle(RParamsPane::tr("R-parameters")); }
+};
+
+QToolButton* button(QWidget* parent, const char* name) {
+    auto* b = new QToolButton(parent);
+    b->setObjectName(name);
+    b->setAutoRaise(true);
+    return b;
+}
+
+} // namespace
+
+RParamsPane::RParamsPane(SimulationSession& session, QWidget* parent)
+    : QWidget(parent), session_(session), store_(new MachineStore(session.simulation().profile())) {
+    setObjectName("rparamsPane");
+    model_ = new RParamsModel(session, this);
+    filter_ = new RParamsFilter(this);
+    filter_->setSourceModel(model_);
+    filter_->setDynamicSortFilter(true);
+
+    search_ = new QLineEdit(this);
+    search_->setObjectName("rparams.search");
+    search_->setClearButtonEnabled(true);
+    show_ = new QComboBox(this);
+    show_->setObjectName("rparams.show");
+    for (int i = 0; i < 6; ++i)
+        show_->addItem(QString());
+    auto* top = new QHBoxLayout;
+    top->addWidget(search_, 1);
+    top->addWidget(show_);
+
+    keep_ = button(this, "rparams.keepPreset");
+    remove_ = button(this, "rparams.removePreset");
+    keepAll_ = button(this, "rparams.keepAll");
+    apply_ = button(this, "rparams.applyPresets");
+    noteLabel_ = new QLabel(this);
+    note_ = new QLineEdit(this);
+    note_->setObjectName("rparams.note");
+    auto* tools = new QHBoxLayout;
+    for (QToolButton* b : {keep_, remove_, keepAll_, apply_})
+        tools->addWidget(b);
+    tools->addSpacing(12);
+    tools->addWidget(noteLabel_);
+    tools->addWidget(note_, 1);
+    connect(keep_, &QToolButton::clicked, this, [this] { keepSelectedAsPreset(); });
+    connect(remove_, &QToolButton::clicked, this, [this] { removeSelectedPreset(); });
+    connect(keepAll_, &QToolButton::clicked, this, [this] { keepAllAsPresets(); });
+    connect(apply_, &QToolButton::clicked, this, &RParamsPane::applyPresets);
+
+    table_ = new QTableView(this);
+    table_->setObjectName("rparams.table");
+    table_->setModel(filter_);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->setSelectionMode(QAbstractItemView::SingleSelection);
+    table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
+                            QAbstractItemView::AnyKeyPressed);
+    table_->setAlternatingRowColors(true);
+    table_->setWordWrap(false);
+    table_->verticalHeader()->hide();
+    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    table_->setColumnWidth(RParamsModel::Number, 4 * em);
+    table_->setColumnWidth(RParamsModel::Access, 8 * em);
+    table_->setColumnWidth(RParamsModel::Group, 14 * em);
+    table_->setColumnWidth(RParamsModel::Meaning, 30 * em);
+    table_->setColumnWidth(RParamsModel::Value, 7 * em);
+    table_->setColumnWidth(RParamsModel::Mm, 7 * em);
+
+    status_ = new QLabel(this);
+    status_->setObjectName("rparams.status");
+    status_->setWordWrap(true);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(top);
+    layout->addLayout(tools);
+    layout->addWidget(table_, 1);
+    layout->addWidget(status_);
+
+    connect(search_, &QLineEdit::textChanged, filter_, &RParamsFilter::setSearch);
+    connect(show_, &QComboBox::currentIndexChanged, this,
+            [this](int i) { filter_->setShow(static_cast<RParamsFilter::Show>(i)); });
+    connect(&session_, &SimulationSession::advanced, model_, &RParamsModel::refresh);
+    connect(model_, &RParamsModel::refused, this, [this](const QString& why) { say(why, true); });
+    try {
+        model_->setPresets(store_->current().r);
+    } catch (const std::exception& e) {
+        say(tr("The machine's presets are not read from the database: %1").arg(QString::fromUtf8(e.what())), true);
+    }
+    retranslate();
+}
+
+RParamsPane::~RParamsPane() {
+    delete store_;
+}
+
+void RParamsPane::retranslate() {
+    search_->setPlaceholderText(tr("Search: number or meaning"));
+    show_->setItemText(0, tr("All R0..R299"));
+    show_->setItemText(1, tr("User R0..R149"));
+    show_->setItemText(2, tr("System (writable)"));
+    show_->setItemText(3, tr("Read only R232..R262"));
+    show_->setItemText(4, tr("With a preset"));
+    show_->setItemText(5, tr("Not zero"));
+    keep_->setText(tr("Keep as preset"));
+    keep_->setToolTip(tr("The selected parameter's value becomes the machine's preset (a new revision)"));
+    remove_->setText(tr("Remove preset"));
+    keepAll_->setText(tr("Keep all as presets"));
+    keepAll_->setToolTip(tr("Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does"));
+    apply_->setText(tr("Load the presets"));
+    apply_->setToolTip(tr("The machine's presets into the controller"));
+    noteLabel_->setText(tr("Note:"));
+    note_->setPlaceholderText(tr("why the presets change (kept with the revision)"));
+    model_->retranslate();
+}
+
+void RParamsPane::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void RParamsPane::say(const QString& text, bool bad) {
+    status_->setText(text);
+    status_->setStyleSheet(bad ? QStringLiteral("color:#b00000;") : QString());
+}
+
+QString RParamsPane::statusText() const {
+    return status_->text();
+}
+
+int RParamsPane::selected() const {
+    const QModelIndex i = table_->currentIndex();
+    return i.isValid() ? i.data(RParamsModel::NumberRole).toInt() : -1;
+}
+
+void RParamsPane::selectR(int number) {
+    const QModelIndex i = filter_->mapFromSource(model_->index(number, RParamsModel::Value));
+    if (i.isValid()) {
+        table_->setCurrentIndex(i);
+        table_->scrollTo(i);
+    }
+}
+
+int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& presets) {
+    if (presets.empty()) {
+        say(tr("No preset changes"), false);
+        return 0;
+    }
+    db::Edit e;
+    e.r = presets;
+    QStringList items;
+    for (const auto& [n, v] : presets)
+        items << (v ? QStringLiteral("R%1=%2").arg(n).arg(*v) : QStringLiteral("R%1 -").arg(n));
+    const QString note = note_->text().trimmed().isEmpty()
+                             ? QStringLiteral("presets %1 (K528 Studio)").arg(items.join(QLatin1Char(' ')))
+                             : note_->text().trimmed();
+    const MachineStore::Kept k = store_->keep(e, note);
+    if (k.revision == 0) {
+        say(tr("The presets were not kept: %1").arg(k.error), true);
+        return 0;
+    }
+    try {
+        model_->setPresets(store_->current().r);
+    } catch (const std::exception&) {
+    }
+    note_->clear();
+    say(tr("%1 — kept as revision %2 of %3").arg(note).arg(k.revision).arg(store_->qName()), false);
+    return k.revision;
+}
+
+int RParamsPane::keepSelectedAsPreset() {
+    const int n = selected();
+    if (n < 0) {
+        say(tr("Select an R-parameter first"), true);
+        return 0;
+    }
+    if (engine::rReadOnly(n)) {
+        say(tr("R%1 is read only (R232..R262): it cannot be preset").arg(n), true);
+        return 0;
+    }
+    return keepPresets({{n, session_.controller().r(n)}});
+}
+
+int RParamsPane::removeSelectedPreset() {
+    const int n = selected();
+    if (n < 0 || !model_->presets().count(n)) {
+        say(tr("The selected R-parameter has no preset"), true);
+        return 0;
+    }
+    return keepPresets({{n, std::nullopt}});
+}
+
+int RParamsPane::keepAllAsPresets() {
+    std::map<int, std::optional<std::int64_t>> p;
+    const auto r = session_.controller().rValues();
+    for (int n = 0; n < engine::kRCount; ++n) {
+        if (engine::rReadOnly(n))
+            continue;
+        const std::int64_t v = r[static_cast<std::size_t>(n)];
+        const auto it = model_->presets().find(n);
+        if (v != 0 && (it == model_->presets().end() || it->second != v))
+            p[n] = v;
+        else if (v == 0 && it != model_->presets().end())
+            p[n] = std::nullopt;
+    }
+    return keepPresets(p);
+}
+
+void RParamsPane::applyPresets() {
+    int done = 0;
+    for (const auto& [n, v] : model_->presets()) {
+        const QString why = model_->setValue(n, v);
+        if (!why.isEmpty()) {
+            say(why, true);
+            return;
+        }
+        ++done;
+    }
+    session_.advance(0);
+    say(tr("Presets loaded into the controller: %1").arg(done), false);
+}
+
+QDockWidget* addRParamsDock(QMainWindow* window, SimulationSession& session) {
+    auto* dock = new RParamsDock(window, session);
+    window->addDockWidget(Qt::LeftDockWidgetArea, dock);
+    dock->hide(); // shown from the View menu; its place is remembered
+    rememberDockPlace(window, dock);
+    return dock;
+}
+
+} // namespace k528::studio

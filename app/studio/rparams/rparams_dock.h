@@ -1,0 +1,74 @@
+// The dock «R-parameters» (dock.rparams): R0..R299 of the simulated
+// controller, live while the machine runs (RParamsModel), edited where the
+// engine allows it (РУЧНОЙ screen 3), and the machine's presets: the value
+// of a parameter kept as its preset (a new revision of the machine in the
+// database, with a note), a preset removed, the presets put into the
+// controller again.
+#pragma once
+
+#include <QWidget>
+#include <cstdint>
+#include <map>
+#include <optional>
+
+class QComboBox;
+class QDockWidget;
+class QLabel;
+class QLineEdit;
+class QMainWindow;
+class QTableView;
+class QToolButton;
+
+namespace k528::studio {
+
+class MachineStore;
+class RParamsFilter;
+class RParamsModel;
+class SimulationSession;
+
+class RParamsPane : public QWidget {
+    Q_OBJECT
+public:
+    RParamsPane(SimulationSession& session, QWidget* parent = nullptr);
+    ~RParamsPane() override;
+
+    RParamsModel* model() const { return model_; }
+    RParamsFilter* filter() const { return filter_; }
+    QTableView* table() const { return table_; }
+    QString statusText() const;
+    void selectR(int number);
+
+    // Presets: kept as the machine's next revision; returns the revision (0: not kept).
+    int keepPresets(const std::map<int, std::optional<std::int64_t>>& presets);
+    int keepSelectedAsPreset();
+    int removeSelectedPreset();
+    int keepAllAsPresets(); // every writable R that is not 0, as «keep the memory» does
+    void applyPresets();    // the machine's presets into the controller
+
+protected:
+    void changeEvent(QEvent* e) override;
+
+private:
+    void retranslate();
+    void say(const QString& text, bool bad);
+    int selected() const;
+
+    SimulationSession& session_;
+    MachineStore* store_;
+    RParamsModel* model_;
+    RParamsFilter* filter_;
+    QTableView* table_;
+    QLineEdit* search_;
+    QComboBox* show_;
+    QToolButton* keep_;
+    QToolButton* remove_;
+    QToolButton* keepAll_;
+    QToolButton* apply_;
+    QLabel* noteLabel_;
+    QLineEdit* note_;
+    QLabel* status_;
+};
+
+QDockWidget* addRParamsDock(QMainWindow* window, SimulationSession& session);
+
+} // namespace k528::studio

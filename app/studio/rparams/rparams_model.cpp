@@ -1,0 +1,309 @@
+#include "rparams/rparams_model.h"
+
+#include "catalog/rparams.h"
+#include "engine/controller.h"
+#include "engine/rparams.h"
+#include "language.h"
+#include "session/simulation_session.h"
+#include "units/units.h"
+
+#include <QBrush>
+#include <QColor>
+#include <QFont>
+#include <QLocale>
+#include <cmath>
+
+namespace k528::studio {
+
+namespace {
+
+QString fromStd(std::string_view s) {
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+units::AxisScale scaleOf(const engine::Controller& c, catalog::RUnit u) {
+    return profile::axisScale(c.profile(), catalog::rUnitAxis(u) == catalog::Axis::Z ? catalog::Axis::Z
+                                                                                     : catalog::Axis::X);
+}
+
+bool isCoordinate(catalog::RUnit u) {
+    return u == catalog::RUnit::DiscX || u == catalog::RUnit::DiscZ;
+}
+
+} // namespace
+
+RParamsModel::RParamsModel(SimulationSession& session, QObject* parent)
+    : QAbstractTableModel(parent), session_(session) {
+    const auto r = session_.controller().rValues();
+    std::copy(r.begin(), r.end(), shown_.begin());
+    presets_ = session_.simulation().profile().r;
+    retranslate();
+}
+
+void RParamsModel::retranslate() {
+    beginResetModel();
+    russian_ = currentLanguage() == QLatin1String("ru");
+    search_.assign(engine::kRCount, QString());
+    for (int n = 0; n < engine::kRCount; ++n) {
+        const catalog::RParamDef& d = catalog::rParam(n);
+        QString s = QStringLiteral("r%1 %1 ").arg(n);
+        for (std::string_view t : {d.meaningRu, d.meaningEn, d.panelHint, catalog::rGroupNameRu(d.group),
+                                   catalog::rGroupNameEn(d.group)})
+            s += fromStd(t) + ' ';
+        search_[static_cast<std::size_t>(n)] = s.toLower();
+    }
+    endResetModel();
+}
+
+void RParamsModel::setPresets(std::map<int, std::int64_t> presets) {
+    presets_ = std::move(presets);
+    emit dataChanged(index(0, Preset), index(engine::kRCount - 1, Preset));
+}
+
+void RParamsModel::refresh() {
+    const auto r = session_.controller().rValues();
+    int first = -1, last = -1;
+    for (int n = 0; n < engine::kRCount; ++n) {
+        const auto i = static_cast<std::size_t>(n);
+        if (r[i] == shown_[i])
+            continue;
+        shown_[i] = r[i];
+        if (first < 0)
+            first = n;
+        last = n;
+    }
+    if (first >= 0)
+        emit dataChanged(index(first, Value), index(last, Mm));
+}
+
+int RParamsModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : engine::kRCount;
+}
+
+int RParamsModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QString RParamsModel::mmText(int number, std::int64_t v) const {
+    const catalog::RParamDef& d = catalog::rParam(number);
+    const engine::Controller& c = session_.controller();
+    switch (d.unit) {
+    case catalog::RUnit::DiscX:
+    case catalog::RUnit::DiscZ: {
+        const units::AxisScale s = scaleOf(c, d.unit);
+        return QString::number(units::discToMm(v, s), 'f', s.decimals());
+    }
+    case catalog::RUnit::DiscXPerMin:
+    case catalog::RUnit::DiscZPerMin: {
+        const units::AxisScale s = scaleOf(c, d.unit);
+        return tr("%1 mm/min").arg(units::discToMm(v, s), 0, 'f', std::max(0, s.decimals() - 2));
+    }
+    case catalog::RUnit::Ms:
+        return tr("%1 s").arg(units::msToS(v), 0, 'f', 3);
+    default:
+        return {};
+    }
+}
+
+QVariant RParamsModel::data(const QModelIndex& index, int role) const {
+    if (!index.isValid() || index.row() < 0 || index.row() >= engine::kRCount)
+        return {};
+    const int n = index.row();
+    const catalog::RParamDef& d = catalog::rParam(n);
+    if (role == NumberRole)
+        return n;
+    if (role == SearchRole)
+        return search_[static_cast<std::size_t>(n)];
+    const std::int64_t v = shown_[static_cast<std::size_t>(n)];
+    if (role == Qt::DisplayRole || role == Qt::EditRole) {
+        switch (index.column()) {
+        case Number:
+            return role == Qt::EditRole ? QVariant(n) : QVariant(QStringLiteral("R%1").arg(n));
+        case Access:
+            switch (d.access) {
+            case catalog::RAccess::User:
+                return tr("user");
+            case catalog::RAccess::System:
+                return tr("system");
+            case catalog::RAccess::ReadOnly:
+                return tr("read only");
+            case catalog::RAccess::Unassigned:
+                return tr("reserved");
+            }
+            return {};
+        case Group:
+            return d.group == 0 ? QString()
+                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(fromStd(
+                                      russian_ ? catalog::rGroupNameRu(d.group) : catalog::rGroupNameEn(d.group)));
+        case Meaning: {
+            QString m = fromStd(russian_ ? d.meaningRu : d.meaningEn);
+            const std::string_view unit = russian_ ? catalog::rUnitRu(d.unit) : catalog::rUnitEn(d.unit);
+            if (!unit.empty() && d.unit != catalog::RUnit::Number)
+                m += QStringLiteral(" [%1]").arg(fromStd(unit));
+            return m;
+        }
+        case Value:
+            return QString::number(v);
+        case Mm:
+            return mmText(n, v);
+        case Preset: {
+            const auto it = presets_.find(n);
+            return it == presets_.end() ? QString() : QString::number(it->second);
+        }
+        default:
+            return {};
+        }
+    }
+    if (role == Qt::ToolTipRole) {
+        QString t = fromStd(russian_ ? d.meaningRu : d.meaningEn);
+        if (!d.panelHint.empty())
+            t += QStringLiteral("\n") + fromStd(d.panelHint);
+        if (!d.note.empty())
+            t += QStringLiteral("\n") + fromStd(d.note);
+        return t;
+    }
+    if (role == Qt::TextAlignmentRole && (index.column() == Value || index.column() == Mm || index.column() == Preset))
+        return QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    if (role == Qt::ForegroundRole && (d.readOnly() || d.access == catalog::RAccess::Unassigned))
+        return QBrush(QColor(0x70, 0x70, 0x70));
+    if (role == Qt::FontRole && index.column() == Value) {
+        QFont f;
+        f.setBold(true);
+        return f;
+    }
+    return {};
+}
+
+QVariant RParamsModel::headerData(int section, Qt::Orientation o, int role) const {
+    if (o != Qt::Horizontal || role != Qt::DisplayRole)
+        return QAbstractTableModel::headerData(section, o, role);
+    switch (section) {
+    case Number:
+        return tr("No.");
+    case Access:
+        return tr("Access");
+    case Group:
+        return tr("Preset screen");
+    case Meaning:
+        return tr("Meaning (appendix Л)");
+    case Value:
+        return tr("Discretes");
+    case Mm:
+        return tr("mm");
+    case Preset:
+        return tr("Preset");
+    default:
+        return {};
+    }
+}
+
+QString RParamsModel::whyNotEditable(int number) const {
+    if (engine::rReadOnly(number))
+        return tr("R%1 is read only: the controller writes R232..R262").arg(number);
+    if (engine::executing(session_.controller().state()))
+        return tr("A program is executing: R-parameters are changed when it stops, as on the K923");
+    return {};
+}
+
+Qt::ItemFlags RParamsModel::flags(const QModelIndex& index) const {
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (!index.isValid() || engine::rReadOnly(index.row()))
+        return f;
+    if (index.column() == Value ||
+        (index.column() == Mm && isCoordinate(catalog::rParam(index.row()).unit)))
+        f |= Qt::ItemIsEditable;
+    return f;
+}
+
+QString RParamsModel::setValue(int number, std::int64_t value) {
+    if (const QString why = whyNotEditable(number); !why.isEmpty())
+        return why;
+    if (!engine::fitsR(value))
+        return tr("%1 is outside the R-parameters' range -2147483648..2147483647").arg(value);
+    const engine::OpResult r = session_.controller().setR(number, value);
+    if (!r.ok())
+        return fromStd(r.detail);
+    refresh();
+    return {};
+}
+
+bool RParamsModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (role != Qt::EditRole || !index.isValid())
+        return false;
+    const int n = index.row();
+    const QString text = value.toString().trimmed();
+    std::int64_t v = 0;
+    bool ok = false;
+    if (index.column() == Value) {
+        v = text.toLongLong(&ok);
+    } else if (index.column() == Mm && isCoordinate(catalog::rParam(n).unit)) {
+        const double mm = QLocale::c().toDouble(QString(text).replace(QLatin1Char(','), QLatin1Char('.')), &ok);
+        if (ok && std::isfinite(mm) && std::fabs(mm) < 1e9)
+            v = units::mmToDisc(mm, scaleOf(session_.controller(), catalog::rParam(n).unit));
+        else
+            ok = false;
+    } else {
+        return false;
+    }
+    if (!ok) {
+        emit refused(tr("R%1: «%2» is not a number").arg(n).arg(text));
+        return false;
+    }
+    const QString why = setValue(n, v);
+    if (!why.isEmpty()) {
+        emit refused(why);
+        return false;
+    }
+    return true;
+}
+
+RParamsFilter::RParamsFilter(QObject* parent) : QSortFilterProxyModel(parent) {}
+
+void RParamsFilter::setSearch(const QString& text) {
+    words_ = text.toLower().split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    invalidateFilter();
+}
+
+void RParamsFilter::setShow(Show s) {
+    show_ = s;
+    invalidateFilter();
+}
+
+bool RParamsFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
+    const catalog::RParamDef* d = catalog::findRParam(row);
+    if (!d)
+        return false;
+    switch (show_) {
+    case Show::All:
+        break;
+    case Show::User:
+        if (!d->user())
+            return false;
+        break;
+    case Show::System:
+        if (d->access != catalog::RAccess::System)
+            return false;
+        break;
+    case Show::ReadOnly:
+        if (!d->readOnly())
+            return false;
+        break;
+    case Show::Presets:
+        if (sourceModel()->index(row, RParamsModel::Preset, parent).data().toString().isEmpty())
+            return false;
+        break;
+    case Show::NonZero:
+        if (sourceModel()->index(row, RParamsModel::Value, parent).data().toString() == QLatin1String("0"))
+            return false;
+        break;
+    }
+    if (words_.isEmpty())
+        return true;
+    const QString hay = sourceModel()->index(row, 0, parent).data(RParamsModel::SearchRole).toString();
+    for (const QString& w : words_)
+        if (!hay.contains(w))
+            return false;
+    return true;
+}
+
+} // namespace k528::studio

@@ -1,0 +1,449 @@
+// The machine-data docks (app/studio/constants, app/studio/rparams):
+// editing C22 in the table changes the simulated axis' acceleration (the
+// time of a known move changes as the formula says) and keeps a revision
+// with its history; a value out of range or one the cross-checks refuse is
+// refused with the manual's text and changes nothing; undo/redo; import and
+// export (CSV, machine file) on a worker thread with the refusal rules of
+// `k528 db import`; the diff of two revisions; the calculator; the
+// R-parameters live, edited where the engine allows it, presets kept with
+// the machine; screenshots of both docks.
+#include "catalog/messages.h"
+#include "constants/constants_dialogs.h"
+#include "constants/constants_dock.h"
+#include "constants/constants_editor.h"
+#include "constants/constants_model.h"
+#include "engine/run.h"
+#include "machine/run.h"
+#include "language.h"
+#include "main_window.h"
+#include "profile/builtin.h"
+#include "profile/csv.h"
+#include "program/parser.h"
+#include "rparams/rparams_dock.h"
+#include "rparams/rparams_model.h"
+#include "session/simulation_session.h"
+#include "units/units.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDir>
+#include <QFile>
+#include <QLineEdit>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTableWidget>
+#include <QPlainTextEdit>
+#include <QTemporaryDir>
+#include <QTextBrowser>
+#include <QUndoStack>
+#include <QtTest>
+#include <cmath>
+
+using namespace k528;
+using namespace k528::studio;
+
+namespace {
+
+profile::MachineProfile lathe(const std::string& name) {
+    profile::MachineProfile p = profile::builtin("training-lathe");
+    p.name = name; // each test its own machine in the database
+    p.setC(8, 1);  // АВТ.БЕЗ ПБТ: the program runs without the reference cycles
+    p.setC(60, 1);
+    return p;
+}
+
+// The run of engine/run.h on the session's machine, counting the ticks in
+// which X's setpoint moves (the trapezoid the formula describes; the run's
+// own time adds the settling of the loop).
+class TimingMachine final : public engine::RunMachine {
+public:
+    explicit TimingMachine(machine::Simulation& sim) : inner_(sim) {}
+    engine::Controller& controller() override { return inner_.controller(); }
+    void tick() override {
+        inner_.tick();
+        if (inner_.controller().servo(engine::AxisId::X).moving())
+            ++movingMs_;
+    }
+    bool switchOn(std::int64_t maxMs) override { return inner_.switchOn(maxMs); }
+    void setOverrideCode(int code) override { inner_.setOverrideCode(code); }
+    void startReferenceCycle(engine::AxisId a, int dir) override { inner_.startReferenceCycle(a, dir); }
+    void pressStart() override { inner_.pressStart(); }
+    bool startHeld() const override { return inner_.startHeld(); }
+    std::vector<int> mFunctions() const override { return inner_.mFunctions(); }
+    std::int64_t movingMs_ = 0;
+
+private:
+    machine::SimulationRunMachine inner_;
+};
+
+struct MoveTime {
+    double runS = -1;    // «Пуск» to the end, as `k528 run` reports it
+    double setpointS = 0; // the setpoint's move
+};
+
+// One rapid move of X (diameter 0 -> -100: 100 mm at F УСК.АВТ.).
+MoveTime moveTime(SimulationSession& session) {
+    program::ParseOptions o;
+    const program::ProgramStore store = program::parse("%L1\nN1 G0 X-100\n", o).store;
+    TimingMachine m(session.simulation());
+    engine::RunOptions options;
+    options.home = false;
+    const engine::RunResult r = engine::runProgram(m, store, 1, options);
+    MoveTime t;
+    if (r.status == engine::RunStatus::Completed)
+        t.runS = r.timeS;
+    t.setpointS = static_cast<double>(m.movingMs_) / 1000.0;
+    return t;
+}
+
+QModelIndex valueIndex(ConstantsPane& pane, int number) {
+    pane.filter()->setSearch(QString());
+    return pane.filter()->mapFromSource(
+        pane.model()->index(ConstantsModel::rowOf(number), ConstantsModel::Value));
+}
+
+int revisionCount(const ConstantsPane& pane) {
+    return static_cast<int>(pane.editor().store().revisions().size());
+}
+
+bool waitIdle(ConstantsPane& pane) {
+    for (int i = 0; i < 1000 && pane.busy(); ++i)
+        QTest::qWait(10);
+    return !pane.busy();
+}
+
+} // namespace
+
+class TestConstants : public QObject {
+    Q_OBJECT
+private:
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        qputenv("K528_DB", dir_.filePath("k528.db").toUtf8());
+        QCoreApplication::setOrganizationName("K528StudioTestConstants");
+        QSettings().clear();
+    }
+
+    void editingC22ChangesTheMoveAndKeepsARevision() {
+        SimulationSession before(lathe("lathe-c22"));
+        const MoveTime t1 = moveTime(before);
+        QVERIFY(t1.runS > 0);
+
+        SimulationSession session(lathe("lathe-c22"));
+        ConstantsPane pane(session);
+        const QModelIndex i = valueIndex(pane, 22);
+        QCOMPARE(i.data().toString(), QStringLiteral("10666"));
+        pane.noteField()->setText(QStringLiteral("slower run-up for the trainees"));
+        QVERIFY(pane.filter()->setData(i, QStringLiteral("5333")));
+        QCOMPARE(session.controller().c()[22], std::int64_t(5333));
+        QCOMPARE(i.data().toString(), QStringLiteral("5333"));
+        QVERIFY(pane.statusText().contains(QStringLiteral("slower run-up")));
+
+        // The revision with its history: created from the profile (1), the change (2).
+        const auto revs = pane.editor().store().revisions();
+        QCOMPARE(revs.size(), std::size_t(2));
+        QCOMPARE(revs.front().summary, std::string("slower run-up for the trainees"));
+        const auto h = pane.editor().store().history("C022");
+        QVERIFY(!h.empty());
+        QCOMPARE(h.front().revision, 2); // newest first
+        QCOMPARE(*h.front().change.before, std::string("10666"));
+        QCOMPARE(*h.front().change.after, std::string("5333"));
+        QCOMPARE(pane.editor().store().current().cValue(22), std::int64_t(5333));
+        HistoryDialog dialog(pane.editor().store(), 22);
+        QCOMPARE(dialog.table()->rowCount(), static_cast<int>(h.size()));
+        QCOMPARE(dialog.table()->item(0, 4)->text(), QStringLiteral("5333"));
+
+        // The move: t = D/V + V/A; only V/A changes with the acceleration.
+        const MoveTime t2 = moveTime(session);
+        QVERIFY(t2.runS > t1.runS);
+        const units::AxisScale s = profile::axisScale(session.controller().profile(), catalog::Axis::X);
+        const double v = units::speedParamToMmPerMin(session.controller().c()[42], s) / 60.0; // F УСК.АВТ., mm/s
+        const double a1 = units::accelParamToMmPerS2(10666, s), a2 = units::accelParamToMmPerS2(5333, s);
+        const double expected = v / a2 - v / a1;
+        const double d = units::discToMm(100000, s); // the move, display mm
+        QVERIFY2(std::fabs(t1.setpointS - (d / v + v / a1)) <= 0.003,
+                 qPrintable(QString("setpoint %1 s, formula %2 s").arg(t1.setpointS).arg(d / v + v / a1)));
+        QVERIFY2(std::fabs((t2.setpointS - t1.setpointS) - expected) <= 0.003,
+                 qPrintable(QString("setpoint %1 s -> %2 s: %3 s longer, the formula says %4 s")
+                                .arg(t1.setpointS).arg(t2.setpointS).arg(t2.setpointS - t1.setpointS).arg(expected)));
+        // The whole run (with the loop settling) is longer by about as much.
+        QVERIFY2(std::fabs((t2.runS - t1.runS) - expected) <= 0.25 * expected,
+                 qPrintable(QString("run %1 s -> %2 s").arg(t1.runS).arg(t2.runS)));
+    }
+
+    void outOfRangeIsRefusedWithTheManualsText() {
+        SimulationSession session(lathe("lathe-range"));
+        ConstantsPane pane(session);
+        pane.resize(1200, 600);
+        pane.show();
+        const int revs = revisionCount(pane);
+        const QModelIndex i = valueIndex(pane, 22);
+        // As it is typed: the editor turns red with message 15.
+        pane.table()->setCurrentIndex(i);
+        pane.table()->edit(i);
+        auto* line = pane.table()->findChild<QLineEdit*>("constants.valueEditor");
+        QVERIFY(line);
+        line->selectAll();
+        QTest::keyClicks(line, "99999");
+        QVERIFY(line->property("refused").toBool());
+        const QString m15 = QString::fromUtf8(catalog::positionerMessage(15).panelText().c_str());
+        QVERIFY2(pane.statusText().contains(m15), qPrintable(pane.statusText()));
+        QVERIFY(pane.statusText().contains(QStringLiteral("0...32767")));
+        QTest::keyClick(line, Qt::Key_Escape);
+        // Committed anyway: refused, nothing changes.
+        QVERIFY(!pane.filter()->setData(i, QStringLiteral("99999")));
+        QVERIFY(pane.statusText().contains(m15));
+        QCOMPARE(session.controller().c()[22], std::int64_t(10666));
+        QCOMPARE(pane.editor().undoStack()->count(), 0);
+        QCOMPARE(revisionCount(pane), revs);
+        QVERIFY(session.controller().alarms().empty());
+
+        // A cross-check: X's encoder on the channel of Z's (37).
+        const std::int64_t z = session.controller().c()[69];
+        QVERIFY(!pane.filter()->setData(valueIndex(pane, 17), QString::number(z)));
+        const QString m37 = QString::fromUtf8(catalog::positionerMessage(37).panelText().c_str());
+        QVERIFY2(pane.statusText().contains(m37), qPrintable(pane.statusText()));
+        QCOMPARE(session.controller().c()[17], std::int64_t(1));
+        // L ИМП.ДОС = 0: message 13.
+        QVERIFY(!pane.editor().set(19, 0));
+        QVERIFY(pane.statusText().contains(QString::fromUtf8(catalog::positionerMessage(13).panelText().c_str())));
+        QVERIFY(session.controller().alarms().empty());
+        QCOMPARE(revisionCount(pane), revs);
+        // Not a number.
+        QVERIFY(!pane.filter()->setData(i, QStringLiteral("12a")));
+        QCOMPARE(session.controller().c()[22], std::int64_t(10666));
+    }
+
+    void undoAndRedo() {
+        SimulationSession session(lathe("lathe-undo"));
+        ConstantsPane pane(session);
+        QVERIFY(pane.editor().set(40, 120000));
+        QVERIFY(pane.editor().set(41, 400000));
+        QCOMPARE(pane.editor().undoStack()->count(), 2);
+        pane.editor().undoStack()->undo();
+        QCOMPARE(session.controller().c()[41], std::int64_t(500000));
+        pane.editor().undoStack()->undo();
+        QCOMPARE(session.controller().c()[40], std::int64_t(150000));
+        pane.editor().undoStack()->redo();
+        QCOMPARE(session.controller().c()[40], std::int64_t(120000));
+        QCOMPARE(pane.editor().store().current().cValue(40), std::int64_t(120000));
+        QCOMPARE(pane.editor().store().current().cValue(41), std::int64_t(500000));
+        // 1 created + 2 sets + 2 undos + 1 redo
+        QCOMPARE(revisionCount(pane), 6);
+        QCOMPARE(valueIndex(pane, 40).data().toString(), QStringLiteral("120000"));
+    }
+
+    void filterAndSearch() {
+        SimulationSession session(lathe("lathe-filter"));
+        ConstantsPane pane(session);
+        QCOMPARE(pane.filter()->rowCount(), 152);
+        pane.searchField()->setText(QStringLiteral("ускорение"));
+        QCOMPARE(pane.filter()->rowCount(), 4); // C22, C23, C74, C75
+        pane.searchField()->setText(QStringLiteral("c022"));
+        QCOMPARE(pane.filter()->rowCount(), 1);
+        pane.searchField()->setText(QStringLiteral("Z4101"));
+        QVERIFY(pane.filter()->rowCount() >= 1);
+        pane.searchField()->clear();
+        pane.filter()->setAxisFilter(ConstantsFilter::AxisFilter::Common);
+        QCOMPARE(pane.filter()->rowCount(), 48);
+        pane.filter()->setAxisFilter(ConstantsFilter::AxisFilter::All);
+        // What the value means, in core's units.
+        const QModelIndex m = pane.filter()->index(pane.filter()->mapFromSource(
+                                                       pane.model()->index(ConstantsModel::rowOf(22), 0)).row(),
+                                                   ConstantsModel::Means);
+        QVERIFY2(m.data().toString().contains(QStringLiteral("0.4166")) ||
+                     m.data().toString().contains(QStringLiteral("0.4167")),
+                 qPrintable(m.data().toString()));
+    }
+
+    void importExportAndDiff() {
+        SimulationSession session(lathe("lathe-files"));
+        ConstantsPane pane(session);
+        QVERIFY(pane.editor().set(22, 5000));
+        const QString csv = dir_.filePath("lathe.csv");
+        pane.exportFile(csv);
+        QVERIFY(pane.busy());
+        QVERIFY(waitIdle(pane));
+        QVERIFY2(QFile::exists(csv), qPrintable(pane.statusText()));
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QString text = QString::fromUtf8(f.readAll());
+        f.close();
+        QVERIFY(text.contains(QStringLiteral("\n22;X;УСКОРЕНИЕ 1;5000;")));
+
+        // A bad file is refused whole: nothing changes.
+        const int revs = revisionCount(pane);
+        QString bad = text;
+        bad.replace(QStringLiteral("\n22;X;УСКОРЕНИЕ 1;5000;"), QStringLiteral("\n22;X;УСКОРЕНИЕ 1;99999;"));
+        const QString badPath = dir_.filePath("bad.csv");
+        QFile b(badPath);
+        QVERIFY(b.open(QIODevice::WriteOnly));
+        b.write(bad.toUtf8());
+        b.close();
+        QSignalSpy done(&pane, &ConstantsPane::finished);
+        pane.importFile(badPath);
+        QVERIFY(waitIdle(pane));
+        QCOMPARE(done.count(), 1);
+        QVERIFY2(pane.statusText().contains(QStringLiteral("Nothing was imported")), qPrintable(pane.statusText()));
+        QVERIFY(pane.statusText().contains(QStringLiteral("bad.csv:")));
+        QCOMPARE(revisionCount(pane), revs);
+        QCOMPARE(session.controller().c()[22], std::int64_t(5000));
+
+        // A cross-check error is refused by the database as `k528 db import` refuses it.
+        QString clash = text;
+        clash.replace(QStringLiteral("\n17;X;N ДОС;1;"), QStringLiteral("\n17;X;N ДОС;3;"));
+        QVERIFY(clash != text);
+        QFile c(badPath);
+        QVERIFY(c.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        c.write(clash.toUtf8());
+        c.close();
+        pane.importFile(badPath);
+        QVERIFY(waitIdle(pane));
+        QVERIFY2(pane.statusText().contains(QStringLiteral("M37")) || pane.statusText().contains(QStringLiteral("37")),
+                 qPrintable(pane.statusText()));
+        QCOMPARE(revisionCount(pane), revs);
+        QCOMPARE(session.controller().c()[17], std::int64_t(1));
+
+        // A good one: a revision, and the controller takes the values.
+        QString good = text;
+        good.replace(QStringLiteral("\n22;X;УСКОРЕНИЕ 1;5000;"), QStringLiteral("\n22;X;УСКОРЕНИЕ 1;7000;"));
+        QFile g(csv);
+        QVERIFY(g.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        g.write(good.toUtf8());
+        g.close();
+        pane.importFile(csv);
+        QVERIFY(waitIdle(pane));
+        QVERIFY2(pane.statusText().contains(QStringLiteral("imported")), qPrintable(pane.statusText()));
+        QCOMPARE(revisionCount(pane), revs + 1);
+        QCOMPARE(session.controller().c()[22], std::int64_t(7000));
+        QCOMPARE(valueIndex(pane, 22).data().toString(), QStringLiteral("7000"));
+
+        // A machine file, exported and imported.
+        const QString k528m = dir_.filePath("lathe.k528m");
+        pane.exportFile(k528m);
+        QVERIFY(waitIdle(pane));
+        QVERIFY(QFile::exists(k528m));
+        QVERIFY(pane.editor().set(22, 6000));
+        pane.importFile(k528m);
+        QVERIFY(waitIdle(pane));
+        QCOMPARE(session.controller().c()[22], std::int64_t(7000));
+
+        // The diff of two revisions, on a worker thread.
+        const int current = pane.editor().store().revisions().front().revision;
+        QFuture<LongResult> diff = pane.diffRevisions(1, current);
+        diff.waitForFinished();
+        const LongResult r = diff.result();
+        QVERIFY2(r.error.isEmpty(), qPrintable(r.error));
+        QVERIFY2(r.text.contains(QStringLiteral("C022 УСКОРЕНИЕ 1: 10666 -> 7000")), qPrintable(r.text));
+        DiffDialog dd(pane);
+        dd.compare();
+        QTRY_VERIFY(!dd.result()->toPlainText().isEmpty());
+    }
+
+    void calculatorExplainsTheFactorOfTwo() {
+        SimulationSession session(lathe("lathe-calc"));
+        ConstantsPane pane(session);
+        CalculatorDialog d(pane.editor());
+        // Appendix Ж: 2 s from 0 to 5000 mm/min, 0.001 mm: printed 2133, consistent 1066.
+        d.setInputs(1, 5000, 2000);
+        QCOMPARE(d.consistentValue(), qint64(1066));
+        const QString html = d.findChild<QTextBrowser*>("constants.calculatorExplanation")->toPlainText();
+        QVERIFY(html.contains(QStringLiteral("2133")));
+        QVERIFY(html.contains(QStringLiteral("0.8533")));
+        QVERIFY(html.contains(QStringLiteral("factor 2.00")));
+        QVERIFY(d.applyToAccel1());
+        QCOMPARE(session.controller().c()[22], std::int64_t(1066));
+        d.setInputs(3, 0.5, 0);
+        QCOMPARE(d.consistentValue(), qint64(12800));
+    }
+
+    void rParametersLiveEditablePresets() {
+        SimulationSession session(lathe("lathe-r"));
+        RParamsPane pane(session);
+        RParamsModel* m = pane.model();
+        QCOMPARE(m->rowCount(), 300);
+        // Editable where the engine allows it.
+        QVERIFY(m->setData(m->index(100, RParamsModel::Value), QStringLiteral("1234")));
+        QCOMPARE(session.controller().r(100), 1234);
+        QVERIFY(!(m->flags(m->index(240, RParamsModel::Value)) & Qt::ItemIsEditable));
+        QVERIFY(!m->setData(m->index(240, RParamsModel::Value), QStringLiteral("1")));
+        QVERIFY(pane.statusText().contains(QStringLiteral("R240")));
+        // A coordinate in mm (R220: the initial position of X, display discretes).
+        QVERIFY(m->setData(m->index(220, RParamsModel::Mm), QStringLiteral("12.5")));
+        QCOMPARE(session.controller().r(220), 12500);
+        QCOMPARE(m->index(220, RParamsModel::Mm).data().toString(), QStringLiteral("12.500"));
+        // Live: the machine's coordinates (R232..) as the controller has them.
+        session.advance(100);
+        for (int n : {232, 234, 240, 249})
+            QCOMPARE(m->index(n, RParamsModel::Value).data().toString(),
+                     QString::number(session.controller().r(n)));
+        // Presets kept with the machine.
+        pane.selectR(100);
+        QVERIFY(pane.keepSelectedAsPreset() > 0);
+        QCOMPARE(MachineStore(session.simulation().profile()).current().r.at(100), std::int64_t(1234));
+        QCOMPARE(m->index(100, RParamsModel::Preset).data().toString(), QStringLiteral("1234"));
+        QVERIFY(m->setData(m->index(100, RParamsModel::Value), QStringLiteral("0")));
+        pane.applyPresets();
+        QCOMPARE(session.controller().r(100), 1234);
+        pane.selectR(100);
+        QVERIFY(pane.removeSelectedPreset() > 0);
+        QVERIFY(!MachineStore(session.simulation().profile()).current().r.count(100));
+        // Search and filters.
+        pane.filter()->setSearch(QStringLiteral("r204"));
+        QCOMPARE(pane.filter()->rowCount(), 1);
+        pane.filter()->setSearch(QString());
+        pane.filter()->setShow(RParamsFilter::Show::ReadOnly);
+        QCOMPARE(pane.filter()->rowCount(), 31);
+    }
+
+    void docksInTheWindowAndScreenshots() {
+        MainWindow w;
+        auto* c = w.findChild<QDockWidget*>("dock.constants");
+        auto* r = w.findChild<QDockWidget*>("dock.rparams");
+        QVERIFY(c && r);
+        const QString shots = QStringLiteral(K528_BINARY_DIR "/screenshots");
+        QDir().mkpath(shots);
+        auto* cp = c->findChild<ConstantsPane*>();
+        QVERIFY(cp);
+        c->setFloating(true);
+        c->resize(1250, 620);
+        c->show();
+        cp->selectConstant(22);
+        cp->editor().check(22, 99999);
+        cp->searchField()->setText(QString());
+        QVERIFY(!cp->filter()->setData(valueIndex(*cp, 22), QStringLiteral("99999")));
+        QTest::qWait(50);
+        QVERIFY(c->grab().save(shots + "/constants.png"));
+        {
+            // The machine has run: homed, moved (the live coordinates, R232..).
+            program::ParseOptions o;
+            machine::SimulationRunMachine m(w.session()->simulation());
+            engine::runProgram(m, program::parse("%L1\nN1 G0 X150 Z-40\n", o).store, 1, engine::RunOptions{});
+        }
+        r->findChild<QComboBox*>("rparams.show")->setCurrentIndex(5); // not zero: the live values
+        r->setFloating(true);
+        r->resize(1000, 620);
+        r->show();
+        w.session()->advance(200);
+        QTest::qWait(50);
+        QVERIFY(r->grab().save(shots + "/rparams.png"));
+        CalculatorDialog calc(cp->editor());
+        calc.setInputs(1, 5000, 2000);
+        calc.show();
+        QTest::qWait(50);
+        QVERIFY(calc.grab().save(shots + "/constants-calculator.png"));
+        // In Russian, as the operators read it.
+        QVERIFY(setLanguage("ru"));
+        QTest::qWait(50);
+        QVERIFY(c->grab().save(shots + "/constants-ru.png"));
+        QVERIFY(r->grab().save(shots + "/rparams-ru.png"));
+        setLanguage("en");
+    }
+};
+
+QTEST_MAIN(TestConstants)
+#include "test_constants.moc"
