@@ -22,6 +22,7 @@
 #include "profile/builtin.h"
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
+#include "history/history_dock.h"
 #include "editor/editor_tab.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
@@ -126,6 +127,7 @@ void MainWindow::createDocks() {
         d->setMaximumHeight(140);
     backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
     addScopeDock(this, *session_);
+    addHistoryDock(this, *session_); // history/history_dock.cpp
 
 }
 
@@ -151,6 +153,8 @@ void MainWindow::createMenus() {
         viewMenu_->addAction(d->toggleViewAction());
     if (auto* scope = findChild<QDockWidget*>("dock.scope"))
         viewMenu_->addAction(scope->toggleViewAction());
+    if (auto* history = findChild<QDockWidget*>("dock.history"))
+        viewMenu_->addAction(history->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);

@@ -1346,6 +1346,10 @@ const OpenReport& Database::openReport() const {
     return d_->report;
 }
 
+sqlite3* Database::connection() const {
+    return d_->db;
+}
+
 int Database::schemaVersion() const {
     return static_cast<int>(sql::queryInt(d_->db, "PRAGMA user_version"));
 }

@@ -47,6 +47,8 @@
 #include <string_view>
 #include <vector>
 
+struct sqlite3;
+
 namespace k528::db {
 
 // PRAGMA application_id of our files: "K528" in ASCII.
@@ -229,6 +231,10 @@ public:
 
     // Runs PRAGMA integrity_check and foreign_key_check: "" when fine.
     std::string checkIntegrity() const;
+
+    // The SQLite connection, for the other stores of core/db that share this
+    // file and its rules (db::MessageLog); not for use outside core/db.
+    sqlite3* connection() const;
 
 private:
     struct Impl;

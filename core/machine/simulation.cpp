@@ -475,6 +475,17 @@ void Simulation::tick() {
     actuate(static_cast<double>(ctl_->tickMs()));
     if (afterTick_)
         afterTick_();
+    for (const auto& [id, f] : tickObservers_)
+        f();
+}
+
+int Simulation::addTickObserver(std::function<void()> f) {
+    tickObservers_.emplace_back(++nextTickObserver_, std::move(f));
+    return nextTickObserver_;
+}
+
+void Simulation::removeTickObserver(int id) {
+    std::erase_if(tickObservers_, [id](const auto& o) { return o.first == id; });
 }
 
 void Simulation::advance(std::int64_t ms) {

@@ -186,6 +186,11 @@ public:
     bool runUntil(const std::function<bool()>& done, std::int64_t maxMs);
     // Called at the end of every tick (a trace recorder: machine/trace.h).
     void setAfterTick(std::function<void()> f) { afterTick_ = std::move(f); }
+    // More watchers of every tick, called after the after-tick hook in the
+    // order added (the message recorder, core/msglog). Returns an id for
+    // removeTickObserver.
+    int addTickObserver(std::function<void()> f);
+    void removeTickObserver(int id);
     std::int64_t timeMs() const { return ctl_->timeMs(); }
     std::int64_t tickMs() const { return ctl_->tickMs(); }
 
@@ -289,6 +294,8 @@ private:
     std::vector<FaultSpec> faults_;
     std::vector<std::string> warnings_;
     std::function<void()> afterTick_;
+    std::vector<std::pair<int, std::function<void()>>> tickObservers_;
+    int nextTickObserver_ = 0;
 };
 
 } // namespace k528::machine
