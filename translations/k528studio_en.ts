@@ -693,6 +693,168 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::HistoryModel</name>
+    <message>
+        <source>Positioner</source>
+        <translation>Positioner</translation>
+    </message>
+    <message>
+        <source>PLC alarm</source>
+        <translation>PLC alarm</translation>
+    </message>
+    <message>
+        <source>PLC system</source>
+        <translation>PLC system</translation>
+    </message>
+    <message>
+        <source>PLC work</source>
+        <translation>PLC work</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>ESC</source>
+        <translation>ESC</translation>
+    </message>
+    <message>
+        <source>ESC from the history dock</source>
+        <translation>ESC from the history dock</translation>
+    </message>
+    <message>
+        <source>acknowledge signal Z1000.7</source>
+        <translation>acknowledge signal Z1000.7</translation>
+    </message>
+    <message>
+        <source>reset Z1000.5</source>
+        <translation>reset Z1000.5</translation>
+    </message>
+    <message>
+        <source>L%1, line %2</source>
+        <translation>L%1, line %2</translation>
+    </message>
+    <message>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>not yet</source>
+        <translation>not yet</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Machine time</source>
+        <translation>Machine time</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Cause gone</source>
+        <translation>Cause gone</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Acknowledged</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::HistoryView</name>
+    <message>
+        <source>Export the message history</source>
+        <translation>Export the message history</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The messages could not be written (they are kept and written later): %1</source>
+        <translation>The messages could not be written (they are kept and written later): %1</translation>
+    </message>
+    <message>
+        <source>No message history: %1</source>
+        <translation>No message history: %1</translation>
+    </message>
+    <message>
+        <source>%1 messages (%2 loaded); %3 waiting for acknowledgement. Database: %4</source>
+        <translation>%1 messages (%2 loaded); %3 waiting for acknowledgement. Database: %4</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>The export was cancelled; %1 was left as it was.</source>
+        <translation>The export was cancelled; %1 was left as it was.</translation>
+    </message>
+    <message>
+        <source>Exporting the message history…</source>
+        <translation>Exporting the message history…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>%1 messages exported to %2</source>
+        <translation>%1 messages exported to %2</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Search</translation>
+    </message>
+    <message>
+        <source>text or number, e.g. 37 or A03</source>
+        <translation>text or number, e.g. 37 or A03</translation>
+    </message>
+    <message>
+        <source>All sources</source>
+        <translation>All sources</translation>
+    </message>
+    <message>
+        <source>Not acknowledged</source>
+        <translation>Not acknowledged</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>All machines</translation>
+    </message>
+    <message>
+        <source>Acknowledge (ESC)</source>
+        <translation>Acknowledge (ESC)</translation>
+    </message>
+    <message>
+        <source>Acknowledges the current messages as ESC on the K923 does (C123 reset, C124 faults, C125 system messages)</source>
+        <translation>Acknowledges the current messages as ESC on the K923 does (C123 reset, C124 faults, C125 system messages)</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Export CSV…</translation>
+    </message>
+    <message>
+        <source>Message history</source>
+        <translation>Message history</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
@@ -1242,7 +1404,7 @@
     <name>k528::studio::MessagesView</name>
     <message>
         <source>Source</source>
-        <translation type="unfinished" />
+        <translation>Source</translation>
     </message>
     <message>
         <source>No.</source>
@@ -1262,7 +1424,7 @@
     </message>
     <message>
         <source>Positioner</source>
-        <translation type="unfinished" />
+        <translation>Positioner</translation>
     </message>
     <message>
         <source>active</source>
@@ -1270,11 +1432,11 @@
     </message>
     <message>
         <source>PLC system</source>
-        <translation type="unfinished" />
+        <translation>PLC system</translation>
     </message>
     <message>
         <source>PLC alarm</source>
-        <translation type="unfinished" />
+        <translation>PLC alarm</translation>
     </message>
     <message>
         <source>PLC</source>
@@ -1435,10 +1597,6 @@
         <translation>Axis Z</translation>
     </message>
     <message>
-        <source>Time, s</source>
-        <translation>Time, s</translation>
-    </message>
-    <message>
         <source>mm</source>
         <translation>mm</translation>
     </message>
@@ -1477,6 +1635,10 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Oscilloscope</translation>
+    </message>
+    <message>
+        <source>Time before the newest sample, s</source>
+        <translation>Time before the newest sample, s</translation>
     </message>
 </context>
 <context>

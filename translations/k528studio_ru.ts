@@ -693,6 +693,168 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::HistoryModel</name>
+    <message>
+        <source>Positioner</source>
+        <translation>БП</translation>
+    </message>
+    <message>
+        <source>PLC alarm</source>
+        <translation>ПЛК, авария</translation>
+    </message>
+    <message>
+        <source>PLC system</source>
+        <translation>ПЛК, системное</translation>
+    </message>
+    <message>
+        <source>PLC work</source>
+        <translation>ПЛК, рабочее</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>ESC</source>
+        <translation>ESC</translation>
+    </message>
+    <message>
+        <source>ESC from the history dock</source>
+        <translation>ESC из журнала сообщений</translation>
+    </message>
+    <message>
+        <source>acknowledge signal Z1000.7</source>
+        <translation>сигнал квитирования Z1000.7</translation>
+    </message>
+    <message>
+        <source>reset Z1000.5</source>
+        <translation>сброс Z1000.5</translation>
+    </message>
+    <message>
+        <source>L%1, line %2</source>
+        <translation>L%1, строка %2</translation>
+    </message>
+    <message>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>not yet</source>
+        <translation>ещё нет</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>Machine time</source>
+        <translation>Время станка</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Источник</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>Cause gone</source>
+        <translation>Причина устранена</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Квитировано</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::HistoryView</name>
+    <message>
+        <source>Export the message history</source>
+        <translation>Экспорт журнала сообщений</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The messages could not be written (they are kept and written later): %1</source>
+        <translation>Сообщения не удалось записать (они сохранены и будут записаны позже): %1</translation>
+    </message>
+    <message>
+        <source>No message history: %1</source>
+        <translation>Журнал сообщений недоступен: %1</translation>
+    </message>
+    <message>
+        <source>%1 messages (%2 loaded); %3 waiting for acknowledgement. Database: %4</source>
+        <translation>Сообщений: %1 (загружено %2); ждут квитирования: %3. База данных: %4</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>The export was cancelled; %1 was left as it was.</source>
+        <translation>Экспорт отменён; файл %1 не изменён.</translation>
+    </message>
+    <message>
+        <source>Exporting the message history…</source>
+        <translation>Экспорт журнала сообщений…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>%1 messages exported to %2</source>
+        <translation>Сообщений экспортировано: %1, файл %2</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Поиск</translation>
+    </message>
+    <message>
+        <source>text or number, e.g. 37 or A03</source>
+        <translation>текст или номер, например 37 или A03</translation>
+    </message>
+    <message>
+        <source>All sources</source>
+        <translation>Все источники</translation>
+    </message>
+    <message>
+        <source>Not acknowledged</source>
+        <translation>Не квитированные</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>Все станки</translation>
+    </message>
+    <message>
+        <source>Acknowledge (ESC)</source>
+        <translation>Квитировать (ESC)</translation>
+    </message>
+    <message>
+        <source>Acknowledges the current messages as ESC on the K923 does (C123 reset, C124 faults, C125 system messages)</source>
+        <translation>Квитирует текущие сообщения, как ESC на K923 (C123 — сброс, C124 — неисправности, C125 — системные сообщения)</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Экспорт CSV…</translation>
+    </message>
+    <message>
+        <source>Message history</source>
+        <translation>Журнал сообщений</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
@@ -1435,10 +1597,6 @@
         <translation>Ось Z</translation>
     </message>
     <message>
-        <source>Time, s</source>
-        <translation>Время, с</translation>
-    </message>
-    <message>
         <source>mm</source>
         <translation>мм</translation>
     </message>
@@ -1477,6 +1635,10 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Осциллограф</translation>
+    </message>
+    <message>
+        <source>Time before the newest sample, s</source>
+        <translation>Время до последнего отсчёта, с</translation>
     </message>
 </context>
 <context>
