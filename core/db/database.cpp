@@ -1548,10 +1548,17 @@ std::string Database::checkIntegrity() const {
     while (ic.step())
         if (const std::string line = ic.text(0); line != "ok")
             problems += (problems.empty() ? "" : "; ") + line;
-    sql::Stmt fk(d_->db, "PRAGMA foreign_key_check");
-    while (fk.step())
-        problems += (problems.empty() ? "" : "; ") + std::string("foreign key: ") + fk.text(0) +
-                    " row " + std::to_string(fk.i64(1));
+    try {
+        sql::Stmt fk(d_->db, "PRAGMA foreign_key_check");
+        while (fk.step())
+            problems += (problems.empty() ? "" : "; ") + std::string("foreign key: ") + fk.text(0) +
+                        " row " + std::to_string(fk.i64(1));
+    } catch (const Error& e) {
+        // Damage the integrity check listed can stop the key check: say it.
+        if (e.kind() == ErrorKind::Busy)
+            throw;
+        problems += (problems.empty() ? "" : "; ") + std::string(e.what());
+    }
     return problems;
 }
 

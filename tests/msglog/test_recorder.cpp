@@ -15,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace k528;
 using db::MessageEvent;
@@ -209,6 +211,45 @@ private slots:
         const auto a = events();
         QVERIFY(!a.empty());
         QVERIFY(a == events());
+    }
+
+    // Damage in the message log: the machines still open (the log is not
+    // checked at every open), checkIntegrity() (`k528 db check`) finds it.
+    void damagedLogIsFoundByTheCheck() {
+        QTemporaryDir dir;
+        const auto p = dbFile(dir);
+        {
+            db::Database d = db::Database::open(p, options());
+            db::MessageLog log(d);
+            const auto run = log.beginRun("training-lathe", 0);
+            std::vector<MessageEvent> batch;
+            for (int i = 1; i <= 3000; ++i) {
+                MessageEvent e;
+                e.seq = i;
+                e.machineMs = i;
+                e.message.source = MessageSource::PlcAlarm;
+                e.message.number = 1 + i % 32;
+                e.message.text = "Авария смазки, длинный текст сообщения номер " + std::to_string(i);
+                batch.push_back(e);
+            }
+            log.write(run, batch);
+        }
+        std::string bytes;
+        {
+            std::ifstream in(p, std::ios::binary);
+            bytes.assign(std::istreambuf_iterator<char>(in), {});
+        }
+        const std::size_t page = 4096;
+        QVERIFY(bytes.size() > 40 * page);
+        for (std::size_t i = 0; i < 600; ++i) // the middle of the last pages: the log's rows
+            bytes[bytes.size() - 2 * page + 200 + i] = static_cast<char>(0x5A ^ i);
+        {
+            std::ofstream out(p, std::ios::binary | std::ios::trunc);
+            out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        }
+        db::Database d = db::Database::open(p, options());
+        QVERIFY(d.loadMachine("training-lathe").name == "training-lathe");
+        QVERIFY(!d.checkIntegrity().empty());
     }
 
     // A batch with an event of no raised message is refused whole.
