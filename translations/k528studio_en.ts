@@ -291,7 +291,7 @@
     </message>
     <message>
         <source>interrupted</source>
-        <translation>interrupted</translation>
+        <translation type="unfinished" />
     </message>
     <message>
         <source>end/reset</source>
@@ -360,337 +360,6 @@
     <message>
         <source>fast inputs </source>
         <translation type="unfinished" />
-    </message>
-</context>
-<context>
-    <name>k528::studio::CalculatorDialog</name>
-    <message>
-        <source>C-constant calculator: acceleration (parameter 22)</source>
-        <translation>C-constant calculator: acceleration (parameter 22)</translation>
-    </message>
-    <message>
-        <source>Axis X (C22)</source>
-        <translation>Axis X (C22)</translation>
-    </message>
-    <message>
-        <source>Axis Z (C74)</source>
-        <translation>Axis Z (C74)</translation>
-    </message>
-    <message>
-        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
-        <translation>Formula 1: run-up from 0 to Vmax in Tразг</translation>
-    </message>
-    <message>
-        <source>Formula 2: braking from Vmax over S</source>
-        <translation>Formula 2: braking from Vmax over S</translation>
-    </message>
-    <message>
-        <source>Formula 3: acceleration A</source>
-        <translation>Formula 3: acceleration A</translation>
-    </message>
-    <message>
-        <source>Vmax, mm/min</source>
-        <translation>Vmax, mm/min</translation>
-    </message>
-    <message>
-        <source>Tразг, ms</source>
-        <translation>Tразг, ms</translation>
-    </message>
-    <message>
-        <source>S, mm of braking</source>
-        <translation>S, mm of braking</translation>
-    </message>
-    <message>
-        <source>A, m/s²</source>
-        <translation>A, m/s²</translation>
-    </message>
-    <message>
-        <source>Axis</source>
-        <translation>Axis</translation>
-    </message>
-    <message>
-        <source>Formula</source>
-        <translation>Formula</translation>
-    </message>
-    <message>
-        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
-        <translation>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</translation>
-    </message>
-    <message>
-        <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
-        <translation>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</translation>
-    </message>
-    <message>
-        <source>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</source>
-        <translation>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</translation>
-    </message>
-    <message>
-        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</source>
-        <translation>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</translation>
-    </message>
-    <message>
-        <source>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</source>
-        <translation>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</translation>
-    </message>
-    <message>
-        <source>Why formula 1 gives twice the value</source>
-        <translation>Why formula 1 gives twice the value</translation>
-    </message>
-    <message>
-        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
-        <translation>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
-    </message>
-    <message>
-        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
-        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
-    </message>
-    <message>
-        <source>Set C%1 to %2</source>
-        <translation>Set C%1 to %2</translation>
-    </message>
-    <message>
-        <source>calculator: %1 → C%2 = %3</source>
-        <translation>calculator: %1 → C%2 = %3</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::ConstantsEditor</name>
-    <message>
-        <source>a program is under way: the constants are changed when it has ended</source>
-        <translation>a program is under way: the constants are changed when it has ended</translation>
-    </message>
-    <message>
-        <source>an axis is moving: the constants are changed at standstill</source>
-        <translation>an axis is moving: the constants are changed at standstill</translation>
-    </message>
-    <message>
-        <source>undo: %1</source>
-        <translation>undo: %1</translation>
-    </message>
-    <message>
-        <source>No C-parameter %1 (1..152)</source>
-        <translation>No C-parameter %1 (1..152)</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::ConstantsModel</name>
-    <message>
-        <source>No.</source>
-        <translation>No.</translation>
-    </message>
-    <message>
-        <source>Axis</source>
-        <translation>Axis</translation>
-    </message>
-    <message>
-        <source>Panel name</source>
-        <translation>Panel name</translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation>Meaning</translation>
-    </message>
-    <message>
-        <source>Unit</source>
-        <translation>Unit</translation>
-    </message>
-    <message>
-        <source>Range</source>
-        <translation>Range</translation>
-    </message>
-    <message>
-        <source>Address (Е.1)</source>
-        <translation>Address (Е.1)</translation>
-    </message>
-    <message>
-        <source>Value</source>
-        <translation>Value</translation>
-    </message>
-    <message>
-        <source>The value means</source>
-        <translation>The value means</translation>
-    </message>
-    <message>
-        <source>C%1: «%2» is not a whole number</source>
-        <translation>C%1: «%2» is not a whole number</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::ConstantsPane</name>
-    <message>
-        <source>«%1» is not a whole number</source>
-        <translation>«%1» is not a whole number</translation>
-    </message>
-    <message>
-        <source>Machine constants</source>
-        <translation>Machine constants</translation>
-    </message>
-    <message>
-        <source>Applied to the controller, but not kept in the database: %1</source>
-        <translation>Applied to the controller, but not kept in the database: %1</translation>
-    </message>
-    <message>
-        <source>%1 — kept as revision %2 of %3</source>
-        <translation>%1 — kept as revision %2 of %3</translation>
-    </message>
-    <message>
-        <source>Search: number, panel name, meaning, unit, address</source>
-        <translation>Search: number, panel name, meaning, unit, address</translation>
-    </message>
-    <message>
-        <source>All axes</source>
-        <translation>All axes</translation>
-    </message>
-    <message>
-        <source>Axis X</source>
-        <translation>Axis X</translation>
-    </message>
-    <message>
-        <source>Axis Z</source>
-        <translation>Axis Z</translation>
-    </message>
-    <message>
-        <source>Common</source>
-        <translation>Common</translation>
-    </message>
-    <message>
-        <source>Hide reserved</source>
-        <translation>Hide reserved</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Undo</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Redo</translation>
-    </message>
-    <message>
-        <source>History...</source>
-        <translation>History...</translation>
-    </message>
-    <message>
-        <source>Every revision that changed the selected constant</source>
-        <translation>Every revision that changed the selected constant</translation>
-    </message>
-    <message>
-        <source>Compare revisions...</source>
-        <translation>Compare revisions...</translation>
-    </message>
-    <message>
-        <source>Import...</source>
-        <translation>Import...</translation>
-    </message>
-    <message>
-        <source>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</source>
-        <translation>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</translation>
-    </message>
-    <message>
-        <source>Export...</source>
-        <translation>Export...</translation>
-    </message>
-    <message>
-        <source>Calculator...</source>
-        <translation>Calculator...</translation>
-    </message>
-    <message>
-        <source>Note:</source>
-        <translation>Note:</translation>
-    </message>
-    <message>
-        <source>why the next change is made (kept with its revision)</source>
-        <translation>why the next change is made (kept with its revision)</translation>
-    </message>
-    <message>
-        <source>Select a constant first</source>
-        <translation>Select a constant first</translation>
-    </message>
-    <message>
-        <source>Import machine constants</source>
-        <translation>Import machine constants</translation>
-    </message>
-    <message>
-        <source>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</source>
-        <translation>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</translation>
-    </message>
-    <message>
-        <source>Export machine constants</source>
-        <translation>Export machine constants</translation>
-    </message>
-    <message>
-        <source>Machine files (*.k528m);;Constants as CSV (*.csv)</source>
-        <translation>Machine files (*.k528m);;Constants as CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Another operation is under way</source>
-        <translation>Another operation is under way</translation>
-    </message>
-    <message>
-        <source>interrupted</source>
-        <translation>interrupted</translation>
-    </message>
-    <message>
-        <source>Importing %1</source>
-        <translation>Importing %1</translation>
-    </message>
-    <message>
-        <source>%1 imported: revision %2 of %3 (%4 changes)</source>
-        <translation>%1 imported: revision %2 of %3 (%4 changes)</translation>
-    </message>
-    <message>
-        <source>Nothing was imported: %1</source>
-        <translation>Nothing was imported: %1</translation>
-    </message>
-    <message>
-        <source>the controller did not take them: %1</source>
-        <translation>the controller did not take them: %1</translation>
-    </message>
-    <message>
-        <source>Exporting %1</source>
-        <translation>Exporting %1</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>cannot write %1: %2</translation>
-    </message>
-    <message>
-        <source>The constants written to %1</source>
-        <translation>The constants written to %1</translation>
-    </message>
-    <message>
-        <source>Nothing was exported: %1</source>
-        <translation>Nothing was exported: %1</translation>
-    </message>
-    <message>
-        <source>Changes: %1</source>
-        <translation>Changes: %1</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::DiffDialog</name>
-    <message>
-        <source>Compare revisions — %1</source>
-        <translation>Compare revisions — %1</translation>
-    </message>
-    <message>
-        <source>the controller now</source>
-        <translation>the controller now</translation>
-    </message>
-    <message>
-        <source>Compare</source>
-        <translation>Compare</translation>
-    </message>
-    <message>
-        <source>Revision</source>
-        <translation>Revision</translation>
-    </message>
-    <message>
-        <source>The revisions cannot be compared: %1</source>
-        <translation>The revisions cannot be compared: %1</translation>
-    </message>
-    <message>
-        <source>(no difference)</source>
-        <translation>(no difference)</translation>
     </message>
 </context>
 <context>
@@ -1024,50 +693,165 @@
     </message>
 </context>
 <context>
-    <name>k528::studio::HistoryDialog</name>
+    <name>k528::studio::HistoryModel</name>
     <message>
-        <source>History of %1 %2 — %3</source>
-        <translation>History of %1 %2 — %3</translation>
+        <source>Positioner</source>
+        <translation>Positioner</translation>
     </message>
     <message>
-        <source>Revision</source>
-        <translation>Revision</translation>
+        <source>PLC alarm</source>
+        <translation>PLC alarm</translation>
     </message>
     <message>
-        <source>When</source>
-        <translation>When</translation>
+        <source>PLC system</source>
+        <translation>PLC system</translation>
     </message>
     <message>
-        <source>Who</source>
-        <translation>Who</translation>
+        <source>PLC work</source>
+        <translation>PLC work</translation>
     </message>
     <message>
-        <source>Before</source>
-        <translation>Before</translation>
+        <source>Program</source>
+        <translation>Program</translation>
     </message>
     <message>
-        <source>After</source>
-        <translation>After</translation>
+        <source>ESC</source>
+        <translation>ESC</translation>
     </message>
     <message>
-        <source>Note</source>
-        <translation>Note</translation>
+        <source>ESC from the history dock</source>
+        <translation>ESC from the history dock</translation>
     </message>
     <message>
-        <source>(none)</source>
-        <translation>(none)</translation>
+        <source>acknowledge signal Z1000.7</source>
+        <translation>acknowledge signal Z1000.7</translation>
     </message>
     <message>
-        <source>No revision of %1 changed this constant.</source>
-        <translation>No revision of %1 changed this constant.</translation>
+        <source>reset Z1000.5</source>
+        <translation>reset Z1000.5</translation>
     </message>
     <message>
-        <source>The history cannot be read: %1</source>
-        <translation>The history cannot be read: %1</translation>
+        <source>L%1, line %2</source>
+        <translation>L%1, line %2</translation>
     </message>
     <message>
-        <source>Revisions that changed this constant: %1 (newest first).</source>
-        <translation>Revisions that changed this constant: %1 (newest first).</translation>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>not yet</source>
+        <translation>not yet</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Machine time</source>
+        <translation>Machine time</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Cause gone</source>
+        <translation>Cause gone</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Acknowledged</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::HistoryView</name>
+    <message>
+        <source>Export the message history</source>
+        <translation>Export the message history</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The messages could not be written (they are kept and written later): %1</source>
+        <translation>The messages could not be written (they are kept and written later): %1</translation>
+    </message>
+    <message>
+        <source>No message history: %1</source>
+        <translation>No message history: %1</translation>
+    </message>
+    <message>
+        <source>%1 messages (%2 loaded); %3 waiting for acknowledgement. Database: %4</source>
+        <translation>%1 messages (%2 loaded); %3 waiting for acknowledgement. Database: %4</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>The export was cancelled; %1 was left as it was.</source>
+        <translation>The export was cancelled; %1 was left as it was.</translation>
+    </message>
+    <message>
+        <source>Exporting the message history…</source>
+        <translation>Exporting the message history…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>%1 messages exported to %2</source>
+        <translation>%1 messages exported to %2</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Search</translation>
+    </message>
+    <message>
+        <source>text or number, e.g. 37 or A03</source>
+        <translation>text or number, e.g. 37 or A03</translation>
+    </message>
+    <message>
+        <source>All sources</source>
+        <translation>All sources</translation>
+    </message>
+    <message>
+        <source>Not acknowledged</source>
+        <translation>Not acknowledged</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>All machines</translation>
+    </message>
+    <message>
+        <source>Acknowledge (ESC)</source>
+        <translation>Acknowledge (ESC)</translation>
+    </message>
+    <message>
+        <source>Acknowledges the current messages as ESC on the K923 does (C123 reset, C124 faults, C125 system messages)</source>
+        <translation>Acknowledges the current messages as ESC on the K923 does (C123 reset, C124 faults, C125 system messages)</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Export CSV…</translation>
+    </message>
+    <message>
+        <source>Message history</source>
+        <translation>Message history</translation>
     </message>
 </context>
 <context>
@@ -1620,7 +1404,7 @@
     <name>k528::studio::MessagesView</name>
     <message>
         <source>Source</source>
-        <translation type="unfinished" />
+        <translation>Source</translation>
     </message>
     <message>
         <source>No.</source>
@@ -1640,7 +1424,7 @@
     </message>
     <message>
         <source>Positioner</source>
-        <translation type="unfinished" />
+        <translation>Positioner</translation>
     </message>
     <message>
         <source>active</source>
@@ -1648,11 +1432,11 @@
     </message>
     <message>
         <source>PLC system</source>
-        <translation type="unfinished" />
+        <translation>PLC system</translation>
     </message>
     <message>
         <source>PLC alarm</source>
-        <translation type="unfinished" />
+        <translation>PLC alarm</translation>
     </message>
     <message>
         <source>PLC</source>
@@ -1728,180 +1512,6 @@
     <message>
         <source>, frame N%1</source>
         <translation type="unfinished" />
-    </message>
-</context>
-<context>
-    <name>k528::studio::RParamsModel</name>
-    <message>
-        <source>%1 mm/min</source>
-        <translation>%1 mm/min</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>user</source>
-        <translation>user</translation>
-    </message>
-    <message>
-        <source>system</source>
-        <translation>system</translation>
-    </message>
-    <message>
-        <source>read only</source>
-        <translation>read only</translation>
-    </message>
-    <message>
-        <source>reserved</source>
-        <translation>reserved</translation>
-    </message>
-    <message>
-        <source>No.</source>
-        <translation>No.</translation>
-    </message>
-    <message>
-        <source>Access</source>
-        <translation>Access</translation>
-    </message>
-    <message>
-        <source>Preset screen</source>
-        <translation>Preset screen</translation>
-    </message>
-    <message>
-        <source>Meaning (appendix Л)</source>
-        <translation>Meaning (appendix Л)</translation>
-    </message>
-    <message>
-        <source>Discretes</source>
-        <translation>Discretes</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>mm</translation>
-    </message>
-    <message>
-        <source>Preset</source>
-        <translation>Preset</translation>
-    </message>
-    <message>
-        <source>R%1 is read only: the controller writes R232..R262</source>
-        <translation>R%1 is read only: the controller writes R232..R262</translation>
-    </message>
-    <message>
-        <source>A program is executing: R-parameters are changed when it stops, as on the K923</source>
-        <translation>A program is executing: R-parameters are changed when it stops, as on the K923</translation>
-    </message>
-    <message>
-        <source>%1 is outside the R-parameters' range -2147483648..2147483647</source>
-        <translation>%1 is outside the R-parameters' range -2147483648..2147483647</translation>
-    </message>
-    <message>
-        <source>R%1: «%2» is not a number</source>
-        <translation>R%1: «%2» is not a number</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::RParamsPane</name>
-    <message>
-        <source>R-parameters</source>
-        <translation>R-parameters</translation>
-    </message>
-    <message>
-        <source>The machine's presets are not read from the database: %1</source>
-        <translation>The machine's presets are not read from the database: %1</translation>
-    </message>
-    <message>
-        <source>Search: number or meaning</source>
-        <translation>Search: number or meaning</translation>
-    </message>
-    <message>
-        <source>All R0..R299</source>
-        <translation>All R0..R299</translation>
-    </message>
-    <message>
-        <source>User R0..R149</source>
-        <translation>User R0..R149</translation>
-    </message>
-    <message>
-        <source>System (writable)</source>
-        <translation>System (writable)</translation>
-    </message>
-    <message>
-        <source>Read only R232..R262</source>
-        <translation>Read only R232..R262</translation>
-    </message>
-    <message>
-        <source>With a preset</source>
-        <translation>With a preset</translation>
-    </message>
-    <message>
-        <source>Not zero</source>
-        <translation>Not zero</translation>
-    </message>
-    <message>
-        <source>Keep as preset</source>
-        <translation>Keep as preset</translation>
-    </message>
-    <message>
-        <source>The selected parameter's value becomes the machine's preset (a new revision)</source>
-        <translation>The selected parameter's value becomes the machine's preset (a new revision)</translation>
-    </message>
-    <message>
-        <source>Remove preset</source>
-        <translation>Remove preset</translation>
-    </message>
-    <message>
-        <source>Keep all as presets</source>
-        <translation>Keep all as presets</translation>
-    </message>
-    <message>
-        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</source>
-        <translation>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</translation>
-    </message>
-    <message>
-        <source>Load the presets</source>
-        <translation>Load the presets</translation>
-    </message>
-    <message>
-        <source>The machine's presets into the controller</source>
-        <translation>The machine's presets into the controller</translation>
-    </message>
-    <message>
-        <source>Note:</source>
-        <translation>Note:</translation>
-    </message>
-    <message>
-        <source>why the presets change (kept with the revision)</source>
-        <translation>why the presets change (kept with the revision)</translation>
-    </message>
-    <message>
-        <source>No preset changes</source>
-        <translation>No preset changes</translation>
-    </message>
-    <message>
-        <source>The presets were not kept: %1</source>
-        <translation>The presets were not kept: %1</translation>
-    </message>
-    <message>
-        <source>%1 — kept as revision %2 of %3</source>
-        <translation>%1 — kept as revision %2 of %3</translation>
-    </message>
-    <message>
-        <source>Select an R-parameter first</source>
-        <translation>Select an R-parameter first</translation>
-    </message>
-    <message>
-        <source>R%1 is read only (R232..R262): it cannot be preset</source>
-        <translation>R%1 is read only (R232..R262): it cannot be preset</translation>
-    </message>
-    <message>
-        <source>The selected R-parameter has no preset</source>
-        <translation>The selected R-parameter has no preset</translation>
-    </message>
-    <message>
-        <source>Presets loaded into the controller: %1</source>
-        <translation>Presets loaded into the controller: %1</translation>
     </message>
 </context>
 <context>
@@ -1987,10 +1597,6 @@
         <translation>Axis Z</translation>
     </message>
     <message>
-        <source>Time, s</source>
-        <translation>Time, s</translation>
-    </message>
-    <message>
         <source>mm</source>
         <translation>mm</translation>
     </message>
@@ -2029,6 +1635,10 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Oscilloscope</translation>
+    </message>
+    <message>
+        <source>Time before the newest sample, s</source>
+        <translation>Time before the newest sample, s</translation>
     </message>
 </context>
 <context>

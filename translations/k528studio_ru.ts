@@ -291,7 +291,7 @@
     </message>
     <message>
         <source>interrupted</source>
-        <translation>прервано</translation>
+        <translation>прерывание</translation>
     </message>
     <message>
         <source>end/reset</source>
@@ -360,337 +360,6 @@
     <message>
         <source>fast inputs </source>
         <translation>быстрые входы </translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::CalculatorDialog</name>
-    <message>
-        <source>C-constant calculator: acceleration (parameter 22)</source>
-        <translation>Калькулятор С-параметров: ускорение (параметр 22)</translation>
-    </message>
-    <message>
-        <source>Axis X (C22)</source>
-        <translation>Ось X (C22)</translation>
-    </message>
-    <message>
-        <source>Axis Z (C74)</source>
-        <translation>Ось Z (C74)</translation>
-    </message>
-    <message>
-        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
-        <translation>Формула 1: разгон от 0 до Vmax за Tразг</translation>
-    </message>
-    <message>
-        <source>Formula 2: braking from Vmax over S</source>
-        <translation>Формула 2: торможение с Vmax на пути S</translation>
-    </message>
-    <message>
-        <source>Formula 3: acceleration A</source>
-        <translation>Формула 3: ускорение A</translation>
-    </message>
-    <message>
-        <source>Vmax, mm/min</source>
-        <translation>Vmax, мм/мин</translation>
-    </message>
-    <message>
-        <source>Tразг, ms</source>
-        <translation>Tразг, мс</translation>
-    </message>
-    <message>
-        <source>S, mm of braking</source>
-        <translation>S, мм торможения</translation>
-    </message>
-    <message>
-        <source>A, m/s²</source>
-        <translation>A, м/с²</translation>
-    </message>
-    <message>
-        <source>Axis</source>
-        <translation>Ось</translation>
-    </message>
-    <message>
-        <source>Formula</source>
-        <translation>Формула</translation>
-    </message>
-    <message>
-        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
-        <translation>Формула 1, как напечатана: C = 0.8533 · Vmax / Tразг, Vmax в дискретах/мин, Tразг в мс: 0.8533 · %1 / %2 = %3.</translation>
-    </message>
-    <message>
-        <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
-        <translation>Формула 2, как напечатана: C = 3.556·10⁻⁶ · Vmax² / S, Vmax в дискретах/мин, S в дискретах: 3.556·10⁻⁶ · %1² / %2 = %3.</translation>
-    </message>
-    <message>
-        <source>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</source>
-        <translation>Формула 3: C = 25600 · A / Kд, A в м/с², Kд = %1 (дискрета в мкм): 25600 · %2 / %1 = %3.</translation>
-    </message>
-    <message>
-        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</source>
-        <translation>Описанное движение: A = %1 м/с². Значение по напечатанной формуле: &lt;b&gt;%2&lt;/b&gt;, в единице K528 Studio это %3 м/с² (множитель %4).</translation>
-    </message>
-    <message>
-        <source>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</source>
-        <translation>Значение, дающее это движение: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kд = %2, целая часть). Его и вводите в C%3.</translation>
-    </message>
-    <message>
-        <source>Why formula 1 gives twice the value</source>
-        <translation>Почему формула 1 даёт вдвое большее значение</translation>
-    </message>
-    <message>
-        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
-        <translation>Таблица Е.1 приводит для параметра 22 три формулы. Формула 3 задаёт единицу: C = 25600·A/Kд. Торможение с V до 0 на пути S требует A = V²/(2S); по формуле 3 это 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — коэффициент 3.556 формулы 2, округлённый. Разгон от 0 до V за T требует A = V/T, то есть 25600/60000·V/T = 0.4267·V/T; в формуле 1 напечатано 0.8533 — вдвое больше.</translation>
-    </message>
-    <message>
-        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
-        <translation>Две формулы против одной: K528 Studio принимает единицу формул 2 и 3 (docs/machine-constants.md). Значение по формуле 1, как она напечатана, разгоняет ось вдвое быстрее описанного (2000 из приложения Ж для «2 с до 5000 мм/мин» здесь разгоняет за 1.07 с). Вводите согласованное значение.</translation>
-    </message>
-    <message>
-        <source>Set C%1 to %2</source>
-        <translation>Записать C%1 = %2</translation>
-    </message>
-    <message>
-        <source>calculator: %1 → C%2 = %3</source>
-        <translation>калькулятор: %1 → C%2 = %3</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::ConstantsEditor</name>
-    <message>
-        <source>a program is under way: the constants are changed when it has ended</source>
-        <translation>выполняется программа: параметры станка меняют после её окончания</translation>
-    </message>
-    <message>
-        <source>an axis is moving: the constants are changed at standstill</source>
-        <translation>ось движется: параметры станка меняют в останове</translation>
-    </message>
-    <message>
-        <source>undo: %1</source>
-        <translation>отмена: %1</translation>
-    </message>
-    <message>
-        <source>No C-parameter %1 (1..152)</source>
-        <translation>Нет С-параметра %1 (1..152)</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::ConstantsModel</name>
-    <message>
-        <source>No.</source>
-        <translation>№</translation>
-    </message>
-    <message>
-        <source>Axis</source>
-        <translation>Ось</translation>
-    </message>
-    <message>
-        <source>Panel name</source>
-        <translation>Имя на пульте</translation>
-    </message>
-    <message>
-        <source>Meaning</source>
-        <translation>Назначение</translation>
-    </message>
-    <message>
-        <source>Unit</source>
-        <translation>Единица</translation>
-    </message>
-    <message>
-        <source>Range</source>
-        <translation>Диапазон</translation>
-    </message>
-    <message>
-        <source>Address (Е.1)</source>
-        <translation>Адрес (Е.1)</translation>
-    </message>
-    <message>
-        <source>Value</source>
-        <translation>Значение</translation>
-    </message>
-    <message>
-        <source>The value means</source>
-        <translation>Что значит значение</translation>
-    </message>
-    <message>
-        <source>C%1: «%2» is not a whole number</source>
-        <translation>C%1: «%2» — не целое число</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::ConstantsPane</name>
-    <message>
-        <source>«%1» is not a whole number</source>
-        <translation>«%1» — не целое число</translation>
-    </message>
-    <message>
-        <source>Machine constants</source>
-        <translation>Параметры станка</translation>
-    </message>
-    <message>
-        <source>Applied to the controller, but not kept in the database: %1</source>
-        <translation>Введено в контроллер, но не сохранено в базе: %1</translation>
-    </message>
-    <message>
-        <source>%1 — kept as revision %2 of %3</source>
-        <translation>%1 — сохранено как ревизия %2 станка %3</translation>
-    </message>
-    <message>
-        <source>Search: number, panel name, meaning, unit, address</source>
-        <translation>Поиск: номер, имя на пульте, назначение, единица, адрес</translation>
-    </message>
-    <message>
-        <source>All axes</source>
-        <translation>Все оси</translation>
-    </message>
-    <message>
-        <source>Axis X</source>
-        <translation>Ось X</translation>
-    </message>
-    <message>
-        <source>Axis Z</source>
-        <translation>Ось Z</translation>
-    </message>
-    <message>
-        <source>Common</source>
-        <translation>Общие</translation>
-    </message>
-    <message>
-        <source>Hide reserved</source>
-        <translation>Скрыть резерв</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Отменить</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Повторить</translation>
-    </message>
-    <message>
-        <source>History...</source>
-        <translation>История...</translation>
-    </message>
-    <message>
-        <source>Every revision that changed the selected constant</source>
-        <translation>Все ревизии, менявшие выбранный параметр</translation>
-    </message>
-    <message>
-        <source>Compare revisions...</source>
-        <translation>Сравнить ревизии...</translation>
-    </message>
-    <message>
-        <source>Import...</source>
-        <translation>Импорт...</translation>
-    </message>
-    <message>
-        <source>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</source>
-        <translation>Файл станка (.k528m) или параметры в CSV; проверяется, как в «k528 db import»</translation>
-    </message>
-    <message>
-        <source>Export...</source>
-        <translation>Экспорт...</translation>
-    </message>
-    <message>
-        <source>Calculator...</source>
-        <translation>Калькулятор...</translation>
-    </message>
-    <message>
-        <source>Note:</source>
-        <translation>Примечание:</translation>
-    </message>
-    <message>
-        <source>why the next change is made (kept with its revision)</source>
-        <translation>зачем вносится следующее изменение (сохраняется с ревизией)</translation>
-    </message>
-    <message>
-        <source>Select a constant first</source>
-        <translation>Сначала выберите параметр</translation>
-    </message>
-    <message>
-        <source>Import machine constants</source>
-        <translation>Импорт параметров станка</translation>
-    </message>
-    <message>
-        <source>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</source>
-        <translation>Файлы станка (*.k528m);;Параметры в CSV (*.csv);;Все файлы (*)</translation>
-    </message>
-    <message>
-        <source>Export machine constants</source>
-        <translation>Экспорт параметров станка</translation>
-    </message>
-    <message>
-        <source>Machine files (*.k528m);;Constants as CSV (*.csv)</source>
-        <translation>Файлы станка (*.k528m);;Параметры в CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Another operation is under way</source>
-        <translation>Уже выполняется другая операция</translation>
-    </message>
-    <message>
-        <source>interrupted</source>
-        <translation>прервано</translation>
-    </message>
-    <message>
-        <source>Importing %1</source>
-        <translation>Импорт %1</translation>
-    </message>
-    <message>
-        <source>%1 imported: revision %2 of %3 (%4 changes)</source>
-        <translation>%1 импортирован: ревизия %2 станка %3 (изменений: %4)</translation>
-    </message>
-    <message>
-        <source>Nothing was imported: %1</source>
-        <translation>Ничего не импортировано: %1</translation>
-    </message>
-    <message>
-        <source>the controller did not take them: %1</source>
-        <translation>контроллер их не принял: %1</translation>
-    </message>
-    <message>
-        <source>Exporting %1</source>
-        <translation>Экспорт %1</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>не удаётся записать %1: %2</translation>
-    </message>
-    <message>
-        <source>The constants written to %1</source>
-        <translation>Параметры записаны в %1</translation>
-    </message>
-    <message>
-        <source>Nothing was exported: %1</source>
-        <translation>Ничего не экспортировано: %1</translation>
-    </message>
-    <message>
-        <source>Changes: %1</source>
-        <translation>Изменений: %1</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::DiffDialog</name>
-    <message>
-        <source>Compare revisions — %1</source>
-        <translation>Сравнение ревизий — %1</translation>
-    </message>
-    <message>
-        <source>the controller now</source>
-        <translation>контроллер сейчас</translation>
-    </message>
-    <message>
-        <source>Compare</source>
-        <translation>Сравнить</translation>
-    </message>
-    <message>
-        <source>Revision</source>
-        <translation>Ревизия</translation>
-    </message>
-    <message>
-        <source>The revisions cannot be compared: %1</source>
-        <translation>Ревизии не сравнить: %1</translation>
-    </message>
-    <message>
-        <source>(no difference)</source>
-        <translation>(различий нет)</translation>
     </message>
 </context>
 <context>
@@ -1024,50 +693,165 @@
     </message>
 </context>
 <context>
-    <name>k528::studio::HistoryDialog</name>
+    <name>k528::studio::HistoryModel</name>
     <message>
-        <source>History of %1 %2 — %3</source>
-        <translation>История %1 %2 — %3</translation>
+        <source>Positioner</source>
+        <translation>БП</translation>
     </message>
     <message>
-        <source>Revision</source>
-        <translation>Ревизия</translation>
+        <source>PLC alarm</source>
+        <translation>ПЛК, авария</translation>
     </message>
     <message>
-        <source>When</source>
-        <translation>Когда</translation>
+        <source>PLC system</source>
+        <translation>ПЛК, системное</translation>
     </message>
     <message>
-        <source>Who</source>
-        <translation>Кто</translation>
+        <source>PLC work</source>
+        <translation>ПЛК, рабочее</translation>
     </message>
     <message>
-        <source>Before</source>
-        <translation>Было</translation>
+        <source>Program</source>
+        <translation>Программа</translation>
     </message>
     <message>
-        <source>After</source>
-        <translation>Стало</translation>
+        <source>ESC</source>
+        <translation>ESC</translation>
     </message>
     <message>
-        <source>Note</source>
-        <translation>Примечание</translation>
+        <source>ESC from the history dock</source>
+        <translation>ESC из журнала сообщений</translation>
     </message>
     <message>
-        <source>(none)</source>
-        <translation>(нет)</translation>
+        <source>acknowledge signal Z1000.7</source>
+        <translation>сигнал квитирования Z1000.7</translation>
     </message>
     <message>
-        <source>No revision of %1 changed this constant.</source>
-        <translation>Ни одна ревизия %1 не меняла этот параметр.</translation>
+        <source>reset Z1000.5</source>
+        <translation>сброс Z1000.5</translation>
     </message>
     <message>
-        <source>The history cannot be read: %1</source>
-        <translation>История не читается: %1</translation>
+        <source>L%1, line %2</source>
+        <translation>L%1, строка %2</translation>
     </message>
     <message>
-        <source>Revisions that changed this constant: %1 (newest first).</source>
-        <translation>Ревизий, менявших параметр: %1 (новые сверху).</translation>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>not yet</source>
+        <translation>ещё нет</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>Machine time</source>
+        <translation>Время станка</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Источник</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>Cause gone</source>
+        <translation>Причина устранена</translation>
+    </message>
+    <message>
+        <source>Acknowledged</source>
+        <translation>Квитировано</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::HistoryView</name>
+    <message>
+        <source>Export the message history</source>
+        <translation>Экспорт журнала сообщений</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>The messages could not be written (they are kept and written later): %1</source>
+        <translation>Сообщения не удалось записать (они сохранены и будут записаны позже): %1</translation>
+    </message>
+    <message>
+        <source>No message history: %1</source>
+        <translation>Журнал сообщений недоступен: %1</translation>
+    </message>
+    <message>
+        <source>%1 messages (%2 loaded); %3 waiting for acknowledgement. Database: %4</source>
+        <translation>Сообщений: %1 (загружено %2); ждут квитирования: %3. База данных: %4</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>The export was cancelled; %1 was left as it was.</source>
+        <translation>Экспорт отменён; файл %1 не изменён.</translation>
+    </message>
+    <message>
+        <source>Exporting the message history…</source>
+        <translation>Экспорт журнала сообщений…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>%1 messages exported to %2</source>
+        <translation>Сообщений экспортировано: %1, файл %2</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Поиск</translation>
+    </message>
+    <message>
+        <source>text or number, e.g. 37 or A03</source>
+        <translation>текст или номер, например 37 или A03</translation>
+    </message>
+    <message>
+        <source>All sources</source>
+        <translation>Все источники</translation>
+    </message>
+    <message>
+        <source>Not acknowledged</source>
+        <translation>Не квитированные</translation>
+    </message>
+    <message>
+        <source>All machines</source>
+        <translation>Все станки</translation>
+    </message>
+    <message>
+        <source>Acknowledge (ESC)</source>
+        <translation>Квитировать (ESC)</translation>
+    </message>
+    <message>
+        <source>Acknowledges the current messages as ESC on the K923 does (C123 reset, C124 faults, C125 system messages)</source>
+        <translation>Квитирует текущие сообщения, как ESC на K923 (C123 — сброс, C124 — неисправности, C125 — системные сообщения)</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Экспорт CSV…</translation>
+    </message>
+    <message>
+        <source>Message history</source>
+        <translation>Журнал сообщений</translation>
     </message>
 </context>
 <context>
@@ -1731,180 +1515,6 @@
     </message>
 </context>
 <context>
-    <name>k528::studio::RParamsModel</name>
-    <message>
-        <source>%1 mm/min</source>
-        <translation>%1 мм/мин</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 с</translation>
-    </message>
-    <message>
-        <source>user</source>
-        <translation>пользователя</translation>
-    </message>
-    <message>
-        <source>system</source>
-        <translation>системный</translation>
-    </message>
-    <message>
-        <source>read only</source>
-        <translation>только чтение</translation>
-    </message>
-    <message>
-        <source>reserved</source>
-        <translation>резерв</translation>
-    </message>
-    <message>
-        <source>No.</source>
-        <translation>№</translation>
-    </message>
-    <message>
-        <source>Access</source>
-        <translation>Доступ</translation>
-    </message>
-    <message>
-        <source>Preset screen</source>
-        <translation>Экран УСТ</translation>
-    </message>
-    <message>
-        <source>Meaning (appendix Л)</source>
-        <translation>Назначение (приложение Л)</translation>
-    </message>
-    <message>
-        <source>Discretes</source>
-        <translation>Дискреты</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>мм</translation>
-    </message>
-    <message>
-        <source>Preset</source>
-        <translation>Предустановка</translation>
-    </message>
-    <message>
-        <source>R%1 is read only: the controller writes R232..R262</source>
-        <translation>R%1 только для чтения: R232..R262 пишет контроллер</translation>
-    </message>
-    <message>
-        <source>A program is executing: R-parameters are changed when it stops, as on the K923</source>
-        <translation>Выполняется программа: R-параметры меняют, когда она остановлена, как на К923</translation>
-    </message>
-    <message>
-        <source>%1 is outside the R-parameters' range -2147483648..2147483647</source>
-        <translation>%1 вне диапазона R-параметров -2147483648..2147483647</translation>
-    </message>
-    <message>
-        <source>R%1: «%2» is not a number</source>
-        <translation>R%1: «%2» — не число</translation>
-    </message>
-</context>
-<context>
-    <name>k528::studio::RParamsPane</name>
-    <message>
-        <source>R-parameters</source>
-        <translation>R-параметры</translation>
-    </message>
-    <message>
-        <source>The machine's presets are not read from the database: %1</source>
-        <translation>Предустановки станка не прочитаны из базы: %1</translation>
-    </message>
-    <message>
-        <source>Search: number or meaning</source>
-        <translation>Поиск: номер или назначение</translation>
-    </message>
-    <message>
-        <source>All R0..R299</source>
-        <translation>Все R0..R299</translation>
-    </message>
-    <message>
-        <source>User R0..R149</source>
-        <translation>Пользователя R0..R149</translation>
-    </message>
-    <message>
-        <source>System (writable)</source>
-        <translation>Системные (запись)</translation>
-    </message>
-    <message>
-        <source>Read only R232..R262</source>
-        <translation>Только чтение R232..R262</translation>
-    </message>
-    <message>
-        <source>With a preset</source>
-        <translation>С предустановкой</translation>
-    </message>
-    <message>
-        <source>Not zero</source>
-        <translation>Не ноль</translation>
-    </message>
-    <message>
-        <source>Keep as preset</source>
-        <translation>В предустановку</translation>
-    </message>
-    <message>
-        <source>The selected parameter's value becomes the machine's preset (a new revision)</source>
-        <translation>Значение выбранного параметра становится предустановкой станка (новая ревизия)</translation>
-    </message>
-    <message>
-        <source>Remove preset</source>
-        <translation>Убрать предустановку</translation>
-    </message>
-    <message>
-        <source>Keep all as presets</source>
-        <translation>Все в предустановки</translation>
-    </message>
-    <message>
-        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</source>
-        <translation>Каждый записываемый R-параметр, не равный 0, становится предустановкой, как при «Сохранить память контроллера»</translation>
-    </message>
-    <message>
-        <source>Load the presets</source>
-        <translation>Ввести предустановки</translation>
-    </message>
-    <message>
-        <source>The machine's presets into the controller</source>
-        <translation>Предустановки станка — в контроллер</translation>
-    </message>
-    <message>
-        <source>Note:</source>
-        <translation>Примечание:</translation>
-    </message>
-    <message>
-        <source>why the presets change (kept with the revision)</source>
-        <translation>зачем меняются предустановки (сохраняется с ревизией)</translation>
-    </message>
-    <message>
-        <source>No preset changes</source>
-        <translation>Предустановки не меняются</translation>
-    </message>
-    <message>
-        <source>The presets were not kept: %1</source>
-        <translation>Предустановки не сохранены: %1</translation>
-    </message>
-    <message>
-        <source>%1 — kept as revision %2 of %3</source>
-        <translation>%1 — сохранено как ревизия %2 станка %3</translation>
-    </message>
-    <message>
-        <source>Select an R-parameter first</source>
-        <translation>Сначала выберите R-параметр</translation>
-    </message>
-    <message>
-        <source>R%1 is read only (R232..R262): it cannot be preset</source>
-        <translation>R%1 только для чтения (R232..R262): предустановка невозможна</translation>
-    </message>
-    <message>
-        <source>The selected R-parameter has no preset</source>
-        <translation>У выбранного R-параметра нет предустановки</translation>
-    </message>
-    <message>
-        <source>Presets loaded into the controller: %1</source>
-        <translation>Предустановок введено в контроллер: %1</translation>
-    </message>
-</context>
-<context>
     <name>k528::studio::ScopeView</name>
     <message>
         <source>Export CSV</source>
@@ -1987,10 +1597,6 @@
         <translation>Ось Z</translation>
     </message>
     <message>
-        <source>Time, s</source>
-        <translation>Время, с</translation>
-    </message>
-    <message>
         <source>mm</source>
         <translation>мм</translation>
     </message>
@@ -2029,6 +1635,10 @@
     <message>
         <source>Oscilloscope</source>
         <translation>Осциллограф</translation>
+    </message>
+    <message>
+        <source>Time before the newest sample, s</source>
+        <translation>Время до последнего отсчёта, с</translation>
     </message>
 </context>
 <context>

@@ -29,6 +29,7 @@
 #include "rparams/rparams_dock.h"
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
+#include "history/history_dock.h"
 #include "editor/editor_tab.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
@@ -162,6 +163,7 @@ void MainWindow::createDocks() {
     addControllerDock(this); // controller/controller_dock.cpp: the Controller menu and dock
     addConstantsDock(this, *session_); // constants/constants_dock.cpp
     addRParamsDock(this, *session_);   // rparams/rparams_dock.cpp
+    addHistoryDock(this, *session_); // history/history_dock.cpp
 
 }
 
@@ -209,6 +211,8 @@ void MainWindow::createMenus() {
     for (const char* name : {"dock.constants", "dock.rparams"})
         if (auto* d = findChild<QDockWidget*>(name))
             viewMenu_->addAction(d->toggleViewAction());
+    if (auto* history = findChild<QDockWidget*>("dock.history"))
+        viewMenu_->addAction(history->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);

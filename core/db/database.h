@@ -15,7 +15,8 @@
 //   - open() checks the file before it changes anything: a file that is not
 //     SQLite, another program's SQLite file (application_id), a schema newer
 //     than this program's (user_version) or a file that fails
-//     PRAGMA integrity_check is refused with a clear Error and left byte for
+//     PRAGMA integrity_check (every table but the message history's, see
+//     docs/database.md) is refused with a clear Error and left byte for
 //     byte as it was. Older schemas are migrated in one transaction. A new
 //     (empty) file gets the schema and the built-in machines.
 //   - Every write is one transaction (BEGIN IMMEDIATE): it happens whole or
@@ -46,6 +47,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+struct sqlite3;
 
 namespace k528::db {
 
@@ -229,6 +232,10 @@ public:
 
     // Runs PRAGMA integrity_check and foreign_key_check: "" when fine.
     std::string checkIntegrity() const;
+
+    // The SQLite connection, for the other stores of core/db that share this
+    // file and its rules (db::MessageLog); not for use outside core/db.
+    sqlite3* connection() const;
 
 private:
     struct Impl;

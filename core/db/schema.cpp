@@ -166,11 +166,51 @@ CREATE TABLE audit (
 );
 )SQL";
 
+// Version 2: the message history (core/db/message_log.h). Every message the
+// positioner and the PLC raised on a simulated (or linked) machine, one row an
+// occurrence; a "run" is one session of one machine (the desktop's start).
+// Not tied to the machines table: the log outlives a deleted machine.
+constexpr std::string_view kSchemaV2 = R"SQL(
+CREATE TABLE message_runs (
+    id         INTEGER PRIMARY KEY,
+    machine    TEXT NOT NULL,
+    started_at TEXT NOT NULL,
+    started_ms INTEGER NOT NULL,
+    author     TEXT NOT NULL
+);
+
+CREATE TABLE message_history (
+    id          INTEGER PRIMARY KEY,
+    run_id      INTEGER NOT NULL REFERENCES message_runs(id) ON DELETE CASCADE,
+    seq         INTEGER NOT NULL CHECK (seq >= 1),
+    machine     TEXT NOT NULL,
+    machine_ms  INTEGER NOT NULL CHECK (machine_ms >= 0),
+    day_ms      INTEGER NOT NULL,
+    source      TEXT NOT NULL CHECK (source IN ('positioner', 'plc-alarm', 'plc-system',
+                                                'plc-work', 'program')),
+    number      INTEGER NOT NULL CHECK (number BETWEEN 1 AND 99),
+    text        TEXT NOT NULL,
+    text_en     TEXT NOT NULL,
+    program     INTEGER NOT NULL CHECK (program BETWEEN 0 AND 99),
+    line        INTEGER NOT NULL CHECK (line >= 0),
+    cleared_ms  INTEGER,
+    ack_ms      INTEGER,
+    ack_day_ms  INTEGER,
+    ack_how     TEXT,
+    CHECK ((ack_ms IS NULL) = (ack_how IS NULL) AND (ack_ms IS NULL) = (ack_day_ms IS NULL)),
+    UNIQUE (run_id, seq)
+);
+
+CREATE INDEX message_history_by_machine ON message_history (machine, id);
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
      "messages, PLC texts, settings, history, audit log",
      kSchemaV1},
+    {2, "message history: every message of the positioner and the PLC, acknowledged when and how",
+     kSchemaV2},
 };
 
 } // namespace

@@ -188,7 +188,8 @@ public:
     // Called at the end of every tick (a trace recorder: machine/trace.h).
     void setAfterTick(std::function<void()> f) { afterTick_ = std::move(f); }
     // More observers of every tick, beside that hook (the backplot's live
-    // path): called after it, in the order added. The id removes it.
+    // path, the message recorder core/msglog): called after it, in the order
+    // added. The id removes it.
     int addTickObserver(std::function<void()> f);
     void removeTickObserver(int id);
     std::int64_t timeMs() const { return ctl_->timeMs(); }

@@ -136,7 +136,7 @@ private slots:
             QCOMPARE(r.fromVersion, 0);
             QCOMPARE(r.version, db::latestSchemaVersion());
             QCOMPARE(r.seeded, profile::builtinNames());
-            QCOMPARE(d.schemaVersion(), 1);
+            QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
             // The built-ins are stored exactly.
             for (const auto& name : profile::builtinNames()) {
                 QVERIFY(d.loadMachine(name) == profile::builtin(name));
@@ -153,7 +153,7 @@ private slots:
         }
         Raw raw(p);
         QCOMPARE(raw.integer("PRAGMA application_id"), static_cast<long long>(db::kApplicationId));
-        QCOMPARE(raw.integer("PRAGMA user_version"), 1LL);
+        QCOMPARE(raw.integer("PRAGMA user_version"), static_cast<long long>(db::latestSchemaVersion()));
         QCOMPARE(raw.text("PRAGMA journal_mode"), std::string("wal"));
         QCOMPARE(raw.integer("SELECT count(*) FROM c_definitions"), 152LL);
         // Appendix Е as printed: name, address, kind.
@@ -204,7 +204,7 @@ private slots:
         {
             db::Database d = db::Database::open(p, testOptions());
             QVERIFY(!d.openReport().created);
-            QCOMPARE(d.openReport().fromVersion, 1);
+            QCOMPARE(d.openReport().fromVersion, db::latestSchemaVersion());
             QVERIFY(!d.openReport().definitionsUpdated);
             QCOMPARE(d.machines().size(), std::size_t(2));
             (void)d.loadMachine("grinder-205");
@@ -243,31 +243,70 @@ private slots:
         }
         std::vector<db::Migration> steps(db::schemaMigrations().begin(),
                                          db::schemaMigrations().end());
-        steps.push_back({2, "workshops", kV2Sql});
+        steps.push_back({3, "workshops", kV2Sql});
         auto o = testOptions();
         o.migrations = steps;
         {
             db::Database d = db::Database::open(p, o);
             QVERIFY(!d.openReport().created);
-            QCOMPARE(d.openReport().fromVersion, 1);
-            QCOMPARE(d.openReport().version, 2);
+            QCOMPARE(d.openReport().fromVersion, 2);
+            QCOMPARE(d.openReport().version, 3);
             QVERIFY(d.openReport().seeded.empty());
-            QCOMPARE(d.schemaVersion(), 2);
+            QCOMPARE(d.schemaVersion(), 3);
             QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
             QCOMPARE(d.machine("grinder-205")->revision, 2);
             QCOMPARE(d.audit(1).front().action, std::string("migrate"));
-            QCOMPARE(d.audit(1).front().detail, std::string("schema version 1 -> 2"));
+            QCOMPARE(d.audit(1).front().detail, std::string("schema version 2 -> 3"));
         }
         {
             Raw raw(p);
-            QCOMPARE(raw.integer("PRAGMA user_version"), 2LL);
+            QCOMPARE(raw.integer("PRAGMA user_version"), 3LL);
             QVERIFY(raw.exec("INSERT INTO workshops (name) VALUES ('цех 3')").empty());
         }
         // This program (schema 1) now refuses the file and leaves it alone.
         const std::string bytes = fileBytes(p);
         const std::string e = openError(p, db::ErrorKind::TooNew);
-        QVERIFY2(e.find("schema version 2") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("schema version 3") != std::string::npos, e.c_str());
         QVERIFY(fileBytes(p) == bytes);
+    }
+
+    // Version 1 -> 2: the message history's tables beside every machine kept.
+    void messageHistoryFromVersion1() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "v1.db");
+        auto o1 = testOptions();
+        o1.migrations = db::schemaMigrations().subspan(0, 1);
+        {
+            db::Database d = db::Database::open(p, o1);
+            QCOMPARE(d.schemaVersion(), 1);
+            db::Edit e;
+            e.c[22] = 2133;
+            d.applyEdit("grinder-205", e, by("Петров"));
+        }
+        {
+            Raw raw(p);
+            QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'message_history'"), 0LL);
+        }
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QCOMPARE(d.openReport().fromVersion, 1);
+            QCOMPARE(d.openReport().version, 2);
+            QCOMPARE(d.schemaVersion(), 2);
+            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
+            QCOMPARE(d.audit(1).front().detail, std::string("schema version 1 -> 2"));
+            QVERIFY(d.checkIntegrity().empty());
+        }
+        Raw raw(p);
+        QCOMPARE(raw.integer("PRAGMA user_version"), 2LL);
+        QVERIFY(raw.exec("INSERT INTO message_runs (machine, started_at, started_ms, author) "
+                         "VALUES ('grinder-205', '2024-05-17T08:30:00.000Z', 0, 'x')").empty());
+        QVERIFY(raw.exec("INSERT INTO message_history (run_id, seq, machine, machine_ms, day_ms, "
+                         "source, number, text, text_en, program, line) VALUES (1, 1, "
+                         "'grinder-205', 5, 0, 'positioner', 9, 't', 't', 0, 0)").empty());
+        // The schema's rules hold: an unknown source is refused.
+        QVERIFY(!raw.exec("INSERT INTO message_history (run_id, seq, machine, machine_ms, day_ms, "
+                          "source, number, text, text_en, program, line) VALUES (1, 2, "
+                          "'grinder-205', 5, 0, 'elsewhere', 9, 't', 't', 0, 0)").empty());
     }
 
     // A new file gets every step at once.
@@ -275,12 +314,12 @@ private slots:
         QTemporaryDir dir;
         std::vector<db::Migration> steps(db::schemaMigrations().begin(),
                                          db::schemaMigrations().end());
-        steps.push_back({2, "workshops", kV2Sql});
+        steps.push_back({3, "workshops", kV2Sql});
         auto o = testOptions();
         o.migrations = steps;
         db::Database d = db::Database::open(tempPath(dir, "two.db"), o);
         QCOMPARE(d.openReport().fromVersion, 0);
-        QCOMPARE(d.schemaVersion(), 2);
+        QCOMPARE(d.schemaVersion(), 3);
         QCOMPARE(d.machines().size(), std::size_t(2));
     }
 
@@ -291,15 +330,15 @@ private slots:
         std::vector<db::Migration> steps(db::schemaMigrations().begin(),
                                          db::schemaMigrations().end());
         steps.push_back(
-            {2, "broken", "CREATE TABLE good (a INTEGER); INSERT INTO missing VALUES (1);"});
+            {3, "broken", "CREATE TABLE good (a INTEGER); INSERT INTO missing VALUES (1);"});
         auto o = testOptions();
         o.migrations = steps;
         const std::string e = openError(p, db::ErrorKind::Sql, o);
-        QVERIFY2(e.find("migration to schema version 2 failed") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("migration to schema version 3 failed") != std::string::npos, e.c_str());
         QVERIFY2(e.find("no such table: missing") != std::string::npos, e.c_str());
         QVERIFY(fileBytes(p) == bytes);
         db::Database d = db::Database::open(p, testOptions());
-        QCOMPARE(d.schemaVersion(), 1);
+        QCOMPARE(d.schemaVersion(), 2);
         Raw raw(p);
         QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'good'"), 0LL);
     }

@@ -52,7 +52,8 @@ void ScopeBuffer::decimate(int axis, ScopeSignal sig, std::int64_t t0Ms, std::in
 }
 
 void ScopeBuffer::decimate(int axis, const ScopeSignal* sigs, int count, std::int64_t t0Ms,
-                           std::int64_t t1Ms, int columns, QList<QPointF>* const* out) const {
+                           std::int64_t t1Ms, int columns, QList<QPointF>* const* out,
+                           std::int64_t originMs) const {
     constexpr int kMax = kScopeSignalCount;
     count = std::min(count, kMax);
     for (int k = 0; k < count; ++k)
@@ -74,11 +75,11 @@ void ScopeBuffer::decimate(int axis, const ScopeSignal* sigs, int count, std::in
             // The smallest and the largest of the column, in their order: the
             // line through them covers every sample of the column.
             const bool minFirst = tMin[k] <= tMax[k];
-            out[k]->append(minFirst ? QPointF(tMin[k] / 1000.0, vMin[k])
-                                    : QPointF(tMax[k] / 1000.0, vMax[k]));
+            const double xMin = static_cast<double>(tMin[k] - originMs) / 1000.0;
+            const double xMax = static_cast<double>(tMax[k] - originMs) / 1000.0;
+            out[k]->append(minFirst ? QPointF(xMin, vMin[k]) : QPointF(xMax, vMax[k]));
             if (tMin[k] != tMax[k])
-                out[k]->append(minFirst ? QPointF(tMax[k] / 1000.0, vMax[k])
-                                        : QPointF(tMin[k] / 1000.0, vMin[k]));
+                out[k]->append(minFirst ? QPointF(xMax, vMax[k]) : QPointF(xMin, vMin[k]));
         }
     };
     // The ring as (at most) two contiguous runs.
@@ -90,7 +91,8 @@ void ScopeBuffer::decimate(int axis, const ScopeSignal* sigs, int count, std::in
         for (const machine::TraceSample* p = ring_.data() + run; p != ring_.data() + run + len; ++p) {
             if (raw) {
                 for (int k = 0; k < count; ++k)
-                    out[k]->append(QPointF(p->tMs / 1000.0, scopeValue(*p, axis, sigs[k])));
+                    out[k]->append(QPointF(static_cast<double>(p->tMs - originMs) / 1000.0,
+                                           scopeValue(*p, axis, sigs[k])));
                 continue;
             }
             const int c = static_cast<int>(static_cast<double>(p->tMs - t0Ms) * columnsPerMs);

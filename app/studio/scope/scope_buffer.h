@@ -37,9 +37,11 @@ public:
     // column of `columns` (x in seconds). Fills `out` (its memory reused).
     void decimate(int axis, ScopeSignal sig, std::int64_t t0Ms, std::int64_t t1Ms, int columns,
                   QList<QPointF>& out) const;
-    // The same for several signals of one axis in one pass over the samples.
+    // The same for several signals of one axis in one pass over the samples;
+    // x in seconds after `originMs` (the live chart: 0 = the newest sample).
     void decimate(int axis, const ScopeSignal* sigs, int count, std::int64_t t0Ms,
-                  std::int64_t t1Ms, int columns, QList<QPointF>* const* out) const;
+                  std::int64_t t1Ms, int columns, QList<QPointF>* const* out,
+                  std::int64_t originMs = 0) const;
     // First index with tMs >= t (binary search over the ring).
     std::size_t lowerBound(std::int64_t tMs) const;
 

@@ -75,7 +75,8 @@ private:
                     *extraSeries = nullptr;
     };
     void retranslate();
-    void draw(std::int64_t t0, std::int64_t t1);
+    // The samples of [t0, t1] (ms), x in seconds after `origin`.
+    void draw(std::int64_t t0, std::int64_t t1, std::int64_t origin);
     void checkTrigger();
     void showCursor(int axis, double tS);
     ScopeSignal extraSignal() const;
@@ -93,7 +94,7 @@ private:
            *windowLabel_ = nullptr;
     bool paused_ = false;
     int windowS_ = 10;
-    std::int64_t shownT0_ = 0, shownT1_ = 0;
+    std::int64_t shownT0_ = 0, shownT1_ = 0, originMs_ = 0;
     std::int64_t stopAtMs_ = -1, triggeredAtMs_ = -1;
     std::int64_t lastFrames_ = -1;
     std::size_t lastAlarms_ = 0;

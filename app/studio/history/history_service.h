@@ -1,0 +1,75 @@
+// The desktop's half of the message history: one database connection of its
+// own (db::defaultDatabasePath(), or a given file), a run of the machine the
+// window simulates, and core's msglog::Recorder on every tick of that
+// machine. On each advanced() the events get the time of day (the desktop's
+// clock; core never reads one) and are written in batches, at most every
+// kFlushMs or at once after an acknowledgement. The history dock reads the
+// same log.
+#pragma once
+
+#include "db/message_log.h"
+#include "msglog/recorder.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace k528::studio {
+
+class SimulationSession;
+
+class HistoryService : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kFlushMs = 500;
+
+    // Opens the database at `path` ("": db::defaultDatabasePath()); with a
+    // session, records its machine's messages. A database that cannot be used
+    // is told by error() and nothing is recorded (a damaged file is never
+    // changed).
+    explicit HistoryService(SimulationSession* session, const QString& path = {},
+                            QObject* parent = nullptr);
+    ~HistoryService() override;
+
+    bool isOpen() const { return log_ != nullptr; }
+    QString error() const { return error_; }
+    QString databasePath() const { return path_; }
+    db::MessageLog* log() const { return log_.get(); }
+    // The machine recorded ("" without a session).
+    QString machine() const { return machine_; }
+    std::int64_t runId() const { return run_; }
+    const msglog::Recorder* recorder() const { return recorder_.get(); }
+
+public slots:
+    // ESC from the dock: the controller's escape() (C123..C125), as the K923 does.
+    void acknowledge();
+    // Writes what is pending now.
+    void flush();
+
+signals:
+    // New or changed rows were written.
+    void written();
+    // Writing failed (said once; the events stay pending for the next try).
+    void failed(const QString& message);
+
+private:
+    void advanced();
+    void forgetSession();
+
+    SimulationSession* session_ = nullptr;
+    QString path_, machine_, error_;
+    std::unique_ptr<db::Database> db_;
+    std::unique_ptr<db::MessageLog> log_;
+    std::unique_ptr<msglog::Recorder> recorder_;
+    std::int64_t run_ = 0;
+    int observer_ = 0;
+    std::vector<db::MessageEvent> retry_; // a batch that could not be written yet
+    QElapsedTimer sinceFlush_;
+    bool failedOnce_ = false;
+    double speed_ = 1.0;
+};
+
+} // namespace k528::studio

@@ -1,0 +1,371 @@
+#include "db/message_log.h"
+
+#include "db/sqlite.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sqlite3.h>
+
+namespace k528::db {
+
+std::string_view messageSourceName(MessageSource s) {
+    switch (s) {
+    case MessageSource::Positioner: return "positioner";
+    case MessageSource::PlcAlarm: return "plc-alarm";
+    case MessageSource::PlcSystem: return "plc-system";
+    case MessageSource::PlcWork: return "plc-work";
+    case MessageSource::Program: return "program";
+    }
+    return "";
+}
+
+std::optional<MessageSource> messageSourceFromName(std::string_view name) {
+    for (int i = 0; i < kMessageSourceCount; ++i)
+        if (messageSourceName(static_cast<MessageSource>(i)) == name)
+            return static_cast<MessageSource>(i);
+    return std::nullopt;
+}
+
+std::string messageCode(MessageSource s, int number) {
+    char buf[16];
+    switch (s) {
+    case MessageSource::Positioner: std::snprintf(buf, sizeof buf, "%d", number); break;
+    case MessageSource::PlcAlarm: std::snprintf(buf, sizeof buf, "A%02d", number); break;
+    case MessageSource::PlcSystem: std::snprintf(buf, sizeof buf, "S%02d", number); break;
+    case MessageSource::PlcWork: std::snprintf(buf, sizeof buf, "W%02d", number); break;
+    case MessageSource::Program: std::snprintf(buf, sizeof buf, "#%d", number); break;
+    }
+    return buf;
+}
+
+std::string formatDayMs(std::int64_t unixMs) {
+    const std::int64_t s = unixMs >= 0 ? unixMs / 1000 : -((-unixMs + 999) / 1000);
+    const std::int64_t ms = unixMs - s * 1000;
+    std::string t = formatTimestamp(s); // "...T08:30:00Z"
+    char frac[8];
+    std::snprintf(frac, sizeof frac, ".%03lld", static_cast<long long>(ms));
+    t.insert(t.size() - 1, frac);
+    return t;
+}
+
+namespace {
+
+// The code as SQL computes it, for searching.
+constexpr std::string_view kCodeSql =
+    "(CASE source WHEN 'plc-alarm' THEN 'A' || printf('%02d', number) "
+    "WHEN 'plc-system' THEN 'S' || printf('%02d', number) "
+    "WHEN 'plc-work' THEN 'W' || printf('%02d', number) "
+    "WHEN 'program' THEN '#' || number ELSE CAST(number AS TEXT) END)";
+
+constexpr std::string_view kColumns =
+    "id, run_id, seq, machine, machine_ms, day_ms, source, number, text, text_en, program, line, "
+    "cleared_ms, ack_ms, ack_day_ms, ack_how";
+
+std::optional<std::int64_t> optInt(const sql::Stmt& q, int col) {
+    if (q.isNull(col))
+        return std::nullopt;
+    return q.i64(col);
+}
+
+MessageRecord readRecord(const sql::Stmt& q) {
+    MessageRecord m;
+    m.id = q.i64(0);
+    m.runId = q.i64(1);
+    m.seq = q.i64(2);
+    m.machine = q.text(3);
+    m.machineMs = q.i64(4);
+    m.dayMs = q.i64(5);
+    const std::string source = q.text(6);
+    const auto s = messageSourceFromName(source);
+    if (!s)
+        throw Error(ErrorKind::Corrupt, "message history row " + std::to_string(m.id) +
+                                            ": unknown source \"" + source + "\"");
+    m.source = *s;
+    m.number = q.i32(7);
+    m.text = q.text(8);
+    m.textEn = q.text(9);
+    m.program = q.i32(10);
+    m.line = q.i32(11);
+    m.clearedMs = optInt(q, 12);
+    m.ackMs = optInt(q, 13);
+    m.ackDayMs = optInt(q, 14);
+    m.ackHow = q.isNull(15) ? std::string() : q.text(15);
+    return m;
+}
+
+std::string likePattern(const std::string& s) {
+    std::string p = "%";
+    for (char c : s) {
+        if (c == '%' || c == '_' || c == '\\')
+            p += '\\';
+        p += c;
+    }
+    return p + "%";
+}
+
+// WHERE clause and its bindings (?1.. in order).
+struct Where {
+    std::string sql;
+    std::vector<std::string> texts; // bound as text, then ints
+    std::vector<std::int64_t> ints;
+    std::vector<bool> isText;       // per parameter, in order
+};
+
+Where makeWhere(const MessageFilter& f, std::int64_t beforeId) {
+    Where w;
+    std::vector<std::string> parts;
+    int n = 0;
+    const auto text = [&](const std::string& v) {
+        w.texts.push_back(v);
+        w.isText.push_back(true);
+        return "?" + std::to_string(++n);
+    };
+    const auto integer = [&](std::int64_t v) {
+        w.ints.push_back(v);
+        w.isText.push_back(false);
+        return "?" + std::to_string(++n);
+    };
+    if (!f.machine.empty())
+        parts.push_back("machine = " + text(f.machine));
+    if (beforeId > 0)
+        parts.push_back("id < " + integer(beforeId));
+    if (f.afterId > 0)
+        parts.push_back("id > " + integer(f.afterId));
+    if (f.source)
+        parts.push_back("source = " + text(std::string(messageSourceName(*f.source))));
+    if (f.unacknowledgedOnly)
+        parts.push_back("ack_ms IS NULL AND source IN ('positioner', 'plc-alarm', 'plc-system')");
+    if (f.fromDayMs)
+        parts.push_back("day_ms >= " + integer(*f.fromDayMs));
+    if (f.toDayMs)
+        parts.push_back("day_ms <= " + integer(*f.toDayMs));
+    if (!f.search.empty()) {
+        const std::string p = text(likePattern(f.search));
+        parts.push_back("(text LIKE " + p + " ESCAPE '\\' OR text_en LIKE " + p +
+                        " ESCAPE '\\' OR " + std::string(kCodeSql) + " LIKE " + p + " ESCAPE '\\')");
+    }
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        w.sql += (i == 0 ? " WHERE " : " AND ") + parts[i];
+    return w;
+}
+
+void bindWhere(sql::Stmt& q, const Where& w) {
+    std::size_t t = 0, k = 0;
+    for (std::size_t i = 0; i < w.isText.size(); ++i) {
+        if (w.isText[i])
+            q.bind(static_cast<int>(i + 1), w.texts[t++]);
+        else
+            q.bind(static_cast<int>(i + 1), w.ints[k++]);
+    }
+}
+
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\r\n") == std::string::npos)
+        return s;
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"')
+            out += '"';
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string optField(const std::optional<std::int64_t>& v) {
+    return v ? std::to_string(*v) : std::string();
+}
+
+} // namespace
+
+struct MessageLog::Impl {
+    Database& db;
+    std::map<std::string, std::unique_ptr<sql::Stmt>, std::less<>> cache;
+    explicit Impl(Database& d) : db(d) {}
+    sqlite3* c() const { return db.connection(); }
+    sql::Stmt& st(std::string_view text) {
+        auto it = cache.find(text);
+        if (it == cache.end())
+            it = cache.emplace(std::string(text), std::make_unique<sql::Stmt>(c(), text)).first;
+        it->second->reset();
+        return *it->second;
+    }
+};
+
+MessageLog::MessageLog(Database& db) : d_(std::make_unique<Impl>(db)) {
+    if (db.schemaVersion() < 2)
+        throw Error(ErrorKind::Sql, db.path().string() + ": the database has no message history "
+                                                         "(schema version below 2)");
+}
+
+MessageLog::~MessageLog() = default;
+
+std::int64_t MessageLog::beginRun(std::string_view machine, std::int64_t dayMs,
+                                  std::string author) {
+    auto& q = d_->st("INSERT INTO message_runs (machine, started_at, started_ms, author) "
+                     "VALUES (?1, ?2, ?3, ?4)");
+    q.bind(1, machine)
+        .bind(2, formatDayMs(dayMs))
+        .bind(3, dayMs)
+        .bind(4, author.empty() ? defaultAuthor() : author);
+    q.run();
+    return sqlite3_last_insert_rowid(d_->c());
+}
+
+void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events) {
+    if (events.empty())
+        return;
+    sqlite3* c = d_->c();
+    auto& run = d_->st("SELECT machine FROM message_runs WHERE id = ?1");
+    run.bind(1, runId);
+    if (!run.step())
+        throw Error(ErrorKind::Invalid, d_->db.path().string() + ": no message run " +
+                                            std::to_string(runId) + "; nothing was written");
+    const std::string machine = run.text(0);
+    run.reset();
+    try {
+        sql::exec(c, "BEGIN IMMEDIATE");
+    } catch (const Error& e) {
+        if (e.kind() != ErrorKind::Busy)
+            throw;
+        throw Error(ErrorKind::Busy, d_->db.path().string() +
+                                         ": another process kept the database locked longer "
+                                         "than the busy timeout; the messages were not written");
+    }
+    try {
+        for (const MessageEvent& e : events) {
+            const std::string which = "message event " + std::to_string(e.seq) + " of run " +
+                                      std::to_string(runId);
+            if (e.kind == MessageEvent::Kind::Raised) {
+                const MessageRecord& m = e.message;
+                auto& q = d_->st("INSERT INTO message_history (run_id, seq, machine, machine_ms, "
+                                 "day_ms, source, number, text, text_en, program, line) VALUES "
+                                 "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
+                q.bind(1, runId)
+                    .bind(2, e.seq)
+                    .bind(3, machine)
+                    .bind(4, e.machineMs)
+                    .bind(5, e.dayMs)
+                    .bind(6, messageSourceName(m.source))
+                    .bind(7, m.number)
+                    .bind(8, m.text)
+                    .bind(9, m.textEn.empty() ? m.text : m.textEn)
+                    .bind(10, m.program)
+                    .bind(11, m.line);
+                q.run();
+                continue;
+            }
+            const bool cleared = e.kind == MessageEvent::Kind::Cleared;
+            auto& q = cleared ? d_->st("UPDATE message_history SET cleared_ms = ?3 WHERE "
+                                       "run_id = ?1 AND seq = ?2 AND cleared_ms IS NULL")
+                              : d_->st("UPDATE message_history SET ack_ms = ?3, ack_day_ms = ?4, "
+                                       "ack_how = ?5 WHERE run_id = ?1 AND seq = ?2 AND "
+                                       "ack_ms IS NULL");
+            q.bind(1, runId).bind(2, e.seq).bind(3, e.machineMs);
+            if (!cleared) {
+                if (e.how.empty())
+                    throw Error(ErrorKind::Invalid, which + ": acknowledged without saying how");
+                q.bind(4, e.dayMs).bind(5, e.how);
+            }
+            q.run();
+            if (sqlite3_changes(c) == 0) {
+                auto& known = d_->st("SELECT 1 FROM message_history WHERE run_id = ?1 AND seq = ?2");
+                known.bind(1, runId).bind(2, e.seq);
+                const bool exists = known.step();
+                known.reset();
+                if (!exists)
+                    throw Error(ErrorKind::Invalid, which + ": no such message was raised");
+            }
+        }
+        sql::exec(c, "COMMIT");
+    } catch (const Error& e) {
+        for (sqlite3_stmt* s = sqlite3_next_stmt(c, nullptr); s; s = sqlite3_next_stmt(c, s))
+            if (sqlite3_stmt_busy(s))
+                sqlite3_reset(s);
+        sqlite3_exec(c, "ROLLBACK", nullptr, nullptr, nullptr);
+        throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
+                                  "; none of the batch's " + std::to_string(events.size()) +
+                                  " events was written");
+    }
+}
+
+std::int64_t MessageLog::count(const MessageFilter& f) const {
+    const Where w = makeWhere(f, 0);
+    auto& q = d_->st("SELECT count(*) FROM message_history" + w.sql);
+    bindWhere(q, w);
+    const std::int64_t n = q.step() ? q.i64(0) : 0;
+    q.reset();
+    return n;
+}
+
+std::vector<MessageRecord> MessageLog::page(const MessageFilter& f, std::int64_t beforeId,
+                                            int limit) const {
+    const Where w = makeWhere(f, beforeId);
+    auto& q = d_->st("SELECT " + std::string(kColumns) + " FROM message_history" + w.sql +
+                     " ORDER BY id DESC LIMIT " + std::to_string(std::max(limit, 0)));
+    bindWhere(q, w);
+    std::vector<MessageRecord> out;
+    out.reserve(static_cast<std::size_t>(std::max(limit, 0)));
+    while (q.step())
+        out.push_back(readRecord(q));
+    q.reset();
+    return out;
+}
+
+std::vector<MessageRecord> MessageLog::byIds(std::span<const std::int64_t> ids) const {
+    std::vector<MessageRecord> out;
+    auto& q = d_->st("SELECT " + std::string(kColumns) + " FROM message_history WHERE id = ?1");
+    for (std::int64_t id : ids) {
+        q.reset();
+        q.bind(1, id);
+        if (q.step())
+            out.push_back(readRecord(q));
+    }
+    q.reset();
+    return out;
+}
+
+void MessageLog::forEach(const MessageFilter& f,
+                         const std::function<bool(const MessageRecord&)>& each) const {
+    const Where w = makeWhere(f, 0);
+    sql::Stmt q(d_->c(), "SELECT " + std::string(kColumns) + " FROM message_history" + w.sql +
+                             " ORDER BY id DESC");
+    bindWhere(q, w);
+    while (q.step())
+        if (!each(readRecord(q)))
+            break;
+}
+
+std::string MessageLog::csvHeader() {
+    return "id,machine,run,seq,machine_time_ms,time,source,code,text,text_en,program,line,"
+           "cleared_machine_time_ms,acknowledged_machine_time_ms,acknowledged_time,"
+           "acknowledged_how";
+}
+
+std::string MessageLog::csvRow(const MessageRecord& m) {
+    std::string s;
+    const auto add = [&](const std::string& v) {
+        if (!s.empty())
+            s += ',';
+        s += csvField(v);
+    };
+    s = std::to_string(m.id);
+    add(m.machine);
+    add(std::to_string(m.runId));
+    add(std::to_string(m.seq));
+    add(std::to_string(m.machineMs));
+    add(formatDayMs(m.dayMs));
+    add(std::string(messageSourceName(m.source)));
+    add(m.code());
+    add(m.text);
+    add(m.textEn);
+    add(std::to_string(m.program));
+    add(std::to_string(m.line));
+    add(optField(m.clearedMs));
+    add(optField(m.ackMs));
+    add(m.ackDayMs ? formatDayMs(*m.ackDayMs) : std::string());
+    add(m.ackHow);
+    return s;
+}
+
+} // namespace k528::db
