@@ -138,18 +138,10 @@ int runRun(std::span<const std::string> argv) {
     if (args.positional().size() != 1)
         return usageError("run needs exactly one FILE");
     Lang lang = Lang::Ru;
-    if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
     program::ParseOptions parseOptions;
-    if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
-        return ExitUsage;
-
-    const std::optional<profile::MachineProfile> loaded = machineProfile(args);
-    if (!loaded)
-        return ExitUsage;
-    profile::MachineProfile prof = *loaded;
+    profile::MachineProfile prof;
     engine::RunOptions options;
-    if (const int rc = applyParameterOptions(args, prof, options.rPresets); rc >= 0)
+    if (const int rc = readProgramOptions(args, lang, parseOptions, prof, options.rPresets); rc >= 0)
         return rc;
     options.home = !args.has("--no-home");
     if (const auto o = args.value("--override")) {

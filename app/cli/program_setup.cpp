@@ -38,19 +38,24 @@ int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
     return -1;
 }
 
-int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
-    if (args.positional().size() != 1)
-        return usageError("needs exactly one FILE");
-    if (const auto l = args.value("--lang"); l && !parseLang(*l, out.lang))
+int readProgramOptions(const Args& args, Lang& lang, program::ParseOptions& parseOptions,
+                       profile::MachineProfile& profile, std::map<int, std::int64_t>& rPresets) {
+    if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
         return usageError("--lang is ru or en, not '" + *l + "'");
-    program::ParseOptions parseOptions;
     if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
         return ExitUsage;
     const std::optional<profile::MachineProfile> loaded = machineProfile(args);
     if (!loaded)
         return ExitUsage;
-    out.profile = *loaded;
-    if (const int rc = applyParameterOptions(args, out.profile, out.rPresets); rc >= 0)
+    profile = *loaded;
+    return applyParameterOptions(args, profile, rPresets);
+}
+
+int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
+    if (args.positional().size() != 1)
+        return usageError("needs exactly one FILE");
+    program::ParseOptions parseOptions;
+    if (const int rc = readProgramOptions(args, out.lang, parseOptions, out.profile, out.rPresets); rc >= 0)
         return rc;
     const std::string path = args.positional().front();
     std::string text;

@@ -7,6 +7,7 @@
 #include "program_cli.h"
 #include "profile/profile.h"
 #include "program/model.h"
+#include "program/parser.h"
 
 #include <cstdint>
 #include <map>
@@ -31,6 +32,12 @@ inline const std::vector<std::string_view> kSetupOptions = {"--profile", "--db",
 // printing the reason.
 int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
                           std::map<int, std::int64_t>& rPresets);
+
+// --lang, --number, the machine profile (--profile, --db) with its --param
+// overrides, and the --r presets. Returns -1, else the exit code after
+// printing the reason.
+int readProgramOptions(const Args& args, Lang& lang, program::ParseOptions& parseOptions,
+                       profile::MachineProfile& profile, std::map<int, std::int64_t>& rPresets);
 
 // Fills `out` from `args` (one positional FILE). Returns -1 on success, else
 // the exit code after printing the reason (diagnostics to `diagOut`).
