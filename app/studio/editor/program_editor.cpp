@@ -124,7 +124,6 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(withEditorAccessib
     debounce_.setSingleShot(true);
     debounce_.setInterval(kDebounceMs);
     connect(&debounce_, &QTimer::timeout, this, &ProgramEditor::startValidation);
-    connect(this, &QsciScintilla::textChanged, this, &ProgramEditor::scheduleValidation);
     // SCN_MODIFIED is asked for fold changes (what QsciScintilla needs to
     // keep folds open) and for the notices *before* an insertion or deletion,
     // not for the insertion or deletion itself: for each of those QScintilla
@@ -132,11 +131,25 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(withEditorAccessib
     // the document, counted anew each time (SCI_COUNTCHARACTERS from 0),
     // ~30 ms a keystroke deep in a 2.9 MB file, with or without a screen
     // reader. The notices before a change still make Scintilla send
-    // SCEN_CHANGE for every change, given on as textChanged() (the validation
-    // reads the text after the debounce, when the change is done).
+    // SCEN_CHANGE for every change: it restarts the validation's debounce
+    // (the text is read when the change is done), and textChanged() is
+    // emitted from it once the change is done (queued, one per turn of the
+    // event loop), as QsciScintilla would have emitted it.
     SendScintilla(SCI_SETMODEVENTMASK,
                   static_cast<unsigned long>(SC_MOD_CHANGEFOLD | SC_MOD_BEFOREINSERT | SC_MOD_BEFOREDELETE));
-    connect(this, &QsciScintillaBase::SCEN_CHANGE, this, &QsciScintilla::textChanged);
+    connect(this, &QsciScintillaBase::SCEN_CHANGE, this, [this] {
+        scheduleValidation();
+        if (changePending_)
+            return;
+        changePending_ = true;
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                changePending_ = false;
+                emit textChanged();
+            },
+            Qt::QueuedConnection);
+    });
 }
 
 ProgramEditor::~ProgramEditor() { *alive_ = false; }

@@ -100,6 +100,7 @@ private:
     std::size_t squiggledTo_ = 0;      // diagnostics [0, squiggledTo_) have their squiggles
     bool workerBusy_ = false;
     bool pendingAgain_ = false;
+    bool changePending_ = false; // textChanged() is queued
     int validations_ = 0;
     int executingLine_ = -1;
     std::shared_ptr<bool> alive_;
