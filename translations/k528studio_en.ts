@@ -142,6 +142,62 @@
         <source>A program is running: stop it (RESET) before loading programs.</source>
         <translation type="unfinished" />
     </message>
+    <message>
+        <source>Fix the syntax errors first: %1</source>
+        <translation>Fix the syntax errors first: %1</translation>
+    </message>
+    <message>
+        <source>The file has no program L%1</source>
+        <translation>The file has no program L%1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>warning</translation>
+    </message>
+    <message>
+        <source>none (the language only)</source>
+        <translation>none (the language only)</translation>
+    </message>
+    <message>
+        <source>File: %1</source>
+        <translation>File: %1</translation>
+    </message>
+    <message>
+        <source>Machine: %1    Date: %2</source>
+        <translation>Machine: %1    Date: %2</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2    Page %3 of %4</source>
+        <translation>Errors: %1, warnings: %2    Page %3 of %4</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 cannot be written: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 cannot be written</translation>
+    </message>
+    <message>
+        <source>The database has no machine %1</source>
+        <translation>The database has no machine %1</translation>
+    </message>
+    <message>
+        <source>Not saved: fix the syntax errors first: %1</source>
+        <translation>Not saved: fix the syntax errors first: %1</translation>
+    </message>
+    <message>
+        <source>Not saved: every program needs its %L header in the machine's memory</source>
+        <translation>Not saved: every program needs its %L header in the machine's memory</translation>
+    </message>
+    <message>
+        <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
+        <translation>Not saved: %1 was changed in the database since revision %2 was opened (%3)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -195,11 +251,11 @@
     </message>
     <message>
         <source>homed</source>
-        <translation type="unfinished" />
+        <translation>homed</translation>
     </message>
     <message>
         <source>not homed</source>
-        <translation type="unfinished" />
+        <translation>not homed</translation>
     </message>
     <message>
         <source>loop closed</source>
@@ -291,7 +347,7 @@
     </message>
     <message>
         <source>interrupted</source>
-        <translation type="unfinished" />
+        <translation>interrupted</translation>
     </message>
     <message>
         <source>end/reset</source>
@@ -360,6 +416,890 @@
     <message>
         <source>fast inputs </source>
         <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>k528::studio::CalculatorDialog</name>
+    <message>
+        <source>C-constant calculator: acceleration (parameter 22)</source>
+        <translation>C-constant calculator: acceleration (parameter 22)</translation>
+    </message>
+    <message>
+        <source>Axis X (C22)</source>
+        <translation>Axis X (C22)</translation>
+    </message>
+    <message>
+        <source>Axis Z (C74)</source>
+        <translation>Axis Z (C74)</translation>
+    </message>
+    <message>
+        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
+        <translation>Formula 1: run-up from 0 to Vmax in Tразг</translation>
+    </message>
+    <message>
+        <source>Formula 2: braking from Vmax over S</source>
+        <translation>Formula 2: braking from Vmax over S</translation>
+    </message>
+    <message>
+        <source>Formula 3: acceleration A</source>
+        <translation>Formula 3: acceleration A</translation>
+    </message>
+    <message>
+        <source>Vmax, mm/min</source>
+        <translation>Vmax, mm/min</translation>
+    </message>
+    <message>
+        <source>Tразг, ms</source>
+        <translation>Tразг, ms</translation>
+    </message>
+    <message>
+        <source>S, mm of braking</source>
+        <translation>S, mm of braking</translation>
+    </message>
+    <message>
+        <source>A, m/s²</source>
+        <translation>A, m/s²</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axis</translation>
+    </message>
+    <message>
+        <source>Formula</source>
+        <translation>Formula</translation>
+    </message>
+    <message>
+        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
+        <translation>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
+        <translation>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</source>
+        <translation>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</translation>
+    </message>
+    <message>
+        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</source>
+        <translation>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</translation>
+    </message>
+    <message>
+        <source>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</source>
+        <translation>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</translation>
+    </message>
+    <message>
+        <source>Why formula 1 gives twice the value</source>
+        <translation>Why formula 1 gives twice the value</translation>
+    </message>
+    <message>
+        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
+        <translation>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
+    </message>
+    <message>
+        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
+        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
+    </message>
+    <message>
+        <source>Set C%1 to %2</source>
+        <translation>Set C%1 to %2</translation>
+    </message>
+    <message>
+        <source>calculator: %1 → C%2 = %3</source>
+        <translation>calculator: %1 → C%2 = %3</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsEditor</name>
+    <message>
+        <source>a program is under way: the constants are changed when it has ended</source>
+        <translation>a program is under way: the constants are changed when it has ended</translation>
+    </message>
+    <message>
+        <source>an axis is moving: the constants are changed at standstill</source>
+        <translation>an axis is moving: the constants are changed at standstill</translation>
+    </message>
+    <message>
+        <source>undo: %1</source>
+        <translation>undo: %1</translation>
+    </message>
+    <message>
+        <source>No C-parameter %1 (1..152)</source>
+        <translation>No C-parameter %1 (1..152)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsModel</name>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axis</translation>
+    </message>
+    <message>
+        <source>Panel name</source>
+        <translation>Panel name</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>Range</translation>
+    </message>
+    <message>
+        <source>Address (Е.1)</source>
+        <translation>Address (Е.1)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>The value means</source>
+        <translation>The value means</translation>
+    </message>
+    <message>
+        <source>C%1: «%2» is not a whole number</source>
+        <translation>C%1: «%2» is not a whole number</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsPane</name>
+    <message>
+        <source>«%1» is not a whole number</source>
+        <translation>«%1» is not a whole number</translation>
+    </message>
+    <message>
+        <source>Machine constants</source>
+        <translation>Machine constants</translation>
+    </message>
+    <message>
+        <source>Applied to the controller, but not kept in the database: %1</source>
+        <translation>Applied to the controller, but not kept in the database: %1</translation>
+    </message>
+    <message>
+        <source>%1 — kept as revision %2 of %3</source>
+        <translation>%1 — kept as revision %2 of %3</translation>
+    </message>
+    <message>
+        <source>Search: number, panel name, meaning, unit, address</source>
+        <translation>Search: number, panel name, meaning, unit, address</translation>
+    </message>
+    <message>
+        <source>All axes</source>
+        <translation>All axes</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Axis X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Axis Z</translation>
+    </message>
+    <message>
+        <source>Common</source>
+        <translation>Common</translation>
+    </message>
+    <message>
+        <source>Hide reserved</source>
+        <translation>Hide reserved</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Undo</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Redo</translation>
+    </message>
+    <message>
+        <source>History...</source>
+        <translation>History...</translation>
+    </message>
+    <message>
+        <source>Every revision that changed the selected constant</source>
+        <translation>Every revision that changed the selected constant</translation>
+    </message>
+    <message>
+        <source>Compare revisions...</source>
+        <translation>Compare revisions...</translation>
+    </message>
+    <message>
+        <source>Import...</source>
+        <translation>Import...</translation>
+    </message>
+    <message>
+        <source>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</source>
+        <translation>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Export...</translation>
+    </message>
+    <message>
+        <source>Calculator...</source>
+        <translation>Calculator...</translation>
+    </message>
+    <message>
+        <source>Note:</source>
+        <translation>Note:</translation>
+    </message>
+    <message>
+        <source>why the next change is made (kept with its revision)</source>
+        <translation>why the next change is made (kept with its revision)</translation>
+    </message>
+    <message>
+        <source>Select a constant first</source>
+        <translation>Select a constant first</translation>
+    </message>
+    <message>
+        <source>Import machine constants</source>
+        <translation>Import machine constants</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</source>
+        <translation>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Export machine constants</source>
+        <translation>Export machine constants</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m);;Constants as CSV (*.csv)</source>
+        <translation>Machine files (*.k528m);;Constants as CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Another operation is under way</source>
+        <translation>Another operation is under way</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>interrupted</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importing %1</translation>
+    </message>
+    <message>
+        <source>%1 imported: revision %2 of %3 (%4 changes)</source>
+        <translation>%1 imported: revision %2 of %3 (%4 changes)</translation>
+    </message>
+    <message>
+        <source>Nothing was imported: %1</source>
+        <translation>Nothing was imported: %1</translation>
+    </message>
+    <message>
+        <source>the controller did not take them: %1</source>
+        <translation>the controller did not take them: %1</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>Exporting %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>The constants written to %1</source>
+        <translation>The constants written to %1</translation>
+    </message>
+    <message>
+        <source>Nothing was exported: %1</source>
+        <translation>Nothing was exported: %1</translation>
+    </message>
+    <message>
+        <source>Changes: %1</source>
+        <translation>Changes: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ControllerDock</name>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>&amp;Controller</source>
+        <translation>&amp;Controller</translation>
+    </message>
+    <message>
+        <source>&amp;Connect to the controller</source>
+        <translation>&amp;Connect to the controller</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>&amp;Pull into the database</source>
+        <translation>&amp;Pull into the database</translation>
+    </message>
+    <message>
+        <source>Push a &amp;file...</source>
+        <translation>Push a &amp;file...</translation>
+    </message>
+    <message>
+        <source>Push a database &amp;machine</source>
+        <translation>Push a database &amp;machine</translation>
+    </message>
+    <message>
+        <source>Line (RS485, Modbus RTU)</source>
+        <translation>Line (RS485, Modbus RTU)</translation>
+    </message>
+    <message>
+        <source>Live monitor</source>
+        <translation>Live monitor</translation>
+    </message>
+    <message>
+        <source>Plugin</source>
+        <translation>Plugin</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Parity</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>even</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>odd</translation>
+    </message>
+    <message>
+        <source>Ports</source>
+        <translation>Ports</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports again</source>
+        <translation>List the system's serial ports again</translation>
+    </message>
+    <message>
+        <source>Pull into the database</source>
+        <translation>Pull into the database</translation>
+    </message>
+    <message>
+        <source>Push a file...</source>
+        <translation>Push a file...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Show on the K923, Program, messages and axes</source>
+        <translation>Show on the K923, Program, messages and axes</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Disconnect</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connect</translation>
+    </message>
+    <message>
+        <source>No controller-link plugin was found (searched: %1). %2</source>
+        <translation>No controller-link plugin was found (searched: %1). %2</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the controller is on.</source>
+        <translation>Choose the serial port the controller is on.</translation>
+    </message>
+    <message>
+        <source>No connection on %1: %2</source>
+        <translation>No connection on %1: %2</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Connected: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>memory read</source>
+        <translation>memory read</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+    <message>
+        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
+        <translation>The push did not start: the controller's memory could not be read (%1); nothing was sent</translation>
+    </message>
+    <message>
+        <source>Pull failed: %1</source>
+        <translation>Pull failed: %1</translation>
+    </message>
+    <message>
+        <source>Pulled, but not kept in the database: %1</source>
+        <translation>Pulled, but not kept in the database: %1</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</source>
+        <translation>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs into %2, revision %3 (%4 changes)</source>
+        <translation>Pulled %1 programs into %2, revision %3 (%4 changes)</translation>
+    </message>
+    <message>
+        <source>pushed</source>
+        <translation>pushed</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>Pushed %1: written and verified %2</source>
+        <translation>Pushed %1: written and verified %2</translation>
+    </message>
+    <message>
+        <source>Push of %1 stopped: %2. Written and verified before: %3</source>
+        <translation>Push of %1 stopped: %2. Written and verified before: %3</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Connecting to %1...</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Disconnected</translation>
+    </message>
+    <message>
+        <source>Pulling the controller's memory...</source>
+        <translation>Pulling the controller's memory...</translation>
+    </message>
+    <message>
+        <source>Push a machine file</source>
+        <translation>Push a machine file</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m *.txt);;All files (*)</source>
+        <translation>Machine files (*.k528m *.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be pushed: %2; nothing was sent</source>
+        <translation>%1 cannot be pushed: %2; nothing was sent</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>The machine %1 cannot be loaded: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Reading the controller's memory to show what %1 changes...</translation>
+    </message>
+    <message>
+        <source>Push %1 to the controller</source>
+        <translation>Push %1 to the controller</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>The controller already holds what %1 has: nothing changes.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+    <message>
+        <source>Push</source>
+        <translation>Push</translation>
+    </message>
+    <message>
+        <source>Pushing %1...</source>
+        <translation>Pushing %1...</translation>
+    </message>
+    <message>
+        <source>Push of %1 not started; nothing was sent</source>
+        <translation>Push of %1 not started; nothing was sent</translation>
+    </message>
+    <message>
+        <source>Check what %1 changes, then push.</source>
+        <translation>Check what %1 changes, then push.</translation>
+    </message>
+    <message>
+        <source>Cancelling at the next exchange...</source>
+        <translation>Cancelling at the next exchange...</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
+        <translation>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>power-on</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, running</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>L%1, frame N%2</source>
+        <translation>L%1, frame N%2</translation>
+    </message>
+    <message>
+        <source>Override</source>
+        <translation>Override</translation>
+    </message>
+    <message>
+        <source>%1 mm (machine %2), following error %3 mm, %4</source>
+        <translation>%1 mm (machine %2), following error %3 mm, %4</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>homed</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>not homed</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>Alarms</translation>
+    </message>
+    <message>
+        <source>K LEDs</source>
+        <translation>K LEDs</translation>
+    </message>
+    <message>
+        <source>Machine messages</source>
+        <translation>Machine messages</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>Programs</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DebugPanel</name>
+    <message>
+        <source>Type an R-parameter number, R0..R299.</source>
+        <translation>Type an R-parameter number, R0..R299.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>A program is under way: stop it first.</translation>
+    </message>
+    <message>
+        <source>Open a program file first.</source>
+        <translation>Open a program file first.</translation>
+    </message>
+    <message>
+        <source>The program under way is another file's.</source>
+        <translation>The program under way is another file's.</translation>
+    </message>
+    <message>
+        <source>R-parameters are R0..R299, not R%1.</source>
+        <translation>R-parameters are R0..R299, not R%1.</translation>
+    </message>
+    <message>
+        <source>R%1 was not set: %2</source>
+        <translation>R%1 was not set: %2</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a whole number.</source>
+        <translation>R%1: «%2» is not a whole number.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Run</translation>
+    </message>
+    <message>
+        <source>Send the file and run its first program (homing as the operator would), or continue</source>
+        <translation>Send the file and run its first program (homing as the operator would), or continue</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Hold</translation>
+    </message>
+    <message>
+        <source>«Стоп»: the motion stops, «Пуск» continues</source>
+        <translation>«Стоп»: the motion stops, «Пуск» continues</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Continue</translation>
+    </message>
+    <message>
+        <source>«Пуск»: continue the held program</source>
+        <translation>«Пуск»: continue the held program</translation>
+    </message>
+    <message>
+        <source>Single frame</source>
+        <translation>Single frame</translation>
+    </message>
+    <message>
+        <source>Stop after each frame; «Пуск» runs the next one</source>
+        <translation>Stop after each frame; «Пуск» runs the next one</translation>
+    </message>
+    <message>
+        <source>Run to cursor</source>
+        <translation>Run to cursor</translation>
+    </message>
+    <message>
+        <source>Run until the frame at the cursor, stopping before it</source>
+        <translation>Run until the frame at the cursor, stopping before it</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>«Сброс»: the program ends without continuation</source>
+        <translation>«Сброс»: the program ends without continuation</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
+        <translation>«Сброс» and ESC: end the program and acknowledge the messages</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Speed</translation>
+    </message>
+    <message>
+        <source>fastest</source>
+        <translation>fastest</translation>
+    </message>
+    <message>
+        <source>real time</source>
+        <translation>real time</translation>
+    </message>
+    <message>
+        <source>Call stack</source>
+        <translation>Call stack</translation>
+    </message>
+    <message>
+        <source>R158</source>
+        <translation>R158</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Watch</translation>
+    </message>
+    <message>
+        <source>Add an R-parameter: R12, Enter</source>
+        <translation>Add an R-parameter: R12, Enter</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DebugSession</name>
+    <message>
+        <source>There is no frame at or after line %1.</source>
+        <translation>There is no frame at or after line %1.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>A program is under way: stop it first.</translation>
+    </message>
+    <message>
+        <source>The controller holds no program L%1.</source>
+        <translation>The controller holds no program L%1.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed: pull it out on the machine's panel.</source>
+        <translation>The emergency stop is pressed: pull it out on the machine's panel.</translation>
+    </message>
+    <message>
+        <source>Switching the drives on…</source>
+        <translation>Switching the drives on…</translation>
+    </message>
+    <message>
+        <source>The reference-point mode was refused: %1</source>
+        <translation>The reference-point mode was refused: %1</translation>
+    </message>
+    <message>
+        <source>Reference point of %1…</source>
+        <translation>Reference point of %1…</translation>
+    </message>
+    <message>
+        <source>АВТОМАТ was refused: %1</source>
+        <translation>АВТОМАТ was refused: %1</translation>
+    </message>
+    <message>
+        <source>Program L%1 was refused: %2</source>
+        <translation>Program L%1 was refused: %2</translation>
+    </message>
+    <message>
+        <source>The machine did not get ready: the drives are off (see the machine's messages).</source>
+        <translation>The machine did not get ready: the drives are off (see the machine's messages).</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 stopped with a message.</source>
+        <translation>The reference-point cycle of %1 stopped with a message.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 ended without the reference point.</source>
+        <translation>The reference-point cycle of %1 ended without the reference point.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 did not start.</source>
+        <translation>The reference-point cycle of %1 did not start.</translation>
+    </message>
+    <message>
+        <source>L%1 runs.</source>
+        <translation>L%1 runs.</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
+        <translation>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</translation>
+    </message>
+    <message>
+        <source>L%1 ended.</source>
+        <translation>L%1 ended.</translation>
+    </message>
+    <message>
+        <source>The program stopped with a message: %1</source>
+        <translation>The program stopped with a message: %1</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>No machine</translation>
+    </message>
+    <message>
+        <source>Starting L%1…</source>
+        <translation>Starting L%1…</translation>
+    </message>
+    <message>
+        <source>L%1 N%2 (line %3)</source>
+        <translation>L%1 N%2 (line %3)</translation>
+    </message>
+    <message>
+        <source>L%1 (line %2)</source>
+        <translation>L%1 (line %2)</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>No program</translation>
+    </message>
+    <message>
+        <source>Running %1</source>
+        <translation>Running %1</translation>
+    </message>
+    <message>
+        <source>M00 at %1: «Пуск» continues</source>
+        <translation>M00 at %1: «Пуск» continues</translation>
+    </message>
+    <message>
+        <source>Breakpoint: before %1</source>
+        <translation>Breakpoint: before %1</translation>
+    </message>
+    <message>
+        <source>Single frame: before %1</source>
+        <translation>Single frame: before %1</translation>
+    </message>
+    <message>
+        <source>Run to cursor: before %1</source>
+        <translation>Run to cursor: before %1</translation>
+    </message>
+    <message>
+        <source>Held at %1: «Пуск» continues</source>
+        <translation>Held at %1: «Пуск» continues</translation>
+    </message>
+    <message>
+        <source>Ended at %1</source>
+        <translation>Ended at %1</translation>
+    </message>
+    <message>
+        <source>Stopped by a message at %1</source>
+        <translation>Stopped by a message at %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DiffDialog</name>
+    <message>
+        <source>Compare revisions — %1</source>
+        <translation>Compare revisions — %1</translation>
+    </message>
+    <message>
+        <source>the controller now</source>
+        <translation>the controller now</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Compare</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>The revisions cannot be compared: %1</source>
+        <translation>The revisions cannot be compared: %1</translation>
+    </message>
+    <message>
+        <source>(no difference)</source>
+        <translation>(no difference)</translation>
     </message>
 </context>
 <context>
@@ -491,6 +1431,182 @@
     <message>
         <source>Message</source>
         <translation>Message</translation>
+    </message>
+    <message>
+        <source>&amp;Editor</source>
+        <translation>&amp;Editor</translation>
+    </message>
+    <message>
+        <source>Refactor</source>
+        <translation>Refactor</translation>
+    </message>
+    <message>
+        <source>Renumber frames…</source>
+        <translation>Renumber frames…</translation>
+    </message>
+    <message>
+        <source>Move or copy a program…</source>
+        <translation>Move or copy a program…</translation>
+    </message>
+    <message>
+        <source>Format the file</source>
+        <translation>Format the file</translation>
+    </message>
+    <message>
+        <source>Listing</source>
+        <translation>Listing</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>Print…</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Export PDF…</translation>
+    </message>
+    <message>
+        <source>Machine of this file</source>
+        <translation>Machine of this file</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Machine: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>The machine this file is checked for: its limits, feeds and axes</source>
+        <translation>The machine this file is checked for: its limits, feeds and axes</translation>
+    </message>
+    <message>
+        <source>Open from the database…</source>
+        <translation>Open from the database…</translation>
+    </message>
+    <message>
+        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
+        <translation>The programs and messages of a machine of the database; saving writes its next revision</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>The machine %1 cannot be loaded: %2</translation>
+    </message>
+    <message>
+        <source>No file is open</source>
+        <translation>No file is open</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (%1)</source>
+        <translation>The workstation's machine (%1)</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (none)</source>
+        <translation>The workstation's machine (none)</translation>
+    </message>
+    <message>
+        <source>None: the language only</source>
+        <translation>None: the language only</translation>
+    </message>
+    <message>
+        <source>Renumbered every program from %1 by %2</source>
+        <translation>Renumbered every program from %1 by %2</translation>
+    </message>
+    <message>
+        <source>Renumbered L%1 from %2 by %3</source>
+        <translation>Renumbered L%1 from %2 by %3</translation>
+    </message>
+    <message>
+        <source>Copied L%1 to L%2</source>
+        <translation>Copied L%1 to L%2</translation>
+    </message>
+    <message>
+        <source>Moved L%1 to L%2</source>
+        <translation>Moved L%1 to L%2</translation>
+    </message>
+    <message>
+        <source>Formatted</source>
+        <translation>Formatted</translation>
+    </message>
+    <message>
+        <source>Renumber frames</source>
+        <translation>Renumber frames</translation>
+    </message>
+    <message>
+        <source>Every program</source>
+        <translation>Every program</translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation>First number</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>The file has no program</source>
+        <translation>The file has no program</translation>
+    </message>
+    <message>
+        <source>Move or copy a program</source>
+        <translation>Move or copy a program</translation>
+    </message>
+    <message>
+        <source>Keep the program (copy)</source>
+        <translation>Keep the program (copy)</translation>
+    </message>
+    <message>
+        <source>New number</source>
+        <translation>New number</translation>
+    </message>
+    <message>
+        <source>%1 (database, revision %2)</source>
+        <translation>%1 (database, revision %2)</translation>
+    </message>
+    <message>
+        <source>Listing of %1 pages written to %2</source>
+        <translation>Listing of %1 pages written to %2</translation>
+    </message>
+    <message>
+        <source>Export the listing</source>
+        <translation>Export the listing</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Printed %1 pages</source>
+        <translation>Printed %1 pages</translation>
+    </message>
+    <message>
+        <source>The listing could not be printed</source>
+        <translation>The listing could not be printed</translation>
+    </message>
+    <message>
+        <source>Opened the programs of %1, revision %2</source>
+        <translation>Opened the programs of %1, revision %2</translation>
+    </message>
+    <message>
+        <source>The database has no machines</source>
+        <translation>The database has no machines</translation>
+    </message>
+    <message>
+        <source>Open from the database</source>
+        <translation>Open from the database</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>%1 saved as revision %2</source>
+        <translation>%1 saved as revision %2</translation>
+    </message>
+    <message>
+        <source>%1: the database already holds these programs (revision %2)</source>
+        <translation>%1: the database already holds these programs (revision %2)</translation>
     </message>
 </context>
 <context>
@@ -690,6 +1806,53 @@
     <message>
         <source>R: the number of the R-parameter tested</source>
         <translation>R: the number of the R-parameter tested</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::HistoryDialog</name>
+    <message>
+        <source>History of %1 %2 — %3</source>
+        <translation>History of %1 %2 — %3</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>When</source>
+        <translation>When</translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation>Who</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Before</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>After</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>No revision of %1 changed this constant.</source>
+        <translation>No revision of %1 changed this constant.</translation>
+    </message>
+    <message>
+        <source>Revisions that changed this constant: %1 (newest first).</source>
+        <translation>Revisions that changed this constant: %1 (newest first).</translation>
+    </message>
+    <message>
+        <source>The history cannot be read: %1</source>
+        <translation>The history cannot be read: %1</translation>
     </message>
 </context>
 <context>
@@ -1056,6 +2219,29 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkController</name>
+    <message>
+        <source>cancelled; nothing was kept</source>
+        <translation>cancelled; nothing was kept</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-parameters</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>messages</translation>
+    </message>
+    <message>
+        <source>cancelled; the program being sent was not committed</source>
+        <translation>cancelled; the program being sent was not committed</translation>
+    </message>
+    <message>
+        <source>%1, address %2, %3 bit/s</source>
+        <translation>%1, address %2, %3 bit/s</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MachinePanelWidget</name>
     <message>
         <source>SPINDLE</source>
@@ -1333,11 +2519,11 @@
     </message>
     <message>
         <source>Machine</source>
-        <translation type="unfinished" />
+        <translation>Machine</translation>
     </message>
     <message>
         <source>The machine %1 cannot be loaded: %2</source>
-        <translation type="unfinished" />
+        <translation>The machine %1 cannot be loaded: %2</translation>
     </message>
     <message>
         <source>&amp;Machine</source>
@@ -1345,7 +2531,7 @@
     </message>
     <message>
         <source>Machine: %1</source>
-        <translation type="unfinished" />
+        <translation>Machine: %1</translation>
     </message>
     <message>
         <source>Machine: %1 (%2)</source>
@@ -1398,6 +2584,10 @@
     <message>
         <source>Editor</source>
         <translation>Editor</translation>
+    </message>
+    <message>
+        <source>The controller on the link takes no keys: press them on its own K923</source>
+        <translation>The controller on the link takes no keys: press them on its own K923</translation>
     </message>
 </context>
 <context>
@@ -1512,6 +2702,180 @@
     <message>
         <source>, frame N%1</source>
         <translation type="unfinished" />
+    </message>
+</context>
+<context>
+    <name>k528::studio::RParamsModel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 mm/min</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>user</source>
+        <translation>user</translation>
+    </message>
+    <message>
+        <source>system</source>
+        <translation>system</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>read only</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserved</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Access</translation>
+    </message>
+    <message>
+        <source>Preset screen</source>
+        <translation>Preset screen</translation>
+    </message>
+    <message>
+        <source>Meaning (appendix Л)</source>
+        <translation>Meaning (appendix Л)</translation>
+    </message>
+    <message>
+        <source>Discretes</source>
+        <translation>Discretes</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Preset</source>
+        <translation>Preset</translation>
+    </message>
+    <message>
+        <source>R%1 is read only: the controller writes R232..R262</source>
+        <translation>R%1 is read only: the controller writes R232..R262</translation>
+    </message>
+    <message>
+        <source>A program is executing: R-parameters are changed when it stops, as on the K923</source>
+        <translation>A program is executing: R-parameters are changed when it stops, as on the K923</translation>
+    </message>
+    <message>
+        <source>%1 is outside the R-parameters' range -2147483648..2147483647</source>
+        <translation>%1 is outside the R-parameters' range -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a number</source>
+        <translation>R%1: «%2» is not a number</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RParamsPane</name>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-parameters</translation>
+    </message>
+    <message>
+        <source>The machine's presets are not read from the database: %1</source>
+        <translation>The machine's presets are not read from the database: %1</translation>
+    </message>
+    <message>
+        <source>Search: number or meaning</source>
+        <translation>Search: number or meaning</translation>
+    </message>
+    <message>
+        <source>All R0..R299</source>
+        <translation>All R0..R299</translation>
+    </message>
+    <message>
+        <source>User R0..R149</source>
+        <translation>User R0..R149</translation>
+    </message>
+    <message>
+        <source>System (writable)</source>
+        <translation>System (writable)</translation>
+    </message>
+    <message>
+        <source>Read only R232..R262</source>
+        <translation>Read only R232..R262</translation>
+    </message>
+    <message>
+        <source>With a preset</source>
+        <translation>With a preset</translation>
+    </message>
+    <message>
+        <source>Not zero</source>
+        <translation>Not zero</translation>
+    </message>
+    <message>
+        <source>Keep as preset</source>
+        <translation>Keep as preset</translation>
+    </message>
+    <message>
+        <source>The selected parameter's value becomes the machine's preset (a new revision)</source>
+        <translation>The selected parameter's value becomes the machine's preset (a new revision)</translation>
+    </message>
+    <message>
+        <source>Remove preset</source>
+        <translation>Remove preset</translation>
+    </message>
+    <message>
+        <source>Keep all as presets</source>
+        <translation>Keep all as presets</translation>
+    </message>
+    <message>
+        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</source>
+        <translation>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</translation>
+    </message>
+    <message>
+        <source>Load the presets</source>
+        <translation>Load the presets</translation>
+    </message>
+    <message>
+        <source>The machine's presets into the controller</source>
+        <translation>The machine's presets into the controller</translation>
+    </message>
+    <message>
+        <source>Note:</source>
+        <translation>Note:</translation>
+    </message>
+    <message>
+        <source>why the presets change (kept with the revision)</source>
+        <translation>why the presets change (kept with the revision)</translation>
+    </message>
+    <message>
+        <source>No preset changes</source>
+        <translation>No preset changes</translation>
+    </message>
+    <message>
+        <source>The presets were not kept: %1</source>
+        <translation>The presets were not kept: %1</translation>
+    </message>
+    <message>
+        <source>%1 — kept as revision %2 of %3</source>
+        <translation>%1 — kept as revision %2 of %3</translation>
+    </message>
+    <message>
+        <source>Select an R-parameter first</source>
+        <translation>Select an R-parameter first</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262): it cannot be preset</source>
+        <translation>R%1 is read only (R232..R262): it cannot be preset</translation>
+    </message>
+    <message>
+        <source>The selected R-parameter has no preset</source>
+        <translation>The selected R-parameter has no preset</translation>
+    </message>
+    <message>
+        <source>Presets loaded into the controller: %1</source>
+        <translation>Presets loaded into the controller: %1</translation>
     </message>
 </context>
 <context>
@@ -1642,6 +3006,13 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::SimulatedController</name>
+    <message>
+        <source>simulated %1</source>
+        <translation>simulated %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::backplot::BackplotDock</name>
     <message>
         <source>Backplot</source>
@@ -1670,6 +3041,14 @@
     <message>
         <source>The backplot needs OpenGL (an X display)</source>
         <translation>The backplot needs OpenGL (an X display)</translation>
+    </message>
+    <message>
+        <source>Follow the machine</source>
+        <translation>Follow the machine</translation>
+    </message>
+    <message>
+        <source>While the session's machine runs a program, its path grows here live</source>
+        <translation>While the session's machine runs a program, its path grows here live</translation>
     </message>
 </context>
 <context>

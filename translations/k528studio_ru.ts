@@ -142,6 +142,62 @@
         <source>A program is running: stop it (RESET) before loading programs.</source>
         <translation>Выполняется программа: остановите её («Сброс») перед загрузкой.</translation>
     </message>
+    <message>
+        <source>Fix the syntax errors first: %1</source>
+        <translation>Сначала исправьте синтаксические ошибки: %1</translation>
+    </message>
+    <message>
+        <source>The file has no program L%1</source>
+        <translation>В файле нет программы L%1</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>ошибка</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>предупреждение</translation>
+    </message>
+    <message>
+        <source>none (the language only)</source>
+        <translation>нет (только язык)</translation>
+    </message>
+    <message>
+        <source>File: %1</source>
+        <translation>Файл: %1</translation>
+    </message>
+    <message>
+        <source>Machine: %1    Date: %2</source>
+        <translation>Станок: %1    Дата: %2</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2    Page %3 of %4</source>
+        <translation>Ошибок: %1, предупреждений: %2    Лист %3 из %4</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 не записывается: %2</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 не записывается</translation>
+    </message>
+    <message>
+        <source>The database has no machine %1</source>
+        <translation>В базе нет станка %1</translation>
+    </message>
+    <message>
+        <source>Not saved: fix the syntax errors first: %1</source>
+        <translation>Не сохранено: сначала исправьте синтаксические ошибки: %1</translation>
+    </message>
+    <message>
+        <source>Not saved: every program needs its %L header in the machine's memory</source>
+        <translation>Не сохранено: в памяти станка каждой программе нужен заголовок %L</translation>
+    </message>
+    <message>
+        <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
+        <translation>Не сохранено: %1 изменён в базе после того, как была открыта ревизия %2 (%3)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -291,7 +347,7 @@
     </message>
     <message>
         <source>interrupted</source>
-        <translation>прерывание</translation>
+        <translation>прервано</translation>
     </message>
     <message>
         <source>end/reset</source>
@@ -360,6 +416,890 @@
     <message>
         <source>fast inputs </source>
         <translation>быстрые входы </translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::CalculatorDialog</name>
+    <message>
+        <source>C-constant calculator: acceleration (parameter 22)</source>
+        <translation>Калькулятор С-параметров: ускорение (параметр 22)</translation>
+    </message>
+    <message>
+        <source>Axis X (C22)</source>
+        <translation>Ось X (C22)</translation>
+    </message>
+    <message>
+        <source>Axis Z (C74)</source>
+        <translation>Ось Z (C74)</translation>
+    </message>
+    <message>
+        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
+        <translation>Формула 1: разгон от 0 до Vmax за Tразг</translation>
+    </message>
+    <message>
+        <source>Formula 2: braking from Vmax over S</source>
+        <translation>Формула 2: торможение с Vmax на пути S</translation>
+    </message>
+    <message>
+        <source>Formula 3: acceleration A</source>
+        <translation>Формула 3: ускорение A</translation>
+    </message>
+    <message>
+        <source>Vmax, mm/min</source>
+        <translation>Vmax, мм/мин</translation>
+    </message>
+    <message>
+        <source>Tразг, ms</source>
+        <translation>Tразг, мс</translation>
+    </message>
+    <message>
+        <source>S, mm of braking</source>
+        <translation>S, мм торможения</translation>
+    </message>
+    <message>
+        <source>A, m/s²</source>
+        <translation>A, м/с²</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <source>Formula</source>
+        <translation>Формула</translation>
+    </message>
+    <message>
+        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
+        <translation>Формула 1, как напечатана: C = 0.8533 · Vmax / Tразг, Vmax в дискретах/мин, Tразг в мс: 0.8533 · %1 / %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
+        <translation>Формула 2, как напечатана: C = 3.556·10⁻⁶ · Vmax² / S, Vmax в дискретах/мин, S в дискретах: 3.556·10⁻⁶ · %1² / %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</source>
+        <translation>Формула 3: C = 25600 · A / Kд, A в м/с², Kд = %1 (дискрета в мкм): 25600 · %2 / %1 = %3.</translation>
+    </message>
+    <message>
+        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</source>
+        <translation>Описанное движение: A = %1 м/с². Значение по напечатанной формуле: &lt;b&gt;%2&lt;/b&gt;, в единице K528 Studio это %3 м/с² (множитель %4).</translation>
+    </message>
+    <message>
+        <source>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</source>
+        <translation>Значение, дающее это движение: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kд = %2, целая часть). Его и вводите в C%3.</translation>
+    </message>
+    <message>
+        <source>Why formula 1 gives twice the value</source>
+        <translation>Почему формула 1 даёт вдвое большее значение</translation>
+    </message>
+    <message>
+        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
+        <translation>Таблица Е.1 приводит для параметра 22 три формулы. Формула 3 задаёт единицу: C = 25600·A/Kд. Торможение с V до 0 на пути S требует A = V²/(2S); по формуле 3 это 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — коэффициент 3.556 формулы 2, округлённый. Разгон от 0 до V за T требует A = V/T, то есть 25600/60000·V/T = 0.4267·V/T; в формуле 1 напечатано 0.8533 — вдвое больше.</translation>
+    </message>
+    <message>
+        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
+        <translation>Две формулы против одной: K528 Studio принимает единицу формул 2 и 3 (docs/machine-constants.md). Значение по формуле 1, как она напечатана, разгоняет ось вдвое быстрее описанного (2000 из приложения Ж для «2 с до 5000 мм/мин» здесь разгоняет за 1.07 с). Вводите согласованное значение.</translation>
+    </message>
+    <message>
+        <source>Set C%1 to %2</source>
+        <translation>Записать C%1 = %2</translation>
+    </message>
+    <message>
+        <source>calculator: %1 → C%2 = %3</source>
+        <translation>калькулятор: %1 → C%2 = %3</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsEditor</name>
+    <message>
+        <source>a program is under way: the constants are changed when it has ended</source>
+        <translation>выполняется программа: параметры станка меняют после её окончания</translation>
+    </message>
+    <message>
+        <source>an axis is moving: the constants are changed at standstill</source>
+        <translation>ось движется: параметры станка меняют в останове</translation>
+    </message>
+    <message>
+        <source>undo: %1</source>
+        <translation>отмена: %1</translation>
+    </message>
+    <message>
+        <source>No C-parameter %1 (1..152)</source>
+        <translation>Нет С-параметра %1 (1..152)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsModel</name>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Ось</translation>
+    </message>
+    <message>
+        <source>Panel name</source>
+        <translation>Имя на пульте</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Назначение</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Единица</translation>
+    </message>
+    <message>
+        <source>Range</source>
+        <translation>Диапазон</translation>
+    </message>
+    <message>
+        <source>Address (Е.1)</source>
+        <translation>Адрес (Е.1)</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>The value means</source>
+        <translation>Что значит значение</translation>
+    </message>
+    <message>
+        <source>C%1: «%2» is not a whole number</source>
+        <translation>C%1: «%2» — не целое число</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsPane</name>
+    <message>
+        <source>«%1» is not a whole number</source>
+        <translation>«%1» — не целое число</translation>
+    </message>
+    <message>
+        <source>Machine constants</source>
+        <translation>Параметры станка</translation>
+    </message>
+    <message>
+        <source>Applied to the controller, but not kept in the database: %1</source>
+        <translation>Введено в контроллер, но не сохранено в базе: %1</translation>
+    </message>
+    <message>
+        <source>%1 — kept as revision %2 of %3</source>
+        <translation>%1 — сохранено как ревизия %2 станка %3</translation>
+    </message>
+    <message>
+        <source>Search: number, panel name, meaning, unit, address</source>
+        <translation>Поиск: номер, имя на пульте, назначение, единица, адрес</translation>
+    </message>
+    <message>
+        <source>All axes</source>
+        <translation>Все оси</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Ось X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Ось Z</translation>
+    </message>
+    <message>
+        <source>Common</source>
+        <translation>Общие</translation>
+    </message>
+    <message>
+        <source>Hide reserved</source>
+        <translation>Скрыть резерв</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Отменить</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторить</translation>
+    </message>
+    <message>
+        <source>History...</source>
+        <translation>История...</translation>
+    </message>
+    <message>
+        <source>Every revision that changed the selected constant</source>
+        <translation>Все ревизии, менявшие выбранный параметр</translation>
+    </message>
+    <message>
+        <source>Compare revisions...</source>
+        <translation>Сравнить ревизии...</translation>
+    </message>
+    <message>
+        <source>Import...</source>
+        <translation>Импорт...</translation>
+    </message>
+    <message>
+        <source>A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them</source>
+        <translation>Файл станка (.k528m) или параметры в CSV; проверяется, как в «k528 db import»</translation>
+    </message>
+    <message>
+        <source>Export...</source>
+        <translation>Экспорт...</translation>
+    </message>
+    <message>
+        <source>Calculator...</source>
+        <translation>Калькулятор...</translation>
+    </message>
+    <message>
+        <source>Note:</source>
+        <translation>Примечание:</translation>
+    </message>
+    <message>
+        <source>why the next change is made (kept with its revision)</source>
+        <translation>зачем вносится следующее изменение (сохраняется с ревизией)</translation>
+    </message>
+    <message>
+        <source>Select a constant first</source>
+        <translation>Сначала выберите параметр</translation>
+    </message>
+    <message>
+        <source>Import machine constants</source>
+        <translation>Импорт параметров станка</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m);;Constants as CSV (*.csv);;All files (*)</source>
+        <translation>Файлы станка (*.k528m);;Параметры в CSV (*.csv);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Export machine constants</source>
+        <translation>Экспорт параметров станка</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m);;Constants as CSV (*.csv)</source>
+        <translation>Файлы станка (*.k528m);;Параметры в CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Another operation is under way</source>
+        <translation>Уже выполняется другая операция</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>прервано</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Импорт %1</translation>
+    </message>
+    <message>
+        <source>%1 imported: revision %2 of %3 (%4 changes)</source>
+        <translation>%1 импортирован: ревизия %2 станка %3 (изменений: %4)</translation>
+    </message>
+    <message>
+        <source>Nothing was imported: %1</source>
+        <translation>Ничего не импортировано: %1</translation>
+    </message>
+    <message>
+        <source>the controller did not take them: %1</source>
+        <translation>контроллер их не принял: %1</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>Экспорт %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>The constants written to %1</source>
+        <translation>Параметры записаны в %1</translation>
+    </message>
+    <message>
+        <source>Nothing was exported: %1</source>
+        <translation>Ничего не экспортировано: %1</translation>
+    </message>
+    <message>
+        <source>Changes: %1</source>
+        <translation>Изменений: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ControllerDock</name>
+    <message>
+        <source>Controller</source>
+        <translation>Контроллер</translation>
+    </message>
+    <message>
+        <source>&amp;Controller</source>
+        <translation>&amp;Контроллер</translation>
+    </message>
+    <message>
+        <source>&amp;Connect to the controller</source>
+        <translation>&amp;Подключиться к контроллеру</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Отключиться</translation>
+    </message>
+    <message>
+        <source>&amp;Pull into the database</source>
+        <translation>&amp;Считать в базу данных</translation>
+    </message>
+    <message>
+        <source>Push a &amp;file...</source>
+        <translation>Передать &amp;файл...</translation>
+    </message>
+    <message>
+        <source>Push a database &amp;machine</source>
+        <translation>Передать станок из &amp;базы данных</translation>
+    </message>
+    <message>
+        <source>Line (RS485, Modbus RTU)</source>
+        <translation>Линия (RS485, Modbus RTU)</translation>
+    </message>
+    <message>
+        <source>Live monitor</source>
+        <translation>Монитор</translation>
+    </message>
+    <message>
+        <source>Plugin</source>
+        <translation>Модуль</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Порт</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Чётность</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Адрес</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>чёт</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>нечёт</translation>
+    </message>
+    <message>
+        <source>Ports</source>
+        <translation>Порты</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports again</source>
+        <translation>Перечитать последовательные порты системы</translation>
+    </message>
+    <message>
+        <source>Pull into the database</source>
+        <translation>Считать в базу данных</translation>
+    </message>
+    <message>
+        <source>Push a file...</source>
+        <translation>Передать файл...</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Show on the K923, Program, messages and axes</source>
+        <translation>Показывать на К923, в программе, сообщениях и осях</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Отключиться</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Подключиться</translation>
+    </message>
+    <message>
+        <source>No controller-link plugin was found (searched: %1). %2</source>
+        <translation>Модуль связи с контроллером не найден (искали: %1). %2</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the controller is on.</source>
+        <translation>Выберите последовательный порт контроллера.</translation>
+    </message>
+    <message>
+        <source>No connection on %1: %2</source>
+        <translation>Нет связи по %1: %2</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Подключено: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
+        <translation>&lt;b&gt;Контроллер не отвечает:&lt;/b&gt; %1</translation>
+    </message>
+    <message>
+        <source>memory read</source>
+        <translation>память считана</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>остановлено</translation>
+    </message>
+    <message>
+        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
+        <translation>Передача не начата: память контроллера не считана (%1); ничего не передано</translation>
+    </message>
+    <message>
+        <source>Pull failed: %1</source>
+        <translation>Считывание не удалось: %1</translation>
+    </message>
+    <message>
+        <source>Pulled, but not kept in the database: %1</source>
+        <translation>Считано, но не сохранено в базе данных: %1</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs; the database already holds this memory of %2 (revision %3)</source>
+        <translation>Считано программ: %1; база данных уже хранит эту память станка %2 (ревизия %3)</translation>
+    </message>
+    <message>
+        <source>Pulled %1 programs into %2, revision %3 (%4 changes)</source>
+        <translation>Считано программ: %1 в станок %2, ревизия %3 (изменений: %4)</translation>
+    </message>
+    <message>
+        <source>pushed</source>
+        <translation>передано</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>ничего</translation>
+    </message>
+    <message>
+        <source>Pushed %1: written and verified %2</source>
+        <translation>Передан %1: записано и проверено %2</translation>
+    </message>
+    <message>
+        <source>Push of %1 stopped: %2. Written and verified before: %3</source>
+        <translation>Передача %1 остановлена: %2. Записано и проверено до этого: %3</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Подключение к %1...</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Отключено</translation>
+    </message>
+    <message>
+        <source>Pulling the controller's memory...</source>
+        <translation>Считывание памяти контроллера...</translation>
+    </message>
+    <message>
+        <source>Push a machine file</source>
+        <translation>Передать файл станка</translation>
+    </message>
+    <message>
+        <source>Machine files (*.k528m *.txt);;All files (*)</source>
+        <translation>Файлы станка (*.k528m *.txt);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be pushed: %2; nothing was sent</source>
+        <translation>%1 нельзя передать: %2; ничего не передано</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>Станок %1 не загружается: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Считывание памяти контроллера, чтобы показать, что изменит %1...</translation>
+    </message>
+    <message>
+        <source>Push %1 to the controller</source>
+        <translation>Передать %1 в контроллер</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>Контроллер уже хранит то, что есть в %1: ничего не изменится.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Изменений в памяти контроллера: %1. Каждая программа записывается целиком или никак и проверяется чтением; контроллер должен быть в F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+    <message>
+        <source>Push</source>
+        <translation>Передать</translation>
+    </message>
+    <message>
+        <source>Pushing %1...</source>
+        <translation>Передача %1...</translation>
+    </message>
+    <message>
+        <source>Push of %1 not started; nothing was sent</source>
+        <translation>Передача %1 не начата; ничего не передано</translation>
+    </message>
+    <message>
+        <source>Check what %1 changes, then push.</source>
+        <translation>Проверьте, что изменит %1, затем передайте.</translation>
+    </message>
+    <message>
+        <source>Cancelling at the next exchange...</source>
+        <translation>Отмена при следующем обмене...</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
+        <translation>%1: ответов %2, без ответа %3 (так кончается повреждённый кадр), неверных ответов %4, исключений %5, повторов %6; время обмена %7 мс (среднее %8 мс); загрузка линии %9 %</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>включение</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, выполнение</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Режим</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>L%1, frame N%2</source>
+        <translation>L%1, кадр N%2</translation>
+    </message>
+    <message>
+        <source>Override</source>
+        <translation>Коррекция</translation>
+    </message>
+    <message>
+        <source>%1 mm (machine %2), following error %3 mm, %4</source>
+        <translation>%1 мм (станок %2), ошибка слежения %3 мм, %4</translation>
+    </message>
+    <message>
+        <source>homed</source>
+        <translation>привязана</translation>
+    </message>
+    <message>
+        <source>not homed</source>
+        <translation>не привязана</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>Аварийные сообщения</translation>
+    </message>
+    <message>
+        <source>K LEDs</source>
+        <translation>Светодиоды K</translation>
+    </message>
+    <message>
+        <source>Machine messages</source>
+        <translation>Сообщения станка</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>Programs</source>
+        <translation>Программы</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DebugPanel</name>
+    <message>
+        <source>Type an R-parameter number, R0..R299.</source>
+        <translation>Введите номер R-параметра, R0..R299.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>Программа выполняется: сначала остановите её.</translation>
+    </message>
+    <message>
+        <source>Open a program file first.</source>
+        <translation>Сначала откройте файл программы.</translation>
+    </message>
+    <message>
+        <source>The program under way is another file's.</source>
+        <translation>Выполняется программа другого файла.</translation>
+    </message>
+    <message>
+        <source>R-parameters are R0..R299, not R%1.</source>
+        <translation>R-параметры: R0..R299, а не R%1.</translation>
+    </message>
+    <message>
+        <source>R%1 was not set: %2</source>
+        <translation>R%1 не записан: %2</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a whole number.</source>
+        <translation>R%1: «%2» — не целое число.</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Выполнить</translation>
+    </message>
+    <message>
+        <source>Send the file and run its first program (homing as the operator would), or continue</source>
+        <translation>Передать файл и выполнить его первую программу (с привязкой к базовой точке, как оператор) или продолжить</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>«Стоп»: the motion stops, «Пуск» continues</source>
+        <translation>«Стоп»: перемещение останавливается, «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation>Продолжить</translation>
+    </message>
+    <message>
+        <source>«Пуск»: continue the held program</source>
+        <translation>«Пуск»: продолжить остановленную программу</translation>
+    </message>
+    <message>
+        <source>Single frame</source>
+        <translation>Покадрово</translation>
+    </message>
+    <message>
+        <source>Stop after each frame; «Пуск» runs the next one</source>
+        <translation>Останов после каждого кадра; «Пуск» выполняет следующий</translation>
+    </message>
+    <message>
+        <source>Run to cursor</source>
+        <translation>До курсора</translation>
+    </message>
+    <message>
+        <source>Run until the frame at the cursor, stopping before it</source>
+        <translation>Выполнять до кадра у курсора и остановиться перед ним</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Прервать</translation>
+    </message>
+    <message>
+        <source>«Сброс»: the program ends without continuation</source>
+        <translation>«Сброс»: программа прерывается без возможности продолжения</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Сброс</translation>
+    </message>
+    <message>
+        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
+        <translation>«Сброс» и ESC: прервать программу и квитировать сообщения</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>fastest</source>
+        <translation>максимально</translation>
+    </message>
+    <message>
+        <source>real time</source>
+        <translation>реальное время</translation>
+    </message>
+    <message>
+        <source>Call stack</source>
+        <translation>Стек вызовов</translation>
+    </message>
+    <message>
+        <source>R158</source>
+        <translation>R158</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Кадр</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Строка</translation>
+    </message>
+    <message>
+        <source>Watch</source>
+        <translation>Наблюдение</translation>
+    </message>
+    <message>
+        <source>Add an R-parameter: R12, Enter</source>
+        <translation>Добавить R-параметр: R12, Enter</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Назначение</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DebugSession</name>
+    <message>
+        <source>There is no frame at or after line %1.</source>
+        <translation>В строке %1 и после неё нет кадра.</translation>
+    </message>
+    <message>
+        <source>A program is under way: stop it first.</source>
+        <translation>Программа выполняется: сначала остановите её.</translation>
+    </message>
+    <message>
+        <source>The controller holds no program L%1.</source>
+        <translation>В позиционере нет программы L%1.</translation>
+    </message>
+    <message>
+        <source>The emergency stop is pressed: pull it out on the machine's panel.</source>
+        <translation>Нажат аварийный стоп: отпустите его на пульте станка.</translation>
+    </message>
+    <message>
+        <source>Switching the drives on…</source>
+        <translation>Включение приводов…</translation>
+    </message>
+    <message>
+        <source>The reference-point mode was refused: %1</source>
+        <translation>Режим привязки к базовой точке не принят: %1</translation>
+    </message>
+    <message>
+        <source>Reference point of %1…</source>
+        <translation>Привязка к базовой точке по %1…</translation>
+    </message>
+    <message>
+        <source>АВТОМАТ was refused: %1</source>
+        <translation>АВТОМАТ не принят: %1</translation>
+    </message>
+    <message>
+        <source>Program L%1 was refused: %2</source>
+        <translation>Программа L%1 не принята: %2</translation>
+    </message>
+    <message>
+        <source>The machine did not get ready: the drives are off (see the machine's messages).</source>
+        <translation>Станок не готов: приводы не включены (см. сообщения станка).</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 stopped with a message.</source>
+        <translation>Привязка к базовой точке по %1 прервана сообщением.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 ended without the reference point.</source>
+        <translation>Привязка к базовой точке по %1 закончилась без базовой точки.</translation>
+    </message>
+    <message>
+        <source>The reference-point cycle of %1 did not start.</source>
+        <translation>Привязка к базовой точке по %1 не началась.</translation>
+    </message>
+    <message>
+        <source>L%1 runs.</source>
+        <translation>L%1 выполняется.</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
+        <translation>«Пуск» не принят позиционером (деблокировка пуска, сообщения ПЛК).</translation>
+    </message>
+    <message>
+        <source>L%1 ended.</source>
+        <translation>L%1 закончена.</translation>
+    </message>
+    <message>
+        <source>The program stopped with a message: %1</source>
+        <translation>Программа остановлена сообщением: %1</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>Нет станка</translation>
+    </message>
+    <message>
+        <source>Starting L%1…</source>
+        <translation>Пуск L%1…</translation>
+    </message>
+    <message>
+        <source>L%1 N%2 (line %3)</source>
+        <translation>L%1 N%2 (строка %3)</translation>
+    </message>
+    <message>
+        <source>L%1 (line %2)</source>
+        <translation>L%1 (строка %2)</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Нет программы</translation>
+    </message>
+    <message>
+        <source>Running %1</source>
+        <translation>Выполняется %1</translation>
+    </message>
+    <message>
+        <source>M00 at %1: «Пуск» continues</source>
+        <translation>M00 в %1: «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Breakpoint: before %1</source>
+        <translation>Точка останова: перед %1</translation>
+    </message>
+    <message>
+        <source>Single frame: before %1</source>
+        <translation>Покадрово: перед %1</translation>
+    </message>
+    <message>
+        <source>Run to cursor: before %1</source>
+        <translation>До курсора: перед %1</translation>
+    </message>
+    <message>
+        <source>Held at %1: «Пуск» continues</source>
+        <translation>Остановлена в %1: «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Ended at %1</source>
+        <translation>Закончена в %1</translation>
+    </message>
+    <message>
+        <source>Stopped by a message at %1</source>
+        <translation>Остановлена сообщением в %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DiffDialog</name>
+    <message>
+        <source>Compare revisions — %1</source>
+        <translation>Сравнение ревизий — %1</translation>
+    </message>
+    <message>
+        <source>the controller now</source>
+        <translation>контроллер сейчас</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Сравнить</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Ревизия</translation>
+    </message>
+    <message>
+        <source>The revisions cannot be compared: %1</source>
+        <translation>Ревизии не сравнить: %1</translation>
+    </message>
+    <message>
+        <source>(no difference)</source>
+        <translation>(различий нет)</translation>
     </message>
 </context>
 <context>
@@ -491,6 +1431,182 @@
     <message>
         <source>Message</source>
         <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>&amp;Editor</source>
+        <translation>&amp;Редактор</translation>
+    </message>
+    <message>
+        <source>Refactor</source>
+        <translation>Преобразовать</translation>
+    </message>
+    <message>
+        <source>Renumber frames…</source>
+        <translation>Перенумеровать кадры…</translation>
+    </message>
+    <message>
+        <source>Move or copy a program…</source>
+        <translation>Перенести или копировать программу…</translation>
+    </message>
+    <message>
+        <source>Format the file</source>
+        <translation>Форматировать файл</translation>
+    </message>
+    <message>
+        <source>Listing</source>
+        <translation>Листинг</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>Печать…</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Экспорт в PDF…</translation>
+    </message>
+    <message>
+        <source>Machine of this file</source>
+        <translation>Станок этого файла</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Станок: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>The machine this file is checked for: its limits, feeds and axes</source>
+        <translation>Станок, для которого проверяется файл: его пределы, подачи и оси</translation>
+    </message>
+    <message>
+        <source>Open from the database…</source>
+        <translation>Открыть из базы…</translation>
+    </message>
+    <message>
+        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
+        <translation>Программы и сообщения станка из базы; сохранение записывает его следующую ревизию</translation>
+    </message>
+    <message>
+        <source>The machine %1 cannot be loaded: %2</source>
+        <translation>Станок %1 не загружается: %2</translation>
+    </message>
+    <message>
+        <source>No file is open</source>
+        <translation>Нет открытого файла</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (%1)</source>
+        <translation>Станок рабочего места (%1)</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (none)</source>
+        <translation>Станок рабочего места (нет)</translation>
+    </message>
+    <message>
+        <source>None: the language only</source>
+        <translation>Нет: только язык</translation>
+    </message>
+    <message>
+        <source>Renumbered every program from %1 by %2</source>
+        <translation>Все программы перенумерованы с %1 с шагом %2</translation>
+    </message>
+    <message>
+        <source>Renumbered L%1 from %2 by %3</source>
+        <translation>L%1 перенумерована с %2 с шагом %3</translation>
+    </message>
+    <message>
+        <source>Copied L%1 to L%2</source>
+        <translation>L%1 скопирована в L%2</translation>
+    </message>
+    <message>
+        <source>Moved L%1 to L%2</source>
+        <translation>L%1 перенесена в L%2</translation>
+    </message>
+    <message>
+        <source>Formatted</source>
+        <translation>Отформатировано</translation>
+    </message>
+    <message>
+        <source>Renumber frames</source>
+        <translation>Перенумеровать кадры</translation>
+    </message>
+    <message>
+        <source>Every program</source>
+        <translation>Все программы</translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation>Первый номер</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Шаг</translation>
+    </message>
+    <message>
+        <source>The file has no program</source>
+        <translation>В файле нет программ</translation>
+    </message>
+    <message>
+        <source>Move or copy a program</source>
+        <translation>Перенести или копировать программу</translation>
+    </message>
+    <message>
+        <source>Keep the program (copy)</source>
+        <translation>Сохранить программу (копия)</translation>
+    </message>
+    <message>
+        <source>New number</source>
+        <translation>Новый номер</translation>
+    </message>
+    <message>
+        <source>%1 (database, revision %2)</source>
+        <translation>%1 (база, ревизия %2)</translation>
+    </message>
+    <message>
+        <source>Listing of %1 pages written to %2</source>
+        <translation>Листинг на %1 листах записан в %2</translation>
+    </message>
+    <message>
+        <source>Export the listing</source>
+        <translation>Экспорт листинга</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Printed %1 pages</source>
+        <translation>Напечатано листов: %1</translation>
+    </message>
+    <message>
+        <source>The listing could not be printed</source>
+        <translation>Листинг не напечатан</translation>
+    </message>
+    <message>
+        <source>Opened the programs of %1, revision %2</source>
+        <translation>Открыты программы %1, ревизия %2</translation>
+    </message>
+    <message>
+        <source>The database has no machines</source>
+        <translation>В базе нет станков</translation>
+    </message>
+    <message>
+        <source>Open from the database</source>
+        <translation>Открыть из базы</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>%1 saved as revision %2</source>
+        <translation>%1 сохранён как ревизия %2</translation>
+    </message>
+    <message>
+        <source>%1: the database already holds these programs (revision %2)</source>
+        <translation>%1: в базе уже эти программы (ревизия %2)</translation>
     </message>
 </context>
 <context>
@@ -690,6 +1806,53 @@
     <message>
         <source>R: the number of the R-parameter tested</source>
         <translation>R: номер проверяемого R-параметра</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::HistoryDialog</name>
+    <message>
+        <source>History of %1 %2 — %3</source>
+        <translation>История %1 %2 — %3</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Ревизия</translation>
+    </message>
+    <message>
+        <source>When</source>
+        <translation>Когда</translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation>Кто</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Было</translation>
+    </message>
+    <message>
+        <source>After</source>
+        <translation>Стало</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Примечание</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(нет)</translation>
+    </message>
+    <message>
+        <source>No revision of %1 changed this constant.</source>
+        <translation>Ни одна ревизия %1 не меняла этот параметр.</translation>
+    </message>
+    <message>
+        <source>Revisions that changed this constant: %1 (newest first).</source>
+        <translation>Ревизий, менявших параметр: %1 (новые сверху).</translation>
+    </message>
+    <message>
+        <source>The history cannot be read: %1</source>
+        <translation>История не читается: %1</translation>
     </message>
 </context>
 <context>
@@ -1056,6 +2219,29 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkController</name>
+    <message>
+        <source>cancelled; nothing was kept</source>
+        <translation>отменено; ничего не сохранено</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-параметры</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>сообщения</translation>
+    </message>
+    <message>
+        <source>cancelled; the program being sent was not committed</source>
+        <translation>отменено; передававшаяся программа не записана</translation>
+    </message>
+    <message>
+        <source>%1, address %2, %3 bit/s</source>
+        <translation>%1, адрес %2, %3 бит/с</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MachinePanelWidget</name>
     <message>
         <source>SPINDLE</source>
@@ -1399,6 +2585,10 @@
         <source>Editor</source>
         <translation>Редактор</translation>
     </message>
+    <message>
+        <source>The controller on the link takes no keys: press them on its own K923</source>
+        <translation>Контроллер на линии не принимает клавиши: нажимайте их на его собственном К923</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -1512,6 +2702,180 @@
     <message>
         <source>, frame N%1</source>
         <translation>, кадр N%1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RParamsModel</name>
+    <message>
+        <source>%1 mm/min</source>
+        <translation>%1 мм/мин</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <source>user</source>
+        <translation>пользователя</translation>
+    </message>
+    <message>
+        <source>system</source>
+        <translation>системный</translation>
+    </message>
+    <message>
+        <source>read only</source>
+        <translation>только чтение</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>резерв</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Доступ</translation>
+    </message>
+    <message>
+        <source>Preset screen</source>
+        <translation>Экран УСТ</translation>
+    </message>
+    <message>
+        <source>Meaning (appendix Л)</source>
+        <translation>Назначение (приложение Л)</translation>
+    </message>
+    <message>
+        <source>Discretes</source>
+        <translation>Дискреты</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Preset</source>
+        <translation>Предустановка</translation>
+    </message>
+    <message>
+        <source>R%1 is read only: the controller writes R232..R262</source>
+        <translation>R%1 только для чтения: R232..R262 пишет контроллер</translation>
+    </message>
+    <message>
+        <source>A program is executing: R-parameters are changed when it stops, as on the K923</source>
+        <translation>Выполняется программа: R-параметры меняют, когда она остановлена, как на К923</translation>
+    </message>
+    <message>
+        <source>%1 is outside the R-parameters' range -2147483648..2147483647</source>
+        <translation>%1 вне диапазона R-параметров -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>R%1: «%2» is not a number</source>
+        <translation>R%1: «%2» — не число</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RParamsPane</name>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-параметры</translation>
+    </message>
+    <message>
+        <source>The machine's presets are not read from the database: %1</source>
+        <translation>Предустановки станка не прочитаны из базы: %1</translation>
+    </message>
+    <message>
+        <source>Search: number or meaning</source>
+        <translation>Поиск: номер или назначение</translation>
+    </message>
+    <message>
+        <source>All R0..R299</source>
+        <translation>Все R0..R299</translation>
+    </message>
+    <message>
+        <source>User R0..R149</source>
+        <translation>Пользователя R0..R149</translation>
+    </message>
+    <message>
+        <source>System (writable)</source>
+        <translation>Системные (запись)</translation>
+    </message>
+    <message>
+        <source>Read only R232..R262</source>
+        <translation>Только чтение R232..R262</translation>
+    </message>
+    <message>
+        <source>With a preset</source>
+        <translation>С предустановкой</translation>
+    </message>
+    <message>
+        <source>Not zero</source>
+        <translation>Не ноль</translation>
+    </message>
+    <message>
+        <source>Keep as preset</source>
+        <translation>В предустановку</translation>
+    </message>
+    <message>
+        <source>The selected parameter's value becomes the machine's preset (a new revision)</source>
+        <translation>Значение выбранного параметра становится предустановкой станка (новая ревизия)</translation>
+    </message>
+    <message>
+        <source>Remove preset</source>
+        <translation>Убрать предустановку</translation>
+    </message>
+    <message>
+        <source>Keep all as presets</source>
+        <translation>Все в предустановки</translation>
+    </message>
+    <message>
+        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</source>
+        <translation>Каждый записываемый R-параметр, не равный 0, становится предустановкой, как при «Сохранить память контроллера»</translation>
+    </message>
+    <message>
+        <source>Load the presets</source>
+        <translation>Ввести предустановки</translation>
+    </message>
+    <message>
+        <source>The machine's presets into the controller</source>
+        <translation>Предустановки станка — в контроллер</translation>
+    </message>
+    <message>
+        <source>Note:</source>
+        <translation>Примечание:</translation>
+    </message>
+    <message>
+        <source>why the presets change (kept with the revision)</source>
+        <translation>зачем меняются предустановки (сохраняется с ревизией)</translation>
+    </message>
+    <message>
+        <source>No preset changes</source>
+        <translation>Предустановки не меняются</translation>
+    </message>
+    <message>
+        <source>The presets were not kept: %1</source>
+        <translation>Предустановки не сохранены: %1</translation>
+    </message>
+    <message>
+        <source>%1 — kept as revision %2 of %3</source>
+        <translation>%1 — сохранено как ревизия %2 станка %3</translation>
+    </message>
+    <message>
+        <source>Select an R-parameter first</source>
+        <translation>Сначала выберите R-параметр</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262): it cannot be preset</source>
+        <translation>R%1 только для чтения (R232..R262): предустановка невозможна</translation>
+    </message>
+    <message>
+        <source>The selected R-parameter has no preset</source>
+        <translation>У выбранного R-параметра нет предустановки</translation>
+    </message>
+    <message>
+        <source>Presets loaded into the controller: %1</source>
+        <translation>Предустановок введено в контроллер: %1</translation>
     </message>
 </context>
 <context>
@@ -1642,6 +3006,13 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::SimulatedController</name>
+    <message>
+        <source>simulated %1</source>
+        <translation>имитация %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::backplot::BackplotDock</name>
     <message>
         <source>Backplot</source>
@@ -1670,6 +3041,14 @@
     <message>
         <source>The backplot needs OpenGL (an X display)</source>
         <translation>Для траектории нужен OpenGL (дисплей X)</translation>
+    </message>
+    <message>
+        <source>Follow the machine</source>
+        <translation>Следить за станком</translation>
+    </message>
+    <message>
+        <source>While the session's machine runs a program, its path grows here live</source>
+        <translation>Пока станок сеанса отрабатывает программу, её траектория растёт здесь</translation>
     </message>
 </context>
 <context>
