@@ -1,19 +1,26 @@
 #!/usr/bin/env python3
 """Fills translations into a Qt Linguist .ts file.
 
-usage: scripts/ts_apply.py translations/k528studio_ru.ts < pairs.tsv
+usage: scripts/ts_apply.py [--source-language] translations/k528studio_ru.ts < pairs.tsv
 
 Each input line is "source<TAB>translation" (\\n for a line break). Every
 message of the .ts file whose source matches gets the translation and loses
 its "unfinished" mark. Prints the sources still untranslated. Run the
 update_translations target first so the .ts file lists the current sources.
+
+--source-language: the file is in the sources' own language (English): a
+message without a pair is translated as its source, unless the source holds
+Cyrillic (a text of the manual), which must come from a pair.
 """
+import re
 import sys
 import xml.etree.ElementTree as ET
 
 
 def main() -> int:
-    path = sys.argv[1]
+    args = sys.argv[1:]
+    identity = "--source-language" in args
+    path = [a for a in args if a != "--source-language"][0]
     pairs = {}
     for line in sys.stdin:
         line = line.rstrip("\n")
@@ -30,7 +37,11 @@ def main() -> int:
             tr.text = pairs[src]
             tr.attrib.pop("type", None)
         elif tr.get("type") == "unfinished" or not tr.text:
-            missing.append(src)
+            if identity and not re.search("[\u0400-\u04FF]", src):
+                tr.text = src
+                tr.attrib.pop("type", None)
+            else:
+                missing.append(src)
     tree.write(path, encoding="utf-8", xml_declaration=True)
     with open(path, encoding="utf-8") as f:
         text = f.read()

@@ -132,15 +132,15 @@
     </message>
     <message>
         <source>%1 has errors: nothing was loaded.</source>
-        <translation type="unfinished" />
+        <translation>%1 has errors: nothing was loaded.</translation>
     </message>
     <message>
         <source>%1 holds no program.</source>
-        <translation type="unfinished" />
+        <translation>%1 holds no program.</translation>
     </message>
     <message>
         <source>A program is running: stop it (RESET) before loading programs.</source>
-        <translation type="unfinished" />
+        <translation>A program is running: stop it (RESET) before loading programs.</translation>
     </message>
     <message>
         <source>Fix the syntax errors first: %1</source>
@@ -207,15 +207,15 @@
     </message>
     <message>
         <source>Current, mm</source>
-        <translation type="unfinished" />
+        <translation>Current, mm</translation>
     </message>
     <message>
         <source>Machine, mm</source>
-        <translation type="unfinished" />
+        <translation>Machine, mm</translation>
     </message>
     <message>
         <source>Rest, mm</source>
-        <translation type="unfinished" />
+        <translation>Rest, mm</translation>
     </message>
     <message>
         <source>Feed, mm/min</source>
@@ -223,7 +223,7 @@
     </message>
     <message>
         <source>Error, µm</source>
-        <translation type="unfinished" />
+        <translation>Error, µm</translation>
     </message>
     <message>
         <source>DAC</source>
@@ -231,23 +231,23 @@
     </message>
     <message>
         <source>Volts</source>
-        <translation type="unfinished" />
+        <translation>Volts</translation>
     </message>
     <message>
         <source>State</source>
-        <translation type="unfinished" />
+        <translation>State</translation>
     </message>
     <message>
         <source> (dia.)</source>
-        <translation type="unfinished" />
+        <translation> (dia.)</translation>
     </message>
     <message>
         <source>absent</source>
-        <translation type="unfinished" />
+        <translation>absent</translation>
     </message>
     <message>
         <source>homing</source>
-        <translation type="unfinished" />
+        <translation>homing</translation>
     </message>
     <message>
         <source>homed</source>
@@ -259,91 +259,91 @@
     </message>
     <message>
         <source>loop closed</source>
-        <translation type="unfinished" />
+        <translation>loop closed</translation>
     </message>
     <message>
         <source>loop open</source>
-        <translation type="unfinished" />
+        <translation>loop open</translation>
     </message>
     <message>
         <source>moving</source>
-        <translation type="unfinished" />
+        <translation>moving</translation>
     </message>
     <message>
         <source>in position</source>
-        <translation type="unfinished" />
+        <translation>in position</translation>
     </message>
     <message>
         <source>cam</source>
-        <translation type="unfinished" />
+        <translation>cam</translation>
     </message>
     <message>
         <source>limit +</source>
-        <translation type="unfinished" />
+        <translation>limit +</translation>
     </message>
     <message>
         <source>limit -</source>
-        <translation type="unfinished" />
+        <translation>limit -</translation>
     </message>
     <message>
         <source>fault %1</source>
-        <translation type="unfinished" />
+        <translation>fault %1</translation>
     </message>
     <message>
         <source>Z1000 PLC→</source>
-        <translation type="unfinished" />
+        <translation>Z1000 PLC→</translation>
     </message>
     <message>
         <source>E-stop released</source>
-        <translation type="unfinished" />
+        <translation>E-stop released</translation>
     </message>
     <message>
         <source>feed enable</source>
-        <translation type="unfinished" />
+        <translation>feed enable</translation>
     </message>
     <message>
         <source>start enable</source>
-        <translation type="unfinished" />
+        <translation>start enable</translation>
     </message>
     <message>
         <source>start</source>
-        <translation type="unfinished" />
+        <translation>start</translation>
     </message>
     <message>
         <source>stop</source>
-        <translation type="unfinished" />
+        <translation>stop</translation>
     </message>
     <message>
         <source>reset</source>
-        <translation type="unfinished" />
+        <translation>reset</translation>
     </message>
     <message>
         <source>data hold</source>
-        <translation type="unfinished" />
+        <translation>data hold</translation>
     </message>
     <message>
         <source>acknowledge</source>
-        <translation type="unfinished" />
+        <translation>acknowledge</translation>
     </message>
     <message>
         <source>M done</source>
-        <translation type="unfinished" />
+        <translation>M done</translation>
     </message>
     <message>
         <source>mode %1</source>
-        <translation type="unfinished" />
+        <translation>mode %1</translation>
     </message>
     <message>
         <source>Z2000 →PLC</source>
-        <translation type="unfinished" />
+        <translation>Z2000 →PLC</translation>
     </message>
     <message>
         <source>ready</source>
-        <translation type="unfinished" />
+        <translation>ready</translation>
     </message>
     <message>
         <source>running</source>
-        <translation type="unfinished" />
+        <translation>running</translation>
     </message>
     <message>
         <source>interrupted</source>
@@ -351,71 +351,71 @@
     </message>
     <message>
         <source>end/reset</source>
-        <translation type="unfinished" />
+        <translation>end/reset</translation>
     </message>
     <message>
         <source>dwell</source>
-        <translation type="unfinished" />
+        <translation>dwell</translation>
     </message>
     <message>
         <source>M00</source>
-        <translation type="unfinished" />
+        <translation>M00</translation>
     </message>
     <message>
         <source>override 0%</source>
-        <translation type="unfinished" />
+        <translation>override 0%</translation>
     </message>
     <message>
         <source>change wheel</source>
-        <translation type="unfinished" />
+        <translation>change wheel</translation>
     </message>
     <message>
         <source>Z2001</source>
-        <translation type="unfinished" />
+        <translation>Z2001</translation>
     </message>
     <message>
         <source>M strobe</source>
-        <translation type="unfinished" />
+        <translation>M strobe</translation>
     </message>
     <message>
         <source>M code %1</source>
-        <translation type="unfinished" />
+        <translation>M code %1</translation>
     </message>
     <message>
         <source>cycle %1</source>
-        <translation type="unfinished" />
+        <translation>cycle %1</translation>
     </message>
     <message>
         <source>regulator</source>
-        <translation type="unfinished" />
+        <translation>regulator</translation>
     </message>
     <message>
         <source>feed</source>
-        <translation type="unfinished" />
+        <translation>feed</translation>
     </message>
     <message>
         <source>jog +</source>
-        <translation type="unfinished" />
+        <translation>jog +</translation>
     </message>
     <message>
         <source>jog -</source>
-        <translation type="unfinished" />
+        <translation>jog -</translation>
     </message>
     <message>
         <source>rapid</source>
-        <translation type="unfinished" />
+        <translation>rapid</translation>
     </message>
     <message>
         <source>loop</source>
-        <translation type="unfinished" />
+        <translation>loop</translation>
     </message>
     <message>
         <source>loop error</source>
-        <translation type="unfinished" />
+        <translation>loop error</translation>
     </message>
     <message>
         <source>fast inputs </source>
-        <translation type="unfinished" />
+        <translation>fast inputs </translation>
     </message>
 </context>
 <context>
@@ -2021,201 +2021,201 @@
     <name>k528::studio::K923Keys</name>
     <message>
         <source>Mode AUTOMATIC: the machine works by the control program.</source>
-        <translation type="unfinished" />
+        <translation>Mode AUTOMATIC: the machine works by the control program.</translation>
     </message>
     <message>
         <source>Mode MANUAL: the machine's push-buttons and handwheels move the axes; R-parameters can be edited.</source>
-        <translation type="unfinished" />
+        <translation>Mode MANUAL: the machine's push-buttons and handwheels move the axes; R-parameters can be edited.</translation>
     </message>
     <message>
         <source>Mode REFERENCE POINT: the homing cycle ties the axes to the machine.</source>
-        <translation type="unfinished" />
+        <translation>Mode REFERENCE POINT: the homing cycle ties the axes to the machine.</translation>
     </message>
     <message>
         <source>Mode PRESETS: technological parameters of the machine in groups.</source>
-        <translation type="unfinished" />
+        <translation>Mode PRESETS: technological parameters of the machine in groups.</translation>
     </message>
     <message>
         <source>Mode MACHINE CONSTANTS: editing the C-parameters (password).</source>
-        <translation type="unfinished" />
+        <translation>Mode MACHINE CONSTANTS: editing the C-parameters (password).</translation>
     </message>
     <message>
         <source>Mode PROGRAM EDITING: editing the control programs (password).</source>
-        <translation type="unfinished" />
+        <translation>Mode PROGRAM EDITING: editing the control programs (password).</translation>
     </message>
     <message>
         <source>Mode DATA MANAGEMENT: clearing memory and working with the PC (password).</source>
-        <translation type="unfinished" />
+        <translation>Mode DATA MANAGEMENT: clearing memory and working with the PC (password).</translation>
     </message>
     <message>
         <source>Mode key F8: the K528-05 has no eighth mode.</source>
-        <translation type="unfinished" />
+        <translation>Mode key F8: the K528-05 has no eighth mode.</translation>
     </message>
     <message>
         <source>The key opens the main screen of the mode.</source>
-        <translation type="unfinished" />
+        <translation>The key opens the main screen of the mode.</translation>
     </message>
     <message>
         <source>Machine function key K%1. The PLC program of the machine gives it its function: pressing sets Z1300.%2. Its LED is green by Z1906.%2, red by Z1907.%2, amber by both.</source>
-        <translation type="unfinished" />
+        <translation>Machine function key K%1. The PLC program of the machine gives it its function: pressing sets Z1300.%2. Its LED is green by Z1906.%2, red by Z1907.%2, amber by both.</translation>
     </message>
     <message>
         <source>Feed override key L%1: selects the override whose code machine constant C%2 holds (codes 0–10 = 0…100 %). Its LED shows the override key in effect.</source>
-        <translation type="unfinished" />
+        <translation>Feed override key L%1: selects the override whose code machine constant C%2 holds (codes 0–10 = 0…100 %). Its LED shows the override key in effect.</translation>
     </message>
     <message>
         <source>Digit %1.</source>
-        <translation type="unfinished" />
+        <translation>Digit %1.</translation>
     </message>
     <message>
         <source>Moves the marker up to the previous parameter or line.</source>
-        <translation type="unfinished" />
+        <translation>Moves the marker up to the previous parameter or line.</translation>
     </message>
     <message>
         <source>Moves the marker down to the next parameter or line.</source>
-        <translation type="unfinished" />
+        <translation>Moves the marker down to the next parameter or line.</translation>
     </message>
     <message>
         <source>Moves the marker left; in the axis screens, to the other axis.</source>
-        <translation type="unfinished" />
+        <translation>Moves the marker left; in the axis screens, to the other axis.</translation>
     </message>
     <message>
         <source>Moves the marker right; in the axis screens, to the other axis.</source>
-        <translation type="unfinished" />
+        <translation>Moves the marker right; in the axis screens, to the other axis.</translation>
     </message>
     <message>
         <source>Pages through the screens of the current mode.</source>
-        <translation type="unfinished" />
+        <translation>Pages through the screens of the current mode.</translation>
     </message>
     <message>
         <source>Enters the service screens (messages, faults, system, diagnostics) and returns from them.</source>
-        <translation type="unfinished" />
+        <translation>Enters the service screens (messages, faults, system, diagnostics) and returns from them.</translation>
     </message>
     <message>
         <source>As the machine constants set it: cancels editing a parameter, resets the system, acknowledges error and fault messages.</source>
-        <translation type="unfinished" />
+        <translation>As the machine constants set it: cancels editing a parameter, resets the system, acknowledges error and fault messages.</translation>
     </message>
     <message>
         <source>Switches keys with two functions to their second one: press SHIFT, then the key. The LED shows SHIFT engaged; pressing SHIFT again releases it.</source>
-        <translation type="unfinished" />
+        <translation>Switches keys with two functions to their second one: press SHIFT, then the key. The LED shows SHIFT engaged; pressing SHIFT again releases it.</translation>
     </message>
     <message>
         <source>Goes to choosing a parameter by its number, and back.</source>
-        <translation type="unfinished" />
+        <translation>Goes to choosing a parameter by its number, and back.</translation>
     </message>
     <message>
         <source>Enters the number of the program for automatic mode; in the program editor, inserts a computing or jump frame.</source>
-        <translation type="unfinished" />
+        <translation>Enters the number of the program for automatic mode; in the program editor, inserts a computing or jump frame.</translation>
     </message>
     <message>
         <source>Inserts a new standard frame after the current one (program editor).</source>
-        <translation type="unfinished" />
+        <translation>Inserts a new standard frame after the current one (program editor).</translation>
     </message>
     <message>
         <source>Deletes a program, a frame or the value of a parameter.</source>
-        <translation type="unfinished" />
+        <translation>Deletes a program, a frame or the value of a parameter.</translation>
     </message>
     <message>
         <source>Enters the typed value.</source>
-        <translation type="unfinished" />
+        <translation>Enters the typed value.</translation>
     </message>
     <message>
         <source>Decimal point.</source>
-        <translation type="unfinished" />
+        <translation>Decimal point.</translation>
     </message>
     <message>
         <source>Addition.</source>
-        <translation type="unfinished" />
+        <translation>Addition.</translation>
     </message>
     <message>
         <source>Subtraction; the minus sign.</source>
-        <translation type="unfinished" />
+        <translation>Subtraction; the minus sign.</translation>
     </message>
     <message>
         <source>Multiplication.</source>
-        <translation type="unfinished" />
+        <translation>Multiplication.</translation>
     </message>
     <message>
         <source>Division.</source>
-        <translation type="unfinished" />
+        <translation>Division.</translation>
     </message>
     <message>
         <source>Assigns the result.</source>
-        <translation type="unfinished" />
+        <translation>Assigns the result.</translation>
     </message>
     <message>
         <source>Types the letter R (R-parameters).</source>
-        <translation type="unfinished" />
+        <translation>Types the letter R (R-parameters).</translation>
     </message>
     <message>
         <source>Sets or clears the skip mark «/» of a frame (program editor).</source>
-        <translation type="unfinished" />
+        <translation>Sets or clears the skip mark «/» of a frame (program editor).</translation>
     </message>
     <message>
         <source>SHIFT+▲: three lines up; in the program editor, the previous frame.</source>
-        <translation type="unfinished" />
+        <translation>SHIFT+▲: three lines up; in the program editor, the previous frame.</translation>
     </message>
     <message>
         <source>SHIFT+▼: three lines down; in the program editor, the next frame.</source>
-        <translation type="unfinished" />
+        <translation>SHIFT+▼: three lines down; in the program editor, the next frame.</translation>
     </message>
     <message>
         <source>%1 (latches like a click); or hold Shift with the other key</source>
-        <translation type="unfinished" />
+        <translation>%1 (latches like a click); or hold Shift with the other key</translation>
     </message>
     <message>
         <source>PC keyboard:</source>
-        <translation type="unfinished" />
+        <translation>PC keyboard:</translation>
     </message>
 </context>
 <context>
     <name>k528::studio::K923Widget</name>
     <message>
         <source>Keyboard map…</source>
-        <translation type="unfinished" />
+        <translation>Keyboard map…</translation>
     </message>
     <message>
         <source>Copy the LCD text</source>
-        <translation type="unfinished" />
+        <translation>Copy the LCD text</translation>
     </message>
     <message>
         <source>LCD: yellow-green backlight</source>
-        <translation type="unfinished" />
+        <translation>LCD: yellow-green backlight</translation>
     </message>
     <message>
         <source>LCD: blue backlight</source>
-        <translation type="unfinished" />
+        <translation>LCD: blue backlight</translation>
     </message>
     <message>
         <source>The K923 operator panel. Click it to work it from the PC keyboard too (each key's tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</source>
-        <translation type="unfinished" />
+        <translation>The K923 operator panel. Click it to work it from the PC keyboard too (each key's tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</translation>
     </message>
     <message>
         <source>K923 operator panel</source>
-        <translation type="unfinished" />
+        <translation>K923 operator panel</translation>
     </message>
 </context>
 <context>
     <name>k528::studio::KeyboardMapDialog</name>
     <message>
         <source>K923 keyboard map</source>
-        <translation type="unfinished" />
+        <translation>K923 keyboard map</translation>
     </message>
     <message>
         <source>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel's SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</source>
-        <translation type="unfinished" />
+        <translation>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel's SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</translation>
     </message>
     <message>
         <source>Panel key</source>
-        <translation type="unfinished" />
+        <translation>Panel key</translation>
     </message>
     <message>
         <source>PC keyboard</source>
-        <translation type="unfinished" />
+        <translation>PC keyboard</translation>
     </message>
     <message>
         <source>Function</source>
-        <translation type="unfinished" />
+        <translation>Function</translation>
     </message>
 </context>
 <context>
@@ -2245,277 +2245,277 @@
     <name>k528::studio::MachinePanelWidget</name>
     <message>
         <source>SPINDLE</source>
-        <translation type="unfinished" />
+        <translation>SPINDLE</translation>
     </message>
     <message>
         <source>COOLANT</source>
-        <translation type="unfinished" />
+        <translation>COOLANT</translation>
     </message>
     <message>
         <source>LIMIT</source>
-        <translation type="unfinished" />
+        <translation>LIMIT</translation>
     </message>
     <message>
         <source>HOMED</source>
-        <translation type="unfinished" />
+        <translation>HOMED</translation>
     </message>
     <message>
         <source>DOOR</source>
-        <translation type="unfinished" />
+        <translation>DOOR</translation>
     </message>
     <message>
         <source>CLAMPED</source>
-        <translation type="unfinished" />
+        <translation>CLAMPED</translation>
     </message>
     <message>
         <source>ALARM</source>
-        <translation type="unfinished" />
+        <translation>ALARM</translation>
     </message>
     <message>
         <source>LUBE</source>
-        <translation type="unfinished" />
+        <translation>LUBE</translation>
     </message>
     <message>
         <source>WHEEL</source>
-        <translation type="unfinished" />
+        <translation>WHEEL</translation>
     </message>
     <message>
         <source>GAUGE</source>
-        <translation type="unfinished" />
+        <translation>GAUGE</translation>
     </message>
     <message>
         <source>TURRET</source>
-        <translation type="unfinished" />
+        <translation>TURRET</translation>
     </message>
     <message>
         <source>HYDRAUL.</source>
-        <translation type="unfinished" />
+        <translation>HYDRAUL.</translation>
     </message>
     <message>
         <source>MACHINE CONTROL PANEL</source>
-        <translation type="unfinished" />
+        <translation>MACHINE CONTROL PANEL</translation>
     </message>
     <message>
         <source>EMERGENCY STOP</source>
-        <translation type="unfinished" />
+        <translation>EMERGENCY STOP</translation>
     </message>
     <message>
         <source>DRIVES ON</source>
-        <translation type="unfinished" />
+        <translation>DRIVES ON</translation>
     </message>
     <message>
         <source>RESET</source>
-        <translation type="unfinished" />
+        <translation>RESET</translation>
     </message>
     <message>
         <source>CYCLE START</source>
-        <translation type="unfinished" />
+        <translation>CYCLE START</translation>
     </message>
     <message>
         <source>STOP</source>
-        <translation type="unfinished" />
+        <translation>STOP</translation>
     </message>
     <message>
         <source>Rapid traverse: hold with a jog button</source>
-        <translation type="unfinished" />
+        <translation>Rapid traverse: hold with a jog button</translation>
     </message>
     <message>
         <source>Jog X+ (hold)</source>
-        <translation type="unfinished" />
+        <translation>Jog X+ (hold)</translation>
     </message>
     <message>
         <source>Jog X- (hold)</source>
-        <translation type="unfinished" />
+        <translation>Jog X- (hold)</translation>
     </message>
     <message>
         <source>Jog Z+ (hold)</source>
-        <translation type="unfinished" />
+        <translation>Jog Z+ (hold)</translation>
     </message>
     <message>
         <source>Jog Z- (hold)</source>
-        <translation type="unfinished" />
+        <translation>Jog Z- (hold)</translation>
     </message>
     <message>
         <source>JOG</source>
-        <translation type="unfinished" />
+        <translation>JOG</translation>
     </message>
     <message>
         <source>HANDWHEEL</source>
-        <translation type="unfinished" />
+        <translation>HANDWHEEL</translation>
     </message>
     <message>
         <source>AXIS</source>
-        <translation type="unfinished" />
+        <translation>AXIS</translation>
     </message>
     <message>
         <source>STEP</source>
-        <translation type="unfinished" />
+        <translation>STEP</translation>
     </message>
     <message>
         <source>Drag round or turn the mouse wheel: one detent is one step</source>
-        <translation type="unfinished" />
+        <translation>Drag round or turn the mouse wheel: one detent is one step</translation>
     </message>
     <message>
         <source>FEED OVERRIDE %</source>
-        <translation type="unfinished" />
+        <translation>FEED OVERRIDE %</translation>
     </message>
     <message>
         <source>K923: the panel's L1..L4 keys set the override</source>
-        <translation type="unfinished" />
+        <translation>K923: the panel's L1..L4 keys set the override</translation>
     </message>
     <message>
         <source>CHUCK</source>
-        <translation type="unfinished" />
+        <translation>CHUCK</translation>
     </message>
     <message>
         <source>NEW WHEEL</source>
-        <translation type="unfinished" />
+        <translation>NEW WHEEL</translation>
     </message>
     <message>
         <source>Per detent: %1 / %2 / %3 mm</source>
-        <translation type="unfinished" />
+        <translation>Per detent: %1 / %2 / %3 mm</translation>
     </message>
     <message>
         <source>Spindle</source>
-        <translation type="unfinished" />
+        <translation>Spindle</translation>
     </message>
     <message>
         <source>Wheel</source>
-        <translation type="unfinished" />
+        <translation>Wheel</translation>
     </message>
     <message>
         <source>Work</source>
-        <translation type="unfinished" />
+        <translation>Work</translation>
     </message>
     <message>
         <source>rpm</source>
-        <translation type="unfinished" />
+        <translation>rpm</translation>
     </message>
     <message>
         <source>Tool %1</source>
-        <translation type="unfinished" />
+        <translation>Tool %1</translation>
     </message>
     <message>
         <source>Gauge: bore %1 / %2 mm, wheel %3 mm</source>
-        <translation type="unfinished" />
+        <translation>Gauge: bore %1 / %2 mm, wheel %3 mm</translation>
     </message>
     <message>
         <source> in </source>
-        <translation type="unfinished" />
+        <translation> in </translation>
     </message>
     <message>
         <source> touch </source>
-        <translation type="unfinished" />
+        <translation> touch </translation>
     </message>
     <message>
         <source> rough </source>
-        <translation type="unfinished" />
+        <translation> rough </translation>
     </message>
     <message>
         <source> finish </source>
-        <translation type="unfinished" />
+        <translation> finish </translation>
     </message>
     <message>
         <source> size</source>
-        <translation type="unfinished" />
+        <translation> size</translation>
     </message>
 </context>
 <context>
     <name>k528::studio::MachineSource</name>
     <message>
         <source>The machine database is not used: %1</source>
-        <translation type="unfinished" />
+        <translation>The machine database is not used: %1</translation>
     </message>
     <message>
         <source>database %1</source>
-        <translation type="unfinished" />
+        <translation>database %1</translation>
     </message>
     <message>
         <source>built-in</source>
-        <translation type="unfinished" />
+        <translation>built-in</translation>
     </message>
 </context>
 <context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
-        <translation type="unfinished" />
+        <translation>About K528 Studio</translation>
     </message>
     <message>
         <source>&lt;h3&gt;K528 Studio %1&lt;/h3&gt;&lt;p&gt;Workstation for the Konstar K528-05 two-axis positioning controller and its K923 operator panel.&lt;/p&gt;&lt;p&gt;Licence: GNU GPL version 3 or later.&lt;/p&gt;</source>
-        <translation type="unfinished" />
+        <translation>&lt;h3&gt;K528 Studio %1&lt;/h3&gt;&lt;p&gt;Workstation for the Konstar K528-05 two-axis positioning controller and its K923 operator panel.&lt;/p&gt;&lt;p&gt;Licence: GNU GPL version 3 or later.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>K528 Studio</source>
-        <translation type="unfinished" />
+        <translation>K528 Studio</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished" />
+        <translation>&amp;File</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished" />
+        <translation>&amp;Quit</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished" />
+        <translation>&amp;View</translation>
     </message>
     <message>
         <source>&amp;Language</source>
-        <translation type="unfinished" />
+        <translation>&amp;Language</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished" />
+        <translation>&amp;Help</translation>
     </message>
     <message>
         <source>&amp;About K528 Studio</source>
-        <translation type="unfinished" />
+        <translation>&amp;About K528 Studio</translation>
     </message>
     <message>
         <source>K923 operator panel</source>
-        <translation type="unfinished" />
+        <translation>K923 operator panel</translation>
     </message>
     <message>
         <source>Machine control panel</source>
-        <translation type="unfinished" />
+        <translation>Machine control panel</translation>
     </message>
     <message>
         <source>Messages</source>
-        <translation type="unfinished" />
+        <translation>Messages</translation>
     </message>
     <message>
         <source>Axes and signals</source>
-        <translation type="unfinished" />
+        <translation>Axes and signals</translation>
     </message>
     <message>
         <source>Ready</source>
-        <translation type="unfinished" />
+        <translation>Ready</translation>
     </message>
     <message>
         <source>Machine time %1:%2:%3</source>
-        <translation type="unfinished" />
+        <translation>Machine time %1:%2:%3</translation>
     </message>
     <message>
         <source>&amp;Simulation</source>
-        <translation type="unfinished" />
+        <translation>&amp;Simulation</translation>
     </message>
     <message>
         <source>&amp;Pause the machine</source>
-        <translation type="unfinished" />
+        <translation>&amp;Pause the machine</translation>
     </message>
     <message>
         <source>&amp;Speed</source>
-        <translation type="unfinished" />
+        <translation>&amp;Speed</translation>
     </message>
     <message>
         <source>&amp;Faults for training</source>
-        <translation type="unfinished" />
+        <translation>&amp;Faults for training</translation>
     </message>
     <message>
         <source>&amp;Clear all faults</source>
-        <translation type="unfinished" />
+        <translation>&amp;Clear all faults</translation>
     </message>
     <message>
         <source>Machine</source>
@@ -2527,7 +2527,7 @@
     </message>
     <message>
         <source>&amp;Machine</source>
-        <translation type="unfinished" />
+        <translation>&amp;Machine</translation>
     </message>
     <message>
         <source>Machine: %1</source>
@@ -2535,7 +2535,7 @@
     </message>
     <message>
         <source>Machine: %1 (%2)</source>
-        <translation type="unfinished" />
+        <translation>Machine: %1 (%2)</translation>
     </message>
     <message>
         <source>Program</source>
@@ -2543,7 +2543,7 @@
     </message>
     <message>
         <source>Load programs</source>
-        <translation type="unfinished" />
+        <translation>Load programs</translation>
     </message>
     <message>
         <source>K528 programs (*.k528 *.txt);;All files (*)</source>
@@ -2551,35 +2551,35 @@
     </message>
     <message>
         <source>Loaded %1 from %2</source>
-        <translation type="unfinished" />
+        <translation>Loaded %1 from %2</translation>
     </message>
     <message>
         <source>Loaded %1 from %2, with warnings.</source>
-        <translation type="unfinished" />
+        <translation>Loaded %1 from %2, with warnings.</translation>
     </message>
     <message>
         <source>&amp;Load programs...</source>
-        <translation type="unfinished" />
+        <translation>&amp;Load programs...</translation>
     </message>
     <message>
         <source>Keep in the database</source>
-        <translation type="unfinished" />
+        <translation>Keep in the database</translation>
     </message>
     <message>
         <source>The memory of %1 was not kept: %2</source>
-        <translation type="unfinished" />
+        <translation>The memory of %1 was not kept: %2</translation>
     </message>
     <message>
         <source>%1: the database already holds this memory (revision %2)</source>
-        <translation type="unfinished" />
+        <translation>%1: the database already holds this memory (revision %2)</translation>
     </message>
     <message>
         <source>%1 kept in the database as revision %2 (%3 changes)</source>
-        <translation type="unfinished" />
+        <translation>%1 kept in the database as revision %2 (%3 changes)</translation>
     </message>
     <message>
         <source>&amp;Keep the controller's memory in the database</source>
-        <translation type="unfinished" />
+        <translation>&amp;Keep the controller's memory in the database</translation>
     </message>
     <message>
         <source>Editor</source>
@@ -2606,11 +2606,11 @@
     </message>
     <message>
         <source>State</source>
-        <translation type="unfinished" />
+        <translation>State</translation>
     </message>
     <message>
         <source> (L%1, line %2)</source>
-        <translation type="unfinished" />
+        <translation> (L%1, line %2)</translation>
     </message>
     <message>
         <source>Positioner</source>
@@ -2618,7 +2618,7 @@
     </message>
     <message>
         <source>active</source>
-        <translation type="unfinished" />
+        <translation>active</translation>
     </message>
     <message>
         <source>PLC system</source>
@@ -2630,11 +2630,11 @@
     </message>
     <message>
         <source>PLC</source>
-        <translation type="unfinished" />
+        <translation>PLC</translation>
     </message>
     <message>
         <source>information</source>
-        <translation type="unfinished" />
+        <translation>information</translation>
     </message>
     <message>
         <source>Program</source>
@@ -2642,66 +2642,66 @@
     </message>
     <message>
         <source>No alarms.</source>
-        <translation type="unfinished" />
+        <translation>No alarms.</translation>
     </message>
     <message>
         <source>Alarms: %1. Acknowledge with RESET on the machine panel or ESC on the K923 once the cause is gone.</source>
-        <translation type="unfinished" />
+        <translation>Alarms: %1. Acknowledge with RESET on the machine panel or ESC on the K923 once the cause is gone.</translation>
     </message>
     <message>
         <source>waits for acknowledgement</source>
-        <translation type="unfinished" />
+        <translation>waits for acknowledgement</translation>
     </message>
 </context>
 <context>
     <name>k528::studio::ProgramMonitor</name>
     <message>
         <source>ready</source>
-        <translation type="unfinished" />
+        <translation>ready</translation>
     </message>
     <message>
         <source>running</source>
-        <translation type="unfinished" />
+        <translation>running</translation>
     </message>
     <message>
         <source>dwell</source>
-        <translation type="unfinished" />
+        <translation>dwell</translation>
     </message>
     <message>
         <source>waiting for the PLC (M)</source>
-        <translation type="unfinished" />
+        <translation>waiting for the PLC (M)</translation>
     </message>
     <message>
         <source>M00: waiting for START</source>
-        <translation type="unfinished" />
+        <translation>M00: waiting for START</translation>
     </message>
     <message>
         <source>interrupted: START continues</source>
-        <translation type="unfinished" />
+        <translation>interrupted: START continues</translation>
     </message>
     <message>
         <source>ended</source>
-        <translation type="unfinished" />
+        <translation>ended</translation>
     </message>
     <message>
         <source>stopped by a message: START begins again</source>
-        <translation type="unfinished" />
+        <translation>stopped by a message: START begins again</translation>
     </message>
     <message>
         <source>Follow the controller</source>
-        <translation type="unfinished" />
+        <translation>Follow the controller</translation>
     </message>
     <message>
         <source>L%1: %2</source>
-        <translation type="unfinished" />
+        <translation>L%1: %2</translation>
     </message>
     <message>
         <source>no program</source>
-        <translation type="unfinished" />
+        <translation>no program</translation>
     </message>
     <message>
         <source>, frame N%1</source>
-        <translation type="unfinished" />
+        <translation>, frame N%1</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
-// Every text of the desktop UI has a Russian translation (operators' language).
+// Every text of the desktop UI has a Russian translation (operators' language)
+// and an English one (the sources' own words unless a source is the manual's Russian).
 #include <QtTest>
 
 #include <QFile>
@@ -7,8 +8,12 @@
 class TestTranslations : public QObject {
     Q_OBJECT
 private slots:
-    void russianIsComplete() {
-        QFile f(QStringLiteral(K528_SOURCE_DIR "/translations/k528studio_ru.ts"));
+    void russianIsComplete() { checkComplete(QStringLiteral("ru")); }
+    void englishIsComplete() { checkComplete(QStringLiteral("en")); }
+
+private:
+    static void checkComplete(const QString& language) {
+        QFile f(QStringLiteral(K528_SOURCE_DIR "/translations/k528studio_") + language + QStringLiteral(".ts"));
         QVERIFY(f.open(QIODevice::ReadOnly));
         QXmlStreamReader xml(&f);
         QString source;
