@@ -84,7 +84,14 @@ int main(int argc, char** argv) {
             for (QWidget* w : QApplication::topLevelWidgets())
                 if (w->isVisible() && qobject_cast<k528::studio::MainWindow*>(w))
                     shown = w;
-            const bool ok = shown && shown->grab().save(file, "PNG");
+            // On an X server: what the screen shows (the OpenGL docks as
+            // composed there); offscreen: the widgets rendered again.
+            QImage image;
+            if (shown && QGuiApplication::platformName() == QLatin1String("xcb") && shown->screen())
+                image = shown->screen()->grabWindow(shown->winId()).toImage();
+            if (shown && image.isNull())
+                image = shown->grab().toImage();
+            const bool ok = !image.isNull() && image.save(file, "PNG");
             if (!ok)
                 std::fprintf(stderr, "k528studio: cannot write %s\n", qPrintable(file));
             QApplication::exit(ok ? 0 : 2);
