@@ -48,13 +48,18 @@ public:
         row->addWidget(program_);
         row->addWidget(pathButton_);
         row->addWidget(runButton_);
-        row->addWidget(follow_);
-        row->addWidget(ucgLabel_);
-        row->addWidget(ucg_, 1);
+        row->addStretch(1);
+        // The blank on a row of its own: one long row made the dock (and the
+        // window) wider than a 1920-pixel screen.
+        auto* stockRow = new QHBoxLayout;
+        stockRow->addWidget(follow_);
+        stockRow->addWidget(ucgLabel_);
+        stockRow->addWidget(ucg_, 1);
         view_ = new BackplotWidget(box);
         auto* layout = new QVBoxLayout(box);
         layout->setContentsMargins(2, 2, 2, 2);
         layout->addLayout(row);
+        layout->addLayout(stockRow);
         layout->addWidget(view_, 1);
         setWidget(box);
         connect(pathButton_, &QPushButton::clicked, this, [this] { computePath(); });
