@@ -30,6 +30,24 @@ inline CliResult runK528(const QStringList& args, const QByteArray& stdinData = 
     return r;
 }
 
+// Runs any program (`k528`, mbpoll…) with a time limit: one that does not end
+// in time is killed, and its result says "timeout" on err with exitCode -1.
+inline CliResult runProgram(const QString& program, const QStringList& args, int timeoutMs) {
+    QProcess p;
+    p.start(program, args);
+    CliResult r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("timeout");
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
 // Runs `k528` with its standard output sent to the file `outFile` (e.g.
 // /dev/full) and returns the exit code and what it printed on stderr.
 inline CliResult runK528ToFile(const QStringList& args, const QString& outFile,

@@ -13,30 +13,17 @@
 #include <QtTest>
 #include <csignal>
 
+#include "cli_runner.h"
+
 namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
 const QString kProxy = QStringLiteral(K528_SOURCE_DIR "/tests/link/fault_proxy.py");
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
+using Run = CliResult;
 
 Run run(const QStringList& args, int timeoutMs = 180000) {
-    QProcess p;
-    p.start(kCli, args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = "timeout";
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return runProgram(kCli, args, timeoutMs);
 }
 
 QString program(int number, int frames, int salt) {
@@ -99,7 +86,7 @@ class TestLinkFaults : public QObject {
         const Run r = run({"link", "--port", c_, "pull", "--out", file});
         stopProxy();
         removeLocks();
-        if (r.code != 0) {
+        if (r.exitCode != 0) {
             qWarning("clean pull failed: %s", qPrintable(r.err));
             return {};
         }
@@ -158,7 +145,7 @@ private slots:
         const Run r = run({"link", "--port", c_, "--timeout-ms", "100", "push", path});
         const QString proxySaid = stopProxy();
         removeLocks();
-        qInfo("push over the faulty line: exit %d; %s; %s", r.code,
+        qInfo("push over the faulty line: exit %d; %s; %s", r.exitCode,
               qPrintable(r.err.section('\n', -2, -2)), qPrintable(proxySaid.trimmed()));
         QVERIFY2(proxySaid.contains("corrupted"), qPrintable(proxySaid));
         // The line's report is there, and the damage was met by retries.
@@ -166,7 +153,7 @@ private slots:
         const auto m = retries.match(r.err);
         QVERIFY2(m.hasMatch(), qPrintable(r.err));
         QVERIFY2(m.captured(1).toInt() > 0, qPrintable(r.err));
-        QVERIFY2(r.code == 0, qPrintable(r.err)); // the retries carry it through
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err)); // the retries carry it through
 
         // Through a clean line: each program as it was (absent) or exactly as sent.
         const QString now = pullClean();
@@ -174,12 +161,12 @@ private slots:
         for (int n : {51, 52}) {
             const QStringList got = framesOf(now, n);
             if (got.isEmpty()) {
-                QVERIFY2(r.code != 0, "a push that succeeded left a program out");
+                QVERIFY2(r.exitCode != 0, "a push that succeeded left a program out");
                 continue;
             }
             QCOMPARE(got, framesOf(file, n));
         }
-        if (r.code == 0)
+        if (r.exitCode == 0)
             QVERIFY(r.out.contains("program 51") && r.out.contains("program 52"));
     }
 
@@ -198,11 +185,11 @@ private slots:
         const Run r = run({"link", "--port", c_, "--timeout-ms", "60", "push", path});
         stopProxy();
         removeLocks();
-        qInfo("push over a very bad line: exit %d: %s", r.code, qPrintable(r.err.section('\n', -3).simplified()));
+        qInfo("push over a very bad line: exit %d: %s", r.exitCode, qPrintable(r.err.section('\n', -3).simplified()));
         const QString now = pullClean();
         QVERIFY(now.contains("[program 1]"));
         const QStringList got = framesOf(now, 53);
-        if (r.code == 0)
+        if (r.exitCode == 0)
             QCOMPARE(got, framesOf(file, 53));
         else {
             QVERIFY2(r.err.contains("does not answer") || r.err.contains("k528 link:"), qPrintable(r.err));
@@ -213,7 +200,7 @@ private slots:
         const Run again = run({"link", "--port", c_, "push", path});
         stopProxy();
         removeLocks();
-        QVERIFY2(again.code == 0, qPrintable(again.err));
+        QVERIFY2(again.exitCode == 0, qPrintable(again.err));
         QCOMPARE(framesOf(pullClean(), 53), framesOf(file, 53));
     }
 };

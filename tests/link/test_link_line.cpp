@@ -2,6 +2,7 @@
 // serve` on one end; mbpoll (a Modbus master we did not write) and `k528
 // link` on the other; SIGKILL of a push mid-transfer; the plugin loader
 // refusing foreign plugins.
+#include "cli_runner.h"
 #include "link_plugins.h"
 
 #include <QCoreApplication>
@@ -16,25 +17,10 @@ namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
 
-struct Run {
-    int code = -1;
-    QString out, err;
-};
+using Run = CliResult;
 
 Run run(const QString& program, const QStringList& args, int timeoutMs = 30000) {
-    QProcess p;
-    p.start(program, args);
-    Run r;
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = "timeout";
-        return r;
-    }
-    r.code = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    return runProgram(program, args, timeoutMs);
 }
 
 } // namespace
@@ -99,14 +85,14 @@ private slots:
         startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
         // C40 F ОБЫЧНАЯ X of training-lathe at Z4124/Z4125 (32-bit, low word first).
         Run r = mbpoll({"-r", "4124", "-c", "1", "-t", "4:int", b_});
-        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
         QVERIFY2(r.out.contains("[4124]: \t150000"), qPrintable(r.out));
         // Live state: mode 7.
         r = mbpoll({"-r", "6000", "-c", "1", "-t", "4", b_});
         QVERIFY2(r.out.contains("[6000]: \t7"), qPrintable(r.out));
         // Write R5 = 1234 (5010) and read it back with k528 link pull.
         r = mbpoll({"-r", "5010", "-t", "4", b_, "1234"});
-        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
         r = mbpoll({"-r", "5010", "-c", "1", "-t", "4", b_});
         QVERIFY2(r.out.contains("[5010]: \t1234"), qPrintable(r.out));
         // 02 outside the writable map, 03 a value outside its range.
@@ -120,7 +106,7 @@ private slots:
         startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
         const QString file = dir_.filePath("pulled.k528m");
         Run r = link({"pull", "--out", file});
-        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QString text;
         {
             QFile f(file);
@@ -138,7 +124,7 @@ private slots:
             f.write(bad.toUtf8());
         }
         r = link({"push", badFile});
-        QVERIFY2(r.code == 1, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 1, qPrintable(r.err));
         // A changed program goes in and reads back the same.
         QString changed = text;
         changed.replace("[end program]", "N998 G4 X1.5\n[end program]");
@@ -149,10 +135,10 @@ private slots:
             f.write(changed.toUtf8());
         }
         r = link({"push", changedFile});
-        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
         QVERIFY(r.out.contains("written and verified"));
         r = link({"pull", "--out", dir_.filePath("again.k528m")});
-        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QFile again(dir_.filePath("again.k528m"));
         QVERIFY(again.open(QIODevice::ReadOnly));
         QVERIFY(QString::fromUtf8(again.readAll()).contains("N998 G4 X1.5"));
@@ -161,12 +147,12 @@ private slots:
     void pushOutsideF7IsRefused() {
         startServe("");
         Run r = link({"status", "--json"});
-        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(r.out.contains("\"mode\":2"));
         const QString file = dir_.filePath("pulled.k528m");
         QVERIFY(QFile::exists(file));
         r = link({"push", file});
-        QCOMPARE(r.code, 1);
+        QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("РАБОТА С ПЭВМ"), qPrintable(r.err));
         // Exception 06 on the line: a register write outside F7.
         r = mbpoll({"-r", "5010", "-t", "4", b_, "5"});
@@ -176,7 +162,7 @@ private slots:
     void noAnswerIsExit2() {
         stopServe();
         Run r = run(kCli, {"link", "--port", b_, "--timeout-ms", "50", "ping"});
-        QCOMPARE(r.code, 2);
+        QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("does not answer"), qPrintable(r.err));
     }
 
@@ -214,7 +200,7 @@ private slots:
             removeLocks();
             const QString now = dir_.filePath("now.k528m");
             Run r = link({"pull", "--out", now});
-            QVERIFY2(r.code == 0, qPrintable(r.err));
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
             QFile b(now);
             QVERIFY(b.open(QIODevice::ReadOnly));
             const QString sb = QString::fromUtf8(b.readAll());
@@ -228,7 +214,7 @@ private slots:
         QVERIFY(killedMidway > 0);
         // And the push, run again to the end, succeeds.
         Run r = link({"push", bigFile});
-        QVERIFY2(r.code == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
         QVERIFY(r.out.contains("program 50"));
         QVERIFY(killedMidway > 0);
     }
@@ -242,14 +228,14 @@ private slots:
         Run r;
         for (int i = 0; i < 30; ++i) { // the interpreter takes a moment to open the port
             r = link({"pull", "--out", file});
-            if (r.code == 0)
+            if (r.exitCode == 0)
                 break;
             QTest::qWait(200);
         }
         py.kill();
         py.waitForFinished(3000);
         removeLocks();
-        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QFile f(file);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
