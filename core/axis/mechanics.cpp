@@ -8,9 +8,19 @@ namespace k528::axis {
 namespace {
 constexpr double kDacCodesPerVolt = 204.8; // 12-bit ±10 V: code 2048 = 10 V
 constexpr double kMaxVolts = 10.0;
+
+// std::floor, exactly, without the library call it is on baseline x86-64
+// (no SSE4.1): a slide is far inside ±2^52 counts or revolutions.
+inline double floorExact(double x) {
+    if (!(std::fabs(x) < 4503599627370496.0)) // 2^52: already an integer (or not finite)
+        return std::floor(x);
+    const double t = static_cast<double>(static_cast<std::int64_t>(x)); // toward zero
+    return t > x ? t - 1.0 : (t == 0.0 ? std::copysign(0.0, x) : t);
+}
 } // namespace
 
-Mechanics::Mechanics(const MechanicsSettings& s) : s_(s), perCountMm_(s.mmPerCount()) {
+Mechanics::Mechanics(const MechanicsSettings& s)
+    : s_(s), perCountMm_(s.mmPerCount()), perCountInverse_(1.0 / perCountMm_) {
     motorMm_ = slideMm_ = s.startSlideMm;
     updateEncoder(motorMm_);
     markCrossed_ = false;
@@ -96,10 +106,17 @@ void Mechanics::updateEncoder(double previousMotorMm) {
     // Zero marks at motor positions phase + k·lead (k of the previous
     // position as the last call computed it).
     const double lead = s_.screwLeadMm;
-    const double k0 = markRevFresh_ && previousMotorMm == markRevMotorMm_
-                          ? markRev_
-                          : std::floor((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
-    const double k1 = std::floor((motorMm_ - s_.zeroMarkPhaseMm) / lead);
+    const bool k0Known = markRevFresh_ && previousMotorMm == markRevMotorMm_;
+    const double k0 = k0Known ? markRev_ : floorExact((previousMotorMm - s_.zeroMarkPhaseMm) / lead);
+    // Well inside the revolution of k0 (a millionth of a lead from either
+    // mark, far above any rounding), the division gives k0 again.
+    const double k1 = k0Known && motorMm_ >= markRevLoMm_ && motorMm_ <= markRevHiMm_
+                          ? k0
+                          : floorExact((motorMm_ - s_.zeroMarkPhaseMm) / lead);
+    if (!k0Known || k1 != k0 || !(markRevHiMm_ > markRevLoMm_)) {
+        markRevLoMm_ = s_.zeroMarkPhaseMm + (k1 + 1e-6) * lead;
+        markRevHiMm_ = s_.zeroMarkPhaseMm + (k1 + 1.0 - 1e-6) * lead;
+    }
     markRevMotorMm_ = motorMm_;
     markRev_ = k1;
     markRevFresh_ = true;
@@ -112,7 +129,15 @@ void Mechanics::updateEncoder(double previousMotorMm) {
     countFresh_ = !(encoderFrozen_ || channel1Broken_ || channel2Broken_);
     if (!countFresh_)
         return; // the counter no longer follows the motor
-    std::int64_t c = static_cast<std::int64_t>(std::floor(motorMm_ / perCount));
+    // floor(motor / perCount) from the reciprocal: the product is within
+    // 2^-51 of the quotient, so away from an integer (a millionth of a
+    // count, up to 2^28 counts) both floors agree; near one, the division.
+    const double approx = motorMm_ * perCountInverse_;
+    double whole = floorExact(approx);
+    const double frac = approx - whole;
+    if (!(std::fabs(approx) < 268435456.0 && frac > 1e-6 && frac < 1.0 - 1e-6))
+        whole = floorExact(motorMm_ / perCount);
+    std::int64_t c = static_cast<std::int64_t>(whole);
     count_ = s_.encoderWiredInverted ? -c : c;
 }
 

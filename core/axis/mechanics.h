@@ -100,7 +100,9 @@ private:
     // tick with no drive speed asked changes nothing.
     bool settled_ = false;
     double perCountMm_ = 0;                  // s_.mmPerCount()
+    double perCountInverse_ = 0;             // 1 / perCountMm_ (updateEncoder)
     double markRevMotorMm_ = 0, markRev_ = 0; // revolution index (zero marks) of a motor position
+    double markRevLoMm_ = 0, markRevHiMm_ = 0; // motor positions safely inside revolution markRev_
     bool markRevFresh_ = false;
     bool countFresh_ = false;         // count_ matches motorMm_ (skip the work while it stands)
 };

@@ -47,6 +47,11 @@ void Servo::setConstants(const Constants& k) {
         if (fault_ == Fault::RatioError)
             fault_ = Fault::None;
     }
+    if (k_.encoderCheckMs > 0) {
+        const double threshold = 4.0 * ipc_ / static_cast<double>(k_.encoderCheckMs);
+        stallSpeedLo_ = threshold * (1.0 - 1e-9);
+        stallSpeedHi_ = threshold * (1.0 + 1e-9);
+    }
     if (haveCount_) {
         offset_ = before - static_cast<double>(lastCount_) * ipc_;
         actual_ = before;
@@ -171,9 +176,13 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
         stallTimerMs_ = 0;
         return;
     }
+    // At least 4 counts within the check time; the division is taken only
+    // near the threshold (a speed well above or below it decides alike).
+    const double speed = std::fabs(traj_.velocity());
     const bool moveDemanded =
         traj_.velocity() != 0.0 &&
-        std::fabs(traj_.velocity()) * static_cast<double>(k_.encoderCheckMs) / ipc_ >= 4.0;
+        (speed > stallSpeedHi_ ||
+         (speed >= stallSpeedLo_ && speed * static_cast<double>(k_.encoderCheckMs) / ipc_ >= 4.0));
     const bool restDemanded = k_.encoderCheckAtRest && traj_.velocity() == 0.0 &&
                               std::fabs(followingError()) > static_cast<double>(k_.clampToleranceInternal);
     if ((moveDemanded || restDemanded) && pulses_ == 0) {
@@ -201,8 +210,6 @@ void Servo::tick(const ServoInputs& in, double dt) {
         return;
     }
     quietTick_ = false;
-    lastIn_ = in;
-    lastDt_ = dt;
     steady_ = false;
     accel2Input_ = in.accel2;
     // --- encoder -> actual position ---
@@ -319,6 +326,12 @@ void Servo::tick(const ServoInputs& in, double dt) {
         jogDir_ = 0;
     }
     steady_ = atTarget && wasAtTarget && settled(e);
+    if (steady_) {
+        // Only a steady servo compares its inputs with the last ones (and the
+        // copy here, long after `in` was built, costs no store forwarding).
+        lastIn_ = in;
+        lastDt_ = dt;
+    }
 }
 
 } // namespace k528::axis

@@ -135,6 +135,12 @@ public:
     // same inputs: only the rest timer ran) and no command came since: every
     // value above is what it was before that tick.
     bool quiet() const { return quietTick_ && steady_; }
+    // The tick of a quiet servo whose inputs are those of its last tick, as
+    // tick() would do it (the controller's settled tick, engine/controller.h).
+    void quietTick(double dt) {
+        restTimerMs_ += dt;
+        quietTick_ = true;
+    }
 
 private:
     void openLoop();
@@ -148,6 +154,7 @@ private:
     Constants k_;
     Trajectory traj_;
     double ipc_ = 1;          // internal units per count (2L/N)
+    double stallSpeedLo_ = 0, stallSpeedHi_ = 0; // about 4 counts per ЗАДЕРЖКА ДАТЧИКА (superviseEncoder)
     double offset_ = 0;       // machine system = counts·ipc + offset
     double actual_ = 0;
     std::int64_t lastCount_ = 0;

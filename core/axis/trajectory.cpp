@@ -55,7 +55,16 @@ void Trajectory::tick(double dt) {
     // v'²/(2a) + v'·dt/2 <= |r| - v·dt/2; never above the (scaled) limit.
     const double dir = r > 0 ? 1.0 : (r < 0 ? -1.0 : 0.0);
     const double room = vel_ * dir >= 0 ? std::max(0.0, std::fabs(r) - std::fabs(vel_) * dt * 0.5) : std::fabs(r);
-    const double braking = 0.5 * (-a * dt + std::sqrt(a * a * dt * dt + 8.0 * a * room));
+    // The speed from which the axis still stops at the target. While it is
+    // clearly above the speed limit (the usual case in a long move) the
+    // square root cannot change the result and is not taken: sqrt(disc) >=
+    // 2·limit + a·dt, with a margin far above any rounding, gives braking >=
+    // limit, so min() picks the limit either way — bit for bit the same.
+    const double disc = a * a * dt * dt + 8.0 * a * room;
+    const double cruiseBound = 2.0 * limit + a * dt;
+    const double braking = disc > cruiseBound * cruiseBound * (1.0 + 1e-9)
+                               ? limit
+                               : 0.5 * (-a * dt + std::sqrt(disc));
     const double desired = dir * std::min(limit, braking);
     const double dvMax = a * dt;
     const double v = vel_ + std::clamp(desired - vel_, -dvMax, dvMax);

@@ -103,6 +103,7 @@ public:
     bool anyLatched(AlarmCategory c) const { return (latchedMask_ & maskOf(c)) != 0; }
     bool anyActive(AlarmCategory c) const { return (activeMask_ & maskOf(c)) != 0; }
     std::uint64_t latchedMask() const { return latchedMask_; }
+    std::uint64_t activeMask() const { return activeMask_; }
     // Latched message numbers in the order they latched.
     std::vector<int> latchedList() const;
 

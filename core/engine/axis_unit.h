@@ -22,7 +22,9 @@ namespace k528::engine {
 // Rounds half away from zero, inline (llround is a library call; this runs
 // several times a tick). Exact for |v| < 2^52.
 inline std::int64_t roundToInt(double v) {
-    return static_cast<std::int64_t>(v < 0 ? v - 0.5 : v + 0.5);
+    // v ± 0.5 by the sign of v, without a branch (the same sums: v - 0.5 is
+    // v + (-0.5)); -0.0 gives -0.5, truncated to 0 as +0.5 would be.
+    return static_cast<std::int64_t>(v + std::copysign(0.5, v));
 }
 
 enum class MotionOwner : std::uint8_t {

@@ -66,6 +66,7 @@ void Controller::programStoreCheck() {
 }
 
 void Controller::powerOn() {
+    wake();
     if (c_.powered)
         return;
     c_.powered = true;
@@ -99,6 +100,15 @@ void Controller::advance(std::int64_t ms) {
 void Controller::tick() {
     if (!c_.powered)
         powerOn();
+    const bool inputsAsLeft = quiet_.valid && c_.words == quiet_.words && c_.io == quiet_.io;
+    if (inputsAsLeft && quiet_.ticks >= 2) {
+        // Settled: what a full tick would do (see controller.h).
+        c_.nowMs += c_.tickMs;
+        for (AxisUnit& u : c_.axes)
+            if (u.present)
+                u.servo.quietTick(c_.dtMs);
+        return;
+    }
     c_.nowMs += c_.tickMs;
     readInputs();
     c_.plc.update(c_.words);
@@ -110,6 +120,41 @@ void Controller::tick() {
             axisTick(u);
     interp_.tick();
     writeOutputs();
+    noteSettled(inputsAsLeft);
+}
+
+bool Controller::settled() const {
+    if (!c_.powered || executing(c_.state) || c_.preview || wheelDelta_[0] != 0 || wheelDelta_[1] != 0)
+        return false;
+    for (const AxisUnit& u : c_.axes) {
+        if (!u.present)
+            continue;
+        if (!u.servo.quiet() || u.owner != MotionOwner::None || u.homing.running() || u.jogDir != 0 ||
+            c_.osc[static_cast<std::size_t>(u.index)].active())
+            return false;
+    }
+    return true;
+}
+
+void Controller::noteSettled(bool inputsAsLeft) {
+    if (!settled()) {
+        wake();
+        return;
+    }
+    const std::span<const std::int32_t> r = c_.r.values();
+    const bool unchanged = inputsAsLeft && c_.words == quiet_.words && c_.io == quiet_.io &&
+                           std::equal(r.begin(), r.end(), quiet_.r.begin()) &&
+                           c_.alarms.latchedMask() == quiet_.latched &&
+                           c_.alarms.activeMask() == quiet_.active;
+    quiet_.ticks = unchanged ? quiet_.ticks + 1 : 0;
+    if (!unchanged) {
+        quiet_.words = c_.words;
+        quiet_.io = c_.io;
+        std::copy(r.begin(), r.end(), quiet_.r.begin());
+        quiet_.latched = c_.alarms.latchedMask();
+        quiet_.active = c_.alarms.activeMask();
+    }
+    quiet_.valid = true;
 }
 
 void Controller::readInputs() {
@@ -240,6 +285,7 @@ void Controller::acknowledgeSystem() {
 }
 
 void Controller::escape() {
+    wake();
     if (c_.c[c::EscResets] != 0)
         resetSystem();
     if (c_.c[c::EscAcknowledgesFaults] != 0)
@@ -672,8 +718,7 @@ void Controller::writeOutputs() {
     // Z2000.
     std::uint16_t s = 0;
     const auto set = [&](int bit, bool v) {
-        if (v)
-            s = static_cast<std::uint16_t>(s | (1u << bit));
+        s = static_cast<std::uint16_t>(s | (static_cast<unsigned>(v) << bit));
     };
     set(0, c_.powered && !c_.alarms.anyActive(AlarmCategory::System));
     set(modeKey(c_.mode), c_.powered);
@@ -698,9 +743,8 @@ void Controller::writeOutputs() {
         const std::int64_t machine = u.present ? u.machineDisc() : 0;
         axisR(u, machine);
         std::uint16_t st = 0;
-        const auto sb = [&](int bit, bool v) {
-            if (v)
-                st = static_cast<std::uint16_t>(st | (1u << bit));
+        const auto sb = [&](int bit, bool v) { // without a branch: the bits change as axes move
+            st = static_cast<std::uint16_t>(st | (static_cast<unsigned>(v) << bit));
         };
         if (u.present) {
             const axis::Servo& sv = u.servo;
@@ -781,6 +825,7 @@ void Controller::refreshR() {
 // Operator functions
 
 OpResult Controller::selectMode(Mode m) {
+    wake();
     if (!validModeKey(modeKey(m)))
         return OpResult::refused(Refusal::NoSuchKey, cat("F", num(modeKey(m)), " selects no mode"));
     if (c_.modeFromPlc)
@@ -793,6 +838,7 @@ OpResult Controller::selectMode(Mode m) {
 }
 
 OpResult Controller::pressOverrideKey(int l) {
+    wake();
     if (l < 1 || l > 4)
         return OpResult::refused(Refusal::NoSuchKey,
                                  cat("override keys are L1..L4, not L", num(l)));
@@ -805,6 +851,7 @@ OpResult Controller::pressOverrideKey(int l) {
 }
 
 OpResult Controller::selectProgram(int number) {
+    wake();
     if (number < 1 || number > program::kMaxPrograms)
         return OpResult::refused(Refusal::NoSuchProgram,
                                  cat("program numbers are 1..99, not ", num(number)));
@@ -813,6 +860,7 @@ OpResult Controller::selectProgram(int number) {
 }
 
 OpResult Controller::setR(int number, std::int64_t value) {
+    wake();
     if (!rValid(number))
         return OpResult::refused(Refusal::NoSuchParameter,
                                  cat("R-parameters are R0..R299, not R", num(number)));
@@ -832,6 +880,7 @@ OpResult Controller::setR(int number, std::int64_t value) {
 }
 
 OpResult Controller::setC(int number, std::int64_t value) {
+    wake();
     if (number < 1 || number > kCCount)
         return OpResult::refused(Refusal::NoSuchParameter,
                                  cat("C-parameters are 1..152, not ", num(number)));
@@ -850,6 +899,7 @@ OpResult Controller::setC(int number, std::int64_t value) {
 }
 
 OpResult Controller::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
+    wake();
     AxisUnit& u = c_.axes[static_cast<std::size_t>(axisIndex(axis))];
     if (!u.present)
         return OpResult::refused(
@@ -871,10 +921,12 @@ OpResult Controller::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
 }
 
 program::ProgramStore* Controller::editablePrograms() {
+    wake();
     return programActive(c_.state) ? nullptr : &c_.store;
 }
 
 OpResult Controller::programsEdited() {
+    wake();
     if (programActive(c_.state))
         return OpResult::refused(Refusal::ProgramActive, "a program is active");
     for (program::Program& p : c_.store.programs())
@@ -886,6 +938,7 @@ OpResult Controller::programsEdited() {
 }
 
 OpResult Controller::loadCParameters(std::span<const std::int64_t> c) {
+    wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
                                  "C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
@@ -906,6 +959,7 @@ OpResult Controller::loadCParameters(std::span<const std::int64_t> c) {
 }
 
 OpResult Controller::clearCParameters() {
+    wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
                                  "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
@@ -919,6 +973,7 @@ OpResult Controller::clearCParameters() {
 }
 
 OpResult Controller::clearRParameters() {
+    wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
                                  "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
@@ -930,6 +985,7 @@ OpResult Controller::clearRParameters() {
 }
 
 OpResult Controller::clearPrograms() {
+    wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
                                  "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");

@@ -113,10 +113,16 @@ public:
     bool referenceOk(AxisId a) const { return unit(a).referenceOk(); }
     bool homing(AxisId a) const { return unit(a).homing.running(); }
     // Preview mode (engine/preview.h; driven by engine/preview_run.h): null ends it.
-    void setPreview(PreviewSink* sink) { c_.preview = sink; }
+    void setPreview(PreviewSink* sink) {
+        wake();
+        c_.preview = sink;
+    }
     // The debugger's gate (engine/debug_gate.h): breakpoints, single frame,
     // run to a frame; null detaches it. The gate outlives its attachment.
-    void setDebugGate(DebugGate* gate) { c_.debug = gate; }
+    void setDebugGate(DebugGate* gate) {
+        wake();
+        c_.debug = gate;
+    }
     DebugGate* debugGate() const { return c_.debug; }
     const Interpreter& interpreter() const { return interp_; }
     bool oscillating(AxisId a) const {
@@ -146,6 +152,20 @@ private:
     void configurationCheck();
     void programStoreCheck();
     void trackFault(AxisUnit& u);
+    // The settled tick (docs/engine.md, "Speed"): once two full ticks in a
+    // row found the words and the machine I/O as the tick before left them,
+    // changed nothing of them, of the R-parameters or of the messages, and
+    // ended with no program executing, every servo quiet and no motion,
+    // cycle or handwheel pulse, the next tick with the same words and I/O
+    // can change nothing but the time: it advances the clock and the
+    // servos' time at rest only. Any operator function, or any change of a
+    // word or of the I/O, ends it.
+    bool settled() const;
+    void noteSettled(bool inputsAsLeft);
+    void wake() {
+        quiet_.valid = false;
+        quiet_.ticks = 0;
+    }
 
     Core c_;
     Interpreter interp_;
@@ -160,6 +180,14 @@ private:
     std::uint64_t programsRevision_ = 0;
     int overrideFactorPercent_ = -1; // overrideFactor_ = overridePercent / 100 of this percent
     double overrideFactor_ = 1.0;
+    struct QuietState {
+        bool valid = false; // words/io/r/masks are those the last full tick left
+        int ticks = 0;      // full settled ticks in a row that changed nothing
+        InterfaceWords words;
+        MachineIo io;
+        std::array<std::int32_t, kRCount> r{};
+        std::uint64_t latched = 0, active = 0;
+    } quiet_;
 };
 
 } // namespace k528::engine

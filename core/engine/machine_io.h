@@ -19,6 +19,7 @@ struct PulseChannel {
     bool line2Ok = true;
     bool zeroMark = false;          // a zero mark passed since the last tick
     std::int64_t zeroMarkCount = 0; // ... at this count
+    friend bool operator==(const PulseChannel&, const PulseChannel&) = default;
 };
 
 inline constexpr int kPulseChannels = 4; // module 1 ch 1, ch 2, module 2 ch 1, ch 2
@@ -43,6 +44,7 @@ struct MachineIo {
     // --- outputs: positioner -> machine ---
     std::array<int, kDacChannels> dac{};   // codes, ±2047 = ±10 V
     std::array<bool, 2> regulatorEnable{}; // drive regulator enable, X and Z
+    friend bool operator==(const MachineIo&, const MachineIo&) = default;
 };
 
 } // namespace k528::engine
