@@ -32,26 +32,26 @@ bool machineOptions(const Args& args, program::ValidateOptions& options) {
     return true;
 }
 
-json::Value fileJson(const std::string& file, const program::CheckResult& r) {
-    json::Value f;
-    f.set("file", file);
-    json::Array programs;
+Json fileJson(const std::string& file, const program::CheckResult& r) {
+    Json f;
+    f["file"] = file;
+    Json programs = Json::array();
     for (const int n : r.store.numbers())
         programs.emplace_back(n);
-    f.set("programs", std::move(programs));
-    json::Array diags;
+    f["programs"] = std::move(programs);
+    Json diags = Json::array();
     for (const auto& d : r.diagnostics) {
-        json::Value j;
-        j.set("line", d.line);
-        j.set("column", d.column);
-        j.set("end_column", d.endColumn);
-        j.set("severity", d.isError() ? "error" : "warning");
-        j.set("manual_number", d.manualNumber > 0 ? json::Value(d.manualNumber) : json::Value(nullptr));
-        j.set("message_ru", d.messageRu);
-        j.set("message_en", d.messageEn);
+        Json j;
+        j["line"] = d.line;
+        j["column"] = d.column;
+        j["end_column"] = d.endColumn;
+        j["severity"] = d.isError() ? "error" : "warning";
+        j["manual_number"] = d.manualNumber > 0 ? Json(d.manualNumber) : Json();
+        j["message_ru"] = d.messageRu;
+        j["message_en"] = d.messageEn;
         diags.push_back(std::move(j));
     }
-    f.set("diagnostics", std::move(diags));
+    f["diagnostics"] = std::move(diags);
     return f;
 }
 
@@ -124,7 +124,7 @@ int runCheck(std::span<const std::string> argv) {
     const bool asJson = args.has("--json");
     bool ioError = false;
     bool errors = false;
-    json::Array files;
+    Json files = Json::array();
     for (const std::string& path : args.positional()) {
         std::string text;
         if (!readProgramFile(path, text)) {
@@ -139,9 +139,9 @@ int runCheck(std::span<const std::string> argv) {
             printDiagnostics(stdout, displayName(path), r.diagnostics, lang);
     }
     if (asJson) {
-        json::Value root;
-        root.set("files", std::move(files));
-        std::printf("%s\n", root.dump().c_str());
+        Json root;
+        root["files"] = std::move(files);
+        std::printf("%s\n", json::dump(root).c_str());
     }
     if (ioError)
         return ExitUsage;

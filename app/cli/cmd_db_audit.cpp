@@ -35,21 +35,21 @@ int cmdAudit(std::span<const std::string> argv) {
         return ExitUsage;
     const auto entries = d->audit(limit, a.value("--machine").value_or(""));
     if (a.has("--json")) {
-        json::Array arr;
+        Json arr = Json::array();
         for (const auto& e : entries) {
-            json::Value j;
-            j.set("id", e.id);
-            j.set("at", e.at);
-            j.set("author", e.author);
-            j.set("action", e.action);
-            j.set("machine", e.machine);
-            j.set("revision", e.revision);
-            j.set("detail", e.detail);
+            Json j;
+            j["id"] = e.id;
+            j["at"] = e.at;
+            j["author"] = e.author;
+            j["action"] = e.action;
+            j["machine"] = e.machine;
+            j["revision"] = e.revision;
+            j["detail"] = e.detail;
             arr.push_back(std::move(j));
         }
-        json::Value root;
-        root.set("audit", std::move(arr));
-        out(root.dump() + "\n");
+        Json root;
+        root["audit"] = std::move(arr);
+        out(json::dump(root) + "\n");
         return ExitOk;
     }
     std::string s;

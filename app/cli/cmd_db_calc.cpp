@@ -104,14 +104,14 @@ std::string remark(const calc::AccelResult& r, const char* which, bool asPrinted
     return s;
 }
 
-json::Value accelJson(const calc::AccelResult& r) {
-    json::Value j;
-    j.set("formula", r.formula);
-    j.set("printed_value", r.printedValue);
-    j.set("consistent_value", r.consistentValue);
-    j.set("described_m_per_s2", r.describedMPerS2);
-    j.set("printed_m_per_s2", r.printedMPerS2);
-    j.set("printed_factor", r.printedFactor());
+Json accelJson(const calc::AccelResult& r) {
+    Json j;
+    j["formula"] = r.formula;
+    j["printed_value"] = r.printedValue;
+    j["consistent_value"] = r.consistentValue;
+    j["described_m_per_s2"] = r.describedMPerS2;
+    j["printed_m_per_s2"] = r.printedMPerS2;
+    j["printed_factor"] = r.printedFactor();
     return j;
 }
 
@@ -248,41 +248,41 @@ int runDbCalc(std::span<const std::string> argv) {
                       "docs/machine-constants.md explains the choice.");
 
     if (a.has("--json")) {
-        json::Value root;
-        root.set("axis", cat::axisName(axis));
+        Json root;
+        root["axis"] = cat::axisName(axis);
         if (machine)
-            root.set("machine", machine->name);
-        json::Array cs;
+            root["machine"] = machine->name;
+        Json cs = Json::array();
         for (const auto& [x, v] : r.values) {
             const int n = cat::axisParam(x, axis);
-            json::Value j;
-            j.set("number", n);
-            j.set("key", cat::cParam(n).key());
-            j.set("name", cat::cParam(n).name);
-            j.set("value", v);
+            Json j;
+            j["number"] = n;
+            j["key"] = cat::cParam(n).key();
+            j["name"] = cat::cParam(n).name;
+            j["value"] = v;
             if (machine)
-                j.set("current", machine->cValue(n));
+                j["current"] = machine->cValue(n);
             cs.push_back(std::move(j));
         }
-        root.set("constants", std::move(cs));
-        json::Value ratio;
-        ratio.set("l", r.ratio.l);
-        ratio.set("n", r.ratio.n);
-        ratio.set("exact", r.ratio.exact);
-        ratio.set("error_ppm", r.ratio.errorPpm);
-        root.set("encoder_ratio", std::move(ratio));
-        root.set("accel1", accelJson(r.accel1));
+        root["constants"] = std::move(cs);
+        Json ratio;
+        ratio["l"] = r.ratio.l;
+        ratio["n"] = r.ratio.n;
+        ratio["exact"] = r.ratio.exact;
+        ratio["error_ppm"] = r.ratio.errorPpm;
+        root["encoder_ratio"] = std::move(ratio);
+        root["accel1"] = accelJson(r.accel1);
         if (r.accel2)
-            root.set("accel2", accelJson(*r.accel2));
-        json::Array steps;
+            root["accel2"] = accelJson(*r.accel2);
+        Json steps = Json::array();
         for (const auto& s : r.steps)
             steps.push_back(s);
-        root.set("steps", std::move(steps));
-        json::Array rem;
+        root["steps"] = std::move(steps);
+        Json rem = Json::array();
         for (const auto& s : remarks)
             rem.push_back(s);
-        root.set("remarks", std::move(rem));
-        std::string text = root.dump() + "\n";
+        root["remarks"] = std::move(rem);
+        std::string text = json::dump(root) + "\n";
         std::fwrite(text.data(), 1, text.size(), stdout);
         return ExitOk;
     }

@@ -81,14 +81,14 @@ int cmdDiff(std::span<const std::string> argv) {
         return ExitUsage;
     const auto changes = profile::diff(pa, pb);
     if (a.has("--json")) {
-        json::Value root;
-        root.set("a", la);
-        root.set("b", lb);
-        json::Array cs;
+        Json root;
+        root["a"] = la;
+        root["b"] = lb;
+        Json cs = Json::array();
         for (const auto& c : changes)
             cs.push_back(changeJson(c));
-        root.set("changes", std::move(cs));
-        out(root.dump() + "\n");
+        root["changes"] = std::move(cs);
+        out(json::dump(root) + "\n");
         return ExitOk;
     }
     std::string s = "--- " + la + "\n+++ " + lb + "\n";

@@ -29,21 +29,21 @@ int cmdMachines(std::span<const std::string> argv) {
         return ExitUsage;
     const auto ms = d->machines();
     if (a.has("--json")) {
-        json::Array arr;
+        Json arr = Json::array();
         for (const auto& m : ms) {
-            json::Value j;
-            j.set("name", m.name);
-            j.set("title", m.title);
-            j.set("revision", m.revision);
-            j.set("created_at", m.createdAt);
-            j.set("changed_at", m.changedAt);
-            j.set("changed_by", m.changedBy);
+            Json j;
+            j["name"] = m.name;
+            j["title"] = m.title;
+            j["revision"] = m.revision;
+            j["created_at"] = m.createdAt;
+            j["changed_at"] = m.changedAt;
+            j["changed_by"] = m.changedBy;
             arr.push_back(std::move(j));
         }
-        json::Value root;
-        root.set("database", t.path.string());
-        root.set("machines", std::move(arr));
-        out(root.dump() + "\n");
+        Json root;
+        root["database"] = t.path.string();
+        root["machines"] = std::move(arr);
+        out(json::dump(root) + "\n");
         return ExitOk;
     }
     std::size_t w = 7;

@@ -102,53 +102,53 @@ std::string historyText(const db::Database& d, const std::string& machine,
     return s;
 }
 
-json::Value historyJson(const db::Database& d, const std::string& machine,
-                        const std::optional<std::string>& key, int limit) {
-    json::Array arr;
+Json historyJson(const db::Database& d, const std::string& machine,
+                 const std::optional<std::string>& key, int limit) {
+    Json arr = Json::array();
     const auto all = d.history(machine, key, limit);
     int shown = 0;
     for (const auto& r : d.revisions(machine)) {
         if (limit > 0 && shown >= limit)
             break;
         ++shown;
-        json::Array cs;
+        Json cs = Json::array();
         for (const auto& e : all)
             if (e.revision == r.revision)
                 cs.push_back(changeJson(e.change));
         if (key && cs.empty())
             continue;
-        json::Value j;
-        j.set("revision", r.revision);
-        j.set("author", r.author);
-        j.set("at", r.at);
-        j.set("summary", r.summary);
-        j.set("changes", std::move(cs));
+        Json j;
+        j["revision"] = r.revision;
+        j["author"] = r.author;
+        j["at"] = r.at;
+        j["summary"] = r.summary;
+        j["changes"] = std::move(cs);
         arr.push_back(std::move(j));
     }
     return arr;
 }
 
-json::Value cJson(const MachineProfile& p, const cat::CParamDef& d, bool full) {
-    json::Value j;
-    j.set("number", d.number);
-    j.set("key", d.key());
-    j.set("axis", cat::axisName(d.axis));
-    j.set("name", d.name);
-    j.set("name_en", d.nameEn);
-    j.set("value", p.cValue(d.number));
-    j.set("unit", cat::unitSymbol(d.unit));
-    j.set("explanation_ru", db::explainCValue(p, d.number, Lang::Ru));
-    j.set("explanation_en", db::explainCValue(p, d.number, Lang::En));
+Json cJson(const MachineProfile& p, const cat::CParamDef& d, bool full) {
+    Json j;
+    j["number"] = d.number;
+    j["key"] = d.key();
+    j["axis"] = cat::axisName(d.axis);
+    j["name"] = d.name;
+    j["name_en"] = d.nameEn;
+    j["value"] = p.cValue(d.number);
+    j["unit"] = cat::unitSymbol(d.unit);
+    j["explanation_ru"] = db::explainCValue(p, d.number, Lang::Ru);
+    j["explanation_en"] = db::explainCValue(p, d.number, Lang::En);
     if (full) {
-        j.set("kind", cat::kindName(d.kind));
-        j.set("min", d.min);
-        j.set("max", d.max);
-        j.set("address", d.address.text());
-        j.set("description_ru", d.descriptionRu);
-        j.set("description_en", d.descriptionEn);
-        j.set("hint_ru", d.hintRu);
-        j.set("hint_en", d.hintEn);
-        j.set("note", d.note);
+        j["kind"] = cat::kindName(d.kind);
+        j["min"] = d.min;
+        j["max"] = d.max;
+        j["address"] = d.address.text();
+        j["description_ru"] = d.descriptionRu;
+        j["description_en"] = d.descriptionEn;
+        j["hint_ru"] = d.hintRu;
+        j["hint_en"] = d.hintEn;
+        j["note"] = d.note;
     }
     return j;
 }
@@ -210,62 +210,60 @@ int cmdShow(std::span<const std::string> argvIn) {
             historyKey = "L" + std::to_string(*programNumber);
 
         if (a.has("--json")) {
-            json::Value root;
-            root.set("name", p.name);
-            root.set("title", p.title);
-            root.set("revision", ref->revision ? *ref->revision : info.revision);
-            root.set("current_revision", info.revision);
-            root.set("changed_at", info.changedAt);
-            root.set("changed_by", info.changedBy);
-            root.set("created_at", info.createdAt);
-            json::Array cs;
+            Json root;
+            root["name"] = p.name;
+            root["title"] = p.title;
+            root["revision"] = ref->revision ? *ref->revision : info.revision;
+            root["current_revision"] = info.revision;
+            root["changed_at"] = info.changedAt;
+            root["changed_by"] = info.changedBy;
+            root["created_at"] = info.createdAt;
+            Json cs = Json::array();
             for (const auto& def : cat::cParams())
                 if (!cNumber || *cNumber == def.number)
                     cs.push_back(cJson(p, def, cNumber.has_value()));
-            root.set("c", std::move(cs));
-            json::Array rs;
+            root["c"] = std::move(cs);
+            Json rs = Json::array();
             for (const auto& [n, v] : p.r)
                 if (!rNumber || *rNumber == n) {
-                    json::Value j;
-                    j.set("number", n);
-                    j.set("value", v);
-                    j.set("meaning_ru", rMeaning(n, Lang::Ru));
-                    j.set("meaning_en", rMeaning(n, Lang::En));
+                    Json j;
+                    j["number"] = n;
+                    j["value"] = v;
+                    j["meaning_ru"] = rMeaning(n, Lang::Ru);
+                    j["meaning_en"] = rMeaning(n, Lang::En);
                     rs.push_back(std::move(j));
                 }
-            root.set("r", std::move(rs));
-            json::Array ps;
+            root["r"] = std::move(rs);
+            Json ps = Json::array();
             for (const auto& [n, text] : p.programs)
                 if (!programNumber || *programNumber == n) {
-                    json::Value j;
-                    j.set("number", n);
-                    j.set("title", db::programTitle(text));
-                    j.set("lines",
-                          static_cast<long long>(std::count(text.begin(), text.end(), '\n')));
-                    j.set("sha256", db::sha256Hex(text));
+                    Json j;
+                    j["number"] = n;
+                    j["title"] = db::programTitle(text);
+                    j["lines"] = static_cast<long long>(std::count(text.begin(), text.end(), '\n'));
+                    j["sha256"] = db::sha256Hex(text);
                     if (programNumber)
-                        j.set("text", text);
+                        j["text"] = text;
                     ps.push_back(std::move(j));
                 }
-            root.set("programs", std::move(ps));
-            json::Value ms = json::Object{};
+            root["programs"] = std::move(ps);
+            Json ms = Json::object();
             for (const auto& [n, text] : p.messages)
-                ms.set("#" + std::to_string(n), text);
-            root.set("messages", std::move(ms));
-            json::Value plc = json::Object{};
+                ms["#" + std::to_string(n)] = text;
+            root["messages"] = std::move(ms);
+            Json plc = Json::object();
             for (cat::PlcGroup g : cat::kPlcGroups)
                 for (const auto& [k, text] : p.plcTexts(g))
-                    plc.set(std::string(1, cat::plcGroupLetter(g)) + (k < 10 ? "0" : "") +
-                                std::to_string(k),
-                            text);
-            root.set("plc_messages", std::move(plc));
-            json::Array fs;
+                    plc[std::string(1, cat::plcGroupLetter(g)) + (k < 10 ? "0" : "") +
+                        std::to_string(k)] = text;
+            root["plc_messages"] = std::move(plc);
+            Json fs = Json::array();
             for (const auto& f : profile::validate(p))
                 fs.push_back(findingJson(f));
-            root.set("findings", std::move(fs));
+            root["findings"] = std::move(fs);
             if (historyLimit)
-                root.set("history", historyJson(*d, info.name, historyKey, *historyLimit));
-            out(root.dump() + "\n");
+                root["history"] = historyJson(*d, info.name, historyKey, *historyLimit);
+            out(json::dump(root) + "\n");
             return ExitOk;
         }
 

@@ -40,45 +40,45 @@ void lineReport(const link::Link& l, const linkplugin::ClientTransport& t) {
 }
 
 
-json::Value liveJson(const link::LiveState& s) {
-    json::Value v;
-    v.set("mode", s.mode);
-    v.set("pc_ready", s.pcReady);
-    v.set("running", s.running);
-    v.set("alarm", s.alarm);
-    json::Value homed;
-    homed.set("X", s.homedX);
-    homed.set("Z", s.homedZ);
-    v.set("homed", std::move(homed));
-    v.set("program", s.program);
-    v.set("frame", s.frame);
-    v.set("override", s.overridePercent);
-    json::Value axes;
+Json liveJson(const link::LiveState& s) {
+    Json v;
+    v["mode"] = s.mode;
+    v["pc_ready"] = s.pcReady;
+    v["running"] = s.running;
+    v["alarm"] = s.alarm;
+    Json homed;
+    homed["X"] = s.homedX;
+    homed["Z"] = s.homedZ;
+    v["homed"] = std::move(homed);
+    v["program"] = s.program;
+    v["frame"] = s.frame;
+    v["override"] = s.overridePercent;
+    Json axes;
     for (const auto& [name, cur, mach, err] : {std::tuple{"X", s.xCurrent, s.xMachine, s.xError},
                                                std::tuple{"Z", s.zCurrent, s.zMachine, s.zError}}) {
-        json::Value a;
-        a.set("current", cur);
-        a.set("machine", mach);
-        a.set("following_error", err);
-        axes.set(name, std::move(a));
+        Json a;
+        a["current"] = cur;
+        a["machine"] = mach;
+        a["following_error"] = err;
+        axes[name] = std::move(a);
     }
-    v.set("axes_disc", std::move(axes));
-    json::Array alarms;
+    v["axes_disc"] = std::move(axes);
+    Json alarms = Json::array();
     for (int n : s.alarms) {
-        json::Value a;
-        a.set("number", n);
+        Json a;
+        a["number"] = n;
         if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(n)) {
-            a.set("text_ru", std::string(m->textRu));
-            a.set("text_en", std::string(m->textEn));
+            a["text_ru"] = std::string(m->textRu);
+            a["text_en"] = std::string(m->textEn);
         }
         alarms.push_back(std::move(a));
     }
-    v.set("alarms", std::move(alarms));
-    v.set("message", s.message);
-    json::Array progs;
+    v["alarms"] = std::move(alarms);
+    v["message"] = s.message;
+    Json progs = Json::array();
     for (int p : s.programs)
         progs.emplace_back(p);
-    v.set("programs", std::move(progs));
+    v["programs"] = std::move(progs);
     return v;
 }
 
@@ -180,7 +180,7 @@ int runLinkQt(std::span<const std::string> argv) {
         link::LiveState s;
         if (link::LinkError e = link::readLive(l, s))
             return fail(e);
-        std::printf("%s\n", asJson ? liveJson(s).dump().c_str() : liveText(s).c_str());
+        std::printf("%s\n", asJson ? json::dump(liveJson(s)).c_str() : liveText(s).c_str());
         return ExitOk;
     }
     if (cmd == "watch") {
@@ -207,7 +207,7 @@ int runLinkQt(std::span<const std::string> argv) {
             link::LiveState s;
             if (link::LinkError e = link::readLive(l, s))
                 return fail(e);
-            const std::string text = asJson ? liveJson(s).dump() : liveText(s);
+            const std::string text = asJson ? json::dump(liveJson(s)) : liveText(s);
             if (asJson || text != last)
                 std::printf("%s\n", text.c_str());
             std::fflush(stdout);

@@ -256,8 +256,8 @@ private:
     machine::Simulation sim_;
 };
 
-json::Array ledList(std::uint32_t bits, int count) {
-    json::Array a;
+Json ledList(std::uint32_t bits, int count) {
+    Json a = Json::array();
     for (int k = 1; k <= count; ++k)
         if ((bits >> (k - 1)) & 1u)
             a.emplace_back(k);
@@ -337,29 +337,29 @@ int runPanel(std::span<const std::string> argv) {
             std::printf("%s\n", line.c_str());
         return ExitOk;
     }
-    json::Value out;
-    json::Array lines;
+    Json out;
+    Json lines = Json::array();
     for (const std::string& line : d.lcd.lines)
         lines.emplace_back(line);
-    out.set("lines", std::move(lines));
-    json::Value leds;
-    leds.set("green", ledList(d.leds.green, 12));
-    leds.set("red", ledList(d.leds.red, 12));
+    out["lines"] = std::move(lines);
+    Json leds;
+    leds["green"] = ledList(d.leds.green, 12);
+    leds["red"] = ledList(d.leds.red, 12);
     // Extensions (docs/panel.md): the L keys lit and the SHIFT LED.
-    leds.set("override", ledList(d.leds.override, 4));
-    leds.set("shift", d.leds.shift);
-    out.set("leds", std::move(leds));
+    leds["override"] = ledList(d.leds.override, 4);
+    leds["shift"] = d.leds.shift;
+    out["leds"] = std::move(leds);
     // Extension: the blinking field, 0-based row and column, or null.
     if (d.lcd.blinkLength > 0) {
-        json::Value blink;
-        blink.set("row", d.lcd.blinkRow);
-        blink.set("column", d.lcd.blinkColumn);
-        blink.set("length", d.lcd.blinkLength);
-        out.set("blink", std::move(blink));
+        Json blink;
+        blink["row"] = d.lcd.blinkRow;
+        blink["column"] = d.lcd.blinkColumn;
+        blink["length"] = d.lcd.blinkLength;
+        out["blink"] = std::move(blink);
     } else {
-        out.set("blink", nullptr);
+        out["blink"] = nullptr;
     }
-    std::printf("%s\n", out.dump().c_str());
+    std::printf("%s\n", json::dump(out).c_str());
     return ExitOk;
 }
 

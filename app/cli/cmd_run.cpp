@@ -29,53 +29,53 @@ namespace k528::cli {
 
 namespace {
 
-json::Value resultJson(const engine::RunResult& r) {
-    json::Value root;
-    root.set("status", engine::runStatusName(r.status));
-    json::Array alarms;
+Json resultJson(const engine::RunResult& r) {
+    Json root;
+    root["status"] = engine::runStatusName(r.status);
+    Json alarms = Json::array();
     for (const engine::AlarmView& a : r.alarms) {
-        json::Value j;
-        j.set("number", a.number);
-        j.set("text_ru", a.textRu);
-        j.set("program", a.program > 0 ? json::Value(a.program) : json::Value(nullptr));
-        j.set("line", a.line > 0 ? json::Value(a.line) : json::Value(nullptr));
+        Json j;
+        j["number"] = a.number;
+        j["text_ru"] = a.textRu;
+        j["program"] = a.program > 0 ? Json(a.program) : Json();
+        j["line"] = a.line > 0 ? Json(a.line) : Json();
         alarms.push_back(std::move(j));
     }
-    root.set("alarms", std::move(alarms));
+    root["alarms"] = std::move(alarms);
     // Extension of cli.md (docs/engine.md): why a run with status "blocked"
     // never started, most direct reason first.
-    json::Array blockers;
+    Json blockers = Json::array();
     for (const engine::RunBlocker& b : r.blockedBy) {
-        json::Value j;
-        j.set("source", b.source);
-        j.set("number", b.number);
-        j.set("text_ru", engine::describeBlocker(b, true));
-        j.set("text_en", engine::describeBlocker(b, false));
+        Json j;
+        j["source"] = b.source;
+        j["number"] = b.number;
+        j["text_ru"] = engine::describeBlocker(b, true);
+        j["text_en"] = engine::describeBlocker(b, false);
         blockers.push_back(std::move(j));
     }
-    root.set("blocked_by", std::move(blockers));
-    root.set("time_s", r.timeS);
-    root.set("home_time_s", r.homeTimeS);
-    root.set("frames", static_cast<long long>(r.frames));
-    json::Value axes;
+    root["blocked_by"] = std::move(blockers);
+    root["time_s"] = r.timeS;
+    root["home_time_s"] = r.homeTimeS;
+    root["frames"] = static_cast<long long>(r.frames);
+    Json axes;
     const char* names[2] = {"X", "Z"};
     for (int i = 0; i < 2; ++i) {
         const engine::RunAxis& a = r.axes[static_cast<std::size_t>(i)];
         if (!a.present)
             continue;
-        json::Value j;
-        j.set("current", units::discToMm(a.currentDisc, a.scale));
-        j.set("machine", units::discToMm(a.machineDisc, a.scale));
-        j.set("max_following_error", units::fractionalDiscToMm(a.maxFollowingErrorDisc, a.scale));
-        axes.set(names[i], std::move(j));
+        Json j;
+        j["current"] = units::discToMm(a.currentDisc, a.scale);
+        j["machine"] = units::discToMm(a.machineDisc, a.scale);
+        j["max_following_error"] = units::fractionalDiscToMm(a.maxFollowingErrorDisc, a.scale);
+        axes[names[i]] = std::move(j);
     }
-    if (axes.isNull())
-        axes = json::Value(json::Object{});
-    root.set("axes", std::move(axes));
-    json::Value rv = json::Value(json::Object{});
+    if (axes.is_null())
+        axes = Json::object();
+    root["axes"] = std::move(axes);
+    Json rv = Json::object();
     for (int n = 0; n < 300; ++n)
-        rv.set(std::to_string(n), static_cast<long long>(r.r[static_cast<std::size_t>(n)]));
-    root.set("r", std::move(rv));
+        rv[std::to_string(n)] = static_cast<long long>(r.r[static_cast<std::size_t>(n)]);
+    root["r"] = std::move(rv);
     return root;
 }
 
@@ -241,7 +241,7 @@ int runRun(std::span<const std::string> argv) {
         return usageError(e.what());
     }
     if (asJson)
-        std::printf("%s\n", resultJson(result).dump().c_str());
+        std::printf("%s\n", json::dump(resultJson(result)).c_str());
     else
         printPlain(result, lang);
     return result.status == engine::RunStatus::Completed ? ExitOk : ExitInputErrors;

@@ -99,31 +99,31 @@ std::string findingText(const profile::Finding& f, Lang lang) {
     return s + ": " + (lang == Lang::Ru ? f.textRu : f.textEn);
 }
 
-json::Value findingJson(const profile::Finding& f) {
-    json::Value j;
-    j.set("severity", f.severity == profile::Severity::Error ? "error" : "warning");
-    j.set("subject", f.subject);
-    j.set("manual_number", f.message ? json::Value(*f.message) : json::Value(nullptr));
-    json::Array cs;
+Json findingJson(const profile::Finding& f) {
+    Json j;
+    j["severity"] = f.severity == profile::Severity::Error ? "error" : "warning";
+    j["subject"] = f.subject;
+    j["manual_number"] = f.message ? Json(*f.message) : Json();
+    Json cs = Json::array();
     for (int n : f.cParams)
         cs.push_back(n);
-    j.set("c", std::move(cs));
-    j.set("message_ru", f.textRu);
-    j.set("message_en", f.textEn);
+    j["c"] = std::move(cs);
+    j["message_ru"] = f.textRu;
+    j["message_en"] = f.textEn;
     return j;
 }
 
-json::Value optJson(const std::optional<std::string>& s) {
-    return s ? json::Value(*s) : json::Value(nullptr);
+Json optJson(const std::optional<std::string>& s) {
+    return s ? Json(*s) : Json();
 }
 
-json::Value changeJson(const profile::Change& c) {
-    json::Value j;
-    j.set("section", profile::diffSectionName(c.section));
-    j.set("key", c.key);
-    j.set("label", c.label);
-    j.set("before", optJson(c.before));
-    j.set("after", optJson(c.after));
+Json changeJson(const profile::Change& c) {
+    Json j;
+    j["section"] = profile::diffSectionName(c.section);
+    j["key"] = c.key;
+    j["label"] = c.label;
+    j["before"] = optJson(c.before);
+    j["after"] = optJson(c.after);
     return j;
 }
 

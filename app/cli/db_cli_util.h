@@ -11,7 +11,7 @@
 #include "profile/diff.h"
 #include "profile/profile.h"
 #include "profile/validate.h"
-#include "util/json.h"
+#include "util/json_fwd.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -46,11 +46,11 @@ std::string padLeft(const std::string& s, std::size_t width);
 
 std::string findingText(const profile::Finding& f, Lang lang);
 
-json::Value findingJson(const profile::Finding& f);
+Json findingJson(const profile::Finding& f);
 
-json::Value optJson(const std::optional<std::string>& s);
+Json optJson(const std::optional<std::string>& s);
 
-json::Value changeJson(const profile::Change& c);
+Json changeJson(const profile::Change& c);
 
 int fail(const std::string& message, int code = ExitUsage);
 

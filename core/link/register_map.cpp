@@ -5,6 +5,7 @@
 #include "util/json.h"
 
 #include <array>
+#include <limits>
 
 namespace k528::link {
 
@@ -15,23 +16,31 @@ struct Reader {
     [[noreturn]] void fail(const std::string& path, const std::string& msg) const {
         throw MapError(source + ": " + path + ": " + msg);
     }
-    const json::Value& need(const json::Value& obj, std::string_view key, const std::string& path) const {
-        const json::Value* v = obj.find(key);
-        if (!v)
+    const Json& need(const Json& obj, std::string_view key, const std::string& path) const {
+        const auto it = obj.find(key); // end() when obj is not an object
+        if (it == obj.end())
             fail(path, "missing key '" + std::string(key) + "'");
-        return *v;
+        return *it;
     }
-    int integer(const json::Value& obj, std::string_view key, const std::string& path, int lo, int hi) const {
-        const json::Value& v = need(obj, key, path);
-        if (!v.isInt() || v.asInt() < lo || v.asInt() > hi)
+    int integer(const Json& obj, std::string_view key, const std::string& path, int lo,
+                int hi) const {
+        const Json& v = need(obj, key, path);
+        // (nlohmann reads a non-negative integer as uint64; one above INT64_MAX is out of range)
+        const bool whole =
+            v.is_number_integer() &&
+            !(v.is_number_unsigned() &&
+              v.get<std::uint64_t>() >
+                  static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()));
+        const std::int64_t n = whole ? v.get<std::int64_t>() : 0;
+        if (!whole || n < lo || n > hi)
             fail(path + "." + std::string(key), "an integer " + std::to_string(lo) + ".." + std::to_string(hi) + " expected");
-        return static_cast<int>(v.asInt());
+        return static_cast<int>(n);
     }
-    std::string text(const json::Value& obj, std::string_view key, const std::string& path) const {
-        const json::Value& v = need(obj, key, path);
-        if (!v.isString())
+    std::string text(const Json& obj, std::string_view key, const std::string& path) const {
+        const Json& v = need(obj, key, path);
+        if (!v.is_string())
             fail(path + "." + std::string(key), "a string expected");
-        return v.asString();
+        return v.get<std::string>();
     }
 };
 
@@ -55,20 +64,20 @@ const Block& RegisterMap::block(BlockKind k) const {
 
 RegisterMap readMap(std::string_view text, std::string_view source) {
     Reader rd{std::string(source)};
-    json::Value doc;
+    Json doc;
     try {
         doc = json::parse(text);
     } catch (const json::ParseError& e) {
         rd.fail("line " + std::to_string(e.line), e.what());
     }
-    if (!doc.isObject())
+    if (!doc.is_object())
         rd.fail("", "an object expected");
     RegisterMap m;
     if (rd.integer(doc, "format", "", 1, 1) != 1)
         rd.fail("format", "format 1 expected");
     m.name = rd.text(doc, "name", "");
     m.title = rd.text(doc, "title", "");
-    const json::Value& line = rd.need(doc, "line", "");
+    const Json& line = rd.need(doc, "line", "");
     m.baud = rd.integer(line, "baud", "line", 1200, 4000000);
     const std::string parity = rd.text(line, "parity", "line");
     if (parity == "none")
@@ -81,16 +90,16 @@ RegisterMap readMap(std::string_view text, std::string_view source) {
         rd.fail("line.parity", "none, even or odd expected");
     m.stopBits = rd.integer(line, "stop_bits", "line", 1, 2);
     m.address = rd.integer(line, "address", "line", 1, 247);
-    const json::Value& lim = rd.need(doc, "limits", "");
+    const Json& lim = rd.need(doc, "limits", "");
     m.maxRead = rd.integer(lim, "read", "limits", 1, 125);
     m.maxWrite = rd.integer(lim, "write", "limits", 1, 123);
 
-    const json::Value& blocks = rd.need(doc, "blocks", "");
-    if (!blocks.isArray())
+    const Json& blocks = rd.need(doc, "blocks", "");
+    if (!blocks.is_array())
         rd.fail("blocks", "an array expected");
-    for (std::size_t i = 0; i < blocks.asArray().size(); ++i) {
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
         const std::string p = "blocks[" + std::to_string(i) + "]";
-        const json::Value& b = blocks.asArray()[i];
+        const Json& b = blocks[i];
         Block blk;
         blk.first = rd.integer(b, "first", p, 0, kReg);
         blk.last = rd.integer(b, "last", p, blk.first, kReg);
@@ -129,7 +138,7 @@ RegisterMap readMap(std::string_view text, std::string_view source) {
             rd.fail("blocks", "the c, r, live and transfer blocks are all needed");
     }
 
-    const json::Value& r = rd.need(doc, "r", "");
+    const Json& r = rd.need(doc, "r", "");
     m.rFirst = rd.integer(r, "first", "r", 0, kReg);
     m.rCount = rd.integer(r, "count", "r", 1, 300);
     rd.integer(r, "registers_each", "r", 2, 2);
@@ -138,7 +147,7 @@ RegisterMap readMap(std::string_view text, std::string_view source) {
     if (rb.first != m.rFirst || rb.count() != 2 * m.rCount)
         rd.fail("r", "does not match the r block");
 
-    const json::Value& lv = rd.need(doc, "live", "");
+    const Json& lv = rd.need(doc, "live", "");
     const Block& lb = m.block(BlockKind::Live);
     auto liveReg = [&](std::string_view key, int words) {
         const int v = rd.integer(lv, key, "live", lb.first, lb.last);
@@ -163,7 +172,7 @@ RegisterMap readMap(std::string_view text, std::string_view source) {
     m.live.programWords = rd.integer(lv, "program_words", "live", 7, 7);
     m.live.programs = liveReg("programs", m.live.programWords);
 
-    const json::Value& tr = rd.need(doc, "transfer", "");
+    const Json& tr = rd.need(doc, "transfer", "");
     const Block& tb = m.block(BlockKind::Transfer);
     auto trReg = [&](std::string_view key) { return rd.integer(tr, key, "transfer", tb.first, tb.last); };
     m.transfer.command = trReg("command");
@@ -179,29 +188,29 @@ RegisterMap readMap(std::string_view text, std::string_view source) {
         rd.fail("transfer.window_bytes", "an even count whose registers fit the transfer block");
     m.transfer.capacityBytes = rd.integer(tr, "capacity_bytes", "transfer", 1, 1 << 30);
 
-    const json::Value& cs = rd.need(doc, "c", "");
-    if (!cs.isArray())
+    const Json& cs = rd.need(doc, "c", "");
+    if (!cs.is_array())
         rd.fail("c", "an array expected");
     const Block& cb = m.block(BlockKind::C);
     std::array<bool, catalog::kCParamCount + 1> seen{};
-    for (std::size_t i = 0; i < cs.asArray().size(); ++i) {
+    for (std::size_t i = 0; i < cs.size(); ++i) {
         const std::string p = "c[" + std::to_string(i) + "]";
-        const json::Value& e = cs.asArray()[i];
+        const Json& e = cs[i];
         CPlacement pl;
         pl.number = rd.integer(e, "c", p, 1, catalog::kCParamCount);
         if (seen[static_cast<std::size_t>(pl.number)])
             rd.fail(p, "C" + std::to_string(pl.number) + " is placed twice");
         seen[static_cast<std::size_t>(pl.number)] = true;
         pl.word = rd.integer(e, "word", p, cb.first, cb.last);
-        if (e.find("bit")) {
+        if (e.contains("bit")) {
             pl.form = CForm::Bit;
             pl.bit = rd.integer(e, "bit", p, 0, 15);
-        } else if (e.find("byte")) {
+        } else if (e.contains("byte")) {
             const std::string b = rd.text(e, "byte", p);
             if (b != "low" && b != "high")
                 rd.fail(p + ".byte", "low or high expected");
             pl.form = b == "low" ? CForm::LowByte : CForm::HighByte;
-        } else if (e.find("words")) {
+        } else if (e.contains("words")) {
             rd.integer(e, "words", p, 2, 2);
             pl.form = CForm::TwoWords;
             if (pl.word + 1 > cb.last)

@@ -5,6 +5,7 @@
 #include "engine/rparams.h"
 #include "plc/description.h"
 #include "profile/builtin.h"
+#include "util/json.h"
 
 #include <algorithm>
 #include <cmath>
@@ -178,7 +179,9 @@ void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescr
     const std::span<const std::int64_t> cv = ctl_->c();
 
     // Equipment first (its signals), then the axes' and the drives' signals.
-    eq_ = buildEquipment(plc::JsonNode(d.equipment, d.source, "equipment"), signals_);
+    const Json noEquipment = Json::object(); // a description not read from a document
+    eq_ = buildEquipment(
+        plc::JsonNode(d.equipment ? *d.equipment : noEquipment, d.source, "equipment"), signals_);
     drivesPowerAct_ = signals_.addActuator("drives.power", "feed drives main contactor");
     drivesOnSig_ = signals_.addSensor("drives.on", "feed drives main contactor closed");
     for (int i = 0; i < engine::kAxisCount; ++i) {

@@ -1,6 +1,7 @@
 #include "plc/description.h"
 
 #include "resources/embedded.h"
+#include "util/json.h"
 
 #include <algorithm>
 #include <cctype>
@@ -169,8 +170,8 @@ const MFunctionDef* MachineDescription::mFunction(int m) const {
 MachineDescription readDescription(std::string_view text, const std::string& source) {
     MachineDescription d;
     d.source = source;
-    d.document = parseDocument(text, source);
-    const JsonNode root(d.document, source, "");
+    d.document = std::make_shared<const Json>(parseDocument(text, source));
+    const JsonNode root(*d.document, source, "");
     root.expectObject({"format", "name", "title", "plc", "modules", "inputs", "outputs", "flags",
                        "logic", "m_functions", "unknown_m", "interlocks", "keys", "leds", "alarms",
                        "work", "positioner", "equipment"});
@@ -487,9 +488,9 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
 
     if (root.has("equipment")) {
         root.child("equipment").expectObject();
-        d.equipment = *d.document.find("equipment");
+        d.equipment = std::make_shared<const Json>(d.document->at("equipment"));
     } else {
-        d.equipment = json::Value(json::Object{});
+        d.equipment = std::make_shared<const Json>(Json::object());
     }
     return d;
 }

@@ -12,10 +12,11 @@
 #pragma once
 
 #include "plc/json_reader.h"
-#include "util/json.h"
+#include "util/json_fwd.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -163,8 +164,9 @@ struct MachineDescription {
     std::vector<SlotDef> slotDefs;
     std::vector<ModeRule> modeRules;
     OverrideDef override_;
-    json::Value equipment; // read by core/machine ("equipment" of the document)
-    json::Value document;  // the whole document (kept for paths in later checks)
+    // Shared by the copies of a description (pointers: this header only declares Json).
+    std::shared_ptr<const Json> equipment; // for core/machine ({} without "equipment")
+    std::shared_ptr<const Json> document;  // the whole document (kept for paths in later checks)
 
     const MFunctionDef* mFunction(int m) const;
 };

@@ -1,6 +1,10 @@
 #include "plc/json_reader.h"
 
+#include "util/json.h"
+
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace k528::plc {
 
@@ -14,23 +18,25 @@ std::string describe(const std::string& source, const std::string& path, const s
     return s;
 }
 
-std::string typeName(const json::Value& v) {
+std::string typeName(const Json& v) {
     switch (v.type()) {
-    case json::Value::Type::Null:
+    case Json::value_t::null:
         return "null";
-    case json::Value::Type::Bool:
+    case Json::value_t::boolean:
         return "true/false";
-    case json::Value::Type::Int:
-    case json::Value::Type::Double:
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float:
         return "a number";
-    case json::Value::Type::String:
+    case Json::value_t::string:
         return "a string";
-    case json::Value::Type::Array:
+    case Json::value_t::array:
         return "an array";
-    case json::Value::Type::Object:
+    case Json::value_t::object:
         return "an object";
+    default:
+        return "?";
     }
-    return "?";
 }
 
 } // namespace
@@ -43,9 +49,49 @@ bool isCommentKey(std::string_view key) {
     return key == "comment" || (!key.empty() && key.front() == '_');
 }
 
-json::Value parseDocument(std::string_view text, const std::string& source) {
+Json parseDocument(std::string_view text, const std::string& source) {
+    // nlohmann keeps one entry for a key given twice; a description must not
+    // have one (one of the two would be silently lost), so the parse stops at
+    // the second with the key's path ("logic", "inputs[0].name").
+    struct Level {
+        bool array = false;
+        std::size_t index = 0;         // of the element being read (arrays)
+        std::vector<std::string> keys; // so far (objects); back() is being read
+    };
+    std::vector<Level> levels;
+    const auto keyCheck = [&](int, Json::parse_event_t event, Json& parsed) {
+        switch (event) {
+        case Json::parse_event_t::object_start:
+        case Json::parse_event_t::array_start:
+            levels.push_back({event == Json::parse_event_t::array_start, 0, {}});
+            break;
+        case Json::parse_event_t::key: {
+            const std::string& key = parsed.get_ref<const std::string&>();
+            std::vector<std::string>& keys = levels.back().keys;
+            if (std::find(keys.begin(), keys.end(), key) != keys.end()) {
+                std::string path;
+                for (std::size_t i = 0; i + 1 < levels.size(); ++i)
+                    path += levels[i].array ? "[" + std::to_string(levels[i].index) + "]"
+                                            : (path.empty() ? "" : ".") + levels[i].keys.back();
+                throw DescriptionError(source, path.empty() ? key : path + "." + key,
+                                       "appears twice");
+            }
+            keys.push_back(key);
+            break;
+        }
+        case Json::parse_event_t::object_end:
+        case Json::parse_event_t::array_end:
+            levels.pop_back();
+            [[fallthrough]];
+        case Json::parse_event_t::value:
+            if (!levels.empty() && levels.back().array)
+                ++levels.back().index;
+            break;
+        }
+        return true;
+    };
     try {
-        return json::parse(text);
+        return json::parse(text, keyCheck);
     } catch (const json::ParseError& e) {
         throw DescriptionError(source, "", e.what());
     }
@@ -63,19 +109,27 @@ std::string JsonNode::childPath(std::string_view key) const {
     return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
 }
 
+bool JsonNode::isObject() const {
+    return v_->is_object();
+}
+
+bool JsonNode::isArray() const {
+    return v_->is_array();
+}
+
+bool JsonNode::isString() const {
+    return v_->is_string();
+}
+
 void JsonNode::expectObject() const {
-    if (!v_->isObject())
+    // (a key given twice is refused by parseDocument)
+    if (!v_->is_object())
         fail("expected an object, found " + typeName(*v_));
-    const json::Object& o = v_->asObject();
-    for (std::size_t i = 0; i < o.size(); ++i)
-        for (std::size_t j = 0; j < i; ++j)
-            if (o[i].first == o[j].first)
-                failAt(o[i].first, "appears twice");
 }
 
 void JsonNode::expectObject(std::initializer_list<std::string_view> allowed) const {
     expectObject();
-    for (const auto& [k, v] : v_->asObject()) {
+    for (const auto& [k, v] : v_->get_ref<const Json::object_t&>()) {
         if (isCommentKey(k))
             continue;
         bool ok = false;
@@ -91,25 +145,25 @@ void JsonNode::expectObject(std::initializer_list<std::string_view> allowed) con
 }
 
 bool JsonNode::has(std::string_view key) const {
-    return v_->isObject() && v_->find(key) != nullptr;
+    return v_->is_object() && v_->contains(key);
 }
 
 JsonNode JsonNode::child(std::string_view key) const {
-    const json::Value* c = v_->isObject() ? v_->find(key) : nullptr;
-    if (!c)
-        failAt(key, "is missing");
-    return JsonNode(*c, source_, childPath(key));
+    if (v_->is_object())
+        if (const auto it = v_->find(key); it != v_->end())
+            return JsonNode(*it, source_, childPath(key));
+    failAt(key, "is missing");
 }
 
 JsonNode JsonNode::element(std::size_t i) const {
-    return JsonNode(v_->asArray()[i], source_, path_ + "[" + std::to_string(i) + "]");
+    return JsonNode(v_->at(i), source_, path_ + "[" + std::to_string(i) + "]");
 }
 
 std::vector<JsonNode> JsonNode::elements() const {
-    if (!v_->isArray())
+    if (!v_->is_array())
         fail("expected an array, found " + typeName(*v_));
     std::vector<JsonNode> out;
-    for (std::size_t i = 0; i < v_->asArray().size(); ++i)
+    for (std::size_t i = 0; i < v_->size(); ++i)
         out.push_back(element(i));
     return out;
 }
@@ -122,17 +176,17 @@ std::vector<JsonNode> JsonNode::optionalArray(std::string_view key) const {
 
 std::vector<std::string> JsonNode::keys() const {
     std::vector<std::string> k;
-    if (v_->isObject())
-        for (const auto& [name, v] : v_->asObject())
+    if (v_->is_object())
+        for (const auto& [name, v] : v_->get_ref<const Json::object_t&>())
             if (!isCommentKey(name))
                 k.push_back(name);
     return k;
 }
 
 std::string JsonNode::asString() const {
-    if (!v_->isString())
+    if (!v_->is_string())
         fail("expected a string, found " + typeName(*v_));
-    return v_->asString();
+    return v_->get<std::string>();
 }
 
 std::string JsonNode::string(std::string_view key) const {
@@ -144,16 +198,29 @@ std::string JsonNode::string(std::string_view key, std::string_view fallback) co
 }
 
 std::int64_t JsonNode::asInteger(std::int64_t min, std::int64_t max) const {
-    if (!v_->isNumber())
+    if (!v_->is_number())
         fail("expected a whole number, found " + typeName(*v_));
-    if (!v_->isInt()) {
-        const double d = v_->asDouble();
+    const auto outside = [&](const std::string& n) {
+        fail(n + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+    };
+    std::int64_t n = 0;
+    if (v_->is_number_float()) { // 2.0 is the whole number 2
+        const double d = v_->get<double>();
         if (d != std::floor(d))
             fail("expected a whole number, found " + json::formatDouble(d));
+        if (!(std::fabs(d) < 9.2e18))
+            outside(json::formatDouble(d));
+        n = static_cast<std::int64_t>(d);
+    } else if (v_->is_number_unsigned()) {
+        const std::uint64_t u = v_->get<std::uint64_t>();
+        if (u > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
+            outside(std::to_string(u));
+        n = static_cast<std::int64_t>(u);
+    } else {
+        n = v_->get<std::int64_t>();
     }
-    const std::int64_t n = v_->asInt();
     if (n < min || n > max)
-        fail(std::to_string(n) + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+        outside(std::to_string(n));
     return n;
 }
 
@@ -168,9 +235,9 @@ std::int64_t JsonNode::integer(std::string_view key, std::int64_t min, std::int6
 
 double JsonNode::number(std::string_view key, double min, double max) const {
     const JsonNode c = child(key);
-    if (!c.value().isNumber())
+    if (!c.value().is_number())
         c.fail("expected a number, found " + typeName(c.value()));
-    const double d = c.value().asDouble();
+    const double d = c.value().get<double>();
     if (!(d >= min && d <= max))
         c.fail(json::formatDouble(d) + " is outside " + json::formatDouble(min) + ".." +
                json::formatDouble(max));
@@ -185,17 +252,17 @@ bool JsonNode::boolean(std::string_view key, bool fallback) const {
     if (!has(key))
         return fallback;
     const JsonNode c = child(key);
-    if (!c.value().isBool())
+    if (!c.value().is_boolean())
         c.fail("expected true or false, found " + typeName(c.value()));
-    return c.value().asBool();
+    return c.value().get<bool>();
 }
 
 std::vector<std::string> JsonNode::strings(std::string_view key) const {
     if (!has(key))
         return {};
     const JsonNode c = child(key);
-    if (c.value().isString())
-        return {c.value().asString()};
+    if (c.value().is_string())
+        return {c.value().get<std::string>()};
     std::vector<std::string> out;
     for (const JsonNode& e : c.elements())
         out.push_back(e.asString());

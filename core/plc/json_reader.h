@@ -5,7 +5,7 @@
 // keys "comment" and those starting with '_' are comments and skipped.
 #pragma once
 
-#include "util/json.h"
+#include "util/json_fwd.h"
 
 #include <cstdint>
 #include <initializer_list>
@@ -31,18 +31,18 @@ private:
 // One node of the document being read, with its path.
 class JsonNode {
 public:
-    JsonNode(const json::Value& v, std::string source, std::string path)
+    JsonNode(const Json& v, std::string source, std::string path)
         : v_(&v), source_(std::move(source)), path_(std::move(path)) {}
 
-    const json::Value& value() const { return *v_; }
+    const Json& value() const { return *v_; }
     const std::string& path() const { return path_; }
     const std::string& source() const { return source_; }
     [[noreturn]] void fail(const std::string& message) const;
     [[noreturn]] void failAt(std::string_view key, const std::string& message) const;
 
-    bool isObject() const { return v_->isObject(); }
-    bool isArray() const { return v_->isArray(); }
-    bool isString() const { return v_->isString(); }
+    bool isObject() const;
+    bool isArray() const;
+    bool isString() const;
 
     // This node must be an object whose keys are among `allowed` (comments aside).
     void expectObject(std::initializer_list<std::string_view> allowed) const;
@@ -69,12 +69,13 @@ public:
 
 private:
     std::string childPath(std::string_view key) const;
-    const json::Value* v_;
+    const Json* v_;
     std::string source_, path_;
 };
 
-// Parses `text` as JSON; a syntax error becomes a DescriptionError with its line and column.
-json::Value parseDocument(std::string_view text, const std::string& source);
+// Parses `text` as JSON; a syntax error becomes a DescriptionError with its
+// line and column, a key given twice in one object one with the key's path.
+Json parseDocument(std::string_view text, const std::string& source);
 
 bool isCommentKey(std::string_view key);
 

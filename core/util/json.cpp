@@ -2,11 +2,8 @@
 
 #include "util/utf8.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <charconv>
-#include <limits>
 #include <cmath>
 #include <cstring>
 
@@ -14,114 +11,43 @@ namespace k528::json {
 
 namespace {
 
-[[noreturn]] void typeError(const char* expected) {
-    throw std::runtime_error(std::string("JSON value is not ") + expected);
+constexpr int maxDepth = 256;
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse
+// error at line 1, column 6: syntax error while parsing value - " prefix.
+std::string message(const Json::parse_error& e) {
+    std::string m = e.what();
+    for (const char* marker : {" - ", ": "}) {
+        const auto p = m.rfind(marker);
+        if (p != std::string::npos) {
+            m = m.substr(p + std::strlen(marker));
+            break;
+        }
+    }
+    return m;
 }
 
-// Builds a Value from nlohmann-json's SAX events: the syntax is nlohmann's
-// (RFC 8259, strict), the tree is ours (insertion order, exact int64).
-class Builder {
-public:
-    explicit Builder(std::string_view text) : text_(text) {}
-
-    bool null() { return add(Value()); }
-    bool boolean(bool b) { return add(Value(b)); }
-    bool number_integer(std::int64_t i) { return add(Value(static_cast<long long>(i))); }
-    bool number_unsigned(std::uint64_t u) {
-        if (u <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
-            return add(Value(static_cast<long long>(u)));
-        return add(Value(static_cast<double>(u)));
-    }
-    bool number_float(double d, const std::string&) { return add(Value(d)); }
-    bool string(std::string& s) { return add(Value(std::move(s))); }
-    bool binary(std::vector<std::uint8_t>&) { return false; } // not in JSON text
-    bool start_object(std::size_t) { return open(Value(Object{})); }
-    bool key(std::string& k) {
-        key_ = std::move(k);
-        return true;
-    }
-    bool end_object() { return close(); }
-    bool start_array(std::size_t) { return open(Value(Array{})); }
-    bool end_array() { return close(); }
-    bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) {
-        // A \u escape that is a lone surrogate is reported at its last hex
-        // digit; the column points past the escape, where the string goes wrong.
-        const std::string message = what(e);
-        fail(message.find("surrogate") != std::string::npos ? position + 1 : position, message);
-    }
-
-    Value result() { return std::move(root_); }
-
-private:
-    static constexpr std::size_t maxDepth = 256;
-    std::string_view text_;
-    Value root_;
-    std::vector<Value*> stack_;
-    std::string key_;
-
-    // nlohmann's message without its "[json.exception.parse_error.101] parse
-    // error at line 1, column 6: syntax error while parsing value - " prefix.
-    static std::string what(const nlohmann::detail::exception& e) {
-        std::string m = e.what();
-        for (const char* marker : {" - ", ": "}) {
-            const auto p = m.rfind(marker);
-            if (p != std::string::npos) {
-                m = m.substr(p + std::strlen(marker));
-                break;
-            }
+// The error at nlohmann's byte count (the offending byte included), with
+// our line and column.
+ParseError positioned(std::string_view text, const Json::parse_error& e) {
+    const std::string what = message(e);
+    // A \u escape that is a lone surrogate is reported at its last hex
+    // digit; the column points past the escape, where the string goes wrong.
+    const std::size_t position = what.find("surrogate") != std::string::npos ? e.byte + 1 : e.byte;
+    int line = 1, col = 1;
+    const std::size_t end = position == 0 ? 0 : std::min(position - 1, text.size());
+    for (std::size_t i = 0; i < end; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            col = 1;
+        } else {
+            ++col;
         }
-        return m;
     }
-
-    // `position` counts the bytes read, the offending one included.
-    [[noreturn]] void fail(std::size_t position, const std::string& message) const {
-        int line = 1, col = 1;
-        const std::size_t end = position == 0 ? 0 : std::min(position - 1, text_.size());
-        for (std::size_t i = 0; i < end; ++i) {
-            if (text_[i] == '\n') {
-                ++line;
-                col = 1;
-            } else {
-                ++col;
-            }
-        }
-        throw ParseError("JSON line " + std::to_string(line) + ", column " + std::to_string(col) +
-                             ": " + message,
-                         line, col);
-    }
-
-    Value* place(Value v) {
-        if (stack_.empty()) {
-            root_ = std::move(v);
-            return &root_;
-        }
-        Value& parent = *stack_.back();
-        if (parent.isArray()) {
-            parent.asArray().push_back(std::move(v));
-            return &parent.asArray().back();
-        }
-        parent.asObject().emplace_back(std::move(key_), std::move(v));
-        return &parent.asObject().back().second;
-    }
-    bool add(Value v) {
-        place(std::move(v));
-        return true;
-    }
-    bool open(Value v) {
-        if (stack_.size() >= maxDepth)
-            throw ParseError("JSON nesting deeper than " + std::to_string(maxDepth), 1, 1);
-        stack_.push_back(place(std::move(v)));
-        return true;
-    }
-    bool close() {
-        stack_.pop_back();
-        return true;
-    }
-};
-
-} // namespace
-
-namespace {
+    return ParseError("JSON line " + std::to_string(line) + ", column " + std::to_string(col) +
+                          ": " + what,
+                      line, col);
+}
 
 void newline(std::string& out, int indent, int depth) {
     if (indent < 0)
@@ -130,94 +56,83 @@ void newline(std::string& out, int indent, int depth) {
     out.append(static_cast<std::size_t>(indent * depth), ' ');
 }
 
+void write(std::string& out, const Json& v, int indent, int depth) {
+    switch (v.type()) {
+    case Json::value_t::boolean:
+        out += v.get<bool>() ? "true" : "false";
+        break;
+    case Json::value_t::number_integer:
+        out += std::to_string(v.get<std::int64_t>());
+        break;
+    case Json::value_t::number_unsigned:
+        out += std::to_string(v.get<std::uint64_t>());
+        break;
+    case Json::value_t::number_float:
+        out += formatDouble(v.get<double>());
+        break;
+    case Json::value_t::string:
+        writeString(out, v.get_ref<const std::string&>());
+        break;
+    case Json::value_t::array: {
+        out += '[';
+        bool first = true;
+        for (const Json& e : v) {
+            if (!first)
+                out += ',';
+            first = false;
+            newline(out, indent, depth + 1);
+            write(out, e, indent, depth + 1);
+        }
+        if (!v.empty())
+            newline(out, indent, depth);
+        out += ']';
+        break;
+    }
+    case Json::value_t::object: {
+        out += '{';
+        bool first = true;
+        for (const auto& [key, e] : v.get_ref<const Json::object_t&>()) {
+            if (!first)
+                out += ',';
+            first = false;
+            newline(out, indent, depth + 1);
+            writeString(out, key);
+            out += indent < 0 ? ":" : ": ";
+            write(out, e, indent, depth + 1);
+        }
+        if (!v.empty())
+            newline(out, indent, depth);
+        out += '}';
+        break;
+    }
+    default: // null; binary and discarded do not come from JSON text
+        out += "null";
+        break;
+    }
+}
+
 } // namespace
 
-bool Value::asBool() const {
-    if (!isBool())
-        typeError("a boolean");
-    return std::get<bool>(v_);
-}
-
-std::int64_t Value::asInt() const {
-    if (isInt())
-        return std::get<std::int64_t>(v_);
-    if (type() == Type::Double) {
-        const double d = std::get<double>(v_);
-        if (std::nearbyint(d) == d && std::fabs(d) < 9.2e18)
-            return static_cast<std::int64_t>(d);
+Json parse(std::string_view text, const Json::parser_callback_t& callback) {
+    const Json::parser_callback_t check = [&](int depth, Json::parse_event_t event, Json& parsed) {
+        if ((event == Json::parse_event_t::object_start ||
+             event == Json::parse_event_t::array_start) &&
+            depth >= maxDepth)
+            throw ParseError("JSON nesting deeper than " + std::to_string(maxDepth), 1, 1);
+        return !callback || callback(depth, event, parsed);
+    };
+    try {
+        return Json::parse(text.begin(), text.end(), check, true, false);
+    } catch (const Json::parse_error& e) {
+        throw positioned(text, e);
     }
-    typeError("an integer");
 }
 
-double Value::asDouble() const {
-    if (isInt())
-        return static_cast<double>(std::get<std::int64_t>(v_));
-    if (type() == Type::Double)
-        return std::get<double>(v_);
-    typeError("a number");
+std::string dump(const Json& v, int indent) {
+    std::string out;
+    write(out, v, indent, 0);
+    return out;
 }
-
-const std::string& Value::asString() const {
-    if (!isString())
-        typeError("a string");
-    return std::get<std::string>(v_);
-}
-
-const Array& Value::asArray() const {
-    if (!isArray())
-        typeError("an array");
-    return std::get<Array>(v_);
-}
-
-Array& Value::asArray() {
-    if (!isArray())
-        typeError("an array");
-    return std::get<Array>(v_);
-}
-
-const Object& Value::asObject() const {
-    if (!isObject())
-        typeError("an object");
-    return std::get<Object>(v_);
-}
-
-Object& Value::asObject() {
-    if (!isObject())
-        typeError("an object");
-    return std::get<Object>(v_);
-}
-
-const Value* Value::find(std::string_view key) const {
-    if (!isObject())
-        return nullptr;
-    for (const auto& [k, v] : std::get<Object>(v_))
-        if (k == key)
-            return &v;
-    return nullptr;
-}
-
-Value& Value::set(std::string_view key, Value v) {
-    if (isNull())
-        v_ = Object{};
-    auto& o = asObject();
-    for (auto& [k, existing] : o) {
-        if (k == key) {
-            existing = std::move(v);
-            return existing;
-        }
-    }
-    o.emplace_back(std::string(key), std::move(v));
-    return o.back().second;
-}
-
-Value& Value::push(Value v) {
-    if (isNull())
-        v_ = Array{};
-    auto& a = asArray();
-    a.push_back(std::move(v));
-    return a.back();
-}
-
 
 void writeString(std::string& out, std::string_view s) {
     // JSON text is UTF-8: each byte that is not part of a well-formed
@@ -240,7 +155,7 @@ void writeString(std::string& out, std::string_view s) {
     } else {
         text.assign(s);
     }
-    out += nlohmann::json(std::move(text)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    out += Json(std::move(text)).dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
 std::string formatDouble(double d) {
@@ -252,69 +167,6 @@ std::string formatDouble(double d) {
     auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, d);
     (void)ec;
     return std::string(buf, ptr);
-}
-
-void Value::write(std::string& out, int indent, int depth) const {
-    switch (type()) {
-    case Type::Null:
-        out += "null";
-        break;
-    case Type::Bool:
-        out += std::get<bool>(v_) ? "true" : "false";
-        break;
-    case Type::Int:
-        out += std::to_string(std::get<std::int64_t>(v_));
-        break;
-    case Type::Double:
-        out += formatDouble(std::get<double>(v_));
-        break;
-    case Type::String:
-        writeString(out, std::get<std::string>(v_));
-        break;
-    case Type::Array: {
-        const auto& a = std::get<Array>(v_);
-        out += '[';
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            if (i)
-                out += ',';
-            newline(out, indent, depth + 1);
-            a[i].write(out, indent, depth + 1);
-        }
-        if (!a.empty())
-            newline(out, indent, depth);
-        out += ']';
-        break;
-    }
-    case Type::Object: {
-        const auto& o = std::get<Object>(v_);
-        out += '{';
-        for (std::size_t i = 0; i < o.size(); ++i) {
-            if (i)
-                out += ',';
-            newline(out, indent, depth + 1);
-            writeString(out, o[i].first);
-            out += indent < 0 ? ":" : ": ";
-            o[i].second.write(out, indent, depth + 1);
-        }
-        if (!o.empty())
-            newline(out, indent, depth);
-        out += '}';
-        break;
-    }
-    }
-}
-
-std::string Value::dump(int indent) const {
-    std::string out;
-    write(out, indent, 0);
-    return out;
-}
-
-Value parse(std::string_view text) {
-    Builder b(text);
-    nlohmann::json::sax_parse(text.begin(), text.end(), &b, nlohmann::json::input_format_t::json, true,
-                              false);
-    return b.result();
 }
 
 } // namespace k528::json

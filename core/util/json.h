@@ -1,25 +1,17 @@
-// A small JSON value read with nlohmann-json and written deterministically.
-//
-// Core may use only the standard library, Eigen and sqlite3, so the CLI's
-// --json output and the machine descriptions of resources/machines are read
-// and written with this. Objects keep their insertion order (output is stable
-// and diff-friendly); integers are kept exactly as 64-bit values.
+// JSON values are nlohmann-json's (Json = nlohmann::ordered_json, see
+// util/json_fwd.h). What the project adds: parsing that reports a line and a
+// column, and the deterministic writer of the CLI's --json output and tests.
 #pragma once
 
-#include <cstdint>
-#include <map>
+#include "util/json_fwd.h"
+
+#include <nlohmann/json.hpp>
+
 #include <stdexcept>
 #include <string>
 #include <string_view>
-#include <utility>
-#include <variant>
-#include <vector>
 
 namespace k528::json {
-
-class Value;
-using Array = std::vector<Value>;
-using Object = std::vector<std::pair<std::string, Value>>; // insertion order
 
 struct ParseError : std::runtime_error {
     ParseError(const std::string& what, int line, int column)
@@ -28,64 +20,17 @@ struct ParseError : std::runtime_error {
     int column; // 1-based, in bytes
 };
 
-class Value {
-public:
-    enum class Type { Null, Bool, Int, Double, String, Array, Object };
+// Parses one JSON document (RFC 8259; no comments, no trailing commas; at most
+// 256 arrays and objects deep). Throws ParseError with the position of the
+// first problem. `callback` (nlohmann's parser callback) sees every event; it
+// may throw to refuse the document. A key given twice in one object keeps its
+// first place and its last value (nlohmann's rule).
+Json parse(std::string_view text, const Json::parser_callback_t& callback = nullptr);
 
-    Value() = default;
-    Value(std::nullptr_t) {}
-    Value(bool b) : v_(b) {}
-    Value(int i) : v_(static_cast<std::int64_t>(i)) {}
-    Value(long i) : v_(static_cast<std::int64_t>(i)) {}
-    Value(long long i) : v_(static_cast<std::int64_t>(i)) {}
-    Value(unsigned i) : v_(static_cast<std::int64_t>(i)) {}
-    Value(unsigned long i) : v_(static_cast<std::int64_t>(i)) {}
-    Value(double d) : v_(d) {}
-    Value(const char* s) : v_(std::string(s)) {}
-    Value(std::string s) : v_(std::move(s)) {}
-    Value(std::string_view s) : v_(std::string(s)) {}
-    Value(Array a) : v_(std::move(a)) {}
-    Value(Object o) : v_(std::move(o)) {}
-
-    Type type() const { return static_cast<Type>(v_.index()); }
-    bool isNull() const { return type() == Type::Null; }
-    bool isBool() const { return type() == Type::Bool; }
-    bool isInt() const { return type() == Type::Int; }
-    bool isNumber() const { return type() == Type::Int || type() == Type::Double; }
-    bool isString() const { return type() == Type::String; }
-    bool isArray() const { return type() == Type::Array; }
-    bool isObject() const { return type() == Type::Object; }
-
-    // Accessors throw std::runtime_error naming the expected type on mismatch.
-    bool asBool() const;
-    std::int64_t asInt() const;  // an Int, or a Double with an integral value
-    double asDouble() const;     // Int or Double
-    const std::string& asString() const;
-    const Array& asArray() const;
-    Array& asArray();
-    const Object& asObject() const;
-    Object& asObject();
-
-    // Object access. find() returns nullptr when absent (or not an object).
-    const Value* find(std::string_view key) const;
-    // Inserts or replaces `key` (turns a Null into an Object first).
-    Value& set(std::string_view key, Value v);
-    // Appends to an Array (turns a Null into an Array first).
-    Value& push(Value v);
-
-    // Compact (indent < 0) or pretty-printed with `indent` spaces.
-    std::string dump(int indent = -1) const;
-
-    friend bool operator==(const Value& a, const Value& b) { return a.v_ == b.v_; }
-
-private:
-    std::variant<std::nullptr_t, bool, std::int64_t, double, std::string, Array, Object> v_{nullptr};
-    void write(std::string& out, int indent, int depth) const;
-};
-
-// Parses one JSON document (RFC 8259; no comments, no trailing commas).
-// Throws ParseError with the position of the first problem.
-Value parse(std::string_view text);
+// Compact (indent < 0) or pretty-printed with `indent` spaces, like
+// Json::dump, except that numbers are written by formatDouble ("100", not
+// "100.0") and strings by writeString (invalid UTF-8 does not throw).
+std::string dump(const Json& v, int indent = -1);
 
 // Appends `s` to `out` as a JSON string literal (UTF-8 kept as is; a byte
 // that is not part of well-formed UTF-8 becomes U+FFFD, so the output is

@@ -26,7 +26,7 @@ struct Files {
     }
 };
 
-json::Value parseJson(const CliResult& r) {
+Json parseJson(const CliResult& r) {
     return json::parse(r.out.toStdString());
 }
 
@@ -38,32 +38,32 @@ private slots:
     void jsonShape() {
         const auto r = runK528({"run", "--json", samples() + "lathe-shaft.k528"});
         QCOMPARE(r.exitCode, 0);
-        const json::Value v = parseJson(r);
-        QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("completed"));
-        QVERIFY(v.find("alarms")->isArray());
-        QCOMPARE(v.find("alarms")->asArray().size(), std::size_t(0));
-        QVERIFY(v.find("time_s")->asDouble() > 100);
-        QVERIFY(v.find("home_time_s")->asDouble() > 1);
-        QVERIFY(v.find("frames")->asInt() > 20);
-        const json::Value* axes = v.find("axes");
-        QVERIFY(axes && axes->isObject());
+        const Json v = parseJson(r);
+        QCOMPARE(QString::fromStdString(v.at("status").get<std::string>()), QString("completed"));
+        QVERIFY(v.at("alarms").is_array());
+        QCOMPARE(v.at("alarms").size(), std::size_t(0));
+        QVERIFY(v.at("time_s").get<double>() > 100);
+        QVERIFY(v.at("home_time_s").get<double>() > 1);
+        QVERIFY(v.at("frames").get<std::int64_t>() > 20);
+        const Json& axes = v.at("axes");
+        QVERIFY(axes.is_object());
         // The shaft program ends with G0 X100 Z50 (X on the diameter).
-        QVERIFY(std::fabs(axes->find("X")->find("current")->asDouble() - 100.0) <= 0.01);
-        QVERIFY(std::fabs(axes->find("X")->find("machine")->asDouble() - 100.0) <= 0.01);
-        QVERIFY(std::fabs(axes->find("Z")->find("current")->asDouble() - 50.0) <= 0.01);
-        const json::Value* rv = v.find("r");
-        QCOMPARE(rv->asObject().size(), std::size_t(300));
-        QCOMPARE(rv->asObject().front().first, std::string("0"));
-        QCOMPARE(rv->asObject().back().first, std::string("299"));
-        QCOMPARE(rv->find("11")->asInt(), 2000); // R11 of the program
+        QVERIFY(std::fabs(axes.at("X").at("current").get<double>() - 100.0) <= 0.01);
+        QVERIFY(std::fabs(axes.at("X").at("machine").get<double>() - 100.0) <= 0.01);
+        QVERIFY(std::fabs(axes.at("Z").at("current").get<double>() - 50.0) <= 0.01);
+        const Json& rv = v.at("r");
+        QCOMPARE(rv.size(), std::size_t(300));
+        QCOMPARE(rv.begin().key(), std::string("0"));
+        QCOMPARE(std::prev(rv.end()).key(), std::string("299"));
+        QCOMPARE(rv.at("11").get<std::int64_t>(), 2000); // R11 of the program
         // The key order of cli.md, with our extension "blocked_by" after
         // "alarms" (docs/engine.md): empty when the run started.
         std::vector<std::string> keys;
-        for (const auto& [k, val] : v.asObject())
-            keys.push_back(k);
+        for (const auto& item : v.items())
+            keys.push_back(item.key());
         QCOMPARE(keys, (std::vector<std::string>{"status", "alarms", "blocked_by", "time_s",
                                                  "home_time_s", "frames", "axes", "r"}));
-        QVERIFY(v.find("blocked_by")->asArray().empty());
+        QVERIFY(v.at("blocked_by").empty());
     }
     void deterministic() {
         const QStringList args{"run", "--json", "--profile", "grinder-205",
@@ -80,20 +80,21 @@ private slots:
         const QString p = f.write("ovf.k528", "%L3\nN1 R1=2147483647\nN2 R1=R1+1\n");
         const auto r = runK528({"run", "--json", p});
         QCOMPARE(r.exitCode, 1);
-        const json::Value v = parseJson(r);
-        QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("alarm"));
-        const json::Value& a = v.find("alarms")->asArray().at(0);
-        QCOMPARE(a.find("number")->asInt(), 46);
-        QCOMPARE(QString::fromStdString(a.find("text_ru")->asString()), QString("Переполнение"));
-        QCOMPARE(a.find("program")->asInt(), 3);
-        QCOMPARE(a.find("line")->asInt(), 3);
+        const Json v = parseJson(r);
+        QCOMPARE(QString::fromStdString(v.at("status").get<std::string>()), QString("alarm"));
+        const Json& a = v.at("alarms").at(0);
+        QCOMPARE(a.at("number").get<std::int64_t>(), 46);
+        QCOMPARE(QString::fromStdString(a.at("text_ru").get<std::string>()),
+                 QString("Переполнение"));
+        QCOMPARE(a.at("program").get<std::int64_t>(), 3);
+        QCOMPARE(a.at("line").get<std::int64_t>(), 3);
         // --no-home on a machine that needs it: 42.
         const auto n = runK528({"run", "--json", "--no-home", samples() + "lathe-grooves.k528"});
         QCOMPARE(n.exitCode, 1);
-        const json::Value w = parseJson(n);
-        QCOMPARE(w.find("alarms")->asArray().at(0).find("number")->asInt(), 42);
-        QVERIFY(w.find("alarms")->asArray().at(0).find("line")->isNull());
-        QCOMPARE(w.find("home_time_s")->asDouble(), 0.0);
+        const Json w = parseJson(n);
+        QCOMPARE(w.at("alarms").at(0).at("number").get<std::int64_t>(), 42);
+        QVERIFY(w.at("alarms").at(0).at("line").is_null());
+        QCOMPARE(w.at("home_time_s").get<double>(), 0.0);
     }
     // The wheel outside R205..R206: the positioner blocks the program with
     // 44 «D круга < Dmin» / 43 «D круга > Dmax» (appendix М), never a
@@ -104,12 +105,13 @@ private slots:
             const auto r = runK528({"run", "--json", "--profile", "grinder-205", "--r", r207,
                                     samples() + "grinder-bore-205.k528"});
             QCOMPARE(r.exitCode, 1);
-            const json::Value v = parseJson(r);
-            QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("alarm"));
-            QCOMPARE(v.find("frames")->asInt(), 0);
-            const json::Value& a = v.find("alarms")->asArray().at(0);
-            QCOMPARE(a.find("number")->asInt(), number);
-            QCOMPARE(QString::fromStdString(a.find("text_ru")->asString()), QString::fromUtf8(text));
+            const Json v = parseJson(r);
+            QCOMPARE(QString::fromStdString(v.at("status").get<std::string>()), QString("alarm"));
+            QCOMPARE(v.at("frames").get<std::int64_t>(), 0);
+            const Json& a = v.at("alarms").at(0);
+            QCOMPARE(a.at("number").get<std::int64_t>(), number);
+            QCOMPARE(QString::fromStdString(a.at("text_ru").get<std::string>()),
+                     QString::fromUtf8(text));
         }
     }
     void timeout() {
@@ -117,39 +119,39 @@ private slots:
         const QString p = f.write("loop.k528", "%L1\nN1 G1 Z-1 FZ600\nN2 G1 Z0\nN3 GOTO 1\n");
         const auto r = runK528({"run", "--json", "--max-seconds", "5", p});
         QCOMPARE(r.exitCode, 1);
-        const json::Value v = parseJson(r);
-        QCOMPARE(QString::fromStdString(v.find("status")->asString()), QString("timeout"));
-        QVERIFY(std::fabs(v.find("time_s")->asDouble() - 5.0) < 0.01);
+        const Json v = parseJson(r);
+        QCOMPARE(QString::fromStdString(v.at("status").get<std::string>()), QString("timeout"));
+        QVERIFY(std::fabs(v.at("time_s").get<double>() - 5.0) < 0.01);
         // --override is the program's: the homing runs at 100 % and the
         // program at 0 % stands still until the limit.
         const auto z = runK528({"run", "--json", "--override", "0", "--max-seconds", "2", p});
         QCOMPARE(z.exitCode, 1);
-        const json::Value w = parseJson(z);
-        QCOMPARE(QString::fromStdString(w.find("status")->asString()), QString("timeout"));
-        QCOMPARE(w.find("home_time_s")->asDouble(), v.find("home_time_s")->asDouble());
-        QVERIFY(std::fabs(w.find("time_s")->asDouble() - 2.0) < 0.01);
+        const Json w = parseJson(z);
+        QCOMPARE(QString::fromStdString(w.at("status").get<std::string>()), QString("timeout"));
+        QCOMPARE(w.at("home_time_s").get<double>(), v.at("home_time_s").get<double>());
+        QVERIFY(std::fabs(w.at("time_s").get<double>() - 2.0) < 0.01);
     }
     void presetsAndOverrides() {
         Files f;
         const QString p = f.write("r.k528", "%L1\nN1 R11=R10+1\nN2 G0 Z-60\n");
         const auto a = runK528({"run", "--json", "--r", "10=123", p});
         QCOMPARE(a.exitCode, 0);
-        const json::Value v = parseJson(a);
-        QCOMPARE(v.find("r")->find("11")->asInt(), 124);
+        const Json v = parseJson(a);
+        QCOMPARE(v.at("r").at("11").get<std::int64_t>(), 124);
         // C94 (F УСК.АВТ. of Z) halved: the rapid takes longer.
         const auto b = runK528({"run", "--json", "--param", "94=300000", p});
         QCOMPARE(b.exitCode, 0);
-        QVERIFY(parseJson(b).find("time_s")->asDouble() > v.find("time_s")->asDouble() + 0.4);
+        QVERIFY(parseJson(b).at("time_s").get<double>() > v.at("time_s").get<double>() + 0.4);
         // 50 % override.
         const auto c = runK528({"run", "--json", "--override", "50", p});
-        QVERIFY(parseJson(c).find("time_s")->asDouble() > v.find("time_s")->asDouble() + 0.4);
+        QVERIFY(parseJson(c).at("time_s").get<double>() > v.at("time_s").get<double>() + 0.4);
         // --program picks one of the file.
         const QString two = f.write("two.k528", "%L4\nN1 R1=4\n%L2\nN1 R1=2\n");
-        QCOMPARE(parseJson(runK528({"run", "--json", two})).find("r")->find("1")->asInt(), 4);
+        QCOMPARE(parseJson(runK528({"run", "--json", two})).at("r").at("1").get<std::int64_t>(), 4);
         QCOMPARE(parseJson(runK528({"run", "--json", "--program", "2", two}))
-                     .find("r")
-                     ->find("1")
-                     ->asInt(),
+                     .at("r")
+                     .at("1")
+                     .get<std::int64_t>(),
                  2);
     }
     // --profile NAME takes the machine from the database first (the shop's
@@ -170,8 +172,8 @@ private slots:
         QVERIFY2(set.exitCode == 0, qPrintable(set.err));
         const auto slower = runK528({"run", "--json", "--db", db, p});
         QCOMPARE(slower.exitCode, 0);
-        QVERIFY(parseJson(slower).find("time_s")->asDouble() >
-                parseJson(builtin).find("time_s")->asDouble() + 0.4);
+        QVERIFY(parseJson(slower).at("time_s").get<double>() >
+                parseJson(builtin).at("time_s").get<double>() + 0.4);
         // A machine only the database knows, under its own name.
         const QString file = f.dir.filePath("lathe2.k528m");
         QCOMPARE(runK528({"db", "export", "training-lathe", "--out", file, "--db", db}).exitCode, 0);
@@ -255,7 +257,7 @@ private slots:
         const auto r = runK528({"run", "--json", "--no-home", "--param", "8=1", "--param", "60=1",
                                 "--trace", csv, p});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const json::Value v = parseJson(r);
+        const Json v = parseJson(r);
         QFile file(csv);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
@@ -287,16 +289,15 @@ private slots:
             ++rows;
         }
         QVERIFY(rows > 1000);
-        const json::Value* axes = v.find("axes");
+        const Json& axes = v.at("axes");
         const char* names[2] = {"X", "Z"};
         for (int a = 0; a < 2; ++a) {
-            const double engineMax = axes->find(names[a])->find("max_following_error")->asDouble();
+            const double engineMax = axes.at(names[a]).at("max_following_error").get<double>();
             QVERIFY2(engineMax > 0.01, names[a]); // the move really lags
             QVERIFY2(std::fabs(maxErr[a] - engineMax) <= 0.001,
                      qPrintable(QString("%1: trace %2 engine %3")
                                     .arg(names[a]).arg(maxErr[a]).arg(engineMax)));
-            QVERIFY(std::fabs(lastPos[a] - axes->find(names[a])->find("current")->asDouble()) <=
-                    0.002);
+            QVERIFY(std::fabs(lastPos[a] - axes.at(names[a]).at("current").get<double>()) <= 0.002);
         }
         QVERIFY(maxSpeedZ > 1000.0 && maxSpeedZ < 6000.0 * 1.01); // FZ6000 mm/min at most
         // A trace that cannot be written: exit 2 with the reason.

@@ -109,6 +109,18 @@ private slots:
                         "inputs": [{"name": "a", "signal": "x", "module": 3}]})json",
                     "inputs[0].module", "no module at place 3");
         expectError(base(R"json(, "logic": [])json"), "logic", "appears twice");
+        // A key twice anywhere, even where the reader would not look: the path of the second.
+        expectError(
+            R"json({"format": 1, "name": "t", "inputs": [{"name": "a", "signal": "x"}, {"name": "a", "name": "b"}]})json",
+            "inputs[1].name", "appears twice");
+        expectError(base(R"json(, "equipment": {"spindles": [], "_note": {"x": 1, "x": 2}})json"),
+                    "equipment._note.x", "appears twice");
+        // A whole number may be written 5.0, not 5.5.
+        std::string whole = base();
+        whole.replace(whole.find("\"format\": 1"), 11, "\"format\": 1.0");
+        QVERIFY2(errorOf(whole).empty(), errorOf(whole).c_str());
+        expectError(R"json({"format": 1.5, "name": "t"})json", "format",
+                    "expected a whole number, found 1.5");
     }
 
     void names() {
