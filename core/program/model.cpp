@@ -252,7 +252,7 @@ FrameBody& FrameBody::operator=(const GotoFrame& v) {
     return *this;
 }
 
-bool FrameBody::hasM(int number) const {
+bool FrameBody::hasAnyM(std::initializer_list<int> numbers) const {
     if (kind_ != FrameKind::Iso)
         return false;
     Reader r(data(), size_);
@@ -261,7 +261,7 @@ bool FrameBody::hasM(int number) const {
         if (slot > SlotM)
             break;
         const int n = r.ivar();
-        if (slot == SlotM && n == number)
+        if (slot == SlotM && std::find(numbers.begin(), numbers.end(), n) != numbers.end())
             return true;
         r.uvar(); // span
         r.uvar();

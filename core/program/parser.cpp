@@ -88,6 +88,17 @@ private:
     }
 
     ColSpan span(std::size_t b, std::size_t e) {
+        if (!lineAscii_)
+            return spanCounted(b, e);
+        // A column is a byte: no cache to walk.
+        ColSpan s;
+        s.column = static_cast<int>(b) + 1;
+        s.endColumn = static_cast<int>(e > line_.size() ? line_.size() : e) + 1;
+        if (s.endColumn <= s.column)
+            s.endColumn = s.column + 1;
+        return s;
+    }
+    [[gnu::noinline]] ColSpan spanCounted(std::size_t b, std::size_t e) {
         ColSpan s;
         s.column = col(b);
         s.endColumn = col(e > line_.size() ? line_.size() : e);
@@ -135,7 +146,14 @@ private:
     // Skips spaces and comments; comments are appended to `comments`.
     // Returns false if an unclosed '(' was met (reported; the rest of the
     // line is taken as its text).
-    void skipTrivia(std::size_t& i, std::vector<Comment>& comments);
+    void skipTrivia(std::size_t& i, std::vector<Comment>& comments) {
+        // Most calls meet a word or a single blank: no call for them.
+        while (i < line_.size() && line_[i] == ' ')
+            ++i;
+        if (i < line_.size() && (isSpace(line_[i]) || line_[i] == ';' || line_[i] == '('))
+            skipTriviaAndComments(i, comments);
+    }
+    void skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comments);
     // The end of a number lexeme: sign, digits and points.
     std::size_t numberEnd(std::size_t i) const {
         if (i < line_.size() && (line_[i] == '+' || line_[i] == '-'))
@@ -205,7 +223,7 @@ private:
 
 // ----------------------------------------------------------------------------------------
 
-void Parser::skipTrivia(std::size_t& i, std::vector<Comment>& comments) {
+void Parser::skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comments) {
     while (i < line_.size()) {
         const char c = line_[i];
         if (isSpace(c)) {
@@ -627,6 +645,22 @@ bool Parser::intWord(std::size_t& i, std::size_t start, std::string_view name, W
         skipSpaces(i);
     }
     const std::size_t b = i;
+    {
+        // Plain digits (what nearly every word is): the value as they are read.
+        const char* const p = line_.data();
+        const std::size_t n = line_.size();
+        std::size_t k = b;
+        std::int64_t v = 0;
+        while (k < n && isDigit(p[k]) && v < 1000000000)
+            v = v * 10 + (p[k++] - '0');
+        // Fewer than 10 significant digits, and the number lexeme ends here.
+        if (k > b && v < 1000000000 && at(k) != '.' && !isDigit(at(k))) {
+            i = k;
+            w.number = static_cast<int>(v);
+            w.span = span(start, k);
+            return true;
+        }
+    }
     const std::size_t e = numberEnd(i);
     i = e;
     const std::string_view lex = line_.substr(b, e - b);

@@ -314,12 +314,16 @@ void ProgramChecker::run() {
     frameNumbers();
     for (const Frame& f : p_.frames) {
         switch (f.kind()) {
-        case FrameKind::Iso:
-            isoFrame(f, *f.iso());
+        case FrameKind::Iso: {
+            const auto iso = f.iso(); // decoded once, read in place
+            isoFrame(f, *iso);
             break;
-        case FrameKind::Compute:
-            computeFrame(f, *f.compute());
+        }
+        case FrameKind::Compute: {
+            const auto c = f.compute();
+            computeFrame(f, *c);
             break;
+        }
         case FrameKind::IfGoto: {
             const IfGotoFrame j = f.body.ifGotoFrame();
             rIndex(f, j.r.number, j.r.span);
@@ -699,8 +703,7 @@ void ProgramChecker::reachability() {
             if (!f.skip) {
                 switch (f.kind()) {
                 case FrameKind::Iso: {
-                    if (f.body.hasM(mfunc::kEnd) || f.body.hasM(mfunc::kEndRewind) ||
-                        f.body.hasM(mfunc::kSubprogramEnd))
+                    if (f.body.hasAnyM({mfunc::kEnd, mfunc::kEndRewind, mfunc::kSubprogramEnd}))
                         next = false;
                     break;
                 }
