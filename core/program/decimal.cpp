@@ -229,9 +229,7 @@ Decimal operator+(const Decimal& a, const Decimal& b) {
     return Decimal::fromScaled(saturate(sum), s);
 }
 
-std::strong_ordering operator<=>(const Decimal& a, const Decimal& b) {
-    if (a.scale == b.scale)
-        return a.mantissa <=> b.mantissa;
+std::strong_ordering Decimal::compareScaled(const Decimal& a, const Decimal& b) {
     const int s = a.scale > b.scale ? a.scale : b.scale;
     std::int64_t sa = 0, sb = 0; // both on the larger scale, when that fits in 64 bits
     if (s <= Decimal::kMaxDigits && !__builtin_mul_overflow(a.mantissa, kPow10[s - a.scale], &sa) &&

@@ -104,6 +104,8 @@ public:
     bool done() const { return p_ >= end_; }
     std::uint8_t byte() { return *p_++; }
     std::uint64_t uvar() {
+        if (!(*p_ & 0x80)) // one byte: most spans and small numbers
+            return *p_++;
         std::uint64_t v = 0;
         int shift = 0;
         while (true) {
@@ -291,7 +293,7 @@ void FrameBody::decode(IsoFrame& f) const {
         case SlotFX:
         case SlotZ:
         case SlotFZ: {
-            Value v;
+            Value& v = (slot == SlotX ? f.x : slot == SlotFX ? f.fx : slot == SlotZ ? f.z : f.fz).emplace();
             if (tag & kRFlag) {
                 v.kind = Value::Kind::RParam;
                 v.rIndex = r.ivar();
@@ -300,7 +302,6 @@ void FrameBody::decode(IsoFrame& f) const {
                 v.literal.scale = r.byte();
             }
             v.span = r.span();
-            (slot == SlotX ? f.x : slot == SlotFX ? f.fx : slot == SlotZ ? f.z : f.fz) = v;
             break;
         }
         }

@@ -422,7 +422,6 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
             rIndex(f, v->rIndex, v->span);
             return;
         }
-        const std::string a(1, axis);
         const Decimal& d = v->literal;
         if (dwell && axis == 'X') {
             if (d.isNegative())
@@ -435,11 +434,13 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
                       "X value: the dwell X" + d.toString() + " s is longer than 9999.999 s");
             return;
         }
-        const Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
-        if (d > kMaxCoordinate || d < neg)
+        constexpr Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
+        if (d > kMaxCoordinate || d < neg) {
+            const std::string a(1, axis);
             error(Rule::CoordinateRange, manual, f, v->span,
                   "Задание координаты " + a + ": " + a + d.toString() + " вне диапазона ±9999.999 мм",
                   a + " value: " + a + d.toString() + " is outside ±9999.999 mm");
+        }
     };
     auto feed = [&](const std::optional<Value>& v, const char* name) {
         if (!v)
