@@ -30,6 +30,8 @@ constexpr std::int64_t kPow10[19] = {1,
                                      1000000000000000000};
 
 Wide widePow10(int n) {
+    if (n >= 0 && n <= 18)
+        return kPow10[n];
     Wide v = 1;
     for (int i = 0; i < n; ++i)
         v *= 10;
@@ -54,6 +56,43 @@ std::optional<Decimal> Decimal::parse(std::string_view s) {
     if (i < s.size() && (s[i] == '+' || s[i] == '-')) {
         negative = s[i] == '-';
         ++i;
+    }
+    {
+        // At most 18 digits (nearly every value): no limit can be reached,
+        // so the digits are the mantissa and the trailing zeros come off.
+        std::uint64_t m = 0; // below 10^19: no overflow
+        int digits = 0;
+        int fraction = -1; // digits after the point; -1 before it
+        std::size_t k = i;
+        for (; k < s.size() && digits <= kMaxDigits; ++k) {
+            const char c = s[k];
+            if (c == '.') {
+                if (fraction >= 0)
+                    return std::nullopt;
+                fraction = 0;
+            } else if (c >= '0' && c <= '9') {
+                m = m * 10 + (c - '0');
+                ++digits;
+                if (fraction >= 0)
+                    ++fraction;
+            } else {
+                return std::nullopt;
+            }
+        }
+        if (k == s.size() && digits <= kMaxDigits) {
+            if (digits == 0)
+                return std::nullopt;
+            int sc = fraction > 0 ? fraction : 0;
+            while (sc > 0 && m % 10 == 0) {
+                m /= 10;
+                --sc;
+            }
+            const auto value = static_cast<std::int64_t>(m);
+            Decimal d;
+            d.mantissa = negative ? -value : value;
+            d.scale = m == 0 ? 0 : sc;
+            return d;
+        }
     }
     // Collect the digits, skipping leading zeros of the integer part.
     std::int64_t mantissa = 0;
@@ -190,8 +229,12 @@ Decimal operator+(const Decimal& a, const Decimal& b) {
     return Decimal::fromScaled(saturate(sum), s);
 }
 
-std::strong_ordering operator<=>(const Decimal& a, const Decimal& b) {
+std::strong_ordering Decimal::compareScaled(const Decimal& a, const Decimal& b) {
     const int s = a.scale > b.scale ? a.scale : b.scale;
+    std::int64_t sa = 0, sb = 0; // both on the larger scale, when that fits in 64 bits
+    if (s <= Decimal::kMaxDigits && !__builtin_mul_overflow(a.mantissa, kPow10[s - a.scale], &sa) &&
+        !__builtin_mul_overflow(b.mantissa, kPow10[s - b.scale], &sb))
+        return sa <=> sb;
     const Wide x = static_cast<Wide>(a.mantissa) * widePow10(s - a.scale);
     const Wide y = static_cast<Wide>(b.mantissa) * widePow10(s - b.scale);
     if (x < y)

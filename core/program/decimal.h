@@ -73,7 +73,11 @@ struct Decimal {
     friend Decimal operator-(const Decimal& a) { return fromScaled(-a.mantissa, a.scale); }
 
     friend bool operator==(const Decimal&, const Decimal&) = default;
-    friend std::strong_ordering operator<=>(const Decimal& a, const Decimal& b);
+    friend std::strong_ordering operator<=>(const Decimal& a, const Decimal& b) {
+        return a.scale == b.scale ? a.mantissa <=> b.mantissa : compareScaled(a, b);
+    }
+    // operator<=> for two different scales.
+    static std::strong_ordering compareScaled(const Decimal& a, const Decimal& b);
 };
 
 } // namespace k528::program

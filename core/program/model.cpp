@@ -104,6 +104,8 @@ public:
     bool done() const { return p_ >= end_; }
     std::uint8_t byte() { return *p_++; }
     std::uint64_t uvar() {
+        if (!(*p_ & 0x80)) // one byte: most spans and small numbers
+            return *p_++;
         std::uint64_t v = 0;
         int shift = 0;
         while (true) {
@@ -252,7 +254,7 @@ FrameBody& FrameBody::operator=(const GotoFrame& v) {
     return *this;
 }
 
-bool FrameBody::hasM(int number) const {
+bool FrameBody::hasAnyM(std::initializer_list<int> numbers) const {
     if (kind_ != FrameKind::Iso)
         return false;
     Reader r(data(), size_);
@@ -261,7 +263,7 @@ bool FrameBody::hasM(int number) const {
         if (slot > SlotM)
             break;
         const int n = r.ivar();
-        if (slot == SlotM && n == number)
+        if (slot == SlotM && std::find(numbers.begin(), numbers.end(), n) != numbers.end())
             return true;
         r.uvar(); // span
         r.uvar();
@@ -291,7 +293,7 @@ void FrameBody::decode(IsoFrame& f) const {
         case SlotFX:
         case SlotZ:
         case SlotFZ: {
-            Value v;
+            Value& v = (slot == SlotX ? f.x : slot == SlotFX ? f.fx : slot == SlotZ ? f.z : f.fz).emplace();
             if (tag & kRFlag) {
                 v.kind = Value::Kind::RParam;
                 v.rIndex = r.ivar();
@@ -300,7 +302,6 @@ void FrameBody::decode(IsoFrame& f) const {
                 v.literal.scale = r.byte();
             }
             v.span = r.span();
-            (slot == SlotX ? f.x : slot == SlotFX ? f.fx : slot == SlotZ ? f.z : f.fz) = v;
             break;
         }
         }

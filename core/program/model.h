@@ -264,7 +264,9 @@ public:
     }
     void decode(IsoFrame& f) const; // f is empty
     // An ISO frame has M<number> (false for other kinds), without decoding the rest.
-    bool hasM(int number) const;
+    bool hasM(int number) const { return hasAnyM({number}); }
+    // An ISO frame has one of these M words (one pass over the start of the frame).
+    bool hasAnyM(std::initializer_list<int> numbers) const;
     ComputeFrame computeFrame() const;
     IfGotoFrame ifGotoFrame() const;
     GotoFrame gotoFrame() const;

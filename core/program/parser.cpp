@@ -56,6 +56,7 @@ private:
     std::string_view line_;
     int lineNo_ = 0;
     bool lineAscii_ = true;
+    std::size_t asciiPrefix_ = 0; // bytes before the line's first non-ASCII one (a column each)
     std::size_t colPos_ = 0; // column cache: byte offset ...
     int colCol_ = 1;         // ... and its column
     int lineErrors_ = 0;
@@ -76,7 +77,7 @@ private:
 
     // --- positions and diagnostics ---------------------------------------------------
     int col(std::size_t pos) {
-        if (lineAscii_)
+        if (lineAscii_ || pos <= asciiPrefix_)
             return static_cast<int>(pos) + 1;
         if (pos < colPos_) {
             colPos_ = 0;
@@ -88,6 +89,17 @@ private:
     }
 
     ColSpan span(std::size_t b, std::size_t e) {
+        if (!lineAscii_ && std::max(b, e > line_.size() ? line_.size() : e) > asciiPrefix_)
+            return spanCounted(b, e);
+        // A column is a byte: no cache to walk.
+        ColSpan s;
+        s.column = static_cast<int>(b) + 1;
+        s.endColumn = static_cast<int>(e > line_.size() ? line_.size() : e) + 1;
+        if (s.endColumn <= s.column)
+            s.endColumn = s.column + 1;
+        return s;
+    }
+    [[gnu::noinline]] ColSpan spanCounted(std::size_t b, std::size_t e) {
         ColSpan s;
         s.column = col(b);
         s.endColumn = col(e > line_.size() ? line_.size() : e);
@@ -135,7 +147,14 @@ private:
     // Skips spaces and comments; comments are appended to `comments`.
     // Returns false if an unclosed '(' was met (reported; the rest of the
     // line is taken as its text).
-    void skipTrivia(std::size_t& i, std::vector<Comment>& comments);
+    void skipTrivia(std::size_t& i, std::vector<Comment>& comments) {
+        // Most calls meet a word or a single blank: no call for them.
+        while (i < line_.size() && line_[i] == ' ')
+            ++i;
+        if (i < line_.size() && (isSpace(line_[i]) || line_[i] == ';' || line_[i] == '('))
+            skipTriviaAndComments(i, comments);
+    }
+    void skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comments);
     // The end of a number lexeme: sign, digits and points.
     std::size_t numberEnd(std::size_t i) const {
         if (i < line_.size() && (line_[i] == '+' || line_[i] == '-'))
@@ -187,6 +206,12 @@ private:
     // Words of a frame. Each returns false after reporting an error.
     bool intWord(std::size_t& i, std::size_t start, std::string_view name, Word& w, int manual = 0);
     bool value(std::size_t& i, std::size_t start, std::string_view name, Value& v, int manual);
+    // What the fast paths of intWord and value leave (i at the number): the
+    // general lexeme and its errors.
+    [[gnu::noinline]] bool intWordRest(std::size_t& i, std::size_t start, std::string_view name, Word& w,
+                                       int manual);
+    [[gnu::noinline]] bool valueRest(std::size_t& i, std::size_t start, std::string_view name, Value& v,
+                                     int manual);
     bool operand(std::size_t& i, Operand& o, std::vector<Comment>& comments);
     void isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& contentEnd);
     void computeFrame(std::size_t& i, Frame& f, ComputeFrame& cf, std::size_t& contentEnd);
@@ -205,7 +230,7 @@ private:
 
 // ----------------------------------------------------------------------------------------
 
-void Parser::skipTrivia(std::size_t& i, std::vector<Comment>& comments) {
+void Parser::skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comments) {
     while (i < line_.size()) {
         const char c = line_[i];
         if (isSpace(c)) {
@@ -279,11 +304,12 @@ void Parser::crLineEndHint() {
 
 void Parser::processLine() {
     lineErrors_ = 0;
-    lineAscii_ = text::isAscii(line_);
+    asciiPrefix_ = text::asciiPrefix(line_);
+    lineAscii_ = asciiPrefix_ == line_.size();
     colPos_ = 0;
     colCol_ = 1;
     invalidUtf8At_ = std::string_view::npos;
-    if (!lineAscii_ && !utf8::isValid(line_)) {
+    if (!lineAscii_ && !utf8::isValid(line_.substr(asciiPrefix_))) { // (the ASCII start is valid)
         const std::size_t bad = text::firstInvalidUtf8(line_);
         invalidUtf8At_ = bad;
         const std::string byte = text::printable(line_.substr(bad, 1)); // "\xFF"
@@ -627,6 +653,27 @@ bool Parser::intWord(std::size_t& i, std::size_t start, std::string_view name, W
         skipSpaces(i);
     }
     const std::size_t b = i;
+    {
+        // Plain digits (what nearly every word is): the value as they are read.
+        const char* const p = line_.data();
+        const std::size_t n = line_.size();
+        std::size_t k = b;
+        std::int64_t v = 0;
+        while (k < n && isDigit(p[k]) && v < 1000000000)
+            v = v * 10 + (p[k++] - '0');
+        // Fewer than 10 significant digits, and the number lexeme ends here.
+        if (k > b && v < 1000000000 && at(k) != '.' && !isDigit(at(k))) {
+            i = k;
+            w.number = static_cast<int>(v);
+            w.span = span(start, k);
+            return true;
+        }
+    }
+    return intWordRest(i, start, name, w, manual);
+}
+
+bool Parser::intWordRest(std::size_t& i, std::size_t start, std::string_view name, Word& w, int manual) {
+    const std::size_t b = i;
     const std::size_t e = numberEnd(i);
     i = e;
     const std::string_view lex = line_.substr(b, e - b);
@@ -668,6 +715,45 @@ bool Parser::value(std::size_t& i, std::size_t start, std::string_view name, Val
         v.span = span(start, i);
         return true;
     }
+    const std::size_t b = i;
+    {
+        // [sign] up to 18 digits with at most one point (what nearly every
+        // value is): read as scanned; anything else goes the long way below.
+        const char* const p = line_.data();
+        const std::size_t n = line_.size();
+        std::size_t k = b;
+        const bool negative = k < n && p[k] == '-';
+        if (k < n && (p[k] == '-' || p[k] == '+'))
+            ++k;
+        std::uint64_t m = 0; // below 10^19: no overflow
+        int digits = 0;
+        int fraction = -1; // digits after the point; -1 before it
+        for (; k < n && digits <= Decimal::kMaxDigits; ++k) {
+            const char c = p[k];
+            if (isDigit(c)) {
+                m = m * 10 + (c - '0');
+                ++digits;
+                if (fraction >= 0)
+                    ++fraction;
+            } else if (c == '.' && fraction < 0) {
+                fraction = 0;
+            } else {
+                break;
+            }
+        }
+        // The number lexeme (numberEnd) ends here.
+        if (digits > 0 && digits <= Decimal::kMaxDigits && (k >= n || (!isDigit(p[k]) && p[k] != '.'))) {
+            i = k;
+            const auto value = static_cast<std::int64_t>(m); // at most 18 digits
+            v = Value::lit(Decimal::fromScaled(negative ? -value : value, fraction > 0 ? fraction : 0));
+            v.span = span(start, k);
+            return true;
+        }
+    }
+    return valueRest(i, start, name, v, manual);
+}
+
+bool Parser::valueRest(std::size_t& i, std::size_t start, std::string_view name, Value& v, int manual) {
     const std::size_t b = i;
     const std::size_t e = numberEnd(i);
     i = e;

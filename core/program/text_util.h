@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,12 +16,22 @@ constexpr bool isDigit(char c) { return c >= '0' && c <= '9'; }
 constexpr bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 constexpr char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
-inline bool isAscii(std::string_view s) {
-    for (const char c : s)
-        if (static_cast<unsigned char>(c) >= 0x80)
-            return false;
-    return true;
+// The length of the ASCII start of s (s.size() when s is all ASCII).
+inline std::size_t asciiPrefix(std::string_view s) {
+    // Eight bytes at a time, then the rest.
+    std::size_t i = 0;
+    for (; i + 8 <= s.size(); i += 8) {
+        std::uint64_t w;
+        std::memcpy(&w, s.data() + i, sizeof w);
+        if (w & 0x8080808080808080ULL)
+            break;
+    }
+    while (i < s.size() && static_cast<unsigned char>(s[i]) < 0x80)
+        ++i;
+    return i;
 }
+
+inline bool isAscii(std::string_view s) { return asciiPrefix(s) == s.size(); }
 
 // Length of a well-formed UTF-8 sequence at s[i], or 1 for a malformed byte.
 inline std::size_t sequenceLength(std::string_view s, std::size_t i) {

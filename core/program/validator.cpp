@@ -314,12 +314,16 @@ void ProgramChecker::run() {
     frameNumbers();
     for (const Frame& f : p_.frames) {
         switch (f.kind()) {
-        case FrameKind::Iso:
-            isoFrame(f, *f.iso());
+        case FrameKind::Iso: {
+            const auto iso = f.iso(); // decoded once, read in place
+            isoFrame(f, *iso);
             break;
-        case FrameKind::Compute:
-            computeFrame(f, *f.compute());
+        }
+        case FrameKind::Compute: {
+            const auto c = f.compute();
+            computeFrame(f, *c);
             break;
+        }
         case FrameKind::IfGoto: {
             const IfGotoFrame j = f.body.ifGotoFrame();
             rIndex(f, j.r.number, j.r.span);
@@ -418,7 +422,6 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
             rIndex(f, v->rIndex, v->span);
             return;
         }
-        const std::string a(1, axis);
         const Decimal& d = v->literal;
         if (dwell && axis == 'X') {
             if (d.isNegative())
@@ -431,11 +434,13 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
                       "X value: the dwell X" + d.toString() + " s is longer than 9999.999 s");
             return;
         }
-        const Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
-        if (d > kMaxCoordinate || d < neg)
+        constexpr Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
+        if (d > kMaxCoordinate || d < neg) {
+            const std::string a(1, axis);
             error(Rule::CoordinateRange, manual, f, v->span,
                   "Задание координаты " + a + ": " + a + d.toString() + " вне диапазона ±9999.999 мм",
                   a + " value: " + a + d.toString() + " is outside ±9999.999 mm");
+        }
     };
     auto feed = [&](const std::optional<Value>& v, const char* name) {
         if (!v)
@@ -699,8 +704,7 @@ void ProgramChecker::reachability() {
             if (!f.skip) {
                 switch (f.kind()) {
                 case FrameKind::Iso: {
-                    if (f.body.hasM(mfunc::kEnd) || f.body.hasM(mfunc::kEndRewind) ||
-                        f.body.hasM(mfunc::kSubprogramEnd))
+                    if (f.body.hasAnyM({mfunc::kEnd, mfunc::kEndRewind, mfunc::kSubprogramEnd}))
                         next = false;
                     break;
                 }
