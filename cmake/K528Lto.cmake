@@ -15,6 +15,13 @@ if(K528_LTO AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_BUILD_TYPE MATCHE
     set(K528_LTO_ACTIVE ON)
 endif()
 
+# GCC's linker plugin optimises LTO information at any link that finds it,
+# unless told not to: every program links the machine code (-fno-lto) but
+# those of k528_lto_link() (target property K528_LTO_LINK).
+if(K528_LTO_ACTIVE)
+    add_link_options("$<$<NOT:$<BOOL:$<TARGET_PROPERTY:K528_LTO_LINK>>>:-fno-lto>")
+endif()
+
 # A core module on the tick's path: LTO information besides the machine code.
 function(k528_lto_module target)
     if(K528_LTO_ACTIVE)
@@ -25,6 +32,7 @@ endfunction()
 # A program whose speed is the tick's: linked with link-time optimisation.
 function(k528_lto_link target)
     if(K528_LTO_ACTIVE)
+        set_target_properties(${target} PROPERTIES K528_LTO_LINK ON)
         target_compile_options(${target} PRIVATE -flto=auto)
         # GCC 12 reports a false -Wstringop-overflow inside std::string's
         # operator+ once it is inlined across modules (GCC bug 105651, the
