@@ -6,6 +6,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
+#include <vector>
+
 using namespace rig;
 
 namespace {
@@ -61,6 +64,43 @@ private slots:
         QCOMPARE(r1.axes[1].machineDisc, r2.axes[1].machineDisc);
         QCOMPARE(r1.mFunctions, r2.mFunctions);
         QCOMPARE(r1.r[1], 1);
+    }
+    // The settled tick (docs/engine.md, "Speed"): a machine at rest for a
+    // while advances its clock and nothing else; an operator function or a
+    // changed word ends the shortcut at once, and what a full tick computes
+    // then equals what the settled ticks left.
+    void settledTick() {
+        Rig r;
+        QVERIFY(r.home());
+        QVERIFY(r.ctl->selectProgram(1).ok());
+        r.advance(2000); // at rest: the shortcut is on
+        const std::int64_t t0 = r.ctl->timeMs();
+        const engine::InterfaceWords words = r.w();
+        const std::vector<std::int32_t> rs(r.ctl->r().values().begin(), r.ctl->r().values().end());
+        r.advance(1000);
+        QCOMPARE(r.ctl->timeMs(), t0 + 1000);
+        QVERIFY(r.w() == words);
+        // A full tick (an operator function that changes nothing wakes it)
+        // computes the same words and R-parameters.
+        QVERIFY(r.ctl->selectProgram(1).ok());
+        r.tick();
+        QVERIFY(r.w() == words);
+        QVERIFY(std::equal(rs.begin(), rs.end(), r.ctl->r().values().begin()));
+        // An operator function between settled ticks acts in the next tick.
+        r.advance(1000);
+        QVERIFY(!r.bit(engine::z::ModeAuto));
+        QVERIFY(r.ctl->selectMode(Mode::Auto).ok());
+        r.tick();
+        QVERIFY(r.bit(engine::z::ModeAuto));
+        // So does a word the PLC changes: jog + (Z1005.7) moves the setpoint
+        // in the tick that reads it.
+        QVERIFY(r.ctl->selectMode(Mode::Manual).ok());
+        r.advance(1000);
+        const double before = r.ctl->servo(engine::AxisId::X).setpoint();
+        r.m->setJog(engine::AxisId::X, 1);
+        r.tick();
+        QVERIFY(r.bit(engine::z::jogPlus(engine::AxisId::X)));
+        QVERIFY(r.ctl->servo(engine::AxisId::X).setpoint() > before);
     }
 };
 
