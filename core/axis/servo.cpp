@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace k528::axis {
 
@@ -52,6 +53,16 @@ void Servo::setConstants(const Constants& k) {
         stallSpeedLo_ = threshold * (1.0 - 1e-9);
         stallSpeedHi_ = threshold * (1.0 + 1e-9);
     }
+    // The constants as the loop computes with them (exact conversions).
+    ksD_ = static_cast<double>(k_.ks);
+    keD_ = static_cast<double>(k_.ke);
+    driftD_ = static_cast<double>(k_.driftCompDac);
+    maxErrorD_ = k_.maxErrorInternal > 0 ? static_cast<double>(k_.maxErrorInternal)
+                                         : std::numeric_limits<double>::infinity();
+    posToleranceD_ = static_cast<double>(k_.posToleranceInternal);
+    clampToleranceD_ = static_cast<double>(k_.clampToleranceInternal);
+    clampDelayD_ = static_cast<double>(k_.effectiveClampDelayMs());
+    dacLimit_ = k_.dacLimit > 0 ? k_.dacLimit : std::numeric_limits<std::int64_t>::max();
     if (haveCount_) {
         offset_ = before - static_cast<double>(lastCount_) * ipc_;
         actual_ = before;
@@ -172,8 +183,8 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
     // is demanded (always during a commanded move; at rest when C14 is set and
     // the loop is correcting an error beyond ДОПУСК КП). Slow feeds that give
     // fewer than 4 counts within T are not checked (they would trip falsely).
-    if (k_.encoderCheckMs <= 0 || !regulatorOn_ || !loopClosed_) {
-        stallTimerMs_ = 0;
+    if (k_.encoderCheckMs <= 0 || !regulatorOn_ || !loopClosed_ || pulses_ != 0) {
+        stallTimerMs_ = 0; // not checked, or the encoder moved this tick
         return;
     }
     // At least 4 counts within the check time; the division is taken only
@@ -184,8 +195,8 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
         (speed > stallSpeedHi_ ||
          (speed >= stallSpeedLo_ && speed * static_cast<double>(k_.encoderCheckMs) / ipc_ >= 4.0));
     const bool restDemanded = k_.encoderCheckAtRest && traj_.velocity() == 0.0 &&
-                              std::fabs(followingError()) > static_cast<double>(k_.clampToleranceInternal);
-    if ((moveDemanded || restDemanded) && pulses_ == 0) {
+                              std::fabs(followingError()) > clampToleranceD_;
+    if (moveDemanded || restDemanded) {
         stallTimerMs_ += dt;
         if (stallTimerMs_ >= static_cast<double>(k_.encoderCheckMs))
             raise(Fault::EncoderStall);
@@ -197,8 +208,7 @@ void Servo::superviseEncoder(const ServoInputs& in, double dt) {
 bool Servo::settled(double e) const {
     return loopClosed_ && regulatorOn_ && fault_ == Fault::None && haveCount_ && traj_.atTarget() &&
            !traj_.stopping() && pulses_ == 0 && jogDir_ == 0 && stallTimerMs_ == 0 &&
-           std::fabs(e) <= static_cast<double>(k_.clampToleranceInternal) &&
-           (inPosition_ || std::fabs(e) > static_cast<double>(k_.posToleranceInternal));
+           std::fabs(e) <= clampToleranceD_ && (inPosition_ || std::fabs(e) > posToleranceD_);
 }
 
 void Servo::tick(const ServoInputs& in, double dt) {
@@ -249,7 +259,7 @@ void Servo::tick(const ServoInputs& in, double dt) {
         }
     }
     if (!regulatorOn_ && clampWatch_ && fault_ == Fault::None &&
-        std::fabs(actual_ - clampRef_) > static_cast<double>(k_.clampToleranceInternal))
+        std::fabs(actual_ - clampRef_) > clampToleranceD_)
         raise(Fault::Standstill);
 
     const bool closed = regulatorOn_ && wantOn && fault_ == Fault::None;
@@ -286,14 +296,13 @@ void Servo::tick(const ServoInputs& in, double dt) {
 
     // --- position loop ---
     const double e = traj_.position() - actual_;
-    const double dac = v * static_cast<double>(k_.ks) * (3.0 / 128.0) +
-                       e * static_cast<double>(k_.ke) / 256.0 + static_cast<double>(k_.driftCompDac);
+    const double dac = v * ksD_ * (3.0 / 128.0) + e * keD_ / 256.0 + driftD_;
     // Round half away from zero, inline (std::lround is a library call, once a tick per axis).
     const double dacClamped = std::clamp(dac, -1e9, 1e9);
     dacRaw_ = static_cast<int>(dacClamped < 0 ? dacClamped - 0.5 : dacClamped + 0.5);
     const int clamped = static_cast<int>(std::clamp<std::int64_t>(dacRaw_, -k_.dacMax, k_.dacMax));
     dacOut_ = k_.dacInvert ? -clamped : clamped;
-    if (k_.dacLimit > 0 && std::abs(dacRaw_) > k_.dacLimit)
+    if (std::abs(dacRaw_) > dacLimit_)
         raise(Fault::DacLimit);
 
     // --- following error, end of move, standstill ---
@@ -301,16 +310,15 @@ void Servo::tick(const ServoInputs& in, double dt) {
     if (!atTarget) {
         restTimerMs_ = 0;
         inPosition_ = false;
-        if (k_.maxErrorInternal > 0 && std::fabs(e) > static_cast<double>(k_.maxErrorInternal))
+        if (std::fabs(e) > maxErrorD_)
             raise(Fault::FollowingError);
     } else {
         if (!wasAtTarget)
             restTimerMs_ = 0;
         restTimerMs_ += dt;
-        if (!inPosition_ && std::fabs(e) <= static_cast<double>(k_.posToleranceInternal))
+        if (!inPosition_ && std::fabs(e) <= posToleranceD_)
             inPosition_ = true;
-        if (restTimerMs_ >= static_cast<double>(k_.effectiveClampDelayMs()) &&
-            std::fabs(e) > static_cast<double>(k_.clampToleranceInternal))
+        if (restTimerMs_ >= clampDelayD_ && std::fabs(e) > clampToleranceD_)
             raise(Fault::Standstill);
     }
     if (jogDir_ != 0 && atTarget)

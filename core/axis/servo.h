@@ -155,6 +155,13 @@ private:
     Trajectory traj_;
     double ipc_ = 1;          // internal units per count (2L/N)
     double stallSpeedLo_ = 0, stallSpeedHi_ = 0; // about 4 counts per ЗАДЕРЖКА ДАТЧИКА (superviseEncoder)
+    // The constants as the loop computes with them, converted once
+    // (setConstants): K(СКОР), K(ОШИБ), КОМП.ДРЕЙФА; МАКС.ОШИБКА (infinite
+    // when off), ДОПУСК ПОЗ., ДОПУСК КП, ЗАДЕРЖКА КП; ПРЕДЕЛ ЦАП (the
+    // largest integer when off).
+    double ksD_ = 0, keD_ = 0, driftD_ = 0;
+    double maxErrorD_ = 0, posToleranceD_ = 0, clampToleranceD_ = 0, clampDelayD_ = 0;
+    std::int64_t dacLimit_ = 0;
     double offset_ = 0;       // machine system = counts·ipc + offset
     double actual_ = 0;
     std::int64_t lastCount_ = 0;

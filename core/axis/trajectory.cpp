@@ -16,6 +16,19 @@ void Trajectory::moveTo(double target, double vmax, double accel) {
     vmax_ = vmax;
     accel_ = accel;
     stopping_ = false;
+    stepDt_ = kNoStep;
+}
+
+void Trajectory::prepareStep(double dt) {
+    a_ = accel_ > 0 ? accel_ : 1e-9;
+    limit_ = std::max(0.0, vmax_ * scale_);
+    aadtdt_ = a_ * a_ * dt * dt;
+    eightA_ = 8.0 * a_;
+    dvMax_ = a_ * dt;
+    dvMaxDt_ = dvMax_ * dt;
+    const double cruiseBound = 2.0 * limit_ + dvMax_;
+    cruiseSq_ = cruiseBound * cruiseBound * (1.0 + 1e-9);
+    stepDt_ = dt;
 }
 
 void Trajectory::stop(double accel) {
@@ -48,8 +61,10 @@ void Trajectory::tick(double dt) {
     const double r = target_ - pos_;
     if (r == 0.0 && vel_ == 0.0)
         return;
-    const double a = accel_ > 0 ? accel_ : 1e-9;
-    const double limit = std::max(0.0, vmax_ * scale_);
+    if (dt != stepDt_)
+        prepareStep(dt);
+    const double a = a_;
+    const double limit = limit_;
     // The fastest speed v' from which the target can still be reached
     // braking with `a`, counting this step's own travel (v + v')·dt/2:
     // v'²/(2a) + v'·dt/2 <= |r| - v·dt/2; never above the (scaled) limit.
@@ -60,13 +75,10 @@ void Trajectory::tick(double dt) {
     // square root cannot change the result and is not taken: sqrt(disc) >=
     // 2·limit + a·dt, with a margin far above any rounding, gives braking >=
     // limit, so min() picks the limit either way — bit for bit the same.
-    const double disc = a * a * dt * dt + 8.0 * a * room;
-    const double cruiseBound = 2.0 * limit + a * dt;
-    const double braking = disc > cruiseBound * cruiseBound * (1.0 + 1e-9)
-                               ? limit
-                               : 0.5 * (-a * dt + std::sqrt(disc));
+    const double disc = aadtdt_ + eightA_ * room;
+    const double braking = disc > cruiseSq_ ? limit : 0.5 * (-a * dt + std::sqrt(disc));
     const double desired = dir * std::min(limit, braking);
-    const double dvMax = a * dt;
+    const double dvMax = dvMax_;
     const double v = vel_ + std::clamp(desired - vel_, -dvMax, dvMax);
     double p = pos_ + (vel_ + v) * 0.5 * dt;
     double vNew = v;
@@ -75,7 +87,7 @@ void Trajectory::tick(double dt) {
     // A target moved behind a fast axis is overshot and approached again.
     const bool passed = (r > 0 && p >= target_) || (r < 0 && p <= target_);
     const bool slow = std::fabs(vNew) <= dvMax;
-    if (dir != 0.0 && slow && (passed || std::fabs(target_ - p) <= dvMax * dt)) {
+    if (dir != 0.0 && slow && (passed || std::fabs(target_ - p) <= dvMaxDt_)) {
         p = target_;
         vNew = 0;
     }

@@ -22,11 +22,22 @@ public:
         target_ = target;
         stopping_ = false;
     }
-    void setSpeedLimit(double vmax) { vmax_ = vmax; }
-    void setAccel(double accel) { accel_ = accel; }
+    void setSpeedLimit(double vmax) {
+        vmax_ = vmax;
+        stepDt_ = kNoStep;
+    }
+    void setAccel(double accel) {
+        accel_ = accel;
+        stepDt_ = kNoStep;
+    }
     // Scale of the speed limit: feed override × feed enable, 0..1. At 0 the
     // axis decelerates to rest and waits with the target kept.
-    void setScale(double scale) { scale_ = scale; }
+    void setScale(double scale) {
+        if (scale != scale_) {
+            scale_ = scale;
+            stepDt_ = kNoStep;
+        }
+    }
 
     // Decelerate to rest with `accel`; the point where it stops becomes the
     // target (the rest of the path is dropped).
@@ -48,10 +59,25 @@ public:
     double brakingDistance(double a) const { return a > 0 ? vel_ * vel_ / (2.0 * a) : 0.0; }
 
 private:
+    // The values of a step that depend only on the acceleration, the scaled
+    // speed limit and the step length, computed with the same operations in
+    // the same order as the step itself would (so bit for bit the same), once
+    // for as long as these stay: a move's every step reads them.
+    void prepareStep(double dt);
+    static constexpr double kNoStep = -1.0; // stepDt_: nothing prepared
+
     double pos_ = 0, vel_ = 0, target_ = 0;
     double vmax_ = 0, accel_ = 1, scale_ = 1;
     double stopAccel_ = 1;
     bool stopping_ = false;
+    double stepDt_ = kNoStep;  // the step length the values below are for
+    double a_ = 1;             // the acceleration in use (a tiny one for none)
+    double limit_ = 0;         // the scaled speed limit, >= 0
+    double aadtdt_ = 0;        // a·a·dt·dt
+    double eightA_ = 0;        // 8·a
+    double dvMax_ = 0;         // a·dt: the speed change of one step
+    double dvMaxDt_ = 0;       // a·dt·dt: the arrival window
+    double cruiseSq_ = 0;      // (2·limit + a·dt)²·(1 + 1e-9): see tick()
 };
 
 } // namespace k528::axis

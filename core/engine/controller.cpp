@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace k528::engine {
 
@@ -79,11 +80,11 @@ void Controller::powerOn() {
     c_.lastZ1001 = c_.words.word(1001);
     for (int a = 0; a < kAxisCount; ++a) {
         c_.lastAxisWord0[static_cast<std::size_t>(a)] =
-            c_.words.word(z::axisControlWord(axisAt(a), 0));
+            c_.words.axisControl(a, 0);
         c_.lastAxisWord1[static_cast<std::size_t>(a)] =
-            c_.words.word(z::axisControlWord(axisAt(a), 1));
+            c_.words.axisControl(a, 1);
         c_.lastAxisWord2[static_cast<std::size_t>(a)] =
-            c_.words.word(z::axisControlWord(axisAt(a), 2));
+            c_.words.axisControl(a, 2);
     }
     writeOutputs();
 }
@@ -138,7 +139,7 @@ bool Controller::settled() const {
 
 void Controller::noteSettled(bool inputsAsLeft) {
     if (!settled()) {
-        wake();
+        unsettle();
         return;
     }
     const std::span<const std::int32_t> r = c_.r.values();
@@ -161,7 +162,7 @@ void Controller::readInputs() {
     const std::uint16_t w = c_.words.word(1000);
     // Handwheels (C105/C106 name their pulse channels).
     for (int k = 0; k < 2; ++k) {
-        const int ch = channelIndex(c_.c[c::handwheelChannel(k)]);
+        const int ch = c_.wheelChannel[static_cast<std::size_t>(k)];
         const std::int64_t count = ch >= 0 ? c_.io.pulse[static_cast<std::size_t>(ch)].count : 0;
         wheelDelta_[static_cast<std::size_t>(k)] =
             wheelInit_ ? count - wheelCount_[static_cast<std::size_t>(k)] : 0;
@@ -183,8 +184,8 @@ void Controller::readInputs() {
 
 void Controller::axisInputs(AxisUnit& u) {
     const int a = u.index;
-    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
-    const std::uint16_t w1 = c_.words.word(z::axisControlWord(u.id, 1));
+    const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
+    const std::uint16_t w1 = c_.words.axisControl(u.index, 1);
     const std::uint8_t fi = c_.io.fastInputs[static_cast<std::size_t>(a)];
     if (u.inputsKnown && w0 == u.inputsW0 && w1 == u.inputsW1 && fi == u.inputsFast)
         return; // the same words and inputs decode to the same signals
@@ -210,11 +211,10 @@ void Controller::systemChecks() {
     // The checks' inputs as one word: the same inputs raise or clear nothing
     // once they have been applied (a message acknowledged meanwhile is not
     // raised again while its cause lasts: condition() acts on a change only).
-    const unsigned state = (io.pulseModule1Ok ? 1u : 0u) | (io.pulseModule2Ok ? 2u : 0u) |
-                           (io.dacModuleOk ? 4u : 0u) | (io.commModuleOk ? 8u : 0u) |
-                           (io.plcLinkOk ? 16u : 0u) | (io.panelLinkOk ? 32u : 0u) |
-                           (io.memoryOk ? 64u : 0u) |
-                           (c_.words.word(z::SystemMessagesWord) != 0 ? 128u : 0u);
+    // The seven health flags are read as the bytes they are (machine_io.h).
+    std::uint64_t state = 0;
+    std::memcpy(&state, &io.pulseModule1Ok, kMachineHealthFlags);
+    state |= static_cast<std::uint64_t>(c_.words.word(z::SystemMessagesWord) != 0) << 56;
     if (state == lastSystemInputs_)
         return;
     lastSystemInputs_ = state;
@@ -377,6 +377,21 @@ void Controller::startProgram(int number, int cycle) {
 void Controller::programControl() {
     const std::uint16_t w = c_.words.word(1000), before = c_.lastZ1000;
     const std::uint16_t w1 = c_.words.word(1001), before1 = c_.lastZ1001;
+    const std::array<std::uint8_t, 2> fi = c_.io.fastInputs;
+    if (!operatorActed_ && w == before && w1 == before1 && fi == controlFastInputs_) {
+        // The same inputs as the last tick, and no operator function since:
+        // no edge, so nothing resets, acknowledges, stops or starts; the mode
+        // and the override stay what the last tick made them. What the
+        // program itself may have changed since is done again.
+        if (c_.endOrReset && c_.state != ProgramState::Ended && c_.state != ProgramState::Idle)
+            c_.endOrReset = false;
+        if (on(w, 7))
+            c_.plc.acknowledgeAlarms();
+        c_.r.set(r::PlcBit, on(w1, 8) ? 1 : 0);
+        return;
+    }
+    operatorActed_ = false;
+    controlFastInputs_ = fi;
     c_.lastZ1000 = w;
     c_.lastZ1001 = w1;
 
@@ -384,7 +399,7 @@ void Controller::programControl() {
     bool fastReset = false;
     for (int a = 0; a < kAxisCount; ++a)
         fastReset = fastReset || c_.fast.active(a, FastFunction::Reset,
-                                                c_.io.fastInputs[static_cast<std::size_t>(a)]);
+                                                fi[static_cast<std::size_t>(a)]);
     const bool resetEdge = rising(w, before, 5) || (fastReset && !c_.lastFastReset);
     c_.lastFastReset = fastReset;
     if (resetEdge)
@@ -450,7 +465,7 @@ void Controller::programControl() {
 // Manual functions: jog, handwheels, DRF, reference-point start, adjustments
 
 void Controller::jog(AxisUnit& u) {
-    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const int dir = on(w0, 7) == on(w0, 8) ? 0 : (on(w0, 7) ? 1 : -1);
     const bool rapid = on(w0, 9);
     if (dir != 0)
@@ -506,7 +521,7 @@ void Controller::jog(AxisUnit& u) {
 }
 
 void Controller::handwheels(AxisUnit& u) {
-    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     double delta = 0, drf = 0;
     for (int k = 0; k < 2; ++k) {
         const std::int64_t pulses = wheelDelta_[static_cast<std::size_t>(k)];
@@ -569,7 +584,7 @@ void Controller::handwheels(AxisUnit& u) {
 }
 
 void Controller::homingStart(AxisUnit& u) {
-    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const std::uint16_t before = c_.lastAxisWord0[static_cast<std::size_t>(u.index)];
     const int bit = u.k.homeNegative ? 8 : 7; // «ПЕРЕМЕЩЕНИЕ В +» (or «В -» with ПБТ В "-")
     if (!rising(w0, before, bit) || u.owner != MotionOwner::None || u.k.autoWithoutHoming)
@@ -581,20 +596,22 @@ void Controller::homingStart(AxisUnit& u) {
 }
 
 void Controller::manualFunctions() {
+    const Mode mode = c_.mode; // none of the functions below changes it
+    const bool wheels =
+        (wheelDelta_[0] | wheelDelta_[1]) != 0 && (mode == Mode::Manual || mode == Mode::Auto);
     for (AxisUnit& u : c_.axes) {
         if (!u.present)
             continue;
         const std::size_t i = static_cast<std::size_t>(u.index);
-        const std::uint16_t w1 = c_.words.word(z::axisControlWord(u.id, 1));
-        const std::uint16_t w2 = c_.words.word(z::axisControlWord(u.id, 2));
         u.commandDir = 0;
-        if (c_.mode == Mode::Manual)
+        if (mode == Mode::Manual)
             jog(u);
-        else if (c_.mode == Mode::Reference)
+        else if (mode == Mode::Reference)
             homingStart(u);
-        if ((wheelDelta_[0] != 0 || wheelDelta_[1] != 0) &&
-            (c_.mode == Mode::Manual || c_.mode == Mode::Auto))
+        if (wheels)
             handwheels(u);
+        const std::uint16_t w1 = c_.words.axisControl(u.index, 1);
+        const std::uint16_t w2 = c_.words.axisControl(u.index, 2);
         if (w1 == c_.lastAxisWord1[i] && w2 == c_.lastAxisWord2[i])
             continue;
         // Подналадка (C13 ВКЛ.ПОДНАЛ.): ±R218/R219 into the correction.
@@ -627,7 +644,7 @@ void Controller::manualFunctions() {
 void Controller::axisTick(AxisUnit& u) {
     const int a = u.index;
     const std::size_t i = static_cast<std::size_t>(a);
-    const std::uint16_t w0 = c_.words.word(z::axisControlWord(u.id, 0));
+    const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const std::uint16_t z1000 = c_.words.word(1000);
     c_.lastAxisWord0[i] = w0;
 
@@ -739,6 +756,7 @@ void Controller::writeOutputs() {
     w.setWord(2001, w2001);
 
     // Z2005..Z2008 and R232..R262.
+    refreshOffsets();
     for (const AxisUnit& u : c_.axes) {
         const std::int64_t machine = u.present ? u.machineDisc() : 0;
         axisR(u, machine);
@@ -769,8 +787,8 @@ void Controller::writeOutputs() {
                 sb(12, wmax > 0 && wheel > wmax);
             }
         }
-        w.setWord(z::axisStateWord(u.id, 0), st);
-        w.setWord(z::axisStateWord(u.id, 1), c_.io.fastInputs[static_cast<std::size_t>(u.index)]);
+        w.setAxisState(u.index, 0, st);
+        w.setAxisState(u.index, 1, c_.io.fastInputs[static_cast<std::size_t>(u.index)]);
     }
     c_.r.set(r::Override, c_.overridePercent);
     c_.r.set(r::NestingLevel, interp_.level());
@@ -786,17 +804,7 @@ void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
         return;
     }
     const axis::Servo& sv = u.servo;
-    const std::uint8_t ex = c_.exclusion(a);
-    std::int64_t off = 0;
-    if (!(ex & ExcludeZeroOffset))
-        off += r[r::ZeroOffsetX + a];
-    if (!(ex & ExcludeDressing))
-        off += r[r::DressingSumX + a];
-    if (!(ex & ExcludeCorrection))
-        off += r[r::CorrectionX + a];
-    if (!(ex & ExcludeDrf))
-        off += r[r::DrfX + a];
-    r.set(r::CurrentX + a, clampR(machine - off));
+    r.set(r::CurrentX + a, clampR(machine - offsets_.sum[static_cast<std::size_t>(a)]));
     r.set(r::HomeDistanceX + a, clampR(u.homeDistanceDisc));
     // What comes of the servo alone stays while its ticks are quiet (at rest,
     // nothing asked): written when it may have changed.
@@ -813,8 +821,24 @@ void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
     r.set(r::PulsesX + a, clampR(sv.pulsesLastTick()));
 }
 
+void Controller::refreshOffsets() {
+    // R224..R231: the dressing sums, corrections, zero offsets and DRF of
+    // both axes (coordinates.h), compared as one block.
+    std::array<std::int32_t, 8> now;
+    std::copy_n(c_.r.values().begin() + r::DressingSumX, now.size(), now.begin());
+    const std::array<std::uint8_t, kAxisCount> ex{c_.exclusion(0), c_.exclusion(1)};
+    if (offsets_.valid && now == offsets_.r && ex == offsets_.ex)
+        return;
+    offsets_.valid = true;
+    offsets_.r = now;
+    offsets_.ex = ex;
+    for (int a = 0; a < kAxisCount; ++a)
+        offsets_.sum[static_cast<std::size_t>(a)] = c_.offsetDisc(a);
+}
+
 void Controller::refreshR() {
     servoRKnown_.fill(false);
+    refreshOffsets();
     for (const AxisUnit& u : c_.axes)
         axisR(u, u.present ? u.machineDisc() : 0);
     c_.r.set(r::Override, c_.overridePercent);

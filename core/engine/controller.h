@@ -162,10 +162,19 @@ private:
     // word or of the I/O, ends it.
     bool settled() const;
     void noteSettled(bool inputsAsLeft);
+    // An operator function acted (or a door was used): the next tick is a
+    // full one, and programControl() reads its inputs again.
     void wake() {
+        unsettle();
+        operatorActed_ = true;
+    }
+    void unsettle() {
         quiet_.valid = false;
         quiet_.ticks = 0;
     }
+    // The sum of the offset R-parameters in effect for each axis (2.4), kept
+    // for as long as R224..R231 and the exclusions stay (writeOutputs()).
+    void refreshOffsets();
 
     Core c_;
     Interpreter interp_;
@@ -174,8 +183,18 @@ private:
     std::array<std::int64_t, 2> wheelCount_{};
     bool wheelInit_ = false;
     std::array<bool, 65> configMessages_{};
-    unsigned lastSystemInputs_ = ~0u; // systemChecks(): the inputs last applied
+    std::uint64_t lastSystemInputs_ = ~0ull; // systemChecks(): the inputs last applied
     std::array<bool, kAxisCount> servoRKnown_{}; // axisR(): the servo's R values are written
+    // programControl(): an operator function acted since it last ran, and
+    // the fast inputs it last read (with Z1000/Z1001 in c_.lastZ1000/1001).
+    bool operatorActed_ = true;
+    std::array<std::uint8_t, 2> controlFastInputs_{};
+    struct OffsetSums {
+        bool valid = false;
+        std::array<std::int32_t, 8> r{};          // R224..R231 as summed
+        std::array<std::uint8_t, kAxisCount> ex{}; // the exclusions as summed
+        std::array<std::int64_t, kAxisCount> sum{};
+    } offsets_;
     bool storeCorrupt_ = false;
     std::uint64_t programsRevision_ = 0;
     int overrideFactorPercent_ = -1; // overrideFactor_ = overridePercent / 100 of this percent

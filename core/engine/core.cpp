@@ -1,5 +1,7 @@
 #include "engine/core.h"
 
+#include "engine/coordinates.h"
+
 #include <algorithm>
 
 namespace k528::engine {
@@ -53,28 +55,25 @@ void Core::applyConstants() {
     for (AxisUnit& a : axes)
         a.configure(axis::Constants::fromC(c, a.id));
     fast.configure(c);
+    for (std::size_t k = 0; k < wheelChannel.size(); ++k) {
+        const std::int64_t ch = c[c::handwheelChannel(static_cast<int>(k))];
+        wheelChannel[k] = ch >= 1 && ch <= kPulseChannels ? static_cast<int>(ch - 1) : -1;
+    }
 }
 
 std::uint8_t Core::exclusion(int a) const {
     if (programActive(state))
         return programExclusion;
-    const std::uint16_t w = words.word(z::axisControlWord(axisAt(a), 1));
+    const std::uint16_t w = words.axisControl(a, 1);
     return static_cast<std::uint8_t>((w >> 4) & 0x0F); // Z1006.4..7 = G50..G53
 }
 
+std::int64_t Core::offsetDisc(int a) const {
+    return activeOffset(components(r, a), exclusion(a));
+}
+
 std::int64_t Core::currentDisc(int a) const {
-    const AxisUnit& u = axes[static_cast<std::size_t>(a)];
-    std::int64_t off = 0;
-    const std::uint8_t ex = exclusion(a);
-    if (!(ex & 8))
-        off += r[r::ZeroOffsetX + a];
-    if (!(ex & 4))
-        off += r[r::DressingSumX + a];
-    if (!(ex & 2))
-        off += r[r::CorrectionX + a];
-    if (!(ex & 1))
-        off += r[r::DrfX + a];
-    return u.machineDisc() - off;
+    return axes[static_cast<std::size_t>(a)].machineDisc() - offsetDisc(a);
 }
 
 void Core::stopAllMotion() {

@@ -50,6 +50,9 @@ struct Core {
 
     // Exclusions in effect for axis a (G50..G53 in a program, else Z1006.4-7).
     std::uint8_t exclusion(int a) const;
+    // The sum of the offsets in effect for axis a (zero offset, dressing,
+    // correction, DRF less the exclusions), discretes: current = machine - sum.
+    std::int64_t offsetDisc(int a) const;
     std::int64_t currentDisc(int a) const;
 
     // --- data -----------------------------------------------------------
@@ -69,6 +72,8 @@ struct Core {
     AlarmRegistry alarms;
     PlcMessages plc;
     FastInputMap fast;
+    // The pulse channel (0..3) of handwheel 1 and 2 (C105/C106), -1: none.
+    std::array<int, 2> wheelChannel{-1, -1};
     MHandshake mhs;
     program::ProgramStore store;
     // Preview mode (engine/preview.h): instant axes, motion reported here.

@@ -30,6 +30,16 @@ public:
     std::uint16_t word(int address) const { return w_[slot(address)]; }
     void setWord(int address, std::uint16_t value) { w_[slot(address)] = value; }
     bool bit(ZBit b) const { return (word(b.word) >> b.bit) & 1u; }
+    // An axis' words by its index (0 = X, 1 = Z), without looking the
+    // address up (the engine reads them every tick): control word k = 0..2
+    // (Z1005..Z1007 of X, Z1008..Z1010 of Z) and state word k = 0..1
+    // (Z2005/Z2006 of X, Z2007/Z2008 of Z).
+    std::uint16_t axisControl(int axis, int k) const {
+        return w_[static_cast<std::size_t>(kAxisControlSlot + 3 * axis + k)];
+    }
+    void setAxisState(int axis, int k, std::uint16_t value) {
+        w_[static_cast<std::size_t>(kAxisStateSlot + 2 * axis + k)] = value;
+    }
     void setBit(ZBit b, bool on) {
         std::uint16_t& w = w_[slot(b.word)];
         w = static_cast<std::uint16_t>(on ? (w | (1u << b.bit)) : (w & ~(1u << b.bit)));
@@ -61,6 +71,8 @@ private:
         notHeld(a);
     }
     [[noreturn]] static void notHeld(int address);
+    static constexpr int kAxisControlSlot = 5; // slot(1005)
+    static constexpr int kAxisStateSlot = 35;  // slot(2005)
     std::array<std::uint16_t, 14 + 8 + 8 + 9> w_{};
 };
 

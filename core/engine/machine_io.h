@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace k528::engine {
@@ -46,5 +47,12 @@ struct MachineIo {
     std::array<bool, 2> regulatorEnable{}; // drive regulator enable, X and Z
     friend bool operator==(const MachineIo&, const MachineIo&) = default;
 };
+
+// The module health flags follow each other, pulseModule1Ok first: the
+// engine reads them as one block of bytes (Controller::systemChecks).
+inline constexpr std::size_t kMachineHealthFlags = 7;
+static_assert(offsetof(MachineIo, memoryOk) - offsetof(MachineIo, pulseModule1Ok) ==
+                  kMachineHealthFlags - 1,
+              "the health flags of MachineIo must stay together, in this order");
 
 } // namespace k528::engine

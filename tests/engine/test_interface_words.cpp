@@ -55,6 +55,27 @@ private slots:
         QVERIFY(same(z::fastInputState(AxisId::X, 8), 2006, 7));
         QVERIFY(same(z::fastInputState(AxisId::Z, 1), 2008, 0));
     }
+    // The engine's by-index door to an axis' words is the same word as its address.
+    void axisWordsByIndex() {
+        InterfaceWords w;
+        std::uint16_t v = 1;
+        for (AxisId a : {AxisId::X, AxisId::Z}) {
+            const int i = static_cast<int>(a);
+            for (int k = 0; k < 3; ++k, ++v) {
+                w.setWord(z::axisControlWord(a, k), v);
+                QCOMPARE(w.axisControl(i, k), v);
+            }
+            for (int k = 0; k < 2; ++k, ++v) {
+                w.setAxisState(i, k, v);
+                QCOMPARE(w.word(z::axisStateWord(a, k)), v);
+            }
+        }
+        // Nothing else was written.
+        QCOMPARE(w.word(1004), std::uint16_t(0));
+        QCOMPARE(w.word(1011), std::uint16_t(0));
+        QCOMPARE(w.word(2004), std::uint16_t(0));
+        QCOMPARE(w.word(1300), std::uint16_t(0));
+    }
     void panelKeysSkipBits6And7() {
         QCOMPARE(int(z::keyBit(1)), 0);
         QCOMPARE(int(z::keyBit(6)), 5);
