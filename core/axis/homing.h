@@ -45,7 +45,11 @@ public:
     void tick(Servo& servo, bool camPressed);
 
     Phase phase() const { return phase_; }
-    bool running() const { return phase_ != Phase::Idle && phase_ != Phase::Done && phase_ != Phase::Failed; }
+    // Approach .. ToReference (one comparison: the engine asks every tick).
+    bool running() const {
+        return static_cast<unsigned>(phase_) - static_cast<unsigned>(Phase::Approach) <=
+               static_cast<unsigned>(Phase::ToReference) - static_cast<unsigned>(Phase::Approach);
+    }
     bool done() const { return phase_ == Phase::Done; }
     // 40 or 41 after a failure, else 0.
     int alarm() const { return alarm_; }

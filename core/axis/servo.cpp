@@ -324,7 +324,10 @@ void Servo::tick(const ServoInputs& in, double dt) {
     if (jogDir_ != 0 && atTarget)
         jogDir_ = 0; // reached the jog limit
 
-    superviseEncoder(in, dt);
+    if (in.channel1Ok && in.channel2Ok && pulses_ != 0)
+        stallTimerMs_ = 0; // what superviseEncoder() does while the encoder moves
+    else
+        superviseEncoder(in, dt);
     if (fault_ != Fault::None) {
         // A loop error opens the loop at once: zero volts, then the
         // regulator blocks after ЗАДЕРЖКА БР.

@@ -79,8 +79,10 @@ public:
     void stop(bool emergency = false);
     // Speed factor: feed override (0..1). Feed hold comes from the inputs.
     void setOverride(double factor) {
-        steady_ = steady_ && factor == override_;
-        override_ = factor;
+        if (factor != override_) {
+            steady_ = false;
+            override_ = factor;
+        }
     }
     // Preview (engine/preview.h): the axis stands at `internal` at once.
     void place(double internal) {

@@ -104,6 +104,8 @@ public:
     bool anyActive(AlarmCategory c) const { return (activeMask_ & maskOf(c)) != 0; }
     std::uint64_t latchedMask() const { return latchedMask_; }
     std::uint64_t activeMask() const { return activeMask_; }
+    // The bit of message n in the masks above.
+    static constexpr std::uint64_t messageBit(int n) { return bit(n); }
     // Latched message numbers in the order they latched.
     std::vector<int> latchedList() const;
 

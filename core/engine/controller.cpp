@@ -111,11 +111,16 @@ void Controller::tick() {
         return;
     }
     c_.nowMs += c_.tickMs;
-    readInputs();
-    c_.plc.update(c_.words);
-    systemChecks();
-    programControl();
-    manualFunctions();
+    if (routineInputs()) {
+        programControl(); // what it does again each tick (its own shortcut)
+    } else {
+        readInputs();
+        c_.plc.update(c_.words);
+        systemChecks();
+        programControl();
+        manualFunctions();
+        noteRoutineInputs();
+    }
     for (AxisUnit& u : c_.axes)
         if (u.present)
             axisTick(u);
@@ -156,6 +161,30 @@ void Controller::noteSettled(bool inputsAsLeft) {
         quiet_.active = c_.alarms.activeMask();
     }
     quiet_.valid = true;
+}
+
+bool Controller::routineInputs() const {
+    // A reading of the same inputs would: count no handwheel pulse, decode
+    // the same signals, raise or clear no message, find no edge (so start,
+    // stop, reset, acknowledge nothing and keep mode and override) and, out
+    // of РУЧНОЙ with no pulse, move no axis by hand.
+    if (!routine_.valid || operatorActed_ || c_.mode == Mode::Manual || wheelDelta_[0] != 0 ||
+        wheelDelta_[1] != 0 || !c_.words.sameInputs(routine_.words) ||
+        std::memcmp(machineStatusBytes(c_.io), routine_.status.data(), kMachineStatusBytes) != 0)
+        return false;
+    for (std::size_t k = 0; k < wheelCount_.size(); ++k) {
+        const int ch = c_.wheelChannel[k];
+        const std::int64_t count = ch >= 0 ? c_.io.pulse[static_cast<std::size_t>(ch)].count : 0;
+        if (count != wheelCount_[k])
+            return false;
+    }
+    return true;
+}
+
+void Controller::noteRoutineInputs() {
+    routine_.valid = true;
+    routine_.words = c_.words;
+    std::memcpy(routine_.status.data(), machineStatusBytes(c_.io), kMachineStatusBytes);
 }
 
 void Controller::readInputs() {
@@ -213,7 +242,7 @@ void Controller::systemChecks() {
     // raised again while its cause lasts: condition() acts on a change only).
     // The seven health flags are read as the bytes they are (machine_io.h).
     std::uint64_t state = 0;
-    std::memcpy(&state, &io.pulseModule1Ok, kMachineHealthFlags);
+    std::memcpy(&state, machineHealthBytes(io), kMachineHealthFlags);
     state |= static_cast<std::uint64_t>(c_.words.word(z::SystemMessagesWord) != 0) << 56;
     if (state == lastSystemInputs_)
         return;
@@ -648,16 +677,22 @@ void Controller::axisTick(AxisUnit& u) {
     const std::uint16_t z1000 = c_.words.word(1000);
     c_.lastAxisWord0[i] = w0;
 
-    // Limit switches: brake with acceleration 2, the direction locked.
-    c_.condition(axisMsg(11, 27, a), u.limitPlus);
-    c_.condition(axisMsg(10, 26, a), u.limitMinus);
-    const double v = u.servo.commandVelocity();
-    if ((u.limitPlus && v > 0) || (u.limitMinus && v < 0)) {
-        u.servo.stop(true);
-        if (c_.osc[i].active())
-            c_.osc[i].abort(u.servo);
-        if (u.homing.running())
-            u.homing.cancel(u.servo);
+    // Limit switches: brake with acceleration 2, the direction locked (with
+    // neither switch nor its message, nothing to do).
+    constexpr std::array<std::uint64_t, kAxisCount> kLimitMessages{
+        AlarmRegistry::messageBit(11) | AlarmRegistry::messageBit(10),
+        AlarmRegistry::messageBit(27) | AlarmRegistry::messageBit(26)};
+    if (u.limitPlus || u.limitMinus || (c_.alarms.activeMask() & kLimitMessages[i]) != 0) {
+        c_.condition(axisMsg(11, 27, a), u.limitPlus);
+        c_.condition(axisMsg(10, 26, a), u.limitMinus);
+        const double v = u.servo.commandVelocity();
+        if ((u.limitPlus && v > 0) || (u.limitMinus && v < 0)) {
+            u.servo.stop(true);
+            if (c_.osc[i].active())
+                c_.osc[i].abort(u.servo);
+            if (u.homing.running())
+                u.homing.cancel(u.servo);
+        }
     }
 
     // Feed override; «Стоп» holds the feed of program motion.
@@ -720,6 +755,44 @@ void Controller::axisTick(AxisUnit& u) {
 // ---------------------------------------------------------------------------
 // Outputs
 
+namespace {
+
+// Z2000 bits of a program state (.8 program executing, .9 interrupted, .11
+// dwell, .12 M00), one entry per ProgramState.
+constexpr std::array<std::uint16_t, 8> kStateBitsZ2000 = [] {
+    std::array<std::uint16_t, 8> t{};
+    for (int i = 0; i < 8; ++i) {
+        const auto st = static_cast<ProgramState>(i);
+        t[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(
+            (executing(st) ? 1u << 8 : 0u) | (st == ProgramState::Interrupted ? 1u << 9 : 0u) |
+            (st == ProgramState::Dwell ? 1u << 11 : 0u) | (st == ProgramState::M0 ? 1u << 12 : 0u));
+    }
+    return t;
+}();
+static_assert(static_cast<int>(ProgramState::Alarm) == 7, "kStateBitsZ2000 covers every state");
+
+// Z2005/Z2007 bits of who owns an axis' motion: .9 «Gx10 active» and
+// whether the rapid bit .5 counts (a frame's or a jog's rapid motion).
+constexpr std::uint16_t kOwnerHandwheelFrame = 1u << 9;
+constexpr std::uint16_t kOwnerRapidCounts = 1u << 5;
+constexpr std::array<std::uint16_t, 7> kOwnerBits = [] {
+    std::array<std::uint16_t, 7> t{};
+    for (int i = 0; i < 7; ++i) {
+        const auto o = static_cast<MotionOwner>(i);
+        t[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(
+            (o == MotionOwner::HandwheelFrame ? kOwnerHandwheelFrame : 0u) |
+            (o == MotionOwner::Program || o == MotionOwner::Jog ? kOwnerRapidCounts : 0u));
+    }
+    return t;
+}();
+static_assert(static_cast<int>(MotionOwner::Homing) == 6, "kOwnerBits covers every owner");
+
+constexpr unsigned bitIf(bool v, int bit) {
+    return static_cast<unsigned>(v) << bit;
+}
+
+} // namespace
+
 void Controller::writeOutputs() {
     InterfaceWords& w = c_.words;
     // Machine side.
@@ -733,22 +806,16 @@ void Controller::writeOutputs() {
     }
 
     // Z2000.
-    std::uint16_t s = 0;
-    const auto set = [&](int bit, bool v) {
-        s = static_cast<std::uint16_t>(s | (static_cast<unsigned>(v) << bit));
-    };
-    set(0, c_.powered && !c_.alarms.anyActive(AlarmCategory::System));
-    set(modeKey(c_.mode), c_.powered);
-    set(8, executing(c_.state));
-    set(9, c_.state == ProgramState::Interrupted);
-    set(10, c_.endOrReset);
-    set(11, c_.state == ProgramState::Dwell);
-    set(12, c_.state == ProgramState::M0);
-    set(14, c_.overridePercent == 0);
     const std::int32_t wheel = c_.r[r::WheelCurrent], wmin = c_.r[r::WheelMin],
                        wmax = c_.r[r::WheelMax];
-    set(15, wmin > 0 && wheel < wmin);
-    w.setWord(2000, s);
+    const bool wheelBelowMin = wmin > 0 && wheel < wmin;
+    const bool wheelAboveMax = wmax > 0 && wheel > wmax;
+    const unsigned s = bitIf(c_.powered && !c_.alarms.anyActive(AlarmCategory::System), 0) |
+                       bitIf(c_.powered, modeKey(c_.mode)) |
+                       kStateBitsZ2000[static_cast<std::size_t>(c_.state)] |
+                       bitIf(c_.endOrReset, 10) | bitIf(c_.overridePercent == 0, 14) |
+                       bitIf(wheelBelowMin, 15);
+    w.setWord(2000, static_cast<std::uint16_t>(s));
     // Z2001.8..15: manual cycle n runs.
     std::uint16_t w2001 = static_cast<std::uint16_t>(w.word(2001) & 0x00FF);
     if (c_.cycle >= 1 && c_.cycle <= 8 && programActive(c_.state))
@@ -757,68 +824,77 @@ void Controller::writeOutputs() {
 
     // Z2005..Z2008 and R232..R262.
     refreshOffsets();
+    const unsigned wheelBits = bitIf(wheelBelowMin, 11) | bitIf(wheelAboveMax, 12); // X only
     for (const AxisUnit& u : c_.axes) {
-        const std::int64_t machine = u.present ? u.machineDisc() : 0;
-        axisR(u, machine);
-        std::uint16_t st = 0;
-        const auto sb = [&](int bit, bool v) { // without a branch: the bits change as axes move
-            st = static_cast<std::uint16_t>(st | (static_cast<unsigned>(v) << bit));
-        };
-        if (u.present) {
-            const axis::Servo& sv = u.servo;
-            sb(0, sv.fault() != axis::Fault::None);
-            sb(1, u.commandDir > 0);
-            sb(2, u.commandDir < 0);
-            sb(3, sv.moving() || !sv.inPosition());
-            sb(4, u.referenceOk());
-            sb(5, u.rapid && sv.moving() &&
-                      (u.owner == MotionOwner::Program || u.owner == MotionOwner::Jog));
-            sb(6, sv.loopClosed());
-            sb(7, sv.regulatorOn());
-            sb(8, u.referenced && !sv.moving() &&
-                      std::llabs(u.toInternal(c_.r[r::InitialX + u.index]) - sv.actual()) <=
-                          static_cast<double>(u.k.posToleranceInternal));
-            sb(9, u.owner == MotionOwner::HandwheelFrame);
-            const std::int32_t zlo = c_.r[r::SafetyZoneXMinus + 2 * u.index];
-            const std::int32_t zhi = c_.r[r::SafetyZoneXMinus + 2 * u.index + 1];
-            sb(10, zlo < zhi && machine >= zlo && machine <= zhi);
-            if (u.index == 0) {
-                sb(11, wmin > 0 && wheel < wmin);
-                sb(12, wmax > 0 && wheel > wmax);
-            }
-        }
-        w.setAxisState(u.index, 0, st);
+        if (u.present)
+            axisOutputs(u, u.index == 0 ? wheelBits : 0u);
+        else
+            absentAxisOutputs(u.index);
         w.setAxisState(u.index, 1, c_.io.fastInputs[static_cast<std::size_t>(u.index)]);
     }
     c_.r.set(r::Override, c_.overridePercent);
     c_.r.set(r::NestingLevel, interp_.level());
 }
 
+void Controller::absentAxisOutputs(int a) {
+    axisR(c_.axes[static_cast<std::size_t>(a)], 0);
+    c_.words.setAxisState(a, 0, 0);
+}
+
 void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
     RStore& r = c_.r;
     const int a = u.index;
+    const std::size_t i = static_cast<std::size_t>(a);
     if (!u.present) {
-        for (int n : {r::MachineX, r::CurrentX, r::SpeedX, r::ErrorX, r::DacX, r::RemainingX, r::HomeDistanceX,
-                      r::PulsesX})
+        for (int n : {r::MachineX, r::CurrentX, r::SpeedX, r::ErrorX, r::DacX, r::RemainingX,
+                      r::HomeDistanceX, r::PulsesX})
             r.set(n + a, 0);
         return;
     }
     const axis::Servo& sv = u.servo;
-    r.set(r::CurrentX + a, clampR(machine - offsets_.sum[static_cast<std::size_t>(a)]));
+    r.set(r::CurrentX + a, clampR(machine - offsets_.sum[i]));
     r.set(r::HomeDistanceX + a, clampR(u.homeDistanceDisc));
     // What comes of the servo alone stays while its ticks are quiet (at rest,
     // nothing asked): written when it may have changed.
-    bool& known = servoRKnown_[static_cast<std::size_t>(a)];
-    if (known && sv.quiet())
+    if (servoRKnown_[i] && sv.quiet())
         return;
-    known = true;
-    const double perDisc = u.ipd == 1 ? 1.0 : 0.5; // 1 / internal units per discrete
+    servoRKnown_[i] = true;
+    const double perDisc = u.perIpd; // 1 / internal units per discrete (exact)
     r.set(r::MachineX + a, clampR(machine));
     r.set(r::SpeedX + a, clampR(roundToInt(std::fabs(sv.commandVelocity()) * 60000.0 * perDisc)));
     r.set(r::ErrorX + a, clampR(roundToInt(sv.followingError() * perDisc)));
     r.set(r::DacX + a, sv.dac());
     r.set(r::RemainingX + a, clampR(roundToInt(sv.remaining() * perDisc)));
     r.set(r::PulsesX + a, clampR(sv.pulsesLastTick()));
+}
+
+void Controller::axisOutputs(const AxisUnit& u, unsigned wheelBits) {
+    const RStore& r = c_.r;
+    const int a = u.index;
+    const axis::Servo& sv = u.servo;
+    const double actual = sv.actual();
+    const std::int64_t machine = u.toDisc(actual);
+    axisR(u, machine);
+
+    // Z2005 / Z2007.
+    const bool moving = sv.moving();
+    const unsigned owner = kOwnerBits[static_cast<std::size_t>(u.owner)];
+    // «В исходном положении»: referenced, at rest, within ДОПУСК ПОЗ. of R220/R221
+    // (the distance truncated to whole internal units, as it always was).
+    const bool atInitial =
+        u.referenced && !moving &&
+        std::llabs(static_cast<long long>(u.toInternal(r[r::InitialX + a]) - actual)) <=
+            static_cast<double>(u.k.posToleranceInternal);
+    const std::int32_t zlo = r[r::SafetyZoneXMinus + 2 * a];
+    const std::int32_t zhi = r[r::SafetyZoneXMinus + 2 * a + 1];
+    const unsigned st =
+        bitIf(sv.fault() != axis::Fault::None, 0) | bitIf(u.commandDir > 0, 1) |
+        bitIf(u.commandDir < 0, 2) | bitIf(moving || !sv.inPosition(), 3) |
+        bitIf(u.referenceOk(), 4) | ((u.rapid && moving) ? owner & kOwnerRapidCounts : 0u) |
+        bitIf(sv.loopClosed(), 6) | bitIf(sv.regulatorOn(), 7) | bitIf(atInitial, 8) |
+        (owner & kOwnerHandwheelFrame) | bitIf(zlo < zhi && machine >= zlo && machine <= zhi, 10) |
+        wheelBits;
+    c_.words.setAxisState(a, 0, static_cast<std::uint16_t>(st));
 }
 
 void Controller::refreshOffsets() {

@@ -149,6 +149,10 @@ private:
     void writeOutputs();
     void refreshR();
     void axisR(const AxisUnit& u, std::int64_t machineDisc);
+    // R232..R262 and Z2005/Z2007 of a present axis (wheelBits: Z2005.11/.12
+    // of the wheel, X only) and of an absent one.
+    void axisOutputs(const AxisUnit& u, unsigned wheelBits);
+    void absentAxisOutputs(int a);
     void configurationCheck();
     void programStoreCheck();
     void trackFault(AxisUnit& u);
@@ -167,6 +171,7 @@ private:
     void wake() {
         unsettle();
         operatorActed_ = true;
+        routine_.valid = false;
     }
     void unsettle() {
         quiet_.valid = false;
@@ -189,6 +194,17 @@ private:
     // the fast inputs it last read (with Z1000/Z1001 in c_.lastZ1000/1001).
     bool operatorActed_ = true;
     std::array<std::uint8_t, 2> controlFastInputs_{};
+    // The routine tick (docs/engine.md, "Speed"): the inputs the last full
+    // reading of inputs, PLC messages, system checks, program control and
+    // manual functions saw. While they stay, with no operator function, no
+    // handwheel pulse and not in РУЧНОЙ, that reading would change nothing.
+    bool routineInputs() const;
+    void noteRoutineInputs();
+    struct RoutineInputs {
+        bool valid = false;
+        InterfaceWords words;
+        std::array<std::uint8_t, kMachineStatusBytes> status{}; // fast inputs, module health
+    } routine_;
     struct OffsetSums {
         bool valid = false;
         std::array<std::int32_t, 8> r{};          // R224..R231 as summed

@@ -8,6 +8,7 @@
 // are marked EXT and listed in docs/plc-interface.md).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -55,6 +56,11 @@ public:
     }
 
     friend bool operator==(const InterfaceWords&, const InterfaceWords&) = default;
+    // Whether the words the positioner reads (Z1000..Z1013, Z1300..Z1307,
+    // Z1900..Z1907) are those of `o`; its own Z2000..Z2008 are not compared.
+    bool sameInputs(const InterfaceWords& o) const {
+        return std::equal(w_.begin(), w_.begin() + kInputSlots, o.w_.begin());
+    }
 
 private:
     // Index of a held address; throws std::out_of_range for an address not
@@ -73,6 +79,7 @@ private:
     [[noreturn]] static void notHeld(int address);
     static constexpr int kAxisControlSlot = 5; // slot(1005)
     static constexpr int kAxisStateSlot = 35;  // slot(2005)
+    static constexpr int kInputSlots = 30;     // slots 0..29: Z1000..Z1907
     std::array<std::uint16_t, 14 + 8 + 8 + 9> w_{};
 };
 

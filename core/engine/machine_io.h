@@ -48,11 +48,22 @@ struct MachineIo {
     friend bool operator==(const MachineIo&, const MachineIo&) = default;
 };
 
-// The module health flags follow each other, pulseModule1Ok first: the
-// engine reads them as one block of bytes (Controller::systemChecks).
+// The module health flags follow each other, pulseModule1Ok first, right
+// after the fast inputs: the engine reads them as one block of bytes
+// (Controller::systemChecks, Controller::routineInputs).
 inline constexpr std::size_t kMachineHealthFlags = 7;
+inline constexpr std::size_t kMachineStatusBytes = 2 + kMachineHealthFlags; // from fastInputs
 static_assert(offsetof(MachineIo, memoryOk) - offsetof(MachineIo, pulseModule1Ok) ==
                   kMachineHealthFlags - 1,
               "the health flags of MachineIo must stay together, in this order");
+static_assert(offsetof(MachineIo, pulseModule1Ok) == offsetof(MachineIo, fastInputs) + 2,
+              "the health flags of MachineIo must follow the fast inputs");
+// Those bytes of `io` (fast inputs, then health): the object's own bytes.
+inline const unsigned char* machineStatusBytes(const MachineIo& io) {
+    return reinterpret_cast<const unsigned char*>(&io) + offsetof(MachineIo, fastInputs);
+}
+inline const unsigned char* machineHealthBytes(const MachineIo& io) {
+    return reinterpret_cast<const unsigned char*>(&io) + offsetof(MachineIo, pulseModule1Ok);
+}
 
 } // namespace k528::engine
