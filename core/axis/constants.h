@@ -74,7 +74,7 @@ struct Constants {
     double internalPerMsToMmPerMin(double v) const;
     double accelToInternalPerMs2(std::int64_t accelParam) const;
     double discToInternal(double disc) const { return disc * static_cast<double>(scale.internalPerDisc()); }
-    double internalToDisc(double internal) const { return internal / static_cast<double>(scale.internalPerDisc()); }
+    double internalToDisc(double internal) const { return units::internalToDisc(internal, scale); }
     // Internal units per encoder count (2·L/N).
     double internalPerCount() const { return 2.0 * static_cast<double>(encoderL) / static_cast<double>(encoderN); }
     // The effective stand-still check delay (ЗАДЕРЖКА КП, or ЗАДЕРЖКА БР when 0).

@@ -13,8 +13,13 @@ namespace k528::engine {
 
 namespace {
 
+// A value into the 32-bit range of an R-parameter (kRMin..kRMax); the value
+// almost always fits, and one comparison tells.
 constexpr std::int32_t clampR(std::int64_t v) {
-    return static_cast<std::int32_t>(v < kRMin ? kRMin : (v > kRMax ? kRMax : v));
+    const auto fit = static_cast<std::int32_t>(v); // modulo 2^32 (C++20)
+    if (fit == v) [[likely]]
+        return fit;
+    return static_cast<std::int32_t>(v < kRMin ? kRMin : kRMax);
 }
 constexpr bool rising(std::uint16_t now, std::uint16_t before, int bit) {
     return ((now >> bit) & 1u) && !((before >> bit) & 1u);
@@ -696,12 +701,13 @@ void Controller::axisTick(AxisUnit& u) {
     }
 
     // Feed override; «Стоп» holds the feed of program motion.
-    const bool hold = c_.stopHold && programMotion(u.owner);
+    const bool programOwned = programMotion(u.owner);
+    const bool hold = c_.stopHold && programOwned;
     if (c_.overridePercent != overrideFactorPercent_) {
         overrideFactorPercent_ = c_.overridePercent;
         overrideFactor_ = c_.overridePercent / 100.0;
     }
-    u.overrideFactor = programMotion(u.owner) && u.noOverride ? 1.0 : overrideFactor_;
+    u.overrideFactor = programOwned && u.noOverride ? 1.0 : overrideFactor_;
     u.servo.setOverride(u.overrideFactor);
 
     axis::ServoInputs in;

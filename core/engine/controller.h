@@ -142,7 +142,8 @@ private:
     void startProgram(int number, int cycle);
     void manualFunctions();
     void axisInputs(AxisUnit& u);
-    void axisTick(AxisUnit& u);
+    // Inlined into tick(): both axes in one frame (no call per axis).
+    [[gnu::always_inline]] inline void axisTick(AxisUnit& u);
     void handwheels(AxisUnit& u);
     void jog(AxisUnit& u);
     void homingStart(AxisUnit& u);

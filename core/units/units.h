@@ -104,7 +104,9 @@ constexpr std::int64_t discToInternal(std::int64_t disc, const AxisScale& s) {
     return disc * s.internalPerDisc();
 }
 inline double internalToDisc(double internal, const AxisScale& s) {
-    return internal / static_cast<double>(s.internalPerDisc());
+    // internal / internalPerDisc(): halving is exact, so the product by 0.5
+    // is the quotient bit for bit (without a division's latency).
+    return s.diameter ? internal : internal * 0.5;
 }
 
 // Speed constants (C40..44, C92..96) are in 10·display discretes per minute.

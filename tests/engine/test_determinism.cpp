@@ -17,7 +17,11 @@ std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
     return h;
 }
 
-std::uint64_t traceHash(const char* text) {
+// `fullTicks`: an operator function that changes nothing (the program
+// number again) before every tick, so that no tick takes a shortcut (the
+// settled tick, the routine tick, program control's): the trace must be the
+// same as with them.
+std::uint64_t traceHash(const char* text, bool fullTicks = false) {
     Rig r;
     std::uint64_t h = 0;
     if (!r.home())
@@ -25,6 +29,8 @@ std::uint64_t traceHash(const char* text) {
     r.load(text);
     r.start(1);
     for (int i = 0; i < 60000 && r.ctl->state() != ProgramState::Ended; ++i) {
+        if (fullTicks && !r.ctl->selectProgram(1).ok())
+            return 0;
         r.tick();
         for (int a : {1000, 1001, 1005, 1008, 2000, 2001, 2005, 2006, 2007, 2008})
             h = mix(h, r.w().word(a));
@@ -49,6 +55,55 @@ private slots:
         const std::uint64_t b = traceHash(kProgram);
         QVERIFY(a != 0);
         QCOMPARE(a, b);
+    }
+    // The shortcuts of the tick (docs/engine.md, "Speed") change nothing:
+    // every tick taken in full gives the same trace.
+    void shortcutsChangeNothing() {
+        const std::uint64_t a = traceHash(kProgram);
+        const std::uint64_t b = traceHash(kProgram, true);
+        QVERIFY(a != 0);
+        QCOMPARE(a, b);
+    }
+    // The routine tick: while a program moves the axes and nothing else
+    // changes, a changed word or an operator function acts in the next tick.
+    void routineTick() {
+        Rig r;
+        QVERIFY(r.home());
+        r.load("%L1\nN1 G0 X60 Z5\nN2 G1 X20 Z-60 FX100 FZ100\nN3 M30\n");
+        r.start(1);
+        r.advance(3000);
+        QVERIFY2(r.ctl->state() == ProgramState::Running,
+                 r.ctl->alarms().empty() ? "not running"
+                                         : std::to_string(r.ctl->alarms().front().number).c_str());
+        // An L key of another override: R249 shows it in the next tick.
+        int key = 0, percent = 100;
+        for (int l = 1; l <= 4 && key == 0; ++l) {
+            const int code = static_cast<int>(r.ctl->c()[engine::c::overrideKey(l)]);
+            if (units::overrideCodeToPercent(code) != 100) {
+                key = l;
+                percent = units::overrideCodeToPercent(code);
+            }
+        }
+        QVERIFY(key != 0);
+        r.tick();
+        QCOMPARE(r.ctl->r(engine::r::Override), 100);
+        QVERIFY(r.ctl->pressOverrideKey(key).ok());
+        r.tick();
+        QCOMPARE(r.ctl->r(engine::r::Override), percent);
+        r.advance(200);
+        // «Стоп» from the PLC: interrupted in the tick that reads the edge.
+        r.m->pressStop();
+        r.tick();
+        QCOMPARE(r.ctl->state(), ProgramState::Interrupted);
+        // «Пуск» again, then the emergency stop word: message 9 at once.
+        r.advance(500);
+        r.m->pressStart();
+        r.tick();
+        QCOMPARE(r.ctl->state(), ProgramState::Running);
+        r.advance(200);
+        r.m->setEmergencyStop(true);
+        r.tick();
+        QVERIFY(r.ctl->alarmRegistry().active(9));
     }
     void endState() {
         const profile::MachineProfile p = profile::builtin("training-lathe");
