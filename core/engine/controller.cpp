@@ -4,6 +4,7 @@
 #include "engine/coordinates.h"
 #include "engine/self_test.h"
 #include "profile/validate.h"
+#include "util/same_bytes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -175,7 +176,7 @@ bool Controller::routineInputs() const {
     // of РУЧНОЙ with no pulse, move no axis by hand.
     if (!routine_.valid || operatorActed_ || c_.mode == Mode::Manual || wheelDelta_[0] != 0 ||
         wheelDelta_[1] != 0 || !c_.words.sameInputs(routine_.words) ||
-        std::memcmp(machineStatusBytes(c_.io), routine_.status.data(), kMachineStatusBytes) != 0)
+        !util::sameBytes<kMachineStatusBytes>(machineStatusBytes(c_.io), routine_.status.data()))
         return false;
     for (std::size_t k = 0; k < wheelCount_.size(); ++k) {
         const int ch = c_.wheelChannel[k];
@@ -909,7 +910,8 @@ void Controller::refreshOffsets() {
     std::array<std::int32_t, 8> now;
     std::copy_n(c_.r.values().begin() + r::DressingSumX, now.size(), now.begin());
     const std::array<std::uint8_t, kAxisCount> ex{c_.exclusion(0), c_.exclusion(1)};
-    if (offsets_.valid && now == offsets_.r && ex == offsets_.ex)
+    if (offsets_.valid && util::sameBytes<sizeof now>(now.data(), offsets_.r.data()) &&
+        ex == offsets_.ex)
         return;
     offsets_.valid = true;
     offsets_.r = now;

@@ -8,11 +8,11 @@
 // are marked EXT and listed in docs/plc-interface.md).
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 
 #include "axis/constants.h"
+#include "util/same_bytes.h"
 
 namespace k528::engine {
 
@@ -59,7 +59,7 @@ public:
     // Whether the words the positioner reads (Z1000..Z1013, Z1300..Z1307,
     // Z1900..Z1907) are those of `o`; its own Z2000..Z2008 are not compared.
     bool sameInputs(const InterfaceWords& o) const {
-        return std::equal(w_.begin(), w_.begin() + kInputSlots, o.w_.begin());
+        return util::sameBytes<kInputSlots * sizeof(std::uint16_t)>(w_.data(), o.w_.data());
     }
 
 private:
