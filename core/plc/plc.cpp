@@ -8,11 +8,6 @@ namespace k528::plc {
 
 namespace {
 
-constexpr int kWords[] = {1000, 1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008, 1009,
-                          1010, 1011, 1012, 1013, 1300, 1301, 1302, 1303, 1304, 1305,
-                          1306, 1307, 1900, 1901, 1902, 1903, 1904, 1905, 1906, 1907,
-                          2000, 2001, 2002, 2003, 2004, 2005, 2006, 2007, 2008};
-constexpr int kWordCount = static_cast<int>(sizeof kWords / sizeof kWords[0]);
 constexpr std::int64_t kNever = INT64_MAX;
 
 std::string zName(int word, int bit) {
@@ -27,13 +22,6 @@ std::uint16_t keyMaskBits() {
 }
 
 } // namespace
-
-int Plc::zSlot(int word) {
-    for (int i = 0; i < kWordCount; ++i)
-        if (kWords[i] == word)
-            return i;
-    return -1;
-}
 
 std::uint32_t Plc::addSignal(const std::string& name, Kind kind, const std::string& path) {
     if (const auto it = index_.find(name); it != index_.end())
@@ -125,6 +113,9 @@ Plc::CompiledActions Plc::compileActions(const Actions& a, const std::string& pa
 }
 
 Plc::Plc(const MachineDescription& description) : d_(description) {
+    static_assert(zSlot(1000) == 0 && zSlot(1013) == 13 && zSlot(1300) == 14 && zSlot(1307) == 21 &&
+                  zSlot(1900) == 22 && zSlot(1907) == 29 && zSlot(2000) == 30 &&
+                  zSlot(2008) == kZWords - 1 && zSlot(1014) < 0 && zSlot(2009) < 0);
     // --- the signal space -------------------------------------------------
     for (const InputDef& in : d_.inputs)
         inputSig_.push_back(addSignal(in.name, Kind::Input, in.path));
@@ -146,7 +137,7 @@ Plc::Plc(const MachineDescription& description) : d_(description) {
     for (int k = 1; k <= 12; ++k)
         keySig_[k] = addSignal("K" + std::to_string(k), Kind::Builtin, "");
     zBase_ = static_cast<std::uint32_t>(names_.size());
-    const std::size_t n = names_.size() + static_cast<std::size_t>(kWordCount) * 16;
+    const std::size_t n = names_.size() + static_cast<std::size_t>(kZWords) * 16;
     sig_.assign(n, 0);
     prev_.assign(n, 0);
     latch_.assign(n, 0);
