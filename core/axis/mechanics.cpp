@@ -20,7 +20,8 @@ inline double floorExact(double x) {
 } // namespace
 
 Mechanics::Mechanics(const MechanicsSettings& s)
-    : s_(s), perCountMm_(s.mmPerCount()), perCountInverse_(1.0 / perCountMm_) {
+    : s_(s), halfBacklashMm_(s.backlashMm * 0.5), perCountMm_(s.mmPerCount()),
+      perCountInverse_(1.0 / perCountMm_) {
     motorMm_ = slideMm_ = s.startSlideMm;
     updateEncoder(motorMm_);
     markCrossed_ = false;
@@ -40,19 +41,50 @@ double Mechanics::driveVolts() const {
 }
 
 void Mechanics::setChannelBroken(int channel, bool broken) {
-    settled_ = false;
+    settled_ = quiet_ = false;
     if (channel == 1)
         channel1Broken_ = broken;
     else
         channel2Broken_ = broken;
+    encoderBlocked_ = encoderFrozen_ || channel1Broken_ || channel2Broken_;
 }
 
 void Mechanics::pushSlide(double deltaMm) {
     const double before = motorMm_;
-    settled_ = false;
+    settled_ = quiet_ = false;
     slideMm_ += deltaMm;
     motorMm_ += deltaMm; // a free screw turns with the slide
     updateEncoder(before);
+}
+
+// updateEncoder's result for a move that stays well inside the revolution
+// of the last update (no zero mark), the counter following the motor and
+// the count away from a boundary — the common case of a moving axis, inline
+// in its tick. False, with nothing changed, when updateEncoder must do it.
+inline bool Mechanics::encoderWithinRevolution(double previousMotorMm) {
+    if (encoderBlocked_ || !markRevFresh_ || previousMotorMm != markRevMotorMm_ ||
+        !(motorMm_ >= markRevLoMm_ && motorMm_ <= markRevHiMm_ && markRevHiMm_ > markRevLoMm_))
+        return false;
+    // The floor of the count as updateEncoder takes it from the reciprocal
+    // (up to 2^28 counts the truncation, one less below zero), where it
+    // takes it: a millionth of a count or more from an integer.
+    const double approx = motorMm_ * perCountInverse_;
+    if (!(std::fabs(approx) < 268435456.0))
+        return false;
+    std::int64_t c = static_cast<std::int64_t>(approx);
+    double whole = static_cast<double>(c);
+    if (whole > approx) {
+        --c;
+        whole -= 1.0;
+    }
+    const double frac = approx - whole;
+    if (!(frac > 1e-6 && frac < 1.0 - 1e-6))
+        return false;
+    markCrossed_ = false;
+    markRevMotorMm_ = motorMm_; // same revolution: markRev_ stays
+    countFresh_ = true;
+    count_ = s_.encoderWiredInverted ? -c : c;
+    return true;
 }
 
 void Mechanics::tick(double dt) {
@@ -65,9 +97,11 @@ void Mechanics::tick(double dt) {
     // At rest with nothing to move it (no drive speed asked, nothing
     // changed by hand): the same state, the same count, no mark.
     if (settled_ && countFresh_ && (!driveEnabled_ || targetSpeed_ == 0.0)) {
+        quiet_ = !markCrossed_; // a mark of the tick before is gone now
         markCrossed_ = false;
         return;
     }
+    quiet_ = false;
     // Target motor speed in mm/ms of slide travel.
     double accelLimit = brakeStep_;
     if (driveEnabled_) {
@@ -89,12 +123,13 @@ void Mechanics::tick(double dt) {
     const double before = motorMm_;
     motorMm_ += motorSpeed_ * dt;
     // The slide follows the screw once the play is taken up.
-    const double half = s_.backlashMm * 0.5;
+    const double half = halfBacklashMm_;
     if (motorMm_ - slideMm_ > half)
         slideMm_ = motorMm_ - half;
     else if (slideMm_ - motorMm_ > half)
         slideMm_ = motorMm_ + half;
-    updateEncoder(before);
+    if (!encoderWithinRevolution(before))
+        updateEncoder(before);
     settled_ = motorSpeed_ == 0.0;
 }
 
@@ -120,13 +155,13 @@ void Mechanics::updateEncoder(double previousMotorMm) {
     markRevMotorMm_ = motorMm_;
     markRev_ = k1;
     markRevFresh_ = true;
-    if (k0 != k1 && !encoderFrozen_ && !channel1Broken_ && !channel2Broken_) {
+    if (k0 != k1 && !encoderBlocked_) {
         const double markMm = s_.zeroMarkPhaseMm + std::max(k0, k1) * lead;
         std::int64_t c = static_cast<std::int64_t>(std::llround(markMm / perCount));
         markCount_ = s_.encoderWiredInverted ? -c : c;
         markCrossed_ = true;
     }
-    countFresh_ = !(encoderFrozen_ || channel1Broken_ || channel2Broken_);
+    countFresh_ = !encoderBlocked_;
     if (!countFresh_)
         return; // the counter no longer follows the motor
     // floor(motor / perCount) from the reciprocal: the product is within

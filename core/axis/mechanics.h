@@ -56,6 +56,11 @@ public:
     // Whether a zero mark passed during the last tick, and its count.
     bool zeroMarkCrossed() const { return markCrossed_; }
     std::int64_t zeroMarkCount() const { return markCount_; }
+    // The encoder's outputs (count, lines, zero mark) are those before the
+    // last tick: it found the plant at rest, and nothing that changes them
+    // (a fault, a push) happened since. A reader that copied them then need
+    // not copy them again.
+    bool quiet() const { return quiet_; }
 
     double motorMm() const { return motorMm_; }
     double slideMm() const { return slideMm_; }
@@ -67,17 +72,19 @@ public:
     void setChannelBroken(int channel, bool broken);
     void setEncoderFrozen(bool frozen) { // reads a constant value
         encoderFrozen_ = frozen;
-        settled_ = false;
+        encoderBlocked_ = encoderFrozen_ || channel1Broken_ || channel2Broken_;
+        settled_ = quiet_ = false;
     }
     void setJammed(bool jammed) { // the slide cannot move
         jammed_ = jammed;
-        settled_ = false;
+        settled_ = quiet_ = false;
     }
     // Moves the slide by hand / external force while the drive is off.
     void pushSlide(double deltaMm);
 
 private:
     void updateEncoder(double previousMotorMm);
+    bool encoderWithinRevolution(double previousMotorMm);
     void refreshTarget(); // targetSpeed_ from the DAC code
 
 
@@ -91,6 +98,7 @@ private:
     std::int64_t markCount_ = 0;
     bool channel1Broken_ = false, channel2Broken_ = false;
     bool encoderFrozen_ = false;
+    bool encoderBlocked_ = false; // frozen or a channel broken: the counter stands
     bool jammed_ = false;
     double alpha_ = 0, alphaDt_ = -1; // lag factor cached per tick length
     double brakeStep_ = 0, accelStep_ = 0; // speed change limits per tick (of alphaDt_)
@@ -99,6 +107,8 @@ private:
     // The last tick left the motor at rest and nothing changed since: a
     // tick with no drive speed asked changes nothing.
     bool settled_ = false;
+    bool quiet_ = false;                // quiet()
+    double halfBacklashMm_ = 0;         // s_.backlashMm / 2
     double perCountMm_ = 0;                  // s_.mmPerCount()
     double perCountInverse_ = 0;             // 1 / perCountMm_ (updateEncoder)
     double markRevMotorMm_ = 0, markRev_ = 0; // revolution index (zero marks) of a motor position
