@@ -1,6 +1,7 @@
 #include "plc/plc.h"
 
 #include <algorithm>
+#include <bit>
 #include <climits>
 #include <cstring>
 
@@ -323,28 +324,62 @@ void Plc::setStopped(bool stopped) {
     }
 }
 
+// The 16 signals of a word hold its bits, signal b bit b (0 or 1; packing
+// reads any non-zero signal as 1). Eight signals at a time in one 64-bit
+// word (little-endian: signal b of the eight is byte b): the scan packs and
+// unpacks some forty words.
 void Plc::unpackWord(int word, std::uint16_t value) {
-    const std::uint32_t base = zSignal(word, 0);
-    for (int b = 0; b < 16; ++b)
-        sig_[base + static_cast<std::uint32_t>(b)] = static_cast<std::uint8_t>((value >> b) & 1u);
+    std::uint8_t* p = sig_.data() + zSignal(word, 0);
+    if constexpr (std::endian::native == std::endian::little) {
+        for (int h = 0; h < 2; ++h) {
+            // Byte i of bits·0x0101… holds the eight bits; the mask keeps bit
+            // i of them in byte i; + 0x7F carries it to bit 7 of its byte
+            // (at most 0xFF: no carry on); shifted and masked, it is 0 or 1.
+            const std::uint64_t bits = (value >> (8 * h)) & 0xFFu;
+            const std::uint64_t v = ((((bits * 0x0101010101010101ull) & 0x8040201008040201ull) +
+                                      0x7F7F7F7F7F7F7F7Full) >>
+                                     7) &
+                                    0x0101010101010101ull;
+            std::memcpy(p + 8 * h, &v, sizeof v);
+        }
+    } else {
+        for (int b = 0; b < 16; ++b)
+            p[b] = static_cast<std::uint8_t>((value >> b) & 1u);
+    }
 }
 
 std::uint16_t Plc::packWord(int word) const {
-    const std::uint32_t base = zSignal(word, 0);
+    const std::uint8_t* p = sig_.data() + zSignal(word, 0);
     unsigned v = 0;
-    for (int b = 0; b < 16; ++b)
-        v |= static_cast<unsigned>(sig_[base + static_cast<std::uint32_t>(b)] != 0) << b;
+    if constexpr (std::endian::native == std::endian::little) {
+        for (int h = 0; h < 2; ++h) {
+            std::uint64_t x;
+            std::memcpy(&x, p + 8 * h, sizeof x);
+            // Bit 7 of each byte set when the byte is not 0 (its low seven
+            // bits + 0x7F reach bit 7 without a carry out of the byte) ...
+            const std::uint64_t nonZero =
+                (((x & 0x7F7F7F7F7F7F7F7Full) + 0x7F7F7F7F7F7F7F7Full) | x) & 0x8080808080808080ull;
+            // ... and gathered: byte i's bit lands on bit 56 + i of the product.
+            v |= static_cast<unsigned>(((nonZero >> 7) * 0x0102040810204080ull) >> 56) << (8 * h);
+        }
+    } else {
+        for (int b = 0; b < 16; ++b)
+            v |= static_cast<unsigned>(p[b] != 0) << b;
+    }
     return static_cast<std::uint16_t>(v);
 }
 
 void Plc::readPositioner(const engine::InterfaceWords& w) {
     if (!linkOk_)
         return;
-    for (int a = 2000; a <= 2008; ++a) {
-        if (words_.word(a) != w.word(a)) {
+    // Read every tick: compared without a branch per word, copied on a change.
+    unsigned diff = 0;
+    for (int a = 2000; a <= 2008; ++a)
+        diff |= static_cast<unsigned>(words_.word(a) ^ w.word(a));
+    if (diff != 0) {
+        for (int a = 2000; a <= 2008; ++a)
             words_.setWord(a, w.word(a));
-            dirty_ = true;
-        }
+        dirty_ = true;
     }
     const auto keys = static_cast<std::uint16_t>(w.word(engine::z::KeysWord) & keyMaskBits());
     if ((keys & ~keysPending_) != 0) {
