@@ -306,7 +306,7 @@ void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescr
                                 " has no system message text S" + (m.place < 9 ? "0" : "") +
                                 std::to_string(m.place + 1) + " in profile " + p.name);
 
-    senseAxes(0);
+    senseDrives(0);
 }
 
 // ---------------------------------------------------------------------------
@@ -316,7 +316,9 @@ void Simulation::powerOn() {
     ctl_->powerOn();
 }
 
-void Simulation::senseAxes(std::int64_t nowMs) {
+// Everything senseAxes reads: the drives' contactor and ready contacts, the
+// axis switches.
+void Simulation::senseDrives(std::int64_t nowMs) {
     const bool power = signals_.actuator(drivesPowerAct_);
     if (power && drivesPowerSinceMs_ < 0)
         drivesPowerSinceMs_ = nowMs;
@@ -326,27 +328,53 @@ void Simulation::senseAxes(std::int64_t nowMs) {
     const bool powered =
         power && nowMs - drivesPowerSinceMs_ >= static_cast<std::int64_t>(eq_.drivesReadyDelayMs);
     for (AxisPlant& x : axes_) {
-        if (!x.present) {
-            // No drive: its ready contact is bridged in the cabinet.
-            signals_.setSensor(x.readySig, powered);
-            continue;
-        }
-        const double s = x.mech->slideMm();
-        signals_.setSensor(x.camSig, s >= x.place.camLoMm && s <= x.place.camHiMm);
-        signals_.setSensor(x.limPlusSig, s >= x.place.limitPlusMm || x.stuckLimit > 0);
-        signals_.setSensor(x.limMinusSig, s <= x.place.limitMinusMm || x.stuckLimit < 0);
-        signals_.setSensor(x.readySig, powered && !x.driveFault);
+        // No drive: its ready contact is bridged in the cabinet.
+        x.ready = x.present ? powered && !x.driveFault : powered;
+        signals_.setSensor(x.readySig, x.ready);
+        if (x.present)
+            senseSwitches(x);
     }
+    sensedPower_ = power;
+    sensedDelayMs_ = eq_.drivesReadyDelayMs;
+    // While the ready delay runs, time alone changes the ready contacts.
+    senseAll_ = power && !powered;
 }
 
-void Simulation::writePositionerInputs(bool changed) {
+// The cam and the limit switches of a present axis at its slide's position,
+// and the stretch of positions around it that passes no switch point.
+void Simulation::senseSwitches(AxisPlant& x) {
+    const double s = x.mech->slideMm();
+    const engine::AxisPlacement& p = x.place;
+    signals_.setSensor(x.camSig, s >= p.camLoMm && s <= p.camHiMm);
+    signals_.setSensor(x.limPlusSig, s >= p.limitPlusMm || x.stuckLimit > 0);
+    signals_.setSensor(x.limMinusSig, s <= p.limitMinusMm || x.stuckLimit < 0);
+    // Every switch compares s with one of these points (>= or <=): on either
+    // side of all of them the readings stay. On a point (or not a number)
+    // the stretch is empty and the next tick looks again.
+    double lo = -HUGE_VAL, hi = HUGE_VAL;
+    for (const double t : {p.camLoMm, p.camHiMm, p.limitPlusMm, p.limitMinusMm}) {
+        if (t < s)
+            lo = std::max(lo, t);
+        else if (t > s)
+            hi = std::min(hi, t);
+        else
+            lo = hi = s;
+    }
+    x.switchLoMm = lo;
+    x.switchHiMm = hi;
+}
+
+// The health of the positioner's modules and the PLC link (faults), and the
+// channels the plant writes, which a failed module or a fault changes.
+void Simulation::refreshIoWiring() {
     engine::MachineIo& io = ctl_->io();
     const auto broken = [&](PositionerPart p) {
         return (brokenParts_ >> (static_cast<int>(p) - 1)) & 1u;
     };
     // A failed CP34.23 counts no more: both its channels stand still.
-    const auto channelDead = [&](int channel) {
-        return broken(channel < 2 ? PositionerPart::PulseModule1 : PositionerPart::PulseModule2);
+    const auto live = [&](int channel) {
+        return channel >= 0 &&
+               !broken(channel < 2 ? PositionerPart::PulseModule1 : PositionerPart::PulseModule2);
     };
     io.pulseModule1Ok = !broken(PositionerPart::PulseModule1);
     io.pulseModule2Ok = !broken(PositionerPart::PulseModule2);
@@ -354,23 +382,65 @@ void Simulation::writePositionerInputs(bool changed) {
     io.commModuleOk = !broken(PositionerPart::CommModule);
     io.panelLinkOk = !broken(PositionerPart::PanelLink);
     io.memoryOk = !broken(PositionerPart::Memory);
-    for (const AxisPlant& x : axes_) {
-        if (!x.present || x.encoderChannel < 0 || channelDead(x.encoderChannel))
-            continue;
-        engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderChannel)];
-        ch.count = x.mech->encoderCount() + x.glitchCounts;
-        ch.line1Ok = x.mech->channelOk(1);
-        ch.line2Ok = x.mech->channelOk(2);
-        ch.zeroMark = x.mech->zeroMarkCrossed();
-        ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
-    }
-    if (eq_.pendant)
-        for (int k = 0; k < 2; ++k)
-            if (wheelChannel_[static_cast<std::size_t>(k)] >= 0 &&
-                !channelDead(wheelChannel_[static_cast<std::size_t>(k)]))
-                io.pulse[static_cast<std::size_t>(wheelChannel_[static_cast<std::size_t>(k)])]
-                    .count = eq_.pendant->wheelCount(k + 1);
     io.plcLinkOk = !lostLink_;
+    for (AxisPlant& x : axes_) {
+        x.encoderOut = x.present && live(x.encoderChannel) ? x.encoderChannel : -1;
+        x.dacIn = io.dacModuleOk ? x.dacChannel : -1; // a failed CM32.03 gives 0 V
+    }
+    wheelOverEncoder_ = false;
+    for (std::size_t k = 0; k < 2; ++k) {
+        wheelOut_[k] = eq_.pendant && live(wheelChannel_[k]) ? wheelChannel_[k] : -1;
+        for (const AxisPlant& x : axes_)
+            wheelOverEncoder_ = wheelOverEncoder_ || (wheelOut_[k] >= 0 && wheelOut_[k] == x.encoderOut);
+    }
+}
+
+void Simulation::writeEncoder(engine::MachineIo& io, const AxisPlant& x) const {
+    engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
+    ch.count = x.mech->encoderCount() + x.glitchCounts;
+    ch.line1Ok = x.mech->channelOk(1);
+    ch.line2Ok = x.mech->channelOk(2);
+    ch.zeroMark = x.mech->zeroMarkCrossed();
+    ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
+}
+
+// After the encoders: a handwheel wired to an encoder's channel wins.
+void Simulation::writeHandwheels(engine::MachineIo& io) const {
+    for (std::size_t k = 0; k < 2; ++k)
+        if (wheelOut_[k] >= 0)
+            io.pulse[static_cast<std::size_t>(wheelOut_[k])].count =
+                eq_.pendant->wheelCount(static_cast<int>(k) + 1);
+}
+
+void Simulation::writePositionerInputs(bool changed) {
+    engine::MachineIo& io = ctl_->io();
+    if (ioStale_) {
+        ioStale_ = false;
+        refreshIoWiring();
+        for (const AxisPlant& x : axes_)
+            if (x.encoderOut >= 0)
+                writeEncoder(io, x);
+        if (eq_.pendant)
+            eq_.pendant->takeWheelTurned();
+        writeHandwheels(io);
+    } else {
+        // An encoder's outputs change only in a tick of its drive that was
+        // not quiet, and then only the count and the zero mark: the line
+        // monitoring changes with a fault, which makes everything stale.
+        bool encoders = false;
+        for (const AxisPlant& x : axes_)
+            if (x.encoderOut >= 0 && !x.mech->quiet()) {
+                engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
+                ch.count = x.mech->encoderCount() + x.glitchCounts;
+                ch.zeroMark = x.mech->zeroMarkCrossed();
+                if (ch.zeroMark) // a mark's count is new only with the mark
+                    ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
+                encoders = true;
+            }
+        const bool turned = eq_.pendant && eq_.pendant->takeWheelTurned();
+        if (turned || (encoders && wheelOverEncoder_))
+            writeHandwheels(io);
+    }
     if (!changed)
         return;
     // Fast inputs of both CP34.23 modules, as C107..C122 wire them.
@@ -426,24 +496,41 @@ void Simulation::actuate(double dtMs) {
         AxisPlant& x = axes_[static_cast<std::size_t>(i)];
         if (!x.present)
             continue;
-        const bool dacOut = x.dacChannel >= 0 && io.dacModuleOk; // a failed CM32.03 gives 0 V
-        x.mech->setDacCode(dacOut ? io.dac[static_cast<std::size_t>(x.dacChannel)] : 0);
-        x.mech->setDriveEnabled(io.regulatorEnable[static_cast<std::size_t>(i)] &&
-                                signals_.sensor(x.readySig));
+        x.mech->setDacCode(x.dacIn >= 0 ? io.dac[static_cast<std::size_t>(x.dacIn)] : 0);
+        x.mech->setDriveEnabled(io.regulatorEnable[static_cast<std::size_t>(i)] && x.ready);
         x.mech->tick(dtMs);
     }
-    for (auto& s : eq_.spindles)
-        s->tick(dtMs);
-    for (auto& p : eq_.pumps)
-        p->tick(dtMs);
-    if (eq_.chuck)
-        eq_.chuck->tick(dtMs);
-    if (eq_.turret)
-        eq_.turret->tick(dtMs);
-    if (eq_.door)
-        eq_.door->tick();
+    if (signals_.takeEquipmentAwake()) {
+        for (auto& s : eq_.spindles)
+            s->tick(dtMs);
+        for (auto& p : eq_.pumps)
+            p->tick(dtMs);
+        if (eq_.chuck)
+            eq_.chuck->tick(dtMs);
+        if (eq_.turret)
+            eq_.turret->tick(dtMs);
+        if (eq_.door)
+            eq_.door->tick();
+    }
     if (eq_.grinding)
         eq_.grinding->tick(dtMs, machineMm(AxisId::X), machineMm(AxisId::Z));
+}
+
+// The sensors of the axes and drives, as senseDrives would set them.
+inline void Simulation::senseAxes(std::int64_t nowMs) {
+    if (senseAll_ || eq_.drivesReadyDelayMs != sensedDelayMs_) {
+        senseDrives(nowMs);
+        return;
+    }
+    // The drives' contacts read as they did: only a slide that left the
+    // stretch between its switch points can change a switch.
+    for (AxisPlant& x : axes_) {
+        if (!x.present)
+            continue;
+        const double s = x.mech->slideMm();
+        if (!(s > x.switchLoMm && s < x.switchHiMm))
+            senseSwitches(x);
+    }
 }
 
 void Simulation::tick() {
@@ -471,6 +558,9 @@ void Simulation::tick() {
         plc_->scan(now);
         for (const Wire& o : outputs_)
             signals_.setActuator(o.signal, plc_->output(o.plcIndex));
+        // The drives' contactor is one of them (senseAxes).
+        if (signals_.actuator(drivesPowerAct_) != sensedPower_)
+            senseAll_ = true;
         if (!lostLink_)
             plc_->writePositioner(w);
     }
@@ -729,7 +819,11 @@ void Simulation::applyFault(const FaultSpec& f, bool on) {
         plc_->setStopped(on);
         break;
     }
+    // The next tick looks at everything a fault can change: the sensors, the
+    // axis switches and ready contacts, the positioner's inputs and wiring.
     signals_.markChanged();
+    senseAll_ = true;
+    ioStale_ = true;
 }
 
 void Simulation::inject(const FaultSpec& f) {
