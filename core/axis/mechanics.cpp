@@ -30,7 +30,6 @@ Mechanics::Mechanics(const MechanicsSettings& s)
 
 void Mechanics::refreshTarget() {
     targetSpeed_ = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
-    targetFresh_ = true;
 }
 
 double Mechanics::driveVolts() const {
@@ -57,80 +56,11 @@ void Mechanics::pushSlide(double deltaMm) {
     updateEncoder(before);
 }
 
-// updateEncoder's result for a move that stays well inside the revolution
-// of the last update (no zero mark), the counter following the motor and
-// the count away from a boundary — the common case of a moving axis, inline
-// in its tick. False, with nothing changed, when updateEncoder must do it.
-inline bool Mechanics::encoderWithinRevolution(double previousMotorMm) {
-    if (encoderBlocked_ || !markRevFresh_ || previousMotorMm != markRevMotorMm_ ||
-        !(motorMm_ >= markRevLoMm_ && motorMm_ <= markRevHiMm_ && markRevHiMm_ > markRevLoMm_))
-        return false;
-    // The floor of the count as updateEncoder takes it from the reciprocal
-    // (up to 2^28 counts the truncation, one less below zero), where it
-    // takes it: a millionth of a count or more from an integer.
-    const double approx = motorMm_ * perCountInverse_;
-    if (!(std::fabs(approx) < 268435456.0))
-        return false;
-    std::int64_t c = static_cast<std::int64_t>(approx);
-    double whole = static_cast<double>(c);
-    if (whole > approx) {
-        --c;
-        whole -= 1.0;
-    }
-    const double frac = approx - whole;
-    if (!(frac > 1e-6 && frac < 1.0 - 1e-6))
-        return false;
-    markCrossed_ = false;
-    markRevMotorMm_ = motorMm_; // same revolution: markRev_ stays
-    countFresh_ = true;
-    count_ = s_.encoderWiredInverted ? -c : c;
-    return true;
-}
-
-void Mechanics::tick(double dt) {
-    if (dt != alphaDt_) {
-        alpha_ = s_.timeConstantMs > 0 ? 1.0 - std::exp(-dt / s_.timeConstantMs) : 1.0;
-        brakeStep_ = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
-        accelStep_ = s_.maxAccelMmPerS2 * 1e-6 * dt;
-        alphaDt_ = dt;
-    }
-    // At rest with nothing to move it (no drive speed asked, nothing
-    // changed by hand): the same state, the same count, no mark.
-    if (settled_ && countFresh_ && (!driveEnabled_ || targetSpeed_ == 0.0)) {
-        quiet_ = !markCrossed_; // a mark of the tick before is gone now
-        markCrossed_ = false;
-        return;
-    }
-    quiet_ = false;
-    // Target motor speed in mm/ms of slide travel.
-    double accelLimit = brakeStep_;
-    if (driveEnabled_) {
-        const double target = targetSpeed_;
-        accelLimit = accelStep_;
-        const double change = std::clamp((target - motorSpeed_) * alpha_, -accelLimit, accelLimit);
-        motorSpeed_ += change;
-    } else {
-        // Regulator blocked: the motor coasts down against the brake.
-        if (std::fabs(motorSpeed_) <= accelLimit)
-            motorSpeed_ = 0;
-        else
-            motorSpeed_ -= motorSpeed_ > 0 ? accelLimit : -accelLimit;
-    }
-    // Flush speeds far below one encoder count per hour: the lag would
-    // otherwise decay into subnormal numbers, which are very slow to compute.
-    if (jammed_ || std::fabs(motorSpeed_) < 1e-12)
-        motorSpeed_ = 0;
-    const double before = motorMm_;
-    motorMm_ += motorSpeed_ * dt;
-    // The slide follows the screw once the play is taken up.
-    const double half = halfBacklashMm_;
-    if (motorMm_ - slideMm_ > half)
-        slideMm_ = motorMm_ - half;
-    else if (slideMm_ - motorMm_ > half)
-        slideMm_ = motorMm_ + half;
-    if (!encoderWithinRevolution(before))
-        updateEncoder(before);
-    settled_ = motorSpeed_ == 0.0;
+void Mechanics::setTickLength(double dt) {
+    alpha_ = s_.timeConstantMs > 0 ? 1.0 - std::exp(-dt / s_.timeConstantMs) : 1.0;
+    brakeStep_ = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
+    accelStep_ = s_.maxAccelMmPerS2 * 1e-6 * dt;
+    alphaDt_ = dt;
 }
 
 void Mechanics::updateEncoder(double previousMotorMm) {

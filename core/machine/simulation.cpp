@@ -316,8 +316,9 @@ void Simulation::powerOn() {
     ctl_->powerOn();
 }
 
-// Everything senseAxes reads: the drives' contactor and ready contacts, the
-// axis switches.
+// The sensors of the drives and the axes: the drives' contactor and ready
+// contacts, the axis switches (readPlant looks at these when a fault changed
+// an axis, the PLC switched the contactor or the ready delay runs).
 void Simulation::senseDrives(std::int64_t nowMs) {
     const bool power = signals_.actuator(drivesPowerAct_);
     if (power && drivesPowerSinceMs_ < 0)
@@ -395,13 +396,24 @@ void Simulation::refreshIoWiring() {
     }
 }
 
-void Simulation::writeEncoder(engine::MachineIo& io, const AxisPlant& x) const {
-    engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
-    ch.count = x.mech->encoderCount() + x.glitchCounts;
-    ch.line1Ok = x.mech->channelOk(1);
-    ch.line2Ok = x.mech->channelOk(2);
-    ch.zeroMark = x.mech->zeroMarkCrossed();
-    ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
+// Every input of the positioner from the plant: after a fault, which may
+// change any of them or their wiring.
+void Simulation::writeAllInputs() {
+    ioStale_ = false;
+    refreshIoWiring();
+    engine::MachineIo& io = ctl_->io();
+    for (const AxisPlant& x : axes_) {
+        if (x.encoderOut < 0)
+            continue;
+        engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
+        ch.count = x.mech->encoderCount() + x.glitchCounts;
+        ch.line1Ok = x.mech->channelOk(1);
+        ch.line2Ok = x.mech->channelOk(2);
+        ch.zeroMark = x.mech->zeroMarkCrossed();
+        ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
+    }
+    eq_.pendant->takeWheelTurned();
+    writeHandwheels(io);
 }
 
 // After the encoders: a handwheel wired to an encoder's channel wins.
@@ -412,38 +424,10 @@ void Simulation::writeHandwheels(engine::MachineIo& io) const {
                 eq_.pendant->wheelCount(static_cast<int>(k) + 1);
 }
 
-void Simulation::writePositionerInputs(bool changed) {
+// The inputs that follow the sensors: the fast inputs of both CP34.23
+// modules (as C107..C122 wire them) and the PLC's input terminals.
+void Simulation::writeSensorInputs() {
     engine::MachineIo& io = ctl_->io();
-    if (ioStale_) {
-        ioStale_ = false;
-        refreshIoWiring();
-        for (const AxisPlant& x : axes_)
-            if (x.encoderOut >= 0)
-                writeEncoder(io, x);
-        if (eq_.pendant)
-            eq_.pendant->takeWheelTurned();
-        writeHandwheels(io);
-    } else {
-        // An encoder's outputs change only in a tick of its drive that was
-        // not quiet, and then only the count and the zero mark: the line
-        // monitoring changes with a fault, which makes everything stale.
-        bool encoders = false;
-        for (const AxisPlant& x : axes_)
-            if (x.encoderOut >= 0 && !x.mech->quiet()) {
-                engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
-                ch.count = x.mech->encoderCount() + x.glitchCounts;
-                ch.zeroMark = x.mech->zeroMarkCrossed();
-                if (ch.zeroMark) // a mark's count is new only with the mark
-                    ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
-                encoders = true;
-            }
-        const bool turned = eq_.pendant && eq_.pendant->takeWheelTurned();
-        if (turned || (encoders && wheelOverEncoder_))
-            writeHandwheels(io);
-    }
-    if (!changed)
-        return;
-    // Fast inputs of both CP34.23 modules, as C107..C122 wire them.
     for (int i = 0; i < engine::kAxisCount; ++i) {
         const AxisPlant& x = axes_[static_cast<std::size_t>(i)];
         std::uint8_t inputs = 0;
@@ -485,12 +469,49 @@ void Simulation::writePositionerInputs(bool changed) {
         }
         io.fastInputs[static_cast<std::size_t>(i)] = inputs;
     }
-    // The PLC's input terminals.
     for (const Wire& w : inputs_)
         plc_->setInput(w.plcIndex, signals_.sensor(w.signal) != w.inverted);
 }
 
-void Simulation::actuate(double dtMs) {
+// Steps 1 and 2 of a tick: the sensors of the axes and drives and the
+// positioner's inputs from the plant as the last tick left it — the same as
+// looking at all of them, looking only where something can have changed.
+inline void Simulation::readPlant(std::int64_t nowMs) {
+    if (senseAll_ || eq_.drivesReadyDelayMs != sensedDelayMs_)
+        senseDrives(nowMs);
+    if (ioStale_)
+        writeAllInputs();
+    engine::MachineIo& io = ctl_->io();
+    bool encoders = false;
+    for (AxisPlant& x : axes_) {
+        if (!x.present)
+            continue;
+        // The drives' contacts read as they did: only a slide that left the
+        // stretch between its switch points can change a switch.
+        const double s = x.mech->slideMm();
+        if (!(s > x.switchLoMm && s < x.switchHiMm))
+            senseSwitches(x);
+        // An encoder's outputs change only in a tick of its drive that was
+        // not quiet, and then only the count and the zero mark: the line
+        // monitoring changes with a fault (writeAllInputs).
+        if (x.encoderOut >= 0 && !x.mech->quiet()) {
+            engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
+            ch.count = x.mech->encoderCount() + x.glitchCounts;
+            ch.zeroMark = x.mech->zeroMarkCrossed();
+            if (ch.zeroMark) // a mark's count is new only with the mark
+                ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
+            encoders = true;
+        }
+    }
+    if (eq_.pendant->takeWheelTurned() || (encoders && wheelOverEncoder_))
+        writeHandwheels(io);
+    if (signals_.takeChanged())
+        writeSensorInputs();
+}
+
+// Step 5: the positioner's outputs to the drives and slides, the PLC's
+// outputs to the equipment; time advances by dtMs.
+inline void Simulation::actuate(double dtMs) {
     const engine::MachineIo& io = ctl_->io();
     for (int i = 0; i < engine::kAxisCount; ++i) {
         AxisPlant& x = axes_[static_cast<std::size_t>(i)];
@@ -516,23 +537,6 @@ void Simulation::actuate(double dtMs) {
         eq_.grinding->tick(dtMs, machineMm(AxisId::X), machineMm(AxisId::Z));
 }
 
-// The sensors of the axes and drives, as senseDrives would set them.
-inline void Simulation::senseAxes(std::int64_t nowMs) {
-    if (senseAll_ || eq_.drivesReadyDelayMs != sensedDelayMs_) {
-        senseDrives(nowMs);
-        return;
-    }
-    // The drives' contacts read as they did: only a slide that left the
-    // stretch between its switch points can change a switch.
-    for (AxisPlant& x : axes_) {
-        if (!x.present)
-            continue;
-        const double s = x.mech->slideMm();
-        if (!(s > x.switchLoMm && s < x.switchHiMm))
-            senseSwitches(x);
-    }
-}
-
 void Simulation::tick() {
     if (!ctl_->poweredOn())
         ctl_->powerOn();
@@ -549,8 +553,7 @@ void Simulation::tick() {
         }
     }
     eq_.pendant->tick(now);
-    senseAxes(now);
-    writePositionerInputs(signals_.takeChanged());
+    readPlant(now);
     engine::InterfaceWords& w = ctl_->words();
     if (!lostLink_)
         plc_->readPositioner(w);
@@ -558,7 +561,7 @@ void Simulation::tick() {
         plc_->scan(now);
         for (const Wire& o : outputs_)
             signals_.setActuator(o.signal, plc_->output(o.plcIndex));
-        // The drives' contactor is one of them (senseAxes).
+        // The drives' contactor is one of them (senseDrives).
         if (signals_.actuator(drivesPowerAct_) != sensedPower_)
             senseAll_ = true;
         if (!lostLink_)

@@ -292,13 +292,13 @@ private:
     const AxisPlant& ax(AxisId a) const {
         return axes_[static_cast<std::size_t>(engine::axisIndex(a))];
     }
-    void senseAxes(std::int64_t nowMs);
+    void readPlant(std::int64_t nowMs);
     void senseDrives(std::int64_t nowMs);
     void senseSwitches(AxisPlant& x);
-    void writePositionerInputs(bool signalsChanged);
     void refreshIoWiring();
-    void writeEncoder(engine::MachineIo& io, const AxisPlant& x) const;
+    void writeAllInputs();
     void writeHandwheels(engine::MachineIo& io) const;
+    void writeSensorInputs();
     void actuate(double dtMs);
     void checkFault(const FaultSpec& f) const;
     void applyFault(const FaultSpec& f, bool on);
@@ -312,13 +312,13 @@ private:
     std::array<int, 2> wheelChannel_{-1, -1};
     int drivesPowerAct_ = -1, drivesOnSig_ = -1;
     std::int64_t drivesPowerSinceMs_ = -1;
-    // senseAxes: the drives' power and ready delay (ms) it last saw, and
+    // senseDrives: the drives' power and ready delay (ms) it last saw, and
     // whether it must look at everything (a fault changed an axis, the
     // ready delay runs, the PLC switched the drives' contactor).
     bool sensedPower_ = false;
     double sensedDelayMs_ = -1;
     bool senseAll_ = true;
-    // writePositionerInputs: a fault changed the positioner's inputs or
+    // readPlant: a fault changed the positioner's inputs or
     // their wiring (module health, the link, counts added): write them all.
     bool ioStale_ = true;
     std::array<int, 2> wheelOut_{-1, -1}; // the handwheels' live channels
