@@ -59,9 +59,10 @@ public:
     bool zeroMarkCrossed() const { return markCrossed_; }
     std::int64_t zeroMarkCount() const { return markCount_; }
     // The encoder's outputs (count, lines, zero mark) are those before the
-    // last tick: it found the plant at rest, and nothing that changes them
-    // (a fault, a push) happened since. A reader that copied them then need
-    // not copy them again.
+    // last tick: it found the plant at rest, and nothing changed them since
+    // (a broken channel, a push; a frozen encoder or a jammed slide acts in
+    // the next tick, which is not quiet). A reader that copied them then
+    // need not copy them again.
     bool quiet() const { return quiet_; }
 
     double motorMm() const { return motorMm_; }
@@ -75,11 +76,11 @@ public:
     void setEncoderFrozen(bool frozen) { // reads a constant value
         encoderFrozen_ = frozen;
         encoderBlocked_ = encoderFrozen_ || channel1Broken_ || channel2Broken_;
-        settled_ = quiet_ = false;
+        settled_ = false;
     }
     void setJammed(bool jammed) { // the slide cannot move
         jammed_ = jammed;
-        settled_ = quiet_ = false;
+        settled_ = false;
     }
     // Moves the slide by hand / external force while the drive is off.
     void pushSlide(double deltaMm);
