@@ -186,6 +186,7 @@ public:
         bool clamped = true; // at start
     };
     Chuck(Signals& s, const Settings& settings);
+    const Settings& settings() const { return set_; }
     void tick(double dtMs);
     bool clamped() const { return pos_ >= 1.0; }
     bool unclamped() const { return pos_ <= 0.0; }
@@ -213,6 +214,7 @@ public:
         int position = 1;
     };
     Turret(Signals& s, const Settings& settings);
+    const Settings& settings() const { return set_; }
     void tick(double dtMs);
     int positions() const { return set_.positions; }
     int station() const;                    // 1..N at a station, 0 between
