@@ -5,19 +5,6 @@
 
 namespace k528::plc {
 
-bool Expr::eval(const std::uint8_t* now, const std::uint8_t* prev) const {
-    const Test* tests = tests_.data();
-    std::int32_t i = entry_;
-    while (i >= 0) {
-        const Test& t = tests[i];
-        bool v = (now[t.signal] == 0) == t.nowZero;
-        if (t.edge)
-            v = v && (prev[t.signal] == 0) == t.prevZero;
-        i = v ? t.onTrue : t.onFalse;
-    }
-    return i == kTrue;
-}
-
 // The branching program of the postfix code: the code is turned into its
 // tree, then each node is laid out with the continuations of its value —
 // a leaf becomes a test, ! swaps the continuations, a & b tests a and goes

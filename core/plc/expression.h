@@ -68,6 +68,20 @@ private:
     std::string text_;
 };
 
+// Inline: the PLC evaluates every condition of the description in every scan.
+inline bool Expr::eval(const std::uint8_t* now, const std::uint8_t* prev) const {
+    const Test* tests = tests_.data();
+    std::int32_t i = entry_;
+    while (i >= 0) {
+        const Test& t = tests[i];
+        bool v = (now[t.signal] == 0) == t.nowZero;
+        if (t.edge)
+            v = v && (prev[t.signal] == 0) == t.prevZero;
+        i = v ? t.onTrue : t.onFalse;
+    }
+    return i == kTrue;
+}
+
 struct ExprError {
     int column = 0; // 1-based, in bytes of the expression text
     std::string message;
