@@ -20,7 +20,8 @@ inline double floorExact(double x) {
 } // namespace
 
 Mechanics::Mechanics(const MechanicsSettings& s)
-    : s_(s), perCountMm_(s.mmPerCount()), perCountInverse_(1.0 / perCountMm_) {
+    : s_(s), halfBacklashMm_(s.backlashMm * 0.5), perCountMm_(s.mmPerCount()),
+      perCountInverse_(1.0 / perCountMm_) {
     motorMm_ = slideMm_ = s.startSlideMm;
     updateEncoder(motorMm_);
     markCrossed_ = false;
@@ -29,7 +30,6 @@ Mechanics::Mechanics(const MechanicsSettings& s)
 
 void Mechanics::refreshTarget() {
     targetSpeed_ = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
-    targetFresh_ = true;
 }
 
 double Mechanics::driveVolts() const {
@@ -40,62 +40,27 @@ double Mechanics::driveVolts() const {
 }
 
 void Mechanics::setChannelBroken(int channel, bool broken) {
-    settled_ = false;
+    settled_ = quiet_ = false;
     if (channel == 1)
         channel1Broken_ = broken;
     else
         channel2Broken_ = broken;
+    encoderBlocked_ = encoderFrozen_ || channel1Broken_ || channel2Broken_;
 }
 
 void Mechanics::pushSlide(double deltaMm) {
     const double before = motorMm_;
-    settled_ = false;
+    settled_ = quiet_ = false;
     slideMm_ += deltaMm;
     motorMm_ += deltaMm; // a free screw turns with the slide
     updateEncoder(before);
 }
 
-void Mechanics::tick(double dt) {
-    if (dt != alphaDt_) {
-        alpha_ = s_.timeConstantMs > 0 ? 1.0 - std::exp(-dt / s_.timeConstantMs) : 1.0;
-        brakeStep_ = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
-        accelStep_ = s_.maxAccelMmPerS2 * 1e-6 * dt;
-        alphaDt_ = dt;
-    }
-    // At rest with nothing to move it (no drive speed asked, nothing
-    // changed by hand): the same state, the same count, no mark.
-    if (settled_ && countFresh_ && (!driveEnabled_ || targetSpeed_ == 0.0)) {
-        markCrossed_ = false;
-        return;
-    }
-    // Target motor speed in mm/ms of slide travel.
-    double accelLimit = brakeStep_;
-    if (driveEnabled_) {
-        const double target = targetSpeed_;
-        accelLimit = accelStep_;
-        const double change = std::clamp((target - motorSpeed_) * alpha_, -accelLimit, accelLimit);
-        motorSpeed_ += change;
-    } else {
-        // Regulator blocked: the motor coasts down against the brake.
-        if (std::fabs(motorSpeed_) <= accelLimit)
-            motorSpeed_ = 0;
-        else
-            motorSpeed_ -= motorSpeed_ > 0 ? accelLimit : -accelLimit;
-    }
-    // Flush speeds far below one encoder count per hour: the lag would
-    // otherwise decay into subnormal numbers, which are very slow to compute.
-    if (jammed_ || std::fabs(motorSpeed_) < 1e-12)
-        motorSpeed_ = 0;
-    const double before = motorMm_;
-    motorMm_ += motorSpeed_ * dt;
-    // The slide follows the screw once the play is taken up.
-    const double half = s_.backlashMm * 0.5;
-    if (motorMm_ - slideMm_ > half)
-        slideMm_ = motorMm_ - half;
-    else if (slideMm_ - motorMm_ > half)
-        slideMm_ = motorMm_ + half;
-    updateEncoder(before);
-    settled_ = motorSpeed_ == 0.0;
+void Mechanics::setTickLength(double dt) {
+    alpha_ = s_.timeConstantMs > 0 ? 1.0 - std::exp(-dt / s_.timeConstantMs) : 1.0;
+    brakeStep_ = s_.brakeAccelMmPerS2 * 1e-6 * dt; // mm/ms per tick
+    accelStep_ = s_.maxAccelMmPerS2 * 1e-6 * dt;
+    alphaDt_ = dt;
 }
 
 void Mechanics::updateEncoder(double previousMotorMm) {
@@ -120,13 +85,13 @@ void Mechanics::updateEncoder(double previousMotorMm) {
     markRevMotorMm_ = motorMm_;
     markRev_ = k1;
     markRevFresh_ = true;
-    if (k0 != k1 && !encoderFrozen_ && !channel1Broken_ && !channel2Broken_) {
+    if (k0 != k1 && !encoderBlocked_) {
         const double markMm = s_.zeroMarkPhaseMm + std::max(k0, k1) * lead;
         std::int64_t c = static_cast<std::int64_t>(std::llround(markMm / perCount));
         markCount_ = s_.encoderWiredInverted ? -c : c;
         markCrossed_ = true;
     }
-    countFresh_ = !(encoderFrozen_ || channel1Broken_ || channel2Broken_);
+    countFresh_ = !encoderBlocked_;
     if (!countFresh_)
         return; // the counter no longer follows the motor
     // floor(motor / perCount) from the reciprocal: the product is within

@@ -10,6 +10,8 @@
 // time in ms.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace k528::axis {
@@ -37,7 +39,7 @@ public:
 
     // Inputs from the positioner, held until changed.
     void setDacCode(int code) {
-        if (code != dacCode_ || !targetFresh_) {
+        if (code != dacCode_) {
             dacCode_ = code;
             refreshTarget();
         }
@@ -56,6 +58,12 @@ public:
     // Whether a zero mark passed during the last tick, and its count.
     bool zeroMarkCrossed() const { return markCrossed_; }
     std::int64_t zeroMarkCount() const { return markCount_; }
+    // The encoder's outputs (count, lines, zero mark) are those before the
+    // last tick: it found the plant at rest, and nothing changed them since
+    // (a broken channel, a push; a frozen encoder or a jammed slide acts in
+    // the next tick, which is not quiet). A reader that copied them then
+    // need not copy them again.
+    bool quiet() const { return quiet_; }
 
     double motorMm() const { return motorMm_; }
     double slideMm() const { return slideMm_; }
@@ -67,6 +75,7 @@ public:
     void setChannelBroken(int channel, bool broken);
     void setEncoderFrozen(bool frozen) { // reads a constant value
         encoderFrozen_ = frozen;
+        encoderBlocked_ = encoderFrozen_ || channel1Broken_ || channel2Broken_;
         settled_ = false;
     }
     void setJammed(bool jammed) { // the slide cannot move
@@ -77,7 +86,9 @@ public:
     void pushSlide(double deltaMm);
 
 private:
+    void setTickLength(double dtMs); // alpha_ and the speed steps of a tick of dtMs
     void updateEncoder(double previousMotorMm);
+    bool encoderWithinRevolution();
     void refreshTarget(); // targetSpeed_ from the DAC code
 
 
@@ -91,14 +102,16 @@ private:
     std::int64_t markCount_ = 0;
     bool channel1Broken_ = false, channel2Broken_ = false;
     bool encoderFrozen_ = false;
+    bool encoderBlocked_ = false; // frozen or a channel broken: the counter stands
     bool jammed_ = false;
     double alpha_ = 0, alphaDt_ = -1; // lag factor cached per tick length
     double brakeStep_ = 0, accelStep_ = 0; // speed change limits per tick (of alphaDt_)
-    double targetSpeed_ = 0;          // mm/ms of slide travel the DAC code asks for
-    bool targetFresh_ = false;        // targetSpeed_ matches dacCode_
+    double targetSpeed_ = 0;          // mm/ms of slide travel the DAC code asks for (of dacCode_)
     // The last tick left the motor at rest and nothing changed since: a
     // tick with no drive speed asked changes nothing.
     bool settled_ = false;
+    bool quiet_ = false;                // quiet()
+    double halfBacklashMm_ = 0;         // s_.backlashMm / 2
     double perCountMm_ = 0;                  // s_.mmPerCount()
     double perCountInverse_ = 0;             // 1 / perCountMm_ (updateEncoder)
     double markRevMotorMm_ = 0, markRev_ = 0; // revolution index (zero marks) of a motor position
@@ -106,5 +119,82 @@ private:
     bool markRevFresh_ = false;
     bool countFresh_ = false;         // count_ matches motorMm_ (skip the work while it stands)
 };
+
+// updateEncoder's result for a move that stays well inside the revolution
+// of the last update (no zero mark), the counter following the motor and
+// the count away from a boundary — the common case of a moving axis, inline
+// in its tick. False, with nothing changed, when updateEncoder must do it.
+// Every change of motorMm_ is followed by updateEncoder or this, so the
+// revolution of the last update is that of the motor position before the
+// move (markRevFresh_, markRevMotorMm_ == the previous position: updateEncoder
+// checks this, here it holds).
+inline bool Mechanics::encoderWithinRevolution() {
+    if (encoderBlocked_ ||
+        !(motorMm_ >= markRevLoMm_ && motorMm_ <= markRevHiMm_ && markRevHiMm_ > markRevLoMm_))
+        return false;
+    // The floor of the count as updateEncoder takes it from the reciprocal
+    // (up to 2^28 counts the truncation, one less below zero), where it
+    // takes it: a millionth of a count or more from an integer.
+    const double approx = motorMm_ * perCountInverse_;
+    if (!(std::fabs(approx) < 268435456.0))
+        return false;
+    std::int64_t c = static_cast<std::int64_t>(approx);
+    double whole = static_cast<double>(c);
+    if (whole > approx) {
+        --c;
+        whole -= 1.0;
+    }
+    const double frac = approx - whole;
+    if (!(frac > 1e-6 && frac < 1.0 - 1e-6))
+        return false;
+    markCrossed_ = false;
+    markRevMotorMm_ = motorMm_; // same revolution: markRev_ stays
+    countFresh_ = true;
+    count_ = s_.encoderWiredInverted ? -c : c;
+    return true;
+}
+
+// Inline: every moving axis runs it every tick; the rare parts are calls.
+inline void Mechanics::tick(double dt) {
+    if (dt != alphaDt_)
+        setTickLength(dt);
+    // At rest with nothing to move it (no drive speed asked, nothing
+    // changed by hand): the same state, the same count, no mark.
+    if (settled_ && countFresh_ && (!driveEnabled_ || targetSpeed_ == 0.0)) {
+        quiet_ = !markCrossed_; // a mark of the tick before is gone now
+        markCrossed_ = false;
+        return;
+    }
+    quiet_ = false;
+    // Target motor speed in mm/ms of slide travel.
+    double accelLimit = brakeStep_;
+    if (driveEnabled_) {
+        const double target = targetSpeed_;
+        accelLimit = accelStep_;
+        const double change = std::clamp((target - motorSpeed_) * alpha_, -accelLimit, accelLimit);
+        motorSpeed_ += change;
+    } else {
+        // Regulator blocked: the motor coasts down against the brake.
+        if (std::fabs(motorSpeed_) <= accelLimit)
+            motorSpeed_ = 0;
+        else
+            motorSpeed_ -= motorSpeed_ > 0 ? accelLimit : -accelLimit;
+    }
+    // Flush speeds far below one encoder count per hour: the lag would
+    // otherwise decay into subnormal numbers, which are very slow to compute.
+    if (jammed_ || std::fabs(motorSpeed_) < 1e-12)
+        motorSpeed_ = 0;
+    const double before = motorMm_;
+    motorMm_ += motorSpeed_ * dt;
+    // The slide follows the screw once the play is taken up.
+    const double half = halfBacklashMm_;
+    if (motorMm_ - slideMm_ > half)
+        slideMm_ = motorMm_ - half;
+    else if (slideMm_ - motorMm_ > half)
+        slideMm_ = motorMm_ + half;
+    if (!encoderWithinRevolution())
+        updateEncoder(before);
+    settled_ = motorSpeed_ == 0.0;
+}
 
 } // namespace k528::axis

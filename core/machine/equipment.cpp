@@ -125,6 +125,7 @@ void Pendant::turn(std::int64_t detents) {
         return;
     wheelCount_[static_cast<std::size_t>(wheel - 1)] +=
         detents * set_.pulsesPerDetent[static_cast<std::size_t>(wheelStep_)];
+    wheelTurned_ = true;
 }
 
 void Pendant::setOverride(int code) {
@@ -164,6 +165,7 @@ Spindle::Spindle(Signals& s, const Settings& settings) : s_(s), set_(settings) {
 void Spindle::setDriveFault(bool f) {
     fault_ = f;
     s_.setSensor(ready_, !f);
+    s_.wakeEquipment(); // the target speed changes
 }
 
 void Spindle::tick(double dtMs) {
@@ -181,6 +183,10 @@ void Spindle::tick(double dtMs) {
     } else if (target_ != 0 && !s_.sensor(atSpeed_)) {
         s_.setSensor(atSpeed_, true);
     }
+    // At its target with the relays as they stay, the next tick with the
+    // same contactors changes nothing.
+    if (n_ != target_ || (target_ != 0 && !s_.sensor(atSpeed_)))
+        s_.wakeEquipment();
 }
 
 // ---------------------------------------------------------------------------
@@ -195,6 +201,7 @@ Pump::Pump(Signals& s, const Settings& settings) : s_(s), set_(settings) {
 void Pump::setOverload(bool f) {
     overload_ = f;
     s_.setSensor(overloadSig_, f);
+    s_.wakeEquipment(); // on() changes
 }
 
 void Pump::tick(double dtMs) {
@@ -204,12 +211,14 @@ void Pump::tick(double dtMs) {
     else if (!running && level_ > 0.0)
         level_ = std::max(0.0, level_ - dtMs / std::max(set_.fallMs, 1.0));
     else
-        return;
+        return; // at full or no pressure
     // The switch closes at 80 % of the working pressure and opens at 50 %.
     if (!s_.sensor(pressure_) && level_ >= 0.8)
         s_.setSensor(pressure_, true);
     else if (s_.sensor(pressure_) && level_ < 0.5)
         s_.setSensor(pressure_, false);
+    if (running ? level_ < 1.0 : level_ > 0.0)
+        s_.wakeEquipment(); // still rising or falling
 }
 
 // ---------------------------------------------------------------------------
@@ -240,9 +249,11 @@ void Chuck::tick(double dtMs) {
     else if (u && pos_ > 0.0)
         pos_ = std::max(0.0, pos_ - step);
     else
-        return;
+        return; // at the end of the stroke
     s_.setSensor(clampedSig_, clamped() && !pressureLoss_);
     s_.setSensor(unclampedSig_, unclamped());
+    if (c ? pos_ < 1.0 : pos_ > 0.0)
+        s_.wakeEquipment(); // still moving
 }
 
 // ---------------------------------------------------------------------------
@@ -286,6 +297,7 @@ void Turret::tick(double dtMs) {
                 angle_ -= set_.positions;
         }
         publish();
+        s_.wakeEquipment(); // indexes while the motor runs forward
     } else if (ccw && !cw && !locked_) {
         // Turning back against the pawl: the head settles on the station and clamps.
         const double r = std::round(angle_);
@@ -296,6 +308,8 @@ void Turret::tick(double dtMs) {
                 locked_ = true;
         }
         publish();
+        if (!locked_)
+            s_.wakeEquipment(); // still settling onto the station
     }
 }
 

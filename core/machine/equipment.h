@@ -5,6 +5,17 @@
 // dresser, ring, in-process gauge ПАК). Each piece reads its actuators and
 // writes its sensors in Signals; tick(dt) advances it. Times in ms, lengths
 // in mm, speeds in rpm. Everything is deterministic.
+//
+// A unit at rest (a spindle at its speed or standing, a pump at full or no
+// pressure, the chuck at the end of its stroke, the turret locked or idle,
+// the door) changes nothing in a tick while its actuators stay as they are,
+// so Simulation ticks spindles, pumps, chuck, turret and door only while
+// Signals says the equipment is awake (Signals::wakeEquipment): an actuator
+// changed, a unit's tick ended in a transition, or a mutator changed what a
+// tick computes (a drive fault, a pump's overload). Mutators that only set a
+// contact the tick does not read (overheat, chuck pressure, the turret's jam,
+// which only acts while it indexes) need no wake-up. The grinding process
+// ticks always: it follows the slides.
 #pragma once
 
 #include "machine/signals.h"
@@ -75,6 +86,13 @@ public:
         return wheelCount_[static_cast<std::size_t>(wheel - 1)];
     }
     std::int64_t detents() const { return detents_; }
+    // Whether the handwheel turned since the last call (its counts are the
+    // positioner's inputs: Simulation copies them only then).
+    bool takeWheelTurned() {
+        const bool t = wheelTurned_;
+        wheelTurned_ = false;
+        return t;
+    }
 
     // The override selector: code 0..10, or -1 for the position «K923» (the
     // panel's L keys decide).
@@ -99,6 +117,7 @@ private:
     int wheelStep_ = 0;
     std::array<std::int64_t, 2> wheelCount_{};
     std::int64_t detents_ = 0;
+    bool wheelTurned_ = false;
     int wheelX_ = -1, wheelZ_ = -1, x10_ = -1, x100_ = -1;
     std::array<int, 4> ovBits_{-1, -1, -1, -1};
     int override_ = -1;
@@ -123,9 +142,9 @@ public:
     double rpm() const { return n_; } // signed, + forward
     double targetRpm() const { return target_; }
     bool running() const { return std::abs(n_) > 0.02 * set_.rpm; }
-    void setDriveFault(bool f);
+    void setDriveFault(bool f); // wakes the equipment: the drive coasts down
     bool driveFault() const { return fault_; }
-    void setOverheat(bool f) { s_.setSensor(overheat_, f); }
+    void setOverheat(bool f) { s_.setSensor(overheat_, f); } // a contact only
 
 private:
     Signals& s_;
@@ -147,7 +166,7 @@ public:
     void tick(double dtMs);
     bool on() const { return s_.actuator(on_) && !overload_; }
     bool pressure() const { return s_.sensor(pressure_); }
-    void setOverload(bool f);
+    void setOverload(bool f); // wakes the equipment: the motor stops
     bool overload() const { return overload_; }
 
 private:
@@ -167,11 +186,12 @@ public:
         bool clamped = true; // at start
     };
     Chuck(Signals& s, const Settings& settings);
+    const Settings& settings() const { return set_; }
     void tick(double dtMs);
     bool clamped() const { return pos_ >= 1.0; }
     bool unclamped() const { return pos_ <= 0.0; }
     double position() const { return pos_; }
-    void setPressureLoss(bool f);
+    void setPressureLoss(bool f); // the pressure switch only
     bool pressureLoss() const { return pressureLoss_; }
 
 private:
@@ -194,11 +214,13 @@ public:
         int position = 1;
     };
     Turret(Signals& s, const Settings& settings);
+    const Settings& settings() const { return set_; }
     void tick(double dtMs);
     int positions() const { return set_.positions; }
     int station() const;                    // 1..N at a station, 0 between
     double angle() const { return angle_; } // in stations, 0 = station 1
     bool locked() const { return locked_; }
+    // Acts while it indexes (then the turret ticks anyway): no wake-up.
     void setJammed(bool j) { jammed_ = j; }
     bool jammed() const { return jammed_; }
 

@@ -5,7 +5,9 @@
 // wires PLC inputs and outputs to these names (docs/machine-description.md
 // lists them); the equipment of core/machine reads actuators and writes
 // sensors. A sensor change marks the image changed, so that the PLC's inputs
-// and the fast inputs are refreshed only when something happened.
+// and the fast inputs are refreshed only when something happened; an
+// actuator change wakes the equipment, which ticks only while it may change
+// something (machine/equipment.h).
 #pragma once
 
 #include <cstdint>
@@ -33,7 +35,13 @@ public:
         }
     }
     bool actuator(int a) const { return a >= 0 && actuators_[static_cast<std::size_t>(a)] != 0; }
-    void setActuator(int a, bool v) { actuators_[static_cast<std::size_t>(a)] = v ? 1 : 0; }
+    void setActuator(int a, bool v) {
+        std::uint8_t& x = actuators_[static_cast<std::size_t>(a)];
+        if (x != static_cast<std::uint8_t>(v)) {
+            x = static_cast<std::uint8_t>(v);
+            equipmentAwake_ = true;
+        }
+    }
 
     // Whether a sensor changed since the last call.
     bool takeChanged() {
@@ -42,6 +50,20 @@ public:
         return c;
     }
     void markChanged() { changed_ = true; }
+
+    // The equipment (spindles, pumps, chuck, turret, door) needs a tick: an
+    // actuator changed, a unit is in a transition (a ramp, a stroke, an
+    // indexing), or an operator or a fault changed a unit (its mutators
+    // call this). Otherwise each unit's tick would change nothing, and
+    // Simulation skips them.
+    void wakeEquipment() { equipmentAwake_ = true; }
+    // Whether the equipment needs a tick; a unit still in a transition
+    // wakes it again for the next one.
+    bool takeEquipmentAwake() {
+        const bool a = equipmentAwake_;
+        equipmentAwake_ = false;
+        return a;
+    }
 
     struct Entry {
         std::string name;
@@ -55,6 +77,7 @@ private:
     std::vector<Entry> sensorNames_, actuatorNames_;
     std::map<std::string, int, std::less<>> sensorIndex_, actuatorIndex_;
     bool changed_ = true;
+    bool equipmentAwake_ = true;
 };
 
 } // namespace k528::machine

@@ -306,7 +306,7 @@ void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescr
                                 " has no system message text S" + (m.place < 9 ? "0" : "") +
                                 std::to_string(m.place + 1) + " in profile " + p.name);
 
-    senseAxes(0);
+    senseDrives(0);
 }
 
 // ---------------------------------------------------------------------------
@@ -316,7 +316,10 @@ void Simulation::powerOn() {
     ctl_->powerOn();
 }
 
-void Simulation::senseAxes(std::int64_t nowMs) {
+// The sensors of the drives and the axes: the drives' contactor and ready
+// contacts, the axis switches (readPlant looks at these when a fault changed
+// an axis, the PLC switched the contactor or the ready delay runs).
+void Simulation::senseDrives(std::int64_t nowMs) {
     const bool power = signals_.actuator(drivesPowerAct_);
     if (power && drivesPowerSinceMs_ < 0)
         drivesPowerSinceMs_ = nowMs;
@@ -326,27 +329,53 @@ void Simulation::senseAxes(std::int64_t nowMs) {
     const bool powered =
         power && nowMs - drivesPowerSinceMs_ >= static_cast<std::int64_t>(eq_.drivesReadyDelayMs);
     for (AxisPlant& x : axes_) {
-        if (!x.present) {
-            // No drive: its ready contact is bridged in the cabinet.
-            signals_.setSensor(x.readySig, powered);
-            continue;
-        }
-        const double s = x.mech->slideMm();
-        signals_.setSensor(x.camSig, s >= x.place.camLoMm && s <= x.place.camHiMm);
-        signals_.setSensor(x.limPlusSig, s >= x.place.limitPlusMm || x.stuckLimit > 0);
-        signals_.setSensor(x.limMinusSig, s <= x.place.limitMinusMm || x.stuckLimit < 0);
-        signals_.setSensor(x.readySig, powered && !x.driveFault);
+        // No drive: its ready contact is bridged in the cabinet.
+        x.ready = x.present ? powered && !x.driveFault : powered;
+        signals_.setSensor(x.readySig, x.ready);
+        if (x.present)
+            senseSwitches(x);
     }
+    sensedPower_ = power;
+    sensedDelayMs_ = eq_.drivesReadyDelayMs;
+    // While the ready delay runs, time alone changes the ready contacts.
+    senseAll_ = power && !powered;
 }
 
-void Simulation::writePositionerInputs(bool changed) {
+// The cam and the limit switches of a present axis at its slide's position,
+// and the stretch of positions around it that passes no switch point.
+void Simulation::senseSwitches(AxisPlant& x) {
+    const double s = x.mech->slideMm();
+    const engine::AxisPlacement& p = x.place;
+    signals_.setSensor(x.camSig, s >= p.camLoMm && s <= p.camHiMm);
+    signals_.setSensor(x.limPlusSig, s >= p.limitPlusMm || x.stuckLimit > 0);
+    signals_.setSensor(x.limMinusSig, s <= p.limitMinusMm || x.stuckLimit < 0);
+    // Every switch compares s with one of these points (>= or <=): on either
+    // side of all of them the readings stay. On a point (or not a number)
+    // the stretch is empty and the next tick looks again.
+    double lo = -HUGE_VAL, hi = HUGE_VAL;
+    for (const double t : {p.camLoMm, p.camHiMm, p.limitPlusMm, p.limitMinusMm}) {
+        if (t < s)
+            lo = std::max(lo, t);
+        else if (t > s)
+            hi = std::min(hi, t);
+        else
+            lo = hi = s;
+    }
+    x.switchLoMm = lo;
+    x.switchHiMm = hi;
+}
+
+// The health of the positioner's modules and the PLC link (faults), and the
+// channels the plant writes, which a failed module or a fault changes.
+void Simulation::refreshIoWiring() {
     engine::MachineIo& io = ctl_->io();
     const auto broken = [&](PositionerPart p) {
         return (brokenParts_ >> (static_cast<int>(p) - 1)) & 1u;
     };
     // A failed CP34.23 counts no more: both its channels stand still.
-    const auto channelDead = [&](int channel) {
-        return broken(channel < 2 ? PositionerPart::PulseModule1 : PositionerPart::PulseModule2);
+    const auto live = [&](int channel) {
+        return channel >= 0 &&
+               !broken(channel < 2 ? PositionerPart::PulseModule1 : PositionerPart::PulseModule2);
     };
     io.pulseModule1Ok = !broken(PositionerPart::PulseModule1);
     io.pulseModule2Ok = !broken(PositionerPart::PulseModule2);
@@ -354,26 +383,51 @@ void Simulation::writePositionerInputs(bool changed) {
     io.commModuleOk = !broken(PositionerPart::CommModule);
     io.panelLinkOk = !broken(PositionerPart::PanelLink);
     io.memoryOk = !broken(PositionerPart::Memory);
+    io.plcLinkOk = !lostLink_;
+    for (AxisPlant& x : axes_) {
+        x.encoderOut = x.present && live(x.encoderChannel) ? x.encoderChannel : -1;
+        x.dacIn = io.dacModuleOk ? x.dacChannel : -1; // a failed CM32.03 gives 0 V
+    }
+    wheelOverEncoder_ = false;
+    for (std::size_t k = 0; k < 2; ++k) {
+        wheelOut_[k] = eq_.pendant && live(wheelChannel_[k]) ? wheelChannel_[k] : -1;
+        for (const AxisPlant& x : axes_)
+            wheelOverEncoder_ = wheelOverEncoder_ || (wheelOut_[k] >= 0 && wheelOut_[k] == x.encoderOut);
+    }
+}
+
+// Every input of the positioner from the plant: after a fault, which may
+// change any of them or their wiring.
+void Simulation::writeAllInputs() {
+    ioStale_ = false;
+    refreshIoWiring();
+    engine::MachineIo& io = ctl_->io();
     for (const AxisPlant& x : axes_) {
-        if (!x.present || x.encoderChannel < 0 || channelDead(x.encoderChannel))
+        if (x.encoderOut < 0)
             continue;
-        engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderChannel)];
+        engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
         ch.count = x.mech->encoderCount() + x.glitchCounts;
         ch.line1Ok = x.mech->channelOk(1);
         ch.line2Ok = x.mech->channelOk(2);
         ch.zeroMark = x.mech->zeroMarkCrossed();
         ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
     }
-    if (eq_.pendant)
-        for (int k = 0; k < 2; ++k)
-            if (wheelChannel_[static_cast<std::size_t>(k)] >= 0 &&
-                !channelDead(wheelChannel_[static_cast<std::size_t>(k)]))
-                io.pulse[static_cast<std::size_t>(wheelChannel_[static_cast<std::size_t>(k)])]
-                    .count = eq_.pendant->wheelCount(k + 1);
-    io.plcLinkOk = !lostLink_;
-    if (!changed)
-        return;
-    // Fast inputs of both CP34.23 modules, as C107..C122 wire them.
+    eq_.pendant->takeWheelTurned();
+    writeHandwheels(io);
+}
+
+// After the encoders: a handwheel wired to an encoder's channel wins.
+void Simulation::writeHandwheels(engine::MachineIo& io) const {
+    for (std::size_t k = 0; k < 2; ++k)
+        if (wheelOut_[k] >= 0)
+            io.pulse[static_cast<std::size_t>(wheelOut_[k])].count =
+                eq_.pendant->wheelCount(static_cast<int>(k) + 1);
+}
+
+// The inputs that follow the sensors: the fast inputs of both CP34.23
+// modules (as C107..C122 wire them) and the PLC's input terminals.
+void Simulation::writeSensorInputs() {
+    engine::MachineIo& io = ctl_->io();
     for (int i = 0; i < engine::kAxisCount; ++i) {
         const AxisPlant& x = axes_[static_cast<std::size_t>(i)];
         std::uint8_t inputs = 0;
@@ -415,33 +469,70 @@ void Simulation::writePositionerInputs(bool changed) {
         }
         io.fastInputs[static_cast<std::size_t>(i)] = inputs;
     }
-    // The PLC's input terminals.
     for (const Wire& w : inputs_)
         plc_->setInput(w.plcIndex, signals_.sensor(w.signal) != w.inverted);
 }
 
-void Simulation::actuate(double dtMs) {
+// Steps 1 and 2 of a tick: the sensors of the axes and drives and the
+// positioner's inputs from the plant as the last tick left it — the same as
+// looking at all of them, looking only where something can have changed.
+inline void Simulation::readPlant(std::int64_t nowMs) {
+    if (senseAll_ || eq_.drivesReadyDelayMs != sensedDelayMs_)
+        senseDrives(nowMs);
+    if (ioStale_)
+        writeAllInputs();
+    engine::MachineIo& io = ctl_->io();
+    bool encoders = false;
+    for (AxisPlant& x : axes_) {
+        if (!x.present)
+            continue;
+        // The drives' contacts read as they did: only a slide that left the
+        // stretch between its switch points can change a switch.
+        const double s = x.mech->slideMm();
+        if (!(s > x.switchLoMm && s < x.switchHiMm))
+            senseSwitches(x);
+        // An encoder's outputs change only in a tick of its drive that was
+        // not quiet, and then only the count and the zero mark: the line
+        // monitoring changes with a fault (writeAllInputs).
+        if (x.encoderOut >= 0 && !x.mech->quiet()) {
+            engine::PulseChannel& ch = io.pulse[static_cast<std::size_t>(x.encoderOut)];
+            ch.count = x.mech->encoderCount() + x.glitchCounts;
+            ch.zeroMark = x.mech->zeroMarkCrossed();
+            if (ch.zeroMark) // a mark's count is new only with the mark
+                ch.zeroMarkCount = x.mech->zeroMarkCount() + x.glitchCounts;
+            encoders = true;
+        }
+    }
+    if (eq_.pendant->takeWheelTurned() || (encoders && wheelOverEncoder_))
+        writeHandwheels(io);
+    if (signals_.takeChanged())
+        writeSensorInputs();
+}
+
+// Step 5: the positioner's outputs to the drives and slides, the PLC's
+// outputs to the equipment; time advances by dtMs.
+inline void Simulation::actuate(double dtMs) {
     const engine::MachineIo& io = ctl_->io();
     for (int i = 0; i < engine::kAxisCount; ++i) {
         AxisPlant& x = axes_[static_cast<std::size_t>(i)];
         if (!x.present)
             continue;
-        const bool dacOut = x.dacChannel >= 0 && io.dacModuleOk; // a failed CM32.03 gives 0 V
-        x.mech->setDacCode(dacOut ? io.dac[static_cast<std::size_t>(x.dacChannel)] : 0);
-        x.mech->setDriveEnabled(io.regulatorEnable[static_cast<std::size_t>(i)] &&
-                                signals_.sensor(x.readySig));
+        x.mech->setDacCode(x.dacIn >= 0 ? io.dac[static_cast<std::size_t>(x.dacIn)] : 0);
+        x.mech->setDriveEnabled(io.regulatorEnable[static_cast<std::size_t>(i)] && x.ready);
         x.mech->tick(dtMs);
     }
-    for (auto& s : eq_.spindles)
-        s->tick(dtMs);
-    for (auto& p : eq_.pumps)
-        p->tick(dtMs);
-    if (eq_.chuck)
-        eq_.chuck->tick(dtMs);
-    if (eq_.turret)
-        eq_.turret->tick(dtMs);
-    if (eq_.door)
-        eq_.door->tick();
+    if (signals_.takeEquipmentAwake()) {
+        for (auto& s : eq_.spindles)
+            s->tick(dtMs);
+        for (auto& p : eq_.pumps)
+            p->tick(dtMs);
+        if (eq_.chuck)
+            eq_.chuck->tick(dtMs);
+        if (eq_.turret)
+            eq_.turret->tick(dtMs);
+        if (eq_.door)
+            eq_.door->tick();
+    }
     if (eq_.grinding)
         eq_.grinding->tick(dtMs, machineMm(AxisId::X), machineMm(AxisId::Z));
 }
@@ -462,8 +553,7 @@ void Simulation::tick() {
         }
     }
     eq_.pendant->tick(now);
-    senseAxes(now);
-    writePositionerInputs(signals_.takeChanged());
+    readPlant(now);
     engine::InterfaceWords& w = ctl_->words();
     if (!lostLink_)
         plc_->readPositioner(w);
@@ -471,6 +561,9 @@ void Simulation::tick() {
         plc_->scan(now);
         for (const Wire& o : outputs_)
             signals_.setActuator(o.signal, plc_->output(o.plcIndex));
+        // The drives' contactor is one of them (senseDrives).
+        if (signals_.actuator(drivesPowerAct_) != sensedPower_)
+            senseAll_ = true;
         if (!lostLink_)
             plc_->writePositioner(w);
     }
@@ -729,7 +822,11 @@ void Simulation::applyFault(const FaultSpec& f, bool on) {
         plc_->setStopped(on);
         break;
     }
+    // The next tick looks at everything a fault can change: the sensors, the
+    // axis switches and ready contacts, the positioner's inputs and wiring.
     signals_.markChanged();
+    senseAll_ = true;
+    ioStale_ = true;
 }
 
 void Simulation::inject(const FaultSpec& f) {

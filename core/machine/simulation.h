@@ -14,6 +14,15 @@
 //   5. the plant: DAC and regulator enable -> drives and slides; PLC outputs
 //      -> spindles, pumps, chuck, turret, door, gauge; time advances.
 //
+// Work only where something can change (the result is the same as doing
+// it all every tick, bit for bit; test machine.trace_golden): the axis
+// switches are looked at when a slide leaves the stretch between two switch
+// points, the drives' power changes, the ready delay runs or a fault
+// changes an axis; the positioner's inputs are copied when their source
+// changed (an encoder that moved, the handwheel turned, a fault); the
+// equipment ticks while it is awake (machine/equipment.h). Every mutator
+// (operator, fault) marks what it changes, so it acts in the next tick.
+//
 // Deterministic: no clock, the caller ticks. docs/simulated-machines.md
 // describes both shipped machines, the operator API and the faults.
 #pragma once
@@ -258,6 +267,15 @@ private:
         bool driveFault = false;
         int stuckLimit = 0; // +1 / -1: a limit switch reads as hit
         std::int64_t glitchCounts = 0;
+        // Slide positions (mm) between the switch points around the last
+        // position looked at, an open interval: inside it the cam and the
+        // limit switches read as they do (senseSwitches).
+        double switchLoMm = 0, switchHiMm = 0;
+        bool ready = false; // the ready contact as last sensed
+        // Channels the plant writes (refreshIoWiring): the encoder's pulse
+        // channel unless absent, unwired or its CP34.23 failed; the DAC
+        // channel unless unwired or the CM32.03 failed (then 0 V). -1: none.
+        int encoderOut = -1, dacIn = -1;
     };
     struct Wire {
         int plcIndex;
@@ -274,8 +292,13 @@ private:
     const AxisPlant& ax(AxisId a) const {
         return axes_[static_cast<std::size_t>(engine::axisIndex(a))];
     }
-    void senseAxes(std::int64_t nowMs);
-    void writePositionerInputs(bool signalsChanged);
+    void readPlant(std::int64_t nowMs);
+    void senseDrives(std::int64_t nowMs);
+    void senseSwitches(AxisPlant& x);
+    void refreshIoWiring();
+    void writeAllInputs();
+    void writeHandwheels(engine::MachineIo& io) const;
+    void writeSensorInputs();
     void actuate(double dtMs);
     void checkFault(const FaultSpec& f) const;
     void applyFault(const FaultSpec& f, bool on);
@@ -289,6 +312,17 @@ private:
     std::array<int, 2> wheelChannel_{-1, -1};
     int drivesPowerAct_ = -1, drivesOnSig_ = -1;
     std::int64_t drivesPowerSinceMs_ = -1;
+    // senseDrives: the drives' power and ready delay (ms) it last saw, and
+    // whether it must look at everything (a fault changed an axis, the
+    // ready delay runs, the PLC switched the drives' contactor).
+    bool sensedPower_ = false;
+    double sensedDelayMs_ = -1;
+    bool senseAll_ = true;
+    // readPlant: a fault changed the positioner's inputs or
+    // their wiring (module health, the link, counts added): write them all.
+    bool ioStale_ = true;
+    std::array<int, 2> wheelOut_{-1, -1}; // the handwheels' live channels
+    bool wheelOverEncoder_ = false;       // a handwheel shares an encoder's channel
     bool lostLink_ = false;
     std::uint8_t brokenParts_ = 0; // bit PositionerPart-1
     std::vector<TimedRelease> releases_;

@@ -5,40 +5,69 @@
 
 namespace k528::plc {
 
-bool Expr::eval(const std::uint8_t* now, const std::uint8_t* prev) const {
-    bool stack[kMaxDepth];
-    int sp = 0;
+// The branching program of the postfix code: the code is turned into its
+// tree, then each node is laid out with the continuations of its value —
+// a leaf becomes a test, ! swaps the continuations, a & b tests a and goes
+// on with b when it is true, a | b goes on with b when a is false.
+void Expr::buildTests() {
+    struct Node {
+        Op op;
+        std::uint32_t signal;
+        int left, right; // operands (Not: left)
+    };
+    std::vector<Node> nodes;
+    std::vector<int> stack;
     for (const Instr& i : code_) {
-        switch (i.op) {
-        case Op::Load:
-            stack[sp++] = now[i.signal] != 0;
-            break;
-        case Op::Rise:
-            stack[sp++] = now[i.signal] != 0 && prev[i.signal] == 0;
-            break;
-        case Op::Fall:
-            stack[sp++] = now[i.signal] == 0 && prev[i.signal] != 0;
-            break;
+        Node n{i.op, i.signal, -1, -1};
+        if (i.op == Op::Not) {
+            n.left = stack.back();
+            stack.pop_back();
+        } else if (i.op == Op::And || i.op == Op::Or) {
+            n.right = stack.back();
+            stack.pop_back();
+            n.left = stack.back();
+            stack.pop_back();
+        }
+        nodes.push_back(n);
+        stack.push_back(static_cast<int>(nodes.size()) - 1);
+    }
+    tests_.clear();
+    // The entry of node k given the continuations of its value; the right
+    // operand is laid out first, so that after the reversal below a test
+    // is mostly followed by the one it goes on with.
+    const auto layout = [&](const auto& self, int k, std::int32_t onTrue,
+                            std::int32_t onFalse) -> std::int32_t {
+        const Node& n = nodes[static_cast<std::size_t>(k)];
+        switch (n.op) {
         case Op::True:
-            stack[sp++] = true;
-            break;
+            return onTrue;
         case Op::False:
-            stack[sp++] = false;
-            break;
+            return onFalse;
         case Op::Not:
-            stack[sp - 1] = !stack[sp - 1];
-            break;
+            return self(self, n.left, onFalse, onTrue);
         case Op::And:
-            --sp;
-            stack[sp - 1] = stack[sp - 1] && stack[sp];
-            break;
+            return self(self, n.left, self(self, n.right, onTrue, onFalse), onFalse);
         case Op::Or:
-            --sp;
-            stack[sp - 1] = stack[sp - 1] || stack[sp];
+            return self(self, n.left, onTrue, self(self, n.right, onTrue, onFalse));
+        case Op::Load:
+        case Op::Rise:
+        case Op::Fall:
             break;
         }
+        tests_.push_back({n.signal, onTrue, onFalse, n.op != Op::Load, n.op == Op::Fall,
+                          n.op == Op::Rise});
+        return static_cast<std::int32_t>(tests_.size()) - 1;
+    };
+    entry_ = stack.empty() ? kFalse : layout(layout, stack.back(), kTrue, kFalse);
+    // Reverse the order: the entry first.
+    const auto last = static_cast<std::int32_t>(tests_.size()) - 1;
+    const auto flip = [last](std::int32_t i) { return i >= 0 ? last - i : i; };
+    std::reverse(tests_.begin(), tests_.end());
+    for (Test& t : tests_) {
+        t.onTrue = flip(t.onTrue);
+        t.onFalse = flip(t.onFalse);
     }
-    return sp > 0 && stack[sp - 1];
+    entry_ = flip(entry_);
 }
 
 std::vector<std::uint32_t> Expr::reads() const {
@@ -80,6 +109,7 @@ public:
         if (maxDepth > Expr::kMaxDepth)
             return fail(err, "condition nested too deeply (more than " +
                                  std::to_string(Expr::kMaxDepth) + " levels)");
+        e.buildTests();
         return e;
     }
 

@@ -1,6 +1,7 @@
 #include "plc/plc.h"
 
 #include <algorithm>
+#include <bit>
 #include <climits>
 #include <cstring>
 
@@ -8,11 +9,6 @@ namespace k528::plc {
 
 namespace {
 
-constexpr int kWords[] = {1000, 1001, 1002, 1003, 1004, 1005, 1006, 1007, 1008, 1009,
-                          1010, 1011, 1012, 1013, 1300, 1301, 1302, 1303, 1304, 1305,
-                          1306, 1307, 1900, 1901, 1902, 1903, 1904, 1905, 1906, 1907,
-                          2000, 2001, 2002, 2003, 2004, 2005, 2006, 2007, 2008};
-constexpr int kWordCount = static_cast<int>(sizeof kWords / sizeof kWords[0]);
 constexpr std::int64_t kNever = INT64_MAX;
 
 std::string zName(int word, int bit) {
@@ -27,13 +23,6 @@ std::uint16_t keyMaskBits() {
 }
 
 } // namespace
-
-int Plc::zSlot(int word) {
-    for (int i = 0; i < kWordCount; ++i)
-        if (kWords[i] == word)
-            return i;
-    return -1;
-}
 
 std::uint32_t Plc::addSignal(const std::string& name, Kind kind, const std::string& path) {
     if (const auto it = index_.find(name); it != index_.end())
@@ -125,6 +114,9 @@ Plc::CompiledActions Plc::compileActions(const Actions& a, const std::string& pa
 }
 
 Plc::Plc(const MachineDescription& description) : d_(description) {
+    static_assert(zSlot(1000) == 0 && zSlot(1013) == 13 && zSlot(1300) == 14 && zSlot(1307) == 21 &&
+                  zSlot(1900) == 22 && zSlot(1907) == 29 && zSlot(2000) == 30 &&
+                  zSlot(2008) == kZWords - 1 && zSlot(1014) < 0 && zSlot(2009) < 0);
     // --- the signal space -------------------------------------------------
     for (const InputDef& in : d_.inputs)
         inputSig_.push_back(addSignal(in.name, Kind::Input, in.path));
@@ -146,7 +138,7 @@ Plc::Plc(const MachineDescription& description) : d_(description) {
     for (int k = 1; k <= 12; ++k)
         keySig_[k] = addSignal("K" + std::to_string(k), Kind::Builtin, "");
     zBase_ = static_cast<std::uint32_t>(names_.size());
-    const std::size_t n = names_.size() + static_cast<std::size_t>(kWordCount) * 16;
+    const std::size_t n = names_.size() + static_cast<std::size_t>(kZWords) * 16;
     sig_.assign(n, 0);
     prev_.assign(n, 0);
     latch_.assign(n, 0);
@@ -332,28 +324,62 @@ void Plc::setStopped(bool stopped) {
     }
 }
 
+// The 16 signals of a word hold its bits, signal b bit b (0 or 1; packing
+// reads any non-zero signal as 1). Eight signals at a time in one 64-bit
+// word (little-endian: signal b of the eight is byte b): the scan packs and
+// unpacks some forty words.
 void Plc::unpackWord(int word, std::uint16_t value) {
-    const std::uint32_t base = zSignal(word, 0);
-    for (int b = 0; b < 16; ++b)
-        sig_[base + static_cast<std::uint32_t>(b)] = static_cast<std::uint8_t>((value >> b) & 1u);
+    std::uint8_t* p = sig_.data() + zSignal(word, 0);
+    if constexpr (std::endian::native == std::endian::little) {
+        for (int h = 0; h < 2; ++h) {
+            // Byte i of bits·0x0101… holds the eight bits; the mask keeps bit
+            // i of them in byte i; + 0x7F carries it to bit 7 of its byte
+            // (at most 0xFF: no carry on); shifted and masked, it is 0 or 1.
+            const std::uint64_t bits = (value >> (8 * h)) & 0xFFu;
+            const std::uint64_t v = ((((bits * 0x0101010101010101ull) & 0x8040201008040201ull) +
+                                      0x7F7F7F7F7F7F7F7Full) >>
+                                     7) &
+                                    0x0101010101010101ull;
+            std::memcpy(p + 8 * h, &v, sizeof v);
+        }
+    } else {
+        for (int b = 0; b < 16; ++b)
+            p[b] = static_cast<std::uint8_t>((value >> b) & 1u);
+    }
 }
 
 std::uint16_t Plc::packWord(int word) const {
-    const std::uint32_t base = zSignal(word, 0);
+    const std::uint8_t* p = sig_.data() + zSignal(word, 0);
     unsigned v = 0;
-    for (int b = 0; b < 16; ++b)
-        v |= static_cast<unsigned>(sig_[base + static_cast<std::uint32_t>(b)] != 0) << b;
+    if constexpr (std::endian::native == std::endian::little) {
+        for (int h = 0; h < 2; ++h) {
+            std::uint64_t x;
+            std::memcpy(&x, p + 8 * h, sizeof x);
+            // Bit 7 of each byte set when the byte is not 0 (its low seven
+            // bits + 0x7F reach bit 7 without a carry out of the byte) ...
+            const std::uint64_t nonZero =
+                (((x & 0x7F7F7F7F7F7F7F7Full) + 0x7F7F7F7F7F7F7F7Full) | x) & 0x8080808080808080ull;
+            // ... and gathered: byte i's bit lands on bit 56 + i of the product.
+            v |= static_cast<unsigned>(((nonZero >> 7) * 0x0102040810204080ull) >> 56) << (8 * h);
+        }
+    } else {
+        for (int b = 0; b < 16; ++b)
+            v |= static_cast<unsigned>(p[b] != 0) << b;
+    }
     return static_cast<std::uint16_t>(v);
 }
 
 void Plc::readPositioner(const engine::InterfaceWords& w) {
     if (!linkOk_)
         return;
-    for (int a = 2000; a <= 2008; ++a) {
-        if (words_.word(a) != w.word(a)) {
+    // Read every tick: compared without a branch per word, copied on a change.
+    unsigned diff = 0;
+    for (int a = 2000; a <= 2008; ++a)
+        diff |= static_cast<unsigned>(words_.word(a) ^ w.word(a));
+    if (diff != 0) {
+        for (int a = 2000; a <= 2008; ++a)
             words_.setWord(a, w.word(a));
-            dirty_ = true;
-        }
+        dirty_ = true;
     }
     const auto keys = static_cast<std::uint16_t>(w.word(engine::z::KeysWord) & keyMaskBits());
     if ((keys & ~keysPending_) != 0) {

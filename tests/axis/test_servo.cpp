@@ -28,6 +28,64 @@ private slots:
         QCOMPARE(faultMessage(Fault::None, AxisId::Z), 0);
     }
 
+    // Mechanics::quiet(): the encoder's outputs are those before the last
+    // tick, which found the plant at rest (a reader copies them only when not
+    // quiet). A push or a broken channel changes them at once: not quiet
+    // until a tick at rest again; a tick that moves the motor is not quiet.
+    void mechanicsQuietUntilTheEncoderChanges() {
+        Mechanics m(rig::grinderZMechanics());
+        const auto rest = [&] {
+            for (int t = 0; t < 3; ++t)
+                m.tick(1.0);
+        };
+        rest();
+        QVERIFY(m.quiet());
+        const std::int64_t count = m.encoderCount();
+        m.pushSlide(0.01);
+        QCOMPARE(m.encoderCount(), count + 20);
+        QVERIFY(!m.quiet());
+        m.tick(1.0);
+        QVERIFY(!m.quiet()); // the push unsettled it
+        m.tick(1.0);
+        QVERIFY(m.quiet());
+
+        m.setChannelBroken(2, true);
+        QVERIFY(!m.channelOk(2));
+        QVERIFY(!m.quiet());
+        rest();
+        QVERIFY(m.quiet());
+        m.setChannelBroken(2, false);
+        QVERIFY(!m.quiet());
+        rest();
+        QVERIFY(m.quiet());
+
+        // Frozen, the counter stops; thawed, it catches up in the next tick.
+        m.setEncoderFrozen(true);
+        m.tick(1.0);
+        QVERIFY(!m.quiet());
+        m.pushSlide(0.01);
+        QCOMPARE(m.encoderCount(), count + 20);
+        rest();
+        m.setEncoderFrozen(false);
+        m.tick(1.0);
+        QVERIFY(!m.quiet());
+        QCOMPARE(m.encoderCount(), count + 40);
+
+        // Driven, it moves: not quiet until it stands again.
+        m.setDriveEnabled(true);
+        m.setDacCode(200);
+        m.tick(1.0);
+        QVERIFY(!m.quiet());
+        m.setDacCode(0);
+        int ticks = 0;
+        while (!m.quiet() && ticks < 5000) {
+            m.tick(1.0);
+            ++ticks;
+        }
+        QVERIFY(m.quiet());
+        QVERIFY(m.encoderCount() > count + 40);
+    }
+
     void actualFollowsTheEncoderThroughLN() {
         // At power-on an incremental encoder gives no absolute position: 0.
         Servo s(AxisId::Z, rig::grinderZ());

@@ -349,6 +349,124 @@ private slots:
         QVERIFY2(!r->plcAlarm(alarm), r->alarmList().c_str());
     }
 
+    // The plant looks only where something can change (machine/simulation.h):
+    // on a machine at rest (drives on, homed, nothing moving) each fault
+    // still acts in the very next tick — on the axis switches, the ready
+    // contacts and the positioner's inputs.
+    void faultsActInTheNextTick_data() {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<int>("axis");
+        QTest::addColumn<int>("detail");
+        QTest::newRow("limit switch X+") << int(Fault::LimitSwitch) << 0 << 1;
+        QTest::newRow("limit switch Z-") << int(Fault::LimitSwitch) << 1 << -1;
+        QTest::newRow("drive not ready Z") << int(Fault::DriveNotReady) << 1 << 0;
+        QTest::newRow("encoder channel Z 1") << int(Fault::EncoderChannelBreak) << 1 << 1;
+        QTest::newRow("encoder channel X 2") << int(Fault::EncoderChannelBreak) << 0 << 2;
+        QTest::newRow("dac limit X") << int(Fault::DacLimit) << 0 << 0;
+        QTest::newRow("pulse module 2")
+            << int(Fault::PositionerModule) << 0 << int(PositionerPart::PulseModule2);
+        QTest::newRow("dac module")
+            << int(Fault::PositionerModule) << 0 << int(PositionerPart::DacModule);
+        QTest::newRow("memory") << int(Fault::PositionerModule) << 0 << int(PositionerPart::Memory);
+        QTest::newRow("lost link") << int(Fault::LostLink) << 0 << 0;
+    }
+    void faultsActInTheNextTick() {
+        QFETCH(int, kind);
+        QFETCH(int, axis);
+        QFETCH(int, detail);
+        auto r = ready();
+        QVERIFY(r);
+        r->advance(500); // at rest
+        const AxisId a = axis == 0 ? X : Z;
+        const FaultSpec f{static_cast<Fault>(kind), a, detail};
+        const machine::Signals& sig = r->s().machineSignals();
+        const auto sensor = [&](const std::string& name) { return sig.sensor(*sig.findSensor(name)); };
+        const std::string ax = axis == 0 ? "x" : "z";
+        const engine::MachineIo& io = r->c().io();
+        const auto ch = static_cast<std::size_t>(r->c().c()[axis == 0 ? 17 : 69] - 1); // C17 / C69
+        const engine::MachineIo before = io;
+        for (int t = 0; t < 2; ++t) { // the inputs stand still at rest
+            r->tick();
+            QVERIFY(io == before);
+        }
+        // What the fault shows in the plant's sensors and the positioner's inputs.
+        const auto shows = [&]() -> bool {
+            switch (f.kind) {
+            case Fault::LimitSwitch:
+                return sensor(ax + (detail > 0 ? ".limit_plus" : ".limit_minus"));
+            case Fault::DriveNotReady:
+                return !sensor(ax + ".drive_ready");
+            case Fault::EncoderChannelBreak:
+                return detail == 1 ? !io.pulse[ch].line1Ok : !io.pulse[ch].line2Ok;
+            case Fault::DacLimit: // a burst of counts on the encoder lines
+                return io.pulse[ch].count - before.pulse[ch].count > 100;
+            case Fault::PositionerModule:
+                return detail == int(PositionerPart::PulseModule2) ? !io.pulseModule2Ok
+                       : detail == int(PositionerPart::DacModule)  ? !io.dacModuleOk
+                                                                   : !io.memoryOk;
+            case Fault::LostLink:
+                return !io.plcLinkOk;
+            default:
+                return false;
+            }
+        };
+        QVERIFY(!shows());
+        r->s().inject(f);
+        r->tick();
+        QVERIFY(shows());
+        if (f.kind == Fault::DacLimit)
+            return; // the loop answers the burst: the axis moves
+        // Cleared, it is gone in the next tick too.
+        r->s().clear(f);
+        r->tick();
+        QVERIFY(!shows());
+    }
+
+    // The equipment ticks only while it is awake (machine/equipment.h): a
+    // fault that changes what a unit's tick computes wakes it, so it acts in
+    // the next tick on equipment at rest — the spindle's drive coasts down,
+    // the coolant pump's pressure falls from that tick (the pressure switch
+    // opens below half of it), not when the PLC turns the motor off.
+    void equipmentFaultsActInTheNextTick() {
+        // Spindle at speed, coolant at pressure, the program waiting at M0.
+        const auto running = [] {
+            auto r = ready();
+            if (!r)
+                return r;
+            r->load("%L5\nN1 M3 M8\nN2 M0\nN3 M30\n");
+            if (!r->start(5) || !r->untilState(ProgramState::M0, 10000))
+                return decltype(r)();
+            r->advance(500); // the equipment at rest
+            return r;
+        };
+        {
+            auto r = running();
+            QVERIFY(r);
+            machine::Spindle& sp = *r->s().equipment().spindle("spindle");
+            QCOMPARE(sp.rpm(), sp.settings().rpm);
+            r->s().inject({Fault::SpindleDrive, X, 0, "spindle"});
+            r->tick();
+            QVERIFY2(sp.rpm() < sp.settings().rpm, qPrintable(QString::number(sp.rpm())));
+        }
+        {
+            auto r = running();
+            QVERIFY(r);
+            machine::Pump& pump = *r->s().equipment().pump("coolant");
+            QVERIFY(pump.pressure());
+            // The level falls by 1/fall_ms a ms from the tick after the overload.
+            int expected = 0;
+            for (double level = 1.0; level >= 0.5; ++expected)
+                level = std::max(0.0, level - 1.0 / pump.settings().fallMs);
+            r->s().inject({Fault::PumpOverload, X, 0, "coolant"});
+            int ticks = 0;
+            while (pump.pressure() && ticks < 10000) {
+                r->tick();
+                ++ticks;
+            }
+            QCOMPARE(ticks, expected);
+        }
+    }
+
     // A fault is named by a stable id and its arguments (the desktop
     // translates them); the CLI's English is built from the same id.
     void faultIdsAndArguments() {

@@ -138,6 +138,62 @@ private slots:
     }
 
     // T numbers are not in the K528 language: M61..M64 index the turret.
+    // The equipment ticks only while it is awake (machine/equipment.h): the
+    // same units ticked every tick with the same contactors and valves go
+    // through the same states — each transition on its own (the pump's
+    // rise and fall, the spindle's ramp up and down, the turret's indexing
+    // and locking, the chuck's strokes), the rest of the machine at rest.
+    void equipmentAsIfTickedEveryTick() {
+        Rig r;
+        QVERIFY(r.drivesOn());
+        QVERIFY(r.home());
+        r.advance(8000); // the lubrication cycle after switching on is over
+        r.load("%L5\nN1 M8\nN2 G4 X1\nN3 M3\nN4 G4 X1\nN5 M62\nN6 G4 X1\nN7 M5\n"
+               "N8 G4 X1\nN9 M9\nN10 G4 X1\nN11 M11\nN12 G4 X1\nN13 M10\nN14 G4 X1\nN15 M30\n");
+        machine::Equipment& eq = r.s().equipment();
+        // The reference: the same units on their own signals, ticked every tick.
+        machine::Signals ref;
+        machine::Spindle spindle(ref, eq.spindle("spindle")->settings());
+        machine::Pump coolant(ref, eq.pump("coolant")->settings());
+        machine::Pump lube(ref, eq.pump("lube")->settings());
+        machine::Chuck chuck(ref, eq.chuck->settings());
+        machine::Turret turret(ref, eq.turret->settings());
+        QCOMPARE(eq.chuck->position(), chuck.position());
+        QCOMPARE(eq.turret->angle(), turret.angle());
+        QVERIFY(!eq.pump("lube")->pressure() && !eq.pump("coolant")->pressure());
+        const machine::Signals& sig = r.s().machineSignals();
+        std::vector<std::pair<int, int>> wires; // the simulation's actuator, the reference's
+        for (const char* a : {"spindle.fwd", "spindle.rev", "coolant.on", "lube.on", "chuck.clamp",
+                              "chuck.unclamp", "turret.cw", "turret.ccw"})
+            wires.emplace_back(*sig.findActuator(a), *ref.findActuator(a));
+        QVERIFY(r.start(5));
+        int ticks = 0;
+        bool indexed = false, opened = false;
+        while (r.c().state() != ProgramState::Ended && ticks < 60000) {
+            r.tick();
+            ++ticks;
+            for (const auto& [from, to] : wires)
+                ref.setActuator(to, sig.actuator(from));
+            spindle.tick(1.0);
+            coolant.tick(1.0);
+            lube.tick(1.0);
+            chuck.tick(1.0);
+            turret.tick(1.0);
+            const QString at = QString("tick %1").arg(ticks);
+            QVERIFY2(eq.spindle("spindle")->rpm() == spindle.rpm(), qPrintable(at));
+            QVERIFY2(eq.pump("coolant")->pressure() == coolant.pressure(), qPrintable(at));
+            QVERIFY2(eq.pump("lube")->pressure() == lube.pressure(), qPrintable(at));
+            QVERIFY2(eq.chuck->position() == chuck.position(), qPrintable(at));
+            QVERIFY2(eq.turret->angle() == turret.angle(), qPrintable(at));
+            QVERIFY2(eq.turret->locked() == turret.locked(), qPrintable(at));
+            indexed = indexed || turret.station() == 2;
+            opened = opened || chuck.unclamped();
+        }
+        QCOMPARE(r.c().state(), ProgramState::Ended);
+        QVERIFY(indexed && opened);
+        QVERIFY(turret.locked() && chuck.clamped() && spindle.rpm() == 0 && !coolant.pressure());
+    }
+
     void turretByMCodes() {
         Rig r;
         QVERIFY(r.drivesOn());

@@ -144,6 +144,93 @@ private slots:
         QVERIFY(!r.s().view().axes[1].limitPlus);
     }
 
+    // The cam and the limit switches read what the slide's position says in
+    // every tick (the plant looks at them only when the slide leaves the
+    // stretch between two switch points): a jog over the cam to the limit
+    // switch and back.
+    void switchesFollowTheSlide() {
+        Rig r;
+        QVERIFY(r.drivesOn());
+        r.c().selectMode(Mode::Manual);
+        r.advance(20);
+        const machine::Signals& sig = r.s().machineSignals();
+        const engine::AxisPlacement& p = r.s().placement(Z);
+        const int cam = *sig.findSensor("z.cam"), plus = *sig.findSensor("z.limit_plus"),
+                  minus = *sig.findSensor("z.limit_minus");
+        int camChanges = 0, plusTicks = 0;
+        bool camBefore = sig.sensor(cam);
+        const auto jog = [&](Button b, int ms) {
+            r.s().press(b);
+            r.s().press(Button::Rapid);
+            for (int t = 0; t < ms; ++t) {
+                const double s = r.s().slideMm(Z); // the sensors are read at a tick's start
+                r.tick();
+                QCOMPARE(sig.sensor(cam), s >= p.camLoMm && s <= p.camHiMm);
+                QCOMPARE(sig.sensor(plus), s >= p.limitPlusMm);
+                QCOMPARE(sig.sensor(minus), s <= p.limitMinusMm);
+                camChanges += sig.sensor(cam) != camBefore;
+                camBefore = sig.sensor(cam);
+                plusTicks += sig.sensor(plus);
+            }
+            r.s().release(b);
+            r.s().release(Button::Rapid);
+            r.advance(300);
+        };
+        jog(Button::JogZPlus, 12000);
+        QVERIFY2(plusTicks > 0, qPrintable(QString("%1 %2 %3 %4 %5").arg(r.s().slideMm(Z)).arg(p.camLoMm).arg(p.camHiMm).arg(p.limitPlusMm).arg(p.limitMinusMm)));
+        jog(Button::JogZMinus, 12000);
+        QVERIFY2(camChanges >= 4, qPrintable(QString::number(camChanges)));
+    }
+
+    // The drives' contactor closes with the PLC's output in the next tick
+    // (drives.on), their ready contacts drivesReadyDelayMs later, to the
+    // tick — the plant looks at the drives while the delay runs — and they
+    // open with the contactor.
+    void driveReadyAfterItsDelay() {
+        Rig r;
+        const machine::Signals& sig = r.s().machineSignals();
+        const int on = *sig.findSensor("drives.on"), readyX = *sig.findSensor("x.drive_ready"),
+                  readyZ = *sig.findSensor("z.drive_ready");
+        r.s().pressFor(Button::DrivesOn, 100);
+        std::int64_t closedAt = -1, readyAt = -1;
+        for (int t = 0; t < 2000 && readyAt < 0; ++t) {
+            const bool power = r.s().view().drivesPower; // the actuator after this tick's scan
+            r.tick();
+            if (closedAt < 0 && sig.sensor(on)) {
+                QVERIFY(power); // the tick after the PLC switched it
+                closedAt = r.s().timeMs();
+            }
+            QCOMPARE(sig.sensor(readyX), sig.sensor(readyZ));
+            if (sig.sensor(readyX))
+                readyAt = r.s().timeMs();
+        }
+        QVERIFY(closedAt >= 0 && readyAt >= 0);
+        QCOMPARE(readyAt - closedAt,
+                 static_cast<std::int64_t>(r.s().equipment().drivesReadyDelayMs));
+        r.s().inject({Fault::EmergencyStop});
+        QVERIFY(r.until([&] { return !r.s().view().drivesPower; }, 1000));
+        r.tick();
+        QVERIFY(!sig.sensor(on));
+        QVERIFY(!sig.sensor(readyX));
+    }
+
+    // The handwheel's counts reach the positioner's pulse channel in the
+    // tick after a turn, on a machine at rest.
+    void handwheelCountsInTheNextTick() {
+        Rig r;
+        QVERIFY(r.drivesOn());
+        r.advance(500);
+        const int ch = static_cast<int>(r.c().c()[105]) - 1; // C105: handwheel 1
+        const std::int64_t before = r.c().io().pulse[static_cast<std::size_t>(ch)].count;
+        r.s().selectHandwheel(machine::HandwheelAxis::X); // wheel 1
+        r.s().turnHandwheel(7);
+        r.tick();
+        QCOMPARE(r.c().io().pulse[static_cast<std::size_t>(ch)].count, before + 7);
+        r.s().turnHandwheel(-3);
+        r.tick();
+        QCOMPARE(r.c().io().pulse[static_cast<std::size_t>(ch)].count, before + 4);
+    }
+
     // GOST 26642 appendix 1, 2.2: when «готовность УЧПУ» drops the machine
     // stops: a system message (module failure) makes Z2000.0 = 0, the PLC
     // takes the drives off.

@@ -2,6 +2,8 @@
 #include "plc/expression.h"
 
 #include <QtTest>
+#include <array>
+#include <functional>
 #include <map>
 
 using namespace k528::plc;
@@ -111,6 +113,88 @@ private slots:
             deep = "a & (" + deep + ")";
         e = error(deep);
         QVERIFY(e.message.find("nested too deeply") != std::string::npos);
+    }
+
+    // eval() runs a short-circuiting branching program compiled from the
+    // postfix code: random conditions (every operator and spelling, nested,
+    // constants, edges) give, for every signal image now and before, the
+    // value of the condition as written.
+    void branchingProgramGivesTheWrittenValue() {
+        std::uint32_t seed = 2024;
+        const auto rnd = [&](unsigned n) {
+            seed = seed * 1103515245u + 12345u;
+            return ((seed >> 16) & 0x7FFF) % n;
+        };
+        const char* names[] = {"a", "b", "c", "door_closed", "Z2000.8"};
+        using Value = std::function<bool(const std::uint8_t*, const std::uint8_t*)>;
+        // A random condition: its text and its value, written out directly.
+        const auto make = [&](const auto& self, int depth) -> std::pair<std::string, Value> {
+            const unsigned kind = depth >= 5 ? rnd(5) : rnd(9);
+            const std::uint32_t s = rnd(5);
+            const std::string n = names[s];
+            switch (kind) {
+            case 0:
+            case 1:
+                return {n, [s](const std::uint8_t* now, const std::uint8_t*) { return now[s] != 0; }};
+            case 2:
+                return {"rise(" + n + ")", [s](const std::uint8_t* now, const std::uint8_t* prev) {
+                            return now[s] != 0 && prev[s] == 0;
+                        }};
+            case 3:
+                return {"fall(" + n + ")", [s](const std::uint8_t* now, const std::uint8_t* prev) {
+                            return now[s] == 0 && prev[s] != 0;
+                        }};
+            case 4: {
+                const bool v = rnd(2) != 0;
+                return {v ? "true" : "false", [v](const std::uint8_t*, const std::uint8_t*) { return v; }};
+            }
+            case 5: {
+                auto [t, f] = self(self, depth + 1);
+                return {std::string(rnd(2) ? "!" : "not ") + "(" + t + ")",
+                        [f](const std::uint8_t* now, const std::uint8_t* prev) { return !f(now, prev); }};
+            }
+            case 6:
+            case 7: {
+                auto [lt, lf] = self(self, depth + 1);
+                auto [rt, rf] = self(self, depth + 1);
+                return {"(" + lt + ")" + (rnd(2) ? " & " : " and ") + "(" + rt + ")",
+                        [lf, rf](const std::uint8_t* now, const std::uint8_t* prev) {
+                            const bool l = lf(now, prev), r = rf(now, prev);
+                            return l && r;
+                        }};
+            }
+            default: {
+                auto [lt, lf] = self(self, depth + 1);
+                auto [rt, rf] = self(self, depth + 1);
+                return {"(" + lt + ")" + (rnd(2) ? " | " : " or ") + "(" + rt + ")",
+                        [lf, rf](const std::uint8_t* now, const std::uint8_t* prev) {
+                            const bool l = lf(now, prev), r = rf(now, prev);
+                            return l || r;
+                        }};
+            }
+            }
+        };
+        for (int n = 0; n < 400; ++n) {
+            const auto [text, value] = make(make, 0);
+            ExprError err;
+            const auto e = compileExpr(text, resolve, err);
+            QVERIFY2(e, qPrintable(QString::fromStdString(text + ": " + err.message)));
+            for (unsigned bits = 0; bits < 1024; ++bits) {
+                std::array<std::uint8_t, 5> now{}, prev{};
+                for (std::size_t i = 0; i < 5; ++i) {
+                    now[i] = static_cast<std::uint8_t>((bits >> i) & 1u);
+                    prev[i] = static_cast<std::uint8_t>((bits >> (5 + i)) & 1u);
+                }
+                QVERIFY2(e->eval(now.data(), prev.data()) == value(now.data(), prev.data()),
+                         qPrintable(QString::fromStdString(text)));
+            }
+        }
+        // Plain chains as the descriptions write them.
+        QVERIFY(eval("a & b & !c & door_closed", {1, 1, 0, 1, 0}));
+        QVERIFY(!eval("a & b & !c & door_closed", {1, 1, 1, 1, 0}));
+        QVERIFY(eval("!a | !b | Z2000.8", {1, 1, 0, 0, 1}));
+        QVERIFY(!eval("!a | !b | Z2000.8", {1, 1, 0, 0, 0}));
+        QVERIFY(eval("(a & !b) | (c & !door_closed)", {0, 0, 1, 0, 0}));
     }
 };
 

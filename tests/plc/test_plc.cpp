@@ -6,6 +6,8 @@
 #include "plc/plc.h"
 
 #include <QtTest>
+#include <array>
+#include <string>
 
 using namespace k528;
 namespace z = engine::z;
@@ -373,6 +375,44 @@ private slots:
         p.plc.setLinkOk(true);
         p.run(3);
         QCOMPARE(p.plc.signal("Z2000.0"), std::optional<bool>(true));
+    }
+
+    // The words bit for bit: every bit of Z2000..Z2008 is its signal
+    // Z<word>.<bit> after a scan (the scan unpacks eight at a time), and the
+    // PLC's own image of the words holds them; the messages it packs into
+    // Z1900.. read back as the signals.
+    void wordsBitForBit() {
+        P p;
+        p.run(3);
+        std::uint32_t seed = 77;
+        const auto rnd = [&] {
+            seed = seed * 1103515245u + 12345u;
+            return static_cast<std::uint16_t>(seed >> 8);
+        };
+        for (int round = 0; round < 50; ++round) {
+            std::array<std::uint16_t, 9> v{};
+            for (int a = 2000; a <= 2008; ++a) {
+                v[static_cast<std::size_t>(a - 2000)] = round == 0 ? 0xFFFF : round == 1 ? 0 : rnd();
+                p.pos.setWord(a, v[static_cast<std::size_t>(a - 2000)]);
+            }
+            p.tick();
+            for (int a = 2000; a <= 2008; ++a) {
+                QCOMPARE(p.plc.words().word(a), v[static_cast<std::size_t>(a - 2000)]);
+                for (int b = 0; b < 16; ++b)
+                    QCOMPARE(p.sig("Z" + std::to_string(a) + "." + std::to_string(b)),
+                             ((v[static_cast<std::size_t>(a - 2000)] >> b) & 1u) != 0);
+            }
+        }
+        p.set("btn", true); // alarm 17 (Z1901.0), interlock-free
+        p.run(20);
+        for (int a : {1900, 1901, 1902, 1903}) {
+            std::uint16_t packed = 0;
+            for (int b = 0; b < 16; ++b)
+                packed = static_cast<std::uint16_t>(
+                    packed | (p.sig("Z" + std::to_string(a) + "." + std::to_string(b)) ? 1u << b : 0u));
+            QCOMPARE(p.pos.word(a), packed);
+        }
+        QVERIFY((p.pos.word(1901) & 1u) != 0);
     }
 
     // Skipping scans that could change nothing is exact: the same inputs
