@@ -118,7 +118,9 @@ void Controller::tick() {
     }
     c_.nowMs += c_.tickMs;
     if (routineInputs()) {
-        programControl(); // what it does again each tick (its own shortcut)
+        // Program control with the inputs of the last tick (the shortcut of
+        // programControl(), whose condition holds here).
+        programControlAgain();
     } else {
         readInputs();
         c_.plc.update(c_.words);
@@ -409,6 +411,17 @@ void Controller::startProgram(int number, int cycle) {
     interp_.start(number, cycle, c_.mode);
 }
 
+void Controller::programControlAgain() {
+    // What the program itself may have changed since the last tick is done
+    // again: Z2000.10 ends with a new program, the PLC's remembered alarms
+    // are acknowledged while Z1000.7 is 1, R150 follows Z1001.8.
+    if (c_.endOrReset && c_.state != ProgramState::Ended && c_.state != ProgramState::Idle)
+        c_.endOrReset = false;
+    if (on(c_.words.word(1000), 7))
+        c_.plc.acknowledgeAlarms();
+    c_.r.set(r::PlcBit, on(c_.words.word(1001), 8) ? 1 : 0);
+}
+
 void Controller::programControl() {
     const std::uint16_t w = c_.words.word(1000), before = c_.lastZ1000;
     const std::uint16_t w1 = c_.words.word(1001), before1 = c_.lastZ1001;
@@ -416,13 +429,8 @@ void Controller::programControl() {
     if (!operatorActed_ && w == before && w1 == before1 && fi == controlFastInputs_) {
         // The same inputs as the last tick, and no operator function since:
         // no edge, so nothing resets, acknowledges, stops or starts; the mode
-        // and the override stay what the last tick made them. What the
-        // program itself may have changed since is done again.
-        if (c_.endOrReset && c_.state != ProgramState::Ended && c_.state != ProgramState::Idle)
-            c_.endOrReset = false;
-        if (on(w, 7))
-            c_.plc.acknowledgeAlarms();
-        c_.r.set(r::PlcBit, on(w1, 8) ? 1 : 0);
+        // and the override stay what the last tick made them.
+        programControlAgain();
         return;
     }
     operatorActed_ = false;

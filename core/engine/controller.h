@@ -134,6 +134,8 @@ private:
     void readInputs();
     void systemChecks();
     void programControl();
+    // What program control does again each tick with unchanged inputs.
+    [[gnu::always_inline]] inline void programControlAgain();
     void resetSystem();
     void acknowledgeFaults();
     void acknowledgeSystem();

@@ -8,6 +8,7 @@
 // are marked EXT and listed in docs/plc-interface.md).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -61,6 +62,15 @@ public:
     bool sameInputs(const InterfaceWords& o) const {
         return util::sameBytes<kInputSlots * sizeof(std::uint16_t)>(w_.data(), o.w_.data());
     }
+    // The same for the positioner's own words Z2000..Z2008 (the PLC reads
+    // them every tick), and their copy.
+    bool sameOutputs(const InterfaceWords& o) const {
+        return util::sameBytes<kOutputSlots * sizeof(std::uint16_t)>(w_.data() + kInputSlots,
+                                                                      o.w_.data() + kInputSlots);
+    }
+    void copyOutputs(const InterfaceWords& from) {
+        std::copy_n(from.w_.begin() + kInputSlots, kOutputSlots, w_.begin() + kInputSlots);
+    }
 
 private:
     // Index of a held address; throws std::out_of_range for an address not
@@ -80,6 +90,7 @@ private:
     static constexpr int kAxisControlSlot = 5; // slot(1005)
     static constexpr int kAxisStateSlot = 35;  // slot(2005)
     static constexpr int kInputSlots = 30;     // slots 0..29: Z1000..Z1907
+    static constexpr int kOutputSlots = 9;     // slots 30..38: Z2000..Z2008
     std::array<std::uint16_t, 14 + 8 + 8 + 9> w_{};
 };
 

@@ -372,13 +372,9 @@ std::uint16_t Plc::packWord(int word) const {
 void Plc::readPositioner(const engine::InterfaceWords& w) {
     if (!linkOk_)
         return;
-    // Read every tick: compared without a branch per word, copied on a change.
-    unsigned diff = 0;
-    for (int a = 2000; a <= 2008; ++a)
-        diff |= static_cast<unsigned>(words_.word(a) ^ w.word(a));
-    if (diff != 0) {
-        for (int a = 2000; a <= 2008; ++a)
-            words_.setWord(a, w.word(a));
+    // Read every tick: compared as one block, copied on a change.
+    if (!words_.sameOutputs(w)) {
+        words_.copyOutputs(w);
         dirty_ = true;
     }
     const auto keys = static_cast<std::uint16_t>(w.word(engine::z::KeysWord) & keyMaskBits());

@@ -3,6 +3,8 @@
 
 #include "engine/interface_words.h"
 
+#include <vector>
+
 using namespace k528::engine;
 using k528::axis::AxisId;
 
@@ -75,6 +77,24 @@ private slots:
         QCOMPARE(w.word(1011), std::uint16_t(0));
         QCOMPARE(w.word(2004), std::uint16_t(0));
         QCOMPARE(w.word(1300), std::uint16_t(0));
+    }
+    // The block compares and the copy take exactly the inputs (Z1000..Z1013,
+    // Z1300..Z1307, Z1900..Z1907) or exactly the outputs (Z2000..Z2008).
+    void blocksOfInputsAndOutputs() {
+        std::vector<int> addresses;
+        for (int a = 1000; a <= 2008; ++a)
+            if (InterfaceWords::holds(a))
+                addresses.push_back(a);
+        QCOMPARE(addresses.size(), std::size_t(39));
+        for (int a : addresses) {
+            InterfaceWords x, y;
+            y.setWord(a, 0x8001);
+            const bool output = a >= 2000;
+            QCOMPARE(x.sameInputs(y), output);
+            QCOMPARE(x.sameOutputs(y), !output);
+            x.copyOutputs(y);
+            QCOMPARE(x.word(a), std::uint16_t(output ? 0x8001 : 0));
+        }
     }
     void panelKeysSkipBits6And7() {
         QCOMPARE(int(z::keyBit(1)), 0);
