@@ -92,7 +92,7 @@ void Controller::powerOn() {
         c_.lastAxisWord2[static_cast<std::size_t>(a)] =
             c_.words.axisControl(a, 2);
     }
-    writeOutputs();
+    writeOutputs(false);
 }
 
 void Controller::advance(std::int64_t ms) {
@@ -117,7 +117,8 @@ void Controller::tick() {
         return;
     }
     c_.nowMs += c_.tickMs;
-    if (routineInputs()) {
+    const bool routine = routineInputs();
+    if (routine) {
         // Program control with the inputs of the last tick (the shortcut of
         // programControl(), whose condition holds here).
         programControlAgain();
@@ -133,7 +134,7 @@ void Controller::tick() {
         if (u.present)
             axisTick(u);
     interp_.tick();
-    writeOutputs();
+    writeOutputs(routine);
     noteSettled(inputsAsLeft);
 }
 
@@ -808,7 +809,7 @@ constexpr unsigned bitIf(bool v, int bit) {
 
 } // namespace
 
-void Controller::writeOutputs() {
+void Controller::writeOutputs(bool routine) {
     InterfaceWords& w = c_.words;
     // Machine side.
     c_.io.dac.fill(0);
@@ -820,17 +821,27 @@ void Controller::writeOutputs() {
             c_.io.dac[static_cast<std::size_t>(ch)] = u.servo.dac();
     }
 
-    // Z2000.
-    const std::int32_t wheel = c_.r[r::WheelCurrent], wmin = c_.r[r::WheelMin],
-                       wmax = c_.r[r::WheelMax];
-    const bool wheelBelowMin = wmin > 0 && wheel < wmin;
-    const bool wheelAboveMax = wmax > 0 && wheel > wmax;
-    const unsigned s = bitIf(c_.powered && !c_.alarms.anyActive(AlarmCategory::System), 0) |
-                       bitIf(c_.powered, modeKey(c_.mode)) |
-                       kStateBitsZ2000[static_cast<std::size_t>(c_.state)] |
-                       bitIf(c_.endOrReset, 10) | bitIf(c_.overridePercent == 0, 14) |
-                       bitIf(wheelBelowMin, 15);
-    w.setWord(2000, static_cast<std::uint16_t>(s));
+    // Z2000, the wheel's bits of Z2005 and the offsets of the current
+    // coordinates. In a routine tick (no operator function, the same inputs:
+    // mode, override and power stay) they change only with what a program,
+    // its end or a message changes: computed again when one of those did.
+    const CommonOutputs::Key key{c_.framesExecuted, c_.alarms.activeMask(), c_.state,
+                                 c_.endOrReset, c_.programExclusion};
+    if (!routine || !common_.valid || !(key == common_.key)) {
+        const std::int32_t wheel = c_.r[r::WheelCurrent], wmin = c_.r[r::WheelMin],
+                           wmax = c_.r[r::WheelMax];
+        const bool wheelBelowMin = wmin > 0 && wheel < wmin;
+        const bool wheelAboveMax = wmax > 0 && wheel > wmax;
+        common_.z2000 = static_cast<std::uint16_t>(
+            bitIf(c_.powered && !c_.alarms.anyActive(AlarmCategory::System), 0) |
+            bitIf(c_.powered, modeKey(c_.mode)) | kStateBitsZ2000[static_cast<std::size_t>(c_.state)] |
+            bitIf(c_.endOrReset, 10) | bitIf(c_.overridePercent == 0, 14) | bitIf(wheelBelowMin, 15));
+        common_.wheelBits = bitIf(wheelBelowMin, 11) | bitIf(wheelAboveMax, 12); // X only
+        refreshOffsets();
+        common_.key = key;
+        common_.valid = true;
+    }
+    w.setWord(2000, common_.z2000);
     // Z2001.8..15: manual cycle n runs.
     std::uint16_t w2001 = static_cast<std::uint16_t>(w.word(2001) & 0x00FF);
     if (c_.cycle >= 1 && c_.cycle <= 8 && programActive(c_.state))
@@ -838,11 +849,9 @@ void Controller::writeOutputs() {
     w.setWord(2001, w2001);
 
     // Z2005..Z2008 and R232..R262.
-    refreshOffsets();
-    const unsigned wheelBits = bitIf(wheelBelowMin, 11) | bitIf(wheelAboveMax, 12); // X only
     for (const AxisUnit& u : c_.axes) {
         if (u.present)
-            axisOutputs(u, u.index == 0 ? wheelBits : 0u);
+            axisOutputs(u, u.index == 0 ? common_.wheelBits : 0u);
         else
             absentAxisOutputs(u.index);
         w.setAxisState(u.index, 1, c_.io.fastInputs[static_cast<std::size_t>(u.index)]);

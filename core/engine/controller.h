@@ -149,7 +149,8 @@ private:
     void handwheels(AxisUnit& u);
     void jog(AxisUnit& u);
     void homingStart(AxisUnit& u);
-    void writeOutputs();
+    // `routine`: this tick is a routine one (routineInputs()).
+    void writeOutputs(bool routine);
     void refreshR();
     void axisR(const AxisUnit& u, std::int64_t machineDisc);
     // R232..R262 and Z2005/Z2007 of a present axis (wheelBits: Z2005.11/.12
@@ -208,6 +209,21 @@ private:
         InterfaceWords words;
         std::array<std::uint8_t, kMachineStatusBytes> status{}; // fast inputs, module health
     } routine_;
+    // writeOutputs(): Z2000, the wheel's bits of Z2005 and the state they
+    // were computed for (see there).
+    struct CommonOutputs {
+        struct Key {
+            std::int64_t frames = 0;  // frames executed
+            std::uint64_t active = 0; // messages active
+            ProgramState state = ProgramState::Idle;
+            bool endOrReset = false;
+            std::uint8_t exclusion = 0; // G50..G53 of the program
+            bool operator==(const Key&) const = default;
+        } key;
+        bool valid = false;
+        std::uint16_t z2000 = 0;
+        unsigned wheelBits = 0;
+    } common_;
     struct OffsetSums {
         bool valid = false;
         std::array<std::int32_t, 8> r{};          // R224..R231 as summed
