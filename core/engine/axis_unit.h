@@ -60,6 +60,13 @@ struct AxisUnit {
         softMin = static_cast<double>(k.softMinusDisc * ipd);
         softMax = static_cast<double>(k.softPlusDisc * ipd);
         inputsKnown = false; // the fast-input functions may have changed with C
+        encoderChannel = k.encoderChannel >= 1 && k.encoderChannel <= 4 ? k.encoderChannel - 1 : -1;
+        const axis::ServoInputs none;
+        servoIn.encoderCount = none.encoderCount; // no channel: what a missing encoder reads
+        servoIn.channel1Ok = none.channel1Ok;
+        servoIn.channel2Ok = none.channel2Ok;
+        servoIn.zeroMark = none.zeroMark;
+        servoIn.zeroMarkCount = none.zeroMarkCount;
     }
 
     // Soft limits act once the axis is referenced (C10/C62 ВКЛ.ПРГ.КОН).
@@ -103,8 +110,15 @@ struct AxisUnit {
     // The words and fast-input byte the signals above were decoded from
     // (decoded again only when one of them changes, or the constants did).
     bool inputsKnown = false;
-    std::uint16_t inputsW0 = 0, inputsW1 = 0;
+    std::uint16_t inputsW0 = 0, inputsW1 = 0, inputsZ1000 = 0;
     std::uint8_t inputsFast = 0;
+    bool inputsPlcLink = true;
+    // The servo's inputs as the engine hands them over each tick: the
+    // encoder's from its pulse channel (C17/C69, 0..3, -1: none), the rest
+    // decoded with the signals above; feed enable of Z1000.1 and Z1005.2.
+    int encoderChannel = 0;
+    axis::ServoInputs servoIn;
+    bool feedEnableWords = true;
 
     // Motion.
     MotionOwner owner = MotionOwner::None;

@@ -224,13 +224,18 @@ void Controller::axisInputs(AxisUnit& u) {
     const int a = u.index;
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const std::uint16_t w1 = c_.words.axisControl(u.index, 1);
+    const std::uint16_t z1000 = c_.words.word(1000);
     const std::uint8_t fi = c_.io.fastInputs[static_cast<std::size_t>(a)];
-    if (u.inputsKnown && w0 == u.inputsW0 && w1 == u.inputsW1 && fi == u.inputsFast)
+    const bool plcLink = c_.io.plcLinkOk;
+    if (u.inputsKnown && w0 == u.inputsW0 && w1 == u.inputsW1 && fi == u.inputsFast &&
+        z1000 == u.inputsZ1000 && plcLink == u.inputsPlcLink)
         return; // the same words and inputs decode to the same signals
     u.inputsKnown = true;
     u.inputsW0 = w0;
     u.inputsW1 = w1;
     u.inputsFast = fi;
+    u.inputsZ1000 = z1000;
+    u.inputsPlcLink = plcLink;
     const FastInputMap& f = c_.fast;
     u.limitPlus = on(w0, 5) || f.active(a, FastFunction::LimitPlus, fi);
     u.limitMinus = on(w0, 6) || f.active(a, FastFunction::LimitMinus, fi);
@@ -242,6 +247,14 @@ void Controller::axisInputs(AxisUnit& u) {
         u.erase[static_cast<std::size_t>(n)] =
             on(w1, 12 + n) ||
             f.active(a, static_cast<FastFunction>(static_cast<int>(FastFunction::Erase1) + n), fi);
+    // The servo's inputs of these words (feed enable without «Стоп»'s hold).
+    axis::ServoInputs& in = u.servoIn;
+    in.emergencyStop = !on(z1000, 0) || !plcLink;
+    in.loopOff = on(w0, 0) || u.displayMode;
+    in.regulatorEnable = on(w0, 1);
+    u.feedEnableWords = on(z1000, 1) && on(w0, 2);
+    in.accel2 = on(w0, 4);
+    in.driveReady = u.driveReady;
 }
 
 void Controller::systemChecks() {
@@ -689,7 +702,6 @@ void Controller::axisTick(AxisUnit& u) {
     const int a = u.index;
     const std::size_t i = static_cast<std::size_t>(a);
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
-    const std::uint16_t z1000 = c_.words.word(1000);
     c_.lastAxisWord0[i] = w0;
 
     // Limit switches: brake with acceleration 2, the direction locked (with
@@ -720,22 +732,18 @@ void Controller::axisTick(AxisUnit& u) {
     u.overrideFactor = programOwned && u.noOverride ? 1.0 : overrideFactor_;
     u.servo.setOverride(u.overrideFactor);
 
-    axis::ServoInputs in;
-    const int ch = channelIndex(u.k.encoderChannel);
-    if (ch >= 0) {
-        const PulseChannel& p = c_.io.pulse[static_cast<std::size_t>(ch)];
+    // The servo's inputs: the encoder of this tick; the rest as decoded from
+    // the words (axisInputs(), every tick they may have changed).
+    axis::ServoInputs& in = u.servoIn;
+    if (u.encoderChannel >= 0) {
+        const PulseChannel& p = c_.io.pulse[static_cast<std::size_t>(u.encoderChannel)];
         in.encoderCount = p.count;
         in.channel1Ok = p.line1Ok;
         in.channel2Ok = p.line2Ok;
         in.zeroMark = p.zeroMark;
         in.zeroMarkCount = p.zeroMarkCount;
     }
-    in.emergencyStop = !on(z1000, 0) || !c_.io.plcLinkOk;
-    in.loopOff = on(w0, 0) || u.displayMode;
-    in.regulatorEnable = on(w0, 1);
-    in.feedEnable = on(z1000, 1) && on(w0, 2) && !hold;
-    in.accel2 = on(w0, 4);
-    in.driveReady = u.driveReady;
+    in.feedEnable = u.feedEnableWords && !hold;
     if (!c_.preview) // preview: the interpreter places the axes (engine/preview.h)
         u.servo.tick(in, c_.dtMs);
     if (u.servo.fault() != lastFault_[i])
