@@ -298,8 +298,10 @@ void Servo::tick(const ServoInputs& in, double dt) {
     const double e = traj_.position() - actual_;
     const double dac = v * ksD_ * (3.0 / 128.0) + e * keD_ / 256.0 + driftD_;
     // Round half away from zero, inline (std::lround is a library call, once a tick per axis).
+    // (d ± 0.5 by the sign of d: d - 0.5 is d + (-0.5); -0.0 gives -0.5,
+    // truncated to 0 as +0.5 would be.)
     const double dacClamped = std::clamp(dac, -1e9, 1e9);
-    dacRaw_ = static_cast<int>(dacClamped < 0 ? dacClamped - 0.5 : dacClamped + 0.5);
+    dacRaw_ = static_cast<int>(dacClamped + std::copysign(0.5, dacClamped));
     const int clamped = static_cast<int>(std::clamp<std::int64_t>(dacRaw_, -k_.dacMax, k_.dacMax));
     dacOut_ = k_.dacInvert ? -clamped : clamped;
     if (std::abs(dacRaw_) > dacLimit_)

@@ -9,6 +9,7 @@ void Trajectory::reset(double pos) {
     pos_ = target_ = pos;
     vel_ = 0;
     stopping_ = false;
+    noteAtTarget();
 }
 
 void Trajectory::moveTo(double target, double vmax, double accel) {
@@ -17,6 +18,7 @@ void Trajectory::moveTo(double target, double vmax, double accel) {
     accel_ = accel;
     stopping_ = false;
     stepDt_ = kNoStep;
+    noteAtTarget();
 }
 
 void Trajectory::prepareStep(double dt) {
@@ -35,6 +37,7 @@ void Trajectory::stop(double accel) {
     if (vel_ == 0.0) {
         target_ = pos_;
         stopping_ = false;
+        noteAtTarget();
         return;
     }
     stopping_ = true;
@@ -56,6 +59,7 @@ void Trajectory::tick(double dt) {
             stopping_ = false;
             target_ = pos_;
         }
+        noteAtTarget();
         return;
     }
     const double r = target_ - pos_;
@@ -95,6 +99,7 @@ void Trajectory::tick(double dt) {
         vNew = 0;
     pos_ = p;
     vel_ = vNew;
+    noteAtTarget();
 }
 
 } // namespace k528::axis

@@ -21,6 +21,7 @@ public:
     void setTarget(double target) {
         target_ = target;
         stopping_ = false;
+        noteAtTarget();
     }
     void setSpeedLimit(double vmax) {
         vmax_ = vmax;
@@ -52,13 +53,16 @@ public:
     double remaining() const { return target_ - pos_; }
     bool stopping() const { return stopping_; }
     // Exactly at the target and at rest.
-    bool atTarget() const { return pos_ == target_ && vel_ == 0.0; }
+    bool atTarget() const { return atTarget_; }
     // At rest (may be short of the target while the scale is 0).
     bool atRest() const { return vel_ == 0.0; }
     // Distance needed to stop from the current speed with acceleration a.
     double brakingDistance(double a) const { return a > 0 ? vel_ * vel_ / (2.0 * a) : 0.0; }
 
 private:
+    // atTarget() kept with every change of position, speed or target (the
+    // servo and the engine ask several times a tick).
+    void noteAtTarget() { atTarget_ = pos_ == target_ && vel_ == 0.0; }
     // The values of a step that depend only on the acceleration, the scaled
     // speed limit and the step length, computed with the same operations in
     // the same order as the step itself would (so bit for bit the same), once
@@ -67,6 +71,7 @@ private:
     static constexpr double kNoStep = -1.0; // stepDt_: nothing prepared
 
     double pos_ = 0, vel_ = 0, target_ = 0;
+    bool atTarget_ = true;
     double vmax_ = 0, accel_ = 1, scale_ = 1;
     double stopAccel_ = 1;
     bool stopping_ = false;

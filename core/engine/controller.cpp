@@ -819,15 +819,6 @@ constexpr unsigned bitIf(bool v, int bit) {
 
 void Controller::writeOutputs(bool routine) {
     InterfaceWords& w = c_.words;
-    // Machine side.
-    c_.io.dac.fill(0);
-    for (const AxisUnit& u : c_.axes) {
-        c_.io.regulatorEnable[static_cast<std::size_t>(u.index)] =
-            u.present && u.servo.regulatorOn();
-        const int ch = channelIndex(u.k.dacChannel);
-        if (u.present && ch >= 0)
-            c_.io.dac[static_cast<std::size_t>(ch)] = u.servo.dac();
-    }
 
     // Z2000, the wheel's bits of Z2005 and the offsets of the current
     // coordinates. In a routine tick (no operator function, the same inputs:
@@ -856,13 +847,19 @@ void Controller::writeOutputs(bool routine) {
         w2001 = static_cast<std::uint16_t>(w2001 | (1u << (7 + c_.cycle)));
     w.setWord(2001, w2001);
 
-    // Z2005..Z2008 and R232..R262.
+    // The machine side (DAC, regulator enable), Z2005..Z2008 and R232..R262.
+    c_.io.dac.fill(0);
     for (const AxisUnit& u : c_.axes) {
+        const std::size_t i = static_cast<std::size_t>(u.index);
+        c_.io.regulatorEnable[i] = u.present && u.servo.regulatorOn();
+        const int ch = channelIndex(u.k.dacChannel);
+        if (u.present && ch >= 0)
+            c_.io.dac[static_cast<std::size_t>(ch)] = u.servo.dac();
         if (u.present)
             axisOutputs(u, u.index == 0 ? common_.wheelBits : 0u);
         else
             absentAxisOutputs(u.index);
-        w.setAxisState(u.index, 1, c_.io.fastInputs[static_cast<std::size_t>(u.index)]);
+        w.setAxisState(u.index, 1, c_.io.fastInputs[i]);
     }
     c_.r.set(r::Override, c_.overridePercent);
     c_.r.set(r::NestingLevel, interp_.level());
