@@ -748,6 +748,10 @@ void Controller::axisTick(AxisUnit& u) {
         u.servo.tick(in, c_.dtMs);
     if (u.servo.fault() != lastFault_[i])
         trackFault(u);
+    Oscillation& osc = c_.osc[i];
+    if ((u.owner == MotionOwner::Program || u.owner == MotionOwner::None) && !u.homing.running() &&
+        !osc.active())
+        return; // no cycle runs and no manual motion to end: nothing below acts
 
     // Reference-point cycle.
     if (u.homing.running() || u.owner == MotionOwner::Homing) {
@@ -763,7 +767,6 @@ void Controller::axisTick(AxisUnit& u) {
     }
 
     // Oscillation.
-    Oscillation& osc = c_.osc[i];
     if (osc.active()) {
         osc.tick(u.servo, c_.dtMs);
         if (!osc.active() && u.owner == MotionOwner::Oscillation)
