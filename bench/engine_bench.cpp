@@ -14,6 +14,8 @@
 #include "machine/simulation.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
+
+#include "engine_program.h"
 #include "report.h"
 
 #include <algorithm>
@@ -23,31 +25,13 @@
 
 using namespace k528;
 
-namespace {
-
-// A long two-axis program: 400 moves of both axes at cutting feeds and
-// rapids, with computations and a loop, as a day's batch of parts does.
-const char* kProgram = R"(%L1 (engine benchmark)
-N1 G90 G54 G0 M61 M3 M8 X80 Z2
-N2 R1=200
-N3 G1 X60 FX3000 Z-90 FZ2500
-N4 G1 X40 FX1500 Z-20 FZ3000
-N5 G0 X80 Z2
-N6 R2=R2+1
-N7 R1=R1-1
-N8 IF R1>0 GOTO 3
-N9 M5 M9
-N10 M30
-)";
-
-} // namespace
-
 int main(int argc, char** argv) {
     const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
     const std::int64_t idleTicks = argc > 2 ? std::max(1000LL, std::atoll(argv[2])) : 2000000;
     bench::Report report;
     const profile::MachineProfile prof = profile::builtin("training-lathe");
-    const program::ParseResult parsed = program::parse(kProgram);
+    const std::string text = bench::engineProgram(200);
+    const program::ParseResult parsed = program::parse(text);
 
     // Program: the whole `k528 run` path (homing, program, end state).
     double best = 0, simS = 0;

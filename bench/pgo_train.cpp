@@ -17,6 +17,8 @@
 #include "program/parser.h"
 #include "resources/embedded.h"
 
+#include "engine_program.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -24,20 +26,6 @@
 using namespace k528;
 
 namespace {
-
-// The engine benchmark's program (bench/engine_bench.cpp), 50 passes.
-const char* kLongProgram = R"(%L1 (training)
-N1 G90 G54 G0 M61 M3 M8 X80 Z2
-N2 R1=50
-N3 G1 X60 FX3000 Z-90 FZ2500
-N4 G1 X40 FX1500 Z-20 FZ3000
-N5 G0 X80 Z2
-N6 R2=R2+1
-N7 R1=R1-1
-N8 IF R1>0 GOTO 3
-N9 M5 M9
-N10 M30
-)";
 
 bool run(const char* machineName, std::string_view text, const char* what) {
     const program::ParseResult parsed = program::parse(text);
@@ -67,7 +55,8 @@ int main(int argc, char** argv) {
         const auto text = resources::find(s.sample);
         ok = text && run(s.machine, *text, s.sample) && ok;
     }
-    ok = run("training-lathe", kLongProgram, "the benchmark program") && ok;
+    const std::string benchmarkProgram = bench::engineProgram(50);
+    ok = run("training-lathe", benchmarkProgram, "the benchmark program") && ok;
 
     machine::Simulation sim(profile::builtin("training-lathe"));
     machine::SimulationRunMachine m(sim);

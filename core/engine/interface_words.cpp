@@ -6,8 +6,7 @@
 namespace k528::engine {
 
 bool InterfaceWords::holds(int a) {
-    return (a >= 1000 && a <= 1013) || (a >= 1300 && a <= 1307) || (a >= 1900 && a <= 1907) ||
-           (a >= 2000 && a <= 2008);
+    return slotOf(a) >= 0;
 }
 
 void InterfaceWords::notHeld(int a) {

@@ -28,6 +28,19 @@ class InterfaceWords {
 public:
     // Addresses held: 1000..1013, 1300..1307, 1900..1907, 2000..2008.
     static bool holds(int address);
+    // The index of a held address in that order (0..38), -1 for another.
+    static constexpr int kWordCount = 14 + 8 + 8 + 9;
+    static constexpr int slotOf(int a) {
+        if (a >= 1000 && a <= 1013)
+            return a - 1000;
+        if (a >= 1300 && a <= 1307)
+            return 14 + (a - 1300);
+        if (a >= 1900 && a <= 1907)
+            return 22 + (a - 1900);
+        if (a >= 2000 && a <= 2008)
+            return 30 + (a - 2000);
+        return -1;
+    }
 
     std::uint16_t word(int address) const { return w_[slot(address)]; }
     void setWord(int address, std::uint16_t value) { w_[slot(address)] = value; }
@@ -76,22 +89,17 @@ private:
     // Index of a held address; throws std::out_of_range for an address not
     // held. Inline: with a constant address it folds to a constant.
     static int slot(int a) {
-        if (a >= 1000 && a <= 1013)
-            return a - 1000;
-        if (a >= 2000 && a <= 2008)
-            return 30 + (a - 2000);
-        if (a >= 1300 && a <= 1307)
-            return 14 + (a - 1300);
-        if (a >= 1900 && a <= 1907)
-            return 22 + (a - 1900);
-        notHeld(a);
+        const int s = slotOf(a);
+        if (s < 0)
+            notHeld(a);
+        return s;
     }
     [[noreturn]] static void notHeld(int address);
     static constexpr int kAxisControlSlot = 5; // slot(1005)
     static constexpr int kAxisStateSlot = 35;  // slot(2005)
     static constexpr int kInputSlots = 30;     // slots 0..29: Z1000..Z1907
     static constexpr int kOutputSlots = 9;     // slots 30..38: Z2000..Z2008
-    std::array<std::uint16_t, 14 + 8 + 8 + 9> w_{};
+    std::array<std::uint16_t, kWordCount> w_{};
 };
 
 namespace z {

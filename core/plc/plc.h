@@ -172,22 +172,12 @@ private:
 
     std::uint32_t addSignal(const std::string& name, Kind kind, const std::string& path);
     std::optional<std::uint32_t> resolve(std::string_view name) const;
-    // Index of a held word, -1 if none: the words in the order 1000..1013,
-    // 1300..1307, 1900..1907, 2000..2008. Arithmetic, inline: the scan packs
-    // and unpacks words by address, and with a constant address this folds
-    // to a constant.
-    static constexpr int zSlot(int word) {
-        if (word >= 1000 && word <= 1013)
-            return word - 1000;
-        if (word >= 1300 && word <= 1307)
-            return 14 + (word - 1300);
-        if (word >= 1900 && word <= 1907)
-            return 22 + (word - 1900);
-        if (word >= 2000 && word <= 2008)
-            return 30 + (word - 2000);
-        return -1;
-    }
-    static constexpr int kZWords = 39; // words held: 14 + 8 + 8 + 9
+    // Index of a held word, -1 if none: the words in the order of
+    // engine::InterfaceWords (1000..1013, 1300..1307, 1900..1907,
+    // 2000..2008). Arithmetic, inline: the scan packs and unpacks words by
+    // address, and with a constant address this folds to a constant.
+    static constexpr int zSlot(int word) { return engine::InterfaceWords::slotOf(word); }
+    static constexpr int kZWords = engine::InterfaceWords::kWordCount;
     std::uint32_t zSignal(int word, int bit) const {
         return zBase_ + static_cast<std::uint32_t>(zSlot(word) * 16 + bit);
     }
