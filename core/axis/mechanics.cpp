@@ -29,6 +29,17 @@ Mechanics::Mechanics(const MechanicsSettings& s)
 }
 
 void Mechanics::refreshTarget() {
+    // The speed of a code in the DAC's range is computed once and kept: the
+    // two divisions lie on the path from the positioner's code to the motor
+    // in every tick the code changes (the same operations, the same bits).
+    const int slot = dacCode_ + kCodeOffset;
+    if (slot >= 0 && slot < kCodeSlots) {
+        double& kept = speedOfCode_[static_cast<std::size_t>(slot)];
+        if (!(kept == kept)) // NaN: not computed yet
+            kept = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
+        targetSpeed_ = kept;
+        return;
+    }
     targetSpeed_ = driveVolts() * s_.speedPerVoltMmPerMin / 60000.0;
 }
 

@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <vector>
 
 namespace k528::axis {
 
@@ -107,6 +109,11 @@ private:
     double alpha_ = 0, alphaDt_ = -1; // lag factor cached per tick length
     double brakeStep_ = 0, accelStep_ = 0; // speed change limits per tick (of alphaDt_)
     double targetSpeed_ = 0;          // mm/ms of slide travel the DAC code asks for (of dacCode_)
+    // targetSpeed_ of each code of a 12-bit DAC (-2048..2047) once computed;
+    // NaN: not yet (refreshTarget). On the heap: 32 KB.
+    static constexpr int kCodeOffset = 2048, kCodeSlots = 4096;
+    std::vector<double> speedOfCode_ =
+        std::vector<double>(kCodeSlots, std::numeric_limits<double>::quiet_NaN());
     // The last tick left the motor at rest and nothing changed since: a
     // tick with no drive speed asked changes nothing.
     bool settled_ = false;

@@ -32,6 +32,30 @@ private slots:
     // tick, which found the plant at rest (a reader copies them only when not
     // quiet). A push or a broken channel changes them at once: not quiet
     // until a tick at rest again; a tick that moves the motor is not quiet.
+    // The drive's speed of a DAC code is computed once and kept: a code set
+    // again gives the motor the same speed as a code set the first time, in
+    // the DAC's range and beyond it (drift and a reversed wiring included).
+    void mechanicsSpeedOfACodeKept() {
+        MechanicsSettings set = rig::grinderZMechanics();
+        set.driftVolts = 0.013;
+        for (bool inverted : {false, true}) {
+            set.dacWiredInverted = inverted;
+            for (int code : {0, 1, -1, 777, -2048, 2047, 3000, -5000}) {
+                Mechanics fresh(set), again(set);
+                fresh.setDriveEnabled(true);
+                again.setDriveEnabled(true);
+                fresh.setDacCode(code);
+                again.setDacCode(code);
+                again.setDacCode(code == 5 ? 6 : 5);
+                again.setDacCode(code); // from what was kept
+                fresh.tick(1.0);
+                again.tick(1.0);
+                QCOMPARE(again.motorSpeedMmPerMin(), fresh.motorSpeedMmPerMin());
+                QVERIFY(code == 0 || fresh.motorSpeedMmPerMin() != 0.0);
+                QCOMPARE(again.driveVolts(), fresh.driveVolts());
+            }
+        }
+    }
     void mechanicsQuietUntilTheEncoderChanges() {
         Mechanics m(rig::grinderZMechanics());
         const auto rest = [&] {
