@@ -115,6 +115,56 @@ private slots:
         QVERIFY(jump);
     }
 
+    // The validation reads Scintilla's gap buffer in its two parts, where
+    // they lie, into a buffer it reuses: the text validated is the text on
+    // screen wherever the gap is (after an edit in the middle, at the start,
+    // at the end, after a deletion that shortens it), and reading it does
+    // not move the gap (which would move all the text after the caret).
+    void validationReadsTheTextAroundTheGap() {
+        ProgramEditor ed;
+        QString text = "%L1\n";
+        for (int n = 1; n <= 40; ++n)
+            text += QStringLiteral("N%1 G1 X%1\n").arg(n);
+        text += "M30\n";
+        ed.setText(text);
+        ed.validateNow();
+        QVERIFY(ed.diagnostics().empty());
+        QCOMPARE(int(ed.store().find(1)->frames.size()), 41);
+        // An edit in the middle: the gap is there now.
+        ed.setCursorPosition(20, 0);
+        ed.insert("N99 G1 X5..3\n");
+        const long gap = static_cast<long>(ed.SendScintilla(QsciScintilla::SCI_GETGAPPOSITION));
+        QVERIFY(gap > 0 && gap < ed.length());
+        ed.validateNow();
+        QCOMPARE(static_cast<long>(ed.SendScintilla(QsciScintilla::SCI_GETGAPPOSITION)), gap);
+        QCOMPARE(int(ed.diagnostics().size()), 1);
+        QCOMPARE(ed.diagnostics().front().line, 21);
+        QCOMPARE(int(ed.store().find(1)->frames.size()), 42);
+        // Frames before and after the gap are read whole.
+        QVERIFY(ed.store().find(1)->indexOfN(19) >= 0);
+        QVERIFY(ed.store().find(1)->indexOfN(20) >= 0);
+        QVERIFY(ed.store().find(1)->indexOfN(40) >= 0);
+        // The text shortened (the buffer is reused, nothing of the longer text
+        // is left at its end): the bad frame and the last ten lines deleted.
+        ed.setSelection(20, 0, 21, 0);
+        ed.removeSelectedText();
+        ed.setSelection(31, 0, 41, 0);
+        ed.removeSelectedText();
+        ed.validateNow();
+        QVERIFY(ed.diagnostics().empty());
+        QCOMPARE(int(ed.store().find(1)->frames.size()), 31);
+        // The gap at the start, then at the end.
+        ed.setCursorPosition(0, 0);
+        ed.insert("%L2\nN1 G1 Z1\nM30\n");
+        ed.validateNow();
+        QCOMPARE(int(ed.store().size()), 2);
+        ed.append("%L3\nN1 G1 Z1\nM30\n");
+        ed.validateNow();
+        QCOMPARE(int(ed.store().size()), 3);
+        QVERIFY(ed.diagnostics().empty());
+        QCOMPARE(ed.store().firstWritten(), 2);
+    }
+
     void columnsCountCodePoints() {
         ProgramEditor ed;
         // A Cyrillic letter («Х») is an error; the squiggle is on it, two bytes.

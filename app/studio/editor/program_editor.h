@@ -41,6 +41,10 @@ public:
     bool hasMachine() const { return machine_.has_value(); }
     const std::optional<profile::MachineProfile>& machine() const { return machine_; }
 
+    // The whole text replaced (a file opened or reloaded); Scintilla's
+    // buffers get room to grow (see kGrowthRoom).
+    void setText(const QString& text) override;
+
     // Validates now, on this thread (tests, benchmarks, before sending).
     void validateNow();
     // The diagnostics of the last validation, and the store it read.
@@ -82,8 +86,17 @@ private:
     void drawSquiggles(std::size_t from, std::size_t to);
     void drawNextSlice();
     static constexpr std::size_t kSquiggleSlice = 1000;
-    // The document's bytes (UTF-8), copied without a detour through QString.
+    // The document's bytes (UTF-8), copied without a detour through QString
+    // into a buffer kept for the next validation.
     QByteArray documentBytes() const;
+    // Room for typing given to Scintilla's buffers (text and styles) when a
+    // text is set: a fraction of the text, at least kGrowthRoomMin bytes.
+    // Scintilla itself grows a buffer filled by SCI_SETTEXT by 8 bytes at
+    // first, so the 8th key typed would copy a 2.9 MB text and its styles
+    // into new, never-touched memory (20-30 ms on a VM whose page faults are
+    // slow); with the room it never grows while someone types.
+    static constexpr int kGrowthRoomDivisor = 4;
+    static constexpr int kGrowthRoomMin = 64 * 1024;
     void charAdded(int ch);
     void completionChosen(int id, const QString& text);
     void dwellStart(int position, int x, int y);
@@ -104,6 +117,7 @@ private:
     int validations_ = 0;
     int executingLine_ = -1;
     std::shared_ptr<bool> alive_;
+    mutable QByteArray snapshot_; // documentBytes()'s buffer, reused when no worker holds it
 };
 
 } // namespace k528::studio
