@@ -390,7 +390,7 @@ void Simulation::refreshIoWiring() {
     }
     wheelOverEncoder_ = false;
     for (std::size_t k = 0; k < 2; ++k) {
-        wheelOut_[k] = eq_.pendant && live(wheelChannel_[k]) ? wheelChannel_[k] : -1;
+        wheelOut_[k] = live(wheelChannel_[k]) ? wheelChannel_[k] : -1; // the pendant is always there
         for (const AxisPlant& x : axes_)
             wheelOverEncoder_ = wheelOverEncoder_ || (wheelOut_[k] >= 0 && wheelOut_[k] == x.encoderOut);
     }

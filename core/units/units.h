@@ -77,6 +77,8 @@ struct AxisScale {
     }
     // Internal units per display discrete: 2, or 1 on a diameter axis.
     constexpr std::int64_t internalPerDisc() const { return diameter ? 1 : 2; }
+    // Its reciprocal (exact: 1 or 1/2), for conversions without a division.
+    constexpr double discPerInternal() const { return diameter ? 1.0 : 0.5; }
     // Millimetres of actual slide motion per internal unit (half a motion
     // discrete; a motion discrete is one display discrete of slide travel).
     constexpr double internalMotionMm() const { return discreteMm() / 2.0; }
@@ -104,9 +106,9 @@ constexpr std::int64_t discToInternal(std::int64_t disc, const AxisScale& s) {
     return disc * s.internalPerDisc();
 }
 inline double internalToDisc(double internal, const AxisScale& s) {
-    // internal / internalPerDisc(): halving is exact, so the product by 0.5
-    // is the quotient bit for bit (without a division's latency).
-    return s.diameter ? internal : internal * 0.5;
+    // internal / internalPerDisc(): the reciprocal is exact (1 or 1/2), so
+    // the product is the quotient bit for bit (without a division's latency).
+    return internal * s.discPerInternal();
 }
 
 // Speed constants (C40..44, C92..96) are in 10·display discretes per minute.

@@ -28,6 +28,14 @@ private slots:
         QCOMPARE(discToInternal(1000, x), 1000);  // 1 mm of diameter = 0.5 mm slide = 1000 units
         QCOMPARE(z.internalMotionMm(), 0.0005);
         QCOMPARE(x.internalMotionMm(), 0.0005);
+        // Back to discretes by the exact reciprocal: the quotient bit for bit.
+        for (const double v : {0.0, 1.0, -3.0, 2001.0, 12345.678901, -0.1, 1e300, 4.9e-324}) {
+            QVERIFY(internalToDisc(v, z) == v / static_cast<double>(z.internalPerDisc()));
+            QVERIFY(internalToDisc(v, x) == v / static_cast<double>(x.internalPerDisc()));
+            QCOMPARE(z.internalPerDisc() * z.discPerInternal(), 1.0);
+            QCOMPARE(x.internalPerDisc() * x.discPerInternal(), 1.0);
+        }
+        QCOMPARE(internalToDisc(2001.0, z), 1000.5);
     }
     void formats() {
         const AxisScale um{Discrete::Mm0_001, false};
