@@ -1012,6 +1012,10 @@
         <source>Programs</source>
         <translation>Programs</translation>
     </message>
+    <message>
+        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
+        <translation>Choose the controller's port, speed, parity and address, then Connect.</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>
@@ -1211,10 +1215,6 @@
         <translation>L%1 runs.</translation>
     </message>
     <message>
-        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
-        <translation>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</translation>
-    </message>
-    <message>
         <source>L%1 ended.</source>
         <translation>L%1 ended.</translation>
     </message>
@@ -1273,6 +1273,38 @@
     <message>
         <source>Stopped by a message at %1</source>
         <translation>Stopped by a message at %1</translation>
+    </message>
+    <message>
+        <source>the emergency stop is pressed on the machine's panel</source>
+        <translation>the emergency stop is pressed on the machine's panel</translation>
+    </message>
+    <message>
+        <source>the K923 is in %1, not АВТОМАТ</source>
+        <translation>the K923 is in %1, not АВТОМАТ</translation>
+    </message>
+    <message>
+        <source>the positioner shows message %1: %2</source>
+        <translation>the positioner shows message %1: %2</translation>
+    </message>
+    <message>
+        <source>the PLC did not pass it on (start enable, the machine's messages)</source>
+        <translation>the PLC did not pass it on (start enable, the machine's messages)</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</source>
+        <translation>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</source>
+        <translation>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</translation>
+    </message>
+    <message>
+        <source>«Пуск» is held down on the machine's panel: release it, then Run again.</source>
+        <translation>«Пуск» is held down on the machine's panel: release it, then Run again.</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken: %1.</source>
+        <translation>«Пуск» was not taken: %1.</translation>
     </message>
 </context>
 <context>
@@ -1607,6 +1639,28 @@
     <message>
         <source>%1: the database already holds these programs (revision %2)</source>
         <translation>%1: the database already holds these programs (revision %2)</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2</source>
+        <translation>OK replaces line %1: %2</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2
+Its comment stays: %3</source>
+        <translation>OK replaces line %1: %2
+Its comment stays: %3</translation>
+    </message>
+    <message>
+        <source>OK inserts a new line after line %1.</source>
+        <translation>OK inserts a new line after line %1.</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master</source>
+        <translation>Line %1 replaced by the master</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master; its comment kept</source>
+        <translation>Line %1 replaced by the master; its comment kept</translation>
     </message>
 </context>
 <context>
