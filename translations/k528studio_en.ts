@@ -3110,4 +3110,11 @@
         <translation>No segment here</translation>
     </message>
 </context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>No OpenGL context for the backplot</translation>
+    </message>
+</context>
 </TS>

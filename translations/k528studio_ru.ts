@@ -3110,4 +3110,11 @@
         <translation>Здесь нет отрезка</translation>
     </message>
 </context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>Нет контекста OpenGL для траектории</translation>
+    </message>
+</context>
 </TS>

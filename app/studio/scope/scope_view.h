@@ -60,11 +60,13 @@ public:
     double framesPerSecond() const { return fps_; }
 
 public slots:
-    // Redraws the window that ends at the newest sample (or the frozen one).
+    // Redraws the window that ends at the newest sample (or the frozen one);
+    // while hidden only the triggers look at the new samples.
     void refresh();
 
 protected:
     void changeEvent(QEvent* e) override;
+    void showEvent(QShowEvent* e) override;
     bool eventFilter(QObject* o, QEvent* e) override;
 
 private:
