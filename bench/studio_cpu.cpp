@@ -5,7 +5,7 @@
 // excluded) over `seconds` of real time as a share of one core.
 //   idle:    the training lathe after start-up (the first seconds skipped),
 //            nobody touching it;
-//   program: the same with a program running (`--run FILE`: the editor's
+//   program: the same with a program running, in each workspace (`--run FILE`: the editor's
 //            debugger runs its first program as the operator would — drives
 //            on, homing, АВТОМАТ, «Пуск»), both axes moving all the time.
 // Fresh HOME and database each run (no saved layout, no shop database).
@@ -244,20 +244,24 @@ int main(int argc, char** argv) {
     }
     report.figure("studio.idle_cpu (" + geometry + ", llvmpipe)", idle.share * 100.0, "%", 3,
                   k528::bench::Better::Lower);
-    // Start-up, drives on: the loop runs after a few seconds.
-    const Measured run =
-        measure(studio, x.display, dir + "/program", {"--profile", machine, "--run", program}, 6.0, seconds);
-    if (run.share < 0) {
-        std::fprintf(stderr, "bench_studio_cpu: %s\n", run.error.c_str());
-        return 2;
+    // In each workspace (they show different views): start-up, drives on,
+    // the loop runs after a few seconds.
+    for (const char* workspace : {"operator", "technologist", "training"}) {
+        const Measured run = measure(studio, x.display, dir + "/" + workspace,
+                                     {"--workspace", workspace, "--profile", machine, "--run", program}, 6.0,
+                                     seconds);
+        if (run.share < 0) {
+            std::fprintf(stderr, "bench_studio_cpu: %s\n", run.error.c_str());
+            return 2;
+        }
+        // The studio says when --run's program is under way (main.cpp).
+        if (run.log.find("--run: L1 runs") == std::string::npos) {
+            std::fprintf(stderr, "bench_studio_cpu: the program did not run:\n%s\n", run.log.c_str());
+            return 2;
+        }
+        report.figure(std::string("studio.program_cpu.") + workspace + " (" + geometry + ", llvmpipe)",
+                      run.share * 100.0, "%", 30, k528::bench::Better::Lower);
     }
-    // The studio says when --run's program is under way (main.cpp).
-    if (run.log.find("--run: L1 runs") == std::string::npos) {
-        std::fprintf(stderr, "bench_studio_cpu: the program did not run:\n%s\n", run.log.c_str());
-        return 2;
-    }
-    report.figure("studio.program_cpu (" + geometry + ", llvmpipe)", run.share * 100.0, "%", 30,
-                  k528::bench::Better::Lower);
     std::string rm = "rm -rf '" + dir + "'";
     if (std::system(rm.c_str()) != 0)
         std::fprintf(stderr, "bench_studio_cpu: %s not removed\n", dir.c_str());

@@ -2589,6 +2589,10 @@
         <source>The controller on the link takes no keys: press them on its own K923</source>
         <translation>The controller on the link takes no keys: press them on its own K923</translation>
     </message>
+    <message>
+        <source>Debugger</source>
+        <translation>Debugger</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3010,6 +3014,49 @@
     <message>
         <source>simulated %1</source>
         <translation>simulated %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Workspaces</name>
+    <message>
+        <source>&amp;Workspace</source>
+        <translation>&amp;Workspace</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Reset layout</translation>
+    </message>
+    <message>
+        <source>The current workspace's docks where they were at first</source>
+        <translation>The current workspace's docks where they were at first</translation>
+    </message>
+    <message>
+        <source>Workspace: the window arranged for its user</source>
+        <translation>Workspace: the window arranged for its user</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Operator</translation>
+    </message>
+    <message>
+        <source>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</source>
+        <translation>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</translation>
+    </message>
+    <message>
+        <source>Technologist</source>
+        <translation>Technologist</translation>
+    </message>
+    <message>
+        <source>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</source>
+        <translation>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
+        <translation>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</translation>
     </message>
 </context>
 <context>

@@ -2589,6 +2589,10 @@
         <source>The controller on the link takes no keys: press them on its own K923</source>
         <translation>Контроллер на линии не принимает клавиши: нажимайте их на его собственном К923</translation>
     </message>
+    <message>
+        <source>Debugger</source>
+        <translation>Отладчик</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3010,6 +3014,49 @@
     <message>
         <source>simulated %1</source>
         <translation>имитация %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Workspaces</name>
+    <message>
+        <source>&amp;Workspace</source>
+        <translation>&amp;Рабочее место</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Исходное расположение</translation>
+    </message>
+    <message>
+        <source>The current workspace's docks where they were at first</source>
+        <translation>Панели текущего рабочего места — на исходные места</translation>
+    </message>
+    <message>
+        <source>Workspace: the window arranged for its user</source>
+        <translation>Рабочее место: окно, устроенное для своего пользователя</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Оператор</translation>
+    </message>
+    <message>
+        <source>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</source>
+        <translation>У станка: K923, пульт станка, выполняемая программа, сообщения и оси</translation>
+    </message>
+    <message>
+        <source>Technologist</source>
+        <translation>Технолог</translation>
+    </message>
+    <message>
+        <source>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</source>
+        <translation>Программы: редактор с проблемами и структурой, траектория; отладчик и контроллер — из меню «Вид»</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
+        <translation>Обучение на станке: пульт станка, K923, траектория и осциллограф</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,8 @@
 #include "engine/debug_gate.h"
 #include "engine/preview.h"
 
+#include "program/refusals.h"
+
 #include <algorithm>
 #include <bitset>
 #include <cstdlib>
@@ -333,41 +335,21 @@ void Interpreter::beginIso(const program::Frame& f) {
         }
     }
 
-    // The combinations the positioner refuses (appendix М).
-    const bool hasX = iso.x.has_value(), hasZ = iso.z.has_value();
+    // The combinations the positioner refuses (program/refusals.h, the
+    // validator's table): the first the frame matches is the alarm.
+    const bool hasX = iso.x.has_value();
     const bool call = iso.call.has_value();
-    const bool m17 = iso.hasM(program::mfunc::kSubprogramEnd);
-    const bool m2 = iso.hasM(program::mfunc::kEnd), m30 = iso.hasM(program::mfunc::kEndRewind);
-    int bad = 0;
-    if (dwell_ && hasZ)
-        bad = 63;
-    else if (dwell_ && call)
-        bad = 64;
-    else if (call && hasX)
-        bad = 34;
-    else if (call && hasZ)
-        bad = 50;
-    else if (m17 && hasX && !dwell_)
-        bad = 35;
-    else if (m17 && hasZ)
-        bad = 51;
-    else if (m30 && call)
-        bad = 58;
-    else if (m2 && call)
-        bad = 59;
-    else if (m17 && call)
-        bad = 60;
-    else if (m30 && m17)
-        bad = 61;
-    else if (m2 && m17)
-        bad = 62;
-    else if (depth_ > 0 && !m17 && index_ == static_cast<int>(prog_->frames.size()) - 1 &&
-             ((hasX && !dwell_) || hasZ))
-        bad = hasX && !dwell_ ? 36 : 52;
-    if (bad) {
-        error(bad);
-        return;
-    }
+    program::refusal::Words words = program::refusalWords(iso);
+    if (depth_ > 0 && index_ == static_cast<int>(prog_->frames.size()) - 1)
+        words |= program::refusal::LastOfSubprogram;
+    if (words)
+        if (const program::Refusal* bad = program::firstRefusal(words)) {
+            error(bad->message);
+            return;
+        }
+    const bool m17 = (words & program::refusal::SubprogramEnd) != 0;
+    const bool m2 = (words & program::refusal::End) != 0;
+    const bool m30 = (words & program::refusal::EndRewind) != 0;
 
     // Modal state, message, feeds.
     modal_ = m;

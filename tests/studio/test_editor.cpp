@@ -226,12 +226,15 @@ private slots:
         ed->insert("G1 X5\n");
         QVERIFY(ed->isModified());
         int asked = 0;
-        tab->setCloseQuestion([&](const QString&) {
+        QString named;
+        tab->setCloseQuestion([&](const QString& name) {
             ++asked;
+            named = name;
             return EditorTab::CloseChoice::Cancel;
         });
         QVERIFY(!window.close());
         QCOMPARE(asked, 1);
+        QCOMPARE(named, QString("p.k528")); // the file's name, not the tab's «p.k528 *»
         QCOMPARE(tab->documentCount(), 1);
         QCOMPARE(tab->currentEditor()->text(), QString("%L1\nG1 X5\nM30\n"));
         // «Save» writes the edits, then the window closes.

@@ -20,7 +20,9 @@
 #include "editor/program_editor.h"
 #include "main_window.h"
 #include "profile/builtin.h"
+#include "scope/scope_view.h"
 #include "session/simulation_session.h"
+#include "workspace/workspaces.h"
 
 using k528::studio::MainWindow;
 using k528::studio::SimulationSession;
@@ -139,6 +141,7 @@ private slots:
         w.resize(1366, 740);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("training")); // the backplot beside the panels
         k528::studio::EditorTab* editor = w.programEditor();
         editor->setCloseQuestion([](const QString&) { return k528::studio::EditorTab::CloseChoice::Discard; });
         QVERIFY(editor->openFile(path));
@@ -170,6 +173,11 @@ private slots:
         QVERIFY(bp->glWidget()->framesPainted() - gl0 <=
                 seconds * 1000.0 / k528::studio::backplot::BackplotWidget::kLiveIntervalMs + 3);
         QVERIFY(bp->glWidget()->framesPainted() - gl0 >= 2);
+        // The oscilloscope's charts at most at theirs.
+        const int scopeMax = static_cast<int>(seconds * 1000.0 / k528::studio::ScopeView::kLiveIntervalMs) + 3;
+        for (auto it = paints.byWidget.begin(); it != paints.byWidget.end(); ++it)
+            if (it.key().contains("scope.chart"))
+                QVERIFY2(it.value() <= scopeMax && it.value() >= 2, qPrintable(paints.report()));
         // No widget repaints more often than the frames come (the window
         // itself is painted under each of its children that changed).
         for (auto it = paints.byWidget.begin(); it != paints.byWidget.end(); ++it)

@@ -7,6 +7,7 @@
 #include "language.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
+#include "workspace/elided_label.h"
 
 #include <QDir>
 #include <QEvent>
@@ -59,6 +60,10 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     sendAction_ = toolbar_->addAction(QString(), this, [this] { sendToController(); });
     toolbar_->addSeparator();
     masterAction_ = toolbar_->addAction(QString(), this, &EditorTab::openMaster);
+    newAction_->setObjectName("editor.new");
+    openAction_->setObjectName("editor.open");
+    saveAction_->setObjectName("editor.save");
+    saveAsAction_->setObjectName("editor.saveAs");
     newAction_->setShortcut(QKeySequence::New);
     saveAction_->setShortcut(QKeySequence::Save);
 
@@ -92,7 +97,7 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     split->addWidget(problems_);
     split->setStretchFactor(0, 4);
     layout->addWidget(split, 1);
-    count_ = new QLabel(this);
+    count_ = new ElidedLabel(this); // cut rather than widen the window
     count_->setObjectName("editor.problemCount");
     layout->addWidget(count_);
     createTools();
@@ -285,7 +290,7 @@ bool EditorTab::closeDocument(int index) {
     if (!ed)
         return false;
     if (ed->isModified()) {
-        switch (ask_(tabs_->tabText(index))) {
+        switch (ask_(documentName(index))) { // the name, not the tab's «name *»
         case CloseChoice::Cancel:
             return false;
         case CloseChoice::Save:

@@ -34,6 +34,9 @@ namespace k528::studio {
 class ScopeView : public QWidget {
     Q_OBJECT
 public:
+    // The dock redraws the live charts at most this often (15 Hz).
+    static constexpr int kLiveIntervalMs = 66;
+
     explicit ScopeView(QWidget* parent = nullptr);
     ~ScopeView() override;
 
