@@ -1012,6 +1012,10 @@
         <source>Programs</source>
         <translation>Программы</translation>
     </message>
+    <message>
+        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
+        <translation>Выберите порт контроллера, скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>
@@ -1211,10 +1215,6 @@
         <translation>L%1 выполняется.</translation>
     </message>
     <message>
-        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
-        <translation>«Пуск» не принят позиционером (деблокировка пуска, сообщения ПЛК).</translation>
-    </message>
-    <message>
         <source>L%1 ended.</source>
         <translation>L%1 закончена.</translation>
     </message>
@@ -1273,6 +1273,38 @@
     <message>
         <source>Stopped by a message at %1</source>
         <translation>Остановлена сообщением в %1</translation>
+    </message>
+    <message>
+        <source>the emergency stop is pressed on the machine's panel</source>
+        <translation>на пульте станка нажат аварийный стоп</translation>
+    </message>
+    <message>
+        <source>the K923 is in %1, not АВТОМАТ</source>
+        <translation>K923 в режиме %1, а не АВТОМАТ</translation>
+    </message>
+    <message>
+        <source>the positioner shows message %1: %2</source>
+        <translation>позиционер выдаёт сообщение %1: %2</translation>
+    </message>
+    <message>
+        <source>the PLC did not pass it on (start enable, the machine's messages)</source>
+        <translation>ПЛК его не передал (деблокировка пуска, сообщения станка)</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</source>
+        <translation>Станок на паузе (Станок &gt; Пауза): запуск продолжится, когда станок пойдёт.</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</source>
+        <translation>Станок на паузе (Станок &gt; Пауза): программа продолжится, когда станок пойдёт.</translation>
+    </message>
+    <message>
+        <source>«Пуск» is held down on the machine's panel: release it, then Run again.</source>
+        <translation>Кнопка «Пуск» на пульте станка нажата: отпустите её и снова нажмите «Выполнить».</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken: %1.</source>
+        <translation>«Пуск» не принят: %1.</translation>
     </message>
 </context>
 <context>
@@ -1607,6 +1639,28 @@
     <message>
         <source>%1: the database already holds these programs (revision %2)</source>
         <translation>%1: в базе уже эти программы (ревизия %2)</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2</source>
+        <translation>ОК заменит строку %1: %2</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2
+Its comment stays: %3</source>
+        <translation>ОК заменит строку %1: %2
+Её комментарий останется: %3</translation>
+    </message>
+    <message>
+        <source>OK inserts a new line after line %1.</source>
+        <translation>ОК вставит новую строку после строки %1.</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master</source>
+        <translation>Строка %1 заменена мастером</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master; its comment kept</source>
+        <translation>Строка %1 заменена мастером; её комментарий сохранён</translation>
     </message>
 </context>
 <context>
@@ -2589,6 +2643,10 @@
         <source>The controller on the link takes no keys: press them on its own K923</source>
         <translation>Контроллер на линии не принимает клавиши: нажимайте их на его собственном К923</translation>
     </message>
+    <message>
+        <source>Debugger</source>
+        <translation>Отладчик</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3010,6 +3068,49 @@
     <message>
         <source>simulated %1</source>
         <translation>имитация %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Workspaces</name>
+    <message>
+        <source>&amp;Workspace</source>
+        <translation>&amp;Рабочее место</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Исходное расположение</translation>
+    </message>
+    <message>
+        <source>The current workspace's docks where they were at first</source>
+        <translation>Панели текущего рабочего места — на исходные места</translation>
+    </message>
+    <message>
+        <source>Workspace: the window arranged for its user</source>
+        <translation>Рабочее место: окно, устроенное для своего пользователя</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Оператор</translation>
+    </message>
+    <message>
+        <source>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</source>
+        <translation>У станка: K923, пульт станка, выполняемая программа, сообщения и оси</translation>
+    </message>
+    <message>
+        <source>Technologist</source>
+        <translation>Технолог</translation>
+    </message>
+    <message>
+        <source>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</source>
+        <translation>Программы: редактор с проблемами и структурой, траектория; отладчик и контроллер — из меню «Вид»</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
+        <translation>Обучение на станке: пульт станка, K923, траектория и осциллограф</translation>
     </message>
 </context>
 <context>

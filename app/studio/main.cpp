@@ -10,6 +10,7 @@
 #include "language.h"
 #include "link_plugins.h"
 #include "main_window.h"
+#include "workspace/workspaces.h"
 #include "profile/builtin.h"
 #include "session/machine_source.h"
 #include "util/version.h"
@@ -36,9 +37,12 @@ int main(int argc, char** argv) {
         "Machine to simulate: a machine of the database, a built-in profile (training-lathe, "
         "grinder-205) or a machine file (default: the last one chosen, else training-lathe).",
         "name|path");
+    QCommandLineOption workspaceOption(
+        "workspace", "Workspace to start in: operator, technologist or training (default: the one left last time).",
+        "name");
     QCommandLineOption pluginsOption("list-plugins",
                                      "List the controller-link plugins found (the Controller menu's) and exit.");
-    cli.addOptions({langOption, profileOption, shotOption, delayOption, pluginsOption});
+    cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, pluginsOption});
     cli.process(app);
     if (cli.isSet(pluginsOption)) {
         for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
@@ -74,6 +78,12 @@ int main(int argc, char** argv) {
     }
     auto* window = new k528::studio::MainWindow(machine);
     window->setAttribute(Qt::WA_DeleteOnClose);
+    if (cli.isSet(workspaceOption) && !window->workspaces()->activate(cli.value(workspaceOption))) {
+        std::fprintf(stderr, "k528studio: unknown workspace '%s' (use operator, technologist or training)\n",
+                     qPrintable(cli.value(workspaceOption)));
+        return 2;
+    }
+    window->placeOnScreen();
     window->show();
 
     if (cli.isSet(shotOption)) {

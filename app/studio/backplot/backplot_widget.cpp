@@ -1,4 +1,5 @@
 #include "backplot/backplot_widget.h"
+#include "workspace/elided_label.h"
 
 #include "backplot/vtk_gl_widget.h"
 
@@ -39,7 +40,7 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     viewCombo_ = new QComboBox(this);
     viewCombo_->setObjectName("backplot.view");
     viewCombo_->addItems({QString(), QString()});
-    pickLabel_ = new QLabel(this);
+    pickLabel_ = new ElidedLabel(this); // cut, not widening the dock
     pickLabel_->setObjectName("backplot.pick");
     top->addWidget(fitButton_);
     top->addWidget(viewCombo_);
@@ -47,13 +48,14 @@ BackplotWidget::BackplotWidget(QWidget* parent)
 
     gl_ = new VtkGlWidget(this);
     gl_->setObjectName("backplot.gl");
-    gl_->setMinimumSize(320, 200);
+    gl_->setMinimumSize(200, 150);
     gl_->renderWindow()->AddRenderer(scene_->renderer());
     style2d_ = vtkInteractorStyleRubberBand2D::New();
     style3d_ = vtkInteractorStyleTrackballCamera::New();
     gl_->interactor()->SetInteractorStyle(style2d_);
 
     outsideTitle_ = new QLabel(this);
+    outsideTitle_->setWordWrap(true);
     outsideList_ = new QListWidget(this);
     outsideList_->setObjectName("backplot.outside");
     auto* side = new QWidget(this);

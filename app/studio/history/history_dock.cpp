@@ -2,7 +2,6 @@
 
 #include "history/history_model.h"
 #include "history/history_service.h"
-#include "scope/dock_place.h"
 #include "session/simulation_session.h"
 
 #include <QCheckBox>
@@ -299,8 +298,7 @@ private:
 QDockWidget* addHistoryDock(QMainWindow* window, SimulationSession& session, const QString& dbPath) {
     auto* dock = new HistoryDock(window, session, dbPath);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; its place is remembered
-    rememberDockPlace(window, dock);
+    dock->hide(); // shown from the View menu; the workspaces place it
     return dock;
 }
 

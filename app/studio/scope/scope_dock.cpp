@@ -1,6 +1,5 @@
 #include "scope/scope_dock.h"
 
-#include "scope/dock_place.h"
 #include "scope/scope_view.h"
 #include "session/simulation_session.h"
 
@@ -41,8 +40,7 @@ private:
 QDockWidget* addScopeDock(QMainWindow* window, SimulationSession& session) {
     auto* dock = new ScopeDock(window, session);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; its place is remembered
-    rememberDockPlace(window, dock);
+    dock->hide(); // shown from the View menu; the workspaces place it
     return dock;
 }
 
