@@ -30,6 +30,8 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QMenu>
+#include <QSignalSpy>
 #include <QtTest>
 
 using namespace k528::studio;
@@ -130,6 +132,83 @@ QStringList tooWide(const QMainWindow& w) {
             out << QStringLiteral("%1 (%2) %3").arg(c->objectName(), QString::fromLatin1(c->metaObject()->className()),
                                                     sizeText(c->minimumSizeHint()));
     }
+    return out;
+}
+
+// A shortcut as Qt's shortcut map holds it: its keys, where it acts and
+// what it is (for the message).
+struct Bound {
+    QKeySequence keys;
+    const QWidget* scope; // nullptr: the whole window
+    bool withChildren;    // the scope's children too (WidgetWithChildrenShortcut)
+    QString what;
+};
+
+// Whether `w` puts an action on screen now: a visible widget of the window,
+// the visible menu bar, or a menu opened from one that is.
+bool liveIn(const QObject* o, const QMainWindow& win, int depth = 0) {
+    if (depth > 8)
+        return false;
+    if (const auto* menu = qobject_cast<const QMenu*>(o)) {
+        for (const QObject* a : menu->menuAction()->associatedObjects())
+            if (liveIn(a, win, depth + 1))
+                return true;
+        return false;
+    }
+    const auto* w = qobject_cast<const QWidget*>(o);
+    return w && w->window() == &win && w->isVisible();
+}
+
+QList<Bound> liveShortcuts(const QMainWindow& win) {
+    QList<Bound> out;
+    for (const QAction* a : win.findChildren<QAction*>()) {
+        const QList<QKeySequence> keys = a->shortcuts();
+        if (keys.isEmpty())
+            continue;
+        const QList<QObject*> where = a->associatedObjects();
+        for (const QObject* o : where) {
+            if (!liveIn(o, win))
+                continue;
+            const auto* w = qobject_cast<const QWidget*>(o);
+            const bool windowWide = a->shortcutContext() == Qt::WindowShortcut ||
+                                    a->shortcutContext() == Qt::ApplicationShortcut || qobject_cast<const QMenu*>(w) ||
+                                    qobject_cast<const QMenuBar*>(w);
+            for (const QKeySequence& k : keys)
+                out.append({k, windowWide ? nullptr : w, a->shortcutContext() == Qt::WidgetWithChildrenShortcut,
+                            QStringLiteral("%1 «%2»").arg(a->objectName(), a->text())});
+            break; // one place is enough: an action is one shortcut
+        }
+    }
+    for (const QShortcut* s : win.findChildren<QShortcut*>()) {
+        const auto* w = qobject_cast<const QWidget*>(s->parent());
+        if (!w || !s->isEnabled() || !liveIn(w, win))
+            continue;
+        const bool windowWide = s->context() == Qt::WindowShortcut || s->context() == Qt::ApplicationShortcut;
+        for (const QKeySequence& k : s->keys())
+            out.append({k, windowWide ? nullptr : w, s->context() == Qt::WidgetWithChildrenShortcut,
+                        QStringLiteral("QShortcut %1 on %2").arg(s->objectName(), w->objectName())});
+    }
+    return out;
+}
+
+// Two shortcuts clash when some focus makes both of them apply.
+bool overlap(const Bound& a, const Bound& b) {
+    if (!a.scope || !b.scope)
+        return true;
+    const auto covers = [](const Bound& outer, const QWidget* w) {
+        return outer.scope == w || (outer.withChildren && outer.scope->isAncestorOf(w));
+    };
+    return covers(a, b.scope) || covers(b, a.scope);
+}
+
+QStringList clashes(const QMainWindow& win) {
+    const QList<Bound> all = liveShortcuts(win);
+    QStringList out;
+    for (int i = 0; i < all.size(); ++i)
+        for (int j = i + 1; j < all.size(); ++j)
+            if (all[i].keys == all[j].keys && overlap(all[i], all[j]))
+                out << QStringLiteral("%1: %2 and %3")
+                           .arg(all[i].keys.toString(), all[i].what, all[j].what);
     return out;
 }
 
@@ -262,6 +341,98 @@ private slots:
         const int key = w.k923()->keyRect(k528::panel::Key::Enter).width();
         w.resizeDocks({w.k923Dock()}, {w.k923Dock()->width() * 2 / 3}, Qt::Horizontal);
         QTRY_VERIFY_WITH_TIMEOUT(w.k923()->keyRect(k528::panel::Key::Enter).width() < key, 5000);
+    }
+
+    // Every action of the window, in every workspace and with every page of
+    // the work area: no shortcut means two actions at once (Qt says
+    // «Ambiguous shortcut overload» and does neither).
+    void oneActionPerShortcutInEachContext() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        int checked = 0;
+        for (const WorkspaceSpec& s : w.workspaces()->specs()) {
+            QVERIFY(w.workspaces()->activate(s.id));
+            settle();
+            for (int page = -1; page < w.workArea()->count(); ++page) {
+                if (page >= 0) {
+                    if (w.workArea()->isHidden())
+                        break;
+                    w.workArea()->setCurrentIndex(page);
+                }
+                // Every dock shown too: their actions join the window's.
+                for (int all = 0; all < 2; ++all) {
+                    if (all)
+                        for (QDockWidget* d : w.findChildren<QDockWidget*>())
+                            d->show();
+                    settle();
+                    const QStringList c = clashes(w);
+                    QVERIFY2(c.isEmpty(), qPrintable(s.id + ": " + c.join("; ")));
+                    checked += static_cast<int>(liveShortcuts(w).size());
+                }
+            }
+            w.workspaces()->resetLayout();
+        }
+        qInfo("%d shortcuts checked", checked);
+        QVERIFY(checked > 20);
+        // The test sees a clash: two window-wide actions on one key.
+        auto* twin = new QAction("twin", &w);
+        twin->setShortcut(w.workspaces()->action("operator")->shortcut());
+        w.addAction(twin);
+        QVERIFY(!clashes(w).isEmpty());
+        delete twin;
+    }
+
+    // Ctrl+S and Ctrl+O in the technologist's editor: the editor's Save and
+    // Open, nothing else.
+    void ctrlSAndCtrlOAreTheEditorsForTheTechnologist() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("part.k528");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("%L1\nM30\n");
+        }
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("technologist"));
+        settle();
+        EditorTab* tab = w.programEditor();
+        QVERIFY(tab->openFile(path));
+        ProgramEditor* ed = tab->currentEditor();
+        ed->setFocus();
+        ed->setCursorPosition(1, 0);
+        QTest::keyClicks(ed, "G1 X5 FX100");
+        QTest::keyClick(ed, Qt::Key_Return);
+        QVERIFY(ed->isModified());
+        QTest::failOnWarning(QRegularExpression("Ambiguous shortcut"));
+        QSignalSpy save(tab->saveAction(), &QAction::triggered);
+        QSignalSpy keep(w.findChild<QAction*>("action.keepInDatabase"), &QAction::triggered);
+        QTest::keyClick(ed, Qt::Key_S, Qt::ControlModifier);
+        QCOMPARE(save.count(), 1);
+        QCOMPARE(keep.count(), 0);
+        QVERIFY(!ed->isModified());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("%L1\nG1 X5 FX100\nM30\n"));
+        // Ctrl+O: the editor's Open (its file dialog, closed here).
+        QSignalSpy open(tab->openAction(), &QAction::triggered);
+        QSignalSpy load(w.findChild<QAction*>("action.loadPrograms"), &QAction::triggered);
+        QTimer::singleShot(300, &w, [] {
+            if (QWidget* m = QApplication::activeModalWidget())
+                m->close();
+        });
+        QTest::keyClick(ed, Qt::Key_O, Qt::ControlModifier);
+        QCOMPARE(open.count(), 1);
+        QCOMPARE(load.count(), 0);
+        // In the operator's workspace they are File's again.
+        QVERIFY(w.workspaces()->activate("operator"));
+        settle();
+        QCOMPARE(w.findChild<QAction*>("action.keepInDatabase")->shortcut(), QKeySequence(QKeySequence::Save));
+        QVERIFY(tab->saveAction()->shortcut().isEmpty());
     }
 
     void eachWorkspaceKeepsItsLayout() {

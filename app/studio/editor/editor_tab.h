@@ -140,6 +140,8 @@ private:
     void fillFileMachineMenu();
     void replaceText(ProgramEditor* ed, const QString& text);
     QString documentName(int index) const;
+    // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
+    static QString commentsOfLine(const QString& line);
 
     SimulationSession* session_ = nullptr;
     QToolBar* toolbar_ = nullptr;
