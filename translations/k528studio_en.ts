@@ -3258,4 +3258,11 @@ Its comment stays: %3</translation>
         <translation>No segment here</translation>
     </message>
 </context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>No OpenGL context for the backplot</translation>
+    </message>
+</context>
 </TS>

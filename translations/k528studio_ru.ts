@@ -3258,4 +3258,11 @@ Its comment stays: %3</source>
         <translation>Здесь нет отрезка</translation>
     </message>
 </context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>Нет контекста OpenGL для траектории</translation>
+    </message>
+</context>
 </TS>
