@@ -198,6 +198,10 @@
         <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
         <translation>Not saved: %1 was changed in the database since revision %2 was opened (%3)</translation>
     </message>
+    <message>
+        <source>%1 is the database this window uses: it is not read as a program</source>
+        <translation>%1 is the database this window uses: it is not read as a program</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -1641,6 +1645,14 @@
         <translation>%1: the database already holds these programs (revision %2)</translation>
     </message>
     <message>
+        <source>%1 is the database this window uses: it is not opened as a program</source>
+        <translation>%1 is the database this window uses: it is not opened as a program</translation>
+    </message>
+    <message>
+        <source>%1 is the database this window uses: a program is not written over it</source>
+        <translation>%1 is the database this window uses: a program is not written over it</translation>
+    </message>
+    <message>
         <source>OK replaces line %1: %2</source>
         <translation>OK replaces line %1: %2</translation>
     </message>
@@ -3064,6 +3076,41 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopDatabase</name>
+    <message>
+        <source>permission denied</source>
+        <translation>permission denied</translation>
+    </message>
+    <message>
+        <source>no permission to create files in its folder</source>
+        <translation>no permission to create files in its folder</translation>
+    </message>
+    <message>
+        <source>read-only file system</source>
+        <translation>read-only file system</translation>
+    </message>
+    <message>
+        <source>opened read-only</source>
+        <translation>opened read-only</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); nothing was written.</source>
+        <translation>The database is read-only: %1 (%2); nothing was written.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); a new database cannot be created there.</source>
+        <translation>The database is read-only: %1 (%2); a new database cannot be created there.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
+        <translation>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
+        <translation>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
@@ -3209,6 +3256,13 @@ Its comment stays: %3</translation>
     <message>
         <source>No segment here</source>
         <translation>No segment here</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>No OpenGL context for the backplot</translation>
     </message>
 </context>
 </TS>

@@ -198,6 +198,10 @@
         <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
         <translation>Не сохранено: %1 изменён в базе после того, как была открыта ревизия %2 (%3)</translation>
     </message>
+    <message>
+        <source>%1 is the database this window uses: it is not read as a program</source>
+        <translation>%1 — база данных, с которой работает это окно: как программа она не читается</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -1641,6 +1645,14 @@
         <translation>%1: в базе уже эти программы (ревизия %2)</translation>
     </message>
     <message>
+        <source>%1 is the database this window uses: it is not opened as a program</source>
+        <translation>%1 — база данных, с которой работает это окно: как программа она не открывается</translation>
+    </message>
+    <message>
+        <source>%1 is the database this window uses: a program is not written over it</source>
+        <translation>%1 — база данных, с которой работает это окно: программа поверх неё не записывается</translation>
+    </message>
+    <message>
         <source>OK replaces line %1: %2</source>
         <translation>ОК заменит строку %1: %2</translation>
     </message>
@@ -3064,6 +3076,41 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopDatabase</name>
+    <message>
+        <source>permission denied</source>
+        <translation>нет права на запись</translation>
+    </message>
+    <message>
+        <source>no permission to create files in its folder</source>
+        <translation>нет права создавать файлы в её папке</translation>
+    </message>
+    <message>
+        <source>read-only file system</source>
+        <translation>файловая система только для чтения</translation>
+    </message>
+    <message>
+        <source>opened read-only</source>
+        <translation>открыта только для чтения</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); nothing was written.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); ничего не записано.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); a new database cannot be created there.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); создать там новую базу данных нельзя.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); её схема старше схемы этой программы, и обновить её нельзя.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); в ней незавершённая транзакция, откатить которую может только пользователь с правом записи.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
@@ -3209,6 +3256,13 @@ Its comment stays: %3</source>
     <message>
         <source>No segment here</source>
         <translation>Здесь нет отрезка</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>Нет контекста OpenGL для траектории</translation>
     </message>
 </context>
 </TS>

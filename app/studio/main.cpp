@@ -6,8 +6,14 @@
 #include <QEvent>
 #include <QTimer>
 #include <cstdio>
+#include <memory>
 
 #include "backplot/vtk_gl_widget.h"
+#include "editor/debug_panel.h"
+#include "editor/debug_session.h"
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "session/simulation_session.h"
 #include "language.h"
 #include "link_plugins.h"
 #include "main_window.h"
@@ -46,7 +52,13 @@ int main(int argc, char** argv) {
                        "(bench/studio_startup measures the start with it).");
     QCommandLineOption pluginsOption("list-plugins",
                                      "List the controller-link plugins found (the Controller menu's) and exit.");
-    cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, firstFrameOption, pluginsOption});
+    QCommandLineOption runOption("run",
+                                 "Open a program file in the editor and run its first program on the "
+                                 "simulated machine, as the debugger's Run does (drives on, homing, "
+                                 "AUTOMATIC, Start).",
+                                 "file.k528");
+    cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, firstFrameOption, pluginsOption,
+                    runOption});
     cli.process(app);
     if (cli.isSet(pluginsOption)) {
         for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
@@ -109,6 +121,29 @@ int main(int argc, char** argv) {
     }
     window->show();
 
+    if (cli.isSet(runOption)) {
+        const QString file = cli.value(runOption);
+        QTimer::singleShot(0, window, [window, file] {
+            k528::studio::EditorTab* editor = window->programEditor();
+            k528::studio::DebugPanel* debug = editor->debugPanel();
+            if (!editor->openFile(file) || !debug || !debug->run()) {
+                std::fprintf(stderr, "k528studio: --run: %s cannot be run (see the status bar)\n",
+                             qPrintable(file));
+                return;
+            }
+            // Said once the program is under way (bench/studio_cpu.cpp waits for it).
+            k528::studio::DebugSession* session = debug->debugger();
+            auto said = std::make_shared<bool>(false);
+            QObject::connect(session, &k528::studio::DebugSession::changed, window, [session, said] {
+                if (!*said && session->phase() == k528::studio::DebugSession::Phase::Active) {
+                    *said = true;
+                    std::fprintf(stderr, "k528studio: --run: L%d runs\n",
+                                 session->session()->controller().programView().program);
+                    std::fflush(stderr);
+                }
+            });
+        });
+    }
     if (cli.isSet(shotOption)) {
         const QString file = cli.value(shotOption);
         QTimer::singleShot(cli.value(delayOption).toInt(), &app, [file] {

@@ -63,6 +63,7 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     setCentralWidget(workArea_);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     session_ = new SimulationSession(machine_.profile, this);
+    session_->watchInput(); // an input wakes the idle machine's frames (simulation_session.h)
     simController_ = new SimulatedController(*session_, this);
     viewed_ = simController_;
     programMonitor_ = new ProgramMonitor(*viewed_, workArea_);

@@ -1,8 +1,7 @@
 #include "engine/interpreter.h"
 
 #include "engine/coordinates.h"
-#include "engine/debug_gate.h"
-#include "engine/preview.h"
+#include "engine/program_output.h"
 
 #include "program/refusals.h"
 
@@ -120,8 +119,7 @@ void Interpreter::start(int number, int cycle, Mode mode) {
     }
     c_.r.set(r::CurrentProgram, number);
     updateNumbers();
-    if (c_.debug && !c_.preview)
-        c_.debug->started();
+    c_.out->started();
     if (prog_)
         if (const int dup = duplicateFrameLine(*prog_)) {
             line_ = dup;
@@ -138,8 +136,7 @@ void Interpreter::resume() {
     } else {
         return;
     }
-    if (c_.debug)
-        c_.debug->resumed(); // a frame the gate held runs now
+    c_.out->resumed(); // a frame the debugger held runs now
     // Axes a mode change took from the program come back to it.
     for (std::size_t a = 0; a < c_.axes.size(); ++a) {
         AxisUnit& u = c_.axes[a];
@@ -356,8 +353,10 @@ void Interpreter::beginIso(const program::Frame& f) {
     c_.programExclusion = exclusionOfG(m.components);
     for (AxisUnit& u : c_.axes)
         u.noOverride = modal_.noOverrideAxis == u.index;
-    if (iso.message)
+    if (iso.message) {
         c_.messageNumber = iso.message->number;
+        c_.out->message(frameRef(), c_.messageNumber);
+    }
     const std::optional<program::Value>* feeds[2] = {&iso.fx, &iso.fz};
     for (int a = 0; a < kAxisCount; ++a) {
         const auto& fv = *feeds[a];
@@ -406,9 +405,9 @@ void Interpreter::beginIso(const program::Frame& f) {
     mEnd_ = m2 || m30;
     m17_ = m17;
     callTarget_ = call ? iso.call->number : 0;
-    c_.mhs.begin(m_.data(), mCount_, c_.nowMs);
-    // Preview: M functions are acknowledged at once.
-    step_ = mCount_ > 0 && !c_.preview ? Step::Handshake : Step::OscStop;
+    step_ = c_.out->mFunctions(frameRef(), std::span<const int>(m_.data(), static_cast<std::size_t>(mCount_)))
+                ? Step::Handshake
+                : Step::OscStop;
     if (step_ == Step::OscStop)
         for (int a = 0; a < kAxisCount; ++a)
             if (oscStop_[static_cast<std::size_t>(a)])
@@ -441,9 +440,8 @@ bool Interpreter::startMove(int a, std::int64_t targetDisc, bool handwheel, int 
         u.wheelMin = std::min(from, t);
         u.wheelMax = std::max(from, t);
         u.rapid = false;
-        if (c_.preview)
-            previewMove(u, from, t, u.k.speedParamToInternalPerMs(u.k.feedAutoMax));
-        return true;
+        return c_.out->move(u, from, t, u.k.speedParamToInternalPerMs(u.k.feedAutoMax), feedOf(a),
+                            true);
     }
     const double maxSpeed = u.k.speedParamToInternalPerMs(u.k.feedAutoMax);
     double speed = maxSpeed;
@@ -459,9 +457,7 @@ bool Interpreter::startMove(int a, std::int64_t targetDisc, bool handwheel, int 
         error(forAxis(33, a)); // F УСК.АВТ. = 0: the axis cannot move in a program
         return false;
     }
-    if (c_.preview) {
-        previewMove(u, from, t, speed);
-    } else if (!u.servo.moveTo(t, speed)) {
+    if (!c_.out->move(u, from, t, speed, feedOf(a), false)) {
         const int f = axis::faultMessage(u.servo.fault(), u.id);
         error(f ? f : forAxis(1, a));
         return false;
@@ -523,25 +519,11 @@ bool Interpreter::startOscillation(int a, const std::optional<program::Value>& s
         error(forAxis(33, a));
         return false;
     }
-    if (c_.preview) { // the strokes are drawn, the axis stays where it is
-        PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
-        m.moves = true;
-        m.fromDisc = m.toDisc = u.toDisc(cur);
-        m.oscLoDisc = u.toDisc(lo);
-        m.oscHiDisc = u.toDisc(hi);
-        m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
-        m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
-        m.feedDiscPerMin = static_cast<double>(feed);
-        previewFrame_.kind = PreviewKind::Oscillation;
-        return true;
-    }
-    if (!osc.start(u.servo, lo, hi, speed, towardsHi, presets(a))) {
+    if (!c_.out->oscillate(u, osc, lo, hi, speed, towardsHi, presets(a), feed)) {
         const int f = axis::faultMessage(u.servo.fault(), u.id);
         error(f ? f : forAxis(1, a));
         return false;
     }
-    u.owner = MotionOwner::Oscillation;
-    u.rapid = false;
     return true;
 }
 
@@ -568,19 +550,19 @@ void Interpreter::actions() {
         }
         c_.r.set(r::ZeroOffsetX + a, static_cast<std::int32_t>(zo));
     }
-    if (c_.preview)
-        previewFrame_ = PreviewFrame{};
+    c_.out->motionBegins();
     // Gx81
     for (int a = 0; a < kAxisCount; ++a)
         if (oscStart_[static_cast<std::size_t>(a)] && !startOscillation(a, a == 0 ? iso.x : iso.z))
             return;
     // G04
-    if (dwell_ && dwellLeftMs_ > 0 && c_.preview) {
-        c_.preview->dwell(PreviewDwell{program(), line_, frameNumber(), dwellLeftMs_});
-        dwellLeftMs_ = -1; // no waiting
-    } else if (dwell_ && dwellLeftMs_ > 0) {
-        dwellFresh_ = true;
-        c_.state = ProgramState::Dwell;
+    if (dwell_ && dwellLeftMs_ > 0) {
+        if (c_.out->dwell(frameRef(), dwellLeftMs_)) {
+            dwellFresh_ = true;
+            c_.state = ProgramState::Dwell;
+        } else {
+            dwellLeftMs_ = -1; // no waiting
+        }
     }
     // Motion of X and Z.
     for (int a = 0; a < kAxisCount; ++a) {
@@ -596,41 +578,12 @@ void Interpreter::actions() {
             return;
         }
     }
-    if (c_.preview && (previewFrame_.axes[0].moves || previewFrame_.axes[1].moves)) {
-        for (int a = 0; a < kAxisCount; ++a) { // where the other axis stands (after a Gx92, too)
-            PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
-            const AxisUnit& u = c_.axes[static_cast<std::size_t>(a)];
-            if (m.moves || !u.present)
-                continue;
-            m.fromDisc = m.toDisc = u.toDisc(u.servo.target());
-            m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
-        }
-        previewFrame_.program = program();
-        previewFrame_.line = line_;
-        previewFrame_.n = frameNumber();
-        previewFrame_.wheelDiameterDisc = c_.r.get(r::WheelCurrent);
-        if (previewFrame_.kind != PreviewKind::Oscillation) {
-            const bool wheel = wheel_[0] || wheel_[1];
-            const bool signal = erase_[0] > 0 || erase_[1] > 0;
-            previewFrame_.kind = wheel    ? PreviewKind::Handwheel
-                                 : signal ? PreviewKind::Signal
-                                 : modal_.rapid ? PreviewKind::Rapid
-                                                : PreviewKind::Feed;
-        }
-        c_.preview->motion(previewFrame_);
-    }
-}
-
-void Interpreter::previewMove(AxisUnit& u, double from, double to, double speed) {
-    PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(u.index)];
-    m.moves = true;
-    m.fromDisc = u.toDisc(from);
-    m.toDisc = u.toDisc(to);
-    m.offsetDisc = activeOffset(components(c_.r, u.index), c_.programExclusion);
-    m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
-    const std::int64_t feed = modal_.feed[static_cast<std::size_t>(u.index)];
-    m.feedDiscPerMin = modal_.rapid || feed < 0 ? -1.0 : static_cast<double>(feed);
-    u.servo.place(to);
+    const bool wheel = wheel_[0] || wheel_[1];
+    const bool signal = erase_[0] > 0 || erase_[1] > 0;
+    c_.out->motionEnds(frameRef(), wheel    ? PreviewKind::Handwheel
+                                   : signal ? PreviewKind::Signal
+                                   : modal_.rapid ? PreviewKind::Rapid
+                                                  : PreviewKind::Feed);
 }
 
 bool Interpreter::waitDone() {
@@ -676,13 +629,13 @@ bool Interpreter::waitDone() {
 }
 
 void Interpreter::afterFrame() {
-    if (m00_ && c_.preview)
-        m00_ = false; // preview: «Пуск» at once
     if (m00_) {
         m00_ = false;
-        c_.state = ProgramState::M0;
-        step_ = Step::Call;
-        return;
+        if (c_.out->stopAtM00()) {
+            c_.state = ProgramState::M0;
+            step_ = Step::Call;
+            return;
+        }
     }
     if (mEnd_) {
         endProgram();
@@ -752,7 +705,7 @@ void Interpreter::tick() {
                 ++index_; // «/ – кадр не будет обрабатываться»
                 break;
             }
-            if (c_.debug && !c_.preview && c_.debug->beforeFrame(program(), index_, f.span.line)) {
+            if (c_.out->holdBefore(program(), index_, f.span.line)) {
                 // The debugger's stop before the frame: held as by «Стоп», «Пуск» runs it.
                 c_.resumeState = ProgramState::Running;
                 c_.state = ProgramState::Interrupted;

@@ -21,6 +21,7 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace k528::studio::backplot {
@@ -104,6 +105,13 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     layout->addWidget(split, 1);
     layout->addLayout(bottom);
 
+    liveTimer_ = new QTimer(this);
+    liveTimer_->setSingleShot(true);
+    connect(liveTimer_, &QTimer::timeout, this, [this] {
+        scene_->refreshTool(pw_, ph_);
+        sinceLiveRender_.restart();
+        gl_->requestRender();
+    });
     timer_ = new QTimer(this);
     timer_->setInterval(kTickMs);
     connect(timer_, &QTimer::timeout, this, &BackplotWidget::tickPlayback);
@@ -241,12 +249,12 @@ void BackplotWidget::updateOutsideList() {
 void BackplotWidget::fit() {
     userMoved_ = false;
     scene_->fit(pw_, ph_);
-    gl_->update();
+    gl_->requestRender();
 }
 
 void BackplotWidget::refresh() {
     scene_->refresh(pw_, ph_);
-    gl_->update();
+    gl_->requestRender();
 }
 
 void BackplotWidget::setViewMode(k528::backplot::ViewMode m) {
@@ -311,8 +319,11 @@ void BackplotWidget::appendLive(const toolpath::ActualPath& path, std::size_t fr
                                 const std::optional<k528::backplot::BackplotScene::LiveTool>& tool) {
     scene_->appendActual(&path, from);
     scene_->setLiveTool(tool);
-    scene_->refreshTool(pw_, ph_);
-    gl_->update();
+    // Rendered at most every kLiveIntervalMs: the latest batch then.
+    if (liveTimer_->isActive())
+        return;
+    const qint64 since = sinceLiveRender_.isValid() ? sinceLiveRender_.elapsed() : kLiveIntervalMs;
+    liveTimer_->start(static_cast<int>(std::max<qint64>(0, kLiveIntervalMs - since)));
 }
 
 QString BackplotWidget::pickText() const {

@@ -7,6 +7,7 @@
 #include "editor/program_editor.h"
 #include "language.h"
 #include "session/program_loader.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
 #include "workspace/elided_label.h"
 
@@ -223,6 +224,10 @@ bool EditorTab::openFile(const QString& path) {
             tabs_->setCurrentIndex(i);
             return true;
         }
+    if (ShopDatabase::isOpenDatabaseFile(abs.toStdString())) {
+        emit statusMessage(tr("%1 is the database this window uses: it is not opened as a program").arg(abs));
+        return false;
+    }
     QFile f(abs);
     if (!f.open(QIODevice::ReadOnly)) {
         emit statusMessage(tr("%1 cannot be read: %2").arg(abs, f.errorString()));
@@ -245,6 +250,10 @@ bool EditorTab::saveTo(int index, const QString& path) {
     ProgramEditor* ed = editorAt(index);
     if (!ed)
         return false;
+    if (ShopDatabase::isOpenDatabaseFile(path.toStdString())) {
+        emit statusMessage(tr("%1 is the database this window uses: a program is not written over it").arg(path));
+        return false;
+    }
     const QString old = pathOf(index);
     if (!old.isEmpty())
         watcher_.removePath(old);

@@ -150,6 +150,8 @@ void PendantButton::setLegend(const QString& legend) {
 }
 
 void PendantButton::setSymbol(const QString& symbol) {
+    if (symbol == symbol_)
+        return;
     symbol_ = symbol;
     update();
 }
@@ -421,6 +423,8 @@ void HandwheelDial::setDetentsPerTurn(int n) {
 }
 
 void HandwheelDial::setEnabledLook(bool active) {
+    if (active == active_)
+        return;
     active_ = active;
     update();
 }

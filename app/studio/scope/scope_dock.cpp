@@ -4,6 +4,10 @@
 #include "session/simulation_session.h"
 
 #include <QDockWidget>
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <algorithm>
 #include <QEvent>
 #include <QMainWindow>
 
@@ -18,7 +22,19 @@ public:
         setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
         auto* view = new ScopeView(this);
         view->attach(session.simulation());
-        connect(&session, &SimulationSession::advanced, view, &ScopeView::refresh);
+        // The charts live at most at kLiveIntervalMs (a trailing frame
+        // draws what the last one skipped).
+        pending_.setSingleShot(true);
+        connect(&pending_, &QTimer::timeout, view, [this, view] {
+            sinceDraw_.restart();
+            view->refresh();
+        });
+        connect(&session, &SimulationSession::advanced, view, [this] {
+            if (pending_.isActive())
+                return;
+            const qint64 since = sinceDraw_.isValid() ? sinceDraw_.elapsed() : ScopeView::kLiveIntervalMs;
+            pending_.start(static_cast<int>(std::max<qint64>(0, ScopeView::kLiveIntervalMs - since)));
+        });
         connect(&session, &QObject::destroyed, view, [view] { view->forget(); });
         setWidget(view);
         retranslate();
@@ -33,6 +49,8 @@ protected:
 
 private:
     void retranslate() { setWindowTitle(ScopeView::tr("Oscilloscope")); }
+    QTimer pending_;
+    QElapsedTimer sinceDraw_;
 };
 
 } // namespace

@@ -268,6 +268,10 @@ void ScopeView::refresh() {
             return;
         }
     }
+    // Hidden (the dock closed): the triggers keep watching, the picture
+    // is drawn when it shows again (showEvent).
+    if (!isVisible())
+        return;
     if (buffer_.size() == 0) {
         draw(-windowS_ * 1000, 0, 0);
         return;
@@ -362,6 +366,11 @@ bool ScopeView::eventFilter(QObject* o, QEvent* e) {
                 showCursor(a, v.x());
             }
     return QWidget::eventFilter(o, e);
+}
+
+void ScopeView::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    refresh();
 }
 
 void ScopeView::changeEvent(QEvent* e) {
