@@ -448,6 +448,26 @@ private slots:
         QVERIFY(tab->saveAction()->shortcut().isEmpty());
     }
 
+    // A workspace chosen before the window is shown (--workspace) leaves no
+    // layout of the first choice behind: that one is laid out anew at the
+    // window's size when the user goes to it (the editor kept its room).
+    void aLayoutNeverShownIsNotKept() {
+        MainWindow w;
+        const QString first = w.workspaces()->current();
+        const QString other = first == "operator" ? "technologist" : "operator";
+        QVERIFY(w.workspaces()->activate(other));
+        QVERIFY(!QSettings().contains("workspaces/" + first + "/state"));
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("technologist"));
+        settle();
+        auto* backplot = w.findChild<QDockWidget*>("dock.backplot");
+        const double share = double(backplot->width()) / w.width();
+        QVERIFY2(share > 0.3 && share < 0.46, qPrintable(QString::number(share)));
+        QVERIFY(w.workArea()->width() > backplot->width());
+    }
+
     void eachWorkspaceKeepsItsLayout() {
         {
             MainWindow w;
