@@ -35,13 +35,29 @@ bool ControllerImage::pcReady() const {
            !engine::programActive(ctl_.state());
 }
 
+bool ControllerImage::writing() const {
+    return phase_ == Phase::WritingProgram || phase_ == Phase::WritingMessages || phase_ == Phase::StagingC ||
+           phase_ == Phase::StagingR;
+}
+
 void ControllerImage::checkStillReady() {
-    // Leaving F7 drops a text being written: nothing of it is stored.
-    if ((phase_ == Phase::WritingProgram || phase_ == Phase::WritingMessages) && !pcReady()) {
+    // Leaving F7 drops a text being written or a staged block: nothing of it is stored.
+    if (writing() && !pcReady()) {
         phase_ = Phase::Idle;
         text_.clear();
+        stage_.clear();
         status_ = TransferStatus::NotInF7;
     }
+}
+
+std::vector<std::uint16_t> ControllerImage::rRegisters() const {
+    std::vector<std::uint16_t> regs;
+    regs.reserve(2 * static_cast<std::size_t>(map_.rCount));
+    for (int i = 0; i < map_.rCount; ++i) {
+        regs.push_back(lowWord(ctl_.r(i)));
+        regs.push_back(highWord(ctl_.r(i)));
+    }
+    return regs;
 }
 
 Exception ControllerImage::read(int first, int count, std::vector<std::uint16_t>& out) {
@@ -187,7 +203,8 @@ Exception ControllerImage::writeC(int first, std::span<const std::uint16_t> valu
     if (!pcReady())
         return Exception::NotReady;
     const Block& cb = map_.block(BlockKind::C);
-    std::vector<std::uint16_t> regs = packC(map_, ctl_.c());
+    const bool staged = phase_ == Phase::StagingC;
+    std::vector<std::uint16_t> regs = staged ? stage_ : packC(map_, ctl_.c());
     std::copy(values.begin(), values.end(), regs.begin() + (first - cb.first));
     const std::vector<std::int64_t> c = unpackC(map_, regs);
     // A bit or byte the map does not place must stay 0: repacking gives the
@@ -197,6 +214,10 @@ Exception ControllerImage::writeC(int first, std::span<const std::uint16_t> valu
     for (int n = 1; n < static_cast<int>(c.size()); ++n)
         if (!profile::checkCValue(n, c[static_cast<std::size_t>(n)]).empty())
             return Exception::IllegalValue;
+    if (staged) { // held until the commit
+        stage_ = std::move(regs);
+        return Exception::None;
+    }
     return ctl_.loadCParameters(c).ok() ? Exception::None : Exception::IllegalValue;
 }
 
@@ -205,8 +226,15 @@ Exception ControllerImage::writeR(int first, std::span<const std::uint16_t> valu
         return Exception::NotReady;
     const int last = first + static_cast<int>(values.size()) - 1;
     const int firstR = (first - map_.rFirst) / 2, lastR = (last - map_.rFirst) / 2;
-    if (lastR > map_.rWritableLast)
-        return Exception::IllegalAddress;
+    // Every R the request touches must be one the PC may write (R0..R231
+    // but the positioner's own R158, R222, R223).
+    for (int i = firstR; i <= lastR; ++i)
+        if (!map_.rWritable(i))
+            return Exception::IllegalAddress;
+    if (phase_ == Phase::StagingR) { // held until the commit
+        std::copy(values.begin(), values.end(), stage_.begin() + (first - map_.rFirst));
+        return Exception::None;
+    }
     std::vector<std::int32_t> v;
     for (int i = firstR; i <= lastR; ++i) {
         const int lo = map_.rRegister(i), hi = lo + 1;
@@ -260,12 +288,14 @@ Exception ControllerImage::writeTransfer(int first, std::span<const std::uint16_
     }
     if (has(T.command)) {
         const std::uint16_t cmd = val(T.command);
-        if (cmd < 1 || cmd > 7)
+        if (cmd < 1 || cmd > kLastCommand)
             return Exception::IllegalValue;
-        const bool needsPc = cmd == 2 || cmd == 4 || cmd == 5 || cmd == 7;
-        if (needsPc && !pcReady())
+        const bool needsPc = cmd == 2 || cmd == 4 || cmd == 5 || cmd >= 7;
+        if (needsPc && !pcReady()) {
+            status_ = TransferStatus::NotInF7; // for a client that reads the status
             return Exception::NotReady;
-        if (cmd == 5 && phase_ != Phase::WritingProgram && phase_ != Phase::WritingMessages)
+        }
+        if (cmd == 5 && !writing())
             return Exception::IllegalValue;
     }
     // Apply: registers first, the command last.
@@ -296,6 +326,8 @@ Exception ControllerImage::writeTransfer(int first, std::span<const std::uint16_
 
 Exception ControllerImage::command(std::uint16_t cmd) {
     errorLine_ = 0;
+    if (cmd != static_cast<std::uint16_t>(TransferCommand::Commit))
+        stage_.clear(); // any other command ends a staged block (begin writing it again)
     switch (static_cast<TransferCommand>(cmd)) {
     case TransferCommand::ReadProgram: {
         const program::Program* p = ctl_.programs().find(programNumber_);
@@ -339,6 +371,7 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     case TransferCommand::Abort:
         phase_ = Phase::Idle;
         text_.clear();
+        stage_.clear();
         status_ = TransferStatus::Idle;
         return Exception::None;
     case TransferCommand::DeleteProgram: {
@@ -358,6 +391,28 @@ Exception ControllerImage::command(std::uint16_t cmd) {
         status_ = TransferStatus::Committed;
         return Exception::None;
     }
+    case TransferCommand::ClearC:
+    case TransferCommand::ClearR: {
+        phase_ = Phase::Idle;
+        text_.clear();
+        stage_.clear();
+        const engine::OpResult r =
+            cmd == 8 ? ctl_.clearCParameters() : ctl_.clearRParameters();
+        if (!r.ok()) {
+            status_ = TransferStatus::NotInF7;
+            return Exception::None;
+        }
+        ++commits_;
+        status_ = TransferStatus::Committed;
+        return Exception::None;
+    }
+    case TransferCommand::StageC:
+    case TransferCommand::StageR:
+        text_.clear();
+        stage_ = cmd == 10 ? packC(map_, ctl_.c()) : rRegisters();
+        phase_ = cmd == 10 ? Phase::StagingC : Phase::StagingR;
+        status_ = TransferStatus::Ready;
+        return Exception::None;
     }
     length_ = static_cast<std::uint32_t>(text_.size());
     crc_ = crc32(text_);
@@ -366,7 +421,42 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     return Exception::None;
 }
 
+void ControllerImage::commitBlock() {
+    const BlockKind kind = phase_ == Phase::StagingC ? BlockKind::C : BlockKind::R;
+    const std::vector<std::uint16_t> whole = std::move(stage_);
+    phase_ = Phase::Idle;
+    stage_.clear();
+    const std::vector<std::uint16_t> sent = stagedRegisters(map_, kind, whole);
+    if (sent.size() != length_ || registersCrc(sent) != crc_) {
+        status_ = TransferStatus::CrcMismatch;
+        return;
+    }
+    if (kind == BlockKind::C) {
+        if (!ctl_.loadCParameters(unpackC(map_, whole)).ok()) { // checked as written: only F7 can fail
+            status_ = TransferStatus::NotInF7;
+            return;
+        }
+    } else {
+        if (engine::executing(ctl_.state())) {
+            status_ = TransferStatus::NotInF7;
+            return;
+        }
+        for (int i = 0; i < map_.rCount; ++i)
+            if (map_.rWritable(i)) {
+                const std::int32_t v = joinSigned(whole[2 * static_cast<std::size_t>(i)], whole[2 * static_cast<std::size_t>(i) + 1]);
+                if (v != ctl_.r(i))
+                    (void)ctl_.setR(i, v); // a writable number, a 32-bit value, no program executing: accepted
+            }
+    }
+    ++commits_;
+    status_ = TransferStatus::Committed;
+}
+
 void ControllerImage::commit() {
+    if (phase_ == Phase::StagingC || phase_ == Phase::StagingR) {
+        commitBlock();
+        return;
+    }
     const bool messages = phase_ == Phase::WritingMessages;
     const std::string text = std::move(text_);
     const int number = transferProgram_;

@@ -4,12 +4,14 @@
 // the in-process transport of the tests does the same without a port.
 //
 // The F7 rule: a write of C- or R-parameters, and the commands that change
-// memory (begin writing, delete), need the controller ready for the PC —
-// УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ» on the K923 (the owner says so with
-// setPcReady; without it, the mode F7 with no program active) — else
-// exception 06. The transfer state machine keeps one text at a time; a
-// written text is parsed and checked with the controller's own rules at
-// commit and stored all or nothing.
+// memory (begin writing, delete, clear, stage a block), need the controller
+// ready for the PC — УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ» on the K923 (the
+// owner says so with setPcReady; without it, the mode F7 with no program
+// active) — else exception 06 (and status 16 for a command). The transfer
+// state machine keeps one transfer at a time: a text (a program, the
+// messages) or a staged block (C, R). A written text is parsed and checked
+// with the controller's own rules at commit and stored all or nothing; a
+// staged block is checked as it is written and goes in whole at commit.
 #pragma once
 
 #include "link/register_map.h"
@@ -55,7 +57,12 @@ enum class TransferCommand : std::uint16_t {
     Commit = 5,
     Abort = 6,
     DeleteProgram = 7,
+    ClearC = 8,      // manual 2.6.8 «ОЧИСТКА С-ПАРАМ»
+    ClearR = 9,      // «ОЧИСТКА Р-ПАРАМ»
+    StageC = 10,     // begin writing the C block: its writes are held until commit
+    StageR = 11,     // the same for the writable R-parameters
 };
+inline constexpr std::uint16_t kLastCommand = 11;
 
 class ControllerImage {
 public:
@@ -84,9 +91,12 @@ private:
     Exception writeTransfer(int first, std::span<const std::uint16_t> values);
     Exception command(std::uint16_t cmd);
     void commit();
+    void commitBlock();
     void checkStillReady();
+    bool writing() const;
+    std::vector<std::uint16_t> rRegisters() const; // the whole R block as it is
 
-    enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages };
+    enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages, StagingC, StagingR };
 
     engine::Controller& ctl_;
     const RegisterMap& map_;
@@ -98,6 +108,7 @@ private:
     std::uint32_t length_ = 0, crc_ = 0, offset_ = 0;
     int transferProgram_ = 0; // the program of the transfer under way
     std::string text_;        // read: the controller's text; write: the bytes received
+    std::vector<std::uint16_t> stage_; // StagingC / StagingR: the whole block as it will be
     int commits_ = 0;
 };
 

@@ -242,7 +242,19 @@ private slots:
         const std::uint16_t neg[] = {0xFFFF, 0xFFFF};
         QVERIFY(im.write(5002, neg) == Exception::None);
         QCOMPARE(b.ctl->r(1), -1);
-        QVERIFY(im.write(5300, one) == Exception::IllegalAddress); // R150 is not the PC's
+        // R0..R231 are the PC's but R158, R222, R223 (the positioner's own); R232.. read only.
+        QVERIFY(im.write(5300, one) == Exception::None); // R150
+        QCOMPARE(b.ctl->r(150), 7);
+        const std::uint16_t r221[] = {9, 0};
+        QVERIFY(im.write(5442, r221) == Exception::None);
+        QCOMPARE(b.ctl->r(221), 9);
+        QVERIFY(im.write(5316, one) == Exception::IllegalAddress); // R158
+        QVERIFY(im.write(5444, one) == Exception::IllegalAddress); // R222
+        QVERIFY(im.write(5446, one) == Exception::IllegalAddress); // R223
+        QVERIFY(im.write(5464, one) == Exception::IllegalAddress); // R232
+        const std::uint16_t across[] = {1, 0, 2, 0, 3, 0}; // R157..R159: R158 inside, nothing written
+        QVERIFY(im.write(5314, across) == Exception::IllegalAddress);
+        QCOMPARE(b.ctl->r(157), 0);
         // A constant out of range: 03 and nothing of the request written.
         QVERIFY(im.read(4100, 117, out) == Exception::None);
         const std::vector<std::uint16_t> before = out;
@@ -260,7 +272,7 @@ private slots:
         QVERIFY(im.write(4110, ks) == Exception::None);
         QCOMPARE(b.ctl->c()[26], b.prof.c[26] + 1);
         // Command values and commit without a text: 03.
-        const std::uint16_t bad[] = {9};
+        const std::uint16_t bad[] = {12};
         QVERIFY(im.write(7000, bad) == Exception::IllegalValue);
         const std::uint16_t commit[] = {5};
         QVERIFY(im.write(7000, commit) == Exception::IllegalValue);
@@ -317,7 +329,7 @@ private slots:
             QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], a.ctl->c()[static_cast<std::size_t>(n)]);
         for (const auto& [n, text] : pulled.programs)
             QCOMPARE(b.programText(n), text);
-        QCOMPARE(b.image->commits(), static_cast<int>(file.programs.size()) + (file.messages.empty() ? 0 : 1));
+        QCOMPARE(b.image->commits(), 2 + static_cast<int>(file.programs.size()) + (file.messages.empty() ? 0 : 1)); // C, R, texts
     }
 
     void badConstantIsNotSent() {
@@ -420,6 +432,245 @@ private slots:
         Link link(t);
         QVERIFY(!writeText(link, false, n, text));
         QCOMPARE(b.programText(n), text);
+    }
+    void stagedBlocksGoInWhole() {
+        Bench b;
+        b.f7();
+        ControllerImage& im = *b.image;
+        const RegisterMap& map = k528Map();
+        std::vector<std::uint16_t> whole(600, 0);
+        auto setR = [&](int n, std::int32_t v) {
+            whole[2 * static_cast<std::size_t>(n)] = lowWord(v);
+            whole[2 * static_cast<std::size_t>(n) + 1] = highWord(v);
+        };
+        setR(5, 55);
+        setR(200, 2000);
+        setR(231, -3);
+        const std::vector<std::uint16_t> sent = stagedRegisters(map, BlockKind::R, whole);
+        QCOMPARE(sent.size(), std::size_t{2 * (232 - 3)});
+        auto head = [&](std::uint32_t crc) {
+            const std::uint16_t h[] = {lowWord(static_cast<std::int64_t>(sent.size())), 0, lowWord(crc), highWord(crc)};
+            QVERIFY(im.write(7004, h) == Exception::None);
+        };
+        auto begin = [&] {
+            const std::uint16_t cmd[] = {11};
+            QVERIFY(im.write(7000, cmd) == Exception::None);
+        };
+        auto writeAll = [&] {
+            for (const auto& [a, z] : map.rWritableRuns())
+                for (int n = a; n <= z; n += 60) {
+                    const int last = std::min(z, n + 59);
+                    std::vector<std::uint16_t> v(whole.begin() + 2 * n, whole.begin() + 2 * last + 2);
+                    QVERIFY(im.write(map.rRegister(n), v) == Exception::None);
+                }
+        };
+        auto status = [&] {
+            std::vector<std::uint16_t> out;
+            im.read(7002, 1, out);
+            return out[0];
+        };
+        const std::uint16_t commit[] = {5}, abort[] = {6};
+        // Held until the commit; an abort leaves everything as it was.
+        head(registersCrc(sent));
+        begin();
+        QCOMPARE(status(), std::uint16_t{1});
+        writeAll();
+        QCOMPARE(b.ctl->r(5), 0);
+        QVERIFY(im.write(7000, abort) == Exception::None);
+        QCOMPARE(b.ctl->r(5), 0);
+        // A CRC that does not match what arrived: 19, nothing stored.
+        head(registersCrc(sent) ^ 1u);
+        begin();
+        writeAll();
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{19});
+        QCOMPARE(b.ctl->r(200), 0);
+        // Leaving F7 drops the stage (16).
+        head(registersCrc(sent));
+        begin();
+        writeAll();
+        QVERIFY(b.ctl->selectMode(engine::Mode::Manual).ok());
+        QCOMPARE(status(), std::uint16_t{16});
+        QVERIFY(im.write(7000, commit) == Exception::NotReady);
+        QCOMPARE(b.ctl->r(5), 0);
+        b.f7();
+        // Whole: every R at once, the positioner's own untouched.
+        const std::int32_t nesting = b.ctl->r(158);
+        head(registersCrc(sent));
+        begin();
+        writeAll();
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{2});
+        QCOMPARE(b.ctl->r(5), 55);
+        QCOMPARE(b.ctl->r(200), 2000);
+        QCOMPARE(b.ctl->r(231), -3);
+        QCOMPARE(b.ctl->r(158), nesting);
+        // The C block the same way: a bad value refused as it is written (03), nothing held of it.
+        std::vector<std::uint16_t> c = packC(map, b.ctl->c());
+        c[10] = static_cast<std::uint16_t>(c[10] + 1); // C26 КОЭФФ.
+        const std::uint32_t ccrc = registersCrc(c);
+        const std::uint16_t ch[] = {117, 0, lowWord(ccrc), highWord(ccrc)};
+        QVERIFY(im.write(7004, ch) == Exception::None);
+        const std::uint16_t stageC[] = {10};
+        QVERIFY(im.write(7000, stageC) == Exception::None);
+        std::vector<std::uint16_t> wrong = c;
+        wrong[1] = 9; // C17 N ДОС: 1..4
+        QVERIFY(im.write(4100, wrong) == Exception::IllegalValue);
+        QVERIFY(im.write(4100, c) == Exception::None);
+        QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{2});
+        QCOMPARE(b.ctl->c()[26], b.prof.c[26] + 1);
+    }
+
+    void pushCarriesEveryWritableR() {
+        Bench b;
+        b.f7();
+        ImageTransport t(*b.image);
+        Link link(t);
+        profile::MachineProfile file = b.prof;
+        for (int n = 0; n <= 231; ++n)
+            file.r[n] = 1000 + n;
+        file.r[240] = 7; // read only: not sent
+        const std::int32_t nesting = b.ctl->r(158), before222 = b.ctl->r(222);
+        PushReport rep;
+        const LinkError e = push(link, file, rep);
+        QVERIFY2(!e, e.message.c_str());
+        for (int n = 0; n <= 231; ++n) {
+            if (n == 158 || n == 222 || n == 223)
+                continue;
+            QCOMPARE(b.ctl->r(n), 1000 + n);
+        }
+        QCOMPARE(b.ctl->r(158), nesting);
+        QCOMPARE(b.ctl->r(222), before222);
+        QCOMPARE(rep.parts[1].name, std::string("R-parameters (R0..R157, R159..R221, R224..R231)"));
+        QVERIFY(rep.summary().rfind("new: C-parameters, R-parameters", 0) == 0);
+        // And the pull gives them back as the file's presets.
+        PullResult pulled;
+        QVERIFY(!pull(link, pulled));
+        const profile::MachineProfile back = pulledProfile(pulled, "m", "t");
+        QCOMPARE(back.r.at(231), std::int64_t{1231});
+        QVERIFY(!back.r.count(158) && !back.r.count(240));
+    }
+
+    void clearOnlyOnTheScreenOfThePc() {
+        Bench b;
+        ImageTransport t(*b.image);
+        Link link(t);
+        LinkError e = clearArea(link, BlockKind::C);
+        QCOMPARE(e.kind, LinkError::Kind::NotReady);
+        QVERIFY2(e.message.find("not in F7 «РАБОТА С ПЭВМ» (mode F") != std::string::npos, e.message.c_str());
+        QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
+        // In F7 but the K923 not on «РАБОТА С ПЭВМ»: refused, naming that screen.
+        b.f7();
+        bool onScreen = false;
+        b.image->setPcReady([&] { return onScreen; });
+        e = clearArea(link, BlockKind::R);
+        QCOMPARE(e.kind, LinkError::Kind::NotReady);
+        QVERIFY2(e.message.find("in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»") != std::string::npos,
+                 e.message.c_str());
+        // The command itself outside the screen: exception 06 and status 16.
+        const std::uint16_t clearC[] = {8};
+        QVERIFY(b.image->write(7000, clearC) == Exception::NotReady);
+        QCOMPARE(b.image->status(), TransferStatus::NotInF7);
+        onScreen = true;
+        QVERIFY(b.ctl->setR(7, 77).ok());
+        e = clearArea(link, BlockKind::R);
+        QVERIFY2(!e, e.message.c_str());
+        QCOMPARE(b.ctl->r(7), 0);
+        e = clearArea(link, BlockKind::C);
+        QVERIFY2(!e, e.message.c_str());
+        for (int n = 1; n <= 152; ++n)
+            QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], std::int64_t{0});
+    }
+
+    void aBrokenPushSaysWhatIsNew() {
+        // The line breaks after every number of exchanges a push takes: C, R
+        // and each program are afterwards wholly old or wholly new, and the
+        // report says which (in doubt only between a commit and its answer).
+        const Bench probe;
+        profile::MachineProfile file = probe.prof;
+        file.c[26] += 1;
+        for (int n = 0; n <= 231; ++n)
+            file.r[n] = 500 + n;
+        const int p = probe.ctl->programs().numbers().front();
+        std::string text = header(p) + " (new)\n";
+        for (int i = 1; i <= 150; ++i)
+            text += frameLine(i);
+        file.programs = {{p, text}, {60, header(60) + "\n" + frameLine(1)}};
+        file.messages.clear();
+        int inDoubt = 0, stopped = 0;
+        for (int budget = 1; budget < 200; ++budget) {
+            Bench b;
+            b.f7();
+            const std::string oldProgram = b.programText(p);
+            ImageTransport inner(*b.image);
+            BreakingTransport broken(inner, budget);
+            Link link(broken);
+            PushReport rep;
+            const LinkError e = push(link, file, rep);
+            const bool cNew = b.ctl->c()[26] == file.c[26];
+            QVERIFY(cNew || b.ctl->c()[26] == probe.prof.c[26]);
+            int rNew = 0;
+            for (int n = 0; n <= 231; ++n)
+                if (k528Map().rWritable(n) && b.ctl->r(n) == 500 + n)
+                    ++rNew;
+            QVERIFY2(rNew == 0 || rNew == 229, std::to_string(rNew).c_str()); // never a part of the block
+            const bool pNew = b.programText(p) != oldProgram;
+            const bool p60 = b.ctl->programs().contains(60);
+            const bool now[] = {cNew, rNew == 229, pNew, p60};
+            QCOMPARE(rep.parts.size(), std::size_t{4}); // C, R, program 60, program p (no messages)
+            for (std::size_t i = 0; i < rep.parts.size(); ++i) {
+                const bool isNew = now[i < 2 ? i : (rep.parts[i].name == "program 60" ? 3 : 2)];
+                switch (rep.parts[i].state) {
+                case PushReport::State::New:
+                    QVERIFY2(isNew, (rep.parts[i].name + " said new: " + rep.summary()).c_str());
+                    break;
+                case PushReport::State::AsItWas:
+                    QVERIFY2(!isNew, (rep.parts[i].name + " said as it was: " + rep.summary()).c_str());
+                    break;
+                case PushReport::State::InDoubt:
+                    ++inDoubt;
+                    break;
+                }
+            }
+            if (!e)
+                break;
+            ++stopped;
+            QCOMPARE(e.kind, LinkError::Kind::NoAnswer);
+        }
+        QVERIFY(stopped > 20);
+        QVERIFY(inDoubt > 0);
+    }
+
+    void aProgramFileIsCheckedAgainstTheController() {
+        Bench b;
+        b.f7();
+        ImageTransport t(*b.image);
+        Link link(t);
+        // L50 calls L51 (both in the file) and the controller's own program.
+        const int own = b.ctl->programs().numbers().front();
+        const std::string text = "%L50 (caller)\nN1 G1 X10 FX100\nN2 L51\nN3 L" + std::to_string(own) +
+                                 "\n%L51\nN1 G1 X5 FX100\nN2 M17\n%MESSAGES\n#1=ПРОВЕРКА\n";
+        PushPlan plan;
+        LinkError e = planProgramFile(link, text, "p.k528", plan);
+        QVERIFY2(!e, e.message.c_str());
+        QVERIFY(!plan.hasC && !plan.hasR && plan.hasMessages);
+        PushReport rep;
+        e = push(link, plan, rep);
+        QVERIFY2(!e, e.message.c_str());
+        QCOMPARE(rep.parts[1].name, std::string("program 51")); // the called one first
+        QVERIFY(b.ctl->programs().contains(50) && b.ctl->programs().contains(51));
+        QCOMPARE(*b.ctl->programs().messages.text(1), std::string("ПРОВЕРКА"));
+        // A call to a program neither the file nor the controller has: refused before anything is sent.
+        const int commits = b.image->commits();
+        e = planProgramFile(link, "%L52\nN1 L77\n", "bad.k528", plan);
+        QCOMPARE(e.kind, LinkError::Kind::Input);
+        QVERIFY2(e.message.find("bad.k528:2:") != std::string::npos && e.message.find("nothing was sent") != std::string::npos,
+                 e.message.c_str());
+        QCOMPARE(b.image->commits(), commits);
+        e = planProgramFile(link, "N1 G1 X1\n", "none.k528", plan);
+        QCOMPARE(e.kind, LinkError::Kind::Input);
     }
 };
 

@@ -252,7 +252,7 @@ private slots:
         QVERIFY2(wrongIid.refused.contains("IID"), qPrintable(wrongIid.refused));
         const auto wrongApi = k528::linkplugin::loadFile(QStringLiteral(K528_FAKE_API_PLUGIN));
         QVERIFY(!wrongApi.plugin);
-        QVERIFY2(wrongApi.refused.contains("api 2"), qPrintable(wrongApi.refused));
+        QVERIFY2(wrongApi.refused.contains("api 1"), qPrintable(wrongApi.refused));
         const auto good = k528::linkplugin::loadFile(QStringLiteral(K528_RTU_PLUGIN));
         QVERIFY2(good.plugin, qPrintable(good.refused));
         QCOMPARE(good.name, QStringLiteral("modbus-rtu"));

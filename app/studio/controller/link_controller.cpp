@@ -266,7 +266,7 @@ public:
         if (rep.constants)
             written << LinkController::tr("C-parameters");
         if (rep.rParameters)
-            written << QStringLiteral("R0..R149");
+            written << LinkController::tr("R-parameters");
         if (rep.messages)
             written << LinkController::tr("messages");
         for (int n : rep.programs)
