@@ -18,7 +18,9 @@
 #include <QDateTime>
 #include <QElapsedTimer>
 #include <QThread>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 namespace k528::cli {
 
@@ -102,8 +104,15 @@ std::string liveText(const link::LiveState& s) {
     return t;
 }
 
-// Standard output was lost (a full disk, a closed pipe): stop now.
-bool outputLost() { return std::fflush(stdout) != 0 || std::ferror(stdout); }
+// Standard output was lost (a full disk, a closed pipe): say why, and stop now.
+bool outputLost() {
+    errno = 0;
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+        return false;
+    std::fprintf(stderr, "k528: cannot write standard output: %s\n", errno ? std::strerror(errno) : "a write failed");
+    std::clearerr(stdout); // said once; the exit status tells the rest
+    return true;
+}
 
 // A machine file begins with a [section]; a program file with %L or %MESSAGES.
 bool isMachineText(std::string_view text) {

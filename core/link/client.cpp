@@ -96,6 +96,8 @@ std::string describe(const LineStats& s) {
         t += ")";
     }
     t += ", " + n(s.retries, "retry", "retries");
+    if (s.splits > 0)
+        t += ", " + n(s.splits, "request sent again in halves", "requests sent again in halves");
     if (s.roundTrip.count() > 0) {
         char buf[96];
         std::snprintf(buf, sizeof buf, "; round trip median %.1f ms, p95 %.1f ms", s.roundTrip.median(),
@@ -135,9 +137,11 @@ void Link::count(const Reply& r, bool again) {
 
 template <class F> LinkError Link::retry(const std::string& what, F&& f) {
     Reply last;
+    lastDamaged_ = false;
     for (int attempt = 0; attempt < attempts_; ++attempt) {
         last = f();
         count(last, attempt > 0);
+        lastDamaged_ = lastDamaged_ || last.kind == Reply::Kind::Damaged || last.kind == Reply::Kind::BadReply;
         switch (last.kind) {
         case Reply::Kind::Ok:
             return {};
@@ -153,22 +157,57 @@ template <class F> LinkError Link::retry(const std::string& what, F&& f) {
                 (attempts_ == 1 ? " attempt" : " attempts") + (last.detail.empty() ? "" : ", last: " + last.detail) + ")"};
 }
 
+// A piece of a request that every attempt lost, while the line did answer
+// (damaged frames, not only silence), goes again as two halves: on a line
+// that damages one frame in a few, a long frame fails four times far more
+// often than two short ones (at least kMinPiece registers each).
+namespace {
+constexpr int kMinPiece = 8;
+bool worthSplitting(const LinkError& e, bool damaged, int n) {
+    return e.kind == LinkError::Kind::NoAnswer && damaged && n >= 2 * kMinPiece;
+}
+} // namespace
+
+LinkError Link::readPiece(int at, int n, std::vector<std::uint16_t>& out) {
+    std::vector<std::uint16_t> part;
+    LinkError e = retry("reading registers " + std::to_string(at) + ".." + std::to_string(at + n - 1), [&] {
+        Reply r = t_.read(at, n, part);
+        if (r.ok() && static_cast<int>(part.size()) != n)
+            return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(n) + " asked");
+        return r;
+    });
+    if (worthSplitting(e, lastDamaged_, n)) {
+        ++total_.splits;
+        const int half = (n / 2) & ~1;
+        if (LinkError h = readPiece(at, half, out))
+            return h;
+        return readPiece(at + half, n - half, out);
+    }
+    if (!e)
+        out.insert(out.end(), part.begin(), part.end());
+    return e;
+}
+
 LinkError Link::read(int first, int count, std::vector<std::uint16_t>& out) {
     out.clear();
-    std::vector<std::uint16_t> part;
-    for (int at = first; at < first + count; at += map_.maxRead) {
-        const int n = std::min(map_.maxRead, first + count - at);
-        LinkError e = retry("reading registers " + std::to_string(at) + ".." + std::to_string(at + n - 1), [&] {
-            Reply r = t_.read(at, n, part);
-            if (r.ok() && static_cast<int>(part.size()) != n)
-                return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(n) + " asked");
-            return r;
-        });
-        if (e)
+    for (int at = first; at < first + count; at += map_.maxRead)
+        if (LinkError e = readPiece(at, std::min(map_.maxRead, first + count - at), out))
             return e;
-        out.insert(out.end(), part.begin(), part.end());
-    }
     return {};
+}
+
+LinkError Link::writePiece(int first, std::span<const std::uint16_t> values) {
+    const int n = static_cast<int>(values.size());
+    LinkError e = retry("writing registers " + std::to_string(first) + ".." + std::to_string(first + n - 1),
+                        [&] { return t_.write(first, values); });
+    if (worthSplitting(e, lastDamaged_, n)) {
+        ++total_.splits;
+        const int half = (n / 2) & ~1; // even: a 32-bit value stays in one write
+        if (LinkError h = writePiece(first, values.first(static_cast<std::size_t>(half))))
+            return h;
+        return writePiece(first + half, values.subspan(static_cast<std::size_t>(half)));
+    }
+    return e;
 }
 
 LinkError Link::write(int first, std::span<const std::uint16_t> values) {
@@ -177,9 +216,7 @@ LinkError Link::write(int first, std::span<const std::uint16_t> values) {
     const int count = static_cast<int>(values.size());
     for (int i = 0; i < count; i += chunk) {
         const int n = std::min(chunk, count - i);
-        LinkError e = retry("writing registers " + std::to_string(first + i) + ".." + std::to_string(first + i + n - 1),
-                            [&] { return t_.write(first + i, values.subspan(static_cast<std::size_t>(i), static_cast<std::size_t>(n))); });
-        if (e)
+        if (LinkError e = writePiece(first + i, values.subspan(static_cast<std::size_t>(i), static_cast<std::size_t>(n))))
             return e;
     }
     return {};
@@ -187,12 +224,29 @@ LinkError Link::write(int first, std::span<const std::uint16_t> values) {
 
 LinkError Link::writeRead(int writeFirst, std::span<const std::uint16_t> values, int readFirst,
                           int readCount, std::vector<std::uint16_t>& out) {
-    return retry("reading registers " + std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1), [&] {
-        Reply r = t_.writeRead(writeFirst, values, readFirst, readCount, out);
-        if (r.ok() && static_cast<int>(out.size()) != readCount)
-            return Reply::bad("reply of " + std::to_string(out.size()) + " registers, " + std::to_string(readCount) + " asked");
+    std::vector<std::uint16_t> part;
+    LinkError e = retry("reading registers " + std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1), [&] {
+        Reply r = t_.writeRead(writeFirst, values, readFirst, readCount, part);
+        if (r.ok() && static_cast<int>(part.size()) != readCount)
+            return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(readCount) + " asked");
         return r;
     });
+    if (worthSplitting(e, lastDamaged_, readCount)) {
+        // The same write before each half of the read (a window's offset, then part of the window).
+        ++total_.splits;
+        const int half = readCount / 2;
+        std::vector<std::uint16_t> a, b;
+        if (LinkError h = writeRead(writeFirst, values, readFirst, half, a))
+            return h;
+        if (LinkError h = writeRead(writeFirst, values, readFirst + half, readCount - half, b))
+            return h;
+        out = std::move(a);
+        out.insert(out.end(), b.begin(), b.end());
+        return {};
+    }
+    if (!e)
+        out = std::move(part);
+    return e;
 }
 
 LinkError Link::echo(std::uint16_t value) {
@@ -353,18 +407,20 @@ LinkError commitTransfer(Link& link, const std::string& what, bool& commitSent, 
     return {};
 }
 
-LinkError writeTextOnce(Link& link, bool messages, int program, const std::string& text, bool& commitSent,
-                        bool& committed) {
+// Begins a transfer into the controller (the text's or block's length and
+// CRC, then `command`), sends `bytes` window by window (offset and text in
+// one write), commits it and reads the status.
+LinkError sendTransfer(Link& link, const std::string& what, TransferCommand command, int program,
+                       const std::string& bytes, bool& commitSent, bool& committed) {
     const TransferLayout& T = link.map().transfer;
-    const std::string what = messages ? std::string("messages") : "program " + std::to_string(program);
-    const auto length = static_cast<std::uint32_t>(text.size());
-    const std::uint32_t crc = crc32(text);
+    const auto length = static_cast<std::uint32_t>(bytes.size());
+    const std::uint32_t crc = crc32(bytes);
     const std::uint16_t head[] = {lowWord(length), highWord(length), lowWord(crc), highWord(crc)};
     if (LinkError e = link.write(T.length, head))
         return e;
-    const std::uint16_t begin[] = {
-        static_cast<std::uint16_t>(messages ? TransferCommand::WriteMessages : TransferCommand::WriteProgram),
-        static_cast<std::uint16_t>(messages ? 1 : program)};
+    std::vector<std::uint16_t> begin = {static_cast<std::uint16_t>(command)};
+    if (command == TransferCommand::WriteProgram || command == TransferCommand::WriteMessages)
+        begin.push_back(static_cast<std::uint16_t>(program));
     if (LinkError e = link.write(T.command, begin))
         return e;
     std::vector<std::uint16_t> st;
@@ -372,7 +428,9 @@ LinkError writeTextOnce(Link& link, bool messages, int program, const std::strin
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Ready))
         return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
-    const std::vector<std::uint16_t> regs = textRegisters(text);
+    if (T.window != T.offset + 2)
+        return {LinkError::Kind::Exception, 0, "the map's window does not follow its offset"};
+    const std::vector<std::uint16_t> regs = textRegisters(bytes);
     std::vector<std::uint16_t> frame;
     for (std::uint32_t off = 0; off < length; off += static_cast<std::uint32_t>(T.windowBytes)) {
         const std::size_t first = off / 2;
@@ -380,12 +438,17 @@ LinkError writeTextOnce(Link& link, bool messages, int program, const std::strin
         frame.assign({lowWord(off), highWord(off)});
         frame.insert(frame.end(), regs.begin() + static_cast<std::ptrdiff_t>(first),
                      regs.begin() + static_cast<std::ptrdiff_t>(first + n));
-        if (T.window != T.offset + 2)
-            return {LinkError::Kind::Exception, 0, "the map's window does not follow its offset"};
         if (LinkError e = link.write(T.offset, frame))
             return e;
     }
-    if (LinkError e = commitTransfer(link, what, commitSent, committed))
+    return commitTransfer(link, what, commitSent, committed);
+}
+
+LinkError writeTextOnce(Link& link, bool messages, int program, const std::string& text, bool& commitSent,
+                        bool& committed) {
+    const std::string what = messages ? std::string("messages") : "program " + std::to_string(program);
+    if (LinkError e = sendTransfer(link, what, messages ? TransferCommand::WriteMessages : TransferCommand::WriteProgram,
+                                   messages ? 1 : program, text, commitSent, committed))
         return e;
     std::string back;
     if (LinkError e = readText(link, messages, program, back))
@@ -415,44 +478,21 @@ LinkError writeText(Link& link, bool messages, int program, const std::string& t
 LinkError writeBlockOnce(Link& link, BlockKind kind, std::span<const std::uint16_t> whole, bool& commitSent,
                          bool& committed) {
     const RegisterMap& map = link.map();
-    const TransferLayout& T = map.transfer;
     const std::string what = kind == BlockKind::C ? "C-parameters" : "R-parameters";
     const std::vector<std::uint16_t> sent = stagedRegisters(map, kind, whole);
-    const auto length = static_cast<std::uint32_t>(sent.size());
-    const std::uint32_t crc = registersCrc(sent);
-    const std::uint16_t head[] = {lowWord(length), highWord(length), lowWord(crc), highWord(crc)};
-    if (LinkError e = link.write(T.length, head))
+    if (LinkError e = sendTransfer(link, what, kind == BlockKind::C ? TransferCommand::StageC : TransferCommand::StageR,
+                                   0, registerBytes(sent), commitSent, committed)) {
+        if (e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::TextRefused))
+            e.message = what + ": the controller refused the block" +
+                        (kind == BlockKind::C && e.message.find("at line ") != std::string::npos
+                             ? " at C" + e.message.substr(e.message.find("at line ") + 8)
+                             : std::string());
         return e;
-    const std::uint16_t begin[] = {
-        static_cast<std::uint16_t>(kind == BlockKind::C ? TransferCommand::StageC : TransferCommand::StageR)};
-    if (LinkError e = link.write(T.command, begin))
-        return e;
-    std::vector<std::uint16_t> st;
-    if (LinkError e = link.read(T.status, 1, st))
-        return e;
-    if (st[0] != static_cast<int>(TransferStatus::Ready))
-        return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
-    // The registers, held by the controller until the commit.
-    int readFirst = 0, readCount = 0;
-    if (kind == BlockKind::C) {
-        const Block& cb = map.block(BlockKind::C);
-        if (LinkError e = link.write(cb.first, whole.first(static_cast<std::size_t>(cb.count()))))
-            return e;
-        readFirst = cb.first;
-        readCount = cb.count();
-    } else {
-        for (const auto& [a, b] : map.rWritableRuns()) {
-            const auto from = static_cast<std::size_t>(2 * a), n = static_cast<std::size_t>(2 * (b - a + 1));
-            if (LinkError e = link.write(map.rRegister(a), whole.subspan(from, n)))
-                return e;
-        }
-        readFirst = map.rFirst;
-        readCount = 2 * (map.rWritableLast + 1);
     }
-    if (LinkError e = commitTransfer(link, what, commitSent, committed))
-        return e;
     std::vector<std::uint16_t> back;
-    if (LinkError e = link.read(readFirst, readCount, back))
+    const int first = kind == BlockKind::C ? map.block(BlockKind::C).first : map.rFirst;
+    const int count = kind == BlockKind::C ? map.block(BlockKind::C).count() : 2 * (map.rWritableLast + 1);
+    if (LinkError e = link.read(first, count, back))
         return e;
     if (stagedRegisters(map, kind, back) != sent)
         return {LinkError::Kind::Verify, 0, what + ": the values read back differ from those sent"};

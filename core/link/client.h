@@ -3,8 +3,9 @@
 // push (a machine file or a program file) with staged blocks and read-back,
 // clear C / R, the station's bus counters, a scan of the bus — over any
 // RegisterTransport. The Link checks every reply (count), retries a lost
-// exchange (every register of the map is safe to write twice) and keeps the
-// line's counters per station.
+// exchange (every register of the map is safe to write twice), sends a
+// request whose every attempt came back damaged again in halves, and keeps
+// the line's counters per station.
 #pragma once
 
 #include "link/register_map.h"
@@ -49,6 +50,7 @@ struct LineStats {
     std::int64_t exceptions = 0;
     std::map<int, std::int64_t> exceptionsByCode;
     std::int64_t retries = 0;
+    std::int64_t splits = 0; // requests every attempt of which came back damaged, sent again in halves
     RoundTrips roundTrip;
 };
 
@@ -101,6 +103,9 @@ public:
 private:
     template <class F> LinkError retry(const std::string& what, F&& f);
     void count(const Reply& r, bool retry);
+    LinkError readPiece(int at, int n, std::vector<std::uint16_t>& out);
+    LinkError writePiece(int first, std::span<const std::uint16_t> values);
+    bool lastDamaged_ = false; // the last retry() met a damaged or unfitting answer
     RegisterTransport& t_;
     const RegisterMap& map_;
     int attempts_;

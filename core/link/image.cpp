@@ -45,19 +45,8 @@ void ControllerImage::checkStillReady() {
     if (writing() && !pcReady()) {
         phase_ = Phase::Idle;
         text_.clear();
-        stage_.clear();
         status_ = TransferStatus::NotInF7;
     }
-}
-
-std::vector<std::uint16_t> ControllerImage::rRegisters() const {
-    std::vector<std::uint16_t> regs;
-    regs.reserve(2 * static_cast<std::size_t>(map_.rCount));
-    for (int i = 0; i < map_.rCount; ++i) {
-        regs.push_back(lowWord(ctl_.r(i)));
-        regs.push_back(highWord(ctl_.r(i)));
-    }
-    return regs;
 }
 
 Exception ControllerImage::read(int first, int count, std::vector<std::uint16_t>& out) {
@@ -203,8 +192,7 @@ Exception ControllerImage::writeC(int first, std::span<const std::uint16_t> valu
     if (!pcReady())
         return Exception::NotReady;
     const Block& cb = map_.block(BlockKind::C);
-    const bool staged = phase_ == Phase::StagingC;
-    std::vector<std::uint16_t> regs = staged ? stage_ : packC(map_, ctl_.c());
+    std::vector<std::uint16_t> regs = packC(map_, ctl_.c());
     std::copy(values.begin(), values.end(), regs.begin() + (first - cb.first));
     const std::vector<std::int64_t> c = unpackC(map_, regs);
     // A bit or byte the map does not place must stay 0: repacking gives the
@@ -214,10 +202,6 @@ Exception ControllerImage::writeC(int first, std::span<const std::uint16_t> valu
     for (int n = 1; n < static_cast<int>(c.size()); ++n)
         if (!profile::checkCValue(n, c[static_cast<std::size_t>(n)]).empty())
             return Exception::IllegalValue;
-    if (staged) { // held until the commit
-        stage_ = std::move(regs);
-        return Exception::None;
-    }
     return ctl_.loadCParameters(c).ok() ? Exception::None : Exception::IllegalValue;
 }
 
@@ -231,10 +215,6 @@ Exception ControllerImage::writeR(int first, std::span<const std::uint16_t> valu
     for (int i = firstR; i <= lastR; ++i)
         if (!map_.rWritable(i))
             return Exception::IllegalAddress;
-    if (phase_ == Phase::StagingR) { // held until the commit
-        std::copy(values.begin(), values.end(), stage_.begin() + (first - map_.rFirst));
-        return Exception::None;
-    }
     std::vector<std::int32_t> v;
     for (int i = firstR; i <= lastR; ++i) {
         const int lo = map_.rRegister(i), hi = lo + 1;
@@ -266,7 +246,7 @@ Exception ControllerImage::writeTransfer(int first, std::span<const std::uint16_
     if (writesWindow) {
         if (!pcReady())
             return Exception::NotReady;
-        if (phase_ != Phase::WritingProgram && phase_ != Phase::WritingMessages)
+        if (!writing())
             return Exception::IllegalValue;
     }
     auto pair32 = [&](int reg, std::uint32_t current) {
@@ -326,8 +306,6 @@ Exception ControllerImage::writeTransfer(int first, std::span<const std::uint16_
 
 Exception ControllerImage::command(std::uint16_t cmd) {
     errorLine_ = 0;
-    if (cmd != static_cast<std::uint16_t>(TransferCommand::Commit))
-        stage_.clear(); // any other command ends a staged block (begin writing it again)
     switch (static_cast<TransferCommand>(cmd)) {
     case TransferCommand::ReadProgram: {
         const program::Program* p = ctl_.programs().find(programNumber_);
@@ -371,7 +349,6 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     case TransferCommand::Abort:
         phase_ = Phase::Idle;
         text_.clear();
-        stage_.clear();
         status_ = TransferStatus::Idle;
         return Exception::None;
     case TransferCommand::DeleteProgram: {
@@ -395,7 +372,6 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     case TransferCommand::ClearR: {
         phase_ = Phase::Idle;
         text_.clear();
-        stage_.clear();
         const engine::OpResult r =
             cmd == 8 ? ctl_.clearCParameters() : ctl_.clearRParameters();
         if (!r.ok()) {
@@ -408,8 +384,15 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     }
     case TransferCommand::StageC:
     case TransferCommand::StageR:
+        // The block's registers come through the window like a text: held
+        // apart from the live ones, so nothing of them counts before the commit.
         text_.clear();
-        stage_ = cmd == 10 ? packC(map_, ctl_.c()) : rRegisters();
+        phase_ = Phase::Idle;
+        if (length_ > map_.transfer.capacityBytes) {
+            status_ = TransferStatus::MemoryFull;
+            return Exception::None;
+        }
+        text_.assign(length_, '\0');
         phase_ = cmd == 10 ? Phase::StagingC : Phase::StagingR;
         status_ = TransferStatus::Ready;
         return Exception::None;
@@ -423,16 +406,36 @@ Exception ControllerImage::command(std::uint16_t cmd) {
 
 void ControllerImage::commitBlock() {
     const BlockKind kind = phase_ == Phase::StagingC ? BlockKind::C : BlockKind::R;
-    const std::vector<std::uint16_t> whole = std::move(stage_);
+    const std::string bytes = std::move(text_);
     phase_ = Phase::Idle;
-    stage_.clear();
-    const std::vector<std::uint16_t> sent = stagedRegisters(map_, kind, whole);
-    if (sent.size() != length_ || registersCrc(sent) != crc_) {
+    text_.clear();
+    // What a client sends of the block (stagedRegisters): C all 117
+    // registers, R those of the writable R-parameters; two bytes each.
+    const std::size_t expected = stagedCount(map_, kind);
+    if (bytes.size() != length_ || crc32(bytes) != crc_ || bytes.size() != 2 * expected) {
         status_ = TransferStatus::CrcMismatch;
         return;
     }
+    std::vector<std::uint16_t> regs(expected);
+    for (std::size_t i = 0; i < expected; ++i)
+        regs[i] = static_cast<std::uint16_t>((static_cast<unsigned char>(bytes[2 * i]) << 8) |
+                                             static_cast<unsigned char>(bytes[2 * i + 1]));
     if (kind == BlockKind::C) {
-        if (!ctl_.loadCParameters(unpackC(map_, whole)).ok()) { // checked as written: only F7 can fail
+        const std::vector<std::int64_t> c = unpackC(map_, regs);
+        // Every value against table Е.1; a bit or byte where no constant lives
+        // stays 0. 7003 = the number of the first constant at fault.
+        if (packC(map_, c) != regs) {
+            status_ = TransferStatus::TextRefused;
+            errorLine_ = 0;
+            return;
+        }
+        for (int n = 1; n < static_cast<int>(c.size()); ++n)
+            if (!profile::checkCValue(n, c[static_cast<std::size_t>(n)]).empty()) {
+                status_ = TransferStatus::TextRefused;
+                errorLine_ = static_cast<std::uint16_t>(n);
+                return;
+            }
+        if (!ctl_.loadCParameters(c).ok()) { // values checked: only leaving F7 refuses
             status_ = TransferStatus::NotInF7;
             return;
         }
@@ -441,9 +444,10 @@ void ControllerImage::commitBlock() {
             status_ = TransferStatus::NotInF7;
             return;
         }
-        for (int i = 0; i < map_.rCount; ++i)
-            if (map_.rWritable(i)) {
-                const std::int32_t v = joinSigned(whole[2 * static_cast<std::size_t>(i)], whole[2 * static_cast<std::size_t>(i) + 1]);
+        std::size_t at = 0;
+        for (const auto& [a, b] : map_.rWritableRuns())
+            for (int i = a; i <= b; ++i, at += 2) {
+                const std::int32_t v = joinSigned(regs[at], regs[at + 1]);
                 if (v != ctl_.r(i))
                     (void)ctl_.setR(i, v); // a writable number, a 32-bit value, no program executing: accepted
             }

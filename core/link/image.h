@@ -9,9 +9,10 @@
 // owner says so with setPcReady; without it, the mode F7 with no program
 // active) — else exception 06 (and status 16 for a command). The transfer
 // state machine keeps one transfer at a time: a text (a program, the
-// messages) or a staged block (C, R). A written text is parsed and checked
-// with the controller's own rules at commit and stored all or nothing; a
-// staged block is checked as it is written and goes in whole at commit.
+// messages) or a block (C, R) staged through the same window. A written
+// text is parsed and checked with the controller's own rules at commit and
+// stored all or nothing; a staged block is checked at commit and goes in
+// whole. Writes to the C and R registers themselves go in directly.
 #pragma once
 
 #include "link/register_map.h"
@@ -59,7 +60,7 @@ enum class TransferCommand : std::uint16_t {
     DeleteProgram = 7,
     ClearC = 8,      // manual 2.6.8 «ОЧИСТКА С-ПАРАМ»
     ClearR = 9,      // «ОЧИСТКА Р-ПАРАМ»
-    StageC = 10,     // begin writing the C block: its writes are held until commit
+    StageC = 10,     // begin writing the C block through the window, taken whole at commit
     StageR = 11,     // the same for the writable R-parameters
 };
 inline constexpr std::uint16_t kLastCommand = 11;
@@ -94,7 +95,6 @@ private:
     void commitBlock();
     void checkStillReady();
     bool writing() const;
-    std::vector<std::uint16_t> rRegisters() const; // the whole R block as it is
 
     enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages, StagingC, StagingR };
 
@@ -108,7 +108,6 @@ private:
     std::uint32_t length_ = 0, crc_ = 0, offset_ = 0;
     int transferProgram_ = 0; // the program of the transfer under way
     std::string text_;        // read: the controller's text; write: the bytes received
-    std::vector<std::uint16_t> stage_; // StagingC / StagingR: the whole block as it will be
     int commits_ = 0;
 };
 

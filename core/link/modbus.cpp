@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
+#include <optional>
 #include <thread>
 
 namespace k528::link {
@@ -409,6 +410,7 @@ bool ModbusMaster::setStation(int address) {
     if (address < 1 || address > 247)
         return false;
     station_ = address;
+    stationChanged();
     return true;
 }
 
@@ -482,26 +484,61 @@ Reply RtuMaster::exchange(const Bytes& request, Bytes& response) {
     ++wire_.transactions;
     const auto sendTime = std::chrono::microseconds(
         static_cast<std::int64_t>(static_cast<double>(frame.size()) * s_.bitsPerChar * 1e6 / s_.baud));
-    const Clock::time_point deadline = start + sendTime + std::chrono::milliseconds(s_.timeoutMs);
+    // After a timeout the next wait is longer (twice, up to four times the
+    // timeout): a line whose answers come late — a busy gateway, a slow
+    // converter — is still read; any answer brings it back.
+    const int waitMs = s_.timeoutMs * patience_;
+    const Clock::time_point deadline = start + sendTime + std::chrono::milliseconds(waitMs);
 
     const std::uint8_t fc = request[0];
-    Bytes got;
-    int total = -1; // -1 not known yet, 0 cannot be known (not our function)
-    for (;;) {
-        if (got.size() >= 2 && total < 0) {
-            const std::span<const std::uint8_t> pdu(got.data() + 1, got.size() - 1);
-            const int len =
-                got[1] == fc || got[1] == (fc | 0x80) ? modbus::responseLength(pdu) : 0;
-            if (len > 0)
-                total = 1 + len + 2;
-            else if (len == 0)
-                total = 0;
+    // The answer is the frame for this station and function whose CRC holds,
+    // wherever it begins in what came: a late answer's tail or noise before
+    // it is dropped (RTU has no transaction number; the CRC and the length
+    // its function gives delimit a frame). What never forms one ends at the
+    // timeout, or once the line is quiet after a whole frame that is damaged.
+    struct Found {
+        std::size_t at = 0, total = 0;
+    };
+    const auto findFrame = [&](const Bytes& b) -> std::optional<Found> {
+        for (std::size_t k = 0; k + 4 <= b.size(); ++k) {
+            if (b[k] != station_ || (b[k + 1] != fc && b[k + 1] != (fc | 0x80)))
+                continue;
+            const int len = modbus::responseLength(std::span<const std::uint8_t>(b).subspan(k + 1));
+            if (len <= 0 || k + 3 + static_cast<std::size_t>(len) > b.size())
+                continue;
+            const std::span<const std::uint8_t> f(b.data() + k, 3 + static_cast<std::size_t>(len));
+            if (modbus::rtuCrcOk(f))
+                return Found{k, f.size()};
         }
-        if (total > 0 && static_cast<int>(got.size()) >= total)
+        return std::nullopt;
+    };
+    // The length the first bytes announce (0 when they do not tell).
+    const auto announced = [&](const Bytes& b) -> std::size_t {
+        if (b.size() < 2 || (b[1] != fc && b[1] != (fc | 0x80)))
+            return 0;
+        const int len = modbus::responseLength(std::span<const std::uint8_t>(b).subspan(1));
+        return len > 0 ? 3 + static_cast<std::size_t>(len) : 0;
+    };
+    const auto quiet = std::max<std::chrono::microseconds>(2 * gap(), std::chrono::milliseconds(5));
+    Bytes got;
+    std::optional<Found> found;
+    Clock::time_point lastByte = start;
+    for (;;) {
+        if ((found = findFrame(got)))
             break;
         int wait = msUntil(deadline);
-        if (total == 0) // a frame of unknown length ends with a silence
-            wait = std::min(wait, 20);
+        const std::size_t want = announced(got);
+        // The beginning of an answer of ours (its station, and its function
+        // once two bytes came) waits for the rest until the deadline.
+        const bool ours = !got.empty() && got[0] == station_ && (got.size() == 1 || want > 0);
+        if (!got.empty() && (!ours || (want > 0 && got.size() >= want))) {
+            // A whole frame that is not good, or bytes of no function of ours:
+            // what comes is over once the line is quiet.
+            const Clock::time_point over = lastByte + quiet;
+            if (Clock::now() >= over)
+                break;
+            wait = std::min(wait, msUntil(over));
+        }
         if (wait <= 0)
             break;
         const std::size_t before = got.size();
@@ -510,28 +547,42 @@ Reply RtuMaster::exchange(const Bytes& request, Bytes& response) {
                 log(false, got, Frame::Check::Short, "the port failed: " + error);
             return Reply::lost("the port failed: " + error);
         }
-        if (total == 0 && got.size() == before)
-            break;
+        if (got.size() > before)
+            lastByte = Clock::now();
     }
     const Clock::time_point end = Clock::now();
     lastActivity_ = end;
-    const double ms = std::chrono::duration<double, std::milli>(end - start).count();
+    const double ms = std::chrono::duration<double, std::milli>(lastByte - start).count();
     if (got.empty()) {
-        log(false, {}, Frame::Check::Ok, "no answer within " + std::to_string(s_.timeoutMs) + " ms");
+        log(false, {}, Frame::Check::Ok, "no answer within " + std::to_string(waitMs) + " ms");
+        patience_ = std::min(patience_ * 2, 4);
         return Reply::lost("timeout");
     }
-    Bytes extra;
-    if (total > 0 && static_cast<int>(got.size()) > total) {
-        extra.assign(got.begin() + total, got.end());
-        got.resize(static_cast<std::size_t>(total));
-    }
+    patience_ = 1;
     wire_.bytes += static_cast<std::int64_t>(got.size());
     ++wire_.frames;
     Reply r;
-    if (total > 0 && static_cast<int>(got.size()) < total) {
+    if (found) {
+        const Bytes before(got.begin(), got.begin() + static_cast<std::ptrdiff_t>(found->at));
+        const Bytes frame(got.begin() + static_cast<std::ptrdiff_t>(found->at),
+                          got.begin() + static_cast<std::ptrdiff_t>(found->at + found->total));
+        const Bytes after(got.begin() + static_cast<std::ptrdiff_t>(found->at + found->total), got.end());
+        if (!before.empty())
+            log(false, before, modbus::rtuCrcOk(before) ? Frame::Check::Ok : Frame::Check::Bad,
+                "before the answer (a late answer's rest, or noise): dropped");
+        log(false, frame, Frame::Check::Ok);
+        if (!after.empty())
+            log(false, after, modbus::rtuCrcOk(after) ? Frame::Check::Ok : Frame::Check::Bad,
+                "after the answer (noise, or another station): dropped");
+        response.assign(frame.begin() + 1, frame.end() - 2);
+        r.roundTripMs = ms;
+        return r;
+    }
+    const std::size_t want = announced(got);
+    if (want > 0 && got.size() < want) {
         log(false, got, Frame::Check::Short, "cut short: " + std::to_string(got.size()) + " of " +
-                                                 std::to_string(total) + " bytes");
-        r = Reply::damaged("a frame cut short (" + std::to_string(got.size()) + " of " + std::to_string(total) +
+                                                 std::to_string(want) + " bytes");
+        r = Reply::damaged("a frame cut short (" + std::to_string(got.size()) + " of " + std::to_string(want) +
                            " bytes)");
     } else if (!modbus::rtuCrcOk(got)) {
         log(false, got, Frame::Check::Bad);
@@ -539,18 +590,9 @@ Reply RtuMaster::exchange(const Bytes& request, Bytes& response) {
     } else if (got[0] != station_) {
         log(false, got, Frame::Check::Ok, "from another station");
         r = Reply::bad("an answer from station " + std::to_string(got[0]));
-    } else if (total == 0) {
+    } else {
         log(false, got, Frame::Check::Ok, "not an answer to this request");
         r = Reply::bad("an answer of function " + std::to_string(got[1]) + " to function " + std::to_string(fc));
-    } else {
-        log(false, got, Frame::Check::Ok);
-        response.assign(got.begin() + 1, got.end() - 2);
-    }
-    if (!extra.empty()) {
-        wire_.bytes += static_cast<std::int64_t>(extra.size());
-        ++wire_.frames;
-        log(false, extra, modbus::rtuCrcOk(extra) ? Frame::Check::Ok : Frame::Check::Bad,
-            "after the answer (noise, or another station): dropped");
     }
     r.roundTripMs = ms;
     return r;

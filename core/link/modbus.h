@@ -172,6 +172,7 @@ protected:
     explicit ModbusMaster(int station) : station_(station) {}
     // One request PDU out, its response PDU back (empty unless ok()).
     virtual Reply exchange(const Bytes& request, Bytes& response) = 0;
+    virtual void stationChanged() {}
     WireCount wire_;
     FrameLog log_;
     int station_;
@@ -186,10 +187,13 @@ struct RtuSettings {
 
 // Modbus RTU over a serial BytePort. A frame is complete when it has the
 // length its function gives (an answer that stops short ends at the
-// timeout); a bad CRC or a short frame is Reply::Damaged. Bytes that arrive
-// between exchanges (a late answer) are logged and dropped before the next
-// request; requests keep the 3.5-character gap. A port that failed is
-// opened again at the next exchange.
+// timeout); a bad CRC or a short frame is Reply::Damaged. The answer is
+// found by its CRC wherever it begins (a late answer's rest before it is
+// dropped); bytes between exchanges are logged and dropped before the next
+// request; requests keep the 3.5-character gap. After a timeout the next
+// wait doubles (at most 4 × the timeout) until an answer comes; a new
+// station starts again at the timeout. A port that failed is opened again
+// at the next exchange.
 class RtuMaster : public ModbusMaster {
 public:
     RtuMaster(BytePort& port, RtuSettings s) : ModbusMaster(s.station), port_(port), s_(s) {}
@@ -199,6 +203,7 @@ public:
 
 protected:
     Reply exchange(const Bytes& request, Bytes& response) override;
+    void stationChanged() override { patience_ = 1; }
 
 private:
     void drain();
@@ -207,6 +212,7 @@ private:
     RtuSettings s_;
     std::chrono::steady_clock::time_point lastActivity_{};
     std::chrono::steady_clock::time_point nextReopen_{};
+    int patience_ = 1; // the wait, in timeouts
 };
 
 } // namespace k528::link

@@ -99,15 +99,26 @@ std::vector<std::uint16_t> stagedRegisters(const RegisterMap& map, BlockKind kin
     return out;
 }
 
-std::uint32_t registersCrc(std::span<const std::uint16_t> regs) {
+std::size_t stagedCount(const RegisterMap& map, BlockKind kind) {
+    if (kind == BlockKind::C)
+        return static_cast<std::size_t>(map.block(BlockKind::C).count());
+    std::size_t n = 0;
+    for (const auto& [a, b] : map.rWritableRuns())
+        n += 2 * static_cast<std::size_t>(b - a + 1);
+    return n;
+}
+
+std::string registerBytes(std::span<const std::uint16_t> regs) {
     std::string bytes;
     bytes.reserve(regs.size() * 2);
     for (std::uint16_t r : regs) {
         bytes.push_back(static_cast<char>(r >> 8));
         bytes.push_back(static_cast<char>(r & 0xFF));
     }
-    return crc32(bytes);
+    return bytes;
 }
+
+std::uint32_t registersCrc(std::span<const std::uint16_t> regs) { return crc32(registerBytes(regs)); }
 
 const Block& RegisterMap::block(BlockKind k) const {
     for (const Block& b : blocks)

@@ -87,13 +87,16 @@ struct RegisterMap {
 };
 
 // A block staged and committed whole (transfer commands 10 and 11): the
-// registers a client writes — the whole C block, the registers of the
+// registers a client sends — the whole C block, the registers of the
 // writable R-parameters — in address order, taken from the whole block's
 // registers (C: 117 values from its first register; R: 2 per R-parameter
-// from R0). Their count and CRC-32 (each register high byte first) go to
-// 7004..7007 before the block is begun; the controller compares them at commit.
+// from R0). They go through the transfer window as bytes, each register
+// high byte first (registerBytes); length and CRC-32 of those bytes are
+// given before the block is begun, as for a text.
 std::vector<std::uint16_t> stagedRegisters(const RegisterMap& map, BlockKind kind,
                                            std::span<const std::uint16_t> wholeBlock);
+std::size_t stagedCount(const RegisterMap& map, BlockKind kind);
+std::string registerBytes(std::span<const std::uint16_t> regs);
 std::uint32_t registersCrc(std::span<const std::uint16_t> regs);
 
 // Reads a map file; throws MapError naming `source` and the key at fault.

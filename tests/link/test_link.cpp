@@ -448,76 +448,96 @@ private slots:
         setR(231, -3);
         const std::vector<std::uint16_t> sent = stagedRegisters(map, BlockKind::R, whole);
         QCOMPARE(sent.size(), std::size_t{2 * (232 - 3)});
-        auto head = [&](std::uint32_t crc) {
-            const std::uint16_t h[] = {lowWord(static_cast<std::int64_t>(sent.size())), 0, lowWord(crc), highWord(crc)};
+        QCOMPARE(sent.size(), stagedCount(map, BlockKind::R));
+        const std::string bytes = registerBytes(sent);
+        auto begin = [&](std::uint16_t cmd, const std::string& data, std::uint32_t crc) {
+            const auto len = static_cast<std::uint32_t>(data.size());
+            const std::uint16_t h[] = {lowWord(len), highWord(len), lowWord(crc), highWord(crc)};
             QVERIFY(im.write(7004, h) == Exception::None);
+            const std::uint16_t c[] = {cmd};
+            QVERIFY(im.write(7000, c) == Exception::None);
         };
-        auto begin = [&] {
-            const std::uint16_t cmd[] = {11};
-            QVERIFY(im.write(7000, cmd) == Exception::None);
-        };
-        auto writeAll = [&] {
-            for (const auto& [a, z] : map.rWritableRuns())
-                for (int n = a; n <= z; n += 60) {
-                    const int last = std::min(z, n + 59);
-                    std::vector<std::uint16_t> v(whole.begin() + 2 * n, whole.begin() + 2 * last + 2);
-                    QVERIFY(im.write(map.rRegister(n), v) == Exception::None);
-                }
+        auto windows = [&](const std::string& data, std::size_t upTo) {
+            const std::vector<std::uint16_t> regs = textRegisters(data);
+            for (std::uint32_t off = 0; off < std::min(upTo, data.size()); off += 240) {
+                std::vector<std::uint16_t> f = {lowWord(off), highWord(off)};
+                const std::size_t n = std::min<std::size_t>(120, regs.size() - off / 2);
+                f.insert(f.end(), regs.begin() + off / 2, regs.begin() + off / 2 + n);
+                QVERIFY(im.write(7008, f) == Exception::None);
+            }
         };
         auto status = [&] {
             std::vector<std::uint16_t> out;
-            im.read(7002, 1, out);
+            im.read(7002, 2, out);
             return out[0];
         };
         const std::uint16_t commit[] = {5}, abort[] = {6};
-        // Held until the commit; an abort leaves everything as it was.
-        head(registersCrc(sent));
-        begin();
+        // Held apart until the commit; an abort leaves everything as it was.
+        begin(11, bytes, crc32(bytes));
         QCOMPARE(status(), std::uint16_t{1});
-        writeAll();
+        windows(bytes, bytes.size());
         QCOMPARE(b.ctl->r(5), 0);
         QVERIFY(im.write(7000, abort) == Exception::None);
         QCOMPARE(b.ctl->r(5), 0);
-        // A CRC that does not match what arrived: 19, nothing stored.
-        head(registersCrc(sent) ^ 1u);
-        begin();
-        writeAll();
+        // A block cut short, or not the CRC given: 19, nothing stored.
+        begin(11, bytes, crc32(bytes));
+        windows(bytes, 480);
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{19});
+        QCOMPARE(b.ctl->r(5), 0);
+        begin(11, bytes, crc32(bytes) ^ 1u);
+        windows(bytes, bytes.size());
         QVERIFY(im.write(7000, commit) == Exception::None);
         QCOMPARE(status(), std::uint16_t{19});
         QCOMPARE(b.ctl->r(200), 0);
-        // Leaving F7 drops the stage (16).
-        head(registersCrc(sent));
-        begin();
-        writeAll();
+        // Of another length than the map's writable R: 19.
+        const std::string shorter = bytes.substr(0, bytes.size() - 4);
+        begin(11, shorter, crc32(shorter));
+        windows(shorter, shorter.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{19});
+        // Leaving F7 drops the block (16).
+        begin(11, bytes, crc32(bytes));
+        windows(bytes, bytes.size());
         QVERIFY(b.ctl->selectMode(engine::Mode::Manual).ok());
         QCOMPARE(status(), std::uint16_t{16});
         QVERIFY(im.write(7000, commit) == Exception::NotReady);
         QCOMPARE(b.ctl->r(5), 0);
         b.f7();
-        // Whole: every R at once, the positioner's own untouched.
+        // A block begun and left: a direct write of a register still goes in at once.
+        begin(11, bytes, crc32(bytes));
+        const std::uint16_t r9[] = {99, 0};
+        QVERIFY(im.write(5018, r9) == Exception::None);
+        QCOMPARE(b.ctl->r(9), 99);
+        // Whole: every writable R at once, the positioner's own untouched.
         const std::int32_t nesting = b.ctl->r(158);
-        head(registersCrc(sent));
-        begin();
-        writeAll();
+        begin(11, bytes, crc32(bytes));
+        windows(bytes, bytes.size());
         QVERIFY(im.write(7000, commit) == Exception::None);
         QCOMPARE(status(), std::uint16_t{2});
         QCOMPARE(b.ctl->r(5), 55);
+        QCOMPARE(b.ctl->r(9), 0);
         QCOMPARE(b.ctl->r(200), 2000);
         QCOMPARE(b.ctl->r(231), -3);
         QCOMPARE(b.ctl->r(158), nesting);
-        // The C block the same way: a bad value refused as it is written (03), nothing held of it.
+        // The C block the same way; a value outside table Е.1 refuses it whole
+        // (18, 7003 = the constant's number).
         std::vector<std::uint16_t> c = packC(map, b.ctl->c());
-        c[10] = static_cast<std::uint16_t>(c[10] + 1); // C26 КОЭФФ.
-        const std::uint32_t ccrc = registersCrc(c);
-        const std::uint16_t ch[] = {117, 0, lowWord(ccrc), highWord(ccrc)};
-        QVERIFY(im.write(7004, ch) == Exception::None);
-        const std::uint16_t stageC[] = {10};
-        QVERIFY(im.write(7000, stageC) == Exception::None);
+        c[10] = static_cast<std::uint16_t>(c[10] + 1); // C26
         std::vector<std::uint16_t> wrong = c;
         wrong[1] = 9; // C17 N ДОС: 1..4
-        QVERIFY(im.write(4100, wrong) == Exception::IllegalValue);
-        QVERIFY(im.write(4100, c) == Exception::None);
+        const std::string bad = registerBytes(wrong);
+        begin(10, bad, crc32(bad));
+        windows(bad, bad.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        std::vector<std::uint16_t> st;
+        im.read(7002, 2, st);
+        QCOMPARE(st[0], std::uint16_t{18});
+        QCOMPARE(st[1], std::uint16_t{17});
         QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
+        const std::string good = registerBytes(c);
+        begin(10, good, crc32(good));
+        windows(good, good.size());
         QVERIFY(im.write(7000, commit) == Exception::None);
         QCOMPARE(status(), std::uint16_t{2});
         QCOMPARE(b.ctl->c()[26], b.prof.c[26] + 1);

@@ -219,6 +219,18 @@ private slots:
         QVERIFY(!link.read(6000, 1, regs));
         QCOMPARE(regs[0], static_cast<std::uint16_t>(engine::modeKey(c.ctl->mode())));
         QVERIFY(formatFrameLog(master.frameLog()).find("unexpected between exchanges") != std::string::npos);
+        // A late answer's tail in front of the answer, in the same read: dropped, the answer found, no retry.
+        n = 0;
+        bus.damage = [&](Bytes& b) {
+            if (n++ == 0)
+                b.insert(b.begin(), {0x34, 0x01, 0x03, 0x02, 0x12});
+        };
+        const std::int64_t retriesBefore = link.stats().retries;
+        QVERIFY(!link.read(6000, 1, regs));
+        QCOMPARE(regs[0], static_cast<std::uint16_t>(engine::modeKey(c.ctl->mode())));
+        QCOMPARE(link.stats().retries, retriesBefore);
+        QVERIFY(formatFrameLog(master.frameLog()).find("before the answer") != std::string::npos);
+        bus.damage = {};
 
         // Exceptions by code.
         const std::uint16_t v[] = {1};
