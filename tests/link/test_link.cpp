@@ -8,6 +8,7 @@
 #include "engine/ideal_machine.h"
 #include "link/client.h"
 #include "link/image.h"
+#include "link/monitor.h"
 #include "profile/builtin.h"
 #include "program/formatter.h"
 #include "program/parser.h"
@@ -691,6 +692,51 @@ private slots:
         QCOMPARE(b.image->commits(), commits);
         e = planProgramFile(link, "N1 G1 X1\n", "none.k528", plan);
         QCOMPARE(e.kind, LinkError::Kind::Input);
+    }
+    void monitorReadsEveryViewsDataAndSaysWhatChanged() {
+        Bench b;
+        ImageTransport t(*b.image);
+        Link link(t);
+        Monitor m;
+        Monitor::Changes ch;
+        // The first 2.5 s: the live state, both halves of the words, C, all of R.
+        for (int i = 0; i < 25; ++i)
+            QVERIFY(!m.tick(link, ch));
+        QVERIFY(m.haveLive() && m.haveWords());
+        QVERIFY(m.rRevision() > 0);
+        QVERIFY(m.cRevision() > 0);
+        QCOMPARE(m.c()[26], b.prof.c[26]);
+        QCOMPARE(m.words().word(1906), b.ctl->words().word(1906));
+        // Nothing moves: no revision changes, no change reported.
+        const std::uint64_t r0 = m.rRevision(), c0 = m.cRevision();
+        for (int i = 0; i < 120; ++i) {
+            QVERIFY(!m.tick(link, ch));
+            QVERIFY(!ch.r && !ch.c);
+        }
+        QCOMPARE(m.rRevision(), r0);
+        QCOMPARE(m.cRevision(), c0);
+        // An R set on the panel shows within a round of the R block (2.5 s).
+        QVERIFY(b.ctl->setR(120, 4321).ok());
+        bool seen = false;
+        for (int i = 0; i < 26 && !seen; ++i) {
+            QVERIFY(!m.tick(link, ch));
+            seen = m.r()[120] == 4321;
+            QVERIFY(!seen || ch.r);
+        }
+        QVERIFY(seen);
+        QVERIFY(m.rRevision() > r0);
+        // After a push or a clear: all of the memory again at once.
+        b.f7();
+        QVERIFY(b.ctl->clearCParameters().ok());
+        m.memoryChanged();
+        seen = false;
+        for (int i = 0; i < 6 && !seen; ++i) {
+            QVERIFY(!m.tick(link, ch));
+            seen = ch.c;
+        }
+        QVERIFY(seen);
+        QCOMPARE(m.c()[26], std::int64_t{0});
+        QCOMPARE(m.live().mode, 7);
     }
 };
 
