@@ -332,6 +332,11 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     }
     case TransferCommand::WriteProgram:
     case TransferCommand::WriteMessages:
+    case TransferCommand::StageC:
+    case TransferCommand::StageR:
+        // A text, or a block's registers, come through the window: held
+        // apart from what the controller keeps, nothing of them counts
+        // before the commit.
         text_.clear();
         phase_ = Phase::Idle;
         if (length_ > map_.transfer.capacityBytes) {
@@ -339,7 +344,10 @@ Exception ControllerImage::command(std::uint16_t cmd) {
             return Exception::None;
         }
         text_.assign(length_, '\0');
-        phase_ = cmd == 2 ? Phase::WritingProgram : Phase::WritingMessages;
+        phase_ = cmd == 2    ? Phase::WritingProgram
+                 : cmd == 4  ? Phase::WritingMessages
+                 : cmd == 10 ? Phase::StagingC
+                             : Phase::StagingR;
         transferProgram_ = programNumber_;
         status_ = TransferStatus::Ready;
         return Exception::None;
@@ -382,20 +390,6 @@ Exception ControllerImage::command(std::uint16_t cmd) {
         status_ = TransferStatus::Committed;
         return Exception::None;
     }
-    case TransferCommand::StageC:
-    case TransferCommand::StageR:
-        // The block's registers come through the window like a text: held
-        // apart from the live ones, so nothing of them counts before the commit.
-        text_.clear();
-        phase_ = Phase::Idle;
-        if (length_ > map_.transfer.capacityBytes) {
-            status_ = TransferStatus::MemoryFull;
-            return Exception::None;
-        }
-        text_.assign(length_, '\0');
-        phase_ = cmd == 10 ? Phase::StagingC : Phase::StagingR;
-        status_ = TransferStatus::Ready;
-        return Exception::None;
     }
     length_ = static_cast<std::uint32_t>(text_.size());
     crc_ = crc32(text_);

@@ -339,49 +339,35 @@ std::string formatFrameLog(const FrameLog& log) {
 
 // --- ModbusMaster -----------------------------------------------------------
 
-Reply ModbusMaster::read(int first, int count, std::vector<std::uint16_t>& out) {
-    const Bytes req = modbus::readRequest(first, count);
-    Bytes resp;
-    Reply r = exchange(req, resp);
+template <class Decode> Reply ModbusMaster::ask(const Bytes& request, Decode&& decode) {
+    Bytes response;
+    const Reply r = exchange(request, response);
     if (!r.ok())
         return r;
-    Reply d = modbus::decodeRegisters(req, resp, out);
+    Reply d = decode(response);
     d.roundTripMs = r.roundTripMs;
     return d;
 }
 
+Reply ModbusMaster::read(int first, int count, std::vector<std::uint16_t>& out) {
+    const Bytes req = modbus::readRequest(first, count);
+    return ask(req, [&](const Bytes& resp) { return modbus::decodeRegisters(req, resp, out); });
+}
+
 Reply ModbusMaster::write(int first, std::span<const std::uint16_t> values) {
     const Bytes req = modbus::writeRequest(first, values);
-    Bytes resp;
-    Reply r = exchange(req, resp);
-    if (!r.ok())
-        return r;
-    Reply d = modbus::decodeWrite(req, resp);
-    d.roundTripMs = r.roundTripMs;
-    return d;
+    return ask(req, [&](const Bytes& resp) { return modbus::decodeWrite(req, resp); });
 }
 
 Reply ModbusMaster::writeRead(int writeFirst, std::span<const std::uint16_t> values, int readFirst, int readCount,
                               std::vector<std::uint16_t>& out) {
     const Bytes req = modbus::writeReadRequest(writeFirst, values, readFirst, readCount);
-    Bytes resp;
-    Reply r = exchange(req, resp);
-    if (!r.ok())
-        return r;
-    Reply d = modbus::decodeRegisters(req, resp, out);
-    d.roundTripMs = r.roundTripMs;
-    return d;
+    return ask(req, [&](const Bytes& resp) { return modbus::decodeRegisters(req, resp, out); });
 }
 
 Reply ModbusMaster::diagnostics(std::uint16_t sub, std::uint16_t data, std::uint16_t& out) {
     const Bytes req = modbus::diagnosticsRequest(sub, data);
-    Bytes resp;
-    Reply r = exchange(req, resp);
-    if (!r.ok())
-        return r;
-    Reply d = modbus::decodeDiagnostics(req, resp, out);
-    d.roundTripMs = r.roundTripMs;
-    return d;
+    return ask(req, [&](const Bytes& resp) { return modbus::decodeDiagnostics(req, resp, out); });
 }
 
 Reply ModbusMaster::echo(std::uint16_t value) {
@@ -396,14 +382,7 @@ Reply ModbusMaster::echo(std::uint16_t value) {
 }
 
 Reply ModbusMaster::serverId(ServerId& out) {
-    const Bytes req = modbus::serverIdRequest();
-    Bytes resp;
-    Reply r = exchange(req, resp);
-    if (!r.ok())
-        return r;
-    Reply d = modbus::decodeServerId(resp, out);
-    d.roundTripMs = r.roundTripMs;
-    return d;
+    return ask(modbus::serverIdRequest(), [&](const Bytes& resp) { return modbus::decodeServerId(resp, out); });
 }
 
 bool ModbusMaster::setStation(int address) {

@@ -173,6 +173,8 @@ protected:
     // One request PDU out, its response PDU back (empty unless ok()).
     virtual Reply exchange(const Bytes& request, Bytes& response) = 0;
     virtual void stationChanged() {}
+    // The exchange of `request`, its response decoded.
+    template <class Decode> Reply ask(const Bytes& request, Decode&& decode);
     WireCount wire_;
     FrameLog log_;
     int station_;
