@@ -198,6 +198,10 @@
         <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
         <translation>Not saved: %1 was changed in the database since revision %2 was opened (%3)</translation>
     </message>
+    <message>
+        <source>%1 is the database this window uses: it is not read as a program</source>
+        <translation>%1 is the database this window uses: it is not read as a program</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -1012,6 +1016,10 @@
         <source>Programs</source>
         <translation>Programs</translation>
     </message>
+    <message>
+        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
+        <translation>Choose the controller's port, speed, parity and address, then Connect.</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>
@@ -1211,10 +1219,6 @@
         <translation>L%1 runs.</translation>
     </message>
     <message>
-        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
-        <translation>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</translation>
-    </message>
-    <message>
         <source>L%1 ended.</source>
         <translation>L%1 ended.</translation>
     </message>
@@ -1273,6 +1277,38 @@
     <message>
         <source>Stopped by a message at %1</source>
         <translation>Stopped by a message at %1</translation>
+    </message>
+    <message>
+        <source>the emergency stop is pressed on the machine's panel</source>
+        <translation>the emergency stop is pressed on the machine's panel</translation>
+    </message>
+    <message>
+        <source>the K923 is in %1, not АВТОМАТ</source>
+        <translation>the K923 is in %1, not АВТОМАТ</translation>
+    </message>
+    <message>
+        <source>the positioner shows message %1: %2</source>
+        <translation>the positioner shows message %1: %2</translation>
+    </message>
+    <message>
+        <source>the PLC did not pass it on (start enable, the machine's messages)</source>
+        <translation>the PLC did not pass it on (start enable, the machine's messages)</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</source>
+        <translation>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</source>
+        <translation>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</translation>
+    </message>
+    <message>
+        <source>«Пуск» is held down on the machine's panel: release it, then Run again.</source>
+        <translation>«Пуск» is held down on the machine's panel: release it, then Run again.</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken: %1.</source>
+        <translation>«Пуск» was not taken: %1.</translation>
     </message>
 </context>
 <context>
@@ -1607,6 +1643,36 @@
     <message>
         <source>%1: the database already holds these programs (revision %2)</source>
         <translation>%1: the database already holds these programs (revision %2)</translation>
+    </message>
+    <message>
+        <source>%1 is the database this window uses: it is not opened as a program</source>
+        <translation>%1 is the database this window uses: it is not opened as a program</translation>
+    </message>
+    <message>
+        <source>%1 is the database this window uses: a program is not written over it</source>
+        <translation>%1 is the database this window uses: a program is not written over it</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2</source>
+        <translation>OK replaces line %1: %2</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2
+Its comment stays: %3</source>
+        <translation>OK replaces line %1: %2
+Its comment stays: %3</translation>
+    </message>
+    <message>
+        <source>OK inserts a new line after line %1.</source>
+        <translation>OK inserts a new line after line %1.</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master</source>
+        <translation>Line %1 replaced by the master</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master; its comment kept</source>
+        <translation>Line %1 replaced by the master; its comment kept</translation>
     </message>
 </context>
 <context>
@@ -2589,6 +2655,10 @@
         <source>The controller on the link takes no keys: press them on its own K923</source>
         <translation>The controller on the link takes no keys: press them on its own K923</translation>
     </message>
+    <message>
+        <source>Debugger</source>
+        <translation>Debugger</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3006,10 +3076,88 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopDatabase</name>
+    <message>
+        <source>permission denied</source>
+        <translation>permission denied</translation>
+    </message>
+    <message>
+        <source>no permission to create files in its folder</source>
+        <translation>no permission to create files in its folder</translation>
+    </message>
+    <message>
+        <source>read-only file system</source>
+        <translation>read-only file system</translation>
+    </message>
+    <message>
+        <source>opened read-only</source>
+        <translation>opened read-only</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); nothing was written.</source>
+        <translation>The database is read-only: %1 (%2); nothing was written.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); a new database cannot be created there.</source>
+        <translation>The database is read-only: %1 (%2); a new database cannot be created there.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
+        <translation>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
+        <translation>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
         <translation>simulated %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Workspaces</name>
+    <message>
+        <source>&amp;Workspace</source>
+        <translation>&amp;Workspace</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Reset layout</translation>
+    </message>
+    <message>
+        <source>The current workspace's docks where they were at first</source>
+        <translation>The current workspace's docks where they were at first</translation>
+    </message>
+    <message>
+        <source>Workspace: the window arranged for its user</source>
+        <translation>Workspace: the window arranged for its user</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Operator</translation>
+    </message>
+    <message>
+        <source>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</source>
+        <translation>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</translation>
+    </message>
+    <message>
+        <source>Technologist</source>
+        <translation>Technologist</translation>
+    </message>
+    <message>
+        <source>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</source>
+        <translation>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
+        <translation>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</translation>
     </message>
 </context>
 <context>
@@ -3108,6 +3256,13 @@
     <message>
         <source>No segment here</source>
         <translation>No segment here</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>No OpenGL context for the backplot</translation>
     </message>
 </context>
 </TS>

@@ -198,6 +198,10 @@
         <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
         <translation>Не сохранено: %1 изменён в базе после того, как была открыта ревизия %2 (%3)</translation>
     </message>
+    <message>
+        <source>%1 is the database this window uses: it is not read as a program</source>
+        <translation>%1 — база данных, с которой работает это окно: как программа она не читается</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -1012,6 +1016,10 @@
         <source>Programs</source>
         <translation>Программы</translation>
     </message>
+    <message>
+        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
+        <translation>Выберите порт контроллера, скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>
@@ -1211,10 +1219,6 @@
         <translation>L%1 выполняется.</translation>
     </message>
     <message>
-        <source>«Пуск» was not taken by the positioner (start enable, the PLC's messages).</source>
-        <translation>«Пуск» не принят позиционером (деблокировка пуска, сообщения ПЛК).</translation>
-    </message>
-    <message>
         <source>L%1 ended.</source>
         <translation>L%1 закончена.</translation>
     </message>
@@ -1273,6 +1277,38 @@
     <message>
         <source>Stopped by a message at %1</source>
         <translation>Остановлена сообщением в %1</translation>
+    </message>
+    <message>
+        <source>the emergency stop is pressed on the machine's panel</source>
+        <translation>на пульте станка нажат аварийный стоп</translation>
+    </message>
+    <message>
+        <source>the K923 is in %1, not АВТОМАТ</source>
+        <translation>K923 в режиме %1, а не АВТОМАТ</translation>
+    </message>
+    <message>
+        <source>the positioner shows message %1: %2</source>
+        <translation>позиционер выдаёт сообщение %1: %2</translation>
+    </message>
+    <message>
+        <source>the PLC did not pass it on (start enable, the machine's messages)</source>
+        <translation>ПЛК его не передал (деблокировка пуска, сообщения станка)</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</source>
+        <translation>Станок на паузе (Станок &gt; Пауза): запуск продолжится, когда станок пойдёт.</translation>
+    </message>
+    <message>
+        <source>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</source>
+        <translation>Станок на паузе (Станок &gt; Пауза): программа продолжится, когда станок пойдёт.</translation>
+    </message>
+    <message>
+        <source>«Пуск» is held down on the machine's panel: release it, then Run again.</source>
+        <translation>Кнопка «Пуск» на пульте станка нажата: отпустите её и снова нажмите «Выполнить».</translation>
+    </message>
+    <message>
+        <source>«Пуск» was not taken: %1.</source>
+        <translation>«Пуск» не принят: %1.</translation>
     </message>
 </context>
 <context>
@@ -1607,6 +1643,36 @@
     <message>
         <source>%1: the database already holds these programs (revision %2)</source>
         <translation>%1: в базе уже эти программы (ревизия %2)</translation>
+    </message>
+    <message>
+        <source>%1 is the database this window uses: it is not opened as a program</source>
+        <translation>%1 — база данных, с которой работает это окно: как программа она не открывается</translation>
+    </message>
+    <message>
+        <source>%1 is the database this window uses: a program is not written over it</source>
+        <translation>%1 — база данных, с которой работает это окно: программа поверх неё не записывается</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2</source>
+        <translation>ОК заменит строку %1: %2</translation>
+    </message>
+    <message>
+        <source>OK replaces line %1: %2
+Its comment stays: %3</source>
+        <translation>ОК заменит строку %1: %2
+Её комментарий останется: %3</translation>
+    </message>
+    <message>
+        <source>OK inserts a new line after line %1.</source>
+        <translation>ОК вставит новую строку после строки %1.</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master</source>
+        <translation>Строка %1 заменена мастером</translation>
+    </message>
+    <message>
+        <source>Line %1 replaced by the master; its comment kept</source>
+        <translation>Строка %1 заменена мастером; её комментарий сохранён</translation>
     </message>
 </context>
 <context>
@@ -2589,6 +2655,10 @@
         <source>The controller on the link takes no keys: press them on its own K923</source>
         <translation>Контроллер на линии не принимает клавиши: нажимайте их на его собственном К923</translation>
     </message>
+    <message>
+        <source>Debugger</source>
+        <translation>Отладчик</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3006,10 +3076,88 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopDatabase</name>
+    <message>
+        <source>permission denied</source>
+        <translation>нет права на запись</translation>
+    </message>
+    <message>
+        <source>no permission to create files in its folder</source>
+        <translation>нет права создавать файлы в её папке</translation>
+    </message>
+    <message>
+        <source>read-only file system</source>
+        <translation>файловая система только для чтения</translation>
+    </message>
+    <message>
+        <source>opened read-only</source>
+        <translation>открыта только для чтения</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); nothing was written.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); ничего не записано.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); a new database cannot be created there.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); создать там новую базу данных нельзя.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); её схема старше схемы этой программы, и обновить её нельзя.</translation>
+    </message>
+    <message>
+        <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
+        <translation>База данных доступна только для чтения: %1 (%2); в ней незавершённая транзакция, откатить которую может только пользователь с правом записи.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
         <translation>имитация %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Workspaces</name>
+    <message>
+        <source>&amp;Workspace</source>
+        <translation>&amp;Рабочее место</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Исходное расположение</translation>
+    </message>
+    <message>
+        <source>The current workspace's docks where they were at first</source>
+        <translation>Панели текущего рабочего места — на исходные места</translation>
+    </message>
+    <message>
+        <source>Workspace: the window arranged for its user</source>
+        <translation>Рабочее место: окно, устроенное для своего пользователя</translation>
+    </message>
+    <message>
+        <source>Operator</source>
+        <translation>Оператор</translation>
+    </message>
+    <message>
+        <source>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</source>
+        <translation>У станка: K923, пульт станка, выполняемая программа, сообщения и оси</translation>
+    </message>
+    <message>
+        <source>Technologist</source>
+        <translation>Технолог</translation>
+    </message>
+    <message>
+        <source>Programs: the editor with its problems and outline, the backplot; the debugger and the controller from the View menu</source>
+        <translation>Программы: редактор с проблемами и структурой, траектория; отладчик и контроллер — из меню «Вид»</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
+        <translation>Обучение на станке: пульт станка, K923, траектория и осциллограф</translation>
     </message>
 </context>
 <context>
@@ -3108,6 +3256,13 @@
     <message>
         <source>No segment here</source>
         <translation>Здесь нет отрезка</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::backplot::VtkGlWidget</name>
+    <message>
+        <source>No OpenGL context for the backplot</source>
+        <translation>Нет контекста OpenGL для траектории</translation>
     </message>
 </context>
 </TS>

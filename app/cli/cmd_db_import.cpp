@@ -119,7 +119,7 @@ int cmdImport(std::span<const std::string> argv) {
         return fail(std::string(e.what()) + " (nothing was imported)", ExitInputErrors);
     }
     DbTarget t;
-    auto d = openDbOf(a, t, true, o.author);
+    auto d = openDbOf(a, t, true, o.author, lang);
     if (!d)
         return ExitUsage;
     const std::string machine = format == "csv" ? *asName : p.name;
@@ -159,7 +159,7 @@ int cmdImport(std::span<const std::string> argv) {
         }
         return ExitInputErrors;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, lang);
     }
 }
 

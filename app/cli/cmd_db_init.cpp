@@ -17,16 +17,23 @@
 namespace k528::cli::dbcli {
 
 int cmdInit(std::span<const std::string> argv) {
-    const Args a(argv, {}, {"--db"});
+    const Args a(argv, {}, {"--db", "--lang"});
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
         return usageError("db init takes no arguments");
+    Lang lang;
+    if (!parseLangOption(a, lang))
+        return ExitUsage;
     DbTarget t;
-    auto d = openDbOf(a, t, true);
+    auto d = openDbOf(a, t, true, {}, lang);
     if (!d)
         return ExitUsage;
     const auto& r = d->openReport();
+    // A file this user may only read: nothing to do when it is up to date,
+    // an upgrade it cannot make is said.
+    if (d->readOnly() != db::ReadOnlyReason::None && r.version < db::latestSchemaVersion())
+        return dbFail(db::ReadOnlyError(t.path, d->readOnly(), db::ReadOnlyRefusal::Upgrade), lang);
     std::string s = "database  " + t.path.string() + "\n";
     s += "schema    version " + std::to_string(r.version);
     if (r.created)
@@ -42,6 +49,10 @@ int cmdInit(std::span<const std::string> argv) {
             s += (i ? ", " : "") + r.seeded[i];
         s += " (built-in machines)\n";
     }
+    if (r.recovered)
+        s += "recovered " + t.path.string() + "-journal: an interrupted transaction was rolled back\n";
+    if (d->readOnly() != db::ReadOnlyReason::None)
+        s += "access    read-only (" + std::string(db::readOnlyReasonText(d->readOnly())) + ")\n";
     s += "machines  " + std::to_string(d->machines().size()) + "\n";
     out(s);
     return ExitOk;

@@ -130,7 +130,7 @@ int cmdSet(std::span<const std::string> argv) {
                               "' and '" + item + "'); give each item once");
     }
     DbTarget t;
-    auto d = openDbOf(a, t, false, a.value("--author").value_or(""));
+    auto d = openDbOf(a, t, false, a.value("--author").value_or(""), lang);
     if (!d)
         return ExitUsage;
     const std::string machine = a.positional()[0];
@@ -145,7 +145,7 @@ int cmdSet(std::span<const std::string> argv) {
         printRejection(e, lang, "  ");
         return ExitInputErrors;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, lang);
     }
 }
 

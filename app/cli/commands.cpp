@@ -47,7 +47,7 @@ std::span<const Command> commands() {
          kDbDetails, runDb},
         {"run",
          "run [--json] [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]... [--no-home]\n"
-         "           [--override PCT] [--max-seconds S] [--m0-wait S] [--number N] [--lang ru|en] FILE",
+         "           [--no-check] [--override PCT] [--max-seconds S] [--m0-wait S] [--number N] [--lang ru|en] FILE",
          "Run a program on the simulated machine, headless, and report the end state.",
          "Options:\n"
          "  --json               print the end state as JSON (cli.md)\n"
@@ -59,6 +59,8 @@ std::span<const Command> commands() {
          "  --param N=V          machine constant C<N> for this run (repeatable)\n"
          "  --r N=V              preset R<N> before the start (repeatable)\n"
          "  --no-home            skip the reference-point cycles (a program then needs АВТ.БЕЗ ПБТ)\n"
+         "  --no-check           run the file as the controller holds it, without the rules of\n"
+         "                       `k528 check`: a refused frame raises its alarm when reached\n"
          "  --override PCT       feed override: 0 1 2 5 10 20 35 50 75 90 100 (default 100)\n"
          "  --max-seconds S      simulated-time limit of the program (default 3600): status timeout\n"
          "  --m0-wait S          seconds an operator waits at M00 before «Пуск» (default 0)\n"

@@ -132,9 +132,45 @@ int fail(const std::string& message, int code) {
     return code;
 }
 
-int dbFail(const db::Error& e) {
+std::string readOnlyText(const db::ReadOnlyError& e, Lang lang) {
+    if (lang == Lang::En)
+        return e.what();
+    std::string reason;
+    switch (e.reason()) {
+    case db::ReadOnlyReason::None:
+    case db::ReadOnlyReason::Permission:
+        reason = "нет права на запись";
+        break;
+    case db::ReadOnlyReason::Folder:
+        reason = "нет права создавать файлы в её папке";
+        break;
+    case db::ReadOnlyReason::FileSystem:
+        reason = "файловая система только для чтения";
+        break;
+    case db::ReadOnlyReason::Requested:
+        reason = "открыта только для чтения";
+        break;
+    }
+    std::string s = "база данных доступна только для чтения: " + e.path().string() + " (" + reason + ")";
+    switch (e.refusal()) {
+    case db::ReadOnlyRefusal::Write:
+        return s + "; ничего не записано";
+    case db::ReadOnlyRefusal::Create:
+        return s + "; создать там новую базу данных нельзя";
+    case db::ReadOnlyRefusal::Upgrade:
+        return s + "; её схема старше схемы этой программы, и обновить её нельзя";
+    case db::ReadOnlyRefusal::Recover:
+        return s + "; в ней незавершённая транзакция (горячий журнал -journal), откатить "
+                   "которую может только пользователь с правом записи; файл не изменён";
+    }
+    return s;
+}
+
+int dbFail(const db::Error& e, Lang lang) {
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty())
         return fail(e.what(), ExitInputErrors);
+    if (const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e))
+        return fail(readOnlyText(*r, lang), ExitUsage);
     return fail(e.what(), e.kind() == db::ErrorKind::Invalid ? ExitInputErrors : ExitUsage);
 }
 
@@ -180,14 +216,15 @@ bool dbTarget(const Args& a, DbTarget& t) {
 
 // Opens the database. The default location is created on first use (with its
 // folder); an explicit --db path only by init and import.
-std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate, const std::string& author) {
+std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate, const std::string& author,
+                                     Lang lang) {
     if (!dbTarget(a, t))
         return std::nullopt;
-    return openDb(t, mayCreate, author);
+    return openDb(t, mayCreate, author, lang);
 }
 
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
-                                   const std::string& author) {
+                                   const std::string& author, Lang lang) {
     std::error_code ec;
     const bool exists = fs::exists(t.path, ec);
     if (!exists && t.explicitPath && !mayCreate) {
@@ -207,7 +244,7 @@ std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
         o.author = author;
         return db::Database::open(t.path, o);
     } catch (const db::Error& e) {
-        fail(e.what());
+        dbFail(e, lang);
         return std::nullopt;
     }
 }

@@ -54,7 +54,11 @@ Json changeJson(const profile::Change& c);
 
 int fail(const std::string& message, int code = ExitUsage);
 
-int dbFail(const db::Error& e);
+// Prints the error (a read-only database in `lang`); returns the exit code.
+int dbFail(const db::Error& e, Lang lang = Lang::Ru);
+
+// «база данных доступна только для чтения: PATH (нет права на запись); …»
+std::string readOnlyText(const db::ReadOnlyError& e, Lang lang);
 
 bool parseLangOption(const Args& a, Lang& lang);
 
@@ -64,12 +68,12 @@ bool dbTarget(const Args& a, DbTarget& t);
 // Opens the database. The default location is created on first use (with its
 // folder); an explicit --db path only by init and import.
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
-                                   const std::string& author = {});
+                                   const std::string& author = {}, Lang lang = Lang::Ru);
 
 // dbTarget and openDb together: the database the command's --db names (its
 // path into `t`), or nullopt after printing why (exit ExitUsage).
 std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate,
-                                     const std::string& author = {});
+                                     const std::string& author = {}, Lang lang = Lang::Ru);
 
 // "grinder-205@3" -> name, revision; a usage error printed when bad.
 std::optional<MachineRef> parseRef(const std::string& s);

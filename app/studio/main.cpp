@@ -5,11 +5,18 @@
 #include <QScreen>
 #include <QTimer>
 #include <cstdio>
+#include <memory>
 
 #include "backplot/vtk_gl_widget.h"
+#include "editor/debug_panel.h"
+#include "editor/debug_session.h"
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "session/simulation_session.h"
 #include "language.h"
 #include "link_plugins.h"
 #include "main_window.h"
+#include "workspace/workspaces.h"
 #include "profile/builtin.h"
 #include "session/machine_source.h"
 #include "util/version.h"
@@ -36,9 +43,17 @@ int main(int argc, char** argv) {
         "Machine to simulate: a machine of the database, a built-in profile (training-lathe, "
         "grinder-205) or a machine file (default: the last one chosen, else training-lathe).",
         "name|path");
+    QCommandLineOption workspaceOption(
+        "workspace", "Workspace to start in: operator, technologist or training (default: the one left last time).",
+        "name");
     QCommandLineOption pluginsOption("list-plugins",
                                      "List the controller-link plugins found (the Controller menu's) and exit.");
-    cli.addOptions({langOption, profileOption, shotOption, delayOption, pluginsOption});
+    QCommandLineOption runOption("run",
+                                 "Open a program file in the editor and run its first program on the "
+                                 "simulated machine, as the debugger's Run does (drives on, homing, "
+                                 "AUTOMATIC, Start).",
+                                 "file.k528");
+    cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, pluginsOption, runOption});
     cli.process(app);
     if (cli.isSet(pluginsOption)) {
         for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
@@ -74,8 +89,37 @@ int main(int argc, char** argv) {
     }
     auto* window = new k528::studio::MainWindow(machine);
     window->setAttribute(Qt::WA_DeleteOnClose);
+    if (cli.isSet(workspaceOption) && !window->workspaces()->activate(cli.value(workspaceOption))) {
+        std::fprintf(stderr, "k528studio: unknown workspace '%s' (use operator, technologist or training)\n",
+                     qPrintable(cli.value(workspaceOption)));
+        return 2;
+    }
+    window->placeOnScreen();
     window->show();
 
+    if (cli.isSet(runOption)) {
+        const QString file = cli.value(runOption);
+        QTimer::singleShot(0, window, [window, file] {
+            k528::studio::EditorTab* editor = window->programEditor();
+            k528::studio::DebugPanel* debug = editor->debugPanel();
+            if (!editor->openFile(file) || !debug || !debug->run()) {
+                std::fprintf(stderr, "k528studio: --run: %s cannot be run (see the status bar)\n",
+                             qPrintable(file));
+                return;
+            }
+            // Said once the program is under way (bench/studio_cpu.cpp waits for it).
+            k528::studio::DebugSession* session = debug->debugger();
+            auto said = std::make_shared<bool>(false);
+            QObject::connect(session, &k528::studio::DebugSession::changed, window, [session, said] {
+                if (!*said && session->phase() == k528::studio::DebugSession::Phase::Active) {
+                    *said = true;
+                    std::fprintf(stderr, "k528studio: --run: L%d runs\n",
+                                 session->session()->controller().programView().program);
+                    std::fflush(stderr);
+                }
+            });
+        });
+    }
     if (cli.isSet(shotOption)) {
         const QString file = cli.value(shotOption);
         QTimer::singleShot(cli.value(delayOption).toInt(), &app, [file] {

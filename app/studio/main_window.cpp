@@ -34,9 +34,18 @@
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
+#include "editor/debug_panel.h"
+#include "workspace/elided_label.h"
+#include "workspace/panel_scaler.h"
+#include "workspace/screen_fit.h"
+#include "workspace/standard_workspaces.h"
+#include "workspace/workspaces.h"
 
+#include <QCloseEvent>
 #include <QScrollArea>
+#include <QSettings>
 #include <QTimer>
+#include <QWindow>
 
 namespace k528::studio {
 
@@ -54,6 +63,7 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     setCentralWidget(workArea_);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     session_ = new SimulationSession(machine_.profile, this);
+    session_->watchInput(); // an input wakes the idle machine's frames (simulation_session.h)
     simController_ = new SimulatedController(*session_, this);
     viewed_ = simController_;
     programMonitor_ = new ProgramMonitor(*viewed_, workArea_);
@@ -62,11 +72,15 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     workArea_->addTab(programEditor_, QString());
     connect(programEditor_, &EditorTab::statusMessage, this, [this](const QString& m) { statusBar()->showMessage(m, 10000); });
     createDocks();
+    createWorkspaces();
     createMenus();
-    machineLabel_ = new QLabel(this);
+    // The status bar's permanent texts are cut rather than widen the window
+    // (a database path can be long).
+    machineLabel_ = new ElidedLabel(this, Qt::ElideMiddle);
     machineLabel_->setObjectName("status.machine");
-    statusBar()->addPermanentWidget(machineLabel_);
-    timeLabel_ = new QLabel(this);
+    statusBar()->addPermanentWidget(machineLabel_, 1);
+    machineLabel_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    timeLabel_ = new ElidedLabel(this);
     timeLabel_->setObjectName("status.machineTime");
     statusBar()->addPermanentWidget(timeLabel_);
     connect(session_, &SimulationSession::advanced, this, [this] {
@@ -79,7 +93,57 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
             timeLabel_->setText(t);
     });
     retranslate();
-    resize(1280, 800);
+    assignFileShortcuts();
+    connect(workArea_, &QTabWidget::currentChanged, this, &MainWindow::assignFileShortcuts);
+    resize(availableArea(this).size().boundedTo(QSize(1280, 800)));
+}
+
+void MainWindow::createWorkspaces() {
+    // Where each dock was added: its home when a workspace does not place it.
+    for (QDockWidget* d : findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly))
+        d->setProperty("k528.homeArea", static_cast<int>(dockWidgetArea(d)));
+    workspaces_ = new Workspaces(this, workArea_);
+    for (WorkspaceSpec& s : standardWorkspaces(availableArea(this).size()))
+        workspaces_->add(std::move(s));
+    connect(workspaces_, &Workspaces::activated, this, &MainWindow::assignFileShortcuts);
+    menuBar()->setCornerWidget(workspaces_->switcher(), Qt::TopRightCorner);
+    // Until placeOnScreen() chooses: the one that fits the screen.
+    const QString saved = QSettings().value("workspaces/current").toString();
+    workspaces_->activate(workspaces_->spec(saved) ? saved : Workspaces::firstChoice(availableArea(this).size()));
+}
+
+void MainWindow::assignFileShortcuts() {
+    if (!workspaces_ || !keepAction_)
+        return;
+    const bool editorShown = !workArea_->isHidden() && workArea_->currentWidget() == programEditor_;
+    programEditor_->openAction()->setShortcut(editorShown ? QKeySequence(QKeySequence::Open) : QKeySequence());
+    programEditor_->saveAction()->setShortcut(editorShown ? QKeySequence(QKeySequence::Save) : QKeySequence());
+    loadProgramsAction_->setShortcut(editorShown ? QKeySequence() : QKeySequence(QKeySequence::Open));
+    keepAction_->setShortcut(editorShown ? QKeySequence() : QKeySequence(QKeySequence::Save));
+}
+
+void MainWindow::placeOnScreen() {
+    const QRect area = availableArea(this);
+    QSettings s;
+    const QByteArray kept = s.value("window/geometry").toByteArray();
+    if (kept.isEmpty() || !restoreGeometry(kept))
+        setGeometry(area);
+    if (kept.isEmpty())
+        setWindowState(windowState() | Qt::WindowMaximized);
+    keepOnScreen();
+    workspaces_->reload(); // the shares are of the window's size now
+    if (QWindow* w = windowHandle())
+        connect(w, &QWindow::screenChanged, this, &MainWindow::keepOnScreen, Qt::UniqueConnection);
+}
+
+void MainWindow::keepOnScreen() { keepInside(this, availableArea(this)); }
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    // What the user arranged, for the next start (also when the close is
+    // refused: it costs nothing).
+    workspaces_->save();
+    QSettings().setValue("window/geometry", saveGeometry());
+    QMainWindow::closeEvent(event);
 }
 
 QDockWidget* MainWindow::addDock(const char* objectName, Qt::DockWidgetArea area) {
@@ -119,8 +183,9 @@ void MainWindow::createDocks() {
     scroll->setFrameShape(QFrame::NoFrame);
     machinePanel_ = new MachinePanelWidget(*session_, scroll);
     scroll->setWidget(machinePanel_);
-    scroll->setMinimumWidth(machinePanel_->minimumSizeHint().width() + 16);
     machineDock_->setWidget(scroll);
+    // The panel scales to its dock (it scrolls only below 60 %).
+    new PanelScaler(scroll, [this](QSize room) { machinePanel_->fitTo(room); });
     // The machine's panel beside the K923, as on the shop floor.
     splitDockWidget(k923Dock_, machineDock_, Qt::Horizontal);
     messagesDock_ = addDock("dock.messages", Qt::BottomDockWidgetArea);
@@ -133,8 +198,6 @@ void MainWindow::createDocks() {
     axesDock_->setWidget(axesView_);
     tabifyDockWidget(messagesDock_, axesDock_);
     messagesDock_->raise();
-    for (QDockWidget* d : {messagesDock_, axesDock_})
-        d->setMaximumHeight(140);
     QDockWidget* backplotDock = backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
     if (auto* bp = backplotDock->findChild<backplot::BackplotWidget*>()) {
         // A picked segment: the editor goes to its line (else the Program tab
@@ -164,7 +227,18 @@ void MainWindow::createDocks() {
     addConstantsDock(this, *session_); // constants/constants_dock.cpp
     addRParamsDock(this, *session_);   // rparams/rparams_dock.cpp
     addHistoryDock(this, *session_); // history/history_dock.cpp
-
+    // The debugger of the editor in a dock of its own (the technologist
+    // shows it on demand).
+    debuggerDock_ = addDock("dock.debugger", Qt::RightDockWidgetArea);
+    if (DebugPanel* debug = programEditor_->debugPanel()) {
+        delete debuggerDock_->widget();
+        debuggerDock_->setWidget(debug); // out of the editor's splitter
+    }
+    // A content that cannot shrink scrolls inside its dock rather than
+    // widen the window (the K923 and the machine's panel scale instead).
+    for (QDockWidget* d : findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly))
+        if (d != k923Dock_ && d != machineDock_ && d != messagesDock_)
+            scrollInside(d);
 }
 
 void MainWindow::setViewedController(Controller* controller) {
@@ -202,6 +276,8 @@ void MainWindow::createMenus() {
 
     menuBar()->addMenu(programEditor_->editorMenu()); // the Editor tab's tools (editor_tab_tools.cpp)
     viewMenu_ = menuBar()->addMenu(QString());
+    viewMenu_->addMenu(workspaces_->menu());
+    viewMenu_->addSeparator();
     for (QDockWidget* d : {k923Dock_, machineDock_, messagesDock_, axesDock_})
         viewMenu_->addAction(d->toggleViewAction());
     if (auto* d = findChild<QDockWidget*>("dock.backplot"))
@@ -213,6 +289,7 @@ void MainWindow::createMenus() {
             viewMenu_->addAction(d->toggleViewAction());
     if (auto* history = findChild<QDockWidget*>("dock.history"))
         viewMenu_->addAction(history->toggleViewAction());
+    viewMenu_->addAction(debuggerDock_->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);
@@ -321,9 +398,11 @@ MainWindow* MainWindow::switchMachine(const QString& name) {
         return nullptr;
     }
     rememberMachine(name);
+    workspaces_->save(); // the new window opens in this workspace, as it is
     auto* w = new MainWindow(choice);
     w->setAttribute(Qt::WA_DeleteOnClose);
     w->setGeometry(geometry());
+    w->keepOnScreen();
     w->show();
     session_->setRunning(false);
     close();
@@ -414,6 +493,7 @@ void MainWindow::retranslate() {
     machineDock_->setWindowTitle(tr("Machine control panel"));
     messagesDock_->setWindowTitle(tr("Messages"));
     axesDock_->setWindowTitle(tr("Axes and signals"));
+    debuggerDock_->setWindowTitle(tr("Debugger"));
     simulationMenu_->setTitle(tr("&Simulation"));
     pauseAction_->setText(tr("&Pause the machine"));
     speedMenu_->setTitle(tr("&Speed"));
@@ -423,19 +503,6 @@ void MainWindow::retranslate() {
     for (int i = 0; i < faultActions_.size(); ++i)
         faultActions_[i]->setText(faultTitle(faults[static_cast<std::size_t>(i)]));
     statusBar()->showMessage(machine_.warning.isEmpty() ? tr("Ready") : machine_.warning);
-}
-
-void MainWindow::showEvent(QShowEvent* event) {
-    QMainWindow::showEvent(event);
-    if (!shown_) {
-        shown_ = true;
-        // The docks on the right get the height; messages and axes a strip:
-        // held low for the first layout, free to resize afterwards.
-        QTimer::singleShot(0, this, [this] {
-            for (QDockWidget* d : {messagesDock_, axesDock_})
-                d->setMaximumHeight(QWIDGETSIZE_MAX);
-        });
-    }
 }
 
 void MainWindow::changeEvent(QEvent* event) {

@@ -1,9 +1,14 @@
-// The K528 Studio main window: a central work area (program, toolpath) and
-// dock areas for the K923 panel, the machine's control panel, messages and
-// axis state. At start-up it builds one simulated machine (SimulationSession
-// on the default profile) that advances with real time; the machine's panel,
-// the messages and the axes docks show it, the Simulation menu pauses it,
-// sets its speed and injects faults for training.
+// The K528 Studio main window: a central work area (the program being run,
+// the editor) and docks (the K923 panel, the machine's control panel,
+// messages, axes, backplot, oscilloscope, debugger, controller, constants,
+// R-parameters, history), arranged by workspaces for the operator, the
+// technologist and the trainee (workspace/workspaces.h; the switch is in the
+// menu bar's corner). It never grows past the screen: the docks' contents
+// scroll or scale, long status texts are elided (workspace/screen_fit.h).
+// At start-up it builds one simulated machine (SimulationSession) that
+// advances with real time; the machine's panel, the messages and the axes
+// docks show it, the Simulation menu pauses it, sets its speed and injects
+// faults for training.
 #pragma once
 
 #include "session/machine_source.h"
@@ -26,6 +31,7 @@ class ProgramMonitor;
 class EditorTab;
 class Controller;
 class SimulatedController;
+class Workspaces;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -63,6 +69,14 @@ public:
     const MachineChoice& machine() const { return machine_; }
     // File > Machine: the machines to choose from (rebuilt as it opens).
     QMenu* machineMenu() const { return machineMenu_; }
+    // The workspaces (operator, technologist, training) and their switch.
+    Workspaces* workspaces() const { return workspaces_; }
+    // The debugger's dock ("dock.debugger": the editor's DebugPanel).
+    QDockWidget* debuggerDock() const { return debuggerDock_; }
+    // Puts the window on its screen: where it was last time (inside the
+    // screen's available area), else filling that area; then the workspace
+    // it was left in, else the one that fits the screen. Call before show().
+    void placeOnScreen();
 
 public slots:
     // Replaces this window by one on machine `name` (database, built-in or
@@ -81,7 +95,7 @@ public slots:
 
 protected:
     void changeEvent(QEvent* event) override;
-    void showEvent(QShowEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     void createDocks();
@@ -90,6 +104,10 @@ private:
     void createSimulationMenu();
     void updateFaultActions();
     void retranslate();
+    void createWorkspaces();
+    // Ctrl+O and Ctrl+S: the editor's while it is the page shown, else File's.
+    void assignFileShortcuts();
+    void keepOnScreen();
     QDockWidget* addDock(const char* objectName, Qt::DockWidgetArea area);
 
     QTabWidget* workArea_ = nullptr;
@@ -121,7 +139,9 @@ private:
     AxesView* axesView_ = nullptr;
     ProgramMonitor* programMonitor_ = nullptr;
     EditorTab* programEditor_ = nullptr;
-    bool shown_ = false;
+    QDockWidget* debuggerDock_ = nullptr;
+    Workspaces* workspaces_ = nullptr;
+    QMenu* workspaceMenu_ = nullptr;
     QAction* quitAction_ = nullptr;
     QAction* loadProgramsAction_ = nullptr;
     QAction* keepAction_ = nullptr;

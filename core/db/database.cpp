@@ -12,11 +12,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <fcntl.h>
 #include <pwd.h>
 #include <set>
 #include <sqlite3.h>
 #include <sstream>
+#include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
 
@@ -96,11 +97,54 @@ std::string_view errorKindName(ErrorKind k) {
         return "conflict";
     case ErrorKind::Invalid:
         return "invalid";
+    case ErrorKind::ReadOnly:
+        return "read-only";
     case ErrorKind::Sql:
         return "sql";
     }
     return "";
 }
+
+std::string_view readOnlyReasonText(ReadOnlyReason r) {
+    switch (r) {
+    case ReadOnlyReason::None:
+        return "";
+    case ReadOnlyReason::Permission:
+        return "permission denied";
+    case ReadOnlyReason::Folder:
+        return "no permission to create files in its folder";
+    case ReadOnlyReason::FileSystem:
+        return "read-only file system";
+    case ReadOnlyReason::Requested:
+        return "opened read-only";
+    }
+    return "";
+}
+
+namespace {
+
+std::string readOnlyMessage(const fs::path& path, ReadOnlyReason reason, ReadOnlyRefusal refusal) {
+    std::string s = "the database is read-only: " + path.string() + " (" +
+                     std::string(readOnlyReasonText(reason)) + ")";
+    switch (refusal) {
+    case ReadOnlyRefusal::Write:
+        return s + "; nothing was written";
+    case ReadOnlyRefusal::Create:
+        return s + "; a new database cannot be created there";
+    case ReadOnlyRefusal::Upgrade:
+        return s + "; its schema is older than this program's and cannot be upgraded";
+    case ReadOnlyRefusal::Recover:
+        return s + "; it has an unfinished transaction (a hot -journal) that only a user who "
+                   "may write the file can roll back; the file was left untouched";
+    }
+    return s;
+}
+
+} // namespace
+
+ReadOnlyError::ReadOnlyError(fs::path path, ReadOnlyReason reason, ReadOnlyRefusal refusal)
+    : Error(ErrorKind::ReadOnly, readOnlyMessage(path, reason, refusal)), path_(std::move(path)),
+      reason_(reason), refusal_(refusal) {}
 
 namespace {
 
@@ -301,7 +345,6 @@ std::string catalogDigest() {
 }
 
 struct FileHeader {
-    bool exists = false;
     bool empty = false;
     std::uint32_t applicationId = 0;
     std::uint32_t userVersion = 0;
@@ -318,18 +361,24 @@ std::string hex32(std::uint32_t v) {
     return buf;
 }
 
-// Looks at the file's first 100 bytes before SQLite opens it: refuses what
-// is certainly not ours without touching it.
-FileHeader readHeader(const fs::path& path, int latest) {
-    FileHeader h;
+// Why open() refuses a file (the caller adds the path and what became of it).
+struct Refusal {
+    ErrorKind kind;
+    std::string what;
+    bool hotJournal = false; // a read-only connection met a hot journal it cannot roll back
+    bool noIndex = false;    // SQLite could not create the -wal/-shm it needs to read
+};
+
+// Whether something is at `path`, from stat() alone: the file is never opened
+// here (see readHeader). Throws Io for a folder or anything but a regular file.
+bool databaseFileExists(const fs::path& path) {
     std::error_code ec;
     const auto st = fs::status(path, ec);
     if (ec || !fs::exists(st)) {
         if (ec && ec != std::errc::no_such_file_or_directory)
             throw Error(ErrorKind::Io, path.string() + ": " + ec.message());
-        return h;
+        return false;
     }
-    h.exists = true;
     if (fs::is_directory(st))
         throw Error(ErrorKind::Io, path.string() + ": is a directory, not a database file");
     if (!fs::is_regular_file(st))
@@ -341,55 +390,111 @@ FileHeader readHeader(const fs::path& path, int latest) {
                          : fs::is_socket(st)       ? "a socket"
                                                    : "not a file") +
                         "); a database is a regular file — give another --db path");
-    const auto size = fs::file_size(path, ec);
-    if (ec)
-        throw Error(ErrorKind::Io, path.string() + ": " + ec.message());
+    return true;
+}
+
+// The file's first 100 bytes, read through the connection's own file handle
+// before any SQL runs: what is certainly not ours is refused without SQLite
+// interpreting it (no journal rollback, no WAL recovery, nothing written).
+// Never through a descriptor of our own (an ifstream): closing it would drop
+// every POSIX lock this process holds on the file — those of its other
+// connections too — and another process could then take itself for the last
+// user and delete the -wal under them (SQLite's "How To Corrupt", 2.2).
+// SQLite's unix VFS keeps its descriptors per file and process and closes
+// none while a lock is held.
+FileHeader readHeader(sqlite3* db, int latest) {
+    sqlite3_file* f = nullptr;
+    if (sqlite3_file_control(db, "main", SQLITE_FCNTL_FILE_POINTER, &f) != SQLITE_OK || !f ||
+        !f->pMethods)
+        throw Refusal{ErrorKind::Io, "cannot be read: SQLite did not open the file"};
+    sqlite3_int64 size = 0;
+    if (const int rc = f->pMethods->xFileSize(f, &size); rc != SQLITE_OK)
+        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc)};
+    FileHeader h;
     if (size == 0) {
         h.empty = true;
         return h;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw Error(ErrorKind::Io, "cannot read " + path.string() + ": " + std::strerror(errno));
     unsigned char buf[100] = {};
-    in.read(reinterpret_cast<char*>(buf), sizeof buf);
-    const auto got = static_cast<std::size_t>(in.gcount());
+    const int got = static_cast<int>(std::min<sqlite3_int64>(size, sizeof buf));
+    if (const int rc = f->pMethods->xRead(f, buf, got, 0); rc != SQLITE_OK)
+        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc)};
     static constexpr char kMagic[] = "SQLite format 3";
     if (got < 100 || std::memcmp(buf, kMagic, sizeof kMagic) != 0)
-        throw Error(ErrorKind::Foreign,
-                    path.string() + ": not a K528 Studio database: " +
-                        (got < 100 ? "the file has only " + std::to_string(got) +
-                                         " bytes, too few for an SQLite database"
-                                   : std::string("the file does not start with the SQLite header "
-                                                 "(another kind of file, or a database whose "
-                                                 "first page is damaged)")) +
-                        "; it was left untouched");
+        throw Refusal{ErrorKind::Foreign,
+                      "not a K528 Studio database: " +
+                          (got < 100 ? "the file has only " + std::to_string(got) +
+                                           " bytes, too few for an SQLite database"
+                                     : std::string("the file does not start with the SQLite header "
+                                                   "(another kind of file, or a database whose "
+                                                   "first page is damaged)"))};
     h.userVersion = be32(buf + 60);
     h.applicationId = be32(buf + 68);
     if (h.applicationId != 0 && h.applicationId != static_cast<std::uint32_t>(kApplicationId))
-        throw Error(ErrorKind::Foreign,
-                    path.string() +
-                        ": not a K528 Studio database: it is another program's SQLite "
-                        "database (application_id " +
-                        hex32(h.applicationId) + ", ours is " +
-                        hex32(static_cast<std::uint32_t>(kApplicationId)) +
-                        "); it was left untouched");
+        throw Refusal{ErrorKind::Foreign,
+                      "not a K528 Studio database: it is another program's SQLite database "
+                      "(application_id " +
+                          hex32(h.applicationId) + ", ours is " +
+                          hex32(static_cast<std::uint32_t>(kApplicationId)) + ")"};
     if (h.applicationId == static_cast<std::uint32_t>(kApplicationId) &&
         h.userVersion > static_cast<std::uint32_t>(latest))
-        throw Error(ErrorKind::TooNew,
-                    path.string() + ": the database has schema version " +
-                        std::to_string(h.userVersion) + ", written by a newer K528 Studio; this " +
-                        "program knows versions up to " + std::to_string(latest) +
-                        ". Use the newer program; the file was left untouched");
+        throw Refusal{ErrorKind::TooNew, "the database has schema version " +
+                                             std::to_string(h.userVersion) +
+                                             ", written by a newer K528 Studio; this program "
+                                             "knows versions up to " +
+                                             std::to_string(latest) + ". Use the newer program"};
     return h;
 }
 
-// Why open() refuses a file (the caller adds the path and what became of it).
-struct Refusal {
-    ErrorKind kind;
-    std::string what;
-    bool hotJournal = false; // a read-only connection met a hot journal it cannot roll back
-};
+// The size in pages the database had when the transaction of a rollback
+// journal began (its header, bytes 16..19); nullopt when the file is not a
+// journal SQLite would play back. Read with a descriptor of our own: SQLite
+// keeps no lock on a -journal (a rollback journal's locks are all on the
+// database file), so closing it drops none.
+std::optional<std::uint32_t> journalStartPages(const fs::path& journal) {
+    const int fd = ::open(journal.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return std::nullopt;
+    unsigned char buf[28] = {};
+    const ssize_t n = ::pread(fd, buf, sizeof buf, 0);
+    ::close(fd);
+    static constexpr unsigned char kJournalMagic[8] = {0xd9, 0xd5, 0x05, 0xf9,
+                                                       0x20, 0xa1, 0x63, 0xd7};
+    if (n != static_cast<ssize_t>(sizeof buf) || std::memcmp(buf, kJournalMagic, 8) != 0)
+        return std::nullopt;
+    return be32(buf + 16);
+}
+
+// Why this process cannot write `path` (access(2) with the effective ids:
+// no open).
+ReadOnlyReason whyReadOnly(const fs::path& path) {
+    const auto denied = [](const fs::path& p) -> std::optional<ReadOnlyReason> {
+        if (::faccessat(AT_FDCWD, p.c_str(), W_OK, AT_EACCESS) == 0)
+            return std::nullopt;
+        return errno == EROFS ? ReadOnlyReason::FileSystem : ReadOnlyReason::Permission;
+    };
+    if (const auto r = denied(path))
+        return *r;
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    if (const auto r = denied(folder))
+        return *r == ReadOnlyReason::Permission ? ReadOnlyReason::Folder : *r;
+    return ReadOnlyReason::Permission; // SQLite refused, for a reason stat() cannot see
+}
+
+// "file:/a%20b/k528.db?mode=ro&immutable=1"
+std::string immutableUri(const fs::path& path) {
+    std::string uri = "file:";
+    for (const char ch : fs::absolute(path).string()) {
+        if (ch == '%' || ch == '?' || ch == '#' || ch == ' ') {
+            char buf[4];
+            std::snprintf(buf, sizeof buf, "%%%02X", static_cast<unsigned char>(ch));
+            uri += buf;
+        } else {
+            uri += ch;
+        }
+    }
+    return uri + "?mode=ro&immutable=1";
+}
 
 struct Checked {
     std::int64_t appId = 0, version = 0, objects = 0;
@@ -406,8 +511,12 @@ Checked inspect(sqlite3* db, int latest) {
         c.version = sql::queryInt(db, "PRAGMA user_version");
         c.objects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
     } catch (const Error& e) {
-        if (sqlite3_extended_errcode(db) == SQLITE_READONLY_ROLLBACK)
+        const int code = sqlite3_extended_errcode(db);
+        if (code == SQLITE_READONLY_ROLLBACK)
             throw Refusal{ErrorKind::Io, e.what(), true};
+        if (code == SQLITE_READONLY_DIRECTORY || code == SQLITE_READONLY_CANTINIT ||
+            code == SQLITE_READONLY_CANTLOCK || (code & 0xff) == SQLITE_CANTOPEN)
+            throw Refusal{ErrorKind::ReadOnly, e.what(), false, true};
         if (e.kind() == ErrorKind::Busy)
             throw Refusal{ErrorKind::Busy, e.what()};
         throw Refusal{ErrorKind::Corrupt,
@@ -533,6 +642,10 @@ struct Database::Impl {
     fs::path path;
     OpenReport report;
     Clock clock;
+    ReadOnlyReason readOnly = ReadOnlyReason::None;
+    bool immutable = false;  // read as a snapshot (see snapshotOutdated)
+    struct timespec snapshotTime {};
+    off_t snapshotSize = 0;
     std::map<std::string, std::unique_ptr<sql::Stmt>, std::less<>> cache;
 
     ~Impl() {
@@ -550,6 +663,11 @@ struct Database::Impl {
     }
 
     std::string now() const { return formatTimestamp(clock()); }
+
+    void requireWritable() const {
+        if (readOnly != ReadOnlyReason::None)
+            throw ReadOnlyError(path, readOnly);
+    }
 
     struct Row {
         std::int64_t id = 0;
@@ -615,9 +733,14 @@ struct Database::Impl {
     void writeSettings(std::int64_t id, const MachineProfile& neu);
 
     // The steps of Database::open():
-    // Connects read-write and inspects the file before anything is written;
-    // a hot journal of ours is rolled back, anything else refused.
-    Checked connectAndInspect(const FileHeader& header, const OpenOptions& options, int latest);
+    // Connects and inspects the file before anything is written; a hot
+    // journal of ours is rolled back, anything else refused. A file this
+    // process may only read gets a read-only connection.
+    Checked connectAndInspect(const OpenOptions& options, int latest);
+    sqlite3* connect(const std::string& target, int flags, int busyTimeoutMs, bool noCheckpoint,
+                     const std::function<std::string()>& untouched) const;
+    // Reconnects read-only to an immutable snapshot of the file.
+    void connectSnapshot(int busyTimeoutMs, const std::function<std::string()>& untouched);
     void applyConnectionSettings();
     // WAL journal mode, retried up to the busy timeout.
     void switchToWal(int busyTimeoutMs);
@@ -667,9 +790,12 @@ private:
 class WriteTx {
 public:
     template <typename D> explicit WriteTx(D& d) : db_(d.db) {
+        d.requireWritable();
         try {
             sql::exec(db_, "BEGIN IMMEDIATE");
         } catch (const Error& e) {
+            if (e.kind() == ErrorKind::ReadOnly)
+                throw ReadOnlyError(d.path, whyReadOnly(d.path));
             if (e.kind() != ErrorKind::Busy)
                 throw;
             throw Error(ErrorKind::Busy, d.path.string() +
@@ -1140,18 +1266,57 @@ Database::Database(Database&&) noexcept = default;
 Database& Database::operator=(Database&&) noexcept = default;
 Database::~Database() = default;
 
-Checked Database::Impl::connectAndInspect(const FileHeader& header, const OpenOptions& options,
-                                          int latest) {
+sqlite3* Database::Impl::connect(const std::string& target, int flags, int busyTimeoutMs,
+                                 bool noCheckpoint,
+                                 const std::function<std::string()>& untouched) const {
+    sqlite3* c = nullptr;
+    const int rc = sqlite3_open_v2(target.c_str(), &c,
+                                   flags | SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_EXRESCODE, nullptr);
+    if (rc != SQLITE_OK) {
+        const std::string msg = c ? sqlite3_errmsg(c) : sqlite3_errstr(rc);
+        sqlite3_close_v2(c);
+        throw Error(ErrorKind::Io, "cannot open " + path.string() + ": " + msg + untouched());
+    }
+    sqlite3_extended_result_codes(c, 1);
+    sqlite3_busy_timeout(c, busyTimeoutMs);
+    if (noCheckpoint)
+        sqlite3_db_config(c, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
+    return c;
+}
+
+void Database::Impl::connectSnapshot(int busyTimeoutMs,
+                                     const std::function<std::string()>& untouched) {
+    // Without a -wal every commit is in the file; immutable=1 reads it with
+    // no -shm index and no lock (a reader cannot create them here, and must
+    // not leave files of its own beside the file for the writers). A writer
+    // that starts meanwhile writes into a new -wal: snapshotOutdated() says so.
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) {
+        snapshotTime = st.st_mtim;
+        snapshotSize = st.st_size;
+    }
+    sqlite3_close_v2(db);
+    db = nullptr;
+    db = connect(immutableUri(path), SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, busyTimeoutMs, false,
+                 untouched);
+    immutable = true;
+}
+
+Checked Database::Impl::connectAndInspect(const OpenOptions& options, int latest) {
     std::error_code ec;
-    const bool walExisted = fs::exists(fs::path(path.string() + "-wal"), ec);
+    const fs::path wal = path.string() + "-wal";
+    const bool walExisted = fs::exists(wal, ec);
     const fs::path journal = path.string() + "-journal";
     const bool journalExisted = fs::exists(journal, ec) && fs::file_size(journal, ec) > 0 && !ec;
+    const bool existed = fs::exists(path, ec);
 
     // The checks come before any setting or write. On a refusal the file is
     // closed without a checkpoint (a -wal stays as it was, not copied into
     // the refused file) and nothing else was written.
     bool recovered = false;
-    const auto untouched = [&] {
+    const std::function<std::string()> untouched = [&] {
+        if (!existed)
+            return std::string();
         return recovered ? std::string("; only the unfinished transaction in ") + journal.string() +
                                " was rolled back (SQLite's crash recovery of a K528 Studio "
                                "database), nothing else was changed"
@@ -1160,21 +1325,28 @@ Checked Database::Impl::connectAndInspect(const FileHeader& header, const OpenOp
     const auto refused = [&](const Refusal& r) {
         return Error(r.kind, path.string() + ": " + r.what + untouched());
     };
-    const auto connect = [&](int flags) {
-        sqlite3* c = nullptr;
-        const int rc = sqlite3_open_v2(path.c_str(), &c, flags | SQLITE_OPEN_NOMUTEX, nullptr);
-        if (rc != SQLITE_OK) {
-            const std::string msg = c ? sqlite3_errmsg(c) : sqlite3_errstr(rc);
-            sqlite3_close_v2(c);
-            throw Error(ErrorKind::Io, "cannot open " + path.string() + ": " + msg +
-                                           (header.exists ? untouched() : std::string()));
-        }
-        sqlite3_extended_result_codes(c, 1);
-        sqlite3_busy_timeout(c, options.busyTimeoutMs);
-        if (walExisted)
-            sqlite3_db_config(c, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
-        return c;
-    };
+    // One connection: read-write when the file may be written (SQLite falls
+    // back to read-only when it may not), read-only when asked.
+    const int flags = options.readOnly ? SQLITE_OPEN_READONLY
+                                       : SQLITE_OPEN_READWRITE |
+                                             (options.create ? SQLITE_OPEN_CREATE : 0);
+    db = connect(path.string(), flags, options.busyTimeoutMs, walExisted, untouched);
+    if (sqlite3_db_readonly(db, "main") == 1)
+        readOnly = options.readOnly ? ReadOnlyReason::Requested : whyReadOnly(path);
+    // A journal begun on an empty file (a first transaction that died) may
+    // have left pages of the file without its first one: the header is not
+    // there to read; rolling the journal back below gives the empty file.
+    const std::int64_t startPages =
+        journalExisted ? journalStartPages(journal).value_or(-1) : std::int64_t(-1);
+    const bool newFileJournal = startPages == 0;
+    FileHeader header;
+    try {
+        header = readHeader(db, latest);
+    } catch (const Refusal& r) {
+        if (!newFileJournal || r.kind != ErrorKind::Foreign)
+            throw refused(r);
+    }
+
     std::optional<Checked> checked;
     if (journalExisted) {
         // A rollback journal: if it is hot (its writer died), a read-write
@@ -1182,37 +1354,60 @@ Checked Database::Impl::connectAndInspect(const FileHeader& header, const OpenOp
         // cannot: the checks run there, and another program's unfinished
         // transaction stays where it is.
         std::unique_ptr<sqlite3, int (*)(sqlite3*)> ro(
-            connect(SQLITE_OPEN_READONLY | SQLITE_OPEN_EXRESCODE), sqlite3_close_v2);
+            connect(path.string(), SQLITE_OPEN_READONLY, options.busyTimeoutMs, walExisted,
+                    untouched),
+            sqlite3_close_v2);
         try {
             checked = inspect(ro.get(), latest);
         } catch (const Refusal& r) {
             if (!r.hotJournal)
                 throw refused(r);
-            if (header.applicationId != static_cast<std::uint32_t>(kApplicationId))
+            // Ours to roll back: a file with our application_id (not newer,
+            // see readHeader), or one that was empty when the transaction
+            // began — rolling back gives the empty file again, and nothing
+            // committed is lost (an interrupted `k528 db init`).
+            if (header.applicationId != static_cast<std::uint32_t>(kApplicationId) &&
+                !newFileJournal)
                 throw refused(Refusal{
                     ErrorKind::Foreign,
                     "not a K528 Studio database: an SQLite database without K528 Studio's "
                     "application_id, with an unfinished transaction of another program (the "
                     "hot journal " +
-                        journal.string() + "), which is not ours to roll back",
-                    false});
-            // Ours (and not newer, see readHeader): rolling back our own
-            // interrupted transaction restores the last commit.
+                        journal.string() + ", begun on a file of " +
+                        (startPages >= 0 ? std::to_string(startPages) + " pages"
+                                         : std::string("unknown size")) +
+                        "), which is not ours to roll back: let that program open it first"});
+            if (readOnly != ReadOnlyReason::None)
+                throw ReadOnlyError(path, readOnly, ReadOnlyRefusal::Recover);
             recovered = true;
         }
     }
-    const int flags =
-        SQLITE_OPEN_READWRITE | (options.create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_EXRESCODE;
-    db = connect(flags);
+    // A reader must not create a -wal and -shm of its own beside the file:
+    // without a -wal, it reads an immutable snapshot.
+    if (readOnly != ReadOnlyReason::None && !header.empty && !fs::exists(wal, ec)) {
+        connectSnapshot(options.busyTimeoutMs, untouched);
+        checked.reset();
+    }
     if (!checked) {
         try {
             checked = inspect(db, latest);
         } catch (const Refusal& r) {
-            throw refused(r);
+            // A file we may write in a folder we may not: SQLite cannot
+            // create the -wal/-shm it needs to read a WAL database.
+            if (!r.noIndex || immutable || fs::exists(wal, ec))
+                throw refused(r);
+            readOnly = whyReadOnly(path);
+            connectSnapshot(options.busyTimeoutMs, untouched);
+            try {
+                checked = inspect(db, latest);
+            } catch (const Refusal& again) {
+                throw refused(again);
+            }
         }
     }
-    if (walExisted)
+    if (walExisted && !immutable)
         sqlite3_db_config(db, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 0, nullptr);
+    report.recovered = recovered;
     return *checked;
 }
 
@@ -1325,27 +1520,40 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
     if (migrations.empty())
         throw Error(ErrorKind::Sql, "no schema migrations given");
     const int latest = migrations.back().version;
-    const FileHeader header = readHeader(path, latest);
-    if (!header.exists && !options.create)
+    const bool exists = databaseFileExists(path);
+    if (!exists && (!options.create || options.readOnly))
         throw Error(ErrorKind::Io, "no database at " + path.string());
-    if (!header.exists) {
+    if (!exists) {
         std::error_code ec;
         const fs::path parent = path.parent_path();
         if (!parent.empty() && !fs::is_directory(parent, ec))
             throw Error(ErrorKind::Io, "cannot create the database " + path.string() +
                                            ": the folder " + parent.string() + " does not exist");
+        if (::faccessat(AT_FDCWD, parent.empty() ? "." : parent.c_str(), W_OK, AT_EACCESS) != 0)
+            throw ReadOnlyError(path,
+                                errno == EROFS ? ReadOnlyReason::FileSystem : ReadOnlyReason::Folder,
+                                ReadOnlyRefusal::Create);
     }
     auto impl = std::make_unique<Impl>();
     impl->path = path;
     impl->clock = options.clock ? options.clock : systemClock();
     const std::string author = options.author.empty() ? defaultAuthor() : options.author;
 
-    const auto [appId, version, objects] = impl->connectAndInspect(header, options, latest);
+    const auto [appId, version, objects] = impl->connectAndInspect(options, latest);
     const bool empty = appId == 0 && version == 0 && objects == 0;
     impl->applyConnectionSettings();
-    // Now ours, intact, not newer: WAL, then create or migrate in one transaction.
     impl->report.created = empty;
     impl->report.fromVersion = static_cast<int>(version);
+    if (impl->readOnly != ReadOnlyReason::None) {
+        // Reading writes nothing: no journal mode, no migration, no
+        // definitions. An older schema is read as it is (its tables are a
+        // subset of ours; MessageLog needs schema 2).
+        if (empty)
+            throw ReadOnlyError(path, impl->readOnly, ReadOnlyRefusal::Create);
+        impl->report.version = static_cast<int>(version);
+        return Database(std::move(impl));
+    }
+    // Now ours, intact, not newer: WAL, then create or migrate in one transaction.
     impl->switchToWal(options.busyTimeoutMs);
     if (empty || version < latest)
         impl->createOrMigrate(options, latest, author);
@@ -1364,6 +1572,27 @@ const OpenReport& Database::openReport() const {
 
 sqlite3* Database::connection() const {
     return d_->db;
+}
+
+ReadOnlyReason Database::readOnly() const {
+    return d_->readOnly;
+}
+
+void Database::requireWritable() const {
+    d_->requireWritable();
+}
+
+bool Database::snapshotOutdated() const {
+    if (!d_->immutable)
+        return false;
+    std::error_code ec;
+    if (fs::exists(d_->path.string() + "-wal", ec))
+        return true;
+    struct stat st {};
+    if (::stat(d_->path.c_str(), &st) != 0)
+        return true;
+    return st.st_size != d_->snapshotSize || st.st_mtim.tv_sec != d_->snapshotTime.tv_sec ||
+           st.st_mtim.tv_nsec != d_->snapshotTime.tv_nsec;
 }
 
 int Database::schemaVersion() const {

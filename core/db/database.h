@@ -26,7 +26,16 @@
 //     the manual's cross-checks of the constants (errors reject the write
 //     unless the machine already had that error or the caller allows errors).
 //   - One Database is one SQLite connection: use it from one thread at a
-//     time (open one per thread or process; they share the file safely).
+//     time. Several connections of one process to one file are safe (SQLite
+//     shares its descriptors and locks), but a process should hold one
+//     connection per file for its lifetime (the desktop: ShopDatabase) rather
+//     than open one per operation. Nothing in core/ or app/ may open, read or
+//     copy the database file (or its -shm) other than through SQLite: closing
+//     any descriptor of the file drops every POSIX lock the process holds on
+//     it, and another process may then delete a live -wal.
+//   - A file the user may only read (permissions, folder, read-only mount)
+//     opens for reading: open() writes nothing then, and every write is
+//     refused with ReadOnlyError (the file and the reason, not the SQL).
 //   - Timestamps come from an injectable clock (Unix seconds, UTC); the
 //     default reads the system clock. The simulation never reads the clock;
 //     only the history does.
@@ -81,6 +90,10 @@ struct OpenOptions {
     Clock clock;               // default: systemClock()
     std::string author;        // recorded for the first start / migrations; default: OS user
     bool seedBuiltins = true;  // a new database gets profile::builtinNames()
+    // Open for reading only: nothing is ever written (no settings, no
+    // migration); every write is refused with ReadOnlyError. A file the user
+    // may not write is opened this way by itself.
+    bool readOnly = false;
     // The schema steps; tests pass a longer list to exercise a migration.
     std::span<const Migration> migrations = schemaMigrations();
 };
@@ -92,6 +105,7 @@ struct OpenReport {
     int version = 0;                 // user_version now
     std::vector<std::string> seeded; // built-in machines loaded on the first start
     bool definitionsUpdated = false; // the C-parameter definitions were refreshed from the catalog
+    bool recovered = false; // an unfinished transaction (hot -journal) was rolled back
 };
 
 struct MachineInfo {
@@ -192,6 +206,16 @@ public:
     const std::filesystem::path& path() const;
     const OpenReport& openReport() const;
     int schemaVersion() const;
+
+    // ReadOnlyReason::None when writes are possible.
+    ReadOnlyReason readOnly() const;
+    // Throws ReadOnlyError when the database can only be read.
+    void requireWritable() const;
+    // A read-only file whose folder does not let SQLite create the -shm
+    // index is read as an immutable snapshot (it has no -wal then: every
+    // commit is in the file). True when the file has changed or a -wal has
+    // appeared since: open it again to see the changes.
+    bool snapshotOutdated() const;
 
     // Machines.
     std::vector<MachineInfo> machines() const; // by name

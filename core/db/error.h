@@ -4,8 +4,10 @@
 
 #include "profile/validate.h"
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace k528::db {
@@ -21,6 +23,7 @@ enum class ErrorKind {
     NoRevision,    // the machine has no such revision
     Conflict,      // the machine changed since the caller read it (expected revision)
     Invalid,       // a value, an edit or a file is rejected (see ValidationError)
+    ReadOnly,      // a write to a database this process may only read (see ReadOnlyError)
     Sql,           // an unexpected SQLite error (a bug: please report it)
 };
 
@@ -33,6 +36,44 @@ public:
 
 private:
     ErrorKind kind_;
+};
+
+// Why a database can only be read.
+enum class ReadOnlyReason {
+    None,       // it can be written
+    Permission, // the user may not write the file
+    Folder,     // the user may not create files in its folder (SQLite's -wal/-shm/-journal)
+    FileSystem, // the file system is mounted read-only
+    Requested,  // opened read-only on purpose (OpenOptions::readOnly)
+};
+// "permission denied", "no permission to create files in the folder",
+// "read-only file system", "opened read-only".
+std::string_view readOnlyReasonText(ReadOnlyReason r);
+
+// What a read-only database refused.
+enum class ReadOnlyRefusal {
+    Write,   // a change: nothing was written
+    Create,  // a new database cannot be created (an empty file, a folder it may not write)
+    Upgrade, // the schema is older than this program's and cannot be upgraded
+    Recover, // an unfinished transaction (a hot -journal) cannot be rolled back
+};
+
+// A write refused because the database can only be read: names the file and
+// why ("the database is read-only: /srv/k528.db (permission denied);
+// nothing was written"), never the SQL that failed. The command line and the
+// desktop render it in their language from path(), reason() and refusal().
+class ReadOnlyError : public Error {
+public:
+    ReadOnlyError(std::filesystem::path path, ReadOnlyReason reason,
+                  ReadOnlyRefusal refusal = ReadOnlyRefusal::Write);
+    const std::filesystem::path& path() const { return path_; }
+    ReadOnlyReason reason() const { return reason_; }
+    ReadOnlyRefusal refusal() const { return refusal_; }
+
+private:
+    std::filesystem::path path_;
+    ReadOnlyReason reason_;
+    ReadOnlyRefusal refusal_;
 };
 
 // A write rejected by validation: values outside their definitions, or

@@ -202,6 +202,7 @@ MessageLog::~MessageLog() = default;
 
 std::int64_t MessageLog::beginRun(std::string_view machine, std::int64_t dayMs,
                                   std::string author) {
+    d_->db.requireWritable();
     auto& q = d_->st("INSERT INTO message_runs (machine, started_at, started_ms, author) "
                      "VALUES (?1, ?2, ?3, ?4)");
     q.bind(1, machine)
@@ -215,6 +216,7 @@ std::int64_t MessageLog::beginRun(std::string_view machine, std::int64_t dayMs,
 void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events) {
     if (events.empty())
         return;
+    d_->db.requireWritable();
     sqlite3* c = d_->c();
     auto& run = d_->st("SELECT machine FROM message_runs WHERE id = ?1");
     run.bind(1, runId);

@@ -19,10 +19,12 @@ namespace k528::db::sql {
     case SQLITE_NOTADB:
         kind = ErrorKind::Corrupt;
         break;
+    case SQLITE_READONLY:
+        kind = ErrorKind::ReadOnly;
+        break;
     case SQLITE_IOERR:
     case SQLITE_CANTOPEN:
     case SQLITE_FULL:
-    case SQLITE_READONLY:
     case SQLITE_PERM:
     case SQLITE_NOLFS:
         kind = ErrorKind::Io;

@@ -7,8 +7,11 @@
 #include "util/same_bytes.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstring>
+#include <tuple>
+#include <utility>
 
 namespace k528::engine {
 
@@ -51,6 +54,7 @@ int channelIndex(std::int64_t code) {
 } // namespace
 
 Controller::Controller(const profile::MachineProfile& profile) : c_(profile), interp_(c_) {
+    chooseOutput();
     bool intact = true;
     c_.store = loadStore(profile, intact);
     storeCorrupt_ = !intact;
@@ -122,13 +126,10 @@ void Controller::tick() {
         // Program control with the inputs of the last tick (the shortcut of
         // programControl(), whose condition holds here).
         programControlAgain();
+        if (checkShortcuts_) [[unlikely]]
+            checkRoutineTick();
     } else {
-        readInputs();
-        c_.plc.update(c_.words);
-        systemChecks();
-        programControl();
-        manualFunctions();
-        noteRoutineInputs();
+        readAll();
     }
     for (AxisUnit& u : c_.axes)
         if (u.present)
@@ -138,8 +139,17 @@ void Controller::tick() {
     noteSettled(inputsAsLeft);
 }
 
+void Controller::chooseOutput() {
+    previewOutput_.setSink(previewSink_);
+    debugOutput_.setGate(debugGate_);
+    c_.instantAxes = previewSink_ != nullptr;
+    c_.out = previewSink_ ? static_cast<ProgramOutput*>(&previewOutput_)
+             : debugGate_ ? static_cast<ProgramOutput*>(&debugOutput_)
+                          : static_cast<ProgramOutput*>(&runOutput_);
+}
+
 bool Controller::settled() const {
-    if (!c_.powered || executing(c_.state) || c_.preview || wheelDelta_[0] != 0 || wheelDelta_[1] != 0)
+    if (!c_.powered || executing(c_.state) || c_.instantAxes || wheelDelta_[0] != 0 || wheelDelta_[1] != 0)
         return false;
     for (const AxisUnit& u : c_.axes) {
         if (!u.present)
@@ -172,28 +182,98 @@ void Controller::noteSettled(bool inputsAsLeft) {
     quiet_.valid = true;
 }
 
+Controller::TickInputs Controller::tickInputs() const {
+    TickInputs t;
+    std::memcpy(t.words.data(), c_.words.inputs(), sizeof t.words);
+    std::memcpy(t.status.data(), machineStatusBytes(c_.io), kMachineStatusBytes);
+    for (std::size_t k = 0; k < t.wheelCounts.size(); ++k) {
+        const int ch = c_.wheelChannel[k];
+        t.wheelCounts[k] = ch >= 0 ? c_.io.pulse[static_cast<std::size_t>(ch)].count : 0;
+    }
+    return t;
+}
+
 bool Controller::routineInputs() const {
     // A reading of the same inputs would: count no handwheel pulse, decode
     // the same signals, raise or clear no message, find no edge (so start,
     // stop, reset, acknowledge nothing and keep mode and override) and, out
     // of РУЧНОЙ with no pulse, move no axis by hand.
-    if (!routine_.valid || operatorActed_ || c_.mode == Mode::Manual || wheelDelta_[0] != 0 ||
-        wheelDelta_[1] != 0 || !c_.words.sameInputs(routine_.words) ||
-        !util::sameBytes<kMachineStatusBytes>(machineStatusBytes(c_.io), routine_.status.data()))
-        return false;
-    for (std::size_t k = 0; k < wheelCount_.size(); ++k) {
-        const int ch = c_.wheelChannel[k];
-        const std::int64_t count = ch >= 0 ? c_.io.pulse[static_cast<std::size_t>(ch)].count : 0;
-        if (count != wheelCount_[k])
-            return false;
-    }
-    return true;
+    return routine_.valid && !operatorActed_ && c_.mode != Mode::Manual && wheelDelta_[0] == 0 &&
+           wheelDelta_[1] == 0 && tickInputs() == routine_.inputs;
 }
 
 void Controller::noteRoutineInputs() {
     routine_.valid = true;
-    routine_.words = c_.words;
-    std::memcpy(routine_.status.data(), machineStatusBytes(c_.io), kMachineStatusBytes);
+    routine_.inputs = tickInputs();
+}
+
+void Controller::readAll() {
+    readInputs();
+    c_.plc.update(c_.words);
+    systemChecks();
+    programControl();
+    manualFunctions();
+    noteRoutineInputs();
+}
+
+// What the full reading of the inputs can change, for the check of a
+// routine tick: the words, the machine I/O, the R-parameters, the messages,
+// the mode, program and override state, and each axis' signals, servo
+// inputs, motion owner and commanded motion.
+struct Controller::Observed {
+    InterfaceWords words;
+    MachineIo io;
+    RStore r;
+    std::uint64_t latched = 0, active = 0;
+    PlcMessages plc;
+    Mode mode = Mode::Manual, panelMode = Mode::Manual;
+    ProgramState state = ProgramState::Idle;
+    bool endOrReset = false, stopHold = false;
+    int overridePercent = 0;
+    std::array<std::int64_t, 2> wheelDelta{};
+    struct Axis {
+        bool limitPlus, limitMinus, cam, driveReady, feedEnableWords;
+        std::array<bool, 4> erase;
+        MotionOwner owner;
+        int jogDir;
+        double target, setpoint;
+        bool operator==(const Axis&) const = default;
+    };
+    std::array<Axis, kAxisCount> axes{};
+    bool operator==(const Observed&) const = default;
+};
+
+Controller::Observed Controller::observed() const {
+    Observed o;
+    o.words = c_.words;
+    o.io = c_.io;
+    o.r = c_.r;
+    o.latched = c_.alarms.latchedMask();
+    o.active = c_.alarms.activeMask();
+    o.plc = c_.plc;
+    o.mode = c_.mode;
+    o.panelMode = c_.panelMode;
+    o.state = c_.state;
+    o.endOrReset = c_.endOrReset;
+    o.stopHold = c_.stopHold;
+    o.overridePercent = c_.overridePercent;
+    o.wheelDelta = wheelDelta_;
+    for (const AxisUnit& u : c_.axes)
+        o.axes[static_cast<std::size_t>(u.index)] = {
+            u.limitPlus, u.limitMinus,     u.cam,      u.driveReady,        u.feedEnableWords,
+            u.erase,     u.owner,          u.jogDir,   u.servo.target(),    u.servo.setpoint()};
+    return o;
+}
+
+void Controller::checkRoutineTick() {
+    // The routine path ran (programControlAgain); the full reading of the
+    // same inputs must find nothing more to do.
+    const Observed routine = observed();
+    readAll();
+    ++shortcutChecks_;
+    const bool agree = observed() == routine;
+    shortcutDisagreements_ += agree ? 0 : 1;
+    assert(agree && "the routine tick's shortcut and the full reading disagree");
 }
 
 void Controller::readInputs() {
@@ -744,7 +824,7 @@ void Controller::axisTick(AxisUnit& u) {
         in.zeroMarkCount = p.zeroMarkCount;
     }
     in.feedEnable = u.feedEnableWords && !hold;
-    if (!c_.preview) // preview: the interpreter places the axes (engine/preview.h)
+    if (!c_.instantAxes) // preview: the interpreter places the axes (engine/preview.h)
         u.servo.tick(in, c_.dtMs);
     if (u.servo.fault() != lastFault_[i])
         trackFault(u);
@@ -829,19 +909,31 @@ void Controller::writeOutputs(bool routine) {
     // its end or a message changes: computed again when one of those did.
     const CommonOutputs::Key key{c_.framesExecuted, c_.alarms.activeMask(), c_.state,
                                  c_.endOrReset, c_.programExclusion};
-    if (!routine || !common_.valid || !(key == common_.key)) {
+    const auto fresh = [&] {
         const std::int32_t wheel = c_.r[r::WheelCurrent], wmin = c_.r[r::WheelMin],
                            wmax = c_.r[r::WheelMax];
         const bool wheelBelowMin = wmin > 0 && wheel < wmin;
         const bool wheelAboveMax = wmax > 0 && wheel > wmax;
-        common_.z2000 = static_cast<std::uint16_t>(
+        const auto z2000 = static_cast<std::uint16_t>(
             bitIf(c_.powered && !c_.alarms.anyActive(AlarmCategory::System), 0) |
             bitIf(c_.powered, modeKey(c_.mode)) | kStateBitsZ2000[static_cast<std::size_t>(c_.state)] |
             bitIf(c_.endOrReset, 10) | bitIf(c_.overridePercent == 0, 14) | bitIf(wheelBelowMin, 15));
-        common_.wheelBits = bitIf(wheelBelowMin, 11) | bitIf(wheelAboveMax, 12); // X only
+        const unsigned wheelBits = bitIf(wheelBelowMin, 11) | bitIf(wheelAboveMax, 12); // X only
+        return std::pair{z2000, wheelBits};
+    };
+    if (!routine || !common_.valid || !(key == common_.key)) {
+        std::tie(common_.z2000, common_.wheelBits) = fresh();
         refreshOffsets();
         common_.key = key;
         common_.valid = true;
+    }
+    else if (checkShortcuts_) [[unlikely]] {
+        // Both paths: what the routine tick kept is what they compute.
+        const bool agree = fresh() == std::pair(common_.z2000, common_.wheelBits) &&
+                           offsets_.sum[0] == c_.offsetDisc(0) && offsets_.sum[1] == c_.offsetDisc(1);
+        ++shortcutChecks_;
+        shortcutDisagreements_ += agree ? 0 : 1;
+        assert(agree && "the routine tick's kept outputs and the full computation disagree");
     }
     w.setWord(2000, common_.z2000);
     // Z2001.8..15: manual cycle n runs.

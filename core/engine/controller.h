@@ -20,6 +20,7 @@
 #include "engine/core.h"
 #include "engine/interpreter.h"
 #include "engine/views.h"
+#include "util/same_bytes.h"
 
 #include <cstdint>
 #include <memory>
@@ -115,15 +116,25 @@ public:
     // Preview mode (engine/preview.h; driven by engine/preview_run.h): null ends it.
     void setPreview(PreviewSink* sink) {
         wake();
-        c_.preview = sink;
+        previewSink_ = sink;
+        chooseOutput();
     }
     // The debugger's gate (engine/debug_gate.h): breakpoints, single frame,
     // run to a frame; null detaches it. The gate outlives its attachment.
     void setDebugGate(DebugGate* gate) {
         wake();
-        c_.debug = gate;
+        debugGate_ = gate;
+        chooseOutput();
     }
-    DebugGate* debugGate() const { return c_.debug; }
+    DebugGate* debugGate() const { return debugGate_; }
+    // The routine tick's two paths (docs/engine.md, "Speed"): with this on,
+    // a routine tick also takes the full path — the reading of the inputs,
+    // Z2000, the wheel's bits and the sums of the offsets computed anew —
+    // and compares what both leave; a debug build has it on and asserts
+    // they agree. Counts the ticks checked and those that disagreed.
+    void setCheckShortcuts(bool on) { checkShortcuts_ = on; }
+    std::int64_t shortcutChecks() const { return shortcutChecks_; }
+    std::int64_t shortcutDisagreements() const { return shortcutDisagreements_; }
     const Interpreter& interpreter() const { return interp_; }
     bool oscillating(AxisId a) const {
         return c_.osc[static_cast<std::size_t>(axisIndex(a))].active();
@@ -185,8 +196,17 @@ private:
     // for as long as R224..R231 and the exclusions stay (writeOutputs()).
     void refreshOffsets();
 
+    // The interpreter's output: the preview's when a sink is set, else the
+    // debugger's when a gate is, else the machine's.
+    void chooseOutput();
+
     Core c_;
     Interpreter interp_;
+    RunOutput runOutput_{c_};
+    PreviewOutput previewOutput_{c_};
+    DebugOutput debugOutput_{c_};
+    PreviewSink* previewSink_ = nullptr;
+    DebugGate* debugGate_ = nullptr;
     std::array<axis::Fault, kAxisCount> lastFault_{};
     std::array<std::int64_t, 2> wheelDelta_{}; // handwheel pulses this tick
     std::array<std::int64_t, 2> wheelCount_{};
@@ -204,11 +224,39 @@ private:
     // handwheel pulse and not in РУЧНОЙ, that reading would change nothing.
     bool routineInputs() const;
     void noteRoutineInputs();
-    struct RoutineInputs {
+    // What that reading depends on, as one snapshot with one equality: the
+    // words the positioner reads (Z1000..Z1907), the fast inputs and module
+    // health, the counters of the handwheels' pulse channels.
+    struct TickInputs {
+        std::array<std::uint16_t, InterfaceWords::kInputWords> words{};
+        std::array<std::uint8_t, kMachineStatusBytes> status{};
+        std::array<std::uint8_t, 3> zero{}; // no padding: the bytes compare as one block
+        std::array<std::int64_t, 2> wheelCounts{};
+        friend bool operator==(const TickInputs& a, const TickInputs& b) {
+            return util::sameBytes<sizeof(TickInputs)>(&a, &b);
+        }
+    };
+    static_assert(sizeof(TickInputs) == 2 * InterfaceWords::kInputWords + kMachineStatusBytes + 3 +
+                                            2 * sizeof(std::int64_t),
+                  "TickInputs has no padding");
+    TickInputs tickInputs() const;
+    // The full reading of the inputs (the other path of a routine tick).
+    void readAll();
+    struct {
         bool valid = false;
-        InterfaceWords words;
-        std::array<std::uint8_t, kMachineStatusBytes> status{}; // fast inputs, module health
+        TickInputs inputs;
     } routine_;
+    // Both paths of a routine tick (setCheckShortcuts): what the full
+    // reading, run after the routine one, would change.
+    struct Observed;
+    Observed observed() const;
+    void checkRoutineTick();
+#ifdef NDEBUG
+    bool checkShortcuts_ = false;
+#else
+    bool checkShortcuts_ = true;
+#endif
+    std::int64_t shortcutChecks_ = 0, shortcutDisagreements_ = 0;
     // writeOutputs(): Z2000, the wheel's bits of Z2005 and the state they
     // were computed for (see there).
     struct CommonOutputs {

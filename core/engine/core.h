@@ -23,8 +23,7 @@
 
 namespace k528::engine {
 
-class PreviewSink; // engine/preview.h
-class DebugGate;   // engine/debug_gate.h
+class ProgramOutput; // engine/program_output.h
 
 struct Core {
     explicit Core(const profile::MachineProfile& p);
@@ -76,10 +75,13 @@ struct Core {
     std::array<int, 2> wheelChannel{-1, -1};
     MHandshake mhs;
     program::ProgramStore store;
-    // Preview mode (engine/preview.h): instant axes, motion reported here.
-    PreviewSink* preview = nullptr;
-    // The editor's debugger (engine/debug_gate.h): stops before frames; null = none.
-    DebugGate* debug = nullptr;
+    // Where the interpreter's frames go (engine/program_output.h): the
+    // machine, the preview's instant axes, or the machine under the editor's
+    // debugger; the Controller sets it, never null while it runs.
+    ProgramOutput* out = nullptr;
+    // The preview's output is set: the axes are placed by the interpreter
+    // and their servos do not tick (engine/preview.h).
+    bool instantAxes = false;
 
     // Mode.
     Mode mode = Mode::Manual;

@@ -70,6 +70,9 @@ public:
     }
 
     friend bool operator==(const InterfaceWords&, const InterfaceWords&) = default;
+    // The words the positioner reads, Z1000..Z1013, Z1300..Z1307, Z1900..Z1907, in slot order.
+    static constexpr int kInputWords = 30;
+    const std::uint16_t* inputs() const { return w_.data(); }
     // Whether the words the positioner reads (Z1000..Z1013, Z1300..Z1307,
     // Z1900..Z1907) are those of `o`; its own Z2000..Z2008 are not compared.
     bool sameInputs(const InterfaceWords& o) const {
@@ -97,7 +100,7 @@ private:
     [[noreturn]] static void notHeld(int address);
     static constexpr int kAxisControlSlot = 5; // slot(1005)
     static constexpr int kAxisStateSlot = 35;  // slot(2005)
-    static constexpr int kInputSlots = 30;     // slots 0..29: Z1000..Z1907
+    static constexpr int kInputSlots = kInputWords; // slots 0..29: Z1000..Z1907
     static constexpr int kOutputSlots = 9;     // slots 30..38: Z2000..Z2008
     std::array<std::uint16_t, kWordCount> w_{};
 };

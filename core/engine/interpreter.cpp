@@ -1,8 +1,9 @@
 #include "engine/interpreter.h"
 
 #include "engine/coordinates.h"
-#include "engine/debug_gate.h"
-#include "engine/preview.h"
+#include "engine/program_output.h"
+
+#include "program/refusals.h"
 
 #include <algorithm>
 #include <bitset>
@@ -118,8 +119,7 @@ void Interpreter::start(int number, int cycle, Mode mode) {
     }
     c_.r.set(r::CurrentProgram, number);
     updateNumbers();
-    if (c_.debug && !c_.preview)
-        c_.debug->started();
+    c_.out->started();
     if (prog_)
         if (const int dup = duplicateFrameLine(*prog_)) {
             line_ = dup;
@@ -136,8 +136,7 @@ void Interpreter::resume() {
     } else {
         return;
     }
-    if (c_.debug)
-        c_.debug->resumed(); // a frame the gate held runs now
+    c_.out->resumed(); // a frame the debugger held runs now
     // Axes a mode change took from the program come back to it.
     for (std::size_t a = 0; a < c_.axes.size(); ++a) {
         AxisUnit& u = c_.axes[a];
@@ -333,49 +332,31 @@ void Interpreter::beginIso(const program::Frame& f) {
         }
     }
 
-    // The combinations the positioner refuses (appendix М).
-    const bool hasX = iso.x.has_value(), hasZ = iso.z.has_value();
+    // The combinations the positioner refuses (program/refusals.h, the
+    // validator's table): the first the frame matches is the alarm.
+    const bool hasX = iso.x.has_value();
     const bool call = iso.call.has_value();
-    const bool m17 = iso.hasM(program::mfunc::kSubprogramEnd);
-    const bool m2 = iso.hasM(program::mfunc::kEnd), m30 = iso.hasM(program::mfunc::kEndRewind);
-    int bad = 0;
-    if (dwell_ && hasZ)
-        bad = 63;
-    else if (dwell_ && call)
-        bad = 64;
-    else if (call && hasX)
-        bad = 34;
-    else if (call && hasZ)
-        bad = 50;
-    else if (m17 && hasX && !dwell_)
-        bad = 35;
-    else if (m17 && hasZ)
-        bad = 51;
-    else if (m30 && call)
-        bad = 58;
-    else if (m2 && call)
-        bad = 59;
-    else if (m17 && call)
-        bad = 60;
-    else if (m30 && m17)
-        bad = 61;
-    else if (m2 && m17)
-        bad = 62;
-    else if (depth_ > 0 && !m17 && index_ == static_cast<int>(prog_->frames.size()) - 1 &&
-             ((hasX && !dwell_) || hasZ))
-        bad = hasX && !dwell_ ? 36 : 52;
-    if (bad) {
-        error(bad);
-        return;
-    }
+    program::refusal::Words words = program::refusalWords(iso);
+    if (depth_ > 0 && index_ == static_cast<int>(prog_->frames.size()) - 1)
+        words |= program::refusal::LastOfSubprogram;
+    if (words)
+        if (const program::Refusal* bad = program::firstRefusal(words)) {
+            error(bad->message);
+            return;
+        }
+    const bool m17 = (words & program::refusal::SubprogramEnd) != 0;
+    const bool m2 = (words & program::refusal::End) != 0;
+    const bool m30 = (words & program::refusal::EndRewind) != 0;
 
     // Modal state, message, feeds.
     modal_ = m;
     c_.programExclusion = exclusionOfG(m.components);
     for (AxisUnit& u : c_.axes)
         u.noOverride = modal_.noOverrideAxis == u.index;
-    if (iso.message)
+    if (iso.message) {
         c_.messageNumber = iso.message->number;
+        c_.out->message(frameRef(), c_.messageNumber);
+    }
     const std::optional<program::Value>* feeds[2] = {&iso.fx, &iso.fz};
     for (int a = 0; a < kAxisCount; ++a) {
         const auto& fv = *feeds[a];
@@ -424,9 +405,9 @@ void Interpreter::beginIso(const program::Frame& f) {
     mEnd_ = m2 || m30;
     m17_ = m17;
     callTarget_ = call ? iso.call->number : 0;
-    c_.mhs.begin(m_.data(), mCount_, c_.nowMs);
-    // Preview: M functions are acknowledged at once.
-    step_ = mCount_ > 0 && !c_.preview ? Step::Handshake : Step::OscStop;
+    step_ = c_.out->mFunctions(frameRef(), std::span<const int>(m_.data(), static_cast<std::size_t>(mCount_)))
+                ? Step::Handshake
+                : Step::OscStop;
     if (step_ == Step::OscStop)
         for (int a = 0; a < kAxisCount; ++a)
             if (oscStop_[static_cast<std::size_t>(a)])
@@ -459,9 +440,8 @@ bool Interpreter::startMove(int a, std::int64_t targetDisc, bool handwheel, int 
         u.wheelMin = std::min(from, t);
         u.wheelMax = std::max(from, t);
         u.rapid = false;
-        if (c_.preview)
-            previewMove(u, from, t, u.k.speedParamToInternalPerMs(u.k.feedAutoMax));
-        return true;
+        return c_.out->move(u, from, t, u.k.speedParamToInternalPerMs(u.k.feedAutoMax), feedOf(a),
+                            true);
     }
     const double maxSpeed = u.k.speedParamToInternalPerMs(u.k.feedAutoMax);
     double speed = maxSpeed;
@@ -477,9 +457,7 @@ bool Interpreter::startMove(int a, std::int64_t targetDisc, bool handwheel, int 
         error(forAxis(33, a)); // F УСК.АВТ. = 0: the axis cannot move in a program
         return false;
     }
-    if (c_.preview) {
-        previewMove(u, from, t, speed);
-    } else if (!u.servo.moveTo(t, speed)) {
+    if (!c_.out->move(u, from, t, speed, feedOf(a), false)) {
         const int f = axis::faultMessage(u.servo.fault(), u.id);
         error(f ? f : forAxis(1, a));
         return false;
@@ -541,25 +519,11 @@ bool Interpreter::startOscillation(int a, const std::optional<program::Value>& s
         error(forAxis(33, a));
         return false;
     }
-    if (c_.preview) { // the strokes are drawn, the axis stays where it is
-        PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
-        m.moves = true;
-        m.fromDisc = m.toDisc = u.toDisc(cur);
-        m.oscLoDisc = u.toDisc(lo);
-        m.oscHiDisc = u.toDisc(hi);
-        m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
-        m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
-        m.feedDiscPerMin = static_cast<double>(feed);
-        previewFrame_.kind = PreviewKind::Oscillation;
-        return true;
-    }
-    if (!osc.start(u.servo, lo, hi, speed, towardsHi, presets(a))) {
+    if (!c_.out->oscillate(u, osc, lo, hi, speed, towardsHi, presets(a), feed)) {
         const int f = axis::faultMessage(u.servo.fault(), u.id);
         error(f ? f : forAxis(1, a));
         return false;
     }
-    u.owner = MotionOwner::Oscillation;
-    u.rapid = false;
     return true;
 }
 
@@ -586,19 +550,19 @@ void Interpreter::actions() {
         }
         c_.r.set(r::ZeroOffsetX + a, static_cast<std::int32_t>(zo));
     }
-    if (c_.preview)
-        previewFrame_ = PreviewFrame{};
+    c_.out->motionBegins();
     // Gx81
     for (int a = 0; a < kAxisCount; ++a)
         if (oscStart_[static_cast<std::size_t>(a)] && !startOscillation(a, a == 0 ? iso.x : iso.z))
             return;
     // G04
-    if (dwell_ && dwellLeftMs_ > 0 && c_.preview) {
-        c_.preview->dwell(PreviewDwell{program(), line_, frameNumber(), dwellLeftMs_});
-        dwellLeftMs_ = -1; // no waiting
-    } else if (dwell_ && dwellLeftMs_ > 0) {
-        dwellFresh_ = true;
-        c_.state = ProgramState::Dwell;
+    if (dwell_ && dwellLeftMs_ > 0) {
+        if (c_.out->dwell(frameRef(), dwellLeftMs_)) {
+            dwellFresh_ = true;
+            c_.state = ProgramState::Dwell;
+        } else {
+            dwellLeftMs_ = -1; // no waiting
+        }
     }
     // Motion of X and Z.
     for (int a = 0; a < kAxisCount; ++a) {
@@ -614,41 +578,12 @@ void Interpreter::actions() {
             return;
         }
     }
-    if (c_.preview && (previewFrame_.axes[0].moves || previewFrame_.axes[1].moves)) {
-        for (int a = 0; a < kAxisCount; ++a) { // where the other axis stands (after a Gx92, too)
-            PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(a)];
-            const AxisUnit& u = c_.axes[static_cast<std::size_t>(a)];
-            if (m.moves || !u.present)
-                continue;
-            m.fromDisc = m.toDisc = u.toDisc(u.servo.target());
-            m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
-        }
-        previewFrame_.program = program();
-        previewFrame_.line = line_;
-        previewFrame_.n = frameNumber();
-        previewFrame_.wheelDiameterDisc = c_.r.get(r::WheelCurrent);
-        if (previewFrame_.kind != PreviewKind::Oscillation) {
-            const bool wheel = wheel_[0] || wheel_[1];
-            const bool signal = erase_[0] > 0 || erase_[1] > 0;
-            previewFrame_.kind = wheel    ? PreviewKind::Handwheel
-                                 : signal ? PreviewKind::Signal
-                                 : modal_.rapid ? PreviewKind::Rapid
-                                                : PreviewKind::Feed;
-        }
-        c_.preview->motion(previewFrame_);
-    }
-}
-
-void Interpreter::previewMove(AxisUnit& u, double from, double to, double speed) {
-    PreviewAxisMotion& m = previewFrame_.axes[static_cast<std::size_t>(u.index)];
-    m.moves = true;
-    m.fromDisc = u.toDisc(from);
-    m.toDisc = u.toDisc(to);
-    m.offsetDisc = activeOffset(components(c_.r, u.index), c_.programExclusion);
-    m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
-    const std::int64_t feed = modal_.feed[static_cast<std::size_t>(u.index)];
-    m.feedDiscPerMin = modal_.rapid || feed < 0 ? -1.0 : static_cast<double>(feed);
-    u.servo.place(to);
+    const bool wheel = wheel_[0] || wheel_[1];
+    const bool signal = erase_[0] > 0 || erase_[1] > 0;
+    c_.out->motionEnds(frameRef(), wheel    ? PreviewKind::Handwheel
+                                   : signal ? PreviewKind::Signal
+                                   : modal_.rapid ? PreviewKind::Rapid
+                                                  : PreviewKind::Feed);
 }
 
 bool Interpreter::waitDone() {
@@ -694,13 +629,13 @@ bool Interpreter::waitDone() {
 }
 
 void Interpreter::afterFrame() {
-    if (m00_ && c_.preview)
-        m00_ = false; // preview: «Пуск» at once
     if (m00_) {
         m00_ = false;
-        c_.state = ProgramState::M0;
-        step_ = Step::Call;
-        return;
+        if (c_.out->stopAtM00()) {
+            c_.state = ProgramState::M0;
+            step_ = Step::Call;
+            return;
+        }
     }
     if (mEnd_) {
         endProgram();
@@ -770,7 +705,7 @@ void Interpreter::tick() {
                 ++index_; // «/ – кадр не будет обрабатываться»
                 break;
             }
-            if (c_.debug && !c_.preview && c_.debug->beforeFrame(program(), index_, f.span.line)) {
+            if (c_.out->holdBefore(program(), index_, f.span.line)) {
                 // The debugger's stop before the frame: held as by «Стоп», «Пуск» runs it.
                 c_.resumeState = ProgramState::Running;
                 c_.state = ProgramState::Interrupted;

@@ -17,10 +17,15 @@
 //      the motion of X and Z (G00/G01, Gx10, Gx36..39);
 //   5. when the motion, dwell or oscillation stop is over: M00 (wait for
 //      «Пуск»), M02/M30 (end), M17 (return), then the call L.
+//
+// What a frame asks of the machine — moves, M functions, dwells, messages,
+// M00's stop, a debugger's stop before a frame — goes to the output the
+// controller set (Core::out, engine/program_output.h): the machine, the
+// preview's instant axes or the machine under the debugger.
 #pragma once
 
 #include "engine/core.h"
-#include "engine/preview.h"
+#include "engine/program_output.h"
 #include "program/gfunctions.h"
 #include "program/model.h"
 
@@ -100,7 +105,12 @@ private:
     bool startOscillation(int axis, const std::optional<program::Value>& stroke);
     OscillationPresets presets(int axis) const;
     void updateNumbers();
-    void previewMove(AxisUnit& u, double from, double to, double speed); // preview.h
+    // The frame executing, for the output (engine/program_output.h).
+    FrameRef frameRef() const { return {program(), line_, frameNumber()}; }
+    // The programmed feed of axis a for the output: -1 under G00 or when none was set.
+    std::int64_t feedOf(int a) const {
+        return modal_.rapid ? -1 : modal_.feed[static_cast<std::size_t>(a)];
+    }
 
     Core& c_;
     ModalState modal_;
@@ -128,7 +138,6 @@ private:
     std::array<bool, kAxisCount> wheel_{};    // Gx10
     std::array<int, kAxisCount> erase_{};     // Gx36..39: signal 1..4
     bool dwell_ = false;
-    PreviewFrame previewFrame_; // preview: the motion of the frame in progress
 };
 
 } // namespace k528::engine

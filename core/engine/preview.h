@@ -1,10 +1,12 @@
-// Preview mode of the one interpreter (issue 12): the engine runs a program
-// with instant axes — every move arrives at once, M functions are
-// acknowledged at once, dwells, M00 and moves-until-signal take no waiting —
-// and reports each frame's motion to a PreviewSink. Everything else (R
-// arithmetic, jumps, calls, G90/G91, Gx92, the coordinate components, the
-// diameter axis, the run-time checks and their messages) is the run's own
-// code. Set Core::preview (through engine/preview_run.h) to switch it on.
+// Preview mode of the one interpreter: the engine runs a program with
+// instant axes — every move arrives at once, M functions are acknowledged
+// at once, dwells, M00 and moves-until-signal take no waiting — and its
+// output (engine/program_output.h, PreviewOutput) reports, in the order the
+// program runs, each frame's motion, dwell, M functions and technological
+// message to a PreviewSink. Everything else (R arithmetic, jumps, calls,
+// G90/G91, Gx92, the coordinate components, the diameter axis, the run-time
+// checks and their messages) is the run's own code. Start it through
+// engine/preview_run.h; toolpath/programmed_path.h collects it all.
 #pragma once
 
 #include <array>
@@ -42,11 +44,29 @@ struct PreviewDwell {
     std::int64_t ms = 0;
 };
 
+// The M functions of a frame, in the order written (handed to the PLC when
+// the frame starts, before its motion).
+struct PreviewMFunctions {
+    int program = 0, line = 0, n = 0;
+    std::array<int, 3> codes{};
+    int count = 0;
+};
+
+// A frame's technological message #k (from this frame on, LCD line 2).
+struct PreviewMessage {
+    int program = 0, line = 0, n = 0;
+    int number = 0;
+};
+
+// What the preview reports, frame by frame in program order: a frame's M
+// functions and message come before its motion or dwell.
 class PreviewSink {
 public:
     virtual ~PreviewSink() = default;
     virtual void motion(const PreviewFrame& f) = 0;
     virtual void dwell(const PreviewDwell& d) = 0;
+    virtual void mFunctions(const PreviewMFunctions&) {}
+    virtual void message(const PreviewMessage&) {}
 };
 
 } // namespace k528::engine

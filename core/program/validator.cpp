@@ -6,6 +6,7 @@
 
 #include "catalog/messages.h"
 #include "program/gfunctions.h"
+#include "program/refusals.h"
 #include "program/text_util.h"
 #include "util/utf8.h"
 
@@ -212,6 +213,43 @@ std::vector<int> cyclePath(const CallAnalysis& a, int from, int to) {
     return path;
 }
 
+// A refusal's text with %1 (the frame) and %2 (the program) filled in.
+std::string fillText(std::string_view text, const std::string& frame, const std::string& program) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '%' && i + 1 < text.size() && (text[i + 1] == '1' || text[i + 1] == '2')) {
+            out += text[i + 1] == '1' ? frame : program;
+            ++i;
+        } else {
+            out += text[i];
+        }
+    }
+    return out;
+}
+
+// The word a refusal points at (the table names it; the frame has it).
+ColSpan refusalSpan(const Frame& f, const IsoFrame& iso, RefusalSpot spot) {
+    const Word* m = nullptr;
+    switch (spot) {
+    case RefusalSpot::X:
+        return iso.x ? iso.x->span : ColSpan{f.span.column, f.span.endColumn};
+    case RefusalSpot::Z:
+        return iso.z ? iso.z->span : ColSpan{f.span.column, f.span.endColumn};
+    case RefusalSpot::Call:
+        return iso.call ? iso.call->span : ColSpan{f.span.column, f.span.endColumn};
+    case RefusalSpot::M2:
+        m = iso.findM(mfunc::kEnd);
+        break;
+    case RefusalSpot::M17:
+        m = iso.findM(mfunc::kSubprogramEnd);
+        break;
+    case RefusalSpot::M30:
+        m = iso.findM(mfunc::kEndRewind);
+        break;
+    }
+    return m ? m->span : ColSpan{f.span.column, f.span.endColumn};
+}
+
 std::string chainText(const std::vector<int>& programs) {
     std::string s;
     for (std::size_t i = 0; i < programs.size(); ++i) {
@@ -282,6 +320,7 @@ private:
     void gWords(const Frame& f, const IsoFrame& iso);
     void values(const Frame& f, const IsoFrame& iso);
     void combinations(const Frame& f, const IsoFrame& iso);
+    bool lastOfSubprogram_ = false; // the program is a subprogram: its last frame ends it
     void rIndex(const Frame& f, int index, ColSpan s);
     void computeFrame(const Frame& f, const ComputeFrame& c);
     void jump(const Frame& f, const Word& target);
@@ -291,7 +330,6 @@ private:
     static bool targetRead(const Frame& f, const Word& target) { return !f.malformed || target.span.column > 0; }
     bool lostTarget_ = false; // some jump's target could not be read
     void reachability();
-    void subprogramEnd();
     void nesting();
     void machine();
 };
@@ -312,6 +350,7 @@ void ProgramChecker::run() {
                   " frames: at most 999 are allowed; this is frame 1000");
     }
     frameNumbers();
+    lastOfSubprogram_ = graph_.isCalled(p_.number);
     for (const Frame& f : p_.frames) {
         switch (f.kind()) {
         case FrameKind::Iso: {
@@ -344,7 +383,6 @@ void ProgramChecker::run() {
         }
     }
     reachability();
-    subprogramEnd();
     nesting();
     if (options_.machine)
         machine();
@@ -462,70 +500,26 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
 }
 
 void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
-    const Word* m17 = iso.findM(mfunc::kSubprogramEnd);
-    const Word* m2 = iso.findM(mfunc::kEnd);
-    const Word* m30 = iso.findM(mfunc::kEndRewind);
-    // Most frames have none of the words checked here: no texts built for them.
-    bool axisFunction = false;
-    for (int i = 0; i < iso.g.size(); ++i)
-        axisFunction |= gInfo_[static_cast<std::size_t>(i)].axis != Axis::None;
-    if (!iso.call && !m17 && !axisFunction && !iso.hasG(4))
-        return;
-    const std::string n = where(f);
-    const std::string inRu = n.empty() ? "в кадре" : "в кадре N" + n;
-    const std::string inEn = n.empty() ? "in the frame" : "in frame N" + n;
-    if (iso.call) {
-        const std::string l = "L" + std::to_string(iso.call->number);
-        if (iso.x)
-            error(Rule::AxisWithCall, 34, f, iso.x->span,
-                  "X/L: " + inRu + " с вызовом подпрограммы " + l + " задана координата X",
-                  "X/L: X is given " + inEn + " that calls subprogram " + l);
-        if (iso.z)
-            error(Rule::AxisWithCall, 50, f, iso.z->span,
-                  "Z/L: " + inRu + " с вызовом подпрограммы " + l + " задана координата Z",
-                  "Z/L: Z is given " + inEn + " that calls subprogram " + l);
-        if (m30)
-            error(Rule::EndCombination, 58, f, m30->span,
-                  "M30/L: конец программы M30 и вызов " + l + " " + inRu,
-                  "M30/L: end of program M30 and a call of " + l + " " + inEn);
-        if (m2)
-            error(Rule::EndCombination, 59, f, m2->span,
-                  "M2/L: конец программы M02 и вызов " + l + " " + inRu,
-                  "M2/L: end of program M02 and a call of " + l + " " + inEn);
-        if (m17)
-            error(Rule::EndCombination, 60, f, m17->span,
-                  "M17/L: конец подпрограммы M17 и вызов " + l + " " + inRu,
-                  "M17/L: end of subprogram M17 and a call of " + l + " " + inEn);
-    }
-    if (m17) {
-        if (iso.x)
-            error(Rule::AxisWithM17, 35, f, iso.x->span,
-                  "X/M17: " + inRu + " с концом подпрограммы M17 задана координата X",
-                  "X/M17: X is given " + inEn + " that ends the subprogram with M17");
-        if (iso.z)
-            error(Rule::AxisWithM17, 51, f, iso.z->span,
-                  "Z/M17: " + inRu + " с концом подпрограммы M17 задана координата Z",
-                  "Z/M17: Z is given " + inEn + " that ends the subprogram with M17");
-        if (m30)
-            error(Rule::EndCombination, 61, f, m30->span,
-                  "M30/M17: конец программы M30 и конец подпрограммы M17 " + inRu,
-                  "M30/M17: end of program M30 and end of subprogram M17 " + inEn);
-        if (m2)
-            error(Rule::EndCombination, 62, f, m2->span,
-                  "M2/M17: конец программы M02 и конец подпрограммы M17 " + inRu,
-                  "M2/M17: end of program M02 and end of subprogram M17 " + inEn);
+    // The refused combinations (program/refusals.h): each one the frame matches.
+    refusal::Words words = refusalWords(iso);
+    if (lastOfSubprogram_ && &f == &p_.frames.back() && !f.skip)
+        words |= refusal::LastOfSubprogram;
+    if (words != 0) {
+        std::string frameRu, frameEn, program;
+        for (const Refusal& r : refusals()) {
+            if (!r.matches(words))
+                continue;
+            if (frameRu.empty()) {
+                const std::string n = where(f);
+                frameRu = n.empty() ? "в кадре" : "в кадре N" + n;
+                frameEn = n.empty() ? "in the frame" : "in frame N" + n;
+                program = "L" + std::to_string(iso.call ? iso.call->number : p_.number);
+            }
+            error(r.rule, r.message, f, refusalSpan(f, iso, r.spot),
+                  fillText(r.textRu, frameRu, program), fillText(r.textEn, frameEn, program));
+        }
     }
     if (const Word* g4 = iso.findG(4)) {
-        if (iso.z)
-            error(Rule::DwellWithZ, 63, f, iso.z->span,
-                  "G04/X/Z: " + inRu + " с выдержкой времени G04 задан Z; время задаётся только в X",
-                  "G04/X/Z: Z is given " + inEn + " with the dwell G04; the time goes in X only");
-        if (iso.call)
-            error(Rule::DwellWithCall, 64, f, iso.call->span,
-                  "G04/L: " + inRu + " с выдержкой времени G04 вызывается подпрограмма L" +
-                      std::to_string(iso.call->number),
-                  "G04/L: subprogram L" + std::to_string(iso.call->number) + " is called " + inEn +
-                      " with the dwell G04");
         if (!iso.x)
             warning(Rule::DwellWithoutTime, 0, f, g4->span,
                     "G04 без X: время выдержки не задано (например, G04 X20.5 — 20,5 с)",
@@ -753,24 +747,6 @@ void ProgramChecker::reachability() {
                     ": an unconditional jump or an end of program precedes, and no jump leads here");
         i = j + 1;
     }
-}
-
-void ProgramChecker::subprogramEnd() {
-    if (!graph_.isCalled(p_.number))
-        return;
-    const Frame& last = p_.frames.back();
-    const auto iso = last.iso();
-    if (!iso || last.skip || iso->hasM(mfunc::kSubprogramEnd))
-        return;
-    const std::string l = "L" + std::to_string(p_.number);
-    if (iso->x)
-        error(Rule::AxisAtSubprogramEnd, 36, last, iso->x->span,
-              "X/конец L: последний кадр подпрограммы " + l + " без M17 задаёт координату X",
-              "X/end of L: the last frame of subprogram " + l + " has no M17 and gives X");
-    if (iso->z)
-        error(Rule::AxisAtSubprogramEnd, 52, last, iso->z->span,
-              "Z/конец L: последний кадр подпрограммы " + l + " без M17 задаёт координату Z",
-              "Z/end of L: the last frame of subprogram " + l + " has no M17 and gives Z");
 }
 
 void ProgramChecker::nesting() {

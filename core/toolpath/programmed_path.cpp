@@ -188,7 +188,24 @@ public:
 
     void dwell(const engine::PreviewDwell& d) override {
         path_.dwells.push_back({d.program, d.line, d.n, {pos_[0], pos_[1]},
-                                static_cast<double>(d.ms) / 1000.0});
+                                static_cast<double>(d.ms) / 1000.0,
+                                static_cast<std::uint32_t>(path_.segments.size())});
+    }
+
+    void mFunctions(const engine::PreviewMFunctions& m) override {
+        MFunctions e;
+        e.program = m.program;
+        e.line = m.line;
+        e.n = m.n;
+        e.codes = m.codes;
+        e.count = m.count;
+        e.segment = static_cast<std::uint32_t>(path_.segments.size());
+        path_.mFunctions.push_back(e);
+    }
+
+    void message(const engine::PreviewMessage& m) override {
+        path_.messages.push_back(
+            {m.program, m.line, m.n, m.number, static_cast<std::uint32_t>(path_.segments.size())});
     }
 
 private:

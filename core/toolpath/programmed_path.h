@@ -8,7 +8,11 @@
 // each axis runs at its own speed (G01: its FX/FZ; G00: its F УСК.АВТ.), so
 // the segment has a corner where the first axis arrives (a dogleg).
 // Acceleration is not modelled. An oscillation (Gx81) is drawn as its
-// stroke: start, the far reverse point, the near one.
+// stroke: start, the far reverse point, the near one. Dwells, the M
+// functions and the technological messages are recorded in program order
+// beside the segments (each names the segment it precedes), so a reader of
+// the path (collision checks, a start from a frame) sees what the machine
+// does between the moves.
 //
 // Software limits: C46/C47 (X) and C98/C99 (Z), machine system. A segment
 // with a point beyond them (on an axis whose ВКЛ.ПРГ.КОН C10/C62 is on) is
@@ -18,6 +22,7 @@
 
 #include "engine/preview_run.h"
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -49,6 +54,23 @@ struct Dwell {
     int program = 0, line = 0, n = 0;
     PointMm at;
     double seconds = 0;
+    std::uint32_t segment = 0; // the segments before it (it comes before segments[segment])
+};
+
+// The M functions of a frame, handed to the PLC before the frame's motion:
+// they come before segments[segment] (the frame's own segment, if it moves).
+struct MFunctions {
+    int program = 0, line = 0, n = 0;
+    std::array<int, 3> codes{};
+    int count = 0;
+    std::uint32_t segment = 0;
+};
+
+// A frame's technological message #number (LCD line 2 from there on).
+struct Message {
+    int program = 0, line = 0, n = 0;
+    int number = 0;
+    std::uint32_t segment = 0;
 };
 
 // R207 (ТЕК.ДИАМЕТР КРУГА, the grinding wheel's current diameter) from
@@ -71,6 +93,8 @@ struct ProgrammedPath {
     std::vector<Segment> segments;
     std::vector<PointMm> points;
     std::vector<Dwell> dwells;
+    std::vector<MFunctions> mFunctions; // in program order, with dwells and segments by `segment`
+    std::vector<Message> messages;
     std::vector<WheelChange> wheel;
     AxisLimits limitX, limitZ;
     bool diameterX = false;

@@ -10,6 +10,7 @@
 #include "editor/program_editor.h"
 #include "machine/run.h"
 #include "main_window.h"
+#include "workspace/workspaces.h"
 #include "program/parser.h"
 #include "session/simulation_session.h"
 
@@ -55,6 +56,7 @@ struct Studio {
     studio::EditorTab* editor = nullptr;
     bool exposed = false;
     explicit Studio(const char* text = kProgram) {
+        w.workspaces()->activate("technologist"); // the editor with the backplot beside it
         w.show();
         exposed = QTest::qWaitForWindowExposed(&w);
         view = w.findChild<BackplotWidget*>();

@@ -11,6 +11,7 @@
 #include <QtTest>
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 using namespace k528::testing;
 
@@ -546,6 +547,70 @@ private slots:
             QVERIFY2(r.err.contains("not a K528 Studio database"), qPrintable(r.err));
         }
         QCOMPARE(readAll(db_), junk);
+    }
+
+    // A shop file the user may only read (root-owned 0644 in a root-owned
+    // folder): listing, showing, exporting, running and checking with its
+    // machines work and write nothing; a change is refused naming the file
+    // and the permission, in the language asked for. As root (CI) k528 runs
+    // as `nobody` (setpriv); as another user the file and folder are chmod'ed.
+    void readOnlyDatabase() {
+        const bool root = geteuid() == 0;
+        QTemporaryDir top(QDir::temp().filePath("k528-ro-XXXXXX"));
+        QVERIFY(top.isValid());
+        const QString folder = top.filePath("shop");
+        QVERIFY(QDir().mkpath(folder));
+        const QString file = folder + "/k528.db";
+        QCOMPARE(runK528({"db", "init", "--db", file}).exitCode, 0);
+        QCOMPARE(runK528({"db", "set", "grinder-205", "R12=777", "--db", file}).exitCode, 0);
+        const QString sample = QStringLiteral(K528_SOURCE_DIR "/resources/samples/grinder-bore-205.k528");
+        const auto ranAsOwner = runK528({"run", "--json", "--profile", "grinder-205", "--db", file, sample});
+        QCOMPARE(ranAsOwner.exitCode, 0);
+        QFile::setPermissions(top.path(), QFileDevice::ReadOwner | QFileDevice::WriteOwner |
+                                              QFileDevice::ExeOwner | QFileDevice::ReadOther |
+                                              QFileDevice::ExeOther);
+        const auto readable = QFileDevice::ReadOwner | QFileDevice::ReadGroup | QFileDevice::ReadOther;
+        const auto traversable = readable | QFileDevice::ExeOwner | QFileDevice::ExeGroup | QFileDevice::ExeOther;
+        QFile::setPermissions(folder, root ? traversable | QFileDevice::WriteOwner : traversable);
+        QFile::setPermissions(file, root ? readable | QFileDevice::WriteOwner : readable);
+        const QByteArray before = readAll(file);
+        const QStringList filesBefore = QDir(folder).entryList(QDir::Files);
+        const auto asReader = [&](QStringList args) {
+            if (!root)
+                return runK528(args);
+            return runProgram("setpriv", QStringList{"--reuid=65534", "--regid=65534", "--clear-groups",
+                                                     QStringLiteral(K528_CLI)} + args,
+                              60000);
+        };
+        const auto set = asReader({"db", "set", "grinder-205", "R12=5", "--db", file});
+        const auto setEn = asReader({"db", "set", "grinder-205", "R12=5", "--db", file, "--lang", "en"});
+        const auto machines = asReader({"db", "machines", "--db", file});
+        const auto show = asReader({"db", "show", "grinder-205", "--r", "12", "--db", file});
+        const auto exported = asReader({"db", "export", "grinder-205", "--db", file});
+        const auto ran = asReader({"run", "--json", "--profile", "grinder-205", "--db", file, sample});
+        const auto checked = asReader({"check", "--profile", "grinder-205", "--db", file, sample});
+        const auto init = asReader({"db", "init", "--db", file});
+        QFile::setPermissions(folder, traversable | QFileDevice::WriteOwner);
+        QFile::setPermissions(file, readable | QFileDevice::WriteOwner);
+
+        QCOMPARE(set.exitCode, 2);
+        QVERIFY2(set.err.contains("только для чтения: " + file + " (нет права на запись)"), qPrintable(set.err));
+        QCOMPARE(setEn.exitCode, 2);
+        QVERIFY2(setEn.err.contains("read-only: " + file + " (permission denied); nothing was written"),
+                 qPrintable(setEn.err));
+        for (const CliResult* r : {&set, &setEn})
+            QVERIFY2(!r->err.contains("PRAGMA") && !r->err.contains("attempt to write"), qPrintable(r->err));
+        QVERIFY2(machines.exitCode == 0, qPrintable(machines.err));
+        QVERIFY(machines.out.contains("grinder-205") && machines.out.contains("training-lathe"));
+        QVERIFY2(show.exitCode == 0, qPrintable(show.err));
+        QVERIFY2(show.out.contains("777"), qPrintable(show.out));
+        QVERIFY2(exported.exitCode == 0 && exported.out.contains("R12=777"), qPrintable(exported.err));
+        QVERIFY2(ran.exitCode == 0, qPrintable(ran.err));
+        QCOMPARE(ran.out, ranAsOwner.out);
+        QVERIFY2(checked.exitCode == 0, qPrintable(checked.err + checked.out));
+        QVERIFY2(init.exitCode == 0 && init.out.contains("read-only (permission denied)"), qPrintable(init.err));
+        QCOMPARE(readAll(file), before);
+        QCOMPARE(QDir(folder).entryList(QDir::Files), filesBefore);
     }
 
     void helpAndUsage() {

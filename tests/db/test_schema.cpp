@@ -400,7 +400,28 @@ private slots:
                         .empty());
         }
         leaveHotJournal(p);
-        refusedWithHotJournal(p, db::ErrorKind::Foreign, "unfinished transaction");
+        refusedWithHotJournal(p, db::ErrorKind::Foreign, "not ours to roll back");
+    }
+
+    // A program killed in the first transaction of a new file (an
+    // interrupted `k528 db init`, or another program's): the journal began on
+    // an empty file, so rolling it back gives the empty file again — nothing
+    // committed is lost — and the empty file is ours to fill.
+    void hotJournalOfANewFileIsRolledBack() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "new.db");
+        leaveHotJournal(p);
+        QVERIFY(fs::file_size(p) > 0);
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QVERIFY(d.openReport().recovered);
+            QVERIFY(d.openReport().created);
+            QCOMPARE(d.machines().size(), std::size_t(2));
+            QCOMPARE(d.checkIntegrity(), std::string());
+        }
+        QVERIFY(!fs::exists(p.string() + "-journal"));
+        Raw raw(p);
+        QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'junk'"), 0LL);
     }
 
     void newerSchemaWithHotJournalIsRefusedUntouched() {

@@ -73,6 +73,23 @@ private slots:
             QCOMPARE(a, b);
         }
     }
+    // Both paths of the routine tick: with the check on (a debug build has
+    // it on), every routine tick also reads its inputs in full and computes
+    // Z2000, the wheel's bits and the offsets anew; none of it may differ
+    // from what the shortcut left, on programs that change the offsets, the
+    // wheel and the exclusion between moves.
+    void routineTickBothPathsAgree() {
+        for (const char* program : {kProgram, kOutputsProgram}) {
+            Rig r;
+            r.ctl->setCheckShortcuts(true);
+            QVERIFY(r.home());
+            r.load(program);
+            r.start(1);
+            QVERIFY(r.until([&] { return r.ctl->state() == ProgramState::Ended; }, 60000));
+            QVERIFY2(r.ctl->shortcutChecks() > 1000, std::to_string(r.ctl->shortcutChecks()).c_str());
+            QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
+        }
+    }
     // The routine tick: while a program moves the axes and nothing else
     // changes, a changed word or an operator function acts in the next tick.
     void routineTick() {

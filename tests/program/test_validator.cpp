@@ -379,6 +379,20 @@ private slots:
         QVERIFY(withRule(d, Rule::AxisAtSubprogramEnd).empty());
         QCOMPARE(withRule(d, Rule::AxisWithM17).size(), std::size_t(1));
     }
+    void dwellTimeIsNotACoordinate() {
+        // X of G04 is seconds (table 5): with M17 the frame dwells, then returns (not 35).
+        const auto m17 = diags("%L1\nL2\nM30\n%L2\nG04 X2 M17\n");
+        QVERIFY(!hasErrors(m17));
+        // A dwell as the last frame of a subprogram without M17 is not 36.
+        QVERIFY(withRule(diags("%L1\nL2\nM30\n%L2\nG04 X2\n"), Rule::AxisAtSubprogramEnd).empty());
+        // A dwell with a call is 64 only, not 34; its Z stays a coordinate (63, 50).
+        const auto call = diags("%L1\nG04 X2 L2\nM30\n%L2\nM17\n");
+        QVERIFY(withRule(call, Rule::AxisWithCall).empty());
+        QCOMPARE(withRule(call, Rule::DwellWithCall).size(), std::size_t(1));
+        const auto z = diags("%L1\nG04 Z2 L2\nM30\n%L2\nM17\n");
+        QCOMPARE(withRule(z, Rule::DwellWithZ).size(), std::size_t(1));
+        QCOMPARE(withRule(z, Rule::AxisWithCall).size(), std::size_t(1));
+    }
     void machineLimitsFollowG90G91() {
         // After G91 nothing is checked until G90.
         const auto d = diags("G90 X1\nG91 X300\nX300\nG90\nX300\nM30\n", Machine);

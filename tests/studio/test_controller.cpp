@@ -21,6 +21,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
 #include <QProgressBar>
@@ -96,6 +97,32 @@ private slots:
         socat_.terminate();
         socat_.waitForFinished(3000);
         removeLocks();
+    }
+
+    // Controller > Connect asks for the line (no connection to the first port
+    // the system lists); a failed connection says why, not «Connecting…».
+    void connectAsksForTheLineAndSaysAFailure() {
+        MainWindow w(loadMachine("training-lathe"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* dock = w.findChild<ControllerDock*>("dock.controller");
+        QVERIFY(dock);
+        dock->hide();
+        auto* connectAction = w.findChild<QAction*>("action.controller.connect");
+        QVERIFY(connectAction && connectAction->isEnabled());
+        connectAction->trigger();
+        QVERIFY(dock->isVisible());
+        QVERIFY(!dock->link()); // nothing opened
+        QVERIFY(dock->lineLabel()->text().contains("port"));
+        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(dock->portBox()));
+        dock->portBox()->setEditText(dir_.filePath("no-such-line"));
+        QSignalSpy connected(dock, &ControllerDock::connectedChanged);
+        dock->connectLine();
+        QVERIFY(dock->lineLabel()->text().startsWith("Connecting"));
+        QVERIFY(finished(connected, 10000));
+        QVERIFY(!connected.first().first().toBool());
+        QVERIFY2(dock->lineLabel()->text().startsWith("No connection on"), qPrintable(dock->lineLabel()->text()));
+        QVERIFY(!dock->link());
     }
 
     void controllerDockOnTheLine() {

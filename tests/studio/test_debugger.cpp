@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QMainWindow>
+#include <QSignalSpy>
 #include <QTreeWidget>
 #include <QtTest>
 #include <functional>
@@ -136,6 +137,36 @@ private slots:
         QCOMPARE(b.ctl().r(2), 6);
         QCOMPARE(b.ctl().r(4), 13);
         QVERIFY(!b.executingMarkerAt(3));
+    }
+
+    // «Run» on a held program whose «Пуск» the positioner does not take (the
+    // K923 turned to РУЧНОЙ meanwhile): the debugger says why within a few
+    // seconds of machine time, it does not wait silently.
+    void neverASilentWaitForStart() {
+        Bench b;
+        QSignalSpy said(b.panel->debugger(), &DebugSession::message);
+        b.ed->toggleBreakpoint(3);
+        QVERIFY(b.panel->run());
+        QVERIFY2(b.untilHeldOrEnd(), qPrintable(b.panel->status()->text()));
+        QVERIFY(b.panel->debugger()->heldByGate());
+        const engine::OpResult manual = b.ctl().selectMode(engine::Mode::Manual);
+        QVERIFY2(manual.ok(), "the K923 cannot leave АВТОМАТ while the program is held");
+        b.session->advance(50);
+        said.clear();
+        QVERIFY(b.panel->run()); // continues: «Пуск»
+        const auto toldWhy = [&] {
+            for (const QList<QVariant>& m : said)
+                if (m.first().toString().contains("not АВТОМАТ"))
+                    return true;
+            return false;
+        };
+        QVERIFY(b.until(toldWhy, 5000));
+        QCOMPARE(b.ctl().state(), ProgramState::Interrupted);
+        // Back in АВТОМАТ, «Run» continues.
+        QVERIFY(b.ctl().selectMode(engine::Mode::Auto).ok());
+        b.session->advance(50);
+        QVERIFY(b.resume());
+        QCOMPARE(b.ctl().state(), ProgramState::Ended);
     }
 
     void homingSkippedWhereTheMachineAllowsIt() {

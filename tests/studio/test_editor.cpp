@@ -12,6 +12,7 @@
 #include "profile/builtin.h"
 #include "session/simulation_session.h"
 
+#include <QApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMainWindow>
@@ -226,12 +227,15 @@ private slots:
         ed->insert("G1 X5\n");
         QVERIFY(ed->isModified());
         int asked = 0;
-        tab->setCloseQuestion([&](const QString&) {
+        QString named;
+        tab->setCloseQuestion([&](const QString& name) {
             ++asked;
+            named = name;
             return EditorTab::CloseChoice::Cancel;
         });
         QVERIFY(!window.close());
         QCOMPARE(asked, 1);
+        QCOMPARE(named, QString("p.k528")); // the file's name, not the tab's «p.k528 *»
         QCOMPARE(tab->documentCount(), 1);
         QCOMPARE(tab->currentEditor()->text(), QString("%L1\nG1 X5\nM30\n"));
         // «Save» writes the edits, then the window closes.
@@ -291,6 +295,42 @@ private slots:
         QCOMPARE(edit.text(), QString("N12 G1 X7 FX50 Z-1234.678 FZ1000"));
         tab.insertFromMaster(edit.text(), true);
         QCOMPARE(ed->text(), QString("%L1\nN12 G1 X7 FX50 Z-1234.678 FZ1000\nM30\n"));
+        // Its comments stay — "(…)" between the words and "; …" — and the
+        // master says before OK which line it replaces and what stays.
+        ed->setText("%L1\nN5 G1 X5 (rough) FX50 ; finish pass\nM30\n");
+        ed->setCursorPosition(1, 4);
+        QString said;
+        QTimer::singleShot(0, &tab, [&] {
+            if (auto* m = qobject_cast<FrameMaster*>(QApplication::activeModalWidget())) {
+                said = m->placement();
+                m->reject();
+            }
+        });
+        tab.openMaster();
+        QVERIFY2(said.contains("line 2") && said.contains("(rough) ; finish pass"), qPrintable(said));
+        QCOMPARE(ed->text(), QString("%L1\nN5 G1 X5 (rough) FX50 ; finish pass\nM30\n")); // cancelled: unchanged
+        QSignalSpy told(&tab, &EditorTab::statusMessage);
+        tab.insertFromMaster("N5 G1 X7 FX50", true);
+        QCOMPARE(ed->text(), QString("%L1\nN5 G1 X7 FX50 (rough) ; finish pass\nM30\n"));
+        QVERIFY(!told.isEmpty() && told.last().first().toString().contains("comment kept"));
+        ed->setCursorPosition(2, 0); // M30: a new frame goes after it
+        QTimer::singleShot(0, &tab, [&] {
+            if (auto* m = qobject_cast<FrameMaster*>(QApplication::activeModalWidget())) {
+                said = m->placement();
+                m->reject();
+            }
+        });
+        tab.openMaster();
+        QVERIFY2(said.contains("replaces line 3"), qPrintable(said)); // M30 is a frame too
+        ed->setCursorPosition(0, 0);
+        QTimer::singleShot(0, &tab, [&] {
+            if (auto* m = qobject_cast<FrameMaster*>(QApplication::activeModalWidget())) {
+                said = m->placement();
+                m->reject();
+            }
+        });
+        tab.openMaster();
+        QVERIFY2(said.contains("inserts a new line after line 1"), qPrintable(said));
         // The other masters.
         FrameMaster j;
         QVERIFY(j.setFromLine("N3 IF R1>0 GOTO 12"));

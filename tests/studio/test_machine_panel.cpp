@@ -195,6 +195,34 @@ private slots:
     }
 
     // The grinder's panel shows its gauge read-out and its wheel lamp.
+    // A click shorter than a push (the mouse down and up between two frames)
+    // still reaches the machine: the button stays down for a push's time.
+    void aShortClickIsAPush() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        session.setRunning(false);
+        MachinePanelWidget panel(session);
+        panel.resize(panel.sizeHint());
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        session.advance(20);
+        engine::Controller& ctl = session.controller();
+        PendantButton* drives = panel.button(machine::Button::DrivesOn);
+        QTest::mouseClick(drives, Qt::LeftButton, {}, capCentre(drives)); // no time between
+        QVERIFY(session.simulation().buttonDown(machine::Button::DrivesOn));
+        session.advance(MachinePanelWidget::kShortestPushMs - 10);
+        QVERIFY(session.simulation().buttonDown(machine::Button::DrivesOn));
+        session.advance(20);
+        QVERIFY(!session.simulation().buttonDown(machine::Button::DrivesOn));
+        QVERIFY(waitFor(
+            session, [&] { return ctl.axisView(engine::AxisId::X).loopClosed; }, 2000));
+        // A long hold is released when the mouse lets go.
+        PendantButton* start = panel.button(machine::Button::CycleStart);
+        QTest::mousePress(start, Qt::LeftButton, {}, capCentre(start));
+        session.advance(300);
+        QTest::mouseRelease(start, Qt::LeftButton, {}, capCentre(start));
+        QVERIFY(!session.simulation().buttonDown(machine::Button::CycleStart));
+    }
+
     void grinderPanel() {
         SimulationSession session(profile::builtin("grinder-205"));
         session.setRunning(false);
@@ -241,7 +269,7 @@ private slots:
         QVERIFY(w.session());
         QVERIFY(w.machineDock()->findChild<MachinePanelWidget*>());
         QCOMPARE(w.messagesDock()->widget(), static_cast<QWidget*>(w.messagesView()));
-        QCOMPARE(w.axesDock()->widget(), static_cast<QWidget*>(w.axesView()));
+        QCOMPARE(w.axesDock()->findChild<AxesView*>(), w.axesView()); // in a scroll area (a wide table)
         QCOMPARE(w.session()->simulation().description().name, std::string("training-lathe"));
         // The trainer's faults menu: inject the E-stop circuit fault.
         QAction* a = w.findChild<QAction*>("action.fault.emergency_stop.x.0.");

@@ -7,6 +7,7 @@
 
 #include "language.h"
 #include "main_window.h"
+#include "workspace/workspaces.h"
 
 using k528::studio::MainWindow;
 
@@ -26,7 +27,11 @@ private slots:
             QVERIFY2(dock, name);
             QVERIFY(!dock->windowTitle().isEmpty());
         }
-        QCOMPARE(w.dockWidgetArea(w.k923Dock()), Qt::RightDockWidgetArea);
+        // The operator's workspace: the K923 on the left, the machine's panel
+        // on the right, the messages below the program (workspace/).
+        QVERIFY(w.workspaces()->activate("operator"));
+        QCOMPARE(w.dockWidgetArea(w.k923Dock()), Qt::LeftDockWidgetArea);
+        QCOMPARE(w.dockWidgetArea(w.machineDock()), Qt::RightDockWidgetArea);
         QCOMPARE(w.dockWidgetArea(w.messagesDock()), Qt::BottomDockWidgetArea);
         QVERIFY(w.workArea());
     }

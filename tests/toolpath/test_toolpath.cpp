@@ -161,6 +161,41 @@ private slots:
         QVERIFY2(r.out.contains(QString::fromUtf8("L1 N1 line 2 rapid  X0 Z0 -> X300 Z0  ВНЕ ГРАНИЦ")), qPrintable(r.out));
         QVERIFY(r.out.contains("status completed"));
     }
+    // The preview's output in program order for a reader of the path
+    // (collision checks, a start from a frame): each frame's M functions and
+    // message before its motion or dwell, each naming the segment it precedes.
+    void mFunctionsAndMessagesInProgramOrder() {
+        const profile::MachineProfile prof = profile::builtin("training-lathe");
+        const auto parsed = program::parse("%L1\nN1 G0 X60 Z5 M3 M8\nN2 #1 G4 X1.5 M5\n"
+                                           "N3 G1 X40 FX200 M9\nN4 M30\n%MESSAGES\n#1=ДОВОДКА\n");
+        QVERIFY(!parsed.hasErrors());
+        const toolpath::ProgrammedPath p = toolpath::programmedPath(prof, parsed.store, 1);
+        QCOMPARE(p.run.status, engine::PreviewStatus::Completed);
+        QCOMPARE(p.segments.size(), std::size_t(2));
+        QCOMPARE(p.mFunctions.size(), std::size_t(4)); // N1, N2, N3, N4
+        const auto codes = [&](std::size_t i) {
+            QStringList c;
+            for (int k = 0; k < p.mFunctions[i].count; ++k)
+                c << QString::number(p.mFunctions[i].codes[static_cast<std::size_t>(k)]);
+            return c.join(' ');
+        };
+        QCOMPARE(codes(0), QString("3 8"));
+        QCOMPARE(p.mFunctions[0].segment, 0u); // before N1's move
+        QCOMPARE(p.mFunctions[0].n, 1);
+        QCOMPARE(codes(1), QString("5"));
+        QCOMPARE(p.mFunctions[1].segment, 1u); // after N1's move, before N3's
+        QCOMPARE(codes(2), QString("9"));
+        QCOMPARE(p.mFunctions[2].segment, 1u);
+        QCOMPARE(codes(3), QString("30"));
+        QCOMPARE(p.mFunctions[3].segment, 2u);
+        QCOMPARE(p.messages.size(), std::size_t(1));
+        QCOMPARE(p.messages[0].number, 1);
+        QCOMPARE(p.messages[0].line, 3);
+        QCOMPARE(p.messages[0].segment, 1u);
+        QCOMPARE(p.dwells.size(), std::size_t(1));
+        QCOMPARE(p.dwells[0].segment, 1u);
+        QCOMPARE(p.dwells[0].seconds, 1.5);
+    }
     void actualPathDiffersByTheFollowingError() {
         const profile::MachineProfile prof = profile::builtin("training-lathe");
         const program::ParseResult parsed =

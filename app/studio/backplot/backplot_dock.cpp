@@ -1,4 +1,5 @@
 #include "backplot/backplot_dock.h"
+#include "workspace/flow_layout.h"
 
 #include "backplot/backplot_widget.h"
 #include "engine/rparams.h"
@@ -27,7 +28,7 @@ public:
     BackplotDock(QMainWindow* w, SimulationSession& session) : QDockWidget(w), session_(session) {
         setObjectName("dock.backplot");
         auto* box = new QWidget(this);
-        auto* row = new QHBoxLayout;
+        auto* row = new FlowLayout; // wraps in a narrow dock
         programLabel_ = new QLabel(box);
         program_ = new QSpinBox(box);
         program_->setObjectName("backplot.program");
@@ -44,11 +45,9 @@ public:
         follow_ = new QCheckBox(box);
         follow_->setObjectName("backplot.followMachine");
         follow_->setChecked(true);
-        row->addWidget(programLabel_);
-        row->addWidget(program_);
+        row->addGroup({programLabel_, program_});
         row->addWidget(pathButton_);
         row->addWidget(runButton_);
-        row->addStretch(1);
         // The blank on a row of its own: one long row made the dock (and the
         // window) wider than a 1920-pixel screen.
         auto* stockRow = new QHBoxLayout;

@@ -93,6 +93,7 @@ struct BackplotScene::Vtk {
 BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     vtkRenderer* r = v_->renderer;
     r->SetBackground(kBackground.r, kBackground.g, kBackground.b);
+    r->SetBackgroundAlpha(1.0); // opaque: the studio shows the frame as an RGB image
     v_->stock3d.init(r, kStockColour, 1);
     v_->stock3d.actor->GetProperty()->SetLighting(true);
     v_->stock3d.actor->GetProperty()->SetAmbient(0.25);

@@ -1,4 +1,5 @@
 #include "backplot/backplot_widget.h"
+#include "workspace/elided_label.h"
 
 #include "backplot/vtk_gl_widget.h"
 
@@ -20,6 +21,7 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace k528::studio::backplot {
@@ -39,7 +41,7 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     viewCombo_ = new QComboBox(this);
     viewCombo_->setObjectName("backplot.view");
     viewCombo_->addItems({QString(), QString()});
-    pickLabel_ = new QLabel(this);
+    pickLabel_ = new ElidedLabel(this); // cut, not widening the dock
     pickLabel_->setObjectName("backplot.pick");
     top->addWidget(fitButton_);
     top->addWidget(viewCombo_);
@@ -47,13 +49,14 @@ BackplotWidget::BackplotWidget(QWidget* parent)
 
     gl_ = new VtkGlWidget(this);
     gl_->setObjectName("backplot.gl");
-    gl_->setMinimumSize(320, 200);
+    gl_->setMinimumSize(200, 150);
     gl_->renderWindow()->AddRenderer(scene_->renderer());
     style2d_ = vtkInteractorStyleRubberBand2D::New();
     style3d_ = vtkInteractorStyleTrackballCamera::New();
     gl_->interactor()->SetInteractorStyle(style2d_);
 
     outsideTitle_ = new QLabel(this);
+    outsideTitle_->setWordWrap(true);
     outsideList_ = new QListWidget(this);
     outsideList_->setObjectName("backplot.outside");
     auto* side = new QWidget(this);
@@ -102,6 +105,13 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     layout->addWidget(split, 1);
     layout->addLayout(bottom);
 
+    liveTimer_ = new QTimer(this);
+    liveTimer_->setSingleShot(true);
+    connect(liveTimer_, &QTimer::timeout, this, [this] {
+        scene_->refreshTool(pw_, ph_);
+        sinceLiveRender_.restart();
+        gl_->requestRender();
+    });
     timer_ = new QTimer(this);
     timer_->setInterval(kTickMs);
     connect(timer_, &QTimer::timeout, this, &BackplotWidget::tickPlayback);
@@ -239,12 +249,12 @@ void BackplotWidget::updateOutsideList() {
 void BackplotWidget::fit() {
     userMoved_ = false;
     scene_->fit(pw_, ph_);
-    gl_->update();
+    gl_->requestRender();
 }
 
 void BackplotWidget::refresh() {
     scene_->refresh(pw_, ph_);
-    gl_->update();
+    gl_->requestRender();
 }
 
 void BackplotWidget::setViewMode(k528::backplot::ViewMode m) {
@@ -309,8 +319,11 @@ void BackplotWidget::appendLive(const toolpath::ActualPath& path, std::size_t fr
                                 const std::optional<k528::backplot::BackplotScene::LiveTool>& tool) {
     scene_->appendActual(&path, from);
     scene_->setLiveTool(tool);
-    scene_->refreshTool(pw_, ph_);
-    gl_->update();
+    // Rendered at most every kLiveIntervalMs: the latest batch then.
+    if (liveTimer_->isActive())
+        return;
+    const qint64 since = sinceLiveRender_.isValid() ? sinceLiveRender_.elapsed() : kLiveIntervalMs;
+    liveTimer_->start(static_cast<int>(std::max<qint64>(0, kLiveIntervalMs - since)));
 }
 
 QString BackplotWidget::pickText() const {

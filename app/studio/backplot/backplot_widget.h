@@ -9,6 +9,7 @@
 
 #include "backplot/backplot_scene.h"
 
+#include <QElapsedTimer>
 #include <QPoint>
 #include <QWidget>
 
@@ -30,6 +31,10 @@ class VtkGlWidget;
 class BackplotWidget : public QWidget {
     Q_OBJECT
 public:
+    // The live path of a run is drawn at most this often (20 Hz): the scene
+    // takes every batch, the OpenGL view renders the latest.
+    static constexpr int kLiveIntervalMs = 50;
+
     explicit BackplotWidget(QWidget* parent = nullptr);
     ~BackplotWidget() override;
 
@@ -83,6 +88,8 @@ private:
     QLabel *timeLabel_ = nullptr, *pickLabel_ = nullptr, *outsideTitle_ = nullptr;
     QListWidget* outsideList_ = nullptr;
     QTimer* timer_ = nullptr;
+    QTimer* liveTimer_ = nullptr;      // the next live render, when one is due
+    QElapsedTimer sinceLiveRender_;
     vtkInteractorStyle* style2d_ = nullptr;
     vtkInteractorStyle* style3d_ = nullptr;
     double playhead_ = -1;

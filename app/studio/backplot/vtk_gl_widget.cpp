@@ -1,8 +1,11 @@
 #include "backplot/vtk_gl_widget.h"
 
 #include <QMouseEvent>
+#include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
+#include <QPainter>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -11,6 +14,8 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkOpenGLState.h>
+
+#include <cmath>
 
 namespace k528::studio::backplot {
 
@@ -30,9 +35,10 @@ void VtkGlWidget::setDefaultSurfaceFormat() {
     QSurfaceFormat::setDefaultFormat(f);
 }
 
-VtkGlWidget::VtkGlWidget(QWidget* parent) : QOpenGLWidget(parent) {
+VtkGlWidget::VtkGlWidget(QWidget* parent) : QWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
+    setAttribute(Qt::WA_OpaquePaintEvent); // the frame covers every pixel
     window_ = vtkGenericOpenGLRenderWindow::New();
     window_->SetMultiSamples(0);
     window_->SetFrameBlitModeToNoBlit();
@@ -52,7 +58,7 @@ VtkGlWidget::VtkGlWidget(QWidget* parent) : QOpenGLWidget(parent) {
         case vtkCommand::WindowIsCurrentEvent:
             break;
         case vtkCommand::RenderEvent:
-            w->update();
+            w->requestRender();
             break;
         default:
             break;
@@ -63,47 +69,117 @@ VtkGlWidget::VtkGlWidget(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 VtkGlWidget::~VtkGlWidget() {
-    makeCurrent();
-    window_->Finalize();
-    doneCurrent();
+    if (context_ && makeCurrent()) {
+        fbo_.reset();
+        window_->Finalize();
+        doneCurrent();
+    }
     interactor_->Delete();
     window_->Delete();
     callback_->Delete();
 }
 
-void VtkGlWidget::initializeGL() {
+bool VtkGlWidget::makeCurrent() {
+    return context_ && surface_ && context_->makeCurrent(surface_.get());
+}
+
+void VtkGlWidget::doneCurrent() {
+    if (context_)
+        context_->doneCurrent();
+}
+
+QSize VtkGlWidget::pixelSize() const {
+    const qreal dpr = devicePixelRatioF();
+    return {std::max(1, static_cast<int>(std::lround(width() * dpr))),
+            std::max(1, static_cast<int>(std::lround(height() * dpr)))};
+}
+
+bool VtkGlWidget::ensureContext() {
+    if (context_ || failed_)
+        return context_ != nullptr;
+    auto context = std::make_unique<QOpenGLContext>();
+    context->setFormat(QSurfaceFormat::defaultFormat());
+    auto surface = std::make_unique<QOffscreenSurface>(screen());
+    if (!context->create()) {
+        failed_ = true;
+        return false;
+    }
+    surface->setFormat(context->format());
+    surface->create();
+    if (!surface->isValid() || !context->makeCurrent(surface.get())) {
+        failed_ = true;
+        return false;
+    }
+    context_ = std::move(context);
+    surface_ = std::move(surface);
     window_->SetReadyForRendering(true);
     window_->SetIsCurrent(true);
     window_->OpenGLInitContext();
-    const qreal dpr = devicePixelRatioF();
-    window_->SetSize(static_cast<int>(width() * dpr), static_cast<int>(height() * dpr));
+    const QSize px = pixelSize();
+    window_->SetSize(px.width(), px.height());
     interactor_->Initialize();
+    interactor_->UpdateSize(px.width(), px.height());
+    return true;
 }
 
-void VtkGlWidget::resizeGL(int w, int h) {
-    const qreal dpr = devicePixelRatioF();
-    const int pw = static_cast<int>(w * dpr), ph = static_cast<int>(h * dpr);
-    window_->SetSize(pw, ph);
-    interactor_->UpdateSize(pw, ph);
-    emit sizeChanged(pw, ph);
+void VtkGlWidget::requestRender() {
+    dirty_ = true;
+    update();
 }
 
-void VtkGlWidget::paintGL() {
+void VtkGlWidget::render() {
+    if (!ensureContext() || !makeCurrent())
+        return;
+    const QSize px = pixelSize();
+    const int* s = window_->GetSize();
+    if (s[0] != px.width() || s[1] != px.height()) {
+        window_->SetSize(px.width(), px.height());
+        interactor_->UpdateSize(px.width(), px.height());
+    }
+    if (!fbo_ || fbo_->size() != px)
+        fbo_ = std::make_unique<QOpenGLFramebufferObject>(px);
     vtkOpenGLState* state = window_->GetState();
-    state->Reset(); // Qt changed the GL state behind VTK's cache
+    state->Reset(); // Qt may have changed the GL state behind VTK's cache
     state->Push();
     state->vtkglDisable(GL_SCISSOR_TEST);
     window_->Render();
     state->Pop();
-    // VTK's framebuffer -> the widget's.
-    QOpenGLFunctions* f = context()->functions();
-    f->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, defaultFramebufferObject());
-    const int* s = window_->GetSize();
-    window_->BlitDisplayFramebuffer(0, 0, 0, s[0], s[1], 0, 0, s[0], s[1], GL_COLOR_BUFFER_BIT,
-                                    GL_NEAREST);
-    f->glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+    // VTK's framebuffer -> ours -> the image painted.
+    QOpenGLFunctions* f = context_->functions();
+    f->glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_->handle());
+    window_->BlitDisplayFramebuffer(0, 0, 0, px.width(), px.height(), 0, 0, px.width(), px.height(),
+                                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    f->glBindFramebuffer(GL_FRAMEBUFFER, fbo_->handle());
+    frame_ = fbo_->toImage(); // top row first
+    if (frame_.format() == QImage::Format_ARGB32_Premultiplied)
+        frame_.reinterpretAsFormat(QImage::Format_RGB32); // an opaque picture (no blending)
+    frame_.setDevicePixelRatio(devicePixelRatioF());
+    f->glBindFramebuffer(GL_FRAMEBUFFER, 0);
     state->Reset();
+    dirty_ = false;
     ++frames_;
+}
+
+void VtkGlWidget::paintEvent(QPaintEvent*) {
+    if (dirty_ || frame_.isNull())
+        render();
+    QPainter p(this);
+    if (frame_.isNull()) {
+        p.fillRect(rect(), palette().window());
+        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
+                   failed_ ? tr("No OpenGL context for the backplot") : QString());
+        return;
+    }
+    p.drawImage(QPointF(0, 0), frame_);
+}
+
+void VtkGlWidget::resizeEvent(QResizeEvent* e) {
+    QWidget::resizeEvent(e);
+    const QSize px = pixelSize();
+    window_->SetSize(px.width(), px.height());
+    interactor_->UpdateSize(px.width(), px.height());
+    dirty_ = true;
+    emit sizeChanged(px.width(), px.height());
 }
 
 void VtkGlWidget::forwardMouse(QMouseEvent* e, unsigned long event) {
@@ -144,10 +220,6 @@ void VtkGlWidget::wheelEvent(QWheelEvent* e) {
                                                      : vtkCommand::MouseWheelBackwardEvent,
                              e);
     emit interactionEnded();
-}
-
-void VtkGlWidget::keyPressEvent(QKeyEvent* e) {
-    QOpenGLWidget::keyPressEvent(e);
 }
 
 } // namespace k528::studio::backplot

@@ -7,7 +7,6 @@
 #include "engine/controller.h"
 #include "profile/csv.h"
 #include "profile/text_format.h"
-#include "scope/dock_place.h"
 #include "session/simulation_session.h"
 #include "util/input_file.h"
 
@@ -490,8 +489,7 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
 QDockWidget* addConstantsDock(QMainWindow* window, SimulationSession& session) {
     auto* dock = new ConstantsDock(window, session);
     window->addDockWidget(Qt::LeftDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; its place is remembered
-    rememberDockPlace(window, dock);
+    dock->hide(); // shown from the View menu; the workspaces place it
     return dock;
 }
 

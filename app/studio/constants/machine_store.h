@@ -1,8 +1,8 @@
 // The shop's database as the machine-data docks use it (constants, R presets):
 // the machine the window simulates, its next revision for every change kept,
 // its revisions, the history of one item and the state at a revision. Every
-// call opens its own connection (db::Database is one connection for one
-// thread), so a worker thread may call these while the window goes on.
+// call uses the process's connection (ShopDatabase), from any thread: a
+// worker thread may call these while the window goes on.
 // When the database has no machine of that name yet (a built-in profile or a
 // machine file was loaded), the first change creates it from the profile the
 // window started with, then stores the change as revision 2.
@@ -47,7 +47,6 @@ public:
     profile::MachineProfile current() const; // the stored state (base when not stored)
 
 private:
-    db::Database open() const;
     void ensureMachine(db::Database& d) const;
     profile::MachineProfile base_;
 };

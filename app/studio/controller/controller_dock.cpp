@@ -22,6 +22,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
 #include <QPlainTextEdit>
@@ -222,7 +223,9 @@ void ControllerDock::build() {
 
     menu_ = new QMenu(this);
     menu_->setObjectName("menu.controller");
-    connectAction_ = menu_->addAction(QString(), this, &ControllerDock::connectLine);
+    // The menu asks for the line (the dock's form), it does not connect to
+    // whatever port the system lists first.
+    connectAction_ = menu_->addAction(QString(), this, &ControllerDock::askForLine);
     connectAction_->setObjectName("action.controller.connect");
     disconnectAction_ = menu_->addAction(QString(), this, &ControllerDock::disconnectLine);
     disconnectAction_->setObjectName("action.controller.disconnect");
@@ -336,6 +339,7 @@ void ControllerDock::connectLine() {
         connecting_ = false;
         if (!ok) {
             say(tr("No connection on %1: %2").arg(link_->line().port, error));
+            lineState_->setText(lastMessage_); // not «Connecting…» any more
             link_.reset();
             updateEnabled();
             emit connectedChanged(false);
@@ -411,6 +415,17 @@ void ControllerDock::connectLine() {
     updateEnabled();
     lineState_->setText(tr("Connecting to %1...").arg(s.port));
     l->open();
+}
+
+void ControllerDock::askForLine() {
+    show();
+    raise();
+    if (link_)
+        return;
+    port_->setFocus(Qt::OtherFocusReason);
+    if (port_->lineEdit())
+        port_->lineEdit()->selectAll();
+    lineState_->setText(tr("Choose the controller's port, speed, parity and address, then Connect."));
 }
 
 void ControllerDock::disconnectLine() {

@@ -61,6 +61,9 @@ public:
 
 public slots:
     void connectLine(); // from the form; connectedChanged() tells
+    // Controller > Connect: the dock shown, its port field focused (the line
+    // is the user's to choose).
+    void askForLine();
     void disconnectLine();
     void pullIntoDatabase();
     void pushFile(const QString& path = QString()); // asks for the file when empty

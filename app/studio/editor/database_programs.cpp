@@ -2,15 +2,14 @@
 
 #include "db/database.h"
 #include "db/error.h"
-#include "db/location.h"
 #include "language.h"
 #include "profile/text_format.h"
 #include "program/diagnostic.h"
 #include "program/parser.h"
+#include "session/shop_database.h"
 
 #include <QCoreApplication>
 #include <algorithm>
-#include <filesystem>
 
 namespace k528::studio {
 
@@ -18,13 +17,6 @@ namespace {
 
 QString tr(const char* s) { return QCoreApplication::translate("k528::studio::DatabasePrograms", s); }
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-
-db::Database openDatabase() {
-    const std::filesystem::path path = db::defaultDatabasePath();
-    std::error_code ec;
-    std::filesystem::create_directories(path.parent_path(), ec);
-    return db::Database::open(path);
-}
 
 // Lines [from, to) of `text` (0-based), each with its "\n".
 std::string lines(const std::vector<std::string_view>& all, int from, int to) {
@@ -44,11 +36,11 @@ std::string lines(const std::vector<std::string_view>& all, int from, int to) {
 QStringList databaseMachines(QString* error) {
     QStringList out;
     try {
-        for (const db::MachineInfo& m : openDatabase().machines())
+        for (const db::MachineInfo& m : ShopDatabase::at()->use([](db::Database& d) { return d.machines(); }))
             out << fromStd(m.name);
     } catch (const std::exception& e) {
         if (error)
-            *error = QString::fromUtf8(e.what());
+            *error = databaseErrorText(e);
     }
     return out;
 }
@@ -57,19 +49,20 @@ DatabasePrograms loadDatabasePrograms(const QString& machine) {
     DatabasePrograms r;
     r.machine = machine;
     try {
-        const db::Database d = openDatabase();
         const std::string name = machine.toStdString();
-        const std::optional<db::MachineInfo> info = d.machine(name);
-        if (!info) {
-            r.error = tr("The database has no machine %1").arg(machine);
-            return r;
-        }
-        const profile::MachineProfile p = d.loadMachine(name);
-        r.revision = info->revision;
-        r.text = fromStd(profile::programsFileText(p));
-        r.ok = true;
+        ShopDatabase::at()->use([&](db::Database& d) {
+            const std::optional<db::MachineInfo> info = d.machine(name);
+            if (!info) {
+                r.error = tr("The database has no machine %1").arg(machine);
+                return;
+            }
+            const profile::MachineProfile p = d.loadMachine(name);
+            r.revision = info->revision;
+            r.text = fromStd(profile::programsFileText(p));
+            r.ok = true;
+        });
     } catch (const std::exception& e) {
-        r.error = QString::fromUtf8(e.what());
+        r.error = databaseErrorText(e);
     }
     return r;
 }
@@ -117,9 +110,9 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
     if (!cuts.empty())
         cuts.front().begin = 0;
     try {
-        db::Database d = openDatabase();
+        const auto shop = ShopDatabase::at();
         const std::string name = machine.toStdString();
-        profile::MachineProfile p = d.loadMachine(name);
+        profile::MachineProfile p = shop->use([&](db::Database& d) { return d.loadMachine(name); });
         std::map<int, std::string> programs;
         for (std::size_t i = 0; i < cuts.size(); ++i) {
             if (cuts[i].number == 0)
@@ -145,7 +138,7 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
         o.summary = "programs and messages from the editor (K528 Studio)";
         o.expectedRevision = expectedRevision;
         o.allowErrors = true; // the constants are not what this writes
-        const db::SaveResult r = d.saveMachine(name, p, o);
+        const db::SaveResult r = shop->use([&](db::Database& d) { return d.saveMachine(name, p, o); });
         s.revision = r.revision;
         s.changed = r.changed;
     } catch (const db::Error& e) {
@@ -154,9 +147,9 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
                             .arg(machine)
                             .arg(expectedRevision)
                             .arg(QString::fromUtf8(e.what()))
-                      : QString::fromUtf8(e.what());
+                      : databaseErrorText(e);
     } catch (const std::exception& e) {
-        s.error = QString::fromUtf8(e.what());
+        s.error = databaseErrorText(e);
     }
     return s;
 }

@@ -65,8 +65,7 @@ DebugPanel::DebugPanel(EditorTab* tab, SimulationSession* session, QWidget* pare
     stopAction_->setObjectName("debug.stop");
     resetAction_ = toolbar_->addAction(QString(), this, &DebugPanel::reset);
     resetAction_->setObjectName("debug.reset");
-    for (QAction* a : {runAction_, cursorAction_})
-        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    // F5 and Ctrl+F10 work in the whole window while the debugger is shown.
 
     auto* speedRow = new QHBoxLayout;
     speedLabel_ = new QLabel(this);

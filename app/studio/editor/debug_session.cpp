@@ -16,6 +16,8 @@ constexpr std::int64_t kStartGapMs = 3 * kPressMs; // from one «Пуск» to t
 
 QString axisName(int i) { return i == 0 ? QStringLiteral("X") : QStringLiteral("Z"); }
 
+QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
 QString refusal(const engine::OpResult& r) {
@@ -122,9 +124,27 @@ void DebugSession::fail(const QString& why) {
     emit changed();
 }
 
+QString DebugSession::whyNoStart() const {
+    const engine::Controller& ctl = session_->controller();
+    const bool ru = currentLanguage() == QStringLiteral("ru");
+    if (session_->simulation().emergencyStopPressed())
+        return tr("the emergency stop is pressed on the machine's panel");
+    if (ctl.mode() != engine::Mode::Auto)
+        return tr("the K923 is in %1, not АВТОМАТ")
+            .arg(fromView(ru ? engine::modeNameRu(ctl.mode()) : engine::modeNameEn(ctl.mode())));
+    const auto alarms = ctl.alarms();
+    if (!alarms.empty())
+        return tr("the positioner shows message %1: %2")
+            .arg(alarms.back().number)
+            .arg(fromStd(ru ? alarms.back().textRu : alarms.back().textEn));
+    return tr("the PLC did not pass it on (start enable, the machine's messages)");
+}
+
 bool DebugSession::start(int number) {
     if (!session_)
         return false;
+    if (!session_->isRunning())
+        emit message(tr("The machine is paused (Simulation > Pause the machine): the run goes on when it runs."));
     engine::Controller& ctl = session_->controller();
     if (engine::programActive(ctl.state())) {
         emit message(tr("A program is under way: stop it first."));
@@ -210,17 +230,26 @@ bool DebugSession::startFree() const {
 
 void DebugSession::pressStartNow() {
     if (!startFree()) {
+        if (!startPending_)
+            pendingSinceMs_ = session_->timeMs();
         startPending_ = true;
         return;
     }
     startPending_ = false;
     pressedAtMs_ = lastStartPressMs_ = session_->timeMs();
+    if (phase_ != Phase::Starting) { // continuing a held program
+        resumeAtMs_ = pressedAtMs_;
+        resumeStops_ = gate_.stops();
+        resumeFrame_ = session_->controller().programView().frameIndex;
+    }
     press(machine::Button::CycleStart);
 }
 
 void DebugSession::resume() {
     if (!session_ || !held())
         return;
+    if (!session_->isRunning())
+        emit message(tr("The machine is paused (Simulation > Pause the machine): the program goes on when it runs."));
     syncBreakpoints();
     pressStartNow();
     emit changed();
@@ -260,6 +289,19 @@ void DebugSession::advanced() {
     const std::int64_t now = session_->timeMs();
     if (startPending_ && startFree())
         pressStartNow();
+    // Never a silent wait for «Пуск»: held down by someone, or not taken.
+    if (startPending_ && now - pendingSinceMs_ > kStartSeenMs) {
+        fail(tr("«Пуск» is held down on the machine's panel: release it, then Run again."));
+        resumeAtMs_ = -1;
+    }
+    if (resumeAtMs_ >= 0) {
+        if (!held() || gate_.stops() != resumeStops_ || ctl.programView().frameIndex != resumeFrame_) {
+            resumeAtMs_ = -1; // taken
+        } else if (now - resumeAtMs_ > kStartSeenMs && !sim.buttonDown(machine::Button::CycleStart)) {
+            resumeAtMs_ = -1;
+            emit message(tr("«Пуск» was not taken: %1.").arg(whyNoStart()));
+        }
+    }
     switch (phase_) {
     case Phase::Idle:
     case Phase::Active:
@@ -299,7 +341,7 @@ void DebugSession::advanced() {
             emit message(tr("L%1 runs.").arg(program_));
         } else if (pressedAtMs_ >= 0 && now - pressedAtMs_ > kStartSeenMs &&
                    !sim.buttonDown(machine::Button::CycleStart)) {
-            fail(tr("«Пуск» was not taken by the positioner (start enable, the PLC's messages)."));
+            fail(tr("«Пуск» was not taken: %1.").arg(whyNoStart()));
         }
         break;
     }

@@ -82,6 +82,8 @@ private:
     void nextHoming();
     void pressStartNow();
     bool startFree() const;
+    // Why the positioner does not take «Пуск» now, in the UI language.
+    QString whyNoStart() const;
     void updateMarker();
 
     QPointer<SimulationSession> session_;
@@ -95,6 +97,12 @@ private:
     std::int64_t phaseSinceMs_ = 0;
     std::int64_t pressedAtMs_ = -1;
     std::int64_t lastStartPressMs_ = -1;
+    // A «Пуск» that continues a held program: when it was pressed, and the
+    // gate's stops and the frame then (it was taken when either moved).
+    std::int64_t resumeAtMs_ = -1;
+    std::int64_t resumeStops_ = 0;
+    int resumeFrame_ = -1;
+    std::int64_t pendingSinceMs_ = -1; // «Пуск» waiting for the button to be up
     int lastState_ = -1;
     Phase lastPhase_ = Phase::Idle;
     int lastLine_ = -1, lastProgram_ = -1;

@@ -3,10 +3,13 @@
 #include "editor/debug_panel.h"
 #include "editor/frame_master.h"
 #include "editor/problems_model.h"
+#include "program/parser.h"
 #include "editor/program_editor.h"
 #include "language.h"
 #include "session/program_loader.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
+#include "workspace/elided_label.h"
 
 #include <QDir>
 #include <QEvent>
@@ -59,6 +62,10 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     sendAction_ = toolbar_->addAction(QString(), this, [this] { sendToController(); });
     toolbar_->addSeparator();
     masterAction_ = toolbar_->addAction(QString(), this, &EditorTab::openMaster);
+    newAction_->setObjectName("editor.new");
+    openAction_->setObjectName("editor.open");
+    saveAction_->setObjectName("editor.save");
+    saveAsAction_->setObjectName("editor.saveAs");
     newAction_->setShortcut(QKeySequence::New);
     saveAction_->setShortcut(QKeySequence::Save);
 
@@ -92,7 +99,7 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     split->addWidget(problems_);
     split->setStretchFactor(0, 4);
     layout->addWidget(split, 1);
-    count_ = new QLabel(this);
+    count_ = new ElidedLabel(this); // cut rather than widen the window
     count_->setObjectName("editor.problemCount");
     layout->addWidget(count_);
     createTools();
@@ -217,6 +224,10 @@ bool EditorTab::openFile(const QString& path) {
             tabs_->setCurrentIndex(i);
             return true;
         }
+    if (ShopDatabase::isOpenDatabaseFile(abs.toStdString())) {
+        emit statusMessage(tr("%1 is the database this window uses: it is not opened as a program").arg(abs));
+        return false;
+    }
     QFile f(abs);
     if (!f.open(QIODevice::ReadOnly)) {
         emit statusMessage(tr("%1 cannot be read: %2").arg(abs, f.errorString()));
@@ -239,6 +250,10 @@ bool EditorTab::saveTo(int index, const QString& path) {
     ProgramEditor* ed = editorAt(index);
     if (!ed)
         return false;
+    if (ShopDatabase::isOpenDatabaseFile(path.toStdString())) {
+        emit statusMessage(tr("%1 is the database this window uses: a program is not written over it").arg(path));
+        return false;
+    }
     const QString old = pathOf(index);
     if (!old.isEmpty())
         watcher_.removePath(old);
@@ -285,7 +300,7 @@ bool EditorTab::closeDocument(int index) {
     if (!ed)
         return false;
     if (ed->isModified()) {
-        switch (ask_(tabs_->tabText(index))) {
+        switch (ask_(documentName(index))) { // the name, not the tab's «name *»
         case CloseChoice::Cancel:
             return false;
         case CloseChoice::Save:
@@ -371,8 +386,33 @@ void EditorTab::openMaster() {
         current.chop(1);
     const bool editing = !current.trimmed().isEmpty() && !current.trimmed().startsWith('%') &&
                          master.setFromLine(current);
+    // Said before OK, not found out after: which line goes, what stays.
+    const QString kept = commentsOfLine(current);
+    master.setPlacement(editing ? (kept.isEmpty() ? tr("OK replaces line %1: %2").arg(line + 1).arg(current.trimmed())
+                                                  : tr("OK replaces line %1: %2\nIts comment stays: %3")
+                                                        .arg(line + 1)
+                                                        .arg(current.trimmed(), kept))
+                                : tr("OK inserts a new line after line %1.").arg(line + 1));
     if (master.exec() == QDialog::Accepted && master.valid())
         insertFromMaster(master.text(), editing);
+}
+
+QString EditorTab::commentsOfLine(const QString& line) {
+    // The parser's comments of the line, as written: "(…)" and "; …" last.
+    const program::ParseResult r = program::parse("%L1\n" + line.toStdString() + "\n");
+    if (r.store.empty() || r.store.programs()[0].frames.size() != 1)
+        return {};
+    QStringList parens;
+    QString semicolon;
+    for (const program::Comment& c : r.store.programs()[0].frames[0].comments) {
+        if (c.style == program::Comment::Style::Parens)
+            parens << QStringLiteral("(%1)").arg(QString::fromStdString(c.text));
+        else
+            semicolon = QStringLiteral(";") + QString::fromStdString(c.text);
+    }
+    if (!semicolon.isEmpty())
+        parens << semicolon;
+    return parens.join(' ');
 }
 
 void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
@@ -387,16 +427,12 @@ void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
         int len = static_cast<int>(old.size());
         while (len > 0 && (old.at(len - 1) == '\n' || old.at(len - 1) == '\r'))
             --len;
-        // A comment on the line stays after the new frame.
-        const int cut = [&] {
-            for (int i = 0; i < len; ++i)
-                if (old.at(i) == ';')
-                    return i;
-            return len;
-        }();
-        QString rest = old.mid(cut, len - cut);
+        // The line's comments — "(…)" anywhere and "; …" — stay after the new frame.
+        const QString kept = commentsOfLine(old.left(len));
         ed->setSelection(line, 0, line, len);
-        ed->replaceSelectedText(rest.isEmpty() ? text : text + " " + rest);
+        ed->replaceSelectedText(kept.isEmpty() ? text : text + " " + kept);
+        emit statusMessage(kept.isEmpty() ? tr("Line %1 replaced by the master").arg(line + 1)
+                                          : tr("Line %1 replaced by the master; its comment kept").arg(line + 1));
     } else {
         const QString cur = ed->text(line);
         const bool emptyLine = cur.trimmed().isEmpty();

@@ -45,6 +45,11 @@ public:
     QLabel* problemCount() const { return count_; }
     // The debugger's pane (editor/debug_panel.h); null without a session.
     DebugPanel* debugPanel() const { return debug_; }
+    // The toolbar's New, Open and Save (the main window gives Open and Save
+    // Ctrl+O and Ctrl+S while the editor is the page shown).
+    QAction* newAction() const { return newAction_; }
+    QAction* openAction() const { return openAction_; }
+    QAction* saveAction() const { return saveAction_; }
 
     // Check the files against the session's machine (File > Machine).
     void setCheckAgainstMachine(bool on);
@@ -135,6 +140,8 @@ private:
     void fillFileMachineMenu();
     void replaceText(ProgramEditor* ed, const QString& text);
     QString documentName(int index) const;
+    // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
+    static QString commentsOfLine(const QString& line);
 
     SimulationSession* session_ = nullptr;
     QToolBar* toolbar_ = nullptr;

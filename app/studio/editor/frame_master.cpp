@@ -105,6 +105,13 @@ FrameMaster::FrameMaster(QWidget* parent) : QDialog(parent) {
     setObjectName("frameMaster");
     setWindowTitle(tr("Frame master"));
     auto* layout = new QVBoxLayout(this);
+    // What OK does with the editor's text: replace a line or insert one.
+    placement_ = new QLabel(this);
+    placement_->setObjectName("master.placement");
+    placement_->setWordWrap(true);
+    placement_->setTextFormat(Qt::PlainText);
+    placement_->hide();
+    layout->addWidget(placement_);
     auto* top = new QFormLayout;
     kindBox_ = new QComboBox(this);
     kindBox_->setObjectName("master.kind");
@@ -375,6 +382,13 @@ void FrameMaster::rebuild() {
     problems_->setText(p);
     buttons_->button(QDialogButtonBox::Ok)->setEnabled(valid_);
 }
+
+void FrameMaster::setPlacement(const QString& text) {
+    placement_->setText(text);
+    placement_->setVisible(!text.isEmpty());
+}
+
+QString FrameMaster::placement() const { return placement_->text(); }
 
 bool FrameMaster::setFromLine(const QString& line) {
     const std::string s = line.toStdString();

@@ -33,6 +33,9 @@ public:
     // Fills the fields from a frame's or a "#k=text" line's text; false if
     // the line is neither (the fields stay as they are).
     bool setFromLine(const QString& line);
+    // Says at the top what OK does (replaces line N, inserts after it).
+    void setPlacement(const QString& text);
+    QString placement() const;
 
     // The canonical text built from the fields, and whether it may be inserted.
     QString text() const { return text_; }
@@ -53,6 +56,7 @@ private:
     QStackedWidget* pages_ = nullptr;
     QComboBox* axis_ = nullptr;
     QComboBox* op_ = nullptr;
+    QLabel* placement_ = nullptr;
     QLabel* preview_ = nullptr;
     QLabel* problems_ = nullptr;
     QDialogButtonBox* buttons_ = nullptr;

@@ -2,7 +2,7 @@
 
 #include "history/history_model.h"
 #include "history/history_service.h"
-#include "scope/dock_place.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
 
 #include <QCheckBox>
@@ -56,7 +56,7 @@ HistoryView::HistoryView(HistoryService& service, QWidget* parent)
         bar->addWidget(w);
     layout->addLayout(bar);
 
-    model_ = new HistoryModel(service_.log(), this);
+    model_ = new HistoryModel(service_.shop(), this);
     table_ = new QTableView(this);
     table_->setObjectName("history.table");
     table_->setModel(model_);
@@ -158,31 +158,35 @@ QString HistoryView::writeCsv(const QString& dbPath, const db::MessageFilter& f,
                               std::atomic<bool>* cancel, std::int64_t* rows) {
     std::int64_t n = 0;
     try {
-        db::OpenOptions o;
-        o.create = false;
-        db::Database d = db::Database::open(std::filesystem::path(dbPath.toStdString()), o);
-        db::MessageLog log(d);
+        // The window's connection, a page at a time: the recorder and the
+        // dock write and read between the pages.
+        const auto shop = ShopDatabase::at(std::filesystem::path(dbPath.toStdString()));
         QSaveFile out(path);
         if (!out.open(QIODevice::WriteOnly))
             return tr("Cannot write %1: %2").arg(path, out.errorString());
         QByteArray buf = QByteArray::fromStdString(db::MessageLog::csvHeader() + "\r\n");
         bool stopped = false;
-        log.forEach(f, [&](const db::MessageRecord& m) {
-            buf += QByteArray::fromStdString(db::MessageLog::csvRow(m));
-            buf += "\r\n";
-            ++n;
-            if (buf.size() > (1 << 16)) {
-                out.write(buf);
-                buf.clear();
+        for (std::int64_t before = 0; !stopped;) {
+            const auto page = shop->useLog([&](db::MessageLog& log) { return log.page(f, before, 2000); });
+            if (page.empty())
+                break;
+            before = page.back().id;
+            for (const db::MessageRecord& m : page) {
+                buf += QByteArray::fromStdString(db::MessageLog::csvRow(m));
+                buf += "\r\n";
+                ++n;
+                if (buf.size() > (1 << 16)) {
+                    out.write(buf);
+                    buf.clear();
+                }
+                if (done)
+                    done->store(n);
+                if (cancel && cancel->load()) {
+                    stopped = true;
+                    break;
+                }
             }
-            if (done)
-                done->store(n);
-            if (cancel && cancel->load()) {
-                stopped = true;
-                return false;
-            }
-            return true;
-        });
+        }
         if (stopped) {
             out.cancelWriting();
             return tr("The export was cancelled; %1 was left as it was.").arg(path);
@@ -299,8 +303,7 @@ private:
 QDockWidget* addHistoryDock(QMainWindow* window, SimulationSession& session, const QString& dbPath) {
     auto* dock = new HistoryDock(window, session, dbPath);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; its place is remembered
-    rememberDockPlace(window, dock);
+    dock->hide(); // shown from the View menu; the workspaces place it
     return dock;
 }
 

@@ -1,6 +1,7 @@
 #include "history/history_model.h"
 
 #include "language.h"
+#include "session/shop_database.h"
 
 #include <QColor>
 #include <QDateTime>
@@ -19,8 +20,8 @@ bool acknowledgeable(db::MessageSource s) {
 
 } // namespace
 
-HistoryModel::HistoryModel(db::MessageLog* log, QObject* parent)
-    : QAbstractTableModel(parent), log_(log) {}
+HistoryModel::HistoryModel(ShopDatabase* shop, QObject* parent)
+    : QAbstractTableModel(parent), shop_(shop) {}
 
 QString HistoryModel::sourceText(db::MessageSource s) {
     switch (s) {
@@ -65,10 +66,12 @@ void HistoryModel::setFilter(const db::MessageFilter& f) {
     rows_.clear();
     total_ = 0;
     error_.clear();
-    if (log_) {
+    if (shop_) {
         try {
-            total_ = log_->count(filter_);
-            const auto page = log_->page(filter_, 0, kFirstPage);
+            const auto page = shop_->useLog([&](db::MessageLog& log) {
+                total_ = log.count(filter_);
+                return log.page(filter_, 0, kFirstPage);
+            });
             rows_.assign(page.begin(), page.end());
         } catch (const std::exception& e) {
             error_ = QString::fromUtf8(e.what());
@@ -82,7 +85,7 @@ bool HistoryModel::mayChange(const db::MessageRecord& m) const {
 }
 
 void HistoryModel::refresh() {
-    if (!log_)
+    if (!shop_)
         return;
     try {
         db::MessageFilter newer = filter_;
@@ -91,7 +94,7 @@ void HistoryModel::refresh() {
             setFilter(filter_);
             return;
         }
-        const auto added = log_->page(newer, 0, 100000);
+        const auto added = shop_->useLog([&](db::MessageLog& log) { return log.page(newer, 0, 100000); });
         if (!added.empty()) {
             beginInsertRows({}, 0, static_cast<int>(added.size()) - 1);
             rows_.insert(rows_.begin(), added.begin(), added.end());
@@ -108,7 +111,7 @@ void HistoryModel::refresh() {
             }
         if (ids.empty())
             return;
-        const auto now = log_->byIds(ids);
+        const auto now = shop_->useLog([&](db::MessageLog& log) { return log.byIds(ids); });
         std::size_t k = 0;
         for (std::size_t j = 0; j < ids.size() && k < now.size(); ++j) {
             if (now[k].id != ids[j])
@@ -134,14 +137,15 @@ int HistoryModel::columnCount(const QModelIndex& parent) const {
 }
 
 bool HistoryModel::canFetchMore(const QModelIndex& parent) const {
-    return !parent.isValid() && log_ && static_cast<std::int64_t>(rows_.size()) < total_;
+    return !parent.isValid() && shop_ && static_cast<std::int64_t>(rows_.size()) < total_;
 }
 
 void HistoryModel::fetchMore(const QModelIndex& parent) {
     if (!canFetchMore(parent))
         return;
     try {
-        const auto page = log_->page(filter_, rows_.empty() ? 0 : rows_.back().id, kPage);
+        const std::int64_t before = rows_.empty() ? 0 : rows_.back().id;
+        const auto page = shop_->useLog([&](db::MessageLog& log) { return log.page(filter_, before, kPage); });
         if (page.empty()) {
             total_ = static_cast<std::int64_t>(rows_.size());
             return;

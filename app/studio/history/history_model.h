@@ -11,6 +11,8 @@
 
 namespace k528::studio {
 
+class ShopDatabase;
+
 class HistoryModel : public QAbstractTableModel {
     Q_OBJECT
 public:
@@ -18,7 +20,8 @@ public:
     static constexpr int kFirstPage = 200;
     static constexpr int kPage = 1000;
 
-    explicit HistoryModel(db::MessageLog* log, QObject* parent = nullptr);
+    // `shop`: the connection whose message log is shown (nullptr: none).
+    explicit HistoryModel(ShopDatabase* shop, QObject* parent = nullptr);
 
     // A new filter: the count and the first page (or the error).
     void setFilter(const db::MessageFilter& f);
@@ -45,7 +48,7 @@ public:
 
 private:
     bool mayChange(const db::MessageRecord& m) const;
-    db::MessageLog* log_;
+    ShopDatabase* shop_;
     db::MessageFilter filter_;
     std::deque<db::MessageRecord> rows_; // newest first
     std::int64_t total_ = 0;

@@ -1,6 +1,6 @@
 #include "history/history_service.h"
 
-#include "db/location.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
 
 #include <QDateTime>
@@ -11,25 +11,24 @@ namespace k528::studio {
 HistoryService::HistoryService(SimulationSession* session, const QString& path, QObject* parent)
     : QObject(parent), session_(session) {
     try {
-        const std::filesystem::path p =
-            path.isEmpty() ? db::defaultDatabasePath() : std::filesystem::path(path.toStdString());
-        path_ = QString::fromStdString(p.string());
-        db_ = std::make_unique<db::Database>(db::Database::open(p));
-        log_ = std::make_unique<db::MessageLog>(*db_);
+        shop_ = ShopDatabase::at(std::filesystem::path(path.toStdString()));
+        path_ = QString::fromStdString(shop_->path().string());
+        shop_->useLog([](db::MessageLog&) {}); // schema 2 or an error now
     } catch (const std::exception& e) {
-        error_ = QString::fromUtf8(e.what());
-        log_.reset();
-        db_.reset();
+        error_ = databaseErrorText(e);
+        shop_.reset();
     }
     if (!session_)
         return;
     machine_ = QString::fromStdString(session_->simulation().profile().name);
-    if (log_) {
+    if (shop_) {
         try {
-            run_ = log_->beginRun(machine_.toStdString(), QDateTime::currentMSecsSinceEpoch());
+            run_ = shop_->useLog([&](db::MessageLog& log) {
+                return log.beginRun(machine_.toStdString(), QDateTime::currentMSecsSinceEpoch());
+            });
         } catch (const std::exception& e) {
-            error_ = QString::fromUtf8(e.what());
-            log_.reset();
+            error_ = databaseErrorText(e);
+            shop_.reset();
         }
     }
     recorder_ = std::make_unique<msglog::Recorder>(session_->controller());
@@ -69,7 +68,7 @@ void HistoryService::advanced() {
 
 void HistoryService::flush() {
     sinceFlush_.restart();
-    if (!recorder_ || !log_ || (recorder_->pending().empty() && retry_.empty()))
+    if (!recorder_ || !shop_ || (recorder_->pending().empty() && retry_.empty()))
         return;
     if (session_)
         recorder_->stampDayTime(QDateTime::currentMSecsSinceEpoch(), session_->speed());
@@ -79,13 +78,13 @@ void HistoryService::flush() {
     events.insert(events.end(), std::make_move_iterator(more.begin()),
                   std::make_move_iterator(more.end()));
     try {
-        log_->write(run_, events);
+        shop_->useLog([&](db::MessageLog& log) { log.write(run_, events); });
         failedOnce_ = false;
         emit written();
     } catch (const std::exception& e) {
         // Kept in front of anything newer for the next try: nothing is lost.
         if (!failedOnce_)
-            emit failed(QString::fromUtf8(e.what()));
+            emit failed(databaseErrorText(e));
         failedOnce_ = true;
         retry_ = std::move(events);
     }

@@ -1,5 +1,5 @@
-// The desktop's half of the message history: one database connection of its
-// own (db::defaultDatabasePath(), or a given file), a run of the machine the
+// The desktop's half of the message history: the process's connection to the
+// database (ShopDatabase: db::defaultDatabasePath(), or a given file), a run of the machine the
 // window simulates, and core's msglog::Recorder on every tick of that
 // machine. On each advanced() the events get the time of day (the desktop's
 // clock; core never reads one) and are written in batches, at most every
@@ -19,6 +19,7 @@
 
 namespace k528::studio {
 
+class ShopDatabase;
 class SimulationSession;
 
 class HistoryService : public QObject {
@@ -34,10 +35,11 @@ public:
                             QObject* parent = nullptr);
     ~HistoryService() override;
 
-    bool isOpen() const { return log_ != nullptr; }
+    bool isOpen() const { return shop_ != nullptr; }
     QString error() const { return error_; }
     QString databasePath() const { return path_; }
-    db::MessageLog* log() const { return log_.get(); }
+    // The connection whose message log this records (nullptr: none).
+    ShopDatabase* shop() const { return shop_.get(); }
     // The machine recorded ("" without a session).
     QString machine() const { return machine_; }
     std::int64_t runId() const { return run_; }
@@ -61,8 +63,7 @@ private:
 
     SimulationSession* session_ = nullptr;
     QString path_, machine_, error_;
-    std::unique_ptr<db::Database> db_;
-    std::unique_ptr<db::MessageLog> log_;
+    std::shared_ptr<ShopDatabase> shop_;
     std::unique_ptr<msglog::Recorder> recorder_;
     std::int64_t run_ = 0;
     int observer_ = 0;

@@ -10,6 +10,7 @@
 #include <QLinearGradient>
 #include <QPainter>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 namespace k528::studio {
@@ -35,14 +36,29 @@ PilotLamp::Color lampColorOf(const std::string& id) {
     return PilotLamp::Color::Green;
 }
 
+int px(double v, double scale) { return static_cast<int>(std::lround(v * scale)); }
+
+QString readoutStyle(double s) {
+    return QStringLiteral("QLabel { background: #0d1410; color: #7cf08e; border: 2px solid #55595e;"
+                          " border-radius: %1px; padding: %2px %3px;"
+                          " font-family: 'DejaVu Sans Mono', 'Liberation Mono', monospace; font-size: %4px; }")
+        .arg(px(4, s))
+        .arg(px(4, s))
+        .arg(px(8, s))
+        .arg(std::max(7, px(12, s)));
+}
+
+QString captionStyle(double s) {
+    return QStringLiteral("QLabel { color: #e8e6dc; font-weight: bold; font-size: %1px; letter-spacing: 1px; }")
+        .arg(std::max(7, px(11, s)));
+}
+
 QLabel* readoutLabel(QWidget* parent, const char* name) {
     auto* l = new QLabel(parent);
     l->setObjectName(name);
     l->setTextFormat(Qt::RichText);
-    l->setStyleSheet(
-        "QLabel { background: #0d1410; color: #7cf08e; border: 2px solid #55595e;"
-        " border-radius: 4px; padding: 4px 8px;"
-        " font-family: 'DejaVu Sans Mono', 'Liberation Mono', monospace; font-size: 12px; }");
+    l->setProperty("k528.style", "readout");
+    l->setStyleSheet(readoutStyle(1));
     l->setMinimumHeight(26);
     return l;
 }
@@ -50,9 +66,15 @@ QLabel* readoutLabel(QWidget* parent, const char* name) {
 QLabel* caption(QWidget* parent) {
     auto* l = new QLabel(parent);
     l->setAlignment(Qt::AlignCenter);
-    l->setStyleSheet("QLabel { color: #e8e6dc; font-weight: bold; font-size: 11px;"
-                     " letter-spacing: 1px; }");
+    l->setProperty("k528.style", "caption");
+    l->setStyleSheet(captionStyle(1));
     return l;
+}
+
+// The sizes set at scale 1, kept on the widget for setScale.
+void fixedSize(QWidget* w, int width, int height) {
+    w->setProperty("k528.fixedSize", QSize(width, height));
+    w->setFixedSize(width, height);
 }
 
 QString led(bool on, const QString& color) {
@@ -80,21 +102,21 @@ PilotLamp* MachinePanelWidget::lamp(const QString& id) const {
 void MachinePanelWidget::build() {
     machine::Simulation& sim = session_.simulation();
     const machine::MachineView v = sim.view();
-    auto* outer = new QVBoxLayout(this);
+    auto* outer = outer_ = new QVBoxLayout(this);
     outer->setContentsMargins(14, 10, 14, 10);
     outer->setSpacing(4);
     title_ = caption(this);
     title_->setObjectName("machine.title");
     title_->setWordWrap(true);
     outer->addWidget(title_);
-    auto* columns = new QHBoxLayout;
+    auto* columns = columns_ = new QHBoxLayout;
     columns->setSpacing(14);
     outer->addLayout(columns, 1);
     // Left: E-stop, cycle, jog, lamps. Right: handwheel, override, door,
     // chuck, read-outs.
-    auto* root = new QVBoxLayout;
+    auto* root = left_ = new QVBoxLayout;
     root->setSpacing(4);
-    auto* right = new QVBoxLayout;
+    auto* right = right_ = new QVBoxLayout;
     right->setSpacing(4);
     columns->addLayout(root, 1);
     columns->addLayout(right, 1);
@@ -105,10 +127,20 @@ void MachinePanelWidget::build() {
         btn->setObjectName(name);
         btn->setIlluminated(illuminated);
         buttons_[b] = btn;
-        connect(btn, &QAbstractButton::pressed, this,
-                [this, b] { session_.simulation().press(b); });
-        connect(btn, &QAbstractButton::released, this,
-                [this, b] { session_.simulation().release(b); });
+        connect(btn, &QAbstractButton::pressed, this, [this, b] {
+            session_.simulation().press(b);
+            pressedAtMs_[b] = session_.simulation().timeMs();
+        });
+        connect(btn, &QAbstractButton::released, this, [this, b] {
+            // A click shorter than a push stays down until it was one.
+            machine::Simulation& sim = session_.simulation();
+            const auto at = pressedAtMs_.find(b);
+            const std::int64_t held = at == pressedAtMs_.end() ? kShortestPushMs : sim.timeMs() - at->second;
+            if (held >= kShortestPushMs)
+                sim.release(b);
+            else
+                sim.pressFor(b, kShortestPushMs - held);
+        });
         return btn;
     };
 
@@ -149,7 +181,7 @@ void MachinePanelWidget::build() {
     const auto jogButton = [&](machine::Button b, const char* name, const char* symbol) {
         PendantButton* btn = makeButton(b, PendantButton::Cap::Black, name, false);
         btn->setSymbol(QString::fromUtf8(symbol));
-        btn->setFixedSize(54, 50);
+        fixedSize(btn, 54, 50);
         return btn;
     };
     // A lathe's view: X across (up = +X, away from the spindle axis), Z along.
@@ -160,7 +192,7 @@ void MachinePanelWidget::build() {
     PendantButton* rapid =
         makeButton(machine::Button::Rapid, PendantButton::Cap::Yellow, "machine.rapid", false);
     rapid->setSymbol(QString::fromUtf8("⇶"));
-    rapid->setFixedSize(54, 50);
+    fixedSize(rapid, 54, 50);
     jog->addWidget(rapid, 1, 1, Qt::AlignCenter);
     jog->addWidget(jogButton(machine::Button::JogZPlus, "machine.jog.z+", "+Z"), 1, 2,
                    Qt::AlignCenter);
@@ -180,7 +212,7 @@ void MachinePanelWidget::build() {
         dial_->setObjectName("machine.handwheel");
         dial_->setDetentsPerTurn(
             static_cast<int>(sim.profile().simulation.getInt("handwheel1.lines", 100)));
-        dial_->setFixedSize(150, 150);
+        fixedSize(dial_, 150, 150);
         connect(dial_, &HandwheelDial::turned, this,
                 [this](int detents) { session_.simulation().turnHandwheel(detents); });
         right->addWidget(dial_, 0, Qt::AlignHCenter);
@@ -212,6 +244,7 @@ void MachinePanelWidget::build() {
         for (int pct : kOverrideSteps)
             legends << QString::number(pct);
         override_->setPositions(legends, 270);
+        override_->setProperty("k528.minimumSize", QSize(150, 128));
         override_->setMinimumSize(150, 128);
         override_->setPosition(sim.overrideSwitch() + 1);
         connect(override_, &SelectorSwitch::positionChanged, this, [this](int i) {
@@ -441,6 +474,92 @@ void MachinePanelWidget::refresh() {
             lastGauge_ = g;
         }
     }
+}
+
+void MachinePanelWidget::setScale(double scale) {
+    scale = std::clamp(scale, 0.5, 3.0);
+    if (std::abs(scale - scale_) < 0.005)
+        return;
+    scale_ = scale;
+    applyScale();
+}
+
+void MachinePanelWidget::setStacked(bool stacked) {
+    if (stacked != this->stacked())
+        columns_->setDirection(stacked ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight);
+}
+
+bool MachinePanelWidget::stacked() const { return columns_->direction() == QBoxLayout::TopToBottom; }
+
+void MachinePanelWidget::fitTo(QSize room) {
+    if (room.isEmpty())
+        return;
+    // The natural sizes (scale 1) of both arrangements, from the columns'
+    // hints at the scale now (they scale linearly).
+    const double s = scale_;
+    const QMargins m = outer_->contentsMargins();
+    const QSize a = left_->sizeHint(), b = right_->sizeHint();
+    const double title = title_->sizeHint().height() + outer_->spacing();
+    const double gap = columns_->spacing();
+    const double mw = m.left() + m.right(), mh = m.top() + m.bottom();
+    const double sideW = (a.width() + gap + b.width() + mw) / s, sideH = (std::max(a.height(), b.height()) + title + mh) / s;
+    const double stackW = (std::max(a.width(), b.width()) + mw) / s, stackH = (a.height() + gap + b.height() + title + mh) / s;
+    const double side = std::min(room.width() / sideW, room.height() / sideH);
+    const double stack = std::min(room.width() / stackW, room.height() / stackH);
+    // Stacked only when it is clearly larger (no flapping at the edge).
+    const bool stacked = stack > side * 1.15;
+    setStacked(stacked);
+    setScale(std::clamp(std::floor((stacked ? stack : side) * 20) / 20, 0.6, 2.5));
+}
+
+void MachinePanelWidget::applyScale() {
+    const double s = scale_;
+    for (auto* c : findChildren<PendantButton*>())
+        c->setScale(s);
+    for (auto* c : findChildren<MushroomButton*>())
+        c->setScale(s);
+    for (auto* c : findChildren<PilotLamp*>())
+        c->setScale(s);
+    for (auto* c : findChildren<HandwheelDial*>())
+        c->setScale(s);
+    for (auto* c : findChildren<SelectorSwitch*>())
+        c->setScale(s);
+    for (auto* w : findChildren<QWidget*>()) {
+        if (const QVariant f = w->property("k528.fixedSize"); f.isValid())
+            w->setFixedSize(px(f.toSize().width(), s), px(f.toSize().height(), s));
+        if (const QVariant m = w->property("k528.minimumSize"); m.isValid())
+            w->setMinimumSize(px(m.toSize().width(), s), px(m.toSize().height(), s));
+    }
+    for (auto* l : findChildren<QLabel*>()) {
+        const QString style = l->property("k528.style").toString();
+        if (style == QLatin1String("caption"))
+            l->setStyleSheet(captionStyle(s));
+        else if (style == QLatin1String("readout")) {
+            l->setStyleSheet(readoutStyle(s));
+            l->setMinimumHeight(px(26, s));
+        }
+    }
+    // Margins and gaps: the values of scale 1 are kept on each layout.
+    for (auto* l : findChildren<QLayout*>()) {
+        if (!l->property("k528.spacing").isValid()) {
+            l->setProperty("k528.spacing", l->spacing());
+            const QMargins m = l->contentsMargins();
+            l->setProperty("k528.margins", QRect(m.left(), m.top(), m.right(), m.bottom()));
+            if (auto* g = qobject_cast<QGridLayout*>(l)) {
+                l->setProperty("k528.hspacing", g->horizontalSpacing());
+                l->setProperty("k528.vspacing", g->verticalSpacing());
+            }
+        }
+        if (auto* g = qobject_cast<QGridLayout*>(l)) {
+            g->setHorizontalSpacing(px(l->property("k528.hspacing").toInt(), s));
+            g->setVerticalSpacing(px(l->property("k528.vspacing").toInt(), s));
+        } else if (l->property("k528.spacing").toInt() >= 0) {
+            l->setSpacing(px(l->property("k528.spacing").toInt(), s));
+        }
+        const QRect m = l->property("k528.margins").toRect();
+        l->setContentsMargins(px(m.x(), s), px(m.y(), s), px(m.width(), s), px(m.height(), s));
+    }
+    updateGeometry();
 }
 
 void MachinePanelWidget::changeEvent(QEvent* e) {

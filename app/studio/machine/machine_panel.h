@@ -5,7 +5,10 @@
 // pilot lamps the machine description wires, and read-outs of the spindles,
 // the turret and (grinder) the in-process gauge. It drives the simulated
 // machine of a SimulationSession through machine::Simulation's operator API
-// and redraws on SimulationSession::advanced().
+// and redraws on SimulationSession::advanced(). It scales (setScale; the main
+// window fits it to its dock, workspace/panel_scaler.h). A click shorter than
+// a hand's push still reaches the machine: the button stays down for
+// kShortestPushMs of machine time.
 #pragma once
 
 #include "machine/simulation.h"
@@ -15,6 +18,8 @@
 
 class QLabel;
 class QGridLayout;
+class QBoxLayout;
+class QVBoxLayout;
 
 namespace k528::studio {
 
@@ -43,6 +48,23 @@ public:
     // The override selector's positions: «K923» then the codes 0..10.
     static int overrideCodeOfPosition(int position) { return position - 1; }
 
+    // A push shorter than this (machine time) is held down until it lasted
+    // so long: the PLC debounces its inputs (8 ms) and scans them once a
+    // tick, and a mouse click can come and go between two frames.
+    static constexpr std::int64_t kShortestPushMs = 100;
+
+    // The panel's scale: 1 = its natural size; the controls, letters,
+    // margins and gaps follow (clamped to 0.5..3).
+    void setScale(double scale);
+    double scale() const { return scale_; }
+    // Its two columns side by side (false) or one above the other (true,
+    // for a tall narrow dock).
+    void setStacked(bool stacked);
+    bool stacked() const;
+    // The arrangement and the largest scale (in 5 % steps, 0.6..2.5) at
+    // which the panel fits `room`.
+    void fitTo(QSize room);
+
 public slots:
     void refresh(); // from the simulation's state
 
@@ -55,6 +77,7 @@ private:
     void retranslate();
     QString lampLegend(const std::string& id) const;
     void updateMultiplierLegends();
+    void applyScale();
 
     SimulationSession& session_;
     std::map<machine::Button, PendantButton*> buttons_;
@@ -73,6 +96,12 @@ private:
     QLabel* overrideLabel_ = nullptr;
     QLabel* jogLabel_ = nullptr;
     QString lastReadout_, lastGauge_;
+    double scale_ = 1;
+    QVBoxLayout* outer_ = nullptr;
+    QBoxLayout* columns_ = nullptr;
+    QVBoxLayout* left_ = nullptr;
+    QVBoxLayout* right_ = nullptr;
+    std::map<machine::Button, std::int64_t> pressedAtMs_;
 };
 
 } // namespace k528::studio

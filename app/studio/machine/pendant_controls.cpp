@@ -150,6 +150,8 @@ void PendantButton::setLegend(const QString& legend) {
 }
 
 void PendantButton::setSymbol(const QString& symbol) {
+    if (symbol == symbol_)
+        return;
     symbol_ = symbol;
     update();
 }
@@ -161,16 +163,28 @@ void PendantButton::setLit(bool lit) {
     update();
 }
 
+namespace {
+QSize scaled(double w, double h, double s) {
+    return {static_cast<int>(std::lround(w * s)), static_cast<int>(std::lround(h * s))};
+}
+} // namespace
+
 QSize PendantButton::sizeHint() const {
-    return {68, legend_.isEmpty() ? 52 : 72};
+    return scaled(68, legend_.isEmpty() ? 52 : 72, scale_);
 }
 
 QSize PendantButton::minimumSizeHint() const {
-    return {52, legend_.isEmpty() ? 48 : 68};
+    return scaled(52, legend_.isEmpty() ? 48 : 68, scale_);
+}
+
+void PendantButton::setScale(double scale) {
+    scale_ = scale;
+    updateGeometry();
+    update();
 }
 
 QRectF PendantButton::capRect() const {
-    const double plate = legend_.isEmpty() ? 0 : 18;
+    const double plate = legend_.isEmpty() ? 0 : 18 * scale_;
     const double side = std::min<double>(width(), height() - plate - 4);
     const double r = side / 2 - 2;
     const QPointF c(width() / 2.0, 2 + side / 2);
@@ -178,7 +192,8 @@ QRectF PendantButton::capRect() const {
 }
 
 bool PendantButton::hitButton(const QPoint& pos) const {
-    const QRectF cap = capRect().adjusted(-6, -6, 6, 6);
+    const double m = 6 * scale_;
+    const QRectF cap = capRect().adjusted(-m, -m, m, m);
     const QPointF d = QPointF(pos) - cap.center();
     return std::hypot(d.x(), d.y()) <= cap.width() / 2;
 }
@@ -186,7 +201,7 @@ bool PendantButton::hitButton(const QPoint& pos) const {
 void PendantButton::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const double plate = legend_.isEmpty() ? 0 : 18;
+    const double plate = legend_.isEmpty() ? 0 : 18 * scale_;
     const double side = std::min<double>(width(), height() - plate - 4);
     const double r = side / 2 - 2;
     const QPointF c(width() / 2.0, 2 + side / 2);
@@ -259,11 +274,17 @@ void MushroomButton::setLegend(const QString& legend) {
 }
 
 QSize MushroomButton::sizeHint() const {
-    return {104, 104};
+    return scaled(104, 104, scale_);
 }
 
 QSize MushroomButton::minimumSizeHint() const {
-    return {96, 96};
+    return scaled(96, 96, scale_);
+}
+
+void MushroomButton::setScale(double scale) {
+    scale_ = scale;
+    updateGeometry();
+    update();
 }
 
 bool MushroomButton::hitButton(const QPoint& pos) const {
@@ -363,17 +384,23 @@ void PilotLamp::setOn(bool on) {
 }
 
 QSize PilotLamp::sizeHint() const {
-    return {60, 52};
+    return scaled(60, 52, scale_);
 }
 
 QSize PilotLamp::minimumSizeHint() const {
-    return {50, 50};
+    return scaled(50, 50, scale_);
+}
+
+void PilotLamp::setScale(double scale) {
+    scale_ = scale;
+    updateGeometry();
+    update();
 }
 
 void PilotLamp::paintEvent(QPaintEvent*) {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const double plate = 15;
+    const double plate = 15 * scale_;
     const double r = std::min<double>(width(), height() - plate - 4) / 2 - 2;
     const QPointF c(width() / 2.0, 2 + r + 1);
     paintBezel(p, c, r);
@@ -396,16 +423,25 @@ void HandwheelDial::setDetentsPerTurn(int n) {
 }
 
 void HandwheelDial::setEnabledLook(bool active) {
+    if (active == active_)
+        return;
     active_ = active;
     update();
 }
 
 QSize HandwheelDial::sizeHint() const {
-    return {170, 170};
+    return scaled(170, 170, scale_);
 }
 
 QSize HandwheelDial::minimumSizeHint() const {
-    return {120, 120};
+    return scaled(120, 120, scale_);
+}
+
+void HandwheelDial::setScale(double scale) {
+    scale_ = scale;
+    setMinimumSize(minimumSizeHint());
+    updateGeometry();
+    update();
 }
 
 double HandwheelDial::pointerAngle(const QPointF& pos) const {
@@ -576,11 +612,17 @@ void SelectorSwitch::setPosition(int index) {
 }
 
 QSize SelectorSwitch::sizeHint() const {
-    return {130, 92};
+    return scaled(130, 92, scale_);
 }
 
 QSize SelectorSwitch::minimumSizeHint() const {
-    return {110, 86};
+    return scaled(110, 86, scale_);
+}
+
+void SelectorSwitch::setScale(double scale) {
+    scale_ = scale;
+    updateGeometry();
+    update();
 }
 
 // Geometry: the caption plate on top (16 px), the legends on a circle of
@@ -595,14 +637,14 @@ double below(double span) { // how far the lowest point reaches below the centre
 } // namespace
 
 double SelectorSwitch::knobRadius() const {
-    const double top = (caption_.isEmpty() ? 2 : kCaptionH) + kLegendH + 2;
-    const double byHeight = (height() - top - kLegendH - 2) / (kLegendR + below(span_));
+    const double top = (caption_.isEmpty() ? 2 : kCaptionH * scale_) + kLegendH * scale_ + 2;
+    const double byHeight = (height() - top - kLegendH * scale_ - 2) / (kLegendR + below(span_));
     const double byWidth = width() / (2 * kLegendR + 1.6);
     return std::max(8.0, std::min(byHeight, byWidth));
 }
 
 QPointF SelectorSwitch::centre() const {
-    const double top = (caption_.isEmpty() ? 2 : kCaptionH) + kLegendH + 2;
+    const double top = (caption_.isEmpty() ? 2 : kCaptionH * scale_) + kLegendH * scale_ + 2;
     return {width() / 2.0, top + kLegendR * knobRadius()};
 }
 
@@ -654,9 +696,9 @@ void SelectorSwitch::paintEvent(QPaintEvent*) {
     const QPointF c = centre();
     const double r = knobRadius();
     if (!caption_.isEmpty())
-        paintPlate(p, QRectF(4, 1, width() - 8, 15), caption_);
+        paintPlate(p, QRectF(4, 1, width() - 8, 15 * scale_), caption_);
     // Legends and index dots around.
-    p.setFont(plateFont(std::clamp(r * 0.42, 8.0, 12.0)));
+    p.setFont(plateFont(std::clamp(r * 0.42, 8.0 * scale_, 12.0 * scale_)));
     for (int i = 0; i < legends_.size(); ++i) {
         const double a = angleOf(i) * kPi / 180;
         const QPointF dot = c + QPointF(r * 1.35 * std::sin(a), -r * 1.35 * std::cos(a));
@@ -665,7 +707,8 @@ void SelectorSwitch::paintEvent(QPaintEvent*) {
         p.drawEllipse(dot, 1.8, 1.8);
         const QPointF lc = legendCentre(i);
         p.setPen(i == position_ ? QColor(0xff, 0xff, 0xff) : QColor(0xb8, 0xbb, 0xbe));
-        p.drawText(QRectF(lc.x() - r * 1.2, lc.y() - 9, r * 2.4, 18), Qt::AlignCenter, legends_[i]);
+        p.drawText(QRectF(lc.x() - r * 1.2, lc.y() - 9 * scale_, r * 2.4, 18 * scale_), Qt::AlignCenter,
+                   legends_[i]);
     }
     paintBezel(p, c, r * 1.08);
     // The knob: black with a white pointer bar.

@@ -2,7 +2,9 @@
 // hardware: illuminated push-buttons, the latching mushroom E-stop, pilot
 // lamps, the handwheel (manual pulse generator) and rotary selector switches.
 // They only show and report; MachinePanelWidget connects them to the
-// simulated machine.
+// simulated machine. Each has a scale (1 = the sizes below): its size hints,
+// legend plates and letters grow or shrink with it, so that the panel
+// scales to the room it gets.
 #pragma once
 
 #include <QAbstractButton>
@@ -30,6 +32,8 @@ public:
 
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    void setScale(double scale);
+    double scale() const { return scale_; }
     QRectF capRect() const; // where a test clicks
 
 protected:
@@ -37,6 +41,7 @@ protected:
     bool hitButton(const QPoint& pos) const override;
 
 private:
+    double scale_ = 1;
     Cap cap_;
     QString legend_, symbol_;
     bool lit_ = false, illuminated_ = false;
@@ -51,12 +56,15 @@ public:
     void setLegend(const QString& legend);
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    void setScale(double scale);
+    double scale() const { return scale_; }
 
 protected:
     void paintEvent(QPaintEvent*) override;
     bool hitButton(const QPoint& pos) const override;
 
 private:
+    double scale_ = 1;
     QString legend_;
 };
 
@@ -72,11 +80,14 @@ public:
     bool isOn() const { return on_; }
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    void setScale(double scale);
+    double scale() const { return scale_; }
 
 protected:
     void paintEvent(QPaintEvent*) override;
 
 private:
+    double scale_ = 1;
     Color color_;
     QString legend_;
     bool on_ = false;
@@ -94,6 +105,8 @@ public:
     void setEnabledLook(bool active); // greyed while no axis is selected
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    void setScale(double scale);
+    double scale() const { return scale_; }
     bool hasHeightForWidth() const override { return true; }
     int heightForWidth(int w) const override { return w; }
 
@@ -108,6 +121,7 @@ protected:
     void wheelEvent(QWheelEvent*) override;
 
 private:
+    double scale_ = 1;
     double pointerAngle(const QPointF& p) const;
     void rotateBy(double degrees);
     int detents_ = 100;
@@ -132,6 +146,8 @@ public:
     QPointF legendCentre(int index) const; // for tests
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
+    void setScale(double scale);
+    double scale() const { return scale_; }
 
 signals:
     void positionChanged(int index);
@@ -142,6 +158,7 @@ protected:
     void wheelEvent(QWheelEvent*) override;
 
 private:
+    double scale_ = 1;
     QPointF centre() const;
     double knobRadius() const;
     double angleOf(int index) const; // degrees clockwise from the top

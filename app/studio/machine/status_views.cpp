@@ -1,4 +1,5 @@
 #include "machine/status_views.h"
+#include "workspace/elided_label.h"
 
 #include "engine/interface_words.h"
 #include "language.h"
@@ -37,7 +38,7 @@ MessagesView::MessagesView(Controller& controller, QWidget* parent)
     setObjectName("messagesView");
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(4, 4, 4, 4);
-    summary_ = new QLabel(this);
+    summary_ = new ElidedLabel(this); // cut rather than widen the window
     summary_->setObjectName("messages.summary");
     lay->addWidget(summary_);
     list_ = new QTreeWidget(this);

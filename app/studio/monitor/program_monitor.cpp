@@ -9,6 +9,8 @@
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
+
+#include "workspace/elided_label.h"
 #include <QListWidget>
 #include <QVBoxLayout>
 
@@ -50,9 +52,9 @@ ProgramMonitor::ProgramMonitor(Controller& controller, QWidget* parent)
     setObjectName("programMonitor");
     choice_ = new QComboBox(this);
     choice_->setObjectName("programMonitor.choice");
-    status_ = new QLabel(this);
+    // Elided when long (a frame's message): it never widens the window.
+    status_ = new ElidedLabel(this);
     status_->setObjectName("programMonitor.status");
-    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     list_ = new QListWidget(this);
     list_->setObjectName("programMonitor.frames");
     list_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));

@@ -5,7 +5,6 @@
 #include "engine/controller.h"
 #include "engine/rparams.h"
 #include "rparams/rparams_model.h"
-#include "scope/dock_place.h"
 #include "session/simulation_session.h"
 
 #include <QComboBox>
@@ -267,8 +266,7 @@ void RParamsPane::applyPresets() {
 QDockWidget* addRParamsDock(QMainWindow* window, SimulationSession& session) {
     auto* dock = new RParamsDock(window, session);
     window->addDockWidget(Qt::LeftDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; its place is remembered
-    rememberDockPlace(window, dock);
+    dock->hide(); // shown from the View menu; the workspaces place it
     return dock;
 }
 

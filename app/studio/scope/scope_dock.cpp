@@ -1,10 +1,13 @@
 #include "scope/scope_dock.h"
 
-#include "scope/dock_place.h"
 #include "scope/scope_view.h"
 #include "session/simulation_session.h"
 
 #include <QDockWidget>
+#include <QElapsedTimer>
+#include <QTimer>
+
+#include <algorithm>
 #include <QEvent>
 #include <QMainWindow>
 
@@ -19,7 +22,19 @@ public:
         setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
         auto* view = new ScopeView(this);
         view->attach(session.simulation());
-        connect(&session, &SimulationSession::advanced, view, &ScopeView::refresh);
+        // The charts live at most at kLiveIntervalMs (a trailing frame
+        // draws what the last one skipped).
+        pending_.setSingleShot(true);
+        connect(&pending_, &QTimer::timeout, view, [this, view] {
+            sinceDraw_.restart();
+            view->refresh();
+        });
+        connect(&session, &SimulationSession::advanced, view, [this] {
+            if (pending_.isActive())
+                return;
+            const qint64 since = sinceDraw_.isValid() ? sinceDraw_.elapsed() : ScopeView::kLiveIntervalMs;
+            pending_.start(static_cast<int>(std::max<qint64>(0, ScopeView::kLiveIntervalMs - since)));
+        });
         connect(&session, &QObject::destroyed, view, [view] { view->forget(); });
         setWidget(view);
         retranslate();
@@ -34,6 +49,8 @@ protected:
 
 private:
     void retranslate() { setWindowTitle(ScopeView::tr("Oscilloscope")); }
+    QTimer pending_;
+    QElapsedTimer sinceDraw_;
 };
 
 } // namespace
@@ -41,8 +58,7 @@ private:
 QDockWidget* addScopeDock(QMainWindow* window, SimulationSession& session) {
     auto* dock = new ScopeDock(window, session);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; its place is remembered
-    rememberDockPlace(window, dock);
+    dock->hide(); // shown from the View menu; the workspaces place it
     return dock;
 }
 

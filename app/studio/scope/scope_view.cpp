@@ -19,6 +19,8 @@
 #include <QSpinBox>
 #include <QValueAxis>
 #include <QVBoxLayout>
+
+#include "workspace/flow_layout.h"
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -55,7 +57,9 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
     setObjectName("scope");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    auto* bar = new QHBoxLayout;
+    // The controls wrap onto more rows in a narrow dock (one row of them
+    // once widened the window past the screen).
+    auto* bar = new FlowLayout;
     pauseBox_ = new QCheckBox(this);
     pauseBox_->setObjectName("scope.pause");
     windowLabel_ = new QLabel(this);
@@ -80,12 +84,12 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
     csvButton_->setObjectName("scope.csv");
     pngButton_ = new QPushButton(this);
     pngButton_->setObjectName("scope.png");
-    for (QWidget* w : std::initializer_list<QWidget*>{pauseBox_, windowLabel_, windowBox_,
-                                                      extraLabel_, extraBox_, triggerLabel_,
-                                                      triggerBox_, thresholdBox_, csvButton_,
-                                                      pngButton_})
-        bar->addWidget(w);
-    bar->addStretch();
+    bar->addWidget(pauseBox_);
+    bar->addGroup({windowLabel_, windowBox_});
+    bar->addGroup({extraLabel_, extraBox_});
+    bar->addGroup({triggerLabel_, triggerBox_, thresholdBox_});
+    bar->addWidget(csvButton_);
+    bar->addWidget(pngButton_);
     layout->addLayout(bar);
 
     for (int a = 0; a < 2; ++a) {
@@ -144,6 +148,7 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
     cursorLabel_ = new QLabel(this);
     cursorLabel_->setObjectName("scope.cursor");
     cursorLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    cursorLabel_->setWordWrap(true);
     layout->addWidget(cursorLabel_);
 
     connect(pauseBox_, &QCheckBox::toggled, this, &ScopeView::setPaused);
@@ -263,6 +268,10 @@ void ScopeView::refresh() {
             return;
         }
     }
+    // Hidden (the dock closed): the triggers keep watching, the picture
+    // is drawn when it shows again (showEvent).
+    if (!isVisible())
+        return;
     if (buffer_.size() == 0) {
         draw(-windowS_ * 1000, 0, 0);
         return;
@@ -357,6 +366,11 @@ bool ScopeView::eventFilter(QObject* o, QEvent* e) {
                 showCursor(a, v.x());
             }
     return QWidget::eventFilter(o, e);
+}
+
+void ScopeView::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    refresh();
 }
 
 void ScopeView::changeEvent(QEvent* e) {

@@ -34,6 +34,9 @@ namespace k528::studio {
 class ScopeView : public QWidget {
     Q_OBJECT
 public:
+    // The dock redraws the live charts at most this often (15 Hz).
+    static constexpr int kLiveIntervalMs = 66;
+
     explicit ScopeView(QWidget* parent = nullptr);
     ~ScopeView() override;
 
@@ -60,11 +63,13 @@ public:
     double framesPerSecond() const { return fps_; }
 
 public slots:
-    // Redraws the window that ends at the newest sample (or the frozen one).
+    // Redraws the window that ends at the newest sample (or the frozen one);
+    // while hidden only the triggers look at the new samples.
     void refresh();
 
 protected:
     void changeEvent(QEvent* e) override;
+    void showEvent(QShowEvent* e) override;
     bool eventFilter(QObject* o, QEvent* e) override;
 
 private:

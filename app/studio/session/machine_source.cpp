@@ -1,14 +1,13 @@
 #include "session/machine_source.h"
 
 #include "db/database.h"
-#include "db/location.h"
 #include "profile/builtin.h"
 #include "profile/validate.h"
+#include "session/shop_database.h"
 
 #include <QCoreApplication>
 #include <QSettings>
 #include <exception>
-#include <filesystem>
 
 namespace k528::studio {
 
@@ -20,19 +19,10 @@ QString fromStd(const std::string& s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-// The database, created with the built-in machines (and its folder) when it
-// does not exist: the first start on a new machine.
-db::Database openDatabase() {
-    const std::filesystem::path path = db::defaultDatabasePath();
-    std::error_code ec;
-    std::filesystem::create_directories(path.parent_path(), ec); // open() says why if this failed
-    return db::Database::open(path);
-}
-
 QString databaseProblem(const std::exception& e) {
     return QCoreApplication::translate("k528::studio::MachineSource",
                                        "The machine database is not used: %1")
-        .arg(QString::fromUtf8(e.what()));
+        .arg(databaseErrorText(e));
 }
 
 } // namespace
@@ -41,13 +31,18 @@ MachineChoice loadMachine(const QString& nameOrPath) {
     const std::string name = nameOrPath.toStdString();
     MachineChoice c;
     try {
-        const db::Database d = openDatabase();
-        if (profile::checkName(name).empty() && d.hasMachine(name)) {
+        // The database, created with the built-in machines (and its folder)
+        // when it does not exist: the first start on a new machine.
+        const bool found = ShopDatabase::at()->use([&](db::Database& d) {
+            if (!profile::checkName(name).empty() || !d.hasMachine(name))
+                return false;
             c.profile = d.loadMachine(name);
             c.source = QCoreApplication::translate("k528::studio::MachineSource", "database %1")
                            .arg(fromStd(d.path().string()));
+            return true;
+        });
+        if (found)
             return c;
-        }
     } catch (const std::exception& e) {
         c.warning = databaseProblem(e);
     }
@@ -61,7 +56,7 @@ MachineChoice loadMachine(const QString& nameOrPath) {
 QStringList machineNames(QString* warning) {
     QStringList names;
     try {
-        for (const db::MachineInfo& m : openDatabase().machines())
+        for (const db::MachineInfo& m : ShopDatabase::at()->use([](db::Database& d) { return d.machines(); }))
             names << fromStd(m.name);
         return names;
     } catch (const std::exception& e) {
@@ -76,17 +71,17 @@ QStringList machineNames(QString* warning) {
 MachineSave saveMachine(const profile::MachineProfile& p) {
     MachineSave s;
     try {
-        db::Database d = openDatabase();
         db::WriteOptions o;
         o.summary = "kept from the simulated controller's memory (K528 Studio)";
         // Constants a trainer made faulty on purpose stay as they are.
         o.allowErrors = true;
-        const db::SaveResult r =
-            d.hasMachine(p.name) ? d.saveMachine(p.name, p, o) : d.createMachine(p, o);
+        const db::SaveResult r = ShopDatabase::at()->use([&](db::Database& d) {
+            return d.hasMachine(p.name) ? d.saveMachine(p.name, p, o) : d.createMachine(p, o);
+        });
         s.revision = r.revision;
         s.changes = static_cast<int>(r.changes.size());
     } catch (const std::exception& e) {
-        s.error = QString::fromUtf8(e.what());
+        s.error = databaseErrorText(e);
     }
     return s;
 }

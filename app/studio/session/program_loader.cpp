@@ -3,6 +3,7 @@
 #include "engine/load_programs.h"
 #include "engine/program_check.h"
 #include "language.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
 
 #include <QCoreApplication>
@@ -22,6 +23,10 @@ QString tr(const char* text) {
 
 ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
     ProgramLoad r;
+    if (ShopDatabase::isOpenDatabaseFile(path.toStdString())) {
+        r.problem = tr("%1 is the database this window uses: it is not read as a program").arg(path);
+        return r;
+    }
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         r.problem = tr("%1 cannot be read: %2").arg(path, f.errorString());

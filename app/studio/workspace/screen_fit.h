@@ -1,0 +1,28 @@
+// Keeping the main window inside its screen: a dock's content that cannot
+// shrink scrolls inside the dock instead of widening the window, and the
+// window's size and place are held inside the screen's available area.
+#pragma once
+
+#include <QRect>
+
+class QDockWidget;
+class QScrollArea;
+class QWidget;
+
+namespace k528::studio {
+
+// Wraps `dock`'s content in a frameless scroll area that resizes it: the
+// dock's minimum becomes the scroll area's (a few lines), the content keeps
+// its own and scrolls when the dock is smaller. Returns the scroll area
+// (object name "<dock>.scroll"); a content that already scrolls (an item
+// view, a scroll area, a text editor) is left as it is (nullptr).
+QScrollArea* scrollInside(QDockWidget* dock);
+
+// The available area (without panels and task bars) of the screen `w` is on,
+// in logical pixels; the primary screen's when it has none yet.
+QRect availableArea(const QWidget* w);
+
+// `window` moved and resized so that its frame lies inside `area`.
+void keepInside(QWidget* window, const QRect& area);
+
+} // namespace k528::studio

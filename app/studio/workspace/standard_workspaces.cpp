@@ -1,0 +1,111 @@
+#include "workspace/standard_workspaces.h"
+
+#include "k923/k923_layout.h"
+
+#include <QCoreApplication>
+#include <algorithm>
+
+namespace k528::studio {
+
+std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
+    const double w = std::max(800, available.width());
+    const double h = std::max(600, available.height());
+    // The K923's share of the width when it has the window's height (less
+    // the title bar, menu, status bar and its dock's title).
+    const auto k923Share = [&](double most) {
+        return std::min(most, (h - 130) * K923Layout::aspect() / w);
+    };
+    const auto place = [](const char* dock, Qt::DockWidgetArea area, double share = 0) {
+        DockPlace p;
+        p.dock = QString::fromLatin1(dock);
+        p.area = area;
+        p.share = share;
+        return p;
+    };
+    const auto beside = [](const char* dock, const char* other, Qt::Orientation split, double share) {
+        DockPlace p;
+        p.dock = QString::fromLatin1(dock);
+        p.beside = QString::fromLatin1(other);
+        p.split = split;
+        p.share = share;
+        return p;
+    };
+    const auto tab = [](const char* dock, const char* with, bool shown = true) {
+        DockPlace p;
+        p.dock = QString::fromLatin1(dock);
+        p.tabWith = QString::fromLatin1(with);
+        p.shown = shown;
+        return p;
+    };
+    const auto hidden = [](DockPlace p) {
+        p.shown = false;
+        return p;
+    };
+    const auto raised = [](DockPlace p) {
+        p.raised = true;
+        return p;
+    };
+
+    std::vector<WorkspaceSpec> out;
+
+    WorkspaceSpec op;
+    op.id = QStringLiteral("operator");
+    op.title = QT_TRANSLATE_NOOP("k528::studio::Workspaces", "Operator");
+    op.toolTip = QT_TRANSLATE_NOOP("k528::studio::Workspaces",
+                                   "At the machine: the K923, the machine's panel, the program being run, "
+                                   "the messages and the axes");
+    op.page = QStringLiteral("programMonitor");
+    op.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F1);
+    op.docks = {
+        place("dock.k923", Qt::LeftDockWidgetArea, k923Share(0.30)),
+        raised(place("dock.machine", Qt::RightDockWidgetArea, 0.36)),
+        beside("dock.axes", "dock.machine", Qt::Vertical, 0.36), // split before any tab joins
+        tab("dock.controller", "dock.machine", false),
+        place("dock.messages", Qt::BottomDockWidgetArea, 0.25),
+        tab("dock.history", "dock.messages", false),
+    };
+    out.push_back(op);
+
+    WorkspaceSpec tech;
+    tech.id = QStringLiteral("technologist");
+    tech.title = QT_TRANSLATE_NOOP("k528::studio::Workspaces", "Technologist");
+    tech.toolTip = QT_TRANSLATE_NOOP("k528::studio::Workspaces",
+                                     "Programs: the editor with its problems and outline, the backplot; the "
+                                     "debugger and the controller from the View menu");
+    tech.page = QStringLiteral("programEditorTab");
+    tech.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F2);
+    tech.docks = {
+        place("dock.backplot", Qt::RightDockWidgetArea, 0.38),
+        hidden(beside("dock.debugger", "dock.backplot", Qt::Vertical, 0.5)),
+        tab("dock.controller", "dock.debugger", false),
+        hidden(place("dock.messages", Qt::BottomDockWidgetArea, 0.22)),
+        tab("dock.axes", "dock.messages", false),
+        tab("dock.history", "dock.messages", false),
+        tab("dock.scope", "dock.messages", false),
+        hidden(place("dock.rparams", Qt::LeftDockWidgetArea, 0.3)),
+        tab("dock.constants", "dock.rparams", false),
+    };
+    out.push_back(tech);
+
+    WorkspaceSpec train;
+    train.id = QStringLiteral("training");
+    train.title = QT_TRANSLATE_NOOP("k528::studio::Workspaces", "Training");
+    train.toolTip = QT_TRANSLATE_NOOP("k528::studio::Workspaces",
+                                      "Learning the machine: the machine's panel, the K923, the backplot and "
+                                      "the oscilloscope");
+    train.page = QString(); // no centre: the four panes share the window
+    train.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F3);
+    const double k = k923Share(0.28);
+    train.docks = {
+        place("dock.k923", Qt::LeftDockWidgetArea, k),
+        beside("dock.machine", "dock.k923", Qt::Horizontal, 0.30),
+        place("dock.backplot", Qt::RightDockWidgetArea, std::max(0.3, 1.0 - k - 0.30)),
+        raised(beside("dock.scope", "dock.backplot", Qt::Vertical, 0.40)),
+        tab("dock.messages", "dock.scope"),
+        tab("dock.axes", "dock.scope", false),
+    };
+    out.push_back(train);
+    return out;
+}
+
+} // namespace k528::studio

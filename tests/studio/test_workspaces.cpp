@@ -1,0 +1,487 @@
+// The main window's workspaces on a given screen (run at 1366×768, 1920×1080
+// and 2× HiDPI: the offscreen platform's screen comes from a config file,
+// tests/studio/screens/): every workspace fits the screen with every control
+// inside it, long texts and more docks do not widen the window, the machine's
+// panel scales with the room, each workspace keeps its own layout, the first
+// start chooses by the screen, and no shortcut means two actions at once.
+#include "editor/editor_tab.h"
+#include "k923/k923_widget.h"
+#include "editor/program_editor.h"
+#include "language.h"
+#include "machine/machine_panel.h"
+#include "machine/pendant_controls.h"
+#include "main_window.h"
+#include "monitor/program_monitor.h"
+#include "workspace/elided_label.h"
+#include "workspace/workspaces.h"
+
+#include <QAbstractButton>
+#include <QAbstractItemView>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QShortcut>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QMenu>
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace k528::studio;
+
+namespace {
+
+QRect available() { return QGuiApplication::primaryScreen()->availableGeometry(); }
+
+QString screenName() {
+    const QRect a = available();
+    const qreal dpr = QGuiApplication::primaryScreen()->devicePixelRatio();
+    return QStringLiteral("%1x%2%3").arg(a.width()).arg(a.height()).arg(dpr > 1 ? QStringLiteral("@%1x").arg(dpr) : QString());
+}
+
+// The part of `w` not clipped by its parents, in global coordinates (empty:
+// hidden behind a tab, scrolled out of its pane).
+QRect shownRect(const QWidget* w) {
+    QRect r(w->mapToGlobal(QPoint(0, 0)), w->size());
+    for (const QWidget* p = w->parentWidget(); p; p = p->parentWidget()) {
+        r &= QRect(p->mapToGlobal(QPoint(0, 0)), p->size());
+        if (p->isWindow())
+            break;
+    }
+    return r;
+}
+
+bool isControl(const QWidget* w) {
+    return qobject_cast<const QAbstractButton*>(w) || qobject_cast<const QComboBox*>(w) ||
+           qobject_cast<const QAbstractSpinBox*>(w) || qobject_cast<const QLineEdit*>(w) ||
+           qobject_cast<const QAbstractSlider*>(w) || qobject_cast<const QAbstractItemView*>(w) ||
+           qobject_cast<const SelectorSwitch*>(w) || qobject_cast<const HandwheelDial*>(w);
+}
+
+// Every control the user can see lies inside the screen's available area.
+QStringList controlsOutside(const QMainWindow& w) {
+    QStringList out;
+    const QRect screen = available();
+    int seen = 0;
+    for (const QWidget* c : w.findChildren<QWidget*>()) {
+        if (!c->isVisible() || !isControl(c) || c->window() != &w)
+            continue;
+        const QRect r = shownRect(c);
+        if (r.isEmpty())
+            continue;
+        ++seen;
+        if (!screen.contains(r))
+            out << QStringLiteral("%1 (%2) at %3,%4 %5x%6")
+                       .arg(c->objectName(), QString::fromLatin1(c->metaObject()->className()))
+                       .arg(r.x())
+                       .arg(r.y())
+                       .arg(r.width())
+                       .arg(r.height());
+    }
+    if (seen < 10)
+        out << QStringLiteral("only %1 controls seen").arg(seen);
+    return out;
+}
+
+QString sizeText(QSize s) { return QStringLiteral("%1x%2").arg(s.width()).arg(s.height()); }
+
+void settle() {
+    // Layout requests, the deferred shares and the panel's scaling.
+    for (int i = 0; i < 5; ++i) {
+        QCoreApplication::sendPostedEvents();
+        QTest::qWait(20);
+    }
+}
+
+bool fits(const QMainWindow& w, QString* why) {
+    const QRect a = available();
+    if (!a.contains(w.frameGeometry())) {
+        *why = QStringLiteral("window %1 at %2,%3 outside %4")
+                   .arg(sizeText(w.frameGeometry().size()))
+                   .arg(w.frameGeometry().x())
+                   .arg(w.frameGeometry().y())
+                   .arg(sizeText(a.size()));
+        return false;
+    }
+    const QSize min = w.minimumSizeHint();
+    if (min.width() > a.width() || min.height() > a.height()) {
+        *why = QStringLiteral("minimum %1 larger than %2").arg(sizeText(min), sizeText(a.size()));
+        return false;
+    }
+    return true;
+}
+
+// The widgets whose minimum is wider than the screen, outside any scroll
+// area (what makes a window too wide).
+QStringList tooWide(const QMainWindow& w) {
+    QStringList out;
+    for (const QWidget* c : w.findChildren<QWidget*>()) {
+        if (c->isHidden() || c->minimumSizeHint().width() <= available().width())
+            continue;
+        bool scrolled = false;
+        for (const QWidget* p = c->parentWidget(); p && p != &w; p = p->parentWidget())
+            scrolled = scrolled || qobject_cast<const QAbstractScrollArea*>(p);
+        if (!scrolled)
+            out << QStringLiteral("%1 (%2) %3").arg(c->objectName(), QString::fromLatin1(c->metaObject()->className()),
+                                                    sizeText(c->minimumSizeHint()));
+    }
+    return out;
+}
+
+// A shortcut as Qt's shortcut map holds it: its keys, where it acts and
+// what it is (for the message).
+struct Bound {
+    QKeySequence keys;
+    const QWidget* scope; // nullptr: the whole window
+    bool withChildren;    // the scope's children too (WidgetWithChildrenShortcut)
+    QString what;
+};
+
+// Whether `w` puts an action on screen now: a visible widget of the window,
+// the visible menu bar, or a menu opened from one that is.
+bool liveIn(const QObject* o, const QMainWindow& win, int depth = 0) {
+    if (depth > 8)
+        return false;
+    if (const auto* menu = qobject_cast<const QMenu*>(o)) {
+        for (const QObject* a : menu->menuAction()->associatedObjects())
+            if (liveIn(a, win, depth + 1))
+                return true;
+        return false;
+    }
+    const auto* w = qobject_cast<const QWidget*>(o);
+    return w && w->window() == &win && w->isVisible();
+}
+
+QList<Bound> liveShortcuts(const QMainWindow& win) {
+    QList<Bound> out;
+    for (const QAction* a : win.findChildren<QAction*>()) {
+        const QList<QKeySequence> keys = a->shortcuts();
+        if (keys.isEmpty())
+            continue;
+        const QList<QObject*> where = a->associatedObjects();
+        for (const QObject* o : where) {
+            if (!liveIn(o, win))
+                continue;
+            const auto* w = qobject_cast<const QWidget*>(o);
+            const bool windowWide = a->shortcutContext() == Qt::WindowShortcut ||
+                                    a->shortcutContext() == Qt::ApplicationShortcut || qobject_cast<const QMenu*>(w) ||
+                                    qobject_cast<const QMenuBar*>(w);
+            for (const QKeySequence& k : keys)
+                out.append({k, windowWide ? nullptr : w, a->shortcutContext() == Qt::WidgetWithChildrenShortcut,
+                            QStringLiteral("%1 «%2»").arg(a->objectName(), a->text())});
+            break; // one place is enough: an action is one shortcut
+        }
+    }
+    for (const QShortcut* s : win.findChildren<QShortcut*>()) {
+        const auto* w = qobject_cast<const QWidget*>(s->parent());
+        if (!w || !s->isEnabled() || !liveIn(w, win))
+            continue;
+        const bool windowWide = s->context() == Qt::WindowShortcut || s->context() == Qt::ApplicationShortcut;
+        for (const QKeySequence& k : s->keys())
+            out.append({k, windowWide ? nullptr : w, s->context() == Qt::WidgetWithChildrenShortcut,
+                        QStringLiteral("QShortcut %1 on %2").arg(s->objectName(), w->objectName())});
+    }
+    return out;
+}
+
+// Two shortcuts clash when some focus makes both of them apply.
+bool overlap(const Bound& a, const Bound& b) {
+    if (!a.scope || !b.scope)
+        return true;
+    const auto covers = [](const Bound& outer, const QWidget* w) {
+        return outer.scope == w || (outer.withChildren && outer.scope->isAncestorOf(w));
+    };
+    return covers(a, b.scope) || covers(b, a.scope);
+}
+
+QStringList clashes(const QMainWindow& win) {
+    const QList<Bound> all = liveShortcuts(win);
+    QStringList out;
+    for (int i = 0; i < all.size(); ++i)
+        for (int j = i + 1; j < all.size(); ++j)
+            if (all[i].keys == all[j].keys && overlap(all[i], all[j]))
+                out << QStringLiteral("%1: %2 and %3")
+                           .arg(all[i].keys.toString(), all[i].what, all[j].what);
+    return out;
+}
+
+QString shotPath(const QString& what) {
+    const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
+    QDir().mkpath(dir);
+    return dir + QStringLiteral("/workspaces-%1-%2.png").arg(screenName(), what);
+}
+
+} // namespace
+
+class TestWorkspaces : public QObject {
+    Q_OBJECT
+    QTemporaryDir home_;
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTestWorkspaces");
+        QSettings().clear();
+        QVERIFY(setLanguage("ru"));
+        qInfo("screen %s, available %s", qPrintable(screenName()), qPrintable(sizeText(available().size())));
+    }
+    void init() { QSettings().clear(); }
+
+    void firstStartChoosesByTheScreen() {
+        QCOMPARE(Workspaces::firstChoice(QSize(1366, 768)), QString("operator"));
+        QCOMPARE(Workspaces::firstChoice(QSize(1280, 1024)), QString("operator"));
+        QCOMPARE(Workspaces::firstChoice(QSize(1920, 1080)), QString("technologist"));
+        MainWindow w;
+        QCOMPARE(w.workspaces()->current(), Workspaces::firstChoice(available().size()));
+        QCOMPARE(QSettings().value("workspaces/current").toString(), w.workspaces()->current());
+        // The switch is in the menu bar's corner, one button a workspace.
+        QCOMPARE(w.menuBar()->cornerWidget(Qt::TopRightCorner), w.workspaces()->switcher());
+        QCOMPARE(w.workspaces()->switcher()->findChildren<QAbstractButton*>().size(), 3);
+    }
+
+    void everyWorkspaceFitsTheScreen() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        for (const WorkspaceSpec& s : w.workspaces()->specs()) {
+            // Switched as a user does: the button in the menu bar's corner.
+            auto* button = w.workspaces()->switcher()->findChild<QAbstractButton*>("workspaces.button." + s.id);
+            QVERIFY(button);
+            QVERIFY2(shownRect(button).isValid() && available().contains(shownRect(button)), qPrintable(s.id));
+            QTest::mouseClick(button, Qt::LeftButton);
+            QCOMPARE(w.workspaces()->current(), s.id);
+            settle();
+            QString why;
+            QVERIFY2(fits(w, &why), qPrintable(s.id + ": " + why));
+            const QStringList outside = controlsOutside(w);
+            QVERIFY2(outside.isEmpty(), qPrintable(s.id + ": " + outside.join("; ")));
+            // The centre: the page of the workspace, or none.
+            if (s.page.isEmpty())
+                QVERIFY(w.workArea()->isHidden());
+            else
+                QCOMPARE(w.workArea()->currentWidget()->objectName(), s.page);
+            for (const DockPlace& p : s.docks) {
+                auto* d = w.findChild<QDockWidget*>(p.dock);
+                QVERIFY2(d, qPrintable(p.dock));
+                QCOMPARE(d->isVisible(), p.shown);
+            }
+            QVERIFY(w.grab().save(shotPath(s.id)));
+        }
+    }
+
+    void longTextsAndMoreDocksDoNotWidenTheWindow() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QString longText =
+            QStringLiteral("L1: выполняется, кадр N15 — «ЧИСТОВАЯ ОБТОЧКА ПОВЕРХНОСТИ ПОД ПОДШИПНИК» ").repeated(8);
+        for (const WorkspaceSpec& s : w.workspaces()->specs()) {
+            QVERIFY(w.workspaces()->activate(s.id));
+            settle();
+            // Whatever a label says: every label of the window, at once.
+            for (QLabel* l : w.findChildren<QLabel*>())
+                if (l->window() == &w)
+                    l->setText(longText);
+            w.statusBar()->showMessage(longText);
+            settle();
+            QString why;
+            QVERIFY2(fits(w, &why), qPrintable(s.id + ", long labels: " + why + " " + tooWide(w).join("; ")));
+            // The oscilloscope opened (it once grew the window to 3005 px),
+            // then every dock at once.
+            w.findChild<QDockWidget*>("dock.scope")->show();
+            settle();
+            QVERIFY2(fits(w, &why), qPrintable(s.id + ", oscilloscope: " + why));
+            for (QDockWidget* d : w.findChildren<QDockWidget*>())
+                d->show();
+            settle();
+            QVERIFY2(fits(w, &why), qPrintable(s.id + ", every dock: " + why));
+            w.workspaces()->resetLayout();
+        }
+        // The elided status says the whole text in its tooltip.
+        auto* status = w.programMonitor()->findChild<ElidedLabel*>("programMonitor.status");
+        QVERIFY(status);
+        QVERIFY(w.workspaces()->activate("operator"));
+        settle();
+        status->setText(longText);
+        QVERIFY(status->isElided());
+        QVERIFY(status->shownText().endsWith(QChar(0x2026)));
+    }
+
+    void theMachinePanelScalesWithItsRoom() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("operator"));
+        settle();
+        MachinePanelWidget* panel = w.machinePanel();
+        const double large = panel->scale();
+        QVERIFY2(large >= 0.6, qPrintable(QString::number(large)));
+        // The controls follow the scale.
+        auto* jog = panel->findChild<PendantButton*>("machine.jog.x+");
+        QCOMPARE(jog->width(), static_cast<int>(std::lround(54 * large)));
+        // A narrower dock: a smaller panel, still whole (no scroll bar).
+        w.resizeDocks({w.machineDock()}, {w.machineDock()->width() * 2 / 3}, Qt::Horizontal);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->scale() < large, 5000);
+        auto* scroll = w.machineDock()->findChild<QScrollArea*>("machinePanelScroll");
+        QVERIFY(scroll);
+        if (panel->scale() > 0.6) {
+            settle();
+            QVERIFY(!scroll->horizontalScrollBar()->isVisible());
+            QVERIFY(!scroll->verticalScrollBar()->isVisible());
+        }
+        // The K923 scales with its dock too: its keys grow with its width.
+        const int key = w.k923()->keyRect(k528::panel::Key::Enter).width();
+        w.resizeDocks({w.k923Dock()}, {w.k923Dock()->width() * 2 / 3}, Qt::Horizontal);
+        QTRY_VERIFY_WITH_TIMEOUT(w.k923()->keyRect(k528::panel::Key::Enter).width() < key, 5000);
+    }
+
+    // Every action of the window, in every workspace and with every page of
+    // the work area: no shortcut means two actions at once (Qt says
+    // «Ambiguous shortcut overload» and does neither).
+    void oneActionPerShortcutInEachContext() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        int checked = 0;
+        for (const WorkspaceSpec& s : w.workspaces()->specs()) {
+            QVERIFY(w.workspaces()->activate(s.id));
+            settle();
+            for (int page = -1; page < w.workArea()->count(); ++page) {
+                if (page >= 0) {
+                    if (w.workArea()->isHidden())
+                        break;
+                    w.workArea()->setCurrentIndex(page);
+                }
+                // Every dock shown too: their actions join the window's.
+                for (int all = 0; all < 2; ++all) {
+                    if (all)
+                        for (QDockWidget* d : w.findChildren<QDockWidget*>())
+                            d->show();
+                    settle();
+                    const QStringList c = clashes(w);
+                    QVERIFY2(c.isEmpty(), qPrintable(s.id + ": " + c.join("; ")));
+                    checked += static_cast<int>(liveShortcuts(w).size());
+                }
+            }
+            w.workspaces()->resetLayout();
+        }
+        qInfo("%d shortcuts checked", checked);
+        QVERIFY(checked > 20);
+        // The test sees a clash: two window-wide actions on one key.
+        auto* twin = new QAction("twin", &w);
+        twin->setShortcut(w.workspaces()->action("operator")->shortcut());
+        w.addAction(twin);
+        QVERIFY(!clashes(w).isEmpty());
+        delete twin;
+    }
+
+    // Ctrl+S and Ctrl+O in the technologist's editor: the editor's Save and
+    // Open, nothing else.
+    void ctrlSAndCtrlOAreTheEditorsForTheTechnologist() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("part.k528");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("%L1\nM30\n");
+        }
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("technologist"));
+        settle();
+        EditorTab* tab = w.programEditor();
+        QVERIFY(tab->openFile(path));
+        ProgramEditor* ed = tab->currentEditor();
+        ed->setFocus();
+        ed->setCursorPosition(1, 0);
+        QTest::keyClicks(ed, "G1 X5 FX100");
+        QTest::keyClick(ed, Qt::Key_Return);
+        QVERIFY(ed->isModified());
+        QTest::failOnWarning(QRegularExpression("Ambiguous shortcut"));
+        QSignalSpy save(tab->saveAction(), &QAction::triggered);
+        QSignalSpy keep(w.findChild<QAction*>("action.keepInDatabase"), &QAction::triggered);
+        QTest::keyClick(ed, Qt::Key_S, Qt::ControlModifier);
+        QCOMPARE(save.count(), 1);
+        QCOMPARE(keep.count(), 0);
+        QVERIFY(!ed->isModified());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("%L1\nG1 X5 FX100\nM30\n"));
+        // Ctrl+O: the editor's Open (its file dialog, closed here).
+        QSignalSpy open(tab->openAction(), &QAction::triggered);
+        QSignalSpy load(w.findChild<QAction*>("action.loadPrograms"), &QAction::triggered);
+        QTimer::singleShot(300, &w, [] {
+            if (QWidget* m = QApplication::activeModalWidget())
+                m->close();
+        });
+        QTest::keyClick(ed, Qt::Key_O, Qt::ControlModifier);
+        QCOMPARE(open.count(), 1);
+        QCOMPARE(load.count(), 0);
+        // In the operator's workspace they are File's again.
+        QVERIFY(w.workspaces()->activate("operator"));
+        settle();
+        QCOMPARE(w.findChild<QAction*>("action.keepInDatabase")->shortcut(), QKeySequence(QKeySequence::Save));
+        QVERIFY(tab->saveAction()->shortcut().isEmpty());
+    }
+
+    void eachWorkspaceKeepsItsLayout() {
+        {
+            MainWindow w;
+            w.placeOnScreen();
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate("operator"));
+            settle();
+            QVERIFY(w.messagesDock()->isVisible());
+            w.messagesDock()->close(); // the operator closes the messages
+            QVERIFY(w.workspaces()->activate("technologist"));
+            settle();
+            QVERIFY(w.findChild<QDockWidget*>("dock.backplot")->isVisible());
+            QVERIFY(!w.k923Dock()->isVisible());
+            QCOMPARE(w.workArea()->currentWidget(), static_cast<QWidget*>(w.programEditor()));
+            w.debuggerDock()->show(); // the technologist opens the debugger
+            QVERIFY(w.workspaces()->activate("operator"));
+            settle();
+            QVERIFY(!w.messagesDock()->isVisible());
+            QVERIFY(!w.debuggerDock()->isVisible());
+            QVERIFY(w.k923Dock()->isVisible());
+            QCOMPARE(w.workArea()->currentWidget(), static_cast<QWidget*>(w.programMonitor()));
+            QVERIFY(w.close());
+        }
+        {
+            // Started again: the workspace left last, as it was left.
+            MainWindow w;
+            w.placeOnScreen();
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QCOMPARE(w.workspaces()->current(), QString("operator"));
+            QVERIFY(!w.messagesDock()->isVisible());
+            QVERIFY(w.workspaces()->activate("technologist"));
+            settle();
+            QVERIFY(w.debuggerDock()->isVisible());
+            // Reset layout: the debugger back on demand.
+            w.workspaces()->resetAction()->trigger();
+            settle();
+            QVERIFY(!w.debuggerDock()->isVisible());
+            QVERIFY(w.workspaces()->activate("operator"));
+            w.workspaces()->resetAction()->trigger();
+            settle();
+            QVERIFY(w.messagesDock()->isVisible());
+            w.close();
+        }
+    }
+};
+
+QTEST_MAIN(TestWorkspaces)
+#include "test_workspaces.moc"
