@@ -10,6 +10,7 @@ packages=(
     qt6-base-dev libqt6opengl6-dev qt6-serialport-dev     # Qt 6 Widgets, OpenGL, serial ports
     qt6-serialbus-dev qt6-tools-dev qt6-l10n-tools        # Modbus, Qt Test/Linguist tools
     libqt6sql6-sqlite libqt6svg6 qt6-qpa-plugins          # run-time plugins
+    qt6-translations-l10n                                 # Qt's own texts in Russian (qtbase_ru.qm)
     libvtk9-dev libsqlite3-dev                            # VTK 9.1, SQLite
     nlohmann-json3-dev libboost-dev                       # JSON, Boost.Geometry (header-only)
     libqscintilla2-qt6-dev qt6-charts-dev                 # program editor, oscilloscope

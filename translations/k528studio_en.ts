@@ -3257,6 +3257,22 @@ Its comment stays: %3</translation>
         <source>No segment here</source>
         <translation>No segment here</translation>
     </message>
+    <message>
+        <source>%1 segments</source>
+        <translation>%1 segments</translation>
+    </message>
+    <message>
+        <source>X ⌀ diameter</source>
+        <translation>X ⌀ diameter</translation>
+    </message>
+    <message>
+        <source>X radius</source>
+        <translation>X radius</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::backplot::VtkGlWidget</name>

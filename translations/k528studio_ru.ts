@@ -3257,6 +3257,22 @@ Its comment stays: %3</source>
         <source>No segment here</source>
         <translation>Здесь нет отрезка</translation>
     </message>
+    <message>
+        <source>%1 segments</source>
+        <translation>отрезков: %1</translation>
+    </message>
+    <message>
+        <source>X ⌀ diameter</source>
+        <translation>X ⌀ диаметр</translation>
+    </message>
+    <message>
+        <source>X radius</source>
+        <translation>X радиус</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 мм</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::backplot::VtkGlWidget</name>

@@ -1,6 +1,7 @@
 #include "language.h"
 
 #include <QCoreApplication>
+#include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
 #include <QTranslator>
@@ -11,6 +12,16 @@ namespace {
 QTranslator* translator() {
     static QTranslator* t = new QTranslator(QCoreApplication::instance());
     return t;
+}
+// Qt's own texts (file dialogs, Cancel/Close/Save/Discard): Debian's
+// qt6-translations-l10n, qtbase_<lang>.qm in Qt's translations folder.
+QTranslator* qtTranslator() {
+    static QTranslator* t = new QTranslator(QCoreApplication::instance());
+    return t;
+}
+bool& qtInstalled() {
+    static bool installed = false;
+    return installed;
 }
 QString& current() {
     static QString lang;
@@ -29,6 +40,11 @@ bool setLanguage(const QString& language) {
     if (language != "ru" && language != "en")
         return false;
     QCoreApplication::removeTranslator(translator());
+    QCoreApplication::removeTranslator(qtTranslator());
+    // English is Qt's own language: no file (the Russian one is taken out).
+    qtInstalled() = language != "en" &&
+                    qtTranslator()->load("qtbase_" + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath)) &&
+                    QCoreApplication::installTranslator(qtTranslator());
     if (translator()->load(":/i18n/k528studio_" + language + ".qm"))
         QCoreApplication::installTranslator(translator());
     current() = language;
@@ -37,5 +53,7 @@ bool setLanguage(const QString& language) {
 }
 
 QString currentLanguage() { return current(); }
+
+bool qtTranslationsLoaded() { return qtInstalled(); }
 
 } // namespace k528::studio

@@ -8,6 +8,8 @@
 #include "cli_runner.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "toolpath/actual_path.h"
+#include "engine/run.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
@@ -69,6 +71,51 @@ std::pair<double, double> project(const backplot::BackplotScene& scene, double x
     double out[4];
     m->MultiplyPoint(in, out);
     return {(out[0] / out[3] + 1) / 2 * kW, (out[1] / out[3] + 1) / 2 * kH};
+}
+
+// A rendered picture of any size; y from the bottom.
+struct Picture {
+    int w = 0, h = 0;
+    std::vector<unsigned char> rgb;
+    Rgb at(int x, int y) const {
+        const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)) * 3;
+        return {rgb[i] / 255.0, rgb[i + 1] / 255.0, rgb[i + 2] / 255.0};
+    }
+};
+
+Picture render(backplot::BackplotScene& scene, int w, int h) {
+    Picture p;
+    p.w = w, p.h = h;
+    std::string error;
+    if (!backplot::renderOffscreen(scene, w, h, "", &p.rgb, error))
+        qFatal("%s", error.c_str());
+    return p;
+}
+
+// The rows (from the bottom) and columns where `match` holds inside [x0, x1) × [y0, y1).
+struct Box {
+    int x0 = 1 << 30, x1 = -1, y0 = 1 << 30, y1 = -1, count = 0;
+    bool empty() const { return count == 0; }
+    int height() const { return empty() ? 0 : y1 - y0 + 1; }
+    int width() const { return empty() ? 0 : x1 - x0 + 1; }
+};
+template <class F>
+Box boxOf(const Picture& p, int x0, int x1, int y0, int y1, F match) {
+    Box b;
+    for (int y = std::max(0, y0); y < std::min(p.h, y1); ++y)
+        for (int x = std::max(0, x0); x < std::min(p.w, x1); ++x)
+            if (match(p.at(x, y))) {
+                b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x);
+                b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
+                ++b.count;
+            }
+    return b;
+}
+
+// A colour of the µm scale (blue .. red: saturated, not the path's colours).
+bool lutColour(Rgb c) {
+    const double hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b});
+    return hi > 0.6 && hi - lo > 0.5;
 }
 
 } // namespace
@@ -240,6 +287,94 @@ private slots:
                  qPrintable(QString("%1 %2 %3").arg(b.r).arg(b.g).arg(b.b)));
         const auto outside = project(scene, 135, rc, 18.5 / 2); // before the stroke's far point
         QVERIFY(near(img.at(int(outside.first), int(outside.second)), backplot::kBackground));
+    }
+    // The title, «ВНЕ ГРАНИЦ» and the rulers' labels are there from the first
+    // frame, of a readable size, on lines of their own, and the path keeps
+    // clear of them (issue: 5 px tall, shown only after a zoom, drawn over).
+    void overlayIsReadableFromTheFirstFrame() {
+        profile::MachineProfile prof = profile::builtin("training-lathe");
+        const toolpath::ProgrammedPath path = pathOf(
+            "%L1\nN1 G90 G54 G55\nN2 G0 X100 Z2\nN3 G1 Z-200 FZ500\nN4 G0 X320\nN5 Z2\nM30\n", prof);
+        backplot::BackplotScene scene;
+        scene.setPath(path);
+        for (const auto& [w, h] : {std::pair{420, 360}, std::pair{1400, 400}}) {
+            const Picture p = render(scene, w, h);
+            const auto grey = [](Rgb c) { return near(c, backplot::kTitleColour); };
+            const auto red = [](Rgb c) { return c.r > 0.6 && c.g < 0.35 && c.b < 0.35; };
+            // The top band: the title's line, then «ВНЕ ГРАНИЦ».
+            const int band = backplot::kTopBandPx;
+            // (right of the left ruler, whose top label reaches into the band)
+            const Box title = boxOf(p, backplot::kLeftBandPx, w, h - band, h, grey);
+            const Box warning = boxOf(p, backplot::kLeftBandPx, w, h - band, h, red);
+            QVERIFY2(title.height() >= 9 && title.height() <= 20,
+                     qPrintable(QString("title %1 px tall at %2x%3").arg(title.height()).arg(w).arg(h)));
+            QVERIFY2(warning.height() >= 9 && warning.height() <= 20, qPrintable(QString::number(warning.height())));
+            QVERIFY2(warning.y1 < title.y0, qPrintable(QString("title rows %1..%2, warning %3..%4")
+                                                           .arg(title.y0).arg(title.y1).arg(warning.y0).arg(warning.y1)));
+            QVERIFY(title.width() > 120);
+            QCOMPARE(scene.titleText(), std::string("L1  4 segments  X \xE2\x8C\x80 diameter"));
+            // Nothing of the path in the band: the red there is the warning's text only.
+            const Box pathRed = boxOf(p, boxOf(p, 0, w, title.y0 - 14, title.y0, red).x1 + 6, w, h - band, h, red);
+            QVERIFY2(pathRed.empty(), qPrintable(QString("path in the top band at x %1").arg(pathRed.x0)));
+            // The left ruler's labels (grey 0.8) are as tall as text.
+            const auto label = [](Rgb c) { return c.r > 0.4 && std::fabs(c.r - c.g) < 0.1 && std::fabs(c.r - c.b) < 0.1; };
+            // The tallest run of rows with label pixels left of the ruler.
+            int run = 0, tallest = 0;
+            for (int y = backplot::kBottomBandPx; y < h - band; ++y) {
+                run = boxOf(p, 0, backplot::kLeftBandPx - 14, y, y + 1, label).empty() ? 0 : run + 1;
+                tallest = std::max(tallest, run);
+            }
+            QVERIFY2(tallest >= 8 && tallest <= 16, qPrintable(QString("ruler label %1 px tall").arg(tallest)));
+            // Our scale: a round length, its bar as long as that length in pixels.
+            const double mm = scene.scaleBarMm();
+            const double mag = std::pow(10.0, std::floor(std::log10(mm)));
+            QVERIFY(std::fabs(mm / mag - 1) < 1e-9 || std::fabs(mm / mag - 2) < 1e-9 || std::fabs(mm / mag - 5) < 1e-9);
+            const backplot::ViewWindow vw = scene.window(w, h);
+            const Box bar = boxOf(p, w / 2, w, 10, 14, grey);
+            QVERIFY2(std::abs(bar.width() - mm / vw.worldPerPixel) <= 3,
+                     qPrintable(QString("bar %1 px for %2 mm").arg(bar.width()).arg(mm)));
+        }
+    }
+    // The µm bar keeps its coloured strip in a wide view (it used to shrink
+    // to its labels), at a fixed width at the right.
+    void colourBarKeepsItsStripInAWideView() {
+        profile::MachineProfile prof = profile::builtin("training-lathe");
+        prof.setC(8, 1);
+        prof.setC(60, 1);
+        const program::ParseResult parsed = program::parse("%L1\nN1 G1 X60 FX3000\nN2 G1 Z-40 FZ3000\nM30\n");
+        QVERIFY(!parsed.hasErrors());
+        engine::RunOptions ro;
+        ro.home = false;
+        const toolpath::ActualPath actual = toolpath::actualPath(prof, parsed.store, 1, ro, 1.0);
+        QVERIFY(actual.samples.size() > 10);
+        backplot::BackplotScene scene;
+        scene.setPath(toolpath::programmedPath(prof, parsed.store, 1));
+        scene.setActual(&actual);
+        for (const auto& [w, h] : {std::pair{1600, 400}, std::pair{420, 360}, std::pair{2400, 300}}) {
+            const Picture p = render(scene, w, h);
+            const Box strip = boxOf(p, w - backplot::kRightBarBandPx, w, 0, h, lutColour);
+            QVERIFY2(strip.width() >= 15 && strip.height() >= 60,
+                     qPrintable(QString("strip %1 x %2 px at %3x%4").arg(strip.width()).arg(strip.height()).arg(w).arg(h)));
+        }
+    }
+    // The wheel zooms about the cursor: the world point under it stays there.
+    void zoomKeepsThePointUnderTheCursor() {
+        backplot::BackplotScene scene;
+        scene.setPath(pathOf("%L1\nN1 G0 X200\nN2 G1 Z-100 FZ500\n", profile::builtin("training-lathe")));
+        const int w = 600, h = 400;
+        scene.fit(w, h);
+        const backplot::ViewWindow a = scene.window(w, h);
+        const double cx = 120, cy = 300; // display pixel, from the bottom-left
+        const double wx = a.x0 + cx * a.worldPerPixel, wy = a.y0 + cy * a.worldPerPixel;
+        scene.zoomAt(cx, cy, 2.0, w, h);
+        const backplot::ViewWindow b = scene.window(w, h);
+        QVERIFY(std::fabs(b.worldPerPixel - a.worldPerPixel / 2) < 1e-9 * a.worldPerPixel);
+        QVERIFY(std::fabs(b.x0 + cx * b.worldPerPixel - wx) < 1e-6);
+        QVERIFY(std::fabs(b.y0 + cy * b.worldPerPixel - wy) < 1e-6);
+        // And back out: the same place again.
+        scene.zoomAt(cx, cy, 0.5, w, h);
+        const backplot::ViewWindow c = scene.window(w, h);
+        QVERIFY(std::fabs(c.x0 - a.x0) < 1e-6 && std::fabs(c.y0 - a.y0) < 1e-6);
     }
     void levelOfDetailKeepsCornersAndBoundsTheSize() {
         // 20,000 zig-zag passes: the full view collapses them, a zoom shows every corner.

@@ -24,6 +24,7 @@
 #include <QScreen>
 #include <QSpinBox>
 #include <QTabWidget>
+#include <QWheelEvent>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -130,6 +131,26 @@ private slots:
         QCOMPARE(spy.at(1).at(1).toInt(), 4);
         s.editor->currentEditor()->getCursorPosition(&line, &index);
         QCOMPARE(line, 3);
+    }
+    void theWheelZoomsToTheCursor() {
+        Studio s;
+        QVERIFY(s.showPath());
+        auto* gl = s.view->glWidget();
+        const QPoint at(gl->width() / 4, gl->height() / 3);
+        const auto worldAt = [&] {
+            const k528::backplot::ViewWindow vw = s.view->scene().window(gl->width(), gl->height());
+            return std::pair{vw.x0 + at.x() * vw.worldPerPixel, vw.y0 + (gl->height() - at.y()) * vw.worldPerPixel};
+        };
+        const auto before = worldAt();
+        const double wpp = s.view->scene().window(gl->width(), gl->height()).worldPerPixel;
+        QWheelEvent wheel(QPointF(at), gl->mapToGlobal(QPointF(at)), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(gl, &wheel);
+        const double zoomed = s.view->scene().window(gl->width(), gl->height()).worldPerPixel;
+        QVERIFY2(zoomed < wpp * 0.9, qPrintable(QString("%1 -> %2").arg(wpp).arg(zoomed)));
+        const auto after = worldAt();
+        QVERIFY(std::fabs(after.first - before.first) < 1e-6);
+        QVERIFY(std::fabs(after.second - before.second) < 1e-6);
     }
     void aRunOnTheSessionsMachineGrowsThePathLive() {
         Studio s;

@@ -3,8 +3,11 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QTabWidget>
 
+#include "editor/listing.h"
 #include "language.h"
 #include "main_window.h"
 #include "workspace/workspaces.h"
@@ -44,10 +47,28 @@ private slots:
         // QApplication posts LanguageChange to every window: let it arrive.
         QTRY_COMPARE(w.k923Dock()->windowTitle(), QString("Панель оператора K923"));
         QCOMPARE(w.menuBar()->actions().first()->text(), QString("&Файл"));
+        // Qt's own texts too: the standard buttons of a message box.
+        QVERIFY(k528::studio::qtTranslationsLoaded());
+        {
+            QMessageBox box(QMessageBox::Question, "t", "t", QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+            QCOMPARE(box.button(QMessageBox::Cancel)->text(), QString("Отмена"));
+            QCOMPARE(box.button(QMessageBox::Save)->text(), QString("Сохранить"));
+        }
+        // Texts of free functions too (the PDF listing's header).
+        {
+            const QStringList h = k528::studio::listingHeader({"a.k528", "", QDateTime()}, {}, 1, 1);
+            QVERIFY2(h.at(0).startsWith(QString("Файл:")), qPrintable(h.join('|')));
+            QVERIFY2(h.at(2).contains(QString("Страница 1 из 1")) || !h.at(2).contains("Page"), qPrintable(h.at(2)));
+        }
         QVERIFY(!k528::studio::setLanguage("de"));
         QCOMPARE(k528::studio::currentLanguage(), QString("ru"));
         QVERIFY(k528::studio::setLanguage("en"));
         QTRY_COMPARE(w.k923Dock()->windowTitle(), QString("K923 operator panel"));
+        QVERIFY(!k528::studio::qtTranslationsLoaded()); // Qt's English again
+        {
+            QMessageBox box(QMessageBox::Question, "t", "t", QMessageBox::Cancel);
+            QCOMPARE(box.button(QMessageBox::Cancel)->text(), QString("Cancel"));
+        }
     }
 };
 

@@ -88,6 +88,8 @@ struct BackplotScene::Vtk {
     vtkNew<vtkLegendScaleActor> legend;
     vtkNew<vtkTextActor> warning;
     vtkNew<vtkTextActor> title;
+    Layer scaleBar;               // our scale: a bar of a round length ...
+    vtkNew<vtkTextActor> scaleText; // ... and its length ("10 mm")
 };
 
 BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
@@ -135,9 +137,13 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->bar->SetLookupTable(v_->lut);
     v_->bar->SetTitle("\xC2\xB5m"); // µm
     v_->bar->SetNumberOfLabels(5);
-    v_->bar->SetPosition(0.90, 0.15);
-    v_->bar->SetWidth(0.08);
-    v_->bar->SetHeight(0.7);
+    // Placed in pixels by placeOverlays(): a strip of fixed width with its
+    // labels beside it, whatever the width of the view.
+    v_->bar->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
+    v_->bar->GetPosition2Coordinate()->SetCoordinateSystemToDisplay();
+    v_->bar->UnconstrainedFontSizeOn();
+    v_->bar->SetBarRatio(0.35);
+    v_->bar->SetTextPositionToSucceedScalarBar();
     for (vtkTextProperty* t : {v_->bar->GetTitleTextProperty(), v_->bar->GetLabelTextProperty()}) {
         t->SetFontFamily(VTK_FONT_FILE);
         t->SetFontFile(kFont);
@@ -147,30 +153,49 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     }
     v_->bar->VisibilityOff();
     r->AddActor2D(v_->bar);
-    v_->legend->SetLegendVisibility(true);
+    // The rulers of the left and bottom edges; the scale is our own bar
+    // (VTK's legend says "Scale 1 : 147.603" in English).
+    v_->legend->SetLegendVisibility(false);
     v_->legend->SetTopAxisVisibility(false);
+    v_->legend->SetTopBorderOffset(kTopBandPx); // the title and «ВНЕ ГРАНИЦ» above the left ruler
+    v_->legend->SetBottomBorderOffset(kBottomBandPx); // the scale bar below the bottom ruler
     v_->legend->SetRightAxisVisibility(false);
     v_->legend->SetLabelModeToXYCoordinates();
     for (vtkAxisActor2D* a : {v_->legend->GetLeftAxis(), v_->legend->GetBottomAxis()}) {
         a->GetProperty()->SetColor(0.7, 0.7, 0.7);
         a->SetNumberOfMinorTicks(0);
+        // Labels of a fixed size (VTK sizes them to the viewport: 2-5 px in a dock).
+        a->UseFontSizeFromPropertyOn();
         a->GetLabelTextProperty()->SetColor(0.8, 0.8, 0.8);
+        a->GetLabelTextProperty()->SetFontFamily(VTK_FONT_FILE);
+        a->GetLabelTextProperty()->SetFontFile(kFont);
+        a->GetLabelTextProperty()->SetFontSize(kSmallTextPx);
+        a->GetLabelTextProperty()->ShadowOff();
+        a->GetLabelTextProperty()->ItalicOff();
+        a->GetLabelTextProperty()->BoldOff();
+        a->SetLabelFormat("%.4g");
     }
     v_->legend->GetLegendLabelProperty()->SetColor(0.8, 0.8, 0.8);
     v_->legend->GetLegendTitleProperty()->SetColor(0.8, 0.8, 0.8);
     r->AddViewProp(v_->legend);
-    for (vtkTextActor* t : {v_->warning.GetPointer(), v_->title.GetPointer()}) {
+    // The title on the first line of the top band, «ВНЕ ГРАНИЦ» on the
+    // second (placeOverlays()), both of a fixed size in pixels.
+    for (vtkTextActor* t : {v_->warning.GetPointer(), v_->title.GetPointer(), v_->scaleText.GetPointer()}) {
+        t->SetTextScaleModeToNone();
         t->GetTextProperty()->SetFontFamily(VTK_FONT_FILE);
         t->GetTextProperty()->SetFontFile(kFont);
-        t->GetTextProperty()->SetFontSize(14);
+        t->GetTextProperty()->SetFontSize(kTextPx);
+        t->GetTextProperty()->ShadowOff();
+        t->GetTextProperty()->SetVerticalJustificationToTop();
+        t->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
         r->AddActor2D(t);
     }
     v_->warning->GetTextProperty()->SetColor(kOutsideColour.r, kOutsideColour.g, kOutsideColour.b);
-    v_->warning->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    v_->warning->SetPosition(0.08, 0.93);
-    v_->title->GetTextProperty()->SetColor(0.85, 0.85, 0.85);
-    v_->title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    v_->title->SetPosition(0.55, 0.93);
+    v_->title->GetTextProperty()->SetColor(kTitleColour.r, kTitleColour.g, kTitleColour.b);
+    v_->scaleText->GetTextProperty()->SetColor(kTitleColour.r, kTitleColour.g, kTitleColour.b);
+    v_->scaleText->GetTextProperty()->SetFontSize(kSmallTextPx);
+    v_->scaleText->GetTextProperty()->SetJustificationToCentered();
+    v_->scaleBar.init(r, kTitleColour, 2);
     r->GetActiveCamera()->ParallelProjectionOn();
 }
 
@@ -187,6 +212,8 @@ void BackplotScene::setPath(const toolpath::ProgrammedPath& path) {
 void BackplotScene::setInteracting(bool on) {
     const bool overlays = !on && mode_ == ViewMode::XZ;
     v_->legend->SetVisibility(overlays);
+    v_->scaleBar.actor->SetVisibility(overlays);
+    v_->scaleText->SetVisibility(overlays);
     v_->warning->SetVisibility(!on);
     v_->title->SetVisibility(!on);
     v_->bar->SetVisibility(overlays && actual_ != nullptr);
@@ -299,11 +326,105 @@ void BackplotScene::buildStatic() {
         }
     if (count > 8)
         text += " … (" + std::to_string(count) + ")";
+    // «ВНЕ ГРАНИЦ» is the NC-200's own text (the panel's language).
     v_->warning->SetInput(count ? ("ВНЕ ГРАНИЦ:" + text).c_str() : "");
-    char t[160];
-    std::snprintf(t, sizeof t, "L%d  %zu segments  X %s", path_.program, path_.segments.size(),
-                  path_.diameterX ? "\xE2\x8C\x80 diameter" : "radius");
-    v_->title->SetInput(t);
+    v_->title->SetInput(titleText().c_str());
+}
+
+void BackplotScene::setTexts(const OverlayTexts& texts) {
+    texts_ = texts;
+    v_->title->SetInput(titleText().c_str());
+}
+
+namespace {
+std::string withNumber(std::string format, const std::string& number) {
+    const std::size_t at = format.find("%1");
+    if (at != std::string::npos)
+        format.replace(at, 2, number);
+    return format;
+}
+} // namespace
+
+std::string BackplotScene::titleText() const {
+    // Appended piece by piece (GCC 12's false -Wrestrict on a chain of +).
+    std::string t = "L";
+    t.append(std::to_string(path_.program)).append("  ");
+    t.append(withNumber(texts_.segments, std::to_string(path_.segments.size()))).append("  ");
+    t.append(path_.diameterX ? texts_.diameter : texts_.radius);
+    return t;
+}
+
+void BackplotScene::placeOverlays(int w, int h) {
+    const auto px = [this](int v) { return static_cast<int>(std::lround(v * ratio_)); };
+    for (vtkTextActor* t : {v_->warning.GetPointer(), v_->title.GetPointer()})
+        t->GetTextProperty()->SetFontSize(px(kTextPx));
+    v_->scaleText->GetTextProperty()->SetFontSize(px(kSmallTextPx));
+    for (vtkTextProperty* t : {v_->bar->GetTitleTextProperty(), v_->bar->GetLabelTextProperty(),
+                               v_->legend->GetLeftAxis()->GetLabelTextProperty(),
+                               v_->legend->GetBottomAxis()->GetLabelTextProperty()})
+        t->SetFontSize(px(kSmallTextPx));
+    // VTK 9.1 sizes the rulers' labels to the viewport (about 0.015 × font
+    // factor × label factor × (w + h)) whatever UseFontSizeFromProperty
+    // says: the factor that gives kSmallTextPx.
+    for (vtkAxisActor2D* a : {v_->legend->GetLeftAxis(), v_->legend->GetBottomAxis()}) {
+        a->SetLabelFactor(1.0);
+        a->SetFontFactor(std::clamp(px(kSmallTextPx) / (0.015 * std::max(1, w + h)), 0.1, 2.0));
+    }
+    v_->legend->SetCornerOffsetFactor(1.0);
+    v_->legend->SetTopBorderOffset(px(kTopBandPx));
+    v_->legend->SetBottomBorderOffset(px(kBottomBandPx));
+    // The top band: the title, «ВНЕ ГРАНИЦ» on the line below it.
+    v_->title->SetDisplayPosition(px(8), h - px(6));
+    v_->warning->SetDisplayPosition(px(8), h - px(6 + kTextPx + 8));
+    // The µm bar: a strip of fixed width at the right, between the bands.
+    const int barH = std::max(px(60), h - px(kTopBandPx + kBottomBandPx + 16));
+    v_->bar->GetPositionCoordinate()->SetValue(std::max(0, w - px(kRightBarBandPx)), px(kBottomBandPx + 8));
+    v_->bar->GetPosition2Coordinate()->SetValue(px(kRightBarBandPx - 8), barH);
+    // The scale: a bar of 1, 2 or 5 × 10^k mm, 40..100 px long, in the
+    // bottom band at the right.
+    scaleBarMm_ = 0;
+    if (mode_ != ViewMode::XZ || w < 80) {
+        v_->scaleBar.lines({}, 0.4);
+        v_->scaleText->SetInput("");
+        return;
+    }
+    const ViewWindow vw = window(w, h);
+    const double most = 100 * ratio_ * vw.worldPerPixel;
+    const double mag = std::pow(10.0, std::floor(std::log10(most)));
+    double len = mag;
+    for (double f : {5.0, 2.0, 1.0})
+        if (f * mag <= most) {
+            len = f * mag;
+            break;
+        }
+    scaleBarMm_ = len;
+    const double barPx = len / vw.worldPerPixel;
+    const double right = w - px(24), y = px(12), tick = px(5);
+    const auto wx = [&](double dx) { return static_cast<float>(vw.x0 + dx * vw.worldPerPixel); };
+    const auto wy = [&](double dy) { return static_cast<float>(vw.y0 + dy * vw.worldPerPixel); };
+    v_->scaleBar.lines({wx(right - barPx), wy(y), wx(right), wy(y), wx(right - barPx), wy(y), wx(right - barPx),
+                        wy(y + tick), wx(right), wy(y), wx(right), wy(y + tick)},
+                       0.4);
+    char number[32];
+    std::snprintf(number, sizeof number, "%g", len);
+    v_->scaleText->SetInput(withNumber(texts_.mm, number).c_str());
+    v_->scaleText->SetDisplayPosition(static_cast<int>(right - barPx / 2),
+                                      static_cast<int>(y + tick + px(kSmallTextPx + 6)));
+}
+
+void BackplotScene::zoomAt(double dx, double dy, double factor, int w, int h) {
+    if (mode_ != ViewMode::XZ || factor <= 0)
+        return;
+    const ViewWindow vw = window(w, h);
+    const double px = vw.x0 + dx * vw.worldPerPixel, py = vw.y0 + dy * vw.worldPerPixel;
+    vtkCamera* cam = v_->renderer->GetActiveCamera();
+    double f[3];
+    cam->GetFocalPoint(f);
+    // The point under the cursor keeps its place: the centre moves towards it.
+    const double cx = px - (px - f[0]) / factor, cy = py - (py - f[1]) / factor;
+    cam->SetFocalPoint(cx, cy, 0);
+    cam->SetPosition(cx, cy, 1000);
+    cam->SetParallelScale(std::max(cam->GetParallelScale() / factor, 1e-4));
 }
 
 void BackplotScene::buildStock() {
@@ -380,6 +501,8 @@ void BackplotScene::setViewMode(ViewMode m) {
     v_->wheel3d.actor->SetVisibility(solid && wheelBox_.shown);
     v_->oscSweep.actor->SetVisibility(solid);
     v_->legend->SetVisibility(!solid);
+    v_->scaleBar.actor->SetVisibility(!solid);
+    v_->scaleText->SetVisibility(!solid);
     v_->bar->SetVisibility(!solid && actual_ != nullptr);
     // In 3D the path is drawn at its radius (the body is revolved in radius).
     const double ys = solid && path_.diameterX ? 0.5 : 1.0;
@@ -435,13 +558,21 @@ void BackplotScene::fit(int w, int h) {
     vtkCamera* cam = v_->renderer->GetActiveCamera();
     const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
     if (mode_ == ViewMode::XZ) {
-        const double aspect = static_cast<double>(std::max(w, 1)) / std::max(h, 1);
-        const double half = std::max((y1 - y0) / 2, (x1 - x0) / 2 / aspect) * 1.08;
-        cam->SetFocalPoint(cx, cy, 0);
-        cam->SetPosition(cx, cy, 1000);
+        // The path in the rectangle the overlay leaves free: the top band
+        // (title, «ВНЕ ГРАНИЦ»), the bottom band (ruler, scale), the left
+        // ruler's labels, the µm bar at the right.
+        const auto px = [this](int v) { return v * ratio_; };
+        const double left = px(kLeftBandPx), right = px(actual_ ? kRightBarBandPx : 16),
+                     top = px(kTopBandPx + 4), bottom = px(kBottomBandPx + 4);
+        const double freeW = std::max(20.0, w - left - right), freeH = std::max(20.0, h - top - bottom);
+        const double wpp = std::max({(x1 - x0) / freeW, (y1 - y0) / freeH, 1e-6}) * 1.04;
+        const double half = wpp * std::max(h, 1) / 2;
+        const double fx = cx - (left - right) / 2 * wpp, fy = cy - (bottom - top) / 2 * wpp;
+        cam->SetFocalPoint(fx, fy, 0);
+        cam->SetPosition(fx, fy, 1000);
         cam->SetViewUp(0, 1, 0);
         cam->SetParallelScale(std::max(half, 1e-3));
-        v_->renderer->ResetCameraClippingRange(cx - 1e6, cx + 1e6, cy - 1e6, cy + 1e6, -10, 10);
+        v_->renderer->ResetCameraClippingRange(fx - 1e6, fx + 1e6, fy - 1e6, fy + 1e6, -10, 10);
     } else {
         const double r = std::max(x1 - x0, y1 - y0);
         cam->SetFocalPoint(cx, 0, 0);
@@ -454,6 +585,7 @@ void BackplotScene::fit(int w, int h) {
 }
 
 void BackplotScene::refresh(int w, int h) {
+    placeOverlays(w, h);
     const ViewWindow vw = window(w, h);
     const std::size_t limit = playhead_ < 0 ? path_.segments.size() : segmentAt(playhead_) + 1;
     const LodLines lod = geom_.simplify(vw, limit);

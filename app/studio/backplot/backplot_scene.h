@@ -20,6 +20,7 @@
 #include "toolpath/programmed_path.h"
 
 #include <memory>
+#include <string>
 #include <optional>
 
 class vtkRenderer;
@@ -40,6 +41,25 @@ inline constexpr Rgb kToolColour{1.00, 0.20, 1.00};
 inline constexpr Rgb kStockColour{0.45, 0.47, 0.52};
 inline constexpr Rgb kOscillationColour{0.20, 0.85, 0.95};
 inline constexpr Rgb kWheelColour{0.85, 0.78, 0.60};
+inline constexpr Rgb kTitleColour{0.85, 0.85, 0.85}; // the title, the scale bar and its length
+
+// The overlay's sizes in pixels (at the window's DPI): texts do not shrink
+// with the view, the bands keep the rulers clear of the texts.
+inline constexpr int kTextPx = 14;      // the title, «ВНЕ ГРАНИЦ»
+inline constexpr int kSmallTextPx = 12; // rulers, the scale's length, the µm bar
+inline constexpr int kTopBandPx = 54;   // two lines of text above the left ruler
+inline constexpr int kBottomBandPx = 60; // the scale bar below the bottom ruler
+inline constexpr int kLeftBandPx = 56;   // the left ruler's labels
+inline constexpr int kRightBarBandPx = 96; // the µm bar of an actual path
+
+// The overlay's words in the caller's language; "%1" stands for a number.
+// English by default (`k528 plot`); the studio sets them through tr().
+struct OverlayTexts {
+    std::string segments = "%1 segments";
+    std::string diameter = "X \xE2\x8C\x80 diameter"; // X ⌀ diameter
+    std::string radius = "X radius";
+    std::string mm = "%1 mm";
+};
 
 // The grinding wheel as the view draws it: a cylinder of R207's diameter
 // (ProgrammedPath::wheel; 0: no wheel) whose axis is parallel to Z. The
@@ -63,6 +83,15 @@ public:
 
     void setPath(const toolpath::ProgrammedPath& path);
     void setPath(toolpath::ProgrammedPath&& path);
+    // The overlay's words (the title, the scale's length); shown at the next refresh.
+    void setTexts(const OverlayTexts& texts);
+    const OverlayTexts& texts() const { return texts_; }
+    // Device pixels per pixel of the overlay's sizes (2 on a 2× HiDPI screen).
+    void setPixelRatio(double ratio) { ratio_ = ratio > 0 ? ratio : 1; }
+    // What the title says now ("L1  5 segments  X ⌀ diameter").
+    std::string titleText() const;
+    // The scale bar's length now, in mm (0: none, the 3D view).
+    double scaleBarMm() const { return scaleBarMm_; }
     // While the user pans or zooms: the 2D overlays (rulers, texts) are
     // hidden — they are rebuilt every frame and cost more than the path.
     void setInteracting(bool on);
@@ -113,6 +142,10 @@ public:
     int highlightedProgram() const { return hlProgram_; }
     int highlightedLine() const { return hlLine_; }
 
+    // XZ view: zooms by `factor` (> 1 closer) keeping the world point under
+    // display pixel (x, y; origin bottom-left) where it is: zoom to the cursor.
+    void zoomAt(double displayX, double displayY, double factor, int widthPx, int heightPx);
+
     // World coordinates (Z, X) of the window's centre and the size of a pixel.
     ViewWindow window(int widthPx, int heightPx) const;
     // Rebuilds only the tool and the wheel (cheap: every live frame).
@@ -132,6 +165,11 @@ private:
     WheelGeometry wheelGeom_;
     WheelBox wheelBox_;
     std::optional<LiveTool> live_;
+    OverlayTexts texts_;
+    double scaleBarMm_ = 0;
+    double ratio_ = 1;
+    // The texts, the scale bar and the µm bar in pixels for a w × h view.
+    void placeOverlays(int widthPx, int heightPx);
     void buildStatic();
     void buildOscillation3d(std::size_t limit);
     void buildStock();

@@ -13,6 +13,7 @@
 #include <QSplitter>
 #include <QTimer>
 #include <QToolButton>
+#include <QWheelEvent>
 #include <QVBoxLayout>
 
 #include <vtkGenericOpenGLRenderWindow.h>
@@ -30,6 +31,7 @@ namespace {
 constexpr double kSpeeds[] = {0.1, 0.5, 1, 2, 5, 10, 100, -1}; // -1: fastest
 constexpr int kScrubSteps = 10000;
 constexpr int kTickMs = 40;
+constexpr double kWheelZoom = 1.2; // a wheel step
 } // namespace
 
 BackplotWidget::BackplotWidget(QWidget* parent)
@@ -136,6 +138,7 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     });
     connect(gl_, &VtkGlWidget::sizeChanged, this, [this](int w, int h) {
         pw_ = w, ph_ = h;
+        scene_->setPixelRatio(gl_->devicePixelRatioF());
         if (!userMoved_) // until the user pans or zooms, the view keeps the whole path
             scene_->fit(pw_, ph_);
         else
@@ -164,6 +167,16 @@ BackplotWidget::~BackplotWidget() {
 }
 
 bool BackplotWidget::eventFilter(QObject* o, QEvent* e) {
+    if (o == gl_ && e->type() == QEvent::Wheel && scene_->viewMode() == k528::backplot::ViewMode::XZ) {
+        // The wheel zooms to the cursor (VTK's 2D style zooms to the centre).
+        auto* w = static_cast<QWheelEvent*>(e);
+        const double steps = w->angleDelta().y() / 120.0;
+        if (steps != 0) {
+            const QPointF p = w->position();
+            zoomAt(p.x(), p.y(), std::pow(kWheelZoom, steps));
+        }
+        return true;
+    }
     if (o == gl_ && e->type() == QEvent::MouseButtonPress) {
         auto* m = static_cast<QMouseEvent*>(e);
         if (m->button() == Qt::LeftButton)
@@ -197,6 +210,14 @@ void BackplotWidget::retranslate() {
     backButton_->setToolTip(tr("Previous frame"));
     forwardButton_->setToolTip(tr("Next frame"));
     outsideTitle_->setText(tr("Beyond the software limits"));
+    k528::backplot::OverlayTexts t;
+    t.segments = tr("%1 segments").toStdString();
+    t.diameter = tr("X ⌀ diameter").toStdString();
+    t.radius = tr("X radius").toStdString();
+    t.mm = tr("%1 mm").toStdString();
+    scene_->setTexts(t);
+    if (pw_ > 1)
+        refresh(); // the scale's length in the new words
     if (pickLabel_->text().isEmpty())
         pickLabel_->setText(tr("Click a segment to find its frame"));
     updateOutsideList();
@@ -244,6 +265,13 @@ void BackplotWidget::updateOutsideList() {
         it->setData(Qt::UserRole + 1, s.line);
         outsideList_->addItem(it);
     }
+}
+
+void BackplotWidget::zoomAt(double x, double y, double factor) {
+    const qreal dpr = devicePixelRatioF();
+    scene_->zoomAt(x * dpr, ph_ - y * dpr, factor, pw_, ph_);
+    userMoved_ = true;
+    refresh();
 }
 
 void BackplotWidget::fit() {

@@ -55,6 +55,9 @@ public:
     k528::backplot::BackplotScene& scene() { return *scene_; }
     VtkGlWidget* glWidget() const { return gl_; }
     void fit();
+    // XZ: zooms by `factor` (> 1 closer) about widget point (x, y) from the
+    // top-left: what is under the cursor stays there (the wheel does this).
+    void zoomAt(double x, double y, double factor);
     void setViewMode(k528::backplot::ViewMode m);
     // Selects the segments of a source line (the editor's cursor).
     void selectLine(int program, int line);

@@ -18,7 +18,10 @@ namespace k528::studio {
 
 namespace {
 
-QString tr(const char* s) { return QCoreApplication::translate("k528::studio::Listing", s); }
+// lupdate files a free tr() of namespace k528::studio under this context:
+// the run time must ask for the same (it asked for its own and got English).
+constexpr const char* kTrContext = "k528::studio";
+QString tr(const char* s) { return QCoreApplication::translate(kTrContext, s); }
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 

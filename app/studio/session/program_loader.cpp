@@ -15,8 +15,11 @@ namespace k528::studio {
 
 namespace {
 
+// lupdate files a free tr() of namespace k528::studio under this context:
+// the run time must ask for the same (it asked for its own and got English).
+constexpr const char* kTrContext = "k528::studio";
 QString tr(const char* text) {
-    return QCoreApplication::translate("k528::studio::ProgramLoader", text);
+    return QCoreApplication::translate(kTrContext, text);
 }
 
 } // namespace
