@@ -58,6 +58,10 @@ struct Tool {
     double heightMm = 1000; // along +r from the tip
 };
 
+// The region the tool sweeps moving from `a` to `b` (z, r of the tip): the
+// convex hull of the tool's rectangle at both ends, clockwise.
+Ring toolSweep(PointZR a, PointZR b, const Tool& tool);
+
 // The material: a set of polygons (outer ring + holes) in (z, r).
 class Stock {
 public:
