@@ -184,7 +184,7 @@ QVariant ConstantsModel::headerData(int section, Qt::Orientation o, int role) co
     case Range:
         return tr("Range");
     case Address:
-        return tr("Address (Е.1)");
+        return tr("Address (table E.1)");
     case Value:
         return tr("Value");
     case Means:

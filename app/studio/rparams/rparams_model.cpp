@@ -185,7 +185,7 @@ QVariant RParamsModel::headerData(int section, Qt::Orientation o, int role) cons
     case Group:
         return tr("Preset screen");
     case Meaning:
-        return tr("Meaning (appendix Л)");
+        return tr("Meaning (appendix L)");
     case Value:
         return tr("Discretes");
     case Mm:
