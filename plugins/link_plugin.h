@@ -3,13 +3,17 @@
 // carries "name", "version", "api" and "transport". The host refuses a
 // plugin with another IID or another "api" (k528::linkplugin::load).
 //
-// The plugin gives a client transport (core's link::RegisterTransport, so the
-// client procedures of core/link run over it) and a server that answers a
-// line from a RegisterHandler (the host wraps core's ControllerImage). The
-// plugin links Qt only: everything of core it uses is header-only here.
+// The plugin opens the line — a serial port for RS485 — and gives core's
+// Modbus client over it (link::ModbusMaster: RTU framing, every frame
+// logged, the wire counted), so the client procedures of core/link run
+// over it; and a server that answers a line from a RegisterHandler (the
+// host wraps core's ControllerImage). A Modbus TCP line is the same
+// ModbusMaster with MBAP framing over a socket: the procedures, the
+// counters and the frame log do not change. The plugin links Qt only; the
+// parts of core it uses are header-only or compiled into it (link/modbus.cpp).
 #pragma once
 
-#include "link/transport.h"
+#include "link/modbus.h"
 
 #include <QObject>
 #include <QString>
@@ -17,12 +21,12 @@
 #include <QtPlugin>
 #include <cstdint>
 #include <memory>
-#include <span>
-#include <vector>
 
 namespace k528::linkplugin {
 
-inline constexpr int kApi = 1;
+// 2: the client is core's ModbusMaster (frame log, damaged frames, FC 17),
+// the server names itself (FC 17).
+inline constexpr int kApi = 2;
 
 struct LineSettings {
     QString port;
@@ -30,26 +34,12 @@ struct LineSettings {
     char parity = 'N'; // N, E, O
     int stopBits = 1;
     int address = 1;
-    int timeoutMs = 200;
+    int timeoutMs = 200; // for an answer to begin; a scan waits this long at each address
 };
 
-// The controller's side of a line: each returns a Modbus exception code (0 = none).
-class RegisterHandler {
-public:
-    virtual ~RegisterHandler() = default;
-    virtual int read(int first, int count, std::vector<std::uint16_t>& out) = 0;
-    virtual int write(int first, std::span<const std::uint16_t> values) = 0;
-};
-
-// Bytes and frames a transport put on the line, both directions.
-struct WireCount {
-    std::int64_t bytes = 0, frames = 0, transactions = 0;
-};
-
-class ClientTransport : public link::RegisterTransport {
-public:
-    virtual WireCount wire() const = 0;
-};
+using RegisterHandler = link::modbus::RegisterHandler;
+using WireCount = link::WireCount;
+using ClientTransport = link::ModbusMaster;
 
 class Server {
 public:
@@ -62,11 +52,15 @@ public:
     virtual ~LinkPlugin() = default;
     // The serial ports the system has (for a menu and `k528 link --list`).
     virtual QStringList ports() const = 0;
-    // nullptr and `error` set when the port does not open.
+    // nullptr and `error` set when the port does not open. A port that fails
+    // later (a USB adapter pulled) is opened again by the client at its next
+    // exchange.
     virtual std::unique_ptr<ClientTransport> openClient(const LineSettings& s, QString& error) = 0;
-    // Serves `handler` on the line until destroyed; needs a running Qt event loop.
+    // Serves `handler` on the line until destroyed; needs a running Qt event
+    // loop. Function 8 (echo, the bus counters 10..18) and 17 (`identity`
+    // as the additional data of the server id) are answered too.
     virtual std::unique_ptr<Server> openServer(const LineSettings& s, RegisterHandler& handler,
-                                               QString& error) = 0;
+                                               const QString& identity, QString& error) = 0;
 };
 
 } // namespace k528::linkplugin

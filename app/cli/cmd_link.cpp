@@ -1,18 +1,26 @@
-// k528 link --port DEVICE [--address A] [--baud B] [--parity …] COMMAND (cli.md):
-// ping, status [--json], pull --out FILE, push FILE, watch [--json] [--seconds S];
-// `k528 link --list` lists the plugins and ports. The client procedures are
-// core's (link/client.h) over the plugin's transport (QModbusRtuSerialClient).
+// k528 link --port DEVICE [--address A] [--baud B] [--parity …] COMMAND (cli.md,
+// docs/link.md): ping, status [--json], pull --out FILE, push FILE (a machine
+// file or a program file), clear c|r, diag [--json] [--clear], watch [--json]
+// [--seconds S], scan [--bauds …] [--addresses A-B] [--json]; `--frames FILE`
+// saves the frame log; `k528 link --list` lists the plugins and ports. The
+// client procedures are core's (link/client.h) over the plugin's transport
+// (core's RtuMaster over a QSerialPort).
 #include "catalog/messages.h"
 #include "cli.h"
 #include "link/client.h"
 #include "link_line.h"
+#include "output_file.h"
 #include "profile/text_format.h"
+#include "util/input_file.h"
 #include "util/json.h"
 
 #include <QCoreApplication>
+#include <QDateTime>
 #include <QElapsedTimer>
 #include <QThread>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 namespace k528::cli {
 
@@ -27,21 +35,19 @@ int fail(const link::LinkError& e) {
     return exitFor(e);
 }
 
-void lineReport(const link::Link& l, const linkplugin::ClientTransport& t) {
-    const link::LineStats& s = l.stats();
+void lineReport(const link::Link& l, const linkplugin::ClientTransport& t, int baud) {
     const linkplugin::WireCount w = t.wire();
-    std::fprintf(stderr,
-                 "line: %lld answers, %lld without answer, %lld bad replies, %lld exceptions, %lld retries; "
-                 "%lld transactions, %lld bytes, wire time %.3f s at 115200\n",
-                 static_cast<long long>(s.exchanges), static_cast<long long>(s.noAnswer),
-                 static_cast<long long>(s.badReplies), static_cast<long long>(s.exceptions),
-                 static_cast<long long>(s.retries), static_cast<long long>(w.transactions),
-                 static_cast<long long>(w.bytes), link::wireSeconds(w.bytes, w.frames));
+    std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes, wire time %.3f s at %d bit/s\n",
+                 link::describe(l.stats()).c_str(), static_cast<long long>(w.transactions),
+                 static_cast<long long>(w.bytes), link::wireSeconds(w.bytes, w.frames, baud), baud);
 }
 
+std::string clockText(const QDateTime& t) { return t.toString(QStringLiteral("HH:mm:ss")).toStdString(); }
+std::string isoText(const QDateTime& t) { return t.toString(Qt::ISODateWithMs).toStdString(); }
 
 Json liveJson(const link::LiveState& s) {
     Json v;
+    v["online"] = true;
     v["mode"] = s.mode;
     v["pc_ready"] = s.pcReady;
     v["running"] = s.running;
@@ -98,12 +104,156 @@ std::string liveText(const link::LiveState& s) {
     return t;
 }
 
+// Standard output was lost (a full disk, a closed pipe): say why, and stop now.
+bool outputLost() {
+    errno = 0;
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout))
+        return false;
+    std::fprintf(stderr, "k528: cannot write standard output: %s\n", errno ? std::strerror(errno) : "a write failed");
+    std::clearerr(stdout); // said once; the exit status tells the rest
+    return true;
+}
+
+// A machine file begins with a [section]; a program file with %L or %MESSAGES.
+bool isMachineText(std::string_view text) {
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        const std::size_t end = std::min(text.find('\n', pos), text.size());
+        std::string_view line = text.substr(pos, end - pos);
+        while (!line.empty() && (line.front() == ' ' || line.front() == '\t' || line.front() == '\r' ||
+                                 line.front() == '\xEF' || line.front() == '\xBB' || line.front() == '\xBF'))
+            line.remove_prefix(1); // blanks and a UTF-8 byte order mark
+        if (!line.empty() && line.front() != ';')
+            return line.front() == '[';
+        pos = end + 1;
+    }
+    return false;
+}
+
+bool saveFrames(const std::optional<std::string>& path, const std::string& text) {
+    if (!path)
+        return true;
+    std::string error;
+    if (!writeOutputFile(*path, text, error)) {
+        std::fprintf(stderr, "k528 link: %s\n", error.c_str());
+        return false;
+    }
+    return true;
+}
+
+// "1-247", "7", "1-10,20" -> addresses.
+std::optional<std::vector<int>> parseAddresses(const std::string& text) {
+    std::vector<int> out;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        const std::size_t end = std::min(text.find(',', pos), text.size());
+        const std::string part = text.substr(pos, end - pos);
+        const std::size_t dash = part.find('-');
+        const auto a = parseInt(part.substr(0, dash));
+        const auto b = dash == std::string::npos ? a : parseInt(part.substr(dash + 1));
+        if (!a || !b || *a < 1 || *b > 247 || *a > *b)
+            return std::nullopt;
+        for (long long n = *a; n <= *b; ++n)
+            out.push_back(static_cast<int>(n));
+        pos = end + 1;
+    }
+    return out;
+}
+
+std::optional<std::vector<int>> parseBauds(const std::string& text) {
+    std::vector<int> out;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        const std::size_t end = std::min(text.find(',', pos), text.size());
+        const auto v = parseInt(text.substr(pos, end - pos));
+        if (!v || *v < 1200 || *v > 4000000)
+            return std::nullopt;
+        out.push_back(static_cast<int>(*v));
+        pos = end + 1;
+    }
+    return out;
+}
+
+int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSettings line,
+            const std::optional<std::string>& framesPath) {
+    std::vector<int> bauds = {line.baud};
+    if (const auto b = args.value("--bauds")) {
+        const auto v = parseBauds(*b);
+        if (!v)
+            return usageError("--bauds takes rates in bit/s separated by commas, e.g. 115200,19200");
+        bauds = *v;
+    }
+    std::vector<int> addresses;
+    for (int a = 1; a <= 247; ++a)
+        addresses.push_back(a);
+    if (const auto a = args.value("--addresses")) {
+        const auto v = parseAddresses(*a);
+        if (!v)
+            return usageError("--addresses takes station addresses 1..247 as A-B or A,B,…, not '" + *a + "'");
+        addresses = *v;
+    }
+    const bool asJson = args.has("--json");
+    installStopSignals();
+    std::string frames;
+    int found = 0;
+    for (int baud : bauds) {
+        line.baud = baud;
+        QString error;
+        std::unique_ptr<linkplugin::ClientTransport> t = plugin.openClient(line, error);
+        if (!t) {
+            std::fprintf(stderr, "k528 link: cannot open %s at %d bit/s: %s\n", line.port.toUtf8().constData(), baud,
+                         error.toUtf8().constData());
+            return ExitUsage;
+        }
+        std::fprintf(stderr, "scan: %d bit/s, %zu addresses, %d ms each without an answer\n", baud, addresses.size(),
+                     line.timeoutMs);
+        link::Link l(*t, link::k528Map(), 1);
+        for (int a : addresses) {
+            if (stopRequested())
+                break;
+            const link::StationInfo s = link::probeStation(l, a);
+            if (!s.answers && !s.garbled)
+                continue;
+            if (s.answers)
+                ++found;
+            if (asJson) {
+                Json j;
+                j["address"] = s.address;
+                j["baud"] = baud;
+                j["answers"] = s.answers;
+                j["garbled"] = s.garbled;
+                j["echo"] = s.echo;
+                if (s.id) {
+                    j["server_id"] = s.id->id;
+                    j["running"] = s.id->running;
+                    j["identity"] = s.id->data;
+                }
+                if (s.live)
+                    j["live"] = liveJson(*s.live);
+                j["round_trip_ms"] = s.roundTripMs;
+                std::printf("%s\n", json::dump(j).c_str());
+            } else {
+                std::printf("%d bit/s, %s\n", baud, link::describe(s).c_str());
+            }
+            if (outputLost())
+                return ExitUsage;
+        }
+        lineReport(l, *t, baud);
+        frames += link::formatFrameLog(t->frameLog());
+    }
+    std::fprintf(stderr, "scan: %d station%s answered\n", found, found == 1 ? "" : "s");
+    if (!saveFrames(framesPath, frames))
+        return ExitUsage;
+    return stopRequested() ? ExitUsage : ExitOk;
+}
+
 } // namespace
 
 int runLinkQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
-    options.insert(options.end(), {"--out", "--seconds", "--timeout-ms", "--interval-ms"});
-    const Args args(argv, {"--json", "--list"}, options);
+    options.insert(options.end(),
+                   {"--out", "--seconds", "--timeout-ms", "--interval-ms", "--frames", "--bauds", "--addresses"});
+    const Args args(argv, {"--json", "--list", "--clear"}, options);
     if (!args.ok())
         return usageError(args.error());
     if (args.has("--list")) {
@@ -120,17 +270,25 @@ int runLinkQt(std::span<const std::string> argv) {
         std::printf("searched: %s\n", linkplugin::searchPath().join(", ").toUtf8().constData());
         return ExitOk;
     }
+    static const char* kCommands = "ping, status, pull, push, clear, diag, watch or scan";
     if (args.positional().empty())
-        return usageError("link needs a command: ping, status, pull, push or watch");
+        return usageError(std::string("link needs a command: ") + kCommands);
     const std::string cmd = args.positional()[0];
-    if (cmd != "ping" && cmd != "status" && cmd != "pull" && cmd != "push" && cmd != "watch")
-        return usageError("unknown link command '" + cmd + "' (ping, status, pull, push, watch)");
+    if (cmd != "ping" && cmd != "status" && cmd != "pull" && cmd != "push" && cmd != "watch" && cmd != "clear" &&
+        cmd != "diag" && cmd != "scan")
+        return usageError("unknown link command '" + cmd + "' (" + kCommands + ")");
     if (cmd == "push" && args.positional().size() != 2)
-        return usageError("push takes one machine file: k528 link --port DEVICE push FILE");
-    if (cmd != "push" && args.positional().size() != 1)
+        return usageError("push takes one file, a machine file or a program file: k528 link --port DEVICE push FILE");
+    if (cmd == "clear" && (args.positional().size() != 2 || (args.positional()[1] != "c" && args.positional()[1] != "r")))
+        return usageError("clear takes the area: k528 link --port DEVICE clear c|r");
+    if (cmd != "push" && cmd != "clear" && args.positional().size() != 1)
         return usageError("link " + cmd + " takes no file");
     if (cmd == "pull" && !args.value("--out"))
         return usageError("pull needs --out FILE");
+    if ((args.value("--bauds") || args.value("--addresses")) && cmd != "scan")
+        return usageError("--bauds and --addresses are options of link scan");
+    if (args.has("--clear") && cmd != "diag")
+        return usageError("--clear is an option of link diag");
     auto line = lineSettings(args);
     if (!line)
         return ExitUsage;
@@ -140,14 +298,30 @@ int runLinkQt(std::span<const std::string> argv) {
             return usageError("--timeout-ms takes 10..60000");
         line->timeoutMs = static_cast<int>(*v);
     }
-    // The file to push is read and checked before the line is opened.
-    profile::MachineProfile file;
+    const std::optional<std::string> framesPath = args.value("--frames");
+
+    // The file to push is read before the line is opened; a machine file is
+    // also checked then (a program file is checked against the controller).
+    std::string pushText;
+    bool pushMachine = false;
+    link::PushPlan plan;
     if (cmd == "push") {
-        try {
-            file = profile::readMachineFile(args.positional()[1]);
-        } catch (const profile::FileError& e) {
-            std::fprintf(stderr, "k528 link: %s\n", e.what());
-            return ExitInputErrors;
+        const std::string& path = args.positional()[1];
+        std::string error;
+        if (!util::readInputFile(path, pushText, error)) {
+            std::fprintf(stderr, "k528 link: %s\n", error.c_str());
+            return ExitUsage;
+        }
+        pushMachine = isMachineText(pushText);
+        if (pushMachine) {
+            try {
+                const profile::MachineProfile file = profile::readMachineText(pushText, path);
+                if (link::LinkError e = link::planMachineFile(link::k528Map(), file, plan))
+                    return fail(e);
+            } catch (const profile::FileError& e) {
+                std::fprintf(stderr, "k528 link: %s\n", e.what());
+                return ExitInputErrors;
+            }
         }
     }
     QString error;
@@ -156,6 +330,8 @@ int runLinkQt(std::span<const std::string> argv) {
         std::fprintf(stderr, "k528 link: %s\n", error.toUtf8().constData());
         return ExitUsage;
     }
+    if (cmd == "scan")
+        return runScan(args, *plugin, *line, framesPath);
     std::unique_ptr<linkplugin::ClientTransport> t = plugin->openClient(*line, error);
     if (!t) {
         std::fprintf(stderr, "k528 link: cannot open %s: %s\n", line->port.toUtf8().constData(),
@@ -164,24 +340,62 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     link::Link l(*t);
     const bool asJson = args.has("--json");
+    // Every way out saves the frame log when asked (a failure is when it helps most).
+    auto done = [&](int code) -> int {
+        if (!saveFrames(framesPath, link::formatFrameLog(t->frameLog())))
+            return ExitUsage;
+        return code;
+    };
 
     if (cmd == "ping") {
-        QElapsedTimer rt;
-        rt.start();
         link::LiveState s;
         if (link::LinkError e = link::identify(l, s))
-            return fail(e);
-        std::printf("K528-05 (map %s) answers on %s at address %d: %s; round trip %.1f ms\n",
-                    l.map().name.c_str(), line->port.toUtf8().constData(), line->address, liveText(s).c_str(),
-                    static_cast<double>(rt.nsecsElapsed()) / 2e6);
-        return ExitOk;
+            return done(fail(e));
+        link::ServerId id;
+        const bool named = !l.serverId(id);
+        std::printf("K528-05 (map %s) answers on %s at address %d: %s; round trip %.1f ms%s\n", l.map().name.c_str(),
+                    line->port.toUtf8().constData(), line->address, liveText(s).c_str(),
+                    l.stats().roundTrip.median(), named ? ("; it names itself «" + id.data + "»").c_str() : "");
+        return done(ExitOk);
     }
     if (cmd == "status") {
         link::LiveState s;
         if (link::LinkError e = link::readLive(l, s))
-            return fail(e);
+            return done(fail(e));
         std::printf("%s\n", asJson ? json::dump(liveJson(s)).c_str() : liveText(s).c_str());
-        return ExitOk;
+        return done(ExitOk);
+    }
+    if (cmd == "diag") {
+        link::BusCounters c;
+        if (link::LinkError e = link::readBusCounters(l, c))
+            return done(fail(e));
+        if (asJson) {
+            Json j;
+            for (std::size_t i = 0; i < c.values.size(); ++i)
+                j[link::modbus::counterName(link::modbus::kCounters[i])] = c.values[i];
+            std::printf("%s\n", json::dump(j).c_str());
+        } else {
+            std::printf("station %d's bus counters (Modbus function 08):\n", line->address);
+            for (std::size_t i = 0; i < c.values.size(); ++i)
+                std::printf("  %-26s %u\n", link::modbus::counterName(link::modbus::kCounters[i]),
+                            static_cast<unsigned>(c.values[i]));
+        }
+        if (args.has("--clear")) {
+            if (link::LinkError e = link::clearBusCounters(l))
+                return done(fail(e));
+            std::printf("counters cleared\n");
+        }
+        lineReport(l, *t, line->baud);
+        return done(ExitOk);
+    }
+    if (cmd == "clear") {
+        const bool c = args.positional()[1] == "c";
+        if (link::LinkError e = link::clearArea(l, c ? link::BlockKind::C : link::BlockKind::R))
+            return done(fail(e));
+        std::printf("cleared the %s area of the controller (%s)\n", c ? "C" : "R",
+                    c ? "all 152 machine constants are 0" : "every R-parameter is 0");
+        lineReport(l, *t, line->baud);
+        return done(ExitOk);
     }
     if (cmd == "watch") {
         installStopSignals();
@@ -202,57 +416,93 @@ int runLinkQt(std::span<const std::string> argv) {
         QElapsedTimer clock;
         clock.start();
         std::string last;
+        std::optional<link::LiveState> lastState;
+        std::optional<QDateTime> lostSince;
         while (!stopRequested() && (seconds < 0 || clock.elapsed() < seconds * 1000)) {
             const qint64 start = clock.elapsed();
             link::LiveState s;
-            if (link::LinkError e = link::readLive(l, s))
-                return fail(e);
-            const std::string text = asJson ? json::dump(liveJson(s)) : liveText(s);
-            if (asJson || text != last)
-                std::printf("%s\n", text.c_str());
-            std::fflush(stdout);
-            last = text;
+            if (link::LinkError e = link::readLive(l, s)) {
+                // The line is lost: say since when, keep the last values as
+                // stale, and keep asking (the port is opened again by itself).
+                const bool first = !lostSince;
+                if (first)
+                    lostSince = QDateTime::currentDateTime();
+                if (asJson) {
+                    Json j;
+                    j["online"] = false;
+                    j["lost_since"] = isoText(*lostSince);
+                    j["why"] = e.message;
+                    j["stale"] = lastState ? liveJson(*lastState) : Json();
+                    std::printf("%s\n", json::dump(j).c_str());
+                } else if (first) {
+                    std::printf("line lost at %s (%s); last values, stale: %s\n", clockText(*lostSince).c_str(),
+                                e.message.c_str(), lastState ? liveText(*lastState).c_str() : "none yet");
+                }
+                last.clear();
+            } else {
+                if (lostSince && !asJson)
+                    std::printf("line back at %s after %.1f s without an answer\n",
+                                clockText(QDateTime::currentDateTime()).c_str(),
+                                static_cast<double>(lostSince->msecsTo(QDateTime::currentDateTime())) / 1000.0);
+                lostSince.reset();
+                lastState = s;
+                const std::string text = asJson ? json::dump(liveJson(s)) : liveText(s);
+                if (asJson || text != last)
+                    std::printf("%s\n", text.c_str());
+                last = text;
+            }
+            if (outputLost())
+                return done(ExitUsage);
             const qint64 spent = clock.elapsed() - start;
             if (spent < interval)
                 QThread::msleep(static_cast<unsigned long>(interval - spent));
         }
-        lineReport(l, *t);
-        return ExitOk;
+        lineReport(l, *t, line->baud);
+        if (lostSince) {
+            std::fprintf(stderr, "k528 link: the line has not answered since %s\n", clockText(*lostSince).c_str());
+            return done(ExitUsage);
+        }
+        return done(ExitOk);
     }
     if (cmd == "pull") {
         link::PullResult r;
         if (link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
                 std::fprintf(stderr, "pull: %s\n", what.c_str());
             }))
-            return fail(e);
+            return done(fail(e));
         const profile::MachineProfile p =
             link::pulledProfile(r, "controller", "pulled from " + line->port.toStdString());
-        try {
-            profile::writeMachineFile(*args.value("--out"), p);
-        } catch (const profile::FileError& e) {
-            std::fprintf(stderr, "k528 link: %s\n", e.what());
-            return ExitUsage;
+        std::string werror;
+        if (!writeOutputFile(*args.value("--out"), profile::writeMachineText(p), werror)) {
+            std::fprintf(stderr, "k528 link: %s\n", werror.c_str());
+            return done(ExitUsage);
         }
         std::printf("pulled 152 C-parameters, 300 R-parameters, %zu programs, %zu messages into %s\n",
                     p.programs.size(), p.messages.size(), args.value("--out")->c_str());
-        lineReport(l, *t);
-        return ExitOk;
+        lineReport(l, *t, line->baud);
+        return done(ExitOk);
     }
-    // push
+    // push: a program file is checked against the controller first.
+    if (!pushMachine) {
+        if (link::LinkError e = link::planProgramFile(l, pushText, args.positional()[1], plan))
+            return done(fail(e));
+    }
     link::PushReport rep;
-    const link::LinkError e = link::push(l, file, rep, [](const std::string& what, int, int) {
+    const link::LinkError e = link::push(l, plan, rep, [](const std::string& what, int, int) {
         std::fprintf(stderr, "push: %s\n", what.c_str());
     });
-    std::string done = std::string(rep.constants ? "C-parameters" : "") + (rep.rParameters ? ", R0..R149" : "") +
-                       (rep.messages ? ", messages" : "");
-    for (int p : rep.programs)
-        done += ", program " + std::to_string(p);
-    if (!done.empty())
-        std::printf("written and verified: %s\n", done.c_str());
-    lineReport(l, *t);
+    if (!e) {
+        std::string names;
+        for (const link::PushReport::Part& p : rep.parts)
+            names += (names.empty() ? "" : ", ") + p.name;
+        std::printf("written and verified: %s\n", names.empty() ? "nothing (the file is empty)" : names.c_str());
+    } else if (rep.anyNew() || e.kind != link::LinkError::Kind::Input) {
+        std::printf("push stopped: %s\n", rep.summary().c_str());
+    }
+    lineReport(l, *t, line->baud);
     if (e)
-        return fail(e);
-    return ExitOk;
+        return done(fail(e));
+    return done(ExitOk);
 }
 
 } // namespace k528::cli

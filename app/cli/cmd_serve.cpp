@@ -1,9 +1,11 @@
 // k528 serve --port DEVICE [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
 // (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
 // K923 — as a Modbus RTU server (the plugin's QModbusRtuSerialServer) over
-// core's ControllerImage, in real time until SIGINT/SIGTERM.
+// core's ControllerImage, in real time until SIGINT/SIGTERM. It answers the
+// bus counters of function 08 and names itself to function 17.
 #include "cli.h"
 #include "link/image.h"
+#include "link/transport.h"
 #include "link_line.h"
 #include "machine/simulation.h"
 #include "machine_profile.h"
@@ -20,23 +22,6 @@
 
 namespace k528::cli {
 
-namespace {
-
-class ImageHandler final : public linkplugin::RegisterHandler {
-public:
-    explicit ImageHandler(link::ControllerImage& im) : im_(im) {}
-    int read(int first, int count, std::vector<std::uint16_t>& out) override {
-        return static_cast<int>(im_.read(first, count, out));
-    }
-    int write(int first, std::span<const std::uint16_t> values) override {
-        return static_cast<int>(im_.write(first, values));
-    }
-
-private:
-    link::ControllerImage& im_;
-};
-
-} // namespace
 
 int runServeQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
@@ -84,7 +69,7 @@ int runServeQt(std::span<const std::string> argv) {
     }
     link::ControllerImage image(sim->controller());
     image.setPcReady([&] { return k923.pcLinkReady(); });
-    ImageHandler handler(image);
+    link::ImageHandler handler(image);
 
     QString error;
     linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
@@ -92,7 +77,9 @@ int runServeQt(std::span<const std::string> argv) {
         std::fprintf(stderr, "k528: %s\n", error.toUtf8().constData());
         return ExitUsage;
     }
-    std::unique_ptr<linkplugin::Server> server = plugin->openServer(*line, handler, error);
+    // FC 17 names the station, for a bus scan to tell who answers.
+    const QString identity = QStringLiteral("K528-05 simulated by k528 serve: %1").arg(QString::fromStdString(prof->name));
+    std::unique_ptr<linkplugin::Server> server = plugin->openServer(*line, handler, identity, error);
     if (!server) {
         std::fprintf(stderr, "k528: cannot serve on %s: %s\n", line->port.toUtf8().constData(),
                      error.toUtf8().constData());

@@ -131,19 +131,27 @@ std::span<const Command> commands() {
          "                       \"F7 DOWN DOWN ENTER\" for УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ»\n"
          "The register map: shared/spec/link.md, docs/link.md. Runs until SIGINT/SIGTERM.\n",
          runServe},
-        {"link", "link --port DEVICE [--address A] [--baud B] [--parity none|even|odd] ping|status|pull|push|watch ... | link --list",
+        {"link", "link --port DEVICE [--address A] [--baud B] [--parity none|even|odd] ping|status|pull|push|clear|diag|watch|scan ... | link --list",
          "The workstation's client of a K528-05 over RS485 (Modbus RTU plugin).",
          "Commands:\n"
          "  ping                 echo and identity\n"
          "  status [--json]      the live state\n"
          "  pull --out FILE      C, R, programs and messages into a machine file\n"
-         "  push FILE            a machine file into the controller (only in F7 «РАБОТА С ПЭВМ»),\n"
-         "                       each part verified by reading back, each program all or nothing\n"
-         "  watch [--json] [--seconds S] [--interval-ms MS]  the live state, every 100 ms\n"
+         "  push FILE            a machine file (C, R, programs, messages) or a program file (its\n"
+         "                       programs and %MESSAGES) into the controller, only in F7 «РАБОТА С\n"
+         "                       ПЭВМ»; each part staged, committed whole and read back; a push that\n"
+         "                       stops says which parts are new and which are as they were\n"
+         "  clear c|r            clear the C or the R area (manual 2.6.8; F7 «РАБОТА С ПЭВМ» only)\n"
+         "  diag [--json] [--clear]  the station's bus counters (Modbus function 08)\n"
+         "  watch [--json] [--seconds S] [--interval-ms MS]  the live state, every 100 ms; on a lost\n"
+         "                       line says since when, keeps the last values as stale, goes on by itself\n"
+         "  scan [--bauds B,B...] [--addresses A-B] [--json]  the stations that answer and who they\n"
+         "                       are (default: 115200 bit/s, addresses 1-247), one a line\n"
+         "  --frames FILE        save the frame log (time, direction, bytes, CRC) when done\n"
          "  --list               the plugins found (and refused) and the serial ports\n"
          "  --timeout-ms MS      answer timeout (default 200)\n"
-         "Exit codes: 0 done; 1 the controller refused or a verification failed; 2 the line does\n"
-         "not answer, or usage.\n",
+         "Exit codes: 0 done; 1 the controller refused, a verification failed, or the file is wrong;\n"
+         "2 the line does not answer, the file cannot be read, output is lost, or usage.\n",
          runLink},
     };
     return table;

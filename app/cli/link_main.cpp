@@ -4,6 +4,7 @@
 // (next to it, or in its libexec folder) with the same arguments.
 #include "cli.h"
 #include "link_line.h"
+#include "output_file.h"
 
 #include <QCoreApplication>
 #include <atomic>
@@ -83,10 +84,11 @@ int main(int argc, char** argv) {
     const std::string cmd = argv[1];
     std::vector<std::string> args(argv + 2, argv + argc);
     try {
+        // As k528's main: a lost write of standard output fails the command.
         if (cmd == "serve")
-            return k528::cli::runServeQt(args);
+            return k528::cli::finishStandardOutput(k528::cli::runServeQt(args));
         if (cmd == "link")
-            return k528::cli::runLinkQt(args);
+            return k528::cli::finishStandardOutput(k528::cli::runLinkQt(args));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "k528 %s: %s\n", cmd.c_str(), e.what());
         return k528::cli::ExitUsage;

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "output_file.h"
 #include "util/version.h"
 
 using namespace k528::cli;
@@ -35,23 +36,6 @@ void printHelp() {
                 "'k528 COMMAND --help' describes one command.\n"
                 "Exit codes: 0 success; 1 the input has errors (diagnostics printed, or the run\n"
                 "ended in an alarm); 2 usage or I/O error.\n");
-}
-
-// Everything a command printed reaches standard output, or the run fails:
-// the one place that flushes it and checks for a lost write (a full disk,
-// /dev/full, a closed pipe). A backup `k528 db export M > file` on a full
-// disk must not report success.
-int finishStandardOutput(int exitCode) {
-    errno = 0;
-    const bool flushFailed = std::fflush(stdout) != 0;
-    const int flushErrno = errno;
-    if (flushFailed || std::ferror(stdout)) {
-        std::fprintf(stderr, "k528: cannot write standard output: %s\n",
-                     flushFailed && flushErrno != 0 ? std::strerror(flushErrno)
-                                                    : "a write failed");
-        return ExitUsage;
-    }
-    return exitCode;
 }
 
 int dispatch(int argc, char** argv) {

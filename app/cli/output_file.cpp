@@ -1,5 +1,7 @@
 #include "output_file.h"
 
+#include "cli.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -114,6 +116,19 @@ bool writeOutputFile(const std::string& path, const std::string& text, std::stri
         error = "cannot write " + path + ": " + std::strerror(e);
     }
     return ok;
+}
+
+int finishStandardOutput(int exitCode) {
+    errno = 0;
+    const bool flushFailed = std::fflush(stdout) != 0;
+    const int flushErrno = errno;
+    if (flushFailed || std::ferror(stdout)) {
+        std::fprintf(stderr, "k528: cannot write standard output: %s\n",
+                     flushFailed && flushErrno != 0 ? std::strerror(flushErrno)
+                                                    : "a write failed");
+        return ExitUsage;
+    }
+    return exitCode;
 }
 
 } // namespace k528::cli

@@ -20,4 +20,10 @@ namespace k528::cli {
 // On failure returns false with `error` = "cannot write <path>: <why>".
 bool writeOutputFile(const std::string& path, const std::string& text, std::string& error);
 
+// Everything a command printed reaches standard output, or the run fails:
+// the one place that flushes it and checks for a lost write (a full disk,
+// /dev/full, a closed pipe) — main() of k528 and of k528-link. Returns
+// `exitCode`, or ExitUsage (2) after «k528: cannot write standard output: …».
+int finishStandardOutput(int exitCode);
+
 } // namespace k528::cli

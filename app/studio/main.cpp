@@ -3,6 +3,7 @@
 #include <QCommandLineParser>
 #include <QGuiApplication>
 #include <QScreen>
+#include <QEvent>
 #include <QTimer>
 #include <cstdio>
 #include <memory>
@@ -46,6 +47,9 @@ int main(int argc, char** argv) {
     QCommandLineOption workspaceOption(
         "workspace", "Workspace to start in: operator, technologist or training (default: the one left last time).",
         "name");
+    QCommandLineOption firstFrameOption(
+        "first-frame", "Print 'k528studio: first frame' once the main window's first frame is painted, then quit "
+                       "(bench/studio_startup measures the start with it).");
     QCommandLineOption pluginsOption("list-plugins",
                                      "List the controller-link plugins found (the Controller menu's) and exit.");
     QCommandLineOption runOption("run",
@@ -53,7 +57,8 @@ int main(int argc, char** argv) {
                                  "simulated machine, as the debugger's Run does (drives on, homing, "
                                  "AUTOMATIC, Start).",
                                  "file.k528");
-    cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, pluginsOption, runOption});
+    cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, firstFrameOption, pluginsOption,
+                    runOption});
     cli.process(app);
     if (cli.isSet(pluginsOption)) {
         for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
@@ -95,6 +100,25 @@ int main(int argc, char** argv) {
         return 2;
     }
     window->placeOnScreen();
+    if (cli.isSet(firstFrameOption)) {
+        // The window's first paint, then its flush to the screen (the same
+        // pass of the repaint manager: a zero timer runs after it).
+        struct FirstPaint : QObject {
+            bool seen = false;
+            bool eventFilter(QObject*, QEvent* e) override {
+                if (e->type() == QEvent::Paint && !seen) {
+                    seen = true;
+                    QTimer::singleShot(0, qApp, [] {
+                        std::printf("k528studio: first frame\n");
+                        std::fflush(stdout);
+                        QApplication::exit(0);
+                    });
+                }
+                return false;
+            }
+        };
+        window->installEventFilter(new FirstPaint);
+    }
     window->show();
 
     if (cli.isSet(runOption)) {

@@ -1,5 +1,8 @@
 #include "link/client.h"
 
+#include "link/image.h"
+#include "link/modbus.h"
+
 #include "catalog/cparams.h"
 #include "engine/program_check.h"
 #include "profile/text_format.h"
@@ -8,6 +11,9 @@
 #include "program/parser.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
 
 namespace k528::link {
 
@@ -50,50 +56,158 @@ std::string statusText(int status) {
     }
 }
 
-template <class F> LinkError Link::retry(const std::string& what, F&& f) {
-    Reply last;
-    for (int attempt = 0; attempt < attempts_; ++attempt) {
-        if (attempt > 0)
-            ++stats_.retries;
-        last = f();
-        switch (last.kind) {
+void RoundTrips::add(double ms) {
+    last_ = ms;
+    ++count_;
+    if (ring_.size() < kCapacity) {
+        ring_.push_back(static_cast<float>(ms));
+        return;
+    }
+    ring_[next_] = static_cast<float>(ms);
+    next_ = (next_ + 1) % kCapacity;
+}
+
+double RoundTrips::quantile(double q) const {
+    if (ring_.empty())
+        return 0;
+    std::vector<float> v = ring_;
+    const auto k = static_cast<std::size_t>(std::min<double>(static_cast<double>(v.size()) - 1,
+                                                             std::ceil(q * static_cast<double>(v.size())) - 1));
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+    return v[k];
+}
+
+std::string describe(const LineStats& s) {
+    auto n = [](std::int64_t v, const char* one, const char* many) {
+        return std::to_string(v) + " " + (v == 1 ? one : many);
+    };
+    std::string t = n(s.exchanges, "answer", "answers") + ", " + n(s.noAnswer, "timeout", "timeouts") + ", " +
+                    n(s.crcErrors, "CRC error", "CRC errors") + ", " + n(s.badReplies, "bad reply", "bad replies") +
+                    ", " + n(s.exceptions, "exception", "exceptions");
+    if (!s.exceptionsByCode.empty()) {
+        t += " (";
+        bool first = true;
+        for (const auto& [code, count] : s.exceptionsByCode) {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, "%s%02d×%lld", first ? "" : ", ", code, static_cast<long long>(count));
+            t += buf;
+            first = false;
+        }
+        t += ")";
+    }
+    t += ", " + n(s.retries, "retry", "retries");
+    if (s.splits > 0)
+        t += ", " + n(s.splits, "request sent again in halves", "requests sent again in halves");
+    if (s.roundTrip.count() > 0) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "; round trip median %.1f ms, p95 %.1f ms", s.roundTrip.median(),
+                      s.roundTrip.p95());
+        t += buf;
+    }
+    return t;
+}
+
+void Link::count(const Reply& r, bool again) {
+    for (LineStats* s : {&total_, &stations_[t_.station()]}) {
+        if (again)
+            ++s->retries;
+        switch (r.kind) {
         case Reply::Kind::Ok:
-            ++stats_.exchanges;
-            return {};
+            ++s->exchanges;
+            break;
         case Reply::Kind::Exception:
-            ++stats_.exchanges;
-            ++stats_.exceptions;
-            return {last.exception == 6 ? LinkError::Kind::NotReady : LinkError::Kind::Exception,
-                    last.exception, what + ": " + exceptionText(last.exception)};
+            ++s->exchanges;
+            ++s->exceptions;
+            ++s->exceptionsByCode[r.exception];
+            break;
         case Reply::Kind::NoAnswer:
-            ++stats_.noAnswer;
+            ++s->noAnswer;
+            break;
+        case Reply::Kind::Damaged:
+            ++s->crcErrors;
             break;
         case Reply::Kind::BadReply:
-            ++stats_.badReplies;
+            ++s->badReplies;
+            break;
+        }
+        if ((r.kind == Reply::Kind::Ok || r.kind == Reply::Kind::Exception) && r.roundTripMs >= 0)
+            s->roundTrip.add(r.roundTripMs);
+    }
+}
+
+template <class F> LinkError Link::retry(const std::string& what, F&& f) {
+    Reply last;
+    lastDamaged_ = false;
+    for (int attempt = 0; attempt < attempts_; ++attempt) {
+        last = f();
+        count(last, attempt > 0);
+        lastDamaged_ = lastDamaged_ || last.kind == Reply::Kind::Damaged || last.kind == Reply::Kind::BadReply;
+        switch (last.kind) {
+        case Reply::Kind::Ok:
+            return {};
+        case Reply::Kind::Exception:
+            return {last.exception == 6 ? LinkError::Kind::NotReady : LinkError::Kind::Exception,
+                    last.exception, what + ": " + exceptionText(last.exception)};
+        default:
             break;
         }
     }
     return {LinkError::Kind::NoAnswer, 0,
-            what + ": the controller does not answer (" + std::to_string(attempts_) + " attempts" +
-                (last.detail.empty() ? "" : ", last: " + last.detail) + ")"};
+            what + ": the controller does not answer (" + std::to_string(attempts_) +
+                (attempts_ == 1 ? " attempt" : " attempts") + (last.detail.empty() ? "" : ", last: " + last.detail) + ")"};
+}
+
+// A piece of a request that every attempt lost, while the line did answer
+// (damaged frames, not only silence), goes again as two halves: on a line
+// that damages one frame in a few, a long frame fails four times far more
+// often than two short ones (at least kMinPiece registers each).
+namespace {
+constexpr int kMinPiece = 8;
+bool worthSplitting(const LinkError& e, bool damaged, int n) {
+    return e.kind == LinkError::Kind::NoAnswer && damaged && n >= 2 * kMinPiece;
+}
+} // namespace
+
+LinkError Link::readPiece(int at, int n, std::vector<std::uint16_t>& out) {
+    std::vector<std::uint16_t> part;
+    LinkError e = retry("reading registers " + std::to_string(at) + ".." + std::to_string(at + n - 1), [&] {
+        Reply r = t_.read(at, n, part);
+        if (r.ok() && static_cast<int>(part.size()) != n)
+            return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(n) + " asked");
+        return r;
+    });
+    if (worthSplitting(e, lastDamaged_, n)) {
+        ++total_.splits;
+        const int half = (n / 2) & ~1;
+        if (LinkError h = readPiece(at, half, out))
+            return h;
+        return readPiece(at + half, n - half, out);
+    }
+    if (!e)
+        out.insert(out.end(), part.begin(), part.end());
+    return e;
 }
 
 LinkError Link::read(int first, int count, std::vector<std::uint16_t>& out) {
     out.clear();
-    std::vector<std::uint16_t> part;
-    for (int at = first; at < first + count; at += map_.maxRead) {
-        const int n = std::min(map_.maxRead, first + count - at);
-        LinkError e = retry("reading registers " + std::to_string(at) + ".." + std::to_string(at + n - 1), [&] {
-            Reply r = t_.read(at, n, part);
-            if (r.ok() && static_cast<int>(part.size()) != n)
-                return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(n) + " asked");
-            return r;
-        });
-        if (e)
+    for (int at = first; at < first + count; at += map_.maxRead)
+        if (LinkError e = readPiece(at, std::min(map_.maxRead, first + count - at), out))
             return e;
-        out.insert(out.end(), part.begin(), part.end());
-    }
     return {};
+}
+
+LinkError Link::writePiece(int first, std::span<const std::uint16_t> values) {
+    const int n = static_cast<int>(values.size());
+    LinkError e = retry("writing registers " + std::to_string(first) + ".." + std::to_string(first + n - 1),
+                        [&] { return t_.write(first, values); });
+    if (worthSplitting(e, lastDamaged_, n)) {
+        ++total_.splits;
+        const int half = (n / 2) & ~1; // even: a 32-bit value stays in one write
+        if (LinkError h = writePiece(first, values.first(static_cast<std::size_t>(half))))
+            return h;
+        return writePiece(first + half, values.subspan(static_cast<std::size_t>(half)));
+    }
+    return e;
 }
 
 LinkError Link::write(int first, std::span<const std::uint16_t> values) {
@@ -102,9 +216,7 @@ LinkError Link::write(int first, std::span<const std::uint16_t> values) {
     const int count = static_cast<int>(values.size());
     for (int i = 0; i < count; i += chunk) {
         const int n = std::min(chunk, count - i);
-        LinkError e = retry("writing registers " + std::to_string(first + i) + ".." + std::to_string(first + i + n - 1),
-                            [&] { return t_.write(first + i, values.subspan(static_cast<std::size_t>(i), static_cast<std::size_t>(n))); });
-        if (e)
+        if (LinkError e = writePiece(first + i, values.subspan(static_cast<std::size_t>(i), static_cast<std::size_t>(n))))
             return e;
     }
     return {};
@@ -112,16 +224,41 @@ LinkError Link::write(int first, std::span<const std::uint16_t> values) {
 
 LinkError Link::writeRead(int writeFirst, std::span<const std::uint16_t> values, int readFirst,
                           int readCount, std::vector<std::uint16_t>& out) {
-    return retry("reading registers " + std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1), [&] {
-        Reply r = t_.writeRead(writeFirst, values, readFirst, readCount, out);
-        if (r.ok() && static_cast<int>(out.size()) != readCount)
-            return Reply::bad("reply of " + std::to_string(out.size()) + " registers, " + std::to_string(readCount) + " asked");
+    std::vector<std::uint16_t> part;
+    LinkError e = retry("reading registers " + std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1), [&] {
+        Reply r = t_.writeRead(writeFirst, values, readFirst, readCount, part);
+        if (r.ok() && static_cast<int>(part.size()) != readCount)
+            return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(readCount) + " asked");
         return r;
     });
+    if (worthSplitting(e, lastDamaged_, readCount)) {
+        // The same write before each half of the read (a window's offset, then part of the window).
+        ++total_.splits;
+        const int half = readCount / 2;
+        std::vector<std::uint16_t> a, b;
+        if (LinkError h = writeRead(writeFirst, values, readFirst, half, a))
+            return h;
+        if (LinkError h = writeRead(writeFirst, values, readFirst + half, readCount - half, b))
+            return h;
+        out = std::move(a);
+        out.insert(out.end(), b.begin(), b.end());
+        return {};
+    }
+    if (!e)
+        out = std::move(part);
+    return e;
 }
 
 LinkError Link::echo(std::uint16_t value) {
     return retry("echo", [&] { return t_.echo(value); });
+}
+
+LinkError Link::diagnostics(std::uint16_t sub, std::uint16_t data, std::uint16_t& out) {
+    return retry("diagnostics " + std::to_string(sub), [&] { return t_.diagnostics(sub, data, out); });
+}
+
+LinkError Link::serverId(ServerId& out) {
+    return retry("server id", [&] { return t_.serverId(out); });
 }
 
 LiveState decodeLive(const RegisterMap& map, std::span<const std::uint16_t> regs) {
@@ -174,6 +311,18 @@ LinkError identify(Link& link, LiveState& out) {
     if (LinkError e = link.echo(0x4B35))
         return e;
     return readLive(link, out);
+}
+
+std::string notReadyText(const LiveState& live, const std::string& what) {
+    if (live.mode == 7)
+        return "the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in "
+               "its menu on the K923 (▲ ▼, ENTER), then " +
+               what + " again; nothing was sent";
+    const std::string now = live.mode >= 1 && live.mode <= 7 ? "mode F" + std::to_string(live.mode) + " now"
+                                                             : "powering on";
+    return "the controller is not in F7 «РАБОТА С ПЭВМ» (" + now +
+           "): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then " + what +
+           " again; nothing was sent";
 }
 
 namespace {
@@ -232,44 +381,20 @@ LinkError readText(Link& link, bool messages, int program, std::string& text) {
 
 namespace {
 
-LinkError writeTextOnce(Link& link, bool messages, int program, const std::string& text) {
+// Sends the commit (7000 = 5) and reads the status it left. `commitSent`
+// is set once the commit may have reached the controller; `committed` once
+// the status says it took the transfer.
+LinkError commitTransfer(Link& link, const std::string& what, bool& commitSent, bool& committed) {
     const TransferLayout& T = link.map().transfer;
-    const std::string what = messages ? std::string("messages") : "program " + std::to_string(program);
-    const auto length = static_cast<std::uint32_t>(text.size());
-    const std::uint32_t crc = crc32(text);
-    const std::uint16_t head[] = {lowWord(length), highWord(length), lowWord(crc), highWord(crc)};
-    if (LinkError e = link.write(T.length, head))
-        return e;
-    const std::uint16_t begin[] = {
-        static_cast<std::uint16_t>(messages ? TransferCommand::WriteMessages : TransferCommand::WriteProgram),
-        static_cast<std::uint16_t>(messages ? 1 : program)};
-    if (LinkError e = link.write(T.command, begin))
-        return e;
-    std::vector<std::uint16_t> st;
-    if (LinkError e = link.read(T.status, 2, st))
-        return e;
-    if (st[0] != static_cast<int>(TransferStatus::Ready))
-        return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
-    const std::vector<std::uint16_t> regs = textRegisters(text);
-    std::vector<std::uint16_t> frame;
-    for (std::uint32_t off = 0; off < length; off += static_cast<std::uint32_t>(T.windowBytes)) {
-        const std::size_t first = off / 2;
-        const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(T.windowRegisters()), regs.size() - first);
-        frame.assign({lowWord(off), highWord(off)});
-        frame.insert(frame.end(), regs.begin() + static_cast<std::ptrdiff_t>(first),
-                     regs.begin() + static_cast<std::ptrdiff_t>(first + n));
-        if (T.window != T.offset + 2)
-            return {LinkError::Kind::Exception, 0, "the map's window does not follow its offset"};
-        if (LinkError e = link.write(T.offset, frame))
-            return e;
-    }
     const std::uint16_t commit[] = {static_cast<std::uint16_t>(TransferCommand::Commit)};
     const std::int64_t retriesBefore = link.stats().retries;
+    commitSent = true;
     LinkError ce = link.write(T.command, commit);
     // A commit whose answer was lost and was sent again finds nothing to
     // commit (exception 03): the status tells what the first one did.
     if (ce && !(ce.kind == LinkError::Kind::Exception && ce.code == 3 && link.stats().retries > retriesBefore))
         return ce;
+    std::vector<std::uint16_t> st;
     if (LinkError e = link.read(T.status, 2, st))
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Committed)) {
@@ -278,6 +403,53 @@ LinkError writeTextOnce(Link& link, bool messages, int program, const std::strin
             m += " at line " + std::to_string(st[1]);
         return {LinkError::Kind::Refused, st[0], m};
     }
+    committed = true;
+    return {};
+}
+
+// Begins a transfer into the controller (the text's or block's length and
+// CRC, then `command`), sends `bytes` window by window (offset and text in
+// one write), commits it and reads the status.
+LinkError sendTransfer(Link& link, const std::string& what, TransferCommand command, int program,
+                       const std::string& bytes, bool& commitSent, bool& committed) {
+    const TransferLayout& T = link.map().transfer;
+    const auto length = static_cast<std::uint32_t>(bytes.size());
+    const std::uint32_t crc = crc32(bytes);
+    const std::uint16_t head[] = {lowWord(length), highWord(length), lowWord(crc), highWord(crc)};
+    if (LinkError e = link.write(T.length, head))
+        return e;
+    std::vector<std::uint16_t> begin = {static_cast<std::uint16_t>(command)};
+    if (command == TransferCommand::WriteProgram || command == TransferCommand::WriteMessages)
+        begin.push_back(static_cast<std::uint16_t>(program));
+    if (LinkError e = link.write(T.command, begin))
+        return e;
+    std::vector<std::uint16_t> st;
+    if (LinkError e = link.read(T.status, 2, st))
+        return e;
+    if (st[0] != static_cast<int>(TransferStatus::Ready))
+        return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
+    if (T.window != T.offset + 2)
+        return {LinkError::Kind::Exception, 0, "the map's window does not follow its offset"};
+    const std::vector<std::uint16_t> regs = textRegisters(bytes);
+    std::vector<std::uint16_t> frame;
+    for (std::uint32_t off = 0; off < length; off += static_cast<std::uint32_t>(T.windowBytes)) {
+        const std::size_t first = off / 2;
+        const std::size_t n = std::min<std::size_t>(static_cast<std::size_t>(T.windowRegisters()), regs.size() - first);
+        frame.assign({lowWord(off), highWord(off)});
+        frame.insert(frame.end(), regs.begin() + static_cast<std::ptrdiff_t>(first),
+                     regs.begin() + static_cast<std::ptrdiff_t>(first + n));
+        if (LinkError e = link.write(T.offset, frame))
+            return e;
+    }
+    return commitTransfer(link, what, commitSent, committed);
+}
+
+LinkError writeTextOnce(Link& link, bool messages, int program, const std::string& text, bool& commitSent,
+                        bool& committed) {
+    const std::string what = messages ? std::string("messages") : "program " + std::to_string(program);
+    if (LinkError e = sendTransfer(link, what, messages ? TransferCommand::WriteMessages : TransferCommand::WriteProgram,
+                                   messages ? 1 : program, text, commitSent, committed))
+        return e;
     std::string back;
     if (LinkError e = readText(link, messages, program, back))
         return e;
@@ -286,14 +458,61 @@ LinkError writeTextOnce(Link& link, bool messages, int program, const std::strin
     return {};
 }
 
+// A damaged transfer (status 19) is sent again; anything else is final.
+bool sendAgain(const LinkError& e) {
+    return e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::CrcMismatch);
+}
+
+LinkError writeText(Link& link, bool messages, int program, const std::string& text, bool& commitSent,
+                    bool& committed) {
+    LinkError e;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        commitSent = committed = false;
+        e = writeTextOnce(link, messages, program, text, commitSent, committed);
+        if (!sendAgain(e))
+            return e;
+    }
+    return e;
+}
+
+LinkError writeBlockOnce(Link& link, BlockKind kind, std::span<const std::uint16_t> whole, bool& commitSent,
+                         bool& committed) {
+    const RegisterMap& map = link.map();
+    const std::string what = kind == BlockKind::C ? "C-parameters" : "R-parameters";
+    const std::vector<std::uint16_t> sent = stagedRegisters(map, kind, whole);
+    if (LinkError e = sendTransfer(link, what, kind == BlockKind::C ? TransferCommand::StageC : TransferCommand::StageR,
+                                   0, registerBytes(sent), commitSent, committed)) {
+        if (e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::TextRefused))
+            e.message = what + ": the controller refused the block" +
+                        (kind == BlockKind::C && e.message.find("at line ") != std::string::npos
+                             ? " at C" + e.message.substr(e.message.find("at line ") + 8)
+                             : std::string());
+        return e;
+    }
+    std::vector<std::uint16_t> back;
+    const int first = kind == BlockKind::C ? map.block(BlockKind::C).first : map.rFirst;
+    const int count = kind == BlockKind::C ? map.block(BlockKind::C).count() : 2 * (map.rWritableLast + 1);
+    if (LinkError e = link.read(first, count, back))
+        return e;
+    if (stagedRegisters(map, kind, back) != sent)
+        return {LinkError::Kind::Verify, 0, what + ": the values read back differ from those sent"};
+    return {};
+}
+
 } // namespace
 
 LinkError writeText(Link& link, bool messages, int program, const std::string& text) {
+    bool sent = false, committed = false;
+    return writeText(link, messages, program, text, sent, committed);
+}
+
+LinkError writeBlock(Link& link, BlockKind kind, std::span<const std::uint16_t> whole, bool& committed,
+                     bool& commitSent) {
     LinkError e;
     for (int attempt = 0; attempt < 3; ++attempt) {
-        e = writeTextOnce(link, messages, program, text);
-        // A damaged text (19) is sent again; anything else is final.
-        if (!(e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::CrcMismatch)))
+        commitSent = committed = false;
+        e = writeBlockOnce(link, kind, whole, commitSent, committed);
+        if (!sendAgain(e))
             return e;
     }
     return e;
@@ -340,8 +559,10 @@ profile::MachineProfile pulledProfile(const PullResult& p, const std::string& na
     m.title = title;
     for (int n = 1; n <= catalog::kCParamCount && n < static_cast<int>(p.c.size()); ++n)
         m.c[static_cast<std::size_t>(n)] = p.c[static_cast<std::size_t>(n)];
+    // The R-parameters the PC may write back (the memory a push restores);
+    // the positioner's own and its status are not presets.
     for (int i = 0; i < 300; ++i)
-        if (p.r[static_cast<std::size_t>(i)] != 0 && !(i >= program::kFirstReadOnlyR && i <= program::kLastReadOnlyR))
+        if (p.r[static_cast<std::size_t>(i)] != 0 && k528Map().rWritable(i))
             m.r[i] = p.r[static_cast<std::size_t>(i)];
     m.programs = p.programs;
     const program::ParseResult msg = program::parse(p.messagesText);
@@ -350,105 +571,380 @@ profile::MachineProfile pulledProfile(const PullResult& p, const std::string& na
     return m;
 }
 
-LinkError push(Link& link, const profile::MachineProfile& file, PushReport& report, const Progress& progress) {
-    const RegisterMap& map = link.map();
-    auto step = [&](const std::string& what, int done, int total) {
-        if (progress)
-            progress(what, done, total);
+// --- push ------------------------------------------------------------------
+
+std::string PushReport::summary() const {
+    std::string out;
+    for (State st : {State::New, State::InDoubt, State::AsItWas}) {
+        std::string names;
+        for (const Part& p : parts)
+            if (p.state == st)
+                names += (names.empty() ? "" : ", ") + p.name;
+        if (names.empty())
+            continue;
+        if (!out.empty())
+            out += "; ";
+        out += st == State::New       ? "new: "
+               : st == State::InDoubt ? "in doubt (the line broke while it was committed; pull to see): "
+                                      : "as they were: ";
+        out += names;
+    }
+    return out;
+}
+
+bool PushReport::anyNew() const {
+    for (const Part& p : parts)
+        if (p.state != State::AsItWas)
+            return true;
+    return false;
+}
+
+namespace {
+
+std::string canonicalProgram(const program::Program& p) {
+    program::ProgramStore one;
+    one.insert(p);
+    return program::format(one);
+}
+
+std::string canonicalMessages(const program::MessageTable& m) {
+    program::ProgramStore only;
+    only.messages = m;
+    only.messages.present = true;
+    return program::format(only);
+}
+
+// The programs in the order they can be committed: a program after those
+// of the push it calls (the controller checks each text against the
+// programs it holds at that moment), else by number.
+std::vector<int> commitOrder(const std::map<int, std::string>& programs) {
+    std::map<int, std::vector<int>> calls;
+    for (const auto& [n, text] : programs) {
+        program::ParseOptions po;
+        po.programNumber = n;
+        const program::ParseResult parsed = program::parse(text, po);
+        for (const program::Program& p : parsed.store.programs())
+            for (const program::Frame& f : p.frames)
+                if (const auto t = f.body.callTarget(); t && *t != n && programs.count(*t))
+                    calls[n].push_back(*t);
+    }
+    std::vector<int> order;
+    std::set<int> done, visiting;
+    std::function<void(int)> visit = [&](int n) {
+        if (done.count(n) || visiting.count(n))
+            return; // a cycle: the controller names it
+        visiting.insert(n);
+        for (int t : calls[n])
+            visit(t);
+        visiting.erase(n);
+        done.insert(n);
+        order.push_back(n);
     };
-    // 1. The file, before anything is sent.
+    for (const auto& [n, text] : programs)
+        visit(n);
+    return order;
+}
+
+LinkError inputError(int line, std::string message) {
+    return {LinkError::Kind::Input, line, std::move(message) + "; nothing was sent"};
+}
+
+} // namespace
+
+LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile& file, PushPlan& plan) {
+    plan = {};
     for (int n = 1; n <= catalog::kCParamCount; ++n)
         if (const std::string e = profile::checkCValue(n, file.c[static_cast<std::size_t>(n)]); !e.empty())
-            return {LinkError::Kind::Input, 0, "C" + std::to_string(n) + " (" + std::string(catalog::cParam(n).name) +
-                                                   "): " + e + " (table Е.1); nothing was sent"};
-    for (const auto& [n, v] : file.r)
-        if (n <= map.rWritableLast && (v < INT32_MIN || v > INT32_MAX))
-            return {LinkError::Kind::Input, 0, "R" + std::to_string(n) + " is outside the 32-bit range; nothing was sent"};
-    std::map<int, std::string> texts;
+            return inputError(0, "C" + std::to_string(n) + " (" + std::string(catalog::cParam(n).name) + "): " + e +
+                                     " (table Е.1)");
+    plan.hasC = true;
+    plan.c.assign(file.c.begin(), file.c.end());
+    plan.hasR = true;
+    for (const auto& [n, v] : file.r) {
+        if (v < INT32_MIN || v > INT32_MAX)
+            return inputError(0, "R" + std::to_string(n) + " is outside the 32-bit range");
+        if (n >= 0 && n < 300 && map.rWritable(n))
+            plan.r[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(v);
+    }
     for (const auto& [n, text] : file.programs) {
         program::ParseOptions po;
         po.programNumber = n;
         const program::ParseResult parsed = program::parse(text, po);
         for (const program::Diagnostic& d : parsed.diagnostics)
             if (d.isError())
-                return {LinkError::Kind::Input, d.line,
-                        "program " + std::to_string(n) + ", line " + std::to_string(d.line) + ": " + d.messageEn + "; nothing was sent"};
+                return inputError(d.line, "program " + std::to_string(n) + ", line " + std::to_string(d.line) + ": " +
+                                              d.messageEn);
         if (parsed.store.size() != 1 || parsed.store.programs()[0].number != n)
-            return {LinkError::Kind::Input, 0, "program " + std::to_string(n) + " does not hold exactly that program; nothing was sent"};
-        program::ProgramStore one;
-        one.insert(parsed.store.programs()[0]);
-        texts[n] = program::format(one);
+            return inputError(0, "program " + std::to_string(n) + " does not hold exactly that program");
+        plan.programs[n] = canonicalProgram(parsed.store.programs()[0]);
     }
     {
         program::ProgramStore none;
         const engine::FileCheck check = engine::checkFileForMachine(profile::programsFileText(file), {}, file, none);
         for (const program::Diagnostic& d : check.diagnostics)
             if (d.isError())
-                return {LinkError::Kind::Input, d.line,
-                        "program " + std::to_string(d.program) + ": " + d.messageEn + "; nothing was sent"};
+                return inputError(d.line, "program " + std::to_string(d.program) + ": " + d.messageEn);
     }
-    std::string messagesText;
     if (!file.messages.empty()) {
-        program::ProgramStore m;
+        program::MessageTable m;
         for (const auto& [k, t] : file.messages)
-            m.messages.set(k, t);
-        messagesText = program::format(m);
+            m.set(k, t);
+        plan.hasMessages = true;
+        plan.messagesText = canonicalMessages(m);
     }
+    return {};
+}
 
-    // 2. Only in F7 «РАБОТА С ПЭВМ».
+LinkError planProgramFile(Link& link, std::string_view text, const std::string& source, PushPlan& plan) {
+    plan = {};
+    const program::ParseResult parsed = program::parse(text);
+    for (const program::Diagnostic& d : parsed.diagnostics)
+        if (d.isError())
+            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + d.messageEn);
+    if (parsed.store.empty() && !parsed.store.messages.present)
+        return inputError(0, source + " holds no program (%L) and no %MESSAGES");
+    for (const program::Program& p : parsed.store.programs()) {
+        if (p.headerLine == 0)
+            return inputError(1, source + ": the text before the first %L header belongs to no program");
+        plan.programs[p.number] = canonicalProgram(p);
+    }
+    if (parsed.store.messages.present) {
+        plan.hasMessages = true;
+        plan.messagesText = canonicalMessages(parsed.store.messages);
+    }
+    // The controller checks each text at commit with its own constants,
+    // R-parameters and programs: check the file the same way first, so a
+    // file it would refuse sends nothing.
+    const RegisterMap& map = link.map();
+    const Block& cb = map.block(BlockKind::C);
+    std::vector<std::uint16_t> regs;
+    if (LinkError e = link.read(cb.first, cb.count(), regs))
+        return e;
+    profile::MachineProfile machine;
+    const std::vector<std::int64_t> c = unpackC(map, regs);
+    for (std::size_t n = 1; n < c.size() && n < machine.c.size(); ++n)
+        machine.c[n] = c[n];
+    if (LinkError e = link.read(map.rFirst, 2 * (map.rWritableLast + 1), regs))
+        return e;
+    for (int i = 0; i <= map.rWritableLast; ++i)
+        if (const std::int32_t v = joinSigned(regs[2 * static_cast<std::size_t>(i)], regs[2 * static_cast<std::size_t>(i) + 1]))
+            machine.r[i] = v;
+    LiveState live;
+    if (LinkError e = readLive(link, live))
+        return e;
+    program::ProgramStore store; // the controller's programs the file calls, and its messages
+    std::set<int> called;
+    for (const program::Program& p : parsed.store.programs())
+        for (const program::Frame& f : p.frames)
+            if (const auto target = f.body.callTarget(); target && !plan.programs.count(*target))
+                called.insert(*target);
+    for (int n : called) {
+        if (std::find(live.programs.begin(), live.programs.end(), n) == live.programs.end())
+            continue; // absent there too: the check names it
+        std::string t;
+        if (LinkError e = readText(link, false, n, t))
+            return e;
+        program::ParseOptions po;
+        po.programNumber = n;
+        const program::ParseResult theirs = program::parse(t, po);
+        for (const program::Program& p : theirs.store.programs())
+            store.insert(p);
+    }
+    if (!plan.hasMessages) {
+        std::string t;
+        if (LinkError e = readText(link, true, 0, t))
+            return e;
+        store.messages = program::parse(t).store.messages;
+    }
+    const engine::FileCheck check = engine::checkFileForMachine(text, {}, machine, store);
+    for (const program::Diagnostic& d : check.diagnostics)
+        if (d.isError())
+            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + d.messageEn +
+                                          " (checked against the controller's constants and programs)");
+    return {};
+}
+
+LinkError push(Link& link, const PushPlan& plan, PushReport& report, const Progress& progress) {
+    const RegisterMap& map = link.map();
+    auto step = [&](const std::string& what, int done, int total) {
+        if (progress)
+            progress(what, done, total);
+    };
+    report = {};
+    if (plan.hasC)
+        report.parts.push_back({"C-parameters", PushReport::State::AsItWas});
+    if (plan.hasR)
+        report.parts.push_back({"R-parameters (" + map.rWritableText() + ")", PushReport::State::AsItWas});
+    if (plan.hasMessages)
+        report.parts.push_back({"messages", PushReport::State::AsItWas});
+    const std::vector<int> order = commitOrder(plan.programs);
+    for (int n : order)
+        report.parts.push_back({"program " + std::to_string(n), PushReport::State::AsItWas});
+
+    // Only in F7 «РАБОТА С ПЭВМ».
     LiveState live;
     if (LinkError e = identify(link, live))
         return e;
     if (!live.pcReady)
-        return {LinkError::Kind::NotReady, 6,
-                "the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ, mode F" +
-                    std::to_string(live.mode) + " now): select it on the K923, then push again; nothing was sent"};
+        return {LinkError::Kind::NotReady, 6, notReadyText(live, "push")};
 
-    // 3. C-parameters, written and read back.
-    step("C-parameters", 0, 1);
-    const Block& cb = map.block(BlockKind::C);
-    const std::vector<std::uint16_t> cRegs = packC(map, file.c);
-    if (LinkError e = link.write(cb.first, cRegs))
+    std::size_t part = 0;
+    // Where the part under way ended, then the error as it came.
+    auto settle = [&](const LinkError& e, bool commitSent, bool committed) {
+        PushReport::State& st = report.parts[part].state;
+        st = committed                                                  ? PushReport::State::New
+             : commitSent && e && e.kind == LinkError::Kind::NoAnswer ? PushReport::State::InDoubt
+                                                                        : PushReport::State::AsItWas;
+        ++part;
         return e;
-    std::vector<std::uint16_t> back;
-    if (LinkError e = link.read(cb.first, cb.count(), back))
-        return e;
-    if (back != cRegs)
-        return {LinkError::Kind::Verify, 0, "C-parameters: the values read back differ from those sent"};
-    report.constants = true;
-
-    // 4. R0..R149.
-    step("R-parameters", 0, 1);
-    std::vector<std::uint16_t> rRegs;
-    for (int i = 0; i <= map.rWritableLast; ++i) {
-        const auto it = file.r.find(i);
-        const std::int64_t v = it == file.r.end() ? 0 : it->second;
-        rRegs.push_back(lowWord(v));
-        rRegs.push_back(highWord(v));
+    };
+    bool sent = false, committed = false;
+    if (plan.hasC) {
+        step("C-parameters", 0, 1);
+        const std::vector<std::uint16_t> regs = packC(map, plan.c);
+        if (LinkError e = writeBlock(link, BlockKind::C, regs, committed, sent); settle(e, sent, committed))
+            return e;
+        report.constants = true;
     }
-    if (LinkError e = link.write(map.rFirst, rRegs))
-        return e;
-    if (LinkError e = link.read(map.rFirst, static_cast<int>(rRegs.size()), back))
-        return e;
-    if (back != rRegs)
-        return {LinkError::Kind::Verify, 0, "R-parameters: the values read back differ from those sent"};
-    report.rParameters = true;
-
-    // 5. The messages (programs may show them), then each program.
-    if (!messagesText.empty()) {
+    if (plan.hasR) {
+        step("R-parameters", 0, 1);
+        std::vector<std::uint16_t> regs;
+        for (int i = 0; i < map.rCount; ++i) {
+            const std::int32_t v = i < 300 ? plan.r[static_cast<std::size_t>(i)] : 0;
+            regs.push_back(lowWord(v));
+            regs.push_back(highWord(v));
+        }
+        if (LinkError e = writeBlock(link, BlockKind::R, regs, committed, sent); settle(e, sent, committed))
+            return e;
+        report.rParameters = true;
+    }
+    // The messages (programs may show them), then each program.
+    if (plan.hasMessages) {
         step("messages", 0, 1);
-        if (LinkError e = writeText(link, true, 0, messagesText))
+        if (LinkError e = writeText(link, true, 0, plan.messagesText, sent, committed); settle(e, sent, committed))
             return e;
         report.messages = true;
     }
     int done = 0;
-    for (const auto& [n, text] : texts) {
-        step("program " + std::to_string(n), done++, static_cast<int>(texts.size()));
-        if (LinkError e = writeText(link, false, n, text))
+    for (int n : order) {
+        step("program " + std::to_string(n), done++, static_cast<int>(order.size()));
+        if (LinkError e = writeText(link, false, n, plan.programs.at(n), sent, committed); settle(e, sent, committed))
             return e;
         report.programs.push_back(n);
     }
     return {};
+}
+
+LinkError push(Link& link, const profile::MachineProfile& file, PushReport& report, const Progress& progress) {
+    PushPlan plan;
+    if (LinkError e = planMachineFile(link.map(), file, plan))
+        return e;
+    return push(link, plan, report, progress);
+}
+
+LinkError clearArea(Link& link, BlockKind kind) {
+    const RegisterMap& map = link.map();
+    const std::string what = kind == BlockKind::C ? "clear C" : "clear R";
+    LiveState live;
+    if (LinkError e = identify(link, live))
+        return e;
+    if (!live.pcReady)
+        return {LinkError::Kind::NotReady, 6, notReadyText(live, what)};
+    const std::uint16_t cmd[] = {
+        static_cast<std::uint16_t>(kind == BlockKind::C ? TransferCommand::ClearC : TransferCommand::ClearR)};
+    if (LinkError e = link.write(map.transfer.command, cmd))
+        return e;
+    std::vector<std::uint16_t> st;
+    if (LinkError e = link.read(map.transfer.status, 1, st))
+        return e;
+    if (st[0] != static_cast<int>(TransferStatus::Committed))
+        return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
+    if (kind == BlockKind::C) { // every constant 0 now
+        const Block& cb = map.block(BlockKind::C);
+        std::vector<std::uint16_t> back;
+        if (LinkError e = link.read(cb.first, cb.count(), back))
+            return e;
+        if (std::any_of(back.begin(), back.end(), [](std::uint16_t v) { return v != 0; }))
+            return {LinkError::Kind::Verify, 0, "clear C: the C block does not read back as zeros"};
+    }
+    return {};
+}
+
+LinkError readBusCounters(Link& link, BusCounters& out) {
+    for (std::size_t i = 0; i < std::size(modbus::kCounters); ++i)
+        if (LinkError e = link.diagnostics(modbus::kCounters[i], 0, out.values[i]))
+            return e;
+    return {};
+}
+
+LinkError clearBusCounters(Link& link) {
+    std::uint16_t echo = 0;
+    return link.diagnostics(modbus::ClearCounters, 0, echo);
+}
+
+StationInfo probeStation(Link& link, int address) {
+    StationInfo s;
+    s.address = address;
+    if (!link.transport().setStation(address))
+        return s;
+    const int attempts = link.attempts();
+    link.setAttempts(1);
+    const std::int64_t damagedBefore = link.stations().count(address) ? link.stations().at(address).crcErrors : 0;
+    const LinkError e = link.echo(0x4B35);
+    const LineStats& st = link.stations().at(address);
+    if (!e) {
+        s.answers = true;
+        s.echo = "echo ok";
+    } else if (e.kind == LinkError::Kind::Exception || e.kind == LinkError::Kind::NotReady) {
+        s.answers = true;
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "exception %02d to the echo", e.code);
+        s.echo = buf;
+    } else if (st.crcErrors > damagedBefore) {
+        s.garbled = true;
+        s.echo = "a damaged answer (another baud rate or parity?)";
+    }
+    if (s.answers) {
+        s.roundTripMs = st.roundTrip.last();
+        ServerId id;
+        if (!link.serverId(id))
+            s.id = id;
+        LiveState live;
+        if (!readLive(link, live) && live.mode >= 0 && live.mode <= 7)
+            s.live = live;
+    }
+    link.setAttempts(attempts);
+    return s;
+}
+
+std::string describe(const StationInfo& s) {
+    std::string t = "address " + std::to_string(s.address) + ": ";
+    if (!s.answers)
+        return t + (s.garbled ? s.echo : "no answer");
+    t += s.echo;
+    if (s.id) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "; server id 0x%02X%s", s.id->id, s.id->running ? ", running" : "");
+        t += buf;
+        std::string data;
+        for (char ch : s.id->data)
+            data += (static_cast<unsigned char>(ch) >= 0x20 || (ch & 0x80)) ? ch : '.';
+        if (!data.empty())
+            t += " «" + data + "»";
+    } else {
+        t += "; no server id (FC 17)";
+    }
+    if (s.live) {
+        t += "; K528-05 map: mode F" + std::to_string(s.live->mode) + (s.live->pcReady ? " «РАБОТА С ПЭВМ»" : "");
+        if (s.live->program > 0)
+            t += ", program " + std::to_string(s.live->program);
+        t += ", " + std::to_string(s.live->programs.size()) + " programs";
+        if (!s.live->alarms.empty())
+            t += ", alarms";
+    }
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "; round trip %.1f ms", s.roundTripMs);
+    return t + buf;
 }
 
 } // namespace k528::link

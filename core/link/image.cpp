@@ -35,9 +35,14 @@ bool ControllerImage::pcReady() const {
            !engine::programActive(ctl_.state());
 }
 
+bool ControllerImage::writing() const {
+    return phase_ == Phase::WritingProgram || phase_ == Phase::WritingMessages || phase_ == Phase::StagingC ||
+           phase_ == Phase::StagingR;
+}
+
 void ControllerImage::checkStillReady() {
-    // Leaving F7 drops a text being written: nothing of it is stored.
-    if ((phase_ == Phase::WritingProgram || phase_ == Phase::WritingMessages) && !pcReady()) {
+    // Leaving F7 drops a text being written or a staged block: nothing of it is stored.
+    if (writing() && !pcReady()) {
         phase_ = Phase::Idle;
         text_.clear();
         status_ = TransferStatus::NotInF7;
@@ -205,8 +210,11 @@ Exception ControllerImage::writeR(int first, std::span<const std::uint16_t> valu
         return Exception::NotReady;
     const int last = first + static_cast<int>(values.size()) - 1;
     const int firstR = (first - map_.rFirst) / 2, lastR = (last - map_.rFirst) / 2;
-    if (lastR > map_.rWritableLast)
-        return Exception::IllegalAddress;
+    // Every R the request touches must be one the PC may write (R0..R231
+    // but the positioner's own R158, R222, R223).
+    for (int i = firstR; i <= lastR; ++i)
+        if (!map_.rWritable(i))
+            return Exception::IllegalAddress;
     std::vector<std::int32_t> v;
     for (int i = firstR; i <= lastR; ++i) {
         const int lo = map_.rRegister(i), hi = lo + 1;
@@ -238,7 +246,7 @@ Exception ControllerImage::writeTransfer(int first, std::span<const std::uint16_
     if (writesWindow) {
         if (!pcReady())
             return Exception::NotReady;
-        if (phase_ != Phase::WritingProgram && phase_ != Phase::WritingMessages)
+        if (!writing())
             return Exception::IllegalValue;
     }
     auto pair32 = [&](int reg, std::uint32_t current) {
@@ -260,12 +268,14 @@ Exception ControllerImage::writeTransfer(int first, std::span<const std::uint16_
     }
     if (has(T.command)) {
         const std::uint16_t cmd = val(T.command);
-        if (cmd < 1 || cmd > 7)
+        if (cmd < 1 || cmd > kLastCommand)
             return Exception::IllegalValue;
-        const bool needsPc = cmd == 2 || cmd == 4 || cmd == 5 || cmd == 7;
-        if (needsPc && !pcReady())
+        const bool needsPc = cmd == 2 || cmd == 4 || cmd == 5 || cmd >= 7;
+        if (needsPc && !pcReady()) {
+            status_ = TransferStatus::NotInF7; // for a client that reads the status
             return Exception::NotReady;
-        if (cmd == 5 && phase_ != Phase::WritingProgram && phase_ != Phase::WritingMessages)
+        }
+        if (cmd == 5 && !writing())
             return Exception::IllegalValue;
     }
     // Apply: registers first, the command last.
@@ -322,6 +332,11 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     }
     case TransferCommand::WriteProgram:
     case TransferCommand::WriteMessages:
+    case TransferCommand::StageC:
+    case TransferCommand::StageR:
+        // A text, or a block's registers, come through the window: held
+        // apart from what the controller keeps, nothing of them counts
+        // before the commit.
         text_.clear();
         phase_ = Phase::Idle;
         if (length_ > map_.transfer.capacityBytes) {
@@ -329,7 +344,10 @@ Exception ControllerImage::command(std::uint16_t cmd) {
             return Exception::None;
         }
         text_.assign(length_, '\0');
-        phase_ = cmd == 2 ? Phase::WritingProgram : Phase::WritingMessages;
+        phase_ = cmd == 2    ? Phase::WritingProgram
+                 : cmd == 4  ? Phase::WritingMessages
+                 : cmd == 10 ? Phase::StagingC
+                             : Phase::StagingR;
         transferProgram_ = programNumber_;
         status_ = TransferStatus::Ready;
         return Exception::None;
@@ -358,6 +376,20 @@ Exception ControllerImage::command(std::uint16_t cmd) {
         status_ = TransferStatus::Committed;
         return Exception::None;
     }
+    case TransferCommand::ClearC:
+    case TransferCommand::ClearR: {
+        phase_ = Phase::Idle;
+        text_.clear();
+        const engine::OpResult r =
+            cmd == 8 ? ctl_.clearCParameters() : ctl_.clearRParameters();
+        if (!r.ok()) {
+            status_ = TransferStatus::NotInF7;
+            return Exception::None;
+        }
+        ++commits_;
+        status_ = TransferStatus::Committed;
+        return Exception::None;
+    }
     }
     length_ = static_cast<std::uint32_t>(text_.size());
     crc_ = crc32(text_);
@@ -366,7 +398,63 @@ Exception ControllerImage::command(std::uint16_t cmd) {
     return Exception::None;
 }
 
+void ControllerImage::commitBlock() {
+    const BlockKind kind = phase_ == Phase::StagingC ? BlockKind::C : BlockKind::R;
+    const std::string bytes = std::move(text_);
+    phase_ = Phase::Idle;
+    text_.clear();
+    // What a client sends of the block (stagedRegisters): C all 117
+    // registers, R those of the writable R-parameters; two bytes each.
+    const std::size_t expected = stagedCount(map_, kind);
+    if (bytes.size() != length_ || crc32(bytes) != crc_ || bytes.size() != 2 * expected) {
+        status_ = TransferStatus::CrcMismatch;
+        return;
+    }
+    std::vector<std::uint16_t> regs(expected);
+    for (std::size_t i = 0; i < expected; ++i)
+        regs[i] = static_cast<std::uint16_t>((static_cast<unsigned char>(bytes[2 * i]) << 8) |
+                                             static_cast<unsigned char>(bytes[2 * i + 1]));
+    if (kind == BlockKind::C) {
+        const std::vector<std::int64_t> c = unpackC(map_, regs);
+        // Every value against table Е.1; a bit or byte where no constant lives
+        // stays 0. 7003 = the number of the first constant at fault.
+        if (packC(map_, c) != regs) {
+            status_ = TransferStatus::TextRefused;
+            errorLine_ = 0;
+            return;
+        }
+        for (int n = 1; n < static_cast<int>(c.size()); ++n)
+            if (!profile::checkCValue(n, c[static_cast<std::size_t>(n)]).empty()) {
+                status_ = TransferStatus::TextRefused;
+                errorLine_ = static_cast<std::uint16_t>(n);
+                return;
+            }
+        if (!ctl_.loadCParameters(c).ok()) { // values checked: only leaving F7 refuses
+            status_ = TransferStatus::NotInF7;
+            return;
+        }
+    } else {
+        if (engine::executing(ctl_.state())) {
+            status_ = TransferStatus::NotInF7;
+            return;
+        }
+        std::size_t at = 0;
+        for (const auto& [a, b] : map_.rWritableRuns())
+            for (int i = a; i <= b; ++i, at += 2) {
+                const std::int32_t v = joinSigned(regs[at], regs[at + 1]);
+                if (v != ctl_.r(i))
+                    (void)ctl_.setR(i, v); // a writable number, a 32-bit value, no program executing: accepted
+            }
+    }
+    ++commits_;
+    status_ = TransferStatus::Committed;
+}
+
 void ControllerImage::commit() {
+    if (phase_ == Phase::StagingC || phase_ == Phase::StagingR) {
+        commitBlock();
+        return;
+    }
     const bool messages = phase_ == Phase::WritingMessages;
     const std::string text = std::move(text_);
     const int number = transferProgram_;

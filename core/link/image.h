@@ -4,12 +4,15 @@
 // the in-process transport of the tests does the same without a port.
 //
 // The F7 rule: a write of C- or R-parameters, and the commands that change
-// memory (begin writing, delete), need the controller ready for the PC —
-// УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ» on the K923 (the owner says so with
-// setPcReady; without it, the mode F7 with no program active) — else
-// exception 06. The transfer state machine keeps one text at a time; a
-// written text is parsed and checked with the controller's own rules at
-// commit and stored all or nothing.
+// memory (begin writing, delete, clear, stage a block), need the controller
+// ready for the PC — УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ» on the K923 (the
+// owner says so with setPcReady; without it, the mode F7 with no program
+// active) — else exception 06 (and status 16 for a command). The transfer
+// state machine keeps one transfer at a time: a text (a program, the
+// messages) or a block (C, R) staged through the same window. A written
+// text is parsed and checked with the controller's own rules at commit and
+// stored all or nothing; a staged block is checked at commit and goes in
+// whole. Writes to the C and R registers themselves go in directly.
 #pragma once
 
 #include "link/register_map.h"
@@ -55,7 +58,12 @@ enum class TransferCommand : std::uint16_t {
     Commit = 5,
     Abort = 6,
     DeleteProgram = 7,
+    ClearC = 8,      // manual 2.6.8 «ОЧИСТКА С-ПАРАМ»
+    ClearR = 9,      // «ОЧИСТКА Р-ПАРАМ»
+    StageC = 10,     // begin writing the C block through the window, taken whole at commit
+    StageR = 11,     // the same for the writable R-parameters
 };
+inline constexpr std::uint16_t kLastCommand = 11;
 
 class ControllerImage {
 public:
@@ -84,9 +92,11 @@ private:
     Exception writeTransfer(int first, std::span<const std::uint16_t> values);
     Exception command(std::uint16_t cmd);
     void commit();
+    void commitBlock();
     void checkStillReady();
+    bool writing() const;
 
-    enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages };
+    enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages, StagingC, StagingR };
 
     engine::Controller& ctl_;
     const RegisterMap& map_;

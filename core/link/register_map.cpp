@@ -4,6 +4,7 @@
 #include "resources/embedded.h"
 #include "util/json.h"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 
@@ -54,6 +55,70 @@ const Block* RegisterMap::blockOf(int reg) const {
             return &b;
     return nullptr;
 }
+
+bool RegisterMap::rWritable(int number) const {
+    return number >= 0 && number <= rWritableLast &&
+           std::find(rReadOnly.begin(), rReadOnly.end(), number) == rReadOnly.end();
+}
+
+std::vector<std::pair<int, int>> RegisterMap::rWritableRuns() const {
+    std::vector<std::pair<int, int>> runs;
+    for (int n = 0; n <= rWritableLast; ++n) {
+        if (!rWritable(n))
+            continue;
+        if (!runs.empty() && runs.back().second == n - 1)
+            runs.back().second = n;
+        else
+            runs.emplace_back(n, n);
+    }
+    return runs;
+}
+
+std::string RegisterMap::rWritableText() const {
+    std::string t;
+    for (const auto& [a, b] : rWritableRuns()) {
+        if (!t.empty())
+            t.append(", ");
+        t.append("R").append(std::to_string(a));
+        if (b != a)
+            t.append("..R").append(std::to_string(b));
+    }
+    return t;
+}
+
+std::vector<std::uint16_t> stagedRegisters(const RegisterMap& map, BlockKind kind,
+                                           std::span<const std::uint16_t> whole) {
+    if (kind == BlockKind::C)
+        return {whole.begin(), whole.end()};
+    std::vector<std::uint16_t> out;
+    for (int n = 0; n < map.rCount && 2 * static_cast<std::size_t>(n) + 1 < whole.size(); ++n)
+        if (map.rWritable(n)) {
+            out.push_back(whole[2 * static_cast<std::size_t>(n)]);
+            out.push_back(whole[2 * static_cast<std::size_t>(n) + 1]);
+        }
+    return out;
+}
+
+std::size_t stagedCount(const RegisterMap& map, BlockKind kind) {
+    if (kind == BlockKind::C)
+        return static_cast<std::size_t>(map.block(BlockKind::C).count());
+    std::size_t n = 0;
+    for (const auto& [a, b] : map.rWritableRuns())
+        n += 2 * static_cast<std::size_t>(b - a + 1);
+    return n;
+}
+
+std::string registerBytes(std::span<const std::uint16_t> regs) {
+    std::string bytes;
+    bytes.reserve(regs.size() * 2);
+    for (std::uint16_t r : regs) {
+        bytes.push_back(static_cast<char>(r >> 8));
+        bytes.push_back(static_cast<char>(r & 0xFF));
+    }
+    return bytes;
+}
+
+std::uint32_t registersCrc(std::span<const std::uint16_t> regs) { return crc32(registerBytes(regs)); }
 
 const Block& RegisterMap::block(BlockKind k) const {
     for (const Block& b : blocks)
@@ -143,6 +208,17 @@ RegisterMap readMap(std::string_view text, std::string_view source) {
     m.rCount = rd.integer(r, "count", "r", 1, 300);
     rd.integer(r, "registers_each", "r", 2, 2);
     m.rWritableLast = rd.integer(r, "writable_last", "r", -1, m.rCount - 1);
+    if (r.contains("read_only")) {
+        const Json& ro = r["read_only"];
+        if (!ro.is_array())
+            rd.fail("r.read_only", "an array of R numbers expected");
+        for (std::size_t i = 0; i < ro.size(); ++i) {
+            if (!ro[i].is_number_integer() || ro[i].get<std::int64_t>() < 0 ||
+                ro[i].get<std::int64_t>() > m.rWritableLast)
+                rd.fail("r.read_only[" + std::to_string(i) + "]", "an R number 0.." + std::to_string(m.rWritableLast) + " expected");
+            m.rReadOnly.push_back(ro[i].get<int>());
+        }
+    }
     const Block& rb = m.block(BlockKind::R);
     if (rb.first != m.rFirst || rb.count() != 2 * m.rCount)
         rd.fail("r", "does not match the r block");

@@ -68,7 +68,10 @@ struct RegisterMap {
     int maxRead = 125, maxWrite = 123;
     std::vector<Block> blocks;
     std::vector<CPlacement> c; // in number order; reserved parameters without an address absent
+    // R0..R<rWritableLast> are written in F7, but those of rReadOnly (the
+    // positioner's own: R158, R222, R223); the rest is read only.
     int rFirst = 0, rCount = 0, rWritableLast = 0;
+    std::vector<int> rReadOnly;
     LiveLayout live;
     TransferLayout transfer;
 
@@ -76,7 +79,25 @@ struct RegisterMap {
     const Block* blockOf(int reg) const;
     const Block& block(BlockKind k) const; // the first block of that kind
     int rRegister(int number) const { return rFirst + 2 * number; }
+    bool rWritable(int number) const;
+    // The writable R-parameters as runs of consecutive numbers (first, last).
+    std::vector<std::pair<int, int>> rWritableRuns() const;
+    // "R0..R157, R159..R221, R224..R231"
+    std::string rWritableText() const;
 };
+
+// A block staged and committed whole (transfer commands 10 and 11): the
+// registers a client sends — the whole C block, the registers of the
+// writable R-parameters — in address order, taken from the whole block's
+// registers (C: 117 values from its first register; R: 2 per R-parameter
+// from R0). They go through the transfer window as bytes, each register
+// high byte first (registerBytes); length and CRC-32 of those bytes are
+// given before the block is begun, as for a text.
+std::vector<std::uint16_t> stagedRegisters(const RegisterMap& map, BlockKind kind,
+                                           std::span<const std::uint16_t> wholeBlock);
+std::size_t stagedCount(const RegisterMap& map, BlockKind kind);
+std::string registerBytes(std::span<const std::uint16_t> regs);
+std::uint32_t registersCrc(std::span<const std::uint16_t> regs);
 
 // Reads a map file; throws MapError naming `source` and the key at fault.
 RegisterMap readMap(std::string_view json, std::string_view source);

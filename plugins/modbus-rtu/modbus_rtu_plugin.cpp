@@ -1,11 +1,8 @@
 #include "modbus_rtu_plugin.h"
 
-#include <QEventLoop>
-#include <QModbusRtuSerialClient>
 #include <QModbusRtuSerialServer>
 #include <QSerialPort>
 #include <QSerialPortInfo>
-#include <QTimer>
 #include <QVariant>
 
 using namespace k528;
@@ -17,154 +14,89 @@ QSerialPort::Parity parityOf(char p) {
     return p == 'E' ? QSerialPort::EvenParity : p == 'O' ? QSerialPort::OddParity : QSerialPort::NoParity;
 }
 
-template <class Device> void configure(Device& d, const LineSettings& s) {
-    d.setConnectionParameter(QModbusDevice::SerialPortNameParameter, s.port);
-    d.setConnectionParameter(QModbusDevice::SerialBaudRateParameter, s.baud);
-    d.setConnectionParameter(QModbusDevice::SerialParityParameter, parityOf(s.parity));
-    d.setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
-    d.setConnectionParameter(QModbusDevice::SerialStopBitsParameter,
-                             s.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
-}
-
-quint16 be16(const QByteArray& d, int at) {
-    return static_cast<quint16>((static_cast<quint8>(d.at(at)) << 8) | static_cast<quint8>(d.at(at + 1)));
-}
-
-class Client final : public ClientTransport {
+// The serial port as core's BytePort: blocking waits (the client runs on a
+// worker thread or in a command), so an answer is read as soon as it comes.
+class SerialPort final : public link::BytePort {
 public:
-    Client(const LineSettings& s) : s_(s) {
-        configure(c_, s);
-        c_.setTimeout(s.timeoutMs);
-        c_.setNumberOfRetries(0); // the Link retries and counts
-    }
+    explicit SerialPort(const LineSettings& s) : s_(s) {}
     bool open(QString& error) {
-        if (!c_.connectDevice()) {
-            error = c_.errorString();
+        p_.setPortName(s_.port);
+        if (!p_.open(QIODevice::ReadWrite)) {
+            error = p_.errorString();
             return false;
         }
-        if (c_.state() != QModbusDevice::ConnectedState) {
-            QEventLoop loop;
-            QObject::connect(&c_, &QModbusDevice::stateChanged, &loop, [&](QModbusDevice::State st) {
-                if (st == QModbusDevice::ConnectedState || st == QModbusDevice::UnconnectedState)
-                    loop.quit();
-            });
-            QTimer::singleShot(2000, &loop, &QEventLoop::quit);
-            loop.exec();
+        const bool ok = p_.setBaudRate(s_.baud) && p_.setDataBits(QSerialPort::Data8) &&
+                        p_.setParity(parityOf(s_.parity)) &&
+                        p_.setStopBits(s_.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop) &&
+                        p_.setFlowControl(QSerialPort::NoFlowControl);
+        if (!ok) {
+            error = p_.errorString();
+            p_.close();
+            return false;
         }
-        if (c_.state() != QModbusDevice::ConnectedState) {
-            error = c_.errorString().isEmpty() ? QStringLiteral("cannot open ") + s_.port : c_.errorString();
+        p_.clear();
+        return true;
+    }
+    bool write(std::span<const std::uint8_t> bytes, std::string& error) override {
+        const qint64 n = p_.write(reinterpret_cast<const char*>(bytes.data()), static_cast<qint64>(bytes.size()));
+        if (n != static_cast<qint64>(bytes.size()) || (p_.bytesToWrite() > 0 && !p_.waitForBytesWritten(1000)))
+            return fail(error);
+        return true;
+    }
+    bool read(link::Bytes& into, int ms, std::string& error) override {
+        if (p_.bytesAvailable() == 0 && !p_.waitForReadyRead(ms) && p_.error() != QSerialPort::TimeoutError &&
+            p_.error() != QSerialPort::NoError)
+            return fail(error);
+        p_.clearError();
+        const QByteArray got = p_.readAll();
+        into.insert(into.end(), got.begin(), got.end());
+        return true;
+    }
+    bool isOpen() const override { return p_.isOpen(); }
+    bool reopen(std::string& error) override {
+        p_.close();
+        QString e;
+        if (!open(e)) {
+            error = e.toStdString();
             return false;
         }
         return true;
     }
-    ~Client() override { c_.disconnectDevice(); }
-
-    link::Reply read(int first, int count, std::vector<std::uint16_t>& out) override {
-        count_(link::readFrameBytes(count));
-        QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, first, static_cast<quint16>(count));
-        return finish(c_.sendReadRequest(unit, s_.address), &out);
-    }
-    link::Reply write(int first, std::span<const std::uint16_t> values) override {
-        count_(link::writeFrameBytes(static_cast<int>(values.size())));
-        QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, first,
-                             QList<quint16>(values.begin(), values.end()));
-        QModbusReply* r = c_.sendWriteRequest(unit, s_.address);
-        std::vector<std::uint16_t> none;
-        link::Reply rep = finish(r, nullptr, [&](const QModbusResponse& raw) -> QString {
-            // Qt 6.4 does not check FC 16's echo: the address and count must be ours.
-            const QByteArray d = raw.data();
-            if (raw.functionCode() == QModbusPdu::WriteMultipleRegisters &&
-                (d.size() < 4 || be16(d, 0) != first || be16(d, 2) != values.size()))
-                return QStringLiteral("FC 16 echo does not match the request");
-            if (raw.functionCode() == QModbusPdu::WriteSingleRegister &&
-                (d.size() < 4 || be16(d, 0) != first || be16(d, 2) != values[0]))
-                return QStringLiteral("FC 06 echo does not match the request");
-            return {};
-        });
-        return rep;
-    }
-    link::Reply writeRead(int wf, std::span<const std::uint16_t> values, int rf, int rc,
-                          std::vector<std::uint16_t>& out) override {
-        count_(link::writeReadFrameBytes(static_cast<int>(values.size()), rc));
-        QModbusDataUnit rd(QModbusDataUnit::HoldingRegisters, rf, static_cast<quint16>(rc));
-        QModbusDataUnit wr(QModbusDataUnit::HoldingRegisters, wf, QList<quint16>(values.begin(), values.end()));
-        return finish(c_.sendReadWriteRequest(rd, wr, s_.address), &out);
-    }
-    link::Reply echo(std::uint16_t value) override {
-        count_(link::echoFrameBytes());
-        QModbusRequest req(QModbusRequest::Diagnostics, quint16(0x0000), quint16(value));
-        QModbusReply* r = c_.sendRawRequest(req, s_.address);
-        if (!r)
-            return link::Reply::lost(c_.errorString().toStdString());
-        if (!r->isFinished()) {
-            QEventLoop loop;
-            QObject::connect(r, &QModbusReply::finished, &loop, &QEventLoop::quit);
-            loop.exec();
-        }
-        // Qt 6.4 marks a good FC 8 answer "invalid response": judge the raw answer.
-        const QModbusResponse raw = r->rawResult();
-        const QModbusDevice::Error err = r->error();
-        r->deleteLater();
-        if (raw.functionCode() == QModbusPdu::Diagnostics && raw.data().size() == 4)
-            return be16(raw.data(), 0) == 0 && be16(raw.data(), 2) == value ? link::Reply::good()
-                                                                           : link::Reply::bad("the echo differs");
-        if (raw.isException())
-            return link::Reply::exceptionCode(static_cast<int>(raw.exceptionCode()));
-        if (err == QModbusDevice::TimeoutError)
-            return link::Reply::lost("timeout");
-        return link::Reply::lost("no echo");
-    }
-    WireCount wire() const override { return wire_; }
 
 private:
-    void count_(link::FrameBytes f) {
-        wire_.bytes += f.request + f.reply;
-        wire_.frames += 2;
-        ++wire_.transactions;
-    }
-    template <class Check = std::nullptr_t>
-    link::Reply finish(QModbusReply* r, std::vector<std::uint16_t>* out, Check check = nullptr) {
-        if (!r)
-            return link::Reply::lost(c_.errorString().toStdString());
-        if (!r->isFinished()) {
-            QEventLoop loop;
-            QObject::connect(r, &QModbusReply::finished, &loop, &QEventLoop::quit);
-            loop.exec();
-        }
-        link::Reply rep;
-        switch (r->error()) {
-        case QModbusDevice::NoError:
-            if (out) {
-                const QList<quint16> values = r->result().values(); // a copy: one list for begin and end
-                out->assign(values.begin(), values.end());
-            }
-            if constexpr (!std::is_same_v<Check, std::nullptr_t>) {
-                const QString bad = check(r->rawResult());
-                if (!bad.isEmpty())
-                    rep = link::Reply::bad(bad.toStdString());
-            }
-            break;
-        case QModbusDevice::ProtocolError:
-            rep = link::Reply::exceptionCode(static_cast<int>(r->rawResult().exceptionCode()));
-            break;
-        case QModbusDevice::TimeoutError:
-            rep = link::Reply::lost("timeout");
-            break;
-        default:
-            rep = link::Reply::lost(r->errorString().toStdString());
-            break;
-        }
-        r->deleteLater();
-        return rep;
+    bool fail(std::string& error) {
+        error = p_.errorString().toStdString();
+        p_.close(); // the next exchange opens it again
+        return false;
     }
     LineSettings s_;
-    QModbusRtuSerialClient c_;
-    WireCount wire_;
+    QSerialPort p_;
+};
+
+link::RtuSettings rtuSettings(const LineSettings& s) {
+    link::RtuSettings r;
+    r.station = s.address;
+    r.baud = s.baud;
+    r.bitsPerChar = 1 + 8 + (s.parity == 'N' ? 0 : 1) + s.stopBits;
+    r.timeoutMs = s.timeoutMs;
+    return r;
+}
+
+// The port first (a base constructed before the master that uses it).
+struct PortHolder {
+    explicit PortHolder(const LineSettings& s) : port(s) {}
+    SerialPort port;
+};
+
+class Client final : private PortHolder, public link::RtuMaster {
+public:
+    explicit Client(const LineSettings& s) : PortHolder(s), RtuMaster(port, rtuSettings(s)) {}
+    bool open(QString& error) { return port.open(error); }
 };
 
 // QModbusRtuSerialServer with the map behind it: FC 3, 6, 16 and 23 go to
-// the handler (its exceptions 02/03/06 as Qt's exception responses); the
-// rest (FC 8 echo, unknown functions) is Qt's.
+// the handler (core's modbus::serveRegisters); FC 8 (echo, counters) and 17
+// (server id) are Qt's, which keeps the bus counters.
 class MapServer final : public QModbusRtuSerialServer {
 public:
     explicit MapServer(RegisterHandler& h) : h_(h) {}
@@ -173,65 +105,18 @@ public:
 protected:
     QModbusResponse processRequest(const QModbusPdu& request) override {
         ++requests;
-        const QByteArray d = request.data();
         const auto fc = request.functionCode();
-        auto fail = [&](int code) {
-            return QModbusExceptionResponse(fc, static_cast<QModbusExceptionResponse::ExceptionCode>(code));
-        };
-        auto registers = [&](const std::vector<std::uint16_t>& v) {
-            QByteArray out;
-            out.append(static_cast<char>(v.size() * 2));
-            for (std::uint16_t w : v) {
-                out.append(static_cast<char>(w >> 8));
-                out.append(static_cast<char>(w & 0xFF));
-            }
-            return QModbusResponse(fc, out);
-        };
-        auto values = [&](int at, int n) {
-            std::vector<std::uint16_t> v;
-            for (int i = 0; i < n; ++i)
-                v.push_back(be16(d, at + 2 * i));
-            return v;
-        };
-        switch (fc) {
-        case QModbusPdu::ReadHoldingRegisters: {
-            if (d.size() != 4)
-                return fail(3);
-            std::vector<std::uint16_t> v;
-            if (const int e = h_.read(be16(d, 0), be16(d, 2), v))
-                return fail(e);
-            return registers(v);
-        }
-        case QModbusPdu::WriteSingleRegister: {
-            if (d.size() != 4)
-                return fail(3);
-            const std::uint16_t v[] = {be16(d, 2)};
-            if (const int e = h_.write(be16(d, 0), v))
-                return fail(e);
-            return QModbusResponse(fc, d);
-        }
-        case QModbusPdu::WriteMultipleRegisters: {
-            if (d.size() < 5 || d.size() != 5 + static_cast<quint8>(d.at(4)) || static_cast<quint8>(d.at(4)) != 2 * be16(d, 2))
-                return fail(3);
-            const std::vector<std::uint16_t> v = values(5, be16(d, 2));
-            if (const int e = h_.write(be16(d, 0), v))
-                return fail(e);
-            return QModbusResponse(fc, d.left(4));
-        }
-        case QModbusPdu::ReadWriteMultipleRegisters: {
-            if (d.size() < 9 || d.size() != 9 + static_cast<quint8>(d.at(8)) || static_cast<quint8>(d.at(8)) != 2 * be16(d, 6))
-                return fail(3);
-            const std::vector<std::uint16_t> w = values(9, be16(d, 6));
-            if (const int e = h_.write(be16(d, 4), w)) // the write first (Modbus spec)
-                return fail(e);
-            std::vector<std::uint16_t> v;
-            if (const int e = h_.read(be16(d, 0), be16(d, 2), v))
-                return fail(e);
-            return registers(v);
-        }
-        default:
+        if (fc != QModbusPdu::ReadHoldingRegisters && fc != QModbusPdu::WriteSingleRegister &&
+            fc != QModbusPdu::WriteMultipleRegisters && fc != QModbusPdu::ReadWriteMultipleRegisters)
             return QModbusRtuSerialServer::processRequest(request);
-        }
+        link::Bytes pdu{static_cast<std::uint8_t>(fc)};
+        const QByteArray d = request.data();
+        pdu.insert(pdu.end(), d.begin(), d.end());
+        const link::Bytes answer = link::modbus::serveRegisters(pdu, h_);
+        if (answer[0] & 0x80)
+            return QModbusExceptionResponse(fc, static_cast<QModbusExceptionResponse::ExceptionCode>(answer[1]));
+        return QModbusResponse(fc, QByteArray(reinterpret_cast<const char*>(answer.data()) + 1,
+                                              static_cast<qsizetype>(answer.size()) - 1));
     }
 
 private:
@@ -263,12 +148,20 @@ std::unique_ptr<ClientTransport> ModbusRtuPlugin::openClient(const LineSettings&
 }
 
 std::unique_ptr<Server> ModbusRtuPlugin::openServer(const LineSettings& s, RegisterHandler& handler,
-                                                    QString& error) {
+                                                    const QString& identity, QString& error) {
     auto box = std::make_unique<ServerBox>(handler);
-    configure(box->s, s);
-    box->s.setServerAddress(s.address);
-    if (!box->s.connectDevice()) {
-        error = box->s.errorString();
+    QModbusRtuSerialServer& srv = box->s;
+    srv.setConnectionParameter(QModbusDevice::SerialPortNameParameter, s.port);
+    srv.setConnectionParameter(QModbusDevice::SerialBaudRateParameter, s.baud);
+    srv.setConnectionParameter(QModbusDevice::SerialParityParameter, parityOf(s.parity));
+    srv.setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
+    srv.setConnectionParameter(QModbusDevice::SerialStopBitsParameter,
+                               s.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
+    srv.setServerAddress(s.address);
+    srv.setValue(QModbusServer::ServerIdentifier, 0x28); // the K528's number, for a scan to tell it
+    srv.setValue(QModbusServer::AdditionalData, identity.toUtf8());
+    if (!srv.connectDevice()) {
+        error = srv.errorString();
         return nullptr;
     }
     return box;

@@ -1,6 +1,8 @@
-// The RS485 / Modbus RTU link (plugins/README.md): Qt SerialBus does the
-// framing (QModbusRtuSerialClient, QModbusRtuSerialServer); this file only
-// maps requests to the map's registers and checks replies.
+// The RS485 / Modbus RTU link (plugins/README.md): the client is core's
+// RtuMaster (link/modbus.h) over a QSerialPort — every frame logged with its
+// CRC, damaged frames counted —; the server is Qt SerialBus's
+// QModbusRtuSerialServer (its bus counters answer FC 8) with the map's
+// registers behind it.
 #pragma once
 
 #include "../link_plugin.h"
@@ -17,5 +19,5 @@ public:
                                                                   QString& error) override;
     std::unique_ptr<k528::linkplugin::Server> openServer(const k528::linkplugin::LineSettings& s,
                                                          k528::linkplugin::RegisterHandler& handler,
-                                                         QString& error) override;
+                                                         const QString& identity, QString& error) override;
 };

@@ -8,6 +8,7 @@
 #include "engine/ideal_machine.h"
 #include "link/client.h"
 #include "link/image.h"
+#include "link/monitor.h"
 #include "profile/builtin.h"
 #include "program/formatter.h"
 #include "program/parser.h"
@@ -242,7 +243,19 @@ private slots:
         const std::uint16_t neg[] = {0xFFFF, 0xFFFF};
         QVERIFY(im.write(5002, neg) == Exception::None);
         QCOMPARE(b.ctl->r(1), -1);
-        QVERIFY(im.write(5300, one) == Exception::IllegalAddress); // R150 is not the PC's
+        // R0..R231 are the PC's but R158, R222, R223 (the positioner's own); R232.. read only.
+        QVERIFY(im.write(5300, one) == Exception::None); // R150
+        QCOMPARE(b.ctl->r(150), 7);
+        const std::uint16_t r221[] = {9, 0};
+        QVERIFY(im.write(5442, r221) == Exception::None);
+        QCOMPARE(b.ctl->r(221), 9);
+        QVERIFY(im.write(5316, one) == Exception::IllegalAddress); // R158
+        QVERIFY(im.write(5444, one) == Exception::IllegalAddress); // R222
+        QVERIFY(im.write(5446, one) == Exception::IllegalAddress); // R223
+        QVERIFY(im.write(5464, one) == Exception::IllegalAddress); // R232
+        const std::uint16_t across[] = {1, 0, 2, 0, 3, 0}; // R157..R159: R158 inside, nothing written
+        QVERIFY(im.write(5314, across) == Exception::IllegalAddress);
+        QCOMPARE(b.ctl->r(157), 0);
         // A constant out of range: 03 and nothing of the request written.
         QVERIFY(im.read(4100, 117, out) == Exception::None);
         const std::vector<std::uint16_t> before = out;
@@ -260,7 +273,7 @@ private slots:
         QVERIFY(im.write(4110, ks) == Exception::None);
         QCOMPARE(b.ctl->c()[26], b.prof.c[26] + 1);
         // Command values and commit without a text: 03.
-        const std::uint16_t bad[] = {9};
+        const std::uint16_t bad[] = {12};
         QVERIFY(im.write(7000, bad) == Exception::IllegalValue);
         const std::uint16_t commit[] = {5};
         QVERIFY(im.write(7000, commit) == Exception::IllegalValue);
@@ -317,7 +330,7 @@ private slots:
             QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], a.ctl->c()[static_cast<std::size_t>(n)]);
         for (const auto& [n, text] : pulled.programs)
             QCOMPARE(b.programText(n), text);
-        QCOMPARE(b.image->commits(), static_cast<int>(file.programs.size()) + (file.messages.empty() ? 0 : 1));
+        QCOMPARE(b.image->commits(), 2 + static_cast<int>(file.programs.size()) + (file.messages.empty() ? 0 : 1)); // C, R, texts
     }
 
     void badConstantIsNotSent() {
@@ -420,6 +433,310 @@ private slots:
         Link link(t);
         QVERIFY(!writeText(link, false, n, text));
         QCOMPARE(b.programText(n), text);
+    }
+    void stagedBlocksGoInWhole() {
+        Bench b;
+        b.f7();
+        ControllerImage& im = *b.image;
+        const RegisterMap& map = k528Map();
+        std::vector<std::uint16_t> whole(600, 0);
+        auto setR = [&](int n, std::int32_t v) {
+            whole[2 * static_cast<std::size_t>(n)] = lowWord(v);
+            whole[2 * static_cast<std::size_t>(n) + 1] = highWord(v);
+        };
+        setR(5, 55);
+        setR(200, 2000);
+        setR(231, -3);
+        const std::vector<std::uint16_t> sent = stagedRegisters(map, BlockKind::R, whole);
+        QCOMPARE(sent.size(), std::size_t{2 * (232 - 3)});
+        QCOMPARE(sent.size(), stagedCount(map, BlockKind::R));
+        const std::string bytes = registerBytes(sent);
+        auto begin = [&](std::uint16_t cmd, const std::string& data, std::uint32_t crc) {
+            const auto len = static_cast<std::uint32_t>(data.size());
+            const std::uint16_t h[] = {lowWord(len), highWord(len), lowWord(crc), highWord(crc)};
+            QVERIFY(im.write(7004, h) == Exception::None);
+            const std::uint16_t c[] = {cmd};
+            QVERIFY(im.write(7000, c) == Exception::None);
+        };
+        auto windows = [&](const std::string& data, std::size_t upTo) {
+            const std::vector<std::uint16_t> regs = textRegisters(data);
+            for (std::uint32_t off = 0; off < std::min(upTo, data.size()); off += 240) {
+                std::vector<std::uint16_t> f = {lowWord(off), highWord(off)};
+                const std::size_t n = std::min<std::size_t>(120, regs.size() - off / 2);
+                f.insert(f.end(), regs.begin() + off / 2, regs.begin() + off / 2 + n);
+                QVERIFY(im.write(7008, f) == Exception::None);
+            }
+        };
+        auto status = [&] {
+            std::vector<std::uint16_t> out;
+            im.read(7002, 2, out);
+            return out[0];
+        };
+        const std::uint16_t commit[] = {5}, abort[] = {6};
+        // Held apart until the commit; an abort leaves everything as it was.
+        begin(11, bytes, crc32(bytes));
+        QCOMPARE(status(), std::uint16_t{1});
+        windows(bytes, bytes.size());
+        QCOMPARE(b.ctl->r(5), 0);
+        QVERIFY(im.write(7000, abort) == Exception::None);
+        QCOMPARE(b.ctl->r(5), 0);
+        // A block cut short, or not the CRC given: 19, nothing stored.
+        begin(11, bytes, crc32(bytes));
+        windows(bytes, 480);
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{19});
+        QCOMPARE(b.ctl->r(5), 0);
+        begin(11, bytes, crc32(bytes) ^ 1u);
+        windows(bytes, bytes.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{19});
+        QCOMPARE(b.ctl->r(200), 0);
+        // Of another length than the map's writable R: 19.
+        const std::string shorter = bytes.substr(0, bytes.size() - 4);
+        begin(11, shorter, crc32(shorter));
+        windows(shorter, shorter.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{19});
+        // Leaving F7 drops the block (16).
+        begin(11, bytes, crc32(bytes));
+        windows(bytes, bytes.size());
+        QVERIFY(b.ctl->selectMode(engine::Mode::Manual).ok());
+        QCOMPARE(status(), std::uint16_t{16});
+        QVERIFY(im.write(7000, commit) == Exception::NotReady);
+        QCOMPARE(b.ctl->r(5), 0);
+        b.f7();
+        // A block begun and left: a direct write of a register still goes in at once.
+        begin(11, bytes, crc32(bytes));
+        const std::uint16_t r9[] = {99, 0};
+        QVERIFY(im.write(5018, r9) == Exception::None);
+        QCOMPARE(b.ctl->r(9), 99);
+        // Whole: every writable R at once, the positioner's own untouched.
+        const std::int32_t nesting = b.ctl->r(158);
+        begin(11, bytes, crc32(bytes));
+        windows(bytes, bytes.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{2});
+        QCOMPARE(b.ctl->r(5), 55);
+        QCOMPARE(b.ctl->r(9), 0);
+        QCOMPARE(b.ctl->r(200), 2000);
+        QCOMPARE(b.ctl->r(231), -3);
+        QCOMPARE(b.ctl->r(158), nesting);
+        // The C block the same way; a value outside table Е.1 refuses it whole
+        // (18, 7003 = the constant's number).
+        std::vector<std::uint16_t> c = packC(map, b.ctl->c());
+        c[10] = static_cast<std::uint16_t>(c[10] + 1); // C26
+        std::vector<std::uint16_t> wrong = c;
+        wrong[1] = 9; // C17 N ДОС: 1..4
+        const std::string bad = registerBytes(wrong);
+        begin(10, bad, crc32(bad));
+        windows(bad, bad.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        std::vector<std::uint16_t> st;
+        im.read(7002, 2, st);
+        QCOMPARE(st[0], std::uint16_t{18});
+        QCOMPARE(st[1], std::uint16_t{17});
+        QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
+        const std::string good = registerBytes(c);
+        begin(10, good, crc32(good));
+        windows(good, good.size());
+        QVERIFY(im.write(7000, commit) == Exception::None);
+        QCOMPARE(status(), std::uint16_t{2});
+        QCOMPARE(b.ctl->c()[26], b.prof.c[26] + 1);
+    }
+
+    void pushCarriesEveryWritableR() {
+        Bench b;
+        b.f7();
+        ImageTransport t(*b.image);
+        Link link(t);
+        profile::MachineProfile file = b.prof;
+        for (int n = 0; n <= 231; ++n)
+            file.r[n] = 1000 + n;
+        file.r[240] = 7; // read only: not sent
+        const std::int32_t nesting = b.ctl->r(158), before222 = b.ctl->r(222);
+        PushReport rep;
+        const LinkError e = push(link, file, rep);
+        QVERIFY2(!e, e.message.c_str());
+        for (int n = 0; n <= 231; ++n) {
+            if (n == 158 || n == 222 || n == 223)
+                continue;
+            QCOMPARE(b.ctl->r(n), 1000 + n);
+        }
+        QCOMPARE(b.ctl->r(158), nesting);
+        QCOMPARE(b.ctl->r(222), before222);
+        QCOMPARE(rep.parts[1].name, std::string("R-parameters (R0..R157, R159..R221, R224..R231)"));
+        QVERIFY(rep.summary().rfind("new: C-parameters, R-parameters", 0) == 0);
+        // And the pull gives them back as the file's presets.
+        PullResult pulled;
+        QVERIFY(!pull(link, pulled));
+        const profile::MachineProfile back = pulledProfile(pulled, "m", "t");
+        QCOMPARE(back.r.at(231), std::int64_t{1231});
+        QVERIFY(!back.r.count(158) && !back.r.count(240));
+    }
+
+    void clearOnlyOnTheScreenOfThePc() {
+        Bench b;
+        ImageTransport t(*b.image);
+        Link link(t);
+        LinkError e = clearArea(link, BlockKind::C);
+        QCOMPARE(e.kind, LinkError::Kind::NotReady);
+        QVERIFY2(e.message.find("not in F7 «РАБОТА С ПЭВМ» (mode F") != std::string::npos, e.message.c_str());
+        QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
+        // In F7 but the K923 not on «РАБОТА С ПЭВМ»: refused, naming that screen.
+        b.f7();
+        bool onScreen = false;
+        b.image->setPcReady([&] { return onScreen; });
+        e = clearArea(link, BlockKind::R);
+        QCOMPARE(e.kind, LinkError::Kind::NotReady);
+        QVERIFY2(e.message.find("in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»") != std::string::npos,
+                 e.message.c_str());
+        // The command itself outside the screen: exception 06 and status 16.
+        const std::uint16_t clearC[] = {8};
+        QVERIFY(b.image->write(7000, clearC) == Exception::NotReady);
+        QCOMPARE(b.image->status(), TransferStatus::NotInF7);
+        onScreen = true;
+        QVERIFY(b.ctl->setR(7, 77).ok());
+        e = clearArea(link, BlockKind::R);
+        QVERIFY2(!e, e.message.c_str());
+        QCOMPARE(b.ctl->r(7), 0);
+        e = clearArea(link, BlockKind::C);
+        QVERIFY2(!e, e.message.c_str());
+        for (int n = 1; n <= 152; ++n)
+            QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], std::int64_t{0});
+    }
+
+    void aBrokenPushSaysWhatIsNew() {
+        // The line breaks after every number of exchanges a push takes: C, R
+        // and each program are afterwards wholly old or wholly new, and the
+        // report says which (in doubt only between a commit and its answer).
+        const Bench probe;
+        profile::MachineProfile file = probe.prof;
+        file.c[26] += 1;
+        for (int n = 0; n <= 231; ++n)
+            file.r[n] = 500 + n;
+        const int p = probe.ctl->programs().numbers().front();
+        std::string text = header(p) + " (new)\n";
+        for (int i = 1; i <= 150; ++i)
+            text += frameLine(i);
+        file.programs = {{p, text}, {60, header(60) + "\n" + frameLine(1)}};
+        file.messages.clear();
+        int inDoubt = 0, stopped = 0;
+        for (int budget = 1; budget < 200; ++budget) {
+            Bench b;
+            b.f7();
+            const std::string oldProgram = b.programText(p);
+            ImageTransport inner(*b.image);
+            BreakingTransport broken(inner, budget);
+            Link link(broken);
+            PushReport rep;
+            const LinkError e = push(link, file, rep);
+            const bool cNew = b.ctl->c()[26] == file.c[26];
+            QVERIFY(cNew || b.ctl->c()[26] == probe.prof.c[26]);
+            int rNew = 0;
+            for (int n = 0; n <= 231; ++n)
+                if (k528Map().rWritable(n) && b.ctl->r(n) == 500 + n)
+                    ++rNew;
+            QVERIFY2(rNew == 0 || rNew == 229, std::to_string(rNew).c_str()); // never a part of the block
+            const bool pNew = b.programText(p) != oldProgram;
+            const bool p60 = b.ctl->programs().contains(60);
+            const bool now[] = {cNew, rNew == 229, pNew, p60};
+            QCOMPARE(rep.parts.size(), std::size_t{4}); // C, R, program 60, program p (no messages)
+            for (std::size_t i = 0; i < rep.parts.size(); ++i) {
+                const bool isNew = now[i < 2 ? i : (rep.parts[i].name == "program 60" ? 3 : 2)];
+                switch (rep.parts[i].state) {
+                case PushReport::State::New:
+                    QVERIFY2(isNew, (rep.parts[i].name + " said new: " + rep.summary()).c_str());
+                    break;
+                case PushReport::State::AsItWas:
+                    QVERIFY2(!isNew, (rep.parts[i].name + " said as it was: " + rep.summary()).c_str());
+                    break;
+                case PushReport::State::InDoubt:
+                    ++inDoubt;
+                    break;
+                }
+            }
+            if (!e)
+                break;
+            ++stopped;
+            QCOMPARE(e.kind, LinkError::Kind::NoAnswer);
+        }
+        QVERIFY(stopped > 20);
+        QVERIFY(inDoubt > 0);
+    }
+
+    void aProgramFileIsCheckedAgainstTheController() {
+        Bench b;
+        b.f7();
+        ImageTransport t(*b.image);
+        Link link(t);
+        // L50 calls L51 (both in the file) and the controller's own program.
+        const int own = b.ctl->programs().numbers().front();
+        const std::string text = "%L50 (caller)\nN1 G1 X10 FX100\nN2 L51\nN3 L" + std::to_string(own) +
+                                 "\n%L51\nN1 G1 X5 FX100\nN2 M17\n%MESSAGES\n#1=ПРОВЕРКА\n";
+        PushPlan plan;
+        LinkError e = planProgramFile(link, text, "p.k528", plan);
+        QVERIFY2(!e, e.message.c_str());
+        QVERIFY(!plan.hasC && !plan.hasR && plan.hasMessages);
+        PushReport rep;
+        e = push(link, plan, rep);
+        QVERIFY2(!e, e.message.c_str());
+        QCOMPARE(rep.parts[1].name, std::string("program 51")); // the called one first
+        QVERIFY(b.ctl->programs().contains(50) && b.ctl->programs().contains(51));
+        QCOMPARE(*b.ctl->programs().messages.text(1), std::string("ПРОВЕРКА"));
+        // A call to a program neither the file nor the controller has: refused before anything is sent.
+        const int commits = b.image->commits();
+        e = planProgramFile(link, "%L52\nN1 L77\n", "bad.k528", plan);
+        QCOMPARE(e.kind, LinkError::Kind::Input);
+        QVERIFY2(e.message.find("bad.k528:2:") != std::string::npos && e.message.find("nothing was sent") != std::string::npos,
+                 e.message.c_str());
+        QCOMPARE(b.image->commits(), commits);
+        e = planProgramFile(link, "N1 G1 X1\n", "none.k528", plan);
+        QCOMPARE(e.kind, LinkError::Kind::Input);
+    }
+    void monitorReadsEveryViewsDataAndSaysWhatChanged() {
+        Bench b;
+        ImageTransport t(*b.image);
+        Link link(t);
+        Monitor m;
+        Monitor::Changes ch;
+        // The first 2.5 s: the live state, both halves of the words, C, all of R.
+        for (int i = 0; i < 25; ++i)
+            QVERIFY(!m.tick(link, ch));
+        QVERIFY(m.haveLive() && m.haveWords());
+        QVERIFY(m.rRevision() > 0);
+        QVERIFY(m.cRevision() > 0);
+        QCOMPARE(m.c()[26], b.prof.c[26]);
+        QCOMPARE(m.words().word(1906), b.ctl->words().word(1906));
+        // Nothing moves: no revision changes, no change reported.
+        const std::uint64_t r0 = m.rRevision(), c0 = m.cRevision();
+        for (int i = 0; i < 120; ++i) {
+            QVERIFY(!m.tick(link, ch));
+            QVERIFY(!ch.r && !ch.c);
+        }
+        QCOMPARE(m.rRevision(), r0);
+        QCOMPARE(m.cRevision(), c0);
+        // An R set on the panel shows within a round of the R block (2.5 s).
+        QVERIFY(b.ctl->setR(120, 4321).ok());
+        bool seen = false;
+        for (int i = 0; i < 26 && !seen; ++i) {
+            QVERIFY(!m.tick(link, ch));
+            seen = m.r()[120] == 4321;
+            QVERIFY(!seen || ch.r);
+        }
+        QVERIFY(seen);
+        QVERIFY(m.rRevision() > r0);
+        // After a push or a clear: all of the memory again at once.
+        b.f7();
+        QVERIFY(b.ctl->clearCParameters().ok());
+        m.memoryChanged();
+        seen = false;
+        for (int i = 0; i < 6 && !seen; ++i) {
+            QVERIFY(!m.tick(link, ch));
+            seen = ch.c;
+        }
+        QVERIFY(seen);
+        QCOMPARE(m.c()[26], std::int64_t{0});
+        QCOMPARE(m.live().mode, 7);
     }
 };
 

@@ -35,9 +35,9 @@ class TestLinkLine : public QObject {
         for (const QString& p : {a_, b_})
             QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
     }
-    void startServe(const QString& keys) {
+    void startServe(const QString& keys, const QStringList& more = {}) {
         stopServe();
-        serve_.start(kCli, {"serve", "--port", a_, "--keys", keys});
+        serve_.start(kCli, QStringList{"serve", "--port", a_, "--keys", keys} + more);
         QVERIFY(serve_.waitForStarted());
         QByteArray said;
         QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
@@ -57,6 +57,15 @@ class TestLinkLine : public QObject {
         args.prepend("--port");
         args.prepend("link");
         return run(kCli, args);
+    }
+    static QString readAll(const QString& path) {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+    }
+    static void writeFile(const QString& path, const QString& text) {
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly | QIODevice::Truncate))
+            f.write(text.toUtf8());
     }
     Run mbpoll(QStringList args) {
         QStringList all = {"-m", "rtu", "-b", "115200", "-P", "none", "-a", "1", "-0", "-1", "-o", "0.5"};
@@ -96,7 +105,7 @@ private slots:
         r = mbpoll({"-r", "5010", "-c", "1", "-t", "4", b_});
         QVERIFY2(r.out.contains("[5010]: \t1234"), qPrintable(r.out));
         // 02 outside the writable map, 03 a value outside its range.
-        r = mbpoll({"-r", "5300", "-t", "4", b_, "7"});
+        r = mbpoll({"-r", "5316", "-t", "4", b_, "7"}); // R158, the positioner's own
         QVERIFY2(r.err.contains("Illegal data address") || r.out.contains("Illegal data address"), qPrintable(r.out + r.err));
         r = mbpoll({"-r", "4101", "-t", "4", b_, "9"});
         QVERIFY2(r.err.contains("Illegal data value") || r.out.contains("Illegal data value"), qPrintable(r.out + r.err));
@@ -244,6 +253,145 @@ private slots:
         QVERIFY(text.contains("C001=1"));
         QVERIFY(text.contains("C007=1"));
         QVERIFY(text.contains("R5=-7"));
+        // The setup R-parameters of the extended map, low word first; the positioner's own are no presets.
+        QVERIFY(text.contains("R150=1"));
+        QVERIFY(text.contains("R200=20000"));
+        QVERIFY(text.contains("R231=-123456"));
+        QVERIFY2(!text.contains("R158=") && !text.contains("R222="), qPrintable(text));
+    }
+
+    void lostOutputAndUnreadableFilesAreExit2() {
+        startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
+        const QString file = dir_.filePath("pulled.k528m");
+        QVERIFY(QFile::exists(file));
+        const QList<QStringList> commands = {{"status", "--json"},
+                                             {"ping"},
+                                             {"watch", "--seconds", "0.3"},
+                                             {"pull", "--out", dir_.filePath("full.k528m")},
+                                             {"push", file},
+                                             {"diag"}};
+        for (const QStringList& c : commands) {
+            QProcess p;
+            p.setStandardOutputFile("/dev/full");
+            p.start(kCli, QStringList{"link", "--port", b_} + c);
+            QVERIFY(p.waitForFinished(60000));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QVERIFY2(p.exitCode() == 2, qPrintable(c.join(' ') + ": " + err));
+            QVERIFY2(err.contains("cannot write standard output: No space left on device"), qPrintable(c.join(' ') + ": " + err));
+        }
+        QProcess list;
+        list.setStandardOutputFile("/dev/full");
+        list.start(kCli, {"link", "--list"});
+        QVERIFY(list.waitForFinished(30000));
+        QCOMPARE(list.exitCode(), 2);
+        Run r = link({"push", "/nonexistent"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot open /nonexistent"), qPrintable(r.err));
+        r = link({"push", dir_.path()});
+        QCOMPARE(r.exitCode, 2);
+        // A machine file with a bad line is the input's error (1), not an I/O error.
+        const QString bad = dir_.filePath("broken.k528m");
+        {
+            QFile f(bad);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("[machine]\nformat=1\nname=x\n[c]\nC999=1\n");
+        }
+        r = link({"push", bad});
+        QCOMPARE(r.exitCode, 1);
+    }
+
+    void pushProgramFilesSetupRAndClear() {
+        startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER", {"--profile", "grinder-205"});
+        const QString file = dir_.filePath("grinder.k528m");
+        Run r = link({"pull", "--out", file});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QString text = readAll(file);
+        QVERIFY2(text.contains("\nR204="), qPrintable(text.left(2000))); // the grinder's own setup data
+        // R200..R231 set in the file: every one the PC may write goes in.
+        QString changed = text;
+        changed.replace(QRegularExpression("\nR2[0-3]\\d=[^\n]*"), "");
+        QString setup;
+        for (int n = 200; n <= 231; ++n)
+            setup += QStringLiteral("R%1=%2\n").arg(n).arg(n == 222 || n == 223 ? 0 : 100000 + n);
+        changed.replace("\n[r]\n", "\n[r]\n" + setup);
+        const QString changedFile = dir_.filePath("setup.k528m");
+        writeFile(changedFile, changed);
+        r = link({"push", changedFile});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains("written and verified: C-parameters, R-parameters (R0..R157, R159..R221, R224..R231)"),
+                 qPrintable(r.out));
+        r = link({"pull", "--out", dir_.filePath("again.k528m")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString again = readAll(dir_.filePath("again.k528m"));
+        for (int n = 200; n <= 231; ++n)
+            if (n != 222 && n != 223)
+                QVERIFY2(again.contains(QStringLiteral("\nR%1=%2").arg(n).arg(100000 + n)), qPrintable(QString::number(n)));
+
+        // A program file (a technologist's .k528): its programs, the called one first, and its messages.
+        const QString prog = dir_.filePath("part.k528");
+        writeFile(prog, "%L60 (part)\nN1 G1 X10 FX100\nN2 L61\n%L61 (sub)\nN1 G1 X5 FX100\nN2 M17\n"
+                        "%MESSAGES\n#5=ПРОВЕРКА РАЗМЕРА\n");
+        r = link({"push", prog});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains("written and verified: messages, program 61, program 60"), qPrintable(r.out));
+        r = link({"pull", "--out", dir_.filePath("third.k528m")});
+        const QString third = readAll(dir_.filePath("third.k528m"));
+        QVERIFY(third.contains("[program 60]") && third.contains("N2 L61") && third.contains("#5=ПРОВЕРКА РАЗМЕРА"));
+        // One the controller would refuse is refused before anything is sent.
+        writeFile(prog, "%L62\nN1 L77\n");
+        r = link({"push", prog});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("part.k528:2:") && r.err.contains("nothing was sent"), qPrintable(r.err));
+
+        // Clear R, then C (manual 2.6.8).
+        r = link({"clear", "r"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains("cleared the R area"));
+        r = link({"pull", "--out", dir_.filePath("noR.k528m")});
+        QVERIFY2(!readAll(dir_.filePath("noR.k528m")).contains("\nR204="), "R204 survived clear r");
+        r = link({"clear", "c"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = link({"pull", "--out", dir_.filePath("noC.k528m")});
+        QVERIFY(readAll(dir_.filePath("noC.k528m")).contains("\nC017=0"));
+    }
+
+    void refusedOffTheScreenOfThePc() {
+        writeFile(dir_.filePath("small.k528"), "%L63\nN1 G1 X1 FX100\n");
+        startServe("");
+        for (const QStringList& c : {QStringList{"push", dir_.filePath("small.k528")}, QStringList{"clear", "c"},
+                                     QStringList{"clear", "r"}}) {
+            const Run r = link(c);
+            QCOMPARE(r.exitCode, 1);
+            QVERIFY2(r.err.contains("not in F7 «РАБОТА С ПЭВМ» (mode F2 now)"), qPrintable(r.err));
+        }
+        startServe("F7 1 1 1 1 ENTER"); // УПРАВЛЕНИЕ ДАННЫМИ, its menu
+        for (const QStringList& c : {QStringList{"push", dir_.filePath("small.k528")}, QStringList{"clear", "c"}}) {
+            const Run r = link(c);
+            QCOMPARE(r.exitCode, 1);
+            QVERIFY2(r.err.contains("in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»"), qPrintable(r.err));
+        }
+        // A foreign master writing the setup R outside the PC's screen: 06; on it, R231 yes, R232 no.
+        Run m = mbpoll({"-r", "5462", "-t", "4", b_, "5"});
+        QVERIFY2((m.out + m.err).contains("busy"), qPrintable(m.out + m.err));
+        startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
+        m = mbpoll({"-r", "5462", "-t", "4", b_, "5"});
+        QVERIFY2(m.exitCode == 0, qPrintable(m.out + m.err));
+        m = mbpoll({"-r", "5464", "-t", "4", b_, "5"});
+        QVERIFY2((m.out + m.err).contains("Illegal data address"), qPrintable(m.out + m.err));
+    }
+
+    void busCountersAndFrameLog() {
+        startServe("");
+        const QString frames = dir_.filePath("frames.txt");
+        Run r = link({"--frames", frames, "diag", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains("\"bus messages\":") && r.out.contains("\"bus CRC errors\":0"), qPrintable(r.out));
+        const QString log = readAll(frames);
+        QVERIFY2(log.contains("  TX  station   1  01 08 00 0B 00 00") && log.contains("CRC ok"), qPrintable(log));
+        r = link({"diag", "--clear"});
+        QVERIFY2(r.exitCode == 0 && r.out.contains("counters cleared"), qPrintable(r.out + r.err));
+        r = link({"diag", "--json"});
+        QVERIFY2(r.out.contains("\"bus messages\":1,"), qPrintable(r.out)); // only the request that reads it
     }
 
     void foreignPluginsAreRefused() {
@@ -252,7 +400,7 @@ private slots:
         QVERIFY2(wrongIid.refused.contains("IID"), qPrintable(wrongIid.refused));
         const auto wrongApi = k528::linkplugin::loadFile(QStringLiteral(K528_FAKE_API_PLUGIN));
         QVERIFY(!wrongApi.plugin);
-        QVERIFY2(wrongApi.refused.contains("api 2"), qPrintable(wrongApi.refused));
+        QVERIFY2(wrongApi.refused.contains("api 1"), qPrintable(wrongApi.refused));
         const auto good = k528::linkplugin::loadFile(QStringLiteral(K528_RTU_PLUGIN));
         QVERIFY2(good.plugin, qPrintable(good.refused));
         QCOMPARE(good.name, QStringLiteral("modbus-rtu"));

@@ -4,6 +4,7 @@
 // inside it, long texts and more docks do not widen the window, the machine's
 // panel scales with the room, each workspace keeps its own layout, the first
 // start chooses by the screen, and no shortcut means two actions at once.
+#include "editor/debug_panel.h"
 #include "editor/editor_tab.h"
 #include "k923/k923_widget.h"
 #include "editor/program_editor.h"
@@ -428,11 +429,43 @@ private slots:
         QTest::keyClick(ed, Qt::Key_O, Qt::ControlModifier);
         QCOMPARE(open.count(), 1);
         QCOMPARE(load.count(), 0);
+        // F5 in the editor: the debugger's Run (its dock shown).
+        w.debuggerDock()->show();
+        settle();
+        QAction* run = w.debuggerDock()->findChild<QAction*>("debug.run");
+        QVERIFY(run);
+        QSignalSpy ran(run, &QAction::triggered);
+        w.activateWindow(); // after the file dialog
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        ed->setFocus();
+        QTest::keyClick(ed, Qt::Key_F5);
+        QCOMPARE(ran.count(), 1);
+        tab->debugPanel()->reset();
         // In the operator's workspace they are File's again.
         QVERIFY(w.workspaces()->activate("operator"));
         settle();
         QCOMPARE(w.findChild<QAction*>("action.keepInDatabase")->shortcut(), QKeySequence(QKeySequence::Save));
         QVERIFY(tab->saveAction()->shortcut().isEmpty());
+    }
+
+    // A workspace chosen before the window is shown (--workspace) leaves no
+    // layout of the first choice behind: that one is laid out anew at the
+    // window's size when the user goes to it (the editor kept its room).
+    void aLayoutNeverShownIsNotKept() {
+        MainWindow w;
+        const QString first = w.workspaces()->current();
+        const QString other = first == "operator" ? "technologist" : "operator";
+        QVERIFY(w.workspaces()->activate(other));
+        QVERIFY(!QSettings().contains("workspaces/" + first + "/state"));
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("technologist"));
+        settle();
+        auto* backplot = w.findChild<QDockWidget*>("dock.backplot");
+        const double share = double(backplot->width()) / w.width();
+        QVERIFY2(share > 0.3 && share < 0.46, qPrintable(QString::number(share)));
+        QVERIFY(w.workArea()->width() > backplot->width());
     }
 
     void eachWorkspaceKeepsItsLayout() {

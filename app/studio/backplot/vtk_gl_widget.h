@@ -79,6 +79,7 @@ private:
     QImage frame_;
     bool dirty_ = true;
     bool failed_ = false; // no OpenGL context: said in the view
+    bool painted_ = false; // the first paint asked for the first picture
     long frames_ = 0;
 };
 

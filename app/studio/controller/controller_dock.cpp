@@ -46,12 +46,15 @@ QString dot(bool on, const char* color) {
 QString mm(std::int64_t disc, const units::AxisScale& s) { return fromStd(units::formatDisc(disc, s)); }
 
 // What a push would leave in the controller: `memory` (just read) with what
-// `file` sends — C, R0..R149, the messages when it has any, its programs in
-// the canonical text the controller keeps (link::push).
+// `file` sends — C, the R-parameters the PC writes (R0..R231 but R158,
+// R222, R223), the messages when it has any, its programs in the canonical
+// text the controller keeps (link::push).
 profile::MachineProfile afterPush(const profile::MachineProfile& memory, const profile::MachineProfile& file) {
     profile::MachineProfile m = memory;
     m.c = file.c;
-    for (int i = 0; i < 150; ++i) {
+    for (int i = 0; i < 300; ++i) {
+        if (!link::k528Map().rWritable(i))
+            continue;
         const auto it = file.r.find(i);
         if (it != file.r.end() && it->second != 0)
             m.r[i] = it->second;

@@ -1,5 +1,6 @@
 #include "controller/link_controller.h"
 
+#include "link/monitor.h"
 #include "link/register_map.h"
 #include "program/parser.h"
 #include "units/units.h"
@@ -8,6 +9,7 @@
 #include <QTimer>
 #include <deque>
 #include <set>
+#include <utility>
 
 namespace k528::studio {
 
@@ -156,34 +158,23 @@ public:
     }
 
     void pollOnce() {
-        link::LiveState live;
-        engine::InterfaceWords words;
-        std::vector<std::uint16_t> regs;
-        // The live block every time; the interface words in two halves, in turn.
-        link::LinkError e = link::readLive(*link_, live);
-        const bool a = (polls_ % 2) == 0;
-        const auto readWords = [&](int first, int count) {
-            if (e)
-                return;
-            e = link_->read(first, count, regs);
-            for (int i = 0; !e && i < count; ++i)
-                words.setWord(first + i, regs[static_cast<std::size_t>(i)]);
-        };
-        if (a) {
-            readWords(1000, 14);
-            readWords(2000, 9);
-        } else {
-            readWords(1300, 8);
-            readWords(1900, 8);
-        }
+        // Every view's data (link/monitor.h): the live block each tick, the
+        // interface words in halves in turn, R and C in pieces.
+        link::Monitor::Changes changed;
+        link::LinkError e = monitor_.tick(*link_, changed);
+        const link::LiveState live = monitor_.live();
+        const engine::InterfaceWords words = monitor_.words();
+        const bool a = true, b = true; // the monitor keeps both halves
         ++polls_;
         if (e) {
             const QString why = fromStd(e.message);
             post([why](LinkController* c) { emit c->lost(why); });
+            lostBefore_ = true;
             report();
             return;
         }
-        post([live, words, a](LinkController* c) { c->applyPoll(live, words, a, !a); });
+        if (changed.live || changed.words || std::exchange(lostBefore_, false))
+            post([live, words, a, b](LinkController* c) { c->applyPoll(live, words, a, b); });
         // The text of the running program, once (the Program tab shows it).
         if (live.program > 0 && !fetched_.count(live.program)) {
             fetched_.insert(live.program);
@@ -261,12 +252,13 @@ public:
         if (cancelled)
             abortTransfer();
         fetched_.clear(); // the programs may have changed: read again when shown
+        monitor_.memoryChanged(); // C and R read again at once
         report();
         QStringList written;
         if (rep.constants)
             written << LinkController::tr("C-parameters");
         if (rep.rParameters)
-            written << QStringLiteral("R0..R149");
+            written << LinkController::tr("R-parameters");
         if (rep.messages)
             written << LinkController::tr("messages");
         for (int n : rep.programs)
@@ -336,6 +328,8 @@ private:
     QElapsedTimer clock_;
     std::deque<std::pair<qint64, double>> samples_;
     std::int64_t polls_ = 0;
+    link::Monitor monitor_;
+    bool lostBefore_ = true; // the first answer is shown whatever it is
     std::set<int> fetched_;
 };
 

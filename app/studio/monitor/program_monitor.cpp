@@ -52,6 +52,10 @@ ProgramMonitor::ProgramMonitor(Controller& controller, QWidget* parent)
     setObjectName("programMonitor");
     choice_ = new QComboBox(this);
     choice_->setObjectName("programMonitor.choice");
+    // As wide as a program's number and title need, not its longest title:
+    // the state beside it gets the room.
+    choice_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    choice_->setMinimumContentsLength(16);
     // Elided when long (a frame's message): it never widens the window.
     status_ = new ElidedLabel(this);
     status_->setObjectName("programMonitor.status");

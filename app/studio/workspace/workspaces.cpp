@@ -141,7 +141,9 @@ void Workspaces::reload() {
 }
 
 void Workspaces::save() {
-    if (current_.isEmpty())
+    // A layout the user has not seen (the window not shown yet, at its first
+    // size) is not theirs to keep.
+    if (current_.isEmpty() || !window_->isVisible())
         return;
     QSettings s;
     s.setValue(key(current_, "state"), window_->saveState(kLayoutVersion));

@@ -13,7 +13,7 @@ public:
         return nullptr;
     }
     std::unique_ptr<k528::linkplugin::Server> openServer(const k528::linkplugin::LineSettings&,
-                                                         k528::linkplugin::RegisterHandler&, QString& e) override {
+                                                         k528::linkplugin::RegisterHandler&, const QString&, QString& e) override {
         e = "fake";
         return nullptr;
     }
