@@ -2348,6 +2348,10 @@ Its comment stays: %3</translation>
         <source>%1, address %2, %3 bit/s</source>
         <translation>%1, address %2, %3 bit/s</translation>
     </message>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-parameters</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>

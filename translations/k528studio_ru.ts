@@ -5,7 +5,7 @@
     <name>CloseButton</name>
     <message>
         <source>Close Tab</source>
-        <translation type="unfinished" />
+        <translation>Закрыть вкладку</translation>
     </message>
 </context>
 <context>
@@ -242,7 +242,7 @@
     </message>
     <message>
         <source>%1:%2: %3: %4</source>
-        <translation type="unfinished" />
+        <translation>%1:%2: %3: %4</translation>
     </message>
 </context>
 <context>
@@ -2347,6 +2347,10 @@ Its comment stays: %3</source>
     <message>
         <source>%1, address %2, %3 bit/s</source>
         <translation>%1, адрес %2, %3 бит/с</translation>
+    </message>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-параметры</translation>
     </message>
 </context>
 <context>

@@ -9,6 +9,7 @@
 #include "session/simulation_session.h"
 
 #include <QComboBox>
+#include <QDateTime>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -61,7 +62,12 @@ HistoryDialog::HistoryDialog(const MachineStore& store, int number, QWidget* par
         table_->setRowCount(static_cast<int>(h.size()));
         for (int i = 0; i < static_cast<int>(h.size()); ++i) {
             const db::HistoryEntry& e = h[static_cast<std::size_t>(i)];
-            const QStringList cells{QString::number(e.revision), fromStd(e.at), fromStd(e.author),
+            // The time in the PC's own zone (the database keeps UTC, "…T…Z").
+            const QDateTime at = QDateTime::fromString(fromStd(e.at), Qt::ISODate);
+            const QStringList cells{QString::number(e.revision),
+                                    at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"))
+                                                 : fromStd(e.at),
+                                    fromStd(e.author),
                                     e.change.before ? fromStd(*e.change.before) : tr("(none)"),
                                     e.change.after ? fromStd(*e.change.after) : tr("(none)"),
                                     fromStd(notes[e.revision])};
