@@ -85,6 +85,10 @@ public:
         // The slides come to rest before the part and the machine are looked at.
         restTicks_ = 0;
         until([&] { return !moving(); }, 10000);
+        // A spindle told to stop coasts down (the wheel for seconds): the
+        // operator waits for it before he looks at the machine.
+        if (coasting())
+            until([&] { return !coasting(); }, 30000);
         finish();
         sim_.removeTickObserver(observer_);
     }
@@ -268,6 +272,14 @@ private:
         }
         restTicks_ = m ? 0 : restTicks_ + 1;
         return restTicks_ < 20;
+    }
+
+    // A spindle that runs with no speed set: coasting down after a stop.
+    bool coasting() {
+        for (const auto& sp : sim_.equipment().spindles)
+            if (sp->running() && sp->targetRpm() == 0)
+                return true;
+        return false;
     }
 
     void turn(const ProcedureStep& s) {

@@ -9,23 +9,6 @@ namespace k528::training {
 namespace {
 using namespace geo;
 
-Multi multiOfShapes(const std::vector<Shape>& shapes) {
-    Multi m;
-    for (const Shape& s : shapes) {
-        Poly p;
-        for (const stock::PointZR& q : s.outer)
-            bg::append(p.outer(), P(q.z, q.r));
-        for (const stock::Ring& h : s.holes) {
-            p.inners().emplace_back();
-            for (const stock::PointZR& q : h)
-                bg::append(p.inners().back(), P(q.z, q.r));
-        }
-        bg::correct(p);
-        m.push_back(std::move(p));
-    }
-    return m;
-}
-
 // The contour with every element moved by `dev(i)` mm along its outward
 // normal: the polygon closed along the axis.
 Multi offsetContour(const std::vector<ContourPoint>& c, const std::vector<double>& off) {
@@ -127,7 +110,7 @@ DrawingShapes drawingShapes(const Exercise& e) {
 
 DrawingShapes drawingFromPart(const std::vector<Shape>& part, const Tolerance& t) {
     DrawingShapes d;
-    const Multi m = multiOfShapes(part);
+    const Multi m = multiOf(part);
     const auto grown = [&](double by) {
         if (by == 0)
             return m;

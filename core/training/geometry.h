@@ -23,14 +23,6 @@ using Multi = bg::model::multi_polygon<Poly>;
 using Box = bg::model::box<P>;
 using Line = bg::model::linestring<P>;
 
-inline Poly polygonOf(const stock::Ring& ring) {
-    Poly p;
-    for (const stock::PointZR& q : ring)
-        bg::append(p.outer(), P(q.z, q.r));
-    bg::correct(p);
-    return p;
-}
-
 inline Poly rect(double z0, double z1, double r0, double r1) {
     Poly p;
     bg::append(p.outer(), P(z0, r0));
@@ -41,21 +33,36 @@ inline Poly rect(double z0, double z1, double r0, double r1) {
     return p;
 }
 
+// A polygon from its outer ring and its holes (any orientation).
+inline Poly polygonOf(const stock::Ring& outer, const std::vector<stock::Ring>& holes) {
+    Poly p;
+    for (const stock::PointZR& q : outer)
+        bg::append(p.outer(), P(q.z, q.r));
+    for (const stock::Ring& h : holes) {
+        p.inners().emplace_back();
+        for (const stock::PointZR& q : h)
+            bg::append(p.inners().back(), P(q.z, q.r));
+    }
+    bg::correct(p);
+    return p;
+}
+inline Poly polygonOf(const stock::Ring& ring) {
+    return polygonOf(ring, {});
+}
+
 // The stock's material as Boost polygons.
 inline Multi multiOf(const stock::Stock& s) {
     Multi m;
-    for (std::size_t i = 0; i < s.polygons(); ++i) {
-        Poly p;
-        for (const stock::PointZR& q : s.outer(i))
-            bg::append(p.outer(), P(q.z, q.r));
-        for (const stock::Ring& h : s.holes(i)) {
-            p.inners().emplace_back();
-            for (const stock::PointZR& q : h)
-                bg::append(p.inners().back(), P(q.z, q.r));
-        }
-        bg::correct(p);
-        m.push_back(std::move(p));
-    }
+    for (std::size_t i = 0; i < s.polygons(); ++i)
+        m.push_back(polygonOf(s.outer(i), s.holes(i)));
+    return m;
+}
+
+// The interface's shapes as Boost polygons.
+inline Multi multiOf(const std::vector<Shape>& shapes) {
+    Multi m;
+    for (const Shape& s : shapes)
+        m.push_back(polygonOf(s.outer, s.holes));
     return m;
 }
 

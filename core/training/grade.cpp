@@ -16,23 +16,6 @@ namespace k528::training {
 namespace {
 using namespace geo;
 
-Multi multiOfShapes(const std::vector<Shape>& shapes) {
-    Multi m;
-    for (const Shape& s : shapes) {
-        Poly p;
-        for (const stock::PointZR& q : s.outer)
-            bg::append(p.outer(), P(q.z, q.r));
-        for (const stock::Ring& h : s.holes) {
-            p.inners().emplace_back();
-            for (const stock::PointZR& q : h)
-                bg::append(p.inners().back(), P(q.z, q.r));
-        }
-        bg::correct(p);
-        m.push_back(std::move(p));
-    }
-    return m;
-}
-
 // The boundary of a region as segments.
 std::vector<bg::model::segment<P>> boundaryOf(const Multi& m) {
     std::vector<bg::model::segment<P>> out;
@@ -244,7 +227,7 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
         }
         cut = cutAlong(*e_.blank, e_.blankZMm, e_.tool, fx, rec.path, true, sp);
         blankM = translated(multiOf(stock::Stock(*e_.blank)), e_.blankZMm);
-        finishedM = multiOfShapes(cut.finished);
+        finishedM = multiOf(cut.finished);
         g.collisions = cut.collisions;
         for (const Removal& r : cut.removals) {
             RemovalGeo rg{polygonOf(r.sweep), Box(), &r};
@@ -299,7 +282,7 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
 
     // The part against the drawing.
     if (drawing_.present && !blankM.empty()) {
-        const Multi most = multiOfShapes(drawing_.most), least = multiOfShapes(drawing_.least);
+        const Multi most = multiOf(drawing_.most), least = multiOf(drawing_.least);
         Multi need, over, under;
         bg::intersection(least, blankM, need);
         bg::difference(need, finishedM, over);
