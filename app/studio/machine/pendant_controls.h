@@ -67,6 +67,7 @@ class MushroomButton : public QAbstractButton {
 public:
     explicit MushroomButton(QWidget* parent = nullptr);
     void setLegend(const QString& legend);
+    QString legend() const { return legend_; }
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
     void setScale(double scale);
