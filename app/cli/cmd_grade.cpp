@@ -1,8 +1,9 @@
-// k528 grade ID FILE... [--json] [--student NAME] [--lang ru|en] [--jobs N] [--geometry]
+// k528 grade ID FILE... [--json | --csv] [--student NAME] [--lang ru|en] [--jobs N] [--geometry]
 // Grades students' program files against an exercise of the training course
 // (core/training/grade.h, docs/training-course.md): each file runs on its own
 // simulated machine, several at once on threads; one file gives a report,
-// several a table (a class), --json an array of objects, one per file.
+// several a table (a class), --json an array of objects, one per file,
+// --csv the trainer's record of the class (one line a file).
 #include "args.h"
 #include "cli.h"
 #include "program_cli.h"
@@ -69,12 +70,40 @@ void printTable(const std::vector<training::Grade>& grades, Lang lang) {
     std::printf("%s %d/%zu\n", ru ? "Зачтено:" : "Passed:", passed, grades.size());
 }
 
+// One CSV field (RFC 4180): quoted when it holds a comma, a quote or a line break.
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"\r\n") == std::string::npos)
+        return s;
+    std::string q = "\"";
+    for (char c : s)
+        q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+void printCsv(const std::vector<training::Grade>& grades, Lang lang) {
+    const training::Language l = lang == Lang::Ru ? training::Language::Ru : training::Language::En;
+    std::printf("student,file,exercise,score,passed,status,cycle_time_s,deductions\n");
+    for (const training::Grade& g : grades) {
+        std::string ded;
+        for (const training::Deduction& d : g.deductions) {
+            char pts[32];
+            std::snprintf(pts, sizeof pts, "-%g ", d.points);
+            ded += (ded.empty() ? "" : "; ") + std::string(pts) + training::render(d.text, l);
+        }
+        std::printf("%s,%s,%s,%d,%s,%s,%.3f,%s\n", csvField(g.student).c_str(), csvField(g.file).c_str(),
+                    csvField(g.exercise).c_str(), g.score, g.passed ? "yes" : "no", g.status.c_str(),
+                    g.cycleTimeS, csvField(ded).c_str());
+    }
+}
+
 } // namespace
 
 int runGrade(std::span<const std::string> argv) {
-    const Args args(argv, {"--json", "--geometry"}, {"--student", "--lang", "--jobs"});
+    const Args args(argv, {"--json", "--csv", "--geometry"}, {"--student", "--lang", "--jobs"});
     if (!args.ok())
         return usageError(args.error());
+    if (args.has("--json") && args.has("--csv"))
+        return usageError("--json or --csv, not both");
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
         return usageError("--lang is ru or en, not '" + *l + "'");
@@ -155,6 +184,8 @@ int runGrade(std::span<const std::string> argv) {
         for (const training::Grade& g : grades)
             a.push_back(training::gradeJson(g, args.has("--geometry")));
         std::printf("%s\n", json::dump(a).c_str());
+    } else if (args.has("--csv")) {
+        printCsv(grades, lang);
     } else if (grades.size() == 1) {
         printReport(grades.front(), lang);
     } else {

@@ -134,11 +134,13 @@ std::span<const Command> commands() {
          "  --lang ru|en         language of the texts (default ru)\n"
          "Exercises and their format: docs/training-course.md.\n",
          runExercise},
-        {"grade", "grade ID FILE... [--json] [--geometry] [--student NAME] [--lang ru|en] [--jobs N]",
+        {"grade", "grade ID FILE... [--json | --csv] [--geometry] [--student NAME] [--lang ru|en] [--jobs N]",
          "Grade students' program files against an exercise: run, part, collisions, steps, score.",
          "Options:\n"
          "  --json               an array of one object per file: file, student, score, passed,\n"
          "                       status, deductions [{points, frame, line, text_ru, text_en, ...}]\n"
+         "  --csv                the class's record: student,file,exercise,score,passed,status,\n"
+         "                       cycle_time_s,deductions (texts in --lang), one line a file\n"
          "  --geometry           (with --json) also the blank, the finished part, the drawing\n"
          "  --student NAME       the student of one FILE (default: the file's name)\n"
          "  --lang ru|en         language of the report (default ru)\n"

@@ -119,6 +119,22 @@ private slots:
         QCOMPARE(t.exitCode, 1);
         QVERIFY2(t.out.contains("Passed: 20/30"), qPrintable(t.out));
         QVERIFY(t.out.contains("student30"));
+        // The trainer's record: one CSV line a student.
+        QStringList csvArgs = args;
+        csvArgs << "--csv" << "--lang" << "en";
+        const CliResult c = runK528(csvArgs);
+        QCOMPARE(c.exitCode, 1);
+        const QStringList lines = c.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 31);
+        QCOMPARE(lines[0], QStringLiteral("student,file,exercise,score,passed,status,cycle_time_s,deductions"));
+        QVERIFY2(lines[1].startsWith("student01,") &&
+                     lines[1].contains("student01.k528,lathe-03-step,100,yes,completed,"),
+                 qPrintable(lines[1]));
+        QVERIFY2(lines[3].startsWith("student03,") && lines[3].contains("student03.k528,lathe-03-step,"),
+                 qPrintable(lines[3]));
+        QVERIFY(lines[3].contains("over-cut"));
+        QVERIFY(lines[3].contains("L1 N15"));
+        QCOMPARE(runK528(args + QStringList{"--csv", "--json"}).exitCode, 2);
     }
 
     void oneFileGivesAReportWithTheStudentsName() {
