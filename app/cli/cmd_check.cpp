@@ -36,28 +36,6 @@ bool machineOptions(const Args& args, program::ValidateOptions& options,
     return true;
 }
 
-// The prove-out of the file's main programs on the machine (docs/proveout.md):
-// collisions and plausibility over the preview. Throws what the machine's
-// data throws.
-std::vector<proveout::Finding> proveFile(const profile::MachineProfile& machine,
-                                         const program::ProgramStore& store,
-                                         const std::optional<stock::Blank>& blank) {
-    std::vector<proveout::Finding> all;
-    engine::PreviewOptions po;
-    po.fromReferencePoint = true; // as `k528 run` starts, after homing
-    for (const int n : proveout::mainPrograms(store)) {
-        const proveout::Proof proof = proveout::proveProgram(machine, store, n, po, blank);
-        for (const proveout::Finding& f : proof.result.findings) {
-            const bool seen = std::any_of(all.begin(), all.end(), [&](const proveout::Finding& g) {
-                return g.rule == f.rule && g.program == f.program && g.line == f.line;
-            });
-            if (!seen)
-                all.push_back(f);
-        }
-    }
-    return all;
-}
-
 Json fileJson(const std::string& file, const program::CheckResult& r) {
     Json f;
     f["file"] = file;
@@ -170,7 +148,9 @@ int runCheck(std::span<const std::string> argv) {
             if (!blankFor(args, text, blank))
                 return ExitUsage;
             try {
-                findings = proveFile(*machine, r.store, blank);
+                engine::PreviewOptions po;
+                po.fromReferencePoint = true; // as `k528 run` starts, after homing
+                findings = proveout::proveStore(*machine, r.store, po, blank).findings;
             } catch (const plc::DescriptionError& e) {
                 std::fprintf(stderr, "k528: machine description %s\n", e.what());
                 return ExitUsage;

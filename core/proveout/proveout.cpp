@@ -491,4 +491,23 @@ Proof proveProgram(const profile::MachineProfile& profile, const program::Progra
     return proof;
 }
 
+Result proveStore(const profile::MachineProfile& profile, const program::ProgramStore& programs,
+                  const engine::PreviewOptions& preview, const std::optional<stock::Blank>& blank) {
+    Result all;
+    for (const int n : mainPrograms(programs)) {
+        const Proof proof = proveProgram(profile, programs, n, preview, blank);
+        all.material = all.material || proof.result.material;
+        all.chuck = all.chuck || proof.result.chuck;
+        all.removedMm2 += proof.result.removedMm2;
+        for (const Finding& f : proof.result.findings) {
+            const bool seen = std::any_of(all.findings.begin(), all.findings.end(), [&](const Finding& g) {
+                return g.rule == f.rule && g.program == f.program && g.line == f.line;
+            });
+            if (!seen)
+                all.findings.push_back(f);
+        }
+    }
+    return all;
+}
+
 } // namespace k528::proveout

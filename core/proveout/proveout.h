@@ -116,4 +116,14 @@ Proof proveProgram(const profile::MachineProfile& profile, const program::Progra
                    int number, const engine::PreviewOptions& preview,
                    std::optional<stock::Blank> blank);
 
+// Every main program of `programs` (mainPrograms) proved as proveProgram
+// does, in the order of their numbers; a frame that breaks a rule in several
+// of them (a subprogram they share) is one finding, the first met; `material`
+// and `chuck` when their rules ran for one of them at least. What
+// `k528 check --profile` and the studio's prove-out pane report for a file.
+Result proveStore(const profile::MachineProfile& profile,
+                                const program::ProgramStore& programs,
+                                const engine::PreviewOptions& preview,
+                                const std::optional<stock::Blank>& blank);
+
 } // namespace k528::proveout
