@@ -31,7 +31,11 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTreeWidget>
 #include <QMenu>
+#include <QMessageBox>
+#include <QApplication>
+#include <QTimer>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -452,6 +456,120 @@ private slots:
         settle();
         QCOMPARE(w.findChild<QAction*>("action.keepInDatabase")->shortcut(), QKeySequence(QKeySequence::Save));
         QVERIFY(tab->saveAction()->shortcut().isEmpty());
+    }
+
+    // The technologist's first start is not an empty pane: the machine's
+    // sample program is open, named as a sample, its text large (most of the
+    // window); the next start reopens the files open at the last close, and a
+    // user who closed them all finds the editor as left.
+    void theEditorStartsWithTheSampleThenTheLastFiles() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("part.k528");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("%L3\nG1 X5 FX100\nM30\n");
+        }
+        const QString sample = EditorTab::sampleFor("training-lathe");
+        QVERIFY2(sample.startsWith("lathe-"), qPrintable(sample));
+        QVERIFY(EditorTab::sampleFor("grinder-205").startsWith("grinder-"));
+        QVERIFY(!EditorTab::sampleFor("no-such-machine").isEmpty()); // some sample all the same
+        {
+            MainWindow w; // the training lathe
+            w.placeOnScreen();
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate("technologist"));
+            settle();
+            EditorTab* tab = w.programEditor();
+            QCOMPARE(tab->documentCount(), 1);
+            QVERIFY(tab->pathOf(0).isEmpty()); // not a file: saving asks where
+            QFile shipped(QStringLiteral(K528_SOURCE_DIR "/resources/samples/") + sample);
+            QVERIFY(shipped.open(QIODevice::ReadOnly));
+            QCOMPARE(tab->currentEditor()->text(), QString::fromUtf8(shipped.readAll()));
+            QVERIFY(!tab->currentEditor()->isModified());
+            auto* tabs = tab->findChild<QTabWidget*>("editor.tabs");
+            QCOMPARE(tabs->tabText(0), sample + " (пример)");
+            QVERIFY(tab->outline()->topLevelItemCount() >= 1); // its programs listed
+            // The text is most of the window, the outline and Problems beside it small.
+            const QRect text = shownRect(tab->currentEditor()->viewport());
+            QVERIFY2(text.width() >= 0.45 * available().width() && text.height() >= 0.5 * available().height(),
+                     qPrintable(sizeText(text.size()) + " of " + sizeText(available().size())));
+            QVERIFY2(tab->outline()->width() < text.width() / 3, qPrintable(QString::number(tab->outline()->width())));
+            QVERIFY2(tab->problems()->height() < text.height() / 2,
+                     qPrintable(QString::number(tab->problems()->height())));
+            QVERIFY(tab->openFile(path));
+            QVERIFY(w.close()); // the sample unchanged: nothing asked
+        }
+        {
+            MainWindow w;
+            EditorTab* tab = w.programEditor();
+            QCOMPARE(tab->documentCount(), 1); // the file, not the sample again
+            QCOMPARE(tab->pathOf(0), QFileInfo(path).absoluteFilePath());
+            QVERIFY(tab->closeDocument(0));
+            QVERIFY(w.close());
+        }
+        {
+            MainWindow w;
+            QCOMPARE(w.programEditor()->documentCount(), 0); // all closed: as left
+            QVERIFY(w.close());
+        }
+        {
+            QSettings().setValue("editor/open", QStringList{dir.filePath("gone.k528")});
+            MainWindow w;
+            QCOMPARE(w.programEditor()->documentCount(), 1); // the file is gone: the sample
+            QVERIFY(w.programEditor()->pathOf(0).isEmpty());
+        }
+    }
+
+    // File > Quit with a changed file asks about the file by its name — not
+    // the tab's «name *» — and «Cancel» keeps the window and the edits.
+    void theQuitQuestionNamesTheFileNotItsTab() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("part.k528");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("%L1\nM30\n");
+        }
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("technologist"));
+        EditorTab* tab = w.programEditor();
+        QVERIFY(tab->openFile(path));
+        tab->currentEditor()->insertAt("G1 X5 FX100\n", 1, 0);
+        QVERIFY(tab->currentEditor()->isModified());
+        auto* tabs = tab->findChild<QTabWidget*>("editor.tabs");
+        QCOMPARE(tabs->tabText(tabs->currentIndex()), QString("part.k528 *"));
+        // The real question, answered «Cancel»; then out of the event loop
+        // File > Quit ran in (a quit that went through would end it too).
+        QString asked;
+        QTimer poll;
+        poll.setInterval(50);
+        connect(&poll, &QTimer::timeout, this, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            asked = box->text();
+            box->button(QMessageBox::Cancel)->click();
+            poll.stop();
+            QTimer::singleShot(200, [] { QCoreApplication::exit(0); });
+        });
+        poll.start();
+        QTimer::singleShot(0, &w, [&] { w.findChild<QAction*>("action.quit")->trigger(); });
+        QTimer neverAsked; // stopped below: not left to end a later test's loop
+        neverAsked.setSingleShot(true);
+        connect(&neverAsked, &QTimer::timeout, this, [] { QCoreApplication::exit(1); });
+        neverAsked.start(20000);
+        QApplication::exec();
+        neverAsked.stop();
+        QVERIFY2(asked.contains("part.k528 ") && !asked.contains("*"), qPrintable(asked));
+        QVERIFY(w.isVisible());
+        QCOMPARE(tab->documentCount(), 2); // the sample and the file, its edits kept
+        QVERIFY(tab->currentEditor()->isModified());
+        tab->setCloseQuestion([](const QString&) { return EditorTab::CloseChoice::Discard; });
     }
 
     // A workspace chosen before the window is shown (--workspace) leaves no
