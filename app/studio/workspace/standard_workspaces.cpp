@@ -110,6 +110,8 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
         raised(place("dock.backplot", Qt::RightDockWidgetArea, std::max(0.3, 1.0 - k - 0.30))),
         roomForBoth ? beside("dock.scope", "dock.backplot", Qt::Vertical, 0.45)
                     : tab("dock.scope", "dock.backplot"),
+        // The course's exercise, its drawing and the grade beside the backplot.
+        tab("dock.training", "dock.backplot"),
     };
     out.push_back(train);
     return out;
