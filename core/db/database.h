@@ -379,8 +379,8 @@ public:
     std::vector<TransferEntry> transfers(const TransferFilter& filter = {}) const;
 
     // Whether another connection (another process or PC) committed since the
-    // last call, and the machines it named (PostgreSQL: LISTEN/NOTIFY, no
-    // round trip; SQLite: PRAGMA data_version, names none: compare
+    // last call, and the machines it named (PostgreSQL: LISTEN/NOTIFY and
+    // one short round trip; SQLite: PRAGMA data_version, names none: compare
     // machines()). The first call only starts watching.
     bool changedElsewhere(std::vector<std::string>* machines = nullptr);
 

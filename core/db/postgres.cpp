@@ -143,6 +143,13 @@ void PgConnection::exec(std::string_view text) {
 
 std::vector<PgConnection::Notification> PgConnection::notifications() {
     std::vector<Notification> out;
+    // One round trip first: a notice of a commit that returned to its
+    // session before this call is in its way to us; the server sends it
+    // before it answers (it was signalled at that commit).
+    if (!inTransaction()) {
+        PGresult* r = PQexec(conn_, "SELECT 1");
+        PQclear(r);
+    }
     if (!PQconsumeInput(conn_))
         return out;
     const int self = PQbackendPID(conn_);

@@ -72,7 +72,8 @@ public:
     // A lost connection is made again (its prepared queries forgotten);
     // false when the server still does not answer.
     bool reconnectIfLost();
-    // Notifications received so far: (channel, payload, whether this session sent it).
+    // Notifications received so far, after one round trip (outside a
+    // transaction): (channel, payload, whether this session sent it).
     struct Notification {
         std::string channel, payload;
         bool ours = false;

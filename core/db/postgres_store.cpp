@@ -3,6 +3,7 @@
 #include "db/postgres_store.h"
 
 #include <algorithm>
+#include <optional>
 #include <libpq-fe.h>
 
 namespace k528::db {
@@ -311,8 +312,11 @@ std::string identifier(std::string_view ident) {
 
 std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
     if (setUp) {
-        WriteTransaction tx(*this);
+        // The refusal is named after the rollback: the failed transaction
+        // answers nothing more.
+        std::optional<Error> denied;
         try {
+            WriteTransaction tx(*this);
             for (const RoleDef& r : kRoles) {
                 auto& exists = query("SELECT count(*) FROM pg_roles WHERE rolname = ?1");
                 exists.bind(1, r.name);
@@ -342,14 +346,16 @@ std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
                         "GRANT INSERT, UPDATE, DELETE ON machines, c_values, r_values, messages, "
                         "plc_messages, settings, revisions, changes, program_revisions, "
                         "program_states, audit TO k528_technologist;");
+            tx.commit();
         } catch (const Error& e) {
             if (e.kind() != ErrorKind::Denied)
                 throw;
+            denied = e;
+        }
+        if (denied)
             throw DeniedError("setting up the roles",
                               "the owner of the database's tables with CREATEROLE", user_,
-                              rolesOfUser(), e.what());
-        }
-        tx.commit();
+                              rolesOfUser(), denied->what());
     }
     std::vector<RoleInfo> out;
     for (const RoleDef& r : kRoles) {
