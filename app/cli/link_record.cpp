@@ -5,49 +5,77 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
 
 namespace k528::cli {
 
 namespace fs = std::filesystem;
 
-std::optional<TransferRecord> TransferRecord::open(const Args& args, const std::string& fileMachine,
-                                                   const std::string& line) {
+bool TransferRecord::open(const Args& args, const std::string& line,
+                          std::optional<TransferRecord>& record) {
+    const auto given = args.value("--db");
+    const char* env = std::getenv("K528_DB");
+    const auto machine = args.value("--machine");
+    const bool required = given || (env && *env) || machine;
+    std::string where = given ? *given : "the default database";
     try {
-        const auto given = args.value("--db");
-        const db::Location where = given ? db::Location::parse(*given) : db::defaultDatabaseLocation();
-        if (where.isFile()) {
+        const db::Location loc = given ? db::Location::parse(*given) : db::defaultDatabaseLocation();
+        where = loc.text();
+        db::OpenOptions o;
+        if (loc.isFile()) {
             std::error_code ec;
-            if (!fs::exists(where.file(), ec)) {
+            if (!fs::exists(loc.file(), ec)) {
                 if (given) {
                     std::fprintf(stderr,
                                  "k528 link: no database at %s for the transfer log (create one "
-                                 "with: k528 db init --db %s)\n",
-                                 where.file().c_str(), where.file().c_str());
-                    return std::nullopt;
+                                 "with: k528 db init --db %s); nothing was sent\n",
+                                 where.c_str(), where.c_str());
+                    return false;
                 }
-                fs::create_directories(where.file().parent_path(), ec);
+                fs::create_directories(loc.file().parent_path(), ec);
             }
         }
-        db::Database d = db::Database::open(where);
+        db::Database d = db::Database::open(loc, o);
         transfer::Context c;
         c.controller = line;
-        if (const auto m = args.value("--machine")) {
-            if (!d.hasMachine(*m)) {
-                std::fprintf(stderr, "k528 link: no machine \"%s\" in %s\n", m->c_str(),
-                             where.text().c_str());
-                return std::nullopt;
+        if (machine) {
+            const auto m = d.machine(*machine);
+            if (!m) {
+                std::fprintf(stderr, "k528 link: no machine \"%s\" in %s; nothing was sent\n",
+                             machine->c_str(), where.c_str());
+                return false;
             }
-            c.machine = *m;
-        } else if (!fileMachine.empty() && d.hasMachine(fileMachine)) {
-            c.machine = fileMachine;
+            c.machine = *machine;
+            c.revision = m->revision;
         }
-        if (!c.machine.empty())
-            c.revision = d.machine(c.machine)->revision;
-        return TransferRecord(std::move(d), std::move(c));
+        record.emplace(TransferRecord(std::move(d), std::move(c)));
+        return true;
     } catch (const db::Error& e) {
-        std::fprintf(stderr, "k528 link: the transfer log: %s\n", e.what());
-        return std::nullopt;
+        if (required) {
+            std::fprintf(stderr, "k528 link: the transfer log: %s; nothing was sent\n", e.what());
+            return false;
+        }
+        std::fprintf(stderr, "k528 link: warning: this transfer is not on record (%s: %s)\n",
+                     where.c_str(), e.what());
+        return true;
     }
+}
+
+bool TransferRecord::releasedPlan(link::PushPlan& plan) {
+    try {
+        plan = transfer::releasedPlan(db_, where_.machine, link::k528Map(), &where_.revision);
+    } catch (const db::Error& e) {
+        std::fprintf(stderr, "k528 link: %s\n", e.what());
+        return false;
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "k528 link: %s\n", e.what());
+        return false;
+    }
+    if (plan.programs.empty())
+        std::fprintf(stderr, "k528 link: machine %s has no released program: pushing its C, R "
+                             "and messages only\n",
+                     where_.machine.c_str());
+    return true;
 }
 
 bool TransferRecord::mayPush(const link::PushPlan& plan) {
@@ -60,12 +88,17 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
                                  "allows it: push.unreleased)\n",
                          where_.machine.c_str());
         if (!check.allowed)
-            std::fprintf(stderr, "k528 link: %s\n", check.message.c_str());
+            std::fprintf(stderr, "k528 link: %s\nnothing was sent\n", check.message.c_str());
         return check.allowed;
     } catch (const db::Error& e) {
-        std::fprintf(stderr, "k528 link: %s\n", e.what());
+        std::fprintf(stderr, "k528 link: %s; nothing was sent\n", e.what());
         return false;
     }
+}
+
+void TransferRecord::setIdentity(const std::string& identity) {
+    if (!identity.empty())
+        where_.controller += " (" + identity + ")";
 }
 
 void TransferRecord::record(const db::TransferEntry& e) {

@@ -1,9 +1,10 @@
 // The transfer log of `k528 link push` and `pull` (docs/database.md,
-// *Transfers*): each writes an entry in the shop's database — `--db
-// LOCATION`, else $K528_DB, else the data folder's file (created on first
-// use) — naming the database's machine (`--machine NAME`; for a machine file
-// of a database machine, that machine), the line and what moved. A push for
-// a database machine takes released programs only (transfer::checkReleased).
+// *Transfers on record*): each writes an entry in the shop's database —
+// `--db LOCATION`, else $K528_DB, else the data folder's file (created on
+// first use) — naming the line, the database's machine (`--machine NAME`)
+// and what moved. A push for a database machine (`--machine`) takes its
+// released programs only (transfer::checkReleased); `push --machine NAME`
+// without a file pushes the machine as released (transfer::releasedPlan).
 #pragma once
 
 #include "args.h"
@@ -18,10 +19,16 @@ namespace k528::cli {
 
 class TransferRecord {
 public:
-    // The database of the log, and the machine: nullopt after printing why
-    // (exit 2). `fileMachine`: the name a machine file gives.
-    static std::optional<TransferRecord> open(const Args& args, const std::string& fileMachine,
-                                              const std::string& line);
+    // The log's database and the machine. A database the user named (--db,
+    // $K528_DB) or a machine (--machine) must be usable: false after saying
+    // why (nothing may be sent then). The default database that cannot be
+    // opened only costs the record: a warning, `record` stays empty, true.
+    static bool open(const Args& args, const std::string& line, std::optional<TransferRecord>& record);
+
+    const std::string& machine() const { return where_.machine; }
+    // The database machine as released, for `push --machine NAME` without a
+    // file: false after saying why.
+    bool releasedPlan(link::PushPlan& plan);
     // A push for a database machine: false after printing which programs are
     // not released (nothing is sent then).
     bool mayPush(const link::PushPlan& plan);
@@ -29,6 +36,8 @@ public:
                     const link::PushReport& report, const link::LinkError& error);
     void recordPull(const link::RegisterMap& map, const link::PullResult& pulled,
                     const link::LinkError& error);
+    // What the controller said it is, added to the line in the entry.
+    void setIdentity(const std::string& identity);
 
 private:
     TransferRecord(db::Database db, transfer::Context where)
