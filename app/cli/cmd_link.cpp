@@ -352,7 +352,11 @@ int runLinkQt(std::span<const std::string> argv) {
     // database machine, send nothing.
     std::optional<TransferRecord> record;
     if (cmd == "push" || cmd == "pull") {
-        const std::string lineText = line->port.toStdString() + " address " + std::to_string(line->address);
+        // The line as a database machine's `line` names it (cli.md).
+        const std::string lineText =
+            isTcpLine(args) ? "tcp://" + line->port.toStdString() + "/" + std::to_string(line->address)
+                            : "serial:" + line->port.toStdString() + "?baud=" + std::to_string(line->baud) +
+                                  "&address=" + std::to_string(line->address);
         if (!TransferRecord::open(args, lineText, record))
             return ExitUsage;
         if (pushReleased && !(record && record->releasedPlan(plan)))

@@ -111,7 +111,7 @@ private slots:
         QCOMPARE(e["result"].toString(), QString("ok"));
         QCOMPARE(e["machine"].toString(), QString("training-lathe"));
         QCOMPARE(e["revision"].toInt(), 1);
-        QVERIFY2(e["controller"].toString().contains(b_) && e["controller"].toString().contains("address 1"),
+        QVERIFY2(e["controller"].toString().startsWith("serial:" + b_ + "?baud=115200&address=1"),
                  qPrintable(e["controller"].toString()));
         QVERIFY(!e["user"].toString().isEmpty());
         QVERIFY(!e["host"].toString().isEmpty());
