@@ -31,6 +31,7 @@
 #include "scope/scope_dock.h"
 #include "history/history_dock.h"
 #include "training/training_pane.h"
+#include "proveout/proveout_pane.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "session/program_loader.h"
@@ -244,6 +245,7 @@ void MainWindow::createDocks() {
     });
     connect(static_cast<TrainingPane*>(training->widget()), &TrainingPane::lineActivated, programEditor_,
             &EditorTab::showLine);
+    addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
     // The debugger of the editor in a dock of its own (the technologist
     // shows it on demand).
     debuggerDock_ = addDock("dock.debugger", Qt::RightDockWidgetArea);
@@ -307,6 +309,8 @@ void MainWindow::createMenus() {
     if (auto* history = findChild<QDockWidget*>("dock.history"))
         viewMenu_->addAction(history->toggleViewAction());
     viewMenu_->addAction(debuggerDock_->toggleViewAction());
+    if (auto* d = findChild<QDockWidget*>("dock.proveout"))
+        viewMenu_->addAction(d->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);
