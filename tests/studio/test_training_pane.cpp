@@ -17,6 +17,7 @@
 #include <QScreen>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -150,7 +151,7 @@ private slots:
     // inside the window, the attempt graded; a screenshot of each for a look
     // (build/…/tests/screenshots/training-pane-<lang>-<screen>.png).
     void theWholeWindowInEachLanguage() {
-        for (const QString lang : {QStringLiteral("ru"), QStringLiteral("en")}) {
+        for (const QString& lang : {QStringLiteral("ru"), QStringLiteral("en")}) {
             QVERIFY(setLanguage(lang));
             MainWindow w;
             w.placeOnScreen();
