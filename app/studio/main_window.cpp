@@ -245,6 +245,7 @@ void MainWindow::createDocks() {
     });
     connect(static_cast<TrainingPane*>(training->widget()), &TrainingPane::lineActivated, programEditor_,
             &EditorTab::showLine);
+    tabifyDockWidget(backplotDock, training); // its home: a tab of the backplot, not one more row
     addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
     // The debugger of the editor in a dock of its own (the technologist
     // shows it on demand).
