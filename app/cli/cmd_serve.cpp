@@ -1,6 +1,8 @@
 // k528 serve --port DEVICE [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
 // (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
-// K923 — as a Modbus RTU server (the plugin's QModbusRtuSerialServer) over
+// K923 — as a Modbus RTU server (--keys: the K923's keys, WAIT:S, and the
+// pendant's buttons PUSH:NAME, HOLD:NAME:S, PULL:ESTOP as `k528 panel
+// --machine` takes them, so a served controller can run a program) (the plugin's QModbusRtuSerialServer) over
 // core's ControllerImage, in real time until SIGINT/SIGTERM. It answers the
 // bus counters of function 08 and names itself to function 17.
 #include "cli.h"
@@ -8,6 +10,7 @@
 #include "link/transport.h"
 #include "link_line.h"
 #include "machine/simulation.h"
+#include "machine_buttons.h"
 #include "machine_profile.h"
 #include "panel/keys.h"
 #include "panel/panel.h"
@@ -34,7 +37,7 @@ int runServeQt(std::span<const std::string> argv) {
     const auto line = lineSettings(args);
     if (!line)
         return ExitUsage;
-    using Step = std::variant<panel::KeyPress, std::int64_t>;
+    using Step = std::variant<panel::KeyPress, std::int64_t, ButtonStep>;
     std::vector<Step> steps;
     for (const std::string& token : panel::splitKeys(args.value("--keys").value_or(""))) {
         if (token.size() > 5 && (token.rfind("WAIT:", 0) == 0 || token.rfind("wait:", 0) == 0)) {
@@ -42,6 +45,13 @@ int runServeQt(std::span<const std::string> argv) {
             if (!s || *s < 0 || *s > 1e6)
                 return usageError("bad time in --keys token '" + token + "': WAIT:S takes seconds");
             steps.emplace_back(static_cast<std::int64_t>(std::llround(*s * 1000.0)));
+        } else if (const std::string t = upperToken(token.substr(0, 5));
+                   t == "PUSH:" || t == "HOLD:" || t == "PULL:") {
+            std::string error;
+            const auto b = parseButton(token, error);
+            if (!b)
+                return usageError(error);
+            steps.emplace_back(*b);
         } else if (const auto k = panel::parseKey(token)) {
             steps.emplace_back(*k);
         } else {
@@ -64,6 +74,8 @@ int runServeQt(std::span<const std::string> argv) {
     for (const Step& s : steps) {
         if (const auto* k = std::get_if<panel::KeyPress>(&s))
             k923.press(*k);
+        else if (const auto* b = std::get_if<ButtonStep>(&s))
+            pressButton(*sim, *b);
         else
             sim->advance(std::get<std::int64_t>(s));
     }

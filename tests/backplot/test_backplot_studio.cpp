@@ -72,6 +72,8 @@ struct Studio {
         f.write(text);
         f.close();
         editor->setCloseQuestion([](const QString&) { return studio::EditorTab::CloseChoice::Discard; });
+        editor->setPreviewBeforeSending(false); // the preview is the controller tests'
+
         editor->openFile(path);
     }
     // Loads the editor's file into the session's controller and shows L1's path.
