@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>CloseButton</name>
+    <message>
+        <source>Close Tab</source>
+        <translation>Close Tab</translation>
+    </message>
+</context>
+<context>
     <name>FaultTexts</name>
     <message>
         <source>spindle</source>
@@ -140,6 +147,37 @@
     </message>
 </context>
 <context>
+    <name>QsciScintilla</name>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Undo</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Redo</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t</source>
+        <translation>Cu&amp;t</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copy</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>&amp;Paste</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Delete</translation>
+    </message>
+    <message>
+        <source>Select All</source>
+        <translation>Select All</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -216,6 +254,10 @@
     <message>
         <source>%1 is the database this window uses: it is not read as a program</source>
         <translation>%1 is the database this window uses: it is not read as a program</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3: %4</source>
+        <translation>%1:%2: %3: %4</translation>
     </message>
 </context>
 <context>
@@ -452,10 +494,6 @@
         <translation>Axis Z (C74)</translation>
     </message>
     <message>
-        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
-        <translation>Formula 1: run-up from 0 to Vmax in Tразг</translation>
-    </message>
-    <message>
         <source>Formula 2: braking from Vmax over S</source>
         <translation>Formula 2: braking from Vmax over S</translation>
     </message>
@@ -466,10 +504,6 @@
     <message>
         <source>Vmax, mm/min</source>
         <translation>Vmax, mm/min</translation>
-    </message>
-    <message>
-        <source>Tразг, ms</source>
-        <translation>Tразг, ms</translation>
     </message>
     <message>
         <source>S, mm of braking</source>
@@ -486,10 +520,6 @@
     <message>
         <source>Formula</source>
         <translation>Formula</translation>
-    </message>
-    <message>
-        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
-        <translation>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</translation>
     </message>
     <message>
         <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
@@ -512,20 +542,32 @@
         <translation>Why formula 1 gives twice the value</translation>
     </message>
     <message>
-        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
-        <translation>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
-    </message>
-    <message>
-        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
-        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
-    </message>
-    <message>
         <source>Set C%1 to %2</source>
         <translation>Set C%1 to %2</translation>
     </message>
     <message>
         <source>calculator: %1 → C%2 = %3</source>
         <translation>calculator: %1 → C%2 = %3</translation>
+    </message>
+    <message>
+        <source>Formula 1: run-up from 0 to Vmax in Tacc</source>
+        <translation>Formula 1: run-up from 0 to Vmax in Tacc</translation>
+    </message>
+    <message>
+        <source>Tacc, ms</source>
+        <translation>Tacc, ms</translation>
+    </message>
+    <message>
+        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tacc, Vmax in discretes/min, Tacc in ms: 0.8533 · %1 / %2 = %3.</source>
+        <translation>Formula 1 as printed: C = 0.8533 · Vmax / Tacc, Vmax in discretes/min, Tacc in ms: 0.8533 · %1 / %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
+        <translation>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
+    </message>
+    <message>
+        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
+        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
     </message>
 </context>
 <context>
@@ -566,10 +608,6 @@
         <translation>Range</translation>
     </message>
     <message>
-        <source>Address (Е.1)</source>
-        <translation>Address (Е.1)</translation>
-    </message>
-    <message>
         <source>Value</source>
         <translation>Value</translation>
     </message>
@@ -580,6 +618,10 @@
     <message>
         <source>C%1: «%2» is not a whole number</source>
         <translation>C%1: «%2» is not a whole number</translation>
+    </message>
+    <message>
+        <source>Address (table E.1)</source>
+        <translation>Address (table E.1)</translation>
     </message>
 </context>
 <context>
@@ -1138,24 +1180,12 @@
         <translation>Hold</translation>
     </message>
     <message>
-        <source>«Стоп»: the motion stops, «Пуск» continues</source>
-        <translation>«Стоп»: the motion stops, «Пуск» continues</translation>
-    </message>
-    <message>
         <source>Continue</source>
         <translation>Continue</translation>
     </message>
     <message>
-        <source>«Пуск»: continue the held program</source>
-        <translation>«Пуск»: continue the held program</translation>
-    </message>
-    <message>
         <source>Single frame</source>
         <translation>Single frame</translation>
-    </message>
-    <message>
-        <source>Stop after each frame; «Пуск» runs the next one</source>
-        <translation>Stop after each frame; «Пуск» runs the next one</translation>
     </message>
     <message>
         <source>Run to cursor</source>
@@ -1170,16 +1200,8 @@
         <translation>Stop</translation>
     </message>
     <message>
-        <source>«Сброс»: the program ends without continuation</source>
-        <translation>«Сброс»: the program ends without continuation</translation>
-    </message>
-    <message>
         <source>Reset</source>
         <translation>Reset</translation>
-    </message>
-    <message>
-        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
-        <translation>«Сброс» and ESC: end the program and acknowledge the messages</translation>
     </message>
     <message>
         <source>Speed</source>
@@ -1234,6 +1256,26 @@
         <translation>Meaning</translation>
     </message>
     <message>
+        <source>Like STOP on the machine's panel: the motion stops, CYCLE START continues</source>
+        <translation>Like STOP on the machine's panel: the motion stops, CYCLE START continues</translation>
+    </message>
+    <message>
+        <source>Like CYCLE START: continue the held program</source>
+        <translation>Like CYCLE START: continue the held program</translation>
+    </message>
+    <message>
+        <source>Stop after each frame; CYCLE START runs the next one</source>
+        <translation>Stop after each frame; CYCLE START runs the next one</translation>
+    </message>
+    <message>
+        <source>Like RESET: the program ends without continuation</source>
+        <translation>Like RESET: the program ends without continuation</translation>
+    </message>
+    <message>
+        <source>RESET and ESC: end the program and acknowledge the messages</source>
+        <translation>RESET and ESC: end the program and acknowledge the messages</translation>
+    </message>
+    <message>
         <source>the file</source>
         <translation>the file</translation>
     </message>
@@ -1267,10 +1309,6 @@
     <message>
         <source>Reference point of %1…</source>
         <translation>Reference point of %1…</translation>
-    </message>
-    <message>
-        <source>АВТОМАТ was refused: %1</source>
-        <translation>АВТОМАТ was refused: %1</translation>
     </message>
     <message>
         <source>Program L%1 was refused: %2</source>
@@ -1329,10 +1367,6 @@
         <translation>Running %1</translation>
     </message>
     <message>
-        <source>M00 at %1: «Пуск» continues</source>
-        <translation>M00 at %1: «Пуск» continues</translation>
-    </message>
-    <message>
         <source>Breakpoint: before %1</source>
         <translation>Breakpoint: before %1</translation>
     </message>
@@ -1345,10 +1379,6 @@
         <translation>Run to cursor: before %1</translation>
     </message>
     <message>
-        <source>Held at %1: «Пуск» continues</source>
-        <translation>Held at %1: «Пуск» continues</translation>
-    </message>
-    <message>
         <source>Ended at %1</source>
         <translation>Ended at %1</translation>
     </message>
@@ -1359,10 +1389,6 @@
     <message>
         <source>the emergency stop is pressed on the machine's panel</source>
         <translation>the emergency stop is pressed on the machine's panel</translation>
-    </message>
-    <message>
-        <source>the K923 is in %1, not АВТОМАТ</source>
-        <translation>the K923 is in %1, not АВТОМАТ</translation>
     </message>
     <message>
         <source>the positioner shows message %1: %2</source>
@@ -1381,12 +1407,28 @@
         <translation>The machine is paused (Simulation &gt; Pause the machine): the program goes on when it runs.</translation>
     </message>
     <message>
-        <source>«Пуск» is held down on the machine's panel: release it, then Run again.</source>
-        <translation>«Пуск» is held down on the machine's panel: release it, then Run again.</translation>
+        <source>the K923 is in %1, not in automatic mode</source>
+        <translation>the K923 is in %1, not in automatic mode</translation>
     </message>
     <message>
-        <source>«Пуск» was not taken: %1.</source>
-        <translation>«Пуск» was not taken: %1.</translation>
+        <source>Automatic mode was refused: %1</source>
+        <translation>Automatic mode was refused: %1</translation>
+    </message>
+    <message>
+        <source>CYCLE START is held down on the machine's panel: release it, then Run again.</source>
+        <translation>CYCLE START is held down on the machine's panel: release it, then Run again.</translation>
+    </message>
+    <message>
+        <source>CYCLE START was not taken: %1.</source>
+        <translation>CYCLE START was not taken: %1.</translation>
+    </message>
+    <message>
+        <source>M00 at %1: CYCLE START continues</source>
+        <translation>M00 at %1: CYCLE START continues</translation>
+    </message>
+    <message>
+        <source>Held at %1: CYCLE START continues</source>
+        <translation>Held at %1: CYCLE START continues</translation>
     </message>
 </context>
 <context>
@@ -1956,14 +1998,6 @@ Its comment stays: %3</translation>
         <translation>Result R</translation>
     </message>
     <message>
-        <source>Operand a (number or R…)</source>
-        <translation>Operand a (number or R…)</translation>
-    </message>
-    <message>
-        <source>Operand b (number or R…)</source>
-        <translation>Operand b (number or R…)</translation>
-    </message>
-    <message>
         <source>Condition R (&gt; 0)</source>
         <translation>Condition R (&gt; 0)</translation>
     </message>
@@ -2000,20 +2034,28 @@ Its comment stays: %3</translation>
         <translation>M: a list of numbers, e.g. «3 8»</translation>
     </message>
     <message>
-        <source>a: a whole number or R…</source>
-        <translation>a: a whole number or R…</translation>
-    </message>
-    <message>
-        <source>b: a whole number or R…</source>
-        <translation>b: a whole number or R…</translation>
-    </message>
-    <message>
-        <source>R: the number of the R-parameter written</source>
-        <translation>R: the number of the R-parameter written</translation>
-    </message>
-    <message>
         <source>R: the number of the R-parameter tested</source>
         <translation>R: the number of the R-parameter tested</translation>
+    </message>
+    <message>
+        <source>Operand 1 (number or R…)</source>
+        <translation>Operand 1 (number or R…)</translation>
+    </message>
+    <message>
+        <source>Operand 2 (number or R…)</source>
+        <translation>Operand 2 (number or R…)</translation>
+    </message>
+    <message>
+        <source>Operand 1: a whole number or R…</source>
+        <translation>Operand 1: a whole number or R…</translation>
+    </message>
+    <message>
+        <source>Operand 2: a whole number or R…</source>
+        <translation>Operand 2: a whole number or R…</translation>
+    </message>
+    <message>
+        <source>Result: the number of the R-parameter written</source>
+        <translation>Result: the number of the R-parameter written</translation>
     </message>
 </context>
 <context>
@@ -2457,16 +2499,16 @@ Its comment stays: %3</translation>
         <translation>%1, address %2, %3 bit/s</translation>
     </message>
     <message>
+        <source>R-parameters</source>
+        <translation>R-parameters</translation>
+    </message>
+    <message>
         <source>the controller is not connected</source>
         <translation>the controller is not connected</translation>
     </message>
     <message>
         <source>cancelled; what was not committed is as it was</source>
         <translation>cancelled; what was not committed is as it was</translation>
-    </message>
-    <message>
-        <source>R-parameters</source>
-        <translation>R-parameters</translation>
     </message>
     <message>
         <source>the link's map carries no LCD text, no keys, no DAC or servo-tick data</source>
@@ -3047,10 +3089,6 @@ Its comment stays: %3</translation>
         <translation>Preset screen</translation>
     </message>
     <message>
-        <source>Meaning (appendix Л)</source>
-        <translation>Meaning (appendix Л)</translation>
-    </message>
-    <message>
         <source>Discretes</source>
         <translation>Discretes</translation>
     </message>
@@ -3077,6 +3115,10 @@ Its comment stays: %3</translation>
     <message>
         <source>R%1: «%2» is not a number</source>
         <translation>R%1: «%2» is not a number</translation>
+    </message>
+    <message>
+        <source>Meaning (appendix L)</source>
+        <translation>Meaning (appendix L)</translation>
     </message>
 </context>
 <context>

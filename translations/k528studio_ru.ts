@@ -2,6 +2,13 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ru">
 <context>
+    <name>CloseButton</name>
+    <message>
+        <source>Close Tab</source>
+        <translation>Закрыть вкладку</translation>
+    </message>
+</context>
+<context>
     <name>FaultTexts</name>
     <message>
         <source>spindle</source>
@@ -140,6 +147,37 @@
     </message>
 </context>
 <context>
+    <name>QsciScintilla</name>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Отменить</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Повторить</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t</source>
+        <translation>&amp;Вырезать</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Копировать</translation>
+    </message>
+    <message>
+        <source>&amp;Paste</source>
+        <translation>Вст&amp;авить</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Удалить</translation>
+    </message>
+    <message>
+        <source>Select All</source>
+        <translation>Выделить всё</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -216,6 +254,10 @@
     <message>
         <source>%1 is the database this window uses: it is not read as a program</source>
         <translation>%1 — база данных, с которой работает это окно: как программа она не читается</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3: %4</source>
+        <translation>%1:%2: %3: %4</translation>
     </message>
 </context>
 <context>
@@ -452,10 +494,6 @@
         <translation>Ось Z (C74)</translation>
     </message>
     <message>
-        <source>Formula 1: run-up from 0 to Vmax in Tразг</source>
-        <translation>Формула 1: разгон от 0 до Vmax за Tразг</translation>
-    </message>
-    <message>
         <source>Formula 2: braking from Vmax over S</source>
         <translation>Формула 2: торможение с Vmax на пути S</translation>
     </message>
@@ -466,10 +504,6 @@
     <message>
         <source>Vmax, mm/min</source>
         <translation>Vmax, мм/мин</translation>
-    </message>
-    <message>
-        <source>Tразг, ms</source>
-        <translation>Tразг, мс</translation>
     </message>
     <message>
         <source>S, mm of braking</source>
@@ -486,10 +520,6 @@
     <message>
         <source>Formula</source>
         <translation>Формула</translation>
-    </message>
-    <message>
-        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: 0.8533 · %1 / %2 = %3.</source>
-        <translation>Формула 1, как напечатана: C = 0.8533 · Vmax / Tразг, Vmax в дискретах/мин, Tразг в мс: 0.8533 · %1 / %2 = %3.</translation>
     </message>
     <message>
         <source>Formula 2 as printed: C = 3.556·10⁻⁶ · Vmax² / S, Vmax in discretes/min, S in discretes: 3.556·10⁻⁶ · %1² / %2 = %3.</source>
@@ -512,20 +542,32 @@
         <translation>Почему формула 1 даёт вдвое большее значение</translation>
     </message>
     <message>
-        <source>Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
-        <translation>Таблица Е.1 приводит для параметра 22 три формулы. Формула 3 задаёт единицу: C = 25600·A/Kд. Торможение с V до 0 на пути S требует A = V²/(2S); по формуле 3 это 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — коэффициент 3.556 формулы 2, округлённый. Разгон от 0 до V за T требует A = V/T, то есть 25600/60000·V/T = 0.4267·V/T; в формуле 1 напечатано 0.8533 — вдвое больше.</translation>
-    </message>
-    <message>
-        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
-        <translation>Две формулы против одной: K528 Studio принимает единицу формул 2 и 3 (docs/machine-constants.md). Значение по формуле 1, как она напечатана, разгоняет ось вдвое быстрее описанного (2000 из приложения Ж для «2 с до 5000 мм/мин» здесь разгоняет за 1.07 с). Вводите согласованное значение.</translation>
-    </message>
-    <message>
         <source>Set C%1 to %2</source>
         <translation>Записать C%1 = %2</translation>
     </message>
     <message>
         <source>calculator: %1 → C%2 = %3</source>
         <translation>калькулятор: %1 → C%2 = %3</translation>
+    </message>
+    <message>
+        <source>Formula 1: run-up from 0 to Vmax in Tacc</source>
+        <translation>Формула 1: разгон от 0 до Vmax за Tразг</translation>
+    </message>
+    <message>
+        <source>Tacc, ms</source>
+        <translation>Tразг, мс</translation>
+    </message>
+    <message>
+        <source>Formula 1 as printed: C = 0.8533 · Vmax / Tacc, Vmax in discretes/min, Tacc in ms: 0.8533 · %1 / %2 = %3.</source>
+        <translation>Формула 1, как напечатана: C = 0.8533 · Vmax / Tразг, Vmax в дискретах/мин, Tразг в мс: 0.8533 · %1 / %2 = %3.</translation>
+    </message>
+    <message>
+        <source>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
+        <translation>Таблица Е.1 приводит для параметра 22 три формулы. Формула 3 задаёт единицу: C = 25600·A/Kд. Торможение с V до 0 на пути S требует A = V²/(2S); по формуле 3 это 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — коэффициент 3.556 формулы 2, округлённый. Разгон от 0 до V за T требует A = V/T, то есть 25600/60000·V/T = 0.4267·V/T; в формуле 1 напечатано 0.8533 — вдвое больше.</translation>
+    </message>
+    <message>
+        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
+        <translation>Две формулы против одной: K528 Studio принимает единицу формул 2 и 3 (docs/machine-constants.md). Значение по формуле 1, как она напечатана, разгоняет ось вдвое быстрее описанного (2000 из приложения Ж для «2 с до 5000 мм/мин» здесь разгоняет за 1.07 с). Вводите согласованное значение.</translation>
     </message>
 </context>
 <context>
@@ -566,10 +608,6 @@
         <translation>Диапазон</translation>
     </message>
     <message>
-        <source>Address (Е.1)</source>
-        <translation>Адрес (Е.1)</translation>
-    </message>
-    <message>
         <source>Value</source>
         <translation>Значение</translation>
     </message>
@@ -580,6 +618,10 @@
     <message>
         <source>C%1: «%2» is not a whole number</source>
         <translation>C%1: «%2» — не целое число</translation>
+    </message>
+    <message>
+        <source>Address (table E.1)</source>
+        <translation>Адрес (Е.1)</translation>
     </message>
 </context>
 <context>
@@ -1138,24 +1180,12 @@
         <translation>Стоп</translation>
     </message>
     <message>
-        <source>«Стоп»: the motion stops, «Пуск» continues</source>
-        <translation>«Стоп»: перемещение останавливается, «Пуск» продолжает</translation>
-    </message>
-    <message>
         <source>Continue</source>
         <translation>Продолжить</translation>
     </message>
     <message>
-        <source>«Пуск»: continue the held program</source>
-        <translation>«Пуск»: продолжить остановленную программу</translation>
-    </message>
-    <message>
         <source>Single frame</source>
         <translation>Покадрово</translation>
-    </message>
-    <message>
-        <source>Stop after each frame; «Пуск» runs the next one</source>
-        <translation>Останов после каждого кадра; «Пуск» выполняет следующий</translation>
     </message>
     <message>
         <source>Run to cursor</source>
@@ -1170,16 +1200,8 @@
         <translation>Прервать</translation>
     </message>
     <message>
-        <source>«Сброс»: the program ends without continuation</source>
-        <translation>«Сброс»: программа прерывается без возможности продолжения</translation>
-    </message>
-    <message>
         <source>Reset</source>
         <translation>Сброс</translation>
-    </message>
-    <message>
-        <source>«Сброс» and ESC: end the program and acknowledge the messages</source>
-        <translation>«Сброс» и ESC: прервать программу и квитировать сообщения</translation>
     </message>
     <message>
         <source>Speed</source>
@@ -1234,6 +1256,26 @@
         <translation>Назначение</translation>
     </message>
     <message>
+        <source>Like STOP on the machine's panel: the motion stops, CYCLE START continues</source>
+        <translation>«Стоп»: перемещение останавливается, «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Like CYCLE START: continue the held program</source>
+        <translation>«Пуск»: продолжить остановленную программу</translation>
+    </message>
+    <message>
+        <source>Stop after each frame; CYCLE START runs the next one</source>
+        <translation>Останов после каждого кадра; «Пуск» выполняет следующий</translation>
+    </message>
+    <message>
+        <source>Like RESET: the program ends without continuation</source>
+        <translation>«Сброс»: программа прерывается без возможности продолжения</translation>
+    </message>
+    <message>
+        <source>RESET and ESC: end the program and acknowledge the messages</source>
+        <translation>«Сброс» и ESC: прервать программу и квитировать сообщения</translation>
+    </message>
+    <message>
         <source>the file</source>
         <translation>файл</translation>
     </message>
@@ -1267,10 +1309,6 @@
     <message>
         <source>Reference point of %1…</source>
         <translation>Привязка к базовой точке по %1…</translation>
-    </message>
-    <message>
-        <source>АВТОМАТ was refused: %1</source>
-        <translation>АВТОМАТ не принят: %1</translation>
     </message>
     <message>
         <source>Program L%1 was refused: %2</source>
@@ -1329,10 +1367,6 @@
         <translation>Выполняется %1</translation>
     </message>
     <message>
-        <source>M00 at %1: «Пуск» continues</source>
-        <translation>M00 в %1: «Пуск» продолжает</translation>
-    </message>
-    <message>
         <source>Breakpoint: before %1</source>
         <translation>Точка останова: перед %1</translation>
     </message>
@@ -1345,10 +1379,6 @@
         <translation>До курсора: перед %1</translation>
     </message>
     <message>
-        <source>Held at %1: «Пуск» continues</source>
-        <translation>Остановлена в %1: «Пуск» продолжает</translation>
-    </message>
-    <message>
         <source>Ended at %1</source>
         <translation>Закончена в %1</translation>
     </message>
@@ -1359,10 +1389,6 @@
     <message>
         <source>the emergency stop is pressed on the machine's panel</source>
         <translation>на пульте станка нажат аварийный стоп</translation>
-    </message>
-    <message>
-        <source>the K923 is in %1, not АВТОМАТ</source>
-        <translation>K923 в режиме %1, а не АВТОМАТ</translation>
     </message>
     <message>
         <source>the positioner shows message %1: %2</source>
@@ -1381,12 +1407,28 @@
         <translation>Станок на паузе (Станок &gt; Пауза): программа продолжится, когда станок пойдёт.</translation>
     </message>
     <message>
-        <source>«Пуск» is held down on the machine's panel: release it, then Run again.</source>
+        <source>the K923 is in %1, not in automatic mode</source>
+        <translation>K923 в режиме %1, а не АВТОМАТ</translation>
+    </message>
+    <message>
+        <source>Automatic mode was refused: %1</source>
+        <translation>АВТОМАТ не принят: %1</translation>
+    </message>
+    <message>
+        <source>CYCLE START is held down on the machine's panel: release it, then Run again.</source>
         <translation>Кнопка «Пуск» на пульте станка нажата: отпустите её и снова нажмите «Выполнить».</translation>
     </message>
     <message>
-        <source>«Пуск» was not taken: %1.</source>
+        <source>CYCLE START was not taken: %1.</source>
         <translation>«Пуск» не принят: %1.</translation>
+    </message>
+    <message>
+        <source>M00 at %1: CYCLE START continues</source>
+        <translation>M00 в %1: «Пуск» продолжает</translation>
+    </message>
+    <message>
+        <source>Held at %1: CYCLE START continues</source>
+        <translation>Остановлена в %1: «Пуск» продолжает</translation>
     </message>
 </context>
 <context>
@@ -1956,14 +1998,6 @@ Its comment stays: %3</source>
         <translation>Результат R</translation>
     </message>
     <message>
-        <source>Operand a (number or R…)</source>
-        <translation>Операнд a (число или R…)</translation>
-    </message>
-    <message>
-        <source>Operand b (number or R…)</source>
-        <translation>Операнд b (число или R…)</translation>
-    </message>
-    <message>
         <source>Condition R (&gt; 0)</source>
         <translation>Условие R (&gt; 0)</translation>
     </message>
@@ -2000,20 +2034,28 @@ Its comment stays: %3</source>
         <translation>M: список номеров, например «3 8»</translation>
     </message>
     <message>
-        <source>a: a whole number or R…</source>
-        <translation>a: целое число или R…</translation>
-    </message>
-    <message>
-        <source>b: a whole number or R…</source>
-        <translation>b: целое число или R…</translation>
-    </message>
-    <message>
-        <source>R: the number of the R-parameter written</source>
-        <translation>R: номер записываемого R-параметра</translation>
-    </message>
-    <message>
         <source>R: the number of the R-parameter tested</source>
         <translation>R: номер проверяемого R-параметра</translation>
+    </message>
+    <message>
+        <source>Operand 1 (number or R…)</source>
+        <translation>Операнд 1 (число или R…)</translation>
+    </message>
+    <message>
+        <source>Operand 2 (number or R…)</source>
+        <translation>Операнд 2 (число или R…)</translation>
+    </message>
+    <message>
+        <source>Operand 1: a whole number or R…</source>
+        <translation>Операнд 1: целое число или R…</translation>
+    </message>
+    <message>
+        <source>Operand 2: a whole number or R…</source>
+        <translation>Операнд 2: целое число или R…</translation>
+    </message>
+    <message>
+        <source>Result: the number of the R-parameter written</source>
+        <translation>Результат: номер записываемого R-параметра</translation>
     </message>
 </context>
 <context>
@@ -2457,16 +2499,16 @@ Its comment stays: %3</source>
         <translation>%1, адрес %2, %3 бит/с</translation>
     </message>
     <message>
+        <source>R-parameters</source>
+        <translation>R-параметры</translation>
+    </message>
+    <message>
         <source>the controller is not connected</source>
         <translation>контроллер не подключён</translation>
     </message>
     <message>
         <source>cancelled; what was not committed is as it was</source>
         <translation>отменено; то, что не было записано, осталось как было</translation>
-    </message>
-    <message>
-        <source>R-parameters</source>
-        <translation>R-параметры</translation>
     </message>
     <message>
         <source>the link's map carries no LCD text, no keys, no DAC or servo-tick data</source>
@@ -3047,10 +3089,6 @@ Its comment stays: %3</source>
         <translation>Экран УСТ</translation>
     </message>
     <message>
-        <source>Meaning (appendix Л)</source>
-        <translation>Назначение (приложение Л)</translation>
-    </message>
-    <message>
         <source>Discretes</source>
         <translation>Дискреты</translation>
     </message>
@@ -3077,6 +3115,10 @@ Its comment stays: %3</source>
     <message>
         <source>R%1: «%2» is not a number</source>
         <translation>R%1: «%2» — не число</translation>
+    </message>
+    <message>
+        <source>Meaning (appendix L)</source>
+        <translation>Назначение (приложение Л)</translation>
     </message>
 </context>
 <context>

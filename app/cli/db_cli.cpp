@@ -132,45 +132,11 @@ int fail(const std::string& message, int code) {
     return code;
 }
 
-std::string readOnlyText(const db::ReadOnlyError& e, Lang lang) {
-    if (lang == Lang::En)
-        return e.what();
-    std::string reason;
-    switch (e.reason()) {
-    case db::ReadOnlyReason::None:
-    case db::ReadOnlyReason::Permission:
-        reason = "нет права на запись";
-        break;
-    case db::ReadOnlyReason::Folder:
-        reason = "нет права создавать файлы в её папке";
-        break;
-    case db::ReadOnlyReason::FileSystem:
-        reason = "файловая система только для чтения";
-        break;
-    case db::ReadOnlyReason::Requested:
-        reason = "открыта только для чтения";
-        break;
-    }
-    std::string s = "база данных доступна только для чтения: " + e.path().string() + " (" + reason + ")";
-    switch (e.refusal()) {
-    case db::ReadOnlyRefusal::Write:
-        return s + "; ничего не записано";
-    case db::ReadOnlyRefusal::Create:
-        return s + "; создать там новую базу данных нельзя";
-    case db::ReadOnlyRefusal::Upgrade:
-        return s + "; её схема старше схемы этой программы, и обновить её нельзя";
-    case db::ReadOnlyRefusal::Recover:
-        return s + "; в ней незавершённая транзакция (горячий журнал -journal), откатить "
-                   "которую может только пользователь с правом записи; файл не изменён";
-    }
-    return s;
-}
-
 int dbFail(const db::Error& e, Lang lang) {
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty())
         return fail(e.what(), ExitInputErrors);
     if (const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e))
-        return fail(readOnlyText(*r, lang), ExitUsage);
+        return fail(r->text(lang), ExitUsage);
     return fail(e.what(), e.kind() == db::ErrorKind::Invalid ? ExitInputErrors : ExitUsage);
 }
 

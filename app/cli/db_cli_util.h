@@ -57,9 +57,6 @@ int fail(const std::string& message, int code = ExitUsage);
 // Prints the error (a read-only database in `lang`); returns the exit code.
 int dbFail(const db::Error& e, Lang lang = Lang::Ru);
 
-// «база данных доступна только для чтения: PATH (нет права на запись); …»
-std::string readOnlyText(const db::ReadOnlyError& e, Lang lang);
-
 bool parseLangOption(const Args& a, Lang& lang);
 
 // "--db PATH" of the subcommand, else the default location.

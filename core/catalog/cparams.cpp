@@ -90,7 +90,7 @@ std::string_view unitEn(Unit u) {
     case Unit::Speed:
         return "10*discretes/min";
     case Unit::FastInputFunction:
-        return "function (tables Е.1.1, Е.1.2)";
+        return "function (tables E.1.1, E.1.2)";
     case Unit::OverrideCode:
         return "override code 0...10";
     case Unit::ProgramNumber:

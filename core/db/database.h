@@ -258,7 +258,8 @@ public:
     std::string checkIntegrity() const;
 
     // The SQLite connection, for the other stores of core/db that share this
-    // file and its rules (db::MessageLog); not for use outside core/db.
+    // file and its rules (db::MessageLog); nullptr on another backend; not for
+    // use outside core/db.
     sqlite3* connection() const;
 
 private:

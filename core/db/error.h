@@ -12,6 +12,10 @@
 
 namespace k528::db {
 
+// The language of texts core renders itself (explanations, findings, the
+// command line's messages).
+enum class Lang { Ru, En };
+
 enum class ErrorKind {
     Io,            // the file cannot be opened, created, read or written
     Foreign,       // not a K528 Studio database (another program's SQLite file, or not SQLite)
@@ -46,9 +50,9 @@ enum class ReadOnlyReason {
     FileSystem, // the file system is mounted read-only
     Requested,  // opened read-only on purpose (OpenOptions::readOnly)
 };
-// "permission denied", "no permission to create files in the folder",
-// "read-only file system", "opened read-only".
-std::string_view readOnlyReasonText(ReadOnlyReason r);
+// "permission denied", "no permission to create files in its folder",
+// "read-only file system", "opened read-only" ("" for None).
+std::string_view readOnlyReasonText(ReadOnlyReason r, Lang lang = Lang::En);
 
 // What a read-only database refused.
 enum class ReadOnlyRefusal {
@@ -69,6 +73,8 @@ public:
     const std::filesystem::path& path() const { return path_; }
     ReadOnlyReason reason() const { return reason_; }
     ReadOnlyRefusal refusal() const { return refusal_; }
+    // The message in `lang` (what() is the English one).
+    std::string text(Lang lang) const;
 
 private:
     std::filesystem::path path_;

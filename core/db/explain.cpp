@@ -124,10 +124,10 @@ std::string explainCValue(const profile::MachineProfile& p, int number, Lang lan
             return t("нет такого канала", "no such channel");
         if (x == cc::kDacChannel)
             return t("канал " + std::to_string(v) + " модуля СМ32.03",
-                     "channel " + std::to_string(v) + " of the СМ32.03 module");
+                     "channel " + std::to_string(v) + " of the CM32.03 module");
         const int module = v <= 2 ? 1 : 2, channel = v % 2 == 1 ? 1 : 2;
         return t(std::to_string(module) + "-й модуль СР34.23, канал " + std::to_string(channel),
-                 "СР34.23 module " + std::to_string(module) + ", channel " +
+                 "CP34.23 module " + std::to_string(module) + ", channel " +
                      std::to_string(channel));
     }
     case cat::Unit::MotionDiscretes:

@@ -4,14 +4,13 @@
 // (Not database-specific; it lives here until core/profile takes it.)
 #pragma once
 
+#include "db/error.h" // Lang
 #include "profile/profile.h"
 
 #include <string>
 #include <string_view>
 
 namespace k528::db {
-
-enum class Lang { Ru, En };
 
 // The meaning of C-parameter `number`'s value in `p` (one line, may be "").
 std::string explainCValue(const profile::MachineProfile& p, int number, Lang lang);

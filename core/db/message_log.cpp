@@ -180,16 +180,9 @@ std::string optField(const std::optional<std::int64_t>& v) {
 
 struct MessageLog::Impl {
     Database& db;
-    std::map<std::string, std::unique_ptr<sql::Stmt>, std::less<>> cache;
-    explicit Impl(Database& d) : db(d) {}
+    sql::StatementCache st;
+    explicit Impl(Database& d) : db(d), st(d.connection()) {}
     sqlite3* c() const { return db.connection(); }
-    sql::Stmt& st(std::string_view text) {
-        auto it = cache.find(text);
-        if (it == cache.end())
-            it = cache.emplace(std::string(text), std::make_unique<sql::Stmt>(c(), text)).first;
-        it->second->reset();
-        return *it->second;
-    }
 };
 
 MessageLog::MessageLog(Database& db) : d_(std::make_unique<Impl>(db)) {
@@ -281,9 +274,7 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
         }
         sql::exec(c, "COMMIT");
     } catch (const Error& e) {
-        for (sqlite3_stmt* s = sqlite3_next_stmt(c, nullptr); s; s = sqlite3_next_stmt(c, s))
-            if (sqlite3_stmt_busy(s))
-                sqlite3_reset(s);
+        sql::resetBusyStatements(c);
         sqlite3_exec(c, "ROLLBACK", nullptr, nullptr, nullptr);
         throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
                                   "; none of the batch's " + std::to_string(events.size()) +

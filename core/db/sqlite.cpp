@@ -8,33 +8,36 @@ namespace k528::db::sql {
     failWith(rc, what, db ? sqlite3_errmsg(db) : sqlite3_errstr(rc));
 }
 
-[[noreturn]] void failWith(int rc, std::string_view what, const std::string& msg) {
-    ErrorKind kind = ErrorKind::Sql;
+namespace {
+
+// The kind of error of an SQLite result code.
+ErrorKind kindOf(int rc) {
     switch (rc & 0xff) {
     case SQLITE_BUSY:
     case SQLITE_LOCKED:
-        kind = ErrorKind::Busy;
-        break;
+        return ErrorKind::Busy;
     case SQLITE_CORRUPT:
     case SQLITE_NOTADB:
-        kind = ErrorKind::Corrupt;
-        break;
+        return ErrorKind::Corrupt;
     case SQLITE_READONLY:
-        kind = ErrorKind::ReadOnly;
-        break;
+        return ErrorKind::ReadOnly;
     case SQLITE_IOERR:
     case SQLITE_CANTOPEN:
     case SQLITE_FULL:
     case SQLITE_PERM:
     case SQLITE_NOLFS:
-        kind = ErrorKind::Io;
-        break;
+        return ErrorKind::Io;
     case SQLITE_CONSTRAINT:
-        kind = ErrorKind::Invalid;
-        break;
+        return ErrorKind::Invalid;
     default:
-        break;
+        return ErrorKind::Sql;
     }
+}
+
+} // namespace
+
+[[noreturn]] void failWith(int rc, std::string_view what, const std::string& msg) {
+    const ErrorKind kind = kindOf(rc);
     std::string text = std::string(what) + ": " + msg;
     if (kind == ErrorKind::Busy)
         text += " (another program kept the database locked longer than the busy timeout)";
@@ -121,6 +124,25 @@ std::optional<std::string> Stmt::optText(int col) const {
 
 bool Stmt::isNull(int col) const {
     return sqlite3_column_type(st_, col) == SQLITE_NULL;
+}
+
+void StatementCache::reset(sqlite3* db) {
+    cache_.clear();
+    db_ = db;
+}
+
+Stmt& StatementCache::operator()(std::string_view text) {
+    auto it = cache_.find(text);
+    if (it == cache_.end())
+        it = cache_.emplace(std::string(text), std::make_unique<Stmt>(db_, text)).first;
+    it->second->reset();
+    return *it->second;
+}
+
+void resetBusyStatements(sqlite3* db) {
+    for (sqlite3_stmt* s = sqlite3_next_stmt(db, nullptr); s; s = sqlite3_next_stmt(db, s))
+        if (sqlite3_stmt_busy(s))
+            sqlite3_reset(s);
 }
 
 void exec(sqlite3* db, std::string_view sqlText) {

@@ -5,6 +5,8 @@
 #include "db/error.h"
 
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -53,6 +55,24 @@ private:
     sqlite3_stmt* st_ = nullptr;
     std::string sql_;
 };
+
+// Prepared statements kept for the life of a connection, found by their text.
+class StatementCache {
+public:
+    explicit StatementCache(sqlite3* db = nullptr) : db_(db) {}
+    // Forgets every statement (before the connection closes) and uses `db`.
+    void reset(sqlite3* db);
+    // The statement of `text`, reset and without bindings.
+    Stmt& operator()(std::string_view text);
+
+private:
+    sqlite3* db_;
+    std::map<std::string, std::unique_ptr<Stmt>, std::less<>> cache_;
+};
+
+// Resets statements left mid-iteration (an exception inside a loop), so no
+// read snapshot outlives the call that made it (before COMMIT or ROLLBACK).
+void resetBusyStatements(sqlite3* db);
 
 // Runs SQL without results (may hold several statements).
 void exec(sqlite3* db, std::string_view sqlText);

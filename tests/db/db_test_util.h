@@ -50,6 +50,14 @@ inline std::filesystem::path tempPath(const QTemporaryDir& dir, const char* name
     return std::filesystem::path(dir.path().toStdString()) / name;
 }
 
+// A number from the environment (the length of a stress run by hand), else `fallback`.
+inline double envNumber(const char* name, double fallback) {
+    const QByteArray v = qgetenv(name);
+    bool ok = false;
+    const double d = v.toDouble(&ok);
+    return ok ? d : fallback;
+}
+
 inline db::WriteOptions by(const std::string& author) {
     db::WriteOptions o;
     o.author = author;

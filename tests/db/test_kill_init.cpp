@@ -31,11 +31,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int iterations() {
-    const QByteArray s = qgetenv("K528_KILL_ITERATIONS");
-    return s.isEmpty() ? 120 : s.toInt();
-}
-
 pid_t startInit(const std::string& db) {
     const std::string cli = K528_CLI;
     std::vector<std::string> args = {cli, "db", "init", "--db", db};
@@ -86,7 +81,7 @@ private slots:
         }
         std::mt19937 rng(528);
         std::uniform_int_distribution<qint64> at(0, initNs);
-        const int n = iterations();
+        const int n = static_cast<int>(envNumber("K528_KILL_ITERATIONS", 120));
         int killed = 0, beforeFile = 0, hotJournals = 0, recovered = 0, completed = 0, journalKills = 0;
         for (int i = 0; i < n; ++i) {
             const std::string db = dir.filePath(QString("k%1.db").arg(i)).toStdString();

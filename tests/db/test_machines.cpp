@@ -429,7 +429,7 @@ private slots:
         QCOMPARE(db::explainCValue(g, 29, Lang::Ru), std::string("= 10 В"));
         QCOMPARE(db::explainCValue(g, 28, Lang::En), std::string("= 11.7 V"));
         QCOMPARE(db::explainCValue(g, 17, Lang::Ru), std::string("1-й модуль СР34.23, канал 1"));
-        QCOMPARE(db::explainCValue(g, 69, Lang::En), std::string("СР34.23 module 2, channel 1"));
+        QCOMPARE(db::explainCValue(g, 69, Lang::En), std::string("CP34.23 module 2, channel 1"));
         QCOMPARE(db::explainCValue(g, 70, Lang::Ru), std::string("канал 2 модуля СМ32.03"));
         QCOMPARE(db::explainCValue(g, 143, Lang::Ru), std::string("L11 (ВЫХОД В ИСХОДНОЕ)"));
         QCOMPARE(db::explainCValue(g, 144, Lang::Ru), std::string("цикл не задан"));

@@ -28,11 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-double phaseSeconds() {
-    const QByteArray s = qgetenv("K528_STRESS_SECONDS");
-    return s.isEmpty() ? 12.0 : s.toDouble();
-}
-
 // Links in /proc/PID/fd that point at a removed file of the database.
 QStringList deletedDescriptors(qint64 pid, const QString& dbPath) {
     QStringList found;
@@ -82,7 +77,7 @@ PeerResult parsePeer(const QString& out) {
 class TestStress : public QObject {
     Q_OBJECT
 
-    // `studios` studio-like processes and the command line, for phaseSeconds().
+    // `studios` studio-like processes and the command line, for K528_STRESS_SECONDS.
     void run(int studios) {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
@@ -94,7 +89,7 @@ class TestStress : public QObject {
             db::Database d = db::Database::open(db.toStdString(), testOptions());
             startRevision = d.machine("grinder-205")->revision;
         }
-        const double seconds = phaseSeconds();
+        const double seconds = envNumber("K528_STRESS_SECONDS", 12);
         std::vector<std::unique_ptr<QProcess>> peers;
         for (int i = 0; i < studios; ++i) {
             auto p = std::make_unique<QProcess>();

@@ -195,8 +195,10 @@ bool BackplotWidget::eventFilter(QObject* o, QEvent* e) {
 }
 
 void BackplotWidget::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange)
+    if (e->type() == QEvent::LanguageChange) {
+        pickLabel_->clear(); // the hint in the new language (a pick names its frame anew)
         retranslate();
+    }
     QWidget::changeEvent(e);
 }
 

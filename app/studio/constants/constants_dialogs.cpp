@@ -9,6 +9,7 @@
 #include "controller/controller.h"
 
 #include <QComboBox>
+#include <QDateTime>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -61,7 +62,12 @@ HistoryDialog::HistoryDialog(const MachineStore& store, int number, QWidget* par
         table_->setRowCount(static_cast<int>(h.size()));
         for (int i = 0; i < static_cast<int>(h.size()); ++i) {
             const db::HistoryEntry& e = h[static_cast<std::size_t>(i)];
-            const QStringList cells{QString::number(e.revision), fromStd(e.at), fromStd(e.author),
+            // The time in the PC's own zone (the database keeps UTC, "…T…Z").
+            const QDateTime at = QDateTime::fromString(fromStd(e.at), Qt::ISODate);
+            const QStringList cells{QString::number(e.revision),
+                                    at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"))
+                                                 : fromStd(e.at),
+                                    fromStd(e.author),
                                     e.change.before ? fromStd(*e.change.before) : tr("(none)"),
                                     e.change.after ? fromStd(*e.change.after) : tr("(none)"),
                                     fromStd(notes[e.revision])};
@@ -149,7 +155,7 @@ CalculatorDialog::CalculatorDialog(ConstantsEditor& editor, QWidget* parent)
     axis_ = new QComboBox(this);
     axis_->addItems({tr("Axis X (C22)"), tr("Axis Z (C74)")});
     formula_ = new QComboBox(this);
-    formula_->addItems({tr("Formula 1: run-up from 0 to Vmax in Tразг"),
+    formula_->addItems({tr("Formula 1: run-up from 0 to Vmax in Tacc"),
                         tr("Formula 2: braking from Vmax over S"), tr("Formula 3: acceleration A")});
     const auto spin = [this](double lo, double hi, double v, int dec) {
         auto* s = new QDoubleSpinBox(this);
@@ -164,7 +170,7 @@ CalculatorDialog::CalculatorDialog(ConstantsEditor& editor, QWidget* parent)
     s_ = spin(0.001, 1e5, 10, 3);
     a_ = spin(0.0001, 100, 0.5, 4);
     vLabel_ = new QLabel(tr("Vmax, mm/min"), this);
-    tLabel_ = new QLabel(tr("Tразг, ms"), this);
+    tLabel_ = new QLabel(tr("Tacc, ms"), this);
     sLabel_ = new QLabel(tr("S, mm of braking"), this);
     aLabel_ = new QLabel(tr("A, m/s²"), this);
     auto* form = new QFormLayout;
@@ -225,7 +231,7 @@ void CalculatorDialog::recalculate() {
         QString formula;
         if (f == 1) {
             r = profile::calc::accelByRunUp(v_->value() * perMm, t_->value(), s);
-            formula = tr("Formula 1 as printed: C = 0.8533 · Vmax / Tразг, Vmax in discretes/min, Tразг in ms: "
+            formula = tr("Formula 1 as printed: C = 0.8533 · Vmax / Tacc, Vmax in discretes/min, Tacc in ms: "
                          "0.8533 · %1 / %2 = %3.")
                           .arg(v_->value() * perMm, 0, 'f', 0)
                           .arg(t_->value(), 0, 'f', 0)
@@ -268,13 +274,13 @@ void CalculatorDialog::recalculate() {
     }
     html += QStringLiteral("<hr><p><b>%1</b></p><p>%2</p><p>%3</p>")
                 .arg(tr("Why formula 1 gives twice the value"),
-                     tr("Table Е.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. "
+                     tr("Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. "
                         "Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is "
                         "25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T "
                         "needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much."),
                      tr("Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). "
                         "A value computed by formula 1 as printed makes the axis accelerate twice as fast as described "
-                        "(appendix Ж's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value."));
+                        "(appendix Zh's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value."));
     explain_->setHtml(html);
     apply_->setText(tr("Set C%1 to %2").arg(number, 3, 10, QChar('0')).arg(consistent_));
 }

@@ -141,14 +141,17 @@ QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
         }
     }
     if (role == Qt::ToolTipRole) {
-        QString t = QStringLiteral("<b>C%1 %2</b> (%3)<br>%4")
-                        .arg(d.number, 3, 10, QChar('0'))
-                        .arg(fromStd(d.name).toHtmlEscaped(), fromStd(d.nameEn).toHtmlEscaped(),
-                             fromStd(russian_ ? d.descriptionRu : d.descriptionEn).toHtmlEscaped());
+        // The name as the K923 shows it; an English window adds our English
+        // name, and the transcription's notes (English: the catalog's, about
+        // how the manual was read).
+        QString t = QStringLiteral("<b>C%1 %2</b>").arg(d.number, 3, 10, QChar('0')).arg(fromStd(d.name).toHtmlEscaped());
+        if (!russian_)
+            t += QStringLiteral(" (%1)").arg(fromStd(d.nameEn).toHtmlEscaped());
+        t += QStringLiteral("<br>") + fromStd(russian_ ? d.descriptionRu : d.descriptionEn).toHtmlEscaped();
         const std::string_view hint = russian_ ? d.hintRu : d.hintEn;
         if (!hint.empty())
             t += QStringLiteral("<br><i>%1</i>").arg(fromStd(hint).toHtmlEscaped());
-        if (!d.note.empty())
+        if (!d.note.empty() && !russian_)
             t += QStringLiteral("<br><small>%1</small>").arg(fromStd(d.note).toHtmlEscaped());
         return t;
     }
@@ -184,7 +187,7 @@ QVariant ConstantsModel::headerData(int section, Qt::Orientation o, int role) co
     case Range:
         return tr("Range");
     case Address:
-        return tr("Address (Е.1)");
+        return tr("Address (table E.1)");
     case Value:
         return tr("Value");
     case Means:

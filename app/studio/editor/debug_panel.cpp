@@ -362,17 +362,17 @@ void DebugPanel::retranslate() {
     runAction_->setText(tr("Run"));
     runAction_->setToolTip(tr("Send the file and run its first program (homing as the operator would), or continue"));
     holdAction_->setText(tr("Hold"));
-    holdAction_->setToolTip(tr("«Стоп»: the motion stops, «Пуск» continues"));
+    holdAction_->setToolTip(tr("Like STOP on the machine's panel: the motion stops, CYCLE START continues"));
     resumeAction_->setText(tr("Continue"));
-    resumeAction_->setToolTip(tr("«Пуск»: continue the held program"));
+    resumeAction_->setToolTip(tr("Like CYCLE START: continue the held program"));
     stepAction_->setText(tr("Single frame"));
-    stepAction_->setToolTip(tr("Stop after each frame; «Пуск» runs the next one"));
+    stepAction_->setToolTip(tr("Stop after each frame; CYCLE START runs the next one"));
     cursorAction_->setText(tr("Run to cursor"));
     cursorAction_->setToolTip(tr("Run until the frame at the cursor, stopping before it"));
     stopAction_->setText(tr("Stop"));
-    stopAction_->setToolTip(tr("«Сброс»: the program ends without continuation"));
+    stopAction_->setToolTip(tr("Like RESET: the program ends without continuation"));
     resetAction_->setText(tr("Reset"));
-    resetAction_->setToolTip(tr("«Сброс» and ESC: end the program and acknowledge the messages"));
+    resetAction_->setToolTip(tr("RESET and ESC: end the program and acknowledge the messages"));
     speedLabel_->setText(tr("Speed"));
     for (int i = 0; i < speed_->count(); ++i) {
         const double f = speed_->itemData(i).toDouble();

@@ -130,7 +130,7 @@ QString DebugSession::whyNoStart() const {
     if (session_->simulation().emergencyStopPressed())
         return tr("the emergency stop is pressed on the machine's panel");
     if (ctl.mode() != engine::Mode::Auto)
-        return tr("the K923 is in %1, not АВТОМАТ")
+        return tr("the K923 is in %1, not in automatic mode")
             .arg(fromView(ru ? engine::modeNameRu(ctl.mode()) : engine::modeNameEn(ctl.mode())));
     const auto alarms = ctl.alarms();
     if (!alarms.empty())
@@ -208,7 +208,7 @@ void DebugSession::nextHoming() {
     // Every axis is ready: АВТОМАТ, the program, «Пуск».
     const engine::OpResult m = ctl.selectMode(engine::Mode::Auto);
     if (!m.ok()) {
-        fail(tr("АВТОМАТ was refused: %1").arg(refusal(m)));
+        fail(tr("Automatic mode was refused: %1").arg(refusal(m)));
         return;
     }
     const engine::OpResult p = ctl.selectProgram(program_);
@@ -291,7 +291,7 @@ void DebugSession::advanced() {
         pressStartNow();
     // Never a silent wait for «Пуск»: held down by someone, or not taken.
     if (startPending_ && now - pendingSinceMs_ > kStartSeenMs) {
-        fail(tr("«Пуск» is held down on the machine's panel: release it, then Run again."));
+        fail(tr("CYCLE START is held down on the machine's panel: release it, then Run again."));
         resumeAtMs_ = -1;
     }
     if (resumeAtMs_ >= 0) {
@@ -299,7 +299,7 @@ void DebugSession::advanced() {
             resumeAtMs_ = -1; // taken
         } else if (now - resumeAtMs_ > kStartSeenMs && !sim.buttonDown(machine::Button::CycleStart)) {
             resumeAtMs_ = -1;
-            emit message(tr("«Пуск» was not taken: %1.").arg(whyNoStart()));
+            emit message(tr("CYCLE START was not taken: %1.").arg(whyNoStart()));
         }
     }
     switch (phase_) {
@@ -341,7 +341,7 @@ void DebugSession::advanced() {
             emit message(tr("L%1 runs.").arg(program_));
         } else if (pressedAtMs_ >= 0 && now - pressedAtMs_ > kStartSeenMs &&
                    !sim.buttonDown(machine::Button::CycleStart)) {
-            fail(tr("«Пуск» was not taken: %1.").arg(whyNoStart()));
+            fail(tr("CYCLE START was not taken: %1.").arg(whyNoStart()));
         }
         break;
     }
@@ -415,7 +415,7 @@ QString DebugSession::statusText() const {
     case engine::ProgramState::WaitingM:
         return tr("Running %1").arg(where);
     case engine::ProgramState::M0:
-        return tr("M00 at %1: «Пуск» continues").arg(where);
+        return tr("M00 at %1: CYCLE START continues").arg(where);
     case engine::ProgramState::Interrupted:
         if (gate_.holding() && gate_.lastStop()) {
             switch (gate_.lastStop()->reason) {
@@ -427,7 +427,7 @@ QString DebugSession::statusText() const {
                 return tr("Run to cursor: before %1").arg(where);
             }
         }
-        return tr("Held at %1: «Пуск» continues").arg(where);
+        return tr("Held at %1: CYCLE START continues").arg(where);
     case engine::ProgramState::Ended:
         return tr("Ended at %1").arg(where);
     case engine::ProgramState::Alarm:

@@ -13,6 +13,7 @@
 #include "session/shop_database.h"
 #include "workspace/elided_label.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QEvent>
 #include <QFile>
@@ -24,6 +25,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QSplitter>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QPointer>
 #include <memory>
@@ -601,6 +603,10 @@ void EditorTab::changeEvent(QEvent* e) {
 }
 
 void EditorTab::retranslate() {
+    // Qt gives a tab's close button its tool tip once, when the tab is made.
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (QWidget* close = tabs_->tabBar()->tabButton(i, QTabBar::RightSide))
+            close->setToolTip(QCoreApplication::translate("CloseButton", "Close Tab"));
     newAction_->setText(tr("New"));
     openAction_->setText(tr("Open…"));
     recentAction_->setText(tr("Recent"));

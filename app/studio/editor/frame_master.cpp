@@ -216,8 +216,8 @@ QLineEdit* FrameMaster::addField(QWidget* page, const QString& name) {
         {"stroke", QT_TR_NOOP("Stroke, mm")}, {"speed", QT_TR_NOOP("Speed, mm/min")},
         {"sigAxis", QT_TR_NOOP("Axis (X or Z)")}, {"signal", QT_TR_NOOP("Signal 1..4")},
         {"target", QT_TR_NOOP("Target, mm")}, {"feed", QT_TR_NOOP("Feed, mm/min")},
-        {"R", QT_TR_NOOP("Result R")}, {"a", QT_TR_NOOP("Operand a (number or R…)")},
-        {"b", QT_TR_NOOP("Operand b (number or R…)")}, {"ifR", QT_TR_NOOP("Condition R (> 0)")},
+        {"R", QT_TR_NOOP("Result R")}, {"a", QT_TR_NOOP("Operand 1 (number or R…)")},
+        {"b", QT_TR_NOOP("Operand 2 (number or R…)")}, {"ifR", QT_TR_NOOP("Condition R (> 0)")},
         {"ifTarget", QT_TR_NOOP("Jump to frame N")}, {"gotoTarget", QT_TR_NOOP("Jump to frame N")},
         {"msgNumber", QT_TR_NOOP("Message number 1..99")}, {"msgText", QT_TR_NOOP("Text (20 characters)")},
     };
@@ -331,17 +331,17 @@ void FrameMaster::rebuild() {
     case Compute: {
         Operand a, c;
         if (!parseOperand(f("a"), a))
-            inputErrors << tr("a: a whole number or R…");
+            inputErrors << tr("Operand 1: a whole number or R…");
         const ArithOp op = static_cast<ArithOp>(op_->currentIndex());
         if (op != ArithOp::None && !parseOperand(f("b"), c))
-            inputErrors << tr("b: a whole number or R…");
+            inputErrors << tr("Operand 2: a whole number or R…");
         QString r = f("R").trimmed();
         if (r.startsWith('R', Qt::CaseInsensitive))
             r = r.mid(1);
         bool ok = false;
         const int target = r.toInt(&ok);
         if (!ok)
-            inputErrors << tr("R: the number of the R-parameter written");
+            inputErrors << tr("Result: the number of the R-parameter written");
         b = buildCompute(h, target, a, op, c);
         break;
     }

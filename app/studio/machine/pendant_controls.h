@@ -54,6 +54,7 @@ class MushroomButton : public QAbstractButton {
 public:
     explicit MushroomButton(QWidget* parent = nullptr);
     void setLegend(const QString& legend);
+    QString legend() const { return legend_; }
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override;
     void setScale(double scale);
@@ -141,6 +142,7 @@ public:
     void setPositions(const QStringList& legends, double spanDegrees = 90);
     QStringList positions() const { return legends_; }
     void setCaption(const QString& caption);
+    QString caption() const { return caption_; }
     int position() const { return position_; }
     void setPosition(int index);           // emits positionChanged when it changes
     QPointF legendCentre(int index) const; // for tests

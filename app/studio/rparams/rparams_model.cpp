@@ -162,7 +162,7 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
         QString t = fromStd(russian_ ? d.meaningRu : d.meaningEn);
         if (!d.panelHint.empty())
             t += QStringLiteral("\n") + fromStd(d.panelHint);
-        if (!d.note.empty())
+        if (!d.note.empty() && !russian_) // the catalog's notes are English
             t += QStringLiteral("\n") + fromStd(d.note);
         return t;
     }
@@ -189,7 +189,7 @@ QVariant RParamsModel::headerData(int section, Qt::Orientation o, int role) cons
     case Group:
         return tr("Preset screen");
     case Meaning:
-        return tr("Meaning (appendix Л)");
+        return tr("Meaning (appendix L)");
     case Value:
         return tr("Discretes");
     case Mm:

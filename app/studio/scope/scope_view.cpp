@@ -467,8 +467,10 @@ void ScopeView::showEvent(QShowEvent* e) {
 }
 
 void ScopeView::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange)
+    if (e->type() == QEvent::LanguageChange) {
+        cursorLabel_->clear(); // the hint in the new language; values come with the next move
         retranslate();
+    }
     QWidget::changeEvent(e);
 }
 

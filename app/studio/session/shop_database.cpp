@@ -98,42 +98,29 @@ QString databaseErrorText(const std::exception& e) {
     const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e);
     if (!r)
         return QString::fromUtf8(e.what());
-    QString reason;
-    switch (r->reason()) {
-    case db::ReadOnlyReason::None:
-    case db::ReadOnlyReason::Permission:
-        reason = QCoreApplication::translate("k528::studio::ShopDatabase", "permission denied");
-        break;
-    case db::ReadOnlyReason::Folder:
-        reason = QCoreApplication::translate("k528::studio::ShopDatabase", "no permission to create files in its folder");
-        break;
-    case db::ReadOnlyReason::FileSystem:
-        reason = QCoreApplication::translate("k528::studio::ShopDatabase", "read-only file system");
-        break;
-    case db::ReadOnlyReason::Requested:
-        reason = QCoreApplication::translate("k528::studio::ShopDatabase", "opened read-only");
-        break;
-    }
-    QString text;
-    switch (r->refusal()) {
-    case db::ReadOnlyRefusal::Write:
-        text = QCoreApplication::translate("k528::studio::ShopDatabase", "The database is read-only: %1 (%2); nothing was written.");
-        break;
-    case db::ReadOnlyRefusal::Create:
-        text = QCoreApplication::translate(
-            "k528::studio::ShopDatabase", "The database is read-only: %1 (%2); a new database cannot be created there.");
-        break;
-    case db::ReadOnlyRefusal::Upgrade:
-        text = QCoreApplication::translate("k528::studio::ShopDatabase", "The database is read-only: %1 (%2); its schema is "
-                                                     "older than this program's and cannot be upgraded.");
-        break;
-    case db::ReadOnlyRefusal::Recover:
-        text = QCoreApplication::translate("k528::studio::ShopDatabase", "The database is read-only: %1 (%2); it has an unfinished "
-                                                     "transaction that only a user who may write the file can "
-                                                     "roll back.");
-        break;
-    }
-    return text.arg(QString::fromStdString(r->path().string()), reason);
+    // By db::ReadOnlyReason and db::ReadOnlyRefusal.
+    static const char* const kReasons[] = {
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "permission denied"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "permission denied"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "no permission to create files in its folder"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "read-only file system"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "opened read-only"),
+    };
+    static const char* const kTexts[] = {
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
+                          "The database is read-only: %1 (%2); nothing was written."),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
+                          "The database is read-only: %1 (%2); a new database cannot be created there."),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
+                          "The database is read-only: %1 (%2); its schema is older than this "
+                          "program's and cannot be upgraded."),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
+                          "The database is read-only: %1 (%2); it has an unfinished transaction that "
+                          "only a user who may write the file can roll back."),
+    };
+    const auto translated = [](const char* s) { return QCoreApplication::translate("k528::studio::ShopDatabase", s); };
+    return translated(kTexts[static_cast<int>(r->refusal())])
+        .arg(QString::fromStdString(r->path().string()), translated(kReasons[static_cast<int>(r->reason())]));
 }
 
 } // namespace k528::studio

@@ -1,0 +1,144 @@
+// The storage behind db::Database, internal to core/db: what a backend
+// provides — SQLite today (sqlite_store.h), PostgreSQL next (issue 25). The
+// rules are Database's and the same for every backend (database.cpp,
+// revisions.h): what a write validates, what a revision records, how the
+// state at a revision is rebuilt, what the audit log says. A backend opens
+// and checks its database, runs transactions, stores and finds rows, and says
+// whether it may be written.
+#pragma once
+
+#include "db/database.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+struct sqlite3;
+
+namespace k528::db {
+
+// A machine as stored: its row id and what MachineInfo shows.
+struct MachineRow {
+    std::int64_t id = 0;
+    MachineInfo info;
+};
+
+// One recorded change read back (the section by its name, as stored).
+struct ChangeRow {
+    int revision = 0;
+    std::string author, at; // of its revision (history() only)
+    std::string section, key, label;
+    std::optional<std::string> before, after;
+};
+
+// One version of a program.
+struct ProgramRow {
+    int number = 0;
+    int revision = 0;
+    std::optional<std::string> text; // nullopt: deleted at this revision
+    std::optional<std::string> sha256;
+};
+
+class Store {
+public:
+    virtual ~Store() = default;
+
+    virtual const std::filesystem::path& path() const = 0;
+    virtual const OpenReport& openReport() const = 0;
+    virtual ReadOnlyReason readOnly() const = 0;
+    virtual bool snapshotOutdated() const = 0;
+    virtual int schemaVersion() = 0;
+    virtual std::string checkIntegrity() = 0;
+    // The SQLite connection for db::MessageLog; nullptr on other backends.
+    virtual sqlite3* sqliteConnection() const { return nullptr; }
+
+    // Transactions. beginRead(): one snapshot for the reads of a call; false
+    // when a transaction is already open (a write's). beginWrite(): the write
+    // lock first, waiting up to the busy timeout (Error Busy, ReadOnlyError).
+    virtual bool beginRead() = 0;
+    virtual void endRead() noexcept = 0;
+    virtual void beginWrite() = 0;
+    virtual void commit() = 0;
+    virtual void rollback() noexcept = 0;
+
+    // Machines and their current state.
+    virtual std::vector<MachineInfo> machines() = 0; // by name
+    virtual std::optional<MachineRow> findMachine(std::string_view name) = 0;
+    // Throws Error(Corrupt) when the rows break their rules.
+    virtual profile::MachineProfile loadCurrent(const MachineRow& row) = 0;
+    virtual std::int64_t insertMachine(const profile::MachineProfile& p, const std::string& at,
+                                       const std::string& author) = 0;
+    virtual void updateMachine(std::int64_t id, const profile::MachineProfile& p, int revision,
+                               const std::string& at, const std::string& author) = 0;
+    virtual void deleteMachine(std::int64_t id) = 0; // with its history
+    // The current-state row of one changed C, R, message or PLC text as `p`
+    // has it (programs are their versions; settings are written whole).
+    virtual void writeItem(std::int64_t id, bool isNew, const profile::MachineProfile& p,
+                           const profile::Change& c) = 0;
+    virtual void writeSettings(std::int64_t id, const profile::MachineProfile& p) = 0;
+
+    // History.
+    virtual void insertRevision(std::int64_t id, int revision, const std::string& author,
+                                const std::string& at, const std::string& summary,
+                                const std::string& settingsOrder) = 0;
+    virtual void insertProgramVersion(std::int64_t id, const ProgramRow& version) = 0;
+    virtual void insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) = 0;
+    // Every change but the programs' up to `revision`, in order.
+    virtual std::vector<ChangeRow> changesUpTo(std::int64_t id, int revision) = 0;
+    // The simulation keys' order at `revision` ("\n" between keys).
+    virtual std::optional<std::string> settingsOrder(std::int64_t id, int revision) = 0;
+    // The programs present at `revision` (each one's last version).
+    virtual std::vector<ProgramRow> programsAt(std::int64_t id, int revision) = 0;
+    virtual std::vector<RevisionInfo> revisions(std::int64_t id) = 0; // newest first
+    // Changes of revisions >= fromRevision (of one key), newest first.
+    virtual std::vector<ChangeRow> history(std::int64_t id, int fromRevision,
+                                           const std::optional<std::string>& key) = 0;
+    virtual std::vector<ProgramRow> programVersions(std::int64_t id, int number) = 0; // newest first
+    // The last version of program `number` at or before `revision`.
+    virtual std::optional<ProgramRow> programAt(std::int64_t id, int number, int revision) = 0;
+
+    // The audit log.
+    virtual void insertAudit(const AuditEntry& e) = 0; // e.id is ignored
+    virtual std::vector<AuditEntry> audit(int limit, std::string_view machine) = 0;
+};
+
+// A read snapshot for the reads of one call.
+class ReadSnapshot {
+public:
+    explicit ReadSnapshot(Store& s) : s_(s), own_(s.beginRead()) {}
+    ~ReadSnapshot() {
+        if (own_)
+            s_.endRead();
+    }
+    ReadSnapshot(const ReadSnapshot&) = delete;
+    ReadSnapshot& operator=(const ReadSnapshot&) = delete;
+
+private:
+    Store& s_;
+    bool own_;
+};
+
+// A write transaction: committed by commit(), rolled back otherwise.
+class WriteTransaction {
+public:
+    explicit WriteTransaction(Store& s) : s_(s) { s_.beginWrite(); }
+    void commit() {
+        s_.commit();
+        done_ = true;
+    }
+    ~WriteTransaction() {
+        if (!done_)
+            s_.rollback();
+    }
+    WriteTransaction(const WriteTransaction&) = delete;
+    WriteTransaction& operator=(const WriteTransaction&) = delete;
+
+private:
+    Store& s_;
+    bool done_ = false;
+};
+
+} // namespace k528::db

@@ -1,0 +1,587 @@
+// The window speaks one language (studio.ui_language): every text of the
+// main window in each workspace and of each dialog and menu it opens —
+// labels, buttons, tool tips, window titles, menus and actions, table
+// headers, tabs, placeholders, dock titles, the status bar — is walked in
+// `--lang ru` and fails on a Latin word that is not a code, and in
+// `--lang en` on a Cyrillic word. What is data, not the UI's words, is
+// exempt by where it comes from: the K923's printed legends and its LCD
+// (the manual's panel), the machine's name, title, technological and PLC
+// message texts and its programs' titles (the profile), the positioner's
+// message texts (appendix М), file names and paths the test itself made.
+// The allow-list of codes is short and explicit (kAllowedLatin).
+//
+// Needs X: the backplot dock is a real one only with OpenGL.
+#include "backplot/backplot_widget.h"
+#include "catalog/cparams.h"
+#include "catalog/messages.h"
+#include "catalog/rparams.h"
+#include "constants/constants_dock.h"
+#include "editor/editor_tab.h"
+#include "editor/frame_master.h"
+#include "editor/program_editor.h"
+#include "k923/k923_widget.h"
+#include "k923/key_face.h"
+#include "language.h"
+#include "machine/pendant_controls.h"
+#include "main_window.h"
+#include "db/database.h"
+#include "engine/types.h"
+#include "program/model.h"
+#include "session/machine_source.h"
+#include "session/simulation_session.h"
+#include "workspace/workspaces.h"
+
+#include <QAbstractButton>
+#include <QAbstractItemView>
+#include <QAbstractSpinBox>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QContextMenuEvent>
+#include <QDialog>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QGroupBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QPlainTextEdit>
+#include <QRegularExpression>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTabBar>
+#include <QTemporaryDir>
+#include <QTextDocumentFragment>
+#include <QTextEdit>
+#include <QTimer>
+#include <QToolButton>
+#include <QtTest>
+#include <QtCharts/QAbstractAxis>
+#include <QtCharts/QAbstractSeries>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
+
+#include <functional>
+
+using namespace k528;
+using studio::MainWindow;
+
+namespace {
+
+QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+// Latin words a Russian window may show: codes of the controller and the
+// program language (matched by kCode), units, protocols and file formats,
+// the panel's and the PC keyboard's key names, the product's name.
+const QStringList kAllowedLatin = {
+    // units, protocols, file formats, the product
+    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "Studio",
+    "GNU", "GPL",
+    // the program language's words and a plane of its axes
+    "IF", "GOTO", "XZ", "ISO", "3D",
+    // the manual's formula symbols (table Е.1): Vmax, Tразг, Kд
+    "Vmax", "Tразг", "Kд",
+    // Qt's Russian translation keeps "OK" (qtbase_ru: QPlatformTheme, QDialogButtonBox)
+    "OK",
+    // the PC keyboard's keys as printed on them
+    "Ctrl", "Shift", "Alt", "Esc", "Tab", "Enter", "Return", "Backspace", "Ins", "Del", "PgUp",
+    "PgDown", "Home", "End", "Num",
+};
+// G01, M03, R12, C022, L5, N15, X, Z, FX, FZ, Gx81, Z1000, A01, F1: an address letter
+// (or two) and its number; a lone capital is an axis or an address.
+const QRegularExpression kCode(QStringLiteral("^(?:[A-Z]{1,2}[a-z]?\\d+[A-Z]?|[A-Z]|FX|FZ)$"));
+const QRegularExpression kWord(QStringLiteral("[\\p{L}\\p{N}_µ]+"));
+const QRegularExpression kLatin(QStringLiteral("[A-Za-z]"));
+const QRegularExpression kCyrillic(QStringLiteral("[\\x{0400}-\\x{04FF}]"));
+// Names, not words: file paths (absolute, or a relative one with an
+// extension), file patterns and extensions ("*.k528", "(.k528m)"), and the
+// command line's commands («k528 db import»).
+const QRegularExpression kNames(QStringLiteral(
+    "(?<![\\p{L}\\p{N}])/[\\w.+-]+(?:/[\\w.+-]*)*"
+    "|[\\w.-]+(?:/[\\w.-]+)+\\.\\w+"
+    "|(?<![\\p{L}\\p{N}])\\*?\\.[A-Za-z0-9]+"
+    "|\\bk528(?:-[a-z]+)?(?: [a-z][a-z-]*)*"));
+
+QString plain(QString text) {
+    if (Qt::mightBeRichText(text))
+        text = QTextDocumentFragment::fromHtml(text).toPlainText();
+    // Mnemonics: "&File" is "File", "&&" is "&".
+    text.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
+    text.remove(QLatin1Char('&'));
+    text.replace(QLatin1Char('\x01'), QLatin1Char('&'));
+    return text;
+}
+
+class Walker {
+public:
+    QString language;
+    QStringList leaks;
+    int checked = 0;
+    QSet<QString> exemptWords; // the manual's own words (manualWords)
+    bool cells = true;         // the tables' cells too (once per window: they do not change by workspace)
+
+    // Texts that are data, exempt wherever they stand as whole words.
+    void setData(QStringList data) {
+        data.removeAll(QString());
+        data.removeDuplicates();
+        // Longest first: a text that holds a shorter one is taken out whole.
+        std::sort(data.begin(), data.end(), [](const QString& a, const QString& b) { return a.size() > b.size(); });
+        dataPatterns_.clear();
+        for (const QString& d : data)
+            dataPatterns_ << QRegularExpression(QStringLiteral("(?<![\\p{L}\\p{N}])") +
+                                                QRegularExpression::escape(d) +
+                                                QStringLiteral("(?![\\p{L}\\p{N}])"));
+    }
+
+    void check(const QString& where, const QString& raw) {
+        QString text = plain(raw);
+        if (text.trimmed().isEmpty())
+            return;
+        ++checked;
+        QString rest = text;
+        for (const QRegularExpression& d : dataPatterns_)
+            rest.replace(d, QStringLiteral(" "));
+        rest.replace(kNames, QStringLiteral(" "));
+        QStringList bad;
+        for (auto it = kWord.globalMatch(rest); it.hasNext();) {
+            const QString w = it.next().captured();
+            if (exemptWords.contains(w))
+                continue;
+            if (language == "ru") {
+                if (!w.contains(kLatin) || kCode.match(w).hasMatch() || kAllowedLatin.contains(w))
+                    continue;
+                bad << w;
+            } else if (w.contains(kCyrillic)) {
+                bad << w;
+            }
+        }
+        if (!bad.isEmpty()) {
+            const QString line = QStringLiteral("%1: «%2» (%3)").arg(where, text.simplified().left(160), bad.join(' '));
+            if (!leaks.contains(line))
+                leaks << line;
+        }
+    }
+
+    static QString nameOf(const QObject* o) {
+        return o->objectName().isEmpty() ? QString::fromLatin1(o->metaObject()->className())
+                                         : o->objectName();
+    }
+    static QString pathOf(const QWidget* w) {
+        QStringList parts;
+        for (const QWidget* p = w; p; p = p->parentWidget()) {
+            if (!p->objectName().isEmpty() || p->isWindow())
+                parts.prepend(nameOf(p));
+            if (p->isWindow())
+                break;
+        }
+        return parts.join('/');
+    }
+
+    void walkMenu(QMenu* m, const QString& where) {
+        emit m->aboutToShow(); // menus that fill themselves as they open
+        check(where + " menu title", m->title());
+        for (QAction* a : m->actions())
+            walkAction(a, where + " > " + plain(m->title()));
+    }
+    void walkAction(QAction* a, const QString& where) {
+        // The language menu names each language in its own words.
+        if (a->isSeparator() || a->objectName().startsWith(QLatin1String("action.language.")))
+            return;
+        check(where + " action " + nameOf(a), a->text());
+        if (a->toolTip() != plain(a->text()).remove(QStringLiteral("...")).remove(QStringLiteral("…")))
+            check(where + " action tool tip " + nameOf(a), a->toolTip());
+        check(where + " action status tip " + nameOf(a), a->statusTip());
+        if (QMenu* sub = a->menu(); sub && !walkedMenus.contains(sub)) {
+            walkedMenus << sub;
+            walkMenu(sub, where);
+        }
+    }
+    QList<QMenu*> walkedMenus;
+
+private:
+    QList<QRegularExpression> dataPatterns_;
+
+public:
+
+    void walkModel(QAbstractItemView* v, const QString& where) {
+        QAbstractItemModel* m = v->model();
+        if (!m)
+            return;
+        for (int c = 0; c < m->columnCount(); ++c) {
+            check(where + QStringLiteral(" header %1").arg(c), m->headerData(c, Qt::Horizontal).toString());
+            check(where + QStringLiteral(" header tip %1").arg(c), m->headerData(c, Qt::Horizontal, Qt::ToolTipRole).toString());
+        }
+        // The cells too (the first rows of a long table): a table's words
+        // are the UI's as much as its headers. A file dialog lists the file
+        // system: names, the system's file types and dates.
+        if (qobject_cast<QFileDialog*>(v->window()) || !cells)
+            return;
+        const int rows = std::min(m->rowCount(), 400);
+        for (int r = 0; r < rows; ++r)
+            for (int c = 0; c < m->columnCount(); ++c) {
+                const QModelIndex i = m->index(r, c);
+                check(where + QStringLiteral(" cell %1,%2").arg(r).arg(c), m->data(i, Qt::DisplayRole).toString());
+                check(where + QStringLiteral(" cell tip %1,%2").arg(r).arg(c), m->data(i, Qt::ToolTipRole).toString());
+            }
+    }
+
+    // Every text of `root` and the widgets in it.
+    void walkWidget(QWidget* root) {
+        QList<QWidget*> all = root->findChildren<QWidget*>();
+        all.prepend(root);
+        for (QWidget* w : all) {
+            const QString where = pathOf(w);
+            if (w->isWindow() || qobject_cast<QDockWidget*>(w))
+                check(where + " title", w->windowTitle());
+            check(where + " tool tip", w->toolTip());
+            check(where + " status tip", w->statusTip());
+            check(where + " what's this", w->whatsThis());
+            if (auto* l = qobject_cast<QLabel*>(w))
+                check(where + " label", l->text());
+            if (auto* b = qobject_cast<QAbstractButton*>(w))
+                check(where + " button", b->text());
+            if (auto* b = qobject_cast<studio::PendantButton*>(w))
+                check(where + " legend", b->legend());
+            if (auto* b = qobject_cast<studio::MushroomButton*>(w))
+                check(where + " legend", b->legend());
+            if (auto* b = qobject_cast<studio::PilotLamp*>(w))
+                check(where + " legend", b->legend());
+            if (auto* s = qobject_cast<studio::SelectorSwitch*>(w)) {
+                check(where + " caption", s->caption());
+                for (const QString& p : s->positions())
+                    check(where + " position", p);
+            }
+            if (auto* g = qobject_cast<QGroupBox*>(w))
+                check(where + " group", g->title());
+            if (auto* e = qobject_cast<QLineEdit*>(w))
+                check(where + " placeholder", e->placeholderText());
+            if (auto* e = qobject_cast<QPlainTextEdit*>(w))
+                check(where + " placeholder", e->placeholderText());
+            if (auto* e = qobject_cast<QTextEdit*>(w))
+                check(where + " placeholder", e->placeholderText());
+            if (auto* c = qobject_cast<QComboBox*>(w)) {
+                check(where + " placeholder", c->placeholderText());
+                for (int i = 0; i < c->count(); ++i)
+                    check(where + " item", c->itemText(i));
+            }
+            if (auto* s = qobject_cast<QSpinBox*>(w)) {
+                check(where + " prefix", s->prefix());
+                check(where + " suffix", s->suffix());
+            }
+            if (auto* s = qobject_cast<QAbstractSpinBox*>(w))
+                check(where + " special value", s->specialValueText());
+            if (auto* t = qobject_cast<QTabBar*>(w))
+                for (int i = 0; i < t->count(); ++i) {
+                    check(where + " tab", t->tabText(i));
+                    check(where + " tab tip", t->tabToolTip(i));
+                }
+            if (auto* v = qobject_cast<QAbstractItemView*>(w))
+                walkModel(v, where);
+            if (auto* cv = qobject_cast<QChartView*>(w))
+                if (QChart* chart = cv->chart()) {
+                    check(where + " chart title", chart->title());
+                    for (QAbstractAxis* a : chart->axes())
+                        check(where + " axis title", a->titleText());
+                    for (QAbstractSeries* series : chart->series())
+                        check(where + " series", series->name());
+                }
+            if (auto* m = qobject_cast<QMenu*>(w)) {
+                if (!walkedMenus.contains(m)) {
+                    walkedMenus << m;
+                    walkMenu(m, where);
+                }
+            }
+            if (auto* bar = qobject_cast<QMenuBar*>(w))
+                for (QAction* a : bar->actions())
+                    walkAction(a, where);
+            if (auto* bar = qobject_cast<QStatusBar*>(w))
+                check(where + " message", bar->currentMessage());
+            for (QAction* a : w->actions())
+                walkAction(a, where);
+        }
+        for (QAction* a : root->findChildren<QAction*>())
+            walkAction(a, pathOf(root));
+    }
+};
+
+// The K923's printed legends and its LCD's mode names: the manual's panel texts.
+QStringList panelTexts() {
+    QStringList out;
+    for (int k = 0; k < panel::kKeyCount; ++k) {
+        const auto key = static_cast<panel::Key>(k);
+        const studio::KeyFace f = studio::keyFace(key);
+        out << studio::keyTitle(key) << f.legend << f.corner << f.sub;
+    }
+    for (int m = 1; m <= 7; ++m) {
+        const auto mode = static_cast<engine::Mode>(m);
+        out << fromView(engine::modeNameRu(mode)) << fromView(engine::modeTagRu(mode));
+    }
+    out << QStringLiteral("РАБОТА С ПЭВМ"); // F7's LCD item (panel/screens/data_control.cpp)
+    for (const catalog::CParamDef& c : catalog::cParams())
+        out << fromView(c.name); // ПАР's LCD names of the constants (table Е.1)
+    return out;
+}
+
+// The machine's own texts (the profile: data, in the language it was
+// written in) and the titles of the programs on its controller.
+QStringList machineTexts(const profile::MachineProfile& p, const program::ProgramStore& store) {
+    QStringList out;
+    out << QString::fromStdString(p.name) << QString::fromStdString(p.title);
+    for (const auto& [n, t] : p.messages)
+        out << QString::fromStdString(t);
+    for (auto g : {catalog::PlcGroup::Alarm, catalog::PlcGroup::Work, catalog::PlcGroup::System})
+        for (const auto& [n, t] : p.plcTexts(g))
+            out << QString::fromStdString(t);
+    for (const program::Program& pr : store.programs())
+        if (pr.title)
+            out << QString::fromStdString(*pr.title);
+    for (const program::Message& m : store.messages.entries)
+        out << QString::fromStdString(m.text);
+    return out;
+}
+
+// The manual's own words in core's catalog of its reference tables (C- and
+// R-parameters, messages): in a Russian window the Latin symbols its Russian
+// text uses (Ks, Ke, MX, DRF, x4…), in an English one the Cyrillic that our
+// English keeps of it: the LCD names and preset lines it quotes («КОНТРОЛЬ
+// …», УСТ screens) and the notes' quotes of the printed text.
+QSet<QString> manualWords(const QString& language) {
+    const bool ru = language == QLatin1String("ru");
+    QSet<QString> out;
+    const auto take = [&](std::string_view t) {
+        for (auto it = kWord.globalMatch(fromView(t)); it.hasNext();) {
+            const QString w = it.next().captured();
+            if (ru ? w.contains(kLatin) : w.contains(kCyrillic))
+                out << w;
+        }
+    };
+    for (const catalog::CParamDef& c : catalog::cParams()) {
+        if (ru) {
+            take(c.name);
+            take(c.descriptionRu);
+            take(c.hintRu);
+        } else {
+            take(c.descriptionEn);
+            take(c.hintEn);
+            take(c.note);
+        }
+    }
+    for (int n = 0; n < 300; ++n)
+        if (const catalog::RParamDef* r = catalog::findRParam(n)) {
+            take(ru ? r->meaningRu : r->meaningEn);
+            take(r->panelHint);
+            if (!ru)
+                take(r->note);
+        }
+    for (int n = 1; n <= 64; ++n) {
+        const catalog::PositionerMessage& m = catalog::positionerMessage(n);
+        take(ru ? m.textRu : m.textEn);
+        take(ru ? m.commentRu : m.commentEn);
+    }
+    return out;
+}
+
+// The positioner's message texts (appendix М) as the LCD shows them.
+QStringList positionerTexts() {
+    QStringList out;
+    for (int n = 1; n <= 64; ++n) {
+        const catalog::PositionerMessage& m = catalog::positionerMessage(n);
+        out << QString::fromStdString(m.panelText()) << fromView(m.textRu);
+    }
+    return out;
+}
+
+} // namespace
+
+class TestUiLanguage : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioUiLanguageTest");
+        QSettings().clear();
+        QVERIFY(dir_.isValid());
+        // A file the editor and the controller load, and one with a warning
+        // (a frame after the endless jump is never reached) for the load report.
+        file_ = dir_.filePath("ui.k528");
+        warnFile_ = dir_.filePath("warn.k528");
+        QFile f(file_);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("%L1 (UI)\nN1 G1 X60 FX2000\nN2 G1 Z-40 FZ2000\nN3 M30\n");
+        QFile g(warnFile_);
+        QVERIFY(g.open(QIODevice::WriteOnly));
+        g.write("%L2 (UI)\nN1 G1 X60 FX2000\nN2 GOTO 1\nN3 M30\n");
+    }
+    void russian() { walkAll("ru", "ru"); }
+    void english() { walkAll("en", "en"); }
+    // Switched at run time: every text follows the new language.
+    void russianAfterEnglish() { walkAll("en", "ru"); }
+    void englishAfterRussian() { walkAll("ru", "en"); }
+
+private:
+    QTemporaryDir dir_;
+    QString file_, warnFile_;
+
+    // Runs `open` (which may wait in a dialog's own loop) and walks each
+    // window and popup menu that appears meanwhile, then closes it; `want`
+    // windows at least must appear.
+    void walkOpened(Walker& walker, const QString& what, const std::function<void()>& open, int want = 1) {
+        QSet<QWidget*> seen;
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (w->isVisible())
+                seen << w;
+        int found = 0;
+        QTimer poll;
+        poll.setInterval(20);
+        connect(&poll, &QTimer::timeout, [&] {
+            for (QWidget* w : QApplication::topLevelWidgets()) {
+                if (!w->isVisible() || seen.contains(w))
+                    continue;
+                seen << w;
+                ++found;
+                Walker one = walker;
+                one.leaks.clear();
+                one.checked = 0;
+                one.walkWidget(w);
+                for (QString& l : one.leaks)
+                    walker.leaks << what + ": " + l;
+                walker.checked += one.checked;
+                if (auto* d = qobject_cast<QDialog*>(w))
+                    d->done(QDialog::Rejected);
+                else
+                    w->close();
+            }
+        });
+        poll.start();
+        open();
+        QTRY_VERIFY2_WITH_TIMEOUT(found >= want, qPrintable(what + ": no window opened"), 5000);
+        poll.stop();
+        QApplication::processEvents();
+    }
+
+    void walkWindow(Walker& walker, MainWindow& w) {
+        for (const QString& id : {QStringLiteral("operator"), QStringLiteral("technologist"), QStringLiteral("training")}) {
+            QVERIFY(w.workspaces()->activate(id));
+            QApplication::processEvents();
+            Walker one = walker;
+            one.leaks.clear();
+            one.checked = 0;
+            one.cells = id == QLatin1String("operator");
+            one.walkWidget(&w);
+            for (const QString& l : one.leaks)
+                if (!walker.leaks.contains(l))
+                    walker.leaks << l;
+            walker.checked += one.checked;
+        }
+    }
+
+    void clickNamed(MainWindow& w, const char* name) {
+        auto* b = w.findChild<QAbstractButton*>(name);
+        QVERIFY2(b, name);
+        // As the user does: the pane shown first.
+        for (QWidget* p = b; p; p = p->parentWidget())
+            if (auto* d = qobject_cast<QDockWidget*>(p)) {
+                d->show();
+                d->raise();
+            }
+        QApplication::processEvents();
+        b->click();
+    }
+
+    void walkDialogs(Walker& walker, MainWindow& w) {
+        auto* editor = w.programEditor();
+        walkOpened(walker, "File > Load programs", [&] { w.findChild<QAction*>("action.loadPrograms")->trigger(); });
+        walkOpened(walker, "File > Load programs: the report", [&] { w.loadProgramsFrom(warnFile_); });
+        walkOpened(walker, "Help > About", [&] {
+            for (QAction* a : w.menuBar()->actions().last()->menu()->actions())
+                a->trigger();
+        });
+        walkOpened(walker, "File > Machine: one that cannot be loaded", [&] { w.switchMachine("no-such-machine"); });
+        walkOpened(walker, "Editor > Open", [&] { editor->openDialog(); });
+        walkOpened(walker, "Editor > Save as", [&] { editor->saveAs(); });
+        walkOpened(walker, "Editor > Renumber", [&] { editor->renumberDialog(); });
+        walkOpened(walker, "Editor > Move a program", [&] { editor->moveProgramDialog(); });
+        walkOpened(walker, "Editor > PDF", [&] { editor->exportPdfDialog(); });
+        walkOpened(walker, "Editor > Open from the database", [&] { editor->openDatabaseDialog(); });
+        walkOpened(walker, "Editor: the context menu", [&] {
+            QWidget* v = editor->currentEditor()->viewport();
+            QContextMenuEvent e(QContextMenuEvent::Mouse, QPoint(5, 5), v->mapToGlobal(QPoint(5, 5)));
+            QApplication::sendEvent(v, &e);
+        });
+        walkOpened(walker, "Editor: close a changed file", [&] {
+            editor->currentEditor()->append("\n");
+            editor->closeDocument(0);
+        });
+        for (int k = 0; k < studio::FrameMaster::KindCount; ++k) {
+            walkOpened(walker, QStringLiteral("Frame master %1").arg(k), [&] {
+                studio::FrameMaster m(&w);
+                m.setKind(static_cast<studio::FrameMaster::Kind>(k));
+                m.exec();
+            });
+        }
+        walkOpened(walker, "K923: the context menu", [&] {
+            studio::K923Widget* k = w.k923();
+            QContextMenuEvent e(QContextMenuEvent::Mouse, QPoint(5, 5), k->mapToGlobal(QPoint(5, 5)));
+            QApplication::sendEvent(k, &e);
+        });
+        walkOpened(walker, "K923: the keyboard map", [&] { w.k923()->showKeyboardMap(); });
+        if (auto* pane = w.findChild<studio::ConstantsPane*>())
+            pane->selectConstant(22); // the history is of the selected constant
+        for (const char* b : {"constants.history", "constants.diff", "constants.calculator", "constants.import",
+                              "constants.export", "scope.csv", "scope.png", "history.csv"})
+            walkOpened(walker, QString::fromLatin1(b), [&] { clickNamed(w, b); });
+    }
+
+    void walkAll(const QString& first, const QString& language) {
+        QVERIFY(studio::setLanguage(first));
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        // A program on the controller and in the editor: the Program tab,
+        // the backplot, the outline and the messages show it.
+        QVERIFY(w.loadProgramsFrom(file_));
+        w.programEditor()->openFile(file_);
+        if (language != first) {
+            QVERIFY(studio::setLanguage(language));
+            QApplication::processEvents(); // LanguageChange reaches every widget
+        }
+        Walker walker;
+        walker.language = language;
+        walker.exemptWords = manualWords(language);
+        walker.setData(panelTexts() +
+                       machineTexts(w.session()->simulation().profile(), w.session()->controller().programs()) +
+                       positionerTexts() + studio::machineNames() +
+                       QStringList{QFileInfo(file_).fileName(), QFileInfo(warnFile_).fileName(),
+                                   QString::fromStdString(db::defaultAuthor())}); // the revisions' author: the OS user
+        walkWindow(walker, w);
+        walkDialogs(walker, w);
+        qInfo("%d texts checked in --lang %s (started in %s)", walker.checked, qPrintable(language), qPrintable(first));
+        // Core's texts that reach these places are converted to ids next;
+        // until then they are listed, not failed.
+        static const QStringList kNotYet = {"constants.history: constants.historyDialog cell",
+                                            "File > Machine: one that cannot be loaded:"};
+        QStringList leaks;
+        for (const QString& l : std::as_const(walker.leaks)) {
+            if (std::any_of(kNotYet.begin(), kNotYet.end(), [&](const QString& p) { return l.startsWith(p); }))
+                qInfo("not yet: %s", qPrintable(l));
+            else
+                leaks << l;
+        }
+        walker.leaks = leaks;
+        for (const QString& l : walker.leaks)
+            qWarning("%s", qPrintable(l));
+        // Closed as the user closes it (the layouts kept for the next window).
+        w.programEditor()->setCloseQuestion([](const QString&) { return studio::EditorTab::CloseChoice::Discard; });
+        w.close();
+        QVERIFY(walker.checked > 1000);
+        QVERIFY2(walker.leaks.isEmpty(),
+                 qPrintable(QStringLiteral("%1 texts of another language in --lang %2 (listed above)")
+                                .arg(walker.leaks.size())
+                                .arg(language)));
+    }
+};
+
+QTEST_MAIN(TestUiLanguage)
+#include "test_ui_language.moc"
