@@ -143,6 +143,14 @@ void MainWindow::placeOnScreen() {
 
 void MainWindow::keepOnScreen() { keepInside(this, availableArea(this)); }
 
+MainWindow::~MainWindow() {
+    // The children go in the order they were made: the simulated controller
+    // and the view switch before the docks. A real controller still viewed
+    // would be destroyed among the docks, after them.
+    if (auto* c = findChild<ControllerDock*>("dock.controller"))
+        c->closeLine();
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
     // What the user arranged, for the next start (also when the close is
     // refused: it costs nothing).

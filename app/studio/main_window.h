@@ -43,6 +43,8 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     // The workstation on `machine` (loadMachine()).
     explicit MainWindow(const MachineChoice& machine, QWidget* parent = nullptr);
+    // Closes a real controller's line first, while every view still lives.
+    ~MainWindow() override;
 
     // The docks, by role (object names "dock.k923", "dock.machine",
     // "dock.messages", "dock.axes").

@@ -428,6 +428,14 @@ void ControllerDock::disconnectLine() {
     emit connectedChanged(false);
 }
 
+void ControllerDock::closeLine() {
+    if (!link_)
+        return;
+    window_->setViewedController(nullptr);
+    link_.reset();
+    connecting_ = false;
+}
+
 void ControllerDock::pullIntoDatabase() {
     if (!link_ || !link_->isOpen() || link_->busy() || preview_)
         return;

@@ -68,6 +68,10 @@ public slots:
     // is the user's to choose).
     void askForLine();
     void disconnectLine();
+    // The window closes: the views go back to the simulated controller and
+    // the line is closed whatever is under way (a transfer is aborted as on
+    // a cancel: nothing half-committed), while every view is still alive.
+    void closeLine();
     void pullIntoDatabase();
     void pushFile(const QString& path = QString()); // asks for the file when empty
     void pushMachine(const QString& name);           // a database / built-in machine
