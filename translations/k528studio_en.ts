@@ -1795,6 +1795,14 @@ Its comment stays: %3</translation>
         <translation>Line %1 replaced by the master; its comment kept</translation>
     </message>
     <message>
+        <source>There is no sample program %1</source>
+        <translation>There is no sample program %1</translation>
+    </message>
+    <message>
+        <source>%1 (sample)</source>
+        <translation>%1 (sample)</translation>
+    </message>
+    <message>
         <source>The controller is busy with a transfer: send again when it has ended</source>
         <translation>The controller is busy with a transfer: send again when it has ended</translation>
     </message>
@@ -3311,46 +3319,6 @@ Its comment stays: %3</translation>
         <translation>Export PNG…</translation>
     </message>
     <message>
-        <source>Axis X</source>
-        <translation>Axis X</translation>
-    </message>
-    <message>
-        <source>Axis Z</source>
-        <translation>Axis Z</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>mm</translation>
-    </message>
-    <message>
-        <source>Error, mm</source>
-        <translation>Error, mm</translation>
-    </message>
-    <message>
-        <source>DAC</source>
-        <translation>DAC</translation>
-    </message>
-    <message>
-        <source>mm/min</source>
-        <translation>mm/min</translation>
-    </message>
-    <message>
-        <source>Setpoint</source>
-        <translation>Setpoint</translation>
-    </message>
-    <message>
-        <source>Position</source>
-        <translation>Position</translation>
-    </message>
-    <message>
-        <source>Following error</source>
-        <translation>Following error</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>Speed</translation>
-    </message>
-    <message>
         <source>Move the mouse over a chart to read the values.</source>
         <translation>Move the mouse over a chart to read the values.</translation>
     </message>
@@ -3361,6 +3329,34 @@ Its comment stays: %3</translation>
     <message>
         <source>Time before the newest sample, s</source>
         <translation>Time before the newest sample, s</translation>
+    </message>
+    <message>
+        <source>Setpoint, mm</source>
+        <translation>Setpoint, mm</translation>
+    </message>
+    <message>
+        <source>Position, mm</source>
+        <translation>Position, mm</translation>
+    </message>
+    <message>
+        <source>Following error, mm (right scale)</source>
+        <translation>Following error, mm (right scale)</translation>
+    </message>
+    <message>
+        <source>DAC code (right scale)</source>
+        <translation>DAC code (right scale)</translation>
+    </message>
+    <message>
+        <source>Speed, mm/min (right scale)</source>
+        <translation>Speed, mm/min (right scale)</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Axis X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Axis Z</translation>
     </message>
     <message>
         <source>Live at %1 samples a second: the link's poll of the controller's positions and following errors (the setpoint is position + error; no DAC on the link).</source>

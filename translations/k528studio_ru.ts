@@ -1795,6 +1795,14 @@ Its comment stays: %3</source>
         <translation>Строка %1 заменена мастером; её комментарий сохранён</translation>
     </message>
     <message>
+        <source>There is no sample program %1</source>
+        <translation>Нет примера программы %1</translation>
+    </message>
+    <message>
+        <source>%1 (sample)</source>
+        <translation>%1 (пример)</translation>
+    </message>
+    <message>
         <source>The controller is busy with a transfer: send again when it has ended</source>
         <translation>Контроллер занят передачей: отправьте снова, когда она закончится</translation>
     </message>
@@ -3311,46 +3319,6 @@ Its comment stays: %3</source>
         <translation>Экспорт PNG…</translation>
     </message>
     <message>
-        <source>Axis X</source>
-        <translation>Ось X</translation>
-    </message>
-    <message>
-        <source>Axis Z</source>
-        <translation>Ось Z</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>мм</translation>
-    </message>
-    <message>
-        <source>Error, mm</source>
-        <translation>Ошибка, мм</translation>
-    </message>
-    <message>
-        <source>DAC</source>
-        <translation>ЦАП</translation>
-    </message>
-    <message>
-        <source>mm/min</source>
-        <translation>мм/мин</translation>
-    </message>
-    <message>
-        <source>Setpoint</source>
-        <translation>Задание</translation>
-    </message>
-    <message>
-        <source>Position</source>
-        <translation>Положение</translation>
-    </message>
-    <message>
-        <source>Following error</source>
-        <translation>Ошибка рассогласования</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>Скорость</translation>
-    </message>
-    <message>
         <source>Move the mouse over a chart to read the values.</source>
         <translation>Наведите мышь на график, чтобы прочитать значения.</translation>
     </message>
@@ -3361,6 +3329,34 @@ Its comment stays: %3</source>
     <message>
         <source>Time before the newest sample, s</source>
         <translation>Время до последнего отсчёта, с</translation>
+    </message>
+    <message>
+        <source>Setpoint, mm</source>
+        <translation>Задание, мм</translation>
+    </message>
+    <message>
+        <source>Position, mm</source>
+        <translation>Положение, мм</translation>
+    </message>
+    <message>
+        <source>Following error, mm (right scale)</source>
+        <translation>Ошибка рассогласования, мм (правая шкала)</translation>
+    </message>
+    <message>
+        <source>DAC code (right scale)</source>
+        <translation>Код ЦАП (правая шкала)</translation>
+    </message>
+    <message>
+        <source>Speed, mm/min (right scale)</source>
+        <translation>Скорость, мм/мин (правая шкала)</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Ось X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Ось Z</translation>
     </message>
     <message>
         <source>Live at %1 samples a second: the link's poll of the controller's positions and following errors (the setpoint is position + error; no DAC on the link).</source>

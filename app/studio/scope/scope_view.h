@@ -9,6 +9,12 @@
 // records every servo tick; on a real controller (read over the link) each
 // poll of its live state — positions and following errors at the link's
 // rate, which the view says; the DAC is not on the link.
+//
+// The charts lay themselves out for the room they get: one legend for both
+// above them (the right scales are coloured as their traces), side by side
+// when that gives each a better shape than one above the other, round ticks
+// as many as fit, axis titles only where they fit whole. Below a chart's
+// smallest useful size the pane scrolls rather than crush the scales to «…».
 #pragma once
 
 #include "scope/scope_buffer.h"
@@ -27,6 +33,7 @@ class QDoubleSpinBox;
 class QSpinBox;
 class QLabel;
 class QPushButton;
+class QBoxLayout;
 
 namespace k528::machine {
 class Simulation;
@@ -65,6 +72,10 @@ public:
     // The points handed to the chart of `axis` for `sig` (after refresh()).
     QList<QPointF> seriesPoints(int axis, ScopeSignal sig) const;
     QChartView* chartView(int axis) const { return views_[static_cast<std::size_t>(axis)]; }
+    // The charts side by side (else one above the other).
+    bool chartsSideBySide() const;
+    // The smallest chart worth drawing: the pane scrolls below it.
+    static constexpr int kChartMinWidth = 240, kChartMinHeight = 130;
 
     enum class Trigger { None, FrameStart, Alarm, Threshold };
     void setTrigger(Trigger t, double thresholdMm = 0.1);
@@ -89,8 +100,13 @@ private:
         QValueAxis *time = nullptr, *mm = nullptr, *error = nullptr, *extra = nullptr;
         QLineSeries *setpoint = nullptr, *position = nullptr, *followingError = nullptr,
                     *extraSeries = nullptr;
+        int valueTicks = 4, timeTicks = 6; // most intervals, for the chart's size
     };
     void retranslate();
+    // The charts' arrangement for the room of their area, and each chart's
+    // ticks and titles for its own size.
+    void arrangeCharts();
+    void fitChart(int axis);
     // The samples of [t0, t1] (ms), x in seconds after `origin`.
     void draw(std::int64_t t0, std::int64_t t1, std::int64_t origin);
     void checkTrigger();
@@ -117,6 +133,9 @@ private:
     QPushButton *csvButton_ = nullptr, *pngButton_ = nullptr;
     QLabel *cursorLabel_ = nullptr, *triggerLabel_ = nullptr, *extraLabel_ = nullptr,
            *windowLabel_ = nullptr;
+    std::array<QLabel*, 4> legend_{};
+    QWidget* chartsArea_ = nullptr;
+    QBoxLayout* chartsLayout_ = nullptr;
     bool paused_ = false;
     int windowS_ = 10;
     std::int64_t shownT0_ = 0, shownT1_ = 0, originMs_ = 0;
