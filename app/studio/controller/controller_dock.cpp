@@ -68,7 +68,9 @@ ControllerDock::ControllerDock(MainWindow* window) : QDockWidget(window), window
     for (const linkplugin::Found& f : linkplugin::discover()) {
         if (f.plugin) {
             plugins_.push_back(f.plugin);
-            pluginNames_ << QStringLiteral("%1 %2 (%3)").arg(f.name, f.version, f.transport);
+            // The plugin's name and version: its own words (its transport's
+            // description is English metadata, not a text of this window).
+            pluginNames_ << QStringLiteral("%1 %2").arg(f.name, f.version);
         } else {
             pluginProblem_ += QStringLiteral("%1: %2\n").arg(f.file, f.refused);
         }
