@@ -2,13 +2,16 @@
 // docs/link.md): ping, status [--json], pull --out FILE, push FILE (a machine
 // file or a program file), clear c|r, diag [--json] [--clear], watch [--json]
 // [--seconds S], scan [--bauds …] [--addresses A-B] [--json]; `--frames FILE`
-// saves the frame log; `k528 link --list` lists the plugins and ports. The
+// saves the frame log; push and pull go on record in the shop's database
+// (`--db LOCATION`, `--machine NAME`: link_record.h); `k528 link --list`
+// lists the plugins and ports. The
 // client procedures are core's (link/client.h) over the plugin's transport
 // (core's RtuMaster over a QSerialPort).
 #include "catalog/messages.h"
 #include "cli.h"
 #include "link/client.h"
 #include "link_line.h"
+#include "link_record.h"
 #include "output_file.h"
 #include "profile/text_format.h"
 #include "util/input_file.h"
@@ -35,8 +38,14 @@ int fail(const link::LinkError& e) {
     return exitFor(e);
 }
 
+// baud 0: a network line (Modbus TCP), no wire time.
 void lineReport(const link::Link& l, const linkplugin::ClientTransport& t, int baud) {
     const linkplugin::WireCount w = t.wire();
+    if (baud == 0) {
+        std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes (Modbus TCP)\n", link::describe(l.stats()).c_str(),
+                     static_cast<long long>(w.transactions), static_cast<long long>(w.bytes));
+        return;
+    }
     std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes, wire time %.3f s at %d bit/s\n",
                  link::describe(l.stats()).c_str(), static_cast<long long>(w.transactions),
                  static_cast<long long>(w.bytes), link::wireSeconds(w.bytes, w.frames, baud), baud);
@@ -247,12 +256,21 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
     return stopRequested() ? ExitUsage : ExitOk;
 }
 
+// What the controller says it is (its FC 17 identity), "" when it does not.
+std::string controllerIdentity(link::Link& l) {
+    link::ServerId id;
+    if (l.serverId(id))
+        return {};
+    return id.data;
+}
+
 } // namespace
 
 int runLinkQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
     options.insert(options.end(),
-                   {"--out", "--seconds", "--timeout-ms", "--interval-ms", "--frames", "--bauds", "--addresses"});
+                   {"--out", "--seconds", "--timeout-ms", "--interval-ms", "--frames", "--bauds", "--addresses",
+                    "--db", "--machine"});
     const Args args(argv, {"--json", "--list", "--clear"}, options);
     if (!args.ok())
         return usageError(args.error());
@@ -277,8 +295,13 @@ int runLinkQt(std::span<const std::string> argv) {
     if (cmd != "ping" && cmd != "status" && cmd != "pull" && cmd != "push" && cmd != "watch" && cmd != "clear" &&
         cmd != "diag" && cmd != "scan")
         return usageError("unknown link command '" + cmd + "' (" + kCommands + ")");
-    if (cmd == "push" && args.positional().size() != 2)
-        return usageError("push takes one file, a machine file or a program file: k528 link --port DEVICE push FILE");
+    // push --machine NAME without a file: the database machine as released.
+    const bool pushReleased = cmd == "push" && args.positional().size() == 1 && args.value("--machine");
+    if (cmd == "push" && args.positional().size() != 2 && !pushReleased)
+        return usageError("push takes one file, a machine file or a program file: k528 link --port DEVICE push FILE "
+                          "(or --machine NAME: the database machine as released)");
+    if ((args.value("--db") || args.value("--machine")) && cmd != "push" && cmd != "pull")
+        return usageError("--db and --machine are options of link push and pull (the transfer log)");
     if (cmd == "clear" && (args.positional().size() != 2 || (args.positional()[1] != "c" && args.positional()[1] != "r")))
         return usageError("clear takes the area: k528 link --port DEVICE clear c|r");
     if (cmd != "push" && cmd != "clear" && args.positional().size() != 1)
@@ -305,7 +328,7 @@ int runLinkQt(std::span<const std::string> argv) {
     std::string pushText;
     bool pushMachine = false;
     link::PushPlan plan;
-    if (cmd == "push") {
+    if (cmd == "push" && !pushReleased) {
         const std::string& path = args.positional()[1];
         std::string error;
         if (!util::readInputFile(path, pushText, error)) {
@@ -324,14 +347,34 @@ int runLinkQt(std::span<const std::string> argv) {
             }
         }
     }
+    // Push and pull go on record (docs/database.md, *Transfers on record*);
+    // a log that must be kept and cannot be, or unreleased programs of a
+    // database machine, send nothing.
+    std::optional<TransferRecord> record;
+    if (cmd == "push" || cmd == "pull") {
+        // The line as a database machine's `line` names it (cli.md).
+        const std::string lineText =
+            isTcpLine(args) ? "tcp://" + line->port.toStdString() + "/" + std::to_string(line->address)
+                            : "serial:" + line->port.toStdString() + "?baud=" + std::to_string(line->baud) +
+                                  "&address=" + std::to_string(line->address);
+        if (!TransferRecord::open(args, lineText, record))
+            return ExitUsage;
+        if (pushReleased && !(record && record->releasedPlan(plan)))
+            return ExitUsage;
+        if (pushMachine && record && !record->mayPush(plan))
+            return ExitInputErrors;
+    }
     QString error;
-    linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
+    linkplugin::LinkPlugin* plugin = linkplugin::find(linePlugin(args), error);
     if (!plugin) {
         std::fprintf(stderr, "k528 link: %s\n", error.toUtf8().constData());
         return ExitUsage;
     }
-    if (cmd == "scan")
+    if (cmd == "scan") {
+        if (isTcpLine(args) && args.value("--bauds"))
+            return usageError("--bauds is an option of a serial line's scan; a --tcp scan asks unit ids");
         return runScan(args, *plugin, *line, framesPath);
+    }
     std::unique_ptr<linkplugin::ClientTransport> t = plugin->openClient(*line, error);
     if (!t) {
         std::fprintf(stderr, "k528 link: cannot open %s: %s\n", line->port.toUtf8().constData(),
@@ -385,7 +428,7 @@ int runLinkQt(std::span<const std::string> argv) {
                 return done(fail(e));
             std::printf("counters cleared\n");
         }
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
     if (cmd == "clear") {
@@ -394,7 +437,7 @@ int runLinkQt(std::span<const std::string> argv) {
             return done(fail(e));
         std::printf("cleared the %s area of the controller (%s)\n", c ? "C" : "R",
                     c ? "all 152 machine constants are 0" : "every R-parameter is 0");
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
     if (cmd == "watch") {
@@ -457,7 +500,7 @@ int runLinkQt(std::span<const std::string> argv) {
             if (spent < interval)
                 QThread::msleep(static_cast<unsigned long>(interval - spent));
         }
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         if (lostSince) {
             std::fprintf(stderr, "k528 link: the line has not answered since %s\n", clockText(*lostSince).c_str());
             return done(ExitUsage);
@@ -466,9 +509,15 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     if (cmd == "pull") {
         link::PullResult r;
-        if (link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
-                std::fprintf(stderr, "pull: %s\n", what.c_str());
-            }))
+        const link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
+            std::fprintf(stderr, "pull: %s\n", what.c_str());
+        });
+        if (record) {
+            if (e.kind != link::LinkError::Kind::NoAnswer)
+                record->setIdentity(controllerIdentity(l));
+            record->recordPull(l.map(), r, e);
+        }
+        if (e)
             return done(fail(e));
         const profile::MachineProfile p =
             link::pulledProfile(r, "controller", "pulled from " + line->port.toStdString());
@@ -479,18 +528,25 @@ int runLinkQt(std::span<const std::string> argv) {
         }
         std::printf("pulled 152 C-parameters, 300 R-parameters, %zu programs, %zu messages into %s\n",
                     p.programs.size(), p.messages.size(), args.value("--out")->c_str());
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
     // push: a program file is checked against the controller first.
-    if (!pushMachine) {
+    if (!pushMachine && !pushReleased) {
         if (link::LinkError e = link::planProgramFile(l, pushText, args.positional()[1], plan))
             return done(fail(e));
+        if (record && !record->mayPush(plan))
+            return done(ExitInputErrors);
     }
     link::PushReport rep;
     const link::LinkError e = link::push(l, plan, rep, [](const std::string& what, int, int) {
         std::fprintf(stderr, "push: %s\n", what.c_str());
     });
+    if (record) {
+        if (e.kind != link::LinkError::Kind::NoAnswer)
+            record->setIdentity(controllerIdentity(l));
+        record->recordPush(l.map(), plan, rep, e);
+    }
     if (!e) {
         std::string names;
         for (const link::PushReport::Part& p : rep.parts)
@@ -499,7 +555,7 @@ int runLinkQt(std::span<const std::string> argv) {
     } else if (rep.anyNew() || e.kind != link::LinkError::Kind::Input) {
         std::printf("push stopped: %s\n", rep.summary().c_str());
     }
-    lineReport(l, *t, line->baud);
+    lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
     if (e)
         return done(fail(e));
     return done(ExitOk);

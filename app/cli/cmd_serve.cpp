@@ -1,4 +1,4 @@
-// k528 serve --port DEVICE [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
+// k528 serve --port DEVICE|--tcp HOST:PORT [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
 // (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
 // K923 — as a Modbus RTU server (--keys: the K923's keys, WAIT:S, and the
 // pendant's buttons PUSH:NAME, HOLD:NAME:S, PULL:ESTOP as `k528 panel
@@ -84,7 +84,7 @@ int runServeQt(std::span<const std::string> argv) {
     link::ImageHandler handler(image);
 
     QString error;
-    linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
+    linkplugin::LinkPlugin* plugin = linkplugin::find(linePlugin(args), error);
     if (!plugin) {
         std::fprintf(stderr, "k528: %s\n", error.toUtf8().constData());
         return ExitUsage;
@@ -97,9 +97,13 @@ int runServeQt(std::span<const std::string> argv) {
                      error.toUtf8().constData());
         return ExitUsage;
     }
-    std::fprintf(stderr, "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
-                 prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
-                 line->parity, line->stopBits);
+    if (isTcpLine(args))
+        std::fprintf(stderr, "k528 serve: %s on Modbus TCP %s, unit %d; SIGINT/SIGTERM stops\n", prof->name.c_str(),
+                     line->port.toUtf8().constData(), line->address);
+    else
+        std::fprintf(stderr, "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
+                     prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
+                     line->parity, line->stopBits);
     std::fflush(stderr);
 
     installStopSignals();
