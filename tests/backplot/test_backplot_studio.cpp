@@ -5,6 +5,7 @@
 // studio from the X server shows wide vertical lines clean (no hatched
 // fringe), as the same scene offscreen does.
 #include "backplot/backplot_widget.h"
+#include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
@@ -22,7 +23,10 @@
 #include <QOpenGLContext>
 #include <QPushButton>
 #include <QScreen>
+#include <QSignalSpy>
 #include <QSpinBox>
+#include <QTimer>
+#include <QToolButton>
 #include <QTabWidget>
 #include <QWheelEvent>
 #include <QTemporaryDir>
@@ -49,6 +53,16 @@ constexpr const char* kProgram = "%L1\n"
                                  "N4 G0 Z-60\n"
                                  "N5 G1 Z-80 FZ2000\n"
                                  "M30\n";
+
+// Never ends: N5 jumps back to N1 (the blank's cut by the same four legs
+// again and again).
+constexpr const char* kEndless = "%L1 (ENDLESS)\n"
+                                 "; UCG,2,Z-100Z0,X50X0,S0S0,0,-5\n"
+                                 "N1 G1 X60 FX2000\n"
+                                 "N2 G1 Z-40 FZ2000\n"
+                                 "N3 G1 X20 FX2000\n"
+                                 "N4 G0 Z0\n"
+                                 "N5 GOTO 1\n";
 
 struct Studio {
     QTemporaryDir dir;
@@ -79,9 +93,10 @@ struct Studio {
         if (!editor->sendToController())
             return false;
         w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+        QSignalSpy shown(view, &BackplotWidget::pathShown);
         w.findChild<QPushButton*>("backplot.computePath")->click();
-        QTest::qWait(100);
-        return !view->scene().path().segments.empty();
+        // Computed on a worker: shown when done.
+        return shown.wait(10000) && !view->scene().path().segments.empty();
     }
     // Widget pixel (from the top-left) of world point (Z, X).
     QPoint pixelOf(double z, double x) const {
@@ -201,6 +216,61 @@ private slots:
         QCOMPARE(s.view->scene().path().segments.size(), std::size_t(5));
         // The last point is where the run ended (X60 Z-80).
         QVERIFY(s.view->scene().actualPointsShown() >= 10);
+    }
+    // An endless program (GOTO back to its start): its preview is computed
+    // and the blank cut on a worker, up to PathJob::kMaxFrames frames, and
+    // the window's event loop goes on meanwhile — no stall over 100 ms from
+    // the click to the path shown (it took seconds on the GUI thread); the
+    // view says where the path was cut off. A newer request cancels the one
+    // under way, and Cancel stops it.
+    void anEndlessProgramNeverStallsTheWindow() {
+        Studio s(kEndless);
+        QVERIFY(s.editor->sendToController());
+        s.w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+        QTest::qWait(200); // the window settled
+        QElapsedTimer clock;
+        qint64 last = 0, longest = 0;
+        QTimer beat;
+        beat.setInterval(5);
+        QObject::connect(&beat, &QTimer::timeout, [&] {
+            const qint64 now = clock.elapsed();
+            longest = std::max(longest, now - last);
+            last = now;
+        });
+        QSignalSpy shown(s.view, &BackplotWidget::pathShown);
+        clock.start();
+        beat.start();
+        s.w.findChild<QPushButton*>("backplot.computePath")->click();
+        QVERIFY(s.view->computing());
+        QVERIFY(shown.wait(60000));
+        QTest::qWait(300); // its first picture rendered too
+        beat.stop();
+        const qint64 took = clock.elapsed();
+        qInfo("the endless program's path: %lld ms, the event loop's longest stall %lld ms", took, longest);
+        QVERIFY2(longest < 100, qPrintable(QString("the window stalled %1 ms").arg(longest)));
+        QCOMPARE(s.view->scene().path().run.status, engine::PreviewStatus::Limit);
+        QCOMPARE(s.view->scene().path().run.frames, k528::studio::backplot::PathJob::kMaxFrames);
+        QVERIFY(s.view->scene().path().segments.size() > 50000);
+        QVERIFY2(s.view->statusText().contains("100"), qPrintable(s.view->statusText()));
+
+        // Two requests: the first is cancelled, only the second is shown.
+        shown.clear();
+        auto* compute = s.w.findChild<QPushButton*>("backplot.computePath");
+        compute->click();
+        compute->click();
+        QVERIFY(shown.wait(60000));
+        QTest::qWait(500);
+        QCOMPARE(shown.count(), 1);
+        // Cancel: nothing replaces the path shown, the view says so.
+        shown.clear();
+        compute->click();
+        auto* cancel = s.w.findChild<QToolButton*>("backplot.cancel");
+        QVERIFY(cancel);
+        cancel->click(); // at once: the worker is in its first frames
+        QTRY_VERIFY_WITH_TIMEOUT(!s.view->computing(), 10000);
+        QCOMPARE(shown.count(), 0);
+        QVERIFY2(s.view->statusText().contains("cancel"), qPrintable(s.view->statusText()));
+        QCOMPARE(s.view->scene().path().run.frames, k528::studio::backplot::PathJob::kMaxFrames);
     }
     void screenshotOfTheStudioShowsWideVerticalLinesClean() {
         Studio s;
