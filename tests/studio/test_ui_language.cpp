@@ -19,6 +19,9 @@
 #include "editor/editor_tab.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
+#include "history/history_dock.h"
+#include "history/history_model.h"
+#include "history/history_service.h"
 #include "k923/k923_widget.h"
 #include "k923/key_face.h"
 #include "language.h"
@@ -402,6 +405,10 @@ private slots:
         QCoreApplication::setOrganizationName("K528StudioUiLanguageTest");
         QSettings().clear();
         QVERIFY(dir_.isValid());
+        // A database of its own: what the window lists of it (the message
+        // history, the database's programs, revisions) is what this test
+        // made, not what other tests of the suite left in the shared one.
+        qputenv("K528_DB", QFile::encodeName(dir_.filePath("k528.db")));
         // A file the editor and the controller load, and one with a warning
         // (a frame after the endless jump is never reached) for the load report.
         file_ = dir_.filePath("ui.k528");
@@ -543,6 +550,25 @@ private:
         // the backplot, the outline and the messages show it.
         QVERIFY(w.loadProgramsFrom(file_));
         w.programEditor()->openFile(file_);
+        // A message of the positioner in the history (its text is the
+        // manual's, in Russian and in English): the emergency stop, released.
+        auto* history = w.findChild<studio::HistoryService*>();
+        QVERIFY(history && history->isOpen());
+        w.session()->simulation().pressEmergencyStop();
+        w.session()->advance(50);
+        w.session()->simulation().releaseEmergencyStop();
+        w.session()->advance(50);
+        history->flush();
+        auto* historyView = w.findChild<studio::HistoryView*>();
+        QVERIFY(historyView);
+        const auto hasStop = [&] {
+            const studio::HistoryModel& m = *historyView->model();
+            for (int r = 0; r < m.rowCount(); ++r)
+                if (m.record(r).source == db::MessageSource::Positioner && m.record(r).code() == "9")
+                    return true;
+            return false;
+        };
+        QTRY_VERIFY(hasStop());
         if (language != first) {
             QVERIFY(studio::setLanguage(language));
             QApplication::processEvents(); // LanguageChange reaches every widget

@@ -170,9 +170,9 @@ QVariant HistoryModel::data(const QModelIndex& index, int role) const {
             return QColor(0xb0, 0x1c, 0x1c);
         return {};
     }
-    if (role == Qt::ToolTipRole && index.column() == Text)
-        return fromStd(m.text) + (m.textEn != m.text ? "\n" + fromStd(m.textEn) : QString());
-    if (role != Qt::DisplayRole)
+    // The tool tip shows the whole text (the column may elide it) in the
+    // window's language only: a Russian window never shows the English one.
+    if (role != Qt::DisplayRole && !(role == Qt::ToolTipRole && index.column() == Text))
         return {};
     switch (index.column()) {
     case Time: return dayTimeText(m.dayMs);
