@@ -3069,46 +3069,6 @@ Its comment stays: %3</translation>
         <translation>Export PNG…</translation>
     </message>
     <message>
-        <source>Axis X</source>
-        <translation>Axis X</translation>
-    </message>
-    <message>
-        <source>Axis Z</source>
-        <translation>Axis Z</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>mm</translation>
-    </message>
-    <message>
-        <source>Error, mm</source>
-        <translation>Error, mm</translation>
-    </message>
-    <message>
-        <source>DAC</source>
-        <translation>DAC</translation>
-    </message>
-    <message>
-        <source>mm/min</source>
-        <translation>mm/min</translation>
-    </message>
-    <message>
-        <source>Setpoint</source>
-        <translation>Setpoint</translation>
-    </message>
-    <message>
-        <source>Position</source>
-        <translation>Position</translation>
-    </message>
-    <message>
-        <source>Following error</source>
-        <translation>Following error</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>Speed</translation>
-    </message>
-    <message>
         <source>Move the mouse over a chart to read the values.</source>
         <translation>Move the mouse over a chart to read the values.</translation>
     </message>
@@ -3119,6 +3079,34 @@ Its comment stays: %3</translation>
     <message>
         <source>Time before the newest sample, s</source>
         <translation>Time before the newest sample, s</translation>
+    </message>
+    <message>
+        <source>Setpoint, mm</source>
+        <translation>Setpoint, mm</translation>
+    </message>
+    <message>
+        <source>Position, mm</source>
+        <translation>Position, mm</translation>
+    </message>
+    <message>
+        <source>Following error, mm (right scale)</source>
+        <translation>Following error, mm (right scale)</translation>
+    </message>
+    <message>
+        <source>DAC code (right scale)</source>
+        <translation>DAC code (right scale)</translation>
+    </message>
+    <message>
+        <source>Speed, mm/min (right scale)</source>
+        <translation>Speed, mm/min (right scale)</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Axis X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Axis Z</translation>
     </message>
 </context>
 <context>

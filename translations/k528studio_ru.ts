@@ -3069,46 +3069,6 @@ Its comment stays: %3</source>
         <translation>Экспорт PNG…</translation>
     </message>
     <message>
-        <source>Axis X</source>
-        <translation>Ось X</translation>
-    </message>
-    <message>
-        <source>Axis Z</source>
-        <translation>Ось Z</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>мм</translation>
-    </message>
-    <message>
-        <source>Error, mm</source>
-        <translation>Ошибка, мм</translation>
-    </message>
-    <message>
-        <source>DAC</source>
-        <translation>ЦАП</translation>
-    </message>
-    <message>
-        <source>mm/min</source>
-        <translation>мм/мин</translation>
-    </message>
-    <message>
-        <source>Setpoint</source>
-        <translation>Задание</translation>
-    </message>
-    <message>
-        <source>Position</source>
-        <translation>Положение</translation>
-    </message>
-    <message>
-        <source>Following error</source>
-        <translation>Ошибка рассогласования</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>Скорость</translation>
-    </message>
-    <message>
         <source>Move the mouse over a chart to read the values.</source>
         <translation>Наведите мышь на график, чтобы прочитать значения.</translation>
     </message>
@@ -3119,6 +3079,34 @@ Its comment stays: %3</source>
     <message>
         <source>Time before the newest sample, s</source>
         <translation>Время до последнего отсчёта, с</translation>
+    </message>
+    <message>
+        <source>Setpoint, mm</source>
+        <translation>Задание, мм</translation>
+    </message>
+    <message>
+        <source>Position, mm</source>
+        <translation>Положение, мм</translation>
+    </message>
+    <message>
+        <source>Following error, mm (right scale)</source>
+        <translation>Ошибка рассогласования, мм (правая шкала)</translation>
+    </message>
+    <message>
+        <source>DAC code (right scale)</source>
+        <translation>Код ЦАП (правая шкала)</translation>
+    </message>
+    <message>
+        <source>Speed, mm/min (right scale)</source>
+        <translation>Скорость, мм/мин (правая шкала)</translation>
+    </message>
+    <message>
+        <source>Axis X</source>
+        <translation>Ось X</translation>
+    </message>
+    <message>
+        <source>Axis Z</source>
+        <translation>Ось Z</translation>
     </message>
 </context>
 <context>

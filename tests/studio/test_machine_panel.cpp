@@ -223,6 +223,62 @@ private slots:
         QVERIFY(!session.simulation().buttonDown(machine::Button::CycleStart));
     }
 
+    // The legends of the lamps, buttons and switches are whole on the
+    // smallest panel (a shop PC's training workspace, the panel as tight as
+    // its dock holds it): set at the smallest legible size, a word still
+    // wider than its plate narrower on one line — never cut at the plate's
+    // edges or wrapped onto a plate of one line's height.
+    void legendsAreWholeOnTheSmallestPanel() {
+        QVERIFY(setLanguage("ru"));
+        for (const char* machineName : {"training-lathe", "grinder-205"}) {
+            SimulationSession session(profile::builtin(machineName));
+            session.setRunning(false);
+            MachinePanelWidget panel(session);
+            panel.setScale(0.6);
+            panel.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&panel));
+            // At the size it asks for, then as tight as its dock may hold it.
+            for (const bool tight : {false, true}) {
+                panel.resize(tight ? panel.minimumSizeHint() : panel.sizeHint());
+                QCoreApplication::sendPostedEvents();
+                QList<std::pair<QString, QRectF>> plates;
+                for (PilotLamp* l : panel.findChildren<PilotLamp*>())
+                    if (!l->legend().isEmpty())
+                        plates.append({l->legend(), l->legendPlate()});
+                for (PendantButton* b : panel.findChildren<PendantButton*>())
+                    if (!b->legend().isEmpty())
+                        plates.append({b->legend(), b->legendPlate()});
+                for (SelectorSwitch* sw : panel.findChildren<SelectorSwitch*>())
+                    if (!sw->caption().isEmpty())
+                        plates.append({sw->caption(), sw->captionPlate()});
+                QVERIFY2(plates.size() >= 12, qPrintable(QString::number(plates.size())));
+                int narrowed = 0;
+                for (const auto& [text, plate] : plates) {
+                    const PlateText t = plateText(plate, text);
+                    const double width = QFontMetricsF(t.font).horizontalAdvance(text) * t.xScale;
+                    const QString what =
+                        QStringLiteral("%1 «%2» on a plate %3 px wide: %4 px at %5 px, x%6")
+                            .arg(machineName, text)
+                            .arg(plate.width())
+                            .arg(width)
+                            .arg(t.font.pixelSize())
+                            .arg(t.xScale);
+                    QVERIFY2(width <= t.room + 0.01, qPrintable(what));
+                    QVERIFY2(t.font.pixelSize() >= 7, qPrintable(what));
+                    if (!tight) // still letters, not a smear (КРУГ НОВЫЙ of the grinder: 0.48)
+                        QVERIFY2(t.xScale > 0.45, qPrintable(what));
+                    // One line on the plate: its height holds one line only.
+                    QVERIFY2(text.contains('\n') ||
+                                 QFontMetricsF(t.font).height() <= plate.height() + 3,
+                             qPrintable(what));
+                    narrowed += t.xScale < 1;
+                }
+                qInfo("%s%s: %lld legends, %d set narrower", machineName, tight ? " (tight)" : "",
+                      static_cast<long long>(plates.size()), narrowed);
+            }
+        }
+    }
+
     void grinderPanel() {
         SimulationSession session(profile::builtin("grinder-205"));
         session.setRunning(false);

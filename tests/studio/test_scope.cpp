@@ -8,8 +8,11 @@
 #include "profile/builtin.h"
 #include "program/parser.h"
 #include "scope/scope_view.h"
+#include "language.h"
 
 #include <QChartView>
+#include <QGraphicsTextItem>
+#include <QScrollArea>
 #include <QDir>
 #include <QFile>
 #include <QTemporaryDir>
@@ -40,11 +43,31 @@ profile::MachineProfile lathe() {
     return p;
 }
 
+// The texts the chart draws (its scales' labels and titles) that Qt Charts
+// cut to «…» for want of room, and how many it shows whole.
+QStringList cutTexts(QChartView* view, int* whole) {
+    QStringList cut;
+    *whole = 0;
+    for (QGraphicsItem* item : view->scene()->items()) {
+        auto* t = dynamic_cast<QGraphicsTextItem*>(item);
+        if (!t || !t->isVisible() || t->toPlainText().isEmpty())
+            continue;
+        const QString text = t->toPlainText();
+        if (text.contains(QStringLiteral("...")) || text.contains(QChar(0x2026)))
+            cut << text;
+        else
+            ++*whole;
+    }
+    return cut;
+}
+
 } // namespace
 
 class TestScope : public QObject {
     Q_OBJECT
 private slots:
+    void initTestCase() { QVERIFY(setLanguage("ru")); } // the longer texts
+
     void followingErrorMatchesTheEngine() {
         machine::Simulation sim(lathe());
         ScopeView view;
@@ -104,6 +127,85 @@ private slots:
         b.add(s);
         QCOMPARE(b.size(), std::size_t(60000));
         QCOMPARE(b.at(0).tMs, std::int64_t(2));
+    }
+
+    // The charts lay themselves out for the room they get: in a shop PC's
+    // pane, a desk's, a wide and low one and the smallest, no scale's label
+    // or title is cut to «…», each value scale keeps at least two labels;
+    // a wide low pane puts the charts side by side; below the smallest
+    // useful chart the pane scrolls instead of crushing them.
+    void chartsFitTheirRoom_data() {
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<bool>("sideBySide");
+        QTest::newRow("shop PC's tab 560x620") << QSize(560, 620) << false;
+        QTest::newRow("desk's pane 800x440") << QSize(800, 440) << true;
+        QTest::newRow("4K pane 1600x900") << QSize(1600, 900) << false;
+        QTest::newRow("narrow 300x700") << QSize(300, 700) << false;
+        QTest::newRow("low 1100x260") << QSize(1100, 260) << true;
+    }
+    void chartsFitTheirRoom() {
+        QFETCH(QSize, size);
+        QFETCH(bool, sideBySide);
+        machine::Simulation sim(lathe());
+        QScrollArea pane; // as in its dock
+        pane.setWidgetResizable(true);
+        auto* view = new ScopeView;
+        pane.setWidget(view);
+        pane.resize(size);
+        pane.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&pane));
+        view->attach(sim);
+        // A still machine (its zeros), then a move.
+        for (const bool moved : {false, true}) {
+            if (moved) {
+                machine::SimulationRunMachine m(sim);
+                engine::RunOptions options;
+                options.home = false;
+                engine::runProgram(m, parse("%L1\nN1 G1 Z-20 FZ6000\nN2 G0 X40\n"), 1, options);
+            } else {
+                sim.advance(2000);
+            }
+            for (int i = 0; i < 3; ++i) {
+                view->refresh();
+                QCoreApplication::sendPostedEvents();
+                QTest::qWait(30);
+            }
+            QCOMPARE(view->chartsSideBySide(), sideBySide);
+            for (int a = 0; a < 2; ++a) {
+                QChartView* chart = view->chartView(a);
+                QVERIFY(chart->width() >= ScopeView::kChartMinWidth);
+                QVERIFY(chart->height() >= ScopeView::kChartMinHeight);
+                int whole = 0;
+                const QStringList cut = cutTexts(chart, &whole);
+                QVERIFY2(cut.isEmpty(), qPrintable(QStringLiteral("%1x%2 axis %3%4: %5")
+                                                       .arg(size.width())
+                                                       .arg(size.height())
+                                                       .arg(a)
+                                                       .arg(moved ? "" : " (still)")
+                                                       .arg(cut.join(" | "))));
+                // Three value scales and the time scale, two labels each at least.
+                QVERIFY2(whole >= 8, qPrintable(QString::number(whole)));
+                // The live window ends at 0 s, labelled.
+            bool zero = false;
+            for (QGraphicsItem* item : chart->scene()->items())
+                if (auto* t = dynamic_cast<QGraphicsTextItem*>(item); t && t->isVisible())
+                    zero = zero || t->toPlainText() == "0";
+            QVERIFY2(zero, "no label 0 at the window's end");
+            // Round values: no «-0.0» of a sum of binary fractions.
+                for (QGraphicsItem* item : chart->scene()->items())
+                    if (auto* t = dynamic_cast<QGraphicsTextItem*>(item); t && t->isVisible())
+                        QVERIFY2(
+                            !QRegularExpression("^-0(\\.0*)?$").match(t->toPlainText()).hasMatch(),
+                            qPrintable(t->toPlainText()));
+            }
+        }
+        const QString shots = QStringLiteral(K528_BINARY_DIR "/screenshots");
+        QDir().mkpath(shots);
+        QVERIFY(pane.grab().save(
+            shots + QStringLiteral("/scope-%1x%2.png").arg(size.width()).arg(size.height())));
+        // Below the charts' smallest size: the pane scrolls.
+        if (size.height() < 2 * ScopeView::kChartMinHeight + 120 && !sideBySide)
+            QVERIFY(view->height() > pane.viewport()->height());
     }
 
     // An alarm trigger: the picture stops half a window after the message.

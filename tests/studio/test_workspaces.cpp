@@ -226,6 +226,12 @@ class TestWorkspaces : public QObject {
     QTemporaryDir home_;
 private slots:
     void initTestCase() {
+        // This run's own settings: the same test runs at each screen size,
+        // two at a time under ctest; sharing one file, one run's clear()
+        // between another's quit and restart lost that one's layout.
+        QVERIFY(home_.isValid());
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, home_.path());
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, home_.path());
         QCoreApplication::setOrganizationName("K528StudioTestWorkspaces");
         QSettings().clear();
         QVERIFY(setLanguage("ru"));

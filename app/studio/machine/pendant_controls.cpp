@@ -36,17 +36,19 @@ void paintPlate(QPainter& p, const QRectF& r, const QString& text) {
     p.setBrush(g);
     p.drawRoundedRect(r, 2.5, 2.5);
     p.setPen(QColor(0xf2, 0xf1, 0xea));
-    double px = r.height() * 0.62;
-    QFont f = plateFont(px);
-    p.setFont(f);
-    // Shrink to fit, then allow two lines.
-    while (px > 7 && QFontMetricsF(f).horizontalAdvance(text) > r.width() - 4 &&
-           !text.contains('\n')) {
-        px -= 0.5;
-        f.setPixelSize(static_cast<int>(px));
-        p.setFont(f);
+    const PlateText t = plateText(r, text);
+    p.setFont(t.font);
+    if (t.xScale < 1) {
+        const QPointF c = r.center();
+        p.translate(c);
+        p.scale(t.xScale, 1);
+        p.translate(-c);
+        QRectF wide(0, r.top(), t.room / t.xScale + 2, r.height());
+        wide.moveCenter(c);
+        p.drawText(wide, Qt::AlignCenter, text);
+    } else {
+        p.drawText(r.adjusted(2, 0, -2, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
     }
-    p.drawText(r.adjusted(2, 0, -2, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
     p.restore();
 }
 
@@ -132,6 +134,25 @@ void paintLens(QPainter& p, const QPointF& c, double r, QColor color, bool on) {
 }
 
 } // namespace
+
+PlateText plateText(const QRectF& plate, const QString& text) {
+    PlateText t;
+    t.room = plate.width() - 4;
+    double px = plate.height() * 0.62;
+    t.font = plateFont(px);
+    // Shrink to fit down to the smallest legible size; a legend still wider
+    // (ШПИНДЕЛЬ on a small panel) is set narrower on one line rather than
+    // cut or wrapped onto a plate of one line's height.
+    while (px > 7 && QFontMetricsF(t.font).horizontalAdvance(text) > t.room &&
+           !text.contains('\n')) {
+        px -= 0.5;
+        t.font.setPixelSize(static_cast<int>(px));
+    }
+    const double advance = QFontMetricsF(t.font).horizontalAdvance(text);
+    if (advance > t.room && !text.contains('\n') && t.room > 0)
+        t.xScale = t.room / advance;
+    return t;
+}
 
 // ---------------------------------------------------------------------------
 // PendantButton
@@ -253,7 +274,12 @@ void PendantButton::paintEvent(QPaintEvent*) {
         p.drawText(QRectF(cc.x() - cr, cc.y() - cr, 2 * cr, 2 * cr), Qt::AlignCenter, symbol_);
     }
     if (!legend_.isEmpty())
-        paintPlate(p, QRectF(2, height() - plate - 1, width() - 4, plate), legend_);
+        paintPlate(p, legendPlate(), legend_);
+}
+
+QRectF PendantButton::legendPlate() const {
+    const double plate = 18 * scale_;
+    return QRectF(2, height() - plate - 1, width() - 4, plate);
 }
 
 // ---------------------------------------------------------------------------
@@ -405,7 +431,16 @@ void PilotLamp::paintEvent(QPaintEvent*) {
     const QPointF c(width() / 2.0, 2 + r + 1);
     paintBezel(p, c, r);
     paintLens(p, c, r * 0.72, lampColor(color_), on_);
-    paintPlate(p, QRectF(1, height() - plate - 1, width() - 2, plate), legend_);
+    paintPlate(p, legendPlate(), legend_);
+}
+
+QRectF SelectorSwitch::captionPlate() const {
+    return QRectF(4, 1, width() - 8, 15 * scale_);
+}
+
+QRectF PilotLamp::legendPlate() const {
+    const double plate = 15 * scale_;
+    return QRectF(1, height() - plate - 1, width() - 2, plate);
 }
 
 // ---------------------------------------------------------------------------
@@ -696,7 +731,7 @@ void SelectorSwitch::paintEvent(QPaintEvent*) {
     const QPointF c = centre();
     const double r = knobRadius();
     if (!caption_.isEmpty())
-        paintPlate(p, QRectF(4, 1, width() - 8, 15 * scale_), caption_);
+        paintPlate(p, captionPlate(), caption_);
     // Legends and index dots around.
     p.setFont(plateFont(std::clamp(r * 0.42, 8.0 * scale_, 12.0 * scale_)));
     for (int i = 0; i < legends_.size(); ++i) {

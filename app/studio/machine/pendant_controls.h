@@ -9,10 +9,22 @@
 
 #include <QAbstractButton>
 #include <QColor>
+#include <QFont>
+#include <QRectF>
 #include <QStringList>
 #include <QWidget>
 
 namespace k528::studio {
+
+// How a legend is set on its plate (`plate`: the plate's rectangle): the
+// font, and a horizontal scale below 1 where even the smallest legible size
+// is wider than the plate's room (the letters narrower, the word whole).
+struct PlateText {
+    QFont font;
+    double xScale = 1;
+    double room = 0; // the width the letters may take
+};
+PlateText plateText(const QRectF& plate, const QString& text);
 
 // A 22 mm push-button with a coloured cap, optionally illuminated, and its
 // legend plate below. Momentary: pressed() while the mouse holds it down,
@@ -35,6 +47,7 @@ public:
     void setScale(double scale);
     double scale() const { return scale_; }
     QRectF capRect() const; // where a test clicks
+    QRectF legendPlate() const; // the plate below the cap
 
 protected:
     void paintEvent(QPaintEvent*) override;
@@ -77,6 +90,7 @@ public:
     PilotLamp(Color color, QWidget* parent = nullptr);
     void setLegend(const QString& legend);
     QString legend() const { return legend_; }
+    QRectF legendPlate() const; // the plate below the lens
     void setOn(bool on);
     bool isOn() const { return on_; }
     QSize sizeHint() const override;
@@ -143,6 +157,7 @@ public:
     QStringList positions() const { return legends_; }
     void setCaption(const QString& caption);
     QString caption() const { return caption_; }
+    QRectF captionPlate() const; // the plate above the switch
     int position() const { return position_; }
     void setPosition(int index);           // emits positionChanged when it changes
     QPointF legendCentre(int index) const; // for tests

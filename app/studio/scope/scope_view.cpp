@@ -1,6 +1,7 @@
 #include "scope/scope_view.h"
 
 #include "machine/simulation.h"
+#include "workspace/flow_layout.h"
 
 #include <QChart>
 #include <QChartView>
@@ -10,17 +11,16 @@
 #include <QEvent>
 #include <QFile>
 #include <QFileDialog>
-#include <QMessageBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineSeries>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QSpinBox>
-#include <QValueAxis>
 #include <QVBoxLayout>
-
-#include "workspace/flow_layout.h"
+#include <QValueAxis>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,10 +29,70 @@ namespace k528::studio {
 
 namespace {
 
+// The traces' colours: setpoint, position, following error, the fourth.
+const std::array<QColor, 4> kColours = {QColor(40, 90, 200), QColor(20, 150, 60),
+                                        QColor(200, 40, 40), QColor(150, 100, 20)};
+
+// Round ticks for a range of `span`: an interval of 1, 2 or 5 × 10^n, at
+// most `most` of them, labelled with the decimals it needs.
+double roundStep(double span, int most) {
+    const double raw = span / std::max(1, most);
+    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0})
+        if (m * magnitude >= raw * (1 - 1e-9))
+            return m * magnitude;
+    return 10 * magnitude;
+}
+
+// The top of the range asked of setRangeAndTicks (the axis's is a hair above).
+double askedMax(const QValueAxis* axis) {
+    const QVariant asked = axis->property("k528.max");
+    return asked.isValid() ? asked.toDouble() : axis->max();
+}
+
+// Sets the axis's range [lo, hi] with round ticks anchored at 0, at most
+// `most`. A wider range takes its wider interval first, a narrower one its
+// range first: the axis never holds a range of millions of its ticks.
+void setRangeAndTicks(QValueAxis* axis, double lo, double hi, int most) {
+    const double span = hi - lo;
+    if (!(span > 0) || !std::isfinite(span))
+        return;
+    const double step = roundStep(span, most);
+    const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    const QString format = QStringLiteral("%.%1f").arg(decimals);
+    const bool dynamic = axis->tickType() == QValueAxis::TicksDynamic;
+    const bool stepFirst = !dynamic || step > axis->tickInterval();
+    const auto setStep = [&] {
+        if (axis->tickInterval() != step) {
+            axis->setTickInterval(step);
+            // A hair above 0: the tick at 0 (summed up from the first in
+            // steps of a binary fraction) is never labelled «-0.0».
+            axis->setTickAnchor(step * 1e-6);
+        }
+        if (!dynamic)
+            axis->setTickType(QValueAxis::TicksDynamic);
+    };
+    if (stepFirst)
+        setStep();
+    // The range a hair wider than asked: a tick on its end (0 s, the newest
+    // sample) is drawn although it sits a hair above 0.
+    const double top = hi + step * 1e-5;
+    axis->setProperty("k528.max", hi);
+    if (axis->min() != lo || axis->max() != top)
+        axis->setRange(lo, top);
+    if (!stepFirst)
+        setStep();
+    if (axis->labelFormat() != format)
+        axis->setLabelFormat(format);
+}
+
 // The y range of `axis` for the points: kept while the data fill at least
 // 40 % of it and stay inside (no relayout of the chart each frame), else
-// the data's range with a margin.
-void fitAxis(QValueAxis* axis, const QList<QPointF>& a, const QList<QPointF>* b = nullptr) {
+// the data's range with a margin, at least `leastSpan` (a still machine's
+// zeros are not drawn to a ten-thousandth of a millimetre); round ticks, at
+// most `most`.
+void fitAxis(QValueAxis* axis, int most, double leastSpan, const QList<QPointF>& a,
+             const QList<QPointF>* b = nullptr) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const QList<QPointF>* l : {&a, b})
         if (l)
@@ -44,11 +104,18 @@ void fitAxis(QValueAxis* axis, const QList<QPointF>& a, const QList<QPointF>* b 
         lo = -1;
         hi = 1;
     }
-    const double curLo = axis->min(), curHi = axis->max(), span = std::max(hi - lo, 1e-3);
-    if (lo >= curLo && hi <= curHi && span >= 0.4 * (curHi - curLo))
+    if (hi - lo < leastSpan) {
+        const double mid = (lo + hi) / 2;
+        lo = mid - leastSpan / 2;
+        hi = mid + leastSpan / 2;
+    }
+    const double curLo = axis->min(), curHi = askedMax(axis), span = hi - lo;
+    if (lo >= curLo && hi <= curHi && span >= 0.4 * (curHi - curLo)) {
+        setRangeAndTicks(axis, curLo, curHi, most); // the ticks for the chart's size
         return;
+    }
     const double pad = span * 0.15;
-    axis->setRange(lo - pad, hi + pad);
+    setRangeAndTicks(axis, lo - pad, hi + pad, most);
 }
 
 } // namespace
@@ -91,6 +158,22 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
     bar->addWidget(csvButton_);
     bar->addWidget(pngButton_);
     layout->addLayout(bar);
+    // One legend for both charts (in a chart it took a third of its width).
+    auto* legend = new FlowLayout(nullptr, 14, 2);
+    for (std::size_t i = 0; i < legend_.size(); ++i) {
+        legend_[i] = new QLabel(this);
+        legend_[i]->setObjectName(QStringLiteral("scope.legend.%1").arg(i));
+        legend_[i]->setTextFormat(Qt::RichText);
+        legend->addWidget(legend_[i]);
+    }
+    layout->addLayout(legend);
+    chartsArea_ = new QWidget(this);
+    chartsArea_->setObjectName("scope.charts");
+    chartsLayout_ = new QBoxLayout(QBoxLayout::TopToBottom, chartsArea_);
+    chartsLayout_->setContentsMargins(0, 0, 0, 0);
+    chartsLayout_->setSpacing(4);
+    chartsArea_->installEventFilter(this);
+    layout->addWidget(chartsArea_, 1);
 
     for (int a = 0; a < 2; ++a) {
         AxisChart& c = charts_[static_cast<std::size_t>(a)];
@@ -99,7 +182,10 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
         c.chart->setAnimationOptions(QChart::NoAnimation);
         c.chart->setDropShadowEnabled(false);
         c.chart->setBackgroundRoundness(0);
-        c.chart->legend()->setAlignment(Qt::AlignRight);
+        c.chart->legend()->hide();
+        QFont titleFont = font();
+        titleFont.setBold(true);
+        c.chart->setTitleFont(titleFont);
         c.time = new QValueAxis(c.chart);
         c.mm = new QValueAxis(c.chart);
         c.error = new QValueAxis(c.chart);
@@ -108,7 +194,7 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
         c.chart->addAxis(c.mm, Qt::AlignLeft);
         c.chart->addAxis(c.error, Qt::AlignRight);
         c.chart->addAxis(c.extra, Qt::AlignRight);
-        const auto add = [&](QLineSeries*& s, QValueAxis* y, QColor colour) {
+        const auto add = [&](QLineSeries*& s, QValueAxis* y, const QColor& colour) {
             s = new QLineSeries(c.chart);
             // Raster, not Qt Charts' OpenGL series: under llvmpipe (Xvfb) the
             // OpenGL overlay measured 4 frames/s against 60 (bench/run scope).
@@ -120,25 +206,28 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
             s->attachAxis(c.time);
             s->attachAxis(y);
         };
-        add(c.setpoint, c.mm, QColor(40, 90, 200));
-        add(c.position, c.mm, QColor(20, 150, 60));
-        add(c.followingError, c.error, QColor(200, 40, 40));
-        add(c.extraSeries, c.extra, QColor(150, 100, 20));
-        c.time->setLabelFormat("%.1f");
-        c.time->setTickCount(7);
-        c.mm->setLabelFormat("%.2f");
-        c.extra->setLabelFormat("%.0f");
-        c.error->setLabelFormat("%.3f");
-        c.error->setLinePenColor(QColor(200, 40, 40));
-        c.extra->setLinePenColor(QColor(150, 100, 20));
-        auto* view = new QChartView(c.chart, this);
+        add(c.setpoint, c.mm, kColours[0]);
+        add(c.position, c.mm, kColours[1]);
+        add(c.followingError, c.error, kColours[2]);
+        add(c.extraSeries, c.extra, kColours[3]);
+        // The right scales in their trace's colour (the legend names them).
+        for (auto [axis, colour] :
+             {std::pair{c.error, kColours[2]}, std::pair{c.extra, kColours[3]}}) {
+            axis->setLinePenColor(colour);
+            axis->setLabelsColor(colour);
+            axis->setGridLineVisible(false);
+            axis->setTitleVisible(false);
+        }
+        auto* view = new QChartView(c.chart, chartsArea_);
         view->setObjectName(a == 0 ? "scope.chart.X" : "scope.chart.Z");
         view->setRenderHint(QPainter::Antialiasing, false);
         view->setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
         view->setMouseTracking(true);
         view->viewport()->installEventFilter(this);
+        view->installEventFilter(this); // its size: its ticks and titles
+        view->setMinimumSize(kChartMinWidth, kChartMinHeight);
         views_[static_cast<std::size_t>(a)] = view;
-        layout->addWidget(view, 1);
+        chartsLayout_->addWidget(view, 1);
         connect(c.time, &QValueAxis::rangeChanged, this, [this](qreal lo, qreal hi) {
             if (!zooming_ && paused_)
                 draw(originMs_ + std::llround(lo * 1000), originMs_ + std::llround(hi * 1000),
@@ -293,9 +382,11 @@ void ScopeView::draw(std::int64_t t0, std::int64_t t1, std::int64_t origin) {
                                      ScopeSignal::FollowingError, extra};
         QList<QPointF>* outs[4] = {&lists_[0], &lists_[1], &lists_[2], &lists_[3]};
         buffer_.decimate(a, sigs, 4, t0, t1, columns, outs, origin);
-        fitAxis(c.mm, lists_[0], &lists_[1]);
-        fitAxis(c.error, lists_[2]);
-        fitAxis(c.extra, lists_[3]);
+        // The least spans: 10 µm of position, 2 µm of error, 10 mm/min or
+        // 10 codes of the fourth trace.
+        fitAxis(c.mm, c.valueTicks, 0.01, lists_[0], &lists_[1]);
+        fitAxis(c.error, c.valueTicks, 0.002, lists_[2]);
+        fitAxis(c.extra, c.valueTicks, 10, lists_[3]);
         c.setpoint->replace(lists_[0]);
         c.position->replace(lists_[1]);
         c.followingError->replace(lists_[2]);
@@ -304,11 +395,9 @@ void ScopeView::draw(std::int64_t t0, std::int64_t t1, std::int64_t origin) {
         // and labels stay put and only the traces move.
         const double x0 = static_cast<double>(t0 - origin) / 1000.0,
                      x1 = static_cast<double>(t1 - origin) / 1000.0;
-        if (c.time->min() != x0 || c.time->max() != x1) {
-            zooming_ = true;
-            c.time->setRange(x0, x1);
-            zooming_ = false;
-        }
+        zooming_ = true;
+        setRangeAndTicks(c.time, x0, x1, c.timeTicks);
+        zooming_ = false;
     }
     ++fpsFrames_;
     if (fpsClock_.elapsed() >= 1000) {
@@ -356,7 +445,58 @@ void ScopeView::showCursor(int axis, double tS) {
                               .arg(v.dac));
 }
 
+bool ScopeView::chartsSideBySide() const {
+    return chartsLayout_->direction() == QBoxLayout::LeftToRight;
+}
+
+void ScopeView::arrangeCharts() {
+    const double w = chartsArea_->width(), h = chartsArea_->height();
+    if (w <= 0 || h <= 0)
+        return;
+    // How far a chart of cw × ch is from 2:1, a trace's natural shape.
+    const auto off = [](double cw, double ch) {
+        return std::fabs(std::log(cw / std::max(1.0, ch) / 2.0));
+    };
+    const double stackedOff = off(w, h / 2), sideOff = off(w / 2, h);
+    const bool side = chartsSideBySide();
+    // Switched only when the other is clearly better (no flapping).
+    bool want = side ? stackedOff >= sideOff * 0.8 : sideOff < stackedOff * 0.8;
+    if (w < 2 * kChartMinWidth + chartsLayout_->spacing())
+        want = false;
+    if (want != side)
+        chartsLayout_->setDirection(want ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom);
+}
+
+void ScopeView::fitChart(int axis) {
+    AxisChart& c = charts_[static_cast<std::size_t>(axis)];
+    const QChartView* v = views_[static_cast<std::size_t>(axis)];
+    const int w = v->width(), h = v->height();
+    const QFontMetrics labels(c.time->labelsFont()), titles(c.time->titleFont());
+    // The plot's room inside the scales (three of labels).
+    const int plotW = w - 3 * (labels.horizontalAdvance(QStringLiteral("-000.000")) + 8) - 8;
+    // The time axis's title where the plot keeps its room below it and the
+    // title fits whole along it.
+    const bool timeTitle = h >= kChartMinHeight + 2 * titles.height() &&
+                           plotW >= titles.horizontalAdvance(c.time->titleText()) + 8;
+    if (c.time->isTitleVisible() != timeTitle)
+        c.time->setTitleVisible(timeTitle);
+    const int plotH = h - 2 * labels.height() - (timeTitle ? titles.height() + 4 : 0) -
+                      QFontMetrics(c.chart->titleFont()).height() - 16;
+    c.valueTicks = std::clamp(plotH / (2 * labels.height()), 1, 8);
+    c.timeTicks =
+        std::clamp(plotW / (labels.horizontalAdvance(QStringLiteral("-00.0")) + 28), 2, 12);
+    for (QValueAxis* a : {c.mm, c.error, c.extra, c.time})
+        setRangeAndTicks(a, a->min(), askedMax(a), a == c.time ? c.timeTicks : c.valueTicks);
+}
+
 bool ScopeView::eventFilter(QObject* o, QEvent* e) {
+    if (e->type() == QEvent::Resize) {
+        if (o == chartsArea_)
+            arrangeCharts();
+        for (int a = 0; a < 2; ++a)
+            if (o == views_[static_cast<std::size_t>(a)])
+                fitChart(a);
+    }
     if (e->type() == QEvent::MouseMove)
         for (int a = 0; a < 2; ++a)
             if (o == views_[static_cast<std::size_t>(a)]->viewport()) {
@@ -394,17 +534,24 @@ void ScopeView::retranslate() {
     triggerBox_->setItemText(3, tr("|Following error| over, mm"));
     csvButton_->setText(tr("Export CSV…"));
     pngButton_->setText(tr("Export PNG…"));
+    const bool dac = extraSignal() == ScopeSignal::Dac;
+    const QString names[4] = {
+        tr("Setpoint, mm"), tr("Position, mm"), tr("Following error, mm (right scale)"),
+        dac ? tr("DAC code (right scale)") : tr("Speed, mm/min (right scale)")};
+    for (std::size_t i = 0; i < legend_.size(); ++i)
+        legend_[i]->setText(QStringLiteral("<span style=\"color:%1\">&#9632;</span>&nbsp;%2")
+                                .arg(kColours[i].name(), names[i].toHtmlEscaped()));
     for (int a = 0; a < 2; ++a) {
         AxisChart& c = charts_[static_cast<std::size_t>(a)];
+        // The axis in the chart's title: a vertical scale's title takes more
+        // room than Qt Charts leaves for it and cuts the scale's labels to «…».
         c.chart->setTitle(a == 0 ? tr("Axis X") : tr("Axis Z"));
         c.time->setTitleText(tr("Time before the newest sample, s"));
-        c.mm->setTitleText(tr("mm"));
-        c.error->setTitleText(tr("Error, mm"));
-        c.extra->setTitleText(extraSignal() == ScopeSignal::Dac ? tr("DAC") : tr("mm/min"));
-        c.setpoint->setName(tr("Setpoint"));
-        c.position->setName(tr("Position"));
-        c.followingError->setName(tr("Following error"));
-        c.extraSeries->setName(extraSignal() == ScopeSignal::Dac ? tr("DAC") : tr("Speed"));
+        c.setpoint->setName(names[0]);
+        c.position->setName(names[1]);
+        c.followingError->setName(names[2]);
+        c.extraSeries->setName(names[3]);
+        fitChart(a); // the titles' widths changed
     }
     if (cursorLabel_->text().isEmpty())
         cursorLabel_->setText(tr("Move the mouse over a chart to read the values."));

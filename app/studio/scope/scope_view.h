@@ -6,6 +6,12 @@
 // threshold of |following error|) stop the picture half a window after the
 // event; pause; zoom with the mouse while stopped; a cursor that shows the
 // values under the mouse; CSV and PNG export.
+//
+// The charts lay themselves out for the room they get: one legend for both
+// above them (the right scales are coloured as their traces), side by side
+// when that gives each a better shape than one above the other, round ticks
+// as many as fit, axis titles only where they fit whole. Below a chart's
+// smallest useful size the pane scrolls rather than crush the scales to «…».
 #pragma once
 
 #include "scope/scope_buffer.h"
@@ -24,6 +30,7 @@ class QDoubleSpinBox;
 class QSpinBox;
 class QLabel;
 class QPushButton;
+class QBoxLayout;
 
 namespace k528::machine {
 class Simulation;
@@ -54,6 +61,10 @@ public:
     // The points handed to the chart of `axis` for `sig` (after refresh()).
     QList<QPointF> seriesPoints(int axis, ScopeSignal sig) const;
     QChartView* chartView(int axis) const { return views_[static_cast<std::size_t>(axis)]; }
+    // The charts side by side (else one above the other).
+    bool chartsSideBySide() const;
+    // The smallest chart worth drawing: the pane scrolls below it.
+    static constexpr int kChartMinWidth = 240, kChartMinHeight = 130;
 
     enum class Trigger { None, FrameStart, Alarm, Threshold };
     void setTrigger(Trigger t, double thresholdMm = 0.1);
@@ -78,8 +89,13 @@ private:
         QValueAxis *time = nullptr, *mm = nullptr, *error = nullptr, *extra = nullptr;
         QLineSeries *setpoint = nullptr, *position = nullptr, *followingError = nullptr,
                     *extraSeries = nullptr;
+        int valueTicks = 4, timeTicks = 6; // most intervals, for the chart's size
     };
     void retranslate();
+    // The charts' arrangement for the room of their area, and each chart's
+    // ticks and titles for its own size.
+    void arrangeCharts();
+    void fitChart(int axis);
     // The samples of [t0, t1] (ms), x in seconds after `origin`.
     void draw(std::int64_t t0, std::int64_t t1, std::int64_t origin);
     void checkTrigger();
@@ -97,6 +113,9 @@ private:
     QPushButton *csvButton_ = nullptr, *pngButton_ = nullptr;
     QLabel *cursorLabel_ = nullptr, *triggerLabel_ = nullptr, *extraLabel_ = nullptr,
            *windowLabel_ = nullptr;
+    std::array<QLabel*, 4> legend_{};
+    QWidget* chartsArea_ = nullptr;
+    QBoxLayout* chartsLayout_ = nullptr;
     bool paused_ = false;
     int windowS_ = 10;
     std::int64_t shownT0_ = 0, shownT1_ = 0, originMs_ = 0;

@@ -93,16 +93,23 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
     train.toolTip = QT_TRANSLATE_NOOP("k528::studio::Workspaces",
                                       "Learning the machine: the machine's panel, the K923, the backplot and "
                                       "the oscilloscope");
-    train.page = QString(); // no centre: the four panes share the window
+    train.page = QString(); // no centre: the panes share the window
     train.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F3);
     const double k = k923Share(0.28);
+    // The machine's panel keeps its shape (it is as tall as its width
+    // allows): the messages take the rest of its column. The backplot and the
+    // oscilloscope share the right column where there is height for both
+    // (a desk's screen); on a shop PC's they are tabs, each of the whole
+    // column (split, the oscilloscope's charts had no room for their scales).
+    const bool roomForBoth = h >= 900;
     train.docks = {
         place("dock.k923", Qt::LeftDockWidgetArea, k),
         beside("dock.machine", "dock.k923", Qt::Horizontal, 0.30),
-        place("dock.backplot", Qt::RightDockWidgetArea, std::max(0.3, 1.0 - k - 0.30)),
-        raised(beside("dock.scope", "dock.backplot", Qt::Vertical, 0.40)),
-        tab("dock.messages", "dock.scope"),
-        tab("dock.axes", "dock.scope", false),
+        beside("dock.messages", "dock.machine", Qt::Vertical, 0.45),
+        tab("dock.axes", "dock.messages", false),
+        raised(place("dock.backplot", Qt::RightDockWidgetArea, std::max(0.3, 1.0 - k - 0.30))),
+        roomForBoth ? beside("dock.scope", "dock.backplot", Qt::Vertical, 0.45)
+                    : tab("dock.scope", "dock.backplot"),
     };
     out.push_back(train);
     return out;

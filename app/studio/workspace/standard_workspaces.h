@@ -5,8 +5,10 @@
 //   Technologist  — the editor in the centre (files, outline, Problems), the
 //                   backplot beside it; the debugger, the controller, the
 //                   messages, R-parameters and constants on demand.
-//   Training      — no centre: the K923 and the machine's panel side by side,
-//                   the backplot and the oscilloscope (messages in a tab).
+//   Training      — no centre: the K923 and the machine's panel side by side
+//                   (the messages below the panel), the backplot and the
+//                   oscilloscope on the right: one above the other on a
+//                   desk's screen, two tabs on a shop PC's.
 // The shares fit the screen: the K923's width follows from the height it
 // gets (workspace/workspaces.h says how a layout is built and kept).
 #pragma once

@@ -69,7 +69,7 @@ class Workspaces : public QObject {
     Q_OBJECT
 public:
     // Bump when a default layout changes so much that the saved ones should go.
-    static constexpr int kLayoutVersion = 1;
+    static constexpr int kLayoutVersion = 2;
 
     Workspaces(QMainWindow* window, QTabWidget* workArea);
 
