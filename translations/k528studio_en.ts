@@ -229,8 +229,8 @@
         <translation>Not saved: fix the syntax errors first: %1</translation>
     </message>
     <message>
-        <source>Not saved: every program needs its %L header in the machine&apos;s memory</source>
-        <translation>Not saved: every program needs its %L header in the machine&apos;s memory</translation>
+        <source>Not saved: every program needs its %L header in the machine's memory</source>
+        <translation>Not saved: every program needs its %L header in the machine's memory</translation>
     </message>
     <message>
         <source>Not saved: %1 was changed in the database since revision %2 was opened (%3)</source>
@@ -515,8 +515,8 @@
         <translation>Formula 3: C = 25600 · A / Kd, A in m/s², Kd = %1 (the discrete in µm): 25600 · %2 / %1 = %3.</translation>
     </message>
     <message>
-        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio&apos;s unit (factor %4).</source>
-        <translation>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio&apos;s unit (factor %4).</translation>
+        <source>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</source>
+        <translation>The motion described: A = %1 m/s². The value as printed: &lt;b&gt;%2&lt;/b&gt;, which means %3 m/s² in K528 Studio's unit (factor %4).</translation>
     </message>
     <message>
         <source>The value that gives this motion: &lt;b&gt;%1&lt;/b&gt; (25600 · A / Kd = %2, integer part). Enter this one in C%3.</source>
@@ -547,12 +547,12 @@
         <translation>Formula 1 as printed: C = 0.8533 · Vmax / Tacc, Vmax in discretes/min, Tacc in ms: 0.8533 · %1 / %2 = %3.</translation>
     </message>
     <message>
-        <source>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2&apos;s 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
-        <translation>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2&apos;s 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
+        <source>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</source>
+        <translation>Table E.1 prints three formulas for parameter 22. Formula 3 defines the unit: C = 25600·A/Kd. Braking from V to 0 over S needs A = V²/(2S); put into formula 3 this is 25600/7200·10⁻⁶·V²/S = 3.5556·10⁻⁶·V²/S — formula 2's 3.556 rounded. A run-up from 0 to V in T needs A = V/T, that is 25600/60000·V/T = 0.4267·V/T; formula 1 prints 0.8533, twice as much.</translation>
     </message>
     <message>
-        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh&apos;s 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
-        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh&apos;s 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
+        <source>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</source>
+        <translation>Two formulas against one: K528 Studio takes the unit of formulas 2 and 3 (docs/machine-constants.md). A value computed by formula 1 as printed makes the axis accelerate twice as fast as described (appendix Zh's 2000 for «2 s to 5000 mm/min» runs up in 1.07 s here). Apply the consistent value.</translation>
     </message>
 </context>
 <context>
@@ -843,8 +843,8 @@
         <translation>Ports</translation>
     </message>
     <message>
-        <source>List the system&apos;s serial ports again</source>
-        <translation>List the system&apos;s serial ports again</translation>
+        <source>List the system's serial ports again</source>
+        <translation>List the system's serial ports again</translation>
     </message>
     <message>
         <source>Pull into the database</source>
@@ -899,8 +899,8 @@
         <translation>stopped</translation>
     </message>
     <message>
-        <source>The push did not start: the controller&apos;s memory could not be read (%1); nothing was sent</source>
-        <translation>The push did not start: the controller&apos;s memory could not be read (%1); nothing was sent</translation>
+        <source>The push did not start: the controller's memory could not be read (%1); nothing was sent</source>
+        <translation>The push did not start: the controller's memory could not be read (%1); nothing was sent</translation>
     </message>
     <message>
         <source>Pull failed: %1</source>
@@ -943,8 +943,8 @@
         <translation>Disconnected</translation>
     </message>
     <message>
-        <source>Pulling the controller&apos;s memory...</source>
-        <translation>Pulling the controller&apos;s memory...</translation>
+        <source>Pulling the controller's memory...</source>
+        <translation>Pulling the controller's memory...</translation>
     </message>
     <message>
         <source>Push a machine file</source>
@@ -963,8 +963,8 @@
         <translation>The machine %1 cannot be loaded: %2</translation>
     </message>
     <message>
-        <source>Reading the controller&apos;s memory to show what %1 changes...</source>
-        <translation>Reading the controller&apos;s memory to show what %1 changes...</translation>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Reading the controller's memory to show what %1 changes...</translation>
     </message>
     <message>
         <source>Push %1 to the controller</source>
@@ -975,8 +975,8 @@
         <translation>The controller already holds what %1 has: nothing changes.</translation>
     </message>
     <message>
-        <source>Changes in the controller&apos;s memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
-        <translation>Changes in the controller&apos;s memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
+        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
     </message>
     <message>
         <source>Push</source>
@@ -1059,8 +1059,8 @@
         <translation>Programs</translation>
     </message>
     <message>
-        <source>Choose the controller&apos;s port, speed, parity and address, then Connect.</source>
-        <translation>Choose the controller&apos;s port, speed, parity and address, then Connect.</translation>
+        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
+        <translation>Choose the controller's port, speed, parity and address, then Connect.</translation>
     </message>
 </context>
 <context>
@@ -1078,8 +1078,8 @@
         <translation>Open a program file first.</translation>
     </message>
     <message>
-        <source>The program under way is another file&apos;s.</source>
-        <translation>The program under way is another file&apos;s.</translation>
+        <source>The program under way is another file's.</source>
+        <translation>The program under way is another file's.</translation>
     </message>
     <message>
         <source>R-parameters are R0..R299, not R%1.</source>
@@ -1182,8 +1182,8 @@
         <translation>Meaning</translation>
     </message>
     <message>
-        <source>Like STOP on the machine&apos;s panel: the motion stops, CYCLE START continues</source>
-        <translation>Like STOP on the machine&apos;s panel: the motion stops, CYCLE START continues</translation>
+        <source>Like STOP on the machine's panel: the motion stops, CYCLE START continues</source>
+        <translation>Like STOP on the machine's panel: the motion stops, CYCLE START continues</translation>
     </message>
     <message>
         <source>Like CYCLE START: continue the held program</source>
@@ -1217,8 +1217,8 @@
         <translation>The controller holds no program L%1.</translation>
     </message>
     <message>
-        <source>The emergency stop is pressed: pull it out on the machine&apos;s panel.</source>
-        <translation>The emergency stop is pressed: pull it out on the machine&apos;s panel.</translation>
+        <source>The emergency stop is pressed: pull it out on the machine's panel.</source>
+        <translation>The emergency stop is pressed: pull it out on the machine's panel.</translation>
     </message>
     <message>
         <source>Switching the drives on…</source>
@@ -1237,8 +1237,8 @@
         <translation>Program L%1 was refused: %2</translation>
     </message>
     <message>
-        <source>The machine did not get ready: the drives are off (see the machine&apos;s messages).</source>
-        <translation>The machine did not get ready: the drives are off (see the machine&apos;s messages).</translation>
+        <source>The machine did not get ready: the drives are off (see the machine's messages).</source>
+        <translation>The machine did not get ready: the drives are off (see the machine's messages).</translation>
     </message>
     <message>
         <source>The reference-point cycle of %1 stopped with a message.</source>
@@ -1309,16 +1309,16 @@
         <translation>Stopped by a message at %1</translation>
     </message>
     <message>
-        <source>the emergency stop is pressed on the machine&apos;s panel</source>
-        <translation>the emergency stop is pressed on the machine&apos;s panel</translation>
+        <source>the emergency stop is pressed on the machine's panel</source>
+        <translation>the emergency stop is pressed on the machine's panel</translation>
     </message>
     <message>
         <source>the positioner shows message %1: %2</source>
         <translation>the positioner shows message %1: %2</translation>
     </message>
     <message>
-        <source>the PLC did not pass it on (start enable, the machine&apos;s messages)</source>
-        <translation>the PLC did not pass it on (start enable, the machine&apos;s messages)</translation>
+        <source>the PLC did not pass it on (start enable, the machine's messages)</source>
+        <translation>the PLC did not pass it on (start enable, the machine's messages)</translation>
     </message>
     <message>
         <source>The machine is paused (Simulation &gt; Pause the machine): the run goes on when it runs.</source>
@@ -1337,8 +1337,8 @@
         <translation>Automatic mode was refused: %1</translation>
     </message>
     <message>
-        <source>CYCLE START is held down on the machine&apos;s panel: release it, then Run again.</source>
-        <translation>CYCLE START is held down on the machine&apos;s panel: release it, then Run again.</translation>
+        <source>CYCLE START is held down on the machine's panel: release it, then Run again.</source>
+        <translation>CYCLE START is held down on the machine's panel: release it, then Run again.</translation>
     </message>
     <message>
         <source>CYCLE START was not taken: %1.</source>
@@ -1471,8 +1471,8 @@
         <translation>Check for the machine</translation>
     </message>
     <message>
-        <source>Also check the machine&apos;s software limits, feeds and axes</source>
-        <translation>Also check the machine&apos;s software limits, feeds and axes</translation>
+        <source>Also check the machine's software limits, feeds and axes</source>
+        <translation>Also check the machine's software limits, feeds and axes</translation>
     </message>
     <message>
         <source>Send to the controller</source>
@@ -1575,12 +1575,12 @@
         <translation>No file is open</translation>
     </message>
     <message>
-        <source>The workstation&apos;s machine (%1)</source>
-        <translation>The workstation&apos;s machine (%1)</translation>
+        <source>The workstation's machine (%1)</source>
+        <translation>The workstation's machine (%1)</translation>
     </message>
     <message>
-        <source>The workstation&apos;s machine (none)</source>
-        <translation>The workstation&apos;s machine (none)</translation>
+        <source>The workstation's machine (none)</source>
+        <translation>The workstation's machine (none)</translation>
     </message>
     <message>
         <source>None: the language only</source>
@@ -2132,8 +2132,8 @@ Its comment stays: %3</translation>
         <translation>Mode AUTOMATIC: the machine works by the control program.</translation>
     </message>
     <message>
-        <source>Mode MANUAL: the machine&apos;s push-buttons and handwheels move the axes; R-parameters can be edited.</source>
-        <translation>Mode MANUAL: the machine&apos;s push-buttons and handwheels move the axes; R-parameters can be edited.</translation>
+        <source>Mode MANUAL: the machine's push-buttons and handwheels move the axes; R-parameters can be edited.</source>
+        <translation>Mode MANUAL: the machine's push-buttons and handwheels move the axes; R-parameters can be edited.</translation>
     </message>
     <message>
         <source>Mode REFERENCE POINT: the homing cycle ties the axes to the machine.</source>
@@ -2295,8 +2295,8 @@ Its comment stays: %3</translation>
         <translation>LCD: blue backlight</translation>
     </message>
     <message>
-        <source>The K923 operator panel. Click it to work it from the PC keyboard too (each key&apos;s tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</source>
-        <translation>The K923 operator panel. Click it to work it from the PC keyboard too (each key&apos;s tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</translation>
+        <source>The K923 operator panel. Click it to work it from the PC keyboard too (each key's tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</source>
+        <translation>The K923 operator panel. Click it to work it from the PC keyboard too (each key's tooltip names its PC key; Tab leaves the panel). Right-click for the keyboard map.</translation>
     </message>
     <message>
         <source>K923 operator panel</source>
@@ -2310,8 +2310,8 @@ Its comment stays: %3</translation>
         <translation>K923 keyboard map</translation>
     </message>
     <message>
-        <source>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel&apos;s SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</source>
-        <translation>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel&apos;s SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</translation>
+        <source>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel's SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</source>
+        <translation>The PC keyboard works the panel while the panel has the focus: click the panel (a ring shows round it) or reach it with Tab; Tab leaves it again. Shift held with a PC key that is not a character gives SHIFT+key; S latches the panel's SHIFT for the next key, as a click on SHIFT does. Letters work in the Russian layout too.</translation>
     </message>
     <message>
         <source>Panel key</source>
@@ -2472,8 +2472,8 @@ Its comment stays: %3</translation>
         <translation>FEED OVERRIDE %</translation>
     </message>
     <message>
-        <source>K923: the panel&apos;s L1..L4 keys set the override</source>
-        <translation>K923: the panel&apos;s L1..L4 keys set the override</translation>
+        <source>K923: the panel's L1..L4 keys set the override</source>
+        <translation>K923: the panel's L1..L4 keys set the override</translation>
     </message>
     <message>
         <source>CHUCK</source>
@@ -2690,8 +2690,8 @@ Its comment stays: %3</translation>
         <translation>%1 kept in the database as revision %2 (%3 changes)</translation>
     </message>
     <message>
-        <source>&amp;Keep the controller&apos;s memory in the database</source>
-        <translation>&amp;Keep the controller&apos;s memory in the database</translation>
+        <source>&amp;Keep the controller's memory in the database</source>
+        <translation>&amp;Keep the controller's memory in the database</translation>
     </message>
     <message>
         <source>Editor</source>
@@ -2879,8 +2879,8 @@ Its comment stays: %3</translation>
         <translation>A program is executing: R-parameters are changed when it stops, as on the K923</translation>
     </message>
     <message>
-        <source>%1 is outside the R-parameters&apos; range -2147483648..2147483647</source>
-        <translation>%1 is outside the R-parameters&apos; range -2147483648..2147483647</translation>
+        <source>%1 is outside the R-parameters' range -2147483648..2147483647</source>
+        <translation>%1 is outside the R-parameters' range -2147483648..2147483647</translation>
     </message>
     <message>
         <source>R%1: «%2» is not a number</source>
@@ -2898,8 +2898,8 @@ Its comment stays: %3</translation>
         <translation>R-parameters</translation>
     </message>
     <message>
-        <source>The machine&apos;s presets are not read from the database: %1</source>
-        <translation>The machine&apos;s presets are not read from the database: %1</translation>
+        <source>The machine's presets are not read from the database: %1</source>
+        <translation>The machine's presets are not read from the database: %1</translation>
     </message>
     <message>
         <source>Search: number or meaning</source>
@@ -2934,8 +2934,8 @@ Its comment stays: %3</translation>
         <translation>Keep as preset</translation>
     </message>
     <message>
-        <source>The selected parameter&apos;s value becomes the machine&apos;s preset (a new revision)</source>
-        <translation>The selected parameter&apos;s value becomes the machine&apos;s preset (a new revision)</translation>
+        <source>The selected parameter's value becomes the machine's preset (a new revision)</source>
+        <translation>The selected parameter's value becomes the machine's preset (a new revision)</translation>
     </message>
     <message>
         <source>Remove preset</source>
@@ -2946,16 +2946,16 @@ Its comment stays: %3</translation>
         <translation>Keep all as presets</translation>
     </message>
     <message>
-        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller&apos;s memory» does</source>
-        <translation>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller&apos;s memory» does</translation>
+        <source>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</source>
+        <translation>Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does</translation>
     </message>
     <message>
         <source>Load the presets</source>
         <translation>Load the presets</translation>
     </message>
     <message>
-        <source>The machine&apos;s presets into the controller</source>
-        <translation>The machine&apos;s presets into the controller</translation>
+        <source>The machine's presets into the controller</source>
+        <translation>The machine's presets into the controller</translation>
     </message>
     <message>
         <source>Note:</source>
@@ -3136,8 +3136,8 @@ Its comment stays: %3</translation>
         <translation>The database is read-only: %1 (%2); a new database cannot be created there.</translation>
     </message>
     <message>
-        <source>The database is read-only: %1 (%2); its schema is older than this program&apos;s and cannot be upgraded.</source>
-        <translation>The database is read-only: %1 (%2); its schema is older than this program&apos;s and cannot be upgraded.</translation>
+        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
+        <translation>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</translation>
     </message>
     <message>
         <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
@@ -3162,8 +3162,8 @@ Its comment stays: %3</translation>
         <translation>&amp;Reset layout</translation>
     </message>
     <message>
-        <source>The current workspace&apos;s docks where they were at first</source>
-        <translation>The current workspace&apos;s docks where they were at first</translation>
+        <source>The current workspace's docks where they were at first</source>
+        <translation>The current workspace's docks where they were at first</translation>
     </message>
     <message>
         <source>Workspace: the window arranged for its user</source>
@@ -3174,8 +3174,8 @@ Its comment stays: %3</translation>
         <translation>Operator</translation>
     </message>
     <message>
-        <source>At the machine: the K923, the machine&apos;s panel, the program being run, the messages and the axes</source>
-        <translation>At the machine: the K923, the machine&apos;s panel, the program being run, the messages and the axes</translation>
+        <source>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</source>
+        <translation>At the machine: the K923, the machine's panel, the program being run, the messages and the axes</translation>
     </message>
     <message>
         <source>Technologist</source>
@@ -3190,8 +3190,8 @@ Its comment stays: %3</translation>
         <translation>Training</translation>
     </message>
     <message>
-        <source>Learning the machine: the machine&apos;s panel, the K923, the backplot and the oscilloscope</source>
-        <translation>Learning the machine: the machine&apos;s panel, the K923, the backplot and the oscilloscope</translation>
+        <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
+        <translation>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</translation>
     </message>
 </context>
 <context>
@@ -3229,8 +3229,8 @@ Its comment stays: %3</translation>
         <translation>Follow the machine</translation>
     </message>
     <message>
-        <source>While the session&apos;s machine runs a program, its path grows here live</source>
-        <translation>While the session&apos;s machine runs a program, its path grows here live</translation>
+        <source>While the session's machine runs a program, its path grows here live</source>
+        <translation>While the session's machine runs a program, its path grows here live</translation>
     </message>
 </context>
 <context>
@@ -3309,31 +3309,31 @@ Its comment stays: %3</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished">Cancel</translation>
+        <translation>Cancel</translation>
     </message>
     <message>
         <source>Stop computing the path (the view keeps what it shows)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stop computing the path (the view keeps what it shows)</translation>
     </message>
     <message>
         <source>L%1: computing the path… %2 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>L%1: computing the path… %2 frames</translation>
     </message>
     <message>
         <source>L%1: cutting the blank… %2 of %3 moves</source>
-        <translation type="unfinished"></translation>
+        <translation>L%1: cutting the blank… %2 of %3 moves</translation>
     </message>
     <message>
         <source>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</source>
-        <translation type="unfinished"></translation>
+        <translation>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</translation>
     </message>
     <message>
         <source>L%1: the path was not computed (cancelled)</source>
-        <translation type="unfinished"></translation>
+        <translation>L%1: the path was not computed (cancelled)</translation>
     </message>
     <message>
         <source>L%1: simulating the run…</source>
-        <translation type="unfinished"></translation>
+        <translation>L%1: simulating the run…</translation>
     </message>
 </context>
 <context>

@@ -113,6 +113,7 @@ public:
     // hidden — they are rebuilt every frame and cost more than the path.
     void setInteracting(bool on);
     void setActual(const toolpath::ActualPath* actual); // null: none
+    const toolpath::ActualPath* actual() const { return actual_; }
     // The same path grown since the last call: samples [from, size) are
     // appended to the buffers (a different path or from 0: setActual).
     void appendActual(const toolpath::ActualPath* actual, std::size_t from);

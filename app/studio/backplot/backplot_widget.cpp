@@ -138,9 +138,7 @@ BackplotWidget::BackplotWidget(QWidget* parent)
 
     job_ = new PathJob(this);
     connect(job_, &PathJob::finished, this, &BackplotWidget::pathJobFinished);
-    busyTimer_ = new QTimer(this);
-    busyTimer_->setInterval(100);
-    connect(busyTimer_, &QTimer::timeout, this, &BackplotWidget::showBusy);
+    connect(job_, &PathJob::progressed, this, &BackplotWidget::showBusy);
     connect(cancelButton_, &QToolButton::clicked, this, [this] {
         cancelledByUser_ = true;
         job_->cancel();
@@ -275,10 +273,6 @@ void BackplotWidget::showProgram(const profile::MachineProfile& profile,
     pendingProgram_ = number;
     cancelledByUser_ = false;
     job_->request(profile, store, number, blank);
-    if (!busyTimer_->isActive()) {
-        busySince_.start();
-        busyTimer_->start();
-    }
 }
 
 bool BackplotWidget::computing() const { return job_->busy(); }
@@ -287,13 +281,13 @@ QString BackplotWidget::statusText() const { return statusLabel_->isHidden() ? Q
 
 void BackplotWidget::showBusy() {
     if (!job_->busy()) {
-        busyTimer_->stop();
         busyRow_->hide();
         return;
     }
-    if (busySince_.elapsed() < 300) // a quick one shows no progress at all
-        return;
     const PathJob::Progress p = job_->progress();
+    // A short one shows no progress at all (counted in frames and legs).
+    if (busyRow_->isHidden() && (p.phase == PathJob::Phase::Preview ? p.done : p.total) < PathJob::kShowProgressAfter)
+        return;
     const QLocale l;
     busyLabel_->setText(p.phase == PathJob::Phase::Preview
                             ? tr("L%1: computing the path… %2 frames").arg(pendingProgram_).arg(l.toString(p.done))
@@ -307,10 +301,8 @@ void BackplotWidget::showBusy() {
 
 void BackplotWidget::pathJobFinished() {
     std::optional<k528::backplot::PreparedPath> r = job_->take();
-    if (!job_->busy()) {
-        busyTimer_->stop();
+    if (!job_->busy())
         busyRow_->hide();
-    }
     if (!r) {
         if (cancelledByUser_) {
             status_ = {Status::Cancelled, pendingProgram_, 0};
@@ -322,7 +314,10 @@ void BackplotWidget::pathJobFinished() {
     const int program = r->path.program;
     const std::int64_t frames = r->path.run.frames;
     scene_->setPrepared(std::move(*r));
-    scene_->setActual(actual_ && actual_->result.program == scene_->path().program ? actual_.get() : nullptr);
+    // The path of a run on the session's machine (appendLive) stays: it grew
+    // while this path was computed and is not drawn again from its start.
+    if (!scene_->actual() || scene_->actual() == actual_.get())
+        scene_->setActual(actual_ && actual_->result.program == scene_->path().program ? actual_.get() : nullptr);
     playhead_ = -1;
     scrub_->setValue(kScrubSteps);
     updateOutsideList();

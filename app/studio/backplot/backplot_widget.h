@@ -111,8 +111,6 @@ private:
     QLabel *statusLabel_ = nullptr, *busyLabel_ = nullptr;
     QProgressBar* busyBar_ = nullptr;
     QToolButton* cancelButton_ = nullptr;
-    QTimer* busyTimer_ = nullptr;
-    QElapsedTimer busySince_;
     int pendingProgram_ = 0;
     // What statusLabel_ says (kept as data: it is said again after a language switch).
     enum class Status { None, CutOff, Cancelled, Running };

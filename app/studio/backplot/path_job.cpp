@@ -12,6 +12,7 @@ struct PathJob::State {
     std::atomic<bool> cancelled{false};
     std::atomic<int> phase{static_cast<int>(Phase::Preview)};
     std::atomic<std::int64_t> done{0}, total{kMaxFrames};
+    std::atomic<bool> reported{false}; // a progressed() waits on the GUI thread
     QMutex mutex; // guards result
     std::optional<k528::backplot::PreparedPath> result;
 };
@@ -35,8 +36,9 @@ void PathJob::request(const profile::MachineProfile& profile, const program::Pro
         if (!s->cancelled) {
             toolpath::PathOptions o;
             o.preview.maxFrames = kMaxFrames;
-            o.preview.keepGoing = [&s](std::int64_t frames) {
+            o.preview.keepGoing = [this, &s](std::int64_t frames) {
                 s->done = frames;
+                report(s);
                 return !s->cancelled.load();
             };
             toolpath::ProgrammedPath path = toolpath::programmedPath(profile, store, number, o);
@@ -45,9 +47,10 @@ void PathJob::request(const profile::MachineProfile& profile, const program::Pro
                 s->done = 0;
                 s->total = static_cast<std::int64_t>(path.segments.size());
                 k528::backplot::PreparedPath p = k528::backplot::preparePath(
-                    std::move(path), blank, [&s](std::size_t done, std::size_t total) {
+                    std::move(path), blank, [this, &s](std::size_t done, std::size_t total) {
                         s->done = static_cast<std::int64_t>(done);
                         s->total = static_cast<std::int64_t>(total);
+                        report(s);
                         return !s->cancelled.load();
                     });
                 if (!s->cancelled) {
@@ -59,6 +62,19 @@ void PathJob::request(const profile::MachineProfile& profile, const program::Pro
         // Back on the GUI thread (not at all once this object is gone).
         QMetaObject::invokeMethod(this, [this, s] { done(s); }, Qt::QueuedConnection);
     });
+}
+
+void PathJob::report(const std::shared_ptr<State>& s) {
+    if (s->cancelled || s->reported.exchange(true))
+        return; // the one waiting reads the progress when it is handled
+    QMetaObject::invokeMethod(
+        this,
+        [this, s] {
+            s->reported = false;
+            if (s == current_)
+                emit progressed();
+        },
+        Qt::QueuedConnection);
 }
 
 void PathJob::done(const std::shared_ptr<State>& s) {

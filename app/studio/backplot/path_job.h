@@ -4,7 +4,8 @@
 // The window never waits for it:
 //   - a newer request cancels the one under way (its result is dropped; the
 //     preview and the cut stop within a few hundred frames or legs);
-//   - progress (frames previewed, legs cut) can be read at any time;
+//   - progress (frames previewed, legs cut) can be read at any time and
+//     is signalled (progressed) as the worker goes on;
 //   - the preview stops after kMaxFrames frames, so that a program that never
 //     ends (an endless GOTO) still shows — the result says it was cut off.
 // Only the VTK buffers are filled on the GUI thread, bounded by the view.
@@ -31,6 +32,10 @@ public:
     // (a 999-frame program run a hundred times) and a fraction of a second
     // of the interpreter; the blank is cut by what they drew.
     static constexpr std::int64_t kMaxFrames = 100'000;
+    // A job shows its progress once it has previewed this many frames or
+    // has this many legs to cut (counted, not timed: a short program's path
+    // comes without the progress row flashing).
+    static constexpr std::int64_t kShowProgressAfter = 4096;
 
     enum class Phase { Preview, Stock };
     struct Progress {
@@ -53,12 +58,16 @@ public:
     std::optional<k528::backplot::PreparedPath> take();
 
 signals:
+    // The job under way went on (progress() changed); queued from the
+    // worker, at most one waiting at a time, always before finished().
+    void progressed();
     // The job under way ended: its result is ready (take()), or it was cancelled.
     void finished();
 
 private:
     struct State;
     void done(const std::shared_ptr<State>& s);
+    void report(const std::shared_ptr<State>& s); // on the worker: progressed() queued
 
     QThreadPool pool_; // one thread: a cancelled job ends before the next starts
     std::shared_ptr<State> current_;
