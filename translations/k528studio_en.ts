@@ -1716,6 +1716,14 @@ Its comment stays: %3</translation>
         <source>Line %1 replaced by the master; its comment kept</source>
         <translation>Line %1 replaced by the master; its comment kept</translation>
     </message>
+    <message>
+        <source>There is no sample program %1</source>
+        <translation>There is no sample program %1</translation>
+    </message>
+    <message>
+        <source>%1 (sample)</source>
+        <translation>%1 (sample)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::FrameMaster</name>

@@ -1716,6 +1716,14 @@ Its comment stays: %3</source>
         <source>Line %1 replaced by the master; its comment kept</source>
         <translation>Строка %1 заменена мастером; её комментарий сохранён</translation>
     </message>
+    <message>
+        <source>There is no sample program %1</source>
+        <translation>Нет примера программы %1</translation>
+    </message>
+    <message>
+        <source>%1 (sample)</source>
+        <translation>%1 (пример)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::FrameMaster</name>

@@ -1,5 +1,6 @@
 // k528 check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...
 // (shared/spec/cli.md; extensions in docs/program-language.md).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <iterator>
@@ -13,7 +14,9 @@
 #include "profile/builtin.h"
 #include "profile/text_format.h"
 #include "program/validator.h"
+#include "plc/description.h"
 #include "program_cli.h"
+#include "proveout_cli.h"
 #include "util/input_file.h"
 #include "util/json.h"
 
@@ -24,11 +27,12 @@ namespace {
 
 // The constants of a machine profile that a program is checked against.
 // The machine's limits and feeds (--profile, --db) as validation options.
-bool machineOptions(const Args& args, program::ValidateOptions& options) {
-    const std::optional<profile::MachineProfile> p = machineProfile(args);
-    if (!p)
+bool machineOptions(const Args& args, program::ValidateOptions& options,
+                    std::optional<profile::MachineProfile>& machine) {
+    machine = machineProfile(args);
+    if (!machine)
         return false;
-    options = engine::validateOptionsFor(*p);
+    options = engine::validateOptionsFor(*machine);
     return true;
 }
 
@@ -49,6 +53,7 @@ Json fileJson(const std::string& file, const program::CheckResult& r) {
         j["manual_number"] = d.manualNumber > 0 ? Json(d.manualNumber) : Json();
         j["message_ru"] = d.messageRu;
         j["message_en"] = d.messageEn;
+        j["rule"] = std::string(program::ruleId(d.rule));
         diags.push_back(std::move(j));
     }
     f["diagnostics"] = std::move(diags);
@@ -106,7 +111,7 @@ bool parseProgramNumber(const std::optional<std::string>& value, int& number) {
 }
 
 int runCheck(std::span<const std::string> argv) {
-    const Args args(argv, {"--json"}, {"--number", "--lang", "--profile", "--db"});
+    const Args args(argv, {"--json"}, {"--number", "--lang", "--profile", "--db", "--blank"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().empty())
@@ -118,8 +123,11 @@ int runCheck(std::span<const std::string> argv) {
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
         return usageError("--lang is ru or en, not '" + *l + "'");
     program::ValidateOptions options;
-    if (args.value("--profile") && !machineOptions(args, options))
+    std::optional<profile::MachineProfile> machine;
+    if (args.value("--profile") && !machineOptions(args, options, machine))
         return ExitUsage;
+    if (args.value("--blank") && !machine)
+        return usageError("--blank needs --profile (the machine the program is proved on)");
 
     const bool asJson = args.has("--json");
     bool ioError = false;
@@ -133,10 +141,39 @@ int runCheck(std::span<const std::string> argv) {
         }
         const program::CheckResult r = program::check(text, parseOptions, options);
         errors = errors || r.hasErrors();
-        if (asJson)
-            files.push_back(fileJson(displayName(path), r));
-        else
+        // With the machine: the prove-out of a file without errors.
+        std::vector<proveout::Finding> findings;
+        if (machine && !r.hasErrors()) {
+            std::optional<stock::Blank> blank;
+            if (!blankFor(args, text, blank))
+                return ExitUsage;
+            try {
+                engine::PreviewOptions po;
+                po.fromReferencePoint = true; // as `k528 run` starts, after homing
+                findings = proveout::proveStore(*machine, r.store, po, blank).findings;
+            } catch (const plc::DescriptionError& e) {
+                std::fprintf(stderr, "k528: machine description %s\n", e.what());
+                return ExitUsage;
+            } catch (const profile::ToolError& e) {
+                std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+                return ExitUsage;
+            }
+            errors = errors || std::any_of(findings.begin(), findings.end(),
+                                           [](const proveout::Finding& f) { return f.isError(); });
+        }
+        const auto inFile = [&](const proveout::Finding& f) {
+            return r.store.find(f.program) != nullptr;
+        };
+        if (asJson) {
+            Json f = fileJson(displayName(path), r);
+            for (const proveout::Finding& x : findings)
+                f["diagnostics"].push_back(findingJson(x, text, inFile(x)));
+            files.push_back(std::move(f));
+        } else {
             printDiagnostics(stdout, displayName(path), r.diagnostics, lang);
+            for (const proveout::Finding& x : findings)
+                printFinding(stdout, displayName(path), x, inFile(x), lang);
+        }
     }
     if (asJson) {
         Json root;

@@ -3,8 +3,11 @@
 // core/toolpath. Output is streamed (a million segments print in a second),
 // so the JSON is written here rather than built as a tree.
 #include "cli.h"
+#include "plc/description.h"
 #include "program_setup.h"
+#include "proveout_cli.h"
 #include "toolpath/programmed_path.h"
+#include "util/json.h"
 
 #include <cinttypes>
 #include <cmath>
@@ -50,7 +53,8 @@ std::string jsonText(const std::string& s) {
 constexpr const char* kOutsideRu = "ВНЕ ГРАНИЦ";
 constexpr const char* kOutsideEn = "OUT OF BOUNDS";
 
-void printJson(const toolpath::ProgrammedPath& p) {
+void printJson(const toolpath::ProgrammedPath& p, const proveout::Result& proof,
+               const ProgramSetup& setup) {
     std::FILE* o = stdout;
     std::fprintf(o, "{\"program\":%d,\"segments\":[", p.program);
     bool first = true;
@@ -94,6 +98,15 @@ void printJson(const toolpath::ProgrammedPath& p) {
                      first ? "" : ",", s.program, s.line, s.n, kOutsideRu, kOutsideEn);
         first = false;
     }
+    // The prove-out's findings (docs/proveout.md), each with its "rule".
+    std::fprintf(o, "],\"diagnostics\":[");
+    first = true;
+    for (const proveout::Finding& f : proof.findings) {
+        const bool inFile = setup.store.find(f.program) != nullptr;
+        std::fprintf(o, "%s%s", first ? "" : ",",
+                     json::dump(findingJson(f, setup.text, inFile)).c_str());
+        first = false;
+    }
     std::fprintf(o, "],\"alarms\":[");
     first = true;
     for (const engine::AlarmView& a : p.run.alarms) {
@@ -106,7 +119,7 @@ void printJson(const toolpath::ProgrammedPath& p) {
                  std::string(engine::previewStatusName(p.run.status)).c_str());
 }
 
-void printPlain(const toolpath::ProgrammedPath& p, Lang lang) {
+void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof, Lang lang) {
     for (const toolpath::Segment& s : p.segments) {
         std::FILE* o = stdout;
         std::fprintf(o, "L%d N%d line %d %s ", s.program, s.n, s.line,
@@ -125,6 +138,11 @@ void printPlain(const toolpath::ProgrammedPath& p, Lang lang) {
     for (const toolpath::Dwell& d : p.dwells)
         std::fprintf(stdout, "L%d N%d line %d dwell  X%s Z%s  %s s\n", d.program, d.n, d.line,
                      mm(d.at.x).c_str(), mm(d.at.z).c_str(), mm(d.seconds).c_str());
+    for (const proveout::Finding& f : proof.findings)
+        std::fprintf(stdout, "L%d N%d line %d %s [%s] %s%s\n", f.program, f.n, f.line,
+                     f.isError() ? "error" : "warning",
+                     std::string(proveout::ruleId(f.rule)).c_str(), f.message(lang == Lang::Ru).c_str(),
+                     f.occurrences > 1 ? (" (×" + std::to_string(f.occurrences) + ")").c_str() : "");
     for (const engine::AlarmView& a : p.run.alarms)
         std::fprintf(stdout, "alarm %d.%s  (L%d, line %d)\n", a.number,
                      (lang == Lang::Ru ? a.textRu : a.textEn).c_str(), a.program, a.line);
@@ -138,7 +156,8 @@ void printPlain(const toolpath::ProgrammedPath& p, Lang lang) {
 int runPath(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kSetupOptions;
     options.push_back("--max-frames");
-    const Args args(argv, {"--json"}, options);
+    options.push_back(kBlankOption);
+    const Args args(argv, {"--json", "--home"}, options);
     if (!args.ok())
         return usageError(args.error());
     const bool asJson = args.has("--json");
@@ -153,14 +172,27 @@ int runPath(std::span<const std::string> argv) {
             return usageError("--max-frames needs a whole number 1..100000000, not '" + *m + "'");
         po.preview.maxFrames = *v;
     }
+    po.preview.fromReferencePoint = args.has("--home");
+    std::optional<stock::Blank> blank;
+    if (!blankFor(args, setup.text, blank))
+        return ExitUsage;
     static char buffer[1 << 16];
     std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
-    const toolpath::ProgrammedPath path =
-        toolpath::programmedPath(setup.profile, setup.store, setup.number, po);
+    proveout::Proof proof;
+    try {
+        proof = proveout::proveProgram(setup.profile, setup.store, setup.number, po.preview, blank);
+    } catch (const plc::DescriptionError& e) {
+        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        return ExitUsage;
+    } catch (const profile::ToolError& e) {
+        std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+        return ExitUsage;
+    }
+    const toolpath::ProgrammedPath& path = proof.path;
     if (asJson)
-        printJson(path);
+        printJson(path, proof.result, setup);
     else
-        printPlain(path, setup.lang);
+        printPlain(path, proof.result, setup.lang);
     std::fflush(stdout);
     return path.run.status == engine::PreviewStatus::Alarm ? ExitInputErrors : ExitOk;
 }

@@ -91,6 +91,7 @@ int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
         out.number = parsed.store.firstWritten(); // as `k528 run` starts it
     }
     out.store = parsed.store;
+    out.text = std::move(text);
     return -1;
 }
 

@@ -20,6 +20,7 @@ struct ProgramSetup {
     int number = 0;
     std::map<int, std::int64_t> rPresets;
     Lang lang = Lang::Ru;
+    std::string text; // the program file's text
 };
 
 // The options this reads (add them to the command's Args).

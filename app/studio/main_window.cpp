@@ -72,6 +72,8 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     workArea_->addTab(programEditor_, QString());
     connect(programEditor_, &EditorTab::statusMessage, this, [this](const QString& m) { statusBar()->showMessage(m, 10000); });
     createDocks();
+    // The files of the last session, or the machine's sample on a first start.
+    programEditor_->openStartDocuments(QString::fromStdString(machine_.profile.name));
     createWorkspaces();
     createMenus();
     // The status bar's permanent texts are cut rather than widen the window
@@ -399,6 +401,7 @@ MainWindow* MainWindow::switchMachine(const QString& name) {
     }
     rememberMachine(name);
     workspaces_->save(); // the new window opens in this workspace, as it is
+    programEditor_->rememberOpenFiles(); // and with these files
     auto* w = new MainWindow(choice);
     w->setAttribute(Qt::WA_DeleteOnClose);
     w->setGeometry(geometry());

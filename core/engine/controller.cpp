@@ -1145,6 +1145,21 @@ OpResult Controller::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
     return OpResult::accepted();
 }
 
+void Controller::placeAtReferencePoint() {
+    wake();
+    if (programActive(c_.state))
+        return;
+    for (AxisUnit& u : c_.axes) {
+        if (!u.present)
+            continue;
+        const double v = u.toInternal(u.k.homeValueDisc);
+        u.servo.setActualValue(v);
+        u.servo.place(v);
+        u.referenced = true;
+    }
+    refreshR();
+}
+
 program::ProgramStore* Controller::editablePrograms() {
     wake();
     return programActive(c_.state) ? nullptr : &c_.store;

@@ -113,6 +113,11 @@ public:
     bool referenced(AxisId a) const { return unit(a).referenced; }
     bool referenceOk(AxisId a) const { return unit(a).referenceOk(); }
     bool homing(AxisId a) const { return unit(a).homing.running(); }
+    // Preview (engine/preview_run.h, PreviewOptions::fromReferencePoint):
+    // every present axis stands referenced at its reference point (ЗНАЧЕНИЕ
+    // БТ, C45/C97), where the reference-point cycle leaves it. Only before a
+    // program starts.
+    void placeAtReferencePoint();
     // Preview mode (engine/preview.h; driven by engine/preview_run.h): null ends it.
     void setPreview(PreviewSink* sink) {
         wake();

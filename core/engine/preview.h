@@ -9,6 +9,8 @@
 // engine/preview_run.h; toolpath/programmed_path.h collects it all.
 #pragma once
 
+#include "engine/coordinates.h"
+
 #include <array>
 #include <cstdint>
 
@@ -24,6 +26,10 @@ struct PreviewAxisMotion {
     bool moves = false;
     std::int64_t fromDisc = 0, toDisc = 0;
     std::int64_t offsetDisc = 0;
+    // The coordinate components of the axis (R224..R231) when the frame
+    // moves, whether in effect or left out: where the tool's tip and the part
+    // lie in the machine (core/proveout).
+    Components components{};
     double speedDiscPerMin = 0; // the speed the axis runs at (feed or rapid, capped)
     double feedDiscPerMin = -1; // the programmed feed (FX/FZ), -1 none (G00)
     // Oscillation: the two reverse points.

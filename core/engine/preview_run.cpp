@@ -45,6 +45,8 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
         ctl.setR(n, v);
     machine.setMAckDelayMs(0);
     machine.advance(kSwitchOnMs);
+    if (options.fromReferencePoint)
+        ctl.placeAtReferencePoint();
     const auto snapshot = [&](bool start) {
         for (int i = 0; i < kAxisCount; ++i) {
             const AxisView v = ctl.axisView(axisAt(i));

@@ -25,6 +25,9 @@ struct PreviewResult;
 struct PreviewOptions {
     std::map<int, std::int64_t> rPresets; // writable R, checked by the caller
     std::int64_t maxFrames = 1'000'000;
+    // Start at the reference point of every axis (ЗНАЧЕНИЕ БТ), where `k528
+    // run` starts after homing, instead of the power-on position.
+    bool fromReferencePoint = false;
     // Called once the machine stands ready, before «Пуск» (axes: the start).
     std::function<void(const PreviewResult&)> onStart;
     // Asked every kKeepGoingFrames executed frames with their count so far

@@ -64,7 +64,8 @@ bool PreviewOutput::move(AxisUnit& u, double from, double to, double speed, std:
     m.moves = true;
     m.fromDisc = u.toDisc(from);
     m.toDisc = u.toDisc(to);
-    m.offsetDisc = activeOffset(components(c_.r, u.index), c_.programExclusion);
+    m.components = components(c_.r, u.index);
+    m.offsetDisc = activeOffset(m.components, c_.programExclusion);
     m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
     m.feedDiscPerMin = feedDisc < 0 ? -1.0 : static_cast<double>(feedDisc);
     u.servo.place(to);
@@ -80,7 +81,8 @@ bool PreviewOutput::oscillate(AxisUnit& u, Oscillation&, double lo, double hi, d
     m.fromDisc = m.toDisc = u.toDisc(cur);
     m.oscLoDisc = u.toDisc(lo);
     m.oscHiDisc = u.toDisc(hi);
-    m.offsetDisc = activeOffset(components(c_.r, u.index), c_.programExclusion);
+    m.components = components(c_.r, u.index);
+    m.offsetDisc = activeOffset(m.components, c_.programExclusion);
     m.speedDiscPerMin = u.discPerMinFromSpeed(speed);
     m.feedDiscPerMin = static_cast<double>(feedDisc);
     frame_.kind = PreviewKind::Oscillation;
@@ -101,7 +103,8 @@ void PreviewOutput::motionEnds(const FrameRef& f, PreviewKind kind) {
         if (m.moves || !u.present)
             continue;
         m.fromDisc = m.toDisc = u.toDisc(u.servo.target());
-        m.offsetDisc = activeOffset(components(c_.r, a), c_.programExclusion);
+        m.components = components(c_.r, a);
+        m.offsetDisc = activeOffset(m.components, c_.programExclusion);
     }
     frame_.program = f.program;
     frame_.line = f.line;

@@ -174,7 +174,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
     const JsonNode root(*d.document, source, "");
     root.expectObject({"format", "name", "title", "plc", "modules", "inputs", "outputs", "flags",
                        "logic", "m_functions", "unknown_m", "interlocks", "keys", "leds", "alarms",
-                       "work", "positioner", "equipment"});
+                       "work", "positioner", "equipment", "proveout"});
     if (root.integer("format", 1, 1000) != 1)
         root.failAt("format", "this program reads format 1");
     d.name = root.string("name");
@@ -492,6 +492,10 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
     } else {
         d.equipment = std::make_shared<const Json>(Json::object());
     }
+    // What the prove-out of programs knows of the machine (its geometry, what
+    // its M functions do): read by core/proveout from `document`.
+    if (root.has("proveout"))
+        root.child("proveout").expectObject();
     return d;
 }
 

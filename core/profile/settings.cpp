@@ -238,6 +238,15 @@ constexpr SimulationKey kKeys[] = {
     {"z.decel_cam_mm", T::Double, 0.1, 1000, "", "mm", "As x.decel_cam_mm, for Z.", "machine, engine (ideal machine)"},
     {"z.limit_minus_mm", T::Double, -100000, 100000, "", "mm", "As x.limit_minus_mm, for Z.", "machine, engine (ideal machine)"},
     {"z.limit_plus_mm", T::Double, -100000, 100000, "", "mm", "As x.limit_plus_mm, for Z.", "machine, engine (ideal machine)"},
+    // The tools of the turret's stations n = 1..8 (profile/tools.h).
+    {"tool.n.kind", T::String, 0, 0, "", "", "The tool at station n: turning, facing, grooving, boring, drill or threading (the other tool.n keys need it).", "profile tools, proveout, setup sheet, backplot"},
+    {"tool.n.name", T::String, 0, 0, "", "", "The tool's name for people (the setup sheet).", "setup sheet"},
+    {"tool.n.tip_radius_mm", T::Double, 0, 50, "0", "mm", "The tool's nose radius.", "setup sheet, backplot"},
+    {"tool.n.orientation", T::String, 0, 0, "+z+x", "", "Where the tool's body lies from its tip: +z+x (an outside tool held from above), -z+x, +z-x (a boring bar), -z-x.", "proveout, backplot"},
+    {"tool.n.width_mm", T::Double, 0.001, 1000, "3", "mm", "The tool's body along Z from its tip (a drill's or boring bar's length: default 150).", "proveout, backplot"},
+    {"tool.n.height_mm", T::Double, 0.001, 1000, "1000", "mm", "The tool's body along X (radially) from its tip; a drill's diameter (default 10 for drills and boring bars).", "proveout, backplot"},
+    {"tool.n.max_depth_mm", T::Double, 0, 100, "0", "mm", "The deepest cut the tool takes (its cutting edge); 0: no limit.", "proveout"},
+    {"tool.n.offset_r", T::Int, 0, 148, "", "", "The R-parameter of the tool's X offset (its Z offset is the next): the values the program copies into R226/R227 after the tool change.", "proveout, setup sheet, trial part"},
 };
 // clang-format on
 
@@ -248,6 +257,13 @@ std::span<const SimulationKey> simulationKeys() {
 }
 
 const SimulationKey* findSimulationKey(std::string_view key) {
+    // tool.<station>.<key>: the entry tool.n.<key> (station 1..8).
+    std::string generic;
+    if (key.substr(0, 5) == "tool." && key.size() > 7 && key[5] >= '1' && key[5] <= '8' &&
+        key[6] == '.') {
+        generic = "tool.n." + std::string(key.substr(7));
+        key = generic;
+    }
     for (const SimulationKey& k : kKeys)
         if (k.key == key)
             return &k;

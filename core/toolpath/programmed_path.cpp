@@ -178,6 +178,19 @@ public:
                                            path_.points.size() - s.firstPoint);
         pos_[0] = to[0];
         pos_[1] = to[1];
+        ComponentsChange cc;
+        cc.segment = static_cast<std::uint32_t>(path_.segments.size());
+        for (int i = 0; i < 2; ++i) {
+            const engine::PreviewAxisMotion& m = f.axes[static_cast<std::size_t>(i)];
+            AxisComponentsMm& a = cc.axes[static_cast<std::size_t>(i)];
+            a.dressing = static_cast<double>(m.components.dressing) / dpm_[i];
+            a.correction = static_cast<double>(m.components.correction) / dpm_[i];
+            a.zeroOffset = static_cast<double>(m.components.zeroOffset) / dpm_[i];
+            a.drf = static_cast<double>(m.components.drf) / dpm_[i];
+            a.active = offset_[i];
+        }
+        if (path_.components.empty() || path_.components.back().axes != cc.axes)
+            path_.components.push_back(cc);
         if (f.wheelDiameterDisc != wheelDisc_) { // R207 is in X discretes (real mm, not halved)
             wheelDisc_ = f.wheelDiameterDisc;
             path_.wheel.push_back({static_cast<std::uint32_t>(path_.segments.size()),
@@ -225,6 +238,14 @@ double ProgrammedPath::wheelDiameterAt(std::size_t i) const {
     const auto it = std::upper_bound(wheel.begin(), wheel.end(), i,
                                      [](std::size_t k, const WheelChange& c) { return k < c.segment; });
     return it == wheel.begin() ? 0.0 : std::prev(it)->diameterMm;
+}
+
+const ComponentsChange& ProgrammedPath::componentsAt(std::size_t i) const {
+    static const ComponentsChange none{};
+    const auto it =
+        std::upper_bound(components.begin(), components.end(), i,
+                         [](std::size_t k, const ComponentsChange& c) { return k < c.segment; });
+    return it == components.begin() ? none : *std::prev(it);
 }
 
 ProgrammedPath programmedPath(const profile::MachineProfile& profile,

@@ -81,6 +81,24 @@ struct WheelChange {
     double diameterMm = 0;
 };
 
+// The coordinate components of an axis (manual 2.4, R224..R231) in mm as the
+// panel shows them (X as a diameter on a diameter axis), and `active`, the
+// sum of those in effect (G50..G53 leave one out): machine = current + active.
+struct AxisComponentsMm {
+    double dressing = 0, correction = 0, zeroOffset = 0, drf = 0;
+    double active = 0;
+    bool operator==(const AxisComponentsMm&) const = default;
+};
+
+// The components of both axes from segment `segment` on; recorded where they
+// change, the first entry at segment 0 (a path with motion has one at least).
+// Where the tool's tip and the part lie in the machine follows from them
+// (core/proveout).
+struct ComponentsChange {
+    std::uint32_t segment = 0;
+    std::array<AxisComponentsMm, 2> axes{};
+};
+
 struct AxisLimits {
     bool present = false;
     bool on = false;          // ВКЛ.ПРГ.КОН
@@ -96,6 +114,7 @@ struct ProgrammedPath {
     std::vector<MFunctions> mFunctions; // in program order, with dwells and segments by `segment`
     std::vector<Message> messages;
     std::vector<WheelChange> wheel;
+    std::vector<ComponentsChange> components;
     AxisLimits limitX, limitZ;
     bool diameterX = false;
     PointMm start, end;
@@ -105,6 +124,8 @@ struct ProgrammedPath {
     const PointMm* pointsOf(const Segment& s) const { return points.data() + s.firstPoint; }
     // The wheel's diameter (mm) during segment i, 0 if none.
     double wheelDiameterAt(std::size_t i) const;
+    // The components during segment i (all 0 before the first motion).
+    const ComponentsChange& componentsAt(std::size_t i) const;
 };
 
 struct PathOptions {

@@ -92,7 +92,7 @@ private slots:
         QCOMPARE(d.size(), 3); // 34 X/L and 45 L missing on line 2, G04 without X on line 5
         for (const auto& v : d)
             QCOMPARE(v.toObject().keys(), (QStringList{"column", "end_column", "line", "manual_number", "message_en",
-                                                      "message_ru", "severity"}));
+                                                      "message_ru", "rule", "severity"}));
         const QJsonObject first = d[0].toObject();
         QCOMPARE(first["line"].toInt(), 2);
         QCOMPARE(first["column"].toInt(), 4);

@@ -289,15 +289,18 @@ private slots:
             }
         });
         poll.start();
+        // The first start shows the machine's sample: the file opens beside it.
+        QCOMPARE(tab->documentCount(), 1);
+        QVERIFY(tab->pathOf(0).isEmpty());
         tab->setFocus();
         QTest::keyClick(tab, Qt::Key_O, Qt::ControlModifier);
-        UNTIL(tab->documentCount() == 1, 20000);
+        UNTIL(tab->documentCount() == 2, 20000);
         poll.stop();
         // The dialog had the focus: back to the window, as the user is.
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         QVERIFY(!dialogSeen.isEmpty());
-        QCOMPARE(tab->pathOf(0), QFileInfo(path).absoluteFilePath());
+        QCOMPARE(tab->pathOf(1), QFileInfo(path).absoluteFilePath());
         ProgramEditor* ed = tab->currentEditor();
         REACH(ed);
         REACH(tab->problems());

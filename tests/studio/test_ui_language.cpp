@@ -518,7 +518,7 @@ private:
         });
         walkOpened(walker, "Editor: close a changed file", [&] {
             editor->currentEditor()->append("\n");
-            editor->closeDocument(0);
+            editor->closeDocument(editor->documentCount() - 1); // the current: the file opened last
         });
         for (int k = 0; k < studio::FrameMaster::KindCount; ++k) {
             walkOpened(walker, QStringLiteral("Frame master %1").arg(k), [&] {
@@ -580,6 +580,7 @@ private:
                        machineTexts(w.session()->simulation().profile(), w.session()->controller().programs()) +
                        positionerTexts() + studio::machineNames() +
                        QStringList{QFileInfo(file_).fileName(), QFileInfo(warnFile_).fileName(),
+                                   studio::EditorTab::sampleFor("training-lathe"), // the first start's sample
                                    QString::fromStdString(db::defaultAuthor())}); // the revisions' author: the OS user
         walkWindow(walker, w);
         walkDialogs(walker, w);

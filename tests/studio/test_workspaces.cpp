@@ -31,6 +31,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTreeWidget>
 #include <QMenu>
 #include <QSignalSpy>
 #include <QtTest>
@@ -452,6 +453,70 @@ private slots:
         settle();
         QCOMPARE(w.findChild<QAction*>("action.keepInDatabase")->shortcut(), QKeySequence(QKeySequence::Save));
         QVERIFY(tab->saveAction()->shortcut().isEmpty());
+    }
+
+    // The technologist's first start is not an empty pane: the machine's
+    // sample program is open, named as a sample, its text large (most of the
+    // window); the next start reopens the files open at the last close, and a
+    // user who closed them all finds the editor as left.
+    void theEditorStartsWithTheSampleThenTheLastFiles() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("part.k528");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("%L3\nG1 X5 FX100\nM30\n");
+        }
+        const QString sample = EditorTab::sampleFor("training-lathe");
+        QVERIFY2(sample.startsWith("lathe-"), qPrintable(sample));
+        QVERIFY(EditorTab::sampleFor("grinder-205").startsWith("grinder-"));
+        QVERIFY(!EditorTab::sampleFor("no-such-machine").isEmpty()); // some sample all the same
+        {
+            MainWindow w; // the training lathe
+            w.placeOnScreen();
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate("technologist"));
+            settle();
+            EditorTab* tab = w.programEditor();
+            QCOMPARE(tab->documentCount(), 1);
+            QVERIFY(tab->pathOf(0).isEmpty()); // not a file: saving asks where
+            QFile shipped(QStringLiteral(K528_SOURCE_DIR "/resources/samples/") + sample);
+            QVERIFY(shipped.open(QIODevice::ReadOnly));
+            QCOMPARE(tab->currentEditor()->text(), QString::fromUtf8(shipped.readAll()));
+            QVERIFY(!tab->currentEditor()->isModified());
+            auto* tabs = tab->findChild<QTabWidget*>("editor.tabs");
+            QCOMPARE(tabs->tabText(0), sample + " (пример)");
+            QVERIFY(tab->outline()->topLevelItemCount() >= 1); // its programs listed
+            // The text is most of the window, the outline and Problems beside it small.
+            const QRect text = shownRect(tab->currentEditor()->viewport());
+            QVERIFY2(text.width() >= 0.45 * available().width() && text.height() >= 0.5 * available().height(),
+                     qPrintable(sizeText(text.size()) + " of " + sizeText(available().size())));
+            QVERIFY2(tab->outline()->width() < text.width() / 3, qPrintable(QString::number(tab->outline()->width())));
+            QVERIFY2(tab->problems()->height() < text.height() / 2,
+                     qPrintable(QString::number(tab->problems()->height())));
+            QVERIFY(tab->openFile(path));
+            QVERIFY(w.close()); // the sample unchanged: nothing asked
+        }
+        {
+            MainWindow w;
+            EditorTab* tab = w.programEditor();
+            QCOMPARE(tab->documentCount(), 1); // the file, not the sample again
+            QCOMPARE(tab->pathOf(0), QFileInfo(path).absoluteFilePath());
+            QVERIFY(tab->closeDocument(0));
+            QVERIFY(w.close());
+        }
+        {
+            MainWindow w;
+            QCOMPARE(w.programEditor()->documentCount(), 0); // all closed: as left
+            QVERIFY(w.close());
+        }
+        {
+            QSettings().setValue("editor/open", QStringList{dir.filePath("gone.k528")});
+            MainWindow w;
+            QCOMPARE(w.programEditor()->documentCount(), 1); // the file is gone: the sample
+            QVERIFY(w.programEditor()->pathOf(0).isEmpty());
+        }
     }
 
     // A workspace chosen before the window is shown (--workspace) leaves no

@@ -4,6 +4,7 @@
 #include "editor/frame_master.h"
 #include "editor/problems_model.h"
 #include "program/parser.h"
+#include "resources/embedded.h"
 #include "editor/program_editor.h"
 #include "language.h"
 #include "session/program_loader.h"
@@ -21,6 +22,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSplitter>
 #include <QTabBar>
@@ -37,6 +39,7 @@ namespace k528::studio {
 namespace {
 constexpr const char* kPathProperty = "k528.path";
 constexpr const char* kUntitledProperty = "k528.untitled";
+constexpr const char* kSampleProperty = "k528.sample"; // a shipped sample's name, until saved as a file
 constexpr int kRecentMax = 8;
 } // namespace
 
@@ -83,12 +86,18 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     tabs_->setDocumentMode(true);
     top->addWidget(outline_);
     top->addWidget(tabs_);
-    top->setStretchFactor(1, 4);
+    // The text takes the room: the outline as wide as a program's title
+    // needs, the Problems as tall as a few lines (both splitters' handles
+    // give them more), the rest and every resize to the editor.
+    top->setStretchFactor(0, 0);
+    top->setStretchFactor(1, 1);
     if (session_) { // the debugger on the simulated machine
         debug_ = new DebugPanel(this, session_, top);
         top->addWidget(debug_);
         connect(debug_, &DebugPanel::statusMessage, this, &EditorTab::statusMessage);
     }
+    const int outlineWidth = fontMetrics().horizontalAdvance(QLatin1Char('M')) * 12;
+    top->setSizes(debug_ ? QList<int>{outlineWidth, 4000, 2000} : QList<int>{outlineWidth, 4000});
     problems_ = new QTreeView(split);
     problems_->setObjectName("editor.problems");
     problemsModel_ = new ProblemsModel(problems_);
@@ -99,7 +108,9 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     problems_->header()->setStretchLastSection(true);
     split->addWidget(top);
     split->addWidget(problems_);
-    split->setStretchFactor(0, 4);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
+    split->setSizes({4000, fontMetrics().lineSpacing() * 8});
     layout->addWidget(split, 1);
     count_ = new ElidedLabel(this); // cut rather than widen the window
     count_->setObjectName("editor.problemCount");
@@ -150,9 +161,12 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
 }
 
 bool EditorTab::eventFilter(QObject* watched, QEvent* e) {
-    if (e->type() == QEvent::Close && watched == window() && !closeAll()) {
-        e->ignore();
-        return true;
+    if (e->type() == QEvent::Close && watched == window()) {
+        rememberOpenFiles(); // before closeAll() empties the tabs
+        if (!closeAll()) {
+            e->ignore();
+            return true;
+        }
     }
     return QWidget::eventFilter(watched, e);
 }
@@ -215,6 +229,59 @@ bool EditorTab::showLine(int program, int line) {
         return true;
     }
     return false;
+}
+
+void EditorTab::rememberOpenFiles() {
+    QStringList paths;
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (!pathOf(i).isEmpty() && databaseMachine(i).isEmpty())
+            paths << pathOf(i);
+    QSettings().setValue("editor/open", paths);
+}
+
+void EditorTab::openStartDocuments(const QString& machineName) {
+    QSettings s;
+    const bool kept = s.contains("editor/open");
+    const QStringList paths = s.value("editor/open").toStringList();
+    int opened = 0;
+    for (const QString& p : paths)
+        if (QFileInfo(p).isFile() && openFile(p))
+            ++opened;
+    if (opened == 0 && (!kept || !paths.isEmpty())) {
+        const QString sample = sampleFor(machineName);
+        if (!sample.isEmpty())
+            openSample(sample);
+    }
+}
+
+QString EditorTab::sampleFor(const QString& machineName) {
+    const std::vector<resources::Resource> samples = resources::under("samples/");
+    if (samples.empty())
+        return {};
+    const auto nameOf = [](const resources::Resource& r) {
+        return QString::fromUtf8(r.path.data(), static_cast<qsizetype>(r.path.size())).section('/', -1);
+    };
+    static const QRegularExpression separators(QStringLiteral("[-_.]"));
+    const QStringList words = machineName.split(separators, Qt::SkipEmptyParts);
+    for (const resources::Resource& r : samples) {
+        const QStringList sampleWords = nameOf(r).section('.', 0, 0).split(separators, Qt::SkipEmptyParts);
+        for (const QString& w : words)
+            if (w.size() > 2 && !w.front().isDigit() && sampleWords.contains(w, Qt::CaseInsensitive))
+                return nameOf(r);
+    }
+    return nameOf(samples.front());
+}
+
+bool EditorTab::openSample(const QString& name) {
+    const auto text = resources::find("samples/" + name.toStdString());
+    if (!text) {
+        emit statusMessage(tr("There is no sample program %1").arg(name));
+        return false;
+    }
+    const int i = addDocument(QString(), QString::fromUtf8(text->data(), static_cast<qsizetype>(text->size())));
+    editorAt(i)->setProperty(kSampleProperty, name);
+    refreshTitles();
+    return true;
 }
 
 void EditorTab::newFile() { addDocument(QString(), QStringLiteral("%L1\nM30\n")); }

@@ -74,9 +74,25 @@ public:
     QString databaseMachine(int index) const;
     int databaseRevision(int index) const;
 
+    // What a window's start shows: the files open when a window last closed
+    // (those still there), else — on a first start, or when they are gone —
+    // the sample program of the machine `machineName` (sampleFor()), so the
+    // editor is never an empty pane the first time. Nothing when the user
+    // last closed every file. The window's close keeps the list.
+    void openStartDocuments(const QString& machineName);
+    // The shipped sample (resources/samples/) for a machine: the first whose
+    // name shares a word with the machine's ("training-lathe" → lathe-…),
+    // else the first of all; "" if none is shipped.
+    static QString sampleFor(const QString& machineName);
+    // Keeps the paths of the files open now for the next start.
+    void rememberOpenFiles();
+
 public slots:
     void newFile();
     bool openFile(const QString& path);
+    // A shipped sample program (resources/samples/<name>) as a document that
+    // is not yet a file: named «<name> (sample)», saving asks where.
+    bool openSample(const QString& name);
     void openDialog();
     bool save();
     bool saveAs();

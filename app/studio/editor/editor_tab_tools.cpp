@@ -34,6 +34,7 @@ constexpr const char* kMachineProperty = "k528.machine"; // the file's machine c
 constexpr const char* kDbMachineProperty = "k528.dbMachine";
 constexpr const char* kDbRevisionProperty = "k528.dbRevision";
 constexpr const char* kUntitledProperty = "k528.untitled";
+constexpr const char* kSampleProperty = "k528.sample"; // as editor_tab.cpp
 
 QToolButton* menuButton(QToolBar* bar, QAction* a, QMenu* m) {
     a->setMenu(m);
@@ -315,6 +316,8 @@ QString EditorTab::documentName(int index) const {
     if (!db.isEmpty())
         return tr("%1 (database, revision %2)").arg(db).arg(databaseRevision(index));
     const QString p = pathOf(index);
+    if (p.isEmpty() && !ed->property(kSampleProperty).toString().isEmpty())
+        return tr("%1 (sample)").arg(ed->property(kSampleProperty).toString());
     return p.isEmpty() ? tr("untitled %1").arg(ed->property(kUntitledProperty).toInt()) : QFileInfo(p).fileName();
 }
 
