@@ -29,7 +29,7 @@ namespace k528::linkplugin {
 inline constexpr int kApi = 2;
 
 struct LineSettings {
-    QString port;
+    QString port; // a serial device; HOST:PORT for Modbus TCP (plugin modbus-tcp)
     int baud = 115200;
     char parity = 'N'; // N, E, O
     int stopBits = 1;

@@ -35,8 +35,14 @@ int fail(const link::LinkError& e) {
     return exitFor(e);
 }
 
+// baud 0: a network line (Modbus TCP), no wire time.
 void lineReport(const link::Link& l, const linkplugin::ClientTransport& t, int baud) {
     const linkplugin::WireCount w = t.wire();
+    if (baud == 0) {
+        std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes (Modbus TCP)\n", link::describe(l.stats()).c_str(),
+                     static_cast<long long>(w.transactions), static_cast<long long>(w.bytes));
+        return;
+    }
     std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes, wire time %.3f s at %d bit/s\n",
                  link::describe(l.stats()).c_str(), static_cast<long long>(w.transactions),
                  static_cast<long long>(w.bytes), link::wireSeconds(w.bytes, w.frames, baud), baud);
@@ -325,13 +331,16 @@ int runLinkQt(std::span<const std::string> argv) {
         }
     }
     QString error;
-    linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
+    linkplugin::LinkPlugin* plugin = linkplugin::find(linePlugin(args), error);
     if (!plugin) {
         std::fprintf(stderr, "k528 link: %s\n", error.toUtf8().constData());
         return ExitUsage;
     }
-    if (cmd == "scan")
+    if (cmd == "scan") {
+        if (isTcpLine(args) && args.value("--bauds"))
+            return usageError("--bauds is an option of a serial line's scan; a --tcp scan asks unit ids");
         return runScan(args, *plugin, *line, framesPath);
+    }
     std::unique_ptr<linkplugin::ClientTransport> t = plugin->openClient(*line, error);
     if (!t) {
         std::fprintf(stderr, "k528 link: cannot open %s: %s\n", line->port.toUtf8().constData(),
@@ -385,7 +394,7 @@ int runLinkQt(std::span<const std::string> argv) {
                 return done(fail(e));
             std::printf("counters cleared\n");
         }
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
     if (cmd == "clear") {
@@ -394,7 +403,7 @@ int runLinkQt(std::span<const std::string> argv) {
             return done(fail(e));
         std::printf("cleared the %s area of the controller (%s)\n", c ? "C" : "R",
                     c ? "all 152 machine constants are 0" : "every R-parameter is 0");
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
     if (cmd == "watch") {
@@ -457,7 +466,7 @@ int runLinkQt(std::span<const std::string> argv) {
             if (spent < interval)
                 QThread::msleep(static_cast<unsigned long>(interval - spent));
         }
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         if (lostSince) {
             std::fprintf(stderr, "k528 link: the line has not answered since %s\n", clockText(*lostSince).c_str());
             return done(ExitUsage);
@@ -479,7 +488,7 @@ int runLinkQt(std::span<const std::string> argv) {
         }
         std::printf("pulled 152 C-parameters, 300 R-parameters, %zu programs, %zu messages into %s\n",
                     p.programs.size(), p.messages.size(), args.value("--out")->c_str());
-        lineReport(l, *t, line->baud);
+        lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
     // push: a program file is checked against the controller first.
@@ -499,7 +508,7 @@ int runLinkQt(std::span<const std::string> argv) {
     } else if (rep.anyNew() || e.kind != link::LinkError::Kind::Input) {
         std::printf("push stopped: %s\n", rep.summary().c_str());
     }
-    lineReport(l, *t, line->baud);
+    lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
     if (e)
         return done(fail(e));
     return done(ExitOk);

@@ -1,4 +1,4 @@
-// k528 serve --port DEVICE [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
+// k528 serve --port DEVICE|--tcp HOST:PORT [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
 // (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
 // K923 — as a Modbus RTU server (the plugin's QModbusRtuSerialServer) over
 // core's ControllerImage, in real time until SIGINT/SIGTERM. It answers the
@@ -72,7 +72,7 @@ int runServeQt(std::span<const std::string> argv) {
     link::ImageHandler handler(image);
 
     QString error;
-    linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
+    linkplugin::LinkPlugin* plugin = linkplugin::find(linePlugin(args), error);
     if (!plugin) {
         std::fprintf(stderr, "k528: %s\n", error.toUtf8().constData());
         return ExitUsage;
@@ -85,9 +85,13 @@ int runServeQt(std::span<const std::string> argv) {
                      error.toUtf8().constData());
         return ExitUsage;
     }
-    std::fprintf(stderr, "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
-                 prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
-                 line->parity, line->stopBits);
+    if (isTcpLine(args))
+        std::fprintf(stderr, "k528 serve: %s on Modbus TCP %s, unit %d; SIGINT/SIGTERM stops\n", prof->name.c_str(),
+                     line->port.toUtf8().constData(), line->address);
+    else
+        std::fprintf(stderr, "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
+                     prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
+                     line->parity, line->stopBits);
     std::fflush(stderr);
 
     installStopSignals();

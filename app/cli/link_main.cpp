@@ -27,14 +27,35 @@ void installStopSignals() {
 }
 bool stopRequested() { return g_stop; }
 
+bool isTcpLine(const Args& args) { return args.value("--tcp").has_value(); }
+
 std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
     linkplugin::LineSettings s;
     const auto port = args.value("--port");
-    if (!port || port->empty()) {
-        usageError("--port DEVICE is needed (a serial port, or one end of a pty pair)");
+    const auto tcp = args.value("--tcp");
+    if (port && tcp) {
+        usageError("--port DEVICE and --tcp HOST:PORT name two lines: give one");
         return std::nullopt;
     }
-    s.port = QString::fromStdString(*port);
+    if (tcp) {
+        const std::size_t colon = tcp->rfind(':');
+        const auto p = colon == std::string::npos ? std::nullopt : parseInt(tcp->substr(colon + 1));
+        if (colon == 0 || !p || *p < 1 || *p > 65535) {
+            usageError("--tcp takes HOST:PORT (e.g. 192.168.1.20:502, a port 1..65535), not '" + *tcp + "'");
+            return std::nullopt;
+        }
+        for (const char* serial : {"--baud", "--parity", "--stop-bits"})
+            if (args.value(serial)) {
+                usageError(std::string(serial) + " is a setting of a serial line, not of --tcp");
+                return std::nullopt;
+            }
+        s.port = QString::fromStdString(*tcp);
+    } else if (!port || port->empty()) {
+        usageError("--port DEVICE (a serial port, or one end of a pty pair) or --tcp HOST:PORT (Modbus TCP) is needed");
+        return std::nullopt;
+    } else {
+        s.port = QString::fromStdString(*port);
+    }
     if (const auto a = args.value("--address")) {
         const auto v = parseInt(*a);
         if (!v || *v < 1 || *v > 247) {

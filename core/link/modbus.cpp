@@ -320,7 +320,10 @@ std::string formatFrame(const Frame& f) {
         out += modbus::hexByte(f.bytes[i]);
     }
     if (!f.bytes.empty())
-        out += f.check == Frame::Check::Ok ? "  CRC ok" : f.check == Frame::Check::Bad ? "  CRC BAD" : "  SHORT";
+        out += f.check == Frame::Check::Ok     ? "  CRC ok"
+               : f.check == Frame::Check::Bad  ? "  CRC BAD"
+               : f.check == Frame::Check::Mbap ? "  MBAP"
+                                               : "  SHORT";
     if (!f.note.empty())
         out += (f.bytes.empty() ? "" : "  ") + f.note;
     return out;

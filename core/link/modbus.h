@@ -110,7 +110,9 @@ struct Frame {
     bool sent = false;
     int station = 0;
     Bytes bytes;
-    enum class Check { Ok, Bad, Short } check = Check::Ok; // Short: cut off before its end
+    // Short: cut off before its end; Mbap: a Modbus TCP frame (no CRC, its
+    // MBAP header gives its length).
+    enum class Check { Ok, Bad, Short, Mbap } check = Check::Ok;
     std::string note; // "timeout", "unexpected (a late answer?)", ...
 };
 

@@ -1,5 +1,7 @@
 #include "modbus_rtu_plugin.h"
 
+#include "../map_server.h"
+
 #include <QModbusRtuSerialServer>
 #include <QSerialPort>
 #include <QSerialPortInfo>
@@ -94,41 +96,12 @@ public:
     bool open(QString& error) { return port.open(error); }
 };
 
-// QModbusRtuSerialServer with the map behind it: FC 3, 6, 16 and 23 go to
-// the handler (core's modbus::serveRegisters); FC 8 (echo, counters) and 17
-// (server id) are Qt's, which keeps the bus counters.
-class MapServer final : public QModbusRtuSerialServer {
-public:
-    explicit MapServer(RegisterHandler& h) : h_(h) {}
-    std::int64_t requests = 0;
-
-protected:
-    QModbusResponse processRequest(const QModbusPdu& request) override {
-        ++requests;
-        const auto fc = request.functionCode();
-        if (fc != QModbusPdu::ReadHoldingRegisters && fc != QModbusPdu::WriteSingleRegister &&
-            fc != QModbusPdu::WriteMultipleRegisters && fc != QModbusPdu::ReadWriteMultipleRegisters)
-            return QModbusRtuSerialServer::processRequest(request);
-        link::Bytes pdu{static_cast<std::uint8_t>(fc)};
-        const QByteArray d = request.data();
-        pdu.insert(pdu.end(), d.begin(), d.end());
-        const link::Bytes answer = link::modbus::serveRegisters(pdu, h_);
-        if (answer[0] & 0x80)
-            return QModbusExceptionResponse(fc, static_cast<QModbusExceptionResponse::ExceptionCode>(answer[1]));
-        return QModbusResponse(fc, QByteArray(reinterpret_cast<const char*>(answer.data()) + 1,
-                                              static_cast<qsizetype>(answer.size()) - 1));
-    }
-
-private:
-    RegisterHandler& h_;
-};
-
 class ServerBox final : public Server {
 public:
     explicit ServerBox(RegisterHandler& h) : s(h) {}
     ~ServerBox() override { s.disconnectDevice(); }
     std::int64_t requests() const override { return s.requests; }
-    MapServer s;
+    MapServer<QModbusRtuSerialServer> s;
 };
 
 } // namespace

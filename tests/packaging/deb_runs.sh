@@ -9,7 +9,7 @@ trap 'rm -rf "$tmp"' EXIT
 dpkg-deb -x "$deb" "$tmp/root"
 fail() { echo "FAIL: $*"; exit 1; }
 for f in usr/bin/k528 usr/bin/k528studio usr/bin/k528-link \
-         usr/lib/k528studio/plugins/k528_modbus_rtu.so \
+         usr/lib/k528studio/plugins/k528_modbus_rtu.so usr/lib/k528studio/plugins/k528_modbus_tcp.so \
          usr/share/applications/k528studio.desktop \
          usr/share/icons/hicolor/scalable/apps/k528studio.svg \
          usr/share/metainfo/io.github.k528studio.K528Studio.metainfo.xml \

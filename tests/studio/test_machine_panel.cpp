@@ -223,6 +223,34 @@ private slots:
         QVERIFY(!session.simulation().buttonDown(machine::Button::CycleStart));
     }
 
+    // The same in the main window, in real time, right after a K923 key took
+    // a click (and the keyboard's focus): a press and release 0 ms and 10 ms
+    // apart on the machine's panel each reach the machine as a push — DRIVES
+    // ON closes the loops, a jog key is down when the mouse is already up.
+    void aShortClickInTheWindowAfterAK923Key() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        SimulationSession* s = w.session();
+        auto* panel = w.machineDock()->findChild<MachinePanelWidget*>();
+        QVERIFY(panel && panel->isVisible());
+        QTest::mouseClick(w.k923()->key(panel::Key::F2), Qt::LeftButton); // РУЧ
+        QCOMPARE(s->controller().mode(), engine::Mode::Manual);
+        PendantButton* drives = panel->button(machine::Button::DrivesOn);
+        QTest::mousePress(drives, Qt::LeftButton, {}, capCentre(drives));
+        QTest::mouseRelease(drives, Qt::LeftButton, {}, capCentre(drives)); // 0 ms
+        QVERIFY(s->simulation().buttonDown(machine::Button::DrivesOn));
+        QTRY_VERIFY_WITH_TIMEOUT(s->controller().axisView(engine::AxisId::X).loopClosed, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!s->simulation().buttonDown(machine::Button::DrivesOn), 10000);
+        QTest::mouseClick(w.k923()->key(panel::Key::F2), Qt::LeftButton);
+        PendantButton* jog = panel->button(machine::Button::JogXPlus);
+        QTest::mousePress(jog, Qt::LeftButton, {}, capCentre(jog));
+        QTest::mouseRelease(jog, Qt::LeftButton, {}, capCentre(jog), 10); // 10 ms
+        QVERIFY(s->simulation().buttonDown(machine::Button::JogXPlus));
+        QTRY_VERIFY_WITH_TIMEOUT(!s->simulation().buttonDown(machine::Button::JogXPlus), 10000);
+    }
+
     // The legends of the lamps, buttons and switches are whole on the
     // smallest panel (a shop PC's training workspace, the panel as tight as
     // its dock holds it): set at the smallest legible size, a word still

@@ -33,6 +33,9 @@
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QMenu>
+#include <QMessageBox>
+#include <QApplication>
+#include <QTimer>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -517,6 +520,56 @@ private slots:
             QCOMPARE(w.programEditor()->documentCount(), 1); // the file is gone: the sample
             QVERIFY(w.programEditor()->pathOf(0).isEmpty());
         }
+    }
+
+    // File > Quit with a changed file asks about the file by its name — not
+    // the tab's «name *» — and «Cancel» keeps the window and the edits.
+    void theQuitQuestionNamesTheFileNotItsTab() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("part.k528");
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("%L1\nM30\n");
+        }
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("technologist"));
+        EditorTab* tab = w.programEditor();
+        QVERIFY(tab->openFile(path));
+        tab->currentEditor()->insertAt("G1 X5 FX100\n", 1, 0);
+        QVERIFY(tab->currentEditor()->isModified());
+        auto* tabs = tab->findChild<QTabWidget*>("editor.tabs");
+        QCOMPARE(tabs->tabText(tabs->currentIndex()), QString("part.k528 *"));
+        // The real question, answered «Cancel»; then out of the event loop
+        // File > Quit ran in (a quit that went through would end it too).
+        QString asked;
+        QTimer poll;
+        poll.setInterval(50);
+        connect(&poll, &QTimer::timeout, this, [&] {
+            auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            asked = box->text();
+            box->button(QMessageBox::Cancel)->click();
+            poll.stop();
+            QTimer::singleShot(200, [] { QCoreApplication::exit(0); });
+        });
+        poll.start();
+        QTimer::singleShot(0, &w, [&] { w.findChild<QAction*>("action.quit")->trigger(); });
+        QTimer neverAsked; // stopped below: not left to end a later test's loop
+        neverAsked.setSingleShot(true);
+        connect(&neverAsked, &QTimer::timeout, this, [] { QCoreApplication::exit(1); });
+        neverAsked.start(20000);
+        QApplication::exec();
+        neverAsked.stop();
+        QVERIFY2(asked.contains("part.k528 ") && !asked.contains("*"), qPrintable(asked));
+        QVERIFY(w.isVisible());
+        QCOMPARE(tab->documentCount(), 2); // the sample and the file, its edits kept
+        QVERIFY(tab->currentEditor()->isModified());
+        tab->setCloseQuestion([](const QString&) { return EditorTab::CloseChoice::Discard; });
     }
 
     // A workspace chosen before the window is shown (--workspace) leaves no
