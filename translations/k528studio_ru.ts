@@ -3512,7 +3512,7 @@ Its comment stays: %3</source>
     </message>
     <message>
         <source>L%1: cutting the blank… %2 of %3 moves</source>
-        <translation>L%1: снятие материала с заготовки… %2 из %3 перемещений</translation>
+        <translation>L%1: съём материала… %2 из %3 перемещений</translation>
     </message>
     <message>
         <source>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</source>

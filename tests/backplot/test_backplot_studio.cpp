@@ -10,6 +10,7 @@
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "machine/run.h"
+#include "language.h"
 #include "main_window.h"
 #include "workspace/workspaces.h"
 #include "program/parser.h"
@@ -19,6 +20,7 @@
 #include <cmath>
 
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
 #include <QLabel>
 #include <QLocale>
@@ -281,7 +283,8 @@ private slots:
         QCOMPARE(s.view->statusText(),
                  BackplotWidget::tr("L%1 does not end within %2 frames (an endless loop?): the path shows those frames")
                      .arg(1)
-                     .arg(QLocale().toString(k528::studio::backplot::PathJob::kMaxFrames)));
+                     .arg(QLocale(k528::studio::currentLanguage() == "ru" ? QLocale::Russian : QLocale::English)
+                              .toString(k528::studio::backplot::PathJob::kMaxFrames)));
 
         // Two requests: the first is cancelled, only the second is shown.
         shown.clear();
@@ -307,6 +310,55 @@ private slots:
         compute->click();
         QVERIFY(shown.wait(60000));
         QCOMPARE(s.view->scene().path().run.frames, k528::studio::backplot::PathJob::kMaxFrames);
+    }
+    // The progress row and the note of a path cut off lie inside the main
+    // window placed on the screen, in Russian and in English; each is
+    // saved as the X server shows it (tests/screenshots/backplot-*.png).
+    // A long job: an endless loop of legs that never repeat, the blank cut
+    // by every one of them.
+    void theProgressAndTheNoteAreInTheWindow() {
+        for (const QString& language : {QStringLiteral("ru"), QStringLiteral("en")}) {
+            QVERIFY(k528::studio::setLanguage(language));
+            Studio s("%L1 (ENDLESS)\n"
+                     "; UCG,2,Z-100Z0,X50X0,S0S0,0,-5\n"
+                     "N1 G1 X40 FX2000\n"
+                     "N2 G91 G1 Z-0.001 FZ2000\n"
+                     "N3 GOTO 2\n");
+            s.w.placeOnScreen();
+            QVERIFY(s.editor->sendToController());
+            s.w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+            QTRY_VERIFY(!s.view->computing());
+            auto* busy = s.w.findChild<QWidget*>("backplot.busy");
+            auto* cancel = s.w.findChild<QToolButton*>("backplot.cancel");
+            auto* status = s.w.findChild<QLabel*>("backplot.status");
+            QVERIFY(busy && cancel && status);
+            const QRect inside = s.w.rect();
+            const auto within = [&](QWidget* x) {
+                const QRect r(x->mapTo(&s.w, QPoint(0, 0)), x->size());
+                return x->isVisible() && !r.isEmpty() && inside.contains(r);
+            };
+            const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
+            QDir().mkpath(dir);
+            const QString size = QStringLiteral("%1x%2").arg(s.w.screen()->size().width()).arg(s.w.screen()->size().height());
+            QSignalSpy shown(s.view, &BackplotWidget::pathShown);
+            s.w.findChild<QPushButton*>("backplot.computePath")->click();
+            QTRY_VERIFY_WITH_TIMEOUT(busy->isVisible() || !s.view->computing(), 60000);
+            QTest::qWait(150); // laid out and painted
+            if (s.view->computing()) {
+                QVERIFY2(within(busy) && within(cancel), "the progress row is outside the window");
+                QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
+                    dir + QStringLiteral("/backplot-progress-%1-%2.png").arg(language, size)));
+            } else {
+                qInfo("the path was computed before its progress could be photographed");
+            }
+            QVERIFY(shown.wait(120000));
+            QTest::qWait(300);
+            QVERIFY2(within(status), "the note is outside the window");
+            QVERIFY(!status->text().isEmpty());
+            QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
+                dir + QStringLiteral("/backplot-cut-off-%1-%2.png").arg(language, size)));
+        }
+        QVERIFY(k528::studio::setLanguage(QStringLiteral("en")));
     }
     void screenshotOfTheStudioShowsWideVerticalLinesClean() {
         Studio s;

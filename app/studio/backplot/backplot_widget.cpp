@@ -1,5 +1,6 @@
 #include "backplot/backplot_widget.h"
 #include "workspace/elided_label.h"
+#include "language.h"
 
 #include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
@@ -31,6 +32,14 @@
 #include <cmath>
 
 namespace k528::studio::backplot {
+
+namespace {
+// Numbers as the UI's language writes them ("100 000" in Russian), not the
+// system's locale.
+QLocale uiLocale() {
+    return QLocale(currentLanguage() == QLatin1String("ru") ? QLocale::Russian : QLocale::English);
+}
+} // namespace
 
 namespace {
 constexpr double kSpeeds[] = {0.1, 0.5, 1, 2, 5, 10, 100, -1}; // -1: fastest
@@ -288,7 +297,7 @@ void BackplotWidget::showBusy() {
     // A short one shows no progress at all (counted in frames and legs).
     if (busyRow_->isHidden() && (p.phase == PathJob::Phase::Preview ? p.done : p.total) < PathJob::kShowProgressAfter)
         return;
-    const QLocale l;
+    const QLocale l = uiLocale();
     busyLabel_->setText(p.phase == PathJob::Phase::Preview
                             ? tr("L%1: computing the path… %2 frames").arg(pendingProgram_).arg(l.toString(p.done))
                             : tr("L%1: cutting the blank… %2 of %3 moves")
@@ -335,7 +344,7 @@ void BackplotWidget::updateStatus() {
     case Status::CutOff:
         text = tr("L%1 does not end within %2 frames (an endless loop?): the path shows those frames")
                    .arg(status_.program)
-                   .arg(QLocale().toString(status_.frames));
+                   .arg(uiLocale().toString(status_.frames));
         break;
     case Status::Cancelled:
         text = tr("L%1: the path was not computed (cancelled)").arg(status_.program);
