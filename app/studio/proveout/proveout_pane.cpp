@@ -172,14 +172,7 @@ void ProveoutPane::schedule() {
     auto in = std::make_shared<Input>();
     QString why;
     if (!input(*in, why)) {
-        why_ = why;
-        findings_.clear();
-        table_->setRowCount(0);
-        markEditor();
-        showTools(nullptr);
-        refreshSummary();
-        ++proofs_;
-        emit proved();
+        showNothing(why);
         return;
     }
     showTools(in.get());
@@ -208,19 +201,19 @@ void ProveoutPane::schedule() {
     });
 }
 
+void ProveoutPane::showNothing(const QString& why) {
+    showTools(nullptr);
+    Output none;
+    none.error = why; // the summary says it, no finding is left shown
+    show(none);
+}
+
 void ProveoutPane::proveNow() {
     ++generation_;
     Input in;
     QString why;
     if (!input(in, why)) {
-        why_ = why;
-        findings_.clear();
-        table_->setRowCount(0);
-        markEditor();
-        showTools(nullptr);
-        refreshSummary();
-        ++proofs_;
-        emit proved();
+        showNothing(why);
         return;
     }
     showTools(&in);

@@ -72,6 +72,7 @@ private:
     bool input(Input& in, QString& why) const;
     void schedule();
     void show(const Output& out);
+    void showNothing(const QString& why); // nothing can be proved: why
     void fillFindings();
     void markEditor();
     void showTools(const Input* in);
