@@ -2829,6 +2829,189 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::ProveoutPane</name>
+    <message>
+        <source>The blank: %1</source>
+        <translation>The blank: %1</translation>
+    </message>
+    <message>
+        <source>The file's blank: %1</source>
+        <translation>The file's blank: %1</translation>
+    </message>
+    <message>
+        <source>The machine's description: %1</source>
+        <translation>The machine's description: %1</translation>
+    </message>
+    <message>
+        <source>The machine's tools: %1</source>
+        <translation>The machine's tools: %1</translation>
+    </message>
+    <message>
+        <source>Open a program file in the editor: it is proved on the machine it is checked for.</source>
+        <translation>Open a program file in the editor: it is proved on the machine it is checked for.</translation>
+    </message>
+    <message>
+        <source>The file is checked for no machine: choose one (Editor menu) to prove it.</source>
+        <translation>The file is checked for no machine: choose one (Editor menu) to prove it.</translation>
+    </message>
+    <message>
+        <source>The file has errors (Problems): it is proved once they are fixed.</source>
+        <translation>The file has errors (Problems): it is proved once they are fixed.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warning</translation>
+    </message>
+    <message>
+        <source>turning</source>
+        <translation>turning</translation>
+    </message>
+    <message>
+        <source>facing</source>
+        <translation>facing</translation>
+    </message>
+    <message>
+        <source>grooving</source>
+        <translation>grooving</translation>
+    </message>
+    <message>
+        <source>boring bar</source>
+        <translation>boring bar</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>drill</translation>
+    </message>
+    <message>
+        <source>threading</source>
+        <translation>threading</translation>
+    </message>
+    <message>
+        <source>Nothing found.</source>
+        <translation>Nothing found.</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2.</source>
+        <translation>Errors: %1, warnings: %2.</translation>
+    </message>
+    <message>
+        <source>the blank of the file (UCG)</source>
+        <translation>the blank of the file (UCG)</translation>
+    </message>
+    <message>
+        <source>the blank</source>
+        <translation>the blank</translation>
+    </message>
+    <message>
+        <source>the chuck and the turret</source>
+        <translation>the chuck and the turret</translation>
+    </message>
+    <message>
+        <source>the spindles</source>
+        <translation>the spindles</translation>
+    </message>
+    <message>
+        <source>Proved against: %1.</source>
+        <translation>Proved against: %1.</translation>
+    </message>
+    <message>
+        <source>No blank: give one (UCG) to check the rapids against the material.</source>
+        <translation>No blank: give one (UCG) to check the rapids against the material.</translation>
+    </message>
+    <message>
+        <source>Blank (UCG)</source>
+        <translation>Blank (UCG)</translation>
+    </message>
+    <message>
+        <source>the file's own</source>
+        <translation>the file's own</translation>
+    </message>
+    <message>
+        <source>The blank as a UCG line (NC-200); empty: the UCG comment of the file</source>
+        <translation>The blank as a UCG line (NC-200); empty: the UCG comment of the file</translation>
+    </message>
+    <message>
+        <source>Prove</source>
+        <translation>Prove</translation>
+    </message>
+    <message>
+        <source>Run the file's programs in preview against the blank, the chuck, the turret and the tools of the machine</source>
+        <translation>Run the file's programs in preview against the blank, the chuck, the turret and the tools of the machine</translation>
+    </message>
+    <message>
+        <source>Prove after each change</source>
+        <translation>Prove after each change</translation>
+    </message>
+    <message>
+        <source>The machine's tools</source>
+        <translation>The machine's tools</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Severity</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Text</translation>
+    </message>
+    <message>
+        <source>Station</source>
+        <translation>Station</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Radius, mm</source>
+        <translation>Radius, mm</translation>
+    </message>
+    <message>
+        <source>Offset X, mm</source>
+        <translation>Offset X, mm</translation>
+    </message>
+    <message>
+        <source>Offset Z, mm</source>
+        <translation>Offset Z, mm</translation>
+    </message>
+    <message>
+        <source>Offsets in</source>
+        <translation>Offsets in</translation>
+    </message>
+    <message>
+        <source>Max depth, mm</source>
+        <translation>Max depth, mm</translation>
+    </message>
+    <message>
+        <source>The tool's nose radius</source>
+        <translation>The tool's nose radius</translation>
+    </message>
+    <message>
+        <source>The deepest cut the tool takes (its cutting edge)</source>
+        <translation>The deepest cut the tool takes (its cutting edge)</translation>
+    </message>
+    <message>
+        <source>Prove-out</source>
+        <translation>Prove-out</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RParamsModel</name>
     <message>
         <source>%1 mm/min</source>

@@ -2829,6 +2829,189 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ProveoutPane</name>
+    <message>
+        <source>The blank: %1</source>
+        <translation>Заготовка: %1</translation>
+    </message>
+    <message>
+        <source>The file's blank: %1</source>
+        <translation>Заготовка файла: %1</translation>
+    </message>
+    <message>
+        <source>The machine's description: %1</source>
+        <translation>Описание станка: %1</translation>
+    </message>
+    <message>
+        <source>The machine's tools: %1</source>
+        <translation>Инструменты станка: %1</translation>
+    </message>
+    <message>
+        <source>Open a program file in the editor: it is proved on the machine it is checked for.</source>
+        <translation>Откройте файл программ в редакторе: его программы проверяются на станке, выбранном для файла.</translation>
+    </message>
+    <message>
+        <source>The file is checked for no machine: choose one (Editor menu) to prove it.</source>
+        <translation>Файл не привязан к станку: выберите станок (меню «Редактор»), чтобы проверить его программы.</translation>
+    </message>
+    <message>
+        <source>The file has errors (Problems): it is proved once they are fixed.</source>
+        <translation>В файле есть ошибки (список «Проблемы»): программы проверяются после их исправления.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Ошибка</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Предупреждение</translation>
+    </message>
+    <message>
+        <source>turning</source>
+        <translation>проходной</translation>
+    </message>
+    <message>
+        <source>facing</source>
+        <translation>подрезной</translation>
+    </message>
+    <message>
+        <source>grooving</source>
+        <translation>канавочный</translation>
+    </message>
+    <message>
+        <source>boring bar</source>
+        <translation>расточной</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>сверло</translation>
+    </message>
+    <message>
+        <source>threading</source>
+        <translation>резьбовой</translation>
+    </message>
+    <message>
+        <source>Nothing found.</source>
+        <translation>Ничего не найдено.</translation>
+    </message>
+    <message>
+        <source>Errors: %1, warnings: %2.</source>
+        <translation>Ошибок: %1, предупреждений: %2.</translation>
+    </message>
+    <message>
+        <source>the blank of the file (UCG)</source>
+        <translation>заготовка из файла (UCG)</translation>
+    </message>
+    <message>
+        <source>the blank</source>
+        <translation>заготовка</translation>
+    </message>
+    <message>
+        <source>the chuck and the turret</source>
+        <translation>патрон и резцедержатель</translation>
+    </message>
+    <message>
+        <source>the spindles</source>
+        <translation>шпиндели</translation>
+    </message>
+    <message>
+        <source>Proved against: %1.</source>
+        <translation>Учтены: %1.</translation>
+    </message>
+    <message>
+        <source>No blank: give one (UCG) to check the rapids against the material.</source>
+        <translation>Заготовка не задана: задайте её (UCG), чтобы проверить быстрые ходы по материалу.</translation>
+    </message>
+    <message>
+        <source>Blank (UCG)</source>
+        <translation>Заготовка (UCG)</translation>
+    </message>
+    <message>
+        <source>the file's own</source>
+        <translation>из файла</translation>
+    </message>
+    <message>
+        <source>The blank as a UCG line (NC-200); empty: the UCG comment of the file</source>
+        <translation>Заготовка строкой UCG; пусто — комментарий UCG из файла</translation>
+    </message>
+    <message>
+        <source>Prove</source>
+        <translation>Проверить</translation>
+    </message>
+    <message>
+        <source>Run the file's programs in preview against the blank, the chuck, the turret and the tools of the machine</source>
+        <translation>Выполнить программы файла в просмотре и проверить их по заготовке, патрону, резцедержателю и инструментам станка</translation>
+    </message>
+    <message>
+        <source>Prove after each change</source>
+        <translation>Проверять после каждого изменения</translation>
+    </message>
+    <message>
+        <source>The machine's tools</source>
+        <translation>Инструменты станка</translation>
+    </message>
+    <message>
+        <source>Severity</source>
+        <translation>Важность</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Кадр</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Строка</translation>
+    </message>
+    <message>
+        <source>Text</source>
+        <translation>Текст</translation>
+    </message>
+    <message>
+        <source>Station</source>
+        <translation>Позиция</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Инструмент</translation>
+    </message>
+    <message>
+        <source>Radius, mm</source>
+        <translation>Радиус, мм</translation>
+    </message>
+    <message>
+        <source>Offset X, mm</source>
+        <translation>Корр. X, мм</translation>
+    </message>
+    <message>
+        <source>Offset Z, mm</source>
+        <translation>Корр. Z, мм</translation>
+    </message>
+    <message>
+        <source>Offsets in</source>
+        <translation>Коррекции в</translation>
+    </message>
+    <message>
+        <source>Max depth, mm</source>
+        <translation>Глубина, мм</translation>
+    </message>
+    <message>
+        <source>The tool's nose radius</source>
+        <translation>Радиус при вершине резца</translation>
+    </message>
+    <message>
+        <source>The deepest cut the tool takes (its cutting edge)</source>
+        <translation>Наибольшая глубина резания инструмента (длина режущей кромки)</translation>
+    </message>
+    <message>
+        <source>Prove-out</source>
+        <translation>Проверка программы</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RParamsModel</name>
     <message>
         <source>%1 mm/min</source>

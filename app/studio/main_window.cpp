@@ -30,6 +30,7 @@
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
 #include "history/history_dock.h"
+#include "proveout/proveout_pane.h"
 #include "editor/editor_tab.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
@@ -229,6 +230,7 @@ void MainWindow::createDocks() {
     addConstantsDock(this, *session_); // constants/constants_dock.cpp
     addRParamsDock(this, *session_);   // rparams/rparams_dock.cpp
     addHistoryDock(this, *session_); // history/history_dock.cpp
+    addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
     // The debugger of the editor in a dock of its own (the technologist
     // shows it on demand).
     debuggerDock_ = addDock("dock.debugger", Qt::RightDockWidgetArea);
@@ -292,6 +294,8 @@ void MainWindow::createMenus() {
     if (auto* history = findChild<QDockWidget*>("dock.history"))
         viewMenu_->addAction(history->toggleViewAction());
     viewMenu_->addAction(debuggerDock_->toggleViewAction());
+    if (auto* d = findChild<QDockWidget*>("dock.proveout"))
+        viewMenu_->addAction(d->toggleViewAction());
 
     languageMenu_ = menuBar()->addMenu(QString());
     auto* group = new QActionGroup(this);

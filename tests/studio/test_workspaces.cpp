@@ -33,6 +33,8 @@
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QMenu>
+#include <QLabel>
+#include <QPushButton>
 #include <QMessageBox>
 #include <QApplication>
 #include <QTimer>
@@ -284,6 +286,67 @@ private slots:
             }
             QVERIFY(w.grab().save(shotPath(s.id)));
         }
+    }
+
+    // No control is squeezed below the height it needs to be read and used
+    // (a pane too small scrolls instead), in each workspace and in each pane
+    // it shows on demand — raised in its place, as the View menu shows it.
+    void noControlIsCrushed() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const auto crushed = [&](const QString& where) {
+            QStringList out;
+            for (const QWidget* c : w.findChildren<QWidget*>()) {
+                if (!c->isVisible() || c->window() != &w || shownRect(c).isEmpty())
+                    continue;
+                if (!qobject_cast<const QComboBox*>(c) && !qobject_cast<const QAbstractSpinBox*>(c) &&
+                    !qobject_cast<const QLineEdit*>(c) && !qobject_cast<const QPushButton*>(c))
+                    continue;
+                if (qobject_cast<const QAbstractSpinBox*>(c->parentWidget()) ||
+                    qobject_cast<const QComboBox*>(c->parentWidget()))
+                    continue; // a part of a control, sized by it
+                const int need = c->minimumSizeHint().height();
+                if (c->height() < need)
+                    out << QStringLiteral("%1: %2 (%3) %4 px tall, needs %5")
+                               .arg(where, c->objectName(), QString::fromLatin1(c->metaObject()->className()))
+                               .arg(c->height())
+                               .arg(need);
+            }
+            return out;
+        };
+        QStringList all;
+        for (const WorkspaceSpec& s : w.workspaces()->specs()) {
+            QVERIFY(w.workspaces()->activate(s.id));
+            settle();
+            all << crushed(s.id);
+            for (const DockPlace& p : s.docks) {
+                if (p.shown)
+                    continue;
+                auto* d = w.findChild<QDockWidget*>(p.dock);
+                d->show();
+                d->raise();
+                settle();
+                all << crushed(s.id + " + " + p.dock);
+                // Its texts that wrap grown long (a line's state, a monitor
+                // of the controller on the line): they take more lines, the
+                // controls keep their height.
+                const QString longText = QStringLiteral("/tmp/test_studio_scenarios-PCaiDN/opb17290, адрес 1, "
+                                                        "115200 бит/с: ответов 10, без ответа 0 ")
+                                             .repeated(4);
+                QString table; // a rich text monitor: a table of rows that wrap
+                for (int row = 0; row < 12; ++row)
+                    table += QStringLiteral("<tr><td><b>Z%1</b></td><td>%2</td></tr>").arg(1000 + row).arg(longText);
+                for (QLabel* l : d->findChildren<QLabel*>())
+                    if (l->wordWrap() && l->isVisible())
+                        l->setText(l->textFormat() == Qt::RichText ? "<table>" + table + "</table>" : longText);
+                settle();
+                all << crushed(s.id + " + " + p.dock + ", long texts");
+            }
+            w.workspaces()->resetLayout();
+        }
+        QVERIFY2(all.isEmpty(), qPrintable(all.join("\n")));
     }
 
     void longTextsAndMoreDocksDoNotWidenTheWindow() {

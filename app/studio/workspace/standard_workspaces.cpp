@@ -75,9 +75,10 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
     tech.page = QStringLiteral("programEditorTab");
     tech.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F2);
     tech.docks = {
-        place("dock.backplot", Qt::RightDockWidgetArea, 0.38),
+        raised(place("dock.backplot", Qt::RightDockWidgetArea, 0.38)),
         hidden(beside("dock.debugger", "dock.backplot", Qt::Vertical, 0.5)),
         tab("dock.controller", "dock.debugger", false),
+        tab("dock.proveout", "dock.backplot"), // behind the backplot; after the split (a tab takes no split)
         hidden(place("dock.messages", Qt::BottomDockWidgetArea, 0.22)),
         tab("dock.axes", "dock.messages", false),
         tab("dock.history", "dock.messages", false),

@@ -3,7 +3,8 @@
 //                   centre, the machine's panel on the right, the messages and
 //                   axes below the program; the controller on demand.
 //   Technologist  — the editor in the centre (files, outline, Problems), the
-//                   backplot beside it; the debugger, the controller, the
+//                   backplot beside it with the prove-out a tab behind it;
+//                   the debugger, the controller, the
 //                   messages, R-parameters and constants on demand.
 //   Training      — no centre: the K923 and the machine's panel side by side
 //                   (the messages below the panel), the backplot and the

@@ -1,0 +1,421 @@
+#include "proveout/proveout_pane.h"
+
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "language.h"
+#include "plc/description.h"
+#include "profile/tools.h"
+#include "stock/stock.h"
+
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDockWidget>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMainWindow>
+#include <QPointer>
+#include <QPushButton>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QThreadPool>
+#include <QVBoxLayout>
+
+#include <optional>
+
+namespace k528::studio {
+
+// What a proof reads: copies, so that the worker owns them.
+struct ProveoutPane::Input {
+    profile::MachineProfile machine;
+    program::ProgramStore store;
+    QByteArray text;     // the file's, for its own blank (NC-200 UCG comment)
+    QString blankField;  // the pane's blank, "" = the file's
+};
+
+struct ProveoutPane::Output {
+    std::uint64_t generation = 0;
+    proveout::Result result;
+    QString error; // the blank or the machine's data could not be read
+    bool blankFromFile = false;
+};
+
+namespace {
+
+ProveoutPane::Output proveInput(const ProveoutPane::Input& in) {
+    ProveoutPane::Output out;
+    std::optional<stock::Blank> blank;
+    std::string error;
+    if (!in.blankField.trimmed().isEmpty()) {
+        blank = stock::parseUcg(in.blankField.trimmed().toStdString(), &error);
+        if (!blank) {
+            out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The blank: %1")
+                            .arg(QString::fromStdString(error));
+            return out;
+        }
+    } else if (in.text.contains("UCG")) {
+        const std::string_view t(in.text.constData(), static_cast<std::size_t>(in.text.size()));
+        blank = stock::findUcg(t, &error);
+        if (!blank && error != "no UCG in the file") {
+            out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The file's blank: %1")
+                            .arg(QString::fromStdString(error));
+            return out;
+        }
+        out.blankFromFile = blank.has_value();
+    }
+    engine::PreviewOptions po;
+    po.fromReferencePoint = true; // as a run starts, after homing (`k528 check --profile`)
+    try {
+        out.result = proveout::proveStore(in.machine, in.store, po, blank);
+    } catch (const plc::DescriptionError& e) {
+        out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The machine's description: %1")
+                        .arg(QString::fromUtf8(e.what()));
+    } catch (const profile::ToolError& e) {
+        out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The machine's tools: %1")
+                        .arg(QString::fromUtf8(e.what()));
+    }
+    return out;
+}
+
+QString mm(double v) { return QString::number(v, 'f', 3); }
+
+} // namespace
+
+ProveoutPane::ProveoutPane(EditorTab* editor, QWidget* parent)
+    : QWidget(parent), editor_(editor), alive_(std::make_shared<bool>(true)) {
+    setObjectName("proveout.pane");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto* row = new QHBoxLayout;
+    blankLabel_ = new QLabel(this);
+    blank_ = new QLineEdit(this);
+    blank_->setObjectName("proveout.blank");
+    proveButton_ = new QPushButton(this);
+    proveButton_->setObjectName("proveout.prove");
+    auto_ = new QCheckBox(this);
+    auto_->setObjectName("proveout.auto");
+    auto_->setChecked(true);
+    row->addWidget(blankLabel_);
+    row->addWidget(blank_, 1);
+    row->addWidget(proveButton_);
+    layout->addLayout(row);
+    layout->addWidget(auto_);
+    summary_ = new QLabel(this);
+    summary_->setObjectName("proveout.summary");
+    summary_->setWordWrap(true);
+    layout->addWidget(summary_);
+    table_ = new QTableWidget(0, 5, this);
+    table_->setObjectName("proveout.findings");
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->verticalHeader()->hide();
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->setWordWrap(true); // a finding's text wraps in its row
+    layout->addWidget(table_, 3);
+    toolsTitle_ = new QLabel(this);
+    layout->addWidget(toolsTitle_);
+    tools_ = new QTableWidget(0, 7, this);
+    tools_->setObjectName("proveout.tools");
+    tools_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    tools_->verticalHeader()->hide();
+    tools_->horizontalHeader()->setStretchLastSection(true);
+    layout->addWidget(tools_, 2);
+
+    connect(proveButton_, &QPushButton::clicked, this, [this] { schedule(); });
+    connect(blank_, &QLineEdit::editingFinished, this, [this] {
+        if (auto_->isChecked())
+            schedule();
+    });
+    connect(table_, &QTableWidget::cellActivated, this, [this](int r, int) { activate(r); });
+    connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int r, int) { activate(r); });
+    if (editor_)
+        // After each validation of the current file, and on a switch of tab.
+        connect(editor_, &EditorTab::problemCountChanged, this, [this] {
+            if (auto_->isChecked())
+                schedule();
+        });
+    retranslate();
+    schedule();
+}
+
+ProveoutPane::~ProveoutPane() { *alive_ = false; }
+
+bool ProveoutPane::input(Input& in, QString& why) const {
+    ProgramEditor* ed = editor_ ? editor_->currentEditor() : nullptr;
+    if (!ed) {
+        why = tr("Open a program file in the editor: it is proved on the machine it is checked for.");
+        return false;
+    }
+    if (!ed->machine()) {
+        why = tr("The file is checked for no machine: choose one (Editor menu) to prove it.");
+        return false;
+    }
+    if (program::hasErrors(ed->diagnostics())) {
+        why = tr("The file has errors (Problems): it is proved once they are fixed.");
+        return false;
+    }
+    in.machine = *ed->machine();
+    in.store = ed->store();
+    in.text = ed->text().toUtf8();
+    in.blankField = blank_->text();
+    return true;
+}
+
+void ProveoutPane::schedule() {
+    ++generation_;
+    if (busy_) {
+        again_ = true;
+        return;
+    }
+    auto in = std::make_shared<Input>();
+    QString why;
+    if (!input(*in, why)) {
+        showNothing(why);
+        return;
+    }
+    showTools(in.get());
+    busy_ = true;
+    const std::uint64_t gen = generation_;
+    std::weak_ptr<bool> alive = alive_;
+    QPointer<ProveoutPane> self(this);
+    QThreadPool::globalInstance()->start([in, gen, self, alive] {
+        auto out = std::make_shared<Output>(proveInput(*in));
+        out->generation = gen;
+        if (alive.expired())
+            return;
+        QMetaObject::invokeMethod(
+            QCoreApplication::instance(), [self, out] {
+                if (!self)
+                    return;
+                self->busy_ = false;
+                if (out->generation == self->generation_ && !self->again_)
+                    self->show(*out);
+                if (self->again_) {
+                    self->again_ = false;
+                    self->schedule();
+                }
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void ProveoutPane::showNothing(const QString& why) {
+    showTools(nullptr);
+    Output none;
+    none.error = why; // the summary says it, no finding is left shown
+    show(none);
+}
+
+void ProveoutPane::proveNow() {
+    ++generation_;
+    Input in;
+    QString why;
+    if (!input(in, why)) {
+        showNothing(why);
+        return;
+    }
+    showTools(&in);
+    Output out = proveInput(in);
+    out.generation = generation_;
+    show(out);
+}
+
+void ProveoutPane::show(const Output& out) {
+    why_ = out.error;
+    findings_ = out.result.findings;
+    materialRan_ = out.result.material;
+    chuckRan_ = out.result.chuck;
+    blankFromFile_ = out.blankFromFile;
+    fillFindings();
+    markEditor();
+    refreshSummary();
+    ++proofs_;
+    emit proved();
+}
+
+void ProveoutPane::markEditor() {
+    ProgramEditor* ed = editor_ ? editor_->currentEditor() : nullptr;
+    const auto clear = [](ProgramEditor* e) {
+        e->SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, kIndicator);
+        e->SendScintilla(QsciScintilla::SCI_INDICATORCLEARRANGE, 0L,
+                         e->SendScintilla(QsciScintilla::SCI_GETLENGTH));
+    };
+    if (marked_ && marked_ != ed)
+        clear(marked_);
+    marked_ = ed;
+    if (!ed)
+        return;
+    ed->SendScintilla(QsciScintilla::SCI_INDICSETSTYLE, kIndicator, QsciScintilla::INDIC_BOX);
+    ed->SendScintilla(QsciScintilla::SCI_INDICSETFORE, kIndicator, QColor(220, 20, 20));
+    clear(ed);
+    for (const proveout::Finding& f : findings_) {
+        if (f.line < 1 || f.line > ed->lines() || ed->programAtLine(f.line - 1) != f.program)
+            continue; // a program of the machine, not of the file
+        const long start = ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, f.line - 1);
+        const long end = ed->SendScintilla(QsciScintilla::SCI_GETLINEENDPOSITION, f.line - 1);
+        if (end > start)
+            ed->SendScintilla(QsciScintilla::SCI_INDICATORFILLRANGE, start, end - start);
+    }
+}
+
+void ProveoutPane::fillFindings() {
+    const bool ru = currentLanguage() == QLatin1String("ru");
+    table_->setRowCount(static_cast<int>(findings_.size()));
+    for (int r = 0; r < table_->rowCount(); ++r) {
+        const proveout::Finding& f = findings_[static_cast<std::size_t>(r)];
+        auto* sev = new QTableWidgetItem(f.isError() ? tr("Error") : tr("Warning"));
+        sev->setData(kRuleRole, QString::fromUtf8(proveout::ruleId(f.rule).data(),
+                                                  static_cast<qsizetype>(proveout::ruleId(f.rule).size())));
+        sev->setForeground(f.isError() ? QColor(200, 30, 30) : QColor(170, 110, 0));
+        table_->setItem(r, 0, sev);
+        table_->setItem(r, 1, new QTableWidgetItem(QStringLiteral("L%1").arg(f.program)));
+        table_->setItem(r, 2, new QTableWidgetItem(QStringLiteral("N%1").arg(f.n)));
+        auto* line = new QTableWidgetItem(QString::number(f.line));
+        line->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        table_->setItem(r, 3, line);
+        QString text = QString::fromStdString(f.message(ru));
+        if (f.occurrences > 1)
+            text += QStringLiteral(" (×%1)").arg(f.occurrences);
+        auto* msg = new QTableWidgetItem(text);
+        msg->setToolTip(text);
+        table_->setItem(r, 4, msg);
+    }
+    for (int col = 0; col < 4; ++col)
+        table_->resizeColumnToContents(col);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->resizeRowsToContents();
+}
+
+void ProveoutPane::showTools(const Input* in) {
+    tools_->setRowCount(0);
+    if (!in)
+        return;
+    std::vector<profile::Tool> tools;
+    try {
+        tools = profile::tools(in->machine);
+    } catch (const profile::ToolError&) {
+        return; // the proof says why
+    }
+    tools_->setRowCount(static_cast<int>(tools.size()));
+    for (int r = 0; r < tools_->rowCount(); ++r) {
+        const profile::Tool& t = tools[static_cast<std::size_t>(r)];
+        const profile::ToolOffsets o = profile::toolOffsets(t, in->machine);
+        QString kind;
+        switch (t.kind) {
+        case profile::ToolKind::Turning: kind = tr("turning"); break;
+        case profile::ToolKind::Facing: kind = tr("facing"); break;
+        case profile::ToolKind::Grooving: kind = tr("grooving"); break;
+        case profile::ToolKind::Boring: kind = tr("boring bar"); break;
+        case profile::ToolKind::Drill: kind = tr("drill"); break;
+        case profile::ToolKind::Threading: kind = tr("threading"); break;
+        }
+        const QStringList cells = {
+            QString::number(t.station),
+            kind,
+            mm(t.tipRadiusMm),
+            mm(o.xMm),
+            mm(o.zMm),
+            t.offsetR >= 0 ? QStringLiteral("R%1, R%2").arg(t.offsetR).arg(t.offsetR + 1) : QString(),
+            t.maxDepthMm > 0 ? mm(t.maxDepthMm) : QStringLiteral("—"),
+        };
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            if (c != 1)
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            tools_->setItem(r, c, item);
+        }
+    }
+    tools_->resizeColumnsToContents();
+    tools_->horizontalHeader()->setStretchLastSection(true);
+}
+
+void ProveoutPane::refreshSummary() {
+    if (!why_.isEmpty()) {
+        summary_->setText(why_);
+        return;
+    }
+    std::size_t errors = 0;
+    for (const proveout::Finding& f : findings_)
+        errors += f.isError() ? 1 : 0;
+    QString s = findings_.empty() ? tr("Nothing found.")
+                                  : tr("Errors: %1, warnings: %2.").arg(errors).arg(findings_.size() - errors);
+    QStringList ran;
+    if (materialRan_)
+        ran << (blankFromFile_ ? tr("the blank of the file (UCG)") : tr("the blank"));
+    if (chuckRan_)
+        ran << tr("the chuck and the turret");
+    ran << tr("the spindles");
+    s += QLatin1Char(' ') + tr("Proved against: %1.").arg(ran.join(QStringLiteral(", ")));
+    if (!materialRan_)
+        s += QLatin1Char(' ') + tr("No blank: give one (UCG) to check the rapids against the material.");
+    summary_->setText(s);
+}
+
+void ProveoutPane::activate(int row) {
+    if (row < 0 || row >= static_cast<int>(findings_.size()) || !editor_)
+        return;
+    const proveout::Finding& f = findings_[static_cast<std::size_t>(row)];
+    if (editor_->showLine(f.program, f.line))
+        emit lineShown(f.program, f.line);
+}
+
+void ProveoutPane::retranslate() {
+    blankLabel_->setText(tr("Blank (UCG)"));
+    blank_->setPlaceholderText(tr("the file's own"));
+    blank_->setToolTip(tr("The blank as a UCG line (NC-200); empty: the UCG comment of the file"));
+    proveButton_->setText(tr("Prove"));
+    proveButton_->setToolTip(tr("Run the file's programs in preview against the blank, the chuck, "
+                                "the turret and the tools of the machine"));
+    auto_->setText(tr("Prove after each change"));
+    toolsTitle_->setText(tr("The machine's tools"));
+    table_->setHorizontalHeaderLabels({tr("Severity"), tr("Program"), tr("Frame"), tr("Line"), tr("Text")});
+    tools_->setHorizontalHeaderLabels({tr("Station"), tr("Tool"), tr("Radius, mm"), tr("Offset X, mm"),
+                                       tr("Offset Z, mm"), tr("Offsets in"), tr("Max depth, mm")});
+    tools_->horizontalHeaderItem(2)->setToolTip(tr("The tool's nose radius"));
+    tools_->horizontalHeaderItem(6)->setToolTip(tr("The deepest cut the tool takes (its cutting edge)"));
+    fillFindings(); // the findings' texts in the new language
+    refreshSummary();
+}
+
+void ProveoutPane::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange) {
+        retranslate();
+        // The tools' kinds in the new language.
+        Input in;
+        QString why;
+        showTools(input(in, why) ? &in : nullptr);
+    }
+    QWidget::changeEvent(e);
+}
+
+namespace {
+class ProveoutDock final : public QDockWidget {
+public:
+    using QDockWidget::QDockWidget;
+protected:
+    void changeEvent(QEvent* e) override {
+        if (e->type() == QEvent::LanguageChange)
+            setWindowTitle(ProveoutPane::tr("Prove-out"));
+        QDockWidget::changeEvent(e);
+    }
+};
+} // namespace
+
+QDockWidget* addProveoutDock(QMainWindow* w, EditorTab* editor, QTabWidget* workArea) {
+    auto* dock = new ProveoutDock(w);
+    dock->setObjectName("dock.proveout");
+    dock->setWindowTitle(ProveoutPane::tr("Prove-out"));
+    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
+                      QDockWidget::DockWidgetClosable);
+    auto* pane = new ProveoutPane(editor, dock);
+    dock->setWidget(pane);
+    if (workArea && editor)
+        QObject::connect(pane, &ProveoutPane::lineShown, workArea,
+                         [workArea, editor] { workArea->setCurrentWidget(editor); });
+    w->addDockWidget(Qt::RightDockWidgetArea, dock);
+    return dock;
+}
+
+} // namespace k528::studio

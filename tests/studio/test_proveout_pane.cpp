@@ -1,0 +1,190 @@
+// The technologist's prove-out pane (proveout/proveout_pane.h): the editor's
+// file proved on its machine — a rapid through the blank found with its
+// frame, the editor taken to its line, the same program made safe finds
+// nothing — after each edit on a worker; the machine's tools with their
+// offsets; the reasons when nothing can be proved.
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "main_window.h"
+#include "profile/builtin.h"
+#include "profile/tools.h"
+#include "proveout/proveout_pane.h"
+#include "session/simulation_session.h"
+
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace k528;
+using namespace k528::studio;
+
+namespace {
+
+// Facing, then the return rapid straight through the Ø40 bar (N4, line 6).
+const char* kBadFacing = "; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
+                         "%L1 (FACE)\n"
+                         "N1 G90 G0 M3 X44 Z2\n"
+                         "N2 Z-1\n"
+                         "N3 G1 X-1 FX150\n"
+                         "N4 G0 X44 Z-20\n"
+                         "N5 M30\n";
+// The same made safe: back along the face, then up.
+const char* kSafeFacing = "; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
+                          "%L1 (FACE)\n"
+                          "N1 G90 G0 M3 X44 Z2\n"
+                          "N2 Z-1\n"
+                          "N3 G1 X-1 FX150\n"
+                          "N4 G0 Z2\n"
+                          "N5 X44\n"
+                          "N6 M30\n";
+
+} // namespace
+
+class TestProveoutPane : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("k528-test-proveout-pane");
+        QVERIFY(dir_.isValid());
+        qputenv("K528_DB", dir_.filePath("machines.sqlite").toUtf8());
+    }
+
+    void findsTheRapidAndShowsItsLine() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        EditorTab tab(&session);
+        ProveoutPane pane(&tab);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText(QString::fromUtf8(kBadFacing));
+        ed->validateNow();
+        pane.proveNow();
+        QCOMPARE(pane.findings().size(), std::size_t(1));
+        const proveout::Finding& f = pane.findings()[0];
+        QCOMPARE(f.rule, proveout::Rule::RapidIntoMaterial);
+        QCOMPARE(f.n, 4);
+        QCOMPARE(f.line, 6);
+        QCOMPARE(pane.findingsTable()->rowCount(), 1);
+        QCOMPARE(pane.findingsTable()->item(0, 0)->data(ProveoutPane::kRuleRole).toString(),
+                 QString("rapid-into-material"));
+        QCOMPARE(pane.findingsTable()->item(0, 2)->text(), QString("N4"));
+        QCOMPARE(pane.findingsTable()->item(0, 3)->text(), QString("6"));
+        QVERIFY(pane.findingsTable()->item(0, 4)->text().contains("X"));
+        QVERIFY2(pane.summary()->text().contains("UCG"), qPrintable(pane.summary()->text()));
+        // The finding's line is marked in the editor, no other.
+        const auto marked = [&](int line0) {
+            const long pos = ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, line0) + 2;
+            return ed->SendScintilla(QsciScintilla::SCI_INDICATORVALUEAT, ProveoutPane::kIndicator, pos) != 0;
+        };
+        QVERIFY(marked(5));
+        QVERIFY(!marked(4));
+        QVERIFY(!marked(6));
+
+        // Activated: the editor's cursor on the finding's line.
+        ed->setCursorPosition(0, 0);
+        QSignalSpy shown(&pane, &ProveoutPane::lineShown);
+        emit pane.findingsTable()->cellActivated(0, 4);
+        QCOMPARE(shown.count(), 1);
+        int line = -1, col = -1;
+        ed->getCursorPosition(&line, &col);
+        QCOMPARE(line, 5);
+
+        // Without the file's blank: nothing to hit, and the summary says so;
+        // the pane's blank gives it one.
+        QString noBlank = QString::fromUtf8(kBadFacing);
+        noBlank.remove(0, noBlank.indexOf('\n') + 1);
+        ed->setText(noBlank);
+        ed->validateNow();
+        pane.proveNow();
+        QVERIFY(pane.findings().empty());
+        QVERIFY(!marked(4));
+        QVERIFY2(pane.summary()->text().contains("No blank"), qPrintable(pane.summary()->text()));
+        pane.blankEdit()->setText("UCG,2,Z-80Z0,X40X0,S0S0,0,-5");
+        pane.proveNow();
+        QCOMPARE(pane.findings().size(), std::size_t(1));
+        QCOMPARE(pane.findings()[0].line, 5);
+        QVERIFY(marked(4));
+        // A blank that is not one: said, nothing proved.
+        pane.blankEdit()->setText("UCG,2,Z-80");
+        pane.proveNow();
+        QVERIFY(pane.findings().empty());
+        QVERIFY2(pane.summary()->text().contains("blank"), qPrintable(pane.summary()->text()));
+        QVERIFY(!marked(4));
+    }
+
+    void anEditProvesAgainOnTheWorker() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        EditorTab tab(&session);
+        ProveoutPane pane(&tab);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText(QString::fromUtf8(kBadFacing));
+        QTRY_COMPARE_WITH_TIMEOUT(pane.findings().size(), std::size_t(1), 20000);
+        ed->setText(QString::fromUtf8(kSafeFacing));
+        QTRY_VERIFY_WITH_TIMEOUT(pane.findings().empty() && pane.summary()->text().startsWith("Nothing"),
+                                 20000);
+        QCOMPARE(pane.findingsTable()->rowCount(), 0);
+    }
+
+    void theMachinesToolsWithTheirOffsets() {
+        const profile::MachineProfile lathe = profile::builtin("training-lathe");
+        SimulationSession session(lathe);
+        EditorTab tab(&session);
+        ProveoutPane pane(&tab);
+        tab.newFile();
+        tab.currentEditor()->setText(QString::fromUtf8(kSafeFacing));
+        tab.currentEditor()->validateNow();
+        pane.proveNow();
+        const std::vector<profile::Tool> tools = profile::tools(lathe);
+        QCOMPARE(tools.size(), std::size_t(4));
+        QCOMPARE(pane.toolsTable()->rowCount(), 4);
+        for (int r = 0; r < 4; ++r) {
+            const profile::Tool& t = tools[std::size_t(r)];
+            const profile::ToolOffsets o = profile::toolOffsets(t, lathe);
+            QCOMPARE(pane.toolsTable()->item(r, 0)->text(), QString::number(t.station));
+            QCOMPARE(pane.toolsTable()->item(r, 3)->text(), QString::number(o.xMm, 'f', 3));
+            QCOMPARE(pane.toolsTable()->item(r, 4)->text(), QString::number(o.zMm, 'f', 3));
+            QCOMPARE(pane.toolsTable()->item(r, 5)->text(),
+                     QString("R%1, R%2").arg(t.offsetR).arg(t.offsetR + 1));
+        }
+        // Station 2's offsets are preset (R102, R103): not zero.
+        QVERIFY(pane.toolsTable()->item(1, 4)->text() != QString("0.000"));
+        QCOMPARE(pane.toolsTable()->item(3, 1)->text(), QString("drill"));
+    }
+
+    void saysWhyNothingIsProved() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        EditorTab tab(&session);
+        ProveoutPane pane(&tab);
+        pane.proveNow();
+        QVERIFY2(pane.summary()->text().contains("Open"), qPrintable(pane.summary()->text()));
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText(QString::fromUtf8(kBadFacing));
+        QVERIFY(tab.setFileMachine(0, EditorTab::kNoMachine));
+        ed->validateNow();
+        pane.proveNow();
+        QVERIFY(pane.findings().empty());
+        QVERIFY2(pane.summary()->text().contains("no machine"), qPrintable(pane.summary()->text()));
+        QVERIFY(tab.setFileMachine(0, QString()));
+        ed->setText("%L1\nN1 GOTO 7\nN2 M30\n"); // a jump to nowhere: an error of the file
+        ed->validateNow();
+        pane.proveNow();
+        QVERIFY2(pane.summary()->text().contains("errors"), qPrintable(pane.summary()->text()));
+    }
+
+    void aDockOfTheTechnologist() {
+        MainWindow w;
+        auto* dock = w.findChild<QDockWidget*>("dock.proveout");
+        QVERIFY(dock);
+        QVERIFY(dock->findChild<ProveoutPane*>());
+        QVERIFY(!dock->windowTitle().isEmpty());
+    }
+};
+
+QTEST_MAIN(TestProveoutPane)
+#include "test_proveout_pane.moc"
