@@ -7,7 +7,7 @@
 // --stdin-keys`: the mode changes) to the moment the new state arrives on its
 // MQTT topic at a subscriber (mosquitto_sub, timed when this program reads
 // its line: an upper bound).
-// Usage: bench_shop K528 MACHINES SECONDS CHANGES
+// Usage: bench_shop_poll K528 MACHINES SECONDS CHANGES
 #include "report.h"
 #include "tcp_serve.h"
 
@@ -54,7 +54,7 @@ bool run(const QString& program, const QStringList& args) {
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     if (argc != 5) {
-        std::fprintf(stderr, "usage: bench_shop K528 MACHINES SECONDS CHANGES\n");
+        std::fprintf(stderr, "usage: bench_shop_poll K528 MACHINES SECONDS CHANGES\n");
         return 2;
     }
     const QString k528 = QString::fromLocal8Bit(argv[1]);
