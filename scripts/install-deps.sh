@@ -12,6 +12,7 @@ packages=(
     libqt6sql6-sqlite libqt6svg6 qt6-qpa-plugins          # run-time plugins
     qt6-translations-l10n                                 # Qt's own texts in Russian (qtbase_ru.qm)
     libvtk9-dev libsqlite3-dev                            # VTK 9.1, SQLite
+    libpq-dev postgresql postgresql-common                # PostgreSQL's client library; a throwaway server for tests (pg_virtualenv)
     nlohmann-json3-dev libboost-dev                       # JSON, Boost.Geometry (header-only)
     libqscintilla2-qt6-dev qt6-charts-dev                 # program editor, oscilloscope
     libgl1-mesa-dri xvfb xauth                            # OpenGL in software, X server for GUI tests

@@ -14,6 +14,7 @@
 #include "util/json.h"
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <filesystem>
 
@@ -235,10 +236,19 @@ int cmdShow(std::span<const std::string> argvIn) {
                 }
             root["r"] = std::move(rs);
             Json ps = Json::array();
+            std::map<int, db::ProgramRelease> states;
+            if (!ref->revision)
+                for (db::ProgramRelease& r : d->programReleases(info.name))
+                    states.emplace(r.number, std::move(r));
             for (const auto& [n, text] : p.programs)
                 if (!programNumber || *programNumber == n) {
                     Json j;
                     j["number"] = n;
+                    if (const auto it = states.find(n); it != states.end()) {
+                        j["state"] = db::programStateName(it->second.state);
+                        j["released_revision"] =
+                            it->second.releasedRevision ? Json(*it->second.releasedRevision) : Json();
+                    }
                     j["title"] = db::programTitle(text);
                     j["lines"] = static_cast<long long>(std::count(text.begin(), text.end(), '\n'));
                     j["sha256"] = db::sha256Hex(text);
@@ -336,8 +346,25 @@ int cmdShow(std::span<const std::string> argvIn) {
             return ExitOk;
         } else if (a.has("--programs")) {
             s += "\n";
-            for (const auto& [n, text] : p.programs)
-                s += programSummary(n, text);
+            // The state of each program now (draft, released, withdrawn), with
+            // the released version when a newer draft exists.
+            std::map<int, db::ProgramRelease> states;
+            if (!ref->revision)
+                for (db::ProgramRelease& r : d->programReleases(info.name))
+                    states.emplace(r.number, std::move(r));
+            for (const auto& [n, text] : p.programs) {
+                std::string line = programSummary(n, text);
+                if (const auto it = states.find(n); it != states.end()) {
+                    line.pop_back();
+                    line += "  " + std::string(db::programStateName(it->second.state));
+                    if (it->second.state == db::ProgramState::Draft && it->second.releasedRevision)
+                        line += " (released: revision " + std::to_string(*it->second.releasedRevision) + ")";
+                    else if (it->second.state == db::ProgramState::Released && it->second.last)
+                        line += " by " + it->second.last->author + " " + it->second.last->at;
+                    line += "\n";
+                }
+                s += line;
+            }
             if (p.programs.empty())
                 s += ru ? "(нет программ)\n" : "(no programs)\n";
         } else if (a.has("--messages")) {

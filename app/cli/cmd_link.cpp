@@ -2,13 +2,16 @@
 // docs/link.md): ping, status [--json], pull --out FILE, push FILE (a machine
 // file or a program file), clear c|r, diag [--json] [--clear], watch [--json]
 // [--seconds S], scan [--bauds …] [--addresses A-B] [--json]; `--frames FILE`
-// saves the frame log; `k528 link --list` lists the plugins and ports. The
+// saves the frame log; push and pull go on record in the shop's database
+// (`--db LOCATION`, `--machine NAME`: link_record.h); `k528 link --list`
+// lists the plugins and ports. The
 // client procedures are core's (link/client.h) over the plugin's transport
 // (core's RtuMaster over a QSerialPort).
 #include "catalog/messages.h"
 #include "cli.h"
 #include "link/client.h"
 #include "link_line.h"
+#include "link_record.h"
 #include "output_file.h"
 #include "profile/text_format.h"
 #include "util/input_file.h"
@@ -253,12 +256,21 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
     return stopRequested() ? ExitUsage : ExitOk;
 }
 
+// What the controller says it is (its FC 17 identity), "" when it does not.
+std::string controllerIdentity(link::Link& l) {
+    link::ServerId id;
+    if (l.serverId(id))
+        return {};
+    return id.data;
+}
+
 } // namespace
 
 int runLinkQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
     options.insert(options.end(),
-                   {"--out", "--seconds", "--timeout-ms", "--interval-ms", "--frames", "--bauds", "--addresses"});
+                   {"--out", "--seconds", "--timeout-ms", "--interval-ms", "--frames", "--bauds", "--addresses",
+                    "--db", "--machine"});
     const Args args(argv, {"--json", "--list", "--clear"}, options);
     if (!args.ok())
         return usageError(args.error());
@@ -283,8 +295,13 @@ int runLinkQt(std::span<const std::string> argv) {
     if (cmd != "ping" && cmd != "status" && cmd != "pull" && cmd != "push" && cmd != "watch" && cmd != "clear" &&
         cmd != "diag" && cmd != "scan")
         return usageError("unknown link command '" + cmd + "' (" + kCommands + ")");
-    if (cmd == "push" && args.positional().size() != 2)
-        return usageError("push takes one file, a machine file or a program file: k528 link --port DEVICE push FILE");
+    // push --machine NAME without a file: the database machine as released.
+    const bool pushReleased = cmd == "push" && args.positional().size() == 1 && args.value("--machine");
+    if (cmd == "push" && args.positional().size() != 2 && !pushReleased)
+        return usageError("push takes one file, a machine file or a program file: k528 link --port DEVICE push FILE "
+                          "(or --machine NAME: the database machine as released)");
+    if ((args.value("--db") || args.value("--machine")) && cmd != "push" && cmd != "pull")
+        return usageError("--db and --machine are options of link push and pull (the transfer log)");
     if (cmd == "clear" && (args.positional().size() != 2 || (args.positional()[1] != "c" && args.positional()[1] != "r")))
         return usageError("clear takes the area: k528 link --port DEVICE clear c|r");
     if (cmd != "push" && cmd != "clear" && args.positional().size() != 1)
@@ -311,7 +328,7 @@ int runLinkQt(std::span<const std::string> argv) {
     std::string pushText;
     bool pushMachine = false;
     link::PushPlan plan;
-    if (cmd == "push") {
+    if (cmd == "push" && !pushReleased) {
         const std::string& path = args.positional()[1];
         std::string error;
         if (!util::readInputFile(path, pushText, error)) {
@@ -329,6 +346,23 @@ int runLinkQt(std::span<const std::string> argv) {
                 return ExitInputErrors;
             }
         }
+    }
+    // Push and pull go on record (docs/database.md, *Transfers on record*);
+    // a log that must be kept and cannot be, or unreleased programs of a
+    // database machine, send nothing.
+    std::optional<TransferRecord> record;
+    if (cmd == "push" || cmd == "pull") {
+        // The line as a database machine's `line` names it (cli.md).
+        const std::string lineText =
+            isTcpLine(args) ? "tcp://" + line->port.toStdString() + "/" + std::to_string(line->address)
+                            : "serial:" + line->port.toStdString() + "?baud=" + std::to_string(line->baud) +
+                                  "&address=" + std::to_string(line->address);
+        if (!TransferRecord::open(args, lineText, record))
+            return ExitUsage;
+        if (pushReleased && !(record && record->releasedPlan(plan)))
+            return ExitUsage;
+        if (pushMachine && record && !record->mayPush(plan))
+            return ExitInputErrors;
     }
     QString error;
     linkplugin::LinkPlugin* plugin = linkplugin::find(linePlugin(args), error);
@@ -475,9 +509,15 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     if (cmd == "pull") {
         link::PullResult r;
-        if (link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
-                std::fprintf(stderr, "pull: %s\n", what.c_str());
-            }))
+        const link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
+            std::fprintf(stderr, "pull: %s\n", what.c_str());
+        });
+        if (record) {
+            if (e.kind != link::LinkError::Kind::NoAnswer)
+                record->setIdentity(controllerIdentity(l));
+            record->recordPull(l.map(), r, e);
+        }
+        if (e)
             return done(fail(e));
         const profile::MachineProfile p =
             link::pulledProfile(r, "controller", "pulled from " + line->port.toStdString());
@@ -492,14 +532,21 @@ int runLinkQt(std::span<const std::string> argv) {
         return done(ExitOk);
     }
     // push: a program file is checked against the controller first.
-    if (!pushMachine) {
+    if (!pushMachine && !pushReleased) {
         if (link::LinkError e = link::planProgramFile(l, pushText, args.positional()[1], plan))
             return done(fail(e));
+        if (record && !record->mayPush(plan))
+            return done(ExitInputErrors);
     }
     link::PushReport rep;
     const link::LinkError e = link::push(l, plan, rep, [](const std::string& what, int, int) {
         std::fprintf(stderr, "push: %s\n", what.c_str());
     });
+    if (record) {
+        if (e.kind != link::LinkError::Kind::NoAnswer)
+            record->setIdentity(controllerIdentity(l));
+        record->recordPush(l.map(), plan, rep, e);
+    }
     if (!e) {
         std::string names;
         for (const link::PushReport::Part& p : rep.parts)

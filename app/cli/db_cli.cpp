@@ -27,7 +27,9 @@
 namespace k528::cli {
 
 const char* const kDbDetails =
-    "Subcommands (each takes --db PATH; default $K528_DB, else\n"
+    "Subcommands (each takes --db LOCATION: a file path, sqlite:PATH, or a PostgreSQL URI\n"
+    "postgresql://[user@]host[:port]/dbname (postgresql:// alone: the PG* variables; the\n"
+    "password from ~/.pgpass or a service file, never in the URI); default $K528_DB, else\n"
     "$XDG_DATA_HOME/k528studio/k528.db, created with the built-in machines on first use):\n"
     "  init                         create or upgrade the database; print its schema version\n"
     "  machines [--json]            list machines: name, revision, last change, title\n"
@@ -51,6 +53,16 @@ const char* const kDbDetails =
     "  calc [OPTIONS] [--json]      C-constants of an axis from physical data (below)\n"
     "  audit [--limit N] [--machine NAME] [--json]\n"
     "                               the audit log: every write, newest first\n"
+    "  copy --to LOCATION           the whole database into an empty one, in one transaction\n"
+    "  release MACHINE L<n> [--note TEXT]\n"
+    "                               the program's current version becomes the released one:\n"
+    "                               what a push to the controller takes\n"
+    "  withdraw MACHINE L<n> [--note TEXT]\n"
+    "                               the released version is withdrawn\n"
+    "  log [MACHINE] [--since TIME] [--limit N] [--json]\n"
+    "                               the transfers to and from controllers, newest first\n"
+    "  roles [grant USER ROLE]      PostgreSQL: create the roles k528_technologist,\n"
+    "                               k528_operator, k528_viewer with their GRANTs; list members\n"
     "--allow-errors accepts cross-check errors (a deliberately faulty training machine);\n"
     "values outside their definitions are never accepted.\n"
     "calc options (speeds in mm/min of the slide; --machine supplies what is not given):\n"
@@ -161,22 +173,23 @@ bool parseLangOption(const Args& a, Lang& lang) {
 
 // "--db PATH" of the subcommand, else the default location.
 bool dbTarget(const Args& a, DbTarget& t) {
-    if (const auto p = a.value("--db")) {
-        if (p->empty()) {
-            usageError("--db needs a file path");
-            return false;
-        }
-        t.path = *p;
-        t.explicitPath = true;
-        return true;
-    }
     try {
-        t.path = db::defaultDatabasePath();
+        if (const auto p = a.value("--db")) {
+            if (p->empty()) {
+                usageError("--db needs a file path or a postgresql:// URI");
+                return false;
+            }
+            t.where = db::Location::parse(*p);
+            t.explicitPath = true;
+        } else {
+            t.where = db::defaultDatabaseLocation();
+            t.explicitPath = std::getenv("K528_DB") && *std::getenv("K528_DB");
+        }
     } catch (const db::Error& e) {
         fail(e.what());
         return false;
     }
-    t.explicitPath = std::getenv("K528_DB") && *std::getenv("K528_DB");
+    t.path = t.where.text();
     return true;
 }
 
@@ -191,24 +204,30 @@ std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate,
 
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
                                    const std::string& author, Lang lang) {
-    std::error_code ec;
-    const bool exists = fs::exists(t.path, ec);
-    if (!exists && t.explicitPath && !mayCreate) {
-        fail("no database at " + t.path.string() + " (create one with: k528 db init --db " +
-             t.path.string() + ")");
-        return std::nullopt;
-    }
-    if (!exists && !t.explicitPath) {
-        fs::create_directories(t.path.parent_path(), ec);
-        if (ec) {
-            fail("cannot create the folder " + t.path.parent_path().string() + ": " + ec.message());
+    db::OpenOptions o;
+    o.author = author;
+    if (t.where.isFile()) {
+        const fs::path& file = t.where.file();
+        std::error_code ec;
+        const bool exists = fs::exists(file, ec);
+        if (!exists && t.explicitPath && !mayCreate) {
+            fail("no database at " + file.string() + " (create one with: k528 db init --db " +
+                 file.string() + ")");
             return std::nullopt;
         }
+        if (!exists && !t.explicitPath) {
+            fs::create_directories(file.parent_path(), ec);
+            if (ec) {
+                fail("cannot create the folder " + file.parent_path().string() + ": " + ec.message());
+                return std::nullopt;
+            }
+        }
+    } else {
+        // A server's database that holds nothing yet gets its tables from init only.
+        o.create = mayCreate;
     }
     try {
-        db::OpenOptions o;
-        o.author = author;
-        return db::Database::open(t.path, o);
+        return db::Database::open(t.where, o);
     } catch (const db::Error& e) {
         dbFail(e, lang);
         return std::nullopt;
@@ -435,6 +454,14 @@ int runDb(std::span<const std::string> args) {
         return runDbCalc(subArgs);
     if (sub == "audit")
         return dbcli::cmdAudit(subArgs);
+    if (sub == "copy")
+        return dbcli::cmdCopy(subArgs);
+    if (sub == "release" || sub == "withdraw")
+        return dbcli::cmdRelease(subArgs, sub == "release");
+    if (sub == "log")
+        return dbcli::cmdLog(subArgs);
+    if (sub == "roles")
+        return dbcli::cmdRoles(subArgs);
     return usageError("unknown db subcommand '" + sub +
                       "' (init, machines, show, set, export, import, diff, calc, audit)");
 }

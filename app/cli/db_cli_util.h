@@ -28,7 +28,8 @@ using db::Lang;
 using profile::MachineProfile;
 
 struct DbTarget {
-    fs::path path;
+    db::Location where; // a file or a PostgreSQL database
+    fs::path path;      // where.text(), for messages
     bool explicitPath = false;
 };
 
@@ -59,7 +60,8 @@ int dbFail(const db::Error& e, Lang lang = Lang::Ru);
 
 bool parseLangOption(const Args& a, Lang& lang);
 
-// "--db PATH" of the subcommand, else the default location.
+// "--db LOCATION" of the subcommand (a path, sqlite:PATH or a postgresql://
+// URI), else the default location ($K528_DB, else the file of the data folder).
 bool dbTarget(const Args& a, DbTarget& t);
 
 // Opens the database. The default location is created on first use (with its
@@ -108,5 +110,9 @@ int cmdExport(std::span<const std::string> argv);
 int cmdImport(std::span<const std::string> argv);
 int cmdDiff(std::span<const std::string> argv);
 int cmdAudit(std::span<const std::string> argv);
+int cmdCopy(std::span<const std::string> argv);
+int cmdRelease(std::span<const std::string> argv, bool release);
+int cmdLog(std::span<const std::string> argv);
+int cmdRoles(std::span<const std::string> argv);
 
 } // namespace k528::cli::dbcli

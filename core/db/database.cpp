@@ -1,14 +1,17 @@
 // db::Database: the rules of the store, the same for every backend — what a
 // write checks, the one revision it makes and what that records, the audit
-// entry, the state at a revision rebuilt from the history. The rows are the
-// backend's (store.h; SQLite: sqlite_store.h), the revision rules
-// revisions.h's.
+// entry, the state at a revision rebuilt from the history, releases of
+// programs and the transfer log. The rows are the backend's (store.h;
+// sqlite_store.h, postgres_store.h), the revision rules revisions.h's.
 #include "db/database.h"
 
+#include "db/database_impl.h"
+#include "db/postgres_store.h"
 #include "db/revisions.h"
 #include "db/sha256.h"
 #include "db/sqlite_store.h"
 #include "profile/builtin.h"
+
 
 namespace k528::db {
 
@@ -17,25 +20,7 @@ using profile::Change;
 using profile::DiffSection;
 using profile::MachineProfile;
 
-struct Database::Impl {
-    std::unique_ptr<Store> store;
-    Clock clock;
-};
-
 namespace {
-
-MachineRow requireMachine(Store& s, std::string_view name) {
-    auto r = s.findMachine(name);
-    if (!r) {
-        std::string known;
-        for (const MachineInfo& m : s.machines())
-            known += (known.empty() ? "" : ", ") + m.name;
-        throw Error(ErrorKind::NoMachine,
-                    "no machine \"" + std::string(name) + "\" in " + s.path().string() +
-                        " (machines: " + (known.empty() ? "none" : known) + ")");
-    }
-    return *r;
-}
 
 // The machine's row: inserted for a new machine, updated (name, title,
 // revision) otherwise. Returns its id.
@@ -59,7 +44,7 @@ std::int64_t writeMachineRow(Store& s, const std::optional<MachineRow>& row,
 // state was `old`, as one revision, inside the caller's write transaction.
 SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& row,
                  const MachineProfile* old, const MachineProfile& neu, const WriteOptions& o) {
-    const std::string author = o.author.empty() ? defaultAuthor() : o.author;
+    const std::string author = authorOf(s, o.author);
     SaveResult result;
     result.findings = revision::checkWrite(old, neu, o.allowErrors);
     result.changes = revision::computeChanges(old, neu);
@@ -104,6 +89,7 @@ SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& 
     s.insertAudit(AuditEntry{0, at, author, o.action, neu.name, revision,
                              summary + " (" + std::to_string(result.changes.size()) +
                                  (result.changes.size() == 1 ? " change)" : " changes)")});
+    s.notifyChange(neu.name, revision);
     return result;
 }
 
@@ -158,12 +144,17 @@ Database& Database::operator=(Database&&) noexcept = default;
 Database::~Database() = default;
 
 Database Database::open(const fs::path& path, const OpenOptions& options) {
+    return open(Location(path), options);
+}
+
+Database Database::open(const Location& where, const OpenOptions& options) {
     auto impl = std::make_unique<Impl>();
     impl->clock = options.clock ? options.clock : systemClock();
-    const std::string author = options.author.empty() ? defaultAuthor() : options.author;
+    impl->location = where;
+    const std::string author = options.author;
     const Clock clock = impl->clock;
     // A new database gets the built-in machines in the transaction that creates it.
-    impl->store = SqliteStore::open(path, options, [&](Store& s) {
+    const Fill seed = [&](Store& s) {
         std::vector<std::string> seeded;
         if (!options.seedBuiltins)
             return seeded;
@@ -176,8 +167,28 @@ Database Database::open(const fs::path& path, const OpenOptions& options) {
             seeded.push_back(name);
         }
         return seeded;
-    });
+    };
+    if (where.backend() == Backend::Postgres)
+        impl->store = PostgresStore::open(where, options, seed);
+    else
+        impl->store = SqliteStore::open(where.file(), options, seed);
     return Database(std::move(impl));
+}
+
+const Location& Database::location() const {
+    return d_->location;
+}
+
+Backend Database::backend() const {
+    return d_->store->backend();
+}
+
+std::string Database::sessionUser() const {
+    return d_->store->sessionUser();
+}
+
+Store& Database::store() const {
+    return *d_->store;
 }
 
 const fs::path& Database::path() const {
@@ -186,10 +197,6 @@ const fs::path& Database::path() const {
 
 const OpenReport& Database::openReport() const {
     return d_->store->openReport();
-}
-
-sqlite3* Database::connection() const {
-    return d_->store->sqliteConnection();
 }
 
 ReadOnlyReason Database::readOnly() const {
@@ -240,60 +247,68 @@ SaveResult Database::createMachine(const MachineProfile& p, WriteOptions options
     if (options.action == "save")
         options.action = "create";
     Store& s = *d_->store;
-    WriteTransaction tx(s);
-    SaveResult r = write(s, d_->clock, std::nullopt, nullptr, p, options);
-    tx.commit();
-    return r;
+    return asRole(s, "creating a machine", kTechnologist, [&] {
+        WriteTransaction tx(s);
+        SaveResult r = write(s, d_->clock, std::nullopt, nullptr, p, options);
+        tx.commit();
+        return r;
+    });
 }
 
 SaveResult Database::saveMachine(std::string_view name, const MachineProfile& p,
                                  WriteOptions options) {
     Store& s = *d_->store;
-    WriteTransaction tx(s);
-    const auto row = requireMachine(s, name);
-    requireRevision(row, options, true);
-    const MachineProfile old = s.loadCurrent(row);
-    SaveResult r = write(s, d_->clock, row, &old, p, options);
-    tx.commit();
-    return r;
+    return asRole(s, "changing a machine", kTechnologist, [&] {
+        WriteTransaction tx(s);
+        const auto row = requireMachine(s, name);
+        requireRevision(row, options, true);
+        const MachineProfile old = s.loadCurrent(row);
+        SaveResult r = write(s, d_->clock, row, &old, p, options);
+        tx.commit();
+        return r;
+    });
 }
 
 SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOptions options) {
     if (options.action == "save")
         options.action = "set";
     Store& s = *d_->store;
-    WriteTransaction tx(s);
-    const auto row = requireMachine(s, name);
-    requireRevision(row, options, false);
-    const MachineProfile old = s.loadCurrent(row);
-    MachineProfile neu = old;
-    try {
-        edit.applyTo(neu);
-    } catch (const profile::SettingError& e) {
-        throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
-    } catch (const std::out_of_range& e) {
-        throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
-    }
-    if (options.summary.empty())
-        options.summary = "set " + edit.describe();
-    SaveResult r = write(s, d_->clock, row, &old, neu, options);
-    tx.commit();
-    return r;
+    return asRole(s, "changing a machine", kTechnologist, [&] {
+        WriteTransaction tx(s);
+        const auto row = requireMachine(s, name);
+        requireRevision(row, options, false);
+        const MachineProfile old = s.loadCurrent(row);
+        MachineProfile neu = old;
+        try {
+            edit.applyTo(neu);
+        } catch (const profile::SettingError& e) {
+            throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
+        } catch (const std::out_of_range& e) {
+            throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
+        }
+        if (options.summary.empty())
+            options.summary = "set " + edit.describe();
+        SaveResult r = write(s, d_->clock, row, &old, neu, options);
+        tx.commit();
+        return r;
+    });
 }
 
 void Database::removeMachine(std::string_view name, WriteOptions options) {
-    const std::string author = options.author.empty() ? defaultAuthor() : options.author;
     Store& s = *d_->store;
-    WriteTransaction tx(s);
-    const auto row = requireMachine(s, name);
-    s.deleteMachine(row.id);
-    s.insertAudit(AuditEntry{0, formatTimestamp(d_->clock()), author, "delete", row.info.name,
-                             row.info.revision,
-                             options.summary.empty() ? "machine deleted with its " +
-                                                           std::to_string(row.info.revision) +
-                                                           " revisions"
-                                                     : options.summary});
-    tx.commit();
+    const std::string author = authorOf(s, options.author);
+    asRole(s, "deleting a machine", kTechnologist, [&] {
+        WriteTransaction tx(s);
+        const auto row = requireMachine(s, name);
+        s.deleteMachine(row.id);
+        s.insertAudit(AuditEntry{0, formatTimestamp(d_->clock()), author, "delete", row.info.name,
+                                 row.info.revision,
+                                 options.summary.empty() ? "machine deleted with its " +
+                                                               std::to_string(row.info.revision) +
+                                                               " revisions"
+                                                         : options.summary});
+        tx.commit();
+    });
 }
 
 std::vector<RevisionInfo> Database::revisions(std::string_view name) const {

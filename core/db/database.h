@@ -1,8 +1,11 @@
-// The SQLite store of K528 Studio: machines with their constants C1..C152,
+// The database of K528 Studio — an SQLite file on one PC, or a PostgreSQL
+// database a shop's PCs share: machines with their constants C1..C152,
 // R-parameter presets, programs (with revisions and SHA-256 checksums),
 // technological messages, PLC message texts and simulation settings; every
 // change as a revision with its author, time and old -> new values; an audit
-// log of every write. docs/database.md describes the schema and the rules.
+// log of every write; programs released for the controllers; every transfer
+// to and from a controller on record. docs/database.md describes the schema
+// and the rules.
 //
 //   db::Database d = db::Database::open(db::defaultDatabasePath());
 //   profile::MachineProfile p = d.loadMachine("grinder-205");
@@ -25,7 +28,11 @@
 //   - Every write is validated: values against their definitions (always),
 //     the manual's cross-checks of the constants (errors reject the write
 //     unless the machine already had that error or the caller allows errors).
-//   - One Database is one SQLite connection: use it from one thread at a
+//   - PostgreSQL (a Location "postgresql://…"): the same schema, rules and
+//     results; every write serialised by the server (an advisory lock), the
+//     other sessions told at commit (NOTIFY); the transfer log's user and a
+//     release's author are the server's current_user. docs/database.md.
+//   - One Database is one connection: use it from one thread at a
 //     time. Several connections of one process to one file are safe (SQLite
 //     shares its descriptors and locks), but a process should hold one
 //     connection per file for its lifetime (the desktop: ShopDatabase) rather
@@ -42,6 +49,7 @@
 #pragma once
 
 #include "db/error.h"
+#include "db/location.h"
 #include "profile/diff.h"
 #include "profile/profile.h"
 #include "profile/validate.h"
@@ -57,9 +65,9 @@
 #include <string_view>
 #include <vector>
 
-struct sqlite3;
-
 namespace k528::db {
+
+class Store;
 
 // PRAGMA application_id of our files: "K528" in ASCII.
 inline constexpr std::int32_t kApplicationId = 0x4B353238;
@@ -74,12 +82,20 @@ std::string formatTimestamp(std::int64_t unixSeconds);
 // password database, else "unknown").
 std::string defaultAuthor();
 
-// One step of the schema: run inside the migration transaction.
+// One step of the schema: run inside the migration transaction. `sql` is
+// the same for both backends (written in SQLite's words; PostgreSQL runs it
+// as postgresSchemaSql() renders it), the rest is what only one of them
+// needs (triggers, row security).
 struct Migration {
-    int version;            // the user_version after this step (1, 2, ...)
+    int version;            // the schema version after this step (1, 2, ...)
     std::string_view title; // for the audit log
     std::string_view sql;   // statements
+    std::string_view sqliteOnly = {};
+    std::string_view postgresOnly = {};
 };
+// `sql` as PostgreSQL runs it: INTEGER columns are BIGINT (SQLite's integers
+// are 64-bit), an INTEGER PRIMARY KEY an identity column, no WITHOUT ROWID.
+std::string postgresSchemaSql(std::string_view sql);
 // The schema's steps, in order; the last one's version is the current schema.
 std::span<const Migration> schemaMigrations();
 int latestSchemaVersion();
@@ -96,6 +112,8 @@ struct OpenOptions {
     bool readOnly = false;
     // The schema steps; tests pass a longer list to exercise a migration.
     std::span<const Migration> migrations = schemaMigrations();
+    // Refuse a database that is not empty (Error Invalid): a copy's target.
+    bool requireEmpty = false;
 };
 
 // What open() found and did.
@@ -152,7 +170,7 @@ struct AuditEntry {
 };
 
 struct WriteOptions {
-    std::string author;          // default: defaultAuthor()
+    std::string author;          // default: defaultAuthor() (PostgreSQL: the session's user)
     std::string summary;         // recorded with the revision; default describes the write
     std::string action = "save"; // audit action
     // Accept cross-check errors of the constants (a trainer's deliberately
@@ -193,19 +211,104 @@ struct Edit {
     void applyTo(profile::MachineProfile& p) const;
 };
 
+// The state of a program of a machine. Draft: its current version was never
+// released (or was changed since); Released: the current version is the
+// released one; Withdrawn: its last release was withdrawn (or the program
+// was deleted from the machine since).
+enum class ProgramState { Draft, Released, Withdrawn };
+std::string_view programStateName(ProgramState s); // "draft", "released", "withdrawn"
+
+// One release or withdrawal of a version of a program.
+struct ReleaseEntry {
+    int number = 0;
+    int revision = 0;    // the version: the machine revision that stored its text
+    std::string sha256;  // of that text
+    bool released = true; // false: withdrawn
+    std::string at;
+    std::string author;  // PostgreSQL: the database user (current_user)
+    std::string note;
+    friend bool operator==(const ReleaseEntry&, const ReleaseEntry&) = default;
+};
+
+// A program's state now, and what a push to a controller takes.
+struct ProgramRelease {
+    int number = 0;
+    ProgramState state = ProgramState::Draft;
+    int revision = 0;                // its current version (0: deleted since its release)
+    std::optional<ReleaseEntry> last; // the newest release or withdrawal
+    // The version a push takes (the released one, also when a newer draft
+    // exists); nullopt when nothing of it is released.
+    std::optional<int> releasedRevision;
+    std::optional<std::string> releasedSha256;
+};
+
+// One part of what moved in a transfer.
+struct TransferItem {
+    std::string kind;  // "program", "c" (the C block), "r" (the R block), "messages"
+    int number = 0;    // the program's number; 0 for blocks
+    std::string crc32; // "1a2b3c4d": CRC-32 of the bytes as the controller checks them
+    std::optional<std::string> sha256; // of a program's text
+    std::string state; // "new" (written and read back), "as-it-was", "in-doubt", "read" (pulled)
+    friend bool operator==(const TransferItem&, const TransferItem&) = default;
+};
+
+// A push to or a pull from a controller, on record.
+struct TransferEntry {
+    std::int64_t id = 0;
+    std::string at;
+    std::string user;       // the OS user; PostgreSQL: the database user (current_user)
+    std::string host;       // the PC
+    std::string machine;    // the database's machine ("" when none was named)
+    int revision = 0;       // its revision pushed, or kept from a pull (0: none)
+    std::string controller; // the line and station, and what the controller said it is
+    std::string direction;  // "push", "pull"
+    std::string result;     // "ok", "partial" (some parts new), "failed"
+    std::string detail;     // what the link said
+    std::vector<TransferItem> items;
+    friend bool operator==(const TransferEntry&, const TransferEntry&) = default;
+};
+
+struct TransferFilter {
+    std::string machine;   // "" every machine
+    std::string since;     // timestamps from this one on ("2024-05-17", "2024-05-17T08:30:00Z")
+    int limit = 0;         // the newest N (0 all)
+};
+
+// A role of the server (PostgreSQL) and who has it.
+struct RoleInfo {
+    std::string role;   // "k528_technologist", "k528_operator", "k528_viewer"
+    std::string may;    // what it may, in words
+    std::vector<std::string> members;
+};
+
+// What copyTo() copied.
+struct CopyReport {
+    std::string target;
+    std::int64_t machines = 0, revisions = 0, programVersions = 0, releases = 0, messages = 0,
+                 audit = 0, transfers = 0, rows = 0;
+};
+
 class Database {
 public:
-    // Opens (and when needed creates or migrates) the database at `path`.
-    // Throws Error: Io, Foreign, Corrupt, TooNew, Busy.
+    // Opens (and when needed creates or migrates) the database at `where`
+    // (an SQLite file or a PostgreSQL database). Throws Error: Io, Foreign,
+    // Corrupt, TooNew, Busy, Denied.
+    static Database open(const Location& where, const OpenOptions& options = {});
+    // An SQLite file.
     static Database open(const std::filesystem::path& path, const OpenOptions& options = {});
 
     Database(Database&&) noexcept;
     Database& operator=(Database&&) noexcept;
     ~Database();
 
+    const Location& location() const;
+    Backend backend() const;
+    // The SQLite file; for PostgreSQL the URI as a path (for messages).
     const std::filesystem::path& path() const;
     const OpenReport& openReport() const;
     int schemaVersion() const;
+    // The server's user of this session (PostgreSQL current_user); "" for SQLite.
+    std::string sessionUser() const;
 
     // ReadOnlyReason::None when writes are possible.
     ReadOnlyReason readOnly() const;
@@ -254,13 +357,60 @@ public:
 
     std::vector<AuditEntry> audit(int limit = 0, std::string_view machine = {}) const;
 
-    // Runs PRAGMA integrity_check and foreign_key_check: "" when fine.
+    // Programs released for the controllers. release: the program's current
+    // version becomes the released one (Error NoRevision: no such program;
+    // an already released version is returned as it is, nothing written);
+    // withdraw: the released version is withdrawn (Invalid when none is).
+    // Both audited; on PostgreSQL they need the role k528_technologist.
+    ReleaseEntry releaseProgram(std::string_view name, int number, const std::string& note = {},
+                                WriteOptions options = {});
+    ReleaseEntry withdrawProgram(std::string_view name, int number, const std::string& note = {},
+                                 WriteOptions options = {});
+    // Every program of the machine now (with those released and deleted
+    // since), by number.
+    std::vector<ProgramRelease> programReleases(std::string_view name) const;
+    // Releases and withdrawals of one program, newest first.
+    std::vector<ReleaseEntry> releaseHistory(std::string_view name, int number) const;
+
+    // The transfer log. record: at (the clock), user (defaultAuthor(); on
+    // PostgreSQL the server's current_user) and host (the PC) are filled in
+    // when empty; returns the entry as stored. transfers: newest first.
+    TransferEntry recordTransfer(TransferEntry entry);
+    std::vector<TransferEntry> transfers(const TransferFilter& filter = {}) const;
+
+    // Whether another connection (another process or PC) committed since the
+    // last call, and the machines it named (PostgreSQL: LISTEN/NOTIFY and
+    // one short round trip; SQLite: PRAGMA data_version, names none: compare
+    // machines()). The first call only starts watching.
+    bool changedElsewhere(std::vector<std::string>* machines = nullptr);
+
+    // Copies the whole database (machines, revisions, programs, releases,
+    // message history, audit, transfers) into the empty database at
+    // `target`, in one transaction of the target: all or nothing. Throws
+    // Error (Invalid: the target is not empty).
+    CopyReport copyTo(const Location& target, const OpenOptions& targetOptions = {}) const;
+
+    // PostgreSQL's roles: k528_viewer (read), k528_operator (a viewer that
+    // records transfers and messages, and pushes released programs),
+    // k528_technologist (an operator that edits machines, releases programs
+    // and pushes drafts where the machine allows). setUpRoles creates the
+    // missing roles and grants them what they may on this database (the
+    // owner of the tables with CREATEROLE runs it; again after an upgrade);
+    // grantRole makes `user` a member ("technologist" or "k528_technologist").
+    // SQLite has one user, who may everything: Error(Invalid).
+    std::vector<RoleInfo> setUpRoles();
+    void grantRole(const std::string& user, const std::string& role);
+    std::vector<RoleInfo> roles() const;
+    // Whether this session may do what `role` may (SQLite: always).
+    bool mayActAs(std::string_view role) const;
+
+    // Runs PRAGMA integrity_check and foreign_key_check (SQLite), the
+    // checksums of the stored programs (both): "" when fine.
     std::string checkIntegrity() const;
 
-    // The SQLite connection, for the other stores of core/db that share this
-    // file and its rules (db::MessageLog); nullptr on another backend; not for
-    // use outside core/db.
-    sqlite3* connection() const;
+    // The storage, for the other parts of core/db on this database
+    // (db::MessageLog); not for use outside core/db.
+    Store& store() const;
 
 private:
     struct Impl;

@@ -10,7 +10,7 @@ std::string_view errorKindName(ErrorKind k) {
     // In the order of ErrorKind.
     static constexpr std::string_view kNames[] = {
         "io",          "foreign",     "corrupt",  "too-new", "busy",      "no-machine",
-        "machine-exists", "no-revision", "conflict", "invalid", "read-only", "sql"};
+        "machine-exists", "no-revision", "conflict", "invalid", "read-only", "sql", "denied"};
     const auto i = static_cast<std::size_t>(k);
     return i < std::size(kNames) ? kNames[i] : std::string_view();
 }
@@ -68,5 +68,14 @@ ReadOnlyError::ReadOnlyError(fs::path path, ReadOnlyReason reason, ReadOnlyRefus
 std::string ReadOnlyError::text(Lang lang) const {
     return readOnlyMessage(path_, reason_, refusal_, lang);
 }
+
+DeniedError::DeniedError(std::string action, std::string role, std::string user,
+                         std::string userRoles, const std::string& serverMessage)
+    : Error(ErrorKind::Denied, "permission denied: " + action + " needs the role " + role +
+                                   " (the database user " + user + " has " +
+                                   (userRoles.empty() ? std::string("no K528 Studio role")
+                                                      : userRoles) +
+                                   "; the server said: " + serverMessage + "); nothing was written"),
+      action_(std::move(action)), role_(std::move(role)) {}
 
 } // namespace k528::db

@@ -28,7 +28,8 @@ enum class ErrorKind {
     Conflict,      // the machine changed since the caller read it (expected revision)
     Invalid,       // a value, an edit or a file is rejected (see ValidationError)
     ReadOnly,      // a write to a database this process may only read (see ReadOnlyError)
-    Sql,           // an unexpected SQLite error (a bug: please report it)
+    Sql,           // an unexpected database error (a bug: please report it)
+    Denied,        // the database's server refused: this user's roles do not allow it (see DeniedError)
 };
 
 std::string_view errorKindName(ErrorKind k); // "io", "foreign", ...
@@ -80,6 +81,20 @@ private:
     std::filesystem::path path_;
     ReadOnlyReason reason_;
     ReadOnlyRefusal refusal_;
+};
+
+// An action the server refused for this user (PostgreSQL's privileges):
+// names the action and the role that may do it ("releasing a program needs
+// the role k528_technologist; ivanov has k528_operator").
+class DeniedError : public Error {
+public:
+    DeniedError(std::string action, std::string role, std::string user, std::string userRoles,
+                const std::string& serverMessage);
+    const std::string& action() const { return action_; }
+    const std::string& role() const { return role_; }
+
+private:
+    std::string action_, role_;
 };
 
 // A write rejected by validation: values outside their definitions, or

@@ -1,11 +1,11 @@
 #include "db/message_log.h"
 
-#include "db/sqlite.h"
+#include "db/database_impl.h"
+#include "db/sql.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
-#include <sqlite3.h>
 
 namespace k528::db {
 
@@ -51,24 +51,23 @@ std::string formatDayMs(std::int64_t unixMs) {
 
 namespace {
 
-// The code as SQL computes it, for searching.
+// The code as SQL computes it, for searching (in the SQL both backends speak).
 constexpr std::string_view kCodeSql =
-    "(CASE source WHEN 'plc-alarm' THEN 'A' || printf('%02d', number) "
-    "WHEN 'plc-system' THEN 'S' || printf('%02d', number) "
-    "WHEN 'plc-work' THEN 'W' || printf('%02d', number) "
-    "WHEN 'program' THEN '#' || number ELSE CAST(number AS TEXT) END)";
+    "(CASE source WHEN 'plc-alarm' THEN 'A' WHEN 'plc-system' THEN 'S' WHEN 'plc-work' THEN 'W' "
+    "WHEN 'program' THEN '#' ELSE '' END || CASE WHEN source IN ('plc-alarm', 'plc-system', "
+    "'plc-work') AND number < 10 THEN '0' ELSE '' END || CAST(number AS TEXT))";
 
 constexpr std::string_view kColumns =
     "id, run_id, seq, machine, machine_ms, day_ms, source, number, text, text_en, program, line, "
     "cleared_ms, ack_ms, ack_day_ms, ack_how";
 
-std::optional<std::int64_t> optInt(const sql::Stmt& q, int col) {
+std::optional<std::int64_t> optInt(const sql::Query& q, int col) {
     if (q.isNull(col))
         return std::nullopt;
     return q.i64(col);
 }
 
-MessageRecord readRecord(const sql::Stmt& q) {
+MessageRecord readRecord(const sql::Query& q) {
     MessageRecord m;
     m.id = q.i64(0);
     m.runId = q.i64(1);
@@ -141,16 +140,19 @@ Where makeWhere(const MessageFilter& f, std::int64_t beforeId) {
     if (f.toDayMs)
         parts.push_back("day_ms <= " + integer(*f.toDayMs));
     if (!f.search.empty()) {
-        const std::string p = text(likePattern(f.search));
-        parts.push_back("(text LIKE " + p + " ESCAPE '\\' OR text_en LIKE " + p +
-                        " ESCAPE '\\' OR " + std::string(kCodeSql) + " LIKE " + p + " ESCAPE '\\')");
+        // lower() on both sides: case-insensitive as SQLite's LIKE is, on
+        // PostgreSQL too (whose LIKE is not).
+        const std::string p = "lower(" + text(likePattern(f.search)) + ")";
+        parts.push_back("(lower(text) LIKE " + p + " ESCAPE '\\' OR lower(text_en) LIKE " + p +
+                        " ESCAPE '\\' OR lower(" + std::string(kCodeSql) + ") LIKE " + p +
+                        " ESCAPE '\\')");
     }
     for (std::size_t i = 0; i < parts.size(); ++i)
         w.sql += (i == 0 ? " WHERE " : " AND ") + parts[i];
     return w;
 }
 
-void bindWhere(sql::Stmt& q, const Where& w) {
+void bindWhere(sql::Query& q, const Where& w) {
     std::size_t t = 0, k = 0;
     for (std::size_t i = 0; i < w.isText.size(); ++i) {
         if (w.isText[i])
@@ -180,9 +182,9 @@ std::string optField(const std::optional<std::int64_t>& v) {
 
 struct MessageLog::Impl {
     Database& db;
-    sql::StatementCache st;
-    explicit Impl(Database& d) : db(d), st(d.connection()) {}
-    sqlite3* c() const { return db.connection(); }
+    Store& store;
+    explicit Impl(Database& d) : db(d), store(d.store()) {}
+    sql::Query& st(std::string_view text) { return store.connection()(text); }
 };
 
 MessageLog::MessageLog(Database& db) : d_(std::make_unique<Impl>(db)) {
@@ -196,21 +198,27 @@ MessageLog::~MessageLog() = default;
 std::int64_t MessageLog::beginRun(std::string_view machine, std::int64_t dayMs,
                                   std::string author) {
     d_->db.requireWritable();
-    auto& q = d_->st("INSERT INTO message_runs (machine, started_at, started_ms, author) "
-                     "VALUES (?1, ?2, ?3, ?4)");
-    q.bind(1, machine)
-        .bind(2, formatDayMs(dayMs))
-        .bind(3, dayMs)
-        .bind(4, author.empty() ? defaultAuthor() : author);
-    q.run();
-    return sqlite3_last_insert_rowid(d_->c());
+    Store& s = d_->store;
+    return asRole(s, "recording messages", kOperator, [&] {
+        auto& q = d_->st("INSERT INTO message_runs (machine, started_at, started_ms, author) "
+                         "VALUES (?1, ?2, ?3, ?4) RETURNING id");
+        q.bind(1, machine)
+            .bind(2, formatDayMs(dayMs))
+            .bind(3, dayMs)
+            .bind(4, authorOf(s, author));
+        if (!q.step())
+            throw Error(ErrorKind::Sql, d_->db.path().string() + ": the new run has no id");
+        const std::int64_t id = q.i64(0);
+        q.reset();
+        return id;
+    });
 }
 
 void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events) {
     if (events.empty())
         return;
     d_->db.requireWritable();
-    sqlite3* c = d_->c();
+    Store& s = d_->store;
     auto& run = d_->st("SELECT machine FROM message_runs WHERE id = ?1");
     run.bind(1, runId);
     if (!run.step())
@@ -218,68 +226,73 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
                                             std::to_string(runId) + "; nothing was written");
     const std::string machine = run.text(0);
     run.reset();
-    try {
-        sql::exec(c, "BEGIN IMMEDIATE");
-    } catch (const Error& e) {
-        if (e.kind() != ErrorKind::Busy)
-            throw;
-        throw Error(ErrorKind::Busy, d_->db.path().string() +
-                                         ": another process kept the database locked longer "
-                                         "than the busy timeout; the messages were not written");
-    }
-    try {
-        for (const MessageEvent& e : events) {
-            const std::string which = "message event " + std::to_string(e.seq) + " of run " +
-                                      std::to_string(runId);
-            if (e.kind == MessageEvent::Kind::Raised) {
-                const MessageRecord& m = e.message;
-                auto& q = d_->st("INSERT INTO message_history (run_id, seq, machine, machine_ms, "
-                                 "day_ms, source, number, text, text_en, program, line) VALUES "
-                                 "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
-                q.bind(1, runId)
-                    .bind(2, e.seq)
-                    .bind(3, machine)
-                    .bind(4, e.machineMs)
-                    .bind(5, e.dayMs)
-                    .bind(6, messageSourceName(m.source))
-                    .bind(7, m.number)
-                    .bind(8, m.text)
-                    .bind(9, m.textEn.empty() ? m.text : m.textEn)
-                    .bind(10, m.program)
-                    .bind(11, m.line);
-                q.run();
-                continue;
-            }
-            const bool cleared = e.kind == MessageEvent::Kind::Cleared;
-            auto& q = cleared ? d_->st("UPDATE message_history SET cleared_ms = ?3 WHERE "
-                                       "run_id = ?1 AND seq = ?2 AND cleared_ms IS NULL")
-                              : d_->st("UPDATE message_history SET ack_ms = ?3, ack_day_ms = ?4, "
-                                       "ack_how = ?5 WHERE run_id = ?1 AND seq = ?2 AND "
-                                       "ack_ms IS NULL");
-            q.bind(1, runId).bind(2, e.seq).bind(3, e.machineMs);
-            if (!cleared) {
-                if (e.how.empty())
-                    throw Error(ErrorKind::Invalid, which + ": acknowledged without saying how");
-                q.bind(4, e.dayMs).bind(5, e.how);
-            }
-            q.run();
-            if (sqlite3_changes(c) == 0) {
-                auto& known = d_->st("SELECT 1 FROM message_history WHERE run_id = ?1 AND seq = ?2");
-                known.bind(1, runId).bind(2, e.seq);
-                const bool exists = known.step();
-                known.reset();
-                if (!exists)
-                    throw Error(ErrorKind::Invalid, which + ": no such message was raised");
-            }
+    asRole(s, "recording messages", kOperator, [&] {
+        try {
+            s.beginWrite();
+        } catch (const Error& e) {
+            if (e.kind() != ErrorKind::Busy)
+                throw;
+            throw Error(ErrorKind::Busy, d_->db.path().string() +
+                                             ": another process kept the database locked longer "
+                                             "than the busy timeout; the messages were not written");
         }
-        sql::exec(c, "COMMIT");
-    } catch (const Error& e) {
-        sql::resetBusyStatements(c);
-        sqlite3_exec(c, "ROLLBACK", nullptr, nullptr, nullptr);
-        throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
-                                  "; none of the batch's " + std::to_string(events.size()) +
-                                  " events was written");
-    }
+        try {
+            for (const MessageEvent& e : events) {
+                const std::string which = "message event " + std::to_string(e.seq) + " of run " +
+                                          std::to_string(runId);
+                if (e.kind == MessageEvent::Kind::Raised) {
+                    const MessageRecord& m = e.message;
+                    auto& q = d_->st("INSERT INTO message_history (run_id, seq, machine, machine_ms, "
+                                     "day_ms, source, number, text, text_en, program, line) VALUES "
+                                     "(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11)");
+                    q.bind(1, runId)
+                        .bind(2, e.seq)
+                        .bind(3, machine)
+                        .bind(4, e.machineMs)
+                        .bind(5, e.dayMs)
+                        .bind(6, messageSourceName(m.source))
+                        .bind(7, m.number)
+                        .bind(8, m.text)
+                        .bind(9, m.textEn.empty() ? m.text : m.textEn)
+                        .bind(10, m.program)
+                        .bind(11, m.line);
+                    q.run();
+                    continue;
+                }
+                const bool cleared = e.kind == MessageEvent::Kind::Cleared;
+                auto& q = cleared ? d_->st("UPDATE message_history SET cleared_ms = ?3 WHERE "
+                                           "run_id = ?1 AND seq = ?2 AND cleared_ms IS NULL")
+                                  : d_->st("UPDATE message_history SET ack_ms = ?3, ack_day_ms = ?4, "
+                                           "ack_how = ?5 WHERE run_id = ?1 AND seq = ?2 AND "
+                                           "ack_ms IS NULL");
+                q.bind(1, runId).bind(2, e.seq).bind(3, e.machineMs);
+                if (!cleared) {
+                    if (e.how.empty())
+                        throw Error(ErrorKind::Invalid, which + ": acknowledged without saying how");
+                    q.bind(4, e.dayMs).bind(5, e.how);
+                }
+                q.step();
+                const std::int64_t changed = q.changes();
+                q.reset();
+                if (changed == 0) {
+                    auto& known = d_->st("SELECT 1 FROM message_history WHERE run_id = ?1 AND seq = ?2");
+                    known.bind(1, runId).bind(2, e.seq);
+                    const bool exists = known.step();
+                    known.reset();
+                    if (!exists)
+                        throw Error(ErrorKind::Invalid, which + ": no such message was raised");
+                }
+            }
+            s.commit();
+        } catch (const Error& e) {
+            s.rollback();
+            if (e.kind() == ErrorKind::Denied)
+                throw;
+            throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
+                                      "; none of the batch's " + std::to_string(events.size()) +
+                                      " events was written");
+        }
+    });
 }
 
 std::int64_t MessageLog::count(const MessageFilter& f) const {
@@ -320,13 +333,19 @@ std::vector<MessageRecord> MessageLog::byIds(std::span<const std::int64_t> ids) 
 
 void MessageLog::forEach(const MessageFilter& f,
                          const std::function<bool(const MessageRecord&)>& each) const {
-    const Where w = makeWhere(f, 0);
-    sql::Stmt q(d_->c(), "SELECT " + std::string(kColumns) + " FROM message_history" + w.sql +
-                             " ORDER BY id DESC");
-    bindWhere(q, w);
-    while (q.step())
-        if (!each(readRecord(q)))
-            break;
+    // A page at a time (keyset), so that no statement stays open across the
+    // caller's work and PostgreSQL does not hold every row at once.
+    constexpr int kPage = 1000;
+    std::int64_t before = 0;
+    for (;;) {
+        const auto rows = page(f, before, kPage);
+        for (const MessageRecord& m : rows)
+            if (!each(m))
+                return;
+        if (rows.size() < static_cast<std::size_t>(kPage))
+            return;
+        before = rows.back().id;
+    }
 }
 
 std::string MessageLog::csvHeader() {

@@ -4,6 +4,8 @@
 // the path from N-1 in tests/db/test_schema.cpp.
 #include "db/database.h"
 
+#include <algorithm>
+
 namespace k528::db {
 
 namespace {
@@ -61,20 +63,6 @@ CREATE TABLE c_values (
     value      INTEGER NOT NULL,
     PRIMARY KEY (machine_id, number)
 ) WITHOUT ROWID;
-
-CREATE TRIGGER c_values_range_insert BEFORE INSERT ON c_values
-WHEN NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
-                       AND (SELECT max_value FROM c_definitions WHERE number = NEW.number)
-BEGIN
-    SELECT RAISE(ABORT, 'C-parameter value outside the range of its definition');
-END;
-
-CREATE TRIGGER c_values_range_update BEFORE UPDATE OF value ON c_values
-WHEN NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
-                       AND (SELECT max_value FROM c_definitions WHERE number = NEW.number)
-BEGIN
-    SELECT RAISE(ABORT, 'C-parameter value outside the range of its definition');
-END;
 
 CREATE TABLE r_values (
     machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
@@ -166,6 +154,38 @@ CREATE TABLE audit (
 );
 )SQL";
 
+// A C value outside its definition's range is refused by the database too.
+constexpr std::string_view kSchemaV1Sqlite = R"SQL(
+CREATE TRIGGER c_values_range_insert BEFORE INSERT ON c_values
+WHEN NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
+                       AND (SELECT max_value FROM c_definitions WHERE number = NEW.number)
+BEGIN
+    SELECT RAISE(ABORT, 'C-parameter value outside the range of its definition');
+END;
+
+CREATE TRIGGER c_values_range_update BEFORE UPDATE OF value ON c_values
+WHEN NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
+                       AND (SELECT max_value FROM c_definitions WHERE number = NEW.number)
+BEGIN
+    SELECT RAISE(ABORT, 'C-parameter value outside the range of its definition');
+END;
+)SQL";
+
+constexpr std::string_view kSchemaV1Postgres = R"SQL(
+CREATE FUNCTION c_values_range() RETURNS trigger LANGUAGE plpgsql AS $$
+BEGIN
+    IF NEW.value NOT BETWEEN (SELECT min_value FROM c_definitions WHERE number = NEW.number)
+                         AND (SELECT max_value FROM c_definitions WHERE number = NEW.number) THEN
+        RAISE EXCEPTION 'C-parameter value outside the range of its definition'
+            USING ERRCODE = 'check_violation';
+    END IF;
+    RETURN NEW;
+END $$;
+
+CREATE TRIGGER c_values_range BEFORE INSERT OR UPDATE OF value ON c_values
+FOR EACH ROW EXECUTE FUNCTION c_values_range();
+)SQL";
+
 // Version 2: the message history (core/db/message_log.h). Every message the
 // positioner and the PLC raised on a simulated (or linked) machine, one row an
 // occurrence; a "run" is one session of one machine (the desktop's start).
@@ -204,16 +224,127 @@ CREATE TABLE message_history (
 CREATE INDEX message_history_by_machine ON message_history (machine, id);
 )SQL";
 
+// Version 3: programs released for the controllers and every transfer on
+// record. A program's state is its newest row of program_states; the user of
+// a transfer and the author of a release are, on PostgreSQL, the server's
+// current_user (a default the roles cannot override: row security).
+constexpr std::string_view kSchemaV3 = R"SQL(
+CREATE TABLE program_states (
+    id         INTEGER PRIMARY KEY,
+    machine_id INTEGER NOT NULL,
+    number     INTEGER NOT NULL CHECK (number BETWEEN 1 AND 99),
+    revision   INTEGER NOT NULL,
+    sha256     TEXT NOT NULL CHECK (length(sha256) = 64),
+    state      TEXT NOT NULL CHECK (state IN ('released', 'withdrawn')),
+    at         TEXT NOT NULL,
+    author     TEXT NOT NULL,
+    note       TEXT NOT NULL,
+    FOREIGN KEY (machine_id, number, revision)
+        REFERENCES program_revisions(machine_id, number, revision) ON DELETE CASCADE
+);
+
+CREATE INDEX program_states_by_program ON program_states (machine_id, number, id);
+
+CREATE TABLE transfers (
+    id         INTEGER PRIMARY KEY,
+    at         TEXT NOT NULL,
+    db_user    TEXT NOT NULL,
+    host       TEXT NOT NULL,
+    machine    TEXT NOT NULL,
+    revision   INTEGER NOT NULL CHECK (revision >= 0),
+    controller TEXT NOT NULL,
+    direction  TEXT NOT NULL CHECK (direction IN ('push', 'pull')),
+    result     TEXT NOT NULL CHECK (result IN ('ok', 'partial', 'failed')),
+    detail     TEXT NOT NULL
+);
+
+CREATE INDEX transfers_by_machine ON transfers (machine, id);
+
+CREATE TABLE transfer_items (
+    transfer_id INTEGER NOT NULL REFERENCES transfers(id) ON DELETE CASCADE,
+    seq         INTEGER NOT NULL,
+    kind        TEXT NOT NULL CHECK (kind IN ('program', 'c', 'r', 'messages')),
+    number      INTEGER NOT NULL CHECK (number BETWEEN 0 AND 99),
+    crc32       TEXT NOT NULL CHECK (length(crc32) = 8),
+    sha256      TEXT CHECK (sha256 IS NULL OR length(sha256) = 64),
+    state       TEXT NOT NULL CHECK (state IN ('new', 'as-it-was', 'in-doubt', 'read')),
+    PRIMARY KEY (transfer_id, seq)
+) WITHOUT ROWID;
+)SQL";
+
+constexpr std::string_view kSchemaV3Postgres = R"SQL(
+ALTER TABLE transfers ALTER COLUMN db_user SET DEFAULT current_user;
+ALTER TABLE transfers ENABLE ROW LEVEL SECURITY;
+CREATE POLICY transfers_read ON transfers FOR SELECT USING (true);
+CREATE POLICY transfers_own ON transfers FOR INSERT WITH CHECK (db_user = current_user);
+ALTER TABLE transfer_items ENABLE ROW LEVEL SECURITY;
+CREATE POLICY transfer_items_read ON transfer_items FOR SELECT USING (true);
+CREATE POLICY transfer_items_own ON transfer_items FOR INSERT WITH CHECK (
+    EXISTS (SELECT 1 FROM transfers t WHERE t.id = transfer_id AND t.db_user = current_user));
+ALTER TABLE program_states ALTER COLUMN author SET DEFAULT current_user;
+ALTER TABLE program_states ENABLE ROW LEVEL SECURITY;
+CREATE POLICY program_states_read ON program_states FOR SELECT USING (true);
+CREATE POLICY program_states_own ON program_states FOR INSERT WITH CHECK (author = current_user);
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
      "messages, PLC texts, settings, history, audit log",
-     kSchemaV1},
+     kSchemaV1, kSchemaV1Sqlite, kSchemaV1Postgres},
     {2, "message history: every message of the positioner and the PLC, acknowledged when and how",
      kSchemaV2},
+    {3, "programs released for the controllers; the transfer log", kSchemaV3, {},
+     kSchemaV3Postgres},
 };
 
+bool wordAt(std::string_view s, std::size_t i, std::string_view word) {
+    const auto isWord = [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    };
+    return s.substr(i, word.size()) == word && (i == 0 || !isWord(s[i - 1])) &&
+           (i + word.size() >= s.size() || !isWord(s[i + word.size()]));
+}
+
 } // namespace
+
+std::string postgresSchemaSql(std::string_view sql) {
+    static constexpr std::pair<std::string_view, std::string_view> kWords[] = {
+        {"INTEGER PRIMARY KEY AUTOINCREMENT", "BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY"},
+        {"INTEGER PRIMARY KEY", "BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY"},
+        {"INTEGER", "BIGINT"},
+        {" WITHOUT ROWID", ""},
+    };
+    std::string out;
+    out.reserve(sql.size() + sql.size() / 8);
+    bool quoted = false; // inside '…': copied as it is
+    for (std::size_t i = 0; i < sql.size();) {
+        if (!quoted && sql.substr(i, 2) == "--") { // a comment: to the end of its line
+            const std::size_t end = std::min(sql.find('\n', i), sql.size());
+            out += sql.substr(i, end - i);
+            i = end;
+            continue;
+        }
+        if (sql[i] == '\'') {
+            quoted = !quoted;
+            out += sql[i++];
+            continue;
+        }
+        bool replaced = false;
+        if (!quoted)
+            for (const auto& [from, to] : kWords)
+                if (wordAt(sql, from[0] == ' ' ? i + 1 : i, from[0] == ' ' ? from.substr(1) : from) &&
+                    (from[0] != ' ' || sql[i] == ' ')) {
+                    out += to;
+                    i += from.size();
+                    replaced = true;
+                    break;
+                }
+        if (!replaced)
+            out += sql[i++];
+    }
+    return out;
+}
 
 std::span<const Migration> schemaMigrations() {
     return kMigrations;

@@ -55,14 +55,14 @@ Stmt::~Stmt() {
     sqlite3_finalize(st_);
 }
 
-Stmt& Stmt::bind(int i, std::int64_t v) {
+Query& Stmt::bind(int i, std::int64_t v) {
     const int rc = sqlite3_bind_int64(st_, i, v);
     if (rc != SQLITE_OK)
         fail(db_, rc, "binding a value");
     return *this;
 }
 
-Stmt& Stmt::bind(int i, std::string_view v) {
+Query& Stmt::bind(int i, std::string_view v) {
     // A null data pointer would bind NULL: an empty text is "".
     const int rc = sqlite3_bind_text64(st_, i, v.data() ? v.data() : "", v.size(), SQLITE_TRANSIENT,
                                        SQLITE_UTF8);
@@ -71,11 +71,7 @@ Stmt& Stmt::bind(int i, std::string_view v) {
     return *this;
 }
 
-Stmt& Stmt::bind(int i, const std::optional<std::string>& v) {
-    return v ? bind(i, std::string_view(*v)) : bindNull(i);
-}
-
-Stmt& Stmt::bindNull(int i) {
+Query& Stmt::bindNull(int i) {
     const int rc = sqlite3_bind_null(st_, i);
     if (rc != SQLITE_OK)
         fail(db_, rc, "binding NULL");
@@ -94,12 +90,6 @@ bool Stmt::step() {
     fail(db_, code, what);
 }
 
-void Stmt::run() {
-    while (step()) {
-    }
-    reset();
-}
-
 void Stmt::reset() {
     sqlite3_reset(st_);
     sqlite3_clear_bindings(st_);
@@ -116,27 +106,45 @@ std::string Stmt::text(int col) const {
              : std::string();
 }
 
-std::optional<std::string> Stmt::optText(int col) const {
-    if (isNull(col))
-        return std::nullopt;
-    return text(col);
-}
-
 bool Stmt::isNull(int col) const {
     return sqlite3_column_type(st_, col) == SQLITE_NULL;
 }
 
-void StatementCache::reset(sqlite3* db) {
+std::int64_t Stmt::changes() const {
+    return sqlite3_changes64(db_);
+}
+
+int Stmt::columns() const {
+    return sqlite3_column_count(st_);
+}
+
+Value Stmt::value(int col) const {
+    switch (sqlite3_column_type(st_, col)) {
+    case SQLITE_NULL: return {};
+    case SQLITE_INTEGER: return i64(col);
+    case SQLITE_TEXT: return text(col);
+    default:
+        throw Error(ErrorKind::Corrupt, "column " + std::string(sqlite3_column_name(st_, col)) +
+                                            " of \"" + sql_.substr(0, 60) +
+                                            "\" holds a value that is neither an integer nor a text");
+    }
+}
+
+void SqliteConnection::reset(sqlite3* db) {
     cache_.clear();
     db_ = db;
 }
 
-Stmt& StatementCache::operator()(std::string_view text) {
+Stmt& SqliteConnection::operator()(std::string_view text) {
     auto it = cache_.find(text);
     if (it == cache_.end())
         it = cache_.emplace(std::string(text), std::make_unique<Stmt>(db_, text)).first;
     it->second->reset();
     return *it->second;
+}
+
+void SqliteConnection::exec(std::string_view text) {
+    sql::exec(db_, text);
 }
 
 void resetBusyStatements(sqlite3* db) {

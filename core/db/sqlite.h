@@ -1,8 +1,10 @@
-// Thin RAII wrappers over the sqlite3 C API, used inside core/db only.
-// Every failure throws db::Error with SQLite's message and what we were doing.
+// Thin RAII wrappers over the sqlite3 C API, used inside core/db only: the
+// SQLite side of the SQL seam (sql.h). Every failure throws db::Error with
+// SQLite's message and what we were doing.
 #pragma once
 
 #include "db/error.h"
+#include "db/sql.h"
 
 #include <cstdint>
 #include <map>
@@ -21,34 +23,25 @@ namespace k528::db::sql {
 // The same with SQLite's message given.
 [[noreturn]] void failWith(int rc, std::string_view what, const std::string& message);
 
-class Stmt {
+class Stmt final : public Query {
 public:
     Stmt(sqlite3* db, std::string_view sql);
-    ~Stmt();
+    ~Stmt() override;
     Stmt(const Stmt&) = delete;
     Stmt& operator=(const Stmt&) = delete;
 
-    // Parameters are 1-based, as in SQLite.
-    Stmt& bind(int i, std::int64_t v);
-    Stmt& bind(int i, int v) { return bind(i, static_cast<std::int64_t>(v)); }
-    Stmt& bind(int i, std::string_view v);
-    Stmt& bind(int i, const std::string& v) { return bind(i, std::string_view(v)); }
-    Stmt& bind(int i, const char* v) { return bind(i, std::string_view(v)); }
-    Stmt& bind(int i, const std::optional<std::string>& v);
-    Stmt& bindNull(int i);
-
-    // One step: true when a row is available, false when done.
-    bool step();
-    // Steps to the end and resets (for statements without rows).
-    void run();
-    // Resets and clears the bindings, ready for the next use.
-    void reset();
-
-    std::int64_t i64(int col) const;
-    int i32(int col) const { return static_cast<int>(i64(col)); }
-    std::string text(int col) const;
-    std::optional<std::string> optText(int col) const;
-    bool isNull(int col) const;
+    using Query::bind;
+    Query& bind(int i, std::int64_t v) override;
+    Query& bind(int i, std::string_view v) override;
+    Query& bindNull(int i) override;
+    bool step() override;
+    void reset() override;
+    std::int64_t changes() const override;
+    int columns() const override;
+    std::int64_t i64(int col) const override;
+    std::string text(int col) const override;
+    bool isNull(int col) const override;
+    Value value(int col) const override;
 
 private:
     sqlite3* db_;
@@ -56,14 +49,18 @@ private:
     std::string sql_;
 };
 
-// Prepared statements kept for the life of a connection, found by their text.
-class StatementCache {
+// An SQLite connection (not owned) as the SQL seam sees it, with its
+// prepared statements kept for the life of the connection, found by their text.
+class SqliteConnection final : public Connection {
 public:
-    explicit StatementCache(sqlite3* db = nullptr) : db_(db) {}
+    explicit SqliteConnection(sqlite3* db = nullptr) : db_(db) {}
     // Forgets every statement (before the connection closes) and uses `db`.
     void reset(sqlite3* db);
-    // The statement of `text`, reset and without bindings.
-    Stmt& operator()(std::string_view text);
+    sqlite3* handle() const { return db_; }
+
+    Dialect dialect() const override { return Dialect::Sqlite; }
+    Stmt& operator()(std::string_view text) override;
+    void exec(std::string_view text) override;
 
 private:
     sqlite3* db_;

@@ -3,8 +3,6 @@
 // foreign and newer files), read-only files, the connection's settings, WAL,
 // migrations and the C-parameter definitions; transactions; a snapshot's
 // freshness. docs/database.md: Opening, Connections and locks, Read-only files.
-#include "catalog/cparams.h"
-#include "db/sha256.h"
 #include "db/sqlite_store.h"
 
 #include <algorithm>
@@ -29,36 +27,6 @@ struct Checked {
 };
 
 namespace {
-
-// The definition rows' content, for detecting a changed catalog.
-std::string catalogDigest() {
-    std::string s;
-    const auto add = [&](std::string_view v) {
-        s += v;
-        s += '\x1f';
-    };
-    for (const cat::CParamDef& d : cat::cParams()) {
-        add(std::to_string(d.number));
-        add(cat::axisName(d.axis));
-        add(cat::kindName(d.kind));
-        add(cat::unitSymbol(d.unit));
-        add(cat::unitRu(d.unit));
-        add(cat::unitEn(d.unit));
-        add(std::to_string(d.min));
-        add(std::to_string(d.max));
-        add(d.address.text());
-        add(d.address.textEn());
-        add(d.name);
-        add(d.nameEn);
-        add(d.descriptionRu);
-        add(d.descriptionEn);
-        add(d.hintRu);
-        add(d.hintEn);
-        add(d.note);
-        s += '\x1e';
-    }
-    return sha256Hex(s);
-}
 
 struct FileHeader {
     bool empty = false;
@@ -320,6 +288,10 @@ std::unique_ptr<SqliteStore> SqliteStore::open(const fs::path& path, const OpenO
 
     const auto [appId, version, objects] = s->connectAndInspect(options, latest);
     const bool empty = appId == 0 && version == 0 && objects == 0;
+    if (options.requireEmpty && !empty)
+        throw Error(ErrorKind::Invalid, path.string() + ": not an empty database (schema version " +
+                                            std::to_string(version) +
+                                            "); a copy goes only into a new or empty one");
     s->applyConnectionSettings();
     s->report_.created = empty;
     s->report_.fromVersion = static_cast<int>(version);
@@ -342,7 +314,7 @@ std::unique_ptr<SqliteStore> SqliteStore::open(const fs::path& path, const OpenO
 }
 
 SqliteStore::~SqliteStore() {
-    st_.reset(nullptr);
+    conn_.reset(nullptr);
     if (db_)
         sqlite3_close_v2(db_);
 }
@@ -409,57 +381,6 @@ void SqliteStore::commit() {
 void SqliteStore::rollback() noexcept {
     sql::resetBusyStatements(db_);
     sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-}
-
-void SqliteStore::syncDefinitions(const std::string& author) {
-    const std::string digest = catalogDigest();
-    {
-        auto& q = st_("SELECT value FROM meta WHERE key = 'catalog_sha256'");
-        if (q.step() && q.text(0) == digest) {
-            q.reset();
-            return;
-        }
-        q.reset();
-    }
-    auto& q = st_(R"SQL(INSERT INTO c_definitions (number, axis, kind, unit, unit_ru, unit_en,
-        min_value, max_value, address, address_en, name, name_en, description_ru, description_en,
-        hint_ru, hint_en, note) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13,
-        ?14, ?15, ?16, ?17) ON CONFLICT (number) DO UPDATE SET axis = excluded.axis,
-        kind = excluded.kind, unit = excluded.unit, unit_ru = excluded.unit_ru,
-        unit_en = excluded.unit_en, min_value = excluded.min_value, max_value = excluded.max_value,
-        address = excluded.address, address_en = excluded.address_en, name = excluded.name,
-        name_en = excluded.name_en, description_ru = excluded.description_ru,
-        description_en = excluded.description_en, hint_ru = excluded.hint_ru,
-        hint_en = excluded.hint_en, note = excluded.note)SQL");
-    for (const cat::CParamDef& d : cat::cParams()) {
-        q.reset();
-        q.bind(1, d.number)
-            .bind(2, cat::axisName(d.axis))
-            .bind(3, cat::kindName(d.kind))
-            .bind(4, cat::unitSymbol(d.unit))
-            .bind(5, cat::unitRu(d.unit))
-            .bind(6, cat::unitEn(d.unit))
-            .bind(7, d.min)
-            .bind(8, d.max)
-            .bind(9, d.address.text())
-            .bind(10, d.address.textEn())
-            .bind(11, d.name)
-            .bind(12, d.nameEn)
-            .bind(13, d.descriptionRu)
-            .bind(14, d.descriptionEn)
-            .bind(15, d.hintRu)
-            .bind(16, d.hintEn)
-            .bind(17, d.note);
-        q.run();
-    }
-    auto& m = st_("INSERT INTO meta (key, value) VALUES ('catalog_sha256', ?1) ON CONFLICT (key) "
-                 "DO UPDATE SET value = excluded.value");
-    m.bind(1, digest);
-    m.run();
-    insertAudit(AuditEntry{0, now(), author, "definitions", "", 0,
-                           "C-parameter definitions (appendix Е) written from the catalog, digest " +
-                               digest.substr(0, 12)});
-    report_.definitionsUpdated = true;
 }
 
 sqlite3* SqliteStore::connect(const std::string& target, int flags, int busyTimeoutMs,
@@ -604,7 +525,7 @@ Checked SqliteStore::connectAndInspect(const OpenOptions& options, int latest) {
     if (walExisted && !immutable_)
         sqlite3_db_config(db_, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 0, nullptr);
     report_.recovered = recovered;
-    st_.reset(db_);
+    conn_.reset(db_);
     return *checked;
 }
 
@@ -652,8 +573,8 @@ void SqliteStore::switchToWal(int busyTimeoutMs) {
     }
 }
 
-void SqliteStore::createOrMigrate(const OpenOptions& options, int latest,
-                                     const std::string& author, const Fill& fill) {
+void SqliteStore::createOrMigrate(const OpenOptions& options, int /*latest*/,
+                                  const std::string& author, const Fill& fill) {
     WriteTransaction tx(*this);
     // Another process may have created or migrated it meanwhile.
     const std::int64_t found = sql::queryInt(db_, "PRAGMA user_version");
@@ -661,49 +582,52 @@ void SqliteStore::createOrMigrate(const OpenOptions& options, int latest,
     if (found == 0 && nowObjects != 0)
         throw Error(ErrorKind::Foreign, path_.string() + ": another program wrote into the "
                                                         "file while it was being created");
-    for (const Migration& m : options.migrations) {
-        if (m.version <= found)
-            continue;
-        try {
-            sql::exec(db_, m.sql);
-        } catch (const Error& e) {
-            throw Error(ErrorKind::Sql, path_.string() + ": migration to schema version " +
-                                            std::to_string(m.version) + " failed (" + e.what() +
-                                            "); nothing was changed");
-        }
-    }
-    if (found < latest) {
-        sql::exec(db_, "PRAGMA application_id = " + std::to_string(kApplicationId));
-        sql::exec(db_, "PRAGMA user_version = " + std::to_string(latest));
-        if (found == 0) {
-            auto& meta = st_("INSERT INTO meta (key, value) VALUES (?1, ?2)");
-            meta.bind(1, "created_at").bind(2, now());
-            meta.run();
-            insertAudit(AuditEntry{0, now(), author, "create-database", "", 0,
-                                   "schema version " + std::to_string(latest) + " created"});
-            syncDefinitions(author);
-            if (fill)
-                report_.seeded = fill(*this);
-        } else {
-            insertAudit(AuditEntry{0, now(), author, "migrate", "", 0,
-                                   "schema version " + std::to_string(found) + " -> " +
-                                       std::to_string(latest)});
-        }
-    }
+    upgrade(options.migrations, found, author, fill);
     tx.commit();
-    report_.fromVersion = static_cast<int>(found);
-    report_.created = found == 0; // not when another process created it meanwhile
+}
+
+void SqliteStore::stampSchema(int version) {
+    sql::exec(db_, "PRAGMA application_id = " + std::to_string(kApplicationId));
+    sql::exec(db_, "PRAGMA user_version = " + std::to_string(version));
 }
 
 void SqliteStore::refreshDefinitions(const std::string& author) {
-    auto& q = st_("SELECT value FROM meta WHERE key = 'catalog_sha256'");
-    const bool same = q.step() && q.text(0) == catalogDigest();
-    q.reset();
-    if (!same) {
+    if (!definitionsCurrent()) {
         WriteTransaction tx(*this);
         syncDefinitions(author);
         tx.commit();
     }
+}
+
+std::string SqliteStore::checkIntegrity() {
+    std::string problems;
+    sql::Stmt ic(db_, "PRAGMA integrity_check");
+    while (ic.step())
+        if (const std::string line = ic.text(0); line != "ok")
+            problems += (problems.empty() ? "" : "; ") + line;
+    try {
+        sql::Stmt fk(db_, "PRAGMA foreign_key_check");
+        while (fk.step())
+            problems += (problems.empty() ? "" : "; ") + std::string("foreign key: ") + fk.text(0) +
+                        " row " + std::to_string(fk.i64(1));
+    } catch (const Error& e) {
+        // Damage the integrity check listed can stop the key check: say it.
+        if (e.kind() == ErrorKind::Busy)
+            throw;
+        problems += (problems.empty() ? "" : "; ") + std::string(e.what());
+    }
+    if (problems.empty())
+        problems = checkRows();
+    return problems;
+}
+
+bool SqliteStore::changedElsewhere(std::vector<std::string>& /*machines*/) {
+    // PRAGMA data_version moves when another connection committed (our own
+    // commits leave it as it is).
+    const std::int64_t v = sql::queryInt(db_, "PRAGMA data_version");
+    const bool changed = dataVersion_ >= 0 && v != dataVersion_;
+    dataVersion_ = v;
+    return changed;
 }
 
 } // namespace k528::db

@@ -1,5 +1,6 @@
 // The storage behind db::Database, internal to core/db: what a backend
-// provides — SQLite today (sqlite_store.h), PostgreSQL next (issue 25). The
+// provides — SQLite (sqlite_store.h) and PostgreSQL (postgres_store.h), both
+// over the rows of sql_store.h. The
 // rules are Database's and the same for every backend (database.cpp,
 // revisions.h): what a write validates, what a revision records, how the
 // state at a revision is rebuilt, what the audit log says. A backend opens
@@ -8,6 +9,7 @@
 #pragma once
 
 #include "db/database.h"
+#include "db/sql.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -15,8 +17,6 @@
 #include <string>
 #include <string_view>
 #include <vector>
-
-struct sqlite3;
 
 namespace k528::db {
 
@@ -52,8 +52,31 @@ public:
     virtual bool snapshotOutdated() const = 0;
     virtual int schemaVersion() = 0;
     virtual std::string checkIntegrity() = 0;
-    // The SQLite connection for db::MessageLog; nullptr on other backends.
-    virtual sqlite3* sqliteConnection() const { return nullptr; }
+    virtual Backend backend() const = 0;
+    // The connection, for the other stores of core/db on this database
+    // (db::MessageLog) and for copying.
+    virtual sql::Connection& connection() = 0;
+    // The server's name for this session's user (PostgreSQL current_user);
+    // "" when the backend has none (SQLite).
+    virtual std::string sessionUser() { return {}; }
+    // Inside a write: tells other sessions that `machine` is at `revision`
+    // now (PostgreSQL NOTIFY, delivered at commit; SQLite: nothing, readers
+    // see data_version move).
+    virtual void notifyChange(std::string_view /*machine*/, int /*revision*/) {}
+    // Whether another connection committed since the last call, and the
+    // machines it named (PostgreSQL LISTEN; SQLite data_version: names none).
+    virtual bool changedElsewhere(std::vector<std::string>& machines) = 0;
+    // After rows were copied in with their ids: the backend's counters of
+    // ids follow them (PostgreSQL sequences; SQLite keeps its own).
+    virtual void afterCopy() {}
+    // Whether this session may do what `role` may (PostgreSQL: membership of
+    // the role or ownership of the database; SQLite: always).
+    virtual bool mayActAs(std::string_view /*role*/) { return true; }
+    // The K528 Studio roles of this session's user, for messages ("" none).
+    virtual std::string rolesOfUser() { return {}; }
+    // The server's roles (Database::setUpRoles); SQLite: Error(Invalid).
+    virtual std::vector<RoleInfo> roles(bool setUp);
+    virtual void grantRole(const std::string& user, const std::string& role);
 
     // Transactions. beginRead(): one snapshot for the reads of a call; false
     // when a transaction is already open (a write's). beginWrite(): the write
@@ -103,6 +126,15 @@ public:
     // The audit log.
     virtual void insertAudit(const AuditEntry& e) = 0; // e.id is ignored
     virtual std::vector<AuditEntry> audit(int limit, std::string_view machine) = 0;
+
+    // Releases and withdrawals of program versions (newest first; one
+    // program's, or every program's).
+    virtual void insertProgramState(std::int64_t id, const ReleaseEntry& e) = 0;
+    virtual std::vector<ReleaseEntry> programStates(std::int64_t id, std::optional<int> number) = 0;
+    // The transfer log. insertTransfer returns the entry's id; on
+    // PostgreSQL the server records its user (current_user), not t.user.
+    virtual std::int64_t insertTransfer(const TransferEntry& t) = 0;
+    virtual std::vector<TransferEntry> transfers(const TransferFilter& f) = 0;
 };
 
 // A read snapshot for the reads of one call.

@@ -3,6 +3,8 @@
 
 #include "db/database.h"
 
+#include <QCryptographicHash>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <cstdint>
@@ -10,7 +12,9 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <set>
 #include <string>
+#include <unistd.h>
 
 // QCOMPARE of std::string prints both texts when they differ.
 namespace QTest {
@@ -57,6 +61,48 @@ inline double envNumber(const char* name, double fallback) {
     const double d = v.toDouble(&ok);
     return ok ? d : fallback;
 }
+
+// The backend the suite runs on. CTest runs the database suite twice: on
+// SQLite, and as db.*.postgresql inside `pg_virtualenv` (a throwaway
+// cluster; the PG* variables point at it) with K528_TEST_BACKEND=postgresql.
+inline bool onPostgres() {
+    return qgetenv("K528_TEST_BACKEND") == "postgresql";
+}
+
+// A database of its own for one test: the SQLite file `name` in `dir`, or on
+// PostgreSQL a new database (UTF-8) named after the test process, `dir` and
+// `name` — the same location for the same dir and name, created empty on
+// the first call.
+inline db::Location testLocation(const QTemporaryDir& dir, const std::string& name) {
+    const std::filesystem::path file = std::filesystem::path(dir.path().toStdString()) / name;
+    if (!onPostgres())
+        return db::Location(file);
+    const QByteArray hash =
+        QCryptographicHash::hash(QByteArray::fromStdString(file.string()), QCryptographicHash::Sha1)
+            .toHex()
+            .left(12);
+    const std::string db = "k528t_" + std::to_string(::getpid()) + "_" + hash.toStdString();
+    static std::set<std::string> made;
+    if (made.insert(db).second) {
+        QProcess p;
+        p.start("createdb", {"--encoding=UTF8", "--template=template0", "--locale=C.UTF-8",
+                             QString::fromStdString(db)});
+        if (!p.waitForFinished(60000) || p.exitCode() != 0)
+            qFatal("createdb %s: %s", db.c_str(), p.readAllStandardError().constData());
+    }
+    return db::Location::parse("postgresql:///" + db);
+}
+
+inline db::Location testLocation(const QTemporaryDir& dir, const char* name) {
+    return testLocation(dir, std::string(name));
+}
+
+// A test that only SQLite's files can run (bytes, locks, permissions).
+#define K528_SQLITE_ONLY()                                                                         \
+    do {                                                                                           \
+        if (::k528::testing::onPostgres())                                                         \
+            QSKIP("a test of SQLite's files");                                                     \
+    } while (false)
 
 inline db::WriteOptions by(const std::string& author) {
     db::WriteOptions o;

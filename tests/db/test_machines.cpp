@@ -118,7 +118,7 @@ private slots:
     void historyOfEachChange() {
         QTemporaryDir dir;
         ManualClock clk;
-        db::Database d = db::Database::open(tempPath(dir, "h.db"), testOptions(clk.clock()));
+        db::Database d = db::Database::open(testLocation(dir, "h.db"), testOptions(clk.clock()));
         *clk.t = 1715940000; // 2024-05-17T10:00:00Z
         db::Edit e;
         e.c[22] = 2133;
@@ -192,7 +192,7 @@ private slots:
 
     void equalProfileWritesNothing() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "n.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "n.db"), testOptions());
         const auto auditBefore = d.audit().size();
         const auto r = d.saveMachine("grinder-205", d.loadMachine("grinder-205"), by("x"));
         QVERIFY(!r.changed);
@@ -205,7 +205,7 @@ private slots:
 
     void saveWholeProfile() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "s.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "s.db"), testOptions());
         const MachineProfile old = d.loadMachine("training-lathe");
         MachineProfile p = randomMachine(7, "training-lathe");
         const auto r = d.saveMachine("training-lathe", p, by("техн."));
@@ -223,7 +223,7 @@ private slots:
 
     void validationRejectsWholeAndWritesNothing() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "v.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "v.db"), testOptions());
         const auto auditBefore = d.audit().size();
         // A value outside its definition: never, even with allowErrors.
         db::WriteOptions allow = by("x");
@@ -287,7 +287,7 @@ private slots:
 
     void createRenameRemove() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "c.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "c.db"), testOptions());
         MachineProfile p = profile::builtin("grinder-205");
         QCOMPARE(errorKind([&] { d.createMachine(p); }), db::ErrorKind::MachineExists);
         p.name = "Bad Name";
@@ -332,7 +332,7 @@ private slots:
 
     void staleWriterIsRefused() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "x.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "x.db"), testOptions());
         db::WriteOptions o = by("desk");
         o.expectedRevision = 1;
         MachineProfile p = d.loadMachine("grinder-205");
@@ -349,7 +349,7 @@ private slots:
     // revisions are the diffs of what was saved.
     void revisionsRebuildExactly() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "r.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "r.db"), testOptions());
         std::mt19937 rng(2024);
         MachineProfile p = randomMachine(3, "lathe-7");
         for (int n = 20; n < 40; ++n)
@@ -397,7 +397,7 @@ private slots:
 
     void programRevisionsAndChecksums() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "p.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "p.db"), testOptions());
         MachineProfile p = d.loadMachine("grinder-205");
         const std::string v1 = p.programs.at(11);
         p.programs[11] = v1 + "N4 M30\n";
@@ -474,9 +474,56 @@ private slots:
         oldHome.isNull() ? qunsetenv("HOME") : qputenv("HOME", oldHome);
     }
 
+    // A location is a path, sqlite:PATH or a libpq URI; never a password.
+    void locations() {
+        using db::Location;
+        QVERIFY(Location::parse("/srv/k528.db") == Location(fs::path("/srv/k528.db")));
+        QVERIFY(Location::parse("sqlite:/srv/k528.db") == Location(fs::path("/srv/k528.db")));
+        QVERIFY(Location::parse("sqlite:///srv/k528.db") == Location(fs::path("/srv/k528.db")));
+        QVERIFY(Location::parse("shop.db").isFile());
+        const Location pg = Location::parse("postgresql://k528@db.shop/k528?sslmode=require");
+        QCOMPARE(pg.backend(), db::Backend::Postgres);
+        QCOMPARE(pg.text(), std::string("postgresql://k528@db.shop/k528?sslmode=require"));
+        QCOMPARE(Location::parse("postgresql://").backend(), db::Backend::Postgres);
+        QCOMPARE(Location::parse("postgres://host/db").backend(), db::Backend::Postgres);
+        for (const char* bad : {"postgresql://k528:secret@db.shop/k528",
+                                "postgresql://db.shop/k528?sslmode=require&password=secret",
+                                "mysql://db.shop/k528", "", "sqlite:"}) {
+            try {
+                Location::parse(bad);
+                QFAIL(bad);
+            } catch (const db::Error& e) {
+                QCOMPARE(e.kind(), db::ErrorKind::Invalid);
+                if (std::string(bad).find("secret") != std::string::npos)
+                    QVERIFY2(std::string(e.what()).find(".pgpass") != std::string::npos, e.what());
+            }
+        }
+        const QByteArray oldDb = qgetenv("K528_DB");
+        qputenv("K528_DB", "postgresql:///shop");
+        QCOMPARE(db::defaultDatabaseLocation().backend(), db::Backend::Postgres);
+        QVERIFY_THROWS_EXCEPTION(db::Error, db::defaultDatabasePath());
+        oldDb.isNull() ? qunsetenv("K528_DB") : qputenv("K528_DB", oldDb);
+    }
+
+    // The engine's hook reads a server's machine as it reads a file's.
+    void engineProfileHookOnTheServer() {
+        if (!onPostgres())
+            QSKIP("PostgreSQL only (SQLite: engineProfileHook)");
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "engine.db");
+        QVERIFY_THROWS_EXCEPTION(db::Error, db::loadProfile("grinder-205", where)); // empty: no tables
+        {
+            db::Database d = db::Database::open(where, testOptions());
+            d.applyEdit("grinder-205", editC(22, 2133), by("x"));
+        }
+        QCOMPARE(db::loadProfile("grinder-205", where).cValue(22), std::int64_t(2133));
+        QVERIFY(db::loadProfile("training-lathe", where) == profile::builtin("training-lathe"));
+    }
+
     // The engine's profile: the database's machine when it has one, else the
     // built-in or the file; a missing database is not created.
     void engineProfileHook() {
+        K528_SQLITE_ONLY();
         QTemporaryDir dir;
         const fs::path p = tempPath(dir, "engine.db");
         QVERIFY(db::loadProfile("grinder-205", p) == profile::builtin("grinder-205"));

@@ -78,7 +78,7 @@ db::OpenOptions opts(int busyMs = 20000) {
 }
 
 // Opens after a crash: open() runs integrity_check and refuses a damaged file.
-std::string reopenCheck(const fs::path& p) {
+std::string reopenCheck(const db::Location& p) {
     db::Database d = db::Database::open(p, opts());
     return d.checkIntegrity();
 }
@@ -90,7 +90,7 @@ class TestProcesses : public QObject {
 private slots:
     void killedInTheMiddleOfATransaction() {
         QTemporaryDir dir;
-        const fs::path path = tempPath(dir, "kill.db");
+        const db::Location path = testLocation(dir, "kill.db");
         const MachineProfile before = randomMachine(11, "big");
         {
             db::Database d = db::Database::open(path, opts());
@@ -147,7 +147,7 @@ private slots:
 
     void killedAfterTheCommit() {
         QTemporaryDir dir;
-        const fs::path path = tempPath(dir, "after.db");
+        const db::Location path = testLocation(dir, "after.db");
         {
             db::Database d = db::Database::open(path, opts());
             d.createMachine(randomMachine(21, "big"), by("setup"));
@@ -178,7 +178,7 @@ private slots:
     // of the committed ones, and the current tables agree with the history.
     void killedAtRandomMoments() {
         QTemporaryDir dir;
-        const fs::path path = tempPath(dir, "random.db");
+        const db::Location path = testLocation(dir, "random.db");
         const MachineProfile a = randomMachine(31, "m");
         const MachineProfile b = randomMachine(32, "m");
         {
@@ -221,13 +221,13 @@ private slots:
         QVERIFY2(lastRevision > 3, "the writer committed too little to test anything");
     }
 
-    // Two processes write the same file at the same time: both finish, none
-    // of their changes is lost.
+    // Two processes set constants of one machine at the same time, 100 times
+    // each: both finish, each change is its own revision, none is lost.
     void concurrentWriters() {
         QTemporaryDir dir;
-        const fs::path path = tempPath(dir, "two.db");
+        const db::Location path = testLocation(dir, "two.db");
         { db::Database::open(path, opts()); }
-        constexpr int kEach = 25;
+        constexpr int kEach = 100;
         int go[2];
         QVERIFY(pipe(go) == 0);
         std::vector<pid_t> children;
@@ -239,6 +239,7 @@ private slots:
                     return 5;
                 for (int i = 0; i < kEach; ++i) {
                     db::Edit e;
+                    e.c[22 + w] = 1000 + i + 1;
                     e.r[w * 100 + i] = i + 1;
                     d.applyEdit("grinder-205", e, by("writer" + std::to_string(w)));
                 }
@@ -252,14 +253,18 @@ private slots:
             QCOMPARE(exitStatus(c), 0);
         db::Database d = db::Database::open(path, opts());
         QCOMPARE(d.machine("grinder-205")->revision, 1 + 2 * kEach);
+        QCOMPARE(static_cast<int>(d.revisions("grinder-205").size()), 1 + 2 * kEach);
         const MachineProfile p = d.loadMachine("grinder-205");
-        for (int w = 0; w < 2; ++w)
+        for (int w = 0; w < 2; ++w) {
+            QCOMPARE(p.cValue(22 + w), std::int64_t(1000 + kEach));
             for (int i = 0; i < kEach; ++i)
                 QCOMPARE(p.r.at(w * 100 + i), std::int64_t(i + 1));
+        }
         int byWriter0 = 0;
         for (const auto& r : d.revisions("grinder-205"))
             byWriter0 += r.author == "writer0";
         QCOMPARE(byWriter0, kEach);
+        QCOMPARE(static_cast<int>(d.history("grinder-205", "C022").size()), kEach + 1);
         QCOMPARE(d.checkIntegrity(), std::string());
     }
 
@@ -268,7 +273,7 @@ private slots:
     void concurrentFirstStart() {
         for (int round = 0; round < 6; ++round) {
             QTemporaryDir dir;
-            const fs::path path = tempPath(dir, "first.db");
+            const db::Location path = testLocation(dir, "first.db");
             constexpr int kProcesses = 4;
             int go[2];
             QVERIFY(pipe(go) == 0);

@@ -38,7 +38,7 @@ class TestRoundtrip : public QObject {
 private slots:
     void builtinProfiles() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "b.db"), unseeded());
+        db::Database d = db::Database::open(testLocation(dir, "b.db"), unseeded());
         for (const std::string& name : profile::builtinNames()) {
             const std::string text(profile::builtinText(name));
             d.createMachine(profile::readMachineText(text, name), by("import"));
@@ -79,11 +79,11 @@ private slots:
         const std::string text = profile::writeMachineText(p);
         QTemporaryDir dir;
         {
-            db::Database d = db::Database::open(tempPath(dir, "f.db"), unseeded());
+            db::Database d = db::Database::open(testLocation(dir, "f.db"), unseeded());
             d.createMachine(profile::readMachineText(text, "full.k528m"), by("import"));
         }
         // Reopened: the stored machine is the file.
-        db::Database d = db::Database::open(tempPath(dir, "f.db"), unseeded());
+        db::Database d = db::Database::open(testLocation(dir, "f.db"), unseeded());
         const MachineProfile back = d.loadMachine(p.name);
         QVERIFY(back == p);
         QCOMPARE(profile::writeMachineText(back), text);
@@ -103,7 +103,7 @@ private slots:
     // audit entry.
     void badImportChangesNothing() {
         QTemporaryDir dir;
-        db::Database d = db::Database::open(tempPath(dir, "bad.db"), testOptions());
+        db::Database d = db::Database::open(testLocation(dir, "bad.db"), testOptions());
         const auto auditBefore = d.audit().size();
         MachineProfile p = randomMachine(5, "bad-one");
         p.setC(70, p.cValue(18)); // both DACs on one channel: message 38

@@ -243,30 +243,32 @@ private slots:
         }
         std::vector<db::Migration> steps(db::schemaMigrations().begin(),
                                          db::schemaMigrations().end());
-        steps.push_back({3, "workshops", kV2Sql});
+        const int latest = db::latestSchemaVersion(), next = latest + 1;
+        steps.push_back({next, "workshops", kV2Sql});
         auto o = testOptions();
         o.migrations = steps;
         {
             db::Database d = db::Database::open(p, o);
             QVERIFY(!d.openReport().created);
-            QCOMPARE(d.openReport().fromVersion, 2);
-            QCOMPARE(d.openReport().version, 3);
+            QCOMPARE(d.openReport().fromVersion, latest);
+            QCOMPARE(d.openReport().version, next);
             QVERIFY(d.openReport().seeded.empty());
-            QCOMPARE(d.schemaVersion(), 3);
+            QCOMPARE(d.schemaVersion(), next);
             QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
             QCOMPARE(d.machine("grinder-205")->revision, 2);
             QCOMPARE(d.audit(1).front().action, std::string("migrate"));
-            QCOMPARE(d.audit(1).front().detail, std::string("schema version 2 -> 3"));
+            QCOMPARE(d.audit(1).front().detail, "schema version " + std::to_string(latest) + " -> " +
+                                                    std::to_string(next));
         }
         {
             Raw raw(p);
-            QCOMPARE(raw.integer("PRAGMA user_version"), 3LL);
+            QCOMPARE(raw.integer("PRAGMA user_version"), static_cast<long long>(next));
             QVERIFY(raw.exec("INSERT INTO workshops (name) VALUES ('цех 3')").empty());
         }
-        // This program (schema 1) now refuses the file and leaves it alone.
+        // This program (an older schema) now refuses the file and leaves it alone.
         const std::string bytes = fileBytes(p);
         const std::string e = openError(p, db::ErrorKind::TooNew);
-        QVERIFY2(e.find("schema version 3") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("schema version " + std::to_string(next)) != std::string::npos, e.c_str());
         QVERIFY(fileBytes(p) == bytes);
     }
 
@@ -290,14 +292,15 @@ private slots:
         {
             db::Database d = db::Database::open(p, testOptions());
             QCOMPARE(d.openReport().fromVersion, 1);
-            QCOMPARE(d.openReport().version, 2);
-            QCOMPARE(d.schemaVersion(), 2);
+            QCOMPARE(d.openReport().version, db::latestSchemaVersion());
+            QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
             QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
-            QCOMPARE(d.audit(1).front().detail, std::string("schema version 1 -> 2"));
+            QCOMPARE(d.audit(1).front().detail,
+                     "schema version 1 -> " + std::to_string(db::latestSchemaVersion()));
             QVERIFY(d.checkIntegrity().empty());
         }
         Raw raw(p);
-        QCOMPARE(raw.integer("PRAGMA user_version"), 2LL);
+        QCOMPARE(raw.integer("PRAGMA user_version"), static_cast<long long>(db::latestSchemaVersion()));
         QVERIFY(raw.exec("INSERT INTO message_runs (machine, started_at, started_ms, author) "
                          "VALUES ('grinder-205', '2024-05-17T08:30:00.000Z', 0, 'x')").empty());
         QVERIFY(raw.exec("INSERT INTO message_history (run_id, seq, machine, machine_ms, day_ms, "
@@ -314,12 +317,13 @@ private slots:
         QTemporaryDir dir;
         std::vector<db::Migration> steps(db::schemaMigrations().begin(),
                                          db::schemaMigrations().end());
-        steps.push_back({3, "workshops", kV2Sql});
+        const int next = db::latestSchemaVersion() + 1;
+        steps.push_back({next, "workshops", kV2Sql});
         auto o = testOptions();
         o.migrations = steps;
         db::Database d = db::Database::open(tempPath(dir, "two.db"), o);
         QCOMPARE(d.openReport().fromVersion, 0);
-        QCOMPARE(d.schemaVersion(), 3);
+        QCOMPARE(d.schemaVersion(), next);
         QCOMPARE(d.machines().size(), std::size_t(2));
     }
 
@@ -329,18 +333,54 @@ private slots:
         const std::string bytes = fileBytes(p);
         std::vector<db::Migration> steps(db::schemaMigrations().begin(),
                                          db::schemaMigrations().end());
-        steps.push_back(
-            {3, "broken", "CREATE TABLE good (a INTEGER); INSERT INTO missing VALUES (1);"});
+        const int latest = db::latestSchemaVersion();
+        steps.push_back({latest + 1, "broken",
+                         "CREATE TABLE good (a INTEGER); INSERT INTO missing VALUES (1);"});
         auto o = testOptions();
         o.migrations = steps;
         const std::string e = openError(p, db::ErrorKind::Sql, o);
-        QVERIFY2(e.find("migration to schema version 3 failed") != std::string::npos, e.c_str());
+        QVERIFY2(e.find("migration to schema version " + std::to_string(latest + 1) + " failed") !=
+                     std::string::npos,
+                 e.c_str());
         QVERIFY2(e.find("no such table: missing") != std::string::npos, e.c_str());
         QVERIFY(fileBytes(p) == bytes);
         db::Database d = db::Database::open(p, testOptions());
-        QCOMPARE(d.schemaVersion(), 2);
+        QCOMPARE(d.schemaVersion(), latest);
         Raw raw(p);
         QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'good'"), 0LL);
+    }
+
+    // Version 2 -> 3: releases and the transfer log beside every machine and
+    // message kept; the new tables keep their rules.
+    void releasesAndTransfersFromVersion2() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "v2.db");
+        auto o2 = testOptions();
+        o2.migrations = db::schemaMigrations().subspan(0, 2);
+        {
+            db::Database d = db::Database::open(p, o2);
+            QCOMPARE(d.schemaVersion(), 2);
+            db::Edit e;
+            e.c[22] = 2133;
+            d.applyEdit("grinder-205", e, by("Петров"));
+        }
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QCOMPARE(d.openReport().fromVersion, 2);
+            QCOMPARE(d.schemaVersion(), 3);
+            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
+            QCOMPARE(d.audit(1).front().detail, std::string("schema version 2 -> 3"));
+            QCOMPARE(d.releaseProgram("grinder-205", 11, "", by("Петров")).revision, 1);
+            QVERIFY(d.checkIntegrity().empty());
+        }
+        Raw raw(p);
+        raw.exec("PRAGMA foreign_keys = ON");
+        QVERIFY(!raw.exec("INSERT INTO transfers (at, db_user, host, machine, revision, controller, "
+                          "direction, result, detail) VALUES ('x', 'u', 'h', 'm', 0, 'c', 'sideways', "
+                          "'ok', '')").empty());
+        QVERIFY(!raw.exec("INSERT INTO program_states (machine_id, number, revision, sha256, state, at, "
+                          "author, note) VALUES (1, 11, 99, '" + std::string(64, 'a') +
+                          "', 'released', 'x', 'y', '')").empty()); // no such version
     }
 
     void foreignSqliteFileIsRefused() {

@@ -1,12 +1,11 @@
-// The SQLite backend's profile rows: the machines and their current state —
+// The profile rows of both backends: the machines and their current state —
 // C values, R presets, programs (the view of their last versions), messages,
 // PLC texts and simulation settings.
 #include "catalog/cparams.h"
 #include "db/revisions.h"
 #include "db/sha256.h"
-#include "db/sqlite_store.h"
+#include "db/sql_store.h"
 
-#include <sqlite3.h>
 
 namespace k528::db {
 
@@ -15,21 +14,21 @@ using profile::Change;
 using profile::DiffSection;
 using profile::MachineProfile;
 
-std::string SqliteStore::where(const MachineRow& row) const {
+std::string SqlStore::where(const MachineRow& row) const {
     return "machine " + row.info.name + " in " + path_.string();
 }
 
-std::vector<MachineInfo> SqliteStore::machines() {
+std::vector<MachineInfo> SqlStore::machines() {
     std::vector<MachineInfo> out;
-    auto& q = st_("SELECT name, title, revision, created_at, changed_at, changed_by FROM "
+    auto& q = query("SELECT name, title, revision, created_at, changed_at, changed_by FROM "
                   "machines ORDER BY name");
     while (q.step())
         out.push_back(MachineInfo{q.text(0), q.text(1), q.i32(2), q.text(3), q.text(4), q.text(5)});
     return out;
 }
 
-std::optional<MachineRow> SqliteStore::findMachine(std::string_view name) {
-    auto& q = st_("SELECT id, name, title, revision, created_at, changed_at, changed_by "
+std::optional<MachineRow> SqlStore::findMachine(std::string_view name) {
+    auto& q = query("SELECT id, name, title, revision, created_at, changed_at, changed_by "
                   "FROM machines WHERE name = ?1");
     q.bind(1, name);
     if (!q.step())
@@ -41,20 +40,20 @@ std::optional<MachineRow> SqliteStore::findMachine(std::string_view name) {
     return r;
 }
 
-MachineProfile SqliteStore::loadCurrent(const MachineRow& row) {
+MachineProfile SqlStore::loadCurrent(const MachineRow& row) {
     MachineProfile p;
     p.name = row.info.name;
     p.title = row.info.title;
     const std::string at = where(row);
     // Each row of the machine's rows of one table.
     const auto rows = [&](const char* sql, const auto& take) {
-        auto& q = st_(sql);
+        auto& q = query(sql);
         q.bind(1, row.id);
         while (q.step())
             take(q);
     };
     int count = 0;
-    rows("SELECT number, value FROM c_values WHERE machine_id = ?1", [&](const sql::Stmt& q) {
+    rows("SELECT number, value FROM c_values WHERE machine_id = ?1", [&](const sql::Query& q) {
         const int n = q.i32(0);
         if (n < 1 || n > cat::kCParamCount)
             throw Error(ErrorKind::Corrupt,
@@ -66,9 +65,9 @@ MachineProfile SqliteStore::loadCurrent(const MachineRow& row) {
         throw Error(ErrorKind::Corrupt,
                     at + ": " + std::to_string(count) + " of the 152 C-parameter values are stored");
     rows("SELECT number, value FROM r_values WHERE machine_id = ?1",
-         [&](const sql::Stmt& q) { p.r[q.i32(0)] = q.i64(1); });
+         [&](const sql::Query& q) { p.r[q.i32(0)] = q.i64(1); });
     rows("SELECT number, text, sha256, revision FROM programs WHERE machine_id = ?1",
-         [&](const sql::Stmt& q) {
+         [&](const sql::Query& q) {
              std::string text = q.text(1);
              if (sha256Hex(text) != q.text(2))
                  throw Error(ErrorKind::Corrupt,
@@ -79,8 +78,8 @@ MachineProfile SqliteStore::loadCurrent(const MachineRow& row) {
              p.programs[q.i32(0)] = std::move(text);
          });
     rows("SELECT number, text FROM messages WHERE machine_id = ?1",
-         [&](const sql::Stmt& q) { p.messages[q.i32(0)] = q.text(1); });
-    rows("SELECT grp, number, text FROM plc_messages WHERE machine_id = ?1", [&](const sql::Stmt& q) {
+         [&](const sql::Query& q) { p.messages[q.i32(0)] = q.text(1); });
+    rows("SELECT grp, number, text FROM plc_messages WHERE machine_id = ?1", [&](const sql::Query& q) {
         const std::string g = q.text(0);
         const auto group = revision::plcGroupOf(g.empty() ? '?' : g[0]);
         if (!group)
@@ -88,7 +87,7 @@ MachineProfile SqliteStore::loadCurrent(const MachineRow& row) {
         p.plcTexts(*group)[q.i32(1)] = q.text(2);
     });
     rows("SELECT key, value FROM settings WHERE machine_id = ?1 ORDER BY position",
-         [&](const sql::Stmt& q) {
+         [&](const sql::Query& q) {
              try {
                  p.simulation.set(q.text(0), q.text(1));
              } catch (const profile::SettingError& e) {
@@ -98,30 +97,33 @@ MachineProfile SqliteStore::loadCurrent(const MachineRow& row) {
     return p;
 }
 
-std::int64_t SqliteStore::insertMachine(const MachineProfile& p, const std::string& at,
+std::int64_t SqlStore::insertMachine(const MachineProfile& p, const std::string& at,
                                         const std::string& author) {
-    auto& q = st_("INSERT INTO machines (name, title, revision, created_at, changed_at, "
-                  "changed_by) VALUES (?1, ?2, 1, ?3, ?3, ?4)");
+    auto& q = query("INSERT INTO machines (name, title, revision, created_at, changed_at, "
+                    "changed_by) VALUES (?1, ?2, 1, ?3, ?3, ?4) RETURNING id");
     q.bind(1, p.name).bind(2, p.title).bind(3, at).bind(4, author);
-    q.run();
-    return sqlite3_last_insert_rowid(db_);
+    if (!q.step())
+        throw Error(ErrorKind::Sql, path_.string() + ": the new machine's row has no id");
+    const std::int64_t id = q.i64(0);
+    q.reset();
+    return id;
 }
 
-void SqliteStore::updateMachine(std::int64_t id, const MachineProfile& p, int revision,
+void SqlStore::updateMachine(std::int64_t id, const MachineProfile& p, int revision,
                                 const std::string& at, const std::string& author) {
-    auto& q = st_("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
+    auto& q = query("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
                   "changed_by = ?6 WHERE id = ?1");
     q.bind(1, id).bind(2, p.name).bind(3, p.title).bind(4, revision).bind(5, at).bind(6, author);
     q.run();
 }
 
-void SqliteStore::deleteMachine(std::int64_t id) {
-    auto& q = st_("DELETE FROM machines WHERE id = ?1");
+void SqlStore::deleteMachine(std::int64_t id) {
+    auto& q = query("DELETE FROM machines WHERE id = ?1");
     q.bind(1, id);
     q.run();
 }
 
-void SqliteStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, const Change& c) {
+void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, const Change& c) {
     const auto num = revision::keyNumber(c.key);
     switch (c.section) {
     case DiffSection::Machine:    // the machines row (updateMachine)
@@ -129,7 +131,7 @@ void SqliteStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p
     case DiffSection::Simulation: // written whole (writeSettings)
         return;
     case DiffSection::C: {
-        auto& q = st_(isNew ? "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)"
+        auto& q = query(isNew ? "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)"
                             : "UPDATE c_values SET value = ?3 WHERE machine_id = ?1 AND number = ?2");
         q.bind(1, id).bind(2, *num).bind(3, p.cValue(*num));
         q.run();
@@ -156,7 +158,7 @@ void SqliteStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p
                         "(?1, ?2, ?4, ?3) ON CONFLICT (machine_id, grp, number) DO UPDATE "
                         "SET text = excluded.text"
                       : "DELETE FROM plc_messages WHERE machine_id = ?1 AND number = ?2 AND grp = ?4";
-    auto& q = st_(sql);
+    auto& q = query(sql);
     q.bind(1, id).bind(2, *num);
     if (c.after && c.section == DiffSection::R)
         q.bind(3, p.r.at(*num));
@@ -167,11 +169,11 @@ void SqliteStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p
     q.run();
 }
 
-void SqliteStore::writeSettings(std::int64_t id, const MachineProfile& p) {
-    auto& del = st_("DELETE FROM settings WHERE machine_id = ?1");
+void SqlStore::writeSettings(std::int64_t id, const MachineProfile& p) {
+    auto& del = query("DELETE FROM settings WHERE machine_id = ?1");
     del.bind(1, id);
     del.run();
-    auto& q = st_("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
+    auto& q = query("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
     int pos = 0;
     for (const auto& [k, v] : p.simulation.entries()) {
         q.reset();

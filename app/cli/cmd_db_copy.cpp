@@ -1,0 +1,44 @@
+// k528 db copy --to LOCATION (docs/database.md); helpers in db_cli_util.h.
+#include "args.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db_cli_util.h"
+
+namespace k528::cli::dbcli {
+
+int cmdCopy(std::span<const std::string> argv) {
+    const Args a(argv, {}, {"--db", "--to"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (!a.positional().empty())
+        return usageError("db copy takes no arguments: k528 db copy --to LOCATION");
+    const auto to = a.value("--to");
+    if (!to || to->empty())
+        return usageError("db copy needs --to LOCATION (a new file, sqlite:PATH or postgresql://…)");
+    db::Location target;
+    try {
+        target = db::Location::parse(*to);
+    } catch (const db::Error& e) {
+        return fail(e.what());
+    }
+    DbTarget t;
+    auto d = openDbOf(a, t, false);
+    if (!d)
+        return ExitUsage;
+    try {
+        const db::CopyReport r = d->copyTo(target);
+        std::string s = "copied    " + t.path.string() + " -> " + r.target + "\n";
+        s += "machines  " + std::to_string(r.machines) + ", revisions " + std::to_string(r.revisions) +
+             ", program versions " + std::to_string(r.programVersions) + ", releases " +
+             std::to_string(r.releases) + "\n";
+        s += "logs      " + std::to_string(r.messages) + " messages, " + std::to_string(r.audit) +
+             " audit entries, " + std::to_string(r.transfers) + " transfers\n";
+        s += "rows      " + std::to_string(r.rows) + " in one transaction\n";
+        out(s);
+        return ExitOk;
+    } catch (const db::Error& e) {
+        return dbFail(e);
+    }
+}
+
+} // namespace k528::cli::dbcli

@@ -1,0 +1,117 @@
+// k528 db log [MACHINE] [--since TIME] [--limit N] [--json] (docs/database.md).
+#include "args.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db_cli_util.h"
+#include "util/json.h"
+
+namespace k528::cli::dbcli {
+
+namespace {
+
+// "2024-05-17", "2024-05-17T08:30", "2024-05-17T08:30:00Z": a prefix of a timestamp.
+bool validSince(const std::string& s) {
+    static const std::string kShape = "0000-00-00T00:00:00Z";
+    if (s.size() < 10 || s.size() > kShape.size())
+        return false;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (kShape[i] == '0' ? !(s[i] >= '0' && s[i] <= '9') : s[i] != kShape[i])
+            return false;
+    return true;
+}
+
+std::string itemText(const db::TransferItem& i) {
+    const std::string what = i.kind == "program" ? "L" + std::to_string(i.number)
+                             : i.kind == "c"     ? std::string("C")
+                             : i.kind == "r"     ? std::string("R")
+                                                 : std::string("messages");
+    return what + " " + i.crc32 + " " + i.state;
+}
+
+} // namespace
+
+int cmdLog(std::span<const std::string> argv) {
+    const Args a(argv, {"--json"}, {"--db", "--since", "--limit"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() > 1)
+        return usageError("db log takes at most one machine: k528 db log [MACHINE] [--since TIME]");
+    db::TransferFilter f;
+    if (!a.positional().empty())
+        f.machine = a.positional()[0];
+    if (const auto since = a.value("--since")) {
+        if (!validSince(*since))
+            return usageError("--since takes a time as 2024-05-17 or 2024-05-17T08:30:00Z, not '" +
+                              *since + "'");
+        f.since = *since;
+    }
+    if (const auto v = a.value("--limit")) {
+        const auto n = parseInt(*v);
+        if (!n || *n < 0)
+            return usageError("--limit N: N must be 0 (all) or more");
+        f.limit = static_cast<int>(*n);
+    }
+    DbTarget t;
+    auto d = openDbOf(a, t, false);
+    if (!d)
+        return ExitUsage;
+    try {
+        const auto entries = d->transfers(f);
+        if (a.has("--json")) {
+            Json arr = Json::array();
+            for (const auto& e : entries) {
+                Json j;
+                j["id"] = e.id;
+                j["at"] = e.at;
+                j["user"] = e.user;
+                j["host"] = e.host;
+                j["machine"] = e.machine;
+                j["revision"] = e.revision;
+                j["controller"] = e.controller;
+                j["direction"] = e.direction;
+                j["result"] = e.result;
+                j["detail"] = e.detail;
+                Json items = Json::array();
+                for (const auto& i : e.items) {
+                    Json ij;
+                    ij["kind"] = i.kind;
+                    ij["number"] = i.number;
+                    ij["crc32"] = i.crc32;
+                    ij["sha256"] = optJson(i.sha256);
+                    ij["state"] = i.state;
+                    items.push_back(std::move(ij));
+                }
+                j["items"] = std::move(items);
+                arr.push_back(std::move(j));
+            }
+            Json root;
+            root["database"] = t.path.string();
+            root["transfers"] = std::move(arr);
+            out(json::dump(root) + "\n");
+            return ExitOk;
+        }
+        std::string s;
+        for (const auto& e : entries) {
+            s += e.at + "  " + pad(e.direction, 4) + "  " + pad(e.result, 7) + "  " +
+                 pad(e.machine.empty() ? "-" : e.machine +
+                                                   (e.revision ? "@" + std::to_string(e.revision) : ""),
+                     16) +
+                 "  " + e.user + "@" + e.host + "  " + e.controller + "\n";
+            std::string items;
+            for (const auto& i : e.items)
+                items += (items.empty() ? "" : ", ") + itemText(i);
+            if (!items.empty())
+                s += "    " + items + "\n";
+            if (!e.detail.empty())
+                s += "    " + e.detail + "\n";
+        }
+        if (entries.empty())
+            s = "no transfers on record" + (f.machine.empty() ? std::string() : " for " + f.machine) + "\n";
+        out(s);
+        return ExitOk;
+    } catch (const db::Error& e) {
+        return dbFail(e);
+    }
+}
+
+} // namespace k528::cli::dbcli

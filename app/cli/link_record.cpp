@@ -1,0 +1,124 @@
+#include "link_record.h"
+
+#include "db/location.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+namespace k528::cli {
+
+namespace fs = std::filesystem;
+
+bool TransferRecord::open(const Args& args, const std::string& line,
+                          std::optional<TransferRecord>& record) {
+    const auto given = args.value("--db");
+    const char* env = std::getenv("K528_DB");
+    const auto machine = args.value("--machine");
+    const bool required = given || (env && *env) || machine;
+    std::string where = given ? *given : "the default database";
+    try {
+        const db::Location loc = given ? db::Location::parse(*given) : db::defaultDatabaseLocation();
+        where = loc.text();
+        db::OpenOptions o;
+        if (loc.isFile()) {
+            std::error_code ec;
+            if (!fs::exists(loc.file(), ec)) {
+                if (given) {
+                    std::fprintf(stderr,
+                                 "k528 link: no database at %s for the transfer log (create one "
+                                 "with: k528 db init --db %s); nothing was sent\n",
+                                 where.c_str(), where.c_str());
+                    return false;
+                }
+                fs::create_directories(loc.file().parent_path(), ec);
+            }
+        }
+        db::Database d = db::Database::open(loc, o);
+        transfer::Context c;
+        c.controller = line;
+        if (machine) {
+            const auto m = d.machine(*machine);
+            if (!m) {
+                std::fprintf(stderr, "k528 link: no machine \"%s\" in %s; nothing was sent\n",
+                             machine->c_str(), where.c_str());
+                return false;
+            }
+            c.machine = *machine;
+            c.revision = m->revision;
+        }
+        record.emplace(TransferRecord(std::move(d), std::move(c)));
+        return true;
+    } catch (const db::Error& e) {
+        if (required) {
+            std::fprintf(stderr, "k528 link: the transfer log: %s; nothing was sent\n", e.what());
+            return false;
+        }
+        std::fprintf(stderr, "k528 link: warning: this transfer is not on record (%s: %s)\n",
+                     where.c_str(), e.what());
+        return true;
+    }
+}
+
+bool TransferRecord::releasedPlan(link::PushPlan& plan) {
+    try {
+        plan = transfer::releasedPlan(db_, where_.machine, link::k528Map(), &where_.revision);
+    } catch (const db::Error& e) {
+        std::fprintf(stderr, "k528 link: %s\n", e.what());
+        return false;
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "k528 link: %s\n", e.what());
+        return false;
+    }
+    if (plan.programs.empty())
+        std::fprintf(stderr, "k528 link: machine %s has no released program: pushing its C, R "
+                             "and messages only\n",
+                     where_.machine.c_str());
+    return true;
+}
+
+bool TransferRecord::mayPush(const link::PushPlan& plan) {
+    if (where_.machine.empty())
+        return true;
+    try {
+        const transfer::ReleaseCheck check = transfer::checkReleased(db_, where_.machine, plan);
+        if (check.overridden)
+            std::fprintf(stderr, "k528 link: pushing programs that are not released (machine %s "
+                                 "allows it: push.unreleased)\n",
+                         where_.machine.c_str());
+        if (!check.allowed)
+            std::fprintf(stderr, "k528 link: %s\nnothing was sent\n", check.message.c_str());
+        return check.allowed;
+    } catch (const db::Error& e) {
+        std::fprintf(stderr, "k528 link: %s; nothing was sent\n", e.what());
+        return false;
+    }
+}
+
+void TransferRecord::setIdentity(const std::string& identity) {
+    if (!identity.empty())
+        where_.controller += " (" + identity + ")";
+}
+
+void TransferRecord::record(const db::TransferEntry& e) {
+    try {
+        const db::TransferEntry stored = db_.recordTransfer(e);
+        std::fprintf(stderr, "on record: transfer %lld in %s\n", static_cast<long long>(stored.id),
+                     db_.location().text().c_str());
+    } catch (const db::Error& err) {
+        std::fprintf(stderr, "k528 link: the transfer was not recorded: %s\n", err.what());
+    }
+}
+
+void TransferRecord::recordPush(const link::RegisterMap& map, const link::PushPlan& plan,
+                                const link::PushReport& report, const link::LinkError& error) {
+    record(transfer::pushEntry(where_, map, plan, report, error));
+}
+
+void TransferRecord::recordPull(const link::RegisterMap& map, const link::PullResult& pulled,
+                                const link::LinkError& error) {
+    record(transfer::pullEntry(where_, map, pulled, error));
+}
+
+} // namespace k528::cli

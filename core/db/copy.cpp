@@ -1,0 +1,115 @@
+// db::Database::copyTo: a whole database into an empty one — SQLite to
+// PostgreSQL and back — row for row, ids kept, in one transaction of the
+// target (the one that creates its schema): all or nothing.
+#include "db/database.h"
+#include "db/database_impl.h"
+#include "db/postgres_store.h"
+#include "db/sqlite_store.h"
+
+namespace k528::db {
+
+namespace {
+
+// Every table of the schema, parents before children (foreign keys).
+constexpr std::string_view kTables[] = {
+    "meta",          "c_definitions", "machines",       "revisions",         "c_values",
+    "r_values",      "messages",      "plc_messages",   "settings",          "program_revisions",
+    "changes",       "audit",         "message_runs",   "message_history",   "program_states",
+    "transfers",     "transfer_items",
+};
+
+// The key that orders a table's rows (the same order on both backends).
+std::string_view orderOf(std::string_view table) {
+    if (table == "meta")
+        return "key";
+    if (table == "c_definitions")
+        return "number";
+    if (table == "revisions")
+        return "machine_id, revision";
+    if (table == "c_values" || table == "r_values" || table == "messages")
+        return "machine_id, number";
+    if (table == "plc_messages")
+        return "machine_id, grp, number";
+    if (table == "settings")
+        return "machine_id, position";
+    if (table == "changes")
+        return "machine_id, revision, seq";
+    if (table == "transfer_items")
+        return "transfer_id, seq";
+    return "id";
+}
+
+} // namespace
+
+CopyReport Database::copyTo(const Location& target, const OpenOptions& targetOptions) const {
+    Store& src = *d_->store;
+    const int latest = latestSchemaVersion();
+    if (src.schemaVersion() != latest)
+        throw Error(ErrorKind::Invalid, path().string() + " has schema version " +
+                                            std::to_string(src.schemaVersion()) +
+                                            "; a copy needs version " + std::to_string(latest) +
+                                            " (open it once with write access to upgrade it)");
+    if (target == location())
+        throw Error(ErrorKind::Invalid, "a database cannot be copied into itself");
+    CopyReport report;
+    report.target = target.text();
+    OpenOptions o = targetOptions;
+    o.requireEmpty = true;
+    o.seedBuiltins = false;
+    o.create = true;
+    o.readOnly = false;
+    o.migrations = schemaMigrations();
+    ReadSnapshot snapshot(src); // one state of the source for the whole copy
+    const Fill copyRows = [&](Store& dst) {
+        sql::Connection& from = src.connection();
+        sql::Connection& to = dst.connection();
+        // The new database's first rows (created_at, the definitions, its
+        // audit entry) give way to the source's.
+        for (auto t = std::rbegin(kTables); t != std::rend(kTables); ++t)
+            to.exec("DELETE FROM " + std::string(*t));
+        for (const std::string_view table : kTables) {
+            auto& q = from("SELECT * FROM " + std::string(table) + " ORDER BY " +
+                           std::string(orderOf(table)));
+            sql::Query* insert = nullptr;
+            std::int64_t n = 0;
+            while (q.step()) {
+                if (!insert) {
+                    std::string values;
+                    for (int i = 1; i <= q.columns(); ++i)
+                        values += (i > 1 ? ", ?" : "?") + std::to_string(i);
+                    insert = &to("INSERT INTO " + std::string(table) + " VALUES (" + values + ")");
+                }
+                insert->reset();
+                for (int i = 0; i < q.columns(); ++i)
+                    insert->bind(i + 1, q.value(i));
+                insert->run();
+                ++n;
+            }
+            q.reset();
+            report.rows += n;
+            if (table == "machines")
+                report.machines = n;
+            else if (table == "revisions")
+                report.revisions = n;
+            else if (table == "program_revisions")
+                report.programVersions = n;
+            else if (table == "program_states")
+                report.releases = n;
+            else if (table == "message_history")
+                report.messages = n;
+            else if (table == "audit")
+                report.audit = n;
+            else if (table == "transfers")
+                report.transfers = n;
+        }
+        dst.afterCopy();
+        return std::vector<std::string>{};
+    };
+    std::unique_ptr<Store> dst =
+        target.backend() == Backend::Postgres
+            ? std::unique_ptr<Store>(PostgresStore::open(target, o, copyRows))
+            : std::unique_ptr<Store>(SqliteStore::open(target.file(), o, copyRows));
+    return report;
+}
+
+} // namespace k528::db

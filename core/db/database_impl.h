@@ -1,0 +1,66 @@
+// What db::Database's parts share (internal to core/db): its state, the
+// roles an action needs, who writes, the machine a call names.
+#pragma once
+
+#include "db/database.h"
+#include "db/store.h"
+
+#include <unistd.h>
+
+namespace k528::db {
+
+struct Database::Impl {
+    std::unique_ptr<Store> store;
+    Clock clock;
+    Location location;
+};
+
+// The roles of docs/database.md (PostgreSQL): who may do what.
+inline constexpr std::string_view kTechnologist = "k528_technologist";
+inline constexpr std::string_view kOperator = "k528_operator";
+
+// Runs `f`; a refusal of the server's privileges becomes a DeniedError that
+// names the action and the role it needs.
+template <typename F>
+decltype(auto) asRole(Store& s, std::string_view action, std::string_view role, F&& f) {
+    try {
+        return f();
+    } catch (const DeniedError&) {
+        throw;
+    } catch (const Error& e) {
+        if (e.kind() != ErrorKind::Denied)
+            throw;
+        throw DeniedError(std::string(action), std::string(role), s.sessionUser(), s.rolesOfUser(),
+                          e.what());
+    }
+}
+
+// The author of a write: the one given, else PostgreSQL's user, else the OS user's.
+inline std::string authorOf(Store& s, const std::string& given) {
+    if (!given.empty())
+        return given;
+    std::string user = s.sessionUser();
+    return user.empty() ? defaultAuthor() : user;
+}
+
+inline std::string hostName() {
+    char buf[256] = {};
+    if (::gethostname(buf, sizeof buf - 1) != 0 || !buf[0])
+        return "unknown";
+    return buf;
+}
+
+inline MachineRow requireMachine(Store& s, std::string_view name) {
+    auto r = s.findMachine(name);
+    if (!r) {
+        std::string known;
+        for (const MachineInfo& m : s.machines())
+            known += (known.empty() ? "" : ", ") + m.name;
+        throw Error(ErrorKind::NoMachine,
+                    "no machine \"" + std::string(name) + "\" in " + s.path().string() +
+                        " (machines: " + (known.empty() ? "none" : known) + ")");
+    }
+    return *r;
+}
+
+} // namespace k528::db

@@ -1,0 +1,258 @@
+#include "db/postgres.h"
+
+#include <charconv>
+#include <cstring>
+#include <libpq-fe.h>
+
+namespace k528::db::sql {
+
+namespace {
+
+// Type oids of the integers (pg_type.h).
+constexpr Oid kInt8 = 20, kInt2 = 21, kInt4 = 23;
+
+ErrorKind kindOf(std::string_view state) {
+    if (state == "40001" || state == "40P01" || state == "55P03" || state == "57014")
+        return ErrorKind::Busy; // serialization, deadlock, lock or statement timeout
+    if (state == "42501")
+        return ErrorKind::Denied;
+    if (state == "25006")
+        return ErrorKind::ReadOnly;
+    if (state.substr(0, 2) == "23")
+        return ErrorKind::Invalid;
+    if (state.substr(0, 2) == "08" || state.substr(0, 2) == "53" || state.substr(0, 2) == "57" ||
+        state.substr(0, 2) == "58")
+        return ErrorKind::Io;
+    return ErrorKind::Sql;
+}
+
+std::string trimmed(const char* s) {
+    std::string t = s ? s : "";
+    while (!t.empty() && (t.back() == '\n' || t.back() == ' '))
+        t.pop_back();
+    return t;
+}
+
+// The server's notices (NOTICE: relation exists, …) are not the user's business.
+void quiet(void*, const PGresult*) {}
+
+} // namespace
+
+std::string postgresParameters(std::string_view text, int& count) {
+    std::string out;
+    out.reserve(text.size());
+    count = 0;
+    bool quoted = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\'')
+            quoted = !quoted;
+        if (!quoted && c == '?' && i + 1 < text.size() && text[i + 1] >= '0' && text[i + 1] <= '9') {
+            int n = 0;
+            std::size_t j = i + 1;
+            while (j < text.size() && text[j] >= '0' && text[j] <= '9')
+                n = n * 10 + (text[j++] - '0');
+            out += '$';
+            out += text.substr(i + 1, j - i - 1);
+            count = std::max(count, n);
+            i = j - 1;
+            continue;
+        }
+        out += c;
+    }
+    return out;
+}
+
+PgConnection::PgConnection(const std::string& uri, std::string where) : where_(std::move(where)) {
+    const char* keys[] = {"dbname", "application_name", "client_encoding", nullptr};
+    const char* values[] = {uri.c_str(), "K528 Studio", "UTF8", nullptr};
+    conn_ = PQconnectdbParams(keys, values, 1);
+    if (!conn_ || PQstatus(conn_) != CONNECTION_OK) {
+        const std::string why = conn_ ? trimmed(PQerrorMessage(conn_)) : "out of memory";
+        PQfinish(conn_);
+        conn_ = nullptr;
+        throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why);
+    }
+    PQsetNoticeReceiver(conn_, quiet, nullptr);
+}
+
+PgConnection::~PgConnection() {
+    cache_.clear();
+    PQfinish(conn_);
+}
+
+void PgConnection::fail(PGresult* r, std::string_view what) const {
+    const char* state = r ? PQresultErrorField(r, PG_DIAG_SQLSTATE) : nullptr;
+    std::string message = trimmed(r ? PQresultErrorMessage(r) : nullptr);
+    if (message.empty())
+        message = trimmed(PQerrorMessage(conn_));
+    if (r)
+        PQclear(r);
+    ErrorKind kind = state ? kindOf(state) : ErrorKind::Io;
+    if (PQstatus(conn_) != CONNECTION_OK) {
+        kind = ErrorKind::Io;
+        message = "the connection to the server was lost (" + message + ")";
+    }
+    if (message.rfind("ERROR:  ", 0) == 0)
+        message = message.substr(8);
+    std::string text = std::string(what) + ": " + message;
+    if (kind == ErrorKind::Busy)
+        text += " (another session kept the database locked longer than the busy timeout)";
+    throw Error(kind, text);
+}
+
+bool PgConnection::inTransaction() const {
+    const auto s = PQtransactionStatus(conn_);
+    return s == PQTRANS_INTRANS || s == PQTRANS_INERROR || s == PQTRANS_ACTIVE;
+}
+
+bool PgConnection::reconnectIfLost() {
+    if (PQstatus(conn_) == CONNECTION_OK)
+        return true;
+    cache_.clear(); // the session's prepared statements went with it
+    PQreset(conn_);
+    return PQstatus(conn_) == CONNECTION_OK;
+}
+
+PgQuery& PgConnection::operator()(std::string_view text) {
+    auto it = cache_.find(text);
+    if (it == cache_.end()) {
+        int params = 0;
+        const std::string converted = postgresParameters(text, params);
+        std::string name = "k528_" + std::to_string(++next_);
+        PGresult* r = PQprepare(conn_, name.c_str(), converted.c_str(), params, nullptr);
+        if (!r || PQresultStatus(r) != PGRES_COMMAND_OK)
+            fail(r, "preparing \"" + converted.substr(0, 80) + "\"");
+        PQclear(r);
+        it = cache_.emplace(std::string(text),
+                            std::make_unique<PgQuery>(*this, std::move(name), converted, params))
+                 .first;
+    }
+    it->second->reset();
+    return *it->second;
+}
+
+void PgConnection::exec(std::string_view text) {
+    const std::string s(text);
+    PGresult* r = PQexec(conn_, s.c_str());
+    const auto st = r ? PQresultStatus(r) : PGRES_FATAL_ERROR;
+    if (st != PGRES_COMMAND_OK && st != PGRES_TUPLES_OK)
+        fail(r, "running \"" + s.substr(0, 80) + (s.size() > 80 ? "…" : "") + "\"");
+    PQclear(r);
+}
+
+std::vector<PgConnection::Notification> PgConnection::notifications() {
+    std::vector<Notification> out;
+    // One round trip first: a notice of a commit that returned to its
+    // session before this call is in its way to us; the server sends it
+    // before it answers (it was signalled at that commit).
+    if (!inTransaction()) {
+        PGresult* r = PQexec(conn_, "SELECT 1");
+        PQclear(r);
+    }
+    if (!PQconsumeInput(conn_))
+        return out;
+    const int self = PQbackendPID(conn_);
+    while (PGnotify* n = PQnotifies(conn_)) {
+        out.push_back(Notification{n->relname, n->extra ? n->extra : "", n->be_pid == self});
+        PQfreemem(n);
+    }
+    return out;
+}
+
+PgQuery::PgQuery(PgConnection& c, std::string name, std::string text, int params)
+    : c_(c), name_(std::move(name)), text_(std::move(text)), params_(static_cast<std::size_t>(params)) {}
+
+// A prepared statement lives as long as its session: nothing to deallocate.
+PgQuery::~PgQuery() {
+    PQclear(result_);
+}
+
+Query& PgQuery::bind(int i, std::int64_t v) {
+    params_.at(static_cast<std::size_t>(i - 1)) = std::to_string(v);
+    return *this;
+}
+
+Query& PgQuery::bind(int i, std::string_view v) {
+    params_.at(static_cast<std::size_t>(i - 1)) = std::string(v);
+    return *this;
+}
+
+Query& PgQuery::bindNull(int i) {
+    params_.at(static_cast<std::size_t>(i - 1)).reset();
+    return *this;
+}
+
+void PgQuery::execute() {
+    std::vector<const char*> values(params_.size());
+    for (std::size_t i = 0; i < params_.size(); ++i)
+        values[i] = params_[i] ? params_[i]->c_str() : nullptr;
+    PQclear(result_);
+    result_ = PQexecPrepared(c_.handle(), name_.c_str(), static_cast<int>(values.size()),
+                             values.data(), nullptr, nullptr, 0);
+    const auto st = result_ ? PQresultStatus(result_) : PGRES_FATAL_ERROR;
+    if (st != PGRES_TUPLES_OK && st != PGRES_COMMAND_OK) {
+        PGresult* r = result_;
+        result_ = nullptr;
+        executed_ = false;
+        c_.fail(r, "running \"" + text_.substr(0, 80) + (text_.size() > 80 ? "…" : "") + "\"");
+    }
+    const char* n = PQcmdTuples(result_);
+    changes_ = n && *n ? std::strtoll(n, nullptr, 10) : 0;
+    executed_ = true;
+    row_ = -1;
+}
+
+bool PgQuery::step() {
+    if (!executed_)
+        execute();
+    ++row_;
+    return row_ < PQntuples(result_);
+}
+
+void PgQuery::reset() {
+    PQclear(result_);
+    result_ = nullptr;
+    executed_ = false;
+    row_ = -1;
+    for (auto& p : params_)
+        p.reset();
+}
+
+int PgQuery::columns() const {
+    return result_ ? PQnfields(result_) : 0;
+}
+
+bool PgQuery::isNull(int col) const {
+    return PQgetisnull(result_, row_, col) != 0;
+}
+
+std::int64_t PgQuery::i64(int col) const {
+    if (isNull(col))
+        return 0;
+    const char* s = PQgetvalue(result_, row_, col);
+    const std::size_t len = static_cast<std::size_t>(PQgetlength(result_, row_, col));
+    std::int64_t v = 0;
+    const auto [end, ec] = std::from_chars(s, s + len, v);
+    if (ec != std::errc() || end != s + len)
+        throw Error(ErrorKind::Corrupt, std::string("column ") + PQfname(result_, col) +
+                                            " holds \"" + std::string(s, len) +
+                                            "\" where an integer belongs");
+    return v;
+}
+
+std::string PgQuery::text(int col) const {
+    return std::string(PQgetvalue(result_, row_, col),
+                       static_cast<std::size_t>(PQgetlength(result_, row_, col)));
+}
+
+Value PgQuery::value(int col) const {
+    if (isNull(col))
+        return {};
+    const Oid t = PQftype(result_, col);
+    if (t == kInt8 || t == kInt4 || t == kInt2)
+        return i64(col);
+    return text(col);
+}
+
+} // namespace k528::db::sql

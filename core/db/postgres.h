@@ -1,0 +1,96 @@
+// libpq under the SQL seam (sql.h), used inside core/db only: a connection
+// to a PostgreSQL database and its prepared queries. A query's `?N` becomes
+// `$N`; every value goes and comes as text (integers parsed exactly); each
+// query text is prepared once per session. Failures are db::Error by the
+// server's SQLSTATE: Busy (lock timeout, serialization, deadlock), Denied
+// (insufficient privilege), Invalid (a constraint), Io (the connection),
+// ReadOnly (a read-only server), Sql (anything else).
+#pragma once
+
+#include "db/sql.h"
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+struct pg_conn;
+struct pg_result;
+
+namespace k528::db::sql {
+
+class PgConnection;
+
+class PgQuery final : public Query {
+public:
+    PgQuery(PgConnection& c, std::string name, std::string text, int params);
+    ~PgQuery() override;
+    PgQuery(const PgQuery&) = delete;
+    PgQuery& operator=(const PgQuery&) = delete;
+
+    using Query::bind;
+    Query& bind(int i, std::int64_t v) override;
+    Query& bind(int i, std::string_view v) override;
+    Query& bindNull(int i) override;
+    bool step() override;
+    void reset() override;
+    std::int64_t changes() const override { return changes_; }
+    int columns() const override;
+    std::int64_t i64(int col) const override;
+    std::string text(int col) const override;
+    bool isNull(int col) const override;
+    Value value(int col) const override;
+
+private:
+    void execute();
+    PgConnection& c_;
+    std::string name_, text_;
+    std::vector<std::optional<std::string>> params_;
+    pg_result* result_ = nullptr;
+    bool executed_ = false;
+    int row_ = -1;
+    std::int64_t changes_ = 0;
+};
+
+class PgConnection final : public Connection {
+public:
+    // Connects to `uri` (a libpq URI; `postgresql://` alone: the PG*
+    // variables). `where` names the database in messages. Throws Error(Io).
+    PgConnection(const std::string& uri, std::string where);
+    ~PgConnection() override;
+    PgConnection(const PgConnection&) = delete;
+    PgConnection& operator=(const PgConnection&) = delete;
+
+    Dialect dialect() const override { return Dialect::Postgres; }
+    PgQuery& operator()(std::string_view text) override;
+    void exec(std::string_view text) override;
+
+    pg_conn* handle() const { return conn_; }
+    const std::string& where() const { return where_; }
+    // Whether a transaction is open (or failed and not yet rolled back).
+    bool inTransaction() const;
+    // A lost connection is made again (its prepared queries forgotten);
+    // false when the server still does not answer.
+    bool reconnectIfLost();
+    // Notifications received so far, after one round trip (outside a
+    // transaction): (channel, payload, whether this session sent it).
+    struct Notification {
+        std::string channel, payload;
+        bool ours = false;
+    };
+    std::vector<Notification> notifications();
+
+    // Throws the db::Error of a failed result (and clears it).
+    [[noreturn]] void fail(pg_result* r, std::string_view what) const;
+
+private:
+    pg_conn* conn_ = nullptr;
+    std::string where_;
+    int next_ = 0;
+    std::map<std::string, std::unique_ptr<PgQuery>, std::less<>> cache_;
+};
+
+// `?1`, `?2`… as `$1`, `$2`… (outside quotes), and the highest number.
+std::string postgresParameters(std::string_view text, int& count);
+
+} // namespace k528::db::sql

@@ -1,0 +1,82 @@
+// The SQL seam of core/db's backends (internal to core/db): a prepared query
+// and a connection, implemented over SQLite (sqlite.h) and PostgreSQL
+// (postgres.h). The rows code (sql_store.h), the message history and the
+// copy of a whole database are written once against these, in the SQL both
+// speak: parameters are `?1`, `?2`… (PostgreSQL's connection turns them into
+// `$1`, `$2`…), ids come back with RETURNING, upserts are ON CONFLICT.
+// Every failure throws db::Error with the backend's message and what we were
+// doing.
+#pragma once
+
+#include "db/error.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace k528::db::sql {
+
+// A column's value as stored: NULL, an integer or a text.
+using Value = std::variant<std::monostate, std::int64_t, std::string>;
+
+enum class Dialect { Sqlite, Postgres };
+
+class Query {
+public:
+    virtual ~Query() = default;
+
+    // Parameters are 1-based (?1 is 1).
+    virtual Query& bind(int i, std::int64_t v) = 0;
+    virtual Query& bind(int i, std::string_view v) = 0;
+    virtual Query& bindNull(int i) = 0;
+    Query& bind(int i, int v) { return bind(i, static_cast<std::int64_t>(v)); }
+    Query& bind(int i, const std::string& v) { return bind(i, std::string_view(v)); }
+    Query& bind(int i, const char* v) { return bind(i, std::string_view(v)); }
+    Query& bind(int i, const std::optional<std::string>& v) {
+        return v ? bind(i, std::string_view(*v)) : bindNull(i);
+    }
+    Query& bind(int i, const Value& v);
+
+    // One step: true when a row is available, false when done.
+    virtual bool step() = 0;
+    // Steps to the end and resets (for statements without rows).
+    void run() {
+        while (step()) {
+        }
+        reset();
+    }
+    // Resets and clears the bindings, ready for the next use.
+    virtual void reset() = 0;
+    // Rows changed by the last run of an INSERT/UPDATE/DELETE.
+    virtual std::int64_t changes() const = 0;
+
+    virtual int columns() const = 0;
+    virtual std::int64_t i64(int col) const = 0;
+    int i32(int col) const { return static_cast<int>(i64(col)); }
+    virtual std::string text(int col) const = 0;
+    virtual bool isNull(int col) const = 0;
+    std::optional<std::string> optText(int col) const {
+        if (isNull(col))
+            return std::nullopt;
+        return text(col);
+    }
+    // The value with its stored type (for copying rows between backends).
+    virtual Value value(int col) const = 0;
+};
+
+class Connection {
+public:
+    virtual ~Connection() = default;
+    virtual Dialect dialect() const = 0;
+    // The prepared query of `text`, kept for the life of the connection,
+    // reset and without bindings.
+    virtual Query& operator()(std::string_view text) = 0;
+    // Runs SQL without results (may hold several statements).
+    virtual void exec(std::string_view text) = 0;
+    // The single integer a query returns.
+    std::int64_t queryInt(std::string_view text);
+};
+
+} // namespace k528::db::sql

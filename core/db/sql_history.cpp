@@ -1,0 +1,156 @@
+// The history of both backends: revisions, the changes each recorded and
+// every version of every program.
+#include "db/sha256.h"
+#include "db/sql_store.h"
+
+namespace k528::db {
+
+void SqlStore::insertRevision(std::int64_t id, int revision, const std::string& author,
+                                 const std::string& at, const std::string& summary,
+                                 const std::string& settingsOrder) {
+    auto& q = query("INSERT INTO revisions (machine_id, revision, author, at, summary, "
+                  "settings_order) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+    q.bind(1, id).bind(2, revision).bind(3, author).bind(4, at).bind(5, summary).bind(6, settingsOrder);
+    q.run();
+}
+
+void SqlStore::insertProgramVersion(std::int64_t id, const ProgramRow& v) {
+    auto& q = query("INSERT INTO program_revisions (machine_id, number, revision, text, "
+                  "sha256) VALUES (?1, ?2, ?3, ?4, ?5)");
+    q.bind(1, id).bind(2, v.number).bind(3, v.revision).bind(4, v.text).bind(5, v.sha256);
+    q.run();
+}
+
+void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) {
+    auto& q = query("INSERT INTO changes (machine_id, revision, seq, section, key, label, before, "
+                  "after) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+    q.bind(1, id)
+        .bind(2, revision)
+        .bind(3, seq)
+        .bind(4, profile::diffSectionName(c.section))
+        .bind(5, c.key)
+        .bind(6, c.label)
+        .bind(7, c.before)
+        .bind(8, c.after);
+    q.run();
+}
+
+std::vector<ChangeRow> SqlStore::changesUpTo(std::int64_t id, int revision) {
+    auto& q = query("SELECT section, key, after, revision FROM changes WHERE machine_id = ?1 AND "
+                  "revision <= ?2 AND section <> 'program' ORDER BY revision, seq");
+    q.bind(1, id).bind(2, revision);
+    std::vector<ChangeRow> out;
+    while (q.step()) {
+        ChangeRow r;
+        r.section = q.text(0);
+        r.key = q.text(1);
+        r.after = q.optText(2);
+        r.revision = q.i32(3);
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
+std::optional<std::string> SqlStore::settingsOrder(std::int64_t id, int revision) {
+    auto& q = query("SELECT settings_order FROM revisions WHERE machine_id = ?1 AND revision = ?2");
+    q.bind(1, id).bind(2, revision);
+    if (!q.step())
+        return std::nullopt;
+    std::string order = q.text(0);
+    q.reset();
+    return order;
+}
+
+std::vector<ProgramRow> SqlStore::programsAt(std::int64_t id, int revision) {
+    auto& q = query("SELECT p.number, p.text, p.sha256, p.revision FROM program_revisions p "
+                  "WHERE p.machine_id = ?1 AND p.revision = (SELECT max(q.revision) FROM "
+                  "program_revisions q WHERE q.machine_id = p.machine_id AND q.number = "
+                  "p.number AND q.revision <= ?2) AND p.text IS NOT NULL");
+    q.bind(1, id).bind(2, revision);
+    std::vector<ProgramRow> out;
+    while (q.step())
+        out.push_back(ProgramRow{q.i32(0), q.i32(3), q.optText(1), q.optText(2)});
+    return out;
+}
+
+std::vector<RevisionInfo> SqlStore::revisions(std::int64_t id) {
+    auto& q = query("SELECT r.revision, r.author, r.at, r.summary, (SELECT count(*) FROM changes c "
+                  "WHERE c.machine_id = r.machine_id AND c.revision = r.revision) FROM "
+                  "revisions r WHERE r.machine_id = ?1 ORDER BY r.revision DESC");
+    q.bind(1, id);
+    std::vector<RevisionInfo> out;
+    while (q.step())
+        out.push_back(RevisionInfo{q.i32(0), q.text(1), q.text(2), q.text(3), q.i32(4)});
+    return out;
+}
+
+std::vector<ChangeRow> SqlStore::history(std::int64_t id, int fromRevision,
+                                         const std::optional<std::string>& key) {
+    // Two texts rather than "(?3 IS NULL OR c.key = ?3)": each backend then
+    // plans one of them with the index on (machine, key, revision).
+    static constexpr std::string_view kSelect =
+        "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
+        "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision "
+        "WHERE c.machine_id = ?1 AND c.revision >= ?2";
+    static const std::string kAll = std::string(kSelect) + " ORDER BY c.revision DESC, c.seq";
+    static const std::string kOfKey =
+        std::string(kSelect) + " AND c.key = ?3 ORDER BY c.revision DESC, c.seq";
+    auto& q = query(key ? kOfKey : kAll);
+    q.bind(1, id).bind(2, fromRevision);
+    if (key)
+        q.bind(3, *key);
+    std::vector<ChangeRow> out;
+    while (q.step())
+        out.push_back(ChangeRow{q.i32(0), q.text(1), q.text(2), q.text(3), q.text(4), q.text(5),
+                                q.optText(6), q.optText(7)});
+    return out;
+}
+
+std::vector<ProgramRow> SqlStore::programVersions(std::int64_t id, int number) {
+    auto& q = query("SELECT revision, text, sha256 FROM program_revisions WHERE machine_id = ?1 "
+                  "AND number = ?2 ORDER BY revision DESC");
+    q.bind(1, id).bind(2, number);
+    std::vector<ProgramRow> out;
+    while (q.step())
+        out.push_back(ProgramRow{number, q.i32(0), q.optText(1), q.optText(2)});
+    return out;
+}
+
+std::optional<ProgramRow> SqlStore::programAt(std::int64_t id, int number, int revision) {
+    auto& q = query("SELECT revision, text, sha256 FROM program_revisions WHERE machine_id = ?1 AND "
+                  "number = ?2 AND revision <= ?3 ORDER BY revision DESC LIMIT 1");
+    q.bind(1, id).bind(2, number).bind(3, revision);
+    if (!q.step())
+        return std::nullopt;
+    ProgramRow r{number, q.i32(0), q.optText(1), q.optText(2)};
+    q.reset();
+    return r;
+}
+
+std::string SqlStore::checkRows() {
+    std::string problems;
+    const auto add = [&](const std::string& p) {
+        problems += (problems.empty() ? "" : "; ") + p;
+    };
+    {
+        auto& q = query("SELECT m.name, p.number, p.revision, p.text, p.sha256 FROM "
+                        "program_revisions p JOIN machines m ON m.id = p.machine_id WHERE "
+                        "p.text IS NOT NULL ORDER BY m.name, p.number, p.revision");
+        while (q.step())
+            if (sha256Hex(q.text(3)) != q.text(4))
+                add("machine " + q.text(0) + " program L" + std::to_string(q.i32(1)) +
+                    " of revision " + std::to_string(q.i32(2)) +
+                    " does not match its SHA-256 checksum");
+    }
+    auto& r = query("SELECT m.name, m.revision, (SELECT max(r.revision) FROM revisions r WHERE "
+                    "r.machine_id = m.id), (SELECT count(*) FROM revisions r WHERE r.machine_id = "
+                    "m.id) FROM machines m ORDER BY m.name");
+    while (r.step())
+        if (r.i64(1) != r.i64(2) || r.i64(1) != r.i64(3))
+            add("machine " + r.text(0) + " is at revision " + std::to_string(r.i64(1)) +
+                " but its history holds " + std::to_string(r.i64(3)) + " revisions up to " +
+                std::to_string(r.i64(2)));
+    return problems;
+}
+
+} // namespace k528::db

@@ -1,0 +1,161 @@
+#include "transfer/transfer.h"
+
+#include "db/sha256.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace k528::transfer {
+
+std::string crcText(std::uint32_t crc) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%08x", crc);
+    return buf;
+}
+
+namespace {
+
+std::string stateText(link::PushReport::State s) {
+    switch (s) {
+    case link::PushReport::State::New: return "new";
+    case link::PushReport::State::InDoubt: return "in-doubt";
+    case link::PushReport::State::AsItWas: break;
+    }
+    return "as-it-was";
+}
+
+// The CRC-32 of a block as its staged registers go to the controller.
+std::string blockCrc(const link::RegisterMap& map, link::BlockKind kind,
+                     const std::vector<std::uint16_t>& whole) {
+    return crcText(link::registersCrc(link::stagedRegisters(map, kind, whole)));
+}
+
+std::vector<std::uint16_t> rRegisters(const link::RegisterMap& map,
+                                      const std::array<std::int32_t, 300>& r) {
+    std::vector<std::uint16_t> regs;
+    for (int i = 0; i < map.rCount; ++i) {
+        const std::int32_t v = i < 300 ? r[static_cast<std::size_t>(i)] : 0;
+        regs.push_back(link::lowWord(v));
+        regs.push_back(link::highWord(v));
+    }
+    return regs;
+}
+
+db::TransferItem programItem(int n, const std::string& text, std::string state) {
+    return db::TransferItem{"program", n, crcText(link::crc32(text)), db::sha256Hex(text),
+                            std::move(state)};
+}
+
+db::TransferEntry entry(const Context& where, const char* direction) {
+    db::TransferEntry e;
+    e.machine = where.machine;
+    e.revision = where.revision;
+    e.controller = where.controller;
+    e.direction = direction;
+    return e;
+}
+
+} // namespace
+
+db::TransferEntry pushEntry(const Context& where, const link::RegisterMap& map,
+                            const link::PushPlan& plan, const link::PushReport& report,
+                            const link::LinkError& error) {
+    db::TransferEntry e = entry(where, "push");
+    for (const link::PushReport::Part& part : report.parts) {
+        const std::string state = stateText(part.state);
+        if (part.name == "C-parameters")
+            e.items.push_back({"c", 0, blockCrc(map, link::BlockKind::C, link::packC(map, plan.c)),
+                               std::nullopt, state});
+        else if (part.name.rfind("R-parameters", 0) == 0)
+            e.items.push_back({"r", 0, blockCrc(map, link::BlockKind::R, rRegisters(map, plan.r)),
+                               std::nullopt, state});
+        else if (part.name == "messages")
+            e.items.push_back({"messages", 0, crcText(link::crc32(plan.messagesText)), std::nullopt, state});
+        else if (part.name.rfind("program ", 0) == 0) {
+            const int n = std::stoi(part.name.substr(8));
+            e.items.push_back(programItem(n, plan.programs.at(n), state));
+        }
+    }
+    e.result = !error ? "ok" : report.anyNew() ? "partial" : "failed";
+    e.detail = !error ? "written and verified" : error.message + (report.parts.empty() ? "" : "; " + report.summary());
+    return e;
+}
+
+db::TransferEntry pullEntry(const Context& where, const link::RegisterMap& map,
+                            const link::PullResult& pulled, const link::LinkError& error) {
+    db::TransferEntry e = entry(where, "pull");
+    if (error) {
+        e.result = "failed";
+        e.detail = error.message;
+        return e;
+    }
+    e.items.push_back({"c", 0, blockCrc(map, link::BlockKind::C, link::packC(map, pulled.c)),
+                       std::nullopt, "read"});
+    e.items.push_back({"r", 0, blockCrc(map, link::BlockKind::R, rRegisters(map, pulled.r)),
+                       std::nullopt, "read"});
+    e.items.push_back({"messages", 0, crcText(link::crc32(pulled.messagesText)), std::nullopt, "read"});
+    for (const auto& [n, text] : pulled.programs)
+        e.items.push_back(programItem(n, text, "read"));
+    e.result = "ok";
+    e.detail = "read " + std::to_string(pulled.programs.size()) + " programs, C, R and the messages";
+    return e;
+}
+
+ReleaseCheck checkReleased(const db::Database& db, const std::string& machine,
+                           const link::PushPlan& plan) {
+    ReleaseCheck check;
+    const auto releases = db.programReleases(machine);
+    std::string lines;
+    for (const auto& [n, text] : plan.programs) {
+        const db::ProgramRelease* r = nullptr;
+        for (const auto& p : releases)
+            if (p.number == n)
+                r = &p;
+        if (r && r->releasedSha256 && *r->releasedSha256 == db::sha256Hex(text))
+            continue;
+        check.unreleased.push_back(n);
+        lines += "\n  L" + std::to_string(n) + ": " +
+                 (!r || !r->releasedRevision ? std::string(r ? db::programStateName(r->state) : "not in the database") +
+                                                   ", nothing of it released"
+                                             : "not the released version (revision " +
+                                                   std::to_string(*r->releasedRevision) + ")");
+    }
+    if (check.unreleased.empty())
+        return check;
+    const profile::MachineProfile p = db.loadMachine(machine);
+    bool settingAllows = false;
+    try {
+        settingAllows = p.simulation.getBool("push.unreleased", false);
+    } catch (const profile::SettingError&) {
+    }
+    if (settingAllows && db.mayActAs("k528_technologist")) {
+        check.overridden = true;
+        return check;
+    }
+    check.allowed = false;
+    check.message = "machine " + machine + ": a push takes released programs only; not released as they are:" +
+                    lines + "\nrelease them (k528 db release " + machine + " L<n>)" +
+                    (settingAllows ? ", or push as a technologist (the machine allows drafts: push.unreleased)"
+                                   : ", or let technologists push drafts: k528 db set " + machine +
+                                         " push.unreleased=true");
+    return check;
+}
+
+link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,
+                            const link::RegisterMap& map, int* revision) {
+    profile::MachineProfile p = db.loadMachine(machine);
+    const int rev = db.machine(machine)->revision;
+    p.programs.clear();
+    for (const db::ProgramRelease& r : db.programReleases(machine))
+        if (r.releasedRevision)
+            if (const auto text = db.programText(machine, r.number, *r.releasedRevision))
+                p.programs[r.number] = *text;
+    link::PushPlan plan;
+    if (const link::LinkError e = link::planMachineFile(map, p, plan))
+        throw std::runtime_error("machine " + machine + ": " + e.message);
+    if (revision)
+        *revision = rev;
+    return plan;
+}
+
+} // namespace k528::transfer

@@ -1,0 +1,69 @@
+// Every transfer on record (docs/database.md, *Transfers*): the log entries
+// of a push to and a pull from a controller, and the rule of what a push may
+// take — the small API the command line's `k528 link push/pull` and the
+// studio's Controller dock call around link::push / link::pull:
+//
+//   transfer::Context where{"grinder-205", revision, "/dev/ttyUSB0 address 1 (…)"};
+//   const auto check = transfer::checkReleased(db, "grinder-205", plan);
+//   if (!check.allowed) refuse(check.message);               // nothing is sent
+//   const link::LinkError e = link::push(l, plan, report);
+//   db.recordTransfer(transfer::pushEntry(where, l.map(), plan, report, e));
+//
+// Pure functions of their inputs (no clock, no I/O) but checkReleased and
+// releasedPlan, which read the database.
+#pragma once
+
+#include "db/database.h"
+#include "link/client.h"
+#include "link/register_map.h"
+
+#include <string>
+#include <vector>
+
+namespace k528::transfer {
+
+// Where a transfer went: the database's machine ("" when none was named) and
+// its revision, and the controller: its line and what it said it is.
+struct Context {
+    std::string machine;
+    int revision = 0;
+    std::string controller;
+};
+
+// "1a2b3c4d": a CRC-32 as the log keeps it.
+std::string crcText(std::uint32_t crc);
+
+// The entry of a push as it ended: each part of the plan (C, R, the
+// messages, each program) with the CRC-32 of the bytes the controller checks
+// and where the report says it ended (new, as it was, in doubt); result ok
+// (no error), partial (an error after some part was new) or failed.
+db::TransferEntry pushEntry(const Context& where, const link::RegisterMap& map,
+                            const link::PushPlan& plan, const link::PushReport& report,
+                            const link::LinkError& error);
+// The entry of a pull: C, R, the messages and each program read (state
+// "read"), or failed with the link's words.
+db::TransferEntry pullEntry(const Context& where, const link::RegisterMap& map,
+                            const link::PullResult& pulled, const link::LinkError& error);
+
+// Whether a push of `plan` for the database's `machine` may go: each of its
+// programs must be that machine's released version of the program (its
+// SHA-256). The machine's setting `push.unreleased=true` lets a user who may
+// act as k528_technologist push drafts too (on SQLite: everyone).
+struct ReleaseCheck {
+    bool allowed = true;
+    std::vector<int> unreleased; // programs of the plan that are not released as they are
+    bool overridden = false;     // unreleased ones allowed by the machine's setting
+    std::string message;         // why not, naming the programs and the command that releases them
+};
+ReleaseCheck checkReleased(const db::Database& db, const std::string& machine,
+                           const link::PushPlan& plan);
+
+// A push of the database's machine as released: its C, R and messages of
+// the current revision, its programs in their released versions only
+// (drafts and withdrawn ones left out). Throws db::Error; link errors of
+// planning (a stored machine the controller would refuse) as
+// std::runtime_error with the link's words.
+link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,
+                            const link::RegisterMap& map, int* revision = nullptr);
+
+} // namespace k528::transfer
