@@ -3760,6 +3760,34 @@ Its comment stays: %3</translation>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Stop computing the path (the view keeps what it shows)</source>
+        <translation>Stop computing the path (the view keeps what it shows)</translation>
+    </message>
+    <message>
+        <source>L%1: computing the path… %2 frames</source>
+        <translation>L%1: computing the path… %2 frames</translation>
+    </message>
+    <message>
+        <source>L%1: cutting the blank… %2 of %3 moves</source>
+        <translation>L%1: cutting the blank… %2 of %3 moves</translation>
+    </message>
+    <message>
+        <source>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</source>
+        <translation>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</translation>
+    </message>
+    <message>
+        <source>L%1: the path was not computed (cancelled)</source>
+        <translation>L%1: the path was not computed (cancelled)</translation>
+    </message>
+    <message>
+        <source>L%1: simulating the run…</source>
+        <translation>L%1: simulating the run…</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::backplot::VtkGlWidget</name>

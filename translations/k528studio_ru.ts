@@ -3760,6 +3760,34 @@ Its comment stays: %3</source>
         <source>%1 mm</source>
         <translation>%1 мм</translation>
     </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Stop computing the path (the view keeps what it shows)</source>
+        <translation>Прекратить расчёт траектории (вид остаётся прежним)</translation>
+    </message>
+    <message>
+        <source>L%1: computing the path… %2 frames</source>
+        <translation>L%1: расчёт траектории… %2 кадров</translation>
+    </message>
+    <message>
+        <source>L%1: cutting the blank… %2 of %3 moves</source>
+        <translation>L%1: съём материала… %2 из %3 перемещений</translation>
+    </message>
+    <message>
+        <source>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</source>
+        <translation>L%1 не заканчивается за %2 кадров (бесконечный цикл?): показана траектория этих кадров</translation>
+    </message>
+    <message>
+        <source>L%1: the path was not computed (cancelled)</source>
+        <translation>L%1: траектория не рассчитана (отменено)</translation>
+    </message>
+    <message>
+        <source>L%1: simulating the run…</source>
+        <translation>L%1: моделирование отработки…</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::backplot::VtkGlWidget</name>

@@ -18,9 +18,12 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QSocketNotifier>
 #include <QTimer>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <unistd.h>
 #include <variant>
 
 namespace k528::cli {
@@ -29,7 +32,7 @@ namespace k528::cli {
 int runServeQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
     options.insert(options.end(), {"--profile", "--db", "--keys"});
-    const Args args(argv, {}, options);
+    const Args args(argv, {"--stdin-keys"}, options);
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
@@ -106,6 +109,33 @@ int runServeQt(std::span<const std::string> argv) {
                      line->parity, line->stopBits);
     std::fflush(stderr);
 
+    // --stdin-keys: K923 keys read from standard input while serving, a line
+    // at a time (an instructor's script; a test or a benchmark that changes
+    // the controller's state at a moment it knows).
+    std::unique_ptr<QSocketNotifier> stdinKeys;
+    std::string typed;
+    if (args.has("--stdin-keys")) {
+        stdinKeys = std::make_unique<QSocketNotifier>(0, QSocketNotifier::Read);
+        QObject::connect(stdinKeys.get(), &QSocketNotifier::activated, [&] {
+            char buf[512];
+            const ssize_t n = ::read(0, buf, sizeof buf);
+            if (n <= 0) {
+                stdinKeys->setEnabled(false); // the end of the input: serving goes on
+                return;
+            }
+            typed.append(buf, static_cast<std::size_t>(n));
+            for (std::size_t eol; (eol = typed.find('\n')) != std::string::npos;) {
+                const std::string line = typed.substr(0, eol);
+                typed.erase(0, eol + 1);
+                for (const std::string& token : panel::splitKeys(line)) {
+                    if (const auto k = panel::parseKey(token))
+                        k923.press(*k);
+                    else
+                        std::fprintf(stderr, "k528 serve: unknown key '%s' on standard input: ignored\n", token.c_str());
+                }
+            }
+        });
+    }
     installStopSignals();
     QElapsedTimer clock;
     clock.start();
