@@ -7,6 +7,7 @@
 #include "constants/constants_model.h"
 #include "profile/builtin.h"
 #include "report.h"
+#include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 
 #include <QApplication>
@@ -40,7 +41,9 @@ int main(int argc, char** argv) {
     bench::Report report;
 
     SimulationSession session(profile::builtin(profile::kDefaultProfile));
-    ConstantsPane pane(session);
+    SimulatedController seamSim(session);
+    ViewedController seam(seamSim);
+    ConstantsPane pane(seam, session.simulation().profile());
     pane.resize(1250, 700);
     pane.show();
     QApplication::processEvents();

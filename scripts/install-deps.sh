@@ -17,6 +17,7 @@ packages=(
     libqscintilla2-qt6-dev qt6-charts-dev                 # program editor, oscilloscope
     libgl1-mesa-dri xvfb xauth                            # OpenGL in software, X server for GUI tests
     socat mbpoll                                          # serial-link test peers
+    libmosquitto-dev mosquitto mosquitto-clients          # MQTT: k528 shop publish; its test broker and subscriber
     python3-pymodbus python3-serial python3-serial-asyncio # a foreign Modbus RTU controller in tests
     dpkg-dev file                                         # packaging (dpkg-shlibdeps) and its tests
     clang libclang-rt-14-dev                              # libFuzzer targets (optional preset)

@@ -132,6 +132,21 @@
     </message>
 </context>
 <context>
+    <name>QDialog</name>
+    <message>
+        <source>%1 to the controller</source>
+        <translation>%1 to the controller</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>The controller already holds what %1 has: nothing changes.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each part is committed all or nothing and read back; a controller on the line must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Changes in the controller's memory: %1. Each part is committed all or nothing and read back; a controller on the line must be in F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+</context>
+<context>
     <name>QsciScintilla</name>
     <message>
         <source>&amp;Undo</source>
@@ -558,14 +573,6 @@
 <context>
     <name>k528::studio::ConstantsEditor</name>
     <message>
-        <source>a program is under way: the constants are changed when it has ended</source>
-        <translation>a program is under way: the constants are changed when it has ended</translation>
-    </message>
-    <message>
-        <source>an axis is moving: the constants are changed at standstill</source>
-        <translation>an axis is moving: the constants are changed at standstill</translation>
-    </message>
-    <message>
         <source>undo: %1</source>
         <translation>undo: %1</translation>
     </message>
@@ -767,6 +774,25 @@
         <source>Changes: %1</source>
         <translation>Changes: %1</translation>
     </message>
+    <message>
+        <source>The constants of the controller on the line, read every 10 s. A change is written to it at once and kept in the database.</source>
+        <translation>The constants of the controller on the line, read every 10 s. A change is written to it at once and kept in the database.</translation>
+    </message>
+    <message>
+        <source>The constants of the controller on the line, read every 10 s. They cannot be changed now: %1.</source>
+        <translation>The constants of the controller on the line, read every 10 s. They cannot be changed now: %1.</translation>
+    </message>
+    <message>
+        <source>sending them to the controller...</source>
+        <translation>sending them to the controller...</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Controller</name>
+    <message>
+        <source>The controller has not answered since %1: the values shown are its last, stale; the line is tried again by itself</source>
+        <translation>The controller has not answered since %1: the values shown are its last, stale; the line is tried again by itself</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ControllerDock</name>
@@ -859,10 +885,6 @@
         <translation>Cancel</translation>
     </message>
     <message>
-        <source>Show on the K923, Program, messages and axes</source>
-        <translation>Show on the K923, Program, messages and axes</translation>
-    </message>
-    <message>
         <source>Disconnect</source>
         <translation>Disconnect</translation>
     </message>
@@ -885,10 +907,6 @@
     <message>
         <source>Connected: %1</source>
         <translation>Connected: %1</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
-        <translation>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</translation>
     </message>
     <message>
         <source>memory read</source>
@@ -967,18 +985,6 @@
         <translation>Reading the controller's memory to show what %1 changes...</translation>
     </message>
     <message>
-        <source>Push %1 to the controller</source>
-        <translation>Push %1 to the controller</translation>
-    </message>
-    <message>
-        <source>The controller already holds what %1 has: nothing changes.</source>
-        <translation>The controller already holds what %1 has: nothing changes.</translation>
-    </message>
-    <message>
-        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
-        <translation>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</translation>
-    </message>
-    <message>
         <source>Push</source>
         <translation>Push</translation>
     </message>
@@ -997,10 +1003,6 @@
     <message>
         <source>Cancelling at the next exchange...</source>
         <translation>Cancelling at the next exchange...</translation>
-    </message>
-    <message>
-        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
-        <translation>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</translation>
     </message>
     <message>
         <source>power-on</source>
@@ -1061,6 +1063,78 @@
     <message>
         <source>Choose the controller's port, speed, parity and address, then Connect.</source>
         <translation>Choose the controller's port, speed, parity and address, then Connect.</translation>
+    </message>
+    <message>
+        <source>Clear the C area (all constants 0)...</source>
+        <translation>Clear the C area (all constants 0)...</translation>
+    </message>
+    <message>
+        <source>Clear the R area (all R-parameters 0)...</source>
+        <translation>Clear the R area (all R-parameters 0)...</translation>
+    </message>
+    <message>
+        <source>Frame log...</source>
+        <translation>Frame log...</translation>
+    </message>
+    <message>
+        <source>Save every frame of the line (time, direction, bytes, CRC) to a file</source>
+        <translation>Save every frame of the line (time, direction, bytes, CRC) to a file</translation>
+    </message>
+    <message>
+        <source>Show it on every view of the window</source>
+        <translation>Show it on every view of the window</translation>
+    </message>
+    <message>
+        <source>Push %1</source>
+        <translation>Push %1</translation>
+    </message>
+    <message>
+        <source>Save the frame log</source>
+        <translation>Save the frame log</translation>
+    </message>
+    <message>
+        <source>Text (*.txt);;All files (*)</source>
+        <translation>Text (*.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <source>The frame log was not saved: %1</source>
+        <translation>The frame log was not saved: %1</translation>
+    </message>
+    <message>
+        <source>The frame log saved to %1 (%2 frames)</source>
+        <translation>The frame log saved to %1 (%2 frames)</translation>
+    </message>
+    <message>
+        <source>the C area</source>
+        <translation>the C area</translation>
+    </message>
+    <message>
+        <source>the R area</source>
+        <translation>the R area</translation>
+    </message>
+    <message>
+        <source>%1 was not cleared: %2</source>
+        <translation>%1 was not cleared: %2</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Clear</translation>
+    </message>
+    <message>
+        <source>Clear %1 of %2? Every value becomes 0; the database keeps what it had.</source>
+        <translation>Clear %1 of %2? Every value becomes 0; the database keeps what it had.</translation>
+    </message>
+    <message>
+        <source>%1 cleared</source>
+        <translation>%1 cleared</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 timeouts, %4 CRC errors, %5 bad replies, %6 exceptions%7, %8 retries; round trip median %9 ms, p95 %10 ms; line busy %11 %</source>
+        <translation>%1: %2 answers, %3 timeouts, %4 CRC errors, %5 bad replies, %6 exceptions%7, %8 retries; round trip median %9 ms, p95 %10 ms; line busy %11 %</translation>
+    </message>
+    <message>
+        <source>Why: %1</source>
+        <translation>Why: %1</translation>
     </message>
 </context>
 <context>
@@ -1200,6 +1274,10 @@
     <message>
         <source>RESET and ESC: end the program and acknowledge the messages</source>
         <translation>RESET and ESC: end the program and acknowledge the messages</translation>
+    </message>
+    <message>
+        <source>the file</source>
+        <translation>the file</translation>
     </message>
 </context>
 <context>
@@ -1724,6 +1802,70 @@ Its comment stays: %3</translation>
         <source>%1 (sample)</source>
         <translation>%1 (sample)</translation>
     </message>
+    <message>
+        <source>The controller is busy with a transfer: send again when it has ended</source>
+        <translation>The controller is busy with a transfer: send again when it has ended</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Reading the controller's memory to show what %1 changes...</translation>
+    </message>
+    <message>
+        <source>%1 was not sent: the controller's memory could not be read (%2)</source>
+        <translation>%1 was not sent: the controller's memory could not be read (%2)</translation>
+    </message>
+    <message>
+        <source>Send %1</source>
+        <translation>Send %1</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Send</translation>
+    </message>
+    <message>
+        <source>%1 not sent; nothing changed</source>
+        <translation>%1 not sent; nothing changed</translation>
+    </message>
+    <message>
+        <source>Sending %1 to the controller...</source>
+        <translation>Sending %1 to the controller...</translation>
+    </message>
+    <message>
+        <source>Sent %1 to the controller, with warnings: %2</source>
+        <translation>Sent %1 to the controller, with warnings: %2</translation>
+    </message>
+    <message>
+        <source>%1 was not sent: %2</source>
+        <translation>%1 was not sent: %2</translation>
+    </message>
+    <message>
+        <source>The controller is busy with a transfer: open again when it has ended</source>
+        <translation>The controller is busy with a transfer: open again when it has ended</translation>
+    </message>
+    <message>
+        <source>Reading the programs of the controller...</source>
+        <translation>Reading the programs of the controller...</translation>
+    </message>
+    <message>
+        <source>The programs of the controller could not be read: %1</source>
+        <translation>The programs of the controller could not be read: %1</translation>
+    </message>
+    <message>
+        <source>Opened the %1 programs of the controller (%2)</source>
+        <translation>Opened the %1 programs of the controller (%2)</translation>
+    </message>
+    <message>
+        <source>The file's programs and messages into the controller shown, after a preview of what changes</source>
+        <translation>The file's programs and messages into the controller shown, after a preview of what changes</translation>
+    </message>
+    <message>
+        <source>Open from the controller</source>
+        <translation>Open from the controller</translation>
+    </message>
+    <message>
+        <source>The programs and messages of the controller shown as a new file</source>
+        <translation>The programs and messages of the controller shown as a new file</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::FrameMaster</name>
@@ -2132,6 +2274,14 @@ Its comment stays: %3</translation>
         <source>Message history</source>
         <translation>Message history</translation>
     </message>
+    <message>
+        <source>A real controller's messages are acknowledged on its own K923 (ESC): the link carries no keys</source>
+        <translation>A real controller's messages are acknowledged on its own K923 (ESC): the link carries no keys</translation>
+    </message>
+    <message>
+        <source>The messages of the controller on the line, recorded as they are read (every %1 ms) with this PC's time; they are acknowledged on its own K923.</source>
+        <translation>The messages of the controller on the line, recorded as they are read (every %1 ms) with this PC's time; they are acknowledged on its own K923.</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::K923Keys</name>
@@ -2359,6 +2509,58 @@ Its comment stays: %3</translation>
     <message>
         <source>R-parameters</source>
         <translation>R-parameters</translation>
+    </message>
+    <message>
+        <source>the controller is not connected</source>
+        <translation>the controller is not connected</translation>
+    </message>
+    <message>
+        <source>cancelled; what was not committed is as it was</source>
+        <translation>cancelled; what was not committed is as it was</translation>
+    </message>
+    <message>
+        <source>the link's map carries no LCD text, no keys, no DAC or servo-tick data</source>
+        <translation>the link's map carries no LCD text, no keys, no DAC or servo-tick data</translation>
+    </message>
+    <message>
+        <source>a transfer is under way on the line</source>
+        <translation>a transfer is under way on the line</translation>
+    </message>
+    <message>
+        <source>R%1 is the positioner's own: the PC does not write it (it writes %2)</source>
+        <translation>R%1 is the positioner's own: the PC does not write it (it writes %2)</translation>
+    </message>
+    <message>
+        <source>R%1 is read only over the link: the PC writes %2</source>
+        <translation>R%1 is read only over the link: the PC writes %2</translation>
+    </message>
+    <message>
+        <source>C%1 has no address in the positioner (table Е.1): it is not written</source>
+        <translation>C%1 has no address in the positioner (table Е.1): it is not written</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>power-on</translation>
+    </message>
+    <message>
+        <source>the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose it in its menu on the K923</source>
+        <translation>the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose it in its menu on the K923</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ» (mode %1 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on its K923 and choose «РАБОТА С ПЭВМ»</source>
+        <translation>the controller is not in F7 «РАБОТА С ПЭВМ» (mode %1 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on its K923 and choose «РАБОТА С ПЭВМ»</translation>
+    </message>
+    <message>
+        <source>%1: the controller is not connected</source>
+        <translation>%1: the controller is not connected</translation>
+    </message>
+    <message>
+        <source>clear C</source>
+        <translation>clear C</translation>
+    </message>
+    <message>
+        <source>clear R</source>
+        <translation>clear R</translation>
     </message>
 </context>
 <context>
@@ -2712,6 +2914,34 @@ Its comment stays: %3</translation>
     <message>
         <source>Debugger</source>
         <translation>Debugger</translation>
+    </message>
+    <message>
+        <source>This control panel is the simulated machine's: the controller on the line is worked from its own machine's panel (its state is in the other views).</source>
+        <translation>This control panel is the simulated machine's: the controller on the line is worked from its own machine's panel (its state is in the other views).</translation>
+    </message>
+    <message>
+        <source>The debugger steps programs on the simulated machine; the controller on the line runs them itself. Show the simulation again (Controller dock) to debug.</source>
+        <translation>The debugger steps programs on the simulated machine; the controller on the line runs them itself. Show the simulation again (Controller dock) to debug.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 cannot be read: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to keep it in the database...</source>
+        <translation>Reading the controller's memory to keep it in the database...</translation>
+    </message>
+    <message>
+        <source> — stale since %1</source>
+        <translation> — stale since %1</translation>
+    </message>
+    <message>
+        <source>K923: LEDs only (no LCD text or keys over the link)</source>
+        <translation>K923: LEDs only (no LCD text or keys over the link)</translation>
+    </message>
+    <message>
+        <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
+        <translation>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</translation>
     </message>
 </context>
 <context>
@@ -3184,6 +3414,18 @@ Its comment stays: %3</translation>
         <source>Presets loaded into the controller: %1</source>
         <translation>Presets loaded into the controller: %1</translation>
     </message>
+    <message>
+        <source>The R-parameters of the controller on the line, all read every 2.5 s. R0..R231 are written to it at once (not R158, R222, R223).</source>
+        <translation>The R-parameters of the controller on the line, all read every 2.5 s. R0..R231 are written to it at once (not R158, R222, R223).</translation>
+    </message>
+    <message>
+        <source>The R-parameters of the controller on the line, all read every 2.5 s. They cannot be changed now: %1.</source>
+        <translation>The R-parameters of the controller on the line, all read every 2.5 s. They cannot be changed now: %1.</translation>
+    </message>
+    <message>
+        <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
+        <translation>Presets loaded into the controller: %1 of %2; R%3 not: %4</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ScopeView</name>
@@ -3298,6 +3540,18 @@ Its comment stays: %3</translation>
     <message>
         <source>Axis Z</source>
         <translation>Axis Z</translation>
+    </message>
+    <message>
+        <source>Live at %1 samples a second: the link's poll of the controller's positions and following errors (the setpoint is position + error; no DAC on the link).</source>
+        <translation>Live at %1 samples a second: the link's poll of the controller's positions and following errors (the setpoint is position + error; no DAC on the link).</translation>
+    </message>
+    <message>
+        <source>Every servo tick of the simulated machine (%1 samples a second).</source>
+        <translation>Every servo tick of the simulated machine (%1 samples a second).</translation>
+    </message>
+    <message>
+        <source>The link's map carries no DAC code: the simulated machine's only</source>
+        <translation>The link's map carries no DAC code: the simulated machine's only</translation>
     </message>
 </context>
 <context>
@@ -3583,8 +3837,16 @@ Its comment stays: %3</translation>
         <translation>Follow the machine</translation>
     </message>
     <message>
-        <source>While the session's machine runs a program, its path grows here live</source>
-        <translation>While the session's machine runs a program, its path grows here live</translation>
+        <source>The actual path grows from the controller's live positions, read %1 times a second; a program's path once its text is read from the controller.</source>
+        <translation>The actual path grows from the controller's live positions, read %1 times a second; a program's path once its text is read from the controller.</translation>
+    </message>
+    <message>
+        <source>Reading L%1 from the controller for its path...</source>
+        <translation>Reading L%1 from the controller for its path...</translation>
+    </message>
+    <message>
+        <source>While the controller shown runs a program, its path grows here live</source>
+        <translation>While the controller shown runs a program, its path grows here live</translation>
     </message>
 </context>
 <context>
@@ -3660,6 +3922,34 @@ Its comment stays: %3</translation>
     <message>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Stop computing the path (the view keeps what it shows)</source>
+        <translation>Stop computing the path (the view keeps what it shows)</translation>
+    </message>
+    <message>
+        <source>L%1: computing the path… %2 frames</source>
+        <translation>L%1: computing the path… %2 frames</translation>
+    </message>
+    <message>
+        <source>L%1: cutting the blank… %2 of %3 moves</source>
+        <translation>L%1: cutting the blank… %2 of %3 moves</translation>
+    </message>
+    <message>
+        <source>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</source>
+        <translation>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</translation>
+    </message>
+    <message>
+        <source>L%1: the path was not computed (cancelled)</source>
+        <translation>L%1: the path was not computed (cancelled)</translation>
+    </message>
+    <message>
+        <source>L%1: simulating the run…</source>
+        <translation>L%1: simulating the run…</translation>
     </message>
 </context>
 <context>

@@ -132,6 +132,21 @@
     </message>
 </context>
 <context>
+    <name>QDialog</name>
+    <message>
+        <source>%1 to the controller</source>
+        <translation>%1 в контроллер</translation>
+    </message>
+    <message>
+        <source>The controller already holds what %1 has: nothing changes.</source>
+        <translation>Контроллер уже хранит то, что есть в %1: ничего не изменится.</translation>
+    </message>
+    <message>
+        <source>Changes in the controller's memory: %1. Each part is committed all or nothing and read back; a controller on the line must be in F7 «РАБОТА С ПЭВМ».</source>
+        <translation>Изменений в памяти контроллера: %1. Каждая часть записывается целиком или никак и считывается обратно; контроллер на линии должен быть в F7 «РАБОТА С ПЭВМ».</translation>
+    </message>
+</context>
+<context>
     <name>QsciScintilla</name>
     <message>
         <source>&amp;Undo</source>
@@ -558,14 +573,6 @@
 <context>
     <name>k528::studio::ConstantsEditor</name>
     <message>
-        <source>a program is under way: the constants are changed when it has ended</source>
-        <translation>выполняется программа: параметры станка меняют после её окончания</translation>
-    </message>
-    <message>
-        <source>an axis is moving: the constants are changed at standstill</source>
-        <translation>ось движется: параметры станка меняют в останове</translation>
-    </message>
-    <message>
         <source>undo: %1</source>
         <translation>отмена: %1</translation>
     </message>
@@ -767,6 +774,25 @@
         <source>Changes: %1</source>
         <translation>Изменений: %1</translation>
     </message>
+    <message>
+        <source>The constants of the controller on the line, read every 10 s. A change is written to it at once and kept in the database.</source>
+        <translation>Константы контроллера на линии, считываются каждые 10 с. Изменение сразу записывается в него и сохраняется в базе данных.</translation>
+    </message>
+    <message>
+        <source>The constants of the controller on the line, read every 10 s. They cannot be changed now: %1.</source>
+        <translation>Константы контроллера на линии, считываются каждые 10 с. Изменить их сейчас нельзя: %1.</translation>
+    </message>
+    <message>
+        <source>sending them to the controller...</source>
+        <translation>передача в контроллер...</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::Controller</name>
+    <message>
+        <source>The controller has not answered since %1: the values shown are its last, stale; the line is tried again by itself</source>
+        <translation>Контроллер не отвечает с %1: показаны его последние, устаревшие значения; связь восстанавливается автоматически</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ControllerDock</name>
@@ -859,10 +885,6 @@
         <translation>Отмена</translation>
     </message>
     <message>
-        <source>Show on the K923, Program, messages and axes</source>
-        <translation>Показывать на К923, в программе, сообщениях и осях</translation>
-    </message>
-    <message>
         <source>Disconnect</source>
         <translation>Отключиться</translation>
     </message>
@@ -885,10 +907,6 @@
     <message>
         <source>Connected: %1</source>
         <translation>Подключено: %1</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;The controller does not answer:&lt;/b&gt; %1</source>
-        <translation>&lt;b&gt;Контроллер не отвечает:&lt;/b&gt; %1</translation>
     </message>
     <message>
         <source>memory read</source>
@@ -967,18 +985,6 @@
         <translation>Считывание памяти контроллера, чтобы показать, что изменит %1...</translation>
     </message>
     <message>
-        <source>Push %1 to the controller</source>
-        <translation>Передать %1 в контроллер</translation>
-    </message>
-    <message>
-        <source>The controller already holds what %1 has: nothing changes.</source>
-        <translation>Контроллер уже хранит то, что есть в %1: ничего не изменится.</translation>
-    </message>
-    <message>
-        <source>Changes in the controller's memory: %1. Each program is committed all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».</source>
-        <translation>Изменений в памяти контроллера: %1. Каждая программа записывается целиком или никак и проверяется чтением; контроллер должен быть в F7 «РАБОТА С ПЭВМ».</translation>
-    </message>
-    <message>
         <source>Push</source>
         <translation>Передать</translation>
     </message>
@@ -997,10 +1003,6 @@
     <message>
         <source>Cancelling at the next exchange...</source>
         <translation>Отмена при следующем обмене...</translation>
-    </message>
-    <message>
-        <source>%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, %5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %</source>
-        <translation>%1: ответов %2, без ответа %3 (так кончается повреждённый кадр), неверных ответов %4, исключений %5, повторов %6; время обмена %7 мс (среднее %8 мс); загрузка линии %9 %</translation>
     </message>
     <message>
         <source>power-on</source>
@@ -1061,6 +1063,78 @@
     <message>
         <source>Choose the controller's port, speed, parity and address, then Connect.</source>
         <translation>Выберите порт контроллера, скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
+    </message>
+    <message>
+        <source>Clear the C area (all constants 0)...</source>
+        <translation>Очистить область C (все константы 0)...</translation>
+    </message>
+    <message>
+        <source>Clear the R area (all R-parameters 0)...</source>
+        <translation>Очистить область R (все R-параметры 0)...</translation>
+    </message>
+    <message>
+        <source>Frame log...</source>
+        <translation>Журнал кадров...</translation>
+    </message>
+    <message>
+        <source>Save every frame of the line (time, direction, bytes, CRC) to a file</source>
+        <translation>Сохранить каждый кадр линии (время, направление, байты, CRC) в файл</translation>
+    </message>
+    <message>
+        <source>Show it on every view of the window</source>
+        <translation>Показывать его во всех панелях окна</translation>
+    </message>
+    <message>
+        <source>Push %1</source>
+        <translation>Записать %1</translation>
+    </message>
+    <message>
+        <source>Save the frame log</source>
+        <translation>Сохранение журнала кадров</translation>
+    </message>
+    <message>
+        <source>Text (*.txt);;All files (*)</source>
+        <translation>Текст (*.txt);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>The frame log was not saved: %1</source>
+        <translation>Журнал кадров не сохранён: %1</translation>
+    </message>
+    <message>
+        <source>The frame log saved to %1 (%2 frames)</source>
+        <translation>Журнал кадров сохранён в %1 (кадров: %2)</translation>
+    </message>
+    <message>
+        <source>the C area</source>
+        <translation>область C</translation>
+    </message>
+    <message>
+        <source>the R area</source>
+        <translation>область R</translation>
+    </message>
+    <message>
+        <source>%1 was not cleared: %2</source>
+        <translation>%1 не очищена: %2</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Очистка</translation>
+    </message>
+    <message>
+        <source>Clear %1 of %2? Every value becomes 0; the database keeps what it had.</source>
+        <translation>Очистить %1 контроллера %2? Все значения станут 0; база данных сохранит то, что в ней было.</translation>
+    </message>
+    <message>
+        <source>%1 cleared</source>
+        <translation>%1 очищена</translation>
+    </message>
+    <message>
+        <source>%1: %2 answers, %3 timeouts, %4 CRC errors, %5 bad replies, %6 exceptions%7, %8 retries; round trip median %9 ms, p95 %10 ms; line busy %11 %</source>
+        <translation>%1: ответов %2, тайм-аутов %3, ошибок CRC %4, неверных ответов %5, исключений %6%7, повторов %8; время обмена: медиана %9 мс, p95 %10 мс; загрузка линии %11 %</translation>
+    </message>
+    <message>
+        <source>Why: %1</source>
+        <translation>Причина: %1</translation>
     </message>
 </context>
 <context>
@@ -1200,6 +1274,10 @@
     <message>
         <source>RESET and ESC: end the program and acknowledge the messages</source>
         <translation>«Сброс» и ESC: прервать программу и квитировать сообщения</translation>
+    </message>
+    <message>
+        <source>the file</source>
+        <translation>файл</translation>
     </message>
 </context>
 <context>
@@ -1724,6 +1802,70 @@ Its comment stays: %3</source>
         <source>%1 (sample)</source>
         <translation>%1 (пример)</translation>
     </message>
+    <message>
+        <source>The controller is busy with a transfer: send again when it has ended</source>
+        <translation>Контроллер занят передачей: отправьте снова, когда она закончится</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to show what %1 changes...</source>
+        <translation>Считывание памяти контроллера, чтобы показать, что изменит %1...</translation>
+    </message>
+    <message>
+        <source>%1 was not sent: the controller's memory could not be read (%2)</source>
+        <translation>%1 не отправлен: память контроллера не считана (%2)</translation>
+    </message>
+    <message>
+        <source>Send %1</source>
+        <translation>Отправка %1</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Отправить</translation>
+    </message>
+    <message>
+        <source>%1 not sent; nothing changed</source>
+        <translation>%1 не отправлен; ничего не изменилось</translation>
+    </message>
+    <message>
+        <source>Sending %1 to the controller...</source>
+        <translation>Отправка %1 в контроллер...</translation>
+    </message>
+    <message>
+        <source>Sent %1 to the controller, with warnings: %2</source>
+        <translation>%1 отправлен в контроллер, с предупреждениями: %2</translation>
+    </message>
+    <message>
+        <source>%1 was not sent: %2</source>
+        <translation>%1 не отправлен: %2</translation>
+    </message>
+    <message>
+        <source>The controller is busy with a transfer: open again when it has ended</source>
+        <translation>Контроллер занят передачей: откройте снова, когда она закончится</translation>
+    </message>
+    <message>
+        <source>Reading the programs of the controller...</source>
+        <translation>Чтение программ контроллера...</translation>
+    </message>
+    <message>
+        <source>The programs of the controller could not be read: %1</source>
+        <translation>Программы контроллера не считаны: %1</translation>
+    </message>
+    <message>
+        <source>Opened the %1 programs of the controller (%2)</source>
+        <translation>Открыты программы контроллера (%2): %1</translation>
+    </message>
+    <message>
+        <source>The file's programs and messages into the controller shown, after a preview of what changes</source>
+        <translation>Программы и сообщения файла — в показываемый контроллер, после просмотра изменений</translation>
+    </message>
+    <message>
+        <source>Open from the controller</source>
+        <translation>Открыть из контроллера</translation>
+    </message>
+    <message>
+        <source>The programs and messages of the controller shown as a new file</source>
+        <translation>Программы и сообщения показываемого контроллера — новым файлом</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::FrameMaster</name>
@@ -2132,6 +2274,14 @@ Its comment stays: %3</source>
         <source>Message history</source>
         <translation>Журнал сообщений</translation>
     </message>
+    <message>
+        <source>A real controller's messages are acknowledged on its own K923 (ESC): the link carries no keys</source>
+        <translation>Сообщения реального контроллера сбрасываются на его собственном K923 (ESC): по линии клавиши не передаются</translation>
+    </message>
+    <message>
+        <source>The messages of the controller on the line, recorded as they are read (every %1 ms) with this PC's time; they are acknowledged on its own K923.</source>
+        <translation>Сообщения контроллера на линии, записываются по мере чтения (каждые %1 мс) со временем этой ПЭВМ; сбрасываются на его собственном K923.</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::K923Keys</name>
@@ -2359,6 +2509,58 @@ Its comment stays: %3</source>
     <message>
         <source>R-parameters</source>
         <translation>R-параметры</translation>
+    </message>
+    <message>
+        <source>the controller is not connected</source>
+        <translation>контроллер не подключён</translation>
+    </message>
+    <message>
+        <source>cancelled; what was not committed is as it was</source>
+        <translation>отменено; то, что не было записано, осталось как было</translation>
+    </message>
+    <message>
+        <source>the link's map carries no LCD text, no keys, no DAC or servo-tick data</source>
+        <translation>карта линии не содержит текста ЖКИ, клавиш, кодов ЦАП и данных каждого такта</translation>
+    </message>
+    <message>
+        <source>a transfer is under way on the line</source>
+        <translation>по линии идёт передача</translation>
+    </message>
+    <message>
+        <source>R%1 is the positioner's own: the PC does not write it (it writes %2)</source>
+        <translation>R%1 — собственный параметр позиционера: ПЭВМ его не записывает (она записывает %2)</translation>
+    </message>
+    <message>
+        <source>R%1 is read only over the link: the PC writes %2</source>
+        <translation>R%1 по линии только читается: ПЭВМ записывает %2</translation>
+    </message>
+    <message>
+        <source>C%1 has no address in the positioner (table Е.1): it is not written</source>
+        <translation>У C%1 нет адреса в позиционере (таблица Е.1): он не записывается</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>включение</translation>
+    </message>
+    <message>
+        <source>the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose it in its menu on the K923</source>
+        <translation>контроллер в F7 УПРАВЛЕНИЕ ДАННЫМИ, но не в «РАБОТА С ПЭВМ»: выберите этот пункт в его меню на K923</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ» (mode %1 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on its K923 and choose «РАБОТА С ПЭВМ»</source>
+        <translation>контроллер не в F7 «РАБОТА С ПЭВМ» (сейчас режим %1): нажмите F7 (УПРАВЛЕНИЕ ДАННЫМИ) на его K923 и выберите «РАБОТА С ПЭВМ»</translation>
+    </message>
+    <message>
+        <source>%1: the controller is not connected</source>
+        <translation>%1: контроллер не подключён</translation>
+    </message>
+    <message>
+        <source>clear C</source>
+        <translation>очистка C</translation>
+    </message>
+    <message>
+        <source>clear R</source>
+        <translation>очистка R</translation>
     </message>
 </context>
 <context>
@@ -2712,6 +2914,34 @@ Its comment stays: %3</source>
     <message>
         <source>Debugger</source>
         <translation>Отладчик</translation>
+    </message>
+    <message>
+        <source>This control panel is the simulated machine's: the controller on the line is worked from its own machine's panel (its state is in the other views).</source>
+        <translation>Этот пульт — пульт моделируемого станка: контроллером на линии управляют с пульта его собственного станка (его состояние — в других панелях).</translation>
+    </message>
+    <message>
+        <source>The debugger steps programs on the simulated machine; the controller on the line runs them itself. Show the simulation again (Controller dock) to debug.</source>
+        <translation>Отладчик выполняет программы по шагам на моделируемом станке; контроллер на линии выполняет их сам. Чтобы отлаживать, снова покажите модель (панель «Контроллер»).</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 не читается: %2</translation>
+    </message>
+    <message>
+        <source>Reading the controller's memory to keep it in the database...</source>
+        <translation>Чтение памяти контроллера для сохранения в базе данных...</translation>
+    </message>
+    <message>
+        <source> — stale since %1</source>
+        <translation> — устарело с %1</translation>
+    </message>
+    <message>
+        <source>K923: LEDs only (no LCD text or keys over the link)</source>
+        <translation>K923: только светодиоды (текста ЖКИ и клавиш по линии нет)</translation>
+    </message>
+    <message>
+        <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
+        <translation>Контроллер на линии: его светодиоды K и коррекция, как он их показывает; текста ЖКИ и клавиш на линии нет — используйте его собственный K923</translation>
     </message>
 </context>
 <context>
@@ -3184,6 +3414,18 @@ Its comment stays: %3</source>
         <source>Presets loaded into the controller: %1</source>
         <translation>Предустановок введено в контроллер: %1</translation>
     </message>
+    <message>
+        <source>The R-parameters of the controller on the line, all read every 2.5 s. R0..R231 are written to it at once (not R158, R222, R223).</source>
+        <translation>R-параметры контроллера на линии, все считываются каждые 2,5 с. R0..R231 сразу записываются в него (кроме R158, R222, R223).</translation>
+    </message>
+    <message>
+        <source>The R-parameters of the controller on the line, all read every 2.5 s. They cannot be changed now: %1.</source>
+        <translation>R-параметры контроллера на линии, все считываются каждые 2,5 с. Изменить их сейчас нельзя: %1.</translation>
+    </message>
+    <message>
+        <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
+        <translation>Предустановки загружены в контроллер: %1 из %2; R%3 — нет: %4</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ScopeView</name>
@@ -3298,6 +3540,18 @@ Its comment stays: %3</source>
     <message>
         <source>Axis Z</source>
         <translation>Ось Z</translation>
+    </message>
+    <message>
+        <source>Live at %1 samples a second: the link's poll of the controller's positions and following errors (the setpoint is position + error; no DAC on the link).</source>
+        <translation>В реальном времени, %1 отсчётов в секунду: опрос линией положений и рассогласований контроллера (задание = положение + рассогласование; ЦАП по линии нет).</translation>
+    </message>
+    <message>
+        <source>Every servo tick of the simulated machine (%1 samples a second).</source>
+        <translation>Каждый такт сервоцикла моделируемого станка (%1 отсчётов в секунду).</translation>
+    </message>
+    <message>
+        <source>The link's map carries no DAC code: the simulated machine's only</source>
+        <translation>Карта линии не содержит кода ЦАП: он есть только у моделируемого станка</translation>
     </message>
 </context>
 <context>
@@ -3583,8 +3837,16 @@ Its comment stays: %3</source>
         <translation>Следить за станком</translation>
     </message>
     <message>
-        <source>While the session's machine runs a program, its path grows here live</source>
-        <translation>Пока станок сеанса отрабатывает программу, её траектория растёт здесь</translation>
+        <source>The actual path grows from the controller's live positions, read %1 times a second; a program's path once its text is read from the controller.</source>
+        <translation>Фактическая траектория строится по текущим положениям контроллера, считываемым %1 раз в секунду; траектория программы — когда её текст считан из контроллера.</translation>
+    </message>
+    <message>
+        <source>Reading L%1 from the controller for its path...</source>
+        <translation>Чтение L%1 из контроллера для траектории...</translation>
+    </message>
+    <message>
+        <source>While the controller shown runs a program, its path grows here live</source>
+        <translation>Пока показываемый контроллер выполняет программу, её траектория строится здесь в реальном времени</translation>
     </message>
 </context>
 <context>
@@ -3660,6 +3922,34 @@ Its comment stays: %3</source>
     <message>
         <source>%1 mm</source>
         <translation>%1 мм</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Stop computing the path (the view keeps what it shows)</source>
+        <translation>Прекратить расчёт траектории (вид остаётся прежним)</translation>
+    </message>
+    <message>
+        <source>L%1: computing the path… %2 frames</source>
+        <translation>L%1: расчёт траектории… %2 кадров</translation>
+    </message>
+    <message>
+        <source>L%1: cutting the blank… %2 of %3 moves</source>
+        <translation>L%1: съём материала… %2 из %3 перемещений</translation>
+    </message>
+    <message>
+        <source>L%1 does not end within %2 frames (an endless loop?): the path shows those frames</source>
+        <translation>L%1 не заканчивается за %2 кадров (бесконечный цикл?): показана траектория этих кадров</translation>
+    </message>
+    <message>
+        <source>L%1: the path was not computed (cancelled)</source>
+        <translation>L%1: траектория не рассчитана (отменено)</translation>
+    </message>
+    <message>
+        <source>L%1: simulating the run…</source>
+        <translation>L%1: моделирование отработки…</translation>
     </message>
 </context>
 <context>

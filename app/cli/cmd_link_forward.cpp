@@ -1,4 +1,4 @@
-// `k528 serve` and `k528 link` run k528-link (link_main.cpp), the Qt half of
+// `k528 serve`, `k528 link` and `k528 shop` (after reading the database) run k528-link (link_main.cpp), the Qt half of
 // the command line that loads the RS485 plugin, with the same arguments:
 // k528 itself stays plain C++ (docs/link.md). k528-link is looked for next
 // to k528 (build tree, /usr/bin) and in ../libexec/k528.
@@ -43,6 +43,7 @@ int forward(const char* command, std::span<const std::string> args) {
 
 } // namespace
 
+int forwardToLink(const char* command, std::span<const std::string> args) { return forward(command, args); }
 int runServe(std::span<const std::string> args) { return forward("serve", args); }
 int runLink(std::span<const std::string> args) { return forward("link", args); }
 

@@ -10,6 +10,7 @@
 // makes the PLC impose mode N. Prints the four LCD lines, or JSON with the LEDs.
 #include "args.h"
 #include "cli.h"
+#include "machine_buttons.h"
 #include "machine_profile.h"
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
@@ -35,16 +36,6 @@ namespace k528::cli {
 
 namespace {
 
-// A push-button of the simulated machine's pendant (--machine): pressed for
-// holdMs, then released; the E-stop mushroom latches (PUSH:ESTOP) until it is
-// pulled (PULL:ESTOP).
-struct ButtonStep {
-    std::optional<machine::Button> button; // nullopt: the E-stop mushroom
-    std::int64_t holdMs = 0;
-    bool pull = false;
-};
-constexpr std::int64_t kPushMs = 100; // an operator's push
-constexpr std::int64_t kSeenMs = 30;  // time for the PLC's debounce to see the release
 
 // A fault of the K923's health or the PLC (--machine): FAULT:NAME injects it,
 // CLEAR:NAME mends it (docs/panel.md, table М.1 of appendix М).
@@ -75,60 +66,9 @@ struct PlcModeStep {
 // a fault, a mode the PLC imposes.
 using Step = std::variant<panel::KeyPress, std::int64_t, ButtonStep, FaultStep, PlcModeStep>;
 
-constexpr std::string_view kButtonList =
-    "DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP";
-
-std::string upper(std::string_view s) {
-    std::string u(s);
-    for (char& c : u)
-        if (c >= 'a' && c <= 'z')
-            c = static_cast<char>(c - 'a' + 'A');
-    return u;
-}
-
-// PUSH:NAME, HOLD:NAME:S, PULL:ESTOP.
-std::optional<Step> parseButton(const std::string& token, std::string& error) {
-    const std::string t = upper(token);
-    const auto colon = t.find(':');
-    const std::string verb = t.substr(0, colon);
-    std::string rest = t.substr(colon + 1);
-    ButtonStep b;
-    b.holdMs = kPushMs;
-    if (verb == "HOLD") {
-        const auto c2 = rest.rfind(':');
-        const auto s = c2 == std::string::npos ? std::nullopt
-                                               : parseNumber(std::string_view(rest).substr(c2 + 1));
-        if (!s || *s <= 0 || !std::isfinite(*s) || *s > 1e5) {
-            error = "bad --keys token '" + token + "': HOLD:BUTTON:S holds for S seconds, 0..100000";
-            return std::nullopt;
-        }
-        b.holdMs = std::max<std::int64_t>(1, std::llround(*s * 1000.0));
-        rest = rest.substr(0, c2);
-    }
-    if (rest == "ESTOP") {
-        if (verb == "HOLD") {
-            error = "bad --keys token '" + token + "': the E-stop latches: PUSH:ESTOP, PULL:ESTOP";
-            return std::nullopt;
-        }
-        b.pull = verb == "PULL";
-        return Step{b};
-    }
-    if (verb == "PULL") {
-        error = "bad --keys token '" + token + "': only the E-stop is pulled (PULL:ESTOP)";
-        return std::nullopt;
-    }
-    if (const auto button = machine::buttonFromName(rest)) {
-        b.button = *button;
-        return Step{b};
-    }
-    error = "unknown machine button in --keys token '" + token + "' (buttons: " +
-            std::string(kButtonList) + ")";
-    return std::nullopt;
-}
-
 // FAULT:NAME, CLEAR:NAME.
 std::optional<Step> parseFault(const std::string& token, std::string& error) {
-    const std::string t = upper(token);
+    const std::string t = upperToken(token);
     const auto colon = t.find(':');
     const std::string name = t.substr(colon + 1);
     for (const HealthFaultName& f : kHealthFaults)
@@ -152,16 +92,18 @@ std::optional<Step> parsePlcMode(const std::string& token, std::string& error) {
 
 std::optional<Step> parseStep(const std::string& token, std::string& error) {
     {
-        const std::string t = upper(token);
+        const std::string t = upperToken(token);
         if (t.rfind("FAULT:", 0) == 0 || t.rfind("CLEAR:", 0) == 0)
             return parseFault(token, error);
         if (t.rfind("PLCMODE:", 0) == 0)
             return parsePlcMode(token, error);
     }
     {
-        const std::string t = upper(token.substr(0, 5));
-        if (t.rfind("PUSH:", 0) == 0 || t.rfind("HOLD:", 0) == 0 || t.rfind("PULL:", 0) == 0)
-            return parseButton(token, error);
+        const std::string t = upperToken(token.substr(0, 5));
+        if (t.rfind("PUSH:", 0) == 0 || t.rfind("HOLD:", 0) == 0 || t.rfind("PULL:", 0) == 0) {
+            const auto b = parseButton(token, error);
+            return b ? std::optional<Step>(Step{*b}) : std::nullopt;
+        }
     }
     if (token.size() > 5 &&
         (token.compare(0, 5, "WAIT:") == 0 || token.compare(0, 5, "wait:") == 0)) {
@@ -228,17 +170,7 @@ public:
     }
     panel::Health health() const { return sim_.k923Health(); }
     // Button steps exist only with --machine (checked before anything runs).
-    void button(const ButtonStep& b) {
-        if (!b.button) {
-            b.pull ? sim_.releaseEmergencyStop() : sim_.pressEmergencyStop();
-            sim_.advance(kSeenMs);
-            return;
-        }
-        sim_.press(*b.button);
-        sim_.advance(b.holdMs);
-        sim_.release(*b.button);
-        sim_.advance(kSeenMs);
-    }
+    void button(const ButtonStep& b) { pressButton(sim_, b); }
 
 private:
     machine::Simulation sim_;

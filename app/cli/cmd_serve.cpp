@@ -1,6 +1,8 @@
 // k528 serve --port DEVICE|--tcp HOST:PORT [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
 // (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
-// K923 — as a Modbus RTU server (the plugin's QModbusRtuSerialServer) over
+// K923 — as a Modbus RTU server (--keys: the K923's keys, WAIT:S, and the
+// pendant's buttons PUSH:NAME, HOLD:NAME:S, PULL:ESTOP as `k528 panel
+// --machine` takes them, so a served controller can run a program) (the plugin's QModbusRtuSerialServer) over
 // core's ControllerImage, in real time until SIGINT/SIGTERM. It answers the
 // bus counters of function 08 and names itself to function 17.
 #include "cli.h"
@@ -8,6 +10,7 @@
 #include "link/transport.h"
 #include "link_line.h"
 #include "machine/simulation.h"
+#include "machine_buttons.h"
 #include "machine_profile.h"
 #include "panel/keys.h"
 #include "panel/panel.h"
@@ -15,9 +18,12 @@
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QSocketNotifier>
 #include <QTimer>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <unistd.h>
 #include <variant>
 
 namespace k528::cli {
@@ -26,7 +32,7 @@ namespace k528::cli {
 int runServeQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
     options.insert(options.end(), {"--profile", "--db", "--keys"});
-    const Args args(argv, {}, options);
+    const Args args(argv, {"--stdin-keys"}, options);
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
@@ -34,7 +40,7 @@ int runServeQt(std::span<const std::string> argv) {
     const auto line = lineSettings(args);
     if (!line)
         return ExitUsage;
-    using Step = std::variant<panel::KeyPress, std::int64_t>;
+    using Step = std::variant<panel::KeyPress, std::int64_t, ButtonStep>;
     std::vector<Step> steps;
     for (const std::string& token : panel::splitKeys(args.value("--keys").value_or(""))) {
         if (token.size() > 5 && (token.rfind("WAIT:", 0) == 0 || token.rfind("wait:", 0) == 0)) {
@@ -42,6 +48,13 @@ int runServeQt(std::span<const std::string> argv) {
             if (!s || *s < 0 || *s > 1e6)
                 return usageError("bad time in --keys token '" + token + "': WAIT:S takes seconds");
             steps.emplace_back(static_cast<std::int64_t>(std::llround(*s * 1000.0)));
+        } else if (const std::string t = upperToken(token.substr(0, 5));
+                   t == "PUSH:" || t == "HOLD:" || t == "PULL:") {
+            std::string error;
+            const auto b = parseButton(token, error);
+            if (!b)
+                return usageError(error);
+            steps.emplace_back(*b);
         } else if (const auto k = panel::parseKey(token)) {
             steps.emplace_back(*k);
         } else {
@@ -64,6 +77,8 @@ int runServeQt(std::span<const std::string> argv) {
     for (const Step& s : steps) {
         if (const auto* k = std::get_if<panel::KeyPress>(&s))
             k923.press(*k);
+        else if (const auto* b = std::get_if<ButtonStep>(&s))
+            pressButton(*sim, *b);
         else
             sim->advance(std::get<std::int64_t>(s));
     }
@@ -94,6 +109,33 @@ int runServeQt(std::span<const std::string> argv) {
                      line->parity, line->stopBits);
     std::fflush(stderr);
 
+    // --stdin-keys: K923 keys read from standard input while serving, a line
+    // at a time (an instructor's script; a test or a benchmark that changes
+    // the controller's state at a moment it knows).
+    std::unique_ptr<QSocketNotifier> stdinKeys;
+    std::string typed;
+    if (args.has("--stdin-keys")) {
+        stdinKeys = std::make_unique<QSocketNotifier>(0, QSocketNotifier::Read);
+        QObject::connect(stdinKeys.get(), &QSocketNotifier::activated, [&] {
+            char buf[512];
+            const ssize_t n = ::read(0, buf, sizeof buf);
+            if (n <= 0) {
+                stdinKeys->setEnabled(false); // the end of the input: serving goes on
+                return;
+            }
+            typed.append(buf, static_cast<std::size_t>(n));
+            for (std::size_t eol; (eol = typed.find('\n')) != std::string::npos;) {
+                const std::string line = typed.substr(0, eol);
+                typed.erase(0, eol + 1);
+                for (const std::string& token : panel::splitKeys(line)) {
+                    if (const auto k = panel::parseKey(token))
+                        k923.press(*k);
+                    else
+                        std::fprintf(stderr, "k528 serve: unknown key '%s' on standard input: ignored\n", token.c_str());
+                }
+            }
+        });
+    }
     installStopSignals();
     QElapsedTimer clock;
     clock.start();

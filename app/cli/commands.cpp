@@ -15,6 +15,7 @@ int runServe(std::span<const std::string> args); // cmd_link_forward.cpp
 int runLink(std::span<const std::string> args);  // cmd_link_forward.cpp
 int runExercise(std::span<const std::string> args); // cmd_exercise.cpp
 int runGrade(std::span<const std::string> args);    // cmd_grade.cpp
+int runShop(std::span<const std::string> args);  // cmd_shop.cpp
 
 std::span<const Command> commands() {
     static const std::vector<Command> table = {
@@ -150,19 +151,22 @@ std::span<const Command> commands() {
          "One file: a report; several: a table. Exit codes: 0 every file passed; 1 some did not;\n"
          "2 usage or I/O error.\n",
          runGrade},
-        {"serve", "serve --port DEVICE [--profile NAME|PATH] [--db PATH] [--address A] [--baud B] [--parity none|even|odd] [--keys \"KEY ...\"]",
+        {"serve", "serve --port DEVICE|--tcp HOST:PORT [--profile NAME|PATH] [--db PATH] [--address A] [--baud B] [--parity none|even|odd] [--keys \"KEY ...\"] [--stdin-keys]",
          "The simulated K528-05 as a Modbus RTU server on a serial device, in real time.",
          "Options:\n"
          "  --port DEVICE        serial port or one end of a pty pair\n"
+         "  --tcp HOST:PORT      Modbus TCP instead (one controller a process; --address is the unit id)\n"
          "  --address A          station address 1..247 (default 1)\n"
          "  --baud B             default 115200; --parity none|even|odd (default none); --stop-bits 1|2\n"
          "  --profile, --db      the machine, as for `k528 run`\n"
          "  --keys \"KEY ...\"     K923 keys pressed before serving (those of `k528 panel`), e.g.\n"
          "                       \"F7 DOWN DOWN ENTER\" for УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ»\n"
+         "  --stdin-keys         also keys read from standard input while serving, a line at a time\n"
          "The register map: shared/spec/link.md, docs/link.md. Runs until SIGINT/SIGTERM.\n",
          runServe},
-        {"link", "link --port DEVICE [--address A] [--baud B] [--parity none|even|odd] ping|status|pull|push|clear|diag|watch|scan ... | link --list",
-         "The workstation's client of a K528-05 over RS485 (Modbus RTU plugin).",
+        {"link", "link --port DEVICE|--tcp HOST:PORT [--address A] [--baud B] [--parity none|even|odd] ping|status|pull|push|clear|diag|watch|scan ... | link --list",
+         "The workstation's client of a K528-05 over RS485 (Modbus RTU plugin) or Modbus TCP.",
+         "Lines: --port DEVICE (RS485) or --tcp HOST:PORT (a gateway; --address is the unit id).\n"
          "Commands:\n"
          "  ping                 echo and identity\n"
          "  status [--json]      the live state\n"
@@ -183,6 +187,22 @@ std::span<const Command> commands() {
          "Exit codes: 0 done; 1 the controller refused, a verification failed, or the file is wrong;\n"
          "2 the line does not answer, the file cannot be read, output is lost, or usage.\n",
          runLink},
+        {"shop", "shop status [--json] [--watch] | publish --mqtt mqtt://HOST[:PORT] [--db PATH] [MACHINE...]",
+         "The machines of the database polled on their lines: their state, or published over MQTT.",
+         "A machine's line is its setting `line` (k528 db set M01 line=tcp://10.0.0.21:502/1, or\n"
+         "line=serial:/dev/ttyUSB0?baud=115200&parity=none&address=1); machines without one are left out.\n"
+         "Commands:\n"
+         "  status [--json]      one poll of every line at once: a line (JSON: a list of objects) each\n"
+         "  status --watch [--json] [--interval-ms MS] [--seconds S]  keep polling, print each change\n"
+         "  publish --mqtt mqtt://HOST[:PORT] [--interval-ms MS] [--seconds S] [--client-id ID]\n"
+         "                       each machine's state retained on k528/<machine>/state, each alarm\n"
+         "                       raised or cleared on k528/<machine>/alarms; the publisher on\n"
+         "                       k528/_publisher/<client id>, with a last will (docs/shop.md)\n"
+         "  --interval-ms MS     the poll's period (default 1000); --timeout-ms MS answer timeout (200)\n"
+         "  --db PATH            the database (default $K528_DB or ~/.local/share/k528studio/k528.db)\n"
+         "Exit codes: 0 done (machines offline are reported, not an error); 2 usage, the database,\n"
+         "or the broker cannot be reached.\n",
+         runShop},
     };
     return table;
 }

@@ -15,6 +15,7 @@ namespace k528::cli {
 
 int runServeQt(std::span<const std::string> args); // cmd_serve.cpp
 int runLinkQt(std::span<const std::string> args);  // cmd_link.cpp
+int runShopQt(std::span<const std::string> args);  // cmd_shop_qt.cpp
 
 namespace {
 std::atomic<bool> g_stop{false};
@@ -99,7 +100,7 @@ std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
 int main(int argc, char** argv) {
     QCoreApplication app(argc, argv);
     if (argc < 2) {
-        std::fprintf(stderr, "k528-link: run as `k528 serve ...` or `k528 link ...`\n");
+        std::fprintf(stderr, "k528-link: run as `k528 serve ...`, `k528 link ...` or `k528 shop ...`\n");
         return k528::cli::ExitUsage;
     }
     const std::string cmd = argv[1];
@@ -110,10 +111,12 @@ int main(int argc, char** argv) {
             return k528::cli::finishStandardOutput(k528::cli::runServeQt(args));
         if (cmd == "link")
             return k528::cli::finishStandardOutput(k528::cli::runLinkQt(args));
+        if (cmd == "shop")
+            return k528::cli::finishStandardOutput(k528::cli::runShopQt(args));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "k528 %s: %s\n", cmd.c_str(), e.what());
         return k528::cli::ExitUsage;
     }
-    std::fprintf(stderr, "k528-link: unknown command '%s' (serve, link)\n", cmd.c_str());
+    std::fprintf(stderr, "k528-link: unknown command '%s' (serve, link, shop)\n", cmd.c_str());
     return k528::cli::ExitUsage;
 }

@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFile>
 #include <QFileInfo>
 #include <QEvent>
 #include <QLabel>
@@ -18,6 +19,7 @@
 #include "backplot/backplot_widget.h"
 #include "controller/controller_dock.h"
 #include "controller/simulated_controller.h"
+#include "controller/view_notice.h"
 #include "constants/constants_dock.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
@@ -34,7 +36,7 @@
 #include "proveout/proveout_pane.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
-#include "session/program_loader.h"
+#include "program/parser.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
 #include "editor/debug_panel.h"
@@ -45,6 +47,8 @@
 #include "workspace/workspaces.h"
 
 #include <QCloseEvent>
+#include <QPointer>
+#include <memory>
 #include <QScrollArea>
 #include <QSettings>
 #include <QTimer>
@@ -68,13 +72,14 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     session_ = new SimulationSession(machine_.profile, this);
     session_->watchInput(); // an input wakes the idle machine's frames (simulation_session.h)
     simController_ = new SimulatedController(*session_, this);
-    viewed_ = simController_;
-    programMonitor_ = new ProgramMonitor(*viewed_, workArea_);
+    viewed_ = new ViewedController(*simController_, this);
+    programMonitor_ = new ProgramMonitor(*simController_, workArea_);
     workArea_->addTab(programMonitor_, QString());
-    programEditor_ = new EditorTab(session_, workArea_);
+    programEditor_ = new EditorTab(viewed_, workArea_);
     workArea_->addTab(programEditor_, QString());
     connect(programEditor_, &EditorTab::statusMessage, this, [this](const QString& m) { statusBar()->showMessage(m, 10000); });
     createDocks();
+    connect(viewed_, &ViewedController::changed, this, &MainWindow::viewedChanged);
     // The files of the last session, or the machine's sample on a first start.
     programEditor_->openStartDocuments(QString::fromStdString(machine_.profile.name));
     createWorkspaces();
@@ -143,6 +148,14 @@ void MainWindow::placeOnScreen() {
 
 void MainWindow::keepOnScreen() { keepInside(this, availableArea(this)); }
 
+MainWindow::~MainWindow() {
+    // The children go in the order they were made: the simulated controller
+    // and the view switch before the docks. A real controller still viewed
+    // would be destroyed among the docks, after them.
+    if (auto* c = findChild<ControllerDock*>("dock.controller"))
+        c->closeLine();
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
     // What the user arranged, for the next start (also when the close is
     // refused: it costs nothing).
@@ -171,15 +184,19 @@ void MainWindow::createDocks() {
     // The K923 panel: the session's panel model draws it and takes its keys.
     delete k923Dock_->widget();
     k923_ = new K923Widget(k923Dock_);
-    k923_->setDisplay(viewed_->state().display);
+    k923_->setDisplay(simController_->state().display);
     k923Dock_->setWidget(k923_);
     connect(k923_, &K923Widget::keyPressed, this, [this](panel::KeyPress k) {
-        if (viewed_->acceptsKeys())
-            viewed_->pressKey(k); // updated() redraws the panel
+        Controller& c = viewed_->current();
+        if (c.acceptsKeys())
+            c.pressKey(k); // updated() redraws the panel
         else
             statusBar()->showMessage(tr("The controller on the link takes no keys: press them on its own K923"), 5000);
     });
-    connect(viewed_, &Controller::updated, k923_, [this] { k923_->setDisplay(viewed_->state().display); });
+    connect(simController_, &Controller::updated, k923_, [this] {
+        if (viewed_->isSimulated())
+            k923_->setDisplay(simController_->state().display);
+    });
     machineDock_ = addDock("dock.machine", Qt::RightDockWidgetArea);
     delete machineDock_->widget();
     auto* scroll = new QScrollArea(machineDock_);
@@ -188,22 +205,32 @@ void MainWindow::createDocks() {
     scroll->setFrameShape(QFrame::NoFrame);
     machinePanel_ = new MachinePanelWidget(*session_, scroll);
     scroll->setWidget(machinePanel_);
-    machineDock_->setWidget(scroll);
+    // The panel is the simulated machine's: greyed, with the reason, while a
+    // real controller is shown.
+    machineNotice_ = new ViewNotice(scroll, machineDock_);
+    machineNotice_->follow(*viewed_, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
+        if (c.simulated())
+            return {ViewNotice::Level::None, {}};
+        return {ViewNotice::Level::Unavailable,
+                tr("This control panel is the simulated machine's: the controller on the line is worked from its "
+                   "own machine's panel (its state is in the other views).")};
+    });
+    machineDock_->setWidget(machineNotice_);
     // The panel scales to its dock (it scrolls only below 60 %).
     new PanelScaler(scroll, [this](QSize room) { machinePanel_->fitTo(room); });
     // The machine's panel beside the K923, as on the shop floor.
     splitDockWidget(k923Dock_, machineDock_, Qt::Horizontal);
     messagesDock_ = addDock("dock.messages", Qt::BottomDockWidgetArea);
     delete messagesDock_->widget();
-    messagesView_ = new MessagesView(*viewed_, messagesDock_);
+    messagesView_ = new MessagesView(*simController_, messagesDock_);
     messagesDock_->setWidget(messagesView_);
     axesDock_ = addDock("dock.axes", Qt::BottomDockWidgetArea);
     delete axesDock_->widget();
-    axesView_ = new AxesView(*viewed_, axesDock_);
+    axesView_ = new AxesView(*simController_, axesDock_);
     axesDock_->setWidget(axesView_);
     tabifyDockWidget(messagesDock_, axesDock_);
     messagesDock_->raise();
-    QDockWidget* backplotDock = backplot::addBackplotDock(this, *session_); // backplot/backplot_dock.cpp
+    QDockWidget* backplotDock = backplot::addBackplotDock(this, *viewed_); // backplot/backplot_dock.cpp
     if (auto* bp = backplotDock->findChild<backplot::BackplotWidget*>()) {
         // A picked segment: the editor goes to its line (else the Program tab
         // to its frame); the editor's line highlights its segments.
@@ -219,7 +246,7 @@ void MainWindow::createDocks() {
                 programMonitor_->programChoice()->setCurrentIndex(choice);
                 programMonitor_->refresh();
             }
-            if (const program::Program* p = session_->controller().programs().find(program))
+            if (const program::Program* p = viewed_->current().programs().find(program))
                 for (std::size_t i = 0; i < p->frames.size(); ++i)
                     if (p->frames[i].span.line == line)
                         programMonitor_->frames()->setCurrentRow(static_cast<int>(i));
@@ -227,11 +254,11 @@ void MainWindow::createDocks() {
         });
         connect(programEditor_, &EditorTab::cursorLineChanged, bp, &backplot::BackplotWidget::selectLine);
     }
-    addScopeDock(this, *session_);
+    addScopeDock(this, *viewed_);
     addControllerDock(this); // controller/controller_dock.cpp: the Controller menu and dock
-    addConstantsDock(this, *session_); // constants/constants_dock.cpp
-    addRParamsDock(this, *session_);   // rparams/rparams_dock.cpp
-    addHistoryDock(this, *session_); // history/history_dock.cpp
+    addConstantsDock(this, *viewed_, machine_.profile); // constants/constants_dock.cpp
+    addRParamsDock(this, *viewed_, machine_.profile);   // rparams/rparams_dock.cpp
+    addHistoryDock(this, *viewed_);                     // history/history_dock.cpp
     // The training course (training/training_pane.cpp): grades the editor's
     // program; a deduction clicked puts the editor on its frame's line.
     QDockWidget* training = addTrainingDock(this, [this]() -> std::pair<QString, QString> {
@@ -252,31 +279,49 @@ void MainWindow::createDocks() {
     debuggerDock_ = addDock("dock.debugger", Qt::RightDockWidgetArea);
     if (DebugPanel* debug = programEditor_->debugPanel()) {
         delete debuggerDock_->widget();
-        debuggerDock_->setWidget(debug); // out of the editor's splitter
+        // Out of the editor's splitter; it steps programs on the simulated
+        // machine only, which it says while a real controller is shown.
+        debuggerNotice_ = new ViewNotice(debug, debuggerDock_);
+        debuggerNotice_->follow(*viewed_, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
+            if (c.simulated())
+                return {ViewNotice::Level::None, {}};
+            return {ViewNotice::Level::Unavailable,
+                    tr("The debugger steps programs on the simulated machine; the controller on the line runs "
+                       "them itself. Show the simulation again (Controller dock) to debug.")};
+        });
+        debuggerDock_->setWidget(debuggerNotice_);
     }
     // A content that cannot shrink scrolls inside its dock rather than
     // widen the window (the K923 and the machine's panel scale instead).
     for (QDockWidget* d : findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly))
-        if (d != k923Dock_ && d != machineDock_ && d != messagesDock_)
-            scrollInside(d);
+        if (d != k923Dock_ && d != machineDock_ && d != messagesDock_) {
+            if (auto* notice = qobject_cast<ViewNotice*>(d->widget()))
+                notice->scrollContent(); // the notice stays in view above it
+            else
+                scrollInside(d);
+        }
 }
 
-void MainWindow::setViewedController(Controller* controller) {
-    Controller* c = controller ? controller : simController_;
-    if (c == viewed_)
-        return;
-    disconnect(viewed_, &Controller::updated, k923_, nullptr);
-    viewed_ = c;
-    connect(viewed_, &Controller::updated, k923_, [this] { k923_->setDisplay(viewed_->state().display); });
-    k923_->setDisplay(viewed_->state().display);
-    programMonitor_->setController(*viewed_);
-    messagesView_->setController(*viewed_);
-    axesView_->setController(*viewed_);
-    if (controller)
-        connect(controller, &QObject::destroyed, this, [this, controller] {
-            if (viewed_ == controller)
-                setViewedController(nullptr);
-        });
+Controller* MainWindow::viewedController() const { return &viewed_->current(); }
+
+void MainWindow::setViewedController(Controller* controller) { viewed_->set(controller); }
+
+void MainWindow::viewedChanged() {
+    Controller& c = viewed_->current();
+    disconnect(k923Updates_);
+    if (&c != simController_)
+        k923Updates_ = connect(&c, &Controller::updated, k923_, [this] { k923_->setDisplay(viewed_->current().state().display); });
+    k923_->setDisplay(c.state().display);
+    programMonitor_->setController(c);
+    messagesView_->setController(c);
+    axesView_->setController(c);
+    // A lost line: the views without a notice of their own say it in their titles.
+    disconnect(staleWatch_);
+    staleWatch_ = connect(&c, &Controller::updated, this, [this] {
+        if (viewed_->current().stale() != shownStale_)
+            retranslate();
+    });
+    retranslate();
 }
 
 void MainWindow::createMenus() {
@@ -351,46 +396,82 @@ void MainWindow::loadPrograms() {
 }
 
 bool MainWindow::loadProgramsFrom(const QString& path) {
-    const ProgramLoad r = loadProgramFile(*session_, path);
-    QStringList names;
-    for (int n : r.programs)
-        names << QStringLiteral("L%1").arg(n);
     const QString file = QFileInfo(path).fileName();
-    if (r.loaded && r.findings.isEmpty()) {
-        statusBar()->showMessage(tr("Loaded %1 from %2").arg(names.join(", "), file), 10000);
-        return true;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        const QString m = tr("%1 cannot be read: %2").arg(path, f.errorString());
+        QMessageBox::warning(this, tr("Load programs"), m);
+        emit programsLoaded(false, m);
+        return false;
     }
-    QMessageBox box(r.loaded ? QMessageBox::Information : QMessageBox::Warning, tr("Load programs"),
-                    r.loaded ? tr("Loaded %1 from %2, with warnings.").arg(names.join(", "), file)
-                             : r.problem,
-                    QMessageBox::Ok, this);
-    box.setObjectName("programLoadReport");
-    box.setDetailedText(r.findings.join('\n'));
-    if (!r.findings.isEmpty())
-        box.setInformativeText(r.findings.mid(0, 5).join('\n'));
-    box.exec();
-    return r.loaded;
+    const QByteArray bytes = f.readAll();
+    const std::string text(bytes.constData(), static_cast<std::size_t>(bytes.size()));
+    QStringList names;
+    for (const program::Program* p : program::parse(text).store.inWrittenOrder())
+        names << QStringLiteral("L%1").arg(p->number);
+    // Into the controller shown, with its rules (checked first; a real one
+    // takes each program whole or not at all).
+    auto result = std::make_shared<int>(-1);
+    QPointer<MainWindow> self(this);
+    viewed_->current().loadPrograms(text, file, [self, result, names, file](bool ok, const QString& message) {
+        *result = ok ? 1 : 0;
+        if (!self)
+            return;
+        const QStringList findings = message.isEmpty() ? QStringList() : message.split(QLatin1Char('\n'));
+        if (ok && findings.isEmpty()) {
+            const QString m = tr("Loaded %1 from %2").arg(names.join(", "), file);
+            self->statusBar()->showMessage(m, 10000);
+            emit self->programsLoaded(true, m);
+            return;
+        }
+        QMessageBox box(ok ? QMessageBox::Information : QMessageBox::Warning, tr("Load programs"),
+                        ok ? tr("Loaded %1 from %2, with warnings.").arg(names.join(", "), file) : findings.value(0),
+                        QMessageBox::Ok, self);
+        box.setObjectName("programLoadReport");
+        const QStringList details = ok ? findings : findings.mid(1);
+        box.setDetailedText(details.join('\n'));
+        if (!details.isEmpty())
+            box.setInformativeText(details.mid(0, 5).join('\n'));
+        emit self->programsLoaded(ok, box.text());
+        box.exec();
+    });
+    return *result != 0;
 }
 
 int MainWindow::keepInDatabase() {
-    const engine::Controller& c = session_->controller();
-    const profile::MachineProfile p =
-        engine::memoryProfile(session_->simulation().profile(), c.c(), c.rValues(), c.programs());
-    const MachineSave s = saveMachine(p);
-    const QString name = QString::fromStdString(p.name);
-    if (s.revision == 0) {
-        QMessageBox::warning(this, tr("Keep in the database"),
-                             tr("The memory of %1 was not kept: %2").arg(name, s.error));
-        return 0;
-    }
-    statusBar()->showMessage(
-        s.changes == 0 ? tr("%1: the database already holds this memory (revision %2)").arg(name).arg(s.revision)
-                       : tr("%1 kept in the database as revision %2 (%3 changes)")
-                             .arg(name)
-                             .arg(s.revision)
-                             .arg(s.changes),
-        10000);
-    return s.revision;
+    auto result = std::make_shared<int>(-1);
+    QPointer<MainWindow> self(this);
+    viewed_->current().readMemory([self, result](bool ok, const QString& why, const profile::MachineProfile& p) {
+        *result = 0;
+        if (!self)
+            return;
+        const QString name = QString::fromStdString(p.name.empty() ? self->machine_.profile.name : p.name);
+        if (!ok) {
+            const QString m = tr("The memory of %1 was not kept: %2").arg(name, why);
+            emit self->memoryKept(0, m);
+            QMessageBox::warning(self, tr("Keep in the database"), m);
+            return;
+        }
+        const MachineSave s = saveMachine(p);
+        if (s.revision == 0) {
+            const QString m = tr("The memory of %1 was not kept: %2").arg(name, s.error);
+            emit self->memoryKept(0, m);
+            QMessageBox::warning(self, tr("Keep in the database"), m);
+            return;
+        }
+        *result = s.revision;
+        const QString m = s.changes == 0
+                              ? tr("%1: the database already holds this memory (revision %2)").arg(name).arg(s.revision)
+                              : tr("%1 kept in the database as revision %2 (%3 changes)")
+                                    .arg(name)
+                                    .arg(s.revision)
+                                    .arg(s.changes);
+        self->statusBar()->showMessage(m, 10000);
+        emit self->memoryKept(s.revision, m);
+    });
+    if (*result < 0)
+        statusBar()->showMessage(tr("Reading the controller's memory to keep it in the database..."), 10000);
+    return std::max(0, *result);
 }
 
 void MainWindow::fillMachineMenu() {
@@ -510,12 +591,20 @@ void MainWindow::retranslate() {
     helpMenu_->setTitle(tr("&Help"));
     aboutAction_->setText(tr("&About K528 Studio"));
 
-    workArea_->setTabText(workArea_->indexOf(programMonitor_), tr("Program"));
+    shownStale_ = viewed_->current().stale();
+    const QString stale = shownStale_ ? tr(" — stale since %1").arg(viewed_->current().lostSince().toString("HH:mm:ss"))
+                                      : QString();
+    workArea_->setTabText(workArea_->indexOf(programMonitor_), tr("Program") + stale);
     workArea_->setTabText(workArea_->indexOf(programEditor_), tr("Editor"));
-    k923Dock_->setWindowTitle(tr("K923 operator panel"));
+    k923Dock_->setWindowTitle((viewed_->isSimulated() ? tr("K923 operator panel")
+                                                      : tr("K923: LEDs only (no LCD text or keys over the link)")) +
+                              stale);
+    k923_->setToolTip(viewed_->isSimulated() ? QString()
+                                             : tr("The controller on the line: its K LEDs and override as it shows "
+                                                  "them; its LCD text and keys are not on the link — use its own K923"));
     machineDock_->setWindowTitle(tr("Machine control panel"));
-    messagesDock_->setWindowTitle(tr("Messages"));
-    axesDock_->setWindowTitle(tr("Axes and signals"));
+    messagesDock_->setWindowTitle(tr("Messages") + stale);
+    axesDock_->setWindowTitle(tr("Axes and signals") + stale);
     debuggerDock_->setWindowTitle(tr("Debugger"));
     simulationMenu_->setTitle(tr("&Simulation"));
     pauseAction_->setText(tr("&Pause the machine"));

@@ -6,9 +6,10 @@
 // menu bar's corner). It never grows past the screen: the docks' contents
 // scroll or scale, long status texts are elided (workspace/screen_fit.h).
 // At start-up it builds one simulated machine (SimulationSession) that
-// advances with real time; the machine's panel, the messages and the axes
-// docks show it, the Simulation menu pauses it, sets its speed and injects
-// faults for training.
+// advances with real time; every view shows it until the Controller dock
+// connects a real controller and the views follow that one (ViewedController);
+// the Simulation menu pauses the simulated machine, sets its speed and
+// injects faults for training.
 #pragma once
 
 #include "session/machine_source.h"
@@ -31,6 +32,8 @@ class ProgramMonitor;
 class EditorTab;
 class Controller;
 class SimulatedController;
+class ViewedController;
+class ViewNotice;
 class Workspaces;
 
 class MainWindow : public QMainWindow {
@@ -40,6 +43,8 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     // The workstation on `machine` (loadMachine()).
     explicit MainWindow(const MachineChoice& machine, QWidget* parent = nullptr);
+    // Closes a real controller's line first, while every view still lives.
+    ~MainWindow() override;
 
     // The docks, by role (object names "dock.k923", "dock.machine",
     // "dock.messages", "dock.axes").
@@ -58,10 +63,12 @@ public:
     AxesView* axesView() const { return axesView_; }
     // The tab "Program" of the work area: the program the controller runs.
     ProgramMonitor* programMonitor() const { return programMonitor_; }
-    // The controller the K923 dock, the Program tab, the messages and the
-    // axes views show (controller/controller.h): the simulated one of this
-    // window, or a real one on the link (the Controller dock switches).
-    Controller* viewedController() const { return viewed_; }
+    // The controller every view shows (controller/controller.h): the
+    // simulated one of this window, or a real one on the link (the
+    // Controller dock switches). Views that only the simulated machine has
+    // (its control panel, the debugger) are greyed with the reason then.
+    Controller* viewedController() const;
+    ViewedController* viewed() const { return viewed_; }
     SimulatedController* simulatedController() const { return simController_; }
     void setViewedController(Controller* controller); // nullptr: the simulated one
     EditorTab* programEditor() const { return programEditor_; }
@@ -88,10 +95,17 @@ public slots:
     void loadPrograms();
     // The same for a given file, without asking; returns whether it loaded.
     bool loadProgramsFrom(const QString& path);
-    // File > Keep in the database: the controller's memory (C, R, programs,
-    // messages; engine::memoryProfile) as a new revision of this machine.
-    // Returns the revision, 0 when it could not be kept (said in a box).
+    // File > Keep in the database: the memory of the controller shown (C, R,
+    // programs, messages; read over the link for a real one) as a new
+    // revision of this machine. Returns the revision when the controller
+    // answered at once (the simulation), 0 when it could not be kept (said in
+    // a box) or is read over the line (memoryKept() tells the end).
     int keepInDatabase();
+
+signals:
+    void memoryKept(int revision, const QString& message);
+    // Load programs ended (the controller on the link answers later).
+    void programsLoaded(bool ok, const QString& message);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -99,6 +113,7 @@ protected:
 
 private:
     void createDocks();
+    void viewedChanged();
     void createMenus();
     void fillMachineMenu();
     void createSimulationMenu();
@@ -133,7 +148,12 @@ private:
     QLabel* timeLabel_ = nullptr;
     SimulationSession* session_ = nullptr;
     SimulatedController* simController_ = nullptr;
-    Controller* viewed_ = nullptr;
+    ViewedController* viewed_ = nullptr;
+    ViewNotice* machineNotice_ = nullptr;
+    ViewNotice* debuggerNotice_ = nullptr;
+    QMetaObject::Connection k923Updates_;
+    QMetaObject::Connection staleWatch_;
+    bool shownStale_ = false;
     MachinePanelWidget* machinePanel_ = nullptr;
     MessagesView* messagesView_ = nullptr;
     AxesView* axesView_ = nullptr;

@@ -13,6 +13,8 @@ std::string_view previewStatusName(PreviewStatus s) {
         return "alarm";
     case PreviewStatus::Limit:
         return "limit";
+    case PreviewStatus::Cancelled:
+        return "cancelled";
     }
     return "";
 }
@@ -84,7 +86,13 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
     // runs up to kFramesPerTick frames. A guard against a machine that never
     // starts: as many ticks as frames allowed, plus the start.
     const std::int64_t guard = options.maxFrames + 1000;
+    std::int64_t asked = 0; // frames at the last keepGoing
     for (std::int64_t t = 0; t < guard; ++t) {
+        if (options.keepGoing && ctl.framesExecuted() - asked >= PreviewOptions::kKeepGoingFrames) {
+            asked = ctl.framesExecuted();
+            if (!options.keepGoing(asked))
+                return finish(PreviewStatus::Cancelled);
+        }
         machine.tick();
         const ProgramState s = ctl.state();
         if (s == ProgramState::Ended)

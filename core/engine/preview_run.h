@@ -3,7 +3,8 @@
 // machine and PLC, from the machine's power-on position, without homing
 // (АВТ.БЕЗ ПБТ is set for the preview, so the soft limits do not stop it:
 // the caller marks what leaves them). Stops at the program's end, at a
-// message that stops it, or after `maxFrames` executed frames.
+// message that stops it, after `maxFrames` executed frames, or when
+// `keepGoing` says no (a caller on another thread cancels it so).
 #pragma once
 
 #include "engine/preview.h"
@@ -29,10 +30,14 @@ struct PreviewOptions {
     bool fromReferencePoint = false;
     // Called once the machine stands ready, before «Пуск» (axes: the start).
     std::function<void(const PreviewResult&)> onStart;
+    // Asked every kKeepGoingFrames executed frames with their count so far
+    // (progress); false stops the preview (status Cancelled).
+    std::function<bool(std::int64_t frames)> keepGoing;
+    static constexpr std::int64_t kKeepGoingFrames = 1024;
 };
 
-enum class PreviewStatus { Completed, Alarm, Limit };
-std::string_view previewStatusName(PreviewStatus s); // "completed", "alarm", "limit"
+enum class PreviewStatus { Completed, Alarm, Limit, Cancelled };
+std::string_view previewStatusName(PreviewStatus s); // "completed", "alarm", "limit", "cancelled"
 
 struct PreviewAxisStart {
     bool present = false;

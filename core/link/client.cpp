@@ -11,6 +11,7 @@
 #include "program/parser.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -867,6 +868,65 @@ LinkError clearArea(Link& link, BlockKind kind) {
         if (std::any_of(back.begin(), back.end(), [](std::uint16_t v) { return v != 0; }))
             return {LinkError::Kind::Verify, 0, "clear C: the C block does not read back as zeros"};
     }
+    return {};
+}
+
+LinkError setConstant(Link& link, int number, std::int64_t value) {
+    const RegisterMap& map = link.map();
+    const std::string what = "C" + std::to_string(number);
+    const auto place = std::find_if(map.c.begin(), map.c.end(), [&](const CPlacement& p) { return p.number == number; });
+    if (place == map.c.end())
+        return {LinkError::Kind::Input, 0, what + " has no address in the positioner (table Е.1): it cannot be written"};
+    LiveState live;
+    if (LinkError e = readLive(link, live))
+        return e;
+    if (!live.pcReady)
+        return {LinkError::Kind::NotReady, 6, notReadyText(live, "set " + what)};
+    // The registers the constant lies in, from the block as it is now (a
+    // bit or a byte shares its word with others).
+    const Block& cb = map.block(BlockKind::C);
+    std::vector<std::uint16_t> regs;
+    if (LinkError e = link.read(cb.first, cb.count(), regs))
+        return e;
+    std::vector<std::int64_t> c = unpackC(map, regs);
+    c[static_cast<std::size_t>(number)] = value;
+    const std::vector<std::uint16_t> next = packC(map, c);
+    const int first = place->word - cb.first;
+    const int count = place->form == CForm::TwoWords ? 2 : 1;
+    const std::span<const std::uint16_t> words(next.data() + first, static_cast<std::size_t>(count));
+    if (LinkError e = link.write(place->word, words))
+        return e.kind == LinkError::Kind::Exception && e.code == 3
+                   ? LinkError{LinkError::Kind::Exception, 3, what + " = " + std::to_string(value) +
+                                                                  ": the controller refused the value (outside table Е.1)"}
+                   : e;
+    std::vector<std::uint16_t> back;
+    if (LinkError e = link.read(place->word, count, back))
+        return e;
+    if (!std::equal(back.begin(), back.end(), words.begin()))
+        return {LinkError::Kind::Verify, 0, what + ": the controller does not read back what was written"};
+    return {};
+}
+
+LinkError setRParameter(Link& link, int number, std::int64_t value) {
+    const RegisterMap& map = link.map();
+    const std::string what = "R" + std::to_string(number);
+    if (number < 0 || number >= map.rCount || !map.rWritable(number))
+        return {LinkError::Kind::Input, 2, what + " is read only over the link (the PC writes " + map.rWritableText() + ")"};
+    if (value < INT32_MIN || value > INT32_MAX)
+        return {LinkError::Kind::Input, 3, what + " = " + std::to_string(value) + " is outside 32 bits"};
+    LiveState live;
+    if (LinkError e = readLive(link, live))
+        return e;
+    if (!live.pcReady)
+        return {LinkError::Kind::NotReady, 6, notReadyText(live, "set " + what)};
+    const std::uint16_t words[] = {lowWord(value), highWord(value)};
+    if (LinkError e = link.write(map.rRegister(number), words))
+        return e;
+    std::vector<std::uint16_t> back;
+    if (LinkError e = link.read(map.rRegister(number), 2, back))
+        return e;
+    if (back[0] != words[0] || back[1] != words[1])
+        return {LinkError::Kind::Verify, 0, what + ": the controller does not read back what was written"};
     return {};
 }
 

@@ -212,6 +212,15 @@ LinkError push(Link& link, const profile::MachineProfile& file, PushReport& repo
 // «ОЧИСТКА С-ПАРАМ» / «ОЧИСТКА Р-ПАРАМ» (manual 2.6.8; F7 only).
 LinkError clearArea(Link& link, BlockKind kind);
 
+// One machine constant or R-parameter written directly (F7 «РАБОТА С
+// ПЭВМ» only, as the panel's desktop edit of one value), then read back.
+// A constant that shares its word (a bit, a byte) is merged into the word as
+// the controller holds it; the controller checks the whole block (exception
+// 03 for a value outside table Е.1). An R the PC may not write is refused
+// before anything is sent.
+LinkError setConstant(Link& link, int number, std::int64_t value);
+LinkError setRParameter(Link& link, int number, std::int64_t value);
+
 // The station's bus counters (FC 8 sub-functions 11..18), in kCounters order.
 struct BusCounters {
     std::array<std::uint16_t, 8> values{};

@@ -9,8 +9,12 @@ namespace k528::msglog {
 using db::MessageEvent;
 using db::MessageSource;
 
-Recorder::Recorder(const engine::Controller& ctl) : ctl_(ctl) {
+Recorder::Recorder(const engine::Controller& ctl) : ctl_(&ctl), machine_(&ctl.profile()) {
     lastZ1000_ = ctl.words().word(1000);
+}
+
+Recorder::Recorder(const profile::MachineProfile& machine, std::uint16_t z1000) : machine_(&machine) {
+    lastZ1000_ = z1000;
 }
 
 std::int64_t Recorder::raise(MessageSource s, int number, std::string text, std::string textEn,
@@ -51,7 +55,7 @@ void Recorder::acknowledged(Track& t, const std::string& how) {
 }
 
 std::string Recorder::plcText(MessageSource s, int k) const {
-    const profile::MachineProfile& p = ctl_.profile();
+    const profile::MachineProfile& p = *machine_;
     const std::map<int, std::string>& texts = s == MessageSource::PlcAlarm    ? p.plcAlarm
                                               : s == MessageSource::PlcSystem ? p.plcSystem
                                                                               : p.plcWork;
@@ -95,8 +99,35 @@ void Recorder::bits(MessageSource s, std::uint32_t shown, std::uint32_t present,
 }
 
 void Recorder::observe() {
-    now_ = ctl_.timeMs();
-    const std::uint16_t z1000 = ctl_.words().word(1000);
+    if (!ctl_)
+        return;
+    const engine::AlarmRegistry& reg = ctl_->alarmRegistry();
+    step(ctl_->timeMs(), ctl_->words().word(1000), [&reg](int n) -> const engine::AlarmEntry& { return reg.entry(n); },
+         ctl_->plcMessages(), ctl_->programView());
+}
+
+void Recorder::observe(const Observation& o) {
+    // The messages shown, as the registry would hold them: latched, active
+    // as told (a controller on the link shows only what is latched).
+    std::array<engine::AlarmEntry, engine::kMessageCount + 1> entries{};
+    for (const engine::AlarmView& a : o.alarms) {
+        if (a.number < 1 || a.number > engine::kMessageCount)
+            continue;
+        engine::AlarmEntry& e = entries[static_cast<std::size_t>(a.number)];
+        e.latched = true;
+        e.active = a.active;
+        e.program = a.program;
+        e.line = a.line;
+        e.order = 1;
+    }
+    step(o.timeMs, o.z1000, [&entries](int n) -> const engine::AlarmEntry& { return entries[static_cast<std::size_t>(n)]; },
+         o.plc, o.program);
+}
+
+template <class EntryOf>
+void Recorder::step(std::int64_t now, std::uint16_t z1000, EntryOf&& entryOf, const engine::PlcMessagesView& pm,
+                    const engine::ProgramView& pv) {
+    now_ = now;
     std::string how = note_;
     if (how.empty()) {
         if ((z1000 >> 7) & 1u)
@@ -109,15 +140,13 @@ void Recorder::observe() {
     lastZ1000_ = z1000;
     note_.clear();
 
-    const engine::ProgramView pv = ctl_.programView();
     const bool running = engine::programActive(pv.state);
     const int curProgram = running ? pv.program : 0, curLine = running ? pv.line : 0;
 
     // The positioner's messages 1..64.
-    const engine::AlarmRegistry& reg = ctl_.alarmRegistry();
     for (int n = 1; n <= engine::kMessageCount; ++n) {
         Track& t = positioner_[static_cast<std::size_t>(n)];
-        const engine::AlarmEntry& e = reg.entry(n);
+        const engine::AlarmEntry& e = entryOf(n);
         if (!e.latched && t.seq == 0)
             continue;
         if (t.seq != 0 && (!e.latched || e.order != t.order)) {
@@ -144,7 +173,6 @@ void Recorder::observe() {
     }
 
     // The PLC's messages as the positioner remembers them.
-    const engine::PlcMessagesView pm = ctl_.plcMessages();
     bits(MessageSource::PlcSystem, pm.system, pm.systemPresent, 16, plcSystem_.data(), true, how,
          curProgram, curLine);
     bits(MessageSource::PlcAlarm, pm.alarms, pm.alarmsPresent, 32, plcAlarm_.data(), true, how,

@@ -37,15 +37,32 @@ struct OpenMessage {
     bool causePresent = false;
 };
 
+// What the recorder looks at, from any controller's views: a real K528-05
+// read over the link gives its latched messages, the PLC's message words,
+// the program shown and Z1000 (its time is the PC's: ms since the
+// recording began).
+struct Observation {
+    std::int64_t timeMs = 0;
+    std::uint16_t z1000 = 0;
+    std::vector<engine::AlarmView> alarms; // the positioner's messages shown (latched)
+    engine::PlcMessagesView plc;
+    engine::ProgramView program;
+};
+
 class Recorder {
 public:
     // Starts with what the controller shows now: messages already present
     // are recorded as raised at this moment on the first observe().
     explicit Recorder(const engine::Controller& ctl);
+    // Without an engine controller: observe(Observation) only; `machine`
+    // gives the PLC messages' texts (it must outlive the recorder).
+    Recorder(const profile::MachineProfile& machine, std::uint16_t z1000);
 
     // Looks at the controller now (after each tick; again after an ESC
     // between ticks).
     void observe();
+    // Looks at what another controller shows now.
+    void observe(const Observation& o);
     // The acknowledgements the next observe() sees were made this way.
     void noteAcknowledgement(std::string how) { note_ = std::move(how); }
     // The time of day (Unix ms) of the machine time of the last observe():
@@ -74,8 +91,12 @@ private:
     void bits(db::MessageSource s, std::uint32_t shown, std::uint32_t present, int count,
               Track* tracks, bool acknowledgeable, const std::string& how, int program, int line);
     std::string plcText(db::MessageSource s, int k) const;
+    template <class EntryOf>
+    void step(std::int64_t now, std::uint16_t z1000, EntryOf&& entryOf, const engine::PlcMessagesView& pm,
+              const engine::ProgramView& pv);
 
-    const engine::Controller& ctl_;
+    const engine::Controller* ctl_ = nullptr;
+    const profile::MachineProfile* machine_ = nullptr;
     std::int64_t seq_ = 0;
     std::int64_t now_ = 0;
     std::array<Track, 65> positioner_{};

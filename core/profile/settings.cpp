@@ -1,5 +1,7 @@
 #include "profile/settings.h"
 
+#include "profile/line.h"
+
 #include "util/utf8.h"
 
 #include <algorithm>
@@ -248,6 +250,7 @@ constexpr SimulationKey kKeys[] = {
     {"tool.n.height_mm", T::Double, 0.001, 1000, "1000", "mm", "The tool's body along X (radially) from its tip; a drill's diameter (default 10 for drills and boring bars).", "proveout, backplot"},
     {"tool.n.max_depth_mm", T::Double, 0, 100, "0", "mm", "The deepest cut the tool takes (its cutting edge); 0: no limit.", "proveout"},
     {"tool.n.offset_r", T::Int, 0, 148, "", "", "The R-parameter of the tool's X offset (its Z offset is the next): the values the program copies into R226/R227 after the tool change.", "proveout, setup sheet, trial part"},
+    {"line", T::String, 0, 0, "", "", "Shop: where the machine's controller is, tcp://HOST:PORT/UNIT (Modbus TCP) or serial:DEVICE?baud=115200&parity=none&address=1 (RS485).", "shop (k528 shop, the studio's Connect)"},
 };
 // clang-format on
 
@@ -299,7 +302,7 @@ std::string checkSimulationValue(std::string_view key, std::string_view value) {
             return "value " + quoted(value) + " is not true/false";
         return {};
     case SettingType::String:
-        return {};
+        return key == "line" ? lineError(value) : std::string();
     }
     return {};
 }

@@ -5,10 +5,12 @@
 #include <boost/geometry/geometries/polygon.hpp>
 #include <boost/geometry/geometries/multi_polygon.hpp>
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <set>
 
 namespace bg = boost::geometry;
 
@@ -201,13 +203,26 @@ void Stock::cut(PointZR a, PointZR b, const Tool& t) {
     d_->m = std::move(out);
 }
 
-void Stock::cutPath(const toolpath::ProgrammedPath& path, const Tool& tool) {
+bool Stock::cutPath(const toolpath::ProgrammedPath& path, const Tool& tool, const CutProgress& progress) {
     const double toR = path.diameterX ? 0.5 : 1.0;
-    for (const toolpath::Segment& s : path.segments) {
+    // Legs already cut, by their ends (an ordered set: only membership is asked).
+    std::set<std::array<double, 4>> done;
+    const std::size_t total = path.segments.size();
+    constexpr std::size_t kReportEvery = 256;
+    for (std::size_t k = 0; k < total; ++k) {
+        if (progress && k % kReportEvery == 0 && !progress(k, total))
+            return false;
+        const toolpath::Segment& s = path.segments[k];
         const toolpath::PointMm* p = path.pointsOf(s);
-        for (int i = 1; i < s.pointCount; ++i)
-            cut({p[i - 1].z, p[i - 1].x * toR}, {p[i].z, p[i].x * toR}, tool);
+        for (int i = 1; i < s.pointCount; ++i) {
+            const PointZR a{p[i - 1].z, p[i - 1].x * toR}, b{p[i].z, p[i].x * toR};
+            if (done.insert({a.z, a.r, b.z, b.r}).second)
+                cut(a, b, tool);
+        }
     }
+    if (progress)
+        progress(total, total);
+    return true;
 }
 
 double Stock::areaMm2() const {
@@ -232,6 +247,14 @@ std::vector<Ring> Stock::holes(std::size_t i) const {
         out.push_back(r);
     }
     return out;
+}
+
+Shape Stock::shape() const {
+    Shape s;
+    s.polygons.reserve(polygons());
+    for (std::size_t i = 0; i < polygons(); ++i)
+        s.polygons.push_back({outer(i), holes(i)});
+    return s;
 }
 
 } // namespace k528::stock

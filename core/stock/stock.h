@@ -23,6 +23,7 @@
 
 #include "toolpath/programmed_path.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,20 +63,38 @@ struct Tool {
 // convex hull of the tool's rectangle at both ends, clockwise.
 Ring toolSweep(PointZR a, PointZR b, const Tool& tool);
 
+// The material as plain rings: each polygon's outer ring and its holes.
+struct Shape {
+    struct Polygon {
+        Ring outer;
+        std::vector<Ring> holes;
+    };
+    std::vector<Polygon> polygons;
+};
+
+// Called while a path is cut with the legs done and their total; false
+// stops the cut there (the stock then holds the legs cut so far).
+using CutProgress = std::function<bool(std::size_t done, std::size_t total)>;
+
 // The material: a set of polygons (outer ring + holes) in (z, r).
 class Stock {
 public:
     explicit Stock(const Blank& b);
     // Removes what the tool sweeps moving from `a` to `b` (z, r of the tip).
     void cut(PointZR a, PointZR b, const Tool& tool);
-    // Cuts along a whole programmed path (every segment's legs).
-    void cutPath(const toolpath::ProgrammedPath& path, const Tool& tool);
+    // Cuts along a whole programmed path (every segment's legs). A leg the
+    // path repeats exactly (an endless loop's second pass) is cut once: the
+    // material it sweeps is gone after the first. Returns false when
+    // `progress` stopped it.
+    bool cutPath(const toolpath::ProgrammedPath& path, const Tool& tool,
+                 const CutProgress& progress = {});
 
     double areaMm2() const; // of the half profile
     // Outer rings and holes: polygon i has outer(i) and holes(i).
     std::size_t polygons() const;
     Ring outer(std::size_t i) const;
     std::vector<Ring> holes(std::size_t i) const;
+    Shape shape() const;
     std::size_t moves() const { return moves_; }
     const Blank& blank() const { return blank_; }
 

@@ -137,6 +137,29 @@ bool sampleOf(const engine::Controller& c, ActualSample& s) {
     return true;
 }
 
+bool sampleOfViews(const engine::ProgramView& p, std::span<const engine::AxisView> axes, double tMs,
+                   ActualSample& s) {
+    if (!engine::programActive(p.state))
+        return false;
+    s = ActualSample{};
+    s.tMs = tMs;
+    double* pos[2] = {&s.x, &s.z};
+    double* err[2] = {&s.errX, &s.errZ};
+    for (std::size_t i = 0; i < axes.size() && i < 2; ++i) {
+        const engine::AxisView& v = axes[i];
+        if (!v.present)
+            continue;
+        const double dpm = static_cast<double>(v.scale.discretesPerMm());
+        const double ipd = static_cast<double>(v.scale.internalPerDisc());
+        *pos[i] = static_cast<double>(v.currentDisc) / dpm;
+        *err[i] = v.errorInternal / ipd / dpm;
+    }
+    s.program = p.program;
+    s.line = p.line;
+    s.n = p.frameNumber;
+    return true;
+}
+
 void SamplingRunMachine::tick() {
     m_.tick();
     ActualSample s;
@@ -172,7 +195,11 @@ void LiveActualPath::detach() {
 
 void LiveActualPath::observe(const engine::Controller& c) {
     ActualSample s;
-    if (!sampleOf(c, s)) {
+    observe(sampleOf(c, s) ? &s : nullptr);
+}
+
+void LiveActualPath::observe(const ActualSample* sample) {
+    if (!sample) {
         if (active_)
             endPending_ = true;
         active_ = false;
@@ -184,7 +211,7 @@ void LiveActualPath::observe(const engine::Controller& c) {
         restartPending_ = true;
         active_ = true;
     }
-    pending_.push_back(s);
+    pending_.push_back(*sample);
 }
 
 LiveActualPath::Batch LiveActualPath::flush() {

@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace k528::machine {
@@ -103,6 +104,11 @@ private:
 // coordinates (mm as the panel shows them), program/N/line. Returns false
 // when no program is active (nothing to sample).
 bool sampleOf(const engine::Controller& c, ActualSample& s);
+// The same from what a view of any controller shows (a real one read over
+// the link: the current position in discretes as its panel shows them, the
+// following error), at time `tMs` of the caller's clock.
+bool sampleOfViews(const engine::ProgramView& p, std::span<const engine::AxisView> axes, double tMs,
+                   ActualSample& s);
 
 // The actual path of a machine that runs in real time (the studio's
 // session) growing live. attach() observes every tick of the Simulation
@@ -124,6 +130,9 @@ public:
     void abandon() { sim_ = nullptr; }
     // The per-tick observer (attach() installs it; tests may call it).
     void observe(const engine::Controller& c);
+    // The same for a sample taken elsewhere (a real controller's live
+    // positions, read over the link): null when no program is active.
+    void observe(const ActualSample* sample);
 
     struct Batch {
         bool restarted = false;  // a new run began: path() was cleared first

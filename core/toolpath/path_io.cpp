@@ -59,7 +59,7 @@ bool readPath(std::FILE* in, ProgrammedPath& p, std::string& ucg, std::string& e
                     getVec(in, p.segments, 200'000'000) && getVec(in, p.points, 1'000'000'000) &&
                     getVec(in, p.dwells, 100'000'000) &&
                     getVec(in, p.wheel, 100'000'000) && getVec(in, u, 4096);
-    if (!ok || status < 0 || status > 2) {
+    if (!ok || status < 0 || status > static_cast<std::int32_t>(engine::PreviewStatus::Cancelled)) {
         error = "the path stream is truncated or damaged";
         return false;
     }

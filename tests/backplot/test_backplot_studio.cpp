@@ -5,10 +5,12 @@
 // studio from the X server shows wide vertical lines clean (no hatched
 // fringe), as the same scene offscreen does.
 #include "backplot/backplot_widget.h"
+#include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "machine/run.h"
+#include "language.h"
 #include "main_window.h"
 #include "workspace/workspaces.h"
 #include "program/parser.h"
@@ -18,11 +20,18 @@
 #include <cmath>
 
 #include <QApplication>
+#include <QDir>
 #include <QDockWidget>
+#include <QLabel>
+#include <QLocale>
 #include <QOpenGLContext>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScreen>
+#include <QSignalSpy>
 #include <QSpinBox>
+#include <QTimer>
+#include <QToolButton>
 #include <QTabWidget>
 #include <QWheelEvent>
 #include <QTemporaryDir>
@@ -50,6 +59,16 @@ constexpr const char* kProgram = "%L1\n"
                                  "N5 G1 Z-80 FZ2000\n"
                                  "M30\n";
 
+// Never ends: N5 jumps back to N1 (the blank's cut by the same four legs
+// again and again).
+constexpr const char* kEndless = "%L1 (ENDLESS)\n"
+                                 "; UCG,2,Z-100Z0,X50X0,S0S0,0,-5\n"
+                                 "N1 G1 X60 FX2000\n"
+                                 "N2 G1 Z-40 FZ2000\n"
+                                 "N3 G1 X20 FX2000\n"
+                                 "N4 G0 Z0\n"
+                                 "N5 GOTO 1\n";
+
 struct Studio {
     QTemporaryDir dir;
     MainWindow w;
@@ -72,6 +91,8 @@ struct Studio {
         f.write(text);
         f.close();
         editor->setCloseQuestion([](const QString&) { return studio::EditorTab::CloseChoice::Discard; });
+        editor->setPreviewBeforeSending(false); // the preview is the controller tests'
+
         editor->openFile(path);
     }
     // Loads the editor's file into the session's controller and shows L1's path.
@@ -79,9 +100,10 @@ struct Studio {
         if (!editor->sendToController())
             return false;
         w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+        QSignalSpy shown(view, &BackplotWidget::pathShown);
         w.findChild<QPushButton*>("backplot.computePath")->click();
-        QTest::qWait(100);
-        return !view->scene().path().segments.empty();
+        // Computed on a worker: shown when done.
+        return shown.wait(10000) && !view->scene().path().segments.empty();
     }
     // Widget pixel (from the top-left) of world point (Z, X).
     QPoint pixelOf(double z, double x) const {
@@ -187,6 +209,9 @@ private slots:
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, ro);
         QCOMPARE(r.status, engine::RunStatus::Completed);
         session->advance(1);
+        // The programmed path of the running program (computed on a worker
+        // when the run began) comes under the actual one, which stays.
+        QTRY_VERIFY(!s.view->computing());
         QVERIFY(shown.size() > 100);
         // It grew: a few points early in the run, many at its end, never fewer.
         std::size_t first = 0;
@@ -201,6 +226,141 @@ private slots:
         QCOMPARE(s.view->scene().path().segments.size(), std::size_t(5));
         // The last point is where the run ended (X60 Z-80).
         QVERIFY(s.view->scene().actualPointsShown() >= 10);
+    }
+    // An endless program (GOTO back to its start): its preview is computed
+    // and the blank cut on a worker, up to PathJob::kMaxFrames frames (a
+    // count in core, not a time). The window goes on meanwhile: the click
+    // returns before the path is there, the event loop turns (a timer fires)
+    // while the job runs, the progress row shows how far it got; the view
+    // says where the path was cut off. A newer request cancels the one under
+    // way, and Cancel stops it.
+    void anEndlessProgramNeverFreezesTheWindow() {
+        Studio s(kEndless);
+        QVERIFY(s.editor->sendToController());
+        s.w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+        QTRY_VERIFY(!s.view->computing()); // the dock's own first path, if any, is done
+        auto* compute = s.w.findChild<QPushButton*>("backplot.computePath");
+        auto* busy = s.w.findChild<QWidget*>("backplot.busy");
+        auto* bar = s.w.findChild<QProgressBar*>("backplot.progress");
+        auto* cancel = s.w.findChild<QToolButton*>("backplot.cancel");
+        QVERIFY(compute && busy && bar && cancel);
+        QVERIFY(busy->isHidden());
+        // What the progress row said each time it appeared.
+        struct ShowSpy : QObject {
+            QWidget* row = nullptr;
+            QStringList said;
+            int largest = 0;
+            bool eventFilter(QObject* o, QEvent* e) override {
+                if (o == row && e->type() == QEvent::Show) {
+                    for (QLabel* l : row->findChildren<QLabel*>())
+                        said << l->text();
+                    largest = std::max(largest, row->findChild<QProgressBar*>()->value());
+                }
+                return false;
+            }
+        } rowSpy;
+        rowSpy.row = busy;
+        busy->installEventFilter(&rowSpy);
+        int beatsWhileComputing = 0;
+        QTimer beat;
+        beat.setInterval(0);
+        connect(&beat, &QTimer::timeout, [&] {
+            if (s.view->computing())
+                ++beatsWhileComputing;
+        });
+        beat.start();
+        QSignalSpy shown(s.view, &BackplotWidget::pathShown);
+        compute->click();
+        QVERIFY(s.view->computing()); // the click returned before the path was computed
+        QCOMPARE(shown.count(), 0);
+        QVERIFY(shown.wait(60000));
+        beat.stop();
+        QVERIFY2(beatsWhileComputing > 0, "the event loop did not turn while the path was computed");
+        QVERIFY2(!rowSpy.said.isEmpty(), "the progress row never showed");
+        QVERIFY2(rowSpy.said.first().startsWith(QStringLiteral("L1")), qPrintable(rowSpy.said.join(" | ")));
+        QVERIFY(busy->isHidden()); // gone with the job
+        QCOMPARE(s.view->scene().path().run.status, engine::PreviewStatus::Limit);
+        QCOMPARE(s.view->scene().path().run.frames, k528::studio::backplot::PathJob::kMaxFrames);
+        QVERIFY(s.view->scene().path().segments.size() > 50000);
+        QCOMPARE(s.view->statusText(),
+                 BackplotWidget::tr("L%1 does not end within %2 frames (an endless loop?): the path shows those frames")
+                     .arg(1)
+                     .arg(QLocale(k528::studio::currentLanguage() == "ru" ? QLocale::Russian : QLocale::English)
+                              .toString(k528::studio::backplot::PathJob::kMaxFrames)));
+
+        // Two requests: the first is cancelled, only the second is shown.
+        shown.clear();
+        compute->click();
+        compute->click();
+        QVERIFY(shown.wait(60000));
+        QTRY_VERIFY(!s.view->computing());
+        QCOMPARE(shown.count(), 1);
+        // Cancel (before the worker's end reaches the window, whenever that
+        // is): nothing replaces the path shown, the view says so.
+        const std::size_t before = s.view->scene().path().segments.size();
+        shown.clear();
+        compute->click();
+        QVERIFY(s.view->computing());
+        cancel->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!s.view->computing(), 60000);
+        QTest::qWait(50);
+        QCOMPARE(shown.count(), 0);
+        QCOMPARE(s.view->statusText(), BackplotWidget::tr("L%1: the path was not computed (cancelled)").arg(1));
+        QVERIFY(busy->isHidden());
+        QCOMPARE(s.view->scene().path().segments.size(), before);
+        // Computed again after a cancel: shown as before.
+        compute->click();
+        QVERIFY(shown.wait(60000));
+        QCOMPARE(s.view->scene().path().run.frames, k528::studio::backplot::PathJob::kMaxFrames);
+    }
+    // The progress row and the note of a path cut off lie inside the main
+    // window placed on the screen, in Russian and in English; each is
+    // saved as the X server shows it (tests/screenshots/backplot-*.png).
+    // A long job: an endless loop of legs that never repeat, the blank cut
+    // by every one of them.
+    void theProgressAndTheNoteAreInTheWindow() {
+        for (const QString& language : {QStringLiteral("ru"), QStringLiteral("en")}) {
+            QVERIFY(k528::studio::setLanguage(language));
+            Studio s("%L1 (ENDLESS)\n"
+                     "; UCG,2,Z-100Z0,X50X0,S0S0,0,-5\n"
+                     "N1 G1 X40 FX2000\n"
+                     "N2 G91 G1 Z-0.001 FZ2000\n"
+                     "N3 GOTO 2\n");
+            s.w.placeOnScreen();
+            QVERIFY(s.editor->sendToController());
+            s.w.findChild<QSpinBox*>("backplot.program")->setValue(1);
+            QTRY_VERIFY(!s.view->computing());
+            auto* busy = s.w.findChild<QWidget*>("backplot.busy");
+            auto* cancel = s.w.findChild<QToolButton*>("backplot.cancel");
+            auto* status = s.w.findChild<QLabel*>("backplot.status");
+            QVERIFY(busy && cancel && status);
+            const QRect inside = s.w.rect();
+            const auto within = [&](QWidget* x) {
+                const QRect r(x->mapTo(&s.w, QPoint(0, 0)), x->size());
+                return x->isVisible() && !r.isEmpty() && inside.contains(r);
+            };
+            const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
+            QDir().mkpath(dir);
+            const QString size = QStringLiteral("%1x%2").arg(s.w.screen()->size().width()).arg(s.w.screen()->size().height());
+            QSignalSpy shown(s.view, &BackplotWidget::pathShown);
+            s.w.findChild<QPushButton*>("backplot.computePath")->click();
+            QTRY_VERIFY_WITH_TIMEOUT(busy->isVisible() || !s.view->computing(), 60000);
+            QTest::qWait(150); // laid out and painted
+            if (s.view->computing()) {
+                QVERIFY2(within(busy) && within(cancel), "the progress row is outside the window");
+                QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
+                    dir + QStringLiteral("/backplot-progress-%1-%2.png").arg(language, size)));
+            } else {
+                qInfo("the path was computed before its progress could be photographed");
+            }
+            QVERIFY(shown.wait(120000));
+            QTest::qWait(300);
+            QVERIFY2(within(status), "the note is outside the window");
+            QVERIFY(!status->text().isEmpty());
+            QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
+                dir + QStringLiteral("/backplot-cut-off-%1-%2.png").arg(language, size)));
+        }
+        QVERIFY(k528::studio::setLanguage(QStringLiteral("en")));
     }
     void screenshotOfTheStudioShowsWideVerticalLinesClean() {
         Studio s;

@@ -8,7 +8,6 @@
 #include <QProcess>
 #include <QStringList>
 #include <QTcpServer>
-#include <QTest>
 #include <memory>
 #include <vector>
 

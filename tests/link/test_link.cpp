@@ -15,6 +15,7 @@
 #include "resources/embedded.h"
 
 #include <QtTest>
+#include <algorithm>
 #include <memory>
 #include <random>
 
@@ -603,6 +604,49 @@ private slots:
         QVERIFY2(!e, e.message.c_str());
         for (int n = 1; n <= 152; ++n)
             QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], std::int64_t{0});
+    }
+
+    // One value written as the studio's docks write it: F7 only, a bit
+    // merged into its word, two words, refused values and R's the PC may
+    // not write; each read back.
+    void oneValueWrittenDirectly() {
+        Bench b;
+        ImageTransport t(*b.image);
+        Link link(t);
+        const RegisterMap& map = link.map();
+        const auto bit = std::find_if(map.c.begin(), map.c.end(), [](const CPlacement& p) { return p.form == CForm::Bit; });
+        const auto two = std::find_if(map.c.begin(), map.c.end(), [](const CPlacement& p) { return p.form == CForm::TwoWords; });
+        QVERIFY(bit != map.c.end() && two != map.c.end());
+        LinkError e = setConstant(link, bit->number, 1 - b.ctl->c()[static_cast<std::size_t>(bit->number)]);
+        QCOMPARE(e.kind, LinkError::Kind::NotReady);
+        e = setRParameter(link, 5, 12);
+        QCOMPARE(e.kind, LinkError::Kind::NotReady);
+        QVERIFY2(e.message.find("not in F7") != std::string::npos, e.message.c_str());
+        b.f7();
+        const std::vector<std::int64_t> before(b.ctl->c().begin(), b.ctl->c().end());
+        const std::int64_t flipped = 1 - before[static_cast<std::size_t>(bit->number)];
+        e = setConstant(link, bit->number, flipped);
+        QVERIFY2(!e, e.message.c_str());
+        for (int n = 1; n <= 152; ++n) // only that one changed, its word's neighbours as they were
+            QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], n == bit->number ? flipped : before[static_cast<std::size_t>(n)]);
+        const catalog::CParamDef& d = catalog::cParam(two->number);
+        const std::int64_t v = std::min<std::int64_t>(d.max, 70000);
+        e = setConstant(link, two->number, v);
+        QVERIFY2(!e, e.message.c_str());
+        QCOMPARE(b.ctl->c()[static_cast<std::size_t>(two->number)], v);
+        e = setConstant(link, two->number, d.max + 1);
+        QCOMPARE(e.kind, LinkError::Kind::Exception);
+        QCOMPARE(e.code, 3);
+        QCOMPARE(b.ctl->c()[static_cast<std::size_t>(two->number)], v);
+        e = setRParameter(link, 231, -123456);
+        QVERIFY2(!e, e.message.c_str());
+        QCOMPARE(b.ctl->r(231), -123456);
+        for (int n : {158, 222, 232, 299}) {
+            e = setRParameter(link, n, 1);
+            QCOMPARE(e.kind, LinkError::Kind::Input);
+            QVERIFY2(e.message.find("read only") != std::string::npos, e.message.c_str());
+        }
+        QCOMPARE(setRParameter(link, 7, std::int64_t{1} << 40).kind, LinkError::Kind::Input);
     }
 
     void aBrokenPushSaysWhatIsNew() {

@@ -142,6 +142,56 @@ private slots:
 
     // The E-stop: 9 comes with its cause, the cause goes, ESC acknowledges;
     // the history is the same after closing and reopening the database.
+    // A controller read over the link gives only what it shows: the
+    // recorder turns its observations into the same events, with the PC's
+    // time, the acknowledgement's way from Z1000.
+    void observationsOfARealController() {
+        const profile::MachineProfile p = lathe();
+        msglog::Recorder rec(p, 0);
+        msglog::Observation o;
+        o.timeMs = 1000;
+        rec.observe(o);
+        QVERIFY(rec.pending().empty());
+        engine::AlarmView a;
+        a.number = 5;
+        a.active = true;
+        o.alarms = {a};
+        o.plc.alarms = o.plc.alarmsPresent = 1u << 2; // A03
+        o.program.state = engine::ProgramState::Running;
+        o.program.program = 7;
+        o.program.line = 3;
+        o.program.messageNumber = 12;
+        o.program.messageText = "ПРОВЕРКА";
+        o.timeMs = 1500;
+        rec.observe(o);
+        std::vector<MessageEvent> ev = rec.takeEvents();
+        QCOMPARE(ev.size(), std::size_t{3});
+        QCOMPARE(ev[0].message.source, MessageSource::Positioner);
+        QCOMPARE(ev[0].message.number, 5);
+        QCOMPARE(ev[0].message.program, 7);
+        QCOMPARE(ev[0].message.line, 3);
+        QVERIFY(!ev[0].message.text.empty());
+        QCOMPARE(ev[0].machineMs, std::int64_t{1500});
+        QCOMPARE(ev[1].message.source, MessageSource::PlcAlarm);
+        QCOMPARE(ev[1].message.number, 3);
+        QCOMPARE(ev[2].message.source, MessageSource::Program);
+        QCOMPARE(ev[2].message.text, std::string("ПРОВЕРКА"));
+        // Gone with «Сброс» (Z1000.5): cleared and acknowledged by reset.
+        o.alarms.clear();
+        o.plc = {};
+        o.z1000 = 1u << 5;
+        o.timeMs = 2000;
+        rec.observe(o);
+        ev = rec.takeEvents();
+        QCOMPARE(ev.size(), std::size_t{4});
+        QCOMPARE(ev[0].kind, MessageEvent::Kind::Cleared);
+        QCOMPARE(ev[1].kind, MessageEvent::Kind::Acknowledged);
+        QCOMPARE(ev[1].how, std::string("reset"));
+        QCOMPARE(ev[1].machineMs, std::int64_t{2000});
+        rec.stampDayTime(1'700'000'000'000);
+        QVERIFY(rec.pending().empty());
+    }
+
     void survivesReopening() {
         QTemporaryDir dir;
         std::vector<db::MessageRecord> before;

@@ -21,6 +21,7 @@
 #include "program/parser.h"
 #include "rparams/rparams_dock.h"
 #include "rparams/rparams_model.h"
+#include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 #include "units/units.h"
 
@@ -134,7 +135,9 @@ private slots:
         QVERIFY(t1.runS > 0);
 
         SimulationSession session(lathe("lathe-c22"));
-        ConstantsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
         const QModelIndex i = valueIndex(pane, 22);
         QCOMPARE(i.data().toString(), QStringLiteral("10666"));
         pane.noteField()->setText(QStringLiteral("slower run-up for the trainees"));
@@ -177,7 +180,9 @@ private slots:
 
     void outOfRangeIsRefusedWithTheManualsText() {
         SimulationSession session(lathe("lathe-range"));
-        ConstantsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
         pane.resize(1200, 600);
         pane.show();
         const int revs = revisionCount(pane);
@@ -220,7 +225,9 @@ private slots:
 
     void undoAndRedo() {
         SimulationSession session(lathe("lathe-undo"));
-        ConstantsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
         QVERIFY(pane.editor().set(40, 120000));
         QVERIFY(pane.editor().set(41, 400000));
         QCOMPARE(pane.editor().undoStack()->count(), 2);
@@ -239,7 +246,9 @@ private slots:
 
     void filterAndSearch() {
         SimulationSession session(lathe("lathe-filter"));
-        ConstantsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
         QCOMPARE(pane.filter()->rowCount(), 152);
         pane.searchField()->setText(QStringLiteral("ускорение"));
         QCOMPARE(pane.filter()->rowCount(), 4); // C22, C23, C74, C75
@@ -262,7 +271,9 @@ private slots:
 
     void importExportAndDiff() {
         SimulationSession session(lathe("lathe-files"));
-        ConstantsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
         QVERIFY(pane.editor().set(22, 5000));
         const QString csv = dir_.filePath("lathe.csv");
         pane.exportFile(csv);
@@ -346,7 +357,9 @@ private slots:
 
     void calculatorExplainsTheFactorOfTwo() {
         SimulationSession session(lathe("lathe-calc"));
-        ConstantsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
         CalculatorDialog d(pane.editor());
         // Appendix Ж: 2 s from 0 to 5000 mm/min, 0.001 mm: printed 2133, consistent 1066.
         d.setInputs(1, 5000, 2000);
@@ -363,7 +376,9 @@ private slots:
 
     void rParametersLiveEditablePresets() {
         SimulationSession session(lathe("lathe-r"));
-        RParamsPane pane(session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        RParamsPane pane(seam, session.simulation().profile());
         RParamsModel* m = pane.model();
         QCOMPARE(m->rowCount(), 300);
         // Editable where the engine allows it.

@@ -10,6 +10,7 @@
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "profile/builtin.h"
+#include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 
 #include <QComboBox>
@@ -42,6 +43,8 @@ const char* kProgram = "%L1 (debug)\n"
 struct Bench {
     QMainWindow window;
     std::unique_ptr<SimulationSession> session;
+    std::unique_ptr<SimulatedController> seamSim;
+    std::unique_ptr<ViewedController> seam;
     EditorTab* tab = nullptr;
     ProgramEditor* ed = nullptr;
     DebugPanel* panel = nullptr;
@@ -54,7 +57,9 @@ struct Bench {
             tweak(prof);
         session = std::make_unique<SimulationSession>(prof);
         session->setRunning(false); // the test advances the machine itself
-        tab = new EditorTab(session.get(), &window);
+        seamSim = std::make_unique<SimulatedController>(*session);
+        seam = std::make_unique<ViewedController>(*seamSim);
+        tab = new EditorTab(seam.get(), &window);
         window.setCentralWidget(tab);
         window.resize(1200, 700);
         tab->newFile();

@@ -10,6 +10,7 @@
 #include "editor/program_editor.h"
 #include "program/tokens.h"
 #include "profile/builtin.h"
+#include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 
 #include <QApplication>
@@ -181,7 +182,10 @@ private slots:
 
     void machineLimitsAreCheckedToo() {
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab tab(&session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        EditorTab tab(&seam);
+        tab.setPreviewBeforeSending(false);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
         ed->setText("%L1\nG1 X9999 FX50\nM30\n");
@@ -248,7 +252,10 @@ private slots:
 
     void sendsThroughTheCheckThenLoadPath() {
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab tab(&session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        EditorTab tab(&seam);
+        tab.setPreviewBeforeSending(false);
         tab.newFile();
         tab.currentEditor()->setText("%L42 (sent)\nG1 X1 FX50\nM30\n");
         QVERIFY(tab.sendToController());
@@ -427,7 +434,10 @@ private slots:
 
     void theMachineOfEachFile() {
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab tab(&session);
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        EditorTab tab(&seam);
+        tab.setPreviewBeforeSending(false);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
         ed->setText("%L1\nG1 X9999 FX50\nM30\n");

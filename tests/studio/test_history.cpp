@@ -9,6 +9,7 @@
 #include "history/history_service.h"
 #include "main_window.h"
 #include "profile/builtin.h"
+#include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 
 #include <QDockWidget>
@@ -51,7 +52,8 @@ private slots:
         std::int64_t total = 0;
         {
             SimulationSession session(lathe());
-            HistoryService service(&session, dbPath);
+            SimulatedController seamSim(session);
+            HistoryService service(&seamSim, dbPath);
             QVERIFY2(service.isOpen(), qPrintable(service.error()));
             HistoryView view(service);
             view.resize(1200, 360);
@@ -115,7 +117,8 @@ private slots:
         }
         // Closed and reopened: the same rows, the acknowledgement kept.
         SimulationSession session(lathe());
-        HistoryService service(&session, dbPath);
+        SimulatedController seamSim(session);
+        HistoryService service(&seamSim, dbPath);
         HistoryView view(service);
         HistoryModel& m = *view.model();
         QVERIFY(m.total() >= total);
@@ -137,7 +140,8 @@ private slots:
         f.close();
         const QByteArray before = [&] { QFile g(bad); g.open(QIODevice::ReadOnly); return g.readAll(); }();
         SimulationSession session(lathe());
-        HistoryService service(&session, bad);
+        SimulatedController seamSim(session);
+        HistoryService service(&seamSim, bad);
         QVERIFY(!service.isOpen());
         QVERIFY(!service.error().isEmpty());
         HistoryView view(service);

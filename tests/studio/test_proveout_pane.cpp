@@ -9,6 +9,7 @@
 #include "profile/builtin.h"
 #include "profile/tools.h"
 #include "proveout/proveout_pane.h"
+#include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 
 #include <QDockWidget>
@@ -56,7 +57,9 @@ private slots:
 
     void findsTheRapidAndShowsItsLine() {
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab tab(&session);
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab tab(&seam);
         ProveoutPane pane(&tab);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
@@ -118,7 +121,9 @@ private slots:
 
     void anEditProvesAgainOnTheWorker() {
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab tab(&session);
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab tab(&seam);
         ProveoutPane pane(&tab);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
@@ -133,7 +138,9 @@ private slots:
     void theMachinesToolsWithTheirOffsets() {
         const profile::MachineProfile lathe = profile::builtin("training-lathe");
         SimulationSession session(lathe);
-        EditorTab tab(&session);
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab tab(&seam);
         ProveoutPane pane(&tab);
         tab.newFile();
         tab.currentEditor()->setText(QString::fromUtf8(kSafeFacing));
@@ -158,7 +165,9 @@ private slots:
 
     void saysWhyNothingIsProved() {
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab tab(&session);
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab tab(&seam);
         ProveoutPane pane(&tab);
         pane.proveNow();
         QVERIFY2(pane.summary()->text().contains("Open"), qPrintable(pane.summary()->text()));

@@ -8,6 +8,7 @@
 // program or written over from the editor.
 #include "cli_runner.h"
 #include "constants/machine_store.h"
+#include "controller/simulated_controller.h"
 #include "editor/database_programs.h"
 #include "editor/editor_tab.h"
 #include "history/history_service.h"
@@ -73,7 +74,8 @@ private slots:
         const auto shop = ShopDatabase::at();
         QCOMPARE(ShopDatabase::at().get(), shop.get());
         SimulationSession session(loadMachine("training-lathe").profile);
-        HistoryService history(&session, db_);
+        SimulatedController sim(session);
+        HistoryService history(&sim, db_);
         QCOMPARE(history.shop(), shop.get());
         const MachineStore store(session.simulation().profile());
         for (int i = 1; i <= 5; ++i) {
@@ -103,7 +105,9 @@ private slots:
     void theDatabaseIsNotAProgram() {
         ShopDatabase::at();
         SimulationSession session(profile::builtin("training-lathe"));
-        EditorTab editor(&session);
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab editor(&seam);
         QSignalSpy said(&editor, &EditorTab::statusMessage);
         QVERIFY(!editor.openFile(db_));
         QVERIFY(!said.isEmpty());

@@ -25,6 +25,7 @@
 #include "k923/k923_widget.h"
 #include "k923/key_face.h"
 #include "language.h"
+#include "link_plugins.h"
 #include "machine/pendant_controls.h"
 #include "main_window.h"
 #include "db/database.h"
@@ -397,6 +398,14 @@ QSet<QString> manualWords(const QString& language) {
 }
 
 // The positioner's message texts (appendix М) as the LCD shows them.
+// The link plugins' names and versions (the Controller dock lists them).
+QStringList pluginNames() {
+    QStringList names;
+    for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
+        names << f.name + QLatin1Char(' ') + f.version;
+    return names;
+}
+
 QStringList positionerTexts() {
     QStringList out;
     for (int n = 1; n <= 64; ++n) {
@@ -591,7 +600,8 @@ private:
                        positionerTexts() + studio::machineNames() + courseTexts() +
                        QStringList{QFileInfo(file_).fileName(), QFileInfo(warnFile_).fileName(),
                                    studio::EditorTab::sampleFor("training-lathe"), // the first start's sample
-                                   QString::fromStdString(db::defaultAuthor())}); // the revisions' author: the OS user
+                                   QString::fromStdString(db::defaultAuthor())} + // the revisions' author: the OS user
+                       pluginNames());                                        // the link plugins' own names
         walkWindow(walker, w);
         walkDialogs(walker, w);
         qInfo("%d texts checked in --lang %s (started in %s)", walker.checked, qPrintable(language), qPrintable(first));

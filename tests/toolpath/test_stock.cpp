@@ -7,7 +7,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace k528;
 
@@ -88,6 +90,76 @@ private slots:
                                      "UCG,2,Z-100Z0,X100X0,S0S0,0,-5");
         QVERIFY2(std::fabs(s.areaMm2() - 4900) < 1e-3, qPrintable(QString::number(s.areaMm2())));
         QVERIFY(sameVertices(s.outer(0), {{-100, 0}, {-100, 50}, {-2, 50}, {-2, 0}}));
+    }
+    // An endless loop (GOTO back) drawn up to a frame limit: its legs
+    // repeat exactly, and each is cut once — the stock is the one pass's,
+    // at the cost of one pass.
+    void anEndlessLoopIsCutOnce() {
+        const char* ucg = "UCG,2,Z-100Z0,X100X0,S0S0,0,-5";
+        const char* pass = "%L1\nN1 G192 X200\nN2 G292 Z50\nN3 G0 X60 Z2\n"
+                           "N4 G1 Z-50 FZ100\nN5 G0 X110\nN6 G0 Z2\n";
+        const program::ParseResult endless = program::parse(
+            "%L1\nN1 G192 X200\nN2 G292 Z50\nN3 G0 X60 Z2\n"
+            "N4 G1 Z-50 FZ100\nN5 G0 X110\nN6 G0 Z2\nN7 GOTO 3\n");
+        QVERIFY(!endless.hasErrors());
+        toolpath::PathOptions o;
+        o.preview.maxFrames = 5000;
+        const toolpath::ProgrammedPath p =
+            toolpath::programmedPath(profile::builtin("training-lathe"), endless.store, 1, o);
+        QCOMPARE(p.run.status, engine::PreviewStatus::Limit);
+        QVERIFY(p.segments.size() > 1000);
+        stock::Stock s(*stock::parseUcg(ucg));
+        QVERIFY(s.cutPath(p, stock::Tool{}));
+        const stock::Stock once = cutBy(pass, ucg);
+        QVERIFY2(std::fabs(s.areaMm2() - once.areaMm2()) < 1e-6,
+                 qPrintable(QString("%1 vs %2").arg(s.areaMm2()).arg(once.areaMm2())));
+        QVERIFY2(s.moves() <= once.moves() + 2, qPrintable(QString("%1 legs cut").arg(s.moves())));
+    }
+    // Progress: legs done of the total, rising, the last call (total,
+    // total); false stops the cut there.
+    void cutProgressAndStop() {
+        const program::ParseResult endless = program::parse(
+            "%L1\nN1 G192 X200\nN2 G292 Z50\nN3 G0 X60 Z2\n"
+            "N4 G1 Z-50 FZ100\nN5 G0 X110\nN6 G0 Z2\nN7 GOTO 3\n");
+        toolpath::PathOptions o;
+        o.preview.maxFrames = 2000;
+        const toolpath::ProgrammedPath p =
+            toolpath::programmedPath(profile::builtin("training-lathe"), endless.store, 1, o);
+        const stock::Blank blank = *stock::parseUcg("UCG,2,Z-100Z0,X100X0,S0S0,0,-5");
+        std::vector<std::size_t> seen;
+        stock::Stock all(blank);
+        QVERIFY(all.cutPath(p, stock::Tool{}, [&](std::size_t done, std::size_t total) {
+            if (total != p.segments.size())
+                qFatal("total %zu", total);
+            seen.push_back(done);
+            return true;
+        }));
+        QVERIFY(seen.size() >= 2);
+        QVERIFY(std::is_sorted(seen.begin(), seen.end()));
+        QCOMPARE(seen.back(), p.segments.size());
+        stock::Stock stopped(blank);
+        QVERIFY(!stopped.cutPath(p, stock::Tool{}, [](std::size_t, std::size_t) { return false; }));
+        QCOMPARE(stopped.moves(), std::size_t(0));
+        QVERIFY(std::fabs(stopped.areaMm2() - 5000) < 1e-6); // the blank, uncut
+    }
+    // The preview asks keepGoing every PreviewOptions::kKeepGoingFrames
+    // frames with the count so far; false ends it as cancelled there.
+    void previewCancelledByKeepGoing() {
+        const program::ParseResult endless = program::parse("%L1\nN1 G91 G1 Z1 FZ1000\nN2 GOTO 1\n");
+        std::vector<std::int64_t> asked;
+        toolpath::PathOptions o;
+        o.preview.keepGoing = [&](std::int64_t frames) {
+            asked.push_back(frames);
+            return asked.size() < 3;
+        };
+        const toolpath::ProgrammedPath p =
+            toolpath::programmedPath(profile::builtin("training-lathe"), endless.store, 1, o);
+        QCOMPARE(p.run.status, engine::PreviewStatus::Cancelled);
+        QCOMPARE(asked.size(), std::size_t(3));
+        for (std::size_t i = 0; i < asked.size(); ++i)
+            QVERIFY(asked[i] >= static_cast<std::int64_t>(i + 1) * engine::PreviewOptions::kKeepGoingFrames);
+        QCOMPARE(p.run.frames, asked.back());
+        QVERIFY(p.run.frames < 4 * engine::PreviewOptions::kKeepGoingFrames);
     }
 };
 

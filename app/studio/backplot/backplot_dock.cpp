@@ -2,11 +2,15 @@
 #include "workspace/flow_layout.h"
 
 #include "backplot/backplot_widget.h"
+#include "controller/controller.h"
+#include "controller/simulated_machine.h"
+#include "controller/view_notice.h"
 #include "engine/rparams.h"
-#include "session/simulation_session.h"
+#include "machine/simulation.h"
 #include "toolpath/actual_path.h"
 
 #include <QCheckBox>
+#include <QElapsedTimer>
 #include <QDockWidget>
 #include <QEvent>
 #include <QGuiApplication>
@@ -17,6 +21,8 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <algorithm>
+#include <memory>
 
 namespace k528::studio::backplot {
 
@@ -25,7 +31,7 @@ namespace {
 class BackplotDock final : public QDockWidget {
     Q_OBJECT
 public:
-    BackplotDock(QMainWindow* w, SimulationSession& session) : QDockWidget(w), session_(session) {
+    BackplotDock(QMainWindow* w, ViewedController& viewed) : QDockWidget(w), viewed_(viewed) {
         setObjectName("dock.backplot");
         auto* box = new QWidget(this);
         auto* row = new FlowLayout; // wraps in a narrow dock
@@ -60,23 +66,27 @@ public:
         layout->addLayout(row);
         layout->addLayout(stockRow);
         layout->addWidget(view_, 1);
-        setWidget(box);
+        auto* notice = new ViewNotice(box, this);
+        notice->setObjectName("backplot.notice");
+        notice->follow(viewed, [this](Controller& c) -> std::pair<ViewNotice::Level, QString> {
+            if (c.simulated())
+                return {ViewNotice::Level::None, {}};
+            if (!waitingFor_.isEmpty())
+                return {ViewNotice::Level::Info, waitingFor_};
+            return {ViewNotice::Level::Info,
+                    tr("The actual path grows from the controller's live positions, read %1 times a second; a "
+                       "program's path once its text is read from the controller.")
+                        .arg(c.capabilities().liveRateHz, 0, 'f', 0)};
+        });
+        notice_ = notice;
+        setWidget(notice);
         connect(pathButton_, &QPushButton::clicked, this, [this] { computePath(); });
         connect(runButton_, &QPushButton::clicked, this, [this] {
-            view_->showActualRun(session_.simulation().profile(), session_.controller().programs(),
-                                 program_->value());
+            view_->showActualRun(controller().profile(), controller().programs(), program_->value());
         });
-        // The path of a run on the session's machine grows live: every tick
-        // is sampled (a copy), each UI frame (advanced()) draws the batch.
-        live_.attach(session_.simulation());
-        connect(&session_, &QObject::destroyed, this, [this] { live_.abandon(); });
-        connect(&session_, &SimulationSession::advanced, this, [this] { liveFrame(); });
+        connect(&viewed, &ViewedController::changed, this, [this] { follow(); });
+        follow();
         retranslate();
-        const program::ProgramStore& store = session_.controller().programs();
-        if (!store.programs().empty()) {
-            program_->setValue(store.programs().front().number);
-            computePath();
-        }
     }
 
 protected:
@@ -87,41 +97,101 @@ protected:
     }
 
 private:
+    Controller& controller() const { return viewed_.current(); }
+
+    // The controller shown: a simulated machine's every tick is sampled (a
+    // copy) and each UI frame draws the batch; a real controller's live
+    // positions are sampled at each poll.
+    void follow() {
+        live_->detach();
+        live_ = std::make_unique<toolpath::LiveActualPath>();
+        disconnect(updates_);
+        Controller& c = controller();
+        if (SimulatedMachine* sim = c.simulated()) {
+            live_->attach(sim->simulation());
+            connect(sim->lifetime(), &QObject::destroyed, this, [this] { live_->abandon(); });
+            updates_ = connect(&c, &Controller::updated, this, [this] {
+                liveFrame();
+                pathArrived();
+            });
+        } else {
+            clock_.start();
+            updates_ = connect(&c, &Controller::updated, this, [this] {
+                const ControllerState& st = controller().state();
+                if (st.connected) {
+                    toolpath::ActualSample s;
+                    const bool active = toolpath::sampleOfViews(st.program, st.axes, static_cast<double>(clock_.elapsed()), s);
+                    live_->observe(active ? &s : nullptr);
+                }
+                liveFrame();
+                pathArrived();
+            });
+        }
+        pathRevision_ = ~std::uint64_t{0};
+        waitingFor_.clear();
+        const program::ProgramStore& store = c.programs();
+        if (!store.programs().empty()) {
+            program_->setValue(store.programs().front().number);
+            computePath();
+        }
+    }
+    // A program asked of the controller came: its path now.
+    void pathArrived() {
+        if (waitingFor_.isEmpty() || !controller().programs().contains(program_->value()))
+            return;
+        waitingFor_.clear();
+        computePath();
+        notice_->refresh();
+    }
     void liveFrame() {
-        const toolpath::LiveActualPath::Batch b = live_.flush();
+        const toolpath::LiveActualPath::Batch b = live_->flush();
         if (!follow_->isChecked() || (b.raw == 0 && !b.restarted && !liveShown_))
             return;
         if (b.restarted) {
             // The running program's programmed path under it (АВТОМАТ's choice, R252).
-            const program::ProgramStore& store = session_.controller().programs();
-            int number = session_.controller().r(engine::r::SelectedProgram);
+            const program::ProgramStore& store = controller().programs();
+            int number = controller().state().program.selectedProgram;
             if (!store.contains(number))
-                number = live_.program();
-            if (store.contains(number) && (number != view_->scene().path().program ||
-                                           session_.controller().programsRevision() != pathRevision_)) {
+                number = live_->program();
+            if (!store.contains(number) && number > 0) {
+                program_->setValue(number);
+                computePath(); // asks a real controller for its text
+            } else if (store.contains(number) && (number != view_->scene().path().program ||
+                                                  controller().programsRevision() != pathRevision_)) {
                 program_->setValue(number);
                 computePath();
             }
         }
         std::optional<k528::backplot::BackplotScene::LiveTool> tool;
-        const toolpath::ActualPath& path = live_.path();
-        if (live_.running() && !path.samples.empty()) {
+        const toolpath::ActualPath& path = live_->path();
+        if (live_->running() && !path.samples.empty()) {
             const toolpath::ActualSample& s = path.samples.back();
-            const engine::Controller& c = session_.controller();
-            const units::AxisScale sx = c.axisView(engine::AxisId::X).scale;
-            tool = k528::backplot::BackplotScene::LiveTool{
-                s.z, s.x, units::discToMm(c.r(engine::r::WheelCurrent), sx)};
+            const Controller& c = controller();
+            const units::AxisScale sx = c.state().axes[0].scale;
+            const auto r = c.rValues();
+            const std::int64_t wheel = r.size() > engine::r::WheelCurrent ? r[engine::r::WheelCurrent] : 0;
+            tool = k528::backplot::BackplotScene::LiveTool{s.z, s.x, units::discToMm(wheel, sx)};
         }
         view_->appendLive(path, b.restarted ? 0 : b.firstNew, tool);
-        liveShown_ = live_.running();
+        liveShown_ = live_->running();
     }
     void computePath() {
-        const program::ProgramStore& store = session_.controller().programs();
-        if (!store.contains(program_->value()))
+        Controller& c = controller();
+        const program::ProgramStore& store = c.programs();
+        const int number = program_->value();
+        if (!store.contains(number)) {
+            const auto& present = c.state().programNumbers;
+            if (!c.simulated() && std::find(present.begin(), present.end(), number) != present.end()) {
+                waitingFor_ = tr("Reading L%1 from the controller for its path...").arg(number);
+                c.fetchProgram(number);
+            } else {
+                waitingFor_.clear();
+            }
+            notice_->refresh();
             return;
-        pathRevision_ = session_.controller().programsRevision();
-        view_->showProgram(session_.simulation().profile(), store, program_->value(),
-                           stock::parseUcg(ucg_->text().toStdString()));
+        }
+        pathRevision_ = c.programsRevision();
+        view_->showProgram(c.profile(), store, number, stock::parseUcg(ucg_->text().toStdString()));
     }
     void retranslate() {
         setWindowTitle(tr("Backplot"));
@@ -132,24 +202,28 @@ private:
                                   "actual path, coloured by following error"));
         ucgLabel_->setText(tr("Blank (UCG)"));
         follow_->setText(tr("Follow the machine"));
-        follow_->setToolTip(tr("While the session's machine runs a program, its path grows here live"));
+        follow_->setToolTip(tr("While the controller shown runs a program, its path grows here live"));
     }
 
-    SimulationSession& session_;
+    ViewedController& viewed_;
+    ViewNotice* notice_ = nullptr;
+    QMetaObject::Connection updates_;
+    QElapsedTimer clock_;
+    QString waitingFor_;
     QLabel *programLabel_ = nullptr, *ucgLabel_ = nullptr;
     QSpinBox* program_ = nullptr;
     QPushButton *pathButton_ = nullptr, *runButton_ = nullptr;
     QLineEdit* ucg_ = nullptr;
     QCheckBox* follow_ = nullptr;
     BackplotWidget* view_ = nullptr;
-    toolpath::LiveActualPath live_;
+    std::unique_ptr<toolpath::LiveActualPath> live_ = std::make_unique<toolpath::LiveActualPath>();
     bool liveShown_ = false;
     std::uint64_t pathRevision_ = ~std::uint64_t{0}; // of the store the path was computed from
 };
 
 } // namespace
 
-QDockWidget* addBackplotDock(QMainWindow* window, SimulationSession& session) {
+QDockWidget* addBackplotDock(QMainWindow* window, ViewedController& viewed) {
     QDockWidget* dock = nullptr;
     if (QGuiApplication::platformName() == QLatin1String("offscreen")) {
         // QOpenGLWidget crashes on the offscreen platform (widget tests):
@@ -162,7 +236,7 @@ QDockWidget* addBackplotDock(QMainWindow* window, SimulationSession& session) {
         label->setWordWrap(true);
         dock->setWidget(label);
     } else {
-        dock = new BackplotDock(window, session);
+        dock = new BackplotDock(window, viewed);
     }
     dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
                       QDockWidget::DockWidgetClosable);

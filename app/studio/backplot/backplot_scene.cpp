@@ -222,6 +222,33 @@ void BackplotScene::setInteracting(bool on) {
 void BackplotScene::setPath(toolpath::ProgrammedPath&& path) {
     path_ = std::move(path);
     geom_.build(path_);
+    pathChanged();
+    buildStock();
+}
+
+PreparedPath preparePath(toolpath::ProgrammedPath path, const std::optional<stock::Blank>& blank,
+                         const stock::CutProgress& progress) {
+    PreparedPath p;
+    p.path = std::move(path);
+    p.geometry.build(p.path);
+    p.blank = blank;
+    if (blank) {
+        stock::Stock s(*blank);
+        if (s.cutPath(p.path, stock::Tool{}, progress))
+            p.stock = s.shape();
+    }
+    return p;
+}
+
+void BackplotScene::setPrepared(PreparedPath&& p) {
+    path_ = std::move(p.path);
+    geom_ = std::move(p.geometry);
+    blank_ = p.blank;
+    pathChanged();
+    buildStock(p.stock);
+}
+
+void BackplotScene::pathChanged() {
     cumulative_.resize(path_.segments.size());
     double t = 0;
     for (std::size_t i = 0; i < path_.segments.size(); ++i)
@@ -229,7 +256,6 @@ void BackplotScene::setPath(toolpath::ProgrammedPath&& path) {
     playhead_ = -1;
     v_->sweepLimit = ~std::size_t{0};
     buildStatic();
-    buildStock();
 }
 
 void BackplotScene::setActual(const toolpath::ActualPath* a) {
@@ -428,21 +454,30 @@ void BackplotScene::zoomAt(double dx, double dy, double factor, int w, int h) {
 }
 
 void BackplotScene::buildStock() {
-    if (!blank_) {
+    std::optional<stock::Shape> shape;
+    if (blank_) {
+        stock::Stock s(*blank_);
+        s.cutPath(path_, stock::Tool{});
+        shape = s.shape();
+    }
+    buildStock(shape);
+}
+
+void BackplotScene::buildStock(const std::optional<stock::Shape>& shape) {
+    if (!blank_ || !shape) {
         v_->stock2d.data->Initialize();
         v_->stock3d.data->Initialize();
         v_->stockFill.data->Initialize();
         return;
     }
-    stock::Stock s(*blank_);
-    s.cutPath(path_, stock::Tool{});
+    const stock::Shape& s = *shape;
     const double shown = path_.diameterX ? 2.0 : 1.0;
     std::vector<float> outline;
     vtkNew<vtkPoints> pts;
     vtkNew<vtkCellArray> rings;
-    for (std::size_t i = 0; i < s.polygons(); ++i) {
-        std::vector<stock::Ring> all = s.holes(i);
-        all.insert(all.begin(), s.outer(i));
+    for (const stock::Shape::Polygon& poly : s.polygons) {
+        std::vector<stock::Ring> all = poly.holes;
+        all.insert(all.begin(), poly.outer);
         for (const stock::Ring& ring : all) {
             const vtkIdType first = pts->GetNumberOfPoints();
             rings->InsertNextCell(static_cast<vtkIdType>(ring.size() + 1));
@@ -461,8 +496,8 @@ void BackplotScene::buildStock() {
     {
         vtkNew<vtkPoints> fp;
         vtkNew<vtkCellArray> polys;
-        for (std::size_t i = 0; i < s.polygons(); ++i) {
-            const stock::Ring ring = s.outer(i);
+        for (const stock::Shape::Polygon& poly : s.polygons) {
+            const stock::Ring& ring = poly.outer;
             polys->InsertNextCell(static_cast<vtkIdType>(ring.size()));
             for (const stock::PointZR& q : ring)
                 polys->InsertCellPoint(fp->InsertNextPoint(q.z, q.r * shown, -0.3));

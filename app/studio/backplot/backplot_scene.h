@@ -75,6 +75,21 @@ struct WheelGeometry {
 
 enum class ViewMode { XZ, Solid3D };
 
+// A path made ready for the scene away from it (any thread, no VTK): the
+// geometry built and the blank cut by the path. The studio prepares a path
+// on a worker (backplot/path_job.h) and hands it to setPrepared(): the GUI
+// thread then only fills VTK's buffers.
+struct PreparedPath {
+    toolpath::ProgrammedPath path;
+    PathGeometry geometry;
+    std::optional<stock::Blank> blank;
+    std::optional<stock::Shape> stock; // the blank as the path leaves it; none: no blank, or the cut was stopped
+};
+// Builds the geometry and cuts the blank; `progress` as Stock::cutPath's
+// (false stops the cut: `stock` stays empty).
+PreparedPath preparePath(toolpath::ProgrammedPath path, const std::optional<stock::Blank>& blank,
+                         const stock::CutProgress& progress = {});
+
 class BackplotScene {
 public:
     BackplotScene();
@@ -83,6 +98,8 @@ public:
 
     void setPath(const toolpath::ProgrammedPath& path);
     void setPath(toolpath::ProgrammedPath&& path);
+    // A path and its stock prepared elsewhere (preparePath).
+    void setPrepared(PreparedPath&& prepared);
     // The overlay's words (the title, the scale's length); shown at the next refresh.
     void setTexts(const OverlayTexts& texts);
     const OverlayTexts& texts() const { return texts_; }
@@ -96,6 +113,7 @@ public:
     // hidden — they are rebuilt every frame and cost more than the path.
     void setInteracting(bool on);
     void setActual(const toolpath::ActualPath* actual); // null: none
+    const toolpath::ActualPath* actual() const { return actual_; }
     // The same path grown since the last call: samples [from, size) are
     // appended to the buffers (a different path or from 0: setActual).
     void appendActual(const toolpath::ActualPath* actual, std::size_t from);
@@ -172,7 +190,9 @@ private:
     void placeOverlays(int widthPx, int heightPx);
     void buildStatic();
     void buildOscillation3d(std::size_t limit);
-    void buildStock();
+    void buildStock(); // cuts blank_ by path_ here
+    void buildStock(const std::optional<stock::Shape>& shape);
+    void pathChanged(); // after path_ and geom_ changed
 };
 
 } // namespace k528::backplot

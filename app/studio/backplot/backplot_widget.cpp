@@ -1,10 +1,16 @@
 #include "backplot/backplot_widget.h"
 #include "workspace/elided_label.h"
+#include "language.h"
 
+#include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
 
 #include <QComboBox>
 #include <QEvent>
+#include <QFutureWatcher>
+#include <QLocale>
+#include <QProgressBar>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -26,6 +32,14 @@
 #include <cmath>
 
 namespace k528::studio::backplot {
+
+namespace {
+// Numbers as the UI's language writes them ("100 000" in Russian), not the
+// system's locale.
+QLocale uiLocale() {
+    return QLocale(currentLanguage() == QLatin1String("ru") ? QLocale::Russian : QLocale::English);
+}
+} // namespace
 
 namespace {
 constexpr double kSpeeds[] = {0.1, 0.5, 1, 2, 5, 10, 100, -1}; // -1: fastest
@@ -101,11 +115,43 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     bottom->addWidget(scrub_, 1);
     bottom->addWidget(timeLabel_);
 
+    // A long computation's progress and its Cancel (shown after a moment),
+    // and what the view says about the path (cut off, cancelled).
+    busyRow_ = new QWidget(this);
+    busyRow_->setObjectName("backplot.busy");
+    auto* busy = new QHBoxLayout(busyRow_);
+    busy->setContentsMargins(0, 0, 0, 0);
+    busyLabel_ = new ElidedLabel(busyRow_);
+    busyBar_ = new QProgressBar(busyRow_);
+    busyBar_->setObjectName("backplot.progress");
+    busyBar_->setTextVisible(false);
+    busyBar_->setMaximumWidth(160);
+    cancelButton_ = new QToolButton(busyRow_);
+    cancelButton_->setObjectName("backplot.cancel");
+    busy->addWidget(busyLabel_, 1);
+    busy->addWidget(busyBar_);
+    busy->addWidget(cancelButton_);
+    busyRow_->hide();
+    statusLabel_ = new ElidedLabel(this);
+    statusLabel_->setObjectName("backplot.status");
+    statusLabel_->setStyleSheet(QStringLiteral("color: #b05000"));
+    statusLabel_->hide();
+
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addLayout(top);
+    layout->addWidget(busyRow_);
+    layout->addWidget(statusLabel_);
     layout->addWidget(split, 1);
     layout->addLayout(bottom);
+
+    job_ = new PathJob(this);
+    connect(job_, &PathJob::finished, this, &BackplotWidget::pathJobFinished);
+    connect(job_, &PathJob::progressed, this, &BackplotWidget::showBusy);
+    connect(cancelButton_, &QToolButton::clicked, this, [this] {
+        cancelledByUser_ = true;
+        job_->cancel();
+    });
 
     liveTimer_ = new QTimer(this);
     liveTimer_->setSingleShot(true);
@@ -203,6 +249,11 @@ void BackplotWidget::changeEvent(QEvent* e) {
 }
 
 void BackplotWidget::retranslate() {
+    cancelButton_->setText(tr("Cancel"));
+    cancelButton_->setToolTip(tr("Stop computing the path (the view keeps what it shows)"));
+    if (busyRow_->isVisible())
+        showBusy();
+    updateStatus();
     fitButton_->setText(tr("Fit"));
     fitButton_->setToolTip(tr("Show the whole path (middle button pans, the wheel zooms)"));
     viewCombo_->setItemText(0, tr("XZ view"));
@@ -228,21 +279,117 @@ void BackplotWidget::retranslate() {
 void BackplotWidget::showProgram(const profile::MachineProfile& profile,
                                  const program::ProgramStore& store, int number,
                                  const std::optional<stock::Blank>& blank) {
-    scene_->setStock(blank);
-    showPath(toolpath::programmedPath(profile, store, number));
+    pendingProgram_ = number;
+    cancelledByUser_ = false;
+    job_->request(profile, store, number, blank);
+}
+
+bool BackplotWidget::computing() const { return job_->busy(); }
+
+QString BackplotWidget::statusText() const { return statusLabel_->isHidden() ? QString() : statusLabel_->text(); }
+
+void BackplotWidget::showBusy() {
+    if (!job_->busy()) {
+        busyRow_->hide();
+        return;
+    }
+    const PathJob::Progress p = job_->progress();
+    // A short one shows no progress at all (counted in frames and legs).
+    if (busyRow_->isHidden() && (p.phase == PathJob::Phase::Preview ? p.done : p.total) < PathJob::kShowProgressAfter)
+        return;
+    const QLocale l = uiLocale();
+    busyLabel_->setText(p.phase == PathJob::Phase::Preview
+                            ? tr("L%1: computing the path… %2 frames").arg(pendingProgram_).arg(l.toString(p.done))
+                            : tr("L%1: cutting the blank… %2 of %3 moves")
+                                  .arg(pendingProgram_)
+                                  .arg(l.toString(p.done), l.toString(p.total)));
+    busyBar_->setRange(0, static_cast<int>(std::max<std::int64_t>(1, p.total)));
+    busyBar_->setValue(static_cast<int>(std::min(p.done, p.total)));
+    busyRow_->show();
+}
+
+void BackplotWidget::pathJobFinished() {
+    std::optional<k528::backplot::PreparedPath> r = job_->take();
+    if (!job_->busy())
+        busyRow_->hide();
+    if (!r) {
+        if (cancelledByUser_) {
+            status_ = {Status::Cancelled, pendingProgram_, 0};
+            updateStatus();
+        }
+        return;
+    }
+    const bool cutOff = r->path.run.status == engine::PreviewStatus::Limit;
+    const int program = r->path.program;
+    const std::int64_t frames = r->path.run.frames;
+    scene_->setPrepared(std::move(*r));
+    // The path of a run on the session's machine (appendLive) stays: it grew
+    // while this path was computed and is not drawn again from its start.
+    if (!scene_->actual() || scene_->actual() == actual_.get())
+        scene_->setActual(actual_ && actual_->result.program == scene_->path().program ? actual_.get() : nullptr);
+    playhead_ = -1;
+    scrub_->setValue(kScrubSteps);
+    updateOutsideList();
+    fit();
+    status_ = cutOff ? decltype(status_){Status::CutOff, program, frames} : decltype(status_){};
+    updateStatus();
+    emit pathShown();
+}
+
+void BackplotWidget::updateStatus() {
+    QString text;
+    switch (status_.what) {
+    case Status::None:
+        break;
+    case Status::CutOff:
+        text = tr("L%1 does not end within %2 frames (an endless loop?): the path shows those frames")
+                   .arg(status_.program)
+                   .arg(uiLocale().toString(status_.frames));
+        break;
+    case Status::Cancelled:
+        text = tr("L%1: the path was not computed (cancelled)").arg(status_.program);
+        break;
+    case Status::Running:
+        text = tr("L%1: simulating the run…").arg(status_.program);
+        break;
+    }
+    statusLabel_->setText(text);
+    statusLabel_->setToolTip(text);
+    statusLabel_->setVisible(!text.isEmpty());
 }
 
 void BackplotWidget::showActualRun(const profile::MachineProfile& profile,
                                    const program::ProgramStore& store, int number) {
-    engine::RunOptions ro;
-    ro.maxSeconds = 600;
-    actual_ = std::make_unique<toolpath::ActualPath>(
-        toolpath::actualPath(profile, store, number, ro, 1.0));
-    scene_->setActual(actual_.get());
-    refresh();
+    // Up to 600 s of machine time at the servo's tick: seconds of work, on a worker.
+    auto* watcher = new QFutureWatcher<toolpath::ActualPath>(this);
+    const int run = ++actualRuns_;
+    connect(watcher, &QFutureWatcher<toolpath::ActualPath>::finished, this, [this, watcher, run] {
+        watcher->deleteLater();
+        if (run != actualRuns_)
+            return; // a newer run was asked for
+        status_ = {};
+        updateStatus();
+        try {
+            actual_ = std::make_unique<toolpath::ActualPath>(watcher->result());
+        } catch (const std::exception&) {
+            return; // the machine cannot run it: the view keeps what it had
+        }
+        scene_->setActual(actual_.get());
+        refresh();
+    });
+    status_ = {Status::Running, number, 0};
+    updateStatus();
+    watcher->setFuture(QtConcurrent::run([profile, store, number] {
+        engine::RunOptions ro;
+        ro.maxSeconds = 600;
+        return toolpath::actualPath(profile, store, number, ro, 1.0);
+    }));
 }
 
 void BackplotWidget::showPath(toolpath::ProgrammedPath path) {
+    job_->cancel(); // a path computed meanwhile would replace this one
+    status_ = {};
+    updateStatus();
     scene_->setPath(std::move(path));
     scene_->setActual(actual_ && actual_->result.program == scene_->path().program ? actual_.get()
                                                                                     : nullptr);

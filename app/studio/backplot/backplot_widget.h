@@ -19,6 +19,7 @@
 class QComboBox;
 class QLabel;
 class QListWidget;
+class QProgressBar;
 class QSlider;
 class QTimer;
 class QToolButton;
@@ -27,6 +28,7 @@ class vtkInteractorStyle;
 namespace k528::studio::backplot {
 
 class VtkGlWidget;
+class PathJob;
 
 class BackplotWidget : public QWidget {
     Q_OBJECT
@@ -38,11 +40,20 @@ public:
     explicit BackplotWidget(QWidget* parent = nullptr);
     ~BackplotWidget() override;
 
-    // Computes the programmed path of program `number` (the engine's preview)
-    // and shows it; `blank` is the stock, if the file keeps one.
+    // Computes the programmed path of program `number` (the engine's
+    // preview) and the blank cut by it on a worker (path_job.h) and shows
+    // them when done (pathShown); a newer call cancels the one under way.
+    // The window goes on meanwhile; a long one shows its progress and a
+    // Cancel button. `blank` is the stock, if the file keeps one.
     void showProgram(const profile::MachineProfile& profile, const program::ProgramStore& store,
                      int number, const std::optional<stock::Blank>& blank = std::nullopt);
-    // Runs the program on the simulated machine and overlays the actual path.
+    // Whether a path is being computed.
+    bool computing() const;
+    // What the view says about the path beside it ("", or the preview cut
+    // off at PathJob::kMaxFrames, a cancelled computation, a run under way).
+    QString statusText() const;
+    // Runs the program on the simulated machine (on a worker) and overlays
+    // the actual path when it is done.
     void showActualRun(const profile::MachineProfile& profile, const program::ProgramStore& store,
                        int number);
     void showPath(toolpath::ProgrammedPath path);
@@ -72,6 +83,8 @@ public:
 
 signals:
     void lineActivated(int program, int line);
+    // A path computed by showProgram() is shown.
+    void pathShown();
 
 private:
     void retranslate();
@@ -80,6 +93,9 @@ private:
     void stepFrame(int dir);
     void tickPlayback();
     void updateOutsideList();
+    void pathJobFinished();
+    void showBusy();
+    void updateStatus(); // statusLabel_ from status_, in the UI's language
 
     std::unique_ptr<k528::backplot::BackplotScene> scene_;
     std::unique_ptr<toolpath::ActualPath> actual_;
@@ -90,6 +106,21 @@ private:
     QSlider* scrub_ = nullptr;
     QLabel *timeLabel_ = nullptr, *pickLabel_ = nullptr, *outsideTitle_ = nullptr;
     QListWidget* outsideList_ = nullptr;
+    PathJob* job_ = nullptr;
+    QWidget* busyRow_ = nullptr; // progress and Cancel, while a long job runs
+    QLabel *statusLabel_ = nullptr, *busyLabel_ = nullptr;
+    QProgressBar* busyBar_ = nullptr;
+    QToolButton* cancelButton_ = nullptr;
+    int pendingProgram_ = 0;
+    // What statusLabel_ says (kept as data: it is said again after a language switch).
+    enum class Status { None, CutOff, Cancelled, Running };
+    struct {
+        Status what = Status::None;
+        int program = 0;
+        std::int64_t frames = 0;
+    } status_;
+    bool cancelledByUser_ = false;
+    int actualRuns_ = 0; // simulated runs under way
     QTimer* timer_ = nullptr;
     QTimer* liveTimer_ = nullptr;      // the next live render, when one is due
     QElapsedTimer sinceLiveRender_;

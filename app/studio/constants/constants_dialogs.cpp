@@ -6,7 +6,7 @@
 #include "constants/machine_store.h"
 #include "engine/controller.h"
 #include "profile/calculator.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -223,7 +223,7 @@ void CalculatorDialog::recalculate() {
         w->setVisible(f == 2);
     for (QWidget* w : {static_cast<QWidget*>(a_), static_cast<QWidget*>(aLabel_)})
         w->setVisible(f == 3);
-    const units::AxisScale s = profile::axisScale(editor_.session().controller().profile(), axis);
+    const units::AxisScale s = profile::axisScale(editor_.controller().profile(), axis);
     const double perMm = static_cast<double>(s.discretesPerMm());
     QString html;
     try {

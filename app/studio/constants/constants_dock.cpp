@@ -7,7 +7,8 @@
 #include "engine/controller.h"
 #include "profile/csv.h"
 #include "profile/text_format.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
+#include "controller/view_notice.h"
 #include "util/input_file.h"
 
 #include <QApplication>
@@ -91,10 +92,23 @@ private:
 
 class ConstantsDock : public QDockWidget {
 public:
-    ConstantsDock(QMainWindow* window, SimulationSession& session) : QDockWidget(window) {
+    ConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine)
+        : QDockWidget(window) {
         setObjectName("dock.constants");
         setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
-        setWidget(new ConstantsPane(session, this));
+        auto* notice = new ViewNotice(new ConstantsPane(viewed, machine), this);
+        notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
+            if (c.simulated())
+                return {ViewNotice::Level::None, {}};
+            const QString why = c.whyNotWritable(MemoryArea::C);
+            return {ViewNotice::Level::Info,
+                    why.isEmpty() ? ConstantsPane::tr("The constants of the controller on the line, read every 10 s. A change "
+                                                      "is written to it at once and kept in the database.")
+                                  : ConstantsPane::tr("The constants of the controller on the line, read every 10 s. They "
+                                                      "cannot be changed now: %1.")
+                                        .arg(why)};
+        });
+        setWidget(notice);
         retranslate();
     }
 
@@ -119,10 +133,10 @@ QToolButton* button(QWidget* parent, const char* name) {
 
 } // namespace
 
-ConstantsPane::ConstantsPane(SimulationSession& session, QWidget* parent)
-    : QWidget(parent), session_(session) {
+ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent)
+    : QWidget(parent), viewed_(viewed) {
     setObjectName("constantsPane");
-    editor_ = new ConstantsEditor(session, this);
+    editor_ = new ConstantsEditor(viewed, machine, this);
     model_ = new ConstantsModel(*editor_, this);
     filter_ = new ConstantsFilter(this);
     filter_->setSourceModel(model_);
@@ -219,7 +233,8 @@ ConstantsPane::ConstantsPane(SimulationSession& session, QWidget* parent)
     });
     connect(hideReserved_, &QCheckBox::toggled, filter_, &ConstantsFilter::setHideReserved);
     editor_->setNoteProvider([this] { return note_->text(); });
-    connect(&session_, &SimulationSession::advanced, model_, &ConstantsModel::refresh);
+    connect(&viewed_, &ViewedController::changed, this, &ConstantsPane::followController);
+    followController();
     connect(editor_, &ConstantsEditor::refused, this, [this](const QString& why) { say(why, true); });
     connect(editor_, &ConstantsEditor::notKept, this, [this](const QString& why) {
         say(tr("Applied to the controller, but not kept in the database: %1").arg(why), true);
@@ -229,6 +244,12 @@ ConstantsPane::ConstantsPane(SimulationSession& session, QWidget* parent)
         note_->clear();
     });
     retranslate();
+}
+
+void ConstantsPane::followController() {
+    disconnect(updates_);
+    updates_ = connect(&viewed_.current(), &Controller::updated, model_, &ConstantsModel::refresh);
+    model_->refresh();
 }
 
 void ConstantsPane::retranslate() {
@@ -409,11 +430,17 @@ void ConstantsPane::importFile(const QString& path) {
             say(tr("Nothing was imported: %1").arg(r.error), true);
             return;
         }
-        const QString why = editor_->applyAll(r.constants);
-        if (!why.isEmpty())
-            say(r.message + QStringLiteral("; ") + tr("the controller did not take them: %1").arg(why), true);
-        else
-            say(r.message, false);
+        say(r.message + QStringLiteral("; ") + tr("sending them to the controller..."), false);
+        const QString message = r.message;
+        QPointer<ConstantsPane> self(this);
+        editor_->applyAll(r.constants, [self, message](const QString& why) {
+            if (!self)
+                return;
+            if (!why.isEmpty())
+                self->say(message + QStringLiteral("; ") + tr("the controller did not take them: %1").arg(why), true);
+            else
+                self->say(message, false);
+        });
     });
 }
 
@@ -486,8 +513,8 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
     });
 }
 
-QDockWidget* addConstantsDock(QMainWindow* window, SimulationSession& session) {
-    auto* dock = new ConstantsDock(window, session);
+QDockWidget* addConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine) {
+    auto* dock = new ConstantsDock(window, viewed, machine);
     window->addDockWidget(Qt::LeftDockWidgetArea, dock);
     dock->hide(); // shown from the View menu; the workspaces place it
     return dock;

@@ -4,8 +4,12 @@
 // the next revision, the history of one constant, the diff of two
 // revisions, import/export of machine files and CSV and the C-constant
 // calculator. Imports, exports and diffs run on a worker thread with a
-// progress bar; the window goes on meanwhile.
+// progress bar; the window goes on meanwhile. It shows the controller the
+// window views: a real one's constants are read over the link and written
+// with its rules (F7 «РАБОТА С ПЭВМ»), which the dock's notice tells.
 #pragma once
+
+#include "profile/profile.h"
 
 #include <QFuture>
 #include <QString>
@@ -27,7 +31,7 @@ namespace k528::studio {
 class ConstantsEditor;
 class ConstantsFilter;
 class ConstantsModel;
-class SimulationSession;
+class ViewedController;
 
 // What a long operation gives back to the window.
 struct LongResult {
@@ -42,7 +46,8 @@ struct LongResult {
 class ConstantsPane : public QWidget {
     Q_OBJECT
 public:
-    ConstantsPane(SimulationSession& session, QWidget* parent = nullptr);
+    // The constants of the controller `viewed` shows, kept as revisions of `machine`.
+    ConstantsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent = nullptr);
 
     ConstantsEditor& editor() const { return *editor_; }
     ConstantsModel* model() const { return model_; }
@@ -82,7 +87,9 @@ private:
     void runLong(const QString& what, std::function<LongResult(std::function<void(int, int)>)> work,
                  std::function<void(const LongResult&)> done);
 
-    SimulationSession& session_;
+    void followController();
+    ViewedController& viewed_;
+    QMetaObject::Connection updates_;
     ConstantsEditor* editor_;
     ConstantsModel* model_;
     ConstantsFilter* filter_;
@@ -106,6 +113,6 @@ private:
 
 // Adds the dock (right area, tabbed with nothing, hidden until chosen from
 // the View menu; its place remembered).
-QDockWidget* addConstantsDock(QMainWindow* window, SimulationSession& session);
+QDockWidget* addConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine);
 
 } // namespace k528::studio

@@ -5,11 +5,14 @@
 #include "engine/controller.h"
 #include "language.h"
 #include "profile/validate.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
 
 #include <QCoreApplication>
 #include <QUndoCommand>
+#include <QPointer>
 #include <QUndoStack>
+#include <memory>
+#include <utility>
 #include <algorithm>
 #include <set>
 #include <vector>
@@ -32,26 +35,11 @@ std::set<ErrorKey> errorKeys(const std::vector<profile::Finding>& fs) {
     return keys;
 }
 
-// The mode of the moment of a change: F5 (one value) or F7 (all, the PC link).
-template <class F>
-QString inMode(engine::Controller& c, engine::Mode mode, F&& change) {
-    if (engine::programActive(c.state()))
-        return QCoreApplication::translate("k528::studio::ConstantsEditor", "a program is under way: the constants are changed when it has ended");
-    for (engine::AxisId a : {engine::AxisId::X, engine::AxisId::Z})
-        if (c.axisView(a).moving)
-            return QCoreApplication::translate("k528::studio::ConstantsEditor", "an axis is moving: the constants are changed at standstill");
-    const engine::Mode was = c.mode();
-    if (was != mode) {
-        const engine::OpResult r = c.selectMode(mode);
-        if (!r.ok())
-            return fromStd(r.detail);
-    }
-    const engine::OpResult r = change();
-    if (was != mode)
-        c.selectMode(was);
-    return r.ok() ? QString() : fromStd(r.detail);
-}
-
+// One change of a constant on the undo stack. The first redo() only keeps
+// it (the controller took it before it was pushed); every other undo or
+// redo asks the controller again. A controller that refuses at once (the
+// simulation answers at once) makes the command obsolete; one on the link
+// answers later: a refusal then puts the stack's index back without asking.
 class SetCCommand : public QUndoCommand {
 public:
     SetCCommand(ConstantsEditor& e, int number, std::int64_t before, std::int64_t after, QString note)
@@ -61,24 +49,58 @@ public:
                     .arg(before)
                     .arg(after));
     }
-    void redo() override { run(after_, note_); }
-    void undo() override {
-        run(before_, QCoreApplication::translate("k528::studio::ConstantsEditor", "undo: %1").arg(note_));
+    void redo() override {
+        if (std::exchange(first_, false)) {
+            e_.keep(number_, after_, note_);
+            return;
+        }
+        run(after_, note_, false);
     }
+    void undo() override {
+        run(before_, QCoreApplication::translate("k528::studio::ConstantsEditor", "undo: %1").arg(note_), true);
+    }
+    static bool replaying; // the stack's index put back: nothing asked
 
 private:
-    void run(std::int64_t v, const QString& note) {
-        const QString why = e_.applyAndKeep(number_, v, note);
-        if (!why.isEmpty()) {
-            setObsolete(true); // nothing happened: the stack forgets it
-            emit e_.refused(why);
-        }
+    void run(std::int64_t v, const QString& note, bool undoing) {
+        if (replaying)
+            return;
+        auto answered = std::make_shared<bool>(false);
+        auto inside = std::make_shared<bool>(true);
+        QUndoStack* stack = e_.undoStack();
+        ConstantsEditor* editor = &e_;
+        const int number = number_;
+        QPointer<QUndoStack> guard(stack);
+        e_.controller().setC(number_, v, [=, this](bool ok, const QString& why) {
+            *answered = true;
+            if (!guard)
+                return;
+            if (ok) {
+                editor->keep(number, v, note);
+                return;
+            }
+            emit editor->refused(why);
+            if (*inside) {
+                setObsolete(true); // nothing happened: the stack forgets it
+                return;
+            }
+            replaying = true; // the index back where the controller is
+            if (undoing)
+                stack->redo();
+            else
+                stack->undo();
+            replaying = false;
+        });
+        *inside = false;
     }
     ConstantsEditor& e_;
     int number_;
     std::int64_t before_, after_;
     QString note_;
+    bool first_ = true;
 };
+
+bool SetCCommand::replaying = false;
 
 } // namespace
 
@@ -118,17 +140,16 @@ CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t 
     return r;
 }
 
-QString applyCToController(engine::Controller& controller, int number, std::int64_t value) {
-    return inMode(controller, engine::Mode::MachineData,
-                  [&] { return controller.setC(number, value); });
+ConstantsEditor::ConstantsEditor(ViewedController& viewed, const profile::MachineProfile& machine, QObject* parent)
+    : QObject(parent), viewed_(viewed), store_(machine), undo_(new QUndoStack(this)) {
+    // Another controller shown: the undo steps were of the other one's memory.
+    connect(&viewed_, &ViewedController::changed, undo_, &QUndoStack::clear);
 }
 
-ConstantsEditor::ConstantsEditor(SimulationSession& session, QObject* parent)
-    : QObject(parent), session_(session), store_(session.simulation().profile()),
-      undo_(new QUndoStack(this)) {}
+Controller& ConstantsEditor::controller() const { return viewed_.current(); }
 
 std::span<const std::int64_t> ConstantsEditor::values() const {
-    return session_.controller().c();
+    return controller().cValues();
 }
 
 CEditCheck ConstantsEditor::check(int number, std::int64_t value) const {
@@ -141,6 +162,10 @@ bool ConstantsEditor::set(int number, std::int64_t value, const QString& note) {
         emit refused(c.text);
         return false;
     }
+    if (const QString why = controller().whyNotWritable(MemoryArea::C, number); !why.isEmpty()) {
+        emit refused(why);
+        return false;
+    }
     const std::int64_t before = values()[static_cast<std::size_t>(number)];
     if (before == value)
         return true;
@@ -150,15 +175,27 @@ bool ConstantsEditor::set(int number, std::int64_t value, const QString& note) {
     const QString n = given.isEmpty()
                           ? QStringLiteral("set C%1 = %2 (K528 Studio)").arg(number, 3, 10, QChar('0')).arg(value)
                           : given;
-    const int count = undo_->count();
-    undo_->push(new SetCCommand(*this, number, before, value, n));
-    return undo_->count() > count || values()[static_cast<std::size_t>(number)] == value;
+    // Asked of the controller first: only what it took goes onto the stack.
+    auto result = std::make_shared<int>(-1); // -1 no answer yet, 0 refused, 1 taken
+    QPointer<ConstantsEditor> self(this);
+    Controller* asked = &controller();
+    controller().setC(number, value, [=](bool ok, const QString& why) {
+        *result = ok ? 1 : 0;
+        if (!self)
+            return;
+        if (!ok) {
+            emit self->refused(why);
+            return;
+        }
+        if (&self->controller() == asked) // still the controller shown
+            self->undo_->push(new SetCCommand(*self, number, before, value, n));
+        else
+            self->keep(number, value, n);
+    });
+    return *result != 0;
 }
 
-QString ConstantsEditor::applyAndKeep(int number, std::int64_t value, const QString& note) {
-    const QString why = applyCToController(session_.controller(), number, value);
-    if (!why.isEmpty())
-        return why;
+void ConstantsEditor::keep(int number, std::int64_t value, const QString& note) {
     emit changed(number);
     db::Edit e;
     e.c[number] = value;
@@ -169,18 +206,16 @@ QString ConstantsEditor::applyAndKeep(int number, std::int64_t value, const QStr
         lastRevision_ = k.revision;
         emit kept(k.revision, note);
     }
-    session_.advance(0); // the views show it at once
-    return {};
 }
 
-QString ConstantsEditor::applyAll(std::span<const std::int64_t> c) {
-    engine::Controller& ctl = session_.controller();
-    const QString why = inMode(ctl, engine::Mode::DataControl, [&] { return ctl.loadCParameters(c); });
-    if (why.isEmpty()) {
-        emit changed(0);
-        session_.advance(0);
-    }
-    return why;
+void ConstantsEditor::applyAll(std::vector<std::int64_t> c, std::function<void(const QString& why)> done) {
+    QPointer<ConstantsEditor> self(this);
+    controller().setAllC(std::move(c), [self, done](bool ok, const QString& why) {
+        if (self && ok)
+            emit self->changed(0);
+        if (done)
+            done(ok ? QString() : why);
+    });
 }
 
 } // namespace k528::studio

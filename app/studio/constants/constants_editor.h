@@ -1,17 +1,19 @@
-// Editing the machine constants of the simulated controller from the desktop
-// (the dock «Machine constants»), as the technologist does at the K923 in
-// РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ, with the checks the controller would make
-// afterwards made before:
+// Editing the machine constants of the controller the window shows (the
+// dock «Machine constants»: the simulated one, or a real one on the link),
+// as the technologist does at the K923 in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ,
+// with the checks the controller would make afterwards made before:
 //   - check(): the value against its definition and the cross-checks of
 //     profile::checkCParams over the controller's other constants. An error
 //     the change would bring (messages 13/29, 15, 37, 38, 39 of appendix М)
 //     refuses it with the manual's text of that message and the reason;
 //     nothing changes. Warnings are told, the change is allowed.
-//   - set(): a change that passes goes onto the undo stack; doing it (and
-//     undoing it) applies the value to the controller (F5 for the moment of
-//     the change, the mode the operator had after it; refused while a program
-//     is under way or an axis moves) and keeps it in the database as the
-//     machine's next revision with the note given (MachineStore).
+//   - set(): a change that passes is asked of the controller with its own
+//     rules (Controller::setC: the simulation's panel — F5 for the moment
+//     of the change, refused while a program is under way or an axis moves;
+//     the link's F7 «РАБОТА С ПЭВМ»); once it took it, the change goes onto
+//     the undo stack and is kept in the database as the machine's next
+//     revision with the note given (MachineStore). Undo and redo ask the
+//     controller again; one it refuses leaves the stack where it was.
 #pragma once
 
 #include "constants/machine_store.h"
@@ -22,16 +24,14 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <vector>
 
 class QUndoStack;
 
-namespace k528::engine {
-class Controller;
-}
-
 namespace k528::studio {
 
-class SimulationSession;
+class Controller;
+class ViewedController;
 
 struct CEditCheck {
     bool ok = true;
@@ -45,30 +45,30 @@ struct CEditCheck {
 // manual's Russian always).
 CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t value, bool russian);
 
-// Sets C`number` on the controller as the K923 does (F5 for the moment of
-// the change); "" when done, otherwise why not (English from the engine).
-QString applyCToController(engine::Controller& controller, int number, std::int64_t value);
-
 class ConstantsEditor : public QObject {
     Q_OBJECT
 public:
-    ConstantsEditor(SimulationSession& session, QObject* parent = nullptr);
+    // Edits the constants of `viewed`'s controller, kept in the database as
+    // revisions of `machine` (the window's machine).
+    ConstantsEditor(ViewedController& viewed, const profile::MachineProfile& machine, QObject* parent = nullptr);
 
-    SimulationSession& session() const { return session_; }
+    Controller& controller() const;
     const MachineStore& store() const { return store_; }
     QUndoStack* undoStack() const { return undo_; }
 
     std::span<const std::int64_t> values() const;
     CEditCheck check(int number, std::int64_t value) const;
-    // Checks, then pushes the change (which applies and keeps it). `note`:
-    // the revision's summary ("" -> "set C022 = 2133 (K528 Studio)").
-    // Returns false (and emits refused()) when refused.
+    // Checks, then asks the controller; once it took the value the change
+    // goes onto the undo stack and is kept. `note`: the revision's summary
+    // ("" -> "set C022 = 2133 (K528 Studio)"). Returns false (and emits
+    // refused()) when refused now; true when done or asked of a controller
+    // on the link (refused() or changed() follow).
     bool set(int number, std::int64_t value, const QString& note = QString());
 
-    // Used by the undo commands: apply and keep, no undo entry. "" or why not.
-    QString applyAndKeep(int number, std::int64_t value, const QString& note);
-    // All 152 (imports): checked as a whole, applied to the controller.
-    QString applyAll(std::span<const std::int64_t> c);
+    // Used by the undo commands: keep in the database, no undo entry.
+    void keep(int number, std::int64_t value, const QString& note);
+    // All 152 (imports): applied to the controller as a whole (Controller::setAllC).
+    void applyAll(std::vector<std::int64_t> c, std::function<void(const QString& why)> done);
 
     int lastRevision() const { return lastRevision_; }
     // Where set() takes the note when it is given none (the dock's note field).
@@ -81,7 +81,7 @@ signals:
     void notKept(const QString& why);   // applied to the controller, not to the database
 
 private:
-    SimulationSession& session_;
+    ViewedController& viewed_;
     MachineStore store_;
     QUndoStack* undo_;
     int lastRevision_ = 0;

@@ -5,7 +5,7 @@
 #include "db/explain.h"
 #include "engine/controller.h"
 #include "language.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
 
 #include <QBrush>
 #include <QColor>
@@ -67,7 +67,7 @@ void ConstantsModel::fillTexts() {
 }
 
 void ConstantsModel::fillMeans() {
-    const profile::MachineProfile& p = editor_.session().controller().profile();
+    const profile::MachineProfile& p = editor_.controller().profile();
     const db::Lang lang = russian_ ? db::Lang::Ru : db::Lang::En;
     means_.assign(catalog::kCParamCount, QString());
     for (int row = 0; row < catalog::kCParamCount; ++row)

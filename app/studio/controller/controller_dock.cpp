@@ -1,6 +1,8 @@
 #include "controller/controller_dock.h"
 
 #include "controller/link_controller.h"
+#include "controller/push_preview.h"
+#include "controller/controller.h"
 #include "language.h"
 #include "link_plugins.h"
 #include "main_window.h"
@@ -25,9 +27,12 @@
 #include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QProgressBar>
+#include <QPointer>
 #include <QPushButton>
+#include <QSaveFile>
 #include <QScrollArea>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -44,39 +49,6 @@ QString dot(bool on, const char* color) {
 }
 
 QString mm(std::int64_t disc, const units::AxisScale& s) { return fromStd(units::formatDisc(disc, s)); }
-
-// What a push would leave in the controller: `memory` (just read) with what
-// `file` sends — C, the R-parameters the PC writes (R0..R231 but R158,
-// R222, R223), the messages when it has any, its programs in the canonical
-// text the controller keeps (link::push).
-profile::MachineProfile afterPush(const profile::MachineProfile& memory, const profile::MachineProfile& file) {
-    profile::MachineProfile m = memory;
-    m.c = file.c;
-    for (int i = 0; i < 300; ++i) {
-        if (!link::k528Map().rWritable(i))
-            continue;
-        const auto it = file.r.find(i);
-        if (it != file.r.end() && it->second != 0)
-            m.r[i] = it->second;
-        else
-            m.r.erase(i);
-    }
-    if (!file.messages.empty())
-        m.messages = file.messages;
-    for (const auto& [n, text] : file.programs) {
-        program::ParseOptions po;
-        po.programNumber = n;
-        const program::ParseResult r = program::parse(text, po);
-        if (r.store.size() == 1) {
-            program::ProgramStore one;
-            one.insert(r.store.programs()[0]);
-            m.programs[n] = program::format(one);
-        } else {
-            m.programs[n] = text;
-        }
-    }
-    return m;
-}
 
 } // namespace
 
@@ -96,7 +68,9 @@ ControllerDock::ControllerDock(MainWindow* window) : QDockWidget(window), window
     for (const linkplugin::Found& f : linkplugin::discover()) {
         if (f.plugin) {
             plugins_.push_back(f.plugin);
-            pluginNames_ << QStringLiteral("%1 %2 (%3)").arg(f.name, f.version, f.transport);
+            // The plugin's name and version: its own words (its transport's
+            // description is English metadata, not a text of this window).
+            pluginNames_ << QStringLiteral("%1 %2").arg(f.name, f.version);
         } else {
             pluginProblem_ += QStringLiteral("%1: %2\n").arg(f.file, f.refused);
         }
@@ -182,6 +156,10 @@ void ControllerDock::build() {
     buttons->addWidget(pull_);
     buttons->addWidget(push_);
     lay->addLayout(buttons);
+    frames_ = new QPushButton(body);
+    frames_->setObjectName("controller.saveFrames");
+    connect(frames_, &QPushButton::clicked, this, [this] { saveFrameLog(); });
+    buttons->addWidget(frames_);
     auto* prog = new QHBoxLayout;
     progress_ = new QProgressBar(body);
     progress_->setObjectName("controller.progress");
@@ -242,6 +220,11 @@ void ControllerDock::build() {
             pushMachineMenu_->addAction(n, this, [this, n] { pushMachine(n); })->setObjectName("action.controller.push." + n);
     });
     menu_->addSeparator();
+    clearCAction_ = menu_->addAction(QString(), this, [this] { clearMemory(MemoryArea::C); });
+    clearCAction_->setObjectName("action.controller.clearC");
+    clearRAction_ = menu_->addAction(QString(), this, [this] { clearMemory(MemoryArea::R); });
+    clearRAction_->setObjectName("action.controller.clearR");
+    menu_->addSeparator();
     menu_->addAction(toggleViewAction());
 }
 
@@ -253,6 +236,8 @@ void ControllerDock::retranslate() {
     pullAction_->setText(tr("&Pull into the database"));
     pushFileAction_->setText(tr("Push a &file..."));
     pushMachineMenu_->setTitle(tr("Push a database &machine"));
+    clearCAction_->setText(tr("Clear the C area (all constants 0)..."));
+    clearRAction_->setText(tr("Clear the R area (all R-parameters 0)..."));
     lineBox_->setTitle(tr("Line (RS485, Modbus RTU)"));
     monitorBox_->setTitle(tr("Live monitor"));
     captions_[0]->setText(tr("Plugin"));
@@ -268,7 +253,9 @@ void ControllerDock::retranslate() {
     pull_->setText(tr("Pull into the database"));
     push_->setText(tr("Push a file..."));
     cancel_->setText(tr("Cancel"));
-    showOnViews_->setText(tr("Show on the K923, Program, messages and axes"));
+    frames_->setText(tr("Frame log..."));
+    frames_->setToolTip(tr("Save every frame of the line (time, direction, bytes, CRC) to a file"));
+    showOnViews_->setText(tr("Show it on every view of the window"));
     lastMonitor_.clear();
     updateEnabled();
     updateLine();
@@ -308,6 +295,7 @@ void ControllerDock::updateEnabled() {
     pushFileAction_->setEnabled(open && !busy && !preview_);
     pushMachineMenu_->setEnabled(open && !busy && !preview_);
     cancel_->setEnabled(busy);
+    frames_->setEnabled(link_ != nullptr && !connecting_);
     if (!havePlugin)
         lineState_->setText(tr("No controller-link plugin was found (searched: %1). %2")
                                 .arg(linkplugin::searchPath().join(", "), pluginProblem_.trimmed()));
@@ -354,8 +342,9 @@ void ControllerDock::connectLine() {
     connect(l, &LinkController::updated, this, &ControllerDock::updateMonitor);
     connect(l, &LinkController::lineChanged, this, &ControllerDock::updateLine);
     connect(l, &LinkController::lost, this, [this](const QString& why) {
-        lastMonitor_.clear();
-        monitor_->setText(tr("<b>The controller does not answer:</b> %1").arg(why.toHtmlEscaped()));
+        lostWhy_ = why;
+        updateMonitor(); // the last values, marked stale
+        updateLine();
     });
     connect(l, &LinkController::progress, this, [this](const QString& what, int done, int total) {
         progress_->setRange(0, std::max(1, total));
@@ -441,6 +430,14 @@ void ControllerDock::disconnectLine() {
     emit connectedChanged(false);
 }
 
+void ControllerDock::closeLine() {
+    if (!link_)
+        return;
+    window_->setViewedController(nullptr);
+    link_.reset();
+    connecting_ = false;
+}
+
 void ControllerDock::pullIntoDatabase() {
     if (!link_ || !link_->isOpen() || link_->busy() || preview_)
         return;
@@ -492,36 +489,10 @@ void ControllerDock::startPush(const profile::MachineProfile& file, const QStrin
 
 void ControllerDock::showPreview(const profile::MachineProfile& memory) {
     const profile::MachineProfile after = afterPush(memory, *pending_);
-    const std::vector<profile::Change> changes = profile::diff(memory, after);
-    auto* d = new QDialog(this);
-    d->setObjectName("controller.pushPreview");
-    d->setAttribute(Qt::WA_DeleteOnClose);
-    d->setWindowTitle(tr("Push %1 to the controller").arg(pendingWhat_));
-    auto* lay = new QVBoxLayout(d);
-    auto* head = new QLabel(changes.empty() ? tr("The controller already holds what %1 has: nothing changes.").arg(pendingWhat_)
-                                            : tr("Changes in the controller's memory: %1. Each program is committed "
-                                                 "all or nothing and read back; the controller must be in F7 «РАБОТА С ПЭВМ».")
-                                                  .arg(changes.size()),
-                            d);
-    head->setWordWrap(true);
-    lay->addWidget(head);
-    auto* text = new QPlainTextEdit(d);
-    text->setObjectName("controller.pushPreview.diff");
-    text->setReadOnly(true);
-    text->setFont(QFont("DejaVu Sans Mono"));
-    text->setPlainText(fromStd(profile::formatDiff(changes)));
-    lay->addWidget(text, 1);
-    auto* box = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, d);
-    box->button(QDialogButtonBox::Ok)->setText(tr("Push"));
-    lay->addWidget(box);
-    connect(box, &QDialogButtonBox::accepted, d, &QDialog::accept);
-    connect(box, &QDialogButtonBox::rejected, d, &QDialog::reject);
-    d->resize(640, 480);
-    preview_ = d;
-    connect(d, &QDialog::finished, this, [this](int result) {
+    preview_ = showPushPreview(this, tr("Push %1").arg(pendingWhat_), memory, after, tr("Push"), [this](bool send) {
         preview_ = nullptr;
         std::unique_ptr<profile::MachineProfile> file = std::move(pending_);
-        if (result == QDialog::Accepted && file && link_ && link_->isOpen()) {
+        if (send && file && link_ && link_->isOpen()) {
             say(tr("Pushing %1...").arg(pendingWhat_));
             link_->push(*file);
         } else {
@@ -530,9 +501,56 @@ void ControllerDock::showPreview(const profile::MachineProfile& memory) {
         }
         updateEnabled();
     });
-    d->open();
     say(tr("Check what %1 changes, then push.").arg(pendingWhat_));
     emit previewShown();
+}
+
+void ControllerDock::saveFrameLog(const QString& given) {
+    if (!link_)
+        return;
+    QString path = given;
+    if (path.isEmpty())
+        path = QFileDialog::getSaveFileName(this, tr("Save the frame log"), QStringLiteral("frames.txt"),
+                                            tr("Text (*.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QPointer<ControllerDock> self(this);
+    link_->frameLog([self, path](const QString& text) {
+        if (!self)
+            return;
+        QSaveFile f(path);
+        const QByteArray bytes = text.toUtf8();
+        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
+            self->say(tr("The frame log was not saved: %1").arg(f.errorString()));
+            emit self->frameLogSaved(false, path);
+            return;
+        }
+        self->say(tr("The frame log saved to %1 (%2 frames)").arg(path).arg(text.count(QLatin1Char('\n'))));
+        emit self->frameLogSaved(true, path);
+    });
+}
+
+void ControllerDock::clearMemory(MemoryArea area, bool ask) {
+    // The controller the window shows, with its rules (manual 2.6.8: F7
+    // «ОЧИСТКА С-ПАРАМ» / «ОЧИСТКА Р-ПАРАМ»; over the link «РАБОТА С ПЭВМ»).
+    Controller* c = window_->viewedController();
+    const QString what = area == MemoryArea::C ? tr("the C area") : tr("the R area");
+    if (const QString why = c->whyNotWritable(area); !why.isEmpty()) {
+        say(tr("%1 was not cleared: %2").arg(what, why));
+        emit memoryCleared(false, lastMessage_);
+        return;
+    }
+    if (ask && QMessageBox::question(this, tr("Clear"),
+                                     tr("Clear %1 of %2? Every value becomes 0; the database keeps what it had.")
+                                         .arg(what, c->description())) != QMessageBox::Yes)
+        return;
+    QPointer<ControllerDock> self(this);
+    c->clear(area, [self, what](bool ok, const QString& why) {
+        if (!self)
+            return;
+        self->say(ok ? tr("%1 cleared").arg(what) : tr("%1 was not cleared: %2").arg(what, why));
+        emit self->memoryCleared(ok, self->lastMessage_);
+    });
 }
 
 void ControllerDock::cancelTransfer() {
@@ -546,17 +564,25 @@ void ControllerDock::updateLine() {
     if (!link_ || !link_->isOpen())
         return;
     const LineInfo& i = link_->lineInfo();
-    lineState_->setText(tr("%1: %2 answers, %3 without answer (a damaged frame ends so), %4 bad replies, "
-                           "%5 exceptions, %6 retries; round trip %7 ms (mean %8 ms); line busy %9 %")
-                            .arg(link_->description())
-                            .arg(i.stats.exchanges)
-                            .arg(i.stats.noAnswer)
-                            .arg(i.stats.badReplies)
-                            .arg(i.stats.exceptions)
-                            .arg(i.stats.retries)
-                            .arg(i.lastRoundTripMs, 0, 'f', 1)
-                            .arg(i.meanRoundTripMs, 0, 'f', 1)
-                            .arg(i.busyPercent, 0, 'f', 0));
+    QStringList exceptions;
+    for (const auto& [code, n] : i.stats.exceptionsByCode)
+        exceptions << QStringLiteral("%1×%2").arg(code, 2, 10, QChar('0')).arg(n);
+    QString text = tr("%1: %2 answers, %3 timeouts, %4 CRC errors, %5 bad replies, %6 exceptions%7, %8 retries; "
+                      "round trip median %9 ms, p95 %10 ms; line busy %11 %")
+                       .arg(link_->description())
+                       .arg(i.stats.exchanges)
+                       .arg(i.stats.noAnswer)
+                       .arg(i.stats.crcErrors)
+                       .arg(i.stats.badReplies)
+                       .arg(i.stats.exceptions)
+                       .arg(exceptions.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(exceptions.join(QLatin1Char(' '))))
+                       .arg(i.stats.retries)
+                       .arg(i.stats.roundTrip.median(), 0, 'f', 1)
+                       .arg(i.stats.roundTrip.p95(), 0, 'f', 1)
+                       .arg(i.busyPercent, 0, 'f', 0);
+    if (link_->stale())
+        text = staleText(*link_) + QStringLiteral("\n") + text;
+    lineState_->setText(text);
 }
 
 void ControllerDock::updateMonitor() {
@@ -570,7 +596,11 @@ void ControllerDock::updateMonitor() {
     const ControllerState& s = link_->state();
     const link::LiveState& live = link_->live();
     const bool ru = currentLanguage() == QLatin1String("ru");
-    QString h = QStringLiteral("<table cellspacing='2'>");
+    QString h;
+    if (link_->stale())
+        h = QStringLiteral("<p style='background:#fff1c2; color:#5c4300'>%1<br>%2</p>")
+                .arg(staleText(*link_).toHtmlEscaped(), tr("Why: %1").arg(lostWhy_.toHtmlEscaped()));
+    h += QStringLiteral("<table cellspacing='2'%1>").arg(link_->stale() ? QStringLiteral(" style='color:#7a7a7a'") : QString());
     const auto row = [&](const QString& k, const QString& v) {
         h += QStringLiteral("<tr><td style='padding-right:8px'><b>%1</b></td><td>%2</td></tr>").arg(k, v);
     };

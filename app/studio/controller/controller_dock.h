@@ -8,11 +8,14 @@
 // preview of what changes (core's profile diff against the memory just
 // read), with progress and cancel, and a live monitor: mode, program and
 // frame, coordinates and following errors, alarms with their texts, the K
-// LEDs and the machine messages (Z1301/Z1302, Z1900..Z1903). While
-// connected, the K923 dock, the Program tab, the messages and the axes views
-// show the real controller (the seam of controller/controller.h).
+// LEDs and the machine messages (Z1301/Z1302, Z1900..Z1903); the line's
+// counters as a Modbus user reads them (answers, timeouts, CRC errors,
+// exceptions by code, retries, round trip median and p95) and its frame log
+// saved to a file. While connected, every view of the window shows the real
+// controller (the seam of controller/controller.h).
 #pragma once
 
+#include "controller/controller.h"
 #include "profile/profile.h"
 
 #include <QDockWidget>
@@ -65,17 +68,28 @@ public slots:
     // is the user's to choose).
     void askForLine();
     void disconnectLine();
+    // The window closes: the views go back to the simulated controller and
+    // the line is closed whatever is under way (a transfer is aborted as on
+    // a cancel: nothing half-committed), while every view is still alive.
+    void closeLine();
     void pullIntoDatabase();
     void pushFile(const QString& path = QString()); // asks for the file when empty
     void pushMachine(const QString& name);           // a database / built-in machine
     void cancelTransfer();
     void refreshPorts();
+    // Clears the C or R area of the controller the window shows (after a
+    // question unless `ask` is false); memoryCleared() tells the end.
+    void clearMemory(k528::studio::MemoryArea area, bool ask = true);
+    // The line's frame log to a file (asks for it when empty).
+    void saveFrameLog(const QString& path = QString());
 
 signals:
     void connectedChanged(bool connected);
     // A pull or push ended (ok or not); the message is also in the status bar.
     void transferFinished(bool ok, const QString& message);
     void previewShown();
+    void frameLogSaved(bool ok, const QString& path);
+    void memoryCleared(bool ok, const QString& message);
 
 protected:
     void changeEvent(QEvent* e) override;
@@ -101,6 +115,8 @@ private:
     QAction* pullAction_ = nullptr;
     QAction* pushFileAction_ = nullptr;
     QMenu* pushMachineMenu_ = nullptr;
+    QAction* clearCAction_ = nullptr;
+    QAction* clearRAction_ = nullptr;
     QGroupBox* lineBox_ = nullptr;
     QGroupBox* monitorBox_ = nullptr;
     QComboBox* plugin_ = nullptr;
@@ -113,6 +129,7 @@ private:
     QPushButton* pull_ = nullptr;
     QPushButton* push_ = nullptr;
     QPushButton* cancel_ = nullptr;
+    QPushButton* frames_ = nullptr;
     QCheckBox* showOnViews_ = nullptr;
     QLabel* lineState_ = nullptr;
     QLabel* monitor_ = nullptr;
@@ -123,7 +140,7 @@ private:
     bool connecting_ = false;
     std::unique_ptr<profile::MachineProfile> pending_; // the push waiting for its preview
     QString pendingWhat_;
-    QString lastMessage_, lastMonitor_;
+    QString lastMessage_, lastMonitor_, lostWhy_;
     int lastRevision_ = 0;
 };
 

@@ -6,6 +6,7 @@
 #include "units/units.h"
 
 #include <QElapsedTimer>
+#include <algorithm>
 #include <QTimer>
 #include <deque>
 #include <set>
@@ -63,6 +64,8 @@ QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), stati
 
 } // namespace
 
+using MemoryDone = k528::studio::MemoryDone;
+
 // Lives on the controller's thread; owns the plugin's transport there. The
 // plugin waits for each answer in a local event loop, which also delivers
 // this thread's timer and queued calls: one operation at a time (depth_),
@@ -102,13 +105,17 @@ public:
         meter_ = std::make_unique<MeterTransport>(*t_, cancel_, closing_);
         link_ = std::make_unique<link::Link>(*meter_);
         link::LiveState live;
-        std::vector<std::uint16_t> regs;
-        const link::Block& cb = link_->map().block(link::BlockKind::C);
+        std::vector<std::uint16_t> regs, rregs;
+        const link::RegisterMap& map = link_->map();
+        const link::Block& cb = map.block(link::BlockKind::C);
         link::LinkError e;
         try {
+            // Who it is, then C and R: the views show the memory from the first moment.
             e = link::identify(*link_, live);
             if (!e)
                 e = link_->read(cb.first, cb.count(), regs);
+            if (!e)
+                e = link_->read(map.rFirst, 2 * map.rCount, rregs);
         } catch (const Cancelled&) {
             e = {link::LinkError::Kind::NoAnswer, 0, "closed"};
         }
@@ -120,10 +127,13 @@ public:
             post([why](LinkController* c) { emit c->opened(false, why); });
             return;
         }
-        const std::vector<std::int64_t> cvals = link::unpackC(link_->map(), regs);
-        post([cvals](LinkController* c) {
-            for (std::size_t n = 1; n < cvals.size() && n < c->machine_.c.size(); ++n)
-                c->machine_.c[n] = cvals[n];
+        const std::vector<std::int64_t> cvals = link::unpackC(map, regs);
+        std::array<std::int32_t, 300> rvals{};
+        for (int i = 0; i < map.rCount && i < 300; ++i)
+            rvals[static_cast<std::size_t>(i)] =
+                link::joinSigned(rregs[static_cast<std::size_t>(2 * i)], rregs[static_cast<std::size_t>(2 * i + 1)]);
+        post([cvals, rvals](LinkController* c) {
+            c->applyMemory(cvals, &rvals);
             c->open_ = true;
             emit c->opened(true, QString());
         });
@@ -168,13 +178,30 @@ public:
         ++polls_;
         if (e) {
             const QString why = fromStd(e.message);
-            post([why](LinkController* c) { emit c->lost(why); });
+            post([why](LinkController* c) {
+                if (!c->lostSince_.isValid()) {
+                    c->lostSince_ = QDateTime::currentDateTime();
+                    c->state_.connected = false;
+                }
+                emit c->lost(why);
+                emit c->updated(); // the views say since when
+            });
             lostBefore_ = true;
             report();
             return;
         }
         if (changed.live || changed.words || std::exchange(lostBefore_, false))
             post([live, words, a, b](LinkController* c) { c->applyPoll(live, words, a, b); });
+        else
+            post([](LinkController* c) { emit c->sampled(); });
+        if ((changed.c && monitor_.cRevision() != 0) || (changed.r && monitor_.rRevision() != 0)) {
+            std::vector<std::int64_t> cv;
+            if (monitor_.cRevision() != 0)
+                cv = monitor_.c();
+            const bool haveR = monitor_.rRevision() != 0;
+            const std::array<std::int32_t, 300> rv = monitor_.r();
+            post([cv, rv, haveR](LinkController* c) { c->applyMemory(cv, haveR ? &rv : nullptr); });
+        }
         // The text of the running program, once (the Program tab shows it).
         if (live.program > 0 && !fetched_.count(live.program)) {
             fetched_.insert(live.program);
@@ -187,8 +214,8 @@ public:
         report();
     }
 
-    void pull() {
-        if (later([this] { pull(); }))
+    void pull(MemoryDone done = {}) {
+        if (later([this, done] { pull(done); }))
             return;
         if (!link_)
             return;
@@ -209,16 +236,21 @@ public:
         report();
         if (cancelled || e) {
             const QString why = cancelled ? LinkController::tr("cancelled; nothing was kept") : fromStd(e.message);
-            post([why](LinkController* c) {
+            post([why, done](LinkController* c) {
                 c->busy_ = false;
-                emit c->pulled(false, why, {});
+                if (done)
+                    done(false, why, {});
+                else
+                    emit c->pulled(false, why, {});
+                emit c->lineChanged();
             });
             return;
         }
         profile::MachineProfile p = link::pulledProfile(r, "controller", "pulled");
         for (const auto& [n, text] : r.programs)
             fetched_.insert(n);
-        post([p](LinkController* c) {
+        const std::array<std::int32_t, 300> rv = r.r;
+        post([p, rv, done](LinkController* c) {
             c->busy_ = false;
             // The pulled memory on the machine's base (name, title, PLC texts, simulation settings).
             profile::MachineProfile m = c->machine_;
@@ -228,8 +260,74 @@ public:
             m.messages = p.messages;
             for (const auto& [n, text] : p.programs)
                 c->applyProgram(n, text);
-            emit c->pulled(true, QString(), m);
+            c->applyMemory(std::vector<std::int64_t>(p.c.begin(), p.c.end()), &rv);
+            if (done)
+                done(true, QString(), m);
+            else
+                emit c->pulled(true, QString(), m);
+            emit c->lineChanged();
         });
+    }
+
+    // A request of a view: one procedure, then the memory read again.
+    void run(std::function<link::LinkError(link::Link&)> op, Done done, bool transfer) {
+        if (later([this, op, done, transfer] { run(op, done, transfer); }))
+            return;
+        if (!link_) {
+            post([done](LinkController*) { done(false, LinkController::tr("the controller is not connected")); });
+            return;
+        }
+        Busy busy(*this);
+        cancel_->store(false);
+        meter_->cancellable = transfer;
+        link::LinkError e;
+        bool cancelled = false;
+        try {
+            e = op(*link_);
+        } catch (const Cancelled&) {
+            cancelled = true;
+        }
+        meter_->cancellable = false;
+        if (cancelled)
+            abortTransfer();
+        monitor_.memoryChanged();
+        if (transfer)
+            fetched_.clear();
+        report();
+        const bool ok = !cancelled && !e;
+        const QString why = cancelled ? LinkController::tr("cancelled; what was not committed is as it was")
+                                      : fromStd(e.message);
+        post([ok, why, done, transfer](LinkController* c) {
+            if (transfer) {
+                c->busy_ = false;
+                c->programs_ = {};
+                ++c->revision_;
+                emit c->lineChanged();
+            }
+            if (ok)
+                emit c->memoryWritten();
+            if (done)
+                done(ok, why);
+        });
+    }
+
+    void fetch(int number) {
+        if (later([this, number] { fetch(number); }))
+            return;
+        if (!link_ || fetched_.count(number))
+            return;
+        Busy busy(*this);
+        fetched_.insert(number);
+        std::string text;
+        try {
+            if (!link::readText(*link_, false, number, text))
+                post([number, text](LinkController* c) { c->applyProgram(number, text); });
+        } catch (const Cancelled&) {
+        }
+    }
+
+    QString frames() const {
+        return t_ ? fromStd(link::formatFrameLog(t_->frameLog())) : QString();
     }
 
     void push(const profile::MachineProfile& file) {
@@ -391,6 +489,7 @@ void LinkController::applyProgram(int number, const std::string& text) {
 void LinkController::applyPoll(const link::LiveState& live, const engine::InterfaceWords& words, bool wordsA,
                                bool wordsB) {
     live_ = live;
+    lostSince_ = {};
     ControllerState& s = state_;
     s.connected = true;
     s.mode = live.mode;
@@ -483,6 +582,173 @@ void LinkController::applyPoll(const link::LiveState& live, const engine::Interf
         line = std::string(panel::kLcdColumns, ' ');
     s.programNumbers = live.programs;
     emit updated();
+    emit sampled();
+}
+
+Capabilities LinkController::capabilities() const {
+    Capabilities c;
+    c.keys = false;
+    c.lcd = false;
+    c.servoData = false;
+    c.training = false;
+    c.liveRateHz = 1000.0 / link::Monitor::kTickMs;
+    c.why = tr("the link's map carries no LCD text, no keys, no DAC or servo-tick data");
+    return c;
+}
+
+void LinkController::fetchProgram(int number) {
+    if (!open_ || number < 1 || programs_.contains(number) ||
+        std::find(state_.programNumbers.begin(), state_.programNumbers.end(), number) == state_.programNumbers.end())
+        return;
+    QMetaObject::invokeMethod(worker_, [w = worker_, number] { w->fetch(number); }, Qt::QueuedConnection);
+}
+
+void LinkController::frameLog(std::function<void(const QString&)> done) {
+    QMetaObject::invokeMethod(worker_, [this, w = worker_, done] {
+        const QString text = w->frames();
+        QMetaObject::invokeMethod(this, [done, text] { done(text); }, Qt::QueuedConnection);
+    }, Qt::QueuedConnection);
+}
+
+void LinkController::applyMemory(const std::vector<std::int64_t>& c, const std::array<std::int32_t, 300>* r) {
+    bool changed = false;
+    if (c.size() == c_.size() && c != c_) {
+        c_ = c;
+        for (std::size_t n = 1; n < c.size() && n < machine_.c.size(); ++n)
+            machine_.c[n] = c[n]; // the axis scales of the views follow the controller's constants
+        changed = true;
+    }
+    if (r && *r != r_) {
+        r_ = *r;
+        changed = true;
+    }
+    if (changed || memoryRevision_ == 0) {
+        ++memoryRevision_;
+        emit updated();
+    }
+}
+
+QString LinkController::whyNotWritable(MemoryArea area, int number) const {
+    if (!open_)
+        return tr("the controller is not connected");
+    if (stale())
+        return staleText(*this);
+    if (busy_)
+        return tr("a transfer is under way on the line");
+    const link::RegisterMap& map = link::k528Map();
+    if (area == MemoryArea::R && number >= 0 && !map.rWritable(number))
+        return number == 158 || number == 222 || number == 223
+                   ? tr("R%1 is the positioner's own: the PC does not write it (it writes %2)")
+                         .arg(number)
+                         .arg(QString::fromStdString(map.rWritableText()))
+                   : tr("R%1 is read only over the link: the PC writes %2").arg(number).arg(QString::fromStdString(map.rWritableText()));
+    if (area == MemoryArea::C && number > 0 &&
+        std::none_of(map.c.begin(), map.c.end(), [&](const link::CPlacement& p) { return p.number == number; }))
+        return tr("C%1 has no address in the positioner (table Е.1): it is not written").arg(number, 3, 10, QChar('0'));
+    if (!state_.pcReady) {
+        const QString mode = state_.mode >= 1 && state_.mode <= 7 ? QStringLiteral("F%1").arg(state_.mode) : tr("power-on");
+        return state_.mode == 7
+                   ? tr("the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose it in its menu on the K923")
+                   : tr("the controller is not in F7 «РАБОТА С ПЭВМ» (mode %1 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on its K923 "
+                        "and choose «РАБОТА С ПЭВМ»")
+                         .arg(mode);
+    }
+    return {};
+}
+
+void LinkController::request(const QString& what, std::function<link::LinkError(link::Link&)> op, Done done) {
+    if (!open_) {
+        if (done)
+            done(false, tr("%1: the controller is not connected").arg(what));
+        return;
+    }
+    QMetaObject::invokeMethod(worker_, [w = worker_, op, done] { w->run(op, done, false); }, Qt::QueuedConnection);
+}
+
+void LinkController::setC(int number, std::int64_t value, Done done) {
+    request(QStringLiteral("C%1").arg(number), [number, value](link::Link& l) { return link::setConstant(l, number, value); },
+            [this, number, value, done](bool ok, const QString& why) {
+                if (ok && static_cast<std::size_t>(number) < c_.size() && c_[static_cast<std::size_t>(number)] != value) {
+                    std::vector<std::int64_t> c = c_;
+                    c[static_cast<std::size_t>(number)] = value;
+                    applyMemory(c, nullptr);
+                }
+                if (done)
+                    done(ok, why);
+            });
+}
+
+void LinkController::setAllC(std::vector<std::int64_t> c, Done done) {
+    request(tr("C-parameters"),
+            [c](link::Link& l) {
+                link::PushPlan plan;
+                plan.hasC = true;
+                plan.c = c;
+                link::PushReport rep;
+                return link::push(l, plan, rep);
+            },
+            [this, c, done](bool ok, const QString& why) {
+                if (ok && c.size() == c_.size())
+                    applyMemory(c, nullptr);
+                if (done)
+                    done(ok, why);
+            });
+}
+
+void LinkController::setR(int number, std::int64_t value, Done done) {
+    request(QStringLiteral("R%1").arg(number), [number, value](link::Link& l) { return link::setRParameter(l, number, value); },
+            [this, number, value, done](bool ok, const QString& why) {
+                if (ok && number >= 0 && number < 300 && r_[static_cast<std::size_t>(number)] != value) {
+                    std::array<std::int32_t, 300> r = r_;
+                    r[static_cast<std::size_t>(number)] = static_cast<std::int32_t>(value);
+                    applyMemory(c_, &r);
+                }
+                if (done)
+                    done(ok, why);
+            });
+}
+
+void LinkController::clear(MemoryArea area, Done done) {
+    request(area == MemoryArea::C ? tr("clear C") : tr("clear R"),
+            [area](link::Link& l) { return link::clearArea(l, area == MemoryArea::C ? link::BlockKind::C : link::BlockKind::R); },
+            [this, area, done](bool ok, const QString& why) {
+                if (ok && area == MemoryArea::C)
+                    applyMemory(std::vector<std::int64_t>(c_.size(), 0), nullptr);
+                if (done)
+                    done(ok, why);
+            });
+}
+
+void LinkController::loadPrograms(const std::string& text, const QString& source, Done done) {
+    if (!open_ || busy_) {
+        if (done)
+            done(false, busy_ ? tr("a transfer is under way on the line") : tr("the controller is not connected"));
+        return;
+    }
+    busy_ = true;
+    emit lineChanged();
+    const std::string name = source.toStdString();
+    auto op = [text, name](link::Link& l) -> link::LinkError {
+        link::PushPlan plan;
+        if (link::LinkError e = link::planProgramFile(l, text, name, plan))
+            return e;
+        link::PushReport rep;
+        link::LinkError e = link::push(l, plan, rep);
+        if (e && rep.anyNew())
+            e.message += "; " + rep.summary();
+        return e;
+    };
+    QMetaObject::invokeMethod(worker_, [w = worker_, op, done] { w->run(op, done, true); }, Qt::QueuedConnection);
+}
+
+void LinkController::readMemory(MemoryDone done) {
+    if (!open_ || busy_) {
+        done(false, busy_ ? tr("a transfer is under way on the line") : tr("the controller is not connected"), {});
+        return;
+    }
+    busy_ = true;
+    emit lineChanged();
+    QMetaObject::invokeMethod(worker_, [w = worker_, done] { w->pull(done); }, Qt::QueuedConnection);
 }
 
 } // namespace k528::studio

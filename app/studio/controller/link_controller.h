@@ -6,7 +6,9 @@
 // never waits for the line: the poll of the live state (every 100 ms, the
 // live block and half of the interface words in turn — under 30 % of the
 // line at 115 200 bit/s), the text of the running program (read once), and
-// the memory transfers (pull, push) with progress and cancel. A cancelled or
+// the memory transfers (pull, push) with progress and cancel, and the
+// requests of the views (a constant, an R-parameter, a clear, programs from
+// a text, the whole memory), one at a time in order. A cancelled or
 // broken transfer leaves the controller as the link contract says: nothing
 // half-committed (the transfer is aborted, the program stays as it was).
 #pragma once
@@ -16,7 +18,9 @@
 #include "../../plugins/link_plugin.h"
 
 #include <QThread>
+#include <array>
 #include <atomic>
+#include <functional>
 #include <memory>
 
 namespace k528::studio {
@@ -41,16 +45,34 @@ public:
 
     QString kind() const override { return QStringLiteral("link"); }
     QString description() const override;
+    QString where() const override { return QStringLiteral("%1#%2").arg(line_.port).arg(line_.address); }
     const ControllerState& state() const override { return state_; }
     const program::ProgramStore& programs() const override { return programs_; }
     std::uint64_t programsRevision() const override { return revision_; }
     const profile::MachineProfile& profile() const override { return machine_; }
     bool acceptsKeys() const override { return false; } // Z1300 is read-only in the map
     void pressKey(panel::KeyPress) override {}
+    Capabilities capabilities() const override;
+    void fetchProgram(int number) override;
+
+    std::span<const std::int64_t> cValues() const override { return c_; }
+    std::span<const std::int32_t> rValues() const override { return r_; }
+    std::uint64_t memoryRevision() const override { return memoryRevision_; }
+    QString whyNotWritable(MemoryArea area, int number = -1) const override;
+    void setC(int number, std::int64_t value, Done done) override;
+    void setAllC(std::vector<std::int64_t> c, Done done) override;
+    void setR(int number, std::int64_t value, Done done) override;
+    void clear(MemoryArea area, Done done) override;
+    void loadPrograms(const std::string& text, const QString& source, Done done) override;
+    void readMemory(MemoryDone done) override;
+    QDateTime lostSince() const override { return lostSince_; }
 
     const linkplugin::LineSettings& line() const { return line_; }
     bool isOpen() const { return open_; }
-    bool busy() const { return busy_; }
+    bool busy() const override { return busy_; }
+    // The frame log of the line (the newest 20 000 frames) as text, read on
+    // the line's thread; `done` gets it on this one.
+    void frameLog(std::function<void(const QString& text)> done);
     const LineInfo& lineInfo() const { return info_; }
     const link::LiveState& live() const { return live_; }
 
@@ -73,6 +95,9 @@ private:
     friend class LinkWorker;
     void applyPoll(const link::LiveState& live, const engine::InterfaceWords& words, bool wordsA, bool wordsB);
     void applyProgram(int number, const std::string& text);
+    void applyMemory(const std::vector<std::int64_t>& c, const std::array<std::int32_t, 300>* r);
+    // Runs `op` on the line's thread after what is under way; `done` on this one.
+    void request(const QString& what, std::function<link::LinkError(link::Link&)> op, Done done);
 
     linkplugin::LinkPlugin& plugin_;
     linkplugin::LineSettings line_;
@@ -81,6 +106,10 @@ private:
     link::LiveState live_;
     program::ProgramStore programs_;
     std::uint64_t revision_ = 1;
+    std::vector<std::int64_t> c_ = std::vector<std::int64_t>(153, 0);
+    std::array<std::int32_t, 300> r_{};
+    std::uint64_t memoryRevision_ = 0;
+    QDateTime lostSince_;
     LineInfo info_;
     bool open_ = false;
     bool busy_ = false;

@@ -5,6 +5,7 @@
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "language.h"
+#include "session/program_loader.h"
 #include "session/simulation_session.h"
 
 #include <QAction>
@@ -184,8 +185,13 @@ bool DebugPanel::run() {
         return false;
     }
     debug_->setTarget(ed);
-    if (!tab_->sendToController())
+    // Into the simulated machine it debugs (the check-then-load path), never
+    // a controller on the link the window may show.
+    const ProgramLoad loaded = loadProgramText(*session_, ed->text().toStdString(), tr("the file"));
+    if (!loaded.loaded) {
+        emit statusMessage(loaded.problem);
         return false;
+    }
     ed->validateNow(); // the store of the text just sent: lines of the frames
     // The file's first program, as the loader selects it for АВТОМАТ.
     int first = 0, firstLine = 0;

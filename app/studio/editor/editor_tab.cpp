@@ -7,9 +7,11 @@
 #include "resources/embedded.h"
 #include "editor/program_editor.h"
 #include "language.h"
-#include "session/program_loader.h"
+#include "controller/controller.h"
+#include "controller/push_preview.h"
+#include "controller/simulated_controller.h"
+#include "profile/text_format.h"
 #include "session/shop_database.h"
-#include "session/simulation_session.h"
 #include "workspace/elided_label.h"
 
 #include <QCoreApplication>
@@ -27,6 +29,8 @@
 #include <QSplitter>
 #include <QTabBar>
 #include <QTabWidget>
+#include <QPointer>
+#include <memory>
 #include <QTemporaryFile>
 #include <QToolBar>
 #include <QToolButton>
@@ -43,7 +47,7 @@ constexpr const char* kSampleProperty = "k528.sample"; // a shipped sample's nam
 constexpr int kRecentMax = 8;
 } // namespace
 
-EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(parent), session_(session) {
+EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent), viewed_(viewed) {
     setObjectName("programEditorTab");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -65,6 +69,9 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     machineAction_->setChecked(true);
     connect(machineAction_, &QAction::toggled, this, &EditorTab::setCheckAgainstMachine);
     sendAction_ = toolbar_->addAction(QString(), this, [this] { sendToController(); });
+    sendAction_->setObjectName("editor.sendToController");
+    openControllerAction_ = toolbar_->addAction(QString(), this, [this] { openFromController(); });
+    openControllerAction_->setObjectName("editor.openFromController");
     toolbar_->addSeparator();
     masterAction_ = toolbar_->addAction(QString(), this, &EditorTab::openMaster);
     newAction_->setObjectName("editor.new");
@@ -91,8 +98,11 @@ EditorTab::EditorTab(SimulationSession* session, QWidget* parent) : QWidget(pare
     // give them more), the rest and every resize to the editor.
     top->setStretchFactor(0, 0);
     top->setStretchFactor(1, 1);
-    if (session_) { // the debugger on the simulated machine
-        debug_ = new DebugPanel(this, session_, top);
+    if (viewed_)
+        connect(viewed_, &ViewedController::changed, this, &EditorTab::reapplyWorkstationMachine);
+    auto* simulated = viewed_ ? dynamic_cast<SimulatedController*>(&viewed_->simulatedController()) : nullptr;
+    if (simulated) { // the debugger on the simulated machine
+        debug_ = new DebugPanel(this, &simulated->session(), top);
         top->addWidget(debug_);
         connect(debug_, &DebugPanel::statusMessage, this, &EditorTab::statusMessage);
     }
@@ -423,24 +433,95 @@ void EditorTab::fileChangedOnDisk(const QString& path) {
 
 bool EditorTab::sendToController() {
     ProgramEditor* ed = currentEditor();
-    if (!ed || !session_)
+    if (!ed || !viewed_)
         return false;
-    // The loader reads a file: the editor's text as it is now, not the saved one.
-    QTemporaryFile tmp(QDir::tempPath() + "/k528-editor-XXXXXX.k528");
-    if (!tmp.open())
+    Controller& c = viewed_->current();
+    const QString name = documentName(tabs_->currentIndex());
+    const QString text = ed->text(); // as it is now, not as saved
+    if (c.busy()) {
+        emit statusMessage(tr("The controller is busy with a transfer: send again when it has ended"));
         return false;
-    tmp.write(ed->text().toUtf8());
-    tmp.flush();
-    const ProgramLoad r = loadProgramFile(*session_, tmp.fileName());
-    if (r.loaded) {
-        QStringList names;
-        for (int n : r.programs)
-            names << QStringLiteral("L%1").arg(n);
-        emit statusMessage(tr("Sent %1 to the controller").arg(names.join(", ")));
-    } else {
-        emit statusMessage(r.problem);
     }
-    return r.loaded;
+    if (!previewBeforeSending_) {
+        auto result = std::make_shared<int>(-1);
+        connect(this, &EditorTab::sent, this, [result](bool ok) { *result = ok ? 1 : 0; }, Qt::SingleShotConnection);
+        send(text, name);
+        return *result != 0;
+    }
+    // First the controller's memory as it is, for the preview of what changes.
+    emit statusMessage(tr("Reading the controller's memory to show what %1 changes...").arg(name));
+    QPointer<EditorTab> self(this);
+    c.readMemory([self, text, name](bool ok, const QString& why, const profile::MachineProfile& memory) {
+        if (!self)
+            return;
+        if (!ok) {
+            const QString m = tr("%1 was not sent: the controller's memory could not be read (%2)").arg(name, why);
+            emit self->statusMessage(m);
+            emit self->sent(false, m);
+            return;
+        }
+        const profile::MachineProfile after = afterPrograms(memory, text.toStdString());
+        self->sendPreview_ = showPushPreview(self, tr("Send %1").arg(name), memory, after, tr("Send"),
+                                             [self, text, name](bool send) {
+                                                 if (!self)
+                                                     return;
+                                                 self->sendPreview_ = nullptr;
+                                                 if (send) {
+                                                     self->send(text, name);
+                                                 } else {
+                                                     const QString m = tr("%1 not sent; nothing changed").arg(name);
+                                                     emit self->statusMessage(m);
+                                                     emit self->sent(false, m);
+                                                 }
+                                             });
+        emit self->sendPreviewShown();
+    });
+    return true;
+}
+
+void EditorTab::send(const QString& text, const QString& name) {
+    Controller& c = viewed_->current();
+    emit statusMessage(tr("Sending %1 to the controller...").arg(name));
+    QPointer<EditorTab> self(this);
+    c.loadPrograms(text.toStdString(), name, [self, name](bool ok, const QString& message) {
+        if (!self)
+            return;
+        const QString m = ok ? (message.isEmpty() ? tr("Sent %1 to the controller").arg(name)
+                                                  : tr("Sent %1 to the controller, with warnings: %2").arg(name, message))
+                             : tr("%1 was not sent: %2").arg(name, message);
+        emit self->statusMessage(m);
+        emit self->sent(ok, m);
+    });
+}
+
+bool EditorTab::openFromController() {
+    if (!viewed_)
+        return false;
+    Controller& c = viewed_->current();
+    if (c.busy()) {
+        emit statusMessage(tr("The controller is busy with a transfer: open again when it has ended"));
+        return false;
+    }
+    emit statusMessage(tr("Reading the programs of the controller..."));
+    QPointer<EditorTab> self(this);
+    const QString where = c.description();
+    c.readMemory([self, where](bool ok, const QString& why, const profile::MachineProfile& memory) {
+        if (!self)
+            return;
+        if (!ok) {
+            const QString m = tr("The programs of the controller could not be read: %1").arg(why);
+            emit self->statusMessage(m);
+            emit self->openedFromController(false, m);
+            return;
+        }
+        const int i = self->addDocument(QString(), QString::fromStdString(profile::programsFileText(memory)));
+        if (ProgramEditor* ed = self->editorAt(i))
+            ed->validateNow();
+        const QString m = tr("Opened the %1 programs of the controller (%2)").arg(memory.programs.size()).arg(where);
+        emit self->statusMessage(m);
+        emit self->openedFromController(true, m);
+    });
+    return true;
 }
 
 void EditorTab::openMaster() {
@@ -601,6 +682,9 @@ void EditorTab::retranslate() {
     machineAction_->setText(tr("Check for the machine"));
     machineAction_->setToolTip(tr("Also check the machine's software limits, feeds and axes"));
     sendAction_->setText(tr("Send to the controller"));
+    sendAction_->setToolTip(tr("The file's programs and messages into the controller shown, after a preview of what changes"));
+    openControllerAction_->setText(tr("Open from the controller"));
+    openControllerAction_->setToolTip(tr("The programs and messages of the controller shown as a new file"));
     masterAction_->setText(tr("Master…"));
     masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
     outline_->setHeaderLabels({tr("Programs")});

@@ -3,8 +3,10 @@
 // files, an unsaved-changes guard, reload when a file changes on disk, the
 // outline of the file's programs, the Problems list (severity, program,
 // line, [Mnn], text) that jumps to the place, the count of problems, the
-// machine the file is checked for, and «send to the controller» through the
-// check-then-load path (session/program_loader). The tools of
+// machine the file is checked for, and «send to the controller» / «open from
+// the controller» on the controller the window shows (controller/controller.h:
+// the simulated one, or a real one on the link), a send after the same
+// preview of what changes as the Controller dock's push. The tools of
 // editor_tab_tools.cpp: renumber / move / copy a program and format the file
 // (text_refactor.h), print and PDF listings (listing.h), the machine each
 // file is checked for, and the programs of a database machine opened and
@@ -21,19 +23,23 @@ class QTreeWidget;
 class QTreeView;
 class QToolBar;
 class QMenu;
+class QDialog;
 
 namespace k528::studio {
 
 class DebugPanel;
 class ProgramEditor;
-class SimulationSession;
+class ViewedController;
 
 class EditorTab : public QWidget {
     Q_OBJECT
 public:
     enum class CloseChoice { Save, Discard, Cancel };
 
-    explicit EditorTab(SimulationSession* session, QWidget* parent = nullptr);
+    // Over the controllers of the window (`viewed`: the one shown, whose
+    // machine "the workstation's machine" is; its simulated one carries the
+    // debugger); nullptr: an editor alone.
+    explicit EditorTab(ViewedController* viewed, QWidget* parent = nullptr);
 
     ProgramEditor* currentEditor() const;
     int documentCount() const;
@@ -100,8 +106,18 @@ public slots:
     bool closeDocument(int index);
     // Closes every document (asking for the modified ones); false = cancelled.
     bool closeAll();
-    // Sends the current file to the simulated controller (check, then load).
+    // Sends the current file's programs and messages to the controller shown:
+    // its memory is read, the preview of what changes shown (sendPreview()),
+    // then the controller checks and takes it (Controller::loadPrograms).
+    // Without the preview (setPreviewBeforeSending(false)) it is sent at
+    // once. Returns false when it cannot start, or a controller that answered
+    // at once refused; sent() tells the end.
     bool sendToController();
+    void setPreviewBeforeSending(bool on) { previewBeforeSending_ = on; }
+    QDialog* sendPreview() const { return sendPreview_; }
+    // The programs and messages of the controller shown as a new document
+    // (read over the link for a real one); openedFromController() tells the end.
+    bool openFromController();
     // Opens the frame master on the cursor's line (editing it when it holds
     // a frame or a message, else inserting a new frame after it).
     void openMaster();
@@ -132,6 +148,9 @@ public slots:
 signals:
     void problemCountChanged(int errors, int warnings);
     void statusMessage(const QString& text);
+    void sendPreviewShown();
+    void sent(bool ok, const QString& message);
+    void openedFromController(bool ok, const QString& message);
     // The current editor's cursor moved to another line: the program there
     // and the 1-based line (the backplot highlights its segments).
     void cursorLineChanged(int program, int line);
@@ -153,13 +172,17 @@ private:
     void createTools();
     void retranslateTools();
     void applyMachine(ProgramEditor* ed);
+    void reapplyWorkstationMachine();
     void fillFileMachineMenu();
     void replaceText(ProgramEditor* ed, const QString& text);
     QString documentName(int index) const;
     // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
     static QString commentsOfLine(const QString& line);
 
-    SimulationSession* session_ = nullptr;
+    void send(const QString& text, const QString& name);
+    ViewedController* viewed_ = nullptr;
+    bool previewBeforeSending_ = true;
+    class QDialog* sendPreview_ = nullptr;
     QToolBar* toolbar_ = nullptr;
     QTabWidget* tabs_ = nullptr;
     QTreeView* problems_ = nullptr;
@@ -178,7 +201,8 @@ private:
             *pdfAction_ = nullptr, *openDbAction_ = nullptr, *fileMachineAction_ = nullptr,
             *refactorAction_ = nullptr, *listingAction_ = nullptr;
     QAction *newAction_ = nullptr, *openAction_ = nullptr, *saveAction_ = nullptr, *saveAsAction_ = nullptr,
-            *sendAction_ = nullptr, *masterAction_ = nullptr, *machineAction_ = nullptr, *recentAction_ = nullptr;
+            *sendAction_ = nullptr, *masterAction_ = nullptr, *machineAction_ = nullptr, *recentAction_ = nullptr,
+            *openControllerAction_ = nullptr;
 };
 
 } // namespace k528::studio

@@ -9,7 +9,7 @@
 #include "editor/text_refactor.h"
 #include "engine/self_test.h"
 #include "session/machine_source.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -107,8 +107,8 @@ void EditorTab::applyMachine(ProgramEditor* ed) {
     if (!checkMachine_ || choice == kNoMachine) {
         ed->setMachine(std::nullopt);
     } else if (choice.isEmpty()) {
-        if (session_)
-            ed->setMachine(session_->simulation().profile(), session_->controller().programs());
+        if (viewed_) // the controller shown: its constants and the programs it holds
+            ed->setMachine(viewed_->current().profile(), viewed_->current().programs());
         else
             ed->setMachine(std::nullopt);
     } else {
@@ -124,6 +124,16 @@ void EditorTab::applyMachine(ProgramEditor* ed) {
     }
     if (tabs_ && ed == currentEditor())
         retranslateTools();
+}
+
+void EditorTab::reapplyWorkstationMachine() {
+    // Another controller shown: the files checked for "the workstation's
+    // machine" are checked for it now.
+    for (int i = 0; i < documentCount(); ++i)
+        if (ProgramEditor* ed = editorAt(i); ed && ed->property(kMachineProperty).toString().isEmpty()) {
+            applyMachine(ed);
+            ed->validateNow();
+        }
 }
 
 bool EditorTab::setFileMachine(int index, const QString& choice) {
@@ -164,7 +174,7 @@ void EditorTab::fillFileMachineMenu() {
         a->setObjectName("action.fileMachine." + (choice.isEmpty() ? QStringLiteral("workstation") : choice));
         connect(a, &QAction::triggered, this, [this, i, choice] { setFileMachine(i, choice); });
     };
-    add(session_ ? tr("The workstation's machine (%1)").arg(QString::fromStdString(session_->simulation().profile().name))
+    add(viewed_ ? tr("The workstation's machine (%1)").arg(QString::fromStdString(viewed_->current().profile().name))
                  : tr("The workstation's machine (none)"),
         QString());
     add(tr("None: the language only"), kNoMachine);

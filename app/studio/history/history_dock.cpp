@@ -2,8 +2,9 @@
 
 #include "history/history_model.h"
 #include "history/history_service.h"
+#include "controller/controller.h"
+#include "controller/view_notice.h"
 #include "session/shop_database.h"
-#include "session/simulation_session.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -20,11 +21,13 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QStackedWidget>
 #include <QTableView>
 #include <QThread>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <filesystem>
+#include <map>
 
 namespace k528::studio {
 
@@ -102,7 +105,7 @@ HistoryView::HistoryView(HistoryService& service, QWidget* parent)
                             "later): %1").arg(m));
     });
     connect(model_, &QAbstractItemModel::rowsInserted, this, &HistoryView::updateStatus);
-    ack_->setEnabled(service_.recorder() != nullptr);
+    ack_->setEnabled(service_.recorder() != nullptr && service_.canAcknowledge());
     csv_->setEnabled(service_.isOpen());
     retranslate();
     applyFilter();
@@ -267,24 +270,44 @@ void HistoryView::retranslate() {
     unacked_->setText(tr("Not acknowledged"));
     allMachines_->setText(tr("All machines"));
     ack_->setText(tr("Acknowledge (ESC)"));
-    ack_->setToolTip(tr("Acknowledges the current messages as ESC on the K923 does "
-                        "(C123 reset, C124 faults, C125 system messages)"));
+    ack_->setToolTip(service_.canAcknowledge() || !service_.recorder()
+                         ? tr("Acknowledges the current messages as ESC on the K923 does "
+                              "(C123 reset, C124 faults, C125 system messages)")
+                         : tr("A real controller's messages are acknowledged on its own K923 (ESC): the link "
+                              "carries no keys"));
     csv_->setText(tr("Export CSV…"));
 }
 
 namespace {
 
+// One page of the history a controller shown: the simulated one's, and each
+// real controller's from when it was first shown until it is disconnected.
 class HistoryDock : public QDockWidget {
 public:
-    HistoryDock(QMainWindow* window, SimulationSession& session, const QString& dbPath)
-        : QDockWidget(window) {
+    HistoryDock(QMainWindow* window, ViewedController& viewed, const QString& dbPath)
+        : QDockWidget(window), viewed_(viewed), dbPath_(dbPath) {
         setObjectName("dock.history");
         setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
-        service_ = new HistoryService(&session, dbPath, this);
-        setWidget(new HistoryView(*service_, this));
+        pages_ = new QStackedWidget(this);
+        pages_->setObjectName("history.pages");
+        auto* notice = new ViewNotice(pages_, this);
+        notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
+            if (c.simulated())
+                return {ViewNotice::Level::None, {}};
+            return {ViewNotice::Level::Info,
+                    HistoryView::tr("The messages of the controller on the line, recorded as they are read (every "
+                                    "%1 ms) with this PC's time; they are acknowledged on its own K923.")
+                        .arg(qRound(1000.0 / c.capabilities().liveRateHz))};
+        });
+        setWidget(notice);
+        connect(&viewed, &ViewedController::changed, this, [this] { showController(viewed_.current()); });
+        showController(viewed.current());
         retranslate();
     }
-    ~HistoryDock() override { delete widget(); } // the view before its service
+    ~HistoryDock() override {
+        for (auto& [c, page] : pages)
+            delete page.view; // the view before its service
+    }
 
 protected:
     void changeEvent(QEvent* e) override {
@@ -294,14 +317,43 @@ protected:
     }
 
 private:
+    struct Page {
+        HistoryService* service = nullptr;
+        HistoryView* view = nullptr;
+    };
+    void showController(Controller& c) {
+        auto it = pages.find(&c);
+        if (it == pages.end()) {
+            Page p;
+            p.service = new HistoryService(&c, dbPath_, this);
+            p.view = new HistoryView(*p.service, pages_);
+            pages_->addWidget(p.view);
+            it = pages.emplace(&c, p).first;
+            if (!c.simulated()) // a real controller: its page goes with it (its run is kept)
+                connect(&c, &QObject::destroyed, this, [this, key = &c] {
+                    const auto gone = pages.find(key);
+                    if (gone == pages.end())
+                        return;
+                    const Page p = gone->second;
+                    pages.erase(gone);
+                    pages_->removeWidget(p.view);
+                    delete p.view;
+                    delete p.service;
+                });
+        }
+        pages_->setCurrentWidget(it->second.view);
+    }
     void retranslate() { setWindowTitle(HistoryView::tr("Message history")); }
-    HistoryService* service_ = nullptr;
+    ViewedController& viewed_;
+    QString dbPath_;
+    QStackedWidget* pages_ = nullptr;
+    std::map<Controller*, Page> pages;
 };
 
 } // namespace
 
-QDockWidget* addHistoryDock(QMainWindow* window, SimulationSession& session, const QString& dbPath) {
-    auto* dock = new HistoryDock(window, session, dbPath);
+QDockWidget* addHistoryDock(QMainWindow* window, ViewedController& viewed, const QString& dbPath) {
+    auto* dock = new HistoryDock(window, viewed, dbPath);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     dock->hide(); // shown from the View menu; the workspaces place it
     return dock;

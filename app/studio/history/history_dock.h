@@ -1,5 +1,5 @@
-// The message history dock (dock.history): every message of the machine's
-// positioner and PLC kept in the database (HistoryService), newest first,
+// The message history dock (dock.history): every message of the viewed
+// controller's positioner and PLC kept in the database (HistoryService), newest first,
 // searchable (text or number), by source, only the unacknowledged, this
 // machine or all; the current ones acknowledged with «ESC» as the K923 does;
 // CSV export on a worker thread with progress.
@@ -26,7 +26,7 @@ namespace k528::studio {
 
 class HistoryModel;
 class HistoryService;
-class SimulationSession;
+class ViewedController;
 
 class HistoryView : public QWidget {
     Q_OBJECT
@@ -84,8 +84,9 @@ private:
 };
 
 // Adds the dock to `window` (bottom area, its place remembered) recording
-// `session`'s messages into the database at `dbPath` ("": the default).
-QDockWidget* addHistoryDock(QMainWindow* window, SimulationSession& session,
-                            const QString& dbPath = {});
+// the messages of each controller `viewed` shows (the simulated one from the
+// start, a real one from when it is first shown) into the database at
+// `dbPath` ("": the default), and showing the one shown.
+QDockWidget* addHistoryDock(QMainWindow* window, ViewedController& viewed, const QString& dbPath = {});
 
 } // namespace k528::studio

@@ -1,10 +1,12 @@
 // The desktop's half of the message history: the process's connection to the
-// database (ShopDatabase: db::defaultDatabasePath(), or a given file), a run of the machine the
-// window simulates, and core's msglog::Recorder on every tick of that
-// machine. On each advanced() the events get the time of day (the desktop's
-// clock; core never reads one) and are written in batches, at most every
-// kFlushMs or at once after an acknowledgement. The history dock reads the
-// same log.
+// database (ShopDatabase: db::defaultDatabasePath(), or a given file), a run
+// of one controller, and core's msglog::Recorder on it — on every tick of
+// the simulated machine (SimulatedMachine), or on every poll of a real
+// controller read over the link (what its views show: msglog::Observation,
+// in the PC's time; its run is named "<machine> @ <port>#<address>"). On
+// each update the events get the time of day (the desktop's clock; core
+// never reads one) and are written in batches, at most every kFlushMs or at
+// once after an acknowledgement. The history dock reads the same log.
 #pragma once
 
 #include "db/message_log.h"
@@ -19,8 +21,9 @@
 
 namespace k528::studio {
 
+class Controller;
 class ShopDatabase;
-class SimulationSession;
+class SimulatedMachine;
 
 class HistoryService : public QObject {
     Q_OBJECT
@@ -28,10 +31,10 @@ public:
     static constexpr int kFlushMs = 500;
 
     // Opens the database at `path` ("": db::defaultDatabasePath()); with a
-    // session, records its machine's messages. A database that cannot be used
-    // is told by error() and nothing is recorded (a damaged file is never
-    // changed).
-    explicit HistoryService(SimulationSession* session, const QString& path = {},
+    // controller, records its messages (while it lives). A database that
+    // cannot be used is told by error() and nothing is recorded (a damaged
+    // file is never changed).
+    explicit HistoryService(Controller* controller, const QString& path = {},
                             QObject* parent = nullptr);
     ~HistoryService() override;
 
@@ -44,6 +47,10 @@ public:
     QString machine() const { return machine_; }
     std::int64_t runId() const { return run_; }
     const msglog::Recorder* recorder() const { return recorder_.get(); }
+    // The controller recorded (nullptr once it is gone).
+    Controller* controller() const { return controller_; }
+    // ESC can be given (the simulated machine; a real one's ESC is its K923's).
+    bool canAcknowledge() const { return sim_ != nullptr; }
 
 public slots:
     // ESC from the dock: the controller's escape() (C123..C125), as the K923 does.
@@ -59,9 +66,12 @@ signals:
 
 private:
     void advanced();
-    void forgetSession();
+    void observeLink();
+    void forgetController();
 
-    SimulationSession* session_ = nullptr;
+    Controller* controller_ = nullptr;
+    SimulatedMachine* sim_ = nullptr;
+    QElapsedTimer linkClock_; // a real controller's time: ms since the run began
     QString path_, machine_, error_;
     std::shared_ptr<ShopDatabase> shop_;
     std::unique_ptr<msglog::Recorder> recorder_;

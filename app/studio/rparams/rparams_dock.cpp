@@ -5,7 +5,8 @@
 #include "engine/controller.h"
 #include "engine/rparams.h"
 #include "rparams/rparams_model.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
+#include "controller/view_notice.h"
 
 #include <QComboBox>
 #include <QDockWidget>
@@ -13,6 +14,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QPointer>
 #include <QLineEdit>
 #include <QMainWindow>
 #include <QTableView>
@@ -25,10 +27,23 @@ namespace {
 
 class RParamsDock : public QDockWidget {
 public:
-    RParamsDock(QMainWindow* window, SimulationSession& session) : QDockWidget(window) {
+    RParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine)
+        : QDockWidget(window) {
         setObjectName("dock.rparams");
         setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
-        setWidget(new RParamsPane(session, this));
+        auto* notice = new ViewNotice(new RParamsPane(viewed, machine), this);
+        notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
+            if (c.simulated())
+                return {ViewNotice::Level::None, {}};
+            const QString why = c.whyNotWritable(MemoryArea::R);
+            return {ViewNotice::Level::Info,
+                    why.isEmpty() ? RParamsPane::tr("The R-parameters of the controller on the line, all read every 2.5 s. "
+                                                    "R0..R231 are written to it at once (not R158, R222, R223).")
+                                  : RParamsPane::tr("The R-parameters of the controller on the line, all read every 2.5 s. "
+                                                    "They cannot be changed now: %1.")
+                                        .arg(why)};
+        });
+        setWidget(notice);
         retranslate();
     }
 
@@ -52,10 +67,10 @@ QToolButton* button(QWidget* parent, const char* name) {
 
 } // namespace
 
-RParamsPane::RParamsPane(SimulationSession& session, QWidget* parent)
-    : QWidget(parent), session_(session), store_(new MachineStore(session.simulation().profile())) {
+RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent)
+    : QWidget(parent), viewed_(viewed), store_(new MachineStore(machine)) {
     setObjectName("rparamsPane");
-    model_ = new RParamsModel(session, this);
+    model_ = new RParamsModel(viewed, this);
     filter_ = new RParamsFilter(this);
     filter_->setSourceModel(model_);
     filter_->setDynamicSortFilter(true);
@@ -122,7 +137,13 @@ RParamsPane::RParamsPane(SimulationSession& session, QWidget* parent)
     connect(search_, &QLineEdit::textChanged, filter_, &RParamsFilter::setSearch);
     connect(show_, &QComboBox::currentIndexChanged, this,
             [this](int i) { filter_->setShow(static_cast<RParamsFilter::Show>(i)); });
-    connect(&session_, &SimulationSession::advanced, model_, &RParamsModel::refresh);
+    const auto follow = [this] {
+        disconnect(updates_);
+        updates_ = connect(&viewed_.current(), &Controller::updated, model_, &RParamsModel::refresh);
+        model_->refresh();
+    };
+    connect(&viewed_, &ViewedController::changed, this, follow);
+    follow();
     connect(model_, &RParamsModel::refused, this, [this](const QString& why) { say(why, true); });
     try {
         model_->setPresets(store_->current().r);
@@ -221,7 +242,7 @@ int RParamsPane::keepSelectedAsPreset() {
         say(tr("R%1 is read only (R232..R262): it cannot be preset").arg(n), true);
         return 0;
     }
-    return keepPresets({{n, session_.controller().r(n)}});
+    return keepPresets({{n, viewed_.current().rValues()[static_cast<std::size_t>(n)]}});
 }
 
 int RParamsPane::removeSelectedPreset() {
@@ -235,8 +256,8 @@ int RParamsPane::removeSelectedPreset() {
 
 int RParamsPane::keepAllAsPresets() {
     std::map<int, std::optional<std::int64_t>> p;
-    const auto r = session_.controller().rValues();
-    for (int n = 0; n < engine::kRCount; ++n) {
+    const auto r = viewed_.current().rValues();
+    for (int n = 0; n < engine::kRCount && n < static_cast<int>(r.size()); ++n) {
         if (engine::rReadOnly(n))
             continue;
         const std::int64_t v = r[static_cast<std::size_t>(n)];
@@ -250,21 +271,39 @@ int RParamsPane::keepAllAsPresets() {
 }
 
 void RParamsPane::applyPresets() {
-    int done = 0;
-    for (const auto& [n, v] : model_->presets()) {
-        const QString why = model_->setValue(n, v);
-        if (!why.isEmpty()) {
-            say(why, true);
-            return;
-        }
-        ++done;
-    }
-    session_.advance(0);
-    say(tr("Presets loaded into the controller: %1").arg(done), false);
+    std::vector<std::pair<int, std::int64_t>> presets(model_->presets().begin(), model_->presets().end());
+    apply_->setEnabled(false);
+    applyFrom(std::move(presets), 0);
 }
 
-QDockWidget* addRParamsDock(QMainWindow* window, SimulationSession& session) {
-    auto* dock = new RParamsDock(window, session);
+void RParamsPane::applyFrom(std::vector<std::pair<int, std::int64_t>> presets, std::size_t next) {
+    // One after another: a controller on the link answers each in turn.
+    if (next == presets.size()) {
+        apply_->setEnabled(true);
+        say(tr("Presets loaded into the controller: %1").arg(presets.size()), false);
+        return;
+    }
+    const auto [n, v] = presets[next];
+    QPointer<RParamsPane> self(this);
+    model_->setValue(n, v, [self, presets, next](const QString& why) {
+        if (!self)
+            return;
+        if (!why.isEmpty()) {
+            self->apply_->setEnabled(true);
+            self->say(tr("Presets loaded into the controller: %1 of %2; R%3 not: %4")
+                          .arg(next)
+                          .arg(presets.size())
+                          .arg(presets[next].first)
+                          .arg(why),
+                      true);
+            return;
+        }
+        self->applyFrom(presets, next + 1);
+    });
+}
+
+QDockWidget* addRParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine) {
+    auto* dock = new RParamsDock(window, viewed, machine);
     window->addDockWidget(Qt::LeftDockWidgetArea, dock);
     dock->hide(); // shown from the View menu; the workspaces place it
     return dock;

@@ -1,15 +1,20 @@
-// The dock «R-parameters» (dock.rparams): R0..R299 of the simulated
-// controller, live while the machine runs (RParamsModel), edited where the
-// engine allows it (РУЧНОЙ screen 3), and the machine's presets: the value
+// The dock «R-parameters» (dock.rparams): R0..R299 of the controller the
+// window shows, live (RParamsModel), edited with that controller's rules
+// (the simulation: РУЧНОЙ screen 3; a real one: F7 «РАБОТА С ПЭВМ», told by
+// the dock's notice), and the machine's presets: the value
 // of a parameter kept as its preset (a new revision of the machine in the
 // database, with a note), a preset removed, the presets put into the
 // controller again.
 #pragma once
 
+#include "profile/profile.h"
+
 #include <QWidget>
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <utility>
+#include <vector>
 
 class QComboBox;
 class QDockWidget;
@@ -24,12 +29,12 @@ namespace k528::studio {
 class MachineStore;
 class RParamsFilter;
 class RParamsModel;
-class SimulationSession;
+class ViewedController;
 
 class RParamsPane : public QWidget {
     Q_OBJECT
 public:
-    RParamsPane(SimulationSession& session, QWidget* parent = nullptr);
+    RParamsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent = nullptr);
     ~RParamsPane() override;
 
     RParamsModel* model() const { return model_; }
@@ -43,7 +48,7 @@ public:
     int keepSelectedAsPreset();
     int removeSelectedPreset();
     int keepAllAsPresets(); // every writable R that is not 0, as «keep the memory» does
-    void applyPresets();    // the machine's presets into the controller
+    void applyPresets();    // the machine's presets into the controller (one after another)
 
 protected:
     void changeEvent(QEvent* e) override;
@@ -53,7 +58,9 @@ private:
     void say(const QString& text, bool bad);
     int selected() const;
 
-    SimulationSession& session_;
+    void applyFrom(std::vector<std::pair<int, std::int64_t>> presets, std::size_t next);
+    ViewedController& viewed_;
+    QMetaObject::Connection updates_;
     MachineStore* store_;
     RParamsModel* model_;
     RParamsFilter* filter_;
@@ -69,6 +76,6 @@ private:
     QLabel* status_;
 };
 
-QDockWidget* addRParamsDock(QMainWindow* window, SimulationSession& session);
+QDockWidget* addRParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine);
 
 } // namespace k528::studio

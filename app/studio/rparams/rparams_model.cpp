@@ -4,14 +4,16 @@
 #include "engine/controller.h"
 #include "engine/rparams.h"
 #include "language.h"
-#include "session/simulation_session.h"
+#include "controller/controller.h"
 #include "units/units.h"
 
 #include <QBrush>
 #include <QColor>
 #include <QFont>
 #include <QLocale>
+#include <QPointer>
 #include <cmath>
+#include <memory>
 
 namespace k528::studio {
 
@@ -21,7 +23,7 @@ QString fromStd(std::string_view s) {
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-units::AxisScale scaleOf(const engine::Controller& c, catalog::RUnit u) {
+units::AxisScale scaleOf(const Controller& c, catalog::RUnit u) {
     return profile::axisScale(c.profile(), catalog::rUnitAxis(u) == catalog::Axis::Z ? catalog::Axis::Z
                                                                                      : catalog::Axis::X);
 }
@@ -32,13 +34,15 @@ bool isCoordinate(catalog::RUnit u) {
 
 } // namespace
 
-RParamsModel::RParamsModel(SimulationSession& session, QObject* parent)
-    : QAbstractTableModel(parent), session_(session) {
-    const auto r = session_.controller().rValues();
-    std::copy(r.begin(), r.end(), shown_.begin());
-    presets_ = session_.simulation().profile().r;
+RParamsModel::RParamsModel(ViewedController& viewed, QObject* parent)
+    : QAbstractTableModel(parent), viewed_(viewed) {
+    const auto r = controller().rValues();
+    std::copy(r.begin(), r.begin() + std::min<std::ptrdiff_t>(300, static_cast<std::ptrdiff_t>(r.size())), shown_.begin());
+    presets_ = controller().profile().r;
     retranslate();
 }
+
+Controller& RParamsModel::controller() const { return viewed_.current(); }
 
 void RParamsModel::retranslate() {
     beginResetModel();
@@ -61,9 +65,9 @@ void RParamsModel::setPresets(std::map<int, std::int64_t> presets) {
 }
 
 void RParamsModel::refresh() {
-    const auto r = session_.controller().rValues();
+    const auto r = controller().rValues();
     int first = -1, last = -1;
-    for (int n = 0; n < engine::kRCount; ++n) {
+    for (int n = 0; n < engine::kRCount && n < static_cast<int>(r.size()); ++n) {
         const auto i = static_cast<std::size_t>(n);
         if (r[i] == shown_[i])
             continue;
@@ -86,7 +90,7 @@ int RParamsModel::columnCount(const QModelIndex& parent) const {
 
 QString RParamsModel::mmText(int number, std::int64_t v) const {
     const catalog::RParamDef& d = catalog::rParam(number);
-    const engine::Controller& c = session_.controller();
+    const Controller& c = controller();
     switch (d.unit) {
     case catalog::RUnit::DiscX:
     case catalog::RUnit::DiscZ: {
@@ -198,11 +202,7 @@ QVariant RParamsModel::headerData(int section, Qt::Orientation o, int role) cons
 }
 
 QString RParamsModel::whyNotEditable(int number) const {
-    if (engine::rReadOnly(number))
-        return tr("R%1 is read only: the controller writes R232..R262").arg(number);
-    if (engine::executing(session_.controller().state()))
-        return tr("A program is executing: R-parameters are changed when it stops, as on the K923");
-    return {};
+    return controller().whyNotWritable(MemoryArea::R, number);
 }
 
 Qt::ItemFlags RParamsModel::flags(const QModelIndex& index) const {
@@ -215,16 +215,21 @@ Qt::ItemFlags RParamsModel::flags(const QModelIndex& index) const {
     return f;
 }
 
-QString RParamsModel::setValue(int number, std::int64_t value) {
+void RParamsModel::setValue(int number, std::int64_t value, std::function<void(const QString&)> done) {
+    const auto answer = [done](const QString& why) {
+        if (done)
+            done(why);
+    };
     if (const QString why = whyNotEditable(number); !why.isEmpty())
-        return why;
+        return answer(why);
     if (!engine::fitsR(value))
-        return tr("%1 is outside the R-parameters' range -2147483648..2147483647").arg(value);
-    const engine::OpResult r = session_.controller().setR(number, value);
-    if (!r.ok())
-        return fromStd(r.detail);
-    refresh();
-    return {};
+        return answer(tr("%1 is outside the R-parameters' range -2147483648..2147483647").arg(value));
+    QPointer<RParamsModel> self(this);
+    controller().setR(number, value, [self, answer](bool ok, const QString& why) {
+        if (ok && self)
+            self->refresh();
+        answer(ok ? QString() : why);
+    });
 }
 
 bool RParamsModel::setData(const QModelIndex& index, const QVariant& value, int role) {
@@ -239,7 +244,7 @@ bool RParamsModel::setData(const QModelIndex& index, const QVariant& value, int 
     } else if (index.column() == Mm && isCoordinate(catalog::rParam(n).unit)) {
         const double mm = QLocale::c().toDouble(QString(text).replace(QLatin1Char(','), QLatin1Char('.')), &ok);
         if (ok && std::isfinite(mm) && std::fabs(mm) < 1e9)
-            v = units::mmToDisc(mm, scaleOf(session_.controller(), catalog::rParam(n).unit));
+            v = units::mmToDisc(mm, scaleOf(controller(), catalog::rParam(n).unit));
         else
             ok = false;
     } else {
@@ -249,12 +254,15 @@ bool RParamsModel::setData(const QModelIndex& index, const QVariant& value, int 
         emit refused(tr("R%1: «%2» is not a number").arg(n).arg(text));
         return false;
     }
-    const QString why = setValue(n, v);
-    if (!why.isEmpty()) {
-        emit refused(why);
-        return false;
-    }
-    return true;
+    auto refusedNow = std::make_shared<bool>(false);
+    QPointer<RParamsModel> self(this);
+    setValue(n, v, [self, refusedNow](const QString& why) {
+        if (why.isEmpty() || !self)
+            return;
+        *refusedNow = true; // the simulation answers at once: setData returns false
+        emit self->refused(why);
+    });
+    return !*refusedNow;
 }
 
 RParamsFilter::RParamsFilter(QObject* parent) : QSortFilterProxyModel(parent) {}

@@ -1,10 +1,12 @@
-// The R-parameters R0..R299 of the simulated controller (section 2.5,
+// The R-parameters R0..R299 of the controller the window shows (section 2.5,
 // appendix Л) as a table: number, access, preset group (УСТ 1..9), meaning,
 // value in discretes and in mm (mm/min, s) of its axis, and the preset the
-// machine keeps for it. Live: refresh() on every advance redraws the values
-// that changed. Values are edited where the engine allows it, as on the
-// K923's РУЧНОЙ screen 3 (Controller::setR: not R232..R262, not while a
-// program executes); the mm column takes millimetres for coordinates.
+// machine keeps for it. Live: refresh() on every update of the controller
+// redraws the values that changed. Values are edited with the controller's
+// rules (Controller::setR: the simulation as on the K923's РУЧНОЙ screen 3 —
+// not R232..R262, not while a program executes; a real controller in F7
+// «РАБОТА С ПЭВМ», R0..R231 but R158, R222, R223); the mm column takes
+// millimetres for coordinates.
 #pragma once
 
 #include <QAbstractTableModel>
@@ -14,13 +16,12 @@
 #include <map>
 #include <vector>
 
-namespace k528::engine {
-class Controller;
-}
+#include <functional>
 
 namespace k528::studio {
 
-class SimulationSession;
+class Controller;
+class ViewedController;
 
 class RParamsModel : public QAbstractTableModel {
     Q_OBJECT
@@ -29,7 +30,8 @@ public:
     static constexpr int NumberRole = Qt::UserRole;
     static constexpr int SearchRole = Qt::UserRole + 1;
 
-    explicit RParamsModel(SimulationSession& session, QObject* parent = nullptr);
+    explicit RParamsModel(ViewedController& viewed, QObject* parent = nullptr);
+    Controller& controller() const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
     int columnCount(const QModelIndex& parent = {}) const override;
@@ -38,8 +40,10 @@ public:
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
-    // Sets R`number` on the controller: "" when done, otherwise why not.
-    QString setValue(int number, std::int64_t value);
+    // Asks the controller to set R`number`; `done` gets "" when it did,
+    // otherwise why not (at once for the simulation, when the line answered
+    // for a real controller).
+    void setValue(int number, std::int64_t value, std::function<void(const QString& why)> done = {});
     // "" when R`number` may be edited now, otherwise why not.
     QString whyNotEditable(int number) const;
 
@@ -55,7 +59,7 @@ signals:
 
 private:
     QString mmText(int number, std::int64_t v) const;
-    SimulationSession& session_;
+    ViewedController& viewed_;
     std::array<std::int32_t, 300> shown_{};
     std::map<int, std::int64_t> presets_;
     std::vector<QString> search_;

@@ -1,7 +1,9 @@
 #include "scope/scope_dock.h"
 
+#include "controller/controller.h"
+#include "controller/simulated_machine.h"
+#include "controller/view_notice.h"
 #include "scope/scope_view.h"
-#include "session/simulation_session.h"
 
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -17,26 +19,23 @@ namespace {
 
 class ScopeDock : public QDockWidget {
 public:
-    ScopeDock(QMainWindow* window, SimulationSession& session) : QDockWidget(window) {
+    ScopeDock(QMainWindow* window, ViewedController& viewed) : QDockWidget(window), viewed_(viewed) {
         setObjectName("dock.scope");
         setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
-        auto* view = new ScopeView(this);
-        view->attach(session.simulation());
+        view_ = new ScopeView(this);
         // The charts live at most at kLiveIntervalMs (a trailing frame
         // draws what the last one skipped).
         pending_.setSingleShot(true);
-        connect(&pending_, &QTimer::timeout, view, [this, view] {
+        connect(&pending_, &QTimer::timeout, view_, [this] {
             sinceDraw_.restart();
-            view->refresh();
+            view_->refresh();
         });
-        connect(&session, &SimulationSession::advanced, view, [this] {
-            if (pending_.isActive())
-                return;
-            const qint64 since = sinceDraw_.isValid() ? sinceDraw_.elapsed() : ScopeView::kLiveIntervalMs;
-            pending_.start(static_cast<int>(std::max<qint64>(0, ScopeView::kLiveIntervalMs - since)));
-        });
-        connect(&session, &QObject::destroyed, view, [view] { view->forget(); });
-        setWidget(view);
+        connect(&viewed, &ViewedController::changed, this, [this] { follow(); });
+        follow();
+        // The rate line says what is sampled; the notice, a lost line.
+        auto* notice = new ViewNotice(view_, this);
+        notice->follow(viewed, [](Controller&) { return std::pair<ViewNotice::Level, QString>{}; });
+        setWidget(notice);
         retranslate();
     }
 
@@ -48,15 +47,33 @@ protected:
     }
 
 private:
+    // The controller shown: every servo tick of the simulated machine, or
+    // each poll of a real one.
+    void follow() {
+        Controller& c = viewed_.current();
+        view_->attachController(&c);
+        disconnect(updates_);
+        updates_ = connect(&c, c.simulated() ? &Controller::updated : &Controller::sampled, view_, [this] {
+            if (pending_.isActive())
+                return;
+            const qint64 since = sinceDraw_.isValid() ? sinceDraw_.elapsed() : ScopeView::kLiveIntervalMs;
+            pending_.start(static_cast<int>(std::max<qint64>(0, ScopeView::kLiveIntervalMs - since)));
+        });
+        if (SimulatedMachine* sim = c.simulated())
+            connect(sim->lifetime(), &QObject::destroyed, view_, [v = view_] { v->forget(); });
+    }
     void retranslate() { setWindowTitle(ScopeView::tr("Oscilloscope")); }
+    ViewedController& viewed_;
+    ScopeView* view_ = nullptr;
+    QMetaObject::Connection updates_;
     QTimer pending_;
     QElapsedTimer sinceDraw_;
 };
 
 } // namespace
 
-QDockWidget* addScopeDock(QMainWindow* window, SimulationSession& session) {
-    auto* dock = new ScopeDock(window, session);
+QDockWidget* addScopeDock(QMainWindow* window, ViewedController& viewed) {
+    auto* dock = new ScopeDock(window, viewed);
     window->addDockWidget(Qt::BottomDockWidgetArea, dock);
     dock->hide(); // shown from the View menu; the workspaces place it
     return dock;

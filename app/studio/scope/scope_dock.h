@@ -1,4 +1,6 @@
-// The oscilloscope's dock (dock.scope) over the window's simulated machine.
+// The oscilloscope's dock (dock.scope) over the controller the window shows:
+// every servo tick of the simulated machine, or a real controller's live
+// state at the link's rate (the view says which).
 #pragma once
 
 class QDockWidget;
@@ -6,10 +8,10 @@ class QMainWindow;
 
 namespace k528::studio {
 
-class SimulationSession;
+class ViewedController;
 
 // Adds the dock to `window` (bottom area, its place remembered) recording
-// every servo tick of `session`'s machine and redrawing on advanced().
-QDockWidget* addScopeDock(QMainWindow* window, SimulationSession& session);
+// the controller `viewed` shows and redrawing on its updates.
+QDockWidget* addScopeDock(QMainWindow* window, ViewedController& viewed);
 
 } // namespace k528::studio

@@ -1,5 +1,7 @@
 #include "scope/scope_view.h"
 
+#include "controller/controller.h"
+#include "controller/simulated_machine.h"
 #include "machine/simulation.h"
 #include "workspace/flow_layout.h"
 
@@ -19,6 +21,7 @@
 #include <QPushButton>
 #include <QResizeEvent>
 #include <QSpinBox>
+#include <QStandardItemModel>
 #include <QVBoxLayout>
 #include <QValueAxis>
 #include <algorithm>
@@ -234,6 +237,10 @@ ScopeView::ScopeView(QWidget* parent) : QWidget(parent) {
                      originMs_);
         });
     }
+    rateLabel_ = new QLabel(this);
+    rateLabel_->setObjectName("scope.rate");
+    rateLabel_->setWordWrap(true);
+    layout->insertWidget(1, rateLabel_);
     cursorLabel_ = new QLabel(this);
     cursorLabel_->setObjectName("scope.cursor");
     cursorLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -282,6 +289,93 @@ void ScopeView::detach() {
     if (sim_)
         sim_->setAfterTick({});
     sim_ = nullptr;
+    disconnect(updates_);
+    controller_ = nullptr;
+}
+
+void ScopeView::attachController(Controller* c) {
+    detach();
+    buffer_.clear();
+    stopAtMs_ = triggeredAtMs_ = -1;
+    checkedUpTo_ = 0;
+    lastFrames_ = -1;
+    if (c && c->simulated()) {
+        attach(c->simulated()->simulation());
+        rateHz_ = 1000.0 / static_cast<double>(std::max<std::int64_t>(1, sim_->controller().tickMs()));
+    } else if (c) {
+        controller_ = c;
+        linkClock_.start();
+        linkFrames_ = 0;
+        lastFrameNumber_ = -1;
+        rateHz_ = c->capabilities().liveRateHz;
+        updates_ = connect(c, &Controller::sampled, this, &ScopeView::sampleController);
+        connect(c, &QObject::destroyed, this, [this, c] {
+            if (controller_ == c)
+                detach();
+        });
+    }
+    // The DAC code is the simulated machine's: the link's map has none.
+    if (auto* m = qobject_cast<QStandardItemModel*>(extraBox_->model()))
+        if (QStandardItem* dac = m->item(1)) {
+            dac->setEnabled(!controller_);
+            if (controller_ && extraBox_->currentIndex() == 1)
+                extraBox_->setCurrentIndex(0);
+        }
+    sayRate();
+    refresh();
+}
+
+void ScopeView::sampleController() {
+    if (!controller_ || paused_)
+        return;
+    const ControllerState& st = controller_->state();
+    if (!st.connected) // a lost line: no samples (its last ones stay)
+        return;
+    machine::TraceSample s;
+    s.tMs = linkClock_.elapsed();
+    if (buffer_.size() > 0 && s.tMs <= buffer_.last().tMs)
+        return;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const engine::AxisView& v = st.axes[i];
+        machine::TraceAxisSample& a = s.axes[i];
+        const double dpm = static_cast<double>(v.scale.discretesPerMm());
+        const double ipd = static_cast<double>(v.scale.internalPerDisc());
+        if (!(dpm > 0) || !(ipd > 0))
+            continue;
+        a.positionMm = static_cast<double>(v.currentDisc) / dpm;
+        a.followingErrorMm = v.errorInternal / ipd / dpm;
+        a.setpointMm = a.positionMm + a.followingErrorMm; // error = setpoint − position
+        if (buffer_.size() > 0) {
+            const machine::TraceSample& prev = buffer_.last();
+            const double minutes = static_cast<double>(s.tMs - prev.tMs) / 60000.0;
+            a.velocityMmMin = (a.setpointMm - prev.axes[i].setpointMm) / minutes;
+        }
+    }
+    if (st.program.frameNumber != lastFrameNumber_) {
+        if (lastFrameNumber_ >= 0)
+            ++linkFrames_;
+        lastFrameNumber_ = st.program.frameNumber;
+    }
+    buffer_.add(s);
+    // The rate measured over the samples of the last 5 s.
+    const std::size_t first = buffer_.lowerBound(s.tMs - 5000);
+    if (buffer_.size() - first >= 3)
+        rateHz_ = static_cast<double>(buffer_.size() - first - 1) * 1000.0 /
+                  static_cast<double>(s.tMs - buffer_.at(first).tMs);
+    sayRate();
+}
+
+void ScopeView::sayRate() {
+    if (!rateLabel_)
+        return;
+    const QString text =
+        controller_ ? tr("Live at %1 samples a second: the link's poll of the controller's positions and following "
+                         "errors (the setpoint is position + error; no DAC on the link).")
+                          .arg(rateHz_, 0, 'f', 1)
+        : sim_ ? tr("Every servo tick of the simulated machine (%1 samples a second).").arg(rateHz_, 0, 'f', 0)
+               : QString();
+    if (rateLabel_->text() != text)
+        rateLabel_->setText(text);
 }
 
 void ScopeView::setPaused(bool paused) {
@@ -310,7 +404,7 @@ void ScopeView::setTrigger(Trigger t, double thresholdMm) {
     stopAtMs_ = triggeredAtMs_ = -1;
     checkedUpTo_ = buffer_.size();
     lastFrames_ = -1;
-    lastAlarms_ = sim_ ? sim_->controller().alarms().size() : 0;
+    lastAlarms_ = sim_ ? sim_->controller().alarms().size() : controller_ ? controller_->state().alarms.size() : 0;
 }
 
 ScopeSignal ScopeView::extraSignal() const {
@@ -318,18 +412,17 @@ ScopeSignal ScopeView::extraSignal() const {
 }
 
 void ScopeView::checkTrigger() {
-    if (!sim_ || buffer_.size() == 0 || stopAtMs_ >= 0)
+    if ((!sim_ && !controller_) || buffer_.size() == 0 || stopAtMs_ >= 0)
         return;
     const auto t = static_cast<Trigger>(triggerBox_->currentIndex());
     const std::int64_t now = buffer_.last().tMs;
-    const engine::Controller& ctl = sim_->controller();
     bool fired = false;
     if (t == Trigger::FrameStart) {
-        const std::int64_t frames = ctl.framesExecuted();
+        const std::int64_t frames = sim_ ? sim_->controller().framesExecuted() : linkFrames_;
         fired = lastFrames_ >= 0 && frames != lastFrames_;
         lastFrames_ = frames;
     } else if (t == Trigger::Alarm) {
-        const std::size_t n = ctl.alarms().size();
+        const std::size_t n = sim_ ? sim_->controller().alarms().size() : controller_->state().alarms.size();
         fired = n > lastAlarms_;
         lastAlarms_ = n;
     } else if (t == Trigger::Threshold) {
@@ -527,6 +620,10 @@ void ScopeView::retranslate() {
     extraLabel_->setText(tr("Fourth trace"));
     extraBox_->setItemText(0, tr("Speed, mm/min"));
     extraBox_->setItemText(1, tr("DAC code"));
+    extraBox_->setItemData(1, controller_ ? tr("The link's map carries no DAC code: the simulated machine's only")
+                                          : QString(),
+                           Qt::ToolTipRole);
+    sayRate();
     triggerLabel_->setText(tr("Trigger"));
     triggerBox_->setItemText(0, tr("Free running"));
     triggerBox_->setItemText(1, tr("Frame start"));

@@ -5,7 +5,10 @@
 // min/max decimation of ScopeBuffer. Triggers (a frame start, an alarm, a
 // threshold of |following error|) stop the picture half a window after the
 // event; pause; zoom with the mouse while stopped; a cursor that shows the
-// values under the mouse; CSV and PNG export.
+// values under the mouse; CSV and PNG export. On the simulated machine it
+// records every servo tick; on a real controller (read over the link) each
+// poll of its live state — positions and following errors at the link's
+// rate, which the view says; the DAC is not on the link.
 //
 // The charts lay themselves out for the room they get: one legend for both
 // above them (the right scales are coloured as their traces), side by side
@@ -38,6 +41,8 @@ class Simulation;
 
 namespace k528::studio {
 
+class Controller;
+
 class ScopeView : public QWidget {
     Q_OBJECT
 public:
@@ -52,6 +57,12 @@ public:
     void detach();
     // The simulation is gone (its session was destroyed): stop touching it.
     void forget() { sim_ = nullptr; }
+    // Records `c`: its simulated machine's every tick, or a real one's every
+    // update (its poll). nullptr: nothing.
+    void attachController(Controller* c);
+    // Samples a second of what is recorded (the servo tick, or the link's poll).
+    double sampleRateHz() const { return rateHz_; }
+    QLabel* rateLabel() const { return rateLabel_; }
 
     const ScopeBuffer& buffer() const { return buffer_; }
     bool isPaused() const { return paused_; }
@@ -101,9 +112,18 @@ private:
     void checkTrigger();
     void showCursor(int axis, double tS);
     ScopeSignal extraSignal() const;
+    void sampleController(); // one sample of a real controller's state
+    void sayRate();
 
     ScopeBuffer buffer_;
     machine::Simulation* sim_ = nullptr;
+    Controller* controller_ = nullptr; // a real one (no simulation)
+    QMetaObject::Connection updates_;
+    QElapsedTimer linkClock_;
+    std::int64_t linkFrames_ = 0;
+    int lastFrameNumber_ = -1;
+    double rateHz_ = 0;
+    QLabel* rateLabel_ = nullptr;
     std::array<AxisChart, 2> charts_{};
     std::array<QChartView*, 2> views_{};
     QComboBox *extraBox_ = nullptr, *triggerBox_ = nullptr;

@@ -35,11 +35,15 @@ ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
         r.problem = tr("%1 cannot be read: %2").arg(path, f.errorString());
         return r;
     }
-    const QByteArray text = f.readAll();
+    const QByteArray bytes = f.readAll();
+    return loadProgramText(session, std::string(bytes.constData(), static_cast<std::size_t>(bytes.size())),
+                           QFileInfo(path).fileName());
+}
+
+ProgramLoad loadProgramText(SimulationSession& session, const std::string& text, const QString& name) {
+    ProgramLoad r;
     engine::Controller& ctl = session.controller();
-    const engine::FileCheck c = engine::checkFileForMachine(
-        std::string_view(text.constData(), static_cast<std::size_t>(text.size())), {},
-        session.simulation().profile(), ctl.programs());
+    const engine::FileCheck c = engine::checkFileForMachine(text, {}, session.simulation().profile(), ctl.programs());
     const bool russian = currentLanguage() == QStringLiteral("ru");
     for (const program::Diagnostic& d : c.diagnostics) {
         // "LINE:COL: error: …" as `k528 check` prints it, its word in the window's language.
@@ -63,7 +67,6 @@ ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
     });
     for (const program::Program* p : order)
         r.programs << p->number;
-    const QString name = QFileInfo(path).fileName();
     if (c.hasErrors()) {
         r.problem = tr("%1 has errors: nothing was loaded.").arg(name);
         return r;

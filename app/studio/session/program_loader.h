@@ -9,6 +9,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <string>
 
 namespace k528::studio {
 
@@ -22,5 +23,7 @@ struct ProgramLoad {
 };
 
 ProgramLoad loadProgramFile(SimulationSession& session, const QString& path);
+// The same for the text of such a file (the editor's text), named `name`.
+ProgramLoad loadProgramText(SimulationSession& session, const std::string& text, const QString& name);
 
 } // namespace k528::studio

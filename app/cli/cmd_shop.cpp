@@ -1,0 +1,89 @@
+// k528 shop status|publish (cli.md, docs/shop.md), k528's half: the machines
+// of the database that have a line (the `line` setting: tcp://HOST:PORT/UNIT
+// or serial:DEVICE?…), then k528-link (cmd_shop_qt.cpp, Qt: the plugins,
+// the pollers, MQTT) with one `--line MACHINE=LINE` each. k528 itself stays
+// plain C++ (docs/link.md, *Why k528-link*).
+#include "args.h"
+#include "cli.h"
+#include "db_cli_util.h"
+#include "profile/line.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace k528::cli {
+
+int forwardToLink(const char* command, std::span<const std::string> args); // cmd_link_forward.cpp
+
+int runShop(std::span<const std::string> argv) {
+    const Args a(argv, {"--json", "--watch"},
+                 {"--db", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().empty() || (a.positional()[0] != "status" && a.positional()[0] != "publish"))
+        return usageError("shop needs status or publish: k528 shop status [--json] [MACHINE…], "
+                          "k528 shop publish --mqtt mqtt://HOST[:PORT] [MACHINE…]");
+    const std::string sub = a.positional()[0];
+    if (sub == "publish" && !a.value("--mqtt"))
+        return usageError("shop publish needs --mqtt mqtt://HOST[:PORT]");
+    dbcli::DbTarget t;
+    auto d = dbcli::openDbOf(a, t, false);
+    if (!d)
+        return ExitUsage;
+    std::vector<std::string> names;
+    std::vector<std::string> lines;
+    try {
+        const std::vector<db::MachineInfo> all = d->machines();
+        const std::vector<std::string> asked(a.positional().begin() + 1, a.positional().end());
+        for (const std::string& m : asked)
+            if (std::none_of(all.begin(), all.end(), [&](const db::MachineInfo& i) { return i.name == m; }))
+                return usageError("no machine '" + m + "' in the database (k528 db machines lists them)");
+        for (const db::MachineInfo& i : all) {
+            const bool wanted = asked.empty() || std::find(asked.begin(), asked.end(), i.name) != asked.end();
+            if (!wanted)
+                continue;
+            const auto line = d->loadMachine(i.name).simulation.find("line");
+            if (!line) {
+                if (!asked.empty())
+                    return usageError("machine '" + i.name + "' has no line: k528 db set " + i.name +
+                                      " line=tcp://HOST:PORT/UNIT (or line=serial:DEVICE?address=1)");
+                continue;
+            }
+            std::string error;
+            if (!profile::parseLine(*line, error))
+                return usageError("machine '" + i.name + "': " + error);
+            names.push_back(i.name);
+            lines.push_back(*line);
+        }
+    } catch (const db::Error& e) {
+        std::fprintf(stderr, "k528: %s\n", e.what());
+        return ExitUsage;
+    }
+    if (names.empty()) {
+        std::fprintf(stderr, "k528 shop: no machine of the database has a line (k528 db set MACHINE "
+                             "line=tcp://HOST:PORT/UNIT)\n");
+        if (sub == "status" && !a.has("--watch")) {
+            if (a.has("--json"))
+                std::printf("[]\n");
+            return ExitOk;
+        }
+        return ExitUsage;
+    }
+    std::vector<std::string> out = {sub};
+    for (const char* flag : {"--json", "--watch"})
+        if (a.has(flag))
+            out.emplace_back(flag);
+    for (const char* option : {"--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id"})
+        if (const auto v = a.value(option)) {
+            out.emplace_back(option);
+            out.push_back(*v);
+        }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        out.emplace_back("--line");
+        out.push_back(names[i] + "=" + lines[i]);
+    }
+    d.reset(); // closed before k528-link takes the process's place
+    return forwardToLink("shop", out);
+}
+
+} // namespace k528::cli
