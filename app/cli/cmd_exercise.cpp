@@ -1,13 +1,17 @@
 // k528 exercise list [--json] [--lang ru|en]
 // k528 exercise show ID [--reference | --given] [--json] [--lang ru|en]
+// k528 exercise attempts [ID] [--student NAME] [--limit N] [--json | --csv] [--db LOCATION]
 // The training course's exercises (core/training, docs/training-course.md).
 #include "args.h"
 #include "cli.h"
+#include "db_cli_util.h"
 #include "program_cli.h"
 #include "stock/stock.h"
 #include "training/exercise.h"
+#include "training/record.h"
 #include "util/json.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -130,10 +134,99 @@ int show(const Args& args, Lang lang, const std::string& id) {
     return ExitOk;
 }
 
+// The attempts on record (newest first): a table, --json or --csv.
+int attempts(const Args& args, Lang lang, const std::string& exercise) {
+    const db::Lang dl = lang == Lang::Ru ? db::Lang::Ru : db::Lang::En;
+    if (!exercise.empty() && !training::findExercise(exercise))
+        return usageError("no exercise '" + exercise + "' (k528 exercise list)");
+    db::AttemptFilter f;
+    f.exercise = exercise;
+    f.student = args.value("--student").value_or("");
+    if (const auto n = args.value("--limit")) {
+        const auto v = parseInt(*n);
+        if (!v || *v < 1)
+            return usageError("--limit is a positive number, not '" + *n + "'");
+        f.limit = static_cast<int>(std::min<long long>(*v, 1000000));
+    }
+    dbcli::DbTarget target;
+    auto d = dbcli::openDbOf(args, target, false, {}, dl);
+    if (!d)
+        return ExitUsage;
+    std::vector<db::AttemptEntry> rows;
+    try {
+        rows = d->attempts(f);
+    } catch (const db::Error& e) {
+        return dbcli::dbFail(e, dl);
+    }
+    const training::Language l = lang == Lang::Ru ? training::Language::Ru : training::Language::En;
+    const bool ru = lang == Lang::Ru;
+    const auto deductionsText = [&](const db::AttemptEntry& a) {
+        std::string out;
+        for (const training::Deduction& x : training::storedDeductions(a)) {
+            char pts[32];
+            std::snprintf(pts, sizeof pts, "-%g ", x.points);
+            out += (out.empty() ? "" : "; ") + std::string(pts) + training::render(x.text, l);
+        }
+        return out;
+    };
+    if (args.has("--json")) {
+        Json a = Json::array();
+        for (const db::AttemptEntry& r : rows) {
+            Json o;
+            o["id"] = r.id;
+            o["at"] = r.at;
+            o["recorded_by"] = r.recordedBy;
+            o["host"] = r.host;
+            o["student"] = r.student;
+            o["exercise"] = r.exercise;
+            o["file"] = r.file;
+            o["sha256"] = r.sha256;
+            o["score"] = r.score;
+            o["passed"] = r.passed;
+            o["status"] = r.status;
+            o["cycle_time_s"] = static_cast<double>(r.cycleTimeMs) / 1000.0;
+            try {
+                o["grade"] = json::parse(r.grade);
+            } catch (const std::exception&) {
+                o["grade"] = r.grade; // kept as stored
+            }
+            a.push_back(std::move(o));
+        }
+        std::printf("%s\n", json::dump(a).c_str());
+        return ExitOk;
+    }
+    if (args.has("--csv")) {
+        const auto field = [](const std::string& s) {
+            if (s.find_first_of(",\"\r\n") == std::string::npos)
+                return s;
+            std::string q = "\"";
+            for (char c : s)
+                q += c == '"' ? std::string("\"\"") : std::string(1, c);
+            return q + "\"";
+        };
+        std::printf("id,at,student,exercise,file,score,passed,status,cycle_time_s,deductions\n");
+        for (const db::AttemptEntry& r : rows)
+            std::printf("%lld,%s,%s,%s,%s,%d,%s,%s,%.3f,%s\n", static_cast<long long>(r.id), r.at.c_str(),
+                        field(r.student).c_str(), field(r.exercise).c_str(), field(r.file).c_str(), r.score,
+                        r.passed ? "yes" : "no", r.status.c_str(), static_cast<double>(r.cycleTimeMs) / 1000.0,
+                        field(deductionsText(r)).c_str());
+        return ExitOk;
+    }
+    std::printf("%-6s %-20s %-20s %-26s %5s  %-10s %s\n", "id", ru ? "время" : "at", ru ? "ученик" : "student",
+                ru ? "упражнение" : "exercise", ru ? "балл" : "score", ru ? "итог" : "result",
+                ru ? "выполнение" : "run");
+    for (const db::AttemptEntry& r : rows)
+        std::printf("%-6lld %-20s %-20s %-26s %5d  %-10s %s\n", static_cast<long long>(r.id), r.at.c_str(),
+                    r.student.c_str(), r.exercise.c_str(), r.score,
+                    r.passed ? (ru ? "зачтено" : "passed") : (ru ? "незачёт" : "failed"), r.status.c_str());
+    std::printf("%s %zu\n", ru ? "Попыток:" : "Attempts:", rows.size());
+    return ExitOk;
+}
+
 } // namespace
 
 int runExercise(std::span<const std::string> argv) {
-    const Args args(argv, {"--json", "--reference", "--given"}, {"--lang"});
+    const Args args(argv, {"--json", "--csv", "--reference", "--given"}, {"--lang", "--student", "--limit", "--db"});
     if (!args.ok())
         return usageError(args.error());
     Lang lang = Lang::Ru;
@@ -147,11 +240,13 @@ int runExercise(std::span<const std::string> argv) {
             return list(args, lang);
         if (pos[0] == "show" && pos.size() == 2)
             return show(args, lang, pos[1]);
+        if (pos[0] == "attempts" && pos.size() <= 2)
+            return attempts(args, lang, pos.size() == 2 ? pos[1] : std::string());
     } catch (const training::ExerciseError& e) {
         std::fprintf(stderr, "k528: %s\n", e.what());
         return ExitUsage;
     }
-    return usageError("exercise list | exercise show ID");
+    return usageError("exercise list | exercise show ID | exercise attempts [ID]");
 }
 
 } // namespace k528::cli

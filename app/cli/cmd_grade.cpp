@@ -1,13 +1,17 @@
 // k528 grade ID FILE... [--json | --csv] [--student NAME] [--lang ru|en] [--jobs N] [--geometry]
+//                        [--record] [--db LOCATION]
 // Grades students' program files against an exercise of the training course
 // (core/training/grade.h, docs/training-course.md): each file runs on its own
 // simulated machine, several at once on threads; one file gives a report,
 // several a table (a class), --json an array of objects, one per file,
-// --csv the trainer's record of the class (one line a file).
+// --csv the trainer's record of the class (one line a file). --record (or
+// --db) keeps every graded attempt in the database (training/record.h).
 #include "args.h"
 #include "cli.h"
+#include "db_cli_util.h"
 #include "program_cli.h"
 #include "training/grade.h"
+#include "training/record.h"
 #include "util/json.h"
 
 #include <algorithm>
@@ -99,7 +103,7 @@ void printCsv(const std::vector<training::Grade>& grades, Lang lang) {
 } // namespace
 
 int runGrade(std::span<const std::string> argv) {
-    const Args args(argv, {"--json", "--csv", "--geometry"}, {"--student", "--lang", "--jobs"});
+    const Args args(argv, {"--json", "--csv", "--geometry", "--record"}, {"--student", "--lang", "--jobs", "--db"});
     if (!args.ok())
         return usageError(args.error());
     if (args.has("--json") && args.has("--csv"))
@@ -135,6 +139,20 @@ int runGrade(std::span<const std::string> argv) {
     struct Item {
         std::string file, student, text;
     };
+    // The database the attempts go to, opened (and checked) before anything
+    // is graded: a database that cannot take them is said at once.
+    std::optional<db::Database> database;
+    if (args.has("--record") || args.value("--db")) {
+        dbcli::DbTarget target;
+        database = dbcli::openDbOf(args, target, false, {}, lang == Lang::Ru ? db::Lang::Ru : db::Lang::En);
+        if (!database)
+            return ExitUsage;
+        try {
+            database->requireWritable();
+        } catch (const db::Error& err) {
+            return dbcli::dbFail(err, lang == Lang::Ru ? db::Lang::Ru : db::Lang::En);
+        }
+    }
     std::vector<Item> items;
     for (std::size_t i = 1; i < pos.size(); ++i) {
         Item it;
@@ -179,6 +197,20 @@ int runGrade(std::span<const std::string> argv) {
             return ExitUsage;
         }
 
+    // One row an attempt, in the order of the files, each its own
+    // transaction: one the database refuses is said (its grade is still
+    // printed) and the others are recorded.
+    std::size_t notRecorded = 0;
+    if (database)
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            try {
+                database->recordAttempt(training::attemptEntry(grades[i], items[i].text));
+            } catch (const db::Error& err) {
+                ++notRecorded;
+                std::fprintf(stderr, "k528: %s: graded, but the attempt was not recorded: %s\n",
+                             items[i].file.c_str(), err.what());
+            }
+        }
     if (args.has("--json")) {
         Json a = Json::array();
         for (const training::Grade& g : grades)
@@ -191,6 +223,8 @@ int runGrade(std::span<const std::string> argv) {
     } else {
         printTable(grades, lang);
     }
+    if (notRecorded > 0)
+        return ExitUsage;
     const bool all = std::all_of(grades.begin(), grades.end(),
                                  [](const training::Grade& g) { return g.passed; });
     return all ? ExitOk : ExitInputErrors;

@@ -123,19 +123,27 @@ std::span<const Command> commands() {
          "offscreen: run under xvfb-run -a -s \"-screen 0 1280x800x24\". Segments beyond the\n"
          "software limits are listed on stderr as ВНЕ ГРАНИЦ.\n",
          runPlot},
-        {"exercise", "exercise list [--json] [--lang ru|en] | exercise show ID [--reference | --given] [--json] [--lang ru|en]",
-         "The training course's exercises: the list, one task, its reference program.",
+        {"exercise", "exercise list [--json] [--lang ru|en] | exercise show ID [--reference | --given] [--json] [--lang ru|en] | exercise attempts [ID] [--student NAME] [--limit N] [--json | --csv] [--db LOCATION]",
+         "The training course's exercises: the list, one task, its reference program, the attempts on record.",
          "Commands:\n"
          "  list                 the exercises of the course in order (id, machine, title)\n"
          "  show ID              the task: machine, blank, drawing, limits, the operator's steps, hints\n"
+         "  attempts [ID]        the graded attempts in the database (k528 grade --record), newest first\n"
          "Options:\n"
          "  --reference          print only the reference program (a program file)\n"
          "  --given              print only the program handed out with the task\n"
-         "  --json               JSON (list: an array of {id, position, machine, title, ...})\n"
+         "  --student NAME       attempts: only this student's\n"
+         "  --limit N            attempts: the newest N\n"
+         "  --db LOCATION        attempts: the database (a file or postgresql://...; default $K528_DB,\n"
+         "                       else the data folder's)\n"
+         "  --csv                attempts: id,at,student,exercise,file,score,passed,status,cycle_time_s,deductions\n"
+         "  --json               JSON (list: an array of {id, position, machine, title, ...}; attempts:\n"
+         "                       {id, at, recorded_by, host, student, exercise, file, sha256, score, passed,\n"
+         "                       status, cycle_time_s, grade})\n"
          "  --lang ru|en         language of the texts (default ru)\n"
          "Exercises and their format: docs/training-course.md.\n",
          runExercise},
-        {"grade", "grade ID FILE... [--json | --csv] [--geometry] [--student NAME] [--lang ru|en] [--jobs N]",
+        {"grade", "grade ID FILE... [--json | --csv] [--geometry] [--student NAME] [--lang ru|en] [--jobs N] [--record] [--db LOCATION]",
          "Grade students' program files against an exercise: run, part, collisions, steps, score.",
          "Options:\n"
          "  --json               an array of one object per file: file, student, score, passed,\n"
@@ -146,6 +154,11 @@ std::span<const Command> commands() {
          "  --student NAME       the student of one FILE (default: the file's name)\n"
          "  --lang ru|en         language of the report (default ru)\n"
          "  --jobs N             files graded at once (default: the processor count)\n"
+         "  --record             keep each graded attempt in the database (student, exercise, the program,\n"
+         "                       the grade, the time): k528 exercise attempts lists them, as the studio's\n"
+         "                       Training dock does\n"
+         "  --db LOCATION        the database of --record (implies it; default $K528_DB, else the data\n"
+         "                       folder's)\n"
          "Each FILE runs on its own simulated machine as the operator would: its '; OPERATOR:'\n"
          "lines, else drives on, reference points, АВТОМАТ, «Пуск» (docs/training-course.md).\n"
          "One file: a report; several: a table. Exit codes: 0 every file passed; 1 some did not;\n"

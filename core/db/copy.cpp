@@ -15,7 +15,7 @@ constexpr std::string_view kTables[] = {
     "meta",          "c_definitions", "machines",       "revisions",         "c_values",
     "r_values",      "messages",      "plc_messages",   "settings",          "program_revisions",
     "changes",       "audit",         "message_runs",   "message_history",   "program_states",
-    "transfers",     "transfer_items",
+    "transfers",     "transfer_items", "training_attempts",
 };
 
 // The key that orders a table's rows (the same order on both backends).
@@ -101,6 +101,8 @@ CopyReport Database::copyTo(const Location& target, const OpenOptions& targetOpt
                 report.audit = n;
             else if (table == "transfers")
                 report.transfers = n;
+            else if (table == "training_attempts")
+                report.attempts = n;
         }
         dst.afterCopy();
         return std::vector<std::string>{};

@@ -274,6 +274,33 @@ struct TransferFilter {
     int limit = 0;         // the newest N (0 all)
 };
 
+// One graded attempt of the training course (docs/training-course.md): who,
+// which exercise, the program text graded and its grade.
+struct AttemptEntry {
+    std::int64_t id = 0;
+    std::string at;         // filled from the clock when empty
+    std::string recordedBy; // who graded it: the OS user; PostgreSQL: current_user
+    std::string host;       // the PC (filled in when empty)
+    std::string student;
+    std::string exercise;   // the exercise's id ("lathe-03-step")
+    std::string file;       // the file's name as given ("" for the editor's text)
+    std::string program;    // the text graded
+    std::string sha256;     // of the text (filled in)
+    int score = 0;          // 0..100
+    bool passed = false;
+    std::string status;     // completed, alarm, interrupted, timeout, not_started, errors, procedure
+    std::int64_t cycleTimeMs = 0;
+    std::string grade;      // the whole grade as JSON (`k528 grade --json` of the file)
+    friend bool operator==(const AttemptEntry&, const AttemptEntry&) = default;
+};
+
+struct AttemptFilter {
+    std::string student;   // "" every student
+    std::string exercise;  // "" every exercise
+    std::int64_t afterId = 0; // only newer rows
+    int limit = 0;         // the newest N (0 all)
+};
+
 // A role of the server (PostgreSQL) and who has it.
 struct RoleInfo {
     std::string role;   // "k528_technologist", "k528_operator", "k528_viewer"
@@ -285,7 +312,7 @@ struct RoleInfo {
 struct CopyReport {
     std::string target;
     std::int64_t machines = 0, revisions = 0, programVersions = 0, releases = 0, messages = 0,
-                 audit = 0, transfers = 0, rows = 0;
+                 audit = 0, transfers = 0, attempts = 0, rows = 0;
 };
 
 class Database {
@@ -377,6 +404,14 @@ public:
     // when empty; returns the entry as stored. transfers: newest first.
     TransferEntry recordTransfer(TransferEntry entry);
     std::vector<TransferEntry> transfers(const TransferFilter& filter = {}) const;
+
+    // The training course's attempts (schema version 4). record: validated
+    // (a student and an exercise named, a score 0..100; Error Invalid, nothing
+    // written), at, recordedBy, host and sha256 filled in when empty; on
+    // PostgreSQL it needs the role k528_operator and recordedBy is the
+    // server's current_user. attempts: newest first.
+    AttemptEntry recordAttempt(AttemptEntry entry);
+    std::vector<AttemptEntry> attempts(const AttemptFilter& filter = {}) const;
 
     // Whether another connection (another process or PC) committed since the
     // last call, and the machines it named (PostgreSQL: LISTEN/NOTIFY and

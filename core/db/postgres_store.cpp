@@ -251,7 +251,7 @@ bool PostgresStore::changedElsewhere(std::vector<std::string>& machines) {
 void PostgresStore::afterCopy() {
     // The identity columns continue after the ids copied in.
     for (const char* table : {"machines", "program_revisions", "audit", "message_runs",
-                              "message_history", "program_states", "transfers"}) {
+                              "message_history", "program_states", "transfers", "training_attempts"}) {
         const std::string t = table;
         conn_->exec("SELECT setval(pg_get_serial_sequence('" + t + "', 'id'), (SELECT coalesce("
                     "max(id), 0) + 1 FROM " + t + "), false)");
@@ -338,8 +338,8 @@ std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
                 }());
             conn_->exec("GRANT USAGE ON SCHEMA " + schema + " TO k528_viewer;"
                         "GRANT SELECT ON ALL TABLES IN SCHEMA " + schema + " TO k528_viewer;"
-                        "GRANT INSERT ON transfers, transfer_items, message_runs, message_history "
-                        "TO k528_operator;"
+                        "GRANT INSERT ON transfers, transfer_items, message_runs, message_history, "
+                        "training_attempts TO k528_operator;"
                         "GRANT UPDATE (cleared_ms, ack_ms, ack_day_ms, ack_how) ON message_history "
                         "TO k528_operator;"
                         "GRANT USAGE ON ALL SEQUENCES IN SCHEMA " + schema + " TO k528_operator;"

@@ -287,6 +287,42 @@ CREATE POLICY program_states_read ON program_states FOR SELECT USING (true);
 CREATE POLICY program_states_own ON program_states FOR INSERT WITH CHECK (author = current_user);
 )SQL";
 
+// Version 4: the training course's graded attempts (Database::recordAttempt,
+// docs/training-course.md): one row an attempt — the student, the exercise,
+// the program text graded (and its SHA-256), the score, whether it passed,
+// how the run ended, the cycle time and the whole grade as `k528 grade
+// --json` gives it (the deductions with their text ids and arguments). Who
+// recorded it is, on PostgreSQL, the server's current_user (row security,
+// as for the transfers).
+constexpr std::string_view kSchemaV4 = R"SQL(
+CREATE TABLE training_attempts (
+    id            INTEGER PRIMARY KEY,
+    at            TEXT NOT NULL,
+    recorded_by   TEXT NOT NULL,
+    host          TEXT NOT NULL,
+    student       TEXT NOT NULL CHECK (length(student) > 0),
+    exercise      TEXT NOT NULL CHECK (length(exercise) > 0),
+    file          TEXT NOT NULL,
+    program       TEXT NOT NULL,
+    sha256        TEXT NOT NULL CHECK (length(sha256) = 64),
+    score         INTEGER NOT NULL CHECK (score BETWEEN 0 AND 100),
+    passed        INTEGER NOT NULL CHECK (passed IN (0, 1)),
+    status        TEXT NOT NULL,
+    cycle_time_ms INTEGER NOT NULL CHECK (cycle_time_ms >= 0),
+    grade         TEXT NOT NULL
+);
+
+CREATE INDEX training_attempts_by_student ON training_attempts (student, id);
+CREATE INDEX training_attempts_by_exercise ON training_attempts (exercise, id);
+)SQL";
+
+constexpr std::string_view kSchemaV4Postgres = R"SQL(
+ALTER TABLE training_attempts ALTER COLUMN recorded_by SET DEFAULT current_user;
+ALTER TABLE training_attempts ENABLE ROW LEVEL SECURITY;
+CREATE POLICY training_attempts_read ON training_attempts FOR SELECT USING (true);
+CREATE POLICY training_attempts_own ON training_attempts FOR INSERT WITH CHECK (recorded_by = current_user);
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
@@ -296,6 +332,7 @@ const Migration kMigrations[] = {
      kSchemaV2},
     {3, "programs released for the controllers; the transfer log", kSchemaV3, {},
      kSchemaV3Postgres},
+    {4, "the training course's graded attempts", kSchemaV4, {}, kSchemaV4Postgres},
 };
 
 bool wordAt(std::string_view s, std::size_t i, std::string_view word) {

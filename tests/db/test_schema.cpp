@@ -367,9 +367,10 @@ private slots:
         {
             db::Database d = db::Database::open(p, testOptions());
             QCOMPARE(d.openReport().fromVersion, 2);
-            QCOMPARE(d.schemaVersion(), 3);
+            QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
             QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
-            QCOMPARE(d.audit(1).front().detail, std::string("schema version 2 -> 3"));
+            QCOMPARE(d.audit(1).front().detail,
+                     "schema version 2 -> " + std::to_string(db::latestSchemaVersion()));
             QCOMPARE(d.releaseProgram("grinder-205", 11, "", by("Петров")).revision, 1);
             QVERIFY(d.checkIntegrity().empty());
         }
@@ -381,6 +382,52 @@ private slots:
         QVERIFY(!raw.exec("INSERT INTO program_states (machine_id, number, revision, sha256, state, at, "
                           "author, note) VALUES (1, 11, 99, '" + std::string(64, 'a') +
                           "', 'released', 'x', 'y', '')").empty()); // no such version
+    }
+
+    // Version 3 -> 4: the training attempts beside every machine, release and
+    // transfer kept; the new table keeps its rules.
+    void trainingAttemptsFromVersion3() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "v3.db");
+        auto o3 = testOptions();
+        o3.migrations = db::schemaMigrations().subspan(0, 3);
+        {
+            db::Database d = db::Database::open(p, o3);
+            QCOMPARE(d.schemaVersion(), 3);
+            db::Edit e;
+            e.c[22] = 2133;
+            d.applyEdit("grinder-205", e, by("Петров"));
+            d.releaseProgram("grinder-205", 11, "", by("Петров"));
+            // A version-3 database has no attempts: said, not an SQL error.
+            QVERIFY_THROWS_EXCEPTION(db::Error, d.attempts());
+        }
+        {
+            db::Database d = db::Database::open(p, testOptions());
+            QCOMPARE(d.openReport().fromVersion, 3);
+            QCOMPARE(d.schemaVersion(), 4);
+            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
+            QCOMPARE(d.releaseHistory("grinder-205", 11).size(), std::size_t(1));
+            QCOMPARE(d.audit(1).front().detail, std::string("schema version 3 -> 4"));
+            QVERIFY(d.attempts().empty());
+            db::AttemptEntry a;
+            a.student = "Иванов";
+            a.exercise = "lathe-03-step";
+            a.program = "%L1\nM30\n";
+            a.score = 87;
+            a.status = "completed";
+            a.grade = "{}";
+            const db::AttemptEntry stored = d.recordAttempt(a);
+            QVERIFY(stored.id > 0);
+            QCOMPARE(stored.sha256.size(), std::size_t(64));
+            QCOMPARE(d.attempts().size(), std::size_t(1));
+            QCOMPARE(d.attempts().front(), stored);
+            QVERIFY(d.checkIntegrity().empty());
+        }
+        Raw raw(p);
+        QVERIFY(!raw.exec("INSERT INTO training_attempts (at, recorded_by, host, student, exercise, file, "
+                          "program, sha256, score, passed, status, cycle_time_ms, grade) VALUES ('x', 'u', "
+                          "'h', 's', 'e', '', '', '" + std::string(64, 'a') +
+                          "', 101, 0, 'completed', 0, '{}')").empty()); // a score above 100
     }
 
     void foreignSqliteFileIsRefused() {

@@ -9,11 +9,15 @@
 #include "main_window.h"
 #include "training/exercise.h"
 #include "training/training_pane.h"
+#include "cli_runner.h"
 #include "workspace/workspaces.h"
 
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QScreen>
 #include <QDockWidget>
 #include <QLabel>
@@ -47,7 +51,14 @@ class TestTrainingPane : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase() { setLanguage(QStringLiteral("en")); }
+    // The attempts go to a database of this run's own (K528_DB, inherited
+    // by the k528 processes the tests start).
+    QTemporaryDir dbDir_;
+    void initTestCase() {
+        QVERIFY(dbDir_.isValid());
+        qputenv("K528_DB", dbDir_.filePath(QStringLiteral("class.db")).toUtf8());
+        setLanguage(QStringLiteral("en"));
+    }
 
     void theEditorsProgramIsGradedAndADeductionNamesItsLine() {
         const QString text = deepStep();
@@ -108,6 +119,78 @@ private slots:
         QVERIFY(!pane.grading());
         QCOMPARE(graded.size(), 0);
         QVERIFY(pane.scoreLabel()->text().contains(QStringLiteral("no program")));
+    }
+
+    // The class is the database's: an attempt `k528 grade --record` kept (another
+    // process) is listed, one graded here is read by `k528 exercise attempts`.
+    void theClassIsTheDatabasesAcrossProcesses() {
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("sidorov.k528"));
+        {
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray::fromStdString(training::findExercise("lathe-03-step")->reference));
+        }
+        const QString text = deepStep();
+        TrainingPane pane([&] { return std::pair<QString, QString>(text, QStringLiteral("kuznetsov.k528")); });
+        QVERIFY(pane.selectExercise(QStringLiteral("lathe-03-step")));
+        pane.reloadClass(); // the desktop's connection (the database made on its first use)
+        QVERIFY(pane.classNote()->isHidden());
+        const CliResult g = runK528({"grade", "lathe-03-step", file, "--record"});
+        QVERIFY2(g.exitCode == 0, qPrintable(g.err));
+        pane.tabs()->setCurrentIndex(2); // the Class tab reads the database again
+        const auto& rows = pane.classAttempts();
+        QVERIFY(!rows.empty());
+        QCOMPARE(rows.front().student, std::string("sidorov"));
+        QCOMPARE(rows.front().score, 100);
+        QCOMPARE(pane.attemptsTable()->item(0, 0)->text(), QStringLiteral("sidorov"));
+        QCOMPARE(pane.attemptsTable()->item(0, 2)->text(), QStringLiteral("100"));
+        QVERIFY(pane.classNote()->isHidden());
+        pane.studentName()->setText(QStringLiteral("Kuznetsov"));
+        QSignalSpy graded(&pane, &TrainingPane::graded);
+        pane.gradeEditorButton()->click();
+        QVERIFY(graded.wait(60000));
+        const int score = graded.front().at(0).toInt();
+        QVERIFY(pane.attempts().back().recordedId > 0);
+        QCOMPARE(pane.classAttempts().front().student, std::string("Kuznetsov"));
+        const CliResult listed = runK528({"exercise", "attempts", "lathe-03-step", "--student", "Kuznetsov", "--json"});
+        QVERIFY2(listed.exitCode == 0, qPrintable(listed.err));
+        const QJsonArray a = QJsonDocument::fromJson(listed.out.toUtf8()).array();
+        QCOMPARE(a.size(), 1);
+        QCOMPARE(a[0].toObject().value("score").toInt(), score);
+        QCOMPARE(a[0].toObject().value("file").toString(), QStringLiteral("kuznetsov.k528"));
+        QCOMPARE(a[0].toObject().value("id").toInteger(), pane.attempts().back().recordedId);
+    }
+
+    // A database that cannot take the attempt: the grade stands, the pane says
+    // why it was not kept, and the class lists it as this session's.
+    void anAttemptTheDatabaseRefusesIsKeptInTheSession() {
+        QTemporaryDir dir;
+        const QString bad = dir.filePath(QStringLiteral("not-a-database.db"));
+        {
+            QFile f(bad);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("this is not an SQLite file, and it stays as it is\n");
+        }
+        const QByteArray before = qgetenv("K528_DB");
+        qputenv("K528_DB", bad.toUtf8());
+        const QString text = deepStep();
+        TrainingPane pane([&] { return std::pair<QString, QString>(text, QStringLiteral("orlov.k528")); });
+        QVERIFY(pane.selectExercise(QStringLiteral("lathe-03-step")));
+        pane.studentName()->setText(QStringLiteral("Orlov"));
+        QSignalSpy graded(&pane, &TrainingPane::graded);
+        pane.gradeEditorButton()->click();
+        QVERIFY(graded.wait(60000));
+        qputenv("K528_DB", before);
+        QCOMPARE(pane.attempts().back().recordedId, 0);
+        QVERIFY2(pane.scoreLabel()->text().contains(QStringLiteral("Not kept in the database")),
+                 qPrintable(pane.scoreLabel()->text()));
+        QCOMPARE(pane.classAttempts().size(), std::size_t(1));
+        QCOMPARE(pane.classAttempts().front().student, std::string("Orlov"));
+        QVERIFY(!pane.classNote()->isHidden());
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("this is not an SQLite file, and it stays as it is\n"));
     }
 
     void theMainWindowPlacesTheDockInTheTrainingWorkspace() {
@@ -184,6 +267,11 @@ private slots:
             QDir().mkpath(dir);
             const QSize screen = w.screen()->size();
             QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-attempt.png")
+                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            pane->tabs()->setCurrentIndex(2);
+            QApplication::processEvents();
+            QVERIFY(pane->attemptsTable()->rowCount() >= 1);
+            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-class.png")
                                             .arg(lang).arg(screen.width()).arg(screen.height())));
             pane->tabs()->setCurrentIndex(0);
             QApplication::processEvents();

@@ -1,7 +1,9 @@
 #include "training/training_pane.h"
 
 #include "language.h"
+#include "session/shop_database.h"
 #include "training/exercise.h"
+#include "training/record.h"
 
 #include <QComboBox>
 #include <QDateTime>
@@ -231,10 +233,21 @@ TrainingPane::TrainingPane(std::function<std::pair<QString, QString>()> editorTe
     attempts_->setSelectionBehavior(QAbstractItemView::SelectRows);
     attempts_->verticalHeader()->hide();
     attempts_->horizontalHeader()->setStretchLastSection(true);
+    classNote_ = new QLabel(classPage);
+    classNote_->setObjectName("training.classNote");
+    classNote_->setWordWrap(true);
+    classNote_->hide();
+    cl->addWidget(classNote_);
     cl->addWidget(attempts_, 1);
+    auto* classButtons = new QHBoxLayout;
+    refresh_ = new QPushButton(classPage);
+    refresh_->setObjectName("training.refresh");
     csv_ = new QPushButton(classPage);
     csv_->setObjectName("training.csv");
-    cl->addWidget(csv_, 0, Qt::AlignRight);
+    classButtons->addStretch(1);
+    classButtons->addWidget(refresh_);
+    classButtons->addWidget(csv_);
+    cl->addLayout(classButtons);
     tabs_->addTab(classPage, QString());
     layout->addWidget(tabs_, 1);
 
@@ -246,6 +259,12 @@ TrainingPane::TrainingPane(std::function<std::pair<QString, QString>()> editorTe
     connect(gradeEditor_, &QPushButton::clicked, this, &TrainingPane::gradeEditor);
     connect(gradeFile_, &QPushButton::clicked, this, &TrainingPane::gradeFile);
     connect(csv_, &QPushButton::clicked, this, &TrainingPane::exportDialog);
+    connect(refresh_, &QPushButton::clicked, this, &TrainingPane::reloadClass);
+    // The class read when its tab is shown (other processes and PCs record too).
+    connect(tabs_, &QTabWidget::currentChanged, this, [this](int i) {
+        if (i == 2)
+            reloadClass();
+    });
     connect(deductions_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
         const int program = item->data(Qt::UserRole).toInt();
         const int line = item->data(Qt::UserRole + 1).toInt();
@@ -303,12 +322,10 @@ void TrainingPane::retranslate() {
     tabs_->setTabText(0, tr("Task"));
     tabs_->setTabText(1, tr("Attempt"));
     tabs_->setTabText(2, tr("Class"));
+    refresh_->setText(tr("Refresh"));
+    refresh_->setToolTip(tr("Reads the class's attempts from the database again"));
     attempts_->setHorizontalHeaderLabels({tr("Student"), tr("Exercise"), tr("Score"), tr("Result"), tr("Time")});
-    for (int r = 0; r < attempts_->rowCount() && r < static_cast<int>(attemptList_.size()); ++r) {
-        const Attempt& a = attemptList_[static_cast<std::size_t>(r)];
-        if (QTableWidgetItem* it = attempts_->item(r, 3))
-            it->setText(a.grade.passed ? tr("passed") : tr("not passed"));
-    }
+    showClass();
     showExercise();
     showGrade();
 }
@@ -381,6 +398,8 @@ void TrainingPane::showGrade() {
         text += QStringLiteral("; ") + tr("cycle time %1 s").arg(g.cycleTimeS, 0, 'f', 1);
     if (g.limitS > 0)
         text += QStringLiteral(" ") + tr("(limit %1 s)").arg(g.limitS);
+    if (last_->recordedId == 0 && !recordError_.isEmpty())
+        text += QStringLiteral("\n") + tr("Not kept in the database: %1").arg(recordError_);
     score_->setText(text);
     for (const training::Deduction& d : g.deductions) {
         auto* item = new QListWidgetItem(QStringLiteral("−%1  %2").arg(points(d.points), q(training::render(d.text, l))),
@@ -432,6 +451,7 @@ bool TrainingPane::grade(const QString& text, const QString& file) {
     a.student = student_->text().trimmed();
     a.exercise = q(e->id);
     a.file = file;
+    a.program = text.toStdString();
     auto* watcher = new QFutureWatcher<training::Grade>(this);
     watcher_ = watcher;
     gradeEditor_->setEnabled(false);
@@ -455,9 +475,10 @@ bool TrainingPane::grade(const QString& text, const QString& file) {
         }
         a.when = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
         status_.clear();
+        record(a);
         last_ = a;
         attemptList_.push_back(a);
-        addAttemptRow(a);
+        reloadClass();
         showGrade();
         emit graded(a.grade.score, a.grade.passed);
     });
@@ -472,13 +493,64 @@ bool TrainingPane::grade(const QString& text, const QString& file) {
     return true;
 }
 
-void TrainingPane::addAttemptRow(const Attempt& a) {
-    const int r = attempts_->rowCount();
-    attempts_->insertRow(r);
-    const QStringList cells{a.student.isEmpty() ? a.file : a.student, a.exercise, QString::number(a.grade.score),
-                            a.grade.passed ? tr("passed") : tr("not passed"), a.when};
-    for (int c = 0; c < cells.size(); ++c)
-        attempts_->setItem(r, c, new QTableWidgetItem(cells[c]));
+void TrainingPane::record(Attempt& a) {
+    recordError_.clear();
+    db::AttemptEntry entry = training::attemptEntry(a.grade, a.program);
+    if (!a.student.isEmpty())
+        entry.student = a.student.toStdString();
+    try {
+        a.recordedId = ShopDatabase::at()->use([&](db::Database& d) { return d.recordAttempt(entry).id; });
+    } catch (const std::exception& e) {
+        a.recordedId = 0;
+        recordError_ = databaseErrorText(e);
+    }
+}
+
+void TrainingPane::reloadClass() {
+    classRows_.clear();
+    classError_.clear();
+    // This session's attempts the database did not take, newest first.
+    for (auto it = attemptList_.rbegin(); it != attemptList_.rend(); ++it)
+        if (it->recordedId == 0) {
+            db::AttemptEntry e = training::attemptEntry(it->grade, it->program);
+            if (!it->student.isEmpty())
+                e.student = it->student.toStdString();
+            e.at = QDateTime::fromString(it->when, QStringLiteral("yyyy-MM-dd HH:mm:ss"))
+                       .toUTC()
+                       .toString(Qt::ISODate)
+                       .toStdString();
+            classRows_.push_back(std::move(e));
+        }
+    try {
+        db::AttemptFilter f;
+        f.limit = 1000;
+        const auto stored = ShopDatabase::at()->use([&](db::Database& d) { return d.attempts(f); });
+        classRows_.insert(classRows_.end(), stored.begin(), stored.end());
+    } catch (const std::exception& e) {
+        classError_ = databaseErrorText(e);
+    }
+    showClass();
+}
+
+void TrainingPane::showClass() {
+    if (classError_.isEmpty()) {
+        classNote_->hide();
+    } else {
+        classNote_->setText(tr("The database cannot be read: only this session's attempts are listed (%1)")
+                                .arg(classError_));
+        classNote_->show();
+    }
+    attempts_->setRowCount(0);
+    for (const db::AttemptEntry& a : classRows_) {
+        const int r = attempts_->rowCount();
+        attempts_->insertRow(r);
+        const QDateTime at = QDateTime::fromString(q(a.at), Qt::ISODate);
+        const QStringList cells{q(a.student), q(a.exercise), QString::number(a.score),
+                                a.passed ? tr("passed") : tr("not passed"),
+                                at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")) : q(a.at)};
+        for (int c = 0; c < cells.size(); ++c)
+            attempts_->setItem(r, c, new QTableWidgetItem(cells[c]));
+    }
 }
 
 QString TrainingPane::exportCsv(const QString& path) const {
@@ -489,13 +561,13 @@ QString TrainingPane::exportCsv(const QString& path) const {
     };
     const training::Language l = uiLanguage();
     QString out = QStringLiteral("student,exercise,file,time,score,passed,status,cycle_time_s,deductions\n");
-    for (const Attempt& a : attemptList_) {
+    for (const db::AttemptEntry& a : classRows_) {
         QStringList ded;
-        for (const training::Deduction& d : a.grade.deductions)
+        for (const training::Deduction& d : training::storedDeductions(a))
             ded << QStringLiteral("-%1 %2").arg(points(d.points), q(training::render(d.text, l)));
-        out += QStringList{field(a.student), field(a.exercise), field(a.file), field(a.when),
-                           QString::number(a.grade.score), a.grade.passed ? QStringLiteral("yes") : QStringLiteral("no"),
-                           field(q(a.grade.status)), QString::number(a.grade.cycleTimeS, 'f', 3),
+        out += QStringList{field(q(a.student)), field(q(a.exercise)), field(q(a.file)), field(q(a.at)),
+                           QString::number(a.score), a.passed ? QStringLiteral("yes") : QStringLiteral("no"),
+                           field(q(a.status)), QString::number(static_cast<double>(a.cycleTimeMs) / 1000.0, 'f', 3),
                            field(ded.join(QStringLiteral("; ")))}
                    .join(QLatin1Char(',')) +
                QLatin1Char('\n');

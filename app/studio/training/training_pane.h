@@ -4,11 +4,14 @@
 // its own and graded on a worker thread (core/training); the finished part
 // drawn over the drawing with the over-cut and the under-cut coloured
 // (PartView), the score and the deductions (a click puts the editor on the
-// frame's line, and the pane's listing of the graded program); the
-// session's attempts (student, exercise, score, time) as a class's table,
-// exported as CSV.
+// frame's line, and the pane's listing of the graded program); every
+// attempt kept in the shop's database (db::Database::recordAttempt, the
+// process's one connection: ShopDatabase) and the class's attempts on record
+// — graded here, by `k528 grade --record` or on another PC — listed (student,
+// exercise, score, time) and exported as CSV.
 #pragma once
 
+#include "db/database.h"
 #include "training/grade.h"
 
 #include <QWidget>
@@ -59,7 +62,9 @@ private:
 struct Attempt {
     QString student, exercise, file;
     QString when; // local time, yyyy-MM-dd HH:mm:ss
+    std::string program; // the text graded
     training::Grade grade;
+    std::int64_t recordedId = 0; // its row in the database, 0: not recorded
 };
 
 class TrainingPane : public QWidget {
@@ -78,6 +83,13 @@ public:
     QTabWidget* tabs() const { return tabs_; }
     QPushButton* gradeEditorButton() const { return gradeEditor_; }
     const std::vector<Attempt>& attempts() const { return attemptList_; }
+    // The class as the Class tab lists it: the database's attempts, newest
+    // first (with this session's that the database did not take).
+    const std::vector<db::AttemptEntry>& classAttempts() const { return classRows_; }
+    QPushButton* refreshButton() const { return refresh_; }
+    QLabel* classNote() const { return classNote_; }
+    // Reads the class's attempts from the database again.
+    void reloadClass();
 
     // The exercise shown, by id (false: none such).
     bool selectExercise(const QString& id);
@@ -100,7 +112,8 @@ private:
     void retranslate();
     void showExercise();
     void showGrade();
-    void addAttemptRow(const Attempt& a);
+    void showClass();
+    void record(Attempt& a);
     void gradeEditor();
     void gradeFile();
     void exportDialog();
@@ -115,6 +128,8 @@ private:
     QPushButton* gradeEditor_ = nullptr;
     QPushButton* gradeFile_ = nullptr;
     QPushButton* csv_ = nullptr;
+    QPushButton* refresh_ = nullptr;
+    QLabel* classNote_ = nullptr;
     QTabWidget* tabs_ = nullptr;
     QTextBrowser* task_ = nullptr;
     PartView* part_ = nullptr;
@@ -125,6 +140,9 @@ private:
     std::map<std::string, std::shared_ptr<const training::Grader>> graders_;
     std::optional<Attempt> last_;
     std::vector<Attempt> attemptList_;
+    std::vector<db::AttemptEntry> classRows_;
+    QString classError_;  // why the class is not the database's ("" it is)
+    QString recordError_; // why the last attempt was not recorded
     QFutureWatcherBase* watcher_ = nullptr;
     QString status_; // what the score label says between grades
 };
