@@ -3758,6 +3758,22 @@ Its comment stays: %3</translation>
         <source>Training course</source>
         <translation>Training course</translation>
     </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Refresh</translation>
+    </message>
+    <message>
+        <source>Reads the class's attempts from the database again</source>
+        <translation>Reads the class's attempts from the database again</translation>
+    </message>
+    <message>
+        <source>Not kept in the database: %1</source>
+        <translation>Not kept in the database: %1</translation>
+    </message>
+    <message>
+        <source>The database cannot be read: only this session's attempts are listed (%1)</source>
+        <translation>The database cannot be read: only this session's attempts are listed (%1)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::Workspaces</name>

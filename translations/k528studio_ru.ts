@@ -3758,6 +3758,22 @@ Its comment stays: %3</source>
         <source>Training course</source>
         <translation>Учебный курс</translation>
     </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Обновить</translation>
+    </message>
+    <message>
+        <source>Reads the class's attempts from the database again</source>
+        <translation>Заново прочитать попытки группы из базы данных</translation>
+    </message>
+    <message>
+        <source>Not kept in the database: %1</source>
+        <translation>В базе данных не сохранено: %1</translation>
+    </message>
+    <message>
+        <source>The database cannot be read: only this session's attempts are listed (%1)</source>
+        <translation>База данных недоступна: показаны только попытки этого сеанса (%1)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::Workspaces</name>
