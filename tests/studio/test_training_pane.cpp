@@ -50,10 +50,11 @@ int lineOf(const QString& text, const QString& what) {
 class TestTrainingPane : public QObject {
     Q_OBJECT
 
-private slots:
     // The attempts go to a database of this run's own (K528_DB, inherited
     // by the k528 processes the tests start).
     QTemporaryDir dbDir_;
+
+private slots:
     void initTestCase() {
         QVERIFY(dbDir_.isValid());
         qputenv("K528_DB", dbDir_.filePath(QStringLiteral("class.db")).toUtf8());
