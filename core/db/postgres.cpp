@@ -104,7 +104,7 @@ void PgConnection::fail(PGresult* r, std::string_view what) const {
 }
 
 bool PgConnection::inTransaction() {
-    if (!begin_.empty())
+    if (!begin_.empty() || !deferred_.empty())
         return true;
     if (unread_ > 0) // the last thing sent was a read-only COMMIT
         return false;
@@ -122,6 +122,7 @@ bool PgConnection::reconnectIfLost() {
     drain();
     cache_.clear(); // the session's prepared statements went with it
     begin_.clear();
+    deferred_.clear();
     PQreset(conn_);
     return PQstatus(conn_) == CONNECTION_OK;
 }
@@ -129,6 +130,7 @@ bool PgConnection::reconnectIfLost() {
 PgQuery& PgConnection::operator()(std::string_view text) {
     auto it = cache_.find(text);
     if (it == cache_.end()) {
+        flush();
         drain();
         int params = 0;
         const std::string converted = postgresParameters(text, params);
@@ -146,6 +148,12 @@ PgQuery& PgConnection::operator()(std::string_view text) {
 }
 
 void PgConnection::exec(std::string_view text) {
+    if (!deferred_.empty() && text.find(';') == std::string_view::npos) {
+        const std::string statement(text); // with the writes sent before: one round trip
+        pipeline({}, &statement);
+        return;
+    }
+    flush();
     drain();
     std::string s(text);
     if (!begin_.empty()) {
@@ -226,7 +234,7 @@ void PgConnection::runTogether(std::span<Query* const> queries) {
 void PgConnection::run(std::span<PgQuery* const> queries) {
     if (queries.empty())
         return;
-    if (unread_ == 0 && begin_.empty() && queries.size() == 1) {
+    if (unread_ == 0 && deferred_.empty() && begin_.empty() && queries.size() == 1) {
         PgQuery& q = *queries[0];
         std::vector<const char*> values(q.params_.size());
         for (std::size_t i = 0; i < q.params_.size(); ++i)
@@ -239,23 +247,43 @@ void PgConnection::run(std::span<PgQuery* const> queries) {
         q.adopt(r);
         return;
     }
-    // One pipeline: the pending BEGIN, each query, one synchronisation point;
-    // after a read-only COMMIT not waited for, in the same pipeline as it
-    // (its answer comes first).
+    pipeline(queries, nullptr);
+}
+
+void PgConnection::pipeline(std::span<PgQuery* const> queries, const std::string* statement) {
+    // One pipeline: the writes sent before without waiting, the pending
+    // BEGIN, each query, `statement`, one synchronisation point; after a
+    // read-only COMMIT not waited for, in the same pipeline as it (its
+    // answer comes first).
     if (PQpipelineStatus(conn_) == PQ_PIPELINE_OFF && PQenterPipelineMode(conn_) != 1)
         fail(nullptr, "entering pipeline mode");
-    const bool begin = !begin_.empty();
-    std::string beginText;
-    beginText.swap(begin_);
-    bool sent = !begin || PQsendQueryParams(conn_, beginText.c_str(), 0, nullptr, nullptr, nullptr,
-                                            nullptr, 0) == 1;
-    std::size_t count = begin ? 1 : 0; // results expected
-    for (PgQuery* q : queries) {
-        if (!sent)
-            break;
-        sent = q->send();
-        count += sent ? 1 : 0;
+    struct Target {
+        PgQuery* query; // nullptr: a statement whose result is only checked
+        std::string what;
+    };
+    std::vector<Target> targets;
+    targets.reserve(deferred_.size() + queries.size() + 2);
+    for (std::string& w : deferred_)
+        targets.push_back(Target{nullptr, std::move(w)});
+    deferred_.clear();
+    bool sent = true;
+    const auto sendStatement = [&](const std::string& text) {
+        sent = sent && PQsendQueryParams(conn_, text.c_str(), 0, nullptr, nullptr, nullptr,
+                                         nullptr, 0) == 1;
+        if (sent)
+            targets.push_back(Target{nullptr, "running \"" + text.substr(0, 80) + "\""});
+    };
+    if (!begin_.empty()) {
+        sendStatement(begin_);
+        begin_.clear();
     }
+    for (PgQuery* q : queries) {
+        sent = sent && q->send();
+        if (sent)
+            targets.push_back(Target{q, {}});
+    }
+    if (statement)
+        sendStatement(*statement);
     if (PQpipelineSync(conn_) != 1)
         sent = false;
     readUnread();
@@ -278,17 +306,16 @@ void PgConnection::run(std::span<PgQuery* const> queries) {
             PQclear(r);
             break;
         }
-        const std::size_t at = index++;
-        const bool isBegin = begin && at == 0;
-        PgQuery* q = at < count && !isBegin ? queries[at - (begin ? 1 : 0)] : nullptr;
+        Target* t = index < targets.size() ? &targets[index] : nullptr;
+        ++index;
         if (st == PGRES_TUPLES_OK || st == PGRES_COMMAND_OK) {
-            if (q)
-                q->adopt(r);
+            if (t && t->query)
+                t->query->adopt(r);
             else
                 PQclear(r);
         } else if (!error && st != PGRES_PIPELINE_ABORTED) {
             error = r;
-            what = q ? q->what() : "running \"" + beginText + "\"";
+            what = !t ? "running queries together" : t->query ? t->query->what() : t->what;
         } else {
             PQclear(r);
         }
@@ -296,11 +323,35 @@ void PgConnection::run(std::span<PgQuery* const> queries) {
     PQexitPipelineMode(conn_);
     if (error)
         fail(error, what);
-    if (!sent || index < count)
-        fail(nullptr, "sending " + std::to_string(queries.size()) + " queries together");
+    if (!sent || index < targets.size())
+        fail(nullptr, "sending " + std::to_string(targets.size()) + " statements together");
+}
+
+void PgConnection::runLater(Query& query) {
+    auto& q = static_cast<PgQuery&>(query); // this connection's query
+    // Only inside a transaction that has begun (its errors then surface by
+    // the COMMIT at the latest, and undo everything).
+    const bool inWrite = begin_.empty() && unread_ == 0 &&
+                         (!deferred_.empty() || PQtransactionStatus(conn_) == PQTRANS_INTRANS);
+    if (!inWrite || (PQpipelineStatus(conn_) == PQ_PIPELINE_OFF && PQenterPipelineMode(conn_) != 1)) {
+        q.run();
+        return;
+    }
+    if (!q.send()) {
+        pipeline({}, nullptr); // reports what failed
+        fail(nullptr, q.what());
+    }
+    deferred_.push_back(q.what());
+    q.reset();
+}
+
+void PgConnection::flush() {
+    if (!deferred_.empty())
+        pipeline({}, nullptr);
 }
 
 std::vector<PgConnection::Notification> PgConnection::notifications() {
+    flush();
     drain();
     std::vector<Notification> out;
     // One round trip first: a notice of a commit that returned to its

@@ -72,6 +72,7 @@ public:
     PgQuery& operator()(std::string_view text) override;
     void exec(std::string_view text) override;
     void runTogether(std::span<Query* const> queries) override;
+    void runLater(Query& query) override;
 
     // Opens a transaction with `begin` (a BEGIN statement), sent with the
     // next statement in the same round trip; when none follows before the
@@ -106,6 +107,11 @@ private:
     friend class PgQuery;
     // Runs `queries` (with the pending BEGIN first) and gives each its result.
     void run(std::span<PgQuery* const> queries);
+    // One pipeline: the deferred writes, the pending BEGIN, `queries`, then
+    // `statement` (one without parameters; nullptr: none). Throws the first error.
+    void pipeline(std::span<PgQuery* const> queries, const std::string* statement);
+    // Reads the results of the deferred writes (throws the first error).
+    void flush();
     // Reads the answers not waited for (commitReadOnly) and leaves pipeline mode.
     void drain() noexcept;
     // Reads the answers not waited for, staying in pipeline mode.
@@ -115,6 +121,7 @@ private:
     std::string where_;
     std::string begin_; // the BEGIN to send with the next statement
     int unread_ = 0;    // pipelines sent whose answers are not read yet
+    std::vector<std::string> deferred_; // writes sent, not synchronised: what each was
     int next_ = 0;
     std::map<std::string, std::unique_ptr<PgQuery>, std::less<>> cache_;
 };

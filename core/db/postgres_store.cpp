@@ -221,7 +221,7 @@ void PostgresStore::rollback() noexcept {
 void PostgresStore::notifyChange(std::string_view machine, int revision) {
     auto& q = query("SELECT pg_notify(?1, ?2)");
     q.bind(1, kRevisionChannel).bind(2, std::string(machine) + " " + std::to_string(revision));
-    q.run();
+    conn_->runLater(q);
 }
 
 void PostgresStore::listen() {

@@ -13,14 +13,14 @@ void SqlStore::insertRevision(std::int64_t id, int revision, const std::string& 
     auto& q = query("INSERT INTO revisions (machine_id, revision, author, at, summary, "
                   "settings_order) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
     q.bind(1, id).bind(2, revision).bind(3, author).bind(4, at).bind(5, summary).bind(6, settingsOrder);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::insertProgramVersion(std::int64_t id, const ProgramRow& v) {
     auto& q = query("INSERT INTO program_revisions (machine_id, number, revision, text, "
                   "sha256) VALUES (?1, ?2, ?3, ?4, ?5)");
     q.bind(1, id).bind(2, v.number).bind(3, v.revision).bind(4, v.text).bind(5, v.sha256);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) {
@@ -34,7 +34,7 @@ void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profil
         .bind(6, c.label)
         .bind(7, c.before)
         .bind(8, c.after);
-    q.run();
+    connection().runLater(q);
 }
 
 std::vector<ChangeRow> SqlStore::changesUpTo(std::int64_t id, int revision) {

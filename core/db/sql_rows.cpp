@@ -181,13 +181,13 @@ void SqlStore::updateMachine(std::int64_t id, const MachineProfile& p, int revis
     auto& q = query("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
                   "changed_by = ?6 WHERE id = ?1");
     q.bind(1, id).bind(2, p.name).bind(3, p.title).bind(4, revision).bind(5, at).bind(6, author);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::deleteMachine(std::int64_t id) {
     auto& q = query("DELETE FROM machines WHERE id = ?1");
     q.bind(1, id);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, const Change& c) {
@@ -201,7 +201,7 @@ void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, c
         auto& q = query(isNew ? "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)"
                             : "UPDATE c_values SET value = ?3 WHERE machine_id = ?1 AND number = ?2");
         q.bind(1, id).bind(2, *num).bind(3, p.cValue(*num));
-        q.run();
+        connection().runLater(q);
         return;
     }
     case DiffSection::R:
@@ -233,19 +233,19 @@ void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, c
         q.bind(3, *c.after);
     if (plc)
         q.bind(4, c.key.substr(0, 1));
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::writeSettings(std::int64_t id, const MachineProfile& p) {
     auto& del = query("DELETE FROM settings WHERE machine_id = ?1");
     del.bind(1, id);
-    del.run();
+    connection().runLater(del);
     auto& q = query("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
     int pos = 0;
     for (const auto& [k, v] : p.simulation.entries()) {
         q.reset();
         q.bind(1, id).bind(2, pos++).bind(3, k).bind(4, v);
-        q.run();
+        connection().runLater(q);
     }
 }
 
