@@ -59,6 +59,7 @@ struct OverlayTexts {
     std::string diameter = "X \xE2\x8C\x80 diameter"; // X ⌀ diameter
     std::string radius = "X radius";
     std::string mm = "%1 mm";
+    std::string micrometres = "\xC2\xB5m"; // the deviation bar's title
 };
 
 // The grinding wheel as the view draws it: a cylinder of R207's diameter
