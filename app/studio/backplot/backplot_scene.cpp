@@ -137,7 +137,7 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->bar->SetLookupTable(v_->lut);
     v_->bar->SetTitle(texts_.micrometres.c_str());
     v_->bar->SetNumberOfLabels(5);
-    v_->bar->SetLabelFormat("%.4g"); // 394, 12.5, 0.25 (VTK's default "%-#6.3g" says «394.»)
+    v_->bar->SetLabelFormat(kDeviationLabelFormat);
     // Placed in pixels by placeOverlays(): a strip of fixed width with its
     // labels beside it, whatever the width of the view.
     v_->bar->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
@@ -356,6 +356,11 @@ void BackplotScene::buildStatic() {
     // «ВНЕ ГРАНИЦ» is the NC-200's own text (the panel's language).
     v_->warning->SetInput(count ? ("ВНЕ ГРАНИЦ:" + text).c_str() : "");
     v_->title->SetInput(titleText().c_str());
+}
+
+std::string BackplotScene::deviationBarTitle() const {
+    const char* t = v_->bar->GetTitle();
+    return t ? t : "";
 }
 
 void BackplotScene::setTexts(const OverlayTexts& texts) {

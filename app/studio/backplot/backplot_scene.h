@@ -54,6 +54,10 @@ inline constexpr int kRightBarBandPx = 96; // the µm bar of an actual path
 
 // The overlay's words in the caller's language; "%1" stands for a number.
 // English by default (`k528 plot`); the studio sets them through tr().
+// The deviation bar's labels: printf's format (394, 12.5, 0.25; VTK's own
+// "%-#6.3g" would say «394.»).
+inline constexpr const char* kDeviationLabelFormat = "%.4g";
+
 struct OverlayTexts {
     std::string segments = "%1 segments";
     std::string diameter = "X \xE2\x8C\x80 diameter"; // X ⌀ diameter
@@ -108,6 +112,8 @@ public:
     void setPixelRatio(double ratio) { ratio_ = ratio > 0 ? ratio : 1; }
     // What the title says now ("L1  5 segments  X ⌀ diameter").
     std::string titleText() const;
+    // The deviation bar's title now («µm», «мкм»).
+    std::string deviationBarTitle() const;
     // The scale bar's length now, in mm (0: none, the 3D view).
     double scaleBarMm() const { return scaleBarMm_; }
     // While the user pans or zooms: the 2D overlays (rulers, texts) are
