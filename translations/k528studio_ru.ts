@@ -3967,6 +3967,10 @@ Its comment stays: %3</source>
         <source>L%1: simulating the run…</source>
         <translation>L%1: моделирование отработки…</translation>
     </message>
+    <message>
+        <source>µm</source>
+        <translation>мкм</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::backplot::VtkGlWidget</name>
