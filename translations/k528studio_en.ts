@@ -3741,6 +3741,169 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::TrainingPane</name>
+    <message>
+        <source>Nothing is machined in this exercise</source>
+        <translation>Nothing is machined in this exercise</translation>
+    </message>
+    <message>
+        <source>Exercise:</source>
+        <translation>Exercise:</translation>
+    </message>
+    <message>
+        <source>Student:</source>
+        <translation>Student:</translation>
+    </message>
+    <message>
+        <source>the student's name</source>
+        <translation>the student's name</translation>
+    </message>
+    <message>
+        <source>Grade the editor's program</source>
+        <translation>Grade the editor's program</translation>
+    </message>
+    <message>
+        <source>Runs the editor's program on a simulated machine of its own as the operator would and grades the part</source>
+        <translation>Runs the editor's program on a simulated machine of its own as the operator would and grades the part</translation>
+    </message>
+    <message>
+        <source>Grade a file…</source>
+        <translation>Grade a file…</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Export CSV</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Task</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Attempt</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Class</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>Student</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Exercise</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Score</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>passed</translation>
+    </message>
+    <message>
+        <source>not passed</source>
+        <translation>not passed</translation>
+    </message>
+    <message>
+        <source>Cycle time at most %1 s</source>
+        <translation>Cycle time at most %1 s</translation>
+    </message>
+    <message>
+        <source>The drawing: the half profile below, black; its tolerance limits dashed</source>
+        <translation>The drawing: the half profile below, black; its tolerance limits dashed</translation>
+    </message>
+    <message>
+        <source>The drawing: bore Ø%1, %2/%3 mm</source>
+        <translation>The drawing: bore Ø%1, %2/%3 mm</translation>
+    </message>
+    <message>
+        <source>The drawing: the part the reference program makes, ±%1 mm</source>
+        <translation>The drawing: the part the reference program makes, ±%1 mm</translation>
+    </message>
+    <message>
+        <source>Hint:</source>
+        <translation>Hint:</translation>
+    </message>
+    <message>
+        <source>No attempt graded yet: write the program in the editor, then «Grade the editor's program»</source>
+        <translation>No attempt graded yet: write the program in the editor, then «Grade the editor's program»</translation>
+    </message>
+    <message>
+        <source>%1: %2/100, %3</source>
+        <translation>%1: %2/100, %3</translation>
+    </message>
+    <message>
+        <source>cycle time %1 s</source>
+        <translation>cycle time %1 s</translation>
+    </message>
+    <message>
+        <source>(limit %1 s)</source>
+        <translation>(limit %1 s)</translation>
+    </message>
+    <message>
+        <source>line %1 «%2»: %3</source>
+        <translation>line %1 «%2»: %3</translation>
+    </message>
+    <message>
+        <source>No deductions</source>
+        <translation>No deductions</translation>
+    </message>
+    <message>
+        <source>The editor holds no program: open the student's file in the editor or use «Grade a file…»</source>
+        <translation>The editor holds no program: open the student's file in the editor or use «Grade a file…»</translation>
+    </message>
+    <message>
+        <source>the editor's program</source>
+        <translation>the editor's program</translation>
+    </message>
+    <message>
+        <source>The student's program</source>
+        <translation>The student's program</translation>
+    </message>
+    <message>
+        <source>K528 programs (*.k528 *.txt);;All files (*)</source>
+        <translation>K528 programs (*.k528 *.txt);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Training</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Cannot read %1: %2</translation>
+    </message>
+    <message>
+        <source>Grading: the program runs on the simulated machine…</source>
+        <translation>Grading: the program runs on the simulated machine…</translation>
+    </message>
+    <message>
+        <source>The attempt could not be graded: %1</source>
+        <translation>The attempt could not be graded: %1</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Training course</source>
+        <translation>Training course</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::Workspaces</name>
     <message>
         <source>&amp;Workspace</source>
@@ -3931,6 +4094,10 @@ Its comment stays: %3</translation>
     <message>
         <source>L%1: simulating the run…</source>
         <translation>L%1: simulating the run…</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>µm</translation>
     </message>
 </context>
 <context>

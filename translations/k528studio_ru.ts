@@ -3741,6 +3741,169 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::TrainingPane</name>
+    <message>
+        <source>Nothing is machined in this exercise</source>
+        <translation>В этом упражнении деталь не обрабатывается</translation>
+    </message>
+    <message>
+        <source>Exercise:</source>
+        <translation>Упражнение:</translation>
+    </message>
+    <message>
+        <source>Student:</source>
+        <translation>Ученик:</translation>
+    </message>
+    <message>
+        <source>the student's name</source>
+        <translation>фамилия ученика</translation>
+    </message>
+    <message>
+        <source>Grade the editor's program</source>
+        <translation>Оценить программу из редактора</translation>
+    </message>
+    <message>
+        <source>Runs the editor's program on a simulated machine of its own as the operator would and grades the part</source>
+        <translation>Выполняет программу из редактора на отдельном моделируемом станке так, как это сделал бы оператор, и оценивает деталь</translation>
+    </message>
+    <message>
+        <source>Grade a file…</source>
+        <translation>Оценить файл…</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Экспорт CSV</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Задание</translation>
+    </message>
+    <message>
+        <source>Attempt</source>
+        <translation>Попытка</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Группа</translation>
+    </message>
+    <message>
+        <source>Student</source>
+        <translation>Ученик</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Упражнение</translation>
+    </message>
+    <message>
+        <source>Score</source>
+        <translation>Балл</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>passed</source>
+        <translation>зачтено</translation>
+    </message>
+    <message>
+        <source>not passed</source>
+        <translation>не зачтено</translation>
+    </message>
+    <message>
+        <source>Cycle time at most %1 s</source>
+        <translation>Время цикла не более %1 с</translation>
+    </message>
+    <message>
+        <source>The drawing: the half profile below, black; its tolerance limits dashed</source>
+        <translation>Чертёж: полупрофиль ниже — чёрным, границы допуска — штрихом</translation>
+    </message>
+    <message>
+        <source>The drawing: bore Ø%1, %2/%3 mm</source>
+        <translation>Чертёж: отверстие Ø%1, %2/%3 мм</translation>
+    </message>
+    <message>
+        <source>The drawing: the part the reference program makes, ±%1 mm</source>
+        <translation>Чертёж: деталь эталонной программы, ±%1 мм</translation>
+    </message>
+    <message>
+        <source>Hint:</source>
+        <translation>Подсказка:</translation>
+    </message>
+    <message>
+        <source>No attempt graded yet: write the program in the editor, then «Grade the editor's program»</source>
+        <translation>Попыток ещё не было: напишите программу в редакторе и нажмите «Оценить программу из редактора»</translation>
+    </message>
+    <message>
+        <source>%1: %2/100, %3</source>
+        <translation>%1: %2/100, %3</translation>
+    </message>
+    <message>
+        <source>cycle time %1 s</source>
+        <translation>время цикла %1 с</translation>
+    </message>
+    <message>
+        <source>(limit %1 s)</source>
+        <translation>(норма %1 с)</translation>
+    </message>
+    <message>
+        <source>line %1 «%2»: %3</source>
+        <translation>строка %1 «%2»: %3</translation>
+    </message>
+    <message>
+        <source>No deductions</source>
+        <translation>Замечаний нет</translation>
+    </message>
+    <message>
+        <source>The editor holds no program: open the student's file in the editor or use «Grade a file…»</source>
+        <translation>В редакторе нет программы: откройте в нём файл ученика или нажмите «Оценить файл…»</translation>
+    </message>
+    <message>
+        <source>the editor's program</source>
+        <translation>программа из редактора</translation>
+    </message>
+    <message>
+        <source>The student's program</source>
+        <translation>Программа ученика</translation>
+    </message>
+    <message>
+        <source>K528 programs (*.k528 *.txt);;All files (*)</source>
+        <translation>Программы K528 (*.k528 *.txt);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Training</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Cannot read %1: %2</source>
+        <translation>Не удаётся прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>Grading: the program runs on the simulated machine…</source>
+        <translation>Оценка: программа выполняется на моделируемом станке…</translation>
+    </message>
+    <message>
+        <source>The attempt could not be graded: %1</source>
+        <translation>Попытку оценить не удалось: %1</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Training course</source>
+        <translation>Учебный курс</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::Workspaces</name>
     <message>
         <source>&amp;Workspace</source>
@@ -3931,6 +4094,10 @@ Its comment stays: %3</source>
     <message>
         <source>L%1: simulating the run…</source>
         <translation>L%1: моделирование отработки…</translation>
+    </message>
+    <message>
+        <source>µm</source>
+        <translation>мкм</translation>
     </message>
 </context>
 <context>

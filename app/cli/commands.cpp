@@ -13,6 +13,8 @@ int runPath(std::span<const std::string> args);  // cmd_path.cpp
 int runPlot(std::span<const std::string> args);  // cmd_plot.cpp
 int runServe(std::span<const std::string> args); // cmd_link_forward.cpp
 int runLink(std::span<const std::string> args);  // cmd_link_forward.cpp
+int runExercise(std::span<const std::string> args); // cmd_exercise.cpp
+int runGrade(std::span<const std::string> args);    // cmd_grade.cpp
 int runShop(std::span<const std::string> args);  // cmd_shop.cpp
 
 std::span<const Command> commands() {
@@ -121,6 +123,34 @@ std::span<const Command> commands() {
          "offscreen: run under xvfb-run -a -s \"-screen 0 1280x800x24\". Segments beyond the\n"
          "software limits are listed on stderr as ВНЕ ГРАНИЦ.\n",
          runPlot},
+        {"exercise", "exercise list [--json] [--lang ru|en] | exercise show ID [--reference | --given] [--json] [--lang ru|en]",
+         "The training course's exercises: the list, one task, its reference program.",
+         "Commands:\n"
+         "  list                 the exercises of the course in order (id, machine, title)\n"
+         "  show ID              the task: machine, blank, drawing, limits, the operator's steps, hints\n"
+         "Options:\n"
+         "  --reference          print only the reference program (a program file)\n"
+         "  --given              print only the program handed out with the task\n"
+         "  --json               JSON (list: an array of {id, position, machine, title, ...})\n"
+         "  --lang ru|en         language of the texts (default ru)\n"
+         "Exercises and their format: docs/training-course.md.\n",
+         runExercise},
+        {"grade", "grade ID FILE... [--json | --csv] [--geometry] [--student NAME] [--lang ru|en] [--jobs N]",
+         "Grade students' program files against an exercise: run, part, collisions, steps, score.",
+         "Options:\n"
+         "  --json               an array of one object per file: file, student, score, passed,\n"
+         "                       status, deductions [{points, frame, line, text_ru, text_en, ...}]\n"
+         "  --csv                the class's record: student,file,exercise,score,passed,status,\n"
+         "                       cycle_time_s,deductions (texts in --lang), one line a file\n"
+         "  --geometry           (with --json) also the blank, the finished part, the drawing\n"
+         "  --student NAME       the student of one FILE (default: the file's name)\n"
+         "  --lang ru|en         language of the report (default ru)\n"
+         "  --jobs N             files graded at once (default: the processor count)\n"
+         "Each FILE runs on its own simulated machine as the operator would: its '; OPERATOR:'\n"
+         "lines, else drives on, reference points, АВТОМАТ, «Пуск» (docs/training-course.md).\n"
+         "One file: a report; several: a table. Exit codes: 0 every file passed; 1 some did not;\n"
+         "2 usage or I/O error.\n",
+         runGrade},
         {"serve", "serve --port DEVICE|--tcp HOST:PORT [--profile NAME|PATH] [--db PATH] [--address A] [--baud B] [--parity none|even|odd] [--keys \"KEY ...\"] [--stdin-keys]",
          "The simulated K528-05 as a Modbus RTU server on a serial device, in real time.",
          "Options:\n"

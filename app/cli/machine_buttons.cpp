@@ -9,17 +9,6 @@ namespace k528::cli {
 
 namespace {
 
-struct ButtonName {
-    std::string_view name;
-    machine::Button button;
-};
-constexpr ButtonName kButtons[] = {
-    {"DRIVES_ON", machine::Button::DrivesOn}, {"START", machine::Button::CycleStart},
-    {"STOP", machine::Button::CycleStop},     {"RESET", machine::Button::Reset},
-    {"X+", machine::Button::JogXPlus},        {"X-", machine::Button::JogXMinus},
-    {"Z+", machine::Button::JogZPlus},        {"Z-", machine::Button::JogZMinus},
-    {"RAPID", machine::Button::Rapid},        {"CHUCK", machine::Button::ChuckPedal},
-};
 constexpr std::string_view kButtonList =
     "DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP";
 
@@ -64,11 +53,10 @@ std::optional<ButtonStep> parseButton(const std::string& token, std::string& err
         error = "bad --keys token '" + token + "': only the E-stop is pulled (PULL:ESTOP)";
         return std::nullopt;
     }
-    for (const ButtonName& n : kButtons)
-        if (rest == n.name) {
-            b.button = n.button;
-            return b;
-        }
+    if (const auto button = machine::buttonFromName(rest)) {
+        b.button = *button;
+        return b;
+    }
     error = "unknown machine button in --keys token '" + token + "' (buttons: " +
             std::string(kButtonList) + ")";
     return std::nullopt;

@@ -33,8 +33,10 @@
 #include "monitor/program_monitor.h"
 #include "scope/scope_dock.h"
 #include "history/history_dock.h"
+#include "training/training_pane.h"
 #include "proveout/proveout_pane.h"
 #include "editor/editor_tab.h"
+#include "editor/program_editor.h"
 #include "program/parser.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
@@ -259,6 +261,20 @@ void MainWindow::createDocks() {
     addConstantsDock(this, *viewed_, machine_.profile); // constants/constants_dock.cpp
     addRParamsDock(this, *viewed_, machine_.profile);   // rparams/rparams_dock.cpp
     addHistoryDock(this, *viewed_);                     // history/history_dock.cpp
+    // The training course (training/training_pane.cpp): grades the editor's
+    // program; a deduction clicked puts the editor on its frame's line.
+    QDockWidget* training = addTrainingDock(this, [this]() -> std::pair<QString, QString> {
+        ProgramEditor* ed = programEditor_->currentEditor();
+        if (!ed)
+            return {};
+        for (int i = 0; i < programEditor_->documentCount(); ++i)
+            if (programEditor_->editorAt(i) == ed)
+                return {ed->text(), QFileInfo(programEditor_->pathOf(i)).fileName()};
+        return {ed->text(), QString()};
+    });
+    connect(static_cast<TrainingPane*>(training->widget()), &TrainingPane::lineActivated, programEditor_,
+            &EditorTab::showLine);
+    tabifyDockWidget(backplotDock, training); // its home: a tab of the backplot, not one more row
     addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
     // The debugger of the editor in a dock of its own (the technologist
     // shows it on demand).
@@ -335,7 +351,7 @@ void MainWindow::createMenus() {
         viewMenu_->addAction(d->toggleViewAction());
     if (auto* scope = findChild<QDockWidget*>("dock.scope"))
         viewMenu_->addAction(scope->toggleViewAction());
-    for (const char* name : {"dock.constants", "dock.rparams"})
+    for (const char* name : {"dock.constants", "dock.rparams", "dock.training"})
         if (auto* d = findChild<QDockWidget*>(name))
             viewMenu_->addAction(d->toggleViewAction());
     if (auto* history = findChild<QDockWidget*>("dock.history"))

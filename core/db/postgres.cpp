@@ -82,13 +82,15 @@ PgConnection::~PgConnection() {
 }
 
 void PgConnection::fail(PGresult* r, std::string_view what) const {
+    // Everything read from the result before PQclear frees it (the SQLSTATE
+    // field points into the result's memory).
     const char* state = r ? PQresultErrorField(r, PG_DIAG_SQLSTATE) : nullptr;
+    ErrorKind kind = state ? kindOf(state) : ErrorKind::Io;
     std::string message = trimmed(r ? PQresultErrorMessage(r) : nullptr);
     if (message.empty())
         message = trimmed(PQerrorMessage(conn_));
     if (r)
         PQclear(r);
-    ErrorKind kind = state ? kindOf(state) : ErrorKind::Io;
     if (PQstatus(conn_) != CONNECTION_OK) {
         kind = ErrorKind::Io;
         message = "the connection to the server was lost (" + message + ")";

@@ -23,7 +23,28 @@ constexpr std::string_view kButtonMeaning[kButtonCount] = {"push-button «drives
                                                            "rapid pressed",
                                                            "chuck foot switch pressed"};
 
+// The names an operator's script gives the buttons (`k528 panel --machine`,
+// a training attempt's procedure).
+constexpr std::string_view kButtonNames[kButtonCount] = {
+    "DRIVES_ON", "START", "STOP", "RESET", "X+", "X-", "Z+", "Z-", "RAPID", "CHUCK"};
+
 } // namespace
+
+std::string_view buttonName(Button b) {
+    return kButtonNames[static_cast<int>(b)];
+}
+
+std::optional<Button> buttonFromName(std::string_view name) {
+    for (int i = 0; i < kButtonCount; ++i) {
+        const std::string_view n = kButtonNames[i];
+        if (n.size() == name.size() &&
+            std::equal(n.begin(), n.end(), name.begin(), [](char a, char b) {
+                return a == (b >= 'a' && b <= 'z' ? static_cast<char>(b - 'a' + 'A') : b);
+            }))
+            return static_cast<Button>(i);
+    }
+    return std::nullopt;
+}
 
 std::string_view buttonSignal(Button b) {
     return kButtonSignals[static_cast<int>(b)];

@@ -27,6 +27,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace k528::machine {
@@ -48,6 +49,10 @@ enum class Button : std::uint8_t {
 };
 inline constexpr int kButtonCount = 10;
 std::string_view buttonSignal(Button b); // "pendant.cycle_start" ...
+// The button's name in an operator's script: "DRIVES_ON", "START", "STOP",
+// "RESET", "X+", "X-", "Z+", "Z-", "RAPID", "CHUCK"; back (case-insensitive).
+std::string_view buttonName(Button b);
+std::optional<Button> buttonFromName(std::string_view name);
 
 enum class HandwheelAxis : std::uint8_t { Off, X, Z };
 

@@ -138,6 +138,23 @@ std::string formatUcg(const Blank& b) {
            std::to_string(b.detail);
 }
 
+Ring toolSweep(PointZR a, PointZR b, const Tool& t) {
+    bg::model::multi_point<P> pts;
+    for (const PointZR& q : {a, b}) {
+        bg::append(pts, P(q.z, q.r));
+        bg::append(pts, P(q.z + t.widthMm, q.r));
+        bg::append(pts, P(q.z + t.widthMm, q.r + t.heightMm));
+        bg::append(pts, P(q.z, q.r + t.heightMm));
+    }
+    Poly hull;
+    bg::convex_hull(pts, hull);
+    Ring r;
+    const auto& o = hull.outer();
+    for (std::size_t k = 0; k + 1 < o.size(); ++k) // closed: drop the repeat
+        r.push_back({o[k].x(), o[k].y()});
+    return r;
+}
+
 struct Stock::Impl {
     Multi m;
 };
@@ -178,16 +195,9 @@ void Stock::cut(PointZR a, PointZR b, const Tool& t) {
     if (!bg::intersects(env, sb))
         return;
     Poly sweep;
-    {
-        bg::model::multi_point<P> pts;
-        for (const PointZR& q : {a, b}) {
-            bg::append(pts, P(q.z, q.r));
-            bg::append(pts, P(q.z + t.widthMm, q.r));
-            bg::append(pts, P(q.z + t.widthMm, q.r + t.heightMm));
-            bg::append(pts, P(q.z, q.r + t.heightMm));
-        }
-        bg::convex_hull(pts, sweep);
-    }
+    for (const PointZR& q : toolSweep(a, b, t))
+        bg::append(sweep.outer(), P(q.z, q.r));
+    bg::correct(sweep);
     Multi out;
     bg::difference(d_->m, sweep, out);
     d_->m = std::move(out);

@@ -59,6 +59,10 @@ struct Tool {
     double heightMm = 1000; // along +r from the tip
 };
 
+// The region the tool sweeps moving from `a` to `b` (z, r of the tip): the
+// convex hull of the tool's rectangle at both ends, clockwise.
+Ring toolSweep(PointZR a, PointZR b, const Tool& tool);
+
 // The material as plain rings: each polygon's outer ring and its holes.
 struct Shape {
     struct Polygon {

@@ -90,8 +90,9 @@ void Decimator::add(const ActualSample& s) {
         restart();
         return;
     }
-    const bool newFrame = s.line != out_.back().line || s.n != out_.back().n ||
-                          s.program != out_.back().program;
+    const ActualSample& b = out_.back();
+    const bool newFrame = s.line != b.line || s.n != b.n || s.program != b.program ||
+                          s.kind != b.kind || s.manual != b.manual;
     if (newFrame || pending_ >= kMaxWindow || !fits(s)) {
         if (pending_ > 0) {
             out_.push_back(last_); // the last sample that fitted
@@ -132,6 +133,7 @@ bool sampleOf(const engine::Controller& c, ActualSample& s) {
     s.program = p.program;
     s.line = p.line;
     s.n = p.frameNumber;
+    s.kind = c.modal().rapid ? SegmentKind::Rapid : SegmentKind::Feed;
     return true;
 }
 

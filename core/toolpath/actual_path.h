@@ -13,6 +13,7 @@
 #pragma once
 
 #include "engine/run.h"
+#include "toolpath/programmed_path.h"
 
 #include <cstdint>
 #include <memory>
@@ -30,6 +31,12 @@ struct ActualSample {
     double x = 0, z = 0;       // actual position, current coordinates, mm
     double errX = 0, errZ = 0; // following error, mm
     int program = 0, line = 0, n = 0;
+    // What moves the axes: a program's G00 (Rapid) or G01 (Feed); `manual`
+    // for the operator's motion outside a program (jog, handwheel, the
+    // reference-point cycle). A change of either starts a new frame of the
+    // decimation, so each kept stretch has one kind.
+    SegmentKind kind = SegmentKind::Feed;
+    bool manual = false;
 };
 
 // Streaming decimator of samples (the bound above), O(1) a sample: instead

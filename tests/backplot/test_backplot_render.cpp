@@ -19,6 +19,7 @@
 #include <vtkRenderer.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace k528;
 using backplot::Rgb;
@@ -313,6 +314,7 @@ private slots:
                                                            .arg(title.y0).arg(title.y1).arg(warning.y0).arg(warning.y1)));
             QVERIFY(title.width() > 120);
             QCOMPARE(scene.titleText(), std::string("L1  4 segments  X \xE2\x8C\x80 diameter"));
+            QCOMPARE(scene.deviationBarTitle(), std::string("\xC2\xB5m"));
             // Nothing of the path in the band: the red there is the warning's text only.
             const Box pathRed = boxOf(p, boxOf(p, 0, w, title.y0 - 14, title.y0, red).x1 + 6, w, h - band, h, red);
             QVERIFY2(pathRed.empty(), qPrintable(QString("path in the top band at x %1").arg(pathRed.x0)));
@@ -356,6 +358,25 @@ private slots:
             QVERIFY2(strip.width() >= 15 && strip.height() >= 60,
                      qPrintable(QString("strip %1 x %2 px at %3x%4").arg(strip.width()).arg(strip.height()).arg(w).arg(h)));
         }
+    }
+    // The bar's labels are numbers as a reader writes them («394», «12.5»,
+    // «0.25», never VTK's «394.»), its title in the caller's words.
+    void deviationBarSpeaksTheCallersLanguage() {
+        const auto label = [](double v) {
+            char b[32];
+            std::snprintf(b, sizeof b, backplot::kDeviationLabelFormat, v);
+            return std::string(b);
+        };
+        QCOMPARE(label(394), std::string("394"));
+        QCOMPARE(label(12.5), std::string("12.5"));
+        QCOMPARE(label(0.25), std::string("0.25"));
+        QCOMPARE(label(0), std::string("0"));
+        QCOMPARE(label(231.27), std::string("231.3"));
+        backplot::BackplotScene scene;
+        backplot::OverlayTexts ru;
+        ru.micrometres = "мкм";
+        scene.setTexts(ru);
+        QCOMPARE(scene.deviationBarTitle(), std::string("мкм"));
     }
     // The wheel zooms about the cursor: the world point under it stays there.
     void zoomKeepsThePointUnderTheCursor() {

@@ -16,7 +16,7 @@ private slots:
     void matchesTheSourceTree() {
         const fs::path root = fs::path(K528_SOURCE_DIR) / "resources";
         std::size_t expected = 0;
-        for (const char* dir : {"profiles", "machines", "samples", "link"}) {
+        for (const char* dir : {"profiles", "machines", "samples", "link", "exercises"}) {
             if (!fs::exists(root / dir))
                 continue;
             for (const auto& e : fs::recursive_directory_iterator(root / dir)) {

@@ -33,6 +33,7 @@
 #include "program/model.h"
 #include "session/machine_source.h"
 #include "session/simulation_session.h"
+#include "training/exercise.h"
 #include "workspace/workspaces.h"
 
 #include <QAbstractButton>
@@ -328,6 +329,15 @@ QStringList panelTexts() {
     return out;
 }
 
+// The training course's exercises (resources/exercises/: data a trainer
+// writes, each title in Russian and in English as written).
+QStringList courseTexts() {
+    QStringList out;
+    for (const training::Exercise& e : training::shippedExercises())
+        out << QString::fromStdString(e.title.ru) << QString::fromStdString(e.title.en);
+    return out;
+}
+
 // The machine's own texts (the profile: data, in the language it was
 // written in) and the titles of the programs on its controller.
 QStringList machineTexts(const profile::MachineProfile& p, const program::ProgramStore& store) {
@@ -587,7 +597,7 @@ private:
         walker.exemptWords = manualWords(language);
         walker.setData(panelTexts() +
                        machineTexts(w.session()->simulation().profile(), w.session()->controller().programs()) +
-                       positionerTexts() + studio::machineNames() +
+                       positionerTexts() + studio::machineNames() + courseTexts() +
                        QStringList{QFileInfo(file_).fileName(), QFileInfo(warnFile_).fileName(),
                                    studio::EditorTab::sampleFor("training-lathe"), // the first start's sample
                                    QString::fromStdString(db::defaultAuthor())} + // the revisions' author: the OS user

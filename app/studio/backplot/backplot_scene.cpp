@@ -135,8 +135,9 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->lut->SetHueRange(0.66, 0.0); // blue (0 µm) .. red (largest)
     v_->lut->Build();
     v_->bar->SetLookupTable(v_->lut);
-    v_->bar->SetTitle("\xC2\xB5m"); // µm
+    v_->bar->SetTitle(texts_.micrometres.c_str());
     v_->bar->SetNumberOfLabels(5);
+    v_->bar->SetLabelFormat(kDeviationLabelFormat);
     // Placed in pixels by placeOverlays(): a strip of fixed width with its
     // labels beside it, whatever the width of the view.
     v_->bar->GetPositionCoordinate()->SetCoordinateSystemToDisplay();
@@ -357,9 +358,15 @@ void BackplotScene::buildStatic() {
     v_->title->SetInput(titleText().c_str());
 }
 
+std::string BackplotScene::deviationBarTitle() const {
+    const char* t = v_->bar->GetTitle();
+    return t ? t : "";
+}
+
 void BackplotScene::setTexts(const OverlayTexts& texts) {
     texts_ = texts;
     v_->title->SetInput(titleText().c_str());
+    v_->bar->SetTitle(texts_.micrometres.c_str());
 }
 
 namespace {

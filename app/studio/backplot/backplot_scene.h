@@ -54,11 +54,16 @@ inline constexpr int kRightBarBandPx = 96; // the µm bar of an actual path
 
 // The overlay's words in the caller's language; "%1" stands for a number.
 // English by default (`k528 plot`); the studio sets them through tr().
+// The deviation bar's labels: printf's format (394, 12.5, 0.25; VTK's own
+// "%-#6.3g" would say «394.»).
+inline constexpr const char* kDeviationLabelFormat = "%.4g";
+
 struct OverlayTexts {
     std::string segments = "%1 segments";
     std::string diameter = "X \xE2\x8C\x80 diameter"; // X ⌀ diameter
     std::string radius = "X radius";
     std::string mm = "%1 mm";
+    std::string micrometres = "\xC2\xB5m"; // the deviation bar's title
 };
 
 // The grinding wheel as the view draws it: a cylinder of R207's diameter
@@ -107,6 +112,8 @@ public:
     void setPixelRatio(double ratio) { ratio_ = ratio > 0 ? ratio : 1; }
     // What the title says now ("L1  5 segments  X ⌀ diameter").
     std::string titleText() const;
+    // The deviation bar's title now («µm», «мкм»).
+    std::string deviationBarTitle() const;
     // The scale bar's length now, in mm (0: none, the 3D view).
     double scaleBarMm() const { return scaleBarMm_; }
     // While the user pans or zooms: the 2D overlays (rulers, texts) are

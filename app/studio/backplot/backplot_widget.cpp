@@ -268,6 +268,7 @@ void BackplotWidget::retranslate() {
     t.diameter = tr("X ⌀ diameter").toStdString();
     t.radius = tr("X radius").toStdString();
     t.mm = tr("%1 mm").toStdString();
+    t.micrometres = tr("µm").toStdString();
     scene_->setTexts(t);
     if (pw_ > 1)
         refresh(); // the scale's length in the new words

@@ -63,6 +63,7 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
         tab("dock.controller", "dock.machine", false),
         place("dock.messages", Qt::BottomDockWidgetArea, 0.25),
         tab("dock.history", "dock.messages", false),
+        tab("dock.training", "dock.controller", false),
     };
     out.push_back(op);
 
@@ -85,6 +86,7 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
         tab("dock.scope", "dock.messages", false),
         hidden(place("dock.rparams", Qt::LeftDockWidgetArea, 0.3)),
         tab("dock.constants", "dock.rparams", false),
+        tab("dock.training", "dock.proveout", false),
     };
     out.push_back(tech);
 
@@ -111,6 +113,8 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
         raised(place("dock.backplot", Qt::RightDockWidgetArea, std::max(0.3, 1.0 - k - 0.30))),
         roomForBoth ? beside("dock.scope", "dock.backplot", Qt::Vertical, 0.45)
                     : tab("dock.scope", "dock.backplot"),
+        // The course's exercise, its drawing and the grade beside the backplot.
+        tab("dock.training", "dock.backplot"),
     };
     out.push_back(train);
     return out;

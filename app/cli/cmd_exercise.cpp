@@ -1,0 +1,157 @@
+// k528 exercise list [--json] [--lang ru|en]
+// k528 exercise show ID [--reference | --given] [--json] [--lang ru|en]
+// The training course's exercises (core/training, docs/training-course.md).
+#include "args.h"
+#include "cli.h"
+#include "program_cli.h"
+#include "stock/stock.h"
+#include "training/exercise.h"
+#include "util/json.h"
+
+#include <cstdio>
+#include <string>
+
+namespace k528::cli {
+
+namespace {
+
+training::Language languageOf(Lang l) {
+    return l == Lang::Ru ? training::Language::Ru : training::Language::En;
+}
+
+Json exerciseJson(const training::Exercise& e, training::Language l, std::size_t position) {
+    Json o;
+    o["id"] = e.id;
+    o["position"] = static_cast<long long>(position);
+    o["machine"] = e.machine;
+    o["title"] = e.title.in(l);
+    o["title_ru"] = e.title.ru;
+    o["title_en"] = e.title.en;
+    return o;
+}
+
+std::string toleranceText(const training::Tolerance& t) {
+    const auto sign = [](double v) {
+        char b[32];
+        std::snprintf(b, sizeof b, "%+.3f", v);
+        std::string s(b);
+        while (s.size() > 2 && s.back() == '0')
+            s.pop_back();
+        if (s.back() == '.')
+            s.pop_back();
+        return s;
+    };
+    return sign(t.upperMm) + "/" + sign(t.lowerMm);
+}
+
+int list(const Args& args, Lang lang) {
+    const auto& all = training::shippedExercises();
+    const training::Language l = languageOf(lang);
+    if (args.has("--json")) {
+        Json a = Json::array();
+        for (std::size_t i = 0; i < all.size(); ++i)
+            a.push_back(exerciseJson(all[i], l, i + 1));
+        std::printf("%s\n", json::dump(a).c_str());
+        return ExitOk;
+    }
+    std::printf("%s\n", training::starterCourse().title.in(l).c_str());
+    for (std::size_t i = 0; i < all.size(); ++i)
+        std::printf("%2zu  %-28s %-15s %s\n", i + 1, all[i].id.c_str(), all[i].machine.c_str(),
+                    all[i].title.in(l).c_str());
+    return ExitOk;
+}
+
+int show(const Args& args, Lang lang, const std::string& id) {
+    const training::Exercise* e = training::findExercise(id);
+    if (!e)
+        return usageError("no exercise '" + id + "' (k528 exercise list)");
+    if (args.has("--reference")) {
+        std::fputs(e->reference.c_str(), stdout);
+        return ExitOk;
+    }
+    if (args.has("--given")) {
+        if (e->given.empty())
+            return usageError("exercise " + id + " hands out no program");
+        std::fputs(e->given.c_str(), stdout);
+        return ExitOk;
+    }
+    const training::Language l = languageOf(lang);
+    const bool ru = lang == Lang::Ru;
+    if (args.has("--json")) {
+        Json o = exerciseJson(*e, l, 0);
+        o.erase("position");
+        o["task"] = e->task.in(l);
+        Json hints = Json::array();
+        for (const training::Bilingual& h : e->hints)
+            hints.push_back(h.in(l));
+        o["hints"] = std::move(hints);
+        o["blank"] = e->ucg.empty() ? Json() : Json(e->ucg);
+        o["cycle_time_s"] = e->limits.cycleTimeS > 0 ? Json(e->limits.cycleTimeS) : Json();
+        o["alarms_allowed"] = e->limits.alarmsAllowed;
+        Json steps = Json::array();
+        for (const training::OperatorStep& s : e->steps)
+            steps.push_back(std::string(training::stepName(s.kind)));
+        o["operator"] = std::move(steps);
+        o["has_given_program"] = !e->given.empty();
+        std::printf("%s\n", json::dump(o).c_str());
+        return ExitOk;
+    }
+    std::printf("%s — %s\n", e->id.c_str(), e->title.in(l).c_str());
+    std::printf("%s %s\n", ru ? "Станок:" : "Machine:", e->machine.c_str());
+    if (!e->ucg.empty())
+        std::printf("%s %s\n", ru ? "Заготовка:" : "Blank:", e->ucg.c_str());
+    std::printf("\n%s\n", e->task.in(l).c_str());
+    const training::Drawing& d = e->drawing;
+    if (d.kind == training::Drawing::Kind::Contour) {
+        std::printf("%s\n", ru ? "Чертёж (Z, Ø, допуск элемента до точки):" : "Drawing (Z, Ø, the tolerance of the element up to the point):");
+        for (const training::ContourPoint& p : d.contour)
+            std::printf("  Z%-10g Ø%-10g %s\n", p.zMm, p.dMm,
+                        toleranceText(p.tol.value_or(d.tolerance)).c_str());
+    } else if (d.kind == training::Drawing::Kind::Bore) {
+        std::printf("%s Ø%g %s\n", ru ? "Отверстие:" : "Bore:", d.boreMm,
+                    toleranceText(d.boreTol).c_str());
+    } else if (d.kind == training::Drawing::Kind::Reference) {
+        std::printf("%s %s\n", ru ? "Чертёж: деталь эталонной программы, допуск" : "Drawing: the reference program's part, tolerance",
+                    toleranceText(d.tolerance).c_str());
+    }
+    if (e->limits.cycleTimeS > 0)
+        std::printf("%s %g s\n", ru ? "Время цикла не более" : "Cycle time at most", e->limits.cycleTimeS);
+    if (!e->steps.empty()) {
+        std::string s;
+        for (const training::OperatorStep& st : e->steps)
+            s += (s.empty() ? "" : ", ") + std::string(training::stepName(st.kind));
+        std::printf("%s %s\n", ru ? "Действия оператора:" : "Operator's steps:", s.c_str());
+    }
+    for (const training::Bilingual& h : e->hints)
+        std::printf("%s %s\n", ru ? "Подсказка:" : "Hint:", h.in(l).c_str());
+    if (!e->given.empty())
+        std::printf("%s k528 exercise show %s --given\n",
+                    ru ? "Программа к заданию:" : "The program handed out:", e->id.c_str());
+    return ExitOk;
+}
+
+} // namespace
+
+int runExercise(std::span<const std::string> argv) {
+    const Args args(argv, {"--json", "--reference", "--given"}, {"--lang"});
+    if (!args.ok())
+        return usageError(args.error());
+    Lang lang = Lang::Ru;
+    if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
+        return usageError("--lang is ru or en, not '" + *l + "'");
+    const auto& pos = args.positional();
+    if (pos.empty())
+        return usageError("exercise needs list or show ID");
+    try {
+        if (pos[0] == "list" && pos.size() == 1)
+            return list(args, lang);
+        if (pos[0] == "show" && pos.size() == 2)
+            return show(args, lang, pos[1]);
+    } catch (const training::ExerciseError& e) {
+        std::fprintf(stderr, "k528: %s\n", e.what());
+        return ExitUsage;
+    }
+    return usageError("exercise list | exercise show ID");
+}
+
+} // namespace k528::cli

@@ -1,0 +1,556 @@
+#include "training/training_pane.h"
+
+#include "language.h"
+#include "training/exercise.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QDockWidget>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QTabWidget>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+
+namespace k528::studio {
+
+namespace {
+
+training::Language uiLanguage() {
+    return currentLanguage() == QLatin1String("ru") ? training::Language::Ru : training::Language::En;
+}
+
+QString q(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+QString points(double p) {
+    return QString::number(p, 'g', 4);
+}
+
+} // namespace
+
+// --- PartView ------------------------------------------------------------------
+
+PartView::PartView(QWidget* parent) : QWidget(parent) {
+    setObjectName("training.part");
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+}
+
+void PartView::setDrawing(const training::DrawingShapes& d, std::vector<training::Shape> blank) {
+    drawing_ = d;
+    blank_ = std::move(blank);
+    finished_.clear();
+    over_.clear();
+    under_.clear();
+    update();
+}
+
+void PartView::setGrade(const training::Grade* g) {
+    finished_.clear();
+    over_.clear();
+    under_.clear();
+    if (g) {
+        drawing_ = g->drawing;
+        if (!g->blank.empty())
+            blank_ = g->blank;
+        finished_ = g->finished;
+        for (const training::Deviation& d : g->overcut)
+            over_.insert(over_.end(), d.shapes.begin(), d.shapes.end());
+        for (const training::Deviation& d : g->undercut)
+            under_.insert(under_.end(), d.shapes.begin(), d.shapes.end());
+    }
+    update();
+}
+
+void PartView::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    p.fillRect(rect(), palette().base());
+    // The extent of everything drawn, in (z, r).
+    double z0 = 1e300, z1 = -1e300, r0 = 0, r1 = -1e300;
+    const auto extend = [&](const std::vector<training::Shape>& shapes) {
+        for (const training::Shape& s : shapes)
+            for (const stock::PointZR& q : s.outer) {
+                z0 = std::min(z0, q.z);
+                z1 = std::max(z1, q.z);
+                r0 = std::min(r0, q.r);
+                r1 = std::max(r1, q.r);
+            }
+    };
+    extend(blank_);
+    extend(drawing_.most);
+    extend(finished_);
+    if (z1 <= z0 || r1 <= r0) {
+        p.setPen(palette().color(QPalette::PlaceholderText));
+        p.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
+                   TrainingPane::tr("Nothing is machined in this exercise"));
+        return;
+    }
+    const double margin = 10;
+    const double sx = (width() - 2 * margin) / (z1 - z0), sy = (height() - 2 * margin) / (r1 - r0);
+    const double s = std::max(1e-6, std::min(sx, sy)); // one scale: the part's true shape
+    const double ox = margin + ((width() - 2 * margin) - s * (z1 - z0)) / 2;
+    const double oy = height() - margin - ((height() - 2 * margin) - s * (r1 - r0)) / 2;
+    const auto at = [&](const stock::PointZR& q) { return QPointF(ox + (q.z - z0) * s, oy - (q.r - r0) * s); };
+    const auto path = [&](const std::vector<training::Shape>& shapes) {
+        QPainterPath pp;
+        pp.setFillRule(Qt::OddEvenFill);
+        for (const training::Shape& sh : shapes) {
+            const auto ring = [&](const stock::Ring& r) {
+                if (r.empty())
+                    return;
+                pp.moveTo(at(r.front()));
+                for (std::size_t i = 1; i < r.size(); ++i)
+                    pp.lineTo(at(r[i]));
+                pp.closeSubpath();
+            };
+            ring(sh.outer);
+            for (const stock::Ring& h : sh.holes)
+                ring(h);
+        }
+        return pp;
+    };
+    p.setRenderHint(QPainter::Antialiasing);
+    p.fillPath(path(blank_), QColor(0xe4, 0xe4, 0xe4));
+    if (!finished_.empty()) {
+        p.fillPath(path(finished_), QColor(0x9f, 0xb6, 0xcd));
+        p.setPen(QPen(QColor(0x33, 0x4d, 0x66), 1));
+        p.drawPath(path(finished_));
+    }
+    // The tolerance limits thin and dashed, the nominal contour over them.
+    p.setPen(QPen(QColor(0x2e, 0x8b, 0x57), 1, Qt::DashLine));
+    p.drawPath(path(drawing_.most));
+    p.drawPath(path(drawing_.least));
+    p.setPen(QPen(Qt::black, 1.5));
+    p.drawPath(path(drawing_.nominal));
+    // Deviations are thin beside the part: outlined as well as filled.
+    const auto mark = [&](const std::vector<training::Shape>& shapes, QColor c) {
+        const QPainterPath pp = path(shapes);
+        p.fillPath(pp, c);
+        p.setPen(QPen(c, 3));
+        p.drawPath(pp);
+    };
+    mark(over_, QColor(0xd0, 0x20, 0x20));
+    mark(under_, QColor(0xe8, 0x9a, 0x00));
+}
+
+// --- TrainingPane ----------------------------------------------------------------
+
+TrainingPane::TrainingPane(std::function<std::pair<QString, QString>()> editorText, QWidget* parent)
+    : QWidget(parent), editorText_(std::move(editorText)) {
+    setObjectName("training");
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    auto* row = new QHBoxLayout;
+    exerciseLabel_ = new QLabel(this);
+    exercise_ = new QComboBox(this);
+    exercise_->setObjectName("training.exercise");
+    exercise_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    exercise_->setMinimumContentsLength(12);
+    for (const training::Exercise& e : training::shippedExercises())
+        exercise_->addItem(QString(), q(e.id));
+    row->addWidget(exerciseLabel_);
+    row->addWidget(exercise_, 1);
+    layout->addLayout(row);
+
+    auto* row2 = new QHBoxLayout;
+    studentLabel_ = new QLabel(this);
+    student_ = new QLineEdit(this);
+    student_->setObjectName("training.student");
+    gradeEditor_ = new QPushButton(this);
+    gradeEditor_->setObjectName("training.gradeEditor");
+    gradeFile_ = new QPushButton(this);
+    gradeFile_->setObjectName("training.gradeFile");
+    row2->addWidget(studentLabel_);
+    row2->addWidget(student_, 1);
+    row2->addWidget(gradeEditor_);
+    row2->addWidget(gradeFile_);
+    layout->addLayout(row2);
+
+    tabs_ = new QTabWidget(this);
+    tabs_->setObjectName("training.tabs");
+    // The task and the drawing.
+    auto* taskPage = new QSplitter(Qt::Vertical, tabs_);
+    taskPage->setObjectName("training.taskPage");
+    task_ = new QTextBrowser(taskPage);
+    task_->setObjectName("training.task");
+    part_ = new PartView(taskPage);
+    taskPage->addWidget(task_);
+    taskPage->addWidget(part_);
+    taskPage->setStretchFactor(0, 1);
+    taskPage->setStretchFactor(1, 1);
+    tabs_->addTab(taskPage, QString());
+    // The attempt: the score, the deductions, the program graded.
+    auto* attemptPage = new QWidget(tabs_);
+    auto* al = new QVBoxLayout(attemptPage);
+    al->setContentsMargins(0, 4, 0, 0);
+    score_ = new QLabel(attemptPage);
+    score_->setObjectName("training.score");
+    score_->setWordWrap(true);
+    al->addWidget(score_);
+    auto* split = new QSplitter(Qt::Vertical, attemptPage);
+    deductions_ = new QListWidget(split);
+    deductions_->setObjectName("training.deductions");
+    deductions_->setWordWrap(true);
+    listing_ = new QPlainTextEdit(split);
+    listing_->setObjectName("training.listing");
+    listing_->setReadOnly(true);
+    listing_->setLineWrapMode(QPlainTextEdit::NoWrap);
+    split->addWidget(deductions_);
+    split->addWidget(listing_);
+    al->addWidget(split, 1);
+    tabs_->addTab(attemptPage, QString());
+    // The class: every attempt of the session.
+    auto* classPage = new QWidget(tabs_);
+    auto* cl = new QVBoxLayout(classPage);
+    cl->setContentsMargins(0, 4, 0, 0);
+    attempts_ = new QTableWidget(0, 5, classPage);
+    attempts_->setObjectName("training.attempts");
+    attempts_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    attempts_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    attempts_->verticalHeader()->hide();
+    attempts_->horizontalHeader()->setStretchLastSection(true);
+    cl->addWidget(attempts_, 1);
+    csv_ = new QPushButton(classPage);
+    csv_->setObjectName("training.csv");
+    cl->addWidget(csv_, 0, Qt::AlignRight);
+    tabs_->addTab(classPage, QString());
+    layout->addWidget(tabs_, 1);
+
+    connect(exercise_, &QComboBox::currentIndexChanged, this, [this] {
+        last_.reset();
+        showExercise();
+        showGrade();
+    });
+    connect(gradeEditor_, &QPushButton::clicked, this, &TrainingPane::gradeEditor);
+    connect(gradeFile_, &QPushButton::clicked, this, &TrainingPane::gradeFile);
+    connect(csv_, &QPushButton::clicked, this, &TrainingPane::exportDialog);
+    connect(deductions_, &QListWidget::itemActivated, this, [this](QListWidgetItem* item) {
+        const int program = item->data(Qt::UserRole).toInt();
+        const int line = item->data(Qt::UserRole + 1).toInt();
+        if (line <= 0)
+            return;
+        const QTextBlock b = listing_->document()->findBlockByNumber(line - 1);
+        if (b.isValid()) {
+            QTextCursor c(b);
+            c.select(QTextCursor::LineUnderCursor);
+            listing_->setTextCursor(c);
+            listing_->centerCursor();
+        }
+        emit lineActivated(program, line);
+    });
+    connect(deductions_, &QListWidget::itemClicked, deductions_, &QListWidget::itemActivated);
+    retranslate();
+}
+
+TrainingPane::~TrainingPane() {
+    if (watcher_)
+        static_cast<QFutureWatcher<training::Grade>*>(watcher_)->waitForFinished();
+}
+
+const training::Exercise* TrainingPane::current() const {
+    return training::findExercise(exercise_->currentData().toString().toStdString());
+}
+
+bool TrainingPane::selectExercise(const QString& id) {
+    const int i = exercise_->findData(id);
+    if (i < 0)
+        return false;
+    exercise_->setCurrentIndex(i);
+    return true;
+}
+
+void TrainingPane::changeEvent(QEvent* e) {
+    if (e->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(e);
+}
+
+void TrainingPane::retranslate() {
+    const training::Language l = uiLanguage();
+    const auto& all = training::shippedExercises();
+    for (int i = 0; i < exercise_->count() && i < static_cast<int>(all.size()); ++i)
+        exercise_->setItemText(i, QStringLiteral("%1. %2").arg(i + 1).arg(q(all[static_cast<std::size_t>(i)].title.in(l))));
+    exerciseLabel_->setText(tr("Exercise:"));
+    studentLabel_->setText(tr("Student:"));
+    student_->setPlaceholderText(tr("the student's name"));
+    gradeEditor_->setText(tr("Grade the editor's program"));
+    gradeEditor_->setToolTip(tr("Runs the editor's program on a simulated machine of its own as the operator "
+                                "would and grades the part"));
+    gradeFile_->setText(tr("Grade a file…"));
+    csv_->setText(tr("Export CSV"));
+    tabs_->setTabText(0, tr("Task"));
+    tabs_->setTabText(1, tr("Attempt"));
+    tabs_->setTabText(2, tr("Class"));
+    attempts_->setHorizontalHeaderLabels({tr("Student"), tr("Exercise"), tr("Score"), tr("Result"), tr("Time")});
+    for (int r = 0; r < attempts_->rowCount() && r < static_cast<int>(attemptList_.size()); ++r) {
+        const Attempt& a = attemptList_[static_cast<std::size_t>(r)];
+        if (QTableWidgetItem* it = attempts_->item(r, 3))
+            it->setText(a.grade.passed ? tr("passed") : tr("not passed"));
+    }
+    showExercise();
+    showGrade();
+}
+
+void TrainingPane::showExercise() {
+    const training::Exercise* e = current();
+    if (!e) {
+        task_->clear();
+        part_->setDrawing({}, {});
+        return;
+    }
+    const training::Language l = uiLanguage();
+    const auto para = [](const std::string& s) {
+        return QStringLiteral("<p>") + q(s).toHtmlEscaped().replace(QLatin1Char('\n'), QLatin1Char(' ')) +
+               QStringLiteral("</p>");
+    };
+    QString html = QStringLiteral("<h3>") + q(e->title.in(l)).toHtmlEscaped() + QStringLiteral("</h3>");
+    html += para(e->task.in(l));
+    QStringList facts;
+    if (e->limits.cycleTimeS > 0)
+        facts << tr("Cycle time at most %1 s").arg(e->limits.cycleTimeS);
+    if (e->drawing.kind == training::Drawing::Kind::Contour)
+        facts << tr("The drawing: the half profile below, black; its tolerance limits dashed");
+    else if (e->drawing.kind == training::Drawing::Kind::Bore)
+        facts << tr("The drawing: bore Ø%1, %2/%3 mm")
+                     .arg(e->drawing.boreMm)
+                     .arg(e->drawing.boreTol.upperMm, 0, 'g', 4)
+                     .arg(e->drawing.boreTol.lowerMm, 0, 'g', 4);
+    else if (e->drawing.kind == training::Drawing::Kind::Reference)
+        facts << tr("The drawing: the part the reference program makes, ±%1 mm").arg(e->drawing.tolerance.upperMm);
+    for (const QString& f : facts)
+        html += QStringLiteral("<p><i>") + f.toHtmlEscaped() + QStringLiteral("</i></p>");
+    for (const training::Bilingual& h : e->hints)
+        html += QStringLiteral("<p>") + tr("Hint:").toHtmlEscaped() + QLatin1Char(' ') +
+                q(h.in(l)).toHtmlEscaped() + QStringLiteral("</p>");
+    task_->setHtml(html);
+    if (!last_ || last_->grade.exercise != e->id) {
+        std::vector<training::Shape> blank;
+        if (e->lathe()) {
+            const stock::Stock s(*e->blank);
+            for (std::size_t i = 0; i < s.polygons(); ++i) {
+                training::Shape sh;
+                for (const stock::PointZR& p : s.outer(i))
+                    sh.outer.push_back({p.z + e->blankZMm, p.r});
+                blank.push_back(std::move(sh));
+            }
+        }
+        training::DrawingShapes d;
+        if (e->drawing.kind == training::Drawing::Kind::Contour || e->drawing.kind == training::Drawing::Kind::Bore)
+            d = training::drawingShapes(*e);
+        part_->setDrawing(d, std::move(blank));
+    }
+}
+
+void TrainingPane::showGrade() {
+    deductions_->clear();
+    if (!last_ || !current() || last_->grade.exercise != current()->id) {
+        score_->setText(status_.isEmpty() ? tr("No attempt graded yet: write the program in the editor, "
+                                               "then «Grade the editor's program»")
+                                          : status_);
+        listing_->clear();
+        part_->setGrade(nullptr);
+        return;
+    }
+    const training::Language l = uiLanguage();
+    const training::Grade& g = last_->grade;
+    QString who = last_->student.isEmpty() ? last_->file : last_->student;
+    QString text = tr("%1: %2/100, %3").arg(who).arg(g.score).arg(g.passed ? tr("passed") : tr("not passed"));
+    if (g.cycleTimeS > 0)
+        text += QStringLiteral("; ") + tr("cycle time %1 s").arg(g.cycleTimeS, 0, 'f', 1);
+    if (g.limitS > 0)
+        text += QStringLiteral(" ") + tr("(limit %1 s)").arg(g.limitS);
+    score_->setText(text);
+    for (const training::Deduction& d : g.deductions) {
+        auto* item = new QListWidgetItem(QStringLiteral("−%1  %2").arg(points(d.points), q(training::render(d.text, l))),
+                                         deductions_);
+        item->setData(Qt::UserRole, d.program);
+        item->setData(Qt::UserRole + 1, d.line);
+        if (d.fails)
+            item->setForeground(QColor(0xb0, 0x10, 0x10));
+    }
+    for (const training::StepNote& n : g.notes)
+        new QListWidgetItem(tr("line %1 «%2»: %3").arg(n.line).arg(q(n.token), q(training::render(n.text, l))), deductions_);
+    if (g.deductions.empty())
+        new QListWidgetItem(tr("No deductions"), deductions_);
+    part_->setGrade(&g);
+}
+
+void TrainingPane::gradeEditor() {
+    const auto [text, name] = editorText_ ? editorText_() : std::pair<QString, QString>();
+    if (text.trimmed().isEmpty()) {
+        status_ = tr("The editor holds no program: open the student's file in the editor or use «Grade a file…»");
+        last_.reset();
+        showGrade();
+        tabs_->setCurrentIndex(1);
+        return;
+    }
+    grade(text, name.isEmpty() ? tr("the editor's program") : name);
+}
+
+void TrainingPane::gradeFile() {
+    const QString path = QFileDialog::getOpenFileName(this, tr("The student's program"), QString(),
+                                                      tr("K528 programs (*.k528 *.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        QMessageBox::warning(this, tr("Training"), tr("Cannot read %1: %2").arg(path, f.errorString()));
+        return;
+    }
+    if (student_->text().trimmed().isEmpty())
+        student_->setText(QFileInfo(path).completeBaseName());
+    grade(QString::fromUtf8(f.readAll()), QFileInfo(path).fileName());
+}
+
+bool TrainingPane::grade(const QString& text, const QString& file) {
+    const training::Exercise* e = current();
+    if (!e || watcher_)
+        return false;
+    Attempt a;
+    a.student = student_->text().trimmed();
+    a.exercise = q(e->id);
+    a.file = file;
+    auto* watcher = new QFutureWatcher<training::Grade>(this);
+    watcher_ = watcher;
+    gradeEditor_->setEnabled(false);
+    gradeFile_->setEnabled(false);
+    status_ = tr("Grading: the program runs on the simulated machine…");
+    last_.reset();
+    showGrade();
+    tabs_->setCurrentIndex(1);
+    listing_->setPlainText(text);
+    connect(watcher, &QFutureWatcher<training::Grade>::finished, this, [this, watcher, a]() mutable {
+        watcher_ = nullptr;
+        watcher->deleteLater();
+        gradeEditor_->setEnabled(true);
+        gradeFile_->setEnabled(true);
+        try {
+            a.grade = watcher->result();
+        } catch (const std::exception& err) {
+            status_ = tr("The attempt could not be graded: %1").arg(QString::fromUtf8(err.what()));
+            showGrade();
+            return;
+        }
+        a.when = QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+        status_.clear();
+        last_ = a;
+        attemptList_.push_back(a);
+        addAttemptRow(a);
+        showGrade();
+        emit graded(a.grade.score, a.grade.passed);
+    });
+    // Each attempt its own simulated machine and grader (grading is
+    // deterministic and touches nothing of the session's).
+    const std::string programText = text.toStdString(), fileName = file.toStdString(),
+                      student = a.student.toStdString();
+    watcher->setFuture(QtConcurrent::run([e, programText, fileName, student] {
+        const training::Grader grader(*e);
+        return grader.grade(programText, fileName, student);
+    }));
+    return true;
+}
+
+void TrainingPane::addAttemptRow(const Attempt& a) {
+    const int r = attempts_->rowCount();
+    attempts_->insertRow(r);
+    const QStringList cells{a.student.isEmpty() ? a.file : a.student, a.exercise, QString::number(a.grade.score),
+                            a.grade.passed ? tr("passed") : tr("not passed"), a.when};
+    for (int c = 0; c < cells.size(); ++c)
+        attempts_->setItem(r, c, new QTableWidgetItem(cells[c]));
+}
+
+QString TrainingPane::exportCsv(const QString& path) const {
+    const auto field = [](QString s) {
+        if (s.contains(QLatin1Char(',')) || s.contains(QLatin1Char('"')) || s.contains(QLatin1Char('\n')))
+            s = QLatin1Char('"') + s.replace(QLatin1String("\""), QLatin1String("\"\"")) + QLatin1Char('"');
+        return s;
+    };
+    const training::Language l = uiLanguage();
+    QString out = QStringLiteral("student,exercise,file,time,score,passed,status,cycle_time_s,deductions\n");
+    for (const Attempt& a : attemptList_) {
+        QStringList ded;
+        for (const training::Deduction& d : a.grade.deductions)
+            ded << QStringLiteral("-%1 %2").arg(points(d.points), q(training::render(d.text, l)));
+        out += QStringList{field(a.student), field(a.exercise), field(a.file), field(a.when),
+                           QString::number(a.grade.score), a.grade.passed ? QStringLiteral("yes") : QStringLiteral("no"),
+                           field(q(a.grade.status)), QString::number(a.grade.cycleTimeS, 'f', 3),
+                           field(ded.join(QStringLiteral("; ")))}
+                   .join(QLatin1Char(',')) +
+               QLatin1Char('\n');
+    }
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        return f.errorString();
+    f.write(out.toUtf8());
+    if (!f.commit())
+        return f.errorString();
+    return {};
+}
+
+void TrainingPane::exportDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), QStringLiteral("attempts.csv"),
+                                                      tr("CSV (*.csv)"));
+    if (path.isEmpty())
+        return;
+    const QString error = exportCsv(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Export CSV"), tr("Cannot write %1: %2").arg(path, error));
+}
+
+// --- the dock ------------------------------------------------------------------------
+
+namespace {
+
+class TrainingDock : public QDockWidget {
+public:
+    TrainingDock(QMainWindow* window, std::function<std::pair<QString, QString>()> editorText)
+        : QDockWidget(window) {
+        setObjectName("dock.training");
+        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        setWidget(new TrainingPane(std::move(editorText), this));
+        retranslate();
+    }
+
+protected:
+    void changeEvent(QEvent* e) override {
+        if (e->type() == QEvent::LanguageChange)
+            retranslate();
+        QDockWidget::changeEvent(e);
+    }
+
+private:
+    void retranslate() { setWindowTitle(TrainingPane::tr("Training course")); }
+};
+
+} // namespace
+
+QDockWidget* addTrainingDock(QMainWindow* window, std::function<std::pair<QString, QString>()> editorText) {
+    auto* dock = new TrainingDock(window, std::move(editorText));
+    window->addDockWidget(Qt::RightDockWidgetArea, dock);
+    dock->hide(); // shown from the View menu; the Training workspace places it
+    return dock;
+}
+
+} // namespace k528::studio

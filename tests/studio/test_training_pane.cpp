@@ -1,0 +1,198 @@
+// The training course's dock (app/studio/training): the editor's program
+// graded on a worker thread, the score and the deductions shown, a
+// deduction clicked naming its line (the editor goes there), the attempt in
+// the class's table and its CSV; the main window places the dock in the
+// Training workspace and its View menu toggles it.
+#include "editor/editor_tab.h"
+#include "editor/program_editor.h"
+#include "language.h"
+#include "main_window.h"
+#include "training/exercise.h"
+#include "training/training_pane.h"
+#include "workspace/workspaces.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QScreen>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace k528;
+using namespace k528::studio;
+
+namespace {
+
+QString deepStep() {
+    QString text = QString::fromStdString(training::findExercise("lathe-03-step")->reference);
+    text.replace(QStringLiteral("N14 #4 X30\n"), QStringLiteral("N14 #4 X29\n"));
+    return text;
+}
+
+int lineOf(const QString& text, const QString& what) {
+    return static_cast<int>(text.left(static_cast<int>(text.indexOf(what))).count(QLatin1Char('\n'))) + 1;
+}
+
+} // namespace
+
+class TestTrainingPane : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { setLanguage(QStringLiteral("en")); }
+
+    void theEditorsProgramIsGradedAndADeductionNamesItsLine() {
+        const QString text = deepStep();
+        TrainingPane pane([&] { return std::pair<QString, QString>(text, QStringLiteral("petrov.k528")); });
+        pane.resize(600, 700);
+        QVERIFY(pane.selectExercise(QStringLiteral("lathe-03-step")));
+        QVERIFY(!pane.selectExercise(QStringLiteral("no-such")));
+        QVERIFY(pane.exerciseChoice()->currentText().contains(QStringLiteral("A turned step")));
+        pane.studentName()->setText(QStringLiteral("Petrov"));
+        QSignalSpy graded(&pane, &TrainingPane::graded);
+        pane.gradeEditorButton()->click();
+        QVERIFY(pane.grading());
+        QVERIFY(!pane.gradeEditorButton()->isEnabled()); // one grading at a time
+        QVERIFY(graded.wait(60000));
+        QVERIFY(!pane.grading());
+        const int score = graded.front().at(0).toInt();
+        QVERIFY(score < 100 && score > 0);
+        QVERIFY2(pane.scoreLabel()->text().startsWith(QStringLiteral("Petrov: %1/100").arg(score)),
+                 qPrintable(pane.scoreLabel()->text()));
+        QVERIFY(pane.deductions()->count() >= 1);
+        QListWidgetItem* over = nullptr;
+        for (int i = 0; i < pane.deductions()->count(); ++i)
+            if (pane.deductions()->item(i)->text().contains(QStringLiteral("over-cut")))
+                over = pane.deductions()->item(i);
+        QVERIFY(over);
+        QVERIFY(over->text().contains(QStringLiteral("L1 N15")));
+        QSignalSpy line(&pane, &TrainingPane::lineActivated);
+        emit pane.deductions()->itemActivated(over);
+        QCOMPARE(line.size(), 1);
+        QCOMPARE(line.front().at(0).toInt(), 1);
+        QCOMPARE(line.front().at(1).toInt(), lineOf(text, QStringLiteral("N15 ")));
+        // The class: the attempt kept with the student's name; its CSV.
+        QCOMPARE(pane.attemptsTable()->rowCount(), 1);
+        QCOMPARE(pane.attemptsTable()->item(0, 0)->text(), QStringLiteral("Petrov"));
+        QCOMPARE(pane.attemptsTable()->item(0, 2)->text(), QString::number(score));
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("class.csv"));
+        QCOMPARE(pane.exportCsv(csv), QString());
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList rows = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), 2);
+        QVERIFY(rows[0].startsWith(QStringLiteral("student,exercise,file,time,score,passed")));
+        QVERIFY2(rows[1].startsWith(QStringLiteral("Petrov,lathe-03-step,petrov.k528,")), qPrintable(rows[1]));
+        QVERIFY(rows[1].contains(QStringLiteral(",%1,").arg(score)));
+        QVERIFY(rows[1].contains(QStringLiteral("L1 N15")));
+        // Another exercise chosen: the grade of this one is not shown over its drawing.
+        QVERIFY(pane.selectExercise(QStringLiteral("lathe-02-facing")));
+        QCOMPARE(pane.deductions()->count(), 0);
+        // A CSV that cannot be written says why and keeps nothing half-written.
+        QVERIFY(!pane.exportCsv(QStringLiteral("/nonexistent/dir/class.csv")).isEmpty());
+    }
+
+    void anEmptyEditorIsToldNotGraded() {
+        TrainingPane pane([] { return std::pair<QString, QString>(); });
+        QSignalSpy graded(&pane, &TrainingPane::graded);
+        pane.gradeEditorButton()->click();
+        QVERIFY(!pane.grading());
+        QCOMPARE(graded.size(), 0);
+        QVERIFY(pane.scoreLabel()->text().contains(QStringLiteral("no program")));
+    }
+
+    void theMainWindowPlacesTheDockInTheTrainingWorkspace() {
+        MainWindow w;
+        w.placeOnScreen();
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* dock = w.findChild<QDockWidget*>(QStringLiteral("dock.training"));
+        QVERIFY(dock);
+        QVERIFY(w.workspaces()->activate(QStringLiteral("training")));
+        QTRY_VERIFY(dock->isVisible() || !w.tabifiedDockWidgets(dock).isEmpty());
+        QVERIFY(!w.tabifiedDockWidgets(dock).isEmpty());
+        dock->raise();
+        QTRY_VERIFY(dock->isVisible());
+        QVERIFY(w.workspaces()->activate(QStringLiteral("operator")));
+        QTRY_VERIFY(!dock->isVisible());
+        // The editor's program graded from the dock; a deduction puts the editor on its line.
+        QVERIFY(w.workspaces()->activate(QStringLiteral("technologist")));
+        w.programEditor()->newFile();
+        const QString text = deepStep();
+        w.programEditor()->currentEditor()->setText(text);
+        auto* pane = dock->findChild<TrainingPane*>(); // inside the dock's scroll area
+        QVERIFY(pane);
+        QVERIFY(pane->selectExercise(QStringLiteral("lathe-03-step")));
+        QSignalSpy graded(pane, &TrainingPane::graded);
+        pane->gradeEditorButton()->click();
+        QVERIFY(graded.wait(60000));
+        QListWidgetItem* over = nullptr;
+        for (int i = 0; i < pane->deductions()->count(); ++i)
+            if (pane->deductions()->item(i)->text().contains(QStringLiteral("L1 N15")))
+                over = pane->deductions()->item(i);
+        QVERIFY(over);
+        emit pane->deductions()->itemActivated(over);
+        int lineNo = -1, index = -1;
+        w.programEditor()->currentEditor()->getCursorPosition(&lineNo, &index);
+        QCOMPARE(lineNo + 1, lineOf(text, QStringLiteral("N15 ")));
+    }
+
+    // The pane in the whole window, in the Training workspace, in each
+    // language, at the test's screen (1366x768, 1920x1080): every control
+    // inside the window, the attempt graded; a screenshot of each for a look
+    // (build/…/tests/screenshots/training-pane-<lang>-<screen>.png).
+    void theWholeWindowInEachLanguage() {
+        for (const QString& lang : {QStringLiteral("ru"), QStringLiteral("en")}) {
+            QVERIFY(setLanguage(lang));
+            MainWindow w;
+            w.placeOnScreen();
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate(QStringLiteral("training")));
+            auto* dock = w.findChild<QDockWidget*>(QStringLiteral("dock.training"));
+            dock->raise();
+            QTRY_VERIFY(dock->isVisible());
+            auto* pane = dock->findChild<TrainingPane*>();
+            QVERIFY(pane->selectExercise(QStringLiteral("lathe-03-step")));
+            const QString text = deepStep();
+            w.programEditor()->newFile();
+            w.programEditor()->currentEditor()->setText(text);
+            pane->studentName()->setText(lang == QLatin1String("ru") ? QStringLiteral("Петров") : QStringLiteral("Petrov"));
+            QSignalSpy graded(pane, &TrainingPane::graded);
+            pane->gradeEditorButton()->click();
+            QVERIFY(graded.wait(60000));
+            QApplication::processEvents();
+            const QRect inside = w.rect();
+            for (QWidget* c : {static_cast<QWidget*>(pane->exerciseChoice()), static_cast<QWidget*>(pane->studentName()),
+                               static_cast<QWidget*>(pane->gradeEditorButton()), static_cast<QWidget*>(pane->scoreLabel()),
+                               static_cast<QWidget*>(pane->deductions())}) {
+                QVERIFY(c->isVisible());
+                const QRect r(c->mapTo(&w, QPoint(0, 0)), c->size());
+                QVERIFY2(inside.contains(r), qPrintable(c->objectName()));
+                QVERIFY2(c->width() > 40 && c->height() > 10, qPrintable(c->objectName()));
+            }
+            const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
+            QDir().mkpath(dir);
+            const QSize screen = w.screen()->size();
+            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-attempt.png")
+                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            pane->tabs()->setCurrentIndex(0);
+            QApplication::processEvents();
+            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-task.png")
+                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+        }
+        QVERIFY(setLanguage(QStringLiteral("en")));
+    }
+};
+
+QTEST_MAIN(TestTrainingPane)
+#include "test_training_pane.moc"
