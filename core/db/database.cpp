@@ -234,7 +234,7 @@ bool Database::hasMachine(std::string_view name) const {
 MachineProfile Database::loadMachine(std::string_view name) const {
     Store& s = *d_->store;
     ReadSnapshot tx(s);
-    return s.loadCurrent(requireMachine(s, name));
+    return requireLoaded(s, name).profile;
 }
 
 MachineProfile Database::loadMachine(std::string_view name, int revision) const {
@@ -260,9 +260,10 @@ SaveResult Database::saveMachine(std::string_view name, const MachineProfile& p,
     Store& s = *d_->store;
     return asRole(s, "changing a machine", kTechnologist, [&] {
         WriteTransaction tx(s);
-        const auto row = requireMachine(s, name);
+        const LoadedMachine loaded = requireLoaded(s, name);
+        const MachineRow& row = loaded.row;
         requireRevision(row, options, true);
-        const MachineProfile old = s.loadCurrent(row);
+        const MachineProfile& old = loaded.profile;
         SaveResult r = write(s, d_->clock, row, &old, p, options);
         tx.commit();
         return r;
@@ -275,9 +276,10 @@ SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOpt
     Store& s = *d_->store;
     return asRole(s, "changing a machine", kTechnologist, [&] {
         WriteTransaction tx(s);
-        const auto row = requireMachine(s, name);
+        const LoadedMachine loaded = requireLoaded(s, name);
+        const MachineRow& row = loaded.row;
         requireRevision(row, options, false);
-        const MachineProfile old = s.loadCurrent(row);
+        const MachineProfile& old = loaded.profile;
         MachineProfile neu = old;
         try {
             edit.applyTo(neu);
@@ -320,14 +322,20 @@ std::vector<RevisionInfo> Database::revisions(std::string_view name) const {
 std::vector<HistoryEntry> Database::history(std::string_view name, std::optional<std::string> key,
                                             int limitRevisions) const {
     Store& s = *d_->store;
-    ReadSnapshot tx(s);
-    const auto row = requireMachine(s, name);
-    const int from = limitRevisions > 0 ? row.info.revision - limitRevisions + 1 : 1;
+    // Read in one snapshot by the store (PostgreSQL: one statement, no
+    // transaction around it).
+    auto changes = s.historyNamed(name, limitRevisions, key);
+    if (!changes) { // no such machine: requireMachine says which there are
+        ReadSnapshot tx(s);
+        const auto row = requireMachine(s, name);
+        changes = s.history(row.id,
+                            limitRevisions > 0 ? row.info.revision - limitRevisions + 1 : 1, key);
+    }
     std::vector<HistoryEntry> out;
-    for (ChangeRow& c : s.history(row.id, from, key)) {
+    for (ChangeRow& c : *changes) {
         const auto section = revision::sectionFromName(c.section);
         if (!section)
-            throw Error(ErrorKind::Corrupt, "machine " + row.info.name +
+            throw Error(ErrorKind::Corrupt, "machine " + std::string(name) +
                                                 ": history has an unknown section " + c.section);
         out.push_back(HistoryEntry{c.revision, std::move(c.author), std::move(c.at),
                                    Change{*section, std::move(c.key), std::move(c.label),

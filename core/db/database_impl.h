@@ -63,4 +63,12 @@ inline MachineRow requireMachine(Store& s, std::string_view name) {
     return *r;
 }
 
+// The machine's row and current state (one round trip on PostgreSQL).
+inline LoadedMachine requireLoaded(Store& s, std::string_view name) {
+    if (auto loaded = s.loadNamed(name))
+        return std::move(*loaded);
+    const MachineRow row = requireMachine(s, name); // throws: no such machine
+    return LoadedMachine{row, s.loadCurrent(row)};
+}
+
 } // namespace k528::db

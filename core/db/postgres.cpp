@@ -103,15 +103,26 @@ void PgConnection::fail(PGresult* r, std::string_view what) const {
     throw Error(kind, text);
 }
 
-bool PgConnection::inTransaction() const {
+bool PgConnection::inTransaction() {
+    if (!begin_.empty() || !deferred_.empty())
+        return true;
+    if (unread_ > 0) // the last thing sent was a read-only COMMIT
+        return false;
     const auto s = PQtransactionStatus(conn_);
     return s == PQTRANS_INTRANS || s == PQTRANS_INERROR || s == PQTRANS_ACTIVE;
+}
+
+bool PgConnection::lost() const {
+    return PQstatus(conn_) != CONNECTION_OK;
 }
 
 bool PgConnection::reconnectIfLost() {
     if (PQstatus(conn_) == CONNECTION_OK)
         return true;
+    drain();
     cache_.clear(); // the session's prepared statements went with it
+    begin_.clear();
+    deferred_.clear();
     PQreset(conn_);
     return PQstatus(conn_) == CONNECTION_OK;
 }
@@ -119,6 +130,8 @@ bool PgConnection::reconnectIfLost() {
 PgQuery& PgConnection::operator()(std::string_view text) {
     auto it = cache_.find(text);
     if (it == cache_.end()) {
+        flush();
+        drain();
         int params = 0;
         const std::string converted = postgresParameters(text, params);
         std::string name = "k528_" + std::to_string(++next_);
@@ -135,7 +148,23 @@ PgQuery& PgConnection::operator()(std::string_view text) {
 }
 
 void PgConnection::exec(std::string_view text) {
-    const std::string s(text);
+    if (!deferred_.empty() && text.find(';') == std::string_view::npos) {
+        const std::string statement(text); // with the writes sent before: one round trip
+        pipeline({}, &statement);
+        return;
+    }
+    flush();
+    drain();
+    std::string s(text);
+    if (!begin_.empty()) {
+        // A transaction that ran nothing ends without a word to the server.
+        if (text == "COMMIT" || text == "ROLLBACK") {
+            begin_.clear();
+            return;
+        }
+        s = begin_ + "; " + s; // one round trip, as one simple query
+        begin_.clear();
+    }
     PGresult* r = PQexec(conn_, s.c_str());
     const auto st = r ? PQresultStatus(r) : PGRES_FATAL_ERROR;
     if (st != PGRES_COMMAND_OK && st != PGRES_TUPLES_OK)
@@ -143,7 +172,187 @@ void PgConnection::exec(std::string_view text) {
     PQclear(r);
 }
 
+void PgConnection::beginWithNext(std::string begin) {
+    begin_ = std::move(begin);
+}
+
+void PgConnection::commitReadOnly() noexcept {
+    if (!begin_.empty()) { // nothing was read: no transaction was opened
+        begin_.clear();
+        return;
+    }
+    drain();
+    if (PQtransactionStatus(conn_) == PQTRANS_IDLE)
+        return;
+    if (PQenterPipelineMode(conn_) == 1 &&
+        PQsendQueryParams(conn_, "COMMIT", 0, nullptr, nullptr, nullptr, nullptr, 0) == 1 &&
+        PQpipelineSync(conn_) == 1) {
+        ++unread_; // its answer is read before the next one's
+        return;
+    }
+    drain(); // could not be sent: the connection is lost, or the pipeline left as it is
+    if (PQpipelineStatus(conn_) == PQ_PIPELINE_OFF && PQstatus(conn_) == CONNECTION_OK)
+        PQclear(PQexec(conn_, "COMMIT"));
+}
+
+void PgConnection::drain() noexcept {
+    if (PQpipelineStatus(conn_) == PQ_PIPELINE_OFF) {
+        unread_ = 0;
+        return;
+    }
+    readUnread();
+    PQexitPipelineMode(conn_);
+}
+
+void PgConnection::readUnread() noexcept {
+    // Each pipeline's results up to its synchronisation point; two NULLs in
+    // a row: nothing more will come (the connection is lost).
+    int nulls = 0;
+    while (unread_ > 0) {
+        PGresult* r = PQgetResult(conn_);
+        if (!r) {
+            if (++nulls >= 2)
+                break;
+            continue;
+        }
+        nulls = 0;
+        if (PQresultStatus(r) == PGRES_PIPELINE_SYNC)
+            --unread_;
+        PQclear(r);
+    }
+    unread_ = 0;
+}
+
+void PgConnection::runTogether(std::span<Query* const> queries) {
+    std::vector<PgQuery*> mine;
+    mine.reserve(queries.size());
+    for (Query* q : queries)
+        mine.push_back(static_cast<PgQuery*>(q)); // this connection's queries
+    run(mine);
+}
+
+void PgConnection::run(std::span<PgQuery* const> queries) {
+    if (queries.empty())
+        return;
+    if (unread_ == 0 && deferred_.empty() && begin_.empty() && queries.size() == 1) {
+        PgQuery& q = *queries[0];
+        std::vector<const char*> values(q.params_.size());
+        for (std::size_t i = 0; i < q.params_.size(); ++i)
+            values[i] = q.params_[i] ? q.params_[i]->c_str() : nullptr;
+        PGresult* r = PQexecPrepared(conn_, q.name_.c_str(), static_cast<int>(values.size()),
+                                     values.data(), nullptr, nullptr, 0);
+        const auto st = r ? PQresultStatus(r) : PGRES_FATAL_ERROR;
+        if (st != PGRES_TUPLES_OK && st != PGRES_COMMAND_OK)
+            fail(r, q.what());
+        q.adopt(r);
+        return;
+    }
+    pipeline(queries, nullptr);
+}
+
+void PgConnection::pipeline(std::span<PgQuery* const> queries, const std::string* statement) {
+    // One pipeline: the writes sent before without waiting, the pending
+    // BEGIN, each query, `statement`, one synchronisation point; after a
+    // read-only COMMIT not waited for, in the same pipeline as it (its
+    // answer comes first).
+    if (PQpipelineStatus(conn_) == PQ_PIPELINE_OFF && PQenterPipelineMode(conn_) != 1)
+        fail(nullptr, "entering pipeline mode");
+    struct Target {
+        PgQuery* query; // nullptr: a statement whose result is only checked
+        std::string what;
+    };
+    std::vector<Target> targets;
+    targets.reserve(deferred_.size() + queries.size() + 2);
+    for (std::string& w : deferred_)
+        targets.push_back(Target{nullptr, std::move(w)});
+    deferred_.clear();
+    bool sent = true;
+    const auto sendStatement = [&](const std::string& text) {
+        sent = sent && PQsendQueryParams(conn_, text.c_str(), 0, nullptr, nullptr, nullptr,
+                                         nullptr, 0) == 1;
+        if (sent)
+            targets.push_back(Target{nullptr, "running \"" + text.substr(0, 80) + "\""});
+    };
+    if (!begin_.empty()) {
+        sendStatement(begin_);
+        begin_.clear();
+    }
+    for (PgQuery* q : queries) {
+        sent = sent && q->send();
+        if (sent)
+            targets.push_back(Target{q, {}});
+    }
+    if (statement)
+        sendStatement(*statement);
+    if (PQpipelineSync(conn_) != 1)
+        sent = false;
+    readUnread();
+    // The results in the order sent; after a failure the server skips the
+    // rest of the pipeline (PGRES_PIPELINE_ABORTED).
+    PGresult* error = nullptr;
+    std::string what;
+    std::size_t index = 0;
+    int nulls = 0;
+    for (;;) {
+        PGresult* r = PQgetResult(conn_);
+        if (!r) {
+            if (++nulls >= 2)
+                break;
+            continue;
+        }
+        nulls = 0;
+        const auto st = PQresultStatus(r);
+        if (st == PGRES_PIPELINE_SYNC) {
+            PQclear(r);
+            break;
+        }
+        Target* t = index < targets.size() ? &targets[index] : nullptr;
+        ++index;
+        if (st == PGRES_TUPLES_OK || st == PGRES_COMMAND_OK) {
+            if (t && t->query)
+                t->query->adopt(r);
+            else
+                PQclear(r);
+        } else if (!error && st != PGRES_PIPELINE_ABORTED) {
+            error = r;
+            what = !t ? "running queries together" : t->query ? t->query->what() : t->what;
+        } else {
+            PQclear(r);
+        }
+    }
+    PQexitPipelineMode(conn_);
+    if (error)
+        fail(error, what);
+    if (!sent || index < targets.size())
+        fail(nullptr, "sending " + std::to_string(targets.size()) + " statements together");
+}
+
+void PgConnection::runLater(Query& query) {
+    auto& q = static_cast<PgQuery&>(query); // this connection's query
+    // Only inside a transaction that has begun (its errors then surface by
+    // the COMMIT at the latest, and undo everything).
+    const bool inWrite = begin_.empty() && unread_ == 0 &&
+                         (!deferred_.empty() || PQtransactionStatus(conn_) == PQTRANS_INTRANS);
+    if (!inWrite || (PQpipelineStatus(conn_) == PQ_PIPELINE_OFF && PQenterPipelineMode(conn_) != 1)) {
+        q.run();
+        return;
+    }
+    if (!q.send()) {
+        pipeline({}, nullptr); // reports what failed
+        fail(nullptr, q.what());
+    }
+    deferred_.push_back(q.what());
+    q.reset();
+}
+
+void PgConnection::flush() {
+    if (!deferred_.empty())
+        pipeline({}, nullptr);
+}
+
 std::vector<PgConnection::Notification> PgConnection::notifications() {
+    flush();
+    drain();
     std::vector<Notification> out;
     // One round trip first: a notice of a commit that returned to its
     // session before this call is in its way to us; the server sends it
@@ -185,24 +394,36 @@ Query& PgQuery::bindNull(int i) {
     return *this;
 }
 
-void PgQuery::execute() {
+bool PgQuery::send() {
     std::vector<const char*> values(params_.size());
     for (std::size_t i = 0; i < params_.size(); ++i)
         values[i] = params_[i] ? params_[i]->c_str() : nullptr;
     PQclear(result_);
-    result_ = PQexecPrepared(c_.handle(), name_.c_str(), static_cast<int>(values.size()),
-                             values.data(), nullptr, nullptr, 0);
-    const auto st = result_ ? PQresultStatus(result_) : PGRES_FATAL_ERROR;
-    if (st != PGRES_TUPLES_OK && st != PGRES_COMMAND_OK) {
-        PGresult* r = result_;
-        result_ = nullptr;
-        executed_ = false;
-        c_.fail(r, "running \"" + text_.substr(0, 80) + (text_.size() > 80 ? "…" : "") + "\"");
-    }
+    result_ = nullptr;
+    executed_ = false;
+    return PQsendQueryPrepared(c_.handle(), name_.c_str(), static_cast<int>(values.size()),
+                               values.data(), nullptr, nullptr, 0) == 1;
+}
+
+void PgQuery::adopt(PGresult* r) {
+    PQclear(result_);
+    result_ = r;
     const char* n = PQcmdTuples(result_);
     changes_ = n && *n ? std::strtoll(n, nullptr, 10) : 0;
     executed_ = true;
     row_ = -1;
+}
+
+std::string PgQuery::what() const {
+    return "running \"" + text_.substr(0, 80) + (text_.size() > 80 ? "…" : "") + "\"";
+}
+
+void PgQuery::execute() {
+    PQclear(result_);
+    result_ = nullptr;
+    executed_ = false;
+    PgQuery* self = this;
+    c_.run(std::span(&self, 1));
 }
 
 bool PgQuery::step() {

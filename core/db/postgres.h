@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,13 @@ public:
     Value value(int col) const override;
 
 private:
+    friend class PgConnection;
     void execute();
+    // Sends the execution into the connection's pipeline (false: not sent).
+    bool send();
+    // Takes `r`, the successful result of its execution.
+    void adopt(pg_result* r);
+    std::string what() const;
     PgConnection& c_;
     std::string name_, text_;
     std::vector<std::optional<std::string>> params_;
@@ -64,11 +71,24 @@ public:
     Dialect dialect() const override { return Dialect::Postgres; }
     PgQuery& operator()(std::string_view text) override;
     void exec(std::string_view text) override;
+    void runTogether(std::span<Query* const> queries) override;
+    void runLater(Query& query) override;
+
+    // Opens a transaction with `begin` (a BEGIN statement), sent with the
+    // next statement in the same round trip; when none follows before the
+    // end (commitReadOnly, or exec of COMMIT or ROLLBACK), nothing is sent.
+    void beginWithNext(std::string begin);
+    // Ends a read-only transaction: its COMMIT is sent, and its answer read
+    // when the connection is next used (a read-only COMMIT has nothing to
+    // report).
+    void commitReadOnly() noexcept;
+    // Whether the connection to the server is lost.
+    bool lost() const;
 
     pg_conn* handle() const { return conn_; }
     const std::string& where() const { return where_; }
     // Whether a transaction is open (or failed and not yet rolled back).
-    bool inTransaction() const;
+    bool inTransaction();
     // A lost connection is made again (its prepared queries forgotten);
     // false when the server still does not answer.
     bool reconnectIfLost();
@@ -84,8 +104,24 @@ public:
     [[noreturn]] void fail(pg_result* r, std::string_view what) const;
 
 private:
+    friend class PgQuery;
+    // Runs `queries` (with the pending BEGIN first) and gives each its result.
+    void run(std::span<PgQuery* const> queries);
+    // One pipeline: the deferred writes, the pending BEGIN, `queries`, then
+    // `statement` (one without parameters; nullptr: none). Throws the first error.
+    void pipeline(std::span<PgQuery* const> queries, const std::string* statement);
+    // Reads the results of the deferred writes (throws the first error).
+    void flush();
+    // Reads the answers not waited for (commitReadOnly) and leaves pipeline mode.
+    void drain() noexcept;
+    // Reads the answers not waited for, staying in pipeline mode.
+    void readUnread() noexcept;
+
     pg_conn* conn_ = nullptr;
     std::string where_;
+    std::string begin_; // the BEGIN to send with the next statement
+    int unread_ = 0;    // pipelines sent whose answers are not read yet
+    std::vector<std::string> deferred_; // writes sent, not synchronised: what each was
     int next_ = 0;
     std::map<std::string, std::unique_ptr<PgQuery>, std::less<>> cache_;
 };

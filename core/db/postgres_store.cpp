@@ -159,7 +159,11 @@ std::string PostgresStore::checkIntegrity() {
 }
 
 void PostgresStore::reconnect() {
+    // The session's settings and LISTEN are made again only on a new session.
+    const bool wasLost = conn_->lost();
     if (conn_->reconnectIfLost()) {
+        if (!wasLost)
+            return;
         if (watching_) {
             watching_ = false;
             listen();
@@ -175,22 +179,19 @@ bool PostgresStore::beginRead() {
     if (conn_->inTransaction())
         return false;
     reconnect();
-    conn_->exec("BEGIN ISOLATION LEVEL REPEATABLE READ, READ ONLY");
+    conn_->beginWithNext("BEGIN ISOLATION LEVEL REPEATABLE READ, READ ONLY");
     return true;
 }
 
 void PostgresStore::endRead() noexcept {
-    try {
-        conn_->exec("COMMIT");
-    } catch (...) {
-    }
+    conn_->commitReadOnly();
 }
 
 void PostgresStore::beginWrite() {
     if (readOnly_ != ReadOnlyReason::None)
         throw ReadOnlyError(path_, readOnly_);
     reconnect();
-    conn_->exec("BEGIN");
+    conn_->beginWithNext("BEGIN"); // sent with the lock's query
     try {
         auto& q = query("SELECT pg_advisory_xact_lock(?1)");
         q.bind(1, kWriteLock);
@@ -220,7 +221,7 @@ void PostgresStore::rollback() noexcept {
 void PostgresStore::notifyChange(std::string_view machine, int revision) {
     auto& q = query("SELECT pg_notify(?1, ?2)");
     q.bind(1, kRevisionChannel).bind(2, std::string(machine) + " " + std::to_string(revision));
-    q.run();
+    conn_->runLater(q);
 }
 
 void PostgresStore::listen() {

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -75,6 +76,16 @@ public:
     virtual Query& operator()(std::string_view text) = 0;
     // Runs SQL without results (may hold several statements).
     virtual void exec(std::string_view text) = 0;
+    // Runs the bound `queries` now, all in one round trip where the server
+    // is across a network (PostgreSQL: one pipeline); their rows are then
+    // read with step() as usual. For reads that do not depend on each other.
+    // SQLite: nothing to do (each query runs at its first step).
+    virtual void runTogether(std::span<Query* const> /*queries*/) {}
+    // Runs `query` (bound; a write without rows) inside an open transaction;
+    // PostgreSQL sends it and reads its result with the transaction's next
+    // query or its COMMIT (a failure is thrown there, and the transaction
+    // is rolled back as with any failure). SQLite: run() now.
+    virtual void runLater(Query& query) { query.run(); }
     // The single integer a query returns.
     std::int64_t queryInt(std::string_view text);
 };

@@ -17,7 +17,7 @@ void SqlStore::insertAudit(const AuditEntry& e) {
     auto& q = query("INSERT INTO audit (at, author, action, machine, revision, detail) "
                     "VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
     q.bind(1, e.at).bind(2, e.author).bind(3, e.action).bind(4, e.machine).bind(5, e.revision).bind(6, e.detail);
-    q.run();
+    connection().runLater(q);
 }
 
 std::vector<AuditEntry> SqlStore::audit(int limit, std::string_view machine) {

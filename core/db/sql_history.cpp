@@ -3,6 +3,8 @@
 #include "db/sha256.h"
 #include "db/sql_store.h"
 
+#include <limits>
+
 namespace k528::db {
 
 void SqlStore::insertRevision(std::int64_t id, int revision, const std::string& author,
@@ -11,14 +13,14 @@ void SqlStore::insertRevision(std::int64_t id, int revision, const std::string& 
     auto& q = query("INSERT INTO revisions (machine_id, revision, author, at, summary, "
                   "settings_order) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
     q.bind(1, id).bind(2, revision).bind(3, author).bind(4, at).bind(5, summary).bind(6, settingsOrder);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::insertProgramVersion(std::int64_t id, const ProgramRow& v) {
     auto& q = query("INSERT INTO program_revisions (machine_id, number, revision, text, "
                   "sha256) VALUES (?1, ?2, ?3, ?4, ?5)");
     q.bind(1, id).bind(2, v.number).bind(3, v.revision).bind(4, v.text).bind(5, v.sha256);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) {
@@ -32,7 +34,7 @@ void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profil
         .bind(6, c.label)
         .bind(7, c.before)
         .bind(8, c.after);
-    q.run();
+    connection().runLater(q);
 }
 
 std::vector<ChangeRow> SqlStore::changesUpTo(std::int64_t id, int revision) {
@@ -84,25 +86,85 @@ std::vector<RevisionInfo> SqlStore::revisions(std::int64_t id) {
     return out;
 }
 
-std::vector<ChangeRow> SqlStore::history(std::int64_t id, int fromRevision,
-                                         const std::optional<std::string>& key) {
-    // Two texts rather than "(?3 IS NULL OR c.key = ?3)": each backend then
-    // plans one of them with the index on (machine, key, revision).
-    static constexpr std::string_view kSelect =
-        "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
-        "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision "
-        "WHERE c.machine_id = ?1 AND c.revision >= ?2";
-    static const std::string kAll = std::string(kSelect) + " ORDER BY c.revision DESC, c.seq";
-    static const std::string kOfKey =
-        std::string(kSelect) + " AND c.key = ?3 ORDER BY c.revision DESC, c.seq";
-    auto& q = query(key ? kOfKey : kAll);
-    q.bind(1, id).bind(2, fromRevision);
-    if (key)
-        q.bind(3, *key);
+namespace {
+
+// The changes with their revisions' author and time; the machine by its id
+// (?1, from revision ?2 on) or by its name (?1, of its last ?2 revisions).
+// Two texts each rather than "(?3 IS NULL OR c.key = ?3)": each backend
+// then plans one of them with the index on (machine, key, revision).
+constexpr std::string_view kHistorySelect =
+    "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
+    "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision ";
+constexpr std::string_view kById = "WHERE c.machine_id = ?1 AND c.revision >= ?2";
+constexpr std::string_view kOfKey = " AND c.key = ?3";
+constexpr std::string_view kOrder = " ORDER BY c.revision DESC, c.seq";
+
+std::string historyText(bool ofKey) {
+    return std::string(kHistorySelect) + std::string(kById) +
+           (ofKey ? std::string(kOfKey) : std::string()) + std::string(kOrder);
+}
+
+// By the machine's name (?1), its last ?2 revisions: one statement (one
+// snapshot, no transaction needed) with a row of NULLs when the machine has
+// no such changes, none when there is no such machine.
+std::string historyByNameText(bool ofKey) {
+    return "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
+           "machines m LEFT JOIN (changes c JOIN revisions r ON r.machine_id = c.machine_id AND "
+           "r.revision = c.revision) ON c.machine_id = m.id AND c.revision > m.revision - ?2" +
+           (ofKey ? std::string(kOfKey) : std::string()) + " WHERE m.name = ?1" +
+           std::string(kOrder);
+}
+
+std::vector<ChangeRow> historyRows(sql::Query& q) {
     std::vector<ChangeRow> out;
     while (q.step())
         out.push_back(ChangeRow{q.i32(0), q.text(1), q.text(2), q.text(3), q.text(4), q.text(5),
                                 q.optText(6), q.optText(7)});
+    q.reset();
+    return out;
+}
+
+} // namespace
+
+std::vector<ChangeRow> SqlStore::history(std::int64_t id, int fromRevision,
+                                         const std::optional<std::string>& key) {
+    static const std::string kAll = historyText(false);
+    static const std::string kKey = historyText(true);
+    auto& q = query(key ? kKey : kAll);
+    q.bind(1, id).bind(2, fromRevision);
+    if (key)
+        q.bind(3, *key);
+    return historyRows(q);
+}
+
+std::optional<std::vector<ChangeRow>> SqlStore::historyNamed(std::string_view name,
+                                                             int limitRevisions,
+                                                             const std::optional<std::string>& key) {
+    if (connection().dialect() == sql::Dialect::Sqlite) { // no round trips to save
+        ReadSnapshot tx(*this);                            // two statements, one snapshot
+        const auto row = findMachine(name);
+        if (!row)
+            return std::nullopt;
+        return history(row->id,
+                       limitRevisions > 0 ? row->info.revision - limitRevisions + 1 : 1, key);
+    }
+    // The machine's row and its changes in one statement.
+    static const std::string kAll = historyByNameText(false);
+    static const std::string kKey = historyByNameText(true);
+    auto& q = query(key ? kKey : kAll);
+    q.bind(1, name).bind(2, limitRevisions > 0 ? std::int64_t{limitRevisions}
+                                               : std::int64_t{std::numeric_limits<int>::max()});
+    if (key)
+        q.bind(3, *key);
+    if (!q.step())
+        return std::nullopt;
+    std::vector<ChangeRow> out;
+    if (!q.isNull(0))
+        do
+            out.push_back(ChangeRow{q.i32(0), q.text(1), q.text(2), q.text(3), q.text(4),
+                                    q.text(5), q.optText(6), q.optText(7)});
+        while (q.step());
+    q.reset();
     return out;
 }
 

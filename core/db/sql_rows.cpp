@@ -27,33 +27,100 @@ std::vector<MachineInfo> SqlStore::machines() {
     return out;
 }
 
-std::optional<MachineRow> SqlStore::findMachine(std::string_view name) {
-    auto& q = query("SELECT id, name, title, revision, created_at, changed_at, changed_by "
-                  "FROM machines WHERE name = ?1");
-    q.bind(1, name);
-    if (!q.step())
-        return std::nullopt;
+namespace {
+
+constexpr std::string_view kFindMachine =
+    "SELECT id, name, title, revision, created_at, changed_at, changed_by FROM machines WHERE "
+    "name = ?1";
+
+MachineRow machineRow(const sql::Query& q) {
     MachineRow r;
     r.id = q.i64(0);
     r.info = MachineInfo{q.text(1), q.text(2), q.i32(3), q.text(4), q.text(5), q.text(6)};
+    return r;
+}
+
+// The tables of a machine's current state, in the order readCurrent reads
+// them: the machine by its id (?1), or by its name (?1) in one statement
+// with each table where the machine's row is asked for in the same round trip.
+constexpr std::string_view kCurrentById[] = {
+    "SELECT number, value FROM c_values WHERE machine_id = ?1",
+    "SELECT number, value FROM r_values WHERE machine_id = ?1",
+    "SELECT number, text, sha256, revision FROM programs WHERE machine_id = ?1",
+    "SELECT number, text FROM messages WHERE machine_id = ?1",
+    "SELECT grp, number, text FROM plc_messages WHERE machine_id = ?1",
+    "SELECT key, value FROM settings WHERE machine_id = ?1 ORDER BY position",
+};
+#define K528_MACHINE_NAMED "(SELECT id FROM machines WHERE name = ?1)"
+constexpr std::string_view kCurrentByName[] = {
+    "SELECT number, value FROM c_values WHERE machine_id = " K528_MACHINE_NAMED,
+    "SELECT number, value FROM r_values WHERE machine_id = " K528_MACHINE_NAMED,
+    "SELECT number, text, sha256, revision FROM programs WHERE machine_id = " K528_MACHINE_NAMED,
+    "SELECT number, text FROM messages WHERE machine_id = " K528_MACHINE_NAMED,
+    "SELECT grp, number, text FROM plc_messages WHERE machine_id = " K528_MACHINE_NAMED,
+    "SELECT key, value FROM settings WHERE machine_id = " K528_MACHINE_NAMED " ORDER BY position",
+};
+#undef K528_MACHINE_NAMED
+static_assert(std::size(kCurrentById) == std::size(kCurrentByName));
+constexpr std::size_t kCurrentTables = std::size(kCurrentById);
+
+} // namespace
+
+std::optional<MachineRow> SqlStore::findMachine(std::string_view name) {
+    auto& q = query(kFindMachine);
+    q.bind(1, name);
+    if (!q.step())
+        return std::nullopt;
+    MachineRow r = machineRow(q);
     q.reset();
     return r;
 }
 
 MachineProfile SqlStore::loadCurrent(const MachineRow& row) {
+    sql::Query* queries[kCurrentTables];
+    for (std::size_t i = 0; i < kCurrentTables; ++i)
+        queries[i] = &query(kCurrentById[i]).bind(1, row.id);
+    connection().runTogether(queries); // one round trip on PostgreSQL
+    return readCurrent(row, queries);
+}
+
+std::optional<LoadedMachine> SqlStore::loadNamed(std::string_view name) {
+    if (connection().dialect() == sql::Dialect::Sqlite) { // no round trips to save
+        auto row = findMachine(name);
+        if (!row)
+            return std::nullopt;
+        MachineProfile p = loadCurrent(*row);
+        return LoadedMachine{std::move(*row), std::move(p)};
+    }
+    // The machine's row and its tables, asked for in one round trip.
+    sql::Query* queries[1 + kCurrentTables];
+    queries[0] = &query(kFindMachine).bind(1, name);
+    for (std::size_t i = 0; i < kCurrentTables; ++i)
+        queries[1 + i] = &query(kCurrentByName[i]).bind(1, name);
+    connection().runTogether(queries);
+    sql::Query& find = *queries[0];
+    if (!find.step())
+        return std::nullopt;
+    MachineRow row = machineRow(find);
+    find.reset();
+    MachineProfile p = readCurrent(row, std::span(queries).subspan(1));
+    return LoadedMachine{std::move(row), std::move(p)};
+}
+
+MachineProfile SqlStore::readCurrent(const MachineRow& row, std::span<sql::Query* const> queries) {
     MachineProfile p;
     p.name = row.info.name;
     p.title = row.info.title;
     const std::string at = where(row);
-    // Each row of the machine's rows of one table.
-    const auto rows = [&](const char* sql, const auto& take) {
-        auto& q = query(sql);
-        q.bind(1, row.id);
+    // Each row of table i (of kCurrentById).
+    const auto rows = [&](std::size_t i, const auto& take) {
+        sql::Query& q = *queries[i];
         while (q.step())
             take(q);
+        q.reset(); // its rows (the programs' texts) are not kept
     };
     int count = 0;
-    rows("SELECT number, value FROM c_values WHERE machine_id = ?1", [&](const sql::Query& q) {
+    rows(0, [&](const sql::Query& q) {
         const int n = q.i32(0);
         if (n < 1 || n > cat::kCParamCount)
             throw Error(ErrorKind::Corrupt,
@@ -64,9 +131,9 @@ MachineProfile SqlStore::loadCurrent(const MachineRow& row) {
     if (count != cat::kCParamCount)
         throw Error(ErrorKind::Corrupt,
                     at + ": " + std::to_string(count) + " of the 152 C-parameter values are stored");
-    rows("SELECT number, value FROM r_values WHERE machine_id = ?1",
+    rows(1,
          [&](const sql::Query& q) { p.r[q.i32(0)] = q.i64(1); });
-    rows("SELECT number, text, sha256, revision FROM programs WHERE machine_id = ?1",
+    rows(2,
          [&](const sql::Query& q) {
              std::string text = q.text(1);
              if (sha256Hex(text) != q.text(2))
@@ -77,16 +144,16 @@ MachineProfile SqlStore::loadCurrent(const MachineRow& row) {
                                  "outside K528 Studio)");
              p.programs[q.i32(0)] = std::move(text);
          });
-    rows("SELECT number, text FROM messages WHERE machine_id = ?1",
+    rows(3,
          [&](const sql::Query& q) { p.messages[q.i32(0)] = q.text(1); });
-    rows("SELECT grp, number, text FROM plc_messages WHERE machine_id = ?1", [&](const sql::Query& q) {
+    rows(4, [&](const sql::Query& q) {
         const std::string g = q.text(0);
         const auto group = revision::plcGroupOf(g.empty() ? '?' : g[0]);
         if (!group)
             throw Error(ErrorKind::Corrupt, at + ": unknown PLC message group " + g);
         p.plcTexts(*group)[q.i32(1)] = q.text(2);
     });
-    rows("SELECT key, value FROM settings WHERE machine_id = ?1 ORDER BY position",
+    rows(5,
          [&](const sql::Query& q) {
              try {
                  p.simulation.set(q.text(0), q.text(1));
@@ -114,13 +181,13 @@ void SqlStore::updateMachine(std::int64_t id, const MachineProfile& p, int revis
     auto& q = query("UPDATE machines SET name = ?2, title = ?3, revision = ?4, changed_at = ?5, "
                   "changed_by = ?6 WHERE id = ?1");
     q.bind(1, id).bind(2, p.name).bind(3, p.title).bind(4, revision).bind(5, at).bind(6, author);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::deleteMachine(std::int64_t id) {
     auto& q = query("DELETE FROM machines WHERE id = ?1");
     q.bind(1, id);
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, const Change& c) {
@@ -134,7 +201,7 @@ void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, c
         auto& q = query(isNew ? "INSERT INTO c_values (machine_id, number, value) VALUES (?1, ?2, ?3)"
                             : "UPDATE c_values SET value = ?3 WHERE machine_id = ?1 AND number = ?2");
         q.bind(1, id).bind(2, *num).bind(3, p.cValue(*num));
-        q.run();
+        connection().runLater(q);
         return;
     }
     case DiffSection::R:
@@ -166,19 +233,19 @@ void SqlStore::writeItem(std::int64_t id, bool isNew, const MachineProfile& p, c
         q.bind(3, *c.after);
     if (plc)
         q.bind(4, c.key.substr(0, 1));
-    q.run();
+    connection().runLater(q);
 }
 
 void SqlStore::writeSettings(std::int64_t id, const MachineProfile& p) {
     auto& del = query("DELETE FROM settings WHERE machine_id = ?1");
     del.bind(1, id);
-    del.run();
+    connection().runLater(del);
     auto& q = query("INSERT INTO settings (machine_id, position, key, value) VALUES (?1, ?2, ?3, ?4)");
     int pos = 0;
     for (const auto& [k, v] : p.simulation.entries()) {
         q.reset();
         q.bind(1, id).bind(2, pos++).bind(3, k).bind(4, v);
-        q.run();
+        connection().runLater(q);
     }
 }
 

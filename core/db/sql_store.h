@@ -29,6 +29,9 @@ public:
     std::vector<MachineInfo> machines() override;
     std::optional<MachineRow> findMachine(std::string_view name) override;
     profile::MachineProfile loadCurrent(const MachineRow& row) override;
+    std::optional<LoadedMachine> loadNamed(std::string_view name) override;
+    std::optional<std::vector<ChangeRow>> historyNamed(
+        std::string_view name, int limitRevisions, const std::optional<std::string>& key) override;
     std::int64_t insertMachine(const profile::MachineProfile& p, const std::string& at,
                                const std::string& author) override;
     void updateMachine(std::int64_t id, const profile::MachineProfile& p, int revision,
@@ -62,6 +65,9 @@ public:
 
 protected:
     sql::Query& query(std::string_view text) { return connection()(text); }
+    // The current state from the run queries of the machine's tables (sql_rows.cpp).
+    profile::MachineProfile readCurrent(const MachineRow& row,
+                                        std::span<sql::Query* const> queries);
     std::string now() const { return formatTimestamp(clock_()); }
     // "machine NAME in PATH", for messages about stored rows.
     std::string where(const MachineRow& row) const;

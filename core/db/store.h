@@ -42,6 +42,12 @@ struct ProgramRow {
     std::optional<std::string> sha256;
 };
 
+// A machine's row and its current state, read together.
+struct LoadedMachine {
+    MachineRow row;
+    profile::MachineProfile profile;
+};
+
 class Store {
 public:
     virtual ~Store() = default;
@@ -92,6 +98,9 @@ public:
     virtual std::optional<MachineRow> findMachine(std::string_view name) = 0;
     // Throws Error(Corrupt) when the rows break their rules.
     virtual profile::MachineProfile loadCurrent(const MachineRow& row) = 0;
+    // findMachine and loadCurrent at once (PostgreSQL: in one round trip);
+    // nullopt when no machine has that name.
+    virtual std::optional<LoadedMachine> loadNamed(std::string_view name) = 0;
     virtual std::int64_t insertMachine(const profile::MachineProfile& p, const std::string& at,
                                        const std::string& author) = 0;
     virtual void updateMachine(std::int64_t id, const profile::MachineProfile& p, int revision,
@@ -119,6 +128,11 @@ public:
     // Changes of revisions >= fromRevision (of one key), newest first.
     virtual std::vector<ChangeRow> history(std::int64_t id, int fromRevision,
                                            const std::optional<std::string>& key) = 0;
+    // The same of the machine `name`, of its last `limitRevisions` revisions
+    // (<= 0: all), read in one snapshot of its own (PostgreSQL: one statement).
+    // nullopt when no machine has that name.
+    virtual std::optional<std::vector<ChangeRow>> historyNamed(
+        std::string_view name, int limitRevisions, const std::optional<std::string>& key) = 0;
     virtual std::vector<ProgramRow> programVersions(std::int64_t id, int number) = 0; // newest first
     // The last version of program `number` at or before `revision`.
     virtual std::optional<ProgramRow> programAt(std::int64_t id, int number, int revision) = 0;
