@@ -1275,6 +1275,78 @@ Details: %3</source>
         <source>Database %1 open</source>
         <translation>Открыта база данных %1</translation>
     </message>
+    <message>
+        <source>Transfers</source>
+        <translation>Передачи</translation>
+    </message>
+    <message>
+        <source>every machine</source>
+        <translation>все станки</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Пользователь</translation>
+    </message>
+    <message>
+        <source>PC</source>
+        <translation>ПК</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Контроллер</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Направление</translation>
+    </message>
+    <message>
+        <source>What moved</source>
+        <translation>Что передано</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Станок:</translation>
+    </message>
+    <message>
+        <source>push</source>
+        <translation>в УЧПУ</translation>
+    </message>
+    <message>
+        <source>pull</source>
+        <translation>из УЧПУ</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>успешно</translation>
+    </message>
+    <message>
+        <source>partial</source>
+        <translation>частично</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>не удалось</translation>
+    </message>
+    <message>
+        <source>%1 transfers</source>
+        <translation>передач: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Transfers...</source>
+        <translation>&amp;Передачи...</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>

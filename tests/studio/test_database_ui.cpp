@@ -22,6 +22,8 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QComboBox>
+#include <QTableWidget>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -199,6 +201,33 @@ private slots:
         QCOMPARE(now.c[21], theirs);
         QCOMPARE(now.c[22], mine);
         QCOMPARE(pane.editor().store().known(), known + 2);
+    }
+
+    void transfersListedByMachine() {
+        QVERIFY(openDatabase(location_).isEmpty());
+        ShopDatabase::at()->use([](db::Database& d) {
+            for (const char* name : {"lathe-log-a", "lathe-log-b"}) {
+                if (!d.hasMachine(name))
+                    d.createMachine(lathe(name));
+                db::TransferEntry t;
+                t.machine = name;
+                t.revision = 1;
+                t.controller = "/dev/ttyUSB0#1 K528-05";
+                t.direction = "push";
+                t.result = "ok";
+                t.items.push_back({"program", 11, "1a2b3c4d", std::string(64, 'a'), "new"});
+                d.recordTransfer(t);
+            }
+        });
+        TransfersDialog d(QStringLiteral("lathe-log-a"));
+        QCOMPARE(d.table()->rowCount(), 1);
+        QCOMPARE(d.table()->item(0, 3)->text(), QString("lathe-log-a"));
+        QCOMPARE(d.table()->item(0, 5)->text(), QString("push"));
+        QVERIFY2(d.table()->item(0, 6)->text().contains("L11 1a2b3c4d new"), qPrintable(d.table()->item(0, 6)->text()));
+        QCOMPARE(d.table()->item(0, 7)->text(), QString("ok"));
+        QVERIFY(!d.table()->item(0, 1)->text().isEmpty()); // the user: the OS's, or the server's current_user
+        d.machineFilter()->setCurrentIndex(0); // every machine
+        QVERIFY(d.table()->rowCount() >= 2);
     }
 };
 

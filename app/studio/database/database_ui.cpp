@@ -21,6 +21,8 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <QHeaderView>
+#include <QTableWidget>
 #include <algorithm>
 
 namespace k528::studio {
@@ -322,20 +324,113 @@ void DatabaseWatch::check() {
         emit revision(r);
 }
 
+// The transfer log.
+
+TransfersDialog::TransfersDialog(const QString& machine, QWidget* parent) : QDialog(parent) {
+    setObjectName("dialog.transfers");
+    setWindowTitle(QCoreApplication::translate("k528::studio::DatabaseUi", "Transfers"));
+    machine_ = new QComboBox(this);
+    machine_->setObjectName("transfers.machine");
+    machine_->addItem(QCoreApplication::translate("k528::studio::DatabaseUi", "every machine"), QString());
+    try {
+        for (const db::MachineInfo& m : ShopDatabase::at()->use([](db::Database& d) { return d.machines(); }))
+            machine_->addItem(fromStd(m.name), fromStd(m.name));
+    } catch (const std::exception&) {
+        // refresh() says why
+    }
+    machine_->setCurrentIndex(std::max(0, machine_->findData(machine)));
+    table_ = new QTableWidget(0, 8, this);
+    table_->setObjectName("transfers.table");
+    table_->setHorizontalHeaderLabels({
+        QCoreApplication::translate("k528::studio::DatabaseUi", "Time"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "User"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "PC"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "Machine"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "Controller"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "Direction"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "What moved"),
+        QCoreApplication::translate("k528::studio::DatabaseUi", "Result"),
+    });
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
+    table_->horizontalHeader()->setStretchLastSection(true);
+    table_->verticalHeader()->hide();
+    status_ = new QLabel(this);
+    auto* row = new QHBoxLayout;
+    row->addWidget(new QLabel(QCoreApplication::translate("k528::studio::DatabaseUi", "Machine:"), this));
+    row->addWidget(machine_);
+    row->addStretch(1);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(row);
+    layout->addWidget(table_, 1);
+    layout->addWidget(status_);
+    layout->addWidget(buttons);
+    connect(machine_, &QComboBox::currentIndexChanged, this, &TransfersDialog::refresh);
+    resize(900, 420);
+    refresh();
+}
+
+void TransfersDialog::refresh() {
+    std::vector<db::TransferEntry> log;
+    db::TransferFilter f;
+    f.machine = machine_->currentData().toString().toStdString();
+    try {
+        log = ShopDatabase::at()->use([&](db::Database& d) { return d.transfers(f); });
+    } catch (const std::exception& e) {
+        status_->setText(databaseErrorText(e));
+        table_->setRowCount(0);
+        return;
+    }
+    table_->setRowCount(static_cast<int>(log.size()));
+    for (int i = 0; i < static_cast<int>(log.size()); ++i) {
+        const db::TransferEntry& t = log[static_cast<std::size_t>(i)];
+        QStringList moved;
+        for (const db::TransferItem& item : t.items)
+            moved << (item.kind == "program" ? QStringLiteral("L%1").arg(item.number) : fromStd(item.kind).toUpper()) +
+                         QStringLiteral(" ") + fromStd(item.crc32) + QStringLiteral(" ") + fromStd(item.state);
+        const QString direction = t.direction == "push"
+                                      ? QCoreApplication::translate("k528::studio::DatabaseUi", "push")
+                                      : QCoreApplication::translate("k528::studio::DatabaseUi", "pull");
+        const QString result = t.result == "ok"        ? QCoreApplication::translate("k528::studio::DatabaseUi", "ok")
+                               : t.result == "partial" ? QCoreApplication::translate("k528::studio::DatabaseUi", "partial")
+                                                       : QCoreApplication::translate("k528::studio::DatabaseUi", "failed");
+        const QStringList cells = {fromStd(t.at),         fromStd(t.user),      fromStd(t.host),
+                                   fromStd(t.machine),    fromStd(t.controller), direction,
+                                   moved.join(QStringLiteral(", ")), result};
+        for (int c = 0; c < cells.size(); ++c)
+            table_->setItem(i, c, new QTableWidgetItem(cells[c]));
+        table_->item(i, 7)->setToolTip(fromStd(t.detail));
+    }
+    table_->resizeColumnsToContents();
+    status_->setText(QCoreApplication::translate("k528::studio::DatabaseUi", "%1 transfers").arg(log.size()));
+}
+
 void installDatabaseUi(QMainWindow* window, QMenu* fileMenu, QAction* before) {
     auto* action = new QAction(window);
     action->setObjectName("action.database");
     fileMenu->insertAction(before, action);
+    auto* transfers = new QAction(window);
+    transfers->setObjectName("action.transfers");
+    fileMenu->insertAction(before, transfers);
+    QObject::connect(transfers, &QAction::triggered, window, [window] {
+        auto* d = new TransfersDialog(QString(), window);
+        d->setAttribute(Qt::WA_DeleteOnClose);
+        d->show();
+    });
     auto* label = new DatabaseLabel(window);
     window->statusBar()->addPermanentWidget(label);
     struct Texts : QObject {
         QAction* action;
-        Texts(QObject* parent, QAction* a) : QObject(parent), action(a) {
+        QAction* transfers;
+        Texts(QObject* parent, QAction* a, QAction* t) : QObject(parent), action(a), transfers(t) {
             parent->installEventFilter(this);
             retranslate();
         }
         void retranslate() {
             action->setText(QCoreApplication::translate("k528::studio::DatabaseUi", "&Database..."));
+            transfers->setText(QCoreApplication::translate("k528::studio::DatabaseUi", "&Transfers..."));
         }
         bool eventFilter(QObject*, QEvent* e) override {
             if (e->type() == QEvent::LanguageChange)
@@ -343,7 +438,7 @@ void installDatabaseUi(QMainWindow* window, QMenu* fileMenu, QAction* before) {
             return false;
         }
     };
-    new Texts(window, action);
+    new Texts(window, action, transfers);
     QObject::connect(action, &QAction::triggered, window, [window] {
         DatabaseDialog dialog(window);
         dialog.exec();

@@ -101,3 +101,27 @@ void installDatabaseUi(QMainWindow* window, QMenu* fileMenu, QAction* before);
 QString databaseWindowTitle();
 
 } // namespace k528::studio
+
+class QTableWidget;
+
+namespace k528::studio {
+
+// *File > Transfers…*: the transfer log of the window's database (time,
+// user, PC, machine, controller, direction, what moved, result), newest
+// first, for one machine or all.
+class TransfersDialog : public QDialog {
+    Q_OBJECT
+public:
+    explicit TransfersDialog(const QString& machine, QWidget* parent = nullptr);
+    QTableWidget* table() const { return table_; }
+    QComboBox* machineFilter() const { return machine_; }
+    // Reads the log again (the filter's machine; "" all).
+    void refresh();
+
+private:
+    QComboBox* machine_;
+    QTableWidget* table_;
+    QLabel* status_;
+};
+
+} // namespace k528::studio
