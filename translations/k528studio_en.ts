@@ -571,6 +571,33 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::ConflictDialog</name>
+    <message>
+        <source>Changed on another PC — %1</source>
+        <translation>Changed on another PC — %1</translation>
+    </message>
+    <message>
+        <source>C%1 = %2 was applied to the controller but not kept in the database: %3
+
+Your change was based on revision %4; revision %5 is the newest now.</source>
+        <translation>C%1 = %2 was applied to the controller but not kept in the database: %3
+
+Your change was based on revision %4; revision %5 is the newest now.</translation>
+    </message>
+    <message>
+        <source>Show the differences</source>
+        <translation>Show the differences</translation>
+    </message>
+    <message>
+        <source>Apply my change on top</source>
+        <translation>Apply my change on top</translation>
+    </message>
+    <message>
+        <source>Do not keep it</source>
+        <translation>Do not keep it</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConstantsEditor</name>
     <message>
         <source>undo: %1</source>
@@ -579,6 +606,25 @@
     <message>
         <source>No C-parameter %1 (1..152)</source>
         <translation>No C-parameter %1 (1..152)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsFollow</name>
+    <message>
+        <source>Not kept in the database: %1</source>
+        <translation>Not kept in the database: %1</translation>
+    </message>
+    <message>
+        <source>the controller on the link keeps its own constants until they are pushed to it</source>
+        <translation>the controller on the link keeps its own constants until they are pushed to it</translation>
+    </message>
+    <message>
+        <source>the simulated controller did not take it now: %1</source>
+        <translation>the simulated controller did not take it now: %1</translation>
+    </message>
+    <message>
+        <source>the constants shown are this revision's</source>
+        <translation>the constants shown are this revision's</translation>
     </message>
 </context>
 <context>
@@ -1135,6 +1181,171 @@
     <message>
         <source>Why: %1</source>
         <translation>Why: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DatabaseUi</name>
+    <message>
+        <source>Database: %1</source>
+        <translation>Database: %1</translation>
+    </message>
+    <message>
+        <source>The database %1 cannot be opened: %2</source>
+        <translation>The database %1 cannot be opened: %2</translation>
+    </message>
+    <message>
+        <source>this is not a database location (a file path, sqlite:PATH or postgresql://HOST/NAME; a password is never written in it: use ~/.pgpass or a service file)</source>
+        <translation>this is not a database location (a file path, sqlite:PATH or postgresql://HOST/NAME; a password is never written in it: use ~/.pgpass or a service file)</translation>
+    </message>
+    <message>
+        <source>it cannot be reached, read or created</source>
+        <translation>it cannot be reached, read or created</translation>
+    </message>
+    <message>
+        <source>it is not a K528 Studio database</source>
+        <translation>it is not a K528 Studio database</translation>
+    </message>
+    <message>
+        <source>it is damaged (nothing in it was changed)</source>
+        <translation>it is damaged (nothing in it was changed)</translation>
+    </message>
+    <message>
+        <source>it was written by a newer K528 Studio</source>
+        <translation>it was written by a newer K528 Studio</translation>
+    </message>
+    <message>
+        <source>another program holds it too long</source>
+        <translation>another program holds it too long</translation>
+    </message>
+    <message>
+        <source>the server refused this user</source>
+        <translation>the server refused this user</translation>
+    </message>
+    <message>
+        <source>an unexpected database error</source>
+        <translation>an unexpected database error</translation>
+    </message>
+    <message>
+        <source>The database %1 cannot be opened: %2.
+Details: %3</source>
+        <translation>The database %1 cannot be opened: %2.
+Details: %3</translation>
+    </message>
+    <message>
+        <source>Name a database: a file path, sqlite:PATH or postgresql://HOST/NAME.</source>
+        <translation>Name a database: a file path, sqlite:PATH or postgresql://HOST/NAME.</translation>
+    </message>
+    <message>
+        <source>K528 Studio — %1</source>
+        <translation>K528 Studio — %1</translation>
+    </message>
+    <message>
+        <source>Database</source>
+        <translation>Database</translation>
+    </message>
+    <message>
+        <source>The database of machines, programs and their history: a file on this PC (a path, or sqlite:PATH), or the shop's PostgreSQL server (postgresql://HOST/NAME, postgresql:///NAME, postgresql://?service=shop). The password is never written here: the server's password is read from ~/.pgpass (PGPASSFILE) or a service file.</source>
+        <translation>The database of machines, programs and their history: a file on this PC (a path, or sqlite:PATH), or the shop's PostgreSQL server (postgresql://HOST/NAME, postgresql:///NAME, postgresql://?service=shop). The password is never written here: the server's password is read from ~/.pgpass (PGPASSFILE) or a service file.</translation>
+    </message>
+    <message>
+        <source>File...</source>
+        <translation>File...</translation>
+    </message>
+    <message>
+        <source>Database file</source>
+        <translation>Database file</translation>
+    </message>
+    <message>
+        <source>K528 Studio databases (*.db *.sqlite);;All files (*)</source>
+        <translation>K528 Studio databases (*.db *.sqlite);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Open</translation>
+    </message>
+    <message>
+        <source>%1 changed on another PC: revision %2 by %3 at %4 (%5)</source>
+        <translation>%1 changed on another PC: revision %2 by %3 at %4 (%5)</translation>
+    </message>
+    <message>
+        <source>&amp;Database...</source>
+        <translation>&amp;Database...</translation>
+    </message>
+    <message>
+        <source>Database %1 open</source>
+        <translation>Database %1 open</translation>
+    </message>
+    <message>
+        <source>Transfers</source>
+        <translation>Transfers</translation>
+    </message>
+    <message>
+        <source>every machine</source>
+        <translation>every machine</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>User</translation>
+    </message>
+    <message>
+        <source>PC</source>
+        <translation>PC</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Direction</translation>
+    </message>
+    <message>
+        <source>What moved</source>
+        <translation>What moved</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Machine:</translation>
+    </message>
+    <message>
+        <source>push</source>
+        <translation>push</translation>
+    </message>
+    <message>
+        <source>pull</source>
+        <translation>pull</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>partial</source>
+        <translation>partial</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>%1 transfers</source>
+        <translation>%1 transfers</translation>
+    </message>
+    <message>
+        <source>&amp;Transfers...</source>
+        <translation>&amp;Transfers...</translation>
     </message>
 </context>
 <context>
@@ -2758,6 +2969,15 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::MachineStore</name>
+    <message>
+        <source>revision %1 by %2 at %3: %4
+</source>
+        <translation>revision %1 by %2 at %3: %4
+</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -2766,10 +2986,6 @@ Its comment stays: %3</translation>
     <message>
         <source>&lt;h3&gt;K528 Studio %1&lt;/h3&gt;&lt;p&gt;Workstation for the Konstar K528-05 two-axis positioning controller and its K923 operator panel.&lt;/p&gt;&lt;p&gt;Licence: GNU GPL version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;K528 Studio %1&lt;/h3&gt;&lt;p&gt;Workstation for the Konstar K528-05 two-axis positioning controller and its K923 operator panel.&lt;/p&gt;&lt;p&gt;Licence: GNU GPL version 3 or later.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>K528 Studio</source>
-        <translation>K528 Studio</translation>
     </message>
     <message>
         <source>&amp;File</source>

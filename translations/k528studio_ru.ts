@@ -571,6 +571,33 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::ConflictDialog</name>
+    <message>
+        <source>Changed on another PC — %1</source>
+        <translation>Изменено на другом ПК — %1</translation>
+    </message>
+    <message>
+        <source>C%1 = %2 was applied to the controller but not kept in the database: %3
+
+Your change was based on revision %4; revision %5 is the newest now.</source>
+        <translation>C%1 = %2 передано в контроллер, но не сохранено в базе данных: %3
+
+Ваше изменение сделано от ревизии %4; последняя ревизия теперь %5.</translation>
+    </message>
+    <message>
+        <source>Show the differences</source>
+        <translation>Показать различия</translation>
+    </message>
+    <message>
+        <source>Apply my change on top</source>
+        <translation>Применить моё изменение поверх</translation>
+    </message>
+    <message>
+        <source>Do not keep it</source>
+        <translation>Не сохранять</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConstantsEditor</name>
     <message>
         <source>undo: %1</source>
@@ -579,6 +606,25 @@
     <message>
         <source>No C-parameter %1 (1..152)</source>
         <translation>Нет С-параметра %1 (1..152)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ConstantsFollow</name>
+    <message>
+        <source>Not kept in the database: %1</source>
+        <translation>Не сохранено в базе данных: %1</translation>
+    </message>
+    <message>
+        <source>the controller on the link keeps its own constants until they are pushed to it</source>
+        <translation>контроллер на линии хранит свои константы, пока в него не передадут новые</translation>
+    </message>
+    <message>
+        <source>the simulated controller did not take it now: %1</source>
+        <translation>модель контроллера сейчас её не приняла: %1</translation>
+    </message>
+    <message>
+        <source>the constants shown are this revision's</source>
+        <translation>показаны константы этой ревизии</translation>
     </message>
 </context>
 <context>
@@ -1135,6 +1181,171 @@
     <message>
         <source>Why: %1</source>
         <translation>Причина: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DatabaseUi</name>
+    <message>
+        <source>Database: %1</source>
+        <translation>База данных: %1</translation>
+    </message>
+    <message>
+        <source>The database %1 cannot be opened: %2</source>
+        <translation>Базу данных %1 открыть нельзя: %2</translation>
+    </message>
+    <message>
+        <source>this is not a database location (a file path, sqlite:PATH or postgresql://HOST/NAME; a password is never written in it: use ~/.pgpass or a service file)</source>
+        <translation>это не адрес базы данных (путь к файлу, sqlite:ПУТЬ или postgresql://СЕРВЕР/ИМЯ; пароль в нём не пишется: он берётся из ~/.pgpass или файла служб)</translation>
+    </message>
+    <message>
+        <source>it cannot be reached, read or created</source>
+        <translation>к ней нет доступа, её нельзя прочитать или создать</translation>
+    </message>
+    <message>
+        <source>it is not a K528 Studio database</source>
+        <translation>это не база данных K528 Studio</translation>
+    </message>
+    <message>
+        <source>it is damaged (nothing in it was changed)</source>
+        <translation>она повреждена (в ней ничего не изменено)</translation>
+    </message>
+    <message>
+        <source>it was written by a newer K528 Studio</source>
+        <translation>она записана более новой версией K528 Studio</translation>
+    </message>
+    <message>
+        <source>another program holds it too long</source>
+        <translation>другая программа слишком долго держит её занятой</translation>
+    </message>
+    <message>
+        <source>the server refused this user</source>
+        <translation>сервер отказал этому пользователю</translation>
+    </message>
+    <message>
+        <source>an unexpected database error</source>
+        <translation>непредвиденная ошибка базы данных</translation>
+    </message>
+    <message>
+        <source>The database %1 cannot be opened: %2.
+Details: %3</source>
+        <translation>Базу данных %1 открыть нельзя: %2.
+Подробности: %3</translation>
+    </message>
+    <message>
+        <source>Name a database: a file path, sqlite:PATH or postgresql://HOST/NAME.</source>
+        <translation>Укажите базу данных: путь к файлу, sqlite:ПУТЬ или postgresql://СЕРВЕР/ИМЯ.</translation>
+    </message>
+    <message>
+        <source>K528 Studio — %1</source>
+        <translation>K528 Studio — %1</translation>
+    </message>
+    <message>
+        <source>Database</source>
+        <translation>База данных</translation>
+    </message>
+    <message>
+        <source>The database of machines, programs and their history: a file on this PC (a path, or sqlite:PATH), or the shop's PostgreSQL server (postgresql://HOST/NAME, postgresql:///NAME, postgresql://?service=shop). The password is never written here: the server's password is read from ~/.pgpass (PGPASSFILE) or a service file.</source>
+        <translation>База данных станков, программ и их истории: файл на этом ПК (путь или sqlite:ПУТЬ) или сервер PostgreSQL цеха (postgresql://СЕРВЕР/ИМЯ, postgresql:///ИМЯ, postgresql://?service=shop). Пароль здесь не пишется: пароль сервера берётся из ~/.pgpass (PGPASSFILE) или файла служб.</translation>
+    </message>
+    <message>
+        <source>File...</source>
+        <translation>Файл...</translation>
+    </message>
+    <message>
+        <source>Database file</source>
+        <translation>Файл базы данных</translation>
+    </message>
+    <message>
+        <source>K528 Studio databases (*.db *.sqlite);;All files (*)</source>
+        <translation>Базы данных K528 Studio (*.db *.sqlite);;Все файлы (*)</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Открыть</translation>
+    </message>
+    <message>
+        <source>%1 changed on another PC: revision %2 by %3 at %4 (%5)</source>
+        <translation>%1 изменён на другом ПК: ревизия %2, автор %3, %4 (%5)</translation>
+    </message>
+    <message>
+        <source>&amp;Database...</source>
+        <translation>&amp;База данных...</translation>
+    </message>
+    <message>
+        <source>Database %1 open</source>
+        <translation>Открыта база данных %1</translation>
+    </message>
+    <message>
+        <source>Transfers</source>
+        <translation>Передачи</translation>
+    </message>
+    <message>
+        <source>every machine</source>
+        <translation>все станки</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Пользователь</translation>
+    </message>
+    <message>
+        <source>PC</source>
+        <translation>ПК</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Контроллер</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Направление</translation>
+    </message>
+    <message>
+        <source>What moved</source>
+        <translation>Что передано</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Итог</translation>
+    </message>
+    <message>
+        <source>Machine:</source>
+        <translation>Станок:</translation>
+    </message>
+    <message>
+        <source>push</source>
+        <translation>в УЧПУ</translation>
+    </message>
+    <message>
+        <source>pull</source>
+        <translation>из УЧПУ</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>успешно</translation>
+    </message>
+    <message>
+        <source>partial</source>
+        <translation>частично</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>не удалось</translation>
+    </message>
+    <message>
+        <source>%1 transfers</source>
+        <translation>передач: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Transfers...</source>
+        <translation>&amp;Передачи...</translation>
     </message>
 </context>
 <context>
@@ -2758,6 +2969,15 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::MachineStore</name>
+    <message>
+        <source>revision %1 by %2 at %3: %4
+</source>
+        <translation>ревизия %1, автор %2, %3: %4
+</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::MainWindow</name>
     <message>
         <source>About K528 Studio</source>
@@ -2766,10 +2986,6 @@ Its comment stays: %3</source>
     <message>
         <source>&lt;h3&gt;K528 Studio %1&lt;/h3&gt;&lt;p&gt;Workstation for the Konstar K528-05 two-axis positioning controller and its K923 operator panel.&lt;/p&gt;&lt;p&gt;Licence: GNU GPL version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;K528 Studio %1&lt;/h3&gt;&lt;p&gt;Рабочее место для двухкоординатного устройства позиционирования «Констар» К528-05 и его панели оператора K923.&lt;/p&gt;&lt;p&gt;Лицензия: GNU GPL версии 3 или более поздней.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>K528 Studio</source>
-        <translation>K528 Studio</translation>
     </message>
     <message>
         <source>&amp;File</source>

@@ -19,6 +19,7 @@
 #include "main_window.h"
 #include "workspace/workspaces.h"
 #include "profile/builtin.h"
+#include "database/database_ui.h"
 #include "session/machine_source.h"
 #include "util/version.h"
 
@@ -57,8 +58,12 @@ int main(int argc, char** argv) {
                                  "simulated machine, as the debugger's Run does (drives on, homing, "
                                  "AUTOMATIC, Start).",
                                  "file.k528");
+    QCommandLineOption dbOption("db",
+                                "The database: a file, sqlite:PATH or postgresql://HOST/NAME (default: $K528_DB, "
+                                "else the one chosen last in File > Database..., else the user's file).",
+                                "location");
     cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, firstFrameOption, pluginsOption,
-                    runOption});
+                    runOption, dbOption});
     cli.process(app);
     if (cli.isSet(pluginsOption)) {
         for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
@@ -77,6 +82,15 @@ int main(int argc, char** argv) {
         return 2;
     }
 
+    QString databaseWarning;
+    try {
+        k528::studio::chooseStartDatabase(cli.value(dbOption), &databaseWarning);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "k528studio: --db: %s\n", e.what());
+        return 2;
+    }
+    if (!databaseWarning.isEmpty())
+        std::fprintf(stderr, "k528studio: %s\n", qPrintable(databaseWarning));
     const QString wanted =
         cli.isSet(profileOption) ? cli.value(profileOption) : k528::studio::startMachineName();
     k528::studio::MachineChoice machine;

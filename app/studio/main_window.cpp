@@ -21,6 +21,7 @@
 #include "controller/simulated_controller.h"
 #include "controller/view_notice.h"
 #include "constants/constants_dock.h"
+#include "database/database_ui.h"
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
@@ -93,6 +94,7 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     timeLabel_ = new ElidedLabel(this);
     timeLabel_->setObjectName("status.machineTime");
     statusBar()->addPermanentWidget(timeLabel_);
+    installDatabaseUi(this, fileMenu_, machineMenu_->menuAction()); // database/database_ui.cpp
     connect(session_, &SimulationSession::advanced, this, [this] {
         const std::int64_t s = session_->timeMs() / 1000;
         const QString t = tr("Machine time %1:%2:%3")
@@ -573,7 +575,7 @@ void MainWindow::updateFaultActions() {
 }
 
 void MainWindow::retranslate() {
-    setWindowTitle(tr("K528 Studio"));
+    setWindowTitle(databaseWindowTitle());
     fileMenu_->setTitle(tr("&File"));
     loadProgramsAction_->setText(tr("&Load programs..."));
     keepAction_->setText(tr("&Keep the controller's memory in the database"));

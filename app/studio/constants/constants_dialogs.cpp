@@ -146,6 +146,14 @@ void DiffDialog::compare() {
     w->setFuture(pane_.diffRevisions(a_->value(), b_->value()));
 }
 
+void DiffDialog::compareRevisions(int a, int b) {
+    a_->setMaximum(std::max({a_->maximum(), a, b}));
+    b_->setMaximum(a_->maximum());
+    a_->setValue(a);
+    b_->setValue(b);
+    compare();
+}
+
 // --- calculator -------------------------------------------------------------
 
 CalculatorDialog::CalculatorDialog(ConstantsEditor& editor, QWidget* parent)

@@ -37,6 +37,8 @@ class DiffDialog : public QDialog {
 public:
     DiffDialog(ConstantsPane& pane, QWidget* parent = nullptr);
     void compare();
+    // Compares revision `a` with `b` at once (0: the controller now).
+    void compareRevisions(int a, int b);
     QPlainTextEdit* result() const { return text_; }
 
 private:

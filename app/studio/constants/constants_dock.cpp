@@ -1,4 +1,5 @@
 #include "constants/constants_dock.h"
+#include "constants/constants_follow.h"
 
 #include "catalog/cparams.h"
 #include "constants/constants_dialogs.h"
@@ -243,6 +244,7 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
         say(tr("%1 — kept as revision %2 of %3").arg(note).arg(revision).arg(editor_->store().qName()), false);
         note_->clear();
     });
+    new ConstantsFollow(*this); // constants/constants_follow.cpp: other PCs' revisions, refusals
     retranslate();
 }
 

@@ -57,6 +57,8 @@ public:
     QLineEdit* noteField() const { return note_; }
     // The last refusal or confirmation shown under the table.
     QString statusText() const;
+    // Shows `text` there (red: a refusal).
+    void tell(const QString& text, bool bad) { say(text, bad); }
 
     // Long operations (started by the buttons after a file dialog; tests call
     // them directly). Each returns at once; busy() until finished().

@@ -195,12 +195,14 @@ bool ConstantsEditor::set(int number, std::int64_t value, const QString& note) {
     return *result != 0;
 }
 
-void ConstantsEditor::keep(int number, std::int64_t value, const QString& note) {
+void ConstantsEditor::keep(int number, std::int64_t value, const QString& note, bool onNewest) {
     emit changed(number);
     db::Edit e;
     e.c[number] = value;
-    const MachineStore::Kept k = store_.keep(e, note);
-    if (k.revision == 0) {
+    const MachineStore::Kept k = store_.keep(e, note, onNewest);
+    if (k.conflict) {
+        emit conflicted(number, value, note, k.error + QStringLiteral("\n") + k.newer.trimmed(), k.known, k.newest);
+    } else if (k.revision == 0) {
         emit notKept(k.error);
     } else {
         lastRevision_ = k.revision;

@@ -66,7 +66,10 @@ public:
     bool set(int number, std::int64_t value, const QString& note = QString());
 
     // Used by the undo commands: keep in the database, no undo entry.
-    void keep(int number, std::int64_t value, const QString& note);
+    // `onNewest`: on the database's newest revision even when another PC
+    // made it after the one this window knew (the user chose to apply the
+    // change again on top of it).
+    void keep(int number, std::int64_t value, const QString& note, bool onNewest = false);
     // All 152 (imports): applied to the controller as a whole (Controller::setAllC).
     void applyAll(std::vector<std::int64_t> c, std::function<void(const QString& why)> done);
 
@@ -79,6 +82,10 @@ signals:
     void refused(const QString& why);   // a change was not made
     void kept(int revision, const QString& note);
     void notKept(const QString& why);   // applied to the controller, not to the database
+    // Not kept because another process or PC made revision `newest` after
+    // `known`, the one this change was based on (`why`: the refusal, then
+    // the newer revisions, a line each: who, when, what).
+    void conflicted(int number, qint64 value, const QString& note, const QString& why, int known, int newest);
 
 private:
     ViewedController& viewed_;

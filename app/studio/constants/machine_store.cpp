@@ -2,9 +2,22 @@
 
 #include "session/shop_database.h"
 
+#include <QCoreApplication>
+#include <algorithm>
+
 namespace k528::studio {
 
-MachineStore::MachineStore(profile::MachineProfile base) : base_(std::move(base)) {}
+MachineStore::MachineStore(profile::MachineProfile base) : base_(std::move(base)) {
+    // The window's view of the machine is the database's revision now.
+    try {
+        ShopDatabase::at()->use([&](db::Database& d) {
+            if (const auto m = d.machine(base_.name))
+                setKnown(m->revision);
+        });
+    } catch (const std::exception&) {
+        // told where the database is used
+    }
+}
 
 void MachineStore::ensureMachine(db::Database& d) const {
     if (d.hasMachine(base_.name))
@@ -13,21 +26,52 @@ void MachineStore::ensureMachine(db::Database& d) const {
     o.summary = "the machine as K528 Studio loaded it";
     o.action = "create";
     o.allowErrors = true; // a trainer's faulty machine is stored as it ran
-    d.createMachine(base_, o);
+    const db::SaveResult r = d.createMachine(base_, o);
+    ShopDatabase::at()->noteOwn(base_.name, r.revision);
 }
 
-MachineStore::Kept MachineStore::keep(const db::Edit& edit, const QString& note) const {
+MachineStore::Kept MachineStore::keep(const db::Edit& edit, const QString& note, bool onNewest) const {
     Kept k;
     try {
-        ShopDatabase::at()->use([&](db::Database& d) {
+        const auto shop = ShopDatabase::at();
+        shop->use([&](db::Database& d) {
             ensureMachine(d);
             db::WriteOptions o;
             o.summary = note.toStdString();
             o.action = "set";
+            const int now = d.machine(base_.name)->revision;
+            k.known = known();
+            // Newer revisions this window made itself (a program saved, the
+            // memory kept) are no one else's change.
+            if (k.known > 0 && !onNewest)
+                o.expectedRevision = shop->allOwn(base_.name, k.known, now) ? now : k.known;
             const db::SaveResult r = d.applyEdit(base_.name, edit, o);
             k.revision = r.revision;
             k.changes = static_cast<int>(r.changes.size());
+            if (r.changed)
+                shop->noteOwn(base_.name, r.revision);
+            setKnown(r.revision);
         });
+    } catch (const db::Error& e) {
+        k.error = databaseErrorText(e);
+        if (e.kind() == db::ErrorKind::Conflict) {
+            k.conflict = true;
+            try {
+                ShopDatabase::at()->use([&](db::Database& d) {
+                    for (const db::RevisionInfo& r : d.revisions(base_.name)) {
+                        if (r.revision <= k.known)
+                            break;
+                        k.newest = std::max(k.newest, r.revision);
+                        k.newer += QCoreApplication::translate("k528::studio::MachineStore",
+                                                               "revision %1 by %2 at %3: %4\n")
+                                       .arg(r.revision)
+                                       .arg(QString::fromStdString(r.author), QString::fromStdString(r.at),
+                                            QString::fromStdString(r.summary));
+                    }
+                });
+            } catch (const std::exception&) {
+            }
+        }
     } catch (const std::exception& e) {
         k.error = databaseErrorText(e);
     }
@@ -48,6 +92,9 @@ MachineStore::Kept MachineStore::keepProfile(profile::MachineProfile p, const QS
             const db::SaveResult r = d.saveMachine(base_.name, p, o);
             k.revision = r.revision;
             k.changes = static_cast<int>(r.changes.size());
+            if (r.changed)
+                ShopDatabase::at()->noteOwn(base_.name, r.revision);
+            setKnown(r.revision);
         });
     } catch (const db::ValidationError& e) {
         std::string text = e.what();

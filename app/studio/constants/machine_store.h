@@ -12,6 +12,8 @@
 #include "profile/profile.h"
 
 #include <QString>
+#include <atomic>
+#include <memory>
 #include <functional>
 #include <string>
 #include <vector>
@@ -31,9 +33,23 @@ public:
         int revision = 0;   // 0: not kept (error says why)
         int changes = 0;    // items this revision changed
         QString error;
+        // Refused because another process or PC made a newer revision than
+        // the one this window knew (error: the database's words: who, when).
+        bool conflict = false;
+        int known = 0;      // the revision the change was based on
+        int newest = 0;     // the machine's revision in the database now
+        QString newer;      // the revisions after `known`, a line each: who, when, what
     };
-    // Stores `edit` as the machine's next revision with `note` as its summary.
-    Kept keep(const db::Edit& edit, const QString& note) const;
+    // Stores `edit` as the machine's next revision with `note` as its summary,
+    // based on known(): refused (conflict) when another process or PC made a
+    // newer one since. `onNewest`: based on the newest revision instead (the
+    // user's change applied again on top of the other's).
+    Kept keep(const db::Edit& edit, const QString& note, bool onNewest = false) const;
+
+    // The revision this window's view of the machine is based on (0: none
+    // read yet, nothing refused); copies of the store share it.
+    int known() const { return *known_; }
+    void setKnown(int revision) const { *known_ = revision; }
     // Stores `p` (renamed to this machine) as the next revision; `progress`
     // (done, total) is called inside the transaction. Cross-check errors are
     // refused (db::ValidationError) as `k528 db import` refuses them.
@@ -49,6 +65,7 @@ public:
 private:
     void ensureMachine(db::Database& d) const;
     profile::MachineProfile base_;
+    std::shared_ptr<std::atomic<int>> known_ = std::make_shared<std::atomic<int>>(0);
 };
 
 } // namespace k528::studio

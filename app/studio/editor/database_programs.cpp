@@ -142,6 +142,8 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
         o.expectedRevision = expectedRevision;
         o.allowErrors = true; // the constants are not what this writes
         const db::SaveResult r = shop->use([&](db::Database& d) { return d.saveMachine(name, p, o); });
+        if (r.changed)
+            shop->noteOwn(name, r.revision);
         s.revision = r.revision;
         s.changed = r.changed;
     } catch (const db::Error& e) {

@@ -163,7 +163,7 @@ QString HistoryView::writeCsv(const QString& dbPath, const db::MessageFilter& f,
     try {
         // The window's connection, a page at a time: the recorder and the
         // dock write and read between the pages.
-        const auto shop = ShopDatabase::at(std::filesystem::path(dbPath.toStdString()));
+        const auto shop = ShopDatabase::atText(dbPath);
         QSaveFile out(path);
         if (!out.open(QIODevice::WriteOnly))
             return tr("Cannot write %1: %2").arg(path, out.errorString());

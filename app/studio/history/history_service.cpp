@@ -22,8 +22,8 @@ QString runName(const Controller& c) {
 HistoryService::HistoryService(Controller* controller, const QString& path, QObject* parent)
     : QObject(parent), controller_(controller) {
     try {
-        shop_ = ShopDatabase::at(std::filesystem::path(path.toStdString()));
-        path_ = QString::fromStdString(shop_->path().string());
+        shop_ = ShopDatabase::atText(path);
+        path_ = QString::fromStdString(shop_->location().text());
         shop_->useLog([](db::MessageLog&) {}); // schema 2 or an error now
     } catch (const std::exception& e) {
         error_ = databaseErrorText(e);

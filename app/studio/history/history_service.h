@@ -30,7 +30,8 @@ class HistoryService : public QObject {
 public:
     static constexpr int kFlushMs = 500;
 
-    // Opens the database at `path` ("": db::defaultDatabasePath()); with a
+    // Opens the database at `path` (a file or a URI; "": the window's,
+    // ShopDatabase::current()); with a
     // controller, records its messages (while it lives). A database that
     // cannot be used is told by error() and nothing is recorded (a damaged
     // file is never changed).

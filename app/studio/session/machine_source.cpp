@@ -75,9 +75,12 @@ MachineSave saveMachine(const profile::MachineProfile& p) {
         o.summary = "kept from the simulated controller's memory (K528 Studio)";
         // Constants a trainer made faulty on purpose stay as they are.
         o.allowErrors = true;
-        const db::SaveResult r = ShopDatabase::at()->use([&](db::Database& d) {
+        const auto shop = ShopDatabase::at();
+        const db::SaveResult r = shop->use([&](db::Database& d) {
             return d.hasMachine(p.name) ? d.saveMachine(p.name, p, o) : d.createMachine(p, o);
         });
+        if (r.changed || r.revision == 1)
+            shop->noteOwn(p.name, r.revision);
         s.revision = r.revision;
         s.changes = static_cast<int>(r.changes.size());
     } catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <map>
+#include <optional>
 #include <sys/stat.h>
 
 namespace k528::studio {
@@ -15,6 +16,7 @@ namespace {
 struct Registry {
     std::mutex mutex;
     std::map<std::string, std::shared_ptr<ShopDatabase>> open;
+    std::optional<db::Location> chosen;
 };
 
 Registry& registry() {
@@ -33,24 +35,66 @@ bool identity(const fs::path& path, dev_t& device, ino_t& inode) {
 
 } // namespace
 
-ShopDatabase::ShopDatabase(fs::path path, db::Database db)
-    : path_(std::move(path)), db_(std::move(db)), readOnly_(db_.readOnly()) {
-    identity(path_, device_, inode_);
+ShopDatabase::ShopDatabase(db::Location location, db::Database db)
+    : location_(std::move(location)), path_(db.path()), db_(std::move(db)), readOnly_(db_.readOnly()) {
+    if (location_.isFile())
+        identity(path_, device_, inode_);
 }
 
 ShopDatabase::~ShopDatabase() = default;
 
 bool ShopDatabase::sameFile() const {
+    if (!location_.isFile())
+        return true; // a server's database
     dev_t device = 0;
     ino_t inode = 0;
     return identity(path_, device, inode) && device == device_ && inode == inode_;
 }
 
-std::shared_ptr<ShopDatabase> ShopDatabase::at(const fs::path& given) {
-    const fs::path path = given.empty() ? db::defaultDatabasePath() : given;
-    const std::string key = fs::absolute(path).lexically_normal().string();
+db::Location ShopDatabase::current() {
+    {
+        Registry& r = registry();
+        std::lock_guard lock(r.mutex);
+        if (r.chosen)
+            return *r.chosen;
+    }
+    return db::defaultDatabaseLocation();
+}
+
+void ShopDatabase::choose(const db::Location& where) {
     Registry& r = registry();
-    // Opened under the registry's lock: two threads never open one file twice.
+    std::lock_guard lock(r.mutex);
+    r.chosen = where;
+}
+
+QString ShopDatabase::currentText() {
+    try {
+        return QString::fromStdString(current().text());
+    } catch (const std::exception& e) {
+        return QString::fromUtf8(e.what());
+    }
+}
+
+std::shared_ptr<ShopDatabase> ShopDatabase::atText(const QString& location) {
+    if (location.trimmed().isEmpty())
+        return at(db::Location());
+    return at(db::Location::parse(location.trimmed().toStdString()));
+}
+
+std::shared_ptr<ShopDatabase> ShopDatabase::at(const fs::path& given) {
+    return at(given.empty() ? db::Location() : db::Location(given));
+}
+
+std::shared_ptr<ShopDatabase> ShopDatabase::at(const db::Location& given) {
+    const bool byDefault = given.empty();
+    db::Location where = byDefault ? current() : given;
+    if (where.empty()) // $K528_DB names nothing: the user's file
+        where = db::Location(db::defaultDatabasePath());
+    const std::string key = where.isFile()
+                                ? "sqlite:" + fs::absolute(where.file()).lexically_normal().string()
+                                : where.uri();
+    Registry& r = registry();
+    // Opened under the registry's lock: two threads never open one database twice.
     std::lock_guard lock(r.mutex);
     if (const auto it = r.open.find(key); it != r.open.end()) {
         if (!it->second->sameFile())
@@ -58,20 +102,38 @@ std::shared_ptr<ShopDatabase> ShopDatabase::at(const fs::path& given) {
             // would mix them: the old -wal and -shm (named by the path) would
             // be read as the new file's. The old connection stays as it is.
             throw db::Error(db::ErrorKind::Io,
-                            path.string() + ": the database file was replaced or removed while "
-                                            "K528 Studio had it open; restart K528 Studio to use "
-                                            "the file now at this path (nothing was written to either)");
+                            where.text() + ": the database file was replaced or removed while "
+                                           "K528 Studio had it open; restart K528 Studio to use "
+                                           "the file now at this path (nothing was written to either)");
         if (!it->second->db_.snapshotOutdated())
             return it->second;
         r.open.erase(it); // a read-only snapshot: read the file's new state afresh
     }
-    if (given.empty()) {
+    if (byDefault && where.isFile()) {
         std::error_code ec;
-        fs::create_directories(path.parent_path(), ec); // open() says why if this failed
+        fs::create_directories(where.file().parent_path(), ec); // open() says why if this failed
     }
-    auto shop = std::shared_ptr<ShopDatabase>(new ShopDatabase(path, db::Database::open(path)));
+    auto shop = std::shared_ptr<ShopDatabase>(new ShopDatabase(where, db::Database::open(where)));
     r.open.emplace(key, shop);
     return shop;
+}
+
+void ShopDatabase::noteOwn(const std::string& machine, int revision) {
+    std::lock_guard lock(ownMutex_);
+    own_[machine].insert(revision);
+}
+
+bool ShopDatabase::isOwn(const std::string& machine, int revision) const {
+    std::lock_guard lock(ownMutex_);
+    const auto it = own_.find(machine);
+    return it != own_.end() && it->second.count(revision) != 0;
+}
+
+bool ShopDatabase::allOwn(const std::string& machine, int from, int to) const {
+    for (int r = from + 1; r <= to; ++r)
+        if (!isOwn(machine, r))
+            return false;
+    return true;
 }
 
 bool ShopDatabase::isOpenDatabaseFile(const fs::path& file) {
@@ -82,6 +144,8 @@ bool ShopDatabase::isOpenDatabaseFile(const fs::path& file) {
     Registry& r = registry();
     std::lock_guard lock(r.mutex);
     for (const auto& [key, shop] : r.open) {
+        if (!shop->location_.isFile())
+            continue;
         if (shop->device_ == device && shop->inode_ == inode)
             return true;
         for (const char* suffix : {"-wal", "-shm", "-journal"}) {

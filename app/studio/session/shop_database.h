@@ -25,6 +25,9 @@
 #include <QString>
 #include <exception>
 #include <filesystem>
+#include <map>
+#include <set>
+#include <string>
 #include <memory>
 #include <mutex>
 #include <sys/types.h>
@@ -34,11 +37,24 @@ namespace k528::studio {
 
 class ShopDatabase {
 public:
-    // The connection to `path` (empty: db::defaultDatabasePath(), created
-    // with its folder and the built-in machines on the first start). Throws
-    // db::Error (and std::exception) when the database cannot be used (the
-    // next call tries again) or the file was replaced under the connection.
+    // The connection to `path` (empty: current(), created with its folder
+    // and the built-in machines on the first start). Throws db::Error (and
+    // std::exception) when the database cannot be used (the next call tries
+    // again) or the file was replaced under the connection.
     static std::shared_ptr<ShopDatabase> at(const std::filesystem::path& path = {});
+    // The connection to an SQLite file or a PostgreSQL database (an empty
+    // location: current()).
+    static std::shared_ptr<ShopDatabase> at(const db::Location& where);
+    // The same for a location as the user writes it ("": current()).
+    static std::shared_ptr<ShopDatabase> atText(const QString& location);
+
+    // The database the window works on: the one chosen (File > Database…,
+    // --db, the one remembered), else db::defaultDatabaseLocation() ($K528_DB,
+    // else the user's file), read again at each call until one is chosen.
+    static db::Location current();
+    static void choose(const db::Location& where);
+    // The location as the window shows it (the file, or the URI).
+    static QString currentText();
 
     // Runs fn(db::Database&) holding the connection: callers of every thread
     // take turns (a worker's import makes the others wait for its
@@ -46,6 +62,16 @@ public:
     template <typename F> decltype(auto) use(F&& fn) {
         std::lock_guard lock(mutex_);
         return std::forward<F>(fn)(db_);
+    }
+    // The same unless another caller holds the connection now (a worker's
+    // import): then nothing runs and it returns false (the window's timers
+    // try again on their next tick instead of waiting).
+    template <typename F> bool tryUse(F&& fn) {
+        std::unique_lock lock(mutex_, std::try_to_lock);
+        if (!lock.owns_lock())
+            return false;
+        std::forward<F>(fn)(db_);
+        return true;
     }
     // The same with the message history (schema 2) on this connection.
     template <typename F> decltype(auto) useLog(F&& fn) {
@@ -55,8 +81,19 @@ public:
         return std::forward<F>(fn)(*log_);
     }
 
+    // The SQLite file; for PostgreSQL the URI as a path (for messages).
     const std::filesystem::path& path() const { return path_; }
+    const db::Location& location() const { return location_; }
     db::ReadOnlyReason readOnly() const { return readOnly_; }
+
+    // The revisions this process wrote (every writer of the window says
+    // so): the live watch tells only the others' (database/database_ui.h),
+    // and a change is not refused as based on an old revision because of
+    // the window's own newer ones. Any thread.
+    void noteOwn(const std::string& machine, int revision);
+    bool isOwn(const std::string& machine, int revision) const;
+    // Whether every revision of `machine` after `from` up to `to` is this process's.
+    bool allOwn(const std::string& machine, int from, int to) const;
 
     // Whether `file` is a database this process has open, or its -wal,
     // -shm or -journal: such a file must not be opened as a program or
@@ -69,15 +106,18 @@ public:
     ~ShopDatabase();
 
 private:
-    ShopDatabase(std::filesystem::path path, db::Database db);
+    ShopDatabase(db::Location location, db::Database db);
     // The file at path() is still the one this connection reads.
     bool sameFile() const;
 
     std::recursive_mutex mutex_;
+    db::Location location_;
     std::filesystem::path path_;
     db::Database db_;
     std::unique_ptr<db::MessageLog> log_;
     db::ReadOnlyReason readOnly_;
+    mutable std::mutex ownMutex_;
+    std::map<std::string, std::set<int>> own_;
     dev_t device_ = 0;
     ino_t inode_ = 0;
 };

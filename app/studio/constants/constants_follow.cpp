@@ -1,0 +1,122 @@
+#include "constants/constants_follow.h"
+
+#include "constants/constants_dialogs.h"
+#include "constants/constants_dock.h"
+#include "constants/constants_editor.h"
+#include "controller/controller.h"
+#include "database/database_ui.h"
+
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace k528::studio {
+
+ConflictDialog::ConflictDialog(ConstantsPane& pane, int number, qint64 value, const QString& note,
+                               const QString& why, int known, int newest)
+    : QDialog(&pane), pane_(pane), number_(number), value_(value), note_(note), known_(known), newest_(newest) {
+    setObjectName("constants.conflictDialog");
+    setWindowTitle(tr("Changed on another PC — %1").arg(pane.editor().store().qName()));
+    message_ = new QLabel(
+        tr("C%1 = %2 was applied to the controller but not kept in the database: %3\n\n"
+           "Your change was based on revision %4; revision %5 is the newest now.")
+            .arg(number, 3, 10, QChar('0'))
+            .arg(value)
+            .arg(why)
+            .arg(known)
+            .arg(newest),
+        this);
+    message_->setObjectName("conflict.message");
+    message_->setWordWrap(true);
+    message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* buttons = new QDialogButtonBox(this);
+    diff_ = buttons->addButton(tr("Show the differences"), QDialogButtonBox::ActionRole);
+    diff_->setObjectName("conflict.diff");
+    apply_ = buttons->addButton(tr("Apply my change on top"), QDialogButtonBox::AcceptRole);
+    apply_->setObjectName("conflict.apply");
+    buttons->addButton(tr("Do not keep it"), QDialogButtonBox::RejectRole);
+    connect(diff_, &QPushButton::clicked, this, &ConflictDialog::showDifferences);
+    connect(apply_, &QPushButton::clicked, this, &ConflictDialog::applyOnNewest);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(message_);
+    layout->addWidget(buttons);
+    setMinimumWidth(480);
+}
+
+void ConflictDialog::showDifferences() {
+    auto* d = new DiffDialog(pane_, &pane_);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+    d->compareRevisions(known_, newest_);
+}
+
+void ConflictDialog::applyOnNewest() {
+    pane_.editor().keep(number_, value_, note_, true);
+    accept();
+}
+
+ConstantsFollow::ConstantsFollow(ConstantsPane& pane) : QObject(&pane), pane_(pane) {
+    connect(DatabaseWatch::instance(), &DatabaseWatch::revision, this, &ConstantsFollow::elsewhere);
+    connect(&pane.editor(), &ConstantsEditor::conflicted, this,
+            [this](int number, qint64 value, const QString& note, const QString& why, int known, int newest) {
+                pane_.tell(tr("Not kept in the database: %1").arg(QString(why).replace(QLatin1Char('\n'), QStringLiteral("; "))), true);
+                if (offer_)
+                    offer_->close();
+                offer_ = new ConflictDialog(pane_, number, value, note, why, known, newest);
+                offer_->setAttribute(Qt::WA_DeleteOnClose);
+                offer_->open();
+            });
+}
+
+void ConstantsFollow::elsewhere(const RevisionElsewhere& r) {
+    ConstantsEditor& editor = pane_.editor();
+    const MachineStore& store = editor.store();
+    if (r.machine != store.qName())
+        return;
+    if (!editor.controller().simulated()) {
+        pane_.tell(r.text() + QStringLiteral("; ") +
+                       tr("the controller on the link keeps its own constants until they are pushed to it"),
+                   false);
+        return;
+    }
+    int revision = 0;
+    profile::MachineProfile p;
+    try {
+        const auto revisions = store.revisions();
+        if (revisions.empty())
+            return;
+        revision = revisions.front().revision;
+        p = store.load(revision);
+    } catch (const std::exception& e) {
+        pane_.tell(r.text() + QStringLiteral("; ") + QString::fromUtf8(e.what()), true);
+        return;
+    }
+    const auto shown = editor.values();
+    if (std::equal(p.c.begin(), p.c.end(), shown.begin(), shown.begin() + static_cast<std::ptrdiff_t>(p.c.size()))) {
+        store.setKnown(revision);
+        pane_.tell(r.text(), false);
+        emit followed(revision);
+        return;
+    }
+    const QString told = r.text();
+    QPointer<ConstantsFollow> self(this);
+    editor.applyAll(std::vector<std::int64_t>(p.c.begin(), p.c.end()), [self, told, revision](const QString& why) {
+        if (!self)
+            return;
+        if (!why.isEmpty()) {
+            // The window's view stays on the revision it knew: the next change is refused and offered again.
+            self->pane_.tell(told + QStringLiteral("; ") + tr("the simulated controller did not take it now: %1").arg(why),
+                             true);
+            return;
+        }
+        self->pane_.editor().store().setKnown(revision);
+        self->pane_.editor().undoStack()->clear(); // its steps were of the revision before
+        self->pane_.tell(told + QStringLiteral("; ") + tr("the constants shown are this revision's"), false);
+        emit self->followed(revision);
+    });
+}
+
+} // namespace k528::studio
