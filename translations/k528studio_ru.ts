@@ -3984,7 +3984,7 @@ Its comment stays: %3</source>
     </message>
     <message>
         <source>Not kept in the database: %1</source>
-        <translation>В базе данных не сохранено: %1</translation>
+        <translation>Не сохранено в базе данных: %1</translation>
     </message>
     <message>
         <source>The database cannot be read: only this session's attempts are listed (%1)</source>
