@@ -7,7 +7,10 @@
 // and prints what it wrote:
 //
 //   db_stress_peer --db PATH --machine grinder-205 --r 150 --seconds 10
-//   -> "revisions 412 last 412 messages 8240 extra-opens 41 busy 0 deleted 0"
+//   -> "revisions 412 last 412 messages 8240 extra-opens 41 busy 0 deleted 0
+//       failures 0 conflicts 3"
+// A change refused because `k528 db set` made a newer revision meanwhile
+// (conflicts) is applied again on top, as the user does in the studio.
 //
 // R<r> gets 1, 2, 3, … (one revision each: every value differs from the last).
 // Before each write it checks /proc/self/fd for a descriptor of the database,
@@ -89,7 +92,7 @@ int main(int argc, char** argv) {
     setenv("K528_DB", dbPath.c_str(), 1);
     const std::string absolute = fs::absolute(dbPath).string();
 
-    int revisions = 0, last = 0, busy = 0, extraOpens = 0, deleted = 0, failures = 0;
+    int revisions = 0, last = 0, busy = 0, extraOpens = 0, deleted = 0, failures = 0, conflicts = 0;
     long messages = 0;
     try {
         const auto shop = studio::ShopDatabase::at();
@@ -107,7 +110,15 @@ int main(int argc, char** argv) {
             // A revision from the constants dock.
             db::Edit e;
             e.r[r] = last + 1;
-            const studio::MachineStore::Kept k = store.keep(e, QString("stress %1").arg(last + 1));
+            const QString note = QString("stress %1").arg(last + 1);
+            studio::MachineStore::Kept k = store.keep(e, note);
+            if (k.revision == 0 && k.conflict) {
+                // `k528 db set` made a newer revision since this window read
+                // the machine: refused, and the user applies the change again
+                // on top (the choice the constants dock's refusal offers).
+                ++conflicts;
+                k = store.keep(e, note, true);
+            }
             if (k.revision > 0) {
                 ++revisions;
                 ++last;
@@ -165,8 +176,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "peer %d: %s\n", static_cast<int>(getpid()), e.what());
         ++failures;
     }
-    std::printf("revisions %d last %d messages %ld extra-opens %d busy %d deleted %d failures %d\n",
-                revisions, last, messages, extraOpens, busy, deleted, failures);
+    std::printf("revisions %d last %d messages %ld extra-opens %d busy %d deleted %d failures %d conflicts %d\n",
+                revisions, last, messages, extraOpens, busy, deleted, failures, conflicts);
     std::fflush(stdout);
     return deleted ? 2 : failures ? 1 : 0;
 }

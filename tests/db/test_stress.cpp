@@ -52,14 +52,14 @@ QStringList deletedDescriptors(qint64 pid, const QString& dbPath) {
 }
 
 struct PeerResult {
-    int revisions = -1, last = -1, busy = 0, deleted = 0, failures = 0;
+    int revisions = -1, last = -1, busy = 0, deleted = 0, failures = 0, conflicts = 0;
     long messages = -1;
 };
 
 PeerResult parsePeer(const QString& out) {
     PeerResult r;
     const QRegularExpression re("revisions (\\d+) last (\\d+) messages (\\d+) extra-opens \\d+ "
-                                "busy (\\d+) deleted (\\d+) failures (\\d+)");
+                                "busy (\\d+) deleted (\\d+) failures (\\d+) conflicts (\\d+)");
     const auto m = re.match(out);
     if (m.hasMatch()) {
         r.revisions = m.captured(1).toInt();
@@ -68,6 +68,7 @@ PeerResult parsePeer(const QString& out) {
         r.busy = m.captured(4).toInt();
         r.deleted = m.captured(5).toInt();
         r.failures = m.captured(6).toInt();
+        r.conflicts = m.captured(7).toInt();
     }
     return r;
 }
@@ -178,9 +179,11 @@ class TestStress : public QObject {
         ofGrinder.machine = "grinder-205";
         QCOMPARE(log.count(ofGrinder), std::int64_t(peerMessages));
         qInfo("%d studio(s), %.0f s: %d studio revisions, %ld messages, %d k528 db set, %d k528 "
-              "reads, busy %d (studios) %d (k528), %d /proc samples, 0 deleted descriptors",
+              "reads, busy %d (studios) %d (k528), %d refused as based on an older revision and applied "
+              "again on top, %d /proc samples, 0 deleted descriptors",
               studios, seconds, peerRevisions, peerMessages, cliSets, cliReads,
-              results[0].busy + (studios > 1 ? results[1].busy : 0), cliBusy, samples);
+              results[0].busy + (studios > 1 ? results[1].busy : 0), cliBusy,
+              results[0].conflicts + (studios > 1 ? results[1].conflicts : 0), samples);
     }
 
 private slots:
