@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 cmake --preset release
 cmake --build --preset release --parallel 2
 mkdir -p build
-xvfb-run -a -s "-screen 0 1280x800x24" ctest --preset release 2>&1 | tee build/ctest-release.log
+xvfb-run -a -s "-noreset -screen 0 1280x800x24" ctest --preset release 2>&1 | tee build/ctest-release.log
 
 fuzz_seconds="${K528_FUZZ_SECONDS:-90}"
 [ "$fuzz_seconds" -gt 0 ] || exit 0

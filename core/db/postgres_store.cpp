@@ -257,6 +257,10 @@ void PostgresStore::afterCopy() {
         conn_->exec("SELECT setval(pg_get_serial_sequence('" + t + "', 'id'), (SELECT coalesce("
                     "max(id), 0) + 1 FROM " + t + "), false)");
     }
+    // Statistics for the planner now, not when autovacuum next comes by: a
+    // freshly filled table looks empty to it, and the first opens of a copied
+    // shop read whole tables instead of one machine's rows by the index.
+    conn_->exec("ANALYZE");
 }
 
 bool PostgresStore::mayActAs(std::string_view role) {
