@@ -547,6 +547,20 @@ private slots:
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("above what the drive reaches"));
         QCOMPARE(runK528(QStringList{"db", "calc", "--discrete", "0.5"} + axis).exitCode, 2);
+        // A number out of an option's range says so and gives the range, not «not a number».
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--screw-lead", "1e-300"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--screw-lead 1e-300 is out of range: give 0.01..1000 mm"), qPrintable(r.err));
+        QVERIFY(!r.err.contains("not a number"));
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--encoder-lines", "1e400"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--encoder-lines 1e400 is out of range: give 1..1000000 lines"), qPrintable(r.err));
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--feed", "-5"});
+        QVERIFY2(r.err.contains("--feed -5 is out of range: give 0..200000 mm/min"), qPrintable(r.err));
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--gear", "two"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--gear: 'two' is not a number"), qPrintable(r.err));
+        QCOMPARE(runK528(QStringList{"db", "calc"} + axis + QStringList{"--screw-lead", "5e0"}).exitCode, 0);
     }
 
     void auditLog() {
