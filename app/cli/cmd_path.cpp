@@ -176,8 +176,6 @@ int runPath(std::span<const std::string> argv) {
     std::optional<stock::Blank> blank;
     if (!blankFor(args, setup.text, blank))
         return ExitUsage;
-    static char buffer[1 << 16];
-    std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
     proveout::Proof proof;
     try {
         proof = proveout::proveProgram(setup.profile, setup.store, setup.number, po.preview, blank);
@@ -193,7 +191,8 @@ int runPath(std::span<const std::string> argv) {
         printJson(path, proof.result, setup);
     else
         printPlain(path, proof.result, setup.lang);
-    std::fflush(stdout);
+    // Not flushed here: main() keeps the output whole and, flushing it at the
+    // end, says why a write failed (a full disk, a closed pipe).
     return path.run.status == engine::PreviewStatus::Alarm ? ExitInputErrors : ExitOk;
 }
 
