@@ -141,6 +141,39 @@ private slots:
                      ("message " + std::to_string(t.message) + " never raised").c_str());
     }
 
+    // A skipped frame («/ – кадр не будет обрабатываться») never raises an
+    // alarm, while check reports it as if it ran: the «!» key un-skips it at
+    // the panel (docs/program-language.md, «Skipped frames»). The one place
+    // check errs and the controller does not.
+    void skippedFrameIsCheckedButNeverRaised() {
+        const profile::MachineProfile prof = profile::builtin("training-lathe");
+        bool intact = true;
+        const program::ProgramStore machineStore = engine::loadStore(prof, intact);
+        const Place& main = kPlaces[0];
+        for (unsigned w = 0; w < kAll; ++w) {
+            std::string what = "skipped: ";
+            what += describe(w);
+            const auto errors = [&](const std::string& text) {
+                std::multiset<int> e;
+                for (const program::Diagnostic& d :
+                     engine::checkFileForMachine(text, {}, prof, machineStore).diagnostics)
+                    if (d.isError() && d.line == main.line)
+                        e.insert(d.manualNumber);
+                return e;
+            };
+            std::string frame = "/";
+            frame += frameText(w);
+            const std::string skipped = main.text(frame);
+            QVERIFY2(errors(skipped) == errors(main.text(frameText(w))), what.c_str());
+            const engine::FileCheck checked =
+                engine::checkFileForMachine(skipped, {}, prof, machineStore);
+            const engine::RunResult r =
+                engine::runProgram(prof, checked.parsed.store, 1, engine::RunOptions{});
+            QVERIFY2(r.alarms.empty(), what.c_str());
+            QCOMPARE(r.status, engine::RunStatus::Completed);
+        }
+    }
+
     // The dwell's X is its time (table 5), not a coordinate: G04 X… M17 in a
     // subprogram is neither 35 (X/M17) for the check nor an alarm for the
     // controller; it dwells, then returns.
