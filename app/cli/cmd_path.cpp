@@ -144,8 +144,8 @@ void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof
                      std::string(proveout::ruleId(f.rule)).c_str(), f.message(lang == Lang::Ru).c_str(),
                      f.occurrences > 1 ? (" (×" + std::to_string(f.occurrences) + ")").c_str() : "");
     for (const engine::AlarmView& a : p.run.alarms)
-        std::fprintf(stdout, "alarm %d.%s  (L%d, line %d)\n", a.number,
-                     (lang == Lang::Ru ? a.textRu : a.textEn).c_str(), a.program, a.line);
+        std::fprintf(stdout, "alarm %s  (L%d, line %d)\n",
+                     engine::alarmText(a, lang == Lang::Ru).c_str(), a.program, a.line);
     std::fprintf(stdout, "end  X%s Z%s  frames %" PRId64 "  status %s\n", mm(p.end.x).c_str(),
                  mm(p.end.z).c_str(), p.run.frames,
                  std::string(engine::previewStatusName(p.run.status)).c_str());

@@ -97,7 +97,7 @@ void printPlain(const engine::RunResult& r, Lang lang) {
     if (r.alarms.empty())
         std::printf("alarms     none\n");
     for (const engine::AlarmView& a : r.alarms) {
-        std::printf("alarm      %d.%s", a.number, (lang == Lang::Ru ? a.textRu : a.textEn).c_str());
+        std::printf("alarm      %s", engine::alarmText(a, lang == Lang::Ru).c_str());
         if (a.program > 0)
             std::printf("  (L%d, line %d)", a.program, a.line);
         std::printf("\n");

@@ -246,6 +246,24 @@ private slots:
         QVERIFY(r.out.contains("M to PLC"));
     }
 
+    // An alarm line is the panel's text (engine::alarmText): «37. Ошибка N
+    // ДОС» with the blank table М.1 prints, «46.Переполнение» without.
+    void plainAlarmLines() {
+        Files f;
+        const QString p = f.write("ovf.k528", "%L3\nN1 R1=2147483647\nN2 R1=R1+1\n");
+        const auto o = runK528({"run", p});
+        QCOMPARE(o.exitCode, 1);
+        QVERIFY2(o.out.contains(QString("\nalarm      46.Переполнение  (L3, line 3)\n")),
+                 qPrintable(o.out));
+        // Both encoders on one channel (C69 = C17 = 1): 37 at power-on.
+        const auto e = runK528({"run", "--param", "17=1", "--param", "69=1", p});
+        QCOMPARE(e.exitCode, 1);
+        QVERIFY2(e.out.contains(QString("\nalarm      37. Ошибка N ДОС\n")), qPrintable(e.out));
+        const auto en = runK528({"run", "--lang", "en", "--param", "17=1", "--param", "69=1", p});
+        QVERIFY2(en.out.contains(QString("\nalarm      37. N encoder error\n")),
+                 qPrintable(en.out));
+    }
+
     // --trace FILE.csv (docs/engine.md): one row per tick with the columns of
     // cli.md; its largest |following error| per axis is the engine's maximum
     // (the JSON's max_following_error) within one discrete (0.001 mm).

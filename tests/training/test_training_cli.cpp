@@ -113,19 +113,23 @@ private slots:
             QVERIFY(d.value("text_ru").toString().contains("L1 N15"));
             QVERIFY(d.value("text_en").toString().contains("over-cut"));
         }
-        // The same class as a table: one row a student and the count passed.
+        // The table and the trainer's CSV are other renderings of the same
+        // grades: shown on the first six of the class (four passed, two not),
+        // so the sanitizer build does not simulate the class three times.
         args.removeAll("--json");
+        args = args.mid(0, 4 + 6); // grade, the exercise, --jobs 2, six files
         const CliResult t = runK528(args + QStringList{"--lang", "en"});
         QCOMPARE(t.exitCode, 1);
-        QVERIFY2(t.out.contains("Passed: 20/30"), qPrintable(t.out));
-        QVERIFY(t.out.contains("student30"));
+        QVERIFY2(t.out.contains("Passed: 4/6"), qPrintable(t.out));
+        QVERIFY(t.out.contains("student06"));
+        QVERIFY(!t.out.contains("student07"));
         // The trainer's record: one CSV line a student.
         QStringList csvArgs = args;
         csvArgs << "--csv" << "--lang" << "en";
         const CliResult c = runK528(csvArgs);
         QCOMPARE(c.exitCode, 1);
         const QStringList lines = c.out.split('\n', Qt::SkipEmptyParts);
-        QCOMPARE(lines.size(), 31);
+        QCOMPARE(lines.size(), 7);
         QCOMPARE(lines[0], QStringLiteral("student,file,exercise,score,passed,status,cycle_time_s,deductions"));
         QVERIFY2(lines[1].startsWith("student01,") &&
                      lines[1].contains("student01.k528,lathe-03-step,100,yes,completed,"),
