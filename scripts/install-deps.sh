@@ -20,6 +20,7 @@ packages=(
     libmosquitto-dev mosquitto mosquitto-clients          # MQTT: k528 shop publish; its test broker and subscriber
     python3-pymodbus python3-serial python3-serial-asyncio # a foreign Modbus RTU controller in tests
     dpkg-dev file                                         # packaging (dpkg-shlibdeps) and its tests
+    scdoc lintian appstream man-db                        # man pages (docs/man); the package's checks
     clang libclang-rt-14-dev                              # libFuzzer targets (optional preset)
     fonts-dejavu-core                                     # a font with Cyrillic for offscreen rendering
 )

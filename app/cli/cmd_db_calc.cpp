@@ -13,9 +13,11 @@
 #include "util/json.h"
 #include "util/utf8.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <string_view>
 
 namespace k528::cli {
 
@@ -115,6 +117,73 @@ Json accelJson(const calc::AccelResult& r) {
     return j;
 }
 
+// The range each number option accepts: the simulation key it becomes when a
+// machine keeps it (profile-format.md), so a value given here could be stored;
+// speeds up to the fastest drive the registry knows.
+struct OptionRange {
+    std::string_view option;
+    std::string_view key; // "" when `min`..`max` below
+    double min = 0, max = 0;
+    std::string_view unit;
+};
+constexpr OptionRange kOptionRanges[] = {
+    {"--screw-lead", "x.screw_lead_mm", 0, 0, "mm"},
+    {"--gear", "x.gear_ratio", 0, 0, ""},
+    {"--encoder-lines", "x.encoder_lines", 0, 0, "lines"},
+    {"--drive-volts", "x.drive_max_volts", 0, 0, "V"},
+    {"--drive-speed", "x.drive_max_speed_mm_per_min", 0, 0, "mm/min"},
+    {"--kv", "x.kv", 0, 0, "(m/min)/mm"},
+    {"--feed", "", 0, 200000, "mm/min"},
+    {"--rapid", "", 0, 200000, "mm/min"},
+    {"--auto-rapid", "", 0, 200000, "mm/min"},
+    {"--home-start", "", 0, 200000, "mm/min"},
+    {"--home-creep", "", 0, 200000, "mm/min"},
+    {"--dac-max", "", 0, 2047, ""},
+    {"--dac-limit-percent", "", 0, 100, "%"},
+};
+
+// Reads `text` of `option` into `target`; "" or the message: not a number, or a
+// number outside the option's range (naming the range).
+std::string calcNumber(std::string_view option, const std::string& text, double& target) {
+    const OptionRange* range = nullptr;
+    for (const auto& r : kOptionRanges)
+        if (r.option == option)
+            range = &r;
+    double lo = -1e300, hi = 1e300;
+    std::string unit;
+    if (range) {
+        lo = range->min;
+        hi = range->max;
+        unit = std::string(range->unit);
+        if (const profile::SimulationKey* k =
+                range->key.empty() ? nullptr : profile::findSimulationKey(range->key)) {
+            lo = k->min;
+            hi = k->max;
+        }
+    }
+    const auto bound = [](double x) { // 1000000, not 1e+06
+        return x == std::floor(x) && std::fabs(x) < 1e15 ? std::to_string(static_cast<long long>(x))
+                                                          : fmt(x);
+    };
+    const std::string rangeText = bound(lo) + ".." + bound(hi) + (unit.empty() ? "" : " " + unit);
+    const char* b = text.data();
+    const char* e = text.data() + text.size();
+    if (b != e && *b == '+')
+        ++b;
+    double v = 0;
+    // Exponent form ("1e-3") is a number too; "nan" and "inf" are not.
+    const auto [ptr, ec] = std::from_chars(b, e, v, std::chars_format::general);
+    const bool whole = b != e && ptr == e;
+    if (whole && ec == std::errc::result_out_of_range)
+        return std::string(option) + " " + text + " is out of range: give " + rangeText;
+    if (!whole || ec != std::errc() || !std::isfinite(v))
+        return std::string(option) + ": '" + text + "' is not a number";
+    if (v < lo || v > hi)
+        return std::string(option) + " " + text + " is out of range: give " + rangeText;
+    target = v;
+    return {};
+}
+
 } // namespace
 
 int runDbCalc(std::span<const std::string> argv) {
@@ -139,12 +208,11 @@ int runDbCalc(std::span<const std::string> argv) {
     }
     const auto number = [&](const char* option, double& target) -> bool {
         if (const auto v = a.value(option)) {
-            const auto n = parseNumber(*v);
-            if (!n || !std::isfinite(*n)) {
-                usageError(std::string(option) + ": '" + *v + "' is not a number");
+            const std::string error = calcNumber(option, *v, target);
+            if (!error.empty()) {
+                usageError(error);
                 return false;
             }
-            target = *n;
         }
         return true;
     };

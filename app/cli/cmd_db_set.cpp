@@ -9,6 +9,7 @@
 #include "db/explain.h"
 #include "db_cli.h"
 #include "profile/diff.h"
+#include "profile/settings.h"
 #include "profile/validate.h"
 #include "util/json.h"
 
@@ -17,6 +18,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <string_view>
+#include <vector>
 
 namespace k528::cli::dbcli {
 
@@ -100,6 +103,66 @@ std::string parseItem(const std::string& item, db::Edit& e) {
            "simulation key";
 }
 
+// Edit distance with a swap of two neighbours as one step ("tilte" is one step
+// from "title"): how far a typed key is from a known one.
+std::size_t typoDistance(std::string_view a, std::string_view b) {
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i)
+        d[i][0] = i;
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        d[0][j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    return d[a.size()][b.size()];
+}
+
+// The known items a mistyped key is close to: the registry's simulation keys
+// and `title` (the one named item that looks like a key).
+std::vector<std::string> closeKeys(std::string_view key) {
+    std::vector<std::pair<std::size_t, std::string>> found;
+    const std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
+    const auto consider = [&](std::string_view known) {
+        if (const std::size_t dist = typoDistance(key, known); dist <= limit)
+            found.emplace_back(dist, std::string(known));
+    };
+    consider("title");
+    for (const auto& k : profile::simulationKeys())
+        consider(k.key);
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < found.size() && i < 5; ++i)
+        out.push_back(found[i].second);
+    return out;
+}
+
+// A simulation key the registry does not know is refused before anything is
+// written: a typo saved as a revision stays in the history and warns on every
+// later change. "" when every key set is known (removing one is always allowed:
+// that is how a stored typo goes away).
+std::string unknownKeyError(const db::Edit& e) {
+    for (const auto& [key, value] : e.simulation) {
+        if (!value || profile::findSimulationKey(key))
+            continue;
+        std::string text = "'" + key + "' is not a known simulation key; nothing was saved";
+        const auto close = closeKeys(key);
+        if (!close.empty()) {
+            text += " (did you mean ";
+            for (std::size_t i = 0; i < close.size(); ++i)
+                text += (i == 0 ? "" : i + 1 == close.size() ? " or " : ", ") + close[i];
+            text += "?)";
+        }
+        text += ". The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway";
+        return text;
+    }
+    return {};
+}
+
 void printRejection(const db::ValidationError& e, Lang lang, const std::string& where) {
     const std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
     std::fprintf(stderr, "k528: %s\n", first.c_str());
@@ -110,7 +173,7 @@ void printRejection(const db::ValidationError& e, Lang lang, const std::string& 
 } // namespace
 
 int cmdSet(std::span<const std::string> argv) {
-    const Args a(argv, {"--allow-errors"}, {"--db", "--author", "--lang"});
+    const Args a(argv, {"--allow-errors", "--allow-unknown"}, {"--db", "--author", "--lang"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() < 2)
@@ -129,6 +192,9 @@ int cmdSet(std::span<const std::string> argv) {
             return usageError(item.substr(0, item.find('=')) + " is given twice ('" + it->second +
                               "' and '" + item + "'); give each item once");
     }
+    if (!a.has("--allow-unknown"))
+        if (const std::string err = unknownKeyError(edit); !err.empty())
+            return usageError(err);
     DbTarget t;
     auto d = openDbOf(a, t, false, a.value("--author").value_or(""), lang);
     if (!d)

@@ -144,8 +144,8 @@ void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof
                      std::string(proveout::ruleId(f.rule)).c_str(), f.message(lang == Lang::Ru).c_str(),
                      f.occurrences > 1 ? (" (×" + std::to_string(f.occurrences) + ")").c_str() : "");
     for (const engine::AlarmView& a : p.run.alarms)
-        std::fprintf(stdout, "alarm %d.%s  (L%d, line %d)\n", a.number,
-                     (lang == Lang::Ru ? a.textRu : a.textEn).c_str(), a.program, a.line);
+        std::fprintf(stdout, "alarm %s  (L%d, line %d)\n",
+                     engine::alarmText(a, lang == Lang::Ru).c_str(), a.program, a.line);
     std::fprintf(stdout, "end  X%s Z%s  frames %" PRId64 "  status %s\n", mm(p.end.x).c_str(),
                  mm(p.end.z).c_str(), p.run.frames,
                  std::string(engine::previewStatusName(p.run.status)).c_str());
@@ -176,8 +176,6 @@ int runPath(std::span<const std::string> argv) {
     std::optional<stock::Blank> blank;
     if (!blankFor(args, setup.text, blank))
         return ExitUsage;
-    static char buffer[1 << 16];
-    std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
     proveout::Proof proof;
     try {
         proof = proveout::proveProgram(setup.profile, setup.store, setup.number, po.preview, blank);
@@ -193,7 +191,8 @@ int runPath(std::span<const std::string> argv) {
         printJson(path, proof.result, setup);
     else
         printPlain(path, proof.result, setup.lang);
-    std::fflush(stdout);
+    // Not flushed here: main() keeps the output whole and, flushing it at the
+    // end, says why a write failed (a full disk, a closed pipe).
     return path.run.status == engine::PreviewStatus::Alarm ? ExitInputErrors : ExitOk;
 }
 

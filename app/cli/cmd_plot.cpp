@@ -1,11 +1,12 @@
 // k528 plot [options] --out FILE.png FILE — the backplot offscreen to a PNG
 // (shared/spec/cli.md). The path is computed here, in the core, exactly as
 // `k528 path` does it; the drawing is done by k528-plot (the VTK scene of the
-// studio's backplot, app/studio/backplot/) which this runs from k528's own
-// folder and feeds through a pipe (toolpath/path_io.h), so that `k528`
+// studio's backplot, app/studio/backplot/), a helper found as
+// helper_path.h says, which this feeds through a pipe (toolpath/path_io.h), so that `k528`
 // never loads VTK. Debian's VTK needs an X server: run under
 // xvfb-run -a -s "-screen 0 1280x800x24".
 #include "cli.h"
+#include "helper_path.h"
 #include "program_setup.h"
 #include "stock/stock.h"
 #include "toolpath/path_io.h"
@@ -56,12 +57,10 @@ int runPlot(std::span<const std::string> argv) {
         if (const auto b = stock::findUcg(text))
             ucg = stock::formatUcg(*b);
 
-    std::error_code ec;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-    const std::string renderer = (self.parent_path() / "k528-plot").string();
-    if (ec || access(renderer.c_str(), X_OK) != 0) {
-        std::fprintf(stderr, "k528: plot needs the renderer %s (built with the desktop program)\n",
-                     renderer.c_str());
+    const std::string renderer = findHelper("k528-plot").string();
+    if (renderer.empty()) {
+        std::fprintf(stderr, "k528: plot needs the renderer k528-plot (built with the desktop program; looked for %s)\n",
+                     helperSearchText("k528-plot").c_str());
         return ExitUsage;
     }
     int fd[2];

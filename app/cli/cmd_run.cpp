@@ -4,6 +4,7 @@
 #include "args.h"
 #include "catalog/messages.h"
 #include "cli.h"
+#include "output_file.h"
 #include "engine/program_check.h"
 #include "machine_profile.h"
 #include "engine/rparams.h"
@@ -96,7 +97,7 @@ void printPlain(const engine::RunResult& r, Lang lang) {
     if (r.alarms.empty())
         std::printf("alarms     none\n");
     for (const engine::AlarmView& a : r.alarms) {
-        std::printf("alarm      %d.%s", a.number, (lang == Lang::Ru ? a.textRu : a.textEn).c_str());
+        std::printf("alarm      %s", engine::alarmText(a, lang == Lang::Ru).c_str());
         if (a.program > 0)
             std::printf("  (L%d, line %d)", a.program, a.line);
         std::printf("\n");
@@ -215,38 +216,34 @@ int runRun(std::span<const std::string> argv) {
         number = parsed.store.firstWritten();
     }
 
-    // --trace FILE.csv: one row per tick (machine/trace.h, docs/engine.md).
-    std::FILE* traceFile = nullptr;
+    // --trace FILE.csv: one row per tick (machine/trace.h, docs/engine.md),
+    // written beside the file and renamed over it when whole (output_file.h).
+    OutputStream traceOut;
     const auto tracePath = args.value("--trace");
     if (tracePath) {
-        traceFile = std::fopen(tracePath->c_str(), "w");
-        if (!traceFile) {
-            std::fprintf(stderr, "k528: cannot write the trace %s\n", tracePath->c_str());
+        std::string error;
+        if (!traceOut.open(*tracePath, error)) {
+            std::fprintf(stderr, "k528: the trace: %s\n", error.c_str());
             return ExitUsage;
         }
     }
     engine::RunResult result;
     try {
-        if (traceFile) {
-            machine::TraceRecorder trace(0, traceFile);
+        if (tracePath) {
+            machine::TraceRecorder trace(0, traceOut.file());
             result = machine::runProgramTraced(prof, parsed.store, number, options, trace);
-            const bool failed = trace.writeFailed() | (std::fclose(traceFile) != 0);
-            traceFile = nullptr;
-            if (failed) {
-                std::fprintf(stderr, "k528: cannot write the trace %s\n", tracePath->c_str());
+            std::string error;
+            if (!traceOut.commit(error)) {
+                std::fprintf(stderr, "k528: the trace: %s\n", error.c_str());
                 return ExitUsage;
             }
         } else {
             result = machine::runProgram(prof, parsed.store, number, options);
         }
     } catch (const plc::DescriptionError& e) {
-        if (traceFile)
-            std::fclose(traceFile);
         std::fprintf(stderr, "k528: machine description %s\n", e.what());
         return ExitUsage;
     } catch (const std::invalid_argument& e) {
-        if (traceFile)
-            std::fclose(traceFile);
         return usageError(e.what());
     }
     if (asJson)

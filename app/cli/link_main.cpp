@@ -1,7 +1,8 @@
 // k528-link: the Qt half of `k528 serve` and `k528 link` (docs/link.md). The
 // k528 command line is plain C++ and starts without Qt; these two commands
 // need Qt's event loop and the plugin loader, so k528 runs this program
-// (next to it, or in its libexec folder) with the same arguments.
+// (next to it in the build tree, in /usr/lib/k528studio when installed:
+// helper_path.h) with the same arguments.
 #include "cli.h"
 #include "link_line.h"
 #include "output_file.h"

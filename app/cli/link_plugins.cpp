@@ -7,6 +7,9 @@
 #include <QPluginLoader>
 #include <QProcessEnvironment>
 
+#ifndef K528_HELPER_DIR_FROM_BIN
+#define K528_HELPER_DIR_FROM_BIN "../lib/k528studio"
+#endif
 #ifndef K528_PLUGIN_INSTALL_DIR
 #define K528_PLUGIN_INSTALL_DIR ""
 #endif
@@ -18,8 +21,13 @@ QStringList searchPath() {
     const QString env = qEnvironmentVariable("K528_PLUGIN_PATH");
     if (!env.isEmpty())
         dirs << env.split(QLatin1Char(':'), Qt::SkipEmptyParts);
+    // The build tree (build/bin and build/plugins), then the installed layout
+    // seen from either program: k528-link lives in the helper folder, whose
+    // plugins/ is beside it; the studio in /usr/bin reaches it as k528 reaches
+    // its helpers (helper_path.h).
     const QString bin = QCoreApplication::applicationDirPath();
-    dirs << QDir::cleanPath(bin + "/../plugins") << QDir::cleanPath(bin + "/../lib/k528studio/plugins");
+    dirs << QDir::cleanPath(bin + "/../plugins") << QDir::cleanPath(bin + "/plugins")
+         << QDir::cleanPath(bin + "/" K528_HELPER_DIR_FROM_BIN "/plugins");
     if (QString(K528_PLUGIN_INSTALL_DIR) != "")
         dirs << QStringLiteral(K528_PLUGIN_INSTALL_DIR);
     dirs.removeDuplicates();

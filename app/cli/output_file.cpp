@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,7 +18,7 @@ namespace k528::cli {
 namespace {
 
 // Writes all of `text` to fd; errno is kept on failure.
-bool writeAll(int fd, const std::string& text) {
+bool writeAll(int fd, std::string_view text) {
     std::size_t done = 0;
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
@@ -31,91 +32,140 @@ bool writeAll(int fd, const std::string& text) {
     return true;
 }
 
-bool writeDirectly(const std::string& path, const std::string& text, std::string& error) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-    if (fd < 0) {
-        error = "cannot write " + path + ": " + std::strerror(errno);
+} // namespace
+
+OutputStream::~OutputStream() {
+    abandon();
+}
+
+void OutputStream::abandon() {
+    if (file_)
+        std::fclose(file_);
+    file_ = nullptr;
+    if (fd_ >= 0)
+        ::close(fd_);
+    fd_ = -1;
+    if (!tmp_.empty())
+        ::unlink(tmp_.c_str());
+    tmp_.clear();
+}
+
+ssize_t OutputStream::cookieWrite(void* self, const char* data, std::size_t size) {
+    auto* o = static_cast<OutputStream*>(self);
+    if (!writeAll(o->fd_, std::string_view(data, size))) {
+        if (o->firstErrno_ == 0)
+            o->firstErrno_ = errno;
+        return -1;
+    }
+    return static_cast<ssize_t>(size);
+}
+
+bool OutputStream::open(const std::string& path, std::string& error) {
+    abandon();
+    path_ = path;
+    firstErrno_ = 0;
+    const auto fail = [&](const std::string& why) {
+        error = "cannot write " + path + ": " + why;
+        abandon();
+        return false;
+    };
+    struct stat st {};
+    existed_ = ::stat(path.c_str(), &st) == 0; // follows links
+    if (!existed_ && errno != ENOENT)
+        return fail(std::strerror(errno));
+    mode_ = st.st_mode;
+    bool direct = false;
+    if (existed_) {
+        if (S_ISDIR(st.st_mode))
+            return fail("it is a directory; give a file name");
+        direct = S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode);
+        if (!direct && !S_ISREG(st.st_mode))
+            return fail("it is not a regular file, a FIFO or a character device");
+    }
+    if (direct) {
+        // A FIFO or a device (/dev/stdout, /dev/full, a pipe) is written, never replaced.
+        fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd_ < 0)
+            return fail(std::strerror(errno));
+    } else {
+        // The real file: a link's target (a dangling link: the file it names).
+        std::error_code ec;
+        fs::path real = path;
+        for (int hops = 0; hops < 40 && fs::is_symlink(real, ec); ++hops) {
+            const fs::path to = fs::read_symlink(real, ec);
+            if (ec)
+                break;
+            real = to.is_absolute() ? to : real.parent_path() / to;
+        }
+        real_ = real.string();
+        const fs::path dir = real.has_parent_path() ? real.parent_path() : fs::path(".");
+        std::string tmpName = ".";
+        tmpName.append(real.filename().string()).append(".k528-XXXXXX");
+        std::string tmp = (dir / tmpName).string();
+        fd_ = ::mkstemp(tmp.data());
+        if (fd_ < 0)
+            return fail("cannot create a file in its folder " + dir.string() + ": " +
+                        std::strerror(errno));
+        tmp_ = tmp;
+    }
+    const cookie_io_functions_t io{nullptr, &OutputStream::cookieWrite, nullptr, nullptr};
+    file_ = ::fopencookie(this, "w", io);
+    if (!file_)
+        return fail(std::strerror(errno));
+    return true;
+}
+
+bool OutputStream::commit(std::string& error) {
+    if (!file_) {
+        error = "cannot write " + path_ + ": it is not open";
         return false;
     }
-    bool ok = writeAll(fd, text);
-    int e = errno;
-    if (::close(fd) != 0 && ok) {
+    errno = 0;
+    int e = 0;
+    const bool flushFailed = std::fflush(file_) != 0 || std::ferror(file_);
+    if (flushFailed)
+        e = firstErrno_ != 0 ? firstErrno_ : errno;
+    std::fclose(file_); // the cookie has nothing to close; the descriptor is ours
+    file_ = nullptr;
+    bool ok = !flushFailed;
+    if (ok && !tmp_.empty()) {
+        if (existed_ && ::fchmod(fd_, mode_ & 07777) != 0) {
+            ok = false;
+            e = errno;
+        } else if (!existed_) {
+            // A new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
+            const mode_t mask = ::umask(0);
+            ::umask(mask);
+            ::fchmod(fd_, 0666 & ~mask);
+        }
+        if (ok && ::fsync(fd_) != 0) {
+            ok = false;
+            e = errno;
+        }
+    }
+    if (::close(fd_) != 0 && ok) {
         ok = false;
         e = errno;
     }
-    if (!ok)
-        error = "cannot write " + path + ": " + std::strerror(e);
+    fd_ = -1;
+    if (ok && !tmp_.empty() && ::rename(tmp_.c_str(), real_.c_str()) != 0) {
+        ok = false;
+        e = errno;
+    }
+    if (ok)
+        tmp_.clear(); // renamed: nothing to remove
+    else
+        error = "cannot write " + path_ + ": " + (e != 0 ? std::strerror(e) : "a write failed");
+    abandon();
     return ok;
 }
 
-} // namespace
-
 bool writeOutputFile(const std::string& path, const std::string& text, std::string& error) {
-    struct stat st {};
-    const bool exists = ::stat(path.c_str(), &st) == 0; // follows links
-    if (!exists && errno != ENOENT) {
-        error = "cannot write " + path + ": " + std::strerror(errno);
+    OutputStream out;
+    if (!out.open(path, error))
         return false;
-    }
-    if (exists) {
-        if (S_ISDIR(st.st_mode)) {
-            error = "cannot write " + path + ": it is a directory; give a file name";
-            return false;
-        }
-        if (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode))
-            return writeDirectly(path, text, error);
-        if (!S_ISREG(st.st_mode)) {
-            error = "cannot write " + path + ": it is not a regular file, a FIFO or a character device";
-            return false;
-        }
-    }
-    // The real file: a link's target (a dangling link: the file it names).
-    std::error_code ec;
-    fs::path real = path;
-    for (int hops = 0; hops < 40 && fs::is_symlink(real, ec); ++hops) {
-        const fs::path to = fs::read_symlink(real, ec);
-        if (ec)
-            break;
-        real = to.is_absolute() ? to : real.parent_path() / to;
-    }
-    const fs::path dir = real.has_parent_path() ? real.parent_path() : fs::path(".");
-    std::string tmpName = ".";
-    tmpName.append(real.filename().string()).append(".k528-XXXXXX");
-    std::string tmp = (dir / tmpName).string();
-    const int fd = ::mkstemp(tmp.data());
-    if (fd < 0) {
-        error = "cannot write " + path + ": cannot create a file in its folder " + dir.string() +
-                ": " + std::strerror(errno);
-        return false;
-    }
-    bool ok = writeAll(fd, text);
-    int e = errno;
-    if (ok && exists && ::fchmod(fd, st.st_mode & 07777) != 0) {
-        ok = false;
-        e = errno;
-    } else if (ok && !exists) {
-        // A new file gets the usual permissions (0666 less the umask), not mkstemp's 0600.
-        const mode_t mask = ::umask(0);
-        ::umask(mask);
-        ::fchmod(fd, 0666 & ~mask);
-    }
-    if (ok && ::fsync(fd) != 0) {
-        ok = false;
-        e = errno;
-    }
-    if (::close(fd) != 0 && ok) {
-        ok = false;
-        e = errno;
-    }
-    if (ok && ::rename(tmp.c_str(), real.c_str()) != 0) {
-        ok = false;
-        e = errno;
-    }
-    if (!ok) {
-        ::unlink(tmp.c_str());
-        error = "cannot write " + path + ": " + std::strerror(e);
-    }
-    return ok;
+    std::fwrite(text.data(), 1, text.size(), out.file());
+    return out.commit(error);
 }
 
 int finishStandardOutput(int exitCode) {

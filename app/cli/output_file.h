@@ -4,7 +4,9 @@
 // the file the user gave, never a temporary one). docs/cli-decisions.md.
 #pragma once
 
+#include <cstdio>
 #include <string>
+#include <sys/types.h>
 
 namespace k528::cli {
 
@@ -19,6 +21,40 @@ namespace k528::cli {
 //  - a directory, a block device or a socket is refused.
 // On failure returns false with `error` = "cannot write <path>: <why>".
 bool writeOutputFile(const std::string& path, const std::string& text, std::string& error);
+
+// The same for a file written piece by piece through stdio (`run --trace`, of
+// a length not known in advance): open() gives a FILE* writing to a temporary
+// file beside the real path (or directly to a FIFO or a character device);
+// commit() flushes, syncs, closes and renames it over the real path. The first
+// failing write's errno is kept, so the message has the system's reason even
+// when stdio found the failure long before commit(). Not committed (an error,
+// an exception): the temporary file is removed and the old file stays whole.
+class OutputStream {
+public:
+    OutputStream() = default;
+    OutputStream(const OutputStream&) = delete;
+    OutputStream& operator=(const OutputStream&) = delete;
+    ~OutputStream();
+
+    // false with `error` = "cannot write <path>: <why>".
+    bool open(const std::string& path, std::string& error);
+    std::FILE* file() const { return file_; }
+    // false with `error` = "cannot write <path>: <why>"; the target is untouched then.
+    bool commit(std::string& error);
+
+private:
+    static ssize_t cookieWrite(void* self, const char* data, std::size_t size);
+    void abandon();
+
+    std::string path_; // as the user gave it
+    std::string real_; // a link's target
+    std::string tmp_;  // "" when written directly
+    int fd_ = -1;
+    std::FILE* file_ = nullptr;
+    int firstErrno_ = 0;
+    bool existed_ = false;
+    mode_t mode_ = 0;
+};
 
 // Everything a command printed reaches standard output, or the run fails:
 // the one place that flushes it and checks for a lost write (a full disk,

@@ -1,5 +1,6 @@
 // k528studio — the K528 Studio desktop workstation.
 #include <QApplication>
+#include <QCoreApplication>
 #include <QCommandLineParser>
 #include <QGuiApplication>
 #include <QScreen>
@@ -23,13 +24,26 @@
 #include "session/machine_source.h"
 #include "util/version.h"
 
+namespace {
+
+int listPlugins() {
+    for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
+        if (f.plugin)
+            std::printf("plugin %s %s: %s (%s)\n", qPrintable(f.name), qPrintable(f.version),
+                        qPrintable(f.transport), qPrintable(f.file));
+        else
+            std::printf("refused %s: %s\n", qPrintable(f.file), qPrintable(f.refused));
+    std::printf("searched: %s\n", qPrintable(k528::linkplugin::searchPath().join(", ")));
+    return 0;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
-    k528::studio::backplot::VtkGlWidget::setDefaultSurfaceFormat(); // before QApplication (VTK)
-    QApplication app(argc, argv);
-    QApplication::setOrganizationName("K528Studio");
-    QApplication::setApplicationName("k528studio");
-    QApplication::setApplicationDisplayName("K528 Studio");
-    QApplication::setApplicationVersion(QString::fromLatin1(k528::version_string));
+    // Set before any application object: the texts --version and --help print.
+    QCoreApplication::setOrganizationName("K528Studio");
+    QCoreApplication::setApplicationName("k528studio");
+    QCoreApplication::setApplicationVersion(QString::fromLatin1(k528::version_string));
 
     QCommandLineParser cli;
     cli.setApplicationDescription("K528 Studio: workstation for the Konstar K528-05 controller.");
@@ -64,17 +78,29 @@ int main(int argc, char** argv) {
                                 "location");
     cli.addOptions({langOption, profileOption, workspaceOption, shotOption, delayOption, firstFrameOption, pluginsOption,
                     runOption, dbOption});
-    cli.process(app);
-    if (cli.isSet(pluginsOption)) {
-        for (const k528::linkplugin::Found& f : k528::linkplugin::discover())
-            if (f.plugin)
-                std::printf("plugin %s %s: %s (%s)\n", qPrintable(f.name), qPrintable(f.version),
-                            qPrintable(f.transport), qPrintable(f.file));
-            else
-                std::printf("refused %s: %s\n", qPrintable(f.file), qPrintable(f.refused));
-        std::printf("searched: %s\n", qPrintable(k528::linkplugin::searchPath().join(", ")));
-        return 0;
+    // --help, --version and --list-plugins only print: they are answered with
+    // a QCoreApplication, before QApplication opens a display, so that they
+    // work where there is none (a build server, ssh, a package check).
+    // Anything else — a parse error too, since QApplication first takes its
+    // own options (-platform, -display) out of argv — goes on to QApplication.
+    {
+        QStringList raw;
+        for (int i = 0; i < argc; ++i)
+            raw << QString::fromLocal8Bit(argv[i]);
+        if (cli.parse(raw) && (cli.isSet("help") || cli.isSet("help-all") || cli.isSet("version") ||
+                               cli.isSet(pluginsOption))) {
+            QCoreApplication core(argc, argv);
+            cli.process(core); // prints help or the version and exits
+            return listPlugins();
+        }
     }
+
+    k528::studio::backplot::VtkGlWidget::setDefaultSurfaceFormat(); // before QApplication (VTK)
+    QApplication app(argc, argv);
+    QApplication::setApplicationDisplayName("K528 Studio");
+    cli.process(app);
+    if (cli.isSet(pluginsOption))
+        return listPlugins();
 
     const QString lang = cli.isSet(langOption) ? cli.value(langOption) : k528::studio::savedOrSystemLanguage();
     if (!k528::studio::setLanguage(lang)) {

@@ -1,8 +1,19 @@
 #include "engine/alarms.h"
 
+#include "catalog/messages.h"
+#include "engine/views.h"
+
 #include <algorithm>
 
 namespace k528::engine {
+
+std::string alarmText(const AlarmView& a, bool russian) {
+    if (!russian)
+        return std::to_string(a.number) + ". " + a.textEn;
+    if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(a.number))
+        return m->panelText();
+    return std::to_string(a.number) + "." + a.textRu;
+}
 
 std::string_view alarmCategoryName(AlarmCategory c) {
     switch (c) {

@@ -72,6 +72,13 @@ struct AlarmView {
     std::string textEn;
 };
 
+// The message as one line with its number, for every place that shows one
+// (the panel's lists, `k528 run` and `k528 path`, the desktop): Russian as
+// the panel and table М.1 print it — «37. Ошибка N ДОС» but «39.Ошибка N
+// маховика», the blank after the dot where the manual has one — and English
+// always with the blank («37. N encoder error»).
+std::string alarmText(const AlarmView& a, bool russian);
+
 // The PLC messages as the panel lists them (bit k-1 = message k).
 struct PlcMessagesView {
     std::uint32_t alarms = 0;        // shown (latched) machine alarms, Z1900/Z1901

@@ -246,6 +246,24 @@ private slots:
         QVERIFY(r.out.contains("M to PLC"));
     }
 
+    // An alarm line is the panel's text (engine::alarmText): «37. Ошибка N
+    // ДОС» with the blank table М.1 prints, «46.Переполнение» without.
+    void plainAlarmLines() {
+        Files f;
+        const QString p = f.write("ovf.k528", "%L3\nN1 R1=2147483647\nN2 R1=R1+1\n");
+        const auto o = runK528({"run", p});
+        QCOMPARE(o.exitCode, 1);
+        QVERIFY2(o.out.contains(QString("\nalarm      46.Переполнение  (L3, line 3)\n")),
+                 qPrintable(o.out));
+        // Both encoders on one channel (C69 = C17 = 1): 37 at power-on.
+        const auto e = runK528({"run", "--param", "17=1", "--param", "69=1", p});
+        QCOMPARE(e.exitCode, 1);
+        QVERIFY2(e.out.contains(QString("\nalarm      37. Ошибка N ДОС\n")), qPrintable(e.out));
+        const auto en = runK528({"run", "--lang", "en", "--param", "17=1", "--param", "69=1", p});
+        QVERIFY2(en.out.contains(QString("\nalarm      37. N encoder error\n")),
+                 qPrintable(en.out));
+    }
+
     // --trace FILE.csv (docs/engine.md): one row per tick with the columns of
     // cli.md; its largest |following error| per axis is the engine's maximum
     // (the JSON's max_following_error) within one discrete (0.001 mm).
@@ -303,7 +321,36 @@ private slots:
         // A trace that cannot be written: exit 2 with the reason.
         const auto bad = runK528({"run", "--no-home", "--trace", f.dir.filePath("no/such/t.csv"), p});
         QCOMPARE(bad.exitCode, 2);
-        QVERIFY(bad.err.contains("cannot write the trace"));
+        QVERIFY2(bad.err.contains("the trace: cannot write " + f.dir.filePath("no/such/t.csv")) &&
+                     bad.err.contains("No such file or directory"),
+                 qPrintable(bad.err));
+    }
+
+    // A trace or an output that is lost says the file and the system's reason,
+    // and a trace replaces its file only when whole (written beside it, renamed).
+    void lostWritesSayWhy() {
+        Files f;
+        const QString p = f.write("move.k528", "%L1\nN1 G1 Z-20 FZ6000\nN2 G0 X40\n");
+        auto r = runK528({"run", "--no-home", "--trace", "/dev/full", p});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot write /dev/full: No space left on device"), qPrintable(r.err));
+        const QString csv = f.dir.filePath("t.csv");
+        {
+            QFile old(csv);
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write("old trace\n");
+        }
+        r = runK528({"run", "--no-home", "--param", "8=1", "--param", "60=1", "--trace", csv, p});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile done(csv);
+        QVERIFY(done.open(QIODevice::ReadOnly));
+        QVERIFY(done.readAll().startsWith("t_ms,"));
+        QCOMPARE(QDir(f.dir.path()).entryList({"*.k528-*"}, QDir::Hidden | QDir::Files).size(), 0);
+        r = runK528ToFile({"path", "--json", p}, "/dev/full");
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot write standard output: No space left on device"), qPrintable(r.err));
+        r = runK528ToFile({"path", p}, "/dev/full");
+        QVERIFY2(r.err.contains("No space left on device"), qPrintable(r.err));
     }
 };
 

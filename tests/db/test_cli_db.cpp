@@ -342,6 +342,30 @@ private slots:
         QVERIFY(db({"export", "grinder-205"}).out.contains("C022=2133 "));
     }
 
+    // A mistyped simulation key is refused before a revision is made, naming
+    // the known keys close to it; --allow-unknown stores it; removing it is allowed.
+    void setRefusesAnUnknownSimulationKey() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        const QString before = db({"machines"}).out;
+        auto r = db({"set", "grinder-205", "tilte=oops"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("'tilte' is not a known simulation key; nothing was saved"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("did you mean title"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("--allow-unknown"), qPrintable(r.err));
+        r = db({"set", "grinder-205", "x.kvv=1.5", "C022=2133"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("'x.kvv'") && r.err.contains("x.kv"), qPrintable(r.err));
+        QCOMPARE(db({"machines"}).out, before); // no revision was made
+        QVERIFY(!db({"export", "grinder-205"}).out.contains("tilte"));
+        r = db({"set", "grinder-205", "tilte=oops", "--allow-unknown"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(db({"export", "grinder-205"}).out.contains("tilte=oops"));
+        r = db({"set", "grinder-205", "tilte="});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(!db({"export", "grinder-205"}).out.contains("tilte"));
+        QCOMPARE(db({"set", "grinder-205", "x.kv=1.5"}).exitCode, 0);
+    }
+
     // Issue 15: a device as the database is "not a regular file", not
     // "Operation not supported".
     void deviceAsDatabaseIsNamed() {
@@ -523,6 +547,20 @@ private slots:
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("above what the drive reaches"));
         QCOMPARE(runK528(QStringList{"db", "calc", "--discrete", "0.5"} + axis).exitCode, 2);
+        // A number out of an option's range says so and gives the range, not «not a number».
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--screw-lead", "1e-300"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--screw-lead 1e-300 is out of range: give 0.01..1000 mm"), qPrintable(r.err));
+        QVERIFY(!r.err.contains("not a number"));
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--encoder-lines", "1e400"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--encoder-lines 1e400 is out of range: give 1..1000000 lines"), qPrintable(r.err));
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--feed", "-5"});
+        QVERIFY2(r.err.contains("--feed -5 is out of range: give 0..200000 mm/min"), qPrintable(r.err));
+        r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--gear", "two"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--gear: 'two' is not a number"), qPrintable(r.err));
+        QCOMPARE(runK528(QStringList{"db", "calc"} + axis + QStringList{"--screw-lead", "5e0"}).exitCode, 0);
     }
 
     void auditLog() {

@@ -5,6 +5,7 @@
 #include "engine_rig.h"
 
 #include <QtTest>
+#include <map>
 
 using namespace rig;
 namespace z = k528::engine::z;
@@ -210,6 +211,32 @@ private slots:
         r.advance(5);
         QVERIFY(!r.hasAlarm(5));
         QVERIFY(r.hasAlarm(20)); // still broken
+    }
+    // A message with its number is one line everywhere it is shown (panel,
+    // `k528 run`, the desktop): table М.1's «37. Ошибка N ДОС», «38. Ошибка N
+    // ЦАП», «56. Контроль ДОС оси X» with a blank after the dot, «39.Ошибка N
+    // маховика» without; English always with one.
+    void alarmTextAsTableM1PrintsIt() {
+        // Both encoders, and both DACs, on one channel: 37 and 38 at power-on.
+        Rig r("training-lathe", [](profile::MachineProfile& p) {
+            p.c[69] = p.c[17];
+            p.c[70] = p.c[18];
+        });
+        std::map<int, engine::AlarmView> shown;
+        for (const engine::AlarmView& a : r.ctl->alarms())
+            shown[a.number] = a;
+        QVERIFY(shown.count(37) && shown.count(38));
+        QCOMPARE(engine::alarmText(shown[37], true), std::string("37. Ошибка N ДОС"));
+        QCOMPARE(engine::alarmText(shown[38], true), std::string("38. Ошибка N ЦАП"));
+        QCOMPARE(engine::alarmText(shown[37], false), "37. " + shown[37].textEn);
+        QVERIFY(!shown[37].textEn.empty());
+        for (const auto& [n, text] :
+             {std::pair{56, "56. Контроль ДОС оси X"}, std::pair{39, "39.Ошибка N маховика"},
+              std::pair{33, "33.Задание координаты X"}, std::pair{64, "64. G04/L"}}) {
+            engine::AlarmView a;
+            a.number = n;
+            QCOMPARE(engine::alarmText(a, true), std::string(text));
+        }
     }
     // «Пуск» is refused while a message is shown.
     void startRefusedWithAlarm() {

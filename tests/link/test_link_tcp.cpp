@@ -107,6 +107,10 @@ private slots:
         QVERIFY2(r.err.contains("(Modbus TCP)"), qPrintable(r.err));
         const QString text = readAll(pulled);
         QVERIFY(text.contains("[program 1]"));
+        // A file that cannot be written names itself and the system's reason.
+        r = link(*a_, {"pull", "--out", "/dev/full"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("cannot write /dev/full: No space left on device"), qPrintable(r.err));
         QVERIFY2(text.contains("\nR5=4321"), qPrintable(text.left(400))); // mbpoll's write of the test before
 
         QString changed = text;

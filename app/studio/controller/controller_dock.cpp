@@ -622,9 +622,8 @@ void ControllerDock::updateMonitor() {
     }
     QString alarms;
     for (const engine::AlarmView& a : s.alarms)
-        alarms += QStringLiteral("<span style='color:#b01c1c'>%1. %2</span><br>")
-                      .arg(a.number)
-                      .arg(fromStd(ru ? a.textRu : a.textEn).toHtmlEscaped());
+        alarms += QStringLiteral("<span style='color:#b01c1c'>%1</span><br>")
+                      .arg(fromStd(engine::alarmText(a, ru)).toHtmlEscaped());
     row(tr("Alarms"), alarms.isEmpty() ? tr("none") : alarms);
     QString leds;
     for (int k = 1; k <= 12; ++k) {

@@ -15,10 +15,7 @@ void positioner(const engine::Controller& c, bool faults, std::vector<std::strin
             a.category == AlarmCategory::Fault || a.category == AlarmCategory::Program;
         if (isFault != faults)
             continue;
-        if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(a.number))
-            out.push_back(m->panelText());
-        else
-            out.push_back(std::to_string(a.number) + "." + a.textRu);
+        out.push_back(engine::alarmText(a, true));
     }
 }
 

@@ -1,0 +1,25 @@
+// Where k528 finds its helper programs (k528-link, k528-plot). They are not
+// commands of their own, so a package installs them in a private folder
+// (/usr/lib/k528studio), not on the PATH; in the build tree they sit next to
+// k528 (build/bin). Both places are relative to k528's own file, so an
+// unpacked package and a relocated install work as well.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+namespace k528::cli {
+
+// The places looked at, in order, for the helper `name`: k528's folder (the
+// build tree), then the installed helper folder. Empty when k528 cannot tell
+// where its own file is.
+std::vector<std::filesystem::path> helperCandidates(std::string_view name);
+
+// The first candidate that is an executable file, or an empty path.
+std::filesystem::path findHelper(std::string_view name);
+
+// The candidates as "a, b" for an error message.
+std::string helperSearchText(std::string_view name);
+
+} // namespace k528::cli
