@@ -192,7 +192,7 @@ QString databaseErrorDetail(const std::exception& e) {
     if (error && error->detail().empty())
         return {}; // core's own English sentence: its kind says it (databaseErrorKindText)
     const std::string said = error ? error->detail() : std::string(e.what());
-    return QStringLiteral("«%1»").arg(QString::fromUtf8(said.data(), static_cast<qsizetype>(said.size())).trimmed());
+    return QStringLiteral("«%1»").arg(QString::fromUtf8(said.data(), static_cast<qsizetype>(said.size())).simplified());
 }
 
 QString databaseErrorText(const std::exception& e) {
