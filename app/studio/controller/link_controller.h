@@ -15,7 +15,7 @@
 
 #include "controller/controller.h"
 #include "link/client.h"
-#include "../../plugins/link_plugin.h"
+#include "link_plugin.h"
 
 #include <QThread>
 #include <array>
