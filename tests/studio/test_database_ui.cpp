@@ -5,7 +5,7 @@
 // based on an older revision is refused with who made the newer one, the
 // differences and the change applied again on top. Runs on SQLite, and as
 // studio.database_ui.postgresql inside its own pg_virtualenv cluster.
-#include "../db/db_test_util.h"
+#include "db/db_test_util.h"
 
 #include "constants/constants_dialogs.h"
 #include "constants/constants_dock.h"

@@ -19,7 +19,7 @@
 #include "controller/controller.h"
 #include "db/database.h"
 #include "link/client.h"
-#include "../../plugins/link_plugin.h"
+#include "link_plugin.h"
 
 #include <QThread>
 #include <array>

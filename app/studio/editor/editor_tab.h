@@ -1,4 +1,4 @@
-// The technologist's program editor as a tab of the main window (issue 11):
+// The technologist's program editor as a tab of the main window:
 // several files in tabs (ProgramEditor each), new/open/save/save as, recent
 // files, an unsaved-changes guard, reload when a file changes on disk, the
 // outline of the file's programs, the Problems list (severity, program,

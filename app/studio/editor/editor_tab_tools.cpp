@@ -1,4 +1,4 @@
-// The tools of the editor tab (issue 11): refactoring (renumber, move/copy a
+// The tools of the editor tab: refactoring (renumber, move/copy a
 // program, format the file), the listing (print, PDF), the machine each file
 // is checked for, and database machines' programs. Kept apart from
 // editor_tab.cpp, which holds the files, tabs and lists.
