@@ -3389,10 +3389,6 @@ Its comment stays: %3</translation>
         <translation>Programs of %1 for the controllers</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Program</translation>
-    </message>
-    <message>
         <source>State</source>
         <translation>State</translation>
     </message>
@@ -3415,6 +3411,10 @@ Its comment stays: %3</translation>
     <message>
         <source>Withdraws the released version: a push no longer takes it (k528 db withdraw)</source>
         <translation>Withdraws the released version: a push no longer takes it (k528 db withdraw)</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
 </context>
 <context>

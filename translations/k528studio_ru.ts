@@ -3389,10 +3389,6 @@ Its comment stays: %3</source>
         <translation>Программы станка %1 для контроллеров</translation>
     </message>
     <message>
-        <source>Program</source>
-        <translation>Программа</translation>
-    </message>
-    <message>
         <source>State</source>
         <translation>Состояние</translation>
     </message>
@@ -3415,6 +3411,10 @@ Its comment stays: %3</source>
     <message>
         <source>Withdraws the released version: a push no longer takes it (k528 db withdraw)</source>
         <translation>Выпущенная версия отзывается: передача в контроллер её больше не берёт</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
     </message>
 </context>
 <context>

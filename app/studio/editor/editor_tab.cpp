@@ -116,7 +116,7 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
         top->addWidget(debug_);
         connect(debug_, &DebugPanel::statusMessage, this, &EditorTab::statusMessage);
     }
-    const int outlineWidth = fontMetrics().horizontalAdvance(QLatin1Char('M')) * 15;
+    const int outlineWidth = fontMetrics().horizontalAdvance(QLatin1Char('M')) * 17;
     top->setSizes(debug_ ? QList<int>{outlineWidth, 4000, 2000} : QList<int>{outlineWidth, 4000});
     problems_ = new QTreeView(split);
     problems_->setObjectName("editor.problems");

@@ -138,9 +138,9 @@ void ProgramReleases::refresh() {
         if (p.number == selected)
             list_->setCurrentItem(item);
     }
+    retranslate();
     for (int c = 0; c < 2; ++c)
         list_->resizeColumnToContents(c);
-    retranslate();
     updateButtons();
 }
 
@@ -241,7 +241,7 @@ void ProgramReleases::changeEvent(QEvent* e) {
 
 void ProgramReleases::retranslate() {
     title_->setText(tr("Programs of %1 for the controllers").arg(machine_));
-    list_->setHeaderLabels({tr("Program"), tr("State"), tr("By")});
+    list_->setHeaderLabels({tr("No."), tr("State"), tr("By")});
     release_->setText(tr("Release..."));
     release_->setToolTip(tr("Makes the program's current version the one a push to a controller takes (k528 db release)"));
     withdraw_->setText(tr("Withdraw..."));
