@@ -1,4 +1,4 @@
-// Backplot benchmarks (issue 12), llvmpipe 1280×800:
+// Backplot benchmarks, llvmpipe 1280×800:
 //   backplot.path_1M_s          the programmed path of a 1,000,000-segment program (engine preview)
 //   backplot.first_frame_s      scene load (index, level of detail) and the first frame of it
 //   backplot.interaction_fps    frames/s while panning and zooming that scene

@@ -1,4 +1,4 @@
-// The machine-constants dock (issue 14), through the dock's own path (Qt,
+// The machine-constants dock, through the dock's own path (Qt,
 // offscreen): typing into the search field filters the table of 152 rows —
 // the proxy re-filters and the view lays out and paints what it shows.
 // Figures: the slowest and the mean of the filter steps.

@@ -1,4 +1,4 @@
-// Database speed (issue 7):
+// Database speed:
 //  - open the database (integrity check included) and load one full machine:
 //    target <= 20 ms;
 //  - export a full machine (152 C, 269 R presets — every writable R, 99

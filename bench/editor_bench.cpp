@@ -1,4 +1,4 @@
-// The program editor (issue 11), through the editor's own path (Qt,
+// The program editor, through the editor's own path (Qt,
 // offscreen): re-validating a 999-frame program after one keystroke, opening
 // a 99 x 999-frame file coloured with diagnostics, and the longest stall of
 // the event loop while a scripted edit types into that file.

@@ -3,7 +3,7 @@
 // the simulated PLC running the machine description, the plant (both drives,
 // spindle, coolant, turret, pumps, switches) — and for the idle machine with
 // its drives on; for comparison the engine alone on its ideal test double.
-// Targets (issue 15): ≥ 10,000× real time for the program on the training
+// Targets: ≥ 10,000× real time for the program on the training
 // lathe and ≤ 200 ns for everything in one tick; ≥ 20,000× for the idle machine.
 //
 // The program's figure is the best of REPEATS whole runs (10 in bench/run,

@@ -1,4 +1,4 @@
-// The message history dock (issue 14): a database holding 100,000 messages
+// The message history dock: a database holding 100,000 messages
 // (written here in batches as the recorder writes them), then the dock opened
 // on it — the database opened, the count, the first page, the table shown —
 // and a search over all of them. Offscreen Qt.

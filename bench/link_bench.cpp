@@ -1,4 +1,4 @@
-// The controller link's wire time (issue 13). A pty has no baud rate, so the
+// The controller link's wire time. A pty has no baud rate, so the
 // time is computed from the RTU bytes of every exchange actually made (bytes
 // × 10 bits at 115,200 + 1.75 ms per frame): pulling a full controller
 // (152 C, 300 R, 99 programs × 999 frames, the messages) against the

@@ -1,4 +1,4 @@
-// A bus scan in real time (issue 24): `k528 link scan --addresses 1-247` at
+// A bus scan in real time: `k528 link scan --addresses 1-247` at
 // 115 200 bit/s with the default timeout, on an RS485 bus of ptys that gives
 // each byte its wire time (tests/link/rs485_bus.py --pace), a `k528 serve` at
 // address 7 on it. The figure is the wall time of the whole scan; the scan

@@ -1,4 +1,4 @@
-// Memory of the program parser (issue 15): the peak heap growth while
+// Memory of the program parser: the peak heap growth while
 // parse() reads a large program file — the full store, 99 programs x 999
 // frames (about 3 MB, the most a controller holds) — against the size of its
 // text. Target: <= 5x the text. Counted by a replacement of the global

@@ -1,4 +1,4 @@
-// Program language speed (issue 3):
+// Program language speed:
 //  - parse + validate a full store, 99 programs x 999 frames (target <= 50 ms);
 //  - re-check one 999-frame program after a one-character edit, as the
 //    editor does on every keystroke: parse that program's text, put it into

@@ -1,4 +1,4 @@
-// The oscilloscope live (issue 14): 4 traces × 2 axes at the 1 ms servo
+// The oscilloscope live: 4 traces × 2 axes at the 1 ms servo
 // tick over a 60 s window while the machine runs in real time — each frame
 // advances the simulated machine by the real time elapsed (as the desktop's
 // session does), decimates the window per pixel column and paints both

@@ -1,4 +1,4 @@
-// The shop's poller (issue 26): 32 K528-05 over Modbus TCP (`k528 serve
+// The shop's poller: 32 K528-05 over Modbus TCP (`k528 serve
 // --tcp` on free localhost ports, machines of a database of its own),
 // `k528 shop publish` polling every 100 ms into a mosquitto broker started
 // here. Figures: the CPU of the poller process (user + system time from

@@ -1,4 +1,4 @@
-// The studio's start (issue 23): from starting the k528studio process to its
+// The studio's start: from starting the k528studio process to its
 // main window's first painted frame (`k528studio --first-frame` prints a line
 // when that frame has been painted and flushed, then quits), in each
 // workspace. The first start creates its database and settings and is not

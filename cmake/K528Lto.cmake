@@ -1,4 +1,4 @@
-# Link-time optimisation of the simulated tick (issue 15; docs/engine.md, "Speed").
+# Link-time optimisation of the simulated tick (docs/engine.md, "Speed").
 #
 # A tick runs through many small functions of several core modules (the
 # positioner, its servo loops, the PLC, the plant). The modules on that path

@@ -1,4 +1,4 @@
-# Profile-guided optimisation of the simulated tick (issue 15; docs/engine.md,
+# Profile-guided optimisation of the simulated tick (docs/engine.md,
 # "Speed").
 #
 # The modules a tick runs through (K528_LTO_MODULES: units, catalog, axis,

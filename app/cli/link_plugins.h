@@ -5,7 +5,7 @@
 // not an error (the simulated machine needs none).
 #pragma once
 
-#include "../../plugins/link_plugin.h"
+#include "link_plugin.h"
 
 #include <QString>
 #include <QStringList>

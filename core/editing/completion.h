@@ -1,4 +1,4 @@
-// The completion catalog of the program editor (issue 11): what may be
+// The completion catalog of the program editor: what may be
 // typed at a word, with its meaning in Russian and English. From core's
 // own tables — table 5 (program/gfunctions), the built-in M's, the
 // machine description's PLC M-codes, appendix Л (catalog/rparams) — and

@@ -1,4 +1,4 @@
-// What a debugger of the program editor needs from the engine (issue 11):
+// What a debugger of the program editor needs from the engine:
 // breakpoints on frames, single frame and run to a frame — each stops the
 // program *before* a frame executes — and the call stack of the interpreter.
 //

@@ -1,6 +1,6 @@
 // An ideal machine and a minimal PLC around a Controller: the test double of
-// the engine and the machine `k528 run` drives (issue 5 brings the full
-// simulated PLC and machine).
+// the engine and the machine `k528 run` drives (the full simulated PLC and
+// machine are core/plc and core/machine).
 //
 // Machine side: one axis::Mechanics per present axis, built from the
 // profile's simulation keys (screw lead and gear ratio -> slide travel per

@@ -1,4 +1,4 @@
-// Frame builders the editor's masters call (issue 11): each takes the fields
+// Frame builders the editor's masters call: each takes the fields
 // of one kind of frame, builds the model's Frame and gives its canonical
 // text through the formatter (formatFrame), with the problems the parser
 // and the validator find in it. `problems` empty = the frame may be

@@ -225,7 +225,7 @@ private:
 // structures above, in place for ordinary frames (no allocation) and on the
 // heap for long ones. Assign a frame kind's structure to it; read it back
 // with the Frame accessors (iso(), compute(), ...). Program memory stays a
-// few times the size of the text (issue 15, bench parse_memory).
+// few times the size of the text (bench parse_memory).
 class FrameBody {
 public:
     FrameBody() = default; // an empty ISO frame

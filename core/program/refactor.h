@@ -1,4 +1,4 @@
-// Refactorings that keep a program store right (issue 11): renumbering the
+// Refactorings that keep a program store right: renumbering the
 // frames of a program with every IF/GOTO target following its frame, and
 // moving or copying a program to another number with the L calls that name
 // it following. Pure functions over the model; the text comes back through

@@ -1,4 +1,4 @@
-// The tokens of a program text for the editor's colouring (issue 11). The
+// The tokens of a program text for the editor's colouring. The
 // word tokens come from the parser's own result — the column spans it
 // recorded for every G, M, N, #, L, X/Z/FX/FZ, R and jump target — so a
 // colour never disagrees with what the parser read; what lies between

@@ -1,4 +1,4 @@
-// The lathe blank and material removal (issue 12; NC-200 manual 23.2.4).
+// The lathe blank and material removal (NC-200 manual 23.2.4).
 //
 // The blank is a body of revolution defined as NC-200's UCG defines it:
 //   UCG,N,Z<outer length>Z<bore length>,X<outer diameter>X<bore diameter>,

@@ -1,4 +1,4 @@
-// The actual path (issue 12): sampled from the simulation of a run — the same
+// The actual path: sampled from the simulation of a run — the same
 // machine as `k528 run` (machine/run.h) — every tick while the program is
 // active: the actual position of X and Z in current coordinates (mm as the
 // panel shows them) and the following error (setpoint − actual, mm).

@@ -1,4 +1,4 @@
-// The programmed toolpath (issue 12; shared/spec/cli.md `k528 path`): the
+// The programmed toolpath (shared/spec/cli.md `k528 path`): the
 // engine's own interpreter runs the program in preview (engine/preview.h,
 // instant axes) and every motion frame becomes a segment — program, frame N,
 // source line, kind, feeds and its corner points in mm as the panel shows

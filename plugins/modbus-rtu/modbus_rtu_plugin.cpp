@@ -1,6 +1,6 @@
 #include "modbus_rtu_plugin.h"
 
-#include "../map_server.h"
+#include "map_server.h"
 
 #include <QModbusRtuSerialServer>
 #include <QSerialPort>

@@ -5,7 +5,7 @@
 // registers behind it.
 #pragma once
 
-#include "../link_plugin.h"
+#include "link_plugin.h"
 
 #include <QObject>
 

@@ -1,6 +1,6 @@
 #include "modbus_tcp_plugin.h"
 
-#include "../map_server.h"
+#include "map_server.h"
 #include "link/modbus_tcp.h"
 
 #include <QModbusTcpServer>

@@ -6,7 +6,7 @@
 // QModbusTcpServer with the map's registers behind it.
 #pragma once
 
-#include "../link_plugin.h"
+#include "link_plugin.h"
 
 #include <QObject>
 

@@ -11,7 +11,7 @@ using namespace k528::axis;
 class TestTrajectory : public QObject {
     Q_OBJECT
 private slots:
-    // Issue 4: 100 mm at 1000 mm/min with УСКОРЕНИЕ 1 = 2000 takes 6.21 s
+    // 100 mm at 1000 mm/min with УСКОРЕНИЕ 1 = 2000 takes 6.21 s
     // (trapezoid: L/v + v/a = 6 s + 0.2133 s).
     void trapezoidTimeMatchesFormula() {
         const Constants k = rig::grinderZ();

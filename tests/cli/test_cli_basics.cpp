@@ -33,7 +33,7 @@ private slots:
         QCOMPARE(o.exitCode, 2);
         QVERIFY(o.err.contains("unknown option --frobnicate"));
     }
-    // Issue 15: an extra word after --version / --help is a usage error.
+    // An extra word after --version / --help is a usage error.
     void versionAndHelpTakeNoArguments() {
         const auto v = runK528({"--version", "extra"});
         QCOMPARE(v.exitCode, 2);
@@ -44,7 +44,7 @@ private slots:
         QCOMPARE(runK528({"help", "check"}).exitCode, 0);
     }
 
-    // Issue 15: output lost to a full disk is an I/O error (exit 2), never
+    // Output lost to a full disk is an I/O error (exit 2), never
     // success — for every command that prints.
     void lostStandardOutputIsAnError_data() {
         QTest::addColumn<QStringList>("args");
@@ -82,7 +82,7 @@ private slots:
         QVERIFY(QFileInfo(dir.filePath("out.txt")).size() > 0);
     }
 
-    // Issue 15: a device, a FIFO, a directory or a file far beyond what a
+    // A device, a FIFO, a directory or a file far beyond what a
     // controller holds is refused with exit 2 and the reason, by every
     // command that reads a file (one reader, util/input_file.h).
     void inputsHaveALimit_data() {
@@ -133,7 +133,7 @@ private slots:
         QVERIFY2(r.err.contains("cannot read standard input: it is larger than 16 MiB"), qPrintable(r.err));
     }
 
-    // Issue 15: running out of memory ends in a message and exit 2, not an
+    // Running out of memory ends in a message and exit 2, not an
     // abort on an uncaught std::bad_alloc (address space capped by prlimit).
     void outOfMemoryIsAMessage() {
         if (!QFileInfo::exists("/usr/bin/prlimit"))

@@ -119,7 +119,7 @@ private slots:
                      QFile::WriteUser);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::System).size(), 2); // no temporary left
     }
-    // Issue 15: `run` starts the first program of a file; formatting keeps
+    // `run` starts the first program of a file; formatting keeps
     // the programs in the order written, so the formatted file runs the same.
     void formattingKeepsWhatRunStarts() {
         QTemporaryDir dir;
@@ -135,7 +135,7 @@ private slots:
         QCOMPARE(after.out, before.out);
         QVERIFY2(before.out.contains("stopped at L2"), qPrintable(before.out));
     }
-    // Issue 15: --in-place in a read-only folder names the file and the
+    // --in-place in a read-only folder names the file and the
     // reason, not a temporary file.
     void inPlaceInAReadOnlyFolderSaysWhy() {
         // Root writes into a read-only folder: then k528 runs as nobody.

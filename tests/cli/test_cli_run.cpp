@@ -205,7 +205,7 @@ private slots:
             {"run", "--r", "5=3000000000", s},
             {"run", "--override", "33", s},
             {"run", "--max-seconds", "-1", s},
-            // Issue 15: nan and inf are not numbers of seconds.
+            // NaN and inf are not numbers of seconds.
             {"run", "--max-seconds", "nan", s},
             {"run", "--max-seconds", "inf", s},
             {"run", "--m0-wait", "nan", s},

@@ -269,7 +269,7 @@ private slots:
         QCOMPARE(db({"export", "grinder-205", "--out", dir_.filePath("no/dir/x")}).exitCode, 2);
     }
 
-    // Issue 15: --out follows a symbolic link (the link stays), writes into
+    // --out follows a symbolic link (the link stays), writes into
     // a FIFO directly (it stays a FIFO), refuses a directory with the reason
     // and reports a full device — never replacing what is there.
     void exportOutFollowsLinksAndNeverReplacesSpecialFiles() {
@@ -314,7 +314,7 @@ private slots:
         QVERIFY(QFileInfo("/dev/full").exists() && !QFileInfo("/dev/full").isFile());
     }
 
-    // Issue 15: a backup to a full disk is not a success.
+    // A backup to a full disk is not a success.
     void lostStandardOutputIsAnError() {
         QCOMPARE(db({"init"}).exitCode, 0);
         for (const QStringList& args : {QStringList{"db", "export", "grinder-205"},
@@ -328,7 +328,7 @@ private slots:
         }
     }
 
-    // Issue 15: `db set` with one item twice names it instead of keeping the last.
+    // `db set` with one item twice names it instead of keeping the last.
     void setRefusesARepeatedItem() {
         QCOMPARE(db({"init"}).exitCode, 0);
         auto r = db({"set", "grinder-205", "C022=2133", "C022=2000"});
@@ -366,7 +366,7 @@ private slots:
         QCOMPARE(db({"set", "grinder-205", "x.kv=1.5"}).exitCode, 0);
     }
 
-    // Issue 15: a device as the database is "not a regular file", not
+    // A device as the database is "not a regular file", not
     // "Operation not supported".
     void deviceAsDatabaseIsNamed() {
         K528_SQLITE_ONLY();
@@ -376,7 +376,7 @@ private slots:
         QVERIFY(!r.err.contains("Operation not supported"));
     }
 
-    // Issue 15: a byte-order mark inside a machine file is shown visibly.
+    // A byte-order mark inside a machine file is shown visibly.
     void byteOrderMarkInsideAMachineFileIsNamed() {
         QCOMPARE(db({"init"}).exitCode, 0);
         const QString f = dir_.filePath("joined.k528m");

@@ -1,5 +1,5 @@
 // The whole trace of a run on the training lathe, tick by tick, against a
-// golden file captured before the tick was made lean (issue 15, "Speed"):
+// golden file captured before the tick was made lean (docs/engine.md, "Speed"):
 // every interface word, every R-parameter, the DAC codes, the regulator
 // enables, the encoder counts and both slides' positions (bit patterns of
 // the doubles) go into one digest per phase, and the end state is written

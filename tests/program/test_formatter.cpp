@@ -71,7 +71,7 @@ private slots:
                          "; first\n"
                          "#1=ПРАВКА   \n"
                          "\n";
-        // Programs in the order written (issue 15), not by number.
+        // Programs in the order written, not by number.
         const char* out = "; K528 Studio sample\n"
                           "\n"
                           "; main\n"
@@ -95,7 +95,7 @@ private slots:
         QCOMPARE(fmt(in), QString::fromUtf8(out));
         QCOMPARE(fmt(out), QString::fromUtf8(out)); // fixed point
     }
-    // Issue 15: `run` starts a file's first program; `format` once sorted the
+    // `run` starts a file's first program; `format` once sorted the
     // programs, so %L2 then %L1 ran L1 after formatting. Written order stays.
     void programsKeepTheOrderWritten() {
         const char* in = "%L2\nG1 X5\nM30\n%L1\nG1 X7\nM30\n%L9\nM17\n";

@@ -227,7 +227,7 @@ private slots:
         QCOMPARE(QString::fromStdString(f.comments[0].text), QString(" c"));
         QCOMPARE(f.span.line, 2);
     }
-    // Issue 15: CR alone is no line end (LF or CRLF); a text with CR-only
+    // CR alone is no line end (LF or CRLF); a text with CR-only
     // line ends gets an error that says so, once.
     void crOnlyLineEndsAreNamed() {
         const ParseResult r = p("%L1\rN1 G1 X5\rM30\r");
@@ -243,7 +243,7 @@ private slots:
         // A stray CR in a text that reads well stays a blank, without a hint.
         QVERIFY(p("G1\rX5\nM30\n").diagnostics.empty());
     }
-    // Issue 15: leading zeros are not significant digits; a value finer than
+    // Leading zeros are not significant digits; a value finer than
     // 18 places is refused for that reason.
     void leadingZerosAreNotSignificant() {
         QVERIFY(p("G1 X000000000000000000000000005.5\n").diagnostics.empty());

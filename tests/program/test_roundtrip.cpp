@@ -267,7 +267,7 @@ private slots:
         QVERIFY(empty.iso() && empty.iso().value().empty());
     }
 
-    // The frame model stays small (issue 15: parse memory <= 5x the text).
+    // The frame model stays small (parse memory <= 5x the text).
     void frameIsCompact() { QVERIFY(sizeof(Frame) <= 96); }
 };
 

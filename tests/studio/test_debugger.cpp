@@ -1,4 +1,4 @@
-// The editor's debugger on the simulated machine (issue 11): a breakpoint
+// The editor's debugger on the simulated machine: a breakpoint
 // then «Run» (drives on, homing as the operator would, АВТОМАТ, «Пуск»)
 // stops before that frame with the engine's frame pointer on it and the
 // executing marker in the margin; single frame steps one frame per «Пуск»;

@@ -1,4 +1,4 @@
-// The program editor (issue 11): a bad frame gets its squiggle on the
+// The program editor: a bad frame gets its squiggle on the
 // exact columns and a Problems entry, fixing it clears both; typing is
 // validated after the debounce on a worker; the machine's limits are
 // checked too; colours come from core's tokens; unsaved changes survive a

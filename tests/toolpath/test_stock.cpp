@@ -1,4 +1,4 @@
-// core/stock (issue 12): the NC-200 UCG blank and material removal of a
+// core/stock: the NC-200 UCG blank and material removal of a
 // facing and a turning program — areas and vertices within 1 µm.
 #include "profile/builtin.h"
 #include "program/parser.h"

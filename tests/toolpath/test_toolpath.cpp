@@ -1,4 +1,4 @@
-// core/toolpath and `k528 path` (issue 12): exact corner coordinates from the
+// core/toolpath and `k528 path`: exact corner coordinates from the
 // engine's preview, and the actual path of a run against the following error.
 #include "cli_runner.h"
 #include "profile/builtin.h"

@@ -4,8 +4,8 @@
 // this test's own connection (another process) reads them back, and
 // `k528 exercise attempts` (a third) lists them. On SQLite, and on a
 // throwaway PostgreSQL cluster (training.attempts.postgresql).
-#include "../db/db_test_util.h"
 #include "cli_runner.h"
+#include "db/db_test_util.h"
 #include "db/sha256.h"
 #include "training/record.h"
 

@@ -68,7 +68,7 @@ class TestTrainingGrade : public QObject {
     Q_OBJECT
 
 private slots:
-    void theStarterCourseHasTheExercisesTheIssueAsks() {
+    void theStarterCourseHasEightLatheAndFourGrinderExercises() {
         const auto& all = training::shippedExercises();
         int lathe = 0, grinder = 0;
         for (const training::Exercise& e : all) {

@@ -1,4 +1,4 @@
-// The backplot view (issue 12): the VTK scene (backplot_scene.h) in our own
+// The backplot view: the VTK scene (backplot_scene.h) in our own
 // QOpenGLWidget bridge, with fit, pan (middle button), zoom (wheel, right
 // button), the XZ and 3D views, playback (play/pause, speed ×0.1…×100 and
 // fastest, scrub by time, step by frame), picking (a click names the frame

@@ -1,5 +1,5 @@
 // The programs and messages of a machine of the shop's database in the
-// editor (issue 11): opened as one file (every program under its %L header,
+// editor: opened as one file (every program under its %L header,
 // then %MESSAGES: profile::programsFileText) at the machine's current
 // revision, and saved as its next revision (db::Database::saveMachine with
 // the revision that was opened, so a change made meanwhile by someone else

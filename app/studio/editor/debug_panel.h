@@ -1,4 +1,4 @@
-// The debugger's pane of the editor tab (issue 11): run the file's program
+// The debugger's pane of the editor tab: run the file's program
 // on the simulated machine (sent through the check-then-load path first),
 // hold, continue («Пуск»), stop, reset; single frame; run to cursor; the
 // speed of the simulation (real time, ×2…×100, fastest); the call stack

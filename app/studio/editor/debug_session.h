@@ -1,4 +1,4 @@
-// The editor's debugger on the simulated machine (issue 11): runs a program
+// The editor's debugger on the simulated machine: runs a program
 // of the file as the operator would — drives on at the machine's panel,
 // the reference-point cycle of every axis that needs it (skipped where
 // АВТ.БЕЗ ПБТ allows, C8/C60), АВТОМАТ, the program, «Пуск» — then holds,

@@ -1,4 +1,4 @@
-// The masters of the program editor (issue 11, manual 2.2.1 «мастера»): a
+// The masters of the program editor (manual 2.2.1 «мастера»): a
 // dialog that builds one frame — ISO motion, dwell, subprogram call,
 // oscillation, move until signal, computational frame, conditional and
 // unconditional jump — or a technological message, through core's frame

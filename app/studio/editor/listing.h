@@ -1,4 +1,4 @@
-// The listing of a program file (issue 11): printed (Qt Print Support) or
+// The listing of a program file: printed (Qt Print Support) or
 // exported to PDF. Every page has a header — the file, the machine it is
 // checked for, the date, the count of problems and «page n of m» — then the
 // file's lines with their numbers, each diagnostic in a line of its own

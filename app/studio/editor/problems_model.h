@@ -1,4 +1,4 @@
-// The Problems list's model (issue 11): a table over the current editor's
+// The Problems list's model: a table over the current editor's
 // diagnostics (severity, program, line, [Mnn], text), read in place. A new
 // validation resets it in constant time; the view asks only for the rows
 // it shows, so 9000 problems of a big file cost nothing while typing.

@@ -1,4 +1,4 @@
-// One program file in a QScintilla editor (issue 11): line numbers, a
+// One program file in a QScintilla editor: line numbers, a
 // margin for breakpoints and the executing frame, folding by %L program and
 // %MESSAGES, colours from core's tokenizer (ProgramLexer), and live
 // validation — debounced, on a worker thread so typing never waits — by

@@ -1,4 +1,4 @@
-// The editor's refactorings over a whole file's text (issue 11): renumber a
+// The editor's refactorings over a whole file's text: renumber a
 // program's frames (start, step) with every IF/GOTO target following its
 // frame, move or copy a program to another number with the L calls that
 // name it following, and format the file. Each one reads the text with

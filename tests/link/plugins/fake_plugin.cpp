@@ -1,6 +1,6 @@
 // A plugin the loader must refuse: built twice, with a foreign IID and with
 // another api number (tests/link/CMakeLists.txt).
-#include "../../../plugins/link_plugin.h"
+#include "link_plugin.h"
 
 class FakePlugin : public QObject, public k528::linkplugin::LinkPlugin {
     Q_OBJECT
