@@ -145,6 +145,10 @@
         <source>Changes in the controller's memory: %1. Each part is committed all or nothing and read back; a controller on the line must be in F7 «РАБОТА С ПЭВМ».</source>
         <translation>Changes in the controller's memory: %1. Each part is committed all or nothing and read back; a controller on the line must be in F7 «РАБОТА С ПЭВМ».</translation>
     </message>
+    <message>
+        <source>Not sent as they are (a push takes released programs only; the machine's setting push.unreleased allows drafts):</source>
+        <translation>Not sent as they are (a push takes released programs only; the machine's setting push.unreleased allows drafts):</translation>
+    </message>
 </context>
 <context>
     <name>QsciScintilla</name>
@@ -2788,6 +2792,34 @@ Its comment stays: %3</translation>
     <message>
         <source>program %1</source>
         <translation>program %1</translation>
+    </message>
+    <message>
+        <source>draft</source>
+        <translation>draft</translation>
+    </message>
+    <message>
+        <source>withdrawn</source>
+        <translation>withdrawn</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>released</translation>
+    </message>
+    <message>
+        <source>L%1: %2, not the released version: its released version (revision %3) is sent</source>
+        <translation>L%1: %2, not the released version: its released version (revision %3) is sent</translation>
+    </message>
+    <message>
+        <source>L%1: %2, never released: not sent</source>
+        <translation>L%1: %2, never released: not sent</translation>
+    </message>
+    <message>
+        <source>L%1: not in the database: not sent</source>
+        <translation>L%1: not in the database: not sent</translation>
+    </message>
+    <message>
+        <source>The push did not start: %1; nothing was sent</source>
+        <translation>The push did not start: %1; nothing was sent</translation>
     </message>
 </context>
 <context>

@@ -145,6 +145,10 @@
         <source>Changes in the controller's memory: %1. Each part is committed all or nothing and read back; a controller on the line must be in F7 «РАБОТА С ПЭВМ».</source>
         <translation>Изменений в памяти контроллера: %1. Каждая часть записывается целиком или никак и считывается обратно; контроллер на линии должен быть в F7 «РАБОТА С ПЭВМ».</translation>
     </message>
+    <message>
+        <source>Not sent as they are (a push takes released programs only; the machine's setting push.unreleased allows drafts):</source>
+        <translation>Не передаются как есть (передаются только выпущенные программы; черновики разрешает настройка станка push.unreleased):</translation>
+    </message>
 </context>
 <context>
     <name>QsciScintilla</name>
@@ -2788,6 +2792,34 @@ Its comment stays: %3</source>
     <message>
         <source>program %1</source>
         <translation>программа %1</translation>
+    </message>
+    <message>
+        <source>draft</source>
+        <translation>черновик</translation>
+    </message>
+    <message>
+        <source>withdrawn</source>
+        <translation>отозвана</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>выпущена</translation>
+    </message>
+    <message>
+        <source>L%1: %2, not the released version: its released version (revision %3) is sent</source>
+        <translation>L%1: %2, не выпущенная версия: передаётся выпущенная версия (ревизия %3)</translation>
+    </message>
+    <message>
+        <source>L%1: %2, never released: not sent</source>
+        <translation>L%1: %2, ни разу не выпущена: не передаётся</translation>
+    </message>
+    <message>
+        <source>L%1: not in the database: not sent</source>
+        <translation>L%1: нет в базе данных: не передаётся</translation>
+    </message>
+    <message>
+        <source>The push did not start: %1; nothing was sent</source>
+        <translation>Передача не начата: %1; ничего не передано</translation>
     </message>
 </context>
 <context>

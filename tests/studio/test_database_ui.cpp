@@ -12,6 +12,7 @@
 #include "constants/constants_editor.h"
 #include "constants/constants_follow.h"
 #include "controller/link_controller.h"
+#include "controller/push_preview.h"
 #include "controller/simulated_controller.h"
 #include "db/message_log.h"
 #include "editor/editor_tab.h"
@@ -27,6 +28,7 @@
 #include "session/shop_database.h"
 #include "session/simulation_session.h"
 
+#include <QDialog>
 #include <QDockWidget>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -252,9 +254,21 @@ private slots:
         QSKIP("built without the link plugins");
 #else
         QVERIFY(openDatabase(location_).isEmpty());
-        ShopDatabase::at()->use([](db::Database& d) {
-            if (!d.hasMachine("lathe-push"))
-                d.createMachine(lathe("lathe-push"));
+        // L77 released, L78 a draft: the push of the database's machine
+        // sends L77 and leaves L78 out (as `k528 link push --machine`).
+        const std::string l77text = "%L77 (on record)\nN1 G1 X10 FX100\nN2 M02\n";
+        const std::string l78text = "%L78 (a draft)\nN1 G1 X20 FX100\nN2 M02\n";
+        int revision = 0;
+        ShopDatabase::at()->use([&](db::Database& d) {
+            if (!d.hasMachine("lathe-push")) {
+                profile::MachineProfile m = lathe("lathe-push");
+                m.programs.clear(); // L77 and L78 only
+                m.programs[77] = l77text;
+                m.programs[78] = l78text;
+                d.createMachine(m);
+                d.releaseProgram("lathe-push", 77);
+            }
+            revision = d.machine("lathe-push")->revision;
         });
         qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_RTU_PLUGIN)).absolutePath().toUtf8());
         const QString tag = QString::number(QCoreApplication::applicationPid());
@@ -295,7 +309,22 @@ private slots:
         QSignalSpy recorded(&link, &LinkController::transferRecorded);
         QSignalSpy pushed(&link, &LinkController::pushed);
         profile::MachineProfile p = lathe("lathe-push");
-        p.programs[77] = "%L77 (on record)\nN1 G1 X10 FX100\nN2 M02\n";
+        p.programs.clear();
+        p.programs[77] = l77text;
+        p.programs[78] = l78text;
+        const ReleasedPush sent = releasedPush(p, QStringLiteral("lathe-push"));
+        QVERIFY2(sent.error.isEmpty(), qPrintable(sent.error));
+        QVERIFY(!sent.overridden);
+        QVERIFY2(sent.leftOut.size() == 1, qPrintable(sent.leftOut.join('|')));
+        QVERIFY2(sent.leftOut.first().startsWith("L78: draft"), qPrintable(sent.leftOut.first()));
+        QVERIFY(sent.file.programs.count(77) && !sent.file.programs.count(78));
+        // The preview says what is left out and why.
+        QDialog* preview = showPushPreview(nullptr, QStringLiteral("lathe-push"), p, afterPush(p, sent.file),
+                                           QStringLiteral("Push"), [](bool) {}, sent.leftOut);
+        auto* leftOut = preview->findChild<QLabel*>("controller.pushPreview.leftOut");
+        QVERIFY(leftOut);
+        QVERIFY2(leftOut->text().contains("L78: draft, never released: not sent"), qPrintable(leftOut->text()));
+        preview->reject();
         link.push(p, QStringLiteral("lathe-push"));
         QVERIFY(pushed.wait(60000));
         QVERIFY2(pushed.first().first().toBool(), qPrintable(pushed.first().at(1).toString()));
@@ -320,7 +349,7 @@ private slots:
         QCOMPARE(push.value("direction").toString(), QString("push"));
         QCOMPARE(push.value("result").toString(), QString("ok"));
         QCOMPARE(push.value("machine").toString(), QString("lathe-push"));
-        QCOMPARE(push.value("revision").toInt(), 1);
+        QCOMPARE(push.value("revision").toInt(), revision);
         // The line as `k528 link` names it, and what the controller says it is.
         QVERIFY2(push.value("controller").toString().startsWith("serial:" + b + "?baud=115200&address=1"),
                  qPrintable(push.value("controller").toString()));
@@ -329,6 +358,8 @@ private slots:
         for (const QJsonValue& v : push.value("items").toArray()) {
             const QJsonObject item = v.toObject();
             QCOMPARE(item.value("crc32").toString().size(), 8);
+            QVERIFY2(!(item.value("kind").toString() == "program" && item.value("number").toInt() == 78),
+                     qPrintable(log.out)); // the draft is not sent
             if (item.value("kind").toString() == "program" && item.value("number").toInt() == 77) {
                 l77 = true;
                 QCOMPARE(item.value("state").toString(), QString("new"));

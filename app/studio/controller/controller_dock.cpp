@@ -473,6 +473,7 @@ void ControllerDock::pushFile(const QString& given) {
     }
     pendingMachine_.clear();
     startPush(file, QFileInfo(path).fileName());
+    pendingLeftOut_.clear();
 }
 
 void ControllerDock::pushMachine(const QString& name) {
@@ -480,7 +481,13 @@ void ControllerDock::pushMachine(const QString& name) {
         return;
     try {
         pendingMachine_ = name; // on record as the database's machine pushed
-        startPush(loadMachine(name).profile, name);
+        // Released programs only, unless the machine's setting allows drafts
+        // (as `k528 link push --machine`); the preview says what is left out.
+        const ReleasedPush sent = releasedPush(loadMachine(name).profile, name);
+        if (!sent.error.isEmpty())
+            throw std::runtime_error(sent.error.toStdString());
+        startPush(sent.file, name);
+        pendingLeftOut_ = sent.leftOut;
     } catch (const std::exception& e) {
         say(tr("The machine %1 cannot be loaded: %2").arg(name, QString::fromUtf8(e.what())));
         emit transferFinished(false, lastMessage_);
@@ -509,7 +516,7 @@ void ControllerDock::showPreview(const profile::MachineProfile& memory) {
             emit transferFinished(false, lastMessage_);
         }
         updateEnabled();
-    });
+    }, pendingLeftOut_);
     say(tr("Check what %1 changes, then push.").arg(pendingWhat_));
     emit previewShown();
 }

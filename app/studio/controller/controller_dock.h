@@ -141,6 +141,7 @@ private:
     std::unique_ptr<profile::MachineProfile> pending_; // the push waiting for its preview
     QString pendingWhat_;
     QString pendingMachine_; // the database's machine pushed ("" a file)
+    QStringList pendingLeftOut_; // its programs the push leaves out, and why
     QString notOnRecord_;    // why the last transfer is not on record
     QString lastMessage_, lastMonitor_, lostWhy_;
     int lastRevision_ = 0;

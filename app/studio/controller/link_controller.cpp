@@ -9,6 +9,7 @@
 #include "program/parser.h"
 #include "units/units.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <algorithm>
 #include <QTimer>
@@ -559,12 +560,71 @@ void LinkController::pull(bool record) {
                               Qt::QueuedConnection);
 }
 
+ReleasedPush releasedPush(const profile::MachineProfile& file, const QString& machine) {
+    ReleasedPush out;
+    out.file = file;
+    if (machine.isEmpty())
+        return out;
+    const auto state = [](db::ProgramState s) {
+        return s == db::ProgramState::Draft       ? QCoreApplication::translate("k528::studio::LinkController", "draft")
+               : s == db::ProgramState::Withdrawn ? QCoreApplication::translate("k528::studio::LinkController", "withdrawn")
+                                                  : QCoreApplication::translate("k528::studio::LinkController", "released");
+    };
+    const std::string name = machine.toStdString();
+    try {
+        ShopDatabase::at()->use([&](db::Database& d) {
+            if (!d.hasMachine(name))
+                return;
+            link::PushPlan plan;
+            plan.programs = file.programs;
+            const transfer::ReleaseCheck check = transfer::checkReleased(d, name, plan);
+            out.overridden = check.overridden;
+            if (check.allowed)
+                return;
+            const link::PushPlan released = transfer::releasedPlan(d, name, link::k528Map());
+            const std::vector<db::ProgramRelease> releases = d.programReleases(name);
+            for (const int n : check.unreleased) {
+                const db::ProgramRelease* r = nullptr;
+                for (const db::ProgramRelease& p : releases)
+                    if (p.number == n)
+                        r = &p;
+                const auto it = released.programs.find(n);
+                if (it != released.programs.end() && r && r->releasedRevision) {
+                    out.file.programs[n] = it->second;
+                    out.leftOut << QCoreApplication::translate("k528::studio::LinkController",
+                                                             "L%1: %2, not the released version: its released "
+                                                             "version (revision %3) is sent")
+                                       .arg(n)
+                                       .arg(state(r->state))
+                                       .arg(*r->releasedRevision);
+                } else {
+                    out.file.programs.erase(n);
+                    out.leftOut << (r ? QCoreApplication::translate("k528::studio::LinkController", "L%1: %2, never released: not sent")
+                                            .arg(n)
+                                            .arg(state(r->state))
+                                      : QCoreApplication::translate("k528::studio::LinkController", "L%1: not in the database: not sent").arg(n));
+                }
+            }
+        });
+    } catch (const std::exception& e) {
+        out.error = databaseErrorText(e);
+    }
+    return out;
+}
+
 void LinkController::push(const profile::MachineProfile& file, const QString& databaseMachine) {
     if (!open_ || busy_)
         return;
+    // A database machine's push sends what `k528 link push --machine` would:
+    // released programs only, unless the machine's setting allows drafts.
+    const ReleasedPush sent = releasedPush(file, databaseMachine);
+    if (!sent.error.isEmpty()) {
+        emit pushed(false, tr("The push did not start: %1; nothing was sent").arg(sent.error), {});
+        return;
+    }
     busy_ = true;
     QMetaObject::invokeMethod(
-        worker_, [w = worker_, file, line = lineText_, m = databaseMachine.toStdString()] { w->push(file, line, m); },
+        worker_, [w = worker_, file = sent.file, line = lineText_, m = databaseMachine.toStdString()] { w->push(file, line, m); },
         Qt::QueuedConnection);
 }
 

@@ -21,6 +21,7 @@
 #include "link/client.h"
 #include "link_plugin.h"
 
+#include <QStringList>
 #include <QThread>
 #include <array>
 #include <atomic>
@@ -138,5 +139,20 @@ private:
     std::shared_ptr<std::atomic<bool>> cancel_ = std::make_shared<std::atomic<bool>>(false);
     std::shared_ptr<std::atomic<bool>> closing_ = std::make_shared<std::atomic<bool>>(false);
 };
+
+// What a push of the database's machine `machine` sends of `file` (as
+// `k528 link push --machine NAME`, core's transfer::checkReleased and
+// transfer::releasedPlan): its programs that are not released as they are
+// are left out — or sent in their released version when one was released —
+// unless the machine's setting push.unreleased lets this user push drafts.
+// `leftOut`: one line per program left out or replaced, and why. No
+// database machine (`machine` empty or not in the database): `file` as it is.
+struct ReleasedPush {
+    profile::MachineProfile file;
+    QStringList leftOut;
+    bool overridden = false; // drafts sent: the machine's setting allows them
+    QString error;           // the database could not say; nothing may be sent
+};
+ReleasedPush releasedPush(const profile::MachineProfile& file, const QString& machine);
 
 } // namespace k528::studio

@@ -98,7 +98,7 @@ profile::MachineProfile afterPrograms(const profile::MachineProfile& memory, con
 
 QDialog* showPushPreview(QWidget* parent, const QString& what, const profile::MachineProfile& before,
                          const profile::MachineProfile& after, const QString& sendText,
-                         std::function<void(bool)> done) {
+                         std::function<void(bool)> done, const QStringList& leftOut) {
     const std::vector<profile::Change> changes = profile::diff(before, after);
     auto* d = new QDialog(parent);
     d->setObjectName("controller.pushPreview");
@@ -115,6 +115,15 @@ QDialog* showPushPreview(QWidget* parent, const QString& what, const profile::Ma
     head->setObjectName("controller.pushPreview.head");
     head->setWordWrap(true);
     lay->addWidget(head);
+    if (!leftOut.isEmpty()) {
+        auto* left = new QLabel(QDialog::tr("Not sent as they are (a push takes released programs only; the "
+                                            "machine's setting push.unreleased allows drafts):") +
+                                    QLatin1Char('\n') + leftOut.join(QLatin1Char('\n')),
+                                d);
+        left->setObjectName("controller.pushPreview.leftOut");
+        left->setWordWrap(true);
+        lay->addWidget(left);
+    }
     auto* text = new QPlainTextEdit(d);
     text->setObjectName("controller.pushPreview.diff");
     text->setReadOnly(true);

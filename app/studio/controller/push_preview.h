@@ -9,6 +9,7 @@
 #include "profile/profile.h"
 
 #include <QString>
+#include <QStringList>
 #include <functional>
 #include <string>
 #include <vector>
@@ -33,8 +34,10 @@ QString diffText(const std::vector<profile::Change>& changes);
 // Opens (window-modal) the preview of `what` going into the controller,
 // whose memory is `before`; `done(true)` when the user chose to send.
 // Object names: "controller.pushPreview", its diff "controller.pushPreview.diff".
+// `leftOut`: the programs a database machine's push leaves out and why (the
+// release states), shown as "controller.pushPreview.leftOut" when any.
 QDialog* showPushPreview(QWidget* parent, const QString& what, const profile::MachineProfile& before,
                          const profile::MachineProfile& after, const QString& sendText,
-                         std::function<void(bool send)> done);
+                         std::function<void(bool send)> done, const QStringList& leftOut = {});
 
 } // namespace k528::studio
