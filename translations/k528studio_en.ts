@@ -2773,6 +2773,14 @@ Its comment stays: %3</translation>
         <source>clear R</source>
         <translation>clear R</translation>
     </message>
+    <message>
+        <source>On record: transfer %1 in %2</source>
+        <translation>On record: transfer %1 in %2</translation>
+    </message>
+    <message>
+        <source>The transfer is not on record: %1</source>
+        <translation>The transfer is not on record: %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3159,6 +3167,14 @@ Its comment stays: %3</translation>
         <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
         <translation>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</translation>
     </message>
+    <message>
+        <source>not in the database %1</source>
+        <translation>not in the database %1</translation>
+    </message>
+    <message>
+        <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>
+        <translation>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3272,6 +3288,133 @@ Its comment stays: %3</translation>
     <message>
         <source>, frame N%1</source>
         <translation>, frame N%1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ProgramReleases</name>
+    <message>
+        <source>Note (why, what was checked):</source>
+        <translation>Note (why, what was checked):</translation>
+    </message>
+    <message>
+        <source>draft</source>
+        <translation>draft</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>released</translation>
+    </message>
+    <message>
+        <source>withdrawn</source>
+        <translation>withdrawn</translation>
+    </message>
+    <message>
+        <source>Release states of %1 cannot be read: %2</source>
+        <translation>Release states of %1 cannot be read: %2</translation>
+    </message>
+    <message>
+        <source>Released as of revision %1 by %2 at %3</source>
+        <translation>Released as of revision %1 by %2 at %3</translation>
+    </message>
+    <message>
+        <source>Changed since its release: revision %1 is released (by %2 at %3) and a push takes that one</source>
+        <translation>Changed since its release: revision %1 is released (by %2 at %3) and a push takes that one</translation>
+    </message>
+    <message>
+        <source>Deleted from the machine since its release (by %1 at %2)</source>
+        <translation>Deleted from the machine since its release (by %1 at %2)</translation>
+    </message>
+    <message>
+        <source>Withdrawn by %1 at %2 (revision %3 was released)</source>
+        <translation>Withdrawn by %1 at %2 (revision %3 was released)</translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Note: %1</translation>
+    </message>
+    <message>
+        <source>Never released: a push to a controller does not take it</source>
+        <translation>Never released: a push to a controller does not take it</translation>
+    </message>
+    <message>
+        <source>Release L%1 of %2</source>
+        <translation>Release L%1 of %2</translation>
+    </message>
+    <message>
+        <source>Withdraw L%1 of %2</source>
+        <translation>Withdraw L%1 of %2</translation>
+    </message>
+    <message>
+        <source>L%1 is no longer a program of %2: there is nothing to release</source>
+        <translation>L%1 is no longer a program of %2: there is nothing to release</translation>
+    </message>
+    <message>
+        <source>L%1 is released already (revision %2)</source>
+        <translation>L%1 is released already (revision %2)</translation>
+    </message>
+    <message>
+        <source>Released L%1 of %2 as of revision %3 by %4 at %5</source>
+        <translation>Released L%1 of %2 as of revision %3 by %4 at %5</translation>
+    </message>
+    <message>
+        <source>Releasing a program needs the role %1: %2</source>
+        <translation>Releasing a program needs the role %1: %2</translation>
+    </message>
+    <message>
+        <source>L%1 was not released: %2</source>
+        <translation>L%1 was not released: %2</translation>
+    </message>
+    <message>
+        <source>L%1 was never released: there is nothing to withdraw</source>
+        <translation>L%1 was never released: there is nothing to withdraw</translation>
+    </message>
+    <message>
+        <source>L%1 is withdrawn already</source>
+        <translation>L%1 is withdrawn already</translation>
+    </message>
+    <message>
+        <source>Withdrew L%1 of %2 by %3 at %4</source>
+        <translation>Withdrew L%1 of %2 by %3 at %4</translation>
+    </message>
+    <message>
+        <source>Withdrawing a program needs the role %1: %2</source>
+        <translation>Withdrawing a program needs the role %1: %2</translation>
+    </message>
+    <message>
+        <source>L%1 was not withdrawn: %2</source>
+        <translation>L%1 was not withdrawn: %2</translation>
+    </message>
+    <message>
+        <source>Programs of %1 for the controllers</source>
+        <translation>Programs of %1 for the controllers</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>By</source>
+        <translation>By</translation>
+    </message>
+    <message>
+        <source>Release...</source>
+        <translation>Release...</translation>
+    </message>
+    <message>
+        <source>Makes the program's current version the one a push to a controller takes (k528 db release)</source>
+        <translation>Makes the program's current version the one a push to a controller takes (k528 db release)</translation>
+    </message>
+    <message>
+        <source>Withdraw...</source>
+        <translation>Withdraw...</translation>
+    </message>
+    <message>
+        <source>Withdraws the released version: a push no longer takes it (k528 db withdraw)</source>
+        <translation>Withdraws the released version: a push no longer takes it (k528 db withdraw)</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>No.</translation>
     </message>
 </context>
 <context>

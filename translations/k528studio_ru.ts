@@ -2773,6 +2773,14 @@ Its comment stays: %3</source>
         <source>clear R</source>
         <translation>очистка R</translation>
     </message>
+    <message>
+        <source>On record: transfer %1 in %2</source>
+        <translation>Передача записана в журнал: запись %1 в %2</translation>
+    </message>
+    <message>
+        <source>The transfer is not on record: %1</source>
+        <translation>Передача не записана в журнал: %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3159,6 +3167,14 @@ Its comment stays: %3</source>
         <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
         <translation>Контроллер на линии: его светодиоды K и коррекция, как он их показывает; текста ЖКИ и клавиш на линии нет — используйте его собственный K923</translation>
     </message>
+    <message>
+        <source>not in the database %1</source>
+        <translation>нет в базе данных %1</translation>
+    </message>
+    <message>
+        <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>
+        <translation>В базе данных %1 нет станка %2: он работает таким, каким был загружен; станки этой базы — в меню Файл &gt; Станок</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MessagesView</name>
@@ -3272,6 +3288,133 @@ Its comment stays: %3</source>
     <message>
         <source>, frame N%1</source>
         <translation>, кадр N%1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ProgramReleases</name>
+    <message>
+        <source>Note (why, what was checked):</source>
+        <translation>Примечание (почему, что проверено):</translation>
+    </message>
+    <message>
+        <source>draft</source>
+        <translation>черновик</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>выпущена</translation>
+    </message>
+    <message>
+        <source>withdrawn</source>
+        <translation>отозвана</translation>
+    </message>
+    <message>
+        <source>Release states of %1 cannot be read: %2</source>
+        <translation>Состояния программ станка %1 прочитать нельзя: %2</translation>
+    </message>
+    <message>
+        <source>Released as of revision %1 by %2 at %3</source>
+        <translation>Выпущена в ревизии %1: %2, %3</translation>
+    </message>
+    <message>
+        <source>Changed since its release: revision %1 is released (by %2 at %3) and a push takes that one</source>
+        <translation>Изменена после выпуска: выпущена ревизия %1 (%2, %3), в контроллер передаётся она</translation>
+    </message>
+    <message>
+        <source>Deleted from the machine since its release (by %1 at %2)</source>
+        <translation>Удалена из станка после выпуска (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Withdrawn by %1 at %2 (revision %3 was released)</source>
+        <translation>Отозвана: %1, %2 (была выпущена ревизия %3)</translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Примечание: %1</translation>
+    </message>
+    <message>
+        <source>Never released: a push to a controller does not take it</source>
+        <translation>Не выпускалась: передача в контроллер её не берёт</translation>
+    </message>
+    <message>
+        <source>Release L%1 of %2</source>
+        <translation>Выпуск L%1 станка %2</translation>
+    </message>
+    <message>
+        <source>Withdraw L%1 of %2</source>
+        <translation>Отзыв L%1 станка %2</translation>
+    </message>
+    <message>
+        <source>L%1 is no longer a program of %2: there is nothing to release</source>
+        <translation>L%1 больше нет в станке %2: выпускать нечего</translation>
+    </message>
+    <message>
+        <source>L%1 is released already (revision %2)</source>
+        <translation>L%1 уже выпущена (ревизия %2)</translation>
+    </message>
+    <message>
+        <source>Released L%1 of %2 as of revision %3 by %4 at %5</source>
+        <translation>L%1 станка %2 выпущена в ревизии %3: %4, %5</translation>
+    </message>
+    <message>
+        <source>Releasing a program needs the role %1: %2</source>
+        <translation>Для выпуска программы нужна роль %1: %2</translation>
+    </message>
+    <message>
+        <source>L%1 was not released: %2</source>
+        <translation>L%1 не выпущена: %2</translation>
+    </message>
+    <message>
+        <source>L%1 was never released: there is nothing to withdraw</source>
+        <translation>L%1 не выпускалась: отзывать нечего</translation>
+    </message>
+    <message>
+        <source>L%1 is withdrawn already</source>
+        <translation>L%1 уже отозвана</translation>
+    </message>
+    <message>
+        <source>Withdrew L%1 of %2 by %3 at %4</source>
+        <translation>L%1 станка %2 отозвана: %3, %4</translation>
+    </message>
+    <message>
+        <source>Withdrawing a program needs the role %1: %2</source>
+        <translation>Для отзыва программы нужна роль %1: %2</translation>
+    </message>
+    <message>
+        <source>L%1 was not withdrawn: %2</source>
+        <translation>L%1 не отозвана: %2</translation>
+    </message>
+    <message>
+        <source>Programs of %1 for the controllers</source>
+        <translation>Программы станка %1 для контроллеров</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <source>By</source>
+        <translation>Кто</translation>
+    </message>
+    <message>
+        <source>Release...</source>
+        <translation>Выпустить...</translation>
+    </message>
+    <message>
+        <source>Makes the program's current version the one a push to a controller takes (k528 db release)</source>
+        <translation>Текущая версия программы становится той, которую берёт передача в контроллер</translation>
+    </message>
+    <message>
+        <source>Withdraw...</source>
+        <translation>Отозвать...</translation>
+    </message>
+    <message>
+        <source>Withdraws the released version: a push no longer takes it (k528 db withdraw)</source>
+        <translation>Выпущенная версия отзывается: передача в контроллер её больше не берёт</translation>
+    </message>
+    <message>
+        <source>No.</source>
+        <translation>№</translation>
     </message>
 </context>
 <context>

@@ -256,14 +256,6 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
     return stopRequested() ? ExitUsage : ExitOk;
 }
 
-// What the controller says it is (its FC 17 identity), "" when it does not.
-std::string controllerIdentity(link::Link& l) {
-    link::ServerId id;
-    if (l.serverId(id))
-        return {};
-    return id.data;
-}
-
 } // namespace
 
 int runLinkQt(std::span<const std::string> argv) {
@@ -354,9 +346,7 @@ int runLinkQt(std::span<const std::string> argv) {
     if (cmd == "push" || cmd == "pull") {
         // The line as a database machine's `line` names it (cli.md).
         const std::string lineText =
-            isTcpLine(args) ? "tcp://" + line->port.toStdString() + "/" + std::to_string(line->address)
-                            : "serial:" + line->port.toStdString() + "?baud=" + std::to_string(line->baud) +
-                                  "&address=" + std::to_string(line->address);
+            transfer::lineText(line->port.toStdString(), line->baud, line->address, isTcpLine(args));
         if (!TransferRecord::open(args, lineText, record))
             return ExitUsage;
         if (pushReleased && !(record && record->releasedPlan(plan)))
@@ -512,11 +502,8 @@ int runLinkQt(std::span<const std::string> argv) {
         const link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
             std::fprintf(stderr, "pull: %s\n", what.c_str());
         });
-        if (record) {
-            if (e.kind != link::LinkError::Kind::NoAnswer)
-                record->setIdentity(controllerIdentity(l));
-            record->recordPull(l.map(), r, e);
-        }
+        if (record)
+            record->recordPull(l, r, e);
         if (e)
             return done(fail(e));
         const profile::MachineProfile p =
@@ -542,11 +529,8 @@ int runLinkQt(std::span<const std::string> argv) {
     const link::LinkError e = link::push(l, plan, rep, [](const std::string& what, int, int) {
         std::fprintf(stderr, "push: %s\n", what.c_str());
     });
-    if (record) {
-        if (e.kind != link::LinkError::Kind::NoAnswer)
-            record->setIdentity(controllerIdentity(l));
-        record->recordPush(l.map(), plan, rep, e);
-    }
+    if (record)
+        record->recordPush(l, plan, rep, e);
     if (!e) {
         std::string names;
         for (const link::PushReport::Part& p : rep.parts)

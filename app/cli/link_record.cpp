@@ -96,11 +96,6 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
     }
 }
 
-void TransferRecord::setIdentity(const std::string& identity) {
-    if (!identity.empty())
-        where_.controller += " (" + identity + ")";
-}
-
 void TransferRecord::record(const db::TransferEntry& e) {
     try {
         const db::TransferEntry stored = db_.recordTransfer(e);
@@ -111,14 +106,16 @@ void TransferRecord::record(const db::TransferEntry& e) {
     }
 }
 
-void TransferRecord::recordPush(const link::RegisterMap& map, const link::PushPlan& plan,
+void TransferRecord::recordPush(link::Link& l, const link::PushPlan& plan,
                                 const link::PushReport& report, const link::LinkError& error) {
-    record(transfer::pushEntry(where_, map, plan, report, error));
+    transfer::identify(where_, l, error);
+    record(transfer::pushEntry(where_, l.map(), plan, report, error));
 }
 
-void TransferRecord::recordPull(const link::RegisterMap& map, const link::PullResult& pulled,
+void TransferRecord::recordPull(link::Link& l, const link::PullResult& pulled,
                                 const link::LinkError& error) {
-    record(transfer::pullEntry(where_, map, pulled, error));
+    transfer::identify(where_, l, error);
+    record(transfer::pullEntry(where_, l.map(), pulled, error));
 }
 
 } // namespace k528::cli

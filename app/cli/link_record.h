@@ -32,12 +32,11 @@ public:
     // A push for a database machine: false after printing which programs are
     // not released (nothing is sent then).
     bool mayPush(const link::PushPlan& plan);
-    void recordPush(const link::RegisterMap& map, const link::PushPlan& plan,
-                    const link::PushReport& report, const link::LinkError& error);
-    void recordPull(const link::RegisterMap& map, const link::PullResult& pulled,
+    // The entry of a transfer as it ended (transfer::identify names the
+    // controller), written like the studio's link writes its own.
+    void recordPush(link::Link& l, const link::PushPlan& plan, const link::PushReport& report,
                     const link::LinkError& error);
-    // What the controller said it is, added to the line in the entry.
-    void setIdentity(const std::string& identity);
+    void recordPull(link::Link& l, const link::PullResult& pulled, const link::LinkError& error);
 
 private:
     TransferRecord(db::Database db, transfer::Context where)

@@ -38,6 +38,7 @@
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "program/parser.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
 #include "util/version.h"
 #include "editor/debug_panel.h"
@@ -50,6 +51,7 @@
 #include <QCloseEvent>
 #include <QPointer>
 #include <memory>
+#include <optional>
 #include <QScrollArea>
 #include <QSettings>
 #include <QTimer>
@@ -95,6 +97,10 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     timeLabel_->setObjectName("status.machineTime");
     statusBar()->addPermanentWidget(timeLabel_);
     installDatabaseUi(this, fileMenu_, machineMenu_->menuAction()); // database/database_ui.cpp
+    setProperty("k528.machineName", QString::fromStdString(machine_.profile.name)); // File > Transfers… opens on it
+    // File > Database…: the machine's label names the new database (the
+    // history dock records into it: history/history_dock.cpp).
+    connect(DatabaseWatch::instance(), &DatabaseWatch::switched, this, &MainWindow::followDatabase);
     connect(session_, &SimulationSession::advanced, this, [this] {
         const std::int64_t s = session_->timeMs() / 1000;
         const QString t = tr("Machine time %1:%2:%3")
@@ -476,6 +482,39 @@ int MainWindow::keepInDatabase() {
     return std::max(0, *result);
 }
 
+void MainWindow::updateMachineLabel() {
+    const QString name = QString::fromStdString(machine_.profile.name);
+    machineLabel_->setText(machine_.source.isEmpty() ? tr("Machine: %1").arg(name)
+                                                     : tr("Machine: %1 (%2)").arg(name, machine_.source));
+    machineLabel_->setToolTip(machine_.warning);
+}
+
+void MainWindow::followDatabase() {
+    const std::string name = machine_.profile.name;
+    const QString where = ShopDatabase::currentText();
+    try {
+        const auto found = ShopDatabase::at()->use([&](db::Database& d) -> std::optional<QString> {
+            if (!d.hasMachine(name))
+                return std::nullopt;
+            return QString::fromStdString(d.path().string());
+        });
+        if (found) {
+            // As a start on this database names it (session/machine_source.cpp).
+            machine_.source = QCoreApplication::translate("k528::studio::MachineSource", "database %1").arg(*found);
+            machine_.warning.clear();
+        } else {
+            machine_.source = tr("not in the database %1").arg(where);
+            machine_.warning = tr("The database %1 has no machine %2: it runs as it was loaded; File > Machine "
+                                  "offers this database's machines")
+                                   .arg(where, QString::fromStdString(name));
+        }
+    } catch (const std::exception& e) {
+        machine_.source = tr("not in the database %1").arg(where);
+        machine_.warning = databaseErrorText(e);
+    }
+    updateMachineLabel();
+}
+
 void MainWindow::fillMachineMenu() {
     machineMenu_->clear();
     QString warning;
@@ -580,13 +619,7 @@ void MainWindow::retranslate() {
     loadProgramsAction_->setText(tr("&Load programs..."));
     keepAction_->setText(tr("&Keep the controller's memory in the database"));
     machineMenu_->setTitle(tr("&Machine"));
-    {
-        const QString name = QString::fromStdString(machine_.profile.name);
-        machineLabel_->setText(machine_.source.isEmpty()
-                                   ? tr("Machine: %1").arg(name)
-                                   : tr("Machine: %1 (%2)").arg(name, machine_.source));
-        machineLabel_->setToolTip(machine_.warning);
-    }
+    updateMachineLabel();
     quitAction_->setText(tr("&Quit"));
     viewMenu_->setTitle(tr("&View"));
     languageMenu_->setTitle(tr("&Language"));

@@ -116,6 +116,10 @@ private:
     void viewedChanged();
     void createMenus();
     void fillMachineMenu();
+    void updateMachineLabel();
+    // After File > Database…: the machine's label names the new database
+    // (or says the machine is not in it).
+    void followDatabase();
     void createSimulationMenu();
     void updateFaultActions();
     void retranslate();

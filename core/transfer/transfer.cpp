@@ -13,6 +13,27 @@ std::string crcText(std::uint32_t crc) {
     return buf;
 }
 
+std::string lineText(const std::string& port, int baud, int address, bool tcp) {
+    if (tcp)
+        return "tcp://" + port + "/" + std::to_string(address);
+    return "serial:" + port + "?baud=" + std::to_string(baud) + "&address=" + std::to_string(address);
+}
+
+std::string controllerIdentity(link::Link& link) {
+    link::ServerId id;
+    if (link.serverId(id))
+        return {};
+    return id.data;
+}
+
+void identify(Context& where, link::Link& link, const link::LinkError& error) {
+    if (error.kind == link::LinkError::Kind::NoAnswer)
+        return;
+    const std::string identity = controllerIdentity(link);
+    if (!identity.empty())
+        where.controller += " (" + identity + ")";
+}
+
 namespace {
 
 std::string stateText(link::PushReport::State s) {

@@ -3,10 +3,11 @@
 // take — the small API the command line's `k528 link push/pull` and the
 // studio's Controller dock call around link::push / link::pull:
 //
-//   transfer::Context where{"grinder-205", revision, "/dev/ttyUSB0 address 1 (…)"};
+//   transfer::Context where{"grinder-205", revision, transfer::lineText(port, baud, 1, false)};
 //   const auto check = transfer::checkReleased(db, "grinder-205", plan);
 //   if (!check.allowed) refuse(check.message);               // nothing is sent
 //   const link::LinkError e = link::push(l, plan, report);
+//   transfer::identify(where, l, e);
 //   db.recordTransfer(transfer::pushEntry(where, l.map(), plan, report, e));
 //
 // Pure functions of their inputs (no clock, no I/O) but checkReleased and
@@ -29,6 +30,20 @@ struct Context {
     int revision = 0;
     std::string controller;
 };
+
+// The line as a database machine's `line` names it (cli.md) and the log
+// records it: "serial:/dev/ttyUSB0?baud=115200&address=1", or for Modbus
+// TCP (`port` HOST:PORT) "tcp://HOST:PORT/1".
+std::string lineText(const std::string& port, int baud, int address, bool tcp);
+
+// What the controller says it is (its FC 17 identity), "" when it does not.
+std::string controllerIdentity(link::Link& link);
+
+// After a transfer: the controller's identity added to where.controller
+// ("LINE (IDENTITY)") — unless the line never answered (`error` NoAnswer)
+// or the controller names none. `k528 link push/pull` and the studio's
+// link call it before pushEntry/pullEntry.
+void identify(Context& where, link::Link& link, const link::LinkError& error);
 
 // "1a2b3c4d": a CRC-32 as the log keeps it.
 std::string crcText(std::uint32_t crc);

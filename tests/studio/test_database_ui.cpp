@@ -11,7 +11,15 @@
 #include "constants/constants_dock.h"
 #include "constants/constants_editor.h"
 #include "constants/constants_follow.h"
+#include "controller/link_controller.h"
 #include "controller/simulated_controller.h"
+#include "db/message_log.h"
+#include "editor/editor_tab.h"
+#include "editor/program_releases.h"
+#include "history/history_dock.h"
+#include "history/history_model.h"
+#include "link_plugins.h"
+#include "session/machine_source.h"
 #include "database/database_ui.h"
 #include "language.h"
 #include "main_window.h"
@@ -19,7 +27,13 @@
 #include "session/shop_database.h"
 #include "session/simulation_session.h"
 
+#include <QDockWidget>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
+#include <QStackedWidget>
+#include <QTreeWidget>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QComboBox>
@@ -228,6 +242,250 @@ private slots:
         QVERIFY(!d.table()->item(0, 1)->text().isEmpty()); // the user: the OS's, or the server's current_user
         d.machineFilter()->setCurrentIndex(0); // every machine
         QVERIFY(d.table()->rowCount() >= 2);
+    }
+
+    // The studio's push and pull on a real line (`k528 serve` on a socat pty
+    // pair) go on record as `k528 link push/pull` do: another process's
+    // `k528 db log --json` sees them, a failed push with its failure.
+    void studioTransfersAreOnRecord() {
+#ifndef K528_RTU_PLUGIN
+        QSKIP("built without the link plugins");
+#else
+        QVERIFY(openDatabase(location_).isEmpty());
+        ShopDatabase::at()->use([](db::Database& d) {
+            if (!d.hasMachine("lathe-push"))
+                d.createMachine(lathe("lathe-push"));
+        });
+        qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_RTU_PLUGIN)).absolutePath().toUtf8());
+        const QString tag = QString::number(QCoreApplication::applicationPid());
+        const QString a = dir_.filePath("dbla" + tag), b = dir_.filePath("dblb" + tag);
+        QProcess socat, serve;
+        socat.start("socat", {"pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b});
+        QVERIFY(socat.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a) && QFile::exists(b), 5000);
+        const auto stop = qScopeGuard([&] {
+            serve.terminate();
+            serve.waitForFinished(5000);
+            socat.terminate();
+            socat.waitForFinished(3000);
+            for (const QString& p : {a, b})
+                QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
+        });
+        // training-lathe in F7 «РАБОТА С ПЭВМ».
+        serve.start(QStringLiteral(K528_CLI), {"serve", "--port", a, "--profile", "training-lathe", "--keys",
+                                               "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
+        QVERIFY(serve.waitForStarted());
+        QByteArray said;
+        QTRY_VERIFY_WITH_TIMEOUT((said += serve.readAllStandardError()).contains("k528 serve:") ||
+                                     serve.state() != QProcess::Running,
+                                 10000);
+        QVERIFY2(serve.state() == QProcess::Running, said.constData());
+
+        QString error;
+        linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
+        QVERIFY2(plugin, qPrintable(error));
+        linkplugin::LineSettings line;
+        line.port = b;
+        LinkController link(*plugin, line, lathe("lathe-push"));
+        QSignalSpy opened(&link, &LinkController::opened);
+        link.open();
+        QVERIFY(opened.wait(15000));
+        QVERIFY2(opened.first().first().toBool(), qPrintable(opened.first().last().toString()));
+
+        QSignalSpy recorded(&link, &LinkController::transferRecorded);
+        QSignalSpy pushed(&link, &LinkController::pushed);
+        profile::MachineProfile p = lathe("lathe-push");
+        p.programs[77] = "%L77 (on record)\nN1 G1 X10 FX100\nN2 M02\n";
+        link.push(p, QStringLiteral("lathe-push"));
+        QVERIFY(pushed.wait(60000));
+        QVERIFY2(pushed.first().first().toBool(), qPrintable(pushed.first().at(1).toString()));
+        QCOMPARE(recorded.count(), 1);
+        QVERIFY2(recorded.first().first().toBool(), qPrintable(recorded.first().last().toString()));
+        QVERIFY(link.lastTransfer().id > 0);
+
+        QSignalSpy pulled(&link, &LinkController::pulled);
+        link.pull();
+        QVERIFY(pulled.wait(60000));
+        QVERIFY(pulled.first().first().toBool());
+        QCOMPARE(recorded.count(), 2);
+
+        // Another process reads the log: the pull newest, then the push.
+        Ran log = runK528({"db", "log", "lathe-push", "--json", "--db", location_});
+        QVERIFY2(log.exitCode == 0, qPrintable(log.err));
+        QJsonArray t = QJsonDocument::fromJson(log.out.toUtf8()).object().value("transfers").toArray();
+        QVERIFY2(t.size() >= 2, qPrintable(log.out));
+        const QJsonObject pull = t.at(0).toObject(), push = t.at(1).toObject();
+        QCOMPARE(pull.value("direction").toString(), QString("pull"));
+        QCOMPARE(pull.value("result").toString(), QString("ok"));
+        QCOMPARE(push.value("direction").toString(), QString("push"));
+        QCOMPARE(push.value("result").toString(), QString("ok"));
+        QCOMPARE(push.value("machine").toString(), QString("lathe-push"));
+        QCOMPARE(push.value("revision").toInt(), 1);
+        // The line as `k528 link` names it, and what the controller says it is.
+        QVERIFY2(push.value("controller").toString().startsWith("serial:" + b + "?baud=115200&address=1"),
+                 qPrintable(push.value("controller").toString()));
+        QVERIFY(!push.value("user").toString().isEmpty() && !push.value("host").toString().isEmpty());
+        bool l77 = false;
+        for (const QJsonValue& v : push.value("items").toArray()) {
+            const QJsonObject item = v.toObject();
+            QCOMPARE(item.value("crc32").toString().size(), 8);
+            if (item.value("kind").toString() == "program" && item.value("number").toInt() == 77) {
+                l77 = true;
+                QCOMPARE(item.value("state").toString(), QString("new"));
+                QCOMPARE(item.value("sha256").toString().size(), 64);
+            }
+        }
+        QVERIFY2(l77, qPrintable(log.out));
+        QVERIFY(pull.value("items").toArray().size() >= 3); // C, R, the messages, the programs
+
+        // The controller goes away: the push fails, and its failure is on record.
+        serve.terminate();
+        QVERIFY(serve.waitForFinished(5000));
+        pushed.clear();
+        link.push(p, QStringLiteral("lathe-push"));
+        QVERIFY(pushed.wait(120000));
+        QVERIFY(!pushed.first().first().toBool());
+        QCOMPARE(recorded.count(), 3);
+        log = runK528({"db", "log", "lathe-push", "--json", "--limit", "1", "--db", location_});
+        QVERIFY2(log.exitCode == 0, qPrintable(log.err));
+        t = QJsonDocument::fromJson(log.out.toUtf8()).object().value("transfers").toArray();
+        QCOMPARE(t.size(), 1);
+        QCOMPARE(t.at(0).toObject().value("direction").toString(), QString("push"));
+        QCOMPARE(t.at(0).toObject().value("result").toString(), QString("failed"));
+        QVERIFY(!t.at(0).toObject().value("detail").toString().isEmpty());
+#endif
+    }
+
+    // The release states beside the editor's database programs: Release and
+    // Withdraw of the studio are those `k528 db` sees, and a refused one says why.
+    void releasesBesideTheEditor() {
+        QVERIFY(openDatabase(location_).isEmpty());
+        const int n = ShopDatabase::at()->use([](db::Database& d) {
+            if (!d.hasMachine("lathe-rel"))
+                d.createMachine(lathe("lathe-rel"));
+            return d.programReleases("lathe-rel").front().number;
+        });
+        EditorTab tab(nullptr);
+        QVERIFY(!tab.releases()->isVisibleTo(&tab)); // no database document yet
+        QVERIFY(tab.openFromDatabase("lathe-rel"));
+        ProgramReleases* r = tab.releases();
+        QVERIFY(r->isVisibleTo(&tab));
+        QCOMPARE(r->machine(), QString("lathe-rel"));
+        QVERIFY(r->list()->topLevelItemCount() >= 1);
+        QTreeWidgetItem* item = r->list()->topLevelItem(0);
+        QCOMPARE(item->text(0), QStringLiteral("L%1").arg(n));
+        QCOMPARE(item->text(1), QString("draft"));
+        QVERIFY2(item->toolTip(1).contains("Never released"), qPrintable(item->toolTip(1)));
+        r->list()->setCurrentItem(item);
+        QVERIFY(r->releaseButton()->isEnabled());
+        QVERIFY(!r->withdrawButton()->isEnabled());
+
+        // Release with a note, as the button does.
+        QString asked;
+        r->setNoteQuestion([&](const QString& title) -> std::optional<QString> {
+            asked = title;
+            return QStringLiteral("checked on the machine");
+        });
+        QSignalSpy said(&tab, &EditorTab::statusMessage);
+        r->releaseButton()->click();
+        QVERIFY2(asked.contains(QStringLiteral("L%1").arg(n)), qPrintable(asked));
+        QVERIFY(!said.isEmpty());
+        QVERIFY2(said.last().first().toString().startsWith(QStringLiteral("Released L%1").arg(n)),
+                 qPrintable(said.last().first().toString()));
+        item = r->list()->topLevelItem(0);
+        QCOMPARE(item->text(1), QString("released"));
+        QVERIFY2(item->toolTip(1).contains("checked on the machine") && item->toolTip(1).contains("Released as of"),
+                 qPrintable(item->toolTip(1)));
+        QVERIFY(!item->text(2).isEmpty()); // who
+        Ran show = runK528({"db", "show", "lathe-rel", "--programs", "--json", "--db", location_});
+        QVERIFY2(show.exitCode == 0, qPrintable(show.err));
+        auto stateOf = [&](const Ran& ran) {
+            for (const QJsonValue& v : QJsonDocument::fromJson(ran.out.toUtf8()).object().value("programs").toArray())
+                if (v.toObject().value("number").toInt() == n)
+                    return v.toObject().value("state").toString();
+            return QString();
+        };
+        QCOMPARE(stateOf(show), QString("released"));
+
+        // Released again: refused with the reason, nothing written.
+        const QString again = r->release(n, QString());
+        QVERIFY2(again.contains("released already"), qPrintable(again));
+
+        // Withdraw: `k528 db` sees it; withdrawn twice is refused.
+        r->list()->setCurrentItem(r->list()->topLevelItem(0));
+        QVERIFY(r->withdrawButton()->isEnabled());
+        r->withdrawButton()->click();
+        QCOMPARE(r->list()->topLevelItem(0)->text(1), QString("withdrawn"));
+        show = runK528({"db", "show", "lathe-rel", "--programs", "--json", "--db", location_});
+        QCOMPARE(stateOf(show), QString("withdrawn"));
+        const QString twice = r->withdraw(n, QString());
+        QVERIFY2(twice.contains("withdrawn already"), qPrintable(twice));
+        QVERIFY(!r->withdrawButton()->isEnabled());
+
+        // A release by `k528 db release` elsewhere is read again; the words in Russian.
+        const Ran rel = runK528({"db", "release", "lathe-rel", QStringLiteral("L%1").arg(n), "--note", "снова",
+                                 "--db", location_});
+        QVERIFY2(rel.exitCode == 0, qPrintable(rel.err));
+        QVERIFY(setLanguage("ru"));
+        r->refresh();
+        QCOMPARE(r->list()->topLevelItem(0)->text(1), QStringLiteral("выпущена"));
+        QCOMPARE(ProgramReleases::stateText(db::ProgramState::Draft), QStringLiteral("черновик"));
+        QCOMPARE(ProgramReleases::stateText(db::ProgramState::Withdrawn), QStringLiteral("отозвана"));
+        QVERIFY(r->list()->topLevelItem(0)->toolTip(1).contains(QStringLiteral("снова")));
+        QVERIFY(setLanguage("en"));
+    }
+
+    // After File > Database… the message history records into the new
+    // database and shows its messages, and the machine's label names it.
+    void historyFollowsTheDatabase() {
+        QVERIFY(openDatabase(location_).isEmpty());
+        const QString second = QString::fromStdString(testing::testLocation(dir_, "second.db").text());
+        // The second database holds a message of the window's machine.
+        const QString text = QStringLiteral("ТОЛЬКО ВО ВТОРОЙ БАЗЕ");
+        ShopDatabase::at(db::Location::parse(second.toStdString()))->useLog([&](db::MessageLog& log) {
+            const std::int64_t now = QDateTime::currentMSecsSinceEpoch();
+            const std::int64_t run = log.beginRun("training-lathe", now);
+            db::MessageEvent e;
+            e.kind = db::MessageEvent::Kind::Raised;
+            e.seq = 1;
+            e.machineMs = 10;
+            e.dayMs = now;
+            e.message.machine = "training-lathe";
+            e.message.source = db::MessageSource::Program;
+            e.message.number = 42;
+            e.message.text = text.toStdString();
+            e.message.textEn = "only in the second database";
+            log.write(run, std::span<const db::MessageEvent>(&e, 1));
+        });
+        MainWindow w(loadMachine("training-lathe"));
+        auto* label = w.statusBar()->findChild<QLabel*>("status.machine");
+        QVERIFY(label);
+        auto* dock = w.findChild<QDockWidget*>("dock.history");
+        QVERIFY(dock);
+        auto shown = [&]() -> HistoryView* {
+            auto* pages = dock->findChild<QStackedWidget*>("history.pages");
+            return pages ? qobject_cast<HistoryView*>(pages->currentWidget()) : nullptr;
+        };
+        auto holds = [&](HistoryView* v) {
+            v->model()->refresh();
+            for (int i = 0; i < v->model()->rowCount(); ++i)
+                if (QString::fromStdString(v->model()->record(i).text) == text)
+                    return true;
+            return false;
+        };
+        QVERIFY(shown());
+        QVERIFY(!holds(shown()));
+
+        QVERIFY(openDatabase(second).isEmpty());
+        QTRY_VERIFY(shown() && holds(shown()));
+        // The label names the new database as a start on it would.
+        const QString secondName = QString::fromStdString(ShopDatabase::at()->path().string());
+        QVERIFY2(label->text().contains(secondName), qPrintable(label->text()));
+        // Back: the first database's history again, without that message.
+        QVERIFY(openDatabase(location_).isEmpty());
+        QTRY_VERIFY(shown() && !holds(shown()) && shown()->model()->error().isEmpty());
+        QVERIFY2(label->text().contains(location_) || label->text().contains("not in the database"),
+                 qPrintable(label->text()));
     }
 };
 

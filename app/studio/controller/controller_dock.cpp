@@ -13,6 +13,7 @@
 #include "session/machine_source.h"
 #include "units/units.h"
 
+#include <utility>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialog>
@@ -293,7 +294,9 @@ void ControllerDock::updateEnabled() {
                                 .arg(linkplugin::searchPath().join(", "), pluginProblem_.trimmed()));
 }
 
-void ControllerDock::say(const QString& text) {
+void ControllerDock::say(const QString& given) {
+    // A transfer that could not go on record says so with its own words.
+    const QString text = notOnRecord_.isEmpty() ? given : given + QStringLiteral(" — ") + std::exchange(notOnRecord_, {});
     lastMessage_ = text;
     transfer_->setText(text);
     window_->statusBar()->showMessage(text, 15000);
@@ -383,6 +386,10 @@ void ControllerDock::connectLine() {
         updateEnabled();
         emit transferFinished(s.revision != 0, lastMessage_);
     });
+    connect(l, &LinkController::transferRecorded, this, [this](bool ok, const QString& message) {
+        if (!ok) // said with the transfer's own words, which follow at once
+            notOnRecord_ = message;
+    });
     connect(l, &LinkController::pushed, this, [this](bool ok, const QString& message, const QStringList& written) {
         progress_->setRange(0, 1);
         progress_->setValue(ok ? 1 : 0);
@@ -456,6 +463,7 @@ void ControllerDock::pushFile(const QString& given) {
         emit transferFinished(false, lastMessage_);
         return;
     }
+    pendingMachine_.clear();
     startPush(file, QFileInfo(path).fileName());
 }
 
@@ -463,6 +471,7 @@ void ControllerDock::pushMachine(const QString& name) {
     if (!link_ || !link_->isOpen() || link_->busy() || preview_)
         return;
     try {
+        pendingMachine_ = name; // on record as the database's machine pushed
         startPush(loadMachine(name).profile, name);
     } catch (const std::exception& e) {
         say(tr("The machine %1 cannot be loaded: %2").arg(name, QString::fromUtf8(e.what())));
@@ -475,7 +484,7 @@ void ControllerDock::startPush(const profile::MachineProfile& file, const QStrin
     pending_ = std::make_unique<profile::MachineProfile>(file);
     pendingWhat_ = what;
     say(tr("Reading the controller's memory to show what %1 changes...").arg(what));
-    link_->pull();
+    link_->pull(false); // a read for the preview, not a pull on record
     updateEnabled();
 }
 
@@ -486,7 +495,7 @@ void ControllerDock::showPreview(const profile::MachineProfile& memory) {
         std::unique_ptr<profile::MachineProfile> file = std::move(pending_);
         if (send && file && link_ && link_->isOpen()) {
             say(tr("Pushing %1...").arg(pendingWhat_));
-            link_->push(*file);
+            link_->push(*file, pendingMachine_);
         } else {
             say(tr("Push of %1 not started; nothing was sent").arg(pendingWhat_));
             emit transferFinished(false, lastMessage_);

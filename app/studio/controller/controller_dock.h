@@ -138,6 +138,8 @@ private:
     bool connecting_ = false;
     std::unique_ptr<profile::MachineProfile> pending_; // the push waiting for its preview
     QString pendingWhat_;
+    QString pendingMachine_; // the database's machine pushed ("" a file)
+    QString notOnRecord_;    // why the last transfer is not on record
     QString lastMessage_, lastMonitor_, lostWhy_;
     int lastRevision_ = 0;
 };

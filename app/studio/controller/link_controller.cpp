@@ -1,6 +1,8 @@
 #include "controller/link_controller.h"
 
 #include "link/monitor.h"
+#include "session/shop_database.h"
+#include "transfer/transfer.h"
 #include "link/register_map.h"
 #include "program/parser.h"
 #include "units/units.h"
@@ -61,6 +63,45 @@ private:
 };
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+// A transfer stopped by the user, as the log words it.
+link::LinkError cancelledError() { return {link::LinkError::Kind::Refused, 0, "cancelled by the user"}; }
+
+// The controller's identity added to `where` after a transfer (one more
+// exchange; none when the line is closing).
+void identifyAfter(transfer::Context& where, link::Link& l, const link::LinkError& e) {
+    try {
+        transfer::identify(where, l, e);
+    } catch (const Cancelled&) {
+    }
+}
+
+// A request that pushes: the plan made on the line's thread, pushed, and its
+// entry for the transfer log left in `entry` (also when cancelled). A plan
+// the controller refuses sends nothing and is not on record.
+using EntrySlot = std::shared_ptr<std::optional<db::TransferEntry>>;
+std::function<link::LinkError(link::Link&)> pushOnRecord(
+    std::function<link::LinkError(link::Link&, link::PushPlan&)> planner, std::string line, EntrySlot entry) {
+    return [planner = std::move(planner), line = std::move(line), entry](link::Link& l) -> link::LinkError {
+        link::PushPlan plan;
+        if (link::LinkError e = planner(l, plan))
+            return e;
+        link::PushReport rep;
+        link::LinkError e;
+        transfer::Context where{{}, 0, line};
+        try {
+            e = link::push(l, plan, rep);
+        } catch (const Cancelled&) {
+            *entry = transfer::pushEntry(where, l.map(), plan, rep, cancelledError());
+            throw;
+        }
+        identifyAfter(where, l, e);
+        *entry = transfer::pushEntry(where, l.map(), plan, rep, e);
+        if (e && rep.anyNew())
+            e.message += "; " + rep.summary();
+        return e;
+    };
+}
 
 } // namespace
 
@@ -214,8 +255,10 @@ public:
         report();
     }
 
-    void pull(MemoryDone done = {}) {
-        if (later([this, done] { pull(done); }))
+    // `record`: the pull goes on record (the transfer log) — not the read
+    // that shows what a push would change.
+    void pull(MemoryDone done, bool record, std::string line) {
+        if (later([this, done, record, line] { pull(done, record, line); }))
             return;
         if (!link_)
             return;
@@ -233,11 +276,20 @@ public:
         meter_->cancellable = false;
         if (cancelled)
             abortTransfer();
+        std::optional<db::TransferEntry> entry;
+        if (record) {
+            transfer::Context where{{}, 0, line};
+            const link::LinkError why = cancelled ? cancelledError() : e;
+            identifyAfter(where, *link_, why);
+            entry = transfer::pullEntry(where, link_->map(), r, why);
+        }
         report();
         if (cancelled || e) {
             const QString why = cancelled ? LinkController::tr("cancelled; nothing was kept") : fromStd(e.message);
-            post([why, done](LinkController* c) {
+            post([why, done, entry](LinkController* c) {
                 c->busy_ = false;
+                if (entry)
+                    c->recordTransfer(*entry, {});
                 if (done)
                     done(false, why, {});
                 else
@@ -250,8 +302,10 @@ public:
         for (const auto& [n, text] : r.programs)
             fetched_.insert(n);
         const std::array<std::int32_t, 300> rv = r.r;
-        post([p, rv, done](LinkController* c) {
+        post([p, rv, done, entry](LinkController* c) {
             c->busy_ = false;
+            if (entry)
+                c->recordTransfer(*entry, {});
             // The pulled memory on the machine's base (name, title, PLC texts, simulation settings).
             profile::MachineProfile m = c->machine_;
             m.c = p.c;
@@ -330,8 +384,8 @@ public:
         return t_ ? fromStd(link::formatFrameLog(t_->frameLog())) : QString();
     }
 
-    void push(const profile::MachineProfile& file) {
-        if (later([this, file] { push(file); }))
+    void push(const profile::MachineProfile& file, std::string line, std::string machine) {
+        if (later([this, file, line, machine] { push(file, line, machine); }))
             return;
         if (!link_)
             return;
@@ -339,16 +393,28 @@ public:
         cancel_->store(false);
         meter_->cancellable = true;
         link::PushReport rep;
-        link::LinkError e;
+        link::PushPlan plan;
+        // A file the controller would refuse sends nothing and is not on
+        // record (as `k528 link push`); what the push did is.
+        link::LinkError e = link::planMachineFile(link_->map(), file, plan);
+        const bool planned = !e;
         bool cancelled = false;
         try {
-            e = link::push(*link_, file, rep, progressFn());
+            if (planned)
+                e = link::push(*link_, plan, rep, progressFn());
         } catch (const Cancelled&) {
             cancelled = true;
         }
         meter_->cancellable = false;
         if (cancelled)
             abortTransfer();
+        std::optional<db::TransferEntry> entry;
+        if (planned) {
+            transfer::Context where{{}, 0, line};
+            const link::LinkError why = cancelled ? cancelledError() : e;
+            identifyAfter(where, *link_, why);
+            entry = transfer::pushEntry(where, link_->map(), plan, rep, why);
+        }
         fetched_.clear(); // the programs may have changed: read again when shown
         monitor_.memoryChanged(); // C and R read again at once
         report();
@@ -364,10 +430,12 @@ public:
         const bool ok = !cancelled && !e;
         const QString why = cancelled ? LinkController::tr("cancelled; the program being sent was not committed")
                                       : fromStd(e.message);
-        post([ok, why, written](LinkController* c) {
+        post([ok, why, written, entry, machine](LinkController* c) {
             c->busy_ = false;
             c->programs_ = {};
             ++c->revision_;
+            if (entry)
+                c->recordTransfer(*entry, machine);
             emit c->pushed(ok, why, written);
         });
     }
@@ -434,6 +502,10 @@ private:
 LinkController::LinkController(linkplugin::LinkPlugin& plugin, const linkplugin::LineSettings& line,
                                const profile::MachineProfile& machine, QObject* parent)
     : Controller(parent), plugin_(plugin), line_(line), machine_(machine) {
+    // The line as the transfer log names it: a Modbus TCP line is HOST:PORT
+    // (a serial device is a path, or COMn).
+    const bool tcp = line_.port.contains(QLatin1Char(':')) && !line_.port.startsWith(QLatin1Char('/'));
+    lineText_ = transfer::lineText(line_.port.toStdString(), line_.baud, line_.address, tcp);
     state_.connected = false;
     state_.hasLcd = false;
     state_.hasServoData = false;
@@ -460,18 +532,40 @@ void LinkController::open() {
     QMetaObject::invokeMethod(worker_, [w = worker_] { w->open(); }, Qt::QueuedConnection);
 }
 
-void LinkController::pull() {
+void LinkController::pull(bool record) {
     if (!open_ || busy_)
         return;
     busy_ = true;
-    QMetaObject::invokeMethod(worker_, [w = worker_] { w->pull(); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(worker_, [w = worker_, record, line = lineText_] { w->pull({}, record, line); },
+                              Qt::QueuedConnection);
 }
 
-void LinkController::push(const profile::MachineProfile& file) {
+void LinkController::push(const profile::MachineProfile& file, const QString& databaseMachine) {
     if (!open_ || busy_)
         return;
     busy_ = true;
-    QMetaObject::invokeMethod(worker_, [w = worker_, file] { w->push(file); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(
+        worker_, [w = worker_, file, line = lineText_, m = databaseMachine.toStdString()] { w->push(file, line, m); },
+        Qt::QueuedConnection);
+}
+
+void LinkController::recordTransfer(db::TransferEntry entry, const std::string& databaseMachine) {
+    // The database's machine: the one pushed, else this window's machine
+    // when the database has it (as `k528 link --machine NAME`), else none.
+    const std::string name = databaseMachine.empty() ? machine_.name : databaseMachine;
+    try {
+        const db::TransferEntry stored = ShopDatabase::at()->use([&](db::Database& d) {
+            if (const auto m = d.machine(name)) {
+                entry.machine = name;
+                entry.revision = m->revision;
+            }
+            return d.recordTransfer(entry);
+        });
+        lastTransfer_ = stored;
+        emit transferRecorded(true, tr("On record: transfer %1 in %2").arg(stored.id).arg(ShopDatabase::currentText()));
+    } catch (const std::exception& e) {
+        emit transferRecorded(false, tr("The transfer is not on record: %1").arg(databaseErrorText(e)));
+    }
 }
 
 void LinkController::cancel() { cancel_->store(true); }
@@ -679,15 +773,18 @@ void LinkController::setC(int number, std::int64_t value, Done done) {
 }
 
 void LinkController::setAllC(std::vector<std::int64_t> c, Done done) {
+    auto entry = std::make_shared<std::optional<db::TransferEntry>>();
     request(tr("C-parameters"),
-            [c](link::Link& l) {
-                link::PushPlan plan;
-                plan.hasC = true;
-                plan.c = c;
-                link::PushReport rep;
-                return link::push(l, plan, rep);
-            },
-            [this, c, done](bool ok, const QString& why) {
+            pushOnRecord(
+                [c](link::Link&, link::PushPlan& plan) {
+                    plan.hasC = true;
+                    plan.c = c;
+                    return link::LinkError{};
+                },
+                lineText_, entry),
+            [this, c, done, entry](bool ok, const QString& why) {
+                if (*entry)
+                    recordTransfer(**entry, {});
                 if (ok && c.size() == c_.size())
                     applyMemory(c, nullptr);
                 if (done)
@@ -728,17 +825,17 @@ void LinkController::loadPrograms(const std::string& text, const QString& source
     busy_ = true;
     emit lineChanged();
     const std::string name = source.toStdString();
-    auto op = [text, name](link::Link& l) -> link::LinkError {
-        link::PushPlan plan;
-        if (link::LinkError e = link::planProgramFile(l, text, name, plan))
-            return e;
-        link::PushReport rep;
-        link::LinkError e = link::push(l, plan, rep);
-        if (e && rep.anyNew())
-            e.message += "; " + rep.summary();
-        return e;
+    auto entry = std::make_shared<std::optional<db::TransferEntry>>();
+    auto op = pushOnRecord([text, name](link::Link& l, link::PushPlan& plan) {
+        return link::planProgramFile(l, text, name, plan);
+    }, lineText_, entry);
+    Done recorded = [this, done, entry](bool ok, const QString& why) {
+        if (*entry)
+            recordTransfer(**entry, {});
+        if (done)
+            done(ok, why);
     };
-    QMetaObject::invokeMethod(worker_, [w = worker_, op, done] { w->run(op, done, true); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(worker_, [w = worker_, op, recorded] { w->run(op, recorded, true); }, Qt::QueuedConnection);
 }
 
 void LinkController::readMemory(MemoryDone done) {
@@ -748,7 +845,8 @@ void LinkController::readMemory(MemoryDone done) {
     }
     busy_ = true;
     emit lineChanged();
-    QMetaObject::invokeMethod(worker_, [w = worker_, done] { w->pull(done); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(worker_, [w = worker_, done, line = lineText_] { w->pull(done, true, line); },
+                              Qt::QueuedConnection);
 }
 
 } // namespace k528::studio

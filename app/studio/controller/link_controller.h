@@ -11,9 +11,13 @@
 // a text, the whole memory), one at a time in order. A cancelled or
 // broken transfer leaves the controller as the link contract says: nothing
 // half-committed (the transfer is aborted, the program stays as it was).
+// Each push and pull goes on record in the window's database as `k528 link
+// push/pull` does (core/transfer: the same entry, the line's name and the
+// controller's identity), a failed or cancelled one with its failure.
 #pragma once
 
 #include "controller/controller.h"
+#include "db/database.h"
 #include "link/client.h"
 #include "link_plugin.h"
 
@@ -75,11 +79,19 @@ public:
     void frameLog(std::function<void(const QString& text)> done);
     const LineInfo& lineInfo() const { return info_; }
     const link::LiveState& live() const { return live_; }
+    // The line as the transfer log names it ("serial:/dev/ttyUSB0?baud=…&address=1").
+    const std::string& lineText() const { return lineText_; }
+    // The last transfer put on record by this controller (id 0: none yet).
+    const db::TransferEntry& lastTransfer() const { return lastTransfer_; }
 
 public slots:
     void open();                                      // opened() tells how it went
-    void pull();                                      // pulled()
-    void push(const profile::MachineProfile& file);   // pushed()
+    // pulled(); `record`: on record in the transfer log (not the read that
+    // shows what a push would change).
+    void pull(bool record = true);
+    // pushed(); `databaseMachine`: the database's machine pushed ("": this
+    // window's machine) for the transfer log.
+    void push(const profile::MachineProfile& file, const QString& databaseMachine = {});
     void cancel();                                    // the transfer under way stops at its next exchange
 
 signals:
@@ -90,6 +102,11 @@ signals:
     // The memory read (C, R, programs, messages) as a profile on `machine`'s base.
     void pulled(bool ok, const QString& message, const k528::profile::MachineProfile& memory);
     void pushed(bool ok, const QString& message, const QStringList& written);
+    // Each push and pull (the dock's, the editor's programs, the constants'
+    // C block, the memory kept in the database) goes on record in the
+    // window's database as `k528 link push/pull` does (core/transfer):
+    // said before pulled()/pushed()/the request's answer.
+    void transferRecorded(bool ok, const QString& message);
 
 private:
     friend class LinkWorker;
@@ -98,9 +115,12 @@ private:
     void applyMemory(const std::vector<std::int64_t>& c, const std::array<std::int32_t, 300>* r);
     // Runs `op` on the line's thread after what is under way; `done` on this one.
     void request(const QString& what, std::function<link::LinkError(link::Link&)> op, Done done);
+    void recordTransfer(db::TransferEntry entry, const std::string& databaseMachine);
 
     linkplugin::LinkPlugin& plugin_;
     linkplugin::LineSettings line_;
+    std::string lineText_;
+    db::TransferEntry lastTransfer_;
     profile::MachineProfile machine_;
     ControllerState state_;
     link::LiveState live_;

@@ -415,7 +415,8 @@ void installDatabaseUi(QMainWindow* window, QMenu* fileMenu, QAction* before) {
     transfers->setObjectName("action.transfers");
     fileMenu->insertAction(before, transfers);
     QObject::connect(transfers, &QAction::triggered, window, [window] {
-        auto* d = new TransfersDialog(QString(), window);
+        // The window's machine first (the filter offers every machine).
+        auto* d = new TransfersDialog(window->property("k528.machineName").toString(), window);
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });

@@ -11,6 +11,7 @@
 #include "controller/push_preview.h"
 #include "controller/simulated_controller.h"
 #include "profile/text_format.h"
+#include "editor/program_releases.h"
 #include "session/shop_database.h"
 #include "workspace/elided_label.h"
 
@@ -83,7 +84,10 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
 
     auto* split = new QSplitter(Qt::Vertical, this);
     auto* top = new QSplitter(Qt::Horizontal, split);
-    outline_ = new QTreeWidget(top);
+    // The outline, and under it the release states of a database machine's programs.
+    auto* left = new QSplitter(Qt::Vertical, top);
+    left->setObjectName("editor.left");
+    outline_ = new QTreeWidget(left);
     outline_->setObjectName("editor.outline");
     outline_->setColumnCount(1);
     outline_->setRootIsDecorated(false);
@@ -91,7 +95,13 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
     tabs_->setObjectName("editor.tabs");
     tabs_->setTabsClosable(true);
     tabs_->setDocumentMode(true);
-    top->addWidget(outline_);
+    releases_ = new ProgramReleases(left);
+    connect(releases_, &ProgramReleases::statusMessage, this, &EditorTab::statusMessage);
+    left->addWidget(outline_);
+    left->addWidget(releases_);
+    left->setStretchFactor(0, 1);
+    left->setStretchFactor(1, 1);
+    top->addWidget(left);
     top->addWidget(tabs_);
     // The text takes the room: the outline as wide as a program's title
     // needs, the Problems as tall as a few lines (both splitters' handles
@@ -106,7 +116,7 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
         top->addWidget(debug_);
         connect(debug_, &DebugPanel::statusMessage, this, &EditorTab::statusMessage);
     }
-    const int outlineWidth = fontMetrics().horizontalAdvance(QLatin1Char('M')) * 12;
+    const int outlineWidth = fontMetrics().horizontalAdvance(QLatin1Char('M')) * 17;
     top->setSizes(debug_ ? QList<int>{outlineWidth, 4000, 2000} : QList<int>{outlineWidth, 4000});
     problems_ = new QTreeView(split);
     problems_->setObjectName("editor.problems");
@@ -131,6 +141,7 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
     connect(tabs_, &QTabWidget::currentChanged, this, [this] {
         refreshProblems();
         refreshOutline();
+        releases_->setMachine(databaseMachine(tabs_->currentIndex()));
     });
     connect(problems_, &QTreeView::activated, this, [this](const QModelIndex& index) {
         ProgramEditor* ed = currentEditor();

@@ -10,7 +10,8 @@
 // editor_tab_tools.cpp: renumber / move / copy a program and format the file
 // (text_refactor.h), print and PDF listings (listing.h), the machine each
 // file is checked for, and the programs of a database machine opened and
-// saved as its next revision (database_programs.h).
+// saved as its next revision (database_programs.h), with their release
+// states beside them (program_releases.h).
 #pragma once
 
 #include <QFileSystemWatcher>
@@ -29,6 +30,7 @@ namespace k528::studio {
 
 class DebugPanel;
 class ProgramEditor;
+class ProgramReleases;
 class ViewedController;
 
 class EditorTab : public QWidget {
@@ -49,6 +51,9 @@ public:
     QTreeView* problems() const { return problems_; }
     QTreeWidget* outline() const { return outline_; }
     QLabel* problemCount() const { return count_; }
+    // The release states of the current document's database machine
+    // (editor/program_releases.h; hidden for a file).
+    ProgramReleases* releases() const { return releases_; }
     // The debugger's pane (editor/debug_panel.h); null without a session.
     DebugPanel* debugPanel() const { return debug_; }
     // The toolbar's New, Open and Save (the main window gives Open and Save
@@ -187,6 +192,7 @@ private:
     QTabWidget* tabs_ = nullptr;
     QTreeView* problems_ = nullptr;
     class ProblemsModel* problemsModel_ = nullptr;
+    ProgramReleases* releases_ = nullptr;
     QTreeWidget* outline_ = nullptr;
     QLabel* count_ = nullptr;
     DebugPanel* debug_ = nullptr;

@@ -4,6 +4,7 @@
 // editor_tab.cpp, which holds the files, tabs and lists.
 #include "editor/database_programs.h"
 #include "editor/editor_tab.h"
+#include "editor/program_releases.h"
 #include "editor/listing.h"
 #include "editor/program_editor.h"
 #include "editor/text_refactor.h"
@@ -404,6 +405,7 @@ bool EditorTab::openFromDatabase(const QString& machine) {
     applyMachine(ed);
     ed->validateNow();
     refreshTitles();
+    releases_->setMachine(databaseMachine(tabs_->currentIndex()));
     emit statusMessage(tr("Opened the programs of %1, revision %2").arg(machine).arg(r.revision));
     return true;
 }
@@ -434,6 +436,8 @@ bool EditorTab::saveToDatabase(int index) {
     ed->setProperty(kDbRevisionProperty, s.revision);
     ed->setModified(false);
     refreshTitles();
+    if (releases_->machine() == machine)
+        releases_->refresh(); // a changed program is a draft again
     emit statusMessage(s.changed ? tr("%1 saved as revision %2").arg(machine).arg(s.revision)
                                  : tr("%1: the database already holds these programs (revision %2)")
                                        .arg(machine)

@@ -1,5 +1,7 @@
 #include "history/history_dock.h"
 
+#include "database/database_ui.h"
+
 #include "history/history_model.h"
 #include "history/history_service.h"
 #include "controller/controller.h"
@@ -291,6 +293,11 @@ public:
         setWidget(notice);
         connect(&viewed, &ViewedController::changed, this, [this] { showController(viewed_.current()); });
         showController(viewed.current());
+        // File > Database…: the window's database is another one; the
+        // history records into it and shows its messages (a dock given a
+        // database of its own keeps it).
+        if (dbPath_.isEmpty())
+            connect(DatabaseWatch::instance(), &DatabaseWatch::switched, this, [this] { followDatabase(); });
         retranslate();
     }
     ~HistoryDock() override {
@@ -303,14 +310,22 @@ private:
         HistoryService* service = nullptr;
         HistoryView* view = nullptr;
     };
+    Page makePage(Controller& c) {
+        Page p;
+        p.service = new HistoryService(&c, dbPath_, this);
+        p.view = new HistoryView(*p.service, pages_);
+        pages_->addWidget(p.view);
+        return p;
+    }
+    static void dropPage(QStackedWidget* stack, const Page& p) {
+        stack->removeWidget(p.view);
+        delete p.view;     // the view before its service
+        delete p.service;  // writes what is pending into its database
+    }
     void showController(Controller& c) {
         auto it = pages.find(&c);
         if (it == pages.end()) {
-            Page p;
-            p.service = new HistoryService(&c, dbPath_, this);
-            p.view = new HistoryView(*p.service, pages_);
-            pages_->addWidget(p.view);
-            it = pages.emplace(&c, p).first;
+            it = pages.emplace(&c, makePage(c)).first;
             if (!c.simulated()) // a real controller: its page goes with it (its run is kept)
                 connect(&c, &QObject::destroyed, this, [this, key = &c] {
                     const auto gone = pages.find(key);
@@ -318,12 +333,21 @@ private:
                         return;
                     const Page p = gone->second;
                     pages.erase(gone);
-                    pages_->removeWidget(p.view);
-                    delete p.view;
-                    delete p.service;
+                    dropPage(pages_, p);
                 });
         }
         pages_->setCurrentWidget(it->second.view);
+    }
+    // Each controller's run ends in the database it was recorded into and a
+    // new one begins in the window's database now.
+    void followDatabase() {
+        for (auto& [c, page] : pages) {
+            const Page old = page;
+            page = makePage(*c);
+            dropPage(pages_, old);
+        }
+        if (const auto it = pages.find(&viewed_.current()); it != pages.end())
+            pages_->setCurrentWidget(it->second.view);
     }
     void retranslate() override { setWindowTitle(HistoryView::tr("Message history")); }
     ViewedController& viewed_;
