@@ -1347,6 +1347,10 @@ Details: %3</translation>
         <source>&amp;Transfers...</source>
         <translation>&amp;Transfers...</translation>
     </message>
+    <message>
+        <source>The database %1 cannot be opened: %2.</source>
+        <translation>The database %1 cannot be opened: %2.</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>
@@ -2781,6 +2785,10 @@ Its comment stays: %3</translation>
         <source>The transfer is not on record: %1</source>
         <translation>The transfer is not on record: %1</translation>
     </message>
+    <message>
+        <source>program %1</source>
+        <translation>program %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3601,6 +3609,33 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::PushPreview</name>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>title</source>
+        <translation>title</translation>
+    </message>
+    <message>
+        <source>added</source>
+        <translation>added</translation>
+    </message>
+    <message>
+        <source>removed</source>
+        <translation>removed</translation>
+    </message>
+    <message>
+        <source>changed</source>
+        <translation>changed</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RParamsModel</name>
     <message>
         <source>%1 mm/min</source>
@@ -3946,6 +3981,16 @@ Its comment stays: %3</translation>
     <message>
         <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
         <translation>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</translation>
+    </message>
+    <message>
+        <source>The database %1 failed: %2.</source>
+        <translation>The database %1 failed: %2.</translation>
+    </message>
+    <message>
+        <source>The database %1 failed: %2.
+Details: %3</source>
+        <translation>The database %1 failed: %2.
+Details: %3</translation>
     </message>
 </context>
 <context>

@@ -1347,6 +1347,10 @@ Details: %3</source>
         <source>&amp;Transfers...</source>
         <translation>&amp;Передачи...</translation>
     </message>
+    <message>
+        <source>The database %1 cannot be opened: %2.</source>
+        <translation>Базу данных %1 открыть нельзя: %2.</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugPanel</name>
@@ -2781,6 +2785,10 @@ Its comment stays: %3</source>
         <source>The transfer is not on record: %1</source>
         <translation>Передача не записана в журнал: %1</translation>
     </message>
+    <message>
+        <source>program %1</source>
+        <translation>программа %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3601,6 +3609,33 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::PushPreview</name>
+    <message>
+        <source>name</source>
+        <translation>имя</translation>
+    </message>
+    <message>
+        <source>title</source>
+        <translation>название</translation>
+    </message>
+    <message>
+        <source>added</source>
+        <translation>добавлена</translation>
+    </message>
+    <message>
+        <source>removed</source>
+        <translation>удалена</translation>
+    </message>
+    <message>
+        <source>changed</source>
+        <translation>изменена</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(нет)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RParamsModel</name>
     <message>
         <source>%1 mm/min</source>
@@ -3946,6 +3981,16 @@ Its comment stays: %3</source>
     <message>
         <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
         <translation>База данных доступна только для чтения: %1 (%2); в ней незавершённая транзакция, откатить которую может только пользователь с правом записи.</translation>
+    </message>
+    <message>
+        <source>The database %1 failed: %2.</source>
+        <translation>Ошибка базы данных %1: %2.</translation>
+    </message>
+    <message>
+        <source>The database %1 failed: %2.
+Details: %3</source>
+        <translation>Ошибка базы данных %1: %2.
+Подробности: %3</translation>
     </message>
 </context>
 <context>

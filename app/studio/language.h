@@ -3,6 +3,8 @@
 // English elsewhere). Switching at run time retranslates every open window.
 // Two translators: ours (k528studio_<lang>.qm) and Qt's own (qtbase_<lang>.qm
 // of Debian's qt6-translations-l10n) for file dialogs and standard buttons.
+// The libraries' gettext messages (libpq's, the C library's) follow it too
+// (LANGUAGE, set before libpq's first use).
 #pragma once
 
 #include <QString>

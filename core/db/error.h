@@ -36,11 +36,17 @@ std::string_view errorKindName(ErrorKind k); // "io", "foreign", ...
 
 class Error : public std::runtime_error {
 public:
-    Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+    Error(ErrorKind kind, const std::string& message, std::string detail = {})
+        : std::runtime_error(message), kind_(kind), detail_(std::move(detail)) {}
     ErrorKind kind() const { return kind_; }
+    // The library's or the system's own words inside the message, as it
+    // said them (SQLite's errmsg, libpq's, strerror's), "" if none: the
+    // desktop quotes them in a sentence of its language.
+    const std::string& detail() const { return detail_; }
 
 private:
     ErrorKind kind_;
+    std::string detail_;
 };
 
 // Why a database can only be read.

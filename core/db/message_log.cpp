@@ -288,7 +288,8 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
                 throw;
             throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
                                       "; none of the batch's " + std::to_string(events.size()) +
-                                      " events was written");
+                                      " events was written",
+                        e.detail());
         }
     });
 }

@@ -71,7 +71,7 @@ PgConnection::PgConnection(const std::string& uri, std::string where) : where_(s
         const std::string why = conn_ ? trimmed(PQerrorMessage(conn_)) : "out of memory";
         PQfinish(conn_);
         conn_ = nullptr;
-        throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why);
+        throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why, why);
     }
     PQsetNoticeReceiver(conn_, quiet, nullptr);
 }
@@ -91,6 +91,7 @@ void PgConnection::fail(PGresult* r, std::string_view what) const {
         message = trimmed(PQerrorMessage(conn_));
     if (r)
         PQclear(r);
+    const std::string said = message; // the server's or libpq's words
     if (PQstatus(conn_) != CONNECTION_OK) {
         kind = ErrorKind::Io;
         message = "the connection to the server was lost (" + message + ")";
@@ -100,7 +101,7 @@ void PgConnection::fail(PGresult* r, std::string_view what) const {
     std::string text = std::string(what) + ": " + message;
     if (kind == ErrorKind::Busy)
         text += " (another session kept the database locked longer than the busy timeout)";
-    throw Error(kind, text);
+    throw Error(kind, text, said);
 }
 
 bool PgConnection::inTransaction() {

@@ -41,7 +41,7 @@ ErrorKind kindOf(int rc) {
     std::string text = std::string(what) + ": " + msg;
     if (kind == ErrorKind::Busy)
         text += " (another program kept the database locked longer than the busy timeout)";
-    throw Error(kind, text);
+    throw Error(kind, text, msg);
 }
 
 Stmt::Stmt(sqlite3* db, std::string_view sql) : db_(db), sql_(sql) {

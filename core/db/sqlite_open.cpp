@@ -51,6 +51,7 @@ struct Refusal {
     std::string what;
     bool hotJournal = false; // a read-only connection met a hot journal it cannot roll back
     bool noIndex = false;    // SQLite could not create the -wal/-shm it needs to read
+    std::string detail = {}; // SQLite's own words (Error::detail)
 };
 
 // Whether something is at `path`, from stat() alone: the file is never opened
@@ -60,7 +61,7 @@ bool databaseFileExists(const fs::path& path) {
     const auto st = fs::status(path, ec);
     if (ec || !fs::exists(st)) {
         if (ec && ec != std::errc::no_such_file_or_directory)
-            throw Error(ErrorKind::Io, path.string() + ": " + ec.message());
+            throw Error(ErrorKind::Io, path.string() + ": " + ec.message(), ec.message());
         return false;
     }
     if (fs::is_directory(st))
@@ -93,7 +94,7 @@ FileHeader readHeader(sqlite3* db, int latest) {
         throw Refusal{ErrorKind::Io, "cannot be read: SQLite did not open the file"};
     sqlite3_int64 size = 0;
     if (const int rc = f->pMethods->xFileSize(f, &size); rc != SQLITE_OK)
-        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc)};
+        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc), false, false, sqlite3_errstr(rc)};
     FileHeader h;
     if (size == 0) {
         h.empty = true;
@@ -102,7 +103,7 @@ FileHeader readHeader(sqlite3* db, int latest) {
     unsigned char buf[100] = {};
     const int got = static_cast<int>(std::min<sqlite3_int64>(size, sizeof buf));
     if (const int rc = f->pMethods->xRead(f, buf, got, 0); rc != SQLITE_OK)
-        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc)};
+        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc), false, false, sqlite3_errstr(rc)};
     static constexpr char kMagic[] = "SQLite format 3";
     if (got < 100 || std::memcmp(buf, kMagic, sizeof kMagic) != 0)
         throw Refusal{ErrorKind::Foreign,
@@ -193,14 +194,14 @@ Checked inspect(sqlite3* db, int latest) {
     } catch (const Error& e) {
         const int code = sqlite3_extended_errcode(db);
         if (code == SQLITE_READONLY_ROLLBACK)
-            throw Refusal{ErrorKind::Io, e.what(), true};
+            throw Refusal{ErrorKind::Io, e.what(), true, false, e.detail()};
         if (code == SQLITE_READONLY_DIRECTORY || code == SQLITE_READONLY_CANTINIT ||
             code == SQLITE_READONLY_CANTLOCK || (code & 0xff) == SQLITE_CANTOPEN)
-            throw Refusal{ErrorKind::ReadOnly, e.what(), false, true};
+            throw Refusal{ErrorKind::ReadOnly, e.what(), false, true, e.detail()};
         if (e.kind() == ErrorKind::Busy)
-            throw Refusal{ErrorKind::Busy, e.what()};
+            throw Refusal{ErrorKind::Busy, e.what(), false, false, e.detail()};
         throw Refusal{ErrorKind::Corrupt,
-                      std::string("cannot be read as a database (") + e.what() + ")"};
+                      std::string("cannot be read as a database (") + e.what() + ")", false, false, e.detail()};
     }
     if (c.appId == 0 && c.version == 0 && c.objects == 0)
         return c; // empty: ours to fill
@@ -392,7 +393,7 @@ sqlite3* SqliteStore::connect(const std::string& target, int flags, int busyTime
     if (rc != SQLITE_OK) {
         const std::string msg = c ? sqlite3_errmsg(c) : sqlite3_errstr(rc);
         sqlite3_close_v2(c);
-        throw Error(ErrorKind::Io, "cannot open " + path_.string() + ": " + msg + untouched());
+        throw Error(ErrorKind::Io, "cannot open " + path_.string() + ": " + msg + untouched(), msg);
     }
     sqlite3_extended_result_codes(c, 1);
     sqlite3_busy_timeout(c, busyTimeoutMs);
@@ -440,7 +441,7 @@ Checked SqliteStore::connectAndInspect(const OpenOptions& options, int latest) {
                          : std::string("; the file was left untouched");
     };
     const auto refused = [&](const Refusal& r) {
-        return Error(r.kind, path_.string() + ": " + r.what + untouched());
+        return Error(r.kind, path_.string() + ": " + r.what + untouched(), r.detail);
     };
     // One connection: read-write when the file may be written (SQLite falls
     // back to read-only when it may not), read-only when asked.
@@ -537,7 +538,7 @@ void SqliteStore::applyConnectionSettings() {
         sql::exec(db_, "PRAGMA synchronous = FULL");
         sql::exec(db_, "PRAGMA foreign_keys = ON");
     } catch (const Error& e) {
-        throw Error(e.kind(), path_.string() + ": " + e.what());
+        throw Error(e.kind(), path_.string() + ": " + e.what(), e.detail());
     }
 }
 

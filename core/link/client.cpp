@@ -18,44 +18,54 @@
 
 namespace k528::link {
 
-std::string exceptionText(int code) {
+Said exceptionSaid(int code) {
     switch (code) {
     case 1:
-        return "exception 01: the controller does not know this function";
+        return {"exception 01: the controller does not know this function",
+                "исключение 01: контроллер не знает этой функции"};
     case 2:
-        return "exception 02: a register outside the controller's map (or a read-only one written)";
+        return {"exception 02: a register outside the controller's map (or a read-only one written)",
+                "исключение 02: регистр вне карты контроллера (или запись в регистр только для чтения)"};
     case 3:
-        return "exception 03: a value outside its range; nothing of the request was written";
+        return {"exception 03: a value outside its range; nothing of the request was written",
+                "исключение 03: значение вне своего диапазона; ничего из запроса не записано"};
     case 6:
-        return "exception 06: the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): "
-               "select it on the K923 to write";
+        return {"exception 06: the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): "
+                "select it on the K923 to write",
+                "исключение 06: контроллер не в F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): "
+                "выберите этот пункт на K923, чтобы записывать"};
     default:
-        return "exception " + std::to_string(code);
+        return {"exception " + std::to_string(code), "исключение " + std::to_string(code)};
     }
 }
 
-std::string statusText(int status) {
+std::string exceptionText(int code) { return exceptionSaid(code).en; }
+
+Said statusSaid(int status) {
     switch (status) {
     case 0:
-        return "idle";
+        return {"idle", "свободен"};
     case 1:
-        return "ready";
+        return {"ready", "готов"};
     case 2:
-        return "committed";
+        return {"committed", "записано"};
     case 16:
-        return "the controller is not in F7 «РАБОТА С ПЭВМ»";
+        return {"the controller is not in F7 «РАБОТА С ПЭВМ»", "контроллер не в F7 «РАБОТА С ПЭВМ»"};
     case 17:
-        return "no such program in the controller";
+        return {"no such program in the controller", "такой программы в контроллере нет"};
     case 18:
-        return "the controller refused the text";
+        return {"the controller refused the text", "контроллер отклонил текст"};
     case 19:
-        return "CRC or length mismatch: the text arrived damaged and was not stored";
+        return {"CRC or length mismatch: the text arrived damaged and was not stored",
+                "не совпали CRC или длина: текст пришёл повреждённым и не сохранён"};
     case 20:
-        return "the controller's memory is full";
+        return {"the controller's memory is full", "память контроллера заполнена"};
     default:
-        return "status " + std::to_string(status);
+        return {"status " + std::to_string(status), "состояние " + std::to_string(status)};
     }
 }
+
+std::string statusText(int status) { return statusSaid(status).en; }
 
 void RoundTrips::add(double ms) {
     last_ = ms;
@@ -136,7 +146,45 @@ void Link::count(const Reply& r, bool again) {
     }
 }
 
-template <class F> LinkError Link::retry(const std::string& what, F&& f) {
+namespace {
+
+// A transport's word on the last attempt (English: the frame log's) in
+// Russian: the fixed ones as they are, the port's or the connection's
+// failure with the system's own text after it, any other by its kind.
+std::string detailRu(const Reply& r) {
+    static const std::pair<const char*, const char*> kFixed[] = {
+        {"timeout", "время ожидания истекло"},
+        {"CRC error", "ошибка CRC"},
+        {"the port is closed", "порт закрыт"},
+        {"the connection is closed", "соединение закрыто"},
+        {"the echo differs", "эхо не совпадает"},
+        {"an empty answer", "пустой ответ"},
+    };
+    static const std::pair<const char*, const char*> kPrefixed[] = {
+        {"the port is closed and does not open again: ", "порт закрыт и не открывается снова: "},
+        {"the port failed: ", "отказ порта: "},
+        {"the connection is closed and does not open again: ", "соединение закрыто и не открывается снова: "},
+        {"the connection failed: ", "отказ соединения: "},
+    };
+    for (const auto& [en, ru] : kFixed)
+        if (r.detail == en)
+            return ru;
+    for (const auto& [en, ru] : kPrefixed)
+        if (r.detail.rfind(en, 0) == 0)
+            return ru + r.detail.substr(std::char_traits<char>::length(en));
+    switch (r.kind) {
+    case Reply::Kind::Damaged:
+        return "повреждённый кадр";
+    case Reply::Kind::BadReply:
+        return "ответ не к этому запросу";
+    default:
+        return r.detail.empty() ? "" : "нет ответа";
+    }
+}
+
+} // namespace
+
+template <class F> LinkError Link::retry(const Said& what, F&& f) {
     Reply last;
     lastDamaged_ = false;
     for (int attempt = 0; attempt < attempts_; ++attempt) {
@@ -147,15 +195,18 @@ template <class F> LinkError Link::retry(const std::string& what, F&& f) {
         case Reply::Kind::Ok:
             return {};
         case Reply::Kind::Exception:
-            return {last.exception == 6 ? LinkError::Kind::NotReady : LinkError::Kind::Exception,
-                    last.exception, what + ": " + exceptionText(last.exception)};
+            return linkError(last.exception == 6 ? LinkError::Kind::NotReady : LinkError::Kind::Exception,
+                             last.exception, what + ": " + exceptionSaid(last.exception));
         default:
             break;
         }
     }
-    return {LinkError::Kind::NoAnswer, 0,
-            what + ": the controller does not answer (" + std::to_string(attempts_) +
-                (attempts_ == 1 ? " attempt" : " attempts") + (last.detail.empty() ? "" : ", last: " + last.detail) + ")"};
+    return linkError(LinkError::Kind::NoAnswer, 0,
+                     what + Said{": the controller does not answer (" + std::to_string(attempts_) +
+                                     (attempts_ == 1 ? " attempt" : " attempts") +
+                                     (last.detail.empty() ? "" : ", last: " + last.detail) + ")",
+                                 ": контроллер не отвечает (попыток: " + std::to_string(attempts_) +
+                                     (last.detail.empty() ? "" : ", последняя: " + detailRu(last)) + ")"});
 }
 
 // A piece of a request that every attempt lost, while the line did answer
@@ -171,7 +222,8 @@ bool worthSplitting(const LinkError& e, bool damaged, int n) {
 
 LinkError Link::readPiece(int at, int n, std::vector<std::uint16_t>& out) {
     std::vector<std::uint16_t> part;
-    LinkError e = retry("reading registers " + std::to_string(at) + ".." + std::to_string(at + n - 1), [&] {
+    const std::string range = std::to_string(at) + ".." + std::to_string(at + n - 1);
+    LinkError e = retry(Said{"reading registers " + range, "чтение регистров " + range}, [&] {
         Reply r = t_.read(at, n, part);
         if (r.ok() && static_cast<int>(part.size()) != n)
             return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(n) + " asked");
@@ -199,7 +251,8 @@ LinkError Link::read(int first, int count, std::vector<std::uint16_t>& out) {
 
 LinkError Link::writePiece(int first, std::span<const std::uint16_t> values) {
     const int n = static_cast<int>(values.size());
-    LinkError e = retry("writing registers " + std::to_string(first) + ".." + std::to_string(first + n - 1),
+    const std::string range = std::to_string(first) + ".." + std::to_string(first + n - 1);
+    LinkError e = retry(Said{"writing registers " + range, "запись регистров " + range},
                         [&] { return t_.write(first, values); });
     if (worthSplitting(e, lastDamaged_, n)) {
         ++total_.splits;
@@ -226,7 +279,8 @@ LinkError Link::write(int first, std::span<const std::uint16_t> values) {
 LinkError Link::writeRead(int writeFirst, std::span<const std::uint16_t> values, int readFirst,
                           int readCount, std::vector<std::uint16_t>& out) {
     std::vector<std::uint16_t> part;
-    LinkError e = retry("reading registers " + std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1), [&] {
+    const std::string range = std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1);
+    LinkError e = retry(Said{"reading registers " + range, "чтение регистров " + range}, [&] {
         Reply r = t_.writeRead(writeFirst, values, readFirst, readCount, part);
         if (r.ok() && static_cast<int>(part.size()) != readCount)
             return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(readCount) + " asked");
@@ -251,15 +305,16 @@ LinkError Link::writeRead(int writeFirst, std::span<const std::uint16_t> values,
 }
 
 LinkError Link::echo(std::uint16_t value) {
-    return retry("echo", [&] { return t_.echo(value); });
+    return retry(Said{"echo", "эхо"}, [&] { return t_.echo(value); });
 }
 
 LinkError Link::diagnostics(std::uint16_t sub, std::uint16_t data, std::uint16_t& out) {
-    return retry("diagnostics " + std::to_string(sub), [&] { return t_.diagnostics(sub, data, out); });
+    return retry(Said{"diagnostics " + std::to_string(sub), "диагностика " + std::to_string(sub)},
+                 [&] { return t_.diagnostics(sub, data, out); });
 }
 
 LinkError Link::serverId(ServerId& out) {
-    return retry("server id", [&] { return t_.serverId(out); });
+    return retry(Said{"server id", "идентификатор сервера"}, [&] { return t_.serverId(out); });
 }
 
 LiveState decodeLive(const RegisterMap& map, std::span<const std::uint16_t> regs) {
@@ -314,19 +369,33 @@ LinkError identify(Link& link, LiveState& out) {
     return readLive(link, out);
 }
 
-std::string notReadyText(const LiveState& live, const std::string& what) {
+Said notReadySaid(const LiveState& live, const Said& what) {
     if (live.mode == 7)
-        return "the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in "
-               "its menu on the K923 (▲ ▼, ENTER), then " +
-               what + " again; nothing was sent";
-    const std::string now = live.mode >= 1 && live.mode <= 7 ? "mode F" + std::to_string(live.mode) + " now"
-                                                             : "powering on";
-    return "the controller is not in F7 «РАБОТА С ПЭВМ» (" + now +
-           "): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then " + what +
-           " again; nothing was sent";
+        return {"the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in "
+                "its menu on the K923 (▲ ▼, ENTER), then " +
+                    what.en + " again; nothing was sent",
+                "контроллер в F7 УПРАВЛЕНИЕ ДАННЫМИ, но не на «РАБОТА С ПЭВМ»: выберите «РАБОТА С ПЭВМ» в его "
+                "меню на K923 (▲ ▼, ENTER) и повторите " +
+                    what.ru + "; ничего не отправлено"};
+    const bool known = live.mode >= 1 && live.mode <= 7;
+    const std::string f = "F" + std::to_string(live.mode);
+    return {"the controller is not in F7 «РАБОТА С ПЭВМ» (" + (known ? "mode " + f + " now" : std::string("powering on")) +
+                "): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then " + what.en +
+                " again; nothing was sent",
+            "контроллер не в F7 «РАБОТА С ПЭВМ» (" + (known ? "сейчас режим " + f : std::string("идёт включение")) +
+                "): нажмите F7 (УПРАВЛЕНИЕ ДАННЫМИ) на K923, выберите «РАБОТА С ПЭВМ» и повторите " + what.ru +
+                "; ничего не отправлено"};
 }
 
+std::string notReadyText(const LiveState& live, const std::string& what) { return notReadySaid(live, {what, what}).en; }
+
 namespace {
+
+// The part a transfer moves, in both languages.
+Said textName(bool messages, int program) {
+    return messages ? Said{"messages", "сообщения"}
+                    : Said{"program " + std::to_string(program), "программа " + std::to_string(program)};
+}
 
 LinkError readTextOnce(Link& link, bool messages, int program, std::string& text) {
     const TransferLayout& T = link.map().transfer;
@@ -345,14 +414,15 @@ LinkError readTextOnce(Link& link, bool messages, int program, std::string& text
         return e;
     const int status = head[0];
     if (status != static_cast<int>(TransferStatus::Ready))
-        return {LinkError::Kind::Refused, status,
-                (messages ? std::string("messages") : "program " + std::to_string(program)) + ": " + statusText(status)};
+        return linkError(LinkError::Kind::Refused, status, textName(messages, program) + ": " + statusSaid(status));
     const auto length = static_cast<std::uint32_t>(joinSigned(head[static_cast<std::size_t>(T.length - T.status)],
                                                               head[static_cast<std::size_t>(T.length + 1 - T.status)]));
     const auto crc = static_cast<std::uint32_t>(joinSigned(head[static_cast<std::size_t>(T.crc - T.status)],
                                                            head[static_cast<std::size_t>(T.crc + 1 - T.status)]));
     if (length > T.capacityBytes)
-        return {LinkError::Kind::Verify, 0, "the controller announces a text of " + std::to_string(length) + " bytes"};
+        return linkError(LinkError::Kind::Verify, 0,
+                         {"the controller announces a text of " + std::to_string(length) + " bytes",
+                          "контроллер объявил текст длиной " + std::to_string(length) + " байт"});
     text.clear();
     text.reserve(length);
     std::vector<std::uint16_t> window;
@@ -364,7 +434,8 @@ LinkError readTextOnce(Link& link, bool messages, int program, std::string& text
         appendRegisterText(text, window, bytes);
     }
     if (crc32(text) != crc)
-        return {LinkError::Kind::Verify, 19, "the text read does not match its CRC-32"};
+        return linkError(LinkError::Kind::Verify, 19,
+                         {"the text read does not match its CRC-32", "прочитанный текст не совпадает со своей CRC-32"});
     return {};
 }
 
@@ -385,7 +456,7 @@ namespace {
 // Sends the commit (7000 = 5) and reads the status it left. `commitSent`
 // is set once the commit may have reached the controller; `committed` once
 // the status says it took the transfer.
-LinkError commitTransfer(Link& link, const std::string& what, bool& commitSent, bool& committed) {
+LinkError commitTransfer(Link& link, const Said& what, bool& commitSent, bool& committed) {
     const TransferLayout& T = link.map().transfer;
     const std::uint16_t commit[] = {static_cast<std::uint16_t>(TransferCommand::Commit)};
     const std::int64_t retriesBefore = link.stats().retries;
@@ -399,10 +470,12 @@ LinkError commitTransfer(Link& link, const std::string& what, bool& commitSent, 
     if (LinkError e = link.read(T.status, 2, st))
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Committed)) {
-        std::string m = what + ": " + statusText(st[0]);
+        Said m = what + ": " + statusSaid(st[0]);
         if (st[0] == static_cast<int>(TransferStatus::TextRefused))
-            m += " at line " + std::to_string(st[1]);
-        return {LinkError::Kind::Refused, st[0], m};
+            m = m + Said{" at line ", " в строке "} + std::to_string(st[1]);
+        LinkError e = linkError(LinkError::Kind::Refused, st[0], m);
+        e.line = st[0] == static_cast<int>(TransferStatus::TextRefused) ? st[1] : 0;
+        return e;
     }
     committed = true;
     return {};
@@ -411,7 +484,7 @@ LinkError commitTransfer(Link& link, const std::string& what, bool& commitSent, 
 // Begins a transfer into the controller (the text's or block's length and
 // CRC, then `command`), sends `bytes` window by window (offset and text in
 // one write), commits it and reads the status.
-LinkError sendTransfer(Link& link, const std::string& what, TransferCommand command, int program,
+LinkError sendTransfer(Link& link, const Said& what, TransferCommand command, int program,
                        const std::string& bytes, bool& commitSent, bool& committed) {
     const TransferLayout& T = link.map().transfer;
     const auto length = static_cast<std::uint32_t>(bytes.size());
@@ -428,9 +501,10 @@ LinkError sendTransfer(Link& link, const std::string& what, TransferCommand comm
     if (LinkError e = link.read(T.status, 2, st))
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Ready))
-        return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
+        return linkError(LinkError::Kind::Refused, st[0], what + ": " + statusSaid(st[0]));
     if (T.window != T.offset + 2)
-        return {LinkError::Kind::Exception, 0, "the map's window does not follow its offset"};
+        return linkError(LinkError::Kind::Exception, 0,
+                         {"the map's window does not follow its offset", "окно карты не следует за своим смещением"});
     const std::vector<std::uint16_t> regs = textRegisters(bytes);
     std::vector<std::uint16_t> frame;
     for (std::uint32_t off = 0; off < length; off += static_cast<std::uint32_t>(T.windowBytes)) {
@@ -447,7 +521,7 @@ LinkError sendTransfer(Link& link, const std::string& what, TransferCommand comm
 
 LinkError writeTextOnce(Link& link, bool messages, int program, const std::string& text, bool& commitSent,
                         bool& committed) {
-    const std::string what = messages ? std::string("messages") : "program " + std::to_string(program);
+    const Said what = textName(messages, program);
     if (LinkError e = sendTransfer(link, what, messages ? TransferCommand::WriteMessages : TransferCommand::WriteProgram,
                                    messages ? 1 : program, text, commitSent, committed))
         return e;
@@ -455,7 +529,9 @@ LinkError writeTextOnce(Link& link, bool messages, int program, const std::strin
     if (LinkError e = readText(link, messages, program, back))
         return e;
     if (back != text)
-        return {LinkError::Kind::Verify, 0, what + ": the text read back differs from the text sent"};
+        return linkError(LinkError::Kind::Verify, 0,
+                         what + Said{": the text read back differs from the text sent",
+                                     ": текст, прочитанный обратно, отличается от отправленного"});
     return {};
 }
 
@@ -479,15 +555,18 @@ LinkError writeText(Link& link, bool messages, int program, const std::string& t
 LinkError writeBlockOnce(Link& link, BlockKind kind, std::span<const std::uint16_t> whole, bool& commitSent,
                          bool& committed) {
     const RegisterMap& map = link.map();
-    const std::string what = kind == BlockKind::C ? "C-parameters" : "R-parameters";
+    const Said what = kind == BlockKind::C ? Said{"C-parameters", "C-параметры"} : Said{"R-parameters", "R-параметры"};
     const std::vector<std::uint16_t> sent = stagedRegisters(map, kind, whole);
     if (LinkError e = sendTransfer(link, what, kind == BlockKind::C ? TransferCommand::StageC : TransferCommand::StageR,
                                    0, registerBytes(sent), commitSent, committed)) {
-        if (e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::TextRefused))
-            e.message = what + ": the controller refused the block" +
-                        (kind == BlockKind::C && e.message.find("at line ") != std::string::npos
-                             ? " at C" + e.message.substr(e.message.find("at line ") + 8)
-                             : std::string());
+        if (e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::TextRefused)) {
+            Said m = what + Said{": the controller refused the block", ": контроллер отклонил блок"};
+            if (kind == BlockKind::C && e.line > 0)
+                m = m + Said{" at C", " на C"} + std::to_string(e.line);
+            const int line = e.line;
+            e = linkError(e.kind, e.code, m);
+            e.line = line;
+        }
         return e;
     }
     std::vector<std::uint16_t> back;
@@ -496,7 +575,9 @@ LinkError writeBlockOnce(Link& link, BlockKind kind, std::span<const std::uint16
     if (LinkError e = link.read(first, count, back))
         return e;
     if (stagedRegisters(map, kind, back) != sent)
-        return {LinkError::Kind::Verify, 0, what + ": the values read back differ from those sent"};
+        return linkError(LinkError::Kind::Verify, 0,
+                         what + Said{": the values read back differ from those sent",
+                                     ": значения, прочитанные обратно, отличаются от отправленных"});
     return {};
 }
 
@@ -574,20 +655,26 @@ profile::MachineProfile pulledProfile(const PullResult& p, const std::string& na
 
 // --- push ------------------------------------------------------------------
 
-std::string PushReport::summary() const {
+std::string PushReport::summary(bool ru) const {
     std::string out;
     for (State st : {State::New, State::InDoubt, State::AsItWas}) {
         std::string names;
         for (const Part& p : parts)
             if (p.state == st)
-                names += (names.empty() ? "" : ", ") + p.name;
+                names += (names.empty() ? "" : ", ") + (ru && !p.nameRu.empty() ? p.nameRu : p.name);
         if (names.empty())
             continue;
         if (!out.empty())
             out += "; ";
-        out += st == State::New       ? "new: "
-               : st == State::InDoubt ? "in doubt (the line broke while it was committed; pull to see): "
-                                      : "as they were: ";
+        if (ru)
+            out += st == State::New       ? "записано: "
+                   : st == State::InDoubt ? "под вопросом (линия оборвалась во время записи; считайте память, чтобы "
+                                            "узнать): "
+                                          : "как было: ";
+        else
+            out += st == State::New       ? "new: "
+                   : st == State::InDoubt ? "in doubt (the line broke while it was committed; pull to see): "
+                                          : "as they were: ";
         out += names;
     }
     return out;
@@ -646,8 +733,8 @@ std::vector<int> commitOrder(const std::map<int, std::string>& programs) {
     return order;
 }
 
-LinkError inputError(int line, std::string message) {
-    return {LinkError::Kind::Input, line, std::move(message) + "; nothing was sent"};
+LinkError inputError(int line, const Said& message) {
+    return linkError(LinkError::Kind::Input, line, message + Said{"; nothing was sent", "; ничего не отправлено"});
 }
 
 } // namespace
@@ -657,13 +744,13 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
     for (int n = 1; n <= catalog::kCParamCount; ++n)
         if (const std::string e = profile::checkCValue(n, file.c[static_cast<std::size_t>(n)]); !e.empty())
             return inputError(0, "C" + std::to_string(n) + " (" + std::string(catalog::cParam(n).name) + "): " + e +
-                                     " (table Е.1)");
+                                     Said{" (table Е.1)", " (таблица Е.1)"});
     plan.hasC = true;
     plan.c.assign(file.c.begin(), file.c.end());
     plan.hasR = true;
     for (const auto& [n, v] : file.r) {
         if (v < INT32_MIN || v > INT32_MAX)
-            return inputError(0, "R" + std::to_string(n) + " is outside the 32-bit range");
+            return inputError(0, "R" + std::to_string(n) + Said{" is outside the 32-bit range", " не помещается в 32 бита"});
         if (n >= 0 && n < 300 && map.rWritable(n))
             plan.r[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(v);
     }
@@ -673,10 +760,13 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
         const program::ParseResult parsed = program::parse(text, po);
         for (const program::Diagnostic& d : parsed.diagnostics)
             if (d.isError())
-                return inputError(d.line, "program " + std::to_string(n) + ", line " + std::to_string(d.line) + ": " +
-                                              d.messageEn);
+                return inputError(d.line, Said{"program " + std::to_string(n) + ", line " + std::to_string(d.line) + ": " +
+                                                   d.messageEn,
+                                               "программа " + std::to_string(n) + ", строка " +
+                                                   std::to_string(d.line) + ": " + d.messageRu});
         if (parsed.store.size() != 1 || parsed.store.programs()[0].number != n)
-            return inputError(0, "program " + std::to_string(n) + " does not hold exactly that program");
+            return inputError(0, Said{"program " + std::to_string(n) + " does not hold exactly that program",
+                                      "программа " + std::to_string(n) + " содержит не ровно одну эту программу"});
         plan.programs[n] = canonicalProgram(parsed.store.programs()[0]);
     }
     {
@@ -684,7 +774,8 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
         const engine::FileCheck check = engine::checkFileForMachine(profile::programsFileText(file), {}, file, none);
         for (const program::Diagnostic& d : check.diagnostics)
             if (d.isError())
-                return inputError(d.line, "program " + std::to_string(d.program) + ": " + d.messageEn);
+                return inputError(d.line, Said{"program " + std::to_string(d.program) + ": " + d.messageEn,
+                                               "программа " + std::to_string(d.program) + ": " + d.messageRu});
     }
     if (!file.messages.empty()) {
         program::MessageTable m;
@@ -701,12 +792,14 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
     const program::ParseResult parsed = program::parse(text);
     for (const program::Diagnostic& d : parsed.diagnostics)
         if (d.isError())
-            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + d.messageEn);
+            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + Said{d.messageEn, d.messageRu});
     if (parsed.store.empty() && !parsed.store.messages.present)
-        return inputError(0, source + " holds no program (%L) and no %MESSAGES");
+        return inputError(0, source + Said{" holds no program (%L) and no %MESSAGES",
+                                           " не содержит ни программы (%L), ни %MESSAGES"});
     for (const program::Program& p : parsed.store.programs()) {
         if (p.headerLine == 0)
-            return inputError(1, source + ": the text before the first %L header belongs to no program");
+            return inputError(1, source + Said{": the text before the first %L header belongs to no program",
+                                               ": текст до первого заголовка %L не относится ни к одной программе"});
         plan.programs[p.number] = canonicalProgram(p);
     }
     if (parsed.store.messages.present) {
@@ -760,8 +853,9 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
     const engine::FileCheck check = engine::checkFileForMachine(text, {}, machine, store);
     for (const program::Diagnostic& d : check.diagnostics)
         if (d.isError())
-            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + d.messageEn +
-                                          " (checked against the controller's constants and programs)");
+            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " +
+                                          Said{d.messageEn + " (checked against the controller's constants and programs)",
+                                               d.messageRu + " (проверено по константам и программам контроллера)"});
     return {};
 }
 
@@ -773,21 +867,22 @@ LinkError push(Link& link, const PushPlan& plan, PushReport& report, const Progr
     };
     report = {};
     if (plan.hasC)
-        report.parts.push_back({"C-parameters", PushReport::State::AsItWas});
+        report.parts.push_back({"C-parameters", PushReport::State::AsItWas, "C-параметры"});
     if (plan.hasR)
-        report.parts.push_back({"R-parameters (" + map.rWritableText() + ")", PushReport::State::AsItWas});
+        report.parts.push_back({"R-parameters (" + map.rWritableText() + ")", PushReport::State::AsItWas,
+                                "R-параметры (" + map.rWritableText() + ")"});
     if (plan.hasMessages)
-        report.parts.push_back({"messages", PushReport::State::AsItWas});
+        report.parts.push_back({"messages", PushReport::State::AsItWas, "сообщения"});
     const std::vector<int> order = commitOrder(plan.programs);
     for (int n : order)
-        report.parts.push_back({"program " + std::to_string(n), PushReport::State::AsItWas});
+        report.parts.push_back({"program " + std::to_string(n), PushReport::State::AsItWas, "программа " + std::to_string(n)});
 
     // Only in F7 «РАБОТА С ПЭВМ».
     LiveState live;
     if (LinkError e = identify(link, live))
         return e;
     if (!live.pcReady)
-        return {LinkError::Kind::NotReady, 6, notReadyText(live, "push")};
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, {"push", "передачу"}));
 
     std::size_t part = 0;
     // Where the part under way ended, then the error as it came.
@@ -845,12 +940,12 @@ LinkError push(Link& link, const profile::MachineProfile& file, PushReport& repo
 
 LinkError clearArea(Link& link, BlockKind kind) {
     const RegisterMap& map = link.map();
-    const std::string what = kind == BlockKind::C ? "clear C" : "clear R";
+    const Said what = kind == BlockKind::C ? Said{"clear C", "очистку C"} : Said{"clear R", "очистку R"};
     LiveState live;
     if (LinkError e = identify(link, live))
         return e;
     if (!live.pcReady)
-        return {LinkError::Kind::NotReady, 6, notReadyText(live, what)};
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, what));
     const std::uint16_t cmd[] = {
         static_cast<std::uint16_t>(kind == BlockKind::C ? TransferCommand::ClearC : TransferCommand::ClearR)};
     if (LinkError e = link.write(map.transfer.command, cmd))
@@ -859,14 +954,17 @@ LinkError clearArea(Link& link, BlockKind kind) {
     if (LinkError e = link.read(map.transfer.status, 1, st))
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Committed))
-        return {LinkError::Kind::Refused, st[0], what + ": " + statusText(st[0])};
+        return linkError(LinkError::Kind::Refused, st[0],
+                         (kind == BlockKind::C ? Said{"clear C", "очистка C"} : Said{"clear R", "очистка R"}) + ": " +
+                             statusSaid(st[0]));
     if (kind == BlockKind::C) { // every constant 0 now
         const Block& cb = map.block(BlockKind::C);
         std::vector<std::uint16_t> back;
         if (LinkError e = link.read(cb.first, cb.count(), back))
             return e;
         if (std::any_of(back.begin(), back.end(), [](std::uint16_t v) { return v != 0; }))
-            return {LinkError::Kind::Verify, 0, "clear C: the C block does not read back as zeros"};
+            return linkError(LinkError::Kind::Verify, 0,
+                             {"clear C: the C block does not read back as zeros", "очистка C: блок C не читается нулями"});
     }
     return {};
 }
@@ -876,12 +974,14 @@ LinkError setConstant(Link& link, int number, std::int64_t value) {
     const std::string what = "C" + std::to_string(number);
     const auto place = std::find_if(map.c.begin(), map.c.end(), [&](const CPlacement& p) { return p.number == number; });
     if (place == map.c.end())
-        return {LinkError::Kind::Input, 0, what + " has no address in the positioner (table Е.1): it cannot be written"};
+        return linkError(LinkError::Kind::Input, 0,
+                         what + Said{" has no address in the positioner (table Е.1): it cannot be written",
+                                     " не имеет адреса в позиционере (таблица Е.1): её нельзя записать"});
     LiveState live;
     if (LinkError e = readLive(link, live))
         return e;
     if (!live.pcReady)
-        return {LinkError::Kind::NotReady, 6, notReadyText(live, "set " + what)};
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, Said{"set ", "запись "} + what));
     // The registers the constant lies in, from the block as it is now (a
     // bit or a byte shares its word with others).
     const Block& cb = map.block(BlockKind::C);
@@ -896,14 +996,18 @@ LinkError setConstant(Link& link, int number, std::int64_t value) {
     const std::span<const std::uint16_t> words(next.data() + first, static_cast<std::size_t>(count));
     if (LinkError e = link.write(place->word, words))
         return e.kind == LinkError::Kind::Exception && e.code == 3
-                   ? LinkError{LinkError::Kind::Exception, 3, what + " = " + std::to_string(value) +
-                                                                  ": the controller refused the value (outside table Е.1)"}
+                   ? linkError(LinkError::Kind::Exception, 3,
+                               what + " = " + std::to_string(value) +
+                                   Said{": the controller refused the value (outside table Е.1)",
+                                        ": контроллер отклонил значение (вне таблицы Е.1)"})
                    : e;
     std::vector<std::uint16_t> back;
     if (LinkError e = link.read(place->word, count, back))
         return e;
     if (!std::equal(back.begin(), back.end(), words.begin()))
-        return {LinkError::Kind::Verify, 0, what + ": the controller does not read back what was written"};
+        return linkError(LinkError::Kind::Verify, 0,
+                         what + Said{": the controller does not read back what was written",
+                                     ": контроллер при чтении не возвращает то, что записано"});
     return {};
 }
 
@@ -911,14 +1015,17 @@ LinkError setRParameter(Link& link, int number, std::int64_t value) {
     const RegisterMap& map = link.map();
     const std::string what = "R" + std::to_string(number);
     if (number < 0 || number >= map.rCount || !map.rWritable(number))
-        return {LinkError::Kind::Input, 2, what + " is read only over the link (the PC writes " + map.rWritableText() + ")"};
+        return linkError(LinkError::Kind::Input, 2,
+                         what + Said{" is read only over the link (the PC writes " + map.rWritableText() + ")",
+                                     " по линии только читается (ПЭВМ записывает " + map.rWritableText() + ")"});
     if (value < INT32_MIN || value > INT32_MAX)
-        return {LinkError::Kind::Input, 3, what + " = " + std::to_string(value) + " is outside 32 bits"};
+        return linkError(LinkError::Kind::Input, 3,
+                         what + " = " + std::to_string(value) + Said{" is outside 32 bits", " не помещается в 32 бита"});
     LiveState live;
     if (LinkError e = readLive(link, live))
         return e;
     if (!live.pcReady)
-        return {LinkError::Kind::NotReady, 6, notReadyText(live, "set " + what)};
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, Said{"set ", "запись "} + what));
     const std::uint16_t words[] = {lowWord(value), highWord(value)};
     if (LinkError e = link.write(map.rRegister(number), words))
         return e;
@@ -926,7 +1033,9 @@ LinkError setRParameter(Link& link, int number, std::int64_t value) {
     if (LinkError e = link.read(map.rRegister(number), 2, back))
         return e;
     if (back[0] != words[0] || back[1] != words[1])
-        return {LinkError::Kind::Verify, 0, what + ": the controller does not read back what was written"};
+        return linkError(LinkError::Kind::Verify, 0,
+                         what + Said{": the controller does not read back what was written",
+                                     ": контроллер при чтении не возвращает то, что записано"});
     return {};
 }
 

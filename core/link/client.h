@@ -57,6 +57,25 @@ struct LineStats {
 // "12 answers, 0 timeouts, 1 CRC error, 0 bad replies, exceptions 06×2, 1 retry; round trip median 4.1 ms, p95 5.0 ms"
 std::string describe(const LineStats& s);
 
+// A text in both languages of the user interface (as program::Diagnostic's
+// messageEn/messageRu): the command line says the English, the desktop the
+// one of its window.
+struct Said {
+    std::string en, ru;
+};
+inline Said operator+(Said a, const Said& b) {
+    a.en += b.en;
+    a.ru += b.ru;
+    return a;
+}
+// Words of no language (numbers, names, codes) join both.
+inline Said operator+(Said a, const std::string& both) {
+    a.en += both;
+    a.ru += both;
+    return a;
+}
+inline Said operator+(const std::string& both, const Said& a) { return Said{both + a.en, both + a.ru}; }
+
 // What went wrong, for the user.
 struct LinkError {
     enum class Kind {
@@ -70,13 +89,26 @@ struct LinkError {
     };
     Kind kind = Kind::None;
     int code = 0; // exception code or transfer status
-    std::string message;
+    std::string message;        // English
+    std::string messageRu = {}; // Russian ("": only the English was said)
+    int line = 0;               // a text the controller refused: its line (a C block's: the constant)
     explicit operator bool() const { return kind != Kind::None; }
+    // The message in the desktop's language.
+    const std::string& text(bool ru) const { return ru && !messageRu.empty() ? messageRu : message; }
+    void append(const Said& more) {
+        messageRu = (messageRu.empty() ? message : messageRu) + more.ru;
+        message += more.en;
+    }
 };
+inline LinkError linkError(LinkError::Kind kind, int code, Said said) {
+    return {kind, code, std::move(said.en), std::move(said.ru)};
+}
 
 // The text of a Modbus exception of the map: 02 «адрес вне карты» ...
 std::string exceptionText(int code);
 std::string statusText(int status);
+Said exceptionSaid(int code);
+Said statusSaid(int status);
 
 class Link {
 public:
@@ -101,7 +133,7 @@ public:
     void setAttempts(int n) { attempts_ = n < 1 ? 1 : n; }
 
 private:
-    template <class F> LinkError retry(const std::string& what, F&& f);
+    template <class F> LinkError retry(const Said& what, F&& f);
     void count(const Reply& r, bool retry);
     LinkError readPiece(int at, int n, std::vector<std::uint16_t>& out);
     LinkError writePiece(int first, std::span<const std::uint16_t> values);
@@ -135,6 +167,7 @@ LinkError identify(Link& link, LiveState& out);
 // that allows it: «not in F7 … (mode F2 now)», or in F7 УПРАВЛЕНИЕ ДАННЫМИ
 // but not on «РАБОТА С ПЭВМ». `what` is the action ("push", "clear C").
 std::string notReadyText(const LiveState& live, const std::string& what);
+Said notReadySaid(const LiveState& live, const Said& what);
 
 // One text through the transfer registers.
 LinkError readText(Link& link, bool messages, int program, std::string& text);
@@ -191,12 +224,13 @@ struct PushReport {
     struct Part {
         std::string name; // "C-parameters", "R-parameters (R0..R157, …)", "messages", "program 5"
         State state = State::AsItWas;
+        std::string nameRu = {}; // «C-параметры», «программа 5»
     };
     std::vector<Part> parts; // in the order they are sent
     bool constants = false, rParameters = false, messages = false;
     std::vector<int> programs; // committed and verified
     // "new: C-parameters, program 5; as they were: program 7"
-    std::string summary() const;
+    std::string summary(bool ru = false) const;
     bool anyNew() const;
 };
 

@@ -16,6 +16,10 @@
 #include "catalog/messages.h"
 #include "catalog/rparams.h"
 #include "constants/constants_dock.h"
+#include "controller/controller_dock.h"
+#include "controller/push_preview.h"
+#include "database/database_ui.h"
+#include "session/shop_database.h"
 #include "editor/editor_tab.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
@@ -29,6 +33,10 @@
 #include "machine/pendant_controls.h"
 #include "main_window.h"
 #include "db/database.h"
+#include "db/error.h"
+#include "link/client.h"
+#include "profile/builtin.h"
+#include "profile/diff.h"
 #include "engine/types.h"
 #include "program/model.h"
 #include "session/machine_source.h"
@@ -69,6 +77,9 @@
 #include <QtCharts/QChartView>
 
 #include <functional>
+#include <cstdlib>
+#include <fcntl.h>
+#include <unistd.h>
 
 using namespace k528;
 using studio::MainWindow;
@@ -82,7 +93,7 @@ QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static
 // the panel's and the PC keyboard's key names, the product's name.
 const QStringList kAllowedLatin = {
     // units, protocols, file formats, the product
-    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "Studio",
+    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "Studio", "TCP",
     "GNU", "GPL",
     // the program language's words and a plane of its axes
     "IF", "GOTO", "XZ", "ISO", "3D",
@@ -444,6 +455,11 @@ private slots:
     // Switched at run time: every text follows the new language.
     void russianAfterEnglish() { walkAll("en", "ru"); }
     void englishAfterRussian() { walkAll("ru", "en"); }
+    // What fails is said in Russian too: the controller link's errors
+    // (core says each in both languages), a transfer's parts and the push
+    // preview, the database's (libpq in Russian through gettext; SQLite's
+    // English only as the quoted detail of a Russian sentence).
+    void russianErrors();
 
 private:
     QTemporaryDir dir_;
@@ -629,6 +645,158 @@ private:
                                 .arg(language)));
     }
 };
+
+namespace {
+
+// A line on which nothing answers.
+class SilentLine final : public link::RegisterTransport {
+public:
+    link::Reply read(int, int, std::vector<std::uint16_t>&) override { return link::Reply::lost(); }
+    link::Reply write(int, std::span<const std::uint16_t>) override { return link::Reply::lost(); }
+    link::Reply writeRead(int, std::span<const std::uint16_t>, int, int, std::vector<std::uint16_t>&) override {
+        return link::Reply::lost();
+    }
+    link::Reply echo(std::uint16_t) override { return link::Reply::lost(); }
+};
+
+} // namespace
+
+void TestUiLanguage::russianErrors() {
+    QVERIFY(studio::setLanguage("ru"));
+    Walker walker;
+    walker.language = "ru";
+    walker.exemptWords = manualWords("ru");
+    // SQLite's own words, quoted as said (it has no Russian).
+    const QStringList sqliteSaid = {QStringLiteral("file is not a database"),
+                                    QStringLiteral("database disk image is malformed"), QStringLiteral("disk I/O error")};
+    const QString pgLocation = QStringLiteral("postgresql://127.0.0.1:1/k528");
+    const QString badFile = dir_.filePath("bad.k528"), emptyFile = dir_.filePath("empty.k528");
+    // The K923's keys by their printed legends (ENTER), the manual's panel.
+    walker.setData(panelTexts() + positionerTexts() + sqliteSaid + QStringList{pgLocation, QStringLiteral("%MESSAGES"), badFile, emptyFile});
+    const auto ru = [](const link::LinkError& e) { return QString::fromStdString(e.text(true)); };
+
+    // Core's link errors in Russian, as the Controller dock and the views say them.
+    {
+        SilentLine line;
+        link::Link l(line, link::k528Map(), 1);
+        link::LiveState live;
+        walker.check("link: no answer", ru(link::identify(l, live)));
+        walker.check("link: R read only", ru(link::setRParameter(l, 158, 1)));
+        walker.check("link: R outside 32 bits", ru(link::setRParameter(l, 5, 1LL << 40)));
+        walker.check("link: C without an address", ru(link::setConstant(l, 0, 1)));
+        link::PushPlan plan;
+        walker.check("link: a file with an error", ru(link::planProgramFile(l, "%L1\nN1 G999\n", badFile.toStdString(), plan)));
+        walker.check("link: a file without programs", ru(link::planProgramFile(l, "; nothing\n", emptyFile.toStdString(), plan)));
+        for (int code : {1, 2, 3, 6, 9})
+            walker.check(QStringLiteral("link: exception %1").arg(code), QString::fromStdString(link::exceptionSaid(code).ru));
+        for (int status : {0, 1, 2, 16, 17, 18, 19, 20, 33})
+            walker.check(QStringLiteral("link: status %1").arg(status), QString::fromStdString(link::statusSaid(status).ru));
+        for (int mode : {0, 2, 7}) {
+            link::LiveState m;
+            m.mode = mode;
+            walker.check(QStringLiteral("link: not ready in F%1").arg(mode),
+                         QString::fromStdString(link::notReadySaid(m, {"push", "передачу"}).ru));
+        }
+        link::PushReport report;
+        report.parts = {{"C-parameters", link::PushReport::State::New, "C-параметры"},
+                        {"program 5", link::PushReport::State::InDoubt, "программа 5"},
+                        {"messages", link::PushReport::State::AsItWas, "сообщения"}};
+        walker.check("link: a push's parts", QString::fromStdString(report.summary(true)));
+    }
+
+    // The push preview: what changes, in the window's words.
+    {
+        const profile::MachineProfile before = profile::builtin("training-lathe");
+        profile::MachineProfile after = before;
+        after.c[22] += 1;
+        after.programs[77] = "%L77\nN1 G1 X10 FX100\nN2 M30\n";
+        if (!after.programs.empty() && after.programs.begin()->first != 77)
+            after.programs.erase(after.programs.begin());
+        after.r.erase(after.r.begin(), after.r.end());
+        after.r[10] = 5;
+        const QString text = studio::diffText(profile::diff(before, after));
+        QVERIFY(!text.isEmpty());
+        Walker diff = walker;
+        diff.setData(positionerTexts() + panelTexts() + machineTexts(after, {}) +
+                     machineTexts(before, {}));
+        for (const QString& line : text.split('\n'))
+            if (!line.startsWith(QLatin1String("    "))) // a program's own lines are its text
+                diff.check("push preview", line);
+        walker.leaks << diff.leaks;
+        QDialog* d = studio::showPushPreview(nullptr, QStringLiteral("L77"), before, after, QStringLiteral("Передать"),
+                                             [](bool) {});
+        Walker dialog = diff;
+        dialog.leaks.clear();
+        dialog.cells = false;
+        dialog.walkWidget(d);
+        walker.leaks << dialog.leaks;
+        d->close();
+    }
+
+    // The database dialog: a server that refuses, a file that is not a database.
+    {
+        studio::DatabaseDialog d;
+        d.setLocation(pgLocation);
+        d.accept();
+        const QString pg = d.error();
+        QVERIFY2(pg.contains(QStringLiteral("Подробности")), qPrintable(pg));
+        // libpq's own words in Russian (its gettext catalogue, libpq5-15.mo).
+        QVERIFY2(pg.contains(QStringLiteral("не удалось")), qPrintable(pg));
+        qInfo("%s", qPrintable(pg));
+        walker.check("File > Database: a server that refuses", pg);
+        QFile junk(dir_.filePath("junk.db"));
+        QVERIFY(junk.open(QIODevice::WriteOnly));
+        // SQLite's header, then nothing SQLite can read: SQLite's own words.
+        junk.write(QByteArray("SQLite format 3", 16) + QByteArray(4080, 'x'));
+        junk.close();
+        d.setLocation(junk.fileName());
+        d.accept();
+        const QString sq = d.error();
+        QVERIFY2(sq.contains(junk.fileName()), qPrintable(sq));
+        qInfo("%s", qPrintable(sq));
+        walker.check("File > Database: not a database", sq);
+        walker.check("a database error of the window", studio::databaseErrorText(
+                                                             db::Error(db::ErrorKind::Io, "cannot open x: disk I/O error",
+                                                                       "disk I/O error")));
+        d.reject();
+    }
+
+    // Controller > Connect on a port that does not exist, then on one where
+    // nothing answers (a pseudo-terminal whose other end is silent).
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* dock = w.findChild<studio::ControllerDock*>();
+        QVERIFY(dock);
+        auto* port = w.findChild<QComboBox*>("controller.port");
+        QVERIFY(port && port->isEditable());
+        const auto tryPort = [&](const QString& path, int ms) {
+            port->setEditText(path);
+            const QString before = dock->lastMessage();
+            dock->connectLine();
+            QTRY_VERIFY_WITH_TIMEOUT(dock->lastMessage() != before &&
+                                         !dock->lastMessage().isEmpty(),
+                                     ms);
+            qInfo("%s", qPrintable(dock->lastMessage()));
+            walker.check(QStringLiteral("Controller > Connect to %1").arg(path), dock->lastMessage());
+        };
+        tryPort(dir_.filePath("no-such-port"), 10000);
+        const int master = posix_openpt(O_RDWR | O_NOCTTY);
+        if (master >= 0 && grantpt(master) == 0 && unlockpt(master) == 0) {
+            tryPort(QString::fromLocal8Bit(ptsname(master)), 60000);
+            dock->disconnectLine();
+            ::close(master);
+        }
+        w.close();
+    }
+
+    for (const QString& l : std::as_const(walker.leaks))
+        qWarning("%s", qPrintable(l));
+    QVERIFY2(walker.leaks.isEmpty(),
+             qPrintable(QStringLiteral("%1 texts of another language in --lang ru (listed above)").arg(walker.leaks.size())));
+    QVERIFY(studio::setLanguage("en"));
+}
 
 QTEST_MAIN(TestUiLanguage)
 #include "test_ui_language.moc"

@@ -1,6 +1,7 @@
 #include "constants/constants_dialogs.h"
 
 #include "catalog/cparams.h"
+#include "session/shop_database.h"
 #include "constants/constants_dock.h"
 #include "constants/constants_editor.h"
 #include "constants/machine_store.h"
@@ -77,7 +78,7 @@ HistoryDialog::HistoryDialog(const MachineStore& store, int number, QWidget* par
         info->setText(h.empty() ? tr("No revision of %1 changed this constant.").arg(store.qName())
                                 : tr("Revisions that changed this constant: %1 (newest first).").arg(h.size()));
     } catch (const std::exception& e) {
-        info->setText(tr("The history cannot be read: %1").arg(QString::fromUtf8(e.what())));
+        info->setText(tr("The history cannot be read: %1").arg(databaseErrorText(e)));
     }
     table_->resizeColumnsToContents();
     resize(760, 360);

@@ -9,6 +9,7 @@
 #include "profile/csv.h"
 #include "profile/text_format.h"
 #include "controller/controller.h"
+#include "controller/push_preview.h"
 #include "controller/view_notice.h"
 #include "util/input_file.h"
 #include "widgets.h"
@@ -497,7 +498,7 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
             const profile::MachineProfile pb = at(b);
             promise.setProgressValue(2);
             const auto changes = profile::diff(pa, pb);
-            r.text = QString::fromStdString(profile::formatDiff(changes));
+            r.text = diffText(changes);
             r.message = ConstantsPane::tr("Changes: %1").arg(changes.size());
             promise.setProgressValue(3);
         } catch (const std::exception& e) {

@@ -1,5 +1,7 @@
 #include "controller/link_controller.h"
 
+#include "language.h"
+
 #include "link/monitor.h"
 #include "session/shop_database.h"
 #include "transfer/transfer.h"
@@ -64,8 +66,25 @@ private:
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
+// Core's message in the window's language (core says each in both).
+QString said(const link::LinkError& e) { return fromStd(e.text(currentLanguage() == QLatin1String("ru"))); }
+
+// What a transfer moves now, as core's progress names it ("C-parameters",
+// "R-parameters", "messages", "program 5"), in the window's language.
+QString partName(const std::string& what) {
+    if (what == "C-parameters")
+        return LinkController::tr("C-parameters");
+    if (what == "R-parameters")
+        return LinkController::tr("R-parameters");
+    if (what == "messages")
+        return LinkController::tr("messages");
+    if (what.rfind("program ", 0) == 0)
+        return LinkController::tr("program %1").arg(fromStd(what.substr(8)));
+    return fromStd(what);
+}
+
 // A transfer stopped by the user, as the log words it.
-link::LinkError cancelledError() { return {link::LinkError::Kind::Refused, 0, "cancelled by the user"}; }
+link::LinkError cancelledError() { return {link::LinkError::Kind::Refused, 0, "cancelled by the user", "отменено пользователем"}; }
 
 // The controller's identity added to `where` after a transfer (one more
 // exchange; none when the line is closing).
@@ -98,7 +117,7 @@ std::function<link::LinkError(link::Link&)> pushOnRecord(
         identifyAfter(where, l, e);
         *entry = transfer::pushEntry(where, l.map(), plan, rep, e);
         if (e && rep.anyNew())
-            e.message += "; " + rep.summary();
+            e.append({"; " + rep.summary(), "; " + rep.summary(true)});
         return e;
     };
 }
@@ -158,10 +177,10 @@ public:
             if (!e)
                 e = link_->read(map.rFirst, 2 * map.rCount, rregs);
         } catch (const Cancelled&) {
-            e = {link::LinkError::Kind::NoAnswer, 0, "closed"};
+            e = {link::LinkError::Kind::NoAnswer, 0, "closed", "соединение закрыто"};
         }
         if (e) {
-            const QString why = fromStd(e.message);
+            const QString why = said(e);
             link_.reset();
             meter_.reset();
             t_.reset();
@@ -218,7 +237,7 @@ public:
         const bool a = true, b = true; // the monitor keeps both halves
         ++polls_;
         if (e) {
-            const QString why = fromStd(e.message);
+            const QString why = said(e);
             post([why](LinkController* c) {
                 if (!c->lostSince_.isValid()) {
                     c->lostSince_ = QDateTime::currentDateTime();
@@ -285,7 +304,7 @@ public:
         }
         report();
         if (cancelled || e) {
-            const QString why = cancelled ? LinkController::tr("cancelled; nothing was kept") : fromStd(e.message);
+            const QString why = cancelled ? LinkController::tr("cancelled; nothing was kept") : said(e);
             post([why, done, entry](LinkController* c) {
                 c->busy_ = false;
                 if (entry)
@@ -350,7 +369,7 @@ public:
         report();
         const bool ok = !cancelled && !e;
         const QString why = cancelled ? LinkController::tr("cancelled; what was not committed is as it was")
-                                      : fromStd(e.message);
+                                      : said(e);
         post([ok, why, done, transfer](LinkController* c) {
             if (transfer) {
                 c->busy_ = false;
@@ -429,7 +448,7 @@ public:
             written << QStringLiteral("L%1").arg(n);
         const bool ok = !cancelled && !e;
         const QString why = cancelled ? LinkController::tr("cancelled; the program being sent was not committed")
-                                      : fromStd(e.message);
+                                      : said(e);
         post([ok, why, written, entry, machine](LinkController* c) {
             c->busy_ = false;
             c->programs_ = {};
@@ -443,7 +462,7 @@ public:
 private:
     link::Progress progressFn() {
         return [this](const std::string& what, int done, int total) {
-            const QString w = fromStd(what);
+            const QString w = partName(what);
             post([w, done, total](LinkController* c) { emit c->progress(w, done, total); });
             report();
         };

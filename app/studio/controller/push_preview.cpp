@@ -5,6 +5,7 @@
 #include "program/formatter.h"
 #include "program/parser.h"
 
+#include <QCoreApplication>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QLabel>
@@ -28,7 +29,37 @@ std::string canonical(int number, const std::string& text) {
     return program::format(one);
 }
 
+QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+QString said(const char* text) { return QCoreApplication::translate("k528::studio::PushPreview", text); }
+
 } // namespace
+
+QString diffText(const std::vector<profile::Change>& changes) {
+    QString out;
+    for (const profile::Change& c : changes) {
+        QString key = fromStd(c.key);
+        if (c.section == profile::DiffSection::Machine)
+            key = c.key == "name" ? said(QT_TRANSLATE_NOOP("k528::studio::PushPreview", "name")) : c.key == "title" ? said(QT_TRANSLATE_NOOP("k528::studio::PushPreview", "title")) : key;
+        QString line = key;
+        if (!c.label.empty())
+            line += QLatin1Char(' ') + fromStd(c.label);
+        if (c.section == profile::DiffSection::Program) {
+            out += line + QStringLiteral(": ") +
+                   (!c.before ? said(QT_TRANSLATE_NOOP("k528::studio::PushPreview", "added")) : !c.after ? said(QT_TRANSLATE_NOOP("k528::studio::PushPreview", "removed")) : said(QT_TRANSLATE_NOOP("k528::studio::PushPreview", "changed"))) + QLatin1Char('\n');
+            const QStringList lines =
+                fromStd(profile::lineDiff(c.before.value_or(""), c.after.value_or(""))).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+            for (const QString& l : lines)
+                if (!l.startsWith(QLatin1String("  ")) || !c.before || !c.after)
+                    out += QStringLiteral("    ") + l + QLatin1Char('\n');
+            continue;
+        }
+        const QString none = said(QT_TRANSLATE_NOOP("k528::studio::PushPreview", "(none)"));
+        out += line + QStringLiteral(": ") + (c.before ? fromStd(*c.before) : none) + QStringLiteral(" -> ") +
+               (c.after ? fromStd(*c.after) : none) + QLatin1Char('\n');
+    }
+    return out;
+}
 
 profile::MachineProfile afterPush(const profile::MachineProfile& memory, const profile::MachineProfile& file) {
     profile::MachineProfile m = memory;
@@ -88,7 +119,7 @@ QDialog* showPushPreview(QWidget* parent, const QString& what, const profile::Ma
     text->setObjectName("controller.pushPreview.diff");
     text->setReadOnly(true);
     text->setFont(QFont("DejaVu Sans Mono"));
-    text->setPlainText(QString::fromStdString(profile::formatDiff(changes)));
+    text->setPlainText(diffText(changes));
     lay->addWidget(text, 1);
     auto* box = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, d);
     box->button(QDialogButtonBox::Ok)->setText(sendText);

@@ -5,11 +5,13 @@
 // push would leave it (programs in the canonical text the controller keeps).
 #pragma once
 
+#include "profile/diff.h"
 #include "profile/profile.h"
 
 #include <QString>
 #include <functional>
 #include <string>
+#include <vector>
 
 class QDialog;
 class QWidget;
@@ -23,6 +25,10 @@ profile::MachineProfile afterPush(const profile::MachineProfile& memory, const p
 // The memory after a push of a program file's text (its programs and
 // %MESSAGES; C and R as they are).
 profile::MachineProfile afterPrograms(const profile::MachineProfile& memory, const std::string& text);
+
+// Core's profile diff as the window shows it, one line per change in its
+// language («C022 УСКОРЕНИЕ 1: 2000 -> 2133», «L5: добавлена» and its lines).
+QString diffText(const std::vector<profile::Change>& changes);
 
 // Opens (window-modal) the preview of `what` going into the controller,
 // whose memory is `before`; `done(true)` when the user chose to send.

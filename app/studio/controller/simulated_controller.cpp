@@ -1,6 +1,7 @@
 #include "controller/simulated_controller.h"
 
 #include "catalog/messages.h"
+#include "language.h"
 #include "engine/alarms.h"
 #include "engine/controller.h"
 #include "engine/self_test.h"
@@ -17,6 +18,14 @@ namespace k528::studio {
 namespace {
 
 QString fromStd(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+// Why the simulated controller refused, in the window's language (core's
+// detail, which names the value and the limit, is English only).
+QString refusalText(const engine::OpResult& r) {
+    if (currentLanguage() == QLatin1String("ru") && r.refusal != engine::Refusal::None)
+        return fromStd(engine::refusalTextRu(r.refusal));
+    return fromStd(r.detail);
+}
 
 QString trc(const char* text) { return QCoreApplication::translate("k528::studio::ConstantsEditor", text); }
 
@@ -39,12 +48,12 @@ QString inMode(engine::Controller& c, engine::Mode mode, F&& change) {
     if (was != mode) {
         const engine::OpResult r = c.selectMode(mode);
         if (!r.ok())
-            return fromStd(r.detail);
+            return refusalText(r);
     }
     const engine::OpResult r = change();
     if (was != mode)
         c.selectMode(was);
-    return r.ok() ? QString() : fromStd(r.detail);
+    return r.ok() ? QString() : refusalText(r);
 }
 
 } // namespace
@@ -204,7 +213,7 @@ void SimulatedController::setR(int number, std::int64_t value, Done done) {
     if (why.isEmpty()) {
         const engine::OpResult r = session_.controller().setR(number, value);
         if (!r.ok())
-            why = fromStd(r.detail);
+            why = refusalText(r);
     }
     written(why, done);
 }

@@ -78,35 +78,11 @@ QString databaseOpenError(const QString& location, const std::exception& e) {
         return QCoreApplication::translate("k528::studio::DatabaseUi", "The database %1 cannot be opened: %2").arg(location, QString::fromUtf8(e.what()));
     if (error->kind() == db::ErrorKind::ReadOnly)
         return databaseErrorText(e);
-    QString why;
-    switch (error->kind()) {
-    case db::ErrorKind::Invalid:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "this is not a database location (a file path, sqlite:PATH or postgresql://HOST/NAME; "
-                 "a password is never written in it: use ~/.pgpass or a service file)");
-        break;
-    case db::ErrorKind::Io:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "it cannot be reached, read or created");
-        break;
-    case db::ErrorKind::Foreign:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "it is not a K528 Studio database");
-        break;
-    case db::ErrorKind::Corrupt:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "it is damaged (nothing in it was changed)");
-        break;
-    case db::ErrorKind::TooNew:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "it was written by a newer K528 Studio");
-        break;
-    case db::ErrorKind::Busy:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "another program holds it too long");
-        break;
-    case db::ErrorKind::Denied:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "the server refused this user");
-        break;
-    default:
-        why = QCoreApplication::translate("k528::studio::DatabaseUi", "an unexpected database error");
-        break;
-    }
-    return QCoreApplication::translate("k528::studio::DatabaseUi", "The database %1 cannot be opened: %2.\nDetails: %3").arg(location, why, QString::fromUtf8(e.what()));
+    const QString why = databaseErrorKindText(error->kind());
+    const QString detail = databaseErrorDetail(e);
+    if (detail.isEmpty())
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "The database %1 cannot be opened: %2.").arg(location, why);
+    return QCoreApplication::translate("k528::studio::DatabaseUi", "The database %1 cannot be opened: %2.\nDetails: %3").arg(location, why, detail);
 }
 
 QString openDatabase(const QString& given) {

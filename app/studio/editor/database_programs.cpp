@@ -151,7 +151,7 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
                       ? tr("Not saved: %1 was changed in the database since revision %2 was opened (%3)")
                             .arg(machine)
                             .arg(expectedRevision)
-                            .arg(QString::fromUtf8(e.what()))
+                            .arg(databaseErrorDetail(e))
                       : databaseErrorText(e);
     } catch (const std::exception& e) {
         s.error = databaseErrorText(e);

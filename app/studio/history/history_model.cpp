@@ -74,7 +74,7 @@ void HistoryModel::setFilter(const db::MessageFilter& f) {
             });
             rows_.assign(page.begin(), page.end());
         } catch (const std::exception& e) {
-            error_ = QString::fromUtf8(e.what());
+            error_ = databaseErrorText(e);
         }
     }
     endResetModel();
@@ -124,7 +124,7 @@ void HistoryModel::refresh() {
             ++k;
         }
     } catch (const std::exception& e) {
-        error_ = QString::fromUtf8(e.what());
+        error_ = databaseErrorText(e);
     }
 }
 
@@ -155,7 +155,7 @@ void HistoryModel::fetchMore(const QModelIndex& parent) {
         rows_.insert(rows_.end(), page.begin(), page.end());
         endInsertRows();
     } catch (const std::exception& e) {
-        error_ = QString::fromUtf8(e.what());
+        error_ = databaseErrorText(e);
     }
 }
 

@@ -1,6 +1,7 @@
 #include "rparams/rparams_dock.h"
 
 #include "catalog/rparams.h"
+#include "session/shop_database.h"
 #include "constants/machine_store.h"
 #include "engine/controller.h"
 #include "engine/rparams.h"
@@ -141,7 +142,7 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     try {
         model_->setPresets(store_->current().r);
     } catch (const std::exception& e) {
-        say(tr("The machine's presets are not read from the database: %1").arg(QString::fromUtf8(e.what())), true);
+        say(tr("The machine's presets are not read from the database: %1").arg(databaseErrorText(e)), true);
     }
     retranslate();
 }

@@ -1,6 +1,7 @@
 #include "session/shop_database.h"
 
 #include "db/location.h"
+#include "language.h"
 
 #include <QCoreApplication>
 #include <map>
@@ -158,10 +159,58 @@ bool ShopDatabase::isOpenDatabaseFile(const fs::path& file) {
     return false;
 }
 
+QString databaseErrorKindText(db::ErrorKind kind) {
+    // (the context of File > Database..., whose dialog says them first)
+    switch (kind) {
+    case db::ErrorKind::Invalid:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "this is not a database location (a file path, sqlite:PATH or postgresql://HOST/NAME; "
+                "a password is never written in it: use ~/.pgpass or a service file)");
+    case db::ErrorKind::Io:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "it cannot be reached, read or created");
+    case db::ErrorKind::Foreign:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "it is not a K528 Studio database");
+    case db::ErrorKind::Corrupt:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "it is damaged (nothing in it was changed)");
+    case db::ErrorKind::TooNew:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "it was written by a newer K528 Studio");
+    case db::ErrorKind::Busy:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "another program holds it too long");
+    case db::ErrorKind::Denied:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "the server refused this user");
+    default:
+        return QCoreApplication::translate("k528::studio::DatabaseUi", "an unexpected database error");
+    }
+}
+
+QString databaseErrorDetail(const std::exception& e) {
+    if (currentLanguage() == QLatin1String("en"))
+        return QString::fromUtf8(e.what());
+    // The library's own words where core kept them apart (SQLite speaks
+    // English only; libpq and the C library speak the window's language),
+    // else core's message: quoted, as said.
+    const auto* error = dynamic_cast<const db::Error*>(&e);
+    if (error && error->detail().empty())
+        return {}; // core's own English sentence: its kind says it (databaseErrorKindText)
+    const std::string said = error ? error->detail() : std::string(e.what());
+    return QStringLiteral("«%1»").arg(QString::fromUtf8(said.data(), static_cast<qsizetype>(said.size())).simplified());
+}
+
 QString databaseErrorText(const std::exception& e) {
     const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e);
-    if (!r)
-        return QString::fromUtf8(e.what());
+    if (!r) {
+        const auto* error = dynamic_cast<const db::Error*>(&e);
+        if (!error || currentLanguage() == QLatin1String("en"))
+            return QString::fromUtf8(e.what());
+        // A sentence of the window's language: which database, what is
+        // wrong with it, and what the library said.
+        const QString detail = databaseErrorDetail(e);
+        if (detail.isEmpty())
+            return QCoreApplication::translate("k528::studio::ShopDatabase", "The database %1 failed: %2.")
+                .arg(ShopDatabase::currentText(), databaseErrorKindText(error->kind()));
+        return QCoreApplication::translate("k528::studio::ShopDatabase",
+                                           "The database %1 failed: %2.\nDetails: %3")
+            .arg(ShopDatabase::currentText(), databaseErrorKindText(error->kind()), detail);
+    }
     // By db::ReadOnlyReason and db::ReadOnlyRefusal.
     static const char* const kReasons[] = {
         QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "permission denied"),

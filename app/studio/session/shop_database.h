@@ -122,9 +122,16 @@ private:
     ino_t inode_ = 0;
 };
 
-// The text of a database error for the window: a read-only database in the
-// window's language («База данных доступна только для чтения: …»), anything
-// else as core says it.
+// The text of a database error for the window, in its language: a
+// read-only database («База данных доступна только для чтения: …»); any
+// other in English as core says it, in Russian a sentence naming the
+// database and what is wrong (databaseErrorKindText), with the library's
+// own words quoted (databaseErrorDetail).
 QString databaseErrorText(const std::exception& e);
+// What is wrong with a database, by the kind of its error («она повреждена…»).
+QString databaseErrorKindText(db::ErrorKind kind);
+// An error's details for the window: English, core's message; else the
+// library's own words (db::Error::detail) in «», "" when core said it alone.
+QString databaseErrorDetail(const std::exception& e);
 
 } // namespace k528::studio

@@ -8,6 +8,7 @@
 #include "workspace/pane_dock.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QDockWidget>
 #include <QEvent>
@@ -51,6 +52,17 @@ QString q(const std::string& s) {
 
 QString points(double p) {
     return QString::number(p, 'g', 4);
+}
+
+// The name of an attempt at a program the editor holds without a file: kept
+// in the database in English (as core keeps its data), shown in the
+// window's language — also for the rows a Russian window kept before.
+const char* const kEditorProgram = QT_TRANSLATE_NOOP("k528::studio::TrainingPane", "the editor's program");
+
+QString shownName(const QString& stored) {
+    if (stored == QLatin1String(kEditorProgram) || stored == QStringLiteral("программа из редактора"))
+        return QCoreApplication::translate("k528::studio::TrainingPane", kEditorProgram);
+    return stored;
 }
 
 } // namespace
@@ -382,7 +394,7 @@ void TrainingPane::showGrade() {
     }
     const training::Language l = uiLanguage();
     const training::Grade& g = last_->grade;
-    QString who = last_->student.isEmpty() ? last_->file : last_->student;
+    QString who = shownName(last_->student.isEmpty() ? last_->file : last_->student);
     QString text = tr("%1: %2/100, %3").arg(who).arg(g.score).arg(g.passed ? tr("passed") : tr("not passed"));
     if (g.cycleTimeS > 0)
         text += QStringLiteral("; ") + tr("cycle time %1 s").arg(g.cycleTimeS, 0, 'f', 1);
@@ -415,7 +427,7 @@ void TrainingPane::gradeEditor() {
         tabs_->setCurrentIndex(1);
         return;
     }
-    grade(text, name.isEmpty() ? tr("the editor's program") : name);
+    grade(text, name.isEmpty() ? QString::fromLatin1(kEditorProgram) : name);
 }
 
 void TrainingPane::gradeFile() {
@@ -535,7 +547,11 @@ void TrainingPane::showClass() {
         const int r = attempts_->rowCount();
         attempts_->insertRow(r);
         const QDateTime at = QDateTime::fromString(q(a.at), Qt::ISODate);
-        const QStringList cells{q(a.student), q(a.exercise), QString::number(a.score),
+        // The exercise by its title in the window's language (its id if the course has it no more).
+        const training::Exercise* ex = training::findExercise(a.exercise);
+        const QString exercise =
+            ex ? q(uiLanguage() == training::Language::Ru ? ex->title.ru : ex->title.en) : q(a.exercise);
+        const QStringList cells{shownName(q(a.student)), exercise, QString::number(a.score),
                                 a.passed ? tr("passed") : tr("not passed"),
                                 at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")) : q(a.at)};
         for (int c = 0; c < cells.size(); ++c)
