@@ -100,19 +100,19 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
     train.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F3);
     const double k = k923Share(0.28);
     // The machine's panel keeps its shape (it is as tall as its width
-    // allows): the messages take the rest of its column. The backplot and the
-    // oscilloscope share the right column where there is height for both
-    // (a desk's screen); on a shop PC's they are tabs, each of the whole
-    // column (split, the oscilloscope's charts had no room for their scales).
+    // allows): the messages take the rest of its column. On a shop PC's
+    // screen the oscilloscope is a tab of the right column (split, its charts
+    // had no room for their scales); on a desk's, a tab of the messages.
     const bool roomForBoth = h >= 900;
     train.docks = {
         place("dock.k923", Qt::LeftDockWidgetArea, k),
         beside("dock.machine", "dock.k923", Qt::Horizontal, 0.30),
-        beside("dock.messages", "dock.machine", Qt::Vertical, 0.45),
+        raised(beside("dock.messages", "dock.machine", Qt::Vertical, 0.45)),
         tab("dock.axes", "dock.messages", false),
         raised(place("dock.backplot", Qt::RightDockWidgetArea, std::max(0.3, 1.0 - k - 0.30))),
-        roomForBoth ? beside("dock.scope", "dock.backplot", Qt::Vertical, 0.45)
-                    : tab("dock.scope", "dock.backplot"),
+        // The backplot's column is the training course's too, whose task,
+        // part and grade need its whole height (split, it had a strip of it).
+        roomForBoth ? tab("dock.scope", "dock.messages") : tab("dock.scope", "dock.backplot"),
         // The course's exercise, its drawing and the grade beside the backplot.
         tab("dock.training", "dock.backplot"),
     };
