@@ -31,11 +31,7 @@ AttemptEntry readAttempt(sql::Query& q) {
 }
 
 void requireAttempts(Store& s) {
-    if (s.schemaVersion() < 4)
-        throw Error(ErrorKind::Invalid, s.path().string() +
-                                            ": the database has no training attempts (schema version " +
-                                            std::to_string(s.schemaVersion()) +
-                                            " below 4: open it once with write access to upgrade it)");
+    requireSchema(s, 4, "training attempts");
 }
 
 } // namespace

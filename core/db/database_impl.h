@@ -43,6 +43,17 @@ inline std::string authorOf(Store& s, const std::string& given) {
     return user.empty() ? defaultAuthor() : user;
 }
 
+// Refuses a database whose schema is older than `version`, the one that
+// brought `what` ("training attempts", "message history"): a file only read
+// keeps the schema it has.
+inline void requireSchema(Store& s, int version, std::string_view what) {
+    if (s.schemaVersion() < version)
+        throw Error(ErrorKind::Invalid, s.path().string() + ": the database has no " + std::string(what) +
+                                            " (schema version " + std::to_string(s.schemaVersion()) +
+                                            " below " + std::to_string(version) +
+                                            ": open it once with write access to upgrade it)");
+}
+
 inline std::string hostName() {
     char buf[256] = {};
     if (::gethostname(buf, sizeof buf - 1) != 0 || !buf[0])

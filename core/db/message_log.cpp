@@ -188,9 +188,7 @@ struct MessageLog::Impl {
 };
 
 MessageLog::MessageLog(Database& db) : d_(std::make_unique<Impl>(db)) {
-    if (db.schemaVersion() < 2)
-        throw Error(ErrorKind::Sql, db.path().string() + ": the database has no message history "
-                                                         "(schema version below 2)");
+    requireSchema(d_->store, 2, "message history");
 }
 
 MessageLog::~MessageLog() = default;

@@ -382,4 +382,21 @@ void Entry::backspace() {
         text_.pop_back();
 }
 
+Entry::Answer Entry::answer(Key k, std::string& given) {
+    if (k == Key::Enter) {
+        given = text_;
+        stop();
+        return Answer::Given;
+    }
+    if (k == Key::Par) {
+        stop();
+        return Answer::Withdrawn;
+    }
+    if (k == Key::Del)
+        backspace();
+    else
+        type(k);
+    return Answer::Typing;
+}
+
 } // namespace k528::panel

@@ -105,6 +105,13 @@ public:
     bool assignResult();
     Kind kind() const { return kind_; }
 
+    // A key at a prompt for a number: ВВОД answers it (`given` gets the text
+    // typed, the entry stops), ПАР withdraws it (the entry stops), DEL takes
+    // back the last character, any other key is typed. The screen closes its
+    // prompt unless the answer is still being typed.
+    enum class Answer { Typing, Given, Withdrawn };
+    Answer answer(Key k, std::string& given);
+
 private:
     Kind kind_ = Kind::Digits;
     int max_ = 20;

@@ -6,42 +6,60 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
 
 namespace k528::training {
 
-std::string_view stepName(OperatorStep::Kind k) {
-    switch (k) {
-    case OperatorStep::Kind::Home:
-        return "home";
-    case OperatorStep::Kind::Preset:
-        return "preset";
-    case OperatorStep::Kind::Acknowledge:
-        return "acknowledge";
-    case OperatorStep::Kind::Position:
-        return "position";
-    case OperatorStep::Kind::NewWheel:
-        return "new_wheel";
-    case OperatorStep::Kind::Completed:
-        return "completed";
-    }
+namespace {
+
+// The names of the exercise files' operator steps and end checks: one table
+// each, read both ways (the name of a kind, the kind of a name).
+template <typename Kind> struct Named {
+    Kind kind;
+    std::string_view name;
+};
+
+constexpr Named<OperatorStep::Kind> kStepNames[] = {
+    {OperatorStep::Kind::Home, "home"},
+    {OperatorStep::Kind::Preset, "preset"},
+    {OperatorStep::Kind::Acknowledge, "acknowledge"},
+    {OperatorStep::Kind::Position, "position"},
+    {OperatorStep::Kind::NewWheel, "new_wheel"},
+    {OperatorStep::Kind::Completed, "completed"},
+};
+
+constexpr Named<EndCheck::Kind> kEndCheckNames[] = {
+    {EndCheck::Kind::SpindleStopped, "spindle_stopped"},
+    {EndCheck::Kind::CoolantOff, "coolant_off"},
+    {EndCheck::Kind::GaugeOut, "gauge_out"},
+    {EndCheck::Kind::RDelta, "r_delta"},
+    {EndCheck::Kind::RValue, "r_value"},
+};
+
+template <typename Kind, std::size_t N> std::string_view nameOf(const Named<Kind> (&names)[N], Kind k) {
+    for (const Named<Kind>& n : names)
+        if (n.kind == k)
+            return n.name;
     return "";
 }
 
+template <typename Kind, std::size_t N>
+std::optional<Kind> kindNamed(const Named<Kind> (&names)[N], std::string_view name) {
+    for (const Named<Kind>& n : names)
+        if (n.name == name)
+            return n.kind;
+    return std::nullopt;
+}
+
+} // namespace
+
+std::string_view stepName(OperatorStep::Kind k) {
+    return nameOf(kStepNames, k);
+}
+
 std::string_view endCheckName(EndCheck::Kind k) {
-    switch (k) {
-    case EndCheck::Kind::SpindleStopped:
-        return "spindle_stopped";
-    case EndCheck::Kind::CoolantOff:
-        return "coolant_off";
-    case EndCheck::Kind::GaugeOut:
-        return "gauge_out";
-    case EndCheck::Kind::RDelta:
-        return "r_delta";
-    case EndCheck::Kind::RValue:
-        return "r_value";
-    }
-    return "";
+    return nameOf(kEndCheckNames, k);
 }
 
 namespace {
@@ -255,29 +273,21 @@ OperatorStep step(const Node& n) {
     n.only({"step", "r", "value", "x", "z", "tolerance"});
     const std::string s = n.at("step").str();
     OperatorStep st;
-    if (s == "home") {
-        st.kind = OperatorStep::Kind::Home;
-    } else if (s == "preset") {
-        st.kind = OperatorStep::Kind::Preset;
+    const std::optional<OperatorStep::Kind> kind = kindNamed(kStepNames, s);
+    if (!kind)
+        n.at("step").fail("expected home, preset, acknowledge, position, new_wheel or completed");
+    st.kind = *kind;
+    if (st.kind == OperatorStep::Kind::Preset) {
         st.r = static_cast<int>(n.at("r").integer());
         if (st.r < 0 || st.r > 231)
             n.at("r").fail("a writable R-parameter 0..231");
         st.value = n.at("value").integer();
-    } else if (s == "acknowledge") {
-        st.kind = OperatorStep::Kind::Acknowledge;
-    } else if (s == "position") {
-        st.kind = OperatorStep::Kind::Position;
+    } else if (st.kind == OperatorStep::Kind::Position) {
         st.xMm = n.at("x").num();
         st.zMm = n.at("z").num();
         st.toleranceMm = n.at("tolerance").num();
         if (st.toleranceMm <= 0)
             n.at("tolerance").fail("expected mm > 0");
-    } else if (s == "new_wheel") {
-        st.kind = OperatorStep::Kind::NewWheel;
-    } else if (s == "completed") {
-        st.kind = OperatorStep::Kind::Completed;
-    } else {
-        n.at("step").fail("expected home, preset, acknowledge, position, new_wheel or completed");
     }
     return st;
 }

@@ -8,6 +8,7 @@
 #include <QtTest>
 #include <csignal>
 #include <filesystem>
+#include <functional>
 #include <sqlite3.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -114,6 +115,38 @@ void refusedWithHotJournal(const fs::path& p, db::ErrorKind kind, const std::str
     }
     QVERIFY(!fs::exists(journal));
     QVERIFY(fileBytes(p) != bytes);
+}
+
+// A database file at schema `version` (the first migrations only) with C22 of
+// grinder-205 set to 2133; `more` writes the rest at that version.
+void writeAtVersion(const fs::path& p, int version,
+                    const std::function<void(db::Database&)>& more = {}) {
+    auto o = testOptions();
+    o.migrations = db::schemaMigrations().subspan(0, static_cast<std::size_t>(version));
+    db::Database d = db::Database::open(p, o);
+    QCOMPARE(d.schemaVersion(), version);
+    db::Edit e;
+    e.c[22] = 2133;
+    d.applyEdit("grinder-205", e, by("Петров"));
+    if (more)
+        more(d);
+}
+
+// The file of writeAtVersion opened by this program: upgraded to the latest
+// schema, its machine kept, the upgrade in the audit; `more` checks the rest,
+// then the integrity check finds nothing.
+void checkUpgradedFrom(const fs::path& p, int version,
+                       const std::function<void(db::Database&)>& more = {}) {
+    db::Database d = db::Database::open(p, testOptions());
+    QCOMPARE(d.openReport().fromVersion, version);
+    QCOMPARE(d.openReport().version, db::latestSchemaVersion());
+    QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
+    QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
+    QCOMPARE(d.audit(1).front().detail, "schema version " + std::to_string(version) + " -> " +
+                                            std::to_string(db::latestSchemaVersion()));
+    if (more)
+        more(d);
+    QVERIFY(d.checkIntegrity().empty());
 }
 
 const char* const kV2Sql =
@@ -276,29 +309,14 @@ private slots:
     void messageHistoryFromVersion1() {
         QTemporaryDir dir;
         const fs::path p = tempPath(dir, "v1.db");
-        auto o1 = testOptions();
-        o1.migrations = db::schemaMigrations().subspan(0, 1);
-        {
-            db::Database d = db::Database::open(p, o1);
-            QCOMPARE(d.schemaVersion(), 1);
-            db::Edit e;
-            e.c[22] = 2133;
-            d.applyEdit("grinder-205", e, by("Петров"));
-        }
+        writeAtVersion(p, 1);
         {
             Raw raw(p);
             QCOMPARE(raw.integer("SELECT count(*) FROM sqlite_schema WHERE name = 'message_history'"), 0LL);
         }
-        {
-            db::Database d = db::Database::open(p, testOptions());
-            QCOMPARE(d.openReport().fromVersion, 1);
-            QCOMPARE(d.openReport().version, db::latestSchemaVersion());
-            QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
-            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
-            QCOMPARE(d.audit(1).front().detail,
-                     "schema version 1 -> " + std::to_string(db::latestSchemaVersion()));
-            QVERIFY(d.checkIntegrity().empty());
-        }
+        checkUpgradedFrom(p, 1);
+        if (QTest::currentTestFailed())
+            return;
         Raw raw(p);
         QCOMPARE(raw.integer("PRAGMA user_version"), static_cast<long long>(db::latestSchemaVersion()));
         QVERIFY(raw.exec("INSERT INTO message_runs (machine, started_at, started_ms, author) "
@@ -355,25 +373,12 @@ private slots:
     void releasesAndTransfersFromVersion2() {
         QTemporaryDir dir;
         const fs::path p = tempPath(dir, "v2.db");
-        auto o2 = testOptions();
-        o2.migrations = db::schemaMigrations().subspan(0, 2);
-        {
-            db::Database d = db::Database::open(p, o2);
-            QCOMPARE(d.schemaVersion(), 2);
-            db::Edit e;
-            e.c[22] = 2133;
-            d.applyEdit("grinder-205", e, by("Петров"));
-        }
-        {
-            db::Database d = db::Database::open(p, testOptions());
-            QCOMPARE(d.openReport().fromVersion, 2);
-            QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
-            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
-            QCOMPARE(d.audit(1).front().detail,
-                     "schema version 2 -> " + std::to_string(db::latestSchemaVersion()));
+        writeAtVersion(p, 2);
+        checkUpgradedFrom(p, 2, [](db::Database& d) {
             QCOMPARE(d.releaseProgram("grinder-205", 11, "", by("Петров")).revision, 1);
-            QVERIFY(d.checkIntegrity().empty());
-        }
+        });
+        if (QTest::currentTestFailed())
+            return;
         Raw raw(p);
         raw.exec("PRAGMA foreign_keys = ON");
         QVERIFY(!raw.exec("INSERT INTO transfers (at, db_user, host, machine, revision, controller, "
@@ -389,25 +394,13 @@ private slots:
     void trainingAttemptsFromVersion3() {
         QTemporaryDir dir;
         const fs::path p = tempPath(dir, "v3.db");
-        auto o3 = testOptions();
-        o3.migrations = db::schemaMigrations().subspan(0, 3);
-        {
-            db::Database d = db::Database::open(p, o3);
-            QCOMPARE(d.schemaVersion(), 3);
-            db::Edit e;
-            e.c[22] = 2133;
-            d.applyEdit("grinder-205", e, by("Петров"));
+        writeAtVersion(p, 3, [](db::Database& d) {
             d.releaseProgram("grinder-205", 11, "", by("Петров"));
             // A version-3 database has no attempts: said, not an SQL error.
             QVERIFY_THROWS_EXCEPTION(db::Error, d.attempts());
-        }
-        {
-            db::Database d = db::Database::open(p, testOptions());
-            QCOMPARE(d.openReport().fromVersion, 3);
-            QCOMPARE(d.schemaVersion(), 4);
-            QCOMPARE(d.loadMachine("grinder-205").cValue(22), std::int64_t(2133));
+        });
+        checkUpgradedFrom(p, 3, [](db::Database& d) {
             QCOMPARE(d.releaseHistory("grinder-205", 11).size(), std::size_t(1));
-            QCOMPARE(d.audit(1).front().detail, std::string("schema version 3 -> 4"));
             QVERIFY(d.attempts().empty());
             db::AttemptEntry a;
             a.student = "Иванов";
@@ -421,8 +414,9 @@ private slots:
             QCOMPARE(stored.sha256.size(), std::size_t(64));
             QCOMPARE(d.attempts().size(), std::size_t(1));
             QCOMPARE(d.attempts().front(), stored);
-            QVERIFY(d.checkIntegrity().empty());
-        }
+        });
+        if (QTest::currentTestFailed())
+            return;
         Raw raw(p);
         QVERIFY(!raw.exec("INSERT INTO training_attempts (at, recorded_by, host, student, exercise, file, "
                           "program, sha256, score, passed, status, cycle_time_ms, grade) VALUES ('x', 'u', "

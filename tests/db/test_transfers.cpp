@@ -10,6 +10,7 @@
 #include "db/database.h"
 #include "db/sha256.h"
 #include "db_test_util.h"
+#include "pty_line.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -27,15 +28,12 @@ using namespace k528::testing;
 class TestTransfers : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QProcess socat_, serve_;
-    QString a_, b_, db_;
+    ptytest::PtyPair line_;
+    ptytest::Serve serve_;
+    QString db_;
 
-    void removeLocks() {
-        for (const QString& p : {a_, b_})
-            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
-    }
     CliResult link(QStringList args) {
-        args = QStringList{"link", "--port", b_} + args;
+        args = QStringList{"link", "--port", line_.b()} + args;
         return runK528(args);
     }
     CliResult db(QStringList args) {
@@ -50,28 +48,14 @@ class TestTransfers : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        a_ = dir_.filePath("ta" + tag);
-        b_ = dir_.filePath("tb" + tag);
-        socat_.start("socat", {"pty,raw,echo=0,link=" + a_, "pty,raw,echo=0,link=" + b_});
-        QVERIFY(socat_.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a_) && QFile::exists(b_), 5000);
-        serve_.start(QStringLiteral(K528_CLI), {"serve", "--port", a_, "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
-        QVERIFY(serve_.waitForStarted());
-        QByteArray said;
-        QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
-                                     serve_.state() != QProcess::Running,
-                                 10000);
-        QCOMPARE(serve_.state(), QProcess::Running);
+        QVERIFY(line_.start(dir_.path(), "t"));
+        QVERIFY2(serve_.start(line_.a(), {"--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"}), serve_.said().constData());
         db_ = QString::fromStdString(testLocation(dir_, "shop.db").text());
         QCOMPARE(db({"init"}).exitCode, 0);
     }
     void cleanupTestCase() {
-        serve_.terminate();
-        serve_.waitForFinished(5000);
-        socat_.terminate();
-        socat_.waitForFinished(3000);
-        removeLocks();
+        serve_.stop();
+        line_.stop();
     }
 
     // Drafts are not pushed: named, nothing sent, nothing on record.
@@ -111,7 +95,7 @@ private slots:
         QCOMPARE(e["result"].toString(), QString("ok"));
         QCOMPARE(e["machine"].toString(), QString("training-lathe"));
         QCOMPARE(e["revision"].toInt(), 1);
-        QVERIFY2(e["controller"].toString().startsWith("serial:" + b_ + "?baud=115200&address=1"),
+        QVERIFY2(e["controller"].toString().startsWith("serial:" + line_.b() + "?baud=115200&address=1"),
                  qPrintable(e["controller"].toString()));
         QVERIFY(!e["user"].toString().isEmpty());
         QVERIFY(!e["host"].toString().isEmpty());
@@ -187,8 +171,7 @@ private slots:
 
     // A line that does not answer: the failed push is on record too.
     void failedPushIsOnRecord() {
-        serve_.terminate();
-        serve_.waitForFinished(5000);
+        serve_.stop();
         const CliResult r = link({"--timeout-ms", "50", "push", "--machine", "training-lathe", "--db", db_});
         QCOMPARE(r.exitCode, 2);
         const QJsonObject e = log()[0].toObject();

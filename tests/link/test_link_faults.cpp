@@ -14,6 +14,7 @@
 #include <csignal>
 
 #include "cli_runner.h"
+#include "pty_line.h"
 
 namespace {
 
@@ -61,12 +62,14 @@ QString lastLines(const QString& path, int n) {
 class TestLinkFaults : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QProcess socat1_, socat2_, serve_, proxy_;
+    ptytest::PtyPair clientLine_, serverLine_; // the client and the proxy, the proxy and the server
+    ptytest::Serve serve_;
+    QProcess proxy_;
     QString c_, p1_, p2_, s_; // client end, proxy ends, server end
 
     void removeLocks() {
-        for (const QString& p : {c_, p1_, p2_, s_})
-            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
+        clientLine_.removeLocks();
+        serverLine_.removeLocks();
     }
     void startProxy(const QString& drop, const QString& corrupt, const QString& hold, const QString& holdMs,
                     const QString& seed) {
@@ -106,33 +109,18 @@ class TestLinkFaults : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        c_ = dir_.filePath("fc" + tag);
-        p1_ = dir_.filePath("fp1" + tag);
-        p2_ = dir_.filePath("fp2" + tag);
-        s_ = dir_.filePath("fs" + tag);
-        socat1_.start("socat", {"pty,raw,echo=0,link=" + c_, "pty,raw,echo=0,link=" + p1_});
-        socat2_.start("socat", {"pty,raw,echo=0,link=" + p2_, "pty,raw,echo=0,link=" + s_});
-        QVERIFY(socat1_.waitForStarted() && socat2_.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(c_) && QFile::exists(p1_) && QFile::exists(p2_) && QFile::exists(s_),
-                                 5000);
-        serve_.start(kCli, {"serve", "--port", s_, "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
-        QVERIFY(serve_.waitForStarted());
-        QByteArray said;
-        QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
-                                     serve_.state() != QProcess::Running,
-                                 10000);
-        QVERIFY2(serve_.state() == QProcess::Running, said.constData());
+        QVERIFY(clientLine_.start(dir_.path(), "fc") && serverLine_.start(dir_.path(), "fs"));
+        c_ = clientLine_.a();
+        p1_ = clientLine_.b();
+        p2_ = serverLine_.a();
+        s_ = serverLine_.b();
+        QVERIFY2(serve_.start(s_, {"--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"}), serve_.said().constData());
     }
     void cleanupTestCase() {
         stopProxy();
-        serve_.terminate();
-        serve_.waitForFinished(5000);
-        for (QProcess* p : {&socat1_, &socat2_}) {
-            p->terminate();
-            p->waitForFinished(3000);
-        }
-        removeLocks();
+        serve_.stop();
+        clientLine_.stop();
+        serverLine_.stop();
     }
 
     void pushThroughAFaultyLine() {

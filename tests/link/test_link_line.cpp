@@ -4,6 +4,7 @@
 // refusing foreign plugins.
 #include "cli_runner.h"
 #include "link_plugins.h"
+#include "pty_line.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -28,32 +29,19 @@ Run run(const QString& program, const QStringList& args, int timeoutMs = 30000) 
 class TestLinkLine : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QProcess socat_, serve_;
-    QString a_, b_;
+    ptytest::PtyPair line_;
+    ptytest::Serve serve_;
 
-    void removeLocks() {
-        for (const QString& p : {a_, b_})
-            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
-    }
     void startServe(const QString& keys, const QStringList& more = {}) {
         stopServe();
-        serve_.start(kCli, QStringList{"serve", "--port", a_, "--keys", keys} + more);
-        QVERIFY(serve_.waitForStarted());
-        QByteArray said;
-        QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
-                                     serve_.state() != QProcess::Running,
-                                 10000);
-        QCOMPARE(serve_.state(), QProcess::Running);
+        QVERIFY2(serve_.start(line_.a(), QStringList{"--keys", keys} + more), serve_.said().constData());
     }
     void stopServe() {
-        if (serve_.state() == QProcess::Running) {
-            serve_.terminate();
-            serve_.waitForFinished(5000);
-        }
-        removeLocks();
+        serve_.stop();
+        line_.removeLocks();
     }
     Run link(QStringList args) {
-        args.prepend(b_);
+        args.prepend(line_.b());
         args.prepend("--port");
         args.prepend("link");
         return run(kCli, args);
@@ -76,38 +64,31 @@ class TestLinkLine : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        a_ = dir_.filePath("k528a" + tag);
-        b_ = dir_.filePath("k528b" + tag);
-        socat_.start("socat", {"pty,raw,echo=0,link=" + a_, "pty,raw,echo=0,link=" + b_});
-        QVERIFY(socat_.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a_) && QFile::exists(b_), 5000);
+        QVERIFY(line_.start(dir_.path(), "k528"));
     }
     void cleanupTestCase() {
         stopServe();
-        socat_.terminate();
-        socat_.waitForFinished(3000);
-        removeLocks();
+        line_.stop();
     }
 
     void mbpollReadsAndWrites() {
         startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
         // C40 F ОБЫЧНАЯ X of training-lathe at Z4124/Z4125 (32-bit, low word first).
-        Run r = mbpoll({"-r", "4124", "-c", "1", "-t", "4:int", b_});
+        Run r = mbpoll({"-r", "4124", "-c", "1", "-t", "4:int", line_.b()});
         QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
         QVERIFY2(r.out.contains("[4124]: \t150000"), qPrintable(r.out));
         // Live state: mode 7.
-        r = mbpoll({"-r", "6000", "-c", "1", "-t", "4", b_});
+        r = mbpoll({"-r", "6000", "-c", "1", "-t", "4", line_.b()});
         QVERIFY2(r.out.contains("[6000]: \t7"), qPrintable(r.out));
         // Write R5 = 1234 (5010) and read it back with k528 link pull.
-        r = mbpoll({"-r", "5010", "-t", "4", b_, "1234"});
+        r = mbpoll({"-r", "5010", "-t", "4", line_.b(), "1234"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
-        r = mbpoll({"-r", "5010", "-c", "1", "-t", "4", b_});
+        r = mbpoll({"-r", "5010", "-c", "1", "-t", "4", line_.b()});
         QVERIFY2(r.out.contains("[5010]: \t1234"), qPrintable(r.out));
         // 02 outside the writable map, 03 a value outside its range.
-        r = mbpoll({"-r", "5316", "-t", "4", b_, "7"}); // R158, the positioner's own
+        r = mbpoll({"-r", "5316", "-t", "4", line_.b(), "7"}); // R158, the positioner's own
         QVERIFY2(r.err.contains("Illegal data address") || r.out.contains("Illegal data address"), qPrintable(r.out + r.err));
-        r = mbpoll({"-r", "4101", "-t", "4", b_, "9"});
+        r = mbpoll({"-r", "4101", "-t", "4", line_.b(), "9"});
         QVERIFY2(r.err.contains("Illegal data value") || r.out.contains("Illegal data value"), qPrintable(r.out + r.err));
     }
 
@@ -164,13 +145,13 @@ private slots:
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("РАБОТА С ПЭВМ"), qPrintable(r.err));
         // Exception 06 on the line: a register write outside F7.
-        r = mbpoll({"-r", "5010", "-t", "4", b_, "5"});
+        r = mbpoll({"-r", "5010", "-t", "4", line_.b(), "5"});
         QVERIFY2((r.out + r.err).contains("busy"), qPrintable(r.out + r.err));
     }
 
     void noAnswerIsExit2() {
         stopServe();
-        Run r = run(kCli, {"link", "--port", b_, "--timeout-ms", "50", "ping"});
+        Run r = run(kCli, {"link", "--port", line_.b(), "--timeout-ms", "50", "ping"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("does not answer"), qPrintable(r.err));
     }
@@ -198,7 +179,7 @@ private slots:
         int killedMidway = 0;
         for (int delayMs : {20, 40, 80, 120, 160}) {
             QProcess push;
-            push.start(kCli, {"link", "--port", b_, "push", bigFile});
+            push.start(kCli, {"link", "--port", line_.b(), "push", bigFile});
             QVERIFY(push.waitForStarted());
             QTest::qWait(delayMs);
             if (push.state() == QProcess::Running) {
@@ -206,7 +187,7 @@ private slots:
                 ++killedMidway;
             }
             push.waitForFinished(5000);
-            removeLocks();
+            line_.removeLocks();
             const QString now = dir_.filePath("now.k528m");
             Run r = link({"pull", "--out", now});
             QVERIFY2(r.exitCode == 0, qPrintable(r.err));
@@ -231,7 +212,7 @@ private slots:
     void pullFromAForeignController() {
         stopServe();
         QProcess py;
-        py.start("/usr/bin/python3", {QStringLiteral(K528_SOURCE_DIR "/tests/link/foreign_controller.py"), a_});
+        py.start("/usr/bin/python3", {QStringLiteral(K528_SOURCE_DIR "/tests/link/foreign_controller.py"), line_.a()});
         QVERIFY(py.waitForStarted());
         const QString file = dir_.filePath("foreign.k528m");
         Run r;
@@ -243,7 +224,7 @@ private slots:
         }
         py.kill();
         py.waitForFinished(3000);
-        removeLocks();
+        line_.removeLocks();
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QFile f(file);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -273,7 +254,7 @@ private slots:
         for (const QStringList& c : commands) {
             QProcess p;
             p.setStandardOutputFile("/dev/full");
-            p.start(kCli, QStringList{"link", "--port", b_} + c);
+            p.start(kCli, QStringList{"link", "--port", line_.b()} + c);
             QVERIFY(p.waitForFinished(60000));
             const QString err = QString::fromUtf8(p.readAllStandardError());
             QVERIFY2(p.exitCode() == 2, qPrintable(c.join(' ') + ": " + err));
@@ -371,12 +352,12 @@ private slots:
             QVERIFY2(r.err.contains("in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»"), qPrintable(r.err));
         }
         // A foreign master writing the setup R outside the PC's screen: 06; on it, R231 yes, R232 no.
-        Run m = mbpoll({"-r", "5462", "-t", "4", b_, "5"});
+        Run m = mbpoll({"-r", "5462", "-t", "4", line_.b(), "5"});
         QVERIFY2((m.out + m.err).contains("busy"), qPrintable(m.out + m.err));
         startServe("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
-        m = mbpoll({"-r", "5462", "-t", "4", b_, "5"});
+        m = mbpoll({"-r", "5462", "-t", "4", line_.b(), "5"});
         QVERIFY2(m.exitCode == 0, qPrintable(m.out + m.err));
-        m = mbpoll({"-r", "5464", "-t", "4", b_, "5"});
+        m = mbpoll({"-r", "5464", "-t", "4", line_.b(), "5"});
         QVERIFY2((m.out + m.err).contains("Illegal data address"), qPrintable(m.out + m.err));
     }
 

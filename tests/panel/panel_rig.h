@@ -3,18 +3,13 @@
 // `--keys` ("F2 MODE 1 2 ENTER WAIT:2"), the four lines read back.
 #pragma once
 
-#include "engine/controller.h"
-#include "engine/ideal_machine.h"
-#include "engine/load_programs.h"
-#include "engine/run.h"
+#include "engine/engine_rig.h" // tests/engine: the controller on the ideal machine
 #include "panel/lcd_font.h"
 #include "panel/panel.h"
 #include "panel/screens/cparams.h"
 #include "panel/screens/password.h"
 #include "panel/screens/presets.h"
 #include "panel/screens/program_editor.h"
-#include "profile/builtin.h"
-#include "program/parser.h"
 #include "util/utf8.h"
 
 #include <QtTest>
@@ -34,25 +29,13 @@ using panel::KeyPress;
 inline constexpr AxisId X = AxisId::X;
 inline constexpr AxisId Z = AxisId::Z;
 
-struct Rig {
-    profile::MachineProfile prof;
-    std::unique_ptr<engine::Controller> ctl;
-    std::unique_ptr<engine::IdealMachine> m;
+// The engine tests' rig with the K923 model over its controller.
+struct Rig : rig::Rig {
     std::unique_ptr<panel::Panel> p;
 
     explicit Rig(const std::function<void(profile::MachineProfile&)>& tweak = {},
-                 std::string_view name = "training-lathe") {
-        prof = profile::builtin(name);
-        if (tweak)
-            tweak(prof);
-        ctl = std::make_unique<engine::Controller>(prof);
-        m = std::make_unique<engine::IdealMachine>(*ctl);
-        ctl->powerOn();
-        m->advance(10);
-        p = std::make_unique<panel::Panel>(*ctl);
-    }
-
-    engine::Controller& c() { return *ctl; }
+                 std::string_view name = "training-lathe")
+        : rig::Rig(name, tweak), p(std::make_unique<panel::Panel>(*ctl)) {}
 
     // Presses the keys of a --keys string; WAIT:S lets S seconds pass.
     void keys(std::string_view text) {
@@ -89,13 +72,6 @@ struct Rig {
     }
     QString line(int row) { return lines().at(row); }
 
-    // Loads programs from text into the store.
-    void load(const std::string& text) {
-        const program::ParseResult r = program::parse(text);
-        QVERIFY(!r.hasErrors());
-        QVERIFY(engine::loadPrograms(*ctl, r.store).ok());
-    }
-
     // Homes the present axes with the machine's direction buttons, X first,
     // as `k528 run` does (engine::homeAxes); then a second for the displays.
     bool home() {
@@ -120,9 +96,6 @@ inline QStringList expect(std::initializer_list<const char*> l) {
 }
 
 // A profile whose axes run programs without homing (АВТ.БЕЗ ПБТ = 1).
-inline void noHoming(profile::MachineProfile& p) {
-    p.setC(8, 1);
-    p.setC(60, 1);
-}
+using rig::noHoming;
 
 } // namespace prig

@@ -12,6 +12,8 @@
 #include "main_window.h"
 #include "monitor/program_monitor.h"
 #include "profile/text_format.h"
+#include "pty_line.h"
+#include "test_util.h"
 #include "session/machine_source.h"
 
 #include <QApplication>
@@ -38,29 +40,14 @@
 
 using namespace k528;
 using namespace k528::studio;
+using testutil::finished;
 
 class TestController : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QProcess socat_, serve_;
-    QString a_, b_;
+    ptytest::PtyPair line_;
+    ptytest::Serve serve_;
 
-    void removeLocks() {
-        for (const QString& p : {a_, b_})
-            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
-    }
-    static bool finished(QSignalSpy& spy, int ms) {
-        if (spy.isEmpty())
-            spy.wait(ms);
-        return !spy.isEmpty();
-    }
-    QString write(const QString& name, const QString& text) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        if (f.open(QIODevice::WriteOnly))
-            f.write(text.toUtf8());
-        return path;
-    }
     static QString bigProgram(int number, int frames) {
         QString t = QStringLiteral("[program %1]\n%L%1 (long)\n").arg(number);
         for (int i = 1; i <= frames; ++i)
@@ -76,28 +63,14 @@ private slots:
         QVERIFY(dir_.isValid());
         qputenv("K528_DB", dir_.filePath("shop.db").toUtf8());
         qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_RTU_PLUGIN)).absolutePath().toUtf8());
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        a_ = dir_.filePath("ctla" + tag);
-        b_ = dir_.filePath("ctlb" + tag);
-        socat_.start("socat", {"pty,raw,echo=0,link=" + a_, "pty,raw,echo=0,link=" + b_});
-        QVERIFY(socat_.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a_) && QFile::exists(b_), 5000);
+        QVERIFY(line_.start(dir_.path(), "ctl"));
         // training-lathe in F7 «РАБОТА С ПЭВМ» (the keys of link.line).
-        serve_.start(QStringLiteral(K528_CLI), {"serve", "--port", a_, "--profile", "training-lathe", "--keys",
-                                                "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
-        QVERIFY(serve_.waitForStarted());
-        QByteArray said;
-        QTRY_VERIFY_WITH_TIMEOUT((said += serve_.readAllStandardError()).contains("k528 serve:") ||
-                                     serve_.state() != QProcess::Running,
-                                 10000);
-        QVERIFY2(serve_.state() == QProcess::Running, said.constData());
+        QVERIFY2(serve_.start(line_.a(), {"--profile", "training-lathe", "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"}),
+                 serve_.said().constData());
     }
     void cleanupTestCase() {
-        serve_.terminate();
-        serve_.waitForFinished(5000);
-        socat_.terminate();
-        socat_.waitForFinished(3000);
-        removeLocks();
+        serve_.stop();
+        line_.stop();
     }
 
     // Controller > Connect asks for the line (no connection to the first port
@@ -136,7 +109,7 @@ private slots:
             w->show();
             QVERIFY(QTest::qWaitForWindowExposed(w.get()));
             auto* dock = w->findChild<ControllerDock*>("dock.controller");
-            dock->portBox()->setEditText(b_);
+            dock->portBox()->setEditText(line_.b());
             QSignalSpy connected(dock, &ControllerDock::connectedChanged);
             dock->connectLine();
             QVERIFY(finished(connected, 10000));
@@ -163,7 +136,7 @@ private slots:
 
         // Connect: the plugin was found, the port typed (a pty is not listed).
         QVERIFY2(dock->findChild<QComboBox*>("controller.plugin")->count() >= 1, qPrintable(dock->lineLabel()->text()));
-        dock->portBox()->setEditText(b_);
+        dock->portBox()->setEditText(line_.b());
         QSignalSpy connected(dock, &ControllerDock::connectedChanged);
         dock->connectLine();
         QVERIFY(finished(connected, 10000));
@@ -217,7 +190,7 @@ private slots:
         const QString fileText = QString::fromStdString(profile::writeMachineText(file));
         QString with42 = fileText;
         with42.insert(with42.indexOf("[program "), bigProgram(42, 12));
-        const QString path = write("push.k528m", with42);
+        const QString path = testutil::writeFile(dir_, "push.k528m", with42);
         QSignalSpy preview(dock, &ControllerDock::previewShown);
         dock->pushFile(path);
         QVERIFY(finished(preview, 30000));
@@ -234,7 +207,7 @@ private slots:
         QString big = fileText;
         big.insert(big.indexOf("[program "), bigProgram(60, 900));
         preview.clear();
-        dock->pushFile(write("big.k528m", big));
+        dock->pushFile(testutil::writeFile(dir_, "big.k528m", big));
         QVERIFY(finished(preview, 30000));
         QVERIFY(dock->preview());
         dock->preview()->accept();

@@ -25,6 +25,7 @@
 #include "language.h"
 #include "main_window.h"
 #include "profile/builtin.h"
+#include "pty_line.h"
 #include "session/shop_database.h"
 #include "session/simulation_session.h"
 
@@ -271,29 +272,14 @@ private slots:
             revision = d.machine("lathe-push")->revision;
         });
         qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_RTU_PLUGIN)).absolutePath().toUtf8());
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        const QString a = dir_.filePath("dbla" + tag), b = dir_.filePath("dblb" + tag);
-        QProcess socat, serve;
-        socat.start("socat", {"pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b});
-        QVERIFY(socat.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a) && QFile::exists(b), 5000);
-        const auto stop = qScopeGuard([&] {
-            serve.terminate();
-            serve.waitForFinished(5000);
-            socat.terminate();
-            socat.waitForFinished(3000);
-            for (const QString& p : {a, b})
-                QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
-        });
+        // Stopped (the ports' lock files removed) on every way out.
+        ptytest::PtyPair pty;
+        ptytest::Serve serve;
+        QVERIFY(pty.start(dir_.path(), "dbl"));
+        const QString b = pty.b();
         // training-lathe in F7 «РАБОТА С ПЭВМ».
-        serve.start(QStringLiteral(K528_CLI), {"serve", "--port", a, "--profile", "training-lathe", "--keys",
-                                               "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
-        QVERIFY(serve.waitForStarted());
-        QByteArray said;
-        QTRY_VERIFY_WITH_TIMEOUT((said += serve.readAllStandardError()).contains("k528 serve:") ||
-                                     serve.state() != QProcess::Running,
-                                 10000);
-        QVERIFY2(serve.state() == QProcess::Running, said.constData());
+        QVERIFY2(serve.start(pty.a(), {"--profile", "training-lathe", "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"}),
+                 serve.said().constData());
 
         QString error;
         linkplugin::LinkPlugin* plugin = linkplugin::find(QStringLiteral("modbus-rtu"), error);
@@ -370,8 +356,8 @@ private slots:
         QVERIFY(pull.value("items").toArray().size() >= 3); // C, R, the messages, the programs
 
         // The controller goes away: the push fails, and its failure is on record.
-        serve.terminate();
-        QVERIFY(serve.waitForFinished(5000));
+        serve.stop();
+        QVERIFY(!serve.running());
         pushed.clear();
         link.push(p, QStringLiteral("lathe-push"));
         QVERIFY(pushed.wait(120000));

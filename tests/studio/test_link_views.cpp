@@ -31,6 +31,8 @@
 #include "language.h"
 #include "main_window.h"
 #include "monitor/program_monitor.h"
+#include "pty_line.h"
+#include "test_util.h"
 #include "rparams/rparams_dock.h"
 #include "rparams/rparams_model.h"
 #include "scope/scope_view.h"
@@ -61,6 +63,7 @@
 
 using namespace k528;
 using namespace k528::studio;
+using testutil::finished;
 
 namespace {
 
@@ -71,56 +74,21 @@ bool en() { return currentLanguage() == QLatin1String("en"); }
 class TestLinkViews : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QProcess socat_, serve_;
-    QString a_, b_, lang_;
+    ptytest::PtyPair line_;
+    ptytest::Serve serve_;
+    QString lang_;
     QString alarmFile_, runFile_;
 
-    void removeLocks() {
-        for (const QString& p : {a_, b_})
-            QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
-    }
-    static bool finished(QSignalSpy& spy, int ms) {
-        if (spy.isEmpty())
-            spy.wait(ms);
-        return !spy.isEmpty();
-    }
-    QString write(const QString& name, const QString& text) {
-        const QString path = dir_.filePath(name);
-        QFile f(path);
-        if (f.open(QIODevice::WriteOnly))
-            f.write(text.toUtf8());
-        return path;
-    }
-    static QString readAll(const QString& path) {
-        QFile f(path);
-        return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
-    }
     bool k528(const QStringList& args) {
         QProcess p;
         p.start(QStringLiteral(K528_CLI), args);
         return p.waitForFinished(30000) && p.exitCode() == 0;
     }
     bool startServe(const QString& file, const QString& keys) {
-        stopServe();
-        serve_.start(QStringLiteral(K528_CLI), {"serve", "--port", a_, "--profile", file, "--keys", keys});
-        if (!serve_.waitForStarted())
-            return false;
-        QByteArray said;
-        QElapsedTimer t;
-        t.start();
-        while (t.elapsed() < 15000 && serve_.state() == QProcess::Running &&
-               !(said += serve_.readAllStandardError()).contains("k528 serve:"))
-            QTest::qWait(50);
-        if (serve_.state() != QProcess::Running)
-            qWarning("serve: %s", said.constData());
-        return serve_.state() == QProcess::Running;
-    }
-    void stopServe() {
-        if (serve_.state() != QProcess::NotRunning) {
-            serve_.terminate();
-            serve_.waitForFinished(5000);
-        }
-        QFile::remove("/run/lock/LCK.." + QFileInfo(a_).fileName());
+        if (serve_.start(line_.a(), {"--profile", file, "--keys", keys}, 15000))
+            return true;
+        qWarning("serve: %s", serve_.said().constData());
+        return false;
     }
     // The whole window in `workspace` with `dock` raised, at the screen's size.
     void shot(MainWindow& w, QDockWidget* dock, const QString& name, const QString& workspace = "technologist") {
@@ -157,25 +125,18 @@ private slots:
         const QString lathe = dir_.filePath("lathe.k528m");
         QVERIFY(k528({"db", "init", "--db", db}));
         QVERIFY(k528({"db", "export", "training-lathe", "--db", db, "--out", lathe}));
-        const QString text = readAll(lathe);
+        const QString text = testutil::readFile(lathe);
         QString alarm = text;
         alarm.replace("\nname=training-lathe\n", "\nname=overrun-lathe\n");
-        alarmFile_ = write("overrun.k528m", alarm + "x.limit_plus_mm=80\nx.start_mm=85\n");
+        alarmFile_ = testutil::writeFile(dir_, "overrun.k528m", alarm + "x.limit_plus_mm=80\nx.start_mm=85\n");
         QString run = text;
         run.replace("\nC008=0", "\nC008=1").replace("\nC060=0", "\nC060=1");
-        runFile_ = write("run.k528m", run);
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        a_ = dir_.filePath("lva" + tag);
-        b_ = dir_.filePath("lvb" + tag);
-        socat_.start("socat", {"pty,raw,echo=0,link=" + a_, "pty,raw,echo=0,link=" + b_});
-        QVERIFY(socat_.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(a_) && QFile::exists(b_), 5000);
+        runFile_ = testutil::writeFile(dir_, "run.k528m", run);
+        QVERIFY(line_.start(dir_.path(), "lv"));
     }
     void cleanupTestCase() {
-        stopServe();
-        socat_.terminate();
-        socat_.waitForFinished(3000);
-        removeLocks();
+        serve_.stop();
+        line_.stop();
     }
 
     void everyViewOnTheLinkedController() {
@@ -186,7 +147,7 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         auto* dock = w.findChild<ControllerDock*>("dock.controller");
         QVERIFY(dock);
-        dock->portBox()->setEditText(b_);
+        dock->portBox()->setEditText(line_.b());
         QSignalSpy connected(dock, &ControllerDock::connectedChanged);
         dock->connectLine();
         QVERIFY(finished(connected, 15000));
@@ -295,7 +256,7 @@ private slots:
 
         // File > Load programs and Keep in the database: the controller's memory.
         QSignalSpy loaded(&w, &MainWindow::programsLoaded);
-        w.loadProgramsFrom(write("p43.k528", "%L43\nN1 G1 Z-5 FZ100\nN2 M30\n"));
+        w.loadProgramsFrom(testutil::writeFile(dir_, "p43.k528", "%L43\nN1 G1 Z-5 FZ100\nN2 M30\n"));
         QVERIFY(finished(loaded, 30000));
         QVERIFY2(loaded.first().first().toBool(), qPrintable(loaded.first().last().toString()));
         QTRY_VERIFY_WITH_TIMEOUT(std::ranges::count(link->state().programNumbers, 43) == 1, 5000);
@@ -318,7 +279,7 @@ private slots:
 
         // The line lost: every view says since when and keeps its last values.
         const std::int64_t c17 = link->cValues()[17];
-        stopServe();
+        serve_.stop();
         QTRY_VERIFY_WITH_TIMEOUT(link->stale(), 10000);
         QTRY_COMPARE_WITH_TIMEOUT(noticeOf(constants)->level(), ViewNotice::Level::Stale, 3000);
         QCOMPARE(noticeOf(rparams)->level(), ViewNotice::Level::Stale);
@@ -378,7 +339,7 @@ private slots:
         QVERIFY(machine->content()->isEnabled());
         QVERIFY(qobject_cast<HistoryView*>(history->currentWidget())->acknowledgeButton()->isEnabled());
         QCOMPARE(history->count(), 1); // the real controller's page went with it (its run is kept)
-        stopServe();
+        serve_.stop();
     }
 };
 

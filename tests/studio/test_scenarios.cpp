@@ -25,6 +25,7 @@
 #include "machine/pendant_controls.h"
 #include "machine/status_views.h"
 #include "main_window.h"
+#include "pty_line.h"
 #include "session/machine_source.h"
 #include "session/simulation_session.h"
 #include "workspace/workspaces.h"
@@ -398,30 +399,13 @@ private slots:
             f.write(text.toUtf8());
         }
         qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_RTU_PLUGIN)).absolutePath().toUtf8());
-        const QString tag = QString::number(QCoreApplication::applicationPid());
-        const QString a = dir_.filePath("opa" + tag), b = dir_.filePath("opb" + tag);
-        QProcess socat, serve;
-        const auto cleanup = [&] {
-            serve.terminate();
-            serve.waitForFinished(5000);
-            socat.terminate();
-            socat.waitForFinished(3000);
-            for (const QString& p : {a, b})
-                QFile::remove("/run/lock/LCK.." + QFileInfo(p).fileName());
-        };
-        socat.start("socat", {"pty,raw,echo=0,link=" + a, "pty,raw,echo=0,link=" + b});
-        QVERIFY(socat.waitForStarted());
-        UNTIL(QFile::exists(a) && QFile::exists(b), 10000);
-        serve.start(QStringLiteral(K528_CLI), {"serve", "--port", a, "--profile", file, "--db", db,
-                                               "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"});
-        QVERIFY(serve.waitForStarted());
-        QByteArray said;
-        UNTIL((said += serve.readAllStandardError()).contains("k528 serve:") ||
-                                     serve.state() != QProcess::Running,
-                                 20000);
-        if (serve.state() != QProcess::Running)
-            cleanup();
-        QVERIFY2(serve.state() == QProcess::Running, said.constData());
+        // Stopped (the ports' lock files removed) on every way out.
+        ptytest::PtyPair line;
+        ptytest::Serve serve;
+        QVERIFY(line.start(dir_.path(), "op", 10000));
+        QVERIFY2(serve.start(line.a(), {"--profile", file, "--db", db, "--keys", "F7 1 1 1 1 ENTER DOWN DOWN ENTER"},
+                             20000),
+                 serve.said().constData());
 
         {
             Window win;
@@ -437,7 +421,7 @@ private slots:
             UNTIL(dock->isVisible(), 5000);
             REACH(dock->portBox());
             dock->portBox()->lineEdit()->selectAll();
-            QTest::keyClicks(dock->portBox()->lineEdit(), b);
+            QTest::keyClicks(dock->portBox()->lineEdit(), line.b());
             auto* connectButton = dock->findChild<QPushButton*>("controller.connect");
             REACH(connectButton);
             QSignalSpy connected(dock, &ControllerDock::connectedChanged);
@@ -462,7 +446,6 @@ private slots:
             screenshot(w, "operator");
             dock->disconnectLine();
         }
-        cleanup();
 #endif
     }
 };

@@ -13,6 +13,7 @@
 #include "machine/pendant_controls.h"
 #include "main_window.h"
 #include "monitor/program_monitor.h"
+#include "test_util.h"
 #include "workspace/elided_label.h"
 #include "workspace/workspaces.h"
 
@@ -106,6 +107,22 @@ void settle() {
         QTest::qWait(20);
     }
 }
+
+// `w` placed on the screen and shown; true once it is exposed.
+bool shown(MainWindow& w) {
+    w.placeOnScreen();
+    w.show();
+    return QTest::qWaitForWindowExposed(&w);
+}
+
+// `w` shown in the workspace `id`, its layout settled.
+bool shownIn(MainWindow& w, const QString& id) {
+    if (!shown(w) || !w.workspaces()->activate(id))
+        return false;
+    settle();
+    return true;
+}
+
 
 bool fits(const QMainWindow& w, QString* why) {
     const QRect a = available();
@@ -259,9 +276,7 @@ private slots:
 
     void everyWorkspaceFitsTheScreen() {
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         for (const WorkspaceSpec& s : w.workspaces()->specs()) {
             // Switched as a user does: the button in the menu bar's corner.
             auto* button = w.workspaces()->switcher()->findChild<QAbstractButton*>("workspaces.button." + s.id);
@@ -293,9 +308,7 @@ private slots:
     // it shows on demand — raised in its place, as the View menu shows it.
     void noControlIsCrushed() {
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         const auto crushed = [&](const QString& where) {
             QStringList out;
             for (const QWidget* c : w.findChildren<QWidget*>()) {
@@ -351,9 +364,7 @@ private slots:
 
     void longTextsAndMoreDocksDoNotWidenTheWindow() {
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         const QString longText =
             QStringLiteral("L1: выполняется, кадр N15 — «ЧИСТОВАЯ ОБТОЧКА ПОВЕРХНОСТИ ПОД ПОДШИПНИК» ").repeated(8);
         for (const WorkspaceSpec& s : w.workspaces()->specs()) {
@@ -390,11 +401,7 @@ private slots:
 
     void theMachinePanelScalesWithItsRoom() {
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.workspaces()->activate("operator"));
-        settle();
+        QVERIFY(shownIn(w, "operator"));
         MachinePanelWidget* panel = w.machinePanel();
         const double large = panel->scale();
         QVERIFY2(large >= 0.6, qPrintable(QString::number(large)));
@@ -422,9 +429,7 @@ private slots:
     // «Ambiguous shortcut overload» and does neither).
     void oneActionPerShortcutInEachContext() {
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         int checked = 0;
         for (const WorkspaceSpec& s : w.workspaces()->specs()) {
             QVERIFY(w.workspaces()->activate(s.id));
@@ -462,18 +467,10 @@ private slots:
     // Open, nothing else.
     void ctrlSAndCtrlOAreTheEditorsForTheTechnologist() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("part.k528");
-        {
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write("%L1\nM30\n");
-        }
+        const QString path = testutil::writeFile(dir, "part.k528", "%L1\nM30\n");
+        QVERIFY(!path.isEmpty());
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.workspaces()->activate("technologist"));
-        settle();
+        QVERIFY(shownIn(w, "technologist"));
         EditorTab* tab = w.programEditor();
         QVERIFY(tab->openFile(path));
         ProgramEditor* ed = tab->currentEditor();
@@ -527,23 +524,15 @@ private slots:
     // user who closed them all finds the editor as left.
     void theEditorStartsWithTheSampleThenTheLastFiles() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("part.k528");
-        {
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write("%L3\nG1 X5 FX100\nM30\n");
-        }
+        const QString path = testutil::writeFile(dir, "part.k528", "%L3\nG1 X5 FX100\nM30\n");
+        QVERIFY(!path.isEmpty());
         const QString sample = EditorTab::sampleFor("training-lathe");
         QVERIFY2(sample.startsWith("lathe-"), qPrintable(sample));
         QVERIFY(EditorTab::sampleFor("grinder-205").startsWith("grinder-"));
         QVERIFY(!EditorTab::sampleFor("no-such-machine").isEmpty()); // some sample all the same
         {
             MainWindow w; // the training lathe
-            w.placeOnScreen();
-            w.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&w));
-            QVERIFY(w.workspaces()->activate("technologist"));
-            settle();
+            QVERIFY(shownIn(w, "technologist"));
             EditorTab* tab = w.programEditor();
             QCOMPARE(tab->documentCount(), 1);
             QVERIFY(tab->pathOf(0).isEmpty()); // not a file: saving asks where
@@ -589,16 +578,10 @@ private slots:
     // the tab's «name *» — and «Cancel» keeps the window and the edits.
     void theQuitQuestionNamesTheFileNotItsTab() {
         QTemporaryDir dir;
-        const QString path = dir.filePath("part.k528");
-        {
-            QFile f(path);
-            QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write("%L1\nM30\n");
-        }
+        const QString path = testutil::writeFile(dir, "part.k528", "%L1\nM30\n");
+        QVERIFY(!path.isEmpty());
         MainWindow w;
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(shown(w));
         QVERIFY(w.workspaces()->activate("technologist"));
         EditorTab* tab = w.programEditor();
         QVERIFY(tab->openFile(path));
@@ -644,11 +627,7 @@ private slots:
         const QString other = first == "operator" ? "technologist" : "operator";
         QVERIFY(w.workspaces()->activate(other));
         QVERIFY(!QSettings().contains("workspaces/" + first + "/state"));
-        w.placeOnScreen();
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.workspaces()->activate("technologist"));
-        settle();
+        QVERIFY(shownIn(w, "technologist"));
         auto* backplot = w.findChild<QDockWidget*>("dock.backplot");
         const double share = double(backplot->width()) / w.width();
         QVERIFY2(share > 0.3 && share < 0.46, qPrintable(QString::number(share)));
@@ -658,11 +637,7 @@ private slots:
     void eachWorkspaceKeepsItsLayout() {
         {
             MainWindow w;
-            w.placeOnScreen();
-            w.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&w));
-            QVERIFY(w.workspaces()->activate("operator"));
-            settle();
+            QVERIFY(shownIn(w, "operator"));
             QVERIFY(w.messagesDock()->isVisible());
             w.messagesDock()->close(); // the operator closes the messages
             QVERIFY(w.workspaces()->activate("technologist"));
@@ -682,9 +657,7 @@ private slots:
         {
             // Started again: the workspace left last, as it was left.
             MainWindow w;
-            w.placeOnScreen();
-            w.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(shown(w));
             QCOMPARE(w.workspaces()->current(), QString("operator"));
             QVERIFY(!w.messagesDock()->isVisible());
             QVERIFY(w.workspaces()->activate("technologist"));

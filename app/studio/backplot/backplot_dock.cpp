@@ -1,5 +1,6 @@
 #include "backplot/backplot_dock.h"
 #include "workspace/flow_layout.h"
+#include "workspace/pane_dock.h"
 
 #include "backplot/backplot_widget.h"
 #include "controller/controller.h"
@@ -28,11 +29,10 @@ namespace k528::studio::backplot {
 
 namespace {
 
-class BackplotDock final : public QDockWidget {
+class BackplotDock final : public PaneDock {
     Q_OBJECT
 public:
-    BackplotDock(QMainWindow* w, ViewedController& viewed) : QDockWidget(w), viewed_(viewed) {
-        setObjectName("dock.backplot");
+    BackplotDock(QMainWindow* w, ViewedController& viewed) : PaneDock(w, "backplot"), viewed_(viewed) {
         auto* box = new QWidget(this);
         auto* row = new FlowLayout; // wraps in a narrow dock
         programLabel_ = new QLabel(box);
@@ -87,13 +87,6 @@ public:
         connect(&viewed, &ViewedController::changed, this, [this] { follow(); });
         follow();
         retranslate();
-    }
-
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            retranslate();
-        QDockWidget::changeEvent(e);
     }
 
 private:
@@ -193,7 +186,7 @@ private:
         pathRevision_ = c.programsRevision();
         view_->showProgram(c.profile(), store, number, stock::parseUcg(ucg_->text().toStdString()));
     }
-    void retranslate() {
+    void retranslate() override {
         setWindowTitle(tr("Backplot"));
         programLabel_->setText(tr("Program"));
         pathButton_->setText(tr("Programmed path"));

@@ -12,6 +12,8 @@
 #include "controller/push_preview.h"
 #include "controller/view_notice.h"
 #include "util/input_file.h"
+#include "widgets.h"
+#include "workspace/pane_dock.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -92,12 +94,10 @@ private:
     std::function<void(const QString&, bool)> say_;
 };
 
-class ConstantsDock : public QDockWidget {
+class ConstantsDock : public PaneDock {
 public:
     ConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine)
-        : QDockWidget(window) {
-        setObjectName("dock.constants");
-        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        : PaneDock(window, "constants") {
         auto* notice = new ViewNotice(new ConstantsPane(viewed, machine), this);
         notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
             if (c.simulated())
@@ -114,15 +114,8 @@ public:
         retranslate();
     }
 
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            retranslate();
-        QDockWidget::changeEvent(e);
-    }
-
 private:
-    void retranslate() { setWindowTitle(ConstantsPane::tr("Machine constants")); }
+    void retranslate() override { setWindowTitle(ConstantsPane::tr("Machine constants")); }
 };
 
 QToolButton* button(QWidget* parent, const char* name) {
@@ -283,8 +276,7 @@ void ConstantsPane::changeEvent(QEvent* e) {
 }
 
 void ConstantsPane::say(const QString& text, bool bad) {
-    status_->setText(text);
-    status_->setStyleSheet(bad ? QStringLiteral("color:#b00000;") : QString());
+    showStatus(status_, text, bad);
 }
 
 QString ConstantsPane::statusText() const {

@@ -63,9 +63,7 @@ ControllerDock* addControllerDock(MainWindow* window) {
     return dock;
 }
 
-ControllerDock::ControllerDock(MainWindow* window) : QDockWidget(window), window_(window) {
-    setObjectName("dock.controller");
-    setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+ControllerDock::ControllerDock(MainWindow* window) : PaneDock(window, "controller"), window_(window) {
     for (const linkplugin::Found& f : linkplugin::discover()) {
         if (f.plugin) {
             plugins_.push_back(f.plugin);
@@ -261,12 +259,6 @@ void ControllerDock::retranslate() {
     updateEnabled();
     updateLine();
     updateMonitor();
-}
-
-void ControllerDock::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange)
-        retranslate();
-    QDockWidget::changeEvent(e);
 }
 
 void ControllerDock::refreshPorts() {

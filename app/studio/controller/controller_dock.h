@@ -17,6 +17,7 @@
 
 #include "controller/controller.h"
 #include "profile/profile.h"
+#include "workspace/pane_dock.h"
 
 #include <QDockWidget>
 #include <QStringList>
@@ -42,7 +43,7 @@ namespace k528::studio {
 class MainWindow;
 class LinkController;
 
-class ControllerDock : public QDockWidget {
+class ControllerDock : public PaneDock {
     Q_OBJECT
 public:
     explicit ControllerDock(MainWindow* window);
@@ -91,12 +92,9 @@ signals:
     void frameLogSaved(bool ok, const QString& path);
     void memoryCleared(bool ok, const QString& message);
 
-protected:
-    void changeEvent(QEvent* e) override;
-
 private:
     void build();
-    void retranslate();
+    void retranslate() override;
     void updateEnabled();
     void updateMonitor();
     void updateLine();

@@ -7,6 +7,8 @@
 #include "controller/controller.h"
 #include "controller/view_notice.h"
 #include "session/shop_database.h"
+#include "widgets.h"
+#include "workspace/pane_dock.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -38,28 +40,17 @@ HistoryView::HistoryView(HistoryService& service, QWidget* parent)
     setObjectName("history");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    auto* bar = new QHBoxLayout;
     searchLabel_ = new QLabel(this);
-    search_ = new QLineEdit(this);
-    search_->setObjectName("history.search");
+    search_ = namedWidget<QLineEdit>(this, "history.search");
     search_->setClearButtonEnabled(true);
-    source_ = new QComboBox(this);
-    source_->setObjectName("history.source");
+    source_ = namedWidget<QComboBox>(this, "history.source");
     for (int i = 0; i <= db::kMessageSourceCount; ++i)
         source_->addItem(QString());
-    unacked_ = new QCheckBox(this);
-    unacked_->setObjectName("history.unacknowledged");
-    allMachines_ = new QCheckBox(this);
-    allMachines_->setObjectName("history.allMachines");
-    ack_ = new QPushButton(this);
-    ack_->setObjectName("history.acknowledge");
-    csv_ = new QPushButton(this);
-    csv_->setObjectName("history.csv");
-    bar->addWidget(searchLabel_);
-    bar->addWidget(search_, 1);
-    for (QWidget* w : std::initializer_list<QWidget*>{source_, unacked_, allMachines_, ack_, csv_})
-        bar->addWidget(w);
-    layout->addLayout(bar);
+    unacked_ = namedWidget<QCheckBox>(this, "history.unacknowledged");
+    allMachines_ = namedWidget<QCheckBox>(this, "history.allMachines");
+    ack_ = namedWidget<QPushButton>(this, "history.acknowledge");
+    csv_ = namedWidget<QPushButton>(this, "history.csv");
+    layout->addLayout(fieldRow(searchLabel_, search_, {source_, unacked_, allMachines_, ack_, csv_}));
 
     model_ = new HistoryModel(service_.shop(), this);
     table_ = new QTableView(this);
@@ -284,12 +275,10 @@ namespace {
 
 // One page of the history a controller shown: the simulated one's, and each
 // real controller's from when it was first shown until it is disconnected.
-class HistoryDock : public QDockWidget {
+class HistoryDock : public PaneDock {
 public:
     HistoryDock(QMainWindow* window, ViewedController& viewed, const QString& dbPath)
-        : QDockWidget(window), viewed_(viewed), dbPath_(dbPath) {
-        setObjectName("dock.history");
-        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        : PaneDock(window, "history"), viewed_(viewed), dbPath_(dbPath) {
         pages_ = new QStackedWidget(this);
         pages_->setObjectName("history.pages");
         auto* notice = new ViewNotice(pages_, this);
@@ -314,13 +303,6 @@ public:
     ~HistoryDock() override {
         for (auto& [c, page] : pages)
             delete page.view; // the view before its service
-    }
-
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            retranslate();
-        QDockWidget::changeEvent(e);
     }
 
 private:
@@ -367,7 +349,7 @@ private:
         if (const auto it = pages.find(&viewed_.current()); it != pages.end())
             pages_->setCurrentWidget(it->second.view);
     }
-    void retranslate() { setWindowTitle(HistoryView::tr("Message history")); }
+    void retranslate() override { setWindowTitle(HistoryView::tr("Message history")); }
     ViewedController& viewed_;
     QString dbPath_;
     QStackedWidget* pages_ = nullptr;

@@ -6,6 +6,7 @@
 #include "plc/description.h"
 #include "profile/tools.h"
 #include "stock/stock.h"
+#include "workspace/pane_dock.h"
 
 #include <QCheckBox>
 #include <QCoreApplication>
@@ -391,24 +392,17 @@ void ProveoutPane::changeEvent(QEvent* e) {
 }
 
 namespace {
-class ProveoutDock final : public QDockWidget {
+class ProveoutDock final : public PaneDock {
 public:
-    using QDockWidget::QDockWidget;
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            setWindowTitle(ProveoutPane::tr("Prove-out"));
-        QDockWidget::changeEvent(e);
-    }
+    explicit ProveoutDock(QMainWindow* w) : PaneDock(w, "proveout") { retranslate(); }
+
+private:
+    void retranslate() override { setWindowTitle(ProveoutPane::tr("Prove-out")); }
 };
 } // namespace
 
 QDockWidget* addProveoutDock(QMainWindow* w, EditorTab* editor, QTabWidget* workArea) {
     auto* dock = new ProveoutDock(w);
-    dock->setObjectName("dock.proveout");
-    dock->setWindowTitle(ProveoutPane::tr("Prove-out"));
-    dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable |
-                      QDockWidget::DockWidgetClosable);
     auto* pane = new ProveoutPane(editor, dock);
     dock->setWidget(pane);
     if (workArea && editor)

@@ -8,6 +8,8 @@
 #include "rparams/rparams_model.h"
 #include "controller/controller.h"
 #include "controller/view_notice.h"
+#include "widgets.h"
+#include "workspace/pane_dock.h"
 
 #include <QComboBox>
 #include <QDockWidget>
@@ -26,12 +28,10 @@ namespace k528::studio {
 
 namespace {
 
-class RParamsDock : public QDockWidget {
+class RParamsDock : public PaneDock {
 public:
     RParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine)
-        : QDockWidget(window) {
-        setObjectName("dock.rparams");
-        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        : PaneDock(window, "rparams") {
         auto* notice = new ViewNotice(new RParamsPane(viewed, machine), this);
         notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
             if (c.simulated())
@@ -48,15 +48,8 @@ public:
         retranslate();
     }
 
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            retranslate();
-        QDockWidget::changeEvent(e);
-    }
-
 private:
-    void retranslate() { setWindowTitle(RParamsPane::tr("R-parameters")); }
+    void retranslate() override { setWindowTitle(RParamsPane::tr("R-parameters")); }
 };
 
 QToolButton* button(QWidget* parent, const char* name) {
@@ -185,8 +178,7 @@ void RParamsPane::changeEvent(QEvent* e) {
 }
 
 void RParamsPane::say(const QString& text, bool bad) {
-    status_->setText(text);
-    status_->setStyleSheet(bad ? QStringLiteral("color:#b00000;") : QString());
+    showStatus(status_, text, bad);
 }
 
 QString RParamsPane::statusText() const {

@@ -4,6 +4,7 @@
 #include "controller/simulated_machine.h"
 #include "controller/view_notice.h"
 #include "scope/scope_view.h"
+#include "workspace/pane_dock.h"
 
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -17,11 +18,9 @@ namespace k528::studio {
 
 namespace {
 
-class ScopeDock : public QDockWidget {
+class ScopeDock : public PaneDock {
 public:
-    ScopeDock(QMainWindow* window, ViewedController& viewed) : QDockWidget(window), viewed_(viewed) {
-        setObjectName("dock.scope");
-        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+    ScopeDock(QMainWindow* window, ViewedController& viewed) : PaneDock(window, "scope"), viewed_(viewed) {
         view_ = new ScopeView(this);
         // The charts live at most at kLiveIntervalMs (a trailing frame
         // draws what the last one skipped).
@@ -37,13 +36,6 @@ public:
         notice->follow(viewed, [](Controller&) { return std::pair<ViewNotice::Level, QString>{}; });
         setWidget(notice);
         retranslate();
-    }
-
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            retranslate();
-        QDockWidget::changeEvent(e);
     }
 
 private:
@@ -62,7 +54,7 @@ private:
         if (SimulatedMachine* sim = c.simulated())
             connect(sim->lifetime(), &QObject::destroyed, view_, [v = view_] { v->forget(); });
     }
-    void retranslate() { setWindowTitle(ScopeView::tr("Oscilloscope")); }
+    void retranslate() override { setWindowTitle(ScopeView::tr("Oscilloscope")); }
     ViewedController& viewed_;
     ScopeView* view_ = nullptr;
     QMetaObject::Connection updates_;

@@ -4,6 +4,8 @@
 #include "session/shop_database.h"
 #include "training/exercise.h"
 #include "training/record.h"
+#include "widgets.h"
+#include "workspace/pane_dock.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
@@ -176,31 +178,19 @@ TrainingPane::TrainingPane(std::function<std::pair<QString, QString>()> editorTe
     setObjectName("training");
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    auto* row = new QHBoxLayout;
     exerciseLabel_ = new QLabel(this);
-    exercise_ = new QComboBox(this);
-    exercise_->setObjectName("training.exercise");
+    exercise_ = namedWidget<QComboBox>(this, "training.exercise");
     exercise_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     exercise_->setMinimumContentsLength(12);
     for (const training::Exercise& e : training::shippedExercises())
         exercise_->addItem(QString(), q(e.id));
-    row->addWidget(exerciseLabel_);
-    row->addWidget(exercise_, 1);
-    layout->addLayout(row);
+    layout->addLayout(fieldRow(exerciseLabel_, exercise_, {}));
 
-    auto* row2 = new QHBoxLayout;
     studentLabel_ = new QLabel(this);
-    student_ = new QLineEdit(this);
-    student_->setObjectName("training.student");
-    gradeEditor_ = new QPushButton(this);
-    gradeEditor_->setObjectName("training.gradeEditor");
-    gradeFile_ = new QPushButton(this);
-    gradeFile_->setObjectName("training.gradeFile");
-    row2->addWidget(studentLabel_);
-    row2->addWidget(student_, 1);
-    row2->addWidget(gradeEditor_);
-    row2->addWidget(gradeFile_);
-    layout->addLayout(row2);
+    student_ = namedWidget<QLineEdit>(this, "training.student");
+    gradeEditor_ = namedWidget<QPushButton>(this, "training.gradeEditor");
+    gradeFile_ = namedWidget<QPushButton>(this, "training.gradeFile");
+    layout->addLayout(fieldRow(studentLabel_, student_, {gradeEditor_, gradeFile_}));
 
     tabs_ = new QTabWidget(this);
     tabs_->setObjectName("training.tabs");
@@ -611,25 +601,16 @@ void TrainingPane::exportDialog() {
 
 namespace {
 
-class TrainingDock : public QDockWidget {
+class TrainingDock : public PaneDock {
 public:
     TrainingDock(QMainWindow* window, std::function<std::pair<QString, QString>()> editorText)
-        : QDockWidget(window) {
-        setObjectName("dock.training");
-        setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+        : PaneDock(window, "training") {
         setWidget(new TrainingPane(std::move(editorText), this));
         retranslate();
     }
 
-protected:
-    void changeEvent(QEvent* e) override {
-        if (e->type() == QEvent::LanguageChange)
-            retranslate();
-        QDockWidget::changeEvent(e);
-    }
-
 private:
-    void retranslate() { setWindowTitle(TrainingPane::tr("Training course")); }
+    void retranslate() override { setWindowTitle(TrainingPane::tr("Training course")); }
 };
 
 } // namespace

@@ -142,20 +142,16 @@ void AutoManualScreens::key(KeyPress k, Context& ctx) {
 
     // Screen 3: the R-parameters.
     if (typing_ == Typing::RNumber) {
-        if (k.key == Key::Enter) {
-            const std::string t = entry_.text();
+        std::string t;
+        const Entry::Answer a = entry_.answer(k.key, t);
+        if (a != Entry::Answer::Typing)
             cancelEdit();
+        if (a == Entry::Answer::Given) {
             const int n = t.empty() ? -1 : std::stoi(t);
             if (n < 0 || n >= kRCount)
                 ctx.inputError();
             else
                 moveR(n - rMarker_);
-        } else if (k.key == Key::Par) {
-            cancelEdit();
-        } else if (k.key == Key::Del) {
-            entry_.backspace();
-        } else {
-            entry_.type(k.key);
         }
         return;
     }

@@ -83,20 +83,16 @@ void CParamScreen::step(int dir) {
 
 void CParamScreen::key(KeyPress k, Context& ctx) {
     if (prompt_) {
-        if (k.key == Key::Enter) {
-            const std::string t = entry_.text();
+        std::string t;
+        const Entry::Answer a = entry_.answer(k.key, t);
+        if (a != Entry::Answer::Typing)
             cancelEdit();
+        if (a == Entry::Answer::Given) {
             const int n = t.empty() ? 0 : std::stoi(t);
             if (n >= 1 && n <= kLast)
                 current_ = n;
             else
                 ctx.inputError();
-        } else if (k.key == Key::Par) {
-            cancelEdit();
-        } else if (k.key == Key::Del) {
-            entry_.backspace();
-        } else {
-            entry_.type(k.key);
         }
         return;
     }
