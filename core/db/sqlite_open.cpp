@@ -188,9 +188,18 @@ std::string immutableUri(const fs::path& path) {
 Checked inspect(sqlite3* db, int latest) {
     Checked c;
     try {
-        c.appId = sql::queryInt(db, "PRAGMA application_id");
-        c.version = sql::queryInt(db, "PRAGMA user_version");
-        c.objects = sql::queryInt(db, "SELECT count(*) FROM sqlite_schema");
+        // One statement, one snapshot: read one by one, another process's
+        // creation committed between them showed "application_id 0 with 33
+        // schema objects" — a database being created taken for another
+        // program's.
+        sql::Stmt what(db, "SELECT (SELECT application_id FROM pragma_application_id), "
+                           "(SELECT user_version FROM pragma_user_version), "
+                           "(SELECT count(*) FROM sqlite_schema)");
+        if (!what.step())
+            throw Error(ErrorKind::Corrupt, "the database's header could not be read");
+        c.appId = what.i64(0);
+        c.version = what.i64(1);
+        c.objects = what.i64(2);
     } catch (const Error& e) {
         const int code = sqlite3_extended_errcode(db);
         if (code == SQLITE_READONLY_ROLLBACK)
