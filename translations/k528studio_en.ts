@@ -1188,6 +1188,445 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     </message>
 </context>
 <context>
+    <name>k528::studio::CoreTexts</name>
+    <message>
+        <source>cannot read the file: %1</source>
+        <translation>cannot read the file: %1</translation>
+    </message>
+    <message>
+        <source>cannot create the file</source>
+        <translation>cannot create the file</translation>
+    </message>
+    <message>
+        <source>cannot write the file</source>
+        <translation>cannot write the file</translation>
+    </message>
+    <message>
+        <source>not valid UTF-8</source>
+        <translation>not valid UTF-8</translation>
+    </message>
+    <message>
+        <source>column %1: U+FEFF (byte-order mark), an invisible character; a byte-order mark may stand only at the very start of the file (files joined with `cat`?) — remove it</source>
+        <translation>column %1: U+FEFF (byte-order mark), an invisible character; a byte-order mark may stand only at the very start of the file (files joined with `cat`?) — remove it</translation>
+    </message>
+    <message>
+        <source>%1 is given twice (first on line %2)</source>
+        <translation>%1 is given twice (first on line %2)</translation>
+    </message>
+    <message>
+        <source>section header without ']': %1</source>
+        <translation>section header without ']': %1</translation>
+    </message>
+    <message>
+        <source>[end program] without [program N]</source>
+        <translation>[end program] without [program N]</translation>
+    </message>
+    <message>
+        <source>unknown section [%1] (known: machine, c, r, program N, messages, plc-messages, simulation)</source>
+        <translation>unknown section [%1] (known: machine, c, r, program N, messages, plc-messages, simulation)</translation>
+    </message>
+    <message>
+        <source>[program N]: N must be a number 1..99, not '%1'</source>
+        <translation>[program N]: N must be a number 1..99, not '%1'</translation>
+    </message>
+    <message>
+        <source>program %1 is empty</source>
+        <translation>program %1 is empty</translation>
+    </message>
+    <message>
+        <source>a program line may not start with '[' (missing [end program] for program %1 of line %2?)</source>
+        <translation>a program line may not start with '[' (missing [end program] for program %1 of line %2?)</translation>
+    </message>
+    <message>
+        <source>program %1 has no [end program]</source>
+        <translation>program %1 has no [end program]</translation>
+    </message>
+    <message>
+        <source>line outside any section: %1</source>
+        <translation>line outside any section: %1</translation>
+    </message>
+    <message>
+        <source>expected key=value: %1</source>
+        <translation>expected key=value: %1</translation>
+    </message>
+    <message>
+        <source>unknown key '%1' in [machine] (format, name, title)</source>
+        <translation>unknown key '%1' in [machine] (format, name, title)</translation>
+    </message>
+    <message>
+        <source>format: '%1' is not a number</source>
+        <translation>format: '%1' is not a number</translation>
+    </message>
+    <message>
+        <source>format %1 is not one this program reads (%2)</source>
+        <translation>format %1 is not one this program reads (%2)</translation>
+    </message>
+    <message>
+        <source>unknown key '%1' in [c] (C001..C152)</source>
+        <translation>unknown key '%1' in [c] (C001..C152)</translation>
+    </message>
+    <message>
+        <source>unknown key '%1' in [r] (R0..R299)</source>
+        <translation>unknown key '%1' in [r] (R0..R299)</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a whole number</source>
+        <translation>%1: '%2' is not a whole number</translation>
+    </message>
+    <message>
+        <source>expected #k=text in [messages], not '%1'</source>
+        <translation>expected #k=text in [messages], not '%1'</translation>
+    </message>
+    <message>
+        <source>message number %1 is outside #1..#99</source>
+        <translation>message number %1 is outside #1..#99</translation>
+    </message>
+    <message>
+        <source>expected A01..A32, W01..W32 or S01..S16 in [plc-messages], not '%1'</source>
+        <translation>expected A01..A32, W01..W32 or S01..S16 in [plc-messages], not '%1'</translation>
+    </message>
+    <message>
+        <source>PLC message '%1': the number must be 1..%2</source>
+        <translation>PLC message '%1': the number must be 1..%2</translation>
+    </message>
+    <message>
+        <source>no [machine] section</source>
+        <translation>no [machine] section</translation>
+    </message>
+    <message>
+        <source>[machine] has no format=%1</source>
+        <translation>[machine] has no format=%1</translation>
+    </message>
+    <message>
+        <source>[machine] has no name=</source>
+        <translation>[machine] has no name=</translation>
+    </message>
+    <message>
+        <source>no [c] section (the 152 machine constants)</source>
+        <translation>no [c] section (the 152 machine constants)</translation>
+    </message>
+    <message>
+        <source>[c] lacks %1 (all 152 are required)</source>
+        <translation>[c] lacks %1 (all 152 are required)</translation>
+    </message>
+    <message>
+        <source>[c] lacks %1 and %2 more (all 152 are required)</source>
+        <translation>[c] lacks %1 and %2 more (all 152 are required)</translation>
+    </message>
+    <message>
+        <source>no built-in profile of this name (built-in: %1)</source>
+        <translation>no built-in profile of this name (built-in: %1)</translation>
+    </message>
+    <message>
+        <source>no profile given (built-in: %1)</source>
+        <translation>no profile given (built-in: %1)</translation>
+    </message>
+    <message>
+        <source>neither a built-in profile (%1) nor a machine file</source>
+        <translation>neither a built-in profile (%1) nor a machine file</translation>
+    </message>
+    <message>
+        <source>the first line must be the header '%1'</source>
+        <translation>the first line must be the header '%1'</translation>
+    </message>
+    <message>
+        <source>expected 5 fields (number;axis;name;value;unit), found %1</source>
+        <translation>expected 5 fields (number;axis;name;value;unit), found %1</translation>
+    </message>
+    <message>
+        <source>number '%1' is not a C-parameter 1..152</source>
+        <translation>number '%1' is not a C-parameter 1..152</translation>
+    </message>
+    <message>
+        <source>%1 belongs to axis '%2', the row says '%3'</source>
+        <translation>%1 belongs to axis '%2', the row says '%3'</translation>
+    </message>
+    <message>
+        <source>%1 is given twice</source>
+        <translation>%1 is given twice</translation>
+    </message>
+    <message>
+        <source>%1: value '%2' is not a whole number</source>
+        <translation>%1: value '%2' is not a whole number</translation>
+    </message>
+    <message>
+        <source>empty: no header line</source>
+        <translation>empty: no header line</translation>
+    </message>
+    <message>
+        <source>%1 is missing (all 152 are required)</source>
+        <translation>%1 is missing (all 152 are required)</translation>
+    </message>
+    <message>
+        <source>a quoted field is not closed</source>
+        <translation>a quoted field is not closed</translation>
+    </message>
+    <message>
+        <source>text after a closing quote</source>
+        <translation>text after a closing quote</translation>
+    </message>
+    <message>
+        <source>name is empty</source>
+        <translation>name is empty</translation>
+    </message>
+    <message>
+        <source>name longer than 64 characters</source>
+        <translation>name longer than 64 characters</translation>
+    </message>
+    <message>
+        <source>name '%1' does not start with a-z or 0-9</source>
+        <translation>name '%1' does not start with a-z or 0-9</translation>
+    </message>
+    <message>
+        <source>name '%1' has a character other than a-z, 0-9, '-', '_', '.'</source>
+        <translation>name '%1' has a character other than a-z, 0-9, '-', '_', '.'</translation>
+    </message>
+    <message>
+        <source>title: %1</source>
+        <translation>title: %1</translation>
+    </message>
+    <message>
+        <source>text is empty</source>
+        <translation>text is empty</translation>
+    </message>
+    <message>
+        <source>text is not valid UTF-8</source>
+        <translation>text is not valid UTF-8</translation>
+    </message>
+    <message>
+        <source>text has a control character or line break</source>
+        <translation>text has a control character or line break</translation>
+    </message>
+    <message>
+        <source>text has %1 characters, more than %2</source>
+        <translation>text has %1 characters, more than %2</translation>
+    </message>
+    <message>
+        <source>text ends with a blank</source>
+        <translation>text ends with a blank</translation>
+    </message>
+    <message>
+        <source>text starts with a blank</source>
+        <translation>text starts with a blank</translation>
+    </message>
+    <message>
+        <source>no C-parameter %1 (1..152)</source>
+        <translation>no C-parameter %1 (1..152)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range %3 of «%4»</source>
+        <translation>%1 = %2 is outside the range %3 of «%4»</translation>
+    </message>
+    <message>
+        <source>no R-parameter %1 (0..299)</source>
+        <translation>no R-parameter %1 (0..299)</translation>
+    </message>
+    <message>
+        <source>R%1 is read-only (R232..R262): it cannot be preset</source>
+        <translation>R%1 is read-only (R232..R262): it cannot be preset</translation>
+    </message>
+    <message>
+        <source>R%1 = %2 is outside the 32-bit range</source>
+        <translation>R%1 = %2 is outside the 32-bit range</translation>
+    </message>
+    <message>
+        <source>program number %1 is outside 1..99</source>
+        <translation>program number %1 is outside 1..99</translation>
+    </message>
+    <message>
+        <source>program L%1: empty</source>
+        <translation>program L%1: empty</translation>
+    </message>
+    <message>
+        <source>program L%1: not valid UTF-8</source>
+        <translation>program L%1: not valid UTF-8</translation>
+    </message>
+    <message>
+        <source>program L%1: the text does not end with a line break</source>
+        <translation>program L%1: the text does not end with a line break</translation>
+    </message>
+    <message>
+        <source>program L%1: carriage return in the text (lines end with LF)</source>
+        <translation>program L%1: carriage return in the text (lines end with LF)</translation>
+    </message>
+    <message>
+        <source>program L%1: line %2 starts with '[' (reserved for machine-file sections)</source>
+        <translation>program L%1: line %2 starts with '[' (reserved for machine-file sections)</translation>
+    </message>
+    <message>
+        <source>program L%1: line %2 is the header of program L%3 (one program per entry)</source>
+        <translation>program L%1: line %2 is the header of program L%3 (one program per entry)</translation>
+    </message>
+    <message>
+        <source>program L%1: line %2: %MESSAGES belongs to the machine file's [messages] section</source>
+        <translation>program L%1: line %2: %MESSAGES belongs to the machine file's [messages] section</translation>
+    </message>
+    <message>
+        <source>program L%1: only blank lines</source>
+        <translation>program L%1: only blank lines</translation>
+    </message>
+    <message>
+        <source>technological message number %1 is outside 1..99</source>
+        <translation>technological message number %1 is outside 1..99</translation>
+    </message>
+    <message>
+        <source>message #%1: %2</source>
+        <translation>message #%1: %2</translation>
+    </message>
+    <message>
+        <source>PLC message %1 is outside 1..%2</source>
+        <translation>PLC message %1 is outside 1..%2</translation>
+    </message>
+    <message>
+        <source>PLC message %1: %2</source>
+        <translation>PLC message %1: %2</translation>
+    </message>
+    <message>
+        <source>simulation: %1</source>
+        <translation>simulation: %1</translation>
+    </message>
+    <message>
+        <source>simulation %1: %2</source>
+        <translation>simulation %1: %2</translation>
+    </message>
+    <message>
+        <source>empty key</source>
+        <translation>empty key</translation>
+    </message>
+    <message>
+        <source>key longer than 64 characters</source>
+        <translation>key longer than 64 characters</translation>
+    </message>
+    <message>
+        <source>key '%1' does not start with a letter a-z</source>
+        <translation>key '%1' does not start with a letter a-z</translation>
+    </message>
+    <message>
+        <source>key '%1' has a character other than a-z, 0-9, '_', '.'</source>
+        <translation>key '%1' has a character other than a-z, 0-9, '_', '.'</translation>
+    </message>
+    <message>
+        <source>value is not valid UTF-8</source>
+        <translation>value is not valid UTF-8</translation>
+    </message>
+    <message>
+        <source>value longer than 200 characters</source>
+        <translation>value longer than 200 characters</translation>
+    </message>
+    <message>
+        <source>value spans lines</source>
+        <translation>value spans lines</translation>
+    </message>
+    <message>
+        <source>value has a control character</source>
+        <translation>value has a control character</translation>
+    </message>
+    <message>
+        <source>value has a ';' (starts a comment in machine files)</source>
+        <translation>value has a ';' (starts a comment in machine files)</translation>
+    </message>
+    <message>
+        <source>value starts or ends with a blank</source>
+        <translation>value starts or ends with a blank</translation>
+    </message>
+    <message>
+        <source>value %1 is outside %2..%3</source>
+        <translation>value %1 is outside %2..%3</translation>
+    </message>
+    <message>
+        <source>value '%1' is not a whole number</source>
+        <translation>value '%1' is not a whole number</translation>
+    </message>
+    <message>
+        <source>value '%1' is not a number</source>
+        <translation>value '%1' is not a number</translation>
+    </message>
+    <message>
+        <source>value '%1' is not true/false</source>
+        <translation>value '%1' is not true/false</translation>
+    </message>
+    <message>
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>'%1' is not a tool kind (turning, facing, grooving, boring, drill, threading)</source>
+        <translation>'%1' is not a tool kind (turning, facing, grooving, boring, drill, threading)</translation>
+    </message>
+    <message>
+        <source>'%1' is not one of +z+x, -z+x, +z-x, -z-x</source>
+        <translation>'%1' is not one of +z+x, -z+x, +z-x, -z-x</translation>
+    </message>
+    <message>
+        <source>needs 0..50 mm</source>
+        <translation>needs 0..50 mm</translation>
+    </message>
+    <message>
+        <source>needs more than 0, at most 1000 mm</source>
+        <translation>needs more than 0, at most 1000 mm</translation>
+    </message>
+    <message>
+        <source>needs 0..100 mm (0: no limit)</source>
+        <translation>needs 0..100 mm (0: no limit)</translation>
+    </message>
+    <message>
+        <source>needs a user R-parameter 0..148 (X there, Z in the next)</source>
+        <translation>needs a user R-parameter 0..148 (X there, Z in the next)</translation>
+    </message>
+    <message>
+        <source>a tool key is tool.&lt;station 1..8&gt;.&lt;key&gt;</source>
+        <translation>a tool key is tool.&lt;station 1..8&gt;.&lt;key&gt;</translation>
+    </message>
+    <message>
+        <source>'%1' is not a key of a tool</source>
+        <translation>'%1' is not a key of a tool</translation>
+    </message>
+    <message>
+        <source>the tool of station %1 has no kind (tool.%1.kind)</source>
+        <translation>the tool of station %1 has no kind (tool.%1.kind)</translation>
+    </message>
+    <message>
+        <source>%1, line %2: %3</source>
+        <translation>%1, line %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>rejected, nothing was written (errors: %1):</source>
+        <translation>rejected, nothing was written (errors: %1):</translation>
+    </message>
+    <message>
+        <source> (message %1)</source>
+        <translation> (message %1)</translation>
+    </message>
+    <message>
+        <source>there is no such file</source>
+        <translation>there is no such file</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>it is a folder</translation>
+    </message>
+    <message>
+        <source>it is not a regular file (a device, a pipe or a socket)</source>
+        <translation>it is not a regular file (a device, a pipe or a socket)</translation>
+    </message>
+    <message>
+        <source>this user may not read it</source>
+        <translation>this user may not read it</translation>
+    </message>
+    <message>
+        <source>it is larger than 16 MiB</source>
+        <translation>it is larger than 16 MiB</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 cannot be read: %2</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>
@@ -3639,6 +4078,54 @@ Its comment stays: %3</translation>
         <source>Prove-out</source>
         <translation>Prove-out</translation>
     </message>
+    <message>
+        <source>expected UCG</source>
+        <translation>expected UCG</translation>
+    </message>
+    <message>
+        <source>expected the type N after UCG,</source>
+        <translation>expected the type N after UCG,</translation>
+    </message>
+    <message>
+        <source>expected Z&lt;outer length&gt;Z&lt;bore length&gt;</source>
+        <translation>expected Z&lt;outer length&gt;Z&lt;bore length&gt;</translation>
+    </message>
+    <message>
+        <source>expected X&lt;outer diameter&gt;X&lt;bore diameter&gt;</source>
+        <translation>expected X&lt;outer diameter&gt;X&lt;bore diameter&gt;</translation>
+    </message>
+    <message>
+        <source>expected S&lt;outer angle&gt;S&lt;bore angle&gt;</source>
+        <translation>expected S&lt;outer angle&gt;S&lt;bore angle&gt;</translation>
+    </message>
+    <message>
+        <source>the direction is 0 or 1</source>
+        <translation>the direction is 0 or 1</translation>
+    </message>
+    <message>
+        <source>the detail is -1..-5</source>
+        <translation>the detail is -1..-5</translation>
+    </message>
+    <message>
+        <source>the blank is smaller than 0.01 mm</source>
+        <translation>the blank is smaller than 0.01 mm</translation>
+    </message>
+    <message>
+        <source>the bore length has the sign of the outer length</source>
+        <translation>the bore length has the sign of the outer length</translation>
+    </message>
+    <message>
+        <source>the bore is longer than the blank</source>
+        <translation>the bore is longer than the blank</translation>
+    </message>
+    <message>
+        <source>the bore diameter is 0..the outer diameter</source>
+        <translation>the bore diameter is 0..the outer diameter</translation>
+    </message>
+    <message>
+        <source>cone angles are within ±90°</source>
+        <translation>cone angles are within ±90°</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::PushPreview</name>
@@ -3851,6 +4338,53 @@ Its comment stays: %3</translation>
     <message>
         <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
         <translation>Presets loaded into the controller: %1 of %2; R%3 not: %4</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RevisionNotes</name>
+    <message>
+        <source>built-in profile %1 (first start)</source>
+        <translation>built-in profile %1 (first start)</translation>
+    </message>
+    <message>
+        <source>created</source>
+        <translation>created</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
+    </message>
+    <message>
+        <source>changed %1</source>
+        <translation>changed %1</translation>
+    </message>
+    <message>
+        <source>changed %1 and %2 more</source>
+        <translation>changed %1 and %2 more</translation>
+    </message>
+    <message>
+        <source>changed order of simulation settings</source>
+        <translation>changed order of simulation settings</translation>
+    </message>
+    <message>
+        <source>import %1</source>
+        <translation>import %1</translation>
+    </message>
+    <message>
+        <source>import %1 (K528 Studio)</source>
+        <translation>import %1 (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>the machine as K528 Studio loaded it</source>
+        <translation>the machine as K528 Studio loaded it</translation>
+    </message>
+    <message>
+        <source>kept from the simulated controller's memory (K528 Studio)</source>
+        <translation>kept from the simulated controller's memory (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>programs and messages from the editor (K528 Studio)</source>
+        <translation>programs and messages from the editor (K528 Studio)</translation>
     </message>
 </context>
 <context>

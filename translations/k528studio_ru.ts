@@ -1188,6 +1188,445 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::CoreTexts</name>
+    <message>
+        <source>cannot read the file: %1</source>
+        <translation>файл нельзя прочитать: %1</translation>
+    </message>
+    <message>
+        <source>cannot create the file</source>
+        <translation>файл нельзя создать</translation>
+    </message>
+    <message>
+        <source>cannot write the file</source>
+        <translation>файл нельзя записать</translation>
+    </message>
+    <message>
+        <source>not valid UTF-8</source>
+        <translation>текст не в кодировке UTF-8</translation>
+    </message>
+    <message>
+        <source>column %1: U+FEFF (byte-order mark), an invisible character; a byte-order mark may stand only at the very start of the file (files joined with `cat`?) — remove it</source>
+        <translation>позиция %1: U+FEFF (метка порядка байтов) — невидимый символ; такая метка может стоять только в самом начале файла (файлы склеены командой cat?) — удалите её</translation>
+    </message>
+    <message>
+        <source>%1 is given twice (first on line %2)</source>
+        <translation>%1 задан дважды (впервые в строке %2)</translation>
+    </message>
+    <message>
+        <source>section header without ']': %1</source>
+        <translation>заголовок раздела без «]»: %1</translation>
+    </message>
+    <message>
+        <source>[end program] without [program N]</source>
+        <translation>[end program] без [program N]</translation>
+    </message>
+    <message>
+        <source>unknown section [%1] (known: machine, c, r, program N, messages, plc-messages, simulation)</source>
+        <translation>неизвестный раздел [%1] (известны: machine, c, r, program N, messages, plc-messages, simulation)</translation>
+    </message>
+    <message>
+        <source>[program N]: N must be a number 1..99, not '%1'</source>
+        <translation>[program N]: N должно быть числом 1..99, а не «%1»</translation>
+    </message>
+    <message>
+        <source>program %1 is empty</source>
+        <translation>программа %1 пуста</translation>
+    </message>
+    <message>
+        <source>a program line may not start with '[' (missing [end program] for program %1 of line %2?)</source>
+        <translation>строка программы не может начинаться с «[» (нет [end program] у программы %1 из строки %2?)</translation>
+    </message>
+    <message>
+        <source>program %1 has no [end program]</source>
+        <translation>у программы %1 нет [end program]</translation>
+    </message>
+    <message>
+        <source>line outside any section: %1</source>
+        <translation>строка вне разделов: %1</translation>
+    </message>
+    <message>
+        <source>expected key=value: %1</source>
+        <translation>ожидалось «ключ=значение»: %1</translation>
+    </message>
+    <message>
+        <source>unknown key '%1' in [machine] (format, name, title)</source>
+        <translation>неизвестный ключ «%1» в разделе [machine] (format, name, title)</translation>
+    </message>
+    <message>
+        <source>format: '%1' is not a number</source>
+        <translation>format: «%1» — не число</translation>
+    </message>
+    <message>
+        <source>format %1 is not one this program reads (%2)</source>
+        <translation>формат %1 эта программа не читает (читает %2)</translation>
+    </message>
+    <message>
+        <source>unknown key '%1' in [c] (C001..C152)</source>
+        <translation>неизвестный ключ «%1» в разделе [c] (C001..C152)</translation>
+    </message>
+    <message>
+        <source>unknown key '%1' in [r] (R0..R299)</source>
+        <translation>неизвестный ключ «%1» в разделе [r] (R0..R299)</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a whole number</source>
+        <translation>%1: «%2» — не целое число</translation>
+    </message>
+    <message>
+        <source>expected #k=text in [messages], not '%1'</source>
+        <translation>в разделе [messages] ожидалось #k=текст, а не «%1»</translation>
+    </message>
+    <message>
+        <source>message number %1 is outside #1..#99</source>
+        <translation>номер сообщения %1 вне #1..#99</translation>
+    </message>
+    <message>
+        <source>expected A01..A32, W01..W32 or S01..S16 in [plc-messages], not '%1'</source>
+        <translation>в разделе [plc-messages] ожидалось A01..A32, W01..W32 или S01..S16, а не «%1»</translation>
+    </message>
+    <message>
+        <source>PLC message '%1': the number must be 1..%2</source>
+        <translation>сообщение ПЛК «%1»: номер должен быть 1..%2</translation>
+    </message>
+    <message>
+        <source>no [machine] section</source>
+        <translation>нет раздела [machine]</translation>
+    </message>
+    <message>
+        <source>[machine] has no format=%1</source>
+        <translation>в разделе [machine] нет format=%1</translation>
+    </message>
+    <message>
+        <source>[machine] has no name=</source>
+        <translation>в разделе [machine] нет name=</translation>
+    </message>
+    <message>
+        <source>no [c] section (the 152 machine constants)</source>
+        <translation>нет раздела [c] (152 константы станка)</translation>
+    </message>
+    <message>
+        <source>[c] lacks %1 (all 152 are required)</source>
+        <translation>в разделе [c] нет %1 (нужны все 152)</translation>
+    </message>
+    <message>
+        <source>[c] lacks %1 and %2 more (all 152 are required)</source>
+        <translation>в разделе [c] нет %1 и ещё %2 (нужны все 152)</translation>
+    </message>
+    <message>
+        <source>no built-in profile of this name (built-in: %1)</source>
+        <translation>встроенного профиля с таким именем нет (встроенные: %1)</translation>
+    </message>
+    <message>
+        <source>no profile given (built-in: %1)</source>
+        <translation>профиль не указан (встроенные: %1)</translation>
+    </message>
+    <message>
+        <source>neither a built-in profile (%1) nor a machine file</source>
+        <translation>это не встроенный профиль (%1) и не файл станка</translation>
+    </message>
+    <message>
+        <source>the first line must be the header '%1'</source>
+        <translation>первая строка должна быть заголовком «%1»</translation>
+    </message>
+    <message>
+        <source>expected 5 fields (number;axis;name;value;unit), found %1</source>
+        <translation>ожидалось 5 полей (номер;ось;имя;значение;единица), найдено %1</translation>
+    </message>
+    <message>
+        <source>number '%1' is not a C-parameter 1..152</source>
+        <translation>номер «%1» — не C-параметр 1..152</translation>
+    </message>
+    <message>
+        <source>%1 belongs to axis '%2', the row says '%3'</source>
+        <translation>%1 относится к оси «%2», а в строке — «%3»</translation>
+    </message>
+    <message>
+        <source>%1 is given twice</source>
+        <translation>%1 задан дважды</translation>
+    </message>
+    <message>
+        <source>%1: value '%2' is not a whole number</source>
+        <translation>%1: значение «%2» — не целое число</translation>
+    </message>
+    <message>
+        <source>empty: no header line</source>
+        <translation>файл пуст: нет строки заголовка</translation>
+    </message>
+    <message>
+        <source>%1 is missing (all 152 are required)</source>
+        <translation>нет %1 (нужны все 152)</translation>
+    </message>
+    <message>
+        <source>a quoted field is not closed</source>
+        <translation>поле в кавычках не закрыто</translation>
+    </message>
+    <message>
+        <source>text after a closing quote</source>
+        <translation>текст после закрывающей кавычки</translation>
+    </message>
+    <message>
+        <source>name is empty</source>
+        <translation>имя пусто</translation>
+    </message>
+    <message>
+        <source>name longer than 64 characters</source>
+        <translation>имя длиннее 64 символов</translation>
+    </message>
+    <message>
+        <source>name '%1' does not start with a-z or 0-9</source>
+        <translation>имя «%1» начинается не с a-z и не с 0-9</translation>
+    </message>
+    <message>
+        <source>name '%1' has a character other than a-z, 0-9, '-', '_', '.'</source>
+        <translation>в имени «%1» есть символ, кроме a-z, 0-9, «-», «_», «.»</translation>
+    </message>
+    <message>
+        <source>title: %1</source>
+        <translation>название: %1</translation>
+    </message>
+    <message>
+        <source>text is empty</source>
+        <translation>текст пуст</translation>
+    </message>
+    <message>
+        <source>text is not valid UTF-8</source>
+        <translation>текст не в кодировке UTF-8</translation>
+    </message>
+    <message>
+        <source>text has a control character or line break</source>
+        <translation>в тексте управляющий символ или перевод строки</translation>
+    </message>
+    <message>
+        <source>text has %1 characters, more than %2</source>
+        <translation>в тексте %1 символов, больше %2</translation>
+    </message>
+    <message>
+        <source>text ends with a blank</source>
+        <translation>текст кончается пробелом</translation>
+    </message>
+    <message>
+        <source>text starts with a blank</source>
+        <translation>текст начинается с пробела</translation>
+    </message>
+    <message>
+        <source>no C-parameter %1 (1..152)</source>
+        <translation>C-параметра %1 нет (1..152)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range %3 of «%4»</source>
+        <translation>%1 = %2 вне диапазона %3 константы «%4»</translation>
+    </message>
+    <message>
+        <source>no R-parameter %1 (0..299)</source>
+        <translation>R-параметра %1 нет (0..299)</translation>
+    </message>
+    <message>
+        <source>R%1 is read-only (R232..R262): it cannot be preset</source>
+        <translation>R%1 только для чтения (R232..R262): его нельзя задать заранее</translation>
+    </message>
+    <message>
+        <source>R%1 = %2 is outside the 32-bit range</source>
+        <translation>R%1 = %2 вне 32-разрядного диапазона</translation>
+    </message>
+    <message>
+        <source>program number %1 is outside 1..99</source>
+        <translation>номер программы %1 вне 1..99</translation>
+    </message>
+    <message>
+        <source>program L%1: empty</source>
+        <translation>программа L%1: пуста</translation>
+    </message>
+    <message>
+        <source>program L%1: not valid UTF-8</source>
+        <translation>программа L%1: текст не в кодировке UTF-8</translation>
+    </message>
+    <message>
+        <source>program L%1: the text does not end with a line break</source>
+        <translation>программа L%1: текст не кончается переводом строки</translation>
+    </message>
+    <message>
+        <source>program L%1: carriage return in the text (lines end with LF)</source>
+        <translation>программа L%1: в тексте возврат каретки (строки кончаются символом LF)</translation>
+    </message>
+    <message>
+        <source>program L%1: line %2 starts with '[' (reserved for machine-file sections)</source>
+        <translation>программа L%1: строка %2 начинается с «[» (так начинаются разделы файла станка)</translation>
+    </message>
+    <message>
+        <source>program L%1: line %2 is the header of program L%3 (one program per entry)</source>
+        <translation>программа L%1: строка %2 — заголовок программы L%3 (одна программа в записи)</translation>
+    </message>
+    <message>
+        <source>program L%1: line %2: %MESSAGES belongs to the machine file's [messages] section</source>
+        <translation>программа L%1: строка %2: %MESSAGES место в разделе [messages] файла станка</translation>
+    </message>
+    <message>
+        <source>program L%1: only blank lines</source>
+        <translation>программа L%1: только пустые строки</translation>
+    </message>
+    <message>
+        <source>technological message number %1 is outside 1..99</source>
+        <translation>номер технологического сообщения %1 вне 1..99</translation>
+    </message>
+    <message>
+        <source>message #%1: %2</source>
+        <translation>сообщение #%1: %2</translation>
+    </message>
+    <message>
+        <source>PLC message %1 is outside 1..%2</source>
+        <translation>сообщение ПЛК %1 вне 1..%2</translation>
+    </message>
+    <message>
+        <source>PLC message %1: %2</source>
+        <translation>сообщение ПЛК %1: %2</translation>
+    </message>
+    <message>
+        <source>simulation: %1</source>
+        <translation>моделирование: %1</translation>
+    </message>
+    <message>
+        <source>simulation %1: %2</source>
+        <translation>моделирование, %1: %2</translation>
+    </message>
+    <message>
+        <source>empty key</source>
+        <translation>пустой ключ</translation>
+    </message>
+    <message>
+        <source>key longer than 64 characters</source>
+        <translation>ключ длиннее 64 символов</translation>
+    </message>
+    <message>
+        <source>key '%1' does not start with a letter a-z</source>
+        <translation>ключ «%1» начинается не с буквы a-z</translation>
+    </message>
+    <message>
+        <source>key '%1' has a character other than a-z, 0-9, '_', '.'</source>
+        <translation>в ключе «%1» есть символ, кроме a-z, 0-9, «_», «.»</translation>
+    </message>
+    <message>
+        <source>value is not valid UTF-8</source>
+        <translation>значение не в кодировке UTF-8</translation>
+    </message>
+    <message>
+        <source>value longer than 200 characters</source>
+        <translation>значение длиннее 200 символов</translation>
+    </message>
+    <message>
+        <source>value spans lines</source>
+        <translation>значение занимает несколько строк</translation>
+    </message>
+    <message>
+        <source>value has a control character</source>
+        <translation>в значении управляющий символ</translation>
+    </message>
+    <message>
+        <source>value has a ';' (starts a comment in machine files)</source>
+        <translation>в значении есть «;» (в файлах станков с неё начинается комментарий)</translation>
+    </message>
+    <message>
+        <source>value starts or ends with a blank</source>
+        <translation>значение начинается или кончается пробелом</translation>
+    </message>
+    <message>
+        <source>value %1 is outside %2..%3</source>
+        <translation>значение %1 вне %2..%3</translation>
+    </message>
+    <message>
+        <source>value '%1' is not a whole number</source>
+        <translation>значение «%1» — не целое число</translation>
+    </message>
+    <message>
+        <source>value '%1' is not a number</source>
+        <translation>значение «%1» — не число</translation>
+    </message>
+    <message>
+        <source>value '%1' is not true/false</source>
+        <translation>значение «%1» — не true/false</translation>
+    </message>
+    <message>
+        <source>%1</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>'%1' is not a tool kind (turning, facing, grooving, boring, drill, threading)</source>
+        <translation>«%1» — не вид инструмента (turning, facing, grooving, boring, drill, threading)</translation>
+    </message>
+    <message>
+        <source>'%1' is not one of +z+x, -z+x, +z-x, -z-x</source>
+        <translation>«%1» — не одно из +z+x, -z+x, +z-x, -z-x</translation>
+    </message>
+    <message>
+        <source>needs 0..50 mm</source>
+        <translation>нужно 0..50 мм</translation>
+    </message>
+    <message>
+        <source>needs more than 0, at most 1000 mm</source>
+        <translation>нужно больше 0, не больше 1000 мм</translation>
+    </message>
+    <message>
+        <source>needs 0..100 mm (0: no limit)</source>
+        <translation>нужно 0..100 мм (0 — без предела)</translation>
+    </message>
+    <message>
+        <source>needs a user R-parameter 0..148 (X there, Z in the next)</source>
+        <translation>нужен пользовательский R-параметр 0..148 (в нём X, в следующем Z)</translation>
+    </message>
+    <message>
+        <source>a tool key is tool.&lt;station 1..8&gt;.&lt;key&gt;</source>
+        <translation>ключ инструмента — tool.&lt;позиция 1..8&gt;.&lt;ключ&gt;</translation>
+    </message>
+    <message>
+        <source>'%1' is not a key of a tool</source>
+        <translation>«%1» — не ключ инструмента</translation>
+    </message>
+    <message>
+        <source>the tool of station %1 has no kind (tool.%1.kind)</source>
+        <translation>у инструмента позиции %1 не задан вид (tool.%1.kind)</translation>
+    </message>
+    <message>
+        <source>%1, line %2: %3</source>
+        <translation>%1, строка %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>rejected, nothing was written (errors: %1):</source>
+        <translation>отклонено, ничего не записано (ошибок: %1):</translation>
+    </message>
+    <message>
+        <source> (message %1)</source>
+        <translation> (сообщение %1)</translation>
+    </message>
+    <message>
+        <source>there is no such file</source>
+        <translation>такого файла нет</translation>
+    </message>
+    <message>
+        <source>it is a folder</source>
+        <translation>это папка</translation>
+    </message>
+    <message>
+        <source>it is not a regular file (a device, a pipe or a socket)</source>
+        <translation>это не обычный файл (устройство, канал или сокет)</translation>
+    </message>
+    <message>
+        <source>this user may not read it</source>
+        <translation>этому пользователю читать его нельзя</translation>
+    </message>
+    <message>
+        <source>it is larger than 16 MiB</source>
+        <translation>он больше 16 МиБ</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 не читается: %2</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>
@@ -3639,6 +4078,54 @@ Its comment stays: %3</source>
         <source>Prove-out</source>
         <translation>Проверка программы</translation>
     </message>
+    <message>
+        <source>expected UCG</source>
+        <translation>ожидалось UCG</translation>
+    </message>
+    <message>
+        <source>expected the type N after UCG,</source>
+        <translation>после «UCG,» ожидался тип N</translation>
+    </message>
+    <message>
+        <source>expected Z&lt;outer length&gt;Z&lt;bore length&gt;</source>
+        <translation>ожидалось Z&lt;длина заготовки&gt;Z&lt;длина отверстия&gt;</translation>
+    </message>
+    <message>
+        <source>expected X&lt;outer diameter&gt;X&lt;bore diameter&gt;</source>
+        <translation>ожидалось X&lt;наружный диаметр&gt;X&lt;диаметр отверстия&gt;</translation>
+    </message>
+    <message>
+        <source>expected S&lt;outer angle&gt;S&lt;bore angle&gt;</source>
+        <translation>ожидалось S&lt;угол снаружи&gt;S&lt;угол отверстия&gt;</translation>
+    </message>
+    <message>
+        <source>the direction is 0 or 1</source>
+        <translation>направление — 0 или 1</translation>
+    </message>
+    <message>
+        <source>the detail is -1..-5</source>
+        <translation>детализация — от -1 до -5</translation>
+    </message>
+    <message>
+        <source>the blank is smaller than 0.01 mm</source>
+        <translation>заготовка меньше 0,01 мм</translation>
+    </message>
+    <message>
+        <source>the bore length has the sign of the outer length</source>
+        <translation>длина отверстия того же знака, что длина заготовки</translation>
+    </message>
+    <message>
+        <source>the bore is longer than the blank</source>
+        <translation>отверстие длиннее заготовки</translation>
+    </message>
+    <message>
+        <source>the bore diameter is 0..the outer diameter</source>
+        <translation>диаметр отверстия — от 0 до наружного диаметра</translation>
+    </message>
+    <message>
+        <source>cone angles are within ±90°</source>
+        <translation>углы конусов в пределах ±90°</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::PushPreview</name>
@@ -3851,6 +4338,53 @@ Its comment stays: %3</source>
     <message>
         <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
         <translation>Предустановки загружены в контроллер: %1 из %2; R%3 — нет: %4</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RevisionNotes</name>
+    <message>
+        <source>built-in profile %1 (first start)</source>
+        <translation>встроенный профиль %1 (первый запуск)</translation>
+    </message>
+    <message>
+        <source>created</source>
+        <translation>создан</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>задано: %1</translation>
+    </message>
+    <message>
+        <source>changed %1</source>
+        <translation>изменено: %1</translation>
+    </message>
+    <message>
+        <source>changed %1 and %2 more</source>
+        <translation>изменено: %1 и ещё %2</translation>
+    </message>
+    <message>
+        <source>changed order of simulation settings</source>
+        <translation>изменён порядок настроек моделирования</translation>
+    </message>
+    <message>
+        <source>import %1</source>
+        <translation>импорт %1</translation>
+    </message>
+    <message>
+        <source>import %1 (K528 Studio)</source>
+        <translation>импорт %1 (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>the machine as K528 Studio loaded it</source>
+        <translation>станок, каким его загрузила K528 Studio</translation>
+    </message>
+    <message>
+        <source>kept from the simulated controller's memory (K528 Studio)</source>
+        <translation>сохранено из памяти моделируемого контроллера (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>programs and messages from the editor (K528 Studio)</source>
+        <translation>программы и сообщения из редактора (K528 Studio)</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 // k528 db import (docs/database.md); helpers in db_cli_util.h.
 #include "db_cli_util.h"
+#include "db/notes.h"
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
@@ -99,7 +100,7 @@ int cmdImport(std::span<const std::string> argv) {
     o.author = a.value("--author").value_or("");
     o.allowErrors = a.has("--allow-errors");
     o.action = "import";
-    o.summary = "import " + fs::path(source).filename().string();
+    o.summary = db::noteText({"import", {fs::path(source).filename().string()}});
 
     // Read and check the whole file before the database is touched.
     MachineProfile p;

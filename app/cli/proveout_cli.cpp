@@ -42,8 +42,9 @@ bool blankFor(const Args& args, std::string_view fileText, std::optional<stock::
     }
     if (fileText.find("UCG") == std::string_view::npos)
         return true;
-    blank = stock::findUcg(fileText, &error);
-    if (!blank && error != "no UCG in the file") {
+    std::string id;
+    blank = stock::findUcg(fileText, &error, &id);
+    if (!blank && id != stock::kNoUcg) {
         std::fprintf(stderr, "k528: the file's blank: %s\n", error.c_str());
         return false;
     }

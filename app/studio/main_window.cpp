@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "session/core_texts.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -538,7 +539,7 @@ MainWindow* MainWindow::switchMachine(const QString& name) {
         choice = loadMachine(name);
     } catch (const std::exception& e) {
         QMessageBox::warning(this, tr("Machine"),
-                             tr("The machine %1 cannot be loaded: %2").arg(name, QString::fromUtf8(e.what())));
+                             tr("The machine %1 cannot be loaded: %2").arg(name, coreErrorText(e)));
         return nullptr;
     }
     rememberMachine(name);

@@ -4,6 +4,7 @@
 // programs and the transfer log. The rows are the backend's (store.h;
 // sqlite_store.h, postgres_store.h), the revision rules revisions.h's.
 #include "db/database.h"
+#include "db/notes.h"
 
 #include "db/database_impl.h"
 #include "db/postgres_store.h"
@@ -60,7 +61,7 @@ SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& 
     const std::int64_t id = writeMachineRow(s, row, neu, revision, at, author);
     const std::string summary =
         !o.summary.empty() ? o.summary
-                           : (row ? "changed " + revision::describeChanges(result.changes) : "created");
+                           : noteText(row ? changedNote(result.changes) : Note{"created", {}});
     s.insertRevision(id, revision, author, at, summary, revision::joinKeys(neu.simulation, '\n'));
     bool settingsChanged = false;
     int seq = 0;
@@ -162,7 +163,7 @@ Database Database::open(const Location& where, const OpenOptions& options) {
             WriteOptions wo;
             wo.author = author;
             wo.action = "seed";
-            wo.summary = "built-in profile " + name + " (first start)";
+            wo.summary = noteText({"seed", {name}});
             write(s, clock, std::nullopt, nullptr, profile::builtin(name), wo);
             seeded.push_back(name);
         }
@@ -289,7 +290,7 @@ SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOpt
             throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
         }
         if (options.summary.empty())
-            options.summary = "set " + edit.describe();
+            options.summary = noteText({"set", {edit.describe()}});
         SaveResult r = write(s, d_->clock, row, &old, neu, options);
         tx.commit();
         return r;

@@ -161,22 +161,6 @@ std::vector<Change> computeChanges(const MachineProfile* old, const MachineProfi
     return out;
 }
 
-std::string describeChanges(const std::vector<Change>& changes) {
-    std::string s;
-    std::size_t shown = 0;
-    for (const auto& c : changes) {
-        if (c.key == kOrderKey)
-            continue;
-        if (shown == 8) {
-            s += " and " + std::to_string(changes.size() - shown) + " more";
-            break;
-        }
-        s += (shown ? ", " : "") + c.key;
-        ++shown;
-    }
-    return s.empty() ? "order of simulation settings" : s;
-}
-
 bool applyRecorded(MachineProfile& p, DiffSection section, const std::string& key,
                    const std::optional<std::string>& after) {
     const auto num = keyNumber(key);

@@ -40,8 +40,7 @@ std::vector<profile::Finding> checkWrite(const profile::MachineProfile* old,
 // simulation section that only moved are recorded as kOrderKey.
 std::vector<profile::Change> computeChanges(const profile::MachineProfile* old,
                                             const profile::MachineProfile& neu);
-// "C022, R12 and 3 more": a revision's default summary.
-std::string describeChanges(const std::vector<profile::Change>& changes);
+// (A revision's default summary: db/notes.h, changedNote.)
 
 // Applies one recorded change (not a program's) to `p`, rebuilding a state;
 // false when the record cannot be read.

@@ -40,8 +40,7 @@ bool isBuiltin(std::string_view name) {
 std::string_view builtinText(std::string_view name) {
     const auto data = resources::find(std::string(kDir) + std::string(name) + std::string(kExt));
     if (!data)
-        throw FileError(std::string(name), 0,
-                        "no built-in profile of this name (built-in: " + builtinList() + ")");
+        throw FileError(std::string(name), 0, problem("builtin.unknown", {builtinList()}));
     return *data;
 }
 
@@ -51,7 +50,7 @@ MachineProfile builtin(std::string_view name) {
 
 MachineProfile load(std::string_view nameOrPath) {
     if (nameOrPath.empty())
-        throw FileError("", 0, "no profile given (built-in: " + builtinList() + ")");
+        throw FileError("", 0, problem("builtin.none-given", {builtinList()}));
     if (isBuiltin(nameOrPath))
         return builtin(nameOrPath);
     const std::filesystem::path path{std::string(nameOrPath)};
@@ -59,8 +58,7 @@ MachineProfile load(std::string_view nameOrPath) {
     // Something that exists but is no regular file (/dev/zero, a FIFO) is
     // refused by readMachineFile with its reason.
     if (!std::filesystem::exists(path, ec))
-        throw FileError(std::string(nameOrPath), 0,
-                        "neither a built-in profile (" + builtinList() + ") nor a machine file");
+        throw FileError(std::string(nameOrPath), 0, problem("builtin.neither", {builtinList()}));
     return readMachineFile(path);
 }
 

@@ -29,7 +29,7 @@ std::string field(std::string_view s) {
     return out + "\"";
 }
 
-// Splits one CSV line; false (and `error`) on a malformed quote.
+// Splits one CSV line; false (and `error`, a problem id) on a malformed quote.
 bool splitLine(std::string_view line, std::vector<std::string>& out, std::string& error) {
     out.clear();
     std::string cur;
@@ -40,7 +40,7 @@ bool splitLine(std::string_view line, std::vector<std::string>& out, std::string
             ++i;
             while (true) {
                 if (i >= line.size()) {
-                    error = "a quoted field is not closed";
+                    error = "csv.quote-open";
                     return false;
                 }
                 if (line[i] == '"') {
@@ -55,7 +55,7 @@ bool splitLine(std::string_view line, std::vector<std::string>& out, std::string
                 cur += line[i++];
             }
             if (i < line.size() && line[i] != ';') {
-                error = "text after a closing quote";
+                error = "csv.quote-text";
                 return false;
             }
         }
@@ -113,46 +113,41 @@ CValues readCParamsCsv(std::string_view text, std::string_view source) {
         if (!line.empty() && line.back() == '\r')
             line.remove_suffix(1);
         if (!utf8::isValid(line))
-            throw FileError(src, lineNo, "not valid UTF-8");
+            throw FileError(src, lineNo, problem("file.utf8"));
         if (line.find_first_not_of(" \t") == std::string_view::npos)
             continue;
         if (!header) {
             if (line != kHeader)
-                throw FileError(src, lineNo,
-                                "the first line must be the header '" + std::string(kHeader) + "'");
+                throw FileError(src, lineNo, problem("csv.header", {std::string(kHeader)}));
             header = true;
             continue;
         }
         if (!splitLine(line, f, error))
-            throw FileError(src, lineNo, error);
+            throw FileError(src, lineNo, problem(error));
         if (f.size() != 5)
-            throw FileError(src, lineNo,
-                            "expected 5 fields (number;axis;name;value;unit), found " +
-                                std::to_string(f.size()));
+            throw FileError(src, lineNo, problem("csv.fields", {std::to_string(f.size())}));
         const auto n = parseInt(f[0]);
         if (!n || *n < 1 || *n > cat::kCParamCount)
-            throw FileError(src, lineNo, "number '" + f[0] + "' is not a C-parameter 1..152");
+            throw FileError(src, lineNo, problem("csv.number", {f[0]}));
         const cat::CParamDef& d = cat::cParam(static_cast<int>(*n));
         if (f[1] != cat::axisName(d.axis))
             throw FileError(src, lineNo,
-                            d.key() + " belongs to axis '" + std::string(cat::axisName(d.axis)) +
-                                "', the row says '" + f[1] + "'");
+                            problem("csv.axis", {d.key(), std::string(cat::axisName(d.axis)), f[1]}));
         if (!seen.insert(d.number).second)
-            throw FileError(src, lineNo, d.key() + " is given twice");
+            throw FileError(src, lineNo, problem("csv.twice", {d.key()}));
         const auto v = parseInt(f[3]);
         if (!v)
-            throw FileError(src, lineNo, d.key() + ": value '" + f[3] + "' is not a whole number");
-        if (auto problem = checkCValue(d.number, *v); !problem.empty())
-            throw FileError(src, lineNo, problem);
+            throw FileError(src, lineNo, problem("csv.value", {d.key(), f[3]}));
+        if (Problem p = cValueProblem(d.number, *v); !p.empty())
+            throw FileError(src, lineNo, std::move(p));
         c[static_cast<std::size_t>(d.number)] = *v;
     }
     if (!header)
-        throw FileError(src, 0, "empty: no header line");
+        throw FileError(src, 0, problem("csv.empty"));
     if (seen.size() != static_cast<std::size_t>(cat::kCParamCount)) {
         for (int n = 1; n <= cat::kCParamCount; ++n)
             if (!seen.contains(n))
-                throw FileError(src, 0,
-                                cat::cParam(n).key() + " is missing (all 152 are required)");
+                throw FileError(src, 0, problem("csv.missing", {cat::cParam(n).key()}));
     }
     return c;
 }

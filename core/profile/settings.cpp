@@ -1,4 +1,5 @@
 #include "profile/settings.h"
+#include "profile/problem.h"
 
 #include "profile/line.h"
 
@@ -78,36 +79,40 @@ std::string formatDouble(double v) {
     return std::string(buf, p);
 }
 
-std::string Settings::keyError(std::string_view key) {
+Problem settingKeyProblem(std::string_view key) {
     if (key.empty())
-        return "empty key";
+        return problem("key.empty");
     if (key.size() > 64)
-        return "key longer than 64 characters";
+        return problem("key.long");
     if (!(key[0] >= 'a' && key[0] <= 'z'))
-        return "key " + quoted(key) + " does not start with a letter a-z";
+        return problem("key.start", {std::string(key)});
     for (char ch : key)
         if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_' || ch == '.'))
-            return "key " + quoted(key) + " has a character other than a-z, 0-9, '_', '.'";
+            return problem("key.char", {std::string(key)});
     return {};
 }
 
-std::string Settings::valueError(std::string_view value) {
+Problem settingValueProblem(std::string_view value) {
     if (!utf8::isValid(value))
-        return "value is not valid UTF-8";
+        return problem("value.utf8");
     if (utf8::length(value) > 200)
-        return "value longer than 200 characters";
+        return problem("value.long");
     for (char ch : value) {
         if (ch == '\n' || ch == '\r')
-            return "value spans lines";
+            return problem("value.lines");
         if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t')
-            return "value has a control character";
+            return problem("value.control");
         if (ch == ';')
-            return "value has a ';' (starts a comment in machine files)";
+            return problem("value.semicolon");
     }
     if (!value.empty() && (isBlank(value.front()) || isBlank(value.back())))
-        return "value starts or ends with a blank";
+        return problem("value.blank");
     return {};
 }
+
+std::string Settings::keyError(std::string_view key) { return settingKeyProblem(key).text(); }
+
+std::string Settings::valueError(std::string_view value) { return settingValueProblem(value).text(); }
 
 void Settings::set(std::string_view key, std::string_view value) {
     if (auto e = keyError(key); !e.empty())
@@ -274,37 +279,43 @@ const SimulationKey* findSimulationKey(std::string_view key) {
     return nullptr;
 }
 
-std::string checkSimulationValue(std::string_view key, std::string_view value) {
+Problem simulationValueProblem(std::string_view key, std::string_view value) {
     const SimulationKey* k = findSimulationKey(key);
     if (!k)
         return {};
-    const auto range = [&](double v) -> std::string {
+    const auto range = [&](double v) -> Problem {
         if (v < k->min || v > k->max)
-            return "value " + std::string(value) + " is outside " + formatDouble(k->min) + ".." +
-                   formatDouble(k->max);
+            return problem("value.range", {std::string(value), formatDouble(k->min), formatDouble(k->max)});
         return {};
     };
     switch (k->type) {
     case SettingType::Int: {
         const auto n = parseInt(value);
         if (!n)
-            return "value " + quoted(value) + " is not a whole number";
+            return problem("value.integer", {std::string(value)});
         return range(static_cast<double>(*n));
     }
     case SettingType::Double: {
         const auto d = parseDouble(value);
         if (!d)
-            return "value " + quoted(value) + " is not a number";
+            return problem("value.number", {std::string(value)});
         return range(*d);
     }
     case SettingType::Bool:
         if (!parseBool(value))
-            return "value " + quoted(value) + " is not true/false";
+            return problem("value.bool", {std::string(value)});
         return {};
     case SettingType::String:
-        return key == "line" ? lineError(value) : std::string();
+        if (key == "line")
+            if (std::string e = lineError(value); !e.empty())
+                return problem("value.line", {e});
+        return {};
     }
     return {};
+}
+
+std::string checkSimulationValue(std::string_view key, std::string_view value) {
+    return simulationValueProblem(key, value).text();
 }
 
 } // namespace k528::profile

@@ -15,10 +15,10 @@ namespace k528::profile {
 
 namespace cat = k528::catalog;
 
-FileError::FileError(std::string source, int line, std::string message)
+FileError::FileError(std::string source, int line, Problem problem)
     : std::runtime_error(source + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
-                         message),
-      source_(std::move(source)), line_(line), message_(std::move(message)) {}
+                         problem.text()),
+      source_(std::move(source)), line_(line), message_(problem.text()), problem_(std::move(problem)) {}
 
 namespace {
 
@@ -90,14 +90,11 @@ public:
             lineNo_ = static_cast<int>(i) + 1;
             const std::string_view raw = lines_[i];
             if (!utf8::isValid(raw))
-                fail("not valid UTF-8");
+                fail("file.utf8");
             // An invisible character would make the error below unreadable:
             // name it. (One at the very start of the file is skipped above.)
             if (const auto bom = raw.find("\xEF\xBB\xBF"); bom != std::string_view::npos)
-                fail("column " + std::to_string(utf8::length(raw.substr(0, bom)) + 1) +
-                     ": U+FEFF (byte-order mark), an invisible character; a byte-order mark may "
-                     "stand only at the very start of the file (files joined with `cat`?) — "
-                     "remove it");
+                fail("file.bom", {std::to_string(utf8::length(raw.substr(0, bom)) + 1)});
             const std::string_view line = trim(raw);
             if (line.empty() || line[0] == ';')
                 continue;
@@ -112,29 +109,32 @@ public:
     }
 
 private:
-    [[noreturn]] void fail(const std::string& msg, int line = -1) const {
-        throw FileError(std::string(source_), line < 0 ? lineNo_ : line, msg);
+    [[noreturn]] void fail(Problem p, int line = -1) const {
+        throw FileError(std::string(source_), line < 0 ? lineNo_ : line, std::move(p));
     }
-    void check(const std::string& problem) const {
-        if (!problem.empty())
-            fail(problem);
+    [[noreturn]] void fail(std::string id, std::vector<std::string> args = {}, int line = -1) const {
+        fail(problem(std::move(id), std::move(args)), line);
+    }
+    void check(Problem p) const {
+        if (!p.empty())
+            fail(std::move(p));
     }
     // Records `key` (unique within `scope`); fails if seen before.
     void once(const std::string& key, std::string_view scope = "") {
         const auto [it, inserted] = seen_.emplace(std::string(scope) + "\n" + key, lineNo_);
         if (!inserted)
-            fail(key + " is given twice (first on line " + std::to_string(it->second) + ")");
+            fail("file.twice", {key, std::to_string(it->second)});
     }
 
     // A section header; returns the index of the last line consumed.
     std::size_t header(std::string_view line, std::size_t i) {
         if (line.back() != ']')
-            fail("section header without ']': " + std::string(line));
+            fail("file.header-bracket", {std::string(line)});
         const std::string name(trim(line.substr(1, line.size() - 2)));
         if (name.rfind("program", 0) == 0 && name.size() > 7 && (name[7] == ' ' || name[7] == '\t'))
             return program(name, i);
         if (name == "end program")
-            fail("[end program] without [program N]");
+            fail("file.end-without-program");
         static const std::map<std::string, Section> sections = {
             {"machine", Section::Machine},
             {"c", Section::C},
@@ -145,8 +145,7 @@ private:
         };
         const auto it = sections.find(name);
         if (it == sections.end())
-            fail("unknown section [" + name +
-                 "] (known: machine, c, r, program N, messages, plc-messages, simulation)");
+            fail("file.unknown-section", {name});
         once("[" + name + "]");
         section_ = it->second;
         sectionLine_[section_] = lineNo_;
@@ -157,7 +156,7 @@ private:
         const std::string_view numText = trim(std::string_view(name).substr(7));
         const auto n = parseInt(numText);
         if (!n || *n < 1 || *n > 99)
-            fail("[program N]: N must be a number 1..99, not '" + std::string(numText) + "'");
+            fail("file.program-number", {std::string(numText)});
         const int number = static_cast<int>(*n);
         once("[program " + std::to_string(number) + "]");
         const int headerLine = lineNo_;
@@ -166,32 +165,30 @@ private:
             lineNo_ = static_cast<int>(j) + 1;
             const std::string_view l = lines_[j];
             if (!utf8::isValid(l))
-                fail("not valid UTF-8");
+                fail("file.utf8");
             if (trim(l) == kEndProgram) {
                 if (text.empty())
-                    fail("program " + std::to_string(number) + " is empty", headerLine);
-                const std::string problem = checkProgram(number, text);
-                if (!problem.empty())
-                    fail(problem, headerLine);
+                    fail("file.program-empty", {std::to_string(number)}, headerLine);
+                if (Problem p = programProblem(number, text); !p.empty())
+                    fail(std::move(p), headerLine);
                 p_.programs[number] = std::move(text);
                 section_ = Section::None; // entries after [end program] need a section
                 return j;
             }
             if (trim(l).starts_with('['))
-                fail("a program line may not start with '[' (missing [end program] for program " +
-                     std::to_string(number) + " of line " + std::to_string(headerLine) + "?)");
+                fail("file.program-bracket", {std::to_string(number), std::to_string(headerLine)});
             text.append(l);
             text.push_back('\n');
         }
-        fail("program " + std::to_string(number) + " has no [end program]", headerLine);
+        fail("file.program-unended", {std::to_string(number)}, headerLine);
     }
 
     void entry(std::string_view raw, std::string_view line) {
         std::string_view key, value;
         if (section_ == Section::None)
-            fail("line outside any section: " + std::string(line));
+            fail("file.outside-section", {std::string(line)});
         if (!splitKeyValue(raw, key, value))
-            fail("expected key=value: " + std::string(line));
+            fail("file.no-equals", {std::string(line)});
         switch (section_) {
         case Section::Machine:
             machine(key, trim(value));
@@ -218,21 +215,20 @@ private:
 
     void machine(std::string_view key, std::string_view value) {
         if (key != "format" && key != "name" && key != "title")
-            fail("unknown key '" + std::string(key) + "' in [machine] (format, name, title)");
+            fail("file.machine-key", {std::string(key)});
         once(std::string(key), "machine");
         if (key == "format") {
             const auto v = parseInt(value);
             if (!v)
-                fail("format: '" + std::string(value) + "' is not a number");
+                fail("file.format-nan", {std::string(value)});
             if (*v != kMachineFileFormat)
-                fail("format " + std::string(value) + " is not one this program reads (" +
-                     std::to_string(kMachineFileFormat) + ")");
+                fail("file.format-unknown", {std::string(value), std::to_string(kMachineFileFormat)});
             sawFormat_ = true;
         } else if (key == "name") {
-            check(checkName(value));
+            check(nameProblem(value));
             p_.name = std::string(value);
         } else {
-            check(checkTitle(value));
+            check(titleProblem(value));
             p_.title = std::string(value);
         }
     }
@@ -240,12 +236,12 @@ private:
     void cParam(std::string_view key, std::string_view value) {
         const int n = keyNumber(key, 'C');
         if (n < 1 || n > cat::kCParamCount)
-            fail("unknown key '" + std::string(key) + "' in [c] (C001..C152)");
+            fail("file.c-key", {std::string(key)});
         once(cat::cParam(n).key());
         const auto v = parseInt(value);
         if (!v)
-            fail(cat::cParam(n).key() + ": '" + std::string(value) + "' is not a whole number");
-        check(checkCValue(n, *v));
+            fail("file.not-integer", {cat::cParam(n).key(), std::string(value)});
+        check(cValueProblem(n, *v));
         p_.setC(n, *v);
         cSeen_.insert(n);
     }
@@ -253,23 +249,23 @@ private:
     void rParam(std::string_view key, std::string_view value) {
         const int n = keyNumber(key, 'R');
         if (n < 0 || n >= cat::kRParamCount)
-            fail("unknown key '" + std::string(key) + "' in [r] (R0..R299)");
+            fail("file.r-key", {std::string(key)});
         once("R" + std::to_string(n));
         const auto v = parseInt(value);
         if (!v)
-            fail("R" + std::to_string(n) + ": '" + std::string(value) + "' is not a whole number");
-        check(checkRPreset(n, *v));
+            fail("file.not-integer", {"R" + std::to_string(n), std::string(value)});
+        check(rPresetProblem(n, *v));
         p_.r[n] = *v;
     }
 
     void message(std::string_view key, std::string_view text) {
         const auto n = key.size() >= 2 && key[0] == '#' ? parseInt(key.substr(1)) : std::nullopt;
         if (!n || key[1] == '+' || key[1] == '-')
-            fail("expected #k=text in [messages], not '" + std::string(key) + "'");
+            fail("file.message-key", {std::string(key)});
         if (*n < 1 || *n > cat::kTechMessageCount)
-            fail("message number " + std::string(key) + " is outside #1..#99");
+            fail("file.message-number", {std::string(key)});
         once("#" + std::to_string(*n));
-        check(checkMessage(static_cast<int>(*n), text));
+        check(messageProblem(static_cast<int>(*n), text));
         p_.messages[static_cast<int>(*n)] = std::string(text);
     }
 
@@ -283,19 +279,17 @@ private:
         else if (letter == 'S')
             g = cat::PlcGroup::System;
         else
-            fail("expected A01..A32, W01..W32 or S01..S16 in [plc-messages], not '" +
-                 std::string(key) + "'");
+            fail("file.plc-key", {std::string(key)});
         const auto k = parseInt(key.substr(1));
         if (!k || key[1] == '+' || key[1] == '-' || *k < 1 || *k > cat::plcMessageCount(g))
-            fail("PLC message '" + std::string(key) + "': the number must be 1.." +
-                 std::to_string(cat::plcMessageCount(g)));
+            fail("file.plc-number", {std::string(key), std::to_string(cat::plcMessageCount(g))});
         once(std::string(1, letter) + two(static_cast<int>(*k)));
-        check(checkPlcText(g, static_cast<int>(*k), text));
+        check(plcTextProblem(g, static_cast<int>(*k), text));
         p_.plcTexts(g)[static_cast<int>(*k)] = std::string(text);
     }
 
     void setting(std::string_view key, std::string_view value) {
-        check(checkSetting(key, value));
+        check(settingProblem(key, value));
         once(std::string(key), "simulation");
         p_.simulation.set(key, value);
     }
@@ -303,14 +297,14 @@ private:
     void finish() {
         lineNo_ = static_cast<int>(lines_.size());
         if (!sectionLine_.contains(Section::Machine))
-            fail("no [machine] section", 0);
+            fail("file.no-machine", {}, 0);
         const int machineLine = sectionLine_[Section::Machine];
         if (!sawFormat_)
-            fail("[machine] has no format=" + std::to_string(kMachineFileFormat), machineLine);
+            fail("file.no-format", {std::to_string(kMachineFileFormat)}, machineLine);
         if (p_.name.empty())
-            fail("[machine] has no name=", machineLine);
+            fail("file.no-name", {}, machineLine);
         if (!sectionLine_.contains(Section::C))
-            fail("no [c] section (the 152 machine constants)", 0);
+            fail("file.no-c", {}, 0);
         if (cSeen_.size() != static_cast<std::size_t>(cat::kCParamCount)) {
             std::string missing;
             int count = 0;
@@ -321,8 +315,8 @@ private:
                     missing += (missing.empty() ? "" : ", ") + cat::cParam(n).key();
             }
             if (count > 8)
-                missing += " and " + std::to_string(count - 8) + " more";
-            fail("[c] lacks " + missing + " (all 152 are required)", sectionLine_[Section::C]);
+                fail("file.c-lacks-more", {missing, std::to_string(count - 8)}, sectionLine_[Section::C]);
+            fail("file.c-lacks", {missing}, sectionLine_[Section::C]);
         }
     }
 
@@ -409,18 +403,18 @@ std::string writeMachineText(const MachineProfile& p) {
 MachineProfile readMachineFile(const std::filesystem::path& path) {
     std::string text, error, reason;
     if (!util::readInputFile(path.string(), text, error, util::kMaxInputBytes, &reason))
-        throw FileError(path.string(), 0, "cannot read the file: " + reason);
+        throw FileError(path.string(), 0, problem("file.cannot-read", {reason}));
     return readMachineText(text, path.string());
 }
 
 void writeMachineFile(const std::filesystem::path& path, const MachineProfile& p) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out)
-        throw FileError(path.string(), 0, "cannot create the file");
+        throw FileError(path.string(), 0, problem("file.cannot-create"));
     out << writeMachineText(p);
     out.flush();
     if (!out)
-        throw FileError(path.string(), 0, "cannot write the file");
+        throw FileError(path.string(), 0, problem("file.cannot-write"));
 }
 
 std::string programsFileText(const MachineProfile& p) {

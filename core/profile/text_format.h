@@ -29,6 +29,7 @@
 // may prepare a machine with a wrong N ДОС on purpose.
 #pragma once
 
+#include "profile/problem.h"
 #include "profile/profile.h"
 
 #include <filesystem>
@@ -41,18 +42,21 @@ namespace k528::profile {
 inline constexpr int kMachineFileFormat = 1;
 
 // A machine file (or CSV) that cannot be read. what() is
-// "<source>:<line>: <message>" (or "<source>: <message>" when line is 0).
+// "<source>:<line>: <message>" (or "<source>: <message>" when line is 0);
+// problem() is the message as an id and its arguments (problem.h).
 class FileError : public std::runtime_error {
 public:
-    FileError(std::string source, int line, std::string message);
+    FileError(std::string source, int line, Problem problem);
     const std::string& source() const { return source_; }
     int line() const { return line_; } // 1-based, 0 when not about one line
-    const std::string& message() const { return message_; }
+    const std::string& message() const { return message_; } // English
+    const Problem& problem() const { return problem_; }
 
 private:
     std::string source_;
     int line_;
     std::string message_;
+    Problem problem_;
 };
 
 // `source` names the text in errors (a file name, "grinder-205", "<db>").

@@ -50,6 +50,15 @@ std::string Tool::orientation() const {
     return std::string(zDirection > 0 ? "+z" : "-z") + (xDirection > 0 ? "+x" : "-x");
 }
 
+namespace {
+// "simulation <key>: <what>".
+Problem setting(const std::string& key, Problem what) {
+    Problem p = problem("setting.value", {key});
+    p.within.push_back(std::move(what));
+    return p;
+}
+} // namespace
+
 std::vector<Tool> tools(const MachineProfile& p) {
     std::vector<Tool> out;
     for (int st = 1; st <= kMaxToolStations; ++st) {
@@ -57,15 +66,13 @@ std::vector<Tool> tools(const MachineProfile& p) {
             continue;
         Tool t;
         t.station = st;
-        const auto fail = [&](std::string_view k, const std::string& why) {
-            throw ToolError("simulation " + key(st, k) + ": " + why);
+        const auto fail = [&](std::string_view k, std::string id, std::vector<std::string> args = {}) {
+            throw ToolError(setting(key(st, k), problem(std::move(id), std::move(args))));
         };
         const std::string kind = p.simulation.getString(key(st, "kind"), "");
         const auto k = parseToolKind(kind);
         if (!k)
-            fail("kind", "'" + kind +
-                             "' is not a tool kind (turning, facing, grooving, boring, drill, "
-                             "threading)");
+            fail("kind", "tool.kind", {kind});
         t.kind = *k;
         t.name = p.simulation.getString(key(st, "name"), "");
         try {
@@ -75,25 +82,25 @@ std::vector<Tool> tools(const MachineProfile& p) {
             t.maxDepthMm = p.simulation.getDouble(key(st, "max_depth_mm"), 0);
             t.offsetR = static_cast<int>(p.simulation.getInt(key(st, "offset_r"), -1));
         } catch (const SettingError& e) {
-            throw ToolError(e.what());
+            throw ToolError(problem("tool.value", {e.what()}));
         }
         const std::string o =
             p.simulation.getString(key(st, "orientation"), t.kind == ToolKind::Boring ? "+z-x" : "+z+x");
         if (o.size() != 4 || (o[0] != '+' && o[0] != '-') || o[1] != 'z' ||
             (o[2] != '+' && o[2] != '-') || o[3] != 'x')
-            fail("orientation", "'" + o + "' is not one of +z+x, -z+x, +z-x, -z-x");
+            fail("orientation", "tool.orientation", {o});
         t.zDirection = o[0] == '+' ? 1 : -1;
         t.xDirection = o[2] == '+' ? 1 : -1;
         if (t.tipRadiusMm < 0 || t.tipRadiusMm > 50)
-            fail("tip_radius_mm", "needs 0..50 mm");
+            fail("tip_radius_mm", "tool.tip-radius");
         if (t.widthMm <= 0 || t.widthMm > 1000)
-            fail("width_mm", "needs more than 0, at most 1000 mm");
+            fail("width_mm", "tool.size");
         if (t.heightMm <= 0 || t.heightMm > 1000)
-            fail("height_mm", "needs more than 0, at most 1000 mm");
+            fail("height_mm", "tool.size");
         if (t.maxDepthMm < 0 || t.maxDepthMm > 100)
-            fail("max_depth_mm", "needs 0..100 mm (0: no limit)");
+            fail("max_depth_mm", "tool.depth");
         if (t.offsetR != -1 && (t.offsetR < 0 || t.offsetR > 148 || t.offsetR + 1 > 149))
-            fail("offset_r", "needs a user R-parameter 0..148 (X there, Z in the next)");
+            fail("offset_r", "tool.offset");
         out.push_back(t);
     }
     for (const auto& [k, v] : p.simulation.entries()) {
@@ -103,14 +110,12 @@ std::vector<Tool> tools(const MachineProfile& p) {
         const std::string st = k.substr(5, dot == std::string::npos ? std::string::npos : dot - 5);
         const auto n = parseInt(st);
         if (!n || *n < 1 || *n > kMaxToolStations || dot == std::string::npos)
-            throw ToolError("simulation " + k + ": a tool key is tool.<station 1..8>.<key>");
+            throw ToolError(setting(k, problem("tool.key")));
         const std::string_view field = std::string_view(k).substr(dot + 1);
         if (std::find(kKeys.begin(), kKeys.end(), field) == kKeys.end())
-            throw ToolError("simulation " + k + ": '" + std::string(field) +
-                            "' is not a key of a tool");
+            throw ToolError(setting(k, problem("tool.field", {std::string(field)})));
         if (!p.simulation.has(key(static_cast<int>(*n), "kind")))
-            throw ToolError("simulation " + k + ": the tool of station " + st +
-                            " has no kind (tool." + st + ".kind)");
+            throw ToolError(setting(k, problem("tool.no-kind", {st})));
     }
     return out;
 }

@@ -21,6 +21,7 @@
 // K528-05 does it: it has no tool table of its own.
 #pragma once
 
+#include "profile/problem.h"
 #include "profile/profile.h"
 
 #include <optional>
@@ -52,8 +53,13 @@ struct Tool {
 
 inline constexpr int kMaxToolStations = 8;
 
+// what() is the English of problem() (problem.h).
 struct ToolError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit ToolError(Problem p) : std::runtime_error(p.text()), problem_(std::move(p)) {}
+    const Problem& problem() const { return problem_; }
+
+private:
+    Problem problem_;
 };
 
 // The tools of a profile's settings, by station; throws ToolError naming the

@@ -1,5 +1,7 @@
 #include "profile/validate.h"
 
+#include "profile/problem.h"
+
 #include "catalog/rparams.h"
 #include "util/utf8.h"
 
@@ -43,24 +45,31 @@ std::string range(const cat::CParamDef& d) {
     return num(d.min) + "..." + num(d.max);
 }
 
-// Text checks shared by messages, PLC texts and titles: "" or the problem.
-std::string lineTextError(std::string_view text, std::size_t maxChars, bool allowLeadingBlank) {
+// Text checks shared by messages, PLC texts and titles: none or the problem.
+Problem lineTextProblem(std::string_view text, std::size_t maxChars, bool allowLeadingBlank) {
     if (text.empty())
-        return "text is empty";
+        return problem("text.empty");
     if (!utf8::isValid(text))
-        return "text is not valid UTF-8";
+        return problem("text.utf8");
     for (char ch : text)
         if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
-            return "text has a control character or line break";
+            return problem("text.control");
     const std::size_t len = utf8::length(text);
     if (len > maxChars)
-        return "text has " + std::to_string(len) + " characters, more than " +
-               std::to_string(maxChars);
+        return problem("text.long", {std::to_string(len), std::to_string(maxChars)});
     if (text.back() == ' ')
-        return "text ends with a blank";
+        return problem("text.trailing-blank");
     if (!allowLeadingBlank && text.front() == ' ')
-        return "text starts with a blank";
+        return problem("text.leading-blank");
     return {};
+}
+
+// `outer` naming the part whose problem is `inner` (none when it has none).
+Problem within(Problem outer, Problem inner) {
+    if (inner.empty())
+        return {};
+    outer.within.push_back(std::move(inner));
+    return outer;
 }
 
 struct Collector {
@@ -311,61 +320,58 @@ std::optional<int> programHeaderNumber(std::string_view line) {
     return n;
 }
 
-std::string checkName(std::string_view name) {
+Problem nameProblem(std::string_view name) {
     if (name.empty())
-        return "name is empty";
+        return problem("name.empty");
     if (name.size() > 64)
-        return "name longer than 64 characters";
+        return problem("name.long");
     const auto alnum = [](char ch) { return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9'); };
     if (!alnum(name[0]))
-        return "name '" + std::string(name) + "' does not start with a-z or 0-9";
+        return problem("name.start", {std::string(name)});
     for (char ch : name)
         if (!alnum(ch) && ch != '-' && ch != '_' && ch != '.')
-            return "name '" + std::string(name) +
-                   "' has a character other than a-z, 0-9, '-', '_', '.'";
+            return problem("name.char", {std::string(name)});
     return {};
 }
 
-std::string checkTitle(std::string_view title) {
+Problem titleProblem(std::string_view title) {
     if (title.empty())
         return {};
-    auto e = lineTextError(title, 120, false);
-    return e.empty() ? e : "title: " + e;
+    return within(problem("title"), lineTextProblem(title, 120, false));
 }
 
-std::string checkCValue(int number, std::int64_t value) {
+Problem cValueProblem(int number, std::int64_t value) {
     const cat::CParamDef* d = cat::findCParam(number);
     if (!d)
-        return "no C-parameter " + std::to_string(number) + " (1..152)";
+        return problem("c.none", {std::to_string(number)});
     if (!d->inRange(value))
-        return d->key() + " = " + num(value) + " is outside the range " + range(*d) + " of «" +
-               std::string(d->name) + "»";
+        return problem("c.range", {d->key(), num(value), range(*d), std::string(d->name)});
     return {};
 }
 
-std::string checkRPreset(int number, std::int64_t value) {
+Problem rPresetProblem(int number, std::int64_t value) {
     const cat::RParamDef* d = cat::findRParam(number);
     if (!d)
-        return "no R-parameter " + std::to_string(number) + " (0..299)";
+        return problem("r.none", {std::to_string(number)});
     if (d->readOnly())
-        return "R" + std::to_string(number) + " is read-only (R232..R262): it cannot be preset";
+        return problem("r.read-only", {std::to_string(number)});
     if (value < cat::kRMin || value > cat::kRMax)
-        return "R" + std::to_string(number) + " = " + num(value) + " is outside the 32-bit range";
+        return problem("r.range", {std::to_string(number), num(value)});
     return {};
 }
 
-std::string checkProgram(int number, std::string_view text) {
+Problem programProblem(int number, std::string_view text) {
     if (number < 1 || number > 99)
-        return "program number " + std::to_string(number) + " is outside 1..99";
-    const std::string l = "program L" + std::to_string(number) + ": ";
+        return problem("program.number", {std::to_string(number)});
+    const std::string l = std::to_string(number);
     if (text.empty())
-        return l + "empty";
+        return problem("program.empty", {l});
     if (!utf8::isValid(text))
-        return l + "not valid UTF-8";
+        return problem("program.utf8", {l});
     if (text.back() != '\n')
-        return l + "the text does not end with a line break";
+        return problem("program.no-line-break", {l});
     if (text.find('\r') != std::string_view::npos)
-        return l + "carriage return in the text (lines end with LF)";
+        return problem("program.carriage-return", {l});
     std::size_t pos = 0;
     int lineNo = 0;
     bool nonBlank = false;
@@ -376,50 +382,55 @@ std::string checkProgram(int number, std::string_view text) {
         pos = end + 1;
         const auto firstChar = line.find_first_not_of(" \t");
         if (firstChar != std::string_view::npos && line[firstChar] == '[')
-            return l + "line " + std::to_string(lineNo) +
-                   " starts with '[' (reserved for machine-file sections)";
+            return problem("program.bracket", {l, std::to_string(lineNo)});
         if (line.find_first_not_of(" \t") != std::string_view::npos)
             nonBlank = true;
         if (auto h = programHeaderNumber(line); h && *h != number)
-            return l + "line " + std::to_string(lineNo) + " is the header of program L" +
-                   std::to_string(*h) + " (one program per entry)";
+            return problem("program.header", {l, std::to_string(lineNo), std::to_string(*h)});
         std::string up = utf8::toUpper(line);
         const auto first = up.find_first_not_of(" \t");
         if (first != std::string::npos && up.compare(first, 9, "%MESSAGES") == 0)
-            return l + "line " + std::to_string(lineNo) +
-                   ": %MESSAGES belongs to the machine file's [messages] section";
+            return problem("program.messages", {l, std::to_string(lineNo)});
     }
     if (!nonBlank)
-        return l + "only blank lines";
+        return problem("program.blank", {l});
     return {};
 }
 
-std::string checkMessage(int number, std::string_view text) {
+Problem messageProblem(int number, std::string_view text) {
     if (number < 1 || number > cat::kTechMessageCount)
-        return "technological message number " + std::to_string(number) + " is outside 1..99";
-    auto e = lineTextError(text, cat::kTechMessageMaxChars, true);
-    return e.empty() ? e : "message #" + std::to_string(number) + ": " + e;
+        return problem("message.number", {std::to_string(number)});
+    return within(problem("message.text", {std::to_string(number)}),
+                  lineTextProblem(text, cat::kTechMessageMaxChars, true));
 }
 
-std::string checkPlcText(cat::PlcGroup group, int k, std::string_view text) {
+Problem plcTextProblem(cat::PlcGroup group, int k, std::string_view text) {
     const int count = cat::plcMessageCount(group);
     const std::string key =
         std::string(1, cat::plcGroupLetter(group)) + (k < 10 ? "0" : "") + std::to_string(k);
     if (k < 1 || k > count)
-        return "PLC message " + key + " is outside 1.." + std::to_string(count);
-    auto e = lineTextError(text, cat::kPlcMessageMaxChars, true);
-    return e.empty() ? e : "PLC message " + key + ": " + e;
+        return problem("plc.number", {key, std::to_string(count)});
+    return within(problem("plc.text", {key}), lineTextProblem(text, cat::kPlcMessageMaxChars, true));
 }
 
-std::string checkSetting(std::string_view key, std::string_view value) {
-    if (auto e = Settings::keyError(key); !e.empty())
-        return "simulation: " + e;
-    if (auto e = Settings::valueError(value); !e.empty())
-        return "simulation " + std::string(key) + ": " + e;
-    if (auto e = checkSimulationValue(key, value); !e.empty())
-        return "simulation " + std::string(key) + ": " + e;
-    return {};
+Problem settingProblem(std::string_view key, std::string_view value) {
+    if (Problem e = settingKeyProblem(key); !e.empty())
+        return within(problem("setting.key"), std::move(e));
+    if (Problem e = settingValueProblem(value); !e.empty())
+        return within(problem("setting.value", {std::string(key)}), std::move(e));
+    return within(problem("setting.value", {std::string(key)}), simulationValueProblem(key, value));
 }
+
+std::string checkName(std::string_view name) { return nameProblem(name).text(); }
+std::string checkTitle(std::string_view title) { return titleProblem(title).text(); }
+std::string checkCValue(int number, std::int64_t value) { return cValueProblem(number, value).text(); }
+std::string checkRPreset(int number, std::int64_t value) { return rPresetProblem(number, value).text(); }
+std::string checkProgram(int number, std::string_view text) { return programProblem(number, text).text(); }
+std::string checkMessage(int number, std::string_view text) { return messageProblem(number, text).text(); }
+std::string checkPlcText(cat::PlcGroup group, int k, std::string_view text) {
+    return plcTextProblem(group, k, text).text();
+}
+std::string checkSetting(std::string_view key, std::string_view value) { return settingProblem(key, value).text(); }
 
 std::vector<Finding> validate(const MachineProfile& p) {
     std::vector<Finding> out = checkCParams(p.cValues(), &p.programs);

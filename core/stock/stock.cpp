@@ -73,61 +73,91 @@ std::string fmt(double v) {
     std::snprintf(b, sizeof b, "%.6g", v);
     return b;
 }
+
+constexpr UcgText kUcgTexts[] = {
+    UcgText{"expected", "expected UCG"},
+    UcgText{"type", "expected the type N after UCG,"},
+    UcgText{"z", "expected Z<outer length>Z<bore length>"},
+    UcgText{"x", "expected X<outer diameter>X<bore diameter>"},
+    UcgText{"s", "expected S<outer angle>S<bore angle>"},
+    UcgText{"direction", "the direction is 0 or 1"},
+    UcgText{"detail", "the detail is -1..-5"},
+    UcgText{"small", "the blank is smaller than 0.01 mm"},
+    UcgText{"bore-sign", "the bore length has the sign of the outer length"},
+    UcgText{"bore-long", "the bore is longer than the blank"},
+    UcgText{"bore-diameter", "the bore diameter is 0..the outer diameter"},
+    UcgText{"cone", "cone angles are within ±90°"},
+    UcgText{kNoUcg, "no UCG in the file"},
+};
+
+std::string_view ucgEnglish(std::string_view id) {
+    for (const UcgText& t : kUcgTexts)
+        if (t.id == id)
+            return t.en;
+    return id;
+}
+
 } // namespace
 
-std::optional<Blank> parseUcg(std::string_view s, std::string* error) {
-    const auto fail = [&](const char* why) -> std::optional<Blank> {
+std::span<const UcgText> ucgTexts() { return kUcgTexts; }
+
+std::optional<Blank> parseUcg(std::string_view s, std::string* error, std::string* errorId) {
+    const auto fail = [&](std::string_view id) -> std::optional<Blank> {
         if (error)
-            *error = std::string("UCG: ") + why;
+            *error = "UCG: " + std::string(ucgEnglish(id));
+        if (errorId)
+            *errorId = std::string(id);
         return std::nullopt;
     };
     std::size_t i = 0;
     while (i < s.size() && s[i] == ' ')
         ++i;
     if (s.substr(i, 3) != "UCG" && s.substr(i, 3) != "ucg")
-        return fail("expected UCG");
+        return fail("expected");
     i += 3;
     double n = 0;
     if (!comma(s, i) || !number(s, i, n))
-        return fail("expected the type N after UCG,");
+        return fail("type");
     Blank b;
     if (!comma(s, i) || !letterPair(s, i, 'Z', b.outerLengthMm, b.boreLengthMm))
-        return fail("expected Z<outer length>Z<bore length>");
+        return fail("z");
     if (!comma(s, i) || !letterPair(s, i, 'X', b.outerDiameterMm, b.boreDiameterMm))
-        return fail("expected X<outer diameter>X<bore diameter>");
+        return fail("x");
     if (!comma(s, i) || !letterPair(s, i, 'S', b.outerAngleDeg, b.boreAngleDeg))
-        return fail("expected S<outer angle>S<bore angle>");
+        return fail("s");
     double dir = 0, detail = -5;
     if (comma(s, i)) {
         if (!number(s, i, dir) || (dir != 0 && dir != 1))
-            return fail("the direction is 0 or 1");
+            return fail("direction");
         if (comma(s, i) && (!number(s, i, detail) || detail > -1 || detail < -5))
-            return fail("the detail is -1..-5");
+            return fail("detail");
     }
     b.direction = static_cast<int>(dir);
     b.detail = static_cast<int>(detail);
     if (std::fabs(b.outerLengthMm) < 0.01 || b.outerDiameterMm < 0.01)
-        return fail("the blank is smaller than 0.01 mm");
+        return fail("small");
     if (b.boreLengthMm != 0 && (b.boreLengthMm > 0) != (b.outerLengthMm > 0))
-        return fail("the bore length has the sign of the outer length");
+        return fail("bore-sign");
     if (std::fabs(b.boreLengthMm) > std::fabs(b.outerLengthMm))
-        return fail("the bore is longer than the blank");
+        return fail("bore-long");
     if (b.boreDiameterMm < 0 || b.boreDiameterMm >= b.outerDiameterMm)
-        return fail("the bore diameter is 0..the outer diameter");
+        return fail("bore-diameter");
     if (std::fabs(b.outerAngleDeg) >= 90 || std::fabs(b.boreAngleDeg) >= 90)
-        return fail("cone angles are within ±90°");
+        return fail("cone");
     return b;
 }
 
-std::optional<Blank> findUcg(std::string_view text, std::string* error) {
+std::optional<Blank> findUcg(std::string_view text, std::string* error, std::string* errorId) {
     for (std::size_t p = 0; (p = text.find("UCG", p)) != std::string_view::npos; ++p) {
         std::size_t end = text.find_first_of(")\n\r", p);
         const std::string_view candidate = text.substr(p, end == std::string_view::npos ? text.size() - p : end - p);
         if (candidate.size() > 3 && candidate.find(',') != std::string_view::npos)
-            return parseUcg(candidate, error);
+            return parseUcg(candidate, error, errorId);
     }
     if (error)
-        *error = "no UCG in the file";
+        *error = std::string(ucgEnglish(kNoUcg));
+    if (errorId)
+        *errorId = std::string(kNoUcg);
     return std::nullopt;
 }
 

@@ -26,6 +26,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,10 +44,20 @@ struct Blank {
 };
 
 // Parses "UCG,2,Z-100Z0,X200X0,S0S0,0,-5" (spaces allowed); nullopt with
-// `error` set when malformed.
-std::optional<Blank> parseUcg(std::string_view text, std::string* error = nullptr);
-// The first `UCG,` of a program file's text (in a comment), if any.
-std::optional<Blank> findUcg(std::string_view fileText, std::string* error = nullptr);
+// `error` set when malformed ("UCG: " and the English of ucgTexts()) and
+// `errorId` to its id, which a display translates.
+std::optional<Blank> parseUcg(std::string_view text, std::string* error = nullptr,
+                              std::string* errorId = nullptr);
+// The first `UCG,` of a program file's text (in a comment), if any; without
+// one, the error's id is kNoUcg.
+std::optional<Blank> findUcg(std::string_view fileText, std::string* error = nullptr,
+                             std::string* errorId = nullptr);
+inline constexpr std::string_view kNoUcg = "none";
+// What can be wrong with a UCG line: an id and its English.
+struct UcgText {
+    std::string_view id, en;
+};
+std::span<const UcgText> ucgTexts();
 std::string formatUcg(const Blank& b);
 
 struct PointZR {

@@ -1,4 +1,5 @@
 #include "constants/constants_dialogs.h"
+#include "session/core_texts.h"
 
 #include "catalog/cparams.h"
 #include "session/shop_database.h"
@@ -71,7 +72,7 @@ HistoryDialog::HistoryDialog(const MachineStore& store, int number, QWidget* par
                                     fromStd(e.author),
                                     e.change.before ? fromStd(*e.change.before) : tr("(none)"),
                                     e.change.after ? fromStd(*e.change.after) : tr("(none)"),
-                                    fromStd(notes[e.revision])};
+                                    revisionNoteText(notes[e.revision])};
             for (int c = 0; c < cells.size(); ++c)
                 table_->setItem(i, c, new QTableWidgetItem(cells[c]));
         }

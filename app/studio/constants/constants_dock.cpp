@@ -1,4 +1,6 @@
 #include "constants/constants_dock.h"
+#include "db/notes.h"
+#include "session/core_texts.h"
 #include "constants/constants_follow.h"
 
 #include "catalog/cparams.h"
@@ -11,7 +13,6 @@
 #include "controller/controller.h"
 #include "controller/push_preview.h"
 #include "controller/view_notice.h"
-#include "util/input_file.h"
 #include "widgets.h"
 #include "workspace/pane_dock.h"
 
@@ -381,11 +382,9 @@ void ConstantsPane::importFile(const QString& path) {
     const QString file = QFileInfo(path).fileName();
     runLong(tr("Importing %1").arg(file), [store, path, file](std::function<void(int, int)> progress) {
         LongResult r;
-        std::string text, err;
-        if (!util::readInputFile(path.toStdString(), text, err)) {
-            r.error = QString::fromStdString(err);
+        std::string text;
+        if (!readTextFile(path, text, r.error))
             return r;
-        }
         const bool csv = path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive) ||
                          text.rfind("number;", 0) == 0 || text.rfind("\xEF\xBB\xBFnumber;", 0) == 0;
         profile::MachineProfile p;
@@ -399,11 +398,11 @@ void ConstantsPane::importFile(const QString& path) {
                 p = profile::readMachineText(text, file.toStdString());
             }
         } catch (const std::exception& e) {
-            r.error = QString::fromUtf8(e.what());
+            r.error = coreErrorText(e);
             return r;
         }
         const MachineStore::Kept k = store.keepProfile(
-            p, QStringLiteral("import %1 (K528 Studio)").arg(file),
+            p, QString::fromStdString(db::noteText({"studio.import", {file.toStdString()}})),
             [&progress](std::size_t done, std::size_t total) {
                 progress(static_cast<int>(done), static_cast<int>(total));
             });
@@ -464,7 +463,7 @@ void ConstantsPane::exportFile(const QString& path) {
                 return r;
             }
         } catch (const std::exception& e) {
-            r.error = QString::fromUtf8(e.what());
+            r.error = coreErrorText(e);
             return r;
         }
         r.message = ConstantsPane::tr("The constants written to %1").arg(file);
@@ -502,7 +501,7 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
             r.message = ConstantsPane::tr("Changes: %1").arg(changes.size());
             promise.setProgressValue(3);
         } catch (const std::exception& e) {
-            r.error = QString::fromUtf8(e.what());
+            r.error = coreErrorText(e);
         }
         promise.addResult(r);
     });

@@ -1,4 +1,5 @@
 #include "constants/constants_follow.h"
+#include "session/core_texts.h"
 
 #include "constants/constants_dialogs.h"
 #include "constants/constants_dock.h"
@@ -91,7 +92,7 @@ void ConstantsFollow::elsewhere(const RevisionElsewhere& r) {
         revision = revisions.front().revision;
         p = store.load(revision);
     } catch (const std::exception& e) {
-        pane_.tell(r.text() + QStringLiteral("; ") + QString::fromUtf8(e.what()), true);
+        pane_.tell(r.text() + QStringLiteral("; ") + coreErrorText(e), true);
         return;
     }
     const auto shown = editor.values();

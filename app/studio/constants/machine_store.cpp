@@ -1,4 +1,6 @@
 #include "constants/machine_store.h"
+#include "db/notes.h"
+#include "session/core_texts.h"
 
 #include "session/shop_database.h"
 
@@ -23,7 +25,7 @@ void MachineStore::ensureMachine(db::Database& d) const {
     if (d.hasMachine(base_.name))
         return;
     db::WriteOptions o;
-    o.summary = "the machine as K528 Studio loaded it";
+    o.summary = db::noteText({"studio.loaded", {}});
     o.action = "create";
     o.allowErrors = true; // a trainer's faulty machine is stored as it ran
     const db::SaveResult r = d.createMachine(base_, o);
@@ -53,7 +55,7 @@ MachineStore::Kept MachineStore::keep(const db::Edit& edit, const QString& note,
             setKnown(r.revision);
         });
     } catch (const db::Error& e) {
-        k.error = databaseErrorText(e);
+        k.error = coreErrorText(e);
         if (e.kind() == db::ErrorKind::Conflict) {
             k.conflict = true;
             try {
@@ -66,14 +68,14 @@ MachineStore::Kept MachineStore::keep(const db::Edit& edit, const QString& note,
                                                                "revision %1 by %2 at %3: %4\n")
                                        .arg(r.revision)
                                        .arg(QString::fromStdString(r.author), QString::fromStdString(r.at),
-                                            QString::fromStdString(r.summary));
+                                            revisionNoteText(r.summary));
                     }
                 });
             } catch (const std::exception&) {
             }
         }
     } catch (const std::exception& e) {
-        k.error = databaseErrorText(e);
+        k.error = coreErrorText(e);
     }
     return k;
 }
@@ -96,13 +98,8 @@ MachineStore::Kept MachineStore::keepProfile(profile::MachineProfile p, const QS
                 ShopDatabase::at()->noteOwn(base_.name, r.revision);
             setKnown(r.revision);
         });
-    } catch (const db::ValidationError& e) {
-        std::string text = e.what();
-        for (const profile::Finding& f : e.findings())
-            text += "\n" + profile::formatFinding(f);
-        k.error = QString::fromStdString(text);
     } catch (const std::exception& e) {
-        k.error = databaseErrorText(e);
+        k.error = coreErrorText(e); // a file's or the cross-checks' refusal, or the database's
     }
     return k;
 }

@@ -1,4 +1,5 @@
 #include "controller/controller_dock.h"
+#include "session/core_texts.h"
 
 #include "controller/link_controller.h"
 #include "controller/push_preview.h"
@@ -459,7 +460,7 @@ void ControllerDock::pushFile(const QString& given) {
     try {
         file = profile::readMachineFile(path.toStdString());
     } catch (const std::exception& e) {
-        say(tr("%1 cannot be pushed: %2; nothing was sent").arg(path, QString::fromUtf8(e.what())));
+        say(tr("%1 cannot be pushed: %2; nothing was sent").arg(path, coreErrorText(e)));
         emit transferFinished(false, lastMessage_);
         return;
     }
@@ -481,7 +482,7 @@ void ControllerDock::pushMachine(const QString& name) {
         startPush(sent.file, name);
         pendingLeftOut_ = sent.leftOut;
     } catch (const std::exception& e) {
-        say(tr("The machine %1 cannot be loaded: %2").arg(name, QString::fromUtf8(e.what())));
+        say(tr("The machine %1 cannot be loaded: %2").arg(name, coreErrorText(e)));
         emit transferFinished(false, lastMessage_);
     }
 }

@@ -1,4 +1,5 @@
 #include "database/database_ui.h"
+#include "session/core_texts.h"
 
 #include "db/database.h"
 #include "db/location.h"
@@ -282,7 +283,7 @@ void DatabaseWatch::check() {
                         if (shop->isOwn(name, r.revision))
                             continue;
                         seen.push_back({fromStd(name), r.revision, fromStd(r.author), fromStd(r.at),
-                                        fromStd(r.summary)});
+                                        revisionNoteText(r.summary)});
                         break; // the newest one made elsewhere
                     }
                 }

@@ -1,4 +1,5 @@
 #include "editor/database_programs.h"
+#include "db/notes.h"
 
 #include "db/database.h"
 #include "db/error.h"
@@ -138,7 +139,7 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
         for (const program::Message& m : parsed.store.messages.entries)
             p.messages[m.number] = m.text;
         db::WriteOptions o;
-        o.summary = "programs and messages from the editor (K528 Studio)";
+        o.summary = db::noteText({"studio.editor", {}});
         o.expectedRevision = expectedRevision;
         o.allowErrors = true; // the constants are not what this writes
         const db::SaveResult r = shop->use([&](db::Database& d) { return d.saveMachine(name, p, o); });

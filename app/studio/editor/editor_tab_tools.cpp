@@ -3,6 +3,7 @@
 // is checked for, and database machines' programs. Kept apart from
 // editor_tab.cpp, which holds the files, tabs and lists.
 #include "editor/database_programs.h"
+#include "session/core_texts.h"
 #include "editor/editor_tab.h"
 #include "editor/program_releases.h"
 #include "editor/listing.h"
@@ -119,7 +120,7 @@ void EditorTab::applyMachine(ProgramEditor* ed) {
             program::ProgramStore programs = engine::loadStore(c.profile, intact);
             ed->setMachine(c.profile, std::move(programs));
         } catch (const std::exception& e) {
-            emit statusMessage(tr("The machine %1 cannot be loaded: %2").arg(choice, QString::fromUtf8(e.what())));
+            emit statusMessage(tr("The machine %1 cannot be loaded: %2").arg(choice, coreErrorText(e)));
             ed->setMachine(std::nullopt);
         }
     }

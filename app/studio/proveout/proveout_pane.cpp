@@ -1,4 +1,5 @@
 #include "proveout/proveout_pane.h"
+#include "session/core_texts.h"
 
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
@@ -45,23 +46,51 @@ struct ProveoutPane::Output {
 
 namespace {
 
+// What is wrong with a UCG line (stock::ucgTexts), in the window's language.
+QString ucgErrorText(const std::string& id) {
+    struct Entry {
+        const char* id;
+        QString text;
+    };
+    const Entry table[] = {
+        {"expected", ProveoutPane::tr("expected UCG")},
+        {"type", ProveoutPane::tr("expected the type N after UCG,")},
+        {"z", ProveoutPane::tr("expected Z<outer length>Z<bore length>")},
+        {"x", ProveoutPane::tr("expected X<outer diameter>X<bore diameter>")},
+        {"s", ProveoutPane::tr("expected S<outer angle>S<bore angle>")},
+        {"direction", ProveoutPane::tr("the direction is 0 or 1")},
+        {"detail", ProveoutPane::tr("the detail is -1..-5")},
+        {"small", ProveoutPane::tr("the blank is smaller than 0.01 mm")},
+        {"bore-sign", ProveoutPane::tr("the bore length has the sign of the outer length")},
+        {"bore-long", ProveoutPane::tr("the bore is longer than the blank")},
+        {"bore-diameter", ProveoutPane::tr("the bore diameter is 0..the outer diameter")},
+        {"cone", ProveoutPane::tr("cone angles are within ±90°")},
+    };
+    for (const Entry& e : table)
+        if (id == e.id)
+            return QStringLiteral("UCG: ") + e.text;
+    for (const stock::UcgText& t : stock::ucgTexts())
+        if (t.id == id)
+            return QStringLiteral("UCG: ") + QString::fromUtf8(t.en.data(), static_cast<qsizetype>(t.en.size()));
+    return QString::fromStdString(id);
+}
+
 ProveoutPane::Output proveInput(const ProveoutPane::Input& in) {
     ProveoutPane::Output out;
     std::optional<stock::Blank> blank;
-    std::string error;
+    std::string error, id;
     if (!in.blankField.trimmed().isEmpty()) {
-        blank = stock::parseUcg(in.blankField.trimmed().toStdString(), &error);
+        blank = stock::parseUcg(in.blankField.trimmed().toStdString(), &error, &id);
         if (!blank) {
-            out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The blank: %1")
-                            .arg(QString::fromStdString(error));
+            out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The blank: %1").arg(ucgErrorText(id));
             return out;
         }
     } else if (in.text.contains("UCG")) {
         const std::string_view t(in.text.constData(), static_cast<std::size_t>(in.text.size()));
-        blank = stock::findUcg(t, &error);
-        if (!blank && error != "no UCG in the file") {
+        blank = stock::findUcg(t, &error, &id);
+        if (!blank && id != stock::kNoUcg) {
             out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The file's blank: %1")
-                            .arg(QString::fromStdString(error));
+                            .arg(ucgErrorText(id));
             return out;
         }
         out.blankFromFile = blank.has_value();
@@ -75,7 +104,7 @@ ProveoutPane::Output proveInput(const ProveoutPane::Input& in) {
                         .arg(QString::fromUtf8(e.what()));
     } catch (const profile::ToolError& e) {
         out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The machine's tools: %1")
-                        .arg(QString::fromUtf8(e.what()));
+                        .arg(problemText(e.problem()));
     }
     return out;
 }

@@ -1,4 +1,5 @@
 #include "session/machine_source.h"
+#include "db/notes.h"
 
 #include "db/database.h"
 #include "profile/builtin.h"
@@ -72,7 +73,7 @@ MachineSave saveMachine(const profile::MachineProfile& p) {
     MachineSave s;
     try {
         db::WriteOptions o;
-        o.summary = "kept from the simulated controller's memory (K528 Studio)";
+        o.summary = db::noteText({"studio.kept", {}});
         // Constants a trainer made faulty on purpose stay as they are.
         o.allowErrors = true;
         const auto shop = ShopDatabase::at();

@@ -1,0 +1,39 @@
+// Core's texts that come as an id and its arguments, in the window's
+// language: what is wrong with a machine file, a constants CSV or one of
+// their items (profile::Problem), and the errors that carry one. The command
+// line says the same ids in English from core's catalog (problem.cpp).
+#pragma once
+
+#include <QString>
+
+#include <exception>
+#include <string>
+#include <string_view>
+
+namespace k528::profile {
+struct Problem;
+class FileError;
+} // namespace k528::profile
+
+namespace k528::studio {
+
+// E.g. «C022 = 9 вне диапазона 10...5000 константы «УСКОРЕНИЕ 1»».
+QString problemText(const profile::Problem& p);
+// "<file>, line <n>: <problem>" («<файл>, строка <n>: …»).
+QString fileErrorText(const profile::FileError& e);
+// Any error core throws, for the window: a file's (fileErrorText), a
+// database's (databaseErrorText), else core's own words.
+QString coreErrorText(const std::exception& e);
+// Reads the text file at `path` as core does (util::readInputFile: a
+// regular file of at most 16 MiB); false with `error` saying why in the
+// window's language («нет такого файла», «это папка», …).
+bool readTextFile(const QString& path, std::string& text, QString& error);
+// A revision's note in the window's language: one core or the desktop
+// wrote (db/notes.h: «встроенный профиль training-lathe (первый запуск)»),
+// else the user's own words as written.
+QString revisionNoteText(const std::string& summary);
+bool hasNoteText(std::string_view id);
+// The id has a text here (studio.ui_language: every id of core's catalog has).
+bool hasProblemText(std::string_view id);
+
+} // namespace k528::studio
