@@ -1145,10 +1145,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>Ports</translation>
     </message>
     <message>
-        <source>List the system's serial ports again</source>
-        <translation>List the system's serial ports again</translation>
-    </message>
-    <message>
         <source>Pull into the database</source>
         <translation>Pull into the database</translation>
     </message>
@@ -1337,10 +1333,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>Programs</translation>
     </message>
     <message>
-        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
-        <translation>Choose the controller's port, speed, parity and address, then Connect.</translation>
-    </message>
-    <message>
         <source>Clear the C area (all constants 0)...</source>
         <translation>Clear the C area (all constants 0)...</translation>
     </message>
@@ -1411,6 +1403,50 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>Why: %1</source>
         <translation>Why: %1</translation>
+    </message>
+    <message>
+        <source>No machine of the database has a line</source>
+        <translation>No machine of the database has a line</translation>
+    </message>
+    <message>
+        <source>Connect to a database &amp;machine</source>
+        <translation>Connect to a database &amp;machine</translation>
+    </message>
+    <message>
+        <source>Line (Modbus TCP)</source>
+        <translation>Line (Modbus TCP)</translation>
+    </message>
+    <message>
+        <source>Host:port</source>
+        <translation>Host:port</translation>
+    </message>
+    <message>
+        <source>Unit id</source>
+        <translation>Unit id</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>(the line below)</source>
+        <translation>(the line below)</translation>
+    </message>
+    <message>
+        <source>The machines of the database that keep their controller's line</source>
+        <translation>The machines of the database that keep their controller's line</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports and the database's machines again</source>
+        <translation>List the system's serial ports and the database's machines again</translation>
+    </message>
+    <message>
+        <source>Enter the gateway's HOST:PORT.</source>
+        <translation>Enter the gateway's HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>Choose a machine of the database, or the controller's port (or HOST:PORT for Modbus TCP), speed, parity and address, then Connect.</source>
+        <translation>Choose a machine of the database, or the controller's port (or HOST:PORT for Modbus TCP), speed, parity and address, then Connect.</translation>
     </message>
 </context>
 <context>
@@ -3047,6 +3083,10 @@ Its comment stays: %3</translation>
         <source>The push did not start: %1; nothing was sent</source>
         <translation>The push did not start: %1; nothing was sent</translation>
     </message>
+    <message>
+        <source>%1, unit %2 (Modbus TCP)</source>
+        <translation>%1, unit %2 (Modbus TCP)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3440,6 +3480,10 @@ Its comment stays: %3</translation>
     <message>
         <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>
         <translation>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</translation>
+    </message>
+    <message>
+        <source>Shop</source>
+        <translation>Shop</translation>
     </message>
 </context>
 <context>
@@ -4252,6 +4296,184 @@ Details: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopTile</name>
+    <message>
+        <source>Mode %1</source>
+        <translation>Mode %1</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, running</translation>
+    </message>
+    <message>
+        <source>Program L%1, frame N%2</source>
+        <translation>Program L%1, frame N%2</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>No program</translation>
+    </message>
+    <message>
+        <source>Alarm (no number)</source>
+        <translation>Alarm (no number)</translation>
+    </message>
+    <message>
+        <source>The line does not answer</source>
+        <translation>The line does not answer</translation>
+    </message>
+    <message>
+        <source>Last answer at %1</source>
+        <translation>Last answer at %1</translation>
+    </message>
+    <message>
+        <source>No answer yet</source>
+        <translation>No answer yet</translation>
+    </message>
+    <message>
+        <source>Polling...</source>
+        <translation>Polling...</translation>
+    </message>
+    <message>
+        <source>No transfer on record</source>
+        <translation>No transfer on record</translation>
+    </message>
+    <message>
+        <source>Last transfer: %1</source>
+        <translation>Last transfer: %1</translation>
+    </message>
+    <message>
+        <source>Click: show this machine's controller on every view of the window</source>
+        <translation>Click: show this machine's controller on every view of the window</translation>
+    </message>
+    <message>
+        <source>%1 in this state, since %2</source>
+        <translation>%1 in this state, since %2</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ShopView</name>
+    <message>
+        <source>run</source>
+        <translation>run</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>alarm</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>offline</translation>
+    </message>
+    <message>
+        <source>%1 d %2:%3</source>
+        <translation>%1 d %2:%3</translation>
+    </message>
+    <message>
+        <source>alarm %1</source>
+        <translation>alarm %1</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>power-on</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Reload</translation>
+    </message>
+    <message>
+        <source>Read the database's machines and their lines again</source>
+        <translation>Read the database's machines and their lines again</translation>
+    </message>
+    <message>
+        <source>Alarms raised and cleared</source>
+        <translation>Alarms raised and cleared</translation>
+    </message>
+    <message>
+        <source>Today: minutes in each state</source>
+        <translation>Today: minutes in each state</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Event</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Alarm</translation>
+    </message>
+    <message>
+        <source>minutes</source>
+        <translation>minutes</translation>
+    </message>
+    <message>
+        <source>The database cannot be read: %1</source>
+        <translation>The database cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>No machine of the database %1 keeps its controller's line: set a machine's line (Modbus TCP or serial) in the database to see it here.</source>
+        <translation>No machine of the database %1 keeps its controller's line: set a machine's line (Modbus TCP or serial) in the database to see it here.</translation>
+    </message>
+    <message>
+        <source>Machines of the database %1 on their lines: %2; each line polled every %3 ms</source>
+        <translation>Machines of the database %1 on their lines: %2; each line polled every %3 ms</translation>
+    </message>
+    <message>
+        <source>push</source>
+        <translation>push</translation>
+    </message>
+    <message>
+        <source>pull</source>
+        <translation>pull</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <source>partial</source>
+        <translation>partial</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>%1 %2, %3</source>
+        <translation>%1 %2, %3</translation>
+    </message>
+    <message>
+        <source>The machines cannot be polled: %1</source>
+        <translation>The machines cannot be polled: %1</translation>
+    </message>
+    <message>
+        <source>raised</source>
+        <translation>raised</translation>
+    </message>
+    <message>
+        <source>cleared</source>
+        <translation>cleared</translation>
+    </message>
+    <message>
+        <source>The controller of %1 cannot be shown now: the Controller dock's line is busy</source>
+        <translation>The controller of %1 cannot be shown now: the Controller dock's line is busy</translation>
+    </message>
+    <message>
+        <source>Connecting to the controller of %1...</source>
+        <translation>Connecting to the controller of %1...</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
@@ -4546,6 +4768,14 @@ Details: %3</translation>
     <message>
         <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
         <translation>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</translation>
+    </message>
+    <message>
+        <source>Shop</source>
+        <translation>Shop</translation>
+    </message>
+    <message>
+        <source>The shop floor: a tile per machine of the database on its line, the alarms as they come, today's time in each state; the controller of the machine clicked beside it</source>
+        <translation>The shop floor: a tile per machine of the database on its line, the alarms as they come, today's time in each state; the controller of the machine clicked beside it</translation>
     </message>
 </context>
 <context>

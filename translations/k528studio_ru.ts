@@ -1145,10 +1145,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>Порты</translation>
     </message>
     <message>
-        <source>List the system's serial ports again</source>
-        <translation>Перечитать последовательные порты системы</translation>
-    </message>
-    <message>
         <source>Pull into the database</source>
         <translation>Считать в базу данных</translation>
     </message>
@@ -1337,10 +1333,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>Программы</translation>
     </message>
     <message>
-        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
-        <translation>Выберите порт контроллера, скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
-    </message>
-    <message>
         <source>Clear the C area (all constants 0)...</source>
         <translation>Очистить область C (все константы 0)...</translation>
     </message>
@@ -1411,6 +1403,50 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>Why: %1</source>
         <translation>Причина: %1</translation>
+    </message>
+    <message>
+        <source>No machine of the database has a line</source>
+        <translation>Ни у одного станка базы данных нет линии</translation>
+    </message>
+    <message>
+        <source>Connect to a database &amp;machine</source>
+        <translation>Подключиться к &amp;станку базы данных</translation>
+    </message>
+    <message>
+        <source>Line (Modbus TCP)</source>
+        <translation>Линия (Modbus TCP)</translation>
+    </message>
+    <message>
+        <source>Host:port</source>
+        <translation>Узел:порт</translation>
+    </message>
+    <message>
+        <source>Unit id</source>
+        <translation>Номер устройства</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>(the line below)</source>
+        <translation>(линия ниже)</translation>
+    </message>
+    <message>
+        <source>The machines of the database that keep their controller's line</source>
+        <translation>Станки базы данных, у которых задана линия их УЧПУ</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports and the database's machines again</source>
+        <translation>Заново получить последовательные порты системы и станки базы данных</translation>
+    </message>
+    <message>
+        <source>Enter the gateway's HOST:PORT.</source>
+        <translation>Введите УЗЕЛ:ПОРТ шлюза.</translation>
+    </message>
+    <message>
+        <source>Choose a machine of the database, or the controller's port (or HOST:PORT for Modbus TCP), speed, parity and address, then Connect.</source>
+        <translation>Выберите станок базы данных или порт УЧПУ (или УЗЕЛ:ПОРТ для Modbus TCP), скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
     </message>
 </context>
 <context>
@@ -3047,6 +3083,10 @@ Its comment stays: %3</source>
         <source>The push did not start: %1; nothing was sent</source>
         <translation>Передача не начата: %1; ничего не передано</translation>
     </message>
+    <message>
+        <source>%1, unit %2 (Modbus TCP)</source>
+        <translation>%1, устройство %2 (Modbus TCP)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3440,6 +3480,10 @@ Its comment stays: %3</source>
     <message>
         <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>
         <translation>В базе данных %1 нет станка %2: он работает таким, каким был загружен; станки этой базы — в меню Файл &gt; Станок</translation>
+    </message>
+    <message>
+        <source>Shop</source>
+        <translation>Цех</translation>
     </message>
 </context>
 <context>
@@ -4252,6 +4296,184 @@ Details: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopTile</name>
+    <message>
+        <source>Mode %1</source>
+        <translation>Режим %1</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, выполнение</translation>
+    </message>
+    <message>
+        <source>Program L%1, frame N%2</source>
+        <translation>Программа L%1, кадр N%2</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Нет программы</translation>
+    </message>
+    <message>
+        <source>Alarm (no number)</source>
+        <translation>Авария (без номера)</translation>
+    </message>
+    <message>
+        <source>The line does not answer</source>
+        <translation>Линия не отвечает</translation>
+    </message>
+    <message>
+        <source>Last answer at %1</source>
+        <translation>Последний ответ в %1</translation>
+    </message>
+    <message>
+        <source>No answer yet</source>
+        <translation>Ответа ещё не было</translation>
+    </message>
+    <message>
+        <source>Polling...</source>
+        <translation>Опрос...</translation>
+    </message>
+    <message>
+        <source>No transfer on record</source>
+        <translation>Обменов не записано</translation>
+    </message>
+    <message>
+        <source>Last transfer: %1</source>
+        <translation>Последний обмен: %1</translation>
+    </message>
+    <message>
+        <source>Click: show this machine's controller on every view of the window</source>
+        <translation>Щелчок: показать УЧПУ этого станка во всех видах окна</translation>
+    </message>
+    <message>
+        <source>%1 in this state, since %2</source>
+        <translation>%1 в этом состоянии, с %2</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ShopView</name>
+    <message>
+        <source>run</source>
+        <translation>работа</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>простой</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>авария</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>нет связи</translation>
+    </message>
+    <message>
+        <source>%1 d %2:%3</source>
+        <translation>%1 сут %2:%3</translation>
+    </message>
+    <message>
+        <source>alarm %1</source>
+        <translation>авария %1</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>включение</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Перечитать</translation>
+    </message>
+    <message>
+        <source>Read the database's machines and their lines again</source>
+        <translation>Заново прочитать станки базы данных и их линии</translation>
+    </message>
+    <message>
+        <source>Alarms raised and cleared</source>
+        <translation>Возникшие и снятые аварии</translation>
+    </message>
+    <message>
+        <source>Today: minutes in each state</source>
+        <translation>Сегодня: минуты в каждом состоянии</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Событие</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Авария</translation>
+    </message>
+    <message>
+        <source>minutes</source>
+        <translation>минуты</translation>
+    </message>
+    <message>
+        <source>The database cannot be read: %1</source>
+        <translation>Базу данных нельзя прочитать: %1</translation>
+    </message>
+    <message>
+        <source>No machine of the database %1 keeps its controller's line: set a machine's line (Modbus TCP or serial) in the database to see it here.</source>
+        <translation>Ни у одного станка базы данных %1 не задана линия его УЧПУ: задайте линию станка (Modbus TCP или последовательный порт) в базе данных, чтобы видеть его здесь.</translation>
+    </message>
+    <message>
+        <source>Machines of the database %1 on their lines: %2; each line polled every %3 ms</source>
+        <translation>Станки базы данных %1 на своих линиях: %2; каждая линия опрашивается каждые %3 мс</translation>
+    </message>
+    <message>
+        <source>push</source>
+        <translation>в УЧПУ</translation>
+    </message>
+    <message>
+        <source>pull</source>
+        <translation>из УЧПУ</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>успешно</translation>
+    </message>
+    <message>
+        <source>partial</source>
+        <translation>частично</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>не удалось</translation>
+    </message>
+    <message>
+        <source>%1 %2, %3</source>
+        <translation>%1 %2, %3</translation>
+    </message>
+    <message>
+        <source>The machines cannot be polled: %1</source>
+        <translation>Станки нельзя опросить: %1</translation>
+    </message>
+    <message>
+        <source>raised</source>
+        <translation>возникла</translation>
+    </message>
+    <message>
+        <source>cleared</source>
+        <translation>снята</translation>
+    </message>
+    <message>
+        <source>The controller of %1 cannot be shown now: the Controller dock's line is busy</source>
+        <translation>УЧПУ станка %1 сейчас нельзя показать: линия панели «Контроллер» занята</translation>
+    </message>
+    <message>
+        <source>Connecting to the controller of %1...</source>
+        <translation>Подключение к УЧПУ станка %1...</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
@@ -4546,6 +4768,14 @@ Details: %3</source>
     <message>
         <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
         <translation>Обучение на станке: пульт станка, K923, траектория и осциллограф</translation>
+    </message>
+    <message>
+        <source>Shop</source>
+        <translation>Цех</translation>
+    </message>
+    <message>
+        <source>The shop floor: a tile per machine of the database on its line, the alarms as they come, today's time in each state; the controller of the machine clicked beside it</source>
+        <translation>Цех: плитка на каждый станок базы данных на своей линии, аварии по мере появления, время в каждом состоянии за сегодня; рядом — УЧПУ станка, по которому щёлкнули</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "shop/shop_view.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -83,6 +84,10 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     workArea_->addTab(programEditor_, QString());
     connect(programEditor_, &EditorTab::statusMessage, this, [this](const QString& m) { statusBar()->showMessage(m, 10000); });
     createDocks();
+    // The Shop workspace's page (shop/shop_view.cpp): after the Controller
+    // dock, which a click on a machine's tile connects.
+    shopView_ = new ShopView(this);
+    workArea_->addTab(shopView_, QString());
     connect(viewed_, &ViewedController::changed, this, &MainWindow::viewedChanged);
     // The files of the last session, or the machine's sample on a first start.
     programEditor_->openStartDocuments(QString::fromStdString(machine_.profile.name));
@@ -639,6 +644,7 @@ void MainWindow::retranslate() {
                                       : QString();
     workArea_->setTabText(workArea_->indexOf(programMonitor_), tr("Program") + stale);
     workArea_->setTabText(workArea_->indexOf(programEditor_), tr("Editor"));
+    workArea_->setTabText(workArea_->indexOf(shopView_), tr("Shop"));
     k923Dock_->setWindowTitle((viewed_->isSimulated() ? tr("K923 operator panel")
                                                       : tr("K923: LEDs only (no LCD text or keys over the link)")) +
                               stale);
