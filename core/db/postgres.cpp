@@ -1,4 +1,5 @@
 #include "db/postgres.h"
+#include "db/libpq_lazy.h"
 
 #include <charconv>
 #include <cstring>
@@ -78,6 +79,8 @@ std::string postgresParameters(std::string_view text, int& count) {
 }
 
 PgConnection::PgConnection(const std::string& uri, std::string where) : where_(std::move(where)) {
+    if (const char* why = libpq::loadError())
+        throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why, why);
     const char* keys[] = {"dbname", "application_name", "client_encoding", nullptr};
     const char* values[] = {uri.c_str(), "K528 Studio", "UTF8", nullptr};
     conn_ = PQconnectdbParams(keys, values, 1);

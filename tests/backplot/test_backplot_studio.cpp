@@ -356,9 +356,8 @@ private slots:
             // Shown already (a fast machine: while the progress was awaited)
             // or shown later; wait() alone waits for a second showing.
             QVERIFY(shown.count() > 0 || shown.wait(120000));
-            QTest::qWait(300);
+            QTRY_VERIFY_WITH_TIMEOUT(!status->text().isEmpty(), 20000); // laid out with its text
             QVERIFY2(within(status), "the note is outside the window");
-            QVERIFY(!status->text().isEmpty());
             QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
                 dir + QStringLiteral("/backplot-cut-off-%1-%2.png").arg(language, size)));
         }
@@ -370,7 +369,21 @@ private slots:
         s.view->selectLine(1, 6); // N5 drawn 4 px wide
         auto* gl = s.view->glWidget();
         gl->update();
-        QTest::qWait(300);
+        // Painted when the feed's colour is on the screen in the middle of N3
+        // (Z-40, X60 to X20): a wait on the picture, not on the clock.
+        const auto feedOnScreen = [&] {
+            const QImage img = s.w.screen()->grabWindow(s.w.winId()).toImage();
+            const QPoint m = gl->mapTo(&s.w, s.pixelOf(-40, 40));
+            const auto& fc = k528::backplot::kFeedColour;
+            for (int dx = -4; dx <= 4; ++dx) {
+                const QColor c(img.pixel(m.x() + dx, m.y()));
+                if (std::abs(c.redF() - fc.r) < 0.1 && std::abs(c.greenF() - fc.g) < 0.1 &&
+                    std::abs(c.blueF() - fc.b) < 0.1)
+                    return true;
+            }
+            return false;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(feedOnScreen(), 20000);
         // From the X server, as a user sees it.
         gl->makeCurrent();
         qInfo() << "max hardware line width" << gl->renderWindow()->GetMaximumHardwareLineWidth()

@@ -322,17 +322,19 @@ private slots:
     }
 
     // Real time: the session advances by what elapsed, paused it stands,
-    // at 10x it runs ten times faster; a stalled frame is capped.
+    // at 10x it runs ten times faster; a stalled frame is capped. Waits on
+    // the simulated time, not for a fixed wall time: on a busy machine the
+    // timer fires late, and what is checked is that the simulation never runs
+    // ahead of the clock (at 1x) and clearly ahead of it (at 10x).
     void realTime() {
         SimulationSession session(profile::builtin("training-lathe"));
         QSignalSpy spy(&session, &SimulationSession::advanced);
         QElapsedTimer wall;
         wall.start();
-        QTest::qWait(300);
-        const double real = static_cast<double>(wall.elapsed());
+        QTRY_VERIFY_WITH_TIMEOUT(session.timeMs() >= 200 && spy.count() >= 5, 20000);
         const double sim = static_cast<double>(session.timeMs());
-        QVERIFY2(sim > 150 && sim <= real + 20, qPrintable(QString("%1 in %2").arg(sim).arg(real)));
-        QVERIFY(spy.count() >= 5);
+        const double real = static_cast<double>(wall.elapsed());
+        QVERIFY2(sim <= real + 20, qPrintable(QString("%1 ms simulated in %2 ms").arg(sim).arg(real)));
         session.setRunning(false);
         const std::int64_t paused = session.timeMs();
         QTest::qWait(100);
@@ -340,11 +342,11 @@ private slots:
         session.setSpeed(10);
         session.setRunning(true);
         wall.restart();
-        QTest::qWait(200);
+        QTRY_VERIFY_WITH_TIMEOUT(session.timeMs() - paused >= 2000, 20000);
         const double fast = static_cast<double>(session.timeMs() - paused);
         const double real2 = static_cast<double>(wall.elapsed());
-        QVERIFY2(fast > 5 * 100 && fast <= 10 * (real2 + 20),
-                 qPrintable(QString("%1 in %2").arg(fast).arg(real2)));
+        QVERIFY2(fast >= 2 * real2 && fast <= 10 * (real2 + 20),
+                 qPrintable(QString("%1 ms simulated in %2 ms at 10x").arg(fast).arg(real2)));
     }
 
     // The main window builds the session and puts the views into the docks.

@@ -177,28 +177,17 @@ QString ProgramReleases::release(int number, const QString& note) {
         why = tr("L%1 is no longer a program of %2: there is nothing to release").arg(number).arg(machine_);
     else if (p && p->state == db::ProgramState::Released)
         why = tr("L%1 is released already (revision %2)").arg(number).arg(p->revision);
-    if (why.isEmpty()) {
-        try {
-            const std::string name = machine_.toStdString(), text = note.toStdString();
-            const db::ReleaseEntry e =
-                ShopDatabase::at()->use([&](db::Database& d) { return d.releaseProgram(name, number, text); });
-            refresh();
-            emit statusMessage(tr("Released L%1 of %2 as of revision %3 by %4 at %5")
-                                   .arg(number)
-                                   .arg(machine_)
-                                   .arg(e.revision)
-                                   .arg(fromStd(e.author), fromStd(e.at)));
-            return {};
-        } catch (const db::DeniedError& e) {
-            why = tr("Releasing a program needs the role %1: %2").arg(fromStd(e.role()), QString::fromUtf8(e.what()));
-        } catch (const std::exception& e) {
-            why = databaseErrorText(e);
-        }
-    }
-    why = tr("L%1 was not released: %2").arg(number).arg(why);
-    refresh();
-    emit statusMessage(why);
-    return why;
+    const std::string text = note.toStdString();
+    return change(
+        number, why, [&](db::Database& d, const std::string& name) { return d.releaseProgram(name, number, text); },
+        [&](const db::ReleaseEntry& e) {
+            return tr("Released L%1 of %2 as of revision %3 by %4 at %5")
+                .arg(number)
+                .arg(machine_)
+                .arg(e.revision)
+                .arg(fromStd(e.author), fromStd(e.at));
+        },
+        tr("Releasing a program needs the role %1: %2"), tr("L%1 was not released: %2"));
 }
 
 QString ProgramReleases::withdraw(int number, const QString& note) {
@@ -208,24 +197,32 @@ QString ProgramReleases::withdraw(int number, const QString& note) {
         why = tr("L%1 was never released: there is nothing to withdraw").arg(number);
     else if (p && !p->last->released)
         why = tr("L%1 is withdrawn already").arg(number);
+    const std::string text = note.toStdString();
+    return change(
+        number, why, [&](db::Database& d, const std::string& name) { return d.withdrawProgram(name, number, text); },
+        [&](const db::ReleaseEntry& e) {
+            return tr("Withdrew L%1 of %2 by %3 at %4").arg(number).arg(machine_).arg(fromStd(e.author), fromStd(e.at));
+        },
+        tr("Withdrawing a program needs the role %1: %2"), tr("L%1 was not withdrawn: %2"));
+}
+
+QString ProgramReleases::change(int number, QString why, const Write& write,
+                                const std::function<QString(const db::ReleaseEntry&)>& done, const QString& needsRole,
+                                const QString& notDone) {
     if (why.isEmpty()) {
         try {
-            const std::string name = machine_.toStdString(), text = note.toStdString();
-            const db::ReleaseEntry e =
-                ShopDatabase::at()->use([&](db::Database& d) { return d.withdrawProgram(name, number, text); });
+            const std::string name = machine_.toStdString();
+            const db::ReleaseEntry e = ShopDatabase::at()->use([&](db::Database& d) { return write(d, name); });
             refresh();
-            emit statusMessage(tr("Withdrew L%1 of %2 by %3 at %4")
-                                   .arg(number)
-                                   .arg(machine_)
-                                   .arg(fromStd(e.author), fromStd(e.at)));
+            emit statusMessage(done(e));
             return {};
         } catch (const db::DeniedError& e) {
-            why = tr("Withdrawing a program needs the role %1: %2").arg(fromStd(e.role()), QString::fromUtf8(e.what()));
+            why = needsRole.arg(fromStd(e.role()), QString::fromUtf8(e.what()));
         } catch (const std::exception& e) {
             why = databaseErrorText(e);
         }
     }
-    why = tr("L%1 was not withdrawn: %2").arg(number).arg(why);
+    why = notDone.arg(number).arg(why);
     refresh();
     emit statusMessage(why);
     return why;
