@@ -16,10 +16,6 @@ namespace k528::proveout {
 
 namespace {
 
-constexpr std::array<Rule, 6> kRules{Rule::RapidIntoMaterial, Rule::ToolIntoChuck,
-                                     Rule::TurretIntoChuck,   Rule::FeedSpindleStopped,
-                                     Rule::FeedWheelStopped,  Rule::CutTooDeep};
-
 // clang-format off
 constexpr Text kTexts[] = {
     {"rapid-into-material",
@@ -49,6 +45,9 @@ constexpr Text kTexts[] = {
     {"feed-wheel-stopped",
      "Рабочая подача в материал кольца при остановленном круге: X%1 Z%2",
      "A feed into the ring's material with the wheel stopped: X%1 Z%2"},
+    {"manual-into-material",
+     "Ручное перемещение вводит инструмент в материал заготовки: X%1 Z%2",
+     "A manual move takes the tool into the material of the blank: X%1 Z%2"},
     {"cut-too-deep",
      "Глубина резания %1 мм больше допустимой для инструмента T%2 (%3 мм)",
      "A cut %1 mm deep, deeper than tool T%2 takes (%3 mm)"},
@@ -105,19 +104,6 @@ Box bodyOf(const profile::Tool& t) {
     return b;
 }
 
-// The smallest t in (0, 1] at which `hit(t)` holds (hit(1) holds).
-double firstContact(const std::function<bool(double)>& hit) {
-    double lo = 0, hi = 1;
-    for (int i = 0; i < 30; ++i) {
-        const double mid = (lo + hi) / 2;
-        if (hit(mid))
-            hi = mid;
-        else
-            lo = mid;
-    }
-    return hi;
-}
-
 struct Leg {
     toolpath::PointMm a, b; // the path's coordinates (what the finding names)
 };
@@ -137,11 +123,7 @@ public:
         }
         if (g.chuck.present) {
             res_.chuck = true;
-            const double grip = o.blank ? o.blank->outerDiameterMm : g.chuck.gripDiameterMm;
-            const ChuckGeometry& c = g.chuck;
-            jaws_ = {c.jawFaceZMm - c.jawLengthMm, c.jawFaceZMm, grip / 2, grip / 2 + c.jawHeightMm};
-            body_ = {c.jawFaceZMm - c.jawLengthMm - c.bodyLengthMm, c.jawFaceZMm - c.jawLengthMm,
-                     0, c.bodyDiameterMm / 2};
+            chuck_ = chuckBoxes(g.chuck, o.blank ? o.blank->outerDiameterMm : 0.0);
         }
         for (const std::string& s : o.spindlesRunning)
             running_.push_back(s);
@@ -245,22 +227,15 @@ private:
     void chuckLeg(std::size_t i, Rule rule, const Box& box, PointZR a, PointZR b, const At& at,
                   const Lerp& lerp) {
         const bool tool = rule == Rule::ToolIntoChuck;
-        const Box bounds = box.sweptBounds(a, b);
-        for (const auto& [part, jaws] : {std::pair{jaws_, true}, std::pair{body_, false}}) {
-            for (const Box& obstacle : {part, part.mirrored()}) {
-                if (!bounds.overlaps(obstacle, LatheMaterial::kEpsMm) ||
-                    !Sweep(box, a, b).overlaps(obstacle, LatheMaterial::kEpsMm) ||
-                    box.moved(a).overlaps(obstacle, LatheMaterial::kEpsMm))
-                    continue;
-                const Box o = obstacle;
-                report(rule, i,
-                       jaws ? (tool ? "tool-into-chuck.jaws" : "turret-into-chuck.jaws")
-                            : (tool ? "tool-into-chuck.body" : "turret-into-chuck.body"),
-                       [&](double t) { return Sweep(box, a, at(t)).overlaps(o, LatheMaterial::kEpsMm); },
-                       lerp, true);
-                return;
-            }
-        }
+        const ChuckHit hit = chuckContact(chuck_, box, a, b);
+        if (hit.part == ChuckContact::None)
+            return;
+        const bool jaws = hit.part == ChuckContact::Jaws;
+        const Box o = hit.obstacle;
+        report(rule, i,
+               jaws ? (tool ? "tool-into-chuck.jaws" : "turret-into-chuck.jaws")
+                    : (tool ? "tool-into-chuck.body" : "turret-into-chuck.body"),
+               [&](double t) { return Sweep(box, a, at(t)).overlaps(o, kContactEpsMm); }, lerp, true);
     }
 
     template <class TipP, class Lerp>
@@ -270,34 +245,30 @@ private:
         if (!material_->mayTouch(body.sweptBounds(a, b)))
             return; // through air
         Sweep sw(body, a, b);
-        if (rapid && material_->touches(sw)) {
+        const std::optional<Rule> rule =
+            materialRule(rapid ? Motion::Rapid : Motion::Feed, turning(g_.cuttingSpindle), false);
+        // (Found before the cut takes the material away.)
+        if (rule && material_->touches(sw)) {
+            const auto hit = [&](double t) {
+                Sweep part(body, a, tipP(lerp(t)));
+                return material_->touches(part);
+            };
             // The dogleg: the straight line between the frame's end points
             // misses the material, the corner does not.
-            const toolpath::PointMm* p = path_.pointsOf(s);
-            const toolpath::PointMm first = p[0], last = p[s.pointCount - 1];
             bool dogleg = false;
             std::string axis;
-            if (s.pointCount == 3) {
+            if (*rule == Rule::RapidIntoMaterial && s.pointCount == 3) {
+                const toolpath::PointMm* p = path_.pointsOf(s);
+                const toolpath::PointMm first = p[0], last = p[s.pointCount - 1];
                 Sweep chord(body, tipP(first), tipP(last));
                 dogleg = !material_->touches(chord);
                 axis = p[1].x == last.x ? "X" : "Z";
             }
-            report(Rule::RapidIntoMaterial, i,
-                   dogleg ? "rapid-into-material.dogleg" : "rapid-into-material",
-                   [&](double t) {
-                       Sweep part(body, a, tipP(lerp(t)));
-                       return material_->touches(part);
-                   },
-                   lerp, true, axis);
+            const std::string_view text = *rule == Rule::RapidIntoMaterial
+                                              ? (dogleg ? "rapid-into-material.dogleg" : "rapid-into-material")
+                                              : ruleId(*rule);
+            report(*rule, i, text, hit, lerp, true, axis);
         }
-        // (A feed with the spindle standing is located before its cut.)
-        if (!rapid && !turning(g_.cuttingSpindle) && material_->touches(sw))
-            report(Rule::FeedSpindleStopped, i, "feed-spindle-stopped",
-                   [&](double t) {
-                       Sweep part(body, a, tipP(lerp(t)));
-                       return material_->touches(part);
-                   },
-                   lerp, true);
         const LatheMaterial::Cut cut = material_->cut(sw, b.z - a.z, b.r - a.r);
         res_.removedMm2 += cut.areaMm2;
         if (!rapid && tool_.maxDepthMm > 0 && cut.depthMm > tool_.maxDepthMm + 1e-3) {
@@ -339,17 +310,17 @@ private:
             return true;
         };
         double rMax = 0;
-        if (!edgeAt(a, b, rMax) || rMax <= boreR_ + LatheMaterial::kEpsMm)
+        if (!edgeAt(a, b, rMax) || rMax <= boreR_ + kContactEpsMm)
             return;
         const auto hit = [&](double t) {
             double r = 0;
             const PointZR e{a.z + (b.z - a.z) * t, a.r + (b.r - a.r) * t};
-            return edgeAt(a, e, r) && r > boreR_ + LatheMaterial::kEpsMm;
+            return edgeAt(a, e, r) && r > boreR_ + kContactEpsMm;
         };
-        if (rapid)
-            report(Rule::RapidIntoMaterial, i, "rapid-into-material.ring", hit, lerp, true);
-        else if (!turning(g_.cuttingSpindle))
-            report(Rule::FeedWheelStopped, i, "feed-wheel-stopped", hit, lerp, true);
+        if (const std::optional<Rule> rule =
+                materialRule(rapid ? Motion::Rapid : Motion::Feed, turning(g_.cuttingSpindle), true))
+            report(*rule, i, *rule == Rule::RapidIntoMaterial ? "rapid-into-material.ring" : ruleId(*rule),
+                   hit, lerp, true);
         boreR_ = std::max(boreR_, rMax);
         (void)s;
     }
@@ -399,7 +370,7 @@ private:
     Result res_;
     double toR_ = 0.5;
     std::unique_ptr<LatheMaterial> material_;
-    Box jaws_, body_;
+    ChuckBoxes chuck_;
     std::vector<std::string> running_;
     int station_ = 0;
     int toolStation_ = -1; // the station tool_ is of
@@ -412,28 +383,6 @@ private:
 };
 
 } // namespace
-
-std::string_view ruleId(Rule r) {
-    switch (r) {
-    case Rule::RapidIntoMaterial:
-        return "rapid-into-material";
-    case Rule::ToolIntoChuck:
-        return "tool-into-chuck";
-    case Rule::TurretIntoChuck:
-        return "turret-into-chuck";
-    case Rule::FeedSpindleStopped:
-        return "feed-spindle-stopped";
-    case Rule::FeedWheelStopped:
-        return "feed-wheel-stopped";
-    case Rule::CutTooDeep:
-        return "cut-too-deep";
-    }
-    return "";
-}
-
-std::span<const Rule> allRules() {
-    return kRules;
-}
 
 std::span<const Text> texts() {
     return kTexts;

@@ -15,6 +15,8 @@
 //   feed-wheel-stopped    on a grinder: a feed into the ring while the wheel stands
 //   cut-too-deep          a cut deeper (across the motion) than the tool's
 //                         max_depth_mm
+// (rules.h: the rules and the contacts shared with the grade of an attempt,
+// which adds manual-into-material for the operator's moves.)
 // A finding names its rule, the frame (program, N, source line), the segment
 // of the path and the place (the tool's tip where it first happens, in the
 // path's coordinates: what the backplot marks). A frame that meets a rule
@@ -23,6 +25,7 @@
 
 #include "profile/tools.h"
 #include "proveout/geometry.h"
+#include "proveout/rules.h"
 #include "stock/stock.h"
 #include "toolpath/programmed_path.h"
 
@@ -35,17 +38,6 @@
 #include <vector>
 
 namespace k528::proveout {
-
-enum class Rule : std::uint8_t {
-    RapidIntoMaterial,
-    ToolIntoChuck,
-    TurretIntoChuck,
-    FeedSpindleStopped,
-    FeedWheelStopped,
-    CutTooDeep,
-};
-std::string_view ruleId(Rule r); // "rapid-into-material", …
-std::span<const Rule> allRules();
 
 enum class Severity : std::uint8_t { Error, Warning };
 

@@ -10,6 +10,7 @@
 #include "profile/builtin.h"
 #include "units/units.h"
 
+#include <optional>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -480,12 +481,19 @@ private:
             }
         }
         lastBore_ = bore;
-        // A rapid that pushes the wheel into the ring's wall or face.
-        if (active && s.kind == toolpath::SegmentKind::Rapid && overlap && edge > bore + 0.01 &&
+        // A motion that pushes the wheel into the ring's wall or face: the
+        // prove-out's rule for it (a rapid; a feed with the wheel standing).
+        if (active && overlap && edge > bore + 0.01 &&
             (edge > lastEdge_ + 1e-9 || std::fabs(z - lastZ_) > 1e-9)) {
-            if (rec_.ringContacts.empty() || rec_.ringContacts.back().line != s.line ||
-                rec_.ringContacts.back().program != s.program)
-                rec_.ringContacts.push_back({s.program, s.line, s.n, edge, bore, z});
+            const proveout::Motion motion = s.manual ? proveout::Motion::Manual
+                                            : s.kind == toolpath::SegmentKind::Rapid
+                                                ? proveout::Motion::Rapid
+                                                : proveout::Motion::Feed;
+            const std::optional<proveout::Rule> rule =
+                proveout::materialRule(motion, spindle_ && spindle_->running(), true);
+            if (rule && (rec_.ringContacts.empty() || rec_.ringContacts.back().line != s.line ||
+                         rec_.ringContacts.back().program != s.program))
+                rec_.ringContacts.push_back({*rule, s.program, s.line, s.n, edge, bore, z});
         }
         lastEdge_ = edge;
         lastZ_ = z;

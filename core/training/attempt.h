@@ -15,6 +15,7 @@
 #include "engine/run.h"
 #include "profile/profile.h"
 #include "program/model.h"
+#include "proveout/rules.h"
 #include "toolpath/actual_path.h"
 #include "training/exercise.h"
 #include "training/procedure.h"
@@ -60,8 +61,10 @@ struct BandCell {
     int program = 0, line = 0, n = 0;
 };
 
-// The grinder's wheel moved at rapid into the ring.
+// The grinder's wheel moved into the ring where grinding does not take it:
+// at rapid, or at feed with the wheel standing (proveout::materialRule).
 struct RingContact {
+    proveout::Rule rule = proveout::Rule::RapidIntoMaterial; // the prove-out's rule it breaks
     int program = 0, line = 0, n = 0;
     double edgeMm = 0, boreMm = 0, zMm = 0;
 };

@@ -11,12 +11,14 @@
 //     uniform tolerance.
 #pragma once
 
-#include "training/cutting.h"
+#include "proveout/actual.h"
 #include "training/exercise.h"
 
 #include <vector>
 
 namespace k528::training {
+
+using proveout::Shape;
 
 struct DrawingShapes {
     bool present = false;

@@ -72,7 +72,7 @@ constexpr double kMinDepthMm = 0.0005, kMinAreaMm2 = 1e-5;
 struct RemovalGeo {
     Poly sweep;
     Box box;
-    const Removal* r;
+    const proveout::Removal* r;
 };
 
 double round3(double v) {
@@ -210,26 +210,30 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
     // The part.
     Multi blankM, finishedM;
     std::vector<RemovalGeo> removals;
-    CutResult cut;
-    std::vector<Removal> ringRemovals;
+    proveout::CutResult cut;
+    std::vector<proveout::Removal> ringRemovals;
     if (e_.lathe()) {
-        Fixture fx;
-        const double R = e_.blank->outerDiameterMm / 2;
+        proveout::ChuckGeometry chuck; // the exercise's chuck, in the program's coordinates
         const Chuck& c = e_.chuck;
-        fx.parts.push_back({c.faceZMm - 80, c.faceZMm, 0, c.diameterMm / 2});
-        fx.parts.push_back({c.faceZMm, c.faceZMm + c.jawLengthMm, R, R + c.jawHeightMm});
-        SpindleTimeline sp;
+        chuck.present = true;
+        chuck.jawFaceZMm = c.faceZMm + c.jawLengthMm;
+        chuck.jawLengthMm = c.jawLengthMm;
+        chuck.jawHeightMm = c.jawHeightMm;
+        chuck.gripDiameterMm = e_.blank->outerDiameterMm;
+        chuck.bodyDiameterMm = c.diameterMm;
+        chuck.bodyLengthMm = 80;
+        proveout::SpindleTimeline sp;
         for (std::size_t i = 0; i < rec.spindle.size(); ++i) {
             if (i == 0)
                 sp.runningAtStart = rec.spindle[i].running;
             else
                 sp.changesMs.push_back(rec.spindle[i].tMs);
         }
-        cut = cutAlong(*e_.blank, e_.blankZMm, e_.tool, fx, rec.path, true, sp);
+        cut = proveout::cutAlong(*e_.blank, e_.blankZMm, e_.tool, chuck, rec.path, true, sp);
         blankM = translated(multiOf(stock::Stock(*e_.blank)), e_.blankZMm);
         finishedM = multiOf(cut.finished);
         g.collisions = cut.collisions;
-        for (const Removal& r : cut.removals) {
+        for (const proveout::Removal& r : cut.removals) {
             RemovalGeo rg{polygonOf(r.sweep), Box(), &r};
             bg::envelope(rg.sweep, rg.box);
             removals.push_back(std::move(rg));
@@ -257,7 +261,7 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
                 ++j;
             }
             const double z1 = j == rec.bands.size() ? ring.zMaxMm : rec.bands[j].zMm;
-            Removal r;
+            proveout::Removal r;
             r.program = b.program;
             r.line = b.line;
             r.n = b.n;
@@ -268,14 +272,17 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
             ringRemovals.push_back(r);
             k = j;
         }
-        for (const Removal& r : ringRemovals) {
+        for (const proveout::Removal& r : ringRemovals) {
             RemovalGeo rg{polygonOf(r.sweep), Box(), &r};
             bg::envelope(rg.sweep, rg.box);
             removals.push_back(std::move(rg));
         }
         for (const RingContact& c : rec.ringContacts)
-            g.collisions.push_back({CollisionKind::RapidIntoRing, c.program, c.line, c.n,
-                                    {c.zMm, c.edgeMm / 2}, (c.edgeMm - c.boreMm) / 2, 0});
+            g.collisions.push_back({c.rule, c.rule == proveout::Rule::RapidIntoMaterial
+                                                ? std::string_view("rapid-into-material.ring")
+                                                : proveout::ruleId(c.rule),
+                                    c.program, c.line, c.n, {c.zMm, c.edgeMm / 2},
+                                    (c.edgeMm - c.boreMm) / 2, 0});
     }
     g.blank = shapesOf(blankM);
     g.finished = shapesOf(finishedM);
@@ -389,28 +396,31 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
     // Collisions.
     for (const Collision& c : g.collisions) {
         double pts = sc.rapidIntoMaterial;
-        switch (c.kind) {
-        case CollisionKind::RapidIntoMaterial:
-        case CollisionKind::RapidIntoRing:
+        switch (c.rule) {
+        case proveout::Rule::RapidIntoMaterial:
             pts = sc.rapidIntoMaterial;
             break;
-        case CollisionKind::ManualIntoMaterial:
+        case proveout::Rule::ManualIntoMaterial:
             pts = sc.jogIntoMaterial;
             break;
-        case CollisionKind::CutWithoutSpindle:
+        case proveout::Rule::FeedSpindleStopped:
+        case proveout::Rule::FeedWheelStopped:
+        case proveout::Rule::CutTooDeep:
             pts = sc.cutWithoutSpindle;
             break;
-        case CollisionKind::ToolIntoChuck:
+        case proveout::Rule::ToolIntoChuck:
+        case proveout::Rule::TurretIntoChuck:
             pts = sc.toolIntoChuck;
             break;
         }
         std::vector<TextArg> args{mmArg(c.at.r * 2), mmArg(c.at.z), mmArg(c.depthMm)};
-        std::string id = "collision." + std::string(collisionName(c.kind));
+        // The deduction's text by the rule's text id ("collision.rapid-into-material.ring").
+        std::string id = "collision." + std::string(c.text);
         if (c.program > 0) {
             args.push_back(frameName(c.program, c.n));
             args.push_back(intArg(c.line));
-        } else if (c.kind != CollisionKind::ManualIntoMaterial) {
-            id += ".manual";
+        } else if (c.rule != proveout::Rule::ManualIntoMaterial) {
+            id = "collision." + std::string(proveout::ruleId(c.rule)) + ".manual";
         }
         deduct("collision", pts, true, c.program, c.line, c.n, id, args);
     }
@@ -648,7 +658,8 @@ Json gradeJson(const Grade& g, bool geometry) {
     Json col = Json::array();
     for (const Collision& c : g.collisions) {
         Json j = frameJson(c.program, c.line, c.n);
-        j["kind"] = collisionName(c.kind);
+        j["rule"] = proveout::ruleId(c.rule); // the prove-out's rule id (docs/proveout.md)
+        j["text"] = c.text;
         j["at"] = Json::object({{"z", round3(c.at.z)}, {"d", round3(c.at.r * 2)}});
         j["depth_mm"] = round3(c.depthMm);
         col.push_back(std::move(j));

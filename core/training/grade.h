@@ -20,7 +20,7 @@
 
 #include "program/diagnostic.h"
 #include "training/attempt.h"
-#include "training/cutting.h"
+#include "proveout/actual.h"
 #include "training/drawing.h"
 #include "training/exercise.h"
 #include "util/json_fwd.h"
@@ -30,6 +30,10 @@
 #include <vector>
 
 namespace k528::training {
+
+// A collision found along the attempt's actual path by the prove-out's rules
+// (proveout/rules.h: the same rule ids as `k528 check --profile`).
+using proveout::Collision;
 
 // An over-cut or under-cut: the regions one frame made (over-cut: the
 // frame whose sweep took most of it; under-cut: the pass that came nearest,

@@ -1,9 +1,9 @@
 // The texts a grade shows a student: an id and its arguments (numbers,
 // frame names, coordinates — nothing in a language), rendered in Russian or
-// English from one catalog (texts.cpp), the way core keeps the names of the
-// faults (machine::faultText) and the program diagnostics. `k528 grade`
-// renders them from here; the desktop renders the same ids through its
-// translators. An argument that is itself a text of two languages (a
+// English from core's catalog (catalog/training_texts.h), the way core keeps
+// the names of the faults (machine::faultText) and the program diagnostics.
+// `k528 grade` renders them from here; the desktop renders the same ids
+// through tr() (app/studio/training/training_texts.h). An argument that is itself a text of two languages (a
 // message of the positioner, a diagnostic) carries both.
 #pragma once
 
@@ -32,15 +32,6 @@ struct Text {
     std::vector<TextArg> args;
     bool operator==(const Text&) const = default;
 };
-
-// One entry of the catalog: the id, its Russian and English template, %1..%9
-// the arguments.
-struct TextTemplate {
-    std::string_view id, ru, en;
-};
-
-// Every text a grade can show.
-std::span<const TextTemplate> gradeTexts();
 
 // The text in a language; an id missing from the catalog renders as the id
 // and its arguments (never thrown away).

@@ -10,6 +10,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <set>
 
 using namespace k528;
 
@@ -59,6 +60,41 @@ class TestProveoutRules : public QObject {
 private slots:
     // The handbook's third error: after facing, the return rapid goes
     // straight through the blank.
+    // The rules both callers use (the check before the run, the grade of an
+    // attempt along its actual path): which rule a motion into the material
+    // breaks, and the chuck's contact.
+    void oneRuleSetForTheCheckAndTheGrade() {
+        using proveout::Motion;
+        using proveout::Rule;
+        QCOMPARE(*proveout::materialRule(Motion::Rapid, true, false), Rule::RapidIntoMaterial);
+        QCOMPARE(*proveout::materialRule(Motion::Rapid, false, true), Rule::RapidIntoMaterial);
+        QCOMPARE(*proveout::materialRule(Motion::Manual, true, false), Rule::ManualIntoMaterial);
+        QVERIFY(!proveout::materialRule(Motion::Feed, true, false)); // a cut
+        QCOMPARE(*proveout::materialRule(Motion::Feed, false, false), Rule::FeedSpindleStopped);
+        QCOMPARE(*proveout::materialRule(Motion::Feed, false, true), Rule::FeedWheelStopped);
+        std::set<std::string_view> ids;
+        for (const Rule r : proveout::allRules())
+            QVERIFY(ids.insert(proveout::ruleId(r)).second);
+        QVERIFY(ids.count("manual-into-material"));
+        // A Ø40 part gripped by jaws 20 long, 15 high, their faces at Z-100.
+        proveout::ChuckGeometry c;
+        c.present = true;
+        c.jawFaceZMm = -100;
+        c.jawLengthMm = 20;
+        c.jawHeightMm = 15;
+        c.bodyDiameterMm = 160;
+        c.bodyLengthMm = 80;
+        const proveout::ChuckBoxes b = proveout::chuckBoxes(c, 40);
+        QCOMPARE(b.jaws.z0, -120.0);
+        QCOMPARE(b.jaws.r0, 20.0);
+        QCOMPARE(b.jaws.r1, 35.0);
+        const proveout::Box tool{0, 3, 0, 1000};
+        // Along the part towards the jaws, above the part: into the jaws.
+        QVERIFY(proveout::chuckContact(b, tool, {-50, 25}, {-110, 25}).part == proveout::ChuckContact::Jaws);
+        // Stopping short of them: nothing.
+        QVERIFY(proveout::chuckContact(b, tool, {-50, 25}, {-99, 25}).part == proveout::ChuckContact::None);
+    }
+
     void facingReturnRapidCutsTheBlank() {
         const std::string bad = std::string(kBar) + "%L1 (FACE)\n"
                                                    "N1 G90 G0 M3 X44 Z2\n"

@@ -164,7 +164,9 @@ private slots:
         QVERIFY2(!g.passed, qPrintable(describe(g)));
         QVERIFY(!g.collisions.empty());
         const training::Collision& c = g.collisions.front();
-        QCOMPARE(c.kind, training::CollisionKind::RapidIntoMaterial);
+        // The prove-out's rule (core/proveout/rules.h), the id `k528 check --profile` reports.
+        QCOMPARE(c.rule, proveout::Rule::RapidIntoMaterial);
+        QCOMPARE(proveout::ruleId(c.rule), std::string_view("rapid-into-material"));
         QCOMPARE(c.n, 2);
         QCOMPARE(c.line, lineOf(text, "N2 G0"));
         // It entered the blank (Ø40, face at Z0) from above: at its surface

@@ -1,26 +1,24 @@
-// Material removal and the collision rules along the tool's actual path —
-// what grading needs of a prove-out now, written as one small function over
-// the path and the stock so that it can move to core/proveout (the general
-// collision rules) as it is: it knows nothing of exercises or grades.
+// The prove-out's rules (rules.h) along the path a machine actually took —
+// what the grade of a student's attempt needs (core/training) — with the
+// material it removed.
 //
 // The path is the decimated actual path of a run (toolpath::ActualSample:
 // the tip in the program's coordinates, what moved it — G00, G01, the
 // operator — and the frame). Each stretch between two samples sweeps the
 // tool (stock::toolSweep: the convex hull of the tool's rectangle at both
 // ends) and takes what it covers out of the stock, in the order the tool
-// moved. A stretch that takes material out counts as
-//   - a rapid into the material: a program's G00 that takes out a region
-//     at least kPenetrationMm thick in both directions (a retract grazing
-//     the finished surface within the servo's tolerance is not one);
-//   - a manual move into the material: the same by the operator (jog,
-//     handwheel, the reference-point cycle);
-//   - a cut with the spindle stopped: a G01 that takes material while the
-//     spindle does not turn;
-// and a stretch whose sweep meets the chuck's body or jaws is the tool in
-// the chuck. Each collision names its frame (program, line, N) and where
-// the tip was.
+// moved. A stretch that takes material out breaks the rule materialRule()
+// names for its motion (a rapid, the operator's move, a feed with the spindle
+// stopped) when the region it takes out is at least kPenetrationMm thick in
+// both directions: a retract grazing the finished surface within the servo's
+// tolerance breaks none — the actual path lags the programmed one, the
+// preview's path (proveout.h) does not. A stretch whose tool runs into the
+// chuck (chuckContact) breaks tool-into-chuck. Each collision names its rule,
+// its frame (program, line, N) and where the tip was.
 #pragma once
 
+#include "proveout/geometry.h"
+#include "proveout/rules.h"
 #include "stock/stock.h"
 #include "toolpath/actual_path.h"
 
@@ -29,7 +27,7 @@
 #include <string_view>
 #include <vector>
 
-namespace k528::training {
+namespace k528::proveout {
 
 // A polygon of the half profile: its outer ring and its holes.
 struct Shape {
@@ -37,25 +35,9 @@ struct Shape {
     std::vector<stock::Ring> holes;
 };
 
-// The chuck as rectangles of the half profile (z0, z1, r0, r1).
-struct Rect {
-    double z0 = 0, z1 = 0, r0 = 0, r1 = 0;
-};
-struct Fixture {
-    std::vector<Rect> parts; // the chuck's body and its jaws
-};
-
-enum class CollisionKind : std::uint8_t {
-    RapidIntoMaterial,
-    ManualIntoMaterial,
-    CutWithoutSpindle,
-    ToolIntoChuck,
-    RapidIntoRing, // the grinder's wheel (found by the attempt, training/attempt.h)
-};
-std::string_view collisionName(CollisionKind k); // "rapid_into_material", ...
-
 struct Collision {
-    CollisionKind kind = CollisionKind::RapidIntoMaterial;
+    Rule rule = Rule::RapidIntoMaterial;
+    std::string_view text;            // its text's id (proveout::texts(): "tool-into-chuck.jaws")
     int program = 0, line = 0, n = 0; // 0: the operator's move
     stock::PointZR at;                // the tip where it happened (z, r)
     double depthMm = 0;               // how far into the material or the chuck
@@ -78,6 +60,8 @@ struct CutResult {
     double removedMm2 = 0;
 };
 
+// The servo's tolerance: a region thinner than this taken out by a rapid is
+// the lag of a retract along the finished surface, not a collision.
 inline constexpr double kPenetrationMm = 0.02;
 
 // When the spindle turned: it was `runningAtStart`, and changed at each of
@@ -91,9 +75,10 @@ struct SpindleTimeline {
 };
 
 // `blank` placed with its part zero at `blankZMm`; the path's X is a
-// diameter when `diameterX`.
+// diameter when `diameterX`; `chuck` in the path's coordinates (not present:
+// no chuck rule), gripping the blank.
 CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool& tool,
-                   const Fixture& fixture, std::span<const toolpath::ActualSample> path,
+                   const ChuckGeometry& chuck, std::span<const toolpath::ActualSample> path,
                    bool diameterX, const SpindleTimeline& spindle);
 
-} // namespace k528::training
+} // namespace k528::proveout

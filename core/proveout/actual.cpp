@@ -1,27 +1,11 @@
-#include "training/cutting.h"
+#include "proveout/actual.h"
 
-#include "training/geometry.h"
+#include "proveout/polygons.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace k528::training {
-
-std::string_view collisionName(CollisionKind k) {
-    switch (k) {
-    case CollisionKind::RapidIntoMaterial:
-        return "rapid_into_material";
-    case CollisionKind::ManualIntoMaterial:
-        return "manual_into_material";
-    case CollisionKind::CutWithoutSpindle:
-        return "cut_without_spindle";
-    case CollisionKind::ToolIntoChuck:
-        return "tool_into_chuck";
-    case CollisionKind::RapidIntoRing:
-        return "rapid_into_ring";
-    }
-    return "";
-}
+namespace k528::proveout {
 
 bool SpindleTimeline::runningAt(double t) const {
     bool on = runningAtStart;
@@ -43,11 +27,13 @@ bool SpindleTimeline::runningThrough(double t0, double t1) const {
 }
 
 namespace {
-using namespace geo;
+namespace bg = boost::geometry;
+using geo::Multi;
+using geo::polygonOf;
 
 // The thickness of a region taken out: the smaller side of its box.
 double thickness(const Multi& m) {
-    Box b;
+    geo::Box b;
     bg::envelope(m, b);
     return std::min(b.max_corner().x() - b.min_corner().x(),
                     b.max_corner().y() - b.min_corner().y());
@@ -77,26 +63,17 @@ stock::PointZR entry(const Multi& material, stock::PointZR a, stock::PointZR b,
 } // namespace
 
 CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool& tool,
-                   const Fixture& fixture, std::span<const toolpath::ActualSample> path,
+                   const ChuckGeometry& chuck, std::span<const toolpath::ActualSample> path,
                    bool diameterX, const SpindleTimeline& spindle) {
     CutResult res;
-    Multi stock = translated(multiOf(stock::Stock(blank)), blankZMm);
-    std::vector<Poly> chuck;
-    for (const Rect& r : fixture.parts)
-        chuck.push_back(rect(r.z0, r.z1, r.r0, r.r1));
-    Box chuckBox;
-    bool haveChuck = !chuck.empty();
-    if (haveChuck) {
-        Multi all;
-        for (const Poly& c : chuck)
-            all.push_back(c);
-        bg::envelope(all, chuckBox);
-    }
+    Multi stock = geo::translated(geo::multiOf(stock::Stock(blank)), blankZMm);
+    const ChuckBoxes chuckParts = chuckBoxes(chuck, blank.outerDiameterMm);
+    const Box toolBox{0, tool.widthMm, 0, tool.heightMm};
     const double toR = diameterX ? 0.5 : 1.0;
-    // One collision of a kind per frame (a crash is named once, where it began).
-    const auto already = [&](CollisionKind k, const toolpath::ActualSample& s) {
+    // One collision of a rule per frame (a crash is named once, where it began).
+    const auto already = [&](Rule r, const toolpath::ActualSample& s) {
         for (const Collision& c : res.collisions)
-            if (c.kind == k && c.program == s.program && c.line == s.line && c.n == s.n)
+            if (c.rule == r && c.program == s.program && c.line == s.line && c.n == s.n)
                 return true;
         return false;
     };
@@ -106,25 +83,33 @@ CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool
         // The stretch a -> b belongs to b's frame (the decimator starts each
         // frame with its first sample).
         const stock::PointZR pa{a.z, a.x * toR}, pb{b.z, b.x * toR};
-        const stock::Ring sweepRing = stock::toolSweep(pa, pb, tool);
-        const Poly sweep = polygonOf(sweepRing);
-        Box sb;
-        bg::envelope(sweep, sb);
-        if (haveChuck && bg::intersects(sb, chuckBox) && !already(CollisionKind::ToolIntoChuck, b)) {
-            for (const Poly& c : chuck) {
-                Multi inter;
-                bg::intersection(sweep, c, inter);
-                if (bg::area(inter) > 1e-9) {
-                    res.collisions.push_back(
-                        {CollisionKind::ToolIntoChuck, b.program, b.line, b.n, pb, thickness(inter),
-                         bg::area(inter)});
-                    break;
-                }
+        if (chuck.present && !already(Rule::ToolIntoChuck, b)) {
+            const PointZR ca{pa.z, pa.r}, cb{pb.z, pb.r};
+            const ChuckHit hit = chuckContact(chuckParts, toolBox, ca, cb);
+            if (hit.part != ChuckContact::None) {
+                const auto at = [&](double t) {
+                    return PointZR{ca.z + (cb.z - ca.z) * t, ca.r + (cb.r - ca.r) * t};
+                };
+                const PointZR where = at(firstContact([&](double t) {
+                    return Sweep(toolBox, ca, at(t)).overlaps(hit.obstacle, kContactEpsMm);
+                }));
+                const Box end = toolBox.moved(cb);
+                const Box& o = hit.obstacle;
+                const double depth = std::max(
+                    0.0, std::min(std::min(end.z1, o.z1) - std::max(end.z0, o.z0),
+                                  std::min(end.r1, o.r1) - std::max(end.r0, o.r0)));
+                res.collisions.push_back({Rule::ToolIntoChuck,
+                                          hit.part == ChuckContact::Jaws ? "tool-into-chuck.jaws"
+                                                                         : "tool-into-chuck.body",
+                                          b.program, b.line, b.n, {where.z, where.r}, depth, 0});
             }
         }
         if (stock.empty())
             continue;
-        Box stockBox;
+        const stock::Ring sweepRing = stock::toolSweep(pa, pb, tool);
+        const geo::Poly sweep = polygonOf(sweepRing);
+        geo::Box sb, stockBox;
+        bg::envelope(sweep, sb);
         bg::envelope(stock, stockBox);
         if (!bg::intersects(sb, stockBox))
             continue;
@@ -135,20 +120,14 @@ CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool
             continue;
         const double thick = thickness(taken);
         if (thick >= kPenetrationMm) {
-            CollisionKind k = CollisionKind::RapidIntoMaterial;
-            bool crash = false;
-            if (b.manual) {
-                k = CollisionKind::ManualIntoMaterial;
-                crash = true;
-            } else if (b.kind == toolpath::SegmentKind::Rapid) {
-                crash = true;
-            } else if (!spindle.runningThrough(a.tMs, b.tMs)) {
-                k = CollisionKind::CutWithoutSpindle;
-                crash = true;
-            }
-            if (crash && !already(k, b))
-                res.collisions.push_back({k, b.program, b.line, b.n, entry(stock, pa, pb, tool),
-                                          thick, area});
+            const Motion motion = b.manual ? Motion::Manual
+                                  : b.kind == toolpath::SegmentKind::Rapid ? Motion::Rapid
+                                                                             : Motion::Feed;
+            const bool turning = motion == Motion::Feed && spindle.runningThrough(a.tMs, b.tMs);
+            if (const std::optional<Rule> rule = materialRule(motion, turning, false);
+                rule && !already(*rule, b))
+                res.collisions.push_back({*rule, ruleId(*rule), b.program, b.line, b.n,
+                                          entry(stock, pa, pb, tool), thick, area});
         }
         Multi left;
         bg::difference(stock, sweep, left);
@@ -156,8 +135,8 @@ CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool
         res.removedMm2 += area;
         res.removals.push_back({sweepRing, b.kind, b.manual, b.program, b.line, b.n, area});
     }
-    res.finished = shapesOf(stock);
+    res.finished = geo::shapesOf(stock);
     return res;
 }
 
-} // namespace k528::training
+} // namespace k528::proveout
