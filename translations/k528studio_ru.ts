@@ -182,6 +182,217 @@
     </message>
 </context>
 <context>
+    <name>TrainingTexts</name>
+    <message>
+        <source>the machine does not take the program: %1 errors, the first on line %2: %3</source>
+        <translation>Программа не принята станком: %1 ошибок, первая в строке %2: %3</translation>
+    </message>
+    <message>
+        <source>the file holds no program: the machine has nothing to run</source>
+        <translation>В файле нет программы: станку нечего выполнять</translation>
+    </message>
+    <message>
+        <source>line %1: the operator's step '%2' is not understood: %3</source>
+        <translation>Строка %1: действие оператора «%2» не понято: %3</translation>
+    </message>
+    <message>
+        <source>HOLD:BUTTON:S holds a button for S seconds (0..3600)</source>
+        <translation>HOLD:КНОПКА:С — держать кнопку С секунд (0..3600)</translation>
+    </message>
+    <message>
+        <source>the E-stop latches: PUSH:ESTOP, PULL:ESTOP</source>
+        <translation>аварийная кнопка фиксируется: PUSH:ESTOP, PULL:ESTOP</translation>
+    </message>
+    <message>
+        <source>no such button; the machine's buttons: DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP</source>
+        <translation>нет такой кнопки; кнопки станка: DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP</translation>
+    </message>
+    <message>
+        <source>WAIT:S waits S seconds (0..36000)</source>
+        <translation>WAIT:С — подождать С секунд (0..36000)</translation>
+    </message>
+    <message>
+        <source>PROGRAM:N takes a program number 1..99</source>
+        <translation>PROGRAM:N — номер программы 1..99</translation>
+    </message>
+    <message>
+        <source>HANDWHEEL:X, HANDWHEEL:Z or HANDWHEEL:OFF</source>
+        <translation>HANDWHEEL:X, HANDWHEEL:Z или HANDWHEEL:OFF</translation>
+    </message>
+    <message>
+        <source>STEP:1, STEP:10 or STEP:100: the handwheel's multiplier</source>
+        <translation>STEP:1, STEP:10 или STEP:100 — множитель маховика</translation>
+    </message>
+    <message>
+        <source>TURN:N turns the handwheel by N detents (±1..100000)</source>
+        <translation>TURN:N — повернуть маховик на N делений (±1..100000)</translation>
+    </message>
+    <message>
+        <source>OVERRIDE:P takes a step of the override: 0 1 2 5 10 20 35 50 75 90 100</source>
+        <translation>OVERRIDE:П — положение корректора: 0 1 2 5 10 20 35 50 75 90 100</translation>
+    </message>
+    <message>
+        <source>R&lt;n&gt;=&lt;value&gt;: a writable R-parameter 0..231 and a whole value</source>
+        <translation>R&lt;n&gt;=&lt;значение&gt; — записываемый R-параметр 0..231 и целое значение</translation>
+    </message>
+    <message>
+        <source>expected one of: %2</source>
+        <translation>ожидается одно из: %2</translation>
+    </message>
+    <message>
+        <source>program L%1 was not selected (ACK, number, ENTER in АВТОМАТ)</source>
+        <translation>программа L%1 не выбрана (ACK, номер, ENTER в режиме АВТОМАТ)</translation>
+    </message>
+    <message>
+        <source>the override %1 %% was not set: the machine has no such step</source>
+        <translation>корректор %1 %% не установлен: на станке нет такого положения</translation>
+    </message>
+    <message>
+        <source>the wheel was not changed: stop the wheel spindle first</source>
+        <translation>круг не заменён: сначала остановите шпиндель круга</translation>
+    </message>
+    <message>
+        <source>the door did not open: it is locked</source>
+        <translation>дверь не открылась: она заблокирована</translation>
+    </message>
+    <message>
+        <source>the reference-point cycle did not complete: %1</source>
+        <translation>привязка к базовой точке не выполнена: %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)</source>
+        <translation>%1 = %2 не записано (РУЧНОЙ, экран 3; во время программы запись запрещена)</translation>
+    </message>
+    <message>
+        <source>the program did not start after «Пуск»</source>
+        <translation>программа не запустилась после «Пуск»</translation>
+    </message>
+    <message>
+        <source>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</source>
+        <translation>Перерез: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4 — кадр %5, строка %6</translation>
+    </message>
+    <message>
+        <source>over-cut by a manual move: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</source>
+        <translation>Перерез ручным перемещением: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4</translation>
+    </message>
+    <message>
+        <source>over-cut: metal missing %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</source>
+        <translation>Перерез: металла нет на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4</translation>
+    </message>
+    <message>
+        <source>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4; the nearest pass is frame %5, line %6</source>
+        <translation>Недорез: оставлено %1 мкм сверх допуска (площадь %2 мм²) на Ø%3 у Z%4; ближайший проход — кадр %5, строка %6</translation>
+    </message>
+    <message>
+        <source>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4: no pass came here</source>
+        <translation>Недорез: оставлено %1 мкм сверх допуска (площадь %2 мм²) на Ø%3 у Z%4 — здесь не прошёл ни один проход</translation>
+    </message>
+    <message>
+        <source>a rapid (G00) into the metal at X%1 Z%2, %3 mm into the blank — frame %4, line %5: the tool is broken</source>
+        <translation>Ускоренное перемещение (G00) в металл на X%1 Z%2, на %3 мм в заготовку — кадр %4, строка %5: инструмент сломан</translation>
+    </message>
+    <message>
+        <source>a manual move into the metal at X%1 Z%2, %3 mm into the blank: the tool is broken</source>
+        <translation>Ручное перемещение в металл на X%1 Z%2, на %3 мм в заготовку: инструмент сломан</translation>
+    </message>
+    <message>
+        <source>cutting with the spindle stopped at X%1 Z%2 — frame %4, line %5: start the spindle (M3) before the feed</source>
+        <translation>Резание при остановленном шпинделе на X%1 Z%2 — кадр %4, строка %5: включите шпиндель (M3) до подачи</translation>
+    </message>
+    <message>
+        <source>a feed of the wheel into the ring with the wheel stopped: its edge at Ø%1 near Z%2 — frame %4, line %5: start the wheel before the feed</source>
+        <translation>Подача круга в кольцо при остановленном круге: кромка Ø%1 у Z%2 — кадр %4, строка %5: включите круг до подачи</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck's jaws at X%1 Z%2 — frame %4, line %5</source>
+        <translation>Инструмент в кулачки патрона на X%1 Z%2 — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck's body at X%1 Z%2 — frame %4, line %5</source>
+        <translation>Инструмент в корпус патрона на X%1 Z%2 — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck or its jaws by a manual move at X%1 Z%2</source>
+        <translation>Инструмент в патрон или кулачки ручным перемещением на X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>the wheel into the ring at rapid: its edge at Ø%1 near Z%2, %3 mm into the wall — frame %4, line %5</source>
+        <translation>Круг на ускоренном ходу в кольцо: кромка Ø%1 у Z%2, на %3 мм в стенку — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>message %1 «%2» — frame %3, line %4: it must not come in this exercise</source>
+        <translation>Сообщение %1 «%2» — кадр %3, строка %4: в этом упражнении его быть не должно</translation>
+    </message>
+    <message>
+        <source>message %1 «%2»: it must not come in this exercise</source>
+        <translation>Сообщение %1 «%2»: в этом упражнении его быть не должно</translation>
+    </message>
+    <message>
+        <source>the program was never started</source>
+        <translation>Программа не запускалась</translation>
+    </message>
+    <message>
+        <source>the program did not start: %1</source>
+        <translation>Программа не запустилась: %1</translation>
+    </message>
+    <message>
+        <source>a message stopped the program before its end — frame %1, line %2</source>
+        <translation>Программа остановлена сообщением и не выполнена до конца — кадр %1, строка %2</translation>
+    </message>
+    <message>
+        <source>the program was interrupted before its end — frame %1, line %2</source>
+        <translation>Программа прервана и не выполнена до конца — кадр %1, строка %2</translation>
+    </message>
+    <message>
+        <source>the program did not end in the time given — frame %1, line %2</source>
+        <translation>Программа не закончилась за отведённое время — кадр %1, строка %2</translation>
+    </message>
+    <message>
+        <source>cycle time %1 s is over the limit of %2 s</source>
+        <translation>Время цикла %1 с больше нормы %2 с</translation>
+    </message>
+    <message>
+        <source>the reference-point cycle (ПБТ) of X and Z was not done before the program started</source>
+        <translation>Привязка к базовой точке (ПБТ) по X и Z не выполнена до пуска программы</translation>
+    </message>
+    <message>
+        <source>R%1 was %2 when the program started; the task asks for %3 (РУЧНОЙ, screen 3)</source>
+        <translation>R%1 при пуске программы = %2, а по заданию должно быть %3 (РУЧНОЙ, экран 3)</translation>
+    </message>
+    <message>
+        <source>messages not acknowledged (ESC): %1</source>
+        <translation>Сообщения не квитированы (ESC): %1</translation>
+    </message>
+    <message>
+        <source>the tool stopped at X%1 Z%2; the task asks for X%3 Z%4 (±%5 mm)</source>
+        <translation>Инструмент остановлен на X%1 Z%2, а по заданию — X%3 Z%4 (±%5 мм)</translation>
+    </message>
+    <message>
+        <source>the worn wheel was not changed (NEW WHEEL)</source>
+        <translation>Изношенный круг не заменён (НОВЫЙ КРУГ)</translation>
+    </message>
+    <message>
+        <source>the program did not run to its end</source>
+        <translation>Программа не выполнена до конца</translation>
+    </message>
+    <message>
+        <source>the spindle still turns after the program (M5)</source>
+        <translation>После программы шпиндель не остановлен (M5)</translation>
+    </message>
+    <message>
+        <source>the coolant is still on after the program (M9)</source>
+        <translation>После программы не выключена СОЖ (M9)</translation>
+    </message>
+    <message>
+        <source>the in-process gauge is still in the bore after the program (M21)</source>
+        <translation>После программы прибор активного контроля не отведён (M21)</translation>
+    </message>
+    <message>
+        <source>R%1 is %2 after the program; %3 was expected</source>
+        <translation>R%1 после программы = %2, ожидалось %3</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -632,6 +843,17 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ConstantsLock</name>
+    <message>
+        <source>Name the class the constants are locked for</source>
+        <translation>Укажите группу, для которой блокируются константы</translation>
+    </message>
+    <message>
+        <source>The machine constants are locked by the trainer for the class «%1»: they cannot be changed until the trainer unlocks them (Training course, Class tab)</source>
+        <translation>Константы станка заблокированы преподавателем для группы «%1»: изменить их нельзя, пока преподаватель не снимет блокировку (Учебный курс, вкладка «Группа»)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConstantsModel</name>
     <message>
         <source>No.</source>
@@ -836,6 +1058,10 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>sending them to the controller...</source>
         <translation>передача в контроллер...</translation>
     </message>
+    <message>
+        <source>The trainer has unlocked the machine constants</source>
+        <translation>Преподаватель снял блокировку констант станка</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::Controller</name>
@@ -917,10 +1143,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>Ports</source>
         <translation>Порты</translation>
-    </message>
-    <message>
-        <source>List the system's serial ports again</source>
-        <translation>Перечитать последовательные порты системы</translation>
     </message>
     <message>
         <source>Pull into the database</source>
@@ -1111,10 +1333,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>Программы</translation>
     </message>
     <message>
-        <source>Choose the controller's port, speed, parity and address, then Connect.</source>
-        <translation>Выберите порт контроллера, скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
-    </message>
-    <message>
         <source>Clear the C area (all constants 0)...</source>
         <translation>Очистить область C (все константы 0)...</translation>
     </message>
@@ -1185,6 +1403,93 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>Why: %1</source>
         <translation>Причина: %1</translation>
+    </message>
+    <message>
+        <source>No machine of the database has a line</source>
+        <translation>Ни у одного станка базы данных нет линии</translation>
+    </message>
+    <message>
+        <source>Connect to a database &amp;machine</source>
+        <translation>Подключиться к &amp;станку базы данных</translation>
+    </message>
+    <message>
+        <source>Line (Modbus TCP)</source>
+        <translation>Линия (Modbus TCP)</translation>
+    </message>
+    <message>
+        <source>Host:port</source>
+        <translation>Узел:порт</translation>
+    </message>
+    <message>
+        <source>Unit id</source>
+        <translation>Номер устройства</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>(the line below)</source>
+        <translation>(линия ниже)</translation>
+    </message>
+    <message>
+        <source>The machines of the database that keep their controller's line</source>
+        <translation>Станки базы данных, у которых задана линия их УЧПУ</translation>
+    </message>
+    <message>
+        <source>List the system's serial ports and the database's machines again</source>
+        <translation>Заново получить последовательные порты системы и станки базы данных</translation>
+    </message>
+    <message>
+        <source>Enter the gateway's HOST:PORT.</source>
+        <translation>Введите УЗЕЛ:ПОРТ шлюза.</translation>
+    </message>
+    <message>
+        <source>Choose a machine of the database, or the controller's port (or HOST:PORT for Modbus TCP), speed, parity and address, then Connect.</source>
+        <translation>Выберите станок базы данных или порт УЧПУ (или УЗЕЛ:ПОРТ для Modbus TCP), скорость, чётность и адрес, затем нажмите «Подключиться».</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::CycleTimeLabel</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 мин %2 с</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <source>Cycle time: none while the file has errors</source>
+        <translation>Время цикла: нет, пока в файле есть ошибки</translation>
+    </message>
+    <message>
+        <source>Cycle time: choose the machine the file is for</source>
+        <translation>Время цикла: выберите станок для файла</translation>
+    </message>
+    <message>
+        <source>Cycle time: measuring on the simulated machine…</source>
+        <translation>Время цикла: измеряется на модели станка…</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): %3</source>
+        <translation>Время цикла L%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the run ends in an alarm</source>
+        <translation>прогон заканчивается аварией</translation>
+    </message>
+    <message>
+        <source>the run does not end within an hour</source>
+        <translation>прогон не заканчивается за час</translation>
+    </message>
+    <message>
+        <source>the program cannot be started on this machine</source>
+        <translation>программу нельзя запустить на этом станке</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): none, %3</source>
+        <translation>Время цикла L%1 (%2): нет, %3</translation>
     </message>
 </context>
 <context>
@@ -2821,6 +3126,10 @@ Its comment stays: %3</source>
         <source>The push did not start: %1; nothing was sent</source>
         <translation>Передача не начата: %1; ничего не передано</translation>
     </message>
+    <message>
+        <source>%1, unit %2 (Modbus TCP)</source>
+        <translation>%1, устройство %2 (Modbus TCP)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachinePanelWidget</name>
@@ -3214,6 +3523,10 @@ Its comment stays: %3</source>
     <message>
         <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>
         <translation>В базе данных %1 нет станка %2: он работает таким, каким был загружен; станки этой базы — в меню Файл &gt; Станок</translation>
+    </message>
+    <message>
+        <source>Shop</source>
+        <translation>Цех</translation>
     </message>
 </context>
 <context>
@@ -4026,6 +4339,184 @@ Details: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ShopTile</name>
+    <message>
+        <source>Mode %1</source>
+        <translation>Режим %1</translation>
+    </message>
+    <message>
+        <source>, running</source>
+        <translation>, выполнение</translation>
+    </message>
+    <message>
+        <source>Program L%1, frame N%2</source>
+        <translation>Программа L%1, кадр N%2</translation>
+    </message>
+    <message>
+        <source>No program</source>
+        <translation>Нет программы</translation>
+    </message>
+    <message>
+        <source>Alarm (no number)</source>
+        <translation>Авария (без номера)</translation>
+    </message>
+    <message>
+        <source>The line does not answer</source>
+        <translation>Линия не отвечает</translation>
+    </message>
+    <message>
+        <source>Last answer at %1</source>
+        <translation>Последний ответ в %1</translation>
+    </message>
+    <message>
+        <source>No answer yet</source>
+        <translation>Ответа ещё не было</translation>
+    </message>
+    <message>
+        <source>Polling...</source>
+        <translation>Опрос...</translation>
+    </message>
+    <message>
+        <source>No transfer on record</source>
+        <translation>Обменов не записано</translation>
+    </message>
+    <message>
+        <source>Last transfer: %1</source>
+        <translation>Последний обмен: %1</translation>
+    </message>
+    <message>
+        <source>Click: show this machine's controller on every view of the window</source>
+        <translation>Щелчок: показать УЧПУ этого станка во всех видах окна</translation>
+    </message>
+    <message>
+        <source>%1 in this state, since %2</source>
+        <translation>%1 в этом состоянии, с %2</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ShopView</name>
+    <message>
+        <source>run</source>
+        <translation>работа</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>простой</translation>
+    </message>
+    <message>
+        <source>alarm</source>
+        <translation>авария</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>нет связи</translation>
+    </message>
+    <message>
+        <source>%1 d %2:%3</source>
+        <translation>%1 сут %2:%3</translation>
+    </message>
+    <message>
+        <source>alarm %1</source>
+        <translation>авария %1</translation>
+    </message>
+    <message>
+        <source>power-on</source>
+        <translation>включение</translation>
+    </message>
+    <message>
+        <source>Reload</source>
+        <translation>Перечитать</translation>
+    </message>
+    <message>
+        <source>Read the database's machines and their lines again</source>
+        <translation>Заново прочитать станки базы данных и их линии</translation>
+    </message>
+    <message>
+        <source>Alarms raised and cleared</source>
+        <translation>Возникшие и снятые аварии</translation>
+    </message>
+    <message>
+        <source>Today: minutes in each state</source>
+        <translation>Сегодня: минуты в каждом состоянии</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Время</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Событие</translation>
+    </message>
+    <message>
+        <source>Alarm</source>
+        <translation>Авария</translation>
+    </message>
+    <message>
+        <source>minutes</source>
+        <translation>минуты</translation>
+    </message>
+    <message>
+        <source>The database cannot be read: %1</source>
+        <translation>Базу данных нельзя прочитать: %1</translation>
+    </message>
+    <message>
+        <source>No machine of the database %1 keeps its controller's line: set a machine's line (Modbus TCP or serial) in the database to see it here.</source>
+        <translation>Ни у одного станка базы данных %1 не задана линия его УЧПУ: задайте линию станка (Modbus TCP или последовательный порт) в базе данных, чтобы видеть его здесь.</translation>
+    </message>
+    <message>
+        <source>Machines of the database %1 on their lines: %2; each line polled every %3 ms</source>
+        <translation>Станки базы данных %1 на своих линиях: %2; каждая линия опрашивается каждые %3 мс</translation>
+    </message>
+    <message>
+        <source>push</source>
+        <translation>в УЧПУ</translation>
+    </message>
+    <message>
+        <source>pull</source>
+        <translation>из УЧПУ</translation>
+    </message>
+    <message>
+        <source>ok</source>
+        <translation>успешно</translation>
+    </message>
+    <message>
+        <source>partial</source>
+        <translation>частично</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>не удалось</translation>
+    </message>
+    <message>
+        <source>%1 %2, %3</source>
+        <translation>%1 %2, %3</translation>
+    </message>
+    <message>
+        <source>The machines cannot be polled: %1</source>
+        <translation>Станки нельзя опросить: %1</translation>
+    </message>
+    <message>
+        <source>raised</source>
+        <translation>возникла</translation>
+    </message>
+    <message>
+        <source>cleared</source>
+        <translation>снята</translation>
+    </message>
+    <message>
+        <source>The controller of %1 cannot be shown now: the Controller dock's line is busy</source>
+        <translation>УЧПУ станка %1 сейчас нельзя показать: линия панели «Контроллер» занята</translation>
+    </message>
+    <message>
+        <source>Connecting to the controller of %1...</source>
+        <translation>Подключение к УЧПУ станка %1...</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::SimulatedController</name>
     <message>
         <source>simulated %1</source>
@@ -4210,6 +4701,74 @@ Details: %3</source>
         <source>The database cannot be read: only this session's attempts are listed (%1)</source>
         <translation>База данных недоступна: показаны только попытки этого сеанса (%1)</translation>
     </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>Экспорт PDF</translation>
+    </message>
+    <message>
+        <source>The class report as PDF: each attempt with its score and deductions</source>
+        <translation>Отчёт по группе в PDF: каждая попытка с оценкой и снятыми баллами</translation>
+    </message>
+    <message>
+        <source>Training course: class report</source>
+        <translation>Учебный курс: отчёт по группе</translation>
+    </message>
+    <message>
+        <source>Attempts: %1; printed %2</source>
+        <translation>Попыток: %1; напечатано %2</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Файл</translation>
+    </message>
+    <message>
+        <source>Cycle time, s</source>
+        <translation>Время цикла, с</translation>
+    </message>
+    <message>
+        <source>Deductions</source>
+        <translation>Снятые баллы</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Lock the constants…</source>
+        <translation>Заблокировать константы…</translation>
+    </message>
+    <message>
+        <source>Unlock the constants</source>
+        <translation>Снять блокировку констант</translation>
+    </message>
+    <message>
+        <source>Lets the machine constants be changed again</source>
+        <translation>Снова разрешает изменять константы станка</translation>
+    </message>
+    <message>
+        <source>The machine constants are locked for the class «%1»</source>
+        <translation>Константы станка заблокированы для группы «%1»</translation>
+    </message>
+    <message>
+        <source>Locks the machine constants for a class: the constants dock and the K923 refuse changes until you unlock them (kept in the database)</source>
+        <translation>Блокирует константы станка для группы: окно констант и К923 не дают их изменять, пока вы не снимете блокировку (хранится в базе данных)</translation>
+    </message>
+    <message>
+        <source>The machine constants may be changed</source>
+        <translation>Константы станка можно изменять</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>Нет станка</translation>
+    </message>
+    <message>
+        <source>Lock the machine constants</source>
+        <translation>Блокировка констант станка</translation>
+    </message>
+    <message>
+        <source>The class the constants are locked for:</source>
+        <translation>Группа, для которой блокируются константы:</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::Workspaces</name>
@@ -4252,6 +4811,14 @@ Details: %3</source>
     <message>
         <source>Learning the machine: the machine's panel, the K923, the backplot and the oscilloscope</source>
         <translation>Обучение на станке: пульт станка, K923, траектория и осциллограф</translation>
+    </message>
+    <message>
+        <source>Shop</source>
+        <translation>Цех</translation>
+    </message>
+    <message>
+        <source>The shop floor: a tile per machine of the database on its line, the alarms as they come, today's time in each state; the controller of the machine clicked beside it</source>
+        <translation>Цех: плитка на каждый станок базы данных на своей линии, аварии по мере появления, время в каждом состоянии за сегодня; рядом — УЧПУ станка, по которому щёлкнули</translation>
     </message>
 </context>
 <context>

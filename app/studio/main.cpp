@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
         "grinder-205) or a machine file (default: the last one chosen, else training-lathe).",
         "name|path");
     QCommandLineOption workspaceOption(
-        "workspace", "Workspace to start in: operator, technologist or training (default: the one left last time).",
+        "workspace", "Workspace to start in: operator, technologist, training or shop (default: the one left last time).",
         "name");
     QCommandLineOption firstFrameOption(
         "first-frame", "Print 'k528studio: first frame' once the main window's first frame is painted, then quit "
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
     auto* window = new k528::studio::MainWindow(machine);
     window->setAttribute(Qt::WA_DeleteOnClose);
     if (cli.isSet(workspaceOption) && !window->workspaces()->activate(cli.value(workspaceOption))) {
-        std::fprintf(stderr, "k528studio: unknown workspace '%s' (use operator, technologist or training)\n",
+        std::fprintf(stderr, "k528studio: unknown workspace '%s' (use operator, technologist, training or shop)\n",
                      qPrintable(cli.value(workspaceOption)));
         return 2;
     }

@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "shop/shop_view.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -20,6 +21,7 @@
 #include "controller/controller_dock.h"
 #include "controller/simulated_controller.h"
 #include "controller/view_notice.h"
+#include "constants/constants_lock.h"
 #include "constants/constants_dock.h"
 #include "database/database_ui.h"
 #include "engine/self_test.h"
@@ -82,6 +84,10 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     workArea_->addTab(programEditor_, QString());
     connect(programEditor_, &EditorTab::statusMessage, this, [this](const QString& m) { statusBar()->showMessage(m, 10000); });
     createDocks();
+    // The Shop workspace's page (shop/shop_view.cpp): after the Controller
+    // dock, which a click on a machine's tile connects.
+    shopView_ = new ShopView(this);
+    workArea_->addTab(shopView_, QString());
     connect(viewed_, &ViewedController::changed, this, &MainWindow::viewedChanged);
     // The files of the last session, or the machine's sample on a first start.
     programEditor_->openStartDocuments(QString::fromStdString(machine_.profile.name));
@@ -196,6 +202,12 @@ void MainWindow::createDocks() {
     k923Dock_->setWidget(k923_);
     connect(k923_, &K923Widget::keyPressed, this, [this](panel::KeyPress k) {
         Controller& c = viewed_->current();
+        // The trainer's lock: the simulated K923's C-parameter editing refused, the lock named.
+        if (c.simulated())
+            if (const QString why = ConstantsLock::of(machine_.profile)->refusesKey(c.state(), k); !why.isEmpty()) {
+                statusBar()->showMessage(why, 10000);
+                return;
+            }
         if (c.acceptsKeys())
             c.pressKey(k); // updated() redraws the panel
         else
@@ -280,6 +292,7 @@ void MainWindow::createDocks() {
     });
     connect(static_cast<TrainingPane*>(training->widget()), &TrainingPane::lineActivated, programEditor_,
             &EditorTab::showLine);
+    static_cast<TrainingPane*>(training->widget())->setMachine(machine_.profile); // the trainer's lock of its constants
     tabifyDockWidget(backplotDock, training); // its home: a tab of the backplot, not one more row
     addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
     // The debugger of the editor in a dock of its own (the technologist
@@ -631,6 +644,7 @@ void MainWindow::retranslate() {
                                       : QString();
     workArea_->setTabText(workArea_->indexOf(programMonitor_), tr("Program") + stale);
     workArea_->setTabText(workArea_->indexOf(programEditor_), tr("Editor"));
+    workArea_->setTabText(workArea_->indexOf(shopView_), tr("Shop"));
     k923Dock_->setWindowTitle((viewed_->isSimulated() ? tr("K923 operator panel")
                                                       : tr("K923: LEDs only (no LCD text or keys over the link)")) +
                               stale);

@@ -35,6 +35,7 @@ class SimulatedController;
 class ViewedController;
 class ViewNotice;
 class Workspaces;
+class ShopView;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -72,6 +73,8 @@ public:
     SimulatedController* simulatedController() const { return simController_; }
     void setViewedController(Controller* controller); // nullptr: the simulated one
     EditorTab* programEditor() const { return programEditor_; }
+    // The Shop workspace's page: every machine of the database on its line.
+    ShopView* shopView() const { return shopView_; }
     // The machine this window simulates, and where it came from.
     const MachineChoice& machine() const { return machine_; }
     // File > Machine: the machines to choose from (rebuilt as it opens).
@@ -163,6 +166,7 @@ private:
     AxesView* axesView_ = nullptr;
     ProgramMonitor* programMonitor_ = nullptr;
     EditorTab* programEditor_ = nullptr;
+    ShopView* shopView_ = nullptr;
     QDockWidget* debuggerDock_ = nullptr;
     Workspaces* workspaces_ = nullptr;
     QMenu* workspaceMenu_ = nullptr;

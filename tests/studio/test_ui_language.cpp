@@ -503,7 +503,8 @@ private:
     }
 
     void walkWindow(Walker& walker, MainWindow& w) {
-        for (const QString& id : {QStringLiteral("operator"), QStringLiteral("technologist"), QStringLiteral("training")}) {
+        for (const QString& id : {QStringLiteral("operator"), QStringLiteral("technologist"), QStringLiteral("training"),
+                                 QStringLiteral("shop")}) {
             QVERIFY(w.workspaces()->activate(id));
             QApplication::processEvents();
             Walker one = walker;

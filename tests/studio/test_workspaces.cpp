@@ -271,7 +271,7 @@ private slots:
         QCOMPARE(QSettings().value("workspaces/current").toString(), w.workspaces()->current());
         // The switch is in the menu bar's corner, one button a workspace.
         QCOMPARE(w.menuBar()->cornerWidget(Qt::TopRightCorner), w.workspaces()->switcher());
-        QCOMPARE(w.workspaces()->switcher()->findChildren<QAbstractButton*>().size(), 3);
+        QCOMPARE(w.workspaces()->switcher()->findChildren<QAbstractButton*>().size(), 4);
     }
 
     void everyWorkspaceFitsTheScreen() {

@@ -11,6 +11,7 @@
 #include "program/formatter.h"
 #include "program/parser.h"
 #include "session/machine_source.h"
+#include "shop/shop_machines.h"
 #include "units/units.h"
 
 #include <utility>
@@ -70,11 +71,13 @@ ControllerDock::ControllerDock(MainWindow* window) : PaneDock(window, "controlle
             // The plugin's name and version: its own words (its transport's
             // description is English metadata, not a text of this window).
             pluginNames_ << QStringLiteral("%1 %2").arg(f.name, f.version);
+            pluginIds_ << f.name;
         } else {
             pluginProblem_ += QStringLiteral("%1: %2\n").arg(f.file, f.refused);
         }
     }
     build();
+    refreshMachines();
     retranslate();
     refreshPorts();
     updateEnabled();
@@ -96,6 +99,12 @@ void ControllerDock::build() {
     plugin_ = new QComboBox(lineBox_);
     plugin_->setObjectName("controller.plugin");
     plugin_->addItems(pluginNames_);
+    machine_ = new QComboBox(lineBox_);
+    machine_->setObjectName("controller.machine");
+    machine_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    machine_->setMinimumContentsLength(14);
+    connect(machine_, &QComboBox::activated, this, [this] { machineChosen(); });
+    connect(plugin_, &QComboBox::currentIndexChanged, this, [this] { pluginChosen(); });
     port_ = new QComboBox(lineBox_);
     port_->setObjectName("controller.port");
     port_->setEditable(true); // a pty or a port the system does not list
@@ -131,8 +140,9 @@ void ControllerDock::build() {
             connectLine();
     });
     connect(refreshPorts_, &QPushButton::clicked, this, &ControllerDock::refreshPorts);
-    for (int i = 0; i < 5; ++i)
+    for (int i = 0; i < 6; ++i)
         captions_[i] = new QLabel(lineBox_);
+    form->addRow(captions_[5], machine_);
     form->addRow(captions_[0], plugin_);
     form->addRow(captions_[1], portRow);
     form->addRow(captions_[2], baud_);
@@ -204,6 +214,20 @@ void ControllerDock::build() {
     // whatever port the system lists first.
     connectAction_ = menu_->addAction(QString(), this, &ControllerDock::askForLine);
     connectAction_->setObjectName("action.controller.connect");
+    // The database's machines with their stored line: one click connects.
+    connectMachineMenu_ = menu_->addMenu(QString());
+    connectMachineMenu_->setObjectName("menu.controller.connectMachine");
+    connect(connectMachineMenu_, &QMenu::aboutToShow, this, [this] {
+        connectMachineMenu_->clear();
+        const std::vector<ShopMachine> all = shopMachines();
+        for (const ShopMachine& m : all)
+            connectMachineMenu_
+                ->addAction(QStringLiteral("%1 — %2").arg(m.name, QString::fromStdString(m.line)), this,
+                            [this, n = m.name] { connectMachine(n); })
+                ->setObjectName("action.controller.connect." + m.name);
+        if (all.empty())
+            connectMachineMenu_->addAction(tr("No machine of the database has a line"))->setEnabled(false);
+    });
     disconnectAction_ = menu_->addAction(QString(), this, &ControllerDock::disconnectLine);
     disconnectAction_->setObjectName("action.controller.disconnect");
     menu_->addSeparator();
@@ -231,24 +255,29 @@ void ControllerDock::retranslate() {
     setWindowTitle(tr("Controller"));
     menu_->setTitle(tr("&Controller"));
     connectAction_->setText(tr("&Connect to the controller"));
+    connectMachineMenu_->setTitle(tr("Connect to a database &machine"));
     disconnectAction_->setText(tr("&Disconnect"));
     pullAction_->setText(tr("&Pull into the database"));
     pushFileAction_->setText(tr("Push a &file..."));
     pushMachineMenu_->setTitle(tr("Push a database &machine"));
     clearCAction_->setText(tr("Clear the C area (all constants 0)..."));
     clearRAction_->setText(tr("Clear the R area (all R-parameters 0)..."));
-    lineBox_->setTitle(tr("Line (RS485, Modbus RTU)"));
+    lineBox_->setTitle(tcpChosen() ? tr("Line (Modbus TCP)") : tr("Line (RS485, Modbus RTU)"));
     monitorBox_->setTitle(tr("Live monitor"));
     captions_[0]->setText(tr("Plugin"));
-    captions_[1]->setText(tr("Port"));
+    captions_[1]->setText(tcpChosen() ? tr("Host:port") : tr("Port"));
     captions_[2]->setText(tr("Baud"));
     captions_[3]->setText(tr("Parity"));
-    captions_[4]->setText(tr("Address"));
+    captions_[4]->setText(tcpChosen() ? tr("Unit id") : tr("Address"));
+    captions_[5]->setText(tr("Machine"));
+    if (machine_->count() > 0)
+        machine_->setItemText(0, tr("(the line below)"));
+    machine_->setToolTip(tr("The machines of the database that keep their controller's line"));
     parity_->setItemText(0, tr("none"));
     parity_->setItemText(1, tr("even"));
     parity_->setItemText(2, tr("odd"));
     refreshPorts_->setText(tr("Ports"));
-    refreshPorts_->setToolTip(tr("List the system's serial ports again"));
+    refreshPorts_->setToolTip(tr("List the system's serial ports and the database's machines again"));
     pull_->setText(tr("Pull into the database"));
     push_->setText(tr("Push a file..."));
     cancel_->setText(tr("Cancel"));
@@ -259,6 +288,71 @@ void ControllerDock::retranslate() {
     updateEnabled();
     updateLine();
     updateMonitor();
+}
+
+bool ControllerDock::tcpChosen() const {
+    const int i = plugin_->currentIndex();
+    return i >= 0 && i < pluginIds_.size() && pluginIds_[i] == QLatin1String("modbus-tcp");
+}
+
+void ControllerDock::pluginChosen() {
+    if (!machine_ || !lineBox_)
+        return;
+    refreshPorts();
+    retranslate();
+}
+
+void ControllerDock::refreshMachines() {
+    const QString current = machine_->currentData().toString();
+    machine_->clear();
+    machine_->addItem(tr("(the line below)"), QString());
+    for (const ShopMachine& m : shopMachines()) {
+        machine_->addItem(QStringLiteral("%1 — %2").arg(m.name, QString::fromStdString(m.line)), m.name);
+        machine_->setItemData(machine_->count() - 1, QString::fromStdString(m.line), Qt::UserRole + 1);
+    }
+    const int i = machine_->findData(current);
+    machine_->setCurrentIndex(std::max(0, i));
+}
+
+void ControllerDock::machineChosen() {
+    const QString line = machine_->currentData(Qt::UserRole + 1).toString();
+    if (line.isEmpty())
+        return;
+    std::string error;
+    const auto a = profile::parseLine(line.toStdString(), error);
+    if (!a)
+        return;
+    const bool tcp = a->kind == profile::LineAddress::Kind::Tcp;
+    const int p = pluginIds_.indexOf(tcp ? QStringLiteral("modbus-tcp") : QStringLiteral("modbus-rtu"));
+    if (p >= 0)
+        plugin_->setCurrentIndex(p);
+    port_->setEditText(QString::fromStdString(profile::lineEndpoint(*a)));
+    if (!tcp) {
+        baud_->setCurrentIndex(std::max(0, baud_->findData(a->baud)));
+        parity_->setCurrentIndex(std::max(0, parity_->findData(QChar(a->parity))));
+    }
+    address_->setValue(a->address);
+}
+
+bool ControllerDock::connectMachine(const QString& name) {
+    refreshMachines();
+    const int i = machine_->findData(name);
+    if (i <= 0)
+        return false;
+    if (link_) {
+        if (link_->busy() || connecting_)
+            return false;
+        if (connectedMachine_ == name && link_->isOpen()) {
+            if (showOnViews_->isChecked())
+                window_->setViewedController(link_.get());
+            return true;
+        }
+        closeLine();
+    }
+    machine_->setCurrentIndex(i);
+    machineChosen();
+    connectLine();
+    return link_ != nullptr;
 }
 
 void ControllerDock::refreshPorts() {
@@ -278,8 +372,12 @@ void ControllerDock::updateEnabled() {
     connect_->setText(link_ ? tr("Disconnect") : tr("Connect"));
     connect_->setEnabled(havePlugin && !connecting_ && !busy);
     for (QWidget* w : {static_cast<QWidget*>(plugin_), static_cast<QWidget*>(port_), static_cast<QWidget*>(baud_),
-                       static_cast<QWidget*>(parity_), static_cast<QWidget*>(address_)})
+                       static_cast<QWidget*>(parity_), static_cast<QWidget*>(address_),
+                       static_cast<QWidget*>(machine_)})
         w->setEnabled(havePlugin && !link_);
+    // Modbus TCP: the gateway's HOST:PORT and the unit id; no serial settings.
+    baud_->setEnabled(baud_->isEnabled() && !tcpChosen());
+    parity_->setEnabled(parity_->isEnabled() && !tcpChosen());
     connectAction_->setEnabled(havePlugin && !link_);
     disconnectAction_->setEnabled(link_ && !busy);
     for (QWidget* w : {static_cast<QWidget*>(pull_), static_cast<QWidget*>(push_)})
@@ -309,13 +407,24 @@ void ControllerDock::connectLine() {
     linkplugin::LineSettings s;
     s.port = port_->currentText().trimmed();
     if (s.port.isEmpty()) {
-        say(tr("Choose the serial port the controller is on."));
+        say(tcpChosen() ? tr("Enter the gateway's HOST:PORT.")
+                        : tr("Choose the serial port the controller is on."));
         return;
+    }
+    // The database's machine chosen: its line as stored, its texts and names.
+    connectedMachine_ = machine_->currentData().toString();
+    profile::MachineProfile machine = window_->machine().profile;
+    if (!connectedMachine_.isEmpty()) {
+        try {
+            machine = loadMachine(connectedMachine_).profile;
+        } catch (const std::exception&) {
+            // the window's machine gives the texts
+        }
     }
     s.baud = baud_->currentData().toInt();
     s.parity = parity_->currentData().toChar().toLatin1();
     s.address = address_->value();
-    link_ = std::make_unique<LinkController>(*plugins_[static_cast<std::size_t>(i)], s, window_->machine().profile);
+    link_ = std::make_unique<LinkController>(*plugins_[static_cast<std::size_t>(i)], s, machine);
     connecting_ = true;
     LinkController* l = link_.get();
     connect(l, &LinkController::opened, this, [this](bool ok, const QString& error) {
@@ -324,6 +433,7 @@ void ControllerDock::connectLine() {
             say(tr("No connection on %1: %2").arg(link_->line().port, error));
             lineState_->setText(lastMessage_); // not «Connecting…» any more
             link_.reset();
+            connectedMachine_.clear();
             updateEnabled();
             emit connectedChanged(false);
             return;
@@ -413,7 +523,9 @@ void ControllerDock::askForLine() {
     port_->setFocus(Qt::OtherFocusReason);
     if (port_->lineEdit())
         port_->lineEdit()->selectAll();
-    lineState_->setText(tr("Choose the controller's port, speed, parity and address, then Connect."));
+    refreshMachines();
+    lineState_->setText(tr("Choose a machine of the database, or the controller's port (or HOST:PORT for Modbus "
+                           "TCP), speed, parity and address, then Connect."));
 }
 
 void ControllerDock::disconnectLine() {
@@ -422,6 +534,7 @@ void ControllerDock::disconnectLine() {
     window_->setViewedController(nullptr);
     link_.reset();
     connecting_ = false;
+    connectedMachine_.clear();
     lastMonitor_.clear();
     monitor_->setText(QString());
     say(tr("Disconnected"));
@@ -435,6 +548,7 @@ void ControllerDock::closeLine() {
     window_->setViewedController(nullptr);
     link_.reset();
     connecting_ = false;
+    connectedMachine_.clear();
 }
 
 void ControllerDock::pullIntoDatabase() {

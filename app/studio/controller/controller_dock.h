@@ -55,6 +55,12 @@ public:
     QComboBox* baudBox() const { return baud_; }
     QComboBox* parityBox() const { return parity_; }
     QSpinBox* addressBox() const { return address_; }
+    QComboBox* pluginBox() const { return plugin_; }
+    // The machines of the database that know their line (their stored line
+    // fills the form when one is chosen).
+    QComboBox* machineBox() const { return machine_; }
+    // The database's machine the line was connected for ("" the form's line).
+    QString connectedMachine() const { return connectedMachine_; }
     QLabel* lineLabel() const { return lineState_; }
     QLabel* monitorLabel() const { return monitor_; }
     QProgressBar* progressBar() const { return progress_; }
@@ -68,6 +74,12 @@ public slots:
     // Controller > Connect: the dock shown, its port field focused (the line
     // is the user's to choose).
     void askForLine();
+    // Connects to the line the database's machine `name` keeps (closing the
+    // one open, unless a transfer is under way); false when it has none or
+    // the line cannot be changed now.
+    bool connectMachine(const QString& name);
+    // The database's machines with a line, read again.
+    void refreshMachines();
     void disconnectLine();
     // The window closes: the views go back to the simulated controller and
     // the line is closed whatever is under way (a transfer is aborted as on
@@ -98,6 +110,9 @@ private:
     void updateEnabled();
     void updateMonitor();
     void updateLine();
+    bool tcpChosen() const;
+    void pluginChosen();
+    void machineChosen();
     void say(const QString& text);
     void startPush(const profile::MachineProfile& file, const QString& what);
     void showPreview(const profile::MachineProfile& memory);
@@ -118,6 +133,10 @@ private:
     QGroupBox* lineBox_ = nullptr;
     QGroupBox* monitorBox_ = nullptr;
     QComboBox* plugin_ = nullptr;
+    QComboBox* machine_ = nullptr;
+    QMenu* connectMachineMenu_ = nullptr;
+    QStringList pluginIds_; // "modbus-rtu", "modbus-tcp" (the metadata's names)
+    QString connectedMachine_;
     QComboBox* port_ = nullptr;
     QComboBox* baud_ = nullptr;
     QComboBox* parity_ = nullptr;
@@ -132,7 +151,7 @@ private:
     QLabel* lineState_ = nullptr;
     QLabel* monitor_ = nullptr;
     QLabel* transfer_ = nullptr;
-    QLabel* captions_[5] = {};
+    QLabel* captions_[6] = {};
     QProgressBar* progress_ = nullptr;
     QDialog* preview_ = nullptr;
     bool connecting_ = false;

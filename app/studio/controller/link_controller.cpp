@@ -545,6 +545,8 @@ LinkController::~LinkController() {
 }
 
 QString LinkController::description() const {
+    if (lineText_.rfind("tcp:", 0) == 0)
+        return tr("%1, unit %2 (Modbus TCP)").arg(line_.port).arg(line_.address);
     return tr("%1, address %2, %3 bit/s").arg(line_.port).arg(line_.address).arg(line_.baud);
 }
 

@@ -117,6 +117,29 @@ std::vector<WorkspaceSpec> standardWorkspaces(QSize available) {
         tab("dock.training", "dock.backplot"),
     };
     out.push_back(train);
+
+    WorkspaceSpec shopSpec;
+    shopSpec.id = QStringLiteral("shop");
+    shopSpec.title = QT_TRANSLATE_NOOP("k528::studio::Workspaces", "Shop");
+    shopSpec.toolTip = QT_TRANSLATE_NOOP("k528::studio::Workspaces",
+                                         "The shop floor: a tile per machine of the database on its line, the "
+                                         "alarms as they come, today's time in each state; the controller of the "
+                                         "machine clicked beside it");
+    shopSpec.page = QStringLiteral("shopView");
+    shopSpec.shortcut = QKeySequence(Qt::CTRL | Qt::Key_F4);
+    // The docks of the machine shown are tabs of the Controller dock (or
+    // placed as the operator has them), so that showing them all at once
+    // stacks none above another.
+    shopSpec.docks = {
+        raised(place("dock.controller", Qt::RightDockWidgetArea, w < 1600 ? 0.30 : 0.26)),
+        tab("dock.machine", "dock.controller", false),
+        tab("dock.axes", "dock.controller", false),
+        tab("dock.training", "dock.controller", false),
+        hidden(place("dock.messages", Qt::BottomDockWidgetArea, 0.25)),
+        tab("dock.history", "dock.messages", false),
+        hidden(place("dock.k923", Qt::LeftDockWidgetArea, k923Share(0.30))),
+    };
+    out.push_back(shopSpec);
     return out;
 }
 

@@ -1,4 +1,4 @@
-// The three workspaces of K528 Studio and their default layouts:
+// The four workspaces of K528 Studio and their default layouts:
 //   Operator      — the K923 large on the left, the program being run in the
 //                   centre, the machine's panel on the right, the messages and
 //                   axes below the program; the controller on demand.
@@ -10,6 +10,10 @@
 //                   (the messages below the panel), the backplot and the
 //                   oscilloscope on the right: one above the other on a
 //                   desk's screen, two tabs on a shop PC's.
+//   Shop          — the machines of the database on their lines, a tile
+//                   each, the alarms and today's time in each state in the
+//                   centre; the Controller dock beside it shows the machine
+//                   clicked.
 // The shares fit the screen: the K923's width follows from the height it
 // gets (workspace/workspaces.h says how a layout is built and kept).
 #pragma once

@@ -1,0 +1,182 @@
+// The Shop workspace (studio.shop_view) with real parts: three `k528 serve
+// --tcp` on free localhost ports registered as machines of a test database
+// (their `line` set with `k528 db set`); the workspace shows a tile per
+// machine with its mode; a server killed is shown offline within a second
+// and back when it serves again; a click on a tile makes that machine's
+// controller the one every view shows; the Controller dock offers the
+// database's machines and connects over Modbus TCP; the poller runs only
+// while the page is shown.
+#include "cli_runner.h"
+#include "controller/controller_dock.h"
+#include "controller/link_controller.h"
+#include "controller/simulated_controller.h"
+#include "language.h"
+#include "main_window.h"
+#include "session/machine_source.h"
+#include "shop/shop_view.h"
+#include "tcp_serve.h"
+#include "test_util.h"
+#include "workspace/workspaces.h"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QtTest>
+#include <memory>
+
+using namespace k528;
+using namespace k528::studio;
+
+namespace {
+
+const QString kCli = QStringLiteral(K528_CLI);
+const QString kF7 = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
+constexpr int kMachines = 3;
+
+QString machineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLatin1Char('0')); }
+
+} // namespace
+
+class TestShopView : public QObject {
+    Q_OBJECT
+    QTemporaryDir dir_;
+    QString db_;
+    std::vector<quint16> ports_;
+    std::vector<std::unique_ptr<tcptest::Serve>> serves_;
+
+    CliResult k528(QStringList args) {
+        args << "--db" << db_;
+        return runProgram(kCli, args, 60000);
+    }
+    // m01 in F7 «РАБОТА С ПЭВМ», the others in F2 (after power-on).
+    QStringList keysOf(int i) const { return i == 0 ? QStringList{"--keys", kF7} : QStringList{}; }
+
+private slots:
+    void initTestCase() {
+        QCoreApplication::setOrganizationName("K528StudioTest");
+        QSettings().clear();
+        QVERIFY(setLanguage("en"));
+        QVERIFY(dir_.isValid());
+        db_ = dir_.filePath("shop.db");
+        qputenv("K528_DB", db_.toUtf8());
+        qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_TCP_PLUGIN)).absolutePath().toUtf8());
+        ports_ = tcptest::freePorts(kMachines);
+        QCOMPARE(ports_.size(), std::size_t(kMachines));
+        CliResult r = k528({"db", "init"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString file = dir_.filePath("lathe.k528m");
+        r = k528({"db", "export", "training-lathe", "--out", file});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        for (int i = 0; i < kMachines; ++i) {
+            r = k528({"db", "import", file, "--as", machineName(i)});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            r = k528({"db", "set", machineName(i), "line=tcp://127.0.0.1:" + QString::number(ports_[i]) + "/1"});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        }
+        for (int i = 0; i < kMachines; ++i) {
+            serves_.push_back(std::make_unique<tcptest::Serve>(kCli, ports_[i]));
+            QByteArray said;
+            QVERIFY2(serves_.back()->start(keysOf(i), &said), said.constData());
+        }
+    }
+    void cleanupTestCase() { serves_.clear(); }
+
+    // A tile per machine with its mode; the poller runs only while shown.
+    void tilesShowEveryMachine() {
+        MainWindow w(loadMachine("training-lathe"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        ShopView* shop = w.shopView();
+        QVERIFY(shop);
+        QVERIFY(w.workspaces()->activate("technologist"));
+        QApplication::processEvents();
+        QVERIFY(!shop->polling());
+        QVERIFY(w.workspaces()->activate("shop"));
+        QTRY_VERIFY(shop->isVisible());
+        QVERIFY(shop->polling());
+        QCOMPARE(static_cast<int>(shop->tiles().size()), kMachines);
+        for (int i = 0; i < kMachines; ++i) {
+            ShopTile* t = shop->tile(machineName(i));
+            QVERIFY(t);
+            QTRY_VERIFY_WITH_TIMEOUT(shop->state(machineName(i))->online, 10000);
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(shop->tile("m01")->modeText().contains("F7"), 5000);
+        QVERIFY(shop->tile("m01")->modeText().contains("РАБОТА С ПЭВМ"));
+        QVERIFY2(shop->tile("m02")->modeText().contains("F2"), qPrintable(shop->tile("m02")->modeText()));
+        QCOMPARE(shop->tile("m02")->stateText(), QString("idle"));
+        // Another workspace: the poller stops.
+        QVERIFY(w.workspaces()->activate("operator"));
+        QApplication::processEvents();
+        QVERIFY(!shop->polling());
+        QVERIFY(w.workspaces()->activate("shop"));
+        QTRY_VERIFY(shop->polling());
+    }
+
+    // A server killed: offline within a second; back when it serves again.
+    void offlineWithinASecondAndBack() {
+        MainWindow w(loadMachine("training-lathe"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("shop"));
+        ShopView* shop = w.shopView();
+        QTRY_VERIFY_WITH_TIMEOUT(shop->state("m02") && shop->state("m02")->online, 10000);
+        QElapsedTimer t;
+        serves_[1]->kill();
+        t.start();
+        QTRY_VERIFY_WITH_TIMEOUT(!shop->state("m02")->online, 5000);
+        const qint64 ms = t.elapsed();
+        qInfo("offline shown %lld ms after the kill", static_cast<long long>(ms));
+        QVERIFY2(ms <= 1000, qPrintable(QString::number(ms)));
+        QCOMPARE(shop->tile("m02")->stateText(), QString("offline"));
+        QVERIFY(shop->state("m01")->online); // the others go on
+        QByteArray said;
+        QVERIFY2(serves_[1]->start({}, &said), said.constData());
+        t.restart();
+        QTRY_VERIFY_WITH_TIMEOUT(shop->state("m02")->online, 5000);
+        qInfo("online again %lld ms after the server said it serves", static_cast<long long>(t.elapsed()));
+        QVERIFY(shop->tile("m02")->modeText().contains("F2"));
+        QVERIFY(shop->today("m02")[3] > 0); // some offline time today
+        QDir().mkpath(QDir::current().filePath("shots"));
+        QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_view.png")));
+    }
+
+    // A click on a tile: that machine's controller on every view.
+    void clickShowsTheMachinesController() {
+        MainWindow w(loadMachine("training-lathe"));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.workspaces()->activate("shop"));
+        ShopView* shop = w.shopView();
+        QVERIFY(w.viewedController() == w.simulatedController());
+        auto* dock = w.findChild<ControllerDock*>("dock.controller");
+        QVERIFY(dock);
+        // Connect offers the database's machines with their lines.
+        QCOMPARE(dock->machineBox()->count(), kMachines + 1);
+        QVERIFY(dock->machineBox()->itemText(1).contains(QString::number(ports_[0])));
+        for (int i : {2, 0}) {
+            const QString name = machineName(i);
+            QTRY_VERIFY(shop->tile(name)->isVisible());
+            QTest::mouseClick(shop->tile(name), Qt::LeftButton, {}, QPoint(20, 20));
+            QTRY_VERIFY_WITH_TIMEOUT(dock->link() && dock->link()->isOpen() &&
+                                         w.viewedController() == dock->link(),
+                                     10000);
+            QVERIFY2(dock->link()->where().contains(QString::number(ports_[static_cast<std::size_t>(i)])),
+                     qPrintable(dock->link()->where()));
+            QCOMPARE(dock->connectedMachine(), name);
+            QVERIFY(dock->link()->description().contains("Modbus TCP"));
+            QTRY_COMPARE_WITH_TIMEOUT(w.viewedController()->state().mode, i == 0 ? 7 : 2, 5000);
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(dock->monitorLabel()->text().contains("F7"), 5000);
+        QDir().mkpath(QDir::current().filePath("shots"));
+        QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_clicked.png")));
+    }
+};
+
+QTEST_MAIN(TestShopView)
+#include "test_shop_view.moc"
