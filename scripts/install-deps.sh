@@ -23,6 +23,7 @@ packages=(
     scdoc lintian appstream man-db                        # man pages (docs/man); the package's checks
     clang libclang-rt-14-dev                              # libFuzzer targets (optional preset)
     fonts-dejavu-core                                     # a font with Cyrillic for offscreen rendering
+    poppler-utils                                         # pdftotext: tests read the PDFs back (class report)
 )
 
 missing=()

@@ -182,6 +182,217 @@
     </message>
 </context>
 <context>
+    <name>TrainingTexts</name>
+    <message>
+        <source>the machine does not take the program: %1 errors, the first on line %2: %3</source>
+        <translation>the machine does not take the program: %1 errors, the first on line %2: %3</translation>
+    </message>
+    <message>
+        <source>the file holds no program: the machine has nothing to run</source>
+        <translation>the file holds no program: the machine has nothing to run</translation>
+    </message>
+    <message>
+        <source>line %1: the operator's step '%2' is not understood: %3</source>
+        <translation>line %1: the operator's step '%2' is not understood: %3</translation>
+    </message>
+    <message>
+        <source>HOLD:BUTTON:S holds a button for S seconds (0..3600)</source>
+        <translation>HOLD:BUTTON:S holds a button for S seconds (0..3600)</translation>
+    </message>
+    <message>
+        <source>the E-stop latches: PUSH:ESTOP, PULL:ESTOP</source>
+        <translation>the E-stop latches: PUSH:ESTOP, PULL:ESTOP</translation>
+    </message>
+    <message>
+        <source>no such button; the machine's buttons: DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP</source>
+        <translation>no such button; the machine's buttons: DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP</translation>
+    </message>
+    <message>
+        <source>WAIT:S waits S seconds (0..36000)</source>
+        <translation>WAIT:S waits S seconds (0..36000)</translation>
+    </message>
+    <message>
+        <source>PROGRAM:N takes a program number 1..99</source>
+        <translation>PROGRAM:N takes a program number 1..99</translation>
+    </message>
+    <message>
+        <source>HANDWHEEL:X, HANDWHEEL:Z or HANDWHEEL:OFF</source>
+        <translation>HANDWHEEL:X, HANDWHEEL:Z or HANDWHEEL:OFF</translation>
+    </message>
+    <message>
+        <source>STEP:1, STEP:10 or STEP:100: the handwheel's multiplier</source>
+        <translation>STEP:1, STEP:10 or STEP:100: the handwheel's multiplier</translation>
+    </message>
+    <message>
+        <source>TURN:N turns the handwheel by N detents (±1..100000)</source>
+        <translation>TURN:N turns the handwheel by N detents (±1..100000)</translation>
+    </message>
+    <message>
+        <source>OVERRIDE:P takes a step of the override: 0 1 2 5 10 20 35 50 75 90 100</source>
+        <translation>OVERRIDE:P takes a step of the override: 0 1 2 5 10 20 35 50 75 90 100</translation>
+    </message>
+    <message>
+        <source>R&lt;n&gt;=&lt;value&gt;: a writable R-parameter 0..231 and a whole value</source>
+        <translation>R&lt;n&gt;=&lt;value&gt;: a writable R-parameter 0..231 and a whole value</translation>
+    </message>
+    <message>
+        <source>expected one of: %2</source>
+        <translation>expected one of: %2</translation>
+    </message>
+    <message>
+        <source>program L%1 was not selected (ACK, number, ENTER in АВТОМАТ)</source>
+        <translation>program L%1 was not selected (ACK, number, ENTER in АВТОМАТ)</translation>
+    </message>
+    <message>
+        <source>the override %1 %% was not set: the machine has no such step</source>
+        <translation>the override %1 %% was not set: the machine has no such step</translation>
+    </message>
+    <message>
+        <source>the wheel was not changed: stop the wheel spindle first</source>
+        <translation>the wheel was not changed: stop the wheel spindle first</translation>
+    </message>
+    <message>
+        <source>the door did not open: it is locked</source>
+        <translation>the door did not open: it is locked</translation>
+    </message>
+    <message>
+        <source>the reference-point cycle did not complete: %1</source>
+        <translation>the reference-point cycle did not complete: %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)</source>
+        <translation>%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)</translation>
+    </message>
+    <message>
+        <source>the program did not start after «Пуск»</source>
+        <translation>the program did not start after «Пуск»</translation>
+    </message>
+    <message>
+        <source>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</source>
+        <translation>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</translation>
+    </message>
+    <message>
+        <source>over-cut by a manual move: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</source>
+        <translation>over-cut by a manual move: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</translation>
+    </message>
+    <message>
+        <source>over-cut: metal missing %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</source>
+        <translation>over-cut: metal missing %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</translation>
+    </message>
+    <message>
+        <source>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4; the nearest pass is frame %5, line %6</source>
+        <translation>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4; the nearest pass is frame %5, line %6</translation>
+    </message>
+    <message>
+        <source>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4: no pass came here</source>
+        <translation>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4: no pass came here</translation>
+    </message>
+    <message>
+        <source>a rapid (G00) into the metal at X%1 Z%2, %3 mm into the blank — frame %4, line %5: the tool is broken</source>
+        <translation>a rapid (G00) into the metal at X%1 Z%2, %3 mm into the blank — frame %4, line %5: the tool is broken</translation>
+    </message>
+    <message>
+        <source>a manual move into the metal at X%1 Z%2, %3 mm into the blank: the tool is broken</source>
+        <translation>a manual move into the metal at X%1 Z%2, %3 mm into the blank: the tool is broken</translation>
+    </message>
+    <message>
+        <source>cutting with the spindle stopped at X%1 Z%2 — frame %4, line %5: start the spindle (M3) before the feed</source>
+        <translation>cutting with the spindle stopped at X%1 Z%2 — frame %4, line %5: start the spindle (M3) before the feed</translation>
+    </message>
+    <message>
+        <source>a feed of the wheel into the ring with the wheel stopped: its edge at Ø%1 near Z%2 — frame %4, line %5: start the wheel before the feed</source>
+        <translation>a feed of the wheel into the ring with the wheel stopped: its edge at Ø%1 near Z%2 — frame %4, line %5: start the wheel before the feed</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck's jaws at X%1 Z%2 — frame %4, line %5</source>
+        <translation>the tool into the chuck's jaws at X%1 Z%2 — frame %4, line %5</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck's body at X%1 Z%2 — frame %4, line %5</source>
+        <translation>the tool into the chuck's body at X%1 Z%2 — frame %4, line %5</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck or its jaws by a manual move at X%1 Z%2</source>
+        <translation>the tool into the chuck or its jaws by a manual move at X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>the wheel into the ring at rapid: its edge at Ø%1 near Z%2, %3 mm into the wall — frame %4, line %5</source>
+        <translation>the wheel into the ring at rapid: its edge at Ø%1 near Z%2, %3 mm into the wall — frame %4, line %5</translation>
+    </message>
+    <message>
+        <source>message %1 «%2» — frame %3, line %4: it must not come in this exercise</source>
+        <translation>message %1 «%2» — frame %3, line %4: it must not come in this exercise</translation>
+    </message>
+    <message>
+        <source>message %1 «%2»: it must not come in this exercise</source>
+        <translation>message %1 «%2»: it must not come in this exercise</translation>
+    </message>
+    <message>
+        <source>the program was never started</source>
+        <translation>the program was never started</translation>
+    </message>
+    <message>
+        <source>the program did not start: %1</source>
+        <translation>the program did not start: %1</translation>
+    </message>
+    <message>
+        <source>a message stopped the program before its end — frame %1, line %2</source>
+        <translation>a message stopped the program before its end — frame %1, line %2</translation>
+    </message>
+    <message>
+        <source>the program was interrupted before its end — frame %1, line %2</source>
+        <translation>the program was interrupted before its end — frame %1, line %2</translation>
+    </message>
+    <message>
+        <source>the program did not end in the time given — frame %1, line %2</source>
+        <translation>the program did not end in the time given — frame %1, line %2</translation>
+    </message>
+    <message>
+        <source>cycle time %1 s is over the limit of %2 s</source>
+        <translation>cycle time %1 s is over the limit of %2 s</translation>
+    </message>
+    <message>
+        <source>the reference-point cycle (ПБТ) of X and Z was not done before the program started</source>
+        <translation>the reference-point cycle (ПБТ) of X and Z was not done before the program started</translation>
+    </message>
+    <message>
+        <source>R%1 was %2 when the program started; the task asks for %3 (РУЧНОЙ, screen 3)</source>
+        <translation>R%1 was %2 when the program started; the task asks for %3 (РУЧНОЙ, screen 3)</translation>
+    </message>
+    <message>
+        <source>messages not acknowledged (ESC): %1</source>
+        <translation>messages not acknowledged (ESC): %1</translation>
+    </message>
+    <message>
+        <source>the tool stopped at X%1 Z%2; the task asks for X%3 Z%4 (±%5 mm)</source>
+        <translation>the tool stopped at X%1 Z%2; the task asks for X%3 Z%4 (±%5 mm)</translation>
+    </message>
+    <message>
+        <source>the worn wheel was not changed (NEW WHEEL)</source>
+        <translation>the worn wheel was not changed (NEW WHEEL)</translation>
+    </message>
+    <message>
+        <source>the program did not run to its end</source>
+        <translation>the program did not run to its end</translation>
+    </message>
+    <message>
+        <source>the spindle still turns after the program (M5)</source>
+        <translation>the spindle still turns after the program (M5)</translation>
+    </message>
+    <message>
+        <source>the coolant is still on after the program (M9)</source>
+        <translation>the coolant is still on after the program (M9)</translation>
+    </message>
+    <message>
+        <source>the in-process gauge is still in the bore after the program (M21)</source>
+        <translation>the in-process gauge is still in the bore after the program (M21)</translation>
+    </message>
+    <message>
+        <source>R%1 is %2 after the program; %3 was expected</source>
+        <translation>R%1 is %2 after the program; %3 was expected</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -632,6 +843,17 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     </message>
 </context>
 <context>
+    <name>k528::studio::ConstantsLock</name>
+    <message>
+        <source>Name the class the constants are locked for</source>
+        <translation>Name the class the constants are locked for</translation>
+    </message>
+    <message>
+        <source>The machine constants are locked by the trainer for the class «%1»: they cannot be changed until the trainer unlocks them (Training course, Class tab)</source>
+        <translation>The machine constants are locked by the trainer for the class «%1»: they cannot be changed until the trainer unlocks them (Training course, Class tab)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConstantsModel</name>
     <message>
         <source>No.</source>
@@ -835,6 +1057,10 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>sending them to the controller...</source>
         <translation>sending them to the controller...</translation>
+    </message>
+    <message>
+        <source>The trainer has unlocked the machine constants</source>
+        <translation>The trainer has unlocked the machine constants</translation>
     </message>
 </context>
 <context>
@@ -4455,6 +4681,74 @@ Details: %3</translation>
     <message>
         <source>The database cannot be read: only this session's attempts are listed (%1)</source>
         <translation>The database cannot be read: only this session's attempts are listed (%1)</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>Export PDF</translation>
+    </message>
+    <message>
+        <source>The class report as PDF: each attempt with its score and deductions</source>
+        <translation>The class report as PDF: each attempt with its score and deductions</translation>
+    </message>
+    <message>
+        <source>Training course: class report</source>
+        <translation>Training course: class report</translation>
+    </message>
+    <message>
+        <source>Attempts: %1; printed %2</source>
+        <translation>Attempts: %1; printed %2</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>File</translation>
+    </message>
+    <message>
+        <source>Cycle time, s</source>
+        <translation>Cycle time, s</translation>
+    </message>
+    <message>
+        <source>Deductions</source>
+        <translation>Deductions</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Lock the constants…</source>
+        <translation>Lock the constants…</translation>
+    </message>
+    <message>
+        <source>Unlock the constants</source>
+        <translation>Unlock the constants</translation>
+    </message>
+    <message>
+        <source>Lets the machine constants be changed again</source>
+        <translation>Lets the machine constants be changed again</translation>
+    </message>
+    <message>
+        <source>The machine constants are locked for the class «%1»</source>
+        <translation>The machine constants are locked for the class «%1»</translation>
+    </message>
+    <message>
+        <source>Locks the machine constants for a class: the constants dock and the K923 refuse changes until you unlock them (kept in the database)</source>
+        <translation>Locks the machine constants for a class: the constants dock and the K923 refuse changes until you unlock them (kept in the database)</translation>
+    </message>
+    <message>
+        <source>The machine constants may be changed</source>
+        <translation>The machine constants may be changed</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>No machine</translation>
+    </message>
+    <message>
+        <source>Lock the machine constants</source>
+        <translation>Lock the machine constants</translation>
+    </message>
+    <message>
+        <source>The class the constants are locked for:</source>
+        <translation>The class the constants are locked for:</translation>
     </message>
 </context>
 <context>

@@ -182,6 +182,217 @@
     </message>
 </context>
 <context>
+    <name>TrainingTexts</name>
+    <message>
+        <source>the machine does not take the program: %1 errors, the first on line %2: %3</source>
+        <translation>Программа не принята станком: %1 ошибок, первая в строке %2: %3</translation>
+    </message>
+    <message>
+        <source>the file holds no program: the machine has nothing to run</source>
+        <translation>В файле нет программы: станку нечего выполнять</translation>
+    </message>
+    <message>
+        <source>line %1: the operator's step '%2' is not understood: %3</source>
+        <translation>Строка %1: действие оператора «%2» не понято: %3</translation>
+    </message>
+    <message>
+        <source>HOLD:BUTTON:S holds a button for S seconds (0..3600)</source>
+        <translation>HOLD:КНОПКА:С — держать кнопку С секунд (0..3600)</translation>
+    </message>
+    <message>
+        <source>the E-stop latches: PUSH:ESTOP, PULL:ESTOP</source>
+        <translation>аварийная кнопка фиксируется: PUSH:ESTOP, PULL:ESTOP</translation>
+    </message>
+    <message>
+        <source>no such button; the machine's buttons: DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP</source>
+        <translation>нет такой кнопки; кнопки станка: DRIVES_ON START STOP RESET X+ X- Z+ Z- RAPID CHUCK ESTOP</translation>
+    </message>
+    <message>
+        <source>WAIT:S waits S seconds (0..36000)</source>
+        <translation>WAIT:С — подождать С секунд (0..36000)</translation>
+    </message>
+    <message>
+        <source>PROGRAM:N takes a program number 1..99</source>
+        <translation>PROGRAM:N — номер программы 1..99</translation>
+    </message>
+    <message>
+        <source>HANDWHEEL:X, HANDWHEEL:Z or HANDWHEEL:OFF</source>
+        <translation>HANDWHEEL:X, HANDWHEEL:Z или HANDWHEEL:OFF</translation>
+    </message>
+    <message>
+        <source>STEP:1, STEP:10 or STEP:100: the handwheel's multiplier</source>
+        <translation>STEP:1, STEP:10 или STEP:100 — множитель маховика</translation>
+    </message>
+    <message>
+        <source>TURN:N turns the handwheel by N detents (±1..100000)</source>
+        <translation>TURN:N — повернуть маховик на N делений (±1..100000)</translation>
+    </message>
+    <message>
+        <source>OVERRIDE:P takes a step of the override: 0 1 2 5 10 20 35 50 75 90 100</source>
+        <translation>OVERRIDE:П — положение корректора: 0 1 2 5 10 20 35 50 75 90 100</translation>
+    </message>
+    <message>
+        <source>R&lt;n&gt;=&lt;value&gt;: a writable R-parameter 0..231 and a whole value</source>
+        <translation>R&lt;n&gt;=&lt;значение&gt; — записываемый R-параметр 0..231 и целое значение</translation>
+    </message>
+    <message>
+        <source>expected one of: %2</source>
+        <translation>ожидается одно из: %2</translation>
+    </message>
+    <message>
+        <source>program L%1 was not selected (ACK, number, ENTER in АВТОМАТ)</source>
+        <translation>программа L%1 не выбрана (ACK, номер, ENTER в режиме АВТОМАТ)</translation>
+    </message>
+    <message>
+        <source>the override %1 %% was not set: the machine has no such step</source>
+        <translation>корректор %1 %% не установлен: на станке нет такого положения</translation>
+    </message>
+    <message>
+        <source>the wheel was not changed: stop the wheel spindle first</source>
+        <translation>круг не заменён: сначала остановите шпиндель круга</translation>
+    </message>
+    <message>
+        <source>the door did not open: it is locked</source>
+        <translation>дверь не открылась: она заблокирована</translation>
+    </message>
+    <message>
+        <source>the reference-point cycle did not complete: %1</source>
+        <translation>привязка к базовой точке не выполнена: %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)</source>
+        <translation>%1 = %2 не записано (РУЧНОЙ, экран 3; во время программы запись запрещена)</translation>
+    </message>
+    <message>
+        <source>the program did not start after «Пуск»</source>
+        <translation>программа не запустилась после «Пуск»</translation>
+    </message>
+    <message>
+        <source>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</source>
+        <translation>Перерез: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4 — кадр %5, строка %6</translation>
+    </message>
+    <message>
+        <source>over-cut by a manual move: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</source>
+        <translation>Перерез ручным перемещением: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4</translation>
+    </message>
+    <message>
+        <source>over-cut: metal missing %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4</source>
+        <translation>Перерез: металла нет на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4</translation>
+    </message>
+    <message>
+        <source>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4; the nearest pass is frame %5, line %6</source>
+        <translation>Недорез: оставлено %1 мкм сверх допуска (площадь %2 мм²) на Ø%3 у Z%4; ближайший проход — кадр %5, строка %6</translation>
+    </message>
+    <message>
+        <source>under-cut: %1 µm of metal left beyond the tolerance (area %2 mm²) at Ø%3 near Z%4: no pass came here</source>
+        <translation>Недорез: оставлено %1 мкм сверх допуска (площадь %2 мм²) на Ø%3 у Z%4 — здесь не прошёл ни один проход</translation>
+    </message>
+    <message>
+        <source>a rapid (G00) into the metal at X%1 Z%2, %3 mm into the blank — frame %4, line %5: the tool is broken</source>
+        <translation>Ускоренное перемещение (G00) в металл на X%1 Z%2, на %3 мм в заготовку — кадр %4, строка %5: инструмент сломан</translation>
+    </message>
+    <message>
+        <source>a manual move into the metal at X%1 Z%2, %3 mm into the blank: the tool is broken</source>
+        <translation>Ручное перемещение в металл на X%1 Z%2, на %3 мм в заготовку: инструмент сломан</translation>
+    </message>
+    <message>
+        <source>cutting with the spindle stopped at X%1 Z%2 — frame %4, line %5: start the spindle (M3) before the feed</source>
+        <translation>Резание при остановленном шпинделе на X%1 Z%2 — кадр %4, строка %5: включите шпиндель (M3) до подачи</translation>
+    </message>
+    <message>
+        <source>a feed of the wheel into the ring with the wheel stopped: its edge at Ø%1 near Z%2 — frame %4, line %5: start the wheel before the feed</source>
+        <translation>Подача круга в кольцо при остановленном круге: кромка Ø%1 у Z%2 — кадр %4, строка %5: включите круг до подачи</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck's jaws at X%1 Z%2 — frame %4, line %5</source>
+        <translation>Инструмент в кулачки патрона на X%1 Z%2 — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck's body at X%1 Z%2 — frame %4, line %5</source>
+        <translation>Инструмент в корпус патрона на X%1 Z%2 — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>the tool into the chuck or its jaws by a manual move at X%1 Z%2</source>
+        <translation>Инструмент в патрон или кулачки ручным перемещением на X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>the wheel into the ring at rapid: its edge at Ø%1 near Z%2, %3 mm into the wall — frame %4, line %5</source>
+        <translation>Круг на ускоренном ходу в кольцо: кромка Ø%1 у Z%2, на %3 мм в стенку — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>message %1 «%2» — frame %3, line %4: it must not come in this exercise</source>
+        <translation>Сообщение %1 «%2» — кадр %3, строка %4: в этом упражнении его быть не должно</translation>
+    </message>
+    <message>
+        <source>message %1 «%2»: it must not come in this exercise</source>
+        <translation>Сообщение %1 «%2»: в этом упражнении его быть не должно</translation>
+    </message>
+    <message>
+        <source>the program was never started</source>
+        <translation>Программа не запускалась</translation>
+    </message>
+    <message>
+        <source>the program did not start: %1</source>
+        <translation>Программа не запустилась: %1</translation>
+    </message>
+    <message>
+        <source>a message stopped the program before its end — frame %1, line %2</source>
+        <translation>Программа остановлена сообщением и не выполнена до конца — кадр %1, строка %2</translation>
+    </message>
+    <message>
+        <source>the program was interrupted before its end — frame %1, line %2</source>
+        <translation>Программа прервана и не выполнена до конца — кадр %1, строка %2</translation>
+    </message>
+    <message>
+        <source>the program did not end in the time given — frame %1, line %2</source>
+        <translation>Программа не закончилась за отведённое время — кадр %1, строка %2</translation>
+    </message>
+    <message>
+        <source>cycle time %1 s is over the limit of %2 s</source>
+        <translation>Время цикла %1 с больше нормы %2 с</translation>
+    </message>
+    <message>
+        <source>the reference-point cycle (ПБТ) of X and Z was not done before the program started</source>
+        <translation>Привязка к базовой точке (ПБТ) по X и Z не выполнена до пуска программы</translation>
+    </message>
+    <message>
+        <source>R%1 was %2 when the program started; the task asks for %3 (РУЧНОЙ, screen 3)</source>
+        <translation>R%1 при пуске программы = %2, а по заданию должно быть %3 (РУЧНОЙ, экран 3)</translation>
+    </message>
+    <message>
+        <source>messages not acknowledged (ESC): %1</source>
+        <translation>Сообщения не квитированы (ESC): %1</translation>
+    </message>
+    <message>
+        <source>the tool stopped at X%1 Z%2; the task asks for X%3 Z%4 (±%5 mm)</source>
+        <translation>Инструмент остановлен на X%1 Z%2, а по заданию — X%3 Z%4 (±%5 мм)</translation>
+    </message>
+    <message>
+        <source>the worn wheel was not changed (NEW WHEEL)</source>
+        <translation>Изношенный круг не заменён (НОВЫЙ КРУГ)</translation>
+    </message>
+    <message>
+        <source>the program did not run to its end</source>
+        <translation>Программа не выполнена до конца</translation>
+    </message>
+    <message>
+        <source>the spindle still turns after the program (M5)</source>
+        <translation>После программы шпиндель не остановлен (M5)</translation>
+    </message>
+    <message>
+        <source>the coolant is still on after the program (M9)</source>
+        <translation>После программы не выключена СОЖ (M9)</translation>
+    </message>
+    <message>
+        <source>the in-process gauge is still in the bore after the program (M21)</source>
+        <translation>После программы прибор активного контроля не отведён (M21)</translation>
+    </message>
+    <message>
+        <source>R%1 is %2 after the program; %3 was expected</source>
+        <translation>R%1 после программы = %2, ожидалось %3</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio</name>
     <message>
         <source>%1 cannot be read: %2</source>
@@ -632,6 +843,17 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ConstantsLock</name>
+    <message>
+        <source>Name the class the constants are locked for</source>
+        <translation>Укажите группу, для которой блокируются константы</translation>
+    </message>
+    <message>
+        <source>The machine constants are locked by the trainer for the class «%1»: they cannot be changed until the trainer unlocks them (Training course, Class tab)</source>
+        <translation>Константы станка заблокированы преподавателем для группы «%1»: изменить их нельзя, пока преподаватель не снимет блокировку (Учебный курс, вкладка «Группа»)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConstantsModel</name>
     <message>
         <source>No.</source>
@@ -835,6 +1057,10 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>sending them to the controller...</source>
         <translation>передача в контроллер...</translation>
+    </message>
+    <message>
+        <source>The trainer has unlocked the machine constants</source>
+        <translation>Преподаватель снял блокировку констант станка</translation>
     </message>
 </context>
 <context>
@@ -4455,6 +4681,74 @@ Details: %3</source>
     <message>
         <source>The database cannot be read: only this session's attempts are listed (%1)</source>
         <translation>База данных недоступна: показаны только попытки этого сеанса (%1)</translation>
+    </message>
+    <message>
+        <source>Export PDF</source>
+        <translation>Экспорт PDF</translation>
+    </message>
+    <message>
+        <source>The class report as PDF: each attempt with its score and deductions</source>
+        <translation>Отчёт по группе в PDF: каждая попытка с оценкой и снятыми баллами</translation>
+    </message>
+    <message>
+        <source>Training course: class report</source>
+        <translation>Учебный курс: отчёт по группе</translation>
+    </message>
+    <message>
+        <source>Attempts: %1; printed %2</source>
+        <translation>Попыток: %1; напечатано %2</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Файл</translation>
+    </message>
+    <message>
+        <source>Cycle time, s</source>
+        <translation>Время цикла, с</translation>
+    </message>
+    <message>
+        <source>Deductions</source>
+        <translation>Снятые баллы</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Lock the constants…</source>
+        <translation>Заблокировать константы…</translation>
+    </message>
+    <message>
+        <source>Unlock the constants</source>
+        <translation>Снять блокировку констант</translation>
+    </message>
+    <message>
+        <source>Lets the machine constants be changed again</source>
+        <translation>Снова разрешает изменять константы станка</translation>
+    </message>
+    <message>
+        <source>The machine constants are locked for the class «%1»</source>
+        <translation>Константы станка заблокированы для группы «%1»</translation>
+    </message>
+    <message>
+        <source>Locks the machine constants for a class: the constants dock and the K923 refuse changes until you unlock them (kept in the database)</source>
+        <translation>Блокирует константы станка для группы: окно констант и К923 не дают их изменять, пока вы не снимете блокировку (хранится в базе данных)</translation>
+    </message>
+    <message>
+        <source>The machine constants may be changed</source>
+        <translation>Константы станка можно изменять</translation>
+    </message>
+    <message>
+        <source>No machine</source>
+        <translation>Нет станка</translation>
+    </message>
+    <message>
+        <source>Lock the machine constants</source>
+        <translation>Блокировка констант станка</translation>
+    </message>
+    <message>
+        <source>The class the constants are locked for:</source>
+        <translation>Группа, для которой блокируются константы:</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,7 @@
 #include "controller/controller_dock.h"
 #include "controller/simulated_controller.h"
 #include "controller/view_notice.h"
+#include "constants/constants_lock.h"
 #include "constants/constants_dock.h"
 #include "database/database_ui.h"
 #include "engine/self_test.h"
@@ -201,6 +202,12 @@ void MainWindow::createDocks() {
     k923Dock_->setWidget(k923_);
     connect(k923_, &K923Widget::keyPressed, this, [this](panel::KeyPress k) {
         Controller& c = viewed_->current();
+        // The trainer's lock: the simulated K923's C-parameter editing refused, the lock named.
+        if (c.simulated())
+            if (const QString why = ConstantsLock::of(machine_.profile)->refusesKey(c.state(), k); !why.isEmpty()) {
+                statusBar()->showMessage(why, 10000);
+                return;
+            }
         if (c.acceptsKeys())
             c.pressKey(k); // updated() redraws the panel
         else
@@ -285,6 +292,7 @@ void MainWindow::createDocks() {
     });
     connect(static_cast<TrainingPane*>(training->widget()), &TrainingPane::lineActivated, programEditor_,
             &EditorTab::showLine);
+    static_cast<TrainingPane*>(training->widget())->setMachine(machine_.profile); // the trainer's lock of its constants
     tabifyDockWidget(backplotDock, training); // its home: a tab of the backplot, not one more row
     addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
     // The debugger of the editor in a dock of its own (the technologist

@@ -240,6 +240,7 @@ constexpr SimulationKey kKeys[] = {
     {"z.decel_cam_mm", T::Double, 0.1, 1000, "", "mm", "As x.decel_cam_mm, for Z.", "machine, engine (ideal machine)"},
     {"z.limit_minus_mm", T::Double, -100000, 100000, "", "mm", "As x.limit_minus_mm, for Z.", "machine, engine (ideal machine)"},
     {"z.limit_plus_mm", T::Double, -100000, 100000, "", "mm", "As x.limit_plus_mm, for Z.", "machine, engine (ideal machine)"},
+    {"constants.lock", T::String, 0, 0, "", "", "Training: the machine constants locked by the trainer for a class (the value names the class): the studio's constants dock and the K923's C-parameter editing refuse changes until the trainer unlocks them.", "training (studio)"},
     {"push.unreleased", T::Bool, 0, 0, "false", "", "Shop database: a push to the controller may take programs that are not released (a technologist's prove-out); otherwise released programs only.", "transfer (push)"},
     // The tools of the turret's stations n = 1..8 (profile/tools.h).
     {"tool.n.kind", T::String, 0, 0, "", "", "The tool at station n: turning, facing, grooving, boring, drill or threading (the other tool.n keys need it).", "profile tools, proveout, setup sheet, backplot"},

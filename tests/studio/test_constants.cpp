@@ -11,6 +11,7 @@
 #include "constants/constants_dialogs.h"
 #include "constants/constants_dock.h"
 #include "constants/constants_editor.h"
+#include "constants/constants_lock.h"
 #include "constants/constants_model.h"
 #include "engine/run.h"
 #include "machine/run.h"
@@ -21,6 +22,7 @@
 #include "program/parser.h"
 #include "rparams/rparams_dock.h"
 #include "rparams/rparams_model.h"
+#include "training/training_pane.h"
 #include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
 #include "units/units.h"
@@ -37,6 +39,8 @@
 #include <QPlainTextEdit>
 #include <QTemporaryDir>
 #include <QTextBrowser>
+#include <QLabel>
+#include <QPushButton>
 #include <QUndoStack>
 #include <QtTest>
 #include <cmath>
@@ -242,6 +246,59 @@ private slots:
         // 1 created + 2 sets + 2 undos + 1 redo
         QCOMPARE(revisionCount(pane), 6);
         QCOMPARE(valueIndex(pane, 40).data().toString(), QStringLiteral("120000"));
+    }
+
+    // The trainer locks the constants for a class: the dock (an edit, an
+    // import, undo) and the K923's F5 refuse with a message naming the lock;
+    // the lock is the machine's setting in the database; the trainer's
+    // action unlocks it and the same edit goes through.
+    void theTrainersLockRefusesChangesUntilUnlocked() {
+        QVERIFY(setLanguage(QStringLiteral("en")));
+        SimulationSession session(lathe("lathe-lock"));
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        ConstantsPane pane(seam, session.simulation().profile());
+        QVERIFY(pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("8000"))); // before the lock: taken
+        TrainingPane trainer([] { return std::pair<QString, QString>(); });
+        QVERIFY(!trainer.lockButton()->isEnabled()); // no machine named yet
+        trainer.setMachine(session.simulation().profile());
+        QVERIFY(trainer.lockButton()->isEnabled());
+        QVERIFY(!trainer.lockConstants(QStringLiteral("  ")).isEmpty()); // a lock names its class
+        QCOMPARE(trainer.lockConstants(QStringLiteral("TM-21")), QString());
+        QVERIFY2(trainer.lockNote()->text().contains(QStringLiteral("TM-21")), qPrintable(trainer.lockNote()->text()));
+        QCOMPARE(trainer.lockButton()->text(), QStringLiteral("Unlock the constants"));
+        // Kept in the database as the machine's setting.
+        QCOMPARE(pane.editor().store().current().simulation.getString("constants.lock", ""), std::string("TM-21"));
+        // The dock refuses, naming the lock; nothing changes, nothing is kept.
+        const int revs = revisionCount(pane);
+        QVERIFY(!pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("5333")));
+        QCOMPARE(session.controller().c()[22], std::int64_t(8000));
+        QVERIFY2(pane.statusText().contains(QStringLiteral("locked by the trainer")) &&
+                     pane.statusText().contains(QStringLiteral("TM-21")),
+                 qPrintable(pane.statusText()));
+        QCOMPARE(revisionCount(pane), revs);
+        // Undo of the change made before the lock: refused too.
+        pane.editor().undoStack()->undo();
+        QCOMPARE(session.controller().c()[22], std::int64_t(8000));
+        // An import: refused before the file is read.
+        pane.importFile(QStringLiteral("/nonexistent/constants.csv"));
+        QVERIFY(waitIdle(pane));
+        QVERIFY2(pane.statusText().contains(QStringLiteral("TM-21")), qPrintable(pane.statusText()));
+        // The K923: F5 (РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ) refused with the lock's words; other keys not.
+        ConstantsLock* lock = ConstantsLock::of(session.simulation().profile());
+        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::F5}).contains(QStringLiteral("TM-21")));
+        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::F2}).isEmpty());
+        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::Enter}).isEmpty()); // not in F5
+        ControllerState inF5 = seamSim.state();
+        inF5.mode = 5;
+        QVERIFY(!lock->refusesKey(inF5, panel::KeyPress{panel::Key::Enter}).isEmpty()); // the value written
+        // Unlocking is the trainer's action; then the same edit goes through.
+        QCOMPARE(trainer.unlockConstants(), QString());
+        QCOMPARE(trainer.lockButton()->text(), QStringLiteral("Lock the constants…"));
+        QCOMPARE(pane.editor().store().current().simulation.getString("constants.lock", "none"), std::string("none"));
+        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::F5}).isEmpty());
+        QVERIFY(pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("5333")));
+        QCOMPARE(session.controller().c()[22], std::int64_t(5333));
     }
 
     void filterAndSearch() {

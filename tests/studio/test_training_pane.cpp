@@ -24,6 +24,8 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPlainTextEdit>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
@@ -43,6 +45,24 @@ QString deepStep() {
 
 int lineOf(const QString& text, const QString& what) {
     return static_cast<int>(text.left(static_cast<int>(text.indexOf(what))).count(QLatin1Char('\n'))) + 1;
+}
+
+// The text of a PDF as pdftotext -layout reads it (poppler-utils).
+QString pdfText(const QString& pdf) {
+    QProcess p;
+    p.start(QStringLiteral("pdftotext"), {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+    if (!p.waitForFinished(30000) || p.exitCode() != 0)
+        return QStringLiteral("pdftotext failed: ") + QString::fromUtf8(p.readAllStandardError());
+    return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+// A line of the report that names the student and, after the name, the score.
+bool rowOf(const QString& report, const QString& student, int score) {
+    const QRegularExpression re(QStringLiteral("%1\\s.*\\s%2\\s").arg(QRegularExpression::escape(student)).arg(score));
+    for (const QString& line : report.split(QLatin1Char('\n')))
+        if (re.match(line + QLatin1Char(' ')).hasMatch())
+            return true;
+    return false;
 }
 
 } // namespace
@@ -106,6 +126,16 @@ private slots:
         QVERIFY2(rows[1].startsWith(QStringLiteral("Petrov,lathe-03-step,petrov.k528,")), qPrintable(rows[1]));
         QVERIFY(rows[1].contains(QStringLiteral(",%1,").arg(score)));
         QVERIFY(rows[1].contains(QStringLiteral("L1 N15")));
+        // The class report as PDF, read back: each student's row with the score.
+        const QString pdf = dir.filePath(QStringLiteral("class.pdf"));
+        QCOMPARE(pane.exportPdf(pdf), QString());
+        const QString report = pdfText(pdf);
+        QVERIFY2(report.contains(QStringLiteral("class report")), qPrintable(report));
+        for (const db::AttemptEntry& a : pane.classAttempts())
+            QVERIFY2(rowOf(report, QString::fromStdString(a.student), a.score), qPrintable(report));
+        QVERIFY2(report.contains(QStringLiteral("L1 N15")), qPrintable(report));
+        QVERIFY(!pane.exportPdf(QStringLiteral("/nonexistent/dir/class.pdf")).isEmpty());
+        QVERIFY(!QFile::exists(QStringLiteral("/nonexistent/dir/class.pdf")));
         // Another exercise chosen: the grade of this one is not shown over its drawing.
         QVERIFY(pane.selectExercise(QStringLiteral("lathe-02-facing")));
         QCOMPARE(pane.deductions()->count(), 0);
@@ -272,8 +302,24 @@ private slots:
             pane->tabs()->setCurrentIndex(2);
             QApplication::processEvents();
             QVERIFY(pane->attemptsTable()->rowCount() >= 1);
+            // The class's buttons and the trainer's lock, inside the window.
+            QVERIFY(pane->lockButton()->isEnabled()); // the window named its machine
+            for (QWidget* c : {static_cast<QWidget*>(pane->lockButton()), static_cast<QWidget*>(pane->pdfButton()),
+                               static_cast<QWidget*>(pane->refreshButton())}) {
+                QVERIFY(c->isVisible());
+                const QRect r(c->mapTo(&w, QPoint(0, 0)), c->size());
+                QVERIFY2(inside.contains(r), qPrintable(c->objectName()));
+            }
             QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-class.png")
                                             .arg(lang).arg(screen.width()).arg(screen.height())));
+            // Locked for a class: the note names it; the K923 refuses F5 with the lock's words.
+            QCOMPARE(pane->lockConstants(lang == QLatin1String("ru") ? QStringLiteral("ТМ-21") : QStringLiteral("TM-21")),
+                     QString());
+            QApplication::processEvents();
+            QVERIFY(pane->lockNote()->text().contains(QStringLiteral("-21")));
+            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-locked.png")
+                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            QCOMPARE(pane->unlockConstants(), QString());
             pane->tabs()->setCurrentIndex(0);
             QApplication::processEvents();
             QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-task.png")

@@ -1,4 +1,6 @@
 #include "constants/constants_dock.h"
+
+#include "constants/constants_lock.h"
 #include "constants/constants_follow.h"
 
 #include "catalog/cparams.h"
@@ -231,6 +233,15 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     connect(&viewed_, &ViewedController::changed, this, &ConstantsPane::followController);
     followController();
     connect(editor_, &ConstantsEditor::refused, this, [this](const QString& why) { say(why, true); });
+    // The trainer's lock told as it comes and goes (and when the dock opens on a locked machine).
+    connect(editor_->lock(), &ConstantsLock::changed, this, [this](const QString& holder) {
+        if (holder.isEmpty())
+            say(tr("The trainer has unlocked the machine constants"), false);
+        else
+            say(editor_->lockRefusal(), true);
+    });
+    if (editor_->lock()->locked())
+        say(editor_->lockRefusal(), true);
     connect(editor_, &ConstantsEditor::notKept, this, [this](const QString& why) {
         say(tr("Applied to the controller, but not kept in the database: %1").arg(why), true);
     });
@@ -377,6 +388,10 @@ void ConstantsPane::runLong(const QString& what,
 }
 
 void ConstantsPane::importFile(const QString& path) {
+    if (const QString why = editor_->lockRefusal(); !why.isEmpty()) {
+        say(tr("Nothing was imported: %1").arg(why), true);
+        return;
+    }
     const MachineStore store = editor_->store();
     const QString file = QFileInfo(path).fileName();
     runLong(tr("Importing %1").arg(file), [store, path, file](std::function<void(int, int)> progress) {

@@ -1,5 +1,7 @@
 #include "constants/constants_editor.h"
 
+#include "constants/constants_lock.h"
+
 #include "catalog/cparams.h"
 #include "catalog/messages.h"
 #include "engine/controller.h"
@@ -71,7 +73,7 @@ private:
         ConstantsEditor* editor = &e_;
         const int number = number_;
         QPointer<QUndoStack> guard(stack);
-        e_.controller().setC(number_, v, [=, this](bool ok, const QString& why) {
+        const auto answer = [=, this](bool ok, const QString& why) {
             *answered = true;
             if (!guard)
                 return;
@@ -90,7 +92,12 @@ private:
             else
                 stack->undo();
             replaying = false;
-        });
+        };
+        // The trainer's lock refuses undo and redo too.
+        if (const QString locked = e_.lockRefusal(); !locked.isEmpty())
+            answer(false, locked);
+        else
+            e_.controller().setC(number_, v, answer);
         *inside = false;
     }
     ConstantsEditor& e_;
@@ -141,7 +148,8 @@ CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t 
 }
 
 ConstantsEditor::ConstantsEditor(ViewedController& viewed, const profile::MachineProfile& machine, QObject* parent)
-    : QObject(parent), viewed_(viewed), store_(machine), undo_(new QUndoStack(this)) {
+    : QObject(parent), viewed_(viewed), store_(machine), undo_(new QUndoStack(this)),
+      lock_(ConstantsLock::of(machine)) {
     // Another controller shown: the undo steps were of the other one's memory.
     connect(&viewed_, &ViewedController::changed, undo_, &QUndoStack::clear);
 }
@@ -156,7 +164,15 @@ CEditCheck ConstantsEditor::check(int number, std::int64_t value) const {
     return checkCEdit(values(), number, value, currentLanguage() == QLatin1String("ru"));
 }
 
+QString ConstantsEditor::lockRefusal() const {
+    return lock_->refusal();
+}
+
 bool ConstantsEditor::set(int number, std::int64_t value, const QString& note) {
+    if (const QString why = lockRefusal(); !why.isEmpty()) {
+        emit refused(why);
+        return false;
+    }
     const CEditCheck c = check(number, value);
     if (!c.ok) {
         emit refused(c.text);

@@ -14,6 +14,8 @@
 //     the undo stack and is kept in the database as the machine's next
 //     revision with the note given (MachineStore). Undo and redo ask the
 //     controller again; one it refuses leaves the stack where it was.
+//   - while the trainer has locked the constants for a class (ConstantsLock)
+//     set(), undo and redo are refused with the lock's message.
 #pragma once
 
 #include "constants/machine_store.h"
@@ -30,6 +32,7 @@ class QUndoStack;
 
 namespace k528::studio {
 
+class ConstantsLock;
 class Controller;
 class ViewedController;
 
@@ -74,6 +77,10 @@ public:
     void applyAll(std::vector<std::int64_t> c, std::function<void(const QString& why)> done);
 
     int lastRevision() const { return lastRevision_; }
+    // The trainer's lock of the machine's constants (constants_lock.h):
+    // the refusal every change gets while it is set, "" otherwise.
+    QString lockRefusal() const;
+    ConstantsLock* lock() const { return lock_; }
     // Where set() takes the note when it is given none (the dock's note field).
     void setNoteProvider(std::function<QString()> f) { noteProvider_ = std::move(f); }
 
@@ -93,6 +100,7 @@ private:
     QUndoStack* undo_;
     int lastRevision_ = 0;
     std::function<QString()> noteProvider_;
+    ConstantsLock* lock_;
 };
 
 } // namespace k528::studio

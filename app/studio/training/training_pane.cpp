@@ -1,5 +1,9 @@
 #include "training/training_pane.h"
 
+#include "training/training_texts.h"
+
+#include "constants/constants_lock.h"
+
 #include "language.h"
 #include "session/shop_database.h"
 #include "training/exercise.h"
@@ -17,6 +21,7 @@
 #include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -24,6 +29,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPdfWriter>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSaveFile>
@@ -32,6 +38,7 @@
 #include <QTabWidget>
 #include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextDocument>
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -241,14 +248,28 @@ TrainingPane::TrainingPane(std::function<std::pair<QString, QString>()> editorTe
     classNote_->hide();
     cl->addWidget(classNote_);
     cl->addWidget(attempts_, 1);
+    // The trainer's lock of the machine constants for the class.
+    auto* lockRow = new QHBoxLayout;
+    lockNote_ = new QLabel(classPage);
+    lockNote_->setObjectName("training.lockNote");
+    lockNote_->setWordWrap(true);
+    lockButton_ = new QPushButton(classPage);
+    lockButton_->setObjectName("training.lock");
+    lockButton_->setEnabled(false); // until the window names its machine
+    lockRow->addWidget(lockButton_);
+    lockRow->addWidget(lockNote_, 1);
+    cl->addLayout(lockRow);
     auto* classButtons = new QHBoxLayout;
     refresh_ = new QPushButton(classPage);
     refresh_->setObjectName("training.refresh");
     csv_ = new QPushButton(classPage);
     csv_->setObjectName("training.csv");
+    pdf_ = new QPushButton(classPage);
+    pdf_->setObjectName("training.pdf");
     classButtons->addStretch(1);
     classButtons->addWidget(refresh_);
     classButtons->addWidget(csv_);
+    classButtons->addWidget(pdf_);
     cl->addLayout(classButtons);
     tabs_->addTab(classPage, QString());
     layout->addWidget(tabs_, 1);
@@ -261,6 +282,8 @@ TrainingPane::TrainingPane(std::function<std::pair<QString, QString>()> editorTe
     connect(gradeEditor_, &QPushButton::clicked, this, &TrainingPane::gradeEditor);
     connect(gradeFile_, &QPushButton::clicked, this, &TrainingPane::gradeFile);
     connect(csv_, &QPushButton::clicked, this, &TrainingPane::exportDialog);
+    connect(pdf_, &QPushButton::clicked, this, &TrainingPane::exportPdfDialog);
+    connect(lockButton_, &QPushButton::clicked, this, &TrainingPane::lockClicked);
     connect(refresh_, &QPushButton::clicked, this, &TrainingPane::reloadClass);
     // The class read when its tab is shown (other processes and PCs record too).
     connect(tabs_, &QTabWidget::currentChanged, this, [this](int i) {
@@ -321,9 +344,12 @@ void TrainingPane::retranslate() {
                                 "would and grades the part"));
     gradeFile_->setText(tr("Grade a file…"));
     csv_->setText(tr("Export CSV"));
+    pdf_->setText(tr("Export PDF"));
+    pdf_->setToolTip(tr("The class report as PDF: each attempt with its score and deductions"));
     tabs_->setTabText(0, tr("Task"));
     tabs_->setTabText(1, tr("Attempt"));
     tabs_->setTabText(2, tr("Class"));
+    showLock();
     refresh_->setText(tr("Refresh"));
     refresh_->setToolTip(tr("Reads the class's attempts from the database again"));
     attempts_->setHorizontalHeaderLabels({tr("Student"), tr("Exercise"), tr("Score"), tr("Result"), tr("Time")});
@@ -392,7 +418,6 @@ void TrainingPane::showGrade() {
         part_->setGrade(nullptr);
         return;
     }
-    const training::Language l = uiLanguage();
     const training::Grade& g = last_->grade;
     QString who = shownName(last_->student.isEmpty() ? last_->file : last_->student);
     QString text = tr("%1: %2/100, %3").arg(who).arg(g.score).arg(g.passed ? tr("passed") : tr("not passed"));
@@ -404,7 +429,7 @@ void TrainingPane::showGrade() {
         text += QStringLiteral("\n") + tr("Not kept in the database: %1").arg(recordError_);
     score_->setText(text);
     for (const training::Deduction& d : g.deductions) {
-        auto* item = new QListWidgetItem(QStringLiteral("−%1  %2").arg(points(d.points), q(training::render(d.text, l))),
+        auto* item = new QListWidgetItem(QStringLiteral("−%1  %2").arg(points(d.points), trainingText(d.text)),
                                          deductions_);
         item->setData(Qt::UserRole, d.program);
         item->setData(Qt::UserRole + 1, d.line);
@@ -412,7 +437,7 @@ void TrainingPane::showGrade() {
             item->setForeground(QColor(0xb0, 0x10, 0x10));
     }
     for (const training::StepNote& n : g.notes)
-        new QListWidgetItem(tr("line %1 «%2»: %3").arg(n.line).arg(q(n.token), q(training::render(n.text, l))), deductions_);
+        new QListWidgetItem(tr("line %1 «%2»: %3").arg(n.line).arg(q(n.token), trainingText(n.text)), deductions_);
     if (g.deductions.empty())
         new QListWidgetItem(tr("No deductions"), deductions_);
     part_->setGrade(&g);
@@ -565,12 +590,11 @@ QString TrainingPane::exportCsv(const QString& path) const {
             s = QLatin1Char('"') + s.replace(QLatin1String("\""), QLatin1String("\"\"")) + QLatin1Char('"');
         return s;
     };
-    const training::Language l = uiLanguage();
     QString out = QStringLiteral("student,exercise,file,time,score,passed,status,cycle_time_s,deductions\n");
     for (const db::AttemptEntry& a : classRows_) {
         QStringList ded;
         for (const training::Deduction& d : training::storedDeductions(a))
-            ded << QStringLiteral("-%1 %2").arg(points(d.points), q(training::render(d.text, l)));
+            ded << QStringLiteral("-%1 %2").arg(points(d.points), trainingText(d.text));
         out += QStringList{field(q(a.student)), field(q(a.exercise)), field(q(a.file)), field(q(a.at)),
                            QString::number(a.score), a.passed ? QStringLiteral("yes") : QStringLiteral("no"),
                            field(q(a.status)), QString::number(static_cast<double>(a.cycleTimeMs) / 1000.0, 'f', 3),
@@ -595,6 +619,138 @@ void TrainingPane::exportDialog() {
     const QString error = exportCsv(path);
     if (!error.isEmpty())
         QMessageBox::warning(this, tr("Export CSV"), tr("Cannot write %1: %2").arg(path, error));
+}
+
+QString TrainingPane::exportPdf(const QString& path) const {
+    const auto esc = [](const QString& s) { return s.toHtmlEscaped(); };
+    QString html = QStringLiteral("<html><body style=\"font-family: 'DejaVu Sans', sans-serif;\">");
+    html += QStringLiteral("<h2>") + esc(tr("Training course: class report")) + QStringLiteral("</h2>");
+    html += QStringLiteral("<p>") +
+            esc(tr("Attempts: %1; printed %2")
+                    .arg(classRows_.size())
+                    .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")))) +
+            QStringLiteral("</p>");
+    html += QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"100%\">");
+    html += QStringLiteral("<thead><tr>");
+    for (const QString& h : {tr("Student"), tr("Exercise"), tr("File"), tr("Time"), tr("Score"), tr("Result"),
+                             tr("Cycle time, s"), tr("Deductions")})
+        html += QStringLiteral("<th align=\"left\">") + esc(h) + QStringLiteral("</th>");
+    html += QStringLiteral("</tr></thead>");
+    for (const db::AttemptEntry& a : classRows_) {
+        const training::Exercise* ex = training::findExercise(a.exercise);
+        const QString exercise =
+            ex ? q(uiLanguage() == training::Language::Ru ? ex->title.ru : ex->title.en) : q(a.exercise);
+        const QDateTime at = QDateTime::fromString(q(a.at), Qt::ISODate);
+        QStringList ded;
+        for (const training::Deduction& d : training::storedDeductions(a))
+            ded << esc(QStringLiteral("−%1 %2").arg(points(d.points), trainingText(d.text)));
+        const QStringList cells{esc(shownName(q(a.student))),
+                                esc(exercise),
+                                esc(q(a.file)),
+                                esc(at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))
+                                                 : q(a.at)),
+                                QString::number(a.score),
+                                esc(a.passed ? tr("passed") : tr("not passed")),
+                                QString::number(static_cast<double>(a.cycleTimeMs) / 1000.0, 'f', 1),
+                                ded.join(QStringLiteral("<br>"))};
+        html += QStringLiteral("<tr>");
+        for (const QString& c : cells)
+            html += QStringLiteral("<td valign=\"top\">") + c + QStringLiteral("</td>");
+        html += QStringLiteral("</tr>");
+    }
+    html += QStringLiteral("</table></body></html>");
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly))
+        return f.errorString();
+    {
+        QPdfWriter writer(&f);
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setPageOrientation(QPageLayout::Landscape);
+        writer.setPageMargins(QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter);
+        writer.setResolution(300);
+        writer.setTitle(tr("Training course: class report"));
+        writer.setCreator(QStringLiteral("K528 Studio"));
+        QTextDocument doc;
+        QFont font(QStringLiteral("DejaVu Sans"));
+        font.setPointSizeF(8);
+        doc.setDefaultFont(font);
+        doc.setHtml(html);
+        doc.print(&writer);
+    }
+    if (!f.commit())
+        return f.errorString();
+    return {};
+}
+
+void TrainingPane::exportPdfDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export PDF"), QStringLiteral("class-report.pdf"),
+                                                      tr("PDF (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    const QString error = exportPdf(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Export PDF"), tr("Cannot write %1: %2").arg(path, error));
+}
+
+void TrainingPane::setMachine(const profile::MachineProfile& machine) {
+    if (lock_)
+        disconnect(lock_, nullptr, this, nullptr);
+    lock_ = ConstantsLock::of(machine);
+    connect(lock_, &ConstantsLock::changed, this, &TrainingPane::showLock);
+    lock_->refresh();
+    showLock();
+}
+
+void TrainingPane::showLock() {
+    lockButton_->setEnabled(lock_ != nullptr);
+    if (!lock_) {
+        lockButton_->setText(tr("Lock the constants…"));
+        lockNote_->clear();
+        return;
+    }
+    if (lock_->locked()) {
+        lockButton_->setText(tr("Unlock the constants"));
+        lockButton_->setToolTip(tr("Lets the machine constants be changed again"));
+        lockNote_->setText(tr("The machine constants are locked for the class «%1»").arg(lock_->holder()));
+    } else {
+        lockButton_->setText(tr("Lock the constants…"));
+        lockButton_->setToolTip(tr("Locks the machine constants for a class: the constants dock and the "
+                                   "K923 refuse changes until you unlock them (kept in the database)"));
+        lockNote_->setText(tr("The machine constants may be changed"));
+    }
+}
+
+QString TrainingPane::lockConstants(const QString& forClass) {
+    if (!lock_)
+        return tr("No machine");
+    return lock_->lock(forClass);
+}
+
+QString TrainingPane::unlockConstants() {
+    if (!lock_)
+        return tr("No machine");
+    return lock_->unlock();
+}
+
+void TrainingPane::lockClicked() {
+    if (!lock_)
+        return;
+    lock_->refresh(); // another PC may have done it meanwhile
+    QString error;
+    if (lock_->locked()) {
+        error = unlockConstants();
+    } else {
+        bool ok = false;
+        const QString cls = QInputDialog::getText(this, tr("Lock the machine constants"),
+                                                  tr("The class the constants are locked for:"), QLineEdit::Normal,
+                                                  QString(), &ok);
+        if (!ok || cls.trimmed().isEmpty())
+            return;
+        error = lockConstants(cls);
+    }
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Lock the machine constants"), error);
+    showLock();
 }
 
 // --- the dock ------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "db/database.h"
+#include "profile/profile.h"
 #include "training/grade.h"
 
 #include <QWidget>
@@ -35,6 +36,8 @@ class QTabWidget;
 class QTextBrowser;
 
 namespace k528::studio {
+
+class ConstantsLock;
 
 // The half profile (z along, diameter up) of a graded part: the blank, the
 // drawing's nominal contour and its tolerance limits, the finished part,
@@ -87,6 +90,16 @@ public:
     // first (with this session's that the database did not take).
     const std::vector<db::AttemptEntry>& classAttempts() const { return classRows_; }
     QPushButton* refreshButton() const { return refresh_; }
+    QPushButton* pdfButton() const { return pdf_; }
+
+    // The machine whose constants the trainer locks for a class (the
+    // window's; ConstantsLock): the Class tab's Lock/Unlock button.
+    void setMachine(const profile::MachineProfile& machine);
+    QPushButton* lockButton() const { return lockButton_; }
+    QLabel* lockNote() const { return lockNote_; }
+    // The trainer's action (the button asks the class's name): "" or the error.
+    QString lockConstants(const QString& forClass);
+    QString unlockConstants();
     QLabel* classNote() const { return classNote_; }
     // Reads the class's attempts from the database again.
     void reloadClass();
@@ -99,6 +112,10 @@ public:
     bool grading() const { return watcher_ != nullptr; }
     // The attempts as CSV (UTF-8, a header line); "" or the error.
     QString exportCsv(const QString& path) const;
+    // The class report as PDF (A4 landscape, in the window's language): each
+    // attempt a row — student, exercise, file, time, score, result, cycle
+    // time, deductions; "" or the error (nothing half-written is left).
+    QString exportPdf(const QString& path) const;
 
 signals:
     void graded(int score, bool passed);
@@ -117,6 +134,9 @@ private:
     void gradeEditor();
     void gradeFile();
     void exportDialog();
+    void exportPdfDialog();
+    void lockClicked();
+    void showLock();
     const training::Exercise* current() const;
     std::shared_ptr<const training::Grader> graderFor(const training::Exercise& e);
 
@@ -128,6 +148,10 @@ private:
     QPushButton* gradeEditor_ = nullptr;
     QPushButton* gradeFile_ = nullptr;
     QPushButton* csv_ = nullptr;
+    QPushButton* pdf_ = nullptr;
+    QPushButton* lockButton_ = nullptr;
+    QLabel* lockNote_ = nullptr;
+    ConstantsLock* lock_ = nullptr;
     QPushButton* refresh_ = nullptr;
     QLabel* classNote_ = nullptr;
     QTabWidget* tabs_ = nullptr;
