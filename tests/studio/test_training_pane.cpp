@@ -131,6 +131,7 @@ private slots:
         QCOMPARE(pane.exportPdf(pdf), QString());
         const QString report = pdfText(pdf);
         QVERIFY2(report.contains(QStringLiteral("class report")), qPrintable(report));
+        QVERIFY(!pane.classAttempts().empty());
         for (const db::AttemptEntry& a : pane.classAttempts())
             QVERIFY2(rowOf(report, QString::fromStdString(a.student), a.score), qPrintable(report));
         QVERIFY2(report.contains(QStringLiteral("L1 N15")), qPrintable(report));
@@ -312,6 +313,17 @@ private slots:
             }
             QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-class.png")
                                             .arg(lang).arg(screen.width()).arg(screen.height())));
+            // The class report as PDF in the window's language, kept beside the screenshots.
+            const QString report = dir + QStringLiteral("/training-class-report-%1-%2x%3.pdf")
+                                             .arg(lang).arg(screen.width()).arg(screen.height());
+            QCOMPARE(pane->exportPdf(report), QString());
+            const QString reportText = pdfText(report);
+            for (const db::AttemptEntry& a : pane->classAttempts())
+                if (!a.student.empty() && a.student != "the editor's program") // a student's, not the editor's
+                    QVERIFY2(rowOf(reportText, QString::fromStdString(a.student), a.score), qPrintable(reportText));
+            QVERIFY2(reportText.contains(lang == QLatin1String("ru") ? QStringLiteral("отчёт по группе")
+                                                                     : QStringLiteral("class report")),
+                     qPrintable(reportText));
             // Locked for a class: the note names it; the K923 refuses F5 with the lock's words.
             QCOMPARE(pane->lockConstants(lang == QLatin1String("ru") ? QStringLiteral("ТМ-21") : QStringLiteral("TM-21")),
                      QString());

@@ -646,7 +646,7 @@ QString TrainingPane::exportPdf(const QString& path) const {
             ded << esc(QStringLiteral("−%1 %2").arg(points(d.points), trainingText(d.text)));
         const QStringList cells{esc(shownName(q(a.student))),
                                 esc(exercise),
-                                esc(q(a.file)),
+                                esc(shownName(q(a.file))),
                                 esc(at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm"))
                                                  : q(a.at)),
                                 QString::number(a.score),
