@@ -1889,6 +1889,49 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     </message>
 </context>
 <context>
+    <name>k528::studio::CycleTimeLabel</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Cycle time: none while the file has errors</source>
+        <translation>Cycle time: none while the file has errors</translation>
+    </message>
+    <message>
+        <source>Cycle time: choose the machine the file is for</source>
+        <translation>Cycle time: choose the machine the file is for</translation>
+    </message>
+    <message>
+        <source>Cycle time: measuring on the simulated machine…</source>
+        <translation>Cycle time: measuring on the simulated machine…</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): %3</source>
+        <translation>Cycle time of L%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the run ends in an alarm</source>
+        <translation>the run ends in an alarm</translation>
+    </message>
+    <message>
+        <source>the run does not end within an hour</source>
+        <translation>the run does not end within an hour</translation>
+    </message>
+    <message>
+        <source>the program cannot be started on this machine</source>
+        <translation>the program cannot be started on this machine</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): none, %3</source>
+        <translation>Cycle time of L%1 (%2): none, %3</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>
@@ -5005,6 +5048,30 @@ Details: %3</translation>
     <message>
         <source>Connecting to the controller of %1...</source>
         <translation>Connecting to the controller of %1...</translation>
+    </message>
+    <message>
+        <source>Publish to MQTT</source>
+        <translation>Publish to MQTT</translation>
+    </message>
+    <message>
+        <source>Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, in the topics of k528 shop publish (k528/&lt;machine&gt;/state, k528/&lt;machine&gt;/alarms); the machines are polled while this is on, whatever page is shown</source>
+        <translation>Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, in the topics of k528 shop publish (k528/&lt;machine&gt;/state, k528/&lt;machine&gt;/alarms); the machines are polled while this is on, whatever page is shown</translation>
+    </message>
+    <message>
+        <source>Broker</source>
+        <translation>Broker</translation>
+    </message>
+    <message>
+        <source>Connecting to the broker...</source>
+        <translation>Connecting to the broker...</translation>
+    </message>
+    <message>
+        <source>Publishing as %1</source>
+        <translation>Publishing as %1</translation>
+    </message>
+    <message>
+        <source>Not publishing: the broker cannot be reached (see the tool tip)</source>
+        <translation>Not publishing: the broker cannot be reached (see the tool tip)</translation>
     </message>
 </context>
 <context>

@@ -1889,6 +1889,49 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::CycleTimeLabel</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 мин %2 с</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <source>Cycle time: none while the file has errors</source>
+        <translation>Время цикла: нет, пока в файле есть ошибки</translation>
+    </message>
+    <message>
+        <source>Cycle time: choose the machine the file is for</source>
+        <translation>Время цикла: выберите станок для файла</translation>
+    </message>
+    <message>
+        <source>Cycle time: measuring on the simulated machine…</source>
+        <translation>Время цикла: измеряется на модели станка…</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): %3</source>
+        <translation>Время цикла L%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the run ends in an alarm</source>
+        <translation>прогон заканчивается аварией</translation>
+    </message>
+    <message>
+        <source>the run does not end within an hour</source>
+        <translation>прогон не заканчивается за час</translation>
+    </message>
+    <message>
+        <source>the program cannot be started on this machine</source>
+        <translation>программу нельзя запустить на этом станке</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): none, %3</source>
+        <translation>Время цикла L%1 (%2): нет, %3</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>
@@ -5005,6 +5048,30 @@ Details: %3</source>
     <message>
         <source>Connecting to the controller of %1...</source>
         <translation>Подключение к УЧПУ станка %1...</translation>
+    </message>
+    <message>
+        <source>Publish to MQTT</source>
+        <translation>Публиковать в MQTT</translation>
+    </message>
+    <message>
+        <source>Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, in the topics of k528 shop publish (k528/&lt;machine&gt;/state, k528/&lt;machine&gt;/alarms); the machines are polled while this is on, whatever page is shown</source>
+        <translation>Состояние каждого станка (с сохранением на брокере) и каждая возникшая или снятая авария — брокеру MQTT, в темах, описанных в руководстве; пока публикация включена, станки опрашиваются, какая бы страница ни была открыта</translation>
+    </message>
+    <message>
+        <source>Broker</source>
+        <translation>Брокер</translation>
+    </message>
+    <message>
+        <source>Connecting to the broker...</source>
+        <translation>Подключение к брокеру...</translation>
+    </message>
+    <message>
+        <source>Publishing as %1</source>
+        <translation>Публикация под именем %1</translation>
+    </message>
+    <message>
+        <source>Not publishing: the broker cannot be reached (see the tool tip)</source>
+        <translation>Публикации нет: брокер недоступен (подробности — во всплывающей подсказке)</translation>
     </message>
 </context>
 <context>
