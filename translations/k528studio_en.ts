@@ -1450,6 +1450,49 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     </message>
 </context>
 <context>
+    <name>k528::studio::CycleTimeLabel</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Cycle time: none while the file has errors</source>
+        <translation>Cycle time: none while the file has errors</translation>
+    </message>
+    <message>
+        <source>Cycle time: choose the machine the file is for</source>
+        <translation>Cycle time: choose the machine the file is for</translation>
+    </message>
+    <message>
+        <source>Cycle time: measuring on the simulated machine…</source>
+        <translation>Cycle time: measuring on the simulated machine…</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): %3</source>
+        <translation>Cycle time of L%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the run ends in an alarm</source>
+        <translation>the run ends in an alarm</translation>
+    </message>
+    <message>
+        <source>the run does not end within an hour</source>
+        <translation>the run does not end within an hour</translation>
+    </message>
+    <message>
+        <source>the program cannot be started on this machine</source>
+        <translation>the program cannot be started on this machine</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): none, %3</source>
+        <translation>Cycle time of L%1 (%2): none, %3</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>

@@ -1450,6 +1450,49 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::CycleTimeLabel</name>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 мин %2 с</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 с</translation>
+    </message>
+    <message>
+        <source>Cycle time: none while the file has errors</source>
+        <translation>Время цикла: нет, пока в файле есть ошибки</translation>
+    </message>
+    <message>
+        <source>Cycle time: choose the machine the file is for</source>
+        <translation>Время цикла: выберите станок для файла</translation>
+    </message>
+    <message>
+        <source>Cycle time: measuring on the simulated machine…</source>
+        <translation>Время цикла: измеряется на модели станка…</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): %3</source>
+        <translation>Время цикла L%1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>the run ends in an alarm</source>
+        <translation>прогон заканчивается аварией</translation>
+    </message>
+    <message>
+        <source>the run does not end within an hour</source>
+        <translation>прогон не заканчивается за час</translation>
+    </message>
+    <message>
+        <source>the program cannot be started on this machine</source>
+        <translation>программу нельзя запустить на этом станке</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1 (%2): none, %3</source>
+        <translation>Время цикла L%1 (%2): нет, %3</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>

@@ -3,6 +3,7 @@
 // core/toolpath. Output is streamed (a million segments print in a second),
 // so the JSON is written here rather than built as a tree.
 #include "cli.h"
+#include "machine/run.h"
 #include "plc/description.h"
 #include "program_setup.h"
 #include "proveout_cli.h"
@@ -53,8 +54,30 @@ std::string jsonText(const std::string& s) {
 constexpr const char* kOutsideRu = "ВНЕ ГРАНИЦ";
 constexpr const char* kOutsideEn = "OUT OF BOUNDS";
 
+// The cycle time (machine/run.h) and how its run ended: "completed",
+// "alarm", "timeout", "blocked", or "not_run" when the preview already ended
+// in an alarm or at the frame limit.
+struct Cycle {
+    std::optional<double> seconds;
+    std::string run = "not_run";
+};
+
+// Seconds to the millisecond ("83.412", "0.5"); null when there is no figure.
+std::string seconds(const std::optional<double>& s) {
+    if (!s)
+        return "null";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.3f", *s);
+    std::string t = buf;
+    while (t.back() == '0')
+        t.pop_back();
+    if (t.back() == '.')
+        t.pop_back();
+    return t;
+}
+
 void printJson(const toolpath::ProgrammedPath& p, const proveout::Result& proof,
-               const ProgramSetup& setup) {
+               const ProgramSetup& setup, const Cycle& cycle) {
     std::FILE* o = stdout;
     std::fprintf(o, "{\"program\":%d,\"segments\":[", p.program);
     bool first = true;
@@ -114,12 +137,15 @@ void printJson(const toolpath::ProgrammedPath& p, const proveout::Result& proof,
                      first ? "" : ",", a.number, jsonText(a.textRu).c_str(), a.program, a.line);
         first = false;
     }
-    std::fprintf(o, "],\"end\":{\"X\":%s,\"Z\":%s},\"frames\":%" PRId64 ",\"status\":\"%s\"}\n",
-                 mm(p.end.x).c_str(), mm(p.end.z).c_str(), p.run.frames,
-                 std::string(engine::previewStatusName(p.run.status)).c_str());
+    std::fprintf(o,
+                 "],\"end\":{\"X\":%s,\"Z\":%s},\"frames\":%" PRId64
+                 ",\"cycle_time_s\":%s,\"cycle_run\":\"%s\",\"status\":\"%s\"}\n",
+                 mm(p.end.x).c_str(), mm(p.end.z).c_str(), p.run.frames, seconds(cycle.seconds).c_str(),
+                 cycle.run.c_str(), std::string(engine::previewStatusName(p.run.status)).c_str());
 }
 
-void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof, Lang lang) {
+void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof, Lang lang,
+                const Cycle& cycle) {
     for (const toolpath::Segment& s : p.segments) {
         std::FILE* o = stdout;
         std::fprintf(o, "L%d N%d line %d %s ", s.program, s.n, s.line,
@@ -149,6 +175,14 @@ void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof
     std::fprintf(stdout, "end  X%s Z%s  frames %" PRId64 "  status %s\n", mm(p.end.x).c_str(),
                  mm(p.end.z).c_str(), p.run.frames,
                  std::string(engine::previewStatusName(p.run.status)).c_str());
+    if (cycle.seconds)
+        std::fprintf(stdout, lang == Lang::Ru ? "время цикла %s с\n" : "cycle time %s s\n",
+                     seconds(cycle.seconds).c_str());
+    else
+        std::fprintf(stdout,
+                     lang == Lang::Ru ? "время цикла: нет (прогон на станке: %s)\n"
+                                      : "cycle time: none (the run on the machine: %s)\n",
+                     cycle.run.c_str());
 }
 
 } // namespace
@@ -187,10 +221,24 @@ int runPath(std::span<const std::string> argv) {
         return ExitUsage;
     }
     const toolpath::ProgrammedPath& path = proof.path;
+    // The cycle time: the same program run on the simulated machine, unless
+    // the preview already met an alarm or an endless program (its run would
+    // end the same way).
+    Cycle cycle;
+    if (path.run.status == engine::PreviewStatus::Completed) {
+        try {
+            const machine::CycleTime t =
+                machine::cycleTime(setup.profile, setup.store, setup.number, setup.rPresets);
+            cycle.seconds = t.seconds;
+            cycle.run = engine::runStatusName(t.run.status);
+        } catch (const std::exception& e) { // the machine cannot run it as set up
+            std::fprintf(stderr, "k528: the cycle time: %s\n", e.what());
+        }
+    }
     if (asJson)
-        printJson(path, proof.result, setup);
+        printJson(path, proof.result, setup, cycle);
     else
-        printPlain(path, proof.result, setup.lang);
+        printPlain(path, proof.result, setup.lang, cycle);
     // Not flushed here: main() keeps the output whole and, flushing it at the
     // end, says why a write failed (a full disk, a closed pipe).
     return path.run.status == engine::PreviewStatus::Alarm ? ExitInputErrors : ExitOk;

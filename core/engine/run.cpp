@@ -41,6 +41,11 @@ namespace {
 constexpr std::int64_t kSwitchOnMs = 10000;
 // After «Пуск» is let go: the PLC's debounce and scans have passed it on.
 constexpr std::int64_t kStartSeenMs = 1000;
+// An operator's hand between two pushes of «Пуск»: released this long
+// before the next push, so that the PLC sees the release. Pressed again at
+// the very tick of the release, the button never looks released and the
+// press is never taken (an M00 with --m0-wait 0 then waited for ever).
+constexpr std::int64_t kReleasedBeforePushMs = 100;
 
 void collect(RunMachine& machine, RunResult& res) {
     const Controller& ctl = machine.controller();
@@ -235,6 +240,7 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     const std::int64_t pressed = ctl.timeMs();
     const std::int64_t m0WaitMs = static_cast<std::int64_t>(std::llround(options.m0WaitS * 1000.0));
     std::int64_t m0Since = -1;
+    std::int64_t upSince = -1;    // «Пуск» released since then
     std::int64_t releasedMs = -1; // the first «Пуск» let go
     RunStatus status = RunStatus::Timeout;
     // The limit counts from the moment the positioner saw «Пуск» (the PLC's
@@ -281,12 +287,18 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
                 break;
             }
         }
+        if (machine.startHeld())
+            upSince = -1;
+        else if (upSince < 0)
+            upSince = ctl.timeMs();
         if (s == ProgramState::M0) {
             if (m0Since < 0)
                 m0Since = ctl.timeMs();
-            if (ctl.timeMs() - m0Since >= m0WaitMs && !machine.startHeld()) {
+            if (ctl.timeMs() - m0Since >= m0WaitMs && upSince >= 0 &&
+                ctl.timeMs() - upSince >= kReleasedBeforePushMs) {
                 machine.pressStart();
                 m0Since = -1;
+                upSince = -1;
             }
         }
     }

@@ -58,4 +58,17 @@ engine::RunResult runProgram(const profile::MachineProfile& profile,
     return engine::runProgram(machine, programs, number, options);
 }
 
+CycleTime cycleTime(const profile::MachineProfile& profile, const program::ProgramStore& programs,
+                    int number, const std::map<int, std::int64_t>& rPresets, double maxSeconds) {
+    engine::RunOptions options;
+    options.rPresets = rPresets;
+    options.maxSeconds = maxSeconds;
+    options.m0WaitS = 0;
+    CycleTime t;
+    t.run = machine::runProgram(profile, programs, number, options);
+    if (t.run.status == engine::RunStatus::Completed)
+        t.seconds = t.run.timeS;
+    return t;
+}
+
 } // namespace k528::machine

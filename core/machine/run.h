@@ -8,6 +8,8 @@
 #include "engine/run.h"
 #include "machine/simulation.h"
 
+#include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace k528::machine {
@@ -40,5 +42,22 @@ private:
 engine::RunResult runProgram(const profile::MachineProfile& profile,
                              const program::ProgramStore& programs, int number,
                              const engine::RunOptions& options);
+
+// The cycle time of program `number` on the simulated machine of `profile`:
+// the program run as `k528 run` runs it (homed first where the machine needs
+// it, override 100 %, an M00 continued by a push at once — no waiting operator), from
+// «Пуск» to its end: the servos' acceleration and lag, the feeds, the dwells
+// and the PLC's answers to the M functions as this machine has them. No
+// estimate beside the simulation: the same deterministic run, so the figure
+// is the one `k528 run` reports. `seconds` is empty when the run did not
+// complete (an alarm, the time limit, a start that was blocked); `run` says
+// why.
+struct CycleTime {
+    std::optional<double> seconds;
+    engine::RunResult run;
+};
+CycleTime cycleTime(const profile::MachineProfile& profile, const program::ProgramStore& programs,
+                    int number, const std::map<int, std::int64_t>& rPresets,
+                    double maxSeconds = 3600);
 
 } // namespace k528::machine

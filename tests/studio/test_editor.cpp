@@ -4,6 +4,7 @@
 // checked too; colours come from core's tokens; unsaved changes survive a
 // cancelled close; a screenshot of the editor with diagnostics.
 #include "db/database.h"
+#include "editor/cycle_time_label.h"
 #include "editor/editor_tab.h"
 #include "editor/listing.h"
 #include "editor/frame_master.h"
@@ -461,6 +462,39 @@ private slots:
         // A machine that does not exist: said, checked for none.
         QVERIFY(!tab.setFileMachine(0, "no-such-machine"));
         QCOMPARE(tab.checkedMachineName(0), QString());
+    }
+
+    // The status line gives the cycle time of the file's first program on the
+    // machine it is checked for: the run of `k528 run` (212.184 s for the
+    // lathe sample, test cli.cycle_time), measured off the window's thread;
+    // an edit measures again, an error says there is none.
+    void theCycleTimeIsInTheStatusLine() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        SimulatedController seamSim(session);
+        ViewedController seam(seamSim);
+        EditorTab tab(&seam);
+        QFile sample(QStringLiteral(K528_SOURCE_DIR "/resources/samples/lathe-shaft.k528"));
+        QVERIFY(sample.open(QIODevice::ReadOnly));
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        CycleTimeLabel* cycle = tab.cycleTime();
+        QVERIFY(cycle);
+        QSignalSpy measured(cycle, &CycleTimeLabel::measured);
+        ed->setText(QString::fromUtf8(sample.readAll()));
+        QTRY_VERIFY_WITH_TIMEOUT(cycle->seconds().has_value(), 30000);
+        QCOMPARE(std::llround(*cycle->seconds() * 1000), 212184LL);
+        QVERIFY2(cycle->text().contains("L1") && cycle->text().contains("training-lathe") &&
+                     cycle->text().contains("3 min 32.2 s"),
+                 qPrintable(cycle->text()));
+        // One more roughing pass (R12=6): a longer cycle, measured again.
+        ed->setText(ed->text().replace("N6 R12=5", "N6 R12=6").replace("N4 R10=40000", "N4 R10=42000"));
+        QTRY_VERIFY_WITH_TIMEOUT(cycle->seconds().has_value() && *cycle->seconds() > 212.2, 30000);
+        // An error in the file: no figure, and the line says why.
+        ed->setText("%L1\nN1 G1 X\nM30\n");
+        ed->validateNow();
+        QTRY_VERIFY_WITH_TIMEOUT(cycle->text().contains("errors"), 10000);
+        QVERIFY(!cycle->seconds());
+        QCOMPARE(CycleTimeLabel::durationText(49.519), QString("49.5 s"));
     }
 
     void databaseProgramsAreSavedAsTheNextRevision() {

@@ -1,4 +1,5 @@
 #include "editor/editor_tab.h"
+#include "editor/cycle_time_label.h"
 
 #include "editor/debug_panel.h"
 #include "editor/frame_master.h"
@@ -21,6 +22,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMenu>
@@ -132,15 +134,20 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
     split->setStretchFactor(1, 0);
     split->setSizes({4000, fontMetrics().lineSpacing() * 8});
     layout->addWidget(split, 1);
+    auto* status = new QHBoxLayout;
     count_ = new ElidedLabel(this); // cut rather than widen the window
     count_->setObjectName("editor.problemCount");
-    layout->addWidget(count_);
+    status->addWidget(count_, 1);
+    cycle_ = new CycleTimeLabel(this);
+    status->addWidget(cycle_, 2);
+    layout->addLayout(status);
     createTools();
 
     connect(tabs_, &QTabWidget::tabCloseRequested, this, [this](int i) { closeDocument(i); });
     connect(tabs_, &QTabWidget::currentChanged, this, [this] {
         refreshProblems();
         refreshOutline();
+        cycle_->follow(currentEditor());
         releases_->setMachine(databaseMachine(tabs_->currentIndex()));
     });
     connect(problems_, &QTreeView::activated, this, [this](const QModelIndex& index) {
@@ -219,6 +226,7 @@ int EditorTab::addDocument(const QString& path, const QString& text) {
         if (ed == currentEditor()) {
             refreshProblems();
             refreshOutline();
+            cycle_->follow(ed);
         }
     });
     connect(ed, &QsciScintilla::modificationChanged, this, &EditorTab::refreshTitles);

@@ -28,6 +28,7 @@ class QDialog;
 
 namespace k528::studio {
 
+class CycleTimeLabel;
 class DebugPanel;
 class ProgramEditor;
 class ProgramReleases;
@@ -51,6 +52,8 @@ public:
     QTreeView* problems() const { return problems_; }
     QTreeWidget* outline() const { return outline_; }
     QLabel* problemCount() const { return count_; }
+    // The cycle time of the current file's first program (cycle_time_label.h).
+    CycleTimeLabel* cycleTime() const { return cycle_; }
     // The release states of the current document's database machine
     // (editor/program_releases.h; hidden for a file).
     ProgramReleases* releases() const { return releases_; }
@@ -195,6 +198,7 @@ private:
     ProgramReleases* releases_ = nullptr;
     QTreeWidget* outline_ = nullptr;
     QLabel* count_ = nullptr;
+    CycleTimeLabel* cycle_ = nullptr;
     DebugPanel* debug_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QFileSystemWatcher watcher_;
