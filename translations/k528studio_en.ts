@@ -4515,6 +4515,30 @@ Details: %3</translation>
         <source>Connecting to the controller of %1...</source>
         <translation>Connecting to the controller of %1...</translation>
     </message>
+    <message>
+        <source>Publish to MQTT</source>
+        <translation>Publish to MQTT</translation>
+    </message>
+    <message>
+        <source>Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, in the topics of k528 shop publish (k528/&lt;machine&gt;/state, k528/&lt;machine&gt;/alarms); the machines are polled while this is on, whatever page is shown</source>
+        <translation>Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, in the topics of k528 shop publish (k528/&lt;machine&gt;/state, k528/&lt;machine&gt;/alarms); the machines are polled while this is on, whatever page is shown</translation>
+    </message>
+    <message>
+        <source>Broker</source>
+        <translation>Broker</translation>
+    </message>
+    <message>
+        <source>Connecting to the broker...</source>
+        <translation>Connecting to the broker...</translation>
+    </message>
+    <message>
+        <source>Publishing as %1</source>
+        <translation>Publishing as %1</translation>
+    </message>
+    <message>
+        <source>Not publishing: the broker cannot be reached (see the tool tip)</source>
+        <translation>Not publishing: the broker cannot be reached (see the tool tip)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::SimulatedController</name>

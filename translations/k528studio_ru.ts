@@ -4515,6 +4515,30 @@ Details: %3</source>
         <source>Connecting to the controller of %1...</source>
         <translation>Подключение к УЧПУ станка %1...</translation>
     </message>
+    <message>
+        <source>Publish to MQTT</source>
+        <translation>Публиковать в MQTT</translation>
+    </message>
+    <message>
+        <source>Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, in the topics of k528 shop publish (k528/&lt;machine&gt;/state, k528/&lt;machine&gt;/alarms); the machines are polled while this is on, whatever page is shown</source>
+        <translation>Состояние каждого станка (с сохранением на брокере) и каждая возникшая или снятая авария — брокеру MQTT, в темах, описанных в руководстве; пока публикация включена, станки опрашиваются, какая бы страница ни была открыта</translation>
+    </message>
+    <message>
+        <source>Broker</source>
+        <translation>Брокер</translation>
+    </message>
+    <message>
+        <source>Connecting to the broker...</source>
+        <translation>Подключение к брокеру...</translation>
+    </message>
+    <message>
+        <source>Publishing as %1</source>
+        <translation>Публикация под именем %1</translation>
+    </message>
+    <message>
+        <source>Not publishing: the broker cannot be reached (see the tool tip)</source>
+        <translation>Публикации нет: брокер недоступен (подробности — во всплывающей подсказке)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::SimulatedController</name>

@@ -9,12 +9,12 @@
 #include "cli.h"
 #include "link_line.h"
 #include "mqtt_client.h"
+#include "shop_publisher.h"
 #include "profile/line.h"
 #include "shop/state.h"
 #include "shop_poll.h"
 #include "util/json.h"
 
-#include <QHostInfo>
 #include <QThread>
 #include <chrono>
 #include <condition_variable>
@@ -177,37 +177,20 @@ int runShopQt(std::span<const std::string> argv) {
     }
 
     // Continuous: status --watch prints, publish publishes.
-    mqtt::Publisher mq;
-    std::string clientId = args.value("--client-id").value_or("");
-    std::string publisherTopic;
+    shop::MqttPublisher mq;
     if (publish) {
         std::string error;
-        const auto url = mqtt::parseUrl(*args.value("--mqtt"), error);
-        if (!url)
-            return usageError("--mqtt: " + error);
+        std::string clientId = args.value("--client-id").value_or("");
         if (clientId.empty())
-            clientId = "k528-shop-" + QHostInfo::localHostName().toStdString() + "-" + std::to_string(::getpid());
-        publisherTopic = "k528/_publisher/" + clientId;
-        Json will;
-        will["online"] = false;
-        will["client_id"] = clientId;
-        will["why"] = "the publisher is gone without a goodbye (its last will)";
-        if (!mq.connect(*url, clientId, publisherTopic, json::dump(will), error)) {
-            std::fprintf(stderr, "k528 shop publish: cannot connect to %s: %s\n", args.value("--mqtt")->c_str(),
-                         error.c_str());
-            return ExitUsage;
-        }
-        Json hello;
-        hello["online"] = true;
-        hello["client_id"] = clientId;
-        hello["since"] = shop::isoTime(shop::unixMsNow());
-        hello["interval_ms"] = o.intervalMs;
-        Json names = Json::array();
+            clientId = shop::MqttPublisher::defaultClientId("k528-shop");
+        if (!mqtt::parseUrl(*args.value("--mqtt"), error))
+            return usageError("--mqtt: " + error);
+        std::vector<std::string> names;
         for (const auto& l : o.lines)
             names.push_back(l.machine);
-        hello["machines"] = std::move(names);
-        if (!mq.publish(publisherTopic, json::dump(hello), true, error)) {
-            std::fprintf(stderr, "k528 shop publish: %s\n", error.c_str());
+        if (!mq.start(*args.value("--mqtt"), clientId, o.intervalMs, names, error)) {
+            std::fprintf(stderr, "k528 shop publish: cannot connect to %s: %s\n", args.value("--mqtt")->c_str(),
+                         error.c_str());
             return ExitUsage;
         }
         std::fprintf(stderr, "k528 shop publish: %zu machines every %d ms to %s as %s\n", o.lines.size(),
@@ -226,12 +209,8 @@ int runShopQt(std::span<const std::string> argv) {
             const bool changed = trackers[r.index].update(r.online ? &r.live : nullptr, r.why, r.atMs, events);
             const shop::MachineState& s = trackers[r.index].state();
             if (publish) {
-                if (changed && !mq.publish("k528/" + s.machine + "/state", json::dump(shop::stateJson(s, r.atMs)),
-                                           true, error))
+                if (!mq.publish(s, changed, events, r.atMs, error))
                     std::fprintf(stderr, "k528 shop publish: %s: %s\n", s.machine.c_str(), error.c_str());
-                for (const shop::AlarmEvent& e : events)
-                    if (!mq.publish("k528/" + s.machine + "/alarms", json::dump(shop::alarmJson(e)), false, error))
-                        std::fprintf(stderr, "k528 shop publish: %s: %s\n", s.machine.c_str(), error.c_str());
             } else {
                 if (changed)
                     std::printf("%s\n", asJson ? json::dump(shop::stateJson(s, r.atMs)).c_str()
@@ -251,17 +230,10 @@ int runShopQt(std::span<const std::string> argv) {
     }
     poller.stop();
     if (publish) {
-        Json bye;
-        bye["online"] = false;
-        bye["client_id"] = clientId;
-        bye["why"] = "stopped";
-        bye["at"] = shop::isoTime(shop::unixMsNow());
-        mq.publish(publisherTopic, json::dump(bye), true, error);
-        if (!mq.flush(3000)) {
+        if (!mq.stop(3000)) {
             std::fprintf(stderr, "k528 shop publish: the broker did not acknowledge every message\n");
             code = ExitUsage;
         }
-        mq.disconnect();
         std::fprintf(stderr, "k528 shop publish: stopped after %ld messages\n", mq.published());
     }
     return code;

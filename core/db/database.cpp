@@ -233,8 +233,12 @@ bool Database::hasMachine(std::string_view name) const {
 
 MachineProfile Database::loadMachine(std::string_view name) const {
     Store& s = *d_->store;
+    // Read in one snapshot by the store (PostgreSQL: one statement, no
+    // transaction around it).
+    if (auto loaded = s.loadNamed(name))
+        return std::move(loaded->profile);
     ReadSnapshot tx(s);
-    return requireLoaded(s, name).profile;
+    return requireLoaded(s, name).profile; // no such machine: says which there are
 }
 
 MachineProfile Database::loadMachine(std::string_view name, int revision) const {

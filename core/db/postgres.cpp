@@ -27,6 +27,20 @@ ErrorKind kindOf(std::string_view state) {
     return ErrorKind::Sql;
 }
 
+// The integer in a text column of `r` (a value of any integer type).
+std::int64_t integerAt(PGresult* r, int row, int col) {
+    if (PQgetisnull(r, row, col))
+        return 0;
+    const char* s = PQgetvalue(r, row, col);
+    const std::size_t len = static_cast<std::size_t>(PQgetlength(r, row, col));
+    std::int64_t v = 0;
+    const auto [end, ec] = std::from_chars(s, s + len, v);
+    if (ec != std::errc() || end != s + len)
+        throw Error(ErrorKind::Corrupt, std::string("column ") + PQfname(r, col) + " holds \"" +
+                                            std::string(s, len) + "\" where an integer belongs");
+    return v;
+}
+
 std::string trimmed(const char* s) {
     std::string t = s ? s : "";
     while (!t.empty() && (t.back() == '\n' || t.back() == ' '))
@@ -430,6 +444,11 @@ void PgQuery::execute() {
     c_.run(std::span(&self, 1));
 }
 
+void PgQuery::runNow() {
+    if (!executed_)
+        execute();
+}
+
 bool PgQuery::step() {
     if (!executed_)
         execute();
@@ -455,17 +474,7 @@ bool PgQuery::isNull(int col) const {
 }
 
 std::int64_t PgQuery::i64(int col) const {
-    if (isNull(col))
-        return 0;
-    const char* s = PQgetvalue(result_, row_, col);
-    const std::size_t len = static_cast<std::size_t>(PQgetlength(result_, row_, col));
-    std::int64_t v = 0;
-    const auto [end, ec] = std::from_chars(s, s + len, v);
-    if (ec != std::errc() || end != s + len)
-        throw Error(ErrorKind::Corrupt, std::string("column ") + PQfname(result_, col) +
-                                            " holds \"" + std::string(s, len) +
-                                            "\" where an integer belongs");
-    return v;
+    return integerAt(result_, row_, col);
 }
 
 std::string PgQuery::text(int col) const {
@@ -480,6 +489,59 @@ Value PgQuery::value(int col) const {
     if (t == kInt8 || t == kInt4 || t == kInt2)
         return i64(col);
     return text(col);
+}
+
+PgPart::PgPart(const PgQuery& q, int tag)
+    : result_(q.result_), tag_(std::to_string(tag)), rows_(q.result_ ? PQntuples(q.result_) : 0) {}
+
+Query& PgPart::bind(int, std::int64_t) {
+    throw Error(ErrorKind::Sql, "a part of a result takes no parameters");
+}
+
+Query& PgPart::bind(int, std::string_view) {
+    throw Error(ErrorKind::Sql, "a part of a result takes no parameters");
+}
+
+Query& PgPart::bindNull(int) {
+    throw Error(ErrorKind::Sql, "a part of a result takes no parameters");
+}
+
+bool PgPart::step() {
+    while (++row_ < rows_) {
+        const int len = PQgetlength(result_, row_, 0);
+        if (static_cast<std::size_t>(len) == tag_.size() &&
+            std::memcmp(PQgetvalue(result_, row_, 0), tag_.data(), tag_.size()) == 0)
+            return true;
+    }
+    row_ = rows_;
+    return false;
+}
+
+void PgPart::reset() {
+    row_ = rows_; // read: nothing more
+}
+
+int PgPart::columns() const {
+    return result_ ? PQnfields(result_) - 1 : 0;
+}
+
+bool PgPart::isNull(int col) const {
+    return PQgetisnull(result_, row_, col + 1) != 0;
+}
+
+std::int64_t PgPart::i64(int col) const {
+    return integerAt(result_, row_, col + 1);
+}
+
+std::string PgPart::text(int col) const {
+    return std::string(PQgetvalue(result_, row_, col + 1),
+                       static_cast<std::size_t>(PQgetlength(result_, row_, col + 1)));
+}
+
+Value PgPart::value(int col) const {
+    if (isNull(col))
+        return {};
+    return text(col); // the parts' columns are texts
 }
 
 } // namespace k528::db::sql

@@ -35,6 +35,8 @@ public:
     Query& bindNull(int i) override;
     bool step() override;
     void reset() override;
+    // Runs the bound query now (its rows then read by step(), or by PgPart).
+    void runNow();
     std::int64_t changes() const override { return changes_; }
     int columns() const override;
     std::int64_t i64(int col) const override;
@@ -44,6 +46,7 @@ public:
 
 private:
     friend class PgConnection;
+    friend class PgPart;
     void execute();
     // Sends the execution into the connection's pipeline (false: not sent).
     bool send();
@@ -57,6 +60,33 @@ private:
     bool executed_ = false;
     int row_ = -1;
     std::int64_t changes_ = 0;
+};
+
+// The rows of one part of a query's result that a UNION ALL of several
+// tables returns in one statement: the first column tags each row with its
+// part (an integer), the part's own columns follow, counted from 0 here.
+// Read with step() as a query of its own; it binds nothing. The query
+// must have run (PgQuery::runNow) and stay as it is while its parts are read.
+class PgPart final : public Query {
+public:
+    PgPart(const PgQuery& q, int tag);
+    Query& bind(int i, std::int64_t v) override;
+    Query& bind(int i, std::string_view v) override;
+    Query& bindNull(int i) override;
+    bool step() override;
+    void reset() override;
+    std::int64_t changes() const override { return 0; }
+    int columns() const override;
+    std::int64_t i64(int col) const override;
+    std::string text(int col) const override;
+    bool isNull(int col) const override;
+    Value value(int col) const override;
+
+private:
+    pg_result* result_;
+    std::string tag_;
+    int rows_ = 0;
+    int row_ = -1;
 };
 
 class PgConnection final : public Connection {

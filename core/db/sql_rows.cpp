@@ -4,6 +4,7 @@
 #include "catalog/cparams.h"
 #include "db/revisions.h"
 #include "db/sha256.h"
+#include "db/postgres.h"
 #include "db/sql_store.h"
 
 
@@ -41,8 +42,7 @@ MachineRow machineRow(const sql::Query& q) {
 }
 
 // The tables of a machine's current state, in the order readCurrent reads
-// them: the machine by its id (?1), or by its name (?1) in one statement
-// with each table where the machine's row is asked for in the same round trip.
+// them, of the machine by its id (?1).
 constexpr std::string_view kCurrentById[] = {
     "SELECT number, value FROM c_values WHERE machine_id = ?1",
     "SELECT number, value FROM r_values WHERE machine_id = ?1",
@@ -51,18 +51,30 @@ constexpr std::string_view kCurrentById[] = {
     "SELECT grp, number, text FROM plc_messages WHERE machine_id = ?1",
     "SELECT key, value FROM settings WHERE machine_id = ?1 ORDER BY position",
 };
-#define K528_MACHINE_NAMED "(SELECT id FROM machines WHERE name = ?1)"
-constexpr std::string_view kCurrentByName[] = {
-    "SELECT number, value FROM c_values WHERE machine_id = " K528_MACHINE_NAMED,
-    "SELECT number, value FROM r_values WHERE machine_id = " K528_MACHINE_NAMED,
-    "SELECT number, text, sha256, revision FROM programs WHERE machine_id = " K528_MACHINE_NAMED,
-    "SELECT number, text FROM messages WHERE machine_id = " K528_MACHINE_NAMED,
-    "SELECT grp, number, text FROM plc_messages WHERE machine_id = " K528_MACHINE_NAMED,
-    "SELECT key, value FROM settings WHERE machine_id = " K528_MACHINE_NAMED " ORDER BY position",
-};
-#undef K528_MACHINE_NAMED
-static_assert(std::size(kCurrentById) == std::size(kCurrentByName));
 constexpr std::size_t kCurrentTables = std::size(kCurrentById);
+
+// PostgreSQL: the machine's row (tag 0) and each table of kCurrentById
+// (tag 1 + its index, the same columns in the same order, as texts) by the
+// machine's name (?1) in one statement — one snapshot of its own, no
+// transaction around it, one plan and one execution on the server instead
+// of eight. Rows of each table come in that table's order (settings sorted
+// by position inside its branch); the tables may come in any order.
+constexpr std::string_view kLoadNamedPostgres =
+    "WITH m AS (SELECT id, name, title, revision, created_at, changed_at, changed_by FROM machines "
+    "WHERE name = ?1) "
+    "SELECT 0, id::text, name, title, revision::text, created_at, changed_at, changed_by FROM m "
+    "UNION ALL SELECT 1, number::text, value::text, NULL, NULL, NULL, NULL, NULL FROM c_values "
+    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 2, number::text, value::text, NULL, NULL, NULL, NULL, NULL FROM r_values "
+    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 3, number::text, text, sha256, revision::text, NULL, NULL, NULL FROM programs "
+    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 4, number::text, text, NULL, NULL, NULL, NULL, NULL FROM messages "
+    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 5, grp, number::text, text, NULL, NULL, NULL, NULL FROM plc_messages "
+    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL (SELECT 6, key, value, NULL, NULL, NULL, NULL, NULL FROM settings "
+    "WHERE machine_id = (SELECT id FROM m) ORDER BY position)";
 
 } // namespace
 
@@ -86,24 +98,30 @@ MachineProfile SqlStore::loadCurrent(const MachineRow& row) {
 
 std::optional<LoadedMachine> SqlStore::loadNamed(std::string_view name) {
     if (connection().dialect() == sql::Dialect::Sqlite) { // no round trips to save
+        ReadSnapshot tx(*this);                            // seven statements, one snapshot
         auto row = findMachine(name);
         if (!row)
             return std::nullopt;
         MachineProfile p = loadCurrent(*row);
         return LoadedMachine{std::move(*row), std::move(p)};
     }
-    // The machine's row and its tables, asked for in one round trip.
-    sql::Query* queries[1 + kCurrentTables];
-    queries[0] = &query(kFindMachine).bind(1, name);
-    for (std::size_t i = 0; i < kCurrentTables; ++i)
-        queries[1 + i] = &query(kCurrentByName[i]).bind(1, name);
-    connection().runTogether(queries);
-    sql::Query& find = *queries[0];
-    if (!find.step())
+    // The machine's row and its tables in one statement, each row tagged
+    // with its part.
+    auto& q = static_cast<sql::PgQuery&>(query(kLoadNamedPostgres)); // this connection's
+    q.bind(1, name);
+    q.runNow();
+    sql::PgPart find(q, 0);
+    if (!find.step()) {
+        q.reset();
         return std::nullopt;
+    }
     MachineRow row = machineRow(find);
-    find.reset();
-    MachineProfile p = readCurrent(row, std::span(queries).subspan(1));
+    std::optional<sql::PgPart> parts[kCurrentTables];
+    sql::Query* queries[kCurrentTables];
+    for (std::size_t i = 0; i < kCurrentTables; ++i)
+        queries[i] = &parts[i].emplace(q, static_cast<int>(1 + i));
+    MachineProfile p = readCurrent(row, queries);
+    q.reset(); // the rows (the programs' texts) are not kept
     return LoadedMachine{std::move(row), std::move(p)};
 }
 

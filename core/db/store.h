@@ -98,8 +98,8 @@ public:
     virtual std::optional<MachineRow> findMachine(std::string_view name) = 0;
     // Throws Error(Corrupt) when the rows break their rules.
     virtual profile::MachineProfile loadCurrent(const MachineRow& row) = 0;
-    // findMachine and loadCurrent at once (PostgreSQL: in one round trip);
-    // nullopt when no machine has that name.
+    // findMachine and loadCurrent at once, in one snapshot of its own
+    // (PostgreSQL: one statement); nullopt when no machine has that name.
     virtual std::optional<LoadedMachine> loadNamed(std::string_view name) = 0;
     virtual std::int64_t insertMachine(const profile::MachineProfile& p, const std::string& at,
                                        const std::string& author) = 0;

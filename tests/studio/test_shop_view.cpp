@@ -22,9 +22,13 @@
 #include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
+#include <QCheckBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QtTest>
@@ -175,6 +179,63 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(dock->monitorLabel()->text().contains("F7"), 5000);
         QDir().mkpath(QDir::current().filePath("shots"));
         QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_clicked.png")));
+    }
+
+    // Publish to MQTT: the same topics as k528 shop publish, into a broker
+    // started here; the poller goes on while the page is hidden.
+    void publishesToMqtt() {
+        if (QStandardPaths::findExecutable("mosquitto").isEmpty() ||
+            QStandardPaths::findExecutable("mosquitto_sub").isEmpty())
+            QSKIP("mosquitto is not installed");
+        const std::vector<quint16> port = tcptest::freePorts(1);
+        QProcess broker;
+        broker.start("mosquitto", {"-p", QString::number(port[0])});
+        QVERIFY(broker.waitForStarted());
+        QTRY_VERIFY_WITH_TIMEOUT(
+            [&] {
+                QTcpSocket s;
+                s.connectToHost("127.0.0.1", port[0]);
+                return s.waitForConnected(200);
+            }(),
+            10000);
+        {
+            MainWindow w(loadMachine("training-lathe"));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate("shop"));
+            ShopView* shop = w.shopView();
+            shop->brokerBox()->setText("mqtt://127.0.0.1:" + QString::number(port[0]));
+            QSignalSpy on(shop, &ShopView::publishingChanged);
+            shop->publishBox()->setChecked(true);
+            QTRY_VERIFY_WITH_TIMEOUT(shop->publishing(), 10000);
+            QVERIFY(shop->publishState().contains("k528-studio-"));
+            // Hidden: the poller goes on for the broker.
+            QVERIFY(w.workspaces()->activate("operator"));
+            QApplication::processEvents();
+            QVERIFY(shop->polling());
+            QProcess sub;
+            sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/+/state", "-v",
+                                        "-C", QString::number(kMachines), "-W", "20"});
+            QVERIFY(sub.waitForStarted());
+            QVERIFY(sub.waitForFinished(30000));
+            const QString got = QString::fromUtf8(sub.readAllStandardOutput());
+            for (int i = 0; i < kMachines; ++i)
+                QVERIFY2(got.contains("k528/" + machineName(i) + "/state {"), qPrintable(got));
+            QVERIFY2(got.contains("\"mode\":7"), qPrintable(got));
+            shop->publishBox()->setChecked(false);
+            QVERIFY(!shop->publishing());
+            QApplication::processEvents();
+            QVERIFY(!shop->polling());
+        }
+        // The goodbye: the publisher's status retained as offline, "stopped".
+        QProcess sub;
+        sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/_publisher/#", "-v",
+                                    "-C", "1", "-W", "10"});
+        QVERIFY(sub.waitForFinished(15000));
+        const QString bye = QString::fromUtf8(sub.readAllStandardOutput());
+        QVERIFY2(bye.contains("\"online\":false") && bye.contains("stopped"), qPrintable(bye));
+        broker.terminate();
+        broker.waitForFinished(5000);
     }
 };
 

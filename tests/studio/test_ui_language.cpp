@@ -93,7 +93,7 @@ QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static
 // the panel's and the PC keyboard's key names, the product's name.
 const QStringList kAllowedLatin = {
     // units, protocols, file formats, the product
-    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "Studio", "TCP",
+    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "Studio", "TCP", "MQTT",
     "GNU", "GPL",
     // the program language's words and a plane of its axes
     "IF", "GOTO", "XZ", "ISO", "3D",

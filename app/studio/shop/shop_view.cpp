@@ -7,10 +7,16 @@
 #include "main_window.h"
 #include "session/shop_database.h"
 #include "shop_poll.h"
+#ifdef K528_STUDIO_MQTT
+#include "shop_publisher.h"
+#endif
 #include "workspace/elided_label.h"
 #include "workspace/flow_layout.h"
 
 #include <QBarCategoryAxis>
+#include <QCheckBox>
+#include <QLineEdit>
+#include <QSettings>
 #include <QBarSet>
 #include <QChart>
 #include <QChartView>
@@ -255,9 +261,23 @@ ShopView::ShopView(MainWindow* window) : QWidget(window), window_(window) {
         connect(dock, &ControllerDock::transferFinished, this, [this] { readTransfers(); });
     }
     reload();
+    // Publishing is a setting: on again at the next start.
+    if (QSettings().value("shop/publish").toBool())
+        QTimer::singleShot(0, this, [this] { publish_->setChecked(true); });
 }
 
 ShopView::~ShopView() {
+#ifdef K528_STUDIO_MQTT
+    if (mqtt_)
+        mqtt_->stop(3000); // the goodbye, not the will
+#endif
+    mqtt_.reset();
+    connecting_.reset();
+    for (QThread* t : stopping_) {
+        t->disconnect(this);
+        t->wait();
+        delete t;
+    }
     ++*generation_;
     if (poller_)
         poller_->stop();
@@ -283,6 +303,29 @@ void ShopView::build() {
     head->addWidget(header_, 1);
     head->addWidget(reload_);
     lay->addLayout(head);
+    auto* pub = new QHBoxLayout;
+    publish_ = new QCheckBox(this);
+    publish_->setObjectName("shop.publish");
+    brokerCaption_ = new ElidedLabel(this);
+    broker_ = new QLineEdit(this);
+    broker_->setObjectName("shop.broker");
+    broker_->setText(QSettings().value("shop/broker", QStringLiteral("mqtt://localhost:1883")).toString());
+    broker_->setMinimumWidth(200);
+    broker_->setMaximumWidth(320);
+    brokerCaption_->setBuddy(broker_);
+    publishState_ = new ElidedLabel(this); // cut rather than widen the window
+    publishState_->setObjectName("shop.publishState");
+    publishState_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    pub->addWidget(publish_);
+    pub->addWidget(brokerCaption_);
+    pub->addWidget(broker_);
+    pub->addWidget(publishState_, 1);
+    lay->addLayout(pub);
+    connect(publish_, &QCheckBox::toggled, this, &ShopView::setPublishing);
+#ifndef K528_STUDIO_MQTT
+    publish_->setEnabled(false); // built without libmosquitto
+    broker_->setEnabled(false);
+#endif
 
     auto* split = new QSplitter(Qt::Vertical, this);
     split->setObjectName("shop.split");
@@ -352,6 +395,12 @@ void ShopView::retranslate() {
     for (int i = 0; i < 4; ++i)
         sets_[static_cast<std::size_t>(i)]->setLabel(names[i]);
     minutesAxis_->setTitleText(tr("minutes"));
+    publish_->setText(tr("Publish to MQTT"));
+    publish_->setToolTip(tr("Every machine's state (retained) and each alarm raised or cleared to the MQTT broker, "
+                            "in the topics of k528 shop publish (k528/<machine>/state, k528/<machine>/alarms); "
+                            "the machines are polled while this is on, whatever page is shown"));
+    brokerCaption_->setText(tr("Broker"));
+    setPublishState(QString(), publishDetail_);
     if (!dbError_.isEmpty())
         header_->setText(tr("The database cannot be read: %1").arg(dbError_));
     else if (machines_.empty())
@@ -398,7 +447,133 @@ void ShopView::showEvent(QShowEvent* event) {
 void ShopView::hideEvent(QHideEvent* event) {
     QWidget::hideEvent(event);
     clock_->stop();
-    stopPolling();
+    if (!mqtt_ && !connecting_) // publishing polls whether shown or not
+        stopPolling();
+}
+
+QString ShopView::publishState() const { return publishState_->text(); }
+
+void ShopView::setPublishState(const QString&, const QString& detail) {
+    publishDetail_ = detail;
+    QString text;
+    switch (publishKind_) {
+    case 0:
+        text = QString();
+        break;
+    case 1:
+        text = tr("Connecting to the broker...");
+        break;
+    case 2:
+#ifdef K528_STUDIO_MQTT
+        text = mqtt_ ? tr("Publishing as %1").arg(QString::fromStdString(mqtt_->clientId())) : QString();
+#endif
+        break;
+    case 3:
+        text = tr("Not publishing: the broker cannot be reached (see the tool tip)");
+        break;
+    }
+    publishState_->setText(text);
+    publishState_->setToolTip(detail);
+}
+
+void ShopView::retirePublisher(std::shared_ptr<shop::MqttPublisher> p) {
+    if (!p)
+        return;
+#ifdef K528_STUDIO_MQTT
+    // The goodbye and the wait for the broker's acknowledgements: off the window's thread.
+    QThread* t = QThread::create([p] { p->stop(3000); });
+    connect(t, &QThread::finished, this, [this, t] {
+        stopping_.erase(std::remove(stopping_.begin(), stopping_.end(), t), stopping_.end());
+        t->wait();
+        delete t;
+    });
+    stopping_.push_back(t);
+    t->start();
+#endif
+}
+
+void ShopView::setPublishing(bool on) {
+#ifndef K528_STUDIO_MQTT
+    (void)on;
+    publish_->setChecked(false);
+#else
+    if (publish_->isChecked() != on) {
+        publish_->setChecked(on); // toggled() comes back here
+        return;
+    }
+    QSettings().setValue("shop/publish", on);
+    if (!on) {
+        retirePublisher(std::move(mqtt_));
+        mqtt_.reset();
+        connecting_.reset(); // its connection, when it comes, is closed at once
+        publishKind_ = 0;
+        setPublishState(QString());
+        broker_->setEnabled(true);
+        if (!isVisible())
+            stopPolling();
+        emit publishingChanged(false);
+        return;
+    }
+    if (mqtt_ || connecting_)
+        return;
+    const QString url = broker_->text().trimmed();
+    QSettings().setValue("shop/broker", url);
+    std::string error;
+    if (!mqtt::parseUrl(url.toStdString(), error)) {
+        publishKind_ = 3;
+        setPublishState(QString(), QString::fromStdString(error));
+        publish_->setChecked(false);
+        return;
+    }
+    auto p = std::make_shared<shop::MqttPublisher>();
+    connecting_ = p;
+    broker_->setEnabled(false);
+    publishKind_ = 1;
+    setPublishState(QString());
+    std::vector<std::string> names;
+    for (const ShopMachine& m : machines_)
+        names.push_back(m.name.toStdString());
+    const std::string id = shop::MqttPublisher::defaultClientId("k528-studio");
+    auto result = std::make_shared<std::string>();
+    auto ok = std::make_shared<bool>(false);
+    QThread* t = QThread::create([p, url, id, names, result, ok] {
+        *ok = p->start(url.toStdString(), id, kIntervalMs, names, *result);
+    });
+    connect(t, &QThread::finished, this, [this, t, p, result, ok] {
+        stopping_.erase(std::remove(stopping_.begin(), stopping_.end(), t), stopping_.end());
+        t->wait();
+        delete t;
+        if (connecting_ != p) { // switched off meanwhile
+            if (*ok)
+                retirePublisher(p);
+            return;
+        }
+        connecting_.reset();
+        if (!*ok) {
+            publishKind_ = 3;
+            setPublishState(QString(), QString::fromStdString(*result));
+            broker_->setEnabled(true);
+            const QSignalBlocker quiet(publish_);
+            publish_->setChecked(false);
+            QSettings().setValue("shop/publish", false);
+            emit publishingChanged(false);
+            return;
+        }
+        mqtt_ = p;
+        publishKind_ = 2;
+        setPublishState(QString());
+        // What is known now, retained at once; the rest as the polls come.
+        const std::int64_t now = shop::unixMsNow();
+        std::string error;
+        for (const shop::Tracker& tk : trackers_)
+            if (tk.state().polled)
+                mqtt_->publish(tk.state(), true, {}, now, error);
+        startPolling();
+        emit publishingChanged(true);
+    });
+    stopping_.push_back(t); // waited for with the goodbyes when the view goes
+    t->start();
+#endif
 }
 
 void ShopView::reload() {
@@ -541,6 +716,12 @@ void ShopView::apply(const shop::PollResult& r) {
         while (alarms_->topLevelItemCount() > 500)
             delete alarms_->takeTopLevelItem(alarms_->topLevelItemCount() - 1);
     }
+#ifdef K528_STUDIO_MQTT
+    if (mqtt_) {
+        std::string error;
+        mqtt_->publish(tk.state(), changed, events, r.atMs, error);
+    }
+#endif
     if (tk.state().activity != before)
         updateChart();
     if (changed)

@@ -13,6 +13,11 @@
 // redraws when its machine's state changed, the times once a second while
 // shown. A click on a tile connects the Controller dock to that machine's
 // line: every view of the window then shows it.
+//
+// *Publish to MQTT* (a setting, kept): the states and alarms go to an MQTT
+// broker as `k528 shop publish` sends them (app/cli/shop_publisher.h, the
+// same publisher), so an operator's PC feeds the shop's dashboard; the
+// poller then runs whether the page is shown or not.
 #pragma once
 
 #include "shop/shop_machines.h"
@@ -37,11 +42,14 @@ class QTimer;
 class QTreeWidget;
 class QThread;
 class QGroupBox;
+class QCheckBox;
+class QLineEdit;
 class QSplitter;
 
 namespace k528::shop {
 class Poller;
 struct PollResult;
+class MqttPublisher;
 } // namespace k528::shop
 
 namespace k528::studio {
@@ -102,6 +110,11 @@ public:
     QTreeWidget* alarmList() const { return alarms_; }
     QChartView* chartView() const { return chartView_; }
     bool polling() const { return poller_ != nullptr; }
+    // Publishing to MQTT: the check box, the broker's mqtt://HOST[:PORT].
+    QCheckBox* publishBox() const { return publish_; }
+    QLineEdit* brokerBox() const { return broker_; }
+    bool publishing() const { return mqtt_ != nullptr; }
+    QString publishState() const;
     // Today's milliseconds in each state (run, idle, alarm, offline) of `machine`.
     std::array<std::int64_t, 4> today(const QString& machine) const;
     // How often each line is polled.
@@ -111,12 +124,16 @@ public:
 public slots:
     // The database's machines read again (the tiles rebuilt).
     void reload();
+    // Starts or stops publishing to the broker the box names (connects off
+    // the window's thread; publishingChanged() tells).
+    void setPublishing(bool on);
 
 signals:
     // A machine's state changed (after its tile shows it).
     void machineChanged(const QString& machine);
     // A poll came back (any machine).
     void polled();
+    void publishingChanged(bool on);
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -134,6 +151,8 @@ private:
     void readTransfers();
     void tileClicked(const QString& machine);
     void markCurrent();
+    void setPublishState(const QString& text, const QString& detail = {});
+    void retirePublisher(std::shared_ptr<shop::MqttPublisher> p);
 
     MainWindow* window_;
     std::vector<ShopMachine> machines_;
@@ -160,6 +179,15 @@ private:
     QValueAxis* minutesAxis_ = nullptr;
     std::vector<std::array<int, 4>> chartShown_; // minutes shown per machine and state
     QTimer* clock_ = nullptr;
+    QCheckBox* publish_ = nullptr;
+    QLineEdit* broker_ = nullptr;
+    QLabel* brokerCaption_ = nullptr;
+    QLabel* publishState_ = nullptr;
+    std::shared_ptr<shop::MqttPublisher> mqtt_;       // publishing
+    std::shared_ptr<shop::MqttPublisher> connecting_; // connecting
+    std::vector<QThread*> stopping_;                  // saying goodbye
+    int publishKind_ = 0; // 0 off, 1 connecting, 2 on, 3 refused
+    QString publishDetail_;
     QSplitter* split_ = nullptr;
     bool sized_ = false;
 };
