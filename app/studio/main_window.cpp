@@ -102,6 +102,10 @@ MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
     timeLabel_ = new ElidedLabel(this);
     timeLabel_->setObjectName("status.machineTime");
     statusBar()->addPermanentWidget(timeLabel_);
+    // The machine's label stretches over the bar: while a message is shown
+    // (a refused key, the trainer's lock) it steps aside for it.
+    connect(statusBar(), &QStatusBar::messageChanged, machineLabel_,
+            [this](const QString& m) { machineLabel_->setVisible(m.isEmpty()); });
     installDatabaseUi(this, fileMenu_, machineMenu_->menuAction()); // database/database_ui.cpp
     setProperty("k528.machineName", QString::fromStdString(machine_.profile.name)); // File > Transfers… opens on it
     // File > Database…: the machine's label names the new database (the
