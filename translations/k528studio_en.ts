@@ -841,6 +841,26 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>the constants shown are this revision's</source>
         <translation>the constants shown are this revision's</translation>
     </message>
+    <message>
+        <source>Database %1: the machine %2 is not read from it: %3</source>
+        <translation>Database %1: the machine %2 is not read from it: %3</translation>
+    </message>
+    <message>
+        <source>Database %1 has no machine %2: the constants shown stay as they were; the first change kept creates the machine there</source>
+        <translation>Database %1 has no machine %2: the constants shown stay as they were; the first change kept creates the machine there</translation>
+    </message>
+    <message>
+        <source>Database %1: %2 is at revision %3 there; the controller on the link keeps its own constants until they are pushed to it</source>
+        <translation>Database %1: %2 is at revision %3 there; the controller on the link keeps its own constants until they are pushed to it</translation>
+    </message>
+    <message>
+        <source>Database %1: the constants shown are those of revision %2 of %3</source>
+        <translation>Database %1: the constants shown are those of revision %2 of %3</translation>
+    </message>
+    <message>
+        <source>Database %1: revision %2 of %3 has other constants; the simulated controller did not take them now: %4</source>
+        <translation>Database %1: revision %2 of %3 has other constants; the simulated controller did not take them now: %4</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ConstantsLock</name>
@@ -4652,6 +4672,14 @@ Its comment stays: %3</translation>
         <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
         <translation>Presets loaded into the controller: %1 of %2; R%3 not: %4</translation>
     </message>
+    <message>
+        <source>Database %1 has no machine %2: the presets shown are those the window loaded; the first one kept creates the machine there</source>
+        <translation>Database %1 has no machine %2: the presets shown are those the window loaded; the first one kept creates the machine there</translation>
+    </message>
+    <message>
+        <source>Database %1: the presets shown are those of revision %2 of %3</source>
+        <translation>Database %1: the presets shown are those of revision %2 of %3</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::RevisionNotes</name>
@@ -4870,6 +4898,54 @@ Its comment stays: %3</translation>
 Details: %3</source>
         <translation>The database %1 failed: %2.
 Details: %3</translation>
+    </message>
+    <message>
+        <source>creating a machine</source>
+        <translation>creating a machine</translation>
+    </message>
+    <message>
+        <source>changing a machine</source>
+        <translation>changing a machine</translation>
+    </message>
+    <message>
+        <source>deleting a machine</source>
+        <translation>deleting a machine</translation>
+    </message>
+    <message>
+        <source>releasing a program</source>
+        <translation>releasing a program</translation>
+    </message>
+    <message>
+        <source>withdrawing a program</source>
+        <translation>withdrawing a program</translation>
+    </message>
+    <message>
+        <source>recording a transfer</source>
+        <translation>recording a transfer</translation>
+    </message>
+    <message>
+        <source>recording messages</source>
+        <translation>recording messages</translation>
+    </message>
+    <message>
+        <source>recording a training attempt</source>
+        <translation>recording a training attempt</translation>
+    </message>
+    <message>
+        <source>creating the database's tables</source>
+        <translation>creating the database's tables</translation>
+    </message>
+    <message>
+        <source>setting up the roles</source>
+        <translation>setting up the roles</translation>
+    </message>
+    <message>
+        <source>granting a role</source>
+        <translation>granting a role</translation>
+    </message>
+    <message>
+        <source>The database %1 refused the user %2: %3 needs the role %4; nothing was written.</source>
+        <translation>The database %1 refused the user %2: %3 needs the role %4; nothing was written.</translation>
     </message>
 </context>
 <context>

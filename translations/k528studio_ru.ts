@@ -841,6 +841,26 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>the constants shown are this revision's</source>
         <translation>показаны константы этой ревизии</translation>
     </message>
+    <message>
+        <source>Database %1: the machine %2 is not read from it: %3</source>
+        <translation>База данных %1: станок %2 из неё не прочитан: %3</translation>
+    </message>
+    <message>
+        <source>Database %1 has no machine %2: the constants shown stay as they were; the first change kept creates the machine there</source>
+        <translation>В базе данных %1 нет станка %2: показанные параметры остаются прежними; первое сохранённое изменение создаст станок в ней</translation>
+    </message>
+    <message>
+        <source>Database %1: %2 is at revision %3 there; the controller on the link keeps its own constants until they are pushed to it</source>
+        <translation>База данных %1: %2 в ней на ревизии %3; контроллер на линии сохраняет свои параметры, пока их не передадут в него</translation>
+    </message>
+    <message>
+        <source>Database %1: the constants shown are those of revision %2 of %3</source>
+        <translation>База данных %1: показаны параметры ревизии %2 станка %3</translation>
+    </message>
+    <message>
+        <source>Database %1: revision %2 of %3 has other constants; the simulated controller did not take them now: %4</source>
+        <translation>База данных %1: в ревизии %2 станка %3 другие параметры; модель контроллера сейчас их не приняла: %4</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ConstantsLock</name>
@@ -4652,6 +4672,14 @@ Its comment stays: %3</source>
         <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
         <translation>Предустановки загружены в контроллер: %1 из %2; R%3 — нет: %4</translation>
     </message>
+    <message>
+        <source>Database %1 has no machine %2: the presets shown are those the window loaded; the first one kept creates the machine there</source>
+        <translation>В базе данных %1 нет станка %2: показаны предустановки, загруженные окном; первая сохранённая создаст станок в ней</translation>
+    </message>
+    <message>
+        <source>Database %1: the presets shown are those of revision %2 of %3</source>
+        <translation>База данных %1: показаны предустановки ревизии %2 станка %3</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::RevisionNotes</name>
@@ -4870,6 +4898,54 @@ Its comment stays: %3</source>
 Details: %3</source>
         <translation>Ошибка базы данных %1: %2.
 Подробности: %3</translation>
+    </message>
+    <message>
+        <source>creating a machine</source>
+        <translation>создание станка</translation>
+    </message>
+    <message>
+        <source>changing a machine</source>
+        <translation>изменение станка</translation>
+    </message>
+    <message>
+        <source>deleting a machine</source>
+        <translation>удаление станка</translation>
+    </message>
+    <message>
+        <source>releasing a program</source>
+        <translation>выпуск программы</translation>
+    </message>
+    <message>
+        <source>withdrawing a program</source>
+        <translation>отзыв программы</translation>
+    </message>
+    <message>
+        <source>recording a transfer</source>
+        <translation>запись передачи в журнал</translation>
+    </message>
+    <message>
+        <source>recording messages</source>
+        <translation>запись сообщений</translation>
+    </message>
+    <message>
+        <source>recording a training attempt</source>
+        <translation>запись попытки обучения</translation>
+    </message>
+    <message>
+        <source>creating the database's tables</source>
+        <translation>создание таблиц базы данных</translation>
+    </message>
+    <message>
+        <source>setting up the roles</source>
+        <translation>создание ролей</translation>
+    </message>
+    <message>
+        <source>granting a role</source>
+        <translation>выдача роли</translation>
+    </message>
+    <message>
+        <source>The database %1 refused the user %2: %3 needs the role %4; nothing was written.</source>
+        <translation>База данных %1 отказала пользователю %2: %3 — нужна роль %4; ничего не записано.</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include "constants/constants_dock.h"
 #include "constants/constants_editor.h"
 #include "constants/constants_follow.h"
+#include "constants/constants_model.h"
 #include "controller/link_controller.h"
 #include "controller/push_preview.h"
 #include "controller/simulated_controller.h"
@@ -25,6 +26,8 @@
 #include "language.h"
 #include "main_window.h"
 #include "profile/builtin.h"
+#include "rparams/rparams_dock.h"
+#include "rparams/rparams_model.h"
 #include "pty_line.h"
 #include "session/shop_database.h"
 #include "session/simulation_session.h"
@@ -35,6 +38,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QMainWindow>
 #include <QStackedWidget>
 #include <QTreeWidget>
 #include <QPlainTextEdit>
@@ -45,6 +49,7 @@
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QtTest>
+#include <tuple>
 
 using namespace k528;
 using namespace k528::studio;
@@ -68,6 +73,26 @@ Ran runK528(const QStringList& args) {
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());
     return r;
+}
+
+// K528_TEST_SCREENSHOTS=DIR: the window `w` with its dock `dock` shown, at
+// 1366x768 and 1920x1080, as DIR/NAME-WxH.png (to look at; nothing is compared).
+void screenshot(QMainWindow& w, const char* dock, const QString& name) {
+    const QString dir = qEnvironmentVariable("K528_TEST_SCREENSHOTS");
+    if (dir.isEmpty())
+        return;
+    w.show();
+    if (auto* d = w.findChild<QDockWidget*>(dock)) {
+        d->show();
+        d->raise(); // before the docks tabbed with it
+    }
+    for (const QSize size : {QSize(1366, 768), QSize(1920, 1080)}) {
+        w.resize(size);
+        QTest::qWait(400);
+        const QString file = QStringLiteral("%1/%2-%3x%4.png").arg(dir, name).arg(size.width()).arg(size.height());
+        if (!w.grab().save(file))
+            qWarning("cannot save %s", qPrintable(file));
+    }
 }
 
 profile::MachineProfile lathe(const std::string& name) {
@@ -503,6 +528,180 @@ private slots:
         QTRY_VERIFY(shown() && !holds(shown()) && shown()->model()->error().isEmpty());
         QVERIFY2(label->text().contains(location_) || label->text().contains("not in the database"),
                  qPrintable(label->text()));
+    }
+
+    // After File > Database… the constants dock and the R-parameter presets
+    // show the machine as the new database holds it, and a change is kept
+    // there, based on that database's revision; back again, the first one's.
+    void constantsFollowTheDatabase() {
+        QVERIFY(openDatabase(location_).isEmpty());
+        const QString second = QString::fromStdString(testing::testLocation(dir_, "switch.db").text());
+        const std::string name = "lathe-switch";
+        // One machine, two databases: C022 5000 at revision 1 in the first,
+        // 6000 at revision 2 in the second; R10's preset 15 and 25.
+        for (const QString& where : {location_, second}) {
+            const bool first = where == location_;
+            ShopDatabase::at(db::Location::parse(where.toStdString()))->use([&](db::Database& d) {
+                if (d.hasMachine(name))
+                    d.removeMachine(name);
+                profile::MachineProfile p = lathe(name);
+                p.c[22] = 5000;
+                p.r[10] = first ? 15 : 25;
+                d.createMachine(p);
+                if (!first) {
+                    db::Edit e;
+                    e.c[22] = 6000;
+                    d.applyEdit(name, e);
+                }
+            });
+        }
+        MainWindow w(loadMachine(QString::fromStdString(name)));
+        auto* pane = w.findChild<ConstantsPane*>("constantsPane");
+        auto* presets = w.findChild<RParamsPane*>("rparamsPane");
+        QVERIFY(pane && presets);
+        auto* follow = pane->findChild<ConstantsFollow*>();
+        QVERIFY(follow);
+        const auto shownC22 = [&] {
+            return pane->model()->data(pane->model()->index(ConstantsModel::rowOf(22), ConstantsModel::Value)).toString();
+        };
+        const auto preset10 = [&]() -> std::int64_t {
+            const auto& m = presets->model()->presets();
+            const auto it = m.find(10);
+            return it == m.end() ? -1 : it->second;
+        };
+        QCOMPARE(shownC22(), QString("5000"));
+        QCOMPARE(preset10(), std::int64_t(15));
+        QCOMPARE(pane->editor().store().known(), 1);
+
+        QSignalSpy followed(follow, &ConstantsFollow::databaseFollowed);
+        QVERIFY(openDatabase(second).isEmpty());
+        QTRY_COMPARE(followed.count(), 1);
+        QCOMPARE(followed.last().first().toInt(), 2);
+        QCOMPARE(shownC22(), QString("6000")); // the dock shows the new database's value
+        QCOMPARE(pane->editor().values()[22], std::int64_t(6000));
+        QCOMPARE(preset10(), std::int64_t(25));
+        QVERIFY2(pane->statusText().contains("revision 2"), qPrintable(pane->statusText()));
+        QVERIFY2(presets->statusText().contains("revision 2"), qPrintable(presets->statusText()));
+        pane->selectConstant(22);
+        screenshot(w, "dock.constants", "switch-constants-en");
+        screenshot(w, "dock.rparams", "switch-rparams-en");
+        // A change now is kept in the second database, on its revision 2 (not
+        // refused as based on the first one's revision 1).
+        QVERIFY(pane->editor().set(22, 5500, "after the switch"));
+        QTRY_VERIFY2(pane->statusText().contains("kept as revision 3"), qPrintable(pane->statusText()));
+        ShopDatabase::at()->use([&](db::Database& d) { QCOMPARE(d.loadMachine(name).c[22], std::int64_t(5500)); });
+        ShopDatabase::at(db::Location::parse(location_.toStdString()))->use([&](db::Database& d) {
+            QCOMPARE(d.machine(name)->revision, 1);
+        });
+
+        // Back to the first: its value again; in Russian the pane says so too.
+        QVERIFY(setLanguage("ru"));
+        QVERIFY(openDatabase(location_).isEmpty());
+        QTRY_COMPARE(followed.count(), 2);
+        QCOMPARE(followed.last().first().toInt(), 1);
+        QCOMPARE(shownC22(), QString("5000"));
+        QCOMPARE(preset10(), std::int64_t(15));
+        QVERIFY2(pane->statusText().contains(QStringLiteral("ревизии 1")), qPrintable(pane->statusText()));
+        screenshot(w, "dock.constants", "switch-constants-ru");
+        screenshot(w, "dock.rparams", "switch-rparams-ru");
+        QVERIFY(setLanguage("en"));
+
+        // A database without the machine: the constants stay, the first change creates it there.
+        const QString empty = QString::fromStdString(testing::testLocation(dir_, "without.db").text());
+        QVERIFY(openDatabase(empty).isEmpty());
+        QTRY_COMPARE(followed.count(), 3);
+        QCOMPARE(followed.last().first().toInt(), 0);
+        QCOMPARE(shownC22(), QString("5000"));
+        QVERIFY2(pane->statusText().contains("has no machine"), qPrintable(pane->statusText()));
+        QCOMPARE(pane->editor().store().known(), 0);
+        QVERIFY(openDatabase(location_).isEmpty());
+    }
+
+    // On PostgreSQL a studio connected as a viewer is refused a change of a
+    // constant, and one connected as an operator the release of a program:
+    // the window says which role it needs, in English and in Russian, and
+    // nothing is written.
+    void roleRefusalIsShown() {
+        if (!testing::onPostgres())
+            QSKIP("PostgreSQL's roles");
+        const db::Location owner = testing::testLocation(dir_, "roles.db");
+        const QString ownerText = QString::fromStdString(owner.text());
+        const QString dbName = ownerText.mid(ownerText.lastIndexOf('/') + 1);
+        const std::string name = "lathe-roles";
+        // The shop as its owner sets it up: a machine, the roles, a viewer and an operator.
+        QVERIFY(openDatabase(ownerText).isEmpty());
+        const int program = ShopDatabase::at()->use([&](db::Database& d) {
+            if (!d.hasMachine(name))
+                d.createMachine(lathe(name));
+            return d.programReleases(name).front().number;
+        });
+        Ran ran = runK528({"db", "roles", "--db", ownerText});
+        QVERIFY2(ran.exitCode == 0, qPrintable(ran.err));
+        const QString password = qEnvironmentVariable("PGPASSWORD");
+        for (const char* user : {"view1", "oper1"}) {
+            QProcess psql;
+            psql.start("psql", {"-v", "ON_ERROR_STOP=1", "-d", dbName, "-c",
+                                QStringLiteral("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = "
+                                               "'%1') THEN CREATE ROLE %1 LOGIN PASSWORD '%2'; END IF; END $$")
+                                    .arg(user, password)});
+            QVERIFY(psql.waitForFinished(60000));
+            QVERIFY2(psql.exitCode() == 0, psql.readAllStandardError().constData());
+        }
+        ran = runK528({"db", "roles", "grant", "view1", "viewer", "--db", ownerText});
+        QVERIFY2(ran.exitCode == 0, qPrintable(ran.err));
+        ran = runK528({"db", "roles", "grant", "oper1", "operator", "--db", ownerText});
+        QVERIFY2(ran.exitCode == 0, qPrintable(ran.err));
+        const auto stored = [&] {
+            return ShopDatabase::at(owner)->use([&](db::Database& d) {
+                const db::ProgramState state = d.programReleases(name).front().state;
+                return std::make_tuple(d.machine(name)->revision, d.loadMachine(name).c[22], state);
+            });
+        };
+        const auto before = stored();
+
+        // The viewer changes C022 in the constants dock: the simulated
+        // controller takes it, the database refuses it, naming the role.
+        QVERIFY(openDatabase(QStringLiteral("postgresql://view1@/%1").arg(dbName)).isEmpty());
+        MainWindow w(loadMachine(QString::fromStdString(name)));
+        auto* pane = w.findChild<ConstantsPane*>("constantsPane");
+        QVERIFY(pane);
+        for (const char* lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(lang));
+            const std::int64_t wanted = pane->editor().values()[22] == 5000 ? 6000 : 5000;
+            QSignalSpy notKept(&pane->editor(), &ConstantsEditor::notKept);
+            QVERIFY(pane->editor().set(22, wanted, "a viewer's change"));
+            QTRY_COMPARE(notKept.count(), 1);
+            const QString said = pane->statusText();
+            QVERIFY2(said.contains("k528_technologist") && said.contains("view1"), qPrintable(said));
+            if (QLatin1String(lang) == QLatin1String("en"))
+                QVERIFY2(said.contains("needs the role k528_technologist") && said.contains("nothing was written"),
+                         qPrintable(said));
+            else
+                QVERIFY2(said.contains(QStringLiteral("нужна роль k528_technologist")) &&
+                             said.contains(QStringLiteral("ничего не записано")),
+                         qPrintable(said));
+            QVERIFY(stored() == before); // nothing written
+            pane->selectConstant(22);
+            screenshot(w, "dock.constants", QStringLiteral("role-refusal-constants-%1").arg(lang));
+        }
+        w.close();
+
+        // The operator releases a program beside the editor: refused, naming the role.
+        QVERIFY(openDatabase(QStringLiteral("postgresql://oper1@/%1").arg(dbName)).isEmpty());
+        EditorTab tab(nullptr);
+        QVERIFY(tab.openFromDatabase(QString::fromStdString(name)));
+        ProgramReleases* r = tab.releases();
+        for (const char* lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(lang));
+            const QString why = r->release(program, QStringLiteral("by an operator"));
+            QVERIFY2(why.contains("k528_technologist") && why.contains("oper1"), qPrintable(why));
+            if (QLatin1String(lang) == QLatin1String("ru"))
+                QVERIFY2(why.contains(QStringLiteral("не выпущена")) && why.contains(QStringLiteral("ничего не записано")),
+                         qPrintable(why));
+            QVERIFY(stored() == before);
+        }
+        QVERIFY(setLanguage("en"));
+        QVERIFY(openDatabase(location_).isEmpty());
     }
 };
 

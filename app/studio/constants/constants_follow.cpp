@@ -6,6 +6,7 @@
 #include "constants/constants_editor.h"
 #include "controller/controller.h"
 #include "database/database_ui.h"
+#include "session/shop_database.h"
 
 #include <QDialogButtonBox>
 #include <QLabel>
@@ -61,6 +62,7 @@ void ConflictDialog::applyOnNewest() {
 
 ConstantsFollow::ConstantsFollow(ConstantsPane& pane) : QObject(&pane), pane_(pane) {
     connect(DatabaseWatch::instance(), &DatabaseWatch::revision, this, &ConstantsFollow::elsewhere);
+    connect(DatabaseWatch::instance(), &DatabaseWatch::switched, this, &ConstantsFollow::switchedDatabase);
     connect(&pane.editor(), &ConstantsEditor::conflicted, this,
             [this](int number, qint64 value, const QString& note, const QString& why, int known, int newest) {
                 pane_.tell(tr("Not kept in the database: %1").arg(QString(why).replace(QLatin1Char('\n'), QStringLiteral("; "))), true);
@@ -118,6 +120,69 @@ void ConstantsFollow::elsewhere(const RevisionElsewhere& r) {
         self->pane_.tell(told + QStringLiteral("; ") + tr("the constants shown are this revision's"), false);
         emit self->followed(revision);
     });
+}
+
+void ConstantsFollow::switchedDatabase(const QString& where) {
+    ConstantsEditor& editor = pane_.editor();
+    const MachineStore& store = editor.store();
+    editor.undoStack()->clear(); // its steps were kept in the other database
+    if (offer_)
+        offer_->close(); // an offer about the other database's revisions
+    MachineStore::Reloaded m;
+    try {
+        m = store.reload();
+    } catch (const std::exception& e) {
+        pane_.tell(tr("Database %1: the machine %2 is not read from it: %3")
+                       .arg(where, store.qName(), databaseErrorText(e)),
+                   true);
+        return;
+    }
+    if (m.revision == 0) {
+        pane_.tell(tr("Database %1 has no machine %2: the constants shown stay as they were; the first change "
+                      "kept creates the machine there")
+                       .arg(where, store.qName()),
+                   false);
+        emit databaseFollowed(0);
+        return;
+    }
+    const int revision = m.revision;
+    if (!editor.controller().simulated()) {
+        pane_.tell(tr("Database %1: %2 is at revision %3 there; the controller on the link keeps its own "
+                      "constants until they are pushed to it")
+                       .arg(where, store.qName())
+                       .arg(revision),
+                   false);
+        emit databaseFollowed(revision);
+        return;
+    }
+    const QString told = tr("Database %1: the constants shown are those of revision %2 of %3")
+                             .arg(where)
+                             .arg(revision)
+                             .arg(store.qName());
+    const auto shown = editor.values();
+    const auto& c = m.profile.c;
+    if (std::equal(c.begin(), c.end(), shown.begin(), shown.begin() + static_cast<std::ptrdiff_t>(c.size()))) {
+        pane_.tell(told, false);
+        emit databaseFollowed(revision);
+        return;
+    }
+    QPointer<ConstantsFollow> self(this);
+    editor.applyAll(std::vector<std::int64_t>(c.begin(), c.end()),
+                    [self, where, told, revision, name = store.qName()](const QString& why) {
+                        if (!self)
+                            return;
+                        if (!why.isEmpty()) {
+                            self->pane_.tell(tr("Database %1: revision %2 of %3 has other constants; the simulated "
+                                                "controller did not take them now: %4")
+                                                 .arg(where)
+                                                 .arg(revision)
+                                                 .arg(name, why),
+                                             true);
+                            return;
+                        }
+                        self->pane_.tell(told, false);
+                        emit self->databaseFollowed(revision);
+                    });
 }
 
 } // namespace k528::studio

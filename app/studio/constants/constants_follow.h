@@ -6,7 +6,12 @@
 //   - a change refused because it was based on an older revision than the
 //     database's newest (someone else's) is told with the database's words
 //     (who, when), and the pane offers the differences between the two
-//     revisions and applying the user's change again on top of the newest.
+//     revisions and applying the user's change again on top of the newest;
+//   - File > Database… switched the window to another database: the pane
+//     shows the machine as that database holds it (the simulated controller
+//     takes its constants; a real one keeps its own until a push), the next
+//     change is based on that database's revision, and the undo steps kept
+//     in the other database are gone.
 #pragma once
 
 #include <QDialog>
@@ -57,9 +62,13 @@ public:
 signals:
     // The pane shows `revision`'s constants (taken by the simulated controller).
     void followed(int revision);
+    // After File > Database…: the pane shows the new database's machine at
+    // `revision` (0: that database has no such machine; the constants stay).
+    void databaseFollowed(int revision);
 
 private:
     void elsewhere(const RevisionElsewhere& r);
+    void switchedDatabase(const QString& where);
     ConstantsPane& pane_;
     QPointer<ConflictDialog> offer_;
 };

@@ -125,4 +125,23 @@ profile::MachineProfile MachineStore::current() const {
         [&](db::Database& d) { return d.hasMachine(base_.name) ? d.loadMachine(base_.name) : base_; });
 }
 
+MachineStore::Reloaded MachineStore::reload() const {
+    Reloaded r;
+    setKnown(0); // the other database's revision means nothing here
+    ShopDatabase::at()->use([&](db::Database& d) {
+        // The revision before the load: a revision made between the two is
+        // then one this window does not know (a change is refused and offered
+        // again on top of it, never made over it unseen).
+        const auto m = d.machine(base_.name);
+        if (!m)
+            return;
+        r.profile = d.loadMachine(base_.name);
+        r.revision = m->revision;
+    });
+    if (r.revision == 0)
+        r.profile = base_;
+    setKnown(r.revision);
+    return r;
+}
+
 } // namespace k528::studio

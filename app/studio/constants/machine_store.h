@@ -62,6 +62,15 @@ public:
     profile::MachineProfile load(int revision) const;
     profile::MachineProfile current() const; // the stored state (base when not stored)
 
+    // After File > Database…: the machine as the window's database holds it
+    // now, and known() its revision there (0 and the profile the window
+    // started with when that database has no such machine).
+    struct Reloaded {
+        profile::MachineProfile profile;
+        int revision = 0; // 0: not in this database
+    };
+    Reloaded reload() const;
+
 private:
     void ensureMachine(db::Database& d) const;
     profile::MachineProfile base_;

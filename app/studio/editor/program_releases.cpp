@@ -217,7 +217,7 @@ QString ProgramReleases::change(int number, QString why, const Write& write,
             emit statusMessage(done(e));
             return {};
         } catch (const db::DeniedError& e) {
-            why = needsRole.arg(fromStd(e.role()), QString::fromUtf8(e.what()));
+            why = needsRole.arg(fromStd(e.role()), databaseErrorText(e));
         } catch (const std::exception& e) {
             why = databaseErrorText(e);
         }

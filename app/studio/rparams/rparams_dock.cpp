@@ -8,6 +8,7 @@
 #include "rparams/rparams_model.h"
 #include "controller/controller.h"
 #include "controller/view_notice.h"
+#include "database/database_ui.h"
 #include "widgets.h"
 #include "workspace/pane_dock.h"
 
@@ -144,6 +145,23 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     } catch (const std::exception& e) {
         say(tr("The machine's presets are not read from the database: %1").arg(databaseErrorText(e)), true);
     }
+    // File > Database…: the presets of the machine as the new database holds it.
+    connect(DatabaseWatch::instance(), &DatabaseWatch::switched, this, [this](const QString& where) {
+        try {
+            const MachineStore::Reloaded m = store_->reload();
+            model_->setPresets(m.profile.r);
+            say(m.revision == 0 ? tr("Database %1 has no machine %2: the presets shown are those the window "
+                                     "loaded; the first one kept creates the machine there")
+                                      .arg(where, store_->qName())
+                                : tr("Database %1: the presets shown are those of revision %2 of %3")
+                                      .arg(where)
+                                      .arg(m.revision)
+                                      .arg(store_->qName()),
+                false);
+        } catch (const std::exception& e) {
+            say(tr("The machine's presets are not read from the database: %1").arg(databaseErrorText(e)), true);
+        }
+    });
     retranslate();
 }
 

@@ -195,8 +195,50 @@ QString databaseErrorDetail(const std::exception& e) {
     return QStringLiteral("«%1»").arg(QString::fromUtf8(said.data(), static_cast<qsizetype>(said.size())).simplified());
 }
 
+namespace {
+
+// What a role refusal was about (db::DeniedError::action), in the window's language.
+QString deniedAction(const std::string& action) {
+    static const char* const kActions[] = {
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "creating a machine"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "changing a machine"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "deleting a machine"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "releasing a program"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "withdrawing a program"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording a transfer"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording messages"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording a training attempt"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "creating the database's tables"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "setting up the roles"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "granting a role"),
+    };
+    for (const char* a : kActions)
+        if (action == a)
+            return QCoreApplication::translate("k528::studio::ShopDatabase", a);
+    return QString::fromStdString(action);
+}
+
+// A role refusal in the window's language (not English): who was refused
+// what, the role it needs, that nothing was written.
+QString deniedText(const db::DeniedError& e) {
+    std::string user;
+    try {
+        user = ShopDatabase::at()->use([](db::Database& d) { return d.sessionUser(); });
+    } catch (const std::exception&) {
+    }
+    return QCoreApplication::translate("k528::studio::ShopDatabase",
+                                       "The database %1 refused the user %2: %3 needs the role %4; nothing was written.")
+        .arg(ShopDatabase::currentText(), QString::fromStdString(user), deniedAction(e.action()),
+             QString::fromStdString(e.role()));
+}
+
+} // namespace
+
 QString databaseErrorText(const std::exception& e) {
     const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e);
+    if (const auto* denied = dynamic_cast<const db::DeniedError*>(&e);
+        denied && currentLanguage() != QLatin1String("en"))
+        return deniedText(*denied);
     if (!r) {
         const auto* error = dynamic_cast<const db::Error*>(&e);
         if (!error || currentLanguage() == QLatin1String("en"))
