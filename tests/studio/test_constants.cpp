@@ -357,7 +357,8 @@ private slots:
         QVERIFY(waitIdle(pane));
         QCOMPARE(done.count(), 1);
         QVERIFY2(pane.statusText().contains(QStringLiteral("Nothing was imported")), qPrintable(pane.statusText()));
-        QVERIFY(pane.statusText().contains(QStringLiteral("bad.csv:")));
+        // The place is named: the file and the line of the bad value.
+        QVERIFY2(pane.statusText().contains(QStringLiteral("bad.csv, line 23:")), qPrintable(pane.statusText()));
         QCOMPARE(revisionCount(pane), revs);
         QCOMPARE(session.controller().c()[22], std::int64_t(5000));
 

@@ -37,6 +37,7 @@
 #include <QPushButton>
 #include <QSaveFile>
 #include <QScrollArea>
+#include <QTimer>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QVBoxLayout>
@@ -785,8 +786,15 @@ void ControllerDock::updateMonitor() {
     row(tr("Programs"), progs.isEmpty() ? tr("none") : progs.join(' '));
     h += QStringLiteral("</table>");
     if (h != lastMonitor_) {
+        const bool first = lastMonitor_.isEmpty();
         lastMonitor_ = h;
         monitor_->setText(h);
+        // The line has just come up: the live state is what the operator looks
+        // at now. In a short dock (1366x768, under the line's form) it lies
+        // below the fold; brought into view once, scrolled freely after.
+        if (first)
+            if (auto* scroll = qobject_cast<QScrollArea*>(widget()))
+                QTimer::singleShot(0, scroll, [scroll, box = monitorBox_] { scroll->ensureWidgetVisible(box, 0, 0); });
     }
 }
 
