@@ -13,6 +13,8 @@
 #include <QFileInfo>
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace k528::studio {
 
@@ -142,23 +144,14 @@ const Entry kNotes[] = {
         {"studio.editor", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "programs and messages from the editor (K528 Studio)")},
 };
 
-// `pattern` with %1..%9 filled in one pass (an argument's own "%2" stays).
+// `pattern` with %1..%9 filled in one pass, as core fills its own texts
+// (profile::fillPattern: an argument's own "%2" stays).
 QString fill(const QString& pattern, const QStringList& args) {
-    QString out;
-    for (qsizetype i = 0; i < pattern.size(); ++i) {
-        const QChar c = pattern[i];
-        if (c == QLatin1Char('%') && i + 1 < pattern.size() && pattern[i + 1] >= QLatin1Char('1') &&
-            pattern[i + 1] <= QLatin1Char('9')) {
-            const qsizetype k = pattern[i + 1].unicode() - '1';
-            if (k < args.size()) {
-                out += args[k];
-                ++i;
-                continue;
-            }
-        }
-        out += c;
-    }
-    return out;
+    std::vector<std::string> a;
+    a.reserve(static_cast<std::size_t>(args.size()));
+    for (const QString& s : args)
+        a.push_back(s.toStdString());
+    return QString::fromStdString(profile::fillPattern(pattern.toStdString(), a));
 }
 
 const char* patternOf(std::string_view id) {
