@@ -11,6 +11,7 @@ namespace k528::cli {
 int runPanel(std::span<const std::string> args); // cmd_panel.cpp
 int runPath(std::span<const std::string> args);  // cmd_path.cpp
 int runPlot(std::span<const std::string> args);  // cmd_plot.cpp
+int runSetupSheet(std::span<const std::string> args); // cmd_setup_sheet.cpp
 int runServe(std::span<const std::string> args); // cmd_link_forward.cpp
 int runLink(std::span<const std::string> args);  // cmd_link_forward.cpp
 int runExercise(std::span<const std::string> args); // cmd_exercise.cpp
@@ -50,7 +51,8 @@ std::span<const Command> commands() {
          kDbDetails, runDb},
         {"run",
          "run [--json] [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]... [--no-home]\n"
-         "           [--no-check] [--override PCT] [--max-seconds S] [--m0-wait S] [--number N] [--lang ru|en] FILE",
+         "           [--no-check] [--from N|L<n>:N<k> [--pass K]] [--override PCT] [--max-seconds S] [--m0-wait S]\n"
+         "           [--number N] [--lang ru|en] FILE",
          "Run a program on the simulated machine, headless, and report the end state.",
          "Options:\n"
          "  --json               print the end state as JSON (cli.md)\n"
@@ -64,6 +66,12 @@ std::span<const Command> commands() {
          "  --no-home            skip the reference-point cycles (a program then needs АВТ.БЕЗ ПБТ)\n"
          "  --no-check           run the file as the controller holds it, without the rules of\n"
          "                       `k528 check`: a refused frame raises its alarm when reached\n"
+         "  --from N             start before frame N of the program, with its state rebuilt by the\n"
+         "                       preview (modal G, feeds, R the program wrote, R224..R231, the call\n"
+         "                       stack, the M functions handed again); printed (JSON: \"from\")\n"
+         "                       before the axes go there: X to its reference point, Z, then X.\n"
+         "                       L<n>:N<k> names frame N<k> of subprogram L<n> (also L2:40)\n"
+         "  --pass K             with --from: the K-th time the frame is reached (default 1)\n"
          "  --override PCT       feed override: 0 1 2 5 10 20 35 50 75 90 100 (default 100)\n"
          "  --max-seconds S      simulated-time limit of the program (default 3600): status timeout\n"
          "  --m0-wait S          seconds an operator waits at M00 before «Пуск» (default 0)\n"
@@ -127,6 +135,24 @@ std::span<const Command> commands() {
          "offscreen: run under xvfb-run -a -s \"-screen 0 1280x800x24\". Segments beyond the\n"
          "software limits are listed on stderr as ВНЕ ГРАНИЦ.\n",
          runPlot},
+        {"setup-sheet",
+         "setup-sheet [--profile NAME|PATH] [--db PATH] [--param N=V]... [--r N=V]... [--blank UCG,…]\n"
+         "           [--lang ru|en] [--no-cycle-times] [--json] --out FILE.pdf FILE",
+         "Write the setup sheet (карта наладки) of a program file on a machine as PDF.",
+         "Options:\n"
+         "  --out FILE.pdf       the PDF to write (A4)\n"
+         "  --profile NAME|PATH  the machine (as for run): its tools (tool.N.*), R presets, constants\n"
+         "  --r N=V              preset R<N> over the machine's presets (repeatable)\n"
+         "  --blank UCG,…        the blank, instead of the file's UCG comment\n"
+         "  --lang ru|en         the sheet's language (default ru)\n"
+         "  --no-cycle-times     leave the cycle times out (no run on the simulated machine)\n"
+         "  --json               print the sheet's content as JSON (--out then optional)\n"
+         "The sheet: the machine, the blank, the tools by turret station with kind, tip radius,\n"
+         "orientation and offsets (from the R-parameters they name), each program with its cycle\n"
+         "time (as path reports it; subprograms have none), the R-parameters to preset with their\n"
+         "values in discretes and mm. Written by k528-sheet (Qt) from k528's folder; no display\n"
+         "needed. Exit codes: 0 written; 1 errors in the file; 2 usage or I/O error.\n",
+         runSetupSheet},
         {"exercise", "exercise list [--json] [--lang ru|en] | exercise show ID [--reference | --given] [--json] [--lang ru|en] | exercise attempts [ID] [--student NAME] [--limit N] [--json | --csv] [--db LOCATION]",
          "The training course's exercises: the list, one task, its reference program, the attempts on record.",
          "Commands:\n"
