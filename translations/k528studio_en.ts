@@ -1963,6 +1963,46 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>rejected, nothing was written: %1</source>
         <translation>rejected, nothing was written: %1</translation>
     </message>
+    <message>
+        <source>the PLC sets the mode</source>
+        <translation>the PLC sets the mode</translation>
+    </message>
+    <message>
+        <source>not in this mode</source>
+        <translation>not in this mode</translation>
+    </message>
+    <message>
+        <source>a program is active</source>
+        <translation>a program is active</translation>
+    </message>
+    <message>
+        <source>read-only parameter</source>
+        <translation>read-only parameter</translation>
+    </message>
+    <message>
+        <source>no such parameter</source>
+        <translation>no such parameter</translation>
+    </message>
+    <message>
+        <source>value out of range</source>
+        <translation>value out of range</translation>
+    </message>
+    <message>
+        <source>no such program</source>
+        <translation>no such program</translation>
+    </message>
+    <message>
+        <source>the axis is not present</source>
+        <translation>the axis is not present</translation>
+    </message>
+    <message>
+        <source>no such key</source>
+        <translation>no such key</translation>
+    </message>
+    <message>
+        <source>the controller is off</source>
+        <translation>the controller is off</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CycleTimeLabel</name>

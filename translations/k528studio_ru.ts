@@ -1963,6 +1963,46 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>rejected, nothing was written: %1</source>
         <translation>отклонено, ничего не записано: %1</translation>
     </message>
+    <message>
+        <source>the PLC sets the mode</source>
+        <translation>Режим задан из ПЛК</translation>
+    </message>
+    <message>
+        <source>not in this mode</source>
+        <translation>Не в этом режиме</translation>
+    </message>
+    <message>
+        <source>a program is active</source>
+        <translation>Выполняется программа</translation>
+    </message>
+    <message>
+        <source>read-only parameter</source>
+        <translation>Параметр только для чтения</translation>
+    </message>
+    <message>
+        <source>no such parameter</source>
+        <translation>Нет такого параметра</translation>
+    </message>
+    <message>
+        <source>value out of range</source>
+        <translation>Значение вне диапазона</translation>
+    </message>
+    <message>
+        <source>no such program</source>
+        <translation>L отсутствует</translation>
+    </message>
+    <message>
+        <source>the axis is not present</source>
+        <translation>Ось отсутствует</translation>
+    </message>
+    <message>
+        <source>no such key</source>
+        <translation>Нет такой клавиши</translation>
+    </message>
+    <message>
+        <source>the controller is off</source>
+        <translation>Устройство выключено</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CycleTimeLabel</name>

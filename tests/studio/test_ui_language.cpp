@@ -896,6 +896,12 @@ void TestUiLanguage::russianCoreTexts() {
         walker.check(QStringLiteral("prove-out finding %1").arg(fromView(t.id)), studio::findingText(f));
     }
 
+    // The controller's refusals: the same Russian as the panel's (core's).
+    for (int r = 1; r <= static_cast<int>(engine::Refusal::NotPowered); ++r) {
+        const auto refusal = static_cast<engine::Refusal>(r);
+        QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
+    }
+
     // The constants calculator's refusals.
     {
         const units::AxisScale scale = profile::axisScale(profile::builtin("training-lathe"), catalog::Axis::X);

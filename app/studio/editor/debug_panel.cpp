@@ -7,6 +7,7 @@
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "language.h"
+#include "session/core_texts.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
 
@@ -468,10 +469,7 @@ bool DebugPanel::setWatchValue(int number, qint64 value) {
         return false;
     const engine::OpResult r = session_->controller().setR(number, value);
     if (!r.ok()) {
-        const bool ru = currentLanguage() == QStringLiteral("ru");
-        emit statusMessage(tr("R%1 was not set: %2")
-                               .arg(number)
-                               .arg(fromView(ru ? engine::refusalTextRu(r.refusal) : engine::refusalTextEn(r.refusal))));
+        emit statusMessage(tr("R%1 was not set: %2").arg(number).arg(refusalText(r.refusal)));
         refreshWatch();
         return false;
     }

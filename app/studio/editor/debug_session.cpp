@@ -2,6 +2,7 @@
 
 #include "editor/program_editor.h"
 #include "language.h"
+#include "session/core_texts.h"
 #include "session/simulation_session.h"
 
 namespace k528::studio {
@@ -21,9 +22,7 @@ QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
 QString refusal(const engine::OpResult& r) {
-    const bool ru = currentLanguage() == QStringLiteral("ru");
-    const std::string_view t = ru ? engine::refusalTextRu(r.refusal) : engine::refusalTextEn(r.refusal);
-    return QString::fromUtf8(t.data(), static_cast<qsizetype>(t.size()));
+    return refusalText(r.refusal);
 }
 
 } // namespace

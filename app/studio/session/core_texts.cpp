@@ -1,6 +1,7 @@
 #include "session/core_texts.h"
 
 #include "db/error.h"
+#include "engine/types.h"
 #include "db/notes.h"
 #include "language.h"
 #include "profile/calculator.h"
@@ -225,6 +226,23 @@ QString findingText(const proveout::Finding& f) {
         return fill(QCoreApplication::translate("k528::studio::ProveoutTexts", e.text), args);
     }
     return fromStd(f.message(false)); // an id without a translation: core's English
+}
+
+QString refusalText(engine::Refusal r) {
+    switch (r) {
+    case engine::Refusal::None: return {};
+    case engine::Refusal::ModeFromPlc: return QCoreApplication::translate("k528::studio::CoreTexts", "the PLC sets the mode");
+    case engine::Refusal::WrongMode: return QCoreApplication::translate("k528::studio::CoreTexts", "not in this mode");
+    case engine::Refusal::ProgramActive: return QCoreApplication::translate("k528::studio::CoreTexts", "a program is active");
+    case engine::Refusal::ReadOnly: return QCoreApplication::translate("k528::studio::CoreTexts", "read-only parameter");
+    case engine::Refusal::NoSuchParameter: return QCoreApplication::translate("k528::studio::CoreTexts", "no such parameter");
+    case engine::Refusal::ValueOutOfRange: return QCoreApplication::translate("k528::studio::CoreTexts", "value out of range");
+    case engine::Refusal::NoSuchProgram: return QCoreApplication::translate("k528::studio::CoreTexts", "no such program");
+    case engine::Refusal::AxisAbsent: return QCoreApplication::translate("k528::studio::CoreTexts", "the axis is not present");
+    case engine::Refusal::NoSuchKey: return QCoreApplication::translate("k528::studio::CoreTexts", "no such key");
+    case engine::Refusal::NotPowered: return QCoreApplication::translate("k528::studio::CoreTexts", "the controller is off");
+    }
+    return {};
 }
 
 QString revisionNoteText(const std::string& summary) {

@@ -6,6 +6,7 @@
 
 #include <QString>
 
+#include <cstdint>
 #include <exception>
 #include <string>
 #include <string_view>
@@ -14,6 +15,9 @@ namespace k528::profile {
 struct Problem;
 class FileError;
 } // namespace k528::profile
+namespace k528::engine {
+enum class Refusal : std::uint8_t;
+} // namespace k528::engine
 namespace k528::proveout {
 struct Finding;
 } // namespace k528::proveout
@@ -38,6 +42,8 @@ bool readTextFile(const QString& path, std::string& text, QString& error);
 // else the user's own words as written.
 QString revisionNoteText(const std::string& summary);
 bool hasNoteText(std::string_view id);
+// Why the controller refused an operation (engine::Refusal), e.g. «Не в этом режиме».
+QString refusalText(engine::Refusal r);
 // A prove-out finding (proveout::texts(): an id and its arguments), e.g.
 // «Инструмент T1 задевает кулачки патрона: X40 Z-2».
 QString findingText(const proveout::Finding& f);
