@@ -301,6 +301,10 @@ constexpr RoleDef kRoles[] = {
      "an operator's; change machines, release and withdraw programs, push drafts where the "
      "machine allows",
      "k528_operator"},
+    {"k528_trainer",
+     "a technologist's; lock and unlock the machine constants for a class (constants.lock), record "
+     "and read the class's training attempts",
+     "k528_technologist"},
 };
 
 std::string identifier(std::string_view ident) {
@@ -384,7 +388,7 @@ void PostgresStore::grantRole(const std::string& user, const std::string& role) 
         known = known || r.name == name;
     if (!known)
         throw Error(ErrorKind::Invalid, "no role \"" + role +
-                                            "\": the roles are technologist, operator and viewer");
+                                            "\": the roles are trainer, technologist, operator and viewer");
     try {
         conn_->exec("GRANT " + name + " TO " + identifier(user));
     } catch (const Error& e) {
