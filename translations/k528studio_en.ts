@@ -4955,6 +4955,10 @@ Details: %3</translation>
         <source>setting or clearing the constants lock</source>
         <translation>setting or clearing the constants lock</translation>
     </message>
+    <message>
+        <source>recording the machines' time in each state</source>
+        <translation>recording the machines' time in each state</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ShopTile</name>

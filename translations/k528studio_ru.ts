@@ -4955,6 +4955,10 @@ Details: %3</source>
         <source>setting or clearing the constants lock</source>
         <translation>установка и снятие блокировки констант</translation>
     </message>
+    <message>
+        <source>recording the machines' time in each state</source>
+        <translation>запись времени станков в каждом состоянии</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ShopTile</name>

@@ -349,6 +349,7 @@ std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
                         "GRANT SELECT ON ALL TABLES IN SCHEMA " + schema + " TO k528_viewer;"
                         "GRANT INSERT ON transfers, transfer_items, message_runs, message_history, "
                         "training_attempts TO k528_operator;"
+                        "GRANT INSERT, UPDATE ON state_times TO k528_operator;"
                         "GRANT UPDATE (cleared_ms, ack_ms, ack_day_ms, ack_how) ON message_history "
                         "TO k528_operator;"
                         "GRANT USAGE ON ALL SEQUENCES IN SCHEMA " + schema + " TO k528_operator;"

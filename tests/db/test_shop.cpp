@@ -8,6 +8,7 @@
 #include "db/database.h"
 #include "db/message_log.h"
 #include "db/sql.h"
+#include "db/state_times.h"
 #include "db/store.h"
 #include "db_test_util.h"
 #include "profile/builtin.h"
@@ -510,6 +511,8 @@ private slots:
             e.message.text = "x";
             log.write(run, std::vector<db::MessageEvent>{e});
             QCOMPARE(log.count(), std::int64_t(1));
+            // An operator's shop page keeps the machines' time in each state.
+            db::addStateTimes(op, {{"grinder-205", "2026-12-06", "studio@pc1", "idle", 60000, {}}});
         }
         {
             db::Database view = as("view1");
@@ -518,6 +521,9 @@ private slots:
             DENIED_FOR(view.recordTransfer(pushEntry("grinder-205", 1, "ok")), "k528_operator");
             DENIED_FOR(db::MessageLog(view).beginRun("grinder-205", 0), "k528_operator");
             DENIED_FOR(view.applyEdit("grinder-205", editC(22, 2133)), "k528_technologist");
+            QCOMPARE(db::stateTimes(view, "2026-12-06").size(), std::size_t(1));
+            DENIED_FOR(db::addStateTimes(view, {{"grinder-205", "2026-12-06", "studio@pc2", "idle", 1, {}}}),
+                       "k528_operator");
         }
         {
             db::Database tech = as("tech1");
@@ -605,6 +611,29 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = db({"set", "grinder-205", "C022=2133"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    }
+
+    // The shop's time in each state: a poller's rows add up across
+    // connections (a restarted studio continues its day), each source apart.
+    void stateTimesAddUp() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "times");
+        {
+            db::Database d = db::Database::open(where, testOptions());
+            db::addStateTimes(d, {{"m01", "2026-12-06", "studio@pc1", "run", 60000, {}},
+                             {"m01", "2026-12-06", "studio@pc1", "idle", 1000, {}}});
+        }
+        db::Database d = db::Database::open(where, testOptions());
+        db::addStateTimes(d, {{"m01", "2026-12-06", "studio@pc1", "run", 500, {}},
+                         {"m01", "2026-12-06", "shop@pc2", "alarm", 42, {}}});
+        const auto rows = db::stateTimes(d, "2026-12-06", "studio@pc1");
+        QCOMPARE(rows.size(), std::size_t(2));
+        QCOMPARE(rows[0].state, std::string("idle"));
+        QCOMPARE(rows[1].state, std::string("run"));
+        QCOMPARE(rows[1].ms, std::int64_t(60500));
+        QCOMPARE(db::stateTimes(d, "2026-12-06").size(), std::size_t(3));
+        QVERIFY(db::stateTimes(d, "2026-12-05").empty());
+        QCOMPARE(d.checkIntegrity(), std::string());
     }
 
     // The commands: release and withdraw, the log, a copy, the roles.
