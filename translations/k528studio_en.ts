@@ -2853,6 +2853,50 @@ Its comment stays: %3</translation>
         <source>The programs and messages of the controller shown as a new file</source>
         <translation>The programs and messages of the controller shown as a new file</translation>
     </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Setup sheet</translation>
+    </message>
+    <message>
+        <source>Print preview…</source>
+        <translation>Print preview…</translation>
+    </message>
+    <message>
+        <source>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</source>
+        <translation>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</translation>
+    </message>
+    <message>
+        <source>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</source>
+        <translation>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</translation>
+    </message>
+    <message>
+        <source>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</source>
+        <translation>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</translation>
+    </message>
+    <message>
+        <source>The file has errors (Problems): its setup sheet is made once they are fixed.</source>
+        <translation>The file has errors (Problems): its setup sheet is made once they are fixed.</translation>
+    </message>
+    <message>
+        <source>The setup sheet cannot be made: %1</source>
+        <translation>The setup sheet cannot be made: %1</translation>
+    </message>
+    <message>
+        <source>Setup sheet written to %1</source>
+        <translation>Setup sheet written to %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Export the setup sheet</source>
+        <translation>Export the setup sheet</translation>
+    </message>
+    <message>
+        <source>Setup sheet: %1</source>
+        <translation>Setup sheet: %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::FrameMaster</name>

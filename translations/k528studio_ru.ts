@@ -2853,6 +2853,50 @@ Its comment stays: %3</source>
         <source>The programs and messages of the controller shown as a new file</source>
         <translation>Программы и сообщения показываемого контроллера — новым файлом</translation>
     </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Карта наладки</translation>
+    </message>
+    <message>
+        <source>Print preview…</source>
+        <translation>Предварительный просмотр…</translation>
+    </message>
+    <message>
+        <source>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</source>
+        <translation>Карта наладки этого файла на его станке: заготовка, инструмент с коррекциями, программы со временем цикла, предустановки R-параметров</translation>
+    </message>
+    <message>
+        <source>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</source>
+        <translation>Откройте файл программ в редакторе: карта наладки составляется для станка, к которому он привязан.</translation>
+    </message>
+    <message>
+        <source>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</source>
+        <translation>Файл не привязан к станку: выберите станок (меню «Редактор») для карты наладки.</translation>
+    </message>
+    <message>
+        <source>The file has errors (Problems): its setup sheet is made once they are fixed.</source>
+        <translation>В файле есть ошибки (список «Проблемы»): карта наладки составляется после их исправления.</translation>
+    </message>
+    <message>
+        <source>The setup sheet cannot be made: %1</source>
+        <translation>Карту наладки составить нельзя: %1</translation>
+    </message>
+    <message>
+        <source>Setup sheet written to %1</source>
+        <translation>Карта наладки записана в %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Export the setup sheet</source>
+        <translation>Экспорт карты наладки</translation>
+    </message>
+    <message>
+        <source>Setup sheet: %1</source>
+        <translation>Карта наладки: %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::FrameMaster</name>

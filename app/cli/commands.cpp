@@ -11,6 +11,7 @@ namespace k528::cli {
 int runPanel(std::span<const std::string> args); // cmd_panel.cpp
 int runPath(std::span<const std::string> args);  // cmd_path.cpp
 int runPlot(std::span<const std::string> args);  // cmd_plot.cpp
+int runSetupSheet(std::span<const std::string> args); // cmd_setup_sheet.cpp
 int runServe(std::span<const std::string> args); // cmd_link_forward.cpp
 int runLink(std::span<const std::string> args);  // cmd_link_forward.cpp
 int runExercise(std::span<const std::string> args); // cmd_exercise.cpp
@@ -127,6 +128,24 @@ std::span<const Command> commands() {
          "offscreen: run under xvfb-run -a -s \"-screen 0 1280x800x24\". Segments beyond the\n"
          "software limits are listed on stderr as ВНЕ ГРАНИЦ.\n",
          runPlot},
+        {"setup-sheet",
+         "setup-sheet [--profile NAME|PATH] [--db PATH] [--param N=V]... [--r N=V]... [--blank UCG,…]\n"
+         "           [--lang ru|en] [--no-cycle-times] [--json] --out FILE.pdf FILE",
+         "Write the setup sheet (карта наладки) of a program file on a machine as PDF.",
+         "Options:\n"
+         "  --out FILE.pdf       the PDF to write (A4)\n"
+         "  --profile NAME|PATH  the machine (as for run): its tools (tool.N.*), R presets, constants\n"
+         "  --r N=V              preset R<N> over the machine's presets (repeatable)\n"
+         "  --blank UCG,…        the blank, instead of the file's UCG comment\n"
+         "  --lang ru|en         the sheet's language (default ru)\n"
+         "  --no-cycle-times     leave the cycle times out (no run on the simulated machine)\n"
+         "  --json               print the sheet's content as JSON (--out then optional)\n"
+         "The sheet: the machine, the blank, the tools by turret station with kind, tip radius,\n"
+         "orientation and offsets (from the R-parameters they name), each program with its cycle\n"
+         "time (as path reports it; subprograms have none), the R-parameters to preset with their\n"
+         "values in discretes and mm. Written by k528-sheet (Qt) from k528's folder; no display\n"
+         "needed. Exit codes: 0 written; 1 errors in the file; 2 usage or I/O error.\n",
+         runSetupSheet},
         {"exercise", "exercise list [--json] [--lang ru|en] | exercise show ID [--reference | --given] [--json] [--lang ru|en] | exercise attempts [ID] [--student NAME] [--limit N] [--json | --csv] [--db LOCATION]",
          "The training course's exercises: the list, one task, its reference program, the attempts on record.",
          "Commands:\n"

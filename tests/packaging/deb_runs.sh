@@ -11,7 +11,7 @@ trap 'rm -rf "$tmp"' EXIT
 dpkg-deb -x "$deb" "$tmp/root"
 fail() { echo "FAIL: $*"; exit 1; }
 for f in usr/bin/k528 usr/bin/k528studio \
-         usr/lib/k528studio/k528-link usr/lib/k528studio/k528-plot \
+         usr/lib/k528studio/k528-link usr/lib/k528studio/k528-plot usr/lib/k528studio/k528-sheet \
          usr/lib/k528studio/plugins/k528_modbus_rtu.so usr/lib/k528studio/plugins/k528_modbus_tcp.so \
          usr/share/applications/k528studio.desktop \
          usr/share/icons/hicolor/scalable/apps/k528studio.svg \
@@ -53,4 +53,8 @@ echo "$depends" | grep -q libqt6widgets6 || fail "Depends lacks Qt: $depends"
 echo "$depends" | grep -q libsqlite3 || fail "Depends lacks SQLite (core/db links it): $depends"
 db=$(K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" db init) || fail "k528 db init exited $?"
 echo "$db" | grep -q "schema    version" || fail "unexpected k528 db init output: $db"
+# k528 setup-sheet writes its PDF through the installed k528-sheet, without a display.
+sheet=$($nodisplay K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" setup-sheet --out "$tmp/sheet.pdf" "$program" 2>&1) ||
+    fail "k528 setup-sheet from the package: $sheet"
+[ -s "$tmp/sheet.pdf" ] || fail "k528 setup-sheet wrote no PDF: $sheet"
 echo "ok: $(basename "$deb") unpacks; $out; Depends: $depends"

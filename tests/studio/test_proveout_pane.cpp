@@ -15,6 +15,9 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -192,6 +195,41 @@ private slots:
         QVERIFY(dock);
         QVERIFY(dock->findChild<ProveoutPane*>());
         QVERIFY(!dock->windowTitle().isEmpty());
+    }
+
+    // Editor > Setup sheet: the editor's file on its machine as PDF — every
+    // tool of the machine, the cycle time, the R presets (pdftotext reads it
+    // back); without a machine it says why and writes nothing.
+    void theSetupSheetOfTheEditorsFile() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab tab(&seam);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText(QString::fromUtf8(kSafeFacing));
+        ed->validateNow();
+        auto* menu = tab.findChild<QMenu*>("menu.editor.setupSheet");
+        QVERIFY(menu);
+        QVERIFY(tab.editorMenu()->actions().contains(menu->menuAction()));
+        QCOMPARE(menu->actions().size(), 2);
+        const QString pdf = dir_.filePath("sheet.pdf");
+        QCOMPARE(tab.exportSetupSheet(pdf), QString());
+        QProcess p;
+        p.start("pdftotext", {"-layout", pdf, "-"});
+        QVERIFY(p.waitForFinished(30000));
+        const QString text = QString::fromUtf8(p.readAllStandardOutput());
+        for (const profile::Tool& t : profile::tools(profile::builtin("training-lathe")))
+            for (const QString& word : QString::fromStdString(t.name).split(' ')) // a cell may wrap it
+                QVERIFY2(text.contains(word), t.name.c_str());
+        QVERIFY2(text.contains("FACE"), qPrintable(text));
+        QVERIFY(QRegularExpression("L1\\s+FACE\\s+\\d+\\.\\d").match(text).hasMatch());
+        QVERIFY(QRegularExpression("R220\\s+200000\\s").match(text).hasMatch());
+
+        ed->setText("%L1\nN1 G0 X\n"); // errors: no sheet
+        ed->validateNow();
+        QVERIFY(!tab.exportSetupSheet(dir_.filePath("bad.pdf")).isEmpty());
+        QVERIFY(!QFile::exists(dir_.filePath("bad.pdf")));
     }
 };
 

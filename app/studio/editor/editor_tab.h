@@ -26,6 +26,10 @@ class QToolBar;
 class QMenu;
 class QDialog;
 
+namespace k528::proveout {
+struct SetupSheet;
+}
+
 namespace k528::studio {
 
 class CycleTimeLabel;
@@ -147,6 +151,13 @@ public slots:
     int exportPdf(const QString& path);
     void exportPdfDialog();
     void printDialog();
+    // The setup sheet (карта наладки) of the current file on the machine it
+    // is checked for: its content (core's, with the cycle times), PDF
+    // (returns "" when written, else why not), print preview and print.
+    bool setupSheet(proveout::SetupSheet& sheet, QString& why);
+    QString exportSetupSheet(const QString& path);
+    void exportSetupSheetDialog();
+    void previewSetupSheet();
     // The programs and messages of a database machine as a document; saving
     // it writes the machine's next revision.
     bool openFromDatabase(const QString& machine);
@@ -206,7 +217,9 @@ private:
     int untitled_ = 0;
     std::function<CloseChoice(const QString&)> ask_;
     std::function<bool(const QString&)> askReload_;
-    QMenu *editorMenu_ = nullptr, *refactorMenu_ = nullptr, *listingMenu_ = nullptr, *fileMachineMenu_ = nullptr;
+    QMenu *editorMenu_ = nullptr, *refactorMenu_ = nullptr, *listingMenu_ = nullptr, *fileMachineMenu_ = nullptr,
+          *sheetMenu_ = nullptr;
+    QAction *sheetPreviewAction_ = nullptr, *sheetPdfAction_ = nullptr;
     QAction *renumberAction_ = nullptr, *moveAction_ = nullptr, *formatAction_ = nullptr, *printAction_ = nullptr,
             *pdfAction_ = nullptr, *openDbAction_ = nullptr, *fileMachineAction_ = nullptr,
             *refactorAction_ = nullptr, *listingAction_ = nullptr;

@@ -12,6 +12,8 @@
 #include "engine/self_test.h"
 #include "session/machine_source.h"
 #include "controller/controller.h"
+#include "language.h"
+#include "sheet/sheet_render.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -24,6 +26,10 @@
 #include <QMenu>
 #include <QPrintDialog>
 #include <QPrinter>
+#include <QPrintPreviewDialog>
+#include <QGuiApplication>
+#include <QMessageBox>
+#include <QScreen>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QToolBar>
@@ -59,6 +65,10 @@ void EditorTab::createTools() {
     printAction_ = listingMenu_->addAction(QString(), this, &EditorTab::printDialog);
     printAction_->setShortcut(QKeySequence::Print);
     pdfAction_ = listingMenu_->addAction(QString(), this, &EditorTab::exportPdfDialog);
+    sheetMenu_ = new QMenu(this);
+    sheetMenu_->setObjectName("menu.editor.setupSheet");
+    sheetPreviewAction_ = sheetMenu_->addAction(QString(), this, &EditorTab::previewSetupSheet);
+    sheetPdfAction_ = sheetMenu_->addAction(QString(), this, &EditorTab::exportSetupSheetDialog);
     fileMachineMenu_ = new QMenu(this);
     fileMachineMenu_->setObjectName("menu.editor.fileMachine");
     connect(fileMachineMenu_, &QMenu::aboutToShow, this, &EditorTab::fillFileMachineMenu);
@@ -77,6 +87,7 @@ void EditorTab::createTools() {
 
     editorMenu_->addMenu(refactorMenu_);
     editorMenu_->addMenu(listingMenu_);
+    editorMenu_->addMenu(sheetMenu_);
     editorMenu_->addMenu(fileMachineMenu_);
     editorMenu_->addAction(openDbAction_);
     connect(tabs_, &QTabWidget::currentChanged, this, &EditorTab::retranslateTools);
@@ -93,6 +104,11 @@ void EditorTab::retranslateTools() {
     listingAction_->setText(tr("Listing"));
     printAction_->setText(tr("Print…"));
     pdfAction_->setText(tr("Export PDF…"));
+    sheetMenu_->setTitle(tr("Setup sheet"));
+    sheetPreviewAction_->setText(tr("Print preview…"));
+    sheetPreviewAction_->setToolTip(tr("The setup sheet of this file on its machine: the blank, the tools with their "
+                                       "offsets, the programs with their cycle times, the R-parameters to preset"));
+    sheetPdfAction_->setText(tr("Export PDF…"));
     fileMachineMenu_->setTitle(tr("Machine of this file"));
     const int i = tabs_ ? tabs_->currentIndex() : -1;
     const QString m = i >= 0 ? checkedMachineName(i) : QString();
@@ -373,6 +389,86 @@ void EditorTab::printDialog() {
                            QDateTime::currentDateTime()};
     const int pages = printListing(ed->text(), ed->diagnostics(), info, printer);
     emit statusMessage(pages > 0 ? tr("Printed %1 pages").arg(pages) : tr("The listing could not be printed"));
+}
+
+// --- The setup sheet --------------------------------------------------------------
+
+bool EditorTab::setupSheet(proveout::SetupSheet& sheet, QString& why) {
+    ProgramEditor* ed = currentEditor();
+    if (!ed) {
+        why = tr("Open a program file in the editor: its setup sheet is made on the machine it is checked for.");
+        return false;
+    }
+    ed->validateNow();
+    if (!ed->machine()) {
+        why = tr("The file is checked for no machine: choose one (Editor menu) for its setup sheet.");
+        return false;
+    }
+    if (program::hasErrors(ed->diagnostics())) {
+        why = tr("The file has errors (Problems): its setup sheet is made once they are fixed.");
+        return false;
+    }
+    const int i = tabs_->currentIndex();
+    const QString name = pathOf(i).isEmpty() ? documentName(i) : QFileInfo(pathOf(i)).fileName();
+    QGuiApplication::setOverrideCursor(Qt::WaitCursor);
+    try {
+        sheet = proveout::setupSheet(*ed->machine(), ed->store(), ed->text().toStdString(), name.toStdString());
+    } catch (const std::exception& e) {
+        QGuiApplication::restoreOverrideCursor();
+        why = tr("The setup sheet cannot be made: %1").arg(coreErrorText(e));
+        return false;
+    }
+    QGuiApplication::restoreOverrideCursor();
+    return true;
+}
+
+QString EditorTab::exportSetupSheet(const QString& path) {
+    proveout::SetupSheet sheet;
+    QString why;
+    if (!setupSheet(sheet, why)) {
+        emit statusMessage(why);
+        return why;
+    }
+    const QString error = writeSetupSheetPdf(sheet, currentLanguage() == QLatin1String("ru"), path);
+    emit statusMessage(error.isEmpty() ? tr("Setup sheet written to %1").arg(path)
+                                       : tr("Cannot write %1: %2").arg(path, error));
+    return error;
+}
+
+void EditorTab::exportSetupSheetDialog() {
+    const int i = tabs_->currentIndex();
+    if (i < 0)
+        return;
+    QString suggestion = pathOf(i);
+    if (!suggestion.isEmpty())
+        suggestion = QFileInfo(suggestion).path() + "/" + QFileInfo(suggestion).completeBaseName() + "-setup.pdf";
+    const QString p =
+        QFileDialog::getSaveFileName(this, tr("Export the setup sheet"), suggestion, tr("PDF (*.pdf)"));
+    if (!p.isEmpty())
+        exportSetupSheet(p);
+}
+
+void EditorTab::previewSetupSheet() {
+    proveout::SetupSheet sheet;
+    QString why;
+    if (!setupSheet(sheet, why)) {
+        emit statusMessage(why);
+        QMessageBox::information(this, tr("Setup sheet"), why);
+        return;
+    }
+    const bool russian = currentLanguage() == QLatin1String("ru");
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setPageSize(QPageSize(QPageSize::A4));
+    printer.setPageMargins(QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter);
+    printer.setDocName(tr("Setup sheet") + QStringLiteral(": ") + QString::fromStdString(sheet.file));
+    QPrintPreviewDialog dialog(&printer, this);
+    dialog.setObjectName("dialog.setupSheet");
+    dialog.setWindowTitle(tr("Setup sheet: %1").arg(QString::fromStdString(sheet.file)));
+    if (const QScreen* screen = window()->screen()) // the page large enough to read
+        dialog.resize(screen->availableGeometry().size() * 0.85);
+    connect(&dialog, &QPrintPreviewDialog::paintRequested, this,
+            [&sheet, russian](QPrinter* p) { printSetupSheet(sheet, russian, *p); });
+    dialog.exec();
 }
 
 // --- Database machines ---------------------------------------------------------------
