@@ -11,6 +11,7 @@
 #include "engine/self_test.h"
 #include "machine/run.h"
 #include "machine/trace.h"
+#include "engine/preview_run.h"
 #include "plc/description.h"
 #include "profile/builtin.h"
 #include "profile/validate.h"
@@ -23,6 +24,7 @@
 #include <cinttypes>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -128,12 +130,187 @@ void printPlain(const engine::RunResult& r, Lang lang) {
     std::printf("R0..R149  %s\n", user.empty() ? " all 0" : user.c_str());
 }
 
+// --from: "N", "N40", "L2:N40", "L2:40" -> (program or 0 for the main program, N).
+bool parseFromSpec(const std::string& spec, int& program, int& n) {
+    std::string s = spec;
+    program = 0;
+    const std::size_t colon = s.find(':');
+    if (colon != std::string::npos) {
+        std::string l = s.substr(0, colon);
+        if (!l.empty() && (l[0] == 'L' || l[0] == 'l'))
+            l.erase(0, 1);
+        const auto v = parseInt(l);
+        if (!v || *v < 1 || *v > 99)
+            return false;
+        program = static_cast<int>(*v);
+        s = s.substr(colon + 1);
+    }
+    if (!s.empty() && (s[0] == 'N' || s[0] == 'n'))
+        s.erase(0, 1);
+    const auto v = parseInt(s);
+    if (!v || *v < 0 || *v > 9999)
+        return false;
+    n = static_cast<int>(*v);
+    return true;
+}
+
+std::string modalText(const engine::ModalState& m, const engine::StartPoint& p) {
+    std::string t = m.rapid ? "G00" : "G01";
+    t += " G" + std::to_string(m.components);
+    t += m.noOverrideAxis < 0 ? " G55" : m.noOverrideAxis == 0 ? " G156" : " G256";
+    t += m.incremental ? " G91" : " G90";
+    const char* fn[2] = {" FX", " FZ"};
+    for (int a = 0; a < 2; ++a) {
+        const std::int64_t f = m.feed[static_cast<std::size_t>(a)];
+        if (f >= 0)
+            t += fn[a] + units::formatDisc(f, p.axes[static_cast<std::size_t>(a)].scale);
+    }
+    return t;
+}
+
+std::string frameName(int program, int n, int line) {
+    std::string t = "L" + std::to_string(program);
+    if (n > 0)
+        t += " N" + std::to_string(n);
+    if (line > 0)
+        t += " (line " + std::to_string(line) + ")";
+    return t;
+}
+
+Json startPointJson(const engine::StartPoint& p, const profile::MachineProfile& prof) {
+    Json j;
+    j["program"] = p.program;
+    j["n"] = p.frameNumber > 0 ? Json(p.frameNumber) : Json();
+    j["line"] = p.line;
+    j["pass"] = p.pass;
+    j["frames_before"] = static_cast<long long>(p.framesBefore);
+    Json stack = Json::array();
+    for (const engine::StartLevel& l : p.callers) {
+        Json c;
+        c["program"] = l.program;
+        c["return_index"] = l.returnIndex;
+        stack.push_back(std::move(c));
+    }
+    j["call_stack"] = std::move(stack);
+    Json modal;
+    modal["motion"] = p.modal.rapid ? "G00" : "G01";
+    modal["components"] = "G" + std::to_string(p.modal.components);
+    modal["override"] = p.modal.noOverrideAxis < 0 ? "G55" : p.modal.noOverrideAxis == 0 ? "G156" : "G256";
+    modal["distance"] = p.modal.incremental ? "G91" : "G90";
+    const char* axisNames[2] = {"X", "Z"};
+    Json feeds;
+    for (int a = 0; a < 2; ++a) {
+        const std::int64_t f = p.modal.feed[static_cast<std::size_t>(a)];
+        feeds[axisNames[a]] =
+            f < 0 ? Json() : Json(units::discToMm(f, p.axes[static_cast<std::size_t>(a)].scale));
+    }
+    modal["feed_mm_min"] = std::move(feeds);
+    j["modal"] = std::move(modal);
+    Json comps = Json::object();
+    for (int i = 0; i < 8; ++i)
+        comps[std::to_string(224 + i)] = static_cast<long long>(p.components[static_cast<std::size_t>(i)]);
+    j["components"] = std::move(comps);
+    Json r = Json::object();
+    for (const auto& [n, v] : p.r)
+        r[std::to_string(n)] = static_cast<long long>(v);
+    j["r"] = std::move(r);
+    j["message"] = p.messageNumber > 0 ? Json(p.messageNumber) : Json();
+    Json m = Json::array();
+    for (int code : p.mFunctions)
+        m.push_back(code);
+    j["m_functions"] = std::move(m);
+    Json at;
+    for (int a = 0; a < 2; ++a) {
+        const engine::StartAxis& ax = p.axes[static_cast<std::size_t>(a)];
+        if (!ax.present)
+            continue;
+        Json c;
+        c["current"] = units::discToMm(ax.currentDisc, ax.scale);
+        c["machine"] = units::discToMm(ax.machineDisc, ax.scale);
+        at[axisNames[a]] = std::move(c);
+    }
+    j["at"] = std::move(at);
+    // The safe path, machine system: X to its reference point, Z, X.
+    Json path = Json::array();
+    const auto leg = [&](int a, std::int64_t disc) {
+        const engine::StartAxis& ax = p.axes[static_cast<std::size_t>(a)];
+        if (!ax.present)
+            return;
+        Json l;
+        l["axis"] = axisNames[a];
+        l["machine"] = units::discToMm(disc, ax.scale);
+        path.push_back(std::move(l));
+    };
+    leg(0, prof.c[45]);
+    leg(1, p.axes[1].machineDisc);
+    leg(0, p.axes[0].machineDisc);
+    j["approach"] = std::move(path);
+    Json unc = Json::array();
+    for (const engine::StartPoint::Uncertain& u : p.uncertain) {
+        Json x;
+        x["program"] = u.program;
+        x["line"] = u.line;
+        x["n"] = u.n > 0 ? Json(u.n) : Json();
+        x["axis"] = axisNames[u.axis];
+        unc.push_back(std::move(x));
+    }
+    j["uncertain"] = std::move(unc);
+    return j;
+}
+
+void printStartPoint(const engine::StartPoint& p, const profile::MachineProfile& prof) {
+    std::printf("start      before %s, pass %d (%lld frames before it)\n",
+                frameName(p.program, p.frameNumber, p.line).c_str(), p.pass,
+                static_cast<long long>(p.framesBefore));
+    if (!p.callers.empty()) {
+        std::printf("call stack L%d", p.mainProgram);
+        for (std::size_t i = 1; i < p.callers.size(); ++i)
+            std::printf(" > L%d", p.callers[i].program);
+        std::printf(" > L%d\n", p.program);
+    }
+    std::printf("modal      %s\n", modalText(p.modal, p).c_str());
+    std::printf("R224..R231");
+    for (int i = 0; i < 8; ++i)
+        std::printf(" %d", p.components[static_cast<std::size_t>(i)]);
+    std::printf("\n");
+    std::string rs;
+    for (const auto& [n, v] : p.r)
+        rs += " R" + std::to_string(n) + "=" + std::to_string(v);
+    std::printf("R set     %s\n", rs.empty() ? " none" : rs.c_str());
+    if (p.messageNumber > 0)
+        std::printf("message    #%d\n", p.messageNumber);
+    std::string ms;
+    for (int m : p.mFunctions)
+        ms += " M" + std::to_string(m);
+    std::printf("M again   %s\n", ms.empty() ? " none" : ms.c_str());
+    const char* names[2] = {"X", "Z"};
+    for (int a = 0; a < 2; ++a) {
+        const engine::StartAxis& ax = p.axes[static_cast<std::size_t>(a)];
+        if (ax.present)
+            std::printf("start %s    current %12s   machine %12s\n", names[a],
+                        units::formatDisc(ax.currentDisc, ax.scale).c_str(),
+                        units::formatDisc(ax.machineDisc, ax.scale).c_str());
+    }
+    std::printf("approach  ");
+    if (p.axes[0].present)
+        std::printf(" X %s (reference point),", units::formatDisc(prof.c[45], p.axes[0].scale).c_str());
+    if (p.axes[1].present)
+        std::printf(" Z %s,", units::formatDisc(p.axes[1].machineDisc, p.axes[1].scale).c_str());
+    if (p.axes[0].present)
+        std::printf(" X %s", units::formatDisc(p.axes[0].machineDisc, p.axes[0].scale).c_str());
+    std::printf(" (machine system, rapid)\n");
+    for (const engine::StartPoint::Uncertain& u : p.uncertain)
+        std::printf("warning    %s moves %s until a signal or by handwheel: the start point takes its "
+                    "programmed end\n",
+                    frameName(u.program, u.n, u.line).c_str(), names[u.axis]);
+}
+
 } // namespace
 
 int runRun(std::span<const std::string> argv) {
     const Args args(argv, {"--json", "--no-home", "--no-check"},
                     {"--profile", "--db", "--program", "--param", "--r", "--override", "--max-seconds",
-                     "--number", "--lang", "--m0-wait", "--trace"});
+                     "--number", "--lang", "--m0-wait", "--trace", "--from", "--pass"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1)
@@ -216,6 +393,63 @@ int runRun(std::span<const std::string> argv) {
         number = parsed.store.firstWritten();
     }
 
+    // --from N: the state before the frame, rebuilt by the preview
+    // (engine/preview_run.h findStartPoint), shown before the machine moves.
+    std::optional<Json> fromJson;
+    if (const auto from = args.value("--from")) {
+        int fromProgram = 0, fromN = 0;
+        if (!parseFromSpec(*from, fromProgram, fromN))
+            return usageError("--from needs a frame number N (or L<n>:N<k> for a subprogram's), not '" +
+                              *from + "'");
+        int pass = 1;
+        if (const auto ps = args.value("--pass")) {
+            const auto v = parseInt(*ps);
+            if (!v || *v < 1 || *v > 1000000)
+                return usageError("--pass needs a count >= 1, not '" + *ps + "'");
+            pass = static_cast<int>(*v);
+        }
+        if (fromProgram == 0)
+            fromProgram = number;
+        bool intact = true;
+        program::ProgramStore all = engine::loadStore(prof, intact);
+        for (const program::Program& p : parsed.store.programs())
+            all.insert(p);
+        const program::Program* target = all.find(fromProgram);
+        if (!target)
+            return usageError("--from " + *from + ": there is no program L" + std::to_string(fromProgram));
+        const int index = target->indexOfN(fromN);
+        if (index < 0)
+            return usageError("--from " + *from + ": L" + std::to_string(fromProgram) + " has no frame N" +
+                              std::to_string(fromN));
+        engine::PreviewOptions po;
+        po.rPresets = options.rPresets;
+        po.fromReferencePoint = options.home;
+        const engine::StartSearch found =
+            engine::findStartPoint(prof, parsed.store, number, {fromProgram, index, pass}, po);
+        if (found.outcome == engine::StartSearch::Outcome::NotReached) {
+            std::fprintf(stderr,
+                         "k528: --from %s: the program never reaches L%d N%d%s (its preview ended: %s)\n",
+                         from->c_str(), fromProgram, fromN,
+                         pass > 1 ? (" for the " + std::to_string(pass) + ". time").c_str() : "",
+                         std::string(engine::previewStatusName(found.preview.status)).c_str());
+            return ExitInputErrors;
+        }
+        if (found.outcome == engine::StartSearch::Outcome::Oscillating) {
+            std::fprintf(stderr,
+                         "k528: --from %s: L%d N%d runs while %s oscillates (Gx81 up to its Gx80); "
+                         "start from the frame of the Gx81 or after the Gx80\n",
+                         from->c_str(), fromProgram, fromN, found.oscillatingAxis == 0 ? "X" : "Z");
+            return ExitInputErrors;
+        }
+        options.from = found.point;
+        if (asJson)
+            fromJson = startPointJson(found.point, prof);
+        else
+            printStartPoint(found.point, prof);
+    } else if (args.value("--pass")) {
+        return usageError("--pass goes with --from");
+    }
+
     // --trace FILE.csv: one row per tick (machine/trace.h, docs/engine.md),
     // written beside the file and renamed over it when whole (output_file.h).
     OutputStream traceOut;
@@ -246,8 +480,12 @@ int runRun(std::span<const std::string> argv) {
     } catch (const std::invalid_argument& e) {
         return usageError(e.what());
     }
-    if (asJson)
-        std::printf("%s\n", json::dump(resultJson(result)).c_str());
+    if (asJson) {
+        Json root = resultJson(result);
+        if (fromJson)
+            root["from"] = std::move(*fromJson);
+        std::printf("%s\n", json::dump(root).c_str());
+    }
     else
         printPlain(result, lang);
     return result.status == engine::RunStatus::Completed ? ExitOk : ExitInputErrors;

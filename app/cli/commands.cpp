@@ -51,7 +51,8 @@ std::span<const Command> commands() {
          kDbDetails, runDb},
         {"run",
          "run [--json] [--profile NAME|PATH] [--db PATH] [--program N] [--param N=V]... [--r N=V]... [--no-home]\n"
-         "           [--no-check] [--override PCT] [--max-seconds S] [--m0-wait S] [--number N] [--lang ru|en] FILE",
+         "           [--no-check] [--from N|L<n>:N<k> [--pass K]] [--override PCT] [--max-seconds S] [--m0-wait S]\n"
+         "           [--number N] [--lang ru|en] FILE",
          "Run a program on the simulated machine, headless, and report the end state.",
          "Options:\n"
          "  --json               print the end state as JSON (cli.md)\n"
@@ -65,6 +66,12 @@ std::span<const Command> commands() {
          "  --no-home            skip the reference-point cycles (a program then needs АВТ.БЕЗ ПБТ)\n"
          "  --no-check           run the file as the controller holds it, without the rules of\n"
          "                       `k528 check`: a refused frame raises its alarm when reached\n"
+         "  --from N             start before frame N of the program, with its state rebuilt by the\n"
+         "                       preview (modal G, feeds, R the program wrote, R224..R231, the call\n"
+         "                       stack, the M functions handed again); printed (JSON: \"from\")\n"
+         "                       before the axes go there: X to its reference point, Z, then X.\n"
+         "                       L<n>:N<k> names frame N<k> of subprogram L<n> (also L2:40)\n"
+         "  --pass K             with --from: the K-th time the frame is reached (default 1)\n"
          "  --override PCT       feed override: 0 1 2 5 10 20 35 50 75 90 100 (default 100)\n"
          "  --max-seconds S      simulated-time limit of the program (default 3600): status timeout\n"
          "  --m0-wait S          seconds an operator waits at M00 before «Пуск» (default 0)\n"

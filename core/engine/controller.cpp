@@ -502,6 +502,12 @@ void Controller::startProgram(int number, int cycle) {
             return;
         }
     }
+    if (cycle == 0 && startPoint_ && startPoint_->mainProgram == number) {
+        const StartPoint point = std::move(*startPoint_);
+        startPoint_.reset();
+        interp_.startAt(point, c_.mode);
+        return;
+    }
     interp_.start(number, cycle, c_.mode);
 }
 

@@ -19,11 +19,13 @@
 
 #include "engine/core.h"
 #include "engine/interpreter.h"
+#include "engine/start_point.h"
 #include "engine/views.h"
 #include "util/same_bytes.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -124,6 +126,10 @@ public:
         previewSink_ = sink;
         chooseOutput();
     }
+    // The preview holds the program before a frame (start from a frame).
+    void setPreviewStopBefore(const FrameTarget& t) {
+        previewOutput_.stopBefore(t.program, t.frameIndex, t.pass);
+    }
     // The debugger's gate (engine/debug_gate.h): breakpoints, single frame,
     // run to a frame; null detaches it. The gate outlives its attachment.
     void setDebugGate(DebugGate* gate) {
@@ -141,6 +147,18 @@ public:
     std::int64_t shortcutChecks() const { return shortcutChecks_; }
     std::int64_t shortcutDisagreements() const { return shortcutDisagreements_; }
     const Interpreter& interpreter() const { return interp_; }
+    // Start from a frame (engine/start_point.h): the next «Пуск» of АВТОМАТ
+    // that starts `point`'s main program starts it before the point's frame,
+    // with the state rebuilt and the axes brought there by the safe path;
+    // used once. Empty: programs start from their first frame again.
+    void setStartPoint(std::optional<StartPoint> point) {
+        wake();
+        startPoint_ = std::move(point);
+    }
+    const std::optional<StartPoint>& startPoint() const { return startPoint_; }
+    // The state before the frame the program is held at (the preview
+    // stopped before it, or the debugger): program, stack, modal state, axes.
+    void captureStartPoint(StartPoint& point) const { interp_.capture(point); }
     bool oscillating(AxisId a) const {
         return c_.osc[static_cast<std::size_t>(axisIndex(a))].active();
     }
@@ -212,6 +230,7 @@ private:
     DebugOutput debugOutput_{c_};
     PreviewSink* previewSink_ = nullptr;
     DebugGate* debugGate_ = nullptr;
+    std::optional<StartPoint> startPoint_;
     std::array<axis::Fault, kAxisCount> lastFault_{};
     std::array<std::int64_t, 2> wheelDelta_{}; // handwheel pulses this tick
     std::array<std::int64_t, 2> wheelCount_{};

@@ -2,6 +2,7 @@
 
 #include "engine/coordinates.h"
 #include "engine/program_output.h"
+#include "engine/start_point.h"
 
 #include "program/refusals.h"
 
@@ -100,6 +101,7 @@ void Interpreter::start(int number, int cycle, Mode mode) {
     modal_ = ModalState{};
     iso_ = {};
     line_ = 0;
+    oscOn_ = {};
     c_.programExclusion = 0;
     c_.cycle = cycle;
     c_.programMode = mode;
@@ -125,6 +127,172 @@ void Interpreter::start(int number, int cycle, Mode mode) {
             line_ = dup;
             error(54);
         }
+}
+
+bool replayedMFunction(int code) {
+    using namespace program::mfunc;
+    return code != kStop && code != kEnd && code != kSubprogramEnd && code != kEndRewind;
+}
+
+void Interpreter::capture(StartPoint& p) const {
+    p.mainProgram = mainProgram_;
+    p.callers.clear();
+    for (int i = 0; i < depth_; ++i) {
+        const Level& l = stack_[static_cast<std::size_t>(i)];
+        p.callers.push_back({l.program ? l.program->number : 0, l.returnIndex});
+    }
+    p.program = program();
+    p.frameIndex = index_;
+    p.frameNumber = frameNumber();
+    p.line = line();
+    p.modal = modal_;
+    p.messageNumber = c_.messageNumber;
+    p.oscillatingAxis = oscOn_[0] ? 0 : oscOn_[1] ? 1 : -1;
+    for (int i = 0; i < 8; ++i)
+        p.components[static_cast<std::size_t>(i)] = c_.r[r::DressingSumX + i];
+    for (int a = 0; a < kAxisCount; ++a) {
+        const AxisUnit& u = c_.axes[static_cast<std::size_t>(a)];
+        StartAxis& s = p.axes[static_cast<std::size_t>(a)];
+        s.present = u.present;
+        s.scale = u.k.scale;
+        s.machineDisc = u.toDisc(u.servo.target());
+        s.currentDisc = currentFromMachine(s.machineDisc, c_.r, a, c_.programExclusion);
+        s.programmedDisc = u.programmedDisc;
+    }
+}
+
+void Interpreter::startAt(const StartPoint& p, Mode mode) {
+    start(p.mainProgram, 0, mode);
+    if (!executing(c_.state) || !prog_)
+        return;
+    // The call stack: every level's program must be the one the preview had.
+    for (std::size_t i = 0; i < p.callers.size() && i < stack_.size(); ++i) {
+        const program::Program* caller = c_.store.find(p.callers[i].program);
+        if (!caller) {
+            error(45);
+            return;
+        }
+        stack_[i] = Level{caller, p.callers[i].returnIndex};
+    }
+    const program::Program* target = c_.store.find(p.program);
+    if (!target || p.frameIndex < 0 || p.frameIndex >= static_cast<int>(target->frames.size())) {
+        error(45);
+        return;
+    }
+    depth_ = static_cast<int>(p.callers.size());
+    prog_ = target;
+    index_ = p.frameIndex;
+    line_ = target->frames[static_cast<std::size_t>(index_)].span.line;
+    for (const auto& [n, v] : p.r)
+        if (rValid(n) && !rReadOnly(n) && n != r::PlcBit && n != r::NestingLevel)
+            c_.r.set(n, v);
+    modal_ = p.modal;
+    c_.programExclusion = exclusionOfG(modal_.components);
+    for (AxisUnit& u : c_.axes)
+        u.noOverride = modal_.noOverrideAxis == u.index;
+    c_.messageNumber = p.messageNumber;
+    replayM_.clear();
+    for (int m : p.mFunctions)
+        if (replayedMFunction(m))
+            replayM_.push_back(m);
+    replayAt_ = 0;
+    replayWait_ = false;
+    // The safe path: X away from the part to its reference point, Z to the
+    // start point, X to it (an axis the machine lacks is left out).
+    legCount_ = 0;
+    leg_ = 0;
+    legMoving_ = false;
+    const auto leg = [&](int a, std::int64_t disc) {
+        if (c_.axes[static_cast<std::size_t>(a)].present)
+            legs_[static_cast<std::size_t>(legCount_++)] = {a, disc};
+    };
+    leg(0, c_.axes[0].k.homeValueDisc);
+    leg(1, p.axes[1].machineDisc);
+    leg(0, p.axes[0].machineDisc);
+    for (int a = 0; a < kAxisCount; ++a)
+        startProgrammed_[static_cast<std::size_t>(a)] = p.axes[static_cast<std::size_t>(a)].programmedDisc;
+    updateNumbers();
+    step_ = Step::Approach;
+}
+
+bool Interpreter::approach() {
+    // 1. The M functions, handed again in order (up to three at a time).
+    if (replayWait_) {
+        if (!c_.mhs.tick(c_.words, c_.nowMs)) {
+            c_.state = ProgramState::WaitingM;
+            return false;
+        }
+        c_.state = ProgramState::Running;
+        replayWait_ = false;
+    }
+    while (replayAt_ < replayM_.size()) {
+        const std::size_t n = std::min<std::size_t>(3, replayM_.size() - replayAt_);
+        const std::span<const int> codes(replayM_.data() + replayAt_, n);
+        replayAt_ += n;
+        if (c_.out->mFunctions(frameRef(), codes)) {
+            replayWait_ = true;
+            if (!c_.mhs.tick(c_.words, c_.nowMs)) {
+                c_.state = ProgramState::WaitingM;
+                return false;
+            }
+            c_.state = ProgramState::Running;
+            replayWait_ = false;
+        }
+    }
+    // 2. The legs of the safe path, one axis at a time, at the rapid speed.
+    if (legMoving_) {
+        AxisUnit& u = c_.axes[static_cast<std::size_t>(legs_[static_cast<std::size_t>(leg_)].first)];
+        if (u.owner == MotionOwner::Program &&
+            !(u.servo.inPosition() && !u.servo.moving() && u.servo.target() == u.moveTarget))
+            return false;
+        u.owner = MotionOwner::None;
+        legMoving_ = false;
+        ++leg_;
+    }
+    while (leg_ < legCount_) {
+        const auto [a, disc] = legs_[static_cast<std::size_t>(leg_)];
+        AxisUnit& u = c_.axes[static_cast<std::size_t>(a)];
+        const double t = u.toInternal(disc);
+        if (t == u.servo.target()) {
+            ++leg_;
+            continue;
+        }
+        if (u.softLimitsActive() && (disc < u.k.softMinusDisc || disc > u.k.softPlusDisc)) {
+            error(forAxis(12, a));
+            return false;
+        }
+        const double from = u.servo.target();
+        const int dir = t > from ? 1 : -1;
+        if (u.directionLocked(dir)) {
+            error(forAxis(dir > 0 ? 11 : 10, a));
+            return false;
+        }
+        const double speed = u.k.speedParamToInternalPerMs(u.k.feedAutoMax);
+        if (speed <= 0) {
+            error(forAxis(33, a));
+            return false;
+        }
+        c_.out->motionBegins();
+        u.moveTarget = t;
+        u.eraseSignal = 0;
+        u.erased = false;
+        if (!c_.out->move(u, from, t, speed, -1, false)) {
+            const int f = axis::faultMessage(u.servo.fault(), u.id);
+            error(f ? f : forAxis(1, a));
+            return false;
+        }
+        u.owner = MotionOwner::Program;
+        u.moveSpeed = speed;
+        u.rapid = true;
+        c_.out->motionEnds(frameRef(), PreviewKind::Rapid);
+        legMoving_ = true;
+        return false;
+    }
+    // 3. The frame, with the programmed positions the preview had.
+    for (int a = 0; a < kAxisCount; ++a)
+        c_.axes[static_cast<std::size_t>(a)].programmedDisc = startProgrammed_[static_cast<std::size_t>(a)];
+    step_ = Step::Fetch;
+    return true;
 }
 
 void Interpreter::resume() {
@@ -323,6 +491,7 @@ void Interpreter::beginIso(const program::Frame& f) {
             break;
         case GFunction::OscillationStop:
             oscStop_[static_cast<std::size_t>(ax)] = true;
+            oscOn_[static_cast<std::size_t>(ax)] = false;
             break;
         case GFunction::OscillationStart:
             oscStart_[static_cast<std::size_t>(ax)] = true;
@@ -553,8 +722,11 @@ void Interpreter::actions() {
     c_.out->motionBegins();
     // Gx81
     for (int a = 0; a < kAxisCount; ++a)
-        if (oscStart_[static_cast<std::size_t>(a)] && !startOscillation(a, a == 0 ? iso.x : iso.z))
-            return;
+        if (oscStart_[static_cast<std::size_t>(a)]) {
+            if (!startOscillation(a, a == 0 ? iso.x : iso.z))
+                return;
+            oscOn_[static_cast<std::size_t>(a)] = true;
+        }
     // G04
     if (dwell_ && dwellLeftMs_ > 0) {
         if (c_.out->dwell(frameRef(), dwellLeftMs_)) {
@@ -762,6 +934,10 @@ void Interpreter::tick() {
         case Step::Call:
             call();
             if (!executing(c_.state))
+                return;
+            break;
+        case Step::Approach:
+            if (!approach())
                 return;
             break;
         }

@@ -31,6 +31,8 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace k528::engine {
 
@@ -45,7 +47,10 @@ struct ModalState {
     bool incremental = false; // G91 / G90
     std::array<std::int64_t, kAxisCount> feed{-1,
                                               -1}; // FX/FZ, display discretes per minute; -1 none
+    friend bool operator==(const ModalState&, const ModalState&) = default;
 };
+
+struct StartPoint;
 
 class Interpreter {
 public:
@@ -54,6 +59,12 @@ public:
     // Starts program `number` from its first frame (the caller checked that
     // it exists). `cycle`: manual cycle 1..8, 0 for a program of АВТОМАТ.
     void start(int number, int cycle, Mode mode);
+    // Starts the main program of `point` before its frame, with the state
+    // rebuilt (engine/start_point.h): its R-parameters, the M functions
+    // handed again, the safe path to the start point, then the frame.
+    void startAt(const StartPoint& point, Mode mode);
+    // The state before the frame the interpreter stands at (held before it).
+    void capture(StartPoint& point) const;
     // «Пуск» after M00 or «Стоп»/mode change.
     void resume();
     // Power-on / «Сброс»: modal defaults.
@@ -79,7 +90,7 @@ public:
     int callerReturnIndex(int i) const { return stack_[static_cast<std::size_t>(i)].returnIndex; }
 
 private:
-    enum class Step : std::uint8_t { Fetch, Handshake, OscStop, Actions, Wait, Call };
+    enum class Step : std::uint8_t { Fetch, Handshake, OscStop, Actions, Wait, Call, Approach };
     struct Level {
         const program::Program* program = nullptr;
         int returnIndex = 0;
@@ -105,6 +116,7 @@ private:
     bool startOscillation(int axis, const std::optional<program::Value>& stroke);
     OscillationPresets presets(int axis) const;
     void updateNumbers();
+    bool approach(); // Step::Approach: false while it waits
     // The frame executing, for the output (engine/program_output.h).
     FrameRef frameRef() const { return {program(), line_, frameNumber()}; }
     // The programmed feed of axis a for the output: -1 under G00 or when none was set.
@@ -138,6 +150,18 @@ private:
     std::array<bool, kAxisCount> wheel_{};    // Gx10
     std::array<int, kAxisCount> erase_{};     // Gx36..39: signal 1..4
     bool dwell_ = false;
+
+    // A start from a frame (startAt): the M functions handed again, then
+    // the legs of the safe path (axis, machine target), then the frame.
+    std::vector<int> replayM_;
+    std::size_t replayAt_ = 0;
+    bool replayWait_ = false;
+    std::array<std::pair<int, std::int64_t>, 3> legs_{};
+    int legCount_ = 0, leg_ = 0;
+    bool legMoving_ = false;
+    std::array<std::int64_t, kAxisCount> startProgrammed_{};
+    // Gx81 given and its Gx80 not yet (the preview's axes do not oscillate).
+    std::array<bool, kAxisCount> oscOn_{};
 };
 
 } // namespace k528::engine

@@ -3,6 +3,8 @@
 #include "engine/controller.h"
 #include "engine/ideal_machine.h"
 
+#include <algorithm>
+
 namespace k528::engine {
 
 std::string_view previewStatusName(PreviewStatus s) {
@@ -62,6 +64,13 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
         }
     };
     snapshot(true);
+    std::array<std::int32_t, kRCount> rAtStart{};
+    {
+        const std::span<const std::int32_t> r = ctl.r().values();
+        std::copy(r.begin(), r.end(), rAtStart.begin());
+    }
+    if (options.stopBefore)
+        ctl.setPreviewStopBefore(*options.stopBefore);
     if (options.onStart)
         options.onStart(res);
     const auto finish = [&](PreviewStatus s) {
@@ -95,6 +104,12 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
         }
         machine.tick();
         const ProgramState s = ctl.state();
+        if (s == ProgramState::Interrupted && options.stopBefore) {
+            res.stopped = true;
+            if (options.onStopped)
+                options.onStopped(ctl, rAtStart);
+            return finish(PreviewStatus::Completed);
+        }
         if (s == ProgramState::Ended)
             return finish(PreviewStatus::Completed);
         if (s == ProgramState::Alarm || (ctl.alarmRegistry().anyLatched() && !programActive(s)))
@@ -103,6 +118,66 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
             return finish(PreviewStatus::Limit);
     }
     return finish(PreviewStatus::Limit);
+}
+
+namespace {
+
+// What a start needs of the frames before it: the M functions handed to
+// the PLC and the last motion of each axis.
+class StartSink final : public PreviewSink {
+public:
+    void motion(const PreviewFrame& f) override {
+        for (int a = 0; a < kAxisCount; ++a)
+            if (f.axes[static_cast<std::size_t>(a)].moves) {
+                const bool unknown = f.kind == PreviewKind::Signal || f.kind == PreviewKind::Handwheel;
+                last[static_cast<std::size_t>(a)] =
+                    unknown ? std::optional<StartPoint::Uncertain>({f.program, f.line, f.n, a})
+                            : std::nullopt;
+            }
+    }
+    void dwell(const PreviewDwell&) override {}
+    void mFunctions(const PreviewMFunctions& m) override {
+        for (int i = 0; i < m.count; ++i)
+            codes.push_back(m.codes[static_cast<std::size_t>(i)]);
+    }
+    std::vector<int> codes;
+    std::array<std::optional<StartPoint::Uncertain>, kAxisCount> last;
+};
+
+} // namespace
+
+StartSearch findStartPoint(const profile::MachineProfile& profile,
+                           const program::ProgramStore& programs, int number,
+                           const FrameTarget& target, const PreviewOptions& optionsIn) {
+    StartSearch out;
+    StartSink sink;
+    PreviewOptions options = optionsIn;
+    options.stopBefore = target;
+    options.onStopped = [&](const Controller& ctl, std::span<const std::int32_t> rAtStart) {
+        StartPoint& p = out.point;
+        ctl.captureStartPoint(p);
+        p.pass = target.pass;
+        p.framesBefore = ctl.framesExecuted();
+        const std::span<const std::int32_t> now = ctl.r().values();
+        for (int n = 0; n < kRCount; ++n) {
+            const std::size_t i = static_cast<std::size_t>(n);
+            if (now[i] != rAtStart[i] && !rReadOnly(n) && n != r::PlcBit && n != r::NestingLevel)
+                p.r.emplace_back(n, now[i]);
+        }
+        for (int m : sink.codes)
+            if (replayedMFunction(m))
+                p.mFunctions.push_back(m);
+        for (const auto& u : sink.last)
+            if (u)
+                p.uncertain.push_back(*u);
+        out.outcome = StartSearch::Outcome::Found;
+        if (p.oscillatingAxis >= 0) {
+            out.outcome = StartSearch::Outcome::Oscillating;
+            out.oscillatingAxis = p.oscillatingAxis;
+        }
+    };
+    out.preview = runPreview(profile, programs, number, options, sink);
+    return out;
 }
 
 } // namespace k528::engine

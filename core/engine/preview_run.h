@@ -8,6 +8,7 @@
 #pragma once
 
 #include "engine/preview.h"
+#include "engine/start_point.h"
 #include "engine/views.h"
 #include "profile/profile.h"
 #include "program/model.h"
@@ -16,10 +17,13 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
+#include <span>
 #include <vector>
 
 namespace k528::engine {
 
+class Controller;
 struct PreviewResult;
 
 struct PreviewOptions {
@@ -34,6 +38,11 @@ struct PreviewOptions {
     // (progress); false stops the preview (status Cancelled).
     std::function<bool(std::int64_t frames)> keepGoing;
     static constexpr std::int64_t kKeepGoingFrames = 1024;
+    // Stop before this frame (start from a frame, findStartPoint below):
+    // `onStopped` sees the controller held before it and the R-parameters
+    // as they were at «Пуск»; the result's `stopped` is true.
+    std::optional<FrameTarget> stopBefore;
+    std::function<void(const Controller&, std::span<const std::int32_t> rAtStart)> onStopped;
 };
 
 enum class PreviewStatus { Completed, Alarm, Limit, Cancelled };
@@ -52,10 +61,28 @@ struct PreviewResult {
     std::int64_t frames = 0;
     std::array<PreviewAxisStart, 2> axes{};
     int program = 0, line = 0, frameNumber = 0; // where it stopped
+    bool stopped = false; // held before PreviewOptions::stopBefore
 };
 
 PreviewResult runPreview(const profile::MachineProfile& profile,
                          const program::ProgramStore& programs, int number,
                          const PreviewOptions& options, PreviewSink& sink);
+
+// Start from a frame: the state before `target` (program `number` started
+// as `options` say: R presets, from the reference point when the run homes)
+// rebuilt by the preview. Not found: the frame is never reached (the
+// preview ended first, `preview` says how), or it runs while an axis
+// oscillates (Gx81 up to its Gx80): the oscillation's turning points are
+// not part of the rebuilt state, so such a frame is no start frame.
+struct StartSearch {
+    enum class Outcome { Found, NotReached, Oscillating };
+    Outcome outcome = Outcome::NotReached;
+    StartPoint point; // Found (Oscillating: where it stood)
+    PreviewResult preview;
+    int oscillatingAxis = -1; // Oscillating: 0 X, 1 Z
+};
+StartSearch findStartPoint(const profile::MachineProfile& profile,
+                           const program::ProgramStore& programs, int number,
+                           const FrameTarget& target, const PreviewOptions& options);
 
 } // namespace k528::engine

@@ -136,9 +136,22 @@ class PreviewOutput final : public ProgramOutput {
 public:
     explicit PreviewOutput(Core& core) : c_(core) {}
     void setSink(PreviewSink* sink) { sink_ = sink; }
+    // Holds the program before frame `frameIndex` of `program` the `pass`-th
+    // time it is reached (a start from a frame: engine/start_point.h);
+    // frameIndex -1: never.
+    void stopBefore(int program, int frameIndex, int pass) {
+        stopProgram_ = program;
+        stopIndex_ = frameIndex;
+        stopPass_ = pass;
+    }
     void started() override {}
     void resumed() override {}
-    bool holdBefore(int, int, int) override { return false; }
+    bool holdBefore(int program, int frameIndex, int) override {
+        if (frameIndex != stopIndex_ || program != stopProgram_ || --stopPass_ > 0)
+            return false;
+        stopIndex_ = -1;
+        return true;
+    }
     void message(const FrameRef& f, int k) override;
     bool mFunctions(const FrameRef& f, std::span<const int> codes) override;
     void motionBegins() override { frame_ = PreviewFrame{}; }
@@ -155,6 +168,7 @@ private:
     Core& c_;
     PreviewSink* sink_ = nullptr;
     PreviewFrame frame_; // the motion of the frame in progress
+    int stopProgram_ = 0, stopIndex_ = -1, stopPass_ = 0;
 };
 
 } // namespace k528::engine

@@ -69,6 +69,7 @@ void collect(RunMachine& machine, RunResult& res) {
     res.messageNumber = p.messageNumber;
     res.messageText = p.messageText;
     res.mFunctions = machine.mFunctions();
+    res.modal = ctl.modal();
 }
 
 bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t maxMs) {
@@ -236,6 +237,8 @@ RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs,
     machine.setOverrideCode(code >= 0 ? code : kFullOverrideCode);
     ctl.selectMode(Mode::Auto);
     ctl.selectProgram(number);
+    if (options.from)
+        ctl.setStartPoint(options.from);
     machine.pressStart();
     const std::int64_t pressed = ctl.timeMs();
     const std::int64_t m0WaitMs = static_cast<std::int64_t>(std::llround(options.m0WaitS * 1000.0));

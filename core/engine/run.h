@@ -22,6 +22,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ struct RunOptions {
     int overridePercent = 100; // one of the override steps
     double maxSeconds = 3600;  // program time limit, from «Пуск»
     double m0WaitS = 0;        // operator's delay before «Пуск» after M00
+    // Start from a frame (engine/start_point.h; preview_run.h findStartPoint):
+    // «Пуск» starts the program before this frame with its state rebuilt.
+    std::optional<StartPoint> from;
 };
 
 // Blocked: the program never started — the machine did not get ready, a
@@ -80,6 +84,7 @@ struct RunResult {
     int messageNumber = 0;
     std::string messageText;
     std::vector<int> mFunctions; // M codes handed to the PLC, in order
+    ModalState modal;            // the program's modal state at the end
     std::vector<RunBlocker> blockedBy; // status Blocked: why, most direct first
 };
 
