@@ -2266,6 +2266,98 @@ Details: %3</translation>
         <source>the file</source>
         <translation>the file</translation>
     </message>
+    <message>
+        <source>There is no frame at or after line %1.</source>
+        <translation>There is no frame at or after line %1.</translation>
+    </message>
+    <message>
+        <source>L%1 never reaches line %2: nothing to start there.</source>
+        <translation>L%1 never reaches line %2: nothing to start there.</translation>
+    </message>
+    <message>
+        <source>Line %1 runs while %2 oscillates (Gx81 up to its Gx80): start from the frame of the Gx81 or after the Gx80.</source>
+        <translation>Line %1 runs while %2 oscillates (Gx81 up to its Gx80): start from the frame of the Gx81 or after the Gx80.</translation>
+    </message>
+    <message>
+        <source>Start here</source>
+        <translation>Start here</translation>
+    </message>
+    <message>
+        <source>L%1 N%2 (line %3)</source>
+        <translation>L%1 N%2 (line %3)</translation>
+    </message>
+    <message>
+        <source>L%1 (line %2)</source>
+        <translation>L%1 (line %2)</translation>
+    </message>
+    <message>
+        <source>L%1 starts before %2 with the state the preview rebuilt. The axes go there first: X to its reference point, then Z, then X, at the rapid speed.</source>
+        <translation>L%1 starts before %2 with the state the preview rebuilt. The axes go there first: X to its reference point, then Z, then X, at the rapid speed.</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>Modal functions</source>
+        <translation>Modal functions</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Feeds</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>R224..R231 (coordinate components)</source>
+        <translation>R224..R231 (coordinate components)</translation>
+    </message>
+    <message>
+        <source>R-parameters the program set</source>
+        <translation>R-parameters the program set</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>M functions handed to the PLC again</source>
+        <translation>M functions handed to the PLC again</translation>
+    </message>
+    <message>
+        <source>Start point %1</source>
+        <translation>Start point %1</translation>
+    </message>
+    <message>
+        <source>%1 (machine %2)</source>
+        <translation>%1 (machine %2)</translation>
+    </message>
+    <message>
+        <source>Safe path</source>
+        <translation>Safe path</translation>
+    </message>
+    <message>
+        <source>X %1, Z %2, X %3 (machine system)</source>
+        <translation>X %1, Z %2, X %3 (machine system)</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warning</translation>
+    </message>
+    <message>
+        <source>line %1 moves %2 until a signal or by handwheel: the start point takes its programmed end</source>
+        <translation>line %1 moves %2 until a signal or by handwheel: the start point takes its programmed end</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Start the program before the frame at the cursor, with its state rebuilt (modal functions, R-parameters, call stack) and shown first</source>
+        <translation>Start the program before the frame at the cursor, with its state rebuilt (modal functions, R-parameters, call stack) and shown first</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugSession</name>

@@ -2266,6 +2266,98 @@ Details: %3</source>
         <source>the file</source>
         <translation>файл</translation>
     </message>
+    <message>
+        <source>There is no frame at or after line %1.</source>
+        <translation>В строке %1 и после неё нет кадра.</translation>
+    </message>
+    <message>
+        <source>L%1 never reaches line %2: nothing to start there.</source>
+        <translation>L%1 не доходит до строки %2: начать там нечего.</translation>
+    </message>
+    <message>
+        <source>Line %1 runs while %2 oscillates (Gx81 up to its Gx80): start from the frame of the Gx81 or after the Gx80.</source>
+        <translation>Строка %1 выполняется во время осцилляции %2 (от Gx81 до её Gx80): начните с кадра Gx81 или после Gx80.</translation>
+    </message>
+    <message>
+        <source>Start here</source>
+        <translation>Начать отсюда</translation>
+    </message>
+    <message>
+        <source>L%1 N%2 (line %3)</source>
+        <translation>L%1 N%2 (строка %3)</translation>
+    </message>
+    <message>
+        <source>L%1 (line %2)</source>
+        <translation>L%1 (строка %2)</translation>
+    </message>
+    <message>
+        <source>L%1 starts before %2 with the state the preview rebuilt. The axes go there first: X to its reference point, then Z, then X, at the rapid speed.</source>
+        <translation>L%1 начнётся перед %2 с состоянием, восстановленным просмотром. Сначала оси подходят туда: X в базовую точку, затем Z, затем X, на ускоренной подаче.</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <source>Modal functions</source>
+        <translation>Модальные функции</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Подачи</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>R224..R231 (coordinate components)</source>
+        <translation>R224..R231 (составляющие координат)</translation>
+    </message>
+    <message>
+        <source>R-parameters the program set</source>
+        <translation>R-параметры, заданные программой</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Сообщение</translation>
+    </message>
+    <message>
+        <source>M functions handed to the PLC again</source>
+        <translation>M-функции, повторно переданные в ПЛК</translation>
+    </message>
+    <message>
+        <source>Start point %1</source>
+        <translation>Точка начала %1</translation>
+    </message>
+    <message>
+        <source>%1 (machine %2)</source>
+        <translation>%1 (станок %2)</translation>
+    </message>
+    <message>
+        <source>Safe path</source>
+        <translation>Безопасный путь</translation>
+    </message>
+    <message>
+        <source>X %1, Z %2, X %3 (machine system)</source>
+        <translation>X %1, Z %2, X %3 (система станка)</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Предупреждение</translation>
+    </message>
+    <message>
+        <source>line %1 moves %2 until a signal or by handwheel: the start point takes its programmed end</source>
+        <translation>строка %1 перемещает %2 до сигнала или маховиком: точка начала берёт её запрограммированный конец</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Начать</translation>
+    </message>
+    <message>
+        <source>Start the program before the frame at the cursor, with its state rebuilt (modal functions, R-parameters, call stack) and shown first</source>
+        <translation>Запустить программу перед кадром под курсором с восстановленным состоянием (модальные функции, R-параметры, стек вызовов), показав его сначала</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DebugSession</name>

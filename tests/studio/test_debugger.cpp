@@ -14,6 +14,8 @@
 #include "session/simulation_session.h"
 
 #include <QComboBox>
+#include <QDialog>
+#include <QPushButton>
 #include <QLabel>
 #include <QMainWindow>
 #include <QSignalSpy>
@@ -302,6 +304,59 @@ private slots:
         b.session->setFastest(false);
         b.session->setSpeed(2);
         QCOMPARE(s->currentData().toDouble(), 2.0);
+    }
+
+    // Start here: the state before the frame at the cursor rebuilt by the
+    // preview, listed in a dialog before the machine moves; Start runs the
+    // program from there (homing first, the safe path to the start point)
+    // and it ends as the run from the top does; Cancel starts nothing.
+    void startHereRebuildsTheStateAndEndsAsTheFullRun() {
+        Bench full;
+        QVERIFY(full.panel->run());
+        QVERIFY(full.untilHeldOrEnd());
+        QCOMPARE(full.ctl().state(), ProgramState::Ended);
+
+        Bench b;
+        b.window.show();
+        b.ed->setCursorPosition(5, 0); // line 6: N5 R4=R3+R2
+        QVERIFY(b.panel->startHere());
+        QDialog* dlg = b.panel->startDialog();
+        QVERIFY(dlg);
+        QCOMPARE(b.ctl().state(), ProgramState::Idle); // nothing moves before Start
+        auto* list = dlg->findChild<QTreeWidget*>("debug.startHere.state");
+        QVERIFY(list);
+        QStringList rows;
+        for (int i = 0; i < list->topLevelItemCount(); ++i)
+            rows << list->topLevelItem(i)->text(0) + ": " + list->topLevelItem(i)->text(1);
+        const QString all = rows.join('\n');
+        QVERIFY2(all.contains("N5 (line 6)"), qPrintable(all));
+        QVERIFY2(all.contains("R1=5 R2=6 R3=7"), qPrintable(all));
+        QVERIFY2(all.contains("G01 G54 G55 G91"), qPrintable(all));
+        QVERIFY2(all.contains("FZ3000.000"), qPrintable(all));
+        QTest::qWait(50);
+        QVERIFY(dlg->grab().save(QStringLiteral(K528_BINARY_DIR) + "/tests/studio/debugger-start-here.png"));
+        auto* start = dlg->findChild<QPushButton*>("debug.startHere.start");
+        QVERIFY(start);
+        start->click();
+        QVERIFY2(b.untilHeldOrEnd(), qPrintable(b.panel->status()->text()));
+        QCOMPARE(b.ctl().state(), ProgramState::Ended);
+        QCOMPARE(b.ctl().framesExecuted(), std::int64_t{2}); // N5, N6
+        for (int n : {1, 2, 3, 4})
+            QCOMPARE(b.ctl().r(n), full.ctl().r(n));
+        QCOMPARE(b.ctl().modal(), full.ctl().modal());
+        for (engine::AxisId a : {engine::AxisId::X, engine::AxisId::Z})
+            QVERIFY(std::llabs(b.ctl().axisView(a).machineDisc - full.ctl().axisView(a).machineDisc) <= 10);
+
+        // Cancel: nothing starts.
+        Bench c;
+        c.ed->setCursorPosition(8, 0); // line 9: L5 N1
+        QVERIFY(c.panel->startHere());
+        QVERIFY(c.panel->startDialog());
+        c.panel->startDialog()->findChild<QPushButton*>("debug.startHere.cancel")->click();
+        c.session->advance(2000);
+        QCOMPARE(c.ctl().state(), ProgramState::Idle);
+        QCOMPARE(c.panel->debugger()->phase(), DebugSession::Phase::Idle);
+        QVERIFY(!c.ctl().startPoint());
     }
 
     void screenshotWithBreakpointAndExecutingFrame() {

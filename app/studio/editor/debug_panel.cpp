@@ -1,6 +1,8 @@
 #include "editor/debug_panel.h"
 
 #include "catalog/rparams.h"
+#include "engine/preview_run.h"
+#include "engine/rparams.h"
 #include "editor/debug_session.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
@@ -10,6 +12,9 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -19,6 +24,7 @@
 #include <QShortcut>
 #include <QToolBar>
 #include <QTreeWidget>
+#include <QPointer>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -62,6 +68,9 @@ DebugPanel::DebugPanel(EditorTab* tab, SimulationSession* session, QWidget* pare
     cursorAction_ = toolbar_->addAction(QString(), this, [this] { runToCursor(); });
     cursorAction_->setObjectName("debug.runToCursor");
     cursorAction_->setShortcut(Qt::CTRL | Qt::Key_F10);
+    startHereAction_ = toolbar_->addAction(QString(), this, [this] { startHere(); });
+    startHereAction_->setObjectName("debug.startHere");
+    startHereAction_->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_F10);
     stopAction_ = toolbar_->addAction(QString(), this, &DebugPanel::stop);
     stopAction_->setObjectName("debug.stop");
     resetAction_ = toolbar_->addAction(QString(), this, &DebugPanel::reset);
@@ -184,6 +193,7 @@ bool DebugPanel::run() {
         emit statusMessage(tr("Open a program file first."));
         return false;
     }
+    session_->controller().setStartPoint(std::nullopt); // from the top
     debug_->setTarget(ed);
     // Into the simulated machine it debugs (the check-then-load path), never
     // a controller on the link the window may show.
@@ -239,6 +249,185 @@ bool DebugPanel::runToCursor() {
         debug_->gate().clearRunTo();
         return false;
     }
+    return true;
+}
+
+namespace {
+
+QString discText(std::int64_t disc, const units::AxisScale& s) {
+    return QString::fromStdString(units::formatDisc(disc, s));
+}
+
+} // namespace
+
+bool DebugPanel::startHere() {
+    ProgramEditor* ed = tab_ ? tab_->currentEditor() : nullptr;
+    if (!session_ || !ed) {
+        emit statusMessage(tr("Open a program file first."));
+        return false;
+    }
+    if (debug_->programActive() || debug_->phase() != DebugSession::Phase::Idle) {
+        emit statusMessage(tr("A program is under way: stop it first."));
+        return false;
+    }
+    ed->validateNow();
+    if (ed->store().empty()) {
+        emit statusMessage(tr("Open a program file first."));
+        return false;
+    }
+    int cursorLine = 0, col = 0;
+    ed->getCursorPosition(&cursorLine, &col);
+    const int line = cursorLine + 1;
+    // The program the cursor is in (the last header at or above it), its
+    // first frame at or after the line; the file's first program starts.
+    const program::Program* in = nullptr;
+    const program::Program* first = nullptr;
+    for (const program::Program& p : ed->store().programs()) {
+        if (!first || p.headerLine < first->headerLine)
+            first = &p;
+        if (p.headerLine <= line && (!in || p.headerLine > in->headerLine))
+            in = &p;
+    }
+    if (!in)
+        in = first;
+    int index = -1;
+    for (int i = 0; i < static_cast<int>(in->frames.size()); ++i) {
+        const program::Frame& f = in->frames[static_cast<std::size_t>(i)];
+        if (f.span.line >= line && !f.skip) {
+            index = i;
+            break;
+        }
+    }
+    if (index < 0) {
+        emit statusMessage(tr("There is no frame at or after line %1.").arg(line));
+        return false;
+    }
+    const program::Frame& frame = in->frames[static_cast<std::size_t>(index)];
+    engine::Controller& ctl = session_->controller();
+    engine::PreviewOptions po;
+    po.fromReferencePoint = true;
+    for (int n = 0; n < engine::kRCount; ++n) // the machine's R-parameters, as they are now
+        if (!engine::rReadOnly(n) && n != engine::r::PlcBit && n != engine::r::NestingLevel)
+            po.rPresets[n] = ctl.r(n);
+    const engine::StartSearch found =
+        engine::findStartPoint(ctl.profile(), ed->store(), first->number, {in->number, index, 1}, po);
+    if (found.outcome == engine::StartSearch::Outcome::NotReached) {
+        emit statusMessage(tr("L%1 never reaches line %2: nothing to start there.")
+                               .arg(first->number)
+                               .arg(frame.span.line));
+        return false;
+    }
+    if (found.outcome == engine::StartSearch::Outcome::Oscillating) {
+        emit statusMessage(tr("Line %1 runs while %2 oscillates (Gx81 up to its Gx80): start from the "
+                              "frame of the Gx81 or after the Gx80.")
+                               .arg(frame.span.line)
+                               .arg(found.oscillatingAxis == 0 ? "X" : "Z"));
+        return false;
+    }
+    const engine::StartPoint point = found.point;
+
+    // The rebuilt state, listed before anything moves: Start or Cancel.
+    auto* dlg = new QDialog(this);
+    dlg->setObjectName("debug.startHere.dialog");
+    dlg->setAttribute(Qt::WA_DeleteOnClose);
+    dlg->setWindowTitle(tr("Start here"));
+    auto* lay = new QVBoxLayout(dlg);
+    const QString where = point.frameNumber > 0
+                              ? tr("L%1 N%2 (line %3)").arg(point.program).arg(point.frameNumber).arg(point.line)
+                              : tr("L%1 (line %2)").arg(point.program).arg(point.line);
+    auto* head = new QLabel(tr("L%1 starts before %2 with the state the preview rebuilt. The axes go there "
+                               "first: X to its reference point, then Z, then X, at the rapid speed.")
+                                .arg(point.mainProgram)
+                                .arg(where),
+                            dlg);
+    head->setWordWrap(true);
+    lay->addWidget(head);
+    auto* list = new QTreeWidget(dlg);
+    list->setObjectName("debug.startHere.state");
+    list->setColumnCount(2);
+    list->setRootIsDecorated(false);
+    list->setHeaderLabels({tr("State"), tr("Value")});
+    const auto row = [&](const QString& what, const QString& value) {
+        auto* it = new QTreeWidgetItem(list, {what, value});
+        it->setToolTip(1, value);
+    };
+    row(tr("Frame"), where);
+    QString stack = QStringLiteral("L%1").arg(point.mainProgram);
+    for (std::size_t i = 1; i < point.callers.size(); ++i)
+        stack += QStringLiteral(" > L%1").arg(point.callers[i].program);
+    if (!point.callers.empty())
+        stack += QStringLiteral(" > L%1").arg(point.program);
+    row(tr("Call stack"), stack);
+    const engine::ModalState& m = point.modal;
+    row(tr("Modal functions"),
+        QStringLiteral("%1 G%2 %3 %4")
+            .arg(m.rapid ? "G00" : "G01")
+            .arg(m.components)
+            .arg(m.noOverrideAxis < 0 ? "G55" : m.noOverrideAxis == 0 ? "G156" : "G256")
+            .arg(m.incremental ? "G91" : "G90"));
+    QString feeds;
+    for (int a = 0; a < 2; ++a)
+        if (m.feed[static_cast<std::size_t>(a)] >= 0)
+            feeds += (feeds.isEmpty() ? "" : " ") + QString(a == 0 ? "FX" : "FZ") +
+                     discText(m.feed[static_cast<std::size_t>(a)], point.axes[static_cast<std::size_t>(a)].scale);
+    row(tr("Feeds"), feeds.isEmpty() ? tr("none") : feeds);
+    QString comps;
+    for (int i = 0; i < 8; ++i)
+        comps += (i ? " " : "") + QString::number(point.components[static_cast<std::size_t>(i)]);
+    row(tr("R224..R231 (coordinate components)"), comps);
+    QString rs;
+    for (const auto& [n, v] : point.r)
+        rs += (rs.isEmpty() ? "" : " ") + QStringLiteral("R%1=%2").arg(n).arg(v);
+    row(tr("R-parameters the program set"), rs.isEmpty() ? tr("none") : rs);
+    row(tr("Message"), point.messageNumber > 0 ? QStringLiteral("#%1").arg(point.messageNumber) : tr("none"));
+    QString ms;
+    for (int c : point.mFunctions)
+        ms += (ms.isEmpty() ? "" : " ") + QStringLiteral("M%1").arg(c);
+    row(tr("M functions handed to the PLC again"), ms.isEmpty() ? tr("none") : ms);
+    for (int a = 0; a < 2; ++a) {
+        const engine::StartAxis& ax = point.axes[static_cast<std::size_t>(a)];
+        if (ax.present)
+            row(tr("Start point %1").arg(a == 0 ? "X" : "Z"),
+                tr("%1 (machine %2)").arg(discText(ax.currentDisc, ax.scale), discText(ax.machineDisc, ax.scale)));
+    }
+    if (point.axes[0].present && point.axes[1].present)
+        row(tr("Safe path"), tr("X %1, Z %2, X %3 (machine system)")
+                                 .arg(discText(ctl.profile().c[45], point.axes[0].scale),
+                                      discText(point.axes[1].machineDisc, point.axes[1].scale),
+                                      discText(point.axes[0].machineDisc, point.axes[0].scale)));
+    for (const engine::StartPoint::Uncertain& u : point.uncertain)
+        row(tr("Warning"), tr("line %1 moves %2 until a signal or by handwheel: the start point takes its "
+                              "programmed end")
+                               .arg(u.line)
+                               .arg(u.axis == 0 ? "X" : "Z"));
+    list->resizeColumnToContents(0);
+    lay->addWidget(list, 1);
+    auto* buttons = new QDialogButtonBox(dlg);
+    QPushButton* start = buttons->addButton(tr("Start"), QDialogButtonBox::AcceptRole);
+    start->setObjectName("debug.startHere.start");
+    buttons->addButton(QDialogButtonBox::Cancel)->setObjectName("debug.startHere.cancel");
+    lay->addWidget(buttons);
+    connect(buttons, &QDialogButtonBox::accepted, dlg, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, dlg, &QDialog::reject);
+    const int main = first->number;
+    QPointer<ProgramEditor> target(ed);
+    connect(dlg, &QDialog::accepted, this, [this, point, main, target] {
+        if (!target || !session_)
+            return;
+        const ProgramLoad loaded = loadProgramText(*session_, target->text().toStdString(), tr("the file"));
+        if (!loaded.loaded) {
+            emit statusMessage(loaded.problem);
+            return;
+        }
+        debug_->setTarget(target);
+        session_->controller().setStartPoint(point);
+        if (!debug_->start(main))
+            session_->controller().setStartPoint(std::nullopt);
+    });
+    connect(dlg, &QObject::destroyed, this, [this] { startDialog_ = nullptr; });
+    dlg->resize(std::min(760, window()->width()), std::min(460, window()->height()));
+    startDialog_ = dlg;
+    dlg->open();
     return true;
 }
 
@@ -345,6 +534,7 @@ void DebugPanel::refresh() {
     holdAction_->setEnabled(active && !held);
     resumeAction_->setEnabled(held);
     cursorAction_->setEnabled(session_ && (held || (!active && idle)));
+    startHereAction_->setEnabled(session_ && !active && idle);
     stopAction_->setEnabled(session_ && (active || !idle));
     resetAction_->setEnabled(session_ != nullptr);
     status_->setText(debug_->statusText());
@@ -369,6 +559,9 @@ void DebugPanel::retranslate() {
     stepAction_->setToolTip(tr("Stop after each frame; CYCLE START runs the next one"));
     cursorAction_->setText(tr("Run to cursor"));
     cursorAction_->setToolTip(tr("Run until the frame at the cursor, stopping before it"));
+    startHereAction_->setText(tr("Start here"));
+    startHereAction_->setToolTip(tr("Start the program before the frame at the cursor, with its state rebuilt "
+                                    "(modal functions, R-parameters, call stack) and shown first"));
     stopAction_->setText(tr("Stop"));
     stopAction_->setToolTip(tr("Like RESET: the program ends without continuation"));
     resetAction_->setText(tr("Reset"));

@@ -12,6 +12,7 @@
 #include <QWidget>
 
 class QAction;
+class QDialog;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -48,6 +49,14 @@ public slots:
     void setSingleFrame(bool on);
     // Run to the frame at (or after) the cursor's line of the current editor.
     bool runToCursor();
+    // Start here: the state before the frame at (or after) the cursor's
+    // line rebuilt by the preview (engine::findStartPoint) and listed in a
+    // dialog; its Start sends the file and starts the first program before
+    // that frame, the axes brought there by the safe path. False (said in
+    // the status) when the frame cannot be a start frame.
+    bool startHere();
+    // The dialog of Start here while it is open.
+    QDialog* startDialog() const { return startDialog_; }
     // Watch list: R0..R299; false (said in the status) for another number.
     bool addWatch(int number);
     void removeWatch(int number);
@@ -71,6 +80,8 @@ private:
     SimulationSession* session_ = nullptr;
     DebugSession* debug_ = nullptr;
     QToolBar* toolbar_ = nullptr;
+    QAction* startHereAction_ = nullptr;
+    QDialog* startDialog_ = nullptr;
     QAction *runAction_ = nullptr, *holdAction_ = nullptr, *resumeAction_ = nullptr, *stepAction_ = nullptr,
             *cursorAction_ = nullptr, *stopAction_ = nullptr, *resetAction_ = nullptr;
     QComboBox* speed_ = nullptr;
