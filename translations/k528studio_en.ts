@@ -5084,8 +5084,12 @@ Details: %3</translation>
         <translation>granting a role</translation>
     </message>
     <message>
-        <source>The database %1 refused the user %2: %3 needs the role %4; nothing was written.</source>
-        <translation>The database %1 refused the user %2: %3 needs the role %4; nothing was written.</translation>
+        <source>no K528 Studio role</source>
+        <translation>no K528 Studio role</translation>
+    </message>
+    <message>
+        <source>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</source>
+        <translation>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</translation>
     </message>
     <message>
         <source>setting or clearing the constants lock</source>

@@ -5084,8 +5084,12 @@ Details: %3</source>
         <translation>выдача роли</translation>
     </message>
     <message>
-        <source>The database %1 refused the user %2: %3 needs the role %4; nothing was written.</source>
-        <translation>База данных %1 отказала пользователю %2: %3 — нужна роль %4; ничего не записано.</translation>
+        <source>no K528 Studio role</source>
+        <translation>нет ролей K528 Studio</translation>
+    </message>
+    <message>
+        <source>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</source>
+        <translation>База данных %1 отказала пользователю %2: %3 — нужна роль %4; у пользователя: %5; ничего не записано.</translation>
     </message>
     <message>
         <source>setting or clearing the constants lock</source>

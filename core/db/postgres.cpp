@@ -4,6 +4,10 @@
 #include <charconv>
 #include <cstring>
 #include <libpq-fe.h>
+#include <mutex>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace k528::db::sql {
 
@@ -51,6 +55,20 @@ std::string trimmed(const char* s) {
 // The server's notices (NOTICE: relation exists, …) are not the user's business.
 void quiet(void*, const PGresult*) {}
 
+// libpq keeps each result in memory of its own (a machine's state: ~150 kB
+// in ~1000 blocks) and frees it at PQclear. With glibc's default trim
+// threshold (128 kB) every free gave that memory back to the system (brk)
+// and the next result faulted it in again page by page: on a kept
+// connection that was most of the client's time of opening a machine (perf:
+// brk, page faults and TLB flushes; 1.1 ms of CPU a load, 0.2 ms without).
+// Freed memory up to 16 MB now stays in the process for the next result.
+void keepFreedMemory() {
+#if defined(__GLIBC__)
+    static std::once_flag once;
+    std::call_once(once, [] { mallopt(M_TRIM_THRESHOLD, 16 * 1024 * 1024); });
+#endif
+}
+
 } // namespace
 
 std::string postgresParameters(std::string_view text, int& count) {
@@ -91,6 +109,7 @@ PgConnection::PgConnection(const std::string& uri, std::string where) : where_(s
         throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why, why);
     }
     PQsetNoticeReceiver(conn_, quiet, nullptr);
+    keepFreedMemory();
 }
 
 PgConnection::~PgConnection() {

@@ -58,7 +58,10 @@ constexpr std::size_t kCurrentTables = std::size(kCurrentById);
 // machine's name (?1) in one statement — one snapshot of its own, no
 // transaction around it, one plan and one execution on the server instead
 // of eight. Rows of each table come in that table's order (settings sorted
-// by position inside its branch); the tables may come in any order.
+// by position inside its branch); the tables may come in any order. The
+// current programs (the view `programs`: each number's newest version unless
+// deleted) are read as one backward scan of program_revisions' index here
+// rather than the view's probe for the newest revision of every number.
 constexpr std::string_view kLoadNamedPostgres =
     "WITH m AS (SELECT id, name, title, revision, created_at, changed_at, changed_by FROM machines "
     "WHERE name = ?1) "
@@ -67,8 +70,10 @@ constexpr std::string_view kLoadNamedPostgres =
     "WHERE machine_id = (SELECT id FROM m) "
     "UNION ALL SELECT 2, number::text, value::text, NULL, NULL, NULL, NULL, NULL FROM r_values "
     "WHERE machine_id = (SELECT id FROM m) "
-    "UNION ALL SELECT 3, number::text, text, sha256, revision::text, NULL, NULL, NULL FROM programs "
-    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 3, number::text, text, sha256, revision::text, NULL, NULL, NULL FROM "
+    "(SELECT DISTINCT ON (number) number, text, sha256, revision FROM program_revisions "
+    "WHERE machine_id = (SELECT id FROM m) ORDER BY number DESC, revision DESC) p "
+    "WHERE text IS NOT NULL "
     "UNION ALL SELECT 4, number::text, text, NULL, NULL, NULL, NULL, NULL FROM messages "
     "WHERE machine_id = (SELECT id FROM m) "
     "UNION ALL SELECT 5, grp, number::text, text, NULL, NULL, NULL, NULL FROM plc_messages "

@@ -489,6 +489,11 @@ private slots:
             QVERIFY(!op.mayActAs("k528_technologist"));
             QVERIFY(op.loadMachine("grinder-205") == owner.loadMachine("grinder-205"));
             DENIED_FOR(op.applyEdit("grinder-205", editC(22, 2133), by("oper1")), "k528_technologist");
+            {
+                const auto [role, message] = refusal([&] { op.releaseProgram("grinder-205", 11); });
+                // The refusal says which roles the user has.
+                QVERIFY2(message.find("oper1 has k528_operator") != std::string::npos, message.c_str());
+            }
             DENIED_FOR(op.releaseProgram("grinder-205", 11), "k528_technologist");
             DENIED_FOR(op.removeMachine("grinder-205"), "k528_technologist");
             db::TransferEntry t = pushEntry("grinder-205", 1, "ok");

@@ -674,10 +674,12 @@ private slots:
             const QString said = pane->statusText();
             QVERIFY2(said.contains("k528_technologist") && said.contains("view1"), qPrintable(said));
             if (QLatin1String(lang) == QLatin1String("en"))
-                QVERIFY2(said.contains("needs the role k528_technologist") && said.contains("nothing was written"),
+                QVERIFY2(said.contains("needs the role k528_technologist") && said.contains("view1 has k528_viewer") &&
+                             said.contains("nothing was written"),
                          qPrintable(said));
             else
                 QVERIFY2(said.contains(QStringLiteral("нужна роль k528_technologist")) &&
+                             said.contains(QStringLiteral("у пользователя: k528_viewer")) &&
                              said.contains(QStringLiteral("ничего не записано")),
                          qPrintable(said));
             QVERIFY(stored() == before); // nothing written
@@ -696,8 +698,12 @@ private slots:
             const QString why = r->release(program, QStringLiteral("by an operator"));
             QVERIFY2(why.contains("k528_technologist") && why.contains("oper1"), qPrintable(why));
             if (QLatin1String(lang) == QLatin1String("ru"))
-                QVERIFY2(why.contains(QStringLiteral("не выпущена")) && why.contains(QStringLiteral("ничего не записано")),
+                QVERIFY2(why.contains(QStringLiteral("не выпущена")) &&
+                             why.contains(QStringLiteral("у пользователя: k528_operator")) &&
+                             why.contains(QStringLiteral("ничего не записано")),
                          qPrintable(why));
+            else
+                QVERIFY2(why.contains("oper1 has k528_operator"), qPrintable(why));
             QVERIFY(stored() == before);
         }
         QVERIFY(setLanguage("en"));

@@ -362,6 +362,52 @@ private slots:
         QVERIFY2(all.isEmpty(), qPrintable(all.join("\n")));
     }
 
+    // The constants' and R-parameters' status line (a refusal, a revision
+    // notice) stays whole in view at the bottom of its dock however short
+    // the dock is: the table above it scrolls or shrinks, the line does not.
+    void theStatusLineOfShortDocksStaysInView() {
+        MainWindow w;
+        QVERIFY(shownIn(w, QStringLiteral("operator")));
+        const QString refusal = QStringLiteral(
+            "База данных postgresql:///shop отказала пользователю view1: изменение станка — нужна роль "
+            "k528_technologist; у пользователя: k528_viewer; ничего не записано.");
+        for (const char* name : {"dock.constants", "dock.rparams"}) {
+            auto* d = w.findChild<QDockWidget*>(name);
+            QVERIFY2(d, name);
+            d->show(); // as the View menu shows it
+            d->raise();
+            settle();
+            const QString statusName = QString::fromLatin1(name).mid(5) + QStringLiteral(".status");
+            auto* status = d->findChild<QLabel*>(statusName);
+            QVERIFY2(status, qPrintable(statusName));
+            status->setText(refusal);
+            settle();
+            QVERIFY2(status->isVisible(), name);
+            // Inside the dock, not clipped by a scroll area: the label's
+            // rectangle is all visible, and tall enough for its wrapped text.
+            const QRect inDock(status->mapTo(d, QPoint(0, 0)), status->size());
+            QVERIFY2(d->rect().contains(inDock),
+                     qPrintable(QStringLiteral("%1: status %2,%3 %4 outside the dock %5")
+                                    .arg(name)
+                                    .arg(inDock.x())
+                                    .arg(inDock.y())
+                                    .arg(sizeText(inDock.size()), sizeText(d->size()))));
+            for (QWidget* p = status->parentWidget(); p && p != d; p = p->parentWidget()) {
+                const QRect inP(status->mapTo(p, QPoint(0, 0)), status->size());
+                QVERIFY2(p->rect().contains(inP), qPrintable(QStringLiteral("%1: status clipped by %2 (%3)")
+                                                                 .arg(name, p->objectName(),
+                                                                      QString::fromLatin1(p->metaObject()->className()))));
+            }
+            QVERIFY2(status->height() >= status->heightForWidth(status->width()),
+                     qPrintable(QStringLiteral("%1: status %2 px tall, its text needs %3")
+                                    .arg(name)
+                                    .arg(status->height())
+                                    .arg(status->heightForWidth(status->width()))));
+            QVERIFY(w.grab().save(shotPath(QStringLiteral("operator-%1-status").arg(QString::fromLatin1(name).mid(5)))));
+            d->hide();
+        }
+    }
+
     void longTextsAndMoreDocksDoNotWidenTheWindow() {
         MainWindow w;
         QVERIFY(shown(w));

@@ -16,6 +16,7 @@
 #include "controller/push_preview.h"
 #include "controller/view_notice.h"
 #include "widgets.h"
+#include "workspace/screen_fit.h"
 #include "workspace/pane_dock.h"
 
 #include <QApplication>
@@ -214,7 +215,15 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     progress_->setObjectName("constants.progress");
     progress_->setMaximumWidth(220);
     progress_->hide();
-    auto* bottom = new QHBoxLayout;
+    // The status line: kept in view below the table when the dock scrolls
+    // (workspace/screen_fit.h).
+    auto* statusRow = new QWidget(this);
+    statusRow->setObjectName("constants.statusRow");
+    statusRow->setProperty(kKeptInView, true);
+    auto* bottom = new QHBoxLayout(statusRow);
+    bottom->setContentsMargins(0, 0, 0, 0);
+    status_->setParent(statusRow);
+    progress_->setParent(statusRow);
     bottom->addWidget(status_, 1);
     bottom->addWidget(progress_);
 
@@ -223,7 +232,7 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     layout->addLayout(top);
     layout->addLayout(tools);
     layout->addWidget(table_, 1);
-    layout->addLayout(bottom);
+    layout->addWidget(statusRow);
 
     connect(search_, &QLineEdit::textChanged, filter_, &ConstantsFilter::setSearch);
     connect(axis_, &QComboBox::currentIndexChanged, this, [this](int i) {

@@ -1,4 +1,5 @@
 #include "controller/view_notice.h"
+#include "workspace/screen_fit.h"
 
 #include "controller/controller.h"
 
@@ -116,8 +117,11 @@ void ViewNotice::scrollContent() {
     scroll_->setFrameShape(QFrame::NoFrame);
     scroll_->setWidgetResizable(true);
     lay->removeWidget(content_);
+    QWidget* kept = takeKeptInView(content_, this); // its status line stays in view below
     scroll_->setWidget(content_);
     lay->addWidget(scroll_, 1);
+    if (kept)
+        lay->addWidget(kept);
 }
 
 void ViewNotice::changeEvent(QEvent* e) {

@@ -10,6 +10,7 @@
 #include "controller/view_notice.h"
 #include "database/database_ui.h"
 #include "widgets.h"
+#include "workspace/screen_fit.h"
 #include "workspace/pane_dock.h"
 
 #include <QComboBox>
@@ -122,6 +123,7 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     status_ = new QLabel(this);
     status_->setObjectName("rparams.status");
     status_->setWordWrap(true);
+    status_->setProperty(kKeptInView, true); // in view below the table when the dock scrolls
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(top);

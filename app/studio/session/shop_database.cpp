@@ -221,17 +221,29 @@ QString deniedAction(const std::string& action) {
 }
 
 // A role refusal in the window's language (not English): who was refused
-// what, the role it needs, that nothing was written.
+// what, the role it needs, the roles the user has, that nothing was written.
 QString deniedText(const db::DeniedError& e) {
     std::string user;
+    QStringList roles; // the K528 Studio roles the user is a member of
     try {
-        user = ShopDatabase::at()->use([](db::Database& d) { return d.sessionUser(); });
+        ShopDatabase::at()->use([&](db::Database& d) {
+            user = d.sessionUser();
+            for (const db::RoleInfo& r : d.roles())
+                if (std::find(r.members.begin(), r.members.end(), user) != r.members.end())
+                    roles << QString::fromStdString(r.role);
+            return 0;
+        });
     } catch (const std::exception&) {
     }
-    return QCoreApplication::translate("k528::studio::ShopDatabase",
-                                       "The database %1 refused the user %2: %3 needs the role %4; nothing was written.")
+    roles.sort();
+    const QString has = roles.isEmpty()
+                            ? QCoreApplication::translate("k528::studio::ShopDatabase", "no K528 Studio role")
+                            : roles.join(QStringLiteral(", "));
+    return QCoreApplication::translate(
+               "k528::studio::ShopDatabase",
+               "The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.")
         .arg(ShopDatabase::currentText(), QString::fromStdString(user), deniedAction(e.action()),
-             QString::fromStdString(e.role()));
+             QString::fromStdString(e.role()), has);
 }
 
 } // namespace

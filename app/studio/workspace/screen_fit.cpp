@@ -5,6 +5,8 @@
 #include <QGuiApplication>
 #include <QScreen>
 #include <QScrollArea>
+#include <QVBoxLayout>
+#include <QVariant>
 #include <QWidget>
 #include <QWindow>
 
@@ -18,9 +20,40 @@ QScrollArea* scrollInside(QDockWidget* dock) {
     scroll->setObjectName(dock->objectName() + ".scroll");
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidgetResizable(true);
+    QWidget* kept = takeKeptInView(content, dock);
     scroll->setWidget(content); // takes it out of the dock
-    dock->setWidget(scroll);
+    if (!kept) {
+        dock->setWidget(scroll);
+        return scroll;
+    }
+    auto* frame = new QWidget(dock);
+    frame->setObjectName(dock->objectName() + ".frame");
+    auto* layout = new QVBoxLayout(frame);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(scroll, 1);
+    layout->addWidget(kept);
+    dock->setWidget(frame);
     return scroll;
+}
+
+QWidget* takeKeptInView(QWidget* content, QWidget* parent) {
+    QWidget* kept = nullptr;
+    for (QWidget* c : content->findChildren<QWidget*>(QString(), Qt::FindDirectChildrenOnly))
+        if (c->property(kKeptInView).toBool())
+            kept = c;
+    if (!kept)
+        return nullptr;
+    // In a holder with the content's margins at the sides and the bottom.
+    auto* holder = new QWidget(parent);
+    holder->setObjectName(kept->objectName() + ".kept");
+    auto* layout = new QVBoxLayout(holder);
+    const QMargins m = content->layout() ? content->layout()->contentsMargins() : QMargins();
+    layout->setContentsMargins(m.left(), 2, m.right(), m.bottom());
+    kept->setParent(holder); // out of the content's layout
+    layout->addWidget(kept);
+    kept->show();
+    return holder;
 }
 
 QRect availableArea(const QWidget* w) {

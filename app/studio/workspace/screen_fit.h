@@ -16,7 +16,15 @@ namespace k528::studio {
 // its own and scrolls when the dock is smaller. Returns the scroll area
 // (object name "<dock>.scroll"); a content that already scrolls (an item
 // view, a scroll area, a text editor) is left as it is (nullptr).
+// A child of the content with the property kKeptInView set (its status line:
+// a refusal, a revision notice) is taken out of it and kept below the scroll
+// area, always in view at the dock's bottom ("<dock>.frame" holds both).
 QScrollArea* scrollInside(QDockWidget* dock);
+inline constexpr const char* kKeptInView = "k528KeptInView";
+// The child of `content` marked kKeptInView, taken out of it into a new
+// widget of `parent` (with the content's side and bottom margins) to be laid
+// out below the scroll area; nullptr when it has none.
+QWidget* takeKeptInView(QWidget* content, QWidget* parent);
 
 // The available area (without panels and task bars) of the screen `w` is on,
 // in logical pixels; the primary screen's when it has none yet.
