@@ -819,10 +819,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
 <context>
     <name>k528::studio::ConstantsEditor</name>
     <message>
-        <source>undo: %1</source>
-        <translation>undo: %1</translation>
-    </message>
-    <message>
         <source>No C-parameter %1 (1..152)</source>
         <translation>No C-parameter %1 (1..152)</translation>
     </message>
@@ -1910,6 +1906,66 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>%1 cannot be read: %2</source>
         <translation>%1 cannot be read: %2</translation>
+    </message>
+    <message>
+        <source>machine %1: %2</source>
+        <translation>machine %1: %2</translation>
+    </message>
+    <message>
+        <source>Vmax must be a positive number</source>
+        <translation>Vmax must be a positive number</translation>
+    </message>
+    <message>
+        <source>the run-up time must be a positive number</source>
+        <translation>the run-up time must be a positive number</translation>
+    </message>
+    <message>
+        <source>the braking distance must be a positive number</source>
+        <translation>the braking distance must be a positive number</translation>
+    </message>
+    <message>
+        <source>the acceleration must be a positive number</source>
+        <translation>the acceleration must be a positive number</translation>
+    </message>
+    <message>
+        <source>Umax must be a positive number</source>
+        <translation>Umax must be a positive number</translation>
+    </message>
+    <message>
+        <source>Kv must be a positive number</source>
+        <translation>Kv must be a positive number</translation>
+    </message>
+    <message>
+        <source>the screw lead must be a positive number</source>
+        <translation>the screw lead must be a positive number</translation>
+    </message>
+    <message>
+        <source>the gear ratio must be a positive number</source>
+        <translation>the gear ratio must be a positive number</translation>
+    </message>
+    <message>
+        <source>the encoder must have at least one line</source>
+        <translation>the encoder must have at least one line</translation>
+    </message>
+    <message>
+        <source>the screw lead %1 mm is not a whole number of discretes (%2 mm)</source>
+        <translation>the screw lead %1 mm is not a whole number of discretes (%2 mm)</translation>
+    </message>
+    <message>
+        <source>the gear ratio %1 is not a fraction with a denominator up to 100000</source>
+        <translation>the gear ratio %1 is not a fraction with a denominator up to 100000</translation>
+    </message>
+    <message>
+        <source>a speed must be zero or positive</source>
+        <translation>a speed must be zero or positive</translation>
+    </message>
+    <message>
+        <source>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</source>
+        <translation>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</translation>
+    </message>
+    <message>
+        <source>rejected, nothing was written: %1</source>
+        <translation>rejected, nothing was written: %1</translation>
     </message>
 </context>
 <context>
@@ -3405,6 +3461,10 @@ Its comment stays: %3</translation>
         <source>The messages of the controller on the line, recorded as they are read (every %1 ms) with this PC's time; they are acknowledged on its own K923.</source>
         <translation>The messages of the controller on the line, recorded as they are read (every %1 ms) with this PC's time; they are acknowledged on its own K923.</translation>
     </message>
+    <message>
+        <source>Cannot export to %1: %2</source>
+        <translation>Cannot export to %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::K923Keys</name>
@@ -4601,6 +4661,53 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::ProveoutTexts</name>
+    <message>
+        <source>A rapid (G00) enters the material of the blank: X%1 Z%2</source>
+        <translation>A rapid (G00) enters the material of the blank: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A rapid (G00) enters the material at its dogleg: axis %3 arrives first (X%1 Z%2), although both end points are outside the blank</source>
+        <translation>A rapid (G00) enters the material at its dogleg: axis %3 arrives first (X%1 Z%2), although both end points are outside the blank</translation>
+    </message>
+    <message>
+        <source>A rapid (G00) takes the wheel into the ring's material: X%1 Z%2</source>
+        <translation>A rapid (G00) takes the wheel into the ring's material: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>Tool T%3 runs into the chuck's jaws: X%1 Z%2</source>
+        <translation>Tool T%3 runs into the chuck's jaws: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>Tool T%3 runs into the chuck's body: X%1 Z%2</source>
+        <translation>Tool T%3 runs into the chuck's body: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>The turret runs into the chuck's jaws (tool T%3 at X%1 Z%2)</source>
+        <translation>The turret runs into the chuck's jaws (tool T%3 at X%1 Z%2)</translation>
+    </message>
+    <message>
+        <source>The turret runs into the chuck's body (tool T%3 at X%1 Z%2)</source>
+        <translation>The turret runs into the chuck's body (tool T%3 at X%1 Z%2)</translation>
+    </message>
+    <message>
+        <source>A feed into the material with the spindle stopped: X%1 Z%2</source>
+        <translation>A feed into the material with the spindle stopped: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A feed into the ring's material with the wheel stopped: X%1 Z%2</source>
+        <translation>A feed into the ring's material with the wheel stopped: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A manual move takes the tool into the material of the blank: X%1 Z%2</source>
+        <translation>A manual move takes the tool into the material of the blank: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A cut %1 mm deep, deeper than tool T%2 takes (%3 mm)</source>
+        <translation>A cut %1 mm deep, deeper than tool T%2 takes (%3 mm)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::PushPreview</name>
     <message>
         <source>name</source>
@@ -4866,6 +4973,14 @@ Its comment stays: %3</translation>
     <message>
         <source>programs and messages from the editor (K528 Studio)</source>
         <translation>programs and messages from the editor (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>set %1 = %2 (K528 Studio)</source>
+        <translation>set %1 = %2 (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>undo: %1</source>
+        <translation>undo: %1</translation>
     </message>
 </context>
 <context>

@@ -819,10 +819,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
 <context>
     <name>k528::studio::ConstantsEditor</name>
     <message>
-        <source>undo: %1</source>
-        <translation>отмена: %1</translation>
-    </message>
-    <message>
         <source>No C-parameter %1 (1..152)</source>
         <translation>Нет С-параметра %1 (1..152)</translation>
     </message>
@@ -1910,6 +1906,66 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>%1 cannot be read: %2</source>
         <translation>%1 не читается: %2</translation>
+    </message>
+    <message>
+        <source>machine %1: %2</source>
+        <translation>станок %1: %2</translation>
+    </message>
+    <message>
+        <source>Vmax must be a positive number</source>
+        <translation>Vmax должна быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the run-up time must be a positive number</source>
+        <translation>время разгона должно быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the braking distance must be a positive number</source>
+        <translation>путь торможения должен быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the acceleration must be a positive number</source>
+        <translation>ускорение должно быть положительным числом</translation>
+    </message>
+    <message>
+        <source>Umax must be a positive number</source>
+        <translation>Umax должно быть положительным числом</translation>
+    </message>
+    <message>
+        <source>Kv must be a positive number</source>
+        <translation>Kv должен быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the screw lead must be a positive number</source>
+        <translation>шаг винта должен быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the gear ratio must be a positive number</source>
+        <translation>передаточное отношение должно быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the encoder must have at least one line</source>
+        <translation>у датчика должен быть хотя бы один штрих</translation>
+    </message>
+    <message>
+        <source>the screw lead %1 mm is not a whole number of discretes (%2 mm)</source>
+        <translation>шаг винта %1 мм — не целое число дискрет (%2 мм)</translation>
+    </message>
+    <message>
+        <source>the gear ratio %1 is not a fraction with a denominator up to 100000</source>
+        <translation>передаточное отношение %1 — не дробь со знаменателем до 100000</translation>
+    </message>
+    <message>
+        <source>a speed must be zero or positive</source>
+        <translation>скорость должна быть нулевой или положительной</translation>
+    </message>
+    <message>
+        <source>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</source>
+        <translation>наибольшая подача %1 мм/мин больше той, что привод даёт при МАКС.ЦАП (%2 мм/мин)</translation>
+    </message>
+    <message>
+        <source>rejected, nothing was written: %1</source>
+        <translation>отклонено, ничего не записано: %1</translation>
     </message>
 </context>
 <context>
@@ -3405,6 +3461,10 @@ Its comment stays: %3</source>
         <source>The messages of the controller on the line, recorded as they are read (every %1 ms) with this PC's time; they are acknowledged on its own K923.</source>
         <translation>Сообщения контроллера на линии, записываются по мере чтения (каждые %1 мс) со временем этой ПЭВМ; сбрасываются на его собственном K923.</translation>
     </message>
+    <message>
+        <source>Cannot export to %1: %2</source>
+        <translation>Не удаётся выгрузить в %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::K923Keys</name>
@@ -4601,6 +4661,53 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ProveoutTexts</name>
+    <message>
+        <source>A rapid (G00) enters the material of the blank: X%1 Z%2</source>
+        <translation>Быстрый ход (G00) входит в материал заготовки: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A rapid (G00) enters the material at its dogleg: axis %3 arrives first (X%1 Z%2), although both end points are outside the blank</source>
+        <translation>Быстрый ход (G00) входит в материал на изломе: ось %3 приходит первой (X%1 Z%2), хотя обе точки кадра вне заготовки</translation>
+    </message>
+    <message>
+        <source>A rapid (G00) takes the wheel into the ring's material: X%1 Z%2</source>
+        <translation>Быстрый ход (G00) вводит круг в материал кольца: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>Tool T%3 runs into the chuck's jaws: X%1 Z%2</source>
+        <translation>Инструмент T%3 задевает кулачки патрона: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>Tool T%3 runs into the chuck's body: X%1 Z%2</source>
+        <translation>Инструмент T%3 задевает корпус патрона: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>The turret runs into the chuck's jaws (tool T%3 at X%1 Z%2)</source>
+        <translation>Резцедержатель задевает кулачки патрона (инструмент T%3 у X%1 Z%2)</translation>
+    </message>
+    <message>
+        <source>The turret runs into the chuck's body (tool T%3 at X%1 Z%2)</source>
+        <translation>Резцедержатель задевает корпус патрона (инструмент T%3 у X%1 Z%2)</translation>
+    </message>
+    <message>
+        <source>A feed into the material with the spindle stopped: X%1 Z%2</source>
+        <translation>Рабочая подача в материал при остановленном шпинделе: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A feed into the ring's material with the wheel stopped: X%1 Z%2</source>
+        <translation>Рабочая подача в материал кольца при остановленном круге: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A manual move takes the tool into the material of the blank: X%1 Z%2</source>
+        <translation>Ручное перемещение вводит инструмент в материал заготовки: X%1 Z%2</translation>
+    </message>
+    <message>
+        <source>A cut %1 mm deep, deeper than tool T%2 takes (%3 mm)</source>
+        <translation>Глубина резания %1 мм больше допустимой для инструмента T%2 (%3 мм)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::PushPreview</name>
     <message>
         <source>name</source>
@@ -4866,6 +4973,14 @@ Its comment stays: %3</source>
     <message>
         <source>programs and messages from the editor (K528 Studio)</source>
         <translation>программы и сообщения из редактора (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>set %1 = %2 (K528 Studio)</source>
+        <translation>задано: %1 = %2 (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>undo: %1</source>
+        <translation>отмена: %1</translation>
     </message>
 </context>
 <context>

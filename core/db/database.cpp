@@ -11,7 +11,9 @@
 #include "db/revisions.h"
 #include "db/sha256.h"
 #include "db/sqlite_store.h"
+#include "catalog/cparams.h"
 #include "profile/builtin.h"
+#include "profile/settings.h"
 
 
 namespace k528::db {
@@ -303,6 +305,38 @@ SaveResult Database::saveMachine(std::string_view name, const MachineProfile& p,
     });
 }
 
+namespace {
+
+// The item of `edit` its machine cannot hold (Edit::applyTo threw), as a
+// problem: a C-parameter that does not exist, a simulation key or value that
+// is not one.
+profile::Problem editProblem(const std::string& machine, const Edit& edit) {
+    profile::Problem item;
+    for (const auto& [n, v] : edit.c)
+        if (!catalog::findCParam(n)) {
+            item = profile::problem("c.none", {std::to_string(n)});
+            break;
+        }
+    for (const auto& [k, v] : edit.simulation) {
+        if (!item.empty() || !v)
+            break;
+        if (profile::Problem e = profile::settingKeyProblem(k); !e.empty()) {
+            item = profile::problem("setting.key");
+            item.within.push_back(std::move(e));
+        } else if (profile::Problem e2 = profile::settingValueProblem(*v); !e2.empty()) {
+            item = profile::problem("setting.value", {k});
+            item.within.push_back(std::move(e2));
+        }
+    }
+    if (item.empty())
+        return {};
+    profile::Problem p = profile::problem("machine.item", {machine});
+    p.within.push_back(std::move(item));
+    return p;
+}
+
+} // namespace
+
 SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOptions options) {
     if (options.action == "save")
         options.action = "set";
@@ -317,9 +351,9 @@ SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOpt
         try {
             edit.applyTo(neu);
         } catch (const profile::SettingError& e) {
-            throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
+            throw ValidationError("machine " + row.info.name + ": " + e.what(), {}, editProblem(row.info.name, edit));
         } catch (const std::out_of_range& e) {
-            throw ValidationError("machine " + row.info.name + ": " + e.what(), {});
+            throw ValidationError("machine " + row.info.name + ": " + e.what(), {}, editProblem(row.info.name, edit));
         }
         if (options.summary.empty())
             options.summary = noteText({"set", {edit.describe()}});

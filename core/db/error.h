@@ -2,6 +2,7 @@
 // (the file, the machine, the item).
 #pragma once
 
+#include "profile/problem.h"
 #include "profile/validate.h"
 
 #include <filesystem>
@@ -108,13 +109,19 @@ private:
 // numbers). Nothing was written.
 class ValidationError : public Error {
 public:
-    ValidationError(const std::string& message, std::vector<profile::Finding> findings)
-        : Error(ErrorKind::Invalid, message), findings_(std::move(findings)) {}
+    ValidationError(const std::string& message, std::vector<profile::Finding> findings,
+                    profile::Problem problem = {})
+        : Error(ErrorKind::Invalid, message), findings_(std::move(findings)), problem_(std::move(problem)) {}
     // The errors that caused the rejection (severity Error).
     const std::vector<profile::Finding>& findings() const { return findings_; }
+    // A rejection without findings (an item the edit cannot even hold): what
+    // is wrong, as core's problem ids say it ("machine.item": the machine and
+    // the item's problem); empty when the findings say it.
+    const profile::Problem& problem() const { return problem_; }
 
 private:
     std::vector<profile::Finding> findings_;
+    profile::Problem problem_;
 };
 
 } // namespace k528::db

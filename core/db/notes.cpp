@@ -21,6 +21,8 @@ constexpr std::array kNotes = {
     NoteText{"studio.loaded", "the machine as K528 Studio loaded it"},
     NoteText{"studio.kept", "kept from the simulated controller's memory (K528 Studio)"},
     NoteText{"studio.editor", "programs and messages from the editor (K528 Studio)"},
+    NoteText{"studio.set", "set %1 = %2 (K528 Studio)"},
+    NoteText{"studio.undo", "undo: %1"}, // %1: the note of the change undone, as stored
 };
 
 // A key of an item a revision changes: C022, R12, #3, A01/W01/S01, title,
@@ -116,7 +118,7 @@ std::optional<Note> readNote(std::string_view summary) {
         if (!match(t.en, summary, args))
             continue;
         const std::string_view id = t.id;
-        if ((id == "set" || id == "changed" || id == "changed-more") && !keyList(args[0]))
+        if ((id == "set" || id == "changed" || id == "changed-more" || id == "studio.set") && !keyList(args[0]))
             continue;
         if (id == "changed-more" && args[1].find_first_not_of("0123456789") != std::string::npos)
             continue;

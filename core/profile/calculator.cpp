@@ -19,9 +19,9 @@ std::int64_t integerPart(double v) {
     return static_cast<std::int64_t>(v < 0 ? std::ceil(v - eps) : std::floor(v + eps));
 }
 
-void positive(double v, const char* what) {
+void positive(double v, const char* id) {
     if (!(v > 0) || !std::isfinite(v))
-        throw CalcError(std::string(what) + " must be a positive number");
+        throw CalcError(problem(id));
 }
 
 // m/s² of a parameter value in K528 Studio's unit.
@@ -107,8 +107,8 @@ std::string fmt(double v) {
 } // namespace
 
 AccelResult accelByRunUp(double vmaxDiscPerMin, double runUpMs, const units::AxisScale& s) {
-    positive(vmaxDiscPerMin, "Vmax");
-    positive(runUpMs, "the run-up time");
+    positive(vmaxDiscPerMin, "calc.vmax");
+    positive(runUpMs, "calc.run-up");
     AccelResult r;
     r.formula = 1;
     r.printedRaw = kFormula1Printed * vmaxDiscPerMin / runUpMs;
@@ -117,8 +117,8 @@ AccelResult accelByRunUp(double vmaxDiscPerMin, double runUpMs, const units::Axi
 }
 
 AccelResult accelByBraking(double vmaxDiscPerMin, double brakingDisc, const units::AxisScale& s) {
-    positive(vmaxDiscPerMin, "Vmax");
-    positive(brakingDisc, "the braking distance");
+    positive(vmaxDiscPerMin, "calc.vmax");
+    positive(brakingDisc, "calc.braking");
     AccelResult r;
     r.formula = 2;
     r.printedRaw = kFormula2Printed * vmaxDiscPerMin * vmaxDiscPerMin / brakingDisc;
@@ -129,7 +129,7 @@ AccelResult accelByBraking(double vmaxDiscPerMin, double brakingDisc, const unit
 }
 
 AccelResult accelByValue(double aMPerS2, const units::AxisScale& s) {
-    positive(aMPerS2, "the acceleration");
+    positive(aMPerS2, "calc.acceleration");
     AccelResult r;
     r.formula = 3;
     r.printedRaw = 25600.0 * aMPerS2 / s.kd();
@@ -138,34 +138,32 @@ AccelResult accelByValue(double aMPerS2, const units::AxisScale& s) {
 }
 
 std::int64_t speedGain(double umaxVolts, double vmaxMPerMin, const units::AxisScale& s) {
-    positive(umaxVolts, "Umax");
-    positive(vmaxMPerMin, "Vmax");
+    positive(umaxVolts, "calc.umax");
+    positive(vmaxMPerMin, "calc.vmax");
     return integerPart(kKsCoefficient * s.kd() * umaxVolts / vmaxMPerMin);
 }
 
 std::int64_t errorGain(double kv, double umaxVolts, double vmaxMPerMin, const units::AxisScale& s) {
-    positive(kv, "Kv");
-    positive(umaxVolts, "Umax");
-    positive(vmaxMPerMin, "Vmax");
+    positive(kv, "calc.kv");
+    positive(umaxVolts, "calc.umax");
+    positive(vmaxMPerMin, "calc.vmax");
     return integerPart(kKeCoefficient * s.kd() * kv * umaxVolts / vmaxMPerMin);
 }
 
 EncoderRatio encoderRatio(double screwLeadMm, double gearRatio, std::int64_t encoderLines,
                           const units::AxisScale& s) {
-    positive(screwLeadMm, "the screw lead");
-    positive(gearRatio, "the gear ratio");
+    positive(screwLeadMm, "calc.screw-lead");
+    positive(gearRatio, "calc.gear-ratio");
     if (encoderLines < 1)
-        throw CalcError("the encoder must have at least one line");
+        throw CalcError(problem("calc.encoder-lines"));
     // Discretes of motion per screw revolution: a whole number.
     const double perRev = screwLeadMm * static_cast<double>(s.discretesPerMm());
     const double perRevRounded = std::round(perRev);
     if (std::fabs(perRev - perRevRounded) > 1e-6)
-        throw CalcError("the screw lead " + fmt(screwLeadMm) +
-                        " mm is not a whole number of discretes (" + fmt(s.discreteMm()) + " mm)");
+        throw CalcError(problem("calc.lead-discretes", {fmt(screwLeadMm), fmt(s.discreteMm())}));
     const auto g = exactFraction(gearRatio);
     if (!g)
-        throw CalcError("the gear ratio " + fmt(gearRatio) +
-                        " is not a fraction with a denominator up to 100000");
+        throw CalcError(problem("calc.gear-fraction", {fmt(gearRatio)}));
     // L/N = discPerScrewRev / (4·lines·g), g = gp/gq.
     std::int64_t l = static_cast<std::int64_t>(perRevRounded) * g->second;
     std::int64_t n = 4 * encoderLines * g->first;
@@ -190,7 +188,7 @@ EncoderRatio encoderRatio(double screwLeadMm, double gearRatio, std::int64_t enc
 
 std::int64_t speedParam(double mmPerMin, const units::AxisScale& s) {
     if (!(mmPerMin >= 0) || !std::isfinite(mmPerMin))
-        throw CalcError("a speed must be zero or positive");
+        throw CalcError(problem("calc.speed"));
     return units::mmPerMinToSpeedParam(mmPerMin, s);
 }
 
@@ -300,16 +298,11 @@ AxisConstants designAxis(const AxisDesign& d) {
     const double reachable =
         d.driveMaxSpeedMmPerMin * (10.0 * static_cast<double>(d.dacMax) / 2047.0) / d.driveMaxVolts;
     if (topFeed > reachable * (1.0 + 1e-9))
-        throw CalcError("the fastest feed " + fmt(topFeed) +
-                        " mm/min is above what the drive reaches at DAC MAX (" + fmt(reachable) +
-                        " mm/min)");
+        throw CalcError(problem("calc.feed-reach", {fmt(topFeed), fmt(reachable)}));
 
     for (const auto& [n, v] : out.values)
         if (!cat::cParam(n).inRange(v))
-            throw CalcError(cat::cParam(n).key() + " " + std::string(cat::cParam(n).nameEn) +
-                            " = " + std::to_string(v) + " is outside " +
-                            std::to_string(cat::cParam(n).min) + "..." +
-                            std::to_string(cat::cParam(n).max));
+            throw CalcError(cValueProblem(n, v));
     return out;
 }
 

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "catalog/cparams.h"
+#include "profile/problem.h"
 #include "profile/profile.h"
 #include "units/units.h"
 
@@ -23,8 +24,12 @@
 
 namespace k528::profile::calc {
 
+// What is wrong with the inputs, as a problem of core's catalog (problem.h:
+// "calc.*", or "c.range" for a result outside its constant's range); what()
+// is its English.
 struct CalcError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit CalcError(Problem p) : std::runtime_error(p.text()), problem(std::move(p)) {}
+    Problem problem;
 };
 
 // Coefficients as printed in table Е.1 and their exact values.

@@ -117,6 +117,22 @@ constexpr std::array kTexts = {
     ProblemText{"tool.key", "a tool key is tool.<station 1..8>.<key>"},
     ProblemText{"tool.field", "'%1' is not a key of a tool"},
     ProblemText{"tool.no-kind", "the tool of station %1 has no kind (tool.%1.kind)"},
+    // a database's refusal of an edit its machine cannot hold (db/error.h)
+    ProblemText{"machine.item", "machine %1: %2"},
+    // the constants calculator's inputs (calculator.h)
+    ProblemText{"calc.vmax", "Vmax must be a positive number"},
+    ProblemText{"calc.run-up", "the run-up time must be a positive number"},
+    ProblemText{"calc.braking", "the braking distance must be a positive number"},
+    ProblemText{"calc.acceleration", "the acceleration must be a positive number"},
+    ProblemText{"calc.umax", "Umax must be a positive number"},
+    ProblemText{"calc.kv", "Kv must be a positive number"},
+    ProblemText{"calc.screw-lead", "the screw lead must be a positive number"},
+    ProblemText{"calc.gear-ratio", "the gear ratio must be a positive number"},
+    ProblemText{"calc.encoder-lines", "the encoder must have at least one line"},
+    ProblemText{"calc.lead-discretes", "the screw lead %1 mm is not a whole number of discretes (%2 mm)"},
+    ProblemText{"calc.gear-fraction", "the gear ratio %1 is not a fraction with a denominator up to 100000"},
+    ProblemText{"calc.speed", "a speed must be zero or positive"},
+    ProblemText{"calc.feed-reach", "the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)"},
 };
 
 } // namespace
@@ -132,17 +148,20 @@ std::string_view problemEnglish(std::string_view id) {
 
 std::string fillPattern(std::string_view pattern, std::span<const std::string> args) {
     std::string out;
+    out.reserve(pattern.size() + 32);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
         const char c = pattern[i];
         if (c == '%' && i + 1 < pattern.size() && pattern[i + 1] >= '1' && pattern[i + 1] <= '9') {
             const std::size_t k = static_cast<std::size_t>(pattern[i + 1] - '1');
-            if (k < args.size()) {
+            if (k < args.size())
                 out += args[k];
-                ++i;
-                continue;
-            }
+            ++i;
+        } else if (c == '%' && i + 1 < pattern.size() && pattern[i + 1] == '%') {
+            out += '%';
+            ++i;
+        } else {
+            out += c;
         }
-        out += c;
     }
     return out;
 }

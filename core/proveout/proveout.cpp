@@ -1,5 +1,6 @@
 #include "proveout/proveout.h"
 
+#include "profile/problem.h"
 #include "proveout/material.h"
 #include "proveout/sweep.h"
 
@@ -59,21 +60,6 @@ const Text* findText(std::string_view id) {
         if (t.id == id)
             return &t;
     return nullptr;
-}
-
-std::string fill(std::string_view tpl, const std::vector<std::string>& args) {
-    std::string out;
-    for (std::size_t i = 0; i < tpl.size(); ++i) {
-        if (tpl[i] == '%' && i + 1 < tpl.size() && tpl[i + 1] >= '1' && tpl[i + 1] <= '9') {
-            const std::size_t k = static_cast<std::size_t>(tpl[i + 1] - '1');
-            if (k < args.size())
-                out += args[k];
-            ++i;
-        } else {
-            out += tpl[i];
-        }
-    }
-    return out;
 }
 
 // A length in mm as the panel shows it: up to 3 decimals, no trailing zeros.
@@ -392,7 +378,7 @@ std::string Finding::message(bool russian) const {
     const Text* t = findText(text);
     if (!t)
         return std::string(text);
-    return fill(russian ? t->ru : t->en, args);
+    return profile::fillPattern(russian ? t->ru : t->en, args);
 }
 
 std::size_t Result::errors() const {

@@ -2,35 +2,24 @@
 #include "training/texts.h"
 
 #include "catalog/training_texts.h"
+#include "profile/problem.h"
 
 #include <cmath>
 #include <cstdio>
 
 namespace k528::training {
 
-std::string fillTemplate(std::string_view tpl, std::span<const TextArg> args, Language l) {
-    std::string out;
-    out.reserve(tpl.size() + 32);
-    for (std::size_t i = 0; i < tpl.size(); ++i) {
-        const char c = tpl[i];
-        if (c == '%' && i + 1 < tpl.size() && tpl[i + 1] >= '1' && tpl[i + 1] <= '9') {
-            const auto n = static_cast<std::size_t>(tpl[i + 1] - '1');
-            if (n < args.size())
-                out += args[n].in(l);
-            ++i;
-        } else if (c == '%' && i + 1 < tpl.size() && tpl[i + 1] == '%') {
-            out += '%';
-            ++i;
-        } else {
-            out += c;
-        }
-    }
+std::vector<std::string> argsIn(std::span<const TextArg> args, Language l) {
+    std::vector<std::string> out;
+    out.reserve(args.size());
+    for (const TextArg& a : args)
+        out.push_back(a.in(l));
     return out;
 }
 
 std::string render(const Text& t, Language l) {
     if (const catalog::TrainingText* tpl = catalog::findTrainingText(t.id))
-        return fillTemplate(l == Language::Ru ? tpl->ru : tpl->en, t.args, l);
+        return profile::fillPattern(l == Language::Ru ? tpl->ru : tpl->en, argsIn(t.args, l));
     std::string out = t.id;
     for (const TextArg& a : t.args)
         out += " " + a.in(l);

@@ -37,9 +37,8 @@ struct Text {
 // and its arguments (never thrown away).
 std::string render(const Text& t, Language l);
 
-// `tpl` with %1..%9 replaced by args[0..8] in language `l` (a missing one by
-// nothing); any other % stays.
-std::string fillTemplate(std::string_view tpl, std::span<const TextArg> args, Language l);
+// The arguments in language `l`, for a pattern's %1..%9 (profile::fillPattern).
+std::vector<std::string> argsIn(std::span<const TextArg> args, Language l);
 
 // Language-neutral formatting of the arguments: a length in mm with up to 3
 // decimals ("30", "-40.5", "0.125"), an area in mm² (3 decimals), a whole

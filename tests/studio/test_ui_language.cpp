@@ -36,6 +36,8 @@
 #include "db/error.h"
 #include "link/client.h"
 #include "profile/builtin.h"
+#include "profile/calculator.h"
+#include "proveout/proveout.h"
 #include "profile/csv.h"
 #include "profile/problem.h"
 #include "profile/text_format.h"
@@ -85,6 +87,7 @@
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
 
+#include <filesystem>
 #include <functional>
 #include <cstdlib>
 #include <fcntl.h>
@@ -852,7 +855,8 @@ void TestUiLanguage::russianCoreTexts() {
                    QStringList{outOfRange, notWhole, badCsv, noFile, dir_.path(), QStringLiteral("no-such-machine"),
                                QStringLiteral("range.k528m"), QStringLiteral("whole.k528m"),
                                QStringLiteral("bad.csv"), QStringLiteral("absent.k528m"),
-                               QString::fromStdString(db::defaultAuthor())}); // the revisions' author
+                               QString::fromStdString(db::defaultAuthor()), // the revisions' author
+                               QStringLiteral("training-lathe"), QStringLiteral("Tilte")});
 
     // Every id of core's catalogs has a text of the window, in Russian.
     const std::vector<std::string> someArgs = {"C022", "12", "34", "L3"};
@@ -872,6 +876,59 @@ void TestUiLanguage::russianCoreTexts() {
     }
     // A user's own note is shown as written, even one that begins as ours.
     QCOMPARE(studio::revisionNoteText("set the feed lower"), QStringLiteral("set the feed lower"));
+    // The constants dock's own notes, and its undo of one, stored in English
+    // and said in the reader's language (the note undone too).
+    {
+        const std::string set = db::noteText({"studio.set", {"C022", "5"}});
+        const std::string undo = db::noteText({"studio.undo", {set}});
+        QCOMPARE(QString::fromStdString(undo), QStringLiteral("undo: set C022 = 5 (K528 Studio)"));
+        QCOMPARE(studio::revisionNoteText(undo), QStringLiteral("отмена: задано: C022 = 5 (K528 Studio)"));
+    }
+
+    // Every prove-out finding in the window's language: the same Russian as
+    // core's catalog (what `k528 check --lang ru` prints).
+    for (const proveout::Text& t : proveout::texts()) {
+        QVERIFY2(studio::hasFindingText(t.id), t.id.data());
+        proveout::Finding f;
+        f.text = t.id;
+        f.args = {"40", "-2", "1"};
+        QCOMPARE(studio::findingText(f), QString::fromStdString(f.message(true)));
+        walker.check(QStringLiteral("prove-out finding %1").arg(fromView(t.id)), studio::findingText(f));
+    }
+
+    // The constants calculator's refusals.
+    {
+        const units::AxisScale scale = profile::axisScale(profile::builtin("training-lathe"), catalog::Axis::X);
+        for (const auto& calc : std::vector<std::function<void()>>{
+                 [&] { profile::calc::accelByValue(0, scale); },
+                 [&] { profile::calc::encoderRatio(5.0004, 1, 2500, scale); },
+                 [&] { profile::calc::speedParam(-1, scale); }}) {
+            try {
+                calc();
+                QFAIL("the calculator took a bad input");
+            } catch (const std::exception& e) {
+                walker.check("the constants calculator", studio::coreErrorText(e));
+            }
+        }
+    }
+
+    // A database's refusal of an edit the machine cannot hold (no findings).
+    {
+        db::OpenOptions o;
+        db::Database d = db::Database::open(std::filesystem::path(dir_.filePath("refusal.db").toStdString()), o);
+        db::Edit e;
+        e.simulation["Tilte"] = "oops";
+        try {
+            d.applyEdit("training-lathe", e);
+            QFAIL("a bad simulation key was kept");
+        } catch (const db::ValidationError& v) {
+            QVERIFY(v.findings().empty());
+            const QString text = studio::coreErrorText(v);
+            qInfo("db set refused: %s", qPrintable(text));
+            QVERIFY2(text.contains(QStringLiteral("ничего не записано")), qPrintable(text));
+            walker.check("a database's refusal without findings", text);
+        }
+    }
 
     // A machine that cannot be loaded, as File > Machine and the controller say it.
     const auto loadError = [&](const QString& what, const QString& nameOrPath) {

@@ -279,7 +279,7 @@ void CalculatorDialog::recalculate() {
         apply_->setEnabled(true);
     } catch (const std::exception& e) {
         consistent_ = 0;
-        html += QStringLiteral("<p style='color:#b00000'>%1</p>").arg(QString::fromUtf8(e.what()).toHtmlEscaped());
+        html += QStringLiteral("<p style='color:#b00000'>%1</p>").arg(coreErrorText(e).toHtmlEscaped());
         apply_->setEnabled(false);
     }
     html += QStringLiteral("<hr><p><b>%1</b></p><p>%2</p><p>%3</p>")

@@ -256,7 +256,11 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
         say(tr("Applied to the controller, but not kept in the database: %1").arg(why), true);
     });
     connect(editor_, &ConstantsEditor::kept, this, [this](int revision, const QString& note) {
-        say(tr("%1 — kept as revision %2 of %3").arg(note).arg(revision).arg(editor_->store().qName()), false);
+        say(tr("%1 — kept as revision %2 of %3")
+                .arg(revisionNoteText(note.toStdString()))
+                .arg(revision)
+                .arg(editor_->store().qName()),
+            false);
         note_->clear();
     });
     new ConstantsFollow(*this); // constants/constants_follow.cpp: other PCs' revisions, refusals

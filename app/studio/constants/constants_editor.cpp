@@ -5,6 +5,7 @@
 #include "catalog/cparams.h"
 #include "catalog/messages.h"
 #include "engine/controller.h"
+#include "db/notes.h"
 #include "language.h"
 #include "profile/validate.h"
 #include "controller/controller.h"
@@ -59,7 +60,8 @@ public:
         run(after_, note_, false);
     }
     void undo() override {
-        run(before_, QCoreApplication::translate("k528::studio::ConstantsEditor", "undo: %1").arg(note_), true);
+        // Stored as core's note (English), said in each reader's language.
+        run(before_, QString::fromStdString(db::noteText({"studio.undo", {note_.toStdString()}})), true);
     }
     static bool replaying; // the stack's index put back: nothing asked
 
@@ -189,7 +191,9 @@ bool ConstantsEditor::set(int number, std::int64_t value, const QString& note) {
     if (given.isEmpty() && noteProvider_)
         given = noteProvider_().trimmed();
     const QString n = given.isEmpty()
-                          ? QStringLiteral("set C%1 = %2 (K528 Studio)").arg(number, 3, 10, QChar('0')).arg(value)
+                          ? QString::fromStdString(db::noteText(
+                                {"studio.set", {QStringLiteral("C%1").arg(number, 3, 10, QChar('0')).toStdString(),
+                                                std::to_string(value)}}))
                           : given;
     // Asked of the controller first: only what it took goes onto the stack.
     auto result = std::make_shared<int>(-1); // -1 no answer yet, 0 refused, 1 taken

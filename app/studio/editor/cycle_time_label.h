@@ -31,8 +31,6 @@ public:
     void follow(const ProgramEditor* ed);
     // The last figure measured for the current text (seconds), if any.
     std::optional<double> seconds() const { return seconds_; }
-    // Whether a measurement is waiting or running.
-    bool measuring() const { return debounce_.isActive() || running_; }
 
     // "49.5 с", "3 мин 32.2 с" (ru) / "49.5 s", "3 min 32.2 s" (en).
     static QString durationText(double seconds);

@@ -6,6 +6,7 @@
 #include "history/history_service.h"
 #include "controller/controller.h"
 #include "controller/view_notice.h"
+#include "session/core_texts.h"
 #include "session/shop_database.h"
 #include "widgets.h"
 #include "workspace/pane_dock.h"
@@ -191,7 +192,7 @@ QString HistoryView::writeCsv(const QString& dbPath, const db::MessageFilter& f,
         if (!out.commit())
             return tr("Cannot write %1: %2").arg(path, out.errorString());
     } catch (const std::exception& e) {
-        return QString::fromUtf8(e.what());
+        return tr("Cannot export to %1: %2").arg(path, coreErrorText(e));
     }
     if (rows)
         *rows = n;

@@ -291,7 +291,6 @@ void ProveoutPane::markEditor() {
 }
 
 void ProveoutPane::fillFindings() {
-    const bool ru = currentLanguage() == QLatin1String("ru");
     table_->setRowCount(static_cast<int>(findings_.size()));
     for (int r = 0; r < table_->rowCount(); ++r) {
         const proveout::Finding& f = findings_[static_cast<std::size_t>(r)];
@@ -305,7 +304,7 @@ void ProveoutPane::fillFindings() {
         auto* line = new QTableWidgetItem(QString::number(f.line));
         line->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         table_->setItem(r, 3, line);
-        QString text = QString::fromStdString(f.message(ru));
+        QString text = findingText(f);
         if (f.occurrences > 1)
             text += QStringLiteral(" (×%1)").arg(f.occurrences);
         auto* msg = new QTableWidgetItem(text);

@@ -3,7 +3,10 @@
 #include "db/error.h"
 #include "db/notes.h"
 #include "language.h"
+#include "profile/calculator.h"
 #include "profile/problem.h"
+#include "profile/tools.h"
+#include "proveout/proveout.h"
 #include "profile/validate.h"
 #include "profile/text_format.h"
 #include "session/shop_database.h"
@@ -127,6 +130,20 @@ const Entry kProblems[] = {
         {"tool.key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "a tool key is tool.<station 1..8>.<key>")},
         {"tool.field", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "'%1' is not a key of a tool")},
         {"tool.no-kind", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the tool of station %1 has no kind (tool.%1.kind)")},
+        {"machine.item", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "machine %1: %2")},
+        {"calc.vmax", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Vmax must be a positive number")},
+        {"calc.run-up", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the run-up time must be a positive number")},
+        {"calc.braking", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the braking distance must be a positive number")},
+        {"calc.acceleration", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the acceleration must be a positive number")},
+        {"calc.umax", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Umax must be a positive number")},
+        {"calc.kv", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Kv must be a positive number")},
+        {"calc.screw-lead", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the screw lead must be a positive number")},
+        {"calc.gear-ratio", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the gear ratio must be a positive number")},
+        {"calc.encoder-lines", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the encoder must have at least one line")},
+        {"calc.lead-discretes", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the screw lead %1 mm is not a whole number of discretes (%2 mm)")},
+        {"calc.gear-fraction", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the gear ratio %1 is not a fraction with a denominator up to 100000")},
+        {"calc.speed", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "a speed must be zero or positive")},
+        {"calc.feed-reach", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)")},
 };
 
 // core/db/notes.cpp's catalog: the notes core and the desktop write.
@@ -142,6 +159,23 @@ const Entry kNotes[] = {
         {"studio.loaded", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "the machine as K528 Studio loaded it")},
         {"studio.kept", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "kept from the simulated controller's memory (K528 Studio)")},
         {"studio.editor", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "programs and messages from the editor (K528 Studio)")},
+        {"studio.set", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "set %1 = %2 (K528 Studio)")},
+        {"studio.undo", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "undo: %1")},
+};
+
+// core/proveout's findings (proveout::texts()), each text marked for the translators.
+const Entry kFindings[] = {
+        {"rapid-into-material", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A rapid (G00) enters the material of the blank: X%1 Z%2")},
+        {"rapid-into-material.dogleg", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A rapid (G00) enters the material at its dogleg: axis %3 arrives first (X%1 Z%2), although both end points are outside the blank")},
+        {"rapid-into-material.ring", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A rapid (G00) takes the wheel into the ring's material: X%1 Z%2")},
+        {"tool-into-chuck.jaws", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "Tool T%3 runs into the chuck's jaws: X%1 Z%2")},
+        {"tool-into-chuck.body", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "Tool T%3 runs into the chuck's body: X%1 Z%2")},
+        {"turret-into-chuck.jaws", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "The turret runs into the chuck's jaws (tool T%3 at X%1 Z%2)")},
+        {"turret-into-chuck.body", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "The turret runs into the chuck's body (tool T%3 at X%1 Z%2)")},
+        {"feed-spindle-stopped", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A feed into the material with the spindle stopped: X%1 Z%2")},
+        {"feed-wheel-stopped", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A feed into the ring's material with the wheel stopped: X%1 Z%2")},
+        {"manual-into-material", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A manual move takes the tool into the material of the blank: X%1 Z%2")},
+        {"cut-too-deep", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A cut %1 mm deep, deeper than tool T%2 takes (%3 mm)")},
 };
 
 // `pattern` with %1..%9 filled in one pass, as core fills its own texts
@@ -174,6 +208,25 @@ bool hasNoteText(std::string_view id) {
     return false;
 }
 
+bool hasFindingText(std::string_view id) {
+    for (const Entry& e : kFindings)
+        if (id == e.id)
+            return true;
+    return false;
+}
+
+QString findingText(const proveout::Finding& f) {
+    for (const Entry& e : kFindings) {
+        if (f.text != e.id)
+            continue;
+        QStringList args;
+        for (const std::string& a : f.args)
+            args << fromStd(a);
+        return fill(QCoreApplication::translate("k528::studio::ProveoutTexts", e.text), args);
+    }
+    return fromStd(f.message(false)); // an id without a translation: core's English
+}
+
 QString revisionNoteText(const std::string& summary) {
     const std::optional<db::Note> note = db::readNote(summary);
     if (!note)
@@ -183,7 +236,7 @@ QString revisionNoteText(const std::string& summary) {
             continue;
         QStringList args;
         for (const std::string& a : note->args)
-            args << fromStd(a);
+            args << (note->id == "studio.undo" ? revisionNoteText(a) : fromStd(a)); // the note undone
         return fill(QCoreApplication::translate("k528::studio::RevisionNotes", e.text), args);
     }
     return fromStd(summary);
@@ -216,6 +269,13 @@ QString fileErrorText(const profile::FileError& e) {
 QString coreErrorText(const std::exception& e) {
     if (const auto* f = dynamic_cast<const profile::FileError*>(&e))
         return fileErrorText(*f);
+    if (const auto* c = dynamic_cast<const profile::calc::CalcError*>(&e))
+        return problemText(c->problem);
+    if (const auto* t = dynamic_cast<const profile::ToolError*>(&e))
+        return problemText(t->problem());
+    if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && v->findings().empty() && !v->problem().empty())
+        return QCoreApplication::translate("k528::studio::CoreTexts", "rejected, nothing was written: %1")
+            .arg(problemText(v->problem()));
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty()) {
         // The cross-checks' findings: core says each in both languages.
         const bool ru = currentLanguage() == QLatin1String("ru");

@@ -14,6 +14,9 @@ namespace k528::profile {
 struct Problem;
 class FileError;
 } // namespace k528::profile
+namespace k528::proveout {
+struct Finding;
+} // namespace k528::proveout
 
 namespace k528::studio {
 
@@ -21,8 +24,10 @@ namespace k528::studio {
 QString problemText(const profile::Problem& p);
 // "<file>, line <n>: <problem>" («<файл>, строка <n>: …»).
 QString fileErrorText(const profile::FileError& e);
-// Any error core throws, for the window: a file's (fileErrorText), a
-// database's (databaseErrorText), else core's own words.
+// Any error core throws, for the window: a file's (fileErrorText), one with
+// a problem of core's catalog (the constants calculator's, a tool's, a
+// database's refusal of an item), a database's (databaseErrorText), else
+// core's own words.
 QString coreErrorText(const std::exception& e);
 // Reads the text file at `path` as core does (util::readInputFile: a
 // regular file of at most 16 MiB); false with `error` saying why in the
@@ -33,6 +38,10 @@ bool readTextFile(const QString& path, std::string& text, QString& error);
 // else the user's own words as written.
 QString revisionNoteText(const std::string& summary);
 bool hasNoteText(std::string_view id);
+// A prove-out finding (proveout::texts(): an id and its arguments), e.g.
+// «Инструмент T1 задевает кулачки патрона: X40 Z-2».
+QString findingText(const proveout::Finding& f);
+bool hasFindingText(std::string_view id);
 // The id has a text here (studio.ui_language: every id of core's catalog has).
 bool hasProblemText(std::string_view id);
 

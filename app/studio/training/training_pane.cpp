@@ -5,6 +5,7 @@
 #include "constants/constants_lock.h"
 
 #include "language.h"
+#include "session/core_texts.h"
 #include "session/shop_database.h"
 #include "training/exercise.h"
 #include "training/record.h"
@@ -496,7 +497,7 @@ bool TrainingPane::grade(const QString& text, const QString& file) {
         try {
             a.grade = watcher->result();
         } catch (const std::exception& err) {
-            status_ = tr("The attempt could not be graded: %1").arg(QString::fromUtf8(err.what()));
+            status_ = tr("The attempt could not be graded: %1").arg(coreErrorText(err));
             showGrade();
             return;
         }

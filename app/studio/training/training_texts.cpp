@@ -1,6 +1,7 @@
 #include "training/training_texts.h"
 
 #include "language.h"
+#include "profile/problem.h"
 
 #include <QCoreApplication>
 
@@ -96,7 +97,7 @@ QString trainingText(const training::Text& t) {
     if (pattern.isEmpty())
         return QString::fromStdString(training::render(t, argumentLanguage()));
     return QString::fromStdString(
-        training::fillTemplate(pattern.toStdString(), t.args, argumentLanguage()));
+        profile::fillPattern(pattern.toStdString(), training::argsIn(t.args, argumentLanguage())));
 }
 
 } // namespace k528::studio
