@@ -44,15 +44,23 @@ public:
     QString address() const { return tcptest::address(port_); }
     // Starts it and waits until it says it serves; false (with what it said) when it does not.
     bool start(const QStringList& more = {}, QByteArray* said = nullptr) {
+        begin(more);
+        return serving(said);
+    }
+    // Starts it without waiting (several started together, then each waited for).
+    void begin(const QStringList& more = {}) {
         stop();
         p_.setProcessChannelMode(QProcess::SeparateChannels);
         p_.start(cli_, QStringList{"serve", "--tcp", address()} + more);
+    }
+    // Waits until it says it serves.
+    bool serving(QByteArray* said = nullptr, int timeoutMs = 15000) {
         if (!p_.waitForStarted())
             return false;
         QByteArray text;
         QElapsedTimer t;
         t.start();
-        while (!text.contains("k528 serve:") && p_.state() == QProcess::Running && t.elapsed() < 15000) {
+        while (!text.contains("k528 serve:") && p_.state() == QProcess::Running && t.elapsed() < timeoutMs) {
             p_.waitForReadyRead(100);
             text += p_.readAllStandardError();
         }

@@ -6,7 +6,7 @@
 // while publishing, the publisher's goodbye, and the last will of a
 // publisher killed with SIGKILL.
 #include "cli_runner.h"
-#include "tcp_serve.h"
+#include "shop_machines.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -44,19 +44,15 @@ QList<Message> messages(const QByteArray& out) {
 class TestShopMqtt : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QString db_, overrun_;
-    std::vector<quint16> ports_;
-    std::vector<std::unique_ptr<tcptest::Serve>> serves_;
+    QString overrun_;
+    tcptest::ShopMachines shop_;
     QProcess broker_;
     QString mqtt_;
 
-    CliResult k528(QStringList args) {
-        args << "--db" << db_;
-        return runProgram(kCli, args, 60000);
-    }
+    CliResult k528(QStringList args) { return shop_.k528(std::move(args)); }
     // mosquitto_sub on `topic` until `count` messages came or `seconds` passed.
     void subscribe(QProcess& sub, const QString& topic, int count, int seconds) {
-        sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(ports_[3]), "-t", topic, "-v", "-C",
+        sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(shop_.ports[3]), "-t", topic, "-v", "-C",
                                     QString::number(count), "-W", QString::number(seconds)});
         QVERIFY(sub.waitForStarted());
     }
@@ -78,35 +74,23 @@ class TestShopMqtt : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        db_ = dir_.filePath("shop.db");
-        ports_ = tcptest::freePorts(4);
-        QCOMPARE(ports_.size(), std::size_t(4));
+        // Three machines: a1 in F7, a2 in F2 with keys from its standard input, a3 in F7; a port for the broker.
+        const QString failed =
+            shop_.start(kCli, QDir(dir_.path()), {"a1", "a2", "a3"},
+                        [](int i) { return i == 1 ? QStringList{"--stdin-keys"} : QStringList{"--keys", kF7}; }, 1);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
         // The broker: mosquitto as root listens on localhost only with -p.
-        broker_.start("mosquitto", {"-p", QString::number(ports_[3])});
+        broker_.start("mosquitto", {"-p", QString::number(shop_.ports[3])});
         QVERIFY(broker_.waitForStarted());
-        mqtt_ = "mqtt://127.0.0.1:" + QString::number(ports_[3]);
+        mqtt_ = "mqtt://127.0.0.1:" + QString::number(shop_.ports[3]);
         QTRY_VERIFY_WITH_TIMEOUT(
             [&] {
                 QTcpSocket s;
-                s.connectToHost("127.0.0.1", ports_[3]);
+                s.connectToHost("127.0.0.1", shop_.ports[3]);
                 return s.waitForConnected(200);
             }(),
             10000);
-        // Three machines: a1 in F7, a2 in F2 with keys from its standard input, a3 in F7.
-        QVERIFY2(k528({"db", "init"}).exitCode == 0, "db init");
-        const QString file = dir_.filePath("lathe.k528m");
-        QVERIFY(k528({"db", "export", "training-lathe", "--out", file}).exitCode == 0);
-        for (int i = 0; i < 3; ++i) {
-            const QString name = QStringLiteral("a%1").arg(i + 1);
-            CliResult r = k528({"db", "import", file, "--as", name});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-            r = k528({"db", "set", name, "line=tcp://127.0.0.1:" + QString::number(ports_[i]) + "/1"});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-            serves_.push_back(std::make_unique<tcptest::Serve>(kCli, ports_[i]));
-            QByteArray said;
-            QVERIFY2(serves_.back()->start(i == 1 ? QStringList{"--stdin-keys"} : QStringList{"--keys", kF7}, &said),
-                     said.constData());
-        }
+        const QString file = shop_.machineFile;
         // A lathe whose X slide stands beyond its limit switch: an alarm at power-on.
         overrun_ = dir_.filePath("overrun.k528m");
         QFile f(file);
@@ -119,7 +103,7 @@ private slots:
         o.write(text.toUtf8());
     }
     void cleanupTestCase() {
-        serves_.clear();
+        shop_.stop();
         broker_.terminate();
         broker_.waitForFinished(5000);
     }
@@ -127,7 +111,7 @@ private slots:
     void publishesStatesAlarmsAndGoodbye() {
         QProcess pub;
         pub.start(kCli, {"shop", "publish", "--mqtt", mqtt_, "--interval-ms", "100", "--client-id", "shop-test",
-                         "--db", db_});
+                         "--db", shop_.db});
         QVERIFY(pub.waitForStarted());
         QByteArray said;
         QTRY_VERIFY_WITH_TIMEOUT((said += pub.readAllStandardError()).contains("k528 shop publish: 3 machines"), 10000);
@@ -159,8 +143,8 @@ private slots:
         QProcess change;
         subscribe(change, "k528/a2/state", 2, 10); // the retained one, then the change
         QTest::qWait(300);
-        serves_[1]->process().write("F1\n");
-        QVERIFY(serves_[1]->process().waitForBytesWritten(3000));
+        shop_.serves[1]->process().write("F1\n");
+        QVERIFY(shop_.serves[1]->process().waitForBytesWritten(3000));
         QByteArray out = readUntil(change, [](const QByteArray& o) { return o.count('\n') >= 2; }, 10000);
         QList<Message> c = messages(out);
         QCOMPARE(c.size(), 2);
@@ -170,11 +154,11 @@ private slots:
         QProcess alarms;
         subscribe(alarms, "k528/a3/alarms", 2, 30);
         QTest::qWait(300);
-        serves_[2]->kill();
-        QVERIFY2(serves_[2]->start({"--keys", kF7, "--profile", overrun_, "--db", db_}, &said), said.constData());
+        shop_.serves[2]->kill();
+        QVERIFY2(shop_.serves[2]->start({"--keys", kF7, "--profile", overrun_, "--db", shop_.db}, &said), said.constData());
         out = readUntil(alarms, [](const QByteArray& o) { return o.count('\n') >= 1; }, 10000);
-        serves_[2]->kill();
-        QVERIFY2(serves_[2]->start({"--keys", kF7}, &said), said.constData());
+        shop_.serves[2]->kill();
+        QVERIFY2(shop_.serves[2]->start({"--keys", kF7}, &said), said.constData());
         out += readUntil(alarms, [](const QByteArray& o) { return o.count('\n') >= 1; }, 10000);
         const QList<Message> a = messages(out);
         QCOMPARE(a.size(), 2);
@@ -199,7 +183,7 @@ private slots:
     void aKilledPublisherLeavesItsLastWill() {
         QProcess pub;
         pub.start(kCli, {"shop", "publish", "--mqtt", mqtt_, "--interval-ms", "200", "--client-id", "victim", "--db",
-                         db_});
+                         shop_.db});
         QVERIFY(pub.waitForStarted());
         QByteArray said;
         QTRY_VERIFY_WITH_TIMEOUT((said += pub.readAllStandardError()).contains("k528 shop publish:"), 10000);

@@ -5,7 +5,7 @@
 // during `shop status --watch`, a gateway that adds 20–50 ms each way (a
 // delaying proxy).
 #include "cli_runner.h"
-#include "tcp_serve.h"
+#include "shop_machines.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>
@@ -33,14 +33,9 @@ QString machineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLat
 class TestShopStatus : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QString db_;
-    std::vector<quint16> ports_;
-    std::vector<std::unique_ptr<tcptest::Serve>> serves_;
+    tcptest::ShopMachines shop_;
 
-    CliResult k528(QStringList args, int timeoutMs = 60000) {
-        args << "--db" << db_;
-        return runProgram(kCli, args, timeoutMs);
-    }
+    CliResult k528(QStringList args, int timeoutMs = 60000) { return shop_.k528(std::move(args), timeoutMs); }
     // Machines with an even index in F7 «РАБОТА С ПЭВМ», the others in F2 (after power-on).
     QStringList keysOf(int i) const { return i % 2 == 0 ? QStringList{"--keys", kF7} : QStringList{}; }
     static QJsonArray jsonList(const QString& text) { return QJsonDocument::fromJson(text.toUtf8()).array(); }
@@ -48,41 +43,15 @@ class TestShopStatus : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        db_ = dir_.filePath("shop.db");
-        ports_ = tcptest::freePorts(kMachines + 2);
-        QCOMPARE(ports_.size(), std::size_t(kMachines + 2));
-        // The database: sixteen machines made from the built-in lathe, each with its line.
-        CliResult r = k528({"db", "init"});
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QString file = dir_.filePath("lathe.k528m");
-        r = k528({"db", "export", "training-lathe", "--out", file});
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        for (int i = 0; i < kMachines; ++i) {
-            r = k528({"db", "import", file, "--as", machineName(i)});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-            r = k528({"db", "set", machineName(i), "line=tcp://127.0.0.1:" + QString::number(ports_[i]) + "/1"});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
-        }
-        // The sixteen controllers, started together; every one says it serves.
-        for (int i = 0; i < kMachines; ++i) {
-            serves_.push_back(std::make_unique<tcptest::Serve>(kCli, ports_[i]));
-            serves_.back()->process().start(kCli, QStringList{"serve", "--tcp", serves_.back()->address()} + keysOf(i));
-        }
-        for (auto& s : serves_) {
-            QVERIFY(s->process().waitForStarted(10000));
-            QByteArray said;
-            QElapsedTimer t;
-            t.start();
-            while (!said.contains("k528 serve:") && t.elapsed() < 30000 && s->process().state() == QProcess::Running) {
-                s->process().waitForReadyRead(100);
-                said += s->process().readAllStandardError();
-            }
-            said += s->process().readAllStandardError();
-            QVERIFY2(said.contains("k528 serve:"),
-                     qPrintable(QString("%1: exit %2: %3").arg(s->address()).arg(s->process().exitCode()).arg(QString::fromUtf8(said))));
-        }
+        // The database: sixteen machines made from the built-in lathe, each
+        // with its line; the sixteen controllers, started together; two spare ports.
+        QStringList names;
+        for (int i = 0; i < kMachines; ++i)
+            names << machineName(i);
+        const QString failed = shop_.start(kCli, QDir(dir_.path()), names, [this](int i) { return keysOf(i); }, 2);
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
     }
-    void cleanupTestCase() { serves_.clear(); }
+    void cleanupTestCase() { shop_.stop(); }
 
     void statusListsSixteenWithTheirModes() {
         const CliResult r = k528({"shop", "status", "--json"});
@@ -97,7 +66,7 @@ private slots:
             QCOMPARE(m["pc_ready"].toBool(), i % 2 == 0);
             QCOMPARE(m["state"].toString(), QStringLiteral("idle"));
             QCOMPARE(m["alarms"].toArray().size(), 0);
-            QCOMPARE(m["line"].toString(), "tcp://127.0.0.1:" + QString::number(ports_[i]) + "/1");
+            QCOMPARE(m["line"].toString(), "tcp://127.0.0.1:" + QString::number(shop_.ports[i]) + "/1");
         }
         // Plain: a line each; named machines only.
         const CliResult some = k528({"shop", "status", "m03", "m04"});
@@ -112,7 +81,7 @@ private slots:
     void mbpollReadsTheirRegisters() {
         for (int i = 0; i < kMachines; ++i) {
             const CliResult r = runProgram("mbpoll",
-                                           {"-m", "tcp", "-p", QString::number(ports_[i]), "-a", "1", "-0", "-1", "-o",
+                                           {"-m", "tcp", "-p", QString::number(shop_.ports[i]), "-a", "1", "-0", "-1", "-o",
                                             "1", "-r", "6000", "-c", "1", "-t", "4", "127.0.0.1"},
                                            10000);
             QVERIFY2(r.out.contains(i % 2 == 0 ? "[6000]: \t7" : "[6000]: \t2"), qPrintable(r.out + r.err));
@@ -121,7 +90,7 @@ private slots:
 
     void aKilledServerIsOfflineWithinASecondAndBack() {
         QProcess watch;
-        watch.start(kCli, {"shop", "status", "--watch", "--json", "--interval-ms", "100", "--seconds", "20", "--db", db_});
+        watch.start(kCli, {"shop", "status", "--watch", "--json", "--interval-ms", "100", "--seconds", "20", "--db", shop_.db});
         QVERIFY(watch.waitForStarted());
         QByteArray out;
         // The first poll of every machine: sixteen objects.
@@ -130,7 +99,7 @@ private slots:
         const QByteArray lost = "{\"machine\":\"" + machineName(k).toUtf8() + "\",\"line\":";
         QElapsedTimer t;
         t.start();
-        serves_[k]->kill();
+        shop_.serves[k]->kill();
         const qsizetype before = out.size();
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).mid(before).contains("\"online\":false"), 3000);
         const qint64 offlineMs = t.elapsed();
@@ -141,7 +110,7 @@ private slots:
         QCOMPARE(after.count("\"online\":false"), 1);
         // Restarted (now in F7): online again, the others untouched.
         QByteArray said;
-        QVERIFY2(serves_[k]->start({"--keys", kF7}, &said), said.constData());
+        QVERIFY2(shop_.serves[k]->start({"--keys", kF7}, &said), said.constData());
         const qsizetype mark = out.size();
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).mid(mark).contains(lost), 5000);
         const QByteArray back = out.mid(mark);
@@ -177,7 +146,7 @@ private slots:
         QVERIFY2(r.err.contains("baud is a rate in bit/s"), qPrintable(r.err));
         r = k528({"shop", "status", "--json", "m01"});
         QVERIFY2(r.exitCode == 0 && jsonList(r.out).size() == 1, qPrintable(r.out + r.err));
-        QCOMPARE(jsonList(r.out)[0].toObject()["line"].toString(), "tcp://127.0.0.1:" + QString::number(ports_[0]) + "/1");
+        QCOMPARE(jsonList(r.out)[0].toObject()["line"].toString(), "tcp://127.0.0.1:" + QString::number(shop_.ports[0]) + "/1");
         // A machine without a line, named: said so; an unknown one too.
         r = k528({"shop", "status", "training-lathe"});
         QCOMPARE(r.exitCode, 2);
@@ -187,7 +156,7 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("no machine 'nosuch'"), qPrintable(r.err));
         // A line nobody listens on: offline with the reason, the others as they are.
-        r = k528({"db", "set", "training-lathe", "line=tcp://127.0.0.1:" + QString::number(ports_[kMachines]) + "/1"});
+        r = k528({"db", "set", "training-lathe", "line=tcp://127.0.0.1:" + QString::number(shop_.ports[kMachines]) + "/1"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         r = k528({"shop", "status", "--json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
@@ -212,10 +181,10 @@ private slots:
 
     void aSlowGatewayKeepsUp() {
         // m01 behind a proxy that holds every chunk 20–50 ms each way.
-        const quint16 proxyPort = ports_[kMachines + 1];
+        const quint16 proxyPort = shop_.ports[kMachines + 1];
         QProcess proxy;
         proxy.start("/usr/bin/python3", {QStringLiteral(K528_SOURCE_DIR "/tests/shop/delay_proxy.py"),
-                                         QString::number(proxyPort), QString::number(ports_[0]), "20", "50"});
+                                         QString::number(proxyPort), QString::number(shop_.ports[0]), "20", "50"});
         QVERIFY(proxy.waitForStarted());
         QByteArray said;
         QTRY_VERIFY2_WITH_TIMEOUT((said += proxy.readAllStandardOutput() + proxy.readAllStandardError()).contains("listening"),
@@ -236,7 +205,7 @@ private slots:
         QVERIFY2(!r.out.contains("\"online\":false"), qPrintable(r.out));
         proxy.kill();
         proxy.waitForFinished(3000);
-        r = k528({"db", "set", "m01", "line=tcp://127.0.0.1:" + QString::number(ports_[0]) + "/1"});
+        r = k528({"db", "set", "m01", "line=tcp://127.0.0.1:" + QString::number(shop_.ports[0]) + "/1"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     }
 };

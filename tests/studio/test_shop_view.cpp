@@ -14,7 +14,7 @@
 #include "main_window.h"
 #include "session/machine_source.h"
 #include "shop/shop_view.h"
-#include "tcp_serve.h"
+#include "shop_machines.h"
 #include "test_util.h"
 #include "workspace/workspaces.h"
 
@@ -55,14 +55,8 @@ QString machineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLat
 class TestShopView : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    QString db_;
-    std::vector<quint16> ports_;
-    std::vector<std::unique_ptr<tcptest::Serve>> serves_;
+    tcptest::ShopMachines shop_;
 
-    CliResult k528(QStringList args) {
-        args << "--db" << db_;
-        return runProgram(kCli, args, 60000);
-    }
     // m01 in F7 «РАБОТА С ПЭВМ», the others in F2 (after power-on).
     QStringList keysOf(int i) const { return i == 0 ? QStringList{"--keys", kF7} : QStringList{}; }
 
@@ -72,29 +66,15 @@ private slots:
         QSettings().clear();
         QVERIFY(setLanguage("en"));
         QVERIFY(dir_.isValid());
-        db_ = dir_.filePath("shop.db");
-        qputenv("K528_DB", db_.toUtf8());
+        qputenv("K528_DB", dir_.filePath("shop.db").toUtf8());
         qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_TCP_PLUGIN)).absolutePath().toUtf8());
-        ports_ = tcptest::freePorts(kMachines);
-        QCOMPARE(ports_.size(), std::size_t(kMachines));
-        CliResult r = k528({"db", "init"});
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QString file = dir_.filePath("lathe.k528m");
-        r = k528({"db", "export", "training-lathe", "--out", file});
-        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        for (int i = 0; i < kMachines; ++i) {
-            r = k528({"db", "import", file, "--as", machineName(i)});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-            r = k528({"db", "set", machineName(i), "line=tcp://127.0.0.1:" + QString::number(ports_[i]) + "/1"});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
-        }
-        for (int i = 0; i < kMachines; ++i) {
-            serves_.push_back(std::make_unique<tcptest::Serve>(kCli, ports_[i]));
-            QByteArray said;
-            QVERIFY2(serves_.back()->start(keysOf(i), &said), said.constData());
-        }
+        QStringList names;
+        for (int i = 0; i < kMachines; ++i)
+            names << machineName(i);
+        const QString failed = shop_.start(kCli, QDir(dir_.path()), names, [this](int i) { return keysOf(i); });
+        QVERIFY2(failed.isEmpty(), qPrintable(failed));
     }
-    void cleanupTestCase() { serves_.clear(); }
+    void cleanupTestCase() { shop_.stop(); }
 
     // A tile per machine with its mode; the poller runs only while shown.
     void tilesShowEveryMachine() {
@@ -136,7 +116,7 @@ private slots:
         ShopView* shop = w.shopView();
         QTRY_VERIFY_WITH_TIMEOUT(shop->state("m02") && shop->state("m02")->online, 10000);
         QElapsedTimer t;
-        serves_[1]->kill();
+        shop_.serves[1]->kill();
         t.start();
         QTRY_VERIFY_WITH_TIMEOUT(!shop->state("m02")->online, 5000);
         const qint64 ms = t.elapsed();
@@ -145,7 +125,7 @@ private slots:
         QCOMPARE(shop->tile("m02")->stateText(), QString("offline"));
         QVERIFY(shop->state("m01")->online); // the others go on
         QByteArray said;
-        QVERIFY2(serves_[1]->start({}, &said), said.constData());
+        QVERIFY2(shop_.serves[1]->start({}, &said), said.constData());
         t.restart();
         QTRY_VERIFY_WITH_TIMEOUT(shop->state("m02")->online, 5000);
         qInfo("online again %lld ms after the server said it serves", static_cast<long long>(t.elapsed()));
@@ -167,7 +147,7 @@ private slots:
         QVERIFY(dock);
         // Connect offers the database's machines with their lines.
         QCOMPARE(dock->machineBox()->count(), kMachines + 1);
-        QVERIFY(dock->machineBox()->itemText(1).contains(QString::number(ports_[0])));
+        QVERIFY(dock->machineBox()->itemText(1).contains(QString::number(shop_.ports[0])));
         for (int i : {2, 0}) {
             const QString name = machineName(i);
             QTRY_VERIFY(shop->tile(name)->isVisible());
@@ -175,7 +155,7 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(dock->link() && dock->link()->isOpen() &&
                                          w.viewedController() == dock->link(),
                                      10000);
-            QVERIFY2(dock->link()->where().contains(QString::number(ports_[static_cast<std::size_t>(i)])),
+            QVERIFY2(dock->link()->where().contains(QString::number(shop_.ports[static_cast<std::size_t>(i)])),
                      qPrintable(dock->link()->where()));
             QCOMPARE(dock->connectedMachine(), name);
             QVERIFY(dock->link()->description().contains("Modbus TCP"));
