@@ -120,7 +120,7 @@ private slots:
         QCOMPARE(watch.exitCode(), 0);
         // The time in each state went into the database (written when a state
         // changed and at the end): every machine's, m05's offline time too.
-        k528::db::Database d = k528::db::Database::open(k528::db::Location::parse(db_.toStdString()));
+        k528::db::Database d = k528::db::Database::open(k528::db::Location::parse(shop_.db.toStdString()));
         const auto rows = k528::db::stateTimes(d, k528::shop::localDay(QDateTime::currentMSecsSinceEpoch()));
         std::map<std::string, std::int64_t> total;
         std::int64_t offline = 0;

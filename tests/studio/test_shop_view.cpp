@@ -231,7 +231,7 @@ private slots:
         const std::string source = "studio@" + QSysInfo::machineHostName().toStdString();
         std::int64_t before = 0;
         {
-            db::Database d = db::Database::open(db::Location::parse(db_.toStdString()));
+            db::Database d = db::Database::open(db::Location::parse(shop_.db.toStdString()));
             for (const db::StateTime& r : db::stateTimes(d, today.toStdString(), source))
                 if (r.machine == "m03")
                     before += r.ms;
@@ -262,7 +262,7 @@ private slots:
         QProcess studio;
         QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
         env.insert("XDG_CONFIG_HOME", config.path());
-        env.insert("K528_DB", db_);
+        env.insert("K528_DB", shop_.db);
         studio.setProcessEnvironment(env);
         studio.start(QStringLiteral(K528_STUDIO), {"--lang", "en", "--workspace", "shop", "--screenshot",
                                                    config.filePath("shot.png"), "--screenshot-delay", "5000"});
@@ -271,7 +271,7 @@ private slots:
         QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
         std::int64_t after = 0;
         {
-            db::Database d = db::Database::open(db::Location::parse(db_.toStdString()));
+            db::Database d = db::Database::open(db::Location::parse(shop_.db.toStdString()));
             int machines = 0;
             for (const db::StateTime& r : db::stateTimes(d, today.toStdString(), source)) {
                 if (r.machine == "m03")
