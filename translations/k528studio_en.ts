@@ -1082,6 +1082,14 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>The trainer has unlocked the machine constants</source>
         <translation>The trainer has unlocked the machine constants</translation>
     </message>
+    <message>
+        <source>Cutting data...</source>
+        <translation>Cutting data...</translation>
+    </message>
+    <message>
+        <source>Spindle speed from the cutting speed and the diameter, feed per minute, the grinding wheel's surface speed from R207</source>
+        <translation>Spindle speed from the cutting speed and the diameter, feed per minute, the grinding wheel's surface speed from R207</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::Controller</name>
@@ -1966,6 +1974,73 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>rejected, nothing was written: %1</source>
         <translation>rejected, nothing was written: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::CuttingDataDialog</name>
+    <message>
+        <source>Cutting data</source>
+        <translation>Cutting data</translation>
+    </message>
+    <message>
+        <source>Spindle speed: n = 1000·v / (π·D)</source>
+        <translation>Spindle speed: n = 1000·v / (π·D)</translation>
+    </message>
+    <message>
+        <source>Cutting speed v, m/min</source>
+        <translation>Cutting speed v, m/min</translation>
+    </message>
+    <message>
+        <source>Diameter D, mm</source>
+        <translation>Diameter D, mm</translation>
+    </message>
+    <message>
+        <source>Spindle speed n</source>
+        <translation>Spindle speed n</translation>
+    </message>
+    <message>
+        <source>Feed per minute: F = f·n</source>
+        <translation>Feed per minute: F = f·n</translation>
+    </message>
+    <message>
+        <source>Feed per revolution f, mm/rev</source>
+        <translation>Feed per revolution f, mm/rev</translation>
+    </message>
+    <message>
+        <source>Feed F</source>
+        <translation>Feed F</translation>
+    </message>
+    <message>
+        <source>Grinding wheel: v = π·D·n / 60000</source>
+        <translation>Grinding wheel: v = π·D·n / 60000</translation>
+    </message>
+    <message>
+        <source>R207 wheel diameter, discretes of X</source>
+        <translation>R207 wheel diameter, discretes of X</translation>
+    </message>
+    <message>
+        <source>Wheel speed, rev/min</source>
+        <translation>Wheel speed, rev/min</translation>
+    </message>
+    <message>
+        <source>Surface speed</source>
+        <translation>Surface speed</translation>
+    </message>
+    <message>
+        <source>%1 rev/min</source>
+        <translation>%1 rev/min</translation>
+    </message>
+    <message>
+        <source>%1 mm/min at n = %2 rev/min</source>
+        <translation>%1 mm/min at n = %2 rev/min</translation>
+    </message>
+    <message>
+        <source>%1 m/s (wheel Ø%2 mm)</source>
+        <translation>%1 m/s (wheel Ø%2 mm)</translation>
+    </message>
+    <message>
+        <source>— (no wheel diameter in R207)</source>
+        <translation>— (no wheel diameter in R207)</translation>
     </message>
 </context>
 <context>
@@ -3044,6 +3119,46 @@ Its comment stays: %3</translation>
     <message>
         <source>Setup sheet: %1</source>
         <translation>Setup sheet: %1</translation>
+    </message>
+    <message>
+        <source>Teach-in</source>
+        <translation>Teach-in</translation>
+    </message>
+    <message>
+        <source>Insert the controller's position as a frame</source>
+        <translation>Insert the controller's position as a frame</translation>
+    </message>
+    <message>
+        <source>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</source>
+        <translation>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</translation>
+    </message>
+    <message>
+        <source>Position into an R-parameter</source>
+        <translation>Position into an R-parameter</translation>
+    </message>
+    <message>
+        <source>Open a program file in the editor to teach a position into it</source>
+        <translation>Open a program file in the editor to teach a position into it</translation>
+    </message>
+    <message>
+        <source>No controller is viewed: no position to teach</source>
+        <translation>No controller is viewed: no position to teach</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axes: no position to teach</source>
+        <translation>The viewed controller has no axes: no position to teach</translation>
+    </message>
+    <message>
+        <source>Taught: %1</source>
+        <translation>Taught: %1</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axis %1</source>
+        <translation>The viewed controller has no axis %1</translation>
+    </message>
+    <message>
+        <source>Taught: %1 (%2 mm)</source>
+        <translation>Taught: %1 (%2 mm)</translation>
     </message>
 </context>
 <context>
@@ -4927,6 +5042,18 @@ Its comment stays: %3</translation>
         <source>Database %1: the presets shown are those of revision %2 of %3</source>
         <translation>Database %1: the presets shown are those of revision %2 of %3</translation>
     </message>
+    <message>
+        <source>Trial part...</source>
+        <translation>Trial part...</translation>
+    </message>
+    <message>
+        <source>The size measured on the trial part against the drawing: the change of the tool's offset R-parameter, kept as the machine's preset</source>
+        <translation>The size measured on the trial part against the drawing: the change of the tool's offset R-parameter, kept as the machine's preset</translation>
+    </message>
+    <message>
+        <source>Kept as revision %1; R%2 not set in the controller: %3</source>
+        <translation>Kept as revision %1; R%2 not set in the controller: %3</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::RevisionNotes</name>
@@ -5669,6 +5796,65 @@ Details: %3</translation>
     <message>
         <source>The class the constants are locked for:</source>
         <translation>The class the constants are locked for:</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::TrialPartDialog</name>
+    <message>
+        <source>Trial part: correct a tool's offset</source>
+        <translation>Trial part: correct a tool's offset</translation>
+    </message>
+    <message>
+        <source>X: a diameter</source>
+        <translation>X: a diameter</translation>
+    </message>
+    <message>
+        <source>Z: a length</source>
+        <translation>Z: a length</translation>
+    </message>
+    <message>
+        <source>X of this machine shows a diameter: the offset changes by the diameter's error.</source>
+        <translation>X of this machine shows a diameter: the offset changes by the diameter's error.</translation>
+    </message>
+    <message>
+        <source>X of this machine shows a radius: the offset changes by half the diameter's error.</source>
+        <translation>X of this machine shows a radius: the offset changes by half the diameter's error.</translation>
+    </message>
+    <message>
+        <source>A size that came out larger than the drawing's was cut with too large an offset: the new offset is the old one minus the error.</source>
+        <translation>A size that came out larger than the drawing's was cut with too large an offset: the new offset is the old one minus the error.</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Tool</translation>
+    </message>
+    <message>
+        <source>Measured on</source>
+        <translation>Measured on</translation>
+    </message>
+    <message>
+        <source>Measured, mm</source>
+        <translation>Measured, mm</translation>
+    </message>
+    <message>
+        <source>Drawing, mm</source>
+        <translation>Drawing, mm</translation>
+    </message>
+    <message>
+        <source>Keep as the preset</source>
+        <translation>Keep as the preset</translation>
+    </message>
+    <message>
+        <source>The new offset becomes the machine's preset (its next revision in the database, the measurement as its note) and goes into the controller</source>
+        <translation>The new offset becomes the machine's preset (its next revision in the database, the measurement as its note) and goes into the controller</translation>
+    </message>
+    <message>
+        <source>The machine's tools are not described (tool.N.* of its settings).</source>
+        <translation>The machine's tools are not described (tool.N.* of its settings).</translation>
+    </message>
+    <message>
+        <source>Error %1 mm: R%2 %3 → %4 (offset %5 mm)</source>
+        <translation>Error %1 mm: R%2 %3 → %4 (offset %5 mm)</translation>
     </message>
 </context>
 <context>

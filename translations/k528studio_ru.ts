@@ -1082,6 +1082,14 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>The trainer has unlocked the machine constants</source>
         <translation>Преподаватель снял блокировку констант станка</translation>
     </message>
+    <message>
+        <source>Cutting data...</source>
+        <translation>Режимы резания...</translation>
+    </message>
+    <message>
+        <source>Spindle speed from the cutting speed and the diameter, feed per minute, the grinding wheel's surface speed from R207</source>
+        <translation>Частота вращения шпинделя по скорости резания и диаметру, минутная подача, окружная скорость шлифовального круга по R207</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::Controller</name>
@@ -1966,6 +1974,73 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>rejected, nothing was written: %1</source>
         <translation>отклонено, ничего не записано: %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::CuttingDataDialog</name>
+    <message>
+        <source>Cutting data</source>
+        <translation>Режимы резания</translation>
+    </message>
+    <message>
+        <source>Spindle speed: n = 1000·v / (π·D)</source>
+        <translation>Частота вращения шпинделя: n = 1000·v / (π·D)</translation>
+    </message>
+    <message>
+        <source>Cutting speed v, m/min</source>
+        <translation>Скорость резания v, м/мин</translation>
+    </message>
+    <message>
+        <source>Diameter D, mm</source>
+        <translation>Диаметр D, мм</translation>
+    </message>
+    <message>
+        <source>Spindle speed n</source>
+        <translation>Частота вращения n</translation>
+    </message>
+    <message>
+        <source>Feed per minute: F = f·n</source>
+        <translation>Минутная подача: F = f·n</translation>
+    </message>
+    <message>
+        <source>Feed per revolution f, mm/rev</source>
+        <translation>Подача на оборот f, мм/об</translation>
+    </message>
+    <message>
+        <source>Feed F</source>
+        <translation>Подача F</translation>
+    </message>
+    <message>
+        <source>Grinding wheel: v = π·D·n / 60000</source>
+        <translation>Шлифовальный круг: v = π·D·n / 60000</translation>
+    </message>
+    <message>
+        <source>R207 wheel diameter, discretes of X</source>
+        <translation>R207 диаметр круга, дискреты X</translation>
+    </message>
+    <message>
+        <source>Wheel speed, rev/min</source>
+        <translation>Частота вращения круга, об/мин</translation>
+    </message>
+    <message>
+        <source>Surface speed</source>
+        <translation>Окружная скорость</translation>
+    </message>
+    <message>
+        <source>%1 rev/min</source>
+        <translation>%1 об/мин</translation>
+    </message>
+    <message>
+        <source>%1 mm/min at n = %2 rev/min</source>
+        <translation>%1 мм/мин при n = %2 об/мин</translation>
+    </message>
+    <message>
+        <source>%1 m/s (wheel Ø%2 mm)</source>
+        <translation>%1 м/с (круг Ø%2 мм)</translation>
+    </message>
+    <message>
+        <source>— (no wheel diameter in R207)</source>
+        <translation>— (в R207 нет диаметра круга)</translation>
     </message>
 </context>
 <context>
@@ -3044,6 +3119,46 @@ Its comment stays: %3</source>
     <message>
         <source>Setup sheet: %1</source>
         <translation>Карта наладки: %1</translation>
+    </message>
+    <message>
+        <source>Teach-in</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Insert the controller's position as a frame</source>
+        <translation>Вставить положение УЧПУ кадром</translation>
+    </message>
+    <message>
+        <source>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</source>
+        <translation>Положение осей показываемого УЧПУ (текущие координаты, как на его пульте) кадром после строки курсора</translation>
+    </message>
+    <message>
+        <source>Position into an R-parameter</source>
+        <translation>Положение в R-параметр</translation>
+    </message>
+    <message>
+        <source>Open a program file in the editor to teach a position into it</source>
+        <translation>Откройте файл программ в редакторе, чтобы записать в него положение</translation>
+    </message>
+    <message>
+        <source>No controller is viewed: no position to teach</source>
+        <translation>УЧПУ не показывается: положения для записи нет</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axes: no position to teach</source>
+        <translation>У показываемого УЧПУ нет осей: положения для записи нет</translation>
+    </message>
+    <message>
+        <source>Taught: %1</source>
+        <translation>Записано: %1</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axis %1</source>
+        <translation>У показываемого УЧПУ нет оси %1</translation>
+    </message>
+    <message>
+        <source>Taught: %1 (%2 mm)</source>
+        <translation>Записано: %1 (%2 мм)</translation>
     </message>
 </context>
 <context>
@@ -4927,6 +5042,18 @@ Its comment stays: %3</source>
         <source>Database %1: the presets shown are those of revision %2 of %3</source>
         <translation>База данных %1: показаны предустановки ревизии %2 станка %3</translation>
     </message>
+    <message>
+        <source>Trial part...</source>
+        <translation>Пробная деталь...</translation>
+    </message>
+    <message>
+        <source>The size measured on the trial part against the drawing: the change of the tool's offset R-parameter, kept as the machine's preset</source>
+        <translation>Размер, измеренный на пробной детали, против чертёжного: изменение R-параметра коррекции инструмента, сохраняемое как предустановка станка</translation>
+    </message>
+    <message>
+        <source>Kept as revision %1; R%2 not set in the controller: %3</source>
+        <translation>Сохранено как ревизия %1; R%2 в УЧПУ не записан: %3</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::RevisionNotes</name>
@@ -5669,6 +5796,65 @@ Details: %3</source>
     <message>
         <source>The class the constants are locked for:</source>
         <translation>Группа, для которой блокируются константы:</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::TrialPartDialog</name>
+    <message>
+        <source>Trial part: correct a tool's offset</source>
+        <translation>Пробная деталь: коррекция инструмента</translation>
+    </message>
+    <message>
+        <source>X: a diameter</source>
+        <translation>X: диаметр</translation>
+    </message>
+    <message>
+        <source>Z: a length</source>
+        <translation>Z: длина</translation>
+    </message>
+    <message>
+        <source>X of this machine shows a diameter: the offset changes by the diameter's error.</source>
+        <translation>Ось X этого станка индицирует диаметр: коррекция меняется на ошибку диаметра.</translation>
+    </message>
+    <message>
+        <source>X of this machine shows a radius: the offset changes by half the diameter's error.</source>
+        <translation>Ось X этого станка индицирует радиус: коррекция меняется на половину ошибки диаметра.</translation>
+    </message>
+    <message>
+        <source>A size that came out larger than the drawing's was cut with too large an offset: the new offset is the old one minus the error.</source>
+        <translation>Размер больше чертёжного получен с завышенной коррекцией: новая коррекция равна старой минус ошибка.</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Инструмент</translation>
+    </message>
+    <message>
+        <source>Measured on</source>
+        <translation>Измерено по</translation>
+    </message>
+    <message>
+        <source>Measured, mm</source>
+        <translation>Измерено, мм</translation>
+    </message>
+    <message>
+        <source>Drawing, mm</source>
+        <translation>По чертежу, мм</translation>
+    </message>
+    <message>
+        <source>Keep as the preset</source>
+        <translation>Сохранить как предустановку</translation>
+    </message>
+    <message>
+        <source>The new offset becomes the machine's preset (its next revision in the database, the measurement as its note) and goes into the controller</source>
+        <translation>Новая коррекция становится предустановкой станка (следующая ревизия в базе данных, измерение — в примечании) и записывается в УЧПУ</translation>
+    </message>
+    <message>
+        <source>The machine's tools are not described (tool.N.* of its settings).</source>
+        <translation>Инструмент станка не описан (tool.N.* в его настройках).</translation>
+    </message>
+    <message>
+        <source>Error %1 mm: R%2 %3 → %4 (offset %5 mm)</source>
+        <translation>Ошибка %1 мм: R%2 %3 → %4 (коррекция %5 мм)</translation>
     </message>
 </context>
 <context>

@@ -42,6 +42,10 @@ const char* const kDbDetails =
     "(remove),\n"
     "                               #3=TEXT, A01=TEXT (W.., S..), title=TEXT, x.kv=1.2; checked\n"
     "                               against the definitions and the manual's cross-checks\n"
+    "  trial MACHINE --tool N --measured-x M --drawing-x D [--dry-run] [--note TEXT]\n"
+    "                               the trial part: the size measured against the drawing's\n"
+    "                               changes the tool's offset R-parameter (X a diameter; or\n"
+    "                               --measured-z/--drawing-z), kept as one revision\n"
     "  export MACHINE[@REV] [--format k528m|csv] [--out FILE]\n"
     "                               the machine file (docs/profile-format.md) or CSV of C1..C152\n"
     "  import FILE [--as NAME] [--replace] [--author NAME] [--allow-errors] [--format k528m|csv]\n"
@@ -446,6 +450,8 @@ int runDb(std::span<const std::string> args) {
         return dbcli::cmdShow(subArgs);
     if (sub == "set")
         return dbcli::cmdSet(subArgs);
+    if (sub == "trial")
+        return dbcli::cmdTrial(subArgs);
     if (sub == "export")
         return dbcli::cmdExport(subArgs);
     if (sub == "import")

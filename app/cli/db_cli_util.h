@@ -106,6 +106,7 @@ int cmdInit(std::span<const std::string> argv);
 int cmdMachines(std::span<const std::string> argv);
 int cmdShow(std::span<const std::string> argv);
 int cmdSet(std::span<const std::string> argv);
+int cmdTrial(std::span<const std::string> argv); // cmd_db_trial.cpp
 int cmdExport(std::span<const std::string> argv);
 int cmdImport(std::span<const std::string> argv);
 int cmdDiff(std::span<const std::string> argv);

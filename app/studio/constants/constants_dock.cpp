@@ -1,4 +1,5 @@
 #include "constants/constants_dock.h"
+#include "constants/cutting_dialog.h"
 #include "db/notes.h"
 #include "session/core_texts.h"
 
@@ -161,6 +162,7 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     importButton_ = button(this, "constants.import");
     exportButton_ = button(this, "constants.export");
     calcButton_ = button(this, "constants.calculator");
+    cuttingButton_ = button(this, "constants.cuttingData");
     QUndoStack* undo = editor_->undoStack();
     undoButton_->setEnabled(false);
     redoButton_->setEnabled(false);
@@ -173,8 +175,9 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     connect(importButton_, &QToolButton::clicked, this, &ConstantsPane::chooseImport);
     connect(exportButton_, &QToolButton::clicked, this, &ConstantsPane::chooseExport);
     connect(calcButton_, &QToolButton::clicked, this, &ConstantsPane::showCalculator);
+    connect(cuttingButton_, &QToolButton::clicked, this, &ConstantsPane::showCuttingData);
     for (QToolButton* b : {undoButton_, redoButton_, historyButton_, diffButton_, importButton_,
-                           exportButton_, calcButton_})
+                           exportButton_, calcButton_, cuttingButton_})
         tools->addWidget(b);
     tools->addSpacing(12);
     noteLabel_ = new QLabel(this);
@@ -289,6 +292,9 @@ void ConstantsPane::retranslate() {
     importButton_->setToolTip(tr("A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them"));
     exportButton_->setText(tr("Export..."));
     calcButton_->setText(tr("Calculator..."));
+    cuttingButton_->setText(tr("Cutting data..."));
+    cuttingButton_->setToolTip(tr("Spindle speed from the cutting speed and the diameter, feed per minute, "
+                                  "the grinding wheel's surface speed from R207"));
     noteLabel_->setText(tr("Note:"));
     note_->setPlaceholderText(tr("why the next change is made (kept with its revision)"));
     model_->retranslate();
@@ -341,6 +347,12 @@ void ConstantsPane::showDiff() {
 
 void ConstantsPane::showCalculator() {
     auto* d = new CalculatorDialog(*editor_, this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    d->show();
+}
+
+void ConstantsPane::showCuttingData() {
+    auto* d = new CuttingDataDialog(editor_->store().current(), &editor_->controller(), this);
     d->setAttribute(Qt::WA_DeleteOnClose);
     d->show();
 }

@@ -72,6 +72,7 @@ public slots:
     void showHistory();    // of the selected constant
     void showDiff();
     void showCalculator();
+    void showCuttingData();
     void chooseImport();
     void chooseExport();
     void selectConstant(int number);
@@ -108,6 +109,7 @@ private:
     QToolButton* importButton_;
     QToolButton* exportButton_;
     QToolButton* calcButton_;
+    QToolButton* cuttingButton_;
     QLabel* status_;
     QProgressBar* progress_;
     bool busy_ = false;

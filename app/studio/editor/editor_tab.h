@@ -158,6 +158,14 @@ public slots:
     QString exportSetupSheet(const QString& path);
     void exportSetupSheetDialog();
     void previewSetupSheet();
+    // Teach-in (NC-200 §20): the viewed controller's position (its current
+    // coordinates as the panel shows them) as a frame after the cursor's
+    // line, numbered after it; or into a preset R-parameter whose hint
+    // names that coordinate (editing/teach.h), replacing the cursor's line
+    // when it sets that R. False (and a status message) when no controller
+    // or no axis. The text inserted is returned through `taught`.
+    bool teachPosition(QString* taught = nullptr);
+    bool teachIntoR(int r, QString* taught = nullptr);
     // The programs and messages of a database machine as a document; saving
     // it writes the machine's next revision.
     bool openFromDatabase(const QString& machine);
@@ -220,6 +228,11 @@ private:
     QMenu *editorMenu_ = nullptr, *refactorMenu_ = nullptr, *listingMenu_ = nullptr, *fileMachineMenu_ = nullptr,
           *sheetMenu_ = nullptr;
     QAction *sheetPreviewAction_ = nullptr, *sheetPdfAction_ = nullptr;
+    QMenu *teachMenu_ = nullptr, *teachRMenu_ = nullptr;
+    QAction* teachFrameAction_ = nullptr;
+    void fillTeachRMenu();
+    bool insertTaught(const QString& text, bool replaceLine);
+    int frameNumberAtCursor() const;
     QAction *renumberAction_ = nullptr, *moveAction_ = nullptr, *formatAction_ = nullptr, *printAction_ = nullptr,
             *pdfAction_ = nullptr, *openDbAction_ = nullptr, *fileMachineAction_ = nullptr,
             *refactorAction_ = nullptr, *listingAction_ = nullptr;

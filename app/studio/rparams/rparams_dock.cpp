@@ -6,6 +6,7 @@
 #include "engine/controller.h"
 #include "engine/rparams.h"
 #include "rparams/rparams_model.h"
+#include "rparams/trial_dialog.h"
 #include "controller/controller.h"
 #include "controller/view_notice.h"
 #include "database/database_ui.h"
@@ -86,11 +87,12 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     remove_ = button(this, "rparams.removePreset");
     keepAll_ = button(this, "rparams.keepAll");
     apply_ = button(this, "rparams.applyPresets");
+    trial_ = button(this, "rparams.trialPart");
     noteLabel_ = new QLabel(this);
     note_ = new QLineEdit(this);
     note_->setObjectName("rparams.note");
     auto* tools = new QHBoxLayout;
-    for (QToolButton* b : {keep_, remove_, keepAll_, apply_})
+    for (QToolButton* b : {keep_, remove_, keepAll_, apply_, trial_})
         tools->addWidget(b);
     tools->addSpacing(12);
     tools->addWidget(noteLabel_);
@@ -99,6 +101,7 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     connect(remove_, &QToolButton::clicked, this, [this] { removeSelectedPreset(); });
     connect(keepAll_, &QToolButton::clicked, this, [this] { keepAllAsPresets(); });
     connect(apply_, &QToolButton::clicked, this, &RParamsPane::applyPresets);
+    connect(trial_, &QToolButton::clicked, this, [this] { trialPartDialog()->show(); });
 
     table_ = new QTableView(this);
     table_->setObjectName("rparams.table");
@@ -186,6 +189,9 @@ void RParamsPane::retranslate() {
     keepAll_->setToolTip(tr("Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does"));
     apply_->setText(tr("Load the presets"));
     apply_->setToolTip(tr("The machine's presets into the controller"));
+    trial_->setText(tr("Trial part..."));
+    trial_->setToolTip(tr("The size measured on the trial part against the drawing: the change of the tool's "
+                          "offset R-parameter, kept as the machine's preset"));
     noteLabel_->setText(tr("Note:"));
     note_->setPlaceholderText(tr("why the presets change (kept with the revision)"));
     model_->retranslate();
@@ -281,6 +287,28 @@ int RParamsPane::keepAllAsPresets() {
             p[n] = std::nullopt;
     }
     return keepPresets(p);
+}
+
+TrialPartDialog* RParamsPane::trialPartDialog() {
+    auto* d = new TrialPartDialog(store_->current(), this);
+    d->setAttribute(Qt::WA_DeleteOnClose);
+    connect(d, &TrialPartDialog::keepRequested, this, [this](int r, qint64 value, const QString& note) {
+        keepTrialCorrection(r, value, note);
+    });
+    return d;
+}
+
+int RParamsPane::keepTrialCorrection(int r, std::int64_t value, const QString& note) {
+    note_->setText(note);
+    const int revision = keepPresets({{r, value}});
+    if (revision == 0)
+        return 0;
+    QPointer<RParamsPane> self(this);
+    model_->setValue(r, value, [self, r, revision](const QString& why) {
+        if (self && !why.isEmpty())
+            self->say(tr("Kept as revision %1; R%2 not set in the controller: %3").arg(revision).arg(r).arg(why), true);
+    });
+    return revision;
 }
 
 void RParamsPane::applyPresets() {

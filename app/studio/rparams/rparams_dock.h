@@ -29,6 +29,7 @@ namespace k528::studio {
 class MachineStore;
 class RParamsFilter;
 class RParamsModel;
+class TrialPartDialog;
 class ViewedController;
 
 class RParamsPane : public QWidget {
@@ -49,6 +50,11 @@ public:
     int removeSelectedPreset();
     int keepAllAsPresets(); // every writable R that is not 0, as «keep the memory» does
     void applyPresets();    // the machine's presets into the controller (one after another)
+    // The trial part's dialog (not shown yet) on the machine as the database
+    // holds it; its «Keep» keeps the correction (keepTrialCorrection).
+    TrialPartDialog* trialPartDialog();
+    // R`r` = `value` kept as a preset with `note`, then set in the controller.
+    int keepTrialCorrection(int r, std::int64_t value, const QString& note);
 
 protected:
     void changeEvent(QEvent* e) override;
@@ -71,6 +77,7 @@ private:
     QToolButton* remove_;
     QToolButton* keepAll_;
     QToolButton* apply_;
+    QToolButton* trial_;
     QLabel* noteLabel_;
     QLineEdit* note_;
     QLabel* status_;

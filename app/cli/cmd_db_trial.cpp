@@ -1,0 +1,111 @@
+// k528 db trial MACHINE --tool N (--measured-x M --drawing-x D | --measured-z M
+// --drawing-z D) [--dry-run] [--note TEXT]: the trial part (handbook 13.8) —
+// the size measured on the part against the drawing's gives the change of
+// the tool's offset R-parameter (profile/cutting.h; X measured as a
+// diameter), kept as the machine's next revision (docs/cli-decisions.md).
+#include "args.h"
+#include "cli.h"
+#include "db/database.h"
+#include "db_cli.h"
+#include "db_cli_util.h"
+#include "profile/cutting.h"
+#include "profile/tools.h"
+
+#include <cstdio>
+#include <string>
+
+namespace k528::cli::dbcli {
+
+int cmdTrial(std::span<const std::string> argv) {
+    const Args a(argv, {"--dry-run"},
+                 {"--db", "--author", "--lang", "--tool", "--measured-x", "--drawing-x", "--measured-z", "--drawing-z",
+                  "--note"});
+    if (!a.ok())
+        return usageError(a.error());
+    if (a.positional().size() != 1)
+        return usageError("db trial needs MACHINE (and --tool N --measured-x M --drawing-x D, or the same for z)");
+    Lang lang;
+    if (!parseLangOption(a, lang))
+        return ExitUsage;
+    const bool ru = lang == Lang::Ru;
+    const auto station = a.value("--tool") ? parseInt(*a.value("--tool")) : std::nullopt;
+    if (!station || *station < 1 || *station > profile::kMaxToolStations)
+        return usageError("--tool needs the tool's station 1..8");
+    const bool x = a.value("--measured-x") || a.value("--drawing-x");
+    const bool z = a.value("--measured-z") || a.value("--drawing-z");
+    if (x == z)
+        return usageError("give the measured and the drawing's size of one axis: --measured-x M --drawing-x D, or "
+                          "--measured-z M --drawing-z D");
+    const auto number = [&](const char* option) -> std::optional<double> {
+        const auto v = a.value(option);
+        if (!v)
+            return std::nullopt;
+        try {
+            std::size_t used = 0;
+            const double d = std::stod(*v, &used);
+            if (used == v->size())
+                return d;
+        } catch (const std::exception&) {
+        }
+        return std::nullopt;
+    };
+    const auto measured = number(x ? "--measured-x" : "--measured-z");
+    const auto drawing = number(x ? "--drawing-x" : "--drawing-z");
+    if (!measured || !drawing)
+        return usageError(std::string("--measured-") + (x ? "x" : "z") + " and --drawing-" + (x ? "x" : "z") +
+                          " need sizes in mm (e.g. 40.06)");
+    DbTarget t;
+    auto d = openDbOf(a, t, false, a.value("--author").value_or(""), lang);
+    if (!d)
+        return ExitUsage;
+    const std::string machine = a.positional()[0];
+    try {
+        const profile::MachineProfile p = d->loadMachine(machine);
+        std::optional<profile::Tool> tool;
+        try {
+            tool = profile::toolAt(profile::tools(p), static_cast<int>(*station));
+        } catch (const profile::ToolError& e) {
+            std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+            return ExitUsage;
+        }
+        if (!tool) {
+            std::fprintf(stderr, ru ? "k528: у станка %s нет инструмента в позиции %d\n"
+                                    : "k528: %s has no tool at station %d\n",
+                         machine.c_str(), static_cast<int>(*station));
+            return ExitUsage;
+        }
+        profile::cutting::TrialCorrection c;
+        try {
+            c = profile::cutting::trialCorrection(p, *tool, x ? catalog::Axis::X : catalog::Axis::Z, *measured,
+                                                  *drawing);
+        } catch (const profile::cutting::CuttingError& e) {
+            std::fprintf(stderr, "k528: %s\n", e.what());
+            return ExitUsage;
+        }
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      ru ? "T%d %s: измерено %.3f, по чертежу %.3f, ошибка %+.3f мм: R%d %lld -> %lld (%+.3f мм)\n"
+                         : "T%d %s: measured %.3f, drawing %.3f, error %+.3f mm: R%d %lld -> %lld (%+.3f mm)\n",
+                      tool->station, x ? "X" : "Z", *measured, *drawing, c.errorMm, c.rNumber,
+                      static_cast<long long>(c.oldValue), static_cast<long long>(c.newValue), c.changeMm);
+        out(line);
+        if (a.has("--dry-run") || c.newValue == c.oldValue)
+            return ExitOk;
+        db::Edit edit;
+        edit.r[c.rNumber] = c.newValue;
+        db::WriteOptions o;
+        o.author = a.value("--author").value_or("");
+        char summary[200];
+        std::snprintf(summary, sizeof summary, "trial part: T%d %s measured %.3f for %.3f: R%d %lld -> %lld",
+                      tool->station, x ? "X" : "Z", *measured, *drawing, c.rNumber,
+                      static_cast<long long>(c.oldValue), static_cast<long long>(c.newValue));
+        o.summary = a.value("--note").value_or(summary);
+        const auto r = d->applyEdit(machine, edit, o);
+        out(savedText(machine, r, lang));
+        return ExitOk;
+    } catch (const db::Error& e) {
+        return dbFail(e, lang);
+    }
+}
+
+} // namespace k528::cli::dbcli

@@ -1,0 +1,142 @@
+#include "rparams/trial_dialog.h"
+
+#include "profile/tools.h"
+#include "proveout/setup_sheet.h"
+#include "language.h"
+#include "session/core_texts.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace k528::studio {
+
+TrialPartDialog::TrialPartDialog(const profile::MachineProfile& machine, QWidget* parent)
+    : QDialog(parent), machine_(machine) {
+    setObjectName("rparams.trialDialog");
+    setWindowTitle(tr("Trial part: correct a tool's offset"));
+    tool_ = new QComboBox(this);
+    tool_->setObjectName("trial.tool");
+    const bool ru = currentLanguage() == QLatin1String("ru");
+    try {
+        for (const profile::Tool& t : profile::tools(machine_)) {
+            const QString kind = QString::fromUtf8(std::string(proveout::toolKindText(t.kind, ru)).c_str());
+            tool_->addItem(QStringLiteral("T%1 %2 — %3").arg(t.station).arg(kind, QString::fromStdString(t.name)),
+                           t.station);
+        }
+    } catch (const std::exception&) {
+    }
+    axis_ = new QComboBox(this);
+    axis_->setObjectName("trial.axis");
+    const bool diameter = profile::axisScale(machine_, catalog::Axis::X).diameter;
+    axis_->addItem(tr("X: a diameter"), 0);
+    axis_->addItem(tr("Z: a length"), 1);
+    const auto spin = [this](const char* name) {
+        auto* s = new QDoubleSpinBox(this);
+        s->setObjectName(name);
+        s->setRange(-100000, 100000);
+        s->setDecimals(3);
+        s->setSingleStep(0.01);
+        connect(s, &QDoubleSpinBox::valueChanged, this, &TrialPartDialog::recalculate);
+        return s;
+    };
+    measured_ = spin("trial.measured");
+    drawing_ = spin("trial.drawing");
+    result_ = new QLabel(this);
+    result_->setObjectName("trial.result");
+    result_->setWordWrap(true);
+    result_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* explain = new QLabel(
+        (diameter ? tr("X of this machine shows a diameter: the offset changes by the diameter's error.")
+                  : tr("X of this machine shows a radius: the offset changes by half the diameter's error.")) +
+            QLatin1Char(' ') +
+            tr("A size that came out larger than the drawing's was cut with too large an offset: the new offset "
+               "is the old one minus the error."),
+        this);
+    explain->setWordWrap(true);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Tool"), tool_);
+    form->addRow(tr("Measured on"), axis_);
+    form->addRow(tr("Measured, mm"), measured_);
+    form->addRow(tr("Drawing, mm"), drawing_);
+    keep_ = new QPushButton(tr("Keep as the preset"), this);
+    keep_->setObjectName("trial.keep");
+    keep_->setToolTip(tr("The new offset becomes the machine's preset (its next revision in the database, the "
+                         "measurement as its note) and goes into the controller"));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->addButton(keep_, QDialogButtonBox::AcceptRole);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(keep_, &QPushButton::clicked, this, [this] {
+        if (!correction_)
+            return;
+        emit keepRequested(correction_->rNumber, correction_->newValue, note());
+        accept();
+    });
+    connect(tool_, &QComboBox::currentIndexChanged, this, &TrialPartDialog::recalculate);
+    connect(axis_, &QComboBox::currentIndexChanged, this, &TrialPartDialog::recalculate);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(explain);
+    layout->addLayout(form);
+    layout->addWidget(result_);
+    layout->addStretch(1);
+    layout->addWidget(buttons);
+    resize(520, 360);
+    recalculate();
+}
+
+void TrialPartDialog::setInputs(int station, bool xAxis, double measuredMm, double drawingMm) {
+    tool_->setCurrentIndex(tool_->findData(station));
+    axis_->setCurrentIndex(xAxis ? 0 : 1);
+    measured_->setValue(measuredMm);
+    drawing_->setValue(drawingMm);
+    recalculate();
+}
+
+QString TrialPartDialog::note() const {
+    if (!correction_)
+        return {};
+    const bool x = axis_->currentData().toInt() == 0;
+    return QStringLiteral("trial part: T%1 %2 measured %3 for %4: R%5 %6 -> %7")
+        .arg(tool_->currentData().toInt())
+        .arg(x ? QStringLiteral("X") : QStringLiteral("Z"))
+        .arg(measured_->value(), 0, 'f', 3)
+        .arg(drawing_->value(), 0, 'f', 3)
+        .arg(correction_->rNumber)
+        .arg(correction_->oldValue)
+        .arg(correction_->newValue);
+}
+
+void TrialPartDialog::recalculate() {
+    correction_.reset();
+    if (tool_->count() == 0) {
+        result_->setText(tr("The machine's tools are not described (tool.N.* of its settings)."));
+        keep_->setEnabled(false);
+        return;
+    }
+    try {
+        const std::optional<profile::Tool> t = profile::toolAt(profile::tools(machine_), tool_->currentData().toInt());
+        if (!t)
+            throw profile::cutting::CuttingError("no tool");
+        const bool x = axis_->currentData().toInt() == 0;
+        correction_ = profile::cutting::trialCorrection(machine_, *t, x ? catalog::Axis::X : catalog::Axis::Z,
+                                                        measured_->value(), drawing_->value());
+        const QLocale l;
+        result_->setText(tr("Error %1 mm: R%2 %3 → %4 (offset %5 mm)")
+                             .arg(l.toString(correction_->errorMm, 'f', 3))
+                             .arg(correction_->rNumber)
+                             .arg(correction_->oldValue)
+                             .arg(correction_->newValue)
+                             .arg((correction_->changeMm > 0 ? QStringLiteral("+") : QString()) +
+                                  l.toString(correction_->changeMm, 'f', 3)));
+    } catch (const std::exception& e) {
+        result_->setText(coreErrorText(e));
+    }
+    keep_->setEnabled(correction_ && correction_->newValue != correction_->oldValue);
+}
+
+} // namespace k528::studio
