@@ -391,6 +391,10 @@
         <source>R%1 is %2 after the program; %3 was expected</source>
         <translation>R%1 is %2 after the program; %3 was expected</translation>
     </message>
+    <message>
+        <source>the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5</source>
+        <translation>the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio</name>
@@ -5368,6 +5372,14 @@ Details: %3</translation>
     <message>
         <source>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</source>
         <translation>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</translation>
+    </message>
+    <message>
+        <source>setting or clearing the constants lock</source>
+        <translation>setting or clearing the constants lock</translation>
+    </message>
+    <message>
+        <source>recording the machines' time in each state</source>
+        <translation>recording the machines' time in each state</translation>
     </message>
 </context>
 <context>

@@ -391,6 +391,10 @@
         <source>R%1 is %2 after the program; %3 was expected</source>
         <translation>R%1 после программы = %2, ожидалось %3</translation>
     </message>
+    <message>
+        <source>the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5</source>
+        <translation>Инструмент в патрон или кулачки на X%1 Z%2 — кадр %4, строка %5</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio</name>
@@ -5368,6 +5372,14 @@ Details: %3</source>
     <message>
         <source>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</source>
         <translation>База данных %1 отказала пользователю %2: %3 — нужна роль %4; у пользователя: %5; ничего не записано.</translation>
+    </message>
+    <message>
+        <source>setting or clearing the constants lock</source>
+        <translation>установка и снятие блокировки констант</translation>
+    </message>
+    <message>
+        <source>recording the machines' time in each state</source>
+        <translation>запись времени станков в каждом состоянии</translation>
     </message>
 </context>
 <context>

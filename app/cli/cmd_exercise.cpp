@@ -185,11 +185,7 @@ int attempts(const Args& args, Lang lang, const std::string& exercise) {
             o["passed"] = r.passed;
             o["status"] = r.status;
             o["cycle_time_s"] = static_cast<double>(r.cycleTimeMs) / 1000.0;
-            try {
-                o["grade"] = json::parse(r.grade);
-            } catch (const std::exception&) {
-                o["grade"] = r.grade; // kept as stored
-            }
+            o["grade"] = training::storedGradeJson(r); // older ids read as today's
             a.push_back(std::move(o));
         }
         std::printf("%s\n", json::dump(a).c_str());

@@ -231,10 +231,27 @@ int runPanel(std::span<const std::string> argv) {
         return ExitUsage;
     }
     panel::Panel k923(bench->controller());
+    // The trainer's lock of the constants (setting constants.lock): as the
+    // studio's K923, F5 (РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ) and ENTER on its screen
+    // are refused, said on stderr, and the keys after them go on.
+    const std::string lockedFor = profile.simulation.getString("constants.lock", "");
+    const auto refusedByLock = [&](const panel::KeyPress& k) {
+        if (lockedFor.empty())
+            return false;
+        const bool inC = bench->controller().mode() == engine::Mode::MachineData;
+        return (k.key == panel::Key::F5 && !k.shift && !inC) || (k.key == panel::Key::Enter && inC);
+    };
     try {
         for (const Step& s : steps) {
-            if (const auto* k = std::get_if<panel::KeyPress>(&s))
-                k923.press(*k);
+            if (const auto* k = std::get_if<panel::KeyPress>(&s)) {
+                if (refusedByLock(*k))
+                    std::fprintf(stderr,
+                                 "k528: key %s refused: the machine constants are locked by the trainer for "
+                                 "the class «%s» (setting constants.lock of the machine)\n",
+                                 k->key == panel::Key::F5 ? "F5" : "ENTER", lockedFor.c_str());
+                else
+                    k923.press(*k);
+            }
             else if (const auto* b = std::get_if<ButtonStep>(&s))
                 machineBench->button(*b);
             else if (const auto* f = std::get_if<FaultStep>(&s))

@@ -82,6 +82,11 @@ int runShop(std::span<const std::string> argv) {
         out.emplace_back("--line");
         out.push_back(names[i] + "=" + lines[i]);
     }
+    if (sub == "publish" || a.has("--watch")) {
+        // Polling over time keeps each machine's time in each state there (docs/shop.md).
+        out.emplace_back("--db");
+        out.push_back(d->location().text());
+    }
     d.reset(); // closed before k528-link takes the process's place
     return forwardToLink("shop", out);
 }

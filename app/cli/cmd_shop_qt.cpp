@@ -11,7 +11,9 @@
 #include "mqtt_client.h"
 #include "shop_publisher.h"
 #include "profile/line.h"
+#include "db/state_times.h"
 #include "shop/state.h"
+#include "shop/state_time.h"
 #include "shop_poll.h"
 #include "util/json.h"
 
@@ -21,6 +23,7 @@
 #include <cstdio>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <unistd.h>
 
 namespace k528::cli {
@@ -104,7 +107,7 @@ struct Options {
 
 int runShopQt(std::span<const std::string> argv) {
     const Args args(argv, {"--json", "--watch"},
-                    {"--line", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id"});
+                    {"--line", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id", "--db"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1 || (args.positional()[0] != "status" && args.positional()[0] != "publish"))
@@ -196,6 +199,41 @@ int runShopQt(std::span<const std::string> argv) {
         std::fprintf(stderr, "k528 shop publish: %zu machines every %d ms to %s as %s\n", o.lines.size(),
                      o.intervalMs, args.value("--mqtt")->c_str(), clientId.c_str());
     }
+    // Each machine's time in each state, added to the database's record
+    // (source shop@HOST) once a minute, when a state changes and at the end.
+    std::optional<db::Database> times;
+    if (const auto where = args.value("--db")) {
+        try {
+            times.emplace(db::Database::open(db::Location::parse(*where)));
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "k528 shop: the time in each state is not kept: %s\n", e.what());
+        }
+    }
+    char host[256] = {};
+    if (::gethostname(host, sizeof host - 1) != 0 || !host[0])
+        std::snprintf(host, sizeof host, "unknown");
+    const std::string timesSource = std::string("shop@") + host;
+    shop::StateTally tally;
+    std::vector<std::int64_t> lastPoll(trackers.size(), 0);
+    bool timesSaid = false;
+    const auto writeTimes = [&](std::int64_t now) {
+        tally.due(now);
+        if (!times || tally.empty())
+            return;
+        const auto rows = tally.take(now);
+        std::vector<db::StateTime> out;
+        for (const auto& r : rows)
+            out.push_back({r.machine, r.day, timesSource, r.state, r.ms, {}});
+        try {
+            db::addStateTimes(*times, out);
+        } catch (const db::Error& e) {
+            if (e.kind() == db::ErrorKind::Busy || e.kind() == db::ErrorKind::Io)
+                tally.putBack(rows); // the next minute
+            if (!timesSaid)
+                std::fprintf(stderr, "k528 shop: the time in each state is not kept: %s\n", e.what());
+            timesSaid = true;
+        }
+    };
     installStopSignals();
     Inbox inbox;
     poller.start(o.intervalMs, [&inbox](const shop::PollResult& r) { inbox.put(r); });
@@ -206,8 +244,15 @@ int runShopQt(std::span<const std::string> argv) {
     while (!stopRequested() && (o.seconds < 0 || elapsed() < o.seconds)) {
         for (const shop::PollResult& r : inbox.take(50)) {
             std::vector<shop::AlarmEvent> events;
+            const shop::Activity before = trackers[r.index].state().activity;
+            if (trackers[r.index].state().polled && lastPoll[r.index] > 0)
+                tally.add(trackers[r.index].state().machine, shop::localDay(r.atMs), before,
+                          r.atMs - lastPoll[r.index]);
+            lastPoll[r.index] = r.atMs;
             const bool changed = trackers[r.index].update(r.online ? &r.live : nullptr, r.why, r.atMs, events);
             const shop::MachineState& s = trackers[r.index].state();
+            if (s.activity != before)
+                tally.changed();
             if (publish) {
                 if (!mq.publish(s, changed, events, r.atMs, error))
                     std::fprintf(stderr, "k528 shop publish: %s: %s\n", s.machine.c_str(), error.c_str());
@@ -223,12 +268,16 @@ int runShopQt(std::span<const std::string> argv) {
                         std::printf("%s\n", json::dump(shop::alarmJson(e)).c_str());
                 if ((changed || !events.empty()) && outputLost()) {
                     poller.stop();
+                    writeTimes(shop::unixMsNow());
                     return ExitUsage;
                 }
             }
         }
+        if (tally.due(shop::unixMsNow()))
+            writeTimes(shop::unixMsNow());
     }
     poller.stop();
+    writeTimes(shop::unixMsNow());
     if (publish) {
         if (!mq.stop(3000)) {
             std::fprintf(stderr, "k528 shop publish: the broker did not acknowledge every message\n");

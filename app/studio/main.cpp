@@ -5,9 +5,13 @@
 #include <QGuiApplication>
 #include <QScreen>
 #include <QEvent>
+#include <QSocketNotifier>
 #include <QTimer>
+#include <csignal>
 #include <cstdio>
 #include <memory>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include "backplot/vtk_gl_widget.h"
 #include "editor/debug_panel.h"
@@ -35,6 +39,34 @@ int listPlugins() {
             std::printf("refused %s: %s\n", qPrintable(f.file), qPrintable(f.refused));
     std::printf("searched: %s\n", qPrintable(k528::linkplugin::searchPath().join(", ")));
     return 0;
+}
+
+// SIGTERM, SIGINT, SIGHUP (a session's end, a service manager, Ctrl+C in a
+// terminal) end the event loop as quitting does, so what the window says
+// when it goes is said (the Shop page's MQTT goodbye and its time in each
+// state): the handler only writes a byte, the loop reads it.
+int quitSignalPipe[2] = {-1, -1};
+
+void onQuitSignal(int) {
+    const char c = 1;
+    [[maybe_unused]] const auto n = ::write(quitSignalPipe[1], &c, 1);
+}
+
+void quitOnSignals(QApplication& app) {
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, quitSignalPipe) != 0)
+        return;
+    auto* notifier = new QSocketNotifier(quitSignalPipe[0], QSocketNotifier::Read, &app);
+    QObject::connect(notifier, &QSocketNotifier::activated, &app, [] {
+        char c;
+        [[maybe_unused]] const auto n = ::read(quitSignalPipe[0], &c, 1);
+        QApplication::exit(0); // the loop ends; no window is asked whether it may close
+    });
+    struct sigaction sa {};
+    sa.sa_handler = onQuitSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    for (const int sig : {SIGTERM, SIGINT, SIGHUP})
+        sigaction(sig, &sa, nullptr);
 }
 
 } // namespace
@@ -99,6 +131,7 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     QApplication::setApplicationDisplayName("K528 Studio");
     cli.process(app);
+    quitOnSignals(app);
     if (cli.isSet(pluginsOption))
         return listPlugins();
 

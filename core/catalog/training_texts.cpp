@@ -44,6 +44,7 @@ constexpr TrainingText kTexts[] = {
     {"collision.feed-wheel-stopped", "Подача круга в кольцо при остановленном круге: кромка Ø%1 у Z%2 — кадр %4, строка %5: включите круг до подачи", "a feed of the wheel into the ring with the wheel stopped: its edge at Ø%1 near Z%2 — frame %4, line %5: start the wheel before the feed"},
     {"collision.tool-into-chuck.jaws", "Инструмент в кулачки патрона на X%1 Z%2 — кадр %4, строка %5", "the tool into the chuck's jaws at X%1 Z%2 — frame %4, line %5"},
     {"collision.tool-into-chuck.body", "Инструмент в корпус патрона на X%1 Z%2 — кадр %4, строка %5", "the tool into the chuck's body at X%1 Z%2 — frame %4, line %5"},
+    {"collision.tool-into-chuck", "Инструмент в патрон или кулачки на X%1 Z%2 — кадр %4, строка %5", "the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5"},
     {"collision.tool-into-chuck.manual", "Инструмент в патрон или кулачки ручным перемещением на X%1 Z%2", "the tool into the chuck or its jaws by a manual move at X%1 Z%2"},
     {"collision.rapid-into-material.ring", "Круг на ускоренном ходу в кольцо: кромка Ø%1 у Z%2, на %3 мм в стенку — кадр %4, строка %5", "the wheel into the ring at rapid: its edge at Ø%1 near Z%2, %3 mm into the wall — frame %4, line %5"},
     // --- messages and the run ----------------------------------------------------------------

@@ -15,7 +15,7 @@ constexpr std::string_view kTables[] = {
     "meta",          "c_definitions", "machines",       "revisions",         "c_values",
     "r_values",      "messages",      "plc_messages",   "settings",          "program_revisions",
     "changes",       "audit",         "message_runs",   "message_history",   "program_states",
-    "transfers",     "transfer_items", "training_attempts",
+    "transfers",     "transfer_items", "training_attempts", "state_times",
 };
 
 // The key that orders a table's rows (the same order on both backends).
@@ -36,6 +36,8 @@ std::string_view orderOf(std::string_view table) {
         return "machine_id, revision, seq";
     if (table == "transfer_items")
         return "transfer_id, seq";
+    if (table == "state_times")
+        return "machine, day, source, state";
     return "id";
 }
 

@@ -43,6 +43,33 @@ std::int64_t writeMachineRow(Store& s, const std::optional<MachineRow>& row,
     return row->id;
 }
 
+// The trainer's lock of a machine's constants for a class (the setting
+// constants.lock, its value the class; docs/training-course.md): while the
+// stored machine holds it, a write that changes a constant is refused —
+// whoever writes, by whatever program (k528 db set/import, the studio);
+// setting or clearing it is the trainer's (PostgreSQL: the role k528_trainer).
+void checkConstantsLock(Store& s, const MachineProfile* old, const MachineProfile& neu,
+                        const std::vector<Change>& changes) {
+    const std::string locked = old ? old->simulation.getString(kConstantsLockKey, "") : std::string();
+    bool lockChanged = false;
+    std::string constants; // the constants the write changes: "C022, C040"
+    for (const Change& c : changes) {
+        if (c.section == DiffSection::Simulation && c.key == kConstantsLockKey)
+            lockChanged = true;
+        else if (c.section == DiffSection::C && constants.size() < 60)
+            constants += (constants.empty() ? "" : ", ") + c.key;
+    }
+    if (lockChanged && !s.mayActAs(kTrainer))
+        throw DeniedError("setting or clearing the constants lock", std::string(kTrainer), s.sessionUser(),
+                          s.rolesOfUser(), "K528 Studio's rule: only a trainer locks and unlocks the constants");
+    if (!locked.empty() && !constants.empty())
+        throw ValidationError("machine " + neu.name + ": the machine constants are locked by the trainer for the class «" +
+                                  locked + "» (setting " + std::string(kConstantsLockKey) + "): " + constants +
+                                  " not changed; nothing was written (the trainer unlocks them first: k528 db set " +
+                                  neu.name + " " + std::string(kConstantsLockKey) + "=)",
+                              {});
+}
+
 // Makes `neu` the state of the machine `row` (nullopt: a new machine) whose
 // state was `old`, as one revision, inside the caller's write transaction.
 SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& row,
@@ -51,6 +78,7 @@ SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& 
     SaveResult result;
     result.findings = revision::checkWrite(old, neu, o.allowErrors);
     result.changes = revision::computeChanges(old, neu);
+    checkConstantsLock(s, old, neu, result.changes);
     const int revision = row ? row->info.revision + 1 : 1;
     if (old && result.changes.empty()) {
         result.changed = false;

@@ -18,6 +18,9 @@ struct Database::Impl {
 // The roles of docs/database.md (PostgreSQL): who may do what.
 inline constexpr std::string_view kTechnologist = "k528_technologist";
 inline constexpr std::string_view kOperator = "k528_operator";
+inline constexpr std::string_view kTrainer = "k528_trainer"; // a technologist who locks the constants
+// The machine setting of the trainer's lock of the constants (its value: the class).
+inline constexpr std::string_view kConstantsLockKey = "constants.lock";
 
 // Runs `f`; a refusal of the server's privileges becomes a DeniedError that
 // names the action and the role it needs.

@@ -301,6 +301,10 @@ constexpr RoleDef kRoles[] = {
      "an operator's; change machines, release and withdraw programs, push drafts where the "
      "machine allows",
      "k528_operator"},
+    {"k528_trainer",
+     "a technologist's; lock and unlock the machine constants for a class (constants.lock), record "
+     "and read the class's training attempts",
+     "k528_technologist"},
 };
 
 std::string identifier(std::string_view ident) {
@@ -345,6 +349,7 @@ std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
                         "GRANT SELECT ON ALL TABLES IN SCHEMA " + schema + " TO k528_viewer;"
                         "GRANT INSERT ON transfers, transfer_items, message_runs, message_history, "
                         "training_attempts TO k528_operator;"
+                        "GRANT INSERT, UPDATE ON state_times TO k528_operator;"
                         "GRANT UPDATE (cleared_ms, ack_ms, ack_day_ms, ack_how) ON message_history "
                         "TO k528_operator;"
                         "GRANT USAGE ON ALL SEQUENCES IN SCHEMA " + schema + " TO k528_operator;"
@@ -384,7 +389,7 @@ void PostgresStore::grantRole(const std::string& user, const std::string& role) 
         known = known || r.name == name;
     if (!known)
         throw Error(ErrorKind::Invalid, "no role \"" + role +
-                                            "\": the roles are technologist, operator and viewer");
+                                            "\": the roles are trainer, technologist, operator and viewer");
     try {
         conn_->exec("GRANT " + name + " TO " + identifier(user));
     } catch (const Error& e) {

@@ -323,6 +323,22 @@ CREATE POLICY training_attempts_read ON training_attempts FOR SELECT USING (true
 CREATE POLICY training_attempts_own ON training_attempts FOR INSERT WITH CHECK (recorded_by = current_user);
 )SQL";
 
+// The shop's time in each state (docs/shop.md): per machine, the poller's
+// local day, the poller (source) and the state, the milliseconds counted;
+// pollers add to their rows (INSERT … ON CONFLICT DO UPDATE) once a minute
+// and when a state changes, not at every poll.
+constexpr std::string_view kSchemaV5 = R"SQL(
+CREATE TABLE state_times (
+    machine    TEXT NOT NULL CHECK (length(machine) > 0),
+    day        TEXT NOT NULL CHECK (length(day) = 10),
+    source     TEXT NOT NULL,
+    state      TEXT NOT NULL CHECK (state IN ('run', 'idle', 'alarm', 'offline')),
+    ms         INTEGER NOT NULL CHECK (ms >= 0),
+    changed_at TEXT NOT NULL,
+    PRIMARY KEY (machine, day, source, state)
+) WITHOUT ROWID;
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
@@ -333,6 +349,7 @@ const Migration kMigrations[] = {
     {3, "programs released for the controllers; the transfer log", kSchemaV3, {},
      kSchemaV3Postgres},
     {4, "the training course's graded attempts", kSchemaV4, {}, kSchemaV4Postgres},
+    {5, "the shop's time in each state per machine and day", kSchemaV5},
 };
 
 bool wordAt(std::string_view s, std::size_t i, std::string_view word) {

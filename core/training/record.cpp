@@ -20,14 +20,86 @@ db::AttemptEntry attemptEntry(const Grade& g, std::string_view programText) {
     return a;
 }
 
-std::vector<Deduction> storedDeductions(const db::AttemptEntry& a) {
-    std::vector<Deduction> out;
+namespace {
+
+// A collision's kind as grades wrote it before the prove-out's rules (its
+// rule id and the text id of its deduction, without "collision.").
+struct OldCollision {
+    std::string_view kind, rule, text;
+};
+constexpr OldCollision kOldCollisions[] = {
+    {"rapid_into_material", "rapid-into-material", "rapid-into-material"},
+    {"manual_into_material", "manual-into-material", "manual-into-material"},
+    {"cut_without_spindle", "feed-spindle-stopped", "feed-spindle-stopped"},
+    {"tool_into_chuck", "tool-into-chuck", "tool-into-chuck"}, // the jaws or the body: not told apart then
+    {"rapid_into_ring", "rapid-into-material", "rapid-into-material.ring"},
+};
+
+const OldCollision* oldCollision(std::string_view kind) {
+    for (const OldCollision& c : kOldCollisions)
+        if (c.kind == kind)
+            return &c;
+    return nullptr;
+}
+
+} // namespace
+
+std::string currentTextId(std::string_view id) {
+    constexpr std::string_view prefix = "collision.";
+    if (id.substr(0, prefix.size()) != prefix)
+        return std::string(id);
+    std::string_view rest = id.substr(prefix.size());
+    std::string_view suffix;
+    if (const auto dot = rest.find('.'); dot != std::string_view::npos) {
+        suffix = rest.substr(dot); // ".manual"
+        rest = rest.substr(0, dot);
+    }
+    const OldCollision* c = oldCollision(rest);
+    if (!c)
+        return std::string(id);
+    if (!suffix.empty()) // an old "collision.tool_into_chuck.manual"
+        return std::string(prefix) + std::string(c->rule) + std::string(suffix);
+    return std::string(prefix) + std::string(c->text);
+}
+
+Json storedGradeJson(const db::AttemptEntry& a) {
     Json o;
     try {
         o = json::parse(a.grade);
     } catch (const std::exception&) {
-        return out;
+        return Json(a.grade); // kept as stored
     }
+    if (!o.is_object())
+        return o;
+    if (o.contains("deductions") && o["deductions"].is_array())
+        for (Json& d : o["deductions"])
+            if (d.is_object() && d.contains("id") && d["id"].is_string())
+                d["id"] = currentTextId(d["id"].get<std::string>());
+    if (o.contains("collisions") && o["collisions"].is_array())
+        for (Json& c : o["collisions"]) {
+            if (!c.is_object() || c.contains("rule") || !c.contains("kind") || !c["kind"].is_string())
+                continue;
+            const OldCollision* old = oldCollision(c["kind"].get<std::string>());
+            if (!old)
+                continue;
+            // Today's shape: "rule" and "text" where "kind" was, the rest as it was.
+            Json n = Json::object();
+            for (auto it = c.begin(); it != c.end(); ++it) {
+                if (it.key() == "kind") {
+                    n["rule"] = old->rule;
+                    n["text"] = old->text;
+                } else {
+                    n[it.key()] = it.value();
+                }
+            }
+            c = std::move(n);
+        }
+    return o;
+}
+
+std::vector<Deduction> storedDeductions(const db::AttemptEntry& a) {
+    std::vector<Deduction> out;
+    Json o = storedGradeJson(a);
     if (!o.is_object() || !o.contains("deductions") || !o["deductions"].is_array())
         return out;
     const auto num = [](const Json& j, const char* key) {

@@ -2,6 +2,7 @@
 // ours, damaged or newer — and leaving them byte for byte as they were.
 #include "catalog/cparams.h"
 #include "db/database.h"
+#include "db/state_times.h"
 #include "db_test_util.h"
 #include "profile/builtin.h"
 
@@ -422,6 +423,51 @@ private slots:
                           "program, sha256, score, passed, status, cycle_time_ms, grade) VALUES ('x', 'u', "
                           "'h', 's', 'e', '', '', '" + std::string(64, 'a') +
                           "', 101, 0, 'completed', 0, '{}')").empty()); // a score above 100
+    }
+
+    // Version 4 -> 5: the shop's time in each state beside every machine and
+    // attempt; a poller's rows add up; the table keeps its rules.
+    void stateTimesFromVersion4() {
+        QTemporaryDir dir;
+        const fs::path p = tempPath(dir, "v4.db");
+        writeAtVersion(p, 4, [](db::Database& d) {
+            db::AttemptEntry a;
+            a.student = "Иванов";
+            a.exercise = "lathe-03-step";
+            a.grade = "{}";
+            d.recordAttempt(a);
+            // A version-4 database has no times: said, not an SQL error.
+            QVERIFY_THROWS_EXCEPTION(db::Error, db::stateTimes(d, ""));
+        });
+        checkUpgradedFrom(p, 4, [](db::Database& d) {
+            QCOMPARE(d.attempts().size(), std::size_t(1));
+            QVERIFY(db::stateTimes(d, "").empty());
+            db::addStateTimes(d, {{"m01", "2026-12-06", "studio@pc1", "idle", 60000, {}},
+                             {"m01", "2026-12-06", "studio@pc1", "run", 1500, {}}});
+            db::addStateTimes(d, {{"m01", "2026-12-06", "studio@pc1", "idle", 2500, {}},
+                             {"m01", "2026-12-06", "shop@pc2", "idle", 100, {}},
+                             {"m02", "2026-12-07", "studio@pc1", "offline", 7, {}}});
+            const auto day = db::stateTimes(d, "2026-12-06");
+            QCOMPARE(day.size(), std::size_t(3));
+            QCOMPARE(day[0].source, std::string("shop@pc2"));
+            QCOMPARE(day[1].state, std::string("idle"));
+            QCOMPARE(day[1].ms, std::int64_t(62500));
+            QCOMPARE(day[2].state, std::string("run"));
+            QCOMPARE(day[2].ms, std::int64_t(1500));
+            QVERIFY(!day[2].changedAt.empty());
+            QCOMPARE(db::stateTimes(d, "", "studio@pc1").size(), std::size_t(3));
+            QCOMPARE(db::stateTimes(d, "2026-12-07").size(), std::size_t(1));
+            // A state that is not one, a bad day: refused whole, nothing written.
+            QVERIFY_THROWS_EXCEPTION(db::Error, db::addStateTimes(d, {{"m01", "2026-12-06", "x", "idle", 5, {}},
+                                                                 {"m01", "2026-12-06", "x", "sleeping", 5, {}}}));
+            QVERIFY_THROWS_EXCEPTION(db::Error, db::addStateTimes(d, {{"m01", "6.12.2026", "x", "idle", 5, {}}}));
+            QCOMPARE(db::stateTimes(d, "", "x").size(), std::size_t(0));
+        });
+        if (QTest::currentTestFailed())
+            return;
+        Raw raw(p);
+        QVERIFY(!raw.exec("INSERT INTO state_times (machine, day, source, state, ms, changed_at) VALUES "
+                          "('m', '2026-12-06', 's', 'idle', -1, 'x')").empty()); // a negative time
     }
 
     void foreignSqliteFileIsRefused() {

@@ -8,6 +8,7 @@
 #include "db/database.h"
 #include "db/message_log.h"
 #include "db/sql.h"
+#include "db/state_times.h"
 #include "db/store.h"
 #include "db_test_util.h"
 #include "profile/builtin.h"
@@ -450,15 +451,17 @@ private slots:
         const std::string dbName = where.uri().substr(where.uri().rfind('/') + 1);
         db::Database owner = db::Database::open(where, testOptions());
         const auto roles = owner.setUpRoles();
-        QCOMPARE(roles.size(), std::size_t(3));
+        QCOMPARE(roles.size(), std::size_t(4));
+        QCOMPARE(roles[3].role, std::string("k528_trainer"));
         const std::string password = qgetenv("PGPASSWORD").toStdString();
-        for (const char* user : {"tech1", "oper1", "view1"})
+        for (const char* user : {"tech1", "oper1", "view1", "train1"})
             sqlOf(owner).exec("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = '" +
                               std::string(user) + "') THEN CREATE ROLE " + user + " LOGIN PASSWORD '" +
                               password + "'; END IF; END $$");
         owner.grantRole("tech1", "technologist");
         owner.grantRole("oper1", "operator");
         owner.grantRole("view1", "k528_viewer");
+        owner.grantRole("train1", "trainer");
         QCOMPARE(owner.roles()[2].members, std::vector<std::string>{"tech1"});
         const auto as = [&](const char* user) {
             return db::Database::open(db::Location::parse("postgresql://" + std::string(user) + "@/" + dbName),
@@ -513,6 +516,8 @@ private slots:
             e.message.text = "x";
             log.write(run, std::vector<db::MessageEvent>{e});
             QCOMPARE(log.count(), std::int64_t(1));
+            // An operator's shop page keeps the machines' time in each state.
+            db::addStateTimes(op, {{"grinder-205", "2026-12-06", "studio@pc1", "idle", 60000, {}}});
         }
         {
             db::Database view = as("view1");
@@ -521,6 +526,9 @@ private slots:
             DENIED_FOR(view.recordTransfer(pushEntry("grinder-205", 1, "ok")), "k528_operator");
             DENIED_FOR(db::MessageLog(view).beginRun("grinder-205", 0), "k528_operator");
             DENIED_FOR(view.applyEdit("grinder-205", editC(22, 2133)), "k528_technologist");
+            QCOMPARE(db::stateTimes(view, "2026-12-06").size(), std::size_t(1));
+            DENIED_FOR(db::addStateTimes(view, {{"grinder-205", "2026-12-06", "studio@pc2", "idle", 1, {}}}),
+                       "k528_operator");
         }
         {
             db::Database tech = as("tech1");
@@ -531,8 +539,106 @@ private slots:
             QCOMPARE(tech.recordTransfer(pushEntry("grinder-205", 2, "ok")).user, std::string("tech1"));
             DENIED_FOR(tech.setUpRoles(), "the owner of the database's tables with CREATEROLE");
         }
+        {
+            // The trainer's lock of the constants: only a trainer sets and
+            // clears it; while set, nobody changes a constant.
+            db::Edit lock;
+            lock.simulation["constants.lock"] = "TM-21";
+            db::Database tech = as("tech1");
+            QVERIFY(!tech.mayActAs("k528_trainer"));
+            DENIED_FOR(tech.applyEdit("grinder-205", lock), "k528_trainer");
+            db::Database trainer = as("train1");
+            QVERIFY(trainer.mayActAs("k528_technologist"));
+            QVERIFY(trainer.mayActAs("k528_trainer"));
+            const int locked = trainer.applyEdit("grinder-205", lock).revision;
+            try {
+                tech.applyEdit("grinder-205", editC(22, 2000));
+                QFAIL("a constant changed while locked");
+            } catch (const db::ValidationError& e) {
+                QVERIFY2(std::string(e.what()).find("«TM-21»") != std::string::npos, e.what());
+            }
+            QCOMPARE(tech.machine("grinder-205")->revision, locked);
+            db::Edit unlock;
+            unlock.simulation["constants.lock"] = std::nullopt;
+            DENIED_FOR(tech.applyEdit("grinder-205", unlock), "k528_trainer");
+            QCOMPARE(trainer.applyEdit("grinder-205", unlock).revision, locked + 1);
+            QCOMPARE(tech.applyEdit("grinder-205", editC(22, 2000)).revision, locked + 2);
+        }
         QCOMPARE(owner.checkIntegrity(), std::string());
 #undef DENIED_FOR
+    }
+
+    // The trainer's lock of the constants (setting constants.lock) holds for
+    // `k528 db set` and `import` as for the studio: a constant is refused
+    // naming the lock and the class, nothing written; other items may change;
+    // unlocked, the constant is taken.
+    void constantsLockRefusesDbSet() {
+        QTemporaryDir dir;
+        const QString where = QString::fromStdString(testLocation(dir, "lock.db").text());
+        const auto db = [&](QStringList args) {
+            args.prepend("db");
+            args << "--db" << where;
+            return runK528(args);
+        };
+        QCOMPARE(db({"init"}).exitCode, 0);
+        auto r = db({"set", "grinder-205", "constants.lock=TM-21", "--author", "trainer"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString before = db({"export", "grinder-205"}).out;
+        r = db({"set", "grinder-205", "C022=2133"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("locked by the trainer for the class «TM-21»")) &&
+                     r.err.contains("constants.lock") && r.err.contains("C022") && r.err.contains("nothing was written"),
+                 qPrintable(r.err));
+        r = db({"set", "grinder-205", "C022=2133", "--allow-errors"});
+        QCOMPARE(r.exitCode, 1);
+        // An import that changes a constant is refused the same way.
+        const QString file = dir.filePath("g.k528m");
+        {
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QString changed = before;
+            QVERIFY2(changed.contains("\nC022=2000 "), qPrintable(before.left(400)));
+            changed.replace("\nC022=2000 ", "\nC022=2133 ");
+            f.write(changed.toUtf8());
+        }
+        r = db({"import", file, "--replace"});
+        QVERIFY2(r.exitCode != 0 && r.err.contains(QStringLiteral("«TM-21»")), qPrintable(r.out + r.err));
+        QCOMPARE(db({"export", "grinder-205"}).out, before);
+        // The K923 of `k528 panel` refuses F5 (РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ) as the studio's.
+        r = runK528({"panel", "--profile", "grinder-205", "--db", where, "--keys", "F5"});
+        QVERIFY2(r.exitCode == 0 && r.err.contains(QStringLiteral("key F5 refused")) &&
+                     r.err.contains(QStringLiteral("«TM-21»")),
+                 qPrintable(r.out + r.err));
+        // What is not a constant may change.
+        r = db({"set", "grinder-205", "R12=5"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = db({"set", "grinder-205", "constants.lock="});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = db({"set", "grinder-205", "C022=2133"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    }
+
+    // The shop's time in each state: a poller's rows add up across
+    // connections (a restarted studio continues its day), each source apart.
+    void stateTimesAddUp() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "times");
+        {
+            db::Database d = db::Database::open(where, testOptions());
+            db::addStateTimes(d, {{"m01", "2026-12-06", "studio@pc1", "run", 60000, {}},
+                             {"m01", "2026-12-06", "studio@pc1", "idle", 1000, {}}});
+        }
+        db::Database d = db::Database::open(where, testOptions());
+        db::addStateTimes(d, {{"m01", "2026-12-06", "studio@pc1", "run", 500, {}},
+                         {"m01", "2026-12-06", "shop@pc2", "alarm", 42, {}}});
+        const auto rows = db::stateTimes(d, "2026-12-06", "studio@pc1");
+        QCOMPARE(rows.size(), std::size_t(2));
+        QCOMPARE(rows[0].state, std::string("idle"));
+        QCOMPARE(rows[1].state, std::string("run"));
+        QCOMPARE(rows[1].ms, std::int64_t(60500));
+        QCOMPARE(db::stateTimes(d, "2026-12-06").size(), std::size_t(3));
+        QVERIFY(db::stateTimes(d, "2026-12-05").empty());
+        QCOMPARE(d.checkIntegrity(), std::string());
     }
 
     // The commands: release and withdraw, the log, a copy, the roles.

@@ -14,6 +14,12 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "db/state_times.h"
+#include "shop/state_time.h"
+
+#include <QDateTime>
+#include <map>
+
 namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
@@ -112,6 +118,22 @@ private slots:
         watch.terminate();
         QVERIFY(watch.waitForFinished(10000));
         QCOMPARE(watch.exitCode(), 0);
+        // The time in each state went into the database (written when a state
+        // changed and at the end): every machine's, m05's offline time too.
+        k528::db::Database d = k528::db::Database::open(k528::db::Location::parse(shop_.db.toStdString()));
+        const auto rows = k528::db::stateTimes(d, k528::shop::localDay(QDateTime::currentMSecsSinceEpoch()));
+        std::map<std::string, std::int64_t> total;
+        std::int64_t offline = 0;
+        for (const k528::db::StateTime& r : rows) {
+            QVERIFY2(r.source.rfind("shop@", 0) == 0, r.source.c_str());
+            total[r.machine] += r.ms;
+            if (r.machine == machineName(k).toStdString() && r.state == "offline")
+                offline += r.ms;
+        }
+        QCOMPARE(static_cast<int>(total.size()), kMachines);
+        for (const auto& [machine, ms] : total)
+            QVERIFY2(ms > 0, (machine + ": " + std::to_string(ms) + " ms").c_str());
+        QVERIFY2(offline > 0, std::to_string(offline).c_str());
     }
 
     void linesAreCheckedAndNamed() {

@@ -1,4 +1,4 @@
-// The Shop workspace (studio.shop_view) with real parts: three `k528 serve
+// The Shop workspace (studio.shop_view) with real parts: sixteen `k528 serve
 // --tcp` on free localhost ports registered as machines of a test database
 // (their `line` set with `k528 db set`); the workspace shows a tile per
 // machine with its mode; a server killed is shown offline within a second
@@ -19,6 +19,11 @@
 #include "workspace/workspaces.h"
 
 #include <QApplication>
+#include <QProcessEnvironment>
+#include <QScrollArea>
+#include <QSysInfo>
+#include "db/state_times.h"
+#include "shop/state_time.h"
 #include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
@@ -41,7 +46,7 @@ namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
 const QString kF7 = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
-constexpr int kMachines = 3;
+constexpr int kMachines = 16; // a shop's row of machines: the page must hold them all
 
 QString machineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLatin1Char('0')); }
 
@@ -159,6 +164,150 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(dock->monitorLabel()->text().contains("F7"), 5000);
         QDir().mkpath(QDir::current().filePath("shots"));
         QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_clicked.png")));
+    }
+
+    // Sixteen machines on a shop PC's screen and an office's, in Russian and
+    // English: a tile each, every one reachable (the tiles scroll when they
+    // do not fit), each one online with its mode; the chart has a bar each.
+    // K528_TEST_SCREENSHOTS=DIR saves each window.
+    void sixteenTilesAtShopSizes() {
+        const QByteArray shots = qgetenv("K528_TEST_SCREENSHOTS");
+        for (const QSize size : {QSize(1366, 768), QSize(1920, 1080)})
+            for (const char* lang : {"ru", "en"}) {
+                QVERIFY(setLanguage(lang));
+                MainWindow w(loadMachine("training-lathe"));
+                w.resize(size);
+                w.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&w));
+                QVERIFY(w.workspaces()->activate("shop"));
+                ShopView* shop = w.shopView();
+                QCOMPARE(static_cast<int>(shop->tiles().size()), kMachines);
+                for (int i = 0; i < kMachines; ++i)
+                    QTRY_VERIFY_WITH_TIMEOUT(shop->state(machineName(i)) && shop->state(machineName(i))->online,
+                                             10000);
+                QTRY_VERIFY_WITH_TIMEOUT(shop->tile("m16")->modeText().contains("F2"), 5000);
+                auto* scroll = shop->findChild<QScrollArea*>("shop.tiles");
+                QVERIFY(scroll);
+                QVERIFY2(scroll->viewport()->height() >= 150,
+                         qPrintable(QString("%1x%2 %3: tiles %4 px high")
+                                        .arg(size.width()).arg(size.height()).arg(lang)
+                                        .arg(scroll->viewport()->height())));
+                int seen = 0;
+                for (int i = 0; i < kMachines; ++i) {
+                    ShopTile* t = shop->tile(machineName(i));
+                    scroll->ensureWidgetVisible(t, 0, 0);
+                    QApplication::processEvents();
+                    // Whole in the viewport once scrolled to, as wide as it asks.
+                    const QRect r(t->mapTo(scroll->viewport(), QPoint(0, 0)), t->size());
+                    QVERIFY2(scroll->viewport()->rect().contains(r),
+                             qPrintable(QStringLiteral("%1 at %2x%3 %4").arg(machineName(i)).arg(size.width())
+                                            .arg(size.height()).arg(lang)));
+                    QVERIFY(t->width() >= t->minimumSizeHint().width());
+                    ++seen;
+                }
+                QCOMPARE(seen, kMachines);
+                scroll->ensureWidgetVisible(shop->tile("m01"), 0, 0);
+                QApplication::processEvents();
+                if (!shots.isEmpty()) {
+                    QDir().mkpath(QString::fromLocal8Bit(shots));
+                    QVERIFY(w.grab().save(QStringLiteral("%1/shop16_%2x%3_%4.png")
+                                              .arg(QString::fromLocal8Bit(shots))
+                                              .arg(size.width())
+                                              .arg(size.height())
+                                              .arg(lang)));
+                }
+            }
+        QVERIFY(setLanguage("en"));
+    }
+
+    // The day's time in each state is the database's: a studio (another
+    // process, the real k528studio in --screenshot mode) polls the machines
+    // for a few seconds and quits; its time is in state_times (this PC's
+    // studio as the source), and a window opened afterwards (a restarted
+    // studio) starts its chart from it. With a broker, that studio published
+    // and its quitting said the goodbye (retained "stopped"), not the will.
+    void timeInStateSurvivesARestart() {
+        const QString today = QDate::currentDate().toString(Qt::ISODate);
+        const std::string source = "studio@" + QSysInfo::machineHostName().toStdString();
+        std::int64_t before = 0;
+        {
+            db::Database d = db::Database::open(db::Location::parse(shop_.db.toStdString()));
+            for (const db::StateTime& r : db::stateTimes(d, today.toStdString(), source))
+                if (r.machine == "m03")
+                    before += r.ms;
+        }
+        QTemporaryDir config;
+        QVERIFY(config.isValid());
+        std::vector<quint16> port;
+        QProcess broker;
+        const bool mqtt = !QStandardPaths::findExecutable("mosquitto").isEmpty() &&
+                          !QStandardPaths::findExecutable("mosquitto_sub").isEmpty();
+        {
+            QSettings settings(config.filePath("K528Studio/k528studio.conf"), QSettings::IniFormat);
+            if (mqtt) {
+                port = tcptest::freePorts(1);
+                broker.start("mosquitto", {"-p", QString::number(port[0])});
+                QVERIFY(broker.waitForStarted());
+                QTRY_VERIFY_WITH_TIMEOUT(
+                    [&] {
+                        QTcpSocket s;
+                        s.connectToHost("127.0.0.1", port[0]);
+                        return s.waitForConnected(200);
+                    }(),
+                    10000);
+                settings.setValue("shop/broker", "mqtt://127.0.0.1:" + QString::number(port[0]));
+                settings.setValue("shop/publish", true);
+            }
+        }
+        QProcess studio;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("XDG_CONFIG_HOME", config.path());
+        env.insert("K528_DB", shop_.db);
+        studio.setProcessEnvironment(env);
+        studio.start(QStringLiteral(K528_STUDIO), {"--lang", "en", "--workspace", "shop", "--screenshot",
+                                                   config.filePath("shot.png"), "--screenshot-delay", "5000"});
+        QVERIFY(studio.waitForStarted());
+        QVERIFY(studio.waitForFinished(60000));
+        QVERIFY2(studio.exitCode() == 0, studio.readAllStandardError().constData());
+        std::int64_t after = 0;
+        {
+            db::Database d = db::Database::open(db::Location::parse(shop_.db.toStdString()));
+            int machines = 0;
+            for (const db::StateTime& r : db::stateTimes(d, today.toStdString(), source)) {
+                if (r.machine == "m03")
+                    after += r.ms;
+                machines += r.state == "idle" ? 1 : 0;
+            }
+            QCOMPARE(machines, kMachines);
+        }
+        qInfo("m03: %lld ms of today on record after the other studio's run (%lld before)",
+              static_cast<long long>(after), static_cast<long long>(before));
+        QVERIFY2(after - before >= 2000, qPrintable(QString::number(after - before)));
+        // A window opened now (the restarted studio) starts from the record.
+        {
+            MainWindow w(loadMachine("training-lathe"));
+            ShopView* shop = w.shopView();
+            std::int64_t shown = 0;
+            for (const std::int64_t ms : shop->today("m03"))
+                shown += ms;
+            QVERIFY2(shown >= after, qPrintable(QStringLiteral("%1 < %2").arg(shown).arg(after)));
+        }
+        if (mqtt) {
+            QProcess sub;
+            sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/_publisher/#",
+                                        "-v", "-C", "1", "-W", "10"});
+            QVERIFY(sub.waitForFinished(15000));
+            const QString bye = QString::fromUtf8(sub.readAllStandardOutput());
+            QVERIFY2(bye.contains("\"online\":false") && bye.contains("\"why\":\"stopped\"") &&
+                         !bye.contains("last will"),
+                     qPrintable(bye));
+            sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/+/state", "-v",
+                                        "-C", QString::number(kMachines), "-W", "10"});
+            QVERIFY(sub.waitForFinished(15000));
+            QCOMPARE(QString::fromUtf8(sub.readAllStandardOutput()).count("/state {"), kMachines);
+            broker.terminate();
+            broker.waitForFinished(5000);
+        }
     }
 
     // Publish to MQTT: the same topics as k528 shop publish, into a broker

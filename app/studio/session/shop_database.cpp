@@ -211,6 +211,8 @@ QString deniedAction(const std::string& action) {
         QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "creating the database's tables"),
         QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "setting up the roles"),
         QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "granting a role"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "setting or clearing the constants lock"),
+        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording the machines' time in each state"),
     };
     for (const char* a : kActions)
         if (action == a)

@@ -6,6 +6,7 @@
 #include "language.h"
 #include "main_window.h"
 #include "session/shop_database.h"
+#include "db/state_times.h"
 #include "shop_poll.h"
 #ifdef K528_STUDIO_MQTT
 #include "shop_publisher.h"
@@ -15,6 +16,7 @@
 
 #include <QBarCategoryAxis>
 #include <QCheckBox>
+#include <QCoreApplication>
 #include <QLineEdit>
 #include <QSettings>
 #include <QBarSet>
@@ -23,6 +25,7 @@
 #include <QDate>
 #include <QDateTime>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -32,6 +35,7 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSplitter>
+#include <QSysInfo>
 #include <QHorizontalStackedBarSeries>
 #include <QStatusBar>
 #include <QThread>
@@ -251,6 +255,7 @@ void ShopTile::mouseReleaseEvent(QMouseEvent* event) {
 
 ShopView::ShopView(MainWindow* window) : QWidget(window), window_(window) {
     setObjectName("shopView");
+    timesSource_ = "studio@" + QSysInfo::machineHostName().toStdString();
     build();
     clock_ = new QTimer(this);
     clock_->setInterval(1000);
@@ -261,23 +266,17 @@ ShopView::ShopView(MainWindow* window) : QWidget(window), window_(window) {
         connect(dock, &ControllerDock::transferFinished, this, [this] { readTransfers(); });
     }
     reload();
+    // Every way out of the studio (the window closed, --screenshot and
+    // --first-frame quitting the event loop, a session's end) says the
+    // publisher's goodbye: the window may outlive the loop undestroyed.
+    connect(qApp, &QCoreApplication::aboutToQuit, this, &ShopView::goodbye);
     // Publishing is a setting: on again at the next start.
     if (QSettings().value("shop/publish").toBool())
         QTimer::singleShot(0, this, [this] { publish_->setChecked(true); });
 }
 
 ShopView::~ShopView() {
-#ifdef K528_STUDIO_MQTT
-    if (mqtt_)
-        mqtt_->stop(3000); // the goodbye, not the will
-#endif
-    mqtt_.reset();
-    connecting_.reset();
-    for (QThread* t : stopping_) {
-        t->disconnect(this);
-        t->wait();
-        delete t;
-    }
+    goodbye();
     ++*generation_;
     if (poller_)
         poller_->stop();
@@ -287,6 +286,26 @@ ShopView::~ShopView() {
         t->wait();
         delete t;
     }
+}
+
+void ShopView::goodbye() {
+    writeStateTimes(); // the time counted since the last minute
+    // A connection being made or a goodbye being said finishes first: a
+    // publisher that connected meanwhile says its goodbye below too.
+    for (QThread* t : stopping_) {
+        t->disconnect(this);
+        t->wait();
+        delete t;
+    }
+    stopping_.clear();
+#ifdef K528_STUDIO_MQTT
+    if (connecting_)
+        connecting_->stop(3000); // nothing to say when it never connected
+    if (mqtt_)
+        mqtt_->stop(3000); // the goodbye, not the will
+#endif
+    connecting_.reset();
+    mqtt_.reset();
 }
 
 void ShopView::build() {
@@ -373,11 +392,20 @@ void ShopView::build() {
     chart_->addAxis(minutesAxis_, Qt::AlignBottom);
     series->attachAxis(machinesAxis_);
     series->attachAxis(minutesAxis_);
-    chartView_ = new QChartView(chart_, chartBox_);
+    // A bar a machine, each tall enough for its name (a shop's sixteen or
+    // more scroll rather than shrink to «…»).
+    chartScroll_ = new QScrollArea(chartBox_);
+    chartScroll_->setObjectName("shop.chartScroll");
+    chartScroll_->setWidgetResizable(true);
+    chartScroll_->setFrameShape(QFrame::NoFrame);
+    chartScroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    chartView_ = new QChartView(chart_, chartScroll_);
     chartView_->setObjectName("shop.chart");
     chartView_->setRenderHint(QPainter::Antialiasing);
     chartView_->setMinimumHeight(90);
-    cl->addWidget(chartView_);
+    chartView_->setMinimumWidth(160); // not the chart's own hint: the page must fit 1366 px
+    chartScroll_->setWidget(chartView_);
+    cl->addWidget(chartScroll_);
     bottom->setStretchFactor(0, 1);
     bottom->setStretchFactor(1, 1);
     split_ = split;
@@ -578,7 +606,7 @@ void ShopView::setPublishing(bool on) {
 
 void ShopView::reload() {
     const bool wasPolling = poller_ != nullptr;
-    stopPolling();
+    stopPolling(); // writes what was counted
     dbError_.clear();
     machines_ = shopMachines(&dbError_);
     for (ShopTile* t : tiles_)
@@ -598,6 +626,7 @@ void ShopView::reload() {
         tiles_.push_back(t);
         names << m.name;
     }
+    readStateTimes();
     machinesAxis_->clear();
     machinesAxis_->append(names);
     for (QBarSet* s : sets_) {
@@ -607,11 +636,54 @@ void ShopView::reload() {
     }
     minutesAxis_->setRange(0, 10);
     minutesAxis_->setTickCount(6);
+    // The axes, the legend and the margins take about 110 px; a bar is as
+    // tall as its machine's name with room around it.
+    const int bar = QFontMetrics(machinesAxis_->labelsFont()).height() * 2;
+    chartView_->setMinimumHeight(std::max(90, bar * static_cast<int>(names.size()) + 110));
     retranslate();
     markCurrent();
     updateChart(true);
     if (wasPolling || isVisible())
         startPolling();
+}
+
+void ShopView::readStateTimes() {
+    if (machines_.empty())
+        return;
+    const std::string day = shop::localDay(shop::unixMsNow());
+    try {
+        const std::vector<db::StateTime> rows = ShopDatabase::at(ShopDatabase::current())->use(
+            [&](db::Database& d) { return db::stateTimes(d, day, timesSource_); });
+        for (const db::StateTime& r : rows)
+            for (std::size_t i = 0; i < machines_.size(); ++i)
+                if (machines_[i].name.toStdString() == r.machine)
+                    for (int k = 0; k < 4; ++k)
+                        if (r.state == shop::activityName(kActivities[k]))
+                            today_[i][static_cast<std::size_t>(k)] = r.ms;
+    } catch (const std::exception&) {
+        // an older or unreadable database: today's times start from nothing
+    }
+}
+
+void ShopView::writeStateTimes() {
+    const std::int64_t now = shop::unixMsNow();
+    tally_.due(now); // starts the minute at the first call
+    if (tally_.empty())
+        return;
+    const std::vector<shop::StateTally::Row> rows = tally_.take(now);
+    std::vector<db::StateTime> out;
+    for (const shop::StateTally::Row& r : rows)
+        out.push_back({r.machine, r.day, timesSource_, r.state, r.ms, {}});
+    try {
+        ShopDatabase::at(ShopDatabase::current())->use([&](db::Database& d) { db::addStateTimes(d, out); });
+    } catch (const std::exception& e) {
+        // Kept for the next minute (a busy or unreachable database); a
+        // database that cannot take them (read-only, an older schema, a
+        // viewer's role) keeps them for the session's chart only.
+        const auto* error = dynamic_cast<const db::Error*>(&e);
+        if (error && (error->kind() == db::ErrorKind::Busy || error->kind() == db::ErrorKind::Io))
+            tally_.putBack(rows);
+    }
 }
 
 void ShopView::readTransfers() {
@@ -675,6 +747,7 @@ void ShopView::stopPolling() {
     if (!poller_)
         return;
     ++*generation_;
+    writeStateTimes();
     // Stopped off the window's thread: a worker waits for its line's answer.
     shop::Poller* p = poller_.release();
     QThread* t = QThread::create([p] { delete p; });
@@ -699,8 +772,11 @@ void ShopView::apply(const shop::PollResult& r) {
     const std::size_t i = r.index;
     shop::Tracker& tk = trackers_[i];
     const shop::Activity before = tk.state().activity;
-    if (tk.state().polled && lastPollMs_[i] > 0)
-        today_[i][static_cast<std::size_t>(slotOf(before))] += std::max<std::int64_t>(0, r.atMs - lastPollMs_[i]);
+    if (tk.state().polled && lastPollMs_[i] > 0) {
+        const std::int64_t ms = std::max<std::int64_t>(0, r.atMs - lastPollMs_[i]);
+        today_[i][static_cast<std::size_t>(slotOf(before))] += ms;
+        tally_.add(tk.state().machine, shop::localDay(r.atMs), before, ms);
+    }
     lastPollMs_[i] = r.atMs;
     std::vector<shop::AlarmEvent> events;
     const bool changed = tk.update(r.online ? &r.live : nullptr, r.why, r.atMs, events);
@@ -722,8 +798,11 @@ void ShopView::apply(const shop::PollResult& r) {
         mqtt_->publish(tk.state(), changed, events, r.atMs, error);
     }
 #endif
-    if (tk.state().activity != before)
+    if (tk.state().activity != before) {
+        tally_.changed(); // the time up to the change goes to the database now
+        writeStateTimes();
         updateChart();
+    }
     if (changed)
         emit machineChanged(machines_[i].name);
     emit polled();
@@ -731,6 +810,8 @@ void ShopView::apply(const shop::PollResult& r) {
 
 void ShopView::tick() {
     const std::int64_t now = shop::unixMsNow();
+    if (tally_.due(now)) // once a minute
+        writeStateTimes();
     for (ShopTile* t : tiles_)
         t->showTime(now);
     updateChart();

@@ -22,6 +22,7 @@
 
 #include "shop/shop_machines.h"
 #include "shop/state.h"
+#include "shop/state_time.h"
 
 #include <QFrame>
 #include <QHash>
@@ -33,6 +34,7 @@
 
 class QChart;
 class QChartView;
+class QScrollArea;
 class QBarSet;
 class QBarCategoryAxis;
 class QValueAxis;
@@ -153,6 +155,14 @@ private:
     void markCurrent();
     void setPublishState(const QString& text, const QString& detail = {});
     void retirePublisher(std::shared_ptr<shop::MqttPublisher> p);
+    // Says the publisher's goodbye (retained offline) and waits for it: at
+    // the end of the application's event loop and when the view goes.
+    void goodbye();
+    // Today's time in each state: this studio's record read from the
+    // database (reload), and what was counted since written to it (once a
+    // minute, when a state changes, when polling stops and at the end).
+    void readStateTimes();
+    void writeStateTimes();
 
     MainWindow* window_;
     std::vector<ShopMachine> machines_;
@@ -162,6 +172,8 @@ private:
     std::vector<std::array<std::int64_t, 4>> today_;
     std::vector<std::int64_t> lastPollMs_;
     qint64 day_ = 0; // the local day's Julian number
+    shop::StateTally tally_;  // counted since the last write to the database
+    std::string timesSource_; // "studio@HOST": this studio's rows of state_times
     std::unique_ptr<shop::Poller> poller_;
     std::shared_ptr<std::atomic<int>> generation_ = std::make_shared<std::atomic<int>>(0);
     std::vector<QThread*> retiring_; // pollers being stopped off the window's thread
@@ -172,6 +184,7 @@ private:
     QGroupBox* alarmsBox_ = nullptr;
     QGroupBox* chartBox_ = nullptr;
     QTreeWidget* alarms_ = nullptr;
+    QScrollArea* chartScroll_ = nullptr;
     QChartView* chartView_ = nullptr;
     QChart* chart_ = nullptr;
     std::array<QBarSet*, 4> sets_{};

@@ -51,6 +51,7 @@ public:
             {"collision.feed-wheel-stopped", tr("a feed of the wheel into the ring with the wheel stopped: its edge at Ø%1 near Z%2 — frame %4, line %5: start the wheel before the feed")},
             {"collision.tool-into-chuck.jaws", tr("the tool into the chuck's jaws at X%1 Z%2 — frame %4, line %5")},
             {"collision.tool-into-chuck.body", tr("the tool into the chuck's body at X%1 Z%2 — frame %4, line %5")},
+            {"collision.tool-into-chuck", tr("the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5")},
             {"collision.tool-into-chuck.manual", tr("the tool into the chuck or its jaws by a manual move at X%1 Z%2")},
             {"collision.rapid-into-material.ring", tr("the wheel into the ring at rapid: its edge at Ø%1 near Z%2, %3 mm into the wall — frame %4, line %5")},
             {"message", tr("message %1 «%2» — frame %3, line %4: it must not come in this exercise")},
