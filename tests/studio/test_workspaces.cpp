@@ -408,6 +408,50 @@ private slots:
         }
     }
 
+    // The constants and R-parameter docks' buttons (Calculator…, Cutting
+    // data…, Trial part…) in the Operator workspace, the narrowest: each is
+    // shown whole inside the dock (the row wraps), none beyond its edge
+    // where no one reaches it.
+    void theButtonsOfShortDocksAreReachable() {
+        MainWindow w;
+        QVERIFY(shownIn(w, QStringLiteral("operator")));
+        const auto wholeInDock = [](QWidget* x, QDockWidget* d) {
+            for (QWidget* p = x->parentWidget(); p; p = p->parentWidget()) {
+                const QRect inP(x->mapTo(p, QPoint(0, 0)), x->size());
+                if (!p->rect().contains(inP))
+                    return false;
+                if (p == d)
+                    return true;
+            }
+            return false;
+        };
+        const std::pair<const char*, std::vector<const char*>> docks[] = {
+            {"dock.constants",
+             {"constants.undo", "constants.redo", "constants.history", "constants.diff", "constants.import",
+              "constants.export", "constants.calculator", "constants.cuttingData", "constants.note"}},
+            {"dock.rparams",
+             {"rparams.keepPreset", "rparams.removePreset", "rparams.keepAll", "rparams.applyPresets",
+              "rparams.trialPart", "rparams.note"}}};
+        for (const auto& [name, controls] : docks) {
+            auto* d = w.findChild<QDockWidget*>(name);
+            QVERIFY2(d, name);
+            d->show();
+            d->raise();
+            settle();
+            for (const char* c : controls) {
+                auto* x = d->findChild<QWidget*>(QString::fromLatin1(c));
+                QVERIFY2(x, c);
+                QVERIFY2(x->isVisible(), c);
+                QVERIFY2(wholeInDock(x, d), qPrintable(QStringLiteral("%1: %2 at %3 (%4) is cut by the dock (%5)")
+                                                           .arg(QString::fromLatin1(name), QString::fromLatin1(c))
+                                                           .arg(x->mapTo(d, QPoint(0, 0)).x())
+                                                           .arg(sizeText(x->size()), sizeText(d->size()))));
+            }
+            QVERIFY(w.grab().save(shotPath(QStringLiteral("operator-%1-buttons").arg(QString::fromLatin1(name).mid(5)))));
+            d->hide();
+        }
+    }
+
     void longTextsAndMoreDocksDoNotWidenTheWindow() {
         MainWindow w;
         QVERIFY(shown(w));

@@ -17,6 +17,7 @@
 #include "controller/push_preview.h"
 #include "controller/view_notice.h"
 #include "widgets.h"
+#include "workspace/flow_layout.h"
 #include "workspace/screen_fit.h"
 #include "workspace/pane_dock.h"
 
@@ -154,7 +155,7 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     top->addWidget(axis_);
     top->addWidget(hideReserved_);
 
-    auto* tools = new QHBoxLayout;
+    auto* tools = new FlowLayout; // wraps in a narrow dock: every button in reach
     undoButton_ = button(this, "constants.undo");
     redoButton_ = button(this, "constants.redo");
     historyButton_ = button(this, "constants.history");
@@ -179,12 +180,11 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     for (QToolButton* b : {undoButton_, redoButton_, historyButton_, diffButton_, importButton_,
                            exportButton_, calcButton_, cuttingButton_})
         tools->addWidget(b);
-    tools->addSpacing(12);
     noteLabel_ = new QLabel(this);
     note_ = new QLineEdit(this);
     note_->setObjectName("constants.note");
-    tools->addWidget(noteLabel_);
-    tools->addWidget(note_, 1);
+    note_->setMinimumWidth(180);
+    tools->addGroup({noteLabel_, note_});
 
     table_ = new QTableView(this);
     table_->setObjectName("constants.table");

@@ -11,6 +11,7 @@
 #include "controller/view_notice.h"
 #include "database/database_ui.h"
 #include "widgets.h"
+#include "workspace/flow_layout.h"
 #include "workspace/screen_fit.h"
 #include "workspace/pane_dock.h"
 
@@ -91,12 +92,11 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     noteLabel_ = new QLabel(this);
     note_ = new QLineEdit(this);
     note_->setObjectName("rparams.note");
-    auto* tools = new QHBoxLayout;
+    note_->setMinimumWidth(180);
+    auto* tools = new FlowLayout; // wraps in a narrow dock: every button in reach
     for (QToolButton* b : {keep_, remove_, keepAll_, apply_, trial_})
         tools->addWidget(b);
-    tools->addSpacing(12);
-    tools->addWidget(noteLabel_);
-    tools->addWidget(note_, 1);
+    tools->addGroup({noteLabel_, note_});
     connect(keep_, &QToolButton::clicked, this, [this] { keepSelectedAsPreset(); });
     connect(remove_, &QToolButton::clicked, this, [this] { removeSelectedPreset(); });
     connect(keepAll_, &QToolButton::clicked, this, [this] { keepAllAsPresets(); });
