@@ -11,14 +11,9 @@
 #include "stock/stock.h"
 #include "toolpath/path_io.h"
 
-#include <cerrno>
 #include <climits>
-#include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace k528::cli {
 
@@ -57,46 +52,11 @@ int runPlot(std::span<const std::string> argv) {
         if (const auto b = stock::findUcg(text))
             ucg = stock::formatUcg(*b);
 
-    const std::string renderer = findHelper("k528-plot").string();
-    if (renderer.empty()) {
-        std::fprintf(stderr, "k528: plot needs the renderer k528-plot (built with the desktop program; looked for %s)\n",
-                     helperSearchText("k528-plot").c_str());
+    const std::vector<std::string> helperArgs{"--out", *out, "--size", std::to_string(w) + "x" + std::to_string(h),
+                                        "--view", view};
+    if (!runHelperWithInput("k528-plot", "plot", helperArgs,
+                            [&](std::FILE* f) { return toolpath::writePath(f, path, ucg); }))
         return ExitUsage;
-    }
-    int fd[2];
-    if (pipe(fd) != 0) {
-        std::fprintf(stderr, "k528: pipe: %s\n", std::strerror(errno));
-        return ExitUsage;
-    }
-    const pid_t pid = fork();
-    if (pid < 0) {
-        std::fprintf(stderr, "k528: fork: %s\n", std::strerror(errno));
-        return ExitUsage;
-    }
-    if (pid == 0) {
-        dup2(fd[0], STDIN_FILENO);
-        close(fd[0]);
-        close(fd[1]);
-        std::string sz = std::to_string(w) + "x" + std::to_string(h);
-        const char* a[] = {renderer.c_str(), "--out", out->c_str(), "--size", sz.c_str(),
-                           "--view",         view.c_str(), nullptr};
-        execv(renderer.c_str(), const_cast<char* const*>(a));
-        std::fprintf(stderr, "k528: cannot run %s: %s\n", renderer.c_str(), std::strerror(errno));
-        _exit(ExitUsage);
-    }
-    close(fd[0]);
-    std::signal(SIGPIPE, SIG_IGN);
-    std::FILE* pipeOut = fdopen(fd[1], "wb");
-    const bool written = pipeOut && toolpath::writePath(pipeOut, path, ucg);
-    if (pipeOut)
-        std::fclose(pipeOut);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !written) {
-        if (!WIFEXITED(status))
-            std::fprintf(stderr, "k528: the renderer %s stopped abnormally\n", renderer.c_str());
-        return ExitUsage;
-    }
     for (const toolpath::Segment& s : path.segments)
         if (s.outside)
             std::fprintf(stderr, "L%d N%d line %d: ВНЕ ГРАНИЦ\n", s.program, s.n, s.line);

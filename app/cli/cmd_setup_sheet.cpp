@@ -13,13 +13,8 @@
 #include "proveout/setup_sheet.h"
 #include "proveout_cli.h"
 
-#include <cerrno>
-#include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace k528::cli {
 
@@ -57,47 +52,12 @@ int runSetupSheet(std::span<const std::string> argv) {
     if (!out || out->empty())
         return ExitOk;
 
-    const std::string renderer = findHelper("k528-sheet").string();
-    if (renderer.empty()) {
-        std::fprintf(stderr,
-                     "k528: setup-sheet needs the renderer k528-sheet (built with the desktop program; looked for %s)\n",
-                     helperSearchText("k528-sheet").c_str());
+    const std::vector<std::string> helperArgs{"--out", *out, "--lang", setup.lang == Lang::Ru ? "ru" : "en"};
+    const bool done = runHelperWithInput("k528-sheet", "setup-sheet", helperArgs, [&](std::FILE* f) {
+        return std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    });
+    if (!done)
         return ExitUsage;
-    }
-    int fd[2];
-    if (pipe(fd) != 0) {
-        std::fprintf(stderr, "k528: pipe: %s\n", std::strerror(errno));
-        return ExitUsage;
-    }
-    std::fflush(stdout);
-    const pid_t pid = fork();
-    if (pid < 0) {
-        std::fprintf(stderr, "k528: fork: %s\n", std::strerror(errno));
-        return ExitUsage;
-    }
-    if (pid == 0) {
-        dup2(fd[0], STDIN_FILENO);
-        close(fd[0]);
-        close(fd[1]);
-        const char* lang = setup.lang == Lang::Ru ? "ru" : "en";
-        const char* a[] = {renderer.c_str(), "--out", out->c_str(), "--lang", lang, nullptr};
-        execv(renderer.c_str(), const_cast<char* const*>(a));
-        std::fprintf(stderr, "k528: cannot run %s: %s\n", renderer.c_str(), std::strerror(errno));
-        _exit(ExitUsage);
-    }
-    close(fd[0]);
-    std::signal(SIGPIPE, SIG_IGN);
-    std::FILE* pipeOut = fdopen(fd[1], "wb");
-    const bool written = pipeOut && std::fwrite(text.data(), 1, text.size(), pipeOut) == text.size();
-    if (pipeOut)
-        std::fclose(pipeOut);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !written) {
-        if (!WIFEXITED(status))
-            std::fprintf(stderr, "k528: the renderer %s stopped abnormally\n", renderer.c_str());
-        return ExitUsage;
-    }
     return ExitOk;
 }
 

@@ -1,6 +1,10 @@
 #include "helper_path.h"
 
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #ifndef K528_HELPER_DIR_FROM_BIN
@@ -33,6 +37,55 @@ std::string helperSearchText(std::string_view name) {
         text += c.string();
     }
     return text.empty() ? std::string("(k528's own folder is unknown)") : text;
+}
+
+bool runHelperWithInput(std::string_view name, std::string_view command, const std::vector<std::string>& args,
+                        const std::function<bool(std::FILE*)>& write) {
+    const std::string helper = findHelper(name).string();
+    if (helper.empty()) {
+        std::fprintf(stderr, "k528: %.*s needs the renderer %.*s (built with the desktop program; looked for %s)\n",
+                     static_cast<int>(command.size()), command.data(), static_cast<int>(name.size()), name.data(),
+                     helperSearchText(name).c_str());
+        return false;
+    }
+    int fd[2];
+    if (pipe(fd) != 0) {
+        std::fprintf(stderr, "k528: pipe: %s\n", std::strerror(errno));
+        return false;
+    }
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid < 0) {
+        std::fprintf(stderr, "k528: fork: %s\n", std::strerror(errno));
+        close(fd[0]);
+        close(fd[1]);
+        return false;
+    }
+    if (pid == 0) {
+        dup2(fd[0], STDIN_FILENO);
+        close(fd[0]);
+        close(fd[1]);
+        std::vector<const char*> argv{helper.c_str()};
+        for (const std::string& a : args)
+            argv.push_back(a.c_str());
+        argv.push_back(nullptr);
+        execv(helper.c_str(), const_cast<char* const*>(argv.data()));
+        std::fprintf(stderr, "k528: cannot run %s: %s\n", helper.c_str(), std::strerror(errno));
+        _exit(2);
+    }
+    close(fd[0]);
+    std::signal(SIGPIPE, SIG_IGN);
+    std::FILE* pipeOut = fdopen(fd[1], "wb");
+    const bool written = pipeOut && write(pipeOut);
+    if (pipeOut)
+        std::fclose(pipeOut);
+    else
+        close(fd[1]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (!WIFEXITED(status))
+        std::fprintf(stderr, "k528: the renderer %s stopped abnormally\n", helper.c_str());
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 && written;
 }
 
 } // namespace k528::cli

@@ -5,7 +5,10 @@
 // unpacked package and a relocated install work as well.
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,5 +24,13 @@ std::filesystem::path findHelper(std::string_view name);
 
 // The candidates as "a, b" for an error message.
 std::string helperSearchText(std::string_view name);
+
+// Runs the helper `name` with `args`, handing it on its standard input what
+// `write` writes (the renderers k528-plot and k528-sheet read what to draw
+// from there). `command` is the k528 command that needs it ("plot"), for the
+// message when the helper is missing. True when the helper took all of it and
+// exited 0; otherwise it (or this) has said why on stderr.
+bool runHelperWithInput(std::string_view name, std::string_view command, const std::vector<std::string>& args,
+                        const std::function<bool(std::FILE*)>& write);
 
 } // namespace k528::cli

@@ -17,18 +17,7 @@ namespace {
 
 // Fixed decimals, trailing zeros (and a trailing point) removed.
 std::string num(double v, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    std::string s = buf;
-    if (s.find('.') != std::string::npos) {
-        while (s.back() == '0')
-            s.pop_back();
-        if (s.back() == '.')
-            s.pop_back();
-    }
-    if (s == "-0")
-        s = "0";
-    return s;
+    return units::formatTrimmed(v, decimals);
 }
 
 struct Text {

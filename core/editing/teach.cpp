@@ -1,6 +1,7 @@
 #include "editing/teach.h"
 
 #include "catalog/rparams.h"
+#include "units/units.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,16 +11,7 @@ namespace k528::editing {
 namespace {
 
 std::string mm(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3f", std::round(v * 1000) / 1000);
-    std::string s = buf;
-    while (s.back() == '0')
-        s.pop_back();
-    if (s.back() == '.')
-        s.pop_back();
-    if (s == "-0")
-        s = "0";
-    return s;
+    return units::formatTrimmed(std::round(v * 1000) / 1000, 3);
 }
 
 bool contains(std::string_view s, std::string_view part) { return s.find(part) != std::string_view::npos; }

@@ -3,6 +3,7 @@
 #include "profile/problem.h"
 #include "proveout/material.h"
 #include "proveout/sweep.h"
+#include "units/units.h"
 
 #include <algorithm>
 #include <array>
@@ -64,17 +65,7 @@ const Text* findText(std::string_view id) {
 
 // A length in mm as the panel shows it: up to 3 decimals, no trailing zeros.
 std::string mm(double v) {
-    double r = std::round(v * 1000) / 1000;
-    if (r == 0)
-        r = 0;
-    char b[40];
-    std::snprintf(b, sizeof b, "%.3f", r);
-    std::string s = b;
-    while (!s.empty() && s.back() == '0')
-        s.pop_back();
-    if (!s.empty() && s.back() == '.')
-        s.pop_back();
-    return s;
+    return units::formatTrimmed(std::round(v * 1000) / 1000, 3);
 }
 
 // The tool's body relative to its tip, in (z, r).

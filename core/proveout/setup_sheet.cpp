@@ -103,18 +103,7 @@ std::string_view toolKindText(profile::ToolKind k, bool russian) {
 std::string sheetMm(double v, int decimals) {
     if (!std::isfinite(v))
         return "—";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    std::string s = buf;
-    if (s.find('.') != std::string::npos) {
-        while (s.back() == '0')
-            s.pop_back();
-        if (s.back() == '.')
-            s.pop_back();
-    }
-    if (s == "-0")
-        s = "0";
-    return s;
+    return units::formatTrimmed(v, decimals);
 }
 
 SetupSheet setupSheet(const profile::MachineProfile& profile, const program::ProgramStore& store,

@@ -3,6 +3,7 @@
 
 #include "catalog/training_texts.h"
 #include "profile/problem.h"
+#include "units/units.h"
 
 #include <cmath>
 #include <cstdio>
@@ -27,16 +28,7 @@ std::string render(const Text& t, Language l) {
 }
 
 std::string mmArg(double mm) {
-    if (std::fabs(mm) < 0.0005)
-        mm = 0;
-    char b[40];
-    std::snprintf(b, sizeof b, "%.3f", mm);
-    std::string s(b);
-    while (!s.empty() && s.back() == '0')
-        s.pop_back();
-    if (!s.empty() && s.back() == '.')
-        s.pop_back();
-    return s;
+    return units::formatTrimmed(std::fabs(mm) < 0.0005 ? 0.0 : mm, 3);
 }
 
 std::string areaArg(double mm2) {

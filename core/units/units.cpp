@@ -14,4 +14,19 @@ std::string formatDisc(std::int64_t disc, const AxisScale& s) {
     return buf;
 }
 
+std::string formatTrimmed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::string s = buf;
+    if (s.find('.') != std::string::npos) {
+        while (s.back() == '0')
+            s.pop_back();
+        if (s.back() == '.')
+            s.pop_back();
+    }
+    if (s == "-0")
+        s = "0";
+    return s;
+}
+
 } // namespace k528::units

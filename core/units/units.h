@@ -134,6 +134,11 @@ inline std::int64_t mPerS2ToAccelParam(double a, const AxisScale& s) {
 // "234.567", "-0.020", "1205.1240": display discretes with the axis' decimals.
 std::string formatDisc(std::int64_t disc, const AxisScale& s);
 
+// "1.25", "-3", "0": `v` with `decimals` fixed decimals (as printf rounds),
+// then its trailing zeros and point removed; never "-0". For texts where a
+// length or a number reads best without padding (notes, the setup sheet).
+std::string formatTrimmed(double v, int decimals);
+
 // Time.
 constexpr double msToS(std::int64_t ms) { return static_cast<double>(ms) / 1000.0; }
 inline std::int64_t sToMs(double s) { return roundHalfAway(s * 1000.0); }

@@ -44,6 +44,11 @@ private slots:
         QCOMPARE(formatDisc(0, um), std::string("0.000"));
         QCOMPARE(formatDisc(12051240, AxisScale{Discrete::Mm0_0001, false}), std::string("1205.1240"));
         QCOMPARE(formatDisc(-1006, AxisScale{Discrete::Mm0_01, false}), std::string("-10.06"));
+        QCOMPARE(formatTrimmed(1.25, 3), std::string("1.25"));
+        QCOMPARE(formatTrimmed(-3.0, 3), std::string("-3"));
+        QCOMPARE(formatTrimmed(-0.0002, 3), std::string("0")); // never "-0"
+        QCOMPARE(formatTrimmed(120.0, 0), std::string("120")); // no point: zeros of the whole part stay
+        QCOMPARE(formatTrimmed(954.929658, 2), std::string("954.93"));
     }
     void speedConstants() {
         // Appendix Ж: F ОБЫЧНАЯ 500000 = 5000 mm/min at 0.001 mm.
