@@ -19,6 +19,9 @@
 #include "workspace/workspaces.h"
 
 #include <QApplication>
+#include <QBarCategoryAxis>
+#include <QChart>
+#include <QChartView>
 #include <QProcessEnvironment>
 #include <QScrollArea>
 #include <QSysInfo>
@@ -206,6 +209,13 @@ private slots:
                     ++seen;
                 }
                 QCOMPARE(seen, kMachines);
+                // The chart reads top-down as the tiles do: m01 at the top
+                // (a horizontal bar chart's last category), m16 at the bottom.
+                auto* axis = qobject_cast<QBarCategoryAxis*>(shop->chartView()->chart()->axes(Qt::Vertical).value(0));
+                QVERIFY(axis);
+                QCOMPARE(axis->categories().size(), kMachines);
+                QCOMPARE(axis->categories().constLast(), machineName(0));
+                QCOMPARE(axis->categories().constFirst(), machineName(kMachines - 1));
                 scroll->ensureWidgetVisible(shop->tile("m01"), 0, 0);
                 QApplication::processEvents();
                 if (!shots.isEmpty()) {

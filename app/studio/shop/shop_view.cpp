@@ -628,7 +628,10 @@ void ShopView::reload() {
     }
     readStateTimes();
     machinesAxis_->clear();
-    machinesAxis_->append(names);
+    // A horizontal bar chart lists its first category at the bottom: the
+    // names go in reversed, so the chart reads top-down as the tiles do.
+    QStringList bottomUp(names.crbegin(), names.crend());
+    machinesAxis_->append(bottomUp);
     for (QBarSet* s : sets_) {
         s->remove(0, s->count());
         for (qsizetype i = 0; i < names.size(); ++i)
@@ -828,7 +831,7 @@ void ShopView::updateChart(bool force) {
             total += tenths / 10.0;
             if (tenths != chartShown_[i][k]) {
                 chartShown_[i][k] = tenths;
-                sets_[k]->replace(static_cast<qsizetype>(i), tenths / 10.0);
+                sets_[k]->replace(static_cast<qsizetype>(today_.size() - 1 - i), tenths / 10.0);
                 changed = true;
             }
         }
