@@ -62,6 +62,12 @@ Json fileJson(const std::string& file, const program::CheckResult& r) {
 
 } // namespace
 
+void printDescriptionError(const plc::DescriptionError& e, Lang lang) {
+    const bool ru = lang == Lang::Ru;
+    std::fprintf(stderr, ru ? "k528: описание станка %s\n" : "k528: machine description %s\n",
+                 e.text(ru).c_str());
+}
+
 bool parseLang(const std::string& text, Lang& lang) {
     if (text == "ru")
         lang = Lang::Ru;
@@ -152,7 +158,7 @@ int runCheck(std::span<const std::string> argv) {
                 po.fromReferencePoint = true; // as `k528 run` starts, after homing
                 findings = proveout::proveStore(*machine, r.store, po, blank).findings;
             } catch (const plc::DescriptionError& e) {
-                std::fprintf(stderr, "k528: machine description %s\n", e.what());
+                printDescriptionError(e, lang);
                 return ExitUsage;
             } catch (const profile::ToolError& e) {
                 std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());

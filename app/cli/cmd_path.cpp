@@ -214,7 +214,7 @@ int runPath(std::span<const std::string> argv) {
     try {
         proof = proveout::proveProgram(setup.profile, setup.store, setup.number, po.preview, blank);
     } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        printDescriptionError(e, setup.lang);
         return ExitUsage;
     } catch (const profile::ToolError& e) {
         std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());

@@ -475,7 +475,7 @@ int runRun(std::span<const std::string> argv) {
             result = machine::runProgram(prof, parsed.store, number, options);
         }
     } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        printDescriptionError(e, lang);
         return ExitUsage;
     } catch (const std::invalid_argument& e) {
         return usageError(e.what());

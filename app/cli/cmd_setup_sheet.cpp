@@ -40,7 +40,7 @@ int runSetupSheet(std::span<const std::string> argv) {
                                      std::filesystem::path(args.positional().front()).filename().string(),
                                      setup.rPresets, blank, !args.has("--no-cycle-times"));
     } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        printDescriptionError(e, setup.lang);
         return ExitUsage;
     } catch (const profile::ToolError& e) {
         std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());

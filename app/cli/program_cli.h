@@ -11,9 +11,16 @@
 
 #include "program/diagnostic.h"
 
+namespace k528::plc {
+class DescriptionError;
+} // namespace k528::plc
+
 namespace k528::cli {
 
 enum class Lang { Ru, En };
+
+// "k528: machine description FILE: PATH: what is wrong" on stderr, in `lang`.
+void printDescriptionError(const plc::DescriptionError& e, Lang lang);
 
 // "ru" / "en" -> Lang; false for anything else.
 bool parseLang(const std::string& text, Lang& lang);

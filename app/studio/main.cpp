@@ -25,6 +25,7 @@
 #include "workspace/workspaces.h"
 #include "profile/builtin.h"
 #include "database/database_ui.h"
+#include "session/core_texts.h"
 #include "session/machine_source.h"
 #include "util/version.h"
 
@@ -157,11 +158,11 @@ int main(int argc, char** argv) {
         machine = k528::studio::loadMachine(wanted);
     } catch (const std::exception& e) {
         if (cli.isSet(profileOption)) {
-            std::fprintf(stderr, "k528studio: %s\n", e.what());
+            std::fprintf(stderr, "k528studio: %s\n", qPrintable(k528::studio::coreErrorText(e)));
             return 2;
         }
         // The remembered machine is gone (deleted from the database): the default.
-        std::fprintf(stderr, "k528studio: %s; starting %s\n", e.what(),
+        std::fprintf(stderr, "k528studio: %s; starting %s\n", qPrintable(k528::studio::coreErrorText(e)),
                      k528::profile::kDefaultProfile.data());
         machine = k528::studio::loadMachine(QString::fromLatin1(k528::profile::kDefaultProfile.data()));
     }

@@ -23,6 +23,9 @@ constexpr std::array kNotes = {
     NoteText{"studio.editor", "programs and messages from the editor (K528 Studio)"},
     NoteText{"studio.set", "set %1 = %2 (K528 Studio)"},
     NoteText{"studio.undo", "undo: %1"}, // %1: the note of the change undone, as stored
+    NoteText{"studio.presets", "presets %1 (K528 Studio)"},
+    // a trial part's correction of a tool's offset (k528 db trial, the desktop's dialog)
+    NoteText{"trial", "trial part: T%1 %2 measured %3 for %4: R%5 %6 -> %7"},
 };
 
 // A key of an item a revision changes: C022, R12, #3, A01/W01/S01, title,

@@ -479,8 +479,7 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
                 if (h.has("pulses_per_detent")) {
                     const auto steps = h.child("pulses_per_detent").elements();
                     if (steps.size() != 3)
-                        h.failAt("pulses_per_detent",
-                                 "needs three values: x1, x10, x100 positions");
+                        h.failAt("pulses_per_detent", profile::problem("equipment.detents"));
                     for (std::size_t i = 0; i < 3; ++i)
                         ps.pulsesPerDetent[i] = static_cast<int>(steps[i].asInteger(1, 1000));
                 }
@@ -500,9 +499,9 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
         Spindle::Settings st;
         st.name = n.string("name");
         if (st.name != "spindle" && st.name != "wheel" && st.name != "work")
-            n.failAt("name", "'" + st.name + "': a spindle is \"spindle\", \"wheel\" or \"work\"");
+            n.failAt("name", profile::problem("equipment.spindle-name", {st.name}));
         if (e.spindle(st.name))
-            n.failAt("name", "spindle '" + st.name + "' appears twice");
+            n.failAt("name", profile::problem("equipment.spindle-twice", {st.name}));
         st.rpm = n.number("rpm", 1, 200000);
         st.rampMs = n.number("ramp_ms", 0, 600000, 1500);
         st.atSpeedPercent = n.number("at_speed_percent", 0.1, 50, 5);
@@ -514,10 +513,9 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
         pt.name = n.string("name");
         if (pt.name != "coolant" && pt.name != "lube" && pt.name != "hydraulics" &&
             pt.name != "air")
-            n.failAt("name", "'" + pt.name +
-                                 "': a pump is \"coolant\", \"lube\", \"hydraulics\" or \"air\"");
+            n.failAt("name", profile::problem("equipment.pump-name", {pt.name}));
         if (e.pump(pt.name))
-            n.failAt("name", "pump '" + pt.name + "' appears twice");
+            n.failAt("name", profile::problem("equipment.pump-twice", {pt.name}));
         pt.riseMs = n.number("rise_ms", 0, 600000, 400);
         pt.fallMs = n.number("fall_ms", 0, 600000, 200);
         e.pumps.push_back(std::make_unique<Pump>(s, pt));
@@ -559,8 +557,7 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
         gs.blankBoreMm = r.number("blank_bore_mm", 0.1, 10000);
         gs.sizeMm = r.number("size_mm", 0.1, 10000);
         if (gs.sizeMm <= gs.blankBoreMm)
-            r.failAt("size_mm",
-                     "the size must be larger than the blank's bore (internal grinding)");
+            r.failAt("size_mm", profile::problem("equipment.ring-size"));
         gs.ringZMinMm = r.number("z_min_mm", -100000, 100000);
         gs.ringZMaxMm = r.number("z_max_mm", gs.ringZMinMm, 100000);
         gs.removalMs = r.number("removal_ms", 1, 60000, 300);
@@ -577,9 +574,9 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
         const Spindle* wheel = e.spindle("wheel");
         const Spindle* work = e.spindle("work");
         if (!wheel || !work)
-            g.fail("grinding needs the spindles \"wheel\" and \"work\"");
+            g.fail(profile::problem("equipment.grinding-spindles"));
         if (!e.chuck)
-            g.fail("grinding needs a chuck (the ring is changed while it is open)");
+            g.fail(profile::problem("equipment.grinding-chuck"));
         e.grinding = std::make_unique<Grinding>(s, gs, wheel, work, e.chuck.get());
     }
     if (eq.has("fast_inputs")) {
@@ -598,7 +595,7 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
                 const std::string name = ax.string(k);
                 const auto src = s.findSensor(name);
                 if (!src)
-                    ax.failAt(k, "unknown machine signal '" + name + "'");
+                    ax.failAt(k, profile::problem("equipment.unknown-signal", {name}));
                 e.eraseSource[static_cast<std::size_t>(a)][static_cast<std::size_t>(n)] = *src;
             }
         }
@@ -606,7 +603,7 @@ Equipment buildEquipment(const plc::JsonNode& eq, Signals& s) {
             const std::string name = f.string("reset");
             const auto src = s.findSensor(name);
             if (!src)
-                f.failAt("reset", "unknown machine signal '" + name + "'");
+                f.failAt("reset", profile::problem("equipment.unknown-signal", {name}));
             e.resetSource = *src;
         }
     }

@@ -249,22 +249,20 @@ void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescr
         const auto s = signals_.findSensor(in.signal);
         if (!s)
             throw plc::DescriptionError(d.source, in.path + ".signal",
-                                        "'" + in.signal + "' is not a sensor of this machine (" +
-                                            listOf(signals_.sensorList()) + ")");
+                                        profile::problem("signal.not-sensor", {in.signal, listOf(signals_.sensorList())}));
         inputs_.push_back({i, *s, in.normallyClosed});
     }
     for (int i = 0; i < plc_->outputCount(); ++i) {
         const plc::OutputDef& out = d.outputs[static_cast<std::size_t>(i)];
         const auto s = signals_.findActuator(out.signal);
         if (!s)
-            throw plc::DescriptionError(d.source, out.path + ".signal",
-                                        "'" + out.signal +
-                                            "' is not an actuator of this machine (" +
-                                            listOf(signals_.actuatorList()) + ")");
+            throw plc::DescriptionError(
+                d.source, out.path + ".signal",
+                profile::problem("signal.not-actuator", {out.signal, listOf(signals_.actuatorList())}));
         for (const Wire& w : outputs_)
             if (w.signal == *s)
                 throw plc::DescriptionError(d.source, out.path + ".signal",
-                                            "'" + out.signal + "' is driven by another output too");
+                                            profile::problem("signal.driven-twice", {out.signal}));
         outputs_.push_back({i, *s, false});
     }
 

@@ -1,5 +1,7 @@
 #include "plc/description.h"
 
+#include "plc/description_texts.h"
+
 #include "resources/embedded.h"
 #include "util/json.h"
 
@@ -11,6 +13,8 @@
 namespace k528::plc {
 
 namespace {
+
+using profile::problem;
 
 struct SlotName {
     std::string_view key;
@@ -78,18 +82,16 @@ constexpr std::string_view kReserved[] = {"true",    "false",  "and",          "
 
 void checkName(const JsonNode& node, std::string_view key, const std::string& name) {
     if (!validName(name))
-        node.failAt(key, "'" + name +
-                             "' is not a valid name (letters, digits and '_', starting with a "
-                             "letter or '_', at most 40)");
+        node.failAt(key, problem("name.invalid", {name}));
     for (std::string_view r : kReserved)
         if (r == name)
-            node.failAt(key, "'" + name + "' is reserved (a keyword or a built-in signal)");
+            node.failAt(key, problem("name.reserved", {name}));
     if (name.size() >= 2 && (name[0] == 'K') &&
         std::all_of(name.begin() + 1, name.end(),
                     [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-        node.failAt(key, "'" + name + "' is reserved for the K923 keys K1..K12");
+        node.failAt(key, problem("name.key", {name}));
     if (name[0] == 'Z' && name.size() > 1 && std::isdigit(static_cast<unsigned char>(name[1])))
-        node.failAt(key, "'" + name + "' looks like an interface address (Z<word>.<bit>)");
+        node.failAt(key, problem("name.address", {name}));
 }
 
 Actions readActions(const JsonNode& n) {
@@ -176,10 +178,10 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
                        "logic", "m_functions", "unknown_m", "interlocks", "keys", "leds", "alarms",
                        "work", "positioner", "equipment", "proveout"});
     if (root.integer("format", 1, 1000) != 1)
-        root.failAt("format", "this program reads format 1");
+        root.failAt("format", problem("format"));
     d.name = root.string("name");
     if (d.name.empty())
-        root.failAt("name", "is empty");
+        root.failAt("name", problem("empty"));
     d.title = root.string("title", "");
 
     if (root.has("plc")) {
@@ -204,7 +206,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         md.title = m.string("title", "");
         for (const ModuleDef& o : d.modules)
             if (o.place == md.place)
-                m.failAt("place", "module place " + std::to_string(md.place) + " appears twice");
+                m.failAt("place", problem("module.twice", {std::to_string(md.place)}));
         d.modules.push_back(md);
     }
     const auto moduleOf = [&](const JsonNode& n) {
@@ -212,7 +214,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         if (!d.modules.empty() &&
             std::none_of(d.modules.begin(), d.modules.end(),
                          [&](const ModuleDef& m) { return m.place == place; }))
-            n.failAt("module", "no module at place " + std::to_string(place) + " in \"modules\"");
+            n.failAt("module", problem("module.none", {std::to_string(place)}));
         return place;
     };
 
@@ -225,8 +227,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         in.signal = n.string("signal");
         const std::string contact = n.string("contact", "no");
         if (contact != "no" && contact != "nc")
-            n.failAt("contact",
-                     "'" + contact + "': use \"no\" (normally open) or \"nc\" (normally closed)");
+            n.failAt("contact", problem("contact", {contact}));
         in.normallyClosed = contact == "nc";
         in.module = moduleOf(n);
         in.debounceMs = static_cast<int>(n.integer("debounce_ms", 0, 100, d.timing.debounceMs));
@@ -300,14 +301,13 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
                 ++t;
             }
             if (t != 1)
-                n.fail("a timer needs exactly one of on_delay_ms, off_delay_ms, pulse_ms");
+                n.fail(problem("timer.one"));
             ++kinds;
         } else if (n.has("on_delay_ms") || n.has("off_delay_ms") || n.has("pulse_ms")) {
-            n.fail("a delay belongs to a timer: {\"timer\": \"name\", \"on_delay_ms\": ..., "
-                   "\"when\": ...}");
+            n.fail(problem("timer.delay"));
         }
         if (kinds != 1)
-            n.fail("a rung has exactly one of \"out\", \"set\", \"reset\", \"timer\"");
+            n.fail(problem("rung.one"));
         r.when = n.string("when");
         d.logic.push_back(std::move(r));
     }
@@ -319,7 +319,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         f.path = n.path();
         f.m = static_cast<int>(n.integer("m", 0, 99));
         if (d.mFunction(f.m))
-            n.failAt("m", "M" + std::to_string(f.m) + " is described twice");
+            n.failAt("m", problem("m.twice", {std::to_string(f.m)}));
         f.text = n.string("text", "");
         f.actions = readActions(n);
         f.done = n.string("done", "");
@@ -327,7 +327,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         f.timeoutMs = static_cast<int>(n.integer("timeout_ms", 1, 86400000, 0));
         f.timeoutAlarm = static_cast<int>(n.integer("timeout_alarm", 1, 32, 0));
         if ((f.timeoutMs > 0) != (f.timeoutAlarm > 0))
-            n.fail("timeout_ms and timeout_alarm go together");
+            n.fail(problem("m.timeout"));
         d.mFunctions.push_back(std::move(f));
     }
     if (root.has("unknown_m")) {
@@ -336,8 +336,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         d.unknownM.acknowledge = u.boolean("acknowledge", !u.has("alarm"));
         d.unknownM.alarm = static_cast<int>(u.integer("alarm", 1, 32, 0));
         if (d.unknownM.acknowledge == (d.unknownM.alarm > 0))
-            u.fail("give either \"acknowledge\": true or \"alarm\": k (hold the frame, raise alarm "
-                   "k)");
+            u.fail(problem("unknown-m"));
     }
 
     for (const JsonNode& n : root.optionalArray("interlocks")) {
@@ -362,9 +361,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
             const int pct = static_cast<int>(n.integer("override_max", 0, 100));
             il.overrideMaxCode = percentToCode(pct);
             if (il.overrideMaxCode < 0)
-                n.failAt("override_max",
-                         std::to_string(pct) +
-                             " % is not an override step (0 1 2 5 10 20 35 50 75 90 100)");
+                n.failAt("override_max", problem("override.step", {std::to_string(pct)}));
         }
         d.interlocks.push_back(std::move(il));
     }
@@ -376,12 +373,12 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         k.key = static_cast<int>(n.integer("key", 1, 12));
         for (const KeyDef& o : d.keys)
             if (o.key == k.key)
-                n.failAt("key", "K" + std::to_string(k.key) + " is bound twice");
+                n.failAt("key", problem("key.twice", {std::to_string(k.key)}));
         k.text = n.string("text", "");
         k.when = n.string("when", "");
         k.actions = readActions(n);
         if (k.actions.empty())
-            n.fail("a key needs an action: set, reset, toggle or pulse");
+            n.fail(problem("key.action"));
         d.keys.push_back(std::move(k));
     }
     for (const JsonNode& n : root.optionalArray("leds")) {
@@ -391,7 +388,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         l.key = static_cast<int>(n.integer("key", 1, 12));
         for (const LedDef& o : d.leds)
             if (o.key == l.key)
-                n.failAt("key", "the LEDs of K" + std::to_string(l.key) + " are described twice");
+                n.failAt("key", problem("led.twice", {std::to_string(l.key)}));
         l.green = n.string("green", "");
         l.red = n.string("red", "");
         d.leds.push_back(std::move(l));
@@ -404,7 +401,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
             m.k = static_cast<int>(n.integer("k", 1, 32));
             for (const MessageDef& o : *list)
                 if (o.k == m.k)
-                    n.failAt("k", "message " + std::to_string(m.k) + " has two conditions here");
+                    n.failAt("k", problem("message.twice", {std::to_string(m.k)}));
             m.when = n.string("when");
             list->push_back(std::move(m));
         }
@@ -417,13 +414,12 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
                                  const std::string& fullKey) {
             const auto a = slotAddress(fullKey);
             if (!a)
-                owner.failAt(
-                    key, "not a signal of the positioner interface (known: " + [] {
-                        std::string s;
-                        for (const std::string& k : slotKeys())
-                            s += (s.empty() ? "" : ", ") + k;
-                        return s;
-                    }() + ", mode, override, bits)");
+                owner.failAt(key, problem("slot.unknown", {[] {
+                                 std::string s;
+                                 for (const std::string& k : slotKeys())
+                                     s += (s.empty() ? "" : ", ") + k;
+                                 return s;
+                             }()}));
             SlotDef s;
             s.word = a->word;
             s.bit = a->bit;
@@ -455,7 +451,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
                 d.override_.fromPlc = o.string("from_plc");
                 const std::vector<std::string> bits = o.strings("code");
                 if (bits.size() != 4)
-                    o.failAt("code", "needs the four code bits, least significant first");
+                    o.failAt("code", problem("override.code"));
                 for (std::size_t i = 0; i < 4; ++i)
                     d.override_.code[i] = bits[i];
             } else if (key == "bits") {
@@ -464,8 +460,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
                 for (const std::string& k : b.keys()) {
                     const auto a = parseZ(k);
                     if (!a || a->word < 1011 || a->word > 1013)
-                        b.failAt(k, "only the free words Z1011..Z1013 are written here; the "
-                                    "bits of Z1000..Z1010 have names (see slot keys)");
+                        b.failAt(k, problem("bits.word"));
                     SlotDef s;
                     s.word = a->word;
                     s.bit = a->bit;
@@ -483,7 +478,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
                 if (d.slotDefs[i].word == d.slotDefs[j].word &&
                     d.slotDefs[i].bit == d.slotDefs[j].bit)
                     throw DescriptionError(source, d.slotDefs[i].path,
-                                           "writes the same bit as " + d.slotDefs[j].path);
+                                           problem("slot.same-bit", {d.slotDefs[j].path}));
     }
 
     if (root.has("equipment")) {
@@ -524,7 +519,7 @@ MachineDescription loadDescription(std::string_view nameOrPath) {
     if (nameOrPath.size() > 5 && nameOrPath.substr(nameOrPath.size() - 5) == ".json") {
         std::ifstream f{std::string(nameOrPath), std::ios::binary};
         if (!f)
-            throw DescriptionError(std::string(nameOrPath), "", "cannot read the file");
+            throw DescriptionError(std::string(nameOrPath), "", problem("file.cannot-read"));
         std::ostringstream s;
         s << f.rdbuf();
         return readDescription(s.str(), std::string(nameOrPath));
@@ -534,9 +529,7 @@ MachineDescription loadDescription(std::string_view nameOrPath) {
         std::string known;
         for (const std::string& n : descriptionNames())
             known += (known.empty() ? "" : ", ") + n;
-        throw DescriptionError(std::string(nameOrPath), "",
-                               "no such machine description (built in: " + known +
-                                   "; or give a .json file)");
+        throw DescriptionError(std::string(nameOrPath), "", problem("file.unknown-machine", {known}));
     }
     return readDescription(*text, resourcePath(nameOrPath));
 }

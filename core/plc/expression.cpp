@@ -1,5 +1,7 @@
 #include "plc/expression.h"
 
+#include "plc/description_texts.h"
+
 #include <algorithm>
 #include <cctype>
 
@@ -91,12 +93,12 @@ public:
         out_ = &e.code_;
         skip();
         if (atEnd())
-            return fail(err, "empty condition");
+            return fail(err, "expr.empty");
         if (!orExpr())
             return failWith(err);
         skip();
         if (!atEnd())
-            return fail(err, "unexpected '" + std::string(1, t_[p_]) + "'");
+            return fail(err, "expr.unexpected", {std::string(1, t_[p_])});
         // Stack depth of the postfix program.
         int depth = 0, maxDepth = 0;
         for (const Expr::Instr& i : e.code_) {
@@ -107,26 +109,31 @@ public:
             maxDepth = std::max(maxDepth, depth);
         }
         if (maxDepth > Expr::kMaxDepth)
-            return fail(err, "condition nested too deeply (more than " +
-                                 std::to_string(Expr::kMaxDepth) + " levels)");
+            return fail(err, "expr.deep", {std::to_string(Expr::kMaxDepth)});
         e.buildTests();
         return e;
     }
 
 private:
-    std::optional<Expr> fail(ExprError& err, std::string msg) {
+    static void say(ExprError& err, std::string id, std::vector<std::string> args) {
+        err.message = descriptionText(profile::problem(id, args), false);
+        err.id = std::move(id);
+        err.args = std::move(args);
+    }
+    std::optional<Expr> fail(ExprError& err, std::string id, std::vector<std::string> args = {}) {
         err.column = static_cast<int>(p_) + 1;
-        err.message = std::move(msg);
+        say(err, std::move(id), std::move(args));
         return std::nullopt;
     }
     std::optional<Expr> failWith(ExprError& err) {
         err.column = errCol_;
-        err.message = errMsg_;
+        say(err, errId_, errArgs_);
         return std::nullopt;
     }
-    bool error(std::string msg, std::size_t at) {
-        if (errMsg_.empty()) {
-            errMsg_ = std::move(msg);
+    bool error(std::string id, std::vector<std::string> args, std::size_t at) {
+        if (errId_.empty()) {
+            errId_ = std::move(id);
+            errArgs_ = std::move(args);
             errCol_ = static_cast<int>(at) + 1;
         }
         return false;
@@ -222,15 +229,14 @@ private:
         const std::size_t at = p_;
         const std::string_view w = peekWord();
         if (w.empty())
-            return error(atEnd() ? "a signal name is missing at the end"
-                                 : "expected a signal name, found '" + std::string(1, t_[p_]) + "'",
-                         at);
+            return atEnd() ? error("expr.name-missing", {}, at)
+                           : error("expr.name-expected", {std::string(1, t_[p_])}, at);
         if (w == "true" || w == "false" || w == "and" || w == "or" || w == "not" || w == "rise" ||
             w == "fall")
-            return error("'" + std::string(w) + "' is a keyword, not a signal", at);
+            return error("expr.keyword", {std::string(w)}, at);
         const auto s = resolve_(w);
         if (!s)
-            return error("unknown signal '" + std::string(w) + "'", at);
+            return error("plc.unknown-signal", {std::string(w)}, at);
         p_ += w.size();
         emit(op, *s);
         return true;
@@ -242,23 +248,21 @@ private:
             if (!orExpr())
                 return false;
             if (!symbol(')'))
-                return error("missing ')'", p_);
+                return error("expr.paren", {}, p_);
             return true;
         }
         if (atEnd())
-            return error("the condition ends too early", at);
+            return error("expr.early", {}, at);
         for (const auto& [word, op] : {std::pair{std::string_view("rise"), Expr::Op::Rise},
                                        std::pair{std::string_view("fall"), Expr::Op::Fall}}) {
             if (peekWord() == word) {
                 p_ += word.size();
                 if (!symbol('('))
-                    return error(std::string(word) + " needs a signal in parentheses: " +
-                                     std::string(word) + "(name)",
-                                 p_);
+                    return error("expr.needs-paren", {std::string(word)}, p_);
                 if (!name(op))
                     return false;
                 if (!symbol(')'))
-                    return error("missing ')' after the signal of " + std::string(word), p_);
+                    return error("expr.paren-after", {std::string(word)}, p_);
                 return true;
             }
         }
@@ -277,7 +281,8 @@ private:
     const NameResolver& resolve_;
     std::size_t p_ = 0;
     std::vector<Expr::Instr>* out_ = nullptr;
-    std::string errMsg_;
+    std::string errId_;
+    std::vector<std::string> errArgs_;
     int errCol_ = 0;
 };
 

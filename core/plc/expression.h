@@ -84,7 +84,9 @@ inline bool Expr::eval(const std::uint8_t* now, const std::uint8_t* prev) const 
 
 struct ExprError {
     int column = 0; // 1-based, in bytes of the expression text
-    std::string message;
+    std::string message; // English
+    std::string id;      // of description_texts.h ("expr.empty", "plc.unknown-signal")
+    std::vector<std::string> args;
 };
 
 // Resolves a name to a signal index, or nullopt when the name is unknown.

@@ -1,5 +1,7 @@
 #include "plc/json_reader.h"
 
+#include "plc/description_texts.h"
+
 #include "util/json.h"
 
 #include <algorithm>
@@ -10,6 +12,8 @@ namespace k528::plc {
 
 namespace {
 
+using profile::problem;
+
 std::string describe(const std::string& source, const std::string& path, const std::string& msg) {
     std::string s = source;
     if (!path.empty())
@@ -18,32 +22,39 @@ std::string describe(const std::string& source, const std::string& path, const s
     return s;
 }
 
-std::string typeName(const Json& v) {
+// The id of the name of v's type ("type.string": "a string").
+std::string_view typeId(const Json& v) {
     switch (v.type()) {
     case Json::value_t::null:
-        return "null";
+        return "type.null";
     case Json::value_t::boolean:
-        return "true/false";
+        return "type.boolean";
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
     case Json::value_t::number_float:
-        return "a number";
+        return "type.number";
     case Json::value_t::string:
-        return "a string";
+        return "type.string";
     case Json::value_t::array:
-        return "an array";
+        return "type.array";
     case Json::value_t::object:
-        return "an object";
+        return "type.object";
     default:
-        return "?";
+        return "type.other";
     }
 }
 
 } // namespace
 
-DescriptionError::DescriptionError(std::string source, std::string path, std::string message)
-    : std::runtime_error(describe(source, path, message)), source_(std::move(source)),
-      path_(std::move(path)), message_(std::move(message)) {}
+DescriptionError::DescriptionError(std::string source, std::string path, profile::Problem p)
+    : std::runtime_error(describe(source, path, descriptionText(p, false))), source_(std::move(source)),
+      path_(std::move(path)), problem_(std::move(p)) {}
+
+std::string DescriptionError::message() const { return descriptionText(problem_, false); }
+
+std::string DescriptionError::text(bool russian) const {
+    return describe(source_, path_, descriptionText(problem_, russian));
+}
 
 bool isCommentKey(std::string_view key) {
     return key == "comment" || (!key.empty() && key.front() == '_');
@@ -74,7 +85,7 @@ Json parseDocument(std::string_view text, const std::string& source) {
                     path += levels[i].array ? "[" + std::to_string(levels[i].index) + "]"
                                             : (path.empty() ? "" : ".") + levels[i].keys.back();
                 throw DescriptionError(source, path.empty() ? key : path + "." + key,
-                                       "appears twice");
+                                       problem("json.twice"));
             }
             keys.push_back(key);
             break;
@@ -93,16 +104,17 @@ Json parseDocument(std::string_view text, const std::string& source) {
     try {
         return json::parse(text, keyCheck);
     } catch (const json::ParseError& e) {
-        throw DescriptionError(source, "", e.what());
+        throw DescriptionError(source, "",
+                               problem("json.syntax", {e.what(), std::to_string(e.line), std::to_string(e.column)}));
     }
 }
 
-void JsonNode::fail(const std::string& message) const {
-    throw DescriptionError(source_, path_, message);
+void JsonNode::fail(profile::Problem p) const {
+    throw DescriptionError(source_, path_, std::move(p));
 }
 
-void JsonNode::failAt(std::string_view key, const std::string& message) const {
-    throw DescriptionError(source_, childPath(key), message);
+void JsonNode::failAt(std::string_view key, profile::Problem p) const {
+    throw DescriptionError(source_, childPath(key), std::move(p));
 }
 
 std::string JsonNode::childPath(std::string_view key) const {
@@ -124,7 +136,7 @@ bool JsonNode::isString() const {
 void JsonNode::expectObject() const {
     // (a key given twice is refused by parseDocument)
     if (!v_->is_object())
-        fail("expected an object, found " + typeName(*v_));
+        fail(withText("json.expected-object", {}, typeId(*v_)));
 }
 
 void JsonNode::expectObject(std::initializer_list<std::string_view> allowed) const {
@@ -139,7 +151,7 @@ void JsonNode::expectObject(std::initializer_list<std::string_view> allowed) con
             std::string list;
             for (std::string_view a : allowed)
                 list += (list.empty() ? "" : ", ") + std::string(a);
-            failAt(k, "unknown key (known here: " + list + ")");
+            failAt(k, problem("json.unknown-key", {list}));
         }
     }
 }
@@ -152,7 +164,7 @@ JsonNode JsonNode::child(std::string_view key) const {
     if (v_->is_object())
         if (const auto it = v_->find(key); it != v_->end())
             return JsonNode(*it, source_, childPath(key));
-    failAt(key, "is missing");
+    failAt(key, problem("json.missing"));
 }
 
 JsonNode JsonNode::element(std::size_t i) const {
@@ -161,7 +173,7 @@ JsonNode JsonNode::element(std::size_t i) const {
 
 std::vector<JsonNode> JsonNode::elements() const {
     if (!v_->is_array())
-        fail("expected an array, found " + typeName(*v_));
+        fail(withText("json.expected-array", {}, typeId(*v_)));
     std::vector<JsonNode> out;
     for (std::size_t i = 0; i < v_->size(); ++i)
         out.push_back(element(i));
@@ -185,7 +197,7 @@ std::vector<std::string> JsonNode::keys() const {
 
 std::string JsonNode::asString() const {
     if (!v_->is_string())
-        fail("expected a string, found " + typeName(*v_));
+        fail(withText("json.expected-string", {}, typeId(*v_)));
     return v_->get<std::string>();
 }
 
@@ -199,15 +211,15 @@ std::string JsonNode::string(std::string_view key, std::string_view fallback) co
 
 std::int64_t JsonNode::asInteger(std::int64_t min, std::int64_t max) const {
     if (!v_->is_number())
-        fail("expected a whole number, found " + typeName(*v_));
+        fail(withText("json.expected-integer", {}, typeId(*v_)));
     const auto outside = [&](const std::string& n) {
-        fail(n + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+        fail(problem("json.outside", {n, std::to_string(min), std::to_string(max)}));
     };
     std::int64_t n = 0;
     if (v_->is_number_float()) { // 2.0 is the whole number 2
         const double d = v_->get<double>();
         if (d != std::floor(d))
-            fail("expected a whole number, found " + json::formatDouble(d));
+            fail(problem("json.expected-integer", {json::formatDouble(d)}));
         if (!(std::fabs(d) < 9.2e18))
             outside(json::formatDouble(d));
         n = static_cast<std::int64_t>(d);
@@ -236,11 +248,10 @@ std::int64_t JsonNode::integer(std::string_view key, std::int64_t min, std::int6
 double JsonNode::number(std::string_view key, double min, double max) const {
     const JsonNode c = child(key);
     if (!c.value().is_number())
-        c.fail("expected a number, found " + typeName(c.value()));
+        c.fail(withText("json.expected-number", {}, typeId(c.value())));
     const double d = c.value().get<double>();
     if (!(d >= min && d <= max))
-        c.fail(json::formatDouble(d) + " is outside " + json::formatDouble(min) + ".." +
-               json::formatDouble(max));
+        c.fail(problem("json.outside", {json::formatDouble(d), json::formatDouble(min), json::formatDouble(max)}));
     return d;
 }
 
@@ -253,7 +264,7 @@ bool JsonNode::boolean(std::string_view key, bool fallback) const {
         return fallback;
     const JsonNode c = child(key);
     if (!c.value().is_boolean())
-        c.fail("expected true or false, found " + typeName(c.value()));
+        c.fail(withText("json.expected-bool", {}, typeId(c.value())));
     return c.value().get<bool>();
 }
 

@@ -5,6 +5,7 @@
 // keys "comment" and those starting with '_' are comments and skipped.
 #pragma once
 
+#include "profile/problem.h"
 #include "util/json_fwd.h"
 
 #include <cstdint>
@@ -16,16 +17,22 @@
 
 namespace k528::plc {
 
-// A machine description that cannot be used: what() is "file: path: message".
+// A machine description that cannot be used: what is wrong as an id and its
+// arguments (description_texts.h); what() is "file: path: message" in English.
 class DescriptionError : public std::runtime_error {
 public:
-    DescriptionError(std::string source, std::string path, std::string message);
+    DescriptionError(std::string source, std::string path, profile::Problem problem);
     const std::string& source() const { return source_; }
     const std::string& path() const { return path_; } // "" for the whole document
-    const std::string& message() const { return message_; }
+    const profile::Problem& problem() const { return problem_; }
+    // What is wrong, in English (without file and path).
+    std::string message() const;
+    // "file: path: message" in a language (the command line's words).
+    std::string text(bool russian) const;
 
 private:
-    std::string source_, path_, message_;
+    std::string source_, path_;
+    profile::Problem problem_;
 };
 
 // One node of the document being read, with its path.
@@ -37,8 +44,8 @@ public:
     const Json& value() const { return *v_; }
     const std::string& path() const { return path_; }
     const std::string& source() const { return source_; }
-    [[noreturn]] void fail(const std::string& message) const;
-    [[noreturn]] void failAt(std::string_view key, const std::string& message) const;
+    [[noreturn]] void fail(profile::Problem problem) const;
+    [[noreturn]] void failAt(std::string_view key, profile::Problem problem) const;
 
     bool isObject() const;
     bool isArray() const;

@@ -1,5 +1,7 @@
 #include "plc/plc.h"
 
+#include "plc/description_texts.h"
+
 #include <algorithm>
 #include <bit>
 #include <climits>
@@ -8,6 +10,8 @@
 namespace k528::plc {
 
 namespace {
+
+using profile::problem;
 
 constexpr std::int64_t kNever = INT64_MAX;
 
@@ -24,15 +28,21 @@ std::uint16_t keyMaskBits() {
 
 } // namespace
 
+// `id` about signal `name`, with where signal `s` is declared (its path, or
+// «built in») as the last argument.
+profile::Problem Plc::declaredAt(std::string id, const std::string& name, std::uint32_t s) const {
+    if (declaredAt_[s].empty())
+        return withText(std::move(id), {name}, "plc.built-in");
+    return problem(std::move(id), {name, declaredAt_[s]});
+}
+
 std::uint32_t Plc::addSignal(const std::string& name, Kind kind, const std::string& path) {
     if (const auto it = index_.find(name); it != index_.end())
-        throw DescriptionError(d_.source, path,
-                               "the name '" + name + "' is already used (" +
-                                   declaredAt_[it->second] + ")");
+        throw DescriptionError(d_.source, path, declaredAt("plc.name-used", name, it->second));
     const auto s = static_cast<std::uint32_t>(names_.size());
     names_.push_back(name);
     kinds_.push_back(kind);
-    declaredAt_.push_back(path.empty() ? std::string("built in") : path);
+    declaredAt_.push_back(path); // "" built in
     index_.emplace(name, s);
     return s;
 }
@@ -49,10 +59,11 @@ Expr Plc::compile(const std::string& text, const std::string& path) const {
     ExprError err;
     auto e = compileExpr(
         text, [this](std::string_view n) { return resolve(n); }, err);
-    if (!e)
-        throw DescriptionError(d_.source, path,
-                               "column " + std::to_string(err.column) + ": " + err.message +
-                                   " in \"" + text + "\"");
+    if (!e) {
+        profile::Problem p = problem("condition", {std::to_string(err.column), text});
+        p.within.push_back(problem(err.id, err.args));
+        throw DescriptionError(d_.source, path, std::move(p));
+    }
     return std::move(*e);
 }
 
@@ -62,36 +73,25 @@ Expr Plc::compile(const std::string& text, const std::string& path) const {
 std::uint32_t Plc::writable(const std::string& name, const std::string& path, bool asDriver) {
     const auto s = resolve(name);
     if (!s)
-        throw DescriptionError(d_.source, path, "unknown signal '" + name + "'");
+        throw DescriptionError(d_.source, path, problem("plc.unknown-signal", {name}));
     const Kind k = *s < kinds_.size() ? kinds_[*s] : Kind::ZIn;
     if (*s >= zBase_) {
         const auto z = parseZ(name);
         const int word = z ? z->word : 0, bit = z ? z->bit : 0;
         if (word < 1000 || word > 1013)
-            throw DescriptionError(d_.source, path,
-                                   name + " is not written by the logic (only Z1000..Z1013 are; "
-                                          "messages, LEDs and keys have their own sections)");
+            throw DescriptionError(d_.source, path, problem("plc.not-logic", {name}));
         if (word == 1000 && bit == 11)
-            throw DescriptionError(d_.source, path,
-                                   "Z1000.11 (M acknowledged) is written by segment 0");
+            throw DescriptionError(d_.source, path, problem("plc.z1000-11"));
         if (word == 1000 && bit >= 8 && bit <= 10 && !d_.modeRules.empty())
-            throw DescriptionError(d_.source, path,
-                                   name + " is the mode code, written by positioner.mode");
+            throw DescriptionError(d_.source, path, problem("plc.mode-code", {name}));
         if (word == 1001 && bit >= 11 && d_.override_.present)
-            throw DescriptionError(
-                d_.source, path,
-                name + " belongs to the override code, written by positioner.override");
+            throw DescriptionError(d_.source, path, problem("plc.override-code", {name}));
     } else if (k != Kind::Output && k != Kind::Flag) {
-        throw DescriptionError(d_.source, path,
-                               "'" + name +
-                                   "' cannot be written: only outputs, flags and bits "
-                                   "Z1000..Z1013 can (it is declared at " +
-                                   declaredAt_[*s] + ")");
+        throw DescriptionError(d_.source, path, declaredAt("plc.not-writable", name, *s));
     }
     if (asDriver) {
         if (driven_[*s])
-            throw DescriptionError(d_.source, path,
-                                   "'" + name + "' already has a coil (each signal has one)");
+            throw DescriptionError(d_.source, path, problem("plc.coil-twice", {name}));
         driven_[*s] = 1;
     }
     return *s;
@@ -170,8 +170,7 @@ Plc::Plc(const MachineDescription& description) : d_(description) {
     for (const SlotDef& s : d_.slotDefs) {
         const std::uint32_t sigIdx = zSignal(s.word, s.bit);
         if (driven_[sigIdx])
-            throw DescriptionError(d_.source, s.path,
-                                   zName(s.word, s.bit) + " already has a coil in the logic");
+            throw DescriptionError(d_.source, s.path, problem("plc.slot-coil", {zName(s.word, s.bit)}));
         driven_[sigIdx] = 1;
         slots_.push_back({sigIdx, compile(s.when, s.path)});
     }
@@ -183,7 +182,7 @@ Plc::Plc(const MachineDescription& description) : d_(description) {
             const auto s = resolve(d_.override_.code[i]);
             if (!s)
                 throw DescriptionError(d_.source, d_.override_.path + ".code",
-                                       "unknown signal '" + d_.override_.code[i] + "'");
+                                       problem("plc.unknown-signal", {d_.override_.code[i]}));
             overrideBits_[i] = *s;
         }
     }
@@ -221,9 +220,7 @@ Plc::Plc(const MachineDescription& description) : d_(description) {
     // A pulse target with a coil would lose its pulse; slots OR it in.
     for (std::uint32_t s = 0; s < zBase_; ++s)
         if (pulseTarget_[s] && driven_[s] && kinds_[s] != Kind::Timer)
-            throw DescriptionError(d_.source, declaredAt_[s],
-                                   "'" + names_[s] +
-                                       "' is pulsed by an action and also has a coil");
+            throw DescriptionError(d_.source, declaredAt_[s], problem("plc.pulse-coil", {names_[s]}));
 
     terminal_.assign(d_.inputs.size(), 0);
     candidate_.assign(d_.inputs.size(), 0);

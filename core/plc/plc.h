@@ -182,6 +182,7 @@ private:
         return zBase_ + static_cast<std::uint32_t>(zSlot(word) * 16 + bit);
     }
     Expr compile(const std::string& text, const std::string& path) const;
+    profile::Problem declaredAt(std::string id, const std::string& name, std::uint32_t s) const;
     std::uint32_t writable(const std::string& name, const std::string& path, bool asDriver);
     CompiledActions compileActions(const Actions& a, const std::string& path);
     void apply(const CompiledActions& a, std::int64_t nowMs, int pulseMs);

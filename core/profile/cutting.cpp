@@ -11,34 +11,35 @@ namespace k528::profile::cutting {
 
 namespace {
 
-void positive(double v, const char* what) {
+// `id`: the problem "… must be a positive number" of the quantity.
+void positive(double v, const char* id) {
     if (!std::isfinite(v) || v <= 0)
-        throw CuttingError(std::string(what) + " must be a positive number");
+        throw CuttingError(problem(id));
 }
 
 } // namespace
 
 double spindleSpeedRpm(double v, double d) {
-    positive(v, "the cutting speed");
-    positive(d, "the diameter");
+    positive(v, "cutting.cutting-speed");
+    positive(d, "cutting.diameter");
     return 1000.0 * v / (std::numbers::pi * d);
 }
 
 double cuttingSpeedMPerMin(double n, double d) {
-    positive(n, "the spindle speed");
-    positive(d, "the diameter");
+    positive(n, "cutting.spindle-speed");
+    positive(d, "cutting.diameter");
     return std::numbers::pi * d * n / 1000.0;
 }
 
 double feedPerMinute(double f, double n) {
-    positive(f, "the feed per revolution");
-    positive(n, "the spindle speed");
+    positive(f, "cutting.feed");
+    positive(n, "cutting.spindle-speed");
     return f * n;
 }
 
 double wheelSurfaceSpeedMPerS(double d, double n) {
-    positive(d, "the wheel's diameter");
-    positive(n, "the wheel's speed");
+    positive(d, "cutting.wheel-diameter");
+    positive(n, "cutting.wheel-speed");
     return std::numbers::pi * d * n / 60000.0;
 }
 
@@ -50,17 +51,16 @@ double wheelDiameterMm(const MachineProfile& p, std::int64_t r207) {
 std::int64_t presetR207(const MachineProfile& p) {
     const auto it = p.r.find(207);
     if (it == p.r.end())
-        throw CuttingError("the machine presets no R207 (the wheel's diameter)");
+        throw CuttingError(problem("cutting.no-r207"));
     return it->second;
 }
 
 TrialCorrection trialCorrection(const MachineProfile& p, const Tool& tool, catalog::Axis axis, double measuredMm,
                                 double drawingMm) {
     if (tool.offsetR < 0)
-        throw CuttingError("tool " + std::to_string(tool.station) + " has no offset R-parameters (tool." +
-                           std::to_string(tool.station) + ".offset_r)");
+        throw CuttingError(problem("cutting.no-offset", {std::to_string(tool.station)}));
     if (!std::isfinite(measuredMm) || !std::isfinite(drawingMm))
-        throw CuttingError("the measured size and the drawing's must be numbers");
+        throw CuttingError(problem("cutting.not-numbers"));
     TrialCorrection c;
     c.rNumber = axis == catalog::Axis::X ? tool.offsetR : tool.offsetR + 1;
     if (const auto it = p.r.find(c.rNumber); it != p.r.end())
@@ -71,7 +71,7 @@ TrialCorrection trialCorrection(const MachineProfile& p, const Tool& tool, catal
     c.changeMm = -(axis == catalog::Axis::X && !scale.diameter ? c.errorMm / 2 : c.errorMm);
     c.newValue = c.oldValue + units::mmToDisc(c.changeMm, scale);
     if (c.newValue < catalog::kRMin || c.newValue > catalog::kRMax)
-        throw CuttingError("R" + std::to_string(c.rNumber) + " would leave the R-parameter range");
+        throw CuttingError(problem("cutting.r-range", {std::to_string(c.rNumber)}));
     return c;
 }
 

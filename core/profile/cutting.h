@@ -29,8 +29,10 @@
 
 namespace k528::profile::cutting {
 
+// What is wrong as a problem of core's catalog (problem.h: "cutting.*"); what() its English.
 struct CuttingError : std::invalid_argument {
-    using std::invalid_argument::invalid_argument;
+    explicit CuttingError(Problem p) : std::invalid_argument(p.text()), problem(std::move(p)) {}
+    Problem problem;
 };
 
 // Each throws CuttingError for a value that is not positive (or not finite).

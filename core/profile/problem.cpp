@@ -133,6 +133,18 @@ constexpr std::array kTexts = {
     ProblemText{"calc.gear-fraction", "the gear ratio %1 is not a fraction with a denominator up to 100000"},
     ProblemText{"calc.speed", "a speed must be zero or positive"},
     ProblemText{"calc.feed-reach", "the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)"},
+    // the cutting data and the trial part (cutting.h)
+    ProblemText{"cutting.cutting-speed", "the cutting speed must be a positive number"},
+    ProblemText{"cutting.diameter", "the diameter must be a positive number"},
+    ProblemText{"cutting.spindle-speed", "the spindle speed must be a positive number"},
+    ProblemText{"cutting.feed", "the feed per revolution must be a positive number"},
+    ProblemText{"cutting.wheel-diameter", "the wheel's diameter must be a positive number"},
+    ProblemText{"cutting.wheel-speed", "the wheel's speed must be a positive number"},
+    ProblemText{"cutting.no-r207", "the machine presets no R207 (the wheel's diameter)"},
+    ProblemText{"cutting.no-offset", "tool %1 has no offset R-parameters (tool.%1.offset_r)"},
+    ProblemText{"cutting.not-numbers", "the measured size and the drawing's must be numbers"},
+    ProblemText{"cutting.r-range", "R%1 would leave the R-parameter range"},
+    ProblemText{"cutting.no-tool", "no tool at station %1"},
 };
 
 } // namespace

@@ -37,7 +37,7 @@ std::vector<int> mList(const plc::JsonNode& n, std::string_view key,
     for (const plc::JsonNode& e : list.elements()) {
         const int m = static_cast<int>(e.asInteger(0, 99));
         if (!d.mFunction(m))
-            e.fail("M" + std::to_string(m) + " is not one of the description's m_functions");
+            e.fail(profile::problem("proveout.not-m", {std::to_string(m)}));
         out.push_back(m);
     }
     return out;
@@ -72,35 +72,34 @@ MachineGeometry readGeometry(const plc::MachineDescription& d) {
         SpindleUse s;
         s.name = n.string("name");
         if (std::find(known.begin(), known.end(), s.name) == known.end())
-            n.failAt("name", "'" + s.name + "' is not a spindle of the equipment");
+            n.failAt("name", profile::problem("proveout.not-spindle", {s.name}));
         if (g.spindle(s.name))
-            n.failAt("name", "spindle '" + s.name + "' appears twice");
+            n.failAt("name", profile::problem("equipment.spindle-twice", {s.name}));
         s.on = mList(n, "on", d);
         s.off = mList(n, "off", d);
         for (int m : s.on)
             if (std::find(s.off.begin(), s.off.end(), m) != s.off.end())
-                n.failAt("off", "M" + std::to_string(m) + " both starts and stops the spindle");
+                n.failAt("off", profile::problem("proveout.on-off", {std::to_string(m)}));
         g.spindles.push_back(std::move(s));
     }
     if (p.has("cutting_spindle")) {
         g.cuttingSpindle = p.string("cutting_spindle");
         if (!g.spindle(g.cuttingSpindle))
-            p.failAt("cutting_spindle",
-                     "'" + g.cuttingSpindle + "' is not one of the spindles listed here");
+            p.failAt("cutting_spindle", profile::problem("proveout.cutting-spindle", {g.cuttingSpindle}));
     }
     for (const plc::JsonNode& n : p.optionalArray("tool_change")) {
         n.expectObject({"m", "station"});
         const int m = static_cast<int>(n.integer("m", 0, 99));
         if (!d.mFunction(m))
-            n.failAt("m", "M" + std::to_string(m) + " is not one of the description's m_functions");
+            n.failAt("m", profile::problem("proveout.not-m", {std::to_string(m)}));
         if (g.toolChange.count(m))
-            n.failAt("m", "M" + std::to_string(m) + " changes the tool twice");
+            n.failAt("m", profile::problem("proveout.tool-twice", {std::to_string(m)}));
         const int positions =
             eq.is_object() && eq.contains("turret") && eq.at("turret").contains("positions")
                 ? eq.at("turret").at("positions").get<int>()
                 : 0;
         if (positions == 0)
-            n.fail("the equipment has no turret");
+            n.fail(profile::problem("proveout.no-turret"));
         g.toolChange[m] = static_cast<int>(n.integer("station", 1, positions));
     }
     if (p.has("chuck")) {
@@ -126,7 +125,7 @@ MachineGeometry readGeometry(const plc::MachineDescription& d) {
         k.rMinMm = t.number("r_min_mm", -10000, 10000);
         k.rMaxMm = t.number("r_max_mm", -10000, 10000);
         if (k.zMinMm >= k.zMaxMm || k.rMinMm >= k.rMaxMm)
-            t.fail("the turret's box needs z_min_mm < z_max_mm and r_min_mm < r_max_mm");
+            t.fail(profile::problem("proveout.turret-box"));
     }
     return g;
 }

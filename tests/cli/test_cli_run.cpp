@@ -237,6 +237,29 @@ private slots:
         QVERIFY(j.out.isEmpty());
         QVERIFY(j.err.contains("[M53]"));
     }
+    // A hand-made machine description that cannot be used: the file, the
+    // place in it and what is wrong, in the language asked for (exit 2).
+    void brokenDescription() {
+        Files f;
+        const QString json = f.write("when.json", R"({"format": 1, "name": "b", "flags": ["f"],
+            "alarms": [{"k": 1, "when": "f & nosuch"}]})");
+        QFile lathe(QStringLiteral(K528_SOURCE_DIR "/resources/profiles/training-lathe.k528m"));
+        QVERIFY(lathe.open(QIODevice::ReadOnly));
+        QByteArray machine = lathe.readAll();
+        const QByteArray builtIn = "\nmachine=training-lathe\n";
+        QVERIFY(machine.contains(builtIn));
+        machine.replace(builtIn, "\nmachine=" + json.toUtf8() + "\n");
+        const QString profile = f.write("broken.k528m", machine);
+        const QString p = f.write("p.k528", "%L1\nN1 G90 G01 X10 FX100\nN2 M30\n");
+        const auto ru = runK528({"run", "--profile", profile, "--lang", "ru", p});
+        QCOMPARE(ru.exitCode, 2);
+        QCOMPARE(ru.err.trimmed(), QStringLiteral("k528: описание станка %1: alarms[0].when: столбец 5: неизвестный "
+                                                  "сигнал «nosuch» в \"f & nosuch\"").arg(json));
+        const auto en = runK528({"run", "--profile", profile, "--lang", "en", p});
+        QCOMPARE(en.exitCode, 2);
+        QCOMPARE(en.err.trimmed(), QStringLiteral("k528: machine description %1: alarms[0].when: column 5: unknown "
+                                                  "signal 'nosuch' in \"f & nosuch\"").arg(json));
+    }
     void plainOutput() {
         const auto r =
             runK528({"run", "--profile", "grinder-205", samples() + "grinder-bore-205.k528"});

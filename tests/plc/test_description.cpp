@@ -2,6 +2,7 @@
 // refused with the file, the path in the document and what is wrong.
 #include "machine/simulation.h"
 #include "plc/description.h"
+#include "plc/description_texts.h"
 #include "plc/plc.h"
 #include "profile/builtin.h"
 
@@ -139,6 +140,37 @@ private slots:
                     "outside 1..32");
         expectError(base(R"json(, "alarms": [{"k": 1, "when": "btn"}, {"k": 1, "when": "f"}])json"),
                     "alarms[1].k", "two conditions");
+    }
+
+    // What is wrong is an id and its arguments, said in Russian or English
+    // from core's catalog (the command line's --lang), the same words as what().
+    void languages() {
+        try {
+            plc::Plc p(plc::readDescription(base(R"json(, "alarms": [{"k": 1, "when": "btn & nosuch"}])json"),
+                                            "bad.json"));
+            QFAIL("accepted");
+        } catch (const plc::DescriptionError& e) {
+            QCOMPARE(e.problem().id, std::string("condition"));
+            QCOMPARE(e.text(false), std::string(e.what()));
+            QCOMPARE(e.text(false),
+                     std::string("bad.json: alarms[0].when: column 7: unknown signal 'nosuch' in \"btn & nosuch\""));
+            QCOMPARE(e.text(true),
+                     std::string("bad.json: alarms[0].when: столбец 7: неизвестный сигнал «nosuch» в \"btn & nosuch\""));
+        }
+        try {
+            plc::readDescription(R"json({"format": 1, "name": 5})json", "bad.json");
+            QFAIL("accepted");
+        } catch (const plc::DescriptionError& e) {
+            QCOMPARE(e.message(), std::string("expected a string, found a number"));
+            QCOMPARE(e.text(true), std::string("bad.json: name: ожидается строка, а здесь число"));
+        }
+        // Every text of the catalog has both languages, the Russian in Russian.
+        for (const plc::DescriptionText& t : plc::descriptionTexts()) {
+            QVERIFY2(!t.en.empty() && !t.ru.empty(), t.id.data());
+            QVERIFY2(plc::findDescriptionText(t.id) == &t, t.id.data()); // one entry per id
+            if (!t.id.starts_with("type."))
+                QVERIFY2(t.ru != t.en, t.id.data());
+        }
     }
 
     void writers() {

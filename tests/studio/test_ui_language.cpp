@@ -38,6 +38,7 @@
 #include "profile/builtin.h"
 #include "profile/calculator.h"
 #include "proveout/proveout.h"
+#include "plc/description_texts.h"
 #include "profile/csv.h"
 #include "profile/problem.h"
 #include "profile/text_format.h"
@@ -836,7 +837,8 @@ void TestUiLanguage::russianCoreTexts() {
     walker.exemptWords = manualWords("ru");
     // Keys of the machine file that its syntax glues to other text
     // ("format:", "tool.3.kind"): names, as the file must have them.
-    walker.exemptWords += QSet<QString>{QStringLiteral("format"), QStringLiteral("tool"), QStringLiteral("kind")};
+    walker.exemptWords += QSet<QString>{QStringLiteral("format"), QStringLiteral("tool"), QStringLiteral("kind"),
+                                        QStringLiteral("offset_r")};
     const std::string good = profile::builtinText("training-lathe").data();
     const auto replaced = [&](const std::string& from, const std::string& to) {
         std::string t = good;
@@ -868,7 +870,8 @@ void TestUiLanguage::russianCoreTexts() {
     for (const db::NoteText& t : db::noteTexts()) {
         QVERIFY2(studio::hasNoteText(t.id), t.id.data());
         // As stored (English), read back and said in the window's language.
-        const db::Note n{std::string(t.id), {t.id == "changed-more" ? "C022, R12" : "C022", "3"}};
+        const db::Note n = t.id == "trial" ? db::Note{"trial", {"2", "X", "40.060", "40.000", "100", "0", "-30"}}
+                           : db::Note{std::string(t.id), {t.id == "changed-more" ? "C022, R12" : "C022", "3"}};
         const std::string stored = db::noteText(n);
         const std::optional<db::Note> back = db::readNote(stored);
         QVERIFY2(back && back->id == t.id, stored.c_str());
@@ -894,6 +897,66 @@ void TestUiLanguage::russianCoreTexts() {
         f.args = {"40", "-2", "1"};
         QCOMPARE(studio::findingText(f), QString::fromStdString(f.message(true)));
         walker.check(QStringLiteral("prove-out finding %1").arg(fromView(t.id)), studio::findingText(f));
+    }
+
+    // Every text of a machine description's errors: the same Russian as
+    // core's catalog (what `k528 run --lang ru` prints).
+    for (const plc::DescriptionText& t : plc::descriptionTexts()) {
+        QVERIFY2(studio::hasDescriptionText(t.id), t.id.data());
+        const profile::Problem p = profile::problem(std::string(t.id), {"x1", "12", "34"});
+        QCOMPARE(studio::descriptionProblemText(p), QString::fromStdString(plc::descriptionText(p, true)));
+    }
+    // Broken hand-made machine descriptions, as the controller and File >
+    // Machine say them.
+    {
+        const QString syntax = writeFile(dir_, "syntax.json", "{\"format\": 1,\n");
+        const QString badName = writeFile(
+            dir_, "name.json", R"({"format": 1, "name": "b", "inputs": [{"name": "1x", "signal": "door.closed"}]})");
+        const QString notString = writeFile(dir_, "type.json", R"({"format": 1, "name": 5})");
+        const QString badWhen = writeFile(dir_, "when.json",
+                                          R"({"format": 1, "name": "b", "flags": ["f"], "alarms": [{"k": 1, "when": "f & nosuch"}]})");
+        walker.setData(panelTexts() + positionerTexts() + fileSyntax() +
+                       QStringList{outOfRange, notWhole, badCsv, noFile, dir_.path(), QStringLiteral("no-such-machine"),
+                                   QStringLiteral("range.k528m"), QStringLiteral("whole.k528m"),
+                                   QStringLiteral("bad.csv"), QStringLiteral("absent.k528m"),
+                                   QString::fromStdString(db::defaultAuthor()), QStringLiteral("training-lathe"),
+                                   QStringLiteral("Tilte"), syntax, badName, notString, badWhen,
+                                   QStringLiteral("1x"), QStringLiteral("f & nosuch"), QStringLiteral("nosuch"),
+                                   QStringLiteral("inputs[0].name"), QStringLiteral("alarms[0].when"),
+                                   QStringLiteral("broken.k528m")});
+        const std::vector<std::pair<QString, QString>> cases = {
+            {syntax, QStringLiteral("ошибка синтаксиса JSON: строка 2, столбец 1")},
+            {badName, QStringLiteral("inputs[0].name: «1x» — недопустимое имя")},
+            {notString, QStringLiteral("name: ожидается строка, а здесь число")},
+            {badWhen, QStringLiteral("alarms[0].when: столбец 5: неизвестный сигнал «nosuch» в \"f & nosuch\"")},
+        };
+        for (const auto& [file, want] : cases) {
+            profile::MachineProfile lathe = profile::builtin("training-lathe");
+            lathe.simulation.set("machine", file.toStdString());
+            try {
+                studio::SimulationSession session(lathe);
+                QFAIL(qPrintable(file + ": loaded"));
+            } catch (const std::exception& e) {
+                const QString text = studio::coreErrorText(e);
+                qInfo("%s", qPrintable(text));
+                QVERIFY2(text.contains(want), qPrintable(text));
+                walker.check(QStringLiteral("a broken machine description"), text);
+            }
+        }
+        // File > Machine with a machine file whose simulation uses the last one.
+        std::string withDescription = good;
+        const std::size_t sim = withDescription.find("[simulation]\n");
+        const std::string line = "machine=" + badWhen.toStdString() + "\n";
+        if (sim == std::string::npos)
+            withDescription += "\n[simulation]\n" + line;
+        else
+            withDescription.insert(sim + 13, line);
+        const QString broken = writeFile(dir_, "broken.k528m", withDescription);
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        walkOpened(walker, "File > Machine: a broken machine description", [&] { w.switchMachine(broken); });
+        w.close();
     }
 
     // The controller's refusals: the same Russian as the panel's (core's).

@@ -101,7 +101,7 @@ ProveoutPane::Output proveInput(const ProveoutPane::Input& in) {
         out.result = proveout::proveStore(in.machine, in.store, po, blank);
     } catch (const plc::DescriptionError& e) {
         out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The machine's description: %1")
-                        .arg(QString::fromUtf8(e.what()));
+                        .arg(descriptionErrorText(e));
     } catch (const profile::ToolError& e) {
         out.error = QCoreApplication::translate("k528::studio::ProveoutPane", "The machine's tools: %1")
                         .arg(problemText(e.problem()));

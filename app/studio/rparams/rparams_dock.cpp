@@ -1,6 +1,8 @@
 #include "rparams/rparams_dock.h"
 
 #include "catalog/rparams.h"
+#include "db/notes.h"
+#include "session/core_texts.h"
 #include "session/shop_database.h"
 #include "constants/machine_store.h"
 #include "engine/controller.h"
@@ -224,7 +226,7 @@ void RParamsPane::selectR(int number) {
     }
 }
 
-int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& presets) {
+int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& presets, const QString& given) {
     if (presets.empty()) {
         say(tr("No preset changes"), false);
         return 0;
@@ -234,8 +236,9 @@ int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& p
     QStringList items;
     for (const auto& [n, v] : presets)
         items << (v ? QStringLiteral("R%1=%2").arg(n).arg(*v) : QStringLiteral("R%1 -").arg(n));
-    const QString note = note_->text().trimmed().isEmpty()
-                             ? QStringLiteral("presets %1 (K528 Studio)").arg(items.join(QLatin1Char(' ')))
+    const QString note = !given.isEmpty()              ? given
+                         : note_->text().trimmed().isEmpty()
+                             ? QString::fromStdString(db::noteText({"studio.presets", {items.join(QLatin1Char(' ')).toStdString()}}))
                              : note_->text().trimmed();
     const MachineStore::Kept k = store_->keep(e, note);
     if (k.revision == 0) {
@@ -247,7 +250,7 @@ int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& p
     } catch (const std::exception&) {
     }
     note_->clear();
-    say(tr("%1 — kept as revision %2 of %3").arg(note).arg(k.revision).arg(store_->qName()), false);
+    say(tr("%1 — kept as revision %2 of %3").arg(revisionNoteText(note.toStdString())).arg(k.revision).arg(store_->qName()), false);
     return k.revision;
 }
 
@@ -299,8 +302,7 @@ TrialPartDialog* RParamsPane::trialPartDialog() {
 }
 
 int RParamsPane::keepTrialCorrection(int r, std::int64_t value, const QString& note) {
-    note_->setText(note);
-    const int revision = keepPresets({{r, value}});
+    const int revision = keepPresets({{r, value}}, note);
     if (revision == 0)
         return 0;
     QPointer<RParamsPane> self(this);

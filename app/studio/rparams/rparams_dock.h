@@ -45,7 +45,8 @@ public:
     void selectR(int number);
 
     // Presets: kept as the machine's next revision; returns the revision (0: not kept).
-    int keepPresets(const std::map<int, std::optional<std::int64_t>>& presets);
+    // `given`: the revision's note as stored (db/notes.h); "" the user's, or ours naming the presets.
+    int keepPresets(const std::map<int, std::optional<std::int64_t>>& presets, const QString& given = {});
     int keepSelectedAsPreset();
     int removeSelectedPreset();
     int keepAllAsPresets(); // every writable R that is not 0, as «keep the memory» does

@@ -1,5 +1,6 @@
 #include "rparams/trial_dialog.h"
 
+#include "db/notes.h"
 #include "profile/tools.h"
 #include "proveout/setup_sheet.h"
 #include "language.h"
@@ -101,14 +102,13 @@ QString TrialPartDialog::note() const {
     if (!correction_)
         return {};
     const bool x = axis_->currentData().toInt() == 0;
-    return QStringLiteral("trial part: T%1 %2 measured %3 for %4: R%5 %6 -> %7")
-        .arg(tool_->currentData().toInt())
-        .arg(x ? QStringLiteral("X") : QStringLiteral("Z"))
-        .arg(measured_->value(), 0, 'f', 3)
-        .arg(drawing_->value(), 0, 'f', 3)
-        .arg(correction_->rNumber)
-        .arg(correction_->oldValue)
-        .arg(correction_->newValue);
+    // As stored (db/notes.h), said in the reader's language by the history.
+    return QString::fromStdString(db::noteText(
+        {"trial",
+         {std::to_string(tool_->currentData().toInt()), x ? "X" : "Z",
+          QString::number(measured_->value(), 'f', 3).toStdString(),
+          QString::number(drawing_->value(), 'f', 3).toStdString(), std::to_string(correction_->rNumber),
+          std::to_string(correction_->oldValue), std::to_string(correction_->newValue)}}));
 }
 
 void TrialPartDialog::recalculate() {
@@ -121,7 +121,7 @@ void TrialPartDialog::recalculate() {
     try {
         const std::optional<profile::Tool> t = profile::toolAt(profile::tools(machine_), tool_->currentData().toInt());
         if (!t)
-            throw profile::cutting::CuttingError("no tool");
+            throw profile::cutting::CuttingError(profile::problem("cutting.no-tool", {std::to_string(tool_->currentData().toInt())}));
         const bool x = axis_->currentData().toInt() == 0;
         correction_ = profile::cutting::trialCorrection(machine_, *t, x ? catalog::Axis::X : catalog::Axis::Z,
                                                         measured_->value(), drawing_->value());

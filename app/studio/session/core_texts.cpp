@@ -3,8 +3,11 @@
 #include "db/error.h"
 #include "engine/types.h"
 #include "db/notes.h"
+#include "plc/description_texts.h"
+#include "plc/json_reader.h"
 #include "language.h"
 #include "profile/calculator.h"
+#include "profile/cutting.h"
 #include "profile/problem.h"
 #include "profile/tools.h"
 #include "proveout/proveout.h"
@@ -145,6 +148,17 @@ const Entry kProblems[] = {
         {"calc.gear-fraction", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the gear ratio %1 is not a fraction with a denominator up to 100000")},
         {"calc.speed", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "a speed must be zero or positive")},
         {"calc.feed-reach", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)")},
+        {"cutting.cutting-speed", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the cutting speed must be a positive number")},
+        {"cutting.diameter", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the diameter must be a positive number")},
+        {"cutting.spindle-speed", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the spindle speed must be a positive number")},
+        {"cutting.feed", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the feed per revolution must be a positive number")},
+        {"cutting.wheel-diameter", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the wheel's diameter must be a positive number")},
+        {"cutting.wheel-speed", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the wheel's speed must be a positive number")},
+        {"cutting.no-r207", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the machine presets no R207 (the wheel's diameter)")},
+        {"cutting.no-offset", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "tool %1 has no offset R-parameters (tool.%1.offset_r)")},
+        {"cutting.not-numbers", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the measured size and the drawing's must be numbers")},
+        {"cutting.r-range", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "R%1 would leave the R-parameter range")},
+        {"cutting.no-tool", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "no tool at station %1")},
 };
 
 // core/db/notes.cpp's catalog: the notes core and the desktop write.
@@ -162,6 +176,8 @@ const Entry kNotes[] = {
         {"studio.editor", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "programs and messages from the editor (K528 Studio)")},
         {"studio.set", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "set %1 = %2 (K528 Studio)")},
         {"studio.undo", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "undo: %1")},
+        {"studio.presets", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "presets %1 (K528 Studio)")},
+        {"trial", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "trial part: T%1 %2 measured %3 for %4: R%5 %6 -> %7")},
 };
 
 // core/proveout's findings (proveout::texts()), each text marked for the translators.
@@ -177,6 +193,96 @@ const Entry kFindings[] = {
         {"feed-wheel-stopped", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A feed into the ring's material with the wheel stopped: X%1 Z%2")},
         {"manual-into-material", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A manual move takes the tool into the material of the blank: X%1 Z%2")},
         {"cut-too-deep", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A cut %1 mm deep, deeper than tool T%2 takes (%3 mm)")},
+};
+
+// core/plc/description_texts.cpp's catalog (what is wrong with a machine
+// description), each text marked for the translators.
+const Entry kDescriptionTexts[] = {
+        {"json.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "appears twice")},
+        {"json.syntax", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "JSON syntax error: line %2, column %3")},
+        {"json.expected-object", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected an object, found %1")},
+        {"json.unknown-key", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "unknown key (known here: %1)")},
+        {"json.missing", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "is missing")},
+        {"json.expected-array", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected an array, found %1")},
+        {"json.expected-string", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected a string, found %1")},
+        {"json.expected-integer", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected a whole number, found %1")},
+        {"json.outside", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 is outside %2..%3")},
+        {"json.expected-number", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected a number, found %1")},
+        {"json.expected-bool", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected true or false, found %1")},
+        {"type.null", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "null")},
+        {"type.boolean", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "true/false")},
+        {"type.number", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a number")},
+        {"type.string", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a string")},
+        {"type.array", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "an array")},
+        {"type.object", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "an object")},
+        {"type.other", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "?")},
+        {"name.invalid", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is not a valid name (letters, digits and '_', starting with a letter or '_', at most 40)")},
+        {"name.reserved", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is reserved (a keyword or a built-in signal)")},
+        {"name.key", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is reserved for the K923 keys K1..K12")},
+        {"name.address", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' looks like an interface address (Z<word>.<bit>)")},
+        {"format", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "this program reads format 1")},
+        {"empty", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "is empty")},
+        {"module.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "module place %1 appears twice")},
+        {"module.none", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "no module at place %1 in \"modules\"")},
+        {"contact", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1': use \"no\" (normally open) or \"nc\" (normally closed)")},
+        {"timer.one", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a timer needs exactly one of on_delay_ms, off_delay_ms, pulse_ms")},
+        {"timer.delay", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a delay belongs to a timer: {\"timer\": \"name\", \"on_delay_ms\": ..., \"when\": ...}")},
+        {"rung.one", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a rung has exactly one of \"out\", \"set\", \"reset\", \"timer\"")},
+        {"m.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "M%1 is described twice")},
+        {"m.timeout", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "timeout_ms and timeout_alarm go together")},
+        {"unknown-m", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "give either \"acknowledge\": true or \"alarm\": k (hold the frame, raise alarm k)")},
+        {"override.step", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 % is not an override step (0 1 2 5 10 20 35 50 75 90 100)")},
+        {"key.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "K%1 is bound twice")},
+        {"key.action", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a key needs an action: set, reset, toggle or pulse")},
+        {"led.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "the LEDs of K%1 are described twice")},
+        {"message.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "message %1 has two conditions here")},
+        {"slot.unknown", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "not a signal of the positioner interface (known: %1, mode, override, bits)")},
+        {"override.code", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "needs the four code bits, least significant first")},
+        {"bits.word", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "only the free words Z1011..Z1013 are written here; the bits of Z1000..Z1010 have names (see slot keys)")},
+        {"slot.same-bit", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "writes the same bit as %1")},
+        {"file.cannot-read", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "cannot read the file")},
+        {"file.unknown-machine", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "no such machine description (built in: %1; or give a .json file)")},
+        {"plc.name-used", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "the name '%1' is already used (%2)")},
+        {"plc.built-in", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "built in")},
+        {"plc.unknown-signal", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "unknown signal '%1'")},
+        {"plc.not-logic", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 is not written by the logic (only Z1000..Z1013 are; messages, LEDs and keys have their own sections)")},
+        {"plc.z1000-11", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "Z1000.11 (M acknowledged) is written by segment 0")},
+        {"plc.mode-code", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 is the mode code, written by positioner.mode")},
+        {"plc.override-code", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 belongs to the override code, written by positioner.override")},
+        {"plc.not-writable", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' cannot be written: only outputs, flags and bits Z1000..Z1013 can (it is declared at %2)")},
+        {"plc.coil-twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' already has a coil (each signal has one)")},
+        {"plc.slot-coil", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 already has a coil in the logic")},
+        {"plc.pulse-coil", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is pulsed by an action and also has a coil")},
+        {"condition", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "column %1: %3 in \"%2\"")},
+        {"expr.empty", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "empty condition")},
+        {"expr.unexpected", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "unexpected '%1'")},
+        {"expr.deep", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "condition nested too deeply (more than %1 levels)")},
+        {"expr.keyword", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is a keyword, not a signal")},
+        {"expr.paren", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "missing ')'")},
+        {"expr.early", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "the condition ends too early")},
+        {"expr.paren-after", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "missing ')' after the signal of %1")},
+        {"equipment.detents", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "needs three values: x1, x10, x100 positions")},
+        {"equipment.spindle-name", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1': a spindle is \"spindle\", \"wheel\" or \"work\"")},
+        {"equipment.spindle-twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "spindle '%1' appears twice")},
+        {"equipment.pump-name", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1': a pump is \"coolant\", \"lube\", \"hydraulics\" or \"air\"")},
+        {"equipment.pump-twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "pump '%1' appears twice")},
+        {"equipment.ring-size", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "the size must be larger than the blank's bore (internal grinding)")},
+        {"equipment.grinding-spindles", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "grinding needs the spindles \"wheel\" and \"work\"")},
+        {"equipment.grinding-chuck", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "grinding needs a chuck (the ring is changed while it is open)")},
+        {"equipment.unknown-signal", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "unknown machine signal '%1'")},
+        {"signal.not-sensor", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is not a sensor of this machine (%2)")},
+        {"signal.not-actuator", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is not an actuator of this machine (%2)")},
+        {"signal.driven-twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is driven by another output too")},
+        {"proveout.not-m", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "M%1 is not one of the description's m_functions")},
+        {"proveout.not-spindle", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is not a spindle of the equipment")},
+        {"proveout.on-off", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "M%1 both starts and stops the spindle")},
+        {"proveout.cutting-spindle", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "'%1' is not one of the spindles listed here")},
+        {"proveout.tool-twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "M%1 changes the tool twice")},
+        {"proveout.no-turret", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "the equipment has no turret")},
+        {"proveout.turret-box", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "the turret's box needs z_min_mm < z_max_mm and r_min_mm < r_max_mm")},
+        {"expr.name-missing", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "a signal name is missing at the end")},
+        {"expr.name-expected", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected a signal name, found '%1'")},
+        {"expr.needs-paren", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 needs a signal in parentheses: %1(name)")},
 };
 
 // `pattern` with %1..%9 filled in one pass, as core fills its own texts
@@ -207,6 +313,33 @@ bool hasNoteText(std::string_view id) {
         if (id == e.id)
             return true;
     return false;
+}
+
+bool hasDescriptionText(std::string_view id) {
+    for (const Entry& e : kDescriptionTexts)
+        if (id == e.id)
+            return true;
+    return false;
+}
+
+QString descriptionProblemText(const profile::Problem& p) {
+    QStringList args;
+    for (const std::string& a : p.args)
+        args << fromStd(a);
+    for (const profile::Problem& w : p.within)
+        args << descriptionProblemText(w);
+    for (const Entry& e : kDescriptionTexts)
+        if (p.id == e.id)
+            return fill(QCoreApplication::translate("k528::studio::DescriptionTexts", e.text), args);
+    return fromStd(plc::descriptionText(p, false)); // an id without a translation: core's words
+}
+
+QString descriptionErrorText(const plc::DescriptionError& e) {
+    const QString what = descriptionProblemText(e.problem());
+    if (e.path().empty())
+        return QCoreApplication::translate("k528::studio::CoreTexts", "%1: %2").arg(fromStd(e.source()), what);
+    return QCoreApplication::translate("k528::studio::DescriptionTexts", "%1: %2: %3")
+        .arg(fromStd(e.source()), fromStd(e.path()), what);
 }
 
 bool hasFindingText(std::string_view id) {
@@ -287,6 +420,10 @@ QString fileErrorText(const profile::FileError& e) {
 QString coreErrorText(const std::exception& e) {
     if (const auto* f = dynamic_cast<const profile::FileError*>(&e))
         return fileErrorText(*f);
+    if (const auto* d = dynamic_cast<const plc::DescriptionError*>(&e))
+        return descriptionErrorText(*d);
+    if (const auto* c = dynamic_cast<const profile::cutting::CuttingError*>(&e))
+        return problemText(c->problem);
     if (const auto* c = dynamic_cast<const profile::calc::CalcError*>(&e))
         return problemText(c->problem);
     if (const auto* t = dynamic_cast<const profile::ToolError*>(&e))

@@ -15,6 +15,9 @@ namespace k528::profile {
 struct Problem;
 class FileError;
 } // namespace k528::profile
+namespace k528::plc {
+class DescriptionError;
+} // namespace k528::plc
 namespace k528::engine {
 enum class Refusal : std::uint8_t;
 } // namespace k528::engine
@@ -28,7 +31,8 @@ namespace k528::studio {
 QString problemText(const profile::Problem& p);
 // "<file>, line <n>: <problem>" («<файл>, строка <n>: …»).
 QString fileErrorText(const profile::FileError& e);
-// Any error core throws, for the window: a file's (fileErrorText), one with
+// Any error core throws, for the window: a file's (fileErrorText), a machine
+// description's (descriptionErrorText), one with
 // a problem of core's catalog (the constants calculator's, a tool's, a
 // database's refusal of an item), a database's (databaseErrorText), else
 // core's own words.
@@ -48,6 +52,12 @@ QString refusalText(engine::Refusal r);
 // «Инструмент T1 задевает кулачки патрона: X40 Z-2».
 QString findingText(const proveout::Finding& f);
 bool hasFindingText(std::string_view id);
+// What is wrong with a machine description («machines/x.json: inputs[0].name:
+// «1x» — недопустимое имя …»): its file, the path in the document and the
+// problem (plc/description_texts.h's ids) in the window's language.
+QString descriptionErrorText(const plc::DescriptionError& e);
+QString descriptionProblemText(const profile::Problem& p);
+bool hasDescriptionText(std::string_view id);
 // The id has a text here (studio.ui_language: every id of core's catalog has).
 bool hasProblemText(std::string_view id);
 

@@ -2,6 +2,7 @@
 #include "db/notes.h"
 
 #include "db/database.h"
+#include "machine/simulation.h"
 #include "profile/builtin.h"
 #include "profile/validate.h"
 #include "session/shop_database.h"
@@ -26,15 +27,23 @@ QString databaseProblem(const std::exception& e) {
         .arg(databaseErrorText(e));
 }
 
+// The machine's description (its PLC, equipment and prove-out sections, a
+// hand-made file named by its `machine` setting) must build a simulation:
+// throws plc::DescriptionError before a window is built on it.
+void checkDescription(const profile::MachineProfile& p) {
+    const machine::Simulation simulation(p);
+}
+
 } // namespace
 
 MachineChoice loadMachine(const QString& nameOrPath) {
     const std::string name = nameOrPath.toStdString();
     MachineChoice c;
+    bool found = false;
     try {
         // The database, created with the built-in machines (and its folder)
         // when it does not exist: the first start on a new machine.
-        const bool found = ShopDatabase::at()->use([&](db::Database& d) {
+        found = ShopDatabase::at()->use([&](db::Database& d) {
             if (!profile::checkName(name).empty() || !d.hasMachine(name))
                 return false;
             c.profile = d.loadMachine(name);
@@ -42,15 +51,18 @@ MachineChoice loadMachine(const QString& nameOrPath) {
                            .arg(fromStd(d.path().string()));
             return true;
         });
-        if (found)
-            return c;
     } catch (const std::exception& e) {
         c.warning = databaseProblem(e);
+    }
+    if (found) {
+        checkDescription(c.profile);
+        return c;
     }
     c.profile = profile::load(name); // throws profile::FileError
     c.source = profile::isBuiltin(name)
                    ? QCoreApplication::translate("k528::studio::MachineSource", "built-in")
                    : nameOrPath;
+    checkDescription(c.profile);
     return c;
 }
 

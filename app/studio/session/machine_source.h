@@ -20,7 +20,8 @@ struct MachineChoice {
 };
 
 // The machine `nameOrPath`: a machine of the database, else a built-in
-// profile, else a machine file. Throws profile::FileError when nothing fits.
+// profile, else a machine file. Throws profile::FileError when nothing fits,
+// plc::DescriptionError when its machine description cannot be simulated.
 MachineChoice loadMachine(const QString& nameOrPath);
 
 // The machines to choose from: the database's, else the built-in ones.

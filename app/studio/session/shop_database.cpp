@@ -220,7 +220,7 @@ QString deniedAction(const std::string& action) {
     return QString::fromStdString(action);
 }
 
-// A role refusal in the window's language (not English): who was refused
+// A role refusal in the window's language: who was refused
 // what, the role it needs, the roles the user has, that nothing was written.
 QString deniedText(const db::DeniedError& e) {
     std::string user;
@@ -250,8 +250,9 @@ QString deniedText(const db::DeniedError& e) {
 
 QString databaseErrorText(const std::exception& e) {
     const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e);
-    if (const auto* denied = dynamic_cast<const db::DeniedError*>(&e);
-        denied && currentLanguage() != QLatin1String("en"))
+    // A role refusal in our words only: the server's message may be in any
+    // language (its lc_messages) and says nothing the user can act on.
+    if (const auto* denied = dynamic_cast<const db::DeniedError*>(&e))
         return deniedText(*denied);
     if (!r) {
         const auto* error = dynamic_cast<const db::Error*>(&e);
