@@ -2015,6 +2015,50 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>the controller is off</source>
         <translation>the controller is off</translation>
     </message>
+    <message>
+        <source>the cutting speed must be a positive number</source>
+        <translation>the cutting speed must be a positive number</translation>
+    </message>
+    <message>
+        <source>the diameter must be a positive number</source>
+        <translation>the diameter must be a positive number</translation>
+    </message>
+    <message>
+        <source>the spindle speed must be a positive number</source>
+        <translation>the spindle speed must be a positive number</translation>
+    </message>
+    <message>
+        <source>the feed per revolution must be a positive number</source>
+        <translation>the feed per revolution must be a positive number</translation>
+    </message>
+    <message>
+        <source>the wheel's diameter must be a positive number</source>
+        <translation>the wheel's diameter must be a positive number</translation>
+    </message>
+    <message>
+        <source>the wheel's speed must be a positive number</source>
+        <translation>the wheel's speed must be a positive number</translation>
+    </message>
+    <message>
+        <source>the machine presets no R207 (the wheel's diameter)</source>
+        <translation>the machine presets no R207 (the wheel's diameter)</translation>
+    </message>
+    <message>
+        <source>tool %1 has no offset R-parameters (tool.%1.offset_r)</source>
+        <translation>tool %1 has no offset R-parameters (tool.%1.offset_r)</translation>
+    </message>
+    <message>
+        <source>the measured size and the drawing's must be numbers</source>
+        <translation>the measured size and the drawing's must be numbers</translation>
+    </message>
+    <message>
+        <source>R%1 would leave the R-parameter range</source>
+        <translation>R%1 would leave the R-parameter range</translation>
+    </message>
+    <message>
+        <source>no tool at station %1</source>
+        <translation>no tool at station %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CuttingDataDialog</name>
@@ -2679,6 +2723,353 @@ Details: %3</translation>
     <message>
         <source>Held at %1: CYCLE START continues</source>
         <translation>Held at %1: CYCLE START continues</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DescriptionTexts</name>
+    <message>
+        <source>appears twice</source>
+        <translation>appears twice</translation>
+    </message>
+    <message>
+        <source>JSON syntax error: line %2, column %3</source>
+        <translation>JSON syntax error: line %2, column %3</translation>
+    </message>
+    <message>
+        <source>expected an object, found %1</source>
+        <translation>expected an object, found %1</translation>
+    </message>
+    <message>
+        <source>unknown key (known here: %1)</source>
+        <translation>unknown key (known here: %1)</translation>
+    </message>
+    <message>
+        <source>is missing</source>
+        <translation>is missing</translation>
+    </message>
+    <message>
+        <source>expected an array, found %1</source>
+        <translation>expected an array, found %1</translation>
+    </message>
+    <message>
+        <source>expected a string, found %1</source>
+        <translation>expected a string, found %1</translation>
+    </message>
+    <message>
+        <source>expected a whole number, found %1</source>
+        <translation>expected a whole number, found %1</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 is outside %2..%3</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>expected a number, found %1</translation>
+    </message>
+    <message>
+        <source>expected true or false, found %1</source>
+        <translation>expected true or false, found %1</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>a number</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>a string</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>an array</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>an object</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>'%1' is not a valid name (letters, digits and '_', starting with a letter or '_', at most 40)</source>
+        <translation>'%1' is not a valid name (letters, digits and '_', starting with a letter or '_', at most 40)</translation>
+    </message>
+    <message>
+        <source>'%1' is reserved (a keyword or a built-in signal)</source>
+        <translation>'%1' is reserved (a keyword or a built-in signal)</translation>
+    </message>
+    <message>
+        <source>'%1' is reserved for the K923 keys K1..K12</source>
+        <translation>'%1' is reserved for the K923 keys K1..K12</translation>
+    </message>
+    <message>
+        <source>'%1' looks like an interface address (Z&lt;word&gt;.&lt;bit&gt;)</source>
+        <translation>'%1' looks like an interface address (Z&lt;word&gt;.&lt;bit&gt;)</translation>
+    </message>
+    <message>
+        <source>this program reads format 1</source>
+        <translation>this program reads format 1</translation>
+    </message>
+    <message>
+        <source>is empty</source>
+        <translation>is empty</translation>
+    </message>
+    <message>
+        <source>module place %1 appears twice</source>
+        <translation>module place %1 appears twice</translation>
+    </message>
+    <message>
+        <source>no module at place %1 in "modules"</source>
+        <translation>no module at place %1 in "modules"</translation>
+    </message>
+    <message>
+        <source>'%1': use "no" (normally open) or "nc" (normally closed)</source>
+        <translation>'%1': use "no" (normally open) or "nc" (normally closed)</translation>
+    </message>
+    <message>
+        <source>a timer needs exactly one of on_delay_ms, off_delay_ms, pulse_ms</source>
+        <translation>a timer needs exactly one of on_delay_ms, off_delay_ms, pulse_ms</translation>
+    </message>
+    <message>
+        <source>a delay belongs to a timer: {"timer": "name", "on_delay_ms": ..., "when": ...}</source>
+        <translation>a delay belongs to a timer: {"timer": "name", "on_delay_ms": ..., "when": ...}</translation>
+    </message>
+    <message>
+        <source>a rung has exactly one of "out", "set", "reset", "timer"</source>
+        <translation>a rung has exactly one of "out", "set", "reset", "timer"</translation>
+    </message>
+    <message>
+        <source>M%1 is described twice</source>
+        <translation>M%1 is described twice</translation>
+    </message>
+    <message>
+        <source>timeout_ms and timeout_alarm go together</source>
+        <translation>timeout_ms and timeout_alarm go together</translation>
+    </message>
+    <message>
+        <source>give either "acknowledge": true or "alarm": k (hold the frame, raise alarm k)</source>
+        <translation>give either "acknowledge": true or "alarm": k (hold the frame, raise alarm k)</translation>
+    </message>
+    <message>
+        <source>%1 % is not an override step (0 1 2 5 10 20 35 50 75 90 100)</source>
+        <translation>%1 % is not an override step (0 1 2 5 10 20 35 50 75 90 100)</translation>
+    </message>
+    <message>
+        <source>K%1 is bound twice</source>
+        <translation>K%1 is bound twice</translation>
+    </message>
+    <message>
+        <source>a key needs an action: set, reset, toggle or pulse</source>
+        <translation>a key needs an action: set, reset, toggle or pulse</translation>
+    </message>
+    <message>
+        <source>the LEDs of K%1 are described twice</source>
+        <translation>the LEDs of K%1 are described twice</translation>
+    </message>
+    <message>
+        <source>message %1 has two conditions here</source>
+        <translation>message %1 has two conditions here</translation>
+    </message>
+    <message>
+        <source>not a signal of the positioner interface (known: %1, mode, override, bits)</source>
+        <translation>not a signal of the positioner interface (known: %1, mode, override, bits)</translation>
+    </message>
+    <message>
+        <source>needs the four code bits, least significant first</source>
+        <translation>needs the four code bits, least significant first</translation>
+    </message>
+    <message>
+        <source>only the free words Z1011..Z1013 are written here; the bits of Z1000..Z1010 have names (see slot keys)</source>
+        <translation>only the free words Z1011..Z1013 are written here; the bits of Z1000..Z1010 have names (see slot keys)</translation>
+    </message>
+    <message>
+        <source>writes the same bit as %1</source>
+        <translation>writes the same bit as %1</translation>
+    </message>
+    <message>
+        <source>cannot read the file</source>
+        <translation>cannot read the file</translation>
+    </message>
+    <message>
+        <source>no such machine description (built in: %1; or give a .json file)</source>
+        <translation>no such machine description (built in: %1; or give a .json file)</translation>
+    </message>
+    <message>
+        <source>the name '%1' is already used (%2)</source>
+        <translation>the name '%1' is already used (%2)</translation>
+    </message>
+    <message>
+        <source>built in</source>
+        <translation>built in</translation>
+    </message>
+    <message>
+        <source>unknown signal '%1'</source>
+        <translation>unknown signal '%1'</translation>
+    </message>
+    <message>
+        <source>%1 is not written by the logic (only Z1000..Z1013 are; messages, LEDs and keys have their own sections)</source>
+        <translation>%1 is not written by the logic (only Z1000..Z1013 are; messages, LEDs and keys have their own sections)</translation>
+    </message>
+    <message>
+        <source>Z1000.11 (M acknowledged) is written by segment 0</source>
+        <translation>Z1000.11 (M acknowledged) is written by segment 0</translation>
+    </message>
+    <message>
+        <source>%1 is the mode code, written by positioner.mode</source>
+        <translation>%1 is the mode code, written by positioner.mode</translation>
+    </message>
+    <message>
+        <source>%1 belongs to the override code, written by positioner.override</source>
+        <translation>%1 belongs to the override code, written by positioner.override</translation>
+    </message>
+    <message>
+        <source>'%1' cannot be written: only outputs, flags and bits Z1000..Z1013 can (it is declared at %2)</source>
+        <translation>'%1' cannot be written: only outputs, flags and bits Z1000..Z1013 can (it is declared at %2)</translation>
+    </message>
+    <message>
+        <source>'%1' already has a coil (each signal has one)</source>
+        <translation>'%1' already has a coil (each signal has one)</translation>
+    </message>
+    <message>
+        <source>%1 already has a coil in the logic</source>
+        <translation>%1 already has a coil in the logic</translation>
+    </message>
+    <message>
+        <source>'%1' is pulsed by an action and also has a coil</source>
+        <translation>'%1' is pulsed by an action and also has a coil</translation>
+    </message>
+    <message>
+        <source>column %1: %3 in "%2"</source>
+        <translation>column %1: %3 in "%2"</translation>
+    </message>
+    <message>
+        <source>empty condition</source>
+        <translation>empty condition</translation>
+    </message>
+    <message>
+        <source>unexpected '%1'</source>
+        <translation>unexpected '%1'</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply (more than %1 levels)</source>
+        <translation>condition nested too deeply (more than %1 levels)</translation>
+    </message>
+    <message>
+        <source>'%1' is a keyword, not a signal</source>
+        <translation>'%1' is a keyword, not a signal</translation>
+    </message>
+    <message>
+        <source>missing ')'</source>
+        <translation>missing ')'</translation>
+    </message>
+    <message>
+        <source>the condition ends too early</source>
+        <translation>the condition ends too early</translation>
+    </message>
+    <message>
+        <source>missing ')' after the signal of %1</source>
+        <translation>missing ')' after the signal of %1</translation>
+    </message>
+    <message>
+        <source>needs three values: x1, x10, x100 positions</source>
+        <translation>needs three values: x1, x10, x100 positions</translation>
+    </message>
+    <message>
+        <source>'%1': a spindle is "spindle", "wheel" or "work"</source>
+        <translation>'%1': a spindle is "spindle", "wheel" or "work"</translation>
+    </message>
+    <message>
+        <source>spindle '%1' appears twice</source>
+        <translation>spindle '%1' appears twice</translation>
+    </message>
+    <message>
+        <source>'%1': a pump is "coolant", "lube", "hydraulics" or "air"</source>
+        <translation>'%1': a pump is "coolant", "lube", "hydraulics" or "air"</translation>
+    </message>
+    <message>
+        <source>pump '%1' appears twice</source>
+        <translation>pump '%1' appears twice</translation>
+    </message>
+    <message>
+        <source>the size must be larger than the blank's bore (internal grinding)</source>
+        <translation>the size must be larger than the blank's bore (internal grinding)</translation>
+    </message>
+    <message>
+        <source>grinding needs the spindles "wheel" and "work"</source>
+        <translation>grinding needs the spindles "wheel" and "work"</translation>
+    </message>
+    <message>
+        <source>grinding needs a chuck (the ring is changed while it is open)</source>
+        <translation>grinding needs a chuck (the ring is changed while it is open)</translation>
+    </message>
+    <message>
+        <source>unknown machine signal '%1'</source>
+        <translation>unknown machine signal '%1'</translation>
+    </message>
+    <message>
+        <source>'%1' is not a sensor of this machine (%2)</source>
+        <translation>'%1' is not a sensor of this machine (%2)</translation>
+    </message>
+    <message>
+        <source>'%1' is not an actuator of this machine (%2)</source>
+        <translation>'%1' is not an actuator of this machine (%2)</translation>
+    </message>
+    <message>
+        <source>'%1' is driven by another output too</source>
+        <translation>'%1' is driven by another output too</translation>
+    </message>
+    <message>
+        <source>M%1 is not one of the description's m_functions</source>
+        <translation>M%1 is not one of the description's m_functions</translation>
+    </message>
+    <message>
+        <source>'%1' is not a spindle of the equipment</source>
+        <translation>'%1' is not a spindle of the equipment</translation>
+    </message>
+    <message>
+        <source>M%1 both starts and stops the spindle</source>
+        <translation>M%1 both starts and stops the spindle</translation>
+    </message>
+    <message>
+        <source>'%1' is not one of the spindles listed here</source>
+        <translation>'%1' is not one of the spindles listed here</translation>
+    </message>
+    <message>
+        <source>M%1 changes the tool twice</source>
+        <translation>M%1 changes the tool twice</translation>
+    </message>
+    <message>
+        <source>the equipment has no turret</source>
+        <translation>the equipment has no turret</translation>
+    </message>
+    <message>
+        <source>the turret's box needs z_min_mm &lt; z_max_mm and r_min_mm &lt; r_max_mm</source>
+        <translation>the turret's box needs z_min_mm &lt; z_max_mm and r_min_mm &lt; r_max_mm</translation>
+    </message>
+    <message>
+        <source>a signal name is missing at the end</source>
+        <translation>a signal name is missing at the end</translation>
+    </message>
+    <message>
+        <source>expected a signal name, found '%1'</source>
+        <translation>expected a signal name, found '%1'</translation>
+    </message>
+    <message>
+        <source>%1 needs a signal in parentheses: %1(name)</source>
+        <translation>%1 needs a signal in parentheses: %1(name)</translation>
+    </message>
+    <message>
+        <source>%1: %2: %3</source>
+        <translation>%1: %2: %3</translation>
     </message>
 </context>
 <context>
@@ -5148,6 +5539,14 @@ Its comment stays: %3</translation>
     <message>
         <source>undo: %1</source>
         <translation>undo: %1</translation>
+    </message>
+    <message>
+        <source>presets %1 (K528 Studio)</source>
+        <translation>presets %1 (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</source>
+        <translation>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</translation>
     </message>
 </context>
 <context>

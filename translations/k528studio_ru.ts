@@ -2015,6 +2015,50 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>the controller is off</source>
         <translation>Устройство выключено</translation>
     </message>
+    <message>
+        <source>the cutting speed must be a positive number</source>
+        <translation>скорость резания должна быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the diameter must be a positive number</source>
+        <translation>диаметр должен быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the spindle speed must be a positive number</source>
+        <translation>частота вращения шпинделя должна быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the feed per revolution must be a positive number</source>
+        <translation>подача на оборот должна быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the wheel's diameter must be a positive number</source>
+        <translation>диаметр круга должен быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the wheel's speed must be a positive number</source>
+        <translation>частота вращения круга должна быть положительным числом</translation>
+    </message>
+    <message>
+        <source>the machine presets no R207 (the wheel's diameter)</source>
+        <translation>станок не задаёт R207 (диаметр круга)</translation>
+    </message>
+    <message>
+        <source>tool %1 has no offset R-parameters (tool.%1.offset_r)</source>
+        <translation>у инструмента %1 нет R-параметров коррекции (tool.%1.offset_r)</translation>
+    </message>
+    <message>
+        <source>the measured size and the drawing's must be numbers</source>
+        <translation>измеренный размер и размер по чертежу должны быть числами</translation>
+    </message>
+    <message>
+        <source>R%1 would leave the R-parameter range</source>
+        <translation>R%1 вышел бы за диапазон R-параметров</translation>
+    </message>
+    <message>
+        <source>no tool at station %1</source>
+        <translation>нет инструмента в позиции %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CuttingDataDialog</name>
@@ -2679,6 +2723,353 @@ Details: %3</source>
     <message>
         <source>Held at %1: CYCLE START continues</source>
         <translation>Остановлена в %1: «Пуск» продолжает</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::DescriptionTexts</name>
+    <message>
+        <source>appears twice</source>
+        <translation>встречается дважды</translation>
+    </message>
+    <message>
+        <source>JSON syntax error: line %2, column %3</source>
+        <translation>ошибка синтаксиса JSON: строка %2, столбец %3</translation>
+    </message>
+    <message>
+        <source>expected an object, found %1</source>
+        <translation>ожидается объект, а здесь %1</translation>
+    </message>
+    <message>
+        <source>unknown key (known here: %1)</source>
+        <translation>неизвестный ключ (здесь известны: %1)</translation>
+    </message>
+    <message>
+        <source>is missing</source>
+        <translation>отсутствует</translation>
+    </message>
+    <message>
+        <source>expected an array, found %1</source>
+        <translation>ожидается массив, а здесь %1</translation>
+    </message>
+    <message>
+        <source>expected a string, found %1</source>
+        <translation>ожидается строка, а здесь %1</translation>
+    </message>
+    <message>
+        <source>expected a whole number, found %1</source>
+        <translation>ожидается целое число, а здесь %1</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 вне диапазона %2..%3</translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation>ожидается число, а здесь %1</translation>
+    </message>
+    <message>
+        <source>expected true or false, found %1</source>
+        <translation>ожидается true или false, а здесь %1</translation>
+    </message>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>число</translation>
+    </message>
+    <message>
+        <source>a string</source>
+        <translation>строка</translation>
+    </message>
+    <message>
+        <source>an array</source>
+        <translation>массив</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>объект</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>'%1' is not a valid name (letters, digits and '_', starting with a letter or '_', at most 40)</source>
+        <translation>«%1» — недопустимое имя (буквы, цифры и «_», начинается с буквы или «_», не длиннее 40 знаков)</translation>
+    </message>
+    <message>
+        <source>'%1' is reserved (a keyword or a built-in signal)</source>
+        <translation>имя «%1» занято (ключевое слово или встроенный сигнал)</translation>
+    </message>
+    <message>
+        <source>'%1' is reserved for the K923 keys K1..K12</source>
+        <translation>имя «%1» оставлено клавишам K923 K1..K12</translation>
+    </message>
+    <message>
+        <source>'%1' looks like an interface address (Z&lt;word&gt;.&lt;bit&gt;)</source>
+        <translation>имя «%1» похоже на адрес интерфейса (Z&lt;слово&gt;.&lt;бит&gt;)</translation>
+    </message>
+    <message>
+        <source>this program reads format 1</source>
+        <translation>эта программа читает формат 1</translation>
+    </message>
+    <message>
+        <source>is empty</source>
+        <translation>пусто</translation>
+    </message>
+    <message>
+        <source>module place %1 appears twice</source>
+        <translation>место модуля %1 встречается дважды</translation>
+    </message>
+    <message>
+        <source>no module at place %1 in "modules"</source>
+        <translation>в "modules" нет модуля на месте %1</translation>
+    </message>
+    <message>
+        <source>'%1': use "no" (normally open) or "nc" (normally closed)</source>
+        <translation>«%1»: нужно "no" (замыкающий контакт) или "nc" (размыкающий)</translation>
+    </message>
+    <message>
+        <source>a timer needs exactly one of on_delay_ms, off_delay_ms, pulse_ms</source>
+        <translation>у таймера должно быть ровно одно из on_delay_ms, off_delay_ms, pulse_ms</translation>
+    </message>
+    <message>
+        <source>a delay belongs to a timer: {"timer": "name", "on_delay_ms": ..., "when": ...}</source>
+        <translation>задержка бывает только у таймера: {"timer": "имя", "on_delay_ms": ..., "when": ...}</translation>
+    </message>
+    <message>
+        <source>a rung has exactly one of "out", "set", "reset", "timer"</source>
+        <translation>у ступени логики ровно одно из "out", "set", "reset", "timer"</translation>
+    </message>
+    <message>
+        <source>M%1 is described twice</source>
+        <translation>M%1 описана дважды</translation>
+    </message>
+    <message>
+        <source>timeout_ms and timeout_alarm go together</source>
+        <translation>timeout_ms и timeout_alarm задаются вместе</translation>
+    </message>
+    <message>
+        <source>give either "acknowledge": true or "alarm": k (hold the frame, raise alarm k)</source>
+        <translation>задайте либо "acknowledge": true, либо "alarm": k (задержать кадр и выдать аварийное сообщение k)</translation>
+    </message>
+    <message>
+        <source>%1 % is not an override step (0 1 2 5 10 20 35 50 75 90 100)</source>
+        <translation>%1 % — не ступень коррекции (0 1 2 5 10 20 35 50 75 90 100)</translation>
+    </message>
+    <message>
+        <source>K%1 is bound twice</source>
+        <translation>клавиша K%1 назначена дважды</translation>
+    </message>
+    <message>
+        <source>a key needs an action: set, reset, toggle or pulse</source>
+        <translation>клавише нужно действие: set, reset, toggle или pulse</translation>
+    </message>
+    <message>
+        <source>the LEDs of K%1 are described twice</source>
+        <translation>светодиоды K%1 описаны дважды</translation>
+    </message>
+    <message>
+        <source>message %1 has two conditions here</source>
+        <translation>у сообщения %1 здесь два условия</translation>
+    </message>
+    <message>
+        <source>not a signal of the positioner interface (known: %1, mode, override, bits)</source>
+        <translation>не сигнал интерфейса с БП (известны: %1, mode, override, bits)</translation>
+    </message>
+    <message>
+        <source>needs the four code bits, least significant first</source>
+        <translation>нужны четыре бита кода, младший первым</translation>
+    </message>
+    <message>
+        <source>only the free words Z1011..Z1013 are written here; the bits of Z1000..Z1010 have names (see slot keys)</source>
+        <translation>здесь пишутся только свободные слова Z1011..Z1013; у битов Z1000..Z1010 есть имена (ключи сигналов БП)</translation>
+    </message>
+    <message>
+        <source>writes the same bit as %1</source>
+        <translation>пишет тот же бит, что и %1</translation>
+    </message>
+    <message>
+        <source>cannot read the file</source>
+        <translation>файл нельзя прочитать</translation>
+    </message>
+    <message>
+        <source>no such machine description (built in: %1; or give a .json file)</source>
+        <translation>нет такого описания станка (встроенные: %1; или укажите файл .json)</translation>
+    </message>
+    <message>
+        <source>the name '%1' is already used (%2)</source>
+        <translation>имя «%1» уже занято (%2)</translation>
+    </message>
+    <message>
+        <source>built in</source>
+        <translation>встроенный сигнал</translation>
+    </message>
+    <message>
+        <source>unknown signal '%1'</source>
+        <translation>неизвестный сигнал «%1»</translation>
+    </message>
+    <message>
+        <source>%1 is not written by the logic (only Z1000..Z1013 are; messages, LEDs and keys have their own sections)</source>
+        <translation>%1 не пишется логикой (пишутся только Z1000..Z1013; у сообщений, светодиодов и клавиш свои разделы)</translation>
+    </message>
+    <message>
+        <source>Z1000.11 (M acknowledged) is written by segment 0</source>
+        <translation>Z1000.11 (M квитирована) пишет сегмент 0</translation>
+    </message>
+    <message>
+        <source>%1 is the mode code, written by positioner.mode</source>
+        <translation>%1 — бит кода режима, его пишет positioner.mode</translation>
+    </message>
+    <message>
+        <source>%1 belongs to the override code, written by positioner.override</source>
+        <translation>%1 — бит кода коррекции, его пишет positioner.override</translation>
+    </message>
+    <message>
+        <source>'%1' cannot be written: only outputs, flags and bits Z1000..Z1013 can (it is declared at %2)</source>
+        <translation>«%1» нельзя писать: пишутся только выходы, флаги и биты Z1000..Z1013 (объявлен: %2)</translation>
+    </message>
+    <message>
+        <source>'%1' already has a coil (each signal has one)</source>
+        <translation>у «%1» уже есть катушка (у каждого сигнала одна)</translation>
+    </message>
+    <message>
+        <source>%1 already has a coil in the logic</source>
+        <translation>у %1 уже есть катушка в логике</translation>
+    </message>
+    <message>
+        <source>'%1' is pulsed by an action and also has a coil</source>
+        <translation>«%1» получает импульс от действия и при этом имеет катушку</translation>
+    </message>
+    <message>
+        <source>column %1: %3 in "%2"</source>
+        <translation>столбец %1: %3 в "%2"</translation>
+    </message>
+    <message>
+        <source>empty condition</source>
+        <translation>пустое условие</translation>
+    </message>
+    <message>
+        <source>unexpected '%1'</source>
+        <translation>неожиданный знак «%1»</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply (more than %1 levels)</source>
+        <translation>условие вложено слишком глубоко (больше %1 уровней)</translation>
+    </message>
+    <message>
+        <source>'%1' is a keyword, not a signal</source>
+        <translation>«%1» — ключевое слово, а не сигнал</translation>
+    </message>
+    <message>
+        <source>missing ')'</source>
+        <translation>не хватает «)»</translation>
+    </message>
+    <message>
+        <source>the condition ends too early</source>
+        <translation>условие обрывается слишком рано</translation>
+    </message>
+    <message>
+        <source>missing ')' after the signal of %1</source>
+        <translation>не хватает «)» после сигнала %1</translation>
+    </message>
+    <message>
+        <source>needs three values: x1, x10, x100 positions</source>
+        <translation>нужны три значения: положения x1, x10, x100</translation>
+    </message>
+    <message>
+        <source>'%1': a spindle is "spindle", "wheel" or "work"</source>
+        <translation>«%1»: шпиндель — это "spindle", "wheel" или "work"</translation>
+    </message>
+    <message>
+        <source>spindle '%1' appears twice</source>
+        <translation>шпиндель «%1» встречается дважды</translation>
+    </message>
+    <message>
+        <source>'%1': a pump is "coolant", "lube", "hydraulics" or "air"</source>
+        <translation>«%1»: насос — это "coolant", "lube", "hydraulics" или "air"</translation>
+    </message>
+    <message>
+        <source>pump '%1' appears twice</source>
+        <translation>насос «%1» встречается дважды</translation>
+    </message>
+    <message>
+        <source>the size must be larger than the blank's bore (internal grinding)</source>
+        <translation>размер должен быть больше отверстия заготовки (внутреннее шлифование)</translation>
+    </message>
+    <message>
+        <source>grinding needs the spindles "wheel" and "work"</source>
+        <translation>для шлифования нужны шпиндели "wheel" и "work"</translation>
+    </message>
+    <message>
+        <source>grinding needs a chuck (the ring is changed while it is open)</source>
+        <translation>для шлифования нужен патрон (кольцо меняют, пока он разжат)</translation>
+    </message>
+    <message>
+        <source>unknown machine signal '%1'</source>
+        <translation>неизвестный сигнал станка «%1»</translation>
+    </message>
+    <message>
+        <source>'%1' is not a sensor of this machine (%2)</source>
+        <translation>«%1» — не датчик этого станка (%2)</translation>
+    </message>
+    <message>
+        <source>'%1' is not an actuator of this machine (%2)</source>
+        <translation>«%1» — не исполнительный механизм этого станка (%2)</translation>
+    </message>
+    <message>
+        <source>'%1' is driven by another output too</source>
+        <translation>«%1» управляется ещё и другим выходом</translation>
+    </message>
+    <message>
+        <source>M%1 is not one of the description's m_functions</source>
+        <translation>M%1 нет среди m_functions описания</translation>
+    </message>
+    <message>
+        <source>'%1' is not a spindle of the equipment</source>
+        <translation>«%1» — не шпиндель из equipment</translation>
+    </message>
+    <message>
+        <source>M%1 both starts and stops the spindle</source>
+        <translation>M%1 и пускает, и останавливает шпиндель</translation>
+    </message>
+    <message>
+        <source>'%1' is not one of the spindles listed here</source>
+        <translation>«%1» нет среди перечисленных здесь шпинделей</translation>
+    </message>
+    <message>
+        <source>M%1 changes the tool twice</source>
+        <translation>M%1 меняет инструмент дважды</translation>
+    </message>
+    <message>
+        <source>the equipment has no turret</source>
+        <translation>в оборудовании нет револьверной головки</translation>
+    </message>
+    <message>
+        <source>the turret's box needs z_min_mm &lt; z_max_mm and r_min_mm &lt; r_max_mm</source>
+        <translation>габарит револьверной головки требует z_min_mm &lt; z_max_mm и r_min_mm &lt; r_max_mm</translation>
+    </message>
+    <message>
+        <source>a signal name is missing at the end</source>
+        <translation>в конце не хватает имени сигнала</translation>
+    </message>
+    <message>
+        <source>expected a signal name, found '%1'</source>
+        <translation>ожидается имя сигнала, а здесь «%1»</translation>
+    </message>
+    <message>
+        <source>%1 needs a signal in parentheses: %1(name)</source>
+        <translation>%1 требует сигнала в скобках: %1(имя)</translation>
+    </message>
+    <message>
+        <source>%1: %2: %3</source>
+        <translation>%1: %2: %3</translation>
     </message>
 </context>
 <context>
@@ -5148,6 +5539,14 @@ Its comment stays: %3</source>
     <message>
         <source>undo: %1</source>
         <translation>отмена: %1</translation>
+    </message>
+    <message>
+        <source>presets %1 (K528 Studio)</source>
+        <translation>предустановки %1 (K528 Studio)</translation>
+    </message>
+    <message>
+        <source>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</source>
+        <translation>пробная деталь: T%1 %2 измерено %3 при %4 по чертежу: R%5 %6 -&gt; %7</translation>
     </message>
 </context>
 <context>

@@ -106,7 +106,7 @@ QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static
 // the panel's and the PC keyboard's key names, the product's name.
 const QStringList kAllowedLatin = {
     // units, protocols, file formats, the product
-    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "Studio", "TCP", "MQTT",
+    "mm", "µm", "Modbus", "RTU", "CRC", "K923", "K528", "UCG", "RS485", "PDF", "CSV", "PNG", "JSON", "Studio", "TCP", "MQTT",
     "GNU", "GPL",
     // the program language's words and a plane of its axes
     "IF", "GOTO", "XZ", "ISO", "3D",
@@ -914,21 +914,21 @@ void TestUiLanguage::russianCoreTexts() {
             dir_, "name.json", R"({"format": 1, "name": "b", "inputs": [{"name": "1x", "signal": "door.closed"}]})");
         const QString notString = writeFile(dir_, "type.json", R"({"format": 1, "name": 5})");
         const QString badWhen = writeFile(dir_, "when.json",
-                                          R"({"format": 1, "name": "b", "flags": ["f"], "alarms": [{"k": 1, "when": "f & nosuch"}]})");
+                                          R"({"format": 1, "name": "b", "alarms": [{"k": 1, "when": "nosuch"}]})");
         walker.setData(panelTexts() + positionerTexts() + fileSyntax() +
                        QStringList{outOfRange, notWhole, badCsv, noFile, dir_.path(), QStringLiteral("no-such-machine"),
                                    QStringLiteral("range.k528m"), QStringLiteral("whole.k528m"),
                                    QStringLiteral("bad.csv"), QStringLiteral("absent.k528m"),
                                    QString::fromStdString(db::defaultAuthor()), QStringLiteral("training-lathe"),
                                    QStringLiteral("Tilte"), syntax, badName, notString, badWhen,
-                                   QStringLiteral("1x"), QStringLiteral("f & nosuch"), QStringLiteral("nosuch"),
-                                   QStringLiteral("inputs[0].name"), QStringLiteral("alarms[0].when"),
+                                   QStringLiteral("1x"), QStringLiteral("nosuch"),
+                                   QStringLiteral("inputs[0].name"), QStringLiteral("alarms[0].when"), QStringLiteral("name"),
                                    QStringLiteral("broken.k528m")});
         const std::vector<std::pair<QString, QString>> cases = {
             {syntax, QStringLiteral("ошибка синтаксиса JSON: строка 2, столбец 1")},
             {badName, QStringLiteral("inputs[0].name: «1x» — недопустимое имя")},
             {notString, QStringLiteral("name: ожидается строка, а здесь число")},
-            {badWhen, QStringLiteral("alarms[0].when: столбец 5: неизвестный сигнал «nosuch» в \"f & nosuch\"")},
+            {badWhen, QStringLiteral("alarms[0].when: столбец 1: неизвестный сигнал «nosuch» в \"nosuch\"")},
         };
         for (const auto& [file, want] : cases) {
             profile::MachineProfile lathe = profile::builtin("training-lathe");
@@ -944,13 +944,8 @@ void TestUiLanguage::russianCoreTexts() {
             }
         }
         // File > Machine with a machine file whose simulation uses the last one.
-        std::string withDescription = good;
-        const std::size_t sim = withDescription.find("[simulation]\n");
-        const std::string line = "machine=" + badWhen.toStdString() + "\n";
-        if (sim == std::string::npos)
-            withDescription += "\n[simulation]\n" + line;
-        else
-            withDescription.insert(sim + 13, line);
+        const std::string withDescription = replaced("\nmachine=training-lathe\n", "\nmachine=" + badWhen.toStdString() + "\n");
+        QVERIFY(!withDescription.empty());
         const QString broken = writeFile(dir_, "broken.k528m", withDescription);
         MainWindow w;
         w.show();
