@@ -3,6 +3,7 @@
 #include "profile/problem.h"
 #include "proveout/material.h"
 #include "proveout/sweep.h"
+#include "proveout/tool_change.h"
 #include "units/units.h"
 
 #include <algorithm>
@@ -129,9 +130,8 @@ private:
                 if (off && it != running_.end())
                     running_.erase(it);
             }
-            if (const auto t = g_.toolChange.find(code); t != g_.toolChange.end())
-                station_ = t->second;
         }
+        station_ = stationAfter(g_, f, station_);
     }
 
     bool turning(const std::string& name) const {
