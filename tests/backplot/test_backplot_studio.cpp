@@ -114,6 +114,27 @@ struct Studio {
     }
 };
 
+// The run's machine for a test that drives the session's time: each tick of
+// the run advances the session by one tick, a UI frame (advanced()) every 16.
+struct Stepper final : engine::RunMachine {
+    machine::SimulationRunMachine m;
+    studio::SimulationSession& session;
+    explicit Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
+    engine::Controller& controller() override { return m.controller(); }
+    int ticks = 0;
+    void tick() override {
+        m.tick();
+        if (++ticks % 16 == 0)
+            session.advance(0);
+    }
+    bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+    void setOverrideCode(int c) override { m.setOverrideCode(c); }
+    void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+    void pressStart() override { m.pressStart(); }
+    bool startHeld() const override { return m.startHeld(); }
+    std::vector<int> mFunctions() const override { return m.mFunctions(); }
+};
+
 } // namespace
 
 class TestBackplotStudio : public QObject {
@@ -187,24 +208,7 @@ private slots:
         std::vector<std::size_t> shown;
         connect(session, &studio::SimulationSession::advanced, this,
                 [&] { shown.push_back(s.view->scene().actualPointsShown()); });
-        struct Stepper final : engine::RunMachine {
-            machine::SimulationRunMachine m;
-            studio::SimulationSession& session;
-            Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-            engine::Controller& controller() override { return m.controller(); }
-            int ticks = 0;
-            void tick() override { // a UI frame every 16 ticks
-                m.tick();
-                if (++ticks % 16 == 0)
-                    session.advance(0);
-            }
-            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-            void setOverrideCode(int c) override { m.setOverrideCode(c); }
-            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-            void pressStart() override { m.pressStart(); }
-            bool startHeld() const override { return m.startHeld(); }
-            std::vector<int> mFunctions() const override { return m.mFunctions(); }
-        } stepper(*session);
+        Stepper stepper(*session);
         engine::RunOptions ro;
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, ro);
         QCOMPARE(r.status, engine::RunStatus::Completed);
@@ -247,24 +251,7 @@ private slots:
             if (stations.empty() || stations.back() != st)
                 stations.push_back(st);
         });
-        struct Stepper final : engine::RunMachine {
-            machine::SimulationRunMachine m;
-            studio::SimulationSession& session;
-            Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-            engine::Controller& controller() override { return m.controller(); }
-            int ticks = 0;
-            void tick() override {
-                m.tick();
-                if (++ticks % 16 == 0)
-                    session.advance(0);
-            }
-            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-            void setOverrideCode(int c) override { m.setOverrideCode(c); }
-            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-            void pressStart() override { m.pressStart(); }
-            bool startHeld() const override { return m.startHeld(); }
-            std::vector<int> mFunctions() const override { return m.mFunctions(); }
-        } stepper(*session);
+        Stepper stepper(*session);
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, engine::RunOptions{});
         QCOMPARE(r.status, engine::RunStatus::Completed);
         // Before the program ran no live tool; then tool 1, none while the turret indexed (0), tool 2.
