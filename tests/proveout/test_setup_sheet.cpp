@@ -111,6 +111,19 @@ private slots:
             const QRegularExpression row(QStringLiteral("R%1\\s+%2\\s").arg(n).arg(v));
             QVERIFY2(row.match(text).hasMatch(), qPrintable(QStringLiteral("R%1=%2\n").arg(n).arg(v) + text));
         }
+        // The tables' column headers wrap between words only (a narrow column
+        // broke «Orientati-on», «Statio-n», «вершин-ы»): each word whole.
+        using proveout::SheetText;
+        for (const SheetText h : {SheetText::Station, SheetText::Kind, SheetText::Name, SheetText::TipRadius,
+                                  SheetText::Orientation, SheetText::OffsetR, SheetText::OffsetX, SheetText::OffsetZ,
+                                  SheetText::Program, SheetText::ProgramTitle, SheetText::CycleTime,
+                                  SheetText::Parameter, SheetText::Value, SheetText::ValueMm, SheetText::Meaning})
+            for (const QString& word : QString::fromUtf8(std::string(proveout::sheetText(h, ru)).c_str()).split(' '))
+                QVERIFY2(QRegularExpression(QStringLiteral("(^|\\s)") + QRegularExpression::escape(word) +
+                                            QStringLiteral("(\\s|$)"))
+                             .match(text)
+                             .hasMatch(),
+                         qPrintable(word + "\n" + text));
         QVERIFY(text.contains(ru ? QString("коррекция X инструмента 1") : QString("X offset of tool 1")));
         QVERIFY(text.contains("200"));  // R220 in mm
         if (ru) // the Russian sheet is wholly Russian

@@ -164,6 +164,9 @@ private:
             const auto r = c.rValues();
             const std::int64_t wheel = r.size() > engine::r::WheelCurrent ? r[engine::r::WheelCurrent] : 0;
             tool = k528::backplot::BackplotScene::LiveTool{s.z, s.x, units::discToMm(wheel, sx)};
+            // The simulated turret's station (a controller on the line does not tell it).
+            if (SimulatedMachine* sim = controller().simulated(); sim && sim->simulation().equipment().turret)
+                tool->station = sim->simulation().equipment().turret->station();
         }
         view_->appendLive(path, b.restarted ? 0 : b.firstNew, tool);
         liveShown_ = live_->running();

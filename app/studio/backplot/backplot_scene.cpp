@@ -132,6 +132,7 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->oscSweep.actor->VisibilityOff();
     v_->highlight.init(r, {1, 1, 1}, 4);
     v_->tool.init(r, kToolColour, 2);
+    edge_ = std::make_unique<ToolEdge>(r);
     v_->lut->SetHueRange(0.66, 0.0); // blue (0 µm) .. red (largest)
     v_->lut->Build();
     v_->bar->SetLookupTable(v_->lut);
@@ -223,6 +224,7 @@ void BackplotScene::setInteracting(bool on) {
 void BackplotScene::setPath(toolpath::ProgrammedPath&& path) {
     path_ = std::move(path);
     geom_.build(path_);
+    tools_.stations.clear();
     pathChanged();
     buildStock();
 }
@@ -245,6 +247,7 @@ void BackplotScene::setPrepared(PreparedPath&& p) {
     path_ = std::move(p.path);
     geom_ = std::move(p.geometry);
     blank_ = p.blank;
+    tools_ = std::move(p.tools);
     pathChanged();
     buildStock(p.stock);
 }
@@ -542,6 +545,8 @@ void BackplotScene::setViewMode(ViewMode m) {
     v_->oscTicks.actor->SetVisibility(!solid);
     v_->wheel3d.actor->SetVisibility(solid && wheelBox_.shown);
     v_->oscSweep.actor->SetVisibility(solid);
+    if (solid)
+        edge_->show(std::nullopt, 0, 0, 1, false); // the edge is an XZ drawing
     v_->legend->SetVisibility(!solid);
     v_->scaleBar.actor->SetVisibility(!solid);
     v_->scaleText->SetVisibility(!solid);
@@ -716,6 +721,13 @@ void BackplotScene::refreshTool(int w, int h) {
     const float c = static_cast<float>(8 * vw.worldPerPixel);
     const float fx = static_cast<float>(tx), fy = static_cast<float>(ty);
     v_->tool.lines({fx - c, fy, fx + c, fy, fx, fy - c, fx, fy + c, fx, fy, fx + c, fy + c}, 0.3);
+    // The active tool's edge there: the turret's station while live, else the path's at the playhead.
+    std::optional<profile::Tool> active;
+    if (live_)
+        active = live_->station >= 0 ? tools_.atStation(live_->station) : std::nullopt;
+    else if (!path_.segments.empty())
+        active = tools_.atSegment(k);
+    edge_->show(active, tx, ty, path_.diameterX ? 2.0 : 1.0, mode_ == ViewMode::XZ);
     // The wheel there: its outline in XZ, a cylinder in 3D.
     const double d = live_ ? live_->wheelMm : path_.wheelDiameterAt(k);
     const double shown = path_.diameterX ? 2.0 : 1.0; // shown X per mm of radius

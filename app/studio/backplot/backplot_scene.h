@@ -15,6 +15,7 @@
 #pragma once
 
 #include "backplot/path_geometry.h"
+#include "backplot/tool_edge.h"
 #include "stock/stock.h"
 #include "toolpath/actual_path.h"
 #include "toolpath/programmed_path.h"
@@ -89,6 +90,7 @@ struct PreparedPath {
     PathGeometry geometry;
     std::optional<stock::Blank> blank;
     std::optional<stock::Shape> stock; // the blank as the path leaves it; none: no blank, or the cut was stopped
+    ToolsInUse tools; // the machine's tools and the station along the path (toolsInUse); empty: no tool edge
 };
 // Builds the geometry and cuts the blank; `progress` as Stock::cutPath's
 // (false stops the cut: `stock` stays empty).
@@ -130,9 +132,14 @@ public:
     struct LiveTool {
         double z = 0, x = 0;     // current coordinates, mm as shown
         double wheelMm = 0;      // R207 now, 0 none
+        int station = -1;        // the turret's station now (0 indexing); -1 unknown: no tool edge
     };
     void setLiveTool(const std::optional<LiveTool>& t);
     void setWheelGeometry(const WheelGeometry& g) { wheelGeom_ = g; }
+    // The tools whose edge is drawn at the tool's point (tool_edge.h); a new
+    // path (setPath) clears the stations, setPrepared brings its own.
+    void setToolsInUse(ToolsInUse tools) { tools_ = std::move(tools); }
+    const ToolEdge& toolEdge() const { return *edge_; }
     const WheelGeometry& wheelGeometry() const { return wheelGeom_; }
     // Where the wheel is drawn now (world Z0..Z1 × shown X0..X1), empty when none.
     struct WheelBox {
@@ -190,6 +197,8 @@ private:
     WheelGeometry wheelGeom_;
     WheelBox wheelBox_;
     std::optional<LiveTool> live_;
+    ToolsInUse tools_;
+    std::unique_ptr<ToolEdge> edge_;
     OverlayTexts texts_;
     double scaleBarMm_ = 0;
     double ratio_ = 1;

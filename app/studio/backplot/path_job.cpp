@@ -53,6 +53,7 @@ void PathJob::request(const profile::MachineProfile& profile, const program::Pro
                         report(s);
                         return !s->cancelled.load();
                     });
+                p.tools = k528::backplot::toolsInUse(profile, p.path);
                 if (!s->cancelled) {
                     QMutexLocker lock(&s->mutex);
                     s->result = std::move(p);

@@ -76,8 +76,8 @@ QString setupSheetHtml(const proveout::SetupSheet& s, bool ru) {
     } else {
         h += table + QStringLiteral("<tr>");
         const std::pair<SheetText, int> columns[] = {
-            {SheetText::Station, 7},      {SheetText::Kind, 12},    {SheetText::Name, 32},    {SheetText::TipRadius, 10},
-            {SheetText::Orientation, 11}, {SheetText::OffsetR, 10}, {SheetText::OffsetX, 9},  {SheetText::OffsetZ, 9}};
+            {SheetText::Station, 9},      {SheetText::Kind, 13},    {SheetText::Name, 19},    {SheetText::TipRadius, 12},
+            {SheetText::Orientation, 15}, {SheetText::OffsetR, 14}, {SheetText::OffsetX, 9},  {SheetText::OffsetZ, 9}};
         for (const auto& [c, w] : columns)
             h += th(T(c), w);
         h += QStringLiteral("</tr>");
