@@ -116,6 +116,27 @@ struct Studio {
     }
 };
 
+// The run's machine for a test that drives the session's time: each tick of
+// the run advances the session by one tick, a UI frame (advanced()) every 16.
+struct Stepper final : engine::RunMachine {
+    machine::SimulationRunMachine m;
+    studio::SimulationSession& session;
+    explicit Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
+    engine::Controller& controller() override { return m.controller(); }
+    int ticks = 0;
+    void tick() override {
+        m.tick();
+        if (++ticks % 16 == 0)
+            session.advance(0);
+    }
+    bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+    void setOverrideCode(int c) override { m.setOverrideCode(c); }
+    void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+    void pressStart() override { m.pressStart(); }
+    bool startHeld() const override { return m.startHeld(); }
+    std::vector<int> mFunctions() const override { return m.mFunctions(); }
+};
+
 } // namespace
 
 class TestBackplotStudio : public QObject {
@@ -249,24 +270,7 @@ private slots:
         std::vector<std::size_t> shown;
         connect(session, &studio::SimulationSession::advanced, this,
                 [&] { shown.push_back(s.view->scene().actualPointsShown()); });
-        struct Stepper final : engine::RunMachine {
-            machine::SimulationRunMachine m;
-            studio::SimulationSession& session;
-            Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-            engine::Controller& controller() override { return m.controller(); }
-            int ticks = 0;
-            void tick() override { // a UI frame every 16 ticks
-                m.tick();
-                if (++ticks % 16 == 0)
-                    session.advance(0);
-            }
-            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-            void setOverrideCode(int c) override { m.setOverrideCode(c); }
-            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-            void pressStart() override { m.pressStart(); }
-            bool startHeld() const override { return m.startHeld(); }
-            std::vector<int> mFunctions() const override { return m.mFunctions(); }
-        } stepper(*session);
+        Stepper stepper(*session);
         engine::RunOptions ro;
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, ro);
         QCOMPARE(r.status, engine::RunStatus::Completed);
@@ -288,6 +292,32 @@ private slots:
         QCOMPARE(s.view->scene().path().segments.size(), std::size_t(5));
         // The last point is where the run ended (X60 Z-80).
         QVERIFY(s.view->scene().actualPointsShown() >= 10);
+    }
+    // Following a run on the session's machine, the live tool is the one in
+    // the simulated turret: tool 1, none while M62 indexes, then the grooving tool.
+    void theLiveEdgeIsTheTurretsTool() {
+        Studio s;
+        QVERIFY(s.view);
+        const program::ParseResult parsed =
+            program::parse("%L1\nN1 G1 X60 FX2000\nN2 M62\nN3 R226=R102\nN4 R227=R103\nN5 G1 Z-20 FZ2000\nM30\n");
+        QVERIFY(!parsed.hasErrors());
+        studio::SimulationSession* session = s.w.findChild<studio::SimulationSession*>();
+        QVERIFY(session);
+        session->setRunning(false);
+        // The live tool's station the dock hands the scene at each UI frame of
+        // the run (the edge is drawn for it at the next render: backplot.tool_edge).
+        std::vector<int> stations; // changes only; -1 no live tool
+        connect(session, &studio::SimulationSession::advanced, this, [&] {
+            const auto& live = s.view->scene().liveTool();
+            const int st = live ? live->station : -1;
+            if (stations.empty() || stations.back() != st)
+                stations.push_back(st);
+        });
+        Stepper stepper(*session);
+        const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, engine::RunOptions{});
+        QCOMPARE(r.status, engine::RunStatus::Completed);
+        // Before the program ran no live tool; then tool 1, none while the turret indexed (0), tool 2.
+        QCOMPARE(stations, (std::vector<int>{-1, 1, 0, 2}));
     }
     // An endless program (GOTO back to its start): its preview is computed
     // and the blank cut on a worker, up to PathJob::kMaxFrames frames (a

@@ -137,6 +137,7 @@ public:
         int station = -1;        // the turret's station now (0 indexing); -1 unknown: no tool edge
     };
     void setLiveTool(const std::optional<LiveTool>& t);
+    const std::optional<LiveTool>& liveTool() const { return live_; }
     void setWheelGeometry(const WheelGeometry& g) { wheelGeom_ = g; }
     // The tools whose edge is drawn at the tool's point (tool_edge.h); a new
     // path (setPath) clears the stations, setPrepared brings its own.
