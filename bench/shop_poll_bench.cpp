@@ -9,7 +9,7 @@
 // its line: an upper bound).
 // Usage: bench_shop_poll K528 MACHINES SECONDS CHANGES
 #include "report.h"
-#include "tcp_serve.h"
+#include "rig/tcp_serve.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     const int changes = std::atoi(argv[4]);
     QTemporaryDir dir;
     const QString db = dir.filePath("shop.db");
-    const std::vector<quint16> ports = tcptest::freePorts(machines + 1);
+    const std::vector<quint16> ports = testrig::freePorts(machines + 1);
     if (static_cast<int>(ports.size()) != machines + 1) {
         std::fprintf(stderr, "no free ports\n");
         return 2;
@@ -88,9 +88,9 @@ int main(int argc, char** argv) {
             !run(k528, {"db", "set", name(i), "line=tcp://127.0.0.1:" + QString::number(ports[i]) + "/1", "--db", db}))
             return 2;
     // The controllers, started together (the database of their profile is this one).
-    std::vector<std::unique_ptr<tcptest::Serve>> serves;
+    std::vector<std::unique_ptr<testrig::Serve>> serves;
     for (int i = 0; i < machines; ++i) {
-        serves.push_back(std::make_unique<tcptest::Serve>(k528, ports[static_cast<std::size_t>(i)]));
+        serves.push_back(std::make_unique<testrig::Serve>(k528, ports[static_cast<std::size_t>(i)]));
         serves.back()->process().start(k528, {"serve", "--tcp", serves.back()->address(), "--stdin-keys", "--db", db});
     }
     for (auto& s : serves) {

@@ -109,10 +109,20 @@ CopyReport Database::copyTo(const Location& target, const OpenOptions& targetOpt
         dst.afterCopy();
         return std::vector<std::string>{};
     };
-    std::unique_ptr<Store> dst =
-        target.backend() == Backend::Postgres
-            ? std::unique_ptr<Store>(PostgresStore::open(target, o, copyRows))
-            : std::unique_ptr<Store>(SqliteStore::open(target.file(), o, copyRows));
+    if (target.backend() != Backend::Postgres) {
+        SqliteStore::open(target.file(), o, copyRows);
+        return report;
+    }
+    const auto dst = PostgresStore::open(target, o, copyRows);
+    // Committed. VACUUM (outside any transaction) marks the new rows visible
+    // to all in the tables' visibility maps, so the history's index-only
+    // scans read no table rows from the first call — what autovacuum would
+    // do a minute or more later. Not part of the copy: if it fails, the
+    // copy stands and autovacuum does it.
+    try {
+        dst->connection().exec("VACUUM");
+    } catch (const Error&) {
+    }
     return report;
 }
 

@@ -392,7 +392,7 @@ std::vector<HistoryEntry> Database::history(std::string_view name, std::optional
     // Read in one snapshot by the store (PostgreSQL: one statement, no
     // transaction around it).
     auto changes = s.historyNamed(name, limitRevisions, key);
-    if (!changes) { // no such machine: requireMachine says which there are
+    if (!changes) { // no such machine (requireMachine says which there are), or no changes
         ReadSnapshot tx(s);
         const auto row = requireMachine(s, name);
         changes = s.history(row.id,

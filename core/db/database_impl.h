@@ -39,7 +39,15 @@ decltype(auto) asRole(Store& s, std::string_view action, std::string_view role, 
 }
 
 // The author of a write: the one given, else PostgreSQL's user, else the OS user's.
+// A name, not a text: at most kMaxAuthorBytes (PostgreSQL keeps it in the
+// index of the revisions' authors, whose rows have a size limit).
+inline constexpr std::size_t kMaxAuthorBytes = 256;
 inline std::string authorOf(Store& s, const std::string& given) {
+    if (given.size() > kMaxAuthorBytes)
+        throw Error(ErrorKind::Invalid, "the author's name is " + std::to_string(given.size()) +
+                                            " bytes long; a name has at most " +
+                                            std::to_string(kMaxAuthorBytes) +
+                                            " (UTF-8); nothing was written");
     if (!given.empty())
         return given;
     std::string user = s.sessionUser();

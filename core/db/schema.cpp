@@ -339,6 +339,22 @@ CREATE TABLE state_times (
 ) WITHOUT ROWID;
 )SQL";
 
+// Version 6: the history of one item read along one index. changes_by_key
+// (machine, key, revision) becomes (machine, key, revision, seq): the rows of
+// a key come in the history's order. On PostgreSQL, whose tables are heaps,
+// the revisions' author and time also stand in an index of their own, so the
+// history's join reads them from the index (the revision's settings order
+// makes its table rows wide); SQLite's revisions table is that index already
+// (WITHOUT ROWID, keyed by machine and revision). docs/database.md: Speed.
+constexpr std::string_view kSchemaV6 = R"SQL(
+DROP INDEX changes_by_key;
+CREATE INDEX changes_history ON changes (machine_id, key, revision, seq);
+)SQL";
+
+constexpr std::string_view kSchemaV6Postgres = R"SQL(
+CREATE INDEX revisions_authors ON revisions (machine_id, revision) INCLUDE (author, at);
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
@@ -350,6 +366,7 @@ const Migration kMigrations[] = {
      kSchemaV3Postgres},
     {4, "the training course's graded attempts", kSchemaV4, {}, kSchemaV4Postgres},
     {5, "the shop's time in each state per machine and day", kSchemaV5},
+    {6, "the history of one item read along one index", kSchemaV6, {}, kSchemaV6Postgres},
 };
 
 bool wordAt(std::string_view s, std::size_t i, std::string_view word) {

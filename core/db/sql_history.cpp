@@ -91,7 +91,7 @@ namespace {
 // The changes with their revisions' author and time; the machine by its id
 // (?1, from revision ?2 on) or by its name (?1, of its last ?2 revisions).
 // Two texts each rather than "(?3 IS NULL OR c.key = ?3)": each backend
-// then plans one of them with the index on (machine, key, revision).
+// then plans one of them with the index on (machine, key, revision, seq).
 constexpr std::string_view kHistorySelect =
     "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
     "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision ";
@@ -105,14 +105,19 @@ std::string historyText(bool ofKey) {
 }
 
 // By the machine's name (?1), its last ?2 revisions: one statement (one
-// snapshot, no transaction needed) with a row of NULLs when the machine has
-// no such changes, none when there is no such machine.
+// snapshot, no transaction needed); no rows when there is no such machine or
+// it has no such changes. The revisions are bounded by the machine's id and
+// revision range as the changes are, so the server merges the two index
+// scans (changes_history, revisions_authors) in revision order instead of
+// probing the revisions' index once a change.
 std::string historyByNameText(bool ofKey) {
-    return "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
-           "machines m LEFT JOIN (changes c JOIN revisions r ON r.machine_id = c.machine_id AND "
-           "r.revision = c.revision) ON c.machine_id = m.id AND c.revision > m.revision - ?2" +
-           (ofKey ? std::string(kOfKey) : std::string()) + " WHERE m.name = ?1" +
-           std::string(kOrder);
+    return "WITH m AS (SELECT id, revision FROM machines WHERE name = ?1) "
+           "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
+           "changes c JOIN revisions r ON r.revision = c.revision "
+           "WHERE c.machine_id = (SELECT id FROM m) AND r.machine_id = (SELECT id FROM m) "
+           "AND c.revision > (SELECT revision FROM m) - ?2 "
+           "AND r.revision > (SELECT revision FROM m) - ?2" +
+           (ofKey ? std::string(kOfKey) : std::string()) + std::string(kOrder);
 }
 
 std::vector<ChangeRow> historyRows(sql::Query& q) {
@@ -156,15 +161,9 @@ std::optional<std::vector<ChangeRow>> SqlStore::historyNamed(std::string_view na
                                                : std::int64_t{std::numeric_limits<int>::max()});
     if (key)
         q.bind(3, *key);
-    if (!q.step())
+    std::vector<ChangeRow> out = historyRows(q);
+    if (out.empty()) // no such machine, or none of its changes: the caller asks again
         return std::nullopt;
-    std::vector<ChangeRow> out;
-    if (!q.isNull(0))
-        do
-            out.push_back(ChangeRow{q.i32(0), q.text(1), q.text(2), q.text(3), q.text(4),
-                                    q.text(5), q.optText(6), q.optText(7)});
-        while (q.step());
-    q.reset();
     return out;
 }
 

@@ -130,7 +130,9 @@ public:
                                            const std::optional<std::string>& key) = 0;
     // The same of the machine `name`, of its last `limitRevisions` revisions
     // (<= 0: all), read in one snapshot of its own (PostgreSQL: one statement).
-    // nullopt when no machine has that name.
+    // nullopt when no machine has that name, or (PostgreSQL, which cannot
+    // tell the two apart in its one statement) when it has no such changes:
+    // the caller then reads them by the machine's row.
     virtual std::optional<std::vector<ChangeRow>> historyNamed(
         std::string_view name, int limitRevisions, const std::optional<std::string>& key) = 0;
     virtual std::vector<ProgramRow> programVersions(std::int64_t id, int number) = 0; // newest first

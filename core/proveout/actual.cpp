@@ -30,42 +30,17 @@ namespace {
 namespace bg = boost::geometry;
 using geo::Multi;
 using geo::polygonOf;
-
-// The thickness of a region taken out: the smaller side of its box.
-double thickness(const Multi& m) {
-    geo::Box b;
-    bg::envelope(m, b);
-    return std::min(b.max_corner().x() - b.min_corner().x(),
-                    b.max_corner().y() - b.min_corner().y());
-}
-// Where the tip was when the tool first met the material on its way from a
-// to b (the sweep grows with the way: halving finds the moment).
-stock::PointZR entry(const Multi& material, stock::PointZR a, stock::PointZR b,
-                     const stock::Tool& tool) {
-    const auto at = [&](double t) {
-        return stock::PointZR{a.z + (b.z - a.z) * t, a.r + (b.r - a.r) * t};
-    };
-    const auto meets = [&](double t) {
-        Multi inter;
-        bg::intersection(material, polygonOf(stock::toolSweep(a, at(t), tool)), inter);
-        return bg::area(inter) > 1e-9;
-    };
-    if (meets(0))
-        return a;
-    double lo = 0, hi = 1;
-    for (int i = 0; i < 30 && hi - lo > 1e-6; ++i) {
-        const double mid = (lo + hi) / 2;
-        (meets(mid) ? hi : lo) = mid;
-    }
-    return at(hi);
-}
-
 } // namespace
 
 CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool& tool,
                    const ChuckGeometry& chuck, std::span<const toolpath::ActualSample> path,
                    bool diameterX, const SpindleTimeline& spindle) {
     CutResult res;
+    // The material twice, for two jobs: the prove-out's columns decide where
+    // the tool meets it (rules.h, the same as for a program's path); the
+    // polygons keep the part's exact shape for the drawing (the grade's over-
+    // and under-cut) and what each stretch took out of it.
+    LatheMaterial material(blank); // in the part's Z: the path's Z − blankZMm
     Multi stock = geo::translated(geo::multiOf(stock::Stock(blank)), blankZMm);
     const ChuckBoxes chuckParts = chuckBoxes(chuck, blank.outerDiameterMm);
     const Box toolBox{0, tool.widthMm, 0, tool.heightMm};
@@ -104,6 +79,28 @@ CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool
                                           b.program, b.line, b.n, {where.z, where.r}, depth, 0});
             }
         }
+        // The material: first where the tool meets it, then the cut.
+        const PointZR ma{pa.z - blankZMm, pa.r}, mb{pb.z - blankZMm, pb.r};
+        if (material.mayTouch(toolBox.sweptBounds(ma, mb))) {
+            Sweep sweep(toolBox, ma, mb);
+            const auto at = [&](double t) {
+                return PointZR{ma.z + (mb.z - ma.z) * t, ma.r + (mb.r - ma.r) * t};
+            };
+            std::optional<PointZR> entry;
+            if (material.touches(sweep))
+                entry = at(firstMeeting(material, toolBox, ma, at));
+            const LatheMaterial::Cut cut = material.cut(sweep, mb.z - ma.z, mb.r - ma.r);
+            if (entry && cut.penetrationMm() >= kPenetrationMm) {
+                const Motion motion = b.manual ? Motion::Manual
+                                      : b.kind == toolpath::SegmentKind::Rapid ? Motion::Rapid
+                                                                                 : Motion::Feed;
+                const bool turning = motion == Motion::Feed && spindle.runningThrough(a.tMs, b.tMs);
+                if (const std::optional<Rule> rule = materialRule(motion, turning, false);
+                    rule && !already(*rule, b))
+                    res.collisions.push_back({*rule, ruleId(*rule), b.program, b.line, b.n,
+                                              {entry->z + blankZMm, entry->r}, cut.penetrationMm(), cut.areaMm2});
+            }
+        }
         if (stock.empty())
             continue;
         const stock::Ring sweepRing = stock::toolSweep(pa, pb, tool);
@@ -118,17 +115,6 @@ CutResult cutAlong(const stock::Blank& blank, double blankZMm, const stock::Tool
         const double area = bg::area(taken);
         if (area <= 1e-9)
             continue;
-        const double thick = thickness(taken);
-        if (thick >= kPenetrationMm) {
-            const Motion motion = b.manual ? Motion::Manual
-                                  : b.kind == toolpath::SegmentKind::Rapid ? Motion::Rapid
-                                                                             : Motion::Feed;
-            const bool turning = motion == Motion::Feed && spindle.runningThrough(a.tMs, b.tMs);
-            if (const std::optional<Rule> rule = materialRule(motion, turning, false);
-                rule && !already(*rule, b))
-                res.collisions.push_back({*rule, ruleId(*rule), b.program, b.line, b.n,
-                                          entry(stock, pa, pb, tool), thick, area});
-        }
         Multi left;
         bg::difference(stock, sweep, left);
         stock = std::move(left);

@@ -7,12 +7,15 @@
 // operator — and the frame). Each stretch between two samples sweeps the
 // tool (stock::toolSweep: the convex hull of the tool's rectangle at both
 // ends) and takes what it covers out of the stock, in the order the tool
-// moved. A stretch that takes material out breaks the rule materialRule()
-// names for its motion (a rapid, the operator's move, a feed with the spindle
-// stopped) when the region it takes out is at least kPenetrationMm thick in
-// both directions: a retract grazing the finished surface within the servo's
-// tolerance breaks none — the actual path lags the programmed one, the
-// preview's path (proveout.h) does not. A stretch whose tool runs into the
+// moved. Where the tool meets the material is decided as for a program's
+// path (rules.h firstMeeting, over the prove-out's 0.01 mm columns of
+// material.h); the polygons keep the part's exact shape for the drawing. A
+// stretch that meets the material breaks the rule materialRule() names for
+// its motion (a rapid, the operator's move, a feed with the spindle stopped)
+// when it goes at least kPenetrationMm into it (Cut::penetrationMm): a retract
+// grazing the finished surface within the servo's tolerance breaks none — the
+// actual path lags the programmed one, the preview's path (proveout.h) does
+// not. A stretch whose tool runs into the
 // chuck (chuckContact) breaks tool-into-chuck. Each collision names its rule,
 // its frame (program, line, N) and where the tip was.
 #pragma once

@@ -143,8 +143,10 @@ bool LatheMaterial::touches(Sweep& s) const {
 LatheMaterial::Cut LatheMaterial::cut(Sweep& s, double dz, double dr) {
     Cut c;
     const double len = std::hypot(dz, dr);
-    const double nz = len > 0 ? -dr / len : 0, nr = len > 0 ? dz / len : 0;
+    const double nz = len > 0 ? -dr / len : 0, nr = len > 0 ? dz / len : 0; // across
+    const double uz = nr, ur = -nz;                                          // along
     double pMin = std::numeric_limits<double>::infinity(), pMax = -pMin;
+    double qMin = pMin, qMax = -pMin;
     std::size_t changedBlock = static_cast<std::size_t>(-1);
     visit(s, [&](std::size_t i, double u0, double u1) {
         double& in = in_[i];
@@ -157,6 +159,8 @@ LatheMaterial::Cut LatheMaterial::cut(Sweep& s, double dz, double dr) {
         const double zc = columnZ(i);
         pMin = std::min(pMin, std::min(zc * nz + a * nr, zc * nz + b * nr));
         pMax = std::max(pMax, std::max(zc * nz + a * nr, zc * nz + b * nr));
+        qMin = std::min(qMin, std::min(zc * uz + a * ur, zc * uz + b * ur));
+        qMax = std::max(qMax, std::max(zc * uz + a * ur, zc * uz + b * ur));
         if (u0 <= in + kEpsMm)
             in = std::max(in, u1);
         else if (u1 >= out - kEpsMm)
@@ -175,8 +179,10 @@ LatheMaterial::Cut LatheMaterial::cut(Sweep& s, double dz, double dr) {
     });
     if (changedBlock != static_cast<std::size_t>(-1))
         refreshBlock(changedBlock);
-    if (c.any && len > 0)
+    if (c.any && len > 0) {
         c.depthMm = pMax - pMin + std::fabs(nz) * dz_;
+        c.alongMm = qMax - qMin + std::fabs(uz) * dz_;
+    }
     return c;
 }
 

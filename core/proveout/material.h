@@ -42,8 +42,12 @@ public:
     // (for the depth of cut, measured across it). Returns what was cut.
     struct Cut {
         bool any = false;       // material was taken away
-        double depthMm = 0;     // the cut's extent across the motion
+        double depthMm = 0;     // the cut's extent across the motion (a pass's depth of cut)
+        double alongMm = 0;     // its extent along the motion
         double areaMm2 = 0;     // of the half profile
+        // How far the body went into the material: the smaller extent (a
+        // rapid along a diameter: across; a plunge: along).
+        double penetrationMm() const { return depthMm < alongMm ? depthMm : alongMm; }
     };
     Cut cut(Sweep& s, double dz, double dr);
 

@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -212,7 +211,11 @@ private:
         report(rule, i,
                jaws ? (tool ? "tool-into-chuck.jaws" : "turret-into-chuck.jaws")
                     : (tool ? "tool-into-chuck.body" : "turret-into-chuck.body"),
-               [&](double t) { return Sweep(box, a, at(t)).overlaps(o, kContactEpsMm); }, lerp, true);
+               [&] {
+                   return firstContact(
+                       [&](double t) { return Sweep(box, a, at(t)).overlaps(o, kContactEpsMm); });
+               },
+               lerp, true);
     }
 
     template <class TipP, class Lerp>
@@ -226,10 +229,6 @@ private:
             materialRule(rapid ? Motion::Rapid : Motion::Feed, turning(g_.cuttingSpindle), false);
         // (Found before the cut takes the material away.)
         if (rule && material_->touches(sw)) {
-            const auto hit = [&](double t) {
-                Sweep part(body, a, tipP(lerp(t)));
-                return material_->touches(part);
-            };
             // The dogleg: the straight line between the frame's end points
             // misses the material, the corner does not.
             bool dogleg = false;
@@ -244,12 +243,14 @@ private:
             const std::string_view text = *rule == Rule::RapidIntoMaterial
                                               ? (dogleg ? "rapid-into-material.dogleg" : "rapid-into-material")
                                               : ruleId(*rule);
-            report(*rule, i, text, hit, lerp, true, axis);
+            report(*rule, i, text,
+                   [&] { return firstMeeting(*material_, body, a, [&](double t) { return tipP(lerp(t)); }); },
+                   lerp, true, axis);
         }
         const LatheMaterial::Cut cut = material_->cut(sw, b.z - a.z, b.r - a.r);
         res_.removedMm2 += cut.areaMm2;
         if (!rapid && tool_.maxDepthMm > 0 && cut.depthMm > tool_.maxDepthMm + 1e-3) {
-            Finding* f = report(Rule::CutTooDeep, i, "cut-too-deep", nullptr, lerp, false);
+            Finding* f = report(Rule::CutTooDeep, i, "cut-too-deep", [] { return 0.0; }, lerp, false);
             if (f && f->args.empty())
                 f->args = {mm(cut.depthMm), std::to_string(tool_.station), mm(tool_.maxDepthMm)};
         }
@@ -297,16 +298,17 @@ private:
         if (const std::optional<Rule> rule =
                 materialRule(rapid ? Motion::Rapid : Motion::Feed, turning(g_.cuttingSpindle), true))
             report(*rule, i, *rule == Rule::RapidIntoMaterial ? "rapid-into-material.ring" : ruleId(*rule),
-                   hit, lerp, true);
+                   [&] { return firstContact(hit); }, lerp, true);
         boreR_ = std::max(boreR_, rMax);
         (void)s;
     }
 
     // Records a finding of rule `r` at segment i (or counts it again for its
-    // frame); `hit(t)` finds the place along the leg.
-    template <class Lerp>
-    Finding* report(Rule r, std::size_t i, std::string_view text,
-                    const std::function<bool(double)>& hit, const Lerp& lerp, bool placeArgs,
+    // frame); `where()` finds the place along the leg (t), asked only for a
+    // new finding.
+    template <class Where, class Lerp>
+    Finding* report(Rule r, std::size_t i, std::string_view text, const Where& where, const Lerp& lerp,
+                    bool placeArgs,
                     const std::string& axis = {}) {
         const toolpath::Segment& s = path_.segments[i];
         const auto key = std::make_tuple(static_cast<int>(r), s.program, s.line);
@@ -328,8 +330,7 @@ private:
         f.n = s.n;
         f.segment = static_cast<std::uint32_t>(i);
         f.text = text;
-        const double t = hit ? firstContact(hit) : 0.0;
-        f.at = lerp(t);
+        f.at = lerp(where());
         if (placeArgs) {
             f.args = {mm(f.at.x), mm(f.at.z)};
             if (r == Rule::ToolIntoChuck || r == Rule::TurretIntoChuck)

@@ -3,11 +3,14 @@
 // preview's path) and the grade of a student's attempt (core/training, over
 // the path the simulated machine actually took). Each rule has a stable id
 // (docs/proveout.md); which rule a motion into the part's material breaks,
-// what the chuck is made of and when a moving body runs into it are decided
-// here, so that a program and its attempt are judged by the same rules.
+// where a moving body first meets that material (the 0.01 mm columns of
+// material.h), what the chuck is made of and when a moving body runs into it
+// are decided here, so that a program and its attempt are judged by the same
+// rules and the same material.
 #pragma once
 
 #include "proveout/geometry.h"
+#include "proveout/material.h"
 #include "proveout/sweep.h"
 
 #include <cstdint>
@@ -73,6 +76,18 @@ template <class Hit> double firstContact(const Hit& hit) {
             lo = mid;
     }
     return hi;
+}
+
+// Where a body moving straight from `a` to `b`, whose sweep touches the
+// part's material (LatheMaterial::touches, read before the motion cuts it),
+// first meets it: t of the way (`at(t)`: where the moving point is then).
+// The one contact rule for the preview's path and the path a machine took.
+template <class At>
+double firstMeeting(const LatheMaterial& m, const Box& body, PointZR a, const At& at) {
+    return firstContact([&](double t) {
+        Sweep part(body, a, at(t));
+        return m.touches(part);
+    });
 }
 
 } // namespace k528::proveout

@@ -3,23 +3,24 @@
 #include <cmath>
 
 #include "axis/homing.h"
-#include "rig.h"
+#include "rig/axis_loop.h"
 
 using namespace k528::axis;
-using rig::Rig;
+namespace testrig = k528::testrig;
+using testrig::AxisLoop;
 
 namespace {
 
 // A grinder Z with the deceleration cam under the slide between cam0 and cam1
 // (mm of slide travel) and zero marks at motor positions phase + k·5 mm.
 struct HomingRig {
-    Rig r;
+    AxisLoop r;
     HomingCycle cycle;
     double cam0, cam1;
 
     HomingRig(const Constants& k, double phaseMm, double camFrom, double camTo, double startMm = 100)
         : r(k, [&] {
-              auto m = rig::grinderZMechanics();
+              auto m = testrig::grinderZMechanics();
               m.zeroMarkPhaseMm = phaseMm;
               m.startSlideMm = startMm;
               return m;
@@ -39,7 +40,7 @@ struct HomingRig {
 };
 
 Constants grinder(const std::function<void(Constants&)>& f = {}) {
-    Constants k = rig::grinderZ();
+    Constants k = testrig::grinderZ();
     if (f)
         f(k);
     return k;
@@ -57,7 +58,7 @@ private slots:
         QVERIFY(h.run());
         QVERIFY(h.cycle.done());
         QCOMPARE(h.cycle.alarm(), 0);
-        QVERIFY(std::fabs(h.r.servo.actual() - Rig::mm(190.0)) <= 10);
+        QVERIFY(std::fabs(h.r.servo.actual() - AxisLoop::mm(190.0)) <= 10);
         QVERIFY(std::fabs(h.r.mech.slideMm() - 185.7) < 0.01);
         // R247: from leaving the cam (185.0) to the mark (185.7).
         QVERIFY(std::abs(h.cycle.distanceDisc() - 700) <= 1);
@@ -110,7 +111,7 @@ private slots:
         QVERIFY(h.run());
         QVERIFY(h.cycle.done());
         QVERIFY(std::fabs(h.r.mech.slideMm() - 190.2) < 0.01);    // mark 190.7, then -0.5
-        QVERIFY(std::fabs(h.r.servo.actual() - Rig::mm(190.0)) <= 10);
+        QVERIFY(std::fabs(h.r.servo.actual() - AxisLoop::mm(190.0)) <= 10);
         QVERIFY(std::abs(h.cycle.distanceDisc() - 5700) <= 1);
     }
 

@@ -2,14 +2,15 @@
 
 #include <cmath>
 
-#include "rig.h"
+#include "rig/axis_loop.h"
 
 using namespace k528::axis;
-using rig::Rig;
+namespace testrig = k528::testrig;
+using testrig::AxisLoop;
 
 namespace {
 Constants with(const std::function<void(Constants&)>& f) {
-    Constants k = rig::grinderZ();
+    Constants k = testrig::grinderZ();
     f(k);
     return k;
 }
@@ -36,7 +37,7 @@ private slots:
     // again gives the motor the same speed as a code set the first time, in
     // the DAC's range and beyond it (drift and a reversed wiring included).
     void mechanicsSpeedOfACodeKept() {
-        MechanicsSettings set = rig::grinderZMechanics();
+        MechanicsSettings set = testrig::grinderZMechanics();
         set.driftVolts = 0.013;
         for (bool inverted : {false, true}) {
             set.dacWiredInverted = inverted;
@@ -57,7 +58,7 @@ private slots:
         }
     }
     void mechanicsQuietUntilTheEncoderChanges() {
-        Mechanics m(rig::grinderZMechanics());
+        Mechanics m(testrig::grinderZMechanics());
         const auto rest = [&] {
             for (int t = 0; t < 3; ++t)
                 m.tick(1.0);
@@ -112,29 +113,29 @@ private slots:
 
     void actualFollowsTheEncoderThroughLN() {
         // At power-on an incremental encoder gives no absolute position: 0.
-        Servo s(AxisId::Z, rig::grinderZ());
-        Mechanics m(rig::grinderZMechanics());
+        Servo s(AxisId::Z, testrig::grinderZ());
+        Mechanics m(testrig::grinderZMechanics());
         ServoInputs in;
         in.encoderCount = m.encoderCount();
         s.tick(in, 1.0);
         QCOMPARE(s.actual(), 0.0);
-        Rig r;
-        QCOMPARE(r.servo.actual(), Rig::mm(100));
+        AxisLoop r;
+        QCOMPARE(r.servo.actual(), AxisLoop::mm(100));
         r.servo.setActualValue(0);
         QCOMPARE(r.servo.actual(), 0.0);
         r.mech.pushSlide(1.0);
         r.in.regulatorEnable = false;
         r.step();
-        QCOMPARE(r.servo.actual(), Rig::mm(1.0));
+        QCOMPARE(r.servo.actual(), AxisLoop::mm(1.0));
         QCOMPARE(r.servo.pulsesLastTick(), std::int64_t(2000));
     }
 
     // The manual's loop: DAC = V·Ks·3/128 + E·Ke/256 gives 2.5 V at 5 m/min
     // on the grinder's Z (Ks = 131 for 5 V at 10 m/min).
     void feedForwardGivesUmaxAtVmax() {
-        Rig r;
+        AxisLoop r;
         const double v = r.servo.constants().mmPerMinToInternalPerMs(5000);
-        QVERIFY(r.servo.moveTo(Rig::mm(300), v));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(300), v));
         r.runUntil([&] { return r.servo.commandVelocity() == v; }, 10000);
         r.run(200);
         const double volts = r.servo.dac() / 204.8;
@@ -145,9 +146,9 @@ private slots:
     }
 
     void moveEndsInsideToleranceWithoutFault() {
-        Rig r;
+        AxisLoop r;
         const double v = r.servo.constants().mmPerMinToInternalPerMs(1000);
-        QVERIFY(r.servo.moveTo(Rig::mm(200), v));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(200), v));
         const auto ms = r.runUntil([&] { return r.servo.inPosition(); }, 20000);
         // 100 mm at 1000 mm/min with УСКОРЕНИЕ 1 = 4445: the setpoint takes
         // 6 s + v/a = 6.096 s; the loop (Ke = 13, i.e. Kv = 1 (m/min)/mm, a
@@ -162,10 +163,10 @@ private slots:
     }
 
     void followingErrorOnMiswiredDrive() {
-        auto m = rig::grinderZMechanics();
+        auto m = testrig::grinderZMechanics();
         m.dacWiredInverted = true; // the axis runs away from the setpoint
-        Rig r(rig::grinderZ(), m);
-        QVERIFY(r.servo.moveTo(Rig::mm(150), r.servo.constants().mmPerMinToInternalPerMs(1000)));
+        AxisLoop r(testrig::grinderZ(), m);
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(150), r.servo.constants().mmPerMinToInternalPerMs(1000)));
         const auto ms = r.runUntil([&] { return r.servo.fault() != Fault::None; }, 5000);
         QVERIFY(ms > 0);
         QCOMPARE(r.servo.fault(), Fault::FollowingError);
@@ -173,27 +174,27 @@ private slots:
         QVERIFY(!r.servo.loopClosed());
         QCOMPARE(r.servo.dac(), 0);
         // ЗНАК ЦАП corrects the wiring.
-        Rig fixed(with([](Constants& k) { k.dacInvert = true; }), m);
-        QVERIFY(fixed.servo.moveTo(Rig::mm(150), fixed.servo.constants().mmPerMinToInternalPerMs(1000)));
+        AxisLoop fixed(with([](Constants& k) { k.dacInvert = true; }), m);
+        QVERIFY(fixed.servo.moveTo(AxisLoop::mm(150), fixed.servo.constants().mmPerMinToInternalPerMs(1000)));
         QVERIFY(fixed.runUntil([&] { return fixed.servo.inPosition(); }, 10000) > 0);
         QCOMPARE(fixed.servo.fault(), Fault::None);
     }
 
     void dacLimitAlarm() {
-        Rig r(with([](Constants& k) { k.dacLimit = 300; }));
-        QVERIFY(r.servo.moveTo(Rig::mm(300), r.servo.constants().mmPerMinToInternalPerMs(5000)));
+        AxisLoop r(with([](Constants& k) { k.dacLimit = 300; }));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(300), r.servo.constants().mmPerMinToInternalPerMs(5000)));
         QVERIFY(r.runUntil([&] { return r.servo.fault() != Fault::None; }, 10000) > 0);
         QCOMPARE(r.servo.fault(), Fault::DacLimit);
         QCOMPARE(faultMessage(Fault::DacLimit, AxisId::Z), 22);
     }
 
     void dacIsClampedToMaxDac() {
-        Rig r(with([](Constants& k) {
+        AxisLoop r(with([](Constants& k) {
             k.dacMax = 400;
             k.dacLimit = 0;
             k.maxErrorInternal = 0;
         }));
-        QVERIFY(r.servo.moveTo(Rig::mm(300), r.servo.constants().mmPerMinToInternalPerMs(5000)));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(300), r.servo.constants().mmPerMinToInternalPerMs(5000)));
         int maxDac = 0;
         for (int i = 0; i < 3000; ++i) {
             r.step();
@@ -204,7 +205,7 @@ private slots:
     }
 
     void standstillCheckAfterDelay() {
-        Rig r;
+        AxisLoop r;
         r.run(1000); // past ЗАДЕРЖКА КП = 800 ms
         QVERIFY(r.servo.inPosition());
         // A push the loop cannot correct at once: 0.1 mm = 200 units > ДОПУСК КП 20.
@@ -217,8 +218,8 @@ private slots:
 
     void standstillCheckWaitsForDelayAfterMove() {
         // ЗАДЕРЖКА КП = 800 ms: a residual error right after a move is tolerated.
-        Rig r(with([](Constants& k) { k.clampToleranceInternal = 1; }));
-        QVERIFY(r.servo.moveTo(Rig::mm(110), r.servo.constants().mmPerMinToInternalPerMs(3000)));
+        AxisLoop r(with([](Constants& k) { k.clampToleranceInternal = 1; }));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(110), r.servo.constants().mmPerMinToInternalPerMs(3000)));
         r.runUntil([&] { return r.servo.target() == r.servo.setpoint(); }, 10000);
         r.run(700);
         QCOMPARE(r.servo.fault(), Fault::None);
@@ -226,26 +227,26 @@ private slots:
 
     void encoderStallWhileMoving() {
         // T контроля ДОС = 2500 ms; МАКС.ОШИБКА off so that the stall check speaks.
-        Rig r(with([](Constants& k) {
+        AxisLoop r(with([](Constants& k) {
             k.maxErrorInternal = 0;
             k.dacLimit = 0;
         }));
         r.mech.setEncoderFrozen(true);
-        QVERIFY(r.servo.moveTo(Rig::mm(300), r.servo.constants().mmPerMinToInternalPerMs(500)));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(300), r.servo.constants().mmPerMinToInternalPerMs(500)));
         const auto ms = r.runUntil([&] { return r.servo.fault() != Fault::None; }, 10000);
         QCOMPARE(r.servo.fault(), Fault::EncoderStall);
         QVERIFY2(ms >= 2500 && ms <= 2510, qPrintable(QString::number(ms)));
     }
 
     void noStallAlarmWhenEncoderCounts() {
-        Rig r(with([](Constants& k) { k.maxErrorInternal = 0; }));
-        QVERIFY(r.servo.moveTo(Rig::mm(110), r.servo.constants().mmPerMinToInternalPerMs(500)));
+        AxisLoop r(with([](Constants& k) { k.maxErrorInternal = 0; }));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(110), r.servo.constants().mmPerMinToInternalPerMs(500)));
         r.run(4000);
         QCOMPARE(r.servo.fault(), Fault::None);
     }
 
     void channelBreak() {
-        Rig r;
+        AxisLoop r;
         r.mech.setChannelBroken(2, true);
         r.step();
         QCOMPARE(r.servo.fault(), Fault::Channel2Break);
@@ -253,17 +254,17 @@ private slots:
     }
 
     void moveWithoutRegulatorEnable() {
-        Rig r;
+        AxisLoop r;
         r.in.regulatorEnable = false;
         r.run(500); // past ЗАДЕРЖКА БР = 400 ms
         QVERIFY(!r.servo.regulatorOn());
-        QVERIFY(!r.servo.moveTo(Rig::mm(110), 10));
+        QVERIFY(!r.servo.moveTo(AxisLoop::mm(110), 10));
         QCOMPARE(r.servo.fault(), Fault::RegulatorNotEnabled);
         QCOMPARE(faultMessage(r.servo.fault(), AxisId::Z), 17);
     }
 
     void regulatorBlocksAfterDelayAndWatchesClamp() {
-        Rig r;
+        AxisLoop r;
         r.run(10);
         r.in.regulatorEnable = false;
         r.run(399);
@@ -280,8 +281,8 @@ private slots:
     }
 
     void emergencyStopOpensTheLoopAndFollows() {
-        Rig r;
-        QVERIFY(r.servo.moveTo(Rig::mm(300), r.servo.constants().mmPerMinToInternalPerMs(5000)));
+        AxisLoop r;
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(300), r.servo.constants().mmPerMinToInternalPerMs(5000)));
         r.run(1500);
         r.in.emergencyStop = true;
         r.step();
@@ -298,7 +299,7 @@ private slots:
     }
 
     void driveNotReady() {
-        Rig r;
+        AxisLoop r;
         r.in.driveReady = false;
         r.step();
         QCOMPARE(r.servo.fault(), Fault::DriveNotReady);
@@ -306,7 +307,7 @@ private slots:
     }
 
     void faultResetClosesTheLoopAgain() {
-        Rig r;
+        AxisLoop r;
         r.mech.setChannelBroken(1, true);
         r.step();
         QCOMPARE(r.servo.fault(), Fault::Channel1Break);
@@ -316,24 +317,24 @@ private slots:
         r.step();
         QCOMPARE(r.servo.fault(), Fault::None);
         QVERIFY(r.servo.loopClosed());
-        QVERIFY(r.servo.moveTo(Rig::mm(101), r.servo.constants().mmPerMinToInternalPerMs(1000)));
+        QVERIFY(r.servo.moveTo(AxisLoop::mm(101), r.servo.constants().mmPerMinToInternalPerMs(1000)));
         QVERIFY(r.runUntil([&] { return r.servo.inPosition(); }, 5000) > 0);
     }
 
     void backlashCompensation() {
         // 20 µm of play between screw and slide; КОМП.ЛЮФТА = 20 discretes.
-        auto m = rig::grinderZMechanics();
+        auto m = testrig::grinderZMechanics();
         m.backlashMm = 0.020;
         const auto approach = [&](bool compensate, double via) {
-            Rig r(with([&](Constants& k) { k.backlashDisc = compensate ? 20 : 0; }), m);
+            AxisLoop r(with([&](Constants& k) { k.backlashDisc = compensate ? 20 : 0; }), m);
             const double v = r.servo.constants().mmPerMinToInternalPerMs(20);
-            r.servo.moveTo(Rig::mm(via), v);
+            r.servo.moveTo(AxisLoop::mm(via), v);
             r.runUntil([&] { return r.servo.inPosition(); }, 120000);
             r.run(1000);
-            r.servo.moveTo(Rig::mm(100.5), v);
+            r.servo.moveTo(AxisLoop::mm(100.5), v);
             r.runUntil([&] { return r.servo.inPosition(); }, 120000);
             r.run(1000);
-            return std::pair(r.mech.slideMm() - 100.5, r.servo.actual() - Rig::mm(100.5));
+            return std::pair(r.mech.slideMm() - 100.5, r.servo.actual() - AxisLoop::mm(100.5));
         };
         const auto [fromBelowPlain, a1] = approach(false, 100.2);
         const auto [fromAbovePlain, a2] = approach(false, 100.8);
@@ -350,11 +351,11 @@ private slots:
     }
 
     void driftCompensation() {
-        auto m = rig::grinderZMechanics();
+        auto m = testrig::grinderZMechanics();
         m.driftVolts = 10 / 204.8; // exactly 10 DAC units of offset
-        Rig plain(rig::grinderZ(), m);
+        AxisLoop plain(testrig::grinderZ(), m);
         plain.run(3000);
-        Rig comp(with([](Constants& k) { k.driftCompDac = -10; }), m);
+        AxisLoop comp(with([](Constants& k) { k.driftCompDac = -10; }), m);
         comp.run(3000);
         // Without compensation the loop holds the axis with a standing error
         // of drift/(Ke/256) = 10·256/13 ≈ 197 units: the standstill check trips.
@@ -364,8 +365,8 @@ private slots:
     }
 
     void overrideZeroHoldsTheAxis() {
-        Rig r;
-        r.servo.moveTo(Rig::mm(200), r.servo.constants().mmPerMinToInternalPerMs(2000));
+        AxisLoop r;
+        r.servo.moveTo(AxisLoop::mm(200), r.servo.constants().mmPerMinToInternalPerMs(2000));
         r.run(1000);
         r.servo.setOverride(0);
         r.run(1000);
@@ -378,20 +379,20 @@ private slots:
     }
 
     void feedHoldInputHoldsTheAxis() {
-        Rig r;
-        r.servo.moveTo(Rig::mm(200), r.servo.constants().mmPerMinToInternalPerMs(2000));
+        AxisLoop r;
+        r.servo.moveTo(AxisLoop::mm(200), r.servo.constants().mmPerMinToInternalPerMs(2000));
         r.run(1000);
         r.in.feedEnable = false;
         r.run(1000);
         QCOMPARE(r.servo.commandVelocity(), 0.0);
         r.in.feedEnable = true;
         QVERIFY(r.runUntil([&] { return r.servo.inPosition(); }, 10000) > 0);
-        QVERIFY(std::fabs(r.servo.actual() - Rig::mm(200)) <= 10);
+        QVERIFY(std::fabs(r.servo.actual() - AxisLoop::mm(200)) <= 10);
     }
 
     void jogStopsAtTheGivenLimit() {
-        Rig r;
-        const double limit = Rig::mm(120);
+        AxisLoop r;
+        const double limit = AxisLoop::mm(120);
         QVERIFY(r.servo.jog(+1, r.servo.constants().mmPerMinToInternalPerMs(3000), &limit));
         QVERIFY(r.runUntil([&] { return r.servo.inPosition(); }, 20000) > 0);
         QVERIFY(std::fabs(r.servo.actual() - limit) <= 10);
@@ -399,31 +400,31 @@ private slots:
     }
 
     void remainingPathOfAJog() {
-        Rig r;
+        AxisLoop r;
         QVERIFY(r.servo.jog(+1, r.servo.constants().mmPerMinToInternalPerMs(1000)));
         r.run(100);
         QCOMPARE(r.servo.remaining(), 0.0); // an open-ended jog has no rest of path
-        const double limit = Rig::mm(150);
+        const double limit = AxisLoop::mm(150);
         QVERIFY(r.servo.jog(+1, r.servo.constants().mmPerMinToInternalPerMs(1000), &limit));
         r.run(100);
-        QVERIFY(r.servo.remaining() > Rig::mm(40));
+        QVERIFY(r.servo.remaining() > AxisLoop::mm(40));
         QCOMPARE(r.servo.remaining(), r.servo.target() - r.servo.setpoint());
     }
 
     void invalidRatioIsAFault() {
-        Rig r(with([](Constants& k) { k.encoderN = 0; }));
+        AxisLoop r(with([](Constants& k) { k.encoderN = 0; }));
         QCOMPARE(r.servo.fault(), Fault::RatioError);
         QCOMPARE(faultMessage(r.servo.fault(), AxisId::Z), 29);
         r.servo.resetFault();
         QCOMPARE(r.servo.fault(), Fault::RatioError); // until the constants are fixed
-        r.servo.setConstants(rig::grinderZ());
+        r.servo.setConstants(testrig::grinderZ());
         QCOMPARE(r.servo.fault(), Fault::None);
     }
 
     void deterministic() {
         const auto run = [] {
-            Rig r;
-            r.servo.moveTo(Rig::mm(187.25), r.servo.constants().mmPerMinToInternalPerMs(4321));
+            AxisLoop r;
+            r.servo.moveTo(AxisLoop::mm(187.25), r.servo.constants().mmPerMinToInternalPerMs(4321));
             double sum = 0;
             for (int i = 0; i < 8000; ++i) {
                 r.step();

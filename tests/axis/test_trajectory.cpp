@@ -4,9 +4,11 @@
 
 #include "axis/constants.h"
 #include "axis/trajectory.h"
-#include "rig.h"
+#include "rig/axis_loop.h"
 
 using namespace k528::axis;
+namespace testrig = k528::testrig;
+using testrig::AxisLoop;
 
 class TestTrajectory : public QObject {
     Q_OBJECT
@@ -14,12 +16,12 @@ private slots:
     // 100 mm at 1000 mm/min with УСКОРЕНИЕ 1 = 2000 takes 6.21 s
     // (trapezoid: L/v + v/a = 6 s + 0.2133 s).
     void trapezoidTimeMatchesFormula() {
-        const Constants k = rig::grinderZ();
+        const Constants k = testrig::grinderZ();
         const double a = k.accelToInternalPerMs2(2000);
         const double v = k.mmPerMinToInternalPerMs(1000);
         Trajectory t;
         t.reset(0);
-        t.moveTo(rig::Rig::mm(100), v, a);
+        t.moveTo(AxisLoop::mm(100), v, a);
         int ms = 0;
         double maxV = 0, maxA = 0, prevV = 0, maxPos = 0, lastDv = 0;
         while (!t.atTarget() && ms < 20000) {
@@ -37,8 +39,8 @@ private slots:
         QVERIFY(maxV <= v * (1 + 1e-12));
         QVERIFY(maxA <= a * (1 + 1e-9));
         QVERIFY(lastDv <= 2 * a);
-        QCOMPARE(maxPos, rig::Rig::mm(100)); // no overshoot
-        QCOMPARE(t.position(), rig::Rig::mm(100));
+        QCOMPARE(maxPos, AxisLoop::mm(100)); // no overshoot
+        QCOMPARE(t.position(), AxisLoop::mm(100));
     }
 
     void triangularProfileForShortMoves() {

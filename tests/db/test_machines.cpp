@@ -14,6 +14,7 @@
 #include "random_machine.h"
 
 #include <QtTest>
+#include <sqlite3.h>
 #include <cstdlib>
 #include <random>
 
@@ -110,6 +111,59 @@ void mutate(MachineProfile& p, std::mt19937& rng) {
     }
 }
 
+// Runs `sql` on the database as a program other than K528 Studio would
+// (psql, or SQLite's library): "" or the error.
+std::string runSql(const db::Location& where, const std::string& sql) {
+    if (onPostgres()) {
+        QProcess p;
+        p.start("psql", {"-XAtq", "-v", "ON_ERROR_STOP=1", QString::fromStdString(where.uri()),
+                         "-c", QString::fromStdString(sql)});
+        if (!p.waitForFinished(60000) || p.exitCode() != 0)
+            return "psql failed: " + p.readAllStandardError().toStdString();
+        return {};
+    }
+    sqlite3* db = nullptr;
+    if (sqlite3_open(where.file().c_str(), &db) != SQLITE_OK)
+        return "cannot open";
+    char* err = nullptr;
+    std::string out;
+    if (sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK)
+        out = err ? err : "error";
+    sqlite3_free(err);
+    sqlite3_close(db);
+    return out;
+}
+
+// The names of the indexes on changes and revisions, sorted, space-separated:
+// SQLite's own (sqlite_schema: not the automatic ones of the keys), or
+// PostgreSQL's (pg_indexes, through psql).
+std::string indexesOf(const db::Location& where) {
+    std::string out;
+    if (onPostgres()) {
+        QProcess p;
+        p.start("psql", {"-XAtq", QString::fromStdString(where.uri()), "-c",
+                         "SELECT string_agg(indexname, ' ' ORDER BY indexname) FROM pg_indexes "
+                         "WHERE tablename IN ('changes', 'revisions')"});
+        if (!p.waitForFinished(60000) || p.exitCode() != 0)
+            return "psql failed: " + p.readAllStandardError().toStdString();
+        out = p.readAllStandardOutput().trimmed().toStdString();
+        return out;
+    }
+    sqlite3* db = nullptr;
+    if (sqlite3_open_v2(where.file().c_str(), &db, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK)
+        return "cannot open";
+    sqlite3_stmt* st = nullptr;
+    sqlite3_prepare_v2(db,
+                       "SELECT name FROM sqlite_schema WHERE type = 'index' AND tbl_name IN "
+                       "('changes', 'revisions') AND sql IS NOT NULL ORDER BY name",
+                       -1, &st, nullptr);
+    while (st && sqlite3_step(st) == SQLITE_ROW)
+        out += (out.empty() ? "" : " ") + std::string(reinterpret_cast<const char*>(sqlite3_column_text(st, 0)));
+    sqlite3_finalize(st);
+    sqlite3_close(db);
+    return out;
+}
+
 } // namespace
 
 class TestMachines : public QObject {
@@ -166,6 +220,11 @@ private slots:
         QCOMPARE(*hs[0].change.before, std::string("1"));
         QCOMPARE(*hs[0].change.after, std::string("1.5"));
 
+        // No such item: none; no such machine: said (PostgreSQL answers both
+        // with no rows of its one statement and asks again).
+        QVERIFY(d.history("grinder-205", std::string("R299")).empty());
+        QVERIFY_THROWS_EXCEPTION(db::Error, d.history("no-such-machine", std::string("C022")));
+
         const auto revs = d.revisions("grinder-205");
         QCOMPARE(revs.size(), std::size_t(3));
         QCOMPARE(revs[0].revision, 3);
@@ -188,6 +247,90 @@ private slots:
         QCOMPARE(audit[0].machine, std::string("grinder-205"));
         QCOMPARE(audit[1].author, std::string("Иванов И.И."));
         QCOMPARE(d.audit(0, "training-lathe").size(), std::size_t(1)); // its seeding
+    }
+
+    // A database of schema version 5 opened by this program: upgraded to the
+    // history's index (changes_history; on PostgreSQL also revisions_authors),
+    // every revision and change kept, the history read as before.
+    void historyIndexFromVersion5() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "v5.db");
+        std::vector<db::HistoryEntry> before;
+        std::size_t lastTwo = 0;
+        {
+            auto o = testOptions();
+            o.migrations = db::schemaMigrations().subspan(0, 5);
+            db::Database d = db::Database::open(where, o);
+            QCOMPARE(d.schemaVersion(), 5);
+            for (int i = 0; i < 30; ++i) {
+                db::Edit e;
+                e.c[22] = 1000 + i;
+                e.r[i] = i;
+                d.applyEdit("grinder-205", e, by(i % 2 ? "Петров" : "Иванов"));
+            }
+            before = d.history("grinder-205", std::string("C022"));
+            QCOMPARE(before.size(), std::size_t(31));
+            lastTwo = d.history("grinder-205", std::nullopt, 2).size();
+            QCOMPARE(indexesOf(where), std::string(onPostgres() ? "changes_by_key changes_pkey revisions_pkey"
+                                                                : "changes_by_key"));
+        }
+        db::Database d = db::Database::open(where, testOptions());
+        QCOMPARE(d.openReport().fromVersion, 5);
+        QCOMPARE(d.schemaVersion(), 6);
+        QCOMPARE(d.audit(1).front().detail, std::string("schema version 5 -> 6"));
+        QCOMPARE(indexesOf(where), std::string(onPostgres()
+                                                   ? "changes_history changes_pkey revisions_authors revisions_pkey"
+                                                   : "changes_history"));
+        QCOMPARE(d.revisions("grinder-205").size(), std::size_t(31));
+        const auto after = d.history("grinder-205", std::string("C022"));
+        QCOMPARE(after.size(), before.size());
+        for (std::size_t i = 0; i < after.size(); ++i) {
+            QCOMPARE(after[i].revision, before[i].revision);
+            QCOMPARE(after[i].author, before[i].author);
+            QCOMPARE(after[i].at, before[i].at);
+            QCOMPARE(after[i].change.after, before[i].change.after);
+        }
+        QCOMPARE(after[0].revision, 31);
+        QVERIFY(lastTwo >= 2);
+        QCOMPARE(d.history("grinder-205", std::nullopt, 2).size(), lastTwo);
+        QCOMPARE(d.loadMachine("grinder-205", 12).cValue(22), std::int64_t(1010));
+        QVERIFY(d.checkIntegrity().empty());
+        // The author is a name: one too long for the authors' index is refused whole.
+        db::Edit e;
+        e.c[22] = 1500;
+        QVERIFY_THROWS_EXCEPTION(db::Error, d.applyEdit("grinder-205", e, by(std::string(300, 'a'))));
+        QCOMPARE(d.machine("grinder-205")->revision, 31);
+    }
+
+    // A program's text changed outside K528 Studio (SQL) no longer matches
+    // its SHA-256: loading says so, on either backend (PostgreSQL compares
+    // them on the server, over the text's UTF-8 bytes as the client hashes).
+    void alteredProgramIsDetected() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "altered.db");
+        { db::Database d = db::Database::open(where, testOptions()); }
+        // Written consistently (text and digest): loaded as it is, Cyrillic too.
+        const std::string text = "% Проверка\nN1 G01 X10\n";
+        QCOMPARE(runSql(where, "UPDATE program_revisions SET text = '" + text + "', sha256 = '" +
+                                   db::sha256Hex(text) + "' WHERE number = 11"),
+                 std::string());
+        {
+            db::Database d = db::Database::open(where, testOptions());
+            QCOMPARE(d.loadMachine("grinder-205").programs.at(11), text);
+        }
+        QCOMPARE(runSql(where, "UPDATE program_revisions SET text = replace(text, 'X10', 'X11') "
+                               "WHERE number = 11"),
+                 std::string());
+        db::Database d = db::Database::open(where, testOptions());
+        try {
+            d.loadMachine("grinder-205");
+            QFAIL("an altered program was loaded");
+        } catch (const db::Error& e) {
+            QCOMPARE(e.kind(), db::ErrorKind::Corrupt);
+            QVERIFY2(std::string(e.what()).find("program L11") != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find("SHA-256") != std::string::npos, e.what());
+        }
+        QVERIFY(d.loadMachine("training-lathe") == profile::builtin("training-lathe"));
     }
 
     void equalProfileWritesNothing() {

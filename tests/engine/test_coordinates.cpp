@@ -2,16 +2,17 @@
 // correction − handwheel offset (R224..R231); G50..G53 leave one out in a
 // program, the PLC's out-of-cycle bits outside one; Gx92 and «установка
 // фактического значения» recompute the zero offset.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 namespace {
 // Components of Z: dressing 100, correction 200, zero offset 1000, DRF 50 (discretes).
-void presetZ(Rig& r) {
+void presetZ(EngineRig& r) {
     QVERIFY(r.ctl->setR(225, 100).ok());
     QVERIFY(r.ctl->setR(227, 200).ok());
     QVERIFY(r.ctl->setR(229, 1000).ok());
@@ -23,7 +24,7 @@ class TestCoordinates : public QObject {
     Q_OBJECT
 private slots:
     void components() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         presetZ(r);
         r.tick();
         QCOMPARE(r.current(Z), r.machine(Z) - 1350);
@@ -40,7 +41,7 @@ private slots:
         const std::pair<int, std::int64_t> cases[] = {
             {50, 1300}, {51, 1150}, {52, 1250}, {53, 350}, {54, 1350}};
         for (const auto& [g, offset] : cases) {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             presetZ(r);
             r.load("%L1\nN1 G" + std::to_string(g) + " G1 Z-10 FZ2000\nN2 M0\n");
             r.start(1);
@@ -52,7 +53,7 @@ private slots:
     }
     // Outside a program the PLC's «Вне цикла отмена ...» bits do the same.
     void plcOutOfCycleBits() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         presetZ(r);
         r.tick();
         const std::int64_t m = r.machine(Z);
@@ -75,7 +76,7 @@ private slots:
     }
     // Gx92: the current coordinate becomes the value; the zero offset absorbs it.
     void setPosition() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         presetZ(r);
         r.load("%L1\nN1 G1 Z-10 FZ2000\nN2 G292 Z5\nN3 G1 Z0\n");
         r.start(1);
@@ -93,7 +94,7 @@ private slots:
     // offset R228 moves by exactly the commanded difference (diameter
     // discretes), and X then counts from the new zero.
     void setPositionOnDiameter() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G0 X50\nN2 G192 X12.324\nN3 G0 X0\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -104,7 +105,7 @@ private slots:
     }
     // ПРЕДУСТАНОВКИ: «При установке текущего значения ... производится перерасчет «Смещения нуля»».
     void setCurrentValue() {
-        Rig r("training-lathe");
+        EngineRig r("training-lathe");
         QVERIFY(r.home());
         QVERIFY(!r.ctl->setCurrentValue(X, 50000).ok()); // not in ПБТ
         QVERIFY(r.ctl->selectMode(Mode::SetActual).ok());
@@ -119,7 +120,7 @@ private slots:
     }
     // Presets from the K923 (R224..R231 are writable, R232..R262 are not).
     void panelWrites() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.ctl->setR(228, -5000).ok());
         QCOMPARE(r.ctl->r(256), -5000); // R256/R257: the panel's write
         QCOMPARE(r.ctl->r(257), (1 << 16) | 228);

@@ -4,23 +4,24 @@
 // call stack names program, frame and the R158 level; skipped frames are
 // never stops; R-parameters can be set while the gate holds the program.
 #include "engine/debug_gate.h"
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 using k528::engine::DebugGate;
 
 namespace {
 
 // «Пуск» with a fresh edge (the previous press is over).
-void pressStart(Rig& r) {
+void pressStart(EngineRig& r) {
     r.until([&] { return !r.bit(z::Start); }, 1000);
     r.m->pressStart();
 }
 
-bool untilHeld(Rig& r, std::int64_t maxMs = 10000) {
+bool untilHeld(EngineRig& r, std::int64_t maxMs = 10000) {
     return r.until(
         [&] {
             const ProgramState s = r.ctl->state();
@@ -36,7 +37,7 @@ class TestDebugGate : public QObject {
     Q_OBJECT
 private slots:
     void breakpointStopsBeforeItsFrame() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         DebugGate gate;
         r.ctl->setDebugGate(&gate);
         // Lines: 1 %L1, 2 N1, 3 N2, 4 N3, 5 N4.
@@ -72,7 +73,7 @@ private slots:
     }
 
     void setRRefusedWhileExecuting() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         DebugGate gate;
         r.ctl->setDebugGate(&gate);
         r.load("%L1\nN1 G1 Z-20 FZ500\nN2 M30\n");
@@ -82,7 +83,7 @@ private slots:
     }
 
     void breakpointInASubprogramAndTheCallStack() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         DebugGate gate;
         r.ctl->setDebugGate(&gate);
         // Lines: 1 %L1, 2 N1, 3 N2 L5, 4 N3, 5 N4, 6 %L5, 7 N1, 8 N2.
@@ -118,7 +119,7 @@ private slots:
     }
 
     void singleFrameStepsOneFramePerStart() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         DebugGate gate;
         gate.setSingleFrame(true);
         r.ctl->setDebugGate(&gate);
@@ -155,7 +156,7 @@ private slots:
         // Lines: 1 %L1, 2 N1, 3 N2, 4 N3 (the loop's test), 5 N4.
         const std::string loop = "%L1\nN1 R1=3\nN2 R1=R1-1\nN3 IF R1>0 GOTO 2\nN4 M30\n";
         {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             DebugGate gate;
             r.ctl->setDebugGate(&gate);
             r.load(loop);
@@ -172,7 +173,7 @@ private slots:
             QCOMPARE(gate.stops(), std::int64_t{1});
         }
         {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             DebugGate gate;
             r.ctl->setDebugGate(&gate);
             r.load(loop);
@@ -197,7 +198,7 @@ private slots:
     }
 
     void resetWhileHeldThenStartStopsAgain() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         DebugGate gate;
         r.ctl->setDebugGate(&gate);
         r.load("%L1\nN1 R1=R1+1\nN2 R2=6\nN3 M30\n");
@@ -220,7 +221,7 @@ private slots:
         const std::string text = "%L1\nN1 R1=1\nN2 G1 Z-5 FZ2000\nN3 R2=R1+1\nN4 M30\n";
         std::int64_t frames[2] = {0, 0}, ms[2] = {0, 0};
         for (int withGate = 0; withGate < 2; ++withGate) {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             DebugGate gate; // no breakpoint, no single frame
             if (withGate)
                 r.ctl->setDebugGate(&gate);

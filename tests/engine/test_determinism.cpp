@@ -2,14 +2,15 @@
 // identical end states, and identical interface words and R-parameters at
 // every tick.
 #include "engine/run.h"
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
 #include <algorithm>
 #include <vector>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 
 namespace {
 std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
@@ -22,7 +23,7 @@ std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
 // settled tick, the routine tick, program control's): the trace must be the
 // same as with them.
 std::uint64_t traceHash(const char* text, bool fullTicks = false) {
-    Rig r;
+    EngineRig r;
     std::uint64_t h = 0;
     if (!r.home())
         return 0;
@@ -80,7 +81,7 @@ private slots:
     // wheel and the exclusion between moves.
     void routineTickBothPathsAgree() {
         for (const char* program : {kProgram, kOutputsProgram}) {
-            Rig r;
+            EngineRig r;
             r.ctl->setCheckShortcuts(true);
             QVERIFY(r.home());
             r.load(program);
@@ -93,7 +94,7 @@ private slots:
     // The routine tick: while a program moves the axes and nothing else
     // changes, a changed word or an operator function acts in the next tick.
     void routineTick() {
-        Rig r;
+        EngineRig r;
         QVERIFY(r.home());
         r.load("%L1\nN1 G0 X60 Z5\nN2 G1 X20 Z-60 FX100 FZ100\nN3 M30\n");
         r.start(1);
@@ -151,7 +152,7 @@ private slots:
     // changed word ends the shortcut at once, and what a full tick computes
     // then equals what the settled ticks left.
     void settledTick() {
-        Rig r;
+        EngineRig r;
         QVERIFY(r.home());
         QVERIFY(r.ctl->selectProgram(1).ok());
         r.advance(2000); // at rest: the shortcut is on

@@ -1,10 +1,11 @@
 // The reference-point cycle as manual 2.6.4 prints it, run in ПБТ from the
 // PLC's direction signals; the «X»/«Z» flags; alarms 40, 41, 42.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestHoming : public QObject {
@@ -14,7 +15,7 @@ private slots:
     // F СТАРТ БТ; 3) on the cam F ОТКЛ.БТ; 4) off the cam to the zero mark;
     // 5) СМЕЩЕНИЕ БТ, the point gets ЗНАЧЕНИЕ БТ; 6) the «X» flag.
     void sequence() {
-        Rig r;
+        EngineRig r;
         QVERIFY(!r.x().referenced);
         QVERIFY(!r.bit(z::referenced(X)));
         QVERIFY(r.ctl->selectMode(Mode::Reference).ok());
@@ -53,7 +54,7 @@ private slots:
     }
     // «ПБТ В "-"» = 1: «ПЕРЕМЕЩЕНИЕ В -» starts it (grinder 205, axis X).
     void negativeDirection() {
-        Rig r("grinder-205");
+        EngineRig r("grinder-205");
         QVERIFY(r.ctl->selectMode(Mode::Reference).ok());
         r.m->setJog(X, 1);
         r.advance(100);
@@ -71,7 +72,7 @@ private slots:
     }
     // 40 «Нет съезда с конечника "0"»: the cam is longer than S конечника БТ.
     void alarm40() {
-        Rig r("training-lathe", [](auto& p) { p.simulation.set("x.decel_cam_mm", "25"); });
+        EngineRig r("training-lathe", [](auto& p) { p.simulation.set("x.decel_cam_mm", "25"); });
         QVERIFY(!r.home());
         QVERIFY(r.hasAlarm(40));
         QVERIFY(!r.x().referenced);
@@ -80,7 +81,7 @@ private slots:
     }
     // 41 «Нет "0"-метки»: the search ends before the mark.
     void alarm41() {
-        Rig r;
+        EngineRig r;
         QVERIFY(r.ctl->selectMode(Mode::MachineData).ok());
         QVERIFY(r.ctl->setC(38, 1000).ok()); // S поиска 0-метки: 1 mm of diameter = 0.5 mm of slide
         QVERIFY(!r.home());
@@ -89,7 +90,7 @@ private slots:
     }
     // 42: «Попытка запустить УП без привязки к базовой точке».
     void alarm42() {
-        Rig r;
+        EngineRig r;
         r.load("%L1\nN1 G1 Z-1 FZ100\n");
         r.start(1);
         QCOMPARE(r.ctl->state(), ProgramState::Alarm);
@@ -105,7 +106,7 @@ private slots:
     }
     // АВТ.БЕЗ ПБТ = 1: the program starts without homing; the cycle is blocked.
     void autoWithoutHoming() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.bit(z::referenced(X)));
         QVERIFY(!r.x().referenced);
         QVERIFY(r.ctl->selectMode(Mode::Reference).ok());
@@ -120,7 +121,7 @@ private slots:
     }
     // Leaving ПБТ (or an emergency stop) ends the cycle; the axis is not referenced.
     void interrupted() {
-        Rig r;
+        EngineRig r;
         QVERIFY(r.ctl->selectMode(Mode::Reference).ok());
         r.m->setJog(X, 1);
         r.tick();

@@ -1,11 +1,12 @@
 // The interpreter: built-in M functions, subprograms and nesting, jumps,
 // the skip flag, computations (46), run-time checks, messages, the bound on
 // frames without motion.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestInterpreter : public QObject {
@@ -13,7 +14,7 @@ class TestInterpreter : public QObject {
 private slots:
     // «M00: останов в кадре. Выполнение УП приостанавливается до появления сигнала «ПУСК»».
     void m00WaitsForStart() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-5 FZ2000 M0\nN2 Z-10\n");
         r.start(1);
         QVERIFY(r.untilState(ProgramState::M0, 5000));
@@ -32,7 +33,7 @@ private slots:
     // «M02: конец программы. По сигналу от ПЛК «ПУСК» УП будет выполняться с начала.»
     void m02EndsAndRestarts() {
         for (const char* end : {"M2", "M30"}) {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             r.load(std::string("%L1\nN1 R1=R1+1\nN2 ") + end + "\nN3 R1=100\n");
             r.start(1);
             QVERIFY(r.runToEnd());
@@ -48,7 +49,7 @@ private slots:
     // M02 inside a subprogram ends the program: R158 back to 0, «Пуск»
     // starts the main program from its top.
     void m02InSubprogram() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=R1+1\nN2 L2\nN3 R3=1\n%L2\nN1 L3\n%L3\nN1 M2\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -63,7 +64,7 @@ private slots:
     }
     // The end of the main program without M02 is its end too.
     void endOfText() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=7\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -72,7 +73,7 @@ private slots:
     }
     // «M17: конец подпрограммы ... УП продолжается с кадра, следующего за кадром с вызовом.»
     void subprogramReturn() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=1\nN2 L2\nN3 R3=R1+R2\n%L2\nN1 R2=5\nN2 M0\nN3 M17\nN4 R2=99\n");
         r.start(1);
         QVERIFY(r.untilState(ProgramState::M0, 5000));
@@ -89,7 +90,7 @@ private slots:
     }
     // The end of a subprogram without M17 returns as M17 does.
     void subprogramEndReturns() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 L2\nN2 L2\nN3 R3=R2\n%L2\nN1 R2=R2+10\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -98,7 +99,7 @@ private slots:
     }
     // Nesting deeper than the limit (profile `nesting_limit`, 8): message 48.
     void nestingLimit() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 L2\n%L2\nN1 R1=R1+1\nN2 L2\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -108,7 +109,7 @@ private slots:
         QVERIFY(a);
         QCOMPARE(a->program, 2);
         QCOMPARE(a->line, 5);
-        Rig q("training-lathe", [](auto& p) {
+        EngineRig q("training-lathe", [](auto& p) {
             noHoming(p);
             p.simulation.set("nesting_limit", "2");
         });
@@ -124,7 +125,7 @@ private slots:
     }
     // 45 «L отсутствует»: starting or calling a program that does not exist.
     void missingProgram() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.start(42);
         QCOMPARE(r.ctl->state(), ProgramState::Alarm);
         QVERIFY(r.hasAlarm(45));
@@ -141,7 +142,7 @@ private slots:
     }
     // «/ – кадр не будет обрабатываться».
     void skipFlag() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=1\n/N2 R1=2\n/N3 G1 Z-50 FZ100\nN4 R2=R1\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -150,7 +151,7 @@ private slots:
         QCOMPARE(r.ctl->framesExecuted(), 2);
     }
     void jumps() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=5\nN2 R2=R2+3\nN3 R1=R1-1\nN4 IF R1>0 GOTO 2\nN5 GOTO 7\nN6 R2=0\nN7 "
                "R3=1\n");
         r.start(1);
@@ -165,7 +166,7 @@ private slots:
     // Frames without motion run within a tick, at most kFramesPerTick a tick:
     // an endless loop keeps running, the engine stays responsive.
     void loopWithoutMotionIsBounded() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=R1+1\nN2 GOTO 1\n");
         r.start(1);
         const std::int64_t f0 = r.ctl->framesExecuted();
@@ -179,7 +180,7 @@ private slots:
     }
     // R arithmetic: int32, truncation toward zero, 46 on overflow or /0.
     void arithmetic() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=-7\nN2 R2=R1/2\nN3 R3=R1*R1\nN4 R4=2147483647\nN5 R5=R4-R1\n");
         r.start(1);
         QVERIFY(r.runToEnd());
@@ -192,14 +193,14 @@ private slots:
         QCOMPARE(r.ctl->r(5), 0); // not written
         for (const char* bad : {"R1=R2/0", "R1=-2147483647\nR1=R1-2",
                                 "R1=-2147483647\nR1=R1-1\nR2=-1\nR3=R1/R2", "R1=65536\nR2=R1*R1"}) {
-            Rig q("training-lathe", noHoming);
+            EngineRig q("training-lathe", noHoming);
             q.load(std::string("%L1\n") + bad + "\n");
             q.start(1);
             QVERIFY(q.runToEnd());
             QVERIFY2(q.hasAlarm(46), bad);
         }
         // A read-only parameter has no message of its own: 46.
-        Rig q("training-lathe", noHoming);
+        EngineRig q("training-lathe", noHoming);
         q.load("%L1\nR240=5\n");
         q.start(1);
         QVERIFY(q.runToEnd());
@@ -220,7 +221,7 @@ private slots:
             {"%L1\nN1 L2\n%L2\nN1 G1 Z-1 FZ100\n", 52},
         };
         for (const auto& [text, msg] : cases) {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             const program::ParseResult p = program::parse(text);
             program::ProgramStore* store = r.ctl->editablePrograms();
             for (const auto& prog : p.store.programs())
@@ -237,7 +238,7 @@ private slots:
         const std::pair<const char*, int> cases[] = {{"%L1\nN1 R1=1\nN2 R1=2\nN2 R1=3\n", 4},
                                                      {"%L1\nN1 L2\n%L2\nN5 R1=1\nN5 M17\n", 5}};
         for (const auto& [text, line] : cases) {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             const program::ParseResult p = program::parse(text);
             program::ProgramStore* store = r.ctl->editablePrograms();
             for (const auto& prog : p.store.programs())
@@ -253,7 +254,7 @@ private slots:
     // 43/44: the wheel diameter R207 outside R205..R206 blocks the program,
     // not the manual cycles (Z2005.11/.12 show it).
     void wheelDiameter() {
-        Rig r("grinder-205", noHoming);
+        EngineRig r("grinder-205", noHoming);
         QVERIFY(r.ctl->setR(207, 21000).ok()); // > R206 = 20.500
         r.load("%L1\nN1 R1=1\n%L11\nN1 R2=1\n");
         r.start(1);
@@ -275,7 +276,7 @@ private slots:
     }
     // «#: номер технологического сообщения ... остается на экране до кадра с новым номером».
     void technologicalMessage() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 #2 G4 X0.1\nN2 R1=2\nN3 G4 X0.1\nN4 M0\nN5 #5 "
                "M0\n%MESSAGES\n#2=ТОРЦОВКА\n#5=ОТВОД\n");
         r.start(1);
@@ -289,7 +290,7 @@ private slots:
     }
     // «Сброс» aborts without continuation; modal defaults return (G01, G54, G55, G90).
     void resetRestoresDefaults() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G91 G0 G53\nN2 G256 M0\n");
         r.start(1);
         QVERIFY(r.untilState(ProgramState::M0, 2000));

@@ -1,18 +1,19 @@
 // РУЧНОЙ: jog from the machine's buttons (F ОБЫЧНАЯ / F УСКОРЕН.), handwheels
 // with multiplier and sign, DRF, the manual cycles of Z1001, подналадка and
 // компенсация правки.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestManual : public QObject {
     Q_OBJECT
 private slots:
     void jogSpeeds() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setJog(Z, -1);
         r.advance(1000);
         QCOMPARE(r.z().feedDiscPerMin, 2000000); // F ОБЫЧНАЯ Z: 200000 ×10 disc/min
@@ -30,7 +31,7 @@ private slots:
     // One pulse = one discrete of motion, × МНОЖИТ. with the multiplier bit;
     // ЗНАК М1 inverts; the handwheel is wired to the channel of C105/C106.
     void handwheel() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setHandwheel(X, 1, true);
         r.m->turnHandwheel(1, 50);
         r.advance(300);
@@ -50,7 +51,7 @@ private slots:
         r.m->setJog(X, 0);
         r.advance(300);
         const std::int64_t x = r.current(X);
-        Rig q("training-lathe", [](auto& p) {
+        EngineRig q("training-lathe", [](auto& p) {
             noHoming(p);
             p.setC(11, 1); // ЗНАК М1
         });
@@ -63,7 +64,7 @@ private slots:
     // DRF: the handwheel moves the axis into the handwheel offset R230; the
     // current coordinate stays (unless G50 / Z1006.4 leave the offset out).
     void drf() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setHandwheel(X, 1, true, true, true);
         const std::int64_t c0 = r.current(X);
         r.m->turnHandwheel(1, 20); // 200 discretes of motion = 400 on the diameter
@@ -88,7 +89,7 @@ private slots:
     // Z1001.0 (cycle 1, C143 = L90) interrupts a running program; Z2001.8
     // while it runs. Cycles 2..8 only in РУЧНОЙ.
     void manualCycles() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L90\nN1 G1 Z-3 FZ1000\nN2 M2\n%L91\nN1 R7=1\n%L1\nN1 G1 Z-50 FZ500\n");
         r.start(1);
         r.advance(500);
@@ -118,7 +119,7 @@ private slots:
     }
     // ВКЛ.ПОДНАЛ. = 1: Z1006.1/.2 add ±R218 to the correction R226.
     void adjustment() {
-        Rig r("training-lathe", [](auto& p) {
+        EngineRig r("training-lathe", [](auto& p) {
             noHoming(p);
             p.setC(13, 1);
         });
@@ -136,14 +137,14 @@ private slots:
         r.tick();
         QCOMPARE(r.ctl->r(226), 15);
         QCOMPARE(r.current(X), c0 - 15);   // no motion, the coordinate shifts
-        Rig q("training-lathe", noHoming); // C13 = 0: no effect
+        EngineRig q("training-lathe", noHoming); // C13 = 0: no effect
         q.w().setBit(z::adjustPlus(X), true);
         q.tick();
         QCOMPARE(q.ctl->r(226), 0);
     }
     // Z1007.0/.1: «выполнить компенсацию черновой/чистовой правки» (R210/R211) into R224.
     void dressingCompensation() {
-        Rig r("grinder-205", noHoming);
+        EngineRig r("grinder-205", noHoming);
         QCOMPARE(r.ctl->r(224), 0);
         r.w().setBit(z::roughDressComp(X), true);
         r.tick();

@@ -2,11 +2,12 @@
 // «Если в предыдущем режиме выполнялось перемещение, оно прекращается»;
 // the power-on test (2.6.1) and editing C-parameters.
 #include "engine/self_test.h"
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 using k528::engine::Refusal;
 
@@ -15,7 +16,7 @@ class TestModes : public QObject {
 private slots:
     // «После включения питания устанавливается ручной режим работы».
     void powerOnInManual() {
-        Rig r;
+        EngineRig r;
         QCOMPARE(r.ctl->mode(), Mode::Manual);
         QCOMPARE(r.ctl->state(), ProgramState::Idle);
         QVERIFY(r.bit(z::Ready));
@@ -25,7 +26,7 @@ private slots:
     }
     // The PLC's mode code imposes a mode: F1..F7 are refused; code 0 gives it back.
     void plcModeCode() {
-        Rig r;
+        EngineRig r;
         r.m->setModeCode(3);
         r.tick();
         QCOMPARE(r.ctl->mode(), Mode::Reference);
@@ -46,7 +47,7 @@ private slots:
     }
     // Leaving РУЧНОЙ stops a jog; the buttons do nothing in АВТОМАТ.
     void leavingManualStopsJog() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setJog(Z, -1);
         r.advance(500);
         QVERIFY(r.z().moving);
@@ -61,7 +62,7 @@ private slots:
     // Leaving АВТОМАТ interrupts the program and stops its motion; back in
     // АВТОМАТ, «Пуск» continues to the same target.
     void leavingAutoInterrupts() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-30 FZ1000\nN2 R1=1\n");
         r.start(1);
         r.advance(800);
@@ -91,7 +92,7 @@ private slots:
     }
     // Operator functions belong to their modes.
     void functionsOfModes() {
-        Rig r;
+        EngineRig r;
         QCOMPARE(r.ctl->setC(22, 5000).refusal, Refusal::WrongMode);
         QCOMPARE(r.ctl->setCurrentValue(X, 0).refusal, Refusal::WrongMode);
         QCOMPARE(r.ctl->clearRParameters().refusal, Refusal::WrongMode);
@@ -112,7 +113,7 @@ private slots:
     }
     // A new C-parameter acts at once: F УСК.АВТ. of Z halved doubles a rapid's time.
     void constantsRefreshServo() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.ctl->selectMode(Mode::MachineData).ok());
         QVERIFY(r.ctl->setC(94, 300000).ok()); // 3000 mm/min
         r.load("%L1\nN1 G0 Z-30\n");
@@ -125,7 +126,7 @@ private slots:
     // program store (31); a fixed constant clears its message once acknowledged.
     void selfTest() {
         {
-            Rig r("training-lathe", [](auto& p) { p.c[19] = 0; }); // L ИМП.ДОС out of 1..32767
+            EngineRig r("training-lathe", [](auto& p) { p.c[19] = 0; }); // L ИМП.ДОС out of 1..32767
             QVERIFY(r.hasAlarm(13));
             QVERIFY(!r.hasAlarm(29));
             QVERIFY(r.bit(z::Ready)); // a machine fault, not a system one
@@ -135,24 +136,24 @@ private slots:
             QVERIFY(!r.hasAlarm(13));
         }
         {
-            Rig r("training-lathe", [](auto& p) { p.c[69] = 1; }); // both encoders on one channel
+            EngineRig r("training-lathe", [](auto& p) { p.c[69] = 1; }); // both encoders on one channel
             QVERIFY(r.hasAlarm(37));
         }
         {
-            Rig r("training-lathe", [](auto& p) { p.c[70] = 1; });
+            EngineRig r("training-lathe", [](auto& p) { p.c[70] = 1; });
             QVERIFY(r.hasAlarm(38));
         }
         {
-            Rig r("training-lathe", [](auto& p) { p.c[106] = 2; });
+            EngineRig r("training-lathe", [](auto& p) { p.c[106] = 2; });
             QVERIFY(r.hasAlarm(39));
         }
         {
-            Rig r("training-lathe", [](auto& p) { p.c[4] = 1; }); // two discretes on X
+            EngineRig r("training-lathe", [](auto& p) { p.c[4] = 1; }); // two discretes on X
             QVERIFY(r.hasAlarm(15));
             QVERIFY(!r.bit(z::Ready));
         }
         {
-            Rig r("training-lathe", [](auto& p) { p.programs[5] = "%L5\nN1 G1 X=\n"; });
+            EngineRig r("training-lathe", [](auto& p) { p.programs[5] = "%L5\nN1 G1 X=\n"; });
             QVERIFY(r.hasAlarm(31));
             QVERIFY(!r.bit(z::Ready));
         }
@@ -162,7 +163,7 @@ private slots:
     }
     // System messages from the machine side's module health.
     void moduleFaults() {
-        Rig r;
+        EngineRig r;
         r.ctl->io().dacModuleOk = false;
         r.tick();
         QVERIFY(r.hasAlarm(3));

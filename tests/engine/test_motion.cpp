@@ -1,14 +1,15 @@
 // Motion frames: G00/G01 with per-axis feeds, trapezoid times, G91, feed
 // limits, override, Gx56, dwell, «Стоп»/«Пуск», data hold.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 namespace {
-double seconds(const Rig& r) {
+double seconds(const EngineRig& r) {
     return static_cast<double>(r.ctl->programEndMs() - r.ctl->programStartMs()) / 1000.0;
 }
 } // namespace
@@ -18,7 +19,7 @@ class TestMotion : public QObject {
 private slots:
     // 100 mm at 1000 mm/min with УСКОРЕНИЕ 1 = 2000 takes 6 s + v/a = 6.213 s.
     void trapezoidTime() {
-        Rig r("training-lathe", [](auto& p) {
+        EngineRig r("training-lathe", [](auto& p) {
             noHoming(p);
             p.setC(74, 2000);
         });
@@ -37,7 +38,7 @@ private slots:
     // G00 moves each axis at its F УСК.АВТ. (C94 = 6000 mm/min, C74 = 10240):
     // 60 mm take 0.6 s + v/a = 0.6 + 100/400 = 0.85 s.
     void rapidUsesAutoMaxFeed() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G0 Z-60\n");
         r.start(1);
         const double t = r.setpointArrivalS(Z, 10000);
@@ -47,7 +48,7 @@ private slots:
     }
     // Feeds above F УСК.АВТ. are limited to it.
     void feedLimitedToAutoMax() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-60 FZ9000\n");
         r.start(1);
         const double t = r.setpointArrivalS(Z, 10000);
@@ -56,7 +57,7 @@ private slots:
     // A positioner, not an interpolator: each axis at its own feed; the
     // frame ends when both are in position.
     void axesIndependent() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 X10 FX100 Z-5 FZ1000\nN2 G1 Z-10\n");
         r.start(1);
         r.advance(1000);
@@ -71,7 +72,7 @@ private slots:
     }
     // G01 on an axis whose feed was never set: 33 (X) / 49 (Z) with the line.
     void feedNeverSet() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L3\nN1 G90\nN2 G1 X10\n");
         r.start(3);
         QVERIFY(r.runToEnd());
@@ -80,14 +81,14 @@ private slots:
         QVERIFY(a);
         QCOMPARE(a->program, 3);
         QCOMPARE(a->line, 3);
-        Rig q("training-lathe", noHoming);
+        EngineRig q("training-lathe", noHoming);
         q.load("%L3\nG1 Z10\n");
         q.start(3);
         QVERIFY(q.runToEnd());
         QVERIFY(q.hasAlarm(49));
     }
     void incremental() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G91 G1 Z-10 FZ2000\nN2 Z-10\nN3 G90 Z-5\n");
         r.start(1);
         r.until([&] { return r.ctl->programView().frameNumber == 3; }, 10000);
@@ -97,7 +98,7 @@ private slots:
     }
     // Override 0 %: the axes stop (Z2000.14) and the frame waits.
     void overrideZero() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-20 FZ1000\n");
         r.m->setOverrideCode(0);
         r.start(1);
@@ -113,7 +114,7 @@ private slots:
     }
     // The override scales the feed; Gx56 takes it off one axis (G55 back).
     void overrideAndG56() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-10 FZ600\n%L2\nN1 G256 G1 Z-20 FZ600\n");
         r.m->setOverrideCode(7); // 50 %
         r.start(1);
@@ -128,7 +129,7 @@ private slots:
     }
     // G04 X1.5: 1.5 s, «Идет выдержка времени» (Z2000.11).
     void dwell() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G4 X1.5\n");
         r.start(1);
         r.advance(500);
@@ -141,7 +142,7 @@ private slots:
     }
     // «Стоп»: feed and data hold (Z2000.9); «Пуск» continues from there.
     void stopAndContinue() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-30 FZ1000\nN2 G1 Z-31\n");
         r.start(1);
         r.advance(600);
@@ -162,7 +163,7 @@ private slots:
     }
     // «Блокировка ввода данных»: the motion goes on, the next frame waits.
     void dataHold() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-10 FZ2000\nN2 Z-20\n");
         r.start(1);
         r.m->setDataHold(true);
@@ -176,7 +177,7 @@ private slots:
     // A diameter axis: X is programmed and shown as the diameter; the slide
     // moves half of it, at half the programmed feed.
     void diameterAxis() {
-        Rig r("training-lathe");
+        EngineRig r("training-lathe");
         QVERIFY(r.home());
         const double slide0 = r.m->slideMm(X);
         r.load("%L1\nN1 G1 X200 FX1000\n");

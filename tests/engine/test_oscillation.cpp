@@ -1,11 +1,12 @@
 // Oscillation (Gx81/Gx80) with the presets of screen УСТ 7 (R192..R199 for Z):
 // strokes while the program goes on, reverse delay, exact reverse, spark-out
 // strokes after Gx80, end point, preset reverse points.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 
 namespace {
 
@@ -19,7 +20,7 @@ struct Watch {
     };
     std::vector<Stop> stops;
     bool resting = false;
-    void step(Rig& r) {
+    void step(EngineRig& r) {
         const auto& s = r.ctl->servo(Z);
         const bool rest = s.commandVelocity() == 0.0;
         if (rest && !resting)
@@ -30,7 +31,7 @@ struct Watch {
             stops.back().error = s.followingError();
         resting = rest;
     }
-    void run(Rig& r, std::int64_t ms) {
+    void run(EngineRig& r, std::int64_t ms) {
         for (std::int64_t i = 0; i < ms; ++i) {
             r.tick();
             step(r);
@@ -47,7 +48,7 @@ private slots:
     // точкой текущего положения и точкой с координатой на 30.5 мм меньше»;
     // the program goes on; G280 stops it and waits.
     void strokesWhileProgramGoesOn() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G281 Z-10 FZ3000\nN2 G1 X5 FX100\nN3 G280\nN4 R1=1\n");
         r.start(1);
         Watch w;
@@ -72,7 +73,7 @@ private slots:
     // strokes, then the axis stops; the G280 frame waits for it.
     void sparkOut() {
         for (int spark : {0, 2, 3}) {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             QVERIFY(r.ctl->setR(199, spark).ok());
             r.load("%L1\nN1 G281 Z-10 FZ3000\nN2 G4 X1.1\nN3 G280\nN4 R1=1\n");
             r.start(1);
@@ -95,7 +96,7 @@ private slots:
     void endPoint() {
         for (int end : {1, 2}) {
             for (double dwellS : {0.3, 0.9}) { // G280 while going towards either end
-                Rig r("training-lathe", noHoming);
+                EngineRig r("training-lathe", noHoming);
                 QVERIFY(r.ctl->setR(198, end).ok());
                 r.load("%L1\nN1 G281 Z-10 FZ3000\nN2 G4 X" + std::to_string(dwellS) +
                        "\nN3 G280\n");
@@ -109,7 +110,7 @@ private slots:
     }
     // ЗАДЕРЖКА РЕВЕРСА R195 (ms): the axis waits at each reverse point.
     void reverseDelay() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.ctl->setR(195, 250).ok());
         r.load("%L1\nN1 G281 Z-5 FZ3000\nN2 G4 X3\n");
         r.start(1);
@@ -122,7 +123,7 @@ private slots:
     }
     // -/+РЕВЕРС ТОЧНО: reverse only inside ДОПУСК ПОЗ at that point.
     void exactReverse() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.ctl->setR(196, 1).ok());
         QVERIFY(r.ctl->setR(197, 1).ok());
         r.load("%L1\nN1 G281 Z-10 FZ6000\nN2 G4 X4\n");
@@ -136,7 +137,7 @@ private slots:
             QVERIFY(w.stops[i].ms > 20); // it waited for the lag to settle
         }
         // Without: it turns as soon as the setpoint arrives.
-        Rig q("training-lathe", noHoming);
+        EngineRig q("training-lathe", noHoming);
         q.load("%L1\nN1 G281 Z-10 FZ6000\nN2 G4 X4\n");
         q.start(1);
         Watch v;
@@ -147,7 +148,7 @@ private slots:
     // No stroke in the frame: the preset reverse points -MZ / +MZ (R192/R193)
     // at СКОРОСТЬ ОСЦИЛЛЯЦИИ R194.
     void presetPoints() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.ctl->setR(192, -8000).ok());
         QVERIFY(r.ctl->setR(193, -3000).ok());
         QVERIFY(r.ctl->setR(194, 2000000).ok());
@@ -166,7 +167,7 @@ private slots:
     // values on the lathe — at R186, and G180 ends after R191 spark-out
     // strokes at the end point R190.
     void xAxisPresets() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.ctl->setR(184, 10000).ok()); // -MX: X10 (diameter)
         QVERIFY(r.ctl->setR(185, 30000).ok()); // +MX: X30
         QVERIFY(r.ctl->setR(186, 2000000).ok());
@@ -202,7 +203,7 @@ private slots:
     }
     // A mode change stops the oscillation; «Пуск» back in АВТОМАТ resumes it.
     void modeChangePauses() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G281 Z-10 FZ3000\nN2 G4 X5\nN3 G280\n");
         r.start(1);
         r.advance(700);
@@ -223,7 +224,7 @@ private slots:
     }
     // «Сброс» ends the oscillation; so does the end of the program.
     void resetStops() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G281 Z-10 FZ3000\nN2 G4 X5\n");
         r.start(1);
         r.advance(700);

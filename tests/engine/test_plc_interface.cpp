@@ -2,11 +2,12 @@
 // them: the M hand-over on Z2001 with the acknowledgement Z1000.11, the
 // state bits of Z2000/Z2001/Z2005..Z2008, the PLC's messages (latching and
 // acknowledgement), R150, override from the PLC.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestPlcInterface : public QObject {
@@ -15,7 +16,7 @@ private slots:
     // Every M goes to the PLC with the change strobe; the frame waits for the
     // acknowledgement, then moves.
     void mHandshake() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setAutoAcknowledgeM(false);
         r.load("%L1\nN1 M3 M8 G1 Z-5 FZ2000\nN2 M30\n");
         r.start(1);
@@ -49,7 +50,7 @@ private slots:
     }
     // The mode bits Z2000.1..7, «Готовность» Z2000.0, and the program state bits.
     void stateBits() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         QVERIFY(r.bit(z::Ready));
         QVERIFY(r.bit(z::ModeManual));
         const ZBit modes[] = {z::ModeAuto,       z::ModeManual,      z::ModeReference,
@@ -82,7 +83,7 @@ private slots:
     }
     // Z2006/Z2008 mirror the fast inputs; Z2005.1/.2 show manual commands.
     void axisWords() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         // Training lathe: X1 drive ready (level 1), X2/X3 limits (0 = pressed), X4 cam.
         const std::uint16_t fx = r.w().word(2006);
         QCOMPARE(fx & 1u, 1u);     // drive ready
@@ -106,7 +107,7 @@ private slots:
     // the bits that are 0 at that moment; work messages show while present;
     // system messages (Z1307) stay until ESC with C125.
     void plcMessages() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setPlcAlarm(3, true);
         r.m->setPlcAlarm(18, true);
         r.m->setPlcWork(2, true);
@@ -136,7 +137,7 @@ private slots:
         QCOMPARE(r.ctl->plcMessages().alarms, 0u);
     }
     void escWithoutC124DoesNotAcknowledge() {
-        Rig r("training-lathe", [](auto& p) {
+        EngineRig r("training-lathe", [](auto& p) {
             noHoming(p);
             p.setC(124, 0);
         });
@@ -148,7 +149,7 @@ private slots:
         QCOMPARE(r.ctl->plcMessages().alarms, 1u);
     }
     void r150AndPlcOverride() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setR150Bit(true);
         r.tick();
         QCOMPARE(r.ctl->r(150), 1);
@@ -170,7 +171,7 @@ private slots:
     }
     // Z2005.8 «Исходное положение» (R220/R221) and Z2005.10 «Зона безопасности» (R151..R154).
     void initialPositionAndSafetyZone() {
-        Rig r("training-lathe");
+        EngineRig r("training-lathe");
         QVERIFY(r.home());
         QVERIFY(r.ctl->setR(220, 270000).ok()); // the X reference point
         QVERIFY(r.ctl->setR(151, 260000).ok());

@@ -1,11 +1,12 @@
 // Gx36..Gx39: a move ends early on signal 1..4 (PLC bit or fast input) and
 // the rest of the path is erased (R242/R243: the following error then);
 // Gx10: the axis follows the handwheel up to the programmed point.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestSignals : public QObject {
@@ -13,7 +14,7 @@ class TestSignals : public QObject {
 private slots:
     // G236 on the training lathe: signal 1 of Z through the PLC (Z1009.12).
     void eraseOnPlcSignal() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G236 G1 Z-50 FZ1000\nN2 G1 X5 FX1000\n");
         r.start(1);
         r.advance(1500);
@@ -37,7 +38,7 @@ private slots:
     }
     // Without the signal the frame ends at its target; signal 2 does not end G236.
     void noSignalEndsNormally() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G236 G1 Z-10 FZ2000\n");
         r.start(1);
         r.advance(100);
@@ -47,7 +48,7 @@ private slots:
     }
     // A signal already present: the axis does not move at all.
     void signalAlreadyPresent() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G237 G1 Z-10 FZ2000\n");
         r.m->setSignal(Z, 2, true);
         r.start(1);
@@ -57,7 +58,7 @@ private slots:
     // The grinder's gauge on fast inputs X5..X8 (functions 7..10): G136 ends
     // on «касание» (function 7, active at 0), G138 on «чистовой припуск снят».
     void eraseOnFastInput() {
-        Rig r("grinder-205");
+        EngineRig r("grinder-205");
         QVERIFY(r.home());
         r.load("%L1\nN1 G0 X20\nN2 G136 G1 X30 FX300\nN3 G138 G1 X35 FX300\n");
         r.start(1);
@@ -81,7 +82,7 @@ private slots:
     // Gx10: the axis follows handwheel pulses and stops at the programmed
     // point however far the wheel turns; Z2007.9 while the frame is active.
     void handwheelFrame() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setHandwheel(Z, 2, true, true); // wheel 2 on Z, ×МНОЖИТ.М2 = 10
         r.load("%L1\nN1 G210 Z-5\nN2 R1=1\n");
         r.start(1);

@@ -2,12 +2,13 @@
 // switches (10/11/26/27), following error (7/23), standstill (8/24),
 // encoder stall (56/57), emergency stop (9), regulator (1/17), and how
 // messages are acknowledged.
-#include "engine_rig.h"
+#include "rig/engine_rig.h"
 
 #include <QtTest>
 #include <map>
 
-using namespace rig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestSupervision : public QObject {
@@ -15,7 +16,7 @@ class TestSupervision : public QObject {
 private slots:
     // A programmed target beyond a soft limit is refused before the move.
     void softLimitProgram() {
-        Rig r;
+        EngineRig r;
         QVERIFY(r.home());
         const std::int64_t x0 = r.machine(X);
         r.load("%L1\nN1 G1 X200 FX3000\nN2 X280\n%L2\nN1 G0 Z300\n");
@@ -37,7 +38,7 @@ private slots:
     }
     // Jog stops at the soft limit (only when referenced and C10 = 1).
     void softLimitJog() {
-        Rig r;
+        EngineRig r;
         QVERIFY(r.home());
         QVERIFY(r.ctl->selectMode(Mode::Manual).ok());
         r.m->setJog(X, 1);
@@ -52,7 +53,7 @@ private slots:
     }
     // Limit switch: braking with УСКОРЕНИЕ 2, the direction locked, message 27.
     void limitSwitch() {
-        Rig r("training-lathe", noHoming); // not referenced: no soft limits
+        EngineRig r("training-lathe", noHoming); // not referenced: no soft limits
         QVERIFY(r.ctl->selectMode(Mode::Manual).ok());
         r.m->setJog(Z, 1); // F ОБЫЧНАЯ 2000 mm/min
         QVERIFY(r.until([&] { return r.m->limitPlusPressed(Z); }, 120000));
@@ -83,7 +84,7 @@ private slots:
     }
     // МАКС.ОШИБКА exceeded while moving: 23; both axes stop; the program ends.
     void followingError() {
-        Rig r("training-lathe", [](auto& p) {
+        EngineRig r("training-lathe", [](auto& p) {
             noHoming(p);
             p.setC(82, 100); // Z: 100 internal units = 0.05 mm
         });
@@ -103,7 +104,7 @@ private slots:
     }
     // At rest, ЗАДЕРЖКА КП after the move, |E| > ДОПУСК КП: 24.
     void standstill() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.advance(1000);
         r.m->mechanics(Z)->pushSlide(0.05); // 100 internal units, ДОПУСК КП 20
         r.advance(5);
@@ -113,7 +114,7 @@ private slots:
     }
     // T контроля ДОС: the encoder does not change while a move is commanded: 57.
     void encoderStall() {
-        Rig r("training-lathe", [](auto& p) {
+        EngineRig r("training-lathe", [](auto& p) {
             noHoming(p);
             p.setC(82, 0); // no following-error check: the stall check must find it
         });
@@ -129,7 +130,7 @@ private slots:
     // 8 (standstill), 56 (encoder stall).
     void xAxisMessages() {
         {
-            Rig r("training-lathe", [](auto& p) {
+            EngineRig r("training-lathe", [](auto& p) {
                 noHoming(p);
                 p.setC(30, 100);
             });
@@ -140,7 +141,7 @@ private slots:
             QVERIFY(!r.hasAlarm(23));
         }
         {
-            Rig r("training-lathe", noHoming);
+            EngineRig r("training-lathe", noHoming);
             r.advance(1000);
             r.m->mechanics(X)->pushSlide(0.05);
             r.advance(5);
@@ -148,7 +149,7 @@ private slots:
             QVERIFY(!r.hasAlarm(24));
         }
         {
-            Rig r("training-lathe", [](auto& p) {
+            EngineRig r("training-lathe", [](auto& p) {
                 noHoming(p);
                 p.setC(30, 0);
             });
@@ -161,7 +162,7 @@ private slots:
     }
     // Z1000.0 = 0: emergency stop, 9; loop open at once, regulator blocked after ЗАДЕРЖКА БР.
     void emergencyStop() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 G1 Z-50 FZ1000\n");
         r.start(1);
         r.advance(500);
@@ -188,7 +189,7 @@ private slots:
     }
     // A motion without «Деблокировка регулятора»: 1 (X).
     void regulatorNotEnabled() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->setRegulatorEnable(X, false);
         r.advance(400);
         QVERIFY(!r.bit(z::regulatorEnabled(X)));
@@ -199,7 +200,7 @@ private slots:
     }
     // «Обрыв канала 1/2 ДОС»: 4/5 (X), 20/21 (Z).
     void encoderChannelBreak() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.m->mechanics(X)->setChannelBroken(2, true);
         r.m->mechanics(Z)->setChannelBroken(1, true);
         r.advance(5);
@@ -218,7 +219,7 @@ private slots:
     // маховика» without; English always with one.
     void alarmTextAsTableM1PrintsIt() {
         // Both encoders, and both DACs, on one channel: 37 and 38 at power-on.
-        Rig r("training-lathe", [](profile::MachineProfile& p) {
+        EngineRig r("training-lathe", [](profile::MachineProfile& p) {
             p.c[69] = p.c[17];
             p.c[70] = p.c[18];
         });
@@ -240,7 +241,7 @@ private slots:
     }
     // «Пуск» is refused while a message is shown.
     void startRefusedWithAlarm() {
-        Rig r("training-lathe", noHoming);
+        EngineRig r("training-lathe", noHoming);
         r.load("%L1\nN1 R1=1\n");
         r.advance(1000);
         r.m->mechanics(Z)->pushSlide(0.05);

@@ -4,17 +4,19 @@
 // controllers on two ports; the unit id; a refused connection; a server
 // that goes away and comes back during a watch.
 #include "cli_runner.h"
-#include "tcp_serve.h"
+#include "rig/shop_machines.h"
+#include "rig/tcp_serve.h"
 
 #include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
+using namespace k528::testrig;
+
 namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
-const QString kF7 = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
 
 CliResult run(const QString& program, const QStringList& args, int timeoutMs = 30000) {
     return runProgram(program, args, timeoutMs);
@@ -37,9 +39,9 @@ class TestLinkTcp : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     std::vector<quint16> ports_;
-    std::unique_ptr<tcptest::Serve> a_, b_;
+    std::unique_ptr<Serve> a_, b_;
 
-    CliResult link(const tcptest::Serve& s, QStringList args) {
+    CliResult link(const Serve& s, QStringList args) {
         return run(kCli, QStringList{"link", "--tcp", s.address()} + args);
     }
     CliResult mbpoll(quint16 port, QStringList args, int unit = 1) {
@@ -57,12 +59,12 @@ class TestLinkTcp : public QObject {
 private slots:
     void initTestCase() {
         QVERIFY(dir_.isValid());
-        ports_ = tcptest::freePorts(3);
+        ports_ = freePorts(3);
         QCOMPARE(ports_.size(), std::size_t(3));
-        a_ = std::make_unique<tcptest::Serve>(kCli, ports_[0]);
-        b_ = std::make_unique<tcptest::Serve>(kCli, ports_[1]);
+        a_ = std::make_unique<Serve>(kCli, ports_[0]);
+        b_ = std::make_unique<Serve>(kCli, ports_[1]);
         QByteArray said;
-        QVERIFY2(a_->start({"--keys", kF7}, &said), said.constData());
+        QVERIFY2(a_->start({"--keys", kWorkWithPcKeys}, &said), said.constData());
         QVERIFY2(said.contains("Modbus TCP " + a_->address().toUtf8() + ", unit 1"), said.constData());
         QVERIFY2(b_->start({"--address", "5"}, &said), said.constData());
     }
@@ -156,7 +158,7 @@ private slots:
 
     void badLinesAreClear() {
         // Nobody listens on the third port: exit 2, and why.
-        CliResult r = run(kCli, {"link", "--tcp", tcptest::address(ports_[2]), "status"});
+        CliResult r = run(kCli, {"link", "--tcp", address(ports_[2]), "status"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("cannot open 127.0.0.1:") && r.err.contains("refused"), qPrintable(r.err));
         r = run(kCli, {"link", "--tcp", "127.0.0.1", "status"});
@@ -172,7 +174,7 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("give one"), qPrintable(r.err));
         // A port another server holds: serve says so.
-        tcptest::Serve twice(kCli, ports_[0]);
+        Serve twice(kCli, ports_[0]);
         QByteArray said;
         QVERIFY(!twice.start({}, &said));
         twice.process().waitForFinished(5000);
@@ -191,7 +193,7 @@ private slots:
         b_->kill();
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).contains("line lost at"), 3000);
         QByteArray said;
-        QVERIFY2(b_->start({"--address", "5", "--keys", kF7}, &said), said.constData());
+        QVERIFY2(b_->start({"--address", "5", "--keys", kWorkWithPcKeys}, &said), said.constData());
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).contains("line back at"), 3000);
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).contains("mode F7"), 3000);
         QVERIFY(watch.waitForFinished(15000));

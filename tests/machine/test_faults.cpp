@@ -2,19 +2,20 @@
 // the machine's PLC message) and its behaviour; clearing the cause and
 // acknowledging brings the machine back.
 #include "engine/interface_words.h"
-#include "machine_rig.h"
+#include "rig/machine_rig.h"
 
 #include <set>
 
-using namespace mrig;
+using namespace k528;
+using namespace k528::testrig;
 using k528::machine::PositionerPart;
 using k528::machine::K923Part;
 namespace z = engine::z;
 
 namespace {
 // A lathe with its drives on and homed.
-std::unique_ptr<Rig> ready(std::string_view name = "training-lathe") {
-    auto r = std::make_unique<Rig>(name);
+std::unique_ptr<MachineRig> ready(std::string_view name = "training-lathe") {
+    auto r = std::make_unique<MachineRig>(name);
     if (!r->drivesOn() || !r->home())
         return nullptr;
     r->advance(50);
@@ -509,7 +510,7 @@ private slots:
     // Every fault the machine offers can be injected and cleared; a fault that
     // does not fit the machine is refused with the reason.
     void availableAndRefused() {
-        Rig r;
+        MachineRig r;
         const auto faults = r.s().availableFaults();
         QVERIFY(faults.size() >= 20);
         for (const FaultSpec& f : faults) {

@@ -4,9 +4,10 @@
 // PLC starts from the K923 keys.
 #include "engine/interface_words.h"
 #include "engine/rparams.h"
-#include "machine_rig.h"
+#include "rig/machine_rig.h"
 
-using namespace mrig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = engine::z;
 
 class TestGrinder : public QObject {
@@ -15,7 +16,7 @@ private slots:
     // The grinding cycle: touch, rough, finish, size — each move of X ends on
     // its signal from the gauge, the last one on «size».
     void gaugeCycleEndsOnSize() {
-        Rig r("grinder-205");
+        MachineRig r("grinder-205");
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         const machine::MachineView v0 = r.sim->view();
@@ -81,7 +82,7 @@ private slots:
     // Without the gauge (retracted) the moves run to their programmed
     // targets: the signals really come from the gauge.
     void withoutGaugeTheMovesRunToTheirTargets() {
-        Rig r("grinder-205");
+        MachineRig r("grinder-205");
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.load("%L7\nN1 G90 G0 M3 Z126\nN2 X24.4\nN3 G138 X24.5 FX3\nN4 M5 M30\n");
@@ -95,7 +96,7 @@ private slots:
     // R207 follows, the PLC compensates the dressing (Z1007.0) so that R224
     // grows by R210 and X keeps naming the wheel's edge.
     void dressingCycleWithCompensation() {
-        Rig r("grinder-205");
+        MachineRig r("grinder-205");
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.c().selectMode(Mode::Manual);
@@ -140,7 +141,7 @@ private slots:
     // After dressing, the next ring still comes out at size: the
     // compensation keeps the program's X on the wheel's edge.
     void sizeHoldsAfterDressingAndANewRing() {
-        Rig r("grinder-205");
+        MachineRig r("grinder-205");
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         QVERIFY(r.start(1));
@@ -176,7 +177,7 @@ private slots:
     // program with message 44 «D круга < Dmin» (appendix М); after a wheel
     // change and the acknowledgement, R207 = R204 and programs run again.
     void wheelChange() {
-        Rig r("grinder-205", [](profile::MachineProfile& p) { p.r[207] = 13990; });
+        MachineRig r("grinder-205", [](profile::MachineProfile& p) { p.r[207] = 13990; });
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.advance(20);
@@ -207,7 +208,7 @@ private slots:
 
     // Manual cycle 1 from K1 (C143 = 11) returns to R220/R221.
     void cycleOneFromTheKey() {
-        Rig r("grinder-205");
+        MachineRig r("grinder-205");
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.c().selectMode(Mode::Manual);

@@ -4,19 +4,20 @@
 // equipment: turret, chuck, door, setting-up mode, K keys and LEDs.
 #include "engine/interface_words.h"
 #include "engine/rparams.h"
-#include "machine_rig.h"
+#include "rig/machine_rig.h"
 
-using namespace mrig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = engine::z;
 
 namespace {
-bool greenLed(Rig& r, int k) {
+bool greenLed(MachineRig& r, int k) {
     return (r.c().words().word(z::GreenLedsWord) >> z::keyBit(k)) & 1u;
 }
-bool redLed(Rig& r, int k) {
+bool redLed(MachineRig& r, int k) {
     return (r.c().words().word(z::RedLedsWord) >> z::keyBit(k)) & 1u;
 }
-void pressKey(Rig& r, int k) {
+void pressKey(MachineRig& r, int k) {
     r.c().words().setBit(engine::ZBit{1300, z::keyBit(k)}, true);
     r.advance(30);
 }
@@ -26,7 +27,7 @@ class TestLathe : public QObject {
     Q_OBJECT
 private slots:
     void scriptedOperator() {
-        Rig r;
+        MachineRig r;
         // --- power on: the controller is ready, the drives are off -------------
         QVERIFY(r.bit(z::Ready));
         QVERIFY(r.bit(z::EmergencyStopOk)); // GOST 26642 E-stop: high = working
@@ -144,7 +145,7 @@ private slots:
     // rise and fall, the spindle's ramp up and down, the turret's indexing
     // and locking, the chuck's strokes), the rest of the machine at rest.
     void equipmentAsIfTickedEveryTick() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.advance(8000); // the lubrication cycle after switching on is over
@@ -195,7 +196,7 @@ private slots:
     }
 
     void turretByMCodes() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         QCOMPARE(r.sim->view().turretStation, 1);
@@ -226,7 +227,7 @@ private slots:
     // A jammed turret: the M function is not acknowledged; after its time
     // the PLC raises A10 «Резцедержатель не повернулся»; «Сброс» ends it.
     void turretTimeout() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.s().inject({Fault::TurretJam});
@@ -244,7 +245,7 @@ private slots:
 
     // An M function the description does not know holds the frame and shows A16.
     void unknownMFunction() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.load("%L5\nN1 M77\nN2 M30\n");
@@ -258,7 +259,7 @@ private slots:
     // The chuck pedal opens and closes the chuck only with the spindle
     // stopped; with the chuck open a start is inhibited.
     void chuckAndStartInhibit() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         QVERIFY(r.lamp("chuck"));
@@ -298,7 +299,7 @@ private slots:
     // The door: locked while the spindle turns; open, it inhibits a start
     // and holds the feed; in setting-up mode (K12) the axes move at 10 %.
     void doorAndSetupMode() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         QVERIFY(r.s().openDoor());
@@ -339,7 +340,7 @@ private slots:
 
     // The override selector (Z1001.11, Z1001.12-15) and its position «K923».
     void overrideSelector() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.s().hasOverrideSwitch());
         r.advance(20);
         QVERIFY(!r.bit(z::OverrideFromPlc));     // «K923»: the L keys decide
@@ -361,7 +362,7 @@ private slots:
 
     // The handwheel: selector X, multiplier positions x1 / x10 / x100.
     void handwheel() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.c().selectMode(Mode::Manual);
@@ -403,7 +404,7 @@ private slots:
 
     // Manual cycles from the K keys: K11 cycle 1 (C143 = 90), K5 cycle 6 (C148 = 91).
     void manualCyclesFromKeys() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.c().selectMode(Mode::Manual);

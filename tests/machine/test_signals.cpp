@@ -5,13 +5,14 @@
 // and `k528 run` on the simulated machines.
 #include "engine/interface_words.h"
 #include "machine/run.h"
-#include "machine_rig.h"
+#include "rig/machine_rig.h"
 #include "plc/description.h"
 #include "resources/embedded.h"
 
 #include <set>
 
-using namespace mrig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = engine::z;
 
 class TestSignals : public QObject {
@@ -20,7 +21,7 @@ private slots:
     // A push-button bounces for 3 ms; the PLC passes it on once it has
     // stood for its debounce time (8 ms), exactly once.
     void debounceOfTheBouncingButton() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         r.c().selectMode(Mode::Manual);
         r.advance(20);
@@ -53,7 +54,7 @@ private slots:
 
     // A tap shorter than the debounce time does nothing.
     void shortGlitchIgnored() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         r.c().selectMode(Mode::Manual);
         r.advance(20);
@@ -69,7 +70,7 @@ private slots:
     // and drops the acknowledgement when the strobe drops; the next code
     // comes after that.
     void mStrobeTiming() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         QVERIFY(r.home());
         r.load("%L5\nN1 M9 M0\nN2 M8 M9\nN3 M30\n");
@@ -99,7 +100,7 @@ private slots:
     // The encoder's zero mark: once per motor revolution, at the same count
     // modulo a revolution.
     void zeroMarksOncePerRevolution() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         r.c().selectMode(Mode::Manual);
         r.advance(20);
@@ -124,7 +125,7 @@ private slots:
     // The limit switches lie beyond the soft limits: a jog stops at the
     // soft limit (12/28) before the switch.
     void limitSwitchesBeyondSoftLimits() {
-        Rig r;
+        MachineRig r;
         const engine::AxisPlacement& p = r.s().placement(Z);
         const double softPlus = 295.0, softMinus = -115.0;
         QVERIFY(p.limitPlusMm > softPlus && p.limitMinusMm < softMinus);
@@ -149,7 +150,7 @@ private slots:
     // stretch between two switch points): a jog over the cam to the limit
     // switch and back.
     void switchesFollowTheSlide() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         r.c().selectMode(Mode::Manual);
         r.advance(20);
@@ -187,7 +188,7 @@ private slots:
     // tick — the plant looks at the drives while the delay runs — and they
     // open with the contactor.
     void driveReadyAfterItsDelay() {
-        Rig r;
+        MachineRig r;
         const machine::Signals& sig = r.s().machineSignals();
         const int on = *sig.findSensor("drives.on"), readyX = *sig.findSensor("x.drive_ready"),
                   readyZ = *sig.findSensor("z.drive_ready");
@@ -217,7 +218,7 @@ private slots:
     // The handwheel's counts reach the positioner's pulse channel in the
     // tick after a turn, on a machine at rest.
     void handwheelCountsInTheNextTick() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         r.advance(500);
         const int ch = static_cast<int>(r.c().c()[105]) - 1; // C105: handwheel 1
@@ -235,7 +236,7 @@ private slots:
     // stops: a system message (module failure) makes Z2000.0 = 0, the PLC
     // takes the drives off.
     void readyDropStopsTheMachine() {
-        Rig r;
+        MachineRig r;
         QVERIFY(r.drivesOn());
         r.s().inject({Fault::PlcModuleFailure, X, 3}); // the lamps' module: nothing else
         r.advance(20);
@@ -247,7 +248,7 @@ private slots:
     // Same inputs, same machine: two runs give the same trace, bit for bit.
     void deterministic() {
         const auto trace = [] {
-            Rig r;
+            MachineRig r;
             std::uint64_t h = 1469598103934665603ull;
             const auto mix = [&](std::uint64_t v) { h = (h ^ v) * 1099511628211ull; };
             r.drivesOn();

@@ -7,12 +7,13 @@
 // went for the old tool (no tool table), and the prove-out's station says
 // which tool is really there.
 #include "engine/rparams.h"
-#include "machine_rig.h"
+#include "rig/machine_rig.h"
 #include "profile/tools.h"
 #include "proveout/tool_change.h"
 #include "toolpath/programmed_path.h"
 
-using namespace mrig;
+using namespace k528;
+using namespace k528::testrig;
 
 namespace {
 
@@ -33,7 +34,7 @@ struct End {
 };
 
 End run(const std::string& text) {
-    Rig r;
+    MachineRig r;
     End e;
     if (!r.drivesOn() || !r.home())
         return e;

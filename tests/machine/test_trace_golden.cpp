@@ -11,6 +11,7 @@
 #include "machine/simulation.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "rig/machine_rig.h"
 
 #include <QtTest>
 
@@ -74,28 +75,6 @@ struct Digest {
     }
 };
 
-// A RunMachine that samples the whole machine after every tick.
-class TracingMachine final : public engine::RunMachine {
-public:
-    TracingMachine(machine::Simulation& sim, Digest& d) : sim_(sim), inner_(sim), d_(d) {}
-    engine::Controller& controller() override { return inner_.controller(); }
-    void tick() override {
-        inner_.tick();
-        d_.sample(sim_);
-    }
-    bool switchOn(std::int64_t maxMs) override { return inner_.switchOn(maxMs); }
-    void setOverrideCode(int code) override { inner_.setOverrideCode(code); }
-    void startReferenceCycle(engine::AxisId a, int dir) override { inner_.startReferenceCycle(a, dir); }
-    void pressStart() override { inner_.pressStart(); }
-    bool startHeld() const override { return inner_.startHeld(); }
-    std::vector<int> mFunctions() const override { return inner_.mFunctions(); }
-
-private:
-    machine::Simulation& sim_;
-    machine::SimulationRunMachine inner_;
-    Digest& d_;
-};
-
 std::string hex(std::uint64_t v) {
     std::ostringstream s;
     s << std::hex << v;
@@ -110,7 +89,7 @@ std::string traceText(const char* profileName, const std::string& programText) {
 
     machine::Simulation sim(prof);
     Digest run;
-    TracingMachine m(sim, run);
+    testrig::WatchedSimulationRun m(sim, [&] { run.sample(sim); }); // the whole machine after every tick
     const engine::RunResult r = engine::runProgram(m, parsed.store, 1, engine::RunOptions{});
     out << "run.status " << engine::runStatusName(r.status) << "\n";
     out << "run.ticks " << run.ticks << "\n";

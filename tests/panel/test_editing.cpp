@@ -2,11 +2,12 @@
 // and the preset groups (engine setR, setCurrentValue), C-parameters
 // (engine setC), in the formats of docs/panel.md; «ОШИБКА ВВОДА» for what
 // the engine or the format refuses.
-#include "panel_rig.h"
+#include "rig/panel_rig.h"
 
 #include <QtTest>
 
-using namespace prig;
+using namespace k528;
+using namespace k528::testrig;
 
 class TestEditing : public QObject {
     Q_OBJECT
@@ -36,7 +37,7 @@ private slots:
         QFETCH(int, number);
         QFETCH(int, value);
         QFETCH(QString, marked);
-        Rig r;
+        PanelRig r;
         r.keys("F2 MODE MODE");
         r.keys(keys.toStdString());
         QCOMPARE(r.c().r(number), value);
@@ -58,7 +59,7 @@ private slots:
         QFETCH(QString, keys);
         QFETCH(int, number);
         QFETCH(int, value);
-        Rig r;
+        PanelRig r;
         r.keys("F2 MODE MODE");
         r.keys(keys.toStdString());
         QCOMPARE(r.c().r(number), value);
@@ -68,7 +69,7 @@ private slots:
     }
 
     void manualREqualsAssigns() {
-        Rig r;
+        PanelRig r;
         r.keys("F2 MODE MODE PAR 2 0 ENTER 1 2 * 3 =");
         QCOMPARE(r.line(3), QString(">R20=36")); // «=» shows the result, nothing written yet
         QCOMPARE(r.c().r(20), 0);
@@ -82,7 +83,7 @@ private slots:
     // A key that types nothing in a field does not start an entry: ESC then
     // is the machine's ESC again.
     void keysThatTypeNothing() {
-        Rig r;
+        PanelRig r;
         r.keys("F4 2 + * % !");
         QVERIFY(!r.p->presetScreens().editing());
         QCOMPARE(r.line(2), QString(">R220=200.000"));
@@ -94,7 +95,7 @@ private slots:
     }
 
     void movingAwayDropsTheTypedValue() {
-        Rig r;
+        PanelRig r;
         r.keys("F2 MODE MODE PAR 1 0 ENTER 5 DOWN");
         QCOMPARE(r.c().r(10), 40000);
         QCOMPARE(r.line(2), QString(" R10=40000"));
@@ -103,7 +104,7 @@ private slots:
     // A manual cycle executing in РУЧНОЙ: the engine refuses R-parameters
     // (setR), the panel says «ОШИБКА ВВОДА»; after it, they can be written.
     void notWhileACycleExecutes() {
-        Rig r(noHoming);
+        PanelRig r(noHoming);
         r.keys("MODE MODE PAR 2 0 ENTER");
         r.m->startCycle(6); // C148 = 91: «ПРОГРЕВ СТАНКА»
         r.m->advance(100);
@@ -161,7 +162,7 @@ private slots:
         QFETCH(int, number);
         QFETCH(int, value);
         QFETCH(QString, marked);
-        Rig r;
+        PanelRig r;
         r.keys("F4");
         r.keys(keys.toStdString());
         QCOMPARE(r.c().r(number), value);
@@ -182,7 +183,7 @@ private slots:
         QFETCH(QString, keys);
         QFETCH(int, number);
         QFETCH(int, value);
-        Rig r;
+        PanelRig r;
         r.keys("F4");
         r.keys(keys.toStdString());
         QCOMPARE(r.c().r(number), value);
@@ -192,7 +193,7 @@ private slots:
     // «Установка фактического значения» (group 1, X=): the current
     // coordinate becomes the typed value, the zero offset follows.
     void currentValue() {
-        Rig r;
+        PanelRig r;
         r.keys("F4 1 1 2 0 5 . 1 2 4 ENTER");
         QCOMPARE(r.c().axisView(X).currentDisc, std::int64_t(1205124));
         QCOMPARE(r.c().r(228), -1205124); // machine 0 − 1205.124
@@ -207,7 +208,7 @@ private slots:
 
     // The discrete of the axis sets the point: 0.01 mm on X.
     void otherDiscrete() {
-        Rig r([](profile::MachineProfile& p) {
+        PanelRig r([](profile::MachineProfile& p) {
             p.setC(5, 0);
             p.setC(6, 1);
         });
@@ -247,7 +248,7 @@ private slots:
         QFETCH(qlonglong, value);
         QFETCH(QString, line);
         QFETCH(int, row);
-        Rig r;
+        PanelRig r;
         r.keys("F5 1 1 1 1 ENTER");
         r.keys(keys.toStdString());
         QCOMPARE(r.c().c()[static_cast<std::size_t>(number)], std::int64_t(value));
@@ -269,7 +270,7 @@ private slots:
         QFETCH(QString, keys);
         QFETCH(int, number);
         QFETCH(qlonglong, value);
-        Rig r;
+        PanelRig r;
         r.keys("F5 1 1 1 1 ENTER");
         r.keys(keys.toStdString());
         QCOMPARE(r.c().c()[static_cast<std::size_t>(number)], std::int64_t(value));
@@ -277,7 +278,7 @@ private slots:
     }
 
     void cparamsViewOnly() {
-        Rig r;
+        PanelRig r;
         r.keys("F5 9 9 9 9 ENTER");
         QCOMPARE(r.p->access(), panel::Access::ViewOnly);
         QCOMPARE(r.c().mode(), Mode::MachineData);
@@ -294,7 +295,7 @@ private slots:
 
     // A changed constant acts: the servo follows, the cross-checks give their message.
     void cparamsReachTheEngine() {
-        Rig r;
+        PanelRig r;
         r.keys("F5 1 1 1 1 ENTER PAR 1 7 ENTER 3 ENTER"); // N ДОС X on the channel of Z's encoder
         QCOMPARE(r.c().c()[17], std::int64_t(3));
         QVERIFY(r.c().alarmRegistry().active(37)); // «Ошибка N ДОС»

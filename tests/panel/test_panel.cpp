@@ -3,11 +3,12 @@
 // SHIFT, ESC per C123..C125, the service marks and HELP lists, and the
 // АВТ/РУЧ/ПБТ screens drawn from a machine that moves.
 #include "engine/interface_words.h"
-#include "panel_rig.h"
+#include "rig/panel_rig.h"
 
 #include <QtTest>
 
-using namespace prig;
+using namespace k528;
+using namespace k528::testrig;
 namespace z = k528::engine::z;
 
 class TestPanel : public QObject {
@@ -15,7 +16,7 @@ class TestPanel : public QObject {
 private slots:
     // --- modes and the password -----------------------------------------------------
     void functionKeysSelectModes() {
-        Rig r;
+        PanelRig r;
         const Mode modes[] = {Mode::Auto, Mode::Manual, Mode::Reference, Mode::SetActual};
         for (int f = 1; f <= 4; ++f) {
             r.p->press(static_cast<Key>(static_cast<int>(Key::F1) + f - 1));
@@ -26,7 +27,7 @@ private slots:
 
     void passwordRight() {
         for (const char* f : {"F5", "F6", "F7"}) {
-            Rig r;
+            PanelRig r;
             r.keys(f);
             QVERIFY(r.p->passwordShown());
             QCOMPARE(r.c().mode(), Mode::Manual); // the mode changes after the password
@@ -39,13 +40,13 @@ private slots:
 
     void passwordWrong() {
         {
-            Rig r;
+            PanelRig r;
             r.keys("F5 1 1 1 2 ENTER");
             QCOMPARE(r.c().mode(), Mode::MachineData); // open for viewing
             QCOMPARE(r.p->access(), panel::Access::ViewOnly);
         }
         {
-            Rig r; // the password has four digits: a fifth is not taken
+            PanelRig r; // the password has four digits: a fifth is not taken
             r.keys("F6 1 1 1 1 1");
             QCOMPARE(r.p->passwordScreen().typed(), std::string("1111"));
             r.keys("ENTER");
@@ -53,7 +54,7 @@ private slots:
             QCOMPARE(r.c().mode(), Mode::ProgramEdit);
         }
         for (const char* f : {"F6", "F7"}) {
-            Rig r;
+            PanelRig r;
             r.keys("F1");
             r.keys(f);
             r.keys("1 2 1 2 ENTER");
@@ -68,7 +69,7 @@ private slots:
 
     // The password opens the mode for as long as it is shown.
     void passwordAskedOnEveryEntry() {
-        Rig r;
+        PanelRig r;
         r.keys("F6 1 1 1 1 ENTER ENTER");
         QCOMPARE(r.p->programScreens().page(), panel::ProgramEditScreens::Page::Catalog);
         r.keys("F6"); // already open: its menu, no password
@@ -84,7 +85,7 @@ private slots:
 
     // Z1000.8-10 != 0: the PLC sets the mode, the F keys are refused.
     void modeImposedByThePlc() {
-        Rig r;
+        PanelRig r;
         r.m->setModeCode(1);
         r.m->tick();
         QCOMPARE(r.c().mode(), Mode::Auto);
@@ -112,7 +113,7 @@ private slots:
 
     // A protected mode set by the PLC: the panel asks the password there.
     void protectedModeImposed() {
-        Rig r;
+        PanelRig r;
         r.keys("F4 3");
         r.m->setModeCode(6);
         r.m->tick();
@@ -134,7 +135,7 @@ private slots:
 
     // --- K keys, LEDs, L keys, SHIFT ------------------------------------------------
     void kKeysSetZ1300() {
-        Rig r;
+        PanelRig r;
         const int bits[] = {0, 1, 2, 3, 4, 5, 8, 9, 10, 11, 12, 13};
         for (int k = 1; k <= 12; ++k) {
             r.c().words().setWord(z::KeysWord, 0); // the PLC took the previous one
@@ -149,7 +150,7 @@ private slots:
     }
 
     void ledsFollowZ1906Z1907() {
-        Rig r;
+        PanelRig r;
         QCOMPARE(r.display().leds.green, std::uint16_t(0));
         r.c().words().setWord(z::GreenLedsWord, 0x0101); // K1 and K7
         r.c().words().setWord(z::RedLedsWord, 0x2020);   // K6 and K12
@@ -165,7 +166,7 @@ private slots:
     // Table М.1: the K923's own messages, and what the hardware does then.
     void k923Health() {
         {
-            Rig r; // no link to the PLC: screens work, K keys and their LEDs do not
+            PanelRig r; // no link to the PLC: screens work, K keys and their LEDs do not
             r.p->setHealth({.plcLink = false});
             r.c().words().setWord(z::GreenLedsWord, 0x0101);
             QCOMPARE(r.line(1), QString("НЕТ СВЯЗИ С ПЛК"));
@@ -182,7 +183,7 @@ private slots:
             QCOMPARE(r.display().leds.green, std::uint16_t((1u << 0) | (1u << 6)));
         }
         {
-            Rig r; // no link to the positioner: no screens, no modes; K keys still go
+            PanelRig r; // no link to the positioner: no screens, no modes; K keys still go
             r.p->setHealth({.positionerLink = false});
             QCOMPARE(r.lines(), expect({"НЕТ СВЯЗИ С БП", "", "", ""}));
             r.keys("F1");
@@ -191,7 +192,7 @@ private slots:
             QCOMPARE(int(r.c().words().word(z::KeysWord)), 1);
         }
         for (const bool ram : {false, true}) {
-            Rig r; // the K923 itself is down: its message and nothing else
+            PanelRig r; // the K923 itself is down: its message and nothing else
             r.p->setHealth(ram ? panel::Health{.ramOk = false} : panel::Health{.residentOk = false});
             r.c().words().setWord(z::GreenLedsWord, 0x0101);
             QCOMPARE(r.lines(), expect({ram ? "НЕИСПРАВНО ОЗУ" : "НАРУШЕН РЕЗИДЕНТ", "", "", ""}));
@@ -201,7 +202,7 @@ private slots:
             QCOMPARE(int(r.c().words().word(z::KeysWord)), 0);
         }
         {
-            Rig r; // the PLC in debug stop: line 2, until a key's own message
+            PanelRig r; // the PLC in debug stop: line 2, until a key's own message
             r.p->setHealth({.plcStopped = true});
             QCOMPARE(r.line(1), QString("Режим ПЛК СТОП !"));
             r.keys("F2 MODE MODE PAR 2 4 0 ENTER 5 ENTER"); // R240 is read only
@@ -212,7 +213,7 @@ private slots:
     }
 
     void overrideKeys() {
-        Rig r;
+        PanelRig r;
         // Power-on: 100 %, the code of L4 (C142 = 10).
         QCOMPARE(r.display().leds.override, std::uint8_t(1u << 3));
         r.keys("L2");
@@ -230,7 +231,7 @@ private slots:
     }
 
     void shiftLatches() {
-        Rig r;
+        PanelRig r;
         r.keys("F4 SHIFT");
         QVERIFY(r.display().leds.shift);
         r.keys("DOWN");
@@ -243,7 +244,7 @@ private slots:
     // --- ESC (C123..C125) --------------------------------------------------------
     void escAcknowledgesMachineFaults() {
         for (const bool enabled : {true, false}) {
-            Rig r([&](profile::MachineProfile& p) { p.setC(124, enabled ? 1 : 0); });
+            PanelRig r([&](profile::MachineProfile& p) { p.setC(124, enabled ? 1 : 0); });
             r.m->setPlcAlarm(1, true);
             r.m->tick();
             r.m->setPlcAlarm(1, false);
@@ -260,7 +261,7 @@ private slots:
 
     void escAcknowledgesSystemMessages() {
         for (const bool enabled : {true, false}) {
-            Rig r([&](profile::MachineProfile& p) { p.setC(125, enabled ? 1 : 0); });
+            PanelRig r([&](profile::MachineProfile& p) { p.setC(125, enabled ? 1 : 0); });
             r.m->setPlcSystem(2, true);
             r.m->tick();
             r.m->setPlcSystem(2, false);
@@ -275,7 +276,7 @@ private slots:
 
     void escResets() {
         for (const bool enabled : {true, false}) {
-            Rig r([&](profile::MachineProfile& p) {
+            PanelRig r([&](profile::MachineProfile& p) {
                 noHoming(p);
                 p.setC(123, enabled ? 1 : 0);
             });
@@ -292,7 +293,7 @@ private slots:
 
     // --- service marks and HELP lists ------------------------------------------------
     void workMessages() {
-        Rig r;
+        PanelRig r;
         r.m->setPlcWork(1, true);
         r.m->setPlcWork(3, true);
         r.m->tick();
@@ -322,7 +323,7 @@ private slots:
     // ПРЕДУСТАНОВКИ as 2.6.5 prints them: the «MX:» hint shows the machine
     // coordinate («MX: -123.456»), R167 ДОПУСК two decimals («R167 = 1.00»).
     void presetsHintAndTolerance() {
-        Rig r;
+        PanelRig r;
         r.keys("F2");
         r.m->setJog(engine::AxisId::X, -1);
         r.m->advance(500);
@@ -343,7 +344,7 @@ private slots:
     }
 
     void faults() {
-        Rig r;
+        PanelRig r;
         r.m->setEmergencyStop(true);
         r.m->setPlcAlarm(2, true);
         r.m->tick();
@@ -365,7 +366,7 @@ private slots:
     }
 
     void systemMessagesAndMarkOrder() {
-        Rig r;
+        PanelRig r;
         r.m->setPlcWork(1, true);
         r.m->setPlcSystem(1, true);
         r.m->tick();
@@ -385,7 +386,7 @@ private slots:
 
     // A PLC message without a text in the profile shows its address.
     void plcMessageWithoutText() {
-        Rig r([](profile::MachineProfile& p) { p.plcAlarm.erase(30); });
+        PanelRig r([](profile::MachineProfile& p) { p.plcAlarm.erase(30); });
         r.m->setPlcAlarm(30, true);
         r.m->tick();
         r.keys("HELP 2");
@@ -395,7 +396,7 @@ private slots:
     // --- screens of a moving machine -------------------------------------------------
     // The manual's example coordinates, set with «установка фактического значения».
     void manualsCoordinates() {
-        Rig r;
+        PanelRig r;
         r.keys("F4 1 2 3 4 . 5 6 7 ENTER RIGHT - 1 0 6 5 . 1 2 4 ENTER F1");
         QCOMPARE(r.lines(), expect({"АВТ            100%", "", " X  234.567    0.000",
                                     " Z-1065.124    0.000"}));
@@ -408,7 +409,7 @@ private slots:
     }
 
     void jogShowsMotion() {
-        Rig r;
+        PanelRig r;
         r.keys("MODE"); // РУЧ screen 2
         r.m->setJog(X, 1);
         r.m->advance(2000);
@@ -433,7 +434,7 @@ private slots:
     }
 
     void programMessageLine() {
-        Rig r(noHoming);
+        PanelRig r(noHoming);
         r.load("%L7\nN1 #3 G4 X5\nN2 #4 G4 X5\nN3 M30\n");
         r.keys("F1 ACK 7 ENTER");
         r.m->pressStart();
@@ -445,7 +446,7 @@ private slots:
     }
 
     void homingFlags() {
-        Rig r;
+        PanelRig r;
         QVERIFY(r.home());
         r.keys("F3");
         const engine::AxisView x = r.c().axisView(X), zv = r.c().axisView(Z);
@@ -462,7 +463,7 @@ private slots:
     }
 
     void diagnosticsFollowTheServo() {
-        Rig r;
+        PanelRig r;
         r.m->setJog(Z, -1);
         r.m->advance(1500);
         r.keys("HELP 4 RIGHT");
@@ -478,7 +479,7 @@ private slots:
     }
 
     void pcLink() {
-        Rig r;
+        PanelRig r;
         r.keys("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
         QVERIFY(r.p->pcLinkReady());
         r.keys("HELP");
@@ -492,7 +493,7 @@ private slots:
     }
 
     void clearParameters() {
-        Rig r;
+        PanelRig r;
         r.keys("F7 1 1 1 1 ENTER DOWN ENTER ESC");
         QCOMPARE(r.c().r(10), 40000); // ESC: not cleared
         r.keys("ENTER ENTER");

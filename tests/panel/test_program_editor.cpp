@@ -2,12 +2,13 @@
 // the panel is in the store as the model the parser builds from its
 // canonical text; INS, ACK, DEL, ESC, `!`, SHIFT+▲▼; the catalog; a
 // corrupt program area; no editing while a program is under way.
-#include "panel_rig.h"
+#include "rig/panel_rig.h"
 #include "program/formatter.h"
 
 #include <QtTest>
 
-using namespace prig;
+using namespace k528;
+using namespace k528::testrig;
 
 namespace {
 
@@ -63,7 +64,7 @@ private slots:
     void typedFramesAreTheParsersModel() {
         QFETCH(QString, keys);
         QFETCH(QString, text);
-        Rig r;
+        PanelRig r;
         QVERIFY(!r.c().programs().contains(5));
         r.keys(kOpen);
         r.keys("5 ENTER");
@@ -77,7 +78,7 @@ private slots:
     // F= has 7 cells: the largest feed, 10000, is shown with one decimal
     // «10000.0», so that nothing is cut.
     void largestFeedFitsItsField() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("5 ENTER DOWN DOWN RIGHT 1 0 0 0 0 ENTER DOWN 9 9 9 9 . 5 ENTER");
         QCOMPARE(r.line(2), QString("X          F=10000.0"));
@@ -86,7 +87,7 @@ private slots:
 
     // INS in the middle of a program; DEL of the frame; the rest stays.
     void insertAndDeleteFrames() {
-        Rig r;
+        PanelRig r;
         const std::string before = programText(r.c(), 1);
         r.keys(kOpen);
         r.keys("ENTER SHIFT+DOWN"); // program 1, frame N2
@@ -108,7 +109,7 @@ private slots:
 
     // DEL with a field blinking empties the field; the frame's comments stay.
     void deleteField() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("ENTER RIGHT RIGHT RIGHT RIGHT");   // N1 .. #1
         QCOMPARE(r.display().lcd.blinkColumn, 17); // «#», column 18
@@ -122,7 +123,7 @@ private slots:
     // ESC gives the field its value back (and does not reset the machine);
     // leaving the field takes the value shown.
     void escRestoresAndLeavingTakes() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("ENTER RIGHT 9 1");
         QCOMPARE(r.line(0), QString(" N1  G91 G0  G   #1"));
@@ -150,7 +151,7 @@ private slots:
     }
     void outOfRange() {
         QFETCH(QString, keys);
-        Rig r;
+        PanelRig r;
         const std::string before = programText(r.c(), 1);
         r.keys(kOpen);
         r.keys("ENTER");
@@ -160,7 +161,7 @@ private slots:
     }
 
     void readOnlyTargetRefused() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("5 ENTER ACK 1 RIGHT 2 4 0 ENTER");
         QCOMPARE(r.line(1), QString("ОШИБКА ВВОДА"));
@@ -170,7 +171,7 @@ private slots:
 
     // A new frame left incomplete is not stored and goes when left.
     void incompleteFrameDropped() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("ENTER ACK 1 5 0 ENTER"); // after N1: a computational frame N50 without R=
         QCOMPARE(r.c().programs().find(1)->frames.size(), std::size_t(18));
@@ -184,7 +185,7 @@ private slots:
 
     // An existing frame whose required field is deleted keeps its stored form.
     void requiredFieldDeleted() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("ENTER SHIFT+DOWN SHIFT+DOWN SHIFT+DOWN SHIFT+DOWN SHIFT+DOWN"); // N6 R1=R10-R12
         QCOMPARE(r.line(0), QString(" N6  R1"));
@@ -196,7 +197,7 @@ private slots:
     }
 
     void skipToggle() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("ENTER !");
         QVERIFY(r.c().programs().find(1)->frames[0].skip);
@@ -206,7 +207,7 @@ private slots:
     }
 
     void fieldNavigation() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("5 ENTER");
         // ▼ goes to the field below, nearest in column; ◀► through all.
@@ -227,7 +228,7 @@ private slots:
 
     // Not while a program is under way (the engine gives no store to edit).
     void noEditingWhileAProgramIsActive() {
-        Rig r(noHoming);
+        PanelRig r(noHoming);
         r.load("%L7\nN1 G4 X20\nN2 M30\n");
         r.keys("F1 ACK 7 ENTER");
         r.m->pressStart();
@@ -242,7 +243,7 @@ private slots:
     }
 
     void corruptProgramArea() {
-        Rig r([](profile::MachineProfile& p) { p.programs[3] = "%L3\nN1 Q5\n"; });
+        PanelRig r([](profile::MachineProfile& p) { p.programs[3] = "%L3\nN1 Q5\n"; });
         QVERIFY(r.c().alarmRegistry().active(31));
         r.keys("F6 1 1 1 1 ENTER ENTER");
         QCOMPARE(r.lines(), expect({"РЕДАКТИРОВАНИЕ УП  ?", "    УП ЗАПОРЧЕНА", "", ""}));
@@ -261,7 +262,7 @@ private slots:
     }
 
     void deleteProgramFromTheMenu() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("9 9");
         QCOMPARE(r.line(1), QString(">ПРОГРАММА 99"));
@@ -278,7 +279,7 @@ private slots:
 
     // The frame shown follows the store (it is read from it, not copied).
     void followsTheStore() {
-        Rig r;
+        PanelRig r;
         r.keys(kOpen);
         r.keys("ENTER");
         program::ProgramStore* s = r.c().editablePrograms();

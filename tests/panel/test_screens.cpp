@@ -2,11 +2,12 @@
 // training lathe (X on the diameter, Z; discrete 0.001 mm; R10..R13, R220,
 // R221 preset), with the four lines written by hand from the layouts of
 // docs/panel.md (trailing blanks dropped).
-#include "panel_rig.h"
+#include "rig/panel_rig.h"
 
 #include <QtTest>
 
-using namespace prig;
+using namespace k528;
+using namespace k528::testrig;
 
 class TestScreens : public QObject {
     Q_OBJECT
@@ -289,7 +290,7 @@ private slots:
     void screen() {
         QFETCH(QString, keys);
         QFETCH(QStringList, lines);
-        Rig r;
+        PanelRig r;
         r.keys(keys.toStdString());
         QCOMPARE(r.lines(), lines);
     }
@@ -309,7 +310,7 @@ private slots:
                                    "HELP",
                                    "HELP 4"};
         for (const char* s : sequences) {
-            Rig r;
+            PanelRig r;
             r.keys(s);
             const panel::Display d = r.display();
             for (const std::string& l : d.lcd.lines) {

@@ -3,6 +3,7 @@
 // finds nothing.
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "proveout/actual.h"
 #include "proveout/material.h"
 #include "proveout/proveout.h"
 #include "stock/stock.h"
@@ -93,6 +94,64 @@ private slots:
         QVERIFY(proveout::chuckContact(b, tool, {-50, 25}, {-110, 25}).part == proveout::ChuckContact::Jaws);
         // Stopping short of them: nothing.
         QVERIFY(proveout::chuckContact(b, tool, {-50, 25}, {-99, 25}).part == proveout::ChuckContact::None);
+    }
+
+    // Where a tool meets the material is decided once (rules.h firstMeeting
+    // over material.h's columns): the check of a program and the grade of an
+    // attempt along the path the machine took find the same rapid at the same
+    // place when the machine took the programmed path.
+    void oneContactForTheCheckAndTheGrade() {
+        const std::string bad = std::string(kBar) + "%L1 (FACE)\n"
+                                                   "N1 G90 G0 M3 X44 Z2\n"
+                                                   "N2 Z-1\n"
+                                                   "N3 G1 X-1 FX150\n"
+                                                   "N4 G0 X44 Z-20\n"
+                                                   "N5 M30\n";
+        const proveout::Proof p = prove(bad.c_str());
+        const proveout::Finding* f = only(p.result, proveout::Rule::RapidIntoMaterial);
+        QVERIFY2(f, summary(p.result).c_str());
+        std::vector<toolpath::ActualSample> taken;
+        for (const toolpath::Segment& s : p.path.segments) {
+            const toolpath::PointMm* q = p.path.pointsOf(s);
+            for (int k = 0; k < s.pointCount; ++k) {
+                toolpath::ActualSample a;
+                a.tMs = 10.0 * static_cast<double>(taken.size());
+                a.x = q[k].x;
+                a.z = q[k].z;
+                a.program = s.program;
+                a.line = s.line;
+                a.n = s.n;
+                a.kind = s.kind;
+                taken.push_back(a);
+            }
+        }
+        proveout::SpindleTimeline turning;
+        turning.runningAtStart = true;
+        const proveout::CutResult cut =
+            proveout::cutAlong(*stock::findUcg(bad), 0, stock::Tool{}, proveout::ChuckGeometry{}, taken,
+                               p.path.diameterX, turning);
+        QCOMPARE(cut.collisions.size(), std::size_t(1));
+        const proveout::Collision& c = cut.collisions.front();
+        QCOMPARE(c.rule, proveout::Rule::RapidIntoMaterial);
+        QCOMPARE(c.n, f->n);
+        QCOMPARE(c.line, f->line);
+        const double toD = p.path.diameterX ? 2.0 : 1.0;
+        QVERIFY2(std::fabs(c.at.z - f->at.z) < 1e-3 && std::fabs(c.at.r * toD - f->at.x) < 1e-3,
+                 qPrintable(QString("grade X%1 Z%2, check X%3 Z%4")
+                                .arg(c.at.r * toD).arg(c.at.z).arg(f->at.x).arg(f->at.z)));
+
+        // How far a body went into the material: a plunge's depth (along the
+        // motion), a pass's depth of cut (across it) — not the tool's width.
+        const stock::Blank bar = *stock::findUcg(kBar);
+        const proveout::Box tool{0, 3, 0, 1000};
+        proveout::LatheMaterial m(bar);
+        proveout::Sweep plunge(tool, {-10, 25}, {-10, 18});
+        const proveout::LatheMaterial::Cut down = m.cut(plunge, 0, -7);
+        QVERIFY2(std::fabs(down.penetrationMm() - 2) < 0.011, qPrintable(QString::number(down.penetrationMm())));
+        QVERIFY2(std::fabs(down.depthMm - 3) < 0.011, qPrintable(QString::number(down.depthMm)));
+        proveout::Sweep pass(tool, {-30, 19}, {-60, 19});
+        const proveout::LatheMaterial::Cut along = m.cut(pass, -30, 0);
+        QVERIFY2(std::fabs(along.penetrationMm() - 1) < 0.011, qPrintable(QString::number(along.penetrationMm())));
     }
 
     void facingReturnRapidCutsTheBlank() {

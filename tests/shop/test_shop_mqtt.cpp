@@ -6,7 +6,8 @@
 // while publishing, the publisher's goodbye, and the last will of a
 // publisher killed with SIGKILL.
 #include "cli_runner.h"
-#include "shop_machines.h"
+#include "rig/mqtt_broker.h"
+#include "rig/shop_machines.h"
 
 #include <QElapsedTimer>
 #include <QFile>
@@ -17,10 +18,11 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+using namespace k528::testrig;
+
 namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
-const QString kF7 = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
 
 // What mosquitto_sub -v prints: "TOPIC PAYLOAD" a line.
 struct Message {
@@ -45,15 +47,13 @@ class TestShopMqtt : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
     QString overrun_;
-    tcptest::ShopMachines shop_;
-    QProcess broker_;
-    QString mqtt_;
+    ShopMachines shop_;
+    MqttBroker broker_;
 
     CliResult k528(QStringList args) { return shop_.k528(std::move(args)); }
     // mosquitto_sub on `topic` until `count` messages came or `seconds` passed.
     void subscribe(QProcess& sub, const QString& topic, int count, int seconds) {
-        sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(shop_.ports[3]), "-t", topic, "-v", "-C",
-                                    QString::number(count), "-W", QString::number(seconds)});
+        broker_.subscribe(sub, topic, count, seconds);
         QVERIFY(sub.waitForStarted());
     }
     QByteArray readUntil(QProcess& p, const std::function<bool(const QByteArray&)>& done, int ms) {
@@ -77,19 +77,9 @@ private slots:
         // Three machines: a1 in F7, a2 in F2 with keys from its standard input, a3 in F7; a port for the broker.
         const QString failed =
             shop_.start(kCli, QDir(dir_.path()), {"a1", "a2", "a3"},
-                        [](int i) { return i == 1 ? QStringList{"--stdin-keys"} : QStringList{"--keys", kF7}; }, 1);
+                        [](int i) { return i == 1 ? QStringList{"--stdin-keys"} : QStringList{"--keys", kWorkWithPcKeys}; }, 1);
         QVERIFY2(failed.isEmpty(), qPrintable(failed));
-        // The broker: mosquitto as root listens on localhost only with -p.
-        broker_.start("mosquitto", {"-p", QString::number(shop_.ports[3])});
-        QVERIFY(broker_.waitForStarted());
-        mqtt_ = "mqtt://127.0.0.1:" + QString::number(shop_.ports[3]);
-        QTRY_VERIFY_WITH_TIMEOUT(
-            [&] {
-                QTcpSocket s;
-                s.connectToHost("127.0.0.1", shop_.ports[3]);
-                return s.waitForConnected(200);
-            }(),
-            10000);
+        QVERIFY(broker_.start(shop_.ports[3]));
         const QString file = shop_.machineFile;
         // A lathe whose X slide stands beyond its limit switch: an alarm at power-on.
         overrun_ = dir_.filePath("overrun.k528m");
@@ -104,13 +94,12 @@ private slots:
     }
     void cleanupTestCase() {
         shop_.stop();
-        broker_.terminate();
-        broker_.waitForFinished(5000);
+        broker_.stop();
     }
 
     void publishesStatesAlarmsAndGoodbye() {
         QProcess pub;
-        pub.start(kCli, {"shop", "publish", "--mqtt", mqtt_, "--interval-ms", "100", "--client-id", "shop-test",
+        pub.start(kCli, {"shop", "publish", "--mqtt", broker_.url(), "--interval-ms", "100", "--client-id", "shop-test",
                          "--db", shop_.db});
         QVERIFY(pub.waitForStarted());
         QByteArray said;
@@ -155,10 +144,10 @@ private slots:
         subscribe(alarms, "k528/a3/alarms", 2, 30);
         QTest::qWait(300);
         shop_.serves[2]->kill();
-        QVERIFY2(shop_.serves[2]->start({"--keys", kF7, "--profile", overrun_, "--db", shop_.db}, &said), said.constData());
+        QVERIFY2(shop_.serves[2]->start({"--keys", kWorkWithPcKeys, "--profile", overrun_, "--db", shop_.db}, &said), said.constData());
         out = readUntil(alarms, [](const QByteArray& o) { return o.count('\n') >= 1; }, 10000);
         shop_.serves[2]->kill();
-        QVERIFY2(shop_.serves[2]->start({"--keys", kF7}, &said), said.constData());
+        QVERIFY2(shop_.serves[2]->start({"--keys", kWorkWithPcKeys}, &said), said.constData());
         out += readUntil(alarms, [](const QByteArray& o) { return o.count('\n') >= 1; }, 10000);
         const QList<Message> a = messages(out);
         QCOMPARE(a.size(), 2);
@@ -182,7 +171,7 @@ private slots:
 
     void aKilledPublisherLeavesItsLastWill() {
         QProcess pub;
-        pub.start(kCli, {"shop", "publish", "--mqtt", mqtt_, "--interval-ms", "200", "--client-id", "victim", "--db",
+        pub.start(kCli, {"shop", "publish", "--mqtt", broker_.url(), "--interval-ms", "200", "--client-id", "victim", "--db",
                          shop_.db});
         QVERIFY(pub.waitForStarted());
         QByteArray said;
@@ -208,7 +197,7 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("needs --mqtt"), qPrintable(r.err));
         // Nobody listens there (the port of a2's controller is not MQTT's; a closed one refuses).
-        const std::vector<quint16> closed = tcptest::freePorts(1);
+        const std::vector<quint16> closed = freePorts(1);
         r = k528({"shop", "publish", "--mqtt", "mqtt://127.0.0.1:" + QString::number(closed[0])});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("cannot connect to mqtt://127.0.0.1:") && r.err.contains("refused"), qPrintable(r.err));

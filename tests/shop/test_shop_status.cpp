@@ -5,7 +5,7 @@
 // during `shop status --watch`, a gateway that adds 20–50 ms each way (a
 // delaying proxy).
 #include "cli_runner.h"
-#include "shop_machines.h"
+#include "rig/shop_machines.h"
 
 #include <QElapsedTimer>
 #include <QJsonArray>
@@ -20,24 +20,23 @@
 #include <QDateTime>
 #include <map>
 
+using namespace k528::testrig;
+
 namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
-const QString kF7 = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
 constexpr int kMachines = 16;
-
-QString machineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLatin1Char('0')); }
 
 } // namespace
 
 class TestShopStatus : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    tcptest::ShopMachines shop_;
+    ShopMachines shop_;
 
     CliResult k528(QStringList args, int timeoutMs = 60000) { return shop_.k528(std::move(args), timeoutMs); }
     // Machines with an even index in F7 «РАБОТА С ПЭВМ», the others in F2 (after power-on).
-    QStringList keysOf(int i) const { return i % 2 == 0 ? QStringList{"--keys", kF7} : QStringList{}; }
+    QStringList keysOf(int i) const { return i % 2 == 0 ? QStringList{"--keys", kWorkWithPcKeys} : QStringList{}; }
     static QJsonArray jsonList(const QString& text) { return QJsonDocument::fromJson(text.toUtf8()).array(); }
 
 private slots:
@@ -45,10 +44,8 @@ private slots:
         QVERIFY(dir_.isValid());
         // The database: sixteen machines made from the built-in lathe, each
         // with its line; the sixteen controllers, started together; two spare ports.
-        QStringList names;
-        for (int i = 0; i < kMachines; ++i)
-            names << machineName(i);
-        const QString failed = shop_.start(kCli, QDir(dir_.path()), names, [this](int i) { return keysOf(i); }, 2);
+        const QString failed = shop_.start(kCli, QDir(dir_.path()), shopMachineNames(kMachines),
+                                           [this](int i) { return keysOf(i); }, 2);
         QVERIFY2(failed.isEmpty(), qPrintable(failed));
     }
     void cleanupTestCase() { shop_.stop(); }
@@ -60,7 +57,7 @@ private slots:
         QCOMPARE(list.size(), kMachines);
         for (int i = 0; i < kMachines; ++i) {
             const QJsonObject m = list[i].toObject();
-            QCOMPARE(m["machine"].toString(), machineName(i));
+            QCOMPARE(m["machine"].toString(), shopMachineName(i));
             QVERIFY2(m["online"].toBool(), qPrintable(QJsonDocument(m).toJson()));
             QCOMPARE(m["mode"].toInt(), i % 2 == 0 ? 7 : 2);
             QCOMPARE(m["pc_ready"].toBool(), i % 2 == 0);
@@ -96,7 +93,7 @@ private slots:
         // The first poll of every machine: sixteen objects.
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).count("\"online\":true") >= kMachines, 10000);
         const int k = 4; // m05
-        const QByteArray lost = "{\"machine\":\"" + machineName(k).toUtf8() + "\",\"line\":";
+        const QByteArray lost = "{\"machine\":\"" + shopMachineName(k).toUtf8() + "\",\"line\":";
         QElapsedTimer t;
         t.start();
         shop_.serves[k]->kill();
@@ -110,7 +107,7 @@ private slots:
         QCOMPARE(after.count("\"online\":false"), 1);
         // Restarted (now in F7): online again, the others untouched.
         QByteArray said;
-        QVERIFY2(shop_.serves[k]->start({"--keys", kF7}, &said), said.constData());
+        QVERIFY2(shop_.serves[k]->start({"--keys", kWorkWithPcKeys}, &said), said.constData());
         const qsizetype mark = out.size();
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).mid(mark).contains(lost), 5000);
         const QByteArray back = out.mid(mark);
@@ -127,7 +124,7 @@ private slots:
         for (const k528::db::StateTime& r : rows) {
             QVERIFY2(r.source.rfind("shop@", 0) == 0, r.source.c_str());
             total[r.machine] += r.ms;
-            if (r.machine == machineName(k).toStdString() && r.state == "offline")
+            if (r.machine == shopMachineName(k).toStdString() && r.state == "offline")
                 offline += r.ms;
         }
         QCOMPARE(static_cast<int>(total.size()), kMachines);

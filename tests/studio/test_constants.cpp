@@ -25,6 +25,8 @@
 #include "training/training_pane.h"
 #include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
+#include "rig/machine_rig.h"
+#include "rig/studio_rig.h"
 #include "units/units.h"
 
 #include <QComboBox>
@@ -47,40 +49,14 @@
 
 using namespace k528;
 using namespace k528::studio;
+using testrig::SimulatedSeam;
 
 namespace {
 
+// Each test its own machine in the database; the program runs without the reference cycles.
 profile::MachineProfile lathe(const std::string& name) {
-    profile::MachineProfile p = profile::builtin("training-lathe");
-    p.name = name; // each test its own machine in the database
-    p.setC(8, 1);  // АВТ.БЕЗ ПБТ: the program runs without the reference cycles
-    p.setC(60, 1);
-    return p;
+    return testrig::latheNamed(name, testrig::noHoming);
 }
-
-// The run of engine/run.h on the session's machine, counting the ticks in
-// which X's setpoint moves (the trapezoid the formula describes; the run's
-// own time adds the settling of the loop).
-class TimingMachine final : public engine::RunMachine {
-public:
-    explicit TimingMachine(machine::Simulation& sim) : inner_(sim) {}
-    engine::Controller& controller() override { return inner_.controller(); }
-    void tick() override {
-        inner_.tick();
-        if (inner_.controller().servo(engine::AxisId::X).moving())
-            ++movingMs_;
-    }
-    bool switchOn(std::int64_t maxMs) override { return inner_.switchOn(maxMs); }
-    void setOverrideCode(int code) override { inner_.setOverrideCode(code); }
-    void startReferenceCycle(engine::AxisId a, int dir) override { inner_.startReferenceCycle(a, dir); }
-    void pressStart() override { inner_.pressStart(); }
-    bool startHeld() const override { return inner_.startHeld(); }
-    std::vector<int> mFunctions() const override { return inner_.mFunctions(); }
-    std::int64_t movingMs_ = 0;
-
-private:
-    machine::SimulationRunMachine inner_;
-};
 
 struct MoveTime {
     double runS = -1;    // «Пуск» to the end, as `k528 run` reports it
@@ -91,14 +67,21 @@ struct MoveTime {
 MoveTime moveTime(SimulationSession& session) {
     program::ParseOptions o;
     const program::ProgramStore store = program::parse("%L1\nN1 G0 X-100\n", o).store;
-    TimingMachine m(session.simulation());
+    // The ticks in which X's setpoint moves (the trapezoid the formula
+    // describes; the run's own time adds the settling of the loop).
+    std::int64_t movingMs = 0;
+    machine::Simulation& sim = session.simulation();
+    testrig::WatchedSimulationRun m(sim, [&] {
+        if (sim.controller().servo(engine::AxisId::X).moving())
+            ++movingMs;
+    });
     engine::RunOptions options;
     options.home = false;
     const engine::RunResult r = engine::runProgram(m, store, 1, options);
     MoveTime t;
     if (r.status == engine::RunStatus::Completed)
         t.runS = r.timeS;
-    t.setpointS = static_cast<double>(m.movingMs_) / 1000.0;
+    t.setpointS = static_cast<double>(movingMs) / 1000.0;
     return t;
 }
 
@@ -138,15 +121,13 @@ private slots:
         const MoveTime t1 = moveTime(before);
         QVERIFY(t1.runS > 0);
 
-        SimulationSession session(lathe("lathe-c22"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-c22"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         const QModelIndex i = valueIndex(pane, 22);
         QCOMPARE(i.data().toString(), QStringLiteral("10666"));
         pane.noteField()->setText(QStringLiteral("slower run-up for the trainees"));
         QVERIFY(pane.filter()->setData(i, QStringLiteral("5333")));
-        QCOMPARE(session.controller().c()[22], std::int64_t(5333));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(5333));
         QCOMPARE(i.data().toString(), QStringLiteral("5333"));
         QVERIFY(pane.statusText().contains(QStringLiteral("slower run-up")));
 
@@ -165,10 +146,10 @@ private slots:
         QCOMPARE(dialog.table()->item(0, 4)->text(), QStringLiteral("5333"));
 
         // The move: t = D/V + V/A; only V/A changes with the acceleration.
-        const MoveTime t2 = moveTime(session);
+        const MoveTime t2 = moveTime(sim.session);
         QVERIFY(t2.runS > t1.runS);
-        const units::AxisScale s = profile::axisScale(session.controller().profile(), catalog::Axis::X);
-        const double v = units::speedParamToMmPerMin(session.controller().c()[42], s) / 60.0; // F УСК.АВТ., mm/s
+        const units::AxisScale s = profile::axisScale(sim.session.controller().profile(), catalog::Axis::X);
+        const double v = units::speedParamToMmPerMin(sim.session.controller().c()[42], s) / 60.0; // F УСК.АВТ., mm/s
         const double a1 = units::accelParamToMmPerS2(10666, s), a2 = units::accelParamToMmPerS2(5333, s);
         const double expected = v / a2 - v / a1;
         const double d = units::discToMm(100000, s); // the move, display mm
@@ -183,10 +164,8 @@ private slots:
     }
 
     void outOfRangeIsRefusedWithTheManualsText() {
-        SimulationSession session(lathe("lathe-range"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-range"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         pane.resize(1200, 600);
         pane.show();
         const int revs = revisionCount(pane);
@@ -206,41 +185,39 @@ private slots:
         // Committed anyway: refused, nothing changes.
         QVERIFY(!pane.filter()->setData(i, QStringLiteral("99999")));
         QVERIFY(pane.statusText().contains(m15));
-        QCOMPARE(session.controller().c()[22], std::int64_t(10666));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(10666));
         QCOMPARE(pane.editor().undoStack()->count(), 0);
         QCOMPARE(revisionCount(pane), revs);
-        QVERIFY(session.controller().alarms().empty());
+        QVERIFY(sim.session.controller().alarms().empty());
 
         // A cross-check: X's encoder on the channel of Z's (37).
-        const std::int64_t z = session.controller().c()[69];
+        const std::int64_t z = sim.session.controller().c()[69];
         QVERIFY(!pane.filter()->setData(valueIndex(pane, 17), QString::number(z)));
         const QString m37 = QString::fromUtf8(catalog::positionerMessage(37).panelText().c_str());
         QVERIFY2(pane.statusText().contains(m37), qPrintable(pane.statusText()));
-        QCOMPARE(session.controller().c()[17], std::int64_t(1));
+        QCOMPARE(sim.session.controller().c()[17], std::int64_t(1));
         // L ИМП.ДОС = 0: message 13.
         QVERIFY(!pane.editor().set(19, 0));
         QVERIFY(pane.statusText().contains(QString::fromUtf8(catalog::positionerMessage(13).panelText().c_str())));
-        QVERIFY(session.controller().alarms().empty());
+        QVERIFY(sim.session.controller().alarms().empty());
         QCOMPARE(revisionCount(pane), revs);
         // Not a number.
         QVERIFY(!pane.filter()->setData(i, QStringLiteral("12a")));
-        QCOMPARE(session.controller().c()[22], std::int64_t(10666));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(10666));
     }
 
     void undoAndRedo() {
-        SimulationSession session(lathe("lathe-undo"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-undo"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         QVERIFY(pane.editor().set(40, 120000));
         QVERIFY(pane.editor().set(41, 400000));
         QCOMPARE(pane.editor().undoStack()->count(), 2);
         pane.editor().undoStack()->undo();
-        QCOMPARE(session.controller().c()[41], std::int64_t(500000));
+        QCOMPARE(sim.session.controller().c()[41], std::int64_t(500000));
         pane.editor().undoStack()->undo();
-        QCOMPARE(session.controller().c()[40], std::int64_t(150000));
+        QCOMPARE(sim.session.controller().c()[40], std::int64_t(150000));
         pane.editor().undoStack()->redo();
-        QCOMPARE(session.controller().c()[40], std::int64_t(120000));
+        QCOMPARE(sim.session.controller().c()[40], std::int64_t(120000));
         QCOMPARE(pane.editor().store().current().cValue(40), std::int64_t(120000));
         QCOMPARE(pane.editor().store().current().cValue(41), std::int64_t(500000));
         // 1 created + 2 sets + 2 undos + 1 redo
@@ -254,14 +231,12 @@ private slots:
     // action unlocks it and the same edit goes through.
     void theTrainersLockRefusesChangesUntilUnlocked() {
         QVERIFY(setLanguage(QStringLiteral("en")));
-        SimulationSession session(lathe("lathe-lock"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-lock"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         QVERIFY(pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("8000"))); // before the lock: taken
         TrainingPane trainer([] { return std::pair<QString, QString>(); });
         QVERIFY(!trainer.lockButton()->isEnabled()); // no machine named yet
-        trainer.setMachine(session.simulation().profile());
+        trainer.setMachine(sim.session.simulation().profile());
         QVERIFY(trainer.lockButton()->isEnabled());
         QVERIFY(!trainer.lockConstants(QStringLiteral("  ")).isEmpty()); // a lock names its class
         QCOMPARE(trainer.lockConstants(QStringLiteral("TM-21")), QString());
@@ -272,40 +247,38 @@ private slots:
         // The dock refuses, naming the lock; nothing changes, nothing is kept.
         const int revs = revisionCount(pane);
         QVERIFY(!pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("5333")));
-        QCOMPARE(session.controller().c()[22], std::int64_t(8000));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(8000));
         QVERIFY2(pane.statusText().contains(QStringLiteral("locked by the trainer")) &&
                      pane.statusText().contains(QStringLiteral("TM-21")),
                  qPrintable(pane.statusText()));
         QCOMPARE(revisionCount(pane), revs);
         // Undo of the change made before the lock: refused too.
         pane.editor().undoStack()->undo();
-        QCOMPARE(session.controller().c()[22], std::int64_t(8000));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(8000));
         // An import: refused before the file is read.
         pane.importFile(QStringLiteral("/nonexistent/constants.csv"));
         QVERIFY(waitIdle(pane));
         QVERIFY2(pane.statusText().contains(QStringLiteral("TM-21")), qPrintable(pane.statusText()));
         // The K923: F5 (РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ) refused with the lock's words; other keys not.
-        ConstantsLock* lock = ConstantsLock::of(session.simulation().profile());
-        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::F5}).contains(QStringLiteral("TM-21")));
-        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::F2}).isEmpty());
-        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::Enter}).isEmpty()); // not in F5
-        ControllerState inF5 = seamSim.state();
+        ConstantsLock* lock = ConstantsLock::of(sim.session.simulation().profile());
+        QVERIFY(lock->refusesKey(sim.controller.state(), panel::KeyPress{panel::Key::F5}).contains(QStringLiteral("TM-21")));
+        QVERIFY(lock->refusesKey(sim.controller.state(), panel::KeyPress{panel::Key::F2}).isEmpty());
+        QVERIFY(lock->refusesKey(sim.controller.state(), panel::KeyPress{panel::Key::Enter}).isEmpty()); // not in F5
+        ControllerState inF5 = sim.controller.state();
         inF5.mode = 5;
         QVERIFY(!lock->refusesKey(inF5, panel::KeyPress{panel::Key::Enter}).isEmpty()); // the value written
         // Unlocking is the trainer's action; then the same edit goes through.
         QCOMPARE(trainer.unlockConstants(), QString());
         QCOMPARE(trainer.lockButton()->text(), QStringLiteral("Lock the constants…"));
         QCOMPARE(pane.editor().store().current().simulation.getString("constants.lock", "none"), std::string("none"));
-        QVERIFY(lock->refusesKey(seamSim.state(), panel::KeyPress{panel::Key::F5}).isEmpty());
+        QVERIFY(lock->refusesKey(sim.controller.state(), panel::KeyPress{panel::Key::F5}).isEmpty());
         QVERIFY(pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("5333")));
-        QCOMPARE(session.controller().c()[22], std::int64_t(5333));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(5333));
     }
 
     void filterAndSearch() {
-        SimulationSession session(lathe("lathe-filter"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-filter"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         QCOMPARE(pane.filter()->rowCount(), 152);
         pane.searchField()->setText(QStringLiteral("ускорение"));
         QCOMPARE(pane.filter()->rowCount(), 4); // C22, C23, C74, C75
@@ -327,10 +300,8 @@ private slots:
     }
 
     void importExportAndDiff() {
-        SimulationSession session(lathe("lathe-files"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-files"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         QVERIFY(pane.editor().set(22, 5000));
         const QString csv = dir_.filePath("lathe.csv");
         pane.exportFile(csv);
@@ -360,7 +331,7 @@ private slots:
         // The place is named: the file and the line of the bad value.
         QVERIFY2(pane.statusText().contains(QStringLiteral("bad.csv, line 23:")), qPrintable(pane.statusText()));
         QCOMPARE(revisionCount(pane), revs);
-        QCOMPARE(session.controller().c()[22], std::int64_t(5000));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(5000));
 
         // A cross-check error is refused by the database as `k528 db import` refuses it.
         QString clash = text;
@@ -375,7 +346,7 @@ private slots:
         QVERIFY2(pane.statusText().contains(QStringLiteral("M37")) || pane.statusText().contains(QStringLiteral("37")),
                  qPrintable(pane.statusText()));
         QCOMPARE(revisionCount(pane), revs);
-        QCOMPARE(session.controller().c()[17], std::int64_t(1));
+        QCOMPARE(sim.session.controller().c()[17], std::int64_t(1));
 
         // A good one: a revision, and the controller takes the values.
         QString good = text;
@@ -388,7 +359,7 @@ private slots:
         QVERIFY(waitIdle(pane));
         QVERIFY2(pane.statusText().contains(QStringLiteral("imported")), qPrintable(pane.statusText()));
         QCOMPARE(revisionCount(pane), revs + 1);
-        QCOMPARE(session.controller().c()[22], std::int64_t(7000));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(7000));
         QCOMPARE(valueIndex(pane, 22).data().toString(), QStringLiteral("7000"));
 
         // A machine file, exported and imported.
@@ -399,7 +370,7 @@ private slots:
         QVERIFY(pane.editor().set(22, 6000));
         pane.importFile(k528m);
         QVERIFY(waitIdle(pane));
-        QCOMPARE(session.controller().c()[22], std::int64_t(7000));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(7000));
 
         // The diff of two revisions, on a worker thread.
         const int current = pane.editor().store().revisions().front().revision;
@@ -414,10 +385,8 @@ private slots:
     }
 
     void calculatorExplainsTheFactorOfTwo() {
-        SimulationSession session(lathe("lathe-calc"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-calc"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         CalculatorDialog d(pane.editor());
         // Appendix Ж: 2 s from 0 to 5000 mm/min, 0.001 mm: printed 2133, consistent 1066.
         d.setInputs(1, 5000, 2000);
@@ -427,44 +396,42 @@ private slots:
         QVERIFY(html.contains(QStringLiteral("0.8533")));
         QVERIFY(html.contains(QStringLiteral("factor 2.00")));
         QVERIFY(d.applyToAccel1());
-        QCOMPARE(session.controller().c()[22], std::int64_t(1066));
+        QCOMPARE(sim.session.controller().c()[22], std::int64_t(1066));
         d.setInputs(3, 0.5, 0);
         QCOMPARE(d.consistentValue(), qint64(12800));
     }
 
     void rParametersLiveEditablePresets() {
-        SimulationSession session(lathe("lathe-r"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        RParamsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(lathe("lathe-r"));
+        RParamsPane pane(sim.seam, sim.session.simulation().profile());
         RParamsModel* m = pane.model();
         QCOMPARE(m->rowCount(), 300);
         // Editable where the engine allows it.
         QVERIFY(m->setData(m->index(100, RParamsModel::Value), QStringLiteral("1234")));
-        QCOMPARE(session.controller().r(100), 1234);
+        QCOMPARE(sim.session.controller().r(100), 1234);
         QVERIFY(!(m->flags(m->index(240, RParamsModel::Value)) & Qt::ItemIsEditable));
         QVERIFY(!m->setData(m->index(240, RParamsModel::Value), QStringLiteral("1")));
         QVERIFY(pane.statusText().contains(QStringLiteral("R240")));
         // A coordinate in mm (R220: the initial position of X, display discretes).
         QVERIFY(m->setData(m->index(220, RParamsModel::Mm), QStringLiteral("12.5")));
-        QCOMPARE(session.controller().r(220), 12500);
+        QCOMPARE(sim.session.controller().r(220), 12500);
         QCOMPARE(m->index(220, RParamsModel::Mm).data().toString(), QStringLiteral("12.500"));
         // Live: the machine's coordinates (R232..) as the controller has them.
-        session.advance(100);
+        sim.session.advance(100);
         for (int n : {232, 234, 240, 249})
             QCOMPARE(m->index(n, RParamsModel::Value).data().toString(),
-                     QString::number(session.controller().r(n)));
+                     QString::number(sim.session.controller().r(n)));
         // Presets kept with the machine.
         pane.selectR(100);
         QVERIFY(pane.keepSelectedAsPreset() > 0);
-        QCOMPARE(MachineStore(session.simulation().profile()).current().r.at(100), std::int64_t(1234));
+        QCOMPARE(MachineStore(sim.session.simulation().profile()).current().r.at(100), std::int64_t(1234));
         QCOMPARE(m->index(100, RParamsModel::Preset).data().toString(), QStringLiteral("1234"));
         QVERIFY(m->setData(m->index(100, RParamsModel::Value), QStringLiteral("0")));
         pane.applyPresets();
-        QCOMPARE(session.controller().r(100), 1234);
+        QCOMPARE(sim.session.controller().r(100), 1234);
         pane.selectR(100);
         QVERIFY(pane.removeSelectedPreset() > 0);
-        QVERIFY(!MachineStore(session.simulation().profile()).current().r.count(100));
+        QVERIFY(!MachineStore(sim.session.simulation().profile()).current().r.count(100));
         // Search and filters.
         pane.filter()->setSearch(QStringLiteral("r204"));
         QCOMPARE(pane.filter()->rowCount(), 1);

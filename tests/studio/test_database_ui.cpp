@@ -31,6 +31,7 @@
 #include "pty_line.h"
 #include "session/shop_database.h"
 #include "session/simulation_session.h"
+#include "rig/studio_rig.h"
 
 #include <QDialog>
 #include <QDockWidget>
@@ -53,6 +54,8 @@
 
 using namespace k528;
 using namespace k528::studio;
+using testrig::latheNamed;
+using testrig::SimulatedSeam;
 
 namespace {
 
@@ -93,12 +96,6 @@ void screenshot(QMainWindow& w, const char* dock, const QString& name) {
         if (!w.grab().save(file))
             qWarning("cannot save %s", qPrintable(file));
     }
-}
-
-profile::MachineProfile lathe(const std::string& name) {
-    profile::MachineProfile p = profile::builtin("training-lathe");
-    p.name = name;
-    return p;
 }
 
 } // namespace
@@ -162,12 +159,10 @@ private slots:
         const auto shop = ShopDatabase::at();
         shop->use([](db::Database& d) {
             if (!d.hasMachine("lathe-live"))
-                d.createMachine(lathe("lathe-live"));
+                d.createMachine(latheNamed("lathe-live"));
         });
-        SimulationSession session(lathe("lathe-live"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(latheNamed("lathe-live"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         auto* follow = pane.findChild<ConstantsFollow*>();
         QVERIFY(follow);
         QSignalSpy followed(follow, &ConstantsFollow::followed);
@@ -181,7 +176,7 @@ private slots:
         QVERIFY2(set.exitCode == 0, qPrintable(set.err));
         QTRY_COMPARE_WITH_TIMEOUT(followed.count(), 1, 10000);
         QCOMPARE(pane.editor().values()[22], wanted); // the dock shows the other process's value
-        QCOMPARE(session.simulation().profile().c[22], wanted);
+        QCOMPARE(sim.session.simulation().profile().c[22], wanted);
         QVERIFY(told.count() >= 1);
         const auto r = told.last().first().value<RevisionElsewhere>();
         QCOMPARE(r.machine, QString("lathe-live"));
@@ -205,12 +200,10 @@ private slots:
         QVERIFY(openDatabase(location_).isEmpty());
         ShopDatabase::at()->use([](db::Database& d) {
             if (!d.hasMachine("lathe-race"))
-                d.createMachine(lathe("lathe-race"));
+                d.createMachine(latheNamed("lathe-race"));
         });
-        SimulationSession session(lathe("lathe-race"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(latheNamed("lathe-race"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         auto* follow = pane.findChild<ConstantsFollow*>();
         QVERIFY(follow);
         const int known = pane.editor().store().known();
@@ -250,7 +243,7 @@ private slots:
         ShopDatabase::at()->use([](db::Database& d) {
             for (const char* name : {"lathe-log-a", "lathe-log-b"}) {
                 if (!d.hasMachine(name))
-                    d.createMachine(lathe(name));
+                    d.createMachine(latheNamed(name));
                 db::TransferEntry t;
                 t.machine = name;
                 t.revision = 1;
@@ -287,7 +280,7 @@ private slots:
         int revision = 0;
         ShopDatabase::at()->use([&](db::Database& d) {
             if (!d.hasMachine("lathe-push")) {
-                profile::MachineProfile m = lathe("lathe-push");
+                profile::MachineProfile m = latheNamed("lathe-push");
                 m.programs.clear(); // L77 and L78 only
                 m.programs[77] = l77text;
                 m.programs[78] = l78text;
@@ -311,7 +304,7 @@ private slots:
         QVERIFY2(plugin, qPrintable(error));
         linkplugin::LineSettings line;
         line.port = b;
-        LinkController link(*plugin, line, lathe("lathe-push"));
+        LinkController link(*plugin, line, latheNamed("lathe-push"));
         QSignalSpy opened(&link, &LinkController::opened);
         link.open();
         QVERIFY(opened.wait(15000));
@@ -319,7 +312,7 @@ private slots:
 
         QSignalSpy recorded(&link, &LinkController::transferRecorded);
         QSignalSpy pushed(&link, &LinkController::pushed);
-        profile::MachineProfile p = lathe("lathe-push");
+        profile::MachineProfile p = latheNamed("lathe-push");
         p.programs.clear();
         p.programs[77] = l77text;
         p.programs[78] = l78text;
@@ -404,7 +397,7 @@ private slots:
         QVERIFY(openDatabase(location_).isEmpty());
         const int n = ShopDatabase::at()->use([](db::Database& d) {
             if (!d.hasMachine("lathe-rel"))
-                d.createMachine(lathe("lathe-rel"));
+                d.createMachine(latheNamed("lathe-rel"));
             return d.programReleases("lathe-rel").front().number;
         });
         EditorTab tab(nullptr);
@@ -544,7 +537,7 @@ private slots:
             ShopDatabase::at(db::Location::parse(where.toStdString()))->use([&](db::Database& d) {
                 if (d.hasMachine(name))
                     d.removeMachine(name);
-                profile::MachineProfile p = lathe(name);
+                profile::MachineProfile p = latheNamed(name);
                 p.c[22] = 5000;
                 p.r[10] = first ? 15 : 25;
                 d.createMachine(p);
@@ -632,7 +625,7 @@ private slots:
         QVERIFY(openDatabase(ownerText).isEmpty());
         const int program = ShopDatabase::at()->use([&](db::Database& d) {
             if (!d.hasMachine(name))
-                d.createMachine(lathe(name));
+                d.createMachine(latheNamed(name));
             return d.programReleases(name).front().number;
         });
         Ran ran = runK528({"db", "roles", "--db", ownerText});

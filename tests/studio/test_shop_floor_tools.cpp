@@ -15,6 +15,7 @@
 #include "rparams/rparams_dock.h"
 #include "rparams/trial_dialog.h"
 #include "session/simulation_session.h"
+#include "rig/studio_rig.h"
 
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -27,16 +28,8 @@
 
 using namespace k528;
 using namespace k528::studio;
-
-namespace {
-
-profile::MachineProfile lathe(const std::string& name) {
-    profile::MachineProfile p = profile::builtin("training-lathe");
-    p.name = name; // each test its own machine in the database
-    return p;
-}
-
-} // namespace
+using testrig::latheNamed;
+using testrig::SimulatedSeam;
 
 class TestShopFloorTools : public QObject {
     Q_OBJECT
@@ -68,10 +61,8 @@ private slots:
     }
 
     void cuttingDataBesideTheCalculator() {
-        SimulationSession session(lathe("lathe-cutting"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        ConstantsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(latheNamed("lathe-cutting"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
         auto* b = pane.findChild<QToolButton*>("constants.cuttingData");
         QVERIFY(b);
         b->click();
@@ -85,11 +76,15 @@ private slots:
     // machine's next revision with the measurement as its note, and set in
     // the controller.
     void trialPartKeepsTheOffset() {
-        SimulationSession session(lathe("lathe-trial"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        RParamsPane pane(seam, session.simulation().profile());
+        SimulatedSeam sim(latheNamed("lathe-trial"));
+        RParamsPane pane(sim.seam, sim.session.simulation().profile());
         TrialPartDialog* d = pane.trialPartDialog();
+        // Opened: both sizes 0, nothing computed from them, nothing to keep.
+        QCOMPARE(d->findChild<QDoubleSpinBox*>("trial.measured")->value(), 0.0);
+        QCOMPARE(d->findChild<QDoubleSpinBox*>("trial.drawing")->value(), 0.0);
+        QVERIFY(!d->correction());
+        QVERIFY(!d->keepButton()->isEnabled());
+        QVERIFY2(d->result()->text().startsWith("Enter the size"), qPrintable(d->result()->text()));
         d->setInputs(2, true, 40.06, 40.00);
         QVERIFY(d->correction());
         QCOMPARE(d->correction()->rNumber, 102);
@@ -97,8 +92,8 @@ private slots:
         QVERIFY2(d->result()->text().contains("1140"), qPrintable(d->result()->text()));
         QVERIFY(d->keepButton()->isEnabled());
         d->keepButton()->click();
-        QCOMPARE(MachineStore(session.simulation().profile()).current().r.at(102), std::int64_t(1140));
-        QCOMPARE(session.controller().r(102), 1140);
+        QCOMPARE(MachineStore(sim.session.simulation().profile()).current().r.at(102), std::int64_t(1140));
+        QCOMPARE(sim.session.controller().r(102), 1140);
         QVERIFY2(pane.statusText().contains("trial part: T2 X measured 40.060 for 40.000"), qPrintable(pane.statusText()));
         // Z of the same tool: R103.
         TrialPartDialog* z = pane.trialPartDialog();
@@ -108,20 +103,19 @@ private slots:
         // No error, no change: nothing to keep.
         z->setInputs(2, false, -50, -50);
         QVERIFY(!z->keepButton()->isEnabled());
+        QVERIFY2(z->result()->text().contains("(offset 0.000 mm)"), qPrintable(z->result()->text())); // not «-0.000»
         z->close();
     }
 
     void teachIn() {
-        SimulationSession session(lathe("lathe-teach"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
+        SimulatedSeam sim(latheNamed("lathe-teach"));
+        EditorTab tab(&sim.seam);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
         ed->setText("%L1\nN5 G90 G0 X100 Z50\nN10 M30\n");
         ed->setCursorPosition(1, 0);
-        session.advance(50);
-        const auto& axes = seam.current().state().axes;
+        sim.session.advance(50);
+        const auto& axes = sim.seam.current().state().axes;
         const double x = units::discToMm(axes[0].currentDisc, axes[0].scale);
         QString taught;
         QVERIFY(tab.teachPosition(&taught));

@@ -14,7 +14,8 @@
 #include "main_window.h"
 #include "session/machine_source.h"
 #include "shop/shop_view.h"
-#include "shop_machines.h"
+#include "rig/mqtt_broker.h"
+#include "rig/shop_machines.h"
 #include "test_util.h"
 #include "workspace/workspaces.h"
 
@@ -44,24 +45,22 @@
 
 using namespace k528;
 using namespace k528::studio;
+using namespace k528::testrig;
 
 namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
-const QString kF7 = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
 constexpr int kMachines = 16; // a shop's row of machines: the page must hold them all
-
-QString machineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLatin1Char('0')); }
 
 } // namespace
 
 class TestShopView : public QObject {
     Q_OBJECT
     QTemporaryDir dir_;
-    tcptest::ShopMachines shop_;
+    ShopMachines shop_;
 
     // m01 in F7 «РАБОТА С ПЭВМ», the others in F2 (after power-on).
-    QStringList keysOf(int i) const { return i == 0 ? QStringList{"--keys", kF7} : QStringList{}; }
+    QStringList keysOf(int i) const { return i == 0 ? QStringList{"--keys", kWorkWithPcKeys} : QStringList{}; }
 
 private slots:
     void initTestCase() {
@@ -71,10 +70,8 @@ private slots:
         QVERIFY(dir_.isValid());
         qputenv("K528_DB", dir_.filePath("shop.db").toUtf8());
         qputenv("K528_PLUGIN_PATH", QFileInfo(QStringLiteral(K528_TCP_PLUGIN)).absolutePath().toUtf8());
-        QStringList names;
-        for (int i = 0; i < kMachines; ++i)
-            names << machineName(i);
-        const QString failed = shop_.start(kCli, QDir(dir_.path()), names, [this](int i) { return keysOf(i); });
+        const QString failed = shop_.start(kCli, QDir(dir_.path()), shopMachineNames(kMachines),
+                                           [this](int i) { return keysOf(i); });
         QVERIFY2(failed.isEmpty(), qPrintable(failed));
     }
     void cleanupTestCase() { shop_.stop(); }
@@ -94,9 +91,9 @@ private slots:
         QVERIFY(shop->polling());
         QCOMPARE(static_cast<int>(shop->tiles().size()), kMachines);
         for (int i = 0; i < kMachines; ++i) {
-            ShopTile* t = shop->tile(machineName(i));
+            ShopTile* t = shop->tile(shopMachineName(i));
             QVERIFY(t);
-            QTRY_VERIFY_WITH_TIMEOUT(shop->state(machineName(i))->online, 10000);
+            QTRY_VERIFY_WITH_TIMEOUT(shop->state(shopMachineName(i))->online, 10000);
         }
         QTRY_VERIFY_WITH_TIMEOUT(shop->tile("m01")->modeText().contains("F7"), 5000);
         QVERIFY(shop->tile("m01")->modeText().contains("РАБОТА С ПЭВМ"));
@@ -152,7 +149,7 @@ private slots:
         QCOMPARE(dock->machineBox()->count(), kMachines + 1);
         QVERIFY(dock->machineBox()->itemText(1).contains(QString::number(shop_.ports[0])));
         for (int i : {2, 0}) {
-            const QString name = machineName(i);
+            const QString name = shopMachineName(i);
             QTRY_VERIFY(shop->tile(name)->isVisible());
             QTest::mouseClick(shop->tile(name), Qt::LeftButton, {}, QPoint(20, 20));
             QTRY_VERIFY_WITH_TIMEOUT(dock->link() && dock->link()->isOpen() &&
@@ -186,7 +183,7 @@ private slots:
                 ShopView* shop = w.shopView();
                 QCOMPARE(static_cast<int>(shop->tiles().size()), kMachines);
                 for (int i = 0; i < kMachines; ++i)
-                    QTRY_VERIFY_WITH_TIMEOUT(shop->state(machineName(i)) && shop->state(machineName(i))->online,
+                    QTRY_VERIFY_WITH_TIMEOUT(shop->state(shopMachineName(i)) && shop->state(shopMachineName(i))->online,
                                              10000);
                 QTRY_VERIFY_WITH_TIMEOUT(shop->tile("m16")->modeText().contains("F2"), 5000);
                 auto* scroll = shop->findChild<QScrollArea*>("shop.tiles");
@@ -197,13 +194,13 @@ private slots:
                                         .arg(scroll->viewport()->height())));
                 int seen = 0;
                 for (int i = 0; i < kMachines; ++i) {
-                    ShopTile* t = shop->tile(machineName(i));
+                    ShopTile* t = shop->tile(shopMachineName(i));
                     scroll->ensureWidgetVisible(t, 0, 0);
                     QApplication::processEvents();
                     // Whole in the viewport once scrolled to, as wide as it asks.
                     const QRect r(t->mapTo(scroll->viewport(), QPoint(0, 0)), t->size());
                     QVERIFY2(scroll->viewport()->rect().contains(r),
-                             qPrintable(QStringLiteral("%1 at %2x%3 %4").arg(machineName(i)).arg(size.width())
+                             qPrintable(QStringLiteral("%1 at %2x%3 %4").arg(shopMachineName(i)).arg(size.width())
                                             .arg(size.height()).arg(lang)));
                     QVERIFY(t->width() >= t->minimumSizeHint().width());
                     ++seen;
@@ -214,8 +211,8 @@ private slots:
                 auto* axis = qobject_cast<QBarCategoryAxis*>(shop->chartView()->chart()->axes(Qt::Vertical).value(0));
                 QVERIFY(axis);
                 QCOMPARE(axis->categories().size(), kMachines);
-                QCOMPARE(axis->categories().constLast(), machineName(0));
-                QCOMPARE(axis->categories().constFirst(), machineName(kMachines - 1));
+                QCOMPARE(axis->categories().constLast(), shopMachineName(0));
+                QCOMPARE(axis->categories().constFirst(), shopMachineName(kMachines - 1));
                 scroll->ensureWidgetVisible(shop->tile("m01"), 0, 0);
                 QApplication::processEvents();
                 if (!shots.isEmpty()) {
@@ -248,24 +245,13 @@ private slots:
         }
         QTemporaryDir config;
         QVERIFY(config.isValid());
-        std::vector<quint16> port;
-        QProcess broker;
-        const bool mqtt = !QStandardPaths::findExecutable("mosquitto").isEmpty() &&
-                          !QStandardPaths::findExecutable("mosquitto_sub").isEmpty();
+        MqttBroker broker;
+        const bool mqtt = mosquittoInstalled();
         {
             QSettings settings(config.filePath("K528Studio/k528studio.conf"), QSettings::IniFormat);
             if (mqtt) {
-                port = tcptest::freePorts(1);
-                broker.start("mosquitto", {"-p", QString::number(port[0])});
-                QVERIFY(broker.waitForStarted());
-                QTRY_VERIFY_WITH_TIMEOUT(
-                    [&] {
-                        QTcpSocket s;
-                        s.connectToHost("127.0.0.1", port[0]);
-                        return s.waitForConnected(200);
-                    }(),
-                    10000);
-                settings.setValue("shop/broker", "mqtt://127.0.0.1:" + QString::number(port[0]));
+                QVERIFY(broker.start(freePorts(1).at(0)));
+                settings.setValue("shop/broker", broker.url());
                 settings.setValue("shop/publish", true);
             }
         }
@@ -304,46 +290,32 @@ private slots:
         }
         if (mqtt) {
             QProcess sub;
-            sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/_publisher/#",
-                                        "-v", "-C", "1", "-W", "10"});
+            broker.subscribe(sub, "k528/_publisher/#", 1, 10);
             QVERIFY(sub.waitForFinished(15000));
             const QString bye = QString::fromUtf8(sub.readAllStandardOutput());
             QVERIFY2(bye.contains("\"online\":false") && bye.contains("\"why\":\"stopped\"") &&
                          !bye.contains("last will"),
                      qPrintable(bye));
-            sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/+/state", "-v",
-                                        "-C", QString::number(kMachines), "-W", "10"});
+            broker.subscribe(sub, "k528/+/state", kMachines, 10);
             QVERIFY(sub.waitForFinished(15000));
             QCOMPARE(QString::fromUtf8(sub.readAllStandardOutput()).count("/state {"), kMachines);
-            broker.terminate();
-            broker.waitForFinished(5000);
         }
     }
 
     // Publish to MQTT: the same topics as k528 shop publish, into a broker
     // started here; the poller goes on while the page is hidden.
     void publishesToMqtt() {
-        if (QStandardPaths::findExecutable("mosquitto").isEmpty() ||
-            QStandardPaths::findExecutable("mosquitto_sub").isEmpty())
+        if (!mosquittoInstalled())
             QSKIP("mosquitto is not installed");
-        const std::vector<quint16> port = tcptest::freePorts(1);
-        QProcess broker;
-        broker.start("mosquitto", {"-p", QString::number(port[0])});
-        QVERIFY(broker.waitForStarted());
-        QTRY_VERIFY_WITH_TIMEOUT(
-            [&] {
-                QTcpSocket s;
-                s.connectToHost("127.0.0.1", port[0]);
-                return s.waitForConnected(200);
-            }(),
-            10000);
+        MqttBroker broker;
+        QVERIFY(broker.start(freePorts(1).at(0)));
         {
             MainWindow w(loadMachine("training-lathe"));
             w.show();
             QVERIFY(QTest::qWaitForWindowExposed(&w));
             QVERIFY(w.workspaces()->activate("shop"));
             ShopView* shop = w.shopView();
-            shop->brokerBox()->setText("mqtt://127.0.0.1:" + QString::number(port[0]));
+            shop->brokerBox()->setText(broker.url());
             QSignalSpy on(shop, &ShopView::publishingChanged);
             shop->publishBox()->setChecked(true);
             QTRY_VERIFY_WITH_TIMEOUT(shop->publishing(), 10000);
@@ -353,13 +325,12 @@ private slots:
             QApplication::processEvents();
             QVERIFY(shop->polling());
             QProcess sub;
-            sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/+/state", "-v",
-                                        "-C", QString::number(kMachines), "-W", "20"});
+            broker.subscribe(sub, "k528/+/state", kMachines, 20);
             QVERIFY(sub.waitForStarted());
             QVERIFY(sub.waitForFinished(30000));
             const QString got = QString::fromUtf8(sub.readAllStandardOutput());
             for (int i = 0; i < kMachines; ++i)
-                QVERIFY2(got.contains("k528/" + machineName(i) + "/state {"), qPrintable(got));
+                QVERIFY2(got.contains("k528/" + shopMachineName(i) + "/state {"), qPrintable(got));
             QVERIFY2(got.contains("\"mode\":7"), qPrintable(got));
             shop->publishBox()->setChecked(false);
             QVERIFY(!shop->publishing());
@@ -368,13 +339,10 @@ private slots:
         }
         // The goodbye: the publisher's status retained as offline, "stopped".
         QProcess sub;
-        sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port[0]), "-t", "k528/_publisher/#", "-v",
-                                    "-C", "1", "-W", "10"});
+        broker.subscribe(sub, "k528/_publisher/#", 1, 10);
         QVERIFY(sub.waitForFinished(15000));
         const QString bye = QString::fromUtf8(sub.readAllStandardOutput());
         QVERIFY2(bye.contains("\"online\":false") && bye.contains("stopped"), qPrintable(bye));
-        broker.terminate();
-        broker.waitForFinished(5000);
     }
 };
 

@@ -7,14 +7,27 @@
 #pragma once
 
 #include "cli_runner.h"
-#include "tcp_serve.h"
+#include "rig/tcp_serve.h"
 
 #include <QDir>
+#include <QStringList>
 #include <functional>
 #include <memory>
 #include <vector>
 
-namespace tcptest {
+namespace k528::testrig {
+
+// The keys that put a served controller in F7 «РАБОТА С ПЭВМ» (after power-on it is in F2).
+inline const QString kWorkWithPcKeys = QStringLiteral("F7 1 1 1 1 ENTER DOWN DOWN ENTER");
+
+// A shop's row of machines: m01, m02, …
+inline QString shopMachineName(int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLatin1Char('0')); }
+inline QStringList shopMachineNames(int n) {
+    QStringList names;
+    for (int i = 0; i < n; ++i)
+        names << shopMachineName(i);
+    return names;
+}
 
 class ShopMachines {
 public:
@@ -74,4 +87,4 @@ public:
     void stop() { serves.clear(); }
 };
 
-} // namespace tcptest
+} // namespace k528::testrig

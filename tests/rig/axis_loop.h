@@ -2,6 +2,7 @@
 // axis as the engine runs it. Constants of appendix Ж (grinder 205), axis Z.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -10,25 +11,23 @@
 #include "axis/mechanics.h"
 #include "axis/servo.h"
 
-namespace rig {
-
-using namespace k528::axis;
+namespace k528::testrig {
 
 // Appendix Ж, table Ж.1, C53..C100 (axis Z), written out independently.
-inline Constants grinderZ() {
+inline axis::Constants grinderZ() {
     std::array<std::int64_t, 153> c{};
     const std::int64_t z[] = {1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 3, 2, 1, 2, 2500, 4445, 17780, 0, 5,
                               131, 13, 2395, 2047, 1000, 10, 800, 20, 0, 0, 400, 0, 0, 0, 500000, 600000, 500000,
                               5000, 500, 190000, -1000, 200000, 0};
     for (int i = 0; i < 48; ++i)
         c[static_cast<std::size_t>(53 + i)] = z[i];
-    return Constants::fromC(c, AxisId::Z);
+    return axis::Constants::fromC(c, axis::AxisId::Z);
 }
 
 // Mechanics of the grinder's Z: 5 mm per motor revolution, 2500 lines,
 // 5 V at 10 m/min (2000 mm/min per volt), 4 ms speed-loop lag.
-inline MechanicsSettings grinderZMechanics() {
-    MechanicsSettings m;
+inline axis::MechanicsSettings grinderZMechanics() {
+    axis::MechanicsSettings m;
     m.screwLeadMm = 5.0;
     m.encoderLines = 2500;
     m.speedPerVoltMmPerMin = 2000.0;
@@ -38,15 +37,16 @@ inline MechanicsSettings grinderZMechanics() {
     return m;
 }
 
-struct Rig {
-    Servo servo;
-    Mechanics mech;
-    ServoInputs in;
+struct AxisLoop {
+    axis::Servo servo;
+    axis::Mechanics mech;
+    axis::ServoInputs in;
     std::int64_t timeMs = 0;
     double maxAbsError = 0;
 
-    explicit Rig(const Constants& k = grinderZ(), const MechanicsSettings& m = grinderZMechanics())
-        : servo(AxisId::Z, k), mech(m) {
+    explicit AxisLoop(const axis::Constants& k = grinderZ(),
+                      const axis::MechanicsSettings& m = grinderZMechanics())
+        : servo(axis::AxisId::Z, k), mech(m) {
         step(); // first contact: an incremental encoder reads 0 at power-on
         // As after the reference-point cycle: machine system = slide position.
         servo.setActualValue(mm(m.startSlideMm));
@@ -84,4 +84,4 @@ struct Rig {
     static double mm(double v) { return v * 2000.0; }
 };
 
-} // namespace rig
+} // namespace k528::testrig

@@ -3,56 +3,74 @@
 // machine's panel and the K923, waiting, and the PLC's messages.
 #pragma once
 
-#include "engine/load_programs.h"
 #include "machine/run.h"
 #include "machine/simulation.h"
-#include "profile/builtin.h"
-#include "program/parser.h"
+#include "units/units.h"
+#include "rig/controller_rig.h"
 
-#include <QtTest>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
-namespace mrig {
+namespace k528::testrig {
 
-using namespace k528;
-using engine::AxisId;
-using engine::Mode;
-using engine::ProgramState;
 using machine::Button;
 using machine::Fault;
 using machine::FaultSpec;
 
-inline constexpr AxisId X = AxisId::X;
-inline constexpr AxisId Z = AxisId::Z;
+// The simulated machine as engine/run.h drives it (machine::SimulationRunMachine),
+// calling `afterTick` after every tick: a test that watches a whole run.
+class WatchedSimulationRun final : public engine::RunMachine {
+public:
+    WatchedSimulationRun(machine::Simulation& sim, std::function<void()> afterTick)
+        : inner_(sim), afterTick_(std::move(afterTick)) {}
+    engine::Controller& controller() override { return inner_.controller(); }
+    void tick() override {
+        inner_.tick();
+        afterTick_();
+    }
+    bool switchOn(std::int64_t maxMs) override { return inner_.switchOn(maxMs); }
+    void setOverrideCode(int code) override { inner_.setOverrideCode(code); }
+    void startReferenceCycle(AxisId a, int dir) override { inner_.startReferenceCycle(a, dir); }
+    void pressStart() override { inner_.pressStart(); }
+    bool startHeld() const override { return inner_.startHeld(); }
+    std::vector<int> mFunctions() const override { return inner_.mFunctions(); }
 
-struct Rig {
-    profile::MachineProfile prof;
+private:
+    machine::SimulationRunMachine inner_;
+    std::function<void()> afterTick_;
+};
+
+class MachineRig : public ControllerRig {
+public:
     std::unique_ptr<machine::Simulation> sim;
 
-    explicit Rig(std::string_view name = "training-lathe",
-                 const std::function<void(profile::MachineProfile&)>& tweak = {}) {
-        prof = profile::builtin(name);
-        if (tweak)
-            tweak(prof);
-        sim = std::make_unique<machine::Simulation>(prof);
+    explicit MachineRig(std::string_view name = "training-lathe", const ProfileTweak& tweak = {})
+        : ControllerRig(tweakedProfile(name, tweak)), sim(std::make_unique<machine::Simulation>(prof)) {
         sim->powerOn();
         sim->advance(20);
     }
 
+    engine::Controller& c() override { return sim->controller(); }
+    const engine::Controller& c() const override { return sim->controller(); }
+    bool until(const std::function<bool()>& done, std::int64_t maxMs) override {
+        return sim->runUntil(done, maxMs);
+    }
+    // ПБТ with the jog buttons, as `k528 run` does over the simulated machine.
+    std::unique_ptr<engine::RunMachine> runMachine() override {
+        return std::make_unique<machine::SimulationRunMachine>(*sim);
+    }
+
     machine::Simulation& s() { return *sim; }
-    engine::Controller& c() { return sim->controller(); }
     const engine::InterfaceWords& w() { return sim->controller().words(); }
-    bool bit(engine::ZBit b) { return w().bit(b); }
     std::optional<bool> plc(std::string_view name) { return sim->plc().signal(name); }
 
     void tick() { sim->tick(); }
     void advance(std::int64_t ms) { sim->advance(ms); }
-    bool until(const std::function<bool()>& done, std::int64_t maxMs) {
-        return sim->runUntil(done, maxMs);
-    }
     // A push of the operator's hand (100 ms) and time for the PLC to see it.
     void push(Button b, std::int64_t holdMs = 100) {
         sim->pressFor(b, holdMs);
@@ -74,20 +92,6 @@ struct Rig {
             5000);
     }
 
-    // ПБТ with the jog buttons, X first, as `k528 run` does
-    // (engine::homeAxes over the simulated machine). False on failure.
-    bool home() {
-        machine::SimulationRunMachine run(*sim);
-        return engine::homeAxes(run).status == engine::RunStatus::Completed;
-    }
-
-    void load(const std::string& text) {
-        const program::ParseResult r = program::parse(text);
-        QVERIFY2(!r.hasErrors(),
-                 r.diagnostics.empty() ? "parse error" : r.diagnostics.front().messageEn.c_str());
-        QVERIFY(engine::loadPrograms(c(), r.store).ok());
-    }
-
     // АВТОМАТ, program n, «Пуск» on the machine's panel, until it started.
     bool start(int n) {
         c().selectMode(Mode::Auto);
@@ -101,26 +105,7 @@ struct Rig {
                    1000) &&
                c().state() != ProgramState::Alarm;
     }
-    bool untilState(ProgramState st, std::int64_t maxMs) {
-        return until([&] { return c().state() == st; }, maxMs);
-    }
-    bool runToEnd(std::int64_t maxMs = 600000) {
-        return until(
-            [&] {
-                const ProgramState st = c().state();
-                return st == ProgramState::Ended || st == ProgramState::Alarm ||
-                       st == ProgramState::Idle;
-            },
-            maxMs);
-    }
 
-    bool hasAlarm(int n) { return c().alarmRegistry().latched(n); }
-    std::vector<int> alarms() {
-        std::vector<int> v;
-        for (const auto& a : c().alarms())
-            v.push_back(a.number);
-        return v;
-    }
     bool plcAlarm(int k) { return (c().plcMessages().alarms >> (k - 1)) & 1u; }
     bool plcAlarmPresent(int k) { return (c().plcMessages().alarmsPresent >> (k - 1)) & 1u; }
     bool work(int k) { return (c().plcMessages().work >> (k - 1)) & 1u; }
@@ -140,6 +125,7 @@ struct Rig {
     double mm(AxisId a) {
         return units::discToMm(c().axisView(a).currentDisc, c().axisView(a).scale);
     }
+    // The positioner's alarms and the PLC's («A3»), for a failed check's message.
     std::string alarmList() {
         std::string s;
         for (const auto& a : c().alarms())
@@ -152,4 +138,4 @@ struct Rig {
     }
 };
 
-} // namespace mrig
+} // namespace k528::testrig

@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-namespace tcptest {
+namespace k528::testrig {
 
 // `n` distinct free ports of 127.0.0.1, below 32768 (mbpoll 1.0 reads the
 // port as a signed 16-bit number: the kernel's ephemeral ports are above
@@ -41,7 +41,7 @@ public:
     Serve(QString cli, quint16 port) : cli_(std::move(cli)), port_(port) {}
     ~Serve() { stop(); }
     quint16 port() const { return port_; }
-    QString address() const { return tcptest::address(port_); }
+    QString address() const { return testrig::address(port_); }
     // Starts it and waits until it says it serves; false (with what it said) when it does not.
     bool start(const QStringList& more = {}, QByteArray* said = nullptr) {
         begin(more);
@@ -91,4 +91,4 @@ private:
     QProcess p_;
 };
 
-} // namespace tcptest
+} // namespace k528::testrig

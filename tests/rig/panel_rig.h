@@ -3,39 +3,33 @@
 // `--keys` ("F2 MODE 1 2 ENTER WAIT:2"), the four lines read back.
 #pragma once
 
-#include "engine/engine_rig.h" // tests/engine: the controller on the ideal machine
 #include "panel/lcd_font.h"
 #include "panel/panel.h"
 #include "panel/screens/cparams.h"
 #include "panel/screens/password.h"
 #include "panel/screens/presets.h"
 #include "panel/screens/program_editor.h"
+#include "rig/engine_rig.h"
 #include "util/utf8.h"
 
 #include <QtTest>
-#include <functional>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <string_view>
 
-namespace prig {
+namespace k528::testrig {
 
-using namespace k528;
-using engine::AxisId;
-using engine::Mode;
 using panel::Key;
 using panel::KeyPress;
 
-inline constexpr AxisId X = AxisId::X;
-inline constexpr AxisId Z = AxisId::Z;
-
 // The engine tests' rig with the K923 model over its controller.
-struct Rig : rig::Rig {
+class PanelRig : public EngineRig {
+public:
     std::unique_ptr<panel::Panel> p;
 
-    explicit Rig(const std::function<void(profile::MachineProfile&)>& tweak = {},
-                 std::string_view name = "training-lathe")
-        : rig::Rig(name, tweak), p(std::make_unique<panel::Panel>(*ctl)) {}
+    explicit PanelRig(const ProfileTweak& tweak = {}, std::string_view name = "training-lathe")
+        : EngineRig(name, tweak), p(std::make_unique<panel::Panel>(*ctl)) {}
 
     // Presses the keys of a --keys string; WAIT:S lets S seconds pass.
     void keys(std::string_view text) {
@@ -72,18 +66,16 @@ struct Rig : rig::Rig {
     }
     QString line(int row) { return lines().at(row); }
 
-    // Homes the present axes with the machine's direction buttons, X first,
-    // as `k528 run` does (engine::homeAxes); then a second for the displays.
+    // Homes the present axes as EngineRig does, then a second for the displays.
     bool home() {
-        engine::IdealRunMachine run(*ctl, *m);
-        if (engine::homeAxes(run).status != engine::RunStatus::Completed)
+        if (!EngineRig::home())
             return false;
         m->advance(1000);
         return ctl->axisView(X).referenced && ctl->axisView(Z).referenced;
     }
 };
 
-// Trailing blanks removed, as Rig::lines() gives them.
+// Trailing blanks removed, as PanelRig::lines() gives them.
 inline QStringList expect(std::initializer_list<const char*> l) {
     QStringList out;
     for (const char* s : l) {
@@ -95,7 +87,4 @@ inline QStringList expect(std::initializer_list<const char*> l) {
     return out;
 }
 
-// A profile whose axes run programs without homing (АВТ.БЕЗ ПБТ = 1).
-using rig::noHoming;
-
-} // namespace prig
+} // namespace k528::testrig
