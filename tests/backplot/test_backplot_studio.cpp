@@ -14,6 +14,7 @@
 #include "main_window.h"
 #include "workspace/workspaces.h"
 #include "program/parser.h"
+#include "proveout/proveout_pane.h"
 #include "session/simulation_session.h"
 
 #include <algorithm>
@@ -32,6 +33,7 @@
 #include <QSpinBox>
 #include <QTimer>
 #include <QToolButton>
+#include <QTreeView>
 #include <QTabWidget>
 #include <QWheelEvent>
 #include <QTemporaryDir>
@@ -174,6 +176,66 @@ private slots:
         QCOMPARE(spy.at(1).at(1).toInt(), 4);
         s.editor->currentEditor()->getCursorPosition(&line, &index);
         QCOMPARE(line, 3);
+    }
+    // The prove-out's finding of the editor's file (a facing whose return
+    // rapid cuts through the bar) as a red disc at its place on the path
+    // the backplot shows, seen on the screen; ringed when its Problems
+    // entry is activated; gone when the program is made safe.
+    void aFindingIsARedMarkerAtItsPlace() {
+        Studio s("; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
+                 "%L1 (FACE)\n"
+                 "N1 G90 G0 M3 X44 Z2\n"
+                 "N2 Z-1\n"
+                 "N3 G1 X-1 FX150\n"
+                 "N4 G0 X44 Z-20\n"
+                 "N5 M30\n");
+        QVERIFY(s.showPath());
+        auto* pane = s.w.findChild<studio::ProveoutPane*>();
+        QVERIFY(pane);
+        QTRY_COMPARE_WITH_TIMEOUT(pane->findings().size(), std::size_t(1), 20000);
+        const proveout::Finding f = pane->findings()[0];
+        QCOMPARE(f.line, 6);
+        QTRY_COMPARE(s.view->scene().findingsShown().size(), std::size_t(1));
+        QCOMPARE(s.view->scene().findingsShown()[0].z, f.at.z);
+        auto* gl = s.view->glWidget();
+        const auto& red = k528::backplot::kFindingColour;
+        const auto redAt = [&](QPoint p) {
+            const QImage img = s.w.screen()->grabWindow(s.w.winId()).toImage();
+            const QColor c(img.pixel(gl->mapTo(&s.w, p)));
+            return std::abs(c.redF() - red.r) < 0.1 && std::abs(c.greenF() - red.g) < 0.1 &&
+                   std::abs(c.blueF() - red.b) < 0.1;
+        };
+        const QPoint at = s.pixelOf(f.at.z, f.at.x);
+        QTRY_VERIFY_WITH_TIMEOUT(redAt(at), 10000);
+        QVERIFY(!redAt(at + QPoint(40, 0)));
+        // Its Problems entry activated: the editor on the line, the marker ringed.
+        QAbstractItemModel* problems = s.editor->problems()->model();
+        QCOMPARE(problems->rowCount(), 1);
+        QCOMPARE(problems->index(0, 3).data().toString(), QString("rapid-into-material"));
+        const QPoint ring = at + QPoint(k528::backplot::BackplotScene::kFindingRadiusPx + 8, 0);
+        const auto whiteAt = [&](QPoint p) {
+            const QImage img = s.w.screen()->grabWindow(s.w.winId()).toImage();
+            for (int d = -1; d <= 1; ++d)
+                if (QColor(img.pixel(gl->mapTo(&s.w, p + QPoint(d, 0)))).lightnessF() > 0.9)
+                    return true;
+            return false;
+        };
+        QVERIFY(!whiteAt(ring));
+        emit s.editor->problems()->activated(problems->index(0, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(whiteAt(ring), 10000);
+        // Made safe: the finding and its marker are gone.
+        s.editor->currentEditor()->setText("; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
+                                           "%L1 (FACE)\n"
+                                           "N1 G90 G0 M3 X44 Z2\n"
+                                           "N2 Z-1\n"
+                                           "N3 G1 X-1 FX150\n"
+                                           "N4 G0 Z2\n"
+                                           "N5 X44\n"
+                                           "N6 M30\n");
+        QTRY_VERIFY_WITH_TIMEOUT(pane->findings().empty() && pane->proofs() > 1, 20000);
+        QTRY_VERIFY(s.view->scene().findingsShown().empty());
+        QTRY_VERIFY_WITH_TIMEOUT(!redAt(at), 10000);
+        QCOMPARE(problems->rowCount(), 0);
     }
     void theWheelZoomsToTheCursor() {
         Studio s;

@@ -79,6 +79,12 @@ private slots:
         SimulatedSeam sim(latheNamed("lathe-trial"));
         RParamsPane pane(sim.seam, sim.session.simulation().profile());
         TrialPartDialog* d = pane.trialPartDialog();
+        // Opened: both sizes 0, nothing computed from them, nothing to keep.
+        QCOMPARE(d->findChild<QDoubleSpinBox*>("trial.measured")->value(), 0.0);
+        QCOMPARE(d->findChild<QDoubleSpinBox*>("trial.drawing")->value(), 0.0);
+        QVERIFY(!d->correction());
+        QVERIFY(!d->keepButton()->isEnabled());
+        QVERIFY2(d->result()->text().startsWith("Enter the size"), qPrintable(d->result()->text()));
         d->setInputs(2, true, 40.06, 40.00);
         QVERIFY(d->correction());
         QCOMPARE(d->correction()->rNumber, 102);
@@ -97,6 +103,7 @@ private slots:
         // No error, no change: nothing to keep.
         z->setInputs(2, false, -50, -50);
         QVERIFY(!z->keepButton()->isEnabled());
+        QVERIFY2(z->result()->text().contains("(offset 0.000 mm)"), qPrintable(z->result()->text())); // not «-0.000»
         z->close();
     }
 
