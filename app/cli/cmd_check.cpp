@@ -14,7 +14,6 @@
 #include "profile/builtin.h"
 #include "profile/text_format.h"
 #include "program/validator.h"
-#include "plc/description.h"
 #include "program_cli.h"
 #include "proveout_cli.h"
 #include "util/input_file.h"
@@ -147,17 +146,13 @@ int runCheck(std::span<const std::string> argv) {
             std::optional<stock::Blank> blank;
             if (!blankFor(args, text, blank))
                 return ExitUsage;
-            try {
+            const bool proved = withMachineData([&] {
                 engine::PreviewOptions po;
                 po.fromReferencePoint = true; // as `k528 run` starts, after homing
                 findings = proveout::proveStore(*machine, r.store, po, blank).findings;
-            } catch (const plc::DescriptionError& e) {
-                std::fprintf(stderr, "k528: machine description %s\n", e.what());
+            });
+            if (!proved)
                 return ExitUsage;
-            } catch (const profile::ToolError& e) {
-                std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
-                return ExitUsage;
-            }
             errors = errors || std::any_of(findings.begin(), findings.end(),
                                            [](const proveout::Finding& f) { return f.isError(); });
         }

@@ -8,7 +8,6 @@
 // that `k528` never loads Qt.
 #include "cli.h"
 #include "helper_path.h"
-#include "plc/description.h"
 #include "program_setup.h"
 #include "proveout/setup_sheet.h"
 #include "proveout_cli.h"
@@ -35,17 +34,13 @@ int runSetupSheet(std::span<const std::string> argv) {
     if (!blankFor(args, setup.text, blank))
         return ExitUsage;
     proveout::SetupSheet sheet;
-    try {
+    const bool made = withMachineData([&] {
         sheet = proveout::setupSheet(setup.profile, setup.store, setup.text,
                                      std::filesystem::path(args.positional().front()).filename().string(),
                                      setup.rPresets, blank, !args.has("--no-cycle-times"));
-    } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+    });
+    if (!made)
         return ExitUsage;
-    } catch (const profile::ToolError& e) {
-        std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
-        return ExitUsage;
-    }
     const std::string text = proveout::sheetJson(sheet);
     if (asJson)
         std::fprintf(stdout, "%s\n", text.c_str());

@@ -30,14 +30,7 @@ namespace k528::cli {
 
 namespace {
 
-std::string clockOf(std::int64_t unixMs) {
-    const std::time_t secs = static_cast<std::time_t>(unixMs / 1000);
-    std::tm tm{};
-    localtime_r(&secs, &tm);
-    char buf[16];
-    std::strftime(buf, sizeof buf, "%H:%M:%S", &tm);
-    return buf;
-}
+std::string clockOf(std::int64_t unixMs) { return shop::localTimeText(unixMs, "%H:%M:%S"); }
 
 std::string stateText(const shop::MachineState& s, std::int64_t nowMs) {
     char head[160];

@@ -1,6 +1,8 @@
 #include "proveout_cli.h"
 
 #include "cli.h"
+#include "plc/description.h"
+#include "profile/tools.h"
 #include "util/json.h"
 #include "util/utf8.h"
 
@@ -82,6 +84,18 @@ void printFinding(std::FILE* out, const std::string& file, const proveout::Findi
     std::fprintf(out, "%s:%s: %s: [%s] %s%s\n", file.c_str(), where.c_str(),
                  f.isError() ? "error" : "warning", std::string(proveout::ruleId(f.rule)).c_str(),
                  f.message(lang == Lang::Ru).c_str(), extra.c_str());
+}
+
+bool withMachineData(const std::function<void()>& prove) {
+    try {
+        prove();
+        return true;
+    } catch (const plc::DescriptionError& e) {
+        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+    } catch (const profile::ToolError& e) {
+        std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+    }
+    return false;
 }
 
 } // namespace k528::cli

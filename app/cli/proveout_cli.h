@@ -10,6 +10,7 @@
 #include "util/json_fwd.h"
 
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,5 +31,12 @@ Json findingJson(const proveout::Finding& f, std::string_view fileText, bool inF
 // "FILE:LINE:1: error: [rule] text" (check) — the frame's line when in the file.
 void printFinding(std::FILE* out, const std::string& file, const proveout::Finding& f,
                   bool inFile, Lang lang);
+
+// Calls `prove` (the prove-out, the setup sheet: what reads the machine's
+// description and its tools). A description or a tool table they cannot use
+// is told on standard error ("k528: machine description …", "k528: the
+// machine's tools: …"), as `k528 check --profile` and `k528 setup-sheet`
+// both say it, and gives false.
+bool withMachineData(const std::function<void()>& prove);
 
 } // namespace k528::cli

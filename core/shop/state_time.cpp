@@ -4,14 +4,16 @@
 
 namespace k528::shop {
 
-std::string localDay(std::int64_t unixMs) {
+std::string localTimeText(std::int64_t unixMs, const char* format) {
     const std::time_t t = static_cast<std::time_t>(unixMs / 1000);
     std::tm tm{};
     localtime_r(&t, &tm);
-    char buf[16];
-    std::strftime(buf, sizeof buf, "%Y-%m-%d", &tm);
-    return buf;
+    char buf[64];
+    const std::size_t n = std::strftime(buf, sizeof buf, format, &tm);
+    return std::string(buf, n);
 }
+
+std::string localDay(std::int64_t unixMs) { return localTimeText(unixMs, "%Y-%m-%d"); }
 
 void StateTally::add(const std::string& machine, const std::string& day, Activity a, std::int64_t ms) {
     if (ms <= 0)

@@ -19,6 +19,10 @@
 
 namespace k528::shop {
 
+// A Unix time in ms as the PC's local time, in a strftime `format` ("%H:%M:%S"):
+// the one conversion of the shop's times into what its people read.
+std::string localTimeText(std::int64_t unixMs, const char* format);
+
 // The local day (YYYY-MM-DD) of a Unix time in ms, as the pollers' PC sees it.
 std::string localDay(std::int64_t unixMs);
 
