@@ -191,7 +191,7 @@ private slots:
             machine::SimulationRunMachine m;
             studio::SimulationSession& session;
             Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-            engine::Controller& controller() override { return m.controller(); }
+            engine::Positioner& controller() override { return m.controller(); }
             int ticks = 0;
             void tick() override { // a UI frame every 16 ticks
                 m.tick();
