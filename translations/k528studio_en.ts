@@ -2831,10 +2831,6 @@ Details: %3</translation>
         <translation>Line</translation>
     </message>
     <message>
-        <source>No.</source>
-        <translation>No.</translation>
-    </message>
-    <message>
         <source>Message</source>
         <translation>Message</translation>
     </message>
@@ -3199,6 +3195,10 @@ Its comment stays: %3</translation>
     <message>
         <source>Taught: %1 (%2 mm)</source>
         <translation>Taught: %1 (%2 mm)</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
     </message>
 </context>
 <context>
@@ -4404,6 +4404,13 @@ Its comment stays: %3</translation>
     <message>
         <source>waits for acknowledgement</source>
         <translation>waits for acknowledgement</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ProblemsModel</name>
+    <message>
+        <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools)</source>
+        <translation>A rule of the prove-out: the program against the blank, the chuck and the tools</translation>
     </message>
 </context>
 <context>
@@ -5895,6 +5902,10 @@ Details: %3</translation>
     <message>
         <source>Error %1 mm: R%2 %3 → %4 (offset %5 mm)</source>
         <translation>Error %1 mm: R%2 %3 → %4 (offset %5 mm)</translation>
+    </message>
+    <message>
+        <source>Enter the size measured on the trial part and the drawing's size.</source>
+        <translation>Enter the size measured on the trial part and the drawing's size.</translation>
     </message>
 </context>
 <context>

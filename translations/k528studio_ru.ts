@@ -2831,10 +2831,6 @@ Details: %3</source>
         <translation>Строка</translation>
     </message>
     <message>
-        <source>No.</source>
-        <translation>№</translation>
-    </message>
-    <message>
         <source>Message</source>
         <translation>Сообщение</translation>
     </message>
@@ -3199,6 +3195,10 @@ Its comment stays: %3</source>
     <message>
         <source>Taught: %1 (%2 mm)</source>
         <translation>Записано: %1 (%2 мм)</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Код</translation>
     </message>
 </context>
 <context>
@@ -4404,6 +4404,13 @@ Its comment stays: %3</source>
     <message>
         <source>waits for acknowledgement</source>
         <translation>ждёт квитирования</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ProblemsModel</name>
+    <message>
+        <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools)</source>
+        <translation>Правило проверки программы, нарушенное кадром (заготовка, патрон, инструменты)</translation>
     </message>
 </context>
 <context>
@@ -5895,6 +5902,10 @@ Details: %3</source>
     <message>
         <source>Error %1 mm: R%2 %3 → %4 (offset %5 mm)</source>
         <translation>Ошибка %1 мм: R%2 %3 → %4 (коррекция %5 мм)</translation>
+    </message>
+    <message>
+        <source>Enter the size measured on the trial part and the drawing's size.</source>
+        <translation>Введите размер, измеренный на пробной детали, и размер по чертежу.</translation>
     </message>
 </context>
 <context>

@@ -299,7 +299,21 @@ void MainWindow::createDocks() {
             &EditorTab::showLine);
     static_cast<TrainingPane*>(training->widget())->setMachine(machine_.profile); // the trainer's lock of its constants
     tabifyDockWidget(backplotDock, training); // its home: a tab of the backplot, not one more row
-    addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
+    QDockWidget* proveoutDock = addProveoutDock(this, programEditor_, workArea_); // proveout/proveout_pane.cpp
+    auto* prover = proveoutDock->findChild<ProveoutPane*>();
+    if (auto* bp = backplotDock->findChild<backplot::BackplotWidget*>(); bp && prover) {
+        // The findings of the editor's file as red markers at their places
+        // on the backplot's path (those of the program it shows), a finding
+        // activated in the Problems list ringed.
+        const auto markFindings = [bp, prover] {
+            std::vector<k528::backplot::BackplotScene::FindingMarker> markers;
+            for (const proveout::Finding& f : prover->findings())
+                markers.push_back({f.program, f.line, f.at.z, f.at.x});
+            bp->setFindings(markers);
+        };
+        connect(prover, &ProveoutPane::proved, bp, markFindings);
+        connect(programEditor_, &EditorTab::proveoutFindingActivated, bp, &backplot::BackplotWidget::highlightFinding);
+    }
     // The debugger of the editor in a dock of its own (the technologist
     // shows it on demand).
     debuggerDock_ = addDock("dock.debugger", Qt::RightDockWidgetArea);

@@ -8,6 +8,8 @@
 #include "cli_runner.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "proveout/proveout.h"
+#include "stock/stock.h"
 #include "toolpath/actual_path.h"
 #include "engine/run.h"
 
@@ -163,6 +165,58 @@ private slots:
         QCOMPARE(path.segments[1].line, 3);
         QCOMPARE(scene.pick(px(-60), py(100), kW, kH), -1L);
     }
+    // The prove-out's finding of a facing whose return rapid cuts through
+    // the Ø40 bar: a red disc at its place on the path, gone when the
+    // finding is; a finding of another line (another text of the program)
+    // is not drawn; the safe program has none.
+    void findingsAreRedMarkersAtTheirPlaces() {
+        const profile::MachineProfile prof = profile::builtin("training-lathe");
+        const char* bad = "%L1\nN1 G90 G0 M3 X44 Z2\nN2 Z-1\nN3 G1 X-1 FX150\nN4 G0 X44 Z-20\nN5 M30\n";
+        const char* safe = "%L1\nN1 G90 G0 M3 X44 Z2\nN2 Z-1\nN3 G1 X-1 FX150\nN4 G0 Z2\nN5 X44\nN6 M30\n";
+        const std::optional<stock::Blank> blank = stock::parseUcg("UCG,2,Z-80Z0,X40X0,S0S0,0,-5");
+        QVERIFY(blank);
+        engine::PreviewOptions po;
+        po.fromReferencePoint = true; // as the prove-out pane and `k528 check --profile`
+        const auto prove = [&](const char* text) {
+            return proveout::proveProgram(prof, program::parse(text).store, 1, po, blank).result.findings;
+        };
+        QVERIFY(prove(safe).empty());
+        const std::vector<proveout::Finding> found = prove(bad);
+        QCOMPARE(found.size(), std::size_t(1));
+        const proveout::Finding& f = found[0];
+        QCOMPARE(f.line, 5);
+        QVERIFY2(f.at.x >= -1 && f.at.x < 40 && f.at.z < 0, qPrintable(QString("X%1 Z%2").arg(f.at.x).arg(f.at.z))); // in the bar
+        backplot::BackplotScene scene;
+        scene.setPath(pathOf(bad, prof)); // the backplot's own preview of the same text
+        scene.setStock(blank);
+        scene.setFindings({{f.program, f.line, f.at.z, f.at.x}});
+        QCOMPARE(scene.findingsShown().size(), std::size_t(1));
+        Image img;
+        std::string error;
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        const backplot::ViewWindow w = scene.window(kW, kH);
+        const double px = (f.at.z - w.x0) / w.worldPerPixel, py = (f.at.x - w.y0) / w.worldPerPixel;
+        QVERIFY2(near(img.at(int(px), int(py)), backplot::kFindingColour),
+                 qPrintable(QString("at %1,%2").arg(px).arg(py)));
+        // A disc: red all round its centre, the background beyond its ring.
+        for (int d : {-3, 3})
+            QVERIFY(near(img.at(int(px) + d, int(py)), backplot::kFindingColour) &&
+                    near(img.at(int(px), int(py) + d), backplot::kFindingColour));
+        // Nothing red elsewhere: 30 px to the right at the same X is not a marker.
+        QVERIFY(!around(img, px + 30, py, backplot::kFindingColour, 3));
+
+        // Gone with the finding.
+        scene.setFindings({});
+        QVERIFY(scene.findingsShown().empty());
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        QVERIFY(!around(img, px, py, backplot::kFindingColour, 3));
+        // Not this path's: the same place on another line, or off the line's legs.
+        scene.setFindings({{f.program, f.line - 2, f.at.z, f.at.x}, {f.program, f.line, f.at.z + 5, f.at.x + 30}});
+        QVERIFY(scene.findingsShown().empty());
+        QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
+        QVERIFY(!around(img, px, py, backplot::kFindingColour, 3));
+    }
+
     void outsideIsHighlightedAndTheRectangleFollowsTheConstants() {
         profile::MachineProfile prof = profile::builtin("training-lathe");
         prof.setC(98, -50000); // -ОГРАНИЧЕН Z = -50 mm

@@ -14,6 +14,7 @@
 #include "main_window.h"
 #include "workspace/workspaces.h"
 #include "program/parser.h"
+#include "proveout/proveout_pane.h"
 #include "session/simulation_session.h"
 
 #include <algorithm>
@@ -32,6 +33,7 @@
 #include <QSpinBox>
 #include <QTimer>
 #include <QToolButton>
+#include <QTreeView>
 #include <QTabWidget>
 #include <QWheelEvent>
 #include <QTemporaryDir>
@@ -114,6 +116,27 @@ struct Studio {
     }
 };
 
+// The run's machine for a test that drives the session's time: each tick of
+// the run advances the session by one tick, a UI frame (advanced()) every 16.
+struct Stepper final : engine::RunMachine {
+    machine::SimulationRunMachine m;
+    studio::SimulationSession& session;
+    explicit Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
+    engine::Positioner& controller() override { return m.controller(); }
+    int ticks = 0;
+    void tick() override {
+        m.tick();
+        if (++ticks % 16 == 0)
+            session.advance(0);
+    }
+    bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
+    void setOverrideCode(int c) override { m.setOverrideCode(c); }
+    void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
+    void pressStart() override { m.pressStart(); }
+    bool startHeld() const override { return m.startHeld(); }
+    std::vector<int> mFunctions() const override { return m.mFunctions(); }
+};
+
 } // namespace
 
 class TestBackplotStudio : public QObject {
@@ -154,6 +177,66 @@ private slots:
         s.editor->currentEditor()->getCursorPosition(&line, &index);
         QCOMPARE(line, 3);
     }
+    // The prove-out's finding of the editor's file (a facing whose return
+    // rapid cuts through the bar) as a red disc at its place on the path
+    // the backplot shows, seen on the screen; ringed when its Problems
+    // entry is activated; gone when the program is made safe.
+    void aFindingIsARedMarkerAtItsPlace() {
+        Studio s("; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
+                 "%L1 (FACE)\n"
+                 "N1 G90 G0 M3 X44 Z2\n"
+                 "N2 Z-1\n"
+                 "N3 G1 X-1 FX150\n"
+                 "N4 G0 X44 Z-20\n"
+                 "N5 M30\n");
+        QVERIFY(s.showPath());
+        auto* pane = s.w.findChild<studio::ProveoutPane*>();
+        QVERIFY(pane);
+        QTRY_COMPARE_WITH_TIMEOUT(pane->findings().size(), std::size_t(1), 20000);
+        const proveout::Finding f = pane->findings()[0];
+        QCOMPARE(f.line, 6);
+        QTRY_COMPARE(s.view->scene().findingsShown().size(), std::size_t(1));
+        QCOMPARE(s.view->scene().findingsShown()[0].z, f.at.z);
+        auto* gl = s.view->glWidget();
+        const auto& red = k528::backplot::kFindingColour;
+        const auto redAt = [&](QPoint p) {
+            const QImage img = s.w.screen()->grabWindow(s.w.winId()).toImage();
+            const QColor c(img.pixel(gl->mapTo(&s.w, p)));
+            return std::abs(c.redF() - red.r) < 0.1 && std::abs(c.greenF() - red.g) < 0.1 &&
+                   std::abs(c.blueF() - red.b) < 0.1;
+        };
+        const QPoint at = s.pixelOf(f.at.z, f.at.x);
+        QTRY_VERIFY_WITH_TIMEOUT(redAt(at), 10000);
+        QVERIFY(!redAt(at + QPoint(40, 0)));
+        // Its Problems entry activated: the editor on the line, the marker ringed.
+        QAbstractItemModel* problems = s.editor->problems()->model();
+        QCOMPARE(problems->rowCount(), 1);
+        QCOMPARE(problems->index(0, 3).data().toString(), QString("rapid-into-material"));
+        const QPoint ring = at + QPoint(k528::backplot::BackplotScene::kFindingRadiusPx + 8, 0);
+        const auto whiteAt = [&](QPoint p) {
+            const QImage img = s.w.screen()->grabWindow(s.w.winId()).toImage();
+            for (int d = -1; d <= 1; ++d)
+                if (QColor(img.pixel(gl->mapTo(&s.w, p + QPoint(d, 0)))).lightnessF() > 0.9)
+                    return true;
+            return false;
+        };
+        QVERIFY(!whiteAt(ring));
+        emit s.editor->problems()->activated(problems->index(0, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(whiteAt(ring), 10000);
+        // Made safe: the finding and its marker are gone.
+        s.editor->currentEditor()->setText("; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
+                                           "%L1 (FACE)\n"
+                                           "N1 G90 G0 M3 X44 Z2\n"
+                                           "N2 Z-1\n"
+                                           "N3 G1 X-1 FX150\n"
+                                           "N4 G0 Z2\n"
+                                           "N5 X44\n"
+                                           "N6 M30\n");
+        QTRY_VERIFY_WITH_TIMEOUT(pane->findings().empty() && pane->proofs() > 1, 20000);
+        QTRY_VERIFY(s.view->scene().findingsShown().empty());
+        QTRY_VERIFY_WITH_TIMEOUT(!redAt(at), 10000);
+        QCOMPARE(problems->rowCount(), 0);
+    }
     void theWheelZoomsToTheCursor() {
         Studio s;
         QVERIFY(s.showPath());
@@ -187,24 +270,7 @@ private slots:
         std::vector<std::size_t> shown;
         connect(session, &studio::SimulationSession::advanced, this,
                 [&] { shown.push_back(s.view->scene().actualPointsShown()); });
-        struct Stepper final : engine::RunMachine {
-            machine::SimulationRunMachine m;
-            studio::SimulationSession& session;
-            Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-            engine::Positioner& controller() override { return m.controller(); }
-            int ticks = 0;
-            void tick() override { // a UI frame every 16 ticks
-                m.tick();
-                if (++ticks % 16 == 0)
-                    session.advance(0);
-            }
-            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-            void setOverrideCode(int c) override { m.setOverrideCode(c); }
-            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-            void pressStart() override { m.pressStart(); }
-            bool startHeld() const override { return m.startHeld(); }
-            std::vector<int> mFunctions() const override { return m.mFunctions(); }
-        } stepper(*session);
+        Stepper stepper(*session);
         engine::RunOptions ro;
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, ro);
         QCOMPARE(r.status, engine::RunStatus::Completed);
@@ -226,6 +292,32 @@ private slots:
         QCOMPARE(s.view->scene().path().segments.size(), std::size_t(5));
         // The last point is where the run ended (X60 Z-80).
         QVERIFY(s.view->scene().actualPointsShown() >= 10);
+    }
+    // Following a run on the session's machine, the live tool is the one in
+    // the simulated turret: tool 1, none while M62 indexes, then the grooving tool.
+    void theLiveEdgeIsTheTurretsTool() {
+        Studio s;
+        QVERIFY(s.view);
+        const program::ParseResult parsed =
+            program::parse("%L1\nN1 G1 X60 FX2000\nN2 M62\nN3 R226=R102\nN4 R227=R103\nN5 G1 Z-20 FZ2000\nM30\n");
+        QVERIFY(!parsed.hasErrors());
+        studio::SimulationSession* session = s.w.findChild<studio::SimulationSession*>();
+        QVERIFY(session);
+        session->setRunning(false);
+        // The live tool's station the dock hands the scene at each UI frame of
+        // the run (the edge is drawn for it at the next render: backplot.tool_edge).
+        std::vector<int> stations; // changes only; -1 no live tool
+        connect(session, &studio::SimulationSession::advanced, this, [&] {
+            const auto& live = s.view->scene().liveTool();
+            const int st = live ? live->station : -1;
+            if (stations.empty() || stations.back() != st)
+                stations.push_back(st);
+        });
+        Stepper stepper(*session);
+        const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, engine::RunOptions{});
+        QCOMPARE(r.status, engine::RunStatus::Completed);
+        // Before the program ran no live tool; then tool 1, none while the turret indexed (0), tool 2.
+        QCOMPARE(stations, (std::vector<int>{-1, 1, 0, 2}));
     }
     // An endless program (GOTO back to its start): its preview is computed
     // and the blank cut on a worker, up to PathJob::kMaxFrames frames (a

@@ -10,6 +10,8 @@
 #include "profile/tools.h"
 #include "proveout/proveout_pane.h"
 #include "controller/simulated_controller.h"
+#include "editor/problems_model.h"
+#include "language.h"
 #include "session/simulation_session.h"
 
 #include <QDockWidget>
@@ -20,6 +22,7 @@
 #include <QRegularExpression>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QTreeView>
 #include <QtTest>
 
 using namespace k528;
@@ -57,6 +60,8 @@ private slots:
         QVERIFY(dir_.isValid());
         qputenv("K528_DB", dir_.filePath("machines.sqlite").toUtf8());
     }
+
+    void cleanup() { setLanguage("en"); }
 
     void findsTheRapidAndShowsItsLine() {
         SimulationSession session(profile::builtin("training-lathe"));
@@ -120,6 +125,85 @@ private slots:
         QVERIFY(pane.findings().empty());
         QVERIFY2(pane.summary()->text().contains("blank"), qPrintable(pane.summary()->text()));
         QVERIFY(!marked(4));
+    }
+
+    // The findings in the editor's Problems list after its diagnostics:
+    // severity, program, line, the rule's id, «N4: text» in the window's
+    // language; activated, the cursor goes to the line; the boxed line's
+    // hover says the finding. The safe program leaves none.
+    void theFindingsAreInTheProblemsList() {
+        SimulationSession session(profile::builtin("training-lathe"));
+        SimulatedController sim(session);
+        ViewedController seam(sim);
+        EditorTab tab(&seam);
+        ProveoutPane pane(&tab);
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        QAbstractItemModel* problems = tab.problems()->model();
+        for (const QString lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(lang));
+            QCoreApplication::processEvents(); // the language change reaches the widgets
+            ed->setText(QString::fromUtf8(kBadFacing));
+            ed->validateNow();
+            pane.proveNow();
+            QCOMPARE(problems->rowCount(), 1);
+            QCOMPARE(problems->index(0, 0).data().toString(), lang == "ru" ? QString("ошибка") : QString("error"));
+            QCOMPARE(problems->index(0, 1).data().toString(), QString("L1"));
+            QCOMPARE(problems->index(0, 2).data().toString(), QString("6"));
+            QCOMPARE(problems->index(0, 3).data().toString(), QString("rapid-into-material"));
+            QCOMPARE(problems->index(0, 0).data(ProblemsModel::kRuleRole).toString(), QString("rapid-into-material"));
+            const QString text = problems->index(0, 4).data().toString();
+            QVERIFY2(text.startsWith("N4: "), qPrintable(text));
+            const QRegularExpression cyrillic("[\\x{0400}-\\x{04FF}]");
+            if (lang == "ru")
+                QVERIFY2(text.contains(cyrillic) && !text.mid(4).contains(QRegularExpression("[a-z]{3,}")), qPrintable(text));
+            else
+                QVERIFY2(!text.contains(cyrillic) && text.contains("rapid", Qt::CaseInsensitive), qPrintable(text));
+            QCOMPARE(text.mid(4), pane.findingsTable()->item(0, 4)->text());
+            QVERIFY2(tab.problemCount()->text().contains('1'), qPrintable(tab.problemCount()->text()));
+            // The hover over the boxed line: the finding's text; a line without a box: nothing.
+            const long inLine = ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, 5) + 3;
+            QCOMPARE(ed->hoverText(static_cast<int>(inLine)), text);
+            const long otherLine = ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, 4) + 3;
+            QVERIFY(ed->hoverText(static_cast<int>(otherLine)).isEmpty());
+            // Activated (a double click): the cursor on its line, the place told.
+            ed->setCursorPosition(0, 0);
+            QSignalSpy place(&tab, &EditorTab::proveoutFindingActivated);
+            emit tab.problems()->activated(problems->index(0, 4));
+            int line = -1, col = -1;
+            ed->getCursorPosition(&line, &col);
+            QCOMPARE(line, 5);
+            QCOMPARE(place.count(), 1);
+            QCOMPARE(place.at(0).at(1).toInt(), 6);
+            QCOMPARE(place.at(0).at(2).toDouble(), pane.findings()[0].at.z);
+            QCOMPARE(place.at(0).at(3).toDouble(), pane.findings()[0].at.x);
+
+            // Made safe: nothing listed, boxed or said.
+            ed->setText(QString::fromUtf8(kSafeFacing));
+            ed->validateNow();
+            pane.proveNow();
+            QCOMPARE(problems->rowCount(), 0);
+            QVERIFY(ed->hoverText(static_cast<int>(inLine)).isEmpty());
+            QCOMPARE(ed->SendScintilla(QsciScintilla::SCI_INDICATORVALUEAT, ProgramEditor::kProveoutIndicator, inLine), 0L);
+        }
+        QVERIFY(setLanguage("en"));
+        // The blank changed: the finding comes and goes with it.
+        QString noBlank = QString::fromUtf8(kBadFacing);
+        noBlank.remove(0, noBlank.indexOf('\n') + 1);
+        ed->setText(noBlank);
+        ed->validateNow();
+        pane.proveNow();
+        QCOMPARE(problems->rowCount(), 0);
+        pane.blankEdit()->setText("UCG,2,Z-80Z0,X40X0,S0S0,0,-5");
+        pane.proveNow();
+        QCOMPARE(problems->rowCount(), 1);
+        QCOMPARE(problems->index(0, 2).data().toString(), QString("5"));
+        // Another document: its Problems hold none of the first one's findings.
+        tab.newFile();
+        QTRY_COMPARE(tab.problems()->model()->rowCount(), 0);
+        pane.proveNow();
+        QCOMPARE(tab.problems()->model()->rowCount(), 0);
+        QVERIFY(ed->proveoutFindings().empty()); // the first one's box is cleared when another is proved
     }
 
     void anEditProvesAgainOnTheWorker() {

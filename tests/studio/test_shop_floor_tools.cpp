@@ -15,8 +15,10 @@
 #include "rparams/rparams_dock.h"
 #include "rparams/trial_dialog.h"
 #include "session/simulation_session.h"
+#include "language.h"
 #include "rig/studio_rig.h"
 
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenu>
@@ -79,6 +81,26 @@ private slots:
         SimulatedSeam sim(latheNamed("lathe-trial"));
         RParamsPane pane(sim.seam, sim.session.simulation().profile());
         TrialPartDialog* d = pane.trialPartDialog();
+        // Opened: both sizes 0, nothing computed from them, nothing to keep.
+        QCOMPARE(d->findChild<QDoubleSpinBox*>("trial.measured")->value(), 0.0);
+        QCOMPARE(d->findChild<QDoubleSpinBox*>("trial.drawing")->value(), 0.0);
+        QVERIFY(!d->correction());
+        QVERIFY(!d->keepButton()->isEnabled());
+        QVERIFY2(d->result()->text().startsWith("Enter the size"), qPrintable(d->result()->text()));
+        // As opened, in each language (to be looked at).
+        const QString shots = QStringLiteral(K528_BINARY_DIR "/screenshots");
+        QDir().mkpath(shots);
+        for (const QString lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(lang));
+            TrialPartDialog* fresh = pane.trialPartDialog();
+            fresh->show();
+            QTest::qWait(50);
+            QVERIFY(fresh->grab().save(shots + "/trial-dialog-" + lang + ".png"));
+            if (lang == "ru")
+                QVERIFY2(fresh->result()->text().startsWith(QStringLiteral("Введите")), qPrintable(fresh->result()->text()));
+            fresh->close();
+        }
+        QVERIFY(setLanguage("en"));
         d->setInputs(2, true, 40.06, 40.00);
         QVERIFY(d->correction());
         QCOMPARE(d->correction()->rNumber, 102);
@@ -97,6 +119,7 @@ private slots:
         // No error, no change: nothing to keep.
         z->setInputs(2, false, -50, -50);
         QVERIFY(!z->keepButton()->isEnabled());
+        QVERIFY2(z->result()->text().contains("(offset 0.000 mm)"), qPrintable(z->result()->text())); // not «-0.000»
         z->close();
     }
 

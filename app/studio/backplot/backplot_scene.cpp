@@ -1,4 +1,5 @@
 #include "backplot/backplot_scene.h"
+#include "backplot/line_cells.h"
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
@@ -32,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 
 namespace k528::backplot {
@@ -55,23 +57,25 @@ struct Layer {
         r->AddActor(actor);
     }
     // Replaces the contents with lines (4 floats a line) at depth z.
-    void lines(const std::vector<float>& v, double z) {
+    void lines(const std::vector<float>& v, double z) { setLines(data, v, z); }
+    // Replaces the contents with triangles (6 floats a triangle) at depth z.
+    void triangles(const std::vector<float>& v, double z) {
         vtkNew<vtkPoints> pts;
         pts->SetDataTypeToFloat();
-        const vtkIdType n = static_cast<vtkIdType>(v.size() / 4);
-        pts->SetNumberOfPoints(2 * n);
+        const vtkIdType n = static_cast<vtkIdType>(v.size() / 6);
+        pts->SetNumberOfPoints(3 * n);
         vtkNew<vtkCellArray> cells;
-        cells->AllocateExact(n, 2 * n);
+        cells->AllocateExact(n, 3 * n);
         for (vtkIdType i = 0; i < n; ++i) {
-            const float* f = v.data() + 4 * i;
-            pts->SetPoint(2 * i, f[0], f[1], z);
-            pts->SetPoint(2 * i + 1, f[2], f[3], z);
-            const vtkIdType ids[2] = {2 * i, 2 * i + 1};
-            cells->InsertNextCell(2, ids);
+            const float* f = v.data() + 6 * i;
+            for (int k = 0; k < 3; ++k)
+                pts->SetPoint(3 * i + k, f[2 * k], f[2 * k + 1], z);
+            const vtkIdType ids[3] = {3 * i, 3 * i + 1, 3 * i + 2};
+            cells->InsertNextCell(3, ids);
         }
         data->Initialize();
         data->SetPoints(pts);
-        data->SetLines(cells);
+        data->SetPolys(cells);
         data->Modified();
     }
 };
@@ -81,6 +85,7 @@ struct BackplotScene::Vtk {
     vtkNew<vtkRenderer> renderer;
     Layer feed, rapid, outside, points, limit, tool, highlight, stock2d, stock3d, stockFill, actual;
     Layer osc, oscTicks, wheel2d, wheel3d, oscSweep;
+    Layer findingDisc, findingRing, findingHighlight; // the prove-out's markers, above the path
     vtkNew<vtkCylinderSource> cylinder;
     std::size_t sweepLimit = ~std::size_t{0};
     vtkNew<vtkLookupTable> lut;
@@ -133,6 +138,9 @@ BackplotScene::BackplotScene() : v_(std::make_unique<Vtk>()) {
     v_->highlight.init(r, {1, 1, 1}, 4);
     v_->tool.init(r, kToolColour, 2);
     edge_ = std::make_unique<ToolEdge>(r);
+    v_->findingDisc.init(r, kFindingColour, 1);
+    v_->findingRing.init(r, kFindingColour, 2);
+    v_->findingHighlight.init(r, {1, 1, 1}, 2);
     v_->lut->SetHueRange(0.66, 0.0); // blue (0 µm) .. red (largest)
     v_->lut->Build();
     v_->bar->SetLookupTable(v_->lut);
@@ -259,7 +267,69 @@ void BackplotScene::pathChanged() {
         cumulative_[i] = t += path_.segments[i].durationS;
     playhead_ = -1;
     v_->sweepLimit = ~std::size_t{0};
+    matchFindings();
     buildStatic();
+}
+
+void BackplotScene::setFindings(std::vector<FindingMarker> markers) {
+    findings_ = std::move(markers);
+    matchFindings();
+}
+
+void BackplotScene::highlightFinding(const std::optional<FindingMarker>& m) { hlFinding_ = m; }
+
+void BackplotScene::matchFindings() {
+    shownFindings_.clear();
+    // On the path: within this of a leg of a segment of the finding's line
+    // (the finding's place is a point of the same preview's path).
+    constexpr double kOnPathMm = 0.05;
+    for (const FindingMarker& m : findings_) {
+        bool on = false;
+        for (const toolpath::Segment& s : path_.segments) {
+            if (s.program != m.program || s.line != m.line)
+                continue;
+            const toolpath::PointMm* p = path_.pointsOf(s);
+            for (int i = 0; i < s.pointCount && !on; ++i) {
+                const toolpath::PointMm a = p[i > 0 ? i - 1 : 0], b = p[i];
+                const double dz = b.z - a.z, dx = b.x - a.x, len2 = dz * dz + dx * dx;
+                const double t = len2 > 0 ? std::clamp(((m.z - a.z) * dz + (m.x - a.x) * dx) / len2, 0.0, 1.0) : 0;
+                on = std::hypot(a.z + t * dz - m.z, a.x + t * dx - m.x) <= kOnPathMm;
+            }
+            if (on)
+                break;
+        }
+        if (on)
+            shownFindings_.push_back(m);
+    }
+}
+
+void BackplotScene::buildFindings(double wpp) {
+    // A disc of kFindingRadiusPx (16 triangles), a ring 4 px outside it.
+    constexpr int kSides = 16;
+    const auto ring = [wpp](double cz, double cx, double radiusPx, std::vector<float>& out) {
+        const double r = radiusPx * wpp;
+        for (int i = 0; i < kSides; ++i) {
+            const double a0 = 2 * std::numbers::pi * i / kSides, a1 = 2 * std::numbers::pi * (i + 1) / kSides;
+            out.insert(out.end(), {static_cast<float>(cz + r * std::cos(a0)), static_cast<float>(cx + r * std::sin(a0)),
+                                   static_cast<float>(cz + r * std::cos(a1)), static_cast<float>(cx + r * std::sin(a1))});
+        }
+    };
+    std::vector<float> disc, rings, hl;
+    const double r = kFindingRadiusPx * ratio_ * wpp;
+    for (const FindingMarker& m : shownFindings_) {
+        for (int i = 0; i < kSides; ++i) {
+            const double a0 = 2 * std::numbers::pi * i / kSides, a1 = 2 * std::numbers::pi * (i + 1) / kSides;
+            disc.insert(disc.end(), {static_cast<float>(m.z), static_cast<float>(m.x),
+                                     static_cast<float>(m.z + r * std::cos(a0)), static_cast<float>(m.x + r * std::sin(a0)),
+                                     static_cast<float>(m.z + r * std::cos(a1)), static_cast<float>(m.x + r * std::sin(a1))});
+        }
+        ring(m.z, m.x, (kFindingRadiusPx + 4) * ratio_, rings);
+        if (hlFinding_ && *hlFinding_ == m)
+            ring(m.z, m.x, (kFindingRadiusPx + 8) * ratio_, hl);
+    }
+    v_->findingDisc.triangles(disc, 0.4);
+    v_->findingRing.lines(rings, 0.4);
+    v_->findingHighlight.lines(hl, 0.4);
 }
 
 void BackplotScene::setActual(const toolpath::ActualPath* a) {
@@ -674,6 +744,7 @@ void BackplotScene::refresh(int w, int h) {
     v_->oscTicks.lines(ticks, 0.02);
     buildOscillation3d(limit);
     refreshTool(w, h);
+    buildFindings(vw.worldPerPixel);
     // The selected line's segments.
     std::vector<float> hl;
     if (hlLine_ > 0)

@@ -22,6 +22,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 #include <optional>
 
 class vtkRenderer;
@@ -43,6 +44,7 @@ inline constexpr Rgb kStockColour{0.45, 0.47, 0.52};
 inline constexpr Rgb kOscillationColour{0.20, 0.85, 0.95};
 inline constexpr Rgb kWheelColour{0.85, 0.78, 0.60};
 inline constexpr Rgb kTitleColour{0.85, 0.85, 0.85}; // the title, the scale bar and its length
+inline constexpr Rgb kFindingColour{1.00, 0.00, 0.00}; // a prove-out finding's marker (a red disc)
 
 // The overlay's sizes in pixels (at the window's DPI): texts do not shrink
 // with the view, the bands keep the rulers clear of the texts.
@@ -135,6 +137,7 @@ public:
         int station = -1;        // the turret's station now (0 indexing); -1 unknown: no tool edge
     };
     void setLiveTool(const std::optional<LiveTool>& t);
+    const std::optional<LiveTool>& liveTool() const { return live_; }
     void setWheelGeometry(const WheelGeometry& g) { wheelGeom_ = g; }
     // The tools whose edge is drawn at the tool's point (tool_edge.h); a new
     // path (setPath) clears the stations, setPrepared brings its own.
@@ -169,6 +172,23 @@ public:
 
     // Display (pixels, origin bottom-left) -> world; the segment under it within 5 px, -1 none.
     long pick(double displayX, double displayY, int widthPx, int heightPx) const;
+    // The prove-out's findings (proveout.h) as red markers at their places:
+    // a disc of kFindingRadiusPx and a ring round it. A marker is drawn
+    // only where the path shown passes its place on a segment of its frame's
+    // line (the findings of another program, or of another text of this
+    // one, are not this path's). Drawn at the next refresh.
+    struct FindingMarker {
+        int program = 0, line = 0;
+        double z = 0, x = 0; // the place (world Z, X as shown)
+        bool operator==(const FindingMarker&) const = default;
+    };
+    static constexpr int kFindingRadiusPx = 6;
+    void setFindings(std::vector<FindingMarker> markers);
+    const std::vector<FindingMarker>& findings() const { return findings_; }
+    // The markers drawn (those on the path shown).
+    const std::vector<FindingMarker>& findingsShown() const { return shownFindings_; }
+    // A white ring round the marker at (z, x) of (program, line); nullopt: none.
+    void highlightFinding(const std::optional<FindingMarker>& m);
     // Highlights the segments of one source line (0: none).
     void highlightLine(int program, int line);
     int highlightedProgram() const { return hlProgram_; }
@@ -200,6 +220,10 @@ private:
     ToolsInUse tools_;
     std::unique_ptr<ToolEdge> edge_;
     OverlayTexts texts_;
+    std::vector<FindingMarker> findings_, shownFindings_;
+    std::optional<FindingMarker> hlFinding_;
+    void matchFindings(); // shownFindings_ from findings_ and path_
+    void buildFindings(double worldPerPixel);
     double scaleBarMm_ = 0;
     double ratio_ = 1;
     // The texts, the scale bar and the µm bar in pixels for a w × h view.

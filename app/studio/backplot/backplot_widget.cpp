@@ -443,6 +443,18 @@ void BackplotWidget::setViewMode(k528::backplot::ViewMode m) {
     fit();
 }
 
+void BackplotWidget::setFindings(const std::vector<k528::backplot::BackplotScene::FindingMarker>& markers) {
+    if (markers == scene_->findings())
+        return;
+    scene_->setFindings(markers);
+    refresh();
+}
+
+void BackplotWidget::highlightFinding(int program, int line, double z, double x) {
+    scene_->highlightFinding(k528::backplot::BackplotScene::FindingMarker{program, line, z, x});
+    refresh();
+}
+
 void BackplotWidget::selectLine(int program, int line) {
     scene_->highlightLine(program, line);
     refresh();

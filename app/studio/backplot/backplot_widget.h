@@ -72,6 +72,12 @@ public:
     void setViewMode(k528::backplot::ViewMode m);
     // Selects the segments of a source line (the editor's cursor).
     void selectLine(int program, int line);
+    // The prove-out's findings as red markers at their places (those on
+    // the path shown, BackplotScene::setFindings); drawn again only when
+    // they changed.
+    void setFindings(const std::vector<k528::backplot::BackplotScene::FindingMarker>& markers);
+    // A white ring round the marker of a finding (a Problems entry activated).
+    void highlightFinding(int program, int line, double z, double x);
     // Picks at widget pixel (x, y from the top-left); the segment or -1.
     // A click: names it, highlights its line and emits lineActivated.
     long pickAt(int x, int y);

@@ -53,6 +53,7 @@ public:
     // view is not XZ (`visible` false).
     void show(const std::optional<profile::Tool>& tool, double z, double x, double shownPerMm, bool visible);
     bool shown() const { return shown_; }
+    const std::optional<profile::Tool>& tool() const { return tool_; } // the one drawn last
     int rebuilds() const { return rebuilds_; } // how often the lines were rebuilt (tests)
 
 private:

@@ -4,6 +4,7 @@
 #include "editor/debug_panel.h"
 #include "editor/frame_master.h"
 #include "editor/problems_model.h"
+#include "proveout/proveout.h"
 #include "program/parser.h"
 #include "resources/embedded.h"
 #include "editor/program_editor.h"
@@ -159,6 +160,11 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
         ed->setCursorPosition(line - 1, std::max(0, col - 1));
         ed->ensureLineVisible(line - 1);
         ed->setFocus();
+        const int finding = index.data(ProblemsModel::kFindingRole).toInt();
+        if (finding >= 0 && finding < static_cast<int>(ed->proveoutFindings().size())) {
+            const proveout::Finding& f = ed->proveoutFindings()[static_cast<std::size_t>(finding)];
+            emit proveoutFindingActivated(f.program, f.line, f.at.z, f.at.x);
+        }
     });
     connect(outline_, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) {
         if (ProgramEditor* ed = currentEditor(); ed && item) {
@@ -622,13 +628,38 @@ void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
 void EditorTab::refreshProblems() {
     ProgramEditor* ed = currentEditor();
     problemsModel_->setDiagnostics(ed ? &ed->diagnostics() : nullptr);
+    problemsModel_->setFindings(ed ? &ed->proveoutFindings() : nullptr);
     std::size_t errors = 0, warnings = 0;
     if (ed) {
         errors = program::countErrors(ed->diagnostics());
         warnings = ed->diagnostics().size() - errors;
     }
-    count_->setText(tr("Errors: %1, warnings: %2").arg(errors).arg(warnings));
+    refreshCount();
     emit problemCountChanged(static_cast<int>(errors), static_cast<int>(warnings));
+}
+
+void EditorTab::refreshCount() {
+    ProgramEditor* ed = currentEditor();
+    std::size_t errors = 0, warnings = 0;
+    if (ed) {
+        errors = program::countErrors(ed->diagnostics());
+        warnings = ed->diagnostics().size() - errors;
+        for (const proveout::Finding& f : ed->proveoutFindings())
+            (f.isError() ? errors : warnings) += 1;
+    }
+    count_->setText(tr("Errors: %1, warnings: %2").arg(errors).arg(warnings));
+}
+
+void EditorTab::setProveoutFindings(ProgramEditor* ed, const std::vector<proveout::Finding>& findings) {
+    if (!ed)
+        return;
+    ed->setProveoutFindings(findings);
+    if (ed != currentEditor())
+        return;
+    problemsModel_->setFindings(&ed->proveoutFindings());
+    if (!ed->proveoutFindings().empty())
+        problems_->resizeColumnToContents(3); // a rule's id is longer than «[M33]»
+    refreshCount();
 }
 
 void EditorTab::refreshOutline() {
@@ -707,7 +738,7 @@ void EditorTab::retranslate() {
     masterAction_->setText(tr("Master…"));
     masterAction_->setToolTip(tr("Build or edit the frame at the cursor"));
     outline_->setHeaderLabels({tr("Programs")});
-    problemsModel_->setTexts({tr("Severity"), tr("Program"), tr("Line"), tr("No."), tr("Message")}, tr("error"),
+    problemsModel_->setTexts({tr("Severity"), tr("Program"), tr("Line"), tr("Code"), tr("Message")}, tr("error"),
                              tr("warning"));
     retranslateTools();
     refreshTitles();

@@ -17,6 +17,7 @@
 #include <QFileSystemWatcher>
 #include <QWidget>
 #include <functional>
+#include <vector>
 
 class QLabel;
 class QTabWidget;
@@ -28,6 +29,7 @@ class QDialog;
 
 namespace k528::proveout {
 struct SetupSheet;
+struct Finding;
 }
 
 namespace k528::studio {
@@ -68,6 +70,12 @@ public:
     QAction* newAction() const { return newAction_; }
     QAction* openAction() const { return openAction_; }
     QAction* saveAction() const { return saveAction_; }
+
+    // The prove-out's findings of document `ed` (proveout_pane.h): boxed on
+    // its lines, and in the Problems list after its diagnostics while it is
+    // the current one (counted in problemCount(); problemCountChanged()
+    // stays the validation's).
+    void setProveoutFindings(ProgramEditor* ed, const std::vector<proveout::Finding>& findings);
 
     // Check the files against the session's machine (File > Machine).
     void setCheckAgainstMachine(bool on);
@@ -181,6 +189,9 @@ signals:
     // The current editor's cursor moved to another line: the program there
     // and the 1-based line (the backplot highlights its segments).
     void cursorLineChanged(int program, int line);
+    // A finding of the prove-out was activated in the Problems list: its
+    // place (the tool's tip, Z and X as the path has them; the backplot marks it).
+    void proveoutFindingActivated(int program, int line, double z, double x);
 
 protected:
     void changeEvent(QEvent* e) override;
@@ -189,6 +200,7 @@ protected:
 private:
     int addDocument(const QString& path, const QString& text);
     void refreshProblems();
+    void refreshCount();
     void refreshOutline();
     void refreshTitles();
     void fileChangedOnDisk(const QString& path);

@@ -1,6 +1,8 @@
 #include "editor/problems_model.h"
 
 #include "language.h"
+#include "proveout/proveout.h"
+#include "session/core_texts.h"
 
 #include <QColor>
 
@@ -21,15 +23,27 @@ void ProblemsModel::setTexts(const QStringList& headers, const QString& error, c
         emit dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
 }
 
+void ProblemsModel::setFindings(const std::vector<proveout::Finding>* findings) {
+    beginResetModel();
+    findings_ = findings;
+    endResetModel();
+}
+
+int ProblemsModel::diagnosticRows() const { return diagnostics_ ? static_cast<int>(diagnostics_->size()) : 0; }
+
 int ProblemsModel::rowCount(const QModelIndex& parent) const {
-    return parent.isValid() || !diagnostics_ ? 0 : static_cast<int>(diagnostics_->size());
+    if (parent.isValid())
+        return 0;
+    return diagnosticRows() + (findings_ ? static_cast<int>(findings_->size()) : 0);
 }
 
 int ProblemsModel::columnCount(const QModelIndex& parent) const { return parent.isValid() ? 0 : 5; }
 
 QVariant ProblemsModel::data(const QModelIndex& index, int role) const {
-    if (!diagnostics_ || !index.isValid() || index.row() >= rowCount())
+    if (!index.isValid() || index.row() >= rowCount())
         return {};
+    if (index.row() >= diagnosticRows())
+        return findingData(index.row() - diagnosticRows(), index.column(), role);
     const program::Diagnostic& d = (*diagnostics_)[static_cast<std::size_t>(index.row())];
     switch (role) {
     case Qt::DisplayRole:
@@ -50,6 +64,43 @@ QVariant ProblemsModel::data(const QModelIndex& index, int role) const {
         return {};
     case kLineRole: return d.line;
     case kColumnRole: return d.column;
+    case kFindingRole: return -1;
+    default: return {};
+    }
+}
+
+QVariant ProblemsModel::findingData(int i, int column, int role) const {
+    const proveout::Finding& f = (*findings_)[static_cast<std::size_t>(i)];
+    const std::string_view rule = proveout::ruleId(f.rule);
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (column) {
+        case 0: return f.isError() ? error_ : warning_;
+        case 1: return QStringLiteral("L%1").arg(f.program);
+        case 2: return QString::number(f.line);
+        case 3: return QString::fromUtf8(rule.data(), static_cast<qsizetype>(rule.size()));
+        case 4: {
+            QString t = QStringLiteral("N%1: ").arg(f.n) + findingText(f);
+            if (f.occurrences > 1)
+                t += QStringLiteral(" (×%1)").arg(f.occurrences);
+            return t;
+        }
+        default: return {};
+        }
+    case Qt::ToolTipRole:
+        if (column == 3)
+            return tr("The rule of the prove-out the frame breaks (the blank, the chuck, the tools)");
+        if (column == 4) // the whole text where the column cuts it
+            return findingData(i, column, Qt::DisplayRole);
+        return {};
+    case Qt::ForegroundRole:
+        if (column == 0)
+            return f.isError() ? QColor(0xc0, 0, 0) : QColor(0xa0, 0x60, 0);
+        return {};
+    case kLineRole: return f.line;
+    case kColumnRole: return 1;
+    case kRuleRole: return QString::fromUtf8(rule.data(), static_cast<qsizetype>(rule.size()));
+    case kFindingRole: return i;
     default: return {};
     }
 }

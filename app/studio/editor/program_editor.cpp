@@ -5,6 +5,8 @@
 #include "engine/program_check.h"
 #include "language.h"
 #include "program/validator.h"
+#include "proveout/proveout.h"
+#include "session/core_texts.h"
 
 #include <QAccessibleWidget>
 #include <QCoreApplication>
@@ -107,6 +109,8 @@ ProgramEditor::ProgramEditor(QWidget* parent) : QsciScintilla(withEditorAccessib
     setIndicatorForegroundColor(QColor(0xe0, 0x00, 0x00), kErrorIndicator);
     indicatorDefine(SquiggleIndicator, kWarningIndicator);
     setIndicatorForegroundColor(QColor(0xe0, 0x90, 0x00), kWarningIndicator);
+    SendScintilla(SCI_INDICSETSTYLE, kProveoutIndicator, INDIC_BOX);
+    SendScintilla(SCI_INDICSETFORE, kProveoutIndicator, QColor(220, 20, 20));
     setCaretLineVisible(true);
     // Scintilla keeps the layout of the lines on screen (not only the
     // caret's): a repaint for new squiggles, or a key that changes one line,
@@ -387,9 +391,33 @@ void ProgramEditor::drawNextSlice() {
     });
 }
 
+void ProgramEditor::setProveoutFindings(const std::vector<proveout::Finding>& findings) {
+    findings_.clear();
+    SendScintilla(SCI_SETINDICATORCURRENT, kProveoutIndicator);
+    SendScintilla(SCI_INDICATORCLEARRANGE, 0L, SendScintilla(SCI_GETLENGTH));
+    for (const proveout::Finding& f : findings) {
+        if (f.line < 1 || f.line > lines() || programAtLine(f.line - 1) != f.program)
+            continue; // a program of the machine, not of the file
+        findings_.push_back(f);
+        const long start = SendScintilla(SCI_POSITIONFROMLINE, f.line - 1);
+        const long end = SendScintilla(SCI_GETLINEENDPOSITION, f.line - 1);
+        if (end > start)
+            SendScintilla(SCI_INDICATORFILLRANGE, start, end - start);
+    }
+}
+
 QString ProgramEditor::hoverText(int position) const {
     const bool ru = currentLanguage() == QStringLiteral("ru");
     QStringList out;
+    // The prove-out's findings of a boxed line (the box moves with an edit;
+    // the findings' lines are new after the next proof).
+    if (!findings_.empty() &&
+        SendScintilla(SCI_INDICATORVALUEAT, kProveoutIndicator, static_cast<long>(position)) != 0) {
+        const long line = SendScintilla(SCI_LINEFROMPOSITION, static_cast<unsigned long>(position));
+        for (const proveout::Finding& f : findings_)
+            if (f.line - 1 == line)
+                out << QStringLiteral("N%1: ").arg(f.n) + findingText(f);
+    }
     for (std::size_t i = 0; i < diagnostics_.size() && i < diagnosticPositions_.size(); ++i) {
         const auto [b, e] = diagnosticPositions_[i];
         if (position < b || position >= e)

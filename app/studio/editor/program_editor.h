@@ -6,6 +6,8 @@
 // when a machine is chosen, as `k528 check --profile`). Diagnostics become
 // squiggles on their exact column span and hover text «[Mnn] text»;
 // completion of G, M, R, L, jump targets and #k comes from core's catalog.
+// The prove-out's findings on the file's lines (setProveoutFindings): a red
+// box on the line and the finding's text in the same hover.
 #pragma once
 
 #include "program/diagnostic.h"
@@ -17,6 +19,10 @@
 #include <memory>
 #include <optional>
 #include <vector>
+
+namespace k528::proveout {
+struct Finding;
+}
 
 namespace k528::studio {
 
@@ -31,6 +37,7 @@ public:
     static constexpr int kExecutingLineMarker = 2; // the executing line's background
     static constexpr int kErrorIndicator = 8;
     static constexpr int kWarningIndicator = 9;
+    static constexpr int kProveoutIndicator = 10; // a red box on a finding's line
 
     explicit ProgramEditor(QWidget* parent = nullptr);
     ~ProgramEditor() override;
@@ -54,7 +61,13 @@ public:
 
     // Document positions of a diagnostic's span.
     std::pair<int, int> spanPositions(const program::Diagnostic& d) const;
-    // Text of the diagnostics covering `position` ("" if none).
+    // The prove-out's findings of this file (proveout_pane.h): those of
+    // its own programs are kept, their lines boxed in red; the others (a
+    // program of the machine the file calls) have no line here.
+    void setProveoutFindings(const std::vector<proveout::Finding>& findings);
+    const std::vector<proveout::Finding>& proveoutFindings() const { return findings_; }
+    // Text of the diagnostics covering `position`, and of the findings on
+    // its line when it is boxed ("" if none).
     QString hoverText(int position) const;
     // The program (%L number) the 0-based line is in, 0 if none.
     int programAtLine(int line) const;
@@ -107,6 +120,7 @@ private:
     program::ProgramStore machinePrograms_;
     std::vector<program::Diagnostic> diagnostics_;
     std::vector<std::pair<int, int>> diagnosticPositions_;
+    std::vector<proveout::Finding> findings_;
     program::ProgramStore store_;
     std::uint64_t generation_ = 0;
     std::uint64_t applied_ = 0;        // counts apply(): a slice of an older one stops

@@ -111,6 +111,8 @@ ProveoutPane::Output proveInput(const ProveoutPane::Input& in) {
 
 QString mm(double v) { return QString::number(v, 'f', 3); }
 
+static_assert(ProveoutPane::kIndicator == ProgramEditor::kProveoutIndicator);
+
 } // namespace
 
 ProveoutPane::ProveoutPane(EditorTab* editor, QWidget* parent)
@@ -267,27 +269,11 @@ void ProveoutPane::show(const Output& out) {
 
 void ProveoutPane::markEditor() {
     ProgramEditor* ed = editor_ ? editor_->currentEditor() : nullptr;
-    const auto clear = [](ProgramEditor* e) {
-        e->SendScintilla(QsciScintilla::SCI_SETINDICATORCURRENT, kIndicator);
-        e->SendScintilla(QsciScintilla::SCI_INDICATORCLEARRANGE, 0L,
-                         e->SendScintilla(QsciScintilla::SCI_GETLENGTH));
-    };
     if (marked_ && marked_ != ed)
-        clear(marked_);
+        editor_->setProveoutFindings(marked_, {});
     marked_ = ed;
-    if (!ed)
-        return;
-    ed->SendScintilla(QsciScintilla::SCI_INDICSETSTYLE, kIndicator, QsciScintilla::INDIC_BOX);
-    ed->SendScintilla(QsciScintilla::SCI_INDICSETFORE, kIndicator, QColor(220, 20, 20));
-    clear(ed);
-    for (const proveout::Finding& f : findings_) {
-        if (f.line < 1 || f.line > ed->lines() || ed->programAtLine(f.line - 1) != f.program)
-            continue; // a program of the machine, not of the file
-        const long start = ed->SendScintilla(QsciScintilla::SCI_POSITIONFROMLINE, f.line - 1);
-        const long end = ed->SendScintilla(QsciScintilla::SCI_GETLINEENDPOSITION, f.line - 1);
-        if (end > start)
-            ed->SendScintilla(QsciScintilla::SCI_INDICATORFILLRANGE, start, end - start);
-    }
+    if (ed) // boxed on their lines, listed in the Problems
+        editor_->setProveoutFindings(ed, findings_);
 }
 
 void ProveoutPane::fillFindings() {

@@ -3,7 +3,9 @@
 // `k528 check --profile` does (core/proveout: a rapid into the material, the
 // tool or the turret into the chuck, a feed with the spindle or the wheel
 // stopped, a cut deeper than the tool takes) — each finding with its frame;
-// activating one puts the editor's cursor on its line. Below, the machine's
+// activating one puts the editor's cursor on its line. The findings go to
+// the editor too (EditorTab::setProveoutFindings: its Problems list, the red
+// box on their lines and their hover text). Below, the machine's
 // tools by turret station with their offsets from the R presets (the setup
 // sheet's table, handbook 14.3). The proof runs on a worker thread after each
 // validation of the file (the editor's), so typing never waits for it.
@@ -39,7 +41,7 @@ public:
     static constexpr int kRuleRole = Qt::UserRole + 10;
     // The editor's indicator on the lines of the findings (a red box; the
     // editor's own squiggles are 8 and 9).
-    static constexpr int kIndicator = 10;
+    static constexpr int kIndicator = 10; // ProgramEditor::kProveoutIndicator
 
     explicit ProveoutPane(EditorTab* editor, QWidget* parent = nullptr);
     ~ProveoutPane() override;

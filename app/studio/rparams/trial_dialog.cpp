@@ -118,6 +118,12 @@ void TrialPartDialog::recalculate() {
         keep_->setEnabled(false);
         return;
     }
+    if (measured_->value() == 0 && drawing_->value() == 0) {
+        // Opened, nothing entered yet: no error of 0 mm against 0 mm.
+        result_->setText(tr("Enter the size measured on the trial part and the drawing's size."));
+        keep_->setEnabled(false);
+        return;
+    }
     try {
         const std::optional<profile::Tool> t = profile::toolAt(profile::tools(machine_), tool_->currentData().toInt());
         if (!t)
@@ -132,7 +138,7 @@ void TrialPartDialog::recalculate() {
                              .arg(correction_->oldValue)
                              .arg(correction_->newValue)
                              .arg((correction_->changeMm > 0 ? QStringLiteral("+") : QString()) +
-                                  l.toString(correction_->changeMm, 'f', 3)));
+                                  l.toString(correction_->changeMm + 0.0, 'f', 3))); // never «-0.000»
     } catch (const std::exception& e) {
         result_->setText(coreErrorText(e));
     }
