@@ -558,7 +558,7 @@ private:
     const AttemptInput& in_;
     AttemptRecord& rec_;
     machine::Simulation sim_;
-    engine::Controller& ctl_;
+    engine::Positioner& ctl_;
     panel::Panel k923_;
     msglog::Recorder recorder_;
     toolpath::Decimator decimator_;

@@ -3,7 +3,7 @@
 #include "catalog/rparams.h"
 #include "session/shop_database.h"
 #include "constants/machine_store.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/rparams.h"
 #include "rparams/rparams_model.h"
 #include "rparams/trial_dialog.h"
