@@ -202,7 +202,7 @@ int main(int argc, char** argv) {
                     toolpath::LiveActualPath& p;
                     int ticks = 0;
                     Frames(machine::Simulation& s, toolpath::LiveActualPath& l) : m(s), p(l) {}
-                    engine::Controller& controller() override { return m.controller(); }
+                    engine::Positioner& controller() override { return m.controller(); }
                     void tick() override {
                         m.tick();
                         if (++ticks % 16 == 0)
@@ -238,7 +238,7 @@ int main(int argc, char** argv) {
                 Frame(machine::SimulationRunMachine& mm, toolpath::LiveActualPath& l,
                       backplot::BackplotScene& s, std::vector<double>& t)
                     : m(mm), p(l), scene(s), times(t) {}
-                engine::Controller& controller() override { return m.controller(); }
+                engine::Positioner& controller() override { return m.controller(); }
                 void tick() override {
                     m.tick();
                     if (++ticks % 1600 == 0) {

@@ -14,7 +14,7 @@
 // nearly always include one the host left alone (docs/engine.md, "Speed").
 //
 // bench_engine [REPEATS [IDLE_TICKS]]   (smaller for callgrind: bench_engine 1 200000)
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "engine/run.h"
 #include "machine/run.h"

@@ -9,7 +9,7 @@
 // counts the same frame sizes as the RS485 plugin.
 #include "report.h"
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "link/client.h"
 #include "link/image.h"
 #include "link/monitor.h"
@@ -40,7 +40,7 @@ double minimumFor(std::int64_t registers) {
 int main() {
     bench::Report report;
     profile::MachineProfile prof = profile::builtin("training-lathe");
-    engine::Controller ctl(prof);
+    engine::Positioner ctl(prof);
     ctl.powerOn();
     {
         std::string text;

@@ -5,7 +5,7 @@
 // starts, as the machine stands when an operator resumes a job), the M
 // functions handed again, until the first axis moves. Target ≤ 50 ms.
 // The best of `runs` (argument 1, default 5): the build machine is shared.
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/load_programs.h"
 #include "engine/preview_run.h"
 #include "engine/run.h"
@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < runs; ++i) {
         machine::Simulation sim(prof);
         machine::SimulationRunMachine run(sim);
-        engine::Controller& ctl = sim.controller();
+        engine::Positioner& ctl = sim.controller();
         ctl.powerOn();
         engine::loadPrograms(ctl, parsed.store);
         if (!run.switchOn(10000) || engine::homeAxes(run).status != engine::RunStatus::Completed) {

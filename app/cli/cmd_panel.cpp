@@ -12,7 +12,7 @@
 #include "cli.h"
 #include "machine_buttons.h"
 #include "machine_profile.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "machine/simulation.h"
 #include "plc/description.h"
@@ -128,7 +128,7 @@ std::optional<Step> parseStep(const std::string& token, std::string& error) {
 class Bench {
 public:
     virtual ~Bench() = default;
-    virtual engine::Controller& controller() = 0;
+    virtual engine::Positioner& controller() = 0;
     virtual void advance(std::int64_t ms) = 0;
     // PLCMODE:N — the PLC's mode code, 0 = the K923 chooses.
     virtual void imposeMode(int code) = 0;
@@ -140,7 +140,7 @@ public:
         ctl_.powerOn();
         m_.advance(10); // the PLC's first scans, as `k528 run` does
     }
-    engine::Controller& controller() override { return ctl_; }
+    engine::Positioner& controller() override { return ctl_; }
     void advance(std::int64_t ms) override { m_.advance(ms); }
     void imposeMode(int code) override {
         m_.setModeCode(code);
@@ -148,7 +148,7 @@ public:
     }
 
 private:
-    engine::Controller ctl_;
+    engine::Positioner ctl_;
     engine::IdealMachine m_;
 };
 
@@ -158,7 +158,7 @@ public:
         sim_.powerOn();
         sim_.advance(10);
     }
-    engine::Controller& controller() override { return sim_.controller(); }
+    engine::Positioner& controller() override { return sim_.controller(); }
     void advance(std::int64_t ms) override { sim_.advance(ms); }
     void imposeMode(int code) override {
         sim_.plc().imposeMode(code == 0 ? -1 : code); // 0: the description's rules again

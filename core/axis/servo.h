@@ -138,7 +138,7 @@ public:
     // value above is what it was before that tick.
     bool quiet() const { return quietTick_ && steady_; }
     // The tick of a quiet servo whose inputs are those of its last tick, as
-    // tick() would do it (the controller's settled tick, engine/controller.h).
+    // tick() would do it (the controller's settled tick, engine/positioner.h).
     void quietTick(double dt) {
         restTimerMs_ += dt;
         quietTick_ = true;

@@ -62,6 +62,10 @@ void quiet(void*, const PGresult*) {}
 // connection that was most of the client's time of opening a machine (perf:
 // brk, page faults and TLB flushes; 1.1 ms of CPU a load, 0.2 ms without).
 // Freed memory up to 16 MB now stays in the process for the next result.
+// A setting of the whole process, made here on purpose: only the backend
+// knows when a process starts to use libpq (the database is chosen at run
+// time), so SQLite-only runs keep glibc's defaults (docs/database.md,
+// PostgreSQL: Memory).
 void keepFreedMemory() {
 #if defined(__GLIBC__)
     static std::once_flag once;

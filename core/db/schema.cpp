@@ -340,15 +340,16 @@ CREATE TABLE state_times (
 )SQL";
 
 // Version 6: the history of one item read along one index. changes_by_key
-// (machine, key, revision) becomes (machine, key, revision, seq): the rows of
-// a key come in the history's order. On PostgreSQL, whose tables are heaps,
+// (machine, key, revision) becomes (machine, key, revision DESC, seq): the
+// rows of a key come in the history's order (newest first), unsorted. On
+// PostgreSQL, whose tables are heaps,
 // the revisions' author and time also stand in an index of their own, so the
 // history's join reads them from the index (the revision's settings order
 // makes its table rows wide); SQLite's revisions table is that index already
 // (WITHOUT ROWID, keyed by machine and revision). docs/database.md: Speed.
 constexpr std::string_view kSchemaV6 = R"SQL(
 DROP INDEX changes_by_key;
-CREATE INDEX changes_history ON changes (machine_id, key, revision, seq);
+CREATE INDEX changes_history ON changes (machine_id, key, revision DESC, seq);
 )SQL";
 
 constexpr std::string_view kSchemaV6Postgres = R"SQL(

@@ -1,5 +1,7 @@
 #include "db/sql.h"
 
+#include <charconv>
+
 namespace k528::db::sql {
 
 Query& Query::bind(int i, const Value& v) {
@@ -17,6 +19,43 @@ std::int64_t Connection::queryInt(std::string_view text) {
     const std::int64_t v = q.i64(0);
     q.reset();
     return v;
+}
+
+IntegerPairs::IntegerPairs(std::string packed, std::string what)
+    : packed_(std::move(packed)), what_(std::move(what)) {}
+
+Query& IntegerPairs::bind(int, std::int64_t) {
+    throw Error(ErrorKind::Sql, "packed rows take no parameters");
+}
+
+Query& IntegerPairs::bind(int, std::string_view) {
+    throw Error(ErrorKind::Sql, "packed rows take no parameters");
+}
+
+Query& IntegerPairs::bindNull(int) {
+    throw Error(ErrorKind::Sql, "packed rows take no parameters");
+}
+
+std::int64_t IntegerPairs::next() {
+    const char* begin = packed_.data() + at_;
+    const char* end = packed_.data() + packed_.size();
+    std::int64_t v = 0;
+    const auto [stop, ec] = std::from_chars(begin, end, v);
+    if (ec != std::errc() || (stop != end && *stop != ' '))
+        throw Error(ErrorKind::Corrupt, what_ + ": \"" + packed_.substr(at_, 40) +
+                                            "\" where integer pairs belong");
+    at_ = static_cast<std::size_t>(stop - packed_.data()) + (stop != end ? 1 : 0);
+    return v;
+}
+
+bool IntegerPairs::step() {
+    if (at_ >= packed_.size())
+        return false;
+    first_ = next();
+    if (at_ >= packed_.size())
+        throw Error(ErrorKind::Corrupt, what_ + ": a number without its value");
+    second_ = next();
+    return true;
 }
 
 } // namespace k528::db::sql

@@ -67,6 +67,32 @@ public:
     virtual Value value(int col) const = 0;
 };
 
+// The rows of a table of two integer columns packed by the server into one
+// text, "n v n v …" (string_agg): one row of the result instead of one a
+// pair. Read with step() as a query of its own; it binds nothing. A text
+// that is not such pairs is Corrupt, named by `what`.
+class IntegerPairs final : public Query {
+public:
+    IntegerPairs(std::string packed, std::string what);
+    Query& bind(int i, std::int64_t v) override;
+    Query& bind(int i, std::string_view v) override;
+    Query& bindNull(int i) override;
+    bool step() override;
+    void reset() override { at_ = packed_.size(); }
+    std::int64_t changes() const override { return 0; }
+    int columns() const override { return 2; }
+    std::int64_t i64(int col) const override { return col == 0 ? first_ : second_; }
+    std::string text(int col) const override { return std::to_string(i64(col)); }
+    bool isNull(int) const override { return false; }
+    Value value(int col) const override { return i64(col); }
+
+private:
+    std::int64_t next();
+    std::string packed_, what_;
+    std::size_t at_ = 0;
+    std::int64_t first_ = 0, second_ = 0;
+};
+
 class Connection {
 public:
     virtual ~Connection() = default;

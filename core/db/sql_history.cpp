@@ -91,7 +91,7 @@ namespace {
 // The changes with their revisions' author and time; the machine by its id
 // (?1, from revision ?2 on) or by its name (?1, of its last ?2 revisions).
 // Two texts each rather than "(?3 IS NULL OR c.key = ?3)": each backend
-// then plans one of them with the index on (machine, key, revision, seq).
+// then plans one of them with the index on (machine, key, revision DESC, seq).
 constexpr std::string_view kHistorySelect =
     "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
     "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision ";

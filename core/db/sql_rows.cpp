@@ -64,15 +64,18 @@ constexpr std::size_t kCurrentTables = std::size(kCurrentById);
 // rather than the view's probe for the newest revision of every number, and
 // the server compares each text with its SHA-256 (a fifth column, `true`
 // when they match: sha256() of PostgreSQL 11, OpenSSL's) where the client
-// would hash every text again on its side of the connection.
+// would hash every text again on its side of the connection. The C values
+// and R presets (two integers a row, 421 rows of a full machine) come packed
+// as one text each, "n v n v …" (sql::IntegerPairs): a row of the result
+// costs both sides more than its two numbers.
 constexpr std::string_view kLoadNamedPostgres =
     "WITH m AS (SELECT id, name, title, revision, created_at, changed_at, changed_by FROM machines "
     "WHERE name = ?1) "
     "SELECT 0, id::text, name, title, revision::text, created_at, changed_at, changed_by FROM m "
-    "UNION ALL SELECT 1, number::text, value::text, NULL, NULL, NULL, NULL, NULL FROM c_values "
-    "WHERE machine_id = (SELECT id FROM m) "
-    "UNION ALL SELECT 2, number::text, value::text, NULL, NULL, NULL, NULL, NULL FROM r_values "
-    "WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 1, string_agg(number::text || ' ' || value::text, ' '), NULL, NULL, NULL, "
+    "NULL, NULL, NULL FROM c_values WHERE machine_id = (SELECT id FROM m) "
+    "UNION ALL SELECT 2, string_agg(number::text || ' ' || value::text, ' '), NULL, NULL, NULL, "
+    "NULL, NULL, NULL FROM r_values WHERE machine_id = (SELECT id FROM m) "
     "UNION ALL SELECT 3, number::text, text, sha256, revision::text, "
     "(encode(sha256(convert_to(text, 'UTF8')), 'hex') = sha256)::text, NULL, NULL FROM "
     "(SELECT DISTINCT ON (number) number, text, sha256, revision FROM program_revisions "
@@ -126,9 +129,16 @@ std::optional<LoadedMachine> SqlStore::loadNamed(std::string_view name) {
     }
     MachineRow row = machineRow(find);
     std::optional<sql::PgPart> parts[kCurrentTables];
+    std::optional<sql::IntegerPairs> pairs[2]; // the C values and R presets, packed
     sql::Query* queries[kCurrentTables];
     for (std::size_t i = 0; i < kCurrentTables; ++i)
         queries[i] = &parts[i].emplace(q, static_cast<int>(1 + i));
+    for (std::size_t i = 0; i < 2; ++i) {
+        sql::PgPart& packed = *parts[i];
+        std::string text = packed.step() && !packed.isNull(0) ? packed.text(0) : std::string();
+        queries[i] = &pairs[i].emplace(std::move(text),
+                                       where(row) + (i == 0 ? ": C values" : ": R presets"));
+    }
     MachineProfile p = readCurrent(row, queries);
     q.reset(); // the rows (the programs' texts) are not kept
     return LoadedMachine{std::move(row), std::move(p)};

@@ -1,7 +1,7 @@
 // The state the engine's parts share (internal to core/engine): constants,
 // interface words and machine I/O, the two axes, R-parameters, messages,
 // mode and program state, plus the few actions every part needs (raise a
-// message, abort a program, stop motion). The Controller (controller.h) owns
+// message, abort a program, stop motion). The Positioner (positioner.h) owns
 // one Core and runs the parts over it in a fixed order each tick.
 #pragma once
 
@@ -77,7 +77,7 @@ struct Core {
     program::ProgramStore store;
     // Where the interpreter's frames go (engine/program_output.h): the
     // machine, the preview's instant axes, or the machine under the editor's
-    // debugger; the Controller sets it, never null while it runs.
+    // debugger; the Positioner sets it, never null while it runs.
     ProgramOutput* out = nullptr;
     // The preview's output is set: the axes are placed by the interpreter
     // and their servos do not tick (engine/preview.h).

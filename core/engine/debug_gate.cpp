@@ -1,6 +1,6 @@
 #include "engine/debug_gate.h"
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 
 namespace k528::engine {
 
@@ -43,7 +43,7 @@ bool DebugGate::beforeFrame(int program, int frameIndex, int line) {
     return true;
 }
 
-std::vector<CallLevel> callStack(const Controller& controller) {
+std::vector<CallLevel> callStack(const Positioner& controller) {
     std::vector<CallLevel> out;
     if (!programActive(controller.state()))
         return out;

@@ -4,7 +4,7 @@
 //
 // The K528-05 itself has no single-frame mode (the manual's «пошаговое
 // выполнение» is the K749's, 2.2.1); the gate is the emulator's debugger,
-// attached to a Controller with Controller::setDebugGate(). With no gate
+// attached to a Positioner with Positioner::setDebugGate(). With no gate
 // (the default) nothing changes.
 //
 // A stop holds the program as «Стоп» does between frames: the state is
@@ -29,7 +29,7 @@
 
 namespace k528::engine {
 
-class Controller;
+class Positioner;
 
 class DebugGate {
 public:
@@ -95,6 +95,6 @@ struct CallLevel {
 
 // The call stack of the program under way, outermost first (empty when no
 // program is active).
-std::vector<CallLevel> callStack(const Controller& controller);
+std::vector<CallLevel> callStack(const Positioner& controller);
 
 } // namespace k528::engine

@@ -108,7 +108,7 @@ AxisPlacement placeAxis(const profile::MachineProfile& p, AxisId a) {
     return pl;
 }
 
-IdealMachine::IdealMachine(Controller& controller) : c_(controller) {
+IdealMachine::IdealMachine(Positioner& controller) : c_(controller) {
     const profile::MachineProfile& p = c_.profile();
     const std::span<const std::int64_t> cv = c_.c();
     for (int i = 0; i < kAxisCount; ++i) {

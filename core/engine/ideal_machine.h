@@ -1,4 +1,4 @@
-// An ideal machine and a minimal PLC around a Controller: the test double of
+// An ideal machine and a minimal PLC around a Positioner: the test double of
 // the engine and the machine `k528 run` drives (the full simulated PLC and
 // machine are core/plc and core/machine).
 //
@@ -25,7 +25,7 @@
 #pragma once
 
 #include "axis/mechanics.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/fast_inputs.h"
 
 #include <array>
@@ -52,9 +52,9 @@ axis::MechanicsSettings mechanicsOf(const profile::MachineProfile& p, AxisId axi
 
 class IdealMachine {
 public:
-    explicit IdealMachine(Controller& controller);
+    explicit IdealMachine(Positioner& controller);
 
-    Controller& controller() { return c_; }
+    Positioner& controller() { return c_; }
 
     // --- time -----------------------------------------------------------
     // One tick: the PLC scan and the switches, the positioner, the drives.
@@ -142,7 +142,7 @@ private:
             --pulse;
     }
 
-    Controller& c_;
+    Positioner& c_;
     std::array<Axis, kAxisCount> axes_{};
     std::array<std::int64_t, 2> wheelCount_{};
     std::array<int, 2> wheelChannel_{-1, -1};

@@ -1,6 +1,6 @@
 #include "engine/load_programs.h"
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "program/model.h"
 
 namespace k528::engine {
@@ -12,7 +12,7 @@ void mergePrograms(program::ProgramStore& into, const program::ProgramStore& fro
         into.messages.set(m.number, m.text);
 }
 
-OpResult loadPrograms(Controller& ctl, const program::ProgramStore& from) {
+OpResult loadPrograms(Positioner& ctl, const program::ProgramStore& from) {
     program::ProgramStore* store = ctl.editablePrograms();
     if (!store)
         return OpResult::refused(Refusal::ProgramActive, "a program is active");

@@ -11,14 +11,14 @@ class ProgramStore;
 
 namespace k528::engine {
 
-class Controller;
+class Positioner;
 
 // Copies every program and message of `from` into `into`; one with the same
 // number replaces the one there, the others stay.
 void mergePrograms(program::ProgramStore& into, const program::ProgramStore& from);
 
-// The same into the controller's store, then Controller::programsEdited().
+// The same into the controller's store, then Positioner::programsEdited().
 // Refused (ProgramActive) while a program runs or is held: nothing changes.
-OpResult loadPrograms(Controller& ctl, const program::ProgramStore& from);
+OpResult loadPrograms(Positioner& ctl, const program::ProgramStore& from);
 
 } // namespace k528::engine

@@ -50,7 +50,7 @@ struct MachineIo {
 
 // The module health flags follow each other, pulseModule1Ok first, right
 // after the fast inputs: the engine reads them as one block of bytes
-// (Controller::systemChecks, Controller::routineInputs).
+// (Positioner::systemChecks, Positioner::routineInputs).
 inline constexpr std::size_t kMachineHealthFlags = 7;
 inline constexpr std::size_t kMachineStatusBytes = 2 + kMachineHealthFlags; // from fastInputs
 static_assert(offsetof(MachineIo, memoryOk) - offsetof(MachineIo, pulseModule1Ok) ==

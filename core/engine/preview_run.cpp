@@ -1,6 +1,6 @@
 #include "engine/preview_run.h"
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 
 #include <algorithm>
@@ -32,7 +32,7 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
     profile::MachineProfile profile = profileIn;
     profile.c[kAutoWithoutHomingX] = 1;
     profile.c[kAutoWithoutHomingZ] = 1;
-    Controller ctl(profile);
+    Positioner ctl(profile);
     IdealMachine machine(ctl);
     PreviewResult res;
     ctl.powerOn();
@@ -153,7 +153,7 @@ StartSearch findStartPoint(const profile::MachineProfile& profile,
     StartSink sink;
     PreviewOptions options = optionsIn;
     options.stopBefore = target;
-    options.onStopped = [&](const Controller& ctl, std::span<const std::int32_t> rAtStart) {
+    options.onStopped = [&](const Positioner& ctl, std::span<const std::int32_t> rAtStart) {
         StartPoint& p = out.point;
         ctl.captureStartPoint(p);
         p.pass = target.pass;

@@ -23,7 +23,7 @@
 
 namespace k528::engine {
 
-class Controller;
+class Positioner;
 struct PreviewResult;
 
 struct PreviewOptions {
@@ -42,7 +42,7 @@ struct PreviewOptions {
     // `onStopped` sees the controller held before it and the R-parameters
     // as they were at «Пуск»; the result's `stopped` is true.
     std::optional<FrameTarget> stopBefore;
-    std::function<void(const Controller&, std::span<const std::int32_t> rAtStart)> onStopped;
+    std::function<void(const Positioner&, std::span<const std::int32_t> rAtStart)> onStopped;
 };
 
 enum class PreviewStatus { Completed, Alarm, Limit, Cancelled };

@@ -1,7 +1,7 @@
 #include "engine/run.h"
 
 #include "catalog/messages.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "engine/load_programs.h"
 
@@ -48,7 +48,7 @@ constexpr std::int64_t kStartSeenMs = 1000;
 constexpr std::int64_t kReleasedBeforePushMs = 100;
 
 void collect(RunMachine& machine, RunResult& res) {
-    const Controller& ctl = machine.controller();
+    const Positioner& ctl = machine.controller();
     res.alarms = ctl.alarms();
     res.frames = ctl.framesExecuted();
     for (int i = 0; i < kAxisCount; ++i) {
@@ -73,7 +73,7 @@ void collect(RunMachine& machine, RunResult& res) {
 }
 
 bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t maxMs) {
-    Controller& ctl = m.controller();
+    Positioner& ctl = m.controller();
     const std::int64_t end = ctl.timeMs() + maxMs;
     while (ctl.timeMs() < end) {
         m.tick();
@@ -86,14 +86,14 @@ bool runUntil(RunMachine& m, const std::function<bool()>& done, std::int64_t max
 // An owning ideal machine for runProgram(profile, ...).
 struct OwnedIdealMachine {
     explicit OwnedIdealMachine(const profile::MachineProfile& p) : ctl(p), m(ctl), run(ctl, m) {}
-    Controller ctl;
+    Positioner ctl;
     IdealMachine m;
     IdealRunMachine run;
 };
 
 } // namespace
 
-std::vector<RunBlocker> startBlockers(const Controller& ctl, RunBlocker what) {
+std::vector<RunBlocker> startBlockers(const Positioner& ctl, RunBlocker what) {
     std::vector<RunBlocker> out;
     const InterfaceWords& w = ctl.words();
     if (!w.bit(z::EmergencyStopOk))
@@ -151,7 +151,7 @@ std::vector<int> IdealRunMachine::mFunctions() const {
 
 HomingResult homeAxes(RunMachine& machine) {
     HomingResult res;
-    Controller& ctl = machine.controller();
+    Positioner& ctl = machine.controller();
     const std::int64_t t0 = ctl.timeMs();
     const auto elapsed = [&] { return static_cast<double>(ctl.timeMs() - t0) / 1000.0; };
     const std::uint64_t latchedBefore = ctl.alarmRegistry().latchedMask();
@@ -196,7 +196,7 @@ HomingResult homeAxes(RunMachine& machine) {
 RunResult runProgram(RunMachine& machine, const program::ProgramStore& programs, int number,
                      const RunOptions& options) {
     RunResult res;
-    Controller& ctl = machine.controller();
+    Positioner& ctl = machine.controller();
     ctl.powerOn();
     loadPrograms(ctl, programs); // a fresh controller: no program runs
     for (const auto& [n, v] : options.rPresets)

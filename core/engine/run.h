@@ -13,7 +13,7 @@
 // double, below) the same way.
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "engine/views.h"
 #include "profile/profile.h"
@@ -88,12 +88,12 @@ struct RunResult {
     std::vector<RunBlocker> blockedBy; // status Blocked: why, most direct first
 };
 
-// The machine around a Controller, as the run uses it: time, and the
+// The machine around a Positioner, as the run uses it: time, and the
 // operator's gestures at the machine's control panel.
 class RunMachine {
 public:
     virtual ~RunMachine() = default;
-    virtual Controller& controller() = 0;
+    virtual Positioner& controller() = 0;
     virtual void tick() = 0;
     // Switches the machine on and waits (ticking) until it is ready to move:
     // false if it is not within `maxMs`.
@@ -132,14 +132,14 @@ HomingResult homeAxes(RunMachine& machine);
 // Why a program (or a cycle) does not start: what the panel shows (the
 // PLC's messages) and the signals of Z1000 that hold «Пуск» back; `what`,
 // the step that did not happen, comes last.
-std::vector<RunBlocker> startBlockers(const Controller& ctl, RunBlocker what);
+std::vector<RunBlocker> startBlockers(const Positioner& ctl, RunBlocker what);
 
 // The engine's ideal machine (engine/ideal_machine.h) as a RunMachine, over
-// a Controller and IdealMachine the caller owns (the rigs; runProgram below).
+// a Positioner and IdealMachine the caller owns (the rigs; runProgram below).
 class IdealRunMachine final : public RunMachine {
 public:
-    IdealRunMachine(Controller& ctl, IdealMachine& m) : ctl_(ctl), m_(m) {}
-    Controller& controller() override { return ctl_; }
+    IdealRunMachine(Positioner& ctl, IdealMachine& m) : ctl_(ctl), m_(m) {}
+    Positioner& controller() override { return ctl_; }
     void tick() override;
     bool switchOn(std::int64_t maxMs) override;
     void setOverrideCode(int code) override;
@@ -149,7 +149,7 @@ public:
     std::vector<int> mFunctions() const override;
 
 private:
-    Controller& ctl_;
+    Positioner& ctl_;
     IdealMachine& m_;
 };
 

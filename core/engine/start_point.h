@@ -1,7 +1,7 @@
 // Start from a frame (docs/engine.md, "Start from a frame"): the state of a
 // program before one of its frames, as the preview (engine/preview_run.h,
 // findStartPoint) rebuilds it by running the one interpreter up to that
-// frame, and what a start from it does on the machine (Controller::
+// frame, and what a start from it does on the machine (Positioner::
 // setStartPoint): the R-parameters the program wrote up to the frame are
 // set, the M functions it handed to the PLC are handed again in order, the
 // axes go to the frame's start point by a safe path — X to its reference

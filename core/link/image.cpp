@@ -1,6 +1,6 @@
 #include "link/image.h"
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/program_check.h"
 #include "profile/validate.h"
 #include "program/formatter.h"
@@ -25,7 +25,7 @@ std::uint16_t word32(std::int64_t v, bool high) {
 
 } // namespace
 
-ControllerImage::ControllerImage(engine::Controller& controller, const RegisterMap& map)
+ControllerImage::ControllerImage(engine::Positioner& controller, const RegisterMap& map)
     : ctl_(controller), map_(map) {}
 
 bool ControllerImage::pcReady() const {

@@ -1,5 +1,5 @@
 // The controller side of the link (shared/spec/link.md): what every holding
-// register reads and writes on an engine::Controller. The Modbus server (`k528
+// register reads and writes on an engine::Positioner. The Modbus server (`k528
 // serve`, Qt's QModbusRtuSerialServer) hands each request's registers here;
 // the in-process transport of the tests does the same without a port.
 //
@@ -24,7 +24,7 @@
 #include <vector>
 
 namespace k528::engine {
-class Controller;
+class Positioner;
 }
 
 namespace k528::link {
@@ -67,7 +67,7 @@ inline constexpr std::uint16_t kLastCommand = 11;
 
 class ControllerImage {
 public:
-    explicit ControllerImage(engine::Controller& controller, const RegisterMap& map = k528Map());
+    explicit ControllerImage(engine::Positioner& controller, const RegisterMap& map = k528Map());
 
     // Who says the controller is ready for the PC (the K923's «РАБОТА С ПЭВМ»).
     void setPcReady(std::function<bool()> ready) { pcReady_ = std::move(ready); }
@@ -98,7 +98,7 @@ private:
 
     enum class Phase { Idle, ReadingProgram, ReadingMessages, WritingProgram, WritingMessages, StagingC, StagingR };
 
-    engine::Controller& ctl_;
+    engine::Positioner& ctl_;
     const RegisterMap& map_;
     std::function<bool()> pcReady_;
     Phase phase_ = Phase::Idle;

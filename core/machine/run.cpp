@@ -9,7 +9,7 @@ namespace k528::machine {
 bool SimulationRunMachine::switchOn(std::int64_t maxMs) {
     sim_.releaseEmergencyStop();
     sim_.pressFor(Button::DrivesOn, kPressMs);
-    engine::Controller& ctl = sim_.controller();
+    engine::Positioner& ctl = sim_.controller();
     // Ready to move: the positioner is ready and every present axis has its
     // loop closed with the regulator enabled (the PLC did its part).
     return sim_.runUntil(
@@ -33,7 +33,7 @@ void SimulationRunMachine::setOverrideCode(int code) {
     }
     if (code == 10 && sim_.controller().programView().overridePercent == 100)
         return; // 100 % at power-on
-    engine::Controller& ctl = sim_.controller();
+    engine::Positioner& ctl = sim_.controller();
     for (int l = 1; l <= 4; ++l)
         if (ctl.c()[engine::c::overrideKey(l)] == code) {
             ctl.pressOverrideKey(l);

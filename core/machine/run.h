@@ -18,7 +18,7 @@ namespace k528::machine {
 class SimulationRunMachine final : public engine::RunMachine {
 public:
     explicit SimulationRunMachine(Simulation& sim) : sim_(sim) {}
-    engine::Controller& controller() override { return sim_.controller(); }
+    engine::Positioner& controller() override { return sim_.controller(); }
     void tick() override { sim_.tick(); }
     bool switchOn(std::int64_t maxMs) override;
     // The override selector, or the K923 L key of that code when the machine

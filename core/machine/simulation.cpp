@@ -175,7 +175,7 @@ Simulation::Simulation(std::string_view profileNameOrPath) {
 Simulation::~Simulation() = default;
 
 void Simulation::build(const profile::MachineProfile& p, const plc::MachineDescription& d) {
-    ctl_ = std::make_unique<engine::Controller>(p);
+    ctl_ = std::make_unique<engine::Positioner>(p);
     const std::span<const std::int64_t> cv = ctl_->c();
 
     // Equipment first (its signals), then the axes' and the drives' signals.

@@ -1,4 +1,4 @@
-// The simulated machine with its K528-05: the positioner (engine::Controller),
+// The simulated machine with its K528-05: the positioner (engine::Positioner),
 // the PLC (plc::Plc running the machine description) and the plant — two
 // feed axes (axis::Mechanics with switches placed along the slides, encoder
 // zero marks once per motor revolution), the drives, and the equipment of
@@ -10,7 +10,7 @@
 //   2. the positioner's own inputs: encoder channels, handwheels, fast inputs;
 //   3. the PLC: inputs -> scan -> outputs; the interface words exchanged
 //      (unless the link is lost);
-//   4. the positioner: Controller::tick();
+//   4. the positioner: Positioner::tick();
 //   5. the plant: DAC and regulator enable -> drives and slides; PLC outputs
 //      -> spindles, pumps, chuck, turret, door, gauge; time advances.
 //
@@ -27,7 +27,7 @@
 // describes both shipped machines, the operator API and the faults.
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "machine/equipment.h"
 #include "machine/signals.h"
@@ -179,8 +179,8 @@ public:
 
     static plc::MachineDescription descriptionFor(const profile::MachineProfile& profile);
 
-    engine::Controller& controller() { return *ctl_; }
-    const engine::Controller& controller() const { return *ctl_; }
+    engine::Positioner& controller() { return *ctl_; }
+    const engine::Positioner& controller() const { return *ctl_; }
     plc::Plc& plc() { return *plc_; }
     const plc::Plc& plc() const { return *plc_; }
     const profile::MachineProfile& profile() const { return ctl_->profile(); }
@@ -303,7 +303,7 @@ private:
     void checkFault(const FaultSpec& f) const;
     void applyFault(const FaultSpec& f, bool on);
 
-    std::unique_ptr<engine::Controller> ctl_;
+    std::unique_ptr<engine::Positioner> ctl_;
     Signals signals_;
     Equipment eq_;
     std::unique_ptr<plc::Plc> plc_;

@@ -7,7 +7,7 @@
 
 namespace k528::machine {
 
-TraceSample sampleAxes(const engine::Controller& ctl, const TraceSample* previous) {
+TraceSample sampleAxes(const engine::Positioner& ctl, const TraceSample* previous) {
     TraceSample s;
     s.tMs = ctl.timeMs();
     for (int i = 0; i < engine::kAxisCount; ++i) {
@@ -60,11 +60,11 @@ TraceRecorder::TraceRecorder(std::size_t keep, std::FILE* csv) : keep_(keep), cs
 }
 
 void TraceRecorder::attach(Simulation& sim) {
-    const engine::Controller* ctl = &sim.controller();
+    const engine::Positioner* ctl = &sim.controller();
     sim.setAfterTick([this, ctl] { record(*ctl); });
 }
 
-void TraceRecorder::record(const engine::Controller& ctl) {
+void TraceRecorder::record(const engine::Positioner& ctl) {
     const TraceSample s = sampleAxes(ctl, haveLast_ ? &last_ : nullptr);
     for (std::size_t i = 0; i < 2; ++i)
         maxError_[i] = std::max(maxError_[i], std::fabs(s.axes[i].followingErrorMm));

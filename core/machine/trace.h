@@ -6,7 +6,7 @@
 // records what the simulation's ticks give.
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/run.h"
 #include "machine/simulation.h"
 
@@ -33,7 +33,7 @@ struct TraceSample {
 
 // One sample of `ctl` now; `previous` (the sample a tick before, or null)
 // gives the sign and size of the setpoint's speed.
-TraceSample sampleAxes(const engine::Controller& ctl, const TraceSample* previous);
+TraceSample sampleAxes(const engine::Positioner& ctl, const TraceSample* previous);
 
 // "t_ms,X_setpoint_mm,...,Z_dac" and one row.
 std::string traceCsvHeader();
@@ -48,7 +48,7 @@ public:
     explicit TraceRecorder(std::size_t keep = 0, std::FILE* csv = nullptr);
     // Starts recording every tick of `sim` (replaces its after-tick hook).
     void attach(Simulation& sim);
-    void record(const engine::Controller& ctl);
+    void record(const engine::Positioner& ctl);
 
     const std::vector<TraceSample>& samples() const { return samples_; }
     std::int64_t rows() const { return rows_; }

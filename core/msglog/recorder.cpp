@@ -9,7 +9,7 @@ namespace k528::msglog {
 using db::MessageEvent;
 using db::MessageSource;
 
-Recorder::Recorder(const engine::Controller& ctl) : ctl_(&ctl), machine_(&ctl.profile()) {
+Recorder::Recorder(const engine::Positioner& ctl) : ctl_(&ctl), machine_(&ctl.profile()) {
     lastZ1000_ = ctl.words().word(1000);
 }
 

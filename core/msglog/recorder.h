@@ -19,7 +19,7 @@
 #pragma once
 
 #include "db/message_log.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 
 #include <array>
 #include <cstdint>
@@ -53,7 +53,7 @@ class Recorder {
 public:
     // Starts with what the controller shows now: messages already present
     // are recorded as raised at this moment on the first observe().
-    explicit Recorder(const engine::Controller& ctl);
+    explicit Recorder(const engine::Positioner& ctl);
     // Without an engine controller: observe(Observation) only; `machine`
     // gives the PLC messages' texts (it must outlive the recorder).
     Recorder(const profile::MachineProfile& machine, std::uint16_t z1000);
@@ -95,7 +95,7 @@ private:
     void step(std::int64_t now, std::uint16_t z1000, EntryOf&& entryOf, const engine::PlcMessagesView& pm,
               const engine::ProgramView& pv);
 
-    const engine::Controller* ctl_ = nullptr;
+    const engine::Positioner* ctl_ = nullptr;
     const profile::MachineProfile* machine_ = nullptr;
     std::int64_t seq_ = 0;
     std::int64_t now_ = 0;

@@ -21,7 +21,7 @@ namespace {
 constexpr std::string_view kModeFromPlc = "РЕЖИМ ЗАДАН ПЛК";
 } // namespace
 
-Panel::Panel(engine::Controller& controller)
+Panel::Panel(engine::Positioner& controller)
     : engine_(controller), ctx_(controller),
       auto_(std::make_unique<AutoManualScreens>(engine::Mode::Auto)),
       manual_(std::make_unique<AutoManualScreens>(engine::Mode::Manual)),

@@ -1,6 +1,6 @@
 // The K923 operator panel (manual 2.3, 2.6, table 3, appendix М) over one
 // positioner: key presses in; the 4×20 LCD with its blinking field and the
-// 17 LEDs out. It talks to the engine only through engine::Controller's
+// 17 LEDs out. It talks to the engine only through engine::Positioner's
 // public functions and views, and keeps no copy of the engine's state: the
 // screens are drawn from the engine's views whenever display() is called.
 // What it keeps is what a K923 keeps: the screen shown, markers, the text
@@ -27,7 +27,7 @@
 // Decisions and every layout: docs/panel.md.
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "panel/display.h"
 #include "panel/health.h"
 #include "panel/keys.h"
@@ -53,7 +53,7 @@ public:
     // The password of the modes F5, F6, F7 (2.6).
     static constexpr std::string_view kPassword = "1111";
 
-    explicit Panel(engine::Controller& controller);
+    explicit Panel(engine::Positioner& controller);
     ~Panel();
     Panel(const Panel&) = delete;
     Panel& operator=(const Panel&) = delete;
@@ -98,7 +98,7 @@ private:
     void passwordEntered();
     Leds leds() const;
 
-    engine::Controller& engine_;
+    engine::Positioner& engine_;
     Context ctx_;
     Health health_;
     std::unique_ptr<AutoManualScreens> auto_, manual_;

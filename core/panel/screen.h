@@ -12,7 +12,7 @@
 //     «?» in column 20 of line 1.
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "panel/keys.h"
 #include "panel/text.h"
 
@@ -28,10 +28,10 @@ enum class Access { Full, ViewOnly };
 // What a screen may ask of the panel, and the engine it works on.
 class Context {
 public:
-    explicit Context(engine::Controller& e) : engine_(e) {}
+    explicit Context(engine::Positioner& e) : engine_(e) {}
 
-    engine::Controller& engine() { return engine_; }
-    const engine::Controller& engine() const { return engine_; }
+    engine::Positioner& engine() { return engine_; }
+    const engine::Positioner& engine() const { return engine_; }
 
     // «ОШИБКА ВВОДА» (appendix М): shown on line 2 until the next key.
     void inputError();
@@ -48,7 +48,7 @@ public:
     void setPcLinkReady(bool on) { pcLinkReady_ = on; }
 
 private:
-    engine::Controller& engine_;
+    engine::Positioner& engine_;
     std::string message_;
     Access access_ = Access::Full;
     bool pcLinkReady_ = false;

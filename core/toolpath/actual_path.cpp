@@ -112,7 +112,7 @@ void Decimator::finish() {
         out_.push_back(last_);
     restart();
 }
-bool sampleOf(const engine::Controller& c, ActualSample& s) {
+bool sampleOf(const engine::Positioner& c, ActualSample& s) {
     if (!engine::programActive(c.state()))
         return false;
     s = ActualSample{};
@@ -182,7 +182,7 @@ LiveActualPath::~LiveActualPath() {
 void LiveActualPath::attach(machine::Simulation& sim) {
     detach();
     sim_ = &sim;
-    const engine::Controller* c = &sim.controller();
+    const engine::Positioner* c = &sim.controller();
     observer_ = sim.addTickObserver([this, c] { observe(*c); });
 }
 
@@ -193,7 +193,7 @@ void LiveActualPath::detach() {
     observer_ = 0;
 }
 
-void LiveActualPath::observe(const engine::Controller& c) {
+void LiveActualPath::observe(const engine::Positioner& c) {
     ActualSample s;
     observe(sampleOf(c, s) ? &s : nullptr);
 }

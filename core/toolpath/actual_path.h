@@ -85,7 +85,7 @@ class SamplingRunMachine final : public engine::RunMachine {
 public:
     SamplingRunMachine(engine::RunMachine& inner, Decimator& d, ActualPath& path)
         : m_(inner), d_(d), path_(path) {}
-    engine::Controller& controller() override { return m_.controller(); }
+    engine::Positioner& controller() override { return m_.controller(); }
     void tick() override;
     bool switchOn(std::int64_t maxMs) override { return m_.switchOn(maxMs); }
     void setOverrideCode(int code) override { m_.setOverrideCode(code); }
@@ -103,7 +103,7 @@ private:
 // The sample of `c` now: actual position and following error in current
 // coordinates (mm as the panel shows them), program/N/line. Returns false
 // when no program is active (nothing to sample).
-bool sampleOf(const engine::Controller& c, ActualSample& s);
+bool sampleOf(const engine::Positioner& c, ActualSample& s);
 // The same from what a view of any controller shows (a real one read over
 // the link: the current position in discretes as its panel shows them, the
 // following error), at time `tMs` of the caller's clock.
@@ -129,7 +129,7 @@ public:
     // The Simulation is gone (destroyed first): forget it without detaching.
     void abandon() { sim_ = nullptr; }
     // The per-tick observer (attach() installs it; tests may call it).
-    void observe(const engine::Controller& c);
+    void observe(const engine::Positioner& c);
     // The same for a sample taken elsewhere (a real controller's live
     // positions, read over the link): null when no program is active.
     void observe(const ActualSample* sample);

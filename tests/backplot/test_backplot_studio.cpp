@@ -122,7 +122,7 @@ struct Stepper final : engine::RunMachine {
     machine::SimulationRunMachine m;
     studio::SimulationSession& session;
     explicit Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-    engine::Controller& controller() override { return m.controller(); }
+    engine::Positioner& controller() override { return m.controller(); }
     int ticks = 0;
     void tick() override {
         m.tick();

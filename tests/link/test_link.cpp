@@ -4,7 +4,7 @@
 // pull, push with read-back) over the in-process transport, also through a
 // transport that loses and damages exchanges.
 #include "catalog/cparams.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "link/client.h"
 #include "link/image.h"
@@ -41,12 +41,12 @@ std::string frameLine(int i) {
 
 struct Bench {
     profile::MachineProfile prof;
-    std::unique_ptr<engine::Controller> ctl;
+    std::unique_ptr<engine::Positioner> ctl;
     std::unique_ptr<engine::IdealMachine> m;
     std::unique_ptr<ControllerImage> image;
     explicit Bench(std::string_view name = "training-lathe") {
         prof = profile::builtin(name);
-        ctl = std::make_unique<engine::Controller>(prof);
+        ctl = std::make_unique<engine::Positioner>(prof);
         m = std::make_unique<engine::IdealMachine>(*ctl);
         ctl->powerOn();
         m->advance(10);

@@ -4,7 +4,7 @@
 // byte a frame cut short, silence a timeout, a late answer is dropped; each
 // is counted per station and logged with its CRC; exceptions are counted
 // by code; a bus scan finds the station that is there and who it is.
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "link/client.h"
 #include "link/image.h"
@@ -98,12 +98,12 @@ private:
 
 struct Controller {
     profile::MachineProfile prof = profile::builtin("training-lathe");
-    std::unique_ptr<engine::Controller> ctl;
+    std::unique_ptr<engine::Positioner> ctl;
     std::unique_ptr<engine::IdealMachine> m;
     std::unique_ptr<ControllerImage> image;
     std::unique_ptr<ImageHandler> handler;
     Controller() {
-        ctl = std::make_unique<engine::Controller>(prof);
+        ctl = std::make_unique<engine::Positioner>(prof);
         m = std::make_unique<engine::IdealMachine>(*ctl);
         ctl->powerOn();
         m->advance(10);

@@ -53,7 +53,7 @@ struct Digest {
 
     void sample(machine::Simulation& sim) {
         ++ticks;
-        const engine::Controller& c = sim.controller();
+        const engine::Positioner& c = sim.controller();
         for (int a = 1000; a <= 1013; ++a)
             add(c.words().word(a));
         for (int a = 2000; a <= 2008; ++a)

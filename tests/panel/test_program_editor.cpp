@@ -15,7 +15,7 @@ namespace {
 constexpr const char* kOpen = "F6 1 1 1 1 ENTER UP"; // РЕДАКТИРОВАНИЕ УП, marker on ПРОГРАММА
 
 // The program's text as the canonical formatter writes it alone.
-std::string programText(const engine::Controller& c, int number) {
+std::string programText(const engine::Positioner& c, int number) {
     program::ProgramStore s;
     if (const program::Program* p = c.programs().find(number))
         s.insert(*p);
@@ -23,7 +23,7 @@ std::string programText(const engine::Controller& c, int number) {
 }
 
 // The store's program equals what the parser builds from `text`.
-bool sameAsParsed(const engine::Controller& c, int number, const std::string& text) {
+bool sameAsParsed(const engine::Positioner& c, int number, const std::string& text) {
     const program::ParseResult r = program::parse(text);
     const program::Program* a = c.programs().find(number);
     const program::Program* b = r.store.find(number);

@@ -6,7 +6,7 @@
 // machine with its PLC (MachineRig).
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/load_programs.h"
 #include "engine/run.h"
 #include "profile/builtin.h"
@@ -61,8 +61,8 @@ public:
     ControllerRig(const ControllerRig&) = delete;
     ControllerRig& operator=(const ControllerRig&) = delete;
 
-    virtual engine::Controller& c() = 0;
-    virtual const engine::Controller& c() const = 0;
+    virtual engine::Positioner& c() = 0;
+    virtual const engine::Positioner& c() const = 0;
     // Ticks until `done` holds or `maxMs` of machine time passed; false then.
     virtual bool until(const std::function<bool()>& done, std::int64_t maxMs) = 0;
     // engine/run.h's view of this rig's machine (homing, runs).

@@ -1,4 +1,4 @@
-// A Controller on the ideal machine, for the engine tests: a built-in
+// A Positioner on the ideal machine, for the engine tests: a built-in
 // profile (tweaked by the test), programs loaded from text, helpers to home,
 // start and wait. Positions in display discretes unless a name says mm.
 #pragma once
@@ -15,20 +15,20 @@ namespace k528::testrig {
 
 class EngineRig : public ControllerRig {
 public:
-    std::unique_ptr<engine::Controller> ctl;
+    std::unique_ptr<engine::Positioner> ctl;
     std::unique_ptr<engine::IdealMachine> m;
 
     // `tweak` edits the profile before the controller is built.
     explicit EngineRig(std::string_view name = "training-lathe", const ProfileTweak& tweak = {})
         : ControllerRig(tweakedProfile(name, tweak)),
-          ctl(std::make_unique<engine::Controller>(prof)),
+          ctl(std::make_unique<engine::Positioner>(prof)),
           m(std::make_unique<engine::IdealMachine>(*ctl)) {
         ctl->powerOn();
         m->advance(10);
     }
 
-    engine::Controller& c() override { return *ctl; }
-    const engine::Controller& c() const override { return *ctl; }
+    engine::Positioner& c() override { return *ctl; }
+    const engine::Positioner& c() const override { return *ctl; }
     bool until(const std::function<bool()>& done, std::int64_t maxMs) override {
         return m->runUntil(done, maxMs);
     }

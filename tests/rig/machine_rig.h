@@ -28,7 +28,7 @@ class WatchedSimulationRun final : public engine::RunMachine {
 public:
     WatchedSimulationRun(machine::Simulation& sim, std::function<void()> afterTick)
         : inner_(sim), afterTick_(std::move(afterTick)) {}
-    engine::Controller& controller() override { return inner_.controller(); }
+    engine::Positioner& controller() override { return inner_.controller(); }
     void tick() override {
         inner_.tick();
         afterTick_();
@@ -55,8 +55,8 @@ public:
         sim->advance(20);
     }
 
-    engine::Controller& c() override { return sim->controller(); }
-    const engine::Controller& c() const override { return sim->controller(); }
+    engine::Positioner& c() override { return sim->controller(); }
+    const engine::Positioner& c() const override { return sim->controller(); }
     bool until(const std::function<bool()>& done, std::int64_t maxMs) override {
         return sim->runUntil(done, maxMs);
     }

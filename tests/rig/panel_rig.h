@@ -1,4 +1,4 @@
-// The K923 model over a Controller on the ideal machine (as `k528 panel`
+// The K923 model over a Positioner on the ideal machine (as `k528 panel`
 // builds it): a built-in profile (tweaked by the test), keys given as in
 // `--keys` ("F2 MODE 1 2 ENTER WAIT:2"), the four lines read back.
 #pragma once

@@ -74,7 +74,7 @@ struct Bench {
                 phases << panel->debugger()->phase();
         });
     }
-    engine::Controller& ctl() { return session->controller(); }
+    engine::Positioner& ctl() { return session->controller(); }
     bool until(const std::function<bool()>& done, std::int64_t maxMs) {
         for (std::int64_t t = 0; t < maxMs; t += 10) {
             session->advance(10);

@@ -80,7 +80,7 @@ private slots:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         session.advance(20);
-        engine::Controller& ctl = session.controller();
+        engine::Positioner& ctl = session.controller();
         PendantButton* drives = panel.button(machine::Button::DrivesOn);
         QVERIFY(!drives->lit());
         QVERIFY(hasMessage(messages, "W10")); // «Включите приводы»
@@ -205,7 +205,7 @@ private slots:
         panel.show();
         QVERIFY(QTest::qWaitForWindowExposed(&panel));
         session.advance(20);
-        engine::Controller& ctl = session.controller();
+        engine::Positioner& ctl = session.controller();
         PendantButton* drives = panel.button(machine::Button::DrivesOn);
         QTest::mouseClick(drives, Qt::LeftButton, {}, capCentre(drives)); // no time between
         QVERIFY(session.simulation().buttonDown(machine::Button::DrivesOn));
@@ -409,7 +409,7 @@ private slots:
         // Nothing selected after power-on: the catalog's first program.
         s->advance(10);
         QCOMPARE(m->shownProgram(), s->controller().programs().programs().front().number);
-        engine::Controller& ctl = s->controller();
+        engine::Positioner& ctl = s->controller();
         program::ProgramStore* store = ctl.editablePrograms();
         QVERIFY(store);
         const auto parsed =
@@ -501,7 +501,7 @@ private slots:
             machine::Simulation& sim = s->simulation();
             sim.pressFor(machine::Button::DrivesOn, 100);
             s->advance(600);
-            engine::Controller& ctl = s->controller();
+            engine::Positioner& ctl = s->controller();
             ctl.selectMode(engine::Mode::Reference);
             for (auto [a, b] :
                  {std::pair{engine::AxisId::X,

@@ -98,7 +98,7 @@ private slots:
         MainWindow w(loadMachine("training-lathe"));
         SimulationSession* s = w.session();
         s->setRunning(false);
-        engine::Controller& ctl = s->controller();
+        engine::Positioner& ctl = s->controller();
         QVERIFY(ctl.setR(100, 4321).ok());
         program::ProgramStore* store = ctl.editablePrograms();
         QVERIFY(store);

@@ -60,7 +60,7 @@ private slots:
         QVERIFY2(r.loaded, qPrintable(r.problem));
         QCOMPARE(r.programs, (QList<int>{12, 3}));
         QVERIFY(r.findings.isEmpty());
-        const engine::Controller& ctl = w.session()->controller();
+        const engine::Positioner& ctl = w.session()->controller();
         QVERIFY(ctl.programs().find(12) && ctl.programs().find(3));
         QCOMPARE(ctl.programView().selectedProgram, 12);
         QVERIFY(ctl.programs().messages.find(9));
@@ -75,7 +75,7 @@ private slots:
         QTemporaryDir dir;
         MainWindow w;
         w.session()->setRunning(false);
-        const engine::Controller& ctl = w.session()->controller();
+        const engine::Positioner& ctl = w.session()->controller();
         const std::uint64_t before = ctl.programsRevision();
         // G2 is not in table 5 (47); L77 does not exist (45).
         const QString f = write(dir, "bad.k528", "%L20\nN1 G2 X5\nN2 L77\nN3 M30\n");

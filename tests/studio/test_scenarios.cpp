@@ -190,7 +190,7 @@ private slots:
         QString why;
         QVERIFY2(switchTo(w, "training", &why), qPrintable(why));
         QVERIFY(screenArea().contains(w.frameGeometry()));
-        engine::Controller& ctl = w.session()->controller();
+        engine::Positioner& ctl = w.session()->controller();
         // Ten times real time (Simulation > Speed), as a trainer does to get on.
         QAction* fast = w.findChild<QAction*>("action.simulation.speed10");
         QVERIFY(fast);

@@ -15,8 +15,10 @@
 #include "rparams/rparams_dock.h"
 #include "rparams/trial_dialog.h"
 #include "session/simulation_session.h"
+#include "language.h"
 #include "rig/studio_rig.h"
 
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMenu>
@@ -85,6 +87,20 @@ private slots:
         QVERIFY(!d->correction());
         QVERIFY(!d->keepButton()->isEnabled());
         QVERIFY2(d->result()->text().startsWith("Enter the size"), qPrintable(d->result()->text()));
+        // As opened, in each language (to be looked at).
+        const QString shots = QStringLiteral(K528_BINARY_DIR "/screenshots");
+        QDir().mkpath(shots);
+        for (const QString lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(lang));
+            TrialPartDialog* fresh = pane.trialPartDialog();
+            fresh->show();
+            QTest::qWait(50);
+            QVERIFY(fresh->grab().save(shots + "/trial-dialog-" + lang + ".png"));
+            if (lang == "ru")
+                QVERIFY2(fresh->result()->text().startsWith(QStringLiteral("Введите")), qPrintable(fresh->result()->text()));
+            fresh->close();
+        }
+        QVERIFY(setLanguage("en"));
         d->setInputs(2, true, 40.06, 40.00);
         QVERIFY(d->correction());
         QCOMPARE(d->correction()->rNumber, 102);

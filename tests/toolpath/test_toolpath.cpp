@@ -243,7 +243,7 @@ private slots:
             std::vector<std::size_t> sizes;
             int ticks = 0, restarts = 0;
             Frames(engine::RunMachine& inner, toolpath::LiveActualPath& l) : m(inner), live(l) {}
-            engine::Controller& controller() override { return m.controller(); }
+            engine::Positioner& controller() override { return m.controller(); }
             void tick() override {
                 m.tick();
                 if (++ticks % 16 == 0)

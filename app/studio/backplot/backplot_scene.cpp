@@ -1,4 +1,5 @@
 #include "backplot/backplot_scene.h"
+#include "backplot/line_cells.h"
 
 #include <vtkActor.h>
 #include <vtkActor2D.h>
@@ -56,25 +57,7 @@ struct Layer {
         r->AddActor(actor);
     }
     // Replaces the contents with lines (4 floats a line) at depth z.
-    void lines(const std::vector<float>& v, double z) {
-        vtkNew<vtkPoints> pts;
-        pts->SetDataTypeToFloat();
-        const vtkIdType n = static_cast<vtkIdType>(v.size() / 4);
-        pts->SetNumberOfPoints(2 * n);
-        vtkNew<vtkCellArray> cells;
-        cells->AllocateExact(n, 2 * n);
-        for (vtkIdType i = 0; i < n; ++i) {
-            const float* f = v.data() + 4 * i;
-            pts->SetPoint(2 * i, f[0], f[1], z);
-            pts->SetPoint(2 * i + 1, f[2], f[3], z);
-            const vtkIdType ids[2] = {2 * i, 2 * i + 1};
-            cells->InsertNextCell(2, ids);
-        }
-        data->Initialize();
-        data->SetPoints(pts);
-        data->SetLines(cells);
-        data->Modified();
-    }
+    void lines(const std::vector<float>& v, double z) { setLines(data, v, z); }
     // Replaces the contents with triangles (6 floats a triangle) at depth z.
     void triangles(const std::vector<float>& v, double z) {
         vtkNew<vtkPoints> pts;

@@ -1,12 +1,11 @@
 #include "backplot/tool_edge.h"
 
 #include "backplot/backplot_scene.h"
+#include "backplot/line_cells.h"
 #include "proveout/tool_change.h"
 
 #include <vtkActor.h>
-#include <vtkCellArray.h>
 #include <vtkNew.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -178,23 +177,7 @@ void ToolEdge::show(const std::optional<profile::Tool>& tool, double z, double x
         return;
     tool_ = tool, z_ = z, x_ = x, shownPerMm_ = shownPerMm;
     const std::vector<float> v = toolEdgeLines(*tool, z, x, shownPerMm);
-    vtkNew<vtkPoints> pts;
-    pts->SetDataTypeToFloat();
-    const vtkIdType n = static_cast<vtkIdType>(v.size() / 4);
-    pts->SetNumberOfPoints(2 * n);
-    vtkNew<vtkCellArray> cells;
-    cells->AllocateExact(n, 2 * n);
-    for (vtkIdType i = 0; i < n; ++i) {
-        const float* f = v.data() + 4 * i;
-        pts->SetPoint(2 * i, f[0], f[1], 0.32); // just above the tool's cross (0.3)
-        pts->SetPoint(2 * i + 1, f[2], f[3], 0.32);
-        const vtkIdType ids[2] = {2 * i, 2 * i + 1};
-        cells->InsertNextCell(2, ids);
-    }
-    v_->data->Initialize();
-    v_->data->SetPoints(pts);
-    v_->data->SetLines(cells);
-    v_->data->Modified();
+    setLines(v_->data, v, 0.32); // just above the tool's cross (0.3)
     v_->actor->VisibilityOn();
     shown_ = true;
     ++rebuilds_;

@@ -6,7 +6,7 @@
 #include "constants/constants_dock.h"
 #include "constants/constants_editor.h"
 #include "constants/machine_store.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "profile/calculator.h"
 #include "controller/controller.h"
 

@@ -10,7 +10,7 @@
 #include "constants/constants_dialogs.h"
 #include "constants/constants_editor.h"
 #include "constants/constants_model.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "profile/csv.h"
 #include "profile/text_format.h"
 #include "controller/controller.h"

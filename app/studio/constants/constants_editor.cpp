@@ -4,7 +4,7 @@
 
 #include "catalog/cparams.h"
 #include "catalog/messages.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "db/notes.h"
 #include "language.h"
 #include "profile/validate.h"

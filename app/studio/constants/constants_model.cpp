@@ -3,7 +3,7 @@
 #include "catalog/cparams.h"
 #include "constants/constants_editor.h"
 #include "db/explain.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "language.h"
 #include "controller/controller.h"
 

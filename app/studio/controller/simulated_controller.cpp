@@ -3,7 +3,7 @@
 #include "catalog/messages.h"
 #include "language.h"
 #include "engine/alarms.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/self_test.h"
 #include "session/program_loader.h"
 #include "machine/simulation.h"
@@ -30,7 +30,7 @@ QString refusalText(const engine::OpResult& r) {
 QString trc(const char* text) { return QCoreApplication::translate("k528::studio::ConstantsEditor", text); }
 
 // Why the constants cannot change now ("" when they can).
-QString whyNotConstants(const engine::Controller& c) {
+QString whyNotConstants(const engine::Positioner& c) {
     if (engine::programActive(c.state()))
         return trc("a program is under way: the constants are changed when it has ended");
     for (engine::AxisId a : {engine::AxisId::X, engine::AxisId::Z})
@@ -41,7 +41,7 @@ QString whyNotConstants(const engine::Controller& c) {
 
 // The mode of the moment of a change: F5 (one value) or F7 (all, a clear).
 template <class F>
-QString inMode(engine::Controller& c, engine::Mode mode, F&& change) {
+QString inMode(engine::Positioner& c, engine::Mode mode, F&& change) {
     if (const QString why = whyNotConstants(c); !why.isEmpty())
         return why;
     const engine::Mode was = c.mode();
@@ -58,7 +58,7 @@ QString inMode(engine::Controller& c, engine::Mode mode, F&& change) {
 
 } // namespace
 
-QString applyCToController(engine::Controller& controller, int number, std::int64_t value) {
+QString applyCToController(engine::Positioner& controller, int number, std::int64_t value) {
     return inMode(controller, engine::Mode::MachineData, [&] { return controller.setC(number, value); });
 }
 
@@ -123,7 +123,7 @@ const ControllerState& SimulatedController::state() const {
     if (!dirty_)
         return state_;
     dirty_ = false;
-    const engine::Controller& c = session_.controller();
+    const engine::Positioner& c = session_.controller();
     ControllerState& s = state_;
     s.connected = true;
     s.program = c.programView();
@@ -178,7 +178,7 @@ std::uint64_t SimulatedController::memoryRevision() const {
 }
 
 QString SimulatedController::whyNotWritable(MemoryArea area, int number) const {
-    const engine::Controller& c = session_.controller();
+    const engine::Positioner& c = session_.controller();
     if (area == MemoryArea::C)
         return whyNotConstants(c);
     if (number >= 0 && engine::rReadOnly(number))
@@ -204,7 +204,7 @@ void SimulatedController::setC(int number, std::int64_t value, Done done) {
 }
 
 void SimulatedController::setAllC(std::vector<std::int64_t> c, Done done) {
-    engine::Controller& ctl = session_.controller();
+    engine::Positioner& ctl = session_.controller();
     written(inMode(ctl, engine::Mode::DataControl, [&] { return ctl.loadCParameters(c); }), done);
 }
 
@@ -219,7 +219,7 @@ void SimulatedController::setR(int number, std::int64_t value, Done done) {
 }
 
 void SimulatedController::clear(MemoryArea area, Done done) {
-    engine::Controller& ctl = session_.controller();
+    engine::Positioner& ctl = session_.controller();
     written(inMode(ctl, engine::Mode::DataControl,
                    [&] { return area == MemoryArea::C ? ctl.clearCParameters() : ctl.clearRParameters(); }),
             done);
@@ -234,7 +234,7 @@ void SimulatedController::loadPrograms(const std::string& text, const QString& s
 }
 
 void SimulatedController::readMemory(MemoryDone done) {
-    const engine::Controller& c = session_.controller();
+    const engine::Positioner& c = session_.controller();
     done(true, {}, engine::memoryProfile(session_.simulation().profile(), c.c(), c.rValues(), c.programs()));
 }
 

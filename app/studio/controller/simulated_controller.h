@@ -13,7 +13,7 @@
 #include <vector>
 
 namespace k528::engine {
-class Controller;
+class Positioner;
 }
 
 namespace k528::studio {
@@ -22,7 +22,7 @@ class SimulationSession;
 
 // Sets C`number` on the controller as the K923 does (F5 for the moment of
 // the change); "" when done, otherwise why not (English from the engine).
-QString applyCToController(engine::Controller& controller, int number, std::int64_t value);
+QString applyCToController(engine::Positioner& controller, int number, std::int64_t value);
 
 class SimulatedController final : public Controller, public SimulatedMachine {
     Q_OBJECT

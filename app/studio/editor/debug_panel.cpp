@@ -304,7 +304,7 @@ bool DebugPanel::startHere() {
         return false;
     }
     const program::Frame& frame = in->frames[static_cast<std::size_t>(index)];
-    engine::Controller& ctl = session_->controller();
+    engine::Positioner& ctl = session_->controller();
     engine::PreviewOptions po;
     po.fromReferencePoint = true;
     for (int n = 0; n < engine::kRCount; ++n) // the machine's R-parameters, as they are now
@@ -495,7 +495,7 @@ void DebugPanel::refreshWatch() {
     if (!session_)
         return;
     refreshing_ = true;
-    const engine::Controller& ctl = session_->controller();
+    const engine::Positioner& ctl = session_->controller();
     for (int i = 0; i < watch_->topLevelItemCount(); ++i) {
         QTreeWidgetItem* it = watch_->topLevelItem(i);
         setTextIfChanged(it, 1, QString::number(ctl.r(it->data(0, Qt::UserRole).toInt())));

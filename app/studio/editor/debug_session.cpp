@@ -124,7 +124,7 @@ void DebugSession::fail(const QString& why) {
 }
 
 QString DebugSession::whyNoStart() const {
-    const engine::Controller& ctl = session_->controller();
+    const engine::Positioner& ctl = session_->controller();
     const bool ru = currentLanguage() == QStringLiteral("ru");
     if (session_->simulation().emergencyStopPressed())
         return tr("the emergency stop is pressed on the machine's panel");
@@ -144,7 +144,7 @@ bool DebugSession::start(int number) {
         return false;
     if (!session_->isRunning())
         emit message(tr("The machine is paused (Simulation > Pause the machine): the run goes on when it runs."));
-    engine::Controller& ctl = session_->controller();
+    engine::Positioner& ctl = session_->controller();
     if (engine::programActive(ctl.state())) {
         emit message(tr("A program is under way: stop it first."));
         return false;
@@ -184,7 +184,7 @@ bool DebugSession::start(int number) {
 }
 
 void DebugSession::nextHoming() {
-    engine::Controller& ctl = session_->controller();
+    engine::Positioner& ctl = session_->controller();
     for (int i = homingAxis_ + 1; i < engine::kAxisCount; ++i) {
         const engine::AxisView v = ctl.axisView(engine::axisAt(i));
         if (!v.present || v.referenceOk)
@@ -283,7 +283,7 @@ void DebugSession::reset() {
 void DebugSession::advanced() {
     if (!session_)
         return;
-    engine::Controller& ctl = session_->controller();
+    engine::Positioner& ctl = session_->controller();
     machine::Simulation& sim = session_->simulation();
     const std::int64_t now = session_->timeMs();
     if (startPending_ && startFree())

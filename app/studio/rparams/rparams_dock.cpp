@@ -5,7 +5,7 @@
 #include "session/core_texts.h"
 #include "session/shop_database.h"
 #include "constants/machine_store.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/rparams.h"
 #include "rparams/rparams_model.h"
 #include "rparams/trial_dialog.h"

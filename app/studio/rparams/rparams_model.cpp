@@ -1,7 +1,7 @@
 #include "rparams/rparams_model.h"
 
 #include "catalog/rparams.h"
-#include "engine/controller.h"
+#include "engine/positioner.h"
 #include "engine/rparams.h"
 #include "language.h"
 #include "controller/controller.h"

@@ -27,7 +27,7 @@ void ScopeBuffer::add(const machine::TraceSample& s) {
     size_ = std::min(size_ + 1, ring_.size());
 }
 
-void ScopeBuffer::record(const engine::Controller& ctl) {
+void ScopeBuffer::record(const engine::Positioner& ctl) {
     lastSample_ = machine::sampleAxes(ctl, haveLast_ ? &lastSample_ : nullptr);
     haveLast_ = true;
     add(lastSample_);

@@ -25,7 +25,7 @@ public:
     explicit ScopeBuffer(std::size_t capacity = 60000) : ring_(capacity) {}
     void clear();
     void add(const machine::TraceSample& s);
-    void record(const engine::Controller& ctl);
+    void record(const engine::Positioner& ctl);
     std::size_t size() const { return size_; }
     std::size_t capacity() const { return ring_.size(); }
     // i = 0 the oldest kept.

@@ -278,7 +278,7 @@ void ScopeView::attach(machine::Simulation& sim) {
     detach();
     sim_ = &sim;
     buffer_.clear();
-    const engine::Controller* ctl = &sim.controller();
+    const engine::Positioner* ctl = &sim.controller();
     sim.setAfterTick([this, ctl] {
         if (!paused_)
             buffer_.record(*ctl);

@@ -42,7 +42,7 @@ ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
 
 ProgramLoad loadProgramText(SimulationSession& session, const std::string& text, const QString& name) {
     ProgramLoad r;
-    engine::Controller& ctl = session.controller();
+    engine::Positioner& ctl = session.controller();
     const engine::FileCheck c = engine::checkFileForMachine(text, {}, session.simulation().profile(), ctl.programs());
     const bool russian = currentLanguage() == QStringLiteral("ru");
     for (const program::Diagnostic& d : c.diagnostics) {

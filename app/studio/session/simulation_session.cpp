@@ -112,7 +112,7 @@ void SimulationSession::advancedTo() {
 
 bool SimulationSession::somethingChanged() {
     Look now;
-    const engine::Controller& c = sim_->controller();
+    const engine::Positioner& c = sim_->controller();
     now.words = c.words();
     now.display = panel_->display();
     for (int i = 0; i < 2; ++i) {

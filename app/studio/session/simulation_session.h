@@ -54,7 +54,7 @@ public:
 
     machine::Simulation& simulation() { return *sim_; }
     const machine::Simulation& simulation() const { return *sim_; }
-    engine::Controller& controller() { return sim_->controller(); }
+    engine::Positioner& controller() { return sim_->controller(); }
     // The K923 of this machine.
     panel::Panel& panel() { return *panel_; }
 

@@ -116,7 +116,7 @@ void AutoManualScreens::moveR(int step) {
 }
 
 void AutoManualScreens::key(KeyPress k, Context& ctx) {
-    engine::Controller& e = ctx.engine();
+    engine::Positioner& e = ctx.engine();
     // ACK: the number of the program of АВТОМАТ (table 3).
     if (k.key == Key::Ack) {
         cancelEdit();

@@ -9,7 +9,7 @@ namespace {
 using engine::AlarmCategory;
 
 // Positioner messages of the categories, in the order they came.
-void positioner(const engine::Controller& c, bool faults, std::vector<std::string>& out) {
+void positioner(const engine::Positioner& c, bool faults, std::vector<std::string>& out) {
     for (const engine::AlarmView& a : c.alarms()) {
         const bool isFault =
             a.category == AlarmCategory::Fault || a.category == AlarmCategory::Program;
@@ -20,7 +20,7 @@ void positioner(const engine::Controller& c, bool faults, std::vector<std::strin
 }
 
 // PLC messages whose bit is set in `bits` (bit k-1 = message k).
-void plc(const engine::Controller& c, catalog::PlcGroup g, std::uint32_t bits,
+void plc(const engine::Positioner& c, catalog::PlcGroup g, std::uint32_t bits,
          std::vector<std::string>& out) {
     const auto& texts = c.profile().plcTexts(g);
     for (int k = 1; k <= catalog::plcMessageCount(g); ++k) {
@@ -46,7 +46,7 @@ std::string_view serviceListTitle(ServiceList l) {
     return "";
 }
 
-std::vector<std::string> serviceEntries(const engine::Controller& c, ServiceList l) {
+std::vector<std::string> serviceEntries(const engine::Positioner& c, ServiceList l) {
     std::vector<std::string> out;
     const engine::PlcMessagesView p = c.plcMessages();
     switch (l) {
@@ -65,7 +65,7 @@ std::vector<std::string> serviceEntries(const engine::Controller& c, ServiceList
     return out;
 }
 
-char32_t serviceMark(const engine::Controller& c) {
+char32_t serviceMark(const engine::Positioner& c) {
     const engine::AlarmRegistry& a = c.alarmRegistry();
     const engine::PlcMessagesView p = c.plcMessages();
     if (a.anyLatched(AlarmCategory::Fault) || a.anyLatched(AlarmCategory::Program) || p.alarms != 0)

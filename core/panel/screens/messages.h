@@ -15,7 +15,7 @@
 // profile's texts for the PLC (its address, «Z1900.3», when the profile has none).
 #pragma once
 
-#include "engine/controller.h"
+#include "engine/positioner.h"
 
 #include <string>
 #include <string_view>
@@ -28,8 +28,8 @@ enum class ServiceList { Messages = 1, Faults = 2, System = 3 };
 // «СООБЩЕНИЯ», «НЕИСПРАВНОСТИ», «СИСТЕМА».
 std::string_view serviceListTitle(ServiceList l);
 // The entries of a list, as the panel shows them (one text per entry).
-std::vector<std::string> serviceEntries(const engine::Controller& c, ServiceList l);
+std::vector<std::string> serviceEntries(const engine::Positioner& c, ServiceList l);
 // U'!', U'?', U'*' or 0.
-char32_t serviceMark(const engine::Controller& c);
+char32_t serviceMark(const engine::Positioner& c);
 
 } // namespace k528::panel

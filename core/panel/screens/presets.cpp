@@ -85,7 +85,7 @@ const Group& groupDef(int g) {
 // «MX: координата X» (R220, R200, R184 …) shows the machine coordinate of
 // the axis there, as the manual's example «MX: -123.456» does: «это значение
 // координаты в системе станка с учетом программирования на радиус/диаметр».
-std::string hintOf(const Item& it, const engine::Controller& c) {
+std::string hintOf(const Item& it, const engine::Positioner& c) {
     if (it.r == kCurrent)
         return "ТЕКУЩАЯ КООРДИНАТА";
     std::string h(catalog::rParam(it.r).panelHint);
@@ -103,7 +103,7 @@ std::string hintOf(const Item& it, const engine::Controller& c) {
     return h;
 }
 
-units::AxisScale scaleOf(const engine::Controller& c, AxisId a) {
+units::AxisScale scaleOf(const engine::Positioner& c, AxisId a) {
     return c.axisView(a).scale;
 }
 
@@ -119,7 +119,7 @@ constexpr int kMenuRows = 3;
 // ---------------------------------------------------------------------------
 // Formats
 
-int rFormatDecimals(RFormat f, const engine::Controller& c) {
+int rFormatDecimals(RFormat f, const engine::Positioner& c) {
     switch (f) {
     case RFormat::Integer:
         return 0;
@@ -136,7 +136,7 @@ int rFormatDecimals(RFormat f, const engine::Controller& c) {
     return 0;
 }
 
-std::string formatR(std::int64_t value, RFormat f, const engine::Controller& c) {
+std::string formatR(std::int64_t value, RFormat f, const engine::Positioner& c) {
     switch (f) {
     case RFormat::Integer:
         return std::to_string(value);
@@ -153,7 +153,7 @@ std::string formatR(std::int64_t value, RFormat f, const engine::Controller& c) 
     return {};
 }
 
-std::optional<std::int64_t> parseR(std::string_view typed, RFormat f, const engine::Controller& c) {
+std::optional<std::int64_t> parseR(std::string_view typed, RFormat f, const engine::Positioner& c) {
     const auto v = evaluateEntry(typed, rFormatDecimals(f, c));
     if (!v)
         return std::nullopt;
@@ -204,7 +204,7 @@ void PresetScreens::renderMenu(Canvas& c) const {
 }
 
 void PresetScreens::renderGroup(Canvas& c, const Context& ctx) const {
-    const engine::Controller& e = ctx.engine();
+    const engine::Positioner& e = ctx.engine();
     const Group& g = groupDef(group_);
     const Page& p = g.pages[static_cast<std::size_t>(page_)];
     const int count = static_cast<int>(p.items.size());
@@ -248,7 +248,7 @@ void PresetScreens::render(Canvas& c, const Context& ctx) const {
 }
 
 void PresetScreens::store(Context& ctx) {
-    engine::Controller& e = ctx.engine();
+    engine::Positioner& e = ctx.engine();
     const Page& p = groupDef(group_).pages[static_cast<std::size_t>(page_)];
     const Item& it = p.items[static_cast<std::size_t>(marker_)];
     const RFormat f =

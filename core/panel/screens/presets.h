@@ -35,11 +35,11 @@ enum class RFormat {
 };
 
 // Digits after the point for the format on this machine.
-int rFormatDecimals(RFormat f, const engine::Controller& c);
-std::string formatR(std::int64_t value, RFormat f, const engine::Controller& c);
+int rFormatDecimals(RFormat f, const engine::Positioner& c);
+std::string formatR(std::int64_t value, RFormat f, const engine::Positioner& c);
 // The value of a typed text (digits, point, + - * /) in the format; nullopt
 // if malformed or with more decimals than the format has.
-std::optional<std::int64_t> parseR(std::string_view typed, RFormat f, const engine::Controller& c);
+std::optional<std::int64_t> parseR(std::string_view typed, RFormat f, const engine::Positioner& c);
 
 class PresetScreens : public Screen {
 public:

@@ -154,7 +154,7 @@ void ProgramEditScreens::render(Canvas& c, const Context& ctx) const {
 }
 
 void ProgramEditScreens::key(KeyPress k, Context& ctx) {
-    engine::Controller& e = ctx.engine();
+    engine::Positioner& e = ctx.engine();
     switch (page_) {
     case Page::Editor:
         editor_.key(k, ctx);

@@ -3,7 +3,7 @@
 namespace k528::panel {
 
 void ReferenceScreen::render(Canvas& c, const Context& ctx) const {
-    const engine::Controller& e = ctx.engine();
+    const engine::Positioner& e = ctx.engine();
     c.put(0, 1, engine::modeTagRu(engine::Mode::Reference));
     for (int i = 0; i < engine::kAxisCount; ++i) {
         const engine::AxisView v = e.axisView(engine::axisAt(i));

@@ -12,7 +12,7 @@ namespace {
 constexpr std::array<std::string_view, 4> kMenu = {"1 - СООБЩЕНИЯ", "2 - НЕИСПРАВНОСТИ",
                                                    "3 - СИСТЕМА", "4 - ДИАГНОСТИКА"};
 
-int firstPresentAxis(const engine::Controller& e) {
+int firstPresentAxis(const engine::Positioner& e) {
     return !e.axisView(engine::AxisId::X).present && e.axisView(engine::AxisId::Z).present ? 1 : 0;
 }
 } // namespace
@@ -42,7 +42,7 @@ void ServiceScreens::choose(int item, const Context& ctx) {
 }
 
 void ServiceScreens::render(Canvas& c, const Context& ctx) const {
-    const engine::Controller& e = ctx.engine();
+    const engine::Positioner& e = ctx.engine();
     switch (page_) {
     case Page::Menu:
         for (int i = 0; i < 4; ++i)

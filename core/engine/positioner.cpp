@@ -1,4 +1,4 @@
-#include "engine/controller.h"
+#include "engine/positioner.h"
 
 #include "catalog/messages.h"
 #include "engine/coordinates.h"
@@ -53,7 +53,7 @@ int channelIndex(std::int64_t code) {
 
 } // namespace
 
-Controller::Controller(const profile::MachineProfile& profile) : c_(profile), interp_(c_) {
+Positioner::Positioner(const profile::MachineProfile& profile) : c_(profile), interp_(c_) {
     chooseOutput();
     bool intact = true;
     c_.store = loadStore(profile, intact);
@@ -66,17 +66,17 @@ Controller::Controller(const profile::MachineProfile& profile) : c_(profile), in
 // ---------------------------------------------------------------------------
 // Power-on and the self-test
 
-void Controller::configurationCheck() {
+void Positioner::configurationCheck() {
     configMessages_ = configurationMessages(c_.c);
     for (int n : {13, 29, 37, 38, 39, 15})
         c_.condition(n, configMessages_[static_cast<std::size_t>(n)]);
 }
 
-void Controller::programStoreCheck() {
+void Positioner::programStoreCheck() {
     c_.condition(31, storeCorrupt_ || !storeIntact(c_.store));
 }
 
-void Controller::powerOn() {
+void Positioner::powerOn() {
     wake();
     if (c_.powered)
         return;
@@ -99,7 +99,7 @@ void Controller::powerOn() {
     writeOutputs(false);
 }
 
-void Controller::advance(std::int64_t ms) {
+void Positioner::advance(std::int64_t ms) {
     const std::int64_t ticks = (ms + c_.tickMs - 1) / c_.tickMs;
     for (std::int64_t i = 0; i < ticks; ++i)
         tick();
@@ -108,12 +108,12 @@ void Controller::advance(std::int64_t ms) {
 // ---------------------------------------------------------------------------
 // One tick
 
-void Controller::tick() {
+void Positioner::tick() {
     if (!c_.powered)
         powerOn();
     const bool inputsAsLeft = quiet_.valid && c_.words == quiet_.words && c_.io == quiet_.io;
     if (inputsAsLeft && quiet_.ticks >= 2) {
-        // Settled: what a full tick would do (see controller.h).
+        // Settled: what a full tick would do (see positioner.h).
         c_.nowMs += c_.tickMs;
         for (AxisUnit& u : c_.axes)
             if (u.present)
@@ -139,7 +139,7 @@ void Controller::tick() {
     noteSettled(inputsAsLeft);
 }
 
-void Controller::chooseOutput() {
+void Positioner::chooseOutput() {
     previewOutput_.setSink(previewSink_);
     debugOutput_.setGate(debugGate_);
     c_.instantAxes = previewSink_ != nullptr;
@@ -148,7 +148,7 @@ void Controller::chooseOutput() {
                           : static_cast<ProgramOutput*>(&runOutput_);
 }
 
-bool Controller::settled() const {
+bool Positioner::settled() const {
     if (!c_.powered || executing(c_.state) || c_.instantAxes || wheelDelta_[0] != 0 || wheelDelta_[1] != 0)
         return false;
     for (const AxisUnit& u : c_.axes) {
@@ -161,7 +161,7 @@ bool Controller::settled() const {
     return true;
 }
 
-void Controller::noteSettled(bool inputsAsLeft) {
+void Positioner::noteSettled(bool inputsAsLeft) {
     if (!settled()) {
         unsettle();
         return;
@@ -182,7 +182,7 @@ void Controller::noteSettled(bool inputsAsLeft) {
     quiet_.valid = true;
 }
 
-Controller::TickInputs Controller::tickInputs() const {
+Positioner::TickInputs Positioner::tickInputs() const {
     TickInputs t;
     std::memcpy(t.words.data(), c_.words.inputs(), sizeof t.words);
     std::memcpy(t.status.data(), machineStatusBytes(c_.io), kMachineStatusBytes);
@@ -193,7 +193,7 @@ Controller::TickInputs Controller::tickInputs() const {
     return t;
 }
 
-bool Controller::routineInputs() const {
+bool Positioner::routineInputs() const {
     // A reading of the same inputs would: count no handwheel pulse, decode
     // the same signals, raise or clear no message, find no edge (so start,
     // stop, reset, acknowledge nothing and keep mode and override) and, out
@@ -202,12 +202,12 @@ bool Controller::routineInputs() const {
            wheelDelta_[1] == 0 && tickInputs() == routine_.inputs;
 }
 
-void Controller::noteRoutineInputs() {
+void Positioner::noteRoutineInputs() {
     routine_.valid = true;
     routine_.inputs = tickInputs();
 }
 
-void Controller::readAll() {
+void Positioner::readAll() {
     readInputs();
     c_.plc.update(c_.words);
     systemChecks();
@@ -220,7 +220,7 @@ void Controller::readAll() {
 // routine tick: the words, the machine I/O, the R-parameters, the messages,
 // the mode, program and override state, and each axis' signals, servo
 // inputs, motion owner and commanded motion.
-struct Controller::Observed {
+struct Positioner::Observed {
     InterfaceWords words;
     MachineIo io;
     RStore r;
@@ -243,7 +243,7 @@ struct Controller::Observed {
     bool operator==(const Observed&) const = default;
 };
 
-Controller::Observed Controller::observed() const {
+Positioner::Observed Positioner::observed() const {
     Observed o;
     o.words = c_.words;
     o.io = c_.io;
@@ -265,7 +265,7 @@ Controller::Observed Controller::observed() const {
     return o;
 }
 
-void Controller::checkRoutineTick() {
+void Positioner::checkRoutineTick() {
     // The routine path ran (programControlAgain); the full reading of the
     // same inputs must find nothing more to do.
     const Observed routine = observed();
@@ -276,7 +276,7 @@ void Controller::checkRoutineTick() {
     assert(agree && "the routine tick's shortcut and the full reading disagree");
 }
 
-void Controller::readInputs() {
+void Positioner::readInputs() {
     const std::uint16_t w = c_.words.word(1000);
     // Handwheels (C105/C106 name their pulse channels).
     for (int k = 0; k < 2; ++k) {
@@ -300,7 +300,7 @@ void Controller::readInputs() {
     }
 }
 
-void Controller::axisInputs(AxisUnit& u) {
+void Positioner::axisInputs(AxisUnit& u) {
     const int a = u.index;
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const std::uint16_t w1 = c_.words.axisControl(u.index, 1);
@@ -337,7 +337,7 @@ void Controller::axisInputs(AxisUnit& u) {
     in.driveReady = u.driveReady;
 }
 
-void Controller::systemChecks() {
+void Positioner::systemChecks() {
     const MachineIo& io = c_.io;
     // The checks' inputs as one word: the same inputs raise or clear nothing
     // once they have been applied (a message acknowledged meanwhile is not
@@ -362,7 +362,7 @@ void Controller::systemChecks() {
 // ---------------------------------------------------------------------------
 // Reset, acknowledgement, modes, program control
 
-void Controller::resetSystem() {
+void Positioner::resetSystem() {
     if (programActive(c_.state))
         c_.abortProgram(ProgramState::Idle);
     c_.state = ProgramState::Idle;
@@ -385,7 +385,7 @@ void Controller::resetSystem() {
     c_.alarms.acknowledge(AlarmCategory::Program);
 }
 
-void Controller::trackFault(AxisUnit& u) {
+void Positioner::trackFault(AxisUnit& u) {
     const std::size_t i = static_cast<std::size_t>(u.index);
     const axis::Fault f = u.servo.fault();
     if (f == lastFault_[i])
@@ -397,7 +397,7 @@ void Controller::trackFault(AxisUnit& u) {
         c_.raise(axis::faultMessage(f, u.id), 0, 0, true);
 }
 
-void Controller::acknowledgeFaults() {
+void Positioner::acknowledgeFaults() {
     for (AxisUnit& u : c_.axes) {
         if (!u.present)
             continue;
@@ -410,12 +410,12 @@ void Controller::acknowledgeFaults() {
     c_.plc.acknowledgeAlarms();
 }
 
-void Controller::acknowledgeSystem() {
+void Positioner::acknowledgeSystem() {
     c_.alarms.acknowledge(AlarmCategory::System);
     c_.plc.acknowledgeSystem();
 }
 
-void Controller::escape() {
+void Positioner::escape() {
     wake();
     if (c_.c[c::EscResets] != 0)
         resetSystem();
@@ -425,7 +425,7 @@ void Controller::escape() {
         acknowledgeSystem();
 }
 
-void Controller::interrupt(bool dropPath) {
+void Positioner::interrupt(bool dropPath) {
     if (executing(c_.state) || c_.state == ProgramState::M0) {
         c_.resumeState = c_.state;
         c_.state = ProgramState::Interrupted;
@@ -452,7 +452,7 @@ void Controller::interrupt(bool dropPath) {
     }
 }
 
-void Controller::changeMode(Mode to) {
+void Positioner::changeMode(Mode to) {
     if (to == c_.mode)
         return;
     // «Если в предыдущем режиме выполнялось перемещение, оно прекращается.»
@@ -473,7 +473,7 @@ void Controller::changeMode(Mode to) {
     c_.mode = to;
 }
 
-void Controller::startProgram(int number, int cycle) {
+void Positioner::startProgram(int number, int cycle) {
     if (c_.alarms.anyLatched())
         return; // «Пуск» is refused while a message is shown
     if (number < 1 || number > program::kMaxPrograms || !c_.store.contains(number)) {
@@ -511,7 +511,7 @@ void Controller::startProgram(int number, int cycle) {
     interp_.start(number, cycle, c_.mode);
 }
 
-void Controller::programControlAgain() {
+void Positioner::programControlAgain() {
     // What the program itself may have changed since the last tick is done
     // again: Z2000.10 ends with a new program, the PLC's remembered alarms
     // are acknowledged while Z1000.7 is 1, R150 follows Z1001.8.
@@ -522,7 +522,7 @@ void Controller::programControlAgain() {
     c_.r.set(r::PlcBit, on(c_.words.word(1001), 8) ? 1 : 0);
 }
 
-void Controller::programControl() {
+void Positioner::programControl() {
     const std::uint16_t w = c_.words.word(1000), before = c_.lastZ1000;
     const std::uint16_t w1 = c_.words.word(1001), before1 = c_.lastZ1001;
     const std::array<std::uint8_t, 2> fi = c_.io.fastInputs;
@@ -607,7 +607,7 @@ void Controller::programControl() {
 // ---------------------------------------------------------------------------
 // Manual functions: jog, handwheels, DRF, reference-point start, adjustments
 
-void Controller::jog(AxisUnit& u) {
+void Positioner::jog(AxisUnit& u) {
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const int dir = on(w0, 7) == on(w0, 8) ? 0 : (on(w0, 7) ? 1 : -1);
     const bool rapid = on(w0, 9);
@@ -663,7 +663,7 @@ void Controller::jog(AxisUnit& u) {
     }
 }
 
-void Controller::handwheels(AxisUnit& u) {
+void Positioner::handwheels(AxisUnit& u) {
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     double delta = 0, drf = 0;
     for (int k = 0; k < 2; ++k) {
@@ -726,7 +726,7 @@ void Controller::handwheels(AxisUnit& u) {
     }
 }
 
-void Controller::homingStart(AxisUnit& u) {
+void Positioner::homingStart(AxisUnit& u) {
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
     const std::uint16_t before = c_.lastAxisWord0[static_cast<std::size_t>(u.index)];
     const int bit = u.k.homeNegative ? 8 : 7; // «ПЕРЕМЕЩЕНИЕ В +» (or «В -» with ПБТ В "-")
@@ -738,7 +738,7 @@ void Controller::homingStart(AxisUnit& u) {
         u.owner = MotionOwner::Homing;
 }
 
-void Controller::manualFunctions() {
+void Positioner::manualFunctions() {
     const Mode mode = c_.mode; // none of the functions below changes it
     const bool wheels =
         (wheelDelta_[0] | wheelDelta_[1]) != 0 && (mode == Mode::Manual || mode == Mode::Auto);
@@ -784,7 +784,7 @@ void Controller::manualFunctions() {
 // ---------------------------------------------------------------------------
 // The axes
 
-void Controller::axisTick(AxisUnit& u) {
+void Positioner::axisTick(AxisUnit& u) {
     const int a = u.index;
     const std::size_t i = static_cast<std::size_t>(a);
     const std::uint16_t w0 = c_.words.axisControl(u.index, 0);
@@ -906,7 +906,7 @@ constexpr unsigned bitIf(bool v, int bit) {
 
 } // namespace
 
-void Controller::writeOutputs(bool routine) {
+void Positioner::writeOutputs(bool routine) {
     InterfaceWords& w = c_.words;
 
     // Z2000, the wheel's bits of Z2005 and the offsets of the current
@@ -966,12 +966,12 @@ void Controller::writeOutputs(bool routine) {
     c_.r.set(r::NestingLevel, interp_.level());
 }
 
-void Controller::absentAxisOutputs(int a) {
+void Positioner::absentAxisOutputs(int a) {
     axisR(c_.axes[static_cast<std::size_t>(a)], 0);
     c_.words.setAxisState(a, 0, 0);
 }
 
-void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
+void Positioner::axisR(const AxisUnit& u, std::int64_t machine) {
     RStore& r = c_.r;
     const int a = u.index;
     const std::size_t i = static_cast<std::size_t>(a);
@@ -998,7 +998,7 @@ void Controller::axisR(const AxisUnit& u, std::int64_t machine) {
     r.set(r::PulsesX + a, clampR(sv.pulsesLastTick()));
 }
 
-void Controller::axisOutputs(const AxisUnit& u, unsigned wheelBits) {
+void Positioner::axisOutputs(const AxisUnit& u, unsigned wheelBits) {
     const RStore& r = c_.r;
     const int a = u.index;
     const axis::Servo& sv = u.servo;
@@ -1027,7 +1027,7 @@ void Controller::axisOutputs(const AxisUnit& u, unsigned wheelBits) {
     c_.words.setAxisState(a, 0, static_cast<std::uint16_t>(st));
 }
 
-void Controller::refreshOffsets() {
+void Positioner::refreshOffsets() {
     // R224..R231: the dressing sums, corrections, zero offsets and DRF of
     // both axes (coordinates.h), compared as one block.
     std::array<std::int32_t, 8> now;
@@ -1043,7 +1043,7 @@ void Controller::refreshOffsets() {
         offsets_.sum[static_cast<std::size_t>(a)] = c_.offsetDisc(a);
 }
 
-void Controller::refreshR() {
+void Positioner::refreshR() {
     servoRKnown_.fill(false);
     refreshOffsets();
     for (const AxisUnit& u : c_.axes)
@@ -1055,7 +1055,7 @@ void Controller::refreshR() {
 // ---------------------------------------------------------------------------
 // Operator functions
 
-OpResult Controller::selectMode(Mode m) {
+OpResult Positioner::selectMode(Mode m) {
     wake();
     if (!validModeKey(modeKey(m)))
         return OpResult::refused(Refusal::NoSuchKey, cat("F", num(modeKey(m)), " selects no mode"));
@@ -1068,7 +1068,7 @@ OpResult Controller::selectMode(Mode m) {
     return OpResult::accepted();
 }
 
-OpResult Controller::pressOverrideKey(int l) {
+OpResult Positioner::pressOverrideKey(int l) {
     wake();
     if (l < 1 || l > 4)
         return OpResult::refused(Refusal::NoSuchKey,
@@ -1081,7 +1081,7 @@ OpResult Controller::pressOverrideKey(int l) {
     return OpResult::accepted();
 }
 
-OpResult Controller::selectProgram(int number) {
+OpResult Positioner::selectProgram(int number) {
     wake();
     if (number < 1 || number > program::kMaxPrograms)
         return OpResult::refused(Refusal::NoSuchProgram,
@@ -1090,7 +1090,7 @@ OpResult Controller::selectProgram(int number) {
     return OpResult::accepted();
 }
 
-OpResult Controller::setR(int number, std::int64_t value) {
+OpResult Positioner::setR(int number, std::int64_t value) {
     wake();
     if (!rValid(number))
         return OpResult::refused(Refusal::NoSuchParameter,
@@ -1110,7 +1110,7 @@ OpResult Controller::setR(int number, std::int64_t value) {
     return OpResult::accepted();
 }
 
-OpResult Controller::setC(int number, std::int64_t value) {
+OpResult Positioner::setC(int number, std::int64_t value) {
     wake();
     if (number < 1 || number > kCCount)
         return OpResult::refused(Refusal::NoSuchParameter,
@@ -1129,7 +1129,7 @@ OpResult Controller::setC(int number, std::int64_t value) {
     return OpResult::accepted();
 }
 
-OpResult Controller::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
+OpResult Positioner::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
     wake();
     AxisUnit& u = c_.axes[static_cast<std::size_t>(axisIndex(axis))];
     if (!u.present)
@@ -1151,7 +1151,7 @@ OpResult Controller::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
     return OpResult::accepted();
 }
 
-void Controller::placeAtReferencePoint() {
+void Positioner::placeAtReferencePoint() {
     wake();
     if (programActive(c_.state))
         return;
@@ -1166,12 +1166,12 @@ void Controller::placeAtReferencePoint() {
     refreshR();
 }
 
-program::ProgramStore* Controller::editablePrograms() {
+program::ProgramStore* Positioner::editablePrograms() {
     wake();
     return programActive(c_.state) ? nullptr : &c_.store;
 }
 
-OpResult Controller::programsEdited() {
+OpResult Positioner::programsEdited() {
     wake();
     if (programActive(c_.state))
         return OpResult::refused(Refusal::ProgramActive, "a program is active");
@@ -1183,7 +1183,7 @@ OpResult Controller::programsEdited() {
     return OpResult::accepted();
 }
 
-OpResult Controller::loadCParameters(std::span<const std::int64_t> c) {
+OpResult Positioner::loadCParameters(std::span<const std::int64_t> c) {
     wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
@@ -1204,7 +1204,7 @@ OpResult Controller::loadCParameters(std::span<const std::int64_t> c) {
     return OpResult::accepted();
 }
 
-OpResult Controller::clearCParameters() {
+OpResult Positioner::clearCParameters() {
     wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
@@ -1218,7 +1218,7 @@ OpResult Controller::clearCParameters() {
     return OpResult::accepted();
 }
 
-OpResult Controller::clearRParameters() {
+OpResult Positioner::clearRParameters() {
     wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
@@ -1230,7 +1230,7 @@ OpResult Controller::clearRParameters() {
     return OpResult::accepted();
 }
 
-OpResult Controller::clearPrograms() {
+OpResult Positioner::clearPrograms() {
     wake();
     if (c_.mode != Mode::DataControl)
         return OpResult::refused(Refusal::WrongMode,
@@ -1247,7 +1247,7 @@ OpResult Controller::clearPrograms() {
 // ---------------------------------------------------------------------------
 // Views
 
-AxisView Controller::axisView(AxisId axis) const {
+AxisView Positioner::axisView(AxisId axis) const {
     const AxisUnit& u = c_.axes[static_cast<std::size_t>(axisIndex(axis))];
     AxisView v;
     v.axis = axis;
@@ -1282,7 +1282,7 @@ AxisView Controller::axisView(AxisId axis) const {
     return v;
 }
 
-ProgramView Controller::programView() const {
+ProgramView Positioner::programView() const {
     ProgramView v;
     v.mode = c_.mode;
     v.modeFromPlc = c_.modeFromPlc;
@@ -1308,7 +1308,7 @@ ProgramView Controller::programView() const {
     return v;
 }
 
-std::vector<AlarmView> Controller::alarms() const {
+std::vector<AlarmView> Positioner::alarms() const {
     std::vector<AlarmView> list;
     for (const int n : c_.alarms.latchedList()) {
         const AlarmEntry& e = c_.alarms.entry(n);
@@ -1329,7 +1329,7 @@ std::vector<AlarmView> Controller::alarms() const {
     return list;
 }
 
-PlcMessagesView Controller::plcMessages() const {
+PlcMessagesView Positioner::plcMessages() const {
     PlcMessagesView v;
     v.alarms = c_.plc.alarms();
     v.alarmsPresent = c_.plc.alarmsPresent();

@@ -1,6 +1,6 @@
 // The K528-05 positioner (БП): the public facade of core/engine.
 //
-// One Controller is built from a machine profile. Time advances only when
+// One Positioner is built from a machine profile. Time advances only when
 // the caller ticks it (tick() = one tick of `tick_ms`, 1 ms by default); the
 // same inputs give the same outputs, bit for bit. Its doors:
 //   - the PLC interface words of appendix И (words()): the PLC side writes
@@ -31,9 +31,9 @@
 
 namespace k528::engine {
 
-class Controller {
+class Positioner {
 public:
-    explicit Controller(const profile::MachineProfile& profile);
+    explicit Positioner(const profile::MachineProfile& profile);
 
     // --- power and time -----------------------------------------------
     // Power-on (2.6.1): the self-test (machine constants: 15, 13/29, 37..39;
