@@ -27,6 +27,25 @@ namespace k528::cli {
 
 namespace {
 
+// How the attempt's run ended (Grade::status, the JSON's "status"), in words.
+const char* statusText(const std::string& status, bool ru) {
+    static const struct {
+        const char *id, *ru, *en;
+    } kStatus[] = {
+        {"completed", "программа выполнена до конца", "the program ran to its end"},
+        {"alarm", "остановлена сообщением", "stopped by a message"},
+        {"interrupted", "прервана", "interrupted"},
+        {"timeout", "не закончилась за отведённое время", "did not end in the time allowed"},
+        {"not_started", "программа не запускалась", "the program was not started"},
+        {"procedure", "только действия оператора", "the operator's procedure only"},
+        {"errors", "станок не принял файл", "the machine does not take the file"},
+    };
+    for (const auto& t : kStatus)
+        if (status == t.id)
+            return ru ? t.ru : t.en;
+    return status.c_str();
+}
+
 void printReport(const training::Grade& g, Lang lang) {
     const training::Language l = lang == Lang::Ru ? training::Language::Ru : training::Language::En;
     const bool ru = lang == Lang::Ru;
@@ -36,11 +55,12 @@ void printReport(const training::Grade& g, Lang lang) {
     std::printf(" — %s %s\n", ru ? "упражнение" : "exercise", g.exercise.c_str());
     std::printf("%s %d/100, %s\n", ru ? "Оценка" : "Score", g.score,
                 g.passed ? (ru ? "зачтено" : "passed") : (ru ? "не зачтено" : "not passed"));
-    std::printf("%s %s", ru ? "Выполнение:" : "Run:", g.status.c_str());
+    std::printf("%s %s", ru ? "Выполнение:" : "Run:", statusText(g.status, ru));
+    const char* s = ru ? "с" : "s";
     if (g.cycleTimeS > 0)
-        std::printf(", %s %.3f s", ru ? "время цикла" : "cycle time", g.cycleTimeS);
+        std::printf(", %s %.3f %s", ru ? "время цикла" : "cycle time", g.cycleTimeS, s);
     if (g.limitS > 0)
-        std::printf(" (%s %g s)", ru ? "норма" : "limit", g.limitS);
+        std::printf(" (%s %g %s)", ru ? "норма" : "limit", g.limitS, s);
     std::printf("\n");
     for (const training::Deduction& d : g.deductions)
         std::printf("  -%-5g %s%s\n", d.points, training::render(d.text, l).c_str(),

@@ -8,6 +8,7 @@
 #include "msglog/recorder.h"
 #include "panel/panel.h"
 #include "profile/builtin.h"
+#include "profile/tools.h"
 #include "units/units.h"
 
 #include <optional>
@@ -51,6 +52,10 @@ public:
             const engine::AxisView v = ctl_.axisView(engine::axisAt(i));
             offsetMm_[static_cast<std::size_t>(i)] =
                 e_.lathe() ? units::discToMm(v.machineDisc - v.currentDisc, v.scale) : 0.0;
+        }
+        if (e_.lathe() && sim_.equipment().turret) {
+            tools_ = profile::tools(in_.profile);
+            station_ = startStation_ = sim_.equipment().turret->station();
         }
         if (e_.grinder() && sim_.equipment().grinding) {
             const machine::Grinding& g = *sim_.equipment().grinding;
@@ -325,6 +330,29 @@ private:
         }
     }
 
+    // Where the tip of the tool in use stands off the tip of the tool the set-up
+    // was made with (the turret's station at the start): the difference of
+    // their offsets (the machine's R presets, profile/tools.h). The slide
+    // carries the tool; nothing moves the tip onto the programmed point
+    // unless the program copies the new tool's offsets into the correction
+    // R226/R227 (docs/engine.md "The tool change"), which moves the slide.
+    profile::ToolOffsets toolShift() {
+        if (tools_.empty())
+            return {};
+        if (const int st = sim_.equipment().turret->station(); st > 0)
+            station_ = st; // between stations: the tool that was locked last
+        if (station_ == shiftStation_)
+            return shift_;
+        shiftStation_ = station_;
+        const auto offsetsAt = [&](int station) {
+            const std::optional<profile::Tool> tool = profile::toolAt(tools_, station);
+            return tool ? profile::toolOffsets(*tool, in_.profile) : profile::ToolOffsets{};
+        };
+        const profile::ToolOffsets now = offsetsAt(station_), start = offsetsAt(startStation_);
+        shift_ = {now.xMm - start.xMm, now.zMm - start.zMm};
+        return shift_;
+    }
+
     // --- watching every tick ------------------------------------------------------
     void observe() {
         const double t = static_cast<double>(sim_.timeMs());
@@ -334,8 +362,9 @@ private:
 
         toolpath::ActualSample s;
         s.tMs = t;
-        s.x = sim_.machineMm(AxisId::X) - offsetMm_[0];
-        s.z = sim_.machineMm(AxisId::Z) - offsetMm_[1];
+        const profile::ToolOffsets shift = toolShift();
+        s.x = sim_.machineMm(AxisId::X) - offsetMm_[0] - shift.xMm;
+        s.z = sim_.machineMm(AxisId::Z) - offsetMm_[1] - shift.zMm;
         if (active) {
             s.program = in.program();
             s.line = in.line();
@@ -536,6 +565,9 @@ private:
     int observer_ = 0;
     std::int64_t guardEndMs_ = 0;
     std::array<double, 2> offsetMm_{};
+    std::vector<profile::Tool> tools_; // the lathe's turret stations (none: no turret)
+    int station_ = 0, startStation_ = 0, shiftStation_ = -1;
+    profile::ToolOffsets shift_;
     const machine::Spindle* spindle_ = nullptr;
     bool wasActive_ = false;
     ProgramState lastState_ = ProgramState::Idle;

@@ -180,6 +180,26 @@ private slots:
                  en.c_str());
     }
 
+    // The grooving tool sits in the turret unlike the turning tool (its
+    // offsets R102/R103): the reference copies them into the correction
+    // R226/R227 after M62 and passes; without the copy the slide goes where
+    // it went for tool 1, the groove lands off by the offsets and the
+    // attempt fails on the grooving frame — as the part would on the machine.
+    void aToolChangeWithoutItsOffsetsMisplacesTheCut() {
+        const training::Exercise& e = exercise("lathe-05-groove");
+        QVERIFY(e.reference.find("R226=R102") != std::string::npos);
+        const std::string forgot = replaced(e.reference, "N11 R226=R102\nN12 R227=R103\n", "");
+        QVERIFY(forgot != e.reference);
+        const training::Grade g = training::Grader(e).grade(forgot, "forgot.k528");
+        QVERIFY2(!g.passed && g.score < 100, qPrintable(describe(g)));
+        // Cut 3.5 mm off towards +Z and 0.6 mm deeper: on the plunge (N15) or
+        // its dwell (N16: the slide still closes its lag there).
+        const training::Deduction* over = find(g, "overcut");
+        QVERIFY2(over && (over->line == lineOf(forgot, "N15 G1 X30") || over->line == lineOf(forgot, "N16 G4")),
+                 qPrintable(describe(g)));
+        QVERIFY2(find(g, "undercut"), qPrintable(describe(g)));
+    }
+
     // The program handed out in lathe-08 finishes at rapid (N15 G0 Z-40):
     // graded as handed out it fails on that frame; the reference passes.
     void theHandedOutProgramWithAnErrorFailsAtItsFrame() {
