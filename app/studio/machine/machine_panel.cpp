@@ -100,8 +100,7 @@ PilotLamp* MachinePanelWidget::lamp(const QString& id) const {
 }
 
 void MachinePanelWidget::build() {
-    machine::Simulation& sim = session_.simulation();
-    const machine::MachineView v = sim.view();
+    const machine::MachineView v = session_.simulation().view();
     auto* outer = outer_ = new QVBoxLayout(this);
     outer->setContentsMargins(14, 10, 14, 10);
     outer->setSpacing(4);
@@ -114,37 +113,49 @@ void MachinePanelWidget::build() {
     outer->addLayout(columns, 1);
     // Left: E-stop, cycle, jog, lamps. Right: handwheel, override, door,
     // chuck, read-outs.
-    auto* root = left_ = new QVBoxLayout;
-    root->setSpacing(4);
-    auto* right = right_ = new QVBoxLayout;
-    right->setSpacing(4);
-    columns->addLayout(root, 1);
-    columns->addLayout(right, 1);
+    left_ = new QVBoxLayout;
+    left_->setSpacing(4);
+    right_ = new QVBoxLayout;
+    right_->setSpacing(4);
+    columns->addLayout(left_, 1);
+    columns->addLayout(right_, 1);
 
-    const auto makeButton = [&](machine::Button b, PendantButton::Cap cap, const char* name,
-                                bool illuminated) {
-        auto* btn = new PendantButton(cap, this);
-        btn->setObjectName(name);
-        btn->setIlluminated(illuminated);
-        buttons_[b] = btn;
-        connect(btn, &QAbstractButton::pressed, this, [this, b] {
-            session_.simulation().press(b);
-            pressedAtMs_[b] = session_.simulation().timeMs();
-        });
-        connect(btn, &QAbstractButton::released, this, [this, b] {
-            // A click shorter than a push stays down until it was one.
-            machine::Simulation& sim = session_.simulation();
-            const auto at = pressedAtMs_.find(b);
-            const std::int64_t held = at == pressedAtMs_.end() ? kShortestPushMs : sim.timeMs() - at->second;
-            if (held >= kShortestPushMs)
-                sim.release(b);
-            else
-                sim.pressFor(b, kShortestPushMs - held);
-        });
-        return btn;
-    };
+    buildCycleControls();
+    buildJog();
+    if (v.hasHandwheel)
+        buildHandwheel();
+    buildOverrideDoorChuck(v);
+    buildLamps(v);
+    left_->addStretch();
+    buildReadouts(v);
+    right_->addStretch();
+}
 
-    // --- E-stop, drives, cycle --------------------------------------------------
+PendantButton* MachinePanelWidget::makeButton(machine::Button b, PendantButton::Cap cap, const char* name,
+                                              bool illuminated) {
+    auto* btn = new PendantButton(cap, this);
+    btn->setObjectName(name);
+    btn->setIlluminated(illuminated);
+    buttons_[b] = btn;
+    connect(btn, &QAbstractButton::pressed, this, [this, b] {
+        session_.simulation().press(b);
+        pressedAtMs_[b] = session_.simulation().timeMs();
+    });
+    connect(btn, &QAbstractButton::released, this, [this, b] {
+        // A click shorter than a push stays down until it was one.
+        machine::Simulation& sim = session_.simulation();
+        const auto at = pressedAtMs_.find(b);
+        const std::int64_t held = at == pressedAtMs_.end() ? kShortestPushMs : sim.timeMs() - at->second;
+        if (held >= kShortestPushMs)
+            sim.release(b);
+        else
+            sim.pressFor(b, kShortestPushMs - held);
+    });
+    return btn;
+}
+
+// E-stop, drives, cycle.
+void MachinePanelWidget::buildCycleControls() {
     auto* top = new QHBoxLayout;
     top->setSpacing(8);
     estop_ = new MushroomButton(this);
@@ -159,23 +170,19 @@ void MachinePanelWidget::build() {
     auto* cycle = new QGridLayout;
     cycle->setHorizontalSpacing(6);
     cycle->setVerticalSpacing(4);
-    cycle->addWidget(
-        makeButton(machine::Button::DrivesOn, PendantButton::Cap::White, "machine.drivesOn", true),
-        0, 0);
-    cycle->addWidget(
-        makeButton(machine::Button::Reset, PendantButton::Cap::Blue, "machine.reset", false), 0, 1);
-    cycle->addWidget(makeButton(machine::Button::CycleStart, PendantButton::Cap::Green,
-                                "machine.cycleStart", true),
-                     1, 0);
-    cycle->addWidget(
-        makeButton(machine::Button::CycleStop, PendantButton::Cap::Red, "machine.cycleStop", true),
-        1, 1);
+    using Cap = PendantButton::Cap;
+    cycle->addWidget(makeButton(machine::Button::DrivesOn, Cap::White, "machine.drivesOn", true), 0, 0);
+    cycle->addWidget(makeButton(machine::Button::Reset, Cap::Blue, "machine.reset", false), 0, 1);
+    cycle->addWidget(makeButton(machine::Button::CycleStart, Cap::Green, "machine.cycleStart", true), 1, 0);
+    cycle->addWidget(makeButton(machine::Button::CycleStop, Cap::Red, "machine.cycleStop", true), 1, 1);
     top->addLayout(cycle, 1);
-    root->addLayout(top);
+    left_->addLayout(top);
+}
 
-    // --- jog ---------------------------------------------------------------------
+// Jog ±X ±Z around rapid.
+void MachinePanelWidget::buildJog() {
     jogLabel_ = caption(this);
-    root->addWidget(jogLabel_);
+    left_->addWidget(jogLabel_);
     auto* jog = new QGridLayout;
     jog->setSpacing(2);
     const auto jogButton = [&](machine::Button b, const char* name, const char* symbol) {
@@ -185,118 +192,23 @@ void MachinePanelWidget::build() {
         return btn;
     };
     // A lathe's view: X across (up = +X, away from the spindle axis), Z along.
-    jog->addWidget(jogButton(machine::Button::JogXPlus, "machine.jog.x+", "+X"), 0, 1,
-                   Qt::AlignCenter);
-    jog->addWidget(jogButton(machine::Button::JogZMinus, "machine.jog.z-", "−Z"), 1, 0,
-                   Qt::AlignCenter);
-    PendantButton* rapid =
-        makeButton(machine::Button::Rapid, PendantButton::Cap::Yellow, "machine.rapid", false);
+    jog->addWidget(jogButton(machine::Button::JogXPlus, "machine.jog.x+", "+X"), 0, 1, Qt::AlignCenter);
+    jog->addWidget(jogButton(machine::Button::JogZMinus, "machine.jog.z-", "−Z"), 1, 0, Qt::AlignCenter);
+    PendantButton* rapid = makeButton(machine::Button::Rapid, PendantButton::Cap::Yellow, "machine.rapid", false);
     rapid->setSymbol(QString::fromUtf8("⇶"));
     fixedSize(rapid, 54, 50);
     jog->addWidget(rapid, 1, 1, Qt::AlignCenter);
-    jog->addWidget(jogButton(machine::Button::JogZPlus, "machine.jog.z+", "+Z"), 1, 2,
-                   Qt::AlignCenter);
-    jog->addWidget(jogButton(machine::Button::JogXMinus, "machine.jog.x-", "−X"), 2, 1,
-                   Qt::AlignCenter);
+    jog->addWidget(jogButton(machine::Button::JogZPlus, "machine.jog.z+", "+Z"), 1, 2, Qt::AlignCenter);
+    jog->addWidget(jogButton(machine::Button::JogXMinus, "machine.jog.x-", "−X"), 2, 1, Qt::AlignCenter);
     auto* jogRow = new QHBoxLayout;
     jogRow->addStretch();
     jogRow->addLayout(jog);
     jogRow->addStretch();
-    root->addLayout(jogRow);
+    left_->addLayout(jogRow);
+}
 
-    // --- handwheel -------------------------------------------------------------------
-    if (v.hasHandwheel) {
-        handwheelLabel_ = caption(this);
-        right->addWidget(handwheelLabel_);
-        dial_ = new HandwheelDial(this);
-        dial_->setObjectName("machine.handwheel");
-        dial_->setDetentsPerTurn(
-            static_cast<int>(sim.profile().simulation.getInt("handwheel1.lines", 100)));
-        fixedSize(dial_, 150, 150);
-        connect(dial_, &HandwheelDial::turned, this,
-                [this](int detents) { session_.simulation().turnHandwheel(detents); });
-        right->addWidget(dial_, 0, Qt::AlignHCenter);
-        auto* sel = new QHBoxLayout;
-        wheelAxis_ = new SelectorSwitch(this);
-        wheelAxis_->setObjectName("machine.handwheelAxis");
-        wheelAxis_->setPositions({"0", "X", "Z"}, 90);
-        connect(wheelAxis_, &SelectorSwitch::positionChanged, this, [this](int i) {
-            session_.simulation().selectHandwheel(static_cast<machine::HandwheelAxis>(i));
-            updateMultiplierLegends();
-        });
-        wheelMult_ = new SelectorSwitch(this);
-        wheelMult_->setObjectName("machine.handwheelMultiplier");
-        wheelMult_->setPositions({"×1", "×10", "×100"}, 90);
-        connect(wheelMult_, &SelectorSwitch::positionChanged, this,
-                [this](int i) { session_.simulation().selectHandwheelMultiplier(i); });
-        sel->addWidget(wheelAxis_);
-        sel->addWidget(wheelMult_);
-        right->addLayout(sel);
-    }
-
-    // --- override, door, chuck, wheel change -------------------------------------------
-    auto* misc = new QHBoxLayout;
-    misc->setSpacing(8);
-    if (v.hasOverrideSwitch) {
-        override_ = new SelectorSwitch(this);
-        override_->setObjectName("machine.override");
-        QStringList legends{"K923"};
-        for (int pct : kOverrideSteps)
-            legends << QString::number(pct);
-        override_->setPositions(legends, 270);
-        override_->setProperty("k528.minimumSize", QSize(150, 128));
-        override_->setMinimumSize(150, 128);
-        override_->setPosition(sim.overrideSwitch() + 1);
-        connect(override_, &SelectorSwitch::positionChanged, this, [this](int i) {
-            session_.simulation().setOverrideSwitch(overrideCodeOfPosition(i));
-        });
-        misc->addWidget(override_, 3);
-    }
-    auto* side = new QGridLayout;
-    side->setSpacing(6);
-    int slot = 0;
-    if (v.hasDoor) {
-        door_ = new PendantButton(PendantButton::Cap::White, this);
-        door_->setObjectName("machine.door");
-        door_->setSymbol(QString::fromUtf8("⇆"));
-        connect(door_, &QAbstractButton::clicked, this, [this] {
-            machine::Simulation& s = session_.simulation();
-            if (s.view().doorClosed)
-                s.openDoor(); // refused while the lock holds it
-            else
-                s.closeDoor();
-            refresh();
-        });
-        side->addWidget(door_, slot / 2, slot % 2);
-        ++slot;
-    }
-    if (v.hasChuck) {
-        PendantButton* pedal = makeButton(machine::Button::ChuckPedal, PendantButton::Cap::Black,
-                                          "machine.chuck", false);
-        pedal->setSymbol(QString::fromUtf8("⊙"));
-        side->addWidget(pedal, slot / 2, slot % 2);
-        ++slot;
-    }
-    if (v.hasGrinding) {
-        changeWheel_ = new PendantButton(PendantButton::Cap::Yellow, this);
-        changeWheel_->setObjectName("machine.changeWheel");
-        changeWheel_->setSymbol(QString::fromUtf8("◎"));
-        connect(changeWheel_, &QAbstractButton::clicked, this, [this] {
-            session_.simulation().changeWheel();
-            refresh();
-        });
-        side->addWidget(changeWheel_, slot / 2, slot % 2);
-        ++slot;
-    }
-    misc->addLayout(side, 2);
-    if (override_ || slot > 0)
-        right->addLayout(misc);
-    if (override_) {
-        overrideLabel_ = new QLabel(this); // accessible caption only
-        overrideLabel_->hide();
-    }
-
-    // --- lamps ---------------------------------------------------------------------------
+// The pilot lamps of the strip; the illuminated buttons' lamps are reachable by id too.
+void MachinePanelWidget::buildLamps(const machine::MachineView& v) {
     auto* lampGrid = new QGridLayout;
     lampGrid->setSpacing(4);
     int n = 0;
@@ -309,21 +221,115 @@ void MachinePanelWidget::build() {
         lampGrid->addWidget(l, n / 4, n % 4);
         ++n;
     }
-    // The illuminated buttons' lamps are reachable by id too.
-    root->addLayout(lampGrid);
+    left_->addLayout(lampGrid);
+}
 
-    root->addStretch();
+// The handwheel with its axis selector and multiplier.
+void MachinePanelWidget::buildHandwheel() {
+    handwheelLabel_ = caption(this);
+    right_->addWidget(handwheelLabel_);
+    dial_ = new HandwheelDial(this);
+    dial_->setObjectName("machine.handwheel");
+    dial_->setDetentsPerTurn(
+        static_cast<int>(session_.simulation().profile().simulation.getInt("handwheel1.lines", 100)));
+    fixedSize(dial_, 150, 150);
+    connect(dial_, &HandwheelDial::turned, this,
+            [this](int detents) { session_.simulation().turnHandwheel(detents); });
+    right_->addWidget(dial_, 0, Qt::AlignHCenter);
+    auto* sel = new QHBoxLayout;
+    wheelAxis_ = new SelectorSwitch(this);
+    wheelAxis_->setObjectName("machine.handwheelAxis");
+    wheelAxis_->setPositions({"0", "X", "Z"}, 90);
+    connect(wheelAxis_, &SelectorSwitch::positionChanged, this, [this](int i) {
+        session_.simulation().selectHandwheel(static_cast<machine::HandwheelAxis>(i));
+        updateMultiplierLegends();
+    });
+    wheelMult_ = new SelectorSwitch(this);
+    wheelMult_->setObjectName("machine.handwheelMultiplier");
+    wheelMult_->setPositions({"×1", "×10", "×100"}, 90);
+    connect(wheelMult_, &SelectorSwitch::positionChanged, this,
+            [this](int i) { session_.simulation().selectHandwheelMultiplier(i); });
+    sel->addWidget(wheelAxis_);
+    sel->addWidget(wheelMult_);
+    right_->addLayout(sel);
+}
 
-    // --- read-outs -------------------------------------------------------------------------
+// The feed override selector (when the machine has one) beside the door, the
+// chuck's foot switch and the grinder's wheel change, those it has.
+void MachinePanelWidget::buildOverrideDoorChuck(const machine::MachineView& v) {
+    auto* misc = new QHBoxLayout;
+    misc->setSpacing(8);
+    if (v.hasOverrideSwitch) {
+        override_ = new SelectorSwitch(this);
+        override_->setObjectName("machine.override");
+        QStringList legends{"K923"};
+        for (int pct : kOverrideSteps)
+            legends << QString::number(pct);
+        override_->setPositions(legends, 270);
+        override_->setProperty("k528.minimumSize", QSize(150, 128));
+        override_->setMinimumSize(150, 128);
+        override_->setPosition(session_.simulation().overrideSwitch() + 1);
+        connect(override_, &SelectorSwitch::positionChanged, this, [this](int i) {
+            session_.simulation().setOverrideSwitch(overrideCodeOfPosition(i));
+        });
+        misc->addWidget(override_, 3);
+    }
+    auto* side = new QGridLayout;
+    side->setSpacing(6);
+    int slot = 0;
+    const auto place = [&](QWidget* w) {
+        side->addWidget(w, slot / 2, slot % 2);
+        ++slot;
+    };
+    if (v.hasDoor) {
+        door_ = new PendantButton(PendantButton::Cap::White, this);
+        door_->setObjectName("machine.door");
+        door_->setSymbol(QString::fromUtf8("⇆"));
+        connect(door_, &QAbstractButton::clicked, this, [this] {
+            machine::Simulation& s = session_.simulation();
+            if (s.view().doorClosed)
+                s.openDoor(); // refused while the lock holds it
+            else
+                s.closeDoor();
+            refresh();
+        });
+        place(door_);
+    }
+    if (v.hasChuck) {
+        PendantButton* pedal =
+            makeButton(machine::Button::ChuckPedal, PendantButton::Cap::Black, "machine.chuck", false);
+        pedal->setSymbol(QString::fromUtf8("⊙"));
+        place(pedal);
+    }
+    if (v.hasGrinding) {
+        changeWheel_ = new PendantButton(PendantButton::Cap::Yellow, this);
+        changeWheel_->setObjectName("machine.changeWheel");
+        changeWheel_->setSymbol(QString::fromUtf8("◎"));
+        connect(changeWheel_, &QAbstractButton::clicked, this, [this] {
+            session_.simulation().changeWheel();
+            refresh();
+        });
+        place(changeWheel_);
+    }
+    misc->addLayout(side, 2);
+    if (override_ || slot > 0)
+        right_->addLayout(misc);
+    if (override_) {
+        overrideLabel_ = new QLabel(this); // accessible caption only
+        overrideLabel_->hide();
+    }
+}
+
+// The spindles, the turret and (grinder) the in-process gauge.
+void MachinePanelWidget::buildReadouts(const machine::MachineView& v) {
     readout_ = readoutLabel(this, "machine.readout");
     readout_->setWordWrap(true);
-    right->addWidget(readout_);
+    right_->addWidget(readout_);
     if (v.hasGrinding) {
         gauge_ = readoutLabel(this, "machine.gauge");
         gauge_->setWordWrap(true);
-        right->addWidget(gauge_);
+        right_->addWidget(gauge_);
     }
-    right->addStretch();
 }
 
 QString MachinePanelWidget::lampLegend(const std::string& id) const {

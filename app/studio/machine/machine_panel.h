@@ -11,6 +11,7 @@
 // kShortestPushMs of machine time.
 #pragma once
 
+#include "machine/pendant_controls.h"
 #include "machine/simulation.h"
 
 #include <QWidget>
@@ -24,7 +25,6 @@ class QVBoxLayout;
 namespace k528::studio {
 
 class SimulationSession;
-class PendantButton;
 class MushroomButton;
 class PilotLamp;
 class HandwheelDial;
@@ -73,7 +73,17 @@ protected:
     void changeEvent(QEvent*) override;
 
 private:
+    // The panel, section by section (the columns left_ and right_).
     void build();
+    void buildCycleControls();
+    void buildJog();
+    void buildLamps(const machine::MachineView& v);
+    void buildHandwheel();
+    void buildOverrideDoorChuck(const machine::MachineView& v);
+    void buildReadouts(const machine::MachineView& v);
+    // A push-button of the machine's panel wired to the simulation: pressed,
+    // released, a short click held for a push.
+    PendantButton* makeButton(machine::Button b, PendantButton::Cap cap, const char* name, bool illuminated);
     void retranslate();
     QString lampLegend(const std::string& id) const;
     void updateMultiplierLegends();
