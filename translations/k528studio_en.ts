@@ -995,10 +995,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>Calculator...</translation>
     </message>
     <message>
-        <source>Note:</source>
-        <translation>Note:</translation>
-    </message>
-    <message>
         <source>why the next change is made (kept with its revision)</source>
         <translation>why the next change is made (kept with its revision)</translation>
     </message>
@@ -1067,14 +1063,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>Changes: %1</translation>
     </message>
     <message>
-        <source>The constants of the controller on the line, read every 10 s. A change is written to it at once and kept in the database.</source>
-        <translation>The constants of the controller on the line, read every 10 s. A change is written to it at once and kept in the database.</translation>
-    </message>
-    <message>
-        <source>The constants of the controller on the line, read every 10 s. They cannot be changed now: %1.</source>
-        <translation>The constants of the controller on the line, read every 10 s. They cannot be changed now: %1.</translation>
-    </message>
-    <message>
         <source>sending them to the controller...</source>
         <translation>sending them to the controller...</translation>
     </message>
@@ -1089,6 +1077,14 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>Spindle speed from the cutting speed and the diameter, feed per minute, the grinding wheel's surface speed from R207</source>
         <translation>Spindle speed from the cutting speed and the diameter, feed per minute, the grinding wheel's surface speed from R207</translation>
+    </message>
+    <message>
+        <source>The constants of the controller on the line, read every 10 s.</source>
+        <translation>The constants of the controller on the line, read every 10 s.</translation>
+    </message>
+    <message>
+        <source>A change is written to it at once and kept in the database.</source>
+        <translation>A change is written to it at once and kept in the database.</translation>
     </message>
 </context>
 <context>
@@ -4696,6 +4692,17 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::ParameterTablePane</name>
+    <message>
+        <source>Note:</source>
+        <translation>Note:</translation>
+    </message>
+    <message>
+        <source>They cannot be changed now: %1.</source>
+        <translation>They cannot be changed now: %1.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ProblemsModel</name>
     <message>
         <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools)</source>
@@ -5323,10 +5330,6 @@ Its comment stays: %3</translation>
         <translation>The machine's presets into the controller</translation>
     </message>
     <message>
-        <source>Note:</source>
-        <translation>Note:</translation>
-    </message>
-    <message>
         <source>why the presets change (kept with the revision)</source>
         <translation>why the presets change (kept with the revision)</translation>
     </message>
@@ -5359,14 +5362,6 @@ Its comment stays: %3</translation>
         <translation>Presets loaded into the controller: %1</translation>
     </message>
     <message>
-        <source>The R-parameters of the controller on the line, all read every 2.5 s. R0..R231 are written to it at once (not R158, R222, R223).</source>
-        <translation>The R-parameters of the controller on the line, all read every 2.5 s. R0..R231 are written to it at once (not R158, R222, R223).</translation>
-    </message>
-    <message>
-        <source>The R-parameters of the controller on the line, all read every 2.5 s. They cannot be changed now: %1.</source>
-        <translation>The R-parameters of the controller on the line, all read every 2.5 s. They cannot be changed now: %1.</translation>
-    </message>
-    <message>
         <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
         <translation>Presets loaded into the controller: %1 of %2; R%3 not: %4</translation>
     </message>
@@ -5389,6 +5384,14 @@ Its comment stays: %3</translation>
     <message>
         <source>Kept as revision %1; R%2 not set in the controller: %3</source>
         <translation>Kept as revision %1; R%2 not set in the controller: %3</translation>
+    </message>
+    <message>
+        <source>The R-parameters of the controller on the line, all read every 2.5 s.</source>
+        <translation>The R-parameters of the controller on the line, all read every 2.5 s.</translation>
+    </message>
+    <message>
+        <source>R0..R231 are written to it at once (not R158, R222, R223).</source>
+        <translation>R0..R231 are written to it at once (not R158, R222, R223).</translation>
     </message>
 </context>
 <context>

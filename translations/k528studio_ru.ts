@@ -995,10 +995,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>Калькулятор...</translation>
     </message>
     <message>
-        <source>Note:</source>
-        <translation>Примечание:</translation>
-    </message>
-    <message>
         <source>why the next change is made (kept with its revision)</source>
         <translation>зачем вносится следующее изменение (сохраняется с ревизией)</translation>
     </message>
@@ -1067,14 +1063,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>Изменений: %1</translation>
     </message>
     <message>
-        <source>The constants of the controller on the line, read every 10 s. A change is written to it at once and kept in the database.</source>
-        <translation>Константы контроллера на линии, считываются каждые 10 с. Изменение сразу записывается в него и сохраняется в базе данных.</translation>
-    </message>
-    <message>
-        <source>The constants of the controller on the line, read every 10 s. They cannot be changed now: %1.</source>
-        <translation>Константы контроллера на линии, считываются каждые 10 с. Изменить их сейчас нельзя: %1.</translation>
-    </message>
-    <message>
         <source>sending them to the controller...</source>
         <translation>передача в контроллер...</translation>
     </message>
@@ -1089,6 +1077,14 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>Spindle speed from the cutting speed and the diameter, feed per minute, the grinding wheel's surface speed from R207</source>
         <translation>Частота вращения шпинделя по скорости резания и диаметру, минутная подача, окружная скорость шлифовального круга по R207</translation>
+    </message>
+    <message>
+        <source>The constants of the controller on the line, read every 10 s.</source>
+        <translation>Константы контроллера на линии, считываются каждые 10 с.</translation>
+    </message>
+    <message>
+        <source>A change is written to it at once and kept in the database.</source>
+        <translation>Изменение сразу записывается в него и сохраняется в базе данных.</translation>
     </message>
 </context>
 <context>
@@ -4696,6 +4692,17 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::ParameterTablePane</name>
+    <message>
+        <source>Note:</source>
+        <translation>Примечание:</translation>
+    </message>
+    <message>
+        <source>They cannot be changed now: %1.</source>
+        <translation>Изменить их сейчас нельзя: %1.</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ProblemsModel</name>
     <message>
         <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools)</source>
@@ -5323,10 +5330,6 @@ Its comment stays: %3</source>
         <translation>Предустановки станка — в контроллер</translation>
     </message>
     <message>
-        <source>Note:</source>
-        <translation>Примечание:</translation>
-    </message>
-    <message>
         <source>why the presets change (kept with the revision)</source>
         <translation>зачем меняются предустановки (сохраняется с ревизией)</translation>
     </message>
@@ -5359,14 +5362,6 @@ Its comment stays: %3</source>
         <translation>Предустановок введено в контроллер: %1</translation>
     </message>
     <message>
-        <source>The R-parameters of the controller on the line, all read every 2.5 s. R0..R231 are written to it at once (not R158, R222, R223).</source>
-        <translation>R-параметры контроллера на линии, все считываются каждые 2,5 с. R0..R231 сразу записываются в него (кроме R158, R222, R223).</translation>
-    </message>
-    <message>
-        <source>The R-parameters of the controller on the line, all read every 2.5 s. They cannot be changed now: %1.</source>
-        <translation>R-параметры контроллера на линии, все считываются каждые 2,5 с. Изменить их сейчас нельзя: %1.</translation>
-    </message>
-    <message>
         <source>Presets loaded into the controller: %1 of %2; R%3 not: %4</source>
         <translation>Предустановки загружены в контроллер: %1 из %2; R%3 — нет: %4</translation>
     </message>
@@ -5389,6 +5384,14 @@ Its comment stays: %3</source>
     <message>
         <source>Kept as revision %1; R%2 not set in the controller: %3</source>
         <translation>Сохранено как ревизия %1; R%2 в УЧПУ не записан: %3</translation>
+    </message>
+    <message>
+        <source>The R-parameters of the controller on the line, all read every 2.5 s.</source>
+        <translation>R-параметры контроллера на линии, все считываются каждые 2,5 с.</translation>
+    </message>
+    <message>
+        <source>R0..R231 are written to it at once (not R158, R222, R223).</source>
+        <translation>R0..R231 сразу записываются в него (кроме R158, R222, R223).</translation>
     </message>
 </context>
 <context>

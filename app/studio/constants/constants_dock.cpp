@@ -15,22 +15,14 @@
 #include "profile/text_format.h"
 #include "controller/controller.h"
 #include "controller/push_preview.h"
-#include "controller/view_notice.h"
-#include "widgets.h"
-#include "workspace/flow_layout.h"
-#include "workspace/screen_fit.h"
-#include "workspace/pane_dock.h"
 
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
-#include <QEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
-#include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMainWindow>
@@ -42,7 +34,6 @@
 #include <QTableView>
 #include <QToolButton>
 #include <QUndoStack>
-#include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
 namespace k528::studio {
@@ -100,70 +91,28 @@ private:
     std::function<void(const QString&, bool)> say_;
 };
 
-class ConstantsDock : public PaneDock {
-public:
-    ConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine)
-        : PaneDock(window, "constants") {
-        auto* notice = new ViewNotice(new ConstantsPane(viewed, machine), this);
-        notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
-            if (c.simulated())
-                return {ViewNotice::Level::None, {}};
-            const QString why = c.whyNotWritable(MemoryArea::C);
-            return {ViewNotice::Level::Info,
-                    why.isEmpty() ? ConstantsPane::tr("The constants of the controller on the line, read every 10 s. A change "
-                                                      "is written to it at once and kept in the database.")
-                                  : ConstantsPane::tr("The constants of the controller on the line, read every 10 s. They "
-                                                      "cannot be changed now: %1.")
-                                        .arg(why)};
-        });
-        setWidget(notice);
-        retranslate();
-    }
-
-private:
-    void retranslate() override { setWindowTitle(ConstantsPane::tr("Machine constants")); }
-};
-
-QToolButton* button(QWidget* parent, const char* name) {
-    auto* b = new QToolButton(parent);
-    b->setObjectName(name);
-    b->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    b->setAutoRaise(true);
-    return b;
-}
-
 } // namespace
 
 ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent)
-    : QWidget(parent), viewed_(viewed) {
-    setObjectName("constantsPane");
+    : ParameterTablePane(viewed, "constants", MemoryArea::C, parent) {
     editor_ = new ConstantsEditor(viewed, machine, this);
     model_ = new ConstantsModel(*editor_, this);
     filter_ = new ConstantsFilter(this);
-    filter_->setSourceModel(model_);
 
-    auto* top = new QHBoxLayout;
-    search_ = new QLineEdit(this);
-    search_->setObjectName("constants.search");
-    search_->setClearButtonEnabled(true);
     axis_ = new QComboBox(this);
     axis_->setObjectName("constants.axis");
     axis_->addItems({QString(), QString(), QString(), QString()});
     hideReserved_ = new QCheckBox(this);
     hideReserved_->setObjectName("constants.hideReserved");
-    top->addWidget(search_, 1);
-    top->addWidget(axis_);
-    top->addWidget(hideReserved_);
 
-    auto* tools = new FlowLayout; // wraps in a narrow dock: every button in reach
-    undoButton_ = button(this, "constants.undo");
-    redoButton_ = button(this, "constants.redo");
-    historyButton_ = button(this, "constants.history");
-    diffButton_ = button(this, "constants.diff");
-    importButton_ = button(this, "constants.import");
-    exportButton_ = button(this, "constants.export");
-    calcButton_ = button(this, "constants.calculator");
-    cuttingButton_ = button(this, "constants.cuttingData");
+    undoButton_ = toolButton("undo");
+    redoButton_ = toolButton("redo");
+    historyButton_ = toolButton("history");
+    diffButton_ = toolButton("diff");
+    importButton_ = toolButton("import");
+    exportButton_ = toolButton("export");
+    calcButton_ = toolButton("calculator");
+    cuttingButton_ = toolButton("cuttingData");
     QUndoStack* undo = editor_->undoStack();
     undoButton_->setEnabled(false);
     redoButton_->setEnabled(false);
@@ -177,74 +126,23 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     connect(exportButton_, &QToolButton::clicked, this, &ConstantsPane::chooseExport);
     connect(calcButton_, &QToolButton::clicked, this, &ConstantsPane::showCalculator);
     connect(cuttingButton_, &QToolButton::clicked, this, &ConstantsPane::showCuttingData);
-    for (QToolButton* b : {undoButton_, redoButton_, historyButton_, diffButton_, importButton_,
-                           exportButton_, calcButton_, cuttingButton_})
-        tools->addWidget(b);
-    noteLabel_ = new QLabel(this);
-    note_ = new QLineEdit(this);
-    note_->setObjectName("constants.note");
-    note_->setMinimumWidth(180);
-    tools->addGroup({noteLabel_, note_});
-
-    table_ = new QTableView(this);
-    table_->setObjectName("constants.table");
-    table_->setModel(filter_);
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
-                            QAbstractItemView::AnyKeyPressed);
-    table_->setAlternatingRowColors(true);
-    table_->setWordWrap(false);
-    table_->verticalHeader()->hide();
-    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
-    table_->horizontalHeader()->setStretchLastSection(true);
-    table_->setItemDelegateForColumn(ConstantsModel::Value,
-                                     new ValueDelegate(*editor_, [this](const QString& t, bool bad) { say(t, bad); }, table_));
-    const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    table_->setColumnWidth(ConstantsModel::Number, 5 * em);
-    table_->setColumnWidth(ConstantsModel::Axis, 3 * em);
-    table_->setColumnWidth(ConstantsModel::Name, 12 * em);
-    table_->setColumnWidth(ConstantsModel::Meaning, 22 * em);
-    table_->setColumnWidth(ConstantsModel::Unit, 8 * em);
-    table_->setColumnWidth(ConstantsModel::Range, 7 * em);
-    table_->setColumnWidth(ConstantsModel::Address, 10 * em);
-    table_->setColumnWidth(ConstantsModel::Value, 7 * em);
-
-    status_ = new QLabel(this);
-    status_->setObjectName("constants.status");
-    status_->setWordWrap(true);
-    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     progress_ = new QProgressBar(this);
     progress_->setObjectName("constants.progress");
     progress_->setMaximumWidth(220);
     progress_->hide();
-    // The status line: kept in view below the table when the dock scrolls
-    // (workspace/screen_fit.h).
-    auto* statusRow = new QWidget(this);
-    statusRow->setObjectName("constants.statusRow");
-    statusRow->setProperty(kKeptInView, true);
-    auto* bottom = new QHBoxLayout(statusRow);
-    bottom->setContentsMargins(0, 0, 0, 0);
-    status_->setParent(statusRow);
-    progress_->setParent(statusRow);
-    bottom->addWidget(status_, 1);
-    bottom->addWidget(progress_);
+    build(model_, filter_, {axis_, hideReserved_},
+          {undoButton_, redoButton_, historyButton_, diffButton_, importButton_, exportButton_, calcButton_,
+           cuttingButton_},
+          // No., axis, panel name, meaning, unit, range, address, value
+          {5, 3, 12, 22, 8, 7, 10, 7}, {progress_});
+    table()->setItemDelegateForColumn(
+        ConstantsModel::Value, new ValueDelegate(*editor_, [this](const QString& t, bool bad) { say(t, bad); }, table()));
 
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(top);
-    layout->addLayout(tools);
-    layout->addWidget(table_, 1);
-    layout->addWidget(statusRow);
-
-    connect(search_, &QLineEdit::textChanged, filter_, &ConstantsFilter::setSearch);
     connect(axis_, &QComboBox::currentIndexChanged, this, [this](int i) {
         filter_->setAxisFilter(static_cast<ConstantsFilter::AxisFilter>(i));
     });
     connect(hideReserved_, &QCheckBox::toggled, filter_, &ConstantsFilter::setHideReserved);
     editor_->setNoteProvider([this] { return note_->text(); });
-    connect(&viewed_, &ViewedController::changed, this, &ConstantsPane::followController);
-    followController();
     connect(editor_, &ConstantsEditor::refused, this, [this](const QString& why) { say(why, true); });
     // The trainer's lock told as it comes and goes (and when the dock opens on a locked machine).
     connect(editor_->lock(), &ConstantsLock::changed, this, [this](const QString& holder) {
@@ -270,14 +168,8 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     retranslate();
 }
 
-void ConstantsPane::followController() {
-    disconnect(updates_);
-    updates_ = connect(&viewed_.current(), &Controller::updated, model_, &ConstantsModel::refresh);
-    model_->refresh();
-}
-
-void ConstantsPane::retranslate() {
-    search_->setPlaceholderText(tr("Search: number, panel name, meaning, unit, address"));
+void ConstantsPane::retranslatePane() {
+    searchField()->setPlaceholderText(tr("Search: number, panel name, meaning, unit, address"));
     axis_->setItemText(0, tr("All axes"));
     axis_->setItemText(1, tr("Axis X"));
     axis_->setItemText(2, tr("Axis Z"));
@@ -295,42 +187,16 @@ void ConstantsPane::retranslate() {
     cuttingButton_->setText(tr("Cutting data..."));
     cuttingButton_->setToolTip(tr("Spindle speed from the cutting speed and the diameter, feed per minute, "
                                   "the grinding wheel's surface speed from R207"));
-    noteLabel_->setText(tr("Note:"));
     note_->setPlaceholderText(tr("why the next change is made (kept with its revision)"));
-    model_->retranslate();
-}
-
-void ConstantsPane::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange)
-        retranslate();
-    QWidget::changeEvent(e);
-}
-
-void ConstantsPane::say(const QString& text, bool bad) {
-    showStatus(status_, text, bad);
-}
-
-QString ConstantsPane::statusText() const {
-    return status_->text();
-}
-
-int ConstantsPane::selectedNumber() const {
-    const QModelIndex i = table_->currentIndex();
-    return i.isValid() ? i.data(ConstantsModel::NumberRole).toInt() : 0;
 }
 
 void ConstantsPane::selectConstant(int number) {
-    const QModelIndex src = model_->index(ConstantsModel::rowOf(number), ConstantsModel::Value);
-    const QModelIndex i = filter_->mapFromSource(src);
-    if (i.isValid()) {
-        table_->setCurrentIndex(i);
-        table_->scrollTo(i);
-    }
+    selectSource(model_->index(ConstantsModel::rowOf(number), ConstantsModel::Value));
 }
 
 void ConstantsPane::showHistory() {
     const int n = selectedNumber();
-    if (n == 0) {
+    if (n <= 0) {
         say(tr("Select a constant first"), true);
         return;
     }
@@ -547,11 +413,12 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
     });
 }
 
+QString ConstantsPane::dockTitle() const { return tr("Machine constants"); }
+QString ConstantsPane::lineReading() const { return tr("The constants of the controller on the line, read every 10 s."); }
+QString ConstantsPane::lineWriting() const { return tr("A change is written to it at once and kept in the database."); }
+
 QDockWidget* addConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine) {
-    auto* dock = new ConstantsDock(window, viewed, machine);
-    window->addDockWidget(Qt::LeftDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; the workspaces place it
-    return dock;
+    return addParameterTableDock(window, new ConstantsPane(viewed, machine));
 }
 
 } // namespace k528::studio

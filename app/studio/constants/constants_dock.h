@@ -9,21 +9,18 @@
 // with its rules (F7 «РАБОТА С ПЭВМ»), which the dock's notice tells.
 #pragma once
 
+#include "parameters/parameter_table_pane.h"
 #include "profile/profile.h"
 
 #include <QFuture>
 #include <QString>
-#include <QWidget>
 #include <functional>
 
 class QComboBox;
 class QCheckBox;
 class QDockWidget;
-class QLabel;
-class QLineEdit;
 class QMainWindow;
 class QProgressBar;
-class QTableView;
 class QToolButton;
 
 namespace k528::studio {
@@ -31,7 +28,6 @@ namespace k528::studio {
 class ConstantsEditor;
 class ConstantsFilter;
 class ConstantsModel;
-class ViewedController;
 
 // What a long operation gives back to the window.
 struct LongResult {
@@ -43,7 +39,7 @@ struct LongResult {
     std::vector<std::int64_t> constants; // an import: the 153 values to apply
 };
 
-class ConstantsPane : public QWidget {
+class ConstantsPane : public ParameterTablePane {
     Q_OBJECT
 public:
     // The constants of the controller `viewed` shows, kept as revisions of `machine`.
@@ -52,13 +48,6 @@ public:
     ConstantsEditor& editor() const { return *editor_; }
     ConstantsModel* model() const { return model_; }
     ConstantsFilter* filter() const { return filter_; }
-    QTableView* table() const { return table_; }
-    QLineEdit* searchField() const { return search_; }
-    QLineEdit* noteField() const { return note_; }
-    // The last refusal or confirmation shown under the table.
-    QString statusText() const;
-    // Shows `text` there (red: a refusal).
-    void tell(const QString& text, bool bad) { say(text, bad); }
 
     // Long operations (started by the buttons after a file dialog; tests call
     // them directly). Each returns at once; busy() until finished().
@@ -67,6 +56,10 @@ public:
     // The text of the diff between two revisions (0: the controller's memory now).
     QFuture<LongResult> diffRevisions(int a, int b);
     bool busy() const { return busy_; }
+
+    QString dockTitle() const override;
+    QString lineReading() const override;
+    QString lineWriting() const override;
 
 public slots:
     void showHistory();    // of the selected constant
@@ -80,28 +73,16 @@ public slots:
 signals:
     void finished(const LongResult& r);
 
-protected:
-    void changeEvent(QEvent* e) override;
-
 private:
-    void retranslate();
-    void say(const QString& text, bool bad);
-    int selectedNumber() const;
+    void retranslatePane() override;
     void runLong(const QString& what, std::function<LongResult(std::function<void(int, int)>)> work,
                  std::function<void(const LongResult&)> done);
 
-    void followController();
-    ViewedController& viewed_;
-    QMetaObject::Connection updates_;
     ConstantsEditor* editor_;
     ConstantsModel* model_;
     ConstantsFilter* filter_;
-    QTableView* table_;
-    QLineEdit* search_;
     QComboBox* axis_;
     QCheckBox* hideReserved_;
-    QLineEdit* note_;
-    QLabel* noteLabel_;
     QToolButton* undoButton_;
     QToolButton* redoButton_;
     QToolButton* historyButton_;
@@ -110,7 +91,6 @@ private:
     QToolButton* exportButton_;
     QToolButton* calcButton_;
     QToolButton* cuttingButton_;
-    QLabel* status_;
     QProgressBar* progress_;
     bool busy_ = false;
 };

@@ -65,7 +65,7 @@ ConstantsFollow::ConstantsFollow(ConstantsPane& pane) : QObject(&pane), pane_(pa
     connect(DatabaseWatch::instance(), &DatabaseWatch::switched, this, &ConstantsFollow::switchedDatabase);
     connect(&pane.editor(), &ConstantsEditor::conflicted, this,
             [this](int number, qint64 value, const QString& note, const QString& why, int known, int newest) {
-                pane_.tell(tr("Not kept in the database: %1").arg(QString(why).replace(QLatin1Char('\n'), QStringLiteral("; "))), true);
+                pane_.say(tr("Not kept in the database: %1").arg(QString(why).replace(QLatin1Char('\n'), QStringLiteral("; "))), true);
                 if (offer_)
                     offer_->close();
                 offer_ = new ConflictDialog(pane_, number, value, note, why, known, newest);
@@ -80,7 +80,7 @@ void ConstantsFollow::elsewhere(const RevisionElsewhere& r) {
     if (r.machine != store.qName())
         return;
     if (!editor.controller().simulated()) {
-        pane_.tell(r.text() + QStringLiteral("; ") +
+        pane_.say(r.text() + QStringLiteral("; ") +
                        tr("the controller on the link keeps its own constants until they are pushed to it"),
                    false);
         return;
@@ -94,13 +94,13 @@ void ConstantsFollow::elsewhere(const RevisionElsewhere& r) {
         revision = revisions.front().revision;
         p = store.load(revision);
     } catch (const std::exception& e) {
-        pane_.tell(r.text() + QStringLiteral("; ") + coreErrorText(e), true);
+        pane_.say(r.text() + QStringLiteral("; ") + coreErrorText(e), true);
         return;
     }
     const auto shown = editor.values();
     if (std::equal(p.c.begin(), p.c.end(), shown.begin(), shown.begin() + static_cast<std::ptrdiff_t>(p.c.size()))) {
         store.setKnown(revision);
-        pane_.tell(r.text(), false);
+        pane_.say(r.text(), false);
         emit followed(revision);
         return;
     }
@@ -111,13 +111,13 @@ void ConstantsFollow::elsewhere(const RevisionElsewhere& r) {
             return;
         if (!why.isEmpty()) {
             // The window's view stays on the revision it knew: the next change is refused and offered again.
-            self->pane_.tell(told + QStringLiteral("; ") + tr("the simulated controller did not take it now: %1").arg(why),
+            self->pane_.say(told + QStringLiteral("; ") + tr("the simulated controller did not take it now: %1").arg(why),
                              true);
             return;
         }
         self->pane_.editor().store().setKnown(revision);
         self->pane_.editor().undoStack()->clear(); // its steps were of the revision before
-        self->pane_.tell(told + QStringLiteral("; ") + tr("the constants shown are this revision's"), false);
+        self->pane_.say(told + QStringLiteral("; ") + tr("the constants shown are this revision's"), false);
         emit self->followed(revision);
     });
 }
@@ -132,13 +132,13 @@ void ConstantsFollow::switchedDatabase(const QString& where) {
     try {
         m = store.reload();
     } catch (const std::exception& e) {
-        pane_.tell(tr("Database %1: the machine %2 is not read from it: %3")
+        pane_.say(tr("Database %1: the machine %2 is not read from it: %3")
                        .arg(where, store.qName(), databaseErrorText(e)),
                    true);
         return;
     }
     if (m.revision == 0) {
-        pane_.tell(tr("Database %1 has no machine %2: the constants shown stay as they were; the first change "
+        pane_.say(tr("Database %1 has no machine %2: the constants shown stay as they were; the first change "
                       "kept creates the machine there")
                        .arg(where, store.qName()),
                    false);
@@ -147,7 +147,7 @@ void ConstantsFollow::switchedDatabase(const QString& where) {
     }
     const int revision = m.revision;
     if (!editor.controller().simulated()) {
-        pane_.tell(tr("Database %1: %2 is at revision %3 there; the controller on the link keeps its own "
+        pane_.say(tr("Database %1: %2 is at revision %3 there; the controller on the link keeps its own "
                       "constants until they are pushed to it")
                        .arg(where, store.qName())
                        .arg(revision),
@@ -162,7 +162,7 @@ void ConstantsFollow::switchedDatabase(const QString& where) {
     const auto shown = editor.values();
     const auto& c = m.profile.c;
     if (std::equal(c.begin(), c.end(), shown.begin(), shown.begin() + static_cast<std::ptrdiff_t>(c.size()))) {
-        pane_.tell(told, false);
+        pane_.say(told, false);
         emit databaseFollowed(revision);
         return;
     }
@@ -172,7 +172,7 @@ void ConstantsFollow::switchedDatabase(const QString& where) {
                         if (!self)
                             return;
                         if (!why.isEmpty()) {
-                            self->pane_.tell(tr("Database %1: revision %2 of %3 has other constants; the simulated "
+                            self->pane_.say(tr("Database %1: revision %2 of %3 has other constants; the simulated "
                                                 "controller did not take them now: %4")
                                                  .arg(where)
                                                  .arg(revision)
@@ -180,7 +180,7 @@ void ConstantsFollow::switchedDatabase(const QString& where) {
                                              true);
                             return;
                         }
-                        self->pane_.tell(told, false);
+                        self->pane_.say(told, false);
                         emit self->databaseFollowed(revision);
                     });
 }

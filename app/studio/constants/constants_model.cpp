@@ -26,7 +26,7 @@ const catalog::CParamDef& defAt(int row) {
 } // namespace
 
 ConstantsModel::ConstantsModel(ConstantsEditor& editor, QObject* parent)
-    : QAbstractTableModel(parent), editor_(editor) {
+    : ParameterTableModel(ColumnCount, parent), editor_(editor) {
     const auto c = editor_.values();
     std::copy(c.begin(), c.begin() + 153, shown_.begin());
     russian_ = currentLanguage() == QLatin1String("ru");
@@ -75,17 +75,7 @@ void ConstantsModel::fillMeans() {
 }
 
 void ConstantsModel::refresh() {
-    const auto c = editor_.values();
-    int first = -1, last = -1;
-    for (int n = 1; n <= catalog::kCParamCount; ++n) {
-        const auto i = static_cast<std::size_t>(n);
-        if (c[i] == shown_[i])
-            continue;
-        shown_[i] = c[i];
-        if (first < 0)
-            first = n;
-        last = n;
-    }
+    const auto [first, last] = takeChanged(editor_.values(), shown_, 1, catalog::kCParamCount + 1);
     if (first < 0)
         return;
     fillMeans();
@@ -104,10 +94,6 @@ void ConstantsModel::retranslate() {
 
 int ConstantsModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : catalog::kCParamCount;
-}
-
-int ConstantsModel::columnCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : ColumnCount;
 }
 
 QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
@@ -159,42 +145,14 @@ QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::ForegroundRole && d.reserved())
         return QBrush(QColor(0x80, 0x80, 0x80));
-    if (role == Qt::FontRole && index.column() == Value) {
-        static const QFont bold = [] {
-            QFont f;
-            f.setBold(true);
-            return f;
-        }();
-        return bold;
-    }
+    if (role == Qt::FontRole && index.column() == Value)
+        return valueFont();
     return {};
 }
 
-QVariant ConstantsModel::headerData(int section, Qt::Orientation o, int role) const {
-    if (o != Qt::Horizontal || role != Qt::DisplayRole)
-        return QAbstractTableModel::headerData(section, o, role);
-    switch (section) {
-    case Number:
-        return tr("No.");
-    case Axis:
-        return tr("Axis");
-    case Name:
-        return tr("Panel name");
-    case Meaning:
-        return tr("Meaning");
-    case Unit:
-        return tr("Unit");
-    case Range:
-        return tr("Range");
-    case Address:
-        return tr("Address (table E.1)");
-    case Value:
-        return tr("Value");
-    case Means:
-        return tr("The value means");
-    default:
-        return {};
-    }
+QStringList ConstantsModel::columnTitles() const {
+    return {tr("No."),   tr("Axis"),  tr("Panel name"),          tr("Meaning"),        tr("Unit"),
+            tr("Range"), tr("Address (table E.1)"), tr("Value"), tr("The value means")};
 }
 
 Qt::ItemFlags ConstantsModel::flags(const QModelIndex& index) const {
@@ -217,13 +175,7 @@ bool ConstantsModel::setData(const QModelIndex& index, const QVariant& value, in
     return editor_.set(number, v);
 }
 
-ConstantsFilter::ConstantsFilter(QObject* parent) : QSortFilterProxyModel(parent) {}
-
-void ConstantsFilter::setSearch(const QString& text) {
-    search_ = text;
-    words_ = text.toLower().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-    invalidateFilter();
-}
+ConstantsFilter::ConstantsFilter(QObject* parent) : ParameterFilter(parent) {}
 
 void ConstantsFilter::setAxisFilter(AxisFilter a) {
     axis_ = a;
@@ -235,7 +187,7 @@ void ConstantsFilter::setHideReserved(bool hide) {
     invalidateFilter();
 }
 
-bool ConstantsFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
+bool ConstantsFilter::keeps(int row, const QModelIndex& parent) const {
     const QModelIndex i = sourceModel()->index(row, 0, parent);
     const catalog::CParamDef* d = catalog::findCParam(i.data(ConstantsModel::NumberRole).toInt());
     if (!d)
@@ -258,12 +210,6 @@ bool ConstantsFilter::filterAcceptsRow(int row, const QModelIndex& parent) const
             return false;
         break;
     }
-    if (words_.isEmpty())
-        return true;
-    const QString hay = i.data(ConstantsModel::SearchRole).toString();
-    for (const QString& w : words_)
-        if (!hay.contains(w))
-            return false;
     return true;
 }
 

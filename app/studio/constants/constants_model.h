@@ -6,8 +6,8 @@
 // (ConstantsFilter) searches every text of a row and narrows by axis.
 #pragma once
 
-#include <QAbstractTableModel>
-#include <QSortFilterProxyModel>
+#include "parameters/parameter_table_model.h"
+
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -16,20 +16,15 @@ namespace k528::studio {
 
 class ConstantsEditor;
 
-class ConstantsModel : public QAbstractTableModel {
+class ConstantsModel : public ParameterTableModel {
     Q_OBJECT
 public:
     enum Column { Number, Axis, Name, Meaning, Unit, Range, Address, Value, Means, ColumnCount };
-    // Qt::UserRole: the parameter's number; SearchRole: every text of the row, lower case.
-    static constexpr int NumberRole = Qt::UserRole;
-    static constexpr int SearchRole = Qt::UserRole + 1;
 
     explicit ConstantsModel(ConstantsEditor& editor, QObject* parent = nullptr);
 
     int rowCount(const QModelIndex& parent = {}) const override;
-    int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
-    QVariant headerData(int section, Qt::Orientation o, int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     // Value column: the number typed (whole, in the table's unit); refused
     // changes return false and ConstantsEditor::refused() says why.
@@ -42,9 +37,11 @@ public:
 public slots:
     // Follows the controller: rows whose value changed (and every meaning,
     // which depends on other constants) are redrawn.
-    void refresh();
-    // The texts in the UI language again.
-    void retranslate();
+    void refresh() override;
+    void retranslate() override;
+
+protected:
+    QStringList columnTitles() const override;
 
 private:
     void fillTexts();
@@ -58,22 +55,18 @@ private:
     bool russian_ = false;
 };
 
-class ConstantsFilter : public QSortFilterProxyModel {
+class ConstantsFilter : public ParameterFilter {
     Q_OBJECT
 public:
     enum class AxisFilter { All, X, Z, Common };
     explicit ConstantsFilter(QObject* parent = nullptr);
-    void setSearch(const QString& text);
     void setAxisFilter(AxisFilter a);
     void setHideReserved(bool hide);
-    QString search() const { return search_; }
 
 protected:
-    bool filterAcceptsRow(int row, const QModelIndex& parent) const override;
+    bool keeps(int row, const QModelIndex& parent) const override;
 
 private:
-    QStringList words_;
-    QString search_;
     AxisFilter axis_ = AxisFilter::All;
     bool hideReserved_ = false;
 };

@@ -614,39 +614,43 @@ QString EditorTab::commentsOfLine(const QString& line) {
     return parens.join(' ');
 }
 
-void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
+EditorTab::PlacedLine EditorTab::placeLine(const QString& text, bool replaceLine) {
     ProgramEditor* ed = currentEditor();
     if (!ed)
-        return;
-    int line = 0, index = 0;
-    ed->getCursorPosition(&line, &index);
+        return {};
+    PlacedLine placed;
+    int index = 0;
+    ed->getCursorPosition(&placed.line, &index);
+    const int line = placed.line;
     ed->beginUndoAction();
-    if (replaceLine) {
-        QString old = ed->text(line);
-        int len = static_cast<int>(old.size());
-        while (len > 0 && (old.at(len - 1) == '\n' || old.at(len - 1) == '\r'))
-            --len;
+    const QString cur = ed->text(line);
+    int len = static_cast<int>(cur.size());
+    while (len > 0 && (cur.at(len - 1) == '\n' || cur.at(len - 1) == '\r'))
+        --len;
+    if (replaceLine || cur.trimmed().isEmpty()) {
         // The line's comments — "(…)" anywhere and "; …" — stay after the new frame.
-        const QString kept = commentsOfLine(old.left(len));
+        const QString kept = replaceLine ? commentsOfLine(cur.left(len)) : QString();
+        placed.keptComment = !kept.isEmpty();
         ed->setSelection(line, 0, line, len);
         ed->replaceSelectedText(kept.isEmpty() ? text : text + " " + kept);
-        emit statusMessage(kept.isEmpty() ? tr("Line %1 replaced by the master").arg(line + 1)
-                                          : tr("Line %1 replaced by the master; its comment kept").arg(line + 1));
     } else {
-        const QString cur = ed->text(line);
-        const bool emptyLine = cur.trimmed().isEmpty();
-        if (emptyLine) {
-            ed->setSelection(line, 0, line, static_cast<int>(cur.size()) - (cur.endsWith('\n') ? 1 : 0));
-            ed->replaceSelectedText(text);
-        } else {
-            ed->insertAt(text + "\n", line + 1, 0);
-            if (line + 1 >= ed->lines() - 1 && !cur.endsWith('\n'))
-                ed->insertAt("\n", line + 1, 0);
-            ++line;
-        }
+        ed->insertAt(text + "\n", line + 1, 0);
+        if (line + 1 >= ed->lines() - 1 && !cur.endsWith('\n'))
+            ed->insertAt("\n", line + 1, 0);
+        ++placed.line;
     }
     ed->endUndoAction();
-    ed->setCursorPosition(line, 0);
+    return placed;
+}
+
+void EditorTab::insertFromMaster(const QString& text, bool replaceLine) {
+    const PlacedLine placed = placeLine(text, replaceLine);
+    if (placed.line < 0)
+        return;
+    if (replaceLine)
+        emit statusMessage(placed.keptComment ? tr("Line %1 replaced by the master; its comment kept").arg(placed.line + 1)
+                                              : tr("Line %1 replaced by the master").arg(placed.line + 1));
+    currentEditor()->setCursorPosition(placed.line, 0);
 }
 
 void EditorTab::refreshProblems() {

@@ -113,8 +113,6 @@ public:
     ListingActions* listing() const { return listing_; }
     SetupSheetActions* setupSheets() const { return setupSheets_; }
     TeachIn* teachIn() const { return teachIn_; }
-    // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
-    static QString commentsOfLine(const QString& line);
     // The database machine of document `index` ("" = a file) and its revision.
     QString databaseMachine(int index) const;
     int databaseRevision(int index) const;
@@ -163,6 +161,19 @@ public slots:
     // The master's text into the current editor: replaces the cursor's line
     // or inserts a line after it.
     void insertFromMaster(const QString& text, bool replaceLine);
+
+public:
+    // `text` at the current document's cursor as one undo step: replacing
+    // the cursor's line (its comments kept after it), filling it when it is
+    // empty, else as a new line after it. `line`: the line it is on (-1: no
+    // document); `keptComment`: a comment of the replaced line stayed.
+    struct PlacedLine {
+        int line = -1;
+        bool keptComment = false;
+    };
+    PlacedLine placeLine(const QString& text, bool replaceLine);
+
+public slots:
     // The backplot's pick: puts the cursor on 1-based `line` of the document
     // (the current one first) that holds program `program` there; false if none.
     bool showLine(int program, int line);
@@ -202,6 +213,8 @@ private:
     void retranslate();
     void applyMachine(ProgramEditor* ed);
     void reapplyWorkstationMachine();
+    // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
+    static QString commentsOfLine(const QString& line);
 
     void send(const QString& text, const QString& name);
     ViewedController* viewed_ = nullptr;

@@ -38,28 +38,12 @@ int TeachIn::frameNumberAtCursor() const {
 }
 
 bool TeachIn::insertTaught(const QString& text, bool replaceLine) {
-    ProgramEditor* ed = tab_.currentEditor();
-    if (!ed)
+    const EditorTab::PlacedLine placed = tab_.placeLine(text, replaceLine);
+    if (placed.line < 0)
         return false;
-    int line = 0, index = 0;
-    ed->getCursorPosition(&line, &index);
-    ed->beginUndoAction();
-    const QString cur = ed->text(line);
-    int len = static_cast<int>(cur.size());
-    while (len > 0 && (cur.at(len - 1) == '\n' || cur.at(len - 1) == '\r'))
-        --len;
-    if (replaceLine || cur.trimmed().isEmpty()) {
-        const QString kept = replaceLine ? EditorTab::commentsOfLine(cur.left(len)) : QString();
-        ed->setSelection(line, 0, line, len);
-        ed->replaceSelectedText(kept.isEmpty() ? text : text + " " + kept);
-    } else {
-        ed->insertAt(text + "\n", line + 1, 0);
-        if (line + 1 >= ed->lines() - 1 && !cur.endsWith('\n'))
-            ed->insertAt("\n", line + 1, 0);
-        ++line;
-    }
-    ed->endUndoAction();
-    ed->setCursorPosition(line, static_cast<int>(ed->text(line).size()) - (ed->text(line).endsWith('\n') ? 1 : 0));
+    ProgramEditor* ed = tab_.currentEditor();
+    const QString now = ed->text(placed.line);
+    ed->setCursorPosition(placed.line, static_cast<int>(now.size()) - (now.endsWith('\n') ? 1 : 0));
     ed->setFocus();
     return true;
 }

@@ -279,7 +279,8 @@ namespace {
 class HistoryDock : public PaneDock {
 public:
     HistoryDock(QMainWindow* window, ViewedController& viewed, const QString& dbPath)
-        : PaneDock(window, "history"), viewed_(viewed), dbPath_(dbPath) {
+        : PaneDock(window, "history", [] { return HistoryView::tr("Message history"); }), viewed_(viewed),
+          dbPath_(dbPath) {
         pages_ = new QStackedWidget(this);
         pages_->setObjectName("history.pages");
         auto* notice = new ViewNotice(pages_, this);
@@ -299,7 +300,6 @@ public:
         // database of its own keeps it).
         if (dbPath_.isEmpty())
             connect(DatabaseWatch::instance(), &DatabaseWatch::switched, this, [this] { followDatabase(); });
-        retranslate();
     }
     ~HistoryDock() override {
         for (auto& [c, page] : pages)
@@ -350,7 +350,6 @@ private:
         if (const auto it = pages.find(&viewed_.current()); it != pages.end())
             pages_->setCurrentWidget(it->second.view);
     }
-    void retranslate() override { setWindowTitle(HistoryView::tr("Message history")); }
     ViewedController& viewed_;
     QString dbPath_;
     QStackedWidget* pages_ = nullptr;

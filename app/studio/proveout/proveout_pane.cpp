@@ -405,18 +405,8 @@ void ProveoutPane::changeEvent(QEvent* e) {
     QWidget::changeEvent(e);
 }
 
-namespace {
-class ProveoutDock final : public PaneDock {
-public:
-    explicit ProveoutDock(QMainWindow* w) : PaneDock(w, "proveout") { retranslate(); }
-
-private:
-    void retranslate() override { setWindowTitle(ProveoutPane::tr("Prove-out")); }
-};
-} // namespace
-
 QDockWidget* addProveoutDock(QMainWindow* w, EditorTab* editor, QTabWidget* workArea) {
-    auto* dock = new ProveoutDock(w);
+    auto* dock = new PaneDock(w, "proveout", [] { return ProveoutPane::tr("Prove-out"); });
     auto* pane = new ProveoutPane(editor, dock);
     dock->setWidget(pane);
     if (workArea && editor)

@@ -10,142 +10,43 @@
 #include "rparams/rparams_model.h"
 #include "rparams/trial_dialog.h"
 #include "controller/controller.h"
-#include "controller/view_notice.h"
 #include "database/database_ui.h"
-#include "widgets.h"
-#include "workspace/flow_layout.h"
-#include "workspace/screen_fit.h"
-#include "workspace/pane_dock.h"
 
 #include <QComboBox>
-#include <QDockWidget>
-#include <QEvent>
-#include <QHBoxLayout>
-#include <QHeaderView>
-#include <QLabel>
-#include <QPointer>
 #include <QLineEdit>
+#include <QPointer>
 #include <QMainWindow>
 #include <QTableView>
 #include <QToolButton>
-#include <QVBoxLayout>
 
 namespace k528::studio {
 
-namespace {
-
-class RParamsDock : public PaneDock {
-public:
-    RParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine)
-        : PaneDock(window, "rparams") {
-        auto* notice = new ViewNotice(new RParamsPane(viewed, machine), this);
-        notice->follow(viewed, [](Controller& c) -> std::pair<ViewNotice::Level, QString> {
-            if (c.simulated())
-                return {ViewNotice::Level::None, {}};
-            const QString why = c.whyNotWritable(MemoryArea::R);
-            return {ViewNotice::Level::Info,
-                    why.isEmpty() ? RParamsPane::tr("The R-parameters of the controller on the line, all read every 2.5 s. "
-                                                    "R0..R231 are written to it at once (not R158, R222, R223).")
-                                  : RParamsPane::tr("The R-parameters of the controller on the line, all read every 2.5 s. "
-                                                    "They cannot be changed now: %1.")
-                                        .arg(why)};
-        });
-        setWidget(notice);
-        retranslate();
-    }
-
-private:
-    void retranslate() override { setWindowTitle(RParamsPane::tr("R-parameters")); }
-};
-
-QToolButton* button(QWidget* parent, const char* name) {
-    auto* b = new QToolButton(parent);
-    b->setObjectName(name);
-    b->setAutoRaise(true);
-    return b;
-}
-
-} // namespace
-
 RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent)
-    : QWidget(parent), viewed_(viewed), store_(new MachineStore(machine)) {
-    setObjectName("rparamsPane");
+    : ParameterTablePane(viewed, "rparams", MemoryArea::R, parent), store_(new MachineStore(machine)) {
     model_ = new RParamsModel(viewed, this);
     filter_ = new RParamsFilter(this);
-    filter_->setSourceModel(model_);
     filter_->setDynamicSortFilter(true);
 
-    search_ = new QLineEdit(this);
-    search_->setObjectName("rparams.search");
-    search_->setClearButtonEnabled(true);
     show_ = new QComboBox(this);
     show_->setObjectName("rparams.show");
     for (int i = 0; i < 6; ++i)
         show_->addItem(QString());
-    auto* top = new QHBoxLayout;
-    top->addWidget(search_, 1);
-    top->addWidget(show_);
 
-    keep_ = button(this, "rparams.keepPreset");
-    remove_ = button(this, "rparams.removePreset");
-    keepAll_ = button(this, "rparams.keepAll");
-    apply_ = button(this, "rparams.applyPresets");
-    trial_ = button(this, "rparams.trialPart");
-    noteLabel_ = new QLabel(this);
-    note_ = new QLineEdit(this);
-    note_->setObjectName("rparams.note");
-    note_->setMinimumWidth(180);
-    auto* tools = new FlowLayout; // wraps in a narrow dock: every button in reach
-    for (QToolButton* b : {keep_, remove_, keepAll_, apply_, trial_})
-        tools->addWidget(b);
-    tools->addGroup({noteLabel_, note_});
+    keep_ = toolButton("keepPreset");
+    remove_ = toolButton("removePreset");
+    keepAll_ = toolButton("keepAll");
+    apply_ = toolButton("applyPresets");
+    trial_ = toolButton("trialPart");
     connect(keep_, &QToolButton::clicked, this, [this] { keepSelectedAsPreset(); });
     connect(remove_, &QToolButton::clicked, this, [this] { removeSelectedPreset(); });
     connect(keepAll_, &QToolButton::clicked, this, [this] { keepAllAsPresets(); });
     connect(apply_, &QToolButton::clicked, this, &RParamsPane::applyPresets);
     connect(trial_, &QToolButton::clicked, this, [this] { trialPartDialog()->show(); });
+    build(model_, filter_, {show_}, {keep_, remove_, keepAll_, apply_, trial_},
+          {4, 8, 14, 30, 7, 7}); // No., access, preset screen, meaning, discretes, mm
 
-    table_ = new QTableView(this);
-    table_->setObjectName("rparams.table");
-    table_->setModel(filter_);
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |
-                            QAbstractItemView::AnyKeyPressed);
-    table_->setAlternatingRowColors(true);
-    table_->setWordWrap(false);
-    table_->verticalHeader()->hide();
-    table_->verticalHeader()->setDefaultSectionSize(table_->fontMetrics().height() + 6);
-    table_->horizontalHeader()->setStretchLastSection(true);
-    const int em = fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    table_->setColumnWidth(RParamsModel::Number, 4 * em);
-    table_->setColumnWidth(RParamsModel::Access, 8 * em);
-    table_->setColumnWidth(RParamsModel::Group, 14 * em);
-    table_->setColumnWidth(RParamsModel::Meaning, 30 * em);
-    table_->setColumnWidth(RParamsModel::Value, 7 * em);
-    table_->setColumnWidth(RParamsModel::Mm, 7 * em);
-
-    status_ = new QLabel(this);
-    status_->setObjectName("rparams.status");
-    status_->setWordWrap(true);
-    status_->setProperty(kKeptInView, true); // in view below the table when the dock scrolls
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(top);
-    layout->addLayout(tools);
-    layout->addWidget(table_, 1);
-    layout->addWidget(status_);
-
-    connect(search_, &QLineEdit::textChanged, filter_, &RParamsFilter::setSearch);
     connect(show_, &QComboBox::currentIndexChanged, this,
             [this](int i) { filter_->setShow(static_cast<RParamsFilter::Show>(i)); });
-    const auto follow = [this] {
-        disconnect(updates_);
-        updates_ = connect(&viewed_.current(), &Controller::updated, model_, &RParamsModel::refresh);
-        model_->refresh();
-    };
-    connect(&viewed_, &ViewedController::changed, this, follow);
-    follow();
     connect(model_, &RParamsModel::refused, this, [this](const QString& why) { say(why, true); });
     try {
         model_->setPresets(store_->current().r);
@@ -176,8 +77,8 @@ RParamsPane::~RParamsPane() {
     delete store_;
 }
 
-void RParamsPane::retranslate() {
-    search_->setPlaceholderText(tr("Search: number or meaning"));
+void RParamsPane::retranslatePane() {
+    searchField()->setPlaceholderText(tr("Search: number or meaning"));
     show_->setItemText(0, tr("All R0..R299"));
     show_->setItemText(1, tr("User R0..R149"));
     show_->setItemText(2, tr("System (writable)"));
@@ -194,36 +95,11 @@ void RParamsPane::retranslate() {
     trial_->setText(tr("Trial part..."));
     trial_->setToolTip(tr("The size measured on the trial part against the drawing: the change of the tool's "
                           "offset R-parameter, kept as the machine's preset"));
-    noteLabel_->setText(tr("Note:"));
     note_->setPlaceholderText(tr("why the presets change (kept with the revision)"));
-    model_->retranslate();
-}
-
-void RParamsPane::changeEvent(QEvent* e) {
-    if (e->type() == QEvent::LanguageChange)
-        retranslate();
-    QWidget::changeEvent(e);
-}
-
-void RParamsPane::say(const QString& text, bool bad) {
-    showStatus(status_, text, bad);
-}
-
-QString RParamsPane::statusText() const {
-    return status_->text();
-}
-
-int RParamsPane::selected() const {
-    const QModelIndex i = table_->currentIndex();
-    return i.isValid() ? i.data(RParamsModel::NumberRole).toInt() : -1;
 }
 
 void RParamsPane::selectR(int number) {
-    const QModelIndex i = filter_->mapFromSource(model_->index(number, RParamsModel::Value));
-    if (i.isValid()) {
-        table_->setCurrentIndex(i);
-        table_->scrollTo(i);
-    }
+    selectSource(model_->index(number, RParamsModel::Value));
 }
 
 int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& presets, const QString& given) {
@@ -255,7 +131,7 @@ int RParamsPane::keepPresets(const std::map<int, std::optional<std::int64_t>>& p
 }
 
 int RParamsPane::keepSelectedAsPreset() {
-    const int n = selected();
+    const int n = selectedNumber();
     if (n < 0) {
         say(tr("Select an R-parameter first"), true);
         return 0;
@@ -268,7 +144,7 @@ int RParamsPane::keepSelectedAsPreset() {
 }
 
 int RParamsPane::removeSelectedPreset() {
-    const int n = selected();
+    const int n = selectedNumber();
     if (n < 0 || !model_->presets().count(n)) {
         say(tr("The selected R-parameter has no preset"), true);
         return 0;
@@ -345,11 +221,12 @@ void RParamsPane::applyFrom(std::vector<std::pair<int, std::int64_t>> presets, s
     });
 }
 
+QString RParamsPane::dockTitle() const { return tr("R-parameters"); }
+QString RParamsPane::lineReading() const { return tr("The R-parameters of the controller on the line, all read every 2.5 s."); }
+QString RParamsPane::lineWriting() const { return tr("R0..R231 are written to it at once (not R158, R222, R223)."); }
+
 QDockWidget* addRParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine) {
-    auto* dock = new RParamsDock(window, viewed, machine);
-    window->addDockWidget(Qt::LeftDockWidgetArea, dock);
-    dock->hide(); // shown from the View menu; the workspaces place it
-    return dock;
+    return addParameterTableDock(window, new RParamsPane(viewed, machine));
 }
 
 } // namespace k528::studio

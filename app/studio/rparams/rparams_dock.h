@@ -7,9 +7,9 @@
 // controller again.
 #pragma once
 
+#include "parameters/parameter_table_pane.h"
 #include "profile/profile.h"
 
-#include <QWidget>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -18,10 +18,7 @@
 
 class QComboBox;
 class QDockWidget;
-class QLabel;
-class QLineEdit;
 class QMainWindow;
-class QTableView;
 class QToolButton;
 
 namespace k528::studio {
@@ -30,9 +27,8 @@ class MachineStore;
 class RParamsFilter;
 class RParamsModel;
 class TrialPartDialog;
-class ViewedController;
 
-class RParamsPane : public QWidget {
+class RParamsPane : public ParameterTablePane {
     Q_OBJECT
 public:
     RParamsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent = nullptr);
@@ -40,8 +36,6 @@ public:
 
     RParamsModel* model() const { return model_; }
     RParamsFilter* filter() const { return filter_; }
-    QTableView* table() const { return table_; }
-    QString statusText() const;
     void selectR(int number);
 
     // Presets: kept as the machine's next revision; returns the revision (0: not kept).
@@ -57,31 +51,22 @@ public:
     // R`r` = `value` kept as a preset with `note`, then set in the controller.
     int keepTrialCorrection(int r, std::int64_t value, const QString& note);
 
-protected:
-    void changeEvent(QEvent* e) override;
+    QString dockTitle() const override;
+    QString lineReading() const override;
+    QString lineWriting() const override;
 
 private:
-    void retranslate();
-    void say(const QString& text, bool bad);
-    int selected() const;
-
+    void retranslatePane() override;
     void applyFrom(std::vector<std::pair<int, std::int64_t>> presets, std::size_t next);
-    ViewedController& viewed_;
-    QMetaObject::Connection updates_;
     MachineStore* store_;
     RParamsModel* model_;
     RParamsFilter* filter_;
-    QTableView* table_;
-    QLineEdit* search_;
     QComboBox* show_;
     QToolButton* keep_;
     QToolButton* remove_;
     QToolButton* keepAll_;
     QToolButton* apply_;
     QToolButton* trial_;
-    QLabel* noteLabel_;
-    QLineEdit* note_;
-    QLabel* status_;
 };
 
 QDockWidget* addRParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine);

@@ -35,7 +35,7 @@ bool isCoordinate(catalog::RUnit u) {
 } // namespace
 
 RParamsModel::RParamsModel(ViewedController& viewed, QObject* parent)
-    : QAbstractTableModel(parent), viewed_(viewed) {
+    : ParameterTableModel(ColumnCount, parent), viewed_(viewed) {
     const auto r = controller().rValues();
     std::copy(r.begin(), r.begin() + std::min<std::ptrdiff_t>(300, static_cast<std::ptrdiff_t>(r.size())), shown_.begin());
     presets_ = controller().profile().r;
@@ -66,26 +66,13 @@ void RParamsModel::setPresets(std::map<int, std::int64_t> presets) {
 
 void RParamsModel::refresh() {
     const auto r = controller().rValues();
-    int first = -1, last = -1;
-    for (int n = 0; n < engine::kRCount && n < static_cast<int>(r.size()); ++n) {
-        const auto i = static_cast<std::size_t>(n);
-        if (r[i] == shown_[i])
-            continue;
-        shown_[i] = r[i];
-        if (first < 0)
-            first = n;
-        last = n;
-    }
+    const auto [first, last] = takeChanged(r, shown_, 0, std::min(engine::kRCount, static_cast<int>(r.size())));
     if (first >= 0)
         emit dataChanged(index(first, Value), index(last, Mm));
 }
 
 int RParamsModel::rowCount(const QModelIndex& parent) const {
     return parent.isValid() ? 0 : engine::kRCount;
-}
-
-int RParamsModel::columnCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : ColumnCount;
 }
 
 QString RParamsModel::mmText(int number, std::int64_t v) const {
@@ -170,35 +157,14 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
         return QVariant(Qt::AlignRight | Qt::AlignVCenter);
     if (role == Qt::ForegroundRole && (d.readOnly() || d.access == catalog::RAccess::Unassigned))
         return QBrush(QColor(0x70, 0x70, 0x70));
-    if (role == Qt::FontRole && index.column() == Value) {
-        QFont f;
-        f.setBold(true);
-        return f;
-    }
+    if (role == Qt::FontRole && index.column() == Value)
+        return valueFont();
     return {};
 }
 
-QVariant RParamsModel::headerData(int section, Qt::Orientation o, int role) const {
-    if (o != Qt::Horizontal || role != Qt::DisplayRole)
-        return QAbstractTableModel::headerData(section, o, role);
-    switch (section) {
-    case Number:
-        return tr("No.");
-    case Access:
-        return tr("Access");
-    case Group:
-        return tr("Preset screen");
-    case Meaning:
-        return tr("Meaning (appendix L)");
-    case Value:
-        return tr("Discretes");
-    case Mm:
-        return tr("mm");
-    case Preset:
-        return tr("Preset");
-    default:
-        return {};
-    }
+QStringList RParamsModel::columnTitles() const {
+    return {tr("No."),       tr("Access"), tr("Preset screen"), tr("Meaning (appendix L)"),
+            tr("Discretes"), tr("mm"),     tr("Preset")};
 }
 
 QString RParamsModel::whyNotEditable(int number) const {
@@ -265,19 +231,14 @@ bool RParamsModel::setData(const QModelIndex& index, const QVariant& value, int 
     return !*refusedNow;
 }
 
-RParamsFilter::RParamsFilter(QObject* parent) : QSortFilterProxyModel(parent) {}
-
-void RParamsFilter::setSearch(const QString& text) {
-    words_ = text.toLower().split(QLatin1Char(' '), Qt::SkipEmptyParts);
-    invalidateFilter();
-}
+RParamsFilter::RParamsFilter(QObject* parent) : ParameterFilter(parent) {}
 
 void RParamsFilter::setShow(Show s) {
     show_ = s;
     invalidateFilter();
 }
 
-bool RParamsFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
+bool RParamsFilter::keeps(int row, const QModelIndex& parent) const {
     const catalog::RParamDef* d = catalog::findRParam(row);
     if (!d)
         return false;
@@ -305,12 +266,6 @@ bool RParamsFilter::filterAcceptsRow(int row, const QModelIndex& parent) const {
             return false;
         break;
     }
-    if (words_.isEmpty())
-        return true;
-    const QString hay = sourceModel()->index(row, 0, parent).data(RParamsModel::SearchRole).toString();
-    for (const QString& w : words_)
-        if (!hay.contains(w))
-            return false;
     return true;
 }
 

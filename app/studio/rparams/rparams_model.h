@@ -9,8 +9,8 @@
 // millimetres for coordinates.
 #pragma once
 
-#include <QAbstractTableModel>
-#include <QSortFilterProxyModel>
+#include "parameters/parameter_table_model.h"
+
 #include <array>
 #include <cstdint>
 #include <map>
@@ -23,20 +23,16 @@ namespace k528::studio {
 class Controller;
 class ViewedController;
 
-class RParamsModel : public QAbstractTableModel {
+class RParamsModel : public ParameterTableModel {
     Q_OBJECT
 public:
     enum Column { Number, Access, Group, Meaning, Value, Mm, Preset, ColumnCount };
-    static constexpr int NumberRole = Qt::UserRole;
-    static constexpr int SearchRole = Qt::UserRole + 1;
 
     explicit RParamsModel(ViewedController& viewed, QObject* parent = nullptr);
     Controller& controller() const;
 
     int rowCount(const QModelIndex& parent = {}) const override;
-    int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
-    QVariant headerData(int section, Qt::Orientation o, int role = Qt::DisplayRole) const override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
 
@@ -51,11 +47,14 @@ public:
     void setPresets(std::map<int, std::int64_t> presets);
 
 public slots:
-    void refresh();
-    void retranslate();
+    void refresh() override;
+    void retranslate() override;
 
 signals:
     void refused(const QString& why);
+
+protected:
+    QStringList columnTitles() const override;
 
 private:
     QString mmText(int number, std::int64_t v) const;
@@ -66,19 +65,17 @@ private:
     bool russian_ = false;
 };
 
-class RParamsFilter : public QSortFilterProxyModel {
+class RParamsFilter : public ParameterFilter {
     Q_OBJECT
 public:
     enum class Show { All, User, System, ReadOnly, Presets, NonZero };
     explicit RParamsFilter(QObject* parent = nullptr);
-    void setSearch(const QString& text);
     void setShow(Show s);
 
 protected:
-    bool filterAcceptsRow(int row, const QModelIndex& parent) const override;
+    bool keeps(int row, const QModelIndex& parent) const override;
 
 private:
-    QStringList words_;
     Show show_ = Show::All;
 };
 

@@ -20,7 +20,8 @@ namespace {
 
 class ScopeDock : public PaneDock {
 public:
-    ScopeDock(QMainWindow* window, ViewedController& viewed) : PaneDock(window, "scope"), viewed_(viewed) {
+    ScopeDock(QMainWindow* window, ViewedController& viewed)
+        : PaneDock(window, "scope", [] { return ScopeView::tr("Oscilloscope"); }), viewed_(viewed) {
         view_ = new ScopeView(this);
         // The charts live at most at kLiveIntervalMs (a trailing frame
         // draws what the last one skipped).
@@ -35,7 +36,6 @@ public:
         auto* notice = new ViewNotice(view_, this);
         notice->follow(viewed, [](Controller&) { return std::pair<ViewNotice::Level, QString>{}; });
         setWidget(notice);
-        retranslate();
     }
 
 private:
@@ -54,7 +54,6 @@ private:
         if (SimulatedMachine* sim = c.simulated())
             connect(sim->lifetime(), &QObject::destroyed, view_, [v = view_] { v->forget(); });
     }
-    void retranslate() override { setWindowTitle(ScopeView::tr("Oscilloscope")); }
     ViewedController& viewed_;
     ScopeView* view_ = nullptr;
     QMetaObject::Connection updates_;

@@ -756,24 +756,9 @@ void TrainingPane::lockClicked() {
 
 // --- the dock ------------------------------------------------------------------------
 
-namespace {
-
-class TrainingDock : public PaneDock {
-public:
-    TrainingDock(QMainWindow* window, std::function<std::pair<QString, QString>()> editorText)
-        : PaneDock(window, "training") {
-        setWidget(new TrainingPane(std::move(editorText), this));
-        retranslate();
-    }
-
-private:
-    void retranslate() override { setWindowTitle(TrainingPane::tr("Training course")); }
-};
-
-} // namespace
-
 QDockWidget* addTrainingDock(QMainWindow* window, std::function<std::pair<QString, QString>()> editorText) {
-    auto* dock = new TrainingDock(window, std::move(editorText));
+    auto* dock = new PaneDock(window, "training", [] { return TrainingPane::tr("Training course"); });
+    dock->setWidget(new TrainingPane(std::move(editorText), dock));
     window->addDockWidget(Qt::RightDockWidgetArea, dock);
     dock->hide(); // shown from the View menu; the Training workspace places it
     return dock;

@@ -5,9 +5,16 @@
 
 namespace k528::studio {
 
-PaneDock::PaneDock(QMainWindow* window, const QString& pane) : QDockWidget(window) {
+PaneDock::PaneDock(QMainWindow* window, const QString& pane, std::function<QString()> title)
+    : QDockWidget(window), title_(std::move(title)) {
     setObjectName("dock." + pane);
     setFeatures(DockWidgetMovable | DockWidgetFloatable | DockWidgetClosable);
+    PaneDock::retranslate();
+}
+
+void PaneDock::retranslate() {
+    if (title_)
+        setWindowTitle(title_());
 }
 
 void PaneDock::changeEvent(QEvent* e) {
