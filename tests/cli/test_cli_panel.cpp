@@ -186,6 +186,14 @@ private slots:
             QVERIFY2(en.err.startsWith(QStringLiteral("k528: machine description ")) &&
                          en.err.contains(QStringLiteral("unknown signal 'nosuch'")),
                      qPrintable(en.err));
+            // A profile that is none: core's problem in the language asked for.
+            const auto noneRu = runK528(command + QStringList{"--profile", "no-such-machine"});
+            QCOMPARE(noneRu.exitCode, 2);
+            QVERIFY2(noneRu.err.contains(QStringLiteral("no-such-machine: это не встроенный профиль")),
+                     qPrintable(noneRu.err));
+            const auto noneEn = runK528(command + QStringList{"--profile", "no-such-machine", "--lang", "en"});
+            QVERIFY2(noneEn.err.contains(QStringLiteral("no-such-machine: neither a built-in profile")),
+                     qPrintable(noneEn.err));
             const auto bad = runK528(command + QStringList{"--lang", "de"});
             QCOMPARE(bad.exitCode, 2);
             QVERIFY2(bad.err.contains("--lang is ru or en"), qPrintable(bad.err));

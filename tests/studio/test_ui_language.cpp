@@ -52,6 +52,7 @@
 #include "editor/program_editor.h"
 #include "profile/diff.h"
 #include "engine/refusal_texts.h"
+#include "profile/problem_russian.h"
 #include "engine/types.h"
 #include "program/model.h"
 #include "session/machine_source.h"
@@ -961,6 +962,11 @@ void TestUiLanguage::russianCoreTexts() {
     for (int r = 1; r <= static_cast<int>(engine::Refusal::NotPowered); ++r) {
         const auto refusal = static_cast<engine::Refusal>(r);
         QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
+    }
+    // Core's problems: the same Russian as the command line's (`k528 … --lang ru`).
+    for (const profile::ProblemText& t : profile::problemTexts()) {
+        const profile::Problem p = profile::problem(std::string(t.id), {"C022", "9", "10...5000", "X"});
+        QCOMPARE(studio::problemText(p), QString::fromStdString(profile::problemText(p, true)));
     }
     // Why, with the value and the limit: the same Russian as core's catalog.
     for (const engine::RefusalText& t : engine::refusalTexts()) {

@@ -319,12 +319,16 @@ QString fill(const QString& pattern, const QStringList& args) {
     return QString::fromStdString(profile::fillPattern(pattern.toStdString(), a));
 }
 
-const char* patternOf(std::string_view id) {
-    for (const Entry& e : kProblems)
+// The English of `id` in one of the tables above (nullptr: not there).
+template <std::size_t N>
+const char* textOf(const Entry (&table)[N], std::string_view id) {
+    for (const Entry& e : table)
         if (id == e.id)
             return e.text;
     return nullptr;
 }
+
+const char* patternOf(std::string_view id) { return textOf(kProblems, id); }
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
@@ -332,19 +336,9 @@ QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), stati
 
 bool hasProblemText(std::string_view id) { return patternOf(id) != nullptr; }
 
-bool hasNoteText(std::string_view id) {
-    for (const Entry& e : kNotes)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasNoteText(std::string_view id) { return textOf(kNotes, id) != nullptr; }
 
-bool hasDescriptionText(std::string_view id) {
-    for (const Entry& e : kDescriptionTexts)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasDescriptionText(std::string_view id) { return textOf(kDescriptionTexts, id) != nullptr; }
 
 QString descriptionProblemText(const profile::Problem& p) {
     QStringList args;
@@ -366,12 +360,7 @@ QString descriptionErrorText(const plc::DescriptionError& e) {
         .arg(fromStd(e.source()), fromStd(e.path()), what);
 }
 
-bool hasFindingText(std::string_view id) {
-    for (const Entry& e : kFindings)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasFindingText(std::string_view id) { return textOf(kFindings, id) != nullptr; }
 
 QString findingText(const proveout::Finding& f) {
     for (const Entry& e : kFindings) {
@@ -402,12 +391,7 @@ QString refusalText(engine::Refusal r) {
     return {};
 }
 
-bool hasRefusalText(std::string_view id) {
-    for (const Entry& e : kRefusalTexts)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasRefusalText(std::string_view id) { return textOf(kRefusalTexts, id) != nullptr; }
 
 QString refusalText(const engine::OpResult& r) {
     if (r.ok())
@@ -415,9 +399,8 @@ QString refusalText(const engine::OpResult& r) {
     QStringList args;
     for (const std::string& a : r.args)
         args << fromStd(a);
-    for (const Entry& e : kRefusalTexts)
-        if (r.id == e.id)
-            return fill(QCoreApplication::translate("k528::studio::RefusalTexts", e.text), args);
+    if (const char* pattern = textOf(kRefusalTexts, r.id))
+        return fill(QCoreApplication::translate("k528::studio::RefusalTexts", pattern), args);
     return refusalText(r.refusal); // an id without a translation: the refusal's kind
 }
 
