@@ -11,6 +11,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -44,6 +45,16 @@ std::string num(std::int64_t v) {
 
 int channelIndex(std::int64_t code) {
     return code >= 1 && code <= 4 ? static_cast<int>(code - 1) : -1;
+}
+
+// УПРАВЛЕНИЕ ДАННЫМИ clears a memory area (C, R, the programs) only in that
+// mode and with no program active: the refusal, or none.
+std::optional<OpResult> memoryClearRefused(Mode mode, ProgramState state) {
+    if (mode != Mode::DataControl)
+        return OpResult::refused(Refusal::WrongMode, "clear-mode");
+    if (programActive(state))
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
+    return std::nullopt;
 }
 
 } // namespace
@@ -1188,10 +1199,8 @@ OpResult Positioner::loadCParameters(std::span<const std::int64_t> c) {
 
 OpResult Positioner::clearCParameters() {
     wake();
-    if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode, "clear-mode");
-    if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "program-active");
+    if (std::optional<OpResult> refused = memoryClearRefused(c_.mode, c_.state))
+        return *refused;
     c_.c.fill(0);
     c_.profile.c.fill(0);
     c_.applyConstants();
@@ -1201,10 +1210,8 @@ OpResult Positioner::clearCParameters() {
 
 OpResult Positioner::clearRParameters() {
     wake();
-    if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode, "clear-mode");
-    if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "program-active");
+    if (std::optional<OpResult> refused = memoryClearRefused(c_.mode, c_.state))
+        return *refused;
     c_.r.clear();
     refreshR();
     return OpResult::accepted();
@@ -1212,10 +1219,8 @@ OpResult Positioner::clearRParameters() {
 
 OpResult Positioner::clearPrograms() {
     wake();
-    if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode, "clear-mode");
-    if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "program-active");
+    if (std::optional<OpResult> refused = memoryClearRefused(c_.mode, c_.state))
+        return *refused;
     c_.store = program::ProgramStore{};
     storeCorrupt_ = false;
     ++programsRevision_;
