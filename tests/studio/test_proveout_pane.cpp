@@ -64,9 +64,9 @@ private slots:
     void cleanup() { setLanguage("en"); }
 
     void findsTheRapidAndShowsItsLine() {
-        PaneOnTheLathe f;
-        ProveoutPane& pane = f.pane;
-        ProgramEditor* ed = f.newFile(kBadFacing);
+        PaneOnTheLathe fixture;
+        ProveoutPane& pane = fixture.pane;
+        ProgramEditor* ed = fixture.newFile(kBadFacing);
         ed->validateNow();
         pane.proveNow();
         QCOMPARE(pane.findings().size(), std::size_t(1));
@@ -127,9 +127,9 @@ private slots:
     // language; activated, the cursor goes to the line; the boxed line's
     // hover says the finding. The safe program leaves none.
     void theFindingsAreInTheProblemsList() {
-        PaneOnTheLathe f;
-        EditorTab& tab = f.tab;
-        ProveoutPane& pane = f.pane;
+        PaneOnTheLathe fixture;
+        EditorTab& tab = fixture.tab;
+        ProveoutPane& pane = fixture.pane;
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
         QAbstractItemModel* problems = tab.problems()->model();
@@ -200,9 +200,9 @@ private slots:
     }
 
     void anEditProvesAgainOnTheWorker() {
-        PaneOnTheLathe f;
-        ProveoutPane& pane = f.pane;
-        ProgramEditor* ed = f.newFile(kBadFacing);
+        PaneOnTheLathe fixture;
+        ProveoutPane& pane = fixture.pane;
+        ProgramEditor* ed = fixture.newFile(kBadFacing);
         QTRY_COMPARE_WITH_TIMEOUT(pane.findings().size(), std::size_t(1), 20000);
         ed->setText(QString::fromStdString(kSafeFacing));
         QTRY_VERIFY_WITH_TIMEOUT(pane.findings().empty() && pane.summary()->text().startsWith("Nothing"),
@@ -212,9 +212,9 @@ private slots:
 
     void theMachinesToolsWithTheirOffsets() {
         const profile::MachineProfile lathe = profile::builtin("training-lathe");
-        PaneOnTheLathe f;
-        ProveoutPane& pane = f.pane;
-        f.newFile(kSafeFacing)->validateNow();
+        PaneOnTheLathe fixture;
+        ProveoutPane& pane = fixture.pane;
+        fixture.newFile(kSafeFacing)->validateNow();
         pane.proveNow();
         const std::vector<profile::Tool> tools = profile::tools(lathe);
         QCOMPARE(tools.size(), std::size_t(4));
@@ -234,12 +234,12 @@ private slots:
     }
 
     void saysWhyNothingIsProved() {
-        PaneOnTheLathe f;
-        EditorTab& tab = f.tab;
-        ProveoutPane& pane = f.pane;
+        PaneOnTheLathe fixture;
+        EditorTab& tab = fixture.tab;
+        ProveoutPane& pane = fixture.pane;
         pane.proveNow();
         QVERIFY2(pane.summary()->text().contains("Open"), qPrintable(pane.summary()->text()));
-        ProgramEditor* ed = f.newFile(kBadFacing);
+        ProgramEditor* ed = fixture.newFile(kBadFacing);
         QVERIFY(tab.setFileMachine(0, EditorTab::kNoMachine));
         ed->validateNow();
         pane.proveNow();
