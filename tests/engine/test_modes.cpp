@@ -96,12 +96,14 @@ private slots:
         QCOMPARE(r.ctl->setC(22, 5000).refusal, Refusal::WrongMode);
         QCOMPARE(r.ctl->setCurrentValue(X, 0).refusal, Refusal::WrongMode);
         QCOMPARE(r.ctl->clearRParameters().refusal, Refusal::WrongMode);
+        QCOMPARE(r.ctl->clearCParameters().refusal, Refusal::WrongMode);
+        QCOMPARE(r.ctl->clearPrograms().refusal, Refusal::WrongMode);
         QVERIFY(r.ctl->selectMode(Mode::MachineData).ok());
         QVERIFY(r.ctl->setC(22, 5000).ok());
         QCOMPARE(r.ctl->c()[22], 5000);
         const auto bad = r.ctl->setC(29, 5000); // МАКС.ЦАП 0..2047
         QCOMPARE(bad.refusal, Refusal::ValueOutOfRange);
-        QVERIFY(!bad.detail.empty());
+        QCOMPARE(bad.text(), std::string("C029 = 5000 is outside the range 0...2047 of «МАКС.ЦАП»"));
         QCOMPARE(r.ctl->setC(153, 0).refusal, Refusal::NoSuchParameter);
         QVERIFY(r.ctl->selectMode(Mode::DataControl).ok());
         QVERIFY(r.ctl->setR(5, 7).ok());
