@@ -3100,6 +3100,109 @@ Details: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::EditorMenu</name>
+    <message>
+        <source>&amp;Editor</source>
+        <translation>&amp;Editor</translation>
+    </message>
+    <message>
+        <source>Refactor</source>
+        <translation>Refactor</translation>
+    </message>
+    <message>
+        <source>Renumber frames…</source>
+        <translation>Renumber frames…</translation>
+    </message>
+    <message>
+        <source>Move or copy a program…</source>
+        <translation>Move or copy a program…</translation>
+    </message>
+    <message>
+        <source>Format the file</source>
+        <translation>Format the file</translation>
+    </message>
+    <message>
+        <source>Listing</source>
+        <translation>Listing</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>Print…</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Export PDF…</translation>
+    </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Setup sheet</translation>
+    </message>
+    <message>
+        <source>Print preview…</source>
+        <translation>Print preview…</translation>
+    </message>
+    <message>
+        <source>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</source>
+        <translation>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</translation>
+    </message>
+    <message>
+        <source>Teach-in</source>
+        <translation>Teach-in</translation>
+    </message>
+    <message>
+        <source>Insert the controller's position as a frame</source>
+        <translation>Insert the controller's position as a frame</translation>
+    </message>
+    <message>
+        <source>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</source>
+        <translation>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</translation>
+    </message>
+    <message>
+        <source>Position into an R-parameter</source>
+        <translation>Position into an R-parameter</translation>
+    </message>
+    <message>
+        <source>Machine of this file</source>
+        <translation>Machine of this file</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Machine: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>The machine this file is checked for: its limits, feeds and axes</source>
+        <translation>The machine this file is checked for: its limits, feeds and axes</translation>
+    </message>
+    <message>
+        <source>Open from the database…</source>
+        <translation>Open from the database…</translation>
+    </message>
+    <message>
+        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
+        <translation>The programs and messages of a machine of the database; saving writes its next revision</translation>
+    </message>
+    <message>
+        <source>No file is open</source>
+        <translation>No file is open</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (%1)</source>
+        <translation>The workstation's machine (%1)</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (none)</source>
+        <translation>The workstation's machine (none)</translation>
+    </message>
+    <message>
+        <source>None: the language only</source>
+        <translation>None: the language only</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::EditorTab</name>
     <message>
         <source>Unsaved changes</source>
@@ -3226,156 +3329,12 @@ Details: %3</translation>
         <translation>Message</translation>
     </message>
     <message>
-        <source>&amp;Editor</source>
-        <translation>&amp;Editor</translation>
-    </message>
-    <message>
-        <source>Refactor</source>
-        <translation>Refactor</translation>
-    </message>
-    <message>
-        <source>Renumber frames…</source>
-        <translation>Renumber frames…</translation>
-    </message>
-    <message>
-        <source>Move or copy a program…</source>
-        <translation>Move or copy a program…</translation>
-    </message>
-    <message>
-        <source>Format the file</source>
-        <translation>Format the file</translation>
-    </message>
-    <message>
-        <source>Listing</source>
-        <translation>Listing</translation>
-    </message>
-    <message>
-        <source>Print…</source>
-        <translation>Print…</translation>
-    </message>
-    <message>
-        <source>Export PDF…</source>
-        <translation>Export PDF…</translation>
-    </message>
-    <message>
-        <source>Machine of this file</source>
-        <translation>Machine of this file</translation>
-    </message>
-    <message>
-        <source>Machine: %1</source>
-        <translation>Machine: %1</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>none</translation>
-    </message>
-    <message>
-        <source>The machine this file is checked for: its limits, feeds and axes</source>
-        <translation>The machine this file is checked for: its limits, feeds and axes</translation>
-    </message>
-    <message>
-        <source>Open from the database…</source>
-        <translation>Open from the database…</translation>
-    </message>
-    <message>
-        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
-        <translation>The programs and messages of a machine of the database; saving writes its next revision</translation>
-    </message>
-    <message>
         <source>The machine %1 cannot be loaded: %2</source>
         <translation>The machine %1 cannot be loaded: %2</translation>
     </message>
     <message>
-        <source>No file is open</source>
-        <translation>No file is open</translation>
-    </message>
-    <message>
-        <source>The workstation's machine (%1)</source>
-        <translation>The workstation's machine (%1)</translation>
-    </message>
-    <message>
-        <source>The workstation's machine (none)</source>
-        <translation>The workstation's machine (none)</translation>
-    </message>
-    <message>
-        <source>None: the language only</source>
-        <translation>None: the language only</translation>
-    </message>
-    <message>
-        <source>Renumbered every program from %1 by %2</source>
-        <translation>Renumbered every program from %1 by %2</translation>
-    </message>
-    <message>
-        <source>Renumbered L%1 from %2 by %3</source>
-        <translation>Renumbered L%1 from %2 by %3</translation>
-    </message>
-    <message>
-        <source>Copied L%1 to L%2</source>
-        <translation>Copied L%1 to L%2</translation>
-    </message>
-    <message>
-        <source>Moved L%1 to L%2</source>
-        <translation>Moved L%1 to L%2</translation>
-    </message>
-    <message>
-        <source>Formatted</source>
-        <translation>Formatted</translation>
-    </message>
-    <message>
-        <source>Renumber frames</source>
-        <translation>Renumber frames</translation>
-    </message>
-    <message>
-        <source>Every program</source>
-        <translation>Every program</translation>
-    </message>
-    <message>
-        <source>First number</source>
-        <translation>First number</translation>
-    </message>
-    <message>
-        <source>Step</source>
-        <translation>Step</translation>
-    </message>
-    <message>
-        <source>The file has no program</source>
-        <translation>The file has no program</translation>
-    </message>
-    <message>
-        <source>Move or copy a program</source>
-        <translation>Move or copy a program</translation>
-    </message>
-    <message>
-        <source>Keep the program (copy)</source>
-        <translation>Keep the program (copy)</translation>
-    </message>
-    <message>
-        <source>New number</source>
-        <translation>New number</translation>
-    </message>
-    <message>
         <source>%1 (database, revision %2)</source>
         <translation>%1 (database, revision %2)</translation>
-    </message>
-    <message>
-        <source>Listing of %1 pages written to %2</source>
-        <translation>Listing of %1 pages written to %2</translation>
-    </message>
-    <message>
-        <source>Export the listing</source>
-        <translation>Export the listing</translation>
-    </message>
-    <message>
-        <source>PDF (*.pdf)</source>
-        <translation>PDF (*.pdf)</translation>
-    </message>
-    <message>
-        <source>Printed %1 pages</source>
-        <translation>Printed %1 pages</translation>
-    </message>
-    <message>
-        <source>The listing could not be printed</source>
-        <translation>The listing could not be printed</translation>
     </message>
     <message>
         <source>Opened the programs of %1, revision %2</source>
@@ -3502,90 +3461,6 @@ Its comment stays: %3</translation>
     <message>
         <source>The programs and messages of the controller shown as a new file</source>
         <translation>The programs and messages of the controller shown as a new file</translation>
-    </message>
-    <message>
-        <source>Setup sheet</source>
-        <translation>Setup sheet</translation>
-    </message>
-    <message>
-        <source>Print preview…</source>
-        <translation>Print preview…</translation>
-    </message>
-    <message>
-        <source>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</source>
-        <translation>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</translation>
-    </message>
-    <message>
-        <source>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</source>
-        <translation>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</translation>
-    </message>
-    <message>
-        <source>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</source>
-        <translation>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</translation>
-    </message>
-    <message>
-        <source>The file has errors (Problems): its setup sheet is made once they are fixed.</source>
-        <translation>The file has errors (Problems): its setup sheet is made once they are fixed.</translation>
-    </message>
-    <message>
-        <source>The setup sheet cannot be made: %1</source>
-        <translation>The setup sheet cannot be made: %1</translation>
-    </message>
-    <message>
-        <source>Setup sheet written to %1</source>
-        <translation>Setup sheet written to %1</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Cannot write %1: %2</translation>
-    </message>
-    <message>
-        <source>Export the setup sheet</source>
-        <translation>Export the setup sheet</translation>
-    </message>
-    <message>
-        <source>Setup sheet: %1</source>
-        <translation>Setup sheet: %1</translation>
-    </message>
-    <message>
-        <source>Teach-in</source>
-        <translation>Teach-in</translation>
-    </message>
-    <message>
-        <source>Insert the controller's position as a frame</source>
-        <translation>Insert the controller's position as a frame</translation>
-    </message>
-    <message>
-        <source>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</source>
-        <translation>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</translation>
-    </message>
-    <message>
-        <source>Position into an R-parameter</source>
-        <translation>Position into an R-parameter</translation>
-    </message>
-    <message>
-        <source>Open a program file in the editor to teach a position into it</source>
-        <translation>Open a program file in the editor to teach a position into it</translation>
-    </message>
-    <message>
-        <source>No controller is viewed: no position to teach</source>
-        <translation>No controller is viewed: no position to teach</translation>
-    </message>
-    <message>
-        <source>The viewed controller has no axes: no position to teach</source>
-        <translation>The viewed controller has no axes: no position to teach</translation>
-    </message>
-    <message>
-        <source>Taught: %1</source>
-        <translation>Taught: %1</translation>
-    </message>
-    <message>
-        <source>The viewed controller has no axis %1</source>
-        <translation>The viewed controller has no axis %1</translation>
-    </message>
-    <message>
-        <source>Taught: %1 (%2 mm)</source>
-        <translation>Taught: %1 (%2 mm)</translation>
     </message>
     <message>
         <source>Code</source>
@@ -4334,6 +4209,29 @@ Its comment stays: %3</translation>
     <message>
         <source>%1, unit %2 (Modbus TCP)</source>
         <translation>%1, unit %2 (Modbus TCP)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ListingActions</name>
+    <message>
+        <source>Listing of %1 pages written to %2</source>
+        <translation>Listing of %1 pages written to %2</translation>
+    </message>
+    <message>
+        <source>Export the listing</source>
+        <translation>Export the listing</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Printed %1 pages</source>
+        <translation>Printed %1 pages</translation>
+    </message>
+    <message>
+        <source>The listing could not be printed</source>
+        <translation>The listing could not be printed</translation>
     </message>
 </context>
 <context>
@@ -5494,6 +5392,65 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::RefactorActions</name>
+    <message>
+        <source>Renumbered every program from %1 by %2</source>
+        <translation>Renumbered every program from %1 by %2</translation>
+    </message>
+    <message>
+        <source>Renumbered L%1 from %2 by %3</source>
+        <translation>Renumbered L%1 from %2 by %3</translation>
+    </message>
+    <message>
+        <source>Copied L%1 to L%2</source>
+        <translation>Copied L%1 to L%2</translation>
+    </message>
+    <message>
+        <source>Moved L%1 to L%2</source>
+        <translation>Moved L%1 to L%2</translation>
+    </message>
+    <message>
+        <source>Formatted</source>
+        <translation>Formatted</translation>
+    </message>
+    <message>
+        <source>Renumber frames</source>
+        <translation>Renumber frames</translation>
+    </message>
+    <message>
+        <source>Every program</source>
+        <translation>Every program</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation>First number</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>The file has no program</source>
+        <translation>The file has no program</translation>
+    </message>
+    <message>
+        <source>Move or copy a program</source>
+        <translation>Move or copy a program</translation>
+    </message>
+    <message>
+        <source>Keep the program (copy)</source>
+        <translation>Keep the program (copy)</translation>
+    </message>
+    <message>
+        <source>New number</source>
+        <translation>New number</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RevisionNotes</name>
     <message>
         <source>built-in profile %1 (first start)</source>
@@ -5681,6 +5638,49 @@ Its comment stays: %3</translation>
     <message>
         <source>The link's map carries no DAC code: the simulated machine's only</source>
         <translation>The link's map carries no DAC code: the simulated machine's only</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SetupSheetActions</name>
+    <message>
+        <source>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</source>
+        <translation>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</translation>
+    </message>
+    <message>
+        <source>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</source>
+        <translation>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</translation>
+    </message>
+    <message>
+        <source>The file has errors (Problems): its setup sheet is made once they are fixed.</source>
+        <translation>The file has errors (Problems): its setup sheet is made once they are fixed.</translation>
+    </message>
+    <message>
+        <source>The setup sheet cannot be made: %1</source>
+        <translation>The setup sheet cannot be made: %1</translation>
+    </message>
+    <message>
+        <source>Setup sheet written to %1</source>
+        <translation>Setup sheet written to %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Export the setup sheet</source>
+        <translation>Export the setup sheet</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Setup sheet</translation>
+    </message>
+    <message>
+        <source>Setup sheet: %1</source>
+        <translation>Setup sheet: %1</translation>
     </message>
 </context>
 <context>
@@ -5995,6 +5995,33 @@ Details: %3</translation>
     <message>
         <source>simulated %1</source>
         <translation>simulated %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::TeachIn</name>
+    <message>
+        <source>Open a program file in the editor to teach a position into it</source>
+        <translation>Open a program file in the editor to teach a position into it</translation>
+    </message>
+    <message>
+        <source>No controller is viewed: no position to teach</source>
+        <translation>No controller is viewed: no position to teach</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axes: no position to teach</source>
+        <translation>The viewed controller has no axes: no position to teach</translation>
+    </message>
+    <message>
+        <source>Taught: %1</source>
+        <translation>Taught: %1</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axis %1</source>
+        <translation>The viewed controller has no axis %1</translation>
+    </message>
+    <message>
+        <source>Taught: %1 (%2 mm)</source>
+        <translation>Taught: %1 (%2 mm)</translation>
     </message>
 </context>
 <context>

@@ -3100,6 +3100,109 @@ Details: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::EditorMenu</name>
+    <message>
+        <source>&amp;Editor</source>
+        <translation>&amp;Редактор</translation>
+    </message>
+    <message>
+        <source>Refactor</source>
+        <translation>Преобразовать</translation>
+    </message>
+    <message>
+        <source>Renumber frames…</source>
+        <translation>Перенумеровать кадры…</translation>
+    </message>
+    <message>
+        <source>Move or copy a program…</source>
+        <translation>Перенести или копировать программу…</translation>
+    </message>
+    <message>
+        <source>Format the file</source>
+        <translation>Форматировать файл</translation>
+    </message>
+    <message>
+        <source>Listing</source>
+        <translation>Листинг</translation>
+    </message>
+    <message>
+        <source>Print…</source>
+        <translation>Печать…</translation>
+    </message>
+    <message>
+        <source>Export PDF…</source>
+        <translation>Экспорт в PDF…</translation>
+    </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Карта наладки</translation>
+    </message>
+    <message>
+        <source>Print preview…</source>
+        <translation>Предварительный просмотр…</translation>
+    </message>
+    <message>
+        <source>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</source>
+        <translation>Карта наладки этого файла на его станке: заготовка, инструмент с коррекциями, программы со временем цикла, предустановки R-параметров</translation>
+    </message>
+    <message>
+        <source>Teach-in</source>
+        <translation>Обучение</translation>
+    </message>
+    <message>
+        <source>Insert the controller's position as a frame</source>
+        <translation>Вставить положение УЧПУ кадром</translation>
+    </message>
+    <message>
+        <source>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</source>
+        <translation>Положение осей показываемого УЧПУ (текущие координаты, как на его пульте) кадром после строки курсора</translation>
+    </message>
+    <message>
+        <source>Position into an R-parameter</source>
+        <translation>Положение в R-параметр</translation>
+    </message>
+    <message>
+        <source>Machine of this file</source>
+        <translation>Станок этого файла</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Станок: %1</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>The machine this file is checked for: its limits, feeds and axes</source>
+        <translation>Станок, для которого проверяется файл: его пределы, подачи и оси</translation>
+    </message>
+    <message>
+        <source>Open from the database…</source>
+        <translation>Открыть из базы…</translation>
+    </message>
+    <message>
+        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
+        <translation>Программы и сообщения станка из базы; сохранение записывает его следующую ревизию</translation>
+    </message>
+    <message>
+        <source>No file is open</source>
+        <translation>Нет открытого файла</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (%1)</source>
+        <translation>Станок рабочего места (%1)</translation>
+    </message>
+    <message>
+        <source>The workstation's machine (none)</source>
+        <translation>Станок рабочего места (нет)</translation>
+    </message>
+    <message>
+        <source>None: the language only</source>
+        <translation>Нет: только язык</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::EditorTab</name>
     <message>
         <source>Unsaved changes</source>
@@ -3226,156 +3329,12 @@ Details: %3</source>
         <translation>Сообщение</translation>
     </message>
     <message>
-        <source>&amp;Editor</source>
-        <translation>&amp;Редактор</translation>
-    </message>
-    <message>
-        <source>Refactor</source>
-        <translation>Преобразовать</translation>
-    </message>
-    <message>
-        <source>Renumber frames…</source>
-        <translation>Перенумеровать кадры…</translation>
-    </message>
-    <message>
-        <source>Move or copy a program…</source>
-        <translation>Перенести или копировать программу…</translation>
-    </message>
-    <message>
-        <source>Format the file</source>
-        <translation>Форматировать файл</translation>
-    </message>
-    <message>
-        <source>Listing</source>
-        <translation>Листинг</translation>
-    </message>
-    <message>
-        <source>Print…</source>
-        <translation>Печать…</translation>
-    </message>
-    <message>
-        <source>Export PDF…</source>
-        <translation>Экспорт в PDF…</translation>
-    </message>
-    <message>
-        <source>Machine of this file</source>
-        <translation>Станок этого файла</translation>
-    </message>
-    <message>
-        <source>Machine: %1</source>
-        <translation>Станок: %1</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>нет</translation>
-    </message>
-    <message>
-        <source>The machine this file is checked for: its limits, feeds and axes</source>
-        <translation>Станок, для которого проверяется файл: его пределы, подачи и оси</translation>
-    </message>
-    <message>
-        <source>Open from the database…</source>
-        <translation>Открыть из базы…</translation>
-    </message>
-    <message>
-        <source>The programs and messages of a machine of the database; saving writes its next revision</source>
-        <translation>Программы и сообщения станка из базы; сохранение записывает его следующую ревизию</translation>
-    </message>
-    <message>
         <source>The machine %1 cannot be loaded: %2</source>
         <translation>Станок %1 не загружается: %2</translation>
     </message>
     <message>
-        <source>No file is open</source>
-        <translation>Нет открытого файла</translation>
-    </message>
-    <message>
-        <source>The workstation's machine (%1)</source>
-        <translation>Станок рабочего места (%1)</translation>
-    </message>
-    <message>
-        <source>The workstation's machine (none)</source>
-        <translation>Станок рабочего места (нет)</translation>
-    </message>
-    <message>
-        <source>None: the language only</source>
-        <translation>Нет: только язык</translation>
-    </message>
-    <message>
-        <source>Renumbered every program from %1 by %2</source>
-        <translation>Все программы перенумерованы с %1 с шагом %2</translation>
-    </message>
-    <message>
-        <source>Renumbered L%1 from %2 by %3</source>
-        <translation>L%1 перенумерована с %2 с шагом %3</translation>
-    </message>
-    <message>
-        <source>Copied L%1 to L%2</source>
-        <translation>L%1 скопирована в L%2</translation>
-    </message>
-    <message>
-        <source>Moved L%1 to L%2</source>
-        <translation>L%1 перенесена в L%2</translation>
-    </message>
-    <message>
-        <source>Formatted</source>
-        <translation>Отформатировано</translation>
-    </message>
-    <message>
-        <source>Renumber frames</source>
-        <translation>Перенумеровать кадры</translation>
-    </message>
-    <message>
-        <source>Every program</source>
-        <translation>Все программы</translation>
-    </message>
-    <message>
-        <source>First number</source>
-        <translation>Первый номер</translation>
-    </message>
-    <message>
-        <source>Step</source>
-        <translation>Шаг</translation>
-    </message>
-    <message>
-        <source>The file has no program</source>
-        <translation>В файле нет программ</translation>
-    </message>
-    <message>
-        <source>Move or copy a program</source>
-        <translation>Перенести или копировать программу</translation>
-    </message>
-    <message>
-        <source>Keep the program (copy)</source>
-        <translation>Сохранить программу (копия)</translation>
-    </message>
-    <message>
-        <source>New number</source>
-        <translation>Новый номер</translation>
-    </message>
-    <message>
         <source>%1 (database, revision %2)</source>
         <translation>%1 (база, ревизия %2)</translation>
-    </message>
-    <message>
-        <source>Listing of %1 pages written to %2</source>
-        <translation>Листинг на %1 листах записан в %2</translation>
-    </message>
-    <message>
-        <source>Export the listing</source>
-        <translation>Экспорт листинга</translation>
-    </message>
-    <message>
-        <source>PDF (*.pdf)</source>
-        <translation>PDF (*.pdf)</translation>
-    </message>
-    <message>
-        <source>Printed %1 pages</source>
-        <translation>Напечатано листов: %1</translation>
-    </message>
-    <message>
-        <source>The listing could not be printed</source>
-        <translation>Листинг не напечатан</translation>
     </message>
     <message>
         <source>Opened the programs of %1, revision %2</source>
@@ -3502,90 +3461,6 @@ Its comment stays: %3</source>
     <message>
         <source>The programs and messages of the controller shown as a new file</source>
         <translation>Программы и сообщения показываемого контроллера — новым файлом</translation>
-    </message>
-    <message>
-        <source>Setup sheet</source>
-        <translation>Карта наладки</translation>
-    </message>
-    <message>
-        <source>Print preview…</source>
-        <translation>Предварительный просмотр…</translation>
-    </message>
-    <message>
-        <source>The setup sheet of this file on its machine: the blank, the tools with their offsets, the programs with their cycle times, the R-parameters to preset</source>
-        <translation>Карта наладки этого файла на его станке: заготовка, инструмент с коррекциями, программы со временем цикла, предустановки R-параметров</translation>
-    </message>
-    <message>
-        <source>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</source>
-        <translation>Откройте файл программ в редакторе: карта наладки составляется для станка, к которому он привязан.</translation>
-    </message>
-    <message>
-        <source>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</source>
-        <translation>Файл не привязан к станку: выберите станок (меню «Редактор») для карты наладки.</translation>
-    </message>
-    <message>
-        <source>The file has errors (Problems): its setup sheet is made once they are fixed.</source>
-        <translation>В файле есть ошибки (список «Проблемы»): карта наладки составляется после их исправления.</translation>
-    </message>
-    <message>
-        <source>The setup sheet cannot be made: %1</source>
-        <translation>Карту наладки составить нельзя: %1</translation>
-    </message>
-    <message>
-        <source>Setup sheet written to %1</source>
-        <translation>Карта наладки записана в %1</translation>
-    </message>
-    <message>
-        <source>Cannot write %1: %2</source>
-        <translation>Не удаётся записать %1: %2</translation>
-    </message>
-    <message>
-        <source>Export the setup sheet</source>
-        <translation>Экспорт карты наладки</translation>
-    </message>
-    <message>
-        <source>Setup sheet: %1</source>
-        <translation>Карта наладки: %1</translation>
-    </message>
-    <message>
-        <source>Teach-in</source>
-        <translation>Обучение</translation>
-    </message>
-    <message>
-        <source>Insert the controller's position as a frame</source>
-        <translation>Вставить положение УЧПУ кадром</translation>
-    </message>
-    <message>
-        <source>The position the viewed controller's axes are at (current coordinates, as its panel shows them) as a frame after the cursor's line</source>
-        <translation>Положение осей показываемого УЧПУ (текущие координаты, как на его пульте) кадром после строки курсора</translation>
-    </message>
-    <message>
-        <source>Position into an R-parameter</source>
-        <translation>Положение в R-параметр</translation>
-    </message>
-    <message>
-        <source>Open a program file in the editor to teach a position into it</source>
-        <translation>Откройте файл программ в редакторе, чтобы записать в него положение</translation>
-    </message>
-    <message>
-        <source>No controller is viewed: no position to teach</source>
-        <translation>УЧПУ не показывается: положения для записи нет</translation>
-    </message>
-    <message>
-        <source>The viewed controller has no axes: no position to teach</source>
-        <translation>У показываемого УЧПУ нет осей: положения для записи нет</translation>
-    </message>
-    <message>
-        <source>Taught: %1</source>
-        <translation>Записано: %1</translation>
-    </message>
-    <message>
-        <source>The viewed controller has no axis %1</source>
-        <translation>У показываемого УЧПУ нет оси %1</translation>
-    </message>
-    <message>
-        <source>Taught: %1 (%2 mm)</source>
-        <translation>Записано: %1 (%2 мм)</translation>
     </message>
     <message>
         <source>Code</source>
@@ -4334,6 +4209,29 @@ Its comment stays: %3</source>
     <message>
         <source>%1, unit %2 (Modbus TCP)</source>
         <translation>%1, устройство %2 (Modbus TCP)</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::ListingActions</name>
+    <message>
+        <source>Listing of %1 pages written to %2</source>
+        <translation>Листинг на %1 листах записан в %2</translation>
+    </message>
+    <message>
+        <source>Export the listing</source>
+        <translation>Экспорт листинга</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Printed %1 pages</source>
+        <translation>Напечатано листов: %1</translation>
+    </message>
+    <message>
+        <source>The listing could not be printed</source>
+        <translation>Листинг не напечатан</translation>
     </message>
 </context>
 <context>
@@ -5494,6 +5392,65 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::RefactorActions</name>
+    <message>
+        <source>Renumbered every program from %1 by %2</source>
+        <translation>Все программы перенумерованы с %1 с шагом %2</translation>
+    </message>
+    <message>
+        <source>Renumbered L%1 from %2 by %3</source>
+        <translation>L%1 перенумерована с %2 с шагом %3</translation>
+    </message>
+    <message>
+        <source>Copied L%1 to L%2</source>
+        <translation>L%1 скопирована в L%2</translation>
+    </message>
+    <message>
+        <source>Moved L%1 to L%2</source>
+        <translation>L%1 перенесена в L%2</translation>
+    </message>
+    <message>
+        <source>Formatted</source>
+        <translation>Отформатировано</translation>
+    </message>
+    <message>
+        <source>Renumber frames</source>
+        <translation>Перенумеровать кадры</translation>
+    </message>
+    <message>
+        <source>Every program</source>
+        <translation>Все программы</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>First number</source>
+        <translation>Первый номер</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Шаг</translation>
+    </message>
+    <message>
+        <source>The file has no program</source>
+        <translation>В файле нет программ</translation>
+    </message>
+    <message>
+        <source>Move or copy a program</source>
+        <translation>Перенести или копировать программу</translation>
+    </message>
+    <message>
+        <source>Keep the program (copy)</source>
+        <translation>Сохранить программу (копия)</translation>
+    </message>
+    <message>
+        <source>New number</source>
+        <translation>Новый номер</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RevisionNotes</name>
     <message>
         <source>built-in profile %1 (first start)</source>
@@ -5681,6 +5638,49 @@ Its comment stays: %3</source>
     <message>
         <source>The link's map carries no DAC code: the simulated machine's only</source>
         <translation>Карта линии не содержит кода ЦАП: он есть только у моделируемого станка</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SetupSheetActions</name>
+    <message>
+        <source>Open a program file in the editor: its setup sheet is made on the machine it is checked for.</source>
+        <translation>Откройте файл программ в редакторе: карта наладки составляется для станка, к которому он привязан.</translation>
+    </message>
+    <message>
+        <source>The file is checked for no machine: choose one (Editor menu) for its setup sheet.</source>
+        <translation>Файл не привязан к станку: выберите станок (меню «Редактор») для карты наладки.</translation>
+    </message>
+    <message>
+        <source>The file has errors (Problems): its setup sheet is made once they are fixed.</source>
+        <translation>В файле есть ошибки (список «Проблемы»): карта наладки составляется после их исправления.</translation>
+    </message>
+    <message>
+        <source>The setup sheet cannot be made: %1</source>
+        <translation>Карту наладки составить нельзя: %1</translation>
+    </message>
+    <message>
+        <source>Setup sheet written to %1</source>
+        <translation>Карта наладки записана в %1</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Export the setup sheet</source>
+        <translation>Экспорт карты наладки</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Setup sheet</source>
+        <translation>Карта наладки</translation>
+    </message>
+    <message>
+        <source>Setup sheet: %1</source>
+        <translation>Карта наладки: %1</translation>
     </message>
 </context>
 <context>
@@ -5995,6 +5995,33 @@ Details: %3</source>
     <message>
         <source>simulated %1</source>
         <translation>имитация %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::TeachIn</name>
+    <message>
+        <source>Open a program file in the editor to teach a position into it</source>
+        <translation>Откройте файл программ в редакторе, чтобы записать в него положение</translation>
+    </message>
+    <message>
+        <source>No controller is viewed: no position to teach</source>
+        <translation>УЧПУ не показывается: положения для записи нет</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axes: no position to teach</source>
+        <translation>У показываемого УЧПУ нет осей: положения для записи нет</translation>
+    </message>
+    <message>
+        <source>Taught: %1</source>
+        <translation>Записано: %1</translation>
+    </message>
+    <message>
+        <source>The viewed controller has no axis %1</source>
+        <translation>У показываемого УЧПУ нет оси %1</translation>
+    </message>
+    <message>
+        <source>Taught: %1 (%2 mm)</source>
+        <translation>Записано: %1 (%2 мм)</translation>
     </message>
 </context>
 <context>

@@ -6,6 +6,8 @@
 #include "db/database.h"
 #include "editor/cycle_time_label.h"
 #include "editor/editor_tab.h"
+#include "editor/refactor_actions.h"
+#include "editor/listing_actions.h"
 #include "editor/listing.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
@@ -364,7 +366,7 @@ private slots:
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
         ed->setText("%L1\nN5 G1 X1 FX50\nN7 IF R1>0 GOTO 5\nL7\nM30\n\n%L7\nN1 G1 X2 FX50\nM17\n");
-        QVERIFY(tab.renumber(1, 10, 10));
+        QVERIFY(tab.refactor()->renumber(1, 10, 10));
         const QString renumbered = ed->text();
         QVERIFY2(renumbered.contains("N10 G1 X1 FX50"), qPrintable(renumbered));
         QVERIFY2(renumbered.contains("N20 IF R1>0 GOTO 10"), qPrintable(renumbered));
@@ -373,26 +375,26 @@ private slots:
         ed->undo();
         QCOMPARE(ed->text(), QString("%L1\nN5 G1 X1 FX50\nN7 IF R1>0 GOTO 5\nL7\nM30\n\n%L7\nN1 G1 X2 FX50\nM17\n"));
         // Move L7 to L8: the call follows.
-        QVERIFY(tab.moveProgram(7, 8, false));
+        QVERIFY(tab.refactor()->moveProgram(7, 8, false));
         QVERIFY2(ed->text().contains("%L8") && !ed->text().contains("%L7"), qPrintable(ed->text()));
         QVERIFY(ed->text().contains("\nL8\n"));
         // Copy L8 to L9: the call stays on L8.
-        QVERIFY(tab.moveProgram(8, 9, true));
+        QVERIFY(tab.refactor()->moveProgram(8, 9, true));
         QVERIFY(ed->text().contains("%L8") && ed->text().contains("%L9") && ed->text().contains("\nL8\n"));
         ed->validateNow();
         QVERIFY(ed->diagnostics().empty());
         // Onto an existing number: refused, nothing changed.
         const QString before = ed->text();
         QSignalSpy status(&tab, &EditorTab::statusMessage);
-        QVERIFY(!tab.moveProgram(8, 1, false));
+        QVERIFY(!tab.refactor()->moveProgram(8, 1, false));
         QCOMPARE(ed->text(), before);
         QVERIFY(!status.isEmpty());
         // Format: the canonical text of core's formatter; a syntax error refuses.
         ed->setText("%L1\nn5   g1 x1.500 fx50\nM30\n");
-        QVERIFY(tab.formatFile());
+        QVERIFY(tab.refactor()->formatFile());
         QCOMPARE(ed->text(), QString("%L1\nN5 G1 X1.5 FX50\nM30\n"));
         ed->setText("%L1\nN2 G1 X5..3\nM30\n");
-        QVERIFY(!tab.formatFile());
+        QVERIFY(!tab.refactor()->formatFile());
         QCOMPARE(ed->text(), QString("%L1\nN2 G1 X5..3\nM30\n"));
     }
 
@@ -422,7 +424,7 @@ private slots:
         // The PDF: as many page objects as pages painted, more than one here.
         QTemporaryDir dir;
         const QString path = dir.filePath("listing.pdf");
-        const int pages = tab.exportPdf(path);
+        const int pages = tab.listing()->exportPdf(path);
         QVERIFY(pages >= 2);
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -432,7 +434,7 @@ private slots:
                      pdf.count("/Type /Page>")),
                  pages);
         // A place that cannot be written: said, nothing painted.
-        QCOMPARE(tab.exportPdf(dir.filePath("no/such/dir/listing.pdf")), 0);
+        QCOMPARE(tab.listing()->exportPdf(dir.filePath("no/such/dir/listing.pdf")), 0);
     }
 
     void theMachineOfEachFile() {

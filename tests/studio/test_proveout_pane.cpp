@@ -4,6 +4,7 @@
 // nothing — after each edit on a worker; the machine's tools with their
 // offsets; the reasons when nothing can be proved.
 #include "editor/editor_tab.h"
+#include "editor/setup_sheet_actions.h"
 #include "editor/program_editor.h"
 #include "main_window.h"
 #include "profile/builtin.h"
@@ -301,7 +302,7 @@ private slots:
         QVERIFY(tab.editorMenu()->actions().contains(menu->menuAction()));
         QCOMPARE(menu->actions().size(), 2);
         const QString pdf = dir_.filePath("sheet.pdf");
-        QCOMPARE(tab.exportSetupSheet(pdf), QString());
+        QCOMPARE(tab.setupSheets()->exportPdf(pdf), QString());
         QProcess p;
         p.start("pdftotext", {"-layout", pdf, "-"});
         QVERIFY(p.waitForFinished(30000));
@@ -315,7 +316,7 @@ private slots:
 
         ed->setText("%L1\nN1 G0 X\n"); // errors: no sheet
         ed->validateNow();
-        QVERIFY(!tab.exportSetupSheet(dir_.filePath("bad.pdf")).isEmpty());
+        QVERIFY(!tab.setupSheets()->exportPdf(dir_.filePath("bad.pdf")).isEmpty());
         QVERIFY(!QFile::exists(dir_.filePath("bad.pdf")));
     }
 };

@@ -7,6 +7,7 @@
 #include "constants/machine_store.h"
 #include "controller/simulated_controller.h"
 #include "editor/editor_tab.h"
+#include "editor/teach_in.h"
 #include "editor/program_editor.h"
 #include "editing/teach.h"
 #include "program/diagnostic.h"
@@ -134,7 +135,7 @@ private slots:
         const auto& axes = sim.seam.current().state().axes;
         const double x = units::discToMm(axes[0].currentDisc, axes[0].scale);
         QString taught;
-        QVERIFY(tab.teachPosition(&taught));
+        QVERIFY(tab.teachIn()->teachPosition(&taught));
         QVERIFY2(taught.startsWith("N6 X"), qPrintable(taught));
         QVERIFY(taught.contains(QString::fromStdString(editing::teachFrame(0, x, std::nullopt)).mid(1)));
         QCOMPARE(ed->text(2).trimmed(), taught);
@@ -142,10 +143,10 @@ private slots:
         QVERIFY(!program::hasErrors(ed->diagnostics()));
         // Into R220 (MX: the machine coordinate of X): a new frame, then the
         // same line again when the cursor is on it.
-        QVERIFY(tab.teachIntoR(220, &taught));
+        QVERIFY(tab.teachIn()->teachIntoR(220, &taught));
         QCOMPARE(taught, QStringLiteral("N7 R220=%1").arg(axes[0].machineDisc));
         const int lines = ed->lines();
-        QVERIFY(tab.teachIntoR(220, &taught));
+        QVERIFY(tab.teachIn()->teachIntoR(220, &taught));
         QCOMPARE(ed->lines(), lines); // replaced, not added
         QCOMPARE(taught, QStringLiteral("N7 R220=%1").arg(axes[0].machineDisc));
         auto* menu = tab.findChild<QMenu*>("menu.editor.teachR");

@@ -21,6 +21,8 @@
 #include "database/database_ui.h"
 #include "session/shop_database.h"
 #include "editor/editor_tab.h"
+#include "editor/refactor_actions.h"
+#include "editor/listing_actions.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
 #include "history/history_dock.h"
@@ -565,9 +567,9 @@ private:
         walkOpened(walker, "File > Machine: one that cannot be loaded", [&] { w.switchMachine("no-such-machine"); });
         walkOpened(walker, "Editor > Open", [&] { editor->openDialog(); });
         walkOpened(walker, "Editor > Save as", [&] { editor->saveAs(); });
-        walkOpened(walker, "Editor > Renumber", [&] { editor->renumberDialog(); });
-        walkOpened(walker, "Editor > Move a program", [&] { editor->moveProgramDialog(); });
-        walkOpened(walker, "Editor > PDF", [&] { editor->exportPdfDialog(); });
+        walkOpened(walker, "Editor > Renumber", [&] { editor->refactor()->renumberDialog(); });
+        walkOpened(walker, "Editor > Move a program", [&] { editor->refactor()->moveProgramDialog(); });
+        walkOpened(walker, "Editor > PDF", [&] { editor->listing()->exportPdfDialog(); });
         walkOpened(walker, "Editor > Open from the database", [&] { editor->openDatabaseDialog(); });
         walkOpened(walker, "Editor: the context menu", [&] {
             QWidget* v = editor->currentEditor()->viewport();

@@ -1,7 +1,16 @@
 #include "editor/editor_tab.h"
 #include "editor/cycle_time_label.h"
 
+#include "editor/database_programs.h"
 #include "editor/debug_panel.h"
+#include "editor/editor_menu.h"
+#include "editor/listing_actions.h"
+#include "editor/refactor_actions.h"
+#include "editor/setup_sheet_actions.h"
+#include "editor/teach_in.h"
+#include "engine/self_test.h"
+#include "session/core_texts.h"
+#include "session/machine_source.h"
 #include "editor/frame_master.h"
 #include "editor/problems_model.h"
 #include "proveout/proveout.h"
@@ -23,6 +32,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -46,6 +56,9 @@ namespace k528::studio {
 
 namespace {
 constexpr const char* kPathProperty = "k528.path";
+constexpr const char* kMachineProperty = "k528.machine"; // the file's machine choice
+constexpr const char* kDbMachineProperty = "k528.dbMachine";
+constexpr const char* kDbRevisionProperty = "k528.dbRevision";
 constexpr const char* kUntitledProperty = "k528.untitled";
 constexpr const char* kSampleProperty = "k528.sample"; // a shipped sample's name, until saved as a file
 constexpr int kRecentMax = 8;
@@ -142,7 +155,16 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
     cycle_ = new CycleTimeLabel(this);
     status->addWidget(cycle_, 2);
     layout->addLayout(status);
-    createTools();
+    refactor_ = new RefactorActions(*this);
+    listing_ = new ListingActions(*this);
+    setupSheets_ = new SetupSheetActions(*this);
+    teachIn_ = new TeachIn(*this, viewed_);
+    connect(refactor_, &RefactorActions::statusMessage, this, &EditorTab::statusMessage);
+    connect(listing_, &ListingActions::statusMessage, this, &EditorTab::statusMessage);
+    connect(setupSheets_, &SetupSheetActions::statusMessage, this, &EditorTab::statusMessage);
+    connect(teachIn_, &TeachIn::statusMessage, this, &EditorTab::statusMessage);
+    menu_ = new EditorMenu(*this, toolbar_, viewed_);
+    connect(tabs_, &QTabWidget::currentChanged, menu_, &EditorMenu::retranslate);
 
     connect(tabs_, &QTabWidget::tabCloseRequested, this, [this](int i) { closeDocument(i); });
     connect(tabs_, &QTabWidget::currentChanged, this, [this] {
@@ -208,6 +230,8 @@ bool EditorTab::eventFilter(QObject* watched, QEvent* e) {
 ProgramEditor* EditorTab::currentEditor() const { return qobject_cast<ProgramEditor*>(tabs_->currentWidget()); }
 int EditorTab::documentCount() const { return tabs_->count(); }
 ProgramEditor* EditorTab::editorAt(int index) const { return qobject_cast<ProgramEditor*>(tabs_->widget(index)); }
+int EditorTab::currentIndex() const { return tabs_ ? tabs_->currentIndex() : -1; }
+QMenu* EditorTab::editorMenu() const { return menu_->menu(); }
 QString EditorTab::pathOf(int index) const {
     QWidget* w = tabs_->widget(index);
     return w ? w->property(kPathProperty).toString() : QString();
@@ -740,9 +764,152 @@ void EditorTab::retranslate() {
     outline_->setHeaderLabels({tr("Programs")});
     problemsModel_->setTexts({tr("Severity"), tr("Program"), tr("Line"), tr("Code"), tr("Message")}, tr("error"),
                              tr("warning"));
-    retranslateTools();
+    menu_->retranslate();
     refreshTitles();
     refreshProblems();
+}
+
+QString EditorTab::documentName(int index) const {
+    ProgramEditor* ed = editorAt(index);
+    if (!ed)
+        return {};
+    const QString db = databaseMachine(index);
+    if (!db.isEmpty())
+        return tr("%1 (database, revision %2)").arg(db).arg(databaseRevision(index));
+    const QString p = pathOf(index);
+    if (p.isEmpty() && !ed->property(kSampleProperty).toString().isEmpty())
+        return tr("%1 (sample)").arg(ed->property(kSampleProperty).toString());
+    return p.isEmpty() ? tr("untitled %1").arg(ed->property(kUntitledProperty).toInt()) : QFileInfo(p).fileName();
+}
+
+// --- The machine of each file ------------------------------------------------------
+
+void EditorTab::applyMachine(ProgramEditor* ed) {
+    const QString choice = ed->property(kMachineProperty).toString();
+    if (!checkMachine_ || choice == kNoMachine) {
+        ed->setMachine(std::nullopt);
+    } else if (choice.isEmpty()) {
+        if (viewed_) // the controller shown: its constants and the programs it holds
+            ed->setMachine(viewed_->current().profile(), viewed_->current().programs());
+        else
+            ed->setMachine(std::nullopt);
+    } else {
+        try {
+            const MachineChoice c = loadMachine(choice);
+            bool intact = true;
+            program::ProgramStore programs = engine::loadStore(c.profile, intact);
+            ed->setMachine(c.profile, std::move(programs));
+        } catch (const std::exception& e) {
+            emit statusMessage(tr("The machine %1 cannot be loaded: %2").arg(choice, coreErrorText(e)));
+            ed->setMachine(std::nullopt);
+        }
+    }
+    if (menu_ && ed == currentEditor())
+        menu_->retranslate();
+}
+
+void EditorTab::reapplyWorkstationMachine() {
+    // Another controller shown: the files checked for "the workstation's
+    // machine" are checked for it now.
+    for (int i = 0; i < documentCount(); ++i)
+        if (ProgramEditor* ed = editorAt(i); ed && ed->property(kMachineProperty).toString().isEmpty()) {
+            applyMachine(ed);
+            ed->validateNow();
+        }
+}
+
+bool EditorTab::setFileMachine(int index, const QString& choice) {
+    ProgramEditor* ed = editorAt(index);
+    if (!ed)
+        return false;
+    ed->setProperty(kMachineProperty, choice);
+    applyMachine(ed);
+    const bool ok = choice.isEmpty() || choice == kNoMachine || ed->hasMachine();
+    ed->validateNow();
+    return ok;
+}
+
+QString EditorTab::fileMachine(int index) const {
+    ProgramEditor* ed = editorAt(index);
+    return ed ? ed->property(kMachineProperty).toString() : QString();
+}
+
+QString EditorTab::checkedMachineName(int index) const {
+    ProgramEditor* ed = editorAt(index);
+    if (!ed || !ed->machine())
+        return {};
+    return QString::fromStdString(ed->machine()->name);
+}
+
+// --- Database machines ---------------------------------------------------------------
+
+QString EditorTab::databaseMachine(int index) const {
+    ProgramEditor* ed = editorAt(index);
+    return ed ? ed->property(kDbMachineProperty).toString() : QString();
+}
+
+int EditorTab::databaseRevision(int index) const {
+    ProgramEditor* ed = editorAt(index);
+    return ed ? ed->property(kDbRevisionProperty).toInt() : 0;
+}
+
+bool EditorTab::openFromDatabase(const QString& machine) {
+    for (int i = 0; i < tabs_->count(); ++i)
+        if (databaseMachine(i) == machine) {
+            tabs_->setCurrentIndex(i);
+            return true;
+        }
+    const DatabasePrograms r = loadDatabasePrograms(machine);
+    if (!r.ok) {
+        emit statusMessage(r.error);
+        return false;
+    }
+    const int i = addDocument(QString(), r.text);
+    ProgramEditor* ed = editorAt(i);
+    ed->setProperty(kDbMachineProperty, machine);
+    ed->setProperty(kDbRevisionProperty, r.revision);
+    ed->setProperty(kMachineProperty, machine); // checked for the machine it belongs to
+    applyMachine(ed);
+    ed->validateNow();
+    refreshTitles();
+    releases_->setMachine(databaseMachine(tabs_->currentIndex()));
+    emit statusMessage(tr("Opened the programs of %1, revision %2").arg(machine).arg(r.revision));
+    return true;
+}
+
+void EditorTab::openDatabaseDialog() {
+    QString error;
+    const QStringList machines = databaseMachines(&error);
+    if (machines.isEmpty()) {
+        emit statusMessage(error.isEmpty() ? tr("The database has no machines") : error);
+        return;
+    }
+    bool ok = false;
+    const QString m = QInputDialog::getItem(this, tr("Open from the database"), tr("Machine"), machines, 0, false, &ok);
+    if (ok && !m.isEmpty())
+        openFromDatabase(m);
+}
+
+bool EditorTab::saveToDatabase(int index) {
+    ProgramEditor* ed = editorAt(index);
+    const QString machine = databaseMachine(index);
+    if (!ed || machine.isEmpty())
+        return false;
+    const DatabaseSave s = saveDatabasePrograms(machine, ed->text(), databaseRevision(index));
+    if (s.revision == 0) {
+        emit statusMessage(s.error);
+        return false;
+    }
+    ed->setProperty(kDbRevisionProperty, s.revision);
+    ed->setModified(false);
+    refreshTitles();
+    if (releases_->machine() == machine)
+        releases_->refresh(); // a changed program is a draft again
+    emit statusMessage(s.changed ? tr("%1 saved as revision %2").arg(machine).arg(s.revision)
+                                 : tr("%1: the database already holds these programs (revision %2)")
+                                       .arg(machine)
+                                       .arg(s.revision));
+    return true;
 }
 
 } // namespace k528::studio

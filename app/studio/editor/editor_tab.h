@@ -6,12 +6,14 @@
 // machine the file is checked for, and «send to the controller» / «open from
 // the controller» on the controller the window shows (controller/controller.h:
 // the simulated one, or a real one on the link), a send after the same
-// preview of what changes as the Controller dock's push. The tools of
-// editor_tab_tools.cpp: renumber / move / copy a program and format the file
-// (text_refactor.h), print and PDF listings (listing.h), the machine each
+// preview of what changes as the Controller dock's push; the machine each
 // file is checked for, and the programs of a database machine opened and
 // saved as its next revision (database_programs.h), with their release
-// states beside them (program_releases.h).
+// states beside them (program_releases.h). Its tools are classes of their
+// own over the current document, in the Editor menu (editor_menu.h):
+// RefactorActions (renumber / move / copy a program, format the file),
+// ListingActions (print and PDF listings), SetupSheetActions (the setup
+// sheet) and TeachIn (the controller's position into the text).
 #pragma once
 
 #include <QFileSystemWatcher>
@@ -28,7 +30,6 @@ class QMenu;
 class QDialog;
 
 namespace k528::proveout {
-struct SetupSheet;
 struct Finding;
 }
 
@@ -36,6 +37,11 @@ namespace k528::studio {
 
 class CycleTimeLabel;
 class DebugPanel;
+class EditorMenu;
+class ListingActions;
+class RefactorActions;
+class SetupSheetActions;
+class TeachIn;
 class ProgramEditor;
 class ProgramReleases;
 class ViewedController;
@@ -53,7 +59,12 @@ public:
     ProgramEditor* currentEditor() const;
     int documentCount() const;
     ProgramEditor* editorAt(int index) const;
+    // The index of the document shown (-1: none).
+    int currentIndex() const;
     QString pathOf(int index) const;
+    // The name of document `index` as its tab shows it (without « *»): the
+    // file's, the sample's, «untitled N» or the database machine's and revision.
+    QString documentName(int index) const;
     // The Problems list: a view over ProblemsModel (problems_model.h).
     QTreeView* problems() const { return problems_; }
     QTreeWidget* outline() const { return outline_; }
@@ -94,8 +105,16 @@ public:
     QString fileMachine(int index) const;
     // The name of the machine the document is checked for now ("" = none).
     QString checkedMachineName(int index) const;
-    // The Editor menu (refactoring, listing, database, machine) for the menu bar.
-    QMenu* editorMenu() const { return editorMenu_; }
+    // The Editor menu (refactoring, listing, setup sheet, teach-in, database,
+    // machine) for the menu bar.
+    QMenu* editorMenu() const;
+    // The tools over the current document.
+    RefactorActions* refactor() const { return refactor_; }
+    ListingActions* listing() const { return listing_; }
+    SetupSheetActions* setupSheets() const { return setupSheets_; }
+    TeachIn* teachIn() const { return teachIn_; }
+    // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
+    static QString commentsOfLine(const QString& line);
     // The database machine of document `index` ("" = a file) and its revision.
     QString databaseMachine(int index) const;
     int databaseRevision(int index) const;
@@ -148,32 +167,6 @@ public slots:
     // (the current one first) that holds program `program` there; false if none.
     bool showLine(int program, int line);
 
-    // Refactoring of the current file (one undo step each; false and a
-    // status message why not). program 0 = every program.
-    bool renumber(int program, int start, int step);
-    bool moveProgram(int from, int to, bool copy);
-    bool formatFile();
-    void renumberDialog();
-    void moveProgramDialog();
-    // The listing of the current file: PDF (returns the pages, 0 = failed), print.
-    int exportPdf(const QString& path);
-    void exportPdfDialog();
-    void printDialog();
-    // The setup sheet (карта наладки) of the current file on the machine it
-    // is checked for: its content (core's, with the cycle times), PDF
-    // (returns "" when written, else why not), print preview and print.
-    bool setupSheet(proveout::SetupSheet& sheet, QString& why);
-    QString exportSetupSheet(const QString& path);
-    void exportSetupSheetDialog();
-    void previewSetupSheet();
-    // Teach-in (NC-200 §20): the viewed controller's position (its current
-    // coordinates as the panel shows them) as a frame after the cursor's
-    // line, numbered after it; or into a preset R-parameter whose hint
-    // names that coordinate (editing/teach.h), replacing the cursor's line
-    // when it sets that R. False (and a status message) when no controller
-    // or no axis. The text inserted is returned through `taught`.
-    bool teachPosition(QString* taught = nullptr);
-    bool teachIntoR(int r, QString* taught = nullptr);
     // The programs and messages of a database machine as a document; saving
     // it writes the machine's next revision.
     bool openFromDatabase(const QString& machine);
@@ -207,16 +200,8 @@ private:
     void addRecent(const QString& path);
     void fillRecentMenu();
     void retranslate();
-    // editor_tab_tools.cpp
-    void createTools();
-    void retranslateTools();
     void applyMachine(ProgramEditor* ed);
     void reapplyWorkstationMachine();
-    void fillFileMachineMenu();
-    void replaceText(ProgramEditor* ed, const QString& text);
-    QString documentName(int index) const;
-    // The comments of a frame's line as written ("(…)" then "; …"), "" if none.
-    static QString commentsOfLine(const QString& line);
 
     void send(const QString& text, const QString& name);
     ViewedController* viewed_ = nullptr;
@@ -237,17 +222,11 @@ private:
     int untitled_ = 0;
     std::function<CloseChoice(const QString&)> ask_;
     std::function<bool(const QString&)> askReload_;
-    QMenu *editorMenu_ = nullptr, *refactorMenu_ = nullptr, *listingMenu_ = nullptr, *fileMachineMenu_ = nullptr,
-          *sheetMenu_ = nullptr;
-    QAction *sheetPreviewAction_ = nullptr, *sheetPdfAction_ = nullptr;
-    QMenu *teachMenu_ = nullptr, *teachRMenu_ = nullptr;
-    QAction* teachFrameAction_ = nullptr;
-    void fillTeachRMenu();
-    bool insertTaught(const QString& text, bool replaceLine);
-    int frameNumberAtCursor() const;
-    QAction *renumberAction_ = nullptr, *moveAction_ = nullptr, *formatAction_ = nullptr, *printAction_ = nullptr,
-            *pdfAction_ = nullptr, *openDbAction_ = nullptr, *fileMachineAction_ = nullptr,
-            *refactorAction_ = nullptr, *listingAction_ = nullptr;
+    RefactorActions* refactor_ = nullptr;
+    ListingActions* listing_ = nullptr;
+    SetupSheetActions* setupSheets_ = nullptr;
+    TeachIn* teachIn_ = nullptr;
+    EditorMenu* menu_ = nullptr;
     QAction *newAction_ = nullptr, *openAction_ = nullptr, *saveAction_ = nullptr, *saveAsAction_ = nullptr,
             *sendAction_ = nullptr, *masterAction_ = nullptr, *machineAction_ = nullptr, *recentAction_ = nullptr,
             *openControllerAction_ = nullptr;
