@@ -4,7 +4,8 @@
 usage: scripts/ts_apply.py [--source-language] translations/k528studio_ru.ts < pairs.tsv
 
 Each input line is "source<TAB>translation" (\\n for a line break, \\\\ for
-a backslash). Every
+a backslash, \\# for a "#" that starts a source: a line starting with "#" is a
+comment). Every
 message of the .ts file whose source matches gets the translation and loses
 its "unfinished" mark. Prints the sources still untranslated. Run the
 update_translations target first so the .ts file lists the current sources.
@@ -19,7 +20,7 @@ import xml.etree.ElementTree as ET
 
 
 def unescape(field: str) -> str:
-    return re.sub(r"\\\\|\\n", lambda m: "\\" if m.group(0) == "\\\\" else "\n", field)
+    return re.sub(r"\\\\|\\n|\\#", lambda m: {"\\\\": "\\", "\\n": "\n", "\\#": "#"}[m.group(0)], field)
 
 
 def main() -> int:
