@@ -8,15 +8,20 @@
 
 namespace testutil {
 
-// The file `name` in `dir` holding `text` (UTF-8): its path, empty when it
-// cannot be written.
-inline QString writeFile(const QTemporaryDir& dir, const QString& name, const QString& text) {
+// The file `name` in `dir` holding `bytes` as they are: its path, empty
+// when it cannot be written.
+inline QString writeBytes(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes) {
     const QString path = dir.filePath(name);
     QFile f(path);
-    const QByteArray bytes = text.toUtf8();
     if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(bytes) != bytes.size())
         return {};
     return path;
+}
+
+// The file `name` in `dir` holding `text` (UTF-8): its path, empty when it
+// cannot be written.
+inline QString writeFile(const QTemporaryDir& dir, const QString& name, const QString& text) {
+    return writeBytes(dir, name, text.toUtf8());
 }
 
 // The text of a file (UTF-8), empty when it cannot be read.

@@ -111,7 +111,7 @@ SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& 
         } else {
             s.writeItem(id, !row, neu, c);
         }
-        s.insertChange(id, revision, seq++, recorded);
+        s.insertChange(id, revision, seq++, author, at, recorded);
         if (o.progress)
             o.progress(static_cast<std::size_t>(seq), result.changes.size());
     }

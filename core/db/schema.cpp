@@ -356,6 +356,25 @@ constexpr std::string_view kSchemaV6Postgres = R"SQL(
 CREATE INDEX revisions_authors ON revisions (machine_id, revision) INCLUDE (author, at);
 )SQL";
 
+// Version 7: each recorded change carries its revision's author and time
+// (written in the same transaction as the revision, from the same values),
+// so the history of one item is one range of changes_history and its table
+// rows, no join with the revisions. The rows of version 6 take them from
+// their revisions; the empty default only stands until that UPDATE. On
+// PostgreSQL the revisions' authors index of version 6 served only that
+// join: dropped. docs/database.md: Speed.
+constexpr std::string_view kSchemaV7 = R"SQL(
+ALTER TABLE changes ADD COLUMN author TEXT NOT NULL DEFAULT '';
+ALTER TABLE changes ADD COLUMN at TEXT NOT NULL DEFAULT '';
+UPDATE changes SET (author, at) = (SELECT r.author, r.at FROM revisions r
+                                    WHERE r.machine_id = changes.machine_id
+                                      AND r.revision = changes.revision);
+)SQL";
+
+constexpr std::string_view kSchemaV7Postgres = R"SQL(
+DROP INDEX revisions_authors;
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
@@ -368,6 +387,8 @@ const Migration kMigrations[] = {
     {4, "the training course's graded attempts", kSchemaV4, {}, kSchemaV4Postgres},
     {5, "the shop's time in each state per machine and day", kSchemaV5},
     {6, "the history of one item read along one index", kSchemaV6, {}, kSchemaV6Postgres},
+    {7, "each change keeps its revision's author and time: the history without a join",
+     kSchemaV7, {}, kSchemaV7Postgres},
 };
 
 bool wordAt(std::string_view s, std::size_t i, std::string_view word) {

@@ -23,9 +23,14 @@ void SqlStore::insertProgramVersion(std::int64_t id, const ProgramRow& v) {
     connection().runLater(q);
 }
 
-void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) {
-    auto& q = query("INSERT INTO changes (machine_id, revision, seq, section, key, label, before, "
-                  "after) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+void SqlStore::insertChange(std::int64_t id, int revision, int seq, const std::string& author,
+                            const std::string& at, const profile::Change& c) {
+    auto& q = changesKeepAuthors()
+                  ? query("INSERT INTO changes (machine_id, revision, seq, section, key, label, "
+                          "before, after, author, at) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, "
+                          "?10)")
+                  : query("INSERT INTO changes (machine_id, revision, seq, section, key, label, "
+                          "before, after) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
     q.bind(1, id)
         .bind(2, revision)
         .bind(3, seq)
@@ -34,6 +39,8 @@ void SqlStore::insertChange(std::int64_t id, int revision, int seq, const profil
         .bind(6, c.label)
         .bind(7, c.before)
         .bind(8, c.after);
+    if (changesKeepAuthors())
+        q.bind(9, author).bind(10, at);
     connection().runLater(q);
 }
 
@@ -88,35 +95,39 @@ std::vector<RevisionInfo> SqlStore::revisions(std::int64_t id) {
 
 namespace {
 
-// The changes with their revisions' author and time; the machine by its id
-// (?1, from revision ?2 on) or by its name (?1, of its last ?2 revisions).
-// Two texts each rather than "(?3 IS NULL OR c.key = ?3)": each backend
-// then plans one of them with the index on (machine, key, revision DESC, seq).
+// The changes with their revisions' author and time (schema version 7: kept
+// in each change); the machine by its id (?1, from revision ?2 on) or by its
+// name (?1, of its last ?2 revisions). Two texts each rather than "(?3 IS
+// NULL OR c.key = ?3)": each backend then plans one of them with the index
+// on (machine, key, revision DESC, seq) — one range of it, in the history's
+// order, no join and no sort.
 constexpr std::string_view kHistorySelect =
-    "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
-    "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision ";
+    "SELECT c.revision, c.author, c.at, c.section, c.key, c.label, c.before, c.after FROM "
+    "changes c ";
 constexpr std::string_view kById = "WHERE c.machine_id = ?1 AND c.revision >= ?2";
 constexpr std::string_view kOfKey = " AND c.key = ?3";
 constexpr std::string_view kOrder = " ORDER BY c.revision DESC, c.seq";
 
-std::string historyText(bool ofKey) {
-    return std::string(kHistorySelect) + std::string(kById) +
+// Before version 7 (an older database read as it is), from the revisions.
+constexpr std::string_view kHistorySelectJoined =
+    "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
+    "changes c JOIN revisions r ON r.machine_id = c.machine_id AND r.revision = c.revision ";
+
+std::string historyText(bool ofKey, bool joined) {
+    return std::string(joined ? kHistorySelectJoined : kHistorySelect) + std::string(kById) +
            (ofKey ? std::string(kOfKey) : std::string()) + std::string(kOrder);
 }
 
 // By the machine's name (?1), its last ?2 revisions: one statement (one
 // snapshot, no transaction needed); no rows when there is no such machine or
-// it has no such changes. The revisions are bounded by the machine's id and
-// revision range as the changes are, so the server merges the two index
-// scans (changes_history, revisions_authors) in revision order instead of
-// probing the revisions' index once a change.
+// it has no such changes. The machine's id and revision as two subqueries
+// of its unique name (each run once, before the changes are read) rather
+// than a join: the server then knows the one machine and reads the range of
+// changes_history in the history's order, without a sort.
 std::string historyByNameText(bool ofKey) {
-    return "WITH m AS (SELECT id, revision FROM machines WHERE name = ?1) "
-           "SELECT c.revision, r.author, r.at, c.section, c.key, c.label, c.before, c.after FROM "
-           "changes c JOIN revisions r ON r.revision = c.revision "
-           "WHERE c.machine_id = (SELECT id FROM m) AND r.machine_id = (SELECT id FROM m) "
-           "AND c.revision > (SELECT revision FROM m) - ?2 "
-           "AND r.revision > (SELECT revision FROM m) - ?2" +
+    return std::string(kHistorySelect) +
+           "WHERE c.machine_id = (SELECT id FROM machines WHERE name = ?1) "
+           "AND c.revision > (SELECT revision FROM machines WHERE name = ?1) - ?2" +
            (ofKey ? std::string(kOfKey) : std::string()) + std::string(kOrder);
 }
 
@@ -133,9 +144,11 @@ std::vector<ChangeRow> historyRows(sql::Query& q) {
 
 std::vector<ChangeRow> SqlStore::history(std::int64_t id, int fromRevision,
                                          const std::optional<std::string>& key) {
-    static const std::string kAll = historyText(false);
-    static const std::string kKey = historyText(true);
-    auto& q = query(key ? kKey : kAll);
+    static const std::string kAll = historyText(false, false);
+    static const std::string kKey = historyText(true, false);
+    static const std::string kAllJoined = historyText(false, true);
+    static const std::string kKeyJoined = historyText(true, true);
+    auto& q = changesKeepAuthors() ? query(key ? kKey : kAll) : query(key ? kKeyJoined : kAllJoined);
     q.bind(1, id).bind(2, fromRevision);
     if (key)
         q.bind(3, *key);
@@ -145,7 +158,8 @@ std::vector<ChangeRow> SqlStore::history(std::int64_t id, int fromRevision,
 std::optional<std::vector<ChangeRow>> SqlStore::historyNamed(std::string_view name,
                                                              int limitRevisions,
                                                              const std::optional<std::string>& key) {
-    if (connection().dialect() == sql::Dialect::Sqlite) { // no round trips to save
+    if (connection().dialect() == sql::Dialect::Sqlite || // no round trips to save
+        !changesKeepAuthors()) {                            // or an older database
         ReadSnapshot tx(*this);                            // two statements, one snapshot
         const auto row = findMachine(name);
         if (!row)
@@ -202,6 +216,19 @@ std::string SqlStore::checkRows() {
                 add("machine " + q.text(0) + " program L" + std::to_string(q.i32(1)) +
                     " of revision " + std::to_string(q.i32(2)) +
                     " does not match its SHA-256 checksum");
+    }
+    if (changesKeepAuthors()) {
+        // Each change carries its revision's author and time (copies made in
+        // the revision's transaction): SQL that changed one and not the other
+        // would show a history that is not the revisions'.
+        auto& q = query("SELECT m.name, c.revision, count(*) FROM changes c JOIN revisions r ON "
+                        "r.machine_id = c.machine_id AND r.revision = c.revision JOIN machines m "
+                        "ON m.id = c.machine_id WHERE c.author <> r.author OR c.at <> r.at "
+                        "GROUP BY m.name, c.revision ORDER BY m.name, c.revision");
+        while (q.step())
+            add("machine " + q.text(0) + " revision " + std::to_string(q.i32(1)) + ": " +
+                std::to_string(q.i64(2)) +
+                " of its changes do not name the revision's author and time");
     }
     auto& r = query("SELECT m.name, m.revision, (SELECT max(r.revision) FROM revisions r WHERE "
                     "r.machine_id = m.id), (SELECT count(*) FROM revisions r WHERE r.machine_id = "

@@ -70,6 +70,7 @@ void SqlStore::upgrade(std::span<const Migration> migrations, std::int64_t found
     if (found < latest) {
         migrate(migrations, found);
         stampSchema(latest);
+        report_.version = latest; // the rows written from here on are the new schema's
         if (found == 0) {
             auto& meta = query("INSERT INTO meta (key, value) VALUES (?1, ?2)");
             meta.bind(1, "created_at").bind(2, now());

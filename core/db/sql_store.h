@@ -45,7 +45,8 @@ public:
                         const std::string& at, const std::string& summary,
                         const std::string& settingsOrder) override;
     void insertProgramVersion(std::int64_t id, const ProgramRow& version) override;
-    void insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) override;
+    void insertChange(std::int64_t id, int revision, int seq, const std::string& author,
+                      const std::string& at, const profile::Change& c) override;
     std::vector<ChangeRow> changesUpTo(std::int64_t id, int revision) override;
     std::optional<std::string> settingsOrder(std::int64_t id, int revision) override;
     std::vector<ProgramRow> programsAt(std::int64_t id, int revision) override;
@@ -69,6 +70,10 @@ protected:
     profile::MachineProfile readCurrent(const MachineRow& row,
                                         std::span<sql::Query* const> queries);
     std::string now() const { return formatTimestamp(clock_()); }
+    // Whether the recorded changes carry their revision's author and time
+    // (schema version 7); an older database read as it is (read-only, or
+    // opened with the older migrations) has them in its revisions only.
+    bool changesKeepAuthors() const { return report_.version >= 7; }
     // "machine NAME in PATH", for messages about stored rows.
     std::string where(const MachineRow& row) const;
     // Runs the schema's steps above `from` up to the last of `migrations`

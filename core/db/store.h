@@ -117,7 +117,9 @@ public:
                                 const std::string& at, const std::string& summary,
                                 const std::string& settingsOrder) = 0;
     virtual void insertProgramVersion(std::int64_t id, const ProgramRow& version) = 0;
-    virtual void insertChange(std::int64_t id, int revision, int seq, const profile::Change& c) = 0;
+    // A change of revision `revision`, with that revision's author and time.
+    virtual void insertChange(std::int64_t id, int revision, int seq, const std::string& author,
+                              const std::string& at, const profile::Change& c) = 0;
     // Every change but the programs' up to `revision`, in order.
     virtual std::vector<ChangeRow> changesUpTo(std::int64_t id, int revision) = 0;
     // The simulation keys' order at `revision` ("\n" between keys).

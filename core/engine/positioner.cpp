@@ -10,6 +10,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -49,6 +50,16 @@ std::string num(std::int64_t v) {
 
 int channelIndex(std::int64_t code) {
     return code >= 1 && code <= 4 ? static_cast<int>(code - 1) : -1;
+}
+
+// УПРАВЛЕНИЕ ДАННЫМИ clears a memory area (C, R, the programs) only in that
+// mode and with no program active: the refusal, or none.
+std::optional<OpResult> memoryClearRefused(Mode mode, ProgramState state) {
+    if (mode != Mode::DataControl)
+        return OpResult::refused(Refusal::WrongMode, "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+    if (programActive(state))
+        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    return std::nullopt;
 }
 
 } // namespace
@@ -1206,11 +1217,8 @@ OpResult Positioner::loadCParameters(std::span<const std::int64_t> c) {
 
 OpResult Positioner::clearCParameters() {
     wake();
-    if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode,
-                                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
-    if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    if (std::optional<OpResult> refused = memoryClearRefused(c_.mode, c_.state))
+        return *refused;
     c_.c.fill(0);
     c_.profile.c.fill(0);
     c_.applyConstants();
@@ -1220,11 +1228,8 @@ OpResult Positioner::clearCParameters() {
 
 OpResult Positioner::clearRParameters() {
     wake();
-    if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode,
-                                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
-    if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    if (std::optional<OpResult> refused = memoryClearRefused(c_.mode, c_.state))
+        return *refused;
     c_.r.clear();
     refreshR();
     return OpResult::accepted();
@@ -1232,11 +1237,8 @@ OpResult Positioner::clearRParameters() {
 
 OpResult Positioner::clearPrograms() {
     wake();
-    if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode,
-                                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
-    if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+    if (std::optional<OpResult> refused = memoryClearRefused(c_.mode, c_.state))
+        return *refused;
     c_.store = program::ProgramStore{};
     storeCorrupt_ = false;
     ++programsRevision_;

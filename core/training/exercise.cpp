@@ -368,17 +368,21 @@ std::string idOk(std::string_view id, const std::string& source) {
     return std::string(id);
 }
 
-} // namespace
-
-Exercise readExercise(std::string_view text, std::string_view id, std::string_view sourceView) {
-    const std::string source(sourceView);
-    Json root;
+// The JSON of an exercise or a course file; a syntax error names the file's line and column.
+Json parseDocument(std::string_view text, const std::string& source) {
     try {
-        root = json::parse(text);
+        return json::parse(text);
     } catch (const json::ParseError& e) {
         throw ExerciseError(source + ":" + std::to_string(e.line) + ":" + std::to_string(e.column),
                             e.what());
     }
+}
+
+} // namespace
+
+Exercise readExercise(std::string_view text, std::string_view id, std::string_view sourceView) {
+    const std::string source(sourceView);
+    const Json root = parseDocument(text, source);
     const Node n(root, "", source);
     n.only({"format", "machine", "title", "task", "hints", "blank", "tool", "chuck", "ring",
             "drawing", "setup", "faults", "operator", "at_end", "limits", "scoring", "reference",
@@ -508,13 +512,7 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
 
 Course readCourse(std::string_view text, std::string_view sourceView) {
     const std::string source(sourceView);
-    Json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::ParseError& e) {
-        throw ExerciseError(source + ":" + std::to_string(e.line) + ":" + std::to_string(e.column),
-                            e.what());
-    }
+    const Json root = parseDocument(text, source);
     const Node n(root, "", source);
     n.only({"format", "id", "title", "exercises"});
     if (n.at("format").integer() != 1)

@@ -8,17 +8,11 @@
 #include <QTemporaryDir>
 
 #include "cli_runner.h"
+#include "test_util.h"
 
 namespace {
 
-QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write(text);
-    return path;
-}
+using testutil::writeBytes;
 
 } // namespace
 
@@ -27,7 +21,7 @@ class TestCliCheck : public QObject {
 private slots:
     void cleanFileExitsZeroSilently() {
         QTemporaryDir dir;
-        const QString f = write(dir, "ok.k528", "%L1\nN1 G1 X5 FX100\nN2 M30\n");
+        const QString f = writeBytes(dir, "ok.k528", "%L1\nN1 G1 X5 FX100\nN2 M30\n");
         const auto r = runK528({"check", f});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out, QString());
@@ -37,18 +31,18 @@ private slots:
     void fileWithoutProgramsIsSaidSo() {
         QTemporaryDir dir;
         for (const char* text : {"", "; a comment only\n\n", "(remark)\n"}) {
-            const QString f = write(dir, "none.k528", text);
+            const QString f = writeBytes(dir, "none.k528", text);
             const auto r = runK528({"check", "--lang", "en", f});
             QCOMPARE(r.exitCode, 0);
             QVERIFY2(r.out.contains(":1:1: warning: the file holds no program"), qPrintable(r.out));
         }
         // Near miss: a message table alone is something.
-        const QString m = write(dir, "msg.k528", "%MESSAGES\n#1=ПРОБА\n");
+        const QString m = writeBytes(dir, "msg.k528", "%MESSAGES\n#1=ПРОБА\n");
         QVERIFY(!runK528({"check", "--lang", "en", m}).out.contains("holds no program"));
     }
     void plainLinesInRussianByDefault() {
         QTemporaryDir dir;
-        const QString f = write(dir, "bad.k528", "%L1\nN1 GOTO 5\nG1 X1\nN2 M30\n");
+        const QString f = writeBytes(dir, "bad.k528", "%L1\nN1 GOTO 5\nG1 X1\nN2 M30\n");
         const auto r = runK528({"check", f});
         QCOMPARE(r.exitCode, 1);
         const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
@@ -59,22 +53,22 @@ private slots:
     }
     void plainLinesInEnglish() {
         QTemporaryDir dir;
-        const QString f = write(dir, "bad.k528", "G2 X1\nM30\n");
+        const QString f = writeBytes(dir, "bad.k528", "G2 X1\nM30\n");
         const auto r = runK528({"check", "--lang", "en", f});
         QCOMPARE(r.exitCode, 1);
         QCOMPARE(r.out, f + ":1:1: error: [M47] G?: G02 is not a G function of table 5\n");
     }
     void warningsOnlyExitZero() {
         QTemporaryDir dir;
-        const QString f = write(dir, "w.k528", "G04\nM30\n");
+        const QString f = writeBytes(dir, "w.k528", "G04\nM30\n");
         const auto r = runK528({"check", f});
         QCOMPARE(r.exitCode, 0);
         QVERIFY(r.out.contains(": warning: G04 без X"));
     }
     void jsonHasExactlyTheKeysOfTheSpec() {
         QTemporaryDir dir;
-        const QString a = write(dir, "a.k528", "%L3\nN1 L7 X5\nM30\n%L1\nG04\nM30\n");
-        const QString b = write(dir, "b.k528", "G1 X5\nM30\n");
+        const QString a = writeBytes(dir, "a.k528", "%L3\nN1 L7 X5\nM30\n%L1\nG04\nM30\n");
+        const QString b = writeBytes(dir, "b.k528", "G1 X5\nM30\n");
         const auto r = runK528({"check", "--json", a, b});
         QCOMPARE(r.exitCode, 1);
         QJsonParseError pe;
@@ -110,13 +104,13 @@ private slots:
     }
     void numberOptionNamesTheHeaderlessProgram() {
         QTemporaryDir dir;
-        const QString f = write(dir, "p.k528", "G1 X5\nM30\n");
+        const QString f = writeBytes(dir, "p.k528", "G1 X5\nM30\n");
         const auto r = runK528({"check", "--json", "--number", "42", f});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject root = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QCOMPARE(root["files"].toArray()[0].toObject()["programs"].toArray(), QJsonArray{42});
         // A call of itself is a cycle in program 42.
-        const QString g = write(dir, "q.k528", "L42\nM30\n");
+        const QString g = writeBytes(dir, "q.k528", "L42\nM30\n");
         QCOMPARE(runK528({"check", "--number", "42", g}).exitCode, 0);
         QVERIFY(runK528({"check", "--number", "42", g}).out.contains("[M48]"));
         QCOMPARE(runK528({"check", g}).exitCode, 1); // as program 1, L42 does not exist
@@ -159,7 +153,7 @@ private slots:
     }
     void usageAndIoErrors() {
         QTemporaryDir dir;
-        const QString ok = write(dir, "ok.k528", "M30\n");
+        const QString ok = writeBytes(dir, "ok.k528", "M30\n");
         QCOMPARE(runK528({"check"}).exitCode, 2);
         QCOMPARE(runK528({"check", "--frobnicate", ok}).exitCode, 2);
         QCOMPARE(runK528({"check", "--number", "0", ok}).exitCode, 2);
@@ -172,7 +166,7 @@ private slots:
         QVERIFY(missing.err.contains("nope.k528"));
         QCOMPARE(runK528({"check", dir.path()}).exitCode, 2);
         // The readable files are still checked.
-        const QString bad = write(dir, "bad.k528", "G2\n");
+        const QString bad = writeBytes(dir, "bad.k528", "G2\n");
         const auto mixed = runK528({"check", bad, dir.filePath("nope.k528")});
         QCOMPARE(mixed.exitCode, 2);
         QVERIFY(mixed.out.contains("[M47]"));
@@ -199,8 +193,8 @@ private slots:
         machine.replace(QRegularExpression("^R229=.*\\n", QRegularExpression::MultilineOption), "");
         QVERIFY(machine.contains("\n[r]\n"));
         machine.replace("\n[r]\n", "\n[r]\nR229=120000\n");
-        const QString profile = write(dir, "lathe.k528m", machine.toUtf8());
-        const QString f = write(dir, "p.k528", "G90 G1 X300 FX100 Z-110\nG1 Z-110 FZ7000\nG53 Z-110\nM30\n");
+        const QString profile = writeBytes(dir, "lathe.k528m", machine.toUtf8());
+        const QString f = writeBytes(dir, "p.k528", "G90 G1 X300 FX100 Z-110\nG1 Z-110 FZ7000\nG53 Z-110\nM30\n");
         const auto r = runK528({"check", "--lang", "en", "--profile", profile, f});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(":1:8: warning: [M12] software limit (X): X300 (diameter) is beyond the + limit 272"),

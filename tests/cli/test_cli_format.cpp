@@ -5,17 +5,11 @@
 #include <unistd.h>
 
 #include "cli_runner.h"
+#include "test_util.h"
 
 namespace {
 
-QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write(text);
-    return path;
-}
+using testutil::writeBytes;
 
 QByteArray read(const QString& path) {
     QFile f(path);
@@ -34,26 +28,26 @@ class TestCliFormat : public QObject {
 private slots:
     void printsTheCanonicalText() {
         QTemporaryDir dir;
-        const QString f = write(dir, "m.k528", kMessy);
+        const QString f = writeBytes(dir, "m.k528", kMessy);
         const auto r = runK528({"format", f});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out, QString::fromUtf8(kCanonical));
         QCOMPARE(r.err, QString());
         // format of format's output is identical to it.
-        const QString g = write(dir, "c.k528", r.out.toUtf8());
+        const QString g = writeBytes(dir, "c.k528", r.out.toUtf8());
         QCOMPARE(runK528({"format", g}).out, r.out);
         QCOMPARE(runK528({"format", "-"}, r.out.toUtf8()).out, r.out);
     }
     void semanticErrorsDoNotStopFormatting() {
         QTemporaryDir dir;
-        const QString f = write(dir, "e.k528", "goto 99\ng2 x1\n");
+        const QString f = writeBytes(dir, "e.k528", "goto 99\ng2 x1\n");
         const auto r = runK528({"format", f});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out, QString("GOTO 99\nG2 X1\n"));
     }
     void renumberRewritesEveryJump() {
         QTemporaryDir dir;
-        const QString f = write(dir, "r.k528", "%L1\nN5 G1 X1\nIF R1>0 GOTO 7\nN7 GOTO 5\nM30\n");
+        const QString f = writeBytes(dir, "r.k528", "%L1\nN5 G1 X1\nIF R1>0 GOTO 7\nN7 GOTO 5\nM30\n");
         auto r = runK528({"format", "--renumber", f});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out, QString("%L1\nN1 G1 X1\nN2 IF R1>0 GOTO 3\nN3 GOTO 1\nN4 M30\n"));
@@ -70,7 +64,7 @@ private slots:
     }
     void syntaxErrorsStopFormatting() {
         QTemporaryDir dir;
-        const QString f = write(dir, "s.k528", "G1 X5..3\nG1 Q5\n");
+        const QString f = writeBytes(dir, "s.k528", "G1 X5..3\nG1 Q5\n");
         const auto r = runK528({"format", "--lang", "en", f});
         QCOMPARE(r.exitCode, 1);
         QCOMPARE(r.out, QString());
@@ -82,8 +76,8 @@ private slots:
     }
     void checkOption() {
         QTemporaryDir dir;
-        const QString messy = write(dir, "m.k528", kMessy);
-        const QString canon = write(dir, "c.k528", kCanonical);
+        const QString messy = writeBytes(dir, "m.k528", kMessy);
+        const QString canon = writeBytes(dir, "c.k528", kCanonical);
         QCOMPARE(runK528({"format", "--check", canon}).exitCode, 0);
         const auto r = runK528({"format", "--check", messy});
         QCOMPARE(r.exitCode, 1);
@@ -93,7 +87,7 @@ private slots:
     }
     void inPlace() {
         QTemporaryDir dir;
-        const QString f = write(dir, "m.k528", kMessy);
+        const QString f = writeBytes(dir, "m.k528", kMessy);
         const auto r = runK528({"format", "--in-place", f});
         QCOMPARE(r.exitCode, 0);
         QCOMPARE(r.out, QString());
@@ -106,7 +100,7 @@ private slots:
     // symbolic link points to, not the link.
     void inPlaceKeepsPermissionsAndLinks() {
         QTemporaryDir dir;
-        const QString f = write(dir, "m.k528", kMessy);
+        const QString f = writeBytes(dir, "m.k528", kMessy);
         QVERIFY(QFile::setPermissions(f, QFile::ReadOwner | QFile::WriteOwner | QFile::ReadGroup));
         const QString link = dir.filePath("link.k528");
         QVERIFY(QFile::link(f, link));
@@ -123,13 +117,13 @@ private slots:
     // the programs in the order written, so the formatted file runs the same.
     void formattingKeepsWhatRunStarts() {
         QTemporaryDir dir;
-        const QString f = write(dir, "two.k528", "%L2\nG1 X5 F100\nM30\n%L1\nG1 X7 F100\nM30\n");
+        const QString f = writeBytes(dir, "two.k528", "%L2\nG1 X5 F100\nM30\n%L1\nG1 X7 F100\nM30\n");
         const auto before = runK528({"run", f});
         QVERIFY2(before.exitCode == 0, qPrintable(before.err));
         const auto formatted = runK528({"format", f});
         QCOMPARE(formatted.exitCode, 0);
         QVERIFY(formatted.out.indexOf("%L2") < formatted.out.indexOf("%L1"));
-        const QString g = write(dir, "formatted.k528", formatted.out.toUtf8());
+        const QString g = writeBytes(dir, "formatted.k528", formatted.out.toUtf8());
         const auto after = runK528({"run", g});
         QCOMPARE(after.exitCode, 0);
         QCOMPARE(after.out, before.out);
@@ -169,12 +163,12 @@ private slots:
     }
     void headerlessFilesStayHeaderless() {
         QTemporaryDir dir;
-        const QString f = write(dir, "h.k528", "g1 x5\nm30\n");
+        const QString f = writeBytes(dir, "h.k528", "g1 x5\nm30\n");
         QCOMPARE(runK528({"format", "--number", "12", f}).out, QString("G1 X5\nM30\n"));
     }
     void usageAndIoErrors() {
         QTemporaryDir dir;
-        const QString f = write(dir, "m.k528", "M30\n");
+        const QString f = writeBytes(dir, "m.k528", "M30\n");
         QCOMPARE(runK528({"format"}).exitCode, 2);
         QCOMPARE(runK528({"format", f, f}).exitCode, 2);
         QCOMPARE(runK528({"format", "--check", "--in-place", f}).exitCode, 2);

@@ -47,15 +47,14 @@ private slots:
         QVERIFY(v.at("frames").get<std::int64_t>() > 20);
         const Json& axes = v.at("axes");
         QVERIFY(axes.is_object());
-        // The shaft program ends with G0 X100 Z50 (X on the diameter).
-        QVERIFY(std::fabs(axes.at("X").at("current").get<double>() - 100.0) <= 0.01);
-        QVERIFY(std::fabs(axes.at("X").at("machine").get<double>() - 100.0) <= 0.01);
-        QVERIFY(std::fabs(axes.at("Z").at("current").get<double>() - 50.0) <= 0.01);
+        for (const char* axis : {"X", "Z"})
+            for (const char* key : {"current", "machine", "max_following_error"})
+                QVERIFY2(axes.at(axis).at(key).is_number(), key);
+        // The values, every field: golden case sample-lathe-shaft (tests/programs).
         const Json& rv = v.at("r");
         QCOMPARE(rv.size(), std::size_t(300));
         QCOMPARE(rv.begin().key(), std::string("0"));
         QCOMPARE(std::prev(rv.end()).key(), std::string("299"));
-        QCOMPARE(rv.at("11").get<std::int64_t>(), 2000); // R11 of the program
         // The key order of cli.md, with our extension "blocked_by" after
         // "alarms" (docs/engine.md): empty when the run started.
         std::vector<std::string> keys;
@@ -88,13 +87,7 @@ private slots:
                  QString("Переполнение"));
         QCOMPARE(a.at("program").get<std::int64_t>(), 3);
         QCOMPARE(a.at("line").get<std::int64_t>(), 3);
-        // --no-home on a machine that needs it: 42.
-        const auto n = runK528({"run", "--json", "--no-home", samples() + "lathe-grooves.k528"});
-        QCOMPARE(n.exitCode, 1);
-        const Json w = parseJson(n);
-        QCOMPARE(w.at("alarms").at(0).at("number").get<std::int64_t>(), 42);
-        QVERIFY(w.at("alarms").at(0).at("line").is_null());
-        QCOMPARE(w.at("home_time_s").get<double>(), 0.0);
+        // --no-home on a machine that needs it (42): golden case sample-lathe-grooves-no-home.
     }
     // The wheel outside R205..R206: the positioner blocks the program with
     // 44 «D круга < Dmin» / 43 «D круга > Dmax» (appendix М), never a

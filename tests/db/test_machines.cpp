@@ -16,6 +16,7 @@
 #include <QtTest>
 #include <sqlite3.h>
 #include <cstdlib>
+#include <map>
 #include <random>
 
 using namespace k528;
@@ -250,7 +251,8 @@ private slots:
     }
 
     // A database of schema version 5 opened by this program: upgraded to the
-    // history's index (changes_history; on PostgreSQL also revisions_authors),
+    // history's index (changes_history; version 6 on PostgreSQL also had
+    // revisions_authors, which version 7 drops with the history's join),
     // every revision and change kept, the history read as before.
     void historyIndexFromVersion5() {
         QTemporaryDir dir;
@@ -276,10 +278,11 @@ private slots:
         }
         db::Database d = db::Database::open(where, testOptions());
         QCOMPARE(d.openReport().fromVersion, 5);
-        QCOMPARE(d.schemaVersion(), 6);
-        QCOMPARE(d.audit(1).front().detail, std::string("schema version 5 -> 6"));
+        QCOMPARE(d.schemaVersion(), db::latestSchemaVersion());
+        QCOMPARE(d.audit(1).front().detail,
+                 "schema version 5 -> " + std::to_string(db::latestSchemaVersion()));
         QCOMPARE(indexesOf(where), std::string(onPostgres()
-                                                   ? "changes_history changes_pkey revisions_authors revisions_pkey"
+                                                   ? "changes_history changes_pkey revisions_pkey"
                                                    : "changes_history"));
         QCOMPARE(d.revisions("grinder-205").size(), std::size_t(31));
         const auto after = d.history("grinder-205", std::string("C022"));
@@ -300,6 +303,110 @@ private slots:
         e.c[22] = 1500;
         QVERIFY_THROWS_EXCEPTION(db::Error, d.applyEdit("grinder-205", e, by(std::string(300, 'a'))));
         QCOMPARE(d.machine("grinder-205")->revision, 31);
+    }
+
+    // A database of schema version 6 opened by this program: each recorded
+    // change takes its revision's author and time (version 7), every
+    // revision kept; the history (of one constant, of the last revisions,
+    // whole, of every machine) and the export of every revision are the same
+    // as before. A change whose author SQL altered apart from its revision's
+    // is found by the integrity check.
+    void historyAuthorsFromVersion6() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "v6.db");
+        const auto sameHistory = [](const std::vector<db::HistoryEntry>& a,
+                                    const std::vector<db::HistoryEntry>& b) {
+            if (a.size() != b.size())
+                return false;
+            for (std::size_t i = 0; i < a.size(); ++i)
+                if (a[i].revision != b[i].revision || a[i].author != b[i].author ||
+                    a[i].at != b[i].at || !(a[i].change == b[i].change))
+                    return false;
+            return true;
+        };
+        std::vector<std::string> names;
+        std::map<std::string, std::vector<db::HistoryEntry>> whole;
+        std::map<std::string, std::vector<std::string>> exports;
+        std::vector<db::HistoryEntry> ofKey, lastThree;
+        std::vector<db::RevisionInfo> revisions;
+        {
+            auto o = testOptions();
+            o.migrations = db::schemaMigrations().subspan(0, 6);
+            db::Database d = db::Database::open(where, o);
+            QCOMPARE(d.schemaVersion(), 6);
+            for (int i = 0; i < 25; ++i) {
+                db::Edit e;
+                e.c[22] = 1000 + i;
+                e.r[i] = i;
+                d.applyEdit("grinder-205", e, by(i % 3 ? "Петров" : "Иванов И.И."));
+            }
+            ofKey = d.history("grinder-205", std::string("C022"));
+            QCOMPARE(ofKey.size(), std::size_t(26));
+            QVERIFY(ofKey[0].at != ofKey[1].at); // the stepping clock: each revision its time
+            lastThree = d.history("grinder-205", std::nullopt, 3);
+            revisions = d.revisions("grinder-205");
+            for (const db::MachineInfo& m : d.machines()) {
+                names.push_back(m.name);
+                whole[m.name] = d.history(m.name);
+                for (int r = 1; r <= m.revision; ++r)
+                    exports[m.name].push_back(
+                        profile::writeMachineText(d.loadMachine(m.name, r)));
+            }
+            QVERIFY(names.size() >= 2);
+        }
+        {
+            // Read as it is (read-only: not upgraded), the history is the same.
+            auto o = testOptions();
+            o.readOnly = true;
+            const db::Database d = db::Database::open(where, o);
+            QCOMPARE(d.schemaVersion(), 6);
+            QVERIFY(sameHistory(d.history("grinder-205", std::string("C022")), ofKey));
+            QVERIFY(sameHistory(d.history("grinder-205", std::nullopt, 3), lastThree));
+        }
+        db::Database d = db::Database::open(where, testOptions());
+        QCOMPARE(d.openReport().fromVersion, 6);
+        QCOMPARE(d.schemaVersion(), 7);
+        QCOMPARE(d.audit(1).front().detail, std::string("schema version 6 -> 7"));
+        QCOMPARE(indexesOf(where), std::string(onPostgres() ? "changes_history changes_pkey revisions_pkey"
+                                                            : "changes_history"));
+        QVERIFY(sameHistory(d.history("grinder-205", std::string("C022")), ofKey));
+        QVERIFY(sameHistory(d.history("grinder-205", std::nullopt, 3), lastThree));
+        const auto revisionsNow = d.revisions("grinder-205");
+        QCOMPARE(revisionsNow.size(), revisions.size());
+        for (std::size_t i = 0; i < revisions.size(); ++i) {
+            QCOMPARE(revisionsNow[i].revision, revisions[i].revision);
+            QCOMPARE(revisionsNow[i].author, revisions[i].author);
+            QCOMPARE(revisionsNow[i].at, revisions[i].at);
+            QCOMPARE(revisionsNow[i].summary, revisions[i].summary);
+            QCOMPARE(revisionsNow[i].changeCount, revisions[i].changeCount);
+        }
+        for (const std::string& name : names) {
+            QVERIFY2(sameHistory(d.history(name), whole[name]), name.c_str());
+            const int last = d.machine(name)->revision;
+            QCOMPARE(static_cast<std::size_t>(last), exports[name].size());
+            for (int r = 1; r <= last; ++r)
+                QCOMPARE(profile::writeMachineText(d.loadMachine(name, r)),
+                         exports[name][static_cast<std::size_t>(r - 1)]);
+        }
+        QVERIFY(d.checkIntegrity().empty());
+        // A new revision writes its author and time into its changes.
+        db::Edit e;
+        e.c[22] = 1500;
+        d.applyEdit("grinder-205", e, by("Сидоров"));
+        const auto now = d.history("grinder-205", std::string("C022"));
+        QCOMPARE(now.size(), ofKey.size() + 1);
+        QCOMPARE(now[0].revision, 27);
+        QCOMPARE(now[0].author, std::string("Сидоров"));
+        QCOMPARE(now[0].at, d.revisions("grinder-205").front().at);
+        QVERIFY(sameHistory(std::vector(now.begin() + 1, now.end()), ofKey));
+        QVERIFY(d.checkIntegrity().empty());
+        QCOMPARE(runSql(where, "UPDATE changes SET author = 'X' WHERE revision = 5 AND key = 'C022' "
+                               "AND machine_id = (SELECT id FROM machines WHERE name = 'grinder-205')"),
+                 std::string());
+        const std::string problems = d.checkIntegrity();
+        QVERIFY2(problems.find("machine grinder-205 revision 5: 1 of its changes do not name the "
+                               "revision's author and time") != std::string::npos,
+                 problems.c_str());
     }
 
     // A program's text changed outside K528 Studio (SQL) no longer matches

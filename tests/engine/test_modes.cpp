@@ -96,6 +96,8 @@ private slots:
         QCOMPARE(r.ctl->setC(22, 5000).refusal, Refusal::WrongMode);
         QCOMPARE(r.ctl->setCurrentValue(X, 0).refusal, Refusal::WrongMode);
         QCOMPARE(r.ctl->clearRParameters().refusal, Refusal::WrongMode);
+        QCOMPARE(r.ctl->clearCParameters().refusal, Refusal::WrongMode);
+        QCOMPARE(r.ctl->clearPrograms().refusal, Refusal::WrongMode);
         QVERIFY(r.ctl->selectMode(Mode::MachineData).ok());
         QVERIFY(r.ctl->setC(22, 5000).ok());
         QCOMPARE(r.ctl->c()[22], 5000);

@@ -1,6 +1,7 @@
 // `k528 check --profile` and `k528 path` with the prove-out (docs/proveout.md,
 // shared/spec/cli.md: diagnostics gain "rule").
 #include "cli_runner.h"
+#include "rig/facing.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -8,17 +9,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
-namespace {
-
-const char* kBadFacing = "; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
-                         "%L1 (FACE)\n"
-                         "N1 G90 G0 M3 X44 Z2\n"
-                         "N2 Z-1\n"
-                         "N3 G1 X-1 FX150\n"
-                         "N4 G0 X44 Z-20\n"
-                         "N5 M30\n";
-
-} // namespace
+using k528::testrig::kBadFacing;
 
 class TestProveoutCli : public QObject {
     Q_OBJECT
@@ -41,7 +32,7 @@ private slots:
     }
 
     void checkNamesTheRuleAndTheFrame() {
-        const QString file = write("face.k528", kBadFacing);
+        const QString file = write("face.k528", QByteArray::fromStdString(kBadFacing));
         const CliResult r = runK528({"check", "--db", db_, "--profile", "training-lathe", "--json", file});
         QCOMPARE(r.exitCode, 1);
         const QJsonArray d = QJsonDocument::fromJson(r.out.toUtf8())
@@ -78,7 +69,7 @@ private slots:
 
     void theBlankFromTheCommandLine() {
         // The file has no blank: nothing to hit; --blank gives it one.
-        QByteArray text = kBadFacing;
+        QByteArray text = QByteArray::fromStdString(kBadFacing);
         text.replace("; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n", "");
         const QString file = write("noblank.k528", text);
         QCOMPARE(runK528({"check", "--db", db_, "--profile", "training-lathe", file}).exitCode, 0);
@@ -93,7 +84,7 @@ private slots:
     }
 
     void pathListsTheFindings() {
-        const QString file = write("face2.k528", kBadFacing);
+        const QString file = write("face2.k528", QByteArray::fromStdString(kBadFacing));
         const CliResult r = runK528({"path", "--db", db_, "--home", "--json", file});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();

@@ -6,6 +6,7 @@
 #include "proveout/actual.h"
 #include "proveout/material.h"
 #include "proveout/proveout.h"
+#include "rig/facing.h"
 #include "stock/stock.h"
 
 #include <QtTest>
@@ -14,6 +15,9 @@
 #include <set>
 
 using namespace k528;
+using testrig::kBadFacing;
+using testrig::kBar;
+using testrig::kSafeFacing;
 
 namespace {
 
@@ -51,16 +55,11 @@ const proveout::Finding* only(const proveout::Result& r, proveout::Rule rule) {
     return found;
 }
 
-// A Ø40 bar, 80 mm out of the part zero (the face at Z0).
-constexpr const char* kBar = "; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n";
-
 } // namespace
 
 class TestProveoutRules : public QObject {
     Q_OBJECT
 private slots:
-    // The handbook's third error: after facing, the return rapid goes
-    // straight through the blank.
     // The rules both callers use (the check before the run, the grade of an
     // attempt along its actual path): which rule a motion into the material
     // breaks, and the chuck's contact.
@@ -101,12 +100,7 @@ private slots:
     // attempt along the path the machine took find the same rapid at the same
     // place when the machine took the programmed path.
     void oneContactForTheCheckAndTheGrade() {
-        const std::string bad = std::string(kBar) + "%L1 (FACE)\n"
-                                                   "N1 G90 G0 M3 X44 Z2\n"
-                                                   "N2 Z-1\n"
-                                                   "N3 G1 X-1 FX150\n"
-                                                   "N4 G0 X44 Z-20\n"
-                                                   "N5 M30\n";
+        const std::string& bad = kBadFacing;
         const proveout::Proof p = prove(bad.c_str());
         const proveout::Finding* f = only(p.result, proveout::Rule::RapidIntoMaterial);
         QVERIFY2(f, summary(p.result).c_str());
@@ -154,13 +148,9 @@ private slots:
         QVERIFY2(std::fabs(along.penetrationMm() - 1) < 0.011, qPrintable(QString::number(along.penetrationMm())));
     }
 
+    // The handbook's third error (rig/facing.h) and its cure.
     void facingReturnRapidCutsTheBlank() {
-        const std::string bad = std::string(kBar) + "%L1 (FACE)\n"
-                                                   "N1 G90 G0 M3 X44 Z2\n"
-                                                   "N2 Z-1\n"
-                                                   "N3 G1 X-1 FX150\n"
-                                                   "N4 G0 X44 Z-20\n"
-                                                   "N5 M30\n";
+        const std::string& bad = kBadFacing;
         const proveout::Proof p = prove(bad.c_str());
         QVERIFY(p.result.material);
         const proveout::Finding* f = only(p.result, proveout::Rule::RapidIntoMaterial);
@@ -174,14 +164,7 @@ private slots:
                  f->message(false).c_str());
         QCOMPARE(p.result.findings.size(), std::size_t(1));
 
-        const std::string safe = std::string(kBar) + "%L1 (FACE)\n"
-                                                    "N1 G90 G0 M3 X44 Z2\n"
-                                                    "N2 Z-1\n"
-                                                    "N3 G1 X-1 FX150\n"
-                                                    "N4 G0 Z2\n"
-                                                    "N5 X44\n"
-                                                    "N6 M30\n";
-        const proveout::Proof ok = prove(safe.c_str());
+        const proveout::Proof ok = prove(kSafeFacing.c_str());
         EXPECT_NOTHING(ok);
         QVERIFY(ok.result.removedMm2 > 19.5 && ok.result.removedMm2 < 20.5); // 1 mm × Ø40/2
     }
