@@ -24,8 +24,6 @@ namespace {
 constexpr const char* kTrContext = "k528::studio";
 QString tr(const char* s) { return QCoreApplication::translate(kTrContext, s); }
 
-QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-
 constexpr int kNumberWidth = 6; // "  123 " before each line
 
 } // namespace
