@@ -15,6 +15,7 @@
 #include "profile/builtin.h"
 #include "program/parser.h"
 #include "report.h"
+#include "rig/watched_run.h"
 #include "machine/run.h"
 #include "machine/simulation.h"
 #include "stock/stock.h"
@@ -197,24 +198,17 @@ int main(int argc, char** argv) {
                 machine::Simulation sim(prof);
                 toolpath::LiveActualPath path(1.0);
                 path.attach(sim);
-                struct Frames final : engine::RunMachine {
-                    machine::SimulationRunMachine m;
+                machine::SimulationRunMachine m(sim);
+                struct Frames final : testrig::ForwardingRunMachine {
                     toolpath::LiveActualPath& p;
                     int ticks = 0;
-                    Frames(machine::Simulation& s, toolpath::LiveActualPath& l) : m(s), p(l) {}
-                    engine::Positioner& controller() override { return m.controller(); }
+                    Frames(engine::RunMachine& inner, toolpath::LiveActualPath& l) : ForwardingRunMachine(inner), p(l) {}
                     void tick() override {
-                        m.tick();
+                        ForwardingRunMachine::tick();
                         if (++ticks % 16 == 0)
                             p.flush();
                     }
-                    bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-                    void setOverrideCode(int c) override { m.setOverrideCode(c); }
-                    void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-                    void pressStart() override { m.pressStart(); }
-                    bool startHeld() const override { return m.startHeld(); }
-                    std::vector<int> mFunctions() const override { return m.mFunctions(); }
-                } frames(sim, path);
+                } frames(m, path);
                 const double t = bench::nowSeconds();
                 engine::runProgram(frames, lp.store, 1, ro);
                 path.flush();
@@ -229,18 +223,16 @@ int main(int argc, char** argv) {
             toolpath::LiveActualPath path(1.0);
             path.attach(sim);
             machine::SimulationRunMachine m(sim);
-            struct Frame final : engine::RunMachine {
-                machine::SimulationRunMachine& m;
+            struct Frame final : testrig::ForwardingRunMachine {
                 toolpath::LiveActualPath& p;
                 backplot::BackplotScene& scene;
                 std::vector<double>& times;
                 int ticks = 0;
-                Frame(machine::SimulationRunMachine& mm, toolpath::LiveActualPath& l,
-                      backplot::BackplotScene& s, std::vector<double>& t)
-                    : m(mm), p(l), scene(s), times(t) {}
-                engine::Positioner& controller() override { return m.controller(); }
+                Frame(engine::RunMachine& inner, toolpath::LiveActualPath& l, backplot::BackplotScene& s,
+                      std::vector<double>& t)
+                    : ForwardingRunMachine(inner), p(l), scene(s), times(t) {}
                 void tick() override {
-                    m.tick();
+                    ForwardingRunMachine::tick();
                     if (++ticks % 1600 == 0) {
                         const double t = bench::nowSeconds();
                         const toolpath::LiveActualPath::Batch b = p.flush();
@@ -250,12 +242,6 @@ int main(int argc, char** argv) {
                             times.push_back(bench::nowSeconds() - t);
                     }
                 }
-                bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-                void setOverrideCode(int c) override { m.setOverrideCode(c); }
-                void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-                void pressStart() override { m.pressStart(); }
-                bool startHeld() const override { return m.startHeld(); }
-                std::vector<int> mFunctions() const override { return m.mFunctions(); }
             };
             backplot::BackplotScene liveScene;
             liveScene.setPath(toolpath::programmedPath(prof, lp.store, 1));

@@ -12,6 +12,7 @@
 #include "profile/text_format.h"
 #include "random_machine.h"
 #include "report.h"
+#include "stats.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -24,16 +25,6 @@ using namespace k528;
 namespace fs = std::filesystem;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-double percentile(std::vector<double> v, double p) {
-    std::sort(v.begin(), v.end());
-    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * static_cast<double>(v.size())))];
-}
 
 double mean(const std::vector<double>& v) {
     double s = 0;
@@ -87,9 +78,9 @@ int main(int argc, char** argv) {
 
     bench::Report report;
     const auto small = openAndLoad(path, openRuns, "full");
-    report.figure("db.open_load_median (3 machines)", median(small), "ms", 20,
+    report.figure("db.open_load_median (3 machines)", bench::median(small), "ms", 20,
                   bench::Better::Lower);
-    report.figure("db.open_load_p90 (3 machines)", percentile(small, 0.9), "ms", 20,
+    report.figure("db.open_load_p90 (3 machines)", bench::percentile(small, 90), "ms", 20,
                   bench::Better::Lower);
 
     // Export + import as a new machine: the full write path (revision 1 with
@@ -119,12 +110,12 @@ int main(int argc, char** argv) {
             asRevision.push_back((t1 - t0) * 1000.0);
         }
     }
-    report.figure("db.export_import_new_median", median(asNew), "ms", 100, bench::Better::Lower);
-    report.figure("db.export_import_new_p90", percentile(asNew, 0.9), "ms", 100,
+    report.figure("db.export_import_new_median", bench::median(asNew), "ms", 100, bench::Better::Lower);
+    report.figure("db.export_import_new_p90", bench::percentile(asNew, 90), "ms", 100,
                   bench::Better::Lower);
-    report.figure("db.export_import_revision_median", median(asRevision), "ms", 100,
+    report.figure("db.export_import_revision_median", bench::median(asRevision), "ms", 100,
                   bench::Better::Lower);
-    report.figure("db.export_import_revision_p90", percentile(asRevision, 0.9), "ms", 100,
+    report.figure("db.export_import_revision_p90", bench::percentile(asRevision, 90), "ms", 100,
                   bench::Better::Lower);
 
     // Open + load again on the grown database. PRAGMA integrity_check reads
@@ -135,7 +126,7 @@ int main(int argc, char** argv) {
     const double mb = static_cast<double>(fs::file_size(path, ec)) / 1e6;
     std::printf("info: open+load median %.2f ms on the grown database (%d machines, %.1f MB, "
                 "%.1f ms per MB)\n",
-                median(big), 3 + importRuns, mb, median(big) / mb);
+                bench::median(big), 3 + importRuns, mb, bench::median(big) / mb);
     std::printf("(mean open+load %.2f ms small, %.2f ms grown; mean import %.2f / %.2f ms)\n",
                 mean(small), mean(big), mean(asNew), mean(asRevision));
     if (!std::getenv("K528_BENCH_KEEP"))

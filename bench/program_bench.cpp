@@ -15,18 +15,10 @@
 #include "program/validator.h"
 #include "random_program.h"
 #include "report.h"
+#include "stats.h"
 
 using namespace k528;
 using namespace k528::program;
-
-namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-} // namespace
 
 int main(int argc, char** argv) {
     const int storeRuns = argc > 1 ? std::atoi(argv[1]) : 15;
@@ -101,10 +93,9 @@ int main(int argc, char** argv) {
                 store.find(number)->frames.size(), programText.size(), lastDiags);
 
     bench::Report r;
-    r.figure("program.store_parse_validate (99x999)", median(ms), "ms", 50, bench::Better::Lower);
-    r.figure("program.edit_recheck (1x999, median)", median(editMs), "ms", 2, bench::Better::Lower);
-    std::sort(editMs.begin(), editMs.end());
-    r.figure("program.edit_recheck (1x999, p95)", editMs[editMs.size() * 95 / 100], "ms", 4,
+    r.figure("program.store_parse_validate (99x999)", bench::median(ms), "ms", 50, bench::Better::Lower);
+    r.figure("program.edit_recheck (1x999, median)", bench::median(editMs), "ms", 2, bench::Better::Lower);
+    r.figure("program.edit_recheck (1x999, p95)", bench::percentile(editMs, 95), "ms", 4,
              bench::Better::Lower);
     return r.exitCode();
 }

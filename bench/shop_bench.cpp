@@ -20,6 +20,7 @@
 #include "db/database.h"
 #include "random_machine.h"
 #include "report.h"
+#include "stats.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -33,11 +34,6 @@ using namespace k528;
 namespace fs = std::filesystem;
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
 
 std::string machineName(int i) {
     char buf[32];
@@ -90,7 +86,7 @@ Figures measure(const db::Location& where, int machines, int revisions, int runs
         if (p.programs.size() != 99)
             std::exit(2);
     }
-    return {median(load), median(set), median(history), median(openLoad)};
+    return {bench::median(load), bench::median(set), bench::median(history), bench::median(openLoad)};
 }
 
 int runInCluster(int argc, char** argv) {

@@ -1,7 +1,7 @@
 // The shop's poller: 32 K528-05 over Modbus TCP (`k528 serve
-// --tcp` on free localhost ports, machines of a database of its own),
-// `k528 shop publish` polling every 100 ms into a mosquitto broker started
-// here. Figures: the CPU of the poller process (user + system time from
+// --tcp` on free localhost ports, machines of a database of its own: the
+// test rig's ShopMachines), `k528 shop publish` polling every 100 ms into a
+// mosquitto broker (the rig's MqttBroker). Figures: the CPU of the poller process (user + system time from
 // /proc over 10 s of wall time, % of one core) and the time from a state
 // change in a controller (a key pressed on its K923 through `serve
 // --stdin-keys`: the mode changes) to the moment the new state arrives on its
@@ -9,15 +9,16 @@
 // its line: an upper bound).
 // Usage: bench_shop_poll K528 MACHINES SECONDS CHANGES
 #include "report.h"
-#include "rig/tcp_serve.h"
+#include "rig/mqtt_broker.h"
+#include "rig/shop_machines.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
-#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <algorithm>
 #include <cstdio>
@@ -38,17 +39,6 @@ double cpuSeconds(qint64 pid) {
     return (fields.value(11).toDouble() + fields.value(12).toDouble()) / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
 
-bool run(const QString& program, const QStringList& args) {
-    QProcess p;
-    p.start(program, args);
-    if (!p.waitForFinished(120000) || p.exitCode() != 0) {
-        std::fprintf(stderr, "%s %s failed: %s\n", qPrintable(program), qPrintable(args.join(' ')),
-                     p.readAllStandardError().constData());
-        return false;
-    }
-    return true;
-}
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -62,58 +52,29 @@ int main(int argc, char** argv) {
     const double seconds = std::atof(argv[3]);
     const int changes = std::atoi(argv[4]);
     QTemporaryDir dir;
-    const QString db = dir.filePath("shop.db");
-    const std::vector<quint16> ports = testrig::freePorts(machines + 1);
-    if (static_cast<int>(ports.size()) != machines + 1) {
-        std::fprintf(stderr, "no free ports\n");
+    // The machines m01… of a database of their own, each served by a
+    // controller that reads its K923's keys from its standard input; a port
+    // more for the broker.
+    testrig::ShopMachines shop;
+    const QString failed =
+        shop.start(k528, QDir(dir.path()), testrig::shopMachineNames(machines),
+                   [&shop](int) { return QStringList{"--stdin-keys", "--db", shop.db}; }, 1);
+    if (!failed.isEmpty()) {
+        std::fprintf(stderr, "the machines did not start: %s\n", qPrintable(failed));
         return 2;
     }
-    const quint16 brokerPort = ports[static_cast<std::size_t>(machines)];
-    QProcess broker;
-    broker.start("mosquitto", {"-p", QString::number(brokerPort)});
-    QElapsedTimer wait;
-    wait.start();
-    for (bool up = false; !up && wait.elapsed() < 10000;) {
-        QTcpSocket s;
-        s.connectToHost("127.0.0.1", brokerPort);
-        up = s.waitForConnected(200);
-    }
-    const auto name = [](int i) { return QStringLiteral("m%1").arg(i + 1, 2, 10, QLatin1Char('0')); };
-    const QString file = dir.filePath("lathe.k528m");
-    if (!run(k528, {"db", "init", "--db", db}) ||
-        !run(k528, {"db", "export", "training-lathe", "--out", file, "--db", db}))
+    const auto name = [](int i) { return testrig::shopMachineName(i); };
+    testrig::MqttBroker broker;
+    if (!broker.start(shop.ports[static_cast<std::size_t>(machines)])) {
+        std::fprintf(stderr, "mosquitto did not start\n");
         return 2;
-    for (int i = 0; i < machines; ++i)
-        if (!run(k528, {"db", "import", file, "--as", name(i), "--db", db}) ||
-            !run(k528, {"db", "set", name(i), "line=tcp://127.0.0.1:" + QString::number(ports[i]) + "/1", "--db", db}))
-            return 2;
-    // The controllers, started together (the database of their profile is this one).
-    std::vector<std::unique_ptr<testrig::Serve>> serves;
-    for (int i = 0; i < machines; ++i) {
-        serves.push_back(std::make_unique<testrig::Serve>(k528, ports[static_cast<std::size_t>(i)]));
-        serves.back()->process().start(k528, {"serve", "--tcp", serves.back()->address(), "--stdin-keys", "--db", db});
     }
-    for (auto& s : serves) {
-        s->process().waitForStarted(10000);
-        QByteArray said;
-        QElapsedTimer t;
-        t.start();
-        while (!said.contains("k528 serve:") && t.elapsed() < 60000 && s->process().state() == QProcess::Running) {
-            s->process().waitForReadyRead(100);
-            said += s->process().readAllStandardError();
-        }
-        said += s->process().readAllStandardError();
-        if (!said.contains("k528 serve:")) {
-            std::fprintf(stderr, "k528 serve did not start: %s\n", said.constData());
-            return 2;
-        }
-    }
+    const quint16 brokerPort = broker.port();
     QProcess sub;
     sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(brokerPort), "-t", "k528/+/state", "-v"});
     sub.waitForStarted();
     QProcess pub;
-    pub.start(k528, {"shop", "publish", "--mqtt", "mqtt://127.0.0.1:" + QString::number(brokerPort), "--interval-ms",
-                     "100", "--db", db});
+    pub.start(k528, {"shop", "publish", "--mqtt", broker.url(), "--interval-ms", "100", "--db", shop.db});
     // Each machine's state as last received, and when.
     QMap<QString, QJsonObject> last;
     QByteArray pending;
@@ -131,7 +92,8 @@ int main(int argc, char** argv) {
         }
         return got;
     };
-    wait.restart();
+    QElapsedTimer wait;
+    wait.start();
     while (last.size() < machines && wait.elapsed() < 30000)
         receive(100);
     int online = 0;
@@ -157,7 +119,7 @@ int main(int argc, char** argv) {
         while (bench::nowSeconds() < pause)
             receive(10);
         const double t0 = bench::nowSeconds();
-        QProcess& serve = serves[static_cast<std::size_t>(i)]->process();
+        QProcess& serve = shop.serves[static_cast<std::size_t>(i)]->process();
         serve.write(mode == 1 ? "F1\n" : "F2\n");
         serve.waitForBytesWritten(1000);
         double arrived = -1;
@@ -176,9 +138,8 @@ int main(int argc, char** argv) {
     pub.waitForFinished(10000);
     sub.terminate();
     sub.waitForFinished(3000);
-    serves.clear();
-    broker.terminate();
-    broker.waitForFinished(5000);
+    shop.stop();
+    broker.stop();
     std::sort(latencies.begin(), latencies.end());
     bench::Report rep;
     rep.figure("shop.poller_cpu_32_lines_100ms", cpuPercent, "%", 10, bench::Better::Lower);

@@ -37,6 +37,15 @@ toolpath::ProgrammedPath pathOf(const char* text, profile::MachineProfile prof) 
     return toolpath::programmedPath(prof, parsed.store, 1);
 }
 
+// The pixel column (Z) or row (X) of a coordinate in the scene's XZ view at kW × kH.
+enum class Axis { Z, X };
+struct PixelOf {
+    PixelOf(const backplot::BackplotScene& scene, Axis a) : w(scene.window(kW, kH)), axis(a) {}
+    double operator()(double v) const { return (v - (axis == Axis::Z ? w.x0 : w.y0)) / w.worldPerPixel; }
+    backplot::ViewWindow w;
+    Axis axis;
+};
+
 struct Image {
     std::vector<unsigned char> rgb;
     Rgb at(int x, int y) const { // y from the bottom
@@ -137,15 +146,13 @@ private slots:
         std::string error;
         QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
         QCOMPARE(img.rgb.size(), std::size_t(kW * kH * 3));
-        const backplot::ViewWindow w = scene.window(kW, kH);
-        const auto px = [&](double z) { return (z - w.x0) / w.worldPerPixel; };
-        const auto py = [&](double x) { return (x - w.y0) / w.worldPerPixel; };
+        const PixelOf px(scene, Axis::Z), py(scene, Axis::X);
         // The feed at X200, Z-50.
         QVERIFY(around(img, px(-50), py(200), backplot::kFeedColour));
         QVERIFY(!around(img, px(-50), py(200), backplot::kRapidColour));
         // The rapid at Z0, X50..150: rapid colour, with gaps (dashed).
         int lit = 0, dark = 0;
-        for (double x = 50; x <= 150; x += w.worldPerPixel) {
+        for (double x = 50; x <= 150; x += py.w.worldPerPixel) {
             if (around(img, px(0), py(x), backplot::kRapidColour, 1))
                 ++lit;
             else
@@ -228,9 +235,7 @@ private slots:
         Image img;
         std::string error;
         QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
-        const backplot::ViewWindow w = scene.window(kW, kH);
-        const auto px = [&](double z) { return (z - w.x0) / w.worldPerPixel; };
-        const auto py = [&](double x) { return (x - w.y0) / w.worldPerPixel; };
+        const PixelOf px(scene, Axis::Z), py(scene, Axis::X);
         QVERIFY(around(img, px(-50), py(100), backplot::kLimitColour));
         QVERIFY(around(img, px(-80), py(200), backplot::kOutsideColour));
         QVERIFY(!around(img, px(-80), py(200), backplot::kFeedColour));
@@ -275,9 +280,7 @@ private slots:
         QCOMPARE(box.z1, 160.0);
         QCOMPARE(box.x0, -4.0);
         QCOMPARE(box.x1, 20.0);
-        const backplot::ViewWindow w = scene.window(kW, kH);
-        const auto px = [&](double z) { return (z - w.x0) / w.worldPerPixel; };
-        const auto py = [&](double x) { return (x - w.y0) / w.worldPerPixel; };
+        const PixelOf px(scene, Axis::Z), py(scene, Axis::X);
         QVERIFY(around(img, px(155), py(-4), backplot::kWheelColour));  // the edge towards the axis
         QVERIFY(around(img, px(160), py(2), backplot::kWheelColour));   // the +Z face
         QVERIFY(around(img, px(157), py(20), backplot::kWheelColour));  // the working edge
@@ -322,9 +325,7 @@ private slots:
         Image img;
         std::string error;
         QVERIFY2(backplot::renderOffscreen(scene, kW, kH, "", &img.rgb, error), error.c_str());
-        const backplot::ViewWindow w = scene.window(kW, kH);
-        const auto px = [&](double z) { return (z - w.x0) / w.worldPerPixel; };
-        const auto py = [&](double x) { return (x - w.y0) / w.worldPerPixel; };
+        const PixelOf px(scene, Axis::Z), py(scene, Axis::X);
         // The stroke along Z at X40 from Z150 to the far reverse point Z142, in its colour.
         QVERIFY(around(img, px(146), py(40), backplot::kOscillationColour));
         QVERIFY(!around(img, px(146), py(40), backplot::kFeedColour, 0));

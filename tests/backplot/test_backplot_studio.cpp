@@ -9,7 +9,7 @@
 #include "backplot/vtk_gl_widget.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
-#include "machine/run.h"
+#include "rig/watched_run.h"
 #include "language.h"
 #include "main_window.h"
 #include "workspace/workspaces.h"
@@ -118,24 +118,12 @@ struct Studio {
 
 // The run's machine for a test that drives the session's time: each tick of
 // the run advances the session by one tick, a UI frame (advanced()) every 16.
-struct Stepper final : engine::RunMachine {
-    machine::SimulationRunMachine m;
-    studio::SimulationSession& session;
-    explicit Stepper(studio::SimulationSession& ss) : m(ss.simulation()), session(ss) {}
-    engine::Positioner& controller() override { return m.controller(); }
-    int ticks = 0;
-    void tick() override {
-        m.tick();
+testrig::WatchedSimulationRun steppingRun(studio::SimulationSession& ss) {
+    return testrig::WatchedSimulationRun(ss.simulation(), [&ss, ticks = 0]() mutable {
         if (++ticks % 16 == 0)
-            session.advance(0);
-    }
-    bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-    void setOverrideCode(int c) override { m.setOverrideCode(c); }
-    void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-    void pressStart() override { m.pressStart(); }
-    bool startHeld() const override { return m.startHeld(); }
-    std::vector<int> mFunctions() const override { return m.mFunctions(); }
-};
+            ss.advance(0);
+    });
+}
 
 } // namespace
 
@@ -270,7 +258,7 @@ private slots:
         std::vector<std::size_t> shown;
         connect(session, &studio::SimulationSession::advanced, this,
                 [&] { shown.push_back(s.view->scene().actualPointsShown()); });
-        Stepper stepper(*session);
+        testrig::WatchedSimulationRun stepper = steppingRun(*session);
         engine::RunOptions ro;
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, ro);
         QCOMPARE(r.status, engine::RunStatus::Completed);
@@ -313,7 +301,7 @@ private slots:
             if (stations.empty() || stations.back() != st)
                 stations.push_back(st);
         });
-        Stepper stepper(*session);
+        testrig::WatchedSimulationRun stepper = steppingRun(*session);
         const engine::RunResult r = engine::runProgram(stepper, parsed.store, 1, engine::RunOptions{});
         QCOMPARE(r.status, engine::RunStatus::Completed);
         // Before the program ran no live tool; then tool 1, none while the turret indexed (0), tool 2.

@@ -212,10 +212,17 @@ private slots:
         QVERIFY(r.out.contains("C022 УСКОРЕНИЕ 1: 2000 -> 2133"));
         QVERIFY(r.out.contains("R12"));
         // A cross-check error: rejected whole with the manual's message.
+        r = db({"set", "grinder-205", "C022=1000", "C069=1", "--lang", "en"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("machine grinder-205: rejected, nothing was written"), qPrintable(r.err));
+        QVERIFY(r.err.contains("error [M37] C017,C069:"));
+        // In Russian (the default): the same findings in core's Russian.
         r = db({"set", "grinder-205", "C022=1000", "C069=1"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("rejected, nothing was written"), qPrintable(r.err));
+        QVERIFY2(r.err.startsWith(QStringLiteral("k528: станок grinder-205: отклонено, ничего не записано (ошибок: 1):")),
+                 qPrintable(r.err));
         QVERIFY(r.err.contains("error [M37] C017,C069:"));
+        QVERIFY2(!r.err.contains("rejected"), qPrintable(r.err));
         r = db({"set", "grinder-205", "C020=0"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("[M13] C020"));
@@ -386,7 +393,7 @@ private slots:
         QVERIFY(at > 0);
         text.insert(at + 1, "\xEF\xBB\xBF");
         QVERIFY(writeFile(f, text));
-        const auto r = db({"import", f, "--as", "joined"});
+        const auto r = db({"import", f, "--as", "joined", "--lang", "en"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("U+FEFF (byte-order mark)"), qPrintable(r.err));
         QVERIFY(!r.err.contains(QChar(0xFEFF)));
@@ -414,10 +421,16 @@ private slots:
         const int badLine = lineOf(bad, "C040=");
         bad.replace("\nC040_=", "\n;");
         QVERIFY(writeFile(f, bad.toUtf8()));
-        r = db({"import", f, "--as", "lathe-3"});
+        r = db({"import", f, "--as", "lathe-3", "--lang", "en"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(f + ":" + QString::number(badLine) + ": "), qPrintable(r.err));
         QVERIFY(r.err.contains("nothing was imported"));
+        // In Russian (the default): the same place, core's problem in Russian.
+        r = db({"import", f, "--as", "lathe-3"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(f + ":" + QString::number(badLine) + ": C040 = 9999999 вне диапазона") &&
+                     r.err.contains(QStringLiteral("ничего не импортировано")),
+                 qPrintable(r.err));
         QVERIFY(!db({"machines"}).out.contains("lathe-3"));
         // A cross-check error: the line of the first constant involved.
         QString cross = good;

@@ -7,6 +7,7 @@
 #include "machine/simulation.h"
 #include "units/units.h"
 #include "rig/controller_rig.h"
+#include "rig/watched_run.h"
 
 #include <functional>
 #include <memory>
@@ -21,29 +22,6 @@ namespace k528::testrig {
 using machine::Button;
 using machine::Fault;
 using machine::FaultSpec;
-
-// The simulated machine as engine/run.h drives it (machine::SimulationRunMachine),
-// calling `afterTick` after every tick: a test that watches a whole run.
-class WatchedSimulationRun final : public engine::RunMachine {
-public:
-    WatchedSimulationRun(machine::Simulation& sim, std::function<void()> afterTick)
-        : inner_(sim), afterTick_(std::move(afterTick)) {}
-    engine::Positioner& controller() override { return inner_.controller(); }
-    void tick() override {
-        inner_.tick();
-        afterTick_();
-    }
-    bool switchOn(std::int64_t maxMs) override { return inner_.switchOn(maxMs); }
-    void setOverrideCode(int code) override { inner_.setOverrideCode(code); }
-    void startReferenceCycle(AxisId a, int dir) override { inner_.startReferenceCycle(a, dir); }
-    void pressStart() override { inner_.pressStart(); }
-    bool startHeld() const override { return inner_.startHeld(); }
-    std::vector<int> mFunctions() const override { return inner_.mFunctions(); }
-
-private:
-    machine::SimulationRunMachine inner_;
-    std::function<void()> afterTick_;
-};
 
 class MachineRig : public ControllerRig {
 public:

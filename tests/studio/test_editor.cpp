@@ -13,8 +13,9 @@
 #include "editor/program_editor.h"
 #include "program/tokens.h"
 #include "profile/builtin.h"
-#include "controller/simulated_controller.h"
-#include "session/simulation_session.h"
+#include "rig/studio_rig.h"
+
+#include "test_util.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -38,14 +39,7 @@ int styleAt(ProgramEditor& ed, int pos) {
     return static_cast<int>(ed.SendScintilla(QsciScintilla::SCI_GETSTYLEAT, pos));
 }
 
-QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write(text);
-    return path;
-}
+using testutil::writeBytes;
 
 } // namespace
 
@@ -186,10 +180,8 @@ private slots:
     }
 
     void machineLimitsAreCheckedToo() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        EditorTab tab(&seam);
+        testrig::SimulatedSeam lathe(profile::builtin("training-lathe"));
+        EditorTab tab(&lathe.seam);
         tab.setPreviewBeforeSending(false);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
@@ -225,7 +217,7 @@ private slots:
 
     void unsavedChangesAreNotLostOnClose() {
         QTemporaryDir dir;
-        const QString path = write(dir, "p.k528", "%L1\nM30\n");
+        const QString path = writeBytes(dir, "p.k528", "%L1\nM30\n");
         QMainWindow window;
         auto* tab = new EditorTab(nullptr, &window);
         window.setCentralWidget(tab);
@@ -256,18 +248,16 @@ private slots:
     }
 
     void sendsThroughTheCheckThenLoadPath() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        EditorTab tab(&seam);
+        testrig::SimulatedSeam lathe(profile::builtin("training-lathe"));
+        EditorTab tab(&lathe.seam);
         tab.setPreviewBeforeSending(false);
         tab.newFile();
         tab.currentEditor()->setText("%L42 (sent)\nG1 X1 FX50\nM30\n");
         QVERIFY(tab.sendToController());
-        QVERIFY(session.controller().programs().contains(42));
+        QVERIFY(lathe.session.controller().programs().contains(42));
         tab.currentEditor()->setText("%L43\nGOTO 5\nM30\n");
         QVERIFY(!tab.sendToController());
-        QVERIFY(!session.controller().programs().contains(43));
+        QVERIFY(!lathe.session.controller().programs().contains(43));
     }
 
     void masterInsertsTheExpectedFrame() {
@@ -438,10 +428,8 @@ private slots:
     }
 
     void theMachineOfEachFile() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        EditorTab tab(&seam);
+        testrig::SimulatedSeam lathe(profile::builtin("training-lathe"));
+        EditorTab tab(&lathe.seam);
         tab.setPreviewBeforeSending(false);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
@@ -473,10 +461,8 @@ private slots:
     // lathe sample, test cli.cycle_time), measured off the window's thread;
     // an edit measures again, an error says there is none.
     void theCycleTimeIsInTheStatusLine() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController seamSim(session);
-        ViewedController seam(seamSim);
-        EditorTab tab(&seam);
+        testrig::SimulatedSeam lathe(profile::builtin("training-lathe"));
+        EditorTab tab(&lathe.seam);
         QFile sample(QStringLiteral(K528_SOURCE_DIR "/resources/samples/lathe-shaft.k528"));
         QVERIFY(sample.open(QIODevice::ReadOnly));
         tab.newFile();
@@ -555,7 +541,7 @@ private slots:
 
     void reloadWhenChangedOnDisk() {
         QTemporaryDir dir;
-        const QString path = write(dir, "r.k528", "%L1\nM30\n");
+        const QString path = writeBytes(dir, "r.k528", "%L1\nM30\n");
         EditorTab tab(nullptr);
         QVERIFY(tab.openFile(path));
         ProgramEditor* ed = tab.currentEditor();
@@ -565,14 +551,14 @@ private slots:
             return false;
         });
         // Not modified here: the new text is read without a question.
-        write(dir, "r.k528", "%L1\nG1 X1 FX50\nM30\n");
+        writeBytes(dir, "r.k528", "%L1\nG1 X1 FX50\nM30\n");
         QTRY_COMPARE_WITH_TIMEOUT(ed->text(), QString("%L1\nG1 X1 FX50\nM30\n"), 5000);
         QCOMPARE(asked, 0);
         QVERIFY(!ed->isModified());
         // Modified here: asked; «no» keeps the edits.
         ed->setCursorPosition(1, 0);
         ed->insert("N1 ");
-        write(dir, "r.k528", "%L1\nG1 X2 FX50\nM30\n");
+        writeBytes(dir, "r.k528", "%L1\nG1 X2 FX50\nM30\n");
         QTRY_COMPARE_WITH_TIMEOUT(asked, 1, 5000);
         QCOMPARE(ed->text(), QString("%L1\nN1 G1 X1 FX50\nM30\n"));
         QVERIFY(ed->isModified());

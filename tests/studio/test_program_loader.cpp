@@ -9,6 +9,8 @@
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
 
+#include "test_util.h"
+
 #include <QApplication>
 #include <QListWidget>
 #include <QMessageBox>
@@ -21,14 +23,7 @@ using namespace k528::studio;
 
 namespace {
 
-QString write(const QTemporaryDir& dir, const QString& name, const QByteArray& text) {
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly))
-        return {};
-    f.write(text);
-    return path;
-}
+using testutil::writeBytes;
 
 // Accepts the message box the next event loop shows (the report of a load).
 void closeNextBox() {
@@ -53,7 +48,7 @@ private slots:
         QTemporaryDir dir;
         MainWindow w;
         w.session()->setRunning(false);
-        const QString f = write(dir, "two.k528",
+        const QString f = writeBytes(dir, "two.k528",
                                 "%L12 (first)\nN1 G1 X40 FX200\nN2 M30\n%L3\nN1 R5=7\nN2 M17\n"
                                 "%MESSAGES\n#9=ПРОБА\n");
         const ProgramLoad r = loadProgramFile(*w.session(), f);
@@ -78,7 +73,7 @@ private slots:
         const engine::Positioner& ctl = w.session()->controller();
         const std::uint64_t before = ctl.programsRevision();
         // G2 is not in table 5 (47); L77 does not exist (45).
-        const QString f = write(dir, "bad.k528", "%L20\nN1 G2 X5\nN2 L77\nN3 M30\n");
+        const QString f = writeBytes(dir, "bad.k528", "%L20\nN1 G2 X5\nN2 L77\nN3 M30\n");
         const ProgramLoad r = loadProgramFile(*w.session(), f);
         QVERIFY(!r.loaded);
         QVERIFY(r.problem.contains("bad.k528"));
@@ -91,7 +86,7 @@ private slots:
         closeNextBox();
         QVERIFY(!w.loadProgramsFrom(f));
         // Outside the machine's soft limits: a warning, the program loads.
-        const QString far = write(dir, "far.k528", "%L21\nN1 G0 Z-900\nN2 M30\n");
+        const QString far = writeBytes(dir, "far.k528", "%L21\nN1 G0 Z-900\nN2 M30\n");
         const ProgramLoad g = loadProgramFile(*w.session(), far);
         QVERIFY2(g.loaded, qPrintable(g.problem));
         QCOMPARE(g.findings.size(), 1);
@@ -110,7 +105,7 @@ private slots:
         SimulationSession* s = w.session();
         s->setRunning(false);
         QTemporaryDir dir;
-        const QString f = write(dir, "dwell.k528", "%L30\nN1 G4 X30\nN2 M30\n");
+        const QString f = writeBytes(dir, "dwell.k528", "%L30\nN1 G4 X30\nN2 M30\n");
         QVERIFY(loadProgramFile(*s, f).loaded);
         machine::Simulation& sim = s->simulation();
         sim.pressFor(machine::Button::DrivesOn, 100);

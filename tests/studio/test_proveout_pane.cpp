@@ -10,10 +10,10 @@
 #include "profile/builtin.h"
 #include "profile/tools.h"
 #include "proveout/proveout_pane.h"
-#include "controller/simulated_controller.h"
+#include "rig/facing.h"
+#include "rig/studio_rig.h"
 #include "editor/problems_model.h"
 #include "language.h"
-#include "session/simulation_session.h"
 
 #include <QDockWidget>
 #include <QLabel>
@@ -31,23 +31,22 @@ using namespace k528::studio;
 
 namespace {
 
-// Facing, then the return rapid straight through the Ø40 bar (N4, line 6).
-const char* kBadFacing = "; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
-                         "%L1 (FACE)\n"
-                         "N1 G90 G0 M3 X44 Z2\n"
-                         "N2 Z-1\n"
-                         "N3 G1 X-1 FX150\n"
-                         "N4 G0 X44 Z-20\n"
-                         "N5 M30\n";
-// The same made safe: back along the face, then up.
-const char* kSafeFacing = "; UCG,2,Z-80Z0,X40X0,S0S0,0,-5\n"
-                          "%L1 (FACE)\n"
-                          "N1 G90 G0 M3 X44 Z2\n"
-                          "N2 Z-1\n"
-                          "N3 G1 X-1 FX150\n"
-                          "N4 G0 Z2\n"
-                          "N5 X44\n"
-                          "N6 M30\n";
+using testrig::kBadFacing;
+using testrig::kSafeFacing;
+
+// The editor with its prove-out pane on the training lathe's simulated
+// controller, as the technologist's workspace has them.
+struct PaneOnTheLathe {
+    testrig::SimulatedSeam rig{profile::builtin("training-lathe")};
+    EditorTab tab{&rig.seam};
+    ProveoutPane pane{&tab};
+    // A new file in the editor holding `text`: its editor.
+    ProgramEditor* newFile(const std::string& text) {
+        tab.newFile();
+        tab.currentEditor()->setText(QString::fromStdString(text));
+        return tab.currentEditor();
+    }
+};
 
 } // namespace
 
@@ -65,14 +64,9 @@ private slots:
     void cleanup() { setLanguage("en"); }
 
     void findsTheRapidAndShowsItsLine() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
-        ProveoutPane pane(&tab);
-        tab.newFile();
-        ProgramEditor* ed = tab.currentEditor();
-        ed->setText(QString::fromUtf8(kBadFacing));
+        PaneOnTheLathe fixture;
+        ProveoutPane& pane = fixture.pane;
+        ProgramEditor* ed = fixture.newFile(kBadFacing);
         ed->validateNow();
         pane.proveNow();
         QCOMPARE(pane.findings().size(), std::size_t(1));
@@ -107,7 +101,7 @@ private slots:
 
         // Without the file's blank: nothing to hit, and the summary says so;
         // the pane's blank gives it one.
-        QString noBlank = QString::fromUtf8(kBadFacing);
+        QString noBlank = QString::fromStdString(kBadFacing);
         noBlank.remove(0, noBlank.indexOf('\n') + 1);
         ed->setText(noBlank);
         ed->validateNow();
@@ -133,18 +127,16 @@ private slots:
     // language; activated, the cursor goes to the line; the boxed line's
     // hover says the finding. The safe program leaves none.
     void theFindingsAreInTheProblemsList() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
-        ProveoutPane pane(&tab);
+        PaneOnTheLathe fixture;
+        EditorTab& tab = fixture.tab;
+        ProveoutPane& pane = fixture.pane;
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
         QAbstractItemModel* problems = tab.problems()->model();
         for (const QString lang : {"en", "ru"}) {
             QVERIFY(setLanguage(lang));
             QCoreApplication::processEvents(); // the language change reaches the widgets
-            ed->setText(QString::fromUtf8(kBadFacing));
+            ed->setText(QString::fromStdString(kBadFacing));
             ed->validateNow();
             pane.proveNow();
             QCOMPARE(problems->rowCount(), 1);
@@ -183,7 +175,7 @@ private slots:
             QCOMPARE(place.at(0).at(3).toDouble(), pane.findings()[0].at.x);
 
             // Made safe: nothing listed, boxed or said.
-            ed->setText(QString::fromUtf8(kSafeFacing));
+            ed->setText(QString::fromStdString(kSafeFacing));
             ed->validateNow();
             pane.proveNow();
             QCOMPARE(problems->rowCount(), 0);
@@ -192,7 +184,7 @@ private slots:
         }
         QVERIFY(setLanguage("en"));
         // The blank changed: the finding comes and goes with it.
-        QString noBlank = QString::fromUtf8(kBadFacing);
+        QString noBlank = QString::fromStdString(kBadFacing);
         noBlank.remove(0, noBlank.indexOf('\n') + 1);
         ed->setText(noBlank);
         ed->validateNow();
@@ -211,16 +203,11 @@ private slots:
     }
 
     void anEditProvesAgainOnTheWorker() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
-        ProveoutPane pane(&tab);
-        tab.newFile();
-        ProgramEditor* ed = tab.currentEditor();
-        ed->setText(QString::fromUtf8(kBadFacing));
+        PaneOnTheLathe fixture;
+        ProveoutPane& pane = fixture.pane;
+        ProgramEditor* ed = fixture.newFile(kBadFacing);
         QTRY_COMPARE_WITH_TIMEOUT(pane.findings().size(), std::size_t(1), 20000);
-        ed->setText(QString::fromUtf8(kSafeFacing));
+        ed->setText(QString::fromStdString(kSafeFacing));
         QTRY_VERIFY_WITH_TIMEOUT(pane.findings().empty() && pane.summary()->text().startsWith("Nothing"),
                                  20000);
         QCOMPARE(pane.findingsTable()->rowCount(), 0);
@@ -228,14 +215,9 @@ private slots:
 
     void theMachinesToolsWithTheirOffsets() {
         const profile::MachineProfile lathe = profile::builtin("training-lathe");
-        SimulationSession session(lathe);
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
-        ProveoutPane pane(&tab);
-        tab.newFile();
-        tab.currentEditor()->setText(QString::fromUtf8(kSafeFacing));
-        tab.currentEditor()->validateNow();
+        PaneOnTheLathe fixture;
+        ProveoutPane& pane = fixture.pane;
+        fixture.newFile(kSafeFacing)->validateNow();
         pane.proveNow();
         const std::vector<profile::Tool> tools = profile::tools(lathe);
         QCOMPARE(tools.size(), std::size_t(4));
@@ -255,16 +237,12 @@ private slots:
     }
 
     void saysWhyNothingIsProved() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
-        ProveoutPane pane(&tab);
+        PaneOnTheLathe fixture;
+        EditorTab& tab = fixture.tab;
+        ProveoutPane& pane = fixture.pane;
         pane.proveNow();
         QVERIFY2(pane.summary()->text().contains("Open"), qPrintable(pane.summary()->text()));
-        tab.newFile();
-        ProgramEditor* ed = tab.currentEditor();
-        ed->setText(QString::fromUtf8(kBadFacing));
+        ProgramEditor* ed = fixture.newFile(kBadFacing);
         QVERIFY(tab.setFileMachine(0, EditorTab::kNoMachine));
         ed->validateNow();
         pane.proveNow();
@@ -289,13 +267,11 @@ private slots:
     // tool of the machine, the cycle time, the R presets (pdftotext reads it
     // back); without a machine it says why and writes nothing.
     void theSetupSheetOfTheEditorsFile() {
-        SimulationSession session(profile::builtin("training-lathe"));
-        SimulatedController sim(session);
-        ViewedController seam(sim);
-        EditorTab tab(&seam);
+        testrig::SimulatedSeam lathe(profile::builtin("training-lathe"));
+        EditorTab tab(&lathe.seam);
         tab.newFile();
         ProgramEditor* ed = tab.currentEditor();
-        ed->setText(QString::fromUtf8(kSafeFacing));
+        ed->setText(QString::fromStdString(kSafeFacing));
         ed->validateNow();
         auto* menu = tab.findChild<QMenu*>("menu.editor.setupSheet");
         QVERIFY(menu);

@@ -30,6 +30,8 @@
 #include "session/simulation_session.h"
 #include "workspace/workspaces.h"
 
+#include "rig/widgets.h"
+
 #include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
@@ -62,16 +64,7 @@ QString screenName() {
     return QStringLiteral("%1x%2").arg(a.width()).arg(a.height());
 }
 
-// The part of `w` its parents let show, in global coordinates.
-QRect shownRect(const QWidget* w) {
-    QRect r(w->mapToGlobal(QPoint(0, 0)), w->size());
-    for (const QWidget* p = w->parentWidget(); p; p = p->parentWidget()) {
-        r &= QRect(p->mapToGlobal(QPoint(0, 0)), p->size());
-        if (p->isWindow())
-            break;
-    }
-    return r;
-}
+using k528::testrig::shownRect;
 
 // A control the user is about to use: shown, whole (not cut by a pane), and
 // inside the screen.

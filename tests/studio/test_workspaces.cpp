@@ -17,6 +17,8 @@
 #include "workspace/elided_label.h"
 #include "workspace/workspaces.h"
 
+#include "rig/widgets.h"
+
 #include <QAbstractButton>
 #include <QAbstractItemView>
 #include <QAbstractSlider>
@@ -54,17 +56,7 @@ QString screenName() {
     return QStringLiteral("%1x%2%3").arg(a.width()).arg(a.height()).arg(dpr > 1 ? QStringLiteral("@%1x").arg(dpr) : QString());
 }
 
-// The part of `w` not clipped by its parents, in global coordinates (empty:
-// hidden behind a tab, scrolled out of its pane).
-QRect shownRect(const QWidget* w) {
-    QRect r(w->mapToGlobal(QPoint(0, 0)), w->size());
-    for (const QWidget* p = w->parentWidget(); p; p = p->parentWidget()) {
-        r &= QRect(p->mapToGlobal(QPoint(0, 0)), p->size());
-        if (p->isWindow())
-            break;
-    }
-    return r;
-}
+using k528::testrig::shownRect;
 
 bool isControl(const QWidget* w) {
     return qobject_cast<const QAbstractButton*>(w) || qobject_cast<const QComboBox*>(w) ||

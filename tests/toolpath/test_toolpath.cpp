@@ -4,6 +4,7 @@
 #include "profile/builtin.h"
 #include "program/parser.h"
 #include "machine/run.h"
+#include "rig/watched_run.h"
 #include "machine/simulation.h"
 #include "toolpath/actual_path.h"
 #include "toolpath/programmed_path.h"
@@ -237,43 +238,28 @@ private slots:
         machine::Simulation sim(prof);
         toolpath::LiveActualPath live(1.0);
         live.attach(sim);
-        struct Frames final : engine::RunMachine {
-            engine::RunMachine& m;
-            toolpath::LiveActualPath& live;
-            std::vector<std::size_t> sizes;
-            int ticks = 0, restarts = 0;
-            Frames(engine::RunMachine& inner, toolpath::LiveActualPath& l) : m(inner), live(l) {}
-            engine::Positioner& controller() override { return m.controller(); }
-            void tick() override {
-                m.tick();
-                if (++ticks % 16 == 0)
-                    flush();
-            }
-            void flush() {
-                const toolpath::LiveActualPath::Batch b = live.flush();
-                restarts += b.restarted;
-                if (b.raw > 0)
-                    sizes.push_back(live.path().samples.size());
-                QCOMPARE(b.firstNew + b.added, live.path().samples.size());
-            }
-            bool switchOn(std::int64_t ms) override { return m.switchOn(ms); }
-            void setOverrideCode(int c) override { m.setOverrideCode(c); }
-            void startReferenceCycle(engine::AxisId a, int d) override { m.startReferenceCycle(a, d); }
-            void pressStart() override { m.pressStart(); }
-            bool startHeld() const override { return m.startHeld(); }
-            std::vector<int> mFunctions() const override { return m.mFunctions(); }
+        std::vector<std::size_t> sizes;
+        int restarts = 0;
+        const auto flush = [&] {
+            const toolpath::LiveActualPath::Batch b = live.flush();
+            restarts += b.restarted;
+            if (b.raw > 0)
+                sizes.push_back(live.path().samples.size());
+            QCOMPARE(b.firstNew + b.added, live.path().samples.size());
         };
-        machine::SimulationRunMachine inner(sim);
-        Frames frames(inner, live);
+        testrig::WatchedSimulationRun frames(sim, [&, ticks = 0]() mutable {
+            if (++ticks % 16 == 0)
+                flush();
+        });
         const engine::RunResult r = engine::runProgram(frames, parsed.store, 1, ro);
         QCOMPARE(r.status, engine::RunStatus::Completed);
-        frames.flush();
+        flush();
         QVERIFY(!live.running());
         QCOMPARE(live.program(), 1);
-        QCOMPARE(frames.restarts, 1);
-        QVERIFY(frames.sizes.size() > 20); // it grew over many frames
-        QVERIFY(std::is_sorted(frames.sizes.begin(), frames.sizes.end()));
-        QVERIFY(frames.sizes.front() < frames.sizes.back() / 4);
+        QCOMPARE(restarts, 1);
+        QVERIFY(sizes.size() > 20); // it grew over many frames
+        QVERIFY(std::is_sorted(sizes.begin(), sizes.end()));
+        QVERIFY(sizes.front() < sizes.back() / 4);
         const toolpath::ActualPath& a = live.path();
         QCOMPARE(a.rawSamples, offline.rawSamples);
         QCOMPARE(a.samples.size(), offline.samples.size());

@@ -57,27 +57,9 @@ struct Layer {
         r->AddActor(actor);
     }
     // Replaces the contents with lines (4 floats a line) at depth z.
-    void lines(const std::vector<float>& v, double z) { setLines(data, v, z); }
+    void lines(const std::vector<float>& v, double z) { setCells(data, v, 2, z); }
     // Replaces the contents with triangles (6 floats a triangle) at depth z.
-    void triangles(const std::vector<float>& v, double z) {
-        vtkNew<vtkPoints> pts;
-        pts->SetDataTypeToFloat();
-        const vtkIdType n = static_cast<vtkIdType>(v.size() / 6);
-        pts->SetNumberOfPoints(3 * n);
-        vtkNew<vtkCellArray> cells;
-        cells->AllocateExact(n, 3 * n);
-        for (vtkIdType i = 0; i < n; ++i) {
-            const float* f = v.data() + 6 * i;
-            for (int k = 0; k < 3; ++k)
-                pts->SetPoint(3 * i + k, f[2 * k], f[2 * k + 1], z);
-            const vtkIdType ids[3] = {3 * i, 3 * i + 1, 3 * i + 2};
-            cells->InsertNextCell(3, ids);
-        }
-        data->Initialize();
-        data->SetPoints(pts);
-        data->SetPolys(cells);
-        data->Modified();
-    }
+    void triangles(const std::vector<float>& v, double z) { setCells(data, v, 3, z); }
 };
 } // namespace
 

@@ -1,5 +1,5 @@
-// Line segments into a vtkPolyData: the one way the backplot's layers and
-// the tool's edge fill their buffers.
+// Lines and triangles into a vtkPolyData: the one way the backplot's layers
+// and the tool's edge fill their buffers.
 #pragma once
 
 #include <vector>
@@ -8,7 +8,8 @@ class vtkPolyData;
 
 namespace k528::backplot {
 
-// Replaces the contents of `data` with lines (4 floats a line: x0, y0, x1, y1) at depth z.
-void setLines(vtkPolyData* data, const std::vector<float>& v, double z);
+// Replaces the contents of `data` with cells of `verticesPerCell` vertices at
+// depth z, 2 floats (x, y) a vertex: 2 vertices make lines, 3 triangles.
+void setCells(vtkPolyData* data, const std::vector<float>& v, int verticesPerCell, double z);
 
 } // namespace k528::backplot

@@ -177,7 +177,7 @@ void ToolEdge::show(const std::optional<profile::Tool>& tool, double z, double x
         return;
     tool_ = tool, z_ = z, x_ = x, shownPerMm_ = shownPerMm;
     const std::vector<float> v = toolEdgeLines(*tool, z, x, shownPerMm);
-    setLines(v_->data, v, 0.32); // just above the tool's cross (0.3)
+    setCells(v_->data, v, 2, 0.32); // just above the tool's cross (0.3)
     v_->actor->VisibilityOn();
     shown_ = true;
     ++rebuilds_;
