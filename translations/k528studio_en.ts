@@ -5451,6 +5451,81 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::RefusalTexts</name>
+    <message>
+        <source>F%1 selects no mode</source>
+        <translation>F%1 selects no mode</translation>
+    </message>
+    <message>
+        <source>the PLC sets the mode (Z1000.8-10 = %1)</source>
+        <translation>the PLC sets the mode (Z1000.8-10 = %1)</translation>
+    </message>
+    <message>
+        <source>override keys are L1..L4, not L%1</source>
+        <translation>override keys are L1..L4, not L%1</translation>
+    </message>
+    <message>
+        <source>program numbers are 1..99, not %1</source>
+        <translation>program numbers are 1..99, not %1</translation>
+    </message>
+    <message>
+        <source>R-parameters are R0..R299, not R%1</source>
+        <translation>R-parameters are R0..R299, not R%1</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262)</source>
+        <translation>R%1 is read only (R232..R262)</translation>
+    </message>
+    <message>
+        <source>%1 is outside -2147483648..2147483647</source>
+        <translation>%1 is outside -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>a program is executing</source>
+        <translation>a program is executing</translation>
+    </message>
+    <message>
+        <source>a program is active (running or held)</source>
+        <translation>a program is active (running or held)</translation>
+    </message>
+    <message>
+        <source>C-parameters are 1..152, not %1</source>
+        <translation>C-parameters are 1..152, not %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range %3 of «%4»</source>
+        <translation>%1 = %2 is outside the range %3 of «%4»</translation>
+    </message>
+    <message>
+        <source>C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)</source>
+        <translation>C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)</translation>
+    </message>
+    <message>
+        <source>153 values expected (C1..C152 at 1..152)</source>
+        <translation>153 values expected (C1..C152 at 1..152)</translation>
+    </message>
+    <message>
+        <source>C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)</source>
+        <translation>C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)</translation>
+    </message>
+    <message>
+        <source>memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)</source>
+        <translation>memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)</translation>
+    </message>
+    <message>
+        <source>axis %1 is not present</source>
+        <translation>axis %1 is not present</translation>
+    </message>
+    <message>
+        <source>the current value is set in ПРЕДУСТАНОВКИ (F4)</source>
+        <translation>the current value is set in ПРЕДУСТАНОВКИ (F4)</translation>
+    </message>
+    <message>
+        <source>the zero offset would leave the 32-bit range</source>
+        <translation>the zero offset would leave the 32-bit range</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RevisionNotes</name>
     <message>
         <source>built-in profile %1 (first start)</source>

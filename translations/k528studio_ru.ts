@@ -5451,6 +5451,81 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::RefusalTexts</name>
+    <message>
+        <source>F%1 selects no mode</source>
+        <translation>F%1 не выбирает режим</translation>
+    </message>
+    <message>
+        <source>the PLC sets the mode (Z1000.8-10 = %1)</source>
+        <translation>режим задан из ПЛК (Z1000.8-10 = %1)</translation>
+    </message>
+    <message>
+        <source>override keys are L1..L4, not L%1</source>
+        <translation>клавиши коррекции — L1..L4, а не L%1</translation>
+    </message>
+    <message>
+        <source>program numbers are 1..99, not %1</source>
+        <translation>номера программ — 1..99, а не %1</translation>
+    </message>
+    <message>
+        <source>R-parameters are R0..R299, not R%1</source>
+        <translation>R-параметры — R0..R299, а не R%1</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262)</source>
+        <translation>R%1 только для чтения (R232..R262)</translation>
+    </message>
+    <message>
+        <source>%1 is outside -2147483648..2147483647</source>
+        <translation>%1 вне диапазона -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>a program is executing</source>
+        <translation>выполняется программа</translation>
+    </message>
+    <message>
+        <source>a program is active (running or held)</source>
+        <translation>программа выполняется или остановлена</translation>
+    </message>
+    <message>
+        <source>C-parameters are 1..152, not %1</source>
+        <translation>C-параметры — 1..152, а не %1</translation>
+    </message>
+    <message>
+        <source>%1 = %2 is outside the range %3 of «%4»</source>
+        <translation>%1 = %2 вне диапазона %3 константы «%4»</translation>
+    </message>
+    <message>
+        <source>C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)</source>
+        <translation>C-параметры редактируются в режиме РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)</translation>
+    </message>
+    <message>
+        <source>153 values expected (C1..C152 at 1..152)</source>
+        <translation>нужно 153 значения (C1..C152 на местах 1..152)</translation>
+    </message>
+    <message>
+        <source>C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)</source>
+        <translation>C-параметры загружаются с ЭВМ в режиме УПРАВЛЕНИЕ ДАННЫМИ (F7)</translation>
+    </message>
+    <message>
+        <source>memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)</source>
+        <translation>память стирается в режиме УПРАВЛЕНИЕ ДАННЫМИ (F7)</translation>
+    </message>
+    <message>
+        <source>axis %1 is not present</source>
+        <translation>ось %1 отсутствует</translation>
+    </message>
+    <message>
+        <source>the current value is set in ПРЕДУСТАНОВКИ (F4)</source>
+        <translation>текущее значение задаётся в режиме ПРЕДУСТАНОВКИ (F4)</translation>
+    </message>
+    <message>
+        <source>the zero offset would leave the 32-bit range</source>
+        <translation>смещение нуля вышло бы за 32-разрядный диапазон</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RevisionNotes</name>
     <message>
         <source>built-in profile %1 (first start)</source>

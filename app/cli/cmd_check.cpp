@@ -1,5 +1,6 @@
 // k528 check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...
 // (shared/spec/cli.md; extensions in docs/program-language.md).
+#include "profile/problem_russian.h"
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -65,6 +66,12 @@ void printDescriptionError(const plc::DescriptionError& e, Lang lang) {
     const bool ru = lang == Lang::Ru;
     std::fprintf(stderr, ru ? "k528: описание станка %s\n" : "k528: machine description %s\n",
                  e.text(ru).c_str());
+}
+
+void printToolError(const std::exception& e, Lang lang) {
+    const bool ru = lang == Lang::Ru;
+    std::fprintf(stderr, ru ? "k528: инструменты станка: %s\n" : "k528: the machine's tools: %s\n",
+                 profile::errorText(e, ru).c_str());
 }
 
 bool parseLang(const std::string& text, Lang& lang) {

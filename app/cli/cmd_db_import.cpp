@@ -1,4 +1,5 @@
 // k528 db import (docs/database.md); helpers in db_cli_util.h.
+#include "profile/problem_russian.h"
 #include "db_cli_util.h"
 #include "db/notes.h"
 #include "args.h"
@@ -117,7 +118,9 @@ int cmdImport(std::span<const std::string> argv) {
                 p.name = *asName;
         }
     } catch (const profile::FileError& e) {
-        return fail(std::string(e.what()) + " (nothing was imported)", ExitInputErrors);
+        return fail(profile::fileErrorText(e, lang == Lang::Ru) +
+                        (lang == Lang::Ru ? " (ничего не импортировано)" : " (nothing was imported)"),
+                    ExitInputErrors);
     }
     DbTarget t;
     auto d = openDbOf(a, t, true, o.author, lang);

@@ -3,6 +3,7 @@
 // the size measured on the part against the drawing's gives the change of
 // the tool's offset R-parameter (profile/cutting.h; X measured as a
 // diameter), kept as the machine's next revision (docs/cli-decisions.md).
+#include "profile/problem_russian.h"
 #include "args.h"
 #include "cli.h"
 #include "db/database.h"
@@ -65,7 +66,8 @@ int cmdTrial(std::span<const std::string> argv) {
         try {
             tool = profile::toolAt(profile::tools(p), static_cast<int>(*station));
         } catch (const profile::ToolError& e) {
-            std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+            std::fprintf(stderr, ru ? "k528: инструменты станка: %s\n" : "k528: the machine's tools: %s\n",
+                         profile::errorText(e, ru).c_str());
             return ExitUsage;
         }
         if (!tool) {
@@ -79,7 +81,7 @@ int cmdTrial(std::span<const std::string> argv) {
             c = profile::cutting::trialCorrection(p, *tool, x ? catalog::Axis::X : catalog::Axis::Z, *measured,
                                                   *drawing);
         } catch (const profile::cutting::CuttingError& e) {
-            std::fprintf(stderr, "k528: %s\n", e.what());
+            std::fprintf(stderr, "k528: %s\n", profile::errorText(e, ru).c_str());
             return ExitUsage;
         }
         char line[256];

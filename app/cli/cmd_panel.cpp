@@ -1,4 +1,4 @@
-// k528 panel [--profile NAME|PATH] [--db PATH] [--machine] [--keys "KEY KEY …"] [--json]
+// k528 panel [--profile NAME|PATH] [--db PATH] [--machine] [--keys "KEY KEY …"] [--json] [--lang ru|en]
 // (shared/spec/cli.md; the screens in docs/panel.md).
 //
 // A freshly powered-on controller on the engine's ideal machine
@@ -16,6 +16,7 @@
 #include "engine/ideal_machine.h"
 #include "machine/simulation.h"
 #include "plc/description.h"
+#include "program_cli.h"
 #include "panel/keys.h"
 #include "panel/panel.h"
 #include "profile/builtin.h"
@@ -187,11 +188,16 @@ Json ledList(std::uint32_t bits, int count) {
 } // namespace
 
 int runPanel(std::span<const std::string> argv) {
-    const Args args(argv, {"--json", "--machine"}, {"--profile", "--db", "--keys"});
+    const Args args(argv, {"--json", "--machine"}, {"--profile", "--db", "--keys", "--lang"});
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
         return usageError("panel takes no file: give the keys with --keys \"KEY KEY ...\"");
+    // The LCD is the panel's own (Russian); --lang is the language of the messages on stderr.
+    Lang lang = Lang::Ru;
+    if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
+        return usageError("--lang is ru or en, not '" + *l + "'");
+    const bool ru = lang == Lang::Ru;
 
     const bool onMachine = args.has("--machine");
     std::vector<Step> steps;
@@ -227,7 +233,7 @@ int runPanel(std::span<const std::string> argv) {
             bench = std::make_unique<IdealBench>(profile);
         }
     } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        printDescriptionError(e, lang);
         return ExitUsage;
     }
     panel::Panel k923(bench->controller());
@@ -246,8 +252,10 @@ int runPanel(std::span<const std::string> argv) {
             if (const auto* k = std::get_if<panel::KeyPress>(&s)) {
                 if (refusedByLock(*k))
                     std::fprintf(stderr,
-                                 "k528: key %s refused: the machine constants are locked by the trainer for "
-                                 "the class «%s» (setting constants.lock of the machine)\n",
+                                 ru ? "k528: клавиша %s не принята: константы станка заблокированы "
+                                      "преподавателем для группы «%s» (настройка constants.lock станка)\n"
+                                    : "k528: key %s refused: the machine constants are locked by the trainer for "
+                                      "the class «%s» (setting constants.lock of the machine)\n",
                                  k->key == panel::Key::F5 ? "F5" : "ENTER", lockedFor.c_str());
                 else
                     k923.press(*k);

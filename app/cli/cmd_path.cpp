@@ -217,7 +217,7 @@ int runPath(std::span<const std::string> argv) {
         printDescriptionError(e, setup.lang);
         return ExitUsage;
     } catch (const profile::ToolError& e) {
-        std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+        printToolError(e, setup.lang);
         return ExitUsage;
     }
     const toolpath::ProgrammedPath& path = proof.path;

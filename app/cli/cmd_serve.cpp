@@ -1,4 +1,5 @@
 // k528 serve --port DEVICE|--tcp HOST:PORT [--profile …] [--address A] [--baud B] [--parity …] [--keys "…"]
+// [--lang ru|en] (its own messages on stderr; docs/cli-decisions.md)
 // (cli.md): the simulated K528-05 — the machine of `k528 run`, its PLC and
 // K923 — as a Modbus RTU server (--keys: the K923's keys, WAIT:S, and the
 // pendant's buttons PUSH:NAME, HOLD:NAME:S, PULL:ESTOP as `k528 panel
@@ -15,6 +16,7 @@
 #include "panel/keys.h"
 #include "panel/panel.h"
 #include "plc/description.h"
+#include "plc/json_reader.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -31,12 +33,17 @@ namespace k528::cli {
 
 int runServeQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
-    options.insert(options.end(), {"--profile", "--db", "--keys"});
+    options.insert(options.end(), {"--profile", "--db", "--keys", "--lang"});
     const Args args(argv, {"--stdin-keys"}, options);
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
         return usageError("serve takes no file");
+    // (k528-link holds no cmd_check.cpp: its parseLang and printDescriptionError are said here.)
+    const auto lang = args.value("--lang");
+    if (lang && *lang != "ru" && *lang != "en")
+        return usageError("--lang is ru or en, not '" + *lang + "'");
+    const bool ru = lang.value_or("ru") == "ru";
     const auto line = lineSettings(args);
     if (!line)
         return ExitUsage;
@@ -68,7 +75,7 @@ int runServeQt(std::span<const std::string> argv) {
     try {
         sim = std::make_unique<machine::Simulation>(*prof);
     } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, "k528: machine description %s\n", e.what());
+        std::fprintf(stderr, ru ? "k528: описание станка %s\n" : "k528: machine description %s\n", e.text(ru).c_str());
         return ExitUsage;
     }
     sim->powerOn();
@@ -96,15 +103,20 @@ int runServeQt(std::span<const std::string> argv) {
     const QString identity = QStringLiteral("K528-05 simulated by k528 serve: %1").arg(QString::fromStdString(prof->name));
     std::unique_ptr<linkplugin::Server> server = plugin->openServer(*line, handler, identity, error);
     if (!server) {
-        std::fprintf(stderr, "k528: cannot serve on %s: %s\n", line->port.toUtf8().constData(),
+        std::fprintf(stderr, ru ? "k528: не удаётся обслуживать линию %s: %s\n" : "k528: cannot serve on %s: %s\n",
+                     line->port.toUtf8().constData(),
                      error.toUtf8().constData());
         return ExitUsage;
     }
     if (isTcpLine(args))
-        std::fprintf(stderr, "k528 serve: %s on Modbus TCP %s, unit %d; SIGINT/SIGTERM stops\n", prof->name.c_str(),
-                     line->port.toUtf8().constData(), line->address);
+        std::fprintf(stderr,
+                     ru ? "k528 serve: %s на Modbus TCP %s, устройство %d; SIGINT/SIGTERM останавливает\n"
+                        : "k528 serve: %s on Modbus TCP %s, unit %d; SIGINT/SIGTERM stops\n",
+                     prof->name.c_str(), line->port.toUtf8().constData(), line->address);
     else
-        std::fprintf(stderr, "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
+        std::fprintf(stderr,
+                     ru ? "k528 serve: %s на %s, адрес %d, %d %c%d; SIGINT/SIGTERM останавливает\n"
+                        : "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
                      prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
                      line->parity, line->stopBits);
     std::fflush(stderr);
@@ -131,7 +143,10 @@ int runServeQt(std::span<const std::string> argv) {
                     if (const auto k = panel::parseKey(token))
                         k923.press(*k);
                     else
-                        std::fprintf(stderr, "k528 serve: unknown key '%s' on standard input: ignored\n", token.c_str());
+                        std::fprintf(stderr,
+                                     ru ? "k528 serve: неизвестная клавиша «%s» со стандартного ввода пропущена\n"
+                                        : "k528 serve: unknown key '%s' on standard input: ignored\n",
+                                     token.c_str());
                 }
             }
         });
@@ -154,7 +169,9 @@ int runServeQt(std::span<const std::string> argv) {
     });
     tick.start(5);
     QCoreApplication::exec();
-    std::fprintf(stderr, "k528 serve: stopped after %lld requests, %d texts committed\n",
+    std::fprintf(stderr,
+                 ru ? "k528 serve: остановлен; запросов: %lld, принято текстов: %d\n"
+                    : "k528 serve: stopped after %lld requests, %d texts committed\n",
                  static_cast<long long>(server->requests()), image.commits());
     return ExitOk;
 }

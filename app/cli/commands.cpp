@@ -79,7 +79,7 @@ std::span<const Command> commands() {
          "  --lang ru|en         language of the plain output and diagnostics (default ru)\n"
          "Exit codes: 0 completed; 1 errors in the file, an alarm or a timeout; 2 usage or I/O error.\n",
          runRun},
-        {"panel", "panel [--profile NAME|PATH] [--db PATH] [--machine] [--keys \"KEY KEY ...\"] [--json]",
+        {"panel", "panel [--profile NAME|PATH] [--db PATH] [--machine] [--keys \"KEY KEY ...\"] [--json] [--lang ru|en]",
          "Press keys on the K923 panel of a freshly powered-on controller and print the LCD.",
          "Options:\n"
          "  --profile NAME|PATH  machine profile: a machine of the database, else built in\n"
@@ -99,6 +99,7 @@ std::span<const Command> commands() {
          "                       PLCMODE:N the PLC imposes mode N (1..7, F1..F7); PLCMODE:0 lets go\n"
          "  --json               print {\"lines\":[4],\"leds\":{\"green\":[K],\"red\":[K],\"override\":[L],\n"
          "                       \"shift\":bool},\"blink\":{\"row\",\"column\",\"length\"}|null}\n"
+         "  --lang ru|en         language of the messages on stderr (default ru; the LCD is the panel's)\n"
          "Prints the 4 LCD lines, 20 characters each. Screens: docs/panel.md.\n",
          runPanel},
         {"path",
@@ -194,7 +195,7 @@ std::span<const Command> commands() {
          "One file: a report; several: a table. Exit codes: 0 every file passed; 1 some did not;\n"
          "2 usage or I/O error.\n",
          runGrade},
-        {"serve", "serve --port DEVICE|--tcp HOST:PORT [--profile NAME|PATH] [--db PATH] [--address A] [--baud B] [--parity none|even|odd] [--keys \"KEY ...\"] [--stdin-keys]",
+        {"serve", "serve --port DEVICE|--tcp HOST:PORT [--profile NAME|PATH] [--db PATH] [--address A] [--baud B] [--parity none|even|odd] [--keys \"KEY ...\"] [--stdin-keys] [--lang ru|en]",
          "The simulated K528-05 as a Modbus RTU server on a serial device, in real time.",
          "Options:\n"
          "  --port DEVICE        serial port or one end of a pty pair\n"
@@ -205,6 +206,7 @@ std::span<const Command> commands() {
          "  --keys \"KEY ...\"     K923 keys pressed before serving (those of `k528 panel`), e.g.\n"
          "                       \"F7 DOWN DOWN ENTER\" for УПРАВЛЕНИЕ ДАННЫМИ «РАБОТА С ПЭВМ»\n"
          "  --stdin-keys         also keys read from standard input while serving, a line at a time\n"
+         "  --lang ru|en         language of the messages on stderr (default ru)\n"
          "The register map: shared/spec/link.md, docs/link.md. Runs until SIGINT/SIGTERM.\n",
          runServe},
         {"link", "link --port DEVICE|--tcp HOST:PORT [--address A] [--baud B] [--parity none|even|odd] ping|status|pull|push|clear|diag|watch|scan ... | link --list",

@@ -1,5 +1,6 @@
 // Helpers shared by the `k528 db` subcommands (db_cli_util.h) and the
 // `k528 db` dispatcher.
+#include "profile/problem_russian.h"
 #include "db_cli_util.h"
 #include "args.h"
 #include "catalog/cparams.h"
@@ -155,6 +156,8 @@ int dbFail(const db::Error& e, Lang lang) {
         return fail(e.what(), ExitInputErrors);
     if (const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e))
         return fail(r->text(lang), ExitUsage);
+    if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->problem().empty() && lang == Lang::Ru)
+        return fail("отклонено, ничего не записано: " + profile::problemText(v->problem(), true), ExitInputErrors);
     return fail(e.what(), e.kind() == db::ErrorKind::Invalid ? ExitInputErrors : ExitUsage);
 }
 

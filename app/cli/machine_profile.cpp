@@ -1,3 +1,4 @@
+#include "profile/problem_russian.h"
 #include "machine_profile.h"
 
 #include "db/location.h"
@@ -14,7 +15,8 @@ std::optional<profile::MachineProfile> machineProfile(const Args& args) {
     try {
         return db::loadProfile(name, args.value("--db").value_or(std::string()));
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "k528: %s\n", e.what());
+        // In the command's --lang (Russian unless "en", as every command's default).
+        std::fprintf(stderr, "k528: %s\n", profile::errorText(e, args.value("--lang") != "en").c_str());
         return std::nullopt;
     }
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <optional>
 #include <span>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ enum class Lang { Ru, En };
 
 // "k528: machine description FILE: PATH: what is wrong" on stderr, in `lang`.
 void printDescriptionError(const plc::DescriptionError& e, Lang lang);
+// "k528: the machine's tools: what is wrong" on stderr, in `lang`.
+void printToolError(const std::exception& e, Lang lang);
 
 // "ru" / "en" -> Lang; false for anything else.
 bool parseLang(const std::string& text, Lang& lang);

@@ -93,7 +93,7 @@ bool withMachineData(Lang lang, const std::function<void()>& prove) {
     } catch (const plc::DescriptionError& e) {
         printDescriptionError(e, lang);
     } catch (const profile::ToolError& e) {
-        std::fprintf(stderr, "k528: the machine's tools: %s\n", e.what());
+        printToolError(e, lang);
     }
     return false;
 }

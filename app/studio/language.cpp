@@ -1,4 +1,5 @@
 #include "language.h"
+#include "window_language.h"
 
 #include <QCoreApplication>
 #include <QLibraryInfo>
@@ -83,6 +84,8 @@ bool setLanguage(const QString& language) {
 }
 
 QString currentLanguage() { return current(); }
+
+bool russianWindow() { return current() == QLatin1String("ru"); }
 
 bool qtTranslationsLoaded() { return qtInstalled(); }
 

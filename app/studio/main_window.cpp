@@ -28,6 +28,7 @@
 #include "engine/self_test.h"
 #include "k923/k923_widget.h"
 #include "language.h"
+#include "window_language.h"
 #include "machine/fault_texts.h"
 #include "machine/machine_panel.h"
 #include "machine/status_views.h"
@@ -408,7 +409,7 @@ void MainWindow::createMenus() {
     }
     russianAction_->setObjectName("action.language.ru");
     englishAction_->setObjectName("action.language.en");
-    (currentLanguage() == "ru" ? russianAction_ : englishAction_)->setChecked(true);
+    (russianWindow() ? russianAction_ : englishAction_)->setChecked(true);
     connect(russianAction_, &QAction::triggered, this, [] { setLanguage("ru"); });
     connect(englishAction_, &QAction::triggered, this, [] { setLanguage("en"); });
 

@@ -15,7 +15,7 @@ void mergePrograms(program::ProgramStore& into, const program::ProgramStore& fro
 OpResult loadPrograms(Positioner& ctl, const program::ProgramStore& from) {
     program::ProgramStore* store = ctl.editablePrograms();
     if (!store)
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
     mergePrograms(*store, from);
     return ctl.programsEdited();
 }

@@ -3,6 +3,7 @@
 #include "catalog/messages.h"
 #include "engine/coordinates.h"
 #include "engine/self_test.h"
+#include "profile/problem.h"
 #include "profile/validate.h"
 #include "util/same_bytes.h"
 
@@ -38,12 +39,6 @@ constexpr int axisMsg(int x, int z, int a) {
     return a == 0 ? x : z;
 }
 
-// Concatenation without operator+ on temporaries (GCC 12 -Wrestrict false positives).
-template <class... T> std::string cat(const T&... parts) {
-    std::string s;
-    (s.append(parts), ...);
-    return s;
-}
 std::string num(std::int64_t v) {
     return std::to_string(v);
 }
@@ -56,9 +51,9 @@ int channelIndex(std::int64_t code) {
 // mode and with no program active: the refusal, or none.
 std::optional<OpResult> memoryClearRefused(Mode mode, ProgramState state) {
     if (mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode, "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+        return OpResult::refused(Refusal::WrongMode, "clear-mode");
     if (programActive(state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
     return std::nullopt;
 }
 
@@ -1069,10 +1064,9 @@ void Positioner::refreshR() {
 OpResult Positioner::selectMode(Mode m) {
     wake();
     if (!validModeKey(modeKey(m)))
-        return OpResult::refused(Refusal::NoSuchKey, cat("F", num(modeKey(m)), " selects no mode"));
+        return OpResult::refused(Refusal::NoSuchKey, "mode-key", {num(modeKey(m))});
     if (c_.modeFromPlc)
-        return OpResult::refused(Refusal::ModeFromPlc, cat("the PLC sets the mode (Z1000.8-10 = ",
-                                                           num(modeKey(c_.mode)), ")"));
+        return OpResult::refused(Refusal::ModeFromPlc, "mode-from-plc", {num(modeKey(c_.mode))});
     c_.panelMode = m;
     if (c_.powered)
         changeMode(m);
@@ -1082,8 +1076,7 @@ OpResult Positioner::selectMode(Mode m) {
 OpResult Positioner::pressOverrideKey(int l) {
     wake();
     if (l < 1 || l > 4)
-        return OpResult::refused(Refusal::NoSuchKey,
-                                 cat("override keys are L1..L4, not L", num(l)));
+        return OpResult::refused(Refusal::NoSuchKey, "override-key", {num(l)});
     const std::int64_t code = c_.c[c::overrideKey(l)];
     c_.panelOverrideCode = static_cast<int>(std::clamp<std::int64_t>(code, 0, 10));
     if (!(c_.words.word(1001) & (1u << 11)))
@@ -1095,8 +1088,7 @@ OpResult Positioner::pressOverrideKey(int l) {
 OpResult Positioner::selectProgram(int number) {
     wake();
     if (number < 1 || number > program::kMaxPrograms)
-        return OpResult::refused(Refusal::NoSuchProgram,
-                                 cat("program numbers are 1..99, not ", num(number)));
+        return OpResult::refused(Refusal::NoSuchProgram, "program-number", {num(number)});
     c_.r.set(r::SelectedProgram, number);
     return OpResult::accepted();
 }
@@ -1104,16 +1096,13 @@ OpResult Positioner::selectProgram(int number) {
 OpResult Positioner::setR(int number, std::int64_t value) {
     wake();
     if (!rValid(number))
-        return OpResult::refused(Refusal::NoSuchParameter,
-                                 cat("R-parameters are R0..R299, not R", num(number)));
+        return OpResult::refused(Refusal::NoSuchParameter, "r-number", {num(number)});
     if (rReadOnly(number))
-        return OpResult::refused(Refusal::ReadOnly,
-                                 cat("R", num(number), " is read only (R232..R262)"));
+        return OpResult::refused(Refusal::ReadOnly, "r-read-only", {num(number)});
     if (!fitsR(value))
-        return OpResult::refused(Refusal::ValueOutOfRange,
-                                 cat(num(value), " is outside -2147483648..2147483647"));
+        return OpResult::refused(Refusal::ValueOutOfRange, "r-range", {num(value)});
     if (executing(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is executing");
+        return OpResult::refused(Refusal::ProgramActive, "program-executing");
     c_.r.set(number, static_cast<std::int32_t>(value));
     // R256/R257: the panel's write, as the K923 hands it to the positioner.
     c_.r.set(r::PanelValue, static_cast<std::int32_t>(value));
@@ -1124,15 +1113,13 @@ OpResult Positioner::setR(int number, std::int64_t value) {
 OpResult Positioner::setC(int number, std::int64_t value) {
     wake();
     if (number < 1 || number > kCCount)
-        return OpResult::refused(Refusal::NoSuchParameter,
-                                 cat("C-parameters are 1..152, not ", num(number)));
+        return OpResult::refused(Refusal::NoSuchParameter, "c-number", {num(number)});
     if (c_.mode != Mode::MachineData)
-        return OpResult::refused(Refusal::WrongMode,
-                                 "C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)");
+        return OpResult::refused(Refusal::WrongMode, "c-mode");
     if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
-    if (const std::string e = profile::checkCValue(number, value); !e.empty())
-        return OpResult::refused(Refusal::ValueOutOfRange, e);
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
+    if (const profile::Problem e = profile::cValueProblem(number, value); !e.empty())
+        return OpResult::refused(Refusal::ValueOutOfRange, "c-range", e.args);
     c_.c[static_cast<std::size_t>(number)] = value;
     c_.profile.setC(number, value);
     c_.applyConstants();
@@ -1144,19 +1131,15 @@ OpResult Positioner::setCurrentValue(AxisId axis, std::int64_t valueDisc) {
     wake();
     AxisUnit& u = c_.axes[static_cast<std::size_t>(axisIndex(axis))];
     if (!u.present)
-        return OpResult::refused(
-            Refusal::AxisAbsent,
-            cat("axis ", std::string(axis::axisName(axis)), " is not present"));
+        return OpResult::refused(Refusal::AxisAbsent, "axis-absent", {std::string(axis::axisName(axis))});
     if (c_.mode != Mode::SetActual)
-        return OpResult::refused(Refusal::WrongMode,
-                                 "the current value is set in ПРЕДУСТАНОВКИ (F4)");
+        return OpResult::refused(Refusal::WrongMode, "set-actual-mode");
     if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
     const std::int64_t zo =
         zeroOffsetFor(u.machineDisc(), valueDisc, c_.r, u.index, c_.exclusion(u.index));
     if (!fitsR(zo) || !fitsR(valueDisc))
-        return OpResult::refused(Refusal::ValueOutOfRange,
-                                 "the zero offset would leave the 32-bit range");
+        return OpResult::refused(Refusal::ValueOutOfRange, "zero-offset-range");
     c_.r.set(r::ZeroOffsetX + u.index, static_cast<std::int32_t>(zo));
     refreshR();
     return OpResult::accepted();
@@ -1185,7 +1168,7 @@ program::ProgramStore* Positioner::editablePrograms() {
 OpResult Positioner::programsEdited() {
     wake();
     if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
     for (program::Program& p : c_.store.programs())
         p.reindex();
     storeCorrupt_ = false;
@@ -1197,15 +1180,14 @@ OpResult Positioner::programsEdited() {
 OpResult Positioner::loadCParameters(std::span<const std::int64_t> c) {
     wake();
     if (c_.mode != Mode::DataControl)
-        return OpResult::refused(Refusal::WrongMode,
-                                 "C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)");
+        return OpResult::refused(Refusal::WrongMode, "c-load-mode");
     if (programActive(c_.state))
-        return OpResult::refused(Refusal::ProgramActive, "a program is active");
+        return OpResult::refused(Refusal::ProgramActive, "program-active");
     if (c.size() != static_cast<std::size_t>(kCCount) + 1)
-        return OpResult::refused(Refusal::NoSuchParameter, "153 values expected (C1..C152 at 1..152)");
+        return OpResult::refused(Refusal::NoSuchParameter, "c-count");
     for (int n = 1; n <= kCCount; ++n)
-        if (const std::string e = profile::checkCValue(n, c[static_cast<std::size_t>(n)]); !e.empty())
-            return OpResult::refused(Refusal::ValueOutOfRange, e);
+        if (const profile::Problem e = profile::cValueProblem(n, c[static_cast<std::size_t>(n)]); !e.empty())
+            return OpResult::refused(Refusal::ValueOutOfRange, "c-range", e.args);
     for (int n = 1; n <= kCCount; ++n) {
         c_.c[static_cast<std::size_t>(n)] = c[static_cast<std::size_t>(n)];
         c_.profile.setC(n, c[static_cast<std::size_t>(n)]);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace k528::engine {
 
@@ -79,13 +80,20 @@ enum class Refusal : std::uint8_t {
     NotPowered,      // before powerOn()
 };
 
+// An operator function's answer: accepted, or refused with why as an id of
+// refusal_texts.h and its arguments (the value and the limit).
 struct OpResult {
     Refusal refusal = Refusal::None;
-    std::string detail; // English, names the value and the limit
+    std::string id;
+    std::vector<std::string> args;
 
     bool ok() const { return refusal == Refusal::None; }
+    // Why, in Russian or English (refusal_texts.h; "" when accepted).
+    std::string text(bool russian = false) const;
     static OpResult accepted() { return {}; }
-    static OpResult refused(Refusal r, std::string why) { return {r, std::move(why)}; }
+    static OpResult refused(Refusal r, std::string id, std::vector<std::string> args = {}) {
+        return {r, std::move(id), std::move(args)};
+    }
 };
 std::string_view refusalTextEn(Refusal r);
 std::string_view refusalTextRu(Refusal r);

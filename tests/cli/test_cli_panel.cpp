@@ -155,6 +155,51 @@ private slots:
         QVERIFY2(ideal.out.startsWith("АВТ"), qPrintable(ideal.out));
     }
 
+    // --lang: the messages on stderr in Russian (the default) or English,
+    // as the other commands; here a hand-made machine description that
+    // cannot be used, for `k528 panel` and `k528 serve` alike.
+    void language() {
+        QTemporaryDir dir;
+        const auto write = [&](const QString& name, const QByteArray& text) {
+            QFile f(dir.filePath(name));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(text);
+        };
+        write("when.json", R"({"format": 1, "name": "b", "alarms": [{"k": 1, "when": "nosuch"}]})");
+        QFile lathe(QStringLiteral(K528_SOURCE_DIR "/resources/profiles/training-lathe.k528m"));
+        QVERIFY(lathe.open(QIODevice::ReadOnly));
+        QByteArray machine = lathe.readAll();
+        const QByteArray builtIn = "\nmachine=training-lathe\n";
+        QVERIFY(machine.contains(builtIn));
+        machine.replace(builtIn, "\nmachine=" + dir.filePath("when.json").toUtf8() + "\n");
+        write("broken.k528m", machine);
+        const QString profile = dir.filePath("broken.k528m");
+        for (const QStringList& command : {QStringList{"panel", "--machine"},
+                                          QStringList{"serve", "--tcp", "127.0.0.1:1502"}}) {
+            const auto ru = runK528(command + QStringList{"--profile", profile});
+            QCOMPARE(ru.exitCode, 2);
+            QVERIFY2(ru.err.startsWith(QStringLiteral("k528: описание станка ")) &&
+                         ru.err.contains(QStringLiteral("неизвестный сигнал «nosuch»")),
+                     qPrintable(ru.err));
+            const auto en = runK528(command + QStringList{"--profile", profile, "--lang", "en"});
+            QCOMPARE(en.exitCode, 2);
+            QVERIFY2(en.err.startsWith(QStringLiteral("k528: machine description ")) &&
+                         en.err.contains(QStringLiteral("unknown signal 'nosuch'")),
+                     qPrintable(en.err));
+            // A profile that is none: core's problem in the language asked for.
+            const auto noneRu = runK528(command + QStringList{"--profile", "no-such-machine"});
+            QCOMPARE(noneRu.exitCode, 2);
+            QVERIFY2(noneRu.err.contains(QStringLiteral("no-such-machine: это не встроенный профиль")),
+                     qPrintable(noneRu.err));
+            const auto noneEn = runK528(command + QStringList{"--profile", "no-such-machine", "--lang", "en"});
+            QVERIFY2(noneEn.err.contains(QStringLiteral("no-such-machine: neither a built-in profile")),
+                     qPrintable(noneEn.err));
+            const auto bad = runK528(command + QStringList{"--lang", "de"});
+            QCOMPARE(bad.exitCode, 2);
+            QVERIFY2(bad.err.contains("--lang is ru or en"), qPrintable(bad.err));
+        }
+    }
+
     void errors_data() {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");

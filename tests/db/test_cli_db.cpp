@@ -386,7 +386,7 @@ private slots:
         QVERIFY(at > 0);
         text.insert(at + 1, "\xEF\xBB\xBF");
         QVERIFY(writeFile(f, text));
-        const auto r = db({"import", f, "--as", "joined"});
+        const auto r = db({"import", f, "--as", "joined", "--lang", "en"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains("U+FEFF (byte-order mark)"), qPrintable(r.err));
         QVERIFY(!r.err.contains(QChar(0xFEFF)));
@@ -414,10 +414,16 @@ private slots:
         const int badLine = lineOf(bad, "C040=");
         bad.replace("\nC040_=", "\n;");
         QVERIFY(writeFile(f, bad.toUtf8()));
-        r = db({"import", f, "--as", "lathe-3"});
+        r = db({"import", f, "--as", "lathe-3", "--lang", "en"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(f + ":" + QString::number(badLine) + ": "), qPrintable(r.err));
         QVERIFY(r.err.contains("nothing was imported"));
+        // In Russian (the default): the same place, core's problem in Russian.
+        r = db({"import", f, "--as", "lathe-3"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(f + ":" + QString::number(badLine) + ": C040 = 9999999 вне диапазона") &&
+                     r.err.contains(QStringLiteral("ничего не импортировано")),
+                 qPrintable(r.err));
         QVERIFY(!db({"machines"}).out.contains("lathe-3"));
         // A cross-check error: the line of the first constant involved.
         QString cross = good;

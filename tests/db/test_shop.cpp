@@ -605,10 +605,16 @@ private slots:
         QVERIFY2(r.exitCode != 0 && r.err.contains(QStringLiteral("«TM-21»")), qPrintable(r.out + r.err));
         QCOMPARE(db({"export", "grinder-205"}).out, before);
         // The K923 of `k528 panel` refuses F5 (РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ) as the studio's.
-        r = runK528({"panel", "--profile", "grinder-205", "--db", where, "--keys", "F5"});
+        r = runK528({"panel", "--profile", "grinder-205", "--db", where, "--keys", "F5", "--lang", "en"});
         QVERIFY2(r.exitCode == 0 && r.err.contains(QStringLiteral("key F5 refused")) &&
                      r.err.contains(QStringLiteral("«TM-21»")),
                  qPrintable(r.out + r.err));
+        // In Russian, as the other commands (--lang ru, the default).
+        r = runK528({"panel", "--profile", "grinder-205", "--db", where, "--keys", "F5"});
+        QVERIFY2(r.exitCode == 0 && r.err.contains(QStringLiteral("клавиша F5 не принята")) &&
+                     r.err.contains(QStringLiteral("«TM-21»")),
+                 qPrintable(r.out + r.err));
+        QCOMPARE(runK528({"panel", "--lang", "de"}).exitCode, 2);
         // What is not a constant may change.
         r = db({"set", "grinder-205", "R12=5"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));

@@ -126,7 +126,8 @@ private slots:
         QCOMPARE(r.ctl->r(257), (1 << 16) | 228);
         const auto ro = r.ctl->setR(232, 1);
         QCOMPARE(ro.refusal, k528::engine::Refusal::ReadOnly);
-        QVERIFY(QString::fromStdString(ro.detail).contains("read only"));
+        QCOMPARE(ro.text(), std::string("R232 is read only (R232..R262)"));
+        QCOMPARE(ro.text(true), std::string("R232 только для чтения (R232..R262)"));
         QCOMPARE(r.ctl->setR(300, 1).refusal, k528::engine::Refusal::NoSuchParameter);
         QCOMPARE(r.ctl->setR(1, 3000000000LL).refusal, k528::engine::Refusal::ValueOutOfRange);
         r.load("%L1\nN1 G4 X2\n");

@@ -103,7 +103,7 @@ private slots:
         QCOMPARE(r.ctl->c()[22], 5000);
         const auto bad = r.ctl->setC(29, 5000); // МАКС.ЦАП 0..2047
         QCOMPARE(bad.refusal, Refusal::ValueOutOfRange);
-        QVERIFY(!bad.detail.empty());
+        QCOMPARE(bad.text(), std::string("C029 = 5000 is outside the range 0...2047 of «МАКС.ЦАП»"));
         QCOMPARE(r.ctl->setC(153, 0).refusal, Refusal::NoSuchParameter);
         QVERIFY(r.ctl->selectMode(Mode::DataControl).ok());
         QVERIFY(r.ctl->setR(5, 7).ok());

@@ -51,6 +51,8 @@
 #include "controller/simulated_controller.h"
 #include "editor/program_editor.h"
 #include "profile/diff.h"
+#include "engine/refusal_texts.h"
+#include "profile/problem_russian.h"
 #include "engine/types.h"
 #include "program/model.h"
 #include "session/machine_source.h"
@@ -960,6 +962,30 @@ void TestUiLanguage::russianCoreTexts() {
     for (int r = 1; r <= static_cast<int>(engine::Refusal::NotPowered); ++r) {
         const auto refusal = static_cast<engine::Refusal>(r);
         QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
+    }
+    // Core's problems: the same Russian as the command line's (`k528 … --lang ru`).
+    for (const profile::ProblemText& t : profile::problemTexts()) {
+        const profile::Problem p = profile::problem(std::string(t.id), {"C022", "9", "10...5000", "X"});
+        QCOMPARE(studio::problemText(p), QString::fromStdString(profile::problemText(p, true)));
+    }
+    // Why, with the value and the limit: the same Russian as core's catalog.
+    for (const engine::RefusalText& t : engine::refusalTexts()) {
+        QVERIFY2(studio::hasRefusalText(t.id), t.id.data());
+        const engine::OpResult r = engine::OpResult::refused(engine::Refusal::WrongMode, std::string(t.id), {"C022", "9", "10...5000", "X"});
+        QCOMPARE(studio::refusalText(r), QString::fromStdString(r.text(true)));
+        walker.check(QStringLiteral("refusal %1").arg(fromView(t.id)), studio::refusalText(r));
+    }
+    // The simulated controller refuses in the window's language, naming the
+    // value and the limit.
+    {
+        studio::SimulationSession session(profile::builtin("training-lathe"));
+        studio::SimulatedController sim(session);
+        QString why;
+        sim.setR(300, 1, [&](bool ok, const QString& w) { QVERIFY(!ok); why = w; });
+        QCOMPARE(why, QStringLiteral("R-параметры — R0..R299, а не R300"));
+        sim.setC(29, 5000, [&](bool ok, const QString& w) { QVERIFY(!ok); why = w; });
+        QVERIFY2(why.contains(QStringLiteral("вне диапазона 0...2047")), qPrintable(why));
+        walker.check("the simulated controller's refusal", why);
     }
 
     // The constants calculator's refusals.

@@ -1,6 +1,6 @@
 #include "backplot/backplot_widget.h"
 #include "workspace/elided_label.h"
-#include "language.h"
+#include "window_language.h"
 
 #include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
@@ -37,7 +37,7 @@ namespace {
 // Numbers as the UI's language writes them ("100 000" in Russian), not the
 // system's locale.
 QLocale uiLocale() {
-    return QLocale(currentLanguage() == QLatin1String("ru") ? QLocale::Russian : QLocale::English);
+    return QLocale(russianWindow() ? QLocale::Russian : QLocale::English);
 }
 } // namespace
 

@@ -6,7 +6,7 @@
 #include "catalog/messages.h"
 #include "engine/positioner.h"
 #include "db/notes.h"
-#include "language.h"
+#include "window_language.h"
 #include "profile/validate.h"
 #include "controller/controller.h"
 
@@ -163,7 +163,7 @@ std::span<const std::int64_t> ConstantsEditor::values() const {
 }
 
 CEditCheck ConstantsEditor::check(int number, std::int64_t value) const {
-    return checkCEdit(values(), number, value, currentLanguage() == QLatin1String("ru"));
+    return checkCEdit(values(), number, value, russianWindow());
 }
 
 QString ConstantsEditor::lockRefusal() const {

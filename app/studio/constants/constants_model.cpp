@@ -4,7 +4,7 @@
 #include "constants/constants_editor.h"
 #include "db/explain.h"
 #include "engine/positioner.h"
-#include "language.h"
+#include "window_language.h"
 #include "controller/controller.h"
 
 #include <QBrush>
@@ -29,7 +29,7 @@ ConstantsModel::ConstantsModel(ConstantsEditor& editor, QObject* parent)
     : QAbstractTableModel(parent), editor_(editor) {
     const auto c = editor_.values();
     std::copy(c.begin(), c.begin() + 153, shown_.begin());
-    russian_ = currentLanguage() == QLatin1String("ru");
+    russian_ = russianWindow();
     fillTexts();
     fillMeans();
     connect(&editor_, &ConstantsEditor::changed, this, &ConstantsModel::refresh);
@@ -95,7 +95,7 @@ void ConstantsModel::refresh() {
 
 void ConstantsModel::retranslate() {
     beginResetModel();
-    russian_ = currentLanguage() == QLatin1String("ru");
+    russian_ = russianWindow();
     fillTexts();
     fillMeans();
     endResetModel();

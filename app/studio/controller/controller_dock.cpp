@@ -4,7 +4,7 @@
 #include "controller/link_controller.h"
 #include "controller/push_preview.h"
 #include "controller/controller.h"
-#include "language.h"
+#include "window_language.h"
 #include "link_plugins.h"
 #include "main_window.h"
 #include "profile/diff.h"
@@ -719,7 +719,7 @@ void ControllerDock::updateMonitor() {
     }
     const ControllerState& s = link_->state();
     const link::LiveState& live = link_->live();
-    const bool ru = currentLanguage() == QLatin1String("ru");
+    const bool ru = russianWindow();
     QString h;
     if (link_->stale())
         h = QStringLiteral("<p style='background:#fff1c2; color:#5c4300'>%1<br>%2</p>")

@@ -1,6 +1,6 @@
 #include "controller/link_controller.h"
 
-#include "language.h"
+#include "window_language.h"
 
 #include "link/monitor.h"
 #include "session/shop_database.h"
@@ -68,7 +68,7 @@ private:
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
 // Core's message in the window's language (core says each in both).
-QString said(const link::LinkError& e) { return fromStd(e.text(currentLanguage() == QLatin1String("ru"))); }
+QString said(const link::LinkError& e) { return fromStd(e.text(russianWindow())); }
 
 // What a transfer moves now, as core's progress names it ("C-parameters",
 // "R-parameters", "messages", "program 5"), in the window's language.

@@ -1,10 +1,10 @@
 #include "controller/simulated_controller.h"
 
 #include "catalog/messages.h"
-#include "language.h"
 #include "engine/alarms.h"
 #include "engine/positioner.h"
 #include "engine/self_test.h"
+#include "session/core_texts.h"
 #include "session/program_loader.h"
 #include "machine/simulation.h"
 #include "session/simulation_session.h"
@@ -16,16 +16,6 @@
 namespace k528::studio {
 
 namespace {
-
-QString fromStd(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-
-// Why the simulated controller refused, in the window's language (core's
-// detail, which names the value and the limit, is English only).
-QString refusalText(const engine::OpResult& r) {
-    if (currentLanguage() == QLatin1String("ru") && r.refusal != engine::Refusal::None)
-        return fromStd(engine::refusalTextRu(r.refusal));
-    return fromStd(r.detail);
-}
 
 QString trc(const char* text) { return QCoreApplication::translate("k528::studio::ConstantsEditor", text); }
 

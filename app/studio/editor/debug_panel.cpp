@@ -469,7 +469,7 @@ bool DebugPanel::setWatchValue(int number, qint64 value) {
         return false;
     const engine::OpResult r = session_->controller().setR(number, value);
     if (!r.ok()) {
-        emit statusMessage(tr("R%1 was not set: %2").arg(number).arg(refusalText(r.refusal)));
+        emit statusMessage(tr("R%1 was not set: %2").arg(number).arg(refusalText(r)));
         refreshWatch();
         return false;
     }

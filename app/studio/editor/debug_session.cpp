@@ -22,7 +22,7 @@ QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
 QString refusal(const engine::OpResult& r) {
-    return refusalText(r.refusal);
+    return refusalText(r);
 }
 
 } // namespace

@@ -1,6 +1,6 @@
 #include "history/history_model.h"
 
-#include "language.h"
+#include "window_language.h"
 #include "session/shop_database.h"
 
 #include <QColor>
@@ -179,7 +179,7 @@ QVariant HistoryModel::data(const QModelIndex& index, int role) const {
     case MachineTime: return machineTimeText(m.machineMs);
     case Source: return sourceText(m.source);
     case Code: return fromStd(m.code());
-    case Text: return fromStd(currentLanguage() == QLatin1String("ru") ? m.text : m.textEn);
+    case Text: return fromStd(russianWindow() ? m.text : m.textEn);
     case Program:
         if (m.program <= 0)
             return QString();

@@ -2,7 +2,7 @@
 #include "workspace/elided_label.h"
 
 #include "engine/interface_words.h"
-#include "language.h"
+#include "window_language.h"
 #include "controller/controller.h"
 
 #include <QEvent>
@@ -78,7 +78,7 @@ void MessagesView::changeEvent(QEvent* e) {
 
 void MessagesView::refresh() {
     const ControllerState& st = controller_->state();
-    const bool ru = currentLanguage() == QLatin1String("ru");
+    const bool ru = russianWindow();
     struct Row {
         QString source, number, text, state;
         QColor color;

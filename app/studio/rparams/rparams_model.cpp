@@ -3,7 +3,7 @@
 #include "catalog/rparams.h"
 #include "engine/positioner.h"
 #include "engine/rparams.h"
-#include "language.h"
+#include "window_language.h"
 #include "controller/controller.h"
 #include "units/units.h"
 
@@ -46,7 +46,7 @@ Controller& RParamsModel::controller() const { return viewed_.current(); }
 
 void RParamsModel::retranslate() {
     beginResetModel();
-    russian_ = currentLanguage() == QLatin1String("ru");
+    russian_ = russianWindow();
     search_.assign(engine::kRCount, QString());
     for (int n = 0; n < engine::kRCount; ++n) {
         const catalog::RParamDef& d = catalog::rParam(n);

@@ -3,7 +3,7 @@
 #include "db/notes.h"
 #include "profile/tools.h"
 #include "proveout/setup_sheet.h"
-#include "language.h"
+#include "window_language.h"
 #include "session/core_texts.h"
 
 #include <QComboBox>
@@ -23,7 +23,7 @@ TrialPartDialog::TrialPartDialog(const profile::MachineProfile& machine, QWidget
     setWindowTitle(tr("Trial part: correct a tool's offset"));
     tool_ = new QComboBox(this);
     tool_->setObjectName("trial.tool");
-    const bool ru = currentLanguage() == QLatin1String("ru");
+    const bool ru = russianWindow();
     try {
         for (const profile::Tool& t : profile::tools(machine_)) {
             const QString kind = QString::fromUtf8(std::string(proveout::toolKindText(t.kind, ru)).c_str());

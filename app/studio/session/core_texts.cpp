@@ -1,11 +1,12 @@
 #include "session/core_texts.h"
 
 #include "db/error.h"
+#include "engine/refusal_texts.h"
 #include "engine/types.h"
 #include "db/notes.h"
 #include "plc/description_texts.h"
 #include "plc/json_reader.h"
-#include "language.h"
+#include "window_language.h"
 #include "profile/calculator.h"
 #include "profile/cutting.h"
 #include "profile/problem.h"
@@ -285,6 +286,29 @@ const Entry kDescriptionTexts[] = {
         {"expr.needs-paren", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "%1 needs a signal in parentheses: %1(name)")},
 };
 
+// core/engine/refusal_texts.cpp's catalog (why the controller refused an
+// operator function), each text marked for the translators.
+const Entry kRefusalTexts[] = {
+        {"mode-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "F%1 selects no mode")},
+        {"mode-from-plc", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the PLC sets the mode (Z1000.8-10 = %1)")},
+        {"override-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "override keys are L1..L4, not L%1")},
+        {"program-number", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "program numbers are 1..99, not %1")},
+        {"r-number", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "R-parameters are R0..R299, not R%1")},
+        {"r-read-only", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "R%1 is read only (R232..R262)")},
+        {"r-range", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "%1 is outside -2147483648..2147483647")},
+        {"program-executing", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "a program is executing")},
+        {"program-active", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "a program is active (running or held)")},
+        {"c-number", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "C-parameters are 1..152, not %1")},
+        {"c-range", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "%1 = %2 is outside the range %3 of «%4»")},
+        {"c-mode", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)")},
+        {"c-count", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "153 values expected (C1..C152 at 1..152)")},
+        {"c-load-mode", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)")},
+        {"clear-mode", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)")},
+        {"axis-absent", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "axis %1 is not present")},
+        {"set-actual-mode", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the current value is set in ПРЕДУСТАНОВКИ (F4)")},
+        {"zero-offset-range", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the zero offset would leave the 32-bit range")},
+};
+
 // `pattern` with %1..%9 filled in one pass, as core fills its own texts
 // (profile::fillPattern: an argument's own "%2" stays).
 QString fill(const QString& pattern, const QStringList& args) {
@@ -295,12 +319,16 @@ QString fill(const QString& pattern, const QStringList& args) {
     return QString::fromStdString(profile::fillPattern(pattern.toStdString(), a));
 }
 
-const char* patternOf(std::string_view id) {
-    for (const Entry& e : kProblems)
+// The English of `id` in one of the tables above (nullptr: not there).
+template <std::size_t N>
+const char* textOf(const Entry (&table)[N], std::string_view id) {
+    for (const Entry& e : table)
         if (id == e.id)
             return e.text;
     return nullptr;
 }
+
+const char* patternOf(std::string_view id) { return textOf(kProblems, id); }
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
@@ -308,19 +336,9 @@ QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), stati
 
 bool hasProblemText(std::string_view id) { return patternOf(id) != nullptr; }
 
-bool hasNoteText(std::string_view id) {
-    for (const Entry& e : kNotes)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasNoteText(std::string_view id) { return textOf(kNotes, id) != nullptr; }
 
-bool hasDescriptionText(std::string_view id) {
-    for (const Entry& e : kDescriptionTexts)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasDescriptionText(std::string_view id) { return textOf(kDescriptionTexts, id) != nullptr; }
 
 QString descriptionProblemText(const profile::Problem& p) {
     QStringList args;
@@ -342,12 +360,7 @@ QString descriptionErrorText(const plc::DescriptionError& e) {
         .arg(fromStd(e.source()), fromStd(e.path()), what);
 }
 
-bool hasFindingText(std::string_view id) {
-    for (const Entry& e : kFindings)
-        if (id == e.id)
-            return true;
-    return false;
-}
+bool hasFindingText(std::string_view id) { return textOf(kFindings, id) != nullptr; }
 
 QString findingText(const proveout::Finding& f) {
     for (const Entry& e : kFindings) {
@@ -376,6 +389,19 @@ QString refusalText(engine::Refusal r) {
     case engine::Refusal::NotPowered: return QCoreApplication::translate("k528::studio::CoreTexts", "the controller is off");
     }
     return {};
+}
+
+bool hasRefusalText(std::string_view id) { return textOf(kRefusalTexts, id) != nullptr; }
+
+QString refusalText(const engine::OpResult& r) {
+    if (r.ok())
+        return {};
+    QStringList args;
+    for (const std::string& a : r.args)
+        args << fromStd(a);
+    if (const char* pattern = textOf(kRefusalTexts, r.id))
+        return fill(QCoreApplication::translate("k528::studio::RefusalTexts", pattern), args);
+    return refusalText(r.refusal); // an id without a translation: the refusal's kind
 }
 
 QString revisionNoteText(const std::string& summary) {
@@ -433,7 +459,7 @@ QString coreErrorText(const std::exception& e) {
             .arg(problemText(v->problem()));
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty()) {
         // The cross-checks' findings: core says each in both languages.
-        const bool ru = currentLanguage() == QLatin1String("ru");
+        const bool ru = russianWindow();
         QString text = QCoreApplication::translate("k528::studio::CoreTexts",
                                                    "rejected, nothing was written (errors: %1):")
                            .arg(v->findings().size());

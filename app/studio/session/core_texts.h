@@ -20,6 +20,7 @@ class DescriptionError;
 } // namespace k528::plc
 namespace k528::engine {
 enum class Refusal : std::uint8_t;
+struct OpResult;
 } // namespace k528::engine
 namespace k528::proveout {
 struct Finding;
@@ -48,6 +49,10 @@ QString revisionNoteText(const std::string& summary);
 bool hasNoteText(std::string_view id);
 // Why the controller refused an operation (engine::Refusal), e.g. «Не в этом режиме».
 QString refusalText(engine::Refusal r);
+// Why, with the value and the limit (engine/refusal_texts.h's ids), e.g.
+// «R-параметры — R0..R299, а не R300»; "" when accepted.
+QString refusalText(const engine::OpResult& r);
+bool hasRefusalText(std::string_view id);
 // A prove-out finding (proveout::texts(): an id and its arguments), e.g.
 // «Инструмент T1 задевает кулачки патрона: X40 Z-2».
 QString findingText(const proveout::Finding& f);

@@ -1,7 +1,7 @@
 #include "session/shop_database.h"
 
 #include "db/location.h"
-#include "language.h"
+#include "window_language.h"
 
 #include <QCoreApplication>
 #include <map>
@@ -183,7 +183,7 @@ QString databaseErrorKindText(db::ErrorKind kind) {
 }
 
 QString databaseErrorDetail(const std::exception& e) {
-    if (currentLanguage() == QLatin1String("en"))
+    if (!russianWindow())
         return QString::fromUtf8(e.what());
     // The library's own words where core kept them apart (SQLite speaks
     // English only; libpq and the C library speak the window's language),
@@ -256,7 +256,7 @@ QString databaseErrorText(const std::exception& e) {
         return deniedText(*denied);
     if (!r) {
         const auto* error = dynamic_cast<const db::Error*>(&e);
-        if (!error || currentLanguage() == QLatin1String("en"))
+        if (!error || !russianWindow())
             return QString::fromUtf8(e.what());
         // A sentence of the window's language: which database, what is
         // wrong with it, and what the library said.

@@ -3,7 +3,7 @@
 #include "catalog/messages.h"
 #include "controller/controller_dock.h"
 #include "database/database_ui.h"
-#include "language.h"
+#include "window_language.h"
 #include "main_window.h"
 #include "session/shop_database.h"
 #include "db/state_times.h"
@@ -91,7 +91,7 @@ QString alarmText(int n) {
     const catalog::PositionerMessage* m = catalog::findPositionerMessage(n);
     if (!m)
         return ShopView::tr("alarm %1").arg(n);
-    return QStringLiteral("%1 %2").arg(n).arg(QString::fromUtf8(currentLanguage() == QLatin1String("ru") ? m->textRu
+    return QStringLiteral("%1 %2").arg(n).arg(QString::fromUtf8(russianWindow() ? m->textRu
                                                                                                           : m->textEn));
 }
 

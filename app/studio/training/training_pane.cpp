@@ -4,7 +4,7 @@
 
 #include "constants/constants_lock.h"
 
-#include "language.h"
+#include "window_language.h"
 #include "session/core_texts.h"
 #include "session/shop_database.h"
 #include "training/exercise.h"
@@ -51,7 +51,7 @@ namespace k528::studio {
 namespace {
 
 training::Language uiLanguage() {
-    return currentLanguage() == QLatin1String("ru") ? training::Language::Ru : training::Language::En;
+    return russianWindow() ? training::Language::Ru : training::Language::En;
 }
 
 QString q(const std::string& s) {

@@ -1,6 +1,6 @@
 #include "training/training_texts.h"
 
-#include "language.h"
+#include "window_language.h"
 #include "profile/problem.h"
 
 #include <QCoreApplication>
@@ -83,7 +83,7 @@ public:
 // An argument of two languages (a message of the positioner) is data: it is
 // shown in the desktop's language.
 training::Language argumentLanguage() {
-    return currentLanguage() == QLatin1String("ru") ? training::Language::Ru : training::Language::En;
+    return russianWindow() ? training::Language::Ru : training::Language::En;
 }
 
 } // namespace
