@@ -14,6 +14,7 @@
 #include "link/image.h"
 #include "link/monitor.h"
 #include "profile/builtin.h"
+#include "program/diagnostic_texts.h"
 #include "program/parser.h"
 
 #include <cstdio>
@@ -55,7 +56,7 @@ int main() {
             text += "#" + std::to_string(k) + "=СООБЩЕНИЕ " + std::to_string(k) + "\n";
         program::ParseResult parsed = program::parse(text);
         if (parsed.hasErrors()) {
-            std::fprintf(stderr, "bench program does not parse: %s\n", parsed.diagnostics[0].messageEn.c_str());
+            std::fprintf(stderr, "bench program does not parse: %s\n", k528::program::diagnosticText(parsed.diagnostics[0], false).c_str());
             return 2;
         }
         program::ProgramStore* store = ctl.editablePrograms();

@@ -3,7 +3,9 @@
 
 usage: scripts/ts_apply.py [--source-language] translations/k528studio_ru.ts < pairs.tsv
 
-Each input line is "source<TAB>translation" (\\n for a line break). Every
+Each input line is "source<TAB>translation" (\\n for a line break, \\\\ for
+a backslash, \\# for a "#" that starts a source: a line starting with "#" is a
+comment). Every
 message of the .ts file whose source matches gets the translation and loses
 its "unfinished" mark. Prints the sources still untranslated. Run the
 update_translations target first so the .ts file lists the current sources.
@@ -17,6 +19,10 @@ import sys
 import xml.etree.ElementTree as ET
 
 
+def unescape(field: str) -> str:
+    return re.sub(r"\\\\|\\n|\\#", lambda m: {"\\\\": "\\", "\\n": "\n", "\\#": "#"}[m.group(0)], field)
+
+
 def main() -> int:
     args = sys.argv[1:]
     identity = "--source-language" in args
@@ -27,7 +33,7 @@ def main() -> int:
         if not line or line.startswith("#"):
             continue
         src, _, dst = line.partition("\t")
-        pairs[src.replace("\\n", "\n")] = dst.replace("\\n", "\n")
+        pairs[unescape(src)] = unescape(dst)
     tree = ET.parse(path)
     missing = []
     for msg in tree.iter("message"):

@@ -474,10 +474,6 @@
         <source>%1 is the database this window uses: it is not read as a program</source>
         <translation>%1 is the database this window uses: it is not read as a program</translation>
     </message>
-    <message>
-        <source>%1:%2: %3: %4</source>
-        <translation>%1:%2: %3: %4</translation>
-    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -3069,6 +3065,493 @@ Details: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::DiagnosticTexts</name>
+    <message>
+        <source>comment not closed: no ')' before the end of the line</source>
+        <translation>comment not closed: no ')' before the end of the line</translation>
+    </message>
+    <message>
+        <source>a CR without LF does not end a line: program text ends its lines with LF or CR LF; convert the file (e.g. tr '\r' '\n')</source>
+        <translation>a CR without LF does not end a line: program text ends its lines with LF or CR LF; convert the file (e.g. tr '\r' '\n')</translation>
+    </message>
+    <message>
+        <source>invalid byte sequence %1: program text must be UTF-8</source>
+        <translation>invalid byte sequence %1: program text must be UTF-8</translation>
+    </message>
+    <message>
+        <source>frames before the first %L&lt;n&gt; header belong to no program: add a header above them</source>
+        <translation>frames before the first %L&lt;n&gt; header belong to no program: add a header above them</translation>
+    </message>
+    <message>
+        <source>unknown header '%1': expected %L&lt;program number&gt; or %MESSAGES</source>
+        <translation>unknown header '%1': expected %L&lt;program number&gt; or %MESSAGES</translation>
+    </message>
+    <message>
+        <source>program header without a number: expected %L&lt;1..99&gt;</source>
+        <translation>program header without a number: expected %L&lt;1..99&gt;</translation>
+    </message>
+    <message>
+        <source>program number '%1' is not a whole number 1..99</source>
+        <translation>program number '%1' is not a whole number 1..99</translation>
+    </message>
+    <message>
+        <source>program number L%1 is outside 1..99</source>
+        <translation>program number L%1 is outside 1..99</translation>
+    </message>
+    <message>
+        <source>program L%1 is already defined on line %2</source>
+        <translation>program L%1 is already defined on line %2</translation>
+    </message>
+    <message>
+        <source>unexpected text after the program header: '%1'</source>
+        <translation>unexpected text after the program header: '%1'</translation>
+    </message>
+    <message>
+        <source>unexpected text after %MESSAGES: '%1'</source>
+        <translation>unexpected text after %MESSAGES: '%1'</translation>
+    </message>
+    <message>
+        <source>a message table line must read #&lt;1..99&gt;=&lt;text&gt;</source>
+        <translation>a message table line must read #&lt;1..99&gt;=&lt;text&gt;</translation>
+    </message>
+    <message>
+        <source>message number #%1 is outside 1..99</source>
+        <translation>message number #%1 is outside 1..99</translation>
+    </message>
+    <message>
+        <source>message #%1 is already defined on line %2</source>
+        <translation>message #%1 is already defined on line %2</translation>
+    </message>
+    <message>
+        <source>only #&lt;1..99&gt;=&lt;text&gt; lines and comments may stand in the %MESSAGES section</source>
+        <translation>only #&lt;1..99&gt;=&lt;text&gt; lines and comments may stand in the %MESSAGES section</translation>
+    </message>
+    <message>
+        <source>address %1 is not followed by a number</source>
+        <translation>address %1 is not followed by a number</translation>
+    </message>
+    <message>
+        <source>%1%2: number too large</source>
+        <translation>%1%2: number too large</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a whole number without sign or point</source>
+        <translation>%1: '%2' is not a whole number without sign or point</translation>
+    </message>
+    <message>
+        <source>address %1 has no value: expected a number or an R-parameter</source>
+        <translation>address %1 has no value: expected a number or an R-parameter</translation>
+    </message>
+    <message>
+        <source>%1: a sign before an R-parameter is not allowed; compute R&lt;i&gt;=0-R&lt;j&gt; in a frame of its own</source>
+        <translation>%1: a sign before an R-parameter is not allowed; compute R&lt;i&gt;=0-R&lt;j&gt; in a frame of its own</translation>
+    </message>
+    <message>
+        <source>%2'%1' has more than 18 significant digits</source>
+        <translation>%2'%1' has more than 18 significant digits</translation>
+    </message>
+    <message>
+        <source>%2'%1' has more than 18 digits after the decimal point</source>
+        <translation>%2'%1' has more than 18 digits after the decimal point</translation>
+    </message>
+    <message>
+        <source>%2'%1' is not a number</source>
+        <translation>%2'%1' is not a number</translation>
+    </message>
+    <message>
+        <source>%1 value: </source>
+        <translation>%1 value: </translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
+    </message>
+    <message>
+        <source>unexpected character '%1'</source>
+        <translation>unexpected character '%1'</translation>
+    </message>
+    <message>
+        <source>Cyrillic letter '%1': frame addresses are Latin letters</source>
+        <translation>Cyrillic letter '%1': frame addresses are Latin letters</translation>
+    </message>
+    <message>
+        <source>Cyrillic letter '%1': frame addresses are Latin letters (%2)</source>
+        <translation>Cyrillic letter '%1': frame addresses are Latin letters (%2)</translation>
+    </message>
+    <message>
+        <source>unknown address '%1': a frame may contain N, G, M, #, L, X, Z, FX, FZ</source>
+        <translation>unknown address '%1': a frame may contain N, G, M, #, L, X, Z, FX, FZ</translation>
+    </message>
+    <message>
+        <source>%1 is given twice in the frame</source>
+        <translation>%1 is given twice in the frame</translation>
+    </message>
+    <message>
+        <source>GOTO makes an unconditional jump frame: it holds only [/][N] GOTO &lt;frame number&gt;</source>
+        <translation>GOTO makes an unconditional jump frame: it holds only [/][N] GOTO &lt;frame number&gt;</translation>
+    </message>
+    <message>
+        <source>more than three G functions in the frame: %1 is one too many</source>
+        <translation>more than three G functions in the frame: %1 is one too many</translation>
+    </message>
+    <message>
+        <source>more than three M functions in the frame: M%1 is one too many</source>
+        <translation>more than three M functions in the frame: M%1 is one too many</translation>
+    </message>
+    <message>
+        <source>the frame number N must come first in the frame</source>
+        <translation>the frame number N must come first in the frame</translation>
+    </message>
+    <message>
+        <source>F without an axis: a bare F applies to the X or Z word directly before it; write FX or FZ</source>
+        <translation>F without an axis: a bare F applies to the X or Z word directly before it; write FX or FZ</translation>
+    </message>
+    <message>
+        <source>R-parameter outside a computational frame: write R&lt;i&gt;=... as a frame of its own, and in X, Z, FX, FZ as X=R&lt;i&gt;</source>
+        <translation>R-parameter outside a computational frame: write R&lt;i&gt;=... as a frame of its own, and in X, Z, FX, FZ as X=R&lt;i&gt;</translation>
+    </message>
+    <message>
+        <source>IF makes a conditional jump frame: it holds only [/][N] IF R&lt;i&gt;&gt;0 GOTO &lt;number&gt;</source>
+        <translation>IF makes a conditional jump frame: it holds only [/][N] IF R&lt;i&gt;&gt;0 GOTO &lt;number&gt;</translation>
+    </message>
+    <message>
+        <source>the skip flag '/' may only stand at the start of the frame</source>
+        <translation>the skip flag '/' may only stand at the start of the frame</translation>
+    </message>
+    <message>
+        <source>expected a whole number or an R-parameter</source>
+        <translation>expected a whole number or an R-parameter</translation>
+    </message>
+    <message>
+        <source>a sign before an R-parameter is not allowed: write 0-R&lt;j&gt; instead of -R&lt;j&gt;</source>
+        <translation>a sign before an R-parameter is not allowed: write 0-R&lt;j&gt; instead of -R&lt;j&gt;</translation>
+    </message>
+    <message>
+        <source>decimal point in a computational frame: R-parameters are whole numbers (discretes), '%1' is not allowed</source>
+        <translation>decimal point in a computational frame: R-parameters are whole numbers (discretes), '%1' is not allowed</translation>
+    </message>
+    <message>
+        <source>'%1' is not a number</source>
+        <translation>'%1' is not a number</translation>
+    </message>
+    <message>
+        <source>number %1 is outside the range of an R-parameter (-2147483648..2147483647)</source>
+        <translation>number %1 is outside the range of an R-parameter (-2147483648..2147483647)</translation>
+    </message>
+    <message>
+        <source>unexpected text in a computational frame: '%1'</source>
+        <translation>unexpected text in a computational frame: '%1'</translation>
+    </message>
+    <message>
+        <source>unexpected text in a conditional jump frame: '%1'</source>
+        <translation>unexpected text in a conditional jump frame: '%1'</translation>
+    </message>
+    <message>
+        <source>unexpected text in an unconditional jump frame: '%1'</source>
+        <translation>unexpected text in an unconditional jump frame: '%1'</translation>
+    </message>
+    <message>
+        <source>computational frame: '=' expected after R%1</source>
+        <translation>computational frame: '=' expected after R%1</translation>
+    </message>
+    <message>
+        <source>computational frame: expected an operation + - * / or the end of the frame, not '%1'</source>
+        <translation>computational frame: expected an operation + - * / or the end of the frame, not '%1'</translation>
+    </message>
+    <message>
+        <source>the jump target is written without N: GOTO %1</source>
+        <translation>the jump target is written without N: GOTO %1</translation>
+    </message>
+    <message>
+        <source>the jump target is written without N: GOTO &lt;frame number 1..999&gt;</source>
+        <translation>the jump target is written without N: GOTO &lt;frame number 1..999&gt;</translation>
+    </message>
+    <message>
+        <source>GOTO is not followed by a frame number</source>
+        <translation>GOTO is not followed by a frame number</translation>
+    </message>
+    <message>
+        <source>jump target '%1' is not a whole number 1..999</source>
+        <translation>jump target '%1' is not a whole number 1..999</translation>
+    </message>
+    <message>
+        <source>IF must be followed by an R-parameter: IF R&lt;i&gt;&gt;0 GOTO &lt;number&gt;</source>
+        <translation>IF must be followed by an R-parameter: IF R&lt;i&gt;&gt;0 GOTO &lt;number&gt;</translation>
+    </message>
+    <message>
+        <source>the only jump condition is %1&gt;0 (manual 2.7.1.3); reduce another condition to it with a computational frame</source>
+        <translation>the only jump condition is %1&gt;0 (manual 2.7.1.3); reduce another condition to it with a computational frame</translation>
+    </message>
+    <message>
+        <source>the condition must be followed by GOTO &lt;frame number&gt;</source>
+        <translation>the condition must be followed by GOTO &lt;frame number&gt;</translation>
+    </message>
+    <message>
+        <source>program L%1 has no frames</source>
+        <translation>program L%1 has no frames</translation>
+    </message>
+    <message>
+        <source>program L%1 has %2 frames: at most 999 are allowed; this is frame 1000</source>
+        <translation>program L%1 has %2 frames: at most 999 are allowed; this is frame 1000</translation>
+    </message>
+    <message>
+        <source>frame number N%1 is outside 1..999</source>
+        <translation>frame number N%1 is outside 1..999</translation>
+    </message>
+    <message>
+        <source>duplicate frame numbers: N%1 is already used on line %2</source>
+        <translation>duplicate frame numbers: N%1 is already used on line %2</translation>
+    </message>
+    <message>
+        <source>R-parameter R%1 does not exist: numbers are 0..299</source>
+        <translation>R-parameter R%1 does not exist: numbers are 0..299</translation>
+    </message>
+    <message>
+        <source>G?: %1 is outside 0..299</source>
+        <translation>G?: %1 is outside 0..299</translation>
+    </message>
+    <message>
+        <source>G?: %1 is not a G function of table 5</source>
+        <translation>G?: %1 is not a G function of table 5</translation>
+    </message>
+    <message>
+        <source>G?: %1 and %2 are both of group %3: a frame may hold one function of a group</source>
+        <translation>G?: %1 and %2 are both of group %3: a frame may hold one function of a group</translation>
+    </message>
+    <message>
+        <source>X value: the dwell time G04 X%1 is negative</source>
+        <translation>X value: the dwell time G04 X%1 is negative</translation>
+    </message>
+    <message>
+        <source>X value: the dwell X%1 s is longer than 9999.999 s</source>
+        <translation>X value: the dwell X%1 s is longer than 9999.999 s</translation>
+    </message>
+    <message>
+        <source>%1 value: %1%2 is outside ±9999.999 mm</source>
+        <translation>%1 value: %1%2 is outside ±9999.999 mm</translation>
+    </message>
+    <message>
+        <source>feed %1%2 is outside 0.001..10000 mm/min</source>
+        <translation>feed %1%2 is outside 0.001..10000 mm/min</translation>
+    </message>
+    <message>
+        <source>G04/X/Z: Z is given %2 with the dwell G04; the time goes in X only</source>
+        <translation>G04/X/Z: Z is given %2 with the dwell G04; the time goes in X only</translation>
+    </message>
+    <message>
+        <source>G04/L: subprogram %1 is called %2 with the dwell G04</source>
+        <translation>G04/L: subprogram %1 is called %2 with the dwell G04</translation>
+    </message>
+    <message>
+        <source>X/L: X is given %2 that calls subprogram %1</source>
+        <translation>X/L: X is given %2 that calls subprogram %1</translation>
+    </message>
+    <message>
+        <source>Z/L: Z is given %2 that calls subprogram %1</source>
+        <translation>Z/L: Z is given %2 that calls subprogram %1</translation>
+    </message>
+    <message>
+        <source>X/M17: X is given %2 that ends the subprogram with M17</source>
+        <translation>X/M17: X is given %2 that ends the subprogram with M17</translation>
+    </message>
+    <message>
+        <source>Z/M17: Z is given %2 that ends the subprogram with M17</source>
+        <translation>Z/M17: Z is given %2 that ends the subprogram with M17</translation>
+    </message>
+    <message>
+        <source>M30/L: end of program M30 and a call of %1 %2</source>
+        <translation>M30/L: end of program M30 and a call of %1 %2</translation>
+    </message>
+    <message>
+        <source>M2/L: end of program M02 and a call of %1 %2</source>
+        <translation>M2/L: end of program M02 and a call of %1 %2</translation>
+    </message>
+    <message>
+        <source>M17/L: end of subprogram M17 and a call of %1 %2</source>
+        <translation>M17/L: end of subprogram M17 and a call of %1 %2</translation>
+    </message>
+    <message>
+        <source>M30/M17: end of program M30 and end of subprogram M17 %2</source>
+        <translation>M30/M17: end of program M30 and end of subprogram M17 %2</translation>
+    </message>
+    <message>
+        <source>M2/M17: end of program M02 and end of subprogram M17 %2</source>
+        <translation>M2/M17: end of program M02 and end of subprogram M17 %2</translation>
+    </message>
+    <message>
+        <source>X/end of L: the last frame of subprogram %1 has no M17 and gives X</source>
+        <translation>X/end of L: the last frame of subprogram %1 has no M17 and gives X</translation>
+    </message>
+    <message>
+        <source>Z/end of L: the last frame of subprogram %1 has no M17 and gives Z</source>
+        <translation>Z/end of L: the last frame of subprogram %1 has no M17 and gives Z</translation>
+    </message>
+    <message>
+        <source>in the frame</source>
+        <translation>in the frame</translation>
+    </message>
+    <message>
+        <source>in frame N%1</source>
+        <translation>in frame N%1</translation>
+    </message>
+    <message>
+        <source>G04 without X: no dwell time is given (e.g. G04 X20.5 is 20.5 s)</source>
+        <translation>G04 without X: no dwell time is given (e.g. G04 X20.5 is 20.5 s)</translation>
+    </message>
+    <message>
+        <source>%1 without %2: no position to set is given (e.g. %1 %212.324)</source>
+        <translation>%1 without %2: no position to set is given (e.g. %1 %212.324)</translation>
+    </message>
+    <message>
+        <source>%1 without %2: no oscillation stroke is given (e.g. %1 %2=-30.5 F%2=100)</source>
+        <translation>%1 without %2: no oscillation stroke is given (e.g. %1 %2=-30.5 F%2=100)</translation>
+    </message>
+    <message>
+        <source>%1 without %2: there is no motion of axis %2 for signal %3 to interrupt</source>
+        <translation>%1 without %2: there is no motion of axis %2 for signal %3 to interrupt</translation>
+    </message>
+    <message>
+        <source>M%1: M function number outside 0..99</source>
+        <translation>M%1: M function number outside 0..99</translation>
+    </message>
+    <message>
+        <source>M%1 twice in the frame: the PLC gets it twice</source>
+        <translation>M%1 twice in the frame: the PLC gets it twice</translation>
+    </message>
+    <message>
+        <source>#%1: technological message number outside 1..99</source>
+        <translation>#%1: technological message number outside 1..99</translation>
+    </message>
+    <message>
+        <source>message #%1 is not in the message table: LCD line 2 will be blank</source>
+        <translation>message #%1 is not in the message table: LCD line 2 will be blank</translation>
+    </message>
+    <message>
+        <source>L%1: called program number outside 1..99</source>
+        <translation>L%1: called program number outside 1..99</translation>
+    </message>
+    <message>
+        <source>L missing: there is no program L%1</source>
+        <translation>L missing: there is no program L%1</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262, appendix Л): it cannot be written</source>
+        <translation>R%1 is read only (R232..R262, appendix Л): it cannot be written</translation>
+    </message>
+    <message>
+        <source>overflow: division by zero</source>
+        <translation>overflow: division by zero</translation>
+    </message>
+    <message>
+        <source>overflow: the result %1 is outside -2147483648..2147483647</source>
+        <translation>overflow: the result %1 is outside -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>jump error: frame number %1 is outside 1..999</source>
+        <translation>jump error: frame number %1 is outside 1..999</translation>
+    </message>
+    <message>
+        <source>jump error: there is no frame N%1 in program L%2</source>
+        <translation>jump error: there is no frame N%1 in program L%2</translation>
+    </message>
+    <message>
+        <source>the frame on line %1 is never executed: an unconditional jump or an end of program precedes, and no jump leads here</source>
+        <translation>the frame on line %1 is never executed: an unconditional jump or an end of program precedes, and no jump leads here</translation>
+    </message>
+    <message>
+        <source>the frames on lines %1-%2 are never executed: an unconditional jump or an end of program precedes, and no jump leads here</source>
+        <translation>the frames on lines %1-%2 are never executed: an unconditional jump or an end of program precedes, and no jump leads here</translation>
+    </message>
+    <message>
+        <source>subprogram nesting: calls go round in a circle %2; unless a condition breaks it, nesting exceeds the limit of %1</source>
+        <translation>subprogram nesting: calls go round in a circle %2; unless a condition breaks it, nesting exceeds the limit of %1</translation>
+    </message>
+    <message>
+        <source>subprogram nesting: the call chain %3 nests %1 levels deep, the limit is %2</source>
+        <translation>subprogram nesting: the call chain %3 nests %1 levels deep, the limit is %2</translation>
+    </message>
+    <message>
+        <source>L%1-&gt;%2</source>
+        <translation>L%1-&gt;%2</translation>
+    </message>
+    <message>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <source>%1: this machine has no %2 axis (C-parameter НАЛИЧ.ОСИ = 0)</source>
+        <translation>%1: this machine has no %2 axis (C-parameter НАЛИЧ.ОСИ = 0)</translation>
+    </message>
+    <message>
+        <source>software limit (%2): %2%3%5%6 is beyond the + limit %4 mm</source>
+        <translation>software limit (%2): %2%3%5%6 is beyond the + limit %4 mm</translation>
+    </message>
+    <message>
+        <source>software limit (%2): %2%3%5%6 is beyond the - limit %4 mm</source>
+        <translation>software limit (%2): %2%3%5%6 is beyond the - limit %4 mm</translation>
+    </message>
+    <message>
+        <source> (diameter)</source>
+        <translation> (diameter)</translation>
+    </message>
+    <message>
+        <source>, %1 mm in the machine system,</source>
+        <translation>, %1 mm in the machine system,</translation>
+    </message>
+    <message>
+        <source>%1%2: the discrete of axis %1 is %3 mm, the value is rounded to %4</source>
+        <translation>%1%2: the discrete of axis %1 is %3 mm, the value is rounded to %4</translation>
+    </message>
+    <message>
+        <source>F%1%2: the discrete of axis %1 is %3 mm, the feed is rounded to %4</source>
+        <translation>F%1%2: the discrete of axis %1 is %3 mm, the feed is rounded to %4</translation>
+    </message>
+    <message>
+        <source>F%1%2 is above the axis' maximum program feed F УСК.АВТ. (%3 mm/min)</source>
+        <translation>F%1%2 is above the axis' maximum program feed F УСК.АВТ. (%3 mm/min)</translation>
+    </message>
+    <message>
+        <source>message #%1 is longer than 20 characters (%2): the display shows 20</source>
+        <translation>message #%1 is longer than 20 characters (%2): the display shows 20</translation>
+    </message>
+    <message>
+        <source>control character in the text of message #%1</source>
+        <translation>control character in the text of message #%1</translation>
+    </message>
+    <message>
+        <source>character '%1' in message #%2 may not show on the K923 (Latin, Cyrillic, digits and ASCII signs)</source>
+        <translation>character '%1' in message #%2 may not show on the K923 (Latin, Cyrillic, digits and ASCII signs)</translation>
+    </message>
+    <message>
+        <source>the file holds no program (not a single frame)</source>
+        <translation>the file holds no program (not a single frame)</translation>
+    </message>
+    <message>
+        <source>a jump target is a frame number 1..999, not %1</source>
+        <translation>a jump target is a frame number 1..999, not %1</translation>
+    </message>
+    <message>
+        <source>at most 3 G and 3 M functions in a frame</source>
+        <translation>at most 3 G and 3 M functions in a frame</translation>
+    </message>
+    <message>
+        <source>the signal number is 1..4</source>
+        <translation>the signal number is 1..4</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3: %4</source>
+        <translation>%1:%2: %3: %4</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>warning</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DiffDialog</name>
     <message>
         <source>Compare revisions — %1</source>
@@ -4705,8 +5188,8 @@ Its comment stays: %3</translation>
 <context>
     <name>k528::studio::ProblemsModel</name>
     <message>
-        <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools)</source>
-        <translation>A rule of the prove-out: the program against the blank, the chuck and the tools</translation>
+        <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools): %1</source>
+        <translation>A rule of the prove-out (the program against the blank, the chuck and the tools): %1</translation>
     </message>
 </context>
 <context>
@@ -5589,6 +6072,273 @@ Its comment stays: %3</translation>
     <message>
         <source>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</source>
         <translation>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RuleNames</name>
+    <message>
+        <source>not UTF-8</source>
+        <translation>not UTF-8</translation>
+    </message>
+    <message>
+        <source>unclosed comment</source>
+        <translation>unclosed comment</translation>
+    </message>
+    <message>
+        <source>frame syntax</source>
+        <translation>frame syntax</translation>
+    </message>
+    <message>
+        <source>Cyrillic letter</source>
+        <translation>Cyrillic letter</translation>
+    </message>
+    <message>
+        <source>unknown address</source>
+        <translation>unknown address</translation>
+    </message>
+    <message>
+        <source>word given twice</source>
+        <translation>word given twice</translation>
+    </message>
+    <message>
+        <source>too many G</source>
+        <translation>too many G</translation>
+    </message>
+    <message>
+        <source>too many M</source>
+        <translation>too many M</translation>
+    </message>
+    <message>
+        <source>F without an axis</source>
+        <translation>F without an axis</translation>
+    </message>
+    <message>
+        <source>bad number</source>
+        <translation>bad number</translation>
+    </message>
+    <message>
+        <source>point in an R frame</source>
+        <translation>point in an R frame</translation>
+    </message>
+    <message>
+        <source>number out of range</source>
+        <translation>number out of range</translation>
+    </message>
+    <message>
+        <source>jump condition</source>
+        <translation>jump condition</translation>
+    </message>
+    <message>
+        <source>bad header</source>
+        <translation>bad header</translation>
+    </message>
+    <message>
+        <source>program number</source>
+        <translation>program number</translation>
+    </message>
+    <message>
+        <source>program given twice</source>
+        <translation>program given twice</translation>
+    </message>
+    <message>
+        <source>frame outside a program</source>
+        <translation>frame outside a program</translation>
+    </message>
+    <message>
+        <source>message line</source>
+        <translation>message line</translation>
+    </message>
+    <message>
+        <source>message number</source>
+        <translation>message number</translation>
+    </message>
+    <message>
+        <source>message too long</source>
+        <translation>message too long</translation>
+    </message>
+    <message>
+        <source>message given twice</source>
+        <translation>message given twice</translation>
+    </message>
+    <message>
+        <source>control character</source>
+        <translation>control character</translation>
+    </message>
+    <message>
+        <source>K923 characters</source>
+        <translation>K923 characters</translation>
+    </message>
+    <message>
+        <source>frame number</source>
+        <translation>frame number</translation>
+    </message>
+    <message>
+        <source>frame number twice</source>
+        <translation>frame number twice</translation>
+    </message>
+    <message>
+        <source>too many frames</source>
+        <translation>too many frames</translation>
+    </message>
+    <message>
+        <source>empty program</source>
+        <translation>empty program</translation>
+    </message>
+    <message>
+        <source>no program</source>
+        <translation>no program</translation>
+    </message>
+    <message>
+        <source>coordinate range</source>
+        <translation>coordinate range</translation>
+    </message>
+    <message>
+        <source>feed range</source>
+        <translation>feed range</translation>
+    </message>
+    <message>
+        <source>unknown G</source>
+        <translation>unknown G</translation>
+    </message>
+    <message>
+        <source>G of one group</source>
+        <translation>G of one group</translation>
+    </message>
+    <message>
+        <source>M out of range</source>
+        <translation>M out of range</translation>
+    </message>
+    <message>
+        <source>M given twice</source>
+        <translation>M given twice</translation>
+    </message>
+    <message>
+        <source>message out of range</source>
+        <translation>message out of range</translation>
+    </message>
+    <message>
+        <source>message not in the table</source>
+        <translation>message not in the table</translation>
+    </message>
+    <message>
+        <source>call out of range</source>
+        <translation>call out of range</translation>
+    </message>
+    <message>
+        <source>called program missing</source>
+        <translation>called program missing</translation>
+    </message>
+    <message>
+        <source>no such R</source>
+        <translation>no such R</translation>
+    </message>
+    <message>
+        <source>read-only R</source>
+        <translation>read-only R</translation>
+    </message>
+    <message>
+        <source>division by zero</source>
+        <translation>division by zero</translation>
+    </message>
+    <message>
+        <source>R overflow</source>
+        <translation>R overflow</translation>
+    </message>
+    <message>
+        <source>jump target</source>
+        <translation>jump target</translation>
+    </message>
+    <message>
+        <source>axis with a call</source>
+        <translation>axis with a call</translation>
+    </message>
+    <message>
+        <source>axis with M17</source>
+        <translation>axis with M17</translation>
+    </message>
+    <message>
+        <source>axis at the end of L</source>
+        <translation>axis at the end of L</translation>
+    </message>
+    <message>
+        <source>two ends in a frame</source>
+        <translation>two ends in a frame</translation>
+    </message>
+    <message>
+        <source>G04 with Z</source>
+        <translation>G04 with Z</translation>
+    </message>
+    <message>
+        <source>G04 with a call</source>
+        <translation>G04 with a call</translation>
+    </message>
+    <message>
+        <source>negative dwell</source>
+        <translation>negative dwell</translation>
+    </message>
+    <message>
+        <source>G04 without time</source>
+        <translation>G04 without time</translation>
+    </message>
+    <message>
+        <source>G without its axis</source>
+        <translation>G without its axis</translation>
+    </message>
+    <message>
+        <source>unreachable frame</source>
+        <translation>unreachable frame</translation>
+    </message>
+    <message>
+        <source>calls in a circle</source>
+        <translation>calls in a circle</translation>
+    </message>
+    <message>
+        <source>nesting too deep</source>
+        <translation>nesting too deep</translation>
+    </message>
+    <message>
+        <source>no such axis</source>
+        <translation>no such axis</translation>
+    </message>
+    <message>
+        <source>software limit</source>
+        <translation>software limit</translation>
+    </message>
+    <message>
+        <source>feed above maximum</source>
+        <translation>feed above maximum</translation>
+    </message>
+    <message>
+        <source>rounded to a discrete</source>
+        <translation>rounded to a discrete</translation>
+    </message>
+    <message>
+        <source>rapid into material</source>
+        <translation>rapid into material</translation>
+    </message>
+    <message>
+        <source>tool into chuck</source>
+        <translation>tool into chuck</translation>
+    </message>
+    <message>
+        <source>turret into chuck</source>
+        <translation>turret into chuck</translation>
+    </message>
+    <message>
+        <source>feed, spindle stopped</source>
+        <translation>feed, spindle stopped</translation>
+    </message>
+    <message>
+        <source>feed, wheel stopped</source>
+        <translation>feed, wheel stopped</translation>
+    </message>
+    <message>
+        <source>cut too deep</source>
+        <translation>cut too deep</translation>
+    </message>
+    <message>
+        <source>manual move into material</source>
+        <translation>manual move into material</translation>
     </message>
 </context>
 <context>

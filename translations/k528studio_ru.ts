@@ -474,10 +474,6 @@
         <source>%1 is the database this window uses: it is not read as a program</source>
         <translation>%1 — база данных, с которой работает это окно: как программа она не читается</translation>
     </message>
-    <message>
-        <source>%1:%2: %3: %4</source>
-        <translation>%1:%2: %3: %4</translation>
-    </message>
 </context>
 <context>
     <name>k528::studio::AxesView</name>
@@ -3069,6 +3065,493 @@ Details: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::DiagnosticTexts</name>
+    <message>
+        <source>comment not closed: no ')' before the end of the line</source>
+        <translation>Комментарий не закрыт: нет «)» до конца строки</translation>
+    </message>
+    <message>
+        <source>a CR without LF does not end a line: program text ends its lines with LF or CR LF; convert the file (e.g. tr '\r' '\n')</source>
+        <translation>Символ CR без LF не завершает строку: концы строк в тексте программы — LF или CR LF; преобразуйте файл (например, tr '\r' '\n')</translation>
+    </message>
+    <message>
+        <source>invalid byte sequence %1: program text must be UTF-8</source>
+        <translation>Недопустимая последовательность байтов %1: текст программы должен быть в UTF-8</translation>
+    </message>
+    <message>
+        <source>frames before the first %L&lt;n&gt; header belong to no program: add a header above them</source>
+        <translation>Кадры до первого заголовка %L&lt;n&gt; не принадлежат ни одной программе: добавьте заголовок перед ними</translation>
+    </message>
+    <message>
+        <source>unknown header '%1': expected %L&lt;program number&gt; or %MESSAGES</source>
+        <translation>Неизвестный заголовок «%1»: ожидается %L&lt;номер программы&gt; или %MESSAGES</translation>
+    </message>
+    <message>
+        <source>program header without a number: expected %L&lt;1..99&gt;</source>
+        <translation>Заголовок программы без номера: ожидается %L&lt;1..99&gt;</translation>
+    </message>
+    <message>
+        <source>program number '%1' is not a whole number 1..99</source>
+        <translation>Номер программы «%1» — не целое число 1..99</translation>
+    </message>
+    <message>
+        <source>program number L%1 is outside 1..99</source>
+        <translation>Номер программы L%1 вне диапазона 1..99</translation>
+    </message>
+    <message>
+        <source>program L%1 is already defined on line %2</source>
+        <translation>Программа L%1 уже определена в строке %2</translation>
+    </message>
+    <message>
+        <source>unexpected text after the program header: '%1'</source>
+        <translation>Лишний текст после заголовка программы: «%1»</translation>
+    </message>
+    <message>
+        <source>unexpected text after %MESSAGES: '%1'</source>
+        <translation>Лишний текст после %MESSAGES: «%1»</translation>
+    </message>
+    <message>
+        <source>a message table line must read #&lt;1..99&gt;=&lt;text&gt;</source>
+        <translation>Строка таблицы сообщений должна иметь вид #&lt;1..99&gt;=&lt;текст&gt;</translation>
+    </message>
+    <message>
+        <source>message number #%1 is outside 1..99</source>
+        <translation>Номер сообщения #%1 вне диапазона 1..99</translation>
+    </message>
+    <message>
+        <source>message #%1 is already defined on line %2</source>
+        <translation>Сообщение #%1 уже задано в строке %2</translation>
+    </message>
+    <message>
+        <source>only #&lt;1..99&gt;=&lt;text&gt; lines and comments may stand in the %MESSAGES section</source>
+        <translation>В разделе %MESSAGES допустимы только строки #&lt;1..99&gt;=&lt;текст&gt; и комментарии</translation>
+    </message>
+    <message>
+        <source>address %1 is not followed by a number</source>
+        <translation>После адреса %1 нет числа</translation>
+    </message>
+    <message>
+        <source>%1%2: number too large</source>
+        <translation>%1%2: слишком большое число</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a whole number without sign or point</source>
+        <translation>%1: «%2» — ожидается целое число без знака и точки</translation>
+    </message>
+    <message>
+        <source>address %1 has no value: expected a number or an R-parameter</source>
+        <translation>После адреса %1 нет значения: ожидается число или R-параметр</translation>
+    </message>
+    <message>
+        <source>%1: a sign before an R-parameter is not allowed; compute R&lt;i&gt;=0-R&lt;j&gt; in a frame of its own</source>
+        <translation>%1: знак перед R-параметром недопустим; вычислите R&lt;i&gt;=0-R&lt;j&gt; отдельным кадром</translation>
+    </message>
+    <message>
+        <source>%2'%1' has more than 18 significant digits</source>
+        <translation>%2в числе «%1» больше 18 значащих цифр</translation>
+    </message>
+    <message>
+        <source>%2'%1' has more than 18 digits after the decimal point</source>
+        <translation>%2в числе «%1» больше 18 цифр после точки</translation>
+    </message>
+    <message>
+        <source>%2'%1' is not a number</source>
+        <translation>%2«%1» — не число</translation>
+    </message>
+    <message>
+        <source>%1 value: </source>
+        <translation>Задание координаты %1: </translation>
+    </message>
+    <message>
+        <source>%1: </source>
+        <translation>%1: </translation>
+    </message>
+    <message>
+        <source>unexpected character '%1'</source>
+        <translation>Неожиданный символ «%1»</translation>
+    </message>
+    <message>
+        <source>Cyrillic letter '%1': frame addresses are Latin letters</source>
+        <translation>Кириллическая буква «%1»: адреса кадра пишутся латинскими буквами</translation>
+    </message>
+    <message>
+        <source>Cyrillic letter '%1': frame addresses are Latin letters (%2)</source>
+        <translation>Кириллическая буква «%1»: адреса кадра пишутся латинскими буквами (%2)</translation>
+    </message>
+    <message>
+        <source>unknown address '%1': a frame may contain N, G, M, #, L, X, Z, FX, FZ</source>
+        <translation>Неизвестный адрес «%1»: в кадре допустимы N, G, M, #, L, X, Z, FX, FZ</translation>
+    </message>
+    <message>
+        <source>%1 is given twice in the frame</source>
+        <translation>Адрес %1 задан в кадре дважды</translation>
+    </message>
+    <message>
+        <source>GOTO makes an unconditional jump frame: it holds only [/][N] GOTO &lt;frame number&gt;</source>
+        <translation>GOTO — кадр безусловного перехода: в нём может быть только [/][N] GOTO &lt;номер кадра&gt;</translation>
+    </message>
+    <message>
+        <source>more than three G functions in the frame: %1 is one too many</source>
+        <translation>Больше трёх G-функций в кадре: %1 лишняя</translation>
+    </message>
+    <message>
+        <source>more than three M functions in the frame: M%1 is one too many</source>
+        <translation>Больше трёх M-функций в кадре: M%1 лишняя</translation>
+    </message>
+    <message>
+        <source>the frame number N must come first in the frame</source>
+        <translation>Номер кадра N должен стоять в начале кадра</translation>
+    </message>
+    <message>
+        <source>F without an axis: a bare F applies to the X or Z word directly before it; write FX or FZ</source>
+        <translation>F без оси: F относится к слову X или Z непосредственно перед ним; напишите FX или FZ</translation>
+    </message>
+    <message>
+        <source>R-parameter outside a computational frame: write R&lt;i&gt;=... as a frame of its own, and in X, Z, FX, FZ as X=R&lt;i&gt;</source>
+        <translation>R-параметр вне вычислительного кадра: R&lt;i&gt;=… пишется отдельным кадром, а в X, Z, FX, FZ — как X=R&lt;i&gt;</translation>
+    </message>
+    <message>
+        <source>IF makes a conditional jump frame: it holds only [/][N] IF R&lt;i&gt;&gt;0 GOTO &lt;number&gt;</source>
+        <translation>IF — кадр условного перехода: в нём может быть только [/][N] IF R&lt;i&gt;&gt;0 GOTO &lt;номер&gt;</translation>
+    </message>
+    <message>
+        <source>the skip flag '/' may only stand at the start of the frame</source>
+        <translation>Признак пропуска «/» может стоять только в начале кадра</translation>
+    </message>
+    <message>
+        <source>expected a whole number or an R-parameter</source>
+        <translation>Ожидается целое число или R-параметр</translation>
+    </message>
+    <message>
+        <source>a sign before an R-parameter is not allowed: write 0-R&lt;j&gt; instead of -R&lt;j&gt;</source>
+        <translation>Знак перед R-параметром недопустим: вместо -R&lt;j&gt; напишите 0-R&lt;j&gt;</translation>
+    </message>
+    <message>
+        <source>decimal point in a computational frame: R-parameters are whole numbers (discretes), '%1' is not allowed</source>
+        <translation>Десятичная точка в вычислительном кадре: R-параметры — целые числа (дискреты), «%1» недопустимо</translation>
+    </message>
+    <message>
+        <source>'%1' is not a number</source>
+        <translation>«%1» — не число</translation>
+    </message>
+    <message>
+        <source>number %1 is outside the range of an R-parameter (-2147483648..2147483647)</source>
+        <translation>Число %1 вне диапазона R-параметра (-2147483648..2147483647)</translation>
+    </message>
+    <message>
+        <source>unexpected text in a computational frame: '%1'</source>
+        <translation>Лишний текст в вычислительном кадре: «%1»</translation>
+    </message>
+    <message>
+        <source>unexpected text in a conditional jump frame: '%1'</source>
+        <translation>Лишний текст в кадре условного перехода: «%1»</translation>
+    </message>
+    <message>
+        <source>unexpected text in an unconditional jump frame: '%1'</source>
+        <translation>Лишний текст в кадре безусловного перехода: «%1»</translation>
+    </message>
+    <message>
+        <source>computational frame: '=' expected after R%1</source>
+        <translation>Вычислительный кадр: после R%1 ожидается «=»</translation>
+    </message>
+    <message>
+        <source>computational frame: expected an operation + - * / or the end of the frame, not '%1'</source>
+        <translation>Вычислительный кадр: ожидается знак операции + - * / или конец кадра, а не «%1»</translation>
+    </message>
+    <message>
+        <source>the jump target is written without N: GOTO %1</source>
+        <translation>Номер кадра перехода пишется без N: GOTO %1</translation>
+    </message>
+    <message>
+        <source>the jump target is written without N: GOTO &lt;frame number 1..999&gt;</source>
+        <translation>Номер кадра перехода пишется без N: GOTO &lt;номер кадра 1..999&gt;</translation>
+    </message>
+    <message>
+        <source>GOTO is not followed by a frame number</source>
+        <translation>После GOTO нет номера кадра</translation>
+    </message>
+    <message>
+        <source>jump target '%1' is not a whole number 1..999</source>
+        <translation>Номер кадра перехода «%1» — не целое число 1..999</translation>
+    </message>
+    <message>
+        <source>IF must be followed by an R-parameter: IF R&lt;i&gt;&gt;0 GOTO &lt;number&gt;</source>
+        <translation>После IF ожидается R-параметр: IF R&lt;i&gt;&gt;0 GOTO &lt;номер&gt;</translation>
+    </message>
+    <message>
+        <source>the only jump condition is %1&gt;0 (manual 2.7.1.3); reduce another condition to it with a computational frame</source>
+        <translation>Условие перехода может быть только %1&gt;0 (руководство, 2.7.1.3); другое условие сведите к нему вычислительным кадром</translation>
+    </message>
+    <message>
+        <source>the condition must be followed by GOTO &lt;frame number&gt;</source>
+        <translation>После условия ожидается GOTO &lt;номер кадра&gt;</translation>
+    </message>
+    <message>
+        <source>program L%1 has no frames</source>
+        <translation>Программа L%1 не содержит кадров</translation>
+    </message>
+    <message>
+        <source>program L%1 has %2 frames: at most 999 are allowed; this is frame 1000</source>
+        <translation>В программе L%1 %2 кадров: допускается не более 999; этот кадр — 1000-й</translation>
+    </message>
+    <message>
+        <source>frame number N%1 is outside 1..999</source>
+        <translation>Номер кадра N%1 вне диапазона 1..999</translation>
+    </message>
+    <message>
+        <source>duplicate frame numbers: N%1 is already used on line %2</source>
+        <translation>Дублирование номеров кадров: N%1 уже есть в строке %2</translation>
+    </message>
+    <message>
+        <source>R-parameter R%1 does not exist: numbers are 0..299</source>
+        <translation>R-параметр R%1 не существует: номера 0..299</translation>
+    </message>
+    <message>
+        <source>G?: %1 is outside 0..299</source>
+        <translation>G?: номер %1 вне диапазона 0..299</translation>
+    </message>
+    <message>
+        <source>G?: %1 is not a G function of table 5</source>
+        <translation>G?: функции %1 нет в таблице 5</translation>
+    </message>
+    <message>
+        <source>G?: %1 and %2 are both of group %3: a frame may hold one function of a group</source>
+        <translation>G?: %1 и %2 из одной группы %3: в кадре допустима одна функция группы</translation>
+    </message>
+    <message>
+        <source>X value: the dwell time G04 X%1 is negative</source>
+        <translation>Задание координаты X: выдержка времени G04 X%1 отрицательна</translation>
+    </message>
+    <message>
+        <source>X value: the dwell X%1 s is longer than 9999.999 s</source>
+        <translation>Задание координаты X: выдержка X%1 с больше 9999.999 с</translation>
+    </message>
+    <message>
+        <source>%1 value: %1%2 is outside ±9999.999 mm</source>
+        <translation>Задание координаты %1: %1%2 вне диапазона ±9999.999 мм</translation>
+    </message>
+    <message>
+        <source>feed %1%2 is outside 0.001..10000 mm/min</source>
+        <translation>Подача %1%2 вне диапазона 0.001..10000 мм/мин</translation>
+    </message>
+    <message>
+        <source>G04/X/Z: Z is given %2 with the dwell G04; the time goes in X only</source>
+        <translation>G04/X/Z: %2 с выдержкой времени G04 задан Z; время задаётся только в X</translation>
+    </message>
+    <message>
+        <source>G04/L: subprogram %1 is called %2 with the dwell G04</source>
+        <translation>G04/L: %2 с выдержкой времени G04 вызывается подпрограмма %1</translation>
+    </message>
+    <message>
+        <source>X/L: X is given %2 that calls subprogram %1</source>
+        <translation>X/L: %2 с вызовом подпрограммы %1 задана координата X</translation>
+    </message>
+    <message>
+        <source>Z/L: Z is given %2 that calls subprogram %1</source>
+        <translation>Z/L: %2 с вызовом подпрограммы %1 задана координата Z</translation>
+    </message>
+    <message>
+        <source>X/M17: X is given %2 that ends the subprogram with M17</source>
+        <translation>X/M17: %2 с концом подпрограммы M17 задана координата X</translation>
+    </message>
+    <message>
+        <source>Z/M17: Z is given %2 that ends the subprogram with M17</source>
+        <translation>Z/M17: %2 с концом подпрограммы M17 задана координата Z</translation>
+    </message>
+    <message>
+        <source>M30/L: end of program M30 and a call of %1 %2</source>
+        <translation>M30/L: конец программы M30 и вызов %1 %2</translation>
+    </message>
+    <message>
+        <source>M2/L: end of program M02 and a call of %1 %2</source>
+        <translation>M2/L: конец программы M02 и вызов %1 %2</translation>
+    </message>
+    <message>
+        <source>M17/L: end of subprogram M17 and a call of %1 %2</source>
+        <translation>M17/L: конец подпрограммы M17 и вызов %1 %2</translation>
+    </message>
+    <message>
+        <source>M30/M17: end of program M30 and end of subprogram M17 %2</source>
+        <translation>M30/M17: конец программы M30 и конец подпрограммы M17 %2</translation>
+    </message>
+    <message>
+        <source>M2/M17: end of program M02 and end of subprogram M17 %2</source>
+        <translation>M2/M17: конец программы M02 и конец подпрограммы M17 %2</translation>
+    </message>
+    <message>
+        <source>X/end of L: the last frame of subprogram %1 has no M17 and gives X</source>
+        <translation>X/конец L: последний кадр подпрограммы %1 без M17 задаёт координату X</translation>
+    </message>
+    <message>
+        <source>Z/end of L: the last frame of subprogram %1 has no M17 and gives Z</source>
+        <translation>Z/конец L: последний кадр подпрограммы %1 без M17 задаёт координату Z</translation>
+    </message>
+    <message>
+        <source>in the frame</source>
+        <translation>в кадре</translation>
+    </message>
+    <message>
+        <source>in frame N%1</source>
+        <translation>в кадре N%1</translation>
+    </message>
+    <message>
+        <source>G04 without X: no dwell time is given (e.g. G04 X20.5 is 20.5 s)</source>
+        <translation>G04 без X: время выдержки не задано (например, G04 X20.5 — 20,5 с)</translation>
+    </message>
+    <message>
+        <source>%1 without %2: no position to set is given (e.g. %1 %212.324)</source>
+        <translation>%1 без %2: не задано, какое положение установить (например, %1 %212.324)</translation>
+    </message>
+    <message>
+        <source>%1 without %2: no oscillation stroke is given (e.g. %1 %2=-30.5 F%2=100)</source>
+        <translation>%1 без %2: не задан ход осцилляции (например, %1 %2=-30.5 F%2=100)</translation>
+    </message>
+    <message>
+        <source>%1 without %2: there is no motion of axis %2 for signal %3 to interrupt</source>
+        <translation>%1 без %2: нет перемещения по оси %2, которое прерывает сигнал %3</translation>
+    </message>
+    <message>
+        <source>M%1: M function number outside 0..99</source>
+        <translation>M%1: номер M-функции вне диапазона 0..99</translation>
+    </message>
+    <message>
+        <source>M%1 twice in the frame: the PLC gets it twice</source>
+        <translation>M%1 дважды в кадре: ПЛК получит её два раза</translation>
+    </message>
+    <message>
+        <source>#%1: technological message number outside 1..99</source>
+        <translation>#%1: номер технологического сообщения вне диапазона 1..99</translation>
+    </message>
+    <message>
+        <source>message #%1 is not in the message table: LCD line 2 will be blank</source>
+        <translation>Сообщения #%1 нет в таблице сообщений: строка 2 индикатора будет пустой</translation>
+    </message>
+    <message>
+        <source>L%1: called program number outside 1..99</source>
+        <translation>L%1: номер вызываемой программы вне диапазона 1..99</translation>
+    </message>
+    <message>
+        <source>L missing: there is no program L%1</source>
+        <translation>L отсутствует: программы L%1 нет</translation>
+    </message>
+    <message>
+        <source>R%1 is read only (R232..R262, appendix Л): it cannot be written</source>
+        <translation>R%1 только для чтения (R232..R262, приложение Л): запись в него невозможна</translation>
+    </message>
+    <message>
+        <source>overflow: division by zero</source>
+        <translation>Переполнение: деление на ноль</translation>
+    </message>
+    <message>
+        <source>overflow: the result %1 is outside -2147483648..2147483647</source>
+        <translation>Переполнение: результат %1 вне диапазона -2147483648..2147483647</translation>
+    </message>
+    <message>
+        <source>jump error: frame number %1 is outside 1..999</source>
+        <translation>Ошибка перехода: номер кадра %1 вне диапазона 1..999</translation>
+    </message>
+    <message>
+        <source>jump error: there is no frame N%1 in program L%2</source>
+        <translation>Ошибка перехода: кадра N%1 нет в программе L%2</translation>
+    </message>
+    <message>
+        <source>the frame on line %1 is never executed: an unconditional jump or an end of program precedes, and no jump leads here</source>
+        <translation>Кадр в строке %1 никогда не выполняется: выше — безусловный переход или конец программы, а перехода сюда нет</translation>
+    </message>
+    <message>
+        <source>the frames on lines %1-%2 are never executed: an unconditional jump or an end of program precedes, and no jump leads here</source>
+        <translation>Кадры в строках %1–%2 никогда не выполняются: выше — безусловный переход или конец программы, а перехода сюда нет</translation>
+    </message>
+    <message>
+        <source>subprogram nesting: calls go round in a circle %2; unless a condition breaks it, nesting exceeds the limit of %1</source>
+        <translation>Глубина вложения L: вызовы по кругу %2; если цикл не прерывается условием, вложение превысит предел %1</translation>
+    </message>
+    <message>
+        <source>subprogram nesting: the call chain %3 nests %1 levels deep, the limit is %2</source>
+        <translation>Глубина вложения L: цепочка вызовов %3 даёт %1 уровней вложения, предел %2</translation>
+    </message>
+    <message>
+        <source>L%1-&gt;%2</source>
+        <translation>L%1→%2</translation>
+    </message>
+    <message>
+        <source>L%1</source>
+        <translation>L%1</translation>
+    </message>
+    <message>
+        <source>%1: this machine has no %2 axis (C-parameter НАЛИЧ.ОСИ = 0)</source>
+        <translation>%1: оси %2 на этом станке нет (НАЛИЧ.ОСИ = 0)</translation>
+    </message>
+    <message>
+        <source>software limit (%2): %2%3%5%6 is beyond the + limit %4 mm</source>
+        <translation>%1: %2%3%5%6 за ограничением +ОГРАНИЧЕН %4 мм</translation>
+    </message>
+    <message>
+        <source>software limit (%2): %2%3%5%6 is beyond the - limit %4 mm</source>
+        <translation>%1: %2%3%5%6 за ограничением -ОГРАНИЧЕН %4 мм</translation>
+    </message>
+    <message>
+        <source> (diameter)</source>
+        <translation> (на диаметр)</translation>
+    </message>
+    <message>
+        <source>, %1 mm in the machine system,</source>
+        <translation>, в системе станка %1 мм,</translation>
+    </message>
+    <message>
+        <source>%1%2: the discrete of axis %1 is %3 mm, the value is rounded to %4</source>
+        <translation>%1%2: дискрета оси %1 %3 мм, значение будет округлено до %4</translation>
+    </message>
+    <message>
+        <source>F%1%2: the discrete of axis %1 is %3 mm, the feed is rounded to %4</source>
+        <translation>F%1%2: дискрета оси %1 %3 мм, подача будет округлена до %4</translation>
+    </message>
+    <message>
+        <source>F%1%2 is above the axis' maximum program feed F УСК.АВТ. (%3 mm/min)</source>
+        <translation>F%1%2 больше F УСК.АВТ. оси %1 (%3 мм/мин)</translation>
+    </message>
+    <message>
+        <source>message #%1 is longer than 20 characters (%2): the display shows 20</source>
+        <translation>Сообщение #%1 длиннее 20 символов (%2): на индикаторе помещается 20</translation>
+    </message>
+    <message>
+        <source>control character in the text of message #%1</source>
+        <translation>Управляющий символ в тексте сообщения #%1</translation>
+    </message>
+    <message>
+        <source>character '%1' in message #%2 may not show on the K923 (Latin, Cyrillic, digits and ASCII signs)</source>
+        <translation>Символ «%1» в сообщении #%2 может не отображаться на K923 (латиница, кириллица, цифры и знаки ASCII)</translation>
+    </message>
+    <message>
+        <source>the file holds no program (not a single frame)</source>
+        <translation>В файле нет ни одной программы (ни одного кадра)</translation>
+    </message>
+    <message>
+        <source>a jump target is a frame number 1..999, not %1</source>
+        <translation>Номер кадра перехода 1..999, а не %1</translation>
+    </message>
+    <message>
+        <source>at most 3 G and 3 M functions in a frame</source>
+        <translation>не больше 3 функций G и 3 функций M в кадре</translation>
+    </message>
+    <message>
+        <source>the signal number is 1..4</source>
+        <translation>номер сигнала 1..4</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3: %4</source>
+        <translation>%1:%2: %3: %4</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>ошибка</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>предупреждение</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DiffDialog</name>
     <message>
         <source>Compare revisions — %1</source>
@@ -4705,8 +5188,8 @@ Its comment stays: %3</source>
 <context>
     <name>k528::studio::ProblemsModel</name>
     <message>
-        <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools)</source>
-        <translation>Правило проверки программы, нарушенное кадром (заготовка, патрон, инструменты)</translation>
+        <source>The rule of the prove-out the frame breaks (the blank, the chuck, the tools): %1</source>
+        <translation>Правило проверки программы, нарушенное кадром (заготовка, патрон, инструменты): %1</translation>
     </message>
 </context>
 <context>
@@ -5589,6 +6072,273 @@ Its comment stays: %3</source>
     <message>
         <source>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</source>
         <translation>пробная деталь: T%1 %2 измерено %3 при %4 по чертежу: R%5 %6 -&gt; %7</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::RuleNames</name>
+    <message>
+        <source>not UTF-8</source>
+        <translation>не UTF-8</translation>
+    </message>
+    <message>
+        <source>unclosed comment</source>
+        <translation>незакрытый комментарий</translation>
+    </message>
+    <message>
+        <source>frame syntax</source>
+        <translation>синтаксис кадра</translation>
+    </message>
+    <message>
+        <source>Cyrillic letter</source>
+        <translation>кириллическая буква</translation>
+    </message>
+    <message>
+        <source>unknown address</source>
+        <translation>неизвестный адрес</translation>
+    </message>
+    <message>
+        <source>word given twice</source>
+        <translation>слово дважды</translation>
+    </message>
+    <message>
+        <source>too many G</source>
+        <translation>больше трёх G</translation>
+    </message>
+    <message>
+        <source>too many M</source>
+        <translation>больше трёх M</translation>
+    </message>
+    <message>
+        <source>F without an axis</source>
+        <translation>F без оси</translation>
+    </message>
+    <message>
+        <source>bad number</source>
+        <translation>неверное число</translation>
+    </message>
+    <message>
+        <source>point in an R frame</source>
+        <translation>точка в R-кадре</translation>
+    </message>
+    <message>
+        <source>number out of range</source>
+        <translation>число вне диапазона</translation>
+    </message>
+    <message>
+        <source>jump condition</source>
+        <translation>условие перехода</translation>
+    </message>
+    <message>
+        <source>bad header</source>
+        <translation>неверный заголовок</translation>
+    </message>
+    <message>
+        <source>program number</source>
+        <translation>номер программы</translation>
+    </message>
+    <message>
+        <source>program given twice</source>
+        <translation>программа дважды</translation>
+    </message>
+    <message>
+        <source>frame outside a program</source>
+        <translation>кадр вне программы</translation>
+    </message>
+    <message>
+        <source>message line</source>
+        <translation>строка сообщения</translation>
+    </message>
+    <message>
+        <source>message number</source>
+        <translation>номер сообщения</translation>
+    </message>
+    <message>
+        <source>message too long</source>
+        <translation>длинное сообщение</translation>
+    </message>
+    <message>
+        <source>message given twice</source>
+        <translation>сообщение дважды</translation>
+    </message>
+    <message>
+        <source>control character</source>
+        <translation>управляющий символ</translation>
+    </message>
+    <message>
+        <source>K923 characters</source>
+        <translation>знаки K923</translation>
+    </message>
+    <message>
+        <source>frame number</source>
+        <translation>номер кадра</translation>
+    </message>
+    <message>
+        <source>frame number twice</source>
+        <translation>номер кадра дважды</translation>
+    </message>
+    <message>
+        <source>too many frames</source>
+        <translation>больше 999 кадров</translation>
+    </message>
+    <message>
+        <source>empty program</source>
+        <translation>пустая программа</translation>
+    </message>
+    <message>
+        <source>no program</source>
+        <translation>нет программы</translation>
+    </message>
+    <message>
+        <source>coordinate range</source>
+        <translation>диапазон координаты</translation>
+    </message>
+    <message>
+        <source>feed range</source>
+        <translation>диапазон подачи</translation>
+    </message>
+    <message>
+        <source>unknown G</source>
+        <translation>неизвестная G</translation>
+    </message>
+    <message>
+        <source>G of one group</source>
+        <translation>G одной группы</translation>
+    </message>
+    <message>
+        <source>M out of range</source>
+        <translation>M вне диапазона</translation>
+    </message>
+    <message>
+        <source>M given twice</source>
+        <translation>M дважды</translation>
+    </message>
+    <message>
+        <source>message out of range</source>
+        <translation>сообщение вне диапазона</translation>
+    </message>
+    <message>
+        <source>message not in the table</source>
+        <translation>нет в таблице сообщений</translation>
+    </message>
+    <message>
+        <source>call out of range</source>
+        <translation>вызов вне диапазона</translation>
+    </message>
+    <message>
+        <source>called program missing</source>
+        <translation>нет вызываемой программы</translation>
+    </message>
+    <message>
+        <source>no such R</source>
+        <translation>нет такого R</translation>
+    </message>
+    <message>
+        <source>read-only R</source>
+        <translation>R только для чтения</translation>
+    </message>
+    <message>
+        <source>division by zero</source>
+        <translation>деление на ноль</translation>
+    </message>
+    <message>
+        <source>R overflow</source>
+        <translation>переполнение R</translation>
+    </message>
+    <message>
+        <source>jump target</source>
+        <translation>цель перехода</translation>
+    </message>
+    <message>
+        <source>axis with a call</source>
+        <translation>ось с вызовом L</translation>
+    </message>
+    <message>
+        <source>axis with M17</source>
+        <translation>ось с M17</translation>
+    </message>
+    <message>
+        <source>axis at the end of L</source>
+        <translation>ось в конце L</translation>
+    </message>
+    <message>
+        <source>two ends in a frame</source>
+        <translation>два конца в кадре</translation>
+    </message>
+    <message>
+        <source>G04 with Z</source>
+        <translation>G04 с Z</translation>
+    </message>
+    <message>
+        <source>G04 with a call</source>
+        <translation>G04 с вызовом L</translation>
+    </message>
+    <message>
+        <source>negative dwell</source>
+        <translation>отрицательная выдержка</translation>
+    </message>
+    <message>
+        <source>G04 without time</source>
+        <translation>G04 без времени</translation>
+    </message>
+    <message>
+        <source>G without its axis</source>
+        <translation>G без своей оси</translation>
+    </message>
+    <message>
+        <source>unreachable frame</source>
+        <translation>недостижимый кадр</translation>
+    </message>
+    <message>
+        <source>calls in a circle</source>
+        <translation>вызовы по кругу</translation>
+    </message>
+    <message>
+        <source>nesting too deep</source>
+        <translation>глубокое вложение</translation>
+    </message>
+    <message>
+        <source>no such axis</source>
+        <translation>нет такой оси</translation>
+    </message>
+    <message>
+        <source>software limit</source>
+        <translation>программное ограничение</translation>
+    </message>
+    <message>
+        <source>feed above maximum</source>
+        <translation>подача выше предельной</translation>
+    </message>
+    <message>
+        <source>rounded to a discrete</source>
+        <translation>округление до дискреты</translation>
+    </message>
+    <message>
+        <source>rapid into material</source>
+        <translation>G00 в материал</translation>
+    </message>
+    <message>
+        <source>tool into chuck</source>
+        <translation>инструмент в патрон</translation>
+    </message>
+    <message>
+        <source>turret into chuck</source>
+        <translation>резцедержатель в патрон</translation>
+    </message>
+    <message>
+        <source>feed, spindle stopped</source>
+        <translation>подача без шпинделя</translation>
+    </message>
+    <message>
+        <source>feed, wheel stopped</source>
+        <translation>подача без круга</translation>
+    </message>
+    <message>
+        <source>cut too deep</source>
+        <translation>слишком глубокий рез</translation>
+    </message>
+    <message>
+        <source>manual move into material</source>
+        <translation>ручной ход в материал</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include "args.h"
 #include "cli.h"
 #include "engine/program_check.h"
+#include "program/diagnostic_texts.h"
 #include "machine_profile.h"
 #include "profile/builtin.h"
 #include "profile/text_format.h"
@@ -51,8 +52,8 @@ Json fileJson(const std::string& file, const program::CheckResult& r) {
         j["end_column"] = d.endColumn;
         j["severity"] = d.isError() ? "error" : "warning";
         j["manual_number"] = d.manualNumber > 0 ? Json(d.manualNumber) : Json();
-        j["message_ru"] = d.messageRu;
-        j["message_en"] = d.messageEn;
+        j["message_ru"] = program::diagnosticText(d, true);
+        j["message_en"] = program::diagnosticText(d, false);
         j["rule"] = std::string(program::ruleId(d.rule));
         diags.push_back(std::move(j));
     }

@@ -149,8 +149,7 @@ int cmdImport(std::span<const std::string> argv) {
         out(savedText(machine, r, lang));
         return ExitOk;
     } catch (const db::ValidationError& e) {
-        const std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
-        std::fprintf(stderr, "k528: %s\n", first.c_str());
+        std::fprintf(stderr, "k528: %s\n", rejectionHead(e, lang).c_str());
         for (const auto& f : e.findings()) {
             int line = 0;
             if (format == "k528m")

@@ -164,8 +164,7 @@ std::string unknownKeyError(const db::Edit& e) {
 }
 
 void printRejection(const db::ValidationError& e, Lang lang, const std::string& where) {
-    const std::string first = std::string(e.what()).substr(0, std::string(e.what()).find('\n'));
-    std::fprintf(stderr, "k528: %s\n", first.c_str());
+    std::fprintf(stderr, "k528: %s\n", rejectionHead(e, lang).c_str());
     for (const auto& f : e.findings())
         std::fprintf(stderr, "%s%s\n", where.c_str(), findingText(f, lang).c_str());
 }

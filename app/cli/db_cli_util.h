@@ -56,6 +56,9 @@ Json changeJson(const profile::Change& c);
 int fail(const std::string& message, int code = ExitUsage);
 
 // Prints the error (a read-only database in `lang`); returns the exit code.
+// The first line of a rejected write in `lang` ("machine NAME: rejected,
+// nothing was written (N errors):" / «станок NAME: отклонено, …»).
+std::string rejectionHead(const db::ValidationError& e, Lang lang);
 int dbFail(const db::Error& e, Lang lang = Lang::Ru);
 
 bool parseLangOption(const Args& a, Lang& lang);

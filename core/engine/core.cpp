@@ -1,5 +1,6 @@
 #include "engine/core.h"
 
+#include "axis/servo.h"
 #include "engine/coordinates.h"
 
 #include <algorithm>
@@ -7,31 +8,15 @@
 namespace k528::engine {
 
 namespace {
-// Faults of an axis' position loop and drive: they stop both axes.
+// Faults of an axis' position loop and drive (axis::Fault, their messages
+// on either axis): they stop both axes.
 bool loopFault(int n) {
-    switch (n) {
-    case 1:
-    case 4:
-    case 5:
-    case 6:
-    case 7:
-    case 8:
-    case 13:
-    case 16:
-    case 56:
-    case 17:
-    case 20:
-    case 21:
-    case 22:
-    case 23:
-    case 24:
-    case 29:
-    case 32:
-    case 57:
-        return true;
-    default:
-        return false;
-    }
+    for (int f = static_cast<int>(axis::Fault::RegulatorNotEnabled); f <= static_cast<int>(axis::Fault::EncoderStall);
+         ++f)
+        for (const AxisId a : {AxisId::X, AxisId::Z})
+            if (axis::faultMessage(static_cast<axis::Fault>(f), a) == n)
+                return true;
+    return false;
 }
 
 axis::Constants constantsOf(const profile::MachineProfile& p, AxisId a) {

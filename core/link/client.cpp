@@ -5,6 +5,7 @@
 
 #include "catalog/cparams.h"
 #include "engine/program_check.h"
+#include "program/diagnostic_texts.h"
 #include "profile/text_format.h"
 #include "profile/validate.h"
 #include "program/formatter.h"
@@ -761,9 +762,9 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
         for (const program::Diagnostic& d : parsed.diagnostics)
             if (d.isError())
                 return inputError(d.line, Said{"program " + std::to_string(n) + ", line " + std::to_string(d.line) + ": " +
-                                                   d.messageEn,
+                                                   program::diagnosticText(d, false),
                                                "программа " + std::to_string(n) + ", строка " +
-                                                   std::to_string(d.line) + ": " + d.messageRu});
+                                                   std::to_string(d.line) + ": " + program::diagnosticText(d, true)});
         if (parsed.store.size() != 1 || parsed.store.programs()[0].number != n)
             return inputError(0, Said{"program " + std::to_string(n) + " does not hold exactly that program",
                                       "программа " + std::to_string(n) + " содержит не ровно одну эту программу"});
@@ -774,8 +775,10 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
         const engine::FileCheck check = engine::checkFileForMachine(profile::programsFileText(file), {}, file, none);
         for (const program::Diagnostic& d : check.diagnostics)
             if (d.isError())
-                return inputError(d.line, Said{"program " + std::to_string(d.program) + ": " + d.messageEn,
-                                               "программа " + std::to_string(d.program) + ": " + d.messageRu});
+                return inputError(d.line, Said{"program " + std::to_string(d.program) + ": " +
+                                                   program::diagnosticText(d, false),
+                                               "программа " + std::to_string(d.program) + ": " +
+                                                   program::diagnosticText(d, true)});
     }
     if (!file.messages.empty()) {
         program::MessageTable m;
@@ -792,7 +795,7 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
     const program::ParseResult parsed = program::parse(text);
     for (const program::Diagnostic& d : parsed.diagnostics)
         if (d.isError())
-            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + Said{d.messageEn, d.messageRu});
+            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + Said{program::diagnosticText(d, false), program::diagnosticText(d, true)});
     if (parsed.store.empty() && !parsed.store.messages.present)
         return inputError(0, source + Said{" holds no program (%L) and no %MESSAGES",
                                            " не содержит ни программы (%L), ни %MESSAGES"});
@@ -854,8 +857,8 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
     for (const program::Diagnostic& d : check.diagnostics)
         if (d.isError())
             return inputError(d.line, source + ":" + std::to_string(d.line) + ": " +
-                                          Said{d.messageEn + " (checked against the controller's constants and programs)",
-                                               d.messageRu + " (проверено по константам и программам контроллера)"});
+                                          Said{program::diagnosticText(d, false) + " (checked against the controller's constants and programs)",
+                                               program::diagnosticText(d, true) + " (проверено по константам и программам контроллера)"});
     return {};
 }
 

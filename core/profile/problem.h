@@ -7,6 +7,7 @@
 #pragma once
 
 #include "catalog/messages.h"
+#include "util/text_pattern.h"
 
 #include <cstdint>
 #include <span>
@@ -37,11 +38,9 @@ struct ProblemText {
 std::span<const ProblemText> problemTexts();
 // The English of `id` ("" if unknown).
 std::string_view problemEnglish(std::string_view id);
-// `pattern` with %1..%9 replaced by `args` (one missing by nothing), %% by a
-// per cent sign; any other % stays. The one filler of core's texts (problems,
-// revision notes, prove-out findings, training texts) and of their
+// util/text_pattern.h: the one filler of core's texts and of their
 // translations in the desktop.
-std::string fillPattern(std::string_view pattern, std::span<const std::string> args);
+using util::fillPattern;
 
 // The item checks as problems (validate.h's check... say their text()).
 Problem nameProblem(std::string_view name);

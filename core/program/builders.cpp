@@ -54,8 +54,8 @@ void checkTarget(BuiltFrame& b, int target) {
     d.rule = Rule::JumpTarget;
     d.manualNumber = 53;
     d.line = 1;
-    d.messageRu = "Номер кадра перехода 1..999, а не " + std::to_string(target);
-    d.messageEn = "a jump target is a frame number 1..999, not " + std::to_string(target);
+    d.textId = "build.jump-target";
+    d.args = {std::to_string(target)};
     b.problems.insert(b.problems.begin(), d);
 }
 
@@ -96,8 +96,7 @@ BuiltFrame buildIso(const IsoFields& in) {
         Diagnostic d;
         d.rule = in.g.size() > 3 ? Rule::TooManyG : Rule::TooManyM;
         d.line = 1;
-        d.messageRu = "не больше 3 функций G и 3 функций M в кадре";
-        d.messageEn = "at most 3 G and 3 M functions in a frame";
+        d.textId = "build.too-many-functions";
         b.problems.insert(b.problems.begin(), d);
     }
     return b;
@@ -155,8 +154,7 @@ BuiltFrame buildMoveUntilSignal(FrameHead h, Axis axis, int signal, Decimal targ
         Diagnostic d;
         d.rule = Rule::UnknownG;
         d.line = 1;
-        d.messageRu = "номер сигнала 1..4";
-        d.messageEn = "the signal number is 1..4";
+        d.textId = "build.signal";
         b.problems.insert(b.problems.begin(), d);
     }
     return b;

@@ -1,5 +1,7 @@
 #include "program/diagnostic.h"
 
+#include "program/diagnostic_texts.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -92,7 +94,7 @@ std::string formatDiagnostic(const Diagnostic& d, bool russian) {
         std::snprintf(m, sizeof m, "[M%02d] ", d.manualNumber);
         s += m;
     }
-    return s + (russian ? d.messageRu : d.messageEn);
+    return s + diagnosticText(d, russian);
 }
 
 std::size_t countErrors(const std::vector<Diagnostic>& d) {

@@ -3,9 +3,12 @@
 // Every diagnostic names its program, its place (line and a column span in
 // code points, 1-based, end exclusive — see model.h), its severity, the
 // number of the K528-05 message (manual appendix М) when the controller has
-// one for it, and a text in Russian and in English. The Russian texts start
-// with the panel's wording where the manual has one («Ошибка перехода»,
-// «G?») and then say exactly what is wrong.
+// one for it, and its text as an id of diagnostic_texts.h's catalog with its
+// arguments (numbers already written out, as the texts show them). The
+// command line says it in Russian or English from that catalog
+// (formatDiagnostic), the desktop through its translators by the id. The
+// Russian texts start with the panel's wording where the manual has one
+// («Ошибка перехода», «G?») and then say exactly what is wrong.
 #pragma once
 
 #include <cstdint>
@@ -86,6 +89,15 @@ enum class Rule : std::uint16_t {
 
 std::string_view ruleId(Rule r);
 
+// A text of the catalog inside another one (the frame «в кадре N5» / "in
+// frame N5", a chain of calls): its id ("" says nothing), its arguments and
+// its own parts, which fill the arguments after its own.
+struct DiagnosticPart {
+    std::string id;
+    std::vector<std::string> args;
+    std::vector<DiagnosticPart> within;
+};
+
 struct Diagnostic {
     Rule rule = Rule::Syntax;
     Severity severity = Severity::Error;
@@ -94,8 +106,9 @@ struct Diagnostic {
     int column = 0;       // 1-based, code points
     int endColumn = 0;    // exclusive, code points; always > column
     int manualNumber = 0; // appendix М number, 0 = none
-    std::string messageRu;
-    std::string messageEn;
+    std::string textId;             // diagnostic_texts.h
+    std::vector<std::string> args;  // %1..: words of the program and numbers, the same in both languages
+    std::vector<DiagnosticPart> within; // texts of the catalog, the arguments after `args`
 
     bool isError() const { return severity == Severity::Error; }
 };
@@ -105,7 +118,7 @@ void sortDiagnostics(std::vector<Diagnostic>& d);
 bool hasErrors(const std::vector<Diagnostic>& d);
 
 // "LINE:COL: error|warning: [M<nn>] text" in Russian or English: the plain
-// line of shared/spec/cli.md without its "FILE:" (the CLI and the desktop).
+// line of shared/spec/cli.md without its "FILE:" (the command line).
 std::string formatDiagnostic(const Diagnostic& d, bool russian);
 std::size_t countErrors(const std::vector<Diagnostic>& d);
 

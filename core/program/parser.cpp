@@ -21,21 +21,10 @@ using text::upper;
 // that bad is noise (documented in docs/program-language.md).
 constexpr int kMaxErrorsPerLine = 8;
 
-// Quoted input text in a message: whole UTF-8 characters, bad bytes as \xHH
-// (a message is valid UTF-8 whatever the input).
-std::string quote(std::string_view s) {
-    std::string q = "«";
-    q += text::printable(s);
-    q += "»";
-    return q;
-}
-
-std::string squote(std::string_view s) {
-    std::string q = "'";
-    q += text::printable(s);
-    q += "'";
-    return q;
-}
+// Input text as a diagnostic's argument (quoted by the catalog's texts):
+// whole UTF-8 characters, bad bytes as \xHH (a text is valid UTF-8 whatever
+// the input).
+std::string quoted(std::string_view s) { return text::printable(s); }
 
 class Parser {
 public:
@@ -108,21 +97,23 @@ private:
         return s;
     }
 
-    void report(Rule rule, int manual, std::size_t b, std::size_t e, std::string ru, std::string en,
-                Severity severity = Severity::Error) {
-        if (severity == Severity::Error && ++lineErrors_ > kMaxErrorsPerLine)
+    // An error of the text: `id` of diagnostic_texts.h with its arguments.
+    void report(Rule rule, int manual, std::size_t b, std::size_t e, std::string_view id,
+                std::vector<std::string> args = {}, std::vector<DiagnosticPart> within = {}) {
+        if (++lineErrors_ > kMaxErrorsPerLine)
             return;
         Diagnostic d;
         d.rule = rule;
-        d.severity = severity;
+        d.severity = Severity::Error;
         d.program = currentDiagProgram_;
         d.line = lineNo_;
         const ColSpan s = span(b, e);
         d.column = s.column;
         d.endColumn = s.endColumn;
         d.manualNumber = manual;
-        d.messageRu = std::move(ru);
-        d.messageEn = std::move(en);
+        d.textId = id;
+        d.args = std::move(args);
+        d.within = std::move(within);
         out_.diagnostics.push_back(std::move(d));
     }
 
@@ -220,7 +211,7 @@ private:
     bool jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comments);
     // The next GOTO at or after i, or where a comment or the line begins/ends.
     std::size_t findGoto(std::size_t i) const;
-    void expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::string_view kindEn);
+    void expectEnd(std::size_t& i, Frame& f, std::string_view trailingId); // trailing.compute, .if, .goto
 
     // --- sections ---------------------------------------------------------------------
     void beginSection(); // before a header: closes the current section
@@ -244,9 +235,7 @@ void Parser::skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comment
         } else if (c == '(') {
             const std::size_t close = line_.find(')', i + 1);
             if (close == std::string_view::npos) {
-                report(Rule::UnclosedComment, 0, i, line_.size(),
-                       "Комментарий не закрыт: нет «)» до конца строки",
-                       "comment not closed: no ')' before the end of the line");
+                report(Rule::UnclosedComment, 0, i, line_.size(), "unclosed-comment");
                 comments.push_back({Comment::Style::Parens, std::string(line_.substr(i + 1))});
                 i = line_.size();
             } else {
@@ -295,11 +284,7 @@ void Parser::crLineEndHint() {
         return;
     crHintGiven_ = true;
     lineErrors_ = 0; // the hint is shown even after kMaxErrorsPerLine errors
-    report(Rule::Syntax, 0, cr, cr + 1,
-           "Символ CR без LF не завершает строку: концы строк в тексте программы — LF или CR LF; "
-           "преобразуйте файл (например, tr '\\r' '\\n')",
-           "a CR without LF does not end a line: program text ends its lines with LF or CR LF; "
-           "convert the file (e.g. tr '\\r' '\\n')");
+    report(Rule::Syntax, 0, cr, cr + 1, "cr-line-end");
 }
 
 void Parser::processLine() {
@@ -312,10 +297,8 @@ void Parser::processLine() {
     if (!lineAscii_ && !utf8::isValid(line_.substr(asciiPrefix_))) { // (the ASCII start is valid)
         const std::size_t bad = text::firstInvalidUtf8(line_);
         invalidUtf8At_ = bad;
-        const std::string byte = text::printable(line_.substr(bad, 1)); // "\xFF"
-        report(Rule::InvalidUtf8, 0, bad, bad + 1,
-               "Недопустимая последовательность байтов " + byte + ": текст программы должен быть в UTF-8",
-               "invalid byte sequence " + byte + ": program text must be UTF-8");
+        report(Rule::InvalidUtf8, 0, bad, bad + 1, "invalid-utf8",
+               {text::printable(line_.substr(bad, 1))}); // "\xFF"
     }
     std::size_t i = 0;
     skipSpaces(i);
@@ -353,9 +336,7 @@ void Parser::frameOutsideProgram() {
     d.line = implicitFirst_.line;
     d.column = implicitFirst_.column;
     d.endColumn = implicitFirst_.endColumn;
-    d.messageRu = "Кадры до первого заголовка %L<n> не принадлежат ни одной программе: "
-                  "добавьте заголовок перед ними";
-    d.messageEn = "frames before the first %L<n> header belong to no program: add a header above them";
+    d.textId = "frame-outside-program";
     out_.diagnostics.push_back(std::move(d));
     if (implicitOpen) {
         current_.frames.clear();
@@ -429,11 +410,7 @@ void Parser::headerLine(std::size_t start) {
     section_ = Section::Scratch;
     currentDiagProgram_ = 0;
     const std::size_t end = w > i ? w : charEnd(i);
-    report(Rule::BadHeader, 0, start, end,
-           "Неизвестный заголовок " + quote(line_.substr(start, end - start)) +
-               ": ожидается %L<номер программы> или %MESSAGES",
-           "unknown header " + squote(line_.substr(start, end - start)) +
-               ": expected %L<program number> or %MESSAGES");
+    report(Rule::BadHeader, 0, start, end, "header.unknown", {quoted(line_.substr(start, end - start))});
 }
 
 void Parser::programHeader(std::size_t start, std::size_t i) {
@@ -449,26 +426,20 @@ void Parser::programHeader(std::size_t start, std::size_t i) {
     currentDiagProgram_ = 0;
     if (!value) {
         ok = false;
-        report(Rule::BadHeader, 0, start, numEnd > numBegin ? numEnd : numBegin + 1,
-               lex.empty() ? std::string("Заголовок программы без номера: ожидается %L<1..99>")
-                           : "Номер программы " + quote(lex) + " — не целое число 1..99",
-               lex.empty() ? std::string("program header without a number: expected %L<1..99>")
-                           : "program number " + squote(lex) + " is not a whole number 1..99");
+        if (lex.empty())
+            report(Rule::BadHeader, 0, start, numEnd > numBegin ? numEnd : numBegin + 1, "header.no-number");
+        else
+            report(Rule::BadHeader, 0, start, numEnd, "header.bad-number", {quoted(lex)});
     } else if (*value < 1 || *value > kMaxPrograms) {
         ok = false;
         number = *value <= 999999999 ? static_cast<int>(*value) : 0;
-        report(Rule::ProgramNumberRange, 0, start, numEnd,
-               "Номер программы L" + std::string(lex) + " вне диапазона 1..99",
-               "program number L" + std::string(lex) + " is outside 1..99");
+        report(Rule::ProgramNumberRange, 0, start, numEnd, "program-number-range", {std::string(lex)});
     } else {
         number = static_cast<int>(*value);
         if (programLine_[static_cast<std::size_t>(number)] != 0) {
             ok = false;
-            report(Rule::DuplicateProgram, 0, start, numEnd,
-                   "Программа L" + std::to_string(number) + " уже определена в строке " +
-                       std::to_string(programLine_[static_cast<std::size_t>(number)]),
-                   "program L" + std::to_string(number) + " is already defined on line " +
-                       std::to_string(programLine_[static_cast<std::size_t>(number)]));
+            report(Rule::DuplicateProgram, 0, start, numEnd, "duplicate-program",
+                   {std::to_string(number), std::to_string(programLine_[static_cast<std::size_t>(number)])});
         }
     }
     sawProgramHeader_ = true;
@@ -489,9 +460,7 @@ void Parser::programHeader(std::size_t start, std::size_t i) {
     std::vector<Comment> comments;
     skipTrivia(i, comments);
     if (i < line_.size()) {
-        report(Rule::BadHeader, 0, i, line_.size(),
-               "Лишний текст после заголовка программы: " + quote(line_.substr(i)),
-               "unexpected text after the program header: " + squote(line_.substr(i)));
+        report(Rule::BadHeader, 0, i, line_.size(), "header.trailing", {quoted(line_.substr(i))});
     }
     std::size_t first = 0;
     if (!comments.empty() && comments.front().style == Comment::Style::Parens) {
@@ -518,9 +487,7 @@ void Parser::messagesHeader(std::size_t /*start*/, std::size_t i) {
     std::vector<Comment> comments;
     skipTrivia(i, comments);
     if (i < line_.size())
-        report(Rule::BadHeader, 0, i, line_.size(),
-               "Лишний текст после %MESSAGES: " + quote(line_.substr(i)),
-               "unexpected text after %MESSAGES: " + squote(line_.substr(i)));
+        report(Rule::BadHeader, 0, i, line_.size(), "header.messages-trailing", {quoted(line_.substr(i))});
     for (auto& c : comments)
         t.headerComments.push_back(std::move(c));
 }
@@ -534,9 +501,7 @@ void Parser::messageLine(std::size_t start) {
     const std::string_view lex = line_.substr(numBegin, i - numBegin);
     skipSpaces(i);
     if (lex.empty() || at(i) != '=') {
-        report(Rule::MessageSyntax, 0, start, line_.size(),
-               "Строка таблицы сообщений должна иметь вид #<1..99>=<текст>",
-               "a message table line must read #<1..99>=<text>");
+        report(Rule::MessageSyntax, 0, start, line_.size(), "message-syntax.line");
         return;
     }
     const auto value = text::parseUnsigned(lex);
@@ -544,18 +509,14 @@ void Parser::messageLine(std::size_t start) {
     while (!textPart.empty() && isSpace(textPart.back()))
         textPart.remove_suffix(1);
     if (!value || *value < 1 || *value > kMaxMessages) {
-        report(Rule::MessageNumberRange, 0, start, numBegin + lex.size(),
-               "Номер сообщения #" + std::string(lex) + " вне диапазона 1..99",
-               "message number #" + std::string(lex) + " is outside 1..99");
+        report(Rule::MessageNumberRange, 0, start, numBegin + lex.size(), "message-number-range",
+               {std::string(lex)});
         return;
     }
     const int k = static_cast<int>(*value);
     if (messageLine_[static_cast<std::size_t>(k)] != 0) {
-        report(Rule::DuplicateMessage, 0, start, numBegin + lex.size(),
-               "Сообщение #" + std::to_string(k) + " уже задано в строке " +
-                   std::to_string(messageLine_[static_cast<std::size_t>(k)]),
-               "message #" + std::to_string(k) + " is already defined on line " +
-                   std::to_string(messageLine_[static_cast<std::size_t>(k)]));
+        report(Rule::DuplicateMessage, 0, start, numBegin + lex.size(), "duplicate-message",
+               {std::to_string(k), std::to_string(messageLine_[static_cast<std::size_t>(k)])});
         return;
     }
     messageLine_[static_cast<std::size_t>(k)] = lineNo_;
@@ -585,9 +546,7 @@ void Parser::frameLine(std::size_t i) {
         return;
     }
     if (section_ == Section::Messages) {
-        report(Rule::MessageSyntax, 0, i, line_.size(),
-               "В разделе %MESSAGES допустимы только строки #<1..99>=<текст> и комментарии",
-               "only #<1..99>=<text> lines and comments may stand in the %MESSAGES section");
+        report(Rule::MessageSyntax, 0, i, line_.size(), "message-syntax.section");
         return;
     }
     if (current_.frames.empty())
@@ -678,20 +637,15 @@ bool Parser::intWordRest(std::size_t& i, std::size_t start, std::string_view nam
     i = e;
     const std::string_view lex = line_.substr(b, e - b);
     if (lex.empty()) {
-        const std::string n(name);
-        report(Rule::Syntax, manual, start, b,
-               "После адреса " + n + " нет числа", "address " + n + " is not followed by a number");
+        report(Rule::Syntax, manual, start, b, "address.no-number", {std::string(name)});
         return false;
     }
     const auto v = text::parseUnsigned(lex);
     if (!v) {
-        const std::string n(name);
-        const bool tooLong = text::isAllDigits(lex);
-        report(Rule::BadNumber, manual, start, e,
-               tooLong ? n + std::string(lex) + ": слишком большое число"
-                       : n + ": " + quote(lex) + " — ожидается целое число без знака и точки",
-               tooLong ? n + std::string(lex) + ": number too large"
-                       : n + ": " + squote(lex) + " is not a whole number without sign or point");
+        if (text::isAllDigits(lex))
+            report(Rule::BadNumber, manual, start, e, "address.too-large", {std::string(name), std::string(lex)});
+        else
+            report(Rule::BadNumber, manual, start, e, "address.not-whole", {std::string(name), quoted(lex)});
         return false;
     }
     w.number = static_cast<int>(*v);
@@ -759,36 +713,23 @@ bool Parser::valueRest(std::size_t& i, std::size_t start, std::string_view name,
     i = e;
     const std::string_view lex = line_.substr(b, e - b);
     if (lex.empty()) {
-        const std::string n(name);
-        report(Rule::Syntax, manual, start, b,
-               "После адреса " + n + " нет значения: ожидается число или R-параметр",
-               "address " + n + " has no value: expected a number or an R-parameter");
+        report(Rule::Syntax, manual, start, b, "address.no-value", {std::string(name)});
         return false;
     }
     if ((lex == "-" || lex == "+") && upper(at(e)) == 'R') {
-        const std::string n(name);
-        report(Rule::Syntax, manual, start, e + 1,
-               n + ": знак перед R-параметром недопустим; вычислите R<i>=0-R<j> отдельным кадром",
-               n + ": a sign before an R-parameter is not allowed; compute R<i>=0-R<j> in a frame of its own");
+        report(Rule::Syntax, manual, start, e + 1, "address.sign-before-r", {std::string(name)});
         return false;
     }
     const auto d = Decimal::parse(lex);
     if (!d) {
         // A plain decimal fails for one of two reasons, said as such:
         // leading zeros are not significant digits.
-        const std::string n(name);
         const bool plain = text::isPlainDecimal(lex);
         const bool tooLong = plain && text::significantDigits(lex) > Decimal::kMaxDigits;
         const bool tooFine = plain && !tooLong && text::fractionPlaces(lex) > Decimal::kMaxDigits;
-        const std::string ru = manual ? "Задание координаты " + n + ": " : n + ": ";
-        const std::string en = manual ? n + " value: " : n + ": ";
         report(Rule::BadNumber, manual, start, e,
-               tooLong   ? ru + "в числе " + quote(lex) + " больше 18 значащих цифр"
-               : tooFine ? ru + "в числе " + quote(lex) + " больше 18 цифр после точки"
-                         : ru + quote(lex) + " — не число",
-               tooLong   ? en + squote(lex) + " has more than 18 significant digits"
-               : tooFine ? en + squote(lex) + " has more than 18 digits after the decimal point"
-                         : en + squote(lex) + " is not a number");
+               tooLong ? "value.too-many-digits" : tooFine ? "value.too-fine" : "value.not-number", {quoted(lex)},
+               {{manual ? "value-of.coordinate" : "value-of.address", {std::string(name)}, {}}});
         return false;
     }
     v = Value::lit(*d);
@@ -802,44 +743,33 @@ void Parser::reportBadCharacter(std::size_t i, Frame& f) {
         // A byte that is not UTF-8: the line's first one is already reported
         // (invalid-utf8); a later one is shown as \xHH.
         if (i != invalidUtf8At_)
-            report(Rule::Syntax, 0, i, i + 1, "Неожиданный символ " + quote(line_.substr(i, 1)),
-                   "unexpected character " + squote(line_.substr(i, 1)));
+            report(Rule::Syntax, 0, i, i + 1, "unexpected-character", {quoted(line_.substr(i, 1))});
         return;
     }
     const std::size_t len = text::sequenceLength(line_, i);
     const char32_t cp = text::decodeAt(line_, i);
     if (cp >= 0x400 && cp <= 0x4FF) {
         const char latin = text::latinLookalike(cp);
-        std::string ru = "Кириллическая буква " + quote(line_.substr(i, len)) +
-                         ": адреса кадра пишутся латинскими буквами";
-        std::string en = "Cyrillic letter " + squote(line_.substr(i, len)) +
-                         ": frame addresses are Latin letters";
-        if (latin) {
-            ru += std::string(" (") + latin + ")";
-            en += std::string(" (") + latin + ")";
-        }
-        report(Rule::CyrillicLetter, 0, i, i + len, std::move(ru), std::move(en));
+        if (latin)
+            report(Rule::CyrillicLetter, 0, i, i + len, "cyrillic-letter.latin",
+                   {quoted(line_.substr(i, len)), std::string(1, latin)});
+        else
+            report(Rule::CyrillicLetter, 0, i, i + len, "cyrillic-letter", {quoted(line_.substr(i, len))});
         return;
     }
     const char c = line_[i];
     if (upper(c) >= 'A' && upper(c) <= 'Z') {
-        const std::string a(1, upper(c));
-        report(Rule::UnknownAddress, 0, i, i + 1,
-               "Неизвестный адрес " + quote(a) + ": в кадре допустимы N, G, M, #, L, X, Z, FX, FZ",
-               "unknown address " + squote(a) + ": a frame may contain N, G, M, #, L, X, Z, FX, FZ");
+        report(Rule::UnknownAddress, 0, i, i + 1, "unknown-address", {std::string(1, upper(c))});
         return;
     }
     // (quote shows a control character as \xHH)
-    report(Rule::Syntax, 0, i, i + len, "Неожиданный символ " + quote(line_.substr(i, len)),
-           "unexpected character " + squote(line_.substr(i, len)));
+    report(Rule::Syntax, 0, i, i + len, "unexpected-character", {quoted(line_.substr(i, len))});
 }
 
 void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& contentEnd) {
     Axis lastAxis = Axis::None; // the word just before was X or Z
     auto duplicate = [&](std::size_t s, std::size_t e, std::string_view sv) {
-        const std::string name(sv);
-        report(Rule::DuplicateWord, 0, s, e, "Адрес " + name + " задан в кадре дважды",
-               name + " is given twice in the frame");
+        report(Rule::DuplicateWord, 0, s, e, "duplicate-word", {std::string(sv)});
     };
     while (true) {
         skipTrivia(i, fc_);
@@ -852,9 +782,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
         switch (c) {
         case 'G': {
             if (keyword(i, "GOTO")) {
-                report(Rule::Syntax, 0, s, s + 4,
-                       "GOTO — кадр безусловного перехода: в нём может быть только [/][N] GOTO <номер кадра>",
-                       "GOTO makes an unconditional jump frame: it holds only [/][N] GOTO <frame number>");
+                report(Rule::Syntax, 0, s, s + 4, "goto-in-frame");
                 i += 4;
                 ok = false;
                 break;
@@ -864,9 +792,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
             ok = intWord(i, s, "G", w);
             if (ok) {
                 if (iso.g.full()) {
-                    report(Rule::TooManyG, 0, s, i,
-                           "Больше трёх G-функций в кадре: " + gName(w.number) + " лишняя",
-                           "more than three G functions in the frame: " + gName(w.number) + " is one too many");
+                    report(Rule::TooManyG, 0, s, i, "too-many-g", {gName(w.number)});
                     ok = false;
                 } else {
                     iso.g.push_back(w);
@@ -880,10 +806,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
             ok = intWord(i, s, "M", w);
             if (ok) {
                 if (iso.m.full()) {
-                    report(Rule::TooManyM, 0, s, i,
-                           "Больше трёх M-функций в кадре: M" + std::to_string(w.number) + " лишняя",
-                           "more than three M functions in the frame: M" + std::to_string(w.number) +
-                               " is one too many");
+                    report(Rule::TooManyM, 0, s, i, "too-many-m", {std::to_string(w.number)});
                     ok = false;
                 } else {
                     iso.m.push_back(w);
@@ -912,8 +835,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
             ++i;
             Word w;
             intWord(i, s, "N", w);
-            report(Rule::Syntax, 0, s, i, "Номер кадра N должен стоять в начале кадра",
-                   "the frame number N must come first in the frame");
+            report(Rule::Syntax, 0, s, i, "n-not-first");
             ok = false;
             break;
         }
@@ -951,10 +873,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
             if (!ok)
                 break;
             if (axis == Axis::None) {
-                report(Rule::FeedWithoutAxis, 0, s, i,
-                       "F без оси: F относится к слову X или Z непосредственно перед ним; напишите FX или FZ",
-                       "F without an axis: a bare F applies to the X or Z word directly before it; "
-                       "write FX or FZ");
+                report(Rule::FeedWithoutAxis, 0, s, i, "feed-without-axis");
                 ok = false;
                 break;
             }
@@ -968,19 +887,13 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
             break;
         }
         case 'R':
-            report(Rule::Syntax, 0, s, s + 1,
-                   "R-параметр вне вычислительного кадра: R<i>=… пишется отдельным кадром, "
-                   "а в X, Z, FX, FZ — как X=R<i>",
-                   "R-parameter outside a computational frame: write R<i>=... as a frame of its own, "
-                   "and in X, Z, FX, FZ as X=R<i>");
+            report(Rule::Syntax, 0, s, s + 1, "r-outside-compute");
             ok = false;
             i = resync(i);
             break;
         case 'I':
             if (upper(at(i + 1)) == 'F') {
-                report(Rule::Syntax, 0, s, s + 2,
-                       "IF — кадр условного перехода: в нём может быть только [/][N] IF R<i>>0 GOTO <номер>",
-                       "IF makes a conditional jump frame: it holds only [/][N] IF R<i>>0 GOTO <number>");
+                report(Rule::Syntax, 0, s, s + 2, "if-in-frame");
                 ok = false;
                 i = line_.size();
                 break;
@@ -990,9 +903,7 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
             i = resync(i);
             break;
         case '/':
-            report(Rule::Syntax, 0, s, s + 1,
-                   "Признак пропуска «/» может стоять только в начале кадра",
-                   "the skip flag '/' may only stand at the start of the frame");
+            report(Rule::Syntax, 0, s, s + 1, "skip-not-first");
             ok = false;
             ++i;
             break;
@@ -1024,41 +935,30 @@ bool Parser::operand(std::size_t& i, Operand& o, std::vector<Comment>& comments)
     const std::size_t e = numberEnd(i);
     const std::string_view lex = line_.substr(s, e - s);
     if (lex.empty()) {
-        report(Rule::Syntax, 0, s, s + 1, "Ожидается целое число или R-параметр",
-               "expected a whole number or an R-parameter");
+        report(Rule::Syntax, 0, s, s + 1, "operand.missing");
         return false;
     }
     if ((lex == "-" || lex == "+") && upper(at(e)) == 'R') {
-        report(Rule::Syntax, 0, s, e + 1,
-               "Знак перед R-параметром недопустим: вместо -R<j> напишите 0-R<j>",
-               "a sign before an R-parameter is not allowed: write 0-R<j> instead of -R<j>");
+        report(Rule::Syntax, 0, s, e + 1, "operand.sign-before-r");
         i = e;
         return false;
     }
     i = e;
     if (lex.find('.') != std::string_view::npos) {
-        report(Rule::DecimalInCompute, 0, s, e,
-               "Десятичная точка в вычислительном кадре: R-параметры — целые числа (дискреты), " +
-                   quote(lex) + " недопустимо",
-               "decimal point in a computational frame: R-parameters are whole numbers (discretes), " +
-                   squote(lex) + " is not allowed");
+        report(Rule::DecimalInCompute, 0, s, e, "decimal-in-compute", {quoted(lex)});
         return false;
     }
     const auto v = text::parseSigned(lex);
     if (!v) {
         if (text::countDigits(lex) == 0) {
-            report(Rule::Syntax, 0, s, e, quote(lex) + " — не число", squote(lex) + " is not a number");
+            report(Rule::Syntax, 0, s, e, "operand.not-number", {quoted(lex)});
             return false;
         }
-        report(Rule::LiteralRange, 0, s, e,
-               "Число " + std::string(lex) + " вне диапазона R-параметра (-2147483648..2147483647)",
-               "number " + std::string(lex) + " is outside the range of an R-parameter (-2147483648..2147483647)");
+        report(Rule::LiteralRange, 0, s, e, "literal-range", {std::string(lex)});
         return false;
     }
     if (*v < INT32_MIN || *v > INT32_MAX) {
-        report(Rule::LiteralRange, 0, s, e,
-               "Число " + std::string(lex) + " вне диапазона R-параметра (-2147483648..2147483647)",
-               "number " + std::string(lex) + " is outside the range of an R-parameter (-2147483648..2147483647)");
+        report(Rule::LiteralRange, 0, s, e, "literal-range", {std::string(lex)});
         return false;
     }
     o = Operand::lit(static_cast<std::int32_t>(*v));
@@ -1066,12 +966,10 @@ bool Parser::operand(std::size_t& i, Operand& o, std::vector<Comment>& comments)
     return true;
 }
 
-void Parser::expectEnd(std::size_t& i, Frame& f, std::string_view kindRu, std::string_view kindEn) {
+void Parser::expectEnd(std::size_t& i, Frame& f, std::string_view trailingId) {
     skipTrivia(i, fc_);
     if (i < line_.size()) {
-        report(Rule::Syntax, 0, i, line_.size(),
-               "Лишний текст в " + std::string(kindRu) + ": " + quote(line_.substr(i)),
-               "unexpected text in " + std::string(kindEn) + ": " + squote(line_.substr(i)));
+        report(Rule::Syntax, 0, i, line_.size(), trailingId, {quoted(line_.substr(i))});
         f.malformed = true;
         i = line_.size();
     }
@@ -1087,9 +985,7 @@ void Parser::computeFrame(std::size_t& i, Frame& f, ComputeFrame& cf, std::size_
     contentEnd = i;
     skipTrivia(i, fc_);
     if (at(i) != '=') {
-        report(Rule::Syntax, 0, i, i + 1,
-               "Вычислительный кадр: после R" + std::to_string(cf.target.number) + " ожидается «=»",
-               "computational frame: '=' expected after R" + std::to_string(cf.target.number));
+        report(Rule::Syntax, 0, i, i + 1, "compute.equals", {std::to_string(cf.target.number)});
         f.malformed = true;
         return;
     }
@@ -1117,11 +1013,8 @@ void Parser::computeFrame(std::size_t& i, Frame& f, ComputeFrame& cf, std::size_
             a = ArithOp::Div;
             break;
         default:
-            report(Rule::Syntax, 0, i, i + text::sequenceLength(line_, i),
-                   "Вычислительный кадр: ожидается знак операции + - * / или конец кадра, а не " +
-                       quote(line_.substr(i, text::sequenceLength(line_, i))),
-                   "computational frame: expected an operation + - * / or the end of the frame, not " +
-                       squote(line_.substr(i, text::sequenceLength(line_, i))));
+            report(Rule::Syntax, 0, i, i + text::sequenceLength(line_, i), "compute.operation",
+                   {quoted(line_.substr(i, text::sequenceLength(line_, i)))});
             f.malformed = true;
             return;
         }
@@ -1134,7 +1027,7 @@ void Parser::computeFrame(std::size_t& i, Frame& f, ComputeFrame& cf, std::size_
         }
         contentEnd = i;
     }
-    expectEnd(i, f, "вычислительном кадре", "a computational frame");
+    expectEnd(i, f, "trailing.compute");
 }
 
 bool Parser::jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comments) {
@@ -1151,26 +1044,22 @@ bool Parser::jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comm
         const std::size_t e = numberEnd(j);
         const auto v = text::parseUnsigned(line_.substr(j, e - j));
         i = e > j ? e : i + 1;
-        report(Rule::Syntax, 0, s, i,
-               v ? "Номер кадра перехода пишется без N: GOTO " + std::to_string(*v)
-                 : std::string("Номер кадра перехода пишется без N: GOTO <номер кадра 1..999>"),
-               v ? "the jump target is written without N: GOTO " + std::to_string(*v)
-                 : std::string("the jump target is written without N: GOTO <frame number 1..999>"));
+        if (v)
+            report(Rule::Syntax, 0, s, i, "jump.with-n", {std::to_string(*v)});
+        else
+            report(Rule::Syntax, 0, s, i, "jump.with-n-only");
         return false;
     }
     const std::size_t e = numberEnd(i);
     const std::string_view lex = line_.substr(s, e - s);
     i = e;
     if (lex.empty()) {
-        report(Rule::Syntax, 0, s, s + 1, "После GOTO нет номера кадра",
-               "GOTO is not followed by a frame number");
+        report(Rule::Syntax, 0, s, s + 1, "jump.no-number");
         return false;
     }
     const auto v = text::parseUnsigned(lex);
     if (!v) {
-        report(Rule::BadNumber, 53, s, e,
-               "Номер кадра перехода " + quote(lex) + " — не целое число 1..999",
-               "jump target " + squote(lex) + " is not a whole number 1..999");
+        report(Rule::BadNumber, 53, s, e, "jump.bad-number", {quoted(lex)});
         return false;
     }
     target.number = static_cast<int>(*v);
@@ -1193,8 +1082,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, IfGotoFrame& jf, std::size_t& con
     bool bad = false;
     const std::size_t rs = i;
     if (upper(at(i)) != 'R') {
-        report(Rule::Syntax, 0, rs, charEnd(rs), "После IF ожидается R-параметр: IF R<i>>0 GOTO <номер>",
-               "IF must be followed by an R-parameter: IF R<i>>0 GOTO <number>");
+        report(Rule::Syntax, 0, rs, charEnd(rs), "if.no-r");
         bad = true;
         i = findGoto(i);
     } else {
@@ -1214,11 +1102,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, IfGotoFrame& jf, std::size_t& con
             !val.empty() && text::isAllDigits(val) && val.find_first_not_of('0') == std::string_view::npos;
         const std::string r = rOk ? "R" + std::to_string(jf.r.number) : std::string("R<i>");
         if (rel != ">" || !zero) {
-            report(Rule::BadCondition, 0, cs, ve > cs ? ve : charEnd(cs),
-                   "Условие перехода может быть только " + r +
-                       ">0 (руководство, 2.7.1.3); другое условие сведите к нему вычислительным кадром",
-                   "the only jump condition is " + r +
-                       ">0 (manual 2.7.1.3); reduce another condition to it with a computational frame");
+            report(Rule::BadCondition, 0, cs, ve > cs ? ve : charEnd(cs), "bad-condition", {r});
             bad = true;
             i = findGoto(ve > cs ? ve : cs);
         } else {
@@ -1233,8 +1117,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, IfGotoFrame& jf, std::size_t& con
     skipTrivia(i, fc_);
     if (!keyword(i, "GOTO")) {
         if (!bad) // after an error, what stands here cannot be told from a broken condition
-            report(Rule::Syntax, 0, i, charEnd(i), "После условия ожидается GOTO <номер кадра>",
-                   "the condition must be followed by GOTO <frame number>");
+            report(Rule::Syntax, 0, i, charEnd(i), "if.no-goto");
         f.malformed = true;
         return;
     }
@@ -1246,7 +1129,7 @@ void Parser::ifFrame(std::size_t& i, Frame& f, IfGotoFrame& jf, std::size_t& con
         return;
     }
     contentEnd = i;
-    expectEnd(i, f, "кадре условного перехода", "a conditional jump frame");
+    expectEnd(i, f, "trailing.if");
 }
 
 void Parser::gotoFrame(std::size_t& i, Frame& f, GotoFrame& gf, std::size_t& contentEnd) {
@@ -1256,7 +1139,7 @@ void Parser::gotoFrame(std::size_t& i, Frame& f, GotoFrame& gf, std::size_t& con
         return;
     }
     contentEnd = i;
-    expectEnd(i, f, "кадре безусловного перехода", "an unconditional jump frame");
+    expectEnd(i, f, "trailing.goto");
 }
 
 } // namespace

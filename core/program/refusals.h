@@ -46,10 +46,11 @@ struct Refusal {
     refusal::Words needs;  // all of these in the frame
     refusal::Words unless; // none of these
     RefusalSpot spot;      // where the validator reports it
-    // The diagnostic's text, Russian and English: %1 the frame ("в кадре
-    // N5" / "in frame N5", or without N), %2 the program named: the one
-    // the frame calls, or for LastOfSubprogram the subprogram itself ("L2").
-    std::string_view textRu, textEn;
+    // The diagnostic's text, an id of diagnostic_texts.h: %1 the program
+    // named ("L2": the one the frame calls, or for LastOfSubprogram the
+    // subprogram itself), %2 the frame («в кадре N5» / "in frame N5", or
+    // without N).
+    std::string_view textId;
 
     constexpr bool matches(refusal::Words w) const {
         return (w & needs) == needs && (w & unless) == 0;

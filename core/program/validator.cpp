@@ -213,20 +213,6 @@ std::vector<int> cyclePath(const CallAnalysis& a, int from, int to) {
     return path;
 }
 
-// A refusal's text with %1 (the frame) and %2 (the program) filled in.
-std::string fillText(std::string_view text, const std::string& frame, const std::string& program) {
-    std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '%' && i + 1 < text.size() && (text[i + 1] == '1' || text[i + 1] == '2')) {
-            out += text[i + 1] == '1' ? frame : program;
-            ++i;
-        } else {
-            out += text[i];
-        }
-    }
-    return out;
-}
-
 // The word a refusal points at (the table names it; the frame has it).
 ColSpan refusalSpan(const Frame& f, const IsoFrame& iso, RefusalSpot spot) {
     const Word* m = nullptr;
@@ -250,24 +236,12 @@ ColSpan refusalSpan(const Frame& f, const IsoFrame& iso, RefusalSpot spot) {
     return m ? m->span : ColSpan{f.span.column, f.span.endColumn};
 }
 
-std::string chainText(const std::vector<int>& programs) {
-    std::string s;
-    for (std::size_t i = 0; i < programs.size(); ++i) {
-        if (i)
-            s += "→";
-        s += "L" + std::to_string(programs[i]);
-    }
-    return s;
-}
-
-std::string chainTextAscii(const std::vector<int>& programs) {
-    std::string s;
-    for (std::size_t i = 0; i < programs.size(); ++i) {
-        if (i)
-            s += "->";
-        s += "L" + std::to_string(programs[i]);
-    }
-    return s;
+// A chain of calls «L1→L2→L3» ("L1->L2->L3") as parts of the catalog.
+DiagnosticPart chainPart(const std::vector<int>& programs) {
+    DiagnosticPart last{"chain.end", {programs.empty() ? std::string() : std::to_string(programs.back())}, {}};
+    for (std::size_t i = programs.size() > 1 ? programs.size() - 1 : 0; i-- > 0;)
+        last = DiagnosticPart{"chain.call", {std::to_string(programs[i])}, {std::move(last)}};
+    return last;
 }
 
 // --- Checking one program ------------------------------------------------------------------------
@@ -289,7 +263,8 @@ private:
     std::vector<Diagnostic>& out_;
     std::array<std::int32_t, kMaxFrameNumber + 1> firstOfN_{};
 
-    void add(Rule rule, Severity severity, int manual, int line, ColSpan span, std::string ru, std::string en) {
+    void add(Rule rule, Severity severity, int manual, int line, ColSpan span, std::string_view id,
+             std::vector<std::string> args, std::vector<DiagnosticPart> within = {}) {
         Diagnostic d;
         d.rule = rule;
         d.severity = severity;
@@ -298,20 +273,24 @@ private:
         d.column = span.column > 0 ? span.column : 1;
         d.endColumn = span.endColumn > d.column ? span.endColumn : d.column + 1;
         d.manualNumber = manual;
-        d.messageRu = std::move(ru);
-        d.messageEn = std::move(en);
+        d.textId = id;
+        d.args = std::move(args);
+        d.within = std::move(within);
         out_.push_back(std::move(d));
     }
-    void error(Rule r, int manual, const Frame& f, ColSpan s, std::string ru, std::string en) {
-        add(r, Severity::Error, manual, f.span.line, s, std::move(ru), std::move(en));
+    // `id` of diagnostic_texts.h with its arguments.
+    void error(Rule r, int manual, const Frame& f, ColSpan s, std::string_view id, std::vector<std::string> args = {},
+               std::vector<DiagnosticPart> within = {}) {
+        add(r, Severity::Error, manual, f.span.line, s, id, std::move(args), std::move(within));
     }
-    void warning(Rule r, int manual, const Frame& f, ColSpan s, std::string ru, std::string en) {
-        add(r, Severity::Warning, manual, f.span.line, s, std::move(ru), std::move(en));
+    void warning(Rule r, int manual, const Frame& f, ColSpan s, std::string_view id, std::vector<std::string> args = {},
+                 std::vector<DiagnosticPart> within = {}) {
+        add(r, Severity::Warning, manual, f.span.line, s, id, std::move(args), std::move(within));
     }
     static ColSpan whole(const Frame& f) { return {f.span.column, f.span.endColumn}; }
-    std::string where(const Frame& f) const {
-        // " в кадре N12" / " in frame N12" (nothing when the frame has no N)
-        return f.n ? std::to_string(f.n->number) : std::string();
+    // «в кадре N12» / "in frame N12" («в кадре» when the frame has no N).
+    static DiagnosticPart where(const Frame& f) {
+        return f.n ? DiagnosticPart{"frame.numbered", {std::to_string(f.n->number)}, {}} : DiagnosticPart{"frame", {}, {}};
     }
 
     void frameNumbers();
@@ -337,17 +316,13 @@ private:
 void ProgramChecker::run() {
     if (p_.frames.empty()) {
         add(Rule::EmptyProgram, Severity::Warning, 0, p_.headerLine > 0 ? p_.headerLine : 1, {1, 2},
-            "Программа L" + std::to_string(p_.number) + " не содержит кадров",
-            "program L" + std::to_string(p_.number) + " has no frames");
+            "empty-program", {std::to_string(p_.number)});
         return;
     }
     if (p_.frames.size() > static_cast<std::size_t>(kMaxFrames)) {
         const Frame& f = p_.frames[kMaxFrames];
-        error(Rule::TooManyFrames, 0, f, whole(f),
-              "В программе L" + std::to_string(p_.number) + " " + std::to_string(p_.frames.size()) +
-                  " кадров: допускается не более 999; этот кадр — 1000-й",
-              "program L" + std::to_string(p_.number) + " has " + std::to_string(p_.frames.size()) +
-                  " frames: at most 999 are allowed; this is frame 1000");
+        error(Rule::TooManyFrames, 0, f, whole(f), "too-many-frames",
+              {std::to_string(p_.number), std::to_string(p_.frames.size())});
     }
     frameNumbers();
     lastOfSubprogram_ = graph_.isCalled(p_.number);
@@ -396,9 +371,7 @@ void ProgramChecker::frameNumbers() {
             continue;
         const int n = f.n->number;
         if (n < 1 || n > kMaxFrameNumber) {
-            error(Rule::FrameNumberRange, 0, f, f.n->span,
-                  "Номер кадра N" + std::to_string(n) + " вне диапазона 1..999",
-                  "frame number N" + std::to_string(n) + " is outside 1..999");
+            error(Rule::FrameNumberRange, 0, f, f.n->span, "frame-number-range", {std::to_string(n)});
             continue;
         }
         auto& first = firstOfN_[static_cast<std::size_t>(n)];
@@ -407,18 +380,14 @@ void ProgramChecker::frameNumbers() {
             continue;
         }
         const int firstLine = p_.frames[static_cast<std::size_t>(first)].span.line;
-        error(Rule::DuplicateFrameNumber, 54, f, f.n->span,
-              "Дублирование номеров кадров: N" + std::to_string(n) + " уже есть в строке " +
-                  std::to_string(firstLine),
-              "duplicate frame numbers: N" + std::to_string(n) + " is already used on line " +
-                  std::to_string(firstLine));
+        error(Rule::DuplicateFrameNumber, 54, f, f.n->span, "duplicate-frame-number",
+              {std::to_string(n), std::to_string(firstLine)});
     }
 }
 
 void ProgramChecker::rIndex(const Frame& f, int index, ColSpan s) {
     if (index < 0 || index >= kRCount)
-        error(Rule::RIndexRange, 0, f, s, "R-параметр R" + std::to_string(index) + " не существует: номера 0..299",
-              "R-parameter R" + std::to_string(index) + " does not exist: numbers are 0..299");
+        error(Rule::RIndexRange, 0, f, s, "r-index-range", {std::to_string(index)});
 }
 
 void ProgramChecker::gWords(const Frame& f, const IsoFrame& iso) {
@@ -429,22 +398,14 @@ void ProgramChecker::gWords(const Frame& f, const IsoFrame& iso) {
         const GInfo& info = gInfo_[static_cast<std::size_t>(i)];
         if (!info.known()) {
             const bool range = w.number < 0 || w.number > kMaxG;
-            error(Rule::UnknownG, 47, f, w.span,
-                  "G?: " + (range ? "номер " + gName(w.number) + " вне диапазона 0..299"
-                                  : "функции " + gName(w.number) + " нет в таблице 5"),
-                  "G?: " + (range ? gName(w.number) + " is outside 0..299"
-                                  : gName(w.number) + " is not a G function of table 5"));
+            error(Rule::UnknownG, 47, f, w.span, range ? "unknown-g.range" : "unknown-g", {gName(w.number)});
             continue;
         }
         for (int j = 0; j < i; ++j) {
             const GInfo& other = gInfo_[static_cast<std::size_t>(j)];
             if (other.known() && other.group == info.group) {
-                const std::string group = std::to_string(groupNumber(info.group));
-                error(Rule::GSameGroup, 47, f, w.span,
-                      "G?: " + gName(iso.g[j].number) + " и " + gName(w.number) + " из одной группы " + group +
-                          ": в кадре допустима одна функция группы",
-                      "G?: " + gName(iso.g[j].number) + " and " + gName(w.number) + " are both of group " +
-                          group + ": a frame may hold one function of a group");
+                error(Rule::GSameGroup, 47, f, w.span, "g-same-group",
+                      {gName(iso.g[j].number), gName(w.number), std::to_string(groupNumber(info.group))});
                 break;
             }
         }
@@ -463,21 +424,14 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
         const Decimal& d = v->literal;
         if (dwell && axis == 'X') {
             if (d.isNegative())
-                error(Rule::DwellNegative, 33, f, v->span,
-                      "Задание координаты X: выдержка времени G04 X" + d.toString() + " отрицательна",
-                      "X value: the dwell time G04 X" + d.toString() + " is negative");
+                error(Rule::DwellNegative, 33, f, v->span, "dwell-negative", {d.toString()});
             else if (d > kMaxCoordinate)
-                error(Rule::CoordinateRange, 33, f, v->span,
-                      "Задание координаты X: выдержка X" + d.toString() + " с больше 9999.999 с",
-                      "X value: the dwell X" + d.toString() + " s is longer than 9999.999 s");
+                error(Rule::CoordinateRange, 33, f, v->span, "dwell-range", {d.toString()});
             return;
         }
         constexpr Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
         if (d > kMaxCoordinate || d < neg) {
-            const std::string a(1, axis);
-            error(Rule::CoordinateRange, manual, f, v->span,
-                  "Задание координаты " + a + ": " + a + d.toString() + " вне диапазона ±9999.999 мм",
-                  a + " value: " + a + d.toString() + " is outside ±9999.999 mm");
+            error(Rule::CoordinateRange, manual, f, v->span, "coordinate-range", {std::string(1, axis), d.toString()});
         }
     };
     auto feed = [&](const std::optional<Value>& v, const char* name) {
@@ -489,9 +443,7 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
         }
         const Decimal& d = v->literal;
         if (d < kMinFeed || d > kMaxFeed)
-            error(Rule::FeedRange, 0, f, v->span,
-                  std::string("Подача ") + name + d.toString() + " вне диапазона 0.001..10000 мм/мин",
-                  std::string("feed ") + name + d.toString() + " is outside 0.001..10000 mm/min");
+            error(Rule::FeedRange, 0, f, v->span, "feed-range", {name, d.toString()});
     };
     coordinate(iso.x, 'X', 33);
     coordinate(iso.z, 'Z', 49);
@@ -505,25 +457,14 @@ void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
     if (lastOfSubprogram_ && &f == &p_.frames.back() && !f.skip)
         words |= refusal::LastOfSubprogram;
     if (words != 0) {
-        std::string frameRu, frameEn, program;
-        for (const Refusal& r : refusals()) {
-            if (!r.matches(words))
-                continue;
-            if (frameRu.empty()) {
-                const std::string n = where(f);
-                frameRu = n.empty() ? "в кадре" : "в кадре N" + n;
-                frameEn = n.empty() ? "in the frame" : "in frame N" + n;
-                program = "L" + std::to_string(iso.call ? iso.call->number : p_.number);
-            }
-            error(r.rule, r.message, f, refusalSpan(f, iso, r.spot),
-                  fillText(r.textRu, frameRu, program), fillText(r.textEn, frameEn, program));
-        }
+        const std::string program = "L" + std::to_string(iso.call ? iso.call->number : p_.number);
+        for (const Refusal& r : refusals())
+            if (r.matches(words))
+                error(r.rule, r.message, f, refusalSpan(f, iso, r.spot), r.textId, {program}, {where(f)});
     }
     if (const Word* g4 = iso.findG(4)) {
         if (!iso.x)
-            warning(Rule::DwellWithoutTime, 0, f, g4->span,
-                    "G04 без X: время выдержки не задано (например, G04 X20.5 — 20,5 с)",
-                    "G04 without X: no dwell time is given (e.g. G04 X20.5 is 20.5 s)");
+            warning(Rule::DwellWithoutTime, 0, f, g4->span, "dwell-without-time");
     }
     // Axis functions that need a value of their axis.
     for (int i = 0; i < iso.g.size(); ++i) {
@@ -536,27 +477,18 @@ void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
         switch (info.function) {
         case GFunction::SetPosition:
             if (!has)
-                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span,
-                        gName(w.number) + " без " + a + ": не задано, какое положение установить (например, " +
-                            gName(w.number) + " " + a + "12.324)",
-                        gName(w.number) + " without " + a + ": no position to set is given (e.g. " +
-                            gName(w.number) + " " + a + "12.324)");
+                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span, "axis-function.set-position",
+                        {gName(w.number), a});
             break;
         case GFunction::OscillationStart:
             if (!has)
-                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span,
-                        gName(w.number) + " без " + a + ": не задан ход осцилляции (например, " +
-                            gName(w.number) + " " + a + "=-30.5 F" + a + "=100)",
-                        gName(w.number) + " without " + a + ": no oscillation stroke is given (e.g. " +
-                            gName(w.number) + " " + a + "=-30.5 F" + a + "=100)");
+                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span, "axis-function.oscillation",
+                        {gName(w.number), a});
             break;
         case GFunction::StopOnSignal:
             if (!has)
-                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span,
-                        gName(w.number) + " без " + a + ": нет перемещения по оси " + a +
-                            ", которое прерывает сигнал " + std::to_string(info.signal),
-                        gName(w.number) + " without " + a + ": there is no motion of axis " + a +
-                            " for signal " + std::to_string(info.signal) + " to interrupt");
+                warning(Rule::AxisFunctionWithoutValue, 0, f, w.span, "axis-function.signal",
+                        {gName(w.number), a, std::to_string(info.signal)});
             break;
         default:
             break;
@@ -569,37 +501,26 @@ void ProgramChecker::isoFrame(const Frame& f, const IsoFrame& iso) {
     for (int i = 0; i < iso.m.size(); ++i) {
         const Word& w = iso.m[i];
         if (w.number < 0 || w.number > kMaxM)
-            error(Rule::MRange, 0, f, w.span, "M" + std::to_string(w.number) + ": номер M-функции вне диапазона 0..99",
-                  "M" + std::to_string(w.number) + ": M function number outside 0..99");
+            error(Rule::MRange, 0, f, w.span, "m-range", {std::to_string(w.number)});
         for (int j = 0; j < i; ++j)
             if (iso.m[j].number == w.number) {
-                warning(Rule::MRepeated, 0, f, w.span,
-                        "M" + std::to_string(w.number) + " дважды в кадре: ПЛК получит её два раза",
-                        "M" + std::to_string(w.number) + " twice in the frame: the PLC gets it twice");
+                warning(Rule::MRepeated, 0, f, w.span, "m-repeated", {std::to_string(w.number)});
                 break;
             }
     }
     if (iso.message) {
         const int k = iso.message->number;
         if (k < 1 || k > kMaxMessages)
-            error(Rule::MessageRange, 0, f, iso.message->span,
-                  "#" + std::to_string(k) + ": номер технологического сообщения вне диапазона 1..99",
-                  "#" + std::to_string(k) + ": technological message number outside 1..99");
+            error(Rule::MessageRange, 0, f, iso.message->span, "message-range", {std::to_string(k)});
         else if (store_.messages.present && !store_.messages.find(k))
-            warning(Rule::MessageUndefined, 0, f, iso.message->span,
-                    "Сообщения #" + std::to_string(k) + " нет в таблице сообщений: строка 2 индикатора будет пустой",
-                    "message #" + std::to_string(k) + " is not in the message table: LCD line 2 will be blank");
+            warning(Rule::MessageUndefined, 0, f, iso.message->span, "message-undefined", {std::to_string(k)});
     }
     if (iso.call) {
         const int l = iso.call->number;
         if (l < 1 || l > kMaxPrograms)
-            error(Rule::CallRange, 0, f, iso.call->span,
-                  "L" + std::to_string(l) + ": номер вызываемой программы вне диапазона 1..99",
-                  "L" + std::to_string(l) + ": called program number outside 1..99");
+            error(Rule::CallRange, 0, f, iso.call->span, "call-range", {std::to_string(l)});
         else if (!store_.contains(l))
-            error(Rule::CallMissing, 45, f, iso.call->span,
-                  "L отсутствует: программы L" + std::to_string(l) + " нет",
-                  "L missing: there is no program L" + std::to_string(l));
+            error(Rule::CallMissing, 45, f, iso.call->span, "call-missing", {std::to_string(l)});
     }
     values(f, iso);
     combinations(f, iso);
@@ -610,9 +531,7 @@ void ProgramChecker::computeFrame(const Frame& f, const ComputeFrame& c) {
     if (t < 0 || t >= kRCount)
         rIndex(f, t, c.target.span);
     else if (t >= kFirstReadOnlyR && t <= kLastReadOnlyR)
-        error(Rule::ReadOnlyR, 0, f, c.target.span,
-              "R" + std::to_string(t) + " только для чтения (R232..R262, приложение Л): запись в него невозможна",
-              "R" + std::to_string(t) + " is read only (R232..R262, appendix Л): it cannot be written");
+        error(Rule::ReadOnlyR, 0, f, c.target.span, "read-only-r", {std::to_string(t)});
     if (c.a.isR())
         rIndex(f, c.a.rIndex, c.a.span);
     if (c.op == ArithOp::None)
@@ -620,8 +539,7 @@ void ProgramChecker::computeFrame(const Frame& f, const ComputeFrame& c) {
     if (c.b.isR())
         rIndex(f, c.b.rIndex, c.b.span);
     if (c.op == ArithOp::Div && !c.b.isR() && c.b.literal == 0) {
-        error(Rule::DivisionByZero, 46, f, c.b.span, "Переполнение: деление на ноль",
-              "overflow: division by zero");
+        error(Rule::DivisionByZero, 46, f, c.b.span, "division-by-zero");
         return;
     }
     if (c.a.isR() || c.b.isR())
@@ -646,23 +564,17 @@ void ProgramChecker::computeFrame(const Frame& f, const ComputeFrame& c) {
         break;
     }
     if (r < INT32_MIN || r > INT32_MAX)
-        error(Rule::ConstantOverflow, 46, f, whole(f),
-              "Переполнение: результат " + std::to_string(r) + " вне диапазона -2147483648..2147483647",
-              "overflow: the result " + std::to_string(r) + " is outside -2147483648..2147483647");
+        error(Rule::ConstantOverflow, 46, f, whole(f), "constant-overflow", {std::to_string(r)});
 }
 
 void ProgramChecker::jump(const Frame& f, const Word& target) {
     const int n = target.number;
     if (n < 1 || n > kMaxFrameNumber) {
-        error(Rule::JumpTarget, 53, f, target.span,
-              "Ошибка перехода: номер кадра " + std::to_string(n) + " вне диапазона 1..999",
-              "jump error: frame number " + std::to_string(n) + " is outside 1..999");
+        error(Rule::JumpTarget, 53, f, target.span, "jump-target.range", {std::to_string(n)});
         return;
     }
     if (firstOfN_[static_cast<std::size_t>(n)] < 0)
-        error(Rule::JumpTarget, 53, f, target.span,
-              "Ошибка перехода: кадра N" + std::to_string(n) + " нет в программе L" + std::to_string(p_.number),
-              "jump error: there is no frame N" + std::to_string(n) + " in program L" + std::to_string(p_.number));
+        error(Rule::JumpTarget, 53, f, target.span, "jump-target", {std::to_string(n), std::to_string(p_.number)});
 }
 
 void ProgramChecker::reachability() {
@@ -734,17 +646,11 @@ void ProgramChecker::reachability() {
             ++j;
         const Frame& first = p_.frames[i];
         const Frame& last = p_.frames[j];
-        const std::string lines = i == j ? std::to_string(first.span.line)
-                                         : std::to_string(first.span.line) + "–" + std::to_string(last.span.line);
-        const std::string linesEn = i == j ? std::to_string(first.span.line)
-                                           : std::to_string(first.span.line) + "-" + std::to_string(last.span.line);
-        warning(Rule::Unreachable, 0, first, whole(first),
-                (i == j ? "Кадр в строке " + lines + " никогда не выполняется"
-                        : "Кадры в строках " + lines + " никогда не выполняются") +
-                    ": выше — безусловный переход или конец программы, а перехода сюда нет",
-                (i == j ? "the frame on line " + linesEn + " is never executed"
-                        : "the frames on lines " + linesEn + " are never executed") +
-                    ": an unconditional jump or an end of program precedes, and no jump leads here");
+        if (i == j)
+            warning(Rule::Unreachable, 0, first, whole(first), "unreachable", {std::to_string(first.span.line)});
+        else
+            warning(Rule::Unreachable, 0, first, whole(first), "unreachable.lines",
+                    {std::to_string(first.span.line), std::to_string(last.span.line)});
         i = j + 1;
     }
 }
@@ -766,11 +672,7 @@ void ProgramChecker::nesting() {
         if (calls_.scc[ci] == calls_.scc[self]) {
             std::vector<int> cycle = cyclePath(calls_, c.callee, p_.number);
             cycle.insert(cycle.begin(), p_.number);
-            warning(Rule::NestingCycle, 48, f, s,
-                    "Глубина вложения L: вызовы по кругу " + chainText(cycle) +
-                        "; если цикл не прерывается условием, вложение превысит предел " + std::to_string(limit),
-                    "subprogram nesting: calls go round in a circle " + chainTextAscii(cycle) +
-                        "; unless a condition breaks it, nesting exceeds the limit of " + std::to_string(limit));
+            warning(Rule::NestingCycle, 48, f, s, "nesting-cycle", {std::to_string(limit)}, {chainPart(cycle)});
             continue;
         }
         const int depth = 1 + calls_.height[ci];
@@ -786,11 +688,8 @@ void ProgramChecker::nesting() {
             const std::vector<int> round = cyclePath(calls_, v, m); // v ... m inside the cycle
             chain.insert(chain.end(), round.begin(), round.end());
         }
-        warning(Rule::NestingDepth, 48, f, s,
-                "Глубина вложения L: цепочка вызовов " + chainText(chain) + " даёт " + std::to_string(depth) +
-                    " уровней вложения, предел " + std::to_string(limit),
-                "subprogram nesting: the call chain " + chainTextAscii(chain) + " nests " + std::to_string(depth) +
-                    " levels deep, the limit is " + std::to_string(limit));
+        warning(Rule::NestingDepth, 48, f, s, "nesting-depth", {std::to_string(depth), std::to_string(limit)},
+                {chainPart(chain)});
     }
 }
 
@@ -828,9 +727,7 @@ void ProgramChecker::machine() {
             const bool dwellTime = dwell && which == Axis::X; // X of G04 is seconds
             if (!lim.present) {
                 auto absent = [&](ColSpan s, const std::string& word) {
-                    warning(Rule::AxisAbsent, 0, f, s,
-                            word + ": оси " + as + " на этом станке нет (НАЛИЧ.ОСИ = 0)",
-                            word + ": this machine has no " + as + " axis (C-parameter НАЛИЧ.ОСИ = 0)");
+                    warning(Rule::AxisAbsent, 0, f, s, "axis-absent", {word, as});
                 };
                 if (pos && !dwellTime)
                     absent(pos->span, as);
@@ -865,48 +762,26 @@ void ProgramChecker::machine() {
                 const Decimal machinePos = v + offset;
                 if (lim.softLimits && motionTarget && (machinePos < lim.minMm || machinePos > lim.maxMm)) {
                     const bool above = machinePos > lim.maxMm;
-                    const std::string bound = above ? "+ОГРАНИЧЕН " + lim.maxMm.toString()
-                                                    : "-ОГРАНИЧЕН " + lim.minMm.toString();
-                    const std::string dia = lim.diameter ? " (на диаметр)" : "";
-                    const std::string diaEn = lim.diameter ? " (diameter)" : "";
-                    const std::string inMachine =
-                        offset.isZero() ? "" : ", в системе станка " + machinePos.toString() + " мм,";
-                    const std::string inMachineEn =
-                        offset.isZero() ? "" : ", " + machinePos.toString() + " mm in the machine system,";
                     const int message = which == Axis::X ? 12 : 28;
                     // The text of message 12/28 as `run` shows it (catalog, table М.1).
                     const std::string name(catalog::positionerMessage(message).textRu);
-                    warning(Rule::SoftLimit, message, f, pos->span,
-                            name + ": " + as + v.toString() + dia +
-                                inMachine + " за ограничением " + bound + " мм",
-                            "software limit (" + as + "): " + as + v.toString() + diaEn + inMachineEn +
-                                " is beyond " +
-                                (above ? "the + limit " + lim.maxMm.toString() : "the - limit " + lim.minMm.toString()) +
-                                " mm");
+                    warning(Rule::SoftLimit, message, f, pos->span, above ? "soft-limit.above" : "soft-limit.below",
+                            {name, as, v.toString(), (above ? lim.maxMm : lim.minMm).toString()},
+                            {DiagnosticPart{lim.diameter ? "soft-limit.diameter" : "", {}, {}},
+                             DiagnosticPart{offset.isZero() ? "" : "soft-limit.machine", {machinePos.toString()}, {}}});
                 }
                 if (lim.decimals && v.fractionDigits() > *lim.decimals)
-                    warning(Rule::DiscreteRounding, 0, f, pos->span,
-                            as + v.toString() + ": дискрета оси " + as + " " + discreteText(*lim.decimals) +
-                                " мм, значение будет округлено до " + v.rounded(*lim.decimals).toString(),
-                            as + v.toString() + ": the discrete of axis " + as + " is " +
-                                discreteText(*lim.decimals) + " mm, the value is rounded to " +
-                                v.rounded(*lim.decimals).toString());
+                    warning(Rule::DiscreteRounding, 0, f, pos->span, "discrete-rounding",
+                            {as, v.toString(), discreteText(*lim.decimals), v.rounded(*lim.decimals).toString()});
             }
             if (feed && !feed->isR()) {
                 const Decimal& v = feed->literal;
                 if (lim.maxFeedMmPerMin && v > *lim.maxFeedMmPerMin)
-                    warning(Rule::FeedAboveMax, 0, f, feed->span,
-                            "F" + as + v.toString() + " больше F УСК.АВТ. оси " + as + " (" +
-                                lim.maxFeedMmPerMin->toString() + " мм/мин)",
-                            "F" + as + v.toString() + " is above the axis' maximum program feed F УСК.АВТ. (" +
-                                lim.maxFeedMmPerMin->toString() + " mm/min)");
+                    warning(Rule::FeedAboveMax, 0, f, feed->span, "feed-above-max",
+                            {as, v.toString(), lim.maxFeedMmPerMin->toString()});
                 if (lim.decimals && v.fractionDigits() > *lim.decimals)
-                    warning(Rule::DiscreteRounding, 0, f, feed->span,
-                            "F" + as + v.toString() + ": дискрета оси " + as + " " + discreteText(*lim.decimals) +
-                                " мм, подача будет округлена до " + v.rounded(*lim.decimals).toString(),
-                            "F" + as + v.toString() + ": the discrete of axis " + as + " is " +
-                                discreteText(*lim.decimals) + " mm, the feed is rounded to " +
-                                v.rounded(*lim.decimals).toString());
+                    warning(Rule::DiscreteRounding, 0, f, feed->span, "discrete-rounding.feed",
+                            {as, v.toString(), discreteText(*lim.decimals), v.rounded(*lim.decimals).toString()});
             }
         };
         axis(Axis::X, m.x, iso->x, iso->fx);
@@ -925,41 +800,34 @@ std::vector<Diagnostic> validateMessages(const MessageTable& table) {
     std::vector<Diagnostic> out;
     for (const Message& m : table.entries) {
         const auto cps = utf8::decode(m.text);
-        auto add = [&](Rule rule, Severity sev, int col, int end, std::string ru, std::string en) {
+        auto add = [&](Rule rule, Severity sev, int col, int end, std::string_view id, std::vector<std::string> args) {
             Diagnostic d;
             d.rule = rule;
             d.severity = sev;
             d.line = m.span.line;
             d.column = col > 0 ? col : 1;
             d.endColumn = end > d.column ? end : d.column + 1;
-            d.messageRu = std::move(ru);
-            d.messageEn = std::move(en);
+            d.textId = id;
+            d.args = std::move(args);
             out.push_back(std::move(d));
         };
         const int base = m.textColumn > 0 ? m.textColumn : 1;
         if (cps.size() > static_cast<std::size_t>(kMessageLength))
             add(Rule::MessageTooLong, Severity::Error, base + kMessageLength, base + static_cast<int>(cps.size()),
-                "Сообщение #" + std::to_string(m.number) + " длиннее 20 символов (" + std::to_string(cps.size()) +
-                    "): на индикаторе помещается 20",
-                "message #" + std::to_string(m.number) + " is longer than 20 characters (" +
-                    std::to_string(cps.size()) + "): the display shows 20");
+                "message-too-long", {std::to_string(m.number), std::to_string(cps.size())});
         bool warned = false;
         for (std::size_t i = 0; i < cps.size(); ++i) {
             const char32_t cp = cps[i];
             const int col = base + static_cast<int>(i);
             if (cp < 0x20 || cp == 0x7F || (cp >= 0x80 && cp < 0xA0)) {
-                add(Rule::MessageCharacter, Severity::Error, col, col + 1,
-                    "Управляющий символ в тексте сообщения #" + std::to_string(m.number),
-                    "control character in the text of message #" + std::to_string(m.number));
+                add(Rule::MessageCharacter, Severity::Error, col, col + 1, "message-character",
+                    {std::to_string(m.number)});
             } else if (!displayable(cp) && !warned) {
                 warned = true;
                 std::string ch;
                 utf8::append(ch, cp);
-                add(Rule::MessageCharset, Severity::Warning, col, col + 1,
-                    "Символ «" + ch + "» в сообщении #" + std::to_string(m.number) +
-                        " может не отображаться на K923 (латиница, кириллица, цифры и знаки ASCII)",
-                    "character '" + ch + "' in message #" + std::to_string(m.number) +
-                        " may not show on the K923 (Latin, Cyrillic, digits and ASCII signs)");
+                add(Rule::MessageCharset, Severity::Warning, col, col + 1, "message-charset",
+                    {ch, std::to_string(m.number)});
             }
         }
     }
@@ -1008,8 +876,7 @@ CheckResult check(std::string_view text, const ParseOptions& parseOptions, const
         d.line = 1;
         d.column = 1;
         d.endColumn = 2;
-        d.messageRu = "В файле нет ни одной программы (ни одного кадра)";
-        d.messageEn = "the file holds no program (not a single frame)";
+        d.textId = "no-program";
         r.diagnostics.push_back(std::move(d));
     }
     sortDiagnostics(r.diagnostics);

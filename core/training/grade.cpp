@@ -2,6 +2,7 @@
 
 #include "engine/program_check.h"
 #include "engine/self_test.h"
+#include "program/diagnostic_texts.h"
 #include "program/parser.h"
 #include "training/geometry.h"
 #include "util/json.h"
@@ -159,7 +160,7 @@ Grade Grader::grade(std::string_view text, std::string file, std::string student
         const program::Diagnostic& d = g.diagnostics.front();
         deduct("program_errors", sc.programErrors, true, d.program, d.line, 0, "program-errors",
                {intArg(static_cast<long long>(g.diagnostics.size())), intArg(d.line),
-                TextArg(d.messageRu, d.messageEn)});
+                TextArg(program::diagnosticText(d, true), program::diagnosticText(d, false))});
         g.score = 0;
         g.passed = false;
         return g;

@@ -212,10 +212,17 @@ private slots:
         QVERIFY(r.out.contains("C022 УСКОРЕНИЕ 1: 2000 -> 2133"));
         QVERIFY(r.out.contains("R12"));
         // A cross-check error: rejected whole with the manual's message.
+        r = db({"set", "grinder-205", "C022=1000", "C069=1", "--lang", "en"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("machine grinder-205: rejected, nothing was written"), qPrintable(r.err));
+        QVERIFY(r.err.contains("error [M37] C017,C069:"));
+        // In Russian (the default): the same findings in core's Russian.
         r = db({"set", "grinder-205", "C022=1000", "C069=1"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("rejected, nothing was written"), qPrintable(r.err));
+        QVERIFY2(r.err.startsWith(QStringLiteral("k528: станок grinder-205: отклонено, ничего не записано (ошибок: 1):")),
+                 qPrintable(r.err));
         QVERIFY(r.err.contains("error [M37] C017,C069:"));
+        QVERIFY2(!r.err.contains("rejected"), qPrintable(r.err));
         r = db({"set", "grinder-205", "C020=0"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains("[M13] C020"));

@@ -11,6 +11,7 @@
 #include "engine/run.h"
 #include "engine/self_test.h"
 #include "profile/builtin.h"
+#include "program/diagnostic_texts.h"
 #include "program/parser.h"
 #include "program/refusals.h"
 
@@ -103,9 +104,9 @@ private slots:
                     if (!d.isError())
                         continue;
                     QVERIFY2(d.program == place.program && d.line == place.line,
-                             (what + ": an error off the frame: " + d.messageEn).c_str());
+                             (what + ": an error off the frame: " + program::diagnosticText(d, false)).c_str());
                     errorInFrame = true;
-                    QVERIFY2(d.manualNumber > 0, (what + ": " + d.messageEn).c_str());
+                    QVERIFY2(d.manualNumber > 0, (what + ": " + program::diagnosticText(d, false)).c_str());
                     errors.insert(d.manualNumber);
                 }
                 // The controller holding the file unchecked (`run --no-check`).

@@ -1,5 +1,6 @@
 #include <QtTest>
 
+#include "program/diagnostic_texts.h"
 #include "program/formatter.h"
 #include "program/parser.h"
 
@@ -12,7 +13,7 @@ QString fmt(const char* text, int number = 1) {
     o.programNumber = number;
     const ParseResult r = parse(text, o);
     if (r.hasErrors())
-        return "ERROR: " + QString::fromStdString(r.diagnostics.front().messageEn);
+        return "ERROR: " + QString::fromStdString(k528::program::diagnosticText(r.diagnostics.front(), false));
     return QString::fromStdString(format(r.store));
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "program/diagnostic_texts.h"
 #include "program/formatter.h"
 #include "program/parser.h"
 #include "util/utf8.h"
@@ -21,7 +22,7 @@ ParseResult p(const char* text, int number = 1) {
 Frame one(const char* text) {
     const ParseResult r = p(text);
     if (!r.diagnostics.empty())
-        qWarning("%s: %s", text, r.diagnostics.front().messageEn.c_str());
+        qWarning("%s: %s", text, k528::program::diagnosticText(r.diagnostics.front(), false).c_str());
     if (r.diagnostics.size() != 0 || r.store.size() != 1 || r.store.programs()[0].frames.size() != 1)
         return Frame{};
     return r.store.programs()[0].frames[0];
@@ -234,7 +235,7 @@ private slots:
         QVERIFY(r.hasErrors());
         int hints = 0;
         for (const Diagnostic& d : r.diagnostics)
-            if (d.messageEn.find("CR without LF does not end a line") != std::string::npos) {
+            if (k528::program::diagnosticText(d, false).find("CR without LF does not end a line") != std::string::npos) {
                 ++hints;
                 QCOMPARE(d.line, 1);
                 QCOMPARE(d.column, 4);
@@ -250,12 +251,12 @@ private slots:
         QVERIFY(p("G1 X00000.000000000000000001\n").diagnostics.empty()); // 18 places
         const ParseResult fine = p("G1 X00000.00000000000000000001\n");
         QCOMPARE(fine.diagnostics.size(), std::size_t(1));
-        QVERIFY2(fine.diagnostics[0].messageEn.find("more than 18 digits after the decimal point") !=
+        QVERIFY2(k528::program::diagnosticText(fine.diagnostics[0], false).find("more than 18 digits after the decimal point") !=
                      std::string::npos,
-                 fine.diagnostics[0].messageEn.c_str());
+                 k528::program::diagnosticText(fine.diagnostics[0], false).c_str());
         const ParseResult many = p("G1 X1234567890.123456789\n");
         QCOMPARE(many.diagnostics.size(), std::size_t(1));
-        QVERIFY(many.diagnostics[0].messageEn.find("more than 18 significant digits") != std::string::npos);
+        QVERIFY(k528::program::diagnosticText(many.diagnostics[0], false).find("more than 18 significant digits") != std::string::npos);
         QVERIFY(p("G1 X0001234567890.12345678000\n").diagnostics.empty()); // 18 significant
     }
     void lastLineWithoutNewline() {
@@ -372,11 +373,11 @@ private slots:
         QCOMPARE(d->severity, Severity::Error);
         QCOMPARE(d->manualNumber, manual);
         QVERIFY(d->line >= 1 && d->column >= 1 && d->endColumn > d->column);
-        QVERIFY(!d->messageRu.empty() && !d->messageEn.empty());
+        QVERIFY2(k528::program::findDiagnosticText(d->textId), d->textId.c_str()); // a text of the catalog
         QVERIFY(b.hasErrors());
         const ParseResult g = parse(good.toStdString());
         QVERIFY2(g.diagnostics.empty(),
-                 g.diagnostics.empty() ? "" : qPrintable(QString::fromStdString(g.diagnostics.front().messageEn)));
+                 g.diagnostics.empty() ? "" : qPrintable(QString::fromStdString(k528::program::diagnosticText(g.diagnostics.front(), false))));
     }
 
     // One pass reports every error; a bad line does not hide the next.
@@ -427,8 +428,8 @@ private slots:
         QCOMPARE(d.rule, Rule::InvalidUtf8);
         QCOMPARE(d.line, 1);
         QCOMPARE(d.column, 6);
-        QVERIFY(QString::fromStdString(d.messageEn).contains("\\xFF"));
-        QVERIFY(utf8::isValid(d.messageRu) && utf8::isValid(d.messageEn));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(d, false)).contains("\\xFF"));
+        QVERIFY(utf8::isValid(k528::program::diagnosticText(d, true)) && utf8::isValid(k528::program::diagnosticText(d, false)));
         // A second bad byte on the line (the first one is invalid-utf8) and an
         // overlong sequence are unexpected characters, shown escaped.
         const ParseResult two = parse("G1 \xFE X5 \xC0\x80 Z1 \x80\n");
@@ -437,18 +438,18 @@ private slots:
         QCOMPARE(two.diagnostics[0].column, 4);
         QCOMPARE(two.diagnostics[1].rule, Rule::Syntax);
         QCOMPARE(two.diagnostics[1].column, 9);
-        QCOMPARE(QString::fromStdString(two.diagnostics[1].messageRu), QString("Неожиданный символ «\\xC0»"));
+        QCOMPARE(QString::fromStdString(k528::program::diagnosticText(two.diagnostics[1], true)), QString("Неожиданный символ «\\xC0»"));
         QCOMPARE(two.diagnostics[2].column, 15);
-        QCOMPARE(QString::fromStdString(two.diagnostics[2].messageEn), QString("unexpected character '\\x80'"));
+        QCOMPARE(QString::fromStdString(k528::program::diagnosticText(two.diagnostics[2], false)), QString("unexpected character '\\x80'"));
         for (const auto& x : two.diagnostics)
-            QVERIFY(utf8::isValid(x.messageRu) && utf8::isValid(x.messageEn));
+            QVERIFY(utf8::isValid(k528::program::diagnosticText(x, true)) && utf8::isValid(k528::program::diagnosticText(x, false)));
     }
     void quotedTextKeepsWholeCharacters() {
         const ParseResult h = parse("%\xD0\x96\nM30\n"); // %Ж
         const Diagnostic* d = find(h, Rule::BadHeader);
         QVERIFY(d);
-        QCOMPARE(QString::fromStdString(d->messageRu), QString("Неизвестный заголовок «%Ж»: ожидается %L<номер программы> или %MESSAGES"));
-        QCOMPARE(QString::fromStdString(d->messageEn), QString("unknown header '%Ж': expected %L<program number> or %MESSAGES"));
+        QCOMPARE(QString::fromStdString(k528::program::diagnosticText(*d, true)), QString("Неизвестный заголовок «%Ж»: ожидается %L<номер программы> или %MESSAGES"));
+        QCOMPARE(QString::fromStdString(k528::program::diagnosticText(*d, false)), QString("unknown header '%Ж': expected %L<program number> or %MESSAGES"));
         QCOMPARE(d->column, 1);
         QCOMPARE(d->endColumn, 3);
         // Text after a header, after %MESSAGES and after a jump frame.
@@ -466,10 +467,10 @@ private slots:
             const ParseResult r = parse(c.text);
             const Diagnostic* e = find(r, c.rule);
             QVERIFY2(e, c.text);
-            QVERIFY2(QString::fromStdString(e->messageRu).contains(QString::fromUtf8(c.quoted)),
-                     e->messageRu.c_str());
+            QVERIFY2(QString::fromStdString(k528::program::diagnosticText(*e, true)).contains(QString::fromUtf8(c.quoted)),
+                     k528::program::diagnosticText(*e, true).c_str());
             for (const auto& x : r.diagnostics)
-                QVERIFY(utf8::isValid(x.messageRu) && utf8::isValid(x.messageEn));
+                QVERIFY(utf8::isValid(k528::program::diagnosticText(x, true)) && utf8::isValid(k528::program::diagnosticText(x, false)));
         }
     }
     // A bad condition or target is one error; the rest of the frame is still read.
@@ -498,7 +499,7 @@ private slots:
         const ParseResult r = parse(frame.toStdString());
         QStringList got;
         for (const auto& d : r.diagnostics)
-            got << QString("%1:%2 %3 %4").arg(d.line).arg(d.column).arg(QString::fromStdString(std::string(ruleId(d.rule)))).arg(QString::fromStdString(d.messageEn));
+            got << QString("%1:%2 %3 %4").arg(d.line).arg(d.column).arg(QString::fromStdString(std::string(ruleId(d.rule)))).arg(QString::fromStdString(k528::program::diagnosticText(d, false)));
         const QStringList want = expected.split('|');
         QVERIFY2(got.size() == want.size(), qPrintable(got.join('\n')));
         for (int k = 0; k < want.size(); ++k)
@@ -522,7 +523,7 @@ private slots:
         const ParseResult r = parse("G1 \xD1\x85" "5\n"); // lower-case х
         const Diagnostic* d = find(r, Rule::CyrillicLetter);
         QVERIFY(d);
-        QVERIFY(QString::fromStdString(d->messageRu).contains("(X)"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*d, true)).contains("(X)"));
         QCOMPARE(d->column, 4);
         QCOMPARE(d->endColumn, 5);
         // The X5 that follows is not reported again as garbage.

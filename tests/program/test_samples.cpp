@@ -2,6 +2,7 @@
 // binaries and shown to users) are correct, clean and canonical.
 #include <QtTest>
 
+#include "program/diagnostic_texts.h"
 #include "program/formatter.h"
 #include "program/validator.h"
 #include "resources/embedded.h"
@@ -22,7 +23,7 @@ private slots:
             const std::string name(r.path);
             const CheckResult c = check(r.data);
             for (const auto& d : c.diagnostics)
-                qWarning("%s:%d:%d: %s", name.c_str(), d.line, d.column, d.messageEn.c_str());
+                qWarning("%s:%d:%d: %s", name.c_str(), d.line, d.column, k528::program::diagnosticText(d, false).c_str());
             QVERIFY2(c.diagnostics.empty(), name.c_str());
             QVERIFY2(!c.store.empty(), name.c_str());
             QCOMPARE(format(c.store), std::string(r.data));

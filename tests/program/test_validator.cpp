@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "program/diagnostic_texts.h"
 #include "program/parser.h"
 #include "program/validator.h"
 
@@ -81,7 +82,7 @@ std::string dump(const std::vector<Diagnostic>& d) {
     std::string s;
     for (const auto& x : d)
         s += std::to_string(x.line) + ":" + std::to_string(x.column) + " " + std::string(ruleId(x.rule)) + " " +
-             x.messageEn + "\n";
+             k528::program::diagnosticText(x, false) + "\n";
     return s;
 }
 
@@ -230,10 +231,10 @@ private slots:
             // One text per message: `check` opens with the text `run` shows
             // (the catalog's, table М.1).
             if (manual > 0)
-                QVERIFY2(d->messageRu.rfind(std::string(k528::catalog::positionerMessage(manual).textRu), 0) == 0,
-                         d->messageRu.c_str());
+                QVERIFY2(k528::program::diagnosticText(*d, true).rfind(std::string(k528::catalog::positionerMessage(manual).textRu), 0) == 0,
+                         k528::program::diagnosticText(*d, true).c_str());
             QVERIFY(d->column >= 1 && d->endColumn > d->column);
-            QVERIFY(!d->messageRu.empty() && !d->messageEn.empty());
+            QVERIFY2(k528::program::findDiagnosticText(d->textId), d->textId.c_str()); // a text of the catalog
         }
         if (line)
             QCOMPARE(hits.front()->line, line);
@@ -247,7 +248,7 @@ private slots:
     // --- Details of single rules ------------------------------------------------------
     void messagesUseTheManualsWording() {
         const auto d = diags("%L1\nN5 L2 X5\nN6 GOTO 9\nN6 G0 G1 G300\nM30\n");
-        auto text = [&](Rule r) { return QString::fromStdString(withRule(d, r).front()->messageRu); };
+        auto text = [&](Rule r) { return QString::fromStdString(k528::program::diagnosticText(*withRule(d, r).front(), true)); };
         QVERIFY(text(Rule::CallMissing).startsWith("L отсутствует"));
         QVERIFY(text(Rule::CallMissing).contains("L2"));
         QVERIFY(text(Rule::AxisWithCall).startsWith("X/L"));
@@ -259,7 +260,7 @@ private slots:
         QVERIFY(text(Rule::UnknownG).contains("G300"));
         QVERIFY(text(Rule::GSameGroup).contains("G00") && text(Rule::GSameGroup).contains("G01"));
         const auto n = diags(chain(10));
-        QVERIFY(QString::fromStdString(withRule(n, Rule::NestingDepth).front()->messageRu).startsWith("Глубина вложения L"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*withRule(n, Rule::NestingDepth).front(), true)).startsWith("Глубина вложения L"));
     }
     void positionsPointAtTheWord() {
         const auto d = diags("%L1\nN1 G1 G300 X5\nN2 L7\nM30\n");
@@ -278,14 +279,14 @@ private slots:
         const auto hits = withRule(d, Rule::NestingDepth);
         QCOMPARE(hits.size(), std::size_t(1));
         QCOMPARE(hits.front()->program, 1);
-        QVERIFY(QString::fromStdString(hits.front()->messageEn).contains("L1->L2->L3->L4->L5->L6->L7->L8->L9->L10"));
-        QVERIFY(QString::fromStdString(hits.front()->messageEn).contains("9 levels"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*hits.front(), false)).contains("L1->L2->L3->L4->L5->L6->L7->L8->L9->L10"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*hits.front(), false)).contains("9 levels"));
         // A cycle is reported at every call on it, with the path.
         const auto c = diags("%L1\nL2\nM30\n%L2\nL3\nM17\n%L3\nL2\nM17\n");
         const auto cyc = withRule(c, Rule::NestingCycle);
         QCOMPARE(cyc.size(), std::size_t(2));
-        QVERIFY(QString::fromStdString(cyc[0]->messageEn).contains("L2->L3->L2"));
-        QVERIFY(QString::fromStdString(cyc[1]->messageEn).contains("L3->L2->L3"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*cyc[0], false)).contains("L2->L3->L2"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*cyc[1], false)).contains("L3->L2->L3"));
         QVERIFY(withRule(c, Rule::NestingDepth).empty()); // L1 calls into the cycle: no extra noise
     }
     void nestingFollowsCallsOutOfACycle() {
@@ -304,7 +305,7 @@ private slots:
             if (x->program == 1)
                 fromL1.push_back(x);
         QVERIFY2(fromL1.size() == 1, dump(d).c_str());
-        const QString en = QString::fromStdString(fromL1.front()->messageEn);
+        const QString en = QString::fromStdString(k528::program::diagnosticText(*fromL1.front(), false));
         QVERIFY2(en.contains("L1->L2->L3->L4->L5->L6->L7->L8->L9->L10->L11->L12->L13->L14 nests 13 levels"),
                  qPrintable(en));
         QCOMPARE(fromL1.front()->line, 2);
@@ -313,8 +314,8 @@ private slots:
         bool found = false;
         for (const Diagnostic* x : withRule(e, Rule::NestingDepth))
             if (x->program == 1)
-                found = QString::fromStdString(x->messageEn).contains("L1->L3->L4->") &&
-                        QString::fromStdString(x->messageEn).contains(" 12 levels");
+                found = QString::fromStdString(k528::program::diagnosticText(*x, false)).contains("L1->L3->L4->") &&
+                        QString::fromStdString(k528::program::diagnosticText(*x, false)).contains(" 12 levels");
         QVERIFY2(found, dump(e).c_str());
         // A member that calls out only through another member still gets the chain.
         const auto f = diags("%L1\nL2\nM30\n%L2\nL3\nM17\n%L3\nL2\nL4\nM17\n%L4\nL5\nM17\n%L5\nM17\n",
@@ -322,7 +323,7 @@ private slots:
         const auto deep = withRule(f, Rule::NestingDepth);
         QVERIFY2(deep.size() == 1, dump(f).c_str());
         QCOMPARE(deep.front()->program, 1);
-        QVERIFY(QString::fromStdString(deep.front()->messageEn).contains("L1->L2->L3->L4->L5 nests 4 levels"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*deep.front(), false)).contains("L1->L2->L3->L4->L5 nests 4 levels"));
     }
     // A jump frame whose condition or target is malformed: only the syntax
     // errors, no jump error for a target that was never read, no frames
@@ -367,7 +368,7 @@ private slots:
         const auto u = withRule(d, Rule::Unreachable);
         QCOMPARE(u.size(), std::size_t(2));
         QCOMPARE(u[0]->line, 2);
-        QVERIFY(QString::fromStdString(u[0]->messageEn).contains("lines 2-4"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*u[0], false)).contains("lines 2-4"));
         QCOMPARE(u[1]->line, 6);
     }
     void subprogramEndRules() {
@@ -399,13 +400,13 @@ private slots:
         const auto s = withRule(d, Rule::SoftLimit);
         QCOMPARE(s.size(), std::size_t(1));
         QCOMPARE(s.front()->line, 5);
-        QVERIFY(QString::fromStdString(s.front()->messageRu).contains("на диаметр"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*s.front(), true)).contains("на диаметр"));
         // Without a machine nothing of this kind is said.
         QVERIFY(withRule(diags("X300 FX9000 Z5.005\nM30\n"), Rule::SoftLimit).empty());
         QVERIFY(withRule(diags("X300 FX9000 Z5.005\nM30\n"), Rule::FeedAboveMax).empty());
         QVERIFY(withRule(diags("X300 FX9000 Z5.005\nM30\n"), Rule::DiscreteRounding).empty());
         const auto r = diags("X5.3425\nM30\n", Machine);
-        QVERIFY(QString::fromStdString(withRule(r, Rule::DiscreteRounding).front()->messageEn).contains("5.343"));
+        QVERIFY(QString::fromStdString(k528::program::diagnosticText(*withRule(r, Rule::DiscreteRounding).front(), false)).contains("5.343"));
     }
     void skippedFramesAreStillChecked() {
         QCOMPARE(withRule(diags("/G2 X1\nM30\n"), Rule::UnknownG).size(), std::size_t(1));

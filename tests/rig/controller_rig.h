@@ -10,6 +10,7 @@
 #include "engine/load_programs.h"
 #include "engine/run.h"
 #include "profile/builtin.h"
+#include "program/diagnostic_texts.h"
 #include "program/parser.h"
 
 #include <QtTest>
@@ -74,7 +75,7 @@ public:
     void load(const std::string& text) {
         const program::ParseResult r = program::parse(text);
         QVERIFY2(!r.hasErrors(),
-                 r.diagnostics.empty() ? "parse error" : r.diagnostics.front().messageEn.c_str());
+                 r.diagnostics.empty() ? "parse error" : program::diagnosticText(r.diagnostics.front(), false).c_str());
         QVERIFY(engine::loadPrograms(c(), r.store).ok());
     }
 

@@ -76,7 +76,9 @@ private slots:
         QCOMPARE(problems->rowCount(), 1);
         QCOMPARE(problems->index(0, 1).data().toString(), QString("L1"));
         QCOMPARE(problems->index(0, 2).data().toString(), QString("3"));
-        QCOMPARE(problems->index(0, 3).data().toString(), QString("[M33]"));
+        // The Code column: the controller's message and the rule's short name, its id in the tooltip.
+        QCOMPARE(problems->index(0, 3).data().toString(), QString("[M33] bad number"));
+        QCOMPARE(problems->index(0, 3).data(Qt::ToolTipRole).toString(), QString("bad-number"));
         QVERIFY(!ed->hoverText(lineStart + 7).isEmpty());
         QVERIFY(ed->hoverText(lineStart + 7).startsWith("[M33] "));
         QVERIFY(ed->hoverText(lineStart + 1).isEmpty());

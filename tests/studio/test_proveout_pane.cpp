@@ -143,7 +143,10 @@ private slots:
             QCOMPARE(problems->index(0, 0).data().toString(), lang == "ru" ? QString("ошибка") : QString("error"));
             QCOMPARE(problems->index(0, 1).data().toString(), QString("L1"));
             QCOMPARE(problems->index(0, 2).data().toString(), QString("6"));
-            QCOMPARE(problems->index(0, 3).data().toString(), QString("rapid-into-material"));
+            // The rule's short name in the window's language, its id in the tooltip.
+            QCOMPARE(problems->index(0, 3).data().toString(),
+                     lang == "ru" ? QString("G00 в материал") : QString("rapid into material"));
+            QVERIFY(problems->index(0, 3).data(Qt::ToolTipRole).toString().endsWith(": rapid-into-material"));
             QCOMPARE(problems->index(0, 0).data(ProblemsModel::kRuleRole).toString(), QString("rapid-into-material"));
             const QString text = problems->index(0, 4).data().toString();
             QVERIFY2(text.startsWith("N4: "), qPrintable(text));

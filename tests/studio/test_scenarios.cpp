@@ -307,7 +307,8 @@ private slots:
         QAbstractItemModel* problems = tab->problems()->model();
         UNTIL(problems->rowCount() == 1, 10000);
         QCOMPARE(problems->index(0, 2).data().toString(), QString("5"));
-        QCOMPARE(problems->index(0, 3).data().toString(), QString("[M33]"));
+        QCOMPARE(problems->index(0, 3).data().toString(), QString("[M33] неверное число"));
+        QCOMPARE(problems->index(0, 3).data(Qt::ToolTipRole).toString(), QString("bad-number"));
         // Fixed: one «.» deleted («X5.3»).
         const int dot = static_cast<int>(ed->text(4).indexOf(".."));
         QVERIFY(dot > 0);

@@ -48,6 +48,9 @@
 #include "db/notes.h"
 #include "proveout/proveout_pane.h"
 #include "session/core_texts.h"
+#include "session/diagnostic_texts.h"
+#include "program/diagnostic_texts.h"
+#include "proveout/rules.h"
 #include "controller/simulated_controller.h"
 #include "editor/program_editor.h"
 #include "profile/diff.h"
@@ -909,6 +912,28 @@ void TestUiLanguage::russianCoreTexts() {
         QVERIFY2(studio::hasDescriptionText(t.id), t.id.data());
         const profile::Problem p = profile::problem(std::string(t.id), {"x1", "12", "34"});
         QCOMPARE(studio::descriptionProblemText(p), QString::fromStdString(plc::descriptionText(p, true)));
+    }
+    // Every text of a program's diagnostics: the same Russian as core's
+    // catalog (what `k528 check --lang ru` prints), a text inside another
+    // one too; every rule's short name in Russian (the Problems list).
+    for (const program::DiagnosticText& t : program::diagnosticTexts()) {
+        QVERIFY2(studio::hasDiagnosticText(t.id), t.id.data());
+        program::Diagnostic d;
+        d.textId = std::string(t.id);
+        d.args = {"X", "12", "34", "56"};
+        d.within = {{"frame.numbered", {"5"}, {}}, {"chain.call", {"1"}, {{"chain.end", {"2"}, {}}}}};
+        QCOMPARE(studio::diagnosticText(d), QString::fromStdString(program::diagnosticText(d, true)));
+    }
+    for (int r = 0; r <= static_cast<int>(program::Rule::DiscreteRounding); ++r) {
+        const auto rule = static_cast<program::Rule>(r);
+        QVERIFY2(studio::ruleName(rule) != QString::fromStdString(std::string(program::ruleId(rule))),
+                 program::ruleId(rule).data());
+        walker.check(QStringLiteral("rule %1").arg(fromView(program::ruleId(rule))), studio::ruleName(rule));
+    }
+    for (const proveout::Rule rule : proveout::allRules()) {
+        QVERIFY2(studio::ruleName(rule) != QString::fromStdString(std::string(proveout::ruleId(rule))),
+                 proveout::ruleId(rule).data());
+        walker.check(QStringLiteral("prove-out rule %1").arg(fromView(proveout::ruleId(rule))), studio::ruleName(rule));
     }
     // Broken hand-made machine descriptions, as the controller and File >
     // Machine say them.

@@ -1,5 +1,6 @@
 #include "editor/database_programs.h"
 #include "db/notes.h"
+#include "session/diagnostic_texts.h"
 
 #include "db/database.h"
 #include "db/error.h"
@@ -80,7 +81,7 @@ DatabaseSave saveDatabasePrograms(const QString& machine, const QString& text, i
         for (const program::Diagnostic& d : parsed.diagnostics)
             if (d.isError()) {
                 s.error = tr("Not saved: fix the syntax errors first: %1")
-                              .arg(fromStd(program::formatDiagnostic(d, currentLanguage() == QStringLiteral("ru"))));
+                              .arg(diagnosticLine(d));
                 break;
             }
         return s;

@@ -142,6 +142,7 @@ EditorTab::EditorTab(ViewedController* viewed, QWidget* parent) : QWidget(parent
     problems_->setUniformRowHeights(true);
     problems_->setAllColumnsShowFocus(true);
     problems_->header()->setStretchLastSection(true);
+    problems_->header()->setSectionResizeMode(3, QHeaderView::ResizeToContents); // the rule's name whole
     split->addWidget(top);
     split->addWidget(problems_);
     split->setStretchFactor(0, 1);

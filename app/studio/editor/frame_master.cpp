@@ -1,6 +1,7 @@
 #include "editor/frame_master.h"
 
 #include "language.h"
+#include "session/diagnostic_texts.h"
 #include "program/formatter.h"
 #include "program/parser.h"
 
@@ -246,14 +247,9 @@ FrameHead FrameMaster::head() const {
 }
 
 QString FrameMaster::problemsText() const {
-    const bool ru = currentLanguage() == QStringLiteral("ru");
     QStringList out;
-    for (const Diagnostic& d : last_) {
-        QString t = QString::fromStdString(ru ? d.messageRu : d.messageEn);
-        if (d.manualNumber > 0)
-            t = QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0')) + t;
-        out << t;
-    }
+    for (const Diagnostic& d : last_)
+        out << diagnosticWithManual(d);
     return out.join('\n');
 }
 

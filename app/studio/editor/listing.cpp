@@ -1,6 +1,7 @@
 #include "editor/listing.h"
 
 #include "language.h"
+#include "session/diagnostic_texts.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -23,14 +24,11 @@ namespace {
 constexpr const char* kTrContext = "k528::studio";
 QString tr(const char* s) { return QCoreApplication::translate(kTrContext, s); }
 
-QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-
 constexpr int kNumberWidth = 6; // "  123 " before each line
 
 } // namespace
 
 std::vector<ListingRow> listingRows(const QString& text, const std::vector<program::Diagnostic>& diagnostics) {
-    const bool ru = currentLanguage() == QStringLiteral("ru");
     std::multimap<int, const program::Diagnostic*> byLine;
     for (const program::Diagnostic& d : diagnostics)
         byLine.emplace(d.line, &d);
@@ -44,10 +42,7 @@ std::vector<ListingRow> listingRows(const QString& text, const std::vector<progr
         for (auto it = b; it != e; ++it) {
             const program::Diagnostic& d = *it->second;
             QString t = QString(std::max(0, d.column - 1), QChar(' ')) + QStringLiteral("^ ") +
-                        (d.isError() ? tr("error") : tr("warning")) + QChar(' ');
-            if (d.manualNumber > 0)
-                t += QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0'));
-            t += fromStd(ru ? d.messageRu : d.messageEn);
+                        (d.isError() ? tr("error") : tr("warning")) + QChar(' ') + diagnosticWithManual(d);
             rows.push_back({0, t, d.isError()});
         }
     };

@@ -1,8 +1,8 @@
 #include "editor/problems_model.h"
 
-#include "language.h"
 #include "proveout/proveout.h"
 #include "session/core_texts.h"
+#include "session/diagnostic_texts.h"
 
 #include <QColor>
 
@@ -51,13 +51,21 @@ QVariant ProblemsModel::data(const QModelIndex& index, int role) const {
         case 0: return d.isError() ? error_ : warning_;
         case 1: return d.program > 0 ? QStringLiteral("L%1").arg(d.program) : QString();
         case 2: return QString::number(d.line);
-        case 3: return d.manualNumber > 0 ? QStringLiteral("[M%1]").arg(d.manualNumber, 2, 10, QChar('0')) : QString();
-        case 4: {
-            const std::string& t = currentLanguage() == QStringLiteral("ru") ? d.messageRu : d.messageEn;
-            return QString::fromUtf8(t.data(), static_cast<qsizetype>(t.size()));
-        }
+        case 3: // the rule's short name, after the number of the controller's message
+            return d.manualNumber > 0
+                       ? QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0')) + ruleName(d.rule)
+                       : ruleName(d.rule);
+        case 4: return diagnosticText(d);
         default: return {};
         }
+    case Qt::ToolTipRole:
+        if (index.column() == 3) { // the rule's id, as docs/program-language.md and `k528 check --json` name it
+            const std::string_view id = program::ruleId(d.rule);
+            return QString::fromUtf8(id.data(), static_cast<qsizetype>(id.size()));
+        }
+        if (index.column() == 4) // the whole text where the column cuts it
+            return diagnosticText(d);
+        return {};
     case Qt::ForegroundRole:
         if (index.column() == 0)
             return d.isError() ? QColor(0xc0, 0, 0) : QColor(0xa0, 0x60, 0);
@@ -78,7 +86,7 @@ QVariant ProblemsModel::findingData(int i, int column, int role) const {
         case 0: return f.isError() ? error_ : warning_;
         case 1: return QStringLiteral("L%1").arg(f.program);
         case 2: return QString::number(f.line);
-        case 3: return QString::fromUtf8(rule.data(), static_cast<qsizetype>(rule.size()));
+        case 3: return ruleName(f.rule);
         case 4: {
             QString t = QStringLiteral("N%1: ").arg(f.n) + findingText(f);
             if (f.occurrences > 1)
@@ -89,7 +97,8 @@ QVariant ProblemsModel::findingData(int i, int column, int role) const {
         }
     case Qt::ToolTipRole:
         if (column == 3)
-            return tr("The rule of the prove-out the frame breaks (the blank, the chuck, the tools)");
+            return tr("The rule of the prove-out the frame breaks (the blank, the chuck, the tools): %1")
+                .arg(QString::fromUtf8(rule.data(), static_cast<qsizetype>(rule.size())));
         if (column == 4) // the whole text where the column cuts it
             return findingData(i, column, Qt::DisplayRole);
         return {};

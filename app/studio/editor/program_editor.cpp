@@ -1,6 +1,7 @@
 #include "editor/program_editor.h"
 
 #include "editing/completion.h"
+#include "session/diagnostic_texts.h"
 #include "editor/program_lexer.h"
 #include "engine/program_check.h"
 #include "language.h"
@@ -407,7 +408,6 @@ void ProgramEditor::setProveoutFindings(const std::vector<proveout::Finding>& fi
 }
 
 QString ProgramEditor::hoverText(int position) const {
-    const bool ru = currentLanguage() == QStringLiteral("ru");
     QStringList out;
     // The prove-out's findings of a boxed line (the box moves with an edit;
     // the findings' lines are new after the next proof).
@@ -422,11 +422,7 @@ QString ProgramEditor::hoverText(int position) const {
         const auto [b, e] = diagnosticPositions_[i];
         if (position < b || position >= e)
             continue;
-        const program::Diagnostic& d = diagnostics_[i];
-        QString t = QString::fromStdString(ru ? d.messageRu : d.messageEn);
-        if (d.manualNumber > 0)
-            t = QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0')) + t;
-        out << t;
+        out << diagnosticWithManual(diagnostics_[i]);
     }
     return out.join('\n');
 }

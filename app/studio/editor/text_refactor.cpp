@@ -1,6 +1,7 @@
 #include "editor/text_refactor.h"
 
 #include "language.h"
+#include "session/diagnostic_texts.h"
 #include "program/diagnostic.h"
 #include "program/formatter.h"
 #include "program/parser.h"
@@ -28,7 +29,7 @@ bool readStore(const QString& text, program::ProgramStore& store, QString& error
     if (parsed.hasErrors()) {
         for (const program::Diagnostic& d : parsed.diagnostics)
             if (d.isError()) {
-                error = tr("Fix the syntax errors first: %1").arg(fromStd(program::formatDiagnostic(d, russian())));
+                error = tr("Fix the syntax errors first: %1").arg(diagnosticLine(d));
                 break;
             }
         return false;

@@ -1,6 +1,7 @@
 #include "session/program_loader.h"
 
 #include "engine/load_programs.h"
+#include "session/diagnostic_texts.h"
 #include "engine/program_check.h"
 #include "language.h"
 #include "session/shop_database.h"
@@ -44,20 +45,8 @@ ProgramLoad loadProgramText(SimulationSession& session, const std::string& text,
     ProgramLoad r;
     engine::Positioner& ctl = session.controller();
     const engine::FileCheck c = engine::checkFileForMachine(text, {}, session.simulation().profile(), ctl.programs());
-    const bool russian = currentLanguage() == QStringLiteral("ru");
-    for (const program::Diagnostic& d : c.diagnostics) {
-        // "LINE:COL: error: …" as `k528 check` prints it, its word in the window's language.
-        const std::string line = program::formatDiagnostic(d, russian);
-        const std::string kind = d.isError() ? ": error: " : ": warning: ";
-        const std::size_t at = line.find(kind);
-        r.findings << (at == std::string::npos
-                           ? QString::fromStdString(line)
-                           : tr("%1:%2: %3: %4")
-                                 .arg(d.line)
-                                 .arg(d.column)
-                                 .arg(d.isError() ? tr("error") : tr("warning"),
-                                      QString::fromStdString(line.substr(at + kind.size()))));
-    }
+    for (const program::Diagnostic& d : c.diagnostics)
+        r.findings << diagnosticLine(d); // "LINE:COL: error: …" as `k528 check` prints it
     // The file's order, as `k528 run` picks the first.
     std::vector<const program::Program*> order;
     for (const program::Program& p : c.parsed.store.programs())

@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "program/formatter.h"
+#include "program/diagnostic_texts.h"
 #include "program/parser.h"
 #include "program/validator.h"
 #include "util/utf8.h"
@@ -55,7 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const ParseResult parsed = parse(text, po);
     for (const Diagnostic& d : parsed.diagnostics) {
         require(d.line >= 1 && d.column >= 1 && d.endColumn > d.column);
-        require(k528::utf8::isValid(d.messageRu) && k528::utf8::isValid(d.messageEn));
+        require(k528::utf8::isValid(k528::program::diagnosticText(d, true)) && k528::utf8::isValid(k528::program::diagnosticText(d, false)));
     }
 
     ValidateOptions vo;
@@ -74,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     const auto all = validate(parsed.store, vo);
     for (const Diagnostic& d : all)
-        require(k528::utf8::isValid(d.messageRu) && k528::utf8::isValid(d.messageEn));
+        require(k528::utf8::isValid(k528::program::diagnosticText(d, true)) && k528::utf8::isValid(k528::program::diagnosticText(d, false)));
     const CallGraph graph(parsed.store);
     std::size_t perProgram = 0;
     for (const Program& p : parsed.store.programs())
