@@ -199,7 +199,8 @@ private slots:
         // Its Problems entry activated: the editor on the line, the marker ringed.
         QAbstractItemModel* problems = s.editor->problems()->model();
         QCOMPARE(problems->rowCount(), 1);
-        QCOMPARE(problems->index(0, 3).data().toString(), QString("rapid-into-material"));
+        QCOMPARE(problems->index(0, 3).data().toString(), QString("rapid into material"));
+        QVERIFY(problems->index(0, 3).data(Qt::ToolTipRole).toString().contains("rapid-into-material"));
         const QPoint ring = at + QPoint(k528::backplot::BackplotScene::kFindingRadiusPx + 8, 0);
         const auto whiteAt = [&](QPoint p) {
             const QImage img = s.w.screen()->grabWindow(s.w.winId()).toImage();

@@ -64,9 +64,11 @@ private slots:
         a_ = std::make_unique<Serve>(kCli, ports_[0]);
         b_ = std::make_unique<Serve>(kCli, ports_[1]);
         QByteArray said;
-        QVERIFY2(a_->start({"--keys", kWorkWithPcKeys}, &said), said.constData());
+        // What it serves, in its --lang (Russian unless told otherwise).
+        QVERIFY2(a_->start({"--keys", kWorkWithPcKeys, "--lang", "en"}, &said), said.constData());
         QVERIFY2(said.contains("Modbus TCP " + a_->address().toUtf8() + ", unit 1"), said.constData());
         QVERIFY2(b_->start({"--address", "5"}, &said), said.constData());
+        QVERIFY2(said.contains("Modbus TCP " + b_->address().toUtf8() + ", устройство 5"), said.constData());
     }
     void cleanupTestCase() {
         a_.reset();
@@ -180,7 +182,7 @@ private slots:
         twice.process().waitForFinished(5000);
         said += twice.process().readAllStandardError();
         QCOMPARE(twice.process().exitCode(), 2);
-        QVERIFY2(said.contains("cannot serve on 127.0.0.1:"), said.constData());
+        QVERIFY2(said.contains("не удаётся обслуживать линию 127.0.0.1:"), said.constData()); // its --lang: ru
     }
 
     void watchSeesTheServerGoAndComeBack() {

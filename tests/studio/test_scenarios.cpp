@@ -88,11 +88,6 @@ bool reachable(const QWidget* w, QString* why) {
     return true;
 }
 
-#define REACH(w)                                                                                                       \
-    do {                                                                                                               \
-        QString why_;                                                                                                  \
-        QVERIFY2(reachable((w), &why_), qPrintable(why_));                                                             \
-    } while (false)
 
 // The window's menu title `object` ("menu.controller") inside the screen.
 bool menuReachable(MainWindow& w, QMenu* menu, QString* why) {
@@ -119,6 +114,15 @@ bool until(const std::function<bool()>& done, int ms) {
 }
 
 #define UNTIL(cond, ms) QVERIFY2(until([&] { return static_cast<bool>(cond); }, (ms)), "waited in vain for " #cond)
+
+// A control the user is about to use, reachable once the window has laid it
+// out (a pane shown a moment ago gets its size with the next layout pass,
+// later on a busy machine); one that never gets there fails.
+#define REACH(w)                                                                                                       \
+    do {                                                                                                               \
+        QString why_;                                                                                                  \
+        QVERIFY2(until([&] { return reachable((w), &why_); }, 5000), qPrintable(why_));                               \
+    } while (false)
 
 void clickCap(PendantButton* b) { QTest::mouseClick(b, Qt::LeftButton, {}, b->capRect().center().toPoint()); }
 
