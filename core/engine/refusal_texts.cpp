@@ -10,79 +10,72 @@ namespace k528::engine {
 namespace {
 
 constexpr std::array kTexts = {
-    RefusalText{"mode-key",
+    util::CatalogText{"mode-key",
                 "F%1 не выбирает режим",
                 "F%1 selects no mode"},
-    RefusalText{"mode-from-plc",
+    util::CatalogText{"mode-from-plc",
                 "режим задан из ПЛК (Z1000.8-10 = %1)",
                 "the PLC sets the mode (Z1000.8-10 = %1)"},
-    RefusalText{"override-key",
+    util::CatalogText{"override-key",
                 "клавиши коррекции — L1..L4, а не L%1",
                 "override keys are L1..L4, not L%1"},
-    RefusalText{"program-number",
+    util::CatalogText{"program-number",
                 "номера программ — 1..99, а не %1",
                 "program numbers are 1..99, not %1"},
-    RefusalText{"r-number",
+    util::CatalogText{"r-number",
                 "R-параметры — R0..R299, а не R%1",
                 "R-parameters are R0..R299, not R%1"},
-    RefusalText{"r-read-only",
+    util::CatalogText{"r-read-only",
                 "R%1 только для чтения (R232..R262)",
                 "R%1 is read only (R232..R262)"},
-    RefusalText{"r-range",
+    util::CatalogText{"r-range",
                 "%1 вне диапазона -2147483648..2147483647",
                 "%1 is outside -2147483648..2147483647"},
-    RefusalText{"program-executing",
+    util::CatalogText{"program-executing",
                 "выполняется программа",
                 "a program is executing"},
-    RefusalText{"program-active",
+    util::CatalogText{"program-active",
                 "программа выполняется или остановлена",
                 "a program is active (running or held)"},
-    RefusalText{"c-number",
+    util::CatalogText{"c-number",
                 "C-параметры — 1..152, а не %1",
                 "C-parameters are 1..152, not %1"},
-    RefusalText{"c-range",
+    util::CatalogText{"c-range",
                 "%1 = %2 вне диапазона %3 константы «%4»",
                 "%1 = %2 is outside the range %3 of «%4»"},
-    RefusalText{"c-mode",
+    util::CatalogText{"c-mode",
                 "C-параметры редактируются в режиме РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)",
                 "C-parameters are edited in РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ (F5)"},
-    RefusalText{"c-count",
+    util::CatalogText{"c-count",
                 "нужно 153 значения (C1..C152 на местах 1..152)",
                 "153 values expected (C1..C152 at 1..152)"},
-    RefusalText{"c-load-mode",
+    util::CatalogText{"c-load-mode",
                 "C-параметры загружаются с ЭВМ в режиме УПРАВЛЕНИЕ ДАННЫМИ (F7)",
                 "C-parameters are loaded from the PC in УПРАВЛЕНИЕ ДАННЫМИ (F7)"},
-    RefusalText{"clear-mode",
+    util::CatalogText{"clear-mode",
                 "память стирается в режиме УПРАВЛЕНИЕ ДАННЫМИ (F7)",
                 "memory is cleared in УПРАВЛЕНИЕ ДАННЫМИ (F7)"},
-    RefusalText{"axis-absent",
+    util::CatalogText{"axis-absent",
                 "ось %1 отсутствует",
                 "axis %1 is not present"},
-    RefusalText{"set-actual-mode",
+    util::CatalogText{"set-actual-mode",
                 "текущее значение задаётся в режиме ПРЕДУСТАНОВКИ (F4)",
                 "the current value is set in ПРЕДУСТАНОВКИ (F4)"},
-    RefusalText{"zero-offset-range",
+    util::CatalogText{"zero-offset-range",
                 "смещение нуля вышло бы за 32-разрядный диапазон",
                 "the zero offset would leave the 32-bit range"},
 };
 
 } // namespace
 
-std::span<const RefusalText> refusalTexts() { return kTexts; }
-
-const RefusalText* findRefusalText(std::string_view id) {
-    for (const RefusalText& t : kTexts)
-        if (t.id == id)
-            return &t;
-    return nullptr;
-}
+util::TextCatalog refusalTexts() { return util::TextCatalog(kTexts); }
 
 std::string refusalText(const OpResult& r, bool russian) {
     if (r.ok())
         return {};
-    if (const RefusalText* t = findRefusalText(r.id))
-        return profile::fillPattern(russian ? t->ru : t->en, r.args);
-    std::string s = r.id.empty() ? std::string(russian ? refusalTextRu(r.refusal) : refusalTextEn(r.refusal)) : r.id;
+    if (!r.id.empty())
+        return refusalTexts().render(r.id, r.args, russian);
+    std::string s(russian ? refusalTextRu(r.refusal) : refusalTextEn(r.refusal));
     for (const std::string& a : r.args)
         s += " " + a;
     return s;

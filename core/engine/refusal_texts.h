@@ -6,20 +6,16 @@
 // lacks or says differently).
 #pragma once
 
-#include <span>
+#include "util/text_catalog.h"
+
 #include <string>
-#include <string_view>
 
 namespace k528::engine {
 
 struct OpResult;
 
-// One text: an id, its Russian and English (%1..%9 its arguments).
-struct RefusalText {
-    std::string_view id, ru, en;
-};
-std::span<const RefusalText> refusalTexts();
-const RefusalText* findRefusalText(std::string_view id);
+// The catalog: each id with its Russian and English (%1..%9 its arguments).
+util::TextCatalog refusalTexts();
 
 // `r` in a language ("" when accepted); an id missing from the catalog says
 // the id and its arguments (never thrown away).

@@ -994,7 +994,7 @@ void TestUiLanguage::russianCoreTexts() {
         QCOMPARE(studio::problemText(p), QString::fromStdString(profile::problemText(p, true)));
     }
     // Why, with the value and the limit: the same Russian as core's catalog.
-    for (const engine::RefusalText& t : engine::refusalTexts()) {
+    for (const util::CatalogText& t : engine::refusalTexts().texts()) {
         QVERIFY2(studio::hasRefusalText(t.id), t.id.data());
         const engine::OpResult r = engine::OpResult::refused(engine::Refusal::WrongMode, std::string(t.id), {"C022", "9", "10...5000", "X"});
         QCOMPARE(studio::refusalText(r), QString::fromStdString(r.text(true)));
