@@ -229,6 +229,7 @@ std::span<const Command> commands() {
          "  --frames FILE        save the frame log (time, direction, bytes, CRC) when done\n"
          "  --list               the plugins found (and refused) and the serial ports\n"
          "  --timeout-ms MS      answer timeout (default 200)\n"
+         "  --lang ru|en         language of the messages and refusals (default ru); --json is the same\n"
          "Exit codes: 0 done; 1 the controller refused, a verification failed, or the file is wrong;\n"
          "2 the line does not answer, the file cannot be read, output is lost, or usage.\n",
          runLink},
