@@ -64,7 +64,7 @@
 namespace k528::studio {
 
 MainWindow::MainWindow(QWidget* parent)
-    : MainWindow(MachineChoice{profile::builtin(profile::kDefaultProfile), QString(), QString()},
+    : MainWindow(MachineChoice{profile::builtin(profile::kDefaultProfile), {}, QString()},
                  parent) {}
 
 MainWindow::MainWindow(const MachineChoice& machine, QWidget* parent)
@@ -517,8 +517,8 @@ int MainWindow::keepInDatabase() {
 
 void MainWindow::updateMachineLabel() {
     const QString name = QString::fromStdString(machine_.profile.name);
-    machineLabel_->setText(machine_.source.isEmpty() ? tr("Machine: %1").arg(name)
-                                                     : tr("Machine: %1 (%2)").arg(name, machine_.source));
+    const QString source = machine_.source.text();
+    machineLabel_->setText(source.isEmpty() ? tr("Machine: %1").arg(name) : tr("Machine: %1 (%2)").arg(name, source));
     machineLabel_->setToolTip(machine_.warning);
 }
 
@@ -533,16 +533,16 @@ void MainWindow::followDatabase() {
         });
         if (found) {
             // As a start on this database names it (session/machine_source.cpp).
-            machine_.source = QCoreApplication::translate("k528::studio::MachineSource", "database %1").arg(*found);
+            machine_.source = {MachineSource::Kind::Database, *found};
             machine_.warning.clear();
         } else {
-            machine_.source = tr("not in the database %1").arg(where);
+            machine_.source = {MachineSource::Kind::NotInDatabase, where};
             machine_.warning = tr("The database %1 has no machine %2: it runs as it was loaded; File > Machine "
                                   "offers this database's machines")
                                    .arg(where, QString::fromStdString(name));
         }
     } catch (const std::exception& e) {
-        machine_.source = tr("not in the database %1").arg(where);
+        machine_.source = {MachineSource::Kind::NotInDatabase, where};
         machine_.warning = databaseErrorText(e);
     }
     updateMachineLabel();

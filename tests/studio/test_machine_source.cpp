@@ -62,12 +62,20 @@ private slots:
         QVERIFY2(set.exitCode == 0, qPrintable(set.err));
         const MachineChoice c = loadMachine("training-lathe");
         QVERIFY(c.warning.isEmpty());
-        QVERIFY(c.source.contains(db_));
+        QVERIFY(c.source.text().contains(db_));
         QCOMPARE(c.profile.c[94], 300000);
         QCOMPARE(profile::builtin("training-lathe").c[94], 600000);
         MainWindow w(c);
         QCOMPARE(w.session()->controller().c()[94], 300000);
-        QVERIFY(w.findChild<QLabel*>("status.machine")->text().contains("training-lathe"));
+        const QLabel* label = w.findChild<QLabel*>("status.machine");
+        QVERIFY(label->text().contains("training-lathe"));
+        QVERIFY2(label->text().contains("(database " + db_), qPrintable(label->text()));
+        // The label says where the machine came from in the window's language,
+        // also after the language is changed while the window is open.
+        QVERIFY(setLanguage("ru"));
+        QTRY_VERIFY2(label->text().contains("(база данных " + db_), qPrintable(label->text()));
+        QVERIFY(setLanguage("en"));
+        QTRY_VERIFY2(label->text().contains("(database " + db_), qPrintable(label->text()));
         QVERIFY_THROWS_EXCEPTION(profile::FileError, loadMachine("no-such-machine"));
     }
 

@@ -36,6 +36,18 @@ void checkDescription(const profile::MachineProfile& p) {
 
 } // namespace
 
+QString MachineSource::text() const {
+    switch (kind) {
+    case Kind::Unknown: return {};
+    case Kind::Database: return QCoreApplication::translate("k528::studio::MachineSource", "database %1").arg(path);
+    case Kind::Builtin: return QCoreApplication::translate("k528::studio::MachineSource", "built-in");
+    case Kind::File: return path;
+    case Kind::NotInDatabase:
+        return QCoreApplication::translate("k528::studio::MainWindow", "not in the database %1").arg(path);
+    }
+    return {};
+}
+
 MachineChoice loadMachine(const QString& nameOrPath) {
     const std::string name = nameOrPath.toStdString();
     MachineChoice c;
@@ -47,8 +59,7 @@ MachineChoice loadMachine(const QString& nameOrPath) {
             if (!profile::checkName(name).empty() || !d.hasMachine(name))
                 return false;
             c.profile = d.loadMachine(name);
-            c.source = QCoreApplication::translate("k528::studio::MachineSource", "database %1")
-                           .arg(fromStd(d.path().string()));
+            c.source = {MachineSource::Kind::Database, fromStd(d.path().string())};
             return true;
         });
     } catch (const std::exception& e) {
@@ -59,9 +70,8 @@ MachineChoice loadMachine(const QString& nameOrPath) {
         return c;
     }
     c.profile = profile::load(name); // throws profile::FileError
-    c.source = profile::isBuiltin(name)
-                   ? QCoreApplication::translate("k528::studio::MachineSource", "built-in")
-                   : nameOrPath;
+    c.source = profile::isBuiltin(name) ? MachineSource{MachineSource::Kind::Builtin, QString()}
+                                        : MachineSource{MachineSource::Kind::File, nameOrPath};
     checkDescription(c.profile);
     return c;
 }

@@ -13,9 +13,18 @@
 
 namespace k528::studio {
 
+// Where a machine came from, said in the window's language when asked (the
+// machine's label says it again after a change of the language).
+struct MachineSource {
+    enum class Kind { Unknown, Database, Builtin, File, NotInDatabase };
+    Kind kind = Kind::Unknown;
+    QString path; // the database's or the machine file's
+    QString text() const; // "database PATH", "built-in", the file's path; "" when unknown
+};
+
 struct MachineChoice {
     profile::MachineProfile profile;
-    QString source;  // "database PATH" or "built-in" or the machine file's path
+    MachineSource source;
     QString warning; // why the database was not used; empty when it was
 };
 
