@@ -55,7 +55,7 @@
 #include "editor/program_editor.h"
 #include "profile/diff.h"
 #include "engine/refusal_texts.h"
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include "engine/types.h"
 #include "program/model.h"
 #include "session/machine_source.h"
@@ -869,7 +869,7 @@ void TestUiLanguage::russianCoreTexts() {
 
     // Every id of core's catalogs has a text of the window, in Russian.
     const std::vector<std::string> someArgs = {"C022", "12", "34", "L3"};
-    for (const profile::ProblemText& t : profile::problemTexts()) {
+    for (const util::CatalogText& t : profile::problemTexts().texts()) {
         QVERIFY2(studio::hasProblemText(t.id), t.id.data());
         profile::Problem p = profile::problem(std::string(t.id), someArgs);
         walker.check(QStringLiteral("core problem %1").arg(fromView(t.id)), studio::problemText(p));
@@ -908,7 +908,7 @@ void TestUiLanguage::russianCoreTexts() {
 
     // Every text of a machine description's errors: the same Russian as
     // core's catalog (what `k528 run --lang ru` prints).
-    for (const plc::DescriptionText& t : plc::descriptionTexts()) {
+    for (const util::CatalogText& t : plc::descriptionTexts().texts()) {
         QVERIFY2(studio::hasDescriptionText(t.id), t.id.data());
         const profile::Problem p = profile::problem(std::string(t.id), {"x1", "12", "34"});
         QCOMPARE(studio::descriptionProblemText(p), QString::fromStdString(plc::descriptionText(p, true)));
@@ -916,7 +916,7 @@ void TestUiLanguage::russianCoreTexts() {
     // Every text of a program's diagnostics: the same Russian as core's
     // catalog (what `k528 check --lang ru` prints), a text inside another
     // one too; every rule's short name in Russian (the Problems list).
-    for (const program::DiagnosticText& t : program::diagnosticTexts()) {
+    for (const util::CatalogText& t : program::diagnosticTexts().texts()) {
         QVERIFY2(studio::hasDiagnosticText(t.id), t.id.data());
         program::Diagnostic d;
         d.textId = std::string(t.id);
@@ -989,7 +989,7 @@ void TestUiLanguage::russianCoreTexts() {
         QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
     }
     // Core's problems: the same Russian as the command line's (`k528 … --lang ru`).
-    for (const profile::ProblemText& t : profile::problemTexts()) {
+    for (const util::CatalogText& t : profile::problemTexts().texts()) {
         const profile::Problem p = profile::problem(std::string(t.id), {"C022", "9", "10...5000", "X"});
         QCOMPARE(studio::problemText(p), QString::fromStdString(profile::problemText(p, true)));
     }
