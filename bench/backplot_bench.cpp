@@ -12,10 +12,10 @@
 //                               append to the scene's buffers, the tool (95th percentile)
 // Needs an X server (Debian's VTK): without DISPLAY it runs itself under xvfb-run.
 #include "backplot/backplot_scene.h"
+#include "engine/forwarding_run_machine.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
 #include "report.h"
-#include "rig/watched_run.h"
 #include "machine/run.h"
 #include "machine/simulation.h"
 #include "stock/stock.h"
@@ -199,7 +199,7 @@ int main(int argc, char** argv) {
                 toolpath::LiveActualPath path(1.0);
                 path.attach(sim);
                 machine::SimulationRunMachine m(sim);
-                struct Frames final : testrig::ForwardingRunMachine {
+                struct Frames final : engine::ForwardingRunMachine {
                     toolpath::LiveActualPath& p;
                     int ticks = 0;
                     Frames(engine::RunMachine& inner, toolpath::LiveActualPath& l) : ForwardingRunMachine(inner), p(l) {}
@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
             toolpath::LiveActualPath path(1.0);
             path.attach(sim);
             machine::SimulationRunMachine m(sim);
-            struct Frame final : testrig::ForwardingRunMachine {
+            struct Frame final : engine::ForwardingRunMachine {
                 toolpath::LiveActualPath& p;
                 backplot::BackplotScene& scene;
                 std::vector<double>& times;

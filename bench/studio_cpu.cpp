@@ -13,6 +13,7 @@
 // (C8, C60 = 1): no homing, the loop starts a second after start-up.
 //   bench_studio_cpu PATH_TO_K528STUDIO TRAINING_LATHE.k528m [SECONDS] [WIDTHxHEIGHT]
 #include "report.h"
+#include "rig/loop_program.h"
 
 #include <fcntl.h>
 #include <poll.h>
@@ -125,18 +126,6 @@ struct Xserver {
     ~Xserver() { stop(pid); }
 };
 
-// A program that keeps both axes moving for about 90 s: twelve passes of
-// feeds, counted down in R1 (an endless GOTO loop would make the backplot
-// compute a preview of 100,000 frames first).
-constexpr const char* kProgram = "%L1 (CPU BENCHMARK)\n"
-                                 "N1 G90 G0 X60 Z-5\n"
-                                 "N2 R1=12\n"
-                                 "N3 G1 X20 FX600 Z-60 FZ900\n"
-                                 "N4 G1 X60 FX600 Z-5 FZ900\n"
-                                 "N5 R1=R1-1\n"
-                                 "N6 IF R1>0 GOTO 3\n"
-                                 "N7 M30\n";
-
 struct Measured {
     double share = -1; // of one core
     std::string error;
@@ -229,7 +218,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string program = dir + "/cpu-benchmark.k528";
-    std::ofstream(program) << kProgram;
+    std::ofstream(program) << k528::testrig::kLoopProgram; // rig/loop_program.h
     std::string noHoming = lathe;
     noHoming.replace(noHoming.find("C008=0"), 6, "C008=1");
     noHoming.replace(noHoming.find("C060=0"), 6, "C060=1");

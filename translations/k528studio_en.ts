@@ -5937,6 +5937,29 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::RefactorTexts</name>
+    <message>
+        <source>there is no program L%1</source>
+        <translation>there is no program L%1</translation>
+    </message>
+    <message>
+        <source>a program number is 1..99, not %1</source>
+        <translation>a program number is 1..99, not %1</translation>
+    </message>
+    <message>
+        <source>program L%1 exists already</source>
+        <translation>program L%1 exists already</translation>
+    </message>
+    <message>
+        <source>the start and step of numbering must be at least 1</source>
+        <translation>the start and step of numbering must be at least 1</translation>
+    </message>
+    <message>
+        <source>the last frame number would exceed 999 (%1 frames)</source>
+        <translation>the last frame number would exceed 999 (%1 frames)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RefusalTexts</name>
     <message>
         <source>F%1 selects no mode</source>

@@ -5937,6 +5937,29 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::RefactorTexts</name>
+    <message>
+        <source>there is no program L%1</source>
+        <translation>программы L%1 нет</translation>
+    </message>
+    <message>
+        <source>a program number is 1..99, not %1</source>
+        <translation>номер программы 1..99, а не %1</translation>
+    </message>
+    <message>
+        <source>program L%1 exists already</source>
+        <translation>программа L%1 уже есть</translation>
+    </message>
+    <message>
+        <source>the start and step of numbering must be at least 1</source>
+        <translation>начало и шаг нумерации должны быть не меньше 1</translation>
+    </message>
+    <message>
+        <source>the last frame number would exceed 999 (%1 frames)</source>
+        <translation>последний номер кадра превысил бы 999 (%1 кадров)</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::RefusalTexts</name>
     <message>
         <source>F%1 selects no mode</source>

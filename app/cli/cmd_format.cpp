@@ -70,7 +70,7 @@ int runFormat(std::span<const std::string> argv) {
             const program::RefactorResult r = program::renumber(p, renumberStart, renumberStep);
             if (!r.ok) {
                 std::fprintf(stderr, "k528: %s: L%d: %s\n", displayName(path).c_str(), p.number,
-                             (lang == Lang::Ru ? r.errorRu : r.errorEn).c_str());
+                             r.text(lang == Lang::Ru).c_str());
                 return ExitInputErrors;
             }
         }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QBoxLayout>
+#include <QComboBox>
 #include <QLabel>
 #include <QString>
 #include <QWidget>
@@ -26,6 +27,27 @@ inline QHBoxLayout* fieldRow(QLabel* label, QWidget* field, std::initializer_lis
     for (QWidget* w : after)
         row->addWidget(w);
     return row;
+}
+
+// The texts of `box`'s entries, in order: a choice's words, given again on
+// a change of the language.
+inline void setItemTexts(QComboBox* box, std::initializer_list<QString> texts) {
+    int i = 0;
+    for (const QString& t : texts)
+        box->setItemText(i++, t);
+}
+
+// A choice of `parent` named `name` that narrows a table: `count` entries
+// (their texts from setItemTexts), the index chosen going to `filter`'s
+// `set` as its enum of the same order (All first, then each kind).
+template <typename Filter, typename E>
+QComboBox* filterChoice(QWidget* parent, const char* name, int count, Filter* filter, void (Filter::*set)(E)) {
+    auto* box = namedWidget<QComboBox>(parent, name);
+    for (int i = 0; i < count; ++i)
+        box->addItem(QString());
+    QObject::connect(box, &QComboBox::currentIndexChanged, filter,
+                     [filter, set](int i) { (filter->*set)(static_cast<E>(i)); });
+    return box;
 }
 
 // A pane's status line: `text`, in red when it says what went wrong.

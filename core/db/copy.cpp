@@ -19,6 +19,11 @@ constexpr std::string_view kTables[] = {
 };
 
 // The key that orders a table's rows (the same order on both backends).
+// The recorded changes come in the history's order (changes_history):
+// PostgreSQL's table is a heap that keeps the order they were written in,
+// so each item's history then lies in a few pages of its own — the history
+// of one constant over 200 revisions reads ~4 table pages instead of ~12
+// spread over every revision's changes of that machine.
 std::string_view orderOf(std::string_view table) {
     if (table == "meta")
         return "key";
@@ -33,7 +38,7 @@ std::string_view orderOf(std::string_view table) {
     if (table == "settings")
         return "machine_id, position";
     if (table == "changes")
-        return "machine_id, revision, seq";
+        return "machine_id, key, revision DESC, seq";
     if (table == "transfer_items")
         return "transfer_id, seq";
     if (table == "state_times")

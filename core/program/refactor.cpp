@@ -1,12 +1,31 @@
 #include "program/refactor.h"
 
+#include <array>
 #include <vector>
 
 namespace k528::program {
 namespace {
 
-RefactorResult fail(std::string ru, std::string en) {
-    return {false, std::move(ru), std::move(en)};
+constexpr std::array kTexts = {
+    util::CatalogText{"refactor.no-program",
+                      "программы L%1 нет",
+                      "there is no program L%1"},
+    util::CatalogText{"refactor.program-number",
+                      "номер программы 1..99, а не %1",
+                      "a program number is 1..99, not %1"},
+    util::CatalogText{"refactor.program-exists",
+                      "программа L%1 уже есть",
+                      "program L%1 exists already"},
+    util::CatalogText{"refactor.start-step",
+                      "начало и шаг нумерации должны быть не меньше 1",
+                      "the start and step of numbering must be at least 1"},
+    util::CatalogText{"refactor.past-999",
+                      "последний номер кадра превысил бы 999 (%1 кадров)",
+                      "the last frame number would exceed 999 (%1 frames)"},
+};
+
+RefactorResult fail(std::string id, std::vector<std::string> args = {}) {
+    return {false, std::move(id), std::move(args)};
 }
 
 void retargetCalls(Program& p, int from, int to) {
@@ -20,27 +39,26 @@ void retargetCalls(Program& p, int from, int to) {
 
 RefactorResult checkNumbers(const ProgramStore& store, int from, int to) {
     if (!store.contains(from))
-        return fail("программы L" + std::to_string(from) + " нет",
-                    "there is no program L" + std::to_string(from));
+        return fail("refactor.no-program", {std::to_string(from)});
     if (to < 1 || to > kMaxPrograms)
-        return fail("номер программы 1..99, а не " + std::to_string(to),
-                    "a program number is 1..99, not " + std::to_string(to));
+        return fail("refactor.program-number", {std::to_string(to)});
     if (store.contains(to))
-        return fail("программа L" + std::to_string(to) + " уже есть",
-                    "program L" + std::to_string(to) + " exists already");
+        return fail("refactor.program-exists", {std::to_string(to)});
     return {};
 }
 
 } // namespace
 
+util::TextCatalog refactorTexts() { return util::TextCatalog(kTexts); }
+
+std::string RefactorResult::text(bool russian) const { return refactorTexts().render(textId, args, russian); }
+
 RefactorResult renumber(Program& program, int start, int step) {
     if (start < 1 || step < 1)
-        return fail("начало и шаг нумерации должны быть не меньше 1",
-                    "the start and step of numbering must be at least 1");
+        return fail("refactor.start-step");
     const long long count = static_cast<long long>(program.frames.size());
     if (count > 0 && start + (count - 1) * step > kMaxFrameNumber)
-        return fail("последний номер кадра превысил бы 999 (" + std::to_string(count) + " кадров)",
-                    "the last frame number would exceed 999 (" + std::to_string(count) + " frames)");
+        return fail("refactor.past-999", {std::to_string(count)});
     program.reindex();
     // New number of the frame each old N names (the first frame with that N).
     std::vector<int> newOf(kMaxFrameNumber + 1, 0);

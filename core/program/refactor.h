@@ -6,16 +6,25 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "program/model.h"
+#include "util/text_catalog.h"
 
 namespace k528::program {
 
 struct RefactorResult {
     bool ok = true;
-    std::string errorRu; // why nothing was changed
-    std::string errorEn;
+    std::string textId;            // why nothing was changed: an id of refactorTexts()
+    std::vector<std::string> args; // its arguments (%1..)
+    // Why nothing was changed, in a language ("" when it was done).
+    std::string text(bool russian) const;
 };
+
+// Why a refactoring changed nothing: each id with its Russian and English
+// (%1..%9 its arguments); the command line renders from it, the desktop
+// through its translators (studio.ui_language compares their Russian).
+util::TextCatalog refactorTexts();
 
 // Gives every frame of `program` the number start, start+step, ... in order
 // and rewrites every IF/GOTO target to the new number of the frame it named

@@ -161,9 +161,9 @@ bool sampleOfViews(const engine::ProgramView& p, std::span<const engine::AxisVie
 }
 
 void SamplingRunMachine::tick() {
-    m_.tick();
+    ForwardingRunMachine::tick();
     ActualSample s;
-    if (!sampleOf(m_.controller(), s))
+    if (!sampleOf(controller(), s))
         return;
     path_.maxErrorUm = std::max({path_.maxErrorUm, std::fabs(s.errX) * 1000.0, std::fabs(s.errZ) * 1000.0});
     d_.add(s);

@@ -12,7 +12,7 @@
 // new frame (N/line) keeps its first sample.
 #pragma once
 
-#include "engine/run.h"
+#include "engine/forwarding_run_machine.h"
 #include "toolpath/programmed_path.h"
 
 #include <cstdint>
@@ -81,21 +81,13 @@ struct ActualPath {
 };
 
 // A RunMachine decorator that samples after each tick.
-class SamplingRunMachine final : public engine::RunMachine {
+class SamplingRunMachine final : public engine::ForwardingRunMachine {
 public:
     SamplingRunMachine(engine::RunMachine& inner, Decimator& d, ActualPath& path)
-        : m_(inner), d_(d), path_(path) {}
-    engine::Positioner& controller() override { return m_.controller(); }
+        : ForwardingRunMachine(inner), d_(d), path_(path) {}
     void tick() override;
-    bool switchOn(std::int64_t maxMs) override { return m_.switchOn(maxMs); }
-    void setOverrideCode(int code) override { m_.setOverrideCode(code); }
-    void startReferenceCycle(engine::AxisId a, int dir) override { m_.startReferenceCycle(a, dir); }
-    void pressStart() override { m_.pressStart(); }
-    bool startHeld() const override { return m_.startHeld(); }
-    std::vector<int> mFunctions() const override { return m_.mFunctions(); }
 
 private:
-    engine::RunMachine& m_;
     Decimator& d_;
     ActualPath& path_;
 };

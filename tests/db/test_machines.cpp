@@ -16,6 +16,7 @@
 #include <QtTest>
 #include <sqlite3.h>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <random>
 
@@ -165,6 +166,23 @@ std::string indexesOf(const db::Location& where) {
     return out;
 }
 
+// A database of an older schema `version` (only its first migrations run,
+// as an older program left it) where grinder-205 has `edits` revisions
+// more: C022 = 1000 + i and R<i> = i, by `authorOf(i)`.
+db::Database databaseOfVersion(const db::Location& where, int version, int edits,
+                               const std::function<std::string(int)>& authorOf) {
+    auto o = testOptions();
+    o.migrations = db::schemaMigrations().subspan(0, static_cast<std::size_t>(version));
+    db::Database d = db::Database::open(where, o);
+    for (int i = 0; i < edits; ++i) {
+        db::Edit e;
+        e.c[22] = 1000 + i;
+        e.r[i] = i;
+        d.applyEdit("grinder-205", e, by(authorOf(i)));
+    }
+    return d;
+}
+
 } // namespace
 
 class TestMachines : public QObject {
@@ -260,16 +278,8 @@ private slots:
         std::vector<db::HistoryEntry> before;
         std::size_t lastTwo = 0;
         {
-            auto o = testOptions();
-            o.migrations = db::schemaMigrations().subspan(0, 5);
-            db::Database d = db::Database::open(where, o);
+            db::Database d = databaseOfVersion(where, 5, 30, [](int i) { return i % 2 ? "Петров" : "Иванов"; });
             QCOMPARE(d.schemaVersion(), 5);
-            for (int i = 0; i < 30; ++i) {
-                db::Edit e;
-                e.c[22] = 1000 + i;
-                e.r[i] = i;
-                d.applyEdit("grinder-205", e, by(i % 2 ? "Петров" : "Иванов"));
-            }
             before = d.history("grinder-205", std::string("C022"));
             QCOMPARE(before.size(), std::size_t(31));
             lastTwo = d.history("grinder-205", std::nullopt, 2).size();
@@ -330,16 +340,8 @@ private slots:
         std::vector<db::HistoryEntry> ofKey, lastThree;
         std::vector<db::RevisionInfo> revisions;
         {
-            auto o = testOptions();
-            o.migrations = db::schemaMigrations().subspan(0, 6);
-            db::Database d = db::Database::open(where, o);
+            db::Database d = databaseOfVersion(where, 6, 25, [](int i) { return i % 3 ? "Петров" : "Иванов И.И."; });
             QCOMPARE(d.schemaVersion(), 6);
-            for (int i = 0; i < 25; ++i) {
-                db::Edit e;
-                e.c[22] = 1000 + i;
-                e.r[i] = i;
-                d.applyEdit("grinder-205", e, by(i % 3 ? "Петров" : "Иванов И.И."));
-            }
             ofKey = d.history("grinder-205", std::string("C022"));
             QCOMPARE(ofKey.size(), std::size_t(26));
             QVERIFY(ofKey[0].at != ofKey[1].at); // the stepping clock: each revision its time

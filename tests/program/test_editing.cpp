@@ -84,7 +84,8 @@ private slots:
         const Program before = p;
         const RefactorResult r = renumber(p, 990, 10);
         QVERIFY(!r.ok);
-        QVERIFY(QString::fromStdString(r.errorEn).contains("999"));
+        QCOMPARE(r.textId, std::string("refactor.past-999"));
+        QCOMPARE(r.text(false), std::string("the last frame number would exceed 999 (3 frames)"));
         QVERIFY(sameContent(p, before));
     }
     void renumberExample() {

@@ -20,6 +20,7 @@
 #include "editor/program_editor.h"
 #include "main_window.h"
 #include "profile/builtin.h"
+#include "rig/loop_program.h"
 #include "scope/scope_view.h"
 #include "session/simulation_session.h"
 #include "workspace/workspaces.h"
@@ -57,15 +58,6 @@ public:
         total = 0;
     }
 };
-
-constexpr const char* kLoop = "%L1\n"
-                              "N1 G90 G0 X60 Z-5\n"
-                              "N2 R1=12\n"
-                              "N3 G1 X20 FX600 Z-60 FZ900\n"
-                              "N4 G1 X60 FX600 Z-5 FZ900\n"
-                              "N5 R1=R1-1\n"
-                              "N6 IF R1>0 GOTO 3\n"
-                              "N7 M30\n";
 
 } // namespace
 
@@ -132,7 +124,7 @@ private slots:
         {
             QFile f(path);
             QVERIFY(f.open(QIODevice::WriteOnly));
-            f.write(kLoop);
+            f.write(k528::testrig::kLoopProgram);
         }
         k528::profile::MachineProfile p = k528::profile::builtin("training-lathe");
         p.setC(8, 1); // АВТ.БЕЗ ПБТ: no homing

@@ -22,6 +22,7 @@
 #include "session/shop_database.h"
 #include "editor/editor_tab.h"
 #include "editor/refactor_actions.h"
+#include "editor/refactor_texts.h"
 #include "editor/listing_actions.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
@@ -58,6 +59,7 @@
 #include "profile/error_text.h"
 #include "engine/types.h"
 #include "program/model.h"
+#include "program/refactor.h"
 #include "session/machine_source.h"
 #include "session/simulation_session.h"
 #include "training/exercise.h"
@@ -999,6 +1001,17 @@ void TestUiLanguage::russianCoreTexts() {
         const engine::OpResult r = engine::OpResult::refused(engine::Refusal::WrongMode, std::string(t.id), {"C022", "9", "10...5000", "X"});
         QCOMPARE(studio::refusalText(r), QString::fromStdString(r.text(true)));
         walker.check(QStringLiteral("refusal %1").arg(fromView(t.id)), studio::refusalText(r));
+    }
+    // Why a refactoring changed nothing: the same Russian as core's catalog
+    // (what `k528 format --renumber --lang ru` prints).
+    for (const util::CatalogText& t : program::refactorTexts().texts()) {
+        QVERIFY2(studio::hasRefactorText(t.id), t.id.data());
+        program::RefactorResult r;
+        r.ok = false;
+        r.textId = std::string(t.id);
+        r.args = {"7"};
+        QCOMPARE(studio::refactorText(r), QString::fromStdString(r.text(true)));
+        walker.check(QStringLiteral("refactoring %1").arg(fromView(t.id)), studio::refactorText(r));
     }
     // The simulated controller refuses in the window's language, naming the
     // value and the limit.

@@ -4,6 +4,7 @@
 
 #include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
+#include "widgets.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -256,8 +257,7 @@ void BackplotWidget::retranslate() {
     updateStatus();
     fitButton_->setText(tr("Fit"));
     fitButton_->setToolTip(tr("Show the whole path (middle button pans, the wheel zooms)"));
-    viewCombo_->setItemText(0, tr("XZ view"));
-    viewCombo_->setItemText(1, tr("3D view"));
+    setItemTexts(viewCombo_, {tr("XZ view"), tr("3D view")});
     speedCombo_->setItemText(speedCombo_->count() - 1, tr("fastest"));
     playButton_->setText(playButton_->isChecked() ? tr("Pause") : tr("Play"));
     backButton_->setToolTip(tr("Previous frame"));

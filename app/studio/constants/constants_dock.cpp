@@ -15,6 +15,7 @@
 #include "profile/text_format.h"
 #include "controller/controller.h"
 #include "controller/push_preview.h"
+#include "widgets.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -94,25 +95,32 @@ private:
 } // namespace
 
 ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent)
-    : ParameterTablePane(viewed, "constants", MemoryArea::C, parent) {
+    : ParameterTablePane(viewed, "constants", MemoryArea::C,
+                         {QT_TR_NOOP("Machine constants"),
+                          QT_TR_NOOP("The constants of the controller on the line, read every 10 s."),
+                          QT_TR_NOOP("A change is written to it at once and kept in the database.")},
+                         parent) {
     editor_ = new ConstantsEditor(viewed, machine, this);
     model_ = new ConstantsModel(*editor_, this);
     filter_ = new ConstantsFilter(this);
 
-    axis_ = new QComboBox(this);
-    axis_->setObjectName("constants.axis");
-    axis_->addItems({QString(), QString(), QString(), QString()});
+    axis_ = filterChoice(this, "constants.axis", 4, filter_, &ConstantsFilter::setAxisFilter);
     hideReserved_ = new QCheckBox(this);
     hideReserved_->setObjectName("constants.hideReserved");
 
-    undoButton_ = toolButton("undo");
-    redoButton_ = toolButton("redo");
-    historyButton_ = toolButton("history");
-    diffButton_ = toolButton("diff");
-    importButton_ = toolButton("import");
-    exportButton_ = toolButton("export");
-    calcButton_ = toolButton("calculator");
-    cuttingButton_ = toolButton("cuttingData");
+    undoButton_ = toolButton("undo", QT_TR_NOOP("Undo"));
+    redoButton_ = toolButton("redo", QT_TR_NOOP("Redo"));
+    historyButton_ =
+        toolButton("history", QT_TR_NOOP("History..."), QT_TR_NOOP("Every revision that changed the selected constant"));
+    diffButton_ = toolButton("diff", QT_TR_NOOP("Compare revisions..."));
+    importButton_ = toolButton("import", QT_TR_NOOP("Import..."),
+                               QT_TR_NOOP("A machine file (.k528m) or the constants as CSV, checked as «k528 db "
+                                          "import» checks them"));
+    exportButton_ = toolButton("export", QT_TR_NOOP("Export..."));
+    calcButton_ = toolButton("calculator", QT_TR_NOOP("Calculator..."));
+    cuttingButton_ = toolButton("cuttingData", QT_TR_NOOP("Cutting data..."),
+                                QT_TR_NOOP("Spindle speed from the cutting speed and the diameter, feed per minute, "
+                                           "the grinding wheel's surface speed from R207"));
     QUndoStack* undo = editor_->undoStack();
     undoButton_->setEnabled(false);
     redoButton_->setEnabled(false);
@@ -138,9 +146,6 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
     table()->setItemDelegateForColumn(
         ConstantsModel::Value, new ValueDelegate(*editor_, [this](const QString& t, bool bad) { say(t, bad); }, table()));
 
-    connect(axis_, &QComboBox::currentIndexChanged, this, [this](int i) {
-        filter_->setAxisFilter(static_cast<ConstantsFilter::AxisFilter>(i));
-    });
     connect(hideReserved_, &QCheckBox::toggled, filter_, &ConstantsFilter::setHideReserved);
     editor_->setNoteProvider([this] { return note_->text(); });
     connect(editor_, &ConstantsEditor::refused, this, [this](const QString& why) { say(why, true); });
@@ -170,23 +175,8 @@ ConstantsPane::ConstantsPane(ViewedController& viewed, const profile::MachinePro
 
 void ConstantsPane::retranslatePane() {
     searchField()->setPlaceholderText(tr("Search: number, panel name, meaning, unit, address"));
-    axis_->setItemText(0, tr("All axes"));
-    axis_->setItemText(1, tr("Axis X"));
-    axis_->setItemText(2, tr("Axis Z"));
-    axis_->setItemText(3, tr("Common"));
+    setItemTexts(axis_, {tr("All axes"), tr("Axis X"), tr("Axis Z"), tr("Common")});
     hideReserved_->setText(tr("Hide reserved"));
-    undoButton_->setText(tr("Undo"));
-    redoButton_->setText(tr("Redo"));
-    historyButton_->setText(tr("History..."));
-    historyButton_->setToolTip(tr("Every revision that changed the selected constant"));
-    diffButton_->setText(tr("Compare revisions..."));
-    importButton_->setText(tr("Import..."));
-    importButton_->setToolTip(tr("A machine file (.k528m) or the constants as CSV, checked as «k528 db import» checks them"));
-    exportButton_->setText(tr("Export..."));
-    calcButton_->setText(tr("Calculator..."));
-    cuttingButton_->setText(tr("Cutting data..."));
-    cuttingButton_->setToolTip(tr("Spindle speed from the cutting speed and the diameter, feed per minute, "
-                                  "the grinding wheel's surface speed from R207"));
     note_->setPlaceholderText(tr("why the next change is made (kept with its revision)"));
 }
 
@@ -412,10 +402,6 @@ QFuture<LongResult> ConstantsPane::diffRevisions(int a, int b) {
         promise.addResult(r);
     });
 }
-
-QString ConstantsPane::dockTitle() const { return tr("Machine constants"); }
-QString ConstantsPane::lineReading() const { return tr("The constants of the controller on the line, read every 10 s."); }
-QString ConstantsPane::lineWriting() const { return tr("A change is written to it at once and kept in the database."); }
 
 QDockWidget* addConstantsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine) {
     return addParameterTableDock(window, new ConstantsPane(viewed, machine));

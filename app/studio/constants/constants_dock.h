@@ -57,10 +57,6 @@ public:
     QFuture<LongResult> diffRevisions(int a, int b);
     bool busy() const { return busy_; }
 
-    QString dockTitle() const override;
-    QString lineReading() const override;
-    QString lineWriting() const override;
-
 public slots:
     void showHistory();    // of the selected constant
     void showDiff();

@@ -194,23 +194,9 @@ bool ConstantsFilter::keeps(int row, const QModelIndex& parent) const {
         return false;
     if (hideReserved_ && d->reserved())
         return false;
-    switch (axis_) {
-    case AxisFilter::All:
-        break;
-    case AxisFilter::X:
-        if (d->axis != catalog::Axis::X)
-            return false;
-        break;
-    case AxisFilter::Z:
-        if (d->axis != catalog::Axis::Z)
-            return false;
-        break;
-    case AxisFilter::Common:
-        if (d->axis != catalog::Axis::Common)
-            return false;
-        break;
-    }
-    return true;
+    // The axis each choice after All keeps, in the order of AxisFilter.
+    static constexpr catalog::Axis kAxisOf[] = {catalog::Axis::X, catalog::Axis::Z, catalog::Axis::Common};
+    return axis_ == AxisFilter::All || d->axis == kAxisOf[static_cast<int>(axis_) - 1];
 }
 
 } // namespace k528::studio

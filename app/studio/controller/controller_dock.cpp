@@ -14,6 +14,7 @@
 #include "session/machine_source.h"
 #include "shop/shop_machines.h"
 #include "units/units.h"
+#include "widgets.h"
 
 #include <utility>
 #include <QCheckBox>
@@ -275,9 +276,7 @@ void ControllerDock::retranslate() {
     if (machine_->count() > 0)
         machine_->setItemText(0, tr("(the line below)"));
     machine_->setToolTip(tr("The machines of the database that keep their controller's line"));
-    parity_->setItemText(0, tr("none"));
-    parity_->setItemText(1, tr("even"));
-    parity_->setItemText(2, tr("odd"));
+    setItemTexts(parity_, {tr("none"), tr("even"), tr("odd")});
     refreshPorts_->setText(tr("Ports"));
     refreshPorts_->setToolTip(tr("List the system's serial ports and the database's machines again"));
     pull_->setText(tr("Pull into the database"));

@@ -6,7 +6,7 @@
 #include "editor/debug_session.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
-#include "language.h"
+#include "window_language.h"
 #include "session/core_texts.h"
 #include "session/program_loader.h"
 #include "session/simulation_session.h"
@@ -574,7 +574,7 @@ void DebugPanel::retranslate() {
     watchLabel_->setText(tr("Watch"));
     watchAdd_->setPlaceholderText(tr("Add an R-parameter: R12, Enter"));
     watch_->setHeaderLabels({tr("R"), tr("Value"), tr("Meaning")});
-    const bool ru = currentLanguage() == QStringLiteral("ru");
+    const bool ru = russianWindow();
     for (int i = 0; i < watch_->topLevelItemCount(); ++i) {
         QTreeWidgetItem* it = watch_->topLevelItem(i);
         const catalog::RParamDef* def = catalog::findRParam(it->data(0, Qt::UserRole).toInt());

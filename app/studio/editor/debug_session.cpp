@@ -1,7 +1,7 @@
 #include "editor/debug_session.h"
 
 #include "editor/program_editor.h"
-#include "language.h"
+#include "window_language.h"
 #include "session/core_texts.h"
 #include "session/simulation_session.h"
 
@@ -20,6 +20,9 @@ QString axisName(int i) { return i == 0 ? QStringLiteral("X") : QStringLiteral("
 QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
+
+// The positioner's message (appendix М: core's Russian and English) in the window's language.
+QString alarmText(const engine::AlarmView& a) { return fromStd(russianWindow() ? a.textRu : a.textEn); }
 
 QString refusal(const engine::OpResult& r) {
     return refusalText(r);
@@ -125,17 +128,16 @@ void DebugSession::fail(const QString& why) {
 
 QString DebugSession::whyNoStart() const {
     const engine::Positioner& ctl = session_->controller();
-    const bool ru = currentLanguage() == QStringLiteral("ru");
     if (session_->simulation().emergencyStopPressed())
         return tr("the emergency stop is pressed on the machine's panel");
     if (ctl.mode() != engine::Mode::Auto)
         return tr("the K923 is in %1, not in automatic mode")
-            .arg(fromView(ru ? engine::modeNameRu(ctl.mode()) : engine::modeNameEn(ctl.mode())));
+            .arg(fromView(russianWindow() ? engine::modeNameRu(ctl.mode()) : engine::modeNameEn(ctl.mode())));
     const auto alarms = ctl.alarms();
     if (!alarms.empty())
         return tr("the positioner shows message %1: %2")
             .arg(alarms.back().number)
-            .arg(fromStd(ru ? alarms.back().textRu : alarms.back().textEn));
+            .arg(alarmText(alarms.back()));
     return tr("the PLC did not pass it on (start enable, the machine's messages)");
 }
 
@@ -349,12 +351,10 @@ void DebugSession::advanced() {
         if (ctl.state() == engine::ProgramState::Ended)
             emit message(tr("L%1 ended.").arg(program_));
         else if (ctl.state() == engine::ProgramState::Alarm) {
-            const bool ru = currentLanguage() == QStringLiteral("ru");
             const auto alarms = ctl.alarms();
             QString text;
             if (!alarms.empty())
-                text = QStringLiteral("%1 %2").arg(alarms.back().number).arg(
-                    fromStd(ru ? alarms.back().textRu : alarms.back().textEn));
+                text = QStringLiteral("%1 %2").arg(alarms.back().number).arg(alarmText(alarms.back()));
             emit message(tr("The program stopped with a message: %1").arg(text));
         }
     }

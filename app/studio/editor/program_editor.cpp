@@ -4,7 +4,7 @@
 #include "session/diagnostic_texts.h"
 #include "editor/program_lexer.h"
 #include "engine/program_check.h"
-#include "language.h"
+#include "window_language.h"
 #include "program/validator.h"
 #include "proveout/proveout.h"
 #include "session/core_texts.h"
@@ -484,7 +484,7 @@ void ProgramEditor::charAdded(int ch) {
     const QChar prev = before.size() >= 2 ? before.at(before.size() - 2) : QChar(' ');
     if (prev.isLetterOrNumber() && !(c == '#'))
         return;
-    const bool ru = currentLanguage() == QStringLiteral("ru");
+    const bool ru = russianWindow();
     editing::CompletionContext ctx;
     ctx.store = &store_;
     ctx.currentProgram = programAtLine(line);

@@ -2,7 +2,7 @@
 
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
-#include "language.h"
+#include "window_language.h"
 #include "proveout/setup_sheet.h"
 #include "session/core_texts.h"
 #include "sheet/sheet_render.h"
@@ -55,7 +55,7 @@ QString SetupSheetActions::exportPdf(const QString& path) {
         emit statusMessage(why);
         return why;
     }
-    const QString error = writeSetupSheetPdf(sheet, currentLanguage() == QLatin1String("ru"), path);
+    const QString error = writeSetupSheetPdf(sheet, russianWindow(), path);
     emit statusMessage(error.isEmpty() ? tr("Setup sheet written to %1").arg(path)
                                        : tr("Cannot write %1: %2").arg(path, error));
     return error;
@@ -82,7 +82,7 @@ void SetupSheetActions::preview() {
         QMessageBox::information(&tab_, tr("Setup sheet"), why);
         return;
     }
-    const bool russian = currentLanguage() == QLatin1String("ru");
+    const bool russian = russianWindow();
     QPrinter printer(QPrinter::HighResolution);
     printer.setPageSize(QPageSize(QPageSize::A4));
     printer.setPageMargins(QMarginsF(12, 12, 12, 12), QPageLayout::Millimeter);

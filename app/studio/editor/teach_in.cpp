@@ -4,7 +4,7 @@
 #include "editing/teach.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
-#include "language.h"
+#include "window_language.h"
 #include "units/units.h"
 
 #include <QMenu>
@@ -17,7 +17,7 @@ TeachIn::TeachIn(EditorTab& tab, ViewedController* viewed) : QObject(&tab), tab_
 
 void TeachIn::fillTargetsMenu(QMenu* menu) {
     menu->clear();
-    const bool ru = currentLanguage() == QLatin1String("ru");
+    const bool ru = russianWindow();
     for (const editing::TeachTarget& t : editing::teachTargets()) {
         const QString meaning = QString::fromUtf8(std::string(ru ? t.meaningRu : t.meaningEn).c_str());
         QAction* a = menu->addAction(QStringLiteral("R%1 — %2").arg(t.r).arg(meaning));

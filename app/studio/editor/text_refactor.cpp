@@ -1,6 +1,6 @@
 #include "editor/text_refactor.h"
 
-#include "language.h"
+#include "editor/refactor_texts.h"
 #include "session/diagnostic_texts.h"
 #include "program/diagnostic.h"
 #include "program/formatter.h"
@@ -17,8 +17,6 @@ namespace {
 // the run time must ask for the same (it asked for its own and got English).
 constexpr const char* kTrContext = "k528::studio";
 QString tr(const char* s) { return QCoreApplication::translate(kTrContext, s); }
-
-bool russian() { return currentLanguage() == QStringLiteral("ru"); }
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
@@ -51,8 +49,6 @@ TextRefactor failed(QString error) {
     return r;
 }
 
-QString coreError(const program::RefactorResult& r) { return fromStd(russian() ? r.errorRu : r.errorEn); }
-
 } // namespace
 
 TextRefactor renumberText(const QString& text, int program, int start, int step) {
@@ -67,7 +63,7 @@ TextRefactor renumberText(const QString& text, int program, int start, int step)
             continue;
         const program::RefactorResult r = program::renumber(p, start, step);
         if (!r.ok)
-            return failed(QStringLiteral("L%1: ").arg(p.number) + coreError(r));
+            return failed(QStringLiteral("L%1: ").arg(p.number) + refactorText(r));
     }
     return done(store);
 }
@@ -79,7 +75,7 @@ TextRefactor moveProgramText(const QString& text, int from, int to, bool copy) {
         return failed(error);
     const program::RefactorResult r = copy ? program::copyProgram(store, from, to) : program::moveProgram(store, from, to);
     if (!r.ok)
-        return failed(coreError(r));
+        return failed(refactorText(r));
     store.headerless = false; // two programs, or one that is no longer the default number
     return done(store);
 }

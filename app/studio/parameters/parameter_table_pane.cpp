@@ -7,6 +7,7 @@
 #include "workspace/pane_dock.h"
 #include "workspace/screen_fit.h"
 
+#include <QCoreApplication>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -20,19 +21,20 @@
 namespace k528::studio {
 
 ParameterTablePane::ParameterTablePane(ViewedController& viewed, const QString& prefix, MemoryArea area,
-                                       QWidget* parent)
-    : QWidget(parent), viewed_(viewed), prefix_(prefix), area_(area) {
+                                       DockTexts texts, QWidget* parent)
+    : QWidget(parent), viewed_(viewed), prefix_(prefix), area_(area), dockTexts_(texts) {
     setObjectName(prefix + "Pane");
     search_ = new QLineEdit(this); // first in the focus chain, as on top
     search_->setObjectName(prefix + ".search");
     search_->setClearButtonEnabled(true);
 }
 
-QToolButton* ParameterTablePane::toolButton(const char* name) {
+QToolButton* ParameterTablePane::toolButton(const char* name, const char* text, const char* toolTip) {
     auto* b = new QToolButton(this);
     b->setObjectName(prefix_ + '.' + QLatin1String(name));
     b->setToolButtonStyle(Qt::ToolButtonTextOnly);
     b->setAutoRaise(true);
+    toolTexts_.push_back({b, text, toolTip});
     return b;
 }
 
@@ -109,7 +111,20 @@ void ParameterTablePane::followController() {
     model_->refresh();
 }
 
+QString ParameterTablePane::paneText(const char* text) const {
+    return QCoreApplication::translate(metaObject()->className(), text); // the pane's context, where it is marked
+}
+
+QString ParameterTablePane::dockTitle() const { return paneText(dockTexts_.title); }
+QString ParameterTablePane::lineReading() const { return paneText(dockTexts_.reading); }
+QString ParameterTablePane::lineWriting() const { return paneText(dockTexts_.writing); }
+
 void ParameterTablePane::retranslate() {
+    for (const ToolText& t : toolTexts_) {
+        t.button->setText(paneText(t.text));
+        if (t.toolTip)
+            t.button->setToolTip(paneText(t.toolTip));
+    }
     retranslatePane();
     noteLabel_->setText(tr("Note:"));
     model_->retranslate();

@@ -13,6 +13,7 @@
 #include <QString>
 #include <QWidget>
 #include <initializer_list>
+#include <vector>
 
 class QDockWidget;
 class QHBoxLayout;
@@ -40,17 +41,26 @@ public:
 
     // The dock's title; of a controller on the line, how its parameters are
     // read and how a change is written to it (when it may be written now).
-    virtual QString dockTitle() const = 0;
-    virtual QString lineReading() const = 0;
-    virtual QString lineWriting() const = 0;
+    QString dockTitle() const;
+    QString lineReading() const;
+    QString lineWriting() const;
 
 protected:
+    // Those three texts as the pane marks them (QT_TR_NOOP: translated in its context).
+    struct DockTexts {
+        const char* title;
+        const char* reading;
+        const char* writing;
+    };
     // `prefix`: the first part of its widgets' object names ("constants" →
     // constants.search, …) and the dock's (dock.constants); `area`: the
     // controller's memory the parameters are in.
-    ParameterTablePane(ViewedController& viewed, const QString& prefix, MemoryArea area, QWidget* parent);
-    // A tool button named `<prefix>.<name>`, for build().
-    QToolButton* toolButton(const char* name);
+    ParameterTablePane(ViewedController& viewed, const QString& prefix, MemoryArea area, DockTexts texts,
+                       QWidget* parent);
+    // A tool button named `<prefix>.<name>`, for build(), saying `text`
+    // with `toolTip` (marked with QT_TR_NOOP in the pane: translated in its
+    // context, again on each change of the language).
+    QToolButton* toolButton(const char* name, const char* text, const char* toolTip = nullptr);
     // The pane's layout: the search field then `choices` on top, `tools`
     // and the note, the table over `filter` (whose source is `model`; its
     // columns `columnEms` wide, in widths of an M), the status line (and
@@ -62,8 +72,8 @@ protected:
     int selectedNumber() const;
     // Selects and shows the row of the model's `source` index.
     void selectSource(const QModelIndex& source);
-    // All the pane's texts in the UI's language: the pane's own
-    // (retranslatePane()), the note's, the model's.
+    // All the pane's texts in the UI's language: its tool buttons', the
+    // pane's own (retranslatePane()), the note's, the model's.
     void retranslate();
     virtual void retranslatePane() = 0;
     void changeEvent(QEvent* e) override;
@@ -76,6 +86,16 @@ private:
     void followController();
     QString prefix_;
     MemoryArea area_;
+    DockTexts dockTexts_;
+    // The tool buttons' texts as the pane marks them (toolButton()).
+    struct ToolText {
+        QToolButton* button;
+        const char* text;
+        const char* toolTip;
+    };
+    std::vector<ToolText> toolTexts_;
+    // One of the pane's own texts (marked with QT_TR_NOOP) in the UI's language.
+    QString paneText(const char* text) const;
     QMetaObject::Connection updates_;
     ParameterTableModel* model_ = nullptr;
     ParameterFilter* filter_ = nullptr;

@@ -11,6 +11,7 @@
 #include "rparams/trial_dialog.h"
 #include "controller/controller.h"
 #include "database/database_ui.h"
+#include "widgets.h"
 
 #include <QComboBox>
 #include <QLineEdit>
@@ -22,21 +23,28 @@
 namespace k528::studio {
 
 RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile& machine, QWidget* parent)
-    : ParameterTablePane(viewed, "rparams", MemoryArea::R, parent), store_(new MachineStore(machine)) {
+    : ParameterTablePane(viewed, "rparams", MemoryArea::R,
+                         {QT_TR_NOOP("R-parameters"),
+                          QT_TR_NOOP("The R-parameters of the controller on the line, all read every 2.5 s."),
+                          QT_TR_NOOP("R0..R231 are written to it at once (not R158, R222, R223).")},
+                         parent),
+      store_(new MachineStore(machine)) {
     model_ = new RParamsModel(viewed, this);
     filter_ = new RParamsFilter(this);
     filter_->setDynamicSortFilter(true);
 
-    show_ = new QComboBox(this);
-    show_->setObjectName("rparams.show");
-    for (int i = 0; i < 6; ++i)
-        show_->addItem(QString());
+    show_ = filterChoice(this, "rparams.show", 6, filter_, &RParamsFilter::setShow);
 
-    keep_ = toolButton("keepPreset");
-    remove_ = toolButton("removePreset");
-    keepAll_ = toolButton("keepAll");
-    apply_ = toolButton("applyPresets");
-    trial_ = toolButton("trialPart");
+    keep_ = toolButton("keepPreset", QT_TR_NOOP("Keep as preset"),
+                       QT_TR_NOOP("The selected parameter's value becomes the machine's preset (a new revision)"));
+    remove_ = toolButton("removePreset", QT_TR_NOOP("Remove preset"));
+    keepAll_ = toolButton("keepAll", QT_TR_NOOP("Keep all as presets"),
+                          QT_TR_NOOP("Every writable R-parameter that is not 0 becomes a preset, as «Keep the "
+                                     "controller's memory» does"));
+    apply_ = toolButton("applyPresets", QT_TR_NOOP("Load the presets"), QT_TR_NOOP("The machine's presets into the controller"));
+    trial_ = toolButton("trialPart", QT_TR_NOOP("Trial part..."),
+                        QT_TR_NOOP("The size measured on the trial part against the drawing: the change of the "
+                                   "tool's offset R-parameter, kept as the machine's preset"));
     connect(keep_, &QToolButton::clicked, this, [this] { keepSelectedAsPreset(); });
     connect(remove_, &QToolButton::clicked, this, [this] { removeSelectedPreset(); });
     connect(keepAll_, &QToolButton::clicked, this, [this] { keepAllAsPresets(); });
@@ -45,8 +53,6 @@ RParamsPane::RParamsPane(ViewedController& viewed, const profile::MachineProfile
     build(model_, filter_, {show_}, {keep_, remove_, keepAll_, apply_, trial_},
           {4, 8, 14, 30, 7, 7}); // No., access, preset screen, meaning, discretes, mm
 
-    connect(show_, &QComboBox::currentIndexChanged, this,
-            [this](int i) { filter_->setShow(static_cast<RParamsFilter::Show>(i)); });
     connect(model_, &RParamsModel::refused, this, [this](const QString& why) { say(why, true); });
     try {
         model_->setPresets(store_->current().r);
@@ -79,22 +85,8 @@ RParamsPane::~RParamsPane() {
 
 void RParamsPane::retranslatePane() {
     searchField()->setPlaceholderText(tr("Search: number or meaning"));
-    show_->setItemText(0, tr("All R0..R299"));
-    show_->setItemText(1, tr("User R0..R149"));
-    show_->setItemText(2, tr("System (writable)"));
-    show_->setItemText(3, tr("Read only R232..R262"));
-    show_->setItemText(4, tr("With a preset"));
-    show_->setItemText(5, tr("Not zero"));
-    keep_->setText(tr("Keep as preset"));
-    keep_->setToolTip(tr("The selected parameter's value becomes the machine's preset (a new revision)"));
-    remove_->setText(tr("Remove preset"));
-    keepAll_->setText(tr("Keep all as presets"));
-    keepAll_->setToolTip(tr("Every writable R-parameter that is not 0 becomes a preset, as «Keep the controller's memory» does"));
-    apply_->setText(tr("Load the presets"));
-    apply_->setToolTip(tr("The machine's presets into the controller"));
-    trial_->setText(tr("Trial part..."));
-    trial_->setToolTip(tr("The size measured on the trial part against the drawing: the change of the tool's "
-                          "offset R-parameter, kept as the machine's preset"));
+    setItemTexts(show_, {tr("All R0..R299"), tr("User R0..R149"), tr("System (writable)"), tr("Read only R232..R262"),
+                         tr("With a preset"), tr("Not zero")});
     note_->setPlaceholderText(tr("why the presets change (kept with the revision)"));
 }
 
@@ -220,10 +212,6 @@ void RParamsPane::applyFrom(std::vector<std::pair<int, std::int64_t>> presets, s
         self->applyFrom(presets, next + 1);
     });
 }
-
-QString RParamsPane::dockTitle() const { return tr("R-parameters"); }
-QString RParamsPane::lineReading() const { return tr("The R-parameters of the controller on the line, all read every 2.5 s."); }
-QString RParamsPane::lineWriting() const { return tr("R0..R231 are written to it at once (not R158, R222, R223)."); }
 
 QDockWidget* addRParamsDock(QMainWindow* window, ViewedController& viewed, const profile::MachineProfile& machine) {
     return addParameterTableDock(window, new RParamsPane(viewed, machine));

@@ -51,10 +51,6 @@ public:
     // R`r` = `value` kept as a preset with `note`, then set in the controller.
     int keepTrialCorrection(int r, std::int64_t value, const QString& note);
 
-    QString dockTitle() const override;
-    QString lineReading() const override;
-    QString lineWriting() const override;
-
 private:
     void retranslatePane() override;
     void applyFrom(std::vector<std::pair<int, std::int64_t>> presets, std::size_t next);

@@ -242,29 +242,14 @@ bool RParamsFilter::keeps(int row, const QModelIndex& parent) const {
     const catalog::RParamDef* d = catalog::findRParam(row);
     if (!d)
         return false;
+    const auto cell = [&](int column) { return sourceModel()->index(row, column, parent).data().toString(); };
     switch (show_) {
-    case Show::All:
-        break;
-    case Show::User:
-        if (!d->user())
-            return false;
-        break;
-    case Show::System:
-        if (d->access != catalog::RAccess::System)
-            return false;
-        break;
-    case Show::ReadOnly:
-        if (!d->readOnly())
-            return false;
-        break;
-    case Show::Presets:
-        if (sourceModel()->index(row, RParamsModel::Preset, parent).data().toString().isEmpty())
-            return false;
-        break;
-    case Show::NonZero:
-        if (sourceModel()->index(row, RParamsModel::Value, parent).data().toString() == QLatin1String("0"))
-            return false;
-        break;
+    case Show::All: return true;
+    case Show::User: return d->user();
+    case Show::System: return d->access == catalog::RAccess::System;
+    case Show::ReadOnly: return d->readOnly();
+    case Show::Presets: return !cell(RParamsModel::Preset).isEmpty();
+    case Show::NonZero: return cell(RParamsModel::Value) != QLatin1String("0");
     }
     return true;
 }

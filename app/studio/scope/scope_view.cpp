@@ -4,6 +4,7 @@
 #include "controller/simulated_machine.h"
 #include "machine/simulation.h"
 #include "workspace/flow_layout.h"
+#include "widgets.h"
 
 #include <QChart>
 #include <QChartView>
@@ -625,10 +626,7 @@ void ScopeView::retranslate() {
                            Qt::ToolTipRole);
     sayRate();
     triggerLabel_->setText(tr("Trigger"));
-    triggerBox_->setItemText(0, tr("Free running"));
-    triggerBox_->setItemText(1, tr("Frame start"));
-    triggerBox_->setItemText(2, tr("Alarm"));
-    triggerBox_->setItemText(3, tr("|Following error| over, mm"));
+    setItemTexts(triggerBox_, {tr("Free running"), tr("Frame start"), tr("Alarm"), tr("|Following error| over, mm")});
     csvButton_->setText(tr("Export CSV…"));
     pngButton_->setText(tr("Export PNG…"));
     const bool dac = extraSignal() == ScopeSignal::Dac;
