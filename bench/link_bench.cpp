@@ -71,7 +71,7 @@ int main() {
     link::PullResult r;
     const double t0 = bench::nowSeconds();
     if (link::LinkError e = link::pull(l, r)) {
-        std::fprintf(stderr, "pull failed: %s\n", e.message.c_str());
+        std::fprintf(stderr, "pull failed: %s\n", e.text(false).c_str());
         return 2;
     }
     const double cpu = bench::nowSeconds() - t0;
@@ -96,7 +96,7 @@ int main() {
     for (int i = 0; i < polls; ++i) {
         link::LiveState s;
         if (link::LinkError e = link::readLive(lm, s)) {
-            std::fprintf(stderr, "poll failed: %s\n", e.message.c_str());
+            std::fprintf(stderr, "poll failed: %s\n", e.text(false).c_str());
             return 2;
         }
     }
@@ -115,14 +115,14 @@ int main() {
     link::Monitor::Changes changes;
     for (int i = 0; i < 10; ++i) // the first reads of R and C
         if (link::LinkError e = monitor.tick(ld, changes)) {
-            std::fprintf(stderr, "monitor failed: %s\n", e.message.c_str());
+            std::fprintf(stderr, "monitor failed: %s\n", e.text(false).c_str());
             return 2;
         }
     const std::int64_t bytes0 = d.bytes(), frames0 = d.frames();
     const int ticks = 1000;
     for (int i = 0; i < ticks; ++i)
         if (link::LinkError e = monitor.tick(ld, changes)) {
-            std::fprintf(stderr, "monitor failed: %s\n", e.message.c_str());
+            std::fprintf(stderr, "monitor failed: %s\n", e.text(false).c_str());
             return 2;
         }
     const double perTick = link::wireSeconds(d.bytes() - bytes0, d.frames() - frames0) / ticks;

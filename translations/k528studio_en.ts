@@ -4691,6 +4691,473 @@ Its comment stays: %3</translation>
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkTexts</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>exception 01: the controller does not know this function</source>
+        <translation>exception 01: the controller does not know this function</translation>
+    </message>
+    <message>
+        <source>exception 02: a register outside the controller's map (or a read-only one written)</source>
+        <translation>exception 02: a register outside the controller's map (or a read-only one written)</translation>
+    </message>
+    <message>
+        <source>exception 03: a value outside its range; nothing of the request was written</source>
+        <translation>exception 03: a value outside its range; nothing of the request was written</translation>
+    </message>
+    <message>
+        <source>exception 06: the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): select it on the K923 to write</source>
+        <translation>exception 06: the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): select it on the K923 to write</translation>
+    </message>
+    <message>
+        <source>exception %1</source>
+        <translation>exception %1</translation>
+    </message>
+    <message>
+        <source>idle (the transfer)</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <source>ready (the transfer)</source>
+        <translation>ready</translation>
+    </message>
+    <message>
+        <source>committed</source>
+        <translation>committed</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ»</source>
+        <translation>the controller is not in F7 «РАБОТА С ПЭВМ»</translation>
+    </message>
+    <message>
+        <source>no such program in the controller</source>
+        <translation>no such program in the controller</translation>
+    </message>
+    <message>
+        <source>the controller refused the text</source>
+        <translation>the controller refused the text</translation>
+    </message>
+    <message>
+        <source>CRC or length mismatch: the text arrived damaged and was not stored</source>
+        <translation>CRC or length mismatch: the text arrived damaged and was not stored</translation>
+    </message>
+    <message>
+        <source>the controller's memory is full</source>
+        <translation>the controller's memory is full</translation>
+    </message>
+    <message>
+        <source>status %1</source>
+        <translation>status %1</translation>
+    </message>
+    <message>
+        <source>reading registers %1</source>
+        <translation>reading registers %1</translation>
+    </message>
+    <message>
+        <source>writing registers %1</source>
+        <translation>writing registers %1</translation>
+    </message>
+    <message>
+        <source>echo</source>
+        <translation>echo</translation>
+    </message>
+    <message>
+        <source>diagnostics %1</source>
+        <translation>diagnostics %1</translation>
+    </message>
+    <message>
+        <source>server id</source>
+        <translation>server id</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (%2 attempts)</source>
+        <translation>%1: the controller does not answer (%2 attempts)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (1 attempt)</source>
+        <translation>%1: the controller does not answer (1 attempt)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (%2 attempts, last: %3)</source>
+        <translation>%1: the controller does not answer (%2 attempts, last: %3)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (1 attempt, last: %2)</source>
+        <translation>%1: the controller does not answer (1 attempt, last: %2)</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>timeout</translation>
+    </message>
+    <message>
+        <source>CRC error</source>
+        <translation>CRC error</translation>
+    </message>
+    <message>
+        <source>the port is closed</source>
+        <translation>the port is closed</translation>
+    </message>
+    <message>
+        <source>the connection is closed</source>
+        <translation>the connection is closed</translation>
+    </message>
+    <message>
+        <source>the echo differs</source>
+        <translation>the echo differs</translation>
+    </message>
+    <message>
+        <source>an empty answer</source>
+        <translation>an empty answer</translation>
+    </message>
+    <message>
+        <source>the port is closed and does not open again: %1</source>
+        <translation>the port is closed and does not open again: %1</translation>
+    </message>
+    <message>
+        <source>the port failed: %1</source>
+        <translation>the port failed: %1</translation>
+    </message>
+    <message>
+        <source>the connection is closed and does not open again: %1</source>
+        <translation>the connection is closed and does not open again: %1</translation>
+    </message>
+    <message>
+        <source>the connection failed: %1</source>
+        <translation>the connection failed: %1</translation>
+    </message>
+    <message>
+        <source>%1 (a damaged frame)</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>%1 (an answer that does not fit)</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>%1 (no answer)</source>
+        <translation>%1</translation>
+    </message>
+    <message>
+        <source>connection refused</source>
+        <translation>connection refused</translation>
+    </message>
+    <message>
+        <source>the other end closed the connection</source>
+        <translation>the other end closed the connection</translation>
+    </message>
+    <message>
+        <source>host not found</source>
+        <translation>host not found</translation>
+    </message>
+    <message>
+        <source>no connection within %1 ms</source>
+        <translation>no connection within %1 ms</translation>
+    </message>
+    <message>
+        <source>the socket timed out</source>
+        <translation>the socket timed out</translation>
+    </message>
+    <message>
+        <source>the network is unreachable</source>
+        <translation>the network is unreachable</translation>
+    </message>
+    <message>
+        <source>access to the socket denied</source>
+        <translation>access to the socket denied</translation>
+    </message>
+    <message>
+        <source>the address is in use</source>
+        <translation>the address is in use</translation>
+    </message>
+    <message>
+        <source>socket error: %1</source>
+        <translation>socket error: %1</translation>
+    </message>
+    <message>
+        <source>no such port</source>
+        <translation>no such port</translation>
+    </message>
+    <message>
+        <source>permission denied (or another program holds the port)</source>
+        <translation>permission denied (or another program holds the port)</translation>
+    </message>
+    <message>
+        <source>the port is already open</source>
+        <translation>the port is already open</translation>
+    </message>
+    <message>
+        <source>the port does not take these settings</source>
+        <translation>the port does not take these settings</translation>
+    </message>
+    <message>
+        <source>the port is gone (unplugged?)</source>
+        <translation>the port is gone (unplugged?)</translation>
+    </message>
+    <message>
+        <source>the port failed to read or write</source>
+        <translation>the port failed to read or write</translation>
+    </message>
+    <message>
+        <source>the port timed out</source>
+        <translation>the port timed out</translation>
+    </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>the port is not open</translation>
+    </message>
+    <message>
+        <source>port error: %1</source>
+        <translation>port error: %1</translation>
+    </message>
+    <message>
+        <source>'%1' is not HOST:PORT (a port 1..65535)</source>
+        <translation>'%1' is not HOST:PORT (a port 1..65535)</translation>
+    </message>
+    <message>
+        <source>the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in its menu on the K923 (▲ ▼, ENTER), then %1 again; nothing was sent</source>
+        <translation>the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in its menu on the K923 (▲ ▼, ENTER), then %1 again; nothing was sent</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ» (mode F%2 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then %1 again; nothing was sent</source>
+        <translation>the controller is not in F7 «РАБОТА С ПЭВМ» (mode F%2 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then %1 again; nothing was sent</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ» (powering on): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then %1 again; nothing was sent</source>
+        <translation>the controller is not in F7 «РАБОТА С ПЭВМ» (powering on): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then %1 again; nothing was sent</translation>
+    </message>
+    <message>
+        <source>push (the action to repeat)</source>
+        <translation>push</translation>
+    </message>
+    <message>
+        <source>clear C (the action to repeat)</source>
+        <translation>clear C</translation>
+    </message>
+    <message>
+        <source>clear R (the action to repeat)</source>
+        <translation>clear R</translation>
+    </message>
+    <message>
+        <source>set %1 (the action to repeat)</source>
+        <translation>set %1</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-parameters</translation>
+    </message>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-parameters</translation>
+    </message>
+    <message>
+        <source>R-parameters (%1)</source>
+        <translation>R-parameters (%1)</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>messages</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>program %1</translation>
+    </message>
+    <message>
+        <source>clear C</source>
+        <translation>clear C</translation>
+    </message>
+    <message>
+        <source>clear R</source>
+        <translation>clear R</translation>
+    </message>
+    <message>
+        <source>clear C: the C block does not read back as zeros</source>
+        <translation>clear C: the C block does not read back as zeros</translation>
+    </message>
+    <message>
+        <source>the controller announces a text of %1 bytes</source>
+        <translation>the controller announces a text of %1 bytes</translation>
+    </message>
+    <message>
+        <source>the text read does not match its CRC-32</source>
+        <translation>the text read does not match its CRC-32</translation>
+    </message>
+    <message>
+        <source>%1 at line %2</source>
+        <translation>%1 at line %2</translation>
+    </message>
+    <message>
+        <source>the map's window does not follow its offset</source>
+        <translation>the map's window does not follow its offset</translation>
+    </message>
+    <message>
+        <source>%1: the text read back differs from the text sent</source>
+        <translation>%1: the text read back differs from the text sent</translation>
+    </message>
+    <message>
+        <source>%1: the controller refused the block</source>
+        <translation>%1: the controller refused the block</translation>
+    </message>
+    <message>
+        <source>%1: the controller refused the block at C%2</source>
+        <translation>%1: the controller refused the block at C%2</translation>
+    </message>
+    <message>
+        <source>%1: the values read back differ from those sent</source>
+        <translation>%1: the values read back differ from those sent</translation>
+    </message>
+    <message>
+        <source>C%1 has no address in the positioner (table Е.1): it cannot be written</source>
+        <translation>C%1 has no address in the positioner (table Е.1): it cannot be written</translation>
+    </message>
+    <message>
+        <source>C%1 = %2: the controller refused the value (outside table Е.1)</source>
+        <translation>C%1 = %2: the controller refused the value (outside table Е.1)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not read back what was written</source>
+        <translation>%1: the controller does not read back what was written</translation>
+    </message>
+    <message>
+        <source>R%1 is read only over the link (the PC writes %2)</source>
+        <translation>R%1 is read only over the link (the PC writes %2)</translation>
+    </message>
+    <message>
+        <source>R%1 = %2 is outside 32 bits</source>
+        <translation>R%1 = %2 is outside 32 bits</translation>
+    </message>
+    <message>
+        <source>%1; nothing was sent</source>
+        <translation>%1; nothing was sent</translation>
+    </message>
+    <message>
+        <source>C%1 (%2): %3 (table Е.1)</source>
+        <translation>C%1 (%2): %3 (table Е.1)</translation>
+    </message>
+    <message>
+        <source>R%1 is outside the 32-bit range</source>
+        <translation>R%1 is outside the 32-bit range</translation>
+    </message>
+    <message>
+        <source>program %1, line %2: %3</source>
+        <translation>program %1, line %2: %3</translation>
+    </message>
+    <message>
+        <source>program %1 does not hold exactly that program</source>
+        <translation>program %1 does not hold exactly that program</translation>
+    </message>
+    <message>
+        <source>program %1: %2</source>
+        <translation>program %1: %2</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3</source>
+        <translation>%1:%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 holds no program (%L) and no %MESSAGES</source>
+        <translation>%1 holds no program (%L) and no %MESSAGES</translation>
+    </message>
+    <message>
+        <source>%1: the text before the first %L header belongs to no program</source>
+        <translation>%1: the text before the first %L header belongs to no program</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3 (checked against the controller's constants and programs)</source>
+        <translation>%1:%2: %3 (checked against the controller's constants and programs)</translation>
+    </message>
+    <message>
+        <source>new: %1</source>
+        <translation>new: %1</translation>
+    </message>
+    <message>
+        <source>in doubt (the line broke while it was committed; pull to see): %1</source>
+        <translation>in doubt (the line broke while it was committed; pull to see): %1</translation>
+    </message>
+    <message>
+        <source>as they were: %1</source>
+        <translation>as they were: %1</translation>
+    </message>
+    <message>
+        <source>%1 answer</source>
+        <translation>%1 answer</translation>
+    </message>
+    <message>
+        <source>%1 answers</source>
+        <translation>%1 answers</translation>
+    </message>
+    <message>
+        <source>%1 timeout</source>
+        <translation>%1 timeout</translation>
+    </message>
+    <message>
+        <source>%1 timeouts</source>
+        <translation>%1 timeouts</translation>
+    </message>
+    <message>
+        <source>%1 CRC error</source>
+        <translation>%1 CRC error</translation>
+    </message>
+    <message>
+        <source>%1 CRC errors</source>
+        <translation>%1 CRC errors</translation>
+    </message>
+    <message>
+        <source>%1 bad reply</source>
+        <translation>%1 bad reply</translation>
+    </message>
+    <message>
+        <source>%1 bad replies</source>
+        <translation>%1 bad replies</translation>
+    </message>
+    <message>
+        <source>%1 exception</source>
+        <translation>%1 exception</translation>
+    </message>
+    <message>
+        <source>%1 exceptions</source>
+        <translation>%1 exceptions</translation>
+    </message>
+    <message>
+        <source>%1 retry</source>
+        <translation>%1 retry</translation>
+    </message>
+    <message>
+        <source>%1 retries</source>
+        <translation>%1 retries</translation>
+    </message>
+    <message>
+        <source>%1 request sent again in halves</source>
+        <translation>%1 request sent again in halves</translation>
+    </message>
+    <message>
+        <source>%1 requests sent again in halves</source>
+        <translation>%1 requests sent again in halves</translation>
+    </message>
+    <message>
+        <source>; round trip median %1 ms, p95 %2 ms</source>
+        <translation>; round trip median %1 ms, p95 %2 ms</translation>
+    </message>
+    <message>
+        <source>cancelled by the user</source>
+        <translation>cancelled by the user</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>closed</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ListingActions</name>
     <message>
         <source>Listing of %1 pages written to %2</source>

@@ -4691,6 +4691,473 @@ Its comment stays: %3</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::LinkTexts</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1; %2</source>
+        <translation>%1; %2</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>exception 01: the controller does not know this function</source>
+        <translation>исключение 01: контроллер не знает этой функции</translation>
+    </message>
+    <message>
+        <source>exception 02: a register outside the controller's map (or a read-only one written)</source>
+        <translation>исключение 02: регистр вне карты контроллера (или запись в регистр только для чтения)</translation>
+    </message>
+    <message>
+        <source>exception 03: a value outside its range; nothing of the request was written</source>
+        <translation>исключение 03: значение вне своего диапазона; ничего из запроса не записано</translation>
+    </message>
+    <message>
+        <source>exception 06: the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): select it on the K923 to write</source>
+        <translation>исключение 06: контроллер не в F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): выберите этот пункт на K923, чтобы записывать</translation>
+    </message>
+    <message>
+        <source>exception %1</source>
+        <translation>исключение %1</translation>
+    </message>
+    <message>
+        <source>idle (the transfer)</source>
+        <translation>свободен</translation>
+    </message>
+    <message>
+        <source>ready (the transfer)</source>
+        <translation>готов</translation>
+    </message>
+    <message>
+        <source>committed</source>
+        <translation>записано</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ»</source>
+        <translation>контроллер не в F7 «РАБОТА С ПЭВМ»</translation>
+    </message>
+    <message>
+        <source>no such program in the controller</source>
+        <translation>такой программы в контроллере нет</translation>
+    </message>
+    <message>
+        <source>the controller refused the text</source>
+        <translation>контроллер отклонил текст</translation>
+    </message>
+    <message>
+        <source>CRC or length mismatch: the text arrived damaged and was not stored</source>
+        <translation>не совпали CRC или длина: текст пришёл повреждённым и не сохранён</translation>
+    </message>
+    <message>
+        <source>the controller's memory is full</source>
+        <translation>память контроллера заполнена</translation>
+    </message>
+    <message>
+        <source>status %1</source>
+        <translation>состояние %1</translation>
+    </message>
+    <message>
+        <source>reading registers %1</source>
+        <translation>чтение регистров %1</translation>
+    </message>
+    <message>
+        <source>writing registers %1</source>
+        <translation>запись регистров %1</translation>
+    </message>
+    <message>
+        <source>echo</source>
+        <translation>эхо</translation>
+    </message>
+    <message>
+        <source>diagnostics %1</source>
+        <translation>диагностика %1</translation>
+    </message>
+    <message>
+        <source>server id</source>
+        <translation>идентификатор сервера</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (%2 attempts)</source>
+        <translation>%1: контроллер не отвечает (попыток: %2)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (1 attempt)</source>
+        <translation>%1: контроллер не отвечает (попыток: 1)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (%2 attempts, last: %3)</source>
+        <translation>%1: контроллер не отвечает (попыток: %2, последняя: %3)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not answer (1 attempt, last: %2)</source>
+        <translation>%1: контроллер не отвечает (попыток: 1, последняя: %2)</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>время ожидания истекло</translation>
+    </message>
+    <message>
+        <source>CRC error</source>
+        <translation>ошибка CRC</translation>
+    </message>
+    <message>
+        <source>the port is closed</source>
+        <translation>порт закрыт</translation>
+    </message>
+    <message>
+        <source>the connection is closed</source>
+        <translation>соединение закрыто</translation>
+    </message>
+    <message>
+        <source>the echo differs</source>
+        <translation>эхо не совпадает</translation>
+    </message>
+    <message>
+        <source>an empty answer</source>
+        <translation>пустой ответ</translation>
+    </message>
+    <message>
+        <source>the port is closed and does not open again: %1</source>
+        <translation>порт закрыт и не открывается снова: %1</translation>
+    </message>
+    <message>
+        <source>the port failed: %1</source>
+        <translation>отказ порта: %1</translation>
+    </message>
+    <message>
+        <source>the connection is closed and does not open again: %1</source>
+        <translation>соединение закрыто и не открывается снова: %1</translation>
+    </message>
+    <message>
+        <source>the connection failed: %1</source>
+        <translation>отказ соединения: %1</translation>
+    </message>
+    <message>
+        <source>%1 (a damaged frame)</source>
+        <translation>повреждённый кадр</translation>
+    </message>
+    <message>
+        <source>%1 (an answer that does not fit)</source>
+        <translation>ответ не к этому запросу</translation>
+    </message>
+    <message>
+        <source>%1 (no answer)</source>
+        <translation>нет ответа</translation>
+    </message>
+    <message>
+        <source>connection refused</source>
+        <translation>соединение отклонено</translation>
+    </message>
+    <message>
+        <source>the other end closed the connection</source>
+        <translation>другая сторона закрыла соединение</translation>
+    </message>
+    <message>
+        <source>host not found</source>
+        <translation>узел не найден</translation>
+    </message>
+    <message>
+        <source>no connection within %1 ms</source>
+        <translation>нет соединения за %1 мс</translation>
+    </message>
+    <message>
+        <source>the socket timed out</source>
+        <translation>время ожидания сокета истекло</translation>
+    </message>
+    <message>
+        <source>the network is unreachable</source>
+        <translation>сеть недоступна</translation>
+    </message>
+    <message>
+        <source>access to the socket denied</source>
+        <translation>нет доступа к сокету</translation>
+    </message>
+    <message>
+        <source>the address is in use</source>
+        <translation>адрес уже занят</translation>
+    </message>
+    <message>
+        <source>socket error: %1</source>
+        <translation>ошибка сокета: %1</translation>
+    </message>
+    <message>
+        <source>no such port</source>
+        <translation>порт не найден</translation>
+    </message>
+    <message>
+        <source>permission denied (or another program holds the port)</source>
+        <translation>нет доступа к порту (или он занят другой программой)</translation>
+    </message>
+    <message>
+        <source>the port is already open</source>
+        <translation>порт уже открыт</translation>
+    </message>
+    <message>
+        <source>the port does not take these settings</source>
+        <translation>порт не принимает эти настройки</translation>
+    </message>
+    <message>
+        <source>the port is gone (unplugged?)</source>
+        <translation>порт пропал (отключён?)</translation>
+    </message>
+    <message>
+        <source>the port failed to read or write</source>
+        <translation>ошибка чтения или записи порта</translation>
+    </message>
+    <message>
+        <source>the port timed out</source>
+        <translation>время ожидания порта истекло</translation>
+    </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>порт не открыт</translation>
+    </message>
+    <message>
+        <source>port error: %1</source>
+        <translation>ошибка порта: %1</translation>
+    </message>
+    <message>
+        <source>'%1' is not HOST:PORT (a port 1..65535)</source>
+        <translation>«%1» — не ХОСТ:ПОРТ (порт 1..65535)</translation>
+    </message>
+    <message>
+        <source>the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in its menu on the K923 (▲ ▼, ENTER), then %1 again; nothing was sent</source>
+        <translation>контроллер в F7 УПРАВЛЕНИЕ ДАННЫМИ, но не на «РАБОТА С ПЭВМ»: выберите «РАБОТА С ПЭВМ» в его меню на K923 (▲ ▼, ENTER) и повторите %1; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ» (mode F%2 now): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then %1 again; nothing was sent</source>
+        <translation>контроллер не в F7 «РАБОТА С ПЭВМ» (сейчас режим F%2): нажмите F7 (УПРАВЛЕНИЕ ДАННЫМИ) на K923, выберите «РАБОТА С ПЭВМ» и повторите %1; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>the controller is not in F7 «РАБОТА С ПЭВМ» (powering on): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then %1 again; nothing was sent</source>
+        <translation>контроллер не в F7 «РАБОТА С ПЭВМ» (идёт включение): нажмите F7 (УПРАВЛЕНИЕ ДАННЫМИ) на K923, выберите «РАБОТА С ПЭВМ» и повторите %1; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>push (the action to repeat)</source>
+        <translation>передачу</translation>
+    </message>
+    <message>
+        <source>clear C (the action to repeat)</source>
+        <translation>очистку C</translation>
+    </message>
+    <message>
+        <source>clear R (the action to repeat)</source>
+        <translation>очистку R</translation>
+    </message>
+    <message>
+        <source>set %1 (the action to repeat)</source>
+        <translation>запись %1</translation>
+    </message>
+    <message>
+        <source>C-parameters</source>
+        <translation>C-параметры</translation>
+    </message>
+    <message>
+        <source>R-parameters</source>
+        <translation>R-параметры</translation>
+    </message>
+    <message>
+        <source>R-parameters (%1)</source>
+        <translation>R-параметры (%1)</translation>
+    </message>
+    <message>
+        <source>messages</source>
+        <translation>сообщения</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>программа %1</translation>
+    </message>
+    <message>
+        <source>clear C</source>
+        <translation>очистка C</translation>
+    </message>
+    <message>
+        <source>clear R</source>
+        <translation>очистка R</translation>
+    </message>
+    <message>
+        <source>clear C: the C block does not read back as zeros</source>
+        <translation>очистка C: блок C не читается нулями</translation>
+    </message>
+    <message>
+        <source>the controller announces a text of %1 bytes</source>
+        <translation>контроллер объявил текст длиной %1 байт</translation>
+    </message>
+    <message>
+        <source>the text read does not match its CRC-32</source>
+        <translation>прочитанный текст не совпадает со своей CRC-32</translation>
+    </message>
+    <message>
+        <source>%1 at line %2</source>
+        <translation>%1 в строке %2</translation>
+    </message>
+    <message>
+        <source>the map's window does not follow its offset</source>
+        <translation>окно карты не следует за своим смещением</translation>
+    </message>
+    <message>
+        <source>%1: the text read back differs from the text sent</source>
+        <translation>%1: текст, прочитанный обратно, отличается от отправленного</translation>
+    </message>
+    <message>
+        <source>%1: the controller refused the block</source>
+        <translation>%1: контроллер отклонил блок</translation>
+    </message>
+    <message>
+        <source>%1: the controller refused the block at C%2</source>
+        <translation>%1: контроллер отклонил блок на C%2</translation>
+    </message>
+    <message>
+        <source>%1: the values read back differ from those sent</source>
+        <translation>%1: значения, прочитанные обратно, отличаются от отправленных</translation>
+    </message>
+    <message>
+        <source>C%1 has no address in the positioner (table Е.1): it cannot be written</source>
+        <translation>C%1 не имеет адреса в позиционере (таблица Е.1): её нельзя записать</translation>
+    </message>
+    <message>
+        <source>C%1 = %2: the controller refused the value (outside table Е.1)</source>
+        <translation>C%1 = %2: контроллер отклонил значение (вне таблицы Е.1)</translation>
+    </message>
+    <message>
+        <source>%1: the controller does not read back what was written</source>
+        <translation>%1: контроллер при чтении не возвращает то, что записано</translation>
+    </message>
+    <message>
+        <source>R%1 is read only over the link (the PC writes %2)</source>
+        <translation>R%1 по линии только читается (ПЭВМ записывает %2)</translation>
+    </message>
+    <message>
+        <source>R%1 = %2 is outside 32 bits</source>
+        <translation>R%1 = %2 не помещается в 32 бита</translation>
+    </message>
+    <message>
+        <source>%1; nothing was sent</source>
+        <translation>%1; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>C%1 (%2): %3 (table Е.1)</source>
+        <translation>C%1 (%2): %3 (таблица Е.1)</translation>
+    </message>
+    <message>
+        <source>R%1 is outside the 32-bit range</source>
+        <translation>R%1 не помещается в 32 бита</translation>
+    </message>
+    <message>
+        <source>program %1, line %2: %3</source>
+        <translation>программа %1, строка %2: %3</translation>
+    </message>
+    <message>
+        <source>program %1 does not hold exactly that program</source>
+        <translation>программа %1 содержит не ровно одну эту программу</translation>
+    </message>
+    <message>
+        <source>program %1: %2</source>
+        <translation>программа %1: %2</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3</source>
+        <translation>%1:%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 holds no program (%L) and no %MESSAGES</source>
+        <translation>%1 не содержит ни программы (%L), ни %MESSAGES</translation>
+    </message>
+    <message>
+        <source>%1: the text before the first %L header belongs to no program</source>
+        <translation>%1: текст до первого заголовка %L не относится ни к одной программе</translation>
+    </message>
+    <message>
+        <source>%1:%2: %3 (checked against the controller's constants and programs)</source>
+        <translation>%1:%2: %3 (проверено по константам и программам контроллера)</translation>
+    </message>
+    <message>
+        <source>new: %1</source>
+        <translation>записано: %1</translation>
+    </message>
+    <message>
+        <source>in doubt (the line broke while it was committed; pull to see): %1</source>
+        <translation>под вопросом (линия оборвалась во время записи; считайте память, чтобы узнать): %1</translation>
+    </message>
+    <message>
+        <source>as they were: %1</source>
+        <translation>как было: %1</translation>
+    </message>
+    <message>
+        <source>%1 answer</source>
+        <translation>ответов: %1</translation>
+    </message>
+    <message>
+        <source>%1 answers</source>
+        <translation>ответов: %1</translation>
+    </message>
+    <message>
+        <source>%1 timeout</source>
+        <translation>тайм-аутов: %1</translation>
+    </message>
+    <message>
+        <source>%1 timeouts</source>
+        <translation>тайм-аутов: %1</translation>
+    </message>
+    <message>
+        <source>%1 CRC error</source>
+        <translation>ошибок CRC: %1</translation>
+    </message>
+    <message>
+        <source>%1 CRC errors</source>
+        <translation>ошибок CRC: %1</translation>
+    </message>
+    <message>
+        <source>%1 bad reply</source>
+        <translation>неподходящих ответов: %1</translation>
+    </message>
+    <message>
+        <source>%1 bad replies</source>
+        <translation>неподходящих ответов: %1</translation>
+    </message>
+    <message>
+        <source>%1 exception</source>
+        <translation>исключений: %1</translation>
+    </message>
+    <message>
+        <source>%1 exceptions</source>
+        <translation>исключений: %1</translation>
+    </message>
+    <message>
+        <source>%1 retry</source>
+        <translation>повторов: %1</translation>
+    </message>
+    <message>
+        <source>%1 retries</source>
+        <translation>повторов: %1</translation>
+    </message>
+    <message>
+        <source>%1 request sent again in halves</source>
+        <translation>запросов, посланных снова половинами: %1</translation>
+    </message>
+    <message>
+        <source>%1 requests sent again in halves</source>
+        <translation>запросов, посланных снова половинами: %1</translation>
+    </message>
+    <message>
+        <source>; round trip median %1 ms, p95 %2 ms</source>
+        <translation>; время отклика: медиана %1 мс, 95-й процентиль %2 мс</translation>
+    </message>
+    <message>
+        <source>cancelled by the user</source>
+        <translation>отменено пользователем</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>соединение закрыто</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ListingActions</name>
     <message>
         <source>Listing of %1 pages written to %2</source>

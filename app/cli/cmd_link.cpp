@@ -29,12 +29,34 @@ namespace k528::cli {
 
 namespace {
 
+// The language of the command's messages (--lang, Russian unless en); the
+// --json outputs are the same in both.
+bool ru = true;
+const char* say(const char* russian, const char* english) { return ru ? russian : english; }
+std::string said(const link::Said& s) { return link::render(s, ru); }
+// A plugin's error: a line failure of core's catalog, or the system's words.
+std::string lineError(const QString& error) { return said(link::decodeSaid(error.toStdString())); }
+
+// What a transfer moves now, as core's progress names it ("C-parameters",
+// "R-parameters", "messages", "program 5").
+std::string partText(const std::string& what) {
+    if (what == "C-parameters")
+        return said(link::say("link.part-c"));
+    if (what == "R-parameters")
+        return said(link::say("link.part-r"));
+    if (what == "messages")
+        return said(link::say("link.part-messages"));
+    if (what.rfind("program ", 0) == 0)
+        return said(link::say("link.part-program", {what.substr(8)}));
+    return what;
+}
+
 int exitFor(const link::LinkError& e) {
     return e.kind == link::LinkError::Kind::NoAnswer ? ExitUsage : ExitInputErrors;
 }
 
 int fail(const link::LinkError& e) {
-    std::fprintf(stderr, "k528 link: %s\n", e.message.c_str());
+    std::fprintf(stderr, "k528 link: %s\n", e.text(ru).c_str());
     return exitFor(e);
 }
 
@@ -42,12 +64,16 @@ int fail(const link::LinkError& e) {
 void lineReport(const link::Link& l, const linkplugin::ClientTransport& t, int baud) {
     const linkplugin::WireCount w = t.wire();
     if (baud == 0) {
-        std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes (Modbus TCP)\n", link::describe(l.stats()).c_str(),
+        std::fprintf(stderr, say("линия: %s; транзакций: %lld, байт: %lld (Modbus TCP)\n",
+                                 "line: %s; %lld transactions, %lld bytes (Modbus TCP)\n"),
+                     link::describe(l.stats(), ru).c_str(),
                      static_cast<long long>(w.transactions), static_cast<long long>(w.bytes));
         return;
     }
-    std::fprintf(stderr, "line: %s; %lld transactions, %lld bytes, wire time %.3f s at %d bit/s\n",
-                 link::describe(l.stats()).c_str(), static_cast<long long>(w.transactions),
+    std::fprintf(stderr,
+                 say("линия: %s; транзакций: %lld, байт: %lld, время на линии %.3f с при %d бит/с\n",
+                     "line: %s; %lld transactions, %lld bytes, wire time %.3f s at %d bit/s\n"),
+                 link::describe(l.stats(), ru).c_str(), static_cast<long long>(w.transactions),
                  static_cast<long long>(w.bytes), link::wireSeconds(w.bytes, w.frames, baud), baud);
 }
 
@@ -98,15 +124,18 @@ Json liveJson(const link::LiveState& s) {
 }
 
 std::string liveText(const link::LiveState& s) {
-    std::string t = "mode F" + std::to_string(s.mode) + (s.pcReady ? " (РАБОТА С ПЭВМ)" : "") +
-                    (s.running ? ", running" : "") + ", program " + std::to_string(s.program) + " N" +
-                    std::to_string(s.frame) + ", override " + std::to_string(s.overridePercent) + "%";
-    char buf[160];
-    std::snprintf(buf, sizeof buf, ", X %d Z %d (machine X %d Z %d, error X %d Z %d disc)", s.xCurrent,
-                  s.zCurrent, s.xMachine, s.zMachine, s.xError, s.zError);
+    std::string t = say("режим F", "mode F") + std::to_string(s.mode) + (s.pcReady ? " (РАБОТА С ПЭВМ)" : "") +
+                    (s.running ? say(", выполняется", ", running") : "") + say(", программа ", ", program ") +
+                    std::to_string(s.program) + " N" + std::to_string(s.frame) + say(", коррекция ", ", override ") +
+                    std::to_string(s.overridePercent) + "%";
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  say(", X %d Z %d (машинные X %d Z %d, рассогласование X %d Z %d дискрет)",
+                      ", X %d Z %d (machine X %d Z %d, error X %d Z %d disc)"),
+                  s.xCurrent, s.zCurrent, s.xMachine, s.zMachine, s.xError, s.zError);
     t += buf;
     for (int n : s.alarms) {
-        t += "; alarm " + std::to_string(n);
+        t += say("; авария ", "; alarm ") + std::to_string(n);
         if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(n))
             t += " «" + std::string(m->textRu) + "»";
     }
@@ -210,12 +239,14 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
         QString error;
         std::unique_ptr<linkplugin::ClientTransport> t = plugin.openClient(line, error);
         if (!t) {
-            std::fprintf(stderr, "k528 link: cannot open %s at %d bit/s: %s\n", line.port.toUtf8().constData(), baud,
-                         error.toUtf8().constData());
+            std::fprintf(stderr, say("k528 link: не удаётся открыть %s при %d бит/с: %s\n",
+                                     "k528 link: cannot open %s at %d bit/s: %s\n"),
+                         line.port.toUtf8().constData(), baud, lineError(error).c_str());
             return ExitUsage;
         }
-        std::fprintf(stderr, "scan: %d bit/s, %zu addresses, %d ms each without an answer\n", baud, addresses.size(),
-                     line.timeoutMs);
+        std::fprintf(stderr, say("поиск: %d бит/с, адресов: %zu, %d мс на каждый без ответа\n",
+                                 "scan: %d bit/s, %zu addresses, %d ms each without an answer\n"),
+                     baud, addresses.size(), line.timeoutMs);
         link::Link l(*t, link::k528Map(), 1);
         for (int a : addresses) {
             if (stopRequested())
@@ -242,7 +273,7 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
                 j["round_trip_ms"] = s.roundTripMs;
                 std::printf("%s\n", json::dump(j).c_str());
             } else {
-                std::printf("%d bit/s, %s\n", baud, link::describe(s).c_str());
+                std::printf(say("%d бит/с, %s\n", "%d bit/s, %s\n"), baud, link::describe(s).c_str());
             }
             if (outputLost())
                 return ExitUsage;
@@ -250,7 +281,10 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
         lineReport(l, *t, baud);
         frames += link::formatFrameLog(t->frameLog());
     }
-    std::fprintf(stderr, "scan: %d station%s answered\n", found, found == 1 ? "" : "s");
+    if (ru)
+        std::fprintf(stderr, "поиск: ответивших станций: %d\n", found);
+    else
+        std::fprintf(stderr, "scan: %d station%s answered\n", found, found == 1 ? "" : "s");
     if (!saveFrames(framesPath, frames))
         return ExitUsage;
     return stopRequested() ? ExitUsage : ExitOk;
@@ -262,10 +296,14 @@ int runLinkQt(std::span<const std::string> argv) {
     std::vector<std::string_view> options = kLineOptions;
     options.insert(options.end(),
                    {"--out", "--seconds", "--timeout-ms", "--interval-ms", "--frames", "--bauds", "--addresses",
-                    "--db", "--machine"});
+                    "--db", "--machine", "--lang"});
     const Args args(argv, {"--json", "--list", "--clear"}, options);
     if (!args.ok())
         return usageError(args.error());
+    const auto lang = args.value("--lang");
+    if (lang && *lang != "ru" && *lang != "en")
+        return usageError("--lang is ru or en, not '" + *lang + "'");
+    ru = lang.value_or("ru") == "ru";
     if (args.has("--list")) {
         for (const linkplugin::Found& f : linkplugin::discover()) {
             if (f.plugin)
@@ -347,7 +385,7 @@ int runLinkQt(std::span<const std::string> argv) {
         // The line as a database machine's `line` names it (cli.md).
         const std::string lineText =
             transfer::lineText(line->port.toStdString(), line->baud, line->address, isTcpLine(args));
-        if (!TransferRecord::open(args, lineText, record))
+        if (!TransferRecord::open(args, lineText, ru, record))
             return ExitUsage;
         if (pushReleased && !(record && record->releasedPlan(plan)))
             return ExitUsage;
@@ -367,8 +405,8 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     std::unique_ptr<linkplugin::ClientTransport> t = plugin->openClient(*line, error);
     if (!t) {
-        std::fprintf(stderr, "k528 link: cannot open %s: %s\n", line->port.toUtf8().constData(),
-                     error.toUtf8().constData());
+        std::fprintf(stderr, say("k528 link: не удаётся открыть %s: %s\n", "k528 link: cannot open %s: %s\n"),
+                     line->port.toUtf8().constData(), lineError(error).c_str());
         return ExitUsage;
     }
     link::Link l(*t);
@@ -386,9 +424,11 @@ int runLinkQt(std::span<const std::string> argv) {
             return done(fail(e));
         link::ServerId id;
         const bool named = !l.serverId(id);
-        std::printf("K528-05 (map %s) answers on %s at address %d: %s; round trip %.1f ms%s\n", l.map().name.c_str(),
-                    line->port.toUtf8().constData(), line->address, liveText(s).c_str(),
-                    l.stats().roundTrip.median(), named ? ("; it names itself «" + id.data + "»").c_str() : "");
+        const std::string name = named ? say("; называет себя «", "; it names itself «") + id.data + "»" : "";
+        std::printf(say("K528-05 (карта %s) отвечает на %s, адрес %d: %s; время отклика %.1f мс%s\n",
+                        "K528-05 (map %s) answers on %s at address %d: %s; round trip %.1f ms%s\n"),
+                    l.map().name.c_str(), line->port.toUtf8().constData(), line->address, liveText(s).c_str(),
+                    l.stats().roundTrip.median(), name.c_str());
         return done(ExitOk);
     }
     if (cmd == "status") {
@@ -408,7 +448,9 @@ int runLinkQt(std::span<const std::string> argv) {
                 j[link::modbus::counterName(link::modbus::kCounters[i])] = c.values[i];
             std::printf("%s\n", json::dump(j).c_str());
         } else {
-            std::printf("station %d's bus counters (Modbus function 08):\n", line->address);
+            std::printf(say("счётчики шины станции %d (функция Modbus 08):\n",
+                            "station %d's bus counters (Modbus function 08):\n"),
+                        line->address);
             for (std::size_t i = 0; i < c.values.size(); ++i)
                 std::printf("  %-26s %u\n", link::modbus::counterName(link::modbus::kCounters[i]),
                             static_cast<unsigned>(c.values[i]));
@@ -416,7 +458,7 @@ int runLinkQt(std::span<const std::string> argv) {
         if (args.has("--clear")) {
             if (link::LinkError e = link::clearBusCounters(l))
                 return done(fail(e));
-            std::printf("counters cleared\n");
+            std::printf("%s\n", say("счётчики сброшены", "counters cleared"));
         }
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
@@ -425,8 +467,10 @@ int runLinkQt(std::span<const std::string> argv) {
         const bool c = args.positional()[1] == "c";
         if (link::LinkError e = link::clearArea(l, c ? link::BlockKind::C : link::BlockKind::R))
             return done(fail(e));
-        std::printf("cleared the %s area of the controller (%s)\n", c ? "C" : "R",
-                    c ? "all 152 machine constants are 0" : "every R-parameter is 0");
+        std::printf(say("область %s контроллера очищена (%s)\n", "cleared the %s area of the controller (%s)\n"),
+                    c ? "C" : "R",
+                    c ? say("все 152 константы станка равны 0", "all 152 machine constants are 0")
+                      : say("все R-параметры равны 0", "every R-parameter is 0"));
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
@@ -464,17 +508,20 @@ int runLinkQt(std::span<const std::string> argv) {
                     Json j;
                     j["online"] = false;
                     j["lost_since"] = isoText(*lostSince);
-                    j["why"] = e.message;
+                    j["why"] = e.text(false);
                     j["stale"] = lastState ? liveJson(*lastState) : Json();
                     std::printf("%s\n", json::dump(j).c_str());
                 } else if (first) {
-                    std::printf("line lost at %s (%s); last values, stale: %s\n", clockText(*lostSince).c_str(),
-                                e.message.c_str(), lastState ? liveText(*lastState).c_str() : "none yet");
+                    std::printf(say("линия потеряна в %s (%s); последние значения, устаревшие: %s\n",
+                                    "line lost at %s (%s); last values, stale: %s\n"),
+                                clockText(*lostSince).c_str(), e.text(ru).c_str(),
+                                lastState ? liveText(*lastState).c_str() : say("пока нет", "none yet"));
                 }
                 last.clear();
             } else {
                 if (lostSince && !asJson)
-                    std::printf("line back at %s after %.1f s without an answer\n",
+                    std::printf(say("линия снова отвечает в %s после %.1f с без ответа\n",
+                                    "line back at %s after %.1f s without an answer\n"),
                                 clockText(QDateTime::currentDateTime()).c_str(),
                                 static_cast<double>(lostSince->msecsTo(QDateTime::currentDateTime())) / 1000.0);
                 lostSince.reset();
@@ -492,7 +539,8 @@ int runLinkQt(std::span<const std::string> argv) {
         }
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         if (lostSince) {
-            std::fprintf(stderr, "k528 link: the line has not answered since %s\n", clockText(*lostSince).c_str());
+            std::fprintf(stderr, say("k528 link: линия не отвечает с %s\n", "k528 link: the line has not answered since %s\n"),
+                         clockText(*lostSince).c_str());
             return done(ExitUsage);
         }
         return done(ExitOk);
@@ -500,7 +548,7 @@ int runLinkQt(std::span<const std::string> argv) {
     if (cmd == "pull") {
         link::PullResult r;
         const link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
-            std::fprintf(stderr, "pull: %s\n", what.c_str());
+            std::fprintf(stderr, say("чтение: %s\n", "pull: %s\n"), partText(what).c_str());
         });
         if (record)
             record->recordPull(l, r, e);
@@ -513,7 +561,8 @@ int runLinkQt(std::span<const std::string> argv) {
             std::fprintf(stderr, "k528 link: %s\n", werror.c_str());
             return done(ExitUsage);
         }
-        std::printf("pulled 152 C-parameters, 300 R-parameters, %zu programs, %zu messages into %s\n",
+        std::printf(say("считаны 152 C-параметра, 300 R-параметров, программ: %zu, сообщений: %zu, в %s\n",
+                        "pulled 152 C-parameters, 300 R-parameters, %zu programs, %zu messages into %s\n"),
                     p.programs.size(), p.messages.size(), args.value("--out")->c_str());
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
@@ -527,17 +576,18 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     link::PushReport rep;
     const link::LinkError e = link::push(l, plan, rep, [](const std::string& what, int, int) {
-        std::fprintf(stderr, "push: %s\n", what.c_str());
+        std::fprintf(stderr, say("передача: %s\n", "push: %s\n"), partText(what).c_str());
     });
     if (record)
         record->recordPush(l, plan, rep, e);
     if (!e) {
         std::string names;
         for (const link::PushReport::Part& p : rep.parts)
-            names += (names.empty() ? "" : ", ") + p.name;
-        std::printf("written and verified: %s\n", names.empty() ? "nothing (the file is empty)" : names.c_str());
+            names += (names.empty() ? "" : ", ") + said(p.said);
+        std::printf(say("записано и проверено: %s\n", "written and verified: %s\n"),
+                    names.empty() ? say("ничего (файл пуст)", "nothing (the file is empty)") : names.c_str());
     } else if (rep.anyNew() || e.kind != link::LinkError::Kind::Input) {
-        std::printf("push stopped: %s\n", rep.summary().c_str());
+        std::printf(say("передача остановлена: %s\n", "push stopped: %s\n"), said(rep.summary()).c_str());
     }
     lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
     if (e)

@@ -8,6 +8,7 @@
 // bus counters of function 08 and names itself to function 17.
 #include "cli.h"
 #include "link/image.h"
+#include "link/link_texts.h"
 #include "link/transport.h"
 #include "link_line.h"
 #include "machine/simulation.h"
@@ -105,7 +106,7 @@ int runServeQt(std::span<const std::string> argv) {
     if (!server) {
         std::fprintf(stderr, ru ? "k528: не удаётся обслуживать линию %s: %s\n" : "k528: cannot serve on %s: %s\n",
                      line->port.toUtf8().constData(),
-                     error.toUtf8().constData());
+                     link::render(link::decodeSaid(error.toStdString()), ru).c_str());
         return ExitUsage;
     }
     if (isTcpLine(args))

@@ -229,6 +229,7 @@ std::span<const Command> commands() {
          "  --frames FILE        save the frame log (time, direction, bytes, CRC) when done\n"
          "  --list               the plugins found (and refused) and the serial ports\n"
          "  --timeout-ms MS      answer timeout (default 200)\n"
+         "  --lang ru|en         language of the messages and refusals (default ru); --json is the same\n"
          "Exit codes: 0 done; 1 the controller refused, a verification failed, or the file is wrong;\n"
          "2 the line does not answer, the file cannot be read, output is lost, or usage.\n",
          runLink},
@@ -253,8 +254,12 @@ std::span<const Command> commands() {
 }
 
 int usageError(std::string_view message) {
+    return usageError(message, false);
+}
+
+int usageError(std::string_view message, bool russian) {
     std::fprintf(stderr, "k528: %.*s\n", static_cast<int>(message.size()), message.data());
-    std::fprintf(stderr, "Try 'k528 --help'.\n");
+    std::fprintf(stderr, "%s\n", russian ? "Справка: k528 --help." : "Try 'k528 --help'.");
     return ExitUsage;
 }
 

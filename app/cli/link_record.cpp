@@ -11,13 +11,14 @@ namespace k528::cli {
 
 namespace fs = std::filesystem;
 
-bool TransferRecord::open(const Args& args, const std::string& line,
+bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
                           std::optional<TransferRecord>& record) {
+    const auto say = [ru](const char* russian, const char* english) { return ru ? russian : english; };
     const auto given = args.value("--db");
     const char* env = std::getenv("K528_DB");
     const auto machine = args.value("--machine");
     const bool required = given || (env && *env) || machine;
-    std::string where = given ? *given : "the default database";
+    std::string where = given ? *given : say("базы данных по умолчанию", "the default database");
     try {
         const db::Location loc = given ? db::Location::parse(*given) : db::defaultDatabaseLocation();
         where = loc.text();
@@ -27,8 +28,10 @@ bool TransferRecord::open(const Args& args, const std::string& line,
             if (!fs::exists(loc.file(), ec)) {
                 if (given) {
                     std::fprintf(stderr,
-                                 "k528 link: no database at %s for the transfer log (create one "
-                                 "with: k528 db init --db %s); nothing was sent\n",
+                                 say("k528 link: нет базы данных %s для журнала передач (создайте её: "
+                                     "k528 db init --db %s); ничего не отправлено\n",
+                                     "k528 link: no database at %s for the transfer log (create one "
+                                     "with: k528 db init --db %s); nothing was sent\n"),
                                  where.c_str(), where.c_str());
                     return false;
                 }
@@ -41,21 +44,27 @@ bool TransferRecord::open(const Args& args, const std::string& line,
         if (machine) {
             const auto m = d.machine(*machine);
             if (!m) {
-                std::fprintf(stderr, "k528 link: no machine \"%s\" in %s; nothing was sent\n",
+                std::fprintf(stderr,
+                             say("k528 link: в %2$s нет станка «%1$s»; ничего не отправлено\n",
+                                 "k528 link: no machine \"%1$s\" in %2$s; nothing was sent\n"),
                              machine->c_str(), where.c_str());
                 return false;
             }
             c.machine = *machine;
             c.revision = m->revision;
         }
-        record.emplace(TransferRecord(std::move(d), std::move(c)));
+        record.emplace(TransferRecord(std::move(d), std::move(c), ru));
         return true;
     } catch (const db::Error& e) {
         if (required) {
-            std::fprintf(stderr, "k528 link: the transfer log: %s; nothing was sent\n", e.what());
+            std::fprintf(stderr, say("k528 link: журнал передач: %s; ничего не отправлено\n",
+                                     "k528 link: the transfer log: %s; nothing was sent\n"),
+                         e.what());
             return false;
         }
-        std::fprintf(stderr, "k528 link: warning: this transfer is not on record (%s: %s)\n",
+        std::fprintf(stderr,
+                     say("k528 link: предупреждение: эта передача не записана в журнал (%s: %s)\n",
+                         "k528 link: warning: this transfer is not on record (%s: %s)\n"),
                      where.c_str(), e.what());
         return true;
     }
@@ -72,8 +81,10 @@ bool TransferRecord::releasedPlan(link::PushPlan& plan) {
         return false;
     }
     if (plan.programs.empty())
-        std::fprintf(stderr, "k528 link: machine %s has no released program: pushing its C, R "
-                             "and messages only\n",
+        std::fprintf(stderr,
+                     ru_ ? "k528 link: у станка %s нет выпущенных программ: передаются только его C, R и "
+                           "сообщения\n"
+                         : "k528 link: machine %s has no released program: pushing its C, R and messages only\n",
                      where_.machine.c_str());
     return true;
 }
@@ -84,14 +95,19 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
     try {
         const transfer::ReleaseCheck check = transfer::checkReleased(db_, where_.machine, plan);
         if (check.overridden)
-            std::fprintf(stderr, "k528 link: pushing programs that are not released (machine %s "
-                                 "allows it: push.unreleased)\n",
+            std::fprintf(stderr,
+                         ru_ ? "k528 link: передаются невыпущенные программы (станок %s это разрешает: "
+                               "push.unreleased)\n"
+                             : "k528 link: pushing programs that are not released (machine %s allows it: "
+                               "push.unreleased)\n",
                          where_.machine.c_str());
         if (!check.allowed)
-            std::fprintf(stderr, "k528 link: %s\nnothing was sent\n", check.message.c_str());
+            std::fprintf(stderr, ru_ ? "k528 link: %s\nничего не отправлено\n" : "k528 link: %s\nnothing was sent\n",
+                         check.message.c_str());
         return check.allowed;
     } catch (const db::Error& e) {
-        std::fprintf(stderr, "k528 link: %s; nothing was sent\n", e.what());
+        std::fprintf(stderr, ru_ ? "k528 link: %s; ничего не отправлено\n" : "k528 link: %s; nothing was sent\n",
+                     e.what());
         return false;
     }
 }
@@ -99,10 +115,13 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
 void TransferRecord::record(const db::TransferEntry& e) {
     try {
         const db::TransferEntry stored = db_.recordTransfer(e);
-        std::fprintf(stderr, "on record: transfer %lld in %s\n", static_cast<long long>(stored.id),
+        std::fprintf(stderr, ru_ ? "в журнале: передача %lld в %s\n" : "on record: transfer %lld in %s\n",
+                     static_cast<long long>(stored.id),
                      db_.location().text().c_str());
     } catch (const db::Error& err) {
-        std::fprintf(stderr, "k528 link: the transfer was not recorded: %s\n", err.what());
+        std::fprintf(stderr,
+                     ru_ ? "k528 link: передача не записана в журнал: %s\n" : "k528 link: the transfer was not recorded: %s\n",
+                     err.what());
     }
 }
 

@@ -23,7 +23,8 @@ public:
     // $K528_DB) or a machine (--machine) must be usable: false after saying
     // why (nothing may be sent then). The default database that cannot be
     // opened only costs the record: a warning, `record` stays empty, true.
-    static bool open(const Args& args, const std::string& line, std::optional<TransferRecord>& record);
+    // `ru`: the command's --lang.
+    static bool open(const Args& args, const std::string& line, bool ru, std::optional<TransferRecord>& record);
 
     const std::string& machine() const { return where_.machine; }
     // The database machine as released, for `push --machine NAME` without a
@@ -39,11 +40,12 @@ public:
     void recordPull(link::Link& l, const link::PullResult& pulled, const link::LinkError& error);
 
 private:
-    TransferRecord(db::Database db, transfer::Context where)
-        : db_(std::move(db)), where_(std::move(where)) {}
+    TransferRecord(db::Database db, transfer::Context where, bool ru)
+        : db_(std::move(db)), where_(std::move(where)), ru_(ru) {}
     void record(const db::TransferEntry& e);
     db::Database db_;
     transfer::Context where_;
+    bool ru_ = true;
 };
 
 } // namespace k528::cli

@@ -72,7 +72,8 @@ void Poller::pollWorker(Worker& w, const std::function<void(const PollResult&)>&
             for (std::size_t i : w.indices) {
                 PollResult r;
                 r.index = i;
-                r.why = "cannot connect to " + w.settings.port.toStdString() + ": " + error.toStdString();
+                r.why = "cannot connect to " + w.settings.port.toStdString() + ": " +
+                        link::render(link::decodeSaid(error.toStdString()), false);
                 r.atMs = unixMsNow();
                 sink(r);
             }
@@ -86,7 +87,7 @@ void Poller::pollWorker(Worker& w, const std::function<void(const PollResult&)>&
         r.index = i;
         w.transport->setStation(lines_[i].address.address);
         if (link::LinkError e = link::readLive(*w.link, r.live)) {
-            r.why = e.message;
+            r.why = e.text(false);
         } else {
             r.online = true;
             r.roundTripMs = w.link->stats().roundTrip.last();

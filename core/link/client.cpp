@@ -22,51 +22,30 @@ namespace k528::link {
 Said exceptionSaid(int code) {
     switch (code) {
     case 1:
-        return {"exception 01: the controller does not know this function",
-                "исключение 01: контроллер не знает этой функции"};
     case 2:
-        return {"exception 02: a register outside the controller's map (or a read-only one written)",
-                "исключение 02: регистр вне карты контроллера (или запись в регистр только для чтения)"};
     case 3:
-        return {"exception 03: a value outside its range; nothing of the request was written",
-                "исключение 03: значение вне своего диапазона; ничего из запроса не записано"};
     case 6:
-        return {"exception 06: the controller is not in F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): "
-                "select it on the K923 to write",
-                "исключение 06: контроллер не в F7 «РАБОТА С ПЭВМ» (УПРАВЛЕНИЕ ДАННЫМИ): "
-                "выберите этот пункт на K923, чтобы записывать"};
+        return say("link.exception-" + std::to_string(code));
     default:
-        return {"exception " + std::to_string(code), "исключение " + std::to_string(code)};
+        return say("link.exception", {std::to_string(code)});
     }
 }
-
-std::string exceptionText(int code) { return exceptionSaid(code).en; }
 
 Said statusSaid(int status) {
     switch (status) {
     case 0:
-        return {"idle", "свободен"};
     case 1:
-        return {"ready", "готов"};
     case 2:
-        return {"committed", "записано"};
     case 16:
-        return {"the controller is not in F7 «РАБОТА С ПЭВМ»", "контроллер не в F7 «РАБОТА С ПЭВМ»"};
     case 17:
-        return {"no such program in the controller", "такой программы в контроллере нет"};
     case 18:
-        return {"the controller refused the text", "контроллер отклонил текст"};
     case 19:
-        return {"CRC or length mismatch: the text arrived damaged and was not stored",
-                "не совпали CRC или длина: текст пришёл повреждённым и не сохранён"};
     case 20:
-        return {"the controller's memory is full", "память контроллера заполнена"};
+        return say("link.status-" + std::to_string(status));
     default:
-        return {"status " + std::to_string(status), "состояние " + std::to_string(status)};
+        return say("link.status", {std::to_string(status)});
     }
 }
-
-std::string statusText(int status) { return statusSaid(status).en; }
 
 void RoundTrips::add(double ms) {
     last_ = ms;
@@ -89,13 +68,15 @@ double RoundTrips::quantile(double q) const {
     return v[k];
 }
 
-std::string describe(const LineStats& s) {
-    auto n = [](std::int64_t v, const char* one, const char* many) {
-        return std::to_string(v) + " " + (v == 1 ? one : many);
+std::string describe(const LineStats& s, bool ru) {
+    auto n = [&](std::int64_t v, const char* one, const char* many) {
+        return render(say(v == 1 ? one : many, {std::to_string(v)}), ru);
     };
-    std::string t = n(s.exchanges, "answer", "answers") + ", " + n(s.noAnswer, "timeout", "timeouts") + ", " +
-                    n(s.crcErrors, "CRC error", "CRC errors") + ", " + n(s.badReplies, "bad reply", "bad replies") +
-                    ", " + n(s.exceptions, "exception", "exceptions");
+    std::string t = n(s.exchanges, "link.stats-answer", "link.stats-answers") + ", " +
+                    n(s.noAnswer, "link.stats-timeout", "link.stats-timeouts") + ", " +
+                    n(s.crcErrors, "link.stats-crc-error", "link.stats-crc-errors") + ", " +
+                    n(s.badReplies, "link.stats-bad-reply", "link.stats-bad-replies") + ", " +
+                    n(s.exceptions, "link.stats-exception", "link.stats-exceptions");
     if (!s.exceptionsByCode.empty()) {
         t += " (";
         bool first = true;
@@ -107,14 +88,14 @@ std::string describe(const LineStats& s) {
         }
         t += ")";
     }
-    t += ", " + n(s.retries, "retry", "retries");
+    t += ", " + n(s.retries, "link.stats-retry", "link.stats-retries");
     if (s.splits > 0)
-        t += ", " + n(s.splits, "request sent again in halves", "requests sent again in halves");
+        t += ", " + n(s.splits, "link.stats-split", "link.stats-splits");
     if (s.roundTrip.count() > 0) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "; round trip median %.1f ms, p95 %.1f ms", s.roundTrip.median(),
-                      s.roundTrip.p95());
-        t += buf;
+        char median[32], p95[32];
+        std::snprintf(median, sizeof median, "%.1f", s.roundTrip.median());
+        std::snprintf(p95, sizeof p95, "%.1f", s.roundTrip.p95());
+        t += render(say("link.stats-round-trip", {median, p95}), ru);
     }
     return t;
 }
@@ -149,37 +130,38 @@ void Link::count(const Reply& r, bool again) {
 
 namespace {
 
-// A transport's word on the last attempt (English: the frame log's) in
-// Russian: the fixed ones as they are, the port's or the connection's
-// failure with the system's own text after it, any other by its kind.
-std::string detailRu(const Reply& r) {
+// A transport's word on the last attempt (English: the frame log's): the
+// fixed ones by their ids, the port's or the connection's failure with the
+// line's failure after it (a plugin's id, else the system's own words), any
+// other said by its kind in Russian.
+Said detailSaid(const Reply& r) {
     static const std::pair<const char*, const char*> kFixed[] = {
-        {"timeout", "время ожидания истекло"},
-        {"CRC error", "ошибка CRC"},
-        {"the port is closed", "порт закрыт"},
-        {"the connection is closed", "соединение закрыто"},
-        {"the echo differs", "эхо не совпадает"},
-        {"an empty answer", "пустой ответ"},
+        {"timeout", "link.timeout"},
+        {"CRC error", "link.crc-error"},
+        {"the port is closed", "link.port-closed"},
+        {"the connection is closed", "link.connection-closed"},
+        {"the echo differs", "link.echo-differs"},
+        {"an empty answer", "link.empty-answer"},
     };
     static const std::pair<const char*, const char*> kPrefixed[] = {
-        {"the port is closed and does not open again: ", "порт закрыт и не открывается снова: "},
-        {"the port failed: ", "отказ порта: "},
-        {"the connection is closed and does not open again: ", "соединение закрыто и не открывается снова: "},
-        {"the connection failed: ", "отказ соединения: "},
+        {"the port is closed and does not open again: ", "link.port-reopen"},
+        {"the port failed: ", "link.port-failed"},
+        {"the connection is closed and does not open again: ", "link.connection-reopen"},
+        {"the connection failed: ", "link.connection-failed"},
     };
-    for (const auto& [en, ru] : kFixed)
+    for (const auto& [en, id] : kFixed)
         if (r.detail == en)
-            return ru;
-    for (const auto& [en, ru] : kPrefixed)
+            return say(id);
+    for (const auto& [en, id] : kPrefixed)
         if (r.detail.rfind(en, 0) == 0)
-            return ru + r.detail.substr(std::char_traits<char>::length(en));
+            return say(id, {decodeSaid(std::string_view(r.detail).substr(std::char_traits<char>::length(en)))});
     switch (r.kind) {
     case Reply::Kind::Damaged:
-        return "повреждённый кадр";
+        return say("link.damaged", {r.detail});
     case Reply::Kind::BadReply:
-        return "ответ не к этому запросу";
+        return say("link.bad-reply", {r.detail});
     default:
-        return r.detail.empty() ? "" : "нет ответа";
+        return say("link.lost", {r.detail});
     }
 }
 
@@ -197,17 +179,18 @@ template <class F> LinkError Link::retry(const Said& what, F&& f) {
             return {};
         case Reply::Kind::Exception:
             return linkError(last.exception == 6 ? LinkError::Kind::NotReady : LinkError::Kind::Exception,
-                             last.exception, what + ": " + exceptionSaid(last.exception));
+                             last.exception, say("link.join", {what, exceptionSaid(last.exception)}));
         default:
             break;
         }
     }
+    const std::string n = std::to_string(attempts_);
+    if (last.detail.empty())
+        return linkError(LinkError::Kind::NoAnswer, 0,
+                         attempts_ == 1 ? say("link.no-answer-1", {what}) : say("link.no-answer", {what, n}));
     return linkError(LinkError::Kind::NoAnswer, 0,
-                     what + Said{": the controller does not answer (" + std::to_string(attempts_) +
-                                     (attempts_ == 1 ? " attempt" : " attempts") +
-                                     (last.detail.empty() ? "" : ", last: " + last.detail) + ")",
-                                 ": контроллер не отвечает (попыток: " + std::to_string(attempts_) +
-                                     (last.detail.empty() ? "" : ", последняя: " + detailRu(last)) + ")"});
+                     attempts_ == 1 ? say("link.no-answer-1-last", {what, detailSaid(last)})
+                                    : say("link.no-answer-last", {what, n, detailSaid(last)}));
 }
 
 // A piece of a request that every attempt lost, while the line did answer
@@ -224,7 +207,7 @@ bool worthSplitting(const LinkError& e, bool damaged, int n) {
 LinkError Link::readPiece(int at, int n, std::vector<std::uint16_t>& out) {
     std::vector<std::uint16_t> part;
     const std::string range = std::to_string(at) + ".." + std::to_string(at + n - 1);
-    LinkError e = retry(Said{"reading registers " + range, "чтение регистров " + range}, [&] {
+    LinkError e = retry(say("link.reading", {range}), [&] {
         Reply r = t_.read(at, n, part);
         if (r.ok() && static_cast<int>(part.size()) != n)
             return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(n) + " asked");
@@ -253,7 +236,7 @@ LinkError Link::read(int first, int count, std::vector<std::uint16_t>& out) {
 LinkError Link::writePiece(int first, std::span<const std::uint16_t> values) {
     const int n = static_cast<int>(values.size());
     const std::string range = std::to_string(first) + ".." + std::to_string(first + n - 1);
-    LinkError e = retry(Said{"writing registers " + range, "запись регистров " + range},
+    LinkError e = retry(say("link.writing", {range}),
                         [&] { return t_.write(first, values); });
     if (worthSplitting(e, lastDamaged_, n)) {
         ++total_.splits;
@@ -281,7 +264,7 @@ LinkError Link::writeRead(int writeFirst, std::span<const std::uint16_t> values,
                           int readCount, std::vector<std::uint16_t>& out) {
     std::vector<std::uint16_t> part;
     const std::string range = std::to_string(readFirst) + ".." + std::to_string(readFirst + readCount - 1);
-    LinkError e = retry(Said{"reading registers " + range, "чтение регистров " + range}, [&] {
+    LinkError e = retry(say("link.reading", {range}), [&] {
         Reply r = t_.writeRead(writeFirst, values, readFirst, readCount, part);
         if (r.ok() && static_cast<int>(part.size()) != readCount)
             return Reply::bad("reply of " + std::to_string(part.size()) + " registers, " + std::to_string(readCount) + " asked");
@@ -306,16 +289,16 @@ LinkError Link::writeRead(int writeFirst, std::span<const std::uint16_t> values,
 }
 
 LinkError Link::echo(std::uint16_t value) {
-    return retry(Said{"echo", "эхо"}, [&] { return t_.echo(value); });
+    return retry(say("link.echo"), [&] { return t_.echo(value); });
 }
 
 LinkError Link::diagnostics(std::uint16_t sub, std::uint16_t data, std::uint16_t& out) {
-    return retry(Said{"diagnostics " + std::to_string(sub), "диагностика " + std::to_string(sub)},
+    return retry(say("link.diagnostics", {std::to_string(sub)}),
                  [&] { return t_.diagnostics(sub, data, out); });
 }
 
 LinkError Link::serverId(ServerId& out) {
-    return retry(Said{"server id", "идентификатор сервера"}, [&] { return t_.serverId(out); });
+    return retry(say("link.server-id"), [&] { return t_.serverId(out); });
 }
 
 LiveState decodeLive(const RegisterMap& map, std::span<const std::uint16_t> regs) {
@@ -372,30 +355,17 @@ LinkError identify(Link& link, LiveState& out) {
 
 Said notReadySaid(const LiveState& live, const Said& what) {
     if (live.mode == 7)
-        return {"the controller is in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»: choose «РАБОТА С ПЭВМ» in "
-                "its menu on the K923 (▲ ▼, ENTER), then " +
-                    what.en + " again; nothing was sent",
-                "контроллер в F7 УПРАВЛЕНИЕ ДАННЫМИ, но не на «РАБОТА С ПЭВМ»: выберите «РАБОТА С ПЭВМ» в его "
-                "меню на K923 (▲ ▼, ENTER) и повторите " +
-                    what.ru + "; ничего не отправлено"};
-    const bool known = live.mode >= 1 && live.mode <= 7;
-    const std::string f = "F" + std::to_string(live.mode);
-    return {"the controller is not in F7 «РАБОТА С ПЭВМ» (" + (known ? "mode " + f + " now" : std::string("powering on")) +
-                "): press F7 (УПРАВЛЕНИЕ ДАННЫМИ) on the K923 and choose «РАБОТА С ПЭВМ», then " + what.en +
-                " again; nothing was sent",
-            "контроллер не в F7 «РАБОТА С ПЭВМ» (" + (known ? "сейчас режим " + f : std::string("идёт включение")) +
-                "): нажмите F7 (УПРАВЛЕНИЕ ДАННЫМИ) на K923, выберите «РАБОТА С ПЭВМ» и повторите " + what.ru +
-                "; ничего не отправлено"};
+        return say("link.not-ready-menu", {what});
+    if (live.mode >= 1 && live.mode <= 7)
+        return say("link.not-ready-mode", {what, std::to_string(live.mode)});
+    return say("link.not-ready-power", {what});
 }
-
-std::string notReadyText(const LiveState& live, const std::string& what) { return notReadySaid(live, {what, what}).en; }
 
 namespace {
 
 // The part a transfer moves, in both languages.
 Said textName(bool messages, int program) {
-    return messages ? Said{"messages", "сообщения"}
-                    : Said{"program " + std::to_string(program), "программа " + std::to_string(program)};
+    return messages ? say("link.part-messages") : say("link.part-program", {std::to_string(program)});
 }
 
 LinkError readTextOnce(Link& link, bool messages, int program, std::string& text) {
@@ -415,15 +385,14 @@ LinkError readTextOnce(Link& link, bool messages, int program, std::string& text
         return e;
     const int status = head[0];
     if (status != static_cast<int>(TransferStatus::Ready))
-        return linkError(LinkError::Kind::Refused, status, textName(messages, program) + ": " + statusSaid(status));
+        return linkError(LinkError::Kind::Refused, status, say("link.join", {textName(messages, program), statusSaid(status)}));
     const auto length = static_cast<std::uint32_t>(joinSigned(head[static_cast<std::size_t>(T.length - T.status)],
                                                               head[static_cast<std::size_t>(T.length + 1 - T.status)]));
     const auto crc = static_cast<std::uint32_t>(joinSigned(head[static_cast<std::size_t>(T.crc - T.status)],
                                                            head[static_cast<std::size_t>(T.crc + 1 - T.status)]));
     if (length > T.capacityBytes)
         return linkError(LinkError::Kind::Verify, 0,
-                         {"the controller announces a text of " + std::to_string(length) + " bytes",
-                          "контроллер объявил текст длиной " + std::to_string(length) + " байт"});
+                         say("link.text-length", {std::to_string(length)}));
     text.clear();
     text.reserve(length);
     std::vector<std::uint16_t> window;
@@ -436,7 +405,7 @@ LinkError readTextOnce(Link& link, bool messages, int program, std::string& text
     }
     if (crc32(text) != crc)
         return linkError(LinkError::Kind::Verify, 19,
-                         {"the text read does not match its CRC-32", "прочитанный текст не совпадает со своей CRC-32"});
+                         say("link.text-crc"));
     return {};
 }
 
@@ -471,9 +440,9 @@ LinkError commitTransfer(Link& link, const Said& what, bool& commitSent, bool& c
     if (LinkError e = link.read(T.status, 2, st))
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Committed)) {
-        Said m = what + ": " + statusSaid(st[0]);
+        Said m = say("link.join", {what, statusSaid(st[0])});
         if (st[0] == static_cast<int>(TransferStatus::TextRefused))
-            m = m + Said{" at line ", " в строке "} + std::to_string(st[1]);
+            m = say("link.refused-at-line", {m, std::to_string(st[1])});
         LinkError e = linkError(LinkError::Kind::Refused, st[0], m);
         e.line = st[0] == static_cast<int>(TransferStatus::TextRefused) ? st[1] : 0;
         return e;
@@ -502,10 +471,10 @@ LinkError sendTransfer(Link& link, const Said& what, TransferCommand command, in
     if (LinkError e = link.read(T.status, 2, st))
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Ready))
-        return linkError(LinkError::Kind::Refused, st[0], what + ": " + statusSaid(st[0]));
+        return linkError(LinkError::Kind::Refused, st[0], say("link.join", {what, statusSaid(st[0])}));
     if (T.window != T.offset + 2)
         return linkError(LinkError::Kind::Exception, 0,
-                         {"the map's window does not follow its offset", "окно карты не следует за своим смещением"});
+                         say("link.window-offset"));
     const std::vector<std::uint16_t> regs = textRegisters(bytes);
     std::vector<std::uint16_t> frame;
     for (std::uint32_t off = 0; off < length; off += static_cast<std::uint32_t>(T.windowBytes)) {
@@ -531,8 +500,7 @@ LinkError writeTextOnce(Link& link, bool messages, int program, const std::strin
         return e;
     if (back != text)
         return linkError(LinkError::Kind::Verify, 0,
-                         what + Said{": the text read back differs from the text sent",
-                                     ": текст, прочитанный обратно, отличается от отправленного"});
+                         say("link.text-differs", {what}));
     return {};
 }
 
@@ -556,14 +524,14 @@ LinkError writeText(Link& link, bool messages, int program, const std::string& t
 LinkError writeBlockOnce(Link& link, BlockKind kind, std::span<const std::uint16_t> whole, bool& commitSent,
                          bool& committed) {
     const RegisterMap& map = link.map();
-    const Said what = kind == BlockKind::C ? Said{"C-parameters", "C-параметры"} : Said{"R-parameters", "R-параметры"};
+    const Said what = say(kind == BlockKind::C ? "link.part-c" : "link.part-r");
     const std::vector<std::uint16_t> sent = stagedRegisters(map, kind, whole);
     if (LinkError e = sendTransfer(link, what, kind == BlockKind::C ? TransferCommand::StageC : TransferCommand::StageR,
                                    0, registerBytes(sent), commitSent, committed)) {
         if (e.kind == LinkError::Kind::Refused && e.code == static_cast<int>(TransferStatus::TextRefused)) {
-            Said m = what + Said{": the controller refused the block", ": контроллер отклонил блок"};
-            if (kind == BlockKind::C && e.line > 0)
-                m = m + Said{" at C", " на C"} + std::to_string(e.line);
+            const Said m = kind == BlockKind::C && e.line > 0
+                               ? say("link.block-refused-at", {what, std::to_string(e.line)})
+                               : say("link.block-refused", {what});
             const int line = e.line;
             e = linkError(e.kind, e.code, m);
             e.line = line;
@@ -577,8 +545,7 @@ LinkError writeBlockOnce(Link& link, BlockKind kind, std::span<const std::uint16
         return e;
     if (stagedRegisters(map, kind, back) != sent)
         return linkError(LinkError::Kind::Verify, 0,
-                         what + Said{": the values read back differ from those sent",
-                                     ": значения, прочитанные обратно, отличаются от отправленных"});
+                         say("link.block-differs", {what}));
     return {};
 }
 
@@ -656,27 +623,20 @@ profile::MachineProfile pulledProfile(const PullResult& p, const std::string& na
 
 // --- push ------------------------------------------------------------------
 
-std::string PushReport::summary(bool ru) const {
-    std::string out;
+Said PushReport::summary() const {
+    Said out;
     for (State st : {State::New, State::InDoubt, State::AsItWas}) {
-        std::string names;
+        Said names;
         for (const Part& p : parts)
             if (p.state == st)
-                names += (names.empty() ? "" : ", ") + (ru && !p.nameRu.empty() ? p.nameRu : p.name);
+                names = names.empty() ? p.said : say("link.list", {names, p.said});
         if (names.empty())
             continue;
-        if (!out.empty())
-            out += "; ";
-        if (ru)
-            out += st == State::New       ? "записано: "
-                   : st == State::InDoubt ? "под вопросом (линия оборвалась во время записи; считайте память, чтобы "
-                                            "узнать): "
-                                          : "как было: ";
-        else
-            out += st == State::New       ? "new: "
-                   : st == State::InDoubt ? "in doubt (the line broke while it was committed; pull to see): "
-                                          : "as they were: ";
-        out += names;
+        const Said part = say(st == State::New       ? "link.push-new"
+                              : st == State::InDoubt ? "link.push-in-doubt"
+                                                     : "link.push-as-it-was",
+                              {names});
+        out = out.empty() ? part : say("link.then", {out, part});
     }
     return out;
 }
@@ -735,7 +695,7 @@ std::vector<int> commitOrder(const std::map<int, std::string>& programs) {
 }
 
 LinkError inputError(int line, const Said& message) {
-    return linkError(LinkError::Kind::Input, line, message + Said{"; nothing was sent", "; ничего не отправлено"});
+    return linkError(LinkError::Kind::Input, line, say("link.nothing-sent", {message}));
 }
 
 } // namespace
@@ -744,14 +704,14 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
     plan = {};
     for (int n = 1; n <= catalog::kCParamCount; ++n)
         if (const std::string e = profile::checkCValue(n, file.c[static_cast<std::size_t>(n)]); !e.empty())
-            return inputError(0, "C" + std::to_string(n) + " (" + std::string(catalog::cParam(n).name) + "): " + e +
-                                     Said{" (table Е.1)", " (таблица Е.1)"});
+            return inputError(0, say("link.c-table", {std::to_string(n), std::string(catalog::cParam(n).name),
+                                                      saidProblem(profile::cValueProblem(n, file.c[static_cast<std::size_t>(n)]))}));
     plan.hasC = true;
     plan.c.assign(file.c.begin(), file.c.end());
     plan.hasR = true;
     for (const auto& [n, v] : file.r) {
         if (v < INT32_MIN || v > INT32_MAX)
-            return inputError(0, "R" + std::to_string(n) + Said{" is outside the 32-bit range", " не помещается в 32 бита"});
+            return inputError(0, say("link.r-outside", {std::to_string(n)}));
         if (n >= 0 && n < 300 && map.rWritable(n))
             plan.r[static_cast<std::size_t>(n)] = static_cast<std::int32_t>(v);
     }
@@ -761,13 +721,10 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
         const program::ParseResult parsed = program::parse(text, po);
         for (const program::Diagnostic& d : parsed.diagnostics)
             if (d.isError())
-                return inputError(d.line, Said{"program " + std::to_string(n) + ", line " + std::to_string(d.line) + ": " +
-                                                   program::diagnosticText(d, false),
-                                               "программа " + std::to_string(n) + ", строка " +
-                                                   std::to_string(d.line) + ": " + program::diagnosticText(d, true)});
+                return inputError(d.line, say("link.program-line",
+                                              {std::to_string(n), std::to_string(d.line), saidDiagnostic(d)}));
         if (parsed.store.size() != 1 || parsed.store.programs()[0].number != n)
-            return inputError(0, Said{"program " + std::to_string(n) + " does not hold exactly that program",
-                                      "программа " + std::to_string(n) + " содержит не ровно одну эту программу"});
+            return inputError(0, say("link.program-not-one", {std::to_string(n)}));
         plan.programs[n] = canonicalProgram(parsed.store.programs()[0]);
     }
     {
@@ -775,10 +732,7 @@ LinkError planMachineFile(const RegisterMap& map, const profile::MachineProfile&
         const engine::FileCheck check = engine::checkFileForMachine(profile::programsFileText(file), {}, file, none);
         for (const program::Diagnostic& d : check.diagnostics)
             if (d.isError())
-                return inputError(d.line, Said{"program " + std::to_string(d.program) + ": " +
-                                                   program::diagnosticText(d, false),
-                                               "программа " + std::to_string(d.program) + ": " +
-                                                   program::diagnosticText(d, true)});
+                return inputError(d.line, say("link.program-says", {std::to_string(d.program), saidDiagnostic(d)}));
     }
     if (!file.messages.empty()) {
         program::MessageTable m;
@@ -795,14 +749,12 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
     const program::ParseResult parsed = program::parse(text);
     for (const program::Diagnostic& d : parsed.diagnostics)
         if (d.isError())
-            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " + Said{program::diagnosticText(d, false), program::diagnosticText(d, true)});
+            return inputError(d.line, say("link.file-line", {source, std::to_string(d.line), saidDiagnostic(d)}));
     if (parsed.store.empty() && !parsed.store.messages.present)
-        return inputError(0, source + Said{" holds no program (%L) and no %MESSAGES",
-                                           " не содержит ни программы (%L), ни %MESSAGES"});
+        return inputError(0, say("link.file-empty", {source}));
     for (const program::Program& p : parsed.store.programs()) {
         if (p.headerLine == 0)
-            return inputError(1, source + Said{": the text before the first %L header belongs to no program",
-                                               ": текст до первого заголовка %L не относится ни к одной программе"});
+            return inputError(1, say("link.file-before-header", {source}));
         plan.programs[p.number] = canonicalProgram(p);
     }
     if (parsed.store.messages.present) {
@@ -856,9 +808,7 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
     const engine::FileCheck check = engine::checkFileForMachine(text, {}, machine, store);
     for (const program::Diagnostic& d : check.diagnostics)
         if (d.isError())
-            return inputError(d.line, source + ":" + std::to_string(d.line) + ": " +
-                                          Said{program::diagnosticText(d, false) + " (checked against the controller's constants and programs)",
-                                               program::diagnosticText(d, true) + " (проверено по константам и программам контроллера)"});
+            return inputError(d.line, say("link.file-controller", {source, std::to_string(d.line), saidDiagnostic(d)}));
     return {};
 }
 
@@ -870,22 +820,23 @@ LinkError push(Link& link, const PushPlan& plan, PushReport& report, const Progr
     };
     report = {};
     if (plan.hasC)
-        report.parts.push_back({"C-parameters", PushReport::State::AsItWas, "C-параметры"});
+        report.parts.push_back({"C-parameters", PushReport::State::AsItWas, say("link.part-c")});
     if (plan.hasR)
         report.parts.push_back({"R-parameters (" + map.rWritableText() + ")", PushReport::State::AsItWas,
-                                "R-параметры (" + map.rWritableText() + ")"});
+                                say("link.part-r-range", {map.rWritableText()})});
     if (plan.hasMessages)
-        report.parts.push_back({"messages", PushReport::State::AsItWas, "сообщения"});
+        report.parts.push_back({"messages", PushReport::State::AsItWas, say("link.part-messages")});
     const std::vector<int> order = commitOrder(plan.programs);
     for (int n : order)
-        report.parts.push_back({"program " + std::to_string(n), PushReport::State::AsItWas, "программа " + std::to_string(n)});
+        report.parts.push_back({"program " + std::to_string(n), PushReport::State::AsItWas,
+                                say("link.part-program", {std::to_string(n)})});
 
     // Only in F7 «РАБОТА С ПЭВМ».
     LiveState live;
     if (LinkError e = identify(link, live))
         return e;
     if (!live.pcReady)
-        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, {"push", "передачу"}));
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, say("link.action-push")));
 
     std::size_t part = 0;
     // Where the part under way ended, then the error as it came.
@@ -943,7 +894,7 @@ LinkError push(Link& link, const profile::MachineProfile& file, PushReport& repo
 
 LinkError clearArea(Link& link, BlockKind kind) {
     const RegisterMap& map = link.map();
-    const Said what = kind == BlockKind::C ? Said{"clear C", "очистку C"} : Said{"clear R", "очистку R"};
+    const Said what = say(kind == BlockKind::C ? "link.action-clear-c" : "link.action-clear-r");
     LiveState live;
     if (LinkError e = identify(link, live))
         return e;
@@ -958,8 +909,7 @@ LinkError clearArea(Link& link, BlockKind kind) {
         return e;
     if (st[0] != static_cast<int>(TransferStatus::Committed))
         return linkError(LinkError::Kind::Refused, st[0],
-                         (kind == BlockKind::C ? Said{"clear C", "очистка C"} : Said{"clear R", "очистка R"}) + ": " +
-                             statusSaid(st[0]));
+                         say("link.join", {say(kind == BlockKind::C ? "link.clear-c" : "link.clear-r"), statusSaid(st[0])}));
     if (kind == BlockKind::C) { // every constant 0 now
         const Block& cb = map.block(BlockKind::C);
         std::vector<std::uint16_t> back;
@@ -967,7 +917,7 @@ LinkError clearArea(Link& link, BlockKind kind) {
             return e;
         if (std::any_of(back.begin(), back.end(), [](std::uint16_t v) { return v != 0; }))
             return linkError(LinkError::Kind::Verify, 0,
-                             {"clear C: the C block does not read back as zeros", "очистка C: блок C не читается нулями"});
+                             say("link.clear-c-not-zero"));
     }
     return {};
 }
@@ -978,13 +928,12 @@ LinkError setConstant(Link& link, int number, std::int64_t value) {
     const auto place = std::find_if(map.c.begin(), map.c.end(), [&](const CPlacement& p) { return p.number == number; });
     if (place == map.c.end())
         return linkError(LinkError::Kind::Input, 0,
-                         what + Said{" has no address in the positioner (table Е.1): it cannot be written",
-                                     " не имеет адреса в позиционере (таблица Е.1): её нельзя записать"});
+                         say("link.c-no-address", {std::to_string(number)}));
     LiveState live;
     if (LinkError e = readLive(link, live))
         return e;
     if (!live.pcReady)
-        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, Said{"set ", "запись "} + what));
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, say("link.action-set", {what})));
     // The registers the constant lies in, from the block as it is now (a
     // bit or a byte shares its word with others).
     const Block& cb = map.block(BlockKind::C);
@@ -1000,17 +949,14 @@ LinkError setConstant(Link& link, int number, std::int64_t value) {
     if (LinkError e = link.write(place->word, words))
         return e.kind == LinkError::Kind::Exception && e.code == 3
                    ? linkError(LinkError::Kind::Exception, 3,
-                               what + " = " + std::to_string(value) +
-                                   Said{": the controller refused the value (outside table Е.1)",
-                                        ": контроллер отклонил значение (вне таблицы Е.1)"})
+                               say("link.c-value-refused", {std::to_string(number), std::to_string(value)}))
                    : e;
     std::vector<std::uint16_t> back;
     if (LinkError e = link.read(place->word, count, back))
         return e;
     if (!std::equal(back.begin(), back.end(), words.begin()))
         return linkError(LinkError::Kind::Verify, 0,
-                         what + Said{": the controller does not read back what was written",
-                                     ": контроллер при чтении не возвращает то, что записано"});
+                         say("link.read-back-differs", {what}));
     return {};
 }
 
@@ -1019,16 +965,15 @@ LinkError setRParameter(Link& link, int number, std::int64_t value) {
     const std::string what = "R" + std::to_string(number);
     if (number < 0 || number >= map.rCount || !map.rWritable(number))
         return linkError(LinkError::Kind::Input, 2,
-                         what + Said{" is read only over the link (the PC writes " + map.rWritableText() + ")",
-                                     " по линии только читается (ПЭВМ записывает " + map.rWritableText() + ")"});
+                         say("link.r-read-only", {std::to_string(number), map.rWritableText()}));
     if (value < INT32_MIN || value > INT32_MAX)
         return linkError(LinkError::Kind::Input, 3,
-                         what + " = " + std::to_string(value) + Said{" is outside 32 bits", " не помещается в 32 бита"});
+                         say("link.r-32-bits", {std::to_string(number), std::to_string(value)}));
     LiveState live;
     if (LinkError e = readLive(link, live))
         return e;
     if (!live.pcReady)
-        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, Said{"set ", "запись "} + what));
+        return linkError(LinkError::Kind::NotReady, 6, notReadySaid(live, say("link.action-set", {what})));
     const std::uint16_t words[] = {lowWord(value), highWord(value)};
     if (LinkError e = link.write(map.rRegister(number), words))
         return e;
@@ -1037,8 +982,7 @@ LinkError setRParameter(Link& link, int number, std::int64_t value) {
         return e;
     if (back[0] != words[0] || back[1] != words[1])
         return linkError(LinkError::Kind::Verify, 0,
-                         what + Said{": the controller does not read back what was written",
-                                     ": контроллер при чтении не возвращает то, что записано"});
+                         say("link.read-back-differs", {what}));
     return {};
 }
 

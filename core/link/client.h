@@ -8,6 +8,7 @@
 // the line's counters per station.
 #pragma once
 
+#include "link/link_texts.h"
 #include "link/register_map.h"
 #include "link/transport.h"
 #include "profile/profile.h"
@@ -55,28 +56,10 @@ struct LineStats {
 };
 
 // "12 answers, 0 timeouts, 1 CRC error, 0 bad replies, exceptions 06×2, 1 retry; round trip median 4.1 ms, p95 5.0 ms"
-std::string describe(const LineStats& s);
+std::string describe(const LineStats& s, bool ru = false);
 
-// A text in both languages of the user interface (as program::Diagnostic's
-// messageEn/messageRu): the command line says the English, the desktop the
-// one of its window.
-struct Said {
-    std::string en, ru;
-};
-inline Said operator+(Said a, const Said& b) {
-    a.en += b.en;
-    a.ru += b.ru;
-    return a;
-}
-// Words of no language (numbers, names, codes) join both.
-inline Said operator+(Said a, const std::string& both) {
-    a.en += both;
-    a.ru += both;
-    return a;
-}
-inline Said operator+(const std::string& both, const Said& a) { return Said{both + a.en, both + a.ru}; }
-
-// What went wrong, for the user.
+// What went wrong, for the user: an id of link_texts.h with its arguments,
+// said by the command line in its --lang and by the desktop in its window's.
 struct LinkError {
     enum class Kind {
         None,
@@ -89,24 +72,17 @@ struct LinkError {
     };
     Kind kind = Kind::None;
     int code = 0; // exception code or transfer status
-    std::string message;        // English
-    std::string messageRu = {}; // Russian ("": only the English was said)
-    int line = 0;               // a text the controller refused: its line (a C block's: the constant)
+    Said said;
+    int line = 0; // a text the controller refused: its line (a C block's: the constant)
     explicit operator bool() const { return kind != Kind::None; }
-    // The message in the desktop's language.
-    const std::string& text(bool ru) const { return ru && !messageRu.empty() ? messageRu : message; }
-    void append(const Said& more) {
-        messageRu = (messageRu.empty() ? message : messageRu) + more.ru;
-        message += more.en;
-    }
+    // The message in a language (the command line's --lang).
+    std::string text(bool ru) const { return render(said, ru); }
+    // "<this>; <more>"
+    void append(const Said& more) { said = say("link.then", {said, more}); }
 };
-inline LinkError linkError(LinkError::Kind kind, int code, Said said) {
-    return {kind, code, std::move(said.en), std::move(said.ru)};
-}
+inline LinkError linkError(LinkError::Kind kind, int code, Said said) { return {kind, code, std::move(said)}; }
 
-// The text of a Modbus exception of the map: 02 «адрес вне карты» ...
-std::string exceptionText(int code);
-std::string statusText(int status);
+// A Modbus exception of the map: 02 «адрес вне карты» ...; a transfer status.
 Said exceptionSaid(int code);
 Said statusSaid(int status);
 
@@ -166,7 +142,6 @@ LinkError identify(Link& link, LiveState& out);
 // Why the controller does not take a memory write, naming the K923 screen
 // that allows it: «not in F7 … (mode F2 now)», or in F7 УПРАВЛЕНИЕ ДАННЫМИ
 // but not on «РАБОТА С ПЭВМ». `what` is the action ("push", "clear C").
-std::string notReadyText(const LiveState& live, const std::string& what);
 Said notReadySaid(const LiveState& live, const Said& what);
 
 // One text through the transfer registers.
@@ -222,15 +197,15 @@ LinkError planProgramFile(Link& link, std::string_view text, const std::string& 
 struct PushReport {
     enum class State { AsItWas, New, InDoubt };
     struct Part {
-        std::string name; // "C-parameters", "R-parameters (R0..R157, …)", "messages", "program 5"
+        std::string name; // "C-parameters", "R-parameters (R0..R157, …)", "messages", "program 5" (the record's)
         State state = State::AsItWas;
-        std::string nameRu = {}; // «C-параметры», «программа 5»
+        Said said = {};   // the name for the user
     };
     std::vector<Part> parts; // in the order they are sent
     bool constants = false, rParameters = false, messages = false;
     std::vector<int> programs; // committed and verified
     // "new: C-parameters, program 5; as they were: program 7"
-    std::string summary(bool ru = false) const;
+    Said summary() const;
     bool anyNew() const;
 };
 

@@ -1,5 +1,7 @@
 #include "link/modbus.h"
 
+#include "link/line_error.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -457,7 +459,7 @@ Reply RtuMaster::exchange(const Bytes& request, Bytes& response) {
     const Bytes frame = modbus::rtuFrame(station_, request);
     const Clock::time_point start = Clock::now();
     if (!port_.write(frame, error)) {
-        log(true, frame, Frame::Check::Ok, "not sent: " + error);
+        log(true, frame, Frame::Check::Ok, "not sent: " + lineErrorPlain(error));
         return Reply::lost("the port failed: " + error);
     }
     log(true, frame, Frame::Check::Ok);
@@ -526,7 +528,7 @@ Reply RtuMaster::exchange(const Bytes& request, Bytes& response) {
         const std::size_t before = got.size();
         if (!port_.read(got, wait, error)) {
             if (!got.empty())
-                log(false, got, Frame::Check::Short, "the port failed: " + error);
+                log(false, got, Frame::Check::Short, "the port failed: " + lineErrorPlain(error));
             return Reply::lost("the port failed: " + error);
         }
         if (got.size() > before)

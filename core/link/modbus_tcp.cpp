@@ -1,5 +1,7 @@
 #include "link/modbus_tcp.h"
 
+#include "link/line_error.h"
+
 #include <algorithm>
 #include <string>
 
@@ -62,7 +64,7 @@ Reply TcpMaster::exchange(const Bytes& request, Bytes& response) {
     const Bytes frame = modbus::mbapFrame(tid, station_, request);
     const Clock::time_point start = Clock::now();
     if (!port_.write(frame, error)) {
-        log(true, frame, Frame::Check::Mbap, "not sent: " + error);
+        log(true, frame, Frame::Check::Mbap, "not sent: " + lineErrorPlain(error));
         pending_.clear();
         return Reply::lost("the connection failed: " + error);
     }
@@ -123,7 +125,7 @@ Reply TcpMaster::exchange(const Bytes& request, Bytes& response) {
             break;
         if (!port_.read(pending_, wait, error)) {
             if (!pending_.empty())
-                log(false, pending_, Frame::Check::Short, "the connection failed: " + error);
+                log(false, pending_, Frame::Check::Short, "the connection failed: " + lineErrorPlain(error));
             pending_.clear();
             return Reply::lost("the connection failed: " + error);
         }

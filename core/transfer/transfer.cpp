@@ -98,7 +98,7 @@ db::TransferEntry pushEntry(const Context& where, const link::RegisterMap& map,
         }
     }
     e.result = !error ? "ok" : report.anyNew() ? "partial" : "failed";
-    e.detail = !error ? "written and verified" : error.message + (report.parts.empty() ? "" : "; " + report.summary());
+    e.detail = !error ? "written and verified" : error.text(false) + (report.parts.empty() ? "" : "; " + link::render(report.summary(), false));
     return e;
 }
 
@@ -107,7 +107,7 @@ db::TransferEntry pullEntry(const Context& where, const link::RegisterMap& map,
     db::TransferEntry e = entry(where, "pull");
     if (error) {
         e.result = "failed";
-        e.detail = error.message;
+        e.detail = error.text(false);
         return e;
     }
     e.items.push_back({"c", 0, blockCrc(map, link::BlockKind::C, link::packC(map, pulled.c)),
@@ -173,7 +173,7 @@ link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,
                 p.programs[r.number] = *text;
     link::PushPlan plan;
     if (const link::LinkError e = link::planMachineFile(map, p, plan))
-        throw std::runtime_error("machine " + machine + ": " + e.message);
+        throw std::runtime_error("machine " + machine + ": " + e.text(false));
     if (revision)
         *revision = rev;
     return plan;

@@ -1,5 +1,6 @@
 #include "modbus_rtu_plugin.h"
 
+#include "line_errors.h"
 #include "map_server.h"
 
 #include <QModbusRtuSerialServer>
@@ -24,7 +25,7 @@ public:
     bool open(QString& error) {
         p_.setPortName(s_.port);
         if (!p_.open(QIODevice::ReadWrite)) {
-            error = p_.errorString();
+            error = serialErrorText(p_);
             return false;
         }
         const bool ok = p_.setBaudRate(s_.baud) && p_.setDataBits(QSerialPort::Data8) &&
@@ -32,7 +33,7 @@ public:
                         p_.setStopBits(s_.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop) &&
                         p_.setFlowControl(QSerialPort::NoFlowControl);
         if (!ok) {
-            error = p_.errorString();
+            error = serialErrorText(p_);
             p_.close();
             return false;
         }
@@ -67,7 +68,7 @@ public:
 
 private:
     bool fail(std::string& error) {
-        error = p_.errorString().toStdString();
+        error = serialErrorText(p_).toStdString();
         p_.close(); // the next exchange opens it again
         return false;
     }

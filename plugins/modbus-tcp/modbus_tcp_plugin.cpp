@@ -1,5 +1,6 @@
 #include "modbus_tcp_plugin.h"
 
+#include "line_errors.h"
 #include "map_server.h"
 #include "link/modbus_tcp.h"
 
@@ -37,9 +38,7 @@ public:
         s_.abort();
         s_.connectToHost(host_, port_);
         if (!s_.waitForConnected(connectMs_)) {
-            error = s_.error() == QAbstractSocket::SocketTimeoutError
-                        ? QStringLiteral("no connection within %1 ms").arg(connectMs_)
-                        : s_.errorString();
+            error = socketErrorText(s_, connectMs_);
             s_.abort();
             return false;
         }
@@ -74,8 +73,7 @@ public:
 
 private:
     bool fail(std::string& error) {
-        error = s_.error() == QAbstractSocket::RemoteHostClosedError ? "the other end closed the connection"
-                                                                      : s_.errorString().toStdString();
+        error = socketErrorText(s_).toStdString();
         s_.abort(); // the next exchange connects again
         return false;
     }
@@ -106,9 +104,7 @@ public:
     MapServer<QModbusTcpServer, true> s;
 };
 
-QString badAddress(const QString& a) {
-    return QStringLiteral("'%1' is not HOST:PORT (a port 1..65535)").arg(a);
-}
+QString badAddress(const QString& a) { return lineErrorText("line.bad-address", {a.toStdString()}); }
 
 } // namespace
 

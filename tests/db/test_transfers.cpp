@@ -33,7 +33,7 @@ class TestTransfers : public QObject {
     QString db_;
 
     CliResult link(QStringList args) {
-        args = QStringList{"link", "--port", line_.b()} + args;
+        args = QStringList{"link", "--lang", "en", "--port", line_.b()} + args;
         return runK528(args);
     }
     CliResult db(QStringList args) {

@@ -320,11 +320,11 @@ private slots:
         PushReport rep;
         LinkError e = push(lb, file, rep);
         QCOMPARE(e.kind, LinkError::Kind::NotReady); // F2: nothing sent
-        QVERIFY(e.message.find("РАБОТА С ПЭВМ") != std::string::npos);
+        QVERIFY(e.text(false).find("РАБОТА С ПЭВМ") != std::string::npos);
         QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
         b.f7();
         e = push(lb, file, rep);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         QVERIFY(rep.constants && rep.rParameters);
         QCOMPARE(rep.programs.size(), file.programs.size());
         for (int n = 1; n <= 152; ++n)
@@ -344,7 +344,7 @@ private slots:
         PushReport rep;
         const LinkError e = push(link, file, rep);
         QCOMPARE(e.kind, LinkError::Kind::Input);
-        QVERIFY2(e.message.find("C17") != std::string::npos, e.message.c_str());
+        QVERIFY2(e.text(false).find("C17") != std::string::npos, e.text(false).c_str());
         QCOMPARE(t.transactions(), std::int64_t{0});
     }
 
@@ -360,7 +360,7 @@ private slots:
         const LinkError e = writeText(link, false, n, bad);
         QCOMPARE(e.kind, LinkError::Kind::Refused);
         QCOMPARE(e.code, 18);
-        QVERIFY2(e.message.find("line 3") != std::string::npos, e.message.c_str());
+        QVERIFY2(e.text(false).find("line 3") != std::string::npos, e.text(false).c_str());
         QCOMPARE(b.programText(n), before);
         // A text for another number than the command's: refused too.
         const LinkError e2 = writeText(link, false, n, "%L98\nN1 G1 X1 FX100\n");
@@ -400,7 +400,7 @@ private slots:
                 ++committed;
                 QCOMPARE(b.programText(n), text);
             } else {
-                QVERIFY2(!b.ctl->programs().contains(n) || b.programText(n) == text, e.message.c_str());
+                QVERIFY2(!b.ctl->programs().contains(n) || b.programText(n) == text, e.text(false).c_str());
             }
             QVERIFY(link.stats().noAnswer > 0 || link.stats().badReplies > 0);
         }
@@ -557,7 +557,7 @@ private slots:
         const std::int32_t nesting = b.ctl->r(158), before222 = b.ctl->r(222);
         PushReport rep;
         const LinkError e = push(link, file, rep);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         for (int n = 0; n <= 231; ++n) {
             if (n == 158 || n == 222 || n == 223)
                 continue;
@@ -566,7 +566,7 @@ private slots:
         QCOMPARE(b.ctl->r(158), nesting);
         QCOMPARE(b.ctl->r(222), before222);
         QCOMPARE(rep.parts[1].name, std::string("R-parameters (R0..R157, R159..R221, R224..R231)"));
-        QVERIFY(rep.summary().rfind("new: C-parameters, R-parameters", 0) == 0);
+        QVERIFY(render(rep.summary(), false).rfind("new: C-parameters, R-parameters", 0) == 0);
         // And the pull gives them back as the file's presets.
         PullResult pulled;
         QVERIFY(!pull(link, pulled));
@@ -581,7 +581,11 @@ private slots:
         Link link(t);
         LinkError e = clearArea(link, BlockKind::C);
         QCOMPARE(e.kind, LinkError::Kind::NotReady);
-        QVERIFY2(e.message.find("not in F7 «РАБОТА С ПЭВМ» (mode F") != std::string::npos, e.message.c_str());
+        QVERIFY2(e.text(false).find("not in F7 «РАБОТА С ПЭВМ» (mode F") != std::string::npos, e.text(false).c_str());
+        // The same id in Russian: wholly Russian, the action named.
+        QVERIFY2(e.text(true).rfind("контроллер не в F7 «РАБОТА С ПЭВМ» (сейчас режим F", 0) == 0, e.text(true).c_str());
+        QVERIFY2(e.text(true).find("повторите очистку C; ничего не отправлено") != std::string::npos, e.text(true).c_str());
+        QCOMPARE(e.said.id, std::string("link.not-ready-mode"));
         QCOMPARE(b.ctl->c()[26], b.prof.c[26]);
         // In F7 but the K923 not on «РАБОТА С ПЭВМ»: refused, naming that screen.
         b.f7();
@@ -589,8 +593,8 @@ private slots:
         b.image->setPcReady([&] { return onScreen; });
         e = clearArea(link, BlockKind::R);
         QCOMPARE(e.kind, LinkError::Kind::NotReady);
-        QVERIFY2(e.message.find("in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»") != std::string::npos,
-                 e.message.c_str());
+        QVERIFY2(e.text(false).find("in F7 УПРАВЛЕНИЕ ДАННЫМИ but not on «РАБОТА С ПЭВМ»") != std::string::npos,
+                 e.text(false).c_str());
         // The command itself outside the screen: exception 06 and status 16.
         const std::uint16_t clearC[] = {8};
         QVERIFY(b.image->write(7000, clearC) == Exception::NotReady);
@@ -598,10 +602,10 @@ private slots:
         onScreen = true;
         QVERIFY(b.ctl->setR(7, 77).ok());
         e = clearArea(link, BlockKind::R);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         QCOMPARE(b.ctl->r(7), 0);
         e = clearArea(link, BlockKind::C);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         for (int n = 1; n <= 152; ++n)
             QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], std::int64_t{0});
     }
@@ -621,30 +625,30 @@ private slots:
         QCOMPARE(e.kind, LinkError::Kind::NotReady);
         e = setRParameter(link, 5, 12);
         QCOMPARE(e.kind, LinkError::Kind::NotReady);
-        QVERIFY2(e.message.find("not in F7") != std::string::npos, e.message.c_str());
+        QVERIFY2(e.text(false).find("not in F7") != std::string::npos, e.text(false).c_str());
         b.f7();
         const std::vector<std::int64_t> before(b.ctl->c().begin(), b.ctl->c().end());
         const std::int64_t flipped = 1 - before[static_cast<std::size_t>(bit->number)];
         e = setConstant(link, bit->number, flipped);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         for (int n = 1; n <= 152; ++n) // only that one changed, its word's neighbours as they were
             QCOMPARE(b.ctl->c()[static_cast<std::size_t>(n)], n == bit->number ? flipped : before[static_cast<std::size_t>(n)]);
         const catalog::CParamDef& d = catalog::cParam(two->number);
         const std::int64_t v = std::min<std::int64_t>(d.max, 70000);
         e = setConstant(link, two->number, v);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         QCOMPARE(b.ctl->c()[static_cast<std::size_t>(two->number)], v);
         e = setConstant(link, two->number, d.max + 1);
         QCOMPARE(e.kind, LinkError::Kind::Exception);
         QCOMPARE(e.code, 3);
         QCOMPARE(b.ctl->c()[static_cast<std::size_t>(two->number)], v);
         e = setRParameter(link, 231, -123456);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         QCOMPARE(b.ctl->r(231), -123456);
         for (int n : {158, 222, 232, 299}) {
             e = setRParameter(link, n, 1);
             QCOMPARE(e.kind, LinkError::Kind::Input);
-            QVERIFY2(e.message.find("read only") != std::string::npos, e.message.c_str());
+            QVERIFY2(e.text(false).find("read only") != std::string::npos, e.text(false).c_str());
         }
         QCOMPARE(setRParameter(link, 7, std::int64_t{1} << 40).kind, LinkError::Kind::Input);
     }
@@ -689,10 +693,10 @@ private slots:
                 const bool isNew = now[i < 2 ? i : (rep.parts[i].name == "program 60" ? 3 : 2)];
                 switch (rep.parts[i].state) {
                 case PushReport::State::New:
-                    QVERIFY2(isNew, (rep.parts[i].name + " said new: " + rep.summary()).c_str());
+                    QVERIFY2(isNew, (rep.parts[i].name + " said new: " + render(rep.summary(), false)).c_str());
                     break;
                 case PushReport::State::AsItWas:
-                    QVERIFY2(!isNew, (rep.parts[i].name + " said as it was: " + rep.summary()).c_str());
+                    QVERIFY2(!isNew, (rep.parts[i].name + " said as it was: " + render(rep.summary(), false)).c_str());
                     break;
                 case PushReport::State::InDoubt:
                     ++inDoubt;
@@ -719,11 +723,11 @@ private slots:
                                  "\n%L51\nN1 G1 X5 FX100\nN2 M17\n%MESSAGES\n#1=ПРОВЕРКА\n";
         PushPlan plan;
         LinkError e = planProgramFile(link, text, "p.k528", plan);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         QVERIFY(!plan.hasC && !plan.hasR && plan.hasMessages);
         PushReport rep;
         e = push(link, plan, rep);
-        QVERIFY2(!e, e.message.c_str());
+        QVERIFY2(!e, e.text(false).c_str());
         QCOMPARE(rep.parts[1].name, std::string("program 51")); // the called one first
         QVERIFY(b.ctl->programs().contains(50) && b.ctl->programs().contains(51));
         QCOMPARE(*b.ctl->programs().messages.text(1), std::string("ПРОВЕРКА"));
@@ -731,8 +735,8 @@ private slots:
         const int commits = b.image->commits();
         e = planProgramFile(link, "%L52\nN1 L77\n", "bad.k528", plan);
         QCOMPARE(e.kind, LinkError::Kind::Input);
-        QVERIFY2(e.message.find("bad.k528:2:") != std::string::npos && e.message.find("nothing was sent") != std::string::npos,
-                 e.message.c_str());
+        QVERIFY2(e.text(false).find("bad.k528:2:") != std::string::npos && e.text(false).find("nothing was sent") != std::string::npos,
+                 e.text(false).c_str());
         QCOMPARE(b.image->commits(), commits);
         e = planProgramFile(link, "N1 G1 X1\n", "none.k528", plan);
         QCOMPARE(e.kind, LinkError::Kind::Input);

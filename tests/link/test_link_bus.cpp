@@ -84,7 +84,7 @@ class TestLinkBus : public QObject {
     CliResult link(QStringList args, int timeoutMs = 60000) {
         args.prepend(client_);
         args.prepend("--port");
-        args.prepend("link");
+        args = QStringList{"link", "--lang", "en"} + args;
         return runProgram(kCli, args, timeoutMs);
     }
 
@@ -154,7 +154,7 @@ private slots:
         QProcess* s = serve(s1_, {"--address", "1"});
         QVERIFY(s);
         QProcess watch;
-        watch.start(kCli, {"link", "--port", client_, "--timeout-ms", "50", "watch", "--seconds", "9"});
+        watch.start(kCli, {"link", "--lang", "en", "--port", client_, "--timeout-ms", "50", "watch", "--seconds", "9"});
         QVERIFY(watch.waitForStarted());
         QByteArray out;
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).contains("mode F2"), 5000);
@@ -177,7 +177,7 @@ private slots:
         // The port itself disappears (a USB adapter pulled: here the bus and its ptys end) and comes back.
         QVERIFY(serve(s1_, {"--address", "1"}));
         QProcess watch;
-        watch.start(kCli, {"link", "--port", client_, "--timeout-ms", "50", "watch", "--json", "--seconds", "10"});
+        watch.start(kCli, {"link", "--lang", "en", "--port", client_, "--timeout-ms", "50", "watch", "--json", "--seconds", "10"});
         QVERIFY(watch.waitForStarted());
         QByteArray out;
         QTRY_VERIFY_WITH_TIMEOUT((out += watch.readAllStandardOutput()).contains("\"online\":true"), 5000);

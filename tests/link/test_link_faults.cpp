@@ -103,7 +103,7 @@ class TestLinkFaults : public QObject {
         startProxy("0", "0", "0", "0", "1");
         const QString file = dir_.filePath("now.k528m");
         QFile::remove(file);
-        const Run r = run({"link", "--port", c_, "pull", "--out", file});
+        const Run r = run({"link", "--lang", "en", "--port", c_, "pull", "--out", file});
         stopProxy();
         removeLocks();
         if (r.exitCode != 0) {
@@ -150,7 +150,7 @@ private slots:
         // well above what a busy machine adds to a round trip, so only the faults cause retries.
         startProxy("0.0005", "0.0005", "0.02", "600", "528");
         const QString frames = dir_.filePath("frames.txt");
-        const Run r = run({"link", "--port", c_, "--timeout-ms", "300", "--frames", frames, "push", path});
+        const Run r = run({"link", "--lang", "en", "--port", c_, "--timeout-ms", "300", "--frames", frames, "push", path});
         const QString proxySaid = stopProxy();
         removeLocks();
         qInfo("push over the faulty line: exit %d; %s; %s", r.exitCode,
@@ -193,7 +193,7 @@ private slots:
         }
         // 5 % of the bytes corrupted: most frames are damaged, the push gives up.
         startProxy("0.01", "0.05", "0.05", "150", "9");
-        const Run r = run({"link", "--port", c_, "--timeout-ms", "60", "push", path});
+        const Run r = run({"link", "--lang", "en", "--port", c_, "--timeout-ms", "60", "push", path});
         stopProxy();
         removeLocks();
         qInfo("push over a very bad line: exit %d: %s", r.exitCode, qPrintable(r.err.section('\n', -3).simplified()));
@@ -208,7 +208,7 @@ private slots:
         }
         // And run again on a good line, the push completes.
         startProxy("0", "0", "0", "0", "2");
-        const Run again = run({"link", "--port", c_, "push", path});
+        const Run again = run({"link", "--lang", "en", "--port", c_, "push", path});
         stopProxy();
         removeLocks();
         QVERIFY2(again.exitCode == 0, qPrintable(again.err));
@@ -246,7 +246,7 @@ private slots:
                 f.write(file.toUtf8());
             }
             startProxy("0.002", "0.002", "0.03", "200", QString::number(700 + round));
-            const Run r = run({"link", "--port", c_, "--timeout-ms", "60", "push", path});
+            const Run r = run({"link", "--lang", "en", "--port", c_, "--timeout-ms", "60", "push", path});
             stopProxy();
             removeLocks();
             const QString now = pullClean();
@@ -298,7 +298,7 @@ private slots:
         const QString base = pullClean();
         QVERIFY(base.contains("\nR"));
         startProxy("0.003", "0.003", "0.03", "200", "91");
-        const Run r = run({"link", "--port", c_, "--timeout-ms", "60", "clear", "r"});
+        const Run r = run({"link", "--lang", "en", "--port", c_, "--timeout-ms", "60", "clear", "r"});
         stopProxy();
         removeLocks();
         const QString now = pullClean();

@@ -43,7 +43,7 @@ class TestLinkLine : public QObject {
     Run link(QStringList args) {
         args.prepend(line_.b());
         args.prepend("--port");
-        args.prepend("link");
+        args = QStringList{"link", "--lang", "en"} + args;
         return run(kCli, args);
     }
     static QString readAll(const QString& path) {
@@ -151,7 +151,7 @@ private slots:
 
     void noAnswerIsExit2() {
         stopServe();
-        Run r = run(kCli, {"link", "--port", line_.b(), "--timeout-ms", "50", "ping"});
+        Run r = run(kCli, {"link", "--lang", "en", "--port", line_.b(), "--timeout-ms", "50", "ping"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("does not answer"), qPrintable(r.err));
     }
@@ -179,7 +179,7 @@ private slots:
         int killedMidway = 0;
         for (int delayMs : {20, 40, 80, 120, 160}) {
             QProcess push;
-            push.start(kCli, {"link", "--port", line_.b(), "push", bigFile});
+            push.start(kCli, {"link", "--lang", "en", "--port", line_.b(), "push", bigFile});
             QVERIFY(push.waitForStarted());
             QTest::qWait(delayMs);
             if (push.state() == QProcess::Running) {
@@ -254,7 +254,7 @@ private slots:
         for (const QStringList& c : commands) {
             QProcess p;
             p.setStandardOutputFile("/dev/full");
-            p.start(kCli, QStringList{"link", "--port", line_.b()} + c);
+            p.start(kCli, QStringList{"link", "--lang", "en", "--port", line_.b()} + c);
             QVERIFY(p.waitForFinished(60000));
             const QString err = QString::fromUtf8(p.readAllStandardError());
             QVERIFY2(p.exitCode() == 2, qPrintable(c.join(' ') + ": " + err));
@@ -262,7 +262,7 @@ private slots:
         }
         QProcess list;
         list.setStandardOutputFile("/dev/full");
-        list.start(kCli, {"link", "--list"});
+        list.start(kCli, {"link", "--lang", "en", "--list"});
         QVERIFY(list.waitForFinished(30000));
         QCOMPARE(list.exitCode(), 2);
         Run r = link({"push", "/nonexistent"});

@@ -210,6 +210,9 @@ private slots:
         const LinkError e = readLive(link, s);
         QCOMPARE(e.kind, LinkError::Kind::NoAnswer);
         QCOMPARE(link.stats().noAnswer, std::int64_t{4});
+        // Said in either language from the same id: the transport's "timeout" too.
+        QCOMPARE(e.text(false), std::string("reading registers 6000..6031: the controller does not answer (4 attempts, last: timeout)"));
+        QCOMPARE(e.text(true), std::string("чтение регистров 6000..6031: контроллер не отвечает (попыток: 4, последняя: время ожидания истекло)"));
         QVERIFY(formatFrameLog(master.frameLog()).find("no answer within 10 ms") != std::string::npos);
 
         // A late answer meets the next request: dropped as unexpected, the real one read.

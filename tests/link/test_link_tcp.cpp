@@ -42,7 +42,7 @@ class TestLinkTcp : public QObject {
     std::unique_ptr<Serve> a_, b_;
 
     CliResult link(const Serve& s, QStringList args) {
-        return run(kCli, QStringList{"link", "--tcp", s.address()} + args);
+        return run(kCli, QStringList{"link", "--lang", "en", "--tcp", s.address()} + args);
     }
     CliResult mbpoll(quint16 port, QStringList args, int unit = 1) {
         // mbpoll OPTIONS HOST [VALUES]: the values to write come after the host.
@@ -158,21 +158,64 @@ private slots:
         QVERIFY2(r.exitCode != 0, qPrintable(r.out + r.err));
     }
 
+    void saidInItsLang() {
+        // Russian unless --lang en: the command's lines, core's refusals and
+        // the line's failures (from Qt's error code, not its English).
+        const auto linkIn = [&](const QString& lang, const Serve& s, const QStringList& args) {
+            QStringList a{"link", "--tcp", s.address()};
+            if (!lang.isEmpty())
+                a << "--lang" << lang;
+            return run(kCli, a + args);
+        };
+        CliResult r = linkIn({}, *a_, {"ping"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains("отвечает на " + a_->address() + ", адрес 1: режим F7 (РАБОТА С ПЭВМ)"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("; называет себя «K528-05 simulated by k528 serve: training-lathe»"), qPrintable(r.out));
+        r = linkIn("ru", *b_, {"--address", "5", "clear", "r"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("k528 link: контроллер не в F7 «РАБОТА С ПЭВМ» (сейчас режим F2): нажмите F7"),
+                 qPrintable(r.err));
+        QVERIFY2(r.err.contains("повторите очистку R; ничего не отправлено"), qPrintable(r.err));
+        r = linkIn("en", *b_, {"--address", "5", "clear", "r"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains("k528 link: the controller is not in F7 «РАБОТА С ПЭВМ» (mode F2 now)") &&
+                     r.err.contains("then clear R again; nothing was sent"),
+                 qPrintable(r.err));
+        r = linkIn({}, *a_, {"diag"});
+        QVERIFY2(r.exitCode == 0 && r.out.contains("счётчики шины станции 1 (функция Modbus 08):"), qPrintable(r.out));
+        QVERIFY2(r.err.contains("линия: ответов: ") && r.err.contains("повторов: 0"), qPrintable(r.err));
+        // --json is the same in both.
+        const CliResult jsonRu = linkIn("ru", *a_, {"status", "--json"});
+        const CliResult jsonEn = linkIn("en", *a_, {"status", "--json"});
+        QVERIFY2(jsonRu.exitCode == 0 && jsonRu.out.contains("\"pc_ready\":true"), qPrintable(jsonRu.out + jsonRu.err));
+        QCOMPARE(jsonRu.out, jsonEn.out);
+        // Nobody listens: Qt's "Connection refused" said in the command's language.
+        r = run(kCli, {"link", "--tcp", address(ports_[2]), "status"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("k528 link: не удаётся открыть 127.0.0.1:") && r.err.contains(": соединение отклонено"),
+                 qPrintable(r.err));
+        r = run(kCli, {"link", "--tcp", address(ports_[2]), "--lang", "en", "status"});
+        QVERIFY2(r.err.contains(": connection refused"), qPrintable(r.err));
+        r = run(kCli, {"link", "--tcp", a_->address(), "--lang", "de", "status"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("--lang is ru or en"), qPrintable(r.err));
+    }
+
     void badLinesAreClear() {
         // Nobody listens on the third port: exit 2, and why.
-        CliResult r = run(kCli, {"link", "--tcp", address(ports_[2]), "status"});
+        CliResult r = run(kCli, {"link", "--lang", "en", "--tcp", address(ports_[2]), "status"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("cannot open 127.0.0.1:") && r.err.contains("refused"), qPrintable(r.err));
-        r = run(kCli, {"link", "--tcp", "127.0.0.1", "status"});
+        r = run(kCli, {"link", "--lang", "en", "--tcp", "127.0.0.1", "status"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("--tcp takes HOST:PORT"), qPrintable(r.err));
-        r = run(kCli, {"link", "--tcp", "127.0.0.1:70000", "status"});
+        r = run(kCli, {"link", "--lang", "en", "--tcp", "127.0.0.1:70000", "status"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("--tcp takes HOST:PORT"), qPrintable(r.err));
-        r = run(kCli, {"link", "--tcp", a_->address(), "--baud", "9600", "status"});
+        r = run(kCli, {"link", "--lang", "en", "--tcp", a_->address(), "--baud", "9600", "status"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("--baud is a setting of a serial line"), qPrintable(r.err));
-        r = run(kCli, {"link", "--tcp", a_->address(), "--port", "/dev/null", "status"});
+        r = run(kCli, {"link", "--lang", "en", "--tcp", a_->address(), "--port", "/dev/null", "status"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("give one"), qPrintable(r.err));
         // A port another server holds: serve says so.
@@ -187,7 +230,7 @@ private slots:
 
     void watchSeesTheServerGoAndComeBack() {
         QProcess watch;
-        watch.start(kCli, {"link", "--tcp", b_->address(), "--address", "5", "--timeout-ms", "100", "watch",
+        watch.start(kCli, {"link", "--lang", "en", "--tcp", b_->address(), "--address", "5", "--timeout-ms", "100", "watch",
                            "--seconds", "8"});
         QVERIFY(watch.waitForStarted());
         QByteArray out;

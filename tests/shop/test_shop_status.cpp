@@ -193,7 +193,7 @@ private slots:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains("\"online\":true") && !r.out.contains("\"online\":false"), qPrintable(r.out));
         // A round trip through it takes 40–100 ms and still fits a 100 ms period.
-        r = runProgram(kCli, {"link", "--tcp", "127.0.0.1:" + QString::number(proxyPort), "watch", "--seconds", "2",
+        r = runProgram(kCli, {"link", "--lang", "en", "--tcp", "127.0.0.1:" + QString::number(proxyPort), "watch", "--seconds", "2",
                               "--interval-ms", "100", "--json"},
                        20000);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));

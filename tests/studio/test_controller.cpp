@@ -99,6 +99,57 @@ private slots:
         QVERIFY(!dock->link());
     }
 
+    // A failed connection says the port's or the socket's failure in the
+    // window's language (from Qt's error code: «порт не найден», «соединение
+    // отклонено», not Qt's English); each window is saved as a picture.
+    void aConnectFailureInTheWindowsLanguage() {
+        struct Case {
+            const char* lang;
+            const char* plugin;
+            QString port;
+            QString says;
+        };
+        const Case cases[] = {
+            {"en", "modbus-rtu", dir_.filePath("no-such-line"), QStringLiteral(": no such port")},
+            {"ru", "modbus-rtu", dir_.filePath("no-such-line"), QStringLiteral(": порт не найден")},
+            {"en", "modbus-tcp", QStringLiteral("127.0.0.1:1"), QStringLiteral(": connection refused")},
+            {"ru", "modbus-tcp", QStringLiteral("127.0.0.1:1"), QStringLiteral(": соединение отклонено")},
+        };
+        for (const Case& c : cases) {
+            QVERIFY(setLanguage(c.lang));
+            MainWindow w(loadMachine("training-lathe"));
+            w.resize(1366, 768);
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            auto* dock = w.findChild<ControllerDock*>("dock.controller");
+            QVERIFY(dock);
+            dock->show();
+            dock->raise(); // its tab in front, for the picture
+            auto* plugin = w.findChild<QComboBox*>("controller.plugin");
+            QVERIFY(plugin);
+            int index = -1;
+            for (int i = 0; i < plugin->count(); ++i)
+                if (plugin->itemText(i).contains(QLatin1String(c.plugin)))
+                    index = i;
+            if (index < 0)
+                QSKIP(qPrintable(QStringLiteral("no %1 plugin here").arg(c.plugin)));
+            plugin->setCurrentIndex(index);
+            dock->portBox()->setEditText(c.port);
+            QSignalSpy connected(dock, &ControllerDock::connectedChanged);
+            dock->connectLine();
+            QVERIFY(finished(connected, 10000));
+            QVERIFY(!connected.first().first().toBool());
+            const QString said = dock->lineLabel()->text();
+            QVERIFY2(said.endsWith(c.says), qPrintable(said));
+            QVERIFY2(!said.contains(QLatin1String("No such")) && !said.contains(QLatin1String("Connection refused")),
+                     qPrintable(said));
+            QApplication::processEvents();
+            QVERIFY(w.grab().save(QDir::current().filePath(
+                QStringLiteral("connect_failure_%1_%2.png").arg(QLatin1String(c.plugin), QLatin1String(c.lang)))));
+        }
+        QVERIFY(setLanguage("en"));
+    }
+
     // The window closed while it shows the real controller and a pull runs
     // (a failed check leaves a test function the same way): the line is
     // closed before the views go, the transfer aborted, and the next window

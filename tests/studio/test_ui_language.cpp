@@ -49,6 +49,7 @@
 #include "db/notes.h"
 #include "proveout/proveout_pane.h"
 #include "session/core_texts.h"
+#include "controller/link_texts.h"
 #include "session/diagnostic_texts.h"
 #include "program/diagnostic_texts.h"
 #include "proveout/rules.h"
@@ -709,7 +710,13 @@ void TestUiLanguage::russianErrors() {
     const QString badFile = dir_.filePath("bad.k528"), emptyFile = dir_.filePath("empty.k528");
     // The K923's keys by their printed legends (ENTER), the manual's panel.
     walker.setData(panelTexts() + positionerTexts() + sqliteSaid + QStringList{pgLocation, QStringLiteral("%MESSAGES"), badFile, emptyFile});
-    const auto ru = [](const link::LinkError& e) { return QString::fromStdString(e.text(true)); };
+    // Core's Russian, and the window's: the same words from the same id.
+    const auto ru = [](const link::LinkError& e) {
+        const QString core = QString::fromStdString(e.text(true));
+        if (studio::linkErrorText(e) != core)
+            qWarning("the window says «%s», core «%s»", qPrintable(studio::linkErrorText(e)), qPrintable(core));
+        return studio::linkErrorText(e);
+    };
 
     // Core's link errors in Russian, as the Controller dock and the views say them.
     {
@@ -724,20 +731,34 @@ void TestUiLanguage::russianErrors() {
         walker.check("link: a file with an error", ru(link::planProgramFile(l, "%L1\nN1 G999\n", badFile.toStdString(), plan)));
         walker.check("link: a file without programs", ru(link::planProgramFile(l, "; nothing\n", emptyFile.toStdString(), plan)));
         for (int code : {1, 2, 3, 6, 9})
-            walker.check(QStringLiteral("link: exception %1").arg(code), QString::fromStdString(link::exceptionSaid(code).ru));
+            walker.check(QStringLiteral("link: exception %1").arg(code), studio::linkText(link::exceptionSaid(code)));
         for (int status : {0, 1, 2, 16, 17, 18, 19, 20, 33})
-            walker.check(QStringLiteral("link: status %1").arg(status), QString::fromStdString(link::statusSaid(status).ru));
+            walker.check(QStringLiteral("link: status %1").arg(status), studio::linkText(link::statusSaid(status)));
         for (int mode : {0, 2, 7}) {
             link::LiveState m;
             m.mode = mode;
             walker.check(QStringLiteral("link: not ready in F%1").arg(mode),
-                         QString::fromStdString(link::notReadySaid(m, {"push", "передачу"}).ru));
+                         studio::linkText(link::notReadySaid(m, link::say("link.action-push"))));
         }
         link::PushReport report;
-        report.parts = {{"C-parameters", link::PushReport::State::New, "C-параметры"},
-                        {"program 5", link::PushReport::State::InDoubt, "программа 5"},
-                        {"messages", link::PushReport::State::AsItWas, "сообщения"}};
-        walker.check("link: a push's parts", QString::fromStdString(report.summary(true)));
+        report.parts = {{"C-parameters", link::PushReport::State::New, link::say("link.part-c")},
+                        {"program 5", link::PushReport::State::InDoubt, link::say("link.part-program", {"5"})},
+                        {"messages", link::PushReport::State::AsItWas, link::say("link.part-messages")}};
+        walker.check("link: a push's parts", studio::linkText(report.summary()));
+        QCOMPARE(studio::linkText(report.summary()), QString::fromStdString(link::render(report.summary(), true)));
+        // A line's failure (a plugin's, mapped from Qt's error code) in the window's words.
+        walker.check("link: connection refused",
+                     studio::lineErrorText(QString::fromStdString(link::lineError("line.refused"))));
+        QCOMPARE(studio::lineErrorText(QString::fromStdString(link::lineError("line.connect-timeout", {"1000"}))),
+                 QStringLiteral("нет соединения за 1000 мс"));
+    }
+    // Every text of the link's catalog: the window's Russian is core's.
+    for (const util::CatalogText& t : link::linkTexts().texts()) {
+        QVERIFY2(studio::hasLinkText(t.id), t.id.data());
+        const link::Said s = link::say(t.id, {"R7", "5", "6000..6031", "L"});
+        QCOMPARE(studio::linkText(s), QString::fromStdString(link::render(s, true)));
+        walker.check(QStringLiteral("link text %1").arg(QString::fromUtf8(t.id.data(), static_cast<qsizetype>(t.id.size()))),
+                     studio::linkText(s));
     }
 
     // The push preview: what changes, in the window's words.

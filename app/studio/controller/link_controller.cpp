@@ -1,6 +1,7 @@
 #include "controller/link_controller.h"
 
 #include "window_language.h"
+#include "controller/link_texts.h"
 
 #include "link/monitor.h"
 #include "session/shop_database.h"
@@ -67,8 +68,8 @@ private:
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
-// Core's message in the window's language (core says each in both).
-QString said(const link::LinkError& e) { return fromStd(e.text(russianWindow())); }
+// Core's message (an id of core/link/link_texts.h) in the window's language.
+QString said(const link::LinkError& e) { return linkErrorText(e); }
 
 // What a transfer moves now, as core's progress names it ("C-parameters",
 // "R-parameters", "messages", "program 5"), in the window's language.
@@ -85,7 +86,7 @@ QString partName(const std::string& what) {
 }
 
 // A transfer stopped by the user, as the log words it.
-link::LinkError cancelledError() { return {link::LinkError::Kind::Refused, 0, "cancelled by the user", "отменено пользователем"}; }
+link::LinkError cancelledError() { return {link::LinkError::Kind::Refused, 0, link::say("link.cancelled")}; }
 
 // The controller's identity added to `where` after a transfer (one more
 // exchange; none when the line is closing).
@@ -118,7 +119,7 @@ std::function<link::LinkError(link::Link&)> pushOnRecord(
         identifyAfter(where, l, e);
         *entry = transfer::pushEntry(where, l.map(), plan, rep, e);
         if (e && rep.anyNew())
-            e.append({"; " + rep.summary(), "; " + rep.summary(true)});
+            e.append(rep.summary());
         return e;
     };
 }
@@ -160,7 +161,8 @@ public:
         QString error;
         t_ = plugin_.openClient(line_, error);
         if (!t_) {
-            post([error](LinkController* c) { emit c->opened(false, error); });
+            const QString why = lineErrorText(error);
+            post([why](LinkController* c) { emit c->opened(false, why); });
             return;
         }
         meter_ = std::make_unique<MeterTransport>(*t_, cancel_, closing_);
@@ -178,7 +180,7 @@ public:
             if (!e)
                 e = link_->read(map.rFirst, 2 * map.rCount, rregs);
         } catch (const Cancelled&) {
-            e = {link::LinkError::Kind::NoAnswer, 0, "closed", "соединение закрыто"};
+            e = {link::LinkError::Kind::NoAnswer, 0, link::say("link.closed")};
         }
         if (e) {
             const QString why = said(e);
