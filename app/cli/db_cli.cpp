@@ -1,6 +1,6 @@
 // Helpers shared by the `k528 db` subcommands (db_cli_util.h) and the
 // `k528 db` dispatcher.
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include "db_cli_util.h"
 #include "args.h"
 #include "catalog/cparams.h"

@@ -1,7 +1,6 @@
 #include "profile/validate.h"
 
 #include "profile/problem.h"
-#include "profile/problem_russian.h"
 
 #include "catalog/rparams.h"
 #include "util/utf8.h"
