@@ -2163,6 +2163,233 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     </message>
 </context>
 <context>
+    <name>k528::studio::DatabaseTexts</name>
+    <message>
+        <source>no machine "%1" in %2 (machines: %3)</source>
+        <translation>no machine "%1" in %2 (machines: %3)</translation>
+    </message>
+    <message>
+        <source>no machine "%1" in %2 (machines: none)</source>
+        <translation>no machine "%1" in %2 (machines: none)</translation>
+    </message>
+    <message>
+        <source>a machine named %1 already exists in %2</source>
+        <translation>a machine named %1 already exists in %2</translation>
+    </message>
+    <message>
+        <source>cannot rename %1 to %2: a machine of that name exists</source>
+        <translation>cannot rename %1 to %2: a machine of that name exists</translation>
+    </message>
+    <message>
+        <source>machine %1: the machine constants are locked by the trainer for the class «%2» (setting %3): %4 not changed; nothing was written (the trainer unlocks them first: k528 db set %1 %3=)</source>
+        <translation>machine %1: the machine constants are locked by the trainer for the class «%2» (setting %3): %4 not changed; nothing was written (the trainer unlocks them first: k528 db set %1 %3=)</translation>
+    </message>
+    <message>
+        <source>machine %1 has revisions 1..%2; there is no revision %3</source>
+        <translation>machine %1 has revisions 1..%2; there is no revision %3</translation>
+    </message>
+    <message>
+        <source>machine %1 is at revision %2, not %3</source>
+        <translation>machine %1 is at revision %2, not %3</translation>
+    </message>
+    <message>
+        <source>machine %1 is at revision %2 (changed by %3 at %4), not %5 as read: load it again and repeat the change</source>
+        <translation>machine %1 is at revision %2 (changed by %3 at %4), not %5 as read: load it again and repeat the change</translation>
+    </message>
+    <message>
+        <source>the author's name is %1 bytes long; a name has at most %2 (UTF-8); nothing was written</source>
+        <translation>the author's name is %1 bytes long; a name has at most %2 (UTF-8); nothing was written</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: history entry %4 %5 of revision %6 cannot be read</source>
+        <translation>machine %1 revision %2 in %3: history entry %4 %5 of revision %6 cannot be read</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: the revision is missing from the revision table</source>
+        <translation>machine %1 revision %2 in %3: the revision is missing from the revision table</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: program L%4 of revision %5 does not match its SHA-256 checksum</source>
+        <translation>machine %1 revision %2 in %3: program L%4 of revision %5 does not match its SHA-256 checksum</translation>
+    </message>
+    <message>
+        <source>machine %1: history has an unknown section %2</source>
+        <translation>machine %1: history has an unknown section %2</translation>
+    </message>
+    <message>
+        <source>machine %1: program L%2 does not match its SHA-256 checksum</source>
+        <translation>machine %1: program L%2 does not match its SHA-256 checksum</translation>
+    </message>
+    <message>
+        <source>%1: the database has no message history (schema version %2 below %3: open it once with write access to upgrade it)</source>
+        <translation>%1: the database has no message history (schema version %2 below %3: open it once with write access to upgrade it)</translation>
+    </message>
+    <message>
+        <source>%1: the database has no training attempts (schema version %2 below %3: open it once with write access to upgrade it)</source>
+        <translation>%1: the database has no training attempts (schema version %2 below %3: open it once with write access to upgrade it)</translation>
+    </message>
+    <message>
+        <source>%1: the database has no time in each state of the shop's machines (schema version %2 below %3: open it once with write access to upgrade it)</source>
+        <translation>%1: the database has no time in each state of the shop's machines (schema version %2 below %3: open it once with write access to upgrade it)</translation>
+    </message>
+    <message>
+        <source>an attempt needs its student's name; nothing was written</source>
+        <translation>an attempt needs its student's name; nothing was written</translation>
+    </message>
+    <message>
+        <source>an attempt needs its exercise; nothing was written</source>
+        <translation>an attempt needs its exercise; nothing was written</translation>
+    </message>
+    <message>
+        <source>the attempt of "%1" at "%2": a score is 0..100, not %3; nothing was written</source>
+        <translation>the attempt of "%1" at "%2": a score is 0..100, not %3; nothing was written</translation>
+    </message>
+    <message>
+        <source>the attempt of "%1" at "%2": a negative cycle time; nothing was written</source>
+        <translation>the attempt of "%1" at "%2": a negative cycle time; nothing was written</translation>
+    </message>
+    <message>
+        <source>a transfer is a push or a pull, not "%1"</source>
+        <translation>a transfer is a push or a pull, not "%1"</translation>
+    </message>
+    <message>
+        <source>a transfer's result is ok, partial or failed, not "%1"</source>
+        <translation>a transfer's result is ok, partial or failed, not "%1"</translation>
+    </message>
+    <message>
+        <source>a time in a state needs a machine, a day (YYYY-MM-DD), run, idle, alarm or offline and 0 ms or more, not '%1' '%2' '%3' %4 ms; nothing was written</source>
+        <translation>a time in a state needs a machine, a day (YYYY-MM-DD), run, idle, alarm or offline and 0 ms or more, not '%1' '%2' '%3' %4 ms; nothing was written</translation>
+    </message>
+    <message>
+        <source>machine %1 has no program L%2 (at revision %3); nothing was released</source>
+        <translation>machine %1 has no program L%2 (at revision %3); nothing was released</translation>
+    </message>
+    <message>
+        <source>program L%2 of machine %1 was never released; nothing was written</source>
+        <translation>program L%2 of machine %1 was never released; nothing was written</translation>
+    </message>
+    <message>
+        <source>program L%2 of machine %1 is withdrawn already; nothing was written</source>
+        <translation>program L%2 of machine %1 is withdrawn already; nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: an SQLite database has one user, who may do everything; the roles are PostgreSQL's</source>
+        <translation>%1: an SQLite database has one user, who may do everything; the roles are PostgreSQL's</translation>
+    </message>
+    <message>
+        <source>no database location: set K528_DB, XDG_DATA_HOME or HOME</source>
+        <translation>no database location: set K528_DB, XDG_DATA_HOME or HOME</translation>
+    </message>
+    <message>
+        <source>K528_DB names a PostgreSQL database (%1), not a file</source>
+        <translation>K528_DB names a PostgreSQL database (%1), not a file</translation>
+    </message>
+    <message>
+        <source>no database at %1</source>
+        <translation>no database at %1</translation>
+    </message>
+    <message>
+        <source>no database at %1 (create one with: k528 db init --db %1)</source>
+        <translation>no database at %1 (create one with: k528 db init --db %1)</translation>
+    </message>
+    <message>
+        <source>cannot create the database %1: the folder %2 does not exist</source>
+        <translation>cannot create the database %1: the folder %2 does not exist</translation>
+    </message>
+    <message>
+        <source>%1: is a directory, not a database file</source>
+        <translation>%1: is a directory, not a database file</translation>
+    </message>
+    <message>
+        <source>%1: not an empty database (schema version %2); a copy goes only into a new or empty one</source>
+        <translation>%1: not an empty database (schema version %2); a copy goes only into a new or empty one</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: the file has only %1 bytes, too few for an SQLite database</source>
+        <translation>not a K528 Studio database: the file has only %1 bytes, too few for an SQLite database</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: the file does not start with the SQLite header (another kind of file, or a database whose first page is damaged)</source>
+        <translation>not a K528 Studio database: the file does not start with the SQLite header (another kind of file, or a database whose first page is damaged)</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: it is another program's SQLite database (application_id %1, ours is %2)</source>
+        <translation>not a K528 Studio database: it is another program's SQLite database (application_id %1, ours is %2)</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: it is another program's SQLite database (application_id %1, %2 schema objects)</source>
+        <translation>not a K528 Studio database: it is another program's SQLite database (application_id %1, %2 schema objects)</translation>
+    </message>
+    <message>
+        <source>the database has schema version %1, written by a newer K528 Studio; this program knows versions up to %2. Use the newer program</source>
+        <translation>the database has schema version %1, written by a newer K528 Studio; this program knows versions up to %2. Use the newer program</translation>
+    </message>
+    <message>
+        <source>; the file was left untouched</source>
+        <translation>; the file was left untouched</translation>
+    </message>
+    <message>
+        <source>; only the unfinished transaction in %1 was rolled back (SQLite's crash recovery of a K528 Studio database), nothing else was changed</source>
+        <translation>; only the unfinished transaction in %1 was rolled back (SQLite's crash recovery of a K528 Studio database), nothing else was changed</translation>
+    </message>
+    <message>
+        <source>%1: another process is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again</source>
+        <translation>%1: another process is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again</translation>
+    </message>
+    <message>
+        <source>%1 has schema version %2; a copy needs version %3 (open it once with write access to upgrade it)</source>
+        <translation>%1 has schema version %2; a copy needs version %3 (open it once with write access to upgrade it)</translation>
+    </message>
+    <message>
+        <source>a database cannot be copied into itself</source>
+        <translation>a database cannot be copied into itself</translation>
+    </message>
+    <message>
+        <source>'%1' is not ITEM=VALUE (e.g. C022=2133, R12=5, #3=TEXT, A01=TEXT)</source>
+        <translation>'%1' is not ITEM=VALUE (e.g. C022=2133, R12=5, #3=TEXT, A01=TEXT)</translation>
+    </message>
+    <message>
+        <source>%1: no such C-parameter (1..152)</source>
+        <translation>%1: no such C-parameter (1..152)</translation>
+    </message>
+    <message>
+        <source>%1: no such R-parameter (0..299)</source>
+        <translation>%1: no such R-parameter (0..299)</translation>
+    </message>
+    <message>
+        <source>%1: no such technological message (#1..#99)</source>
+        <translation>%1: no such technological message (#1..#99)</translation>
+    </message>
+    <message>
+        <source>%1: no such PLC message (%2..%3)</source>
+        <translation>%1: no such PLC message (%2..%3)</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a whole number</source>
+        <translation>%1: '%2' is not a whole number</translation>
+    </message>
+    <message>
+        <source>'%1' is not an item: C&lt;n&gt;, R&lt;n&gt;, #&lt;n&gt;, A&lt;nn&gt;, W&lt;nn&gt;, S&lt;nn&gt;, title or a simulation key</source>
+        <translation>'%1' is not an item: C&lt;n&gt;, R&lt;n&gt;, #&lt;n&gt;, A&lt;nn&gt;, W&lt;nn&gt;, S&lt;nn&gt;, title or a simulation key</translation>
+    </message>
+    <message>
+        <source>%1 is given twice ('%2' and '%3'); give each item once</source>
+        <translation>%1 is given twice ('%2' and '%3'); give each item once</translation>
+    </message>
+    <message>
+        <source>'%1' is not a known simulation key; nothing was saved. The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway</source>
+        <translation>'%1' is not a known simulation key; nothing was saved. The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway</translation>
+    </message>
+    <message>
+        <source>'%1' is not a known simulation key; nothing was saved (did you mean %2?). The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway</source>
+        <translation>'%1' is not a known simulation key; nothing was saved (did you mean %2?). The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway</translation>
+    </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1 or %2</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>

@@ -2163,6 +2163,233 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
 </context>
 <context>
+    <name>k528::studio::DatabaseTexts</name>
+    <message>
+        <source>no machine "%1" in %2 (machines: %3)</source>
+        <translation>нет станка «%1» в %2 (станки: %3)</translation>
+    </message>
+    <message>
+        <source>no machine "%1" in %2 (machines: none)</source>
+        <translation>нет станка «%1» в %2 (станков нет)</translation>
+    </message>
+    <message>
+        <source>a machine named %1 already exists in %2</source>
+        <translation>станок с именем %1 уже есть в %2</translation>
+    </message>
+    <message>
+        <source>cannot rename %1 to %2: a machine of that name exists</source>
+        <translation>нельзя переименовать %1 в %2: станок с таким именем уже есть</translation>
+    </message>
+    <message>
+        <source>machine %1: the machine constants are locked by the trainer for the class «%2» (setting %3): %4 not changed; nothing was written (the trainer unlocks them first: k528 db set %1 %3=)</source>
+        <translation>станок %1: константы станка заблокированы преподавателем для группы «%2» (параметр %3): %4 не изменены; ничего не записано (сначала преподаватель снимает блокировку: k528 db set %1 %3=)</translation>
+    </message>
+    <message>
+        <source>machine %1 has revisions 1..%2; there is no revision %3</source>
+        <translation>у станка %1 ревизии 1..%2; ревизии %3 нет</translation>
+    </message>
+    <message>
+        <source>machine %1 is at revision %2, not %3</source>
+        <translation>станок %1 — на ревизии %2, а не %3</translation>
+    </message>
+    <message>
+        <source>machine %1 is at revision %2 (changed by %3 at %4), not %5 as read: load it again and repeat the change</source>
+        <translation>станок %1 — на ревизии %2 (изменил %3, %4), а не %5, как было прочитано: загрузите его снова и повторите изменение</translation>
+    </message>
+    <message>
+        <source>the author's name is %1 bytes long; a name has at most %2 (UTF-8); nothing was written</source>
+        <translation>имя автора длиной %1 байт; имя — не длиннее %2 байт (UTF-8); ничего не записано</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: history entry %4 %5 of revision %6 cannot be read</source>
+        <translation>станок %1, ревизия %2 в %3: запись истории %4 %5 ревизии %6 не читается</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: the revision is missing from the revision table</source>
+        <translation>станок %1, ревизия %2 в %3: ревизии нет в таблице ревизий</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: program L%4 of revision %5 does not match its SHA-256 checksum</source>
+        <translation>станок %1, ревизия %2 в %3: программа L%4 ревизии %5 не совпадает со своей контрольной суммой SHA-256</translation>
+    </message>
+    <message>
+        <source>machine %1: history has an unknown section %2</source>
+        <translation>станок %1: в истории неизвестный раздел %2</translation>
+    </message>
+    <message>
+        <source>machine %1: program L%2 does not match its SHA-256 checksum</source>
+        <translation>станок %1: программа L%2 не совпадает со своей контрольной суммой SHA-256</translation>
+    </message>
+    <message>
+        <source>%1: the database has no message history (schema version %2 below %3: open it once with write access to upgrade it)</source>
+        <translation>%1: в базе данных нет истории сообщений (версия схемы %2 ниже %3: откройте её один раз с правом записи, чтобы обновить)</translation>
+    </message>
+    <message>
+        <source>%1: the database has no training attempts (schema version %2 below %3: open it once with write access to upgrade it)</source>
+        <translation>%1: в базе данных нет учебных попыток (версия схемы %2 ниже %3: откройте её один раз с правом записи, чтобы обновить)</translation>
+    </message>
+    <message>
+        <source>%1: the database has no time in each state of the shop's machines (schema version %2 below %3: open it once with write access to upgrade it)</source>
+        <translation>%1: в базе данных нет времени станков цеха в каждом состоянии (версия схемы %2 ниже %3: откройте её один раз с правом записи, чтобы обновить)</translation>
+    </message>
+    <message>
+        <source>an attempt needs its student's name; nothing was written</source>
+        <translation>у попытки должно быть имя учащегося; ничего не записано</translation>
+    </message>
+    <message>
+        <source>an attempt needs its exercise; nothing was written</source>
+        <translation>у попытки должно быть упражнение; ничего не записано</translation>
+    </message>
+    <message>
+        <source>the attempt of "%1" at "%2": a score is 0..100, not %3; nothing was written</source>
+        <translation>попытка «%1» в «%2»: оценка — 0..100, а не %3; ничего не записано</translation>
+    </message>
+    <message>
+        <source>the attempt of "%1" at "%2": a negative cycle time; nothing was written</source>
+        <translation>попытка «%1» в «%2»: отрицательное время цикла; ничего не записано</translation>
+    </message>
+    <message>
+        <source>a transfer is a push or a pull, not "%1"</source>
+        <translation>передача — это push или pull, а не «%1»</translation>
+    </message>
+    <message>
+        <source>a transfer's result is ok, partial or failed, not "%1"</source>
+        <translation>результат передачи — ok, partial или failed, а не «%1»</translation>
+    </message>
+    <message>
+        <source>a time in a state needs a machine, a day (YYYY-MM-DD), run, idle, alarm or offline and 0 ms or more, not '%1' '%2' '%3' %4 ms; nothing was written</source>
+        <translation>для времени в состоянии нужны станок, день (ГГГГ-ММ-ДД), run, idle, alarm или offline и 0 мс или больше, а не '%1' '%2' '%3' %4 мс; ничего не записано</translation>
+    </message>
+    <message>
+        <source>machine %1 has no program L%2 (at revision %3); nothing was released</source>
+        <translation>у станка %1 нет программы L%2 (на ревизии %3); ничего не выпущено</translation>
+    </message>
+    <message>
+        <source>program L%2 of machine %1 was never released; nothing was written</source>
+        <translation>программа L%2 станка %1 ни разу не выпускалась; ничего не записано</translation>
+    </message>
+    <message>
+        <source>program L%2 of machine %1 is withdrawn already; nothing was written</source>
+        <translation>программа L%2 станка %1 уже отозвана; ничего не записано</translation>
+    </message>
+    <message>
+        <source>%1: an SQLite database has one user, who may do everything; the roles are PostgreSQL's</source>
+        <translation>%1: у базы данных SQLite один пользователь, которому можно всё; роли есть только у PostgreSQL</translation>
+    </message>
+    <message>
+        <source>no database location: set K528_DB, XDG_DATA_HOME or HOME</source>
+        <translation>место базы данных не задано: задайте K528_DB, XDG_DATA_HOME или HOME</translation>
+    </message>
+    <message>
+        <source>K528_DB names a PostgreSQL database (%1), not a file</source>
+        <translation>K528_DB называет базу данных PostgreSQL (%1), а не файл</translation>
+    </message>
+    <message>
+        <source>no database at %1</source>
+        <translation>нет базы данных %1</translation>
+    </message>
+    <message>
+        <source>no database at %1 (create one with: k528 db init --db %1)</source>
+        <translation>нет базы данных %1 (создать её: k528 db init --db %1)</translation>
+    </message>
+    <message>
+        <source>cannot create the database %1: the folder %2 does not exist</source>
+        <translation>нельзя создать базу данных %1: папки %2 нет</translation>
+    </message>
+    <message>
+        <source>%1: is a directory, not a database file</source>
+        <translation>%1: это папка, а не файл базы данных</translation>
+    </message>
+    <message>
+        <source>%1: not an empty database (schema version %2); a copy goes only into a new or empty one</source>
+        <translation>%1: база данных не пуста (версия схемы %2); копия записывается только в новую или пустую</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: the file has only %1 bytes, too few for an SQLite database</source>
+        <translation>это не база данных K528 Studio: в файле всего %1 байт, слишком мало для базы данных SQLite</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: the file does not start with the SQLite header (another kind of file, or a database whose first page is damaged)</source>
+        <translation>это не база данных K528 Studio: файл не начинается с заголовка SQLite (файл другого рода или база данных с повреждённой первой страницей)</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: it is another program's SQLite database (application_id %1, ours is %2)</source>
+        <translation>это не база данных K528 Studio: это база данных SQLite другой программы (application_id %1, у нас %2)</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: it is another program's SQLite database (application_id %1, %2 schema objects)</source>
+        <translation>это не база данных K528 Studio: это база данных SQLite другой программы (application_id %1, объектов схемы: %2)</translation>
+    </message>
+    <message>
+        <source>the database has schema version %1, written by a newer K528 Studio; this program knows versions up to %2. Use the newer program</source>
+        <translation>версия схемы базы данных — %1, её записала более новая K528 Studio; эта программа знает версии до %2. Откройте её более новой программой</translation>
+    </message>
+    <message>
+        <source>; the file was left untouched</source>
+        <translation>; файл не изменён</translation>
+    </message>
+    <message>
+        <source>; only the unfinished transaction in %1 was rolled back (SQLite's crash recovery of a K528 Studio database), nothing else was changed</source>
+        <translation>; откачена только незавершённая транзакция в %1 (восстановление SQLite после сбоя базы данных K528 Studio), больше ничего не изменено</translation>
+    </message>
+    <message>
+        <source>%1: another process is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again</source>
+        <translation>%1: другой процесс пишет в базу данных и держит её заблокированной дольше времени ожидания; ничего не записано, повторите</translation>
+    </message>
+    <message>
+        <source>%1 has schema version %2; a copy needs version %3 (open it once with write access to upgrade it)</source>
+        <translation>у %1 версия схемы %2; для копии нужна версия %3 (откройте её один раз с правом записи, чтобы обновить)</translation>
+    </message>
+    <message>
+        <source>a database cannot be copied into itself</source>
+        <translation>базу данных нельзя скопировать в неё саму</translation>
+    </message>
+    <message>
+        <source>'%1' is not ITEM=VALUE (e.g. C022=2133, R12=5, #3=TEXT, A01=TEXT)</source>
+        <translation>«%1» — не ПУНКТ=ЗНАЧЕНИЕ (например, C022=2133, R12=5, #3=ТЕКСТ, A01=ТЕКСТ)</translation>
+    </message>
+    <message>
+        <source>%1: no such C-parameter (1..152)</source>
+        <translation>%1: такого C-параметра нет (1..152)</translation>
+    </message>
+    <message>
+        <source>%1: no such R-parameter (0..299)</source>
+        <translation>%1: такого R-параметра нет (0..299)</translation>
+    </message>
+    <message>
+        <source>%1: no such technological message (#1..#99)</source>
+        <translation>%1: такого технологического сообщения нет (#1..#99)</translation>
+    </message>
+    <message>
+        <source>%1: no such PLC message (%2..%3)</source>
+        <translation>%1: такого сообщения ПЛК нет (%2..%3)</translation>
+    </message>
+    <message>
+        <source>%1: '%2' is not a whole number</source>
+        <translation>%1: «%2» — не целое число</translation>
+    </message>
+    <message>
+        <source>'%1' is not an item: C&lt;n&gt;, R&lt;n&gt;, #&lt;n&gt;, A&lt;nn&gt;, W&lt;nn&gt;, S&lt;nn&gt;, title or a simulation key</source>
+        <translation>«%1» — не пункт: C&lt;n&gt;, R&lt;n&gt;, #&lt;n&gt;, A&lt;nn&gt;, W&lt;nn&gt;, S&lt;nn&gt;, title или параметр моделирования</translation>
+    </message>
+    <message>
+        <source>%1 is given twice ('%2' and '%3'); give each item once</source>
+        <translation>%1 задан дважды («%2» и «%3»); задайте каждый пункт один раз</translation>
+    </message>
+    <message>
+        <source>'%1' is not a known simulation key; nothing was saved. The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway</source>
+        <translation>«%1» — неизвестный параметр моделирования; ничего не сохранено. Параметры перечислены в docs/profile-format.md; с --allow-unknown он сохраняется всё равно</translation>
+    </message>
+    <message>
+        <source>'%1' is not a known simulation key; nothing was saved (did you mean %2?). The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway</source>
+        <translation>«%1» — неизвестный параметр моделирования; ничего не сохранено (может быть, %2?). Параметры перечислены в docs/profile-format.md; с --allow-unknown он сохраняется всё равно</translation>
+    </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1 или %2</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::DatabaseUi</name>
     <message>
         <source>Database: %1</source>

@@ -36,6 +36,7 @@
 #include "machine/pendant_controls.h"
 #include "main_window.h"
 #include "db/database.h"
+#include "db/db_texts.h"
 #include "db/error.h"
 #include "link/client.h"
 #include "profile/builtin.h"
@@ -50,6 +51,7 @@
 #include "proveout/proveout_pane.h"
 #include "session/core_texts.h"
 #include "controller/link_texts.h"
+#include "session/database_texts.h"
 #include "session/diagnostic_texts.h"
 #include "program/diagnostic_texts.h"
 #include "proveout/rules.h"
@@ -817,6 +819,28 @@ void TestUiLanguage::russianErrors() {
                                                                        "disk I/O error")));
         d.reject();
     }
+    // The database's own errors: its catalog's sentence, in Russian (the
+    // same as `k528 db … --lang ru`).
+    {
+        const QString file = dir_.filePath("errors.db");
+        db::OpenOptions o;
+        o.create = true;
+        db::Database d = db::Database::open(db::Location(file.toStdString()), o);
+        try {
+            (void)d.loadMachine("no-such-machine");
+            QFAIL("loaded a machine the database lacks");
+        } catch (const db::Error& e) {
+            const QString text = studio::databaseErrorText(e);
+            QCOMPARE(text, QString::fromStdString(e.text(db::Lang::Ru)));
+            QVERIFY2(text.startsWith(QStringLiteral("нет станка «no-such-machine» в ")), qPrintable(text));
+        }
+        try {
+            (void)d.loadMachine("training-lathe", 99);
+            QFAIL("loaded a revision the machine lacks");
+        } catch (const db::Error& e) {
+            QCOMPARE(studio::databaseErrorText(e), QStringLiteral("у станка training-lathe ревизии 1..1; ревизии 99 нет"));
+        }
+    }
 
     // Controller > Connect on a port that does not exist, then on one where
     // nothing answers (a pseudo-terminal whose other end is silent).
@@ -1036,6 +1060,12 @@ void TestUiLanguage::russianCoreTexts() {
     for (int r = 1; r <= static_cast<int>(engine::Refusal::NotPowered); ++r) {
         const auto refusal = static_cast<engine::Refusal>(r);
         QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
+    }
+    // The database's texts: the same Russian as core's catalog (`k528 db … --lang ru`).
+    for (const util::CatalogText& t : db::dbTexts().texts()) {
+        QVERIFY2(studio::hasDatabaseText(t.id), t.id.data());
+        const std::vector<std::string> args = {"lathe", "12", "34", "L3", "5", "6"};
+        QCOMPARE(studio::databaseText(t.id, args), QString::fromStdString(db::dbText(t.id, args, true)));
     }
     // Why, with the value and the limit: the same Russian as core's catalog.
     checkCatalog(engine::refusalTexts(), studio::hasRefusalText, [](std::string_view id) {

@@ -1,4 +1,5 @@
 #include "session/shop_database.h"
+#include "session/database_texts.h"
 
 #include "db/location.h"
 #include "window_language.h"
@@ -256,6 +257,10 @@ QString databaseErrorText(const std::exception& e) {
         return deniedText(*denied);
     if (!r) {
         const auto* error = dynamic_cast<const db::Error*>(&e);
+        // A text of the database's catalog: its sentence in the window's language.
+        if (error && !error->textId().empty())
+            if (const QString text = databaseText(error->catalogText()); !text.isEmpty())
+                return text;
         if (!error || !russianWindow())
             return QString::fromUtf8(e.what());
         // A sentence of the window's language: which database, what is

@@ -1,0 +1,107 @@
+#include "session/database_texts.h"
+
+#include "db/error.h"
+#include "util/text_pattern.h"
+
+#include <QCoreApplication>
+
+namespace k528::studio {
+
+namespace {
+
+struct Entry {
+    const char* id;
+    const char* text;
+};
+
+// The English of each id of db::dbTexts() (core/db/db_texts.cpp), translated
+// by translations/pairs/database-texts.ru.tsv.
+const Entry kTexts[] = {
+    {"no-machine", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no machine \"%1\" in %2 (machines: %3)")},
+    {"no-machine.none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no machine \"%1\" in %2 (machines: none)")},
+    {"machine-exists", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a machine named %1 already exists in %2")},
+    {"rename-exists", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "cannot rename %1 to %2: a machine of that name exists")},
+    {"constants-locked", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: the machine constants are locked by the trainer for the class «%2» (setting %3): %4 not changed; nothing was written (the trainer unlocks them first: k528 db set %1 %3=)")},
+    {"no-revision", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 has revisions 1..%2; there is no revision %3")},
+    {"conflict", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 is at revision %2, not %3")},
+    {"conflict.detailed", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 is at revision %2 (changed by %3 at %4), not %5 as read: load it again and repeat the change")},
+    {"author-too-long", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the author's name is %1 bytes long; a name has at most %2 (UTF-8); nothing was written")},
+    {"corrupt.history-entry", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 revision %2 in %3: history entry %4 %5 of revision %6 cannot be read")},
+    {"corrupt.revision-missing", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 revision %2 in %3: the revision is missing from the revision table")},
+    {"corrupt.revision-program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 revision %2 in %3: program L%4 of revision %5 does not match its SHA-256 checksum")},
+    {"corrupt.history-section", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: history has an unknown section %2")},
+    {"corrupt.program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: program L%2 does not match its SHA-256 checksum")},
+    {"schema-lacks.messages", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no message history (schema version %2 below %3: open it once with write access to upgrade it)")},
+    {"schema-lacks.attempts", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no training attempts (schema version %2 below %3: open it once with write access to upgrade it)")},
+    {"schema-lacks.state-times", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no time in each state of the shop's machines (schema version %2 below %3: open it once with write access to upgrade it)")},
+    {"attempt.no-student", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "an attempt needs its student's name; nothing was written")},
+    {"attempt.no-exercise", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "an attempt needs its exercise; nothing was written")},
+    {"attempt.score", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the attempt of \"%1\" at \"%2\": a score is 0..100, not %3; nothing was written")},
+    {"attempt.cycle-time", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the attempt of \"%1\" at \"%2\": a negative cycle time; nothing was written")},
+    {"transfer.direction", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a transfer is a push or a pull, not \"%1\"")},
+    {"transfer.result", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a transfer's result is ok, partial or failed, not \"%1\"")},
+    {"state-time.invalid", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a time in a state needs a machine, a day (YYYY-MM-DD), run, idle, alarm or offline and 0 ms or more, not '%1' '%2' '%3' %4 ms; nothing was written")},
+    {"release.no-program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 has no program L%2 (at revision %3); nothing was released")},
+    {"release.never", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "program L%2 of machine %1 was never released; nothing was written")},
+    {"release.withdrawn", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "program L%2 of machine %1 is withdrawn already; nothing was written")},
+    {"roles.sqlite", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: an SQLite database has one user, who may do everything; the roles are PostgreSQL's")},
+    {"location.none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no database location: set K528_DB, XDG_DATA_HOME or HOME")},
+    {"location.postgres", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "K528_DB names a PostgreSQL database (%1), not a file")},
+    {"open.no-database", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no database at %1")},
+    {"open.no-database.init", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no database at %1 (create one with: k528 db init --db %1)")},
+    {"open.no-folder", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "cannot create the database %1: the folder %2 does not exist")},
+    {"open.directory", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: is a directory, not a database file")},
+    {"open.not-empty", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: not an empty database (schema version %2); a copy goes only into a new or empty one")},
+    {"open.foreign-short", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database: the file has only %1 bytes, too few for an SQLite database")},
+    {"open.foreign-header", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database: the file does not start with the SQLite header (another kind of file, or a database whose first page is damaged)")},
+    {"open.foreign-program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database: it is another program's SQLite database (application_id %1, ours is %2)")},
+    {"open.foreign-objects", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database: it is another program's SQLite database (application_id %1, %2 schema objects)")},
+    {"open.too-new", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database has schema version %1, written by a newer K528 Studio; this program knows versions up to %2. Use the newer program")},
+    {"open.untouched", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "; the file was left untouched")},
+    {"open.recovered", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "; only the unfinished transaction in %1 was rolled back (SQLite's crash recovery of a K528 Studio database), nothing else was changed")},
+    {"busy.write", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: another process is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again")},
+    {"copy.schema", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1 has schema version %2; a copy needs version %3 (open it once with write access to upgrade it)")},
+    {"copy.itself", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a database cannot be copied into itself")},
+    {"item.syntax", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "'%1' is not ITEM=VALUE (e.g. C022=2133, R12=5, #3=TEXT, A01=TEXT)")},
+    {"item.c-none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: no such C-parameter (1..152)")},
+    {"item.r-none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: no such R-parameter (0..299)")},
+    {"item.message-none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: no such technological message (#1..#99)")},
+    {"item.plc-none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: no such PLC message (%2..%3)")},
+    {"item.not-whole", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: '%2' is not a whole number")},
+    {"item.unknown", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "'%1' is not an item: C<n>, R<n>, #<n>, A<nn>, W<nn>, S<nn>, title or a simulation key")},
+    {"item.twice", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1 is given twice ('%2' and '%3'); give each item once")},
+    {"item.unknown-key", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "'%1' is not a known simulation key; nothing was saved. The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway")},
+    {"item.unknown-key.close", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "'%1' is not a known simulation key; nothing was saved (did you mean %2?). The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway")},
+    {"list.or", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1 or %2")},
+};
+
+const char* textOf(std::string_view id) {
+    for (const Entry& e : kTexts)
+        if (id == e.id)
+            return e.text;
+    return nullptr;
+}
+
+} // namespace
+
+bool hasDatabaseText(std::string_view id) { return textOf(id) != nullptr; }
+
+QString databaseText(std::string_view id, const std::vector<std::string>& args) {
+    const char* text = textOf(id);
+    if (!text)
+        return {};
+    const QString pattern = QCoreApplication::translate("k528::studio::DatabaseTexts", text);
+    return QString::fromStdString(util::fillPattern(pattern.toStdString(), args));
+}
+
+QString databaseText(const db::ErrorText& t) {
+    if (!hasDatabaseText(t.id) || (!t.tail.empty() && !hasDatabaseText(t.tail)))
+        return {};
+    QString s = t.at.empty() ? QString() : QString::fromStdString(t.at) + QStringLiteral(": ");
+    s += databaseText(t.id, t.args);
+    if (!t.tail.empty())
+        s += databaseText(t.tail, t.tailArgs);
+    return s;
+}
+
+} // namespace k528::studio
