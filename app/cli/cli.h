@@ -27,6 +27,8 @@ std::span<const Command> commands();
 
 // Prints "k528: <message>" to stderr and returns ExitUsage.
 int usageError(std::string_view message);
+// The same in Russian or English (the hint where the help is too).
+int usageError(std::string_view message, bool russian);
 
 // Prints the help of one command to `out`.
 void printCommandHelp(const Command& c, std::FILE* out);

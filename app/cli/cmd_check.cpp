@@ -1,6 +1,6 @@
 // k528 check [--json] [--number N] [--lang ru|en] [--profile NAME|PATH] FILE...
 // (shared/spec/cli.md; extensions in docs/program-language.md).
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include <algorithm>
 #include <cstdio>
 #include <iostream>

@@ -17,7 +17,7 @@
 namespace k528::cli::dbcli {
 
 int cmdAudit(std::span<const std::string> argv) {
-    const Args a(argv, {"--json"}, {"--db", "--limit", "--machine"});
+    const Args a(argv, {"--json"}, {"--db", "--lang", "--limit", "--machine"});
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())

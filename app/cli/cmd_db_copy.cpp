@@ -7,7 +7,7 @@
 namespace k528::cli::dbcli {
 
 int cmdCopy(std::span<const std::string> argv) {
-    const Args a(argv, {}, {"--db", "--to"});
+    const Args a(argv, {}, {"--db", "--lang", "--to"});
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
@@ -19,7 +19,7 @@ int cmdCopy(std::span<const std::string> argv) {
     try {
         target = db::Location::parse(*to);
     } catch (const db::Error& e) {
-        return fail(e.what());
+        return fail(e.text(langOf(a)));
     }
     DbTarget t;
     auto d = openDbOf(a, t, false);
@@ -37,7 +37,7 @@ int cmdCopy(std::span<const std::string> argv) {
         out(s);
         return ExitOk;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, langOf(a));
     }
 }
 

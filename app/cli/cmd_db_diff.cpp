@@ -23,7 +23,7 @@ namespace {
 // A side of a diff: MACHINE@REV, a machine of the database, a machine file,
 // or a built-in profile.
 bool resolveSide(const db::Database& d, const std::string& s, MachineProfile& p,
-                 std::string& label) {
+                 std::string& label, Lang lang) {
     try {
         const auto at = s.rfind('@');
         if (at != std::string::npos && at > 0 && parseInt(s.substr(at + 1)) &&
@@ -58,7 +58,7 @@ bool resolveSide(const db::Database& d, const std::string& s, MachineProfile& p,
         fail(e.what(), ExitInputErrors);
         return false;
     } catch (const db::Error& e) {
-        dbFail(e);
+        dbFail(e, lang);
         return false;
     }
 }
@@ -66,7 +66,7 @@ bool resolveSide(const db::Database& d, const std::string& s, MachineProfile& p,
 } // namespace
 
 int cmdDiff(std::span<const std::string> argv) {
-    const Args a(argv, {"--json"}, {"--db"});
+    const Args a(argv, {"--json"}, {"--db", "--lang"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 2)
@@ -77,7 +77,7 @@ int cmdDiff(std::span<const std::string> argv) {
         return ExitUsage;
     MachineProfile pa, pb;
     std::string la, lb;
-    if (!resolveSide(*d, a.positional()[0], pa, la) || !resolveSide(*d, a.positional()[1], pb, lb))
+    if (!resolveSide(*d, a.positional()[0], pa, la, langOf(a)) || !resolveSide(*d, a.positional()[1], pb, lb, langOf(a)))
         return ExitUsage;
     const auto changes = profile::diff(pa, pb);
     if (a.has("--json")) {

@@ -19,7 +19,7 @@
 namespace k528::cli::dbcli {
 
 int cmdExport(std::span<const std::string> argv) {
-    const Args a(argv, {}, {"--db", "--format", "--out"});
+    const Args a(argv, {}, {"--db", "--lang", "--format", "--out"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
@@ -40,7 +40,7 @@ int cmdExport(std::span<const std::string> argv) {
             format == "csv" ? profile::writeCParamsCsv(p.cValues()) : profile::writeMachineText(p);
         return writeOutput(a.value("--out"), text) ? ExitOk : ExitUsage;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, langOf(a));
     }
 }
 

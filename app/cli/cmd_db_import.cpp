@@ -1,5 +1,5 @@
 // k528 db import (docs/database.md); helpers in db_cli_util.h.
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include "db_cli_util.h"
 #include "db/notes.h"
 #include "args.h"

@@ -31,7 +31,7 @@ std::string itemText(const db::TransferItem& i) {
 } // namespace
 
 int cmdLog(std::span<const std::string> argv) {
-    const Args a(argv, {"--json"}, {"--db", "--since", "--limit"});
+    const Args a(argv, {"--json"}, {"--db", "--lang", "--since", "--limit"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() > 1)
@@ -110,7 +110,7 @@ int cmdLog(std::span<const std::string> argv) {
         out(s);
         return ExitOk;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, langOf(a));
     }
 }
 

@@ -18,7 +18,7 @@
 namespace k528::cli::dbcli {
 
 int cmdMachines(std::span<const std::string> argv) {
-    const Args a(argv, {"--json"}, {"--db"});
+    const Args a(argv, {"--json"}, {"--db", "--lang"});
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())

@@ -8,7 +8,7 @@ namespace k528::cli::dbcli {
 
 int cmdRelease(std::span<const std::string> argv, bool release) {
     const char* verb = release ? "release" : "withdraw";
-    const Args a(argv, {}, {"--db", "--note", "--author"});
+    const Args a(argv, {}, {"--db", "--lang", "--note", "--author"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 2)
@@ -38,7 +38,7 @@ int cmdRelease(std::span<const std::string> argv, bool release) {
             (e.note.empty() ? "" : ": " + e.note) + "\n");
         return ExitOk;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, langOf(a));
     }
 }
 

@@ -7,7 +7,7 @@
 namespace k528::cli::dbcli {
 
 int cmdRoles(std::span<const std::string> argv) {
-    const Args a(argv, {}, {"--db"});
+    const Args a(argv, {}, {"--db", "--lang"});
     if (!a.ok())
         return usageError(a.error());
     const auto& pos = a.positional();
@@ -41,7 +41,7 @@ int cmdRoles(std::span<const std::string> argv) {
         out(s);
         return ExitOk;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, langOf(a));
     }
 }
 

@@ -6,6 +6,7 @@
 #include "catalog/rparams.h"
 #include "cli.h"
 #include "db/database.h"
+#include "db/db_texts.h"
 #include "db/explain.h"
 #include "db_cli.h"
 #include "profile/diff.h"
@@ -35,11 +36,12 @@ std::string itemKey(const std::string& item) {
     return std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(key[0])))) + digits;
 }
 
-// One ITEM=VALUE of `set` into the edit; "" or what is wrong.
-std::string parseItem(const std::string& item, db::Edit& e) {
+// One ITEM=VALUE of `set` into the edit; what is wrong (the database
+// catalog's id and arguments), an empty id when nothing is.
+db::ErrorText parseItem(const std::string& item, db::Edit& e) {
     const auto eq = item.find('=');
     if (eq == std::string::npos || eq == 0)
-        return "'" + item + "' is not ITEM=VALUE (e.g. C022=2133, R12=5, #3=TEXT, A01=TEXT)";
+        return {"item.syntax", {item}};
     const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
     const auto digits = [](const std::string& s) {
         return !s.empty() &&
@@ -49,31 +51,31 @@ std::string parseItem(const std::string& item, db::Edit& e) {
     if ((key[0] == 'C' || key[0] == 'c') && digits(rest)) {
         const auto n = parseInt(rest);
         if (!n || *n < 1 || *n > cat::kCParamCount)
-            return key + ": no such C-parameter (1..152)";
+            return {"item.c-none", {key}};
         const auto v = parseInt(value);
         if (!v)
-            return key + ": '" + value + "' is not a whole number";
+            return {"item.not-whole", {key, value}};
         e.c[static_cast<int>(*n)] = *v;
         return {};
     }
     if ((key[0] == 'R' || key[0] == 'r') && digits(rest)) {
         const auto n = parseInt(rest);
         if (!n || *n < 0 || *n >= cat::kRParamCount)
-            return key + ": no such R-parameter (0..299)";
+            return {"item.r-none", {key}};
         if (value.empty()) {
             e.r[static_cast<int>(*n)] = std::nullopt;
             return {};
         }
         const auto v = parseInt(value);
         if (!v)
-            return key + ": '" + value + "' is not a whole number";
+            return {"item.not-whole", {key, value}};
         e.r[static_cast<int>(*n)] = *v;
         return {};
     }
     if (key[0] == '#' && digits(rest)) {
         const auto n = parseInt(rest);
         if (!n || *n < 1 || *n > cat::kTechMessageCount)
-            return key + ": no such technological message (#1..#99)";
+            return {"item.message-none", {key}};
         e.messages[static_cast<int>(*n)] =
             value.empty() ? std::nullopt : std::optional<std::string>(value);
         return {};
@@ -84,8 +86,8 @@ std::string parseItem(const std::string& item, db::Edit& e) {
                                                 : cat::PlcGroup::System;
         const auto n = parseInt(rest);
         if (!n || *n < 1 || *n > cat::plcMessageCount(g))
-            return key + ": no such PLC message (" + std::string(1, key[0]) + "01.." +
-                   std::string(1, key[0]) + std::to_string(cat::plcMessageCount(g)) + ")";
+            return {"item.plc-none",
+                    {key, std::string(1, key[0]) + "01", std::string(1, key[0]) + std::to_string(cat::plcMessageCount(g))}};
         e.plc[{g, static_cast<int>(*n)}] =
             value.empty() ? std::nullopt : std::optional<std::string>(value);
         return {};
@@ -98,9 +100,7 @@ std::string parseItem(const std::string& item, db::Edit& e) {
         e.simulation[key] = value.empty() ? std::nullopt : std::optional<std::string>(value);
         return {};
     }
-    return "'" + key +
-           "' is not an item: C<n>, R<n>, #<n>, A<nn>, W<nn>, S<nn>, title or a "
-           "simulation key";
+    return {"item.unknown", {key}};
 }
 
 // Edit distance with a swap of two neighbours as one step ("tilte" is one step
@@ -145,22 +145,27 @@ std::vector<std::string> closeKeys(std::string_view key) {
 // written: a typo saved as a revision stays in the history and warns on every
 // later change. "" when every key set is known (removing one is always allowed:
 // that is how a stored typo goes away).
-std::string unknownKeyError(const db::Edit& e) {
+std::string unknownKeyError(const db::Edit& e, Lang lang) {
+    const bool ru = lang == Lang::Ru;
     for (const auto& [key, value] : e.simulation) {
         if (!value || profile::findSimulationKey(key))
             continue;
-        std::string text = "'" + key + "' is not a known simulation key; nothing was saved";
         const auto close = closeKeys(key);
-        if (!close.empty()) {
-            text += " (did you mean ";
-            for (std::size_t i = 0; i < close.size(); ++i)
-                text += (i == 0 ? "" : i + 1 == close.size() ? " or " : ", ") + close[i];
-            text += "?)";
-        }
-        text += ". The keys are listed in docs/profile-format.md; --allow-unknown stores it anyway";
-        return text;
+        if (close.empty())
+            return db::dbText("item.unknown-key", std::vector<std::string>{key}, ru);
+        std::string list = close.front(); // "a, b or c"
+        for (std::size_t i = 1; i + 1 < close.size(); ++i)
+            list += ", " + close[i];
+        if (close.size() > 1)
+            list = db::dbText("list.or", std::vector<std::string>{list, close.back()}, ru);
+        return db::dbText("item.unknown-key.close", std::vector<std::string>{key, list}, ru);
     }
     return {};
+}
+
+// A wrong ITEM=VALUE: said in the command's language, with the hint where the help is.
+int itemError(const std::string& text, Lang lang) {
+    return usageError(text, lang == Lang::Ru);
 }
 
 void printRejection(const db::ValidationError& e, Lang lang, const std::string& where) {
@@ -184,16 +189,18 @@ int cmdSet(std::span<const std::string> argv) {
     std::map<std::string, std::string> given; // item key -> the ITEM=VALUE that set it
     for (std::size_t i = 1; i < a.positional().size(); ++i) {
         const std::string& item = a.positional()[i];
-        if (const auto err = parseItem(item, edit); !err.empty())
-            return usageError(err);
+        if (const db::ErrorText err = parseItem(item, edit); !err.id.empty())
+            return itemError(db::renderText(err, lang == Lang::Ru), lang);
         const auto [it, fresh] = given.emplace(itemKey(item), item);
         if (!fresh)
-            return usageError(item.substr(0, item.find('=')) + " is given twice ('" + it->second +
-                              "' and '" + item + "'); give each item once");
+            return itemError(db::dbText("item.twice",
+                                        std::vector<std::string>{item.substr(0, item.find('=')), it->second, item},
+                                        lang == Lang::Ru),
+                             lang);
     }
     if (!a.has("--allow-unknown"))
-        if (const std::string err = unknownKeyError(edit); !err.empty())
-            return usageError(err);
+        if (const std::string err = unknownKeyError(edit, lang); !err.empty())
+            return itemError(err, lang);
     DbTarget t;
     auto d = openDbOf(a, t, false, a.value("--author").value_or(""), lang);
     if (!d)

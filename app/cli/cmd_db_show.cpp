@@ -195,7 +195,7 @@ int cmdShow(std::span<const std::string> argvIn) {
         historyLimit = static_cast<int>(*n);
     }
     DbTarget t;
-    auto d = openDbOf(a, t, false);
+    auto d = openDbOf(a, t, false, {}, lang);
     if (!d)
         return ExitUsage;
     try {
@@ -425,7 +425,7 @@ int cmdShow(std::span<const std::string> argvIn) {
         out(s);
         return ExitOk;
     } catch (const db::Error& e) {
-        return dbFail(e);
+        return dbFail(e, lang);
     }
 }
 

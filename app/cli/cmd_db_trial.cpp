@@ -3,7 +3,7 @@
 // the size measured on the part against the drawing's gives the change of
 // the tool's offset R-parameter (profile/cutting.h; X measured as a
 // diameter), kept as the machine's next revision (docs/cli-decisions.md).
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include "args.h"
 #include "cli.h"
 #include "db/database.h"

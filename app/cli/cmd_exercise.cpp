@@ -7,6 +7,7 @@
 #include "db_cli_util.h"
 #include "program_cli.h"
 #include "stock/stock.h"
+#include "training/exercise_texts.h"
 #include "training/exercise.h"
 #include "training/record.h"
 #include "util/json.h"
@@ -68,7 +69,8 @@ int list(const Args& args, Lang lang) {
 int show(const Args& args, Lang lang, const std::string& id) {
     const training::Exercise* e = training::findExercise(id);
     if (!e)
-        return usageError("no exercise '" + id + "' (k528 exercise list)");
+        return usageError(training::exerciseTexts().render("no-exercise", std::vector<std::string>{id}, lang == Lang::Ru),
+                          lang == Lang::Ru);
     if (args.has("--reference")) {
         std::fputs(e->reference.c_str(), stdout);
         return ExitOk;
@@ -138,7 +140,9 @@ int show(const Args& args, Lang lang, const std::string& id) {
 int attempts(const Args& args, Lang lang, const std::string& exercise) {
     const db::Lang dl = lang == Lang::Ru ? db::Lang::Ru : db::Lang::En;
     if (!exercise.empty() && !training::findExercise(exercise))
-        return usageError("no exercise '" + exercise + "' (k528 exercise list)");
+        return usageError(
+            training::exerciseTexts().render("no-exercise", std::vector<std::string>{exercise}, lang == Lang::Ru),
+            lang == Lang::Ru);
     db::AttemptFilter f;
     f.exercise = exercise;
     f.student = args.value("--student").value_or("");
@@ -239,7 +243,7 @@ int runExercise(std::span<const std::string> argv) {
         if (pos[0] == "attempts" && pos.size() <= 2)
             return attempts(args, lang, pos.size() == 2 ? pos[1] : std::string());
     } catch (const training::ExerciseError& e) {
-        std::fprintf(stderr, "k528: %s\n", e.what());
+        std::fprintf(stderr, "k528: %s\n", e.text(lang == Lang::Ru).c_str());
         return ExitUsage;
     }
     return usageError("exercise list | exercise show ID | exercise attempts [ID]");

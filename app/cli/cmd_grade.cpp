@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "db_cli_util.h"
 #include "program_cli.h"
+#include "training/exercise_texts.h"
 #include "training/grade.h"
 #include "training/record.h"
 #include "util/json.h"
@@ -149,11 +150,13 @@ int runGrade(std::span<const std::string> argv) {
     try {
         e = training::findExercise(pos[0]);
     } catch (const training::ExerciseError& err) {
-        std::fprintf(stderr, "k528: %s\n", err.what());
+        std::fprintf(stderr, "k528: %s\n", err.text(lang == Lang::Ru).c_str());
         return ExitUsage;
     }
     if (!e)
-        return usageError("no exercise '" + pos[0] + "' (k528 exercise list)");
+        return usageError(
+            training::exerciseTexts().render("no-exercise", std::vector<std::string>{pos[0]}, lang == Lang::Ru),
+            lang == Lang::Ru);
 
     // Every file is read before anything runs: a missing one is a usage error.
     struct Item {
@@ -227,8 +230,9 @@ int runGrade(std::span<const std::string> argv) {
                 database->recordAttempt(training::attemptEntry(grades[i], items[i].text));
             } catch (const db::Error& err) {
                 ++notRecorded;
-                std::fprintf(stderr, "k528: %s: graded, but the attempt was not recorded: %s\n",
-                             items[i].file.c_str(), err.what());
+                std::fprintf(stderr, lang == Lang::Ru ? "k528: %s: оценено, но попытка не записана: %s\n"
+                                                      : "k528: %s: graded, but the attempt was not recorded: %s\n",
+                             items[i].file.c_str(), err.text(lang == Lang::Ru ? db::Lang::Ru : db::Lang::En).c_str());
             }
         }
     if (args.has("--json")) {

@@ -5,8 +5,12 @@
 namespace k528::cli {
 
 int usageError(std::string_view message) {
+    return usageError(message, false);
+}
+
+int usageError(std::string_view message, bool russian) {
     std::fprintf(stderr, "k528: %.*s\n", static_cast<int>(message.size()), message.data());
-    std::fprintf(stderr, "Try 'k528 --help'.\n");
+    std::fprintf(stderr, "%s\n", russian ? "Справка: k528 --help." : "Try 'k528 --help'.");
     return ExitUsage;
 }
 

@@ -1,6 +1,6 @@
 // Helpers shared by the `k528 db` subcommands (db_cli_util.h) and the
 // `k528 db` dispatcher.
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include "db_cli_util.h"
 #include "args.h"
 #include "catalog/cparams.h"
@@ -8,6 +8,7 @@
 #include "catalog/rparams.h"
 #include "cli.h"
 #include "db/database.h"
+#include "db/db_texts.h"
 #include "db/explain.h"
 #include "db/location.h"
 #include "db/sha256.h"
@@ -85,6 +86,7 @@ const char* const kDbDetails =
     "                       braking:MM/MIN:MM (formula 2) or value:M/S2 (formula 3)\n"
     "  --as-printed         enter formulas 1/2 as printed (formula 1 then doubles the\n"
     "                       acceleration, as appendix Ж does; see docs/machine-constants.md)\n"
+    "Every subcommand takes --lang ru|en: the language of its messages (default ru).\n"
     "Exit codes: 0 ok; 1 rejected input (validation, a bad file); 2 usage, unknown machine,\n"
     "or a database that cannot be used (damaged, another program's, newer, locked).\n";
 
@@ -152,6 +154,8 @@ int fail(const std::string& message, int code) {
 }
 
 std::string rejectionHead(const db::ValidationError& e, Lang lang) {
+    if (!e.textId().empty())
+        return e.text(lang); // the catalog's, whole
     const std::string what = e.what();
     const std::string first = what.substr(0, what.find('\n'));
     if (lang != Lang::Ru || (e.findings().empty() && e.problem().empty()))
@@ -176,7 +180,11 @@ int dbFail(const db::Error& e, Lang lang) {
         return fail(r->text(lang), ExitUsage);
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e))
         return fail(rejectionHead(*v, lang), ExitInputErrors);
-    return fail(e.what(), e.kind() == db::ErrorKind::Invalid ? ExitInputErrors : ExitUsage);
+    return fail(e.text(lang), e.kind() == db::ErrorKind::Invalid ? ExitInputErrors : ExitUsage);
+}
+
+Lang langOf(const Args& a) {
+    return a.value("--lang") == std::optional<std::string>("en") ? Lang::En : Lang::Ru;
 }
 
 bool parseLangOption(const Args& a, Lang& lang) {
@@ -213,7 +221,7 @@ bool dbTarget(const Args& a, DbTarget& t) {
             t.explicitPath = std::getenv("K528_DB") && *std::getenv("K528_DB");
         }
     } catch (const db::Error& e) {
-        fail(e.what());
+        fail(e.text(langOf(a)));
         return false;
     }
     t.path = t.where.text();
@@ -223,10 +231,10 @@ bool dbTarget(const Args& a, DbTarget& t) {
 // Opens the database. The default location is created on first use (with its
 // folder); an explicit --db path only by init and import.
 std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate, const std::string& author,
-                                     Lang lang) {
+                                     std::optional<Lang> lang) {
     if (!dbTarget(a, t))
         return std::nullopt;
-    return openDb(t, mayCreate, author, lang);
+    return openDb(t, mayCreate, author, lang.value_or(langOf(a)));
 }
 
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
@@ -238,8 +246,7 @@ std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
         std::error_code ec;
         const bool exists = fs::exists(file, ec);
         if (!exists && t.explicitPath && !mayCreate) {
-            fail("no database at " + file.string() + " (create one with: k528 db init --db " +
-                 file.string() + ")");
+            fail(db::dbText("open.no-database.init", std::vector<std::string>{file.string()}, lang == Lang::Ru));
             return std::nullopt;
         }
         if (!exists && !t.explicitPath) {

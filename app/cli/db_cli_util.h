@@ -62,6 +62,9 @@ std::string rejectionHead(const db::ValidationError& e, Lang lang);
 int dbFail(const db::Error& e, Lang lang = Lang::Ru);
 
 bool parseLangOption(const Args& a, Lang& lang);
+// The language of a command's messages: English for --lang en, else Russian
+// (a wrong --lang is said by parseLangOption).
+Lang langOf(const Args& a);
 
 // "--db LOCATION" of the subcommand (a path, sqlite:PATH or a postgresql://
 // URI), else the default location ($K528_DB, else the file of the data folder).
@@ -75,7 +78,7 @@ std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
 // dbTarget and openDb together: the database the command's --db names (its
 // path into `t`), or nullopt after printing why (exit ExitUsage).
 std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate,
-                                     const std::string& author = {}, Lang lang = Lang::Ru);
+                                     const std::string& author = {}, std::optional<Lang> lang = std::nullopt);
 
 // "grinder-205@3" -> name, revision; a usage error printed when bad.
 std::optional<MachineRef> parseRef(const std::string& s);

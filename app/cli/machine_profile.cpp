@@ -1,4 +1,4 @@
-#include "profile/problem_russian.h"
+#include "profile/error_text.h"
 #include "machine_profile.h"
 
 #include "db/location.h"

@@ -7,7 +7,7 @@ namespace k528::catalog {
 
 namespace {
 
-constexpr TrainingText kTexts[] = {
+constexpr util::CatalogText kTexts[] = {
     // --- the file -----------------------------------------------------------------------
     {"program-errors", "Программа не принята станком: %1 ошибок, первая в строке %2: %3", "the machine does not take the program: %1 errors, the first on line %2: %3"},
     {"no-program", "В файле нет программы: станку нечего выполнять", "the file holds no program: the machine has nothing to run"},
@@ -72,15 +72,6 @@ constexpr TrainingText kTexts[] = {
 
 } // namespace
 
-std::span<const TrainingText> trainingTexts() {
-    return kTexts;
-}
-
-const TrainingText* findTrainingText(std::string_view id) {
-    for (const TrainingText& t : kTexts)
-        if (t.id == id)
-            return &t;
-    return nullptr;
-}
+util::TextCatalog trainingTexts() { return util::TextCatalog(kTexts); }
 
 } // namespace k528::catalog

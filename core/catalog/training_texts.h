@@ -8,18 +8,11 @@
 // (messages.h): one catalog of what core says.
 #pragma once
 
-#include <span>
-#include <string_view>
+#include "util/text_catalog.h"
 
 namespace k528::catalog {
 
-struct TrainingText {
-    std::string_view id, ru, en;
-};
-
 // Every text a grade can show, one entry per id.
-std::span<const TrainingText> trainingTexts();
-// nullptr for an id the catalog does not hold.
-const TrainingText* findTrainingText(std::string_view id);
+util::TextCatalog trainingTexts();
 
 } // namespace k528::catalog

@@ -31,7 +31,7 @@ AttemptEntry readAttempt(sql::Query& q) {
 }
 
 void requireAttempts(Store& s) {
-    requireSchema(s, 4, "training attempts");
+    requireSchema(s, 4, "attempts");
 }
 
 } // namespace
@@ -40,16 +40,15 @@ AttemptEntry Database::recordAttempt(AttemptEntry entry) {
     Store& s = *d_->store;
     requireWritable();
     requireAttempts(s);
-    const std::string what = "the attempt of \"" + entry.student + "\" at \"" + entry.exercise + "\"";
     if (entry.student.empty())
-        throw Error(ErrorKind::Invalid, "an attempt needs its student's name; nothing was written");
+        throw Error(ErrorKind::Invalid, ErrorText{"attempt.no-student", {}});
     if (entry.exercise.empty())
-        throw Error(ErrorKind::Invalid, "an attempt needs its exercise; nothing was written");
+        throw Error(ErrorKind::Invalid, ErrorText{"attempt.no-exercise", {}});
     if (entry.score < 0 || entry.score > 100)
-        throw Error(ErrorKind::Invalid, what + ": a score is 0..100, not " + std::to_string(entry.score) +
-                                            "; nothing was written");
+        throw Error(ErrorKind::Invalid,
+                    ErrorText{"attempt.score", {entry.student, entry.exercise, std::to_string(entry.score)}});
     if (entry.cycleTimeMs < 0)
-        throw Error(ErrorKind::Invalid, what + ": a negative cycle time; nothing was written");
+        throw Error(ErrorKind::Invalid, ErrorText{"attempt.cycle-time", {entry.student, entry.exercise}});
     if (entry.at.empty())
         entry.at = formatTimestamp(d_->clock());
     const bool server = s.connection().dialect() == sql::Dialect::Postgres;
@@ -80,7 +79,7 @@ AttemptEntry Database::recordAttempt(AttemptEntry entry) {
             .bind(12, entry.cycleTimeMs)
             .bind(13, entry.grade);
         if (!q.step())
-            throw Error(ErrorKind::Sql, path().string() + ": " + what + " has no id");
+            throw Error(ErrorKind::Sql, path().string() + ": the attempt of \"" + entry.student + "\" at \"" + entry.exercise + "\" has no id");
         entry.id = q.i64(0);
         q.reset();
         tx.commit();

@@ -52,12 +52,10 @@ CopyReport Database::copyTo(const Location& target, const OpenOptions& targetOpt
     Store& src = *d_->store;
     const int latest = latestSchemaVersion();
     if (src.schemaVersion() != latest)
-        throw Error(ErrorKind::Invalid, path().string() + " has schema version " +
-                                            std::to_string(src.schemaVersion()) +
-                                            "; a copy needs version " + std::to_string(latest) +
-                                            " (open it once with write access to upgrade it)");
+        throw Error(ErrorKind::Invalid, ErrorText{"copy.schema", {path().string(), std::to_string(src.schemaVersion()),
+                                                                  std::to_string(latest)}});
     if (target == location())
-        throw Error(ErrorKind::Invalid, "a database cannot be copied into itself");
+        throw Error(ErrorKind::Invalid, ErrorText{"copy.itself", {}});
     CopyReport report;
     report.target = target.text();
     OpenOptions o = targetOptions;

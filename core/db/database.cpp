@@ -32,13 +32,11 @@ std::int64_t writeMachineRow(Store& s, const std::optional<MachineRow>& row,
                              const std::string& author) {
     if (!row) {
         if (s.findMachine(neu.name))
-            throw Error(ErrorKind::MachineExists,
-                        "a machine named " + neu.name + " already exists in " + s.path().string());
+            throw Error(ErrorKind::MachineExists, ErrorText{"machine-exists", {neu.name, s.path().string()}});
         return s.insertMachine(neu, at, author);
     }
     if (neu.name != row->info.name && s.findMachine(neu.name))
-        throw Error(ErrorKind::MachineExists, "cannot rename " + row->info.name + " to " +
-                                                  neu.name + ": a machine of that name exists");
+        throw Error(ErrorKind::MachineExists, ErrorText{"rename-exists", {row->info.name, neu.name}});
     s.updateMachine(row->id, neu, revision, at, author);
     return row->id;
 }
@@ -63,11 +61,8 @@ void checkConstantsLock(Store& s, const MachineProfile* old, const MachineProfil
         throw DeniedError("setting or clearing the constants lock", std::string(kTrainer), s.sessionUser(),
                           s.rolesOfUser(), "K528 Studio's rule: only a trainer locks and unlocks the constants");
     if (!locked.empty() && !constants.empty())
-        throw ValidationError("machine " + neu.name + ": the machine constants are locked by the trainer for the class «" +
-                                  locked + "» (setting " + std::string(kConstantsLockKey) + "): " + constants +
-                                  " not changed; nothing was written (the trainer unlocks them first: k528 db set " +
-                                  neu.name + " " + std::string(kConstantsLockKey) + "=)",
-                              {});
+        throw ValidationError(
+            ErrorText{"constants-locked", {neu.name, locked, std::string(kConstantsLockKey), constants}}, {});
 }
 
 // Makes `neu` the state of the machine `row` (nullopt: a new machine) whose
@@ -127,30 +122,29 @@ SaveResult write(Store& s, const Clock& clock, const std::optional<MachineRow>& 
 // The state at `revision`, rebuilt forward from the recorded changes.
 MachineProfile loadAt(Store& s, const MachineRow& row, int revision) {
     if (revision < 1 || revision > row.info.revision)
-        throw Error(ErrorKind::NoRevision, "machine " + row.info.name + " has revisions 1.." +
-                                               std::to_string(row.info.revision) +
-                                               "; there is no revision " + std::to_string(revision));
+        throw Error(ErrorKind::NoRevision, ErrorText{"no-revision", {row.info.name, std::to_string(row.info.revision),
+                                                                     std::to_string(revision)}});
     const std::string where = "machine " + row.info.name + " revision " + std::to_string(revision) +
                               " in " + s.path().string();
-    const auto corrupt = [&](const std::string& what) {
-        return Error(ErrorKind::Corrupt, where + ": " + what);
+    // The machine, the revision and the file, then what is wrong.
+    const auto corrupt = [&](std::string id, std::vector<std::string> args) {
+        args.insert(args.begin(), {row.info.name, std::to_string(revision), s.path().string()});
+        return Error(ErrorKind::Corrupt, ErrorText{std::move(id), std::move(args)});
     };
     MachineProfile p;
     for (const ChangeRow& c : s.changesUpTo(row.id, revision)) {
         const auto section = revision::sectionFromName(c.section);
         if (!section || !revision::applyRecorded(p, *section, c.key, c.after))
-            throw corrupt("history entry " + c.section + " " + c.key + " of revision " +
-                          std::to_string(c.revision) + " cannot be read");
+            throw corrupt("corrupt.history-entry", {c.section, c.key, std::to_string(c.revision)});
     }
     const auto order = s.settingsOrder(row.id, revision);
     if (!order)
-        throw corrupt("the revision is missing from the revision table");
+        throw corrupt("corrupt.revision-missing", {});
     if (const std::string wrong = revision::orderSettings(p, *order); !wrong.empty())
-        throw corrupt(wrong);
+        throw Error(ErrorKind::Corrupt, where + ": " + wrong);
     for (const ProgramRow& v : s.programsAt(row.id, revision)) {
         if (!v.text || sha256Hex(*v.text) != v.sha256.value_or(""))
-            throw corrupt("program L" + std::to_string(v.number) + " of revision " +
-                          std::to_string(v.revision) + " does not match its SHA-256 checksum");
+            throw corrupt("corrupt.revision-program", {std::to_string(v.number), std::to_string(v.revision)});
         p.programs[v.number] = *v.text;
     }
     return p;
@@ -159,12 +153,10 @@ MachineProfile loadAt(Store& s, const MachineRow& row, int revision) {
 void requireRevision(const MachineRow& row, const WriteOptions& o, bool detailed) {
     if (!o.expectedRevision || *o.expectedRevision == row.info.revision)
         return;
+    const std::string at = std::to_string(row.info.revision), read = std::to_string(*o.expectedRevision);
     throw Error(ErrorKind::Conflict,
-                "machine " + row.info.name + " is at revision " + std::to_string(row.info.revision) +
-                    (detailed ? " (changed by " + row.info.changedBy + " at " + row.info.changedAt +
-                                    "), not " + std::to_string(*o.expectedRevision) +
-                                    " as read: load it again and repeat the change"
-                              : ", not " + std::to_string(*o.expectedRevision)));
+                detailed ? ErrorText{"conflict.detailed", {row.info.name, at, row.info.changedBy, row.info.changedAt, read}}
+                         : ErrorText{"conflict", {row.info.name, at, read}});
 }
 
 } // namespace
@@ -402,8 +394,7 @@ std::vector<HistoryEntry> Database::history(std::string_view name, std::optional
     for (ChangeRow& c : *changes) {
         const auto section = revision::sectionFromName(c.section);
         if (!section)
-            throw Error(ErrorKind::Corrupt, "machine " + std::string(name) +
-                                                ": history has an unknown section " + c.section);
+            throw Error(ErrorKind::Corrupt, ErrorText{"corrupt.history-section", {std::string(name), c.section}});
         out.push_back(HistoryEntry{c.revision, std::move(c.author), std::move(c.at),
                                    Change{*section, std::move(c.key), std::move(c.label),
                                           std::move(c.before), std::move(c.after)}});
@@ -429,9 +420,7 @@ std::optional<std::string> Database::programText(std::string_view name, int numb
     if (!v)
         return std::nullopt;
     if (v->text && sha256Hex(*v->text) != v->sha256.value_or(""))
-        throw Error(ErrorKind::Corrupt, "machine " + row.info.name + ": program L" +
-                                            std::to_string(number) +
-                                            " does not match its SHA-256 checksum");
+        throw Error(ErrorKind::Corrupt, ErrorText{"corrupt.program", {row.info.name, std::to_string(number)}});
     return v->text;
 }
 

@@ -44,10 +44,8 @@ decltype(auto) asRole(Store& s, std::string_view action, std::string_view role, 
 inline constexpr std::size_t kMaxAuthorBytes = 256;
 inline std::string authorOf(Store& s, const std::string& given) {
     if (given.size() > kMaxAuthorBytes)
-        throw Error(ErrorKind::Invalid, "the author's name is " + std::to_string(given.size()) +
-                                            " bytes long; a name has at most " +
-                                            std::to_string(kMaxAuthorBytes) +
-                                            " (UTF-8); nothing was written");
+        throw Error(ErrorKind::Invalid, ErrorText{"author-too-long", {std::to_string(given.size()),
+                                                                      std::to_string(kMaxAuthorBytes)}});
     if (!given.empty())
         return given;
     std::string user = s.sessionUser();
@@ -55,14 +53,13 @@ inline std::string authorOf(Store& s, const std::string& given) {
 }
 
 // Refuses a database whose schema is older than `version`, the one that
-// brought `what` ("training attempts", "message history"): a file only read
-// keeps the schema it has.
+// brought `what` ("attempts", "messages", "state-times": the end of the
+// catalog's id "schema-lacks.…"): a file only read keeps the schema it has.
 inline void requireSchema(Store& s, int version, std::string_view what) {
     if (s.schemaVersion() < version)
-        throw Error(ErrorKind::Invalid, s.path().string() + ": the database has no " + std::string(what) +
-                                            " (schema version " + std::to_string(s.schemaVersion()) +
-                                            " below " + std::to_string(version) +
-                                            ": open it once with write access to upgrade it)");
+        throw Error(ErrorKind::Invalid,
+                    ErrorText{"schema-lacks." + std::string(what),
+                              {s.path().string(), std::to_string(s.schemaVersion()), std::to_string(version)}});
 }
 
 inline std::string hostName() {
@@ -79,8 +76,8 @@ inline MachineRow requireMachine(Store& s, std::string_view name) {
         for (const MachineInfo& m : s.machines())
             known += (known.empty() ? "" : ", ") + m.name;
         throw Error(ErrorKind::NoMachine,
-                    "no machine \"" + std::string(name) + "\" in " + s.path().string() +
-                        " (machines: " + (known.empty() ? "none" : known) + ")");
+                    known.empty() ? ErrorText{"no-machine.none", {std::string(name), s.path().string()}}
+                                  : ErrorText{"no-machine", {std::string(name), s.path().string(), known}});
     }
     return *r;
 }

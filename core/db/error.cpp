@@ -1,5 +1,7 @@
 #include "db/error.h"
 
+#include "db/db_texts.h"
+
 #include <iterator>
 
 namespace k528::db {
@@ -59,6 +61,21 @@ std::string readOnlyMessage(const fs::path& path, ReadOnlyReason reason, ReadOnl
 
 std::string_view readOnlyReasonText(ReadOnlyReason r, Lang lang) {
     return pick(kReasons[static_cast<int>(r)], lang);
+}
+
+std::string renderText(const ErrorText& t, bool russian) {
+    return (t.at.empty() ? std::string() : t.at + ": ") + dbTexts().render(t.id, t.args, russian) +
+           dbTexts().render(t.tail, t.tailArgs, russian);
+}
+
+Error::Error(ErrorKind kind, ErrorText text, std::string detail)
+    : std::runtime_error(renderText(text, false)), kind_(kind), detail_(std::move(detail)),
+      text_(std::move(text)) {}
+
+std::string Error::text(Lang lang) const {
+    if (text_.id.empty())
+        return what();
+    return renderText(text_, lang == Lang::Ru);
 }
 
 ReadOnlyError::ReadOnlyError(fs::path path, ReadOnlyReason reason, ReadOnlyRefusal refusal)

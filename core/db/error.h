@@ -35,11 +35,36 @@ enum class ErrorKind {
 
 std::string_view errorKindName(ErrorKind k); // "io", "foreign", ...
 
+// What an error says: an id of the database's catalog (db/db_texts.h) and its
+// arguments (names, numbers, paths: never words of a language).
+struct ErrorText {
+    ErrorText() = default;
+    ErrorText(std::string id_, std::vector<std::string> args_ = {}) : id(std::move(id_)), args(std::move(args_)) {}
+    std::string id;
+    std::vector<std::string> args;
+    // What it concerns, said before it ("PATH: …"): a path or a name, "" if none.
+    std::string at;
+    // A text said after it ("; the file was left untouched"), "" if none.
+    std::string tail;
+    std::vector<std::string> tailArgs;
+};
+// `t` in a language (Russian or English).
+std::string renderText(const ErrorText& t, bool russian);
+
 class Error : public std::runtime_error {
 public:
+    // An error whose message has no id yet: what() in English, in every language.
     Error(ErrorKind kind, const std::string& message, std::string detail = {})
         : std::runtime_error(message), kind_(kind), detail_(std::move(detail)) {}
+    // An error said by the catalog: what() is its English.
+    Error(ErrorKind kind, ErrorText text, std::string detail = {});
     ErrorKind kind() const { return kind_; }
+    // The catalog's id and arguments ("" when the message has no id).
+    const std::string& textId() const { return text_.id; }
+    const std::vector<std::string>& textArgs() const { return text_.args; }
+    const ErrorText& catalogText() const { return text_; }
+    // The message in `lang`: the catalog's text, else what().
+    virtual std::string text(Lang lang) const;
     // The library's or the system's own words inside the message, as it
     // said them (SQLite's errmsg, libpq's, strerror's), "" if none: the
     // desktop quotes them in a sentence of its language.
@@ -48,6 +73,7 @@ public:
 private:
     ErrorKind kind_;
     std::string detail_;
+    ErrorText text_;
 };
 
 // Why a database can only be read.
@@ -82,7 +108,7 @@ public:
     ReadOnlyReason reason() const { return reason_; }
     ReadOnlyRefusal refusal() const { return refusal_; }
     // The message in `lang` (what() is the English one).
-    std::string text(Lang lang) const;
+    std::string text(Lang lang) const override;
 
 private:
     std::filesystem::path path_;
@@ -112,6 +138,8 @@ public:
     ValidationError(const std::string& message, std::vector<profile::Finding> findings,
                     profile::Problem problem = {})
         : Error(ErrorKind::Invalid, message), findings_(std::move(findings)), problem_(std::move(problem)) {}
+    ValidationError(ErrorText text, std::vector<profile::Finding> findings, profile::Problem problem = {})
+        : Error(ErrorKind::Invalid, std::move(text)), findings_(std::move(findings)), problem_(std::move(problem)) {}
     // The errors that caused the rejection (severity Error).
     const std::vector<profile::Finding>& findings() const { return findings_; }
     // A rejection without findings (an item the edit cannot even hold): what

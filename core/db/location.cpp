@@ -91,14 +91,13 @@ Location defaultDatabaseLocation() {
         return Location(fs::path(x) / "k528studio" / "k528.db");
     if (const char* h = std::getenv("HOME"); h && *h)
         return Location(fs::path(h) / ".local" / "share" / "k528studio" / "k528.db");
-    throw Error(ErrorKind::Io, "no database location: set K528_DB, XDG_DATA_HOME or HOME");
+    throw Error(ErrorKind::Io, ErrorText{"location.none", {}});
 }
 
 fs::path defaultDatabasePath() {
     const Location l = defaultDatabaseLocation();
     if (!l.isFile())
-        throw Error(ErrorKind::Invalid, "K528_DB names a PostgreSQL database (" + l.text() +
-                                            "), not a file");
+        throw Error(ErrorKind::Invalid, ErrorText{"location.postgres", {l.text()}});
     return l.file();
 }
 

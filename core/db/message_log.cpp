@@ -188,7 +188,7 @@ struct MessageLog::Impl {
 };
 
 MessageLog::MessageLog(Database& db) : d_(std::make_unique<Impl>(db)) {
-    requireSchema(d_->store, 2, "message history");
+    requireSchema(d_->store, 2, "messages");
 }
 
 MessageLog::~MessageLog() = default;

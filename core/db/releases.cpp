@@ -37,10 +37,6 @@ ProgramRelease stateOf(int number, int current, const std::optional<ReleaseEntry
     return p;
 }
 
-std::string programName(std::string_view machine, int number) {
-    return "program L" + std::to_string(number) + " of machine " + std::string(machine);
-}
-
 } // namespace
 
 ReleaseEntry Database::releaseProgram(std::string_view name, int number, const std::string& note,
@@ -52,9 +48,8 @@ ReleaseEntry Database::releaseProgram(std::string_view name, int number, const s
         const auto v = s.programAt(row.id, number, row.info.revision);
         if (!v || !v->text)
             throw Error(ErrorKind::NoRevision,
-                        "machine " + row.info.name + " has no program L" + std::to_string(number) +
-                            " (at revision " + std::to_string(row.info.revision) +
-                            "); nothing was released");
+                        ErrorText{"release.no-program", {row.info.name, std::to_string(number),
+                                                         std::to_string(row.info.revision)}});
         const auto states = s.programStates(row.id, number);
         if (!states.empty() && states.front().released && states.front().revision == v->revision)
             return states.front(); // released already: nothing to write
@@ -81,10 +76,8 @@ ReleaseEntry Database::withdrawProgram(std::string_view name, int number, const 
         const MachineRow row = requireMachine(s, name);
         const auto states = s.programStates(row.id, number);
         if (states.empty() || !states.front().released)
-            throw Error(ErrorKind::Invalid, programName(row.info.name, number) +
-                                                (states.empty() ? " was never released"
-                                                                : " is withdrawn already") +
-                                                "; nothing was written");
+            throw Error(ErrorKind::Invalid, ErrorText{states.empty() ? "release.never" : "release.withdrawn",
+                                                      {row.info.name, std::to_string(number)}});
         const std::string at = formatTimestamp(d_->clock());
         const std::string author = authorOf(s, options.author);
         const ReleaseEntry& released = states.front();
@@ -133,10 +126,9 @@ std::vector<ReleaseEntry> Database::releaseHistory(std::string_view name, int nu
 TransferEntry Database::recordTransfer(TransferEntry entry) {
     Store& s = *d_->store;
     if (entry.direction != "push" && entry.direction != "pull")
-        throw Error(ErrorKind::Invalid, "a transfer is a push or a pull, not \"" + entry.direction + "\"");
+        throw Error(ErrorKind::Invalid, ErrorText{"transfer.direction", {entry.direction}});
     if (entry.result != "ok" && entry.result != "partial" && entry.result != "failed")
-        throw Error(ErrorKind::Invalid,
-                    "a transfer's result is ok, partial or failed, not \"" + entry.result + "\"");
+        throw Error(ErrorKind::Invalid, ErrorText{"transfer.result", {entry.result}});
     if (entry.at.empty())
         entry.at = formatTimestamp(d_->clock());
     if (entry.user.empty())
@@ -161,9 +153,7 @@ std::vector<TransferEntry> Database::transfers(const TransferFilter& filter) con
 }
 
 std::vector<RoleInfo> Store::roles(bool) {
-    throw Error(ErrorKind::Invalid, path().string() +
-                                        ": an SQLite database has one user, who may do everything; "
-                                        "the roles are PostgreSQL's");
+    throw Error(ErrorKind::Invalid, ErrorText{"roles.sqlite", {path().string()}});
 }
 
 void Store::grantRole(const std::string&, const std::string&) {

@@ -52,7 +52,14 @@ struct Refusal {
     bool hotJournal = false; // a read-only connection met a hot journal it cannot roll back
     bool noIndex = false;    // SQLite could not create the -wal/-shm it needs to read
     std::string detail = {}; // SQLite's own words (Error::detail)
+    ErrorText text = {};     // what `what` says, when the catalog says it
 };
+
+// A refusal the catalog says (`what` its English).
+Refusal refusal(ErrorKind kind, ErrorText text) {
+    std::string what = renderText(text, false);
+    return Refusal{kind, std::move(what), false, false, {}, std::move(text)};
+}
 
 // Whether something is at `path`, from stat() alone: the file is never opened
 // here (see readHeader). Throws Io for a folder or anything but a regular file.
@@ -65,7 +72,7 @@ bool databaseFileExists(const fs::path& path) {
         return false;
     }
     if (fs::is_directory(st))
-        throw Error(ErrorKind::Io, path.string() + ": is a directory, not a database file");
+        throw Error(ErrorKind::Io, ErrorText{"open.directory", {path.string()}});
     if (!fs::is_regular_file(st))
         throw Error(ErrorKind::Io,
                     path.string() + ": is not a regular file (" +
@@ -106,28 +113,18 @@ FileHeader readHeader(sqlite3* db, int latest) {
         throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc), false, false, sqlite3_errstr(rc)};
     static constexpr char kMagic[] = "SQLite format 3";
     if (got < 100 || std::memcmp(buf, kMagic, sizeof kMagic) != 0)
-        throw Refusal{ErrorKind::Foreign,
-                      "not a K528 Studio database: " +
-                          (got < 100 ? "the file has only " + std::to_string(got) +
-                                           " bytes, too few for an SQLite database"
-                                     : std::string("the file does not start with the SQLite header "
-                                                   "(another kind of file, or a database whose "
-                                                   "first page is damaged)"))};
+        throw refusal(ErrorKind::Foreign, got < 100 ? ErrorText{"open.foreign-short", {std::to_string(got)}}
+                                                    : ErrorText{"open.foreign-header", {}});
     h.userVersion = be32(buf + 60);
     h.applicationId = be32(buf + 68);
     if (h.applicationId != 0 && h.applicationId != static_cast<std::uint32_t>(kApplicationId))
-        throw Refusal{ErrorKind::Foreign,
-                      "not a K528 Studio database: it is another program's SQLite database "
-                      "(application_id " +
-                          hex32(h.applicationId) + ", ours is " +
-                          hex32(static_cast<std::uint32_t>(kApplicationId)) + ")"};
+        throw refusal(ErrorKind::Foreign,
+                      ErrorText{"open.foreign-program",
+                                {hex32(h.applicationId), hex32(static_cast<std::uint32_t>(kApplicationId))}});
     if (h.applicationId == static_cast<std::uint32_t>(kApplicationId) &&
         h.userVersion > static_cast<std::uint32_t>(latest))
-        throw Refusal{ErrorKind::TooNew, "the database has schema version " +
-                                             std::to_string(h.userVersion) +
-                                             ", written by a newer K528 Studio; this program "
-                                             "knows versions up to " +
-                                             std::to_string(latest) + ". Use the newer program"};
+        throw refusal(ErrorKind::TooNew,
+                      ErrorText{"open.too-new", {std::to_string(h.userVersion), std::to_string(latest)}});
     return h;
 }
 
@@ -215,16 +212,12 @@ Checked inspect(sqlite3* db, int latest) {
     if (c.appId == 0 && c.version == 0 && c.objects == 0)
         return c; // empty: ours to fill
     if (c.appId != kApplicationId)
-        throw Refusal{ErrorKind::Foreign,
-                      "not a K528 Studio database: it is another program's SQLite database "
-                      "(application_id " +
-                          hex32(static_cast<std::uint32_t>(c.appId)) + ", " +
-                          std::to_string(c.objects) + " schema objects)"};
+        throw refusal(ErrorKind::Foreign,
+                      ErrorText{"open.foreign-objects",
+                                {hex32(static_cast<std::uint32_t>(c.appId)), std::to_string(c.objects)}});
     if (c.version > latest)
-        throw Refusal{ErrorKind::TooNew,
-                      "the database has schema version " + std::to_string(c.version) +
-                          ", written by a newer K528 Studio; this program knows versions up to " +
-                          std::to_string(latest)};
+        throw refusal(ErrorKind::TooNew,
+                      ErrorText{"open.too-new", {std::to_string(c.version), std::to_string(latest)}});
     if (c.version < 1)
         throw Refusal{ErrorKind::Corrupt, "K528 Studio database without a schema version"};
     std::string problems;
@@ -279,13 +272,12 @@ std::unique_ptr<SqliteStore> SqliteStore::open(const fs::path& path, const OpenO
     const int latest = migrations.back().version;
     const bool exists = databaseFileExists(path);
     if (!exists && (!options.create || options.readOnly))
-        throw Error(ErrorKind::Io, "no database at " + path.string());
+        throw Error(ErrorKind::Io, ErrorText{"open.no-database", {path.string()}});
     if (!exists) {
         std::error_code ec;
         const fs::path parent = path.parent_path();
         if (!parent.empty() && !fs::is_directory(parent, ec))
-            throw Error(ErrorKind::Io, "cannot create the database " + path.string() +
-                                           ": the folder " + parent.string() + " does not exist");
+            throw Error(ErrorKind::Io, ErrorText{"open.no-folder", {path.string(), parent.string()}});
         if (::faccessat(AT_FDCWD, parent.empty() ? "." : parent.c_str(), W_OK, AT_EACCESS) != 0)
             throw ReadOnlyError(path,
                                 errno == EROFS ? ReadOnlyReason::FileSystem : ReadOnlyReason::Folder,
@@ -299,9 +291,7 @@ std::unique_ptr<SqliteStore> SqliteStore::open(const fs::path& path, const OpenO
     const auto [appId, version, objects] = s->connectAndInspect(options, latest);
     const bool empty = appId == 0 && version == 0 && objects == 0;
     if (options.requireEmpty && !empty)
-        throw Error(ErrorKind::Invalid, path.string() + ": not an empty database (schema version " +
-                                            std::to_string(version) +
-                                            "); a copy goes only into a new or empty one");
+        throw Error(ErrorKind::Invalid, ErrorText{"open.not-empty", {path.string(), std::to_string(version)}});
     s->applyConnectionSettings();
     s->report_.created = empty;
     s->report_.fromVersion = static_cast<int>(version);
@@ -376,10 +366,7 @@ void SqliteStore::beginWrite() {
             throw ReadOnlyError(path_, whyReadOnly(path_));
         if (e.kind() != ErrorKind::Busy)
             throw;
-        throw Error(ErrorKind::Busy, path_.string() +
-                                         ": another process is writing to the database and "
-                                         "kept it locked longer than the busy timeout; "
-                                         "nothing was written, try again");
+        throw Error(ErrorKind::Busy, ErrorText{"busy.write", {path_.string()}});
     }
 }
 
@@ -450,7 +437,16 @@ Checked SqliteStore::connectAndInspect(const OpenOptions& options, int latest) {
                          : std::string("; the file was left untouched");
     };
     const auto refused = [&](const Refusal& r) {
-        return Error(r.kind, path_.string() + ": " + r.what + untouched(), r.detail);
+        if (r.text.id.empty())
+            return Error(r.kind, path_.string() + ": " + r.what + untouched(), r.detail);
+        ErrorText text = r.text;
+        text.at = path_.string();
+        if (existed) {
+            text.tail = recovered ? "open.recovered" : "open.untouched";
+            if (recovered)
+                text.tailArgs = {journal.string()};
+        }
+        return Error(r.kind, std::move(text), r.detail);
     };
     // One connection: read-write when the file may be written (SQLite falls
     // back to read-only when it may not), read-only when asked.

@@ -8,7 +8,7 @@ namespace k528::db {
 
 namespace {
 
-constexpr std::string_view kWhat = "time in each state of the shop's machines";
+constexpr std::string_view kWhat = "state-times"; // the time in each state of the shop's machines
 
 } // namespace
 
@@ -19,10 +19,8 @@ void addStateTimes(Database& d, const std::vector<StateTime>& rows) {
     for (const StateTime& r : rows) {
         const bool known = r.state == "run" || r.state == "idle" || r.state == "alarm" || r.state == "offline";
         if (r.machine.empty() || r.day.size() != 10 || !known || r.ms < 0)
-            throw Error(ErrorKind::Invalid, "a time in a state needs a machine, a day (YYYY-MM-DD), run, idle, "
-                                            "alarm or offline and 0 ms or more, not '" +
-                                                r.machine + "' '" + r.day + "' '" + r.state + "' " +
-                                                std::to_string(r.ms) + " ms; nothing was written");
+            throw Error(ErrorKind::Invalid,
+                        ErrorText{"state-time.invalid", {r.machine, r.day, r.state, std::to_string(r.ms)}});
     }
     if (rows.empty())
         return;

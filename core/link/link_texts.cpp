@@ -1,7 +1,6 @@
 #include "link/link_texts.h"
 
 #include "profile/problem.h"
-#include "profile/problem_russian.h"
 #include "program/diagnostic_texts.h"
 
 #include <array>

@@ -8,20 +8,17 @@
 #pragma once
 
 #include "profile/problem.h"
+#include "util/text_catalog.h"
 
-#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace k528::plc {
 
-// One text: an id, its Russian and English (%1..%9 its arguments; a
+// The catalog: each id with its Russian and English (%1..%9 its arguments; a
 // problem's `within` fill the arguments after its own).
-struct DescriptionText {
-    std::string_view id, ru, en;
-};
-std::span<const DescriptionText> descriptionTexts();
-const DescriptionText* findDescriptionText(std::string_view id);
+util::TextCatalog descriptionTexts();
 
 // `p` in a language; an id missing from the catalog says the id and its
 // arguments (never thrown away).

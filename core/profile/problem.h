@@ -1,16 +1,17 @@
 // What is wrong with a machine file, a constants CSV or one of their items,
-// as an id and its arguments: the command line says it in English from the
-// catalog below (problemTexts(): FileError::what(), the check... functions),
-// the desktop says it in its window's language by the id
-// (app/studio/session/core_texts.cpp). A new text gets its id here and its
-// translation there; studio.core_texts fails on an id the desktop lacks.
+// as an id and its arguments: the command line says it in Russian or English
+// from the catalog below (problemTexts(): FileError::what(), the check...
+// functions, problemText), the desktop says it in its window's language by
+// the id (app/studio/session/core_texts.cpp). A new text gets its id here and
+// its translation there; studio.ui_language fails on an id the desktop lacks
+// or says differently.
 #pragma once
 
 #include "catalog/messages.h"
+#include "util/text_catalog.h"
 #include "util/text_pattern.h"
 
 #include <cstdint>
-#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,13 +32,12 @@ struct Problem {
 
 Problem problem(std::string id, std::vector<std::string> args = {});
 
-// One text of the catalog: an id and its English (%1..%9 its arguments).
-struct ProblemText {
-    std::string_view id, en;
-};
-std::span<const ProblemText> problemTexts();
-// The English of `id` ("" if unknown).
-std::string_view problemEnglish(std::string_view id);
+// The catalog: each id with its Russian and English (%1..%9 its arguments; a
+// problem's `within` fill the arguments after its own).
+util::TextCatalog problemTexts();
+// `p` in a language; an id missing from the catalog says the id and its
+// arguments (never thrown away).
+std::string problemText(const Problem& p, bool russian);
 // util/text_pattern.h: the one filler of core's texts and of their
 // translations in the desktop.
 using util::fillPattern;

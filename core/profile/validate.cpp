@@ -435,29 +435,30 @@ std::string checkSetting(std::string_view key, std::string_view value) { return 
 std::vector<Finding> validate(const MachineProfile& p) {
     std::vector<Finding> out = checkCParams(p.cValues(), &p.programs);
     Collector col;
-    const auto item = [&](const std::string& problem, std::string subject) {
+    // An item's problem in both languages (core's catalog of problems).
+    const auto item = [&](const Problem& problem, std::string subject) {
         if (!problem.empty())
-            col.add(Severity::Error, {}, std::nullopt, std::move(subject), problem, problem);
+            col.add(Severity::Error, {}, std::nullopt, std::move(subject), problemText(problem, true), problem.text());
     };
     for (const auto& [n, v] : p.r)
-        item(checkRPreset(n, v), "R" + std::to_string(n));
+        item(rPresetProblem(n, v), "R" + std::to_string(n));
     for (const auto& [n, text] : p.programs)
-        item(checkProgram(n, text), "L" + std::to_string(n));
+        item(programProblem(n, text), "L" + std::to_string(n));
     for (const auto& [n, text] : p.messages)
-        item(checkMessage(n, text), "#" + std::to_string(n));
+        item(messageProblem(n, text), "#" + std::to_string(n));
     for (cat::PlcGroup g : cat::kPlcGroups)
         for (const auto& [k, text] : p.plcTexts(g))
-            item(checkPlcText(g, k, text),
+            item(plcTextProblem(g, k, text),
                  std::string(1, cat::plcGroupLetter(g)) + (k < 10 ? "0" : "") + std::to_string(k));
     for (const auto& [key, value] : p.simulation.entries()) {
-        item(checkSetting(key, value), "simulation " + key);
+        item(settingProblem(key, value), "simulation " + key);
         if (Settings::keyError(key).empty() && !findSimulationKey(key))
             col.add(Severity::Warning, {}, std::nullopt, "simulation " + key,
                     "Параметр моделирования " + key + " не из реестра (опечатка?)",
                     "Simulation setting " + key + " is not in the registry (a typo?)");
     }
-    item(checkName(p.name), "name");
-    item(checkTitle(p.title), "title");
+    item(nameProblem(p.name), "name");
+    item(titleProblem(p.title), "title");
     out.insert(out.end(), col.out.begin(), col.out.end());
     return out;
 }

@@ -8,18 +8,14 @@
 #pragma once
 
 #include "program/diagnostic.h"
+#include "util/text_catalog.h"
 
-#include <span>
 #include <string>
-#include <string_view>
 
 namespace k528::program {
 
-struct DiagnosticText {
-    std::string_view id, ru, en;
-};
-std::span<const DiagnosticText> diagnosticTexts();
-const DiagnosticText* findDiagnosticText(std::string_view id);
+// The catalog: each id with its Russian and English.
+util::TextCatalog diagnosticTexts();
 
 // The text of `d` (or of a part) in a language; an id missing from the
 // catalog says the id and its arguments (never thrown away).

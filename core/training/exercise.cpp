@@ -1,4 +1,5 @@
 #include "training/exercise.h"
+#include "training/exercise_texts.h"
 
 #include "profile/builtin.h"
 #include "resources/embedded.h"
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <span>
 
 namespace k528::training {
 
@@ -64,6 +66,31 @@ std::string_view endCheckName(EndCheck::Kind k) {
 
 namespace {
 
+// "<source>: <path>: <why>" in a language.
+std::string exerciseErrorText(const std::string& source, const std::optional<std::string>& at,
+                              std::string_view id, std::span<const std::string> args, bool russian) {
+    std::string s = source + ": ";
+    if (at)
+        s += (at->empty() ? exerciseTexts().render("the-file", {}, russian) : *at) + ": ";
+    return s + exerciseTexts().render(id, args, russian);
+}
+
+} // namespace
+
+ExerciseError::ExerciseError(std::string source, std::optional<std::string> at, std::string id,
+                             std::vector<std::string> args)
+    : std::runtime_error(exerciseErrorText(source, at, id, args, false)),
+      message_(std::string(what()).substr(source.size() + 2)), source_(std::move(source)),
+      at_(std::move(at)), id_(std::move(id)), args_(std::move(args)) {}
+
+std::string ExerciseError::text(bool russian) const {
+    if (id_.empty())
+        return what();
+    return exerciseErrorText(source_, at_, id_, args_, russian);
+}
+
+namespace {
+
 // A JSON value with the path that leads to it, for messages that name the
 // key: "drawing.contour[2].d: expected a number".
 class Node {
@@ -71,19 +98,20 @@ public:
     Node(const Json& v, std::string path, const std::string& source)
         : v_(v), path_(std::move(path)), source_(source) {}
 
-    [[noreturn]] void fail(const std::string& why) const {
-        throw ExerciseError(source_, (path_.empty() ? std::string("the file") : path_) + ": " + why);
+    // What is wrong here: an id of exercise_texts.h and its arguments.
+    [[noreturn]] void fail(std::string id, std::vector<std::string> args = {}) const {
+        throw ExerciseError(source_, path_, std::move(id), std::move(args));
     }
     const Json& json() const { return v_; }
     const std::string& path() const { return path_; }
     bool has(std::string_view key) const { return v_.is_object() && v_.contains(key); }
     Node at(std::string_view key) const {
         if (!v_.is_object())
-            fail("expected an object");
+            fail("expected-object");
         const auto it = v_.find(key);
         const std::string p = path_.empty() ? std::string(key) : path_ + "." + std::string(key);
         if (it == v_.end())
-            throw ExerciseError(source_, p + ": missing");
+            throw ExerciseError(source_, p, "missing");
         return Node(*it, p, source_);
     }
     std::optional<Node> opt(std::string_view key) const {
@@ -98,38 +126,38 @@ public:
     // Keys other than `known` are refused (a misspelt key must not pass unnoticed).
     void only(std::initializer_list<std::string_view> known) const {
         if (!v_.is_object())
-            fail("expected an object");
+            fail("expected-object");
         for (auto it = v_.begin(); it != v_.end(); ++it)
             if (std::find(known.begin(), known.end(), it.key()) == known.end())
                 Node(*it, path_.empty() ? it.key() : path_ + "." + it.key(), source_)
-                    .fail("unknown key");
+                    .fail("unknown-key");
     }
     std::string str() const {
         if (!v_.is_string())
-            fail("expected a string");
+            fail("expected-string");
         return v_.get<std::string>();
     }
     double num() const {
         if (!v_.is_number())
-            fail("expected a number");
+            fail("expected-number");
         const double d = v_.get<double>();
         if (!std::isfinite(d))
-            fail("expected a finite number");
+            fail("expected-finite");
         return d;
     }
     std::int64_t integer() const {
         if (!v_.is_number_integer())
-            fail("expected a whole number");
+            fail("expected-whole");
         return v_.get<std::int64_t>();
     }
     bool boolean() const {
         if (!v_.is_boolean())
-            fail("expected true or false");
+            fail("expected-bool");
         return v_.get<bool>();
     }
     void array() const {
         if (!v_.is_array())
-            fail("expected an array");
+            fail("expected-array");
     }
     // A text: one string, or an array of lines joined with "\n".
     std::string text() const {
@@ -155,12 +183,12 @@ private:
 Tolerance tolerance(const Node& n) {
     n.array();
     if (n.size() != 2)
-        n.fail("expected [lower, upper] in mm");
+        n.fail("tolerance-pair");
     Tolerance t{n.item(0).num(), n.item(1).num()};
     if (t.lowerMm > t.upperMm)
-        n.fail("the lower deviation is above the upper one");
+        n.fail("tolerance-order");
     if (std::fabs(t.lowerMm) > 10 || std::fabs(t.upperMm) > 10)
-        n.fail("deviations are within ±10 mm");
+        n.fail("tolerance-range");
     return t;
 }
 
@@ -170,7 +198,7 @@ engine::AxisId axisOf(const Node& n) {
         return engine::AxisId::X;
     if (a == "Z")
         return engine::AxisId::Z;
-    n.fail("expected \"X\" or \"Z\"");
+    n.fail("axis");
 }
 
 machine::FaultSpec faultSpec(const Node& n) {
@@ -183,7 +211,7 @@ machine::FaultSpec faultSpec(const Node& n) {
         std::string all;
         for (int k = 0; k < machine::kFaultCount; ++k)
             all += (k ? ", " : "") + std::string(machine::faultName(static_cast<machine::Fault>(k)));
-        n.at("fault").fail("unknown fault '" + name + "' (faults: " + all + ")");
+        n.at("fault").fail("fault-unknown", {name, all});
     }
     machine::FaultSpec f;
     f.kind = static_cast<machine::Fault>(kind);
@@ -193,7 +221,7 @@ machine::FaultSpec faultSpec(const Node& n) {
         f.axis = axisOf(n.at("axis"));
         f.detail = static_cast<int>(n.at("channel").integer());
         if (f.detail != 1 && f.detail != 2)
-            n.at("channel").fail("the channel is 1 or 2");
+            n.at("channel").fail("channel");
         break;
     }
     case Fault::DriveNotReady:
@@ -204,7 +232,7 @@ machine::FaultSpec faultSpec(const Node& n) {
         f.axis = axisOf(n.at("axis"));
         const std::string d = n.at("side").str();
         if (d != "+" && d != "-")
-            n.at("side").fail("the side is \"+\" or \"-\"");
+            n.at("side").fail("side");
         f.detail = d == "+" ? 1 : -1;
         break;
     }
@@ -234,37 +262,37 @@ FaultInjection injection(const Node& n) {
     if (const auto a = n.opt("at_s")) {
         j.atS = a->num();
         if (*j.atS < 0)
-            a->fail("a time after the start is >= 0");
+            a->fail("time-after-start");
     }
     if (const auto f = n.opt("at_frame")) {
         f->only({"program", "n"});
         FrameAt at{static_cast<int>(f->at("program").integer()),
                    static_cast<int>(f->at("n").integer())};
         if (at.program < 1 || at.program > 99 || at.n < 1 || at.n > 999)
-            f->fail("expected {\"program\": 1..99, \"n\": 1..999}");
+            f->fail("frame-at");
         j.atFrame = at;
     }
     if (j.atS.has_value() == j.atFrame.has_value())
-        n.fail("give at_s or at_frame (one of them)");
+        n.fail("at-one");
     const std::string until = n.opt("until") ? n.at("until").str() : "never";
     if (until == "never") {
         j.until = FaultInjection::Until::Never;
     } else if (until == "moved_off") {
         if (j.fault.kind != machine::Fault::LimitSwitch)
-            n.at("until").fail("only a limit switch is left by moving off it");
+            n.at("until").fail("moved-off");
         j.until = FaultInjection::Until::MovedOff;
         if (const auto m = n.opt("move_off_mm")) {
             j.moveOffMm = m->num();
             if (j.moveOffMm <= 0 || j.moveOffMm > 50)
-                m->fail("expected 0 < mm <= 50");
+                m->fail("mm-50");
         }
     } else if (until == "time") {
         j.until = FaultInjection::Until::Time;
         j.forS = n.at("for_s").num();
         if (j.forS <= 0)
-            n.at("for_s").fail("expected seconds > 0");
+            n.at("for_s").fail("seconds");
     } else {
-        n.at("until").fail("expected \"never\", \"moved_off\" or \"time\"");
+        n.at("until").fail("until");
     }
     return j;
 }
@@ -275,19 +303,19 @@ OperatorStep step(const Node& n) {
     OperatorStep st;
     const std::optional<OperatorStep::Kind> kind = kindNamed(kStepNames, s);
     if (!kind)
-        n.at("step").fail("expected home, preset, acknowledge, position, new_wheel or completed");
+        n.at("step").fail("step");
     st.kind = *kind;
     if (st.kind == OperatorStep::Kind::Preset) {
         st.r = static_cast<int>(n.at("r").integer());
         if (st.r < 0 || st.r > 231)
-            n.at("r").fail("a writable R-parameter 0..231");
+            n.at("r").fail("r-writable");
         st.value = n.at("value").integer();
     } else if (st.kind == OperatorStep::Kind::Position) {
         st.xMm = n.at("x").num();
         st.zMm = n.at("z").num();
         st.toleranceMm = n.at("tolerance").num();
         if (st.toleranceMm <= 0)
-            n.at("tolerance").fail("expected mm > 0");
+            n.at("tolerance").fail("mm-positive");
     }
     return st;
 }
@@ -301,15 +329,15 @@ EndCheck endCheck(const Node& n) {
             return {EndCheck::Kind::CoolantOff};
         if (s == "gauge_out")
             return {EndCheck::Kind::GaugeOut};
-        n.fail("expected spindle_stopped, coolant_off, gauge_out or {\"r\": n, \"delta\"|\"value\": v}");
+        n.fail("end-check");
     }
     n.only({"r", "delta", "value"});
     EndCheck c;
     c.r = static_cast<int>(n.at("r").integer());
     if (c.r < 0 || c.r > 299)
-        n.at("r").fail("an R-parameter 0..299");
+        n.at("r").fail("r-number");
     if (n.has("delta") == n.has("value"))
-        n.fail("give delta or value (one of them)");
+        n.fail("delta-or-value");
     c.kind = n.has("delta") ? EndCheck::Kind::RDelta : EndCheck::Kind::RValue;
     c.value = n.at(c.kind == EndCheck::Kind::RDelta ? "delta" : "value").integer();
     return c;
@@ -322,29 +350,29 @@ Drawing drawing(const Node& n) {
         d.tolerance = tolerance(*t);
     const int kinds = n.has("contour") + n.has("reference") + n.has("bore");
     if (kinds != 1)
-        n.fail("give one of contour, reference or bore");
+        n.fail("drawing-one");
     if (const auto c = n.opt("contour")) {
         d.kind = Drawing::Kind::Contour;
         c->array();
         if (c->size() < 3)
-            c->fail("a contour has at least 3 points");
+            c->fail("contour-points");
         for (std::size_t i = 0; i < c->size(); ++i) {
             const Node p = c->item(i);
             p.only({"z", "d", "tol"});
             ContourPoint q{p.at("z").num(), p.at("d").num(), std::nullopt};
             if (q.dMm < 0)
-                p.at("d").fail("a diameter is >= 0");
+                p.at("d").fail("diameter-nonnegative");
             if (const auto t = p.opt("tol"))
                 q.tol = tolerance(*t);
             if (i > 0 && q.zMm == d.contour.back().zMm && q.dMm == d.contour.back().dMm)
-                p.fail("the same point as the one before");
+                p.fail("same-point");
             d.contour.push_back(q);
         }
         if (d.contour.front().dMm != 0 || d.contour.back().dMm != 0)
-            c->fail("a contour starts and ends on the axis (d = 0)");
+            c->fail("contour-axis");
     } else if (const auto r = n.opt("reference")) {
         if (!r->boolean())
-            r->fail("expected true (the reference program's part is the drawing)");
+            r->fail("reference-true");
         d.kind = Drawing::Kind::Reference;
     } else {
         const Node b = n.at("bore");
@@ -352,7 +380,7 @@ Drawing drawing(const Node& n) {
         d.kind = Drawing::Kind::Bore;
         d.boreMm = b.at("d").num();
         if (d.boreMm <= 0)
-            b.at("d").fail("expected a diameter > 0");
+            b.at("d").fail("diameter-positive");
         d.boreTol = tolerance(b.at("tol"));
     }
     return d;
@@ -360,11 +388,10 @@ Drawing drawing(const Node& n) {
 
 std::string idOk(std::string_view id, const std::string& source) {
     if (id.empty() || id.size() > 64)
-        throw ExerciseError(source, "an exercise id has 1..64 characters");
+        throw ExerciseError(source, std::nullopt, "id-length");
     for (char c : id)
         if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'))
-            throw ExerciseError(source, "an exercise id is made of a-z, 0-9 and '-': '" +
-                                            std::string(id) + "'");
+            throw ExerciseError(source, std::nullopt, "id-chars", {std::string(id)});
     return std::string(id);
 }
 
@@ -390,10 +417,10 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
     Exercise e;
     e.id = idOk(id, source);
     if (n.at("format").integer() != 1)
-        n.at("format").fail("this reader knows format 1");
+        n.at("format").fail("format");
     e.machine = n.at("machine").str();
     if (!profile::isBuiltin(e.machine))
-        n.at("machine").fail("not a built-in machine: '" + e.machine + "'");
+        n.at("machine").fail("machine", {e.machine});
     e.title = n.at("title").bilingual();
     e.task = n.at("task").bilingual();
     if (const auto h = n.opt("hints")) {
@@ -404,10 +431,10 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
     if (const auto b = n.opt("blank")) {
         b->only({"ucg", "z_mm"});
         e.ucg = b->at("ucg").str();
-        std::string why;
-        e.blank = stock::parseUcg(e.ucg, &why);
+        std::string why, whyId;
+        e.blank = stock::parseUcg(e.ucg, &why, &whyId);
         if (!e.blank)
-            b->at("ucg").fail(why);
+            b->at("ucg").fail("ucg." + whyId);
         if (const auto z = b->opt("z_mm"))
             e.blankZMm = z->num();
     }
@@ -415,7 +442,7 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
         t->only({"width_mm"});
         e.tool.widthMm = t->at("width_mm").num();
         if (e.tool.widthMm <= 0 || e.tool.widthMm > 50)
-            t->at("width_mm").fail("expected 0 < mm <= 50");
+            t->at("width_mm").fail("mm-50");
     }
     if (const auto c = n.opt("chuck")) {
         c->only({"face_z_mm", "diameter_mm", "jaw_length_mm", "jaw_height_mm"});
@@ -430,31 +457,31 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
         const Node z = r->at("z_mm");
         z.array();
         if (z.size() != 2)
-            z.fail("expected [from, to] in mm");
+            z.fail("zone");
         ring.zMinMm = z.item(0).num();
         ring.zMaxMm = z.item(1).num();
         if (ring.zMaxMm <= ring.zMinMm)
-            z.fail("from < to");
+            z.fail("zone-order");
         ring.outerMm = r->at("outer_d").num();
         ring.wheelWidthMm = r->at("wheel_width_mm").num();
         if (ring.wheelWidthMm <= 0)
-            r->at("wheel_width_mm").fail("expected mm > 0");
+            r->at("wheel_width_mm").fail("mm-positive");
         e.ring = ring;
     }
     if (e.blank && e.ring)
-        n.fail("an exercise has a blank (lathe) or a ring (grinder), not both");
+        n.fail("blank-and-ring");
     e.drawing = n.opt("drawing") ? drawing(n.at("drawing")) : Drawing{};
     if (e.drawing.kind == Drawing::Kind::Bore && !e.ring)
-        n.at("drawing").fail("a bore is drawn on the grinder's ring: give \"ring\"");
+        n.at("drawing").fail("bore-needs-ring");
     if ((e.drawing.kind == Drawing::Kind::Contour || e.drawing.kind == Drawing::Kind::Reference) &&
         !e.blank)
-        n.at("drawing").fail("a turned part needs a blank: give \"blank\"");
+        n.at("drawing").fail("part-needs-blank");
     if (const auto s = n.opt("setup"))
         s->only({"r"});
     if (n.has("setup") && n.at("setup").has("r")) {
         const Node r = n.at("setup").at("r");
         if (!r.json().is_object())
-            r.fail("expected {\"R-number\": value}");
+            r.fail("r-value");
         for (auto it = r.json().begin(); it != r.json().end(); ++it) {
             const Node v(*it, r.path() + "." + it.key(), source);
             int number = -1;
@@ -466,7 +493,7 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
             } catch (const std::exception&) {
             }
             if (number < 0 || number > 231)
-                v.fail("a writable R-parameter 0..231");
+                v.fail("r-writable");
             e.setupR[number] = v.integer();
         }
     }
@@ -490,7 +517,7 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
         if (const auto c = l->opt("cycle_time_s")) {
             e.limits.cycleTimeS = c->num();
             if (e.limits.cycleTimeS <= 0)
-                c->fail("expected seconds > 0");
+                c->fail("seconds");
         }
         if (const auto a = l->opt("alarms_allowed")) {
             a->array();
@@ -502,7 +529,7 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
         s->only({"pass_score"});
         e.scoring.passScore = static_cast<int>(s->at("pass_score").integer());
         if (e.scoring.passScore < 0 || e.scoring.passScore > 100)
-            s->at("pass_score").fail("expected 0..100");
+            s->at("pass_score").fail("score");
     }
     e.reference = n.at("reference").text();
     if (const auto g = n.opt("given"))
@@ -516,7 +543,7 @@ Course readCourse(std::string_view text, std::string_view sourceView) {
     const Node n(root, "", source);
     n.only({"format", "id", "title", "exercises"});
     if (n.at("format").integer() != 1)
-        n.at("format").fail("this reader knows format 1");
+        n.at("format").fail("format");
     Course c;
     c.id = idOk(n.at("id").str(), source);
     c.title = n.at("title").bilingual();
@@ -538,7 +565,7 @@ constexpr std::string_view kCoursePath = "exercises/course.json";
 std::string dataOf(std::string_view path) {
     const auto d = resources::find(path);
     if (!d)
-        throw ExerciseError(std::string(path), "not among the embedded resources");
+        throw ExerciseError(std::string(path), std::nullopt, "not-embedded");
     return std::string(*d);
 }
 } // namespace

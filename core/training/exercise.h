@@ -27,17 +27,31 @@
 
 namespace k528::training {
 
-// An exercise or course file that cannot be read: "<source>: <path>: <why>".
+// An exercise or course file that cannot be read: "<source>: <path>: <why>",
+// the why an id of exercise_texts.h and its arguments; what() is English.
 class ExerciseError : public std::runtime_error {
 public:
+    // A message without an id (the JSON parser's own words).
     ExerciseError(std::string source, std::string message)
-        : std::runtime_error(source + ": " + message), source_(std::move(source)),
-          message_(std::move(message)) {}
+        : std::runtime_error(source + ": " + message), message_(std::move(message)),
+          source_(std::move(source)) {}
+    // `at`: the key's path in the document ("" for the file itself, nullopt
+    // for none), `id` and `args` the catalog's.
+    ExerciseError(std::string source, std::optional<std::string> at, std::string id,
+                  std::vector<std::string> args = {});
     const std::string& source() const { return source_; }
+    // What is wrong, in English, after the source.
     const std::string& message() const { return message_; }
+    const std::string& textId() const { return id_; }
+    const std::vector<std::string>& textArgs() const { return args_; }
+    // The whole error in a language ("<source>: <path>: <why>").
+    std::string text(bool russian) const;
 
 private:
-    std::string source_, message_;
+    std::string message_, source_;
+    std::optional<std::string> at_;
+    std::string id_;
+    std::vector<std::string> args_;
 };
 
 // Deviations of a size in mm: [lower, upper]. For a diameter (a cylinder,

@@ -2,7 +2,6 @@
 #include "training/texts.h"
 
 #include "catalog/training_texts.h"
-#include "profile/problem.h"
 #include "units/units.h"
 
 #include <cmath>
@@ -19,12 +18,7 @@ std::vector<std::string> argsIn(std::span<const TextArg> args, Language l) {
 }
 
 std::string render(const Text& t, Language l) {
-    if (const catalog::TrainingText* tpl = catalog::findTrainingText(t.id))
-        return profile::fillPattern(l == Language::Ru ? tpl->ru : tpl->en, argsIn(t.args, l));
-    std::string out = t.id;
-    for (const TextArg& a : t.args)
-        out += " " + a.in(l);
-    return out;
+    return catalog::trainingTexts().render(t.id, argsIn(t.args, l), l == Language::Ru);
 }
 
 std::string mmArg(double mm) {

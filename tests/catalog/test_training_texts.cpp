@@ -28,20 +28,20 @@ class TestTrainingTexts : public QObject {
 private slots:
     void everyIdOnceInBothLanguages() {
         std::set<std::string_view> ids;
-        QVERIFY(trainingTexts().size() >= 50);
-        for (const TrainingText& t : trainingTexts()) {
+        QVERIFY(trainingTexts().texts().size() >= 50);
+        for (const util::CatalogText& t : trainingTexts().texts()) {
             QVERIFY2(ids.insert(t.id).second, std::string(t.id).c_str());
             QVERIFY2(!t.ru.empty() && !t.en.empty(), std::string(t.id).c_str());
             QVERIFY(utf8::isValid(t.ru) && utf8::isValid(t.en));
             QVERIFY2(arguments(t.ru) == arguments(t.en), std::string(t.id).c_str());
-            QCOMPARE(findTrainingText(t.id), &t);
+            QCOMPARE(trainingTexts().find(t.id), &t);
         }
-        QVERIFY(findTrainingText("no-such-text") == nullptr);
+        QVERIFY(trainingTexts().find("no-such-text") == nullptr);
         // The collisions by the prove-out's rule ids (core/proveout/rules.h).
         for (const char* id : {"collision.rapid-into-material", "collision.tool-into-chuck.jaws",
                                "collision.feed-spindle-stopped", "collision.manual-into-material",
                                "collision.rapid-into-material.ring"})
-            QVERIFY2(findTrainingText(id), id);
+            QVERIFY2(trainingTexts().find(id), id);
     }
 };
 

@@ -34,6 +34,14 @@ bool writeFile(const QString& path, const QByteArray& data) {
     return f.write(data) == data.size();
 }
 
+// Three English words in a row ("no machine named", "is not a"): a sentence a
+// Russian run must not print (names such as training-lathe or
+// constants.lock, options and paths are not words).
+bool hasEnglishSentence(const QString& text) {
+    static const QRegularExpression words(QStringLiteral("(?:^|[\\s(«'\"])(?:[A-Za-z]+ ){2,}[A-Za-z]+(?=[\\s,;:)»'\"?!]|\\.(?:\\s|$)|$)"));
+    return text.contains(words);
+}
+
 // The line number (1-based) of the first line starting with `prefix`.
 int lineOf(const QString& text, const QString& prefix) {
     const QStringList lines = text.split('\n');
@@ -86,10 +94,13 @@ private slots:
 
     void explicitMissingDatabaseIsNotCreated() {
         K528_SQLITE_ONLY();
-        const auto r = db({"machines"});
+        auto r = db({"machines", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("no database at " + db_), qPrintable(r.err));
         QVERIFY(r.err.contains("k528 db init --db"));
+        r = db({"machines"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("нет базы данных " + db_ + " (создать её: k528 db init --db"), qPrintable(r.err));
         QVERIFY(!QFile::exists(db_));
     }
 
@@ -189,7 +200,7 @@ private slots:
         QCOMPARE(o["findings"].toArray().size(), 0);
 
         // Errors.
-        r = db({"show", "lathe-9"});
+        r = db({"show", "lathe-9", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.err.contains("no machine \"lathe-9\""));
         QVERIFY(r.err.contains("grinder-205, training-lathe"));
@@ -197,7 +208,7 @@ private slots:
         QCOMPARE(db({"show", "grinder-205", "--r", "300"}).exitCode, 2);
         QCOMPARE(db({"show", "grinder-205", "--c", "1", "--programs"}).exitCode, 2);
         QCOMPARE(db({"show"}).exitCode, 2);
-        r = db({"show", "grinder-205@2"});
+        r = db({"show", "grinder-205@2", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.err.contains("has revisions 1..1; there is no revision 2"));
         QCOMPARE(db({"show", "grinder-205@x"}).exitCode, 2);
@@ -339,12 +350,12 @@ private slots:
     // `db set` with one item twice names it instead of keeping the last.
     void setRefusesARepeatedItem() {
         QCOMPARE(db({"init"}).exitCode, 0);
-        auto r = db({"set", "grinder-205", "C022=2133", "C022=2000"});
+        auto r = db({"set", "grinder-205", "C022=2133", "C022=2000", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("C022 is given twice ('C022=2133' and 'C022=2000')"), qPrintable(r.err));
         r = db({"set", "grinder-205", "c22=2133", "C022=2000"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("given twice"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("C022 задан дважды («c22=2133» и «C022=2000»)"), qPrintable(r.err));
         QCOMPARE(db({"set", "grinder-205", "R12=5", "R012="}).exitCode, 2);
         QCOMPARE(db({"set", "grinder-205", "C022=2133", "C023=2000"}).exitCode, 0);
         QVERIFY(db({"export", "grinder-205"}).out.contains("C022=2133 "));
@@ -355,14 +366,18 @@ private slots:
     void setRefusesAnUnknownSimulationKey() {
         QCOMPARE(db({"init"}).exitCode, 0);
         const QString before = db({"machines"}).out;
-        auto r = db({"set", "grinder-205", "tilte=oops"});
+        auto r = db({"set", "grinder-205", "tilte=oops", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("'tilte' is not a known simulation key; nothing was saved"), qPrintable(r.err));
         QVERIFY2(r.err.contains("did you mean title"), qPrintable(r.err));
         QVERIFY2(r.err.contains("--allow-unknown"), qPrintable(r.err));
+        r = db({"set", "grinder-205", "tilte=oops"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains("«tilte» — неизвестный параметр моделирования; ничего не сохранено (может быть, title?)"),
+                 qPrintable(r.err));
         r = db({"set", "grinder-205", "x.kvv=1.5", "C022=2133"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("'x.kvv'") && r.err.contains("x.kv"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("«x.kvv»") && r.err.contains("x.kv"), qPrintable(r.err));
         QCOMPARE(db({"machines"}).out, before); // no revision was made
         QVERIFY(!db({"export", "grinder-205"}).out.contains("tilte"));
         r = db({"set", "grinder-205", "tilte=oops", "--allow-unknown"});
@@ -372,6 +387,57 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         QVERIFY(!db({"export", "grinder-205"}).out.contains("tilte"));
         QCOMPARE(db({"set", "grinder-205", "x.kv=1.5"}).exitCode, 0);
+    }
+
+    // The database's errors in the command's language (--lang, Russian by
+    // default): the same ids and arguments, never an English sentence in a
+    // Russian run.
+    void errorsInTheCommandsLanguage() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        struct Case {
+            QStringList args;
+            int exitCode;
+            QString ru, en;
+        };
+        const QList<Case> cases = {
+            {{"show", "nosuch"}, 2, "нет станка «nosuch» в " + db_ + " (станки: grinder-205, training-lathe)",
+             "no machine \"nosuch\" in " + db_ + " (machines: grinder-205, training-lathe)"},
+            {{"show", "grinder-205@7"}, 2, "у станка grinder-205 ревизии 1..1; ревизии 7 нет",
+             "machine grinder-205 has revisions 1..1; there is no revision 7"},
+            {{"set", "training-lathe", "C999=1"}, 2, "C999: такого C-параметра нет (1..152)",
+             "C999: no such C-parameter (1..152)"},
+            {{"set", "training-lathe", "R12=x"}, 2, "R12: «x» — не целое число", "R12: 'x' is not a whole number"},
+            {{"set", "training-lathe", "A99=x"}, 2, "A99: такого сообщения ПЛК нет (A01..A", "A99: no such PLC message (A01..A"},
+            {{"set", "training-lathe", "Q1"}, 2, "«Q1» — не ПУНКТ=ЗНАЧЕНИЕ", "'Q1' is not ITEM=VALUE"},
+            {{"set", "training-lathe", "x.kv=999999"}, 1, "значение 999999 вне 0.01..100",
+             "value 999999 is outside 0.01..100"},
+            {{"set", "nosuch", "C022=2000"}, 2, "нет станка «nosuch»", "no machine \"nosuch\""},
+            {{"release", "training-lathe", "L77"}, 2, "у станка training-lathe нет программы L77 (на ревизии 1); ничего не выпущено",
+             "machine training-lathe has no program L77 (at revision 1); nothing was released"},
+            {{"withdraw", "training-lathe", "L1"}, 1, "ни разу не выпускалась; ничего не записано",
+             "was never released; nothing was written"},
+        };
+        const auto check = [&](const QStringList& args, int exitCode, const QString& ru, const QString& en) {
+            auto r = db(args);
+            QCOMPARE(r.exitCode, exitCode);
+            QVERIFY2(r.err.contains(ru), qPrintable(args.join(' ') + ": " + r.err));
+            QVERIFY2(!hasEnglishSentence(r.err), qPrintable(args.join(' ') + ": " + r.err));
+            r = db(args + QStringList{"--lang", "en"});
+            QCOMPARE(r.exitCode, exitCode);
+            QVERIFY2(r.err.contains(en), qPrintable(args.join(' ') + " --lang en: " + r.err));
+        };
+        for (const Case& c : cases) {
+            check(c.args, c.exitCode, c.ru, c.en);
+            if (QTest::currentTestFailed())
+                return;
+        }
+        // The trainer's lock of the constants refuses a change in either language.
+        QCOMPARE(db({"set", "training-lathe", "constants.lock=A1"}).exitCode, 0);
+        check({"set", "training-lathe", "C022=2000"}, 1,
+              "станок training-lathe: константы станка заблокированы преподавателем для группы «A1» (параметр "
+              "constants.lock): C022 не изменены; ничего не записано",
+              "machine training-lathe: the machine constants are locked by the trainer for the class «A1» (setting "
+              "constants.lock): C022 not changed; nothing was written");
     }
 
     // A device as the database is "not a regular file", not
@@ -600,9 +666,15 @@ private slots:
         for (const QStringList& args :
              {QStringList{"init"}, QStringList{"machines"}, QStringList{"show", "grinder-205"},
               QStringList{"set", "grinder-205", "C022=2133"}}) {
-            const auto r = db(args);
+            auto r = db(args + QStringList{"--lang", "en"});
             QCOMPARE(r.exitCode, 2);
             QVERIFY2(r.err.contains("not a K528 Studio database"), qPrintable(r.err));
+            QVERIFY2(r.err.contains("; the file was left untouched"), qPrintable(r.err));
+            r = db(args);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains("это не база данных K528 Studio") && r.err.contains("; файл не изменён"),
+                     qPrintable(r.err));
+            QVERIFY2(!hasEnglishSentence(r.err), qPrintable(r.err));
         }
         QCOMPARE(readAll(db_), junk);
     }

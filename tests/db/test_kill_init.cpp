@@ -118,7 +118,7 @@ private slots:
             if (!exists(db)) {
                 ++beforeFile;
                 QCOMPARE(machines.exitCode, 2);
-                QVERIFY2(machines.err.contains("no database at"), qPrintable(machines.err));
+                QVERIFY2(machines.err.contains("нет базы данных"), qPrintable(machines.err));
             } else {
                 // An interrupted first start is an empty database (the file
                 // exists but holds nothing yet) or a complete one.

@@ -237,14 +237,15 @@ private slots:
             if (onPostgres() && i % 3 == 2) {
                 // The moment the upgrade's transaction has written (the
                 // server gave it a transaction id), seen from another session.
+                // (Or, when this session came too late, once it is upgraded.)
                 const std::string failed = run(
-                    "psql", {"-XAtq", "-v", "ON_ERROR_STOP=1", "-c",
-                             "SET statement_timeout = '60s'; DO $$ BEGIN LOOP PERFORM "
+                    "psql", {"-XAtq", "-v", "ON_ERROR_STOP=1", "-d",
+                             QString::fromStdString(pgName(where)), "-c",
+                             "SET statement_timeout = '30s'; DO $$ BEGIN LOOP PERFORM "
                              "pg_stat_clear_snapshot(); EXIT WHEN EXISTS (SELECT 1 FROM "
-                             "pg_stat_activity WHERE datname = '" +
-                                 QString::fromStdString(pgName(where)) +
-                                 "' AND backend_xid IS NOT NULL); PERFORM pg_sleep(0.001); END "
-                                 "LOOP; END $$"});
+                             "pg_stat_activity WHERE datname = current_database() AND pid <> "
+                             "pg_backend_pid() AND backend_xid IS NOT NULL) OR (SELECT version "
+                             "FROM k528_schema) >= 7; PERFORM pg_sleep(0.001); END LOOP; END $$"});
                 reaped = waitpid(pid, &status, WNOHANG) == pid;
                 QVERIFY2(failed.empty() || reaped, failed.c_str());
                 ++firstWriteKills;

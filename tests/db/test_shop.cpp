@@ -584,10 +584,15 @@ private slots:
         auto r = db({"set", "grinder-205", "constants.lock=TM-21", "--author", "trainer"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QString before = db({"export", "grinder-205"}).out;
-        r = db({"set", "grinder-205", "C022=2133"});
+        r = db({"set", "grinder-205", "C022=2133", "--lang", "en"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("locked by the trainer for the class «TM-21»")) &&
                      r.err.contains("constants.lock") && r.err.contains("C022") && r.err.contains("nothing was written"),
+                 qPrintable(r.err));
+        r = db({"set", "grinder-205", "C022=2133"}); // Russian by default
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("заблокированы преподавателем для группы «TM-21»")) &&
+                     r.err.contains("constants.lock") && r.err.contains("C022") && r.err.contains("ничего не записано"),
                  qPrintable(r.err));
         r = db({"set", "grinder-205", "C022=2133", "--allow-errors"});
         QCOMPARE(r.exitCode, 1);
@@ -668,7 +673,7 @@ private slots:
         QVERIFY2(r.exitCode == 0 && r.out.startsWith("withdrawn grinder-205 L11"), qPrintable(r.out + r.err));
         r = db({"withdraw", "grinder-205", "L11"});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("withdrawn already"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("программа L11 станка grinder-205 уже отозвана; ничего не записано")), qPrintable(r.err));
         QCOMPARE(db({"release", "grinder-205", "L100"}).exitCode, 2);
         QCOMPARE(db({"release", "no-such-machine", "L1"}).exitCode, 2);
 
@@ -701,7 +706,7 @@ private slots:
                  db({"export", "grinder-205"}).out);
         r = db({"copy", "--to", copy});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains("not an empty database"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("база данных не пуста (версия схемы")), qPrintable(r.err));
         QCOMPARE(db({"copy", "--to", "postgresql://u:secret@h/db"}).exitCode, 2);
 
         r = db({"roles"});

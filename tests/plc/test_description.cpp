@@ -165,9 +165,9 @@ private slots:
             QCOMPARE(e.text(true), std::string("bad.json: name: ожидается строка, а здесь число"));
         }
         // Every text of the catalog has both languages, the Russian in Russian.
-        for (const plc::DescriptionText& t : plc::descriptionTexts()) {
+        for (const util::CatalogText& t : plc::descriptionTexts().texts()) {
             QVERIFY2(!t.en.empty() && !t.ru.empty(), t.id.data());
-            QVERIFY2(plc::findDescriptionText(t.id) == &t, t.id.data()); // one entry per id
+            QVERIFY2(plc::descriptionTexts().find(t.id) == &t, t.id.data()); // one entry per id
             if (!t.id.starts_with("type."))
                 QVERIFY2(t.ru != t.en, t.id.data());
         }

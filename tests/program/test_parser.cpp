@@ -373,7 +373,7 @@ private slots:
         QCOMPARE(d->severity, Severity::Error);
         QCOMPARE(d->manualNumber, manual);
         QVERIFY(d->line >= 1 && d->column >= 1 && d->endColumn > d->column);
-        QVERIFY2(k528::program::findDiagnosticText(d->textId), d->textId.c_str()); // a text of the catalog
+        QVERIFY2(k528::program::diagnosticTexts().find(d->textId), d->textId.c_str()); // a text of the catalog
         QVERIFY(b.hasErrors());
         const ParseResult g = parse(good.toStdString());
         QVERIFY2(g.diagnostics.empty(),

@@ -54,7 +54,7 @@ void exercise(const std::string& text, int number) {
         QVERIFY(d.line >= 1);
         QVERIFY(d.column >= 1);
         QVERIFY(d.endColumn > d.column);
-        QVERIFY2(k528::program::findDiagnosticText(d.textId), d.textId.c_str()); // a text of the catalog
+        QVERIFY2(k528::program::diagnosticTexts().find(d.textId), d.textId.c_str()); // a text of the catalog
     }
     ValidateOptions vo;
     vo.nestingLimit = 1 + number % 8;

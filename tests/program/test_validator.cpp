@@ -234,7 +234,7 @@ private slots:
                 QVERIFY2(k528::program::diagnosticText(*d, true).rfind(std::string(k528::catalog::positionerMessage(manual).textRu), 0) == 0,
                          k528::program::diagnosticText(*d, true).c_str());
             QVERIFY(d->column >= 1 && d->endColumn > d->column);
-            QVERIFY2(k528::program::findDiagnosticText(d->textId), d->textId.c_str()); // a text of the catalog
+            QVERIFY2(k528::program::diagnosticTexts().find(d->textId), d->textId.c_str()); // a text of the catalog
         }
         if (line)
             QCOMPARE(hits.front()->line, line);

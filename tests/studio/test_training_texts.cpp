@@ -25,7 +25,7 @@ private slots:
         for (const char* language : {"en", "ru"}) {
             QVERIFY(setLanguage(language));
             const bool ru = QString(language) == QLatin1String("ru");
-            for (const catalog::TrainingText& t : catalog::trainingTexts()) {
+            for (const util::CatalogText& t : catalog::trainingTexts().texts()) {
                 const std::string id(t.id);
                 const QString pattern = trainingTextPattern(id);
                 const QString expected = QString::fromUtf8(ru ? t.ru.data() : t.en.data(),

@@ -57,13 +57,15 @@
 #include "editor/program_editor.h"
 #include "profile/diff.h"
 #include "engine/refusal_texts.h"
-#include "profile/problem_russian.h"
 #include "engine/types.h"
 #include "program/model.h"
 #include "program/refactor.h"
 #include "session/machine_source.h"
 #include "session/simulation_session.h"
 #include "training/exercise.h"
+#include "training/texts.h"
+#include "training/training_texts.h"
+#include "catalog/training_texts.h"
 #include "workspace/workspaces.h"
 
 #include <QAbstractButton>
@@ -447,6 +449,22 @@ QStringList positionerTexts() {
         out << QString::fromStdString(m.panelText()) << fromView(m.textRu);
     }
     return out;
+}
+
+// Every id of one of core's catalogs has a text in the window (`has`), the
+// same Russian as core's catalog (what `k528 … --lang ru` prints): `say(id)`
+// is the window's text of the id with some arguments and core's. With a
+// walker, the window's text is walked for words of another language too.
+void checkCatalog(const util::TextCatalog& catalog, const std::function<bool(std::string_view)>& has,
+                  const std::function<std::pair<QString, std::string>(std::string_view)>& say,
+                  Walker* walker = nullptr, const QString& what = {}) {
+    for (const util::CatalogText& t : catalog.texts()) {
+        QVERIFY2(has(t.id), t.id.data());
+        const auto [window, core] = say(t.id);
+        QCOMPARE(window, QString::fromStdString(core));
+        if (walker)
+            walker->check(what.arg(fromView(t.id)), window);
+    }
 }
 
 } // namespace
@@ -892,11 +910,12 @@ void TestUiLanguage::russianCoreTexts() {
 
     // Every id of core's catalogs has a text of the window, in Russian.
     const std::vector<std::string> someArgs = {"C022", "12", "34", "L3"};
-    for (const profile::ProblemText& t : profile::problemTexts()) {
-        QVERIFY2(studio::hasProblemText(t.id), t.id.data());
-        profile::Problem p = profile::problem(std::string(t.id), someArgs);
-        walker.check(QStringLiteral("core problem %1").arg(fromView(t.id)), studio::problemText(p));
-    }
+    checkCatalog(profile::problemTexts(), studio::hasProblemText, [&](std::string_view id) {
+        const profile::Problem p = profile::problem(std::string(id), someArgs);
+        return std::pair(studio::problemText(p), profile::problemText(p, true));
+    }, &walker, QStringLiteral("core problem %1"));
+    if (QTest::currentTestFailed())
+        return;
     for (const db::NoteText& t : db::noteTexts()) {
         QVERIFY2(studio::hasNoteText(t.id), t.id.data());
         // As stored (English), read back and said in the window's language.
@@ -931,22 +950,29 @@ void TestUiLanguage::russianCoreTexts() {
 
     // Every text of a machine description's errors: the same Russian as
     // core's catalog (what `k528 run --lang ru` prints).
-    for (const plc::DescriptionText& t : plc::descriptionTexts()) {
-        QVERIFY2(studio::hasDescriptionText(t.id), t.id.data());
-        const profile::Problem p = profile::problem(std::string(t.id), {"x1", "12", "34"});
-        QCOMPARE(studio::descriptionProblemText(p), QString::fromStdString(plc::descriptionText(p, true)));
-    }
+    checkCatalog(plc::descriptionTexts(), studio::hasDescriptionText, [](std::string_view id) {
+        const profile::Problem p = profile::problem(std::string(id), {"x1", "12", "34"});
+        return std::pair(studio::descriptionProblemText(p), plc::descriptionText(p, true));
+    });
     // Every text of a program's diagnostics: the same Russian as core's
     // catalog (what `k528 check --lang ru` prints), a text inside another
     // one too; every rule's short name in Russian (the Problems list).
-    for (const program::DiagnosticText& t : program::diagnosticTexts()) {
-        QVERIFY2(studio::hasDiagnosticText(t.id), t.id.data());
+    checkCatalog(program::diagnosticTexts(), studio::hasDiagnosticText, [](std::string_view id) {
         program::Diagnostic d;
-        d.textId = std::string(t.id);
+        d.textId = std::string(id);
         d.args = {"X", "12", "34", "56"};
         d.within = {{"frame.numbered", {"5"}, {}}, {"chain.call", {"1"}, {{"chain.end", {"2"}, {}}}}};
-        QCOMPARE(studio::diagnosticText(d), QString::fromStdString(program::diagnosticText(d, true)));
-    }
+        return std::pair(studio::diagnosticText(d), program::diagnosticText(d, true));
+    });
+    // Every text of a training grade, an argument of two languages in Russian.
+    checkCatalog(
+        catalog::trainingTexts(), [](std::string_view id) { return !studio::trainingTextPattern(std::string(id)).isEmpty(); },
+        [](std::string_view id) {
+            const training::Text t{std::string(id), {"12", training::TextArg("Нет смазки", "No lube"), "34", "L1 N5", "7"}};
+            return std::pair(studio::trainingText(t), training::render(t, training::Language::Ru));
+        });
+    if (QTest::currentTestFailed())
+        return;
     for (int r = 0; r <= static_cast<int>(program::Rule::DiscreteRounding); ++r) {
         const auto rule = static_cast<program::Rule>(r);
         QVERIFY2(studio::ruleName(rule) != QString::fromStdString(std::string(program::ruleId(rule))),
@@ -1011,29 +1037,21 @@ void TestUiLanguage::russianCoreTexts() {
         const auto refusal = static_cast<engine::Refusal>(r);
         QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
     }
-    // Core's problems: the same Russian as the command line's (`k528 … --lang ru`).
-    for (const profile::ProblemText& t : profile::problemTexts()) {
-        const profile::Problem p = profile::problem(std::string(t.id), {"C022", "9", "10...5000", "X"});
-        QCOMPARE(studio::problemText(p), QString::fromStdString(profile::problemText(p, true)));
-    }
     // Why, with the value and the limit: the same Russian as core's catalog.
-    for (const util::CatalogText& t : engine::refusalTexts().texts()) {
-        QVERIFY2(studio::hasRefusalText(t.id), t.id.data());
-        const engine::OpResult r = engine::OpResult::refused(engine::Refusal::WrongMode, std::string(t.id), {"C022", "9", "10...5000", "X"});
-        QCOMPARE(studio::refusalText(r), QString::fromStdString(r.text(true)));
-        walker.check(QStringLiteral("refusal %1").arg(fromView(t.id)), studio::refusalText(r));
-    }
-    // Why a refactoring changed nothing: the same Russian as core's catalog
-    // (what `k528 format --renumber --lang ru` prints).
-    for (const util::CatalogText& t : program::refactorTexts().texts()) {
-        QVERIFY2(studio::hasRefactorText(t.id), t.id.data());
+    checkCatalog(engine::refusalTexts(), studio::hasRefusalText, [](std::string_view id) {
+        const engine::OpResult r = engine::OpResult::refused(engine::Refusal::WrongMode, std::string(id), {"C022", "9", "10...5000", "X"});
+        return std::pair(studio::refusalText(r), r.text(true));
+    }, &walker, QStringLiteral("refusal %1"));
+    // Why a refactoring changed nothing (what `k528 format --renumber --lang ru` prints).
+    checkCatalog(program::refactorTexts(), studio::hasRefactorText, [](std::string_view id) {
         program::RefactorResult r;
         r.ok = false;
-        r.textId = std::string(t.id);
+        r.textId = std::string(id);
         r.args = {"7"};
-        QCOMPARE(studio::refactorText(r), QString::fromStdString(r.text(true)));
-        walker.check(QStringLiteral("refactoring %1").arg(fromView(t.id)), studio::refactorText(r));
-    }
+        return std::pair(studio::refactorText(r), r.text(true));
+    }, &walker, QStringLiteral("refactoring %1"));
+    if (QTest::currentTestFailed())
+        return;
     // The simulated controller refuses in the window's language, naming the
     // value and the limit.
     {

@@ -5,6 +5,7 @@
 // frame; the same file graded twice gives the same JSON; broken exercise
 // files are refused with the key named.
 #include "training/exercise.h"
+#include "training/exercise_texts.h"
 #include "training/grade.h"
 #include "training/procedure.h"
 #include "util/json.h"
@@ -293,20 +294,32 @@ private slots:
         QTest::addColumn<QString>("change");
         QTest::addColumn<QString>("to");
         QTest::addColumn<QString>("message");
+        QTest::addColumn<QString>("russian");
         QTest::newRow("diameter") << QStringLiteral("\"d\": 30,") << QStringLiteral("\"d\": \"30\",")
-                                  << QStringLiteral("drawing.contour[1].d: expected a number");
+                                  << QStringLiteral("drawing.contour[1].d: expected a number")
+                                  << QStringLiteral("drawing.contour[1].d: ожидается число");
         QTest::newRow("machine") << QStringLiteral("\"training-lathe\"") << QStringLiteral("\"lathe-x\"")
-                                 << QStringLiteral("machine");
+                                 << QStringLiteral("machine: not a built-in machine: 'lathe-x'")
+                                 << QStringLiteral("machine: не встроенный станок: «lathe-x»");
         QTest::newRow("unknown key") << QStringLiteral("\"limits\": {")
                                      << QStringLiteral("\"limits\": {\"cycle_tme_s\": 1, ")
-                                     << QStringLiteral("limits.cycle_tme_s: unknown key");
+                                     << QStringLiteral("limits.cycle_tme_s: unknown key")
+                                     << QStringLiteral("limits.cycle_tme_s: неизвестный ключ");
         QTest::newRow("step") << QStringLiteral("\"step\": \"home\"") << QStringLiteral("\"step\": \"jump\"")
-                              << QStringLiteral("operator[0].step: expected home");
+                              << QStringLiteral("operator[0].step: expected home")
+                              << QStringLiteral("operator[0].step: ожидается home, preset");
+        QTest::newRow("blank") << QStringLiteral("\"ucg\": \"UCG") << QStringLiteral("\"ucg\": \"UCX")
+                               << QStringLiteral("blank.ucg: UCG: expected UCG")
+                               << QStringLiteral("blank.ucg: UCG: ожидалось UCG");
+        QTest::newRow("format") << QStringLiteral("\"format\": 1") << QStringLiteral("\"format\": 2")
+                                << QStringLiteral("format: this reader knows format 1")
+                                << QStringLiteral("format: эта программа читает формат 1");
     }
     void aBrokenExerciseFileNamesTheKey() {
         QFETCH(QString, change);
         QFETCH(QString, to);
         QFETCH(QString, message);
+        QFETCH(QString, russian);
         QFile f(QStringLiteral(K528_SOURCE_DIR "/resources/exercises/lathe-03-step.json"));
         QVERIFY(f.open(QIODevice::ReadOnly));
         QString text = QString::fromUtf8(f.readAll());
@@ -319,7 +332,31 @@ private slots:
             const QString what = QString::fromUtf8(err.what());
             QVERIFY2(what.startsWith(QStringLiteral("lathe-03-step.json: ")), qPrintable(what));
             QVERIFY2(what.contains(message), qPrintable(what));
+            QCOMPARE(QString::fromStdString(err.text(false)), what);
+            // In Russian: the same key, said in Russian, no English words
+            // but the file's own (keys, values).
+            const QString ru = QString::fromStdString(err.text(true));
+            QVERIFY2(ru.startsWith(QStringLiteral("lathe-03-step.json: ")), qPrintable(ru));
+            QVERIFY2(ru.contains(russian), qPrintable(ru));
+            QVERIFY2(!ru.contains(QRegularExpression(QStringLiteral("\\b(expected|unknown|not|the|is)\\b"))), qPrintable(ru));
         }
+    }
+
+    // Every text of the exercise reader has its Russian and English, and
+    // the Russian says it in Russian.
+    void everyExerciseTextIsBilingual() {
+        for (const util::CatalogText& t : training::exerciseTexts().texts()) {
+            QVERIFY2(!t.ru.empty() && !t.en.empty() && t.ru != t.en, t.id.data());
+            QVERIFY2(QString::fromUtf8(t.ru.data(), qsizetype(t.ru.size())).contains(QRegularExpression(QStringLiteral("[а-яё]"))), t.id.data());
+        }
+        // A file the reader cannot find: named, in either language.
+        const training::ExerciseError e("course.json", std::nullopt, "not-embedded");
+        QCOMPARE(QString::fromUtf8(e.what()), QStringLiteral("course.json: not among the embedded resources"));
+        QCOMPARE(QString::fromStdString(e.text(true)), QStringLiteral("course.json: нет среди встроенных ресурсов"));
+        const training::ExerciseError f("x.json", "", "expected-object");
+        QCOMPARE(QString::fromStdString(e.text(true)).isEmpty(), false);
+        QCOMPARE(QString::fromStdString(f.text(true)), QStringLiteral("x.json: файл: ожидается объект"));
+        QCOMPARE(QString::fromUtf8(f.what()), QStringLiteral("x.json: the file: expected an object"));
     }
 
     void theShippedFileReadsAsIs() {

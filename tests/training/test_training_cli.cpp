@@ -153,9 +153,18 @@ private slots:
     }
 
     void badInputIsRefusedClearly() {
-        CliResult r = runK528({"grade", "no-such", "x.k528"});
+        CliResult r = runK528({"grade", "no-such", "x.k528", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("no exercise 'no-such'"), qPrintable(r.err));
+        // Russian by default: no English sentence.
+        for (const QStringList& args : {QStringList{"grade", "no-such", "x.k528"}, QStringList{"exercise", "show", "no-such"},
+                                        QStringList{"exercise", "attempts", "no-such"}}) {
+            r = runK528(args);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.contains(QStringLiteral("нет упражнения «no-such» (k528 exercise list)")) &&
+                         r.err.contains(QStringLiteral("Справка: k528 --help.")) && !r.err.contains("Try"),
+                     qPrintable(r.err));
+        }
         r = runK528({"grade", "lathe-03-step", "/nonexistent/x.k528"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("/nonexistent/x.k528"), qPrintable(r.err));

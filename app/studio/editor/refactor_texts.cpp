@@ -1,23 +1,19 @@
 #include "editor/refactor_texts.h"
 
 #include "program/refactor.h"
-#include "util/text_pattern.h"
+#include "session/translated_texts.h"
 
 #include <QCoreApplication>
 
+#include <optional>
 #include <string>
 
 namespace k528::studio {
 
 namespace {
 
-struct Entry {
-    const char* id;
-    const char* text; // English, as core's catalog says it; translated in context RefactorTexts
-};
-
 // core/program/refactor.cpp's catalog, each text marked for the translators.
-const Entry kRefactorTexts[] = {
+const TranslatedText kRefactors[] = {
     {"refactor.no-program", QT_TRANSLATE_NOOP("k528::studio::RefactorTexts", "there is no program L%1")},
     {"refactor.program-number", QT_TRANSLATE_NOOP("k528::studio::RefactorTexts", "a program number is 1..99, not %1")},
     {"refactor.program-exists", QT_TRANSLATE_NOOP("k528::studio::RefactorTexts", "program L%1 exists already")},
@@ -27,23 +23,16 @@ const Entry kRefactorTexts[] = {
      QT_TRANSLATE_NOOP("k528::studio::RefactorTexts", "the last frame number would exceed 999 (%1 frames)")},
 };
 
-const Entry* entryOf(std::string_view id) {
-    for (const Entry& e : kRefactorTexts)
-        if (id == e.id)
-            return &e;
-    return nullptr;
-}
+const TranslatedTexts kRefactorTexts("k528::studio::RefactorTexts", kRefactors);
 
 } // namespace
 
-bool hasRefactorText(std::string_view id) { return entryOf(id) != nullptr; }
+bool hasRefactorText(std::string_view id) { return kRefactorTexts.has(id); }
 
 QString refactorText(const program::RefactorResult& r) {
-    const Entry* e = entryOf(r.textId);
-    if (!e) // an id without a translation: core's English
-        return QString::fromStdString(r.text(false));
-    const QString pattern = QCoreApplication::translate("k528::studio::RefactorTexts", e->text);
-    return QString::fromStdString(util::fillPattern(pattern.toStdString(), r.args));
+    if (const std::optional<QString> text = kRefactorTexts.text(r.textId, r.args))
+        return *text;
+    return QString::fromStdString(r.text(false)); // an id without a translation: core's English
 }
 
 } // namespace k528::studio

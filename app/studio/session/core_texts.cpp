@@ -15,6 +15,7 @@
 #include "profile/validate.h"
 #include "profile/text_format.h"
 #include "session/shop_database.h"
+#include "session/translated_texts.h"
 #include "util/input_file.h"
 
 #include <QCoreApplication>
@@ -28,13 +29,8 @@ namespace k528::studio {
 
 namespace {
 
-struct Entry {
-    const char* id;
-    const char* text; // English, as core's catalog says it; translated by CoreTexts
-};
-
 // core/profile/problem.cpp's catalog, each text marked for the translators.
-const Entry kProblems[] = {
+const TranslatedText kProblems[] = {
         {"file.cannot-read", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "cannot read the file: %1")},
         {"file.cannot-create", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "cannot create the file")},
         {"file.cannot-write", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "cannot write the file")},
@@ -163,7 +159,7 @@ const Entry kProblems[] = {
 };
 
 // core/db/notes.cpp's catalog: the notes core and the desktop write.
-const Entry kNotes[] = {
+const TranslatedText kNotes[] = {
         {"seed", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "built-in profile %1 (first start)")},
         {"created", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "created")},
         {"set", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "set %1")},
@@ -182,7 +178,7 @@ const Entry kNotes[] = {
 };
 
 // core/proveout's findings (proveout::texts()), each text marked for the translators.
-const Entry kFindings[] = {
+const TranslatedText kFindings[] = {
         {"rapid-into-material", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A rapid (G00) enters the material of the blank: X%1 Z%2")},
         {"rapid-into-material.dogleg", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A rapid (G00) enters the material at its dogleg: axis %3 arrives first (X%1 Z%2), although both end points are outside the blank")},
         {"rapid-into-material.ring", QT_TRANSLATE_NOOP("k528::studio::ProveoutTexts", "A rapid (G00) takes the wheel into the ring's material: X%1 Z%2")},
@@ -198,7 +194,7 @@ const Entry kFindings[] = {
 
 // core/plc/description_texts.cpp's catalog (what is wrong with a machine
 // description), each text marked for the translators.
-const Entry kDescriptionTexts[] = {
+const TranslatedText kDescriptions[] = {
         {"json.twice", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "appears twice")},
         {"json.syntax", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "JSON syntax error: line %2, column %3")},
         {"json.expected-object", QT_TRANSLATE_NOOP("k528::studio::DescriptionTexts", "expected an object, found %1")},
@@ -288,7 +284,7 @@ const Entry kDescriptionTexts[] = {
 
 // core/engine/refusal_texts.cpp's catalog (why the controller refused an
 // operator function), each text marked for the translators.
-const Entry kRefusalTexts[] = {
+const TranslatedText kRefusals[] = {
         {"mode-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "F%1 selects no mode")},
         {"mode-from-plc", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the PLC sets the mode (Z1000.8-10 = %1)")},
         {"override-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "override keys are L1..L4, not L%1")},
@@ -309,46 +305,28 @@ const Entry kRefusalTexts[] = {
         {"zero-offset-range", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the zero offset would leave the 32-bit range")},
 };
 
-// `pattern` with %1..%9 filled in one pass, as core fills its own texts
-// (profile::fillPattern: an argument's own "%2" stays).
-QString fill(const QString& pattern, const QStringList& args) {
-    std::vector<std::string> a;
-    a.reserve(static_cast<std::size_t>(args.size()));
-    for (const QString& s : args)
-        a.push_back(s.toStdString());
-    return QString::fromStdString(profile::fillPattern(pattern.toStdString(), a));
-}
-
-// The English of `id` in one of the tables above (nullptr: not there).
-template <std::size_t N>
-const char* textOf(const Entry (&table)[N], std::string_view id) {
-    for (const Entry& e : table)
-        if (id == e.id)
-            return e.text;
-    return nullptr;
-}
-
-const char* patternOf(std::string_view id) { return textOf(kProblems, id); }
+const TranslatedTexts kProblemTexts("k528::studio::CoreTexts", kProblems);
+const TranslatedTexts kNoteTexts("k528::studio::RevisionNotes", kNotes);
+const TranslatedTexts kFindingTexts("k528::studio::ProveoutTexts", kFindings);
+const TranslatedTexts kDescriptionTexts("k528::studio::DescriptionTexts", kDescriptions);
+const TranslatedTexts kRefusalTexts("k528::studio::RefusalTexts", kRefusals);
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
 } // namespace
 
-bool hasProblemText(std::string_view id) { return patternOf(id) != nullptr; }
+bool hasProblemText(std::string_view id) { return kProblemTexts.has(id); }
 
-bool hasNoteText(std::string_view id) { return textOf(kNotes, id) != nullptr; }
+bool hasNoteText(std::string_view id) { return kNoteTexts.has(id); }
 
-bool hasDescriptionText(std::string_view id) { return textOf(kDescriptionTexts, id) != nullptr; }
+bool hasDescriptionText(std::string_view id) { return kDescriptionTexts.has(id); }
 
 QString descriptionProblemText(const profile::Problem& p) {
-    QStringList args;
-    for (const std::string& a : p.args)
-        args << fromStd(a);
+    std::vector<std::string> args = p.args;
     for (const profile::Problem& w : p.within)
-        args << descriptionProblemText(w);
-    for (const Entry& e : kDescriptionTexts)
-        if (p.id == e.id)
-            return fill(QCoreApplication::translate("k528::studio::DescriptionTexts", e.text), args);
+        args.push_back(descriptionProblemText(w).toStdString());
+    if (const std::optional<QString> text = kDescriptionTexts.text(p.id, args))
+        return *text;
     return fromStd(plc::descriptionText(p, false)); // an id without a translation: core's words
 }
 
@@ -360,17 +338,11 @@ QString descriptionErrorText(const plc::DescriptionError& e) {
         .arg(fromStd(e.source()), fromStd(e.path()), what);
 }
 
-bool hasFindingText(std::string_view id) { return textOf(kFindings, id) != nullptr; }
+bool hasFindingText(std::string_view id) { return kFindingTexts.has(id); }
 
 QString findingText(const proveout::Finding& f) {
-    for (const Entry& e : kFindings) {
-        if (f.text != e.id)
-            continue;
-        QStringList args;
-        for (const std::string& a : f.args)
-            args << fromStd(a);
-        return fill(QCoreApplication::translate("k528::studio::ProveoutTexts", e.text), args);
-    }
+    if (const std::optional<QString> text = kFindingTexts.text(f.text, f.args))
+        return *text;
     return fromStd(f.message(false)); // an id without a translation: core's English
 }
 
@@ -391,16 +363,13 @@ QString refusalText(engine::Refusal r) {
     return {};
 }
 
-bool hasRefusalText(std::string_view id) { return textOf(kRefusalTexts, id) != nullptr; }
+bool hasRefusalText(std::string_view id) { return kRefusalTexts.has(id); }
 
 QString refusalText(const engine::OpResult& r) {
     if (r.ok())
         return {};
-    QStringList args;
-    for (const std::string& a : r.args)
-        args << fromStd(a);
-    if (const char* pattern = textOf(kRefusalTexts, r.id))
-        return fill(QCoreApplication::translate("k528::studio::RefusalTexts", pattern), args);
+    if (const std::optional<QString> text = kRefusalTexts.text(r.id, r.args))
+        return *text;
     return refusalText(r.refusal); // an id without a translation: the refusal's kind
 }
 
@@ -408,28 +377,22 @@ QString revisionNoteText(const std::string& summary) {
     const std::optional<db::Note> note = db::readNote(summary);
     if (!note)
         return fromStd(summary); // a user's own words
-    for (const Entry& e : kNotes) {
-        if (note->id != e.id)
-            continue;
-        QStringList args;
-        for (const std::string& a : note->args)
-            args << (note->id == "studio.undo" ? revisionNoteText(a) : fromStd(a)); // the note undone
-        return fill(QCoreApplication::translate("k528::studio::RevisionNotes", e.text), args);
-    }
+    std::vector<std::string> args = note->args;
+    if (note->id == "studio.undo")
+        for (std::string& a : args)
+            a = revisionNoteText(a).toStdString(); // the note undone
+    if (const std::optional<QString> text = kNoteTexts.text(note->id, args))
+        return *text;
     return fromStd(summary);
 }
 
 QString problemText(const profile::Problem& p) {
-    const char* pattern = patternOf(p.id);
-    if (!pattern)
-        return fromStd(p.text()); // an id without a translation: core's English
-    QString text = QCoreApplication::translate("k528::studio::CoreTexts", pattern);
-    QStringList args;
-    for (const std::string& a : p.args)
-        args << fromStd(a);
+    std::vector<std::string> args = p.args;
     for (const profile::Problem& w : p.within)
-        args << problemText(w);
-    return fill(text, args);
+        args.push_back(problemText(w).toStdString());
+    if (const std::optional<QString> text = kProblemTexts.text(p.id, args))
+        return *text;
+    return fromStd(p.text()); // an id without a translation: core's English
 }
 
 QString fileErrorText(const profile::FileError& e) {

@@ -3,10 +3,11 @@
 #include "program/diagnostic.h"
 #include "program/diagnostic_texts.h"
 #include "proveout/rules.h"
-#include "util/text_pattern.h"
+#include "session/translated_texts.h"
 
 #include <QCoreApplication>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,13 +15,8 @@ namespace k528::studio {
 
 namespace {
 
-struct Entry {
-    const char* id;
-    const char* text; // English, as core's catalog says it; translated by DiagnosticTexts
-};
-
 // core/program/diagnostic_texts.cpp's catalog, each text marked for the translators.
-const Entry kTexts[] = {
+const TranslatedText kTexts[] = {
         {"unclosed-comment", QT_TRANSLATE_NOOP("k528::studio::DiagnosticTexts", "comment not closed: no ')' before the end of the line")},
         {"cr-line-end", QT_TRANSLATE_NOOP("k528::studio::DiagnosticTexts", "a CR without LF does not end a line: program text ends its lines with LF or CR LF; convert the file (e.g. tr '\\r' '\\n')")},
         {"invalid-utf8", QT_TRANSLATE_NOOP("k528::studio::DiagnosticTexts", "invalid byte sequence %1: program text must be UTF-8")},
@@ -141,38 +137,30 @@ const Entry kTexts[] = {
         {"build.signal", QT_TRANSLATE_NOOP("k528::studio::DiagnosticTexts", "the signal number is 1..4")},
 };
 
-const char* patternOf(std::string_view id) {
-    for (const Entry& e : kTexts)
-        if (id == e.id)
-            return e.text;
-    return nullptr;
-}
+const TranslatedTexts kDiagnosticTexts("k528::studio::DiagnosticTexts", kTexts);
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
-QString render(std::string_view id, const std::vector<std::string>& args,
-               const std::vector<program::DiagnosticPart>& within, const std::string& coreWords) {
+// A diagnostic or a part of one: its own arguments, then the texts of the
+// parts it names.
+template <class Part>
+QString render(const Part& part, std::string_view id, const std::vector<std::string>& args,
+               const std::vector<program::DiagnosticPart>& within) {
     if (id.empty())
         return {};
-    const char* pattern = patternOf(id);
-    if (!pattern)
-        return fromStd(coreWords); // an id without a translation: core's English
     std::vector<std::string> all = args;
     for (const program::DiagnosticPart& w : within)
         all.push_back(diagnosticText(w).toStdString());
-    const QString text = QCoreApplication::translate("k528::studio::DiagnosticTexts", pattern);
-    return fromStd(util::fillPattern(text.toStdString(), all));
+    if (const std::optional<QString> text = kDiagnosticTexts.text(id, all))
+        return *text;
+    return fromStd(program::diagnosticText(part, false)); // an id without a translation: core's English
 }
 
 } // namespace
 
-QString diagnosticText(const program::Diagnostic& d) {
-    return render(d.textId, d.args, d.within, patternOf(d.textId) ? std::string() : program::diagnosticText(d, false));
-}
+QString diagnosticText(const program::Diagnostic& d) { return render(d, d.textId, d.args, d.within); }
 
-QString diagnosticText(const program::DiagnosticPart& p) {
-    return render(p.id, p.args, p.within, patternOf(p.id) ? std::string() : program::diagnosticText(p, false));
-}
+QString diagnosticText(const program::DiagnosticPart& p) { return render(p, p.id, p.args, p.within); }
 
 QString diagnosticWithManual(const program::Diagnostic& d) {
     const QString text = diagnosticText(d);
@@ -189,7 +177,7 @@ QString diagnosticLine(const program::Diagnostic& d) {
              diagnosticWithManual(d));
 }
 
-bool hasDiagnosticText(std::string_view id) { return patternOf(id) != nullptr; }
+bool hasDiagnosticText(std::string_view id) { return kDiagnosticTexts.has(id); }
 
 QString ruleName(program::Rule r) {
     using program::Rule;
