@@ -5383,6 +5383,58 @@ Its comment stays: %3</translation>
         <source>closed</source>
         <translation>closed</translation>
     </message>
+    <message>
+        <source>address %1: %2</source>
+        <translation>address %1: %2</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>no answer</translation>
+    </message>
+    <message>
+        <source>a damaged answer (another baud rate or parity?)</source>
+        <translation>a damaged answer (another baud rate or parity?)</translation>
+    </message>
+    <message>
+        <source>echo ok</source>
+        <translation>echo ok</translation>
+    </message>
+    <message>
+        <source>exception %1 to the echo</source>
+        <translation>exception %1 to the echo</translation>
+    </message>
+    <message>
+        <source>, running (the server id says)</source>
+        <translation>, running</translation>
+    </message>
+    <message>
+        <source>; no server id (FC 17)</source>
+        <translation>; no server id (FC 17)</translation>
+    </message>
+    <message>
+        <source>; K528-05 map: mode F%1</source>
+        <translation>; K528-05 map: mode F%1</translation>
+    </message>
+    <message>
+        <source>, program %1</source>
+        <translation>, program %1</translation>
+    </message>
+    <message>
+        <source>, %1 programs</source>
+        <translation>, %1 programs</translation>
+    </message>
+    <message>
+        <source>, alarms</source>
+        <translation>, alarms</translation>
+    </message>
+    <message>
+        <source>; round trip %1 ms</source>
+        <translation>; round trip %1 ms</translation>
+    </message>
+    <message>
+        <source>; server id %1</source>
+        <translation>; server id %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ListingActions</name>

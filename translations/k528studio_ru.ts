@@ -5383,6 +5383,58 @@ Its comment stays: %3</source>
         <source>closed</source>
         <translation>соединение закрыто</translation>
     </message>
+    <message>
+        <source>address %1: %2</source>
+        <translation>адрес %1: %2</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>нет ответа</translation>
+    </message>
+    <message>
+        <source>a damaged answer (another baud rate or parity?)</source>
+        <translation>повреждённый ответ (другая скорость или чётность?)</translation>
+    </message>
+    <message>
+        <source>echo ok</source>
+        <translation>эхо в порядке</translation>
+    </message>
+    <message>
+        <source>exception %1 to the echo</source>
+        <translation>исключение %1 в ответ на эхо</translation>
+    </message>
+    <message>
+        <source>, running (the server id says)</source>
+        <translation>, работает</translation>
+    </message>
+    <message>
+        <source>; no server id (FC 17)</source>
+        <translation>; нет идентификатора сервера (функция 17)</translation>
+    </message>
+    <message>
+        <source>; K528-05 map: mode F%1</source>
+        <translation>; карта K528-05: режим F%1</translation>
+    </message>
+    <message>
+        <source>, program %1</source>
+        <translation>, программа %1</translation>
+    </message>
+    <message>
+        <source>, %1 programs</source>
+        <translation>, программ: %1</translation>
+    </message>
+    <message>
+        <source>, alarms</source>
+        <translation>, аварии</translation>
+    </message>
+    <message>
+        <source>; round trip %1 ms</source>
+        <translation>; время отклика %1 мс</translation>
+    </message>
+    <message>
+        <source>; server id %1</source>
+        <translation>; идентификатор сервера %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ListingActions</name>

@@ -273,7 +273,7 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
                 j["round_trip_ms"] = s.roundTripMs;
                 std::printf("%s\n", json::dump(j).c_str());
             } else {
-                std::printf(say("%d бит/с, %s\n", "%d bit/s, %s\n"), baud, link::describe(s).c_str());
+                std::printf(say("%d бит/с, %s\n", "%d bit/s, %s\n"), baud, link::describe(s, ru).c_str());
             }
             if (outputLost())
                 return ExitUsage;

@@ -1013,6 +1013,7 @@ StationInfo probeStation(Link& link, int address) {
         s.echo = "echo ok";
     } else if (e.kind == LinkError::Kind::Exception || e.kind == LinkError::Kind::NotReady) {
         s.answers = true;
+        s.echoException = e.code;
         char buf[48];
         std::snprintf(buf, sizeof buf, "exception %02d to the echo", e.code);
         s.echo = buf;
@@ -1033,34 +1034,45 @@ StationInfo probeStation(Link& link, int address) {
     return s;
 }
 
-std::string describe(const StationInfo& s) {
-    std::string t = "address " + std::to_string(s.address) + ": ";
+std::string describe(const StationInfo& s, bool ru) {
+    const auto in = [ru](const Said& said) { return render(said, ru); };
+    std::string t;
     if (!s.answers)
-        return t + (s.garbled ? s.echo : "no answer");
-    t += s.echo;
+        return in(say("link.scan-station", {std::to_string(s.address),
+                                            say(s.garbled ? "link.scan-garbled" : "link.scan-no-answer")}));
+    if (s.echoException > 0) {
+        char code[16];
+        std::snprintf(code, sizeof code, "%02d", s.echoException);
+        t = in(say("link.scan-echo-exception", {std::string(code)}));
+    } else {
+        t = in(say("link.scan-echo-ok"));
+    }
     if (s.id) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "; server id 0x%02X%s", s.id->id, s.id->running ? ", running" : "");
-        t += buf;
+        char id[16];
+        std::snprintf(id, sizeof id, "0x%02X", s.id->id);
+        t += in(say("link.scan-server-id", {std::string(id)}));
+        if (s.id->running)
+            t += in(say("link.scan-running"));
         std::string data;
         for (char ch : s.id->data)
             data += (static_cast<unsigned char>(ch) >= 0x20 || (ch & 0x80)) ? ch : '.';
         if (!data.empty())
             t += " «" + data + "»";
     } else {
-        t += "; no server id (FC 17)";
+        t += in(say("link.scan-no-server-id"));
     }
     if (s.live) {
-        t += "; K528-05 map: mode F" + std::to_string(s.live->mode) + (s.live->pcReady ? " «РАБОТА С ПЭВМ»" : "");
+        t += in(say("link.scan-map", {std::to_string(s.live->mode)})) + (s.live->pcReady ? " «РАБОТА С ПЭВМ»" : "");
         if (s.live->program > 0)
-            t += ", program " + std::to_string(s.live->program);
-        t += ", " + std::to_string(s.live->programs.size()) + " programs";
+            t += in(say("link.scan-program", {std::to_string(s.live->program)}));
+        t += in(say("link.scan-programs", {std::to_string(s.live->programs.size())}));
         if (!s.live->alarms.empty())
-            t += ", alarms";
+            t += in(say("link.scan-alarms"));
     }
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "; round trip %.1f ms", s.roundTripMs);
-    return t + buf;
+    char ms[32];
+    std::snprintf(ms, sizeof ms, "%.1f", s.roundTripMs);
+    t += in(say("link.scan-round-trip", {std::string(ms)}));
+    return in(say("link.scan-station", {std::to_string(s.address), t}));
 }
 
 } // namespace k528::link

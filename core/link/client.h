@@ -243,13 +243,15 @@ struct StationInfo {
     int address = 0;
     bool answers = false;   // a good echo, or an exception (someone is there)
     bool garbled = false;   // only damaged frames came back (another baud or parity?)
-    std::string echo;       // "echo ok", "exception 01", ...
+    std::string echo;       // "echo ok", "exception 01", ... (English: --json's)
+    int echoException = 0;  // the exception the echo got (0: a good echo)
     std::optional<ServerId> id;
     std::optional<LiveState> live; // when the K528-05 map's live block reads
     double roundTripMs = 0;
 };
 // Asks station `address` (one attempt each: a scan does not retry silence).
 StationInfo probeStation(Link& link, int address);
-std::string describe(const StationInfo& s);
+// "address 7: echo ok; server id 0x28 «…»; K528-05 map: mode F7 …" in a language.
+std::string describe(const StationInfo& s, bool ru = false);
 
 } // namespace k528::link

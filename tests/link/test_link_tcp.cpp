@@ -184,6 +184,16 @@ private slots:
         r = linkIn({}, *a_, {"diag"});
         QVERIFY2(r.exitCode == 0 && r.out.contains("счётчики шины станции 1 (функция Modbus 08):"), qPrintable(r.out));
         QVERIFY2(r.err.contains("линия: ответов: ") && r.err.contains("повторов: 0"), qPrintable(r.err));
+        // A scan says each station in the command's language too.
+        r = linkIn({}, *a_, {"scan", "--addresses", "1"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains("адрес 1: эхо в порядке; идентификатор сервера 0x28") &&
+                     r.out.contains("; карта K528-05: режим F7 «РАБОТА С ПЭВМ»") && r.out.contains("; время отклика "),
+                 qPrintable(r.out));
+        QVERIFY2(r.err.contains("поиск: ответивших станций: 1"), qPrintable(r.err));
+        r = linkIn("en", *a_, {"scan", "--addresses", "1"});
+        QVERIFY2(r.out.contains("address 1: echo ok; server id 0x28") && r.out.contains("; K528-05 map: mode F7"),
+                 qPrintable(r.out));
         // --json is the same in both.
         const CliResult jsonRu = linkIn("ru", *a_, {"status", "--json"});
         const CliResult jsonEn = linkIn("en", *a_, {"status", "--json"});
