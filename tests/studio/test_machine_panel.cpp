@@ -400,7 +400,7 @@ private slots:
         profile::MachineProfile p = profile::builtin("training-lathe");
         p.setC(8, 1); // АВТ.БЕЗ ПБТ of X and Z: no homing for this test
         p.setC(60, 1);
-        MainWindow w(MachineChoice{p, QString(), QString()});
+        MainWindow w(MachineChoice{p, {}, QString()});
         SimulationSession* s = w.session();
         s->setRunning(false);
         ProgramMonitor* m = w.programMonitor();

@@ -101,7 +101,7 @@ private slots:
         profile::MachineProfile p = profile::builtin("training-lathe");
         p.setC(8, 1); // АВТ.БЕЗ ПБТ
         p.setC(60, 1);
-        MainWindow w(MachineChoice{p, QString(), QString()});
+        MainWindow w(MachineChoice{p, {}, QString()});
         SimulationSession* s = w.session();
         s->setRunning(false);
         QTemporaryDir dir;

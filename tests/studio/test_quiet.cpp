@@ -129,7 +129,7 @@ private slots:
         k528::profile::MachineProfile p = k528::profile::builtin("training-lathe");
         p.setC(8, 1); // АВТ.БЕЗ ПБТ: no homing
         p.setC(60, 1);
-        MainWindow w(k528::studio::MachineChoice{p, QString(), QString()});
+        MainWindow w(k528::studio::MachineChoice{p, {}, QString()});
         w.resize(1366, 740);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));

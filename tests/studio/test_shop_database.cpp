@@ -145,7 +145,7 @@ private slots:
             QString warning;
             if (!machineNames(&warning).contains("grinder-205") || !warning.isEmpty())
                 failed = 1;
-            else if (loadMachine("grinder-205").source != "database " + file)
+            else if (loadMachine("grinder-205").source.text() != "database " + file)
                 failed = 2;
             db::Edit e;
             e.r[100] = 1;
