@@ -5652,6 +5652,10 @@ Its comment stays: %3</translation>
         <source>built-in</source>
         <translation>built-in</translation>
     </message>
+    <message>
+        <source>not in the database %1</source>
+        <translation>not in the database %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachineStore</name>
@@ -5843,10 +5847,6 @@ Its comment stays: %3</translation>
     <message>
         <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
         <translation>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</translation>
-    </message>
-    <message>
-        <source>not in the database %1</source>
-        <translation>not in the database %1</translation>
     </message>
     <message>
         <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>

@@ -5652,6 +5652,10 @@ Its comment stays: %3</source>
         <source>built-in</source>
         <translation>встроенный</translation>
     </message>
+    <message>
+        <source>not in the database %1</source>
+        <translation>нет в базе данных %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachineStore</name>
@@ -5843,10 +5847,6 @@ Its comment stays: %3</source>
     <message>
         <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
         <translation>Контроллер на линии: его светодиоды K и коррекция, как он их показывает; текста ЖКИ и клавиш на линии нет — используйте его собственный K923</translation>
-    </message>
-    <message>
-        <source>not in the database %1</source>
-        <translation>нет в базе данных %1</translation>
     </message>
     <message>
         <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>
