@@ -786,6 +786,45 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::CompletionTexts</name>
+    <message>
+        <source>%1 (axis %2)</source>
+        <translation>%1 (axis %2)</translation>
+    </message>
+    <message>
+        <source>stop until «Пуск» (START)</source>
+        <translation>stop until «Пуск» (START)</translation>
+    </message>
+    <message>
+        <source>end of program</source>
+        <translation>end of program</translation>
+    </message>
+    <message>
+        <source>end of subprogram</source>
+        <translation>end of subprogram</translation>
+    </message>
+    <message>
+        <source>user parameter</source>
+        <translation>user parameter</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserved</translation>
+    </message>
+    <message>
+        <source>reserved (read only)</source>
+        <translation>reserved (read only)</translation>
+    </message>
+    <message>
+        <source>%1 (read only)</source>
+        <translation>%1 (read only)</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>program %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConflictDialog</name>
     <message>
         <source>Changed on another PC — %1</source>

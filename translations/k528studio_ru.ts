@@ -786,6 +786,45 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::CompletionTexts</name>
+    <message>
+        <source>%1 (axis %2)</source>
+        <translation>%1 (ось %2)</translation>
+    </message>
+    <message>
+        <source>stop until «Пуск» (START)</source>
+        <translation>останов до «Пуск»</translation>
+    </message>
+    <message>
+        <source>end of program</source>
+        <translation>конец программы</translation>
+    </message>
+    <message>
+        <source>end of subprogram</source>
+        <translation>конец подпрограммы</translation>
+    </message>
+    <message>
+        <source>user parameter</source>
+        <translation>параметр пользователя</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>резерв</translation>
+    </message>
+    <message>
+        <source>reserved (read only)</source>
+        <translation>резерв (только чтение)</translation>
+    </message>
+    <message>
+        <source>%1 (read only)</source>
+        <translation>%1 (только чтение)</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>программа %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConflictDialog</name>
     <message>
         <source>Changed on another PC — %1</source>

@@ -23,6 +23,8 @@
 #include "editor/editor_tab.h"
 #include "editor/refactor_actions.h"
 #include "editor/refactor_texts.h"
+#include "editor/completion_texts.h"
+#include "editing/completion.h"
 #include "editor/listing_actions.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
@@ -1078,6 +1080,14 @@ void TestUiLanguage::russianCoreTexts() {
         r.args = {"7"};
         return std::pair(studio::refactorText(r), r.text(true));
     }, &walker, QStringLiteral("refactoring %1"));
+    // What a completion of the editor means (its popup), a meaning of table 5
+    // in the window's language (what core's catalog says in Russian).
+    checkCatalog(editing::completionTexts(), studio::hasCompletionText, [](std::string_view id) {
+        editing::CompletionItem item;
+        item.detailId = std::string(id);
+        item.detailArgs = {{"подача", "feed"}, {"X", "X"}};
+        return std::pair(studio::completionDetail(item), item.detail(true));
+    }, &walker, QStringLiteral("completion %1"));
     if (QTest::currentTestFailed())
         return;
     // The simulated controller refuses in the window's language, naming the
