@@ -5,6 +5,7 @@
 #include "session/catalog_texts.h"
 #include "controller/controller.h"
 #include "profile/english.h"
+#include "window_language.h"
 
 #include <QEvent>
 #include <QHeaderView>
