@@ -6385,6 +6385,10 @@ Its comment stays: %3</translation>
         <source>cone angles are within ±90°</source>
         <translation>cone angles are within ±90°</translation>
     </message>
+    <message>
+        <source>no UCG in the file</source>
+        <translation>no UCG in the file</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ProveoutTexts</name>

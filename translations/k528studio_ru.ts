@@ -6385,6 +6385,10 @@ Its comment stays: %3</source>
         <source>cone angles are within ±90°</source>
         <translation>углы конусов в пределах ±90°</translation>
     </message>
+    <message>
+        <source>no UCG in the file</source>
+        <translation>в файле нет UCG</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ProveoutTexts</name>

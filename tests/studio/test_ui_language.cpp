@@ -35,7 +35,10 @@
 #include "k923/key_face.h"
 #include "language.h"
 #include "link_plugins.h"
+#include "machine/fault_texts.h"
 #include "machine/pendant_controls.h"
+#include "machine/simulation.h"
+#include "stock/stock.h"
 #include "main_window.h"
 #include "db/database.h"
 #include "db/db_texts.h"
@@ -511,6 +514,9 @@ private slots:
     // Machine with a bad machine file, the constants dock's import of a bad
     // file, the prove-out pane with a bad blank or a bad tool.
     void russianCoreTexts();
+    // A UCG line's errors and the simulated machine's faults: every id of
+    // core's catalog (what `k528` prints) has the same Russian in the window.
+    void russianBlankAndFaultTexts();
 
 private:
     QTemporaryDir dir_;
@@ -1214,6 +1220,22 @@ void TestUiLanguage::russianCoreTexts() {
         qWarning("%s", qPrintable(l));
     QVERIFY2(walker.leaks.isEmpty(),
              qPrintable(QStringLiteral("%1 texts of another language in --lang ru (listed above)").arg(walker.leaks.size())));
+    QVERIFY(studio::setLanguage("en"));
+}
+
+void TestUiLanguage::russianBlankAndFaultTexts() {
+    QVERIFY(studio::setLanguage("ru"));
+    checkCatalog(stock::ucgTexts(), studio::hasUcgText, [](std::string_view id) {
+        return std::pair(studio::ucgErrorText(id), "UCG: " + stock::ucgTexts().render(id, {}, true));
+    });
+    checkCatalog(machine::faultTexts(), studio::hasFaultText, [](std::string_view id) {
+        const machine::FaultText t{std::string(id), {"X", "2"}};
+        return std::pair(studio::faultTitle(t), machine::faultTextIn(t, true));
+    });
+    // A shipped machine's equipment by its Russian name, in both.
+    const machine::FaultText pump{"pump_overload", {"coolant"}, true};
+    QCOMPARE(studio::faultTitle(pump), QStringLiteral("Перегрузка двигателя: насос СОЖ"));
+    QCOMPARE(studio::faultTitle(pump), QString::fromStdString(machine::faultTextIn(pump, true)));
     QVERIFY(studio::setLanguage("en"));
 }
 
