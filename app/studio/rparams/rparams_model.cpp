@@ -46,7 +46,6 @@ Controller& RParamsModel::controller() const { return viewed_.current(); }
 
 void RParamsModel::retranslate() {
     beginResetModel();
-    russian_ = russianWindow();
     search_.assign(engine::kRCount, QString());
     for (int n = 0; n < engine::kRCount; ++n) {
         const catalog::RParamDef& d = catalog::rParam(n);
@@ -124,13 +123,12 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
             return {};
         case Group:
             return d.group == 0 ? QString()
-                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(fromStd(
-                                      russian_ ? catalog::rGroupNameRu(d.group) : catalog::rGroupNameEn(d.group)));
+                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(coreText(catalog::rGroupNameRu(d.group), catalog::rGroupNameEn(d.group)));
         case Meaning: {
-            QString m = fromStd(russian_ ? d.meaningRu : d.meaningEn);
-            const std::string_view unit = russian_ ? catalog::rUnitRu(d.unit) : catalog::rUnitEn(d.unit);
-            if (!unit.empty() && d.unit != catalog::RUnit::Number)
-                m += QStringLiteral(" [%1]").arg(fromStd(unit));
+            QString m = coreText(d.meaningRu, d.meaningEn);
+            const QString unit = coreText(catalog::rUnitRu(d.unit), catalog::rUnitEn(d.unit));
+            if (!unit.isEmpty() && d.unit != catalog::RUnit::Number)
+                m += QStringLiteral(" [%1]").arg(unit);
             return m;
         }
         case Value:
@@ -146,11 +144,11 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
         }
     }
     if (role == Qt::ToolTipRole) {
-        QString t = fromStd(russian_ ? d.meaningRu : d.meaningEn);
+        QString t = coreText(d.meaningRu, d.meaningEn);
         if (!d.panelHint.empty())
             t += QStringLiteral("\n") + fromStd(d.panelHint);
-        if (!d.note.empty() && !russian_) // the catalog's notes are English
-            t += QStringLiteral("\n") + fromStd(d.note);
+        if (const QString note = coreText({}, d.note); !note.isEmpty()) // the catalog's notes are English only
+            t += QStringLiteral("\n") + note;
         return t;
     }
     if (role == Qt::TextAlignmentRole && (index.column() == Value || index.column() == Mm || index.column() == Preset))
