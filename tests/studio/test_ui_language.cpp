@@ -1272,6 +1272,9 @@ void TestUiLanguage::catalogTextsAsCore() {
             QCOMPARE(studio::modeName(m), view(russian ? engine::modeNameRu(m) : engine::modeNameEn(m)));
         for (const profile::ToolKind k : kinds)
             QCOMPARE(studio::toolKindText(k), view(proveout::toolKindText(k, russian)));
+        for (int g = 1; g <= 9; ++g)
+            QCOMPARE(studio::rGroupName(g), view(russian ? catalog::rGroupNameRu(g) : catalog::rGroupNameEn(g)));
+        QVERIFY(studio::rGroupName(10).isEmpty());
         // A text core keeps in both languages as data: the window's one.
         QCOMPARE(studio::coreText("ручной", "manual"), russian ? QStringLiteral("ручной") : QStringLiteral("manual"));
     }
