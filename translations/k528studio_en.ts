@@ -1099,6 +1099,42 @@
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
+    <message>
+        <source>coordinates and offsets</source>
+        <translation>coordinates and offsets</translation>
+    </message>
+    <message>
+        <source>initial position</source>
+        <translation>initial position</translation>
+    </message>
+    <message>
+        <source>adjustment</source>
+        <translation>adjustment</translation>
+    </message>
+    <message>
+        <source>dressing</source>
+        <translation>dressing</translation>
+    </message>
+    <message>
+        <source>grinding wheel</source>
+        <translation>grinding wheel</translation>
+    </message>
+    <message>
+        <source>diamond</source>
+        <translation>diamond</translation>
+    </message>
+    <message>
+        <source>oscillation</source>
+        <translation>oscillation</translation>
+    </message>
+    <message>
+        <source>speeds</source>
+        <translation>speeds</translation>
+    </message>
+    <message>
+        <source>axial orientation</source>
+        <translation>axial orientation</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CompletionTexts</name>
@@ -6699,6 +6735,10 @@ Its comment stays: %3</translation>
     <message>
         <source>cone angles are within ±90°</source>
         <translation>cone angles are within ±90°</translation>
+    </message>
+    <message>
+        <source>no UCG in the file</source>
+        <translation>no UCG in the file</translation>
     </message>
 </context>
 <context>

@@ -1099,6 +1099,42 @@
         <source>%1. %2</source>
         <translation>%1. %2</translation>
     </message>
+    <message>
+        <source>coordinates and offsets</source>
+        <translation>КООРД.И СМЕЩЕНИЯ</translation>
+    </message>
+    <message>
+        <source>initial position</source>
+        <translation>ИСХОДНОЕ</translation>
+    </message>
+    <message>
+        <source>adjustment</source>
+        <translation>ПОДНАЛАДКА</translation>
+    </message>
+    <message>
+        <source>dressing</source>
+        <translation>ПРАВКА</translation>
+    </message>
+    <message>
+        <source>grinding wheel</source>
+        <translation>ШЛИФ.КРУГ</translation>
+    </message>
+    <message>
+        <source>diamond</source>
+        <translation>АЛМАЗ</translation>
+    </message>
+    <message>
+        <source>oscillation</source>
+        <translation>ОСЦИЛЛЯЦИЯ</translation>
+    </message>
+    <message>
+        <source>speeds</source>
+        <translation>СКОРОСТИ</translation>
+    </message>
+    <message>
+        <source>axial orientation</source>
+        <translation>ОСЕВАЯ</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CompletionTexts</name>
@@ -6699,6 +6735,10 @@ Its comment stays: %3</source>
     <message>
         <source>cone angles are within ±90°</source>
         <translation>углы конусов в пределах ±90°</translation>
+    </message>
+    <message>
+        <source>no UCG in the file</source>
+        <translation>в файле нет UCG</translation>
     </message>
 </context>
 <context>

@@ -35,7 +35,10 @@
 #include "k923/key_face.h"
 #include "language.h"
 #include "link_plugins.h"
+#include "machine/fault_texts.h"
 #include "machine/pendant_controls.h"
+#include "machine/simulation.h"
+#include "stock/stock.h"
 #include "main_window.h"
 #include "db/database.h"
 #include "db/db_texts.h"
@@ -515,6 +518,9 @@ private slots:
     // Machine with a bad machine file, the constants dock's import of a bad
     // file, the prove-out pane with a bad blank or a bad tool.
     void russianCoreTexts();
+    // A UCG line's errors and the simulated machine's faults: every id of
+    // core's catalog (what `k528` prints) has the same Russian in the window.
+    void russianBlankAndFaultTexts();
     // The names and messages of core's catalogs the window says through
     // tr() (the positioner's messages, the modes, the kinds of tool): in
     // Russian letter by letter core's Russian, in English core's English.
@@ -1225,6 +1231,22 @@ void TestUiLanguage::russianCoreTexts() {
     QVERIFY(studio::setLanguage("en"));
 }
 
+void TestUiLanguage::russianBlankAndFaultTexts() {
+    QVERIFY(studio::setLanguage("ru"));
+    checkCatalog(stock::ucgTexts(), studio::hasUcgText, [](std::string_view id) {
+        return std::pair(studio::ucgErrorText(id), "UCG: " + stock::ucgTexts().render(id, {}, true));
+    });
+    checkCatalog(machine::faultTexts(), studio::hasFaultText, [](std::string_view id) {
+        const machine::FaultText t{std::string(id), {"X", "2"}};
+        return std::pair(studio::faultTitle(t), machine::faultTextIn(t, true));
+    });
+    // A shipped machine's equipment by its Russian name, in both.
+    const machine::FaultText pump{"pump_overload", {"coolant"}, true};
+    QCOMPARE(studio::faultTitle(pump), QStringLiteral("Перегрузка двигателя: насос СОЖ"));
+    QCOMPARE(studio::faultTitle(pump), QString::fromStdString(machine::faultTextIn(pump, true)));
+    QVERIFY(studio::setLanguage("en"));
+}
+
 void TestUiLanguage::catalogTextsAsCore() {
     const auto view = [](std::string_view v) { return QString::fromUtf8(v.data(), static_cast<qsizetype>(v.size())); };
     const std::vector<engine::Mode> modes = {engine::Mode::Auto,        engine::Mode::Manual,      engine::Mode::Reference,
@@ -1250,6 +1272,9 @@ void TestUiLanguage::catalogTextsAsCore() {
             QCOMPARE(studio::modeName(m), view(russian ? engine::modeNameRu(m) : engine::modeNameEn(m)));
         for (const profile::ToolKind k : kinds)
             QCOMPARE(studio::toolKindText(k), view(proveout::toolKindText(k, russian)));
+        for (int g = 1; g <= 9; ++g)
+            QCOMPARE(studio::rGroupName(g), view(russian ? catalog::rGroupNameRu(g) : catalog::rGroupNameEn(g)));
+        QVERIFY(studio::rGroupName(10).isEmpty());
         // A text core keeps in both languages as data: the window's one.
         QCOMPARE(studio::coreText("ручной", "manual"), russian ? QStringLiteral("ручной") : QStringLiteral("manual"));
     }

@@ -3,6 +3,7 @@
 #include "catalog/rparams.h"
 #include "engine/positioner.h"
 #include "engine/rparams.h"
+#include "session/catalog_texts.h"
 #include "window_language.h"
 #include "controller/controller.h"
 #include "units/units.h"
@@ -123,7 +124,7 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
             return {};
         case Group:
             return d.group == 0 ? QString()
-                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(coreText(catalog::rGroupNameRu(d.group), catalog::rGroupNameEn(d.group)));
+                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(rGroupName(d.group));
         case Meaning: {
             QString m = coreText(d.meaningRu, d.meaningEn);
             const QString unit = coreText(catalog::rUnitRu(d.unit), catalog::rUnitEn(d.unit));

@@ -104,9 +104,23 @@ const TranslatedText kToolKinds[] = {
     {"5", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "threading")},
 };
 
+// catalog::rGroupNameEn, by group 1..9 (the preset screens «УСТАНОВОЧНЫЕ ДАННЫЕ n»).
+const TranslatedText kRGroups[] = {
+    {"1", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "coordinates and offsets")},
+    {"2", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "initial position")},
+    {"3", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "adjustment")},
+    {"4", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "dressing")},
+    {"5", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "grinding wheel")},
+    {"6", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "diamond")},
+    {"7", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "oscillation")},
+    {"8", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "speeds")},
+    {"9", QT_TRANSLATE_NOOP("k528::studio::CatalogTexts", "axial orientation")},
+};
+
 const TranslatedTexts kMessageTexts("k528::studio::CatalogTexts", kMessages);
 const TranslatedTexts kModeTexts("k528::studio::CatalogTexts", kModes);
 const TranslatedTexts kToolKindTexts("k528::studio::CatalogTexts", kToolKinds);
+const TranslatedTexts kRGroupTexts("k528::studio::CatalogTexts", kRGroups);
 
 } // namespace
 
@@ -123,6 +137,8 @@ QString alarmLine(const engine::AlarmView& a) {
 }
 
 QString modeName(engine::Mode m) { return kModeTexts.pattern(std::to_string(static_cast<int>(m))); }
+
+QString rGroupName(int group) { return kRGroupTexts.pattern(std::to_string(group)); }
 
 QString toolKindText(profile::ToolKind k) { return kToolKindTexts.pattern(std::to_string(static_cast<int>(k))); }
 

@@ -1,8 +1,8 @@
 // Names and messages of core's catalogs in the window's language: each is
 // marked for the translators with core's English and translated into
 // core's Russian letter by letter (studio.ui_language compares them). The
-// positioner's messages of table М.1, the controller's modes, the kinds of
-// tool.
+// positioner's messages of table М.1, the controller's modes, the preset
+// groups of the R-parameters, the kinds of tool.
 #pragma once
 
 #include <QString>
@@ -29,6 +29,9 @@ QString alarmMessage(const engine::AlarmView& a);
 QString alarmLine(const engine::AlarmView& a);
 // «АВТОМАТ» / "automatic", «РУЧНОЙ» / "manual", …
 QString modeName(engine::Mode m);
+// The name of the R-parameters' preset group 1..9, «КООРД.И СМЕЩЕНИЯ» /
+// "coordinates and offsets"; "" outside 1..9.
+QString rGroupName(int group);
 // «проходной» / "turning", «расточной» / "boring", …
 QString toolKindText(profile::ToolKind k);
 
