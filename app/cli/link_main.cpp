@@ -106,6 +106,7 @@ int main(int argc, char** argv) {
     }
     const std::string cmd = argv[1];
     std::vector<std::string> args(argv + 2, argv + argc);
+    k528::cli::readCommandLineLanguage(args);
     try {
         // As k528's main: a lost write of standard output fails the command.
         if (cmd == "serve")
