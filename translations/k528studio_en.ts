@@ -786,6 +786,45 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::CompletionTexts</name>
+    <message>
+        <source>%1 (axis %2)</source>
+        <translation>%1 (axis %2)</translation>
+    </message>
+    <message>
+        <source>stop until «Пуск» (START)</source>
+        <translation>stop until «Пуск» (START)</translation>
+    </message>
+    <message>
+        <source>end of program</source>
+        <translation>end of program</translation>
+    </message>
+    <message>
+        <source>end of subprogram</source>
+        <translation>end of subprogram</translation>
+    </message>
+    <message>
+        <source>user parameter</source>
+        <translation>user parameter</translation>
+    </message>
+    <message>
+        <source>reserved</source>
+        <translation>reserved</translation>
+    </message>
+    <message>
+        <source>reserved (read only)</source>
+        <translation>reserved (read only)</translation>
+    </message>
+    <message>
+        <source>%1 (read only)</source>
+        <translation>%1 (read only)</translation>
+    </message>
+    <message>
+        <source>program %1</source>
+        <translation>program %1</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::ConflictDialog</name>
     <message>
         <source>Changed on another PC — %1</source>
@@ -5848,6 +5887,10 @@ Its comment stays: %3</translation>
         <source>built-in</source>
         <translation>built-in</translation>
     </message>
+    <message>
+        <source>not in the database %1</source>
+        <translation>not in the database %1</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::MachineStore</name>
@@ -6039,10 +6082,6 @@ Its comment stays: %3</translation>
     <message>
         <source>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</source>
         <translation>The controller on the line: its K LEDs and override as it shows them; its LCD text and keys are not on the link — use its own K923</translation>
-    </message>
-    <message>
-        <source>not in the database %1</source>
-        <translation>not in the database %1</translation>
     </message>
     <message>
         <source>The database %1 has no machine %2: it runs as it was loaded; File &gt; Machine offers this database's machines</source>

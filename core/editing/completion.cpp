@@ -1,6 +1,7 @@
 #include "editing/completion.h"
 
 #include <algorithm>
+#include <string_view>
 
 #include "catalog/rparams.h"
 #include "plc/description.h"
@@ -10,14 +11,47 @@
 namespace k528::editing {
 namespace {
 
-using program::Axis;
-
-std::string axisSuffixRu(Axis a) { return a == Axis::X ? " (ось X)" : a == Axis::Z ? " (ось Z)" : ""; }
-std::string axisSuffixEn(Axis a) { return a == Axis::X ? " (axis X)" : a == Axis::Z ? " (axis Z)" : ""; }
+constexpr util::CatalogText kTexts[] = {
+    {"completion.on-axis", "%1 (ось %2)", "%1 (axis %2)"},
+    {"completion.m-stop", "останов до «Пуск»", "stop until «Пуск» (START)"},
+    {"completion.m-end-program", "конец программы", "end of program"},
+    {"completion.m-end-subprogram", "конец подпрограммы", "end of subprogram"},
+    {"completion.r-user", "параметр пользователя", "user parameter"},
+    {"completion.r-reserved", "резерв", "reserved"},
+    {"completion.r-reserved-read-only", "резерв (только чтение)", "reserved (read only)"},
+    {"completion.r-read-only", "%1 (только чтение)", "%1 (read only)"},
+    {"completion.program", "программа %1", "program %1"},
+};
 
 char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c; }
 
+// One text shown as it is in both languages.
+CompletionWords both(std::string text) { return {text, std::move(text)}; }
+
+CompletionWords words(std::string_view ru, std::string_view en) { return {std::string(ru), std::string(en)}; }
+
+CompletionItem item(CompletionKind kind, std::string word, std::string detailId,
+                    std::vector<CompletionWords> detailArgs, int group = 0) {
+    return {kind, std::move(word), std::move(detailId), std::move(detailArgs), group};
+}
+
 } // namespace
+
+util::TextCatalog completionTexts() { return util::TextCatalog(kTexts); }
+
+std::vector<std::string> CompletionItem::detailArgsIn(bool russian) const {
+    std::vector<std::string> out;
+    out.reserve(detailArgs.size());
+    for (const CompletionWords& w : detailArgs)
+        out.push_back(w.in(russian));
+    return out;
+}
+
+std::string CompletionItem::detail(bool russian) const {
+    if (detailId.empty())
+        return detailArgs.empty() ? std::string() : detailArgs.front().in(russian);
+    return completionTexts().render(detailId, detailArgsIn(russian), russian);
+}
 
 std::vector<int> knownGNumbers() {
     std::vector<int> out;
@@ -31,29 +65,28 @@ std::vector<CompletionItem> completionCatalog(const CompletionContext& ctx) {
     std::vector<CompletionItem> out;
     for (int g : knownGNumbers()) {
         const program::GInfo info = program::classifyG(g);
-        CompletionItem it;
-        it.kind = CompletionKind::G;
-        it.word = "G" + std::to_string(g);
-        it.group = static_cast<int>(info.group);
-        it.detailRu = std::string(program::gMeaningRu(info.function)) + axisSuffixRu(info.axis);
-        it.detailEn = std::string(program::gMeaningEn(info.function)) + axisSuffixEn(info.axis);
+        const CompletionWords meaning = words(program::gMeaningRu(info.function), program::gMeaningEn(info.function));
+        CompletionItem it = item(CompletionKind::G, "G" + std::to_string(g), "", {meaning}, static_cast<int>(info.group));
+        if (info.axis != program::Axis::None) {
+            it.detailId = "completion.on-axis";
+            it.detailArgs.push_back(both(info.axis == program::Axis::X ? "X" : "Z"));
+        }
         out.push_back(std::move(it));
     }
     // Built-in M's (program-language.md), then the machine's PLC M-codes.
     struct BuiltIn {
         int m;
-        const char* ru;
-        const char* en;
+        const char* text; // an id of completionTexts()
     };
     static const BuiltIn kBuiltIn[] = {
-        {program::mfunc::kStop, "останов до «Пуск»", "stop until «Пуск» (START)"},
-        {program::mfunc::kEnd, "конец программы", "end of program"},
-        {program::mfunc::kSubprogramEnd, "конец подпрограммы", "end of subprogram"},
-        {program::mfunc::kEndRewind, "конец программы", "end of program"},
+        {program::mfunc::kStop, "completion.m-stop"},
+        {program::mfunc::kEnd, "completion.m-end-program"},
+        {program::mfunc::kSubprogramEnd, "completion.m-end-subprogram"},
+        {program::mfunc::kEndRewind, "completion.m-end-program"},
     };
     std::vector<int> seenM;
     for (const BuiltIn& b : kBuiltIn) {
-        out.push_back({CompletionKind::M, "M" + std::to_string(b.m), b.ru, b.en, 0});
+        out.push_back(item(CompletionKind::M, "M" + std::to_string(b.m), b.text, {}));
         seenM.push_back(b.m);
     }
     if (ctx.machine) {
@@ -63,46 +96,39 @@ std::vector<CompletionItem> completionCatalog(const CompletionContext& ctx) {
             if (m.text.empty() || std::find(seenM.begin(), seenM.end(), m.m) != seenM.end())
                 continue;
             // The description names it in English only: both languages show it.
-            out.push_back({CompletionKind::M, "M" + std::to_string(m.m), m.text, m.text, 0});
+            out.push_back(item(CompletionKind::M, "M" + std::to_string(m.m), "", {both(m.text)}));
             seenM.push_back(m.m);
         }
     }
     for (int r = 0; r < catalog::kRParamCount; ++r) {
         const catalog::RParamDef& d = catalog::rParam(r);
-        CompletionItem it;
-        it.kind = CompletionKind::R;
-        it.word = "R" + std::to_string(r);
-        it.group = d.group;
-        if (d.user()) {
-            it.detailRu = "параметр пользователя";
-            it.detailEn = "user parameter";
-        } else {
-            it.detailRu = d.meaningRu.empty() ? "зарезервирован" : std::string(d.meaningRu);
-            it.detailEn = d.meaningEn.empty() ? "reserved" : std::string(d.meaningEn);
-            if (d.readOnly()) {
-                it.detailRu += " (только чтение)";
-                it.detailEn += " (read only)";
-            }
-        }
-        out.push_back(std::move(it));
+        std::string word = "R" + std::to_string(r);
+        if (d.user())
+            out.push_back(item(CompletionKind::R, std::move(word), "completion.r-user", {}, d.group));
+        else if (d.meaningRu.empty())
+            out.push_back(item(CompletionKind::R, std::move(word),
+                               d.readOnly() ? "completion.r-reserved-read-only" : "completion.r-reserved", {}, d.group));
+        else
+            out.push_back(item(CompletionKind::R, std::move(word), d.readOnly() ? "completion.r-read-only" : "",
+                               {words(d.meaningRu, d.meaningEn.empty() ? d.meaningRu : d.meaningEn)}, d.group));
     }
     if (ctx.store) {
         for (const program::Program& p : ctx.store->programs()) {
             const std::string title = p.title.value_or("");
-            out.push_back({CompletionKind::Call, "L" + std::to_string(p.number),
-                           title.empty() ? "программа " + std::to_string(p.number) : title,
-                           title.empty() ? "program " + std::to_string(p.number) : title, 0});
+            out.push_back(title.empty() ? item(CompletionKind::Call, "L" + std::to_string(p.number), "completion.program",
+                                               {both(std::to_string(p.number))})
+                                        : item(CompletionKind::Call, "L" + std::to_string(p.number), "", {both(title)}));
         }
         if (const program::Program* p = ctx.store->find(ctx.currentProgram)) {
             for (const program::Frame& f : p->frames) {
                 if (f.number() == 0 || p->indexOfN(f.number()) < 0)
                     continue;
-                const std::string text = program::formatFrame(f);
-                out.push_back({CompletionKind::JumpTarget, std::to_string(f.number()), text, text, 0});
+                out.push_back(item(CompletionKind::JumpTarget, std::to_string(f.number()), "",
+                                   {both(program::formatFrame(f))}));
             }
         }
         for (const program::Message& m : ctx.store->messages.entries)
-            out.push_back({CompletionKind::Message, "#" + std::to_string(m.number), m.text, m.text, 0});
+            out.push_back(item(CompletionKind::Message, "#" + std::to_string(m.number), "", {both(m.text)}));
     }
     return out;
 }

@@ -79,6 +79,26 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(profile::FileError, loadMachine("no-such-machine"));
     }
 
+    // Each source is said in the window's language, a machine the database
+    // does not hold (any more) too.
+    void eachSourceInTheWindowsLanguage() {
+        const MachineSource database{MachineSource::Kind::Database, db_};
+        const MachineSource builtin{MachineSource::Kind::Builtin, QString()};
+        const MachineSource file{MachineSource::Kind::File, QStringLiteral("/tmp/lathe.k528m")};
+        const MachineSource gone{MachineSource::Kind::NotInDatabase, db_};
+        QCOMPARE(MachineSource{}.text(), QString());
+        QCOMPARE(database.text(), "database " + db_);
+        QCOMPARE(builtin.text(), QStringLiteral("built-in"));
+        QCOMPARE(file.text(), QStringLiteral("/tmp/lathe.k528m"));
+        QCOMPARE(gone.text(), "not in the database " + db_);
+        QVERIFY(setLanguage("ru"));
+        QCOMPARE(database.text(), "база данных " + db_);
+        QCOMPARE(builtin.text(), QStringLiteral("встроенный"));
+        QCOMPARE(file.text(), QStringLiteral("/tmp/lathe.k528m"));
+        QCOMPARE(gone.text(), "нет в базе данных " + db_);
+        QVERIFY(setLanguage("en"));
+    }
+
     void fileMenuSwitchesTheMachine() {
         auto* w = new MainWindow(loadMachine("training-lathe"));
         w->setAttribute(Qt::WA_DeleteOnClose);

@@ -23,6 +23,8 @@
 #include "editor/editor_tab.h"
 #include "editor/refactor_actions.h"
 #include "editor/refactor_texts.h"
+#include "editor/completion_texts.h"
+#include "editing/completion.h"
 #include "editor/listing_actions.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
@@ -755,13 +757,12 @@ void TestUiLanguage::russianErrors() {
                  QStringLiteral("нет соединения за 1000 мс"));
     }
     // Every text of the link's catalog: the window's Russian is core's.
-    for (const util::CatalogText& t : link::linkTexts().texts()) {
-        QVERIFY2(studio::hasLinkText(t.id), t.id.data());
-        const link::Said s = link::say(t.id, {"R7", "5", "6000..6031", "L"});
-        QCOMPARE(studio::linkText(s), QString::fromStdString(link::render(s, true)));
-        walker.check(QStringLiteral("link text %1").arg(QString::fromUtf8(t.id.data(), static_cast<qsizetype>(t.id.size()))),
-                     studio::linkText(s));
-    }
+    checkCatalog(link::linkTexts(), studio::hasLinkText, [](std::string_view id) {
+        const link::Said s = link::say(id, {"R7", "5", "6000..6031", "L"});
+        return std::pair(studio::linkText(s), link::render(s, true));
+    }, &walker, QStringLiteral("link text %1"));
+    if (QTest::currentTestFailed())
+        return;
 
     // The push preview: what changes, in the window's words.
     {
@@ -1062,11 +1063,10 @@ void TestUiLanguage::russianCoreTexts() {
         QCOMPARE(studio::refusalText(refusal), QString::fromUtf8(engine::refusalTextRu(refusal).data()));
     }
     // The database's texts: the same Russian as core's catalog (`k528 db … --lang ru`).
-    for (const util::CatalogText& t : db::dbTexts().texts()) {
-        QVERIFY2(studio::hasDatabaseText(t.id), t.id.data());
+    checkCatalog(db::dbTexts(), studio::hasDatabaseText, [](std::string_view id) {
         const std::vector<std::string> args = {"lathe", "12", "34", "L3", "5", "6"};
-        QCOMPARE(studio::databaseText(t.id, args), QString::fromStdString(db::dbText(t.id, args, true)));
-    }
+        return std::pair(studio::databaseText(id, args), db::dbText(id, args, true));
+    });
     // Why, with the value and the limit: the same Russian as core's catalog.
     checkCatalog(engine::refusalTexts(), studio::hasRefusalText, [](std::string_view id) {
         const engine::OpResult r = engine::OpResult::refused(engine::Refusal::WrongMode, std::string(id), {"C022", "9", "10...5000", "X"});
@@ -1080,6 +1080,14 @@ void TestUiLanguage::russianCoreTexts() {
         r.args = {"7"};
         return std::pair(studio::refactorText(r), r.text(true));
     }, &walker, QStringLiteral("refactoring %1"));
+    // What a completion of the editor means (its popup), a meaning of table 5
+    // in the window's language (what core's catalog says in Russian).
+    checkCatalog(editing::completionTexts(), studio::hasCompletionText, [](std::string_view id) {
+        editing::CompletionItem item;
+        item.detailId = std::string(id);
+        item.detailArgs = {{"подача", "feed"}, {"X", "X"}};
+        return std::pair(studio::completionDetail(item), item.detail(true));
+    }, &walker, QStringLiteral("completion %1"));
     if (QTest::currentTestFailed())
         return;
     // The simulated controller refuses in the window's language, naming the

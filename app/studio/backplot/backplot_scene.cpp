@@ -71,6 +71,7 @@ struct BackplotScene::Vtk {
     vtkNew<vtkCylinderSource> cylinder;
     std::size_t sweepLimit = ~std::size_t{0};
     vtkNew<vtkLookupTable> lut;
+    double actualMaxUm = -1; // the lut's top for the actual path (-1: not set since its buffers were made)
     vtkNew<vtkScalarBarActor> bar;
     vtkNew<vtkLegendScaleActor> legend;
     vtkNew<vtkTextActor> warning;
@@ -328,6 +329,7 @@ void BackplotScene::setActual(const toolpath::ActualPath* a) {
     v_->actual.data->SetPoints(pts);
     v_->actual.data->SetLines(lines);
     v_->actual.data->GetPointData()->SetScalars(err);
+    v_->actualMaxUm = -1;
     appendActual(a, 0);
 }
 
@@ -344,6 +346,9 @@ void BackplotScene::appendActual(const toolpath::ActualPath* a, std::size_t from
     // Resume where the buffers end (they hold samples [0, shown)).
     const std::size_t shown = static_cast<std::size_t>(pts->GetNumberOfPoints());
     from = std::min(from, shown);
+    // The colour scale's top: the largest error drawn (at least 1 µm),
+    // followed over the new samples only.
+    double maxUm = std::max(1.0, v_->actualMaxUm);
     if (from < shown) { // rewritten samples: rebuild
         pts->SetNumberOfPoints(static_cast<vtkIdType>(from));
         err->SetNumberOfTuples(static_cast<vtkIdType>(from));
@@ -352,11 +357,18 @@ void BackplotScene::appendActual(const toolpath::ActualPath* a, std::size_t from
             const vtkIdType ids[2] = {static_cast<vtkIdType>(i - 1), static_cast<vtkIdType>(i)};
             lines->InsertNextCell(2, ids);
         }
+        maxUm = 1.0;
+        for (vtkIdType i = 0; i < err->GetNumberOfTuples(); ++i)
+            maxUm = std::max(maxUm, static_cast<double>(err->GetValue(i)));
     }
+    if (from == a->samples.size() && from == shown)
+        return; // nothing new: the buffers (and the picture) stay as they are
     for (std::size_t i = from; i < a->samples.size(); ++i) {
         const toolpath::ActualSample& s = a->samples[i];
         const vtkIdType id = pts->InsertNextPoint(s.z, s.x, 0.2);
-        err->InsertNextValue(static_cast<float>(std::hypot(s.errX, s.errZ) * 1000.0));
+        const float um = static_cast<float>(std::hypot(s.errX, s.errZ) * 1000.0);
+        err->InsertNextValue(um);
+        maxUm = std::max(maxUm, static_cast<double>(um));
         if (id > 0) {
             const vtkIdType ids[2] = {id - 1, id};
             lines->InsertNextCell(2, ids);
@@ -366,11 +378,12 @@ void BackplotScene::appendActual(const toolpath::ActualPath* a, std::size_t from
     err->Modified();
     lines->Modified();
     v_->actual.data->Modified();
-    double maxUm = 1.0;
-    if (err->GetNumberOfTuples() > 0)
-        maxUm = std::max(maxUm, static_cast<double>(err->GetRange()[1]));
-    v_->lut->SetTableRange(0, maxUm);
-    v_->lut->Build();
+    // The scale (and the µm bar's labels, rebuilt with it) only when its top moved.
+    if (maxUm != v_->actualMaxUm) {
+        v_->actualMaxUm = maxUm;
+        v_->lut->SetTableRange(0, maxUm);
+        v_->lut->Build();
+    }
     v_->bar->SetVisibility(mode_ == ViewMode::XZ && pts->GetNumberOfPoints() >= 2);
 }
 

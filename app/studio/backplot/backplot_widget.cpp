@@ -158,6 +158,7 @@ BackplotWidget::BackplotWidget(QWidget* parent)
     liveTimer_->setSingleShot(true);
     connect(liveTimer_, &QTimer::timeout, this, [this] {
         scene_->refreshTool(pw_, ph_);
+        liveRendered_ = liveShows();
         sinceLiveRender_.restart();
         gl_->requestRender();
     });
@@ -507,13 +508,32 @@ void BackplotWidget::tickPlayback() {
 
 void BackplotWidget::appendLive(const toolpath::ActualPath& path, std::size_t from,
                                 const std::optional<k528::backplot::BackplotScene::LiveTool>& tool) {
+    const bool rewritten = from < scene_->actualPointsShown() || scene_->actual() != &path;
     scene_->appendActual(&path, from);
     scene_->setLiveTool(tool);
-    // Rendered at most every kLiveIntervalMs: the latest batch then.
+    // Rendered at most every kLiveIntervalMs: the latest batch then; not at
+    // all when the picture would be the last one again.
     if (liveTimer_->isActive())
+        return;
+    if (!rewritten && liveShows() == liveRendered_)
         return;
     const qint64 since = sinceLiveRender_.isValid() ? sinceLiveRender_.elapsed() : kLiveIntervalMs;
     liveTimer_->start(static_cast<int>(std::max<qint64>(0, kLiveIntervalMs - since)));
+}
+
+BackplotWidget::LiveShown BackplotWidget::liveShows() const {
+    LiveShown shown;
+    shown.samples = scene_->actualPointsShown();
+    if (const auto& tool = scene_->liveTool()) {
+        const k528::backplot::ViewWindow vw = scene_->window(pw_, ph_);
+        const double perPixel = vw.worldPerPixel > 0 ? vw.worldPerPixel : 1;
+        shown.tool = true;
+        shown.toolPx = QPoint(static_cast<int>(std::lround(tool->z / perPixel)),
+                              static_cast<int>(std::lround(tool->x / perPixel)));
+        shown.wheelPx = static_cast<int>(std::lround(tool->wheelMm / perPixel));
+        shown.station = tool->station;
+    }
+    return shown;
 }
 
 QString BackplotWidget::pickText() const {

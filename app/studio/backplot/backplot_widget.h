@@ -33,9 +33,13 @@ class PathJob;
 class BackplotWidget : public QWidget {
     Q_OBJECT
 public:
-    // The live path of a run is drawn at most this often (20 Hz): the scene
-    // takes every batch, the OpenGL view renders the latest.
-    static constexpr int kLiveIntervalMs = 50;
+    // The live path of a run is drawn at most this often (10 Hz): the scene
+    // takes every batch, the OpenGL view renders the latest — and only when
+    // the picture changed (the path grew, or the tool moved a pixel or more).
+    // Each render is a whole VTK frame read back from llvmpipe on a PC
+    // without a GPU driver: at 20 Hz the training workspace spent a third
+    // of a core drawing a slide that moves a few pixels a frame.
+    static constexpr int kLiveIntervalMs = 100;
 
     explicit BackplotWidget(QWidget* parent = nullptr);
     ~BackplotWidget() override;
@@ -130,6 +134,17 @@ private:
     QTimer* timer_ = nullptr;
     QTimer* liveTimer_ = nullptr;      // the next live render, when one is due
     QElapsedTimer sinceLiveRender_;
+    // What a live render shows: the path's samples, the tool's pixel, its
+    // wheel and station (a frame that changes none of them is not rendered).
+    struct LiveShown {
+        std::size_t samples = 0;
+        bool tool = false;
+        QPoint toolPx;
+        int wheelPx = 0, station = -1;
+        bool operator==(const LiveShown&) const = default;
+    };
+    LiveShown liveShows() const;
+    LiveShown liveRendered_;
     vtkInteractorStyle* style2d_ = nullptr;
     vtkInteractorStyle* style3d_ = nullptr;
     double playhead_ = -1;

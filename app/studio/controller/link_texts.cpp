@@ -4,7 +4,7 @@
 #include "profile/problem.h"
 #include "session/core_texts.h"
 #include "session/diagnostic_texts.h"
-#include "util/text_pattern.h"
+#include "session/translated_texts.h"
 
 #include <QCoreApplication>
 
@@ -15,13 +15,8 @@ namespace k528::studio {
 
 namespace {
 
-struct Entry {
-    const char* id;
-    const char* text; // English, as core's catalog says it; translated by LinkTexts
-};
-
 // core/link/link_texts.cpp's catalog, each text marked for the translators.
-const Entry kLinkTexts[] = {
+const TranslatedText kLinks[] = {
         {"link.join", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "%1: %2")},
         {"link.then", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "%1; %2")},
         {"link.list", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "%1, %2")},
@@ -154,18 +149,13 @@ const Entry kLinkTexts[] = {
         {"link.closed", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "closed")},
 };
 
-const char* patternOf(std::string_view id) {
-    for (const Entry& e : kLinkTexts)
-        if (id == e.id)
-            return e.text;
-    return nullptr;
-}
+const TranslatedTexts kLinkTexts("k528::studio::LinkTexts", kLinks);
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
 } // namespace
 
-bool hasLinkText(std::string_view id) { return patternOf(id) != nullptr; }
+bool hasLinkText(std::string_view id) { return kLinkTexts.has(id); }
 
 QString linkText(const link::Said& s) {
     if (s.diagnostic)
@@ -174,14 +164,13 @@ QString linkText(const link::Said& s) {
         return problemText(*s.problem);
     if (s.id.empty())
         return fromStd(s.word);
-    const char* pattern = patternOf(s.id);
-    if (!pattern)
+    if (!kLinkTexts.has(s.id))
         return fromStd(link::render(s, false)); // an id without a translation: core's words
     std::vector<std::string> args;
     args.reserve(s.args.size());
     for (const link::Said& a : s.args)
         args.push_back(linkText(a).toStdString());
-    return fromStd(util::fillPattern(QCoreApplication::translate("k528::studio::LinkTexts", pattern).toStdString(), args));
+    return *kLinkTexts.text(s.id, args);
 }
 
 QString linkErrorText(const link::LinkError& e) { return linkText(e.said); }

@@ -1,6 +1,7 @@
 #include "editor/program_editor.h"
 
 #include "editing/completion.h"
+#include "editor/completion_texts.h"
 #include "session/diagnostic_texts.h"
 #include "editor/program_lexer.h"
 #include "engine/program_check.h"
@@ -484,7 +485,6 @@ void ProgramEditor::charAdded(int ch) {
     const QChar prev = before.size() >= 2 ? before.at(before.size() - 2) : QChar(' ');
     if (prev.isLetterOrNumber() && !(c == '#'))
         return;
-    const bool ru = russianWindow();
     editing::CompletionContext ctx;
     ctx.store = &store_;
     ctx.currentProgram = programAtLine(line);
@@ -507,8 +507,7 @@ void ProgramEditor::charAdded(int ch) {
     }
     QStringList items;
     for (const editing::CompletionItem& it : editing::complete(editing::completionCatalog(ctx), kind, ""))
-        items << QString::fromStdString(it.word) + kDetailSeparator +
-                     QString::fromStdString(ru ? it.detailRu : it.detailEn);
+        items << QString::fromStdString(it.word) + kDetailSeparator + completionDetail(it);
     if (!items.isEmpty())
         showUserList(id, items);
 }

@@ -1,7 +1,7 @@
 #include "session/database_texts.h"
 
 #include "db/error.h"
-#include "util/text_pattern.h"
+#include "session/translated_texts.h"
 
 #include <QCoreApplication>
 
@@ -9,14 +9,9 @@ namespace k528::studio {
 
 namespace {
 
-struct Entry {
-    const char* id;
-    const char* text;
-};
-
 // The English of each id of db::dbTexts() (core/db/db_texts.cpp), translated
 // by translations/pairs/database-texts.ru.tsv.
-const Entry kTexts[] = {
+const TranslatedText kTexts[] = {
     {"no-machine", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no machine \"%1\" in %2 (machines: %3)")},
     {"no-machine.none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no machine \"%1\" in %2 (machines: none)")},
     {"machine-exists", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a machine named %1 already exists in %2")},
@@ -123,23 +118,14 @@ const Entry kTexts[] = {
     {"list.or", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1 or %2")},
 };
 
-const char* textOf(std::string_view id) {
-    for (const Entry& e : kTexts)
-        if (id == e.id)
-            return e.text;
-    return nullptr;
-}
+const TranslatedTexts kDatabaseTexts("k528::studio::DatabaseTexts", kTexts);
 
 } // namespace
 
-bool hasDatabaseText(std::string_view id) { return textOf(id) != nullptr; }
+bool hasDatabaseText(std::string_view id) { return kDatabaseTexts.has(id); }
 
 QString databaseText(std::string_view id, const std::vector<std::string>& args) {
-    const char* text = textOf(id);
-    if (!text)
-        return {};
-    const QString pattern = QCoreApplication::translate("k528::studio::DatabaseTexts", text);
-    return QString::fromStdString(util::fillPattern(pattern.toStdString(), args));
+    return kDatabaseTexts.text(id, args).value_or(QString());
 }
 
 QString databaseText(const db::ErrorText& t) {

@@ -43,7 +43,7 @@ QString MachineSource::text() const {
     case Kind::Builtin: return QCoreApplication::translate("k528::studio::MachineSource", "built-in");
     case Kind::File: return path;
     case Kind::NotInDatabase:
-        return QCoreApplication::translate("k528::studio::MainWindow", "not in the database %1").arg(path);
+        return QCoreApplication::translate("k528::studio::MachineSource", "not in the database %1").arg(path);
     }
     return {};
 }

@@ -4,7 +4,9 @@
 // QCoreApplication::translate and filled as core fills its own
 // (util::fillPattern: %1..%9 in one pass, %% a per cent sign). The one
 // renderer of the desktop's tables of core's texts (core_texts.cpp,
-// diagnostic_texts.cpp, training/training_texts.cpp).
+// diagnostic_texts.cpp, database_texts.cpp, controller/link_texts.cpp,
+// editor/refactor_texts.cpp, editor/completion_texts.cpp,
+// training/training_texts.cpp).
 #pragma once
 
 #include <QString>
