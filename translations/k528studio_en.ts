@@ -2520,10 +2520,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>cannot switch to WAL journal mode (mode "%1"): another process kept the database busy longer than the busy timeout</translation>
     </message>
     <message>
-        <source>%1</source>
-        <translation>%1</translation>
-    </message>
-    <message>
         <source>the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)</source>
         <translation>the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)</translation>
     </message>

@@ -1868,7 +1868,7 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     </message>
     <message>
         <source>%1</source>
-        <translation>SQLite: «%1»</translation>
+        <translation>%1</translation>
     </message>
     <message>
         <source>'%1' is not a tool kind (turning, facing, grooving, boring, drill, threading)</source>
@@ -2518,10 +2518,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>cannot switch to WAL journal mode (mode "%1"): another process kept the database busy longer than the busy timeout</source>
         <translation>не переключается в режим журнала WAL (режим «%1»): другой процесс держал базу данных занятой дольше времени ожидания</translation>
-    </message>
-    <message>
-        <source>%1</source>
-        <translation>SQLite: «%1»</translation>
     </message>
     <message>
         <source>the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)</source>

@@ -306,9 +306,6 @@ constexpr std::array kTexts = {
                 "занятой дольше времени ожидания",
                 "cannot switch to WAL journal mode (mode \"%1\"): another process kept the database busy "
                 "longer than the busy timeout"},
-    util::CatalogText{"sqlite.said",
-                "SQLite: «%1»",
-                "%1"},
     // PostgreSQL's database that is not ours, or not yet.
     util::CatalogText{"pg.no-schema",
                 "путь поиска не называет ни одной существующей схемы; создайте её или задайте search_path "

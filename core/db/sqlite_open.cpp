@@ -5,6 +5,8 @@
 // freshness. docs/database.md: Opening, Connections and locks, Read-only files.
 #include "db/sqlite_store.h"
 
+#include "db/db_texts.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -455,9 +457,12 @@ Checked SqliteStore::connectAndInspect(const OpenOptions& options, int latest) {
             text.tailArgs = {journal.string()};
     };
     const auto refused = [&](const Refusal& r) {
-        ErrorText text = r.text.id.empty() ? ErrorText{"sqlite.said", {r.what}} : r.text;
+        ErrorText text = r.text;
         text.at = path_.string();
         untouched(text);
+        if (text.id.empty()) // said in Russian by its kind, the path and SQLite's words
+            return Error(r.kind, path_.string() + ": " + r.what + dbText(text.tail, text.tailArgs, false), r.detail,
+                         std::move(text));
         return Error(r.kind, std::move(text), r.detail);
     };
     // One connection: read-write when the file may be written (SQLite falls

@@ -90,7 +90,6 @@ const TranslatedText kTexts[] = {
     {"open.foreign-journal.size", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of unknown size), which is not ours to roll back: let that program open it first")},
     {"open.foreign-writer", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "another program wrote into the file while it was being created")},
     {"open.wal", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "cannot switch to WAL journal mode (mode \"%1\"): another process kept the database busy longer than the busy timeout")},
-    {"sqlite.said", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1")},
     {"pg.no-schema", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)")},
     {"pg.foreign-tables", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database: it holds %1 tables or views of another program (no k528_schema); nothing was changed")},
     {"pg.foreign-application", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "not a K528 Studio database (k528_schema says \"%1\"); nothing was changed")},
