@@ -786,6 +786,357 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::CatalogTexts</name>
+    <message>
+        <source>No regulator enable X</source>
+        <translation>No regulator enable X</translation>
+    </message>
+    <message>
+        <source>No answer from encoder slot 0</source>
+        <translation>No answer from encoder slot 0</translation>
+    </message>
+    <message>
+        <source>No answer from DAC</source>
+        <translation>No answer from DAC</translation>
+    </message>
+    <message>
+        <source>Encoder channel 1 broken (X)</source>
+        <translation>Encoder channel 1 broken (X)</translation>
+    </message>
+    <message>
+        <source>Encoder channel 2 broken (X)</source>
+        <translation>Encoder channel 2 broken (X)</translation>
+    </message>
+    <message>
+        <source>DAC limit exceeded (X)</source>
+        <translation>DAC limit exceeded (X)</translation>
+    </message>
+    <message>
+        <source>Max. following error X in motion</source>
+        <translation>Max. following error X in motion</translation>
+    </message>
+    <message>
+        <source>Position/clamp check X</source>
+        <translation>Position/clamp check X</translation>
+    </message>
+    <message>
+        <source>Emergency "STOP" from PLC</source>
+        <translation>Emergency "STOP" from PLC</translation>
+    </message>
+    <message>
+        <source>Limit switch X "-"</source>
+        <translation>Limit switch X "-"</translation>
+    </message>
+    <message>
+        <source>Limit switch X "+"</source>
+        <translation>Limit switch X "+"</translation>
+    </message>
+    <message>
+        <source>Software limit switch (X)</source>
+        <translation>Software limit switch (X)</translation>
+    </message>
+    <message>
+        <source>Encoder ratio error (X)</source>
+        <translation>Encoder ratio error (X)</translation>
+    </message>
+    <message>
+        <source>CP52.05 failure in positioner</source>
+        <translation>CP52.05 failure in positioner</translation>
+    </message>
+    <message>
+        <source>C-parameters destroyed</source>
+        <translation>C-parameters destroyed</translation>
+    </message>
+    <message>
+        <source>Drive X not ready</source>
+        <translation>Drive X not ready</translation>
+    </message>
+    <message>
+        <source>No regulator enable Z</source>
+        <translation>No regulator enable Z</translation>
+    </message>
+    <message>
+        <source>No answer from encoder slot 1</source>
+        <translation>No answer from encoder slot 1</translation>
+    </message>
+    <message>
+        <source>No link with PLC</source>
+        <translation>No link with PLC</translation>
+    </message>
+    <message>
+        <source>Encoder channel 1 broken (Z)</source>
+        <translation>Encoder channel 1 broken (Z)</translation>
+    </message>
+    <message>
+        <source>Encoder channel 2 broken (Z)</source>
+        <translation>Encoder channel 2 broken (Z)</translation>
+    </message>
+    <message>
+        <source>DAC limit exceeded (Z)</source>
+        <translation>DAC limit exceeded (Z)</translation>
+    </message>
+    <message>
+        <source>Max. following error Z in motion</source>
+        <translation>Max. following error Z in motion</translation>
+    </message>
+    <message>
+        <source>Position/clamp check Z</source>
+        <translation>Position/clamp check Z</translation>
+    </message>
+    <message>
+        <source>No link with panel</source>
+        <translation>No link with panel</translation>
+    </message>
+    <message>
+        <source>Limit switch Z "-"</source>
+        <translation>Limit switch Z "-"</translation>
+    </message>
+    <message>
+        <source>Limit switch Z "+"</source>
+        <translation>Limit switch Z "+"</translation>
+    </message>
+    <message>
+        <source>Software limit switch (Z)</source>
+        <translation>Software limit switch (Z)</translation>
+    </message>
+    <message>
+        <source>Encoder ratio error (Z)</source>
+        <translation>Encoder ratio error (Z)</translation>
+    </message>
+    <message>
+        <source>Positioner RAM/ROM failure</source>
+        <translation>Positioner RAM/ROM failure</translation>
+    </message>
+    <message>
+        <source>Control program destroyed</source>
+        <translation>Control program destroyed</translation>
+    </message>
+    <message>
+        <source>Drive Z not ready</source>
+        <translation>Drive Z not ready</translation>
+    </message>
+    <message>
+        <source>X coordinate setting</source>
+        <translation>X coordinate setting</translation>
+    </message>
+    <message>
+        <source>X/L</source>
+        <translation>X/L</translation>
+    </message>
+    <message>
+        <source>X/M17</source>
+        <translation>X/M17</translation>
+    </message>
+    <message>
+        <source>X/end of L</source>
+        <translation>X/end of L</translation>
+    </message>
+    <message>
+        <source>N encoder error</source>
+        <translation>N encoder error</translation>
+    </message>
+    <message>
+        <source>N DAC error</source>
+        <translation>N DAC error</translation>
+    </message>
+    <message>
+        <source>N handwheel error</source>
+        <translation>N handwheel error</translation>
+    </message>
+    <message>
+        <source>Home switch not left</source>
+        <translation>Home switch not left</translation>
+    </message>
+    <message>
+        <source>No "0" mark</source>
+        <translation>No "0" mark</translation>
+    </message>
+    <message>
+        <source>Not homed</source>
+        <translation>Not homed</translation>
+    </message>
+    <message>
+        <source>Wheel D &gt; Dmax</source>
+        <translation>Wheel D &gt; Dmax</translation>
+    </message>
+    <message>
+        <source>Wheel D &lt; Dmin</source>
+        <translation>Wheel D &lt; Dmin</translation>
+    </message>
+    <message>
+        <source>L missing</source>
+        <translation>L missing</translation>
+    </message>
+    <message>
+        <source>Overflow</source>
+        <translation>Overflow</translation>
+    </message>
+    <message>
+        <source>G?</source>
+        <translation>G?</translation>
+    </message>
+    <message>
+        <source>Nesting depth L</source>
+        <translation>Nesting depth L</translation>
+    </message>
+    <message>
+        <source>Z coordinate setting</source>
+        <translation>Z coordinate setting</translation>
+    </message>
+    <message>
+        <source>Z/L</source>
+        <translation>Z/L</translation>
+    </message>
+    <message>
+        <source>Z/M17</source>
+        <translation>Z/M17</translation>
+    </message>
+    <message>
+        <source>Z/end of L</source>
+        <translation>Z/end of L</translation>
+    </message>
+    <message>
+        <source>Jump error</source>
+        <translation>Jump error</translation>
+    </message>
+    <message>
+        <source>Duplicate frame numbers</source>
+        <translation>Duplicate frame numbers</translation>
+    </message>
+    <message>
+        <source>PLC I/O module failure</source>
+        <translation>PLC I/O module failure</translation>
+    </message>
+    <message>
+        <source>Encoder check X</source>
+        <translation>Encoder check X</translation>
+    </message>
+    <message>
+        <source>Encoder check Z</source>
+        <translation>Encoder check Z</translation>
+    </message>
+    <message>
+        <source>M30/L</source>
+        <translation>M30/L</translation>
+    </message>
+    <message>
+        <source>M2/L</source>
+        <translation>M2/L</translation>
+    </message>
+    <message>
+        <source>M17/L</source>
+        <translation>M17/L</translation>
+    </message>
+    <message>
+        <source>M30/M17</source>
+        <translation>M30/M17</translation>
+    </message>
+    <message>
+        <source>M2/M17</source>
+        <translation>M2/M17</translation>
+    </message>
+    <message>
+        <source>G04/X/Z</source>
+        <translation>G04/X/Z</translation>
+    </message>
+    <message>
+        <source>G04/L</source>
+        <translation>G04/L</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>automatic</translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation>manual</translation>
+    </message>
+    <message>
+        <source>reference point</source>
+        <translation>reference point</translation>
+    </message>
+    <message>
+        <source>presets</source>
+        <translation>presets</translation>
+    </message>
+    <message>
+        <source>machine constants</source>
+        <translation>machine constants</translation>
+    </message>
+    <message>
+        <source>program editing</source>
+        <translation>program editing</translation>
+    </message>
+    <message>
+        <source>data control</source>
+        <translation>data control</translation>
+    </message>
+    <message>
+        <source>turning</source>
+        <translation>turning</translation>
+    </message>
+    <message>
+        <source>facing</source>
+        <translation>facing</translation>
+    </message>
+    <message>
+        <source>grooving</source>
+        <translation>grooving</translation>
+    </message>
+    <message>
+        <source>boring</source>
+        <translation>boring</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>drill</translation>
+    </message>
+    <message>
+        <source>threading</source>
+        <translation>threading</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>coordinates and offsets</source>
+        <translation>coordinates and offsets</translation>
+    </message>
+    <message>
+        <source>initial position</source>
+        <translation>initial position</translation>
+    </message>
+    <message>
+        <source>adjustment</source>
+        <translation>adjustment</translation>
+    </message>
+    <message>
+        <source>dressing</source>
+        <translation>dressing</translation>
+    </message>
+    <message>
+        <source>grinding wheel</source>
+        <translation>grinding wheel</translation>
+    </message>
+    <message>
+        <source>diamond</source>
+        <translation>diamond</translation>
+    </message>
+    <message>
+        <source>oscillation</source>
+        <translation>oscillation</translation>
+    </message>
+    <message>
+        <source>speeds</source>
+        <translation>speeds</translation>
+    </message>
+    <message>
+        <source>axial orientation</source>
+        <translation>axial orientation</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::CompletionTexts</name>
     <message>
         <source>%1 (axis %2)</source>
@@ -6576,6 +6927,10 @@ Its comment stays: %3</translation>
     <message>
         <source>cone angles are within ±90°</source>
         <translation>cone angles are within ±90°</translation>
+    </message>
+    <message>
+        <source>no UCG in the file</source>
+        <translation>no UCG in the file</translation>
     </message>
 </context>
 <context>

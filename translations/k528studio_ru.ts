@@ -786,6 +786,357 @@
     </message>
 </context>
 <context>
+    <name>k528::studio::CatalogTexts</name>
+    <message>
+        <source>No regulator enable X</source>
+        <translation>Нет деблокировки регулятора X</translation>
+    </message>
+    <message>
+        <source>No answer from encoder slot 0</source>
+        <translation>Нет ответа от ДОС 0-место</translation>
+    </message>
+    <message>
+        <source>No answer from DAC</source>
+        <translation>Нет ответа от ЦАП</translation>
+    </message>
+    <message>
+        <source>Encoder channel 1 broken (X)</source>
+        <translation>Обрыв канала 1 ДОС (ось X)</translation>
+    </message>
+    <message>
+        <source>Encoder channel 2 broken (X)</source>
+        <translation>Обрыв канала 2 ДОС (ось X)</translation>
+    </message>
+    <message>
+        <source>DAC limit exceeded (X)</source>
+        <translation>Превышен предел ЦАП (ось X)</translation>
+    </message>
+    <message>
+        <source>Max. following error X in motion</source>
+        <translation>Макс.рассогл.по X при движении</translation>
+    </message>
+    <message>
+        <source>Position/clamp check X</source>
+        <translation>Контроль полож/зажима оси X</translation>
+    </message>
+    <message>
+        <source>Emergency "STOP" from PLC</source>
+        <translation>Аварийный «СТОП» от ПЛК</translation>
+    </message>
+    <message>
+        <source>Limit switch X "-"</source>
+        <translation>Конечник оси X в «-»</translation>
+    </message>
+    <message>
+        <source>Limit switch X "+"</source>
+        <translation>Конечник оси X в «+»</translation>
+    </message>
+    <message>
+        <source>Software limit switch (X)</source>
+        <translation>Программный конечный выключ.(X)</translation>
+    </message>
+    <message>
+        <source>Encoder ratio error (X)</source>
+        <translation>Ошибка коэфф.преобразования ДОС (X)</translation>
+    </message>
+    <message>
+        <source>CP52.05 failure in positioner</source>
+        <translation>Отказ СР52.05 в БП</translation>
+    </message>
+    <message>
+        <source>C-parameters destroyed</source>
+        <translation>Разрушены С-параметры</translation>
+    </message>
+    <message>
+        <source>Drive X not ready</source>
+        <translation>Нет готовности привода оси X</translation>
+    </message>
+    <message>
+        <source>No regulator enable Z</source>
+        <translation>Нет деблокировки регулятора Z</translation>
+    </message>
+    <message>
+        <source>No answer from encoder slot 1</source>
+        <translation>Нет ответа от ДОС 1-место</translation>
+    </message>
+    <message>
+        <source>No link with PLC</source>
+        <translation>Нет связи с ПЛК</translation>
+    </message>
+    <message>
+        <source>Encoder channel 1 broken (Z)</source>
+        <translation>Обрыв канала 1 ДОС (ось Z)</translation>
+    </message>
+    <message>
+        <source>Encoder channel 2 broken (Z)</source>
+        <translation>Обрыв канала 2 ДОС (ось Z)</translation>
+    </message>
+    <message>
+        <source>DAC limit exceeded (Z)</source>
+        <translation>Превышен предел ЦАП (ось Z)</translation>
+    </message>
+    <message>
+        <source>Max. following error Z in motion</source>
+        <translation>Макс.рассогл.по Z при движении</translation>
+    </message>
+    <message>
+        <source>Position/clamp check Z</source>
+        <translation>Контроль полож/зажима оси Z</translation>
+    </message>
+    <message>
+        <source>No link with panel</source>
+        <translation>Нет связи с панелью</translation>
+    </message>
+    <message>
+        <source>Limit switch Z "-"</source>
+        <translation>Конечник оси Z в "-"</translation>
+    </message>
+    <message>
+        <source>Limit switch Z "+"</source>
+        <translation>Конечник оси Z в "+"</translation>
+    </message>
+    <message>
+        <source>Software limit switch (Z)</source>
+        <translation>Программный конечный выключ.(Z)</translation>
+    </message>
+    <message>
+        <source>Encoder ratio error (Z)</source>
+        <translation>Ошибка коэфф.преобразования ДОС (Z)</translation>
+    </message>
+    <message>
+        <source>Positioner RAM/ROM failure</source>
+        <translation>Отказ ОЗУ/ПЗУ позиционера</translation>
+    </message>
+    <message>
+        <source>Control program destroyed</source>
+        <translation>Разрушена управляющая программа</translation>
+    </message>
+    <message>
+        <source>Drive Z not ready</source>
+        <translation>Нет готовности привода оси Z</translation>
+    </message>
+    <message>
+        <source>X coordinate setting</source>
+        <translation>Задание координаты X</translation>
+    </message>
+    <message>
+        <source>X/L</source>
+        <translation>X/L</translation>
+    </message>
+    <message>
+        <source>X/M17</source>
+        <translation>X/M17</translation>
+    </message>
+    <message>
+        <source>X/end of L</source>
+        <translation>X/конец L</translation>
+    </message>
+    <message>
+        <source>N encoder error</source>
+        <translation>Ошибка N ДОС</translation>
+    </message>
+    <message>
+        <source>N DAC error</source>
+        <translation>Ошибка N ЦАП</translation>
+    </message>
+    <message>
+        <source>N handwheel error</source>
+        <translation>Ошибка N маховика</translation>
+    </message>
+    <message>
+        <source>Home switch not left</source>
+        <translation>Нет съезда с конечника "0"</translation>
+    </message>
+    <message>
+        <source>No "0" mark</source>
+        <translation>Нет "0"-метки</translation>
+    </message>
+    <message>
+        <source>Not homed</source>
+        <translation>Нет привязки к базовой точке</translation>
+    </message>
+    <message>
+        <source>Wheel D &gt; Dmax</source>
+        <translation>D круга &gt; Dmax</translation>
+    </message>
+    <message>
+        <source>Wheel D &lt; Dmin</source>
+        <translation>D круга &lt; Dmin</translation>
+    </message>
+    <message>
+        <source>L missing</source>
+        <translation>L отсутствует</translation>
+    </message>
+    <message>
+        <source>Overflow</source>
+        <translation>Переполнение</translation>
+    </message>
+    <message>
+        <source>G?</source>
+        <translation>G?</translation>
+    </message>
+    <message>
+        <source>Nesting depth L</source>
+        <translation>Глубина вложения L</translation>
+    </message>
+    <message>
+        <source>Z coordinate setting</source>
+        <translation>Задание координаты Z</translation>
+    </message>
+    <message>
+        <source>Z/L</source>
+        <translation>Z/L</translation>
+    </message>
+    <message>
+        <source>Z/M17</source>
+        <translation>Z/M17</translation>
+    </message>
+    <message>
+        <source>Z/end of L</source>
+        <translation>Z/конец L</translation>
+    </message>
+    <message>
+        <source>Jump error</source>
+        <translation>Ошибка перехода</translation>
+    </message>
+    <message>
+        <source>Duplicate frame numbers</source>
+        <translation>Дублирование номеров кадров</translation>
+    </message>
+    <message>
+        <source>PLC I/O module failure</source>
+        <translation>Отказ модулей ввода/вывода в ПЛК</translation>
+    </message>
+    <message>
+        <source>Encoder check X</source>
+        <translation>Контроль ДОС оси X</translation>
+    </message>
+    <message>
+        <source>Encoder check Z</source>
+        <translation>Контроль ДОС оси Z</translation>
+    </message>
+    <message>
+        <source>M30/L</source>
+        <translation>M30/L</translation>
+    </message>
+    <message>
+        <source>M2/L</source>
+        <translation>M2/L</translation>
+    </message>
+    <message>
+        <source>M17/L</source>
+        <translation>M17/L</translation>
+    </message>
+    <message>
+        <source>M30/M17</source>
+        <translation>M30/M17</translation>
+    </message>
+    <message>
+        <source>M2/M17</source>
+        <translation>M2/M17</translation>
+    </message>
+    <message>
+        <source>G04/X/Z</source>
+        <translation>G04/X/Z</translation>
+    </message>
+    <message>
+        <source>G04/L</source>
+        <translation>G04/L</translation>
+    </message>
+    <message>
+        <source>automatic</source>
+        <translation>АВТОМАТ</translation>
+    </message>
+    <message>
+        <source>manual</source>
+        <translation>РУЧНОЙ</translation>
+    </message>
+    <message>
+        <source>reference point</source>
+        <translation>ПРИВЯЗКА К БАЗОВОЙ ТОЧКЕ</translation>
+    </message>
+    <message>
+        <source>presets</source>
+        <translation>ПРЕДУСТАНОВКИ</translation>
+    </message>
+    <message>
+        <source>machine constants</source>
+        <translation>РЕДАКТИРОВАНИЕ С-ПАРАМЕТРОВ</translation>
+    </message>
+    <message>
+        <source>program editing</source>
+        <translation>РЕДАКТИРОВАНИЕ УП</translation>
+    </message>
+    <message>
+        <source>data control</source>
+        <translation>УПРАВЛЕНИЕ ДАННЫМИ</translation>
+    </message>
+    <message>
+        <source>turning</source>
+        <translation>проходной</translation>
+    </message>
+    <message>
+        <source>facing</source>
+        <translation>подрезной</translation>
+    </message>
+    <message>
+        <source>grooving</source>
+        <translation>канавочный</translation>
+    </message>
+    <message>
+        <source>boring</source>
+        <translation>расточной</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>сверло</translation>
+    </message>
+    <message>
+        <source>threading</source>
+        <translation>резьбовой</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>coordinates and offsets</source>
+        <translation>КООРД.И СМЕЩЕНИЯ</translation>
+    </message>
+    <message>
+        <source>initial position</source>
+        <translation>ИСХОДНОЕ</translation>
+    </message>
+    <message>
+        <source>adjustment</source>
+        <translation>ПОДНАЛАДКА</translation>
+    </message>
+    <message>
+        <source>dressing</source>
+        <translation>ПРАВКА</translation>
+    </message>
+    <message>
+        <source>grinding wheel</source>
+        <translation>ШЛИФ.КРУГ</translation>
+    </message>
+    <message>
+        <source>diamond</source>
+        <translation>АЛМАЗ</translation>
+    </message>
+    <message>
+        <source>oscillation</source>
+        <translation>ОСЦИЛЛЯЦИЯ</translation>
+    </message>
+    <message>
+        <source>speeds</source>
+        <translation>СКОРОСТИ</translation>
+    </message>
+    <message>
+        <source>axial orientation</source>
+        <translation>ОСЕВАЯ</translation>
+    </message>
+</context>
+<context>
     <name>k528::studio::CompletionTexts</name>
     <message>
         <source>%1 (axis %2)</source>
@@ -6576,6 +6927,10 @@ Its comment stays: %3</source>
     <message>
         <source>cone angles are within ±90°</source>
         <translation>углы конусов в пределах ±90°</translation>
+    </message>
+    <message>
+        <source>no UCG in the file</source>
+        <translation>в файле нет UCG</translation>
     </message>
 </context>
 <context>

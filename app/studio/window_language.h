@@ -1,12 +1,24 @@
-// Whether the window speaks Russian: the one switch for what core gives in
-// both languages at once (an alarm's, a training text's, a check's Russian
-// and English; a date's or a number's locale; a PDF in the window's
-// language). A text of the desktop itself is tr(); a core text with an id
-// is core_texts.h's.
+// The window's language where core gives both at once. A text of the
+// desktop itself is tr(); a core text with an id is core_texts.h's (and
+// catalog_texts.h's for the names and messages of core's catalogs).
 #pragma once
+
+#include <QString>
+
+#include <string_view>
 
 namespace k528::studio {
 
+// Whether the window speaks Russian: only for what is about the language
+// itself rather than a choice between two texts (which translator is
+// loaded, the locale of a date or a number, the language of a PDF or of
+// core's renderer).
 bool russianWindow();
+
+// A text core holds as data in both languages, too many or too much made
+// of values for the translators' files: a C-parameter's description, hint
+// and unit, an R-parameter's meaning, a check's finding with its values,
+// a message recorded in the history. The one place that picks between them.
+QString coreText(std::string_view ru, std::string_view en);
 
 } // namespace k528::studio

@@ -121,6 +121,8 @@ std::unique_ptr<PostgresStore> PostgresStore::open(const Location& where,
             if (found.version < latest)
                 s->upgrade(migrations, found.version, author, fill);
             tx.commit();
+            if (!found.empty && found.version < latest)
+                s->vacuumChanges();
         }
         s->report_.version = latest;
         // Reference data from the catalog, when this user may write it.
@@ -132,6 +134,19 @@ std::unique_ptr<PostgresStore> PostgresStore::open(const Location& where,
         }
     }
     return s;
+}
+
+void PostgresStore::vacuumChanges() {
+    // The history reads changes_history alone (an index-only scan) where the
+    // table's visibility map marks a page all-visible; after an upgrade (a
+    // new index, rows rewritten) VACUUM marks them now, not when autovacuum
+    // next comes by, and ANALYZE gives the planner the new index's figures.
+    // Outside the upgrade's transaction (VACUUM cannot run in one): the
+    // upgrade stands if it fails, and autovacuum does it later.
+    try {
+        conn_->exec("VACUUM (ANALYZE) changes");
+    } catch (const Error&) {
+    }
 }
 
 void PostgresStore::stampSchema(int version) {

@@ -42,6 +42,9 @@ public:
 private:
     PostgresStore() = default;
     void stampSchema(int version) override;
+    // VACUUM (ANALYZE) of the recorded changes after an upgrade; a failure
+    // is left to autovacuum.
+    void vacuumChanges();
     void reconnect();
     void listen();
 

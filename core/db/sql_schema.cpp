@@ -48,11 +48,13 @@ void SqlStore::migrate(std::span<const Migration> migrations, std::int64_t from)
             continue;
         try {
             if (postgres) {
-                connection().exec(postgresSchemaSql(m.sql));
+                if (!m.sql.empty())
+                    connection().exec(postgresSchemaSql(m.sql));
                 if (!m.postgresOnly.empty())
                     connection().exec(m.postgresOnly);
             } else {
-                connection().exec(m.sql);
+                if (!m.sql.empty())
+                    connection().exec(m.sql);
                 if (!m.sqliteOnly.empty())
                     connection().exec(m.sqliteOnly);
             }

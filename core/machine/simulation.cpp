@@ -68,7 +68,7 @@ FaultText faultText(const FaultSpec& f) {
     case Fault::SpindleDrive:
     case Fault::SpindleOverheat:
     case Fault::PumpOverload:
-        return {id, {f.equipment}};
+        return {id, {f.equipment}, true};
     case Fault::PositionerModule: {
         static constexpr std::string_view parts[] = {"?",           "pulse_module_1", "pulse_module_2",
                                                      "dac_module",  "comm_module",    "panel_link",
@@ -93,59 +93,7 @@ FaultText faultText(const FaultSpec& f) {
     return {id, {}};
 }
 
-namespace {
-// The English texts of the ids, %1 %2 the arguments.
-struct FaultTemplate {
-    std::string_view id, text;
-};
-constexpr FaultTemplate kFaultTemplates[] = {
-    {"encoder_channel_break", "encoder channel %2 break (%1)"},
-    {"drive_not_ready", "feed drive not ready (%1)"},
-    {"limit_switch", "limit switch %2 hit (%1)"},
-    {"emergency_stop", "emergency stop circuit open"},
-    {"dac_limit", "interference on the encoder lines: DAC limit (%1)"},
-    {"plc_module_failure", "PLC I/O module failure, place %1"},
-    {"lost_link", "PLC - positioner link lost"},
-    {"spindle_drive", "spindle drive not ready (%1)"},
-    {"spindle_overheat", "spindle motor overheat (%1)"},
-    {"pump_overload", "pump motor overload (%1)"},
-    {"chuck_pressure", "chuck clamping pressure lost"},
-    {"turret_jam", "turret jammed"},
-    {"gauge_fault", "in-process gauge fault"},
-    {"positioner_module.pulse_module_1", "positioner failure: pulse module CP34.23 at place 0"},
-    {"positioner_module.pulse_module_2", "positioner failure: pulse module CP34.23 at place 1"},
-    {"positioner_module.dac_module", "positioner failure: DAC module CM32.03"},
-    {"positioner_module.comm_module", "positioner failure: communication module CP52.05"},
-    {"positioner_module.panel_link", "positioner failure: link to the K923 panel"},
-    {"positioner_module.memory", "positioner failure: RAM/ROM test"},
-    {"k923.plc_link", "K923 panel: no link to the PLC"},
-    {"k923.positioner_link", "K923 panel: no link to the positioner"},
-    {"k923.ram", "K923 panel: RAM fault"},
-    {"k923.resident", "K923 panel: resident software corrupt"},
-    {"plc_stopped", "PLC in debug stop"},
-};
-} // namespace
-
-std::string describeFault(const FaultSpec& f) {
-    const FaultText t = faultText(f);
-    for (const FaultTemplate& tpl : kFaultTemplates) {
-        if (tpl.id != t.id)
-            continue;
-        std::string out;
-        for (std::size_t i = 0; i < tpl.text.size(); ++i) {
-            const char c = tpl.text[i];
-            if (c == '%' && i + 1 < tpl.text.size() && tpl.text[i + 1] >= '1' && tpl.text[i + 1] <= '9') {
-                const auto n = static_cast<std::size_t>(tpl.text[i + 1] - '1');
-                out += n < t.args.size() ? t.args[n] : std::string();
-                ++i;
-            } else {
-                out += c;
-            }
-        }
-        return out;
-    }
-    return t.id; // a part number outside the enum ("k923.?")
-}
+std::string describeFault(const FaultSpec& f, bool russian) { return faultTextIn(faultText(f), russian); }
 
 // ---------------------------------------------------------------------------
 // Construction

@@ -30,6 +30,7 @@
 #include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "machine/equipment.h"
+#include "machine/fault_catalog.h"
 #include "machine/signals.h"
 #include "panel/health.h"
 #include "plc/plc.h"
@@ -104,26 +105,12 @@ struct FaultSpec {
     std::string equipment; // spindle or pump name
     bool operator==(const FaultSpec&) const = default;
 };
-// A fault as displays name it: a stable id and its arguments, which a
-// display translates (the desktop: app/studio/machine/fault_texts.cpp).
-//   encoder_channel_break {axis, channel}   drive_not_ready {axis}
-//   limit_switch {axis, "+"|"-"}            emergency_stop {}
-//   dac_limit {axis}                        plc_module_failure {place}
-//   lost_link {}                            spindle_drive {equipment}
-//   spindle_overheat {equipment}            pump_overload {equipment}
-//   chuck_pressure {}  turret_jam {}  gauge_fault {}  plc_stopped {}
-//   positioner_module.pulse_module_1 / .pulse_module_2 / .dac_module /
-//     .comm_module / .panel_link / .memory {}
-//   k923.plc_link / .positioner_link / .ram / .resident {}
-// (axis "X"/"Z", numbers in decimal, equipment by its description name).
-struct FaultText {
-    std::string id;
-    std::vector<std::string> args;
-};
+// A fault as displays name it (machine/fault_catalog.h: the id, its arguments
+// and core's catalog of them; the desktop's app/studio/machine/fault_texts.cpp).
 FaultText faultText(const FaultSpec& f);
-// English, e.g. "encoder channel 1 break (X)": the text of faultText for the
-// CLI and logs.
-std::string describeFault(const FaultSpec& f);
+// In a language from core's catalog, e.g. "Encoder X: channel 1 broken": the
+// text of faultText for the CLI and logs.
+std::string describeFault(const FaultSpec& f, bool russian = false);
 
 // ---------------------------------------------------------------------------
 // Views for displays.

@@ -74,37 +74,30 @@ std::string fmt(double v) {
     return b;
 }
 
-constexpr UcgText kUcgTexts[] = {
-    UcgText{"expected", "expected UCG"},
-    UcgText{"type", "expected the type N after UCG,"},
-    UcgText{"z", "expected Z<outer length>Z<bore length>"},
-    UcgText{"x", "expected X<outer diameter>X<bore diameter>"},
-    UcgText{"s", "expected S<outer angle>S<bore angle>"},
-    UcgText{"direction", "the direction is 0 or 1"},
-    UcgText{"detail", "the detail is -1..-5"},
-    UcgText{"small", "the blank is smaller than 0.01 mm"},
-    UcgText{"bore-sign", "the bore length has the sign of the outer length"},
-    UcgText{"bore-long", "the bore is longer than the blank"},
-    UcgText{"bore-diameter", "the bore diameter is 0..the outer diameter"},
-    UcgText{"cone", "cone angles are within ±90°"},
-    UcgText{kNoUcg, "no UCG in the file"},
+constexpr util::CatalogText kUcgTexts[] = {
+    {"expected", "ожидалось UCG", "expected UCG"},
+    {"type", "после «UCG,» ожидался тип N", "expected the type N after UCG,"},
+    {"z", "ожидалось Z<длина заготовки>Z<длина отверстия>", "expected Z<outer length>Z<bore length>"},
+    {"x", "ожидалось X<наружный диаметр>X<диаметр отверстия>", "expected X<outer diameter>X<bore diameter>"},
+    {"s", "ожидалось S<угол снаружи>S<угол отверстия>", "expected S<outer angle>S<bore angle>"},
+    {"direction", "направление — 0 или 1", "the direction is 0 or 1"},
+    {"detail", "детализация — от -1 до -5", "the detail is -1..-5"},
+    {"small", "заготовка меньше 0,01 мм", "the blank is smaller than 0.01 mm"},
+    {"bore-sign", "длина отверстия того же знака, что длина заготовки", "the bore length has the sign of the outer length"},
+    {"bore-long", "отверстие длиннее заготовки", "the bore is longer than the blank"},
+    {"bore-diameter", "диаметр отверстия — от 0 до наружного диаметра", "the bore diameter is 0..the outer diameter"},
+    {"cone", "углы конусов в пределах ±90°", "cone angles are within ±90°"},
+    {kNoUcg, "в файле нет UCG", "no UCG in the file"},
 };
-
-std::string_view ucgEnglish(std::string_view id) {
-    for (const UcgText& t : kUcgTexts)
-        if (t.id == id)
-            return t.en;
-    return id;
-}
 
 } // namespace
 
-std::span<const UcgText> ucgTexts() { return kUcgTexts; }
+util::TextCatalog ucgTexts() { return util::TextCatalog(kUcgTexts); }
 
 std::optional<Blank> parseUcg(std::string_view s, std::string* error, std::string* errorId) {
     const auto fail = [&](std::string_view id) -> std::optional<Blank> {
         if (error)
-            *error = "UCG: " + std::string(ucgEnglish(id));
+            *error = "UCG: " + ucgTexts().render(id, {}, false);
         if (errorId)
             *errorId = std::string(id);
         return std::nullopt;
@@ -155,7 +148,7 @@ std::optional<Blank> findUcg(std::string_view text, std::string* error, std::str
             return parseUcg(candidate, error, errorId);
     }
     if (error)
-        *error = std::string(ucgEnglish(kNoUcg));
+        *error = ucgTexts().render(kNoUcg, {}, false);
     if (errorId)
         *errorId = std::string(kNoUcg);
     return std::nullopt;

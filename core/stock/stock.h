@@ -22,6 +22,7 @@
 #pragma once
 
 #include "toolpath/programmed_path.h"
+#include "util/text_catalog.h"
 
 #include <functional>
 #include <memory>
@@ -45,7 +46,7 @@ struct Blank {
 
 // Parses "UCG,2,Z-100Z0,X200X0,S0S0,0,-5" (spaces allowed); nullopt with
 // `error` set when malformed ("UCG: " and the English of ucgTexts()) and
-// `errorId` to its id, which a display translates.
+// `errorId` to its id, which a display says in its language.
 std::optional<Blank> parseUcg(std::string_view text, std::string* error = nullptr,
                               std::string* errorId = nullptr);
 // The first `UCG,` of a program file's text (in a comment), if any; without
@@ -53,11 +54,10 @@ std::optional<Blank> parseUcg(std::string_view text, std::string* error = nullpt
 std::optional<Blank> findUcg(std::string_view fileText, std::string* error = nullptr,
                              std::string* errorId = nullptr);
 inline constexpr std::string_view kNoUcg = "none";
-// What can be wrong with a UCG line: an id and its English.
-struct UcgText {
-    std::string_view id, en;
-};
-std::span<const UcgText> ucgTexts();
+// What can be wrong with a UCG line: its ids (errorId) with their Russian
+// and English, said after "UCG: " (the desktop says the same ids through
+// its translators).
+util::TextCatalog ucgTexts();
 std::string formatUcg(const Blank& b);
 
 struct PointZR {

@@ -11,19 +11,13 @@
 #include "cli_runner.h"
 #include "db/database.h"
 #include "db_test_util.h"
+#include "rig/kill_campaign.h"
 
 #include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QtTest>
-#include <csignal>
-#include <fcntl.h>
-#include <random>
-#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
-#include <unistd.h>
-
-extern char** environ;
 
 using namespace k528;
 using namespace k528::testing;
@@ -32,20 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 pid_t startInit(const std::string& db) {
-    const std::string cli = K528_CLI;
-    std::vector<std::string> args = {cli, "db", "init", "--db", db};
-    std::vector<char*> argv;
-    for (auto& a : args)
-        argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    pid_t pid = 0;
-    const int rc = posix_spawn(&pid, cli.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    return rc == 0 ? pid : -1;
+    return testrig::startSilenced(K528_CLI, {"db", "init", "--db", db});
 }
 
 bool exists(const std::string& p) {
@@ -79,38 +60,18 @@ private slots:
             QVERIFY(WIFEXITED(status) && WEXITSTATUS(status) == 0);
             initNs = std::max(initNs, t.nsecsElapsed());
         }
-        std::mt19937 rng(528);
-        std::uniform_int_distribution<qint64> at(0, initNs);
+        testrig::KillCampaign campaign(initNs);
         const int n = static_cast<int>(envNumber("K528_KILL_ITERATIONS", 120));
-        int killed = 0, beforeFile = 0, hotJournals = 0, recovered = 0, completed = 0, journalKills = 0;
+        int beforeFile = 0, hotJournals = 0, recovered = 0;
         for (int i = 0; i < n; ++i) {
             const std::string db = dir.filePath(QString("k%1.db").arg(i)).toStdString();
             const std::string journal = db + "-journal";
             const pid_t pid = startInit(db);
             QVERIFY(pid > 0);
-            int status = 0;
-            bool reaped = false;
-            if (i % 3 == 2) {
-                // The moment a rollback journal appears.
-                QElapsedTimer t;
-                t.start();
-                while (!exists(journal) && !(reaped = waitpid(pid, &status, WNOHANG) == pid) &&
-                       t.nsecsElapsed() < 4 * initNs + 2000000000LL) {
-                }
-                ++journalKills;
-            } else {
-                const qint64 ns = at(rng);
-                struct timespec ts {static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
-                nanosleep(&ts, nullptr);
-            }
-            if (!reaped) {
-                kill(pid, SIGKILL);
-                QCOMPARE(waitpid(pid, &status, 0), pid);
-            }
-            if (WIFSIGNALED(status))
-                ++killed;
+            if (i % 3 == 2) // the moment a rollback journal appears
+                campaign.atSign(pid, [&] { return exists(journal); });
             else
-                ++completed;
+                campaign.atRandom(pid);
             const bool hot = exists(journal) && fs::file_size(journal) > 0;
             hotJournals += hot ? 1 : 0;
             const QString path = QString::fromStdString(db);
@@ -140,8 +101,9 @@ private slots:
         qInfo("%d kills (%d at a journal), %d before the file existed, %d ended first, %d left a "
               "hot journal, %d rolled back by the next command; every database usable afterwards "
               "(init %.1f ms)",
-              killed, journalKills, beforeFile, completed, hotJournals, recovered, initNs / 1e6);
-        QVERIFY(killed > n / 2);
+              campaign.killed(), campaign.atSignRuns(), beforeFile, campaign.completed(),
+              hotJournals, recovered, initNs / 1e6);
+        QVERIFY(campaign.killed() > n / 2);
     }
 };
 

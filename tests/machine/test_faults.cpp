@@ -483,13 +483,20 @@ private slots:
         QVERIFY(same(faultText({Fault::K923, X, 1}), "k923.plc_link", {}));
         QVERIFY(same(faultText({Fault::PositionerModule, X, 3}), "positioner_module.dac_module", {}));
         QVERIFY(same(faultText({Fault::PlcStopped}), "plc_stopped", {}));
+        // The CLI says them from core's catalog (machine::faultTexts()), in
+        // English or Russian; a shipped machine's equipment by its name.
         QCOMPARE(machine::describeFault({Fault::EncoderChannelBreak, X, 1}),
-                 std::string("encoder channel 1 break (X)"));
-        QCOMPARE(machine::describeFault({Fault::LimitSwitch, Z, 1}), std::string("limit switch + hit (Z)"));
+                 std::string("Encoder X: channel 1 broken"));
+        QCOMPARE(machine::describeFault({Fault::LimitSwitch, Z, 1}), std::string("Limit switch Z+ hit"));
         QCOMPARE(machine::describeFault({Fault::SpindleOverheat, X, 0, "spindle"}),
-                 std::string("spindle motor overheat (spindle)"));
+                 std::string("Motor overheat: spindle"));
+        QCOMPARE(machine::describeFault({Fault::PumpOverload, X, 0, "coolant"}, true),
+                 std::string("Перегрузка двигателя: насос СОЖ"));
+        QCOMPARE(machine::describeFault({Fault::PumpOverload, X, 0, "its-own-pump"}),
+                 std::string("Motor overload: its-own-pump"));
         QCOMPARE(machine::describeFault({Fault::K923, X, 4}),
-                 std::string("K923 panel: resident software corrupt"));
+                 std::string("K923: resident software corrupt"));
+        QCOMPARE(machine::describeFault({Fault::K923, X, 4}, true), std::string("K923: нарушен резидент"));
         // Every fault of both machines: an id of its own, a text without a
         // placeholder left.
         for (const char* name : {"training-lathe", "grinder-205"}) {
@@ -501,8 +508,11 @@ private slots:
                 for (const std::string& a : t.args)
                     key += "|" + a;
                 QVERIFY2(ids.insert(key).second, key.c_str());
-                const std::string text = machine::describeFault(f);
-                QVERIFY2(text.find('%') == std::string::npos && text != t.id, text.c_str());
+                for (const bool russian : {false, true}) {
+                    const std::string text = machine::describeFault(f, russian);
+                    QVERIFY2(text.find('%') == std::string::npos && text != t.id, text.c_str());
+                    QVERIFY2(machine::faultTexts().find(t.id), t.id.c_str());
+                }
             }
         }
     }

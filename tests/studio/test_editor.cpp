@@ -20,6 +20,7 @@
 #include <QApplication>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMainWindow>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -454,6 +455,56 @@ private slots:
         // A machine that does not exist: said, checked for none.
         QVERIFY(!tab.setFileMachine(0, "no-such-machine"));
         QCOMPARE(tab.checkedMachineName(0), QString());
+    }
+
+    // The completion popup after M offers the M-codes of the machine the file
+    // is checked for (its PLC description's, with their text) besides the
+    // built-in ones; checked for the language only, the built-in ones alone.
+    void completionOffersTheMachinesPlcMCodes() {
+        testrig::SimulatedSeam lathe(profile::builtin("training-lathe"));
+        EditorTab tab(&lathe.seam);
+        tab.resize(900, 600);
+        tab.show();
+        tab.newFile();
+        ProgramEditor* ed = tab.currentEditor();
+        ed->setText("%L1\n\nM30\n");
+        QCOMPARE(tab.checkedMachineName(0), QString("training-lathe"));
+        const auto offered = [&] {
+            ed->SendScintilla(QsciScintilla::SCI_AUTOCCANCEL);
+            ed->setCursorPosition(1, 0);
+            ed->setFocus();
+            QTest::keyClicks(ed, "M");
+            QStringList items;
+            if (!ed->isListActive())
+                return items;
+            for (QWidget* w : QApplication::allWidgets())
+                if (auto* list = qobject_cast<QListWidget*>(w); list && list->isVisible())
+                    for (int i = 0; i < list->count(); ++i)
+                        items << list->item(i)->text();
+            ed->SendScintilla(QsciScintilla::SCI_AUTOCCANCEL);
+            ed->setText("%L1\n\nM30\n");
+            return items;
+        };
+        const auto has = [](const QStringList& items, const QString& word) {
+            for (const QString& it : items)
+                if (it.section(QChar(' '), 0, 0) == word)
+                    return true;
+            return false;
+        };
+        QStringList items = offered();
+        QVERIFY2(has(items, "M30"), qPrintable(items.join('|')));
+        // The lathe's spindle and turret M-codes, with the description's text.
+        QVERIFY2(has(items, "M3"), qPrintable(items.join('|')));
+        QVERIFY2(has(items, "M64"), qPrintable(items.join('|')));
+        QVERIFY2(items.filter("spindle clockwise").size() == 1, qPrintable(items.join('|')));
+        QVERIFY(tab.setFileMachine(0, "grinder-205"));
+        items = offered();
+        QVERIFY2(has(items, "M13") && has(items, "M20"), qPrintable(items.join('|')));
+        QVERIFY2(!has(items, "M64"), qPrintable(items.join('|')));
+        QVERIFY(tab.setFileMachine(0, EditorTab::kNoMachine));
+        items = offered();
+        QVERIFY2(has(items, "M30"), qPrintable(items.join('|')));
+        QVERIFY2(!has(items, "M3") && !has(items, "M13"), qPrintable(items.join('|')));
     }
 
     // The status line gives the cycle time of the file's first program on the

@@ -35,7 +35,10 @@
 #include "k923/key_face.h"
 #include "language.h"
 #include "link_plugins.h"
+#include "machine/fault_texts.h"
 #include "machine/pendant_controls.h"
+#include "machine/simulation.h"
+#include "stock/stock.h"
 #include "main_window.h"
 #include "db/database.h"
 #include "db/db_texts.h"
@@ -52,6 +55,10 @@
 #include "db/notes.h"
 #include "proveout/proveout_pane.h"
 #include "session/core_texts.h"
+#include "session/catalog_texts.h"
+#include "window_language.h"
+#include "engine/views.h"
+#include "proveout/setup_sheet.h"
 #include "controller/link_texts.h"
 #include "session/database_texts.h"
 #include "session/diagnostic_texts.h"
@@ -511,6 +518,13 @@ private slots:
     // Machine with a bad machine file, the constants dock's import of a bad
     // file, the prove-out pane with a bad blank or a bad tool.
     void russianCoreTexts();
+    // A UCG line's errors and the simulated machine's faults: every id of
+    // core's catalog (what `k528` prints) has the same Russian in the window.
+    void russianBlankAndFaultTexts();
+    // The names and messages of core's catalogs the window says through
+    // tr() (the positioner's messages, the modes, the kinds of tool): in
+    // Russian letter by letter core's Russian, in English core's English.
+    void catalogTextsAsCore();
 
 private:
     QTemporaryDir dir_;
@@ -1214,6 +1228,56 @@ void TestUiLanguage::russianCoreTexts() {
         qWarning("%s", qPrintable(l));
     QVERIFY2(walker.leaks.isEmpty(),
              qPrintable(QStringLiteral("%1 texts of another language in --lang ru (listed above)").arg(walker.leaks.size())));
+    QVERIFY(studio::setLanguage("en"));
+}
+
+void TestUiLanguage::russianBlankAndFaultTexts() {
+    QVERIFY(studio::setLanguage("ru"));
+    checkCatalog(stock::ucgTexts(), studio::hasUcgText, [](std::string_view id) {
+        return std::pair(studio::ucgErrorText(id), "UCG: " + stock::ucgTexts().render(id, {}, true));
+    });
+    checkCatalog(machine::faultTexts(), studio::hasFaultText, [](std::string_view id) {
+        const machine::FaultText t{std::string(id), {"X", "2"}};
+        return std::pair(studio::faultTitle(t), machine::faultTextIn(t, true));
+    });
+    // A shipped machine's equipment by its Russian name, in both.
+    const machine::FaultText pump{"pump_overload", {"coolant"}, true};
+    QCOMPARE(studio::faultTitle(pump), QStringLiteral("Перегрузка двигателя: насос СОЖ"));
+    QCOMPARE(studio::faultTitle(pump), QString::fromStdString(machine::faultTextIn(pump, true)));
+    QVERIFY(studio::setLanguage("en"));
+}
+
+void TestUiLanguage::catalogTextsAsCore() {
+    const auto view = [](std::string_view v) { return QString::fromUtf8(v.data(), static_cast<qsizetype>(v.size())); };
+    const std::vector<engine::Mode> modes = {engine::Mode::Auto,        engine::Mode::Manual,      engine::Mode::Reference,
+                                             engine::Mode::SetActual,   engine::Mode::MachineData, engine::Mode::ProgramEdit,
+                                             engine::Mode::DataControl};
+    const std::vector<profile::ToolKind> kinds = {profile::ToolKind::Turning, profile::ToolKind::Facing,
+                                                  profile::ToolKind::Grooving, profile::ToolKind::Boring,
+                                                  profile::ToolKind::Drill, profile::ToolKind::Threading};
+    for (const bool russian : {true, false}) {
+        QVERIFY(studio::setLanguage(russian ? "ru" : "en"));
+        for (const catalog::PositionerMessage& m : catalog::positionerMessages()) {
+            QCOMPARE(studio::positionerMessageText(m.number), view(russian ? m.textRu : m.textEn));
+            engine::AlarmView a;
+            a.number = m.number;
+            QCOMPARE(studio::alarmLine(a), QStringLiteral("%1. %2").arg(m.number).arg(view(russian ? m.textRu : m.textEn)));
+        }
+        QVERIFY(studio::positionerMessageText(catalog::kPositionerMessageCount + 1).isEmpty());
+        engine::AlarmView outside; // a number the catalog lacks: what the alarm carries
+        outside.number = catalog::kPositionerMessageCount + 6;
+        outside.textRu = outside.textEn = "#70";
+        QCOMPARE(studio::alarmLine(outside), QStringLiteral("70. #70"));
+        for (const engine::Mode m : modes)
+            QCOMPARE(studio::modeName(m), view(russian ? engine::modeNameRu(m) : engine::modeNameEn(m)));
+        for (const profile::ToolKind k : kinds)
+            QCOMPARE(studio::toolKindText(k), view(proveout::toolKindText(k, russian)));
+        for (int g = 1; g <= 9; ++g)
+            QCOMPARE(studio::rGroupName(g), view(russian ? catalog::rGroupNameRu(g) : catalog::rGroupNameEn(g)));
+        QVERIFY(studio::rGroupName(10).isEmpty());
+        // A text core keeps in both languages as data: the window's one.
+        QCOMPARE(studio::coreText("ручной", "manual"), russian ? QStringLiteral("ручной") : QStringLiteral("manual"));
+    }
     QVERIFY(studio::setLanguage("en"));
 }
 

@@ -113,7 +113,7 @@ bool SetCCommand::replaying = false;
 
 } // namespace
 
-CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t value, bool russian) {
+CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t value) {
     CEditCheck r;
     const catalog::CParamDef* d = catalog::findCParam(number);
     if (!d || c.size() < static_cast<std::size_t>(catalog::kCParamCount + 1)) {
@@ -132,7 +132,7 @@ CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t 
             std::find(f.cParams.begin(), f.cParams.end(), number) != f.cParams.end();
         if (!involves)
             continue;
-        const QString why = fromStd(russian ? f.textRu : f.textEn);
+        const QString why = coreText(f.textRu, f.textEn);
         if (f.severity == profile::Severity::Warning) {
             r.warnings << why;
             continue;
@@ -163,7 +163,7 @@ std::span<const std::int64_t> ConstantsEditor::values() const {
 }
 
 CEditCheck ConstantsEditor::check(int number, std::int64_t value) const {
-    return checkCEdit(values(), number, value, russianWindow());
+    return checkCEdit(values(), number, value);
 }
 
 QString ConstantsEditor::lockRefusal() const {

@@ -44,9 +44,9 @@ struct CEditCheck {
 };
 
 // The check of C`number` = `value` over the constants `c` (indexed by
-// number). `russian`: the reason in Russian (the message text is the
+// number): the reason in the window's language (the message text is the
 // manual's Russian always).
-CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t value, bool russian);
+CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t value);
 
 class ConstantsEditor : public QObject {
     Q_OBJECT

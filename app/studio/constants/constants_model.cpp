@@ -29,7 +29,6 @@ ConstantsModel::ConstantsModel(ConstantsEditor& editor, QObject* parent)
     : ParameterTableModel(ColumnCount, parent), editor_(editor) {
     const auto c = editor_.values();
     std::copy(c.begin(), c.begin() + 153, shown_.begin());
-    russian_ = russianWindow();
     fillTexts();
     fillMeans();
     connect(&editor_, &ConstantsEditor::changed, this, &ConstantsModel::refresh);
@@ -47,15 +46,15 @@ void ConstantsModel::fillTexts() {
         // The first words (the tooltip has all): a table cell shows about
         // 40 characters, and shaping the whole text for every paint would
         // cost more than the filter itself.
-        QString meaning = fromStd(russian_ ? d.descriptionRu : d.descriptionEn);
+        QString meaning = coreText(d.descriptionRu, d.descriptionEn);
         if (meaning.size() > 72) {
             const qsizetype cut = meaning.lastIndexOf(QLatin1Char(' '), 70);
             meaning = meaning.left(cut > 20 ? cut : 70) + QStringLiteral(" …");
         }
         cell[Meaning] = meaning;
-        cell[Unit] = fromStd(russian_ ? catalog::unitRu(d.unit) : catalog::unitEn(d.unit));
+        cell[Unit] = coreText(catalog::unitRu(d.unit), catalog::unitEn(d.unit));
         cell[Range] = QStringLiteral("%1…%2").arg(d.min).arg(d.max);
-        cell[Address] = fromStd(russian_ ? d.address.text() : d.address.textEn());
+        cell[Address] = coreText(d.address.text(), d.address.textEn());
         QString s = QStringLiteral("c%1 c%2 %2 ").arg(d.number, 3, 10, QChar('0')).arg(d.number);
         s += fromStd(catalog::axisName(d.axis)) + ' ';
         for (std::string_view t : {d.name, d.nameEn, d.descriptionRu, d.descriptionEn, d.hintRu,
@@ -68,7 +67,7 @@ void ConstantsModel::fillTexts() {
 
 void ConstantsModel::fillMeans() {
     const profile::MachineProfile& p = editor_.controller().profile();
-    const db::Lang lang = russian_ ? db::Lang::Ru : db::Lang::En;
+    const db::Lang lang = russianWindow() ? db::Lang::Ru : db::Lang::En; // core explains in it
     means_.assign(catalog::kCParamCount, QString());
     for (int row = 0; row < catalog::kCParamCount; ++row)
         means_[static_cast<std::size_t>(row)] = fromStd(db::explainCValue(p, row + 1, lang));
@@ -85,7 +84,6 @@ void ConstantsModel::refresh() {
 
 void ConstantsModel::retranslate() {
     beginResetModel();
-    russian_ = russianWindow();
     fillTexts();
     fillMeans();
     endResetModel();
@@ -128,17 +126,16 @@ QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
     }
     if (role == Qt::ToolTipRole) {
         // The name as the K923 shows it; an English window adds our English
-        // name, and the transcription's notes (English: the catalog's, about
-        // how the manual was read).
+        // name, and the transcription's notes (English only: the catalog's,
+        // about how the manual was read).
         QString t = QStringLiteral("<b>C%1 %2</b>").arg(d.number, 3, 10, QChar('0')).arg(fromStd(d.name).toHtmlEscaped());
-        if (!russian_)
-            t += QStringLiteral(" (%1)").arg(fromStd(d.nameEn).toHtmlEscaped());
-        t += QStringLiteral("<br>") + fromStd(russian_ ? d.descriptionRu : d.descriptionEn).toHtmlEscaped();
-        const std::string_view hint = russian_ ? d.hintRu : d.hintEn;
-        if (!hint.empty())
-            t += QStringLiteral("<br><i>%1</i>").arg(fromStd(hint).toHtmlEscaped());
-        if (!d.note.empty() && !russian_)
-            t += QStringLiteral("<br><small>%1</small>").arg(fromStd(d.note).toHtmlEscaped());
+        if (const QString nameEn = coreText({}, d.nameEn); !nameEn.isEmpty())
+            t += QStringLiteral(" (%1)").arg(nameEn.toHtmlEscaped());
+        t += QStringLiteral("<br>") + coreText(d.descriptionRu, d.descriptionEn).toHtmlEscaped();
+        if (const QString hint = coreText(d.hintRu, d.hintEn); !hint.isEmpty())
+            t += QStringLiteral("<br><i>%1</i>").arg(hint.toHtmlEscaped());
+        if (const QString note = coreText({}, d.note); !note.isEmpty())
+            t += QStringLiteral("<br><small>%1</small>").arg(note.toHtmlEscaped());
         return t;
     }
     if (role == Qt::TextAlignmentRole && (index.column() == Value || index.column() == Range))

@@ -52,7 +52,6 @@ private:
     std::vector<QString> search_;
     // The fixed texts of each row in the UI language (painting asks often).
     std::vector<std::array<QString, ColumnCount>> cells_;
-    bool russian_ = false;
 };
 
 class ConstantsFilter : public ParameterFilter {

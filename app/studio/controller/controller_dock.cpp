@@ -4,7 +4,7 @@
 #include "controller/link_controller.h"
 #include "controller/push_preview.h"
 #include "controller/controller.h"
-#include "window_language.h"
+#include "session/catalog_texts.h"
 #include "link_plugins.h"
 #include "main_window.h"
 #include "profile/diff.h"
@@ -718,7 +718,6 @@ void ControllerDock::updateMonitor() {
     }
     const ControllerState& s = link_->state();
     const link::LiveState& live = link_->live();
-    const bool ru = russianWindow();
     QString h;
     if (link_->stale())
         h = QStringLiteral("<p style='background:#fff1c2; color:#5c4300'>%1<br>%2</p>")
@@ -746,7 +745,7 @@ void ControllerDock::updateMonitor() {
     QString alarms;
     for (const engine::AlarmView& a : s.alarms)
         alarms += QStringLiteral("<span style='color:#b01c1c'>%1</span><br>")
-                      .arg(fromStd(engine::alarmText(a, ru)).toHtmlEscaped());
+                      .arg(alarmLine(a).toHtmlEscaped());
     row(tr("Alarms"), alarms.isEmpty() ? tr("none") : alarms);
     QString leds;
     for (int k = 1; k <= 12; ++k) {

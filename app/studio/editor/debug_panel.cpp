@@ -37,8 +37,6 @@ namespace {
 // Real time, ×2…×100, fastest (0).
 constexpr double kSpeeds[] = {1, 2, 5, 10, 20, 50, 100, 0};
 
-QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-
 void setTextIfChanged(QTreeWidgetItem* it, int col, const QString& t) {
     if (it->text(col) != t)
         it->setText(col, t);
@@ -574,13 +572,12 @@ void DebugPanel::retranslate() {
     watchLabel_->setText(tr("Watch"));
     watchAdd_->setPlaceholderText(tr("Add an R-parameter: R12, Enter"));
     watch_->setHeaderLabels({tr("R"), tr("Value"), tr("Meaning")});
-    const bool ru = russianWindow();
     for (int i = 0; i < watch_->topLevelItemCount(); ++i) {
         QTreeWidgetItem* it = watch_->topLevelItem(i);
         const catalog::RParamDef* def = catalog::findRParam(it->data(0, Qt::UserRole).toInt());
         const QSignalBlocker b(watch_);
         if (def)
-            it->setText(2, fromView(ru ? def->meaningRu : def->meaningEn));
+            it->setText(2, coreText(def->meaningRu, def->meaningEn));
     }
     status_->setText(debug_->statusText());
 }

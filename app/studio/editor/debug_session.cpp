@@ -1,7 +1,7 @@
 #include "editor/debug_session.h"
 
 #include "editor/program_editor.h"
-#include "window_language.h"
+#include "session/catalog_texts.h"
 #include "session/core_texts.h"
 #include "session/simulation_session.h"
 
@@ -16,13 +16,6 @@ constexpr std::int64_t kStartSeenMs = 2000;   // «Пуск» is taken
 constexpr std::int64_t kStartGapMs = 3 * kPressMs; // from one «Пуск» to the next
 
 QString axisName(int i) { return i == 0 ? QStringLiteral("X") : QStringLiteral("Z"); }
-
-QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
-
-QString fromStd(const std::string& s) { return QString::fromStdString(s); }
-
-// The positioner's message (appendix М: core's Russian and English) in the window's language.
-QString alarmText(const engine::AlarmView& a) { return fromStd(russianWindow() ? a.textRu : a.textEn); }
 
 QString refusal(const engine::OpResult& r) {
     return refusalText(r);
@@ -132,12 +125,12 @@ QString DebugSession::whyNoStart() const {
         return tr("the emergency stop is pressed on the machine's panel");
     if (ctl.mode() != engine::Mode::Auto)
         return tr("the K923 is in %1, not in automatic mode")
-            .arg(fromView(russianWindow() ? engine::modeNameRu(ctl.mode()) : engine::modeNameEn(ctl.mode())));
+            .arg(modeName(ctl.mode()));
     const auto alarms = ctl.alarms();
     if (!alarms.empty())
         return tr("the positioner shows message %1: %2")
             .arg(alarms.back().number)
-            .arg(alarmText(alarms.back()));
+            .arg(alarmMessage(alarms.back()));
     return tr("the PLC did not pass it on (start enable, the machine's messages)");
 }
 
@@ -354,7 +347,7 @@ void DebugSession::advanced() {
             const auto alarms = ctl.alarms();
             QString text;
             if (!alarms.empty())
-                text = QStringLiteral("%1 %2").arg(alarms.back().number).arg(alarmText(alarms.back()));
+                text = QStringLiteral("%1 %2").arg(alarms.back().number).arg(alarmMessage(alarms.back()));
             emit message(tr("The program stopped with a message: %1").arg(text));
         }
     }

@@ -5,6 +5,8 @@
 #include "session/diagnostic_texts.h"
 #include "editor/program_lexer.h"
 #include "engine/program_check.h"
+#include "machine/simulation.h"
+#include "plc/description.h"
 #include "window_language.h"
 #include "program/validator.h"
 #include "proveout/proveout.h"
@@ -169,6 +171,14 @@ ProgramEditor::~ProgramEditor() { *alive_ = false; }
 void ProgramEditor::setMachine(std::optional<profile::MachineProfile> machine, program::ProgramStore machinePrograms) {
     machine_ = std::move(machine);
     machinePrograms_ = std::move(machinePrograms);
+    description_.reset();
+    if (machine_) {
+        try {
+            description_ = std::make_shared<const plc::MachineDescription>(k528::machine::Simulation::descriptionFor(*machine_));
+        } catch (const std::exception&) {
+            // No M-codes of its own to complete; the machine is still checked.
+        }
+    }
     scheduleValidation();
 }
 
@@ -488,6 +498,7 @@ void ProgramEditor::charAdded(int ch) {
     editing::CompletionContext ctx;
     ctx.store = &store_;
     ctx.currentProgram = programAtLine(line);
+    ctx.machine = description_.get();
     editing::CompletionKind kind;
     int id = 0;
     if (c == 'G') {

@@ -23,6 +23,9 @@
 namespace k528::proveout {
 struct Finding;
 }
+namespace k528::plc {
+struct MachineDescription;
+}
 
 namespace k528::studio {
 
@@ -43,7 +46,8 @@ public:
     ~ProgramEditor() override;
 
     // The machine the file is for: its limits, feeds and axes are checked
-    // too, over the programs it holds. nullopt = the language only.
+    // too, over the programs it holds; its PLC's M-codes are completed with
+    // the built-in ones. nullopt = the language only.
     void setMachine(std::optional<profile::MachineProfile> machine, program::ProgramStore machinePrograms = {});
     bool hasMachine() const { return machine_.has_value(); }
     const std::optional<profile::MachineProfile>& machine() const { return machine_; }
@@ -117,6 +121,9 @@ private:
     ProgramLexer* lexer_ = nullptr;
     QTimer debounce_;
     std::optional<profile::MachineProfile> machine_;
+    // The description of machine_'s PLC (its M-codes for completion); null
+    // without a machine or when it cannot be read (the check says why).
+    std::shared_ptr<const plc::MachineDescription> description_;
     program::ProgramStore machinePrograms_;
     std::vector<program::Diagnostic> diagnostics_;
     std::vector<std::pair<int, int>> diagnosticPositions_;

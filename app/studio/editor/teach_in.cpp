@@ -17,9 +17,8 @@ TeachIn::TeachIn(EditorTab& tab, ViewedController* viewed) : QObject(&tab), tab_
 
 void TeachIn::fillTargetsMenu(QMenu* menu) {
     menu->clear();
-    const bool ru = russianWindow();
     for (const editing::TeachTarget& t : editing::teachTargets()) {
-        const QString meaning = QString::fromUtf8(std::string(ru ? t.meaningRu : t.meaningEn).c_str());
+        const QString meaning = coreText(t.meaningRu, t.meaningEn);
         QAction* a = menu->addAction(QStringLiteral("R%1 — %2").arg(t.r).arg(meaning));
         a->setData(t.r);
         connect(a, &QAction::triggered, this, [this, r = t.r] { teachIntoR(r); });

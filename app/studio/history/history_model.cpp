@@ -1,5 +1,6 @@
 #include "history/history_model.h"
 
+#include "session/catalog_texts.h"
 #include "window_language.h"
 #include "session/shop_database.h"
 
@@ -16,6 +17,15 @@ QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), stati
 bool acknowledgeable(db::MessageSource s) {
     return s == db::MessageSource::Positioner || s == db::MessageSource::PlcAlarm ||
            s == db::MessageSource::PlcSystem;
+}
+
+// A positioner's message in the window's language (table М.1); another as
+// recorded (a PLC's or a program's as the machine's author wrote it).
+QString messageText(const db::MessageRecord& m) {
+    if (m.source == db::MessageSource::Positioner)
+        if (const QString text = positionerMessageText(m.number); !text.isEmpty())
+            return text;
+    return coreText(m.text, m.textEn);
 }
 
 } // namespace
@@ -179,7 +189,7 @@ QVariant HistoryModel::data(const QModelIndex& index, int role) const {
     case MachineTime: return machineTimeText(m.machineMs);
     case Source: return sourceText(m.source);
     case Code: return fromStd(m.code());
-    case Text: return fromStd(russianWindow() ? m.text : m.textEn);
+    case Text: return messageText(m);
     case Program:
         if (m.program <= 0)
             return QString();

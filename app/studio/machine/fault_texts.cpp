@@ -1,87 +1,70 @@
 #include "machine/fault_texts.h"
 
 #include "machine/simulation.h"
+#include "session/translated_texts.h"
+#include "window_language.h"
 
 #include <QCoreApplication>
+
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace k528::studio {
 
 namespace {
 
-struct FaultTexts {
-    Q_DECLARE_TR_FUNCTIONS(FaultTexts)
-public:
-    // The equipment names of the shipped machine descriptions.
-    static QString equipment(const QString& name) {
-        if (name == "spindle")
-            return tr("spindle");
-        if (name == "wheel")
-            return tr("wheel spindle");
-        if (name == "work")
-            return tr("work spindle");
-        if (name == "coolant")
-            return tr("coolant pump");
-        if (name == "lube")
-            return tr("lubrication pump");
-        if (name == "hydraulics")
-            return tr("hydraulic pump");
-        return name; // a description's own equipment: its name
-    }
-
-    // The text of a fault id, %1 %2 … its arguments; empty for an unknown id.
-    static QString pattern(const std::string& id) {
-        struct Entry {
-            const char* id;
-            QString text;
-        };
-        const Entry table[] = {
-            {"encoder_channel_break", tr("Encoder %1: channel %2 broken")},
-            {"drive_not_ready", tr("Feed drive %1 not ready")},
-            {"limit_switch", tr("Limit switch %1%2 hit")},
-            {"emergency_stop", tr("Emergency stop circuit open")},
-            {"dac_limit", tr("Interference on encoder %1 (DAC limit)")},
-            {"plc_module_failure", tr("PLC I/O module failure, place %1")},
-            {"lost_link", tr("PLC - positioner link lost")},
-            {"spindle_drive", tr("Drive not ready: %1")},
-            {"spindle_overheat", tr("Motor overheat: %1")},
-            {"pump_overload", tr("Motor overload: %1")},
-            {"chuck_pressure", tr("Chuck loses its clamping pressure")},
-            {"turret_jam", tr("Turret jammed")},
-            {"gauge_fault", tr("In-process gauge fault")},
-            {"positioner_module.pulse_module_1", tr("Positioner: encoder module CP34.23, place 0, failed")},
-            {"positioner_module.pulse_module_2", tr("Positioner: encoder module CP34.23, place 1, failed")},
-            {"positioner_module.dac_module", tr("Positioner: DAC module CM32.03 failed")},
-            {"positioner_module.comm_module", tr("Positioner: communication module CP52.05 failed")},
-            {"positioner_module.panel_link", tr("Positioner: link to the K923 unstable")},
-            {"positioner_module.memory", tr("Positioner: RAM/ROM test fails")},
-            {"k923.plc_link", tr("K923: no link to the PLC")},
-            {"k923.positioner_link", tr("K923: no link to the positioner")},
-            {"k923.ram", tr("K923: RAM fault")},
-            {"k923.resident", tr("K923: resident software corrupt")},
-            {"plc_stopped", tr("PLC in debug stop")},
-        };
-        for (const Entry& e : table)
-            if (id == e.id)
-                return e.text;
-        return {};
-    }
+// core/machine/fault_texts.cpp's catalog, each text marked for the translators.
+const TranslatedText kFaults[] = {
+    {"encoder_channel_break", QT_TRANSLATE_NOOP("FaultTexts", "Encoder %1: channel %2 broken")},
+    {"drive_not_ready", QT_TRANSLATE_NOOP("FaultTexts", "Feed drive %1 not ready")},
+    {"limit_switch", QT_TRANSLATE_NOOP("FaultTexts", "Limit switch %1%2 hit")},
+    {"emergency_stop", QT_TRANSLATE_NOOP("FaultTexts", "Emergency stop circuit open")},
+    {"dac_limit", QT_TRANSLATE_NOOP("FaultTexts", "Interference on encoder %1 (DAC limit)")},
+    {"plc_module_failure", QT_TRANSLATE_NOOP("FaultTexts", "PLC I/O module failure, place %1")},
+    {"lost_link", QT_TRANSLATE_NOOP("FaultTexts", "PLC - positioner link lost")},
+    {"spindle_drive", QT_TRANSLATE_NOOP("FaultTexts", "Drive not ready: %1")},
+    {"spindle_overheat", QT_TRANSLATE_NOOP("FaultTexts", "Motor overheat: %1")},
+    {"pump_overload", QT_TRANSLATE_NOOP("FaultTexts", "Motor overload: %1")},
+    {"chuck_pressure", QT_TRANSLATE_NOOP("FaultTexts", "Chuck loses its clamping pressure")},
+    {"turret_jam", QT_TRANSLATE_NOOP("FaultTexts", "Turret jammed")},
+    {"gauge_fault", QT_TRANSLATE_NOOP("FaultTexts", "In-process gauge fault")},
+    {"positioner_module.pulse_module_1", QT_TRANSLATE_NOOP("FaultTexts", "Positioner: encoder module CP34.23, place 0, failed")},
+    {"positioner_module.pulse_module_2", QT_TRANSLATE_NOOP("FaultTexts", "Positioner: encoder module CP34.23, place 1, failed")},
+    {"positioner_module.dac_module", QT_TRANSLATE_NOOP("FaultTexts", "Positioner: DAC module CM32.03 failed")},
+    {"positioner_module.comm_module", QT_TRANSLATE_NOOP("FaultTexts", "Positioner: communication module CP52.05 failed")},
+    {"positioner_module.panel_link", QT_TRANSLATE_NOOP("FaultTexts", "Positioner: link to the K923 unstable")},
+    {"positioner_module.memory", QT_TRANSLATE_NOOP("FaultTexts", "Positioner: RAM/ROM test fails")},
+    {"k923.plc_link", QT_TRANSLATE_NOOP("FaultTexts", "K923: no link to the PLC")},
+    {"k923.positioner_link", QT_TRANSLATE_NOOP("FaultTexts", "K923: no link to the positioner")},
+    {"k923.ram", QT_TRANSLATE_NOOP("FaultTexts", "K923: RAM fault")},
+    {"k923.resident", QT_TRANSLATE_NOOP("FaultTexts", "K923: resident software corrupt")},
+    {"plc_stopped", QT_TRANSLATE_NOOP("FaultTexts", "PLC in debug stop")},
+    {"equipment.spindle", QT_TRANSLATE_NOOP("FaultTexts", "spindle")},
+    {"equipment.wheel", QT_TRANSLATE_NOOP("FaultTexts", "wheel spindle")},
+    {"equipment.work", QT_TRANSLATE_NOOP("FaultTexts", "work spindle")},
+    {"equipment.coolant", QT_TRANSLATE_NOOP("FaultTexts", "coolant pump")},
+    {"equipment.lube", QT_TRANSLATE_NOOP("FaultTexts", "lubrication pump")},
+    {"equipment.hydraulics", QT_TRANSLATE_NOOP("FaultTexts", "hydraulic pump")},
 };
+
+const TranslatedTexts kFaultTexts("FaultTexts", kFaults);
 
 } // namespace
 
-QString faultTitle(const machine::FaultSpec& f) {
-    const machine::FaultText t = machine::faultText(f);
-    QString text = FaultTexts::pattern(t.id);
-    if (text.isEmpty())
-        return QString::fromStdString(machine::describeFault(f)); // an id without a translation
-    const bool equipment = f.kind == machine::Fault::SpindleDrive ||
-                           f.kind == machine::Fault::SpindleOverheat ||
-                           f.kind == machine::Fault::PumpOverload;
-    for (const std::string& a : t.args) {
-        const QString arg = QString::fromStdString(a);
-        text = text.arg(equipment ? FaultTexts::equipment(arg) : arg);
-    }
-    return text;
+bool hasFaultText(std::string_view id) { return kFaultTexts.has(id); }
+
+QString faultTitle(const machine::FaultText& t) {
+    std::vector<std::string> args = t.args;
+    // A description's own equipment (not in the table): its name.
+    if (t.namesEquipment && !args.empty())
+        if (const std::string id = machine::equipmentTextId(args[0]); kFaultTexts.has(id))
+            args[0] = kFaultTexts.pattern(id).toStdString();
+    if (const std::optional<QString> text = kFaultTexts.text(t.id, args))
+        return *text;
+    return QString::fromStdString(machine::faultTextIn(t, russianWindow())); // an id without a translation
 }
+
+QString faultTitle(const machine::FaultSpec& f) { return faultTitle(machine::faultText(f)); }
 
 } // namespace k528::studio

@@ -2,7 +2,7 @@
 #include "workspace/elided_label.h"
 
 #include "engine/interface_words.h"
-#include "window_language.h"
+#include "session/catalog_texts.h"
 #include "controller/controller.h"
 
 #include <QEvent>
@@ -78,7 +78,6 @@ void MessagesView::changeEvent(QEvent* e) {
 
 void MessagesView::refresh() {
     const ControllerState& st = controller_->state();
-    const bool ru = russianWindow();
     struct Row {
         QString source, number, text, state;
         QColor color;
@@ -87,7 +86,7 @@ void MessagesView::refresh() {
     const QColor red(0xb0, 0x1c, 0x1c), orange(0xb8, 0x62, 0x00), blue(0x1d, 0x4f, 0x91),
         grey(0x55, 0x5a, 0x60);
     for (const engine::AlarmView& a : st.alarms) {
-        QString text = fromStd(ru ? a.textRu : a.textEn);
+        QString text = alarmMessage(a);
         if (a.program > 0)
             text += tr(" (L%1, line %2)").arg(a.program).arg(a.line);
         const QColor c = a.category == engine::AlarmCategory::System ? orange : red;

@@ -6,7 +6,9 @@
 #include "language.h"
 #include "plc/description.h"
 #include "profile/tools.h"
+#include "session/translated_texts.h"
 #include "stock/stock.h"
+#include "window_language.h"
 #include "workspace/pane_dock.h"
 
 #include <QCheckBox>
@@ -46,34 +48,25 @@ struct ProveoutPane::Output {
 
 namespace {
 
-// What is wrong with a UCG line (stock::ucgTexts), in the window's language.
-QString ucgErrorText(const std::string& id) {
-    struct Entry {
-        const char* id;
-        QString text;
-    };
-    const Entry table[] = {
-        {"expected", ProveoutPane::tr("expected UCG")},
-        {"type", ProveoutPane::tr("expected the type N after UCG,")},
-        {"z", ProveoutPane::tr("expected Z<outer length>Z<bore length>")},
-        {"x", ProveoutPane::tr("expected X<outer diameter>X<bore diameter>")},
-        {"s", ProveoutPane::tr("expected S<outer angle>S<bore angle>")},
-        {"direction", ProveoutPane::tr("the direction is 0 or 1")},
-        {"detail", ProveoutPane::tr("the detail is -1..-5")},
-        {"small", ProveoutPane::tr("the blank is smaller than 0.01 mm")},
-        {"bore-sign", ProveoutPane::tr("the bore length has the sign of the outer length")},
-        {"bore-long", ProveoutPane::tr("the bore is longer than the blank")},
-        {"bore-diameter", ProveoutPane::tr("the bore diameter is 0..the outer diameter")},
-        {"cone", ProveoutPane::tr("cone angles are within ±90°")},
-    };
-    for (const Entry& e : table)
-        if (id == e.id)
-            return QStringLiteral("UCG: ") + e.text;
-    for (const stock::UcgText& t : stock::ucgTexts())
-        if (t.id == id)
-            return QStringLiteral("UCG: ") + QString::fromUtf8(t.en.data(), static_cast<qsizetype>(t.en.size()));
-    return QString::fromStdString(id);
-}
+// core/stock/stock.cpp's catalog of a UCG line's errors, each text marked
+// for the translators.
+const TranslatedText kUcgErrors[] = {
+    {"expected", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "expected UCG")},
+    {"type", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "expected the type N after UCG,")},
+    {"z", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "expected Z<outer length>Z<bore length>")},
+    {"x", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "expected X<outer diameter>X<bore diameter>")},
+    {"s", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "expected S<outer angle>S<bore angle>")},
+    {"direction", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "the direction is 0 or 1")},
+    {"detail", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "the detail is -1..-5")},
+    {"small", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "the blank is smaller than 0.01 mm")},
+    {"bore-sign", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "the bore length has the sign of the outer length")},
+    {"bore-long", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "the bore is longer than the blank")},
+    {"bore-diameter", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "the bore diameter is 0..the outer diameter")},
+    {"cone", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "cone angles are within ±90°")},
+    {"none", QT_TRANSLATE_NOOP("k528::studio::ProveoutPane", "no UCG in the file")},
+};
+
+const TranslatedTexts kUcgTexts("k528::studio::ProveoutPane", kUcgErrors);
 
 ProveoutPane::Output proveInput(const ProveoutPane::Input& in) {
     ProveoutPane::Output out;
@@ -114,6 +107,14 @@ QString mm(double v) { return QString::number(v, 'f', 3); }
 static_assert(ProveoutPane::kIndicator == ProgramEditor::kProveoutIndicator);
 
 } // namespace
+
+bool hasUcgText(std::string_view id) { return kUcgTexts.has(id); }
+
+QString ucgErrorText(std::string_view id) {
+    const QString text = kUcgTexts.has(id) ? kUcgTexts.pattern(id)
+                                           : QString::fromStdString(stock::ucgTexts().render(id, {}, russianWindow()));
+    return QStringLiteral("UCG: ") + text;
+}
 
 ProveoutPane::ProveoutPane(EditorTab* editor, QWidget* parent)
     : QWidget(parent), editor_(editor), alive_(std::make_shared<bool>(true)) {

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 class QCheckBox;
@@ -102,5 +103,12 @@ private:
 // The dock "dock.proveout" with the pane, in window `w`; activating a finding
 // shows its line in the editor (the work area turns to it).
 QDockWidget* addProveoutDock(QMainWindow* w, EditorTab* editor, QTabWidget* workArea);
+
+// What is wrong with a UCG line (core's stock::ucgTexts() id, parseUcg's
+// errorId) in the window's language after "UCG: ", e.g. «UCG: отверстие
+// длиннее заготовки».
+QString ucgErrorText(std::string_view id);
+// The id has a text here (studio.ui_language: every id of core's catalog has).
+bool hasUcgText(std::string_view id);
 
 } // namespace k528::studio

@@ -3,6 +3,7 @@
 #include "catalog/rparams.h"
 #include "engine/positioner.h"
 #include "engine/rparams.h"
+#include "session/catalog_texts.h"
 #include "window_language.h"
 #include "controller/controller.h"
 #include "units/units.h"
@@ -46,7 +47,6 @@ Controller& RParamsModel::controller() const { return viewed_.current(); }
 
 void RParamsModel::retranslate() {
     beginResetModel();
-    russian_ = russianWindow();
     search_.assign(engine::kRCount, QString());
     for (int n = 0; n < engine::kRCount; ++n) {
         const catalog::RParamDef& d = catalog::rParam(n);
@@ -124,13 +124,12 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
             return {};
         case Group:
             return d.group == 0 ? QString()
-                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(fromStd(
-                                      russian_ ? catalog::rGroupNameRu(d.group) : catalog::rGroupNameEn(d.group)));
+                                : QStringLiteral("УСТ %1 %2").arg(d.group).arg(rGroupName(d.group));
         case Meaning: {
-            QString m = fromStd(russian_ ? d.meaningRu : d.meaningEn);
-            const std::string_view unit = russian_ ? catalog::rUnitRu(d.unit) : catalog::rUnitEn(d.unit);
-            if (!unit.empty() && d.unit != catalog::RUnit::Number)
-                m += QStringLiteral(" [%1]").arg(fromStd(unit));
+            QString m = coreText(d.meaningRu, d.meaningEn);
+            const QString unit = coreText(catalog::rUnitRu(d.unit), catalog::rUnitEn(d.unit));
+            if (!unit.isEmpty() && d.unit != catalog::RUnit::Number)
+                m += QStringLiteral(" [%1]").arg(unit);
             return m;
         }
         case Value:
@@ -146,11 +145,11 @@ QVariant RParamsModel::data(const QModelIndex& index, int role) const {
         }
     }
     if (role == Qt::ToolTipRole) {
-        QString t = fromStd(russian_ ? d.meaningRu : d.meaningEn);
+        QString t = coreText(d.meaningRu, d.meaningEn);
         if (!d.panelHint.empty())
             t += QStringLiteral("\n") + fromStd(d.panelHint);
-        if (!d.note.empty() && !russian_) // the catalog's notes are English
-            t += QStringLiteral("\n") + fromStd(d.note);
+        if (const QString note = coreText({}, d.note); !note.isEmpty()) // the catalog's notes are English only
+            t += QStringLiteral("\n") + note;
         return t;
     }
     if (role == Qt::TextAlignmentRole && (index.column() == Value || index.column() == Mm || index.column() == Preset))

@@ -62,7 +62,6 @@ private:
     std::array<std::int32_t, 300> shown_{};
     std::map<int, std::int64_t> presets_;
     std::vector<QString> search_;
-    bool russian_ = false;
 };
 
 class RParamsFilter : public ParameterFilter {

@@ -3,7 +3,7 @@
 #include "db/notes.h"
 #include "profile/tools.h"
 #include "proveout/setup_sheet.h"
-#include "window_language.h"
+#include "session/catalog_texts.h"
 #include "session/core_texts.h"
 
 #include <QComboBox>
@@ -23,10 +23,9 @@ TrialPartDialog::TrialPartDialog(const profile::MachineProfile& machine, QWidget
     setWindowTitle(tr("Trial part: correct a tool's offset"));
     tool_ = new QComboBox(this);
     tool_->setObjectName("trial.tool");
-    const bool ru = russianWindow();
     try {
         for (const profile::Tool& t : profile::tools(machine_)) {
-            const QString kind = QString::fromUtf8(std::string(proveout::toolKindText(t.kind, ru)).c_str());
+            const QString kind = toolKindText(t.kind);
             tool_->addItem(QStringLiteral("T%1 %2 — %3").arg(t.station).arg(kind, QString::fromStdString(t.name)),
                            t.station);
         }

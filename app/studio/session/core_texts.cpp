@@ -422,7 +422,6 @@ QString coreErrorText(const std::exception& e) {
             .arg(problemText(v->problem()));
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty()) {
         // The cross-checks' findings: core says each in both languages.
-        const bool ru = russianWindow();
         QString text = QCoreApplication::translate("k528::studio::CoreTexts",
                                                    "rejected, nothing was written (errors: %1):")
                            .arg(v->findings().size());
@@ -430,7 +429,7 @@ QString coreErrorText(const std::exception& e) {
             QString line = fromStd(f.subject);
             if (f.message)
                 line += QCoreApplication::translate("k528::studio::CoreTexts", " (message %1)").arg(*f.message);
-            text += QStringLiteral("\n") + line + QStringLiteral(": ") + fromStd(ru ? f.textRu : f.textEn);
+            text += QStringLiteral("\n") + line + QStringLiteral(": ") + coreText(f.textRu, f.textEn);
         }
         return text;
     }

@@ -160,6 +160,15 @@ bool ShopDatabase::isOpenDatabaseFile(const fs::path& file) {
     return false;
 }
 
+namespace {
+
+// Core's and the database library's own sentence (what()) is English: in an
+// English window it is said as it is; a Russian window says its own sentence
+// around the library's words.
+bool ownEnglishFits() { return !russianWindow(); }
+
+} // namespace
+
 QString databaseErrorKindText(db::ErrorKind kind) {
     // (the context of File > Database..., whose dialog says them first)
     switch (kind) {
@@ -184,7 +193,7 @@ QString databaseErrorKindText(db::ErrorKind kind) {
 }
 
 QString databaseErrorDetail(const std::exception& e) {
-    if (!russianWindow())
+    if (ownEnglishFits())
         return QString::fromUtf8(e.what());
     // The library's own words where core kept them apart (SQLite speaks
     // English only; libpq and the C library speak the window's language),
@@ -261,7 +270,7 @@ QString databaseErrorText(const std::exception& e) {
         if (error && !error->textId().empty())
             if (const QString text = databaseText(error->catalogText()); !text.isEmpty())
                 return text;
-        if (!error || !russianWindow())
+        if (!error || ownEnglishFits())
             return QString::fromUtf8(e.what());
         // A sentence of the window's language: which database, what is
         // wrong with it, and what the library said.

@@ -4,7 +4,7 @@
 #include "controller/controller_dock.h"
 #include "controller/link_texts.h"
 #include "database/database_ui.h"
-#include "window_language.h"
+#include "session/catalog_texts.h"
 #include "main_window.h"
 #include "session/shop_database.h"
 #include "db/state_times.h"
@@ -89,11 +89,10 @@ QString clockText(std::int64_t unixMs) {
 }
 
 QString alarmText(int n) {
-    const catalog::PositionerMessage* m = catalog::findPositionerMessage(n);
-    if (!m)
+    const QString text = positionerMessageText(n);
+    if (text.isEmpty())
         return ShopView::tr("alarm %1").arg(n);
-    return QStringLiteral("%1 %2").arg(n).arg(QString::fromUtf8(russianWindow() ? m->textRu
-                                                                                                          : m->textEn));
+    return QStringLiteral("%1 %2").arg(n).arg(text);
 }
 
 QString modeOf(const link::LiveState& l) {

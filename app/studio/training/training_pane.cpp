@@ -50,9 +50,8 @@ namespace k528::studio {
 
 namespace {
 
-training::Language uiLanguage() {
-    return russianWindow() ? training::Language::Ru : training::Language::En;
-}
+// An exercise's words (its title, task, hints: Russian and English in its file).
+QString said(const training::Bilingual& b) { return coreText(b.ru, b.en); }
 
 QString q(const std::string& s) {
     return QString::fromStdString(s);
@@ -333,10 +332,9 @@ void TrainingPane::changeEvent(QEvent* e) {
 }
 
 void TrainingPane::retranslate() {
-    const training::Language l = uiLanguage();
     const auto& all = training::shippedExercises();
     for (int i = 0; i < exercise_->count() && i < static_cast<int>(all.size()); ++i)
-        exercise_->setItemText(i, QStringLiteral("%1. %2").arg(i + 1).arg(q(all[static_cast<std::size_t>(i)].title.in(l))));
+        exercise_->setItemText(i, QStringLiteral("%1. %2").arg(i + 1).arg(said(all[static_cast<std::size_t>(i)].title)));
     exerciseLabel_->setText(tr("Exercise:"));
     studentLabel_->setText(tr("Student:"));
     student_->setPlaceholderText(tr("the student's name"));
@@ -366,13 +364,12 @@ void TrainingPane::showExercise() {
         part_->setDrawing({}, {});
         return;
     }
-    const training::Language l = uiLanguage();
-    const auto para = [](const std::string& s) {
-        return QStringLiteral("<p>") + q(s).toHtmlEscaped().replace(QLatin1Char('\n'), QLatin1Char(' ')) +
+    const auto para = [](const training::Bilingual& b) {
+        return QStringLiteral("<p>") + said(b).toHtmlEscaped().replace(QLatin1Char('\n'), QLatin1Char(' ')) +
                QStringLiteral("</p>");
     };
-    QString html = QStringLiteral("<h3>") + q(e->title.in(l)).toHtmlEscaped() + QStringLiteral("</h3>");
-    html += para(e->task.in(l));
+    QString html = QStringLiteral("<h3>") + said(e->title).toHtmlEscaped() + QStringLiteral("</h3>");
+    html += para(e->task);
     QStringList facts;
     if (e->limits.cycleTimeS > 0)
         facts << tr("Cycle time at most %1 s").arg(e->limits.cycleTimeS);
@@ -389,7 +386,7 @@ void TrainingPane::showExercise() {
         html += QStringLiteral("<p><i>") + f.toHtmlEscaped() + QStringLiteral("</i></p>");
     for (const training::Bilingual& h : e->hints)
         html += QStringLiteral("<p>") + tr("Hint:").toHtmlEscaped() + QLatin1Char(' ') +
-                q(h.in(l)).toHtmlEscaped() + QStringLiteral("</p>");
+                said(h).toHtmlEscaped() + QStringLiteral("</p>");
     task_->setHtml(html);
     if (!last_ || last_->grade.exercise != e->id) {
         std::vector<training::Shape> blank;
@@ -576,7 +573,7 @@ void TrainingPane::showClass() {
         // The exercise by its title in the window's language (its id if the course has it no more).
         const training::Exercise* ex = training::findExercise(a.exercise);
         const QString exercise =
-            ex ? q(uiLanguage() == training::Language::Ru ? ex->title.ru : ex->title.en) : q(a.exercise);
+            ex ? said(ex->title) : q(a.exercise);
         const QStringList cells{shownName(q(a.student)), exercise, QString::number(a.score),
                                 a.passed ? tr("passed") : tr("not passed"),
                                 at.isValid() ? at.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")) : q(a.at)};
@@ -640,7 +637,7 @@ QString TrainingPane::exportPdf(const QString& path) const {
     for (const db::AttemptEntry& a : classRows_) {
         const training::Exercise* ex = training::findExercise(a.exercise);
         const QString exercise =
-            ex ? q(uiLanguage() == training::Language::Ru ? ex->title.ru : ex->title.en) : q(a.exercise);
+            ex ? said(ex->title) : q(a.exercise);
         const QDateTime at = QDateTime::fromString(q(a.at), Qt::ISODate);
         QStringList ded;
         for (const training::Deduction& d : training::storedDeductions(a))
