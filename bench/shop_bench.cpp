@@ -38,6 +38,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -172,6 +173,16 @@ std::string historyPlan(const std::string& database, const std::string& machine)
     return out;
 }
 
+// A new empty database of the cluster (createdb): its location, or none
+// (said on stderr).
+std::optional<db::Location> createDatabase(const std::string& name) {
+    if (std::system(("createdb --encoding=UTF8 --template=template0 " + name).c_str()) != 0) {
+        std::fprintf(stderr, "createdb %s failed\n", name.c_str());
+        return std::nullopt;
+    }
+    return db::Location::parse("postgresql:///" + name);
+}
+
 int runInCluster(int argc, char** argv) {
     if (std::getenv("K528_BENCH_IN_CLUSTER"))
         return -1;
@@ -220,16 +231,14 @@ int main(int argc, char** argv) {
     }
     const double built = bench::nowSeconds() - b0;
 
-    if (std::system("createdb --encoding=UTF8 --template=template0 k528bench") != 0) {
-        std::fprintf(stderr, "createdb k528bench failed\n");
+    const auto pg = createDatabase("k528bench");
+    if (!pg)
         return 2;
-    }
-    const db::Location pg = db::Location::parse("postgresql:///k528bench");
     const double c0 = bench::nowSeconds();
     db::CopyReport copied;
     {
         const db::Database d = db::Database::open(lite);
-        copied = d.copyTo(pg);
+        copied = d.copyTo(*pg);
     }
     const double copySeconds = bench::nowSeconds() - c0;
     std::error_code ec;
@@ -239,20 +248,18 @@ int main(int argc, char** argv) {
                 built, static_cast<long long>(copied.rows), copySeconds);
 
     const Figures s = measure(lite, machines, revisions, runs);
-    const Figures p = measure(pg, machines, revisions, runs);
+    const Figures p = measure(*pg, machines, revisions, runs);
 
     // The shop grown by ordinary writes, on each backend.
     const db::Location liteGrown(dir / "grown.db");
     const double g0 = bench::nowSeconds();
     growShop(liteGrown, machines, revisions);
     const double grownLite = bench::nowSeconds() - g0;
-    if (std::system("createdb --encoding=UTF8 --template=template0 k528grown") != 0) {
-        std::fprintf(stderr, "createdb k528grown failed\n");
+    const auto pgGrown = createDatabase("k528grown");
+    if (!pgGrown)
         return 2;
-    }
-    const db::Location pgGrown = db::Location::parse("postgresql:///k528grown");
     const double g1 = bench::nowSeconds();
-    growShop(pgGrown, machines, revisions);
+    growShop(*pgGrown, machines, revisions);
     const double grownPg = bench::nowSeconds() - g1;
     std::printf("grown shop: %d machines x %d revisions written round by round through the API: "
                 "SQLite in %.1f s, PostgreSQL in %.1f s\n",
@@ -264,7 +271,7 @@ int main(int argc, char** argv) {
     }
     const std::string planRaw = historyPlan("k528grown", machineName(0));
     {
-        db::Database d = db::Database::open(pgGrown);
+        db::Database d = db::Database::open(*pgGrown);
         measureReads(d, machines, revisions, runs, gpRaw);
     }
     if (std::system("psql -XAtq -d k528grown -c 'VACUUM (ANALYZE) changes'") != 0) {
@@ -273,7 +280,7 @@ int main(int argc, char** argv) {
     }
     const std::string plan = historyPlan("k528grown", machineName(0));
     {
-        db::Database d = db::Database::open(pgGrown);
+        db::Database d = db::Database::open(*pgGrown);
         measureReads(d, machines, revisions, runs, gp);
     }
 

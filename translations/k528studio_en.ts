@@ -2441,6 +2441,14 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>no tool at station %1</source>
         <translation>no tool at station %1</translation>
     </message>
+    <message>
+        <source>%1 without its Russian %2 (an English text stands beside its Russian)</source>
+        <translation>%1 without its Russian %2 (an English text stands beside its Russian)</translation>
+    </message>
+    <message>
+        <source>%1 is written beside its Russian text: %2=</source>
+        <translation>%1 is written beside its Russian text: %2=</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CuttingDataDialog</name>

@@ -2441,6 +2441,14 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>no tool at station %1</source>
         <translation>нет инструмента в позиции %1</translation>
     </message>
+    <message>
+        <source>%1 without its Russian %2 (an English text stands beside its Russian)</source>
+        <translation>%1 без русского текста %2 (английский даётся рядом с русским)</translation>
+    </message>
+    <message>
+        <source>%1 is written beside its Russian text: %2=</source>
+        <translation>%1 пишется рядом с русским текстом: %2=</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::CuttingDataDialog</name>

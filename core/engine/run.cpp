@@ -4,6 +4,7 @@
 #include "engine/positioner.h"
 #include "engine/ideal_machine.h"
 #include "engine/load_programs.h"
+#include "profile/english.h"
 
 #include <algorithm>
 #include <cmath>
@@ -114,7 +115,9 @@ std::vector<RunBlocker> startBlockers(const Positioner& ctl, RunBlocker what) {
             if ((bits >> (k - 1)) & 1u) {
                 const auto t = texts.find(k);
                 const std::string text = t == texts.end() ? std::string() : t->second;
-                out.push_back({source, k, text, text});
+                // The machine file's English beside its Russian, when it gives one.
+                const std::string en = t == texts.end() ? std::string() : profile::plcText(ctl.profile(), g, k, true);
+                out.push_back({source, k, text, en});
             }
     };
     add(catalog::PlcGroup::Alarm, m.alarms, "plc_alarm");

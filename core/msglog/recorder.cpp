@@ -1,6 +1,7 @@
 #include "msglog/recorder.h"
 
 #include "catalog/messages.h"
+#include "profile/english.h"
 
 #include <cmath>
 
@@ -54,17 +55,13 @@ void Recorder::acknowledged(Track& t, const std::string& how) {
     t.seq = 0;
 }
 
-std::string Recorder::plcText(MessageSource s, int k) const {
+std::string Recorder::plcText(MessageSource s, int k, bool english) const {
     const profile::MachineProfile& p = *machine_;
-    const std::map<int, std::string>& texts = s == MessageSource::PlcAlarm    ? p.plcAlarm
-                                              : s == MessageSource::PlcSystem ? p.plcSystem
-                                                                              : p.plcWork;
-    const auto it = texts.find(k);
-    if (it != texts.end())
-        return it->second;
     const catalog::PlcGroup g = s == MessageSource::PlcAlarm    ? catalog::PlcGroup::Alarm
                                 : s == MessageSource::PlcSystem ? catalog::PlcGroup::System
                                                                 : catalog::PlcGroup::Work;
+    if (p.plcTexts(g).contains(k))
+        return profile::plcText(p, g, k, english); // the English when the machine file gives one
     return catalog::plcMessageAddress(g, k);
 }
 
@@ -77,8 +74,7 @@ void Recorder::bits(MessageSource s, std::uint32_t shown, std::uint32_t present,
         const bool cause = acknowledgeable ? ((present >> (k - 1)) & 1u) != 0 : on;
         if (t.seq == 0) {
             if (on) {
-                const std::string text = plcText(s, k);
-                t.seq = raise(s, k, text, text, program, line);
+                t.seq = raise(s, k, plcText(s, k, false), plcText(s, k, true), program, line);
                 t.cause = cause;
                 if (!cause)
                     cleared(t);
@@ -188,8 +184,11 @@ void Recorder::step(std::int64_t now, std::uint16_t z1000, EntryOf&& entryOf, co
         }
         programMessage_ = pv.messageNumber;
         if (pv.messageNumber > 0) {
+            // The machine file's message in English when it gives one (not a program's own).
+            const bool machines = pv.messageText == profile::messageText(*machine_, pv.messageNumber, false);
             program_.seq = raise(MessageSource::Program, pv.messageNumber, pv.messageText,
-                                 pv.messageText, curProgram, curLine);
+                                 machines ? profile::messageText(*machine_, pv.messageNumber, true) : pv.messageText,
+                                 curProgram, curLine);
             program_.cause = true;
         }
     }

@@ -90,7 +90,7 @@ private:
     void acknowledged(Track& t, const std::string& how);
     void bits(db::MessageSource s, std::uint32_t shown, std::uint32_t present, int count,
               Track* tracks, bool acknowledgeable, const std::string& how, int program, int line);
-    std::string plcText(db::MessageSource s, int k) const;
+    std::string plcText(db::MessageSource s, int k, bool english) const;
     template <class EntryOf>
     void step(std::int64_t now, std::uint16_t z1000, EntryOf&& entryOf, const engine::PlcMessagesView& pm,
               const engine::ProgramView& pv);

@@ -2,6 +2,7 @@
 #include "profile/problem.h"
 
 #include "profile/line.h"
+#include "profile/english.h"
 
 #include "util/utf8.h"
 
@@ -250,12 +251,16 @@ constexpr SimulationKey kKeys[] = {
     // The tools of the turret's stations n = 1..8 (profile/tools.h).
     {"tool.n.kind", T::String, 0, 0, "", "", "The tool at station n: turning, facing, grooving, boring, drill or threading (the other tool.n keys need it).", "profile tools, proveout, setup sheet, backplot"},
     {"tool.n.name", T::String, 0, 0, "", "", "The tool's name for people (the setup sheet).", "setup sheet"},
+    {"tool.n.name.en", T::String, 0, 0, "", "", "The tool's name in English (tool.n.name is the Russian).", "setup sheet"},
     {"tool.n.tip_radius_mm", T::Double, 0, 50, "0", "mm", "The tool's nose radius.", "setup sheet, backplot"},
     {"tool.n.orientation", T::String, 0, 0, "+z+x", "", "Where the tool's body lies from its tip: +z+x (an outside tool held from above), -z+x, +z-x (a boring bar), -z-x.", "proveout, backplot"},
     {"tool.n.width_mm", T::Double, 0.001, 1000, "3", "mm", "The tool's body along Z from its tip (a drill's or boring bar's length: default 150).", "proveout, backplot"},
     {"tool.n.height_mm", T::Double, 0.001, 1000, "1000", "mm", "The tool's body along X (radially) from its tip; a drill's diameter (default 10 for drills and boring bars).", "proveout, backplot"},
     {"tool.n.max_depth_mm", T::Double, 0, 100, "0", "mm", "The deepest cut the tool takes (its cutting edge); 0: no limit.", "proveout"},
     {"tool.n.offset_r", T::Int, 0, 148, "", "", "The R-parameter of the tool's X offset (its Z offset is the next): the values the program copies into R226/R227 after the tool change.", "proveout, setup sheet, trial part"},
+    // The English of a text for people (profile.h, englishKey): the title,
+    // technological message #k (text.en.m<k>), PLC message A01 (text.en.a01), W, S.
+    {"text.en.item", T::String, 0, 0, "", "", "The English of a text for people beside its Russian: title.en=, #k.en=, A01.en= in the machine file.", "the studio in English, the CLI's --lang en"},
     {"line", T::String, 0, 0, "", "", "Shop: where the machine's controller is, tcp://HOST:PORT/UNIT (Modbus TCP) or serial:DEVICE?baud=115200&parity=none&address=1 (RS485).", "shop (k528 shop, the studio's Connect)"},
 };
 // clang-format on
@@ -274,6 +279,8 @@ const SimulationKey* findSimulationKey(std::string_view key) {
         generic = "tool.n." + std::string(key.substr(7));
         key = generic;
     }
+    if (!englishItem(key).empty())
+        key = "text.en.item";
     for (const SimulationKey& k : kKeys)
         if (k.key == key)
             return &k;
@@ -307,6 +314,8 @@ Problem simulationValueProblem(std::string_view key, std::string_view value) {
             return problem("value.bool", {std::string(value)});
         return {};
     case SettingType::String:
+        if (const std::string item = englishItem(key); !item.empty())
+            return englishTextProblem(item, value);
         if (key == "line")
             if (std::string e = lineError(value); !e.empty())
                 return problem("value.line", {e});

@@ -1,4 +1,5 @@
 #include "profile/text_format.h"
+#include "profile/english.h"
 #include "util/input_file.h"
 
 #include "catalog/rparams.h"
@@ -213,7 +214,28 @@ private:
         }
     }
 
+    // `item.en=` beside a text for people: its English, kept as a setting
+    // (profile.h, englishKey); the Russian must be given too (finish()).
+    bool english(std::string_view key, std::string_view value) {
+        if (!key.ends_with(".en"))
+            return false;
+        const std::string item(key.substr(0, key.size() - 3));
+        const std::string setting = englishKey(item);
+        if (setting.empty())
+            return false;
+        once(englishItem(setting) + ".en");
+        check(englishTextProblem(item, value));
+        check(settingProblem(setting, value));
+        if (!value.empty()) {
+            p_.simulation.set(setting, value);
+            englishLine_[englishItem(setting)] = lineNo_;
+        }
+        return true;
+    }
+
     void machine(std::string_view key, std::string_view value) {
+        if (key == "title.en" && english(key, value))
+            return;
         if (key != "format" && key != "name" && key != "title")
             fail("file.machine-key", {std::string(key)});
         once(std::string(key), "machine");
@@ -259,6 +281,8 @@ private:
     }
 
     void message(std::string_view key, std::string_view text) {
+        if (english(key, text))
+            return;
         const auto n = key.size() >= 2 && key[0] == '#' ? parseInt(key.substr(1)) : std::nullopt;
         if (!n || key[1] == '+' || key[1] == '-')
             fail("file.message-key", {std::string(key)});
@@ -270,6 +294,8 @@ private:
     }
 
     void plc(std::string_view key, std::string_view text) {
+        if (english(key, text))
+            return;
         const char letter = key.empty() ? '?' : static_cast<char>(key[0] & ~0x20);
         cat::PlcGroup g{};
         if (letter == 'A')
@@ -289,6 +315,8 @@ private:
     }
 
     void setting(std::string_view key, std::string_view value) {
+        if (!englishItem(key).empty()) // beside its Russian, not here
+            fail("file.english-place", {std::string(key), englishItem(key) + ".en"});
         check(settingProblem(key, value));
         once(std::string(key), "simulation");
         p_.simulation.set(key, value);
@@ -303,6 +331,14 @@ private:
             fail("file.no-format", {std::to_string(kMachineFileFormat)}, machineLine);
         if (p_.name.empty())
             fail("file.no-name", {}, machineLine);
+        // An English without its Russian: a typo in the number, or the Russian lost.
+        for (const auto& [item, line] : englishLine_) {
+            const bool russian = item == "title" ? !p_.title.empty()
+                                 : item[0] == '#' ? p_.messages.contains(std::stoi(item.substr(1)))
+                                                  : !plcRussian(item).empty();
+            if (!russian)
+                fail("file.english-alone", {item + ".en", item}, line);
+        }
         if (!sectionLine_.contains(Section::C))
             fail("file.no-c", {}, 0);
         if (cSeen_.size() != static_cast<std::size_t>(cat::kCParamCount)) {
@@ -320,7 +356,15 @@ private:
         }
     }
 
+    std::string plcRussian(const std::string& item) const {
+        for (cat::PlcGroup g : cat::kPlcGroups)
+            if (cat::plcGroupLetter(g) == item[0])
+                return plcText(p_, g, std::stoi(item.substr(1)), false);
+        return {};
+    }
+
     std::string_view source_;
+    std::map<std::string, int> englishLine_; // item -> the line of its English
     std::vector<std::string_view> lines_;
     int lineNo_ = 0;
     Section section_ = Section::None;
@@ -361,6 +405,12 @@ std::string writeMachineText(const MachineProfile& p) {
     o << "format=" << kMachineFileFormat << "\n";
     o << "name=" << p.name << "\n";
     o << "title=" << p.title << "\n";
+    // An English beside its Russian (kept as a setting: profile.h, englishKey).
+    const auto english = [&](const std::string& item, const std::string& key) {
+        if (const auto en = p.simulation.find(englishKey(item)))
+            o << key << ".en=" << *en << "\n";
+    };
+    english("title", "title");
     o << "\n[c]\n";
     for (const cat::CParamDef& d : cat::cParams()) {
         if (d.number == 1)
@@ -382,8 +432,10 @@ std::string writeMachineText(const MachineProfile& p) {
     for (const auto& [n, text] : p.programs)
         o << "\n[program " << n << "]\n" << text << kEndProgram << "\n";
     o << "\n[messages]\n";
-    for (const auto& [n, text] : p.messages)
+    for (const auto& [n, text] : p.messages) {
         o << "#" << n << "=" << text << "\n";
+        english("#" + std::to_string(n), "#" + std::to_string(n));
+    }
     o << "\n[plc-messages]\n";
     for (cat::PlcGroup g : cat::kPlcGroups) {
         const auto& texts = p.plcTexts(g);
@@ -391,12 +443,16 @@ std::string writeMachineText(const MachineProfile& p) {
             continue;
         o << "; " << cat::plcGroupLetter(g) << ": " << cat::plcGroupNameRu(g) << ", "
           << cat::plcMessageAddress(g, 1) << "...\n";
-        for (const auto& [k, text] : texts)
-            o << cat::plcGroupLetter(g) << two(k) << "=" << text << "\n";
+        for (const auto& [k, text] : texts) {
+            const std::string item = cat::plcGroupLetter(g) + two(k);
+            o << item << "=" << text << "\n";
+            english(item, item);
+        }
     }
     o << "\n[simulation]\n";
     for (const auto& [key, value] : p.simulation.entries())
-        o << key << "=" << value << "\n";
+        if (englishItem(key).empty()) // the English of a text is written beside it
+            o << key << "=" << value << "\n";
     return o.str();
 }
 

@@ -18,7 +18,7 @@ constexpr std::array<KindName, 6> kKinds{{{ToolKind::Turning, "turning"},
                                           {ToolKind::Drill, "drill"},
                                           {ToolKind::Threading, "threading"}}};
 
-constexpr std::array<std::string_view, 8> kKeys{"kind",   "name",     "tip_radius_mm",
+constexpr std::array<std::string_view, 9> kKeys{"kind",      "name",     "name.en",      "tip_radius_mm",
                                                 "orientation", "width_mm", "height_mm",
                                                 "max_depth_mm", "offset_r"};
 
@@ -122,7 +122,8 @@ std::vector<Tool> tools(const MachineProfile& p) {
 
 void setTool(MachineProfile& p, const Tool& t) {
     for (std::string_view k : kKeys)
-        p.simulation.erase(key(t.station, k));
+        if (k != "name.en") // the name's English (english.h) stays with the station
+            p.simulation.erase(key(t.station, k));
     p.simulation.set(key(t.station, "kind"), toolKindName(t.kind));
     if (!t.name.empty())
         p.simulation.set(key(t.station, "name"), t.name);

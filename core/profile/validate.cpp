@@ -1,4 +1,5 @@
 #include "profile/validate.h"
+#include "profile/english.h"
 
 #include "profile/problem.h"
 
@@ -411,6 +412,17 @@ Problem plcTextProblem(cat::PlcGroup group, int k, std::string_view text) {
     if (k < 1 || k > count)
         return problem("plc.number", {key, std::to_string(count)});
     return within(problem("plc.text", {key}), lineTextProblem(text, cat::kPlcMessageMaxChars, true));
+}
+
+Problem englishTextProblem(std::string_view item, std::string_view text) {
+    if (item == "title")
+        return titleProblem(text);
+    if (item.starts_with('#'))
+        return messageProblem(std::stoi(std::string(item.substr(1))), text);
+    for (cat::PlcGroup g : cat::kPlcGroups)
+        if (!item.empty() && cat::plcGroupLetter(g) == item[0])
+            return plcTextProblem(g, std::stoi(std::string(item.substr(1))), text);
+    return {};
 }
 
 Problem settingProblem(std::string_view key, std::string_view value) {

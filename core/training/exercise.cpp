@@ -66,12 +66,16 @@ std::string_view endCheckName(EndCheck::Kind k) {
 
 namespace {
 
+constexpr std::string_view kUcgPrefix = "ucg."; // "ucg.<id of stock::ucgTexts()>": a bad blank
+
 // "<source>: <path>: <why>" in a language.
 std::string exerciseErrorText(const std::string& source, const std::optional<std::string>& at,
                               std::string_view id, std::span<const std::string> args, bool russian) {
     std::string s = source + ": ";
     if (at)
         s += (at->empty() ? exerciseTexts().render("the-file", {}, russian) : *at) + ": ";
+    if (id.starts_with(kUcgPrefix)) // said as the prove-out and `k528 prove` say it
+        return s + "UCG: " + stock::ucgTexts().render(id.substr(kUcgPrefix.size()), args, russian);
     return s + exerciseTexts().render(id, args, russian);
 }
 
@@ -434,7 +438,7 @@ Exercise readExercise(std::string_view text, std::string_view id, std::string_vi
         std::string why, whyId;
         e.blank = stock::parseUcg(e.ucg, &why, &whyId);
         if (!e.blank)
-            b->at("ucg").fail("ucg." + whyId);
+            b->at("ucg").fail(std::string(kUcgPrefix) + whyId);
         if (const auto z = b->opt("z_mm"))
             e.blankZMm = z->num();
     }

@@ -485,6 +485,17 @@ private slots:
                      plan.c_str());
             QVERIFY2(plan.find("Heap Fetches: 0") != std::string::npos, plan.c_str());
             QVERIFY2(plan.find("Sort") == std::string::npos, plan.c_str());
+            // Autovacuum keeps the newest changes all-visible too: after
+            // every 1000 written (PostgreSQL 13 on), not after a fifth of
+            // the table.
+            const std::string options = psqlOutput(
+                where, "SELECT current_setting('server_version_num')::int >= 130000, "
+                       "coalesce(array_to_string(reloptions, ' '), '') FROM pg_class WHERE "
+                       "relname = 'changes'");
+            QVERIFY2(options.rfind("f|", 0) == 0 ||
+                         options == "t|autovacuum_vacuum_insert_threshold=1000 "
+                                    "autovacuum_vacuum_insert_scale_factor=0\n",
+                     options.c_str());
         }
         db::Edit e;
         e.c[22] = 1500;

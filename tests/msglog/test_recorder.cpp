@@ -4,6 +4,7 @@
 // history survives closing and reopening the database, and a bad batch is
 // refused whole.
 #include "catalog/messages.h"
+#include "profile/english.h"
 #include "db/message_log.h"
 #include "engine/run.h"
 #include "machine/run.h"
@@ -174,8 +175,13 @@ private slots:
         QCOMPARE(ev[0].machineMs, std::int64_t{1500});
         QCOMPARE(ev[1].message.source, MessageSource::PlcAlarm);
         QCOMPARE(ev[1].message.number, 3);
+        // The machine file's text, and its English beside it for a reader of English.
+        QCOMPARE(ev[1].message.text, p.plcAlarm.at(3));
+        QCOMPARE(ev[1].message.textEn, p.simulation.getString(profile::englishKey("A03"), ""));
+        QVERIFY(!ev[1].message.textEn.empty() && ev[1].message.textEn != ev[1].message.text);
         QCOMPARE(ev[2].message.source, MessageSource::Program);
         QCOMPARE(ev[2].message.text, std::string("ПРОВЕРКА"));
+        QCOMPARE(ev[2].message.textEn, std::string("ПРОВЕРКА")); // a program's own message: as written
         // Gone with «Сброс» (Z1000.5): cleared and acknowledged by reset.
         o.alarms.clear();
         o.plc = {};

@@ -1,8 +1,10 @@
 // The machine file: exact round trips and rejection of every kind of bad file.
 #include "catalog/cparams.h"
+#include "profile/english.h"
 #include "catalog/rparams.h"
 #include "profile/builtin.h"
 #include "profile/text_format.h"
+#include "profile/tools.h"
 #include "profile/validate.h"
 #include "util/utf8.h"
 
@@ -188,6 +190,67 @@ private slots:
         QVERIFY(text.find("\n[simulation]\nmachine=grinder-205\ntick_ms=1\nnesting_limit=8\n") != std::string::npos);
     }
 
+    // Each text for people may have its English beside it (title.en=,
+    // #k.en=, A01.en=, tool.n.name.en=): read, written back in place, kept
+    // as settings; a reader of English gets it, of Russian the Russian.
+    void englishBesideRussian() {
+        const MachineProfile lathe = builtin("training-lathe");
+        QCOMPARE(titleText(lathe, false), lathe.title);
+        QCOMPARE(titleText(lathe, true), std::string("Training lathe with the K528-05 (X on diameter, Z)"));
+        QCOMPARE(messageText(lathe, 1, false), std::string("ПОДВОД"));
+        QCOMPARE(messageText(lathe, 1, true), std::string("APPROACH"));
+        QCOMPARE(plcText(lathe, catalog::PlcGroup::Alarm, 1, false), std::string("Патрон не зажат"));
+        QCOMPARE(plcText(lathe, catalog::PlcGroup::Alarm, 1, true), std::string("Chuck not clamped"));
+        QCOMPARE(plcText(lathe, catalog::PlcGroup::Work, 32, true), std::string("Program running"));
+        QCOMPARE(plcText(lathe, catalog::PlcGroup::System, 4, true), std::string("PLC module failed, slot 3"));
+        QCOMPARE(toolName(lathe, tools(lathe).front(), true), std::string("Straight turning tool T15K6"));
+        QCOMPARE(toolName(lathe, tools(lathe).front(), false), std::string("Резец проходной упорный T15K6"));
+        QCOMPARE(lathe.simulation.getString("text.en.a01", ""), std::string("Chuck not clamped"));
+        // Every bundled machine's every text for people has its English.
+        for (const std::string& name : builtinNames()) {
+            const MachineProfile p = builtin(name);
+            const auto has = [&](const std::string& item) {
+                QVERIFY2(p.simulation.has(englishKey(item)), (name + " " + item).c_str());
+            };
+            has("title");
+            for (const auto& [n, text] : p.messages)
+                has("#" + std::to_string(n));
+            for (catalog::PlcGroup g : catalog::kPlcGroups)
+                for (const auto& [k, text] : p.plcTexts(g))
+                    has(std::string(1, catalog::plcGroupLetter(g)) + (k < 10 ? "0" : "") + std::to_string(k));
+            for (const Tool& t : tools(p))
+                QVERIFY2(t.name.empty() || toolName(p, t, true) != t.name, (name + " tool " + std::to_string(t.station)).c_str());
+            for (const Finding& f : validate(p))
+                QVERIFY2(f.severity != Severity::Warning || formatFinding(f).find("text.en") == std::string::npos,
+                         formatFinding(f).c_str());
+        }
+        // Written beside the Russian, never among the settings.
+        const std::string text = writeMachineText(lathe);
+        QVERIFY(text.find("\ntitle=Учебный токарный станок с К528-05 (X на диаметр, Z)\n"
+                          "title.en=Training lathe with the K528-05 (X on diameter, Z)\n") != std::string::npos);
+        QVERIFY(text.find("\n#1=ПОДВОД\n#1.en=APPROACH\n#2=ТОРЦОВКА\n") != std::string::npos);
+        QVERIFY(text.find("\nA01=Патрон не зажат\nA01.en=Chuck not clamped\nA02=") != std::string::npos);
+        QVERIFY(text.find("\ntool.1.name.en=Straight turning tool T15K6\n") != std::string::npos);
+        QVERIFY(text.find("text.en.") == std::string::npos);
+        // Without an English a reader of English gets the Russian.
+        MachineProfile plain = lathe;
+        QVERIFY(plain.simulation.erase(englishKey("A01")));
+        QVERIFY(plain.simulation.erase(englishKey("title")));
+        QCOMPARE(plcText(plain, catalog::PlcGroup::Alarm, 1, true), std::string("Патрон не зажат"));
+        QCOMPARE(titleText(plain, true), lathe.title);
+        QVERIFY(!(plain == lathe)); // the English is part of the machine
+        const std::string plainText = writeMachineText(plain);
+        QVERIFY(plainText.find("A01.en=") == std::string::npos);
+        QCOMPARE(readMachineText(plainText), plain);
+        // Item names and their settings.
+        QCOMPARE(englishKey("#12"), std::string("text.en.m12"));
+        QCOMPARE(englishKey("W05"), std::string("text.en.w05"));
+        QCOMPARE(englishKey("#100"), std::string());
+        QCOMPARE(englishKey("A33"), std::string());
+        QCOMPARE(englishItem("text.en.s16"), std::string("S16"));
+        QCOMPARE(englishItem("text.en.s17"), std::string());
+    }
+
     // Comments are ignored, keys may be written loosely, CRLF is fine.
     void lenientReading() {
         const MachineProfile lathe = builtin("training-lathe");
@@ -257,6 +320,18 @@ private slots:
         row("line outside section", "[end program]", "[end program]\nC001=1", 1,
             "outside any section");
         row("header without bracket", "[r]", "[r", 0, "without ']'");
+        // English beside a Russian text.
+        row("English without Russian", "#9.en=MACHINE WARM-UP", "#10.en=MACHINE WARM-UP", 0,
+            "#10.en without its Russian #10");
+        row("English too long", "#1.en=APPROACH", "#1.en=APPROACH THE PART SLOWLY", 0, "more than 20");
+        row("English PLC too long", "A01.en=Chuck not clamped",
+            "A01.en=Chuck not clamped: check the cylinder pressure", 0, "more than 40");
+        row("English with a semicolon", "A01.en=Chuck not clamped", "A01.en=Chuck; not clamped", 0,
+            "text.en.a01");
+        row("English twice", "#1.en=APPROACH", "#1.en=APPROACH\n#1.en=FEED", 1, "#1.en is given twice");
+        row("English among the settings", "tick_ms=1", "text.en.title=Lathe", 0,
+            "text.en.title is written beside its Russian text: title.en=");
+        row("English of no text", "A01.en=Chuck not clamped", "A33.en=Chuck not clamped", 0, "1..32");
     }
 
     void badFilesRejectedWithTheirLine() {

@@ -35,6 +35,7 @@
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QScrollArea>
 #include <QtTest>
 #include <memory>
 
@@ -110,8 +111,11 @@ private slots:
             QString says;
         };
         const Case cases[] = {
-            {"en", "modbus-rtu", dir_.filePath("no-such-line"), QStringLiteral(": no such port")},
-            {"ru", "modbus-rtu", dir_.filePath("no-such-line"), QStringLiteral(": порт не найден")},
+            // A long port path (as /dev/serial/by-id/ names them) wraps in the dock, not cut at its edge.
+            {"en", "modbus-rtu", dir_.filePath("serial/by-id/usb-FTDI_FT232R_USB_UART_A50285BI-if00-port0"),
+             QStringLiteral(": no such port")},
+            {"ru", "modbus-rtu", dir_.filePath("serial/by-id/usb-FTDI_FT232R_USB_UART_A50285BI-if00-port0"),
+             QStringLiteral(": порт не найден")},
             {"en", "modbus-tcp", QStringLiteral("127.0.0.1:1"), QStringLiteral(": connection refused")},
             {"ru", "modbus-tcp", QStringLiteral("127.0.0.1:1"), QStringLiteral(": соединение отклонено")},
         };
@@ -143,7 +147,21 @@ private slots:
             QVERIFY2(said.endsWith(c.says), qPrintable(said));
             QVERIFY2(!said.contains(QLatin1String("No such")) && !said.contains(QLatin1String("Connection refused")),
                      qPrintable(said));
+            // The whole message is the tooltip; the label keeps within the dock's width.
+            QVERIFY2(dock->lineLabel()->toolTip().contains(c.port), qPrintable(dock->lineLabel()->toolTip()));
+            // The message in view, for the picture.
+            for (QWidget* up = dock->lineLabel()->parentWidget(); up; up = up->parentWidget())
+                if (auto* scroll = qobject_cast<QScrollArea*>(up)) {
+                    scroll->ensureWidgetVisible(dock->lineLabel());
+                    break;
+                }
             QApplication::processEvents();
+            const QLabel* label = dock->lineLabel();
+            const QRect inDock(label->mapTo(dock, QPoint(0, 0)), label->size());
+            QVERIFY2(inDock.left() >= 0 && inDock.right() < dock->width(), qPrintable(QStringLiteral("%1 wide in a dock of %2")
+                                                                    .arg(inDock.right()).arg(dock->width())));
+            QVERIFY2(label->minimumSizeHint().width() <= label->width(),
+                     qPrintable(QStringLiteral("needs %1 of %2").arg(label->minimumSizeHint().width()).arg(label->width())));
             QVERIFY(w.grab().save(QDir::current().filePath(
                 QStringLiteral("connect_failure_%1_%2.png").arg(QLatin1String(c.plugin), QLatin1String(c.lang)))));
         }

@@ -49,6 +49,20 @@ namespace {
 
 QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
 
+// A port as a label shows it: a long path (/dev/serial/by-id/usb-FTDI_…-port0)
+// may break after its separators (a zero-width space there), so a message
+// naming it wraps in a narrow dock instead of being cut at its edge.
+QString breakablePort(const QString& port) {
+    QString out;
+    out.reserve(port.size() + 16);
+    for (const QChar c : port) {
+        out += c;
+        if (c == QLatin1Char('/') || c == QLatin1Char('_') || c == QLatin1Char('-') || c == QLatin1Char('.'))
+            out += QChar(0x200B);
+    }
+    return out;
+}
+
 QString dot(bool on, const char* color) {
     return QStringLiteral("<span style='color:%1'>●</span>").arg(on ? QString::fromLatin1(color) : QStringLiteral("#b9bdc1"));
 }
@@ -398,6 +412,7 @@ void ControllerDock::say(const QString& given) {
     const QString text = notOnRecord_.isEmpty() ? given : given + QStringLiteral(" — ") + std::exchange(notOnRecord_, {});
     lastMessage_ = text;
     transfer_->setText(text);
+    transfer_->setToolTip(text);
     window_->statusBar()->showMessage(text, 15000);
 }
 
@@ -431,8 +446,13 @@ void ControllerDock::connectLine() {
     connect(l, &LinkController::opened, this, [this](bool ok, const QString& error) {
         connecting_ = false;
         if (!ok) {
-            say(tr("No connection on %1: %2").arg(link_->line().port, error));
-            lineState_->setText(lastMessage_); // not «Connecting…» any more
+            const QString port = link_->line().port;
+            say(tr("No connection on %1: %2").arg(port, error));
+            // Not «Connecting…» any more; the whole text wraps (and is the tooltip).
+            const QString shown = QString(lastMessage_).replace(port, breakablePort(port));
+            lineState_->setText(shown);
+            lineState_->setToolTip(lastMessage_);
+            transfer_->setText(shown);
             link_.reset();
             connectedMachine_.clear();
             updateEnabled();
@@ -512,7 +532,8 @@ void ControllerDock::connectLine() {
         emit transferFinished(ok, lastMessage_);
     });
     updateEnabled();
-    lineState_->setText(tr("Connecting to %1...").arg(s.port));
+    lineState_->setText(tr("Connecting to %1...").arg(breakablePort(s.port)));
+    lineState_->setToolTip(QString());
     l->open();
 }
 

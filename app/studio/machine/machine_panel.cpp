@@ -2,6 +2,9 @@
 
 #include "machine/pendant_controls.h"
 #include "session/simulation_session.h"
+#include "window_language.h"
+
+#include "profile/english.h"
 
 #include <QEvent>
 #include <QGridLayout>
@@ -363,7 +366,7 @@ QString MachinePanelWidget::lampLegend(const std::string& id) const {
 void MachinePanelWidget::retranslate() {
     const machine::Simulation& sim = session_.simulation();
     title_->setText(tr("MACHINE CONTROL PANEL") + "\n" +
-                    QString::fromStdString(sim.profile().title));
+                    QString::fromStdString(profile::titleText(sim.profile(), !russianWindow())));
     estop_->setLegend(tr("EMERGENCY STOP"));
     buttons_.at(machine::Button::DrivesOn)->setLegend(tr("DRIVES ON"));
     buttons_.at(machine::Button::Reset)->setLegend(tr("RESET"));

@@ -4,6 +4,8 @@
 #include "engine/interface_words.h"
 #include "session/catalog_texts.h"
 #include "controller/controller.h"
+#include "profile/english.h"
+#include "window_language.h"
 
 #include <QEvent>
 #include <QHeaderView>
@@ -95,9 +97,12 @@ void MessagesView::refresh() {
     }
     const engine::PlcMessagesView pm = st.plcMessages;
     const profile::MachineProfile& prof = controller_->profile();
-    const auto text = [&](const std::map<int, std::string>& texts, catalog::PlcGroup g, int k) {
+    // The machine file's text in the window's language (its English when it gives one).
+    const auto text = [&, english = !russianWindow()](const std::map<int, std::string>& texts,
+                                                      catalog::PlcGroup g, int k) {
         const auto it = texts.find(k);
-        return it != texts.end() ? fromStd(it->second) : fromStd(catalog::plcMessageAddress(g, k));
+        return it != texts.end() ? fromStd(profile::plcText(prof, g, k, english))
+                                 : fromStd(catalog::plcMessageAddress(g, k));
     };
     for (int k = 1; k <= 16; ++k)
         if ((pm.system >> (k - 1)) & 1u)
@@ -119,9 +124,15 @@ void MessagesView::refresh() {
                             text(prof.plcWork, catalog::PlcGroup::Work, k), tr("information"),
                             blue});
     const engine::ProgramView& pv = st.program;
-    if (pv.messageNumber > 0)
-        rows.push_back({tr("Program"), QStringLiteral("#%1").arg(pv.messageNumber),
-                        fromStd(pv.messageText), tr("information"), grey});
+    if (pv.messageNumber > 0) {
+        // The machine file's message in English when it gives one (and the
+        // message shown is the machine file's, not a program's own).
+        QString message = fromStd(pv.messageText);
+        if (!russianWindow() && pv.messageText == profile::messageText(prof, pv.messageNumber, false))
+            message = fromStd(profile::messageText(prof, pv.messageNumber, true));
+        rows.push_back({tr("Program"), QStringLiteral("#%1").arg(pv.messageNumber), message,
+                        tr("information"), grey});
+    }
 
     std::vector<QString> sig;
     for (const Row& r : rows)

@@ -52,6 +52,8 @@ const TranslatedText kProblems[] = {
         {"file.c-key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "unknown key '%1' in [c] (C001..C152)")},
         {"file.r-key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "unknown key '%1' in [r] (R0..R299)")},
         {"file.not-integer", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "%1: '%2' is not a whole number")},
+        {"file.english-alone", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "%1 without its Russian %2 (an English text stands beside its Russian)")},
+        {"file.english-place", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "%1 is written beside its Russian text: %2=")},
         {"file.message-key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "expected #k=text in [messages], not '%1'")},
         {"file.message-number", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "message number %1 is outside #1..#99")},
         {"file.plc-key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "expected A01..A32, W01..W32 or S01..S16 in [plc-messages], not '%1'")},
