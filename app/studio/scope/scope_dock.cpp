@@ -31,6 +31,12 @@ public:
             view_->refresh();
         });
         connect(&viewed, &ViewedController::changed, this, [this] { follow(); });
+        // Its tab brought to the front: the picture of now (behind another
+        // tab it was not drawn), once the dock has its place.
+        connect(this, &QDockWidget::visibilityChanged, view_, [this](bool visible) {
+            if (visible)
+                QTimer::singleShot(0, view_, [v = view_] { v->refresh(); });
+        });
         follow();
         // The rate line says what is sampled; the notice, a lost line.
         auto* notice = new ViewNotice(view_, this);

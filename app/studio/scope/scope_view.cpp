@@ -451,9 +451,11 @@ void ScopeView::refresh() {
             return;
         }
     }
-    // Hidden (the dock closed): the triggers keep watching, the picture
-    // is drawn when it shows again (showEvent).
-    if (!isVisible())
+    // Hidden (the dock closed, or a tab behind another: Qt moves such a dock
+    // out of sight without hiding it): the triggers keep watching, the
+    // picture is drawn when it shows again (showEvent, the dock's
+    // visibilityChanged).
+    if (!isVisible() || visibleRegion().isEmpty())
         return;
     if (buffer_.size() == 0) {
         draw(-windowS_ * 1000, 0, 0);
