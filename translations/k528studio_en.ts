@@ -2786,6 +2786,194 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>%1 or %2</source>
         <translation>%1 or %2</translation>
     </message>
+    <message>
+        <source>database location "%1": empty; give a file path or a postgresql:// URI</source>
+        <translation>database location "%1": empty; give a file path or a postgresql:// URI</translation>
+    </message>
+    <message>
+        <source>database location "%1": a password does not go into a database location (every user of this PC can read a command line, and shells keep it): put it in ~/.pgpass (PGPASSFILE) or a service file (PGSERVICEFILE, postgresql://?service=NAME), or log in without one</source>
+        <translation>database location "%1": a password does not go into a database location (every user of this PC can read a command line, and shells keep it): put it in ~/.pgpass (PGPASSFILE) or a service file (PGSERVICEFILE, postgresql://?service=NAME), or log in without one</translation>
+    </message>
+    <message>
+        <source>database location "%1": sqlite: needs a file path (sqlite:/srv/k528/shop.db)</source>
+        <translation>database location "%1": sqlite: needs a file path (sqlite:/srv/k528/shop.db)</translation>
+    </message>
+    <message>
+        <source>database location "%1": unknown kind of database "%2"; K528 Studio keeps its database in SQLite (a file path or sqlite:PATH) or PostgreSQL (postgresql://…)</source>
+        <translation>database location "%1": unknown kind of database "%2"; K528 Studio keeps its database in SQLite (a file path or sqlite:PATH) or PostgreSQL (postgresql://…)</translation>
+    </message>
+    <message>
+        <source>cannot connect to the database %1: %2</source>
+        <translation>cannot connect to the database %1: %2</translation>
+    </message>
+    <message>
+        <source>the connection to the server was lost and cannot be made again</source>
+        <translation>the connection to the server was lost and cannot be made again</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>cannot open: %1</translation>
+    </message>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a character device); a database is a regular file — give another --db path</source>
+        <translation>%1: is not a regular file (a character device); a database is a regular file — give another --db path</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a block device); a database is a regular file — give another --db path</source>
+        <translation>%1: is not a regular file (a block device); a database is a regular file — give another --db path</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a FIFO); a database is a regular file — give another --db path</source>
+        <translation>%1: is not a regular file (a FIFO); a database is a regular file — give another --db path</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a socket); a database is a regular file — give another --db path</source>
+        <translation>%1: is not a regular file (a socket); a database is a regular file — give another --db path</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (not a file); a database is a regular file — give another --db path</source>
+        <translation>%1: is not a regular file (not a file); a database is a regular file — give another --db path</translation>
+    </message>
+    <message>
+        <source>cannot be read: SQLite did not open the file</source>
+        <translation>cannot be read: SQLite did not open the file</translation>
+    </message>
+    <message>
+        <source>another program kept the database locked longer than the busy timeout (%1)</source>
+        <translation>another program kept the database locked longer than the busy timeout (%1)</translation>
+    </message>
+    <message>
+        <source>cannot be read as a database (%1)</source>
+        <translation>cannot be read as a database (%1)</translation>
+    </message>
+    <message>
+        <source>the database is damaged (integrity check: %1)</source>
+        <translation>the database is damaged (integrity check: %1)</translation>
+    </message>
+    <message>
+        <source>the database is damaged (integrity check: %1 rows break foreign keys (first: %2 row %3 -&gt; %4))</source>
+        <translation>the database is damaged (integrity check: %1 rows break foreign keys (first: %2 row %3 -&gt; %4))</translation>
+    </message>
+    <message>
+        <source>K528 Studio database without a schema version</source>
+        <translation>K528 Studio database without a schema version</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of %2 pages), which is not ours to roll back: let that program open it first</source>
+        <translation>not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of %2 pages), which is not ours to roll back: let that program open it first</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of unknown size), which is not ours to roll back: let that program open it first</source>
+        <translation>not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of unknown size), which is not ours to roll back: let that program open it first</translation>
+    </message>
+    <message>
+        <source>another program wrote into the file while it was being created</source>
+        <translation>another program wrote into the file while it was being created</translation>
+    </message>
+    <message>
+        <source>cannot switch to WAL journal mode (mode "%1"): another process kept the database busy longer than the busy timeout</source>
+        <translation>cannot switch to WAL journal mode (mode "%1"): another process kept the database busy longer than the busy timeout</translation>
+    </message>
+    <message>
+        <source>the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)</source>
+        <translation>the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: it holds %1 tables or views of another program (no k528_schema); nothing was changed</source>
+        <translation>not a K528 Studio database: it holds %1 tables or views of another program (no k528_schema); nothing was changed</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database (k528_schema says "%1"); nothing was changed</source>
+        <translation>not a K528 Studio database (k528_schema says "%1"); nothing was changed</translation>
+    </message>
+    <message>
+        <source>the table k528_schema is empty</source>
+        <translation>the table k528_schema is empty</translation>
+    </message>
+    <message>
+        <source>no K528 Studio database at %1 (the database is empty; create one with: k528 db init --db %1)</source>
+        <translation>no K528 Studio database at %1 (the database is empty; create one with: k528 db init --db %1)</translation>
+    </message>
+    <message>
+        <source>%1: not an empty database (schema version %2); a copy goes only into an empty one</source>
+        <translation>%1: not an empty database (schema version %2); a copy goes only into an empty one</translation>
+    </message>
+    <message>
+        <source>PostgreSQL %1 is too old; K528 Studio needs version 11 or newer</source>
+        <translation>PostgreSQL %1 is too old; K528 Studio needs version 11 or newer</translation>
+    </message>
+    <message>
+        <source>the database's encoding is %1; K528 Studio keeps Russian texts and needs UTF8 (createdb --encoding=UTF8 --template=template0)</source>
+        <translation>the database's encoding is %1; K528 Studio keeps Russian texts and needs UTF8 (createdb --encoding=UTF8 --template=template0)</translation>
+    </message>
+    <message>
+        <source>%1: another session is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again</source>
+        <translation>%1: another session is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again</translation>
+    </message>
+    <message>
+        <source>no role "%1": the roles are trainer, technologist, operator and viewer</source>
+        <translation>no role "%1": the roles are trainer, technologist, operator and viewer</translation>
+    </message>
+    <message>
+        <source>no message run %1; nothing was written</source>
+        <translation>no message run %1; nothing was written</translation>
+    </message>
+    <message>
+        <source>the new run has no id</source>
+        <translation>the new run has no id</translation>
+    </message>
+    <message>
+        <source>another process kept the database locked longer than the busy timeout; the messages were not written</source>
+        <translation>another process kept the database locked longer than the busy timeout; the messages were not written</translation>
+    </message>
+    <message>
+        <source>message event %1 of run %2: acknowledged without saying how</source>
+        <translation>message event %1 of run %2: acknowledged without saying how</translation>
+    </message>
+    <message>
+        <source>message event %1 of run %2: no such message was raised</source>
+        <translation>message event %1 of run %2: no such message was raised</translation>
+    </message>
+    <message>
+        <source>message history row %1: unknown source "%2"</source>
+        <translation>message history row %1: unknown source "%2"</translation>
+    </message>
+    <message>
+        <source>; none of the batch's %1 events was written</source>
+        <translation>; none of the batch's %1 events was written</translation>
+    </message>
+    <message>
+        <source>machine %1: a push takes released programs only; not released as they are:</source>
+        <translation>machine %1: a push takes released programs only; not released as they are:</translation>
+    </message>
+    <message>
+        <source>L%1: not in the database, nothing of it released</source>
+        <translation>L%1: not in the database, nothing of it released</translation>
+    </message>
+    <message>
+        <source>L%1: draft, nothing of it released</source>
+        <translation>L%1: draft, nothing of it released</translation>
+    </message>
+    <message>
+        <source>L%1: withdrawn, nothing of it released</source>
+        <translation>L%1: withdrawn, nothing of it released</translation>
+    </message>
+    <message>
+        <source>L%1: not the released version (revision %2)</source>
+        <translation>L%1: not the released version (revision %2)</translation>
+    </message>
+    <message>
+        <source>release them (k528 db release %1 L&lt;n&gt;), or let technologists push drafts: k528 db set %1 push.unreleased=true</source>
+        <translation>release them (k528 db release %1 L&lt;n&gt;), or let technologists push drafts: k528 db set %1 push.unreleased=true</translation>
+    </message>
+    <message>
+        <source>release them (k528 db release %1 L&lt;n&gt;), or push as a technologist (the machine allows drafts: push.unreleased)</source>
+        <translation>release them (k528 db release %1 L&lt;n&gt;), or push as a technologist (the machine allows drafts: push.unreleased)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DatabaseUi</name>
@@ -5832,6 +6020,10 @@ Its comment stays: %3</translation>
     <message>
         <source>; server id %1</source>
         <translation>; server id %1</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>cannot connect to %1: %2</translation>
     </message>
 </context>
 <context>

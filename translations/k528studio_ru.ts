@@ -2786,6 +2786,194 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>%1 or %2</source>
         <translation>%1 или %2</translation>
     </message>
+    <message>
+        <source>database location "%1": empty; give a file path or a postgresql:// URI</source>
+        <translation>место базы данных «%1»: пусто; укажите путь к файлу или URI postgresql://</translation>
+    </message>
+    <message>
+        <source>database location "%1": a password does not go into a database location (every user of this PC can read a command line, and shells keep it): put it in ~/.pgpass (PGPASSFILE) or a service file (PGSERVICEFILE, postgresql://?service=NAME), or log in without one</source>
+        <translation>место базы данных «%1»: пароль в место базы данных не пишется (командную строку видит любой пользователь этого ПК, и оболочки её сохраняют): запишите его в ~/.pgpass (PGPASSFILE) или в файл служб (PGSERVICEFILE, postgresql://?service=ИМЯ) либо входите без пароля</translation>
+    </message>
+    <message>
+        <source>database location "%1": sqlite: needs a file path (sqlite:/srv/k528/shop.db)</source>
+        <translation>место базы данных «%1»: после sqlite: нужен путь к файлу (sqlite:/srv/k528/shop.db)</translation>
+    </message>
+    <message>
+        <source>database location "%1": unknown kind of database "%2"; K528 Studio keeps its database in SQLite (a file path or sqlite:PATH) or PostgreSQL (postgresql://…)</source>
+        <translation>место базы данных «%1»: неизвестный вид базы данных «%2»; K528 Studio хранит базу данных в SQLite (путь к файлу или sqlite:ПУТЬ) или в PostgreSQL (postgresql://…)</translation>
+    </message>
+    <message>
+        <source>cannot connect to the database %1: %2</source>
+        <translation>нет подключения к базе данных %1: «%2»</translation>
+    </message>
+    <message>
+        <source>the connection to the server was lost and cannot be made again</source>
+        <translation>связь с сервером потеряна и не восстанавливается</translation>
+    </message>
+    <message>
+        <source>cannot open: %1</source>
+        <translation>файл не открывается: «%1»</translation>
+    </message>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>файл не читается: «%1»</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a character device); a database is a regular file — give another --db path</source>
+        <translation>%1: это не обычный файл (символьное устройство); база данных — обычный файл: укажите другой путь --db</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a block device); a database is a regular file — give another --db path</source>
+        <translation>%1: это не обычный файл (блочное устройство); база данных — обычный файл: укажите другой путь --db</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a FIFO); a database is a regular file — give another --db path</source>
+        <translation>%1: это не обычный файл (именованный канал); база данных — обычный файл: укажите другой путь --db</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (a socket); a database is a regular file — give another --db path</source>
+        <translation>%1: это не обычный файл (сокет); база данных — обычный файл: укажите другой путь --db</translation>
+    </message>
+    <message>
+        <source>%1: is not a regular file (not a file); a database is a regular file — give another --db path</source>
+        <translation>%1: это не обычный файл (не файл); база данных — обычный файл: укажите другой путь --db</translation>
+    </message>
+    <message>
+        <source>cannot be read: SQLite did not open the file</source>
+        <translation>файл не читается: SQLite не открыла его</translation>
+    </message>
+    <message>
+        <source>another program kept the database locked longer than the busy timeout (%1)</source>
+        <translation>другая программа держала базу данных заблокированной дольше времени ожидания (SQLite: «%1»)</translation>
+    </message>
+    <message>
+        <source>cannot be read as a database (%1)</source>
+        <translation>файл не читается как база данных (SQLite: «%1»)</translation>
+    </message>
+    <message>
+        <source>the database is damaged (integrity check: %1)</source>
+        <translation>база данных повреждена (проверка целостности, SQLite: «%1»)</translation>
+    </message>
+    <message>
+        <source>the database is damaged (integrity check: %1 rows break foreign keys (first: %2 row %3 -&gt; %4))</source>
+        <translation>база данных повреждена (проверка целостности: %1 строк нарушают внешние ключи; первая — %2, строка %3 -&gt; %4)</translation>
+    </message>
+    <message>
+        <source>K528 Studio database without a schema version</source>
+        <translation>база данных K528 Studio без версии схемы</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of %2 pages), which is not ours to roll back: let that program open it first</source>
+        <translation>это не база данных K528 Studio: база данных SQLite без application_id K528 Studio, с незавершённой транзакцией другой программы (горячий журнал %1, начат на файле из %2 страниц), откатывать её не нам: пусть сначала её откроет та программа</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: an SQLite database without K528 Studio's application_id, with an unfinished transaction of another program (the hot journal %1, begun on a file of unknown size), which is not ours to roll back: let that program open it first</source>
+        <translation>это не база данных K528 Studio: база данных SQLite без application_id K528 Studio, с незавершённой транзакцией другой программы (горячий журнал %1, начат на файле неизвестного размера), откатывать её не нам: пусть сначала её откроет та программа</translation>
+    </message>
+    <message>
+        <source>another program wrote into the file while it was being created</source>
+        <translation>пока файл создавался, в него записала другая программа</translation>
+    </message>
+    <message>
+        <source>cannot switch to WAL journal mode (mode "%1"): another process kept the database busy longer than the busy timeout</source>
+        <translation>не переключается в режим журнала WAL (режим «%1»): другой процесс держал базу данных занятой дольше времени ожидания</translation>
+    </message>
+    <message>
+        <source>the search path names no schema that exists; create it or set search_path (options=-csearch_path=…)</source>
+        <translation>путь поиска не называет ни одной существующей схемы; создайте её или задайте search_path (options=-csearch_path=…)</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database: it holds %1 tables or views of another program (no k528_schema); nothing was changed</source>
+        <translation>это не база данных K528 Studio: в ней %1 таблиц или представлений другой программы (нет k528_schema); ничего не изменено</translation>
+    </message>
+    <message>
+        <source>not a K528 Studio database (k528_schema says "%1"); nothing was changed</source>
+        <translation>это не база данных K528 Studio (в k528_schema — «%1»); ничего не изменено</translation>
+    </message>
+    <message>
+        <source>the table k528_schema is empty</source>
+        <translation>таблица k528_schema пуста</translation>
+    </message>
+    <message>
+        <source>no K528 Studio database at %1 (the database is empty; create one with: k528 db init --db %1)</source>
+        <translation>нет базы данных K528 Studio в %1 (база данных пуста; создать её: k528 db init --db %1)</translation>
+    </message>
+    <message>
+        <source>%1: not an empty database (schema version %2); a copy goes only into an empty one</source>
+        <translation>%1: база данных не пуста (версия схемы %2); копия записывается только в пустую</translation>
+    </message>
+    <message>
+        <source>PostgreSQL %1 is too old; K528 Studio needs version 11 or newer</source>
+        <translation>PostgreSQL %1 слишком стар; K528 Studio нужна версия 11 или новее</translation>
+    </message>
+    <message>
+        <source>the database's encoding is %1; K528 Studio keeps Russian texts and needs UTF8 (createdb --encoding=UTF8 --template=template0)</source>
+        <translation>кодировка базы данных — %1; K528 Studio хранит русские тексты, ей нужна UTF8 (createdb --encoding=UTF8 --template=template0)</translation>
+    </message>
+    <message>
+        <source>%1: another session is writing to the database and kept it locked longer than the busy timeout; nothing was written, try again</source>
+        <translation>%1: другой сеанс пишет в базу данных и держит её заблокированной дольше времени ожидания; ничего не записано, повторите</translation>
+    </message>
+    <message>
+        <source>no role "%1": the roles are trainer, technologist, operator and viewer</source>
+        <translation>нет роли «%1»: роли — trainer, technologist, operator и viewer</translation>
+    </message>
+    <message>
+        <source>no message run %1; nothing was written</source>
+        <translation>нет прогона сообщений %1; ничего не записано</translation>
+    </message>
+    <message>
+        <source>the new run has no id</source>
+        <translation>у нового прогона нет номера</translation>
+    </message>
+    <message>
+        <source>another process kept the database locked longer than the busy timeout; the messages were not written</source>
+        <translation>другой процесс держал базу данных заблокированной дольше времени ожидания; сообщения не записаны</translation>
+    </message>
+    <message>
+        <source>message event %1 of run %2: acknowledged without saying how</source>
+        <translation>событие сообщения %1 прогона %2: квитировано без указания, как</translation>
+    </message>
+    <message>
+        <source>message event %1 of run %2: no such message was raised</source>
+        <translation>событие сообщения %1 прогона %2: такое сообщение не выдавалось</translation>
+    </message>
+    <message>
+        <source>message history row %1: unknown source "%2"</source>
+        <translation>строка истории сообщений %1: неизвестный источник «%2»</translation>
+    </message>
+    <message>
+        <source>; none of the batch's %1 events was written</source>
+        <translation>; ни одно из %1 событий пакета не записано</translation>
+    </message>
+    <message>
+        <source>machine %1: a push takes released programs only; not released as they are:</source>
+        <translation>станок %1: передаются только выпущенные программы; не выпущены в этом виде:</translation>
+    </message>
+    <message>
+        <source>L%1: not in the database, nothing of it released</source>
+        <translation>L%1: нет в базе данных, ничего из неё не выпущено</translation>
+    </message>
+    <message>
+        <source>L%1: draft, nothing of it released</source>
+        <translation>L%1: черновик, ничего из неё не выпущено</translation>
+    </message>
+    <message>
+        <source>L%1: withdrawn, nothing of it released</source>
+        <translation>L%1: отозвана, ничего из неё не выпущено</translation>
+    </message>
+    <message>
+        <source>L%1: not the released version (revision %2)</source>
+        <translation>L%1: не выпущенная версия (ревизия %2)</translation>
+    </message>
+    <message>
+        <source>release them (k528 db release %1 L&lt;n&gt;), or let technologists push drafts: k528 db set %1 push.unreleased=true</source>
+        <translation>выпустите их (k528 db release %1 L&lt;n&gt;) или разрешите технологам передавать черновики: k528 db set %1 push.unreleased=true</translation>
+    </message>
+    <message>
+        <source>release them (k528 db release %1 L&lt;n&gt;), or push as a technologist (the machine allows drafts: push.unreleased)</source>
+        <translation>выпустите их (k528 db release %1 L&lt;n&gt;) или передайте их как технолог (станок разрешает черновики: push.unreleased)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DatabaseUi</name>
@@ -5832,6 +6020,10 @@ Its comment stays: %3</source>
     <message>
         <source>; server id %1</source>
         <translation>; идентификатор сервера %1</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>нет соединения с %1: %2</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
 #include "args.h"
+#include "cli.h"
 
 #include <algorithm>
 #include <charconv>
@@ -6,8 +7,33 @@
 
 namespace k528::cli {
 
+namespace {
+
+bool russianLine = true;
+
+} // namespace
+
+bool asksForEnglish(std::span<const std::string> args) {
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--")
+            break;
+        if (args[i] == "--lang=en" || (args[i] == "--lang" && i + 1 < args.size() && args[i + 1] == "en"))
+            return true;
+    }
+    return false;
+}
+
+void readCommandLineLanguage(std::span<const std::string> args) {
+    russianLine = !asksForEnglish(args);
+}
+
+bool russianCommandLine() {
+    return russianLine;
+}
+
 Args::Args(std::span<const std::string> args, std::vector<std::string_view> flags,
            std::vector<std::string_view> options) {
+    const bool ru = !asksForEnglish(args);
     bool onlyPositional = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -27,7 +53,7 @@ Args::Args(std::span<const std::string> args, std::vector<std::string_view> flag
         }
         if (std::find(flags.begin(), flags.end(), name) != flags.end()) {
             if (inlineValue) {
-                error_ = "option " + name + " takes no value";
+                error_ = ru ? "параметр " + name + " не принимает значения" : "option " + name + " takes no value";
                 return;
             }
             given_.emplace_back(name, "");
@@ -37,11 +63,11 @@ Args::Args(std::span<const std::string> args, std::vector<std::string_view> flag
             } else if (i + 1 < args.size()) {
                 given_.emplace_back(name, args[++i]);
             } else {
-                error_ = "option " + name + " needs a value";
+                error_ = ru ? "параметру " + name + " нужно значение" : "option " + name + " needs a value";
                 return;
             }
         } else {
-            error_ = "unknown option " + name;
+            error_ = ru ? "неизвестный параметр " + name : "unknown option " + name;
             return;
         }
     }

@@ -25,7 +25,17 @@ struct Command {
 
 std::span<const Command> commands();
 
-// Prints "k528: <message>" to stderr and returns ExitUsage.
+// The language of the command line's own messages (a usage error, the hint
+// to the help): Russian, as every command's --lang by default, unless the
+// command line asks for English (--lang en or --lang=en). main() reads it
+// once from the whole command line.
+bool russianCommandLine();
+void readCommandLineLanguage(std::span<const std::string> args);
+// Whether `args` ask for English (--lang en, --lang=en).
+bool asksForEnglish(std::span<const std::string> args);
+
+// Prints "k528: <message>" to stderr and the hint to the help in the command
+// line's language; returns ExitUsage.
 int usageError(std::string_view message);
 // The same in Russian or English (the hint where the help is too).
 int usageError(std::string_view message, bool russian);

@@ -244,7 +244,7 @@ int runDbCalc(std::span<const std::string> argv) {
         } catch (const profile::FileError& e) {
             return calcFail(e.what());
         } catch (const db::Error& e) {
-            return calcFail(e.what());
+            return calcFail(e.text(russianCommandLine() ? db::Lang::Ru : db::Lang::En));
         }
     } else {
         for (const char* required : {"--screw-lead", "--encoder-lines", "--drive-speed", "--accel"})

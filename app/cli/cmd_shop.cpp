@@ -56,7 +56,7 @@ int runShop(std::span<const std::string> argv) {
             lines.push_back(*line);
         }
     } catch (const db::Error& e) {
-        std::fprintf(stderr, "k528: %s\n", e.what());
+        std::fprintf(stderr, "k528: %s\n", e.text(russianCommandLine() ? db::Lang::Ru : db::Lang::En).c_str());
         return ExitUsage;
     }
     if (names.empty()) {

@@ -195,11 +195,17 @@ int runShopQt(std::span<const std::string> argv) {
     // Each machine's time in each state, added to the database's record
     // (source shop@HOST) once a minute, when a state changes and at the end.
     std::optional<db::Database> times;
+    const db::Lang lang = russianCommandLine() ? db::Lang::Ru : db::Lang::En;
+    const char* const timesNotKept = lang == db::Lang::Ru
+                                         ? "k528 shop: время станков в каждом состоянии не записывается: %s\n"
+                                         : "k528 shop: the time in each state is not kept: %s\n";
     if (const auto where = args.value("--db")) {
         try {
             times.emplace(db::Database::open(db::Location::parse(*where)));
+        } catch (const db::Error& e) {
+            std::fprintf(stderr, timesNotKept, e.text(lang).c_str());
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "k528 shop: the time in each state is not kept: %s\n", e.what());
+            std::fprintf(stderr, timesNotKept, e.what());
         }
     }
     char host[256] = {};
@@ -223,7 +229,7 @@ int runShopQt(std::span<const std::string> argv) {
             if (e.kind() == db::ErrorKind::Busy || e.kind() == db::ErrorKind::Io)
                 tally.putBack(rows); // the next minute
             if (!timesSaid)
-                std::fprintf(stderr, "k528 shop: the time in each state is not kept: %s\n", e.what());
+                std::fprintf(stderr, timesNotKept, e.text(lang).c_str());
             timesSaid = true;
         }
     };

@@ -254,7 +254,7 @@ std::span<const Command> commands() {
 }
 
 int usageError(std::string_view message) {
-    return usageError(message, false);
+    return usageError(message, russianCommandLine());
 }
 
 int usageError(std::string_view message, bool russian) {

@@ -5,7 +5,7 @@
 namespace k528::cli {
 
 int usageError(std::string_view message) {
-    return usageError(message, false);
+    return usageError(message, russianCommandLine());
 }
 
 int usageError(std::string_view message, bool russian) {

@@ -195,7 +195,8 @@ bool parseLangOption(const Args& a, Lang& lang) {
         else if (*l == "en")
             lang = Lang::En;
         else {
-            usageError("--lang is ru or en, not '" + *l + "'");
+            usageError(russianCommandLine() ? "--lang — ru или en, а не «" + *l + "»"
+                                            : "--lang is ru or en, not '" + *l + "'");
             return false;
         }
     }
@@ -208,10 +209,13 @@ bool parseLangOption(const Args& a, Lang& lang) {
 
 // "--db PATH" of the subcommand, else the default location.
 bool dbTarget(const Args& a, DbTarget& t) {
+    if (Lang lang; !parseLangOption(a, lang))
+        return false;
     try {
         if (const auto p = a.value("--db")) {
             if (p->empty()) {
-                usageError("--db needs a file path or a postgresql:// URI");
+                usageError(langOf(a) == Lang::Ru ? "после --db нужен путь к файлу или URI postgresql://"
+                                                 : "--db needs a file path or a postgresql:// URI");
                 return false;
             }
             t.where = db::Location::parse(*p);
@@ -252,7 +256,8 @@ std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
         if (!exists && !t.explicitPath) {
             fs::create_directories(file.parent_path(), ec);
             if (ec) {
-                fail("cannot create the folder " + file.parent_path().string() + ": " + ec.message());
+                fail(lang == Lang::Ru ? "нельзя создать папку " + file.parent_path().string() + ": «" + ec.message() + "»"
+                                      : "cannot create the folder " + file.parent_path().string() + ": " + ec.message());
                 return std::nullopt;
             }
         }
@@ -456,7 +461,7 @@ int runDb(std::span<const std::string> args) {
     while (!rest.empty() && (rest[0] == "--db" || rest[0].rfind("--db=", 0) == 0)) {
         if (rest[0] == "--db") {
             if (rest.size() < 2)
-                return usageError("option --db needs a value");
+                return usageError(russianCommandLine() ? "параметру --db нужно значение" : "option --db needs a value");
             dbOpt = {"--db", rest[1]};
             rest.erase(rest.begin(), rest.begin() + 2);
         } else {
@@ -465,8 +470,11 @@ int runDb(std::span<const std::string> args) {
         }
     }
     if (rest.empty())
-        return usageError(
-            "db needs a subcommand: init, machines, show, set, export, import, diff, calc, audit");
+        return usageError(russianCommandLine()
+                              ? "db нужна подкоманда: init, machines, show, set, export, import, diff, calc, audit, "
+                                "copy, release, withdraw, log, roles"
+                              : "db needs a subcommand: init, machines, show, set, export, import, diff, calc, audit, "
+                                "copy, release, withdraw, log, roles");
     const std::string sub = rest[0];
     std::vector<std::string> subArgs(rest.begin() + 1, rest.end());
     subArgs.insert(subArgs.end(), dbOpt.begin(), dbOpt.end());
@@ -498,8 +506,13 @@ int runDb(std::span<const std::string> args) {
         return dbcli::cmdLog(subArgs);
     if (sub == "roles")
         return dbcli::cmdRoles(subArgs);
-    return usageError("unknown db subcommand '" + sub +
-                      "' (init, machines, show, set, export, import, diff, calc, audit)");
+    return usageError(russianCommandLine()
+                          ? "неизвестная подкоманда db «" + sub +
+                                "» (init, machines, show, set, export, import, diff, calc, audit, copy, release, "
+                                "withdraw, log, roles)"
+                          : "unknown db subcommand '" + sub +
+                                "' (init, machines, show, set, export, import, diff, calc, audit, copy, release, "
+                                "withdraw, log, roles)");
 }
 
 } // namespace k528::cli

@@ -11,6 +11,15 @@ namespace k528::cli {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// A database error in the command's language.
+std::string said(const db::Error& e, bool ru) {
+    return e.text(ru ? db::Lang::Ru : db::Lang::En);
+}
+
+} // namespace
+
 bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
                           std::optional<TransferRecord>& record) {
     const auto say = [ru](const char* russian, const char* english) { return ru ? russian : english; };
@@ -59,13 +68,13 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
         if (required) {
             std::fprintf(stderr, say("k528 link: журнал передач: %s; ничего не отправлено\n",
                                      "k528 link: the transfer log: %s; nothing was sent\n"),
-                         e.what());
+                         said(e, ru).c_str());
             return false;
         }
         std::fprintf(stderr,
                      say("k528 link: предупреждение: эта передача не записана в журнал (%s: %s)\n",
                          "k528 link: warning: this transfer is not on record (%s: %s)\n"),
-                     where.c_str(), e.what());
+                     where.c_str(), said(e, ru).c_str());
         return true;
     }
 }
@@ -74,10 +83,10 @@ bool TransferRecord::releasedPlan(link::PushPlan& plan) {
     try {
         plan = transfer::releasedPlan(db_, where_.machine, link::k528Map(), &where_.revision);
     } catch (const db::Error& e) {
-        std::fprintf(stderr, "k528 link: %s\n", e.what());
+        std::fprintf(stderr, "k528 link: %s\n", said(e, ru_).c_str());
         return false;
-    } catch (const std::runtime_error& e) {
-        std::fprintf(stderr, "k528 link: %s\n", e.what());
+    } catch (const transfer::PlanError& e) {
+        std::fprintf(stderr, "k528 link: %s\n", e.text(ru_).c_str());
         return false;
     }
     if (plan.programs.empty())
@@ -103,11 +112,11 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
                          where_.machine.c_str());
         if (!check.allowed)
             std::fprintf(stderr, ru_ ? "k528 link: %s\nничего не отправлено\n" : "k528 link: %s\nnothing was sent\n",
-                         check.message.c_str());
+                         check.message(ru_).c_str());
         return check.allowed;
     } catch (const db::Error& e) {
         std::fprintf(stderr, ru_ ? "k528 link: %s; ничего не отправлено\n" : "k528 link: %s; nothing was sent\n",
-                     e.what());
+                     said(e, ru_).c_str());
         return false;
     }
 }
@@ -121,7 +130,7 @@ void TransferRecord::record(const db::TransferEntry& e) {
     } catch (const db::Error& err) {
         std::fprintf(stderr,
                      ru_ ? "k528 link: передача не записана в журнал: %s\n" : "k528 link: the transfer was not recorded: %s\n",
-                     err.what());
+                     said(err, ru_).c_str());
     }
 }
 

@@ -39,6 +39,7 @@ void printHelp() {
 }
 
 int dispatch(int argc, char** argv) {
+    const bool ru = russianCommandLine();
     if (argc < 2) {
         printHelp();
         return ExitUsage;
@@ -46,22 +47,26 @@ int dispatch(int argc, char** argv) {
     const std::string first = argv[1];
     if (first == "--version" || first == "version") {
         if (argc > 2)
-            return usageError(first + " takes no arguments, not '" + argv[2] + "'");
+            return usageError(ru ? first + " не принимает аргументов, а здесь «" + argv[2] + "»"
+                                 : first + " takes no arguments, not '" + argv[2] + "'");
         printVersion();
         return ExitOk;
     }
     if (first == "--help" || first == "-h" || first == "help") {
         if (first != "help" && argc > 2)
-            return usageError(first + " takes no arguments, not '" + argv[2] + "'");
+            return usageError(ru ? first + " не принимает аргументов, а здесь «" + argv[2] + "»"
+                                 : first + " takes no arguments, not '" + argv[2] + "'");
         if (first == "help" && argc > 3)
-            return usageError(std::string("help takes one COMMAND, not '") + argv[3] + "'");
+            return usageError(ru ? std::string("help принимает одну КОМАНДУ, а здесь ещё «") + argv[3] + "»"
+                                 : std::string("help takes one COMMAND, not '") + argv[3] + "'");
         if (first == "help" && argc > 2) {
             for (const auto& c : commands())
                 if (c.name == argv[2]) {
                     printCommandHelp(c, stdout);
                     return ExitOk;
                 }
-            return usageError(std::string("unknown command '") + argv[2] + "'");
+            return usageError(ru ? std::string("неизвестная команда «") + argv[2] + "»"
+                                 : std::string("unknown command '") + argv[2] + "'");
         }
         printHelp();
         return ExitOk;
@@ -78,8 +83,8 @@ int dispatch(int argc, char** argv) {
         return c.run(args);
     }
     if (first.rfind("-", 0) == 0)
-        return usageError("unknown option " + first);
-    return usageError("unknown command '" + first + "'");
+        return usageError(ru ? "неизвестный параметр " + first : "unknown option " + first);
+    return usageError(ru ? "неизвестная команда «" + first + "»" : "unknown command '" + first + "'");
 }
 
 } // namespace
@@ -95,19 +100,23 @@ int main(int argc, char** argv) {
         std::setvbuf(stdout, buffer, _IOFBF, sizeof buffer);
     }
     int rc = ExitUsage;
+    readCommandLineLanguage(std::vector<std::string>(argv + 1, argv + argc));
+    const bool ru = russianCommandLine();
     try {
         rc = dispatch(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fflush(stdout);
-        std::fprintf(stderr, "k528: not enough memory to finish the command\n");
+        std::fprintf(stderr, ru ? "k528: не хватило памяти, чтобы выполнить команду\n"
+                                : "k528: not enough memory to finish the command\n");
         return ExitUsage;
     } catch (const std::exception& e) {
         std::fflush(stdout);
-        std::fprintf(stderr, "k528: internal error: %s\n", e.what());
+        std::fprintf(stderr, ru ? "k528: внутренняя ошибка: %s\n" : "k528: internal error: %s\n", e.what());
         return ExitUsage;
     } catch (...) {
         std::fflush(stdout);
-        std::fprintf(stderr, "k528: internal error: an unknown exception\n");
+        std::fprintf(stderr, ru ? "k528: внутренняя ошибка: неизвестное исключение\n"
+                                : "k528: internal error: an unknown exception\n");
         return ExitUsage;
     }
     return finishStandardOutput(rc);

@@ -72,8 +72,9 @@ void Poller::pollWorker(Worker& w, const std::function<void(const PollResult&)>&
             for (std::size_t i : w.indices) {
                 PollResult r;
                 r.index = i;
-                r.why = "cannot connect to " + w.settings.port.toStdString() + ": " +
-                        link::render(link::decodeSaid(error.toStdString()), false);
+                r.said = link::say("link.cannot-connect", {w.settings.port.toStdString(),
+                                                           link::decodeSaid(error.toStdString())});
+                r.why = link::render(r.said, false);
                 r.atMs = unixMsNow();
                 sink(r);
             }
@@ -87,6 +88,7 @@ void Poller::pollWorker(Worker& w, const std::function<void(const PollResult&)>&
         r.index = i;
         w.transport->setStation(lines_[i].address.address);
         if (link::LinkError e = link::readLive(*w.link, r.live)) {
+            r.said = e.said;
             r.why = e.text(false);
         } else {
             r.online = true;

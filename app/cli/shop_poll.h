@@ -33,7 +33,8 @@ struct PollResult {
     std::size_t index = 0; // of the line in the poller's list
     bool online = false;
     link::LiveState live;
-    std::string why; // offline: why
+    std::string why; // offline: why (English, as --json and MQTT say it)
+    link::Said said; // the same, said by core's link catalog (the desktop's tr())
     std::int64_t atMs = 0; // when the answer came (ms since the Unix epoch)
     double roundTripMs = 0;
 };

@@ -214,6 +214,188 @@ constexpr std::array kTexts = {
                 "Параметры перечислены в docs/profile-format.md; с --allow-unknown он сохраняется всё равно",
                 "'%1' is not a known simulation key; nothing was saved (did you mean %2?). The keys are "
                 "listed in docs/profile-format.md; --allow-unknown stores it anyway"},
+    // A database location (--db, K528_DB) that is not one.
+    util::CatalogText{"location.empty",
+                "место базы данных «%1»: пусто; укажите путь к файлу или URI postgresql://",
+                "database location \"%1\": empty; give a file path or a postgresql:// URI"},
+    util::CatalogText{"location.password",
+                "место базы данных «%1»: пароль в место базы данных не пишется (командную строку видит "
+                "любой пользователь этого ПК, и оболочки её сохраняют): запишите его в ~/.pgpass "
+                "(PGPASSFILE) или в файл служб (PGSERVICEFILE, postgresql://?service=ИМЯ) либо входите "
+                "без пароля",
+                "database location \"%1\": a password does not go into a database location (every user "
+                "of this PC can read a command line, and shells keep it): put it in ~/.pgpass "
+                "(PGPASSFILE) or a service file (PGSERVICEFILE, postgresql://?service=NAME), or log in "
+                "without one"},
+    util::CatalogText{"location.sqlite-path",
+                "место базы данных «%1»: после sqlite: нужен путь к файлу (sqlite:/srv/k528/shop.db)",
+                "database location \"%1\": sqlite: needs a file path (sqlite:/srv/k528/shop.db)"},
+    util::CatalogText{"location.unknown-kind",
+                "место базы данных «%1»: неизвестный вид базы данных «%2»; K528 Studio хранит базу данных "
+                "в SQLite (путь к файлу или sqlite:ПУТЬ) или в PostgreSQL (postgresql://…)",
+                "database location \"%1\": unknown kind of database \"%2\"; K528 Studio keeps its "
+                "database in SQLite (a file path or sqlite:PATH) or PostgreSQL (postgresql://…)"},
+    // Reaching a database, and what the system or the library said (%2: its
+    // own words, quoted in Russian).
+    util::CatalogText{"connect.failed",
+                "нет подключения к базе данных %1: «%2»",
+                "cannot connect to the database %1: %2"},
+    util::CatalogText{"connect.lost",
+                "связь с сервером потеряна и не восстанавливается",
+                "the connection to the server was lost and cannot be made again"},
+    util::CatalogText{"open.cannot",
+                "файл не открывается: «%1»",
+                "cannot open: %1"},
+    util::CatalogText{"open.unreadable",
+                "файл не читается: «%1»",
+                "cannot be read: %1"},
+    util::CatalogText{"open.not-regular.character-device",
+                "%1: это не обычный файл (символьное устройство); база данных — обычный файл: укажите другой путь --db",
+                "%1: is not a regular file (a character device); a database is a regular file — give another --db path"},
+    util::CatalogText{"open.not-regular.block-device",
+                "%1: это не обычный файл (блочное устройство); база данных — обычный файл: укажите другой путь --db",
+                "%1: is not a regular file (a block device); a database is a regular file — give another --db path"},
+    util::CatalogText{"open.not-regular.fifo",
+                "%1: это не обычный файл (именованный канал); база данных — обычный файл: укажите другой путь --db",
+                "%1: is not a regular file (a FIFO); a database is a regular file — give another --db path"},
+    util::CatalogText{"open.not-regular.socket",
+                "%1: это не обычный файл (сокет); база данных — обычный файл: укажите другой путь --db",
+                "%1: is not a regular file (a socket); a database is a regular file — give another --db path"},
+    util::CatalogText{"open.not-regular.other",
+                "%1: это не обычный файл (не файл); база данных — обычный файл: укажите другой путь --db",
+                "%1: is not a regular file (not a file); a database is a regular file — give another --db path"},
+    util::CatalogText{"open.no-handle",
+                "файл не читается: SQLite не открыла его",
+                "cannot be read: SQLite did not open the file"},
+    util::CatalogText{"open.busy",
+                "другая программа держала базу данных заблокированной дольше времени ожидания (SQLite: «%1»)",
+                "another program kept the database locked longer than the busy timeout (%1)"},
+    util::CatalogText{"open.not-database",
+                "файл не читается как база данных (SQLite: «%1»)",
+                "cannot be read as a database (%1)"},
+    util::CatalogText{"open.damaged",
+                "база данных повреждена (проверка целостности, SQLite: «%1»)",
+                "the database is damaged (integrity check: %1)"},
+    util::CatalogText{"open.damaged-keys",
+                "база данных повреждена (проверка целостности: %1 строк нарушают внешние ключи; первая — "
+                "%2, строка %3 -> %4)",
+                "the database is damaged (integrity check: %1 rows break foreign keys (first: %2 row %3 "
+                "-> %4))"},
+    util::CatalogText{"open.no-version",
+                "база данных K528 Studio без версии схемы",
+                "K528 Studio database without a schema version"},
+    util::CatalogText{"open.foreign-journal",
+                "это не база данных K528 Studio: база данных SQLite без application_id K528 Studio, с "
+                "незавершённой транзакцией другой программы (горячий журнал %1, начат на файле из %2 "
+                "страниц), откатывать её не нам: пусть сначала её откроет та программа",
+                "not a K528 Studio database: an SQLite database without K528 Studio's application_id, "
+                "with an unfinished transaction of another program (the hot journal %1, begun on a file "
+                "of %2 pages), which is not ours to roll back: let that program open it first"},
+    util::CatalogText{"open.foreign-journal.size",
+                "это не база данных K528 Studio: база данных SQLite без application_id K528 Studio, с "
+                "незавершённой транзакцией другой программы (горячий журнал %1, начат на файле "
+                "неизвестного размера), откатывать её не нам: пусть сначала её откроет та программа",
+                "not a K528 Studio database: an SQLite database without K528 Studio's application_id, "
+                "with an unfinished transaction of another program (the hot journal %1, begun on a file "
+                "of unknown size), which is not ours to roll back: let that program open it first"},
+    util::CatalogText{"open.foreign-writer",
+                "пока файл создавался, в него записала другая программа",
+                "another program wrote into the file while it was being created"},
+    util::CatalogText{"open.wal",
+                "не переключается в режим журнала WAL (режим «%1»): другой процесс держал базу данных "
+                "занятой дольше времени ожидания",
+                "cannot switch to WAL journal mode (mode \"%1\"): another process kept the database busy "
+                "longer than the busy timeout"},
+    // PostgreSQL's database that is not ours, or not yet.
+    util::CatalogText{"pg.no-schema",
+                "путь поиска не называет ни одной существующей схемы; создайте её или задайте search_path "
+                "(options=-csearch_path=…)",
+                "the search path names no schema that exists; create it or set search_path "
+                "(options=-csearch_path=…)"},
+    util::CatalogText{"pg.foreign-tables",
+                "это не база данных K528 Studio: в ней %1 таблиц или представлений другой программы (нет "
+                "k528_schema); ничего не изменено",
+                "not a K528 Studio database: it holds %1 tables or views of another program (no "
+                "k528_schema); nothing was changed"},
+    util::CatalogText{"pg.foreign-application",
+                "это не база данных K528 Studio (в k528_schema — «%1»); ничего не изменено",
+                "not a K528 Studio database (k528_schema says \"%1\"); nothing was changed"},
+    util::CatalogText{"pg.schema-empty",
+                "таблица k528_schema пуста",
+                "the table k528_schema is empty"},
+    util::CatalogText{"pg.no-database",
+                "нет базы данных K528 Studio в %1 (база данных пуста; создать её: k528 db init --db %1)",
+                "no K528 Studio database at %1 (the database is empty; create one with: k528 db init --db "
+                "%1)"},
+    util::CatalogText{"pg.not-empty",
+                "%1: база данных не пуста (версия схемы %2); копия записывается только в пустую",
+                "%1: not an empty database (schema version %2); a copy goes only into an empty one"},
+    util::CatalogText{"pg.old-server",
+                "PostgreSQL %1 слишком стар; K528 Studio нужна версия 11 или новее",
+                "PostgreSQL %1 is too old; K528 Studio needs version 11 or newer"},
+    util::CatalogText{"pg.encoding",
+                "кодировка базы данных — %1; K528 Studio хранит русские тексты, ей нужна UTF8 "
+                "(createdb --encoding=UTF8 --template=template0)",
+                "the database's encoding is %1; K528 Studio keeps Russian texts and needs UTF8 "
+                "(createdb --encoding=UTF8 --template=template0)"},
+    util::CatalogText{"busy.write.session",
+                "%1: другой сеанс пишет в базу данных и держит её заблокированной дольше времени "
+                "ожидания; ничего не записано, повторите",
+                "%1: another session is writing to the database and kept it locked longer than the "
+                "busy timeout; nothing was written, try again"},
+    util::CatalogText{"role.unknown",
+                "нет роли «%1»: роли — trainer, technologist, operator и viewer",
+                "no role \"%1\": the roles are trainer, technologist, operator and viewer"},
+    // The message history (db/message_log.h).
+    util::CatalogText{"messages.no-run",
+                "нет прогона сообщений %1; ничего не записано",
+                "no message run %1; nothing was written"},
+    util::CatalogText{"messages.no-run-id",
+                "у нового прогона нет номера",
+                "the new run has no id"},
+    util::CatalogText{"messages.busy",
+                "другой процесс держал базу данных заблокированной дольше времени ожидания; сообщения "
+                "не записаны",
+                "another process kept the database locked longer than the busy timeout; the messages "
+                "were not written"},
+    util::CatalogText{"messages.no-how",
+                "событие сообщения %1 прогона %2: квитировано без указания, как",
+                "message event %1 of run %2: acknowledged without saying how"},
+    util::CatalogText{"messages.not-raised",
+                "событие сообщения %1 прогона %2: такое сообщение не выдавалось",
+                "message event %1 of run %2: no such message was raised"},
+    util::CatalogText{"messages.bad-source",
+                "строка истории сообщений %1: неизвестный источник «%2»",
+                "message history row %1: unknown source \"%2\""},
+    util::CatalogText{"messages.none-written",
+                "; ни одно из %1 событий пакета не записано",
+                "; none of the batch's %1 events was written"},
+    // A push of a database machine's programs (transfer::checkReleased).
+    util::CatalogText{"push.unreleased",
+                "станок %1: передаются только выпущенные программы; не выпущены в этом виде:",
+                "machine %1: a push takes released programs only; not released as they are:"},
+    util::CatalogText{"push.not-in-database",
+                "L%1: нет в базе данных, ничего из неё не выпущено",
+                "L%1: not in the database, nothing of it released"},
+    util::CatalogText{"push.draft",
+                "L%1: черновик, ничего из неё не выпущено",
+                "L%1: draft, nothing of it released"},
+    util::CatalogText{"push.withdrawn",
+                "L%1: отозвана, ничего из неё не выпущено",
+                "L%1: withdrawn, nothing of it released"},
+    util::CatalogText{"push.not-released-version",
+                "L%1: не выпущенная версия (ревизия %2)",
+                "L%1: not the released version (revision %2)"},
+    util::CatalogText{"push.release-them",
+                "выпустите их (k528 db release %1 L<n>) или разрешите технологам передавать черновики: "
+                "k528 db set %1 push.unreleased=true",
+                "release them (k528 db release %1 L<n>), or let technologists push drafts: k528 db set %1 "
+                "push.unreleased=true"},
+    util::CatalogText{"push.release-them.technologist",
+                "выпустите их (k528 db release %1 L<n>) или передайте их как технолог (станок разрешает "
+                "черновики: push.unreleased)",
+                "release them (k528 db release %1 L<n>), or push as a technologist (the machine allows "
+                "drafts: push.unreleased)"},
     util::CatalogText{"list.or",
                 "%1 или %2",
                 "%1 or %2"},

@@ -72,10 +72,67 @@ Error::Error(ErrorKind kind, ErrorText text, std::string detail)
     : std::runtime_error(renderText(text, false)), kind_(kind), detail_(std::move(detail)),
       text_(std::move(text)) {}
 
+namespace {
+
+// By ErrorKind: what an error without a text of the catalog is, in Russian.
+constexpr const char* kKindsRu[] = {
+    "база данных недоступна, не читается или не записывается",
+    "это не база данных K528 Studio",
+    "база данных повреждена",
+    "базу данных записала более новая K528 Studio",
+    "другой процесс слишком долго держит базу данных",
+    "нет такого станка",
+    "станок с таким именем уже есть",
+    "нет такой ревизии",
+    "станок изменён после того, как его прочитали",
+    "значение или изменение отклонено",
+    "база данных доступна только для чтения",
+    "непредвиденная ошибка базы данных (пожалуйста, сообщите о ней)",
+    "сервер базы данных отказал этому пользователю",
+};
+
+// A role refusal's action (DeniedError::action) and the role it needs when
+// that is no role's name, in Russian.
+constexpr Text kDeniedWords[] = {
+    {"creating a machine", "создание станка"},
+    {"changing a machine", "изменение станка"},
+    {"deleting a machine", "удаление станка"},
+    {"releasing a program", "выпуск программы"},
+    {"withdrawing a program", "отзыв программы"},
+    {"recording a transfer", "запись передачи в журнал"},
+    {"recording messages", "запись сообщений"},
+    {"recording a training attempt", "запись учебной попытки"},
+    {"creating the database's tables", "создание таблиц базы данных"},
+    {"setting up the roles", "настройка ролей"},
+    {"granting a role", "выдача роли"},
+    {"setting or clearing the constants lock", "установка или снятие блокировки констант"},
+    {"recording the machines' time in each state", "запись времени станков в каждом состоянии"},
+    {"the owner of the database", "владелец базы данных"},
+    {"the owner of the database's tables with CREATEROLE", "владелец таблиц базы данных с правом CREATEROLE"},
+    {"the role's admin (its creator, or CREATEROLE)", "администратор роли (её создатель или CREATEROLE)"},
+};
+
+std::string deniedWord(const std::string& en, Lang lang) {
+    if (lang == Lang::Ru)
+        for (const Text& t : kDeniedWords)
+            if (en == t.en)
+                return t.ru;
+    return en;
+}
+
+} // namespace
+
 std::string Error::text(Lang lang) const {
-    if (text_.id.empty())
+    if (!text_.id.empty())
+        return renderText(text_, lang == Lang::Ru);
+    if (lang != Lang::Ru)
         return what();
-    return renderText(text_, lang == Lang::Ru);
+    const auto k = static_cast<std::size_t>(kind_);
+    std::string s = text_.at.empty() ? std::string() : text_.at + ": ";
+    s += k < std::size(kKindsRu) ? kKindsRu[k] : "ошибка базы данных";
+    if (!detail_.empty())
+        s += " («" + detail_ + "»)";
+    return s + dbTexts().render(text_.tail, text_.tailArgs, true);
 }
 
 ReadOnlyError::ReadOnlyError(fs::path path, ReadOnlyReason reason, ReadOnlyRefusal refusal)
@@ -93,6 +150,16 @@ DeniedError::DeniedError(std::string action, std::string role, std::string user,
                                    (userRoles.empty() ? std::string("no K528 Studio role")
                                                       : userRoles) +
                                    "; the server said: " + serverMessage + "); nothing was written"),
-      action_(std::move(action)), role_(std::move(role)) {}
+      action_(std::move(action)), role_(std::move(role)), user_(std::move(user)),
+      userRoles_(std::move(userRoles)) {}
+
+std::string DeniedError::text(Lang lang) const {
+    if (lang != Lang::Ru)
+        return what();
+    return "отказано: для действия «" + deniedWord(action_, lang) + "» нужна роль " +
+           deniedWord(role_, lang) + " (у пользователя базы данных " + user_ + ": " +
+           (userRoles_.empty() ? std::string("ни одной роли K528 Studio") : userRoles_) +
+           "); ничего не записано";
+}
 
 } // namespace k528::db

@@ -53,9 +53,19 @@ std::string renderText(const ErrorText& t, bool russian);
 
 class Error : public std::runtime_error {
 public:
-    // An error whose message has no id yet: what() in English, in every language.
-    Error(ErrorKind kind, const std::string& message, std::string detail = {})
-        : std::runtime_error(message), kind_(kind), detail_(std::move(detail)) {}
+    // An error whose message has no id: what() in English; in Russian, text()
+    // says what kind of error it is, where (`at`: a path or a location, ""
+    // if none) and the library's own words (detail) quoted.
+    Error(ErrorKind kind, const std::string& message, std::string detail = {}, std::string at = {})
+        : std::runtime_error(message), kind_(kind), detail_(std::move(detail)) {
+        text_.at = std::move(at);
+    }
+    // The same with a text said after it in every language (`after`: its
+    // at and tail; its id empty).
+    Error(ErrorKind kind, const std::string& message, std::string detail, ErrorText after)
+        : std::runtime_error(message), kind_(kind), detail_(std::move(detail)), text_(std::move(after)) {
+        text_.id.clear();
+    }
     // An error said by the catalog: what() is its English.
     Error(ErrorKind kind, ErrorText text, std::string detail = {});
     ErrorKind kind() const { return kind_; }
@@ -63,8 +73,11 @@ public:
     const std::string& textId() const { return text_.id; }
     const std::vector<std::string>& textArgs() const { return text_.args; }
     const ErrorText& catalogText() const { return text_; }
-    // The message in `lang`: the catalog's text, else what().
+    // The message in `lang`: the catalog's text; without an id what() in
+    // English, in Russian the kind of error, where and the library's words.
     virtual std::string text(Lang lang) const;
+    // Where it happened ("" if not said): the `at` of its text.
+    const std::string& at() const { return text_.at; }
     // The library's or the system's own words inside the message, as it
     // said them (SQLite's errmsg, libpq's, strerror's), "" if none: the
     // desktop quotes them in a sentence of its language.
@@ -125,9 +138,13 @@ public:
                 const std::string& serverMessage);
     const std::string& action() const { return action_; }
     const std::string& role() const { return role_; }
+    // The message in `lang` (what() is the English one, with the server's
+    // words; the Russian one leaves them out, as the desktop does: they may
+    // be in any language and say nothing the user can act on).
+    std::string text(Lang lang) const override;
 
 private:
-    std::string action_, role_;
+    std::string action_, role_, user_, userRoles_;
 };
 
 // A write rejected by validation: values outside their definitions, or

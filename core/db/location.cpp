@@ -21,14 +21,10 @@ bool startsWith(std::string_view s, std::string_view prefix) {
     return s.substr(0, prefix.size()) == prefix;
 }
 
-[[noreturn]] void invalid(std::string_view text, const std::string& why) {
-    throw Error(ErrorKind::Invalid, "database location \"" + std::string(text) + "\": " + why);
+[[noreturn]] void invalid(std::string_view text, std::string id, std::vector<std::string> more = {}) {
+    more.insert(more.begin(), std::string(text));
+    throw Error(ErrorKind::Invalid, ErrorText{std::move(id), std::move(more)});
 }
-
-constexpr std::string_view kNoPassword =
-    "a password does not go into a database location (every user of this PC can read a "
-    "command line, and shells keep it): put it in ~/.pgpass (PGPASSFILE) or a service file "
-    "(PGSERVICEFILE, postgresql://?service=NAME), or log in without one";
 
 // A libpq URI: postgresql://[user[:password]@][host][:port][/dbname][?param=value&…].
 void checkUri(std::string_view text) {
@@ -37,14 +33,14 @@ void checkUri(std::string_view text) {
     const std::string_view authority = rest.substr(0, rest.find_first_of("/?"));
     if (const auto at = authority.rfind('@'); at != std::string_view::npos &&
                                               authority.substr(0, at).find(':') != std::string_view::npos)
-        invalid(text, std::string(kNoPassword));
+        invalid(text, "location.password");
     if (query != std::string_view::npos) {
         std::string_view params = rest.substr(query + 1);
         while (!params.empty()) {
             const auto amp = params.find('&');
             const std::string_view p = params.substr(0, amp);
             if (startsWith(p, "password="))
-                invalid(text, std::string(kNoPassword));
+                invalid(text, "location.password");
             params = amp == std::string_view::npos ? std::string_view() : params.substr(amp + 1);
         }
     }
@@ -54,7 +50,7 @@ void checkUri(std::string_view text) {
 
 Location Location::parse(std::string_view text) {
     if (text.empty())
-        invalid(text, "empty; give a file path or a postgresql:// URI");
+        invalid(text, "location.empty");
     Location l;
     if (startsWith(text, "postgresql://") || startsWith(text, "postgres://")) {
         checkUri(text);
@@ -67,15 +63,13 @@ Location Location::parse(std::string_view text) {
         if (startsWith(p, "//"))
             p = p.substr(2); // sqlite:///abs/path
         if (p.empty())
-            invalid(text, "sqlite: needs a file path (sqlite:/srv/k528/shop.db)");
+            invalid(text, "location.sqlite-path");
         l.file_ = fs::path(std::string(p));
         return l;
     }
     if (const auto scheme = text.find("://"); scheme != std::string_view::npos &&
                                               text.find('/') > scheme)
-        invalid(text, "unknown kind of database \"" + std::string(text.substr(0, scheme)) +
-                          "\"; K528 Studio keeps its database in SQLite (a file path or "
-                          "sqlite:PATH) or PostgreSQL (postgresql://…)");
+        invalid(text, "location.unknown-kind", {std::string(text.substr(0, scheme))});
     l.file_ = fs::path(std::string(text));
     return l;
 }

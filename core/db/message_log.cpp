@@ -1,6 +1,7 @@
 #include "db/message_log.h"
 
 #include "db/database_impl.h"
+#include "db/db_texts.h"
 #include "db/sql.h"
 
 #include <algorithm>
@@ -51,6 +52,12 @@ std::string formatDayMs(std::int64_t unixMs) {
 
 namespace {
 
+// `t` said of the database's file ("PATH: …").
+ErrorText said(const Database& db, ErrorText t) {
+    t.at = db.path().string();
+    return t;
+}
+
 // The code as SQL computes it, for searching (in the SQL both backends speak).
 constexpr std::string_view kCodeSql =
     "(CASE source WHEN 'plc-alarm' THEN 'A' WHEN 'plc-system' THEN 'S' WHEN 'plc-work' THEN 'W' "
@@ -78,8 +85,7 @@ MessageRecord readRecord(const sql::Query& q) {
     const std::string source = q.text(6);
     const auto s = messageSourceFromName(source);
     if (!s)
-        throw Error(ErrorKind::Corrupt, "message history row " + std::to_string(m.id) +
-                                            ": unknown source \"" + source + "\"");
+        throw Error(ErrorKind::Corrupt, ErrorText{"messages.bad-source", {std::to_string(m.id), source}});
     m.source = *s;
     m.number = q.i32(7);
     m.text = q.text(8);
@@ -205,7 +211,7 @@ std::int64_t MessageLog::beginRun(std::string_view machine, std::int64_t dayMs,
             .bind(3, dayMs)
             .bind(4, authorOf(s, author));
         if (!q.step())
-            throw Error(ErrorKind::Sql, d_->db.path().string() + ": the new run has no id");
+            throw Error(ErrorKind::Sql, said(d_->db, ErrorText{"messages.no-run-id"}));
         const std::int64_t id = q.i64(0);
         q.reset();
         return id;
@@ -220,8 +226,7 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
     auto& run = d_->st("SELECT machine FROM message_runs WHERE id = ?1");
     run.bind(1, runId);
     if (!run.step())
-        throw Error(ErrorKind::Invalid, d_->db.path().string() + ": no message run " +
-                                            std::to_string(runId) + "; nothing was written");
+        throw Error(ErrorKind::Invalid, said(d_->db, ErrorText{"messages.no-run", {std::to_string(runId)}}));
     const std::string machine = run.text(0);
     run.reset();
     asRole(s, "recording messages", kOperator, [&] {
@@ -230,14 +235,11 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
         } catch (const Error& e) {
             if (e.kind() != ErrorKind::Busy)
                 throw;
-            throw Error(ErrorKind::Busy, d_->db.path().string() +
-                                             ": another process kept the database locked longer "
-                                             "than the busy timeout; the messages were not written");
+            throw Error(ErrorKind::Busy, said(d_->db, ErrorText{"messages.busy"}));
         }
         try {
             for (const MessageEvent& e : events) {
-                const std::string which = "message event " + std::to_string(e.seq) + " of run " +
-                                          std::to_string(runId);
+                const std::vector<std::string> which = {std::to_string(e.seq), std::to_string(runId)};
                 if (e.kind == MessageEvent::Kind::Raised) {
                     const MessageRecord& m = e.message;
                     auto& q = d_->st("INSERT INTO message_history (run_id, seq, machine, machine_ms, "
@@ -266,7 +268,7 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
                 q.bind(1, runId).bind(2, e.seq).bind(3, e.machineMs);
                 if (!cleared) {
                     if (e.how.empty())
-                        throw Error(ErrorKind::Invalid, which + ": acknowledged without saying how");
+                        throw Error(ErrorKind::Invalid, ErrorText{"messages.no-how", which});
                     q.bind(4, e.dayMs).bind(5, e.how);
                 }
                 q.step();
@@ -278,7 +280,7 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
                     const bool exists = known.step();
                     known.reset();
                     if (!exists)
-                        throw Error(ErrorKind::Invalid, which + ": no such message was raised");
+                        throw Error(ErrorKind::Invalid, ErrorText{"messages.not-raised", which});
                 }
             }
             s.commit();
@@ -286,10 +288,19 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
             s.rollback();
             if (e.kind() == ErrorKind::Denied)
                 throw;
-            throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
-                                      "; none of the batch's " + std::to_string(events.size()) +
-                                      " events was written",
-                        e.detail());
+            // The error as it was said, of this database, and that the
+            // batch was not written.
+            ErrorText text = e.catalogText();
+            // Said of this database's file, unless the text names it.
+            if (text.at.empty() && (e.textId().empty() || e.textId().rfind("messages.", 0) == 0))
+                text.at = d_->db.path().string();
+            text.tail = "messages.none-written";
+            text.tailArgs = {std::to_string(events.size())};
+            if (e.textId().empty())
+                throw Error(e.kind(), d_->db.path().string() + ": " + e.what() +
+                                          dbText(text.tail, text.tailArgs, false),
+                            e.detail(), std::move(text));
+            throw Error(e.kind(), std::move(text), e.detail());
         }
     });
 }

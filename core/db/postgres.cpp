@@ -102,7 +102,7 @@ std::string postgresParameters(std::string_view text, int& count) {
 
 PgConnection::PgConnection(const std::string& uri, std::string where) : where_(std::move(where)) {
     if (const char* why = libpq::loadError())
-        throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why, why);
+        throw Error(ErrorKind::Io, ErrorText{"connect.failed", {where_, why}}, why);
     const char* keys[] = {"dbname", "application_name", "client_encoding", nullptr};
     const char* values[] = {uri.c_str(), "K528 Studio", "UTF8", nullptr};
     conn_ = PQconnectdbParams(keys, values, 1);
@@ -110,7 +110,7 @@ PgConnection::PgConnection(const std::string& uri, std::string where) : where_(s
         const std::string why = conn_ ? trimmed(PQerrorMessage(conn_)) : "out of memory";
         PQfinish(conn_);
         conn_ = nullptr;
-        throw Error(ErrorKind::Io, "cannot connect to the database " + where_ + ": " + why, why);
+        throw Error(ErrorKind::Io, ErrorText{"connect.failed", {where_, why}}, why);
     }
     PQsetNoticeReceiver(conn_, quiet, nullptr);
     keepFreedMemory();

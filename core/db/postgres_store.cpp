@@ -19,6 +19,12 @@ struct Found {
     std::int64_t version = 0;
 };
 
+// `t` said of `where` ("WHERE: …").
+ErrorText at(const std::string& where, ErrorText t) {
+    t.at = where;
+    return t;
+}
+
 // What is at the location: nothing (empty), ours (its version), or refused.
 Found inspect(sql::Connection& c, const std::string& where, int latest) {
     Found f;
@@ -31,32 +37,24 @@ Found inspect(sql::Connection& c, const std::string& where, int latest) {
     const bool noSchema = q.text(2) == "t";
     q.reset();
     if (noSchema)
-        throw Error(ErrorKind::Io, where + ": the search path names no schema that exists; "
-                                           "create it or set search_path (options=-csearch_path=…)");
+        throw Error(ErrorKind::Io, at(where, ErrorText{"pg.no-schema"}));
     if (!marked) {
         if (objects != 0)
-            throw Error(ErrorKind::Foreign,
-                        where + ": not a K528 Studio database: it holds " +
-                            std::to_string(objects) +
-                            " tables or views of another program (no k528_schema); nothing was "
-                            "changed");
+            throw Error(ErrorKind::Foreign, at(where, ErrorText{"pg.foreign-tables", {std::to_string(objects)}}));
         f.empty = true;
         return f;
     }
     auto& m = c("SELECT application, version FROM k528_schema");
     if (!m.step())
-        throw Error(ErrorKind::Corrupt, where + ": the table k528_schema is empty");
+        throw Error(ErrorKind::Corrupt, at(where, ErrorText{"pg.schema-empty"}));
     const std::string app = m.text(0);
     f.version = m.i64(1);
     m.reset();
     if (app != kApplication)
-        throw Error(ErrorKind::Foreign, where + ": not a K528 Studio database (k528_schema says \"" +
-                                            app + "\"); nothing was changed");
+        throw Error(ErrorKind::Foreign, at(where, ErrorText{"pg.foreign-application", {app}}));
     if (f.version > latest)
         throw Error(ErrorKind::TooNew,
-                    where + ": the database has schema version " + std::to_string(f.version) +
-                        ", written by a newer K528 Studio; this program knows versions up to " +
-                        std::to_string(latest) + ". Use the newer program");
+                    at(where, ErrorText{"open.too-new", {std::to_string(f.version), std::to_string(latest)}}));
     return f;
 }
 
@@ -84,25 +82,18 @@ std::unique_ptr<PostgresStore> PostgresStore::open(const Location& where,
         s->user_ = v.text(2);
         v.reset();
         if (version < 110000)
-            throw Error(ErrorKind::Io, where.text() + ": PostgreSQL " + std::to_string(version / 10000) +
-                                           " is too old; K528 Studio needs version 11 or newer");
+            throw Error(ErrorKind::Io, at(where.text(), ErrorText{"pg.old-server", {std::to_string(version / 10000)}}));
         if (encoding != "UTF8" && encoding != "SQL_ASCII")
-            throw Error(ErrorKind::Io, where.text() + ": the database's encoding is " + encoding +
-                                           "; K528 Studio keeps Russian texts and needs UTF8 "
-                                           "(createdb --encoding=UTF8 --template=template0)");
+            throw Error(ErrorKind::Io, at(where.text(), ErrorText{"pg.encoding", {encoding}}));
     }
     c.exec("SET lock_timeout = " + std::to_string(std::max(1, options.busyTimeoutMs)));
     const std::string author = options.author.empty() ? s->user_ : options.author;
 
     Found found = inspect(c, where.text(), latest);
     if (options.requireEmpty && !found.empty)
-        throw Error(ErrorKind::Invalid, where.text() + ": not an empty database (schema version " +
-                                            std::to_string(found.version) +
-                                            "); a copy goes only into an empty one");
+        throw Error(ErrorKind::Invalid, ErrorText{"pg.not-empty", {where.text(), std::to_string(found.version)}});
     if (found.empty && (!options.create || options.readOnly))
-        throw Error(ErrorKind::Io, "no K528 Studio database at " + where.text() +
-                                       " (the database is empty; create one with: k528 db init "
-                                       "--db " + where.text() + ")");
+        throw Error(ErrorKind::Io, ErrorText{"pg.no-database", {where.text()}});
     s->report_.created = found.empty;
     s->report_.fromVersion = static_cast<int>(found.version);
     if (options.readOnly) {
@@ -186,8 +177,7 @@ void PostgresStore::reconnect() {
         conn_->exec("SET lock_timeout = " + std::to_string(std::max(1, busyTimeoutMs_)));
         return;
     }
-    throw Error(ErrorKind::Io, path_.string() + ": the connection to the server was lost and "
-                                                "cannot be made again");
+    throw Error(ErrorKind::Io, at(path_.string(), ErrorText{"connect.lost"}));
 }
 
 bool PostgresStore::beginRead() {
@@ -215,10 +205,7 @@ void PostgresStore::beginWrite() {
         rollback();
         if (e.kind() != ErrorKind::Busy)
             throw;
-        throw Error(ErrorKind::Busy, path_.string() +
-                                         ": another session is writing to the database and "
-                                         "kept it locked longer than the busy timeout; "
-                                         "nothing was written, try again");
+        throw Error(ErrorKind::Busy, ErrorText{"busy.write.session", {path_.string()}});
     }
 }
 
@@ -403,8 +390,7 @@ void PostgresStore::grantRole(const std::string& user, const std::string& role) 
     for (const RoleDef& r : kRoles)
         known = known || r.name == name;
     if (!known)
-        throw Error(ErrorKind::Invalid, "no role \"" + role +
-                                            "\": the roles are trainer, technologist, operator and viewer");
+        throw Error(ErrorKind::Invalid, ErrorText{"role.unknown", {role}});
     try {
         conn_->exec("GRANT " + name + " TO " + identifier(user));
     } catch (const Error& e) {

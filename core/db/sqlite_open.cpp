@@ -5,6 +5,8 @@
 // freshness. docs/database.md: Opening, Connections and locks, Read-only files.
 #include "db/sqlite_store.h"
 
+#include "db/db_texts.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -13,6 +15,7 @@
 #include <fcntl.h>
 #include <sqlite3.h>
 #include <sys/stat.h>
+#include <optional>
 #include <thread>
 #include <unistd.h>
 
@@ -55,10 +58,15 @@ struct Refusal {
     ErrorText text = {};     // what `what` says, when the catalog says it
 };
 
-// A refusal the catalog says (`what` its English).
-Refusal refusal(ErrorKind kind, ErrorText text) {
+// A refusal the catalog says (`what` its English); `detail`: SQLite's words.
+Refusal refusal(ErrorKind kind, ErrorText text, std::string detail = {}) {
     std::string what = renderText(text, false);
-    return Refusal{kind, std::move(what), false, false, {}, std::move(text)};
+    return Refusal{kind, std::move(what), false, false, std::move(detail), std::move(text)};
+}
+
+// SQLite's own words of an error (its detail), else its message.
+std::string saidBy(const Error& e) {
+    return e.detail().empty() ? std::string(e.what()) : e.detail();
 }
 
 // Whether something is at `path`, from stat() alone: the file is never opened
@@ -68,20 +76,20 @@ bool databaseFileExists(const fs::path& path) {
     const auto st = fs::status(path, ec);
     if (ec || !fs::exists(st)) {
         if (ec && ec != std::errc::no_such_file_or_directory)
-            throw Error(ErrorKind::Io, path.string() + ": " + ec.message(), ec.message());
+            throw Error(ErrorKind::Io, path.string() + ": " + ec.message(), ec.message(), path.string());
         return false;
     }
     if (fs::is_directory(st))
         throw Error(ErrorKind::Io, ErrorText{"open.directory", {path.string()}});
     if (!fs::is_regular_file(st))
         throw Error(ErrorKind::Io,
-                    path.string() + ": is not a regular file (" +
-                        (fs::is_character_file(st) ? "a character device"
-                         : fs::is_block_file(st)   ? "a block device"
-                         : fs::is_fifo(st)         ? "a FIFO"
-                         : fs::is_socket(st)       ? "a socket"
-                                                   : "not a file") +
-                        "); a database is a regular file — give another --db path");
+                    ErrorText{std::string("open.not-regular.") +
+                                  (fs::is_character_file(st) ? "character-device"
+                                   : fs::is_block_file(st)   ? "block-device"
+                                   : fs::is_fifo(st)         ? "fifo"
+                                   : fs::is_socket(st)       ? "socket"
+                                                             : "other"),
+                              {path.string()}});
     return true;
 }
 
@@ -98,10 +106,10 @@ FileHeader readHeader(sqlite3* db, int latest) {
     sqlite3_file* f = nullptr;
     if (sqlite3_file_control(db, "main", SQLITE_FCNTL_FILE_POINTER, &f) != SQLITE_OK || !f ||
         !f->pMethods)
-        throw Refusal{ErrorKind::Io, "cannot be read: SQLite did not open the file"};
+        throw refusal(ErrorKind::Io, ErrorText{"open.no-handle"});
     sqlite3_int64 size = 0;
     if (const int rc = f->pMethods->xFileSize(f, &size); rc != SQLITE_OK)
-        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc), false, false, sqlite3_errstr(rc)};
+        throw refusal(ErrorKind::Io, ErrorText{"open.unreadable", {sqlite3_errstr(rc)}}, sqlite3_errstr(rc));
     FileHeader h;
     if (size == 0) {
         h.empty = true;
@@ -110,7 +118,7 @@ FileHeader readHeader(sqlite3* db, int latest) {
     unsigned char buf[100] = {};
     const int got = static_cast<int>(std::min<sqlite3_int64>(size, sizeof buf));
     if (const int rc = f->pMethods->xRead(f, buf, got, 0); rc != SQLITE_OK)
-        throw Refusal{ErrorKind::Io, std::string("cannot be read: ") + sqlite3_errstr(rc), false, false, sqlite3_errstr(rc)};
+        throw refusal(ErrorKind::Io, ErrorText{"open.unreadable", {sqlite3_errstr(rc)}}, sqlite3_errstr(rc));
     static constexpr char kMagic[] = "SQLite format 3";
     if (got < 100 || std::memcmp(buf, kMagic, sizeof kMagic) != 0)
         throw refusal(ErrorKind::Foreign, got < 100 ? ErrorText{"open.foreign-short", {std::to_string(got)}}
@@ -199,15 +207,20 @@ Checked inspect(sqlite3* db, int latest) {
         c.objects = what.i64(2);
     } catch (const Error& e) {
         const int code = sqlite3_extended_errcode(db);
-        if (code == SQLITE_READONLY_ROLLBACK)
-            throw Refusal{ErrorKind::Io, e.what(), true, false, e.detail()};
+        if (code == SQLITE_READONLY_ROLLBACK) {
+            Refusal r = refusal(ErrorKind::Io, ErrorText{"open.unreadable", {saidBy(e)}}, e.detail());
+            r.hotJournal = true;
+            throw r;
+        }
         if (code == SQLITE_READONLY_DIRECTORY || code == SQLITE_READONLY_CANTINIT ||
-            code == SQLITE_READONLY_CANTLOCK || (code & 0xff) == SQLITE_CANTOPEN)
-            throw Refusal{ErrorKind::ReadOnly, e.what(), false, true, e.detail()};
+            code == SQLITE_READONLY_CANTLOCK || (code & 0xff) == SQLITE_CANTOPEN) {
+            Refusal r = refusal(ErrorKind::ReadOnly, ErrorText{"open.unreadable", {saidBy(e)}}, e.detail());
+            r.noIndex = true;
+            throw r;
+        }
         if (e.kind() == ErrorKind::Busy)
-            throw Refusal{ErrorKind::Busy, e.what(), false, false, e.detail()};
-        throw Refusal{ErrorKind::Corrupt,
-                      std::string("cannot be read as a database (") + e.what() + ")", false, false, e.detail()};
+            throw refusal(ErrorKind::Busy, ErrorText{"open.busy", {saidBy(e)}}, e.detail());
+        throw refusal(ErrorKind::Corrupt, ErrorText{"open.not-database", {saidBy(e)}}, e.detail());
     }
     if (c.appId == 0 && c.version == 0 && c.objects == 0)
         return c; // empty: ours to fill
@@ -219,8 +232,9 @@ Checked inspect(sqlite3* db, int latest) {
         throw refusal(ErrorKind::TooNew,
                       ErrorText{"open.too-new", {std::to_string(c.version), std::to_string(latest)}});
     if (c.version < 1)
-        throw Refusal{ErrorKind::Corrupt, "K528 Studio database without a schema version"};
-    std::string problems;
+        throw refusal(ErrorKind::Corrupt, ErrorText{"open.no-version"});
+    std::string problems; // SQLite's words
+    std::optional<ErrorText> keys; // rows that break foreign keys
     try {
         // Every table with its indexes, except the message history (schema
         // 2): a log that grows without bound would make every open as slow
@@ -241,24 +255,28 @@ Checked inspect(sqlite3* db, int latest) {
                     problems += (problems.empty() ? "" : "; ") + line;
         }
         int fkRows = 0;
-        std::string fkFirst;
+        std::string fkTable, fkParent;
+        std::int64_t fkRow = 0;
         for (const std::string& table : tables) {
             sql::Stmt fk(db, "PRAGMA foreign_key_check(\"" + table + "\")");
             while (fk.step())
-                if (fkRows++ == 0)
-                    fkFirst = fk.text(0) + " row " + std::to_string(fk.i64(1)) + " -> " + fk.text(2);
+                if (fkRows++ == 0) {
+                    fkTable = fk.text(0);
+                    fkRow = fk.i64(1);
+                    fkParent = fk.text(2);
+                }
         }
         if (fkRows)
-            problems += (problems.empty() ? "" : "; ") + std::to_string(fkRows) +
-                        " rows break foreign keys (first: " + fkFirst + ")";
+            keys = ErrorText{"open.damaged-keys", {std::to_string(fkRows), fkTable, std::to_string(fkRow), fkParent}};
     } catch (const Error& e) {
         if (e.kind() == ErrorKind::Busy)
-            throw Refusal{ErrorKind::Busy, e.what()};
-        problems = e.what();
+            throw refusal(ErrorKind::Busy, ErrorText{"open.busy", {saidBy(e)}}, e.detail());
+        problems = saidBy(e);
     }
     if (!problems.empty())
-        throw Refusal{ErrorKind::Corrupt,
-                      "the database is damaged (integrity check: " + problems + ")"};
+        throw refusal(ErrorKind::Corrupt, ErrorText{"open.damaged", {problems}}, problems);
+    if (keys)
+        throw refusal(ErrorKind::Corrupt, *keys);
     return c;
 }
 
@@ -382,14 +400,17 @@ void SqliteStore::rollback() noexcept {
 
 sqlite3* SqliteStore::connect(const std::string& target, int flags, int busyTimeoutMs,
                                  bool noCheckpoint,
-                                 const std::function<std::string()>& untouched) const {
+                                 const std::function<void(ErrorText&)>& untouched) const {
     sqlite3* c = nullptr;
     const int rc = sqlite3_open_v2(target.c_str(), &c,
                                    flags | SQLITE_OPEN_NOMUTEX | SQLITE_OPEN_EXRESCODE, nullptr);
     if (rc != SQLITE_OK) {
         const std::string msg = c ? sqlite3_errmsg(c) : sqlite3_errstr(rc);
         sqlite3_close_v2(c);
-        throw Error(ErrorKind::Io, "cannot open " + path_.string() + ": " + msg + untouched(), msg);
+        ErrorText text{"open.cannot", {msg}};
+        text.at = path_.string();
+        untouched(text);
+        throw Error(ErrorKind::Io, std::move(text), msg);
     }
     sqlite3_extended_result_codes(c, 1);
     sqlite3_busy_timeout(c, busyTimeoutMs);
@@ -399,7 +420,7 @@ sqlite3* SqliteStore::connect(const std::string& target, int flags, int busyTime
 }
 
 void SqliteStore::connectSnapshot(int busyTimeoutMs,
-                                     const std::function<std::string()>& untouched) {
+                                     const std::function<void(ErrorText&)>& untouched) {
     // Without a -wal every commit is in the file; immutable=1 reads it with
     // no -shm index and no lock (a reader cannot create them here, and must
     // not leave files of its own beside the file for the writers). A writer
@@ -428,24 +449,20 @@ Checked SqliteStore::connectAndInspect(const OpenOptions& options, int latest) {
     // closed without a checkpoint (a -wal stays as it was, not copied into
     // the refused file) and nothing else was written.
     bool recovered = false;
-    const std::function<std::string()> untouched = [&] {
+    const std::function<void(ErrorText&)> untouched = [&](ErrorText& text) {
         if (!existed)
-            return std::string();
-        return recovered ? std::string("; only the unfinished transaction in ") + journal.string() +
-                               " was rolled back (SQLite's crash recovery of a K528 Studio "
-                               "database), nothing else was changed"
-                         : std::string("; the file was left untouched");
+            return;
+        text.tail = recovered ? "open.recovered" : "open.untouched";
+        if (recovered)
+            text.tailArgs = {journal.string()};
     };
     const auto refused = [&](const Refusal& r) {
-        if (r.text.id.empty())
-            return Error(r.kind, path_.string() + ": " + r.what + untouched(), r.detail);
         ErrorText text = r.text;
         text.at = path_.string();
-        if (existed) {
-            text.tail = recovered ? "open.recovered" : "open.untouched";
-            if (recovered)
-                text.tailArgs = {journal.string()};
-        }
+        untouched(text);
+        if (text.id.empty()) // said in Russian by its kind, the path and SQLite's words
+            return Error(r.kind, path_.string() + ": " + r.what + dbText(text.tail, text.tailArgs, false), r.detail,
+                         std::move(text));
         return Error(r.kind, std::move(text), r.detail);
     };
     // One connection: read-write when the file may be written (SQLite falls
@@ -491,15 +508,10 @@ Checked SqliteStore::connectAndInspect(const OpenOptions& options, int latest) {
             // committed is lost (an interrupted `k528 db init`).
             if (header.applicationId != static_cast<std::uint32_t>(kApplicationId) &&
                 !newFileJournal)
-                throw refused(Refusal{
-                    ErrorKind::Foreign,
-                    "not a K528 Studio database: an SQLite database without K528 Studio's "
-                    "application_id, with an unfinished transaction of another program (the "
-                    "hot journal " +
-                        journal.string() + ", begun on a file of " +
-                        (startPages >= 0 ? std::to_string(startPages) + " pages"
-                                         : std::string("unknown size")) +
-                        "), which is not ours to roll back: let that program open it first"});
+                throw refused(refusal(ErrorKind::Foreign,
+                                      startPages >= 0 ? ErrorText{"open.foreign-journal",
+                                                                  {journal.string(), std::to_string(startPages)}}
+                                                      : ErrorText{"open.foreign-journal.size", {journal.string()}}));
             if (readOnly_ != ReadOnlyReason::None)
                 throw ReadOnlyError(path_, readOnly_, ReadOnlyRefusal::Recover);
             recovered = true;
@@ -543,7 +555,7 @@ void SqliteStore::applyConnectionSettings() {
         sql::exec(db_, "PRAGMA synchronous = FULL");
         sql::exec(db_, "PRAGMA foreign_keys = ON");
     } catch (const Error& e) {
-        throw Error(e.kind(), path_.string() + ": " + e.what(), e.detail());
+        throw Error(e.kind(), path_.string() + ": " + e.what(), e.detail(), path_.string());
     }
 }
 
@@ -570,11 +582,11 @@ void SqliteStore::switchToWal(int busyTimeoutMs) {
             if (e.kind() != ErrorKind::Busy)
                 throw;
         }
-        if (std::chrono::steady_clock::now() > deadline)
-            throw Error(ErrorKind::Busy,
-                        path_.string() + ": cannot switch to WAL journal mode (mode \"" + mode +
-                            "\"): another process kept the database busy longer than the "
-                            "busy timeout");
+        if (std::chrono::steady_clock::now() > deadline) {
+            ErrorText text{"open.wal", {mode}};
+            text.at = path_.string();
+            throw Error(ErrorKind::Busy, std::move(text));
+        }
         std::this_thread::sleep_for(std::chrono::milliseconds(attempt < 10 ? 2 : 20));
     }
 }
@@ -585,9 +597,11 @@ void SqliteStore::createOrMigrate(const OpenOptions& options, int /*latest*/,
     // Another process may have created or migrated it meanwhile.
     const std::int64_t found = sql::queryInt(db_, "PRAGMA user_version");
     const std::int64_t nowObjects = sql::queryInt(db_, "SELECT count(*) FROM sqlite_schema");
-    if (found == 0 && nowObjects != 0)
-        throw Error(ErrorKind::Foreign, path_.string() + ": another program wrote into the "
-                                                        "file while it was being created");
+    if (found == 0 && nowObjects != 0) {
+        ErrorText text{"open.foreign-writer"};
+        text.at = path_.string();
+        throw Error(ErrorKind::Foreign, std::move(text));
+    }
     upgrade(options.migrations, found, author, fill);
     tx.commit();
 }

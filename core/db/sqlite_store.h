@@ -44,8 +44,8 @@ private:
     // The steps of open() (sqlite_open.cpp).
     Checked connectAndInspect(const OpenOptions& options, int latest);
     sqlite3* connect(const std::string& target, int flags, int busyTimeoutMs, bool noCheckpoint,
-                     const std::function<std::string()>& untouched) const;
-    void connectSnapshot(int busyTimeoutMs, const std::function<std::string()>& untouched);
+                     const std::function<void(ErrorText&)>& untouched) const;
+    void connectSnapshot(int busyTimeoutMs, const std::function<void(ErrorText&)>& untouched);
     void applyConnectionSettings();
     void switchToWal(int busyTimeoutMs);
     void createOrMigrate(const OpenOptions& options, int latest, const std::string& author,

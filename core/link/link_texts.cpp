@@ -68,6 +68,7 @@ constexpr std::array kTexts = {
     CatalogText{"link.connection-reopen", "соединение закрыто и не открывается снова: %1",
                 "the connection is closed and does not open again: %1"},
     CatalogText{"link.connection-failed", "отказ соединения: %1", "the connection failed: %1"},
+    CatalogText{"link.cannot-connect", "нет соединения с %1: %2", "cannot connect to %1: %2"},
     // A frame's own words (English: the frame log's) said by kind in Russian.
     CatalogText{"link.damaged", "повреждённый кадр", "%1"},
     CatalogText{"link.bad-reply", "ответ не к этому запросу", "%1"},

@@ -126,7 +126,7 @@ ReleaseCheck checkReleased(const db::Database& db, const std::string& machine,
                            const link::PushPlan& plan) {
     ReleaseCheck check;
     const auto releases = db.programReleases(machine);
-    std::string lines;
+    std::vector<db::ErrorText> lines;
     for (const auto& [n, text] : plan.programs) {
         const db::ProgramRelease* r = nullptr;
         for (const auto& p : releases)
@@ -135,11 +135,13 @@ ReleaseCheck checkReleased(const db::Database& db, const std::string& machine,
         if (r && r->releasedSha256 && *r->releasedSha256 == db::sha256Hex(text))
             continue;
         check.unreleased.push_back(n);
-        lines += "\n  L" + std::to_string(n) + ": " +
-                 (!r || !r->releasedRevision ? std::string(r ? db::programStateName(r->state) : "not in the database") +
-                                                   ", nothing of it released"
-                                             : "not the released version (revision " +
-                                                   std::to_string(*r->releasedRevision) + ")");
+        const std::string number = std::to_string(n);
+        if (!r)
+            lines.push_back({"push.not-in-database", {number}});
+        else if (!r->releasedRevision)
+            lines.push_back({r->state == db::ProgramState::Withdrawn ? "push.withdrawn" : "push.draft", {number}});
+        else
+            lines.push_back({"push.not-released-version", {number, std::to_string(*r->releasedRevision)}});
     }
     if (check.unreleased.empty())
         return check;
@@ -154,12 +156,28 @@ ReleaseCheck checkReleased(const db::Database& db, const std::string& machine,
         return check;
     }
     check.allowed = false;
-    check.message = "machine " + machine + ": a push takes released programs only; not released as they are:" +
-                    lines + "\nrelease them (k528 db release " + machine + " L<n>)" +
-                    (settingAllows ? ", or push as a technologist (the machine allows drafts: push.unreleased)"
-                                   : ", or let technologists push drafts: k528 db set " + machine +
-                                         " push.unreleased=true");
+    check.why.push_back({"push.unreleased", {machine}});
+    check.why.insert(check.why.end(), lines.begin(), lines.end());
+    check.why.push_back({settingAllows ? "push.release-them.technologist" : "push.release-them", {machine}});
     return check;
+}
+
+std::string ReleaseCheck::message(bool russian) const {
+    std::string s;
+    for (std::size_t i = 0; i < why.size(); ++i) {
+        // The programs indented under the first line, the way out on the last.
+        s += i == 0 ? "" : i + 1 == why.size() ? "\n" : "\n  ";
+        s += db::renderText(why[i], russian);
+    }
+    return s;
+}
+
+PlanError::PlanError(std::string machine, link::LinkError error)
+    : std::runtime_error("machine " + machine + ": " + error.text(false)), machine_(std::move(machine)),
+      error_(std::move(error)) {}
+
+std::string PlanError::text(bool russian) const {
+    return (russian ? "станок " : "machine ") + machine_ + ": " + error_.text(russian);
 }
 
 link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,
@@ -173,7 +191,7 @@ link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,
                 p.programs[r.number] = *text;
     link::PushPlan plan;
     if (const link::LinkError e = link::planMachineFile(map, p, plan))
-        throw std::runtime_error("machine " + machine + ": " + e.text(false));
+        throw PlanError(machine, e);
     if (revision)
         *revision = rev;
     return plan;

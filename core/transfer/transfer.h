@@ -18,6 +18,7 @@
 #include "link/client.h"
 #include "link/register_map.h"
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -68,16 +69,32 @@ struct ReleaseCheck {
     bool allowed = true;
     std::vector<int> unreleased; // programs of the plan that are not released as they are
     bool overridden = false;     // unreleased ones allowed by the machine's setting
-    std::string message;         // why not, naming the programs and the command that releases them
+    // Why not, naming the programs and the command that releases them: ids
+    // of core's database catalog (db/db_texts.h) with their arguments, a
+    // line each.
+    std::vector<db::ErrorText> why;
+    // `why` in a language, its lines joined by "\n  ".
+    std::string message(bool russian = false) const;
 };
 ReleaseCheck checkReleased(const db::Database& db, const std::string& machine,
                            const link::PushPlan& plan);
 
+// A stored machine the controller would refuse (what(): English).
+class PlanError : public std::runtime_error {
+public:
+    PlanError(std::string machine, link::LinkError error);
+    // "machine NAME: the link's words" in a language.
+    std::string text(bool russian) const;
+
+private:
+    std::string machine_;
+    link::LinkError error_;
+};
+
 // A push of the database's machine as released: its C, R and messages of
 // the current revision, its programs in their released versions only
 // (drafts and withdrawn ones left out). Throws db::Error; link errors of
-// planning (a stored machine the controller would refuse) as
-// std::runtime_error with the link's words.
+// planning (a stored machine the controller would refuse) as PlanError.
 link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,
                             const link::RegisterMap& map, int* revision = nullptr);
 

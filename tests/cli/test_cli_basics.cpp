@@ -25,19 +25,52 @@ private slots:
         const auto r = runK528({});
         QCOMPARE(r.exitCode, 2);
     }
+    // The command line's own usage errors in Russian, as every command's
+    // --lang by default, and in English with --lang en: never an English
+    // sentence in a Russian run (three English words in a row).
     void unknownCommandIsUsageError() {
-        const auto r = runK528({"frobnicate"});
-        QCOMPARE(r.exitCode, 2);
-        QVERIFY(r.err.contains("unknown command 'frobnicate'"));
-        const auto o = runK528({"--frobnicate"});
-        QCOMPARE(o.exitCode, 2);
-        QVERIFY(o.err.contains("unknown option --frobnicate"));
+        static const QRegularExpression english(QStringLiteral("(?:[A-Za-z]+ ){2,}[A-Za-z]+"));
+        struct Case {
+            QStringList args;
+            QString ru, en;
+        };
+        const QList<Case> cases = {
+            {{"frobnicate"}, QStringLiteral("k528: неизвестная команда «frobnicate»\nСправка: k528 --help.\n"),
+             "k528: unknown command 'frobnicate'\nTry 'k528 --help'.\n"},
+            {{"--frobnicate"}, QStringLiteral("k528: неизвестный параметр --frobnicate\nСправка: k528 --help.\n"),
+             "k528: unknown option --frobnicate\nTry 'k528 --help'.\n"},
+            {{"check", "--frobnicate", "x.k528"}, QStringLiteral("k528: неизвестный параметр --frobnicate\nСправка: k528 --help.\n"),
+             "k528: unknown option --frobnicate\nTry 'k528 --help'.\n"},
+            {{"run", "--max-seconds"}, QStringLiteral("k528: параметру --max-seconds нужно значение\nСправка: k528 --help.\n"),
+             "k528: option --max-seconds needs a value\nTry 'k528 --help'.\n"},
+            {{"check", "--json=yes", "x.k528"}, QStringLiteral("k528: параметр --json не принимает значения\nСправка: k528 --help.\n"),
+             "k528: option --json takes no value\nTry 'k528 --help'.\n"},
+        };
+        for (const Case& c : cases) {
+            auto r = runK528(c.args);
+            QCOMPARE(r.exitCode, 2);
+            QCOMPARE(r.err, c.ru);
+            QVERIFY2(!r.err.contains(english), qPrintable(r.err));
+            // --lang en right after the command (an option before it would take it as its value).
+            QStringList en = c.args;
+            en.insert(1, "--lang");
+            en.insert(2, "en");
+            r = runK528(en);
+            QCOMPARE(r.exitCode, 2);
+            QCOMPARE(r.err, c.en);
+            en.remove(1, 2);
+            en.insert(1, "--lang=en");
+            QCOMPARE(runK528(en).err, c.en);
+        }
     }
     // An extra word after --version / --help is a usage error.
     void versionAndHelpTakeNoArguments() {
-        const auto v = runK528({"--version", "extra"});
+        auto v = runK528({"--version", "extra"});
         QCOMPARE(v.exitCode, 2);
         QCOMPARE(v.out, QString());
+        QVERIFY2(v.err.contains(QStringLiteral("--version не принимает аргументов, а здесь «extra»")), qPrintable(v.err));
+        v = runK528({"--version", "extra", "--lang", "en"});
+        QCOMPARE(v.exitCode, 2);
         QVERIFY2(v.err.contains("--version takes no arguments, not 'extra'"), qPrintable(v.err));
         QCOMPARE(runK528({"--help", "extra"}).exitCode, 2);
         QCOMPARE(runK528({"help", "check", "extra"}).exitCode, 2);
@@ -155,7 +188,11 @@ private slots:
         const auto r = runK528ToFile({"check", file}, dir.filePath("out.txt"), QStringLiteral(K528_CLI),
                                      {"/usr/bin/prlimit", "--as=" + QString::number(48 << 20)});
         QVERIFY2(r.exitCode == 2, qPrintable(QString("exit %1: %2").arg(r.exitCode).arg(r.err)));
-        QVERIFY2(r.err.contains("not enough memory"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("k528: не хватило памяти, чтобы выполнить команду")), qPrintable(r.err));
+        const auto en = runK528ToFile({"check", "--lang", "en", file}, dir.filePath("out.txt"), QStringLiteral(K528_CLI),
+                                      {"/usr/bin/prlimit", "--as=" + QString::number(48 << 20)});
+        QVERIFY2(en.exitCode == 2, qPrintable(QString("exit %1: %2").arg(en.exitCode).arg(en.err)));
+        QVERIFY2(en.err.contains("not enough memory"), qPrintable(en.err));
     }
 };
 

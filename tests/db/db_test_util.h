@@ -110,4 +110,16 @@ inline db::WriteOptions by(const std::string& author) {
     return o;
 }
 
+// Three English words in a row ("no machine named", "is not a"): a sentence a
+// Russian run must not print (names such as training-lathe or
+// constants.lock, options and paths are not words). What a library or the
+// system said is quoted in a Russian sentence («disk I/O error»): the text
+// inside «» is not ours and is left out when `quotedToo` is false.
+inline bool hasEnglishSentence(QString text, bool quotedToo = true) {
+    if (!quotedToo)
+        text.remove(QRegularExpression(QStringLiteral("«[^«»]*»")));
+    static const QRegularExpression words(QStringLiteral("(?:^|[\\s(«'\"])(?:[A-Za-z]+ ){2,}[A-Za-z]+(?=[\\s,;:)»'\"?!]|\\.(?:\\s|$)|$)"));
+    return text.contains(words);
+}
+
 } // namespace k528::testing

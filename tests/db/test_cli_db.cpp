@@ -34,14 +34,6 @@ bool writeFile(const QString& path, const QByteArray& data) {
     return f.write(data) == data.size();
 }
 
-// Three English words in a row ("no machine named", "is not a"): a sentence a
-// Russian run must not print (names such as training-lathe or
-// constants.lock, options and paths are not words).
-bool hasEnglishSentence(const QString& text) {
-    static const QRegularExpression words(QStringLiteral("(?:^|[\\s(«'\"])(?:[A-Za-z]+ ){2,}[A-Za-z]+(?=[\\s,;:)»'\"?!]|\\.(?:\\s|$)|$)"));
-    return text.contains(words);
-}
-
 // The line number (1-based) of the first line starting with `prefix`.
 int lineOf(const QString& text, const QString& prefix) {
     const QStringList lines = text.split('\n');
@@ -444,10 +436,77 @@ private slots:
     // "Operation not supported".
     void deviceAsDatabaseIsNamed() {
         K528_SQLITE_ONLY();
-        const auto r = runK528({"db", "init", "--db", "/dev/null"});
+        const auto r = runK528({"db", "init", "--db", "/dev/null", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("/dev/null: is not a regular file (a character device)"), qPrintable(r.err));
         QVERIFY(!r.err.contains("Operation not supported"));
+    }
+
+    // What is wrong with a location, a file, the connection or the command
+    // line itself, in the command's language: never an English sentence in
+    // a Russian run (SQLite's, libpq's or the system's own words are quoted
+    // in «»), the same ids in English with --lang en.
+    void locationFileAndUsageErrorsInTheCommandsLanguage() {
+        K528_SQLITE_ONLY();
+        QTemporaryDir tmp;
+        // A database whose pages were overwritten (the integrity check finds
+        // it), and one cut short (SQLite cannot read it).
+        const QString damaged = tmp.filePath("damaged.db"), cut = tmp.filePath("cut.db");
+        for (const QString& f : {damaged, cut})
+            QCOMPARE(runK528({"db", "init", "--db", f}).exitCode, 0);
+        QByteArray bytes = readAll(damaged);
+        QVERIFY(bytes.size() > 4096 * 5 + 3100);
+        bytes.replace(4096 * 5 + 100, 3000, QByteArray(3000, '\xff'));
+        QVERIFY(writeFile(damaged, bytes));
+        QVERIFY(QFile::resize(cut, 4096 * 20));
+        struct Case {
+            QStringList args;
+            int exitCode;
+            QStringList ru, en; // what each says (en empty: no English run)
+        };
+        const QList<Case> cases = {
+            {{"db", "machines", "--db", "postgresql://u:pw@h/x"}, 2,
+             {"место базы данных «postgresql://u:pw@h/x»: пароль в место базы данных не пишется"},
+             {"database location \"postgresql://u:pw@h/x\": a password does not go into a database location"}},
+            {{"db", "machines", "--db", "mysql://x/y"}, 2, {"неизвестный вид базы данных «mysql»"},
+             {"unknown kind of database \"mysql\""}},
+            {{"db", "machines", "--db", "sqlite:"}, 2, {"после sqlite: нужен путь к файлу"}, {"sqlite: needs a file path"}},
+            {{"db", "machines", "--db", ""}, 2, {"после --db нужен путь к файлу или URI postgresql://", "Справка: k528 --help."},
+             {"--db needs a file path or a postgresql:// URI", "Try 'k528 --help'."}},
+            {{"db", "machines", "--db", "postgresql://bad host/x"}, 2, {"нет подключения к базе данных postgresql://bad host/x: «"},
+             {"cannot connect to the database postgresql://bad host/x: "}},
+            {{"db", "show", "grinder-205", "--db", "/dev/null"}, 2, {"/dev/null: это не обычный файл (символьное устройство)"},
+             {"/dev/null: is not a regular file (a character device)"}},
+            {{"db", "machines", "--db", damaged}, 2,
+             {damaged + ": база данных повреждена (проверка целостности, SQLite: «", "; файл не изменён"},
+             {damaged + ": the database is damaged (integrity check: ", "; the file was left untouched"}},
+            {{"db", "set", "grinder-205", "C022=2133", "--db", cut}, 2,
+             {cut + ": файл не читается как база данных (SQLite: «", "; файл не изменён"},
+             {cut + ": cannot be read as a database (", "; the file was left untouched"}},
+            {{"db", "machines", "--bogus"}, 2, {"k528: неизвестный параметр --bogus\nСправка: k528 --help."},
+             {"k528: unknown option --bogus\nTry 'k528 --help'."}},
+            {{"db", "machines", "--db"}, 2, {"параметру --db нужно значение"}, {"option --db needs a value"}},
+            {{"db", "bogus"}, 2, {"неизвестная подкоманда db «bogus»"}, {"unknown db subcommand 'bogus'"}},
+            {{"db", "machines", "--lang", "xx"}, 2, {"--lang — ru или en, а не «xx»"}, {}},
+        };
+        for (const Case& c : cases) {
+            auto r = runK528(c.args);
+            QVERIFY2(r.exitCode == c.exitCode, qPrintable(c.args.join(' ') + ": " + r.err));
+            for (const QString& s : c.ru)
+                QVERIFY2(r.err.contains(s), qPrintable(c.args.join(' ') + ": " + r.err));
+            QVERIFY2(!hasEnglishSentence(r.err, false) && !r.err.contains("Try"), qPrintable(c.args.join(' ') + ": " + r.err));
+            if (c.en.isEmpty())
+                continue;
+            // "--db" last takes its value: --lang en goes first.
+            QStringList en = c.args;
+            en.insert(2, "--lang");
+            en.insert(3, "en");
+            r = runK528(en);
+            QVERIFY2(r.exitCode == c.exitCode, qPrintable(en.join(' ') + ": " + r.err));
+            for (const QString& s : c.en)
+                QVERIFY2(r.err.contains(s), qPrintable(en.join(' ') + ": " + r.err));
+        }
+        QVERIFY(readAll(damaged) == bytes); // refused files are left as they were
     }
 
     // A byte-order mark inside a machine file is shown visibly.
@@ -752,7 +811,7 @@ private slots:
             QVERIFY2(r.out.contains(QString("  ") + sub), sub);
         QVERIFY(runK528({"--help"}).out.contains("db "));
         QCOMPARE(runK528({"db"}).exitCode, 2);
-        r = runK528({"db", "frobnicate"});
+        r = runK528({"db", "frobnicate", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.err.contains("unknown db subcommand 'frobnicate'"));
         // --db before the subcommand.

@@ -496,6 +496,23 @@ private slots:
             }
             DENIED_FOR(op.releaseProgram("grinder-205", 11), "k528_technologist");
             DENIED_FOR(op.removeMachine("grinder-205"), "k528_technologist");
+            {
+                // The command line says the refusal in its language: the
+                // action, the role it needs, the user's roles.
+                const QString asOper = QString::fromStdString("postgresql://oper1@/" + dbName);
+                CliResult r = runK528({"db", "set", "grinder-205", "C022=2133", "--db", asOper});
+                QCOMPARE(r.exitCode, 2);
+                QVERIFY2(r.err.contains(QStringLiteral("отказано: для действия «изменение станка» нужна роль "
+                                                       "k528_technologist (у пользователя базы данных oper1: "
+                                                       "k528_operator")) &&
+                             r.err.contains(QStringLiteral("); ничего не записано")) && !hasEnglishSentence(r.err),
+                         qPrintable(r.err));
+                r = runK528({"db", "set", "grinder-205", "C022=2133", "--db", asOper, "--lang", "en"});
+                QCOMPARE(r.exitCode, 2);
+                QVERIFY2(r.err.contains("permission denied: changing a machine needs the role k528_technologist "
+                                        "(the database user oper1 has k528_operator"),
+                         qPrintable(r.err));
+            }
             db::TransferEntry t = pushEntry("grinder-205", 1, "ok");
             t.user = "tech1"; // not a text anyone can type
             QCOMPARE(op.recordTransfer(t).user, std::string("oper1"));
@@ -725,8 +742,12 @@ private slots:
             const qsizetype op = r.out.indexOf("k528_operator"), tech = r.out.indexOf("k528_technologist");
             const qsizetype member = r.out.indexOf("cmd_oper");
             QVERIFY2(op >= 0 && member > op && (tech < op || member < tech), qPrintable(r.out));
-            r = db({"roles", "grant", "cmd_oper", "boss"});
+            r = db({"roles", "grant", "cmd_oper", "boss", "--lang", "en"});
             QVERIFY2(r.exitCode != 0 && r.err.contains("technologist, operator and viewer"), qPrintable(r.err));
+            r = db({"roles", "grant", "cmd_oper", "boss"});
+            QVERIFY2(r.exitCode != 0 && r.err.contains(QStringLiteral("нет роли «boss»: роли — trainer, technologist, operator и viewer")) &&
+                         !hasEnglishSentence(r.err),
+                     qPrintable(r.err));
         } else
             QVERIFY2(r.out.contains("one user, who may do everything"), qPrintable(r.out));
     }

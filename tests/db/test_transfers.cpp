@@ -70,6 +70,15 @@ private slots:
                  qPrintable(r.err));
         QVERIFY2(!r.err.contains("push:"), qPrintable(r.err)); // the line was not used
         QCOMPARE(log().size(), 0);
+        // In Russian (the default): the same refusal, no English sentence.
+        const CliResult ru = runK528({"link", "--port", line_.b(), "push", file, "--machine", "training-lathe", "--db", db_});
+        QCOMPARE(ru.exitCode, 1);
+        QVERIFY2(ru.err.contains(QStringLiteral("станок training-lathe: передаются только выпущенные программы; не "
+                                                "выпущены в этом виде:\n  L1: черновик, ничего из неё не выпущено")) &&
+                     ru.err.contains(QStringLiteral("выпустите их (k528 db release training-lathe L<n>)")) &&
+                     ru.err.contains(QStringLiteral("ничего не отправлено")) && !hasEnglishSentence(ru.err),
+                 qPrintable(ru.err));
+        QCOMPARE(log().size(), 0);
         // A machine the database does not have: refused before the line.
         const CliResult none = link({"push", file, "--machine", "no-such", "--db", db_});
         QCOMPARE(none.exitCode, 2);

@@ -328,6 +328,26 @@ private slots:
         } catch (const db::Error& e) {
             QCOMPARE(e.kind(), db::ErrorKind::Invalid);
             QVERIFY2(std::string(e.what()).find("no such message") != std::string::npos, e.what());
+            QVERIFY2(std::string(e.what()).find("none of the batch's 2 events was written") != std::string::npos,
+                     e.what());
+            // In Russian too (k528's --lang ru): the same ids.
+            const std::string ru = e.text(db::Lang::Ru);
+            QVERIFY2(ru == d.path().string() + ": событие сообщения 7 прогона " + std::to_string(run) +
+                               ": такое сообщение не выдавалось; ни одно из 2 событий пакета не записано",
+                     ru.c_str());
+        }
+        // A run that is not there: said of the database's file.
+        try {
+            log.write(run + 100, batch);
+            QFAIL("accepted");
+        } catch (const db::Error& e) {
+            const std::string ru = e.text(db::Lang::Ru);
+            QVERIFY2(ru == d.path().string() + ": нет прогона сообщений " + std::to_string(run + 100) +
+                               "; ничего не записано",
+                     ru.c_str());
+            QVERIFY2(std::string(e.what()) == d.path().string() + ": no message run " + std::to_string(run + 100) +
+                                                   "; nothing was written",
+                     e.what());
         }
         QCOMPARE(log.count(), std::int64_t(0));
         batch.pop_back();

@@ -123,6 +123,17 @@ private slots:
         qInfo("offline shown %lld ms after the kill", static_cast<long long>(ms));
         QVERIFY2(ms <= 1000, qPrintable(QString::number(ms)));
         QCOMPARE(shop->tile("m02")->stateText(), QString("offline"));
+        // Why, in the window's language: the link's ids through tr().
+        const QString whyEn = shop->tile("m02")->offlineReason();
+        QVERIFY2(!whyEn.isEmpty() && whyEn == QString::fromStdString(shop->state("m02")->why), qPrintable(whyEn));
+        QVERIFY(setLanguage("ru"));
+        QApplication::processEvents();
+        const QString whyRu = shop->tile("m02")->offlineReason();
+        static const QRegularExpression english(QStringLiteral("(?:[A-Za-z]+ ){2,}[A-Za-z]+"));
+        QVERIFY2(!whyRu.isEmpty() && whyRu != whyEn && !whyRu.contains(english), qPrintable(whyRu));
+        qInfo("offline: «%s» / «%s»", qPrintable(whyEn), qPrintable(whyRu));
+        QVERIFY(setLanguage("en"));
+        QApplication::processEvents();
         QVERIFY(shop->state("m01")->online); // the others go on
         QByteArray said;
         QVERIFY2(shop_.serves[1]->start({}, &said), said.constData());

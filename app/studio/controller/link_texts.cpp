@@ -53,6 +53,7 @@ const TranslatedText kLinks[] = {
         {"link.port-failed", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "the port failed: %1")},
         {"link.connection-reopen", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "the connection is closed and does not open again: %1")},
         {"link.connection-failed", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "the connection failed: %1")},
+        {"link.cannot-connect", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "cannot connect to %1: %2")},
         {"link.damaged", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "%1 (a damaged frame)")},
         {"link.bad-reply", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "%1 (an answer that does not fit)")},
         {"link.lost", QT_TRANSLATE_NOOP("k528::studio::LinkTexts", "%1 (no answer)")},

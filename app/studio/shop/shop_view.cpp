@@ -2,6 +2,7 @@
 
 #include "catalog/messages.h"
 #include "controller/controller_dock.h"
+#include "controller/link_texts.h"
 #include "database/database_ui.h"
 #include "session/catalog_texts.h"
 #include "main_window.h"
@@ -196,7 +197,7 @@ void ShopTile::showState(const shop::MachineState& s, std::int64_t nowMs) {
         alarms_->setVisible(!a.isEmpty());
     } else {
         setIf(mode_, tr("The line does not answer"));
-        mode_->setToolTip(QString::fromStdString(s.why));
+        mode_->setToolTip(why_.empty() ? QString::fromStdString(s.why) : linkText(why_));
         setIf(program_, s.everOnline ? tr("Last answer at %1").arg(clockText(s.lastSeenMs)) : tr("No answer yet"));
         setIf(alarms_, QString());
         alarms_->hide();
@@ -241,6 +242,7 @@ void ShopTile::retranslate() {
 }
 
 QString ShopTile::stateText() const { return state_label_->text(); }
+QString ShopTile::offlineReason() const { return mode_->toolTip(); }
 QString ShopTile::modeText() const { return mode_->text(); }
 QString ShopTile::alarmsText() const { return alarms_->text(); }
 
@@ -782,6 +784,7 @@ void ShopView::apply(const shop::PollResult& r) {
     lastPollMs_[i] = r.atMs;
     std::vector<shop::AlarmEvent> events;
     const bool changed = tk.update(r.online ? &r.live : nullptr, r.why, r.atMs, events);
+    tiles_[i]->setOfflineReason(r.online ? link::Said() : r.said);
     if (changed)
         tiles_[i]->showState(tk.state(), r.atMs);
     for (const shop::AlarmEvent& e : events) {

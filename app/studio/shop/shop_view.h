@@ -20,6 +20,7 @@
 // poller then runs whether the page is shown or not.
 #pragma once
 
+#include "link/link_texts.h"
 #include "shop/shop_machines.h"
 #include "shop/state.h"
 #include "shop/state_time.h"
@@ -66,6 +67,8 @@ public:
     const QString& machine() const { return machine_; }
     // Shows `s` (only what changed is set again).
     void showState(const shop::MachineState& s, std::int64_t nowMs);
+    // Why the line is offline, by the link's ids (said in the window's language).
+    void setOfflineReason(const link::Said& why) { why_ = why; }
     // The time in this state at `nowMs`.
     void showTime(std::int64_t nowMs);
     void setLastTransfer(const QString& text);
@@ -75,6 +78,8 @@ public:
     QString stateText() const;
     QString modeText() const;
     QString alarmsText() const;
+    // Why the line does not answer (the mode's tooltip), "" while it answers.
+    QString offlineReason() const;
 
 signals:
     void clicked(const QString& machine);
@@ -86,6 +91,7 @@ private:
     void setIf(QLabel* label, const QString& text);
     QString machine_;
     shop::MachineState state_;
+    link::Said why_;
     bool shown_ = false;
     bool current_ = false;
     QString transfer_;
