@@ -21,12 +21,12 @@ int cmdAudit(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError("db audit takes no arguments");
+        return usageError(russianCommandLine() ? "db audit не принимает аргументов" : "db audit takes no arguments");
     int limit = 50;
     if (const auto v = a.value("--limit")) {
         const auto n = parseInt(*v);
         if (!n || *n < 0)
-            return usageError("--limit N: N must be 0 (all) or more");
+            return usageError(russianCommandLine() ? "--limit N: N — 0 (все) или больше" : "--limit N: N must be 0 (all) or more");
         limit = static_cast<int>(*n);
     }
     DbTarget t;

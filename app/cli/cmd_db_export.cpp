@@ -23,7 +23,7 @@ int cmdExport(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
-        return usageError("db export needs one MACHINE (or MACHINE@REV)");
+        return usageError(russianCommandLine() ? "db export нужен один СТАНОК (или СТАНОК@РЕВ)" : "db export needs one MACHINE (or MACHINE@REV)");
     const std::string format = a.value("--format").value_or("k528m");
     if (format != "k528m" && format != "csv")
         return usageError("--format is k528m or csv, not '" + format + "'");

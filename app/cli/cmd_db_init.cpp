@@ -21,7 +21,7 @@ int cmdInit(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError("db init takes no arguments");
+        return usageError(russianCommandLine() ? "db init не принимает аргументов" : "db init takes no arguments");
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;

@@ -22,7 +22,7 @@ int cmdMachines(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError("db machines takes no arguments");
+        return usageError(russianCommandLine() ? "db machines не принимает аргументов" : "db machines takes no arguments");
     DbTarget t;
     auto d = openDbOf(a, t, false);
     if (!d)

@@ -181,7 +181,8 @@ int cmdSet(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() < 2)
-        return usageError("db set needs MACHINE and at least one ITEM=VALUE (e.g. C022=2133)");
+        return usageError(russianCommandLine() ? "db set нужны СТАНОК и хотя бы один ПУНКТ=ЗНАЧЕНИЕ (например, C022=2133)"
+                                                : "db set needs MACHINE and at least one ITEM=VALUE (e.g. C022=2133)");
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;

@@ -163,7 +163,7 @@ int cmdShow(std::span<const std::string> argvIn) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
-        return usageError("db show needs one MACHINE (or MACHINE@REV)");
+        return usageError(russianCommandLine() ? "db show нужен один СТАНОК (или СТАНОК@РЕВ)" : "db show needs one MACHINE (or MACHINE@REV)");
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;

@@ -487,6 +487,10 @@ private slots:
              {"k528: unknown option --bogus\nTry 'k528 --help'."}},
             {{"db", "machines", "--db"}, 2, {"параметру --db нужно значение"}, {"option --db needs a value"}},
             {{"db", "bogus"}, 2, {"неизвестная подкоманда db «bogus»"}, {"unknown db subcommand 'bogus'"}},
+            {{"db", "machines", "extra"}, 2, {"db machines не принимает аргументов"}, {"db machines takes no arguments"}},
+            {{"db", "set", "grinder-205"}, 2, {"db set нужны СТАНОК и хотя бы один ПУНКТ=ЗНАЧЕНИЕ"},
+             {"db set needs MACHINE and at least one ITEM=VALUE"}},
+            {{"db", "show"}, 2, {"db show нужен один СТАНОК (или СТАНОК@РЕВ)"}, {"db show needs one MACHINE (or MACHINE@REV)"}},
             {{"db", "machines", "--lang", "xx"}, 2, {"--lang — ru или en, а не «xx»"}, {}},
         };
         for (const Case& c : cases) {
