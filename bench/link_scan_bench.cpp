@@ -64,7 +64,9 @@ int main(int argc, char** argv) {
     QProcess scan;
     QElapsedTimer clock;
     clock.start();
-    scan.start(k528, {"link", "--port", client, "scan", "--addresses", "1-247"});
+    // In English: the station's line is matched below (k528 link speaks
+    // Russian unless told otherwise).
+    scan.start(k528, {"link", "--lang", "en", "--port", client, "scan", "--addresses", "1-247"});
     scan.waitForFinished(300000);
     const double seconds = static_cast<double>(clock.elapsed()) / 1000.0;
     const QString out = QString::fromUtf8(scan.readAllStandardOutput());
