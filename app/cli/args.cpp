@@ -1,5 +1,6 @@
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 
 #include <algorithm>
 #include <charconv>
@@ -29,6 +30,10 @@ void readCommandLineLanguage(std::span<const std::string> args) {
 
 bool russianCommandLine() {
     return russianLine;
+}
+
+std::string cliText(std::string_view id, std::initializer_list<std::string> args) {
+    return cliText(id, args, russianLine);
 }
 
 Args::Args(std::span<const std::string> args, std::vector<std::string_view> flags,

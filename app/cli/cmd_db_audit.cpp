@@ -3,6 +3,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db_cli.h"
@@ -26,7 +27,7 @@ int cmdAudit(std::span<const std::string> argv) {
     if (const auto v = a.value("--limit")) {
         const auto n = parseInt(*v);
         if (!n || *n < 0)
-            return usageError(russianCommandLine() ? "--limit N: N — 0 (все) или больше" : "--limit N: N must be 0 (all) or more");
+            return usageError(cliText("db.usage.limit"));
         limit = static_cast<int>(*n);
     }
     DbTarget t;

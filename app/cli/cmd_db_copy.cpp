@@ -1,6 +1,7 @@
 // k528 db copy --to LOCATION (docs/database.md); helpers in db_cli_util.h.
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db_cli_util.h"
 
@@ -29,13 +30,12 @@ int cmdCopy(std::span<const std::string> argv) {
         return ExitUsage;
     try {
         const db::CopyReport r = d->copyTo(target);
-        std::string s = "copied    " + t.path.string() + " -> " + r.target + "\n";
-        s += "machines  " + std::to_string(r.machines) + ", revisions " + std::to_string(r.revisions) +
-             ", program versions " + std::to_string(r.programVersions) + ", releases " +
-             std::to_string(r.releases) + "\n";
-        s += "logs      " + std::to_string(r.messages) + " messages, " + std::to_string(r.audit) +
-             " audit entries, " + std::to_string(r.transfers) + " transfers\n";
-        s += "rows      " + std::to_string(r.rows) + " in one transaction\n";
+        using std::to_string;
+        std::string s = cliText("db.copy.copied", {t.path.string(), r.target}) + "\n";
+        s += cliText("db.copy.machines", {to_string(r.machines), to_string(r.revisions), to_string(r.programVersions),
+                                          to_string(r.releases)}) + "\n";
+        s += cliText("db.copy.logs", {to_string(r.messages), to_string(r.audit), to_string(r.transfers)}) + "\n";
+        s += cliText("db.copy.rows", {to_string(r.rows)}) + "\n";
         out(s);
         return ExitOk;
     } catch (const db::Error& e) {

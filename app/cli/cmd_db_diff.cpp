@@ -3,6 +3,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db_cli.h"
@@ -48,11 +49,10 @@ bool resolveSide(const db::Database& d, const std::string& s, MachineProfile& p,
         }
         if (profile::isBuiltin(s)) {
             p = profile::builtin(s);
-            label = s + " (built-in)";
+            label = cliText("db.diff.builtin", {s});
             return true;
         }
-        fail("'" + s + "' is neither a machine of " + d.path().string() +
-             ", MACHINE@REV, a machine file nor a built-in profile");
+        fail(cliText("db.diff.neither", {s, d.path().string()}));
         return false;
     } catch (const profile::FileError& e) {
         fail(e.what(), ExitInputErrors);
@@ -93,7 +93,7 @@ int cmdDiff(std::span<const std::string> argv) {
         return ExitOk;
     }
     std::string s = "--- " + la + "\n+++ " + lb + "\n";
-    s += changes.empty() ? "no differences\n" : profile::formatDiff(changes);
+    s += changes.empty() ? cliText("db.diff.none") + "\n" : profile::formatDiff(changes);
     out(s);
     return ExitOk;
 }

@@ -3,6 +3,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db_cli.h"
@@ -26,7 +27,7 @@ int cmdExport(std::span<const std::string> argv) {
         return usageError(russianCommandLine() ? "db export нужен один СТАНОК (или СТАНОК@РЕВ)" : "db export needs one MACHINE (or MACHINE@REV)");
     const std::string format = a.value("--format").value_or("k528m");
     if (format != "k528m" && format != "csv")
-        return usageError("--format is k528m or csv, not '" + format + "'");
+        return usageError(cliText("db.usage.format", {format}));
     const auto ref = parseRef(a.positional()[0]);
     if (!ref)
         return ExitUsage;

@@ -5,6 +5,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db_cli.h"
@@ -74,7 +75,7 @@ int cmdImport(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
-        return usageError("db import needs one FILE (a machine file .k528m, or CSV with --as)");
+        return usageError(cliText("db.usage.import"));
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;
@@ -89,7 +90,7 @@ int cmdImport(std::span<const std::string> argv) {
     const std::string source = file == "-" ? "<stdin>" : file;
     std::string format = a.value("--format").value_or("");
     if (!format.empty() && format != "k528m" && format != "csv")
-        return usageError("--format is k528m or csv, not '" + format + "'");
+        return usageError(cliText("db.usage.format", {format}));
     if (format.empty())
         format = looksLikeCsv(file, text) ? "csv" : "k528m";
     const auto asName = a.value("--as");
@@ -109,8 +110,7 @@ int cmdImport(std::span<const std::string> argv) {
     try {
         if (format == "csv") {
             if (!asName)
-                return usageError("a CSV file holds only the constants: name the machine whose "
-                                  "constants it replaces with --as NAME");
+                return usageError(cliText("db.usage.import-csv"));
             csv = profile::readCParamsCsv(text, source);
         } else {
             p = profile::readMachineText(text, source);
@@ -137,10 +137,7 @@ int cmdImport(std::span<const std::string> argv) {
         } else if (d->hasMachine(machine)) {
             if (!a.has("--replace")) {
                 const auto info = *d->machine(machine);
-                return fail("machine " + machine + " already exists in " + t.path.string() +
-                            " (revision " + std::to_string(info.revision) +
-                            "): --replace stores the file as its next revision, --as NAME "
-                            "imports it under another name; nothing was imported");
+                return fail(cliText("db.import.exists", {machine, t.path.string(), std::to_string(info.revision)}));
             }
             r = d->saveMachine(machine, p, o);
         } else {

@@ -3,6 +3,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db_cli.h"
@@ -34,26 +35,27 @@ int cmdInit(std::span<const std::string> argv) {
     // an upgrade it cannot make is said.
     if (d->readOnly() != db::ReadOnlyReason::None && r.version < db::latestSchemaVersion())
         return dbFail(db::ReadOnlyError(t.path, d->readOnly(), db::ReadOnlyRefusal::Upgrade), lang);
-    std::string s = "database  " + t.path.string() + "\n";
-    s += "schema    version " + std::to_string(r.version);
+    const bool ru = lang == Lang::Ru;
+    std::string s = cliText("db.database", {t.path.string()}, ru) + "\n";
+    const std::string version = std::to_string(r.version);
     if (r.created)
-        s += " (created)";
+        s += cliText("db.init.created", {version}, ru);
     else if (r.fromVersion < r.version)
-        s += " (upgraded from version " + std::to_string(r.fromVersion) + ")";
+        s += cliText("db.init.upgraded", {version, std::to_string(r.fromVersion)}, ru);
     else
-        s += " (up to date)";
+        s += cliText("db.init.current", {version}, ru);
     s += "\n";
     if (!r.seeded.empty()) {
-        s += "loaded    ";
+        std::string names;
         for (std::size_t i = 0; i < r.seeded.size(); ++i)
-            s += (i ? ", " : "") + r.seeded[i];
-        s += " (built-in machines)\n";
+            names += (i ? ", " : "") + r.seeded[i];
+        s += cliText("db.init.loaded", {names}, ru) + "\n";
     }
     if (r.recovered)
-        s += "recovered " + t.path.string() + "-journal: an interrupted transaction was rolled back\n";
+        s += cliText("db.init.recovered", {t.path.string()}, ru) + "\n";
     if (d->readOnly() != db::ReadOnlyReason::None)
-        s += "access    read-only (" + std::string(db::readOnlyReasonText(d->readOnly())) + ")\n";
-    s += "machines  " + std::to_string(d->machines().size()) + "\n";
+        s += cliText("db.init.read-only", {std::string(db::readOnlyReasonText(d->readOnly(), lang))}, ru) + "\n";
+    s += cliText("db.init.machines", {std::to_string(d->machines().size())}, ru) + "\n";
     out(s);
     return ExitOk;
 }

@@ -1,9 +1,13 @@
 // k528 db log [MACHINE] [--since TIME] [--limit N] [--json] (docs/database.md).
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db_cli_util.h"
 #include "util/json.h"
+#include "util/utf8.h"
+
+#include <algorithm>
 
 namespace k528::cli::dbcli {
 
@@ -24,8 +28,31 @@ std::string itemText(const db::TransferItem& i) {
     const std::string what = i.kind == "program" ? "L" + std::to_string(i.number)
                              : i.kind == "c"     ? std::string("C")
                              : i.kind == "r"     ? std::string("R")
-                                                 : std::string("messages");
+                                                 : cliText("db.log.messages");
     return what + " " + i.crc32 + " " + i.state;
+}
+
+// A transfer's direction and result as stored (push, pull; ok, partial,
+// failed), said in the command's language; what the catalog lacks as stored.
+std::string storedWord(const std::string& w) {
+    if (w == "push")
+        return cliText("db.log.push");
+    if (w == "pull")
+        return cliText("db.log.pull");
+    if (w == "ok")
+        return cliText("db.log.ok");
+    if (w == "partial")
+        return cliText("db.log.partial");
+    if (w == "failed")
+        return cliText("db.log.failed");
+    return w;
+}
+
+std::size_t storedWidth(std::initializer_list<const char*> words) {
+    std::size_t w = 0;
+    for (const char* word : words)
+        w = std::max(w, utf8::length(storedWord(word)));
+    return w;
 }
 
 } // namespace
@@ -35,20 +62,19 @@ int cmdLog(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() > 1)
-        return usageError("db log takes at most one machine: k528 db log [MACHINE] [--since TIME]");
+        return usageError(cliText("db.usage.log"));
     db::TransferFilter f;
     if (!a.positional().empty())
         f.machine = a.positional()[0];
     if (const auto since = a.value("--since")) {
         if (!validSince(*since))
-            return usageError("--since takes a time as 2024-05-17 or 2024-05-17T08:30:00Z, not '" +
-                              *since + "'");
+            return usageError(cliText("db.usage.since", {*since}));
         f.since = *since;
     }
     if (const auto v = a.value("--limit")) {
         const auto n = parseInt(*v);
         if (!n || *n < 0)
-            return usageError("--limit N: N must be 0 (all) or more");
+            return usageError(cliText("db.usage.limit"));
         f.limit = static_cast<int>(*n);
     }
     DbTarget t;
@@ -91,8 +117,11 @@ int cmdLog(std::span<const std::string> argv) {
             return ExitOk;
         }
         std::string s;
+        const std::size_t directionWidth = storedWidth({"push", "pull"});
+        const std::size_t resultWidth = storedWidth({"ok", "partial", "failed"});
         for (const auto& e : entries) {
-            s += e.at + "  " + pad(e.direction, 4) + "  " + pad(e.result, 7) + "  " +
+            s += e.at + "  " + pad(storedWord(e.direction), directionWidth) + "  " +
+                 pad(storedWord(e.result), resultWidth) + "  " +
                  pad(e.machine.empty() ? "-" : e.machine +
                                                    (e.revision ? "@" + std::to_string(e.revision) : ""),
                      16) +
@@ -106,7 +135,7 @@ int cmdLog(std::span<const std::string> argv) {
                 s += "    " + e.detail + "\n";
         }
         if (entries.empty())
-            s = "no transfers on record" + (f.machine.empty() ? std::string() : " for " + f.machine) + "\n";
+            s = (f.machine.empty() ? cliText("db.log.none") : cliText("db.log.none-for", {f.machine})) + "\n";
         out(s);
         return ExitOk;
     } catch (const db::Error& e) {

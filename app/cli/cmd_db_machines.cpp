@@ -3,6 +3,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db_cli.h"
@@ -46,15 +47,18 @@ int cmdMachines(std::span<const std::string> argv) {
         out(json::dump(root) + "\n");
         return ExitOk;
     }
-    std::size_t w = 7;
+    const std::string machineColumn = cliText("db.machines.machine");
+    std::size_t w = utf8::length(machineColumn);
     for (const auto& m : ms)
         w = std::max(w, utf8::length(m.name));
-    std::string s = pad("MACHINE", w) + "  REV  CHANGED               BY          TITLE\n";
+    std::string s = pad(machineColumn, w) + "  " + padLeft(cliText("db.machines.revision"), 3) + "  " +
+                    pad(cliText("db.machines.changed"), 20) + "  " + pad(cliText("db.machines.by"), 10) + "  " +
+                    cliText("db.machines.title") + "\n";
     for (const auto& m : ms)
         s += pad(m.name, w) + "  " + padLeft(std::to_string(m.revision), 3) + "  " +
              pad(m.changedAt, 20) + "  " + pad(m.changedBy, 10) + "  " + m.title + "\n";
     if (ms.empty())
-        s += "(no machines: k528 db import FILE adds one)\n";
+        s += cliText("db.machines.none") + "\n";
     out(s);
     return ExitOk;
 }

@@ -1,26 +1,25 @@
 // k528 db release / withdraw MACHINE L<n> [--note TEXT] (docs/database.md).
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db_cli_util.h"
 
 namespace k528::cli::dbcli {
 
 int cmdRelease(std::span<const std::string> argv, bool release) {
-    const char* verb = release ? "release" : "withdraw";
     const Args a(argv, {}, {"--db", "--lang", "--note", "--author"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 2)
-        return usageError(std::string("db ") + verb + " takes a machine and a program: k528 db " +
-                          verb + " MACHINE L<n> [--note TEXT]");
+        return usageError(cliText("db.usage.release", {release ? "release" : "withdraw"}));
     const std::string& machine = a.positional()[0];
     std::string prog = a.positional()[1];
     if (!prog.empty() && (prog[0] == 'L' || prog[0] == 'l'))
         prog = prog.substr(1);
     const auto n = parseInt(prog);
     if (!n || *n < 1 || *n > 99)
-        return usageError("'" + a.positional()[1] + "': a program is L1..L99");
+        return usageError(cliText("db.usage.program", {a.positional()[1]}));
     DbTarget t;
     auto d = openDbOf(a, t, false);
     if (!d)
@@ -32,10 +31,10 @@ int cmdRelease(std::span<const std::string> argv, bool release) {
         const int number = static_cast<int>(*n);
         const db::ReleaseEntry e = release ? d->releaseProgram(machine, number, note, o)
                                            : d->withdrawProgram(machine, number, note, o);
-        out(std::string(release ? "released  " : "withdrawn ") + machine + " L" +
-            std::to_string(number) + " as of revision " + std::to_string(e.revision) + " (SHA-256 " +
-            e.sha256.substr(0, 12) + "…) by " + e.author + " at " + e.at +
-            (e.note.empty() ? "" : ": " + e.note) + "\n");
+        const std::initializer_list<std::string> said = {machine, std::to_string(number), std::to_string(e.revision),
+                                                          e.sha256.substr(0, 12), e.author, e.at,
+                                                          e.note.empty() ? "" : ": " + e.note};
+        out((release ? cliText("db.released", said) : cliText("db.withdrawn", said)) + "\n");
         return ExitOk;
     } catch (const db::Error& e) {
         return dbFail(e, langOf(a));

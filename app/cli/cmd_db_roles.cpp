@@ -1,10 +1,28 @@
 // k528 db roles [grant USER ROLE] (docs/database.md): PostgreSQL's roles.
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db_cli_util.h"
 
 namespace k528::cli::dbcli {
+
+namespace {
+
+// What a role may, in the command's language (the database says it in English).
+std::string roleMay(const db::RoleInfo& r) {
+    if (r.role == "k528_viewer")
+        return cliText("db.role.viewer");
+    if (r.role == "k528_operator")
+        return cliText("db.role.operator");
+    if (r.role == "k528_technologist")
+        return cliText("db.role.technologist");
+    if (r.role == "k528_trainer")
+        return cliText("db.role.trainer");
+    return r.may;
+}
+
+} // namespace
 
 int cmdRoles(std::span<const std::string> argv) {
     const Args a(argv, {}, {"--db", "--lang"});
@@ -21,9 +39,7 @@ int cmdRoles(std::span<const std::string> argv) {
     if (!d)
         return ExitUsage;
     if (d->backend() == db::Backend::Sqlite) {
-        out("database  " + t.path.string() +
-            "\nroles     none: an SQLite database has one user, who may do everything (the roles "
-            "k528_technologist, k528_operator and k528_viewer are PostgreSQL's)\n");
+        out(cliText("db.database", {t.path.string()}) + "\n" + cliText("db.roles.sqlite") + "\n");
         return grant ? ExitUsage : ExitOk;
     }
     try {
@@ -32,13 +48,13 @@ int cmdRoles(std::span<const std::string> argv) {
             d->grantRole(pos[1], pos[2]);
             roles = d->roles();
         }
-        std::string s = "database  " + t.path.string() + "\n";
+        std::string s = cliText("db.database", {t.path.string()}) + "\n";
         for (const db::RoleInfo& r : roles) {
             std::string members;
             for (const auto& m : r.members)
                 members += (members.empty() ? "" : ", ") + m;
-            s += pad(r.role, 18) + "  " + r.may + "\n" + std::string(20, ' ') + "members: " +
-                 (members.empty() ? "none" : members) + "\n";
+            s += pad(r.role, 18) + "  " + roleMay(r) + "\n" + std::string(20, ' ') +
+                 cliText("db.roles.members", {members.empty() ? cliText("db.roles.no-members") : members}) + "\n";
         }
         out(s);
         return ExitOk;

@@ -5,6 +5,7 @@
 #include "catalog/messages.h"
 #include "catalog/rparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/explain.h"
 #include "db/sha256.h"
@@ -61,22 +62,29 @@ std::optional<int> parseRNumber(const std::string& s) {
     return static_cast<int>(*n);
 }
 
+// A program's state ("draft", "released", "withdrawn") in the command's language.
+std::string stateWord(db::ProgramState state) {
+    switch (state) {
+    case db::ProgramState::Draft: return cliText("db.state.draft");
+    case db::ProgramState::Released: return cliText("db.state.released");
+    case db::ProgramState::Withdrawn: return cliText("db.state.withdrawn");
+    }
+    return std::string(db::programStateName(state));
+}
+
 std::string historyText(const db::Database& d, const std::string& machine,
                         const std::optional<std::string>& key, int limit) {
     std::string s;
     if (key) {
         const auto h = d.history(machine, key, limit);
-        s += "history of " + *key + (h.empty() ? ": no changes recorded\n" : ":\n");
+        s += (h.empty() ? cliText("db.history.of-none", {*key}) : cliText("db.history.of", {*key})) + "\n";
         for (const auto& e : h) {
-            s += "  revision " + std::to_string(e.revision) + "  " + e.at + "  " + e.author + ": ";
+            s += cliText("db.history.entry", {std::to_string(e.revision), e.at, e.author});
             if (e.change.section == profile::DiffSection::Program)
-                s += std::string(!e.change.before  ? "added"
-                                 : !e.change.after ? "removed"
-                                                   : "changed") +
-                     "\n";
+                s += changeWord(e.change.before.has_value(), e.change.after.has_value()) + "\n";
             else
-                s += e.change.before.value_or("(none)") + " -> " +
-                     e.change.after.value_or("(none)") + "\n";
+                s += e.change.before.value_or(cliText("db.change.none")) + " -> " +
+                     e.change.after.value_or(cliText("db.change.none")) + "\n";
         }
         return s;
     }
@@ -87,11 +95,11 @@ std::string historyText(const db::Database& d, const std::string& machine,
         if (limit > 0 && shown >= limit)
             break;
         ++shown;
-        s += "revision " + std::to_string(r.revision) + "  " + r.at + "  " + r.author + "  " +
-             r.summary + " (" + std::to_string(r.changeCount) +
-             (r.changeCount == 1 ? " change" : " changes") + ")\n";
+        s += cliText("db.history.revision", {std::to_string(r.revision), r.at, r.author, r.summary,
+                                              changeCount(static_cast<std::size_t>(r.changeCount))}) +
+             "\n";
         if (r.revision == 1 && r.changeCount > 20) {
-            s += "  (the machine as first stored: k528 db export " + machine + "@1)\n";
+            s += cliText("db.history.first", {machine}) + "\n";
             continue;
         }
         std::vector<profile::Change> cs;
@@ -175,23 +183,23 @@ int cmdShow(std::span<const std::string> argvIn) {
         views += a.value(o) ? 1 : 0;
     views += a.has("--programs") + a.has("--messages");
     if (views > 1)
-        return usageError("db show takes one of --c, --r, --programs, --program, --messages");
+        return usageError(cliText("db.usage.show-one"));
     std::optional<int> cNumber, rNumber, programNumber;
     if (const auto v = a.value("--c"); v && !(cNumber = parseCNumber(*v)))
-        return usageError("--c: '" + *v + "' is not a C-parameter number 1..152");
+        return usageError(cliText("db.usage.show-c", {*v}));
     if (const auto v = a.value("--r"); v && !(rNumber = parseRNumber(*v)))
-        return usageError("--r: '" + *v + "' is not an R-parameter number 0..299");
+        return usageError(cliText("db.usage.show-r", {*v}));
     if (const auto v = a.value("--program")) {
         const auto n = parseInt(*v);
         if (!n || *n < 1 || *n > 99)
-            return usageError("--program: '" + *v + "' is not a program number 1..99");
+            return usageError(cliText("db.usage.show-program", {*v}));
         programNumber = static_cast<int>(*n);
     }
     std::optional<int> historyLimit;
     if (const auto v = a.value("--history")) {
         const auto n = parseInt(*v);
         if (!n || *n < 0)
-            return usageError("--history N: N must be a number of revisions (0 = all)");
+            return usageError(cliText("db.usage.history"));
         historyLimit = static_cast<int>(*n);
     }
     DbTarget t;
@@ -302,7 +310,7 @@ int cmdShow(std::span<const std::string> argvIn) {
                 s += std::string(ru ? "  подсказка: " : "  hint:      ") + hint + "\n";
             s += "  " + std::string(ru ? def.descriptionRu : def.descriptionEn) + "\n";
             if (!def.note.empty())
-                s += "  note: " + std::string(def.note) + "\n";
+                s += cliText("db.show.note", {std::string(def.note)}) + "\n";
             for (const auto& f : profile::validate(p))
                 if (std::find(f.cParams.begin(), f.cParams.end(), *cNumber) != f.cParams.end())
                     s += "  " + findingText(f, lang) + "\n";
@@ -332,8 +340,7 @@ int cmdShow(std::span<const std::string> argvIn) {
         } else if (programNumber) {
             const auto it = p.programs.find(*programNumber);
             if (it == p.programs.end())
-                return fail("machine " + p.name + " has no program L" +
-                            std::to_string(*programNumber));
+                return fail(cliText("db.show.no-program", {p.name, std::to_string(*programNumber)}));
             if (historyLimit) {
                 out(s + historyText(*d, info.name, historyKey, *historyLimit));
                 return ExitOk;
@@ -356,11 +363,11 @@ int cmdShow(std::span<const std::string> argvIn) {
                 std::string line = programSummary(n, text);
                 if (const auto it = states.find(n); it != states.end()) {
                     line.pop_back();
-                    line += "  " + std::string(db::programStateName(it->second.state));
+                    line += "  " + stateWord(it->second.state);
                     if (it->second.state == db::ProgramState::Draft && it->second.releasedRevision)
-                        line += " (released: revision " + std::to_string(*it->second.releasedRevision) + ")";
+                        line += cliText("db.state.released-revision", {std::to_string(*it->second.releasedRevision)});
                     else if (it->second.state == db::ProgramState::Released && it->second.last)
-                        line += " by " + it->second.last->author + " " + it->second.last->at;
+                        line += cliText("db.state.released-by", {it->second.last->author, it->second.last->at});
                     line += "\n";
                 }
                 s += line;

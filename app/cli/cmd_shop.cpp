@@ -5,6 +5,7 @@
 // plain C++ (docs/link.md, *Why k528-link*).
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db_cli_util.h"
 #include "profile/line.h"
 
@@ -17,15 +18,14 @@ int forwardToLink(const char* command, std::span<const std::string> args); // cm
 
 int runShop(std::span<const std::string> argv) {
     const Args a(argv, {"--json", "--watch"},
-                 {"--db", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id"});
+                 {"--db", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id", "--lang"});
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().empty() || (a.positional()[0] != "status" && a.positional()[0] != "publish"))
-        return usageError("shop needs status or publish: k528 shop status [--json] [MACHINE…], "
-                          "k528 shop publish --mqtt mqtt://HOST[:PORT] [MACHINE…]");
+        return usageError(cliText("shop.usage"));
     const std::string sub = a.positional()[0];
     if (sub == "publish" && !a.value("--mqtt"))
-        return usageError("shop publish needs --mqtt mqtt://HOST[:PORT]");
+        return usageError(cliText("shop.usage.mqtt"));
     dbcli::DbTarget t;
     auto d = dbcli::openDbOf(a, t, false);
     if (!d)
@@ -37,7 +37,7 @@ int runShop(std::span<const std::string> argv) {
         const std::vector<std::string> asked(a.positional().begin() + 1, a.positional().end());
         for (const std::string& m : asked)
             if (std::none_of(all.begin(), all.end(), [&](const db::MachineInfo& i) { return i.name == m; }))
-                return usageError("no machine '" + m + "' in the database (k528 db machines lists them)");
+                return usageError(cliText("shop.no-machine", {m}));
         for (const db::MachineInfo& i : all) {
             const bool wanted = asked.empty() || std::find(asked.begin(), asked.end(), i.name) != asked.end();
             if (!wanted)
@@ -45,13 +45,12 @@ int runShop(std::span<const std::string> argv) {
             const auto line = d->loadMachine(i.name).simulation.find("line");
             if (!line) {
                 if (!asked.empty())
-                    return usageError("machine '" + i.name + "' has no line: k528 db set " + i.name +
-                                      " line=tcp://HOST:PORT/UNIT (or line=serial:DEVICE?address=1)");
+                    return usageError(cliText("shop.no-line", {i.name}));
                 continue;
             }
             std::string error;
             if (!profile::parseLine(*line, error))
-                return usageError("machine '" + i.name + "': " + error);
+                return usageError(cliText("shop.bad-line", {i.name, error}));
             names.push_back(i.name);
             lines.push_back(*line);
         }
@@ -60,8 +59,7 @@ int runShop(std::span<const std::string> argv) {
         return ExitUsage;
     }
     if (names.empty()) {
-        std::fprintf(stderr, "k528 shop: no machine of the database has a line (k528 db set MACHINE "
-                             "line=tcp://HOST:PORT/UNIT)\n");
+        std::fprintf(stderr, "%s\n", cliText("shop.no-lines").c_str());
         if (sub == "status" && !a.has("--watch")) {
             if (a.has("--json"))
                 std::printf("[]\n");
@@ -73,7 +71,7 @@ int runShop(std::span<const std::string> argv) {
     for (const char* flag : {"--json", "--watch"})
         if (a.has(flag))
             out.emplace_back(flag);
-    for (const char* option : {"--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id"})
+    for (const char* option : {"--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id", "--lang"})
         if (const auto v = a.value(option)) {
             out.emplace_back(option);
             out.push_back(*v);

@@ -7,6 +7,7 @@
 // to k528/<machine>/alarms over MQTT (libmosquitto), with a last will.
 #include "catalog/messages.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "link_line.h"
 #include "mqtt_client.h"
 #include "shop_publisher.h"
@@ -16,8 +17,10 @@
 #include "shop/state_time.h"
 #include "shop_poll.h"
 #include "util/json.h"
+#include "util/utf8.h"
 
 #include <QThread>
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -32,33 +35,58 @@ namespace {
 
 std::string clockOf(std::int64_t unixMs) { return shop::localTimeText(unixMs, "%H:%M:%S"); }
 
-std::string stateText(const shop::MachineState& s, std::int64_t nowMs) {
-    char head[160];
-    std::snprintf(head, sizeof head, "%-16s %-7s %-8s", s.machine.c_str(), s.online ? "online" : "offline",
-                  shop::activityName(s.activity));
-    std::string t = head;
+// `s` padded with blanks to `width` characters (UTF-8: a Russian word is
+// wider in bytes than in characters).
+std::string padded(std::string s, std::size_t width) {
+    const std::size_t n = utf8::length(s);
+    return n >= width ? s : s + std::string(width - n, ' ');
+}
+
+std::string activityWord(shop::Activity a) {
+    switch (a) {
+    case shop::Activity::Offline: return cliText("shop.offline");
+    case shop::Activity::Alarm: return cliText("shop.alarm");
+    case shop::Activity::Run: return cliText("shop.run");
+    case shop::Activity::Idle: return cliText("shop.idle");
+    }
+    return cliText("shop.offline");
+}
+
+// One machine's state on a line in the command's language; `said` is why it is
+// offline as core's link catalog says it (s.why is its English, for --json).
+std::string stateText(const shop::MachineState& s, std::int64_t nowMs, const link::Said& said) {
+    const bool ru = russianCommandLine();
+    // Each column as wide as its longest word in this language.
+    std::size_t onlineWidth = 0, activityWidth = 0;
+    for (const std::string& w : {cliText("shop.online"), cliText("shop.offline")})
+        onlineWidth = std::max(onlineWidth, utf8::length(w));
+    for (shop::Activity a : {shop::Activity::Offline, shop::Activity::Alarm, shop::Activity::Run, shop::Activity::Idle})
+        activityWidth = std::max(activityWidth, utf8::length(activityWord(a)));
+    std::string t = padded(s.machine, 16) + " " +
+                    padded(s.online ? cliText("shop.online") : cliText("shop.offline"), onlineWidth) + " " +
+                    padded(activityWord(s.activity), activityWidth + 1);
     if (s.online) {
         const link::LiveState& l = s.live;
-        t += " F" + std::to_string(l.mode) + (l.pcReady ? " (РАБОТА С ПЭВМ)" : "") + ", program " +
-             std::to_string(l.program) + " N" + std::to_string(l.frame);
+        // The mode is the panel's own name, Russian in either language (as core's link texts say it).
+        t += cliText("shop.live", {std::to_string(l.mode), l.pcReady ? " (РАБОТА С ПЭВМ)" : "",
+                                   std::to_string(l.program), std::to_string(l.frame)});
         for (int n : l.alarms) {
-            t += "; alarm " + std::to_string(n);
+            t += cliText("shop.live-alarm", {std::to_string(n)});
             if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(n))
-                t += " «" + std::string(m->textRu) + "»";
+                t += " «" + std::string(ru ? m->textRu : m->textEn) + "»";
         }
     } else {
-        t += " " + s.why;
+        t += " " + (said.id.empty() ? s.why : link::render(said, ru));
     }
-    char since[80];
-    std::snprintf(since, sizeof since, "; since %s (%.1f s)", clockOf(s.sinceMs).c_str(),
-                  static_cast<double>(nowMs - s.sinceMs) / 1000.0);
-    return t + since + "; " + s.line;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.1f", static_cast<double>(nowMs - s.sinceMs) / 1000.0);
+    return t + cliText("shop.since", {clockOf(s.sinceMs), seconds}) + "; " + s.line;
 }
 
 bool outputLost() {
     if (std::fflush(stdout) == 0 && !std::ferror(stdout))
         return false;
-    std::fprintf(stderr, "k528: cannot write standard output\n");
+    std::fprintf(stderr, "%s\n", cliText("shop.stdout-lost").c_str());
     std::clearerr(stdout);
     return true;
 }
@@ -100,50 +128,50 @@ struct Options {
 
 int runShopQt(std::span<const std::string> argv) {
     const Args args(argv, {"--json", "--watch"},
-                    {"--line", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id", "--db"});
+                    {"--line", "--timeout-ms", "--interval-ms", "--seconds", "--mqtt", "--client-id", "--db", "--lang"});
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1 || (args.positional()[0] != "status" && args.positional()[0] != "publish"))
-        return usageError("shop takes status or publish");
+        return usageError(cliText("shop.usage.sub"));
     const bool publish = args.positional()[0] == "publish";
     Options o;
     for (const std::string& item : args.values("--line")) {
         const std::size_t eq = item.find('=');
         if (eq == std::string::npos || eq == 0)
-            return usageError("--line takes MACHINE=LINE, not '" + item + "'");
+            return usageError(cliText("shop.usage.line", {item}));
         std::string error;
         const auto a = profile::parseLine(item.substr(eq + 1), error);
         if (!a)
-            return usageError("machine " + item.substr(0, eq) + ": " + error);
+            return usageError(cliText("shop.usage.line-machine", {item.substr(0, eq), error}));
         o.lines.push_back({item.substr(0, eq), *a});
         o.lineTexts.push_back(profile::formatLine(*a));
     }
     if (const auto t = args.value("--timeout-ms")) {
         const auto v = parseInt(*t);
         if (!v || *v < 10 || *v > 60000)
-            return usageError("--timeout-ms takes 10..60000");
+            return usageError(cliText("opt.timeout"));
         o.timeoutMs = static_cast<int>(*v);
     }
     if (const auto t = args.value("--interval-ms")) {
         const auto v = parseInt(*t);
         if (!v || *v < 10 || *v > 3600000)
-            return usageError("--interval-ms takes 10..3600000");
+            return usageError(cliText("shop.usage.interval"));
         o.intervalMs = static_cast<int>(*v);
     }
     if (const auto t = args.value("--seconds")) {
         const auto v = parseNumber(*t);
         if (!v || *v < 0)
-            return usageError("--seconds takes a duration in seconds");
+            return usageError(cliText("opt.seconds"));
         o.seconds = *v;
     }
     const bool asJson = args.has("--json");
     const bool watch = args.has("--watch");
     if (!publish && args.value("--mqtt"))
-        return usageError("--mqtt is an option of shop publish");
+        return usageError(cliText("shop.usage.mqtt-status"));
     if (publish && !args.value("--mqtt"))
-        return usageError("shop publish needs --mqtt mqtt://HOST[:PORT]");
+        return usageError(cliText("shop.usage.mqtt"));
     if (!publish && !watch && (args.value("--interval-ms") || args.value("--seconds")))
-        return usageError("--interval-ms and --seconds go with shop status --watch or shop publish");
+        return usageError(cliText("shop.usage.watch"));
 
     QString perror;
     shop::Poller poller(o.lines, o.timeoutMs, perror);
@@ -165,7 +193,7 @@ int runShopQt(std::span<const std::string> argv) {
             if (asJson)
                 all.push_back(shop::stateJson(s, r.atMs));
             else
-                std::printf("%s\n", stateText(s, r.atMs).c_str());
+                std::printf("%s\n", stateText(s, r.atMs, r.said).c_str());
         }
         if (asJson)
             std::printf("%s\n", json::dump(all).c_str());
@@ -185,12 +213,13 @@ int runShopQt(std::span<const std::string> argv) {
         for (const auto& l : o.lines)
             names.push_back(l.machine);
         if (!mq.start(*args.value("--mqtt"), clientId, o.intervalMs, names, error)) {
-            std::fprintf(stderr, "k528 shop publish: cannot connect to %s: %s\n", args.value("--mqtt")->c_str(),
-                         error.c_str());
+            std::fprintf(stderr, "%s\n", cliText("shop.publish.no-broker", {*args.value("--mqtt"), error}).c_str());
             return ExitUsage;
         }
-        std::fprintf(stderr, "k528 shop publish: %zu machines every %d ms to %s as %s\n", o.lines.size(),
-                     o.intervalMs, args.value("--mqtt")->c_str(), clientId.c_str());
+        std::fprintf(stderr, "%s\n",
+                     cliText("shop.publish.start", {std::to_string(o.lines.size()), std::to_string(o.intervalMs),
+                                                    *args.value("--mqtt"), clientId})
+                         .c_str());
     }
     // Each machine's time in each state, added to the database's record
     // (source shop@HOST) once a minute, when a state changes and at the end.
@@ -258,11 +287,14 @@ int runShopQt(std::span<const std::string> argv) {
             } else {
                 if (changed)
                     std::printf("%s\n", asJson ? json::dump(shop::stateJson(s, r.atMs)).c_str()
-                                               : stateText(s, r.atMs).c_str());
+                                               : stateText(s, r.atMs, r.said).c_str());
                 for (const shop::AlarmEvent& e : events)
                     if (!asJson)
-                        std::printf("%s alarm %d %s at %s\n", s.machine.c_str(), e.number,
-                                    e.raised ? "raised" : "cleared", clockOf(e.atMs).c_str());
+                        std::printf("%s\n", (e.raised ? cliText("shop.alarm-raised", {s.machine, std::to_string(e.number),
+                                                                                         clockOf(e.atMs)})
+                                                       : cliText("shop.alarm-cleared", {s.machine, std::to_string(e.number),
+                                                                                          clockOf(e.atMs)}))
+                                                .c_str());
                     else
                         std::printf("%s\n", json::dump(shop::alarmJson(e)).c_str());
                 if ((changed || !events.empty()) && outputLost()) {
@@ -279,10 +311,10 @@ int runShopQt(std::span<const std::string> argv) {
     writeTimes(shop::unixMsNow());
     if (publish) {
         if (!mq.stop(3000)) {
-            std::fprintf(stderr, "k528 shop publish: the broker did not acknowledge every message\n");
+            std::fprintf(stderr, "%s\n", cliText("shop.publish.unacknowledged").c_str());
             code = ExitUsage;
         }
-        std::fprintf(stderr, "k528 shop publish: stopped after %ld messages\n", mq.published());
+        std::fprintf(stderr, "%s\n", cliText("shop.publish.stopped", {std::to_string(mq.published())}).c_str());
     }
     return code;
 }

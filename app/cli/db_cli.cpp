@@ -7,6 +7,7 @@
 #include "catalog/messages.h"
 #include "catalog/rparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/db_texts.h"
 #include "db/explain.h"
@@ -195,8 +196,7 @@ bool parseLangOption(const Args& a, Lang& lang) {
         else if (*l == "en")
             lang = Lang::En;
         else {
-            usageError(russianCommandLine() ? "--lang — ru или en, а не «" + *l + "»"
-                                            : "--lang is ru or en, not '" + *l + "'");
+            usageError(cliText("opt.lang", {*l}));
             return false;
         }
     }
@@ -284,7 +284,7 @@ std::optional<MachineRef> parseRef(const std::string& s) {
     r.name = s.substr(0, at);
     const auto n = parseInt(s.substr(at + 1));
     if (!n || *n < 1 || *n > 1000000000) {
-        usageError("'" + s + "': the revision after @ must be a positive number");
+        usageError(cliText("db.usage.revision", {s}));
         return std::nullopt;
     }
     r.revision = static_cast<int>(*n);
@@ -375,13 +375,11 @@ std::string rValueText(const MachineProfile& p, int n, std::int64_t v, Lang lang
 }
 
 std::string machineHeader(const db::MachineInfo& m, std::optional<int> revision) {
-    std::string s = "machine   " + m.name + (m.title.empty() ? "" : " — " + m.title) + "\n";
+    std::string s = cliText("db.show.machine", {m.name + (m.title.empty() ? "" : " — " + m.title)}) + "\n";
     if (revision && *revision != m.revision)
-        s += "revision  " + std::to_string(*revision) + " (current " + std::to_string(m.revision) +
-             ")\n";
+        s += cliText("db.show.revision-of", {std::to_string(*revision), std::to_string(m.revision)}) + "\n";
     else
-        s += "revision  " + std::to_string(m.revision) + ", changed " + m.changedAt + " by " +
-             m.changedBy + "\n";
+        s += cliText("db.show.revision", {std::to_string(m.revision), m.changedAt, m.changedBy}) + "\n";
     return s;
 }
 
@@ -389,8 +387,8 @@ std::string programSummary(int n, const std::string& text) {
     const auto lines = std::count(text.begin(), text.end(), '\n');
     const std::string title = db::programTitle(text);
     return "L" + pad(std::to_string(n), 3) + pad(title, 40) + " " +
-           padLeft(std::to_string(lines), 4) + " lines  sha256 " +
-           db::sha256Hex(text).substr(0, 16) + "\n";
+           cliText("db.show.program-lines", {padLeft(std::to_string(lines), 4), db::sha256Hex(text).substr(0, 16)}) +
+           "\n";
 }
 
 // Changes of one revision, for --history and set.
@@ -399,7 +397,7 @@ std::string changeLines(const std::vector<profile::Change>& changes, const db::D
     std::string s;
     for (const auto& c : changes) {
         if (c.section == profile::DiffSection::Program) {
-            s += "  " + c.key + ": " + (!c.before ? "added" : !c.after ? "removed" : "changed");
+            s += "  " + c.key + ": " + changeWord(c.before.has_value(), c.after.has_value());
             if (c.before && c.before->size() == 64 && c.after && c.after->size() == 64)
                 s += " (sha256 " + c.before->substr(0, 12) + " -> " + c.after->substr(0, 12) + ")";
             s += "\n";
@@ -417,18 +415,26 @@ std::string changeLines(const std::vector<profile::Change>& changes, const db::D
             continue;
         }
         s += "  " + c.key + (c.label.empty() ? "" : " " + c.label) + ": " +
-             c.before.value_or("(none)") + " -> " + c.after.value_or("(none)") + "\n";
+             c.before.value_or(cliText("db.change.none")) + " -> " + c.after.value_or(cliText("db.change.none")) + "\n";
     }
     return s;
+}
+
+std::string changeWord(bool before, bool after) {
+    return !before ? cliText("db.change.added") : !after ? cliText("db.change.removed") : cliText("db.change.changed");
+}
+
+std::string changeCount(std::size_t n) {
+    return n == 1 ? cliText("db.changes.one") : cliText("db.changes.many", {std::to_string(n)});
 }
 
 
 std::string savedText(const std::string& machine, const db::SaveResult& r, Lang lang) {
     std::string s;
     if (!r.changed)
-        return machine + ": no changes (revision " + std::to_string(r.revision) + ")\n";
-    s = machine + ": revision " + std::to_string(r.revision) + " (" +
-        std::to_string(r.changes.size()) + (r.changes.size() == 1 ? " change" : " changes") + ")\n";
+        return cliText("db.saved.nothing", {machine, std::to_string(r.revision)}, lang == Lang::Ru) + "\n";
+    s = cliText("db.saved", {machine, std::to_string(r.revision), changeCount(r.changes.size())}, lang == Lang::Ru) +
+        "\n";
     if (r.changes.size() <= 40) {
         for (const auto& c : r.changes) {
             if (c.section != profile::DiffSection::Program) {

@@ -105,6 +105,11 @@ std::string programSummary(int n, const std::string& text);
 std::string changeLines(const std::vector<profile::Change>& changes, const db::Database* d,
                         const std::string& machine, int revision);
 
+// A program's change in a word ("added", "removed", "changed") and a count
+// of changes ("1 change", "3 changes"), in the command line's language.
+std::string changeWord(bool before, bool after);
+std::string changeCount(std::size_t n);
+
 std::string savedText(const std::string& machine, const db::SaveResult& r, Lang lang);
 
 // The subcommands (args after the subcommand's name).

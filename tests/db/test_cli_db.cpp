@@ -73,13 +73,15 @@ private slots:
     void initCreatesThenReports() {
         auto r = db({"init"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(r.out.contains(QString("schema    version %1 (created)").arg(k528::db::latestSchemaVersion())),
+        QVERIFY2(r.out.contains(QStringLiteral("схема       версия %1 (создана)").arg(k528::db::latestSchemaVersion())),
                  qPrintable(r.out));
-        QVERIFY(r.out.contains("loaded    grinder-205, training-lathe (built-in machines)"));
-        QVERIFY(r.out.contains("machines  2"));
-        r = db({"init"});
+        QVERIFY(r.out.contains(QStringLiteral("загружены   grinder-205, training-lathe (встроенные станки)")));
+        QVERIFY(r.out.contains(QStringLiteral("станков     2")));
+        r = db({"init", "--lang", "en"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.contains("(up to date)"));
+        QVERIFY2(r.out.contains(QString("schema    version %1 (up to date)").arg(k528::db::latestSchemaVersion())),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains("machines  2"));
         QVERIFY(!r.out.contains("loaded"));
         QCOMPARE(runK528({"db", "init", "extra", "--db", db_}).exitCode, 2);
     }
@@ -120,7 +122,8 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         const QStringList lines = r.out.split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3);
-        QVERIFY(lines[0].startsWith("MACHINE"));
+        QVERIFY(lines[0].startsWith(QStringLiteral("СТАНОК ")));
+        QVERIFY(db({"machines", "--lang", "en"}).out.startsWith("MACHINE "));
         QVERIFY(lines[1].startsWith("grinder-205 "));
         QVERIFY(lines[1].contains("приложение Ж"));
         r = db({"machines", "--json"});
@@ -137,7 +140,7 @@ private slots:
         QCOMPARE(db({"init"}).exitCode, 0);
         auto r = db({"show", "grinder-205"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.startsWith("machine   grinder-205 — Внутришлифовальный"));
+        QVERIFY(r.out.startsWith(QStringLiteral("станок      grinder-205 — Внутришлифовальный")));
         const QStringList lines = r.out.split('\n');
         const auto line = [&](const QString& start) {
             for (const auto& l : lines)
@@ -163,7 +166,7 @@ private slots:
         QVERIFY(r.out.contains("диапазон:  0...32767"));
         QVERIFY(r.out.contains("Z4106"));
         QVERIFY(r.out.contains("0,8533 * Vmax / Тразг")); // the manual's text
-        QVERIFY(r.out.contains("history of C022"));
+        QVERIFY(r.out.contains(QStringLiteral("история C022")));
         QCOMPARE(db({"show", "grinder-205", "--c", "C074"}).out.contains("(ось Z) = 4445"), true);
 
         r = db({"show", "grinder-205", "--r", "204"});
@@ -211,7 +214,7 @@ private slots:
         auto r =
             db({"set", "grinder-205", "C022=2133", "R12=5", "#9=ПРОВЕРКА", "--author", "Иванов"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(r.out.startsWith("grinder-205: revision 2 (3 changes)"), qPrintable(r.out));
+        QVERIFY2(r.out.startsWith(QStringLiteral("grinder-205: ревизия 2 (изменений: 3)")), qPrintable(r.out));
         QVERIFY(r.out.contains("C022 УСКОРЕНИЕ 1: 2000 -> 2133"));
         QVERIFY(r.out.contains("R12"));
         // A cross-check error: rejected whole with the manual's message.
@@ -235,7 +238,7 @@ private slots:
         // Nothing of the rejected writes landed.
         r = db({"show", "grinder-205", "--c", "22"});
         QVERIFY(r.out.contains("= 2133"));
-        QVERIFY(r.out.contains("revision 2"));
+        QVERIFY(r.out.contains(QStringLiteral("ревизия 2")));
         QVERIFY(r.out.contains("Иванов: 2000 -> 2133"));
         // Allowed on purpose.
         r = db({"set", "grinder-205", "C069=1", "--allow-errors"});
@@ -245,10 +248,10 @@ private slots:
         r = db(
             {"set", "grinder-205", "R12=", "A10=Нет воздуха", "x.kv=1.5", "title=Шлифовальный 2"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.contains("R12 Параметр пользователя: 5 -> (none)"));
+        QVERIFY(r.out.contains(QStringLiteral("R12 Параметр пользователя: 5 -> (нет)")));
         r = db({"show", "grinder-205", "--history", "1"});
-        QVERIFY(r.out.contains("revision 4"));
-        QVERIFY(!r.out.contains("revision 3"));
+        QVERIFY(r.out.contains(QStringLiteral("ревизия 4")));
+        QVERIFY(!r.out.contains(QStringLiteral("ревизия 3")));
         QVERIFY(r.out.contains("x.kv: 1 -> 1.5"));
         // Usage errors.
         QCOMPARE(db({"set", "grinder-205"}).exitCode, 2);
@@ -536,12 +539,12 @@ private slots:
         // Exists already.
         auto r = db({"import", f});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY(r.err.contains("already exists"));
+        QVERIFY2(r.err.contains(QStringLiteral("станок training-lathe уже есть в ")), qPrintable(r.err));
         QVERIFY(r.err.contains("--replace"));
         // Under another name: exact.
         r = db({"import", f, "--as", "lathe-2", "--author", "Петров"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.startsWith("lathe-2: revision 1"));
+        QVERIFY(r.out.startsWith(QStringLiteral("lathe-2: ревизия 1")));
         QCOMPARE(db({"export", "lathe-2"}).out,
                  QString(good).replace("name=training-lathe", "name=lathe-2"));
         // A value outside its range: the file's line, nothing imported.
@@ -586,9 +589,10 @@ private slots:
         QVERIFY(writeFile(f, changed.toUtf8()));
         r = db({"import", f, "--replace"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY2(r.out.startsWith("lathe-2: revision 2 (1 change)"), qPrintable(r.out));
+        QVERIFY2(r.out.startsWith(QStringLiteral("lathe-2: ревизия 2 (1 изменение)")), qPrintable(r.out));
         QVERIFY(r.out.contains("C021 T контроля ДОС: 1000 -> 1200"));
-        QVERIFY(db({"import", f, "--replace"}).out.contains("no changes"));
+        QVERIFY(db({"import", f, "--replace"}).out.contains(QStringLiteral("изменений нет")));
+        QVERIFY(db({"import", f, "--replace", "--lang", "en"}).out.contains("no changes"));
         // From standard input.
         r = db({"import", "-", "--as", "lathe-5"}, good.toUtf8());
         QCOMPARE(r.exitCode, 0);
@@ -622,7 +626,7 @@ private slots:
                  QString("--- grinder-205@1\n+++ grinder-205@2\n"
                          "C022 УСКОРЕНИЕ 1: 2000 -> 2133\nC023 УСКОРЕНИЕ 2: 4000 -> 4266\n"));
         r = db({"diff", "grinder-205", "grinder-205"});
-        QVERIFY(r.out.endsWith("no differences\n"));
+        QVERIFY(r.out.endsWith(QStringLiteral("различий нет\n")));
         const QString f = dir_.filePath("g.k528m");
         QVERIFY(writeFile(f, builtinText("grinder-205").toUtf8()));
         r = db({"diff", f, "grinder-205", "--json"});
@@ -636,7 +640,8 @@ private slots:
         QVERIFY(r.out.contains("L1: changed") || r.out.contains("L1:"));
         r = db({"diff", "grinder-205", "nothing-here"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY(r.err.contains("'nothing-here' is neither"));
+        QVERIFY2(r.err.contains(QStringLiteral("«nothing-here» — не станок ")), qPrintable(r.err));
+        QVERIFY(db({"diff", "grinder-205", "nothing-here", "--lang", "en"}).err.contains("'nothing-here' is neither"));
         QCOMPARE(db({"diff", "grinder-205@9", "grinder-205"}).exitCode, 2);
         QCOMPARE(db({"diff", "grinder-205"}).exitCode, 2);
     }
@@ -802,7 +807,7 @@ private slots:
         QVERIFY2(ran.exitCode == 0, qPrintable(ran.err));
         QCOMPARE(ran.out, ranAsOwner.out);
         QVERIFY2(checked.exitCode == 0, qPrintable(checked.err + checked.out));
-        QVERIFY2(init.exitCode == 0 && init.out.contains("read-only (permission denied)"), qPrintable(init.err));
+        QVERIFY2(init.exitCode == 0 && init.out.contains(QStringLiteral("доступ      только чтение (нет права на запись)")), qPrintable(init.err));
         QCOMPARE(readAll(file), before);
         QCOMPARE(QDir(folder).entryList(QDir::Files), filesBefore);
     }

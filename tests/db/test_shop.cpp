@@ -681,13 +681,19 @@ private slots:
         QCOMPARE(db({"init"}).exitCode, 0);
         auto r = db({"release", "grinder-205", "L11", "--note", "проверена", "--author", "Петров"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QVERIFY2(r.out.startsWith("released  grinder-205 L11 as of revision 1"), qPrintable(r.out));
+        // What the commands report is in their language (Russian unless --lang en).
+        QVERIFY2(r.out.startsWith(QStringLiteral("выпущена    grinder-205 L11 в ревизии 1 (SHA-256 ")) &&
+                     r.out.contains(QStringLiteral("…): ")) && !hasEnglishSentence(r.out),
+                 qPrintable(r.out));
         QVERIFY(r.out.contains(": проверена"));
         r = db({"show", "grinder-205", "--programs"});
-        QVERIFY2(r.out.contains("released"), qPrintable(r.out));
-        QVERIFY2(r.out.contains("draft"), qPrintable(r.out));
-        r = db({"withdraw", "grinder-205", "11"});
-        QVERIFY2(r.exitCode == 0 && r.out.startsWith("withdrawn grinder-205 L11"), qPrintable(r.out + r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("выпущена — выпустил ")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("черновик")) && !hasEnglishSentence(r.out), qPrintable(r.out));
+        r = db({"show", "grinder-205", "--programs", "--lang", "en"});
+        QVERIFY2(r.out.contains("released by ") && r.out.contains("draft"), qPrintable(r.out));
+        r = db({"withdraw", "grinder-205", "11", "--lang", "en"});
+        QVERIFY2(r.exitCode == 0 && r.out.startsWith("withdrawn grinder-205 L11 as of revision 1"),
+                 qPrintable(r.out + r.err));
         r = db({"withdraw", "grinder-205", "L11"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("программа L11 станка grinder-205 уже отозвана; ничего не записано")), qPrintable(r.err));
@@ -696,29 +702,43 @@ private slots:
 
         r = db({"log"});
         QCOMPARE(r.exitCode, 0);
-        QVERIFY(r.out.contains("no transfers on record"));
+        QCOMPARE(r.out, QStringLiteral("передач в журнале нет\n"));
+        QCOMPARE(db({"log", "--lang", "en"}).out, QString("no transfers on record\n"));
         {
             db::Database d = db::Database::open(testLocation(dir, "c.db"), testOptions());
             d.recordTransfer(pushEntry("grinder-205", 1, "ok"));
             d.recordTransfer(pushEntry("training-lathe", 1, "partial"));
         }
-        r = db({"log", "grinder-205"});
+        r = db({"log", "grinder-205", "--lang", "en"});
         QVERIFY2(r.out.contains("push  ok") && r.out.contains("L11 1a2b3c4d new") &&
                      !r.out.contains("training-lathe"),
                  qPrintable(r.out));
+        r = db({"log", "grinder-205"});
+        QVERIFY2(r.out.contains(QStringLiteral("в станок   успешно ")) && r.out.contains("L11 1a2b3c4d new") &&
+                     !r.out.contains("push"),
+                 qPrintable(r.out));
+        r = db({"log", "training-lathe"});
+        QVERIFY2(r.out.contains(QStringLiteral("в станок   частично")), qPrintable(r.out));
         r = db({"log", "--json"});
         const QJsonArray log = QJsonDocument::fromJson(r.out.toUtf8()).object()["transfers"].toArray();
         QCOMPARE(log.size(), 2);
         QCOMPARE(log[0].toObject()["machine"].toString(), QString("training-lathe"));
         QCOMPARE(log[1].toObject()["items"].toArray()[1].toObject()["crc32"].toString(), QString("1a2b3c4d"));
         QCOMPARE(db({"log", "--since", "yesterday"}).exitCode, 2);
-        QCOMPARE(db({"log", "--since", "2999-01-01"}).out, QString("no transfers on record\n"));
+        QCOMPARE(db({"log", "--since", "2999-01-01", "--lang", "en"}).out, QString("no transfers on record\n"));
+        QCOMPARE(db({"log", "no-such", "--since", "2999-01-01"}).out, QStringLiteral("передач станка no-such в журнале нет\n"));
 
         const QString copy = dir.filePath("copy.db");
         r = db({"copy", "--to", copy});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains("machines  2, revisions 2, program versions 6, releases 2"), qPrintable(r.out));
-        QVERIFY(r.out.contains("in one transaction"));
+        QVERIFY2(r.out.contains(QStringLiteral("станков     2, ревизий 2, версий программ 6, выпусков 2")) &&
+                     r.out.contains(QStringLiteral(" в одной транзакции")) && !hasEnglishSentence(r.out),
+                 qPrintable(r.out));
+        const QString copyEn = dir.filePath("copy-en.db");
+        r = db({"copy", "--to", copyEn, "--lang", "en"});
+        QVERIFY2(r.out.contains("machines  2, revisions 2, program versions 6, releases 2") &&
+                     r.out.contains("in one transaction"),
+                 qPrintable(r.out + r.err));
         QCOMPARE(runK528({"db", "export", "grinder-205", "--db", copy}).out,
                  db({"export", "grinder-205"}).out);
         r = db({"copy", "--to", copy});
@@ -731,8 +751,11 @@ private slots:
         if (onPostgres()) {
             // Roles are the cluster's: members granted by other tests may show.
             QVERIFY2(r.out.contains("k528_technologist") && r.out.contains("k528_operator") &&
-                         r.out.contains("k528_viewer") && r.out.contains("members: "),
+                         r.out.contains("k528_viewer") && r.out.contains(QStringLiteral("члены: ")) &&
+                         r.out.contains(QStringLiteral("читать станки, программы")) && !hasEnglishSentence(r.out),
                      qPrintable(r.out));
+            r = db({"roles", "--lang", "en"});
+            QVERIFY2(r.out.contains("members: ") && r.out.contains("read machines, programs, history"), qPrintable(r.out));
             QVERIFY(!r.out.contains("cmd_oper"));
             sqlOf(db::Database::open(testLocation(dir, "c.db"), testOptions()))
                 .exec("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'cmd_oper') "
@@ -748,8 +771,11 @@ private slots:
             QVERIFY2(r.exitCode != 0 && r.err.contains(QStringLiteral("нет роли «boss»: роли — trainer, technologist, operator и viewer")) &&
                          !hasEnglishSentence(r.err),
                      qPrintable(r.err));
-        } else
-            QVERIFY2(r.out.contains("one user, who may do everything"), qPrintable(r.out));
+        } else {
+            QVERIFY2(r.out.contains(QStringLiteral("один пользователь, которому можно всё")) && !hasEnglishSentence(r.out),
+                     qPrintable(r.out));
+            QVERIFY2(db({"roles", "--lang", "en"}).out.contains("one user, who may do everything"), qPrintable(r.out));
+        }
     }
 };
 

@@ -174,8 +174,11 @@ private slots:
         }
         QCOMPARE(programs, 3);
         // The text log names it.
-        const CliResult text = db({"log", "training-lathe"});
+        const CliResult text = db({"log", "training-lathe", "--lang", "en"});
         QVERIFY2(text.out.contains("pull  ok") && text.out.contains("push  ok"), qPrintable(text.out));
+        const CliResult ru = db({"log", "training-lathe"});
+        QVERIFY2(ru.out.contains(QStringLiteral("из станка  успешно")) && ru.out.contains(QStringLiteral("в станок   успешно")),
+                 qPrintable(ru.out));
     }
 
     // A line that does not answer: the failed push is on record too.

@@ -51,7 +51,7 @@ depends=$(dpkg-deb -f "$deb" Depends)
 echo "$depends" | grep -q libqt6serialbus6 || fail "Depends lacks Qt SerialBus (the link plugin): $depends"
 echo "$depends" | grep -q libqt6widgets6 || fail "Depends lacks Qt: $depends"
 echo "$depends" | grep -q libsqlite3 || fail "Depends lacks SQLite (core/db links it): $depends"
-db=$(K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" db init) || fail "k528 db init exited $?"
+db=$(K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" db init --lang en) || fail "k528 db init exited $?"
 echo "$db" | grep -q "schema    version" || fail "unexpected k528 db init output: $db"
 # k528 setup-sheet writes its PDF through the installed k528-sheet, without a display.
 sheet=$($nodisplay K528_DB="$tmp/k528.db" "$tmp/root/usr/bin/k528" setup-sheet --out "$tmp/sheet.pdf" "$program" 2>&1) ||

@@ -103,7 +103,10 @@ private slots:
                          "--db", shop_.db});
         QVERIFY(pub.waitForStarted());
         QByteArray said;
-        QTRY_VERIFY_WITH_TIMEOUT((said += pub.readAllStandardError()).contains("k528 shop publish: 3 machines"), 10000);
+        // Its banner in the command's language (Russian by default).
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (said += pub.readAllStandardError()).contains(QStringLiteral("k528 shop publish: станков: 3, каждые 100 мс").toUtf8()),
+            10000);
         // The retained states: a subscriber that comes later gets every machine's.
         QTest::qWait(500);
         QProcess states;
@@ -193,12 +196,12 @@ private slots:
         CliResult r = k528({"shop", "publish", "--mqtt", "http://127.0.0.1:1883"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("is not mqtt://HOST[:PORT]"), qPrintable(r.err));
-        r = k528({"shop", "publish"});
+        r = k528({"shop", "publish", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("needs --mqtt"), qPrintable(r.err));
         // Nobody listens there (the port of a2's controller is not MQTT's; a closed one refuses).
         const std::vector<quint16> closed = freePorts(1);
-        r = k528({"shop", "publish", "--mqtt", "mqtt://127.0.0.1:" + QString::number(closed[0])});
+        r = k528({"shop", "publish", "--mqtt", "mqtt://127.0.0.1:" + QString::number(closed[0]), "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("cannot connect to mqtt://127.0.0.1:") && r.err.contains("refused"), qPrintable(r.err));
     }

@@ -70,9 +70,15 @@ private slots:
         QVERIFY2(some.exitCode == 0, qPrintable(some.err));
         const QStringList lines = some.out.trimmed().split('\n');
         QCOMPARE(lines.size(), 2);
-        QVERIFY2(lines[0].startsWith("m03") && lines[0].contains("online") && lines[0].contains("F7 (РАБОТА С ПЭВМ)"),
+        // In the command's language: Russian by default, English with --lang en.
+        QVERIFY2(lines[0].startsWith("m03") && lines[0].contains(QStringLiteral("на связи")) &&
+                     lines[0].contains(QStringLiteral("F7 (РАБОТА С ПЭВМ), программа ")),
                  qPrintable(some.out));
         QVERIFY2(lines[1].startsWith("m04") && lines[1].contains(" F2,"), qPrintable(some.out));
+        const CliResult english = k528({"shop", "status", "m03", "--lang", "en"});
+        QVERIFY2(english.out.startsWith("m03") && english.out.contains("online") &&
+                     english.out.contains("F7 (РАБОТА С ПЭВМ), program ") && english.out.contains("; since "),
+                 qPrintable(english.out));
     }
 
     void mbpollReadsTheirRegisters() {
@@ -145,11 +151,11 @@ private slots:
         QVERIFY2(r.exitCode == 0 && jsonList(r.out).size() == 1, qPrintable(r.out + r.err));
         QCOMPARE(jsonList(r.out)[0].toObject()["line"].toString(), "tcp://127.0.0.1:" + QString::number(shop_.ports[0]) + "/1");
         // A machine without a line, named: said so; an unknown one too.
-        r = k528({"shop", "status", "training-lathe"});
+        r = k528({"shop", "status", "training-lathe", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("machine 'training-lathe' has no line: k528 db set training-lathe line="),
                  qPrintable(r.err));
-        r = k528({"shop", "status", "nosuch"});
+        r = k528({"shop", "status", "nosuch", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("no machine 'nosuch'"), qPrintable(r.err));
         // A line nobody listens on: offline with the reason, the others as they are.

@@ -1,0 +1,260 @@
+// The command line speaks one language at a time: Russian by default, English
+// with --lang en. Its own words come from one catalog (app/cli/cli_texts.h)
+// with both languages of every id; what `k528 db` reports, what `k528 shop`
+// prints and the option errors are said in Russian without an English
+// sentence left over, and in English as before.
+#include "cli_runner.h"
+#include "cli_texts.h"
+#include "db/db_test_util.h"
+
+#include <QDir>
+#include <QFile>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <set>
+
+using k528::testing::hasEnglishSentence;
+
+namespace {
+
+QString fromView(std::string_view s) { return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())); }
+
+std::set<QString> placeholders(const QString& text) {
+    std::set<QString> out;
+    static const QRegularExpression re(QStringLiteral("%[1-9]"));
+    for (auto it = re.globalMatch(text); it.hasNext();)
+        out.insert(it.next().captured(0));
+    return out;
+}
+
+bool hasCyrillic(const QString& text) {
+    for (const QChar c : text)
+        if (c.script() == QChar::Script_Cyrillic)
+            return true;
+    return false;
+}
+
+// The command line's sources (app/cli), each file's text.
+QStringList cliSources() {
+    QStringList texts;
+    const QDir dir(QStringLiteral(K528_SOURCE_DIR "/app/cli"));
+    for (const QString& name : dir.entryList({QStringLiteral("*.cpp"), QStringLiteral("*.h")}, QDir::Files)) {
+        QFile f(dir.filePath(name));
+        if (f.open(QIODevice::ReadOnly))
+            texts << QString::fromUtf8(f.readAll());
+    }
+    return texts;
+}
+
+} // namespace
+
+class TestCliLang : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir dir_;
+    QString db_;
+
+    CliResult db(QStringList args) {
+        args.prepend(QStringLiteral("db"));
+        args << QStringLiteral("--db") << db_;
+        return runK528(args);
+    }
+    CliResult en(QStringList args) { return db(args << QStringLiteral("--lang") << QStringLiteral("en")); }
+
+private slots:
+    void initTestCase() {
+        QVERIFY(dir_.isValid());
+        db_ = dir_.filePath(QStringLiteral("lang.db"));
+        qputenv("K528_DB", QFile::encodeName(db_));
+    }
+
+    // Every text has both languages with the same arguments: Russian with
+    // Russian words, English without a Russian one (the panel's own names,
+    // quoted in «», aside).
+    void catalogHasBothLanguages() {
+        std::set<std::string_view> ids;
+        QVERIFY(k528::cli::cliTexts().texts().size() > 80);
+        for (const k528::util::CatalogText& t : k528::cli::cliTexts().texts()) {
+            const QString id = fromView(t.id), ru = fromView(t.ru), en = fromView(t.en);
+            QVERIFY2(ids.insert(t.id).second, qPrintable(id + ": twice"));
+            QVERIFY2(!ru.isEmpty() && !en.isEmpty() && ru != en, qPrintable(id));
+            QVERIFY2(hasCyrillic(ru), qPrintable(id + ": " + ru));
+            QString enOwn = en;
+            enOwn.remove(QRegularExpression(QStringLiteral("«[^«»]*»")));
+            QVERIFY2(!hasCyrillic(enOwn), qPrintable(id + ": " + en));
+            QVERIFY2(placeholders(ru) == placeholders(en), qPrintable(id + ": " + ru + " | " + en));
+        }
+    }
+
+    // Each id the commands say is in the catalog (else the id itself would be
+    // printed), and each id of the catalog is said somewhere.
+    void sourcesSayTheCatalogsIds() {
+        const QString sources = cliSources().join('\n');
+        static const QRegularExpression call(QStringLiteral("cliText\\(\\s*\"([^\"]+)\""));
+        int calls = 0;
+        for (auto it = call.globalMatch(sources); it.hasNext(); ++calls) {
+            const QString id = it.next().captured(1);
+            QVERIFY2(k528::cli::cliTexts().find(id.toStdString()), qPrintable(id + ": not in the catalog"));
+        }
+        QVERIFY2(calls > 80, qPrintable(QString::number(calls)));
+        for (const k528::util::CatalogText& t : k528::cli::cliTexts().texts())
+            QVERIFY2(sources.contains('"' + fromView(t.id) + '"'), qPrintable(fromView(t.id) + ": never said"));
+    }
+
+    // What `k528 db` reports on standard output.
+    void databaseReports() {
+        const QString version = QString::number(k528::db::latestSchemaVersion());
+        auto r = db({"init"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(r.out, QStringLiteral("база данных %1\nсхема       версия %2 (создана)\n"
+                                       "загружены   grinder-205, training-lathe (встроенные станки)\n"
+                                       "станков     2\n")
+                            .arg(db_, version));
+        r = en({"init"});
+        QCOMPARE(r.out, QStringLiteral("database  %1\nschema    version %2 (up to date)\nmachines  2\n").arg(db_, version));
+
+        r = db({"machines"});
+        QVERIFY2(r.out.startsWith(QStringLiteral("СТАНОК          РЕВ  ИЗМЕНЁН               КЕМ         НАЗВАНИЕ\n")),
+                 qPrintable(r.out));
+        QVERIFY2(en({"machines"}).out.startsWith("MACHINE         REV  CHANGED               BY          TITLE\n"),
+                 qPrintable(r.out));
+
+        r = db({"set", "grinder-205", "C022=2133", "--author", "Иванов"});
+        QVERIFY2(r.out.startsWith(QStringLiteral("grinder-205: ревизия 2 (1 изменение)\n")), qPrintable(r.out + r.err));
+        r = en({"set", "grinder-205", "C022=2100", "R12=5"});
+        QVERIFY2(r.out.startsWith("grinder-205: revision 3 (2 changes)\n"), qPrintable(r.out + r.err));
+        r = db({"set", "grinder-205", "C022=2100"});
+        QCOMPARE(r.out, QStringLiteral("grinder-205: изменений нет (ревизия 3)\n"));
+        r = db({"set", "grinder-205", "R12="});
+        QVERIFY2(r.out.contains(QStringLiteral(": 5 -> (нет)")) && !r.out.contains("(none)"), qPrintable(r.out));
+
+        r = db({"show", "grinder-205", "--history", "2"});
+        QVERIFY2(r.out.contains(QStringLiteral("станок      grinder-205")) &&
+                     r.out.contains(QStringLiteral("ревизия     4, изменил ")) &&
+                     r.out.contains(QStringLiteral("(изменений: 2)")),
+                 qPrintable(r.out));
+        r = en({"show", "grinder-205", "--history", "2"});
+        QVERIFY2(r.out.contains("machine   grinder-205") && r.out.contains("revision  4, changed ") &&
+                     r.out.contains("(2 changes)"),
+                 qPrintable(r.out));
+        r = db({"show", "grinder-205", "--program", "77"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("у станка grinder-205 нет программы L77")), qPrintable(r.err));
+
+        r = db({"release", "grinder-205", "L11", "--author", "Петров"});
+        QVERIFY2(r.out.startsWith(QStringLiteral("выпущена    grinder-205 L11 в ревизии 1 (SHA-256 ")) &&
+                     r.out.contains(QStringLiteral("…): Петров, ")),
+                 qPrintable(r.out + r.err));
+        r = en({"withdraw", "grinder-205", "L11", "--author", "Petrov"});
+        QVERIFY2(r.out.startsWith("withdrawn grinder-205 L11 as of revision 1 (SHA-256 ") && r.out.contains(" by Petrov at "),
+                 qPrintable(r.out + r.err));
+
+        r = db({"diff", "grinder-205", "grinder-205"});
+        QVERIFY2(r.out.endsWith(QStringLiteral("различий нет\n")), qPrintable(r.out));
+        QVERIFY(en({"diff", "grinder-205", "grinder-205"}).out.endsWith("no differences\n"));
+        r = db({"diff", "grinder-205", "training-lathe"});
+        QVERIFY2(r.exitCode == 0 && !r.out.contains("no differences"), qPrintable(r.err));
+        r = db({"diff", "grinder-205", "nosuch"});
+        QVERIFY2(r.err.contains(QStringLiteral("«nosuch» — не станок ")), qPrintable(r.err));
+
+        QCOMPARE(db({"log"}).out, QStringLiteral("передач в журнале нет\n"));
+        QCOMPARE(en({"log", "grinder-205"}).out, QStringLiteral("no transfers on record for grinder-205\n"));
+
+        r = db({"roles"});
+        QVERIFY2(r.out.contains(QStringLiteral("роли        нет: у базы данных SQLite один пользователь")), qPrintable(r.out));
+        QVERIFY(en({"roles"}).out.contains("roles     none: an SQLite database has one user"));
+
+        r = db({"copy", "--to", dir_.filePath(QStringLiteral("copy.db"))});
+        QVERIFY2(r.out.startsWith(QStringLiteral("скопирована  ")) && r.out.contains(QStringLiteral("журналы     сообщений 0")),
+                 qPrintable(r.out + r.err));
+        r = en({"copy", "--to", dir_.filePath(QStringLiteral("copy-en.db"))});
+        QVERIFY2(r.out.startsWith("copied    ") && r.out.contains("logs      0 messages"), qPrintable(r.out + r.err));
+
+        // Not one English sentence in the Russian reports (paths, names and
+        // options are not sentences).
+        for (const QStringList& args :
+             {QStringList{"init"}, QStringList{"machines"}, QStringList{"show", "grinder-205", "--history", "3"},
+              QStringList{"show", "training-lathe", "--programs"}, QStringList{"log"}, QStringList{"roles"}}) {
+            r = db(args);
+            QVERIFY2(r.exitCode == 0 && !hasEnglishSentence(r.out) && !hasEnglishSentence(r.err),
+                     qPrintable(args.join(' ') + ": " + r.out + r.err));
+        }
+    }
+
+    // The usage errors of the commands' own options: Russian, and English with
+    // --lang en (never the other language's words).
+    void optionErrors_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("ru");
+        QTest::addColumn<QString>("en");
+        const auto row = [](const char* name, QStringList args, const char* ru, const char* en) {
+            QTest::newRow(name) << args << QString::fromUtf8(ru) << QString::fromUtf8(en);
+        };
+        row("db log", {"db", "log", "a", "b"}, "db log принимает не больше одного станка",
+            "db log takes at most one machine");
+        row("db log --since", {"db", "log", "--since", "yesterday"}, "после --since нужно время вида 2024-05-17",
+            "--since takes a time as 2024-05-17");
+        row("db show --c", {"db", "show", "grinder-205", "--c", "999"}, "--c: «999» — не номер C-параметра 1..152",
+            "--c: '999' is not a C-parameter number 1..152");
+        row("db release", {"db", "release", "grinder-205", "L100"}, "«L100»: программа — L1..L99",
+            "'L100': a program is L1..L99");
+        row("db export --format", {"db", "export", "grinder-205", "--format", "xml"}, "--format — k528m или csv, а не «xml»",
+            "--format is k528m or csv, not 'xml'");
+        row("db show @", {"db", "show", "grinder-205@0"}, "«grinder-205@0»: после @ нужен номер ревизии больше 0",
+            "'grinder-205@0': the revision after @ must be a positive number");
+        row("shop", {"shop", "look"}, "shop нужна подкоманда status или publish", "shop needs status or publish");
+        row("shop publish", {"shop", "publish"}, "shop publish нужен --mqtt mqtt://ХОСТ[:ПОРТ]",
+            "shop publish needs --mqtt mqtt://HOST[:PORT]");
+        row("shop status nosuch", {"shop", "status", "nosuch"}, "нет станка «nosuch» в базе данных",
+            "no machine 'nosuch' in the database");
+        row("shop status no line", {"shop", "status", "training-lathe"}, "у станка «training-lathe» нет линии: k528 db set",
+            "machine 'training-lathe' has no line: k528 db set");
+    }
+    void optionErrors() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, ru);
+        QFETCH(QString, en);
+        QCOMPARE(runK528({"db", "init"}).exitCode, 0);
+        CliResult r = runK528(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(ru) && !hasEnglishSentence(r.err) && r.err.contains(QStringLiteral("Справка: k528 --help.")),
+                 qPrintable(r.err));
+        r = runK528(args + QStringList{"--lang", "en"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(en) && !hasCyrillic(r.err), qPrintable(r.err));
+    }
+
+    // `k528 shop status`: a machine's line, in the command's language (the
+    // line's failure in core's link texts), --json the same in both.
+    void shopStatus() {
+#ifndef K528_CLI_LANG_SHOP
+        QSKIP("built without the link plugins (K528_LINK_PLUGINS)");
+#endif
+        QCOMPARE(runK528({"db", "init"}).exitCode, 0);
+        auto r = runK528({"shop", "status"});
+        QVERIFY2(r.exitCode == 0 && r.err.contains(QStringLiteral("k528 shop: ни у одного станка базы данных нет линии")) &&
+                     !hasEnglishSentence(r.err),
+                 qPrintable(r.err));
+        r = runK528({"shop", "status", "--lang", "en"});
+        QVERIFY2(r.err.contains("k528 shop: no machine of the database has a line"), qPrintable(r.err));
+        // Port 1 of this host: nobody listens, the line is refused at once.
+        QCOMPARE(runK528({"db", "set", "grinder-205", "line=tcp://127.0.0.1:1/1"}).exitCode, 0);
+        r = runK528({"shop", "status", "grinder-205"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.startsWith(QStringLiteral("grinder-205      нет связи нет связи  ")) &&
+                     r.out.contains(QStringLiteral("; с ")) && r.out.contains(" tcp://127.0.0.1:1/1") &&
+                     !hasEnglishSentence(r.out, false),
+                 qPrintable(r.out));
+        r = runK528({"shop", "status", "grinder-205", "--lang", "en"});
+        QVERIFY2(r.out.startsWith("grinder-205      offline offline  ") && r.out.contains("; since ") && !hasCyrillic(r.out),
+                 qPrintable(r.out));
+        r = runK528({"shop", "status", "grinder-205", "--json", "--lang", "en"});
+        QVERIFY2(r.out.contains("\"online\":false") && r.out.contains("\"state\":\"offline\""), qPrintable(r.out));
+        r = runK528({"shop", "status", "grinder-205", "--json"});
+        QVERIFY2(r.out.contains("\"online\":false") && r.out.contains("\"state\":\"offline\""), qPrintable(r.out));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliLang)
+#include "test_cli_lang.moc"
