@@ -10,6 +10,7 @@
 
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "engine/program_check.h"
 #include "program/diagnostic_texts.h"
 #include "machine_profile.h"
@@ -116,7 +117,7 @@ bool parseProgramNumber(const std::optional<std::string>& value, int& number) {
         return true;
     const auto n = parseInt(*value);
     if (!n || *n < 1 || *n > program::kMaxPrograms) {
-        usageError("--number needs a program number 1..99, not '" + *value + "'");
+        usageError(cliText("opt.number", {*value}));
         return false;
     }
     number = static_cast<int>(*n);
@@ -128,19 +129,19 @@ int runCheck(std::span<const std::string> argv) {
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().empty())
-        return usageError("check needs at least one FILE");
+        return usageError(cliText("check.usage"));
     program::ParseOptions parseOptions;
     if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
         return ExitUsage;
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
+        return usageError(cliText("opt.lang", {*l}));
     program::ValidateOptions options;
     std::optional<profile::MachineProfile> machine;
     if (args.value("--profile") && !machineOptions(args, options, machine))
         return ExitUsage;
     if (args.value("--blank") && !machine)
-        return usageError("--blank needs --profile (the machine the program is proved on)");
+        return usageError(cliText("opt.blank-profile"));
 
     const bool asJson = args.has("--json");
     bool ioError = false;

@@ -4,6 +4,7 @@
 #include "args.h"
 #include "catalog/cparams.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db/location.h"
 #include "db_cli.h"
@@ -191,11 +192,14 @@ int runDbCalc(std::span<const std::string> argv) {
                  {"--db", "--machine", "--axis", "--discrete", "--screw-lead", "--gear",
                   "--encoder-lines", "--drive-volts", "--drive-speed", "--kv", "--feed", "--rapid",
                   "--auto-rapid", "--home-start", "--home-creep", "--accel", "--accel2",
-                  "--dac-max", "--dac-limit-percent"});
+                  "--dac-max", "--dac-limit-percent", "--lang"});
+    // --lang: the language of the messages, as every db subcommand's.
+    if (const auto l = a.value("--lang"); l && *l != "ru" && *l != "en")
+        return usageError(cliText("opt.lang", {*l}));
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError("db calc takes options only ('k528 db --help' lists them)");
+        return usageError(cliText("calc.usage"));
 
     cat::Axis axis = cat::Axis::X;
     if (const auto v = a.value("--axis")) {
@@ -204,7 +208,7 @@ int runDbCalc(std::span<const std::string> argv) {
         else if (*v == "Z" || *v == "z")
             axis = cat::Axis::Z;
         else
-            return usageError("--axis is X or Z, not '" + *v + "'");
+            return usageError(cliText("calc.axis", {*v}));
     }
     const auto number = [&](const char* option, double& target) -> bool {
         if (const auto v = a.value(option)) {
@@ -249,8 +253,7 @@ int runDbCalc(std::span<const std::string> argv) {
     } else {
         for (const char* required : {"--screw-lead", "--encoder-lines", "--drive-speed", "--accel"})
             if (!a.value(required))
-                return usageError(std::string("db calc needs ") + required +
-                                  " (or --machine NAME to take the machine's data)");
+                return usageError(cliText("calc.needs", {required}));
     }
     if (const auto v = a.value("--discrete")) {
         if (*v == "0.01")
@@ -260,7 +263,7 @@ int runDbCalc(std::span<const std::string> argv) {
         else if (*v == "0.0001")
             d.scale.discrete = units::Discrete::Mm0_0001;
         else
-            return usageError("--discrete is 0.01, 0.001 or 0.0001, not '" + *v + "'");
+            return usageError(cliText("calc.discrete", {*v}));
     }
     if (a.has("--diameter"))
         d.scale.diameter = true;
@@ -275,9 +278,9 @@ int runDbCalc(std::span<const std::string> argv) {
         !number("--dac-limit-percent", d.dacLimitPercent))
         return ExitUsage;
     if (lines != std::floor(lines) || lines < 1 || lines > 1e9)
-        return usageError("--encoder-lines must be a whole number of lines");
+        return usageError(cliText("calc.encoder"));
     if (dacMax != std::floor(dacMax) || dacMax < 0 || dacMax > 2047)
-        return usageError("--dac-max must be a whole number 0..2047");
+        return usageError(cliText("calc.dac"));
     d.encoderLines = static_cast<std::int64_t>(lines);
     d.dacMax = static_cast<std::int64_t>(dacMax);
     std::string error;

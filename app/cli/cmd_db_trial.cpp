@@ -6,6 +6,7 @@
 #include "profile/error_text.h"
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db/database.h"
 #include "db_cli.h"
 #include "db_cli_util.h"
@@ -24,19 +25,18 @@ int cmdTrial(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
-        return usageError("db trial needs MACHINE (and --tool N --measured-x M --drawing-x D, or the same for z)");
+        return usageError(cliText("trial.usage"));
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;
     const bool ru = lang == Lang::Ru;
     const auto station = a.value("--tool") ? parseInt(*a.value("--tool")) : std::nullopt;
     if (!station || *station < 1 || *station > profile::kMaxToolStations)
-        return usageError("--tool needs the tool's station 1..8");
+        return usageError(cliText("trial.tool"));
     const bool x = a.value("--measured-x") || a.value("--drawing-x");
     const bool z = a.value("--measured-z") || a.value("--drawing-z");
     if (x == z)
-        return usageError("give the measured and the drawing's size of one axis: --measured-x M --drawing-x D, or "
-                          "--measured-z M --drawing-z D");
+        return usageError(cliText("trial.axis"));
     const auto number = [&](const char* option) -> std::optional<double> {
         const auto v = a.value(option);
         if (!v)
@@ -53,8 +53,7 @@ int cmdTrial(std::span<const std::string> argv) {
     const auto measured = number(x ? "--measured-x" : "--measured-z");
     const auto drawing = number(x ? "--drawing-x" : "--drawing-z");
     if (!measured || !drawing)
-        return usageError(std::string("--measured-") + (x ? "x" : "z") + " and --drawing-" + (x ? "x" : "z") +
-                          " need sizes in mm (e.g. 40.06)");
+        return usageError(cliText("trial.sizes", {x ? "x" : "z"}));
     DbTarget t;
     auto d = openDbOf(a, t, false, a.value("--author").value_or(""), lang);
     if (!d)

@@ -4,6 +4,7 @@
 // The training course's exercises (core/training, docs/training-course.md).
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db_cli_util.h"
 #include "program_cli.h"
 #include "stock/stock.h"
@@ -77,7 +78,7 @@ int show(const Args& args, Lang lang, const std::string& id) {
     }
     if (args.has("--given")) {
         if (e->given.empty())
-            return usageError("exercise " + id + " hands out no program");
+            return usageError(cliText("exercise.no-program", {id}));
         std::fputs(e->given.c_str(), stdout);
         return ExitOk;
     }
@@ -149,7 +150,7 @@ int attempts(const Args& args, Lang lang, const std::string& exercise) {
     if (const auto n = args.value("--limit")) {
         const auto v = parseInt(*n);
         if (!v || *v < 1)
-            return usageError("--limit is a positive number, not '" + *n + "'");
+            return usageError(cliText("exercise.limit", {*n}));
         f.limit = static_cast<int>(std::min<long long>(*v, 1000000));
     }
     dbcli::DbTarget target;
@@ -231,10 +232,10 @@ int runExercise(std::span<const std::string> argv) {
         return usageError(args.error());
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
+        return usageError(cliText("opt.lang", {*l}));
     const auto& pos = args.positional();
     if (pos.empty())
-        return usageError("exercise needs list or show ID");
+        return usageError(cliText("exercise.needs"));
     try {
         if (pos[0] == "list" && pos.size() == 1)
             return list(args, lang);
@@ -246,7 +247,7 @@ int runExercise(std::span<const std::string> argv) {
         std::fprintf(stderr, "k528: %s\n", e.text(lang == Lang::Ru).c_str());
         return ExitUsage;
     }
-    return usageError("exercise list | exercise show ID | exercise attempts [ID]");
+    return usageError(cliText("exercise.usage"));
 }
 
 } // namespace k528::cli

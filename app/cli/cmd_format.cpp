@@ -9,6 +9,7 @@
 
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "output_file.h"
 #include "program/formatter.h"
 #include "program/parser.h"
@@ -22,15 +23,15 @@ int runFormat(std::span<const std::string> argv) {
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1)
-        return usageError("format needs exactly one FILE");
+        return usageError(cliText("format.usage"));
     if (args.has("--in-place") && args.has("--check"))
-        return usageError("--in-place and --check exclude each other");
+        return usageError(cliText("format.in-place-check"));
     program::ParseOptions parseOptions;
     if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
         return ExitUsage;
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
+        return usageError(cliText("opt.lang", {*l}));
     // --renumber: every program's frames become start, start+step, ... and
     // every IF/GOTO target follows its frame (program/refactor.h).
     int renumberStart = 1;
@@ -50,7 +51,7 @@ int runFormat(std::span<const std::string> argv) {
     }
     const std::string& path = args.positional().front();
     if (args.has("--in-place") && path == "-")
-        return usageError("--in-place needs a file, not standard input");
+        return usageError(cliText("format.in-place-stdin"));
 
     std::string text;
     if (!readProgramFile(path, text))

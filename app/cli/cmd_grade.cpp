@@ -8,6 +8,7 @@
 // --db) keeps every graded attempt in the database (training/record.h).
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "db_cli_util.h"
 #include "program_cli.h"
 #include "training/exercise_texts.h"
@@ -128,22 +129,21 @@ int runGrade(std::span<const std::string> argv) {
     if (!args.ok())
         return usageError(args.error());
     if (args.has("--json") && args.has("--csv"))
-        return usageError("--json or --csv, not both");
+        return usageError(cliText("grade.json-csv"));
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
+        return usageError(cliText("opt.lang", {*l}));
     const auto& pos = args.positional();
     if (pos.size() < 2)
-        return usageError("grade needs an exercise ID and at least one FILE");
+        return usageError(cliText("grade.usage"));
     const auto student = args.value("--student");
     if (student && pos.size() != 2)
-        return usageError("--student names the author of one FILE; a class's files are named by "
-                          "their file names");
+        return usageError(cliText("grade.student"));
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
     if (const auto j = args.value("--jobs")) {
         const auto n = parseInt(*j);
         if (!n || *n < 1 || *n > 64)
-            return usageError("--jobs is 1..64, not '" + *j + "'");
+            return usageError(cliText("grade.jobs", {*j}));
         jobs = static_cast<unsigned>(*n);
     }
     const training::Exercise* e = nullptr;

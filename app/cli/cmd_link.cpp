@@ -9,6 +9,7 @@
 // (core's RtuMaster over a QSerialPort).
 #include "catalog/messages.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "link/client.h"
 #include "link_line.h"
 #include "link_record.h"
@@ -218,7 +219,7 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
     if (const auto b = args.value("--bauds")) {
         const auto v = parseBauds(*b);
         if (!v)
-            return usageError("--bauds takes rates in bit/s separated by commas, e.g. 115200,19200");
+            return usageError(cliText("link.bauds"));
         bauds = *v;
     }
     std::vector<int> addresses;
@@ -227,7 +228,7 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
     if (const auto a = args.value("--addresses")) {
         const auto v = parseAddresses(*a);
         if (!v)
-            return usageError("--addresses takes station addresses 1..247 as A-B or A,B,…, not '" + *a + "'");
+            return usageError(cliText("link.addresses", {*a}));
         addresses = *v;
     }
     const bool asJson = args.has("--json");
@@ -302,7 +303,7 @@ int runLinkQt(std::span<const std::string> argv) {
         return usageError(args.error());
     const auto lang = args.value("--lang");
     if (lang && *lang != "ru" && *lang != "en")
-        return usageError("--lang is ru or en, not '" + *lang + "'");
+        return usageError(cliText("opt.lang", {*lang}));
     ru = lang.value_or("ru") == "ru";
     if (args.has("--list")) {
         for (const linkplugin::Found& f : linkplugin::discover()) {
@@ -318,37 +319,35 @@ int runLinkQt(std::span<const std::string> argv) {
         std::printf("searched: %s\n", linkplugin::searchPath().join(", ").toUtf8().constData());
         return ExitOk;
     }
-    static const char* kCommands = "ping, status, pull, push, clear, diag, watch or scan";
     if (args.positional().empty())
-        return usageError(std::string("link needs a command: ") + kCommands);
+        return usageError(cliText("link.needs"));
     const std::string cmd = args.positional()[0];
     if (cmd != "ping" && cmd != "status" && cmd != "pull" && cmd != "push" && cmd != "watch" && cmd != "clear" &&
         cmd != "diag" && cmd != "scan")
-        return usageError("unknown link command '" + cmd + "' (" + kCommands + ")");
+        return usageError(cliText("link.unknown", {cmd}));
     // push --machine NAME without a file: the database machine as released.
     const bool pushReleased = cmd == "push" && args.positional().size() == 1 && args.value("--machine");
     if (cmd == "push" && args.positional().size() != 2 && !pushReleased)
-        return usageError("push takes one file, a machine file or a program file: k528 link --port DEVICE push FILE "
-                          "(or --machine NAME: the database machine as released)");
+        return usageError(cliText("link.push"));
     if ((args.value("--db") || args.value("--machine")) && cmd != "push" && cmd != "pull")
-        return usageError("--db and --machine are options of link push and pull (the transfer log)");
+        return usageError(cliText("link.db"));
     if (cmd == "clear" && (args.positional().size() != 2 || (args.positional()[1] != "c" && args.positional()[1] != "r")))
-        return usageError("clear takes the area: k528 link --port DEVICE clear c|r");
+        return usageError(cliText("link.clear"));
     if (cmd != "push" && cmd != "clear" && args.positional().size() != 1)
-        return usageError("link " + cmd + " takes no file");
+        return usageError(cliText("link.no-file", {cmd}));
     if (cmd == "pull" && !args.value("--out"))
-        return usageError("pull needs --out FILE");
+        return usageError(cliText("link.pull"));
     if ((args.value("--bauds") || args.value("--addresses")) && cmd != "scan")
-        return usageError("--bauds and --addresses are options of link scan");
+        return usageError(cliText("link.scan-only"));
     if (args.has("--clear") && cmd != "diag")
-        return usageError("--clear is an option of link diag");
+        return usageError(cliText("link.diag-only"));
     auto line = lineSettings(args);
     if (!line)
         return ExitUsage;
     if (const auto t = args.value("--timeout-ms")) {
         const auto v = parseInt(*t);
         if (!v || *v < 10 || *v > 60000)
-            return usageError("--timeout-ms takes 10..60000");
+            return usageError(cliText("opt.timeout"));
         line->timeoutMs = static_cast<int>(*v);
     }
     const std::optional<std::string> framesPath = args.value("--frames");
@@ -400,7 +399,7 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     if (cmd == "scan") {
         if (isTcpLine(args) && args.value("--bauds"))
-            return usageError("--bauds is an option of a serial line's scan; a --tcp scan asks unit ids");
+            return usageError(cliText("link.tcp-bauds"));
         return runScan(args, *plugin, *line, framesPath);
     }
     std::unique_ptr<linkplugin::ClientTransport> t = plugin->openClient(*line, error);
@@ -480,14 +479,14 @@ int runLinkQt(std::span<const std::string> argv) {
         if (const auto s = args.value("--seconds")) {
             const auto v = parseNumber(*s);
             if (!v || *v < 0)
-                return usageError("--seconds takes a duration in seconds");
+                return usageError(cliText("opt.seconds"));
             seconds = *v;
         }
         int interval = 100;
         if (const auto s = args.value("--interval-ms")) {
             const auto v = parseInt(*s);
             if (!v || *v < 1 || *v > 60000)
-                return usageError("--interval-ms takes 1..60000");
+                return usageError(cliText("link.interval"));
             interval = static_cast<int>(*v);
         }
         QElapsedTimer clock;

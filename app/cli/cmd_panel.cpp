@@ -10,6 +10,7 @@
 // makes the PLC impose mode N. Prints the four LCD lines, or JSON with the LEDs.
 #include "args.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "machine_buttons.h"
 #include "machine_profile.h"
 #include "engine/positioner.h"
@@ -76,8 +77,7 @@ std::optional<Step> parseFault(const std::string& token, std::string& error) {
         if (f.name == name)
             return FaultStep{machine::FaultSpec(f.kind, engine::AxisId::X, f.detail),
                              t.compare(0, colon, "CLEAR") == 0};
-    error = "unknown fault in --keys token '" + token + "' (faults: " +
-            std::string(kHealthFaultList) + ")";
+    error = cliText("keys.fault", {token, std::string(kHealthFaultList)});
     return std::nullopt;
 }
 
@@ -86,8 +86,7 @@ std::optional<Step> parsePlcMode(const std::string& token, std::string& error) {
     const std::string n = token.substr(8);
     if (n.size() == 1 && n[0] >= '0' && n[0] <= '7')
         return PlcModeStep{n[0] - '0'};
-    error = "bad --keys token '" + token +
-            "': PLCMODE:N imposes mode N (1 АВТОМАТ … 7 УПРАВЛЕНИЕ ДАННЫМИ), PLCMODE:0 lets go";
+    error = cliText("keys.plc-mode", {token});
     return std::nullopt;
 }
 
@@ -110,18 +109,14 @@ std::optional<Step> parseStep(const std::string& token, std::string& error) {
         (token.compare(0, 5, "WAIT:") == 0 || token.compare(0, 5, "wait:") == 0)) {
         const auto s = parseNumber(std::string_view(token).substr(5));
         if (!s || *s < 0 || !std::isfinite(*s) || *s > 1e6) {
-            error = "bad time in --keys token '" + token + "': WAIT:S takes seconds, 0..1000000";
+            error = cliText("keys.wait", {token});
             return std::nullopt;
         }
         return Step{static_cast<std::int64_t>(std::llround(*s * 1000.0))};
     }
     if (const auto k = panel::parseKey(token))
         return Step{*k};
-    error = "unknown key '" + token +
-            "' in --keys (keys: F1..F8 K1..K12 L1..L4 UP DOWN LEFT RIGHT MODE HELP ESC SHIFT PAR "
-            "ACK INS DEL "
-            "ENTER 0..9 . + - * / = % !, SHIFT+KEY, WAIT:S; with --machine PUSH:BUTTON, "
-            "HOLD:BUTTON:S, PULL:ESTOP, FAULT:NAME, CLEAR:NAME, PLCMODE:N)";
+    error = cliText("keys.unknown", {token});
     return std::nullopt;
 }
 
@@ -192,11 +187,11 @@ int runPanel(std::span<const std::string> argv) {
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
-        return usageError("panel takes no file: give the keys with --keys \"KEY KEY ...\"");
+        return usageError(cliText("panel.no-file"));
     // The LCD is the panel's own (Russian); --lang is the language of the messages on stderr.
     Lang lang = Lang::Ru;
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
+        return usageError(cliText("opt.lang", {*l}));
     const bool ru = lang == Lang::Ru;
 
     const bool onMachine = args.has("--machine");
@@ -207,13 +202,9 @@ int runPanel(std::span<const std::string> argv) {
         if (!step)
             return usageError(error);
         if (std::holds_alternative<ButtonStep>(*step) && !onMachine)
-            return usageError("'" + token +
-                              "' presses a button of the machine: give --machine (the simulated "
-                              "machine with its PLC and pendant)");
+            return usageError(cliText("panel.button", {token}));
         if (std::holds_alternative<FaultStep>(*step) && !onMachine)
-            return usageError("'" + token +
-                              "' breaks a part of the machine: give --machine (the simulated "
-                              "machine with its PLC and K923)");
+            return usageError(cliText("panel.fault", {token}));
         steps.push_back(*step);
     }
 

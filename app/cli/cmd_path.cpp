@@ -3,6 +3,7 @@
 // core/toolpath. Output is streamed (a million segments print in a second),
 // so the JSON is written here rather than built as a tree.
 #include "cli.h"
+#include "cli_texts.h"
 #include "machine/run.h"
 #include "plc/description.h"
 #include "program_setup.h"
@@ -203,7 +204,7 @@ int runPath(std::span<const std::string> argv) {
     if (const auto m = args.value("--max-frames")) {
         const auto v = parseInt(*m);
         if (!v || *v < 1 || *v > 100'000'000)
-            return usageError("--max-frames needs a whole number 1..100000000, not '" + *m + "'");
+            return usageError(cliText("opt.max-frames", {*m}));
         po.preview.maxFrames = *v;
     }
     po.preview.fromReferencePoint = args.has("--home");

@@ -6,6 +6,7 @@
 // never loads VTK. Debian's VTK needs an X server: run under
 // xvfb-run -a -s "-screen 0 1280x800x24".
 #include "cli.h"
+#include "cli_texts.h"
 #include "helper_path.h"
 #include "program_setup.h"
 #include "stock/stock.h"
@@ -25,14 +26,14 @@ int runPlot(std::span<const std::string> argv) {
         return usageError(args.error());
     const auto out = args.value("--out");
     if (!out || out->empty())
-        return usageError("plot needs --out FILE.png");
+        return usageError(cliText("plot.out"));
     const std::string size = args.value("--size").value_or("1280x800");
     int w = 0, h = 0;
     if (std::sscanf(size.c_str(), "%dx%d", &w, &h) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192)
-        return usageError("--size is WxH with 16..8192 pixels each, not '" + size + "'");
+        return usageError(cliText("plot.size", {size}));
     const std::string view = args.value("--view").value_or("xz");
     if (view != "xz" && view != "3d")
-        return usageError("--view is xz or 3d, not '" + view + "'");
+        return usageError(cliText("plot.view", {view}));
     ProgramSetup setup;
     if (const int rc = loadProgramSetup(args, setup, stdout); rc >= 0)
         return rc;
@@ -41,7 +42,7 @@ int runPlot(std::span<const std::string> argv) {
     if (const auto m = args.value("--max-frames")) {
         const auto v = parseInt(*m);
         if (!v || *v < 1 || *v > 100'000'000)
-            return usageError("--max-frames needs a whole number 1..100000000, not '" + *m + "'");
+            return usageError(cliText("opt.max-frames", {*m}));
         po.preview.maxFrames = *v;
     }
     const toolpath::ProgrammedPath path =

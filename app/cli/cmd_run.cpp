@@ -4,6 +4,7 @@
 #include "args.h"
 #include "catalog/messages.h"
 #include "cli.h"
+#include "cli_texts.h"
 #include "output_file.h"
 #include "engine/program_check.h"
 #include "machine_profile.h"
@@ -314,7 +315,7 @@ int runRun(std::span<const std::string> argv) {
     if (!args.ok())
         return usageError(args.error());
     if (args.positional().size() != 1)
-        return usageError("run needs exactly one FILE");
+        return usageError(cliText("run.usage"));
     Lang lang = Lang::Ru;
     program::ParseOptions parseOptions;
     profile::MachineProfile prof;
@@ -325,20 +326,19 @@ int runRun(std::span<const std::string> argv) {
     if (const auto o = args.value("--override")) {
         const auto pct = parseInt(*o);
         if (!pct || units::overridePercentToCode(static_cast<int>(*pct)) < 0)
-            return usageError("--override is one of 0 1 2 5 10 20 35 50 75 90 100, not '" + *o +
-                              "'");
+            return usageError(cliText("run.override", {*o}));
         options.overridePercent = static_cast<int>(*pct);
     }
     if (const auto s = args.value("--max-seconds")) {
         const auto v = parseNumber(*s);
         if (!v || *v <= 0 || *v > 1e7)
-            return usageError("--max-seconds needs a number of seconds > 0, not '" + *s + "'");
+            return usageError(cliText("run.max-seconds", {*s}));
         options.maxSeconds = *v;
     }
     if (const auto s = args.value("--m0-wait")) {
         const auto v = parseNumber(*s);
         if (!v || *v < 0 || *v > 1e6)
-            return usageError("--m0-wait needs a number of seconds >= 0, not '" + *s + "'");
+            return usageError(cliText("run.m0-wait", {*s}));
         options.m0WaitS = *v;
     }
 
@@ -383,10 +383,9 @@ int runRun(std::span<const std::string> argv) {
     if (const auto p = args.value("--program")) {
         const auto n = parseInt(*p);
         if (!n || *n < 1 || *n > 99)
-            return usageError("--program needs a program number 1..99, not '" + *p + "'");
+            return usageError(cliText("opt.program", {*p}));
         if (!filePrograms.count(static_cast<int>(*n)))
-            return usageError("--program " + *p + ": " + displayName(path) + " has no program L" +
-                              *p);
+            return usageError(cliText("opt.program-none", {*p, displayName(path)}));
         number = static_cast<int>(*n);
     } else {
         // The first program as written (the one `k528 format` keeps first).
@@ -399,13 +398,12 @@ int runRun(std::span<const std::string> argv) {
     if (const auto from = args.value("--from")) {
         int fromProgram = 0, fromN = 0;
         if (!parseFromSpec(*from, fromProgram, fromN))
-            return usageError("--from needs a frame number N (or L<n>:N<k> for a subprogram's), not '" +
-                              *from + "'");
+            return usageError(cliText("run.from", {*from}));
         int pass = 1;
         if (const auto ps = args.value("--pass")) {
             const auto v = parseInt(*ps);
             if (!v || *v < 1 || *v > 1000000)
-                return usageError("--pass needs a count >= 1, not '" + *ps + "'");
+                return usageError(cliText("run.pass", {*ps}));
             pass = static_cast<int>(*v);
         }
         if (fromProgram == 0)
@@ -416,11 +414,10 @@ int runRun(std::span<const std::string> argv) {
             all.insert(p);
         const program::Program* target = all.find(fromProgram);
         if (!target)
-            return usageError("--from " + *from + ": there is no program L" + std::to_string(fromProgram));
+            return usageError(cliText("run.from-program", {*from, std::to_string(fromProgram)}));
         const int index = target->indexOfN(fromN);
         if (index < 0)
-            return usageError("--from " + *from + ": L" + std::to_string(fromProgram) + " has no frame N" +
-                              std::to_string(fromN));
+            return usageError(cliText("run.from-frame", {*from, std::to_string(fromProgram), std::to_string(fromN)}));
         engine::PreviewOptions po;
         po.rPresets = options.rPresets;
         po.fromReferencePoint = options.home;
@@ -447,7 +444,7 @@ int runRun(std::span<const std::string> argv) {
         else
             printStartPoint(found.point, prof);
     } else if (args.value("--pass")) {
-        return usageError("--pass goes with --from");
+        return usageError(cliText("run.pass-alone"));
     }
 
     // --trace FILE.csv: one row per tick (machine/trace.h, docs/engine.md),

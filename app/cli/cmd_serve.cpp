@@ -7,6 +7,7 @@
 // core's ControllerImage, in real time until SIGINT/SIGTERM. It answers the
 // bus counters of function 08 and names itself to function 17.
 #include "cli.h"
+#include "cli_texts.h"
 #include "link/image.h"
 #include "link/link_texts.h"
 #include "link/transport.h"
@@ -39,11 +40,11 @@ int runServeQt(std::span<const std::string> argv) {
     if (!args.ok())
         return usageError(args.error());
     if (!args.positional().empty())
-        return usageError("serve takes no file");
+        return usageError(cliText("serve.no-file"));
     // (k528-link holds no cmd_check.cpp: its parseLang and printDescriptionError are said here.)
     const auto lang = args.value("--lang");
     if (lang && *lang != "ru" && *lang != "en")
-        return usageError("--lang is ru or en, not '" + *lang + "'");
+        return usageError(cliText("opt.lang", {*lang}));
     const bool ru = lang.value_or("ru") == "ru";
     const auto line = lineSettings(args);
     if (!line)
@@ -54,7 +55,7 @@ int runServeQt(std::span<const std::string> argv) {
         if (token.size() > 5 && (token.rfind("WAIT:", 0) == 0 || token.rfind("wait:", 0) == 0)) {
             const auto s = parseNumber(std::string_view(token).substr(5));
             if (!s || *s < 0 || *s > 1e6)
-                return usageError("bad time in --keys token '" + token + "': WAIT:S takes seconds");
+                return usageError(cliText("serve.wait", {token}));
             steps.emplace_back(static_cast<std::int64_t>(std::llround(*s * 1000.0)));
         } else if (const std::string t = upperToken(token.substr(0, 5));
                    t == "PUSH:" || t == "HOLD:" || t == "PULL:") {
@@ -66,7 +67,7 @@ int runServeQt(std::span<const std::string> argv) {
         } else if (const auto k = panel::parseKey(token)) {
             steps.emplace_back(*k);
         } else {
-            return usageError("unknown key '" + token + "' in --keys (the keys of `k528 panel`)");
+            return usageError(cliText("serve.key", {token}));
         }
     }
     const auto prof = machineProfile(args);

@@ -7,6 +7,7 @@
 // helper_path.h says, which this feeds the sheet as JSON through a pipe, so
 // that `k528` never loads Qt.
 #include "cli.h"
+#include "cli_texts.h"
 #include "helper_path.h"
 #include "program_setup.h"
 #include "proveout/setup_sheet.h"
@@ -26,7 +27,7 @@ int runSetupSheet(std::span<const std::string> argv) {
     const bool asJson = args.has("--json");
     const auto out = args.value("--out");
     if ((!out || out->empty()) && !asJson)
-        return usageError("setup-sheet needs --out FILE.pdf (or --json)");
+        return usageError(cliText("sheet.out"));
     ProgramSetup setup;
     if (const int rc = loadProgramSetup(args, setup, asJson ? stderr : stdout); rc >= 0)
         return rc;

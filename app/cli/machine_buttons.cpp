@@ -1,3 +1,4 @@
+#include "cli_texts.h"
 #include "machine_buttons.h"
 
 #include "args.h"
@@ -35,7 +36,7 @@ std::optional<ButtonStep> parseButton(const std::string& token, std::string& err
         const auto s = c2 == std::string::npos ? std::nullopt
                                                : parseNumber(std::string_view(rest).substr(c2 + 1));
         if (!s || *s <= 0 || !std::isfinite(*s) || *s > 1e5) {
-            error = "bad --keys token '" + token + "': HOLD:BUTTON:S holds for S seconds, 0..100000";
+            error = cliText("keys.hold", {token});
             return std::nullopt;
         }
         b.holdMs = std::max<std::int64_t>(1, std::llround(*s * 1000.0));
@@ -43,22 +44,21 @@ std::optional<ButtonStep> parseButton(const std::string& token, std::string& err
     }
     if (rest == "ESTOP") {
         if (verb == "HOLD") {
-            error = "bad --keys token '" + token + "': the E-stop latches: PUSH:ESTOP, PULL:ESTOP";
+            error = cliText("keys.estop-hold", {token});
             return std::nullopt;
         }
         b.pull = verb == "PULL";
         return b;
     }
     if (verb == "PULL") {
-        error = "bad --keys token '" + token + "': only the E-stop is pulled (PULL:ESTOP)";
+        error = cliText("keys.pull", {token});
         return std::nullopt;
     }
     if (const auto button = machine::buttonFromName(rest)) {
         b.button = *button;
         return b;
     }
-    error = "unknown machine button in --keys token '" + token + "' (buttons: " +
-            std::string(kButtonList) + ")";
+    error = cliText("keys.button", {token, std::string(kButtonList)});
     return std::nullopt;
 }
 

@@ -1,6 +1,7 @@
 #include "program_setup.h"
 
 #include "cli.h"
+#include "cli_texts.h"
 #include "engine/program_check.h"
 #include "engine/rparams.h"
 #include "engine/self_test.h"
@@ -16,9 +17,9 @@ int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
     for (const std::string& p : args.values("--param")) {
         long long n = 0, v = 0;
         if (!parseAssignment(p, n, v))
-            return usageError("--param needs N=V with whole numbers, not '" + p + "'");
+            return usageError(cliText("opt.param", {p}));
         if (n < 1 || n > 152)
-            return usageError("--param " + p + ": C-parameters are 1..152");
+            return usageError(cliText("opt.param-range", {p}));
         if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
             return usageError("--param " + p + ": " + e);
         profile.setC(static_cast<int>(n), v);
@@ -26,13 +27,13 @@ int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
     for (const std::string& p : args.values("--r")) {
         long long n = 0, v = 0;
         if (!parseAssignment(p, n, v))
-            return usageError("--r needs N=V with whole numbers, not '" + p + "'");
+            return usageError(cliText("opt.r", {p}));
         if (n < 0 || n > 299)
-            return usageError("--r " + p + ": R-parameters are 0..299");
+            return usageError(cliText("opt.r-range", {p}));
         if (engine::rReadOnly(static_cast<int>(n)))
-            return usageError("--r " + p + ": R232..R262 are read only");
+            return usageError(cliText("opt.r-read-only", {p}));
         if (!engine::fitsR(v))
-            return usageError("--r " + p + ": the value is outside -2147483648..2147483647");
+            return usageError(cliText("opt.r-value", {p}));
         rPresets[static_cast<int>(n)] = v;
     }
     return -1;
@@ -41,7 +42,7 @@ int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
 int readProgramOptions(const Args& args, Lang& lang, program::ParseOptions& parseOptions,
                        profile::MachineProfile& profile, std::map<int, std::int64_t>& rPresets) {
     if (const auto l = args.value("--lang"); l && !parseLang(*l, lang))
-        return usageError("--lang is ru or en, not '" + *l + "'");
+        return usageError(cliText("opt.lang", {*l}));
     if (!parseProgramNumber(args.value("--number"), parseOptions.programNumber))
         return ExitUsage;
     const std::optional<profile::MachineProfile> loaded = machineProfile(args);
@@ -53,7 +54,7 @@ int readProgramOptions(const Args& args, Lang& lang, program::ParseOptions& pars
 
 int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
     if (args.positional().size() != 1)
-        return usageError("needs exactly one FILE");
+        return usageError(cliText("opt.one-file"));
     program::ParseOptions parseOptions;
     if (const int rc = readProgramOptions(args, out.lang, parseOptions, out.profile, out.rPresets); rc >= 0)
         return rc;
@@ -82,10 +83,9 @@ int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
     if (const auto p = args.value("--program")) {
         const auto n = parseInt(*p);
         if (!n || *n < 1 || *n > 99)
-            return usageError("--program needs a program number 1..99, not '" + *p + "'");
+            return usageError(cliText("opt.program", {*p}));
         if (!checked.programs.count(static_cast<int>(*n)))
-            return usageError("--program " + *p + ": " + displayName(path) + " has no program L" +
-                              *p);
+            return usageError(cliText("opt.program-none", {*p, displayName(path)}));
         out.number = static_cast<int>(*n);
     } else {
         out.number = parsed.store.firstWritten(); // as `k528 run` starts it

@@ -208,6 +208,31 @@ private slots:
             "shop publish needs --mqtt mqtt://HOST[:PORT]");
         row("shop status nosuch", {"shop", "status", "nosuch"}, "нет станка «nosuch» в базе данных",
             "no machine 'nosuch' in the database");
+        const QString shaft = QStringLiteral(K528_SOURCE_DIR "/resources/samples/lathe-shaft.k528");
+        row("run --override", {"run", "--override", "3", shaft}, "--override — одно из 0 1 2 5 10 20 35 50 75 90 100, а не «3»",
+            "--override is one of 0 1 2 5 10 20 35 50 75 90 100, not '3'");
+        row("run --r", {"run", "--r", "250=1", shaft}, "--r 250=1: R232..R262 только для чтения",
+            "--r 250=1: R232..R262 are read only");
+        row("run --program", {"run", "--program", "0", shaft}, "после --program нужен номер программы 1..99, а не «0»",
+            "--program needs a program number 1..99, not '0'");
+        row("run --pass", {"run", "--pass", "2", shaft}, "--pass задаётся вместе с --from", "--pass goes with --from");
+        row("run no file", {"run"}, "run нужен ровно один ФАЙЛ", "run needs exactly one FILE");
+        row("check no file", {"check"}, "check нужен хотя бы один ФАЙЛ", "check needs at least one FILE");
+        row("check --number", {"check", "--number", "100", shaft}, "после --number нужен номер программы 1..99, а не «100»",
+            "--number needs a program number 1..99, not '100'");
+        row("format two files", {"format", shaft, shaft}, "format нужен ровно один ФАЙЛ", "format needs exactly one FILE");
+        row("path --max-frames", {"path", "--max-frames", "0", shaft}, "после --max-frames нужно целое число 1..100000000, а не «0»",
+            "--max-frames needs a whole number 1..100000000, not '0'");
+        row("plot --out", {"plot", shaft}, "plot нужен --out ФАЙЛ.png", "plot needs --out FILE.png");
+        row("panel button", {"panel", "--keys", "PUSH:START"}, "«PUSH:START» нажимает кнопку станка: задайте --machine",
+            "'PUSH:START' presses a button of the machine: give --machine");
+        row("panel --lang", {"panel", "--lang", "de"}, "--lang — ru или en, а не «de»", "");
+        row("grade", {"grade", "--json", "--csv", "x", shaft}, "--json или --csv, но не оба", "--json or --csv, not both");
+        row("exercise", {"exercise"}, "exercise нужна подкоманда list или show ID", "exercise needs list or show ID");
+        row("db calc", {"db", "calc", "extra"}, "db calc принимает только параметры", "db calc takes options only");
+        row("db trial", {"db", "trial"}, "db trial нужен СТАНОК", "db trial needs MACHINE");
+        row("link", {"link", "--port", "/dev/null"}, "link нужна команда: ping, status, pull, push, clear, diag, watch или scan",
+            "link needs a command: ping, status, pull, push, clear, diag, watch or scan");
         row("shop status no line", {"shop", "status", "training-lathe"}, "у станка «training-lathe» нет линии: k528 db set",
             "machine 'training-lathe' has no line: k528 db set");
     }
@@ -220,6 +245,8 @@ private slots:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(ru) && !hasEnglishSentence(r.err) && r.err.contains(QStringLiteral("Справка: k528 --help.")),
                  qPrintable(r.err));
+        if (en.isEmpty()) // --lang other than en: Russian, as the default
+            return;
         r = runK528(args + QStringList{"--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(en) && !hasCyrillic(r.err), qPrintable(r.err));

@@ -57,9 +57,11 @@ private slots:
     }
 
     void refusals() {
-        const CliResult none = runK528({"run", "--from", "77", kShaft});
+        const CliResult none = runK528({"run", "--from", "77", kShaft, "--lang", "en"});
         QCOMPARE(none.exitCode, 2);
         QVERIFY2(none.err.contains("has no frame N77"), qPrintable(none.err));
+        const CliResult noneRu = runK528({"run", "--from", "77", kShaft});
+        QVERIFY2(noneRu.err.contains(QStringLiteral("--from 77: в L1 нет кадра N77")), qPrintable(noneRu.err));
         const CliResult bad = runK528({"run", "--from", "L2:x", kShaft});
         QCOMPARE(bad.exitCode, 2);
         const CliResult pass = runK528({"run", "--pass", "2", kShaft});

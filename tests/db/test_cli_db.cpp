@@ -688,7 +688,8 @@ private slots:
         // Errors.
         r = runK528({"db", "calc", "--screw-lead", "5"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY(r.err.contains("needs --encoder-lines"));
+        QVERIFY2(r.err.contains(QStringLiteral("db calc нужен --encoder-lines")), qPrintable(r.err));
+        QVERIFY(runK528({"db", "calc", "--screw-lead", "5", "--lang", "en"}).err.contains("needs --encoder-lines"));
         QCOMPARE(runK528(QStringList{"db", "calc", "--accel", "fast"} + axis.mid(0, 8)).exitCode,
                  2);
         r = runK528(QStringList{"db", "calc"} + axis + QStringList{"--drive-speed", "100"});

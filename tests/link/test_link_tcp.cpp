@@ -208,7 +208,7 @@ private slots:
         QVERIFY2(r.err.contains(": connection refused"), qPrintable(r.err));
         r = run(kCli, {"link", "--tcp", a_->address(), "--lang", "de", "status"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("--lang is ru or en"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("--lang — ru или en, а не «de»")), qPrintable(r.err));
     }
 
     void badLinesAreClear() {
