@@ -107,7 +107,9 @@ void ControllerDock::build() {
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the texts wrap to the dock's width
+    // The texts wrap to the dock's width; a dock made narrower than its form
+    // scrolls sideways rather than cutting the buttons at its edge.
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     auto* body = new QWidget(scroll);
     auto* lay = new QVBoxLayout(body);
     lay->setContentsMargins(6, 6, 6, 6);

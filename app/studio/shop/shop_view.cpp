@@ -137,10 +137,14 @@ ShopTile::ShopTile(const ShopMachine& machine, QWidget* parent) : QFrame(parent)
     small.setPointSizeF(small.pointSizeF() * 0.9);
     line_->setFont(small);
     lay->addWidget(line_);
+    // The tile's width is fixed (a grid of tiles): a mode with its note
+    // («Режим F7 «РАБОТА С ПЭВМ», выполняется») takes a second line.
     mode_ = new QLabel(this);
     mode_->setObjectName("shop.tile.mode");
+    mode_->setWordWrap(true);
     program_ = new QLabel(this);
     program_->setObjectName("shop.tile.program");
+    program_->setWordWrap(true);
     alarms_ = new QLabel(this);
     alarms_->setObjectName("shop.tile.alarms");
     alarms_->setWordWrap(true);
