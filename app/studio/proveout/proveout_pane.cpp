@@ -111,9 +111,9 @@ static_assert(ProveoutPane::kIndicator == ProgramEditor::kProveoutIndicator);
 bool hasUcgText(std::string_view id) { return kUcgTexts.has(id); }
 
 QString ucgErrorText(std::string_view id) {
-    const QString text = kUcgTexts.has(id) ? kUcgTexts.pattern(id)
-                                           : QString::fromStdString(stock::ucgTexts().render(id, {}, russianWindow()));
-    return QStringLiteral("UCG: ") + text;
+    if (!kUcgTexts.has(id)) // an id without a translation
+        return coreText(stock::ucgErrorText(id, {}, true), stock::ucgErrorText(id, {}, false));
+    return QString::fromStdString(stock::ucgErrorText(kUcgTexts.pattern(id).toStdString()));
 }
 
 ProveoutPane::ProveoutPane(EditorTab* editor, QWidget* parent)
