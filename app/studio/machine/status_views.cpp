@@ -125,11 +125,8 @@ void MessagesView::refresh() {
                             blue});
     const engine::ProgramView& pv = st.program;
     if (pv.messageNumber > 0) {
-        // The machine file's message in English when it gives one (and the
-        // message shown is the machine file's, not a program's own).
-        QString message = fromStd(pv.messageText);
-        if (!russianWindow() && pv.messageText == profile::messageText(prof, pv.messageNumber, false))
-            message = fromStd(profile::messageText(prof, pv.messageNumber, true));
+        const QString message = coreText(engine::programMessageText(pv, prof, false),
+                                         engine::programMessageText(pv, prof, true));
         rows.push_back({tr("Program"), QStringLiteral("#%1").arg(pv.messageNumber), message,
                         tr("information"), grey});
     }
