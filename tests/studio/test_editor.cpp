@@ -11,6 +11,7 @@
 #include "editor/listing.h"
 #include "editor/frame_master.h"
 #include "editor/program_editor.h"
+#include "editor/problems_model.h"
 #include "program/tokens.h"
 #include "profile/builtin.h"
 #include "rig/studio_rig.h"
@@ -18,6 +19,7 @@
 #include "test_util.h"
 
 #include <QApplication>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -80,6 +82,19 @@ private slots:
         // The Code column: the controller's message and the rule's short name, its id in the tooltip.
         QCOMPARE(problems->index(0, 3).data().toString(), QString("[M33] bad number"));
         QCOMPARE(problems->index(0, 3).data(Qt::ToolTipRole).toString(), QString("bad-number"));
+        // Its width fits the widest code of all rows, measured from the distinct codes.
+        const QFontMetrics metrics = tab.problems()->fontMetrics();
+        QVERIFY(tab.problems()->header()->sectionSize(3) > metrics.horizontalAdvance("[M33] bad number"));
+        ed->setText("%L1\nN1 G1 X5..3\nN2 G1 X5..3\nN3 G77\nN4 G1 X1 F99999999\nM30\nGOTO\n");
+        ed->validateNow();
+        QVERIFY(problems->rowCount() >= 3);
+        int widest = 0;
+        for (int row = 0; row < problems->rowCount(); ++row)
+            widest = std::max(widest, metrics.horizontalAdvance(problems->index(row, 3).data().toString()));
+        QCOMPARE(static_cast<ProblemsModel*>(problems)->widestCode(metrics), widest);
+        QVERIFY(tab.problems()->header()->sectionSize(3) > widest);
+        ed->setText("%L1\nN1 G1 X1\nN2 G1 X5..3\nM30\n");
+        ed->validateNow();
         QVERIFY(!ed->hoverText(lineStart + 7).isEmpty());
         QVERIFY(ed->hoverText(lineStart + 7).startsWith("[M33] "));
         QVERIFY(ed->hoverText(lineStart + 1).isEmpty());

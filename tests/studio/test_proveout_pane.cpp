@@ -24,6 +24,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTreeView>
+#include <QHeaderView>
 #include <QtTest>
 
 using namespace k528;
@@ -148,6 +149,10 @@ private slots:
                      lang == "ru" ? QString("G00 в материал") : QString("rapid into material"));
             QVERIFY(problems->index(0, 3).data(Qt::ToolTipRole).toString().endsWith(": rapid-into-material"));
             QCOMPARE(problems->index(0, 0).data(ProblemsModel::kRuleRole).toString(), QString("rapid-into-material"));
+            // The Code column shows the rule's name whole, in either language.
+            QVERIFY2(tab.problems()->header()->sectionSize(3) >
+                         tab.problems()->fontMetrics().horizontalAdvance(problems->index(0, 3).data().toString()),
+                     qPrintable(QString::number(tab.problems()->header()->sectionSize(3))));
             const QString text = problems->index(0, 4).data().toString();
             QVERIFY2(text.startsWith("N4: "), qPrintable(text));
             const QRegularExpression cyrillic("[\\x{0400}-\\x{04FF}]");

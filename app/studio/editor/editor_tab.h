@@ -205,6 +205,7 @@ private:
     int addDocument(const QString& path, const QString& text);
     void refreshProblems();
     void refreshCount();
+    void fitCodeColumn();
     void refreshOutline();
     void refreshTitles();
     void fileChangedOnDisk(const QString& path);

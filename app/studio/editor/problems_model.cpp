@@ -6,7 +6,21 @@
 
 #include <QColor>
 
+#include <algorithm>
+#include <set>
+#include <utility>
+
 namespace k528::studio {
+
+namespace {
+
+// The Code column of a diagnostic: the controller's message number, then the rule's short name.
+QString diagnosticCode(int manualNumber, program::Rule rule) {
+    return manualNumber > 0 ? QStringLiteral("[M%1] ").arg(manualNumber, 2, 10, QChar('0')) + ruleName(rule)
+                            : ruleName(rule);
+}
+
+} // namespace
 
 void ProblemsModel::setDiagnostics(const std::vector<program::Diagnostic>* diagnostics) {
     beginResetModel();
@@ -51,10 +65,7 @@ QVariant ProblemsModel::data(const QModelIndex& index, int role) const {
         case 0: return d.isError() ? error_ : warning_;
         case 1: return d.program > 0 ? QStringLiteral("L%1").arg(d.program) : QString();
         case 2: return QString::number(d.line);
-        case 3: // the rule's short name, after the number of the controller's message
-            return d.manualNumber > 0
-                       ? QStringLiteral("[M%1] ").arg(d.manualNumber, 2, 10, QChar('0')) + ruleName(d.rule)
-                       : ruleName(d.rule);
+        case 3: return diagnosticCode(d.manualNumber, d.rule);
         case 4: return diagnosticText(d);
         default: return {};
         }
@@ -112,6 +123,22 @@ QVariant ProblemsModel::findingData(int i, int column, int role) const {
     case kFindingRole: return i;
     default: return {};
     }
+}
+
+int ProblemsModel::widestCode(const QFontMetrics& metrics) const {
+    std::set<std::pair<int, program::Rule>> diagnosticCodes; // (message number, rule)
+    if (diagnostics_)
+        for (const program::Diagnostic& d : *diagnostics_)
+            diagnosticCodes.emplace(d.manualNumber, d.rule);
+    int widest = 0;
+    for (const auto& [number, rule] : diagnosticCodes)
+        widest = std::max(widest, metrics.horizontalAdvance(diagnosticCode(number, rule)));
+    std::set<proveout::Rule> findingRules;
+    if (findings_)
+        for (const proveout::Finding& f : *findings_)
+            if (findingRules.insert(f.rule).second)
+                widest = std::max(widest, metrics.horizontalAdvance(ruleName(f.rule)));
+    return widest;
 }
 
 QVariant ProblemsModel::headerData(int section, Qt::Orientation orientation, int role) const {
