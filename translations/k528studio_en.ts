@@ -6940,6 +6940,10 @@ Its comment stays: %3</translation>
         <source>no UCG in the file</source>
         <translation>no UCG in the file</translation>
     </message>
+    <message>
+        <source>Kind</source>
+        <translation>Kind</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ProveoutTexts</name>

@@ -6940,6 +6940,10 @@ Its comment stays: %3</source>
         <source>no UCG in the file</source>
         <translation>в файле нет UCG</translation>
     </message>
+    <message>
+        <source>Kind</source>
+        <translation>Вид</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::ProveoutTexts</name>

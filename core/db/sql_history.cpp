@@ -3,7 +3,6 @@
 #include "db/sha256.h"
 #include "db/sql_store.h"
 
-#include <limits>
 
 namespace k528::db {
 
@@ -118,24 +117,37 @@ std::string historyText(bool ofKey, bool joined) {
            (ofKey ? std::string(kOfKey) : std::string()) + std::string(kOrder);
 }
 
-// By the machine's name (?1), its last ?2 revisions: one statement (one
-// snapshot, no transaction needed); no rows when there is no such machine or
-// it has no such changes. The machine's id and revision as two subqueries
-// of its unique name (each run once, before the changes are read) rather
-// than a join: the server then knows the one machine and reads the range of
-// changes_history in the history's order, without a sort.
-std::string historyByNameText(bool ofKey) {
-    return std::string(kHistorySelect) +
-           "WHERE c.machine_id = (SELECT id FROM machines WHERE name = ?1) "
-           "AND c.revision > (SELECT revision FROM machines WHERE name = ?1) - ?2" +
-           (ofKey ? std::string(kOfKey) : std::string()) + std::string(kOrder);
+// By the machine's name (?1): one statement (one snapshot, no transaction
+// needed); no rows when there is no such machine or it has no such changes.
+// The machine's id (and for the last ?2 revisions its revision) as
+// subqueries of its unique name, each run once before the changes are read,
+// rather than a join: the server then knows the one machine and reads the
+// range of changes_history in the history's order, without a sort. Each
+// part the server has no need of is left out, as each costs it work for
+// every one of the (hundreds of) rows: of the whole history, the bound on
+// the revision (the second subquery, and a third condition the scan checks
+// on every index entry); of one item's history, its key (the caller's own,
+// filled in by historyRows) — each row formatted and sent with one field
+// fewer. The item's key is then ?2 (whole history) or ?3 (last revisions).
+std::string historyByNameText(bool ofKey, bool limited) {
+    return std::string("SELECT c.revision, c.author, c.at, c.section, ") +
+           (ofKey ? "" : "c.key, ") +
+           "c.label, c.before, c.after FROM changes c "
+           "WHERE c.machine_id = (SELECT id FROM machines WHERE name = ?1)" +
+           (limited ? " AND c.revision > (SELECT revision FROM machines WHERE name = ?1) - ?2"
+                    : "") +
+           (ofKey ? (limited ? " AND c.key = ?3" : " AND c.key = ?2") : "") + std::string(kOrder);
 }
 
-std::vector<ChangeRow> historyRows(sql::Query& q) {
+// The rows of a history statement: revision, author, at, section, key,
+// label, before, after — without the key when `key` is given (it is each
+// row's).
+std::vector<ChangeRow> historyRows(sql::Query& q, const std::optional<std::string>& key = {}) {
     std::vector<ChangeRow> out;
+    const int k = key ? 0 : 1; // columns after the section: one fewer without the key
     while (q.step())
-        out.push_back(ChangeRow{q.i32(0), q.text(1), q.text(2), q.text(3), q.text(4), q.text(5),
-                                q.optText(6), q.optText(7)});
+        out.push_back(ChangeRow{q.i32(0), q.text(1), q.text(2), q.text(3), key ? *key : q.text(4),
+                                q.text(4 + k), q.optText(5 + k), q.optText(6 + k)});
     q.reset();
     return out;
 }
@@ -168,14 +180,18 @@ std::optional<std::vector<ChangeRow>> SqlStore::historyNamed(std::string_view na
                        limitRevisions > 0 ? row->info.revision - limitRevisions + 1 : 1, key);
     }
     // The machine's row and its changes in one statement.
-    static const std::string kAll = historyByNameText(false);
-    static const std::string kKey = historyByNameText(true);
-    auto& q = query(key ? kKey : kAll);
-    q.bind(1, name).bind(2, limitRevisions > 0 ? std::int64_t{limitRevisions}
-                                               : std::int64_t{std::numeric_limits<int>::max()});
+    static const std::string kTexts[2][2] = {
+        {historyByNameText(false, false), historyByNameText(false, true)},
+        {historyByNameText(true, false), historyByNameText(true, true)}};
+    const bool limited = limitRevisions > 0;
+    auto& q = query(kTexts[key ? 1 : 0][limited ? 1 : 0]);
+    q.bind(1, name);
+    int next = 2;
+    if (limited)
+        q.bind(next++, limitRevisions);
     if (key)
-        q.bind(3, *key);
-    std::vector<ChangeRow> out = historyRows(q);
+        q.bind(next, *key);
+    std::vector<ChangeRow> out = historyRows(q, key);
     if (out.empty()) // no such machine, or none of its changes: the caller asks again
         return std::nullopt;
     return out;

@@ -3,6 +3,7 @@
 #include "catalog/rparams.h"
 #include "engine/run.h"
 #include "machine/run.h"
+#include "profile/english.h"
 #include "profile/problem.h"
 #include "proveout/proveout.h"
 #include "toolpath/programmed_path.h"
@@ -112,7 +113,8 @@ SetupSheet setupSheet(const profile::MachineProfile& profile, const program::Pro
                       bool withCycleTimes) {
     SetupSheet s;
     s.machineName = profile.name;
-    s.machineTitle = profile.title;
+    s.machineTitle = profile::titleText(profile, false);
+    s.machineTitleEn = profile::titleText(profile, true);
     s.file = std::move(file);
     s.xDiameter = profile::axisScale(profile, catalog::Axis::X).diameter;
     s.blank = blank ? blank : stock::findUcg(fileText);
@@ -122,7 +124,7 @@ SetupSheet setupSheet(const profile::MachineProfile& profile, const program::Pro
     const std::vector<profile::Tool> tools = profile::tools(profile);
     for (const profile::Tool& t : tools) {
         const profile::ToolOffsets o = profile::toolOffsets(t, profile, rPresets);
-        s.tools.push_back({t, o.xMm, o.zMm});
+        s.tools.push_back({t, profile::toolName(profile, t, true), o.xMm, o.zMm});
     }
 
     const std::vector<int> mains = mainPrograms(store);
@@ -194,6 +196,7 @@ std::string sheetJson(const SetupSheet& s) {
     Json o = Json::object();
     o["machine"] = s.machineName;
     o["machine_title"] = s.machineTitle;
+    o["machine_title_en"] = s.machineTitleEn;
     o["file"] = s.file;
     o["x_diameter"] = s.xDiameter;
     o["blank"] = s.ucg.empty() ? Json() : Json(s.ucg);
@@ -203,6 +206,7 @@ std::string sheetJson(const SetupSheet& s) {
         j["station"] = t.tool.station;
         j["kind"] = std::string(profile::toolKindName(t.tool.kind));
         j["name"] = t.tool.name;
+        j["name_en"] = t.nameEn;
         j["tip_radius_mm"] = t.tool.tipRadiusMm;
         j["orientation"] = t.tool.orientation();
         j["width_mm"] = t.tool.widthMm;
@@ -246,6 +250,7 @@ SetupSheet sheetFromJson(std::string_view text) {
         const Json o = json::parse(text);
         s.machineName = o.at("machine").get<std::string>();
         s.machineTitle = o.at("machine_title").get<std::string>();
+        s.machineTitleEn = o.at("machine_title_en").get<std::string>();
         s.file = o.at("file").get<std::string>();
         s.xDiameter = o.at("x_diameter").get<bool>();
         if (!o.at("blank").is_null()) {
@@ -257,6 +262,7 @@ SetupSheet sheetFromJson(std::string_view text) {
             t.tool.station = j.at("station").get<int>();
             t.tool.kind = kindFrom(j.at("kind").get<std::string>());
             t.tool.name = j.at("name").get<std::string>();
+            t.nameEn = j.at("name_en").get<std::string>();
             t.tool.tipRadiusMm = j.at("tip_radius_mm").get<double>();
             const std::string orient = j.at("orientation").get<std::string>();
             if (orient.size() == 4) {

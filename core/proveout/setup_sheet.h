@@ -23,8 +23,11 @@
 namespace k528::proveout {
 
 struct SheetTool {
-    profile::Tool tool;
+    profile::Tool tool;                  // tool.name: its Russian name
+    std::string nameEn;                  // its English (profile::toolName), the Russian when the machine gives none
     double offsetXMm = 0, offsetZMm = 0; // from the R presets it names (X as the axis shows it)
+
+    const std::string& name(bool russian) const { return russian ? tool.name : nameEn; }
 };
 
 struct SheetProgram {
@@ -44,7 +47,8 @@ struct SheetPreset {
 };
 
 struct SetupSheet {
-    std::string machineName, machineTitle;
+    std::string machineName;
+    std::string machineTitle, machineTitleEn; // the English as profile::titleText gives it
     std::string file;        // the program file's name, as given
     bool xDiameter = false;  // X shown (and measured) as a diameter (C7)
     std::optional<stock::Blank> blank;

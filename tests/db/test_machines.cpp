@@ -15,6 +15,7 @@
 
 #include <QtTest>
 #include <sqlite3.h>
+#include <algorithm>
 #include <cstdlib>
 #include <functional>
 #include <map>
@@ -252,6 +253,8 @@ private slots:
         QCOMPARE(*h[0].change.before, std::string("2133"));
         QCOMPARE(*h[0].change.after, std::string("2000"));
         QCOMPARE(h[0].change.label, std::string("УСКОРЕНИЕ 1"));
+        QCOMPARE(h[0].change.key, std::string("C022"));
+        QVERIFY(h[0].change.section == profile::DiffSection::C);
         QCOMPARE(h[1].author, std::string("Иванов И.И."));
         QCOMPARE(h[1].at, std::string("2024-05-17T10:00:00Z"));
         QCOMPARE(*h[1].change.before, std::string("2000"));
@@ -285,7 +288,28 @@ private slots:
         QCOMPARE(revs[0].summary, std::string("set C022 R12"));
         QCOMPARE(revs[1].author, std::string("Иванов И.И."));
         // The newest revision only.
-        QCOMPARE(d.history("grinder-205", std::nullopt, 1).size(), std::size_t(2));
+        const auto last = d.history("grinder-205", std::nullopt, 1);
+        QCOMPARE(last.size(), std::size_t(2));
+        QCOMPARE(last[0].change.key, std::string("C022"));
+        QCOMPARE(last[1].change.key, std::string("R12"));
+        QVERIFY(last[1].change.section == profile::DiffSection::R);
+        // One item of the newest revisions; of the whole history, every
+        // item of every revision, newest first.
+        const auto c022 = d.history("grinder-205", std::string("C022"), 2);
+        QCOMPARE(c022.size(), std::size_t(2));
+        QCOMPARE(c022[1].revision, 2);
+        QCOMPARE(c022[1].change.key, std::string("C022"));
+        QCOMPARE(*c022[1].change.after, std::string("2133"));
+        QVERIFY(d.history("grinder-205", std::string("x.kv"), 1).empty());
+        QCOMPARE(d.history("grinder-205", std::string("x.kv"), 2).size(), std::size_t(1));
+        const auto all = d.history("grinder-205");
+        QCOMPARE(all.size() - last.size() - r1.changes.size(),
+                 static_cast<std::size_t>(std::count_if(all.begin(), all.end(), [](const auto& x) {
+                     return x.revision == 1;
+                 })));
+        QCOMPARE(all[0].change.key, std::string("C022"));
+        QCOMPARE(all[2].revision, 2);
+        QCOMPARE(all.back().revision, 1);
         // The machine row follows.
         const auto m = *d.machine("grinder-205");
         QCOMPARE(m.revision, 3);

@@ -6,6 +6,7 @@
 // command hands its renderer.
 #include "cli_runner.h"
 #include "profile/builtin.h"
+#include "profile/english.h"
 #include "profile/tools.h"
 #include "program/parser.h"
 #include "proveout/setup_sheet.h"
@@ -82,6 +83,9 @@ private slots:
         const QString flat = squeezed(text);
         QVERIFY2(text.contains(ru ? QString("Карта наладки") : QString("Setup sheet")), qPrintable(text));
         QVERIFY(text.contains("training-lathe"));
+        // The machine's title in the sheet's language.
+        QVERIFY2(text.simplified().contains(ru ? QString("Учебный токарный станок") : QString("Training lathe with")),
+                 qPrintable(text));
         QVERIFY(text.contains("lathe-shaft.k528"));
         // The blank of the file's UCG comment.
         QVERIFY2(text.contains(ru ? QString("наружный Ø45 мм, длина 80 мм") : QString("outside Ø45 mm, length 80 mm")),
@@ -92,8 +96,13 @@ private slots:
         const std::vector<profile::Tool> tools = profile::tools(machine);
         QCOMPARE(tools.size(), std::size_t(4));
         for (const profile::Tool& t : tools) {
-            for (const QString& word : QString::fromStdString(t.name).split(' ')) // a cell may wrap it
-                QVERIFY2(text.contains(word), t.name.c_str());
+            // Its name in the sheet's language: the machine gives each its English.
+            const std::string name = profile::toolName(machine, t, !ru);
+            const std::string other = profile::toolName(machine, t, ru);
+            QVERIFY(name != other);
+            for (const QString& word : QString::fromStdString(name).split(' ')) // a cell may wrap it
+                QVERIFY2(text.contains(word), name.c_str());
+            QVERIFY2(!text.contains(QString::fromStdString(other).split(' ').front()), qPrintable(text));
             QVERIFY(text.contains(QStringLiteral("T%1").arg(t.station)));
             QVERIFY(flat.contains(squeezed(QString::fromUtf8(std::string(proveout::toolKindText(t.kind, ru)).c_str()))));
             if (t.offsetR >= 0) // on the tool's row: its offset R-parameters
@@ -140,6 +149,10 @@ private slots:
         QVERIFY(programs.size() >= 2);
         QCOMPARE(programs[0].toObject()["cycle_time_s"].toDouble(), pathCycleTime("training-lathe", kShaft));
         QCOMPARE(programs[1].toObject()["main"].toBool(), false);
+        // Both names of each tool and of the machine (the renderer chooses by --lang).
+        QCOMPARE(o["tools"].toArray()[0].toObject()["name"].toString(), QString("Резец проходной упорный T15K6"));
+        QCOMPARE(o["tools"].toArray()[0].toObject()["name_en"].toString(), QString("Straight turning tool T15K6"));
+        QVERIFY(o["machine_title_en"].toString().startsWith("Training lathe"));
         // The content survives its JSON.
         const std::string text = r.out.trimmed().toStdString();
         QCOMPARE(proveout::sheetJson(proveout::sheetFromJson(text)), text);

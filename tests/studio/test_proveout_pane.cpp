@@ -8,6 +8,7 @@
 #include "editor/program_editor.h"
 #include "main_window.h"
 #include "profile/builtin.h"
+#include "profile/english.h"
 #include "profile/tools.h"
 #include "proveout/proveout_pane.h"
 #include "rig/facing.h"
@@ -239,6 +240,19 @@ private slots:
         // Station 2's offsets are preset (R102, R103): not zero.
         QVERIFY(pane.toolsTable()->item(1, 4)->text() != QString("0.000"));
         QCOMPARE(pane.toolsTable()->item(3, 1)->text(), QString("drill"));
+        // Each tool's name as the machine gives it in the window's language:
+        // its English in an English window, its Russian in a Russian one.
+        QCOMPARE(pane.toolsTable()->horizontalHeaderItem(7)->text(), QString("Tool"));
+        QCOMPARE(pane.toolsTable()->item(0, 7)->text(), QString("Straight turning tool T15K6"));
+        QCOMPARE(pane.toolsTable()->item(3, 7)->text(), QString("Drill D10"));
+        QVERIFY(setLanguage("ru"));
+        QTRY_COMPARE(pane.toolsTable()->horizontalHeaderItem(7)->text(), QString("Инструмент")); // the change told
+        QCOMPARE(pane.toolsTable()->rowCount(), 4);
+        for (int r = 0; r < 4; ++r)
+            QCOMPARE(pane.toolsTable()->item(r, 7)->text(), QString::fromStdString(tools[std::size_t(r)].name));
+        QCOMPARE(pane.toolsTable()->item(3, 7)->text(), QString("Сверло D10"));
+        QVERIFY(setLanguage("en"));
+        QTRY_COMPARE(pane.toolsTable()->item(3, 7)->text(), QString("Drill D10"));
     }
 
     void saysWhyNothingIsProved() {
@@ -283,14 +297,29 @@ private slots:
         QVERIFY(tab.editorMenu()->actions().contains(menu->menuAction()));
         QCOMPARE(menu->actions().size(), 2);
         const QString pdf = dir_.filePath("sheet.pdf");
-        QCOMPARE(tab.setupSheets()->exportPdf(pdf), QString());
-        QProcess p;
-        p.start("pdftotext", {"-layout", pdf, "-"});
-        QVERIFY(p.waitForFinished(30000));
-        const QString text = QString::fromUtf8(p.readAllStandardOutput());
-        for (const profile::Tool& t : profile::tools(profile::builtin("training-lathe")))
-            for (const QString& word : QString::fromStdString(t.name).split(' ')) // a cell may wrap it
-                QVERIFY2(text.contains(word), t.name.c_str());
+        // The window in English: the tools' English names (the machine gives
+        // them), none of their Russian; in Russian the other way round.
+        const profile::MachineProfile machine = profile::builtin("training-lathe");
+        QString text;
+        for (const char* lang : {"ru", "en"}) {
+            QVERIFY(setLanguage(lang));
+            const bool english = QLatin1String(lang) == QLatin1String("en");
+            QCOMPARE(tab.setupSheets()->exportPdf(pdf), QString());
+            QProcess p;
+            p.start("pdftotext", {"-layout", pdf, "-"});
+            QVERIFY(p.waitForFinished(30000));
+            text = QString::fromUtf8(p.readAllStandardOutput());
+            for (const profile::Tool& t : profile::tools(machine)) {
+                const QString name = QString::fromStdString(profile::toolName(machine, t, english));
+                const QString other = QString::fromStdString(profile::toolName(machine, t, !english));
+                QVERIFY(name != other);
+                for (const QString& word : name.split(' ')) // a cell may wrap it
+                    QVERIFY2(text.contains(word), qPrintable(name + "\n" + text));
+                QVERIFY2(!text.contains(other.split(' ').front()), qPrintable(other + "\n" + text));
+            }
+            const QString title = QString::fromStdString(profile::titleText(machine, english));
+            QVERIFY2(text.simplified().contains(title.left(20)), qPrintable(title + "\n" + text));
+        }
         QVERIFY2(text.contains("FACE"), qPrintable(text));
         QVERIFY(QRegularExpression("L1\\s+FACE\\s+\\d+\\.\\d").match(text).hasMatch());
         QVERIFY(QRegularExpression("R220\\s+200000\\s").match(text).hasMatch());

@@ -214,6 +214,24 @@ private slots:
                              qPrintable(QStringLiteral("%1 at %2x%3 %4").arg(shopMachineName(i)).arg(size.width())
                                             .arg(size.height()).arg(lang)));
                     QVERIFY(t->width() >= t->minimumSizeHint().width());
+                    // Each of its texts whole: a line that does not wrap as
+                    // wide as its text, one that wraps as tall as its lines.
+                    for (const QLabel* l : t->findChildren<QLabel*>()) {
+                        if (!l->isVisible() || l->text().isEmpty())
+                            continue;
+                        const bool whole = l->wordWrap() ? l->height() >= l->heightForWidth(l->width())
+                                                         : l->width() >= l->sizeHint().width();
+                        QVERIFY2(whole && t->rect().contains(QRect(l->mapTo(t, QPoint(0, 0)), l->size())),
+                                 qPrintable(QStringLiteral("%1 %2 «%3» %4x%5 (needs %6x%7) at %8x%9 %10")
+                                                .arg(shopMachineName(i), l->objectName(), l->text())
+                                                .arg(l->width())
+                                                .arg(l->height())
+                                                .arg(l->sizeHint().width())
+                                                .arg(l->wordWrap() ? l->heightForWidth(l->width()) : l->sizeHint().height())
+                                                .arg(size.width())
+                                                .arg(size.height())
+                                                .arg(lang)));
+                    }
                     ++seen;
                 }
                 QCOMPARE(seen, kMachines);

@@ -151,6 +151,81 @@ QStringList tooWide(const QMainWindow& w) {
     return out;
 }
 
+// Why the text of `c` (a button's, a label's) is not read whole where it is
+// shown, "" when it is: narrower than its text (a label that does not wrap,
+// a button), shorter than its wrapped text, or cut by a widget it lies in —
+// a scroll area only when it can scroll there (a dock without a horizontal
+// scroll bar cuts what lies beyond its right edge for good).
+QString cutText(const QWidget* c) {
+    QString text;
+    int need = 0;
+    if (const auto* b = qobject_cast<const QAbstractButton*>(c)) {
+        text = b->text();
+        if (text.isEmpty()) // an icon, a key drawn by its widget
+            return {};
+        need = c->sizeHint().width();
+        if (c->width() < need)
+            return QStringLiteral("%1 px wide, needs %2").arg(c->width()).arg(need);
+    } else if (const auto* l = qobject_cast<const QLabel*>(c)) {
+        if (qobject_cast<const ElidedLabel*>(c)) // cut on purpose, whole in its tooltip
+            return {};
+        text = l->text();
+        if (text.isEmpty() || l->textFormat() == Qt::RichText ||
+            (l->textFormat() != Qt::PlainText && Qt::mightBeRichText(text)))
+            return {}; // a picture, a rich text laid out as a document
+        if (l->wordWrap()) {
+            need = l->heightForWidth(l->width());
+            if (c->height() < need)
+                return QStringLiteral("%1 px tall, its wrapped text needs %2").arg(c->height()).arg(need);
+        } else if (c->width() < (need = c->sizeHint().width())) {
+            return QStringLiteral("%1 px wide, needs %2").arg(c->width()).arg(need);
+        }
+    }
+    if (text.isEmpty())
+        return {};
+    const QRect full(c->mapToGlobal(QPoint(0, 0)), c->size());
+    for (const QWidget* p = c->parentWidget(); p; p = p->parentWidget()) {
+        const QRect in(p->mapToGlobal(QPoint(0, 0)), p->size());
+        const QRect kept = full & in;
+        if (kept != full) {
+            const auto* area = qobject_cast<const QAbstractScrollArea*>(p->parentWidget());
+            const bool viewport = area && area->viewport() == p;
+            const bool acrossCut = kept.width() < full.width();
+            const bool downCut = kept.height() < full.height();
+            if (!viewport || (acrossCut && !area->horizontalScrollBar()->isVisible()) ||
+                (downCut && !area->verticalScrollBar()->isVisible()))
+                return QStringLiteral("cut by %1 (%2) to %3 of %4")
+                    .arg(p->objectName(), QString::fromLatin1(p->metaObject()->className()),
+                         sizeText(kept.size()), sizeText(full.size()));
+            break; // it scrolls into view
+        }
+        if (p->isWindow())
+            break;
+    }
+    return {};
+}
+
+// Every button's and label's text the user sees in the window, whole.
+QStringList cutTexts(const QMainWindow& w, const QString& where) {
+    QStringList out;
+    for (const QWidget* c : w.findChildren<QWidget*>()) {
+        if (!c->isVisible() || c->window() != &w || shownRect(c).isEmpty())
+            continue;
+        const QString why = cutText(c);
+        if (!why.isEmpty()) {
+            QString text;
+            if (const auto* b = qobject_cast<const QAbstractButton*>(c))
+                text = b->text();
+            else if (const auto* l = qobject_cast<const QLabel*>(c))
+                text = l->text();
+            out << QStringLiteral("%1: %2 (%3) «%4»: %5")
+                       .arg(where, c->objectName(), QString::fromLatin1(c->metaObject()->className()),
+                            text.left(60), why);
+        }
+    }
+    return out;
+}
+
 // A shortcut as Qt's shortcut map holds it: its keys, where it acts and
 // what it is (for the message).
 struct Bound {
@@ -442,6 +517,62 @@ private slots:
             QVERIFY(w.grab().save(shotPath(QStringLiteral("operator-%1-buttons").arg(QString::fromLatin1(name).mid(5)))));
             d->hide();
         }
+    }
+
+    // On this screen, in Russian and in English, every workspace shows each
+    // button's and label's text whole: a narrow dock wraps its row of
+    // buttons (the Controller's «Журнал кадров…» was cut at its right edge
+    // on a shop PC's 1366 px), and the shop's sentence when no machine has a
+    // line wraps rather than losing its middle.
+    void everyTextIsWholeInEachLanguage() {
+        QStringList all;
+        for (const char* lang : {"ru", "en"}) {
+            QVERIFY(setLanguage(lang));
+            QSettings().remove("workspaces");
+            MainWindow w;
+            QVERIFY(shown(w));
+            for (const WorkspaceSpec& s : w.workspaces()->specs()) {
+                QVERIFY(w.workspaces()->activate(s.id));
+                settle();
+                const QString where = QStringLiteral("%1 %2").arg(QString::fromLatin1(lang), s.id);
+                all << cutTexts(w, where);
+                QVERIFY(w.grab().save(shotPath(QStringLiteral("%1-%2-texts").arg(s.id, QString::fromLatin1(lang)))));
+            }
+            // The Controller dock's buttons: each whole inside the dock.
+            QVERIFY(w.workspaces()->activate("shop"));
+            settle();
+            auto* dock = w.findChild<QDockWidget*>("dock.controller");
+            QVERIFY(dock && dock->isVisible());
+            for (const char* name : {"controller.pull", "controller.push", "controller.saveFrames",
+                                     "controller.cancel", "controller.connect"}) {
+                auto* b = dock->findChild<QPushButton*>(QString::fromLatin1(name));
+                QVERIFY2(b && b->isVisible(), name);
+                const QRect inDock(b->mapTo(dock, QPoint(0, 0)), b->size());
+                QVERIFY2(dock->rect().contains(inDock) && b->width() >= b->sizeHint().width(),
+                         qPrintable(QStringLiteral("%1 %2 «%3» at %4,%5 %6 (needs %7), the dock %8")
+                                        .arg(QString::fromLatin1(lang), QString::fromLatin1(name), b->text())
+                                        .arg(inDock.x())
+                                        .arg(inDock.y())
+                                        .arg(sizeText(inDock.size()), sizeText(b->sizeHint()), sizeText(dock->size()))));
+            }
+            // The shop's header wraps: a sentence of several lines is shown
+            // whole (as when no machine of the database has a line).
+            auto* header = w.findChild<QLabel*>("shop.header");
+            QVERIFY(header && header->isVisible());
+            QVERIFY(header->wordWrap());
+            header->setText(QStringLiteral("Ни один станок базы данных /var/lib/k528/цех-1/k528.db не хранит линию "
+                                           "связи с контроллером: задайте линию станка в базе данных. ")
+                                .repeated(3));
+            settle();
+            all << cutTexts(w, QString::fromLatin1(lang) + " shop, a long header");
+            QVERIFY(header->height() >= header->heightForWidth(header->width()));
+            QVERIFY(w.close());
+            qInfo("%s: %lld texts cut", lang, static_cast<long long>(all.size()));
+        }
+        QVERIFY(setLanguage("ru"));
+        for (const QString& cut : all) // each in full (a failure's message is cut short)
+            qWarning("%s", qPrintable(cut));
+        QVERIFY2(all.isEmpty(), qPrintable(all.join("\n")));
     }
 
     void longTextsAndMoreDocksDoNotWidenTheWindow() {

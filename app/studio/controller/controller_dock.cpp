@@ -15,6 +15,7 @@
 #include "shop/shop_machines.h"
 #include "units/units.h"
 #include "widgets.h"
+#include "workspace/flow_layout.h"
 
 #include <utility>
 #include <QCheckBox>
@@ -106,7 +107,9 @@ void ControllerDock::build() {
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the texts wrap to the dock's width
+    // The texts wrap to the dock's width; a dock made narrower than its form
+    // scrolls sideways rather than cutting the buttons at its edge.
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     auto* body = new QWidget(scroll);
     auto* lay = new QVBoxLayout(body);
     lay->setContentsMargins(6, 6, 6, 6);
@@ -172,7 +175,11 @@ void ControllerDock::build() {
     form->addRow(lineState_);
     lay->addWidget(lineBox_);
 
-    auto* buttons = new QHBoxLayout;
+    // The transfer buttons wrap onto a second row in a narrow dock (a shop
+    // PC's 1366 px): each stays whole and reachable, none is cut at the edge.
+    auto* buttonRow = new QWidget(body);
+    buttonRow->setObjectName("controller.buttons");
+    auto* buttons = new FlowLayout(buttonRow, 6, 4);
     pull_ = new QPushButton(body);
     pull_->setObjectName("controller.pull");
     push_ = new QPushButton(body);
@@ -181,11 +188,11 @@ void ControllerDock::build() {
     connect(push_, &QPushButton::clicked, this, [this] { pushFile(); });
     buttons->addWidget(pull_);
     buttons->addWidget(push_);
-    lay->addLayout(buttons);
     frames_ = new QPushButton(body);
     frames_->setObjectName("controller.saveFrames");
     connect(frames_, &QPushButton::clicked, this, [this] { saveFrameLog(); });
     buttons->addWidget(frames_);
+    lay->addWidget(buttonRow);
     auto* prog = new QHBoxLayout;
     progress_ = new QProgressBar(body);
     progress_->setObjectName("controller.progress");

@@ -5,6 +5,7 @@
 #include "editor/program_editor.h"
 #include "language.h"
 #include "plc/description.h"
+#include "profile/english.h"
 #include "profile/tools.h"
 #include "session/translated_texts.h"
 #include "stock/stock.h"
@@ -149,7 +150,7 @@ ProveoutPane::ProveoutPane(EditorTab* editor, QWidget* parent)
     layout->addWidget(table_, 3);
     toolsTitle_ = new QLabel(this);
     layout->addWidget(toolsTitle_);
-    tools_ = new QTableWidget(0, 7, this);
+    tools_ = new QTableWidget(0, 8, this);
     tools_->setObjectName("proveout.tools");
     tools_->setEditTriggers(QAbstractItemView::NoEditTriggers);
     tools_->verticalHeader()->hide();
@@ -335,10 +336,12 @@ void ProveoutPane::showTools(const Input* in) {
             mm(o.zMm),
             t.offsetR >= 0 ? QStringLiteral("R%1, R%2").arg(t.offsetR).arg(t.offsetR + 1) : QString(),
             t.maxDepthMm > 0 ? mm(t.maxDepthMm) : QStringLiteral("—"),
+            // The machine's name for it in the window's language (its Russian when it gives no English).
+            QString::fromStdString(profile::toolName(in->machine, t, !russianWindow())),
         };
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
-            if (c != 1)
+            if (c != 1 && c != 7)
                 item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             tools_->setItem(r, c, item);
         }
@@ -387,8 +390,8 @@ void ProveoutPane::retranslate() {
     auto_->setText(tr("Prove after each change"));
     toolsTitle_->setText(tr("The machine's tools"));
     table_->setHorizontalHeaderLabels({tr("Severity"), tr("Program"), tr("Frame"), tr("Line"), tr("Text")});
-    tools_->setHorizontalHeaderLabels({tr("Station"), tr("Tool"), tr("Radius, mm"), tr("Offset X, mm"),
-                                       tr("Offset Z, mm"), tr("Offsets in"), tr("Max depth, mm")});
+    tools_->setHorizontalHeaderLabels({tr("Station"), tr("Kind"), tr("Radius, mm"), tr("Offset X, mm"),
+                                       tr("Offset Z, mm"), tr("Offsets in"), tr("Max depth, mm"), tr("Tool")});
     tools_->horizontalHeaderItem(2)->setToolTip(tr("The tool's nose radius"));
     tools_->horizontalHeaderItem(6)->setToolTip(tr("The deepest cut the tool takes (its cutting edge)"));
     fillFindings(); // the findings' texts in the new language
@@ -398,7 +401,7 @@ void ProveoutPane::retranslate() {
 void ProveoutPane::changeEvent(QEvent* e) {
     if (e->type() == QEvent::LanguageChange) {
         retranslate();
-        // The tools' kinds in the new language.
+        // The tools' kinds and names in the new language.
         Input in;
         QString why;
         showTools(input(in, why) ? &in : nullptr);

@@ -50,8 +50,8 @@ QString setupSheetHtml(const proveout::SetupSheet& s, bool ru) {
         h += QStringLiteral("<tr><td><b>") + T(label) + QStringLiteral(":</b></td><td>") + value + QStringLiteral("</td></tr>");
     };
     QString machine = esc(q(s.machineName));
-    if (!s.machineTitle.empty())
-        machine += QStringLiteral(" — ") + esc(q(s.machineTitle));
+    if (const std::string& title = ru ? s.machineTitle : s.machineTitleEn; !title.empty())
+        machine += QStringLiteral(" — ") + esc(q(title));
     machine += QStringLiteral("; ") + T(s.xDiameter ? SheetText::XDiameterNote : SheetText::XRadiusNote);
     row(SheetText::Machine, machine);
     row(SheetText::File, esc(q(s.file)));
@@ -85,7 +85,7 @@ QString setupSheetHtml(const proveout::SetupSheet& s, bool ru) {
             const QString offsetR = t.tool.offsetR < 0 ? QStringLiteral("—")
                                                        : QStringLiteral("R%1, R%2").arg(t.tool.offsetR).arg(t.tool.offsetR + 1);
             h += QStringLiteral("<tr>") + td(QStringLiteral("T%1").arg(t.tool.station)) +
-                 td(esc(q(proveout::toolKindText(t.tool.kind, ru)))) + td(esc(q(t.tool.name))) +
+                 td(esc(q(proveout::toolKindText(t.tool.kind, ru)))) + td(esc(q(t.name(ru)))) +
                  td(mm(t.tool.tipRadiusMm), true) + td(esc(q(t.tool.orientation()))) + td(offsetR) +
                  td(t.tool.offsetR < 0 ? QStringLiteral("—") : mm(t.offsetXMm), true) +
                  td(t.tool.offsetR < 0 ? QStringLiteral("—") : mm(t.offsetZMm), true) + QStringLiteral("</tr>");

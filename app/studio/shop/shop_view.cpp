@@ -137,10 +137,14 @@ ShopTile::ShopTile(const ShopMachine& machine, QWidget* parent) : QFrame(parent)
     small.setPointSizeF(small.pointSizeF() * 0.9);
     line_->setFont(small);
     lay->addWidget(line_);
+    // The tile's width is fixed (a grid of tiles): a mode with its note
+    // («Режим F7 «РАБОТА С ПЭВМ», выполняется») takes a second line.
     mode_ = new QLabel(this);
     mode_->setObjectName("shop.tile.mode");
+    mode_->setWordWrap(true);
     program_ = new QLabel(this);
     program_->setObjectName("shop.tile.program");
+    program_->setWordWrap(true);
     alarms_ = new QLabel(this);
     alarms_->setObjectName("shop.tile.alarms");
     alarms_->setWordWrap(true);
@@ -313,10 +317,14 @@ void ShopView::build() {
     auto* lay = new QVBoxLayout(this);
     lay->setContentsMargins(6, 6, 6, 6);
     auto* head = new QHBoxLayout;
-    // One line, cut where it does not fit (the whole text in its tool tip):
-    // a long database path must not make the page taller.
-    header_ = new ElidedLabel(this, Qt::ElideMiddle);
+    // Wrapped, whole: a sentence (no machine has a line, the database cannot
+    // be read) cut in its middle told nothing; a long database path takes a
+    // second line.
+    header_ = new QLabel(this);
     header_->setObjectName("shop.header");
+    header_->setTextFormat(Qt::PlainText);
+    header_->setWordWrap(true);
+    header_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     reload_ = new QPushButton(this);
     reload_->setObjectName("shop.reload");
     connect(reload_, &QPushButton::clicked, this, &ShopView::reload);
@@ -441,7 +449,6 @@ void ShopView::retranslate() {
                              .arg(ShopDatabase::currentText())
                              .arg(machines_.size())
                              .arg(kIntervalMs));
-    header_->setToolTip(header_->text());
     for (ShopTile* t : tiles_)
         t->retranslate();
     readTransfers();
@@ -728,7 +735,6 @@ void ShopView::startPolling() {
     auto p = std::make_unique<shop::Poller>(std::move(lines), kTimeoutMs, error);
     if (!p->ok()) {
         header_->setText(tr("The machines cannot be polled: %1").arg(error));
-        header_->setToolTip(header_->text());
         return;
     }
     poller_ = std::move(p);
