@@ -88,7 +88,7 @@ QString currentLanguage() { return current(); }
 bool russianWindow() { return current() == QLatin1String("ru"); }
 
 QString coreText(std::string_view ru, std::string_view en) {
-    const std::string_view s = russianWindow() ? ru : en;
+    const std::string_view s = inWindowLanguage(ru, en);
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 

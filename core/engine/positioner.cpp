@@ -3,6 +3,7 @@
 #include "catalog/messages.h"
 #include "engine/coordinates.h"
 #include "engine/self_test.h"
+#include "profile/english.h"
 #include "profile/problem.h"
 #include "profile/validate.h"
 #include "util/same_bytes.h"
@@ -1280,9 +1281,12 @@ ProgramView Positioner::programView() const {
     v.line = interp_.line();
     v.nesting = interp_.level();
     v.messageNumber = c_.messageNumber;
-    if (c_.messageNumber > 0)
-        if (const std::string* t = c_.store.messages.text(c_.messageNumber))
-            v.messageText = *t;
+    if (c_.messageNumber > 0) {
+        const program::Message* m = c_.store.messages.find(c_.messageNumber);
+        v.messageOrigin = !m ? MessageOrigin::None : m->machineFile ? MessageOrigin::MachineFile : MessageOrigin::Program;
+        if (m)
+            v.messageText = m->text;
+    }
     v.overridePercent = c_.overridePercent;
     v.overrideFromPlc = c_.words.bit(z::OverrideFromPlc);
     v.endOrReset = c_.endOrReset;
@@ -1290,6 +1294,12 @@ ProgramView Positioner::programView() const {
     v.framesExecuted = c_.framesExecuted;
     v.dataHold = c_.words.bit(z::DataHold);
     return v;
+}
+
+std::string programMessageText(const ProgramView& v, const profile::MachineProfile& machine, bool english) {
+    if (english && v.messageOrigin == MessageOrigin::MachineFile)
+        return profile::messageText(machine, v.messageNumber, true);
+    return v.messageText;
 }
 
 std::vector<AlarmView> Positioner::alarms() const {

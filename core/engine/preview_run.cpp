@@ -2,6 +2,7 @@
 
 #include "engine/positioner.h"
 #include "engine/ideal_machine.h"
+#include "engine/load_programs.h"
 
 #include <algorithm>
 
@@ -36,13 +37,7 @@ PreviewResult runPreview(const profile::MachineProfile& profileIn,
     IdealMachine machine(ctl);
     PreviewResult res;
     ctl.powerOn();
-    if (program::ProgramStore* store = ctl.editablePrograms()) {
-        for (const program::Program& p : programs.programs())
-            store->insert(p);
-        for (const program::Message& m : programs.messages.entries)
-            store->messages.set(m.number, m.text);
-        ctl.programsEdited();
-    }
+    loadPrograms(ctl, programs); // a fresh controller: no program runs
     for (const auto& [n, v] : options.rPresets)
         ctl.setR(n, v);
     machine.setMAckDelayMs(0);

@@ -3,6 +3,7 @@
 #include "engine/rparams.h"
 #include "program/formatter.h"
 
+#include "profile/english.h"
 #include "profile/validate.h"
 #include "program/parser.h"
 
@@ -48,8 +49,10 @@ program::ProgramStore loadStore(const profile::MachineProfile& p, bool& intact) 
         for (program::Program& prog : pr.store.programs())
             store.insert(std::move(prog));
     }
-    for (const auto& [k, text] : p.messages)
+    for (const auto& [k, text] : p.messages) {
         store.messages.set(k, text);
+        store.messages.entries.back().machineFile = true;
+    }
     return store;
 }
 
@@ -73,6 +76,15 @@ profile::MachineProfile memoryProfile(const profile::MachineProfile& base,
     p.messages.clear();
     for (const program::Message& m : store.messages.entries)
         p.messages[m.number] = m.text;
+    // The machine file's English of a message is of its Russian: it goes
+    // with a message the memory holds no more or holds another text in (a
+    // program's), else a window in English would show it for that text.
+    for (const auto& [k, text] : base.messages)
+        if (const auto it = p.messages.find(k); it == p.messages.end() || it->second != text) {
+            std::string item = "#";
+            item += std::to_string(k);
+            p.simulation.erase(profile::englishKey(item));
+        }
     return p;
 }
 

@@ -23,7 +23,8 @@ namespace k528::engine {
 std::array<bool, 65> configurationMessages(std::span<const std::int64_t> c);
 
 // The store of a profile: its programs (each text parsed on its own) and
-// technological messages. `intact` is false when a text did not parse.
+// technological messages (marked the machine file's, Message::machineFile).
+// `intact` is false when a text did not parse.
 program::ProgramStore loadStore(const profile::MachineProfile& p, bool& intact);
 
 // True if every frame of the store was read without a syntax error.
@@ -33,8 +34,9 @@ bool storeIntact(const program::ProgramStore& store);
 // title, PLC texts and simulation settings) with the C-parameters `c`, the
 // writable R-parameters that are not 0 as presets (the read-only R232..R262
 // are the machine's state, not settings), and every program of `store` in
-// canonical text with the store's messages. What «keep the controller's
-// memory» writes to the database.
+// canonical text with the store's messages (a message's English only while
+// its Russian is the machine's). What «keep the controller's memory» writes
+// to the database.
 profile::MachineProfile memoryProfile(const profile::MachineProfile& base,
                                       std::span<const std::int64_t> c,
                                       std::span<const std::int32_t> r,

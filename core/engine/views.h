@@ -12,6 +12,10 @@
 #include <string>
 #include <vector>
 
+namespace k528::profile {
+struct MachineProfile;
+}
+
 namespace k528::engine {
 
 struct AxisView {
@@ -38,6 +42,14 @@ struct AxisView {
     int fault = 0; // message number of a servo fault, 0 none
 };
 
+// Where the text of the technological message shown comes from. A view of a
+// controller on a line, whose texts are the machine file's, keeps the default.
+enum class MessageOrigin : std::uint8_t {
+    MachineFile, // the machine file's message #k (the file may give its English)
+    Program,     // a program file's own text, loaded over the machine's
+    None,        // the memory holds no text #k: the panel shows none
+};
+
 struct ProgramView {
     Mode mode = Mode::Manual;
     bool modeFromPlc = false; // Z1000.8-10 != 0: F1..F7 refused
@@ -52,6 +64,7 @@ struct ProgramView {
     int nesting = 0;              // R158
     int messageNumber = 0;        // # of the technological message shown
     std::string messageText;      // its text ("" if none)
+    MessageOrigin messageOrigin = MessageOrigin::MachineFile; // where the text comes from
     int overridePercent = 100;    // R249
     bool overrideFromPlc = false; // Z1001.11
     bool endOrReset = false;      // Z2000.10
@@ -78,6 +91,13 @@ struct AlarmView {
 // маховика», the blank after the dot where the manual has one — and English
 // always with the blank («37. N encoder error»).
 std::string alarmText(const AlarmView& a, bool russian);
+
+// The technological message of `v` for a reader of English or Russian: the
+// machine file's (v.messageOrigin) in the English `machine` gives for it,
+// else the text as the panel shows it — a program's own text stays as
+// written, even when it reads as the machine's.
+std::string programMessageText(const ProgramView& v, const profile::MachineProfile& machine,
+                               bool english);
 
 // The PLC messages as the panel lists them (bit k-1 = message k).
 struct PlcMessagesView {

@@ -184,11 +184,8 @@ void Recorder::step(std::int64_t now, std::uint16_t z1000, EntryOf&& entryOf, co
         }
         programMessage_ = pv.messageNumber;
         if (pv.messageNumber > 0) {
-            // The machine file's message in English when it gives one (not a program's own).
-            const bool machines = pv.messageText == profile::messageText(*machine_, pv.messageNumber, false);
             program_.seq = raise(MessageSource::Program, pv.messageNumber, pv.messageText,
-                                 machines ? profile::messageText(*machine_, pv.messageNumber, true) : pv.messageText,
-                                 curProgram, curLine);
+                                 engine::programMessageText(pv, *machine_, true), curProgram, curLine);
             program_.cause = true;
         }
     }

@@ -378,6 +378,7 @@ void MessageTable::set(int number, std::string text) {
     for (Message& m : entries)
         if (m.number == number) {
             m.text = std::move(text);
+            m.machineFile = false;
             return;
         }
     Message m;

@@ -429,6 +429,11 @@ struct Message {
     SourceSpan span;     // the "#k=text" line
     int textColumn = 0;  // column of the text's first character
     std::vector<TriviaLine> leading; // comment and blank lines above it
+    // The machine file's own message (its [messages], put into the
+    // controller's memory when it is built from the file), not a program
+    // file's text: a window in English may show the file's English of it.
+    // A text set over it (set()) is a program's, even when it reads the same.
+    bool machineFile = false;
 };
 
 struct MessageTable {
@@ -445,7 +450,8 @@ struct MessageTable {
         const Message* m = find(number);
         return m ? &m->text : nullptr;
     }
-    // Adds or replaces message k (the section becomes present).
+    // Adds or replaces message k (the section becomes present); the text is
+    // no longer the machine file's (Message::machineFile).
     void set(int number, std::string text);
 };
 

@@ -94,10 +94,16 @@ constexpr util::CatalogText kUcgTexts[] = {
 
 util::TextCatalog ucgTexts() { return util::TextCatalog(kUcgTexts); }
 
+std::string ucgErrorText(std::string_view said) { return "UCG: " + std::string(said); }
+
+std::string ucgErrorText(std::string_view id, std::span<const std::string> args, bool russian) {
+    return ucgErrorText(ucgTexts().render(id, args, russian));
+}
+
 std::optional<Blank> parseUcg(std::string_view s, std::string* error, std::string* errorId) {
     const auto fail = [&](std::string_view id) -> std::optional<Blank> {
         if (error)
-            *error = "UCG: " + ucgTexts().render(id, {}, false);
+            *error = ucgErrorText(id, {}, false);
         if (errorId)
             *errorId = std::string(id);
         return std::nullopt;
@@ -148,7 +154,7 @@ std::optional<Blank> findUcg(std::string_view text, std::string* error, std::str
             return parseUcg(candidate, error, errorId);
     }
     if (error)
-        *error = ucgTexts().render(kNoUcg, {}, false);
+        *error = ucgErrorText(kNoUcg, {}, false);
     if (errorId)
         *errorId = std::string(kNoUcg);
     return std::nullopt;

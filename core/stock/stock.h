@@ -45,8 +45,8 @@ struct Blank {
 };
 
 // Parses "UCG,2,Z-100Z0,X200X0,S0S0,0,-5" (spaces allowed); nullopt with
-// `error` set when malformed ("UCG: " and the English of ucgTexts()) and
-// `errorId` to its id, which a display says in its language.
+// `error` set when malformed (ucgErrorText in English) and `errorId` to its
+// id, which a display says in its language.
 std::optional<Blank> parseUcg(std::string_view text, std::string* error = nullptr,
                               std::string* errorId = nullptr);
 // The first `UCG,` of a program file's text (in a comment), if any; without
@@ -55,9 +55,13 @@ std::optional<Blank> findUcg(std::string_view fileText, std::string* error = nul
                              std::string* errorId = nullptr);
 inline constexpr std::string_view kNoUcg = "none";
 // What can be wrong with a UCG line: its ids (errorId) with their Russian
-// and English, said after "UCG: " (the desktop says the same ids through
-// its translators).
+// and English (the desktop says the same ids through its translators).
 util::TextCatalog ucgTexts();
+// A UCG line's error as everyone says it (`k528 prove`, the prove-out, an
+// exercise's blank): the text of its id after the "UCG: " that says which
+// line is wrong. `said` is the text in a display's own words (its translation).
+std::string ucgErrorText(std::string_view said);
+std::string ucgErrorText(std::string_view id, std::span<const std::string> args, bool russian);
 std::string formatUcg(const Blank& b);
 
 struct PointZR {

@@ -75,7 +75,7 @@ std::string exerciseErrorText(const std::string& source, const std::optional<std
     if (at)
         s += (at->empty() ? exerciseTexts().render("the-file", {}, russian) : *at) + ": ";
     if (id.starts_with(kUcgPrefix)) // said as the prove-out and `k528 prove` say it
-        return s + "UCG: " + stock::ucgTexts().render(id.substr(kUcgPrefix.size()), args, russian);
+        return s + stock::ucgErrorText(id.substr(kUcgPrefix.size()), args, russian);
     return s + exerciseTexts().render(id, args, russian);
 }
 

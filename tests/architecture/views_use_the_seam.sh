@@ -11,6 +11,7 @@
 # is viewed).
 set -u
 studio=$1
+. "$(dirname "$0")/allowed_files.sh"
 allowed='
 session/simulation_session.cpp
 session/program_loader.cpp
@@ -21,19 +22,8 @@ machine/machine_panel.cpp
 editor/debug_panel.cpp
 editor/debug_session.cpp
 '
-status=0
-found=$(cd "$studio" && grep -rlE '#[[:space:]]*include[[:space:]]*"(session/)?simulation_session\.h"' --include='*.cpp' --include='*.h' . | sed 's|^\./||' | sort)
-for f in $found; do
-    case "$allowed" in
-    *"
-$f
-"*) ;;
-    *)
-        echo "FAIL: $f includes simulation_session.h: a view reaches controllers through controller/controller.h"
-        status=1
-        ;;
-    esac
-done
+only_in "$studio" '#[[:space:]]*include[[:space:]]*"(session/)?simulation_session\.h"' "$allowed" \
+    'includes simulation_session.h: a view reaches controllers through controller/controller.h'
 n=$(echo "$found" | grep -c . || true)
 [ $status -eq 0 ] && echo "views use the seam: simulation_session.h included by $n simulation-only files"
 exit $status

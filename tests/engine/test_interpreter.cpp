@@ -5,6 +5,8 @@
 // subprogram, M17, a subprogram's end, the nesting limit, the skip flag,
 // arithmetic and 46, M00); a test here asserts the state on the way or a
 // machine the golden cases cannot set up.
+#include "engine/self_test.h"
+#include "profile/english.h"
 #include "rig/engine_rig.h"
 
 #include <QtTest>
@@ -244,6 +246,48 @@ private slots:
         r.advance(5);
         QVERIFY(r.untilState(ProgramState::M0, 2000));
         QCOMPARE(QString::fromStdString(r.ctl->programView().messageText), QString("ОТВОД"));
+    }
+    // The view says where the message's text comes from: the machine file's
+    // message (whose English the file gives) or a program file's own text,
+    // even one that reads as the machine's; a number without text has none.
+    void technologicalMessageOrigin() {
+        EngineRig r("training-lathe", noHoming);
+        // The lathe's file: #1=ПОДВОД (APPROACH), #2=ТОРЦОВКА (FACING).
+        r.load("%L1\nN1 #1 M0\nN2 #2 M0\nN3 #77 M0\n%MESSAGES\n#2=ТОРЦОВКА\n");
+        r.start(1);
+        using engine::MessageOrigin;
+        struct Shown {
+            int number;
+            MessageOrigin origin;
+            const char* ru;
+            const char* en;
+        };
+        for (const Shown& want : {Shown{1, MessageOrigin::MachineFile, "ПОДВОД", "APPROACH"},
+                                  Shown{2, MessageOrigin::Program, "ТОРЦОВКА", "ТОРЦОВКА"},
+                                  Shown{77, MessageOrigin::None, "", ""}}) {
+            QVERIFY(r.untilState(ProgramState::M0, 2000));
+            const engine::ProgramView v = r.ctl->programView();
+            QCOMPARE(v.messageNumber, want.number);
+            QCOMPARE(v.messageOrigin, want.origin);
+            QCOMPARE(engine::programMessageText(v, r.prof, false), std::string(want.ru));
+            QCOMPARE(engine::programMessageText(v, r.prof, true), std::string(want.en));
+            r.m->pressStart();
+            r.advance(5);
+        }
+        // The memory kept as the machine's: an English stays with its own
+        // Russian only, never with another text loaded over it.
+        QVERIFY(r.runToEnd(2000));
+        program::ProgramStore* store = r.ctl->editablePrograms();
+        QVERIFY(store);
+        store->messages.set(5, "ОТХОД");
+        store->messages.set(9, "ПРОВЕРКА");
+        const profile::MachineProfile kept =
+            engine::memoryProfile(r.prof, r.ctl->c(), r.ctl->rValues(), r.ctl->programs());
+        QCOMPARE(profile::messageText(kept, 1, true), std::string("APPROACH"));
+        QCOMPARE(profile::messageText(kept, 2, true), std::string("FACING"));
+        QCOMPARE(profile::messageText(kept, 5, true), std::string("ОТХОД"));
+        QCOMPARE(profile::messageText(kept, 9, true), std::string("ПРОВЕРКА"));
+        QVERIFY(!kept.simulation.has(profile::englishKey("#5")));
     }
     // «Сброс» aborts without continuation; modal defaults return (G01, G54, G55, G90).
     void resetRestoresDefaults() {

@@ -141,6 +141,24 @@ private slots:
         }
     }
 
+    // A program's technological message: the machine file's with the English
+    // the file gives; a program file's own text as written, in both, even
+    // when it reads as the machine's message of that number.
+    void programMessageInBothLanguages() {
+        Rig rig;
+        // The lathe's file: #1=ПОДВОД (APPROACH), #2=ТОРЦОВКА (FACING).
+        QCOMPARE(rig.run("%L1\nN1 #2 G4 X0.1\nN2 #1 G4 X0.1\nN3 M30\n%MESSAGES\n#1=ПОДВОД\n").status,
+                 engine::RunStatus::Completed);
+        const MessageEvent* machines = rig.raised(MessageSource::Program, 2);
+        QVERIFY(machines);
+        QCOMPARE(machines->message.text, std::string("ТОРЦОВКА"));
+        QCOMPARE(machines->message.textEn, std::string("FACING"));
+        const MessageEvent* own = rig.raised(MessageSource::Program, 1);
+        QVERIFY(own);
+        QCOMPARE(own->message.text, std::string("ПОДВОД"));
+        QCOMPARE(own->message.textEn, std::string("ПОДВОД"));
+    }
+
     // The E-stop: 9 comes with its cause, the cause goes, ESC acknowledges;
     // the history is the same after closing and reopening the database.
     // A controller read over the link gives only what it shows: the
@@ -163,6 +181,7 @@ private slots:
         o.program.line = 3;
         o.program.messageNumber = 12;
         o.program.messageText = "ПРОВЕРКА";
+        o.program.messageOrigin = engine::MessageOrigin::Program;
         o.timeMs = 1500;
         rec.observe(o);
         std::vector<MessageEvent> ev = rec.takeEvents();

@@ -13,6 +13,7 @@
 #include "constants/constants_editor.h"
 #include "constants/constants_lock.h"
 #include "constants/constants_model.h"
+#include "db/explain.h"
 #include "engine/run.h"
 #include "machine/run.h"
 #include "language.h"
@@ -297,6 +298,28 @@ private slots:
         QVERIFY2(m.data().toString().contains(QStringLiteral("0.4166")) ||
                      m.data().toString().contains(QStringLiteral("0.4167")),
                  qPrintable(m.data().toString()));
+    }
+
+    // What a value means is core's, in both languages: the column says it in
+    // the window's, and again in the other when the window changes language.
+    void theMeaningFollowsTheWindowsLanguage() {
+        QVERIFY(setLanguage(QStringLiteral("en")));
+        SimulatedSeam sim(lathe("lathe-means"));
+        ConstantsPane pane(sim.seam, sim.session.simulation().profile());
+        const profile::MachineProfile& p = sim.session.simulation().profile();
+        const auto means = [&] {
+            return pane.model()->index(ConstantsModel::rowOf(22), ConstantsModel::Means).data().toString();
+        };
+        const QString en = QString::fromStdString(db::explainCValue(p, 22, db::Lang::En));
+        const QString ru = QString::fromStdString(db::explainCValue(p, 22, db::Lang::Ru));
+        QVERIFY2(!en.isEmpty() && en != ru, qPrintable(en));
+        QCOMPARE(means(), en);
+        QVERIFY(setLanguage(QStringLiteral("ru")));
+        QTest::qWait(20); // the language change reaches the pane
+        QCOMPARE(means(), ru);
+        QVERIFY(setLanguage(QStringLiteral("en")));
+        QTest::qWait(20);
+        QCOMPARE(means(), en);
     }
 
     void importExportAndDiff() {

@@ -16,6 +16,7 @@
 #include <QListWidget>
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "session/program_loader.h"
 #include "session/simulation_session.h"
 
 #include <QDockWidget>
@@ -49,6 +50,15 @@ bool waitFor(SimulationSession& s, const std::function<bool()>& done, std::int64
         s.advance(10);
     }
     return done();
+}
+
+// The text of message `number` ("#2", "W10") in the messages view, "" if not shown.
+QString messageShown(MessagesView& v, const QString& number) {
+    v.refresh();
+    for (int i = 0; i < v.list()->topLevelItemCount(); ++i)
+        if (v.list()->topLevelItem(i)->text(1) == number)
+            return v.list()->topLevelItem(i)->text(2);
+    return {};
 }
 
 bool hasMessage(MessagesView& v, const QString& number) {
@@ -448,6 +458,43 @@ private slots:
         s->advance(20);
         QCOMPARE(m->shownProgram(), 7);
         QCOMPARE(m->executingRow(), -1);
+    }
+
+    // A program's technological message in the messages view: the machine
+    // file's in the English the file gives (in an English window), a program
+    // file's own text as written even where it reads as the machine's.
+    void programMessageInTheWindowsLanguage() {
+        QVERIFY(setLanguage("en"));
+        profile::MachineProfile p = profile::builtin("training-lathe");
+        p.setC(8, 1); // АВТ.БЕЗ ПБТ of X and Z: no homing for this test
+        p.setC(60, 1);
+        SimulationSession s(p);
+        s.setRunning(false);
+        SimulatedController controller(s);
+        MessagesView messages(controller);
+        s.advance(10);
+        // The lathe's file: #1=ПОДВОД (APPROACH), #2=ТОРЦОВКА (FACING).
+        const ProgramLoad load = loadProgramText(
+            s, "%L7\nN1 #1 M0\nN2 #2 M0\nN3 M30\n%MESSAGES\n#2=ТОРЦОВКА\n", "own.k528");
+        QVERIFY2(load.loaded, qPrintable(load.problem));
+        engine::Positioner& ctl = s.controller();
+        s.simulation().pressFor(machine::Button::DrivesOn, 100);
+        s.advance(600);
+        QVERIFY(ctl.selectMode(engine::Mode::Auto).ok());
+        QVERIFY(ctl.selectProgram(7).ok());
+        const auto nextStop = [&](int message) {
+            s.advance(200); // the button of the last start is up again
+            s.simulation().pressFor(machine::Button::CycleStart, 100);
+            return waitFor(s, [&] { return ctl.programView().messageNumber == message &&
+                                           ctl.state() == engine::ProgramState::M0; }, 3000);
+        };
+        QVERIFY(nextStop(1));
+        QCOMPARE(messageShown(messages, "#1"), QString("APPROACH"));
+        QVERIFY(setLanguage("ru"));
+        QCOMPARE(messageShown(messages, "#1"), QString("ПОДВОД"));
+        QVERIFY(setLanguage("en"));
+        QVERIFY(nextStop(2));
+        QCOMPARE(messageShown(messages, "#2"), QString("ТОРЦОВКА"));
     }
 
     // The trainer breaks the K923's link to the PLC: the desktop K923 says

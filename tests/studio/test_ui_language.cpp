@@ -1234,7 +1234,7 @@ void TestUiLanguage::russianCoreTexts() {
 void TestUiLanguage::russianBlankAndFaultTexts() {
     QVERIFY(studio::setLanguage("ru"));
     checkCatalog(stock::ucgTexts(), studio::hasUcgText, [](std::string_view id) {
-        return std::pair(studio::ucgErrorText(id), "UCG: " + stock::ucgTexts().render(id, {}, true));
+        return std::pair(studio::ucgErrorText(id), stock::ucgErrorText(id, {}, true));
     });
     checkCatalog(machine::faultTexts(), studio::hasFaultText, [](std::string_view id) {
         const machine::FaultText t{std::string(id), {"X", "2"}};

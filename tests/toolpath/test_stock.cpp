@@ -64,9 +64,20 @@ private slots:
         QCOMPARE(b->boreDiameterMm, 20.0);
         QCOMPARE(b->outerAngleDeg, -15.0);
         QCOMPARE(b->boreAngleDeg, 75.0);
-        QVERIFY(!stock::parseUcg("UCG,2,Z-100Z10,X200X0,S0S0", &error));
-        QVERIFY(!stock::parseUcg("UCG,2,X200X0", &error));
+        std::string id;
+        QVERIFY(!stock::parseUcg("UCG,2,Z-100Z10,X200X0,S0S0", &error, &id));
+        QCOMPARE(id, std::string("bore-sign"));
+        QVERIFY(!stock::parseUcg("UCG,2,X200X0", &error, &id));
+        QCOMPARE(id, std::string("z"));
         QVERIFY(stock::findUcg("%L1 (shaft)\n; UCG,2,Z-100Z0,X100X0,S0S0,0,-5\nN1 G0 X0\n"));
+        // Every error of a UCG line is said after the "UCG: " that names the
+        // line, the file's missing one too, in both languages.
+        QCOMPARE(error, std::string("UCG: expected Z<outer length>Z<bore length>"));
+        QVERIFY(!stock::findUcg("%L1 (shaft)\nN1 G0 X0 ; UCG\n", &error, &id));
+        QCOMPARE(id, std::string(stock::kNoUcg));
+        QCOMPARE(error, std::string("UCG: no UCG in the file"));
+        QCOMPARE(stock::ucgErrorText("cone", {}, true), std::string("UCG: углы конусов в пределах ±90°"));
+        QCOMPARE(stock::ucgErrorText("отверстие длиннее заготовки"), std::string("UCG: отверстие длиннее заготовки"));
         // A plain cylinder Ø100 × 100: half profile 50 × 100.
         const stock::Stock s(*stock::parseUcg("UCG,2,Z-100Z0,X100X0,S0S0,0,-5"));
         QVERIFY(std::fabs(s.areaMm2() - 5000) < 1e-6);

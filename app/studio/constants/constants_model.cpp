@@ -67,7 +67,7 @@ void ConstantsModel::fillTexts() {
 
 void ConstantsModel::fillMeans() {
     const profile::MachineProfile& p = editor_.controller().profile();
-    const db::Lang lang = russianWindow() ? db::Lang::Ru : db::Lang::En; // core explains in it
+    const db::Lang lang = inWindowLanguage(db::Lang::Ru, db::Lang::En); // core explains in it
     means_.assign(catalog::kCParamCount, QString());
     for (int row = 0; row < catalog::kCParamCount; ++row)
         means_[static_cast<std::size_t>(row)] = fromStd(db::explainCValue(p, row + 1, lang));

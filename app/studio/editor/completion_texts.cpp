@@ -34,11 +34,11 @@ bool hasCompletionText(std::string_view id) { return kCompletionTexts.has(id); }
 QString completionDetail(const editing::CompletionItem& item) {
     // The meanings of table 5 and appendix Л are data of two languages: shown
     // in the window's.
-    const bool russian = russianWindow();
     if (!item.detailId.empty())
-        if (const std::optional<QString> text = kCompletionTexts.text(item.detailId, item.detailArgsIn(russian)))
+        if (const std::optional<QString> text =
+                kCompletionTexts.text(item.detailId, inWindowLanguage(item.detailArgsIn(true), item.detailArgsIn(false))))
             return *text;
-    return QString::fromStdString(item.detail(russian)); // a text as it is (or an id without a translation)
+    return coreText(item.detail(true), item.detail(false)); // a text as it is (or an id without a translation)
 }
 
 } // namespace k528::studio

@@ -62,7 +62,7 @@ QString faultTitle(const machine::FaultText& t) {
             args[0] = kFaultTexts.pattern(id).toStdString();
     if (const std::optional<QString> text = kFaultTexts.text(t.id, args))
         return *text;
-    return QString::fromStdString(machine::faultTextIn(t, russianWindow())); // an id without a translation
+    return coreText(machine::faultTextIn(t, true), machine::faultTextIn(t, false)); // an id without a translation
 }
 
 QString faultTitle(const machine::FaultSpec& f) { return faultTitle(machine::faultText(f)); }

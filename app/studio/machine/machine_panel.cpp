@@ -366,7 +366,7 @@ QString MachinePanelWidget::lampLegend(const std::string& id) const {
 void MachinePanelWidget::retranslate() {
     const machine::Simulation& sim = session_.simulation();
     title_->setText(tr("MACHINE CONTROL PANEL") + "\n" +
-                    QString::fromStdString(profile::titleText(sim.profile(), !russianWindow())));
+                    coreText(profile::titleText(sim.profile(), false), profile::titleText(sim.profile(), true)));
     estop_->setLegend(tr("EMERGENCY STOP"));
     buttons_.at(machine::Button::DrivesOn)->setLegend(tr("DRIVES ON"));
     buttons_.at(machine::Button::Reset)->setLegend(tr("RESET"));

@@ -98,10 +98,8 @@ void MessagesView::refresh() {
     const engine::PlcMessagesView pm = st.plcMessages;
     const profile::MachineProfile& prof = controller_->profile();
     // The machine file's text in the window's language (its English when it gives one).
-    const auto text = [&, english = !russianWindow()](const std::map<int, std::string>& texts,
-                                                      catalog::PlcGroup g, int k) {
-        const auto it = texts.find(k);
-        return it != texts.end() ? fromStd(profile::plcText(prof, g, k, english))
+    const auto text = [&](const std::map<int, std::string>& texts, catalog::PlcGroup g, int k) {
+        return texts.contains(k) ? coreText(profile::plcText(prof, g, k, false), profile::plcText(prof, g, k, true))
                                  : fromStd(catalog::plcMessageAddress(g, k));
     };
     for (int k = 1; k <= 16; ++k)
@@ -125,11 +123,8 @@ void MessagesView::refresh() {
                             blue});
     const engine::ProgramView& pv = st.program;
     if (pv.messageNumber > 0) {
-        // The machine file's message in English when it gives one (and the
-        // message shown is the machine file's, not a program's own).
-        QString message = fromStd(pv.messageText);
-        if (!russianWindow() && pv.messageText == profile::messageText(prof, pv.messageNumber, false))
-            message = fromStd(profile::messageText(prof, pv.messageNumber, true));
+        const QString message = coreText(engine::programMessageText(pv, prof, false),
+                                         engine::programMessageText(pv, prof, true));
         rows.push_back({tr("Program"), QStringLiteral("#%1").arg(pv.messageNumber), message,
                         tr("information"), grey});
     }

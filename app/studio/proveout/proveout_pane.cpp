@@ -112,9 +112,9 @@ static_assert(ProveoutPane::kIndicator == ProgramEditor::kProveoutIndicator);
 bool hasUcgText(std::string_view id) { return kUcgTexts.has(id); }
 
 QString ucgErrorText(std::string_view id) {
-    const QString text = kUcgTexts.has(id) ? kUcgTexts.pattern(id)
-                                           : QString::fromStdString(stock::ucgTexts().render(id, {}, russianWindow()));
-    return QStringLiteral("UCG: ") + text;
+    if (!kUcgTexts.has(id)) // an id without a translation
+        return coreText(stock::ucgErrorText(id, {}, true), stock::ucgErrorText(id, {}, false));
+    return QString::fromStdString(stock::ucgErrorText(kUcgTexts.pattern(id).toStdString()));
 }
 
 ProveoutPane::ProveoutPane(EditorTab* editor, QWidget* parent)
@@ -337,7 +337,7 @@ void ProveoutPane::showTools(const Input* in) {
             t.offsetR >= 0 ? QStringLiteral("R%1, R%2").arg(t.offsetR).arg(t.offsetR + 1) : QString(),
             t.maxDepthMm > 0 ? mm(t.maxDepthMm) : QStringLiteral("—"),
             // The machine's name for it in the window's language (its Russian when it gives no English).
-            QString::fromStdString(profile::toolName(in->machine, t, !russianWindow())),
+            coreText(profile::toolName(in->machine, t, false), profile::toolName(in->machine, t, true)),
         };
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);

@@ -105,8 +105,8 @@ private:
 QDockWidget* addProveoutDock(QMainWindow* w, EditorTab* editor, QTabWidget* workArea);
 
 // What is wrong with a UCG line (core's stock::ucgTexts() id, parseUcg's
-// errorId) in the window's language after "UCG: ", e.g. «UCG: отверстие
-// длиннее заготовки».
+// errorId) in the window's language, said as stock::ucgErrorText says it:
+// «UCG: отверстие длиннее заготовки».
 QString ucgErrorText(std::string_view id);
 // The id has a text here (studio.ui_language: every id of core's catalog has).
 bool hasUcgText(std::string_view id);

@@ -160,15 +160,6 @@ bool ShopDatabase::isOpenDatabaseFile(const fs::path& file) {
     return false;
 }
 
-namespace {
-
-// Core's and the database library's own sentence (what()) is English: in an
-// English window it is said as it is; a Russian window says its own sentence
-// around the library's words.
-bool ownEnglishFits() { return !russianWindow(); }
-
-} // namespace
-
 QString databaseErrorKindText(db::ErrorKind kind) {
     // (the context of File > Database..., whose dialog says them first)
     switch (kind) {
@@ -192,17 +183,37 @@ QString databaseErrorKindText(db::ErrorKind kind) {
     }
 }
 
-QString databaseErrorDetail(const std::exception& e) {
-    if (ownEnglishFits())
-        return QString::fromUtf8(e.what());
-    // The library's own words where core kept them apart (SQLite speaks
-    // English only; libpq and the C library speak the window's language),
-    // else core's message: quoted, as said.
+namespace {
+
+// What a Russian window says of what the library said: its own words where
+// core kept them apart (SQLite speaks English only; libpq and the C library
+// speak the window's language), else core's message: quoted, as said.
+QString quotedDetail(const std::exception& e) {
     const auto* error = dynamic_cast<const db::Error*>(&e);
     if (error && error->detail().empty())
         return {}; // core's own English sentence: its kind says it (databaseErrorKindText)
     const std::string said = error ? error->detail() : std::string(e.what());
     return QStringLiteral("«%1»").arg(QString::fromUtf8(said.data(), static_cast<qsizetype>(said.size())).simplified());
+}
+
+// A sentence of the window's language: which database, what is wrong with
+// it, and what the library said.
+QString failedText(const db::Error& error, const std::exception& e) {
+    const QString detail = quotedDetail(e);
+    if (detail.isEmpty())
+        return QCoreApplication::translate("k528::studio::ShopDatabase", "The database %1 failed: %2.")
+            .arg(ShopDatabase::currentText(), databaseErrorKindText(error.kind()));
+    return QCoreApplication::translate("k528::studio::ShopDatabase", "The database %1 failed: %2.\nDetails: %3")
+        .arg(ShopDatabase::currentText(), databaseErrorKindText(error.kind()), detail);
+}
+
+} // namespace
+
+// Core's and the database library's own sentence (what()) is English: an
+// English window says it as it is; a Russian window says its own sentence
+// around the library's words.
+QString databaseErrorDetail(const std::exception& e) {
+    return inWindowLanguage(quotedDetail(e), QString::fromUtf8(e.what()));
 }
 
 namespace {
@@ -270,17 +281,9 @@ QString databaseErrorText(const std::exception& e) {
         if (error && !error->textId().empty())
             if (const QString text = databaseText(error->catalogText()); !text.isEmpty())
                 return text;
-        if (!error || ownEnglishFits())
+        if (!error)
             return QString::fromUtf8(e.what());
-        // A sentence of the window's language: which database, what is
-        // wrong with it, and what the library said.
-        const QString detail = databaseErrorDetail(e);
-        if (detail.isEmpty())
-            return QCoreApplication::translate("k528::studio::ShopDatabase", "The database %1 failed: %2.")
-                .arg(ShopDatabase::currentText(), databaseErrorKindText(error->kind()));
-        return QCoreApplication::translate("k528::studio::ShopDatabase",
-                                           "The database %1 failed: %2.\nDetails: %3")
-            .arg(ShopDatabase::currentText(), databaseErrorKindText(error->kind()), detail);
+        return inWindowLanguage(failedText(*error, e), QString::fromUtf8(e.what()));
     }
     // By db::ReadOnlyReason and db::ReadOnlyRefusal.
     static const char* const kReasons[] = {

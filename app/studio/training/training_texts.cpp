@@ -73,7 +73,7 @@ const TranslatedTexts kTrainingTexts("TrainingTexts", kTexts);
 // An argument of two languages (a message of the positioner) is data: it is
 // shown in the desktop's language.
 training::Language argumentLanguage() {
-    return russianWindow() ? training::Language::Ru : training::Language::En;
+    return inWindowLanguage(training::Language::Ru, training::Language::En);
 }
 
 } // namespace
