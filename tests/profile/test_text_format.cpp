@@ -204,7 +204,7 @@ private slots:
         QCOMPARE(plcText(lathe, catalog::PlcGroup::Work, 32, true), std::string("Program running"));
         QCOMPARE(plcText(lathe, catalog::PlcGroup::System, 4, true), std::string("PLC module failed, slot 3"));
         QCOMPARE(toolName(lathe, tools(lathe).front(), true), std::string("Straight turning tool T15K6"));
-        QCOMPARE(toolName(lathe, tools(lathe).front(), false), std::string("Резец проходной упорный T15K6"));
+        QCOMPARE(toolName(lathe, tools(lathe).front(), false), std::string("Резец проходной упорный Т15К6"));
         QCOMPARE(lathe.simulation.getString("text.en.a01", ""), std::string("Chuck not clamped"));
         // Every bundled machine's every text for people has its English.
         for (const std::string& name : builtinNames()) {

@@ -150,7 +150,7 @@ private slots:
         QCOMPARE(programs[0].toObject()["cycle_time_s"].toDouble(), pathCycleTime("training-lathe", kShaft));
         QCOMPARE(programs[1].toObject()["main"].toBool(), false);
         // Both names of each tool and of the machine (the renderer chooses by --lang).
-        QCOMPARE(o["tools"].toArray()[0].toObject()["name"].toString(), QString("Резец проходной упорный T15K6"));
+        QCOMPARE(o["tools"].toArray()[0].toObject()["name"].toString(), QString("Резец проходной упорный Т15К6"));
         QCOMPARE(o["tools"].toArray()[0].toObject()["name_en"].toString(), QString("Straight turning tool T15K6"));
         QVERIFY(o["machine_title_en"].toString().startsWith("Training lathe"));
         // The content survives its JSON.
