@@ -264,10 +264,6 @@
         <translation>%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)</translation>
     </message>
     <message>
-        <source>the program did not start after «Пуск»</source>
-        <translation>the program did not start after «Пуск»</translation>
-    </message>
-    <message>
         <source>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</source>
         <translation>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</translation>
     </message>
@@ -394,6 +390,10 @@
     <message>
         <source>the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5</source>
         <translation>the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5</translation>
+    </message>
+    <message>
+        <source>the program did not start after CYCLE START</source>
+        <translation>the program did not start after CYCLE START</translation>
     </message>
 </context>
 <context>
@@ -1143,10 +1143,6 @@
         <translation>%1 (axis %2)</translation>
     </message>
     <message>
-        <source>stop until «Пуск» (START)</source>
-        <translation>stop until «Пуск» (START)</translation>
-    </message>
-    <message>
         <source>end of program</source>
         <translation>end of program</translation>
     </message>
@@ -1173,6 +1169,10 @@
     <message>
         <source>program %1</source>
         <translation>program %1</translation>
+    </message>
+    <message>
+        <source>stop until CYCLE START</source>
+        <translation>stop until CYCLE START</translation>
     </message>
 </context>
 <context>

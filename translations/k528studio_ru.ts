@@ -264,10 +264,6 @@
         <translation>%1 = %2 не записано (РУЧНОЙ, экран 3; во время программы запись запрещена)</translation>
     </message>
     <message>
-        <source>the program did not start after «Пуск»</source>
-        <translation>программа не запустилась после «Пуск»</translation>
-    </message>
-    <message>
         <source>over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6</source>
         <translation>Перерез: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4 — кадр %5, строка %6</translation>
     </message>
@@ -394,6 +390,10 @@
     <message>
         <source>the tool into the chuck or its jaws at X%1 Z%2 — frame %4, line %5</source>
         <translation>Инструмент в патрон или кулачки на X%1 Z%2 — кадр %4, строка %5</translation>
+    </message>
+    <message>
+        <source>the program did not start after CYCLE START</source>
+        <translation>программа не запустилась после «Пуск»</translation>
     </message>
 </context>
 <context>
@@ -1143,10 +1143,6 @@
         <translation>%1 (ось %2)</translation>
     </message>
     <message>
-        <source>stop until «Пуск» (START)</source>
-        <translation>останов до «Пуск»</translation>
-    </message>
-    <message>
         <source>end of program</source>
         <translation>конец программы</translation>
     </message>
@@ -1173,6 +1169,10 @@
     <message>
         <source>program %1</source>
         <translation>программа %1</translation>
+    </message>
+    <message>
+        <source>stop until CYCLE START</source>
+        <translation>останов до «Пуск»</translation>
     </message>
 </context>
 <context>

@@ -30,7 +30,7 @@ constexpr util::CatalogText kTexts[] = {
     {"note.door-refused", "дверь не открылась: она заблокирована", "the door did not open: it is locked"},
     {"note.home-failed", "привязка к базовой точке не выполнена: %1", "the reference-point cycle did not complete: %1"},
     {"note.preset-refused", "%1 = %2 не записано (РУЧНОЙ, экран 3; во время программы запись запрещена)", "%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)"},
-    {"note.not-started", "программа не запустилась после «Пуск»", "the program did not start after «Пуск»"},
+    {"note.not-started", "программа не запустилась после «Пуск»", "the program did not start after CYCLE START"},
     // --- the part ---------------------------------------------------------------------------
     {"overcut", "Перерез: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4 — кадр %5, строка %6", "over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6"},
     {"overcut.manual", "Перерез ручным перемещением: металл снят на %1 мкм глубже допуска (площадь %2 мм²) на Ø%3 у Z%4", "over-cut by a manual move: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4"},

@@ -13,7 +13,7 @@ namespace {
 
 constexpr util::CatalogText kTexts[] = {
     {"completion.on-axis", "%1 (ось %2)", "%1 (axis %2)"},
-    {"completion.m-stop", "останов до «Пуск»", "stop until «Пуск» (START)"},
+    {"completion.m-stop", "останов до «Пуск»", "stop until CYCLE START"},
     {"completion.m-end-program", "конец программы", "end of program"},
     {"completion.m-end-subprogram", "конец подпрограммы", "end of subprogram"},
     {"completion.r-user", "параметр пользователя", "user parameter"},
@@ -93,10 +93,9 @@ std::vector<CompletionItem> completionCatalog(const CompletionContext& ctx) {
         std::vector<plc::MFunctionDef> ms = ctx.machine->mFunctions;
         std::sort(ms.begin(), ms.end(), [](const auto& a, const auto& b) { return a.m < b.m; });
         for (const plc::MFunctionDef& m : ms) {
-            if (m.text.empty() || std::find(seenM.begin(), seenM.end(), m.m) != seenM.end())
+            if (m.textRu.empty() || std::find(seenM.begin(), seenM.end(), m.m) != seenM.end())
                 continue;
-            // The description names it in English only: both languages show it.
-            out.push_back(item(CompletionKind::M, "M" + std::to_string(m.m), "", {both(m.text)}));
+            out.push_back(item(CompletionKind::M, "M" + std::to_string(m.m), "", {words(m.textRu, m.textEn)}));
             seenM.push_back(m.m);
         }
     }

@@ -23,8 +23,8 @@ namespace k528::editing {
 enum class CompletionKind { G, M, R, Call, JumpTarget, Message };
 
 // Words of two languages as core's tables hold them (table 5's meaning of a
-// G, appendix Л's of an R), or one text shown in both (the machine's M text,
-// a program's title, a frame, a message).
+// G, appendix Л's of an R, the machine description's M text), or one text
+// shown in both (a program's title, a frame, a message).
 struct CompletionWords {
     std::string ru, en;
     const std::string& in(bool russian) const { return russian ? ru : en; }

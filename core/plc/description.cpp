@@ -9,6 +9,8 @@
 #include <cctype>
 #include <fstream>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace k528::plc {
 
@@ -102,6 +104,24 @@ Actions readActions(const JsonNode& n) {
     a.toggle = n.strings("toggle");
     a.pulse = n.strings("pulse");
     return a;
+}
+
+// A text for people in both languages: {"ru": …, "en": …}, neither missing
+// nor empty (a Russian window must not fall back to the English silently),
+// or one string written in one language, shown as written in both.
+std::pair<std::string, std::string> readBilingual(const JsonNode& owner, std::string_view key) {
+    if (!owner.has(key))
+        return {};
+    const JsonNode t = owner.child(key);
+    if (t.isString())
+        return {t.asString(), t.asString()};
+    t.expectObject({"ru", "en"});
+    std::pair<std::string, std::string> out{t.string("ru"), t.string("en")};
+    if (out.first.empty())
+        t.failAt("ru", problem("empty"));
+    if (out.second.empty())
+        t.failAt("en", problem("empty"));
+    return out;
 }
 
 int percentToCode(int pct) {
@@ -320,7 +340,7 @@ MachineDescription readDescription(std::string_view text, const std::string& sou
         f.m = static_cast<int>(n.integer("m", 0, 99));
         if (d.mFunction(f.m))
             n.failAt("m", problem("m.twice", {std::to_string(f.m)}));
-        f.text = n.string("text", "");
+        std::tie(f.textRu, f.textEn) = readBilingual(n, "text");
         f.actions = readActions(n);
         f.done = n.string("done", "");
         f.waitWork = static_cast<int>(n.integer("wait_work", 1, 32, 0));

@@ -67,7 +67,10 @@ struct Actions {
 
 struct MFunctionDef {
     int m = 0;
-    std::string text;
+    // What it does, for people (the editor's completion): {"ru", "en"} in
+    // the document, both required; a plain string is one text written in one
+    // language, shown as written in both windows (a user's own description).
+    std::string textRu, textEn;
     Actions actions;  // done at the strobe
     std::string done; // acknowledge when this holds ("" = at once, after T3)
     int waitWork = 0; // work message shown while waiting (0 none)

@@ -48,8 +48,9 @@ private slots:
         const auto items = completionCatalog(c);
         const CompletionItem* m3 = find(items, CompletionKind::M, "M3");
         QVERIFY(m3);
-        QVERIFY(!m3->detail(false).empty());
-        QCOMPARE(m3->detail(true), m3->detail(false)); // the description names it in English only
+        // The description says what it does in each language.
+        QCOMPARE(m3->detail(true), std::string("включение шпинделя круга; ожидание выхода на скорость"));
+        QCOMPARE(m3->detail(false), std::string("wheel spindle on; waits until it is at speed"));
         QVERIFY(!find(completionCatalog({}), CompletionKind::M, "M3"));
     }
     void whatTheFileHolds() {

@@ -233,6 +233,51 @@ private slots:
             "logic[0]", "exactly one of on_delay_ms");
     }
 
+    // What an M does is said in the window's language: both texts read, a
+    // missing or empty Russian refused (no silent English in a Russian
+    // window), one plain string taken as written for both.
+    void mFunctionTexts() {
+        const plc::MachineDescription d = plc::readDescription(
+            base(R"json(, "m_functions": [{"m": 8, "text": {"ru": "включение СОЖ", "en": "coolant on"}},
+                                          {"m": 9, "text": "СОЖ выкл."}, {"m": 10}])json"),
+            "t.json");
+        QCOMPARE(d.mFunction(8)->textRu, std::string("включение СОЖ"));
+        QCOMPARE(d.mFunction(8)->textEn, std::string("coolant on"));
+        QCOMPARE(d.mFunction(9)->textRu, std::string("СОЖ выкл."));
+        QCOMPARE(d.mFunction(9)->textEn, std::string("СОЖ выкл."));
+        QVERIFY(d.mFunction(10)->textRu.empty() && d.mFunction(10)->textEn.empty());
+        expectError(base(R"json(, "m_functions": [{"m": 8, "text": {"en": "coolant on"}}])json"),
+                    "m_functions[0].text.ru", "is missing");
+        expectError(base(R"json(, "m_functions": [{"m": 8, "text": {"ru": "", "en": "coolant on"}}])json"),
+                    "m_functions[0].text.ru", "is empty");
+        expectError(base(R"json(, "m_functions": [{"m": 8, "text": {"ru": "включение СОЖ"}}])json"),
+                    "m_functions[0].text.en", "is missing");
+        expectError(base(R"json(, "m_functions": [{"m": 8, "text": {"ru": "включение СОЖ", "de": "Kühlmittel"}}])json"),
+                    "m_functions[0].text.de", "unknown key");
+        expectError(base(R"json(, "m_functions": [{"m": 8, "text": 8}])json"), "m_functions[0].text",
+                    "expected an object, found a number");
+    }
+
+    // The shipped machines say each of their M functions in both languages,
+    // the Russian in Russian words (codes such as Z1007.0 or R224 aside).
+    void shippedMFunctionsInBothLanguages() {
+        const QRegularExpression latinWord(QStringLiteral("\\b[A-Za-z]{2,}\\b"));
+        const QRegularExpression cyrillic(QStringLiteral("[\\x{0400}-\\x{04FF}]"));
+        int described = 0;
+        for (const std::string& n : plc::descriptionNames()) {
+            for (const plc::MFunctionDef& f : plc::loadDescription(n).mFunctions) {
+                const QString where = QString::fromStdString(n) + QStringLiteral(" M%1").arg(f.m);
+                const QString ru = QString::fromStdString(f.textRu), en = QString::fromStdString(f.textEn);
+                QVERIFY2(!ru.isEmpty() && !en.isEmpty(), qPrintable(where));
+                QVERIFY2(ru != en, qPrintable(where + ": " + ru));
+                QVERIFY2(ru.contains(cyrillic) && !ru.contains(latinWord), qPrintable(where + ": " + ru));
+                QVERIFY2(en.contains(latinWord), qPrintable(where + ": " + en));
+                ++described;
+            }
+        }
+        QCOMPARE(described, 31); // the training lathe's 15 and the grinder's 16
+    }
+
     // The wiring to the machine: signals the machine does not have, equipment.
     void wiring() {
         expectError(

@@ -93,6 +93,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPlainTextEdit>
@@ -617,6 +618,28 @@ private:
             QContextMenuEvent e(QContextMenuEvent::Mouse, QPoint(5, 5), v->mapToGlobal(QPoint(5, 5)));
             QApplication::sendEvent(v, &e);
         });
+        // The completion of an M: the built-in ones and the machine's PLC
+        // M-codes, each with what it does in the window's language.
+        QStringList items;
+        walkOpened(walker, "Editor: the completion of an M", [&] {
+            studio::ProgramEditor* e = editor->currentEditor();
+            QVERIFY(e->hasMachine());
+            e->append("N4 ");
+            const int last = e->lines() - 1;
+            e->setCursorPosition(last, static_cast<int>(e->text(last).size()));
+            e->setFocus();
+            QTest::keyClicks(e, "M");
+            for (QWidget* t : QApplication::topLevelWidgets())
+                if (auto* l = qobject_cast<QListWidget*>(t); l && l->isVisible())
+                    for (int i = 0; i < l->count(); ++i)
+                        items << l->item(i)->text();
+        });
+        // M0 M2 M17 M30, and the training lathe's M3 … M64
+        QVERIFY2(items.size() >= 15, qPrintable(items.join('|')));
+        const QString m3 = items.filter(QRegularExpression(QStringLiteral("^M3 "))).value(0);
+        QVERIFY2(m3.contains(walker.language == QLatin1String("ru") ? QStringLiteral("шпинделя по часовой стрелке")
+                                                                    : QStringLiteral("spindle clockwise")),
+                 qPrintable(m3));
         walkOpened(walker, "Editor: close a changed file", [&] {
             editor->currentEditor()->append("\n");
             editor->closeDocument(editor->documentCount() - 1); // the current: the file opened last

@@ -15,7 +15,7 @@ namespace {
 // core/editing/completion.cpp's catalog, each text marked for the translators.
 const TranslatedText kCompletions[] = {
     {"completion.on-axis", QT_TRANSLATE_NOOP("k528::studio::CompletionTexts", "%1 (axis %2)")},
-    {"completion.m-stop", QT_TRANSLATE_NOOP("k528::studio::CompletionTexts", "stop until «Пуск» (START)")},
+    {"completion.m-stop", QT_TRANSLATE_NOOP("k528::studio::CompletionTexts", "stop until CYCLE START")},
     {"completion.m-end-program", QT_TRANSLATE_NOOP("k528::studio::CompletionTexts", "end of program")},
     {"completion.m-end-subprogram", QT_TRANSLATE_NOOP("k528::studio::CompletionTexts", "end of subprogram")},
     {"completion.r-user", QT_TRANSLATE_NOOP("k528::studio::CompletionTexts", "user parameter")},

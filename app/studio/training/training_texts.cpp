@@ -33,7 +33,7 @@ const TranslatedText kTexts[] = {
     {"note.door-refused", QT_TRANSLATE_NOOP("TrainingTexts", "the door did not open: it is locked")},
     {"note.home-failed", QT_TRANSLATE_NOOP("TrainingTexts", "the reference-point cycle did not complete: %1")},
     {"note.preset-refused", QT_TRANSLATE_NOOP("TrainingTexts", "%1 = %2 was not written (РУЧНОЙ, screen 3; not while a program runs)")},
-    {"note.not-started", QT_TRANSLATE_NOOP("TrainingTexts", "the program did not start after «Пуск»")},
+    {"note.not-started", QT_TRANSLATE_NOOP("TrainingTexts", "the program did not start after CYCLE START")},
     {"overcut", QT_TRANSLATE_NOOP("TrainingTexts", "over-cut: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4 — frame %5, line %6")},
     {"overcut.manual", QT_TRANSLATE_NOOP("TrainingTexts", "over-cut by a manual move: metal removed %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4")},
     {"overcut.unknown", QT_TRANSLATE_NOOP("TrainingTexts", "over-cut: metal missing %1 µm beyond the tolerance (area %2 mm²) at Ø%3 near Z%4")},
