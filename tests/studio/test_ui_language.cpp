@@ -660,7 +660,7 @@ private:
         if (auto* pane = w.findChild<studio::ConstantsPane*>())
             pane->selectConstant(22); // the history is of the selected constant
         for (const char* b : {"constants.history", "constants.diff", "constants.calculator", "constants.import",
-                              "constants.export", "scope.csv", "scope.png", "history.csv"})
+                              "constants.export", "scope.csv", "scope.png", "history.csv", "rparams.trialPart"})
             walkOpened(walker, QString::fromLatin1(b), [&] { clickNamed(w, b); });
     }
 

@@ -1,10 +1,12 @@
 #include "rparams/trial_dialog.h"
 
 #include "db/notes.h"
+#include "profile/english.h"
 #include "profile/tools.h"
 #include "proveout/setup_sheet.h"
 #include "session/catalog_texts.h"
 #include "session/core_texts.h"
+#include "window_language.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -26,8 +28,10 @@ TrialPartDialog::TrialPartDialog(const profile::MachineProfile& machine, QWidget
     try {
         for (const profile::Tool& t : profile::tools(machine_)) {
             const QString kind = toolKindText(t.kind);
-            tool_->addItem(QStringLiteral("T%1 %2 — %3").arg(t.station).arg(kind, QString::fromStdString(t.name)),
-                           t.station);
+            // The machine file's name of the tool and its English, as the
+            // setup sheet and the prove-out show it.
+            const QString name = coreText(profile::toolName(machine_, t, false), profile::toolName(machine_, t, true));
+            tool_->addItem(QStringLiteral("T%1 %2 — %3").arg(t.station).arg(kind, name), t.station);
         }
     } catch (const std::exception&) {
     }
