@@ -477,7 +477,7 @@ void ScopeView::draw(std::int64_t t0, std::int64_t t1, std::int64_t origin) {
         const ScopeSignal sigs[4] = {ScopeSignal::Setpoint, ScopeSignal::Position,
                                      ScopeSignal::FollowingError, extra};
         QList<QPointF>* outs[4] = {&lists_[0], &lists_[1], &lists_[2], &lists_[3]};
-        buffer_.decimate(a, sigs, 4, t0, t1, columns, outs, origin);
+        decimators_[static_cast<std::size_t>(a)].decimate(buffer_, a, sigs, 4, t0, t1, columns, outs, origin);
         // The least spans: 10 µm of position, 2 µm of error, 10 mm/min or
         // 10 codes of the fourth trace.
         fitAxis(c.mm, c.valueTicks, 0.01, lists_[0], &lists_[1]);

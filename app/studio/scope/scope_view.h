@@ -144,6 +144,8 @@ private:
     std::size_t lastAlarms_ = 0;
     std::size_t checkedUpTo_ = 0; // samples looked at by the threshold trigger
     std::array<QList<QPointF>, 4> lists_;
+    // Each chart's columns, kept from frame to frame (a frame reads only its new samples).
+    std::array<ScopeDecimator, 2> decimators_;
     QElapsedTimer fpsClock_;
     int fpsFrames_ = 0;
     double fps_ = 0;
