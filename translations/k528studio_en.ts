@@ -7440,6 +7440,14 @@ Its comment stays: %3</translation>
         <source>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</source>
         <translation>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</translation>
     </message>
+    <message>
+        <source>constants locked for the class %1 (trainer)</source>
+        <translation>constants locked for the class %1 (trainer)</translation>
+    </message>
+    <message>
+        <source>constants unlocked (trainer; were locked for %1)</source>
+        <translation>constants unlocked (trainer; were locked for %1)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::RuleNames</name>

@@ -7440,6 +7440,14 @@ Its comment stays: %3</source>
         <source>trial part: T%1 %2 measured %3 for %4: R%5 %6 -&gt; %7</source>
         <translation>пробная деталь: T%1 %2 измерено %3 при %4 по чертежу: R%5 %6 -&gt; %7</translation>
     </message>
+    <message>
+        <source>constants locked for the class %1 (trainer)</source>
+        <translation>константы заблокированы для группы %1 (преподаватель)</translation>
+    </message>
+    <message>
+        <source>constants unlocked (trainer; were locked for %1)</source>
+        <translation>блокировка констант снята (преподаватель; были заблокированы для группы %1)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::RuleNames</name>

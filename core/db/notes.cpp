@@ -24,6 +24,9 @@ constexpr std::array kNotes = {
     NoteText{"studio.set", "set %1 = %2 (K528 Studio)"},
     NoteText{"studio.undo", "undo: %1"}, // %1: the note of the change undone, as stored
     NoteText{"studio.presets", "presets %1 (K528 Studio)"},
+    // the trainer's lock of the machine constants for a class (the desktop's training course)
+    NoteText{"studio.lock", "constants locked for the class %1 (trainer)"},
+    NoteText{"studio.unlock", "constants unlocked (trainer; were locked for %1)"},
     // a trial part's correction of a tool's offset (k528 db trial, the desktop's dialog)
     NoteText{"trial", "trial part: T%1 %2 measured %3 for %4: R%5 %6 -> %7"},
 };

@@ -14,6 +14,7 @@
 #include "constants/constants_lock.h"
 #include "constants/constants_model.h"
 #include "db/explain.h"
+#include "db/notes.h"
 #include "engine/run.h"
 #include "machine/run.h"
 #include "language.h"
@@ -23,6 +24,7 @@
 #include "program/parser.h"
 #include "rparams/rparams_dock.h"
 #include "rparams/rparams_model.h"
+#include "session/core_texts.h"
 #include "training/training_pane.h"
 #include "controller/simulated_controller.h"
 #include "session/simulation_session.h"
@@ -245,6 +247,14 @@ private slots:
         QCOMPARE(trainer.lockButton()->text(), QStringLiteral("Unlock the constants"));
         // Kept in the database as the machine's setting.
         QCOMPARE(pane.editor().store().current().simulation.getString("constants.lock", ""), std::string("TM-21"));
+        // Its revision's note is core's, read in each reader's language (a
+        // student's window told of a revision made elsewhere says it in Russian).
+        const std::string lockNote = pane.editor().store().revisions().front().summary;
+        QCOMPARE(QString::fromStdString(db::readNote(lockNote).value_or(db::Note{}).id), QStringLiteral("studio.lock"));
+        QVERIFY(setLanguage(QStringLiteral("ru")));
+        QCOMPARE(revisionNoteText(lockNote), QStringLiteral("константы заблокированы для группы TM-21 (преподаватель)"));
+        QVERIFY(setLanguage(QStringLiteral("en")));
+        QCOMPARE(revisionNoteText(lockNote), QStringLiteral("constants locked for the class TM-21 (trainer)"));
         // The dock refuses, naming the lock; nothing changes, nothing is kept.
         const int revs = revisionCount(pane);
         QVERIFY(!pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("5333")));
@@ -272,6 +282,13 @@ private slots:
         QCOMPARE(trainer.unlockConstants(), QString());
         QCOMPARE(trainer.lockButton()->text(), QStringLiteral("Lock the constants…"));
         QCOMPARE(pane.editor().store().current().simulation.getString("constants.lock", "none"), std::string("none"));
+        {
+            const std::string unlockNote = pane.editor().store().revisions().front().summary;
+            QVERIFY(setLanguage(QStringLiteral("ru")));
+            QCOMPARE(revisionNoteText(unlockNote),
+                     QStringLiteral("блокировка констант снята (преподаватель; были заблокированы для группы TM-21)"));
+            QVERIFY(setLanguage(QStringLiteral("en")));
+        }
         QVERIFY(lock->refusesKey(sim.controller.state(), panel::KeyPress{panel::Key::F5}).isEmpty());
         QVERIFY(pane.filter()->setData(valueIndex(pane, 22), QStringLiteral("5333")));
         QCOMPARE(sim.session.controller().c()[22], std::int64_t(5333));

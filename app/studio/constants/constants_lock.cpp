@@ -1,6 +1,7 @@
 #include "constants/constants_lock.h"
 
 #include "constants/machine_store.h"
+#include "db/notes.h"
 #include "session/shop_database.h"
 
 #include <QCoreApplication>
@@ -55,12 +56,13 @@ QString ConstantsLock::lock(const QString& forClass) {
     const QString c = forClass.simplified();
     if (c.isEmpty())
         return tr("Name the class the constants are locked for");
-    return set(c.toStdString(), QStringLiteral("constants locked for the class %1 (trainer)").arg(c));
+    // Stored as core's note (its English), said in each reader's language.
+    return set(c.toStdString(), QString::fromStdString(db::noteText({"studio.lock", {c.toStdString()}})));
 }
 
 QString ConstantsLock::unlock() {
     const QString was = holder_;
-    return set(std::nullopt, QStringLiteral("constants unlocked (trainer; were locked for %1)").arg(was));
+    return set(std::nullopt, QString::fromStdString(db::noteText({"studio.unlock", {was.toStdString()}})));
 }
 
 QString ConstantsLock::refusal() {

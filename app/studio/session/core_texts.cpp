@@ -176,6 +176,8 @@ const TranslatedText kNotes[] = {
         {"studio.set", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "set %1 = %2 (K528 Studio)")},
         {"studio.undo", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "undo: %1")},
         {"studio.presets", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "presets %1 (K528 Studio)")},
+        {"studio.lock", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "constants locked for the class %1 (trainer)")},
+        {"studio.unlock", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "constants unlocked (trainer; were locked for %1)")},
         {"trial", QT_TRANSLATE_NOOP("k528::studio::RevisionNotes", "trial part: T%1 %2 measured %3 for %4: R%5 %6 -> %7")},
 };
 
