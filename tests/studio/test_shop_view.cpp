@@ -12,10 +12,11 @@
 #include "controller/simulated_controller.h"
 #include "language.h"
 #include "main_window.h"
-#include "session/machine_source.h"
-#include "shop/shop_view.h"
 #include "rig/mqtt_broker.h"
 #include "rig/shop_machines.h"
+#include "rig/widgets.h"
+#include "session/machine_source.h"
+#include "shop/shop_view.h"
 #include "test_util.h"
 #include "workspace/workspaces.h"
 
@@ -142,8 +143,7 @@ private slots:
         qInfo("online again %lld ms after the server said it serves", static_cast<long long>(t.elapsed()));
         QVERIFY(shop->tile("m02")->modeText().contains("F2"));
         QVERIFY(shop->today("m02")[3] > 0); // some offline time today
-        QDir().mkpath(QDir::current().filePath("shots"));
-        QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_view.png")));
+        K528_VERIFY_SHOT(w.grab(), QStringLiteral("shop_view.png"));
     }
 
     // A click on a tile: that machine's controller on every view.
@@ -173,8 +173,7 @@ private slots:
             QTRY_COMPARE_WITH_TIMEOUT(w.viewedController()->state().mode, i == 0 ? 7 : 2, 5000);
         }
         QTRY_VERIFY_WITH_TIMEOUT(dock->monitorLabel()->text().contains("F7"), 5000);
-        QDir().mkpath(QDir::current().filePath("shots"));
-        QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_clicked.png")));
+        K528_VERIFY_SHOT(w.grab(), QStringLiteral("shop_clicked.png"));
     }
 
     // Sixteen machines on a shop PC's screen and an office's, in Russian and
@@ -329,6 +328,33 @@ private slots:
             QVERIFY(sub.waitForFinished(15000));
             QCOMPARE(QString::fromUtf8(sub.readAllStandardOutput()).count("/state {"), kMachines);
         }
+    }
+
+    // A broker's address that is not one is refused in the window's language
+    // (core's mqtt.url-* texts through the window's translations).
+    void badBrokerInTheWindowsLanguage() {
+#ifndef K528_STUDIO_MQTT
+        QSKIP("built without MQTT");
+#endif
+        QVERIFY(setLanguage("ru"));
+        {
+            MainWindow w(loadMachine("training-lathe"));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate("shop"));
+            ShopView* shop = w.shopView();
+            auto* state = shop->findChild<QLabel*>("shop.publishState");
+            QVERIFY(state);
+            shop->brokerBox()->setText("http://127.0.0.1:1883");
+            shop->publishBox()->setChecked(true);
+            QVERIFY(!shop->publishing());
+            QCOMPARE(state->toolTip(), QStringLiteral("«http://127.0.0.1:1883» — не mqtt://ХОСТ[:ПОРТ] (MQTT без "
+                                                      "шифрования; TLS не поддерживается)"));
+            shop->brokerBox()->setText("mqtt://127.0.0.1:99999");
+            shop->publishBox()->setChecked(true);
+            QCOMPARE(state->toolTip(), QStringLiteral("«mqtt://127.0.0.1:99999»: порт — 1..65535"));
+        }
+        QVERIFY(setLanguage("en"));
     }
 
     // Publish to MQTT: the same topics as k528 shop publish, into a broker
