@@ -1,6 +1,7 @@
 // The axis oscilloscope (app/studio/scope): its following-error trace of a
 // known move matches the engine's reported maximum within one discrete, the
-// min/max decimation keeps the peaks, triggers stop the picture, CSV export,
+// min/max decimation keeps the peaks, the live decimation kept from frame to
+// frame draws what a fresh one does, triggers stop the picture, CSV export,
 // and a screenshot of the dock.
 #include "engine/run.h"
 #include "machine/run.h"
@@ -127,6 +128,87 @@ private slots:
         b.add(s);
         QCOMPARE(b.size(), std::size_t(60000));
         QCOMPARE(b.at(0).tMs, std::int64_t(2));
+    }
+
+    // The live chart keeps its columns from frame to frame and reads only the
+    // new samples (ScopeDecimator): after every frame its points are those
+    // of a decimation of the whole window from scratch. Samples arrive in
+    // uneven chunks, at times with gaps (a link's poll), the ring drops its
+    // oldest inside the window, and the width, the window, the signals and
+    // a cleared buffer change what is kept.
+    void liveDecimationIsAFreshOne() {
+        ScopeBuffer b(5000);
+        std::array<ScopeDecimator, 2> live; // one per chart, as the view keeps them
+        std::uint32_t seed = 12345;
+        auto next = [&seed](std::uint32_t below) {
+            seed = seed * 1664525u + 1013904223u;
+            return (seed >> 8) % below;
+        };
+        std::int64_t t = 1000;
+        int columns = 487;      // not a divisor of the window: columns of 12 and 13 samples
+        std::int64_t window = 6000; // longer than the ring holds
+        ScopeSignal sigs[4] = {ScopeSignal::Setpoint, ScopeSignal::Position, ScopeSignal::FollowingError,
+                               ScopeSignal::Velocity};
+        std::array<QList<QPointF>, 4> got, want;
+        QList<QPointF>* gotOut[4] = {&got[0], &got[1], &got[2], &got[3]};
+        QList<QPointF>* wantOut[4] = {&want[0], &want[1], &want[2], &want[3]};
+        int decimatedFrames = 0;
+        for (int frame = 0; frame < 700; ++frame) {
+            if (frame == 250)
+                columns = 300; // the chart was resized
+            if (frame == 330)
+                window = 2500; // a shorter window
+            if (frame == 400)
+                sigs[3] = ScopeSignal::Dac; // the fourth trace changed
+            if (frame == 470)
+                b.clear(); // attached to another machine: a few samples drawn each, then columns again
+            const std::uint32_t chunk = frame % 9 == 0 ? next(400) : next(70); // ms of samples
+            for (std::uint32_t k = 0; k < chunk; ++k) {
+                t += frame >= 550 && next(4) == 0 ? 1 + next(30) : 1;
+                machine::TraceSample s;
+                s.tMs = t;
+                for (auto& a : s.axes) {
+                    // Coarse values: equal minima and maxima in a column
+                    // (the first of them is drawn), and now and then a peak.
+                    a.setpointMm = static_cast<double>(next(7));
+                    a.positionMm = std::sin(static_cast<double>(t) / 300.0);
+                    a.followingErrorMm = next(500) == 0 ? 0.5 : static_cast<double>(next(5)) * 0.001;
+                    a.velocityMmMin = static_cast<double>(next(3)) * 100.0;
+                    a.dac = static_cast<double>(next(20000)) - 10000.0;
+                }
+                b.add(s);
+            }
+            if (b.size() == 0)
+                continue;
+            const std::int64_t t1 = b.last().tMs, t0 = t1 - window;
+            for (int axis = 0; axis < 2; ++axis) {
+                live[static_cast<std::size_t>(axis)].decimate(b, axis, sigs, 4, t0, t1, columns, gotOut, t1);
+                b.decimate(axis, sigs, 4, t0, t1, columns, wantOut, t1);
+                for (int k = 0; k < 4; ++k) {
+                    qsizetype i = 0;
+                    while (i < got[k].size() && i < want[k].size() && got[k][i].x() == want[k][i].x() &&
+                           got[k][i].y() == want[k][i].y())
+                        ++i;
+                    if (i == got[k].size() && i == want[k].size())
+                        continue;
+                    const auto point = [i](const QList<QPointF>& l) {
+                        return i < l.size() ? QString("(%1, %2)").arg(l[i].x()).arg(l[i].y()) : QString("none");
+                    };
+                    QFAIL(qPrintable(QString("frame %1 axis %2 trace %3: %4 points, fresh %5; point %6 %7, fresh %8")
+                                         .arg(frame)
+                                         .arg(axis)
+                                         .arg(k)
+                                         .arg(got[k].size())
+                                         .arg(want[k].size())
+                                         .arg(i)
+                                         .arg(point(got[k]))
+                                         .arg(point(want[k]))));
+                }
+                if (axis == 0 && want[0].size() < static_cast<qsizetype>(b.size()))
+                    ++decimatedFrames;
+            }
+        }
+        QVERIFY2(decimatedFrames > 500, qPrintable(QString::number(decimatedFrames))); // not mostly raw points
     }
 
     // The charts lay themselves out for the room they get: in a shop PC's

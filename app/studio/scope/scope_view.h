@@ -42,6 +42,7 @@ class Simulation;
 namespace k528::studio {
 
 class Controller;
+class ScopeTrace;
 
 class ScopeView : public QWidget {
     Q_OBJECT
@@ -98,8 +99,11 @@ private:
     struct AxisChart {
         QChart* chart = nullptr;
         QValueAxis *time = nullptr, *mm = nullptr, *error = nullptr, *extra = nullptr;
+        // The series hold no points: they give the traces their names, the
+        // chart its domains (zoom, mapToValue). The traces draw the points.
         QLineSeries *setpoint = nullptr, *position = nullptr, *followingError = nullptr,
                     *extraSeries = nullptr;
+        std::array<ScopeTrace*, 4> traces{}; // setpoint, position, following error, the fourth
         int valueTicks = 4, timeTicks = 6; // most intervals, for the chart's size
     };
     void retranslate();
@@ -144,6 +148,8 @@ private:
     std::size_t lastAlarms_ = 0;
     std::size_t checkedUpTo_ = 0; // samples looked at by the threshold trigger
     std::array<QList<QPointF>, 4> lists_;
+    // Each chart's columns, kept from frame to frame (a frame reads only its new samples).
+    std::array<ScopeDecimator, 2> decimators_;
     QElapsedTimer fpsClock_;
     int fpsFrames_ = 0;
     double fps_ = 0;
