@@ -149,7 +149,8 @@ private:
     std::int64_t prevEnd_ = 0;
 };
 
-void writeValue(Writer& w, IsoSlot slot, const std::optional<Value>& v) {
+// Inlined: four calls a frame, each mostly testing an empty slot.
+[[gnu::always_inline]] inline void writeValue(Writer& w, IsoSlot slot, const std::optional<Value>& v) {
     if (!v)
         return;
     if (v->isR()) {

@@ -457,10 +457,12 @@ void ProgramChecker::combinations(const Frame& f, const IsoFrame& iso) {
     if (lastOfSubprogram_ && &f == &p_.frames.back() && !f.skip)
         words |= refusal::LastOfSubprogram;
     if (words != 0) {
-        const std::string program = "L" + std::to_string(iso.call ? iso.call->number : p_.number);
+        // Most frames have words of the table (X, Z) and match none of it:
+        // the program's name is written only for a refusal.
         for (const Refusal& r : refusals())
             if (r.matches(words))
-                error(r.rule, r.message, f, refusalSpan(f, iso, r.spot), r.textId, {program}, {where(f)});
+                error(r.rule, r.message, f, refusalSpan(f, iso, r.spot), r.textId,
+                      {"L" + std::to_string(iso.call ? iso.call->number : p_.number)}, {where(f)});
     }
     if (const Word* g4 = iso.findG(4)) {
         if (!iso.x)
