@@ -219,9 +219,11 @@ static bool printedWithBlank(int number) {
            (number >= 50 && number <= 53) || number >= 55;
 }
 
-std::string PositionerMessage::panelText() const {
-    return std::to_string(number) + (printedWithBlank(number) ? ". " : ".") + std::string(textRu);
+std::string numberedMessage(int number, std::string_view text, bool russian) {
+    return std::to_string(number) + (!russian || printedWithBlank(number) ? ". " : ".") + std::string(text);
 }
+
+std::string PositionerMessage::panelText() const { return numberedMessage(number, textRu, true); }
 
 std::span<const PositionerMessage> positionerMessages() {
     return kMessages;

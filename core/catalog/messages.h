@@ -46,6 +46,12 @@ struct PositionerMessage {
     std::string panelText() const;
 };
 
+// A message's line with its number, for every place that shows one: Russian
+// as the panel and table М.1 print it — a dot, and the blank after it where
+// the manual has one («37. Ошибка N ДОС», «39.Ошибка N маховика»); English
+// always with the blank («39. Handwheel N error»).
+std::string numberedMessage(int number, std::string_view text, bool russian);
+
 // All 64 in number order: positionerMessages()[i].number == i + 1.
 std::span<const PositionerMessage> positionerMessages();
 // Throws std::out_of_range outside 1..64.

@@ -8,11 +8,9 @@
 namespace k528::engine {
 
 std::string alarmText(const AlarmView& a, bool russian) {
-    if (!russian)
-        return std::to_string(a.number) + ". " + a.textEn;
-    if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(a.number))
+    if (const catalog::PositionerMessage* m = russian ? catalog::findPositionerMessage(a.number) : nullptr)
         return m->panelText();
-    return std::to_string(a.number) + "." + a.textRu;
+    return catalog::numberedMessage(a.number, russian ? a.textRu : a.textEn, russian);
 }
 
 std::string_view alarmCategoryName(AlarmCategory c) {

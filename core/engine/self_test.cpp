@@ -49,10 +49,8 @@ program::ProgramStore loadStore(const profile::MachineProfile& p, bool& intact) 
         for (program::Program& prog : pr.store.programs())
             store.insert(std::move(prog));
     }
-    for (const auto& [k, text] : p.messages) {
-        store.messages.set(k, text);
-        store.messages.entries.back().machineFile = true;
-    }
+    for (const auto& [k, text] : p.messages)
+        store.messages.setMachineFile(k, text);
     return store;
 }
 

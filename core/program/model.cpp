@@ -374,17 +374,22 @@ const Message* MessageTable::find(int number) const {
     return nullptr;
 }
 
-void MessageTable::set(int number, std::string text) {
+void MessageTable::set(int number, std::string text) { put(number, std::move(text), false); }
+
+void MessageTable::setMachineFile(int number, std::string text) { put(number, std::move(text), true); }
+
+void MessageTable::put(int number, std::string text, bool machineFile) {
     present = true;
     for (Message& m : entries)
         if (m.number == number) {
             m.text = std::move(text);
-            m.machineFile = false;
+            m.machineFile = machineFile;
             return;
         }
     Message m;
     m.number = number;
     m.text = std::move(text);
+    m.machineFile = machineFile;
     entries.push_back(std::move(m));
 }
 

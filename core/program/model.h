@@ -453,6 +453,12 @@ struct MessageTable {
     // Adds or replaces message k (the section becomes present); the text is
     // no longer the machine file's (Message::machineFile).
     void set(int number, std::string text);
+    // Adds or replaces message k as the machine file's own (the machine's
+    // #k, which has an English text of its own besides the Russian).
+    void setMachineFile(int number, std::string text);
+
+private:
+    void put(int number, std::string text, bool machineFile);
 };
 
 // --- The store ----------------------------------------------------------------------

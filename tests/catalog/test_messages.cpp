@@ -50,6 +50,10 @@ private slots:
         QCOMPARE(positionerMessage(47).panelText(), std::string("47. G?"));
         QCOMPARE(positionerMessage(54).panelText(), std::string("54.Дублирование номеров кадров"));
         QCOMPARE(positionerMessage(64).panelText(), std::string("64. G04/L"));
+        // One rule for every line with a number: Russian as the panel, English always with the blank.
+        QCOMPARE(numberedMessage(39, positionerMessage(39).textRu, true), positionerMessage(39).panelText());
+        QCOMPARE(numberedMessage(39, "Handwheel N error", false), std::string("39. Handwheel N error"));
+        QCOMPARE(numberedMessage(54, "x", false), std::string("54. x"));
         QCOMPARE(positionerMessage(41).textRu, std::string_view("Нет \"0\"-метки"));
         QCOMPARE(positionerMessage(46).textRu, std::string_view("Переполнение"));
         QCOMPARE(positionerMessage(47).textRu, std::string_view("G?"));

@@ -13,21 +13,22 @@
 #include "constants/constants_editor.h"
 #include "constants/constants_lock.h"
 #include "constants/constants_model.h"
+#include "controller/simulated_controller.h"
 #include "db/explain.h"
 #include "engine/run.h"
-#include "machine/run.h"
 #include "language.h"
+#include "machine/run.h"
 #include "main_window.h"
 #include "profile/builtin.h"
 #include "profile/csv.h"
 #include "program/parser.h"
-#include "rparams/rparams_dock.h"
-#include "rparams/rparams_model.h"
-#include "training/training_pane.h"
-#include "controller/simulated_controller.h"
-#include "session/simulation_session.h"
 #include "rig/machine_rig.h"
 #include "rig/studio_rig.h"
+#include "rig/widgets.h"
+#include "rparams/rparams_dock.h"
+#include "rparams/rparams_model.h"
+#include "session/simulation_session.h"
+#include "training/training_pane.h"
 #include "units/units.h"
 
 #include <QComboBox>
@@ -468,8 +469,6 @@ private slots:
         auto* c = w.findChild<QDockWidget*>("dock.constants");
         auto* r = w.findChild<QDockWidget*>("dock.rparams");
         QVERIFY(c && r);
-        const QString shots = QStringLiteral(K528_BINARY_DIR "/screenshots");
-        QDir().mkpath(shots);
         auto* cp = c->findChild<ConstantsPane*>();
         QVERIFY(cp);
         c->setFloating(true);
@@ -480,7 +479,7 @@ private slots:
         cp->searchField()->setText(QString());
         QVERIFY(!cp->filter()->setData(valueIndex(*cp, 22), QStringLiteral("99999")));
         QTest::qWait(50);
-        QVERIFY(c->grab().save(shots + "/constants.png"));
+        K528_VERIFY_SHOT(c->grab(), QStringLiteral("constants.png"));
         {
             // The machine has run: homed, moved (the live coordinates, R232..).
             program::ParseOptions o;
@@ -493,17 +492,17 @@ private slots:
         r->show();
         w.session()->advance(200);
         QTest::qWait(50);
-        QVERIFY(r->grab().save(shots + "/rparams.png"));
+        K528_VERIFY_SHOT(r->grab(), QStringLiteral("rparams.png"));
         CalculatorDialog calc(cp->editor());
         calc.setInputs(1, 5000, 2000);
         calc.show();
         QTest::qWait(50);
-        QVERIFY(calc.grab().save(shots + "/constants-calculator.png"));
+        K528_VERIFY_SHOT(calc.grab(), QStringLiteral("constants-calculator.png"));
         // In Russian, as the operators read it.
         QVERIFY(setLanguage("ru"));
         QTest::qWait(50);
-        QVERIFY(c->grab().save(shots + "/constants-ru.png"));
-        QVERIFY(r->grab().save(shots + "/rparams-ru.png"));
+        K528_VERIFY_SHOT(c->grab(), QStringLiteral("constants-ru.png"));
+        K528_VERIFY_SHOT(r->grab(), QStringLiteral("rparams-ru.png"));
         setLanguage("en");
     }
 };

@@ -13,8 +13,9 @@
 #include "monitor/program_monitor.h"
 #include "profile/text_format.h"
 #include "pty_line.h"
-#include "test_util.h"
+#include "rig/widgets.h"
 #include "session/machine_source.h"
+#include "test_util.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -237,8 +238,8 @@ private slots:
         // Screenshot of the dock connected to `k528 serve`.
         dock->setFloating(true);
         dock->resize(460, 760);
-        QTest::qWait(300);
-        QVERIFY(dock->grab().save(QDir::current().filePath("controller_dock.png")));
+        QApplication::processEvents();
+        K528_VERIFY_SHOT(dock->grab(), QStringLiteral("controller_dock.png"));
         dock->setFloating(false);
 
         // Pull into a new database revision of the machine.
@@ -266,7 +267,7 @@ private slots:
         QVERIFY(dock->preview());
         const QString diff = dock->preview()->findChild<QPlainTextEdit*>("controller.pushPreview.diff")->toPlainText();
         QVERIFY2(diff.contains("L42") && diff.contains("4321"), qPrintable(diff));
-        QVERIFY(dock->preview()->grab().save(QDir::current().filePath("controller_push_preview.png")));
+        K528_VERIFY_SHOT(dock->preview()->grab(), QStringLiteral("controller_push_preview.png"));
         dock->preview()->accept();
         QVERIFY(finished(done, 60000));
         QVERIFY2(done.takeFirst().first().toBool(), qPrintable(dock->lastMessage()));

@@ -5,12 +5,13 @@
 // run to cursor stops inside a subprogram with the call stack; the watch
 // list shows live R values and writes them where the engine allows; a
 // screenshot of the editor with a breakpoint and the executing frame.
+#include "controller/simulated_controller.h"
 #include "editor/debug_panel.h"
 #include "editor/debug_session.h"
 #include "editor/editor_tab.h"
 #include "editor/program_editor.h"
 #include "profile/builtin.h"
-#include "controller/simulated_controller.h"
+#include "rig/widgets.h"
 #include "session/simulation_session.h"
 
 #include <QComboBox>
@@ -334,7 +335,7 @@ private slots:
         QVERIFY2(all.contains("G01 G54 G55 G91"), qPrintable(all));
         QVERIFY2(all.contains("FZ3000.000"), qPrintable(all));
         QTest::qWait(50);
-        QVERIFY(dlg->grab().save(QStringLiteral(K528_BINARY_DIR) + "/tests/studio/debugger-start-here.png"));
+        K528_VERIFY_SHOT(dlg->grab(), QStringLiteral("debugger-start-here.png"));
         auto* start = dlg->findChild<QPushButton*>("debug.startHere.start");
         QVERIFY(start);
         start->click();

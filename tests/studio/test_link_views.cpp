@@ -27,16 +27,17 @@
 #include "history/history_dock.h"
 #include "history/history_model.h"
 #include "k923/k923_widget.h"
-#include "machine/machine_panel.h"
 #include "language.h"
+#include "machine/machine_panel.h"
 #include "main_window.h"
 #include "monitor/program_monitor.h"
 #include "pty_line.h"
-#include "test_util.h"
+#include "rig/widgets.h"
 #include "rparams/rparams_dock.h"
 #include "rparams/rparams_model.h"
 #include "scope/scope_view.h"
 #include "session/machine_source.h"
+#include "test_util.h"
 #include "workspace/workspaces.h"
 
 #include <QApplication>
@@ -99,8 +100,7 @@ class TestLinkViews : public QObject {
         }
         QTest::qWait(400);
         const QSize s = w.screen()->size();
-        QVERIFY(w.grab().save(QDir::current().filePath(
-            QStringLiteral("link_views_%1_%2_%3x%4.png").arg(name, lang_).arg(s.width()).arg(s.height()))));
+        K528_VERIFY_SHOT(w.grab(), QStringLiteral("link_views_%1_%2_%3x%4.png").arg(name, lang_).arg(s.width()).arg(s.height()));
     }
     static ViewNotice* noticeOf(QWidget* content) {
         for (QWidget* p = content; p; p = p->parentWidget())
@@ -247,8 +247,7 @@ private slots:
         QVERIFY(ed->sendPreview());
         const QString diff = ed->sendPreview()->findChild<QPlainTextEdit*>("controller.pushPreview.diff")->toPlainText();
         QVERIFY2(diff.contains("L42"), qPrintable(diff));
-        QVERIFY(ed->sendPreview()->grab().save(QDir::current().filePath(
-            QStringLiteral("link_views_editor_send_preview_%1.png").arg(lang_))));
+        K528_VERIFY_SHOT(ed->sendPreview()->grab(), QStringLiteral("link_views_editor_send_preview_%1.png").arg(lang_));
         ed->sendPreview()->accept();
         QVERIFY(finished(sent, 30000));
         QVERIFY2(sent.first().first().toBool(), qPrintable(sent.first().last().toString()));

@@ -137,13 +137,9 @@ bool switchTo(MainWindow& w, const QString& id, QString* why) {
 }
 
 void screenshot(MainWindow& w, const QString& what) {
-    const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
-    QDir().mkpath(dir);
     // What the X server shows (the backplot's OpenGL as composed there).
     QApplication::processEvents();
-    const QImage shot = w.screen()->grabWindow(w.winId()).toImage();
-    QVERIFY(!shot.isNull());
-    QVERIFY(shot.save(dir + QStringLiteral("/scenario-%1-%2.png").arg(screenName(), what)));
+    K528_VERIFY_SHOT(w.screen()->grabWindow(w.winId()), QStringLiteral("scenario-%1-%2.png").arg(screenName(), what));
 }
 
 struct Window {

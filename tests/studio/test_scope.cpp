@@ -4,12 +4,13 @@
 // frame draws what a fresh one does, triggers stop the picture, CSV export,
 // and a screenshot of the dock.
 #include "engine/run.h"
+#include "language.h"
 #include "machine/run.h"
 #include "machine/simulation.h"
 #include "profile/builtin.h"
 #include "program/parser.h"
+#include "rig/widgets.h"
 #include "scope/scope_view.h"
-#include "language.h"
 
 #include <QChartView>
 #include <QGraphicsTextItem>
@@ -281,10 +282,7 @@ private slots:
                             qPrintable(t->toPlainText()));
             }
         }
-        const QString shots = QStringLiteral(K528_BINARY_DIR "/screenshots");
-        QDir().mkpath(shots);
-        QVERIFY(pane.grab().save(
-            shots + QStringLiteral("/scope-%1x%2.png").arg(size.width()).arg(size.height())));
+        K528_VERIFY_SHOT(pane.grab(), QStringLiteral("scope-%1x%2.png").arg(size.width()).arg(size.height()));
         // Below the charts' smallest size: the pane scrolls.
         if (size.height() < 2 * ScopeView::kChartMinHeight + 120 && !sideBySide)
             QVERIFY(view->height() > pane.viewport()->height());

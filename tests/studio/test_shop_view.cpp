@@ -12,10 +12,11 @@
 #include "controller/simulated_controller.h"
 #include "language.h"
 #include "main_window.h"
-#include "session/machine_source.h"
-#include "shop/shop_view.h"
 #include "rig/mqtt_broker.h"
 #include "rig/shop_machines.h"
+#include "rig/widgets.h"
+#include "session/machine_source.h"
+#include "shop/shop_view.h"
 #include "test_util.h"
 #include "workspace/workspaces.h"
 
@@ -142,8 +143,7 @@ private slots:
         qInfo("online again %lld ms after the server said it serves", static_cast<long long>(t.elapsed()));
         QVERIFY(shop->tile("m02")->modeText().contains("F2"));
         QVERIFY(shop->today("m02")[3] > 0); // some offline time today
-        QDir().mkpath(QDir::current().filePath("shots"));
-        QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_view.png")));
+        K528_VERIFY_SHOT(w.grab(), QStringLiteral("shop_view.png"));
     }
 
     // A click on a tile: that machine's controller on every view.
@@ -173,8 +173,7 @@ private slots:
             QTRY_COMPARE_WITH_TIMEOUT(w.viewedController()->state().mode, i == 0 ? 7 : 2, 5000);
         }
         QTRY_VERIFY_WITH_TIMEOUT(dock->monitorLabel()->text().contains("F7"), 5000);
-        QDir().mkpath(QDir::current().filePath("shots"));
-        QVERIFY(w.grab().save(QDir::current().filePath("shots/shop_clicked.png")));
+        K528_VERIFY_SHOT(w.grab(), QStringLiteral("shop_clicked.png"));
     }
 
     // Sixteen machines on a shop PC's screen and an office's, in Russian and

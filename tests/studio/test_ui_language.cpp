@@ -1261,7 +1261,9 @@ void TestUiLanguage::catalogTextsAsCore() {
             QCOMPARE(studio::positionerMessageText(m.number), view(russian ? m.textRu : m.textEn));
             engine::AlarmView a;
             a.number = m.number;
-            QCOMPARE(studio::alarmLine(a), QStringLiteral("%1. %2").arg(m.number).arg(view(russian ? m.textRu : m.textEn)));
+            // The line's form is the panel's (table М.1: «37. Ошибка N ДОС», «39.Ошибка N маховика»).
+            QCOMPARE(studio::alarmLine(a), russian ? QString::fromStdString(m.panelText())
+                                                   : QStringLiteral("%1. %2").arg(m.number).arg(view(m.textEn)));
         }
         QVERIFY(studio::positionerMessageText(catalog::kPositionerMessageCount + 1).isEmpty());
         engine::AlarmView outside; // a number the catalog lacks: what the alarm carries

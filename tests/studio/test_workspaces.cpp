@@ -303,11 +303,7 @@ QStringList clashes(const QMainWindow& win) {
     return out;
 }
 
-QString shotPath(const QString& what) {
-    const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
-    QDir().mkpath(dir);
-    return dir + QStringLiteral("/workspaces-%1-%2.png").arg(screenName(), what);
-}
+QString shotName(const QString& what) { return QStringLiteral("workspaces-%1-%2.png").arg(screenName(), what); }
 
 } // namespace
 
@@ -366,7 +362,7 @@ private slots:
                 QVERIFY2(d, qPrintable(p.dock));
                 QCOMPARE(d->isVisible(), p.shown);
             }
-            QVERIFY(w.grab().save(shotPath(s.id)));
+            K528_VERIFY_SHOT(w.grab(), shotName(s.id));
         }
     }
 
@@ -470,7 +466,7 @@ private slots:
                                     .arg(name)
                                     .arg(status->height())
                                     .arg(status->heightForWidth(status->width()))));
-            QVERIFY(w.grab().save(shotPath(QStringLiteral("operator-%1-status").arg(QString::fromLatin1(name).mid(5)))));
+            K528_VERIFY_SHOT(w.grab(), shotName(QStringLiteral("operator-%1-status").arg(QString::fromLatin1(name).mid(5))));
             d->hide();
         }
     }
@@ -514,7 +510,7 @@ private slots:
                                                            .arg(x->mapTo(d, QPoint(0, 0)).x())
                                                            .arg(sizeText(x->size()), sizeText(d->size()))));
             }
-            QVERIFY(w.grab().save(shotPath(QStringLiteral("operator-%1-buttons").arg(QString::fromLatin1(name).mid(5)))));
+            K528_VERIFY_SHOT(w.grab(), shotName(QStringLiteral("operator-%1-buttons").arg(QString::fromLatin1(name).mid(5))));
             d->hide();
         }
     }
@@ -536,7 +532,7 @@ private slots:
                 settle();
                 const QString where = QStringLiteral("%1 %2").arg(QString::fromLatin1(lang), s.id);
                 all << cutTexts(w, where);
-                QVERIFY(w.grab().save(shotPath(QStringLiteral("%1-%2-texts").arg(s.id, QString::fromLatin1(lang)))));
+                K528_VERIFY_SHOT(w.grab(), shotName(QStringLiteral("%1-%2-texts").arg(s.id, QString::fromLatin1(lang))));
             }
             // The Controller dock's buttons: each whole inside the dock.
             QVERIFY(w.workspaces()->activate("shop"));

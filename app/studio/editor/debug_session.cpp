@@ -347,7 +347,7 @@ void DebugSession::advanced() {
             const auto alarms = ctl.alarms();
             QString text;
             if (!alarms.empty())
-                text = QStringLiteral("%1 %2").arg(alarms.back().number).arg(alarmMessage(alarms.back()));
+                text = alarmLine(alarms.back());
             emit message(tr("The program stopped with a message: %1").arg(text));
         }
     }

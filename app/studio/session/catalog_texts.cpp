@@ -1,9 +1,11 @@
 #include "session/catalog_texts.h"
 
+#include "catalog/messages.h"
 #include "engine/types.h"
 #include "engine/views.h"
 #include "profile/tools.h"
 #include "session/translated_texts.h"
+#include "window_language.h"
 
 #include <QCoreApplication>
 
@@ -133,7 +135,8 @@ QString alarmMessage(const engine::AlarmView& a) {
 }
 
 QString alarmLine(const engine::AlarmView& a) {
-    return QCoreApplication::translate("k528::studio::CatalogTexts", "%1. %2").arg(a.number).arg(alarmMessage(a));
+    return QString::fromStdString(
+        catalog::numberedMessage(a.number, alarmMessage(a).toStdString(), inWindowLanguage(true, false)));
 }
 
 QString modeName(engine::Mode m) { return kModeTexts.pattern(std::to_string(static_cast<int>(m))); }

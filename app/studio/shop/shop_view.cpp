@@ -89,10 +89,11 @@ QString clockText(std::int64_t unixMs) {
 }
 
 QString alarmText(int n) {
-    const QString text = positionerMessageText(n);
-    if (text.isEmpty())
+    if (positionerMessageText(n).isEmpty())
         return ShopView::tr("alarm %1").arg(n);
-    return QStringLiteral("%1 %2").arg(n).arg(text);
+    engine::AlarmView a;
+    a.number = n;
+    return alarmLine(a);
 }
 
 QString modeOf(const link::LiveState& l) {
