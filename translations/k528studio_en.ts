@@ -2274,26 +2274,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation> (message %1)</translation>
     </message>
     <message>
-        <source>there is no such file</source>
-        <translation>there is no such file</translation>
-    </message>
-    <message>
-        <source>it is a folder</source>
-        <translation>it is a folder</translation>
-    </message>
-    <message>
-        <source>it is not a regular file (a device, a pipe or a socket)</source>
-        <translation>it is not a regular file (a device, a pipe or a socket)</translation>
-    </message>
-    <message>
-        <source>this user may not read it</source>
-        <translation>this user may not read it</translation>
-    </message>
-    <message>
-        <source>it is larger than 16 MiB</source>
-        <translation>it is larger than 16 MiB</translation>
-    </message>
-    <message>
         <source>%1 cannot be read: %2</source>
         <translation>%1 cannot be read: %2</translation>
     </message>
@@ -2448,6 +2428,50 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>%1 is written beside its Russian text: %2=</source>
         <translation>%1 is written beside its Russian text: %2=</translation>
+    </message>
+    <message>
+        <source>line '%1' is not tcp://HOST:PORT/UNIT or serial:DEVICE?baud=115200&amp;parity=none&amp;address=1</source>
+        <translation>line '%1' is not tcp://HOST:PORT/UNIT or serial:DEVICE?baud=115200&amp;parity=none&amp;address=1</translation>
+    </message>
+    <message>
+        <source>line '%1': the unit id after '/' is a station address 1..247</source>
+        <translation>line '%1': the unit id after '/' is a station address 1..247</translation>
+    </message>
+    <message>
+        <source>line '%1': no HOST:PORT after tcp:// (tcp://HOST:PORT/UNIT)</source>
+        <translation>line '%1': no HOST:PORT after tcp:// (tcp://HOST:PORT/UNIT)</translation>
+    </message>
+    <message>
+        <source>line '%1': the port after the host is 1..65535</source>
+        <translation>line '%1': the port after the host is 1..65535</translation>
+    </message>
+    <message>
+        <source>line '%1': '%2' is not a host name or address</source>
+        <translation>line '%1': '%2' is not a host name or address</translation>
+    </message>
+    <message>
+        <source>line '%1': no device after serial: (serial:DEVICE?baud=115200&amp;parity=none&amp;address=1)</source>
+        <translation>line '%1': no device after serial: (serial:DEVICE?baud=115200&amp;parity=none&amp;address=1)</translation>
+    </message>
+    <message>
+        <source>line '%1': baud is a rate in bit/s, 1200..4000000</source>
+        <translation>line '%1': baud is a rate in bit/s, 1200..4000000</translation>
+    </message>
+    <message>
+        <source>line '%1': parity is none, even or odd</source>
+        <translation>line '%1': parity is none, even or odd</translation>
+    </message>
+    <message>
+        <source>line '%1': stop_bits is 1 or 2</source>
+        <translation>line '%1': stop_bits is 1 or 2</translation>
+    </message>
+    <message>
+        <source>line '%1': address is a station address 1..247</source>
+        <translation>line '%1': address is a station address 1..247</translation>
+    </message>
+    <message>
+        <source>line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)</source>
+        <translation>line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)</translation>
     </message>
 </context>
 <context>
@@ -8190,6 +8214,241 @@ Details: %3</translation>
     <message>
         <source>simulated %1</source>
         <translation>simulated %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SystemTexts</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>cannot read %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot read standard input: %1</source>
+        <translation>cannot read standard input: %1</translation>
+    </message>
+    <message>
+        <source>cannot write standard output: %1</source>
+        <translation>cannot write standard output: %1</translation>
+    </message>
+    <message>
+        <source>it is a directory</source>
+        <translation>it is a directory</translation>
+    </message>
+    <message>
+        <source>it is %1, not a regular file (k528 reads program and machine files only)</source>
+        <translation>it is %1, not a regular file (k528 reads program and machine files only)</translation>
+    </message>
+    <message>
+        <source>a directory</source>
+        <translation>a directory</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>a character device</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>a block device</translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>a FIFO (named pipe)</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>a socket</translation>
+    </message>
+    <message>
+        <source>a special file</source>
+        <translation>a special file</translation>
+    </message>
+    <message>
+        <source>it is larger than %1 MiB, the most k528 reads (a K528-05 holds at most 99 programs of 999 frames, about 3 MB of text)</source>
+        <translation>it is larger than %1 MiB, the most k528 reads (a K528-05 holds at most 99 programs of 999 frames, about 3 MB of text)</translation>
+    </message>
+    <message>
+        <source>not enough memory</source>
+        <translation>not enough memory</translation>
+    </message>
+    <message>
+        <source>it is a directory; give a file name</source>
+        <translation>it is a directory; give a file name</translation>
+    </message>
+    <message>
+        <source>it is not a regular file, a FIFO or a character device</source>
+        <translation>it is not a regular file, a FIFO or a character device</translation>
+    </message>
+    <message>
+        <source>cannot create a file in its folder %1: %2</source>
+        <translation>cannot create a file in its folder %1: %2</translation>
+    </message>
+    <message>
+        <source>it is not open</source>
+        <translation>it is not open</translation>
+    </message>
+    <message>
+        <source>a write failed</source>
+        <translation>a write failed</translation>
+    </message>
+    <message>
+        <source>'%1' is not mqtt://HOST[:PORT] (plain MQTT; TLS is not supported)</source>
+        <translation>'%1' is not mqtt://HOST[:PORT] (plain MQTT; TLS is not supported)</translation>
+    </message>
+    <message>
+        <source>'%1': the port is 1..65535</source>
+        <translation>'%1': the port is 1..65535</translation>
+    </message>
+    <message>
+        <source>'%1': no host name or address after mqtt://</source>
+        <translation>'%1': no host name or address after mqtt://</translation>
+    </message>
+    <message>
+        <source>Operation not permitted</source>
+        <translation>Operation not permitted</translation>
+    </message>
+    <message>
+        <source>No such file or directory</source>
+        <translation>No such file or directory</translation>
+    </message>
+    <message>
+        <source>Interrupted system call</source>
+        <translation>Interrupted system call</translation>
+    </message>
+    <message>
+        <source>Input/output error</source>
+        <translation>Input/output error</translation>
+    </message>
+    <message>
+        <source>No such device or address</source>
+        <translation>No such device or address</translation>
+    </message>
+    <message>
+        <source>Bad file descriptor</source>
+        <translation>Bad file descriptor</translation>
+    </message>
+    <message>
+        <source>Resource temporarily unavailable</source>
+        <translation>Resource temporarily unavailable</translation>
+    </message>
+    <message>
+        <source>Cannot allocate memory</source>
+        <translation>Cannot allocate memory</translation>
+    </message>
+    <message>
+        <source>Permission denied</source>
+        <translation>Permission denied</translation>
+    </message>
+    <message>
+        <source>Device or resource busy</source>
+        <translation>Device or resource busy</translation>
+    </message>
+    <message>
+        <source>File exists</source>
+        <translation>File exists</translation>
+    </message>
+    <message>
+        <source>Invalid cross-device link</source>
+        <translation>Invalid cross-device link</translation>
+    </message>
+    <message>
+        <source>No such device</source>
+        <translation>No such device</translation>
+    </message>
+    <message>
+        <source>Not a directory</source>
+        <translation>Not a directory</translation>
+    </message>
+    <message>
+        <source>Is a directory</source>
+        <translation>Is a directory</translation>
+    </message>
+    <message>
+        <source>Invalid argument</source>
+        <translation>Invalid argument</translation>
+    </message>
+    <message>
+        <source>Too many open files in system</source>
+        <translation>Too many open files in system</translation>
+    </message>
+    <message>
+        <source>Too many open files</source>
+        <translation>Too many open files</translation>
+    </message>
+    <message>
+        <source>Text file busy</source>
+        <translation>Text file busy</translation>
+    </message>
+    <message>
+        <source>File too large</source>
+        <translation>File too large</translation>
+    </message>
+    <message>
+        <source>No space left on device</source>
+        <translation>No space left on device</translation>
+    </message>
+    <message>
+        <source>Illegal seek</source>
+        <translation>Illegal seek</translation>
+    </message>
+    <message>
+        <source>Read-only file system</source>
+        <translation>Read-only file system</translation>
+    </message>
+    <message>
+        <source>Too many links</source>
+        <translation>Too many links</translation>
+    </message>
+    <message>
+        <source>Broken pipe</source>
+        <translation>Broken pipe</translation>
+    </message>
+    <message>
+        <source>File name too long</source>
+        <translation>File name too long</translation>
+    </message>
+    <message>
+        <source>Too many levels of symbolic links</source>
+        <translation>Too many levels of symbolic links</translation>
+    </message>
+    <message>
+        <source>Directory not empty</source>
+        <translation>Directory not empty</translation>
+    </message>
+    <message>
+        <source>Disk quota exceeded</source>
+        <translation>Disk quota exceeded</translation>
+    </message>
+    <message>
+        <source>Stale file handle</source>
+        <translation>Stale file handle</translation>
+    </message>
+    <message>
+        <source>Value too large for defined data type</source>
+        <translation>Value too large for defined data type</translation>
+    </message>
+    <message>
+        <source>Operation not supported</source>
+        <translation>Operation not supported</translation>
+    </message>
+    <message>
+        <source>Connection refused</source>
+        <translation>Connection refused</translation>
+    </message>
+    <message>
+        <source>Connection timed out</source>
+        <translation>Connection timed out</translation>
+    </message>
+    <message>
+        <source>%2 (error %1)</source>
+        <translation>%2 (error %1)</translation>
     </message>
 </context>
 <context>

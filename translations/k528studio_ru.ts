@@ -2274,26 +2274,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation> (сообщение %1)</translation>
     </message>
     <message>
-        <source>there is no such file</source>
-        <translation>такого файла нет</translation>
-    </message>
-    <message>
-        <source>it is a folder</source>
-        <translation>это папка</translation>
-    </message>
-    <message>
-        <source>it is not a regular file (a device, a pipe or a socket)</source>
-        <translation>это не обычный файл (устройство, канал или сокет)</translation>
-    </message>
-    <message>
-        <source>this user may not read it</source>
-        <translation>этому пользователю читать его нельзя</translation>
-    </message>
-    <message>
-        <source>it is larger than 16 MiB</source>
-        <translation>он больше 16 МиБ</translation>
-    </message>
-    <message>
         <source>%1 cannot be read: %2</source>
         <translation>%1 не читается: %2</translation>
     </message>
@@ -2448,6 +2428,50 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>%1 is written beside its Russian text: %2=</source>
         <translation>%1 пишется рядом с русским текстом: %2=</translation>
+    </message>
+    <message>
+        <source>line '%1' is not tcp://HOST:PORT/UNIT or serial:DEVICE?baud=115200&amp;parity=none&amp;address=1</source>
+        <translation>линия «%1» — не tcp://ХОСТ:ПОРТ/УСТРОЙСТВО и не serial:УСТРОЙСТВО?baud=115200&amp;parity=none&amp;address=1</translation>
+    </message>
+    <message>
+        <source>line '%1': the unit id after '/' is a station address 1..247</source>
+        <translation>линия «%1»: после «/» — адрес станции 1..247</translation>
+    </message>
+    <message>
+        <source>line '%1': no HOST:PORT after tcp:// (tcp://HOST:PORT/UNIT)</source>
+        <translation>линия «%1»: после tcp:// нет ХОСТ:ПОРТ (tcp://ХОСТ:ПОРТ/УСТРОЙСТВО)</translation>
+    </message>
+    <message>
+        <source>line '%1': the port after the host is 1..65535</source>
+        <translation>линия «%1»: порт после хоста — 1..65535</translation>
+    </message>
+    <message>
+        <source>line '%1': '%2' is not a host name or address</source>
+        <translation>линия «%1»: «%2» — не имя и не адрес хоста</translation>
+    </message>
+    <message>
+        <source>line '%1': no device after serial: (serial:DEVICE?baud=115200&amp;parity=none&amp;address=1)</source>
+        <translation>линия «%1»: после serial: нет устройства (serial:УСТРОЙСТВО?baud=115200&amp;parity=none&amp;address=1)</translation>
+    </message>
+    <message>
+        <source>line '%1': baud is a rate in bit/s, 1200..4000000</source>
+        <translation>линия «%1»: baud — скорость в бит/с, 1200..4000000</translation>
+    </message>
+    <message>
+        <source>line '%1': parity is none, even or odd</source>
+        <translation>линия «%1»: parity — none, even или odd</translation>
+    </message>
+    <message>
+        <source>line '%1': stop_bits is 1 or 2</source>
+        <translation>линия «%1»: stop_bits — 1 или 2</translation>
+    </message>
+    <message>
+        <source>line '%1': address is a station address 1..247</source>
+        <translation>линия «%1»: address — адрес станции 1..247</translation>
+    </message>
+    <message>
+        <source>line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)</source>
+        <translation>линия «%1»: «%2» — не настройка последовательной линии (baud, parity, stop_bits, address)</translation>
     </message>
 </context>
 <context>
@@ -8190,6 +8214,241 @@ Details: %3</source>
     <message>
         <source>simulated %1</source>
         <translation>имитация %1</translation>
+    </message>
+</context>
+<context>
+    <name>k528::studio::SystemTexts</name>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>не удаётся открыть %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>не удаётся прочитать %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot read standard input: %1</source>
+        <translation>не удаётся прочитать стандартный ввод: %1</translation>
+    </message>
+    <message>
+        <source>cannot write standard output: %1</source>
+        <translation>не удаётся записать стандартный вывод: %1</translation>
+    </message>
+    <message>
+        <source>it is a directory</source>
+        <translation>это папка</translation>
+    </message>
+    <message>
+        <source>it is %1, not a regular file (k528 reads program and machine files only)</source>
+        <translation>это %1, а не обычный файл (k528 читает только файлы программ и станков)</translation>
+    </message>
+    <message>
+        <source>a directory</source>
+        <translation>папка</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>символьное устройство</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>блочное устройство</translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>FIFO (именованный канал)</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>сокет</translation>
+    </message>
+    <message>
+        <source>a special file</source>
+        <translation>особый файл</translation>
+    </message>
+    <message>
+        <source>it is larger than %1 MiB, the most k528 reads (a K528-05 holds at most 99 programs of 999 frames, about 3 MB of text)</source>
+        <translation>он больше %1 МиБ, а больше k528 не читает (K528-05 хранит не более 99 программ по 999 кадров — около 3 МБ текста)</translation>
+    </message>
+    <message>
+        <source>not enough memory</source>
+        <translation>не хватает памяти</translation>
+    </message>
+    <message>
+        <source>it is a directory; give a file name</source>
+        <translation>это папка; укажите имя файла</translation>
+    </message>
+    <message>
+        <source>it is not a regular file, a FIFO or a character device</source>
+        <translation>это не обычный файл, не FIFO и не символьное устройство</translation>
+    </message>
+    <message>
+        <source>cannot create a file in its folder %1: %2</source>
+        <translation>в его папке %1 нельзя создать файл: %2</translation>
+    </message>
+    <message>
+        <source>it is not open</source>
+        <translation>он не открыт</translation>
+    </message>
+    <message>
+        <source>a write failed</source>
+        <translation>запись не удалась</translation>
+    </message>
+    <message>
+        <source>'%1' is not mqtt://HOST[:PORT] (plain MQTT; TLS is not supported)</source>
+        <translation>«%1» — не mqtt://ХОСТ[:ПОРТ] (MQTT без шифрования; TLS не поддерживается)</translation>
+    </message>
+    <message>
+        <source>'%1': the port is 1..65535</source>
+        <translation>«%1»: порт — 1..65535</translation>
+    </message>
+    <message>
+        <source>'%1': no host name or address after mqtt://</source>
+        <translation>«%1»: после mqtt:// нет имени или адреса хоста</translation>
+    </message>
+    <message>
+        <source>Operation not permitted</source>
+        <translation>операция не разрешена</translation>
+    </message>
+    <message>
+        <source>No such file or directory</source>
+        <translation>нет такого файла или папки</translation>
+    </message>
+    <message>
+        <source>Interrupted system call</source>
+        <translation>системный вызов прерван</translation>
+    </message>
+    <message>
+        <source>Input/output error</source>
+        <translation>ошибка ввода-вывода</translation>
+    </message>
+    <message>
+        <source>No such device or address</source>
+        <translation>нет такого устройства или адреса</translation>
+    </message>
+    <message>
+        <source>Bad file descriptor</source>
+        <translation>неверный дескриптор файла</translation>
+    </message>
+    <message>
+        <source>Resource temporarily unavailable</source>
+        <translation>ресурс временно недоступен</translation>
+    </message>
+    <message>
+        <source>Cannot allocate memory</source>
+        <translation>не хватает памяти</translation>
+    </message>
+    <message>
+        <source>Permission denied</source>
+        <translation>доступ запрещён</translation>
+    </message>
+    <message>
+        <source>Device or resource busy</source>
+        <translation>устройство или ресурс занято</translation>
+    </message>
+    <message>
+        <source>File exists</source>
+        <translation>файл уже существует</translation>
+    </message>
+    <message>
+        <source>Invalid cross-device link</source>
+        <translation>ссылка между файловыми системами невозможна</translation>
+    </message>
+    <message>
+        <source>No such device</source>
+        <translation>нет такого устройства</translation>
+    </message>
+    <message>
+        <source>Not a directory</source>
+        <translation>это не папка</translation>
+    </message>
+    <message>
+        <source>Is a directory</source>
+        <translation>это папка</translation>
+    </message>
+    <message>
+        <source>Invalid argument</source>
+        <translation>недопустимый аргумент</translation>
+    </message>
+    <message>
+        <source>Too many open files in system</source>
+        <translation>слишком много открытых файлов в системе</translation>
+    </message>
+    <message>
+        <source>Too many open files</source>
+        <translation>слишком много открытых файлов</translation>
+    </message>
+    <message>
+        <source>Text file busy</source>
+        <translation>текстовый файл занят</translation>
+    </message>
+    <message>
+        <source>File too large</source>
+        <translation>файл слишком велик</translation>
+    </message>
+    <message>
+        <source>No space left on device</source>
+        <translation>на устройстве не осталось места</translation>
+    </message>
+    <message>
+        <source>Illegal seek</source>
+        <translation>недопустимое позиционирование</translation>
+    </message>
+    <message>
+        <source>Read-only file system</source>
+        <translation>файловая система только для чтения</translation>
+    </message>
+    <message>
+        <source>Too many links</source>
+        <translation>слишком много ссылок</translation>
+    </message>
+    <message>
+        <source>Broken pipe</source>
+        <translation>канал разорван</translation>
+    </message>
+    <message>
+        <source>File name too long</source>
+        <translation>слишком длинное имя файла</translation>
+    </message>
+    <message>
+        <source>Too many levels of symbolic links</source>
+        <translation>слишком много уровней символических ссылок</translation>
+    </message>
+    <message>
+        <source>Directory not empty</source>
+        <translation>папка не пуста</translation>
+    </message>
+    <message>
+        <source>Disk quota exceeded</source>
+        <translation>превышена дисковая квота</translation>
+    </message>
+    <message>
+        <source>Stale file handle</source>
+        <translation>устаревший дескриптор файла</translation>
+    </message>
+    <message>
+        <source>Value too large for defined data type</source>
+        <translation>значение слишком велико для типа данных</translation>
+    </message>
+    <message>
+        <source>Operation not supported</source>
+        <translation>операция не поддерживается</translation>
+    </message>
+    <message>
+        <source>Connection refused</source>
+        <translation>в соединении отказано</translation>
+    </message>
+    <message>
+        <source>Connection timed out</source>
+        <translation>время ожидания соединения истекло</translation>
+    </message>
+    <message>
+        <source>%2 (error %1)</source>
+        <translation>системная ошибка %1 («%2»)</translation>
     </message>
 </context>
 <context>

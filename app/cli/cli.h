@@ -43,8 +43,11 @@ int usageError(std::string_view message, bool russian);
 // Prints the help of one command to `out`.
 void printCommandHelp(const Command& c, std::FILE* out);
 
-// Reads a whole file; on failure returns false and sets `error` to a message
-// naming the file and the reason.
+// Reads a whole file (util::readInputFile); on failure returns false and sets
+// `error` to a message naming the file and the reason, in the command line's
+// language (output_file.cpp).
 bool readFile(const std::string& path, std::string& contents, std::string& error);
+// The same for standard input (`-`).
+bool readStandardInput(std::string& contents, std::string& error);
 
 } // namespace k528::cli

@@ -202,6 +202,8 @@ constexpr std::array kTexts = {
     CatalogText{"opt.blank-profile",
                 "--blank нужен --profile (станок, на котором программа проверяется)",
                 "--blank needs --profile (the machine the program is proved on)"},
+    CatalogText{"run.trace-error", "файл трассы: %1", "the trace: %1"},
+    CatalogText{"opt.file-blank", "заготовка файла: %1", "the file's blank: %1"},
     CatalogText{"format.usage",
                 "format нужен ровно один ФАЙЛ",
                 "format needs exactly one FILE"},

@@ -19,7 +19,6 @@
 #include "program/validator.h"
 #include "program_cli.h"
 #include "proveout_cli.h"
-#include "util/input_file.h"
 #include "util/json.h"
 
 namespace k528::cli {
@@ -91,7 +90,7 @@ std::string displayName(const std::string& path) { return path == "-" ? "<stdin>
 bool readProgramFile(const std::string& path, std::string& contents) {
     if (path == "-") {
         std::string error;
-        if (!util::readInputStream(stdin, "standard input", contents, error)) {
+        if (!readStandardInput(contents, error)) {
             std::fprintf(stderr, "k528: %s\n", error.c_str());
             return false;
         }

@@ -13,7 +13,6 @@
 #include "profile/diff.h"
 #include "profile/text_format.h"
 #include "profile/validate.h"
-#include "util/input_file.h"
 #include "util/json.h"
 
 #include <algorithm>
@@ -82,7 +81,7 @@ int cmdImport(std::span<const std::string> argv) {
     const std::string file = a.positional()[0];
     std::string text, err;
     if (file == "-") {
-        if (!util::readInputStream(stdin, "standard input", text, err))
+        if (!readStandardInput(text, err))
             return fail(err);
     } else if (!readFile(file, text, err)) {
         return fail(err);
@@ -95,8 +94,8 @@ int cmdImport(std::span<const std::string> argv) {
         format = looksLikeCsv(file, text) ? "csv" : "k528m";
     const auto asName = a.value("--as");
     if (asName) {
-        if (const auto e = profile::checkName(*asName); !e.empty())
-            return usageError("--as " + *asName + ": " + e);
+        if (const profile::Problem e = profile::nameProblem(*asName); !e.empty())
+            return usageError("--as " + *asName + ": " + profile::problemText(e, russianCommandLine()));
     }
     db::WriteOptions o;
     o.author = a.value("--author").value_or("");

@@ -15,7 +15,6 @@
 #include "link_record.h"
 #include "output_file.h"
 #include "profile/text_format.h"
-#include "util/input_file.h"
 #include "util/json.h"
 
 #include <QCoreApplication>
@@ -360,7 +359,7 @@ int runLinkQt(std::span<const std::string> argv) {
     if (cmd == "push" && !pushReleased) {
         const std::string& path = args.positional()[1];
         std::string error;
-        if (!util::readInputFile(path, pushText, error)) {
+        if (!readFile(path, pushText, error)) {
             std::fprintf(stderr, "k528 link: %s\n", error.c_str());
             return ExitUsage;
         }

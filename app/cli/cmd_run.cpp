@@ -454,7 +454,7 @@ int runRun(std::span<const std::string> argv) {
     if (tracePath) {
         std::string error;
         if (!traceOut.open(*tracePath, error)) {
-            std::fprintf(stderr, "k528: the trace: %s\n", error.c_str());
+            std::fprintf(stderr, "k528: %s\n", cliText("run.trace-error", {error}).c_str());
             return ExitUsage;
         }
     }
@@ -465,7 +465,7 @@ int runRun(std::span<const std::string> argv) {
             result = machine::runProgramTraced(prof, parsed.store, number, options, trace);
             std::string error;
             if (!traceOut.commit(error)) {
-                std::fprintf(stderr, "k528: the trace: %s\n", error.c_str());
+                std::fprintf(stderr, "k528: %s\n", cliText("run.trace-error", {error}).c_str());
                 return ExitUsage;
             }
         } else {

@@ -48,9 +48,9 @@ int runShop(std::span<const std::string> argv) {
                     return usageError(cliText("shop.no-line", {i.name}));
                 continue;
             }
-            std::string error;
+            profile::Problem error;
             if (!profile::parseLine(*line, error))
-                return usageError(cliText("shop.bad-line", {i.name, error}));
+                return usageError(cliText("shop.bad-line", {i.name, profile::problemText(error, russianCommandLine())}));
             names.push_back(i.name);
             lines.push_back(*line);
         }

@@ -139,10 +139,11 @@ int runShopQt(std::span<const std::string> argv) {
         const std::size_t eq = item.find('=');
         if (eq == std::string::npos || eq == 0)
             return usageError(cliText("shop.usage.line", {item}));
-        std::string error;
+        profile::Problem error;
         const auto a = profile::parseLine(item.substr(eq + 1), error);
         if (!a)
-            return usageError(cliText("shop.usage.line-machine", {item.substr(0, eq), error}));
+            return usageError(cliText("shop.usage.line-machine",
+                                      {item.substr(0, eq), profile::problemText(error, russianCommandLine())}));
         o.lines.push_back({item.substr(0, eq), *a});
         o.lineTexts.push_back(profile::formatLine(*a));
     }
@@ -207,8 +208,8 @@ int runShopQt(std::span<const std::string> argv) {
         std::string clientId = args.value("--client-id").value_or("");
         if (clientId.empty())
             clientId = shop::MqttPublisher::defaultClientId("k528-shop");
-        if (!mqtt::parseUrl(*args.value("--mqtt"), error))
-            return usageError("--mqtt: " + error);
+        if (util::Message bad; !mqtt::parseUrl(*args.value("--mqtt"), bad))
+            return usageError("--mqtt: " + util::systemText(bad, russianCommandLine()));
         std::vector<std::string> names;
         for (const auto& l : o.lines)
             names.push_back(l.machine);

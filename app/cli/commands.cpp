@@ -4,7 +4,6 @@
 #include "cli.h"
 #include "db_cli.h"
 #include "program_cli.h"
-#include "util/input_file.h"
 
 namespace k528::cli {
 
@@ -268,10 +267,6 @@ void printCommandHelp(const Command& c, std::FILE* out) {
                  static_cast<int>(c.summary.size()), c.summary.data());
     if (!c.details.empty())
         std::fprintf(out, "\n%.*s", static_cast<int>(c.details.size()), c.details.data());
-}
-
-bool readFile(const std::string& path, std::string& contents, std::string& error) {
-    return util::readInputFile(path, contents, error);
 }
 
 } // namespace k528::cli

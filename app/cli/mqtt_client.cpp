@@ -28,9 +28,17 @@ bool waitFor(int ms, const auto& done) {
 } // namespace
 
 std::optional<Url> parseUrl(const std::string& text, std::string& error) {
+    util::Message m;
+    std::optional<Url> u = parseUrl(text, m);
+    if (!u)
+        error = util::systemText(m, false);
+    return u;
+}
+
+std::optional<Url> parseUrl(const std::string& text, util::Message& error) {
     const std::string scheme = "mqtt://";
     if (text.rfind(scheme, 0) != 0) {
-        error = "'" + text + "' is not mqtt://HOST[:PORT] (plain MQTT; TLS is not supported)";
+        error = util::message("mqtt.url-scheme", {text});
         return std::nullopt;
     }
     std::string rest = text.substr(scheme.size());
@@ -50,7 +58,7 @@ std::optional<Url> parseUrl(const std::string& text, std::string& error) {
             p = p * 10 + (c - '0');
         }
         if (port.empty() || p < 1 || p > 65535) {
-            error = "'" + text + "': the port is 1..65535";
+            error = util::message("mqtt.url-port", {text});
             return std::nullopt;
         }
         u.port = p;
@@ -59,7 +67,7 @@ std::optional<Url> parseUrl(const std::string& text, std::string& error) {
     if (v6 && rest.size() >= 2 && rest.back() == ']')
         rest = rest.substr(1, rest.size() - 2);
     if (rest.empty() || rest.find_first_of("/?@ ") != std::string::npos) {
-        error = "'" + text + "': no host name or address after mqtt://";
+        error = util::message("mqtt.url-host", {text});
         return std::nullopt;
     }
     u.host = rest;

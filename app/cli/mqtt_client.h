@@ -4,6 +4,8 @@
 // says goodbye cleanly.
 #pragma once
 
+#include "util/system_texts.h"
+
 #include <atomic>
 #include <optional>
 #include <string>
@@ -16,7 +18,10 @@ struct Url {
     std::string host;
     int port = 1883;
 };
-// mqtt://HOST[:PORT]; nullopt with `error` when it is not one.
+// mqtt://HOST[:PORT]; nullopt with `error` (a mqtt.url-* text of
+// util/system_texts.h) when it is not one.
+std::optional<Url> parseUrl(const std::string& text, util::Message& error);
+// The same with the error in English.
 std::optional<Url> parseUrl(const std::string& text, std::string& error);
 
 class Publisher {

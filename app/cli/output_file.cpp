@@ -1,10 +1,11 @@
 #include "output_file.h"
 
 #include "cli.h"
+#include "util/input_file.h"
+#include "util/system_texts.h"
 
 #include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <string_view>
@@ -30,6 +31,11 @@ bool writeAll(int fd, std::string_view text) {
         done += static_cast<std::size_t>(n);
     }
     return true;
+}
+
+// "cannot write <path>: <why>" in the command line's language.
+std::string cannotWrite(const std::string& path, util::Message why) {
+    return util::systemText(util::message("io.cannot-write", {path}, {std::move(why)}), russianCommandLine());
 }
 
 } // namespace
@@ -64,29 +70,29 @@ bool OutputStream::open(const std::string& path, std::string& error) {
     abandon();
     path_ = path;
     firstErrno_ = 0;
-    const auto fail = [&](const std::string& why) {
-        error = "cannot write " + path + ": " + why;
+    const auto fail = [&](util::Message why) {
+        error = cannotWrite(path, std::move(why));
         abandon();
         return false;
     };
     struct stat st {};
     existed_ = ::stat(path.c_str(), &st) == 0; // follows links
     if (!existed_ && errno != ENOENT)
-        return fail(std::strerror(errno));
+        return fail(util::systemError(errno));
     mode_ = st.st_mode;
     bool direct = false;
     if (existed_) {
         if (S_ISDIR(st.st_mode))
-            return fail("it is a directory; give a file name");
+            return fail(util::message("io.write-directory"));
         direct = S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode);
         if (!direct && !S_ISREG(st.st_mode))
-            return fail("it is not a regular file, a FIFO or a character device");
+            return fail(util::message("io.write-kind"));
     }
     if (direct) {
         // A FIFO or a device (/dev/stdout, /dev/full, a pipe) is written, never replaced.
         fd_ = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
         if (fd_ < 0)
-            return fail(std::strerror(errno));
+            return fail(util::systemError(errno));
     } else {
         // The real file: a link's target (a dangling link: the file it names).
         std::error_code ec;
@@ -104,20 +110,19 @@ bool OutputStream::open(const std::string& path, std::string& error) {
         std::string tmp = (dir / tmpName).string();
         fd_ = ::mkstemp(tmp.data());
         if (fd_ < 0)
-            return fail("cannot create a file in its folder " + dir.string() + ": " +
-                        std::strerror(errno));
+            return fail(util::message("io.create-in-folder", {dir.string()}, {util::systemError(errno)}));
         tmp_ = tmp;
     }
     const cookie_io_functions_t io{nullptr, &OutputStream::cookieWrite, nullptr, nullptr};
     file_ = ::fopencookie(this, "w", io);
     if (!file_)
-        return fail(std::strerror(errno));
+        return fail(util::systemError(errno));
     return true;
 }
 
 bool OutputStream::commit(std::string& error) {
     if (!file_) {
-        error = "cannot write " + path_ + ": it is not open";
+        error = cannotWrite(path_, util::message("io.not-open"));
         return false;
     }
     errno = 0;
@@ -155,7 +160,7 @@ bool OutputStream::commit(std::string& error) {
     if (ok)
         tmp_.clear(); // renamed: nothing to remove
     else
-        error = "cannot write " + path_ + ": " + (e != 0 ? std::strerror(e) : "a write failed");
+        error = cannotWrite(path_, e != 0 ? util::systemError(e) : util::message("io.write-failed"));
     abandon();
     return ok;
 }
@@ -168,14 +173,31 @@ bool writeOutputFile(const std::string& path, const std::string& text, std::stri
     return out.commit(error);
 }
 
+bool readFile(const std::string& path, std::string& contents, std::string& error) {
+    util::Message m;
+    if (util::readInputFile(path, contents, m))
+        return true;
+    error = util::systemText(m, russianCommandLine());
+    return false;
+}
+
+bool readStandardInput(std::string& contents, std::string& error) {
+    util::Message m;
+    if (util::readInputStream(stdin, contents, m))
+        return true;
+    error = util::systemText(m, russianCommandLine());
+    return false;
+}
+
 int finishStandardOutput(int exitCode) {
     errno = 0;
     const bool flushFailed = std::fflush(stdout) != 0;
     const int flushErrno = errno;
     if (flushFailed || std::ferror(stdout)) {
-        std::fprintf(stderr, "k528: cannot write standard output: %s\n",
-                     flushFailed && flushErrno != 0 ? std::strerror(flushErrno)
-                                                    : "a write failed");
+        const util::Message why = flushFailed && flushErrno != 0 ? util::systemError(flushErrno)
+                                                                 : util::message("io.write-failed");
+        std::fprintf(stderr, "k528: %s\n",
+                     util::systemText(util::message("io.cannot-write-stdout", {}, {why}), russianCommandLine()).c_str());
         return ExitUsage;
     }
     return exitCode;

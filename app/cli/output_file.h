@@ -19,7 +19,8 @@ namespace k528::cli {
 //  - a FIFO or a character device (/dev/stdout, /dev/full, a pipe) is written
 //    directly, never replaced;
 //  - a directory, a block device or a socket is refused.
-// On failure returns false with `error` = "cannot write <path>: <why>".
+// On failure returns false with `error` = "cannot write <path>: <why>" in the
+// command line's language (util/system_texts.h's io.cannot-write).
 bool writeOutputFile(const std::string& path, const std::string& text, std::string& error);
 
 // The same for a file written piece by piece through stdio (`run --trace`, of

@@ -6,6 +6,7 @@
 #include "engine/rparams.h"
 #include "engine/self_test.h"
 #include "machine_profile.h"
+#include "profile/problem.h"
 #include "profile/validate.h"
 
 #include <set>
@@ -20,8 +21,8 @@ int applyParameterOptions(const Args& args, profile::MachineProfile& profile,
             return usageError(cliText("opt.param", {p}));
         if (n < 1 || n > 152)
             return usageError(cliText("opt.param-range", {p}));
-        if (const std::string e = profile::checkCValue(static_cast<int>(n), v); !e.empty())
-            return usageError("--param " + p + ": " + e);
+        if (const profile::Problem e = profile::cValueProblem(static_cast<int>(n), v); !e.empty())
+            return usageError("--param " + p + ": " + profile::problemText(e, russianCommandLine()));
         profile.setC(static_cast<int>(n), v);
     }
     for (const std::string& p : args.values("--r")) {

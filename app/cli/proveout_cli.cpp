@@ -1,6 +1,7 @@
 #include "proveout_cli.h"
 
 #include "cli.h"
+#include "cli_texts.h"
 #include "plc/description.h"
 #include "profile/tools.h"
 #include "util/json.h"
@@ -33,21 +34,21 @@ int lineLength(std::string_view text, int line) {
 } // namespace
 
 bool blankFor(const Args& args, std::string_view fileText, std::optional<stock::Blank>& blank) {
-    std::string error;
+    std::string id;
     if (const auto b = args.value(kBlankOption)) {
-        blank = stock::parseUcg(*b, &error);
+        blank = stock::parseUcg(*b, nullptr, &id);
         if (!blank) {
-            usageError("--blank " + *b + ": " + error);
+            usageError("--blank " + *b + ": " + stock::ucgErrorText(id, {}, russianCommandLine()));
             return false;
         }
         return true;
     }
     if (fileText.find("UCG") == std::string_view::npos)
         return true;
-    std::string id;
-    blank = stock::findUcg(fileText, &error, &id);
+    blank = stock::findUcg(fileText, nullptr, &id);
     if (!blank && id != stock::kNoUcg) {
-        std::fprintf(stderr, "k528: the file's blank: %s\n", error.c_str());
+        std::fprintf(stderr, "k528: %s\n",
+                     cliText("opt.file-blank", {stock::ucgErrorText(id, {}, russianCommandLine())}).c_str());
         return false;
     }
     return true;

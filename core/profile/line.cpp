@@ -14,18 +14,16 @@ std::optional<int> number(std::string_view s) {
     return v;
 }
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
-
-const char* kForms = "tcp://HOST:PORT/UNIT or serial:DEVICE?baud=115200&parity=none&address=1";
-
-std::optional<LineAddress> fail(std::string& error, std::string text) {
-    error = std::move(text);
-    return std::nullopt;
-}
-
 } // namespace
 
-std::optional<LineAddress> parseLine(std::string_view text, std::string& error) {
+std::optional<LineAddress> parseLine(std::string_view text, Problem& problem) {
+    // What is wrong as problem.cpp's line.* id, the value as given first.
+    const auto fail = [&](const char* id, std::string_view what = {}) -> std::optional<LineAddress> {
+        problem = profile::problem(id, {std::string(text)});
+        if (!what.empty())
+            problem.args.emplace_back(what);
+        return std::nullopt;
+    };
     LineAddress a;
     if (text.starts_with("tcp://")) {
         a.kind = LineAddress::Kind::Tcp;
@@ -35,21 +33,21 @@ std::optional<LineAddress> parseLine(std::string_view text, std::string& error) 
         if (slash != std::string_view::npos) {
             const auto unit = number(rest.substr(slash + 1));
             if (!unit || *unit < 1 || *unit > 247)
-                return fail(error, "line " + quoted(text) + ": the unit id after '/' is a station address 1..247");
+                return fail("line.unit");
             a.address = *unit;
         }
         const std::size_t colon = hostPort.rfind(':');
         if (colon == std::string_view::npos || colon == 0)
-            return fail(error, "line " + quoted(text) + ": no HOST:PORT after tcp:// (" + kForms + ")");
+            return fail("line.host-port");
         std::string_view host = hostPort.substr(0, colon);
         if (host.size() >= 2 && host.front() == '[' && host.back() == ']')
             host = host.substr(1, host.size() - 2);
         const auto port = number(hostPort.substr(colon + 1));
         if (host.empty() || !port || *port < 1 || *port > 65535)
-            return fail(error, "line " + quoted(text) + ": the port after the host is 1..65535");
+            return fail("line.port");
         for (const char c : host)
             if (c == ' ' || c == '/' || c == '?' || c == '@')
-                return fail(error, "line " + quoted(text) + ": " + quoted(host) + " is not a host name or address");
+                return fail("line.host", host);
         a.host = std::string(host);
         a.port = *port;
         return a;
@@ -59,7 +57,7 @@ std::optional<LineAddress> parseLine(std::string_view text, std::string& error) 
         const std::size_t q = rest.find('?');
         a.device = std::string(rest.substr(0, q));
         if (a.device.empty())
-            return fail(error, "line " + quoted(text) + ": no device after serial: (" + kForms + ")");
+            return fail("line.device");
         std::string_view query = q == std::string_view::npos ? std::string_view() : rest.substr(q + 1);
         while (!query.empty()) {
             const std::size_t amp = query.find('&');
@@ -71,7 +69,7 @@ std::optional<LineAddress> parseLine(std::string_view text, std::string& error) 
             const auto n = number(value);
             if (key == "baud") {
                 if (!n || *n < 1200 || *n > 4000000)
-                    return fail(error, "line " + quoted(text) + ": baud is a rate in bit/s, 1200..4000000");
+                    return fail("line.baud");
                 a.baud = *n;
             } else if (key == "parity") {
                 if (value == "none")
@@ -81,29 +79,38 @@ std::optional<LineAddress> parseLine(std::string_view text, std::string& error) 
                 else if (value == "odd")
                     a.parity = 'O';
                 else
-                    return fail(error, "line " + quoted(text) + ": parity is none, even or odd");
+                    return fail("line.parity");
             } else if (key == "stop_bits") {
                 if (!n || (*n != 1 && *n != 2))
-                    return fail(error, "line " + quoted(text) + ": stop_bits is 1 or 2");
+                    return fail("line.stop-bits");
                 a.stopBits = *n;
             } else if (key == "address") {
                 if (!n || *n < 1 || *n > 247)
-                    return fail(error, "line " + quoted(text) + ": address is a station address 1..247");
+                    return fail("line.address");
                 a.address = *n;
             } else {
-                return fail(error, "line " + quoted(text) + ": " + quoted(key) +
-                                       " is not a setting of a serial line (baud, parity, stop_bits, address)");
+                return fail("line.key", key);
             }
         }
         return a;
     }
-    return fail(error, "line " + quoted(text) + " is not " + kForms);
+    return fail("line.form");
 }
 
-std::string lineError(std::string_view text) {
-    std::string error;
-    return parseLine(text, error) ? std::string() : error;
+std::optional<LineAddress> parseLine(std::string_view text, std::string& error) {
+    Problem p;
+    const std::optional<LineAddress> a = parseLine(text, p);
+    if (!a)
+        error = p.text();
+    return a;
 }
+
+Problem lineProblem(std::string_view text) {
+    Problem p;
+    return parseLine(text, p) ? Problem() : p;
+}
+
+std::string lineError(std::string_view text) { return lineProblem(text).text(); }
 
 std::string lineEndpoint(const LineAddress& a) {
     if (a.kind == LineAddress::Kind::Serial)

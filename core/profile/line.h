@@ -10,6 +10,8 @@
 //                               (1|2), address.
 #pragma once
 
+#include "profile/problem.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,9 +30,15 @@ struct LineAddress {
     bool operator==(const LineAddress&) const = default;
 };
 
-// The address of `text`, or nullopt with `error` saying what is wrong.
+// The address of `text`, or nullopt with `problem` saying what is wrong (a
+// line.* id of problem.cpp's catalog, the value as its first argument: the
+// command line says it in its --lang, the desktop in the window's language).
+std::optional<LineAddress> parseLine(std::string_view text, Problem& problem);
+// The same with what is wrong in English.
 std::optional<LineAddress> parseLine(std::string_view text, std::string& error);
-// "" when `text` is a line, else what is wrong (the settings' check).
+// Nothing when `text` is a line, else what is wrong (the settings' check).
+Problem lineProblem(std::string_view text);
+// lineProblem in English, "" when `text` is a line.
 std::string lineError(std::string_view text);
 // The canonical text: tcp://HOST:PORT/UNIT, serial:DEVICE?baud=…&parity=…&address=…
 // (stop_bits only when 2).

@@ -1,5 +1,7 @@
 #include "profile/problem.h"
 
+#include "util/system_texts.h"
+
 #include <array>
 
 namespace k528::profile {
@@ -288,9 +290,40 @@ constexpr std::array kTexts = {
     util::CatalogText{"value.bool",
                       "значение «%1» — не true/false",
                       "value '%1' is not true/false"},
-    util::CatalogText{"value.line",
-                      "%1",
-                      "%1"}, // the link line's own check (line.h)
+    // a line= value (line.h); %1 the value as given
+    util::CatalogText{"line.form",
+                      "линия «%1» — не tcp://ХОСТ:ПОРТ/УСТРОЙСТВО и не serial:УСТРОЙСТВО?baud=115200&parity=none&address=1",
+                      "line '%1' is not tcp://HOST:PORT/UNIT or serial:DEVICE?baud=115200&parity=none&address=1"},
+    util::CatalogText{"line.unit",
+                      "линия «%1»: после «/» — адрес станции 1..247",
+                      "line '%1': the unit id after '/' is a station address 1..247"},
+    util::CatalogText{"line.host-port",
+                      "линия «%1»: после tcp:// нет ХОСТ:ПОРТ (tcp://ХОСТ:ПОРТ/УСТРОЙСТВО)",
+                      "line '%1': no HOST:PORT after tcp:// (tcp://HOST:PORT/UNIT)"},
+    util::CatalogText{"line.port",
+                      "линия «%1»: порт после хоста — 1..65535",
+                      "line '%1': the port after the host is 1..65535"},
+    util::CatalogText{"line.host",
+                      "линия «%1»: «%2» — не имя и не адрес хоста",
+                      "line '%1': '%2' is not a host name or address"},
+    util::CatalogText{"line.device",
+                      "линия «%1»: после serial: нет устройства (serial:УСТРОЙСТВО?baud=115200&parity=none&address=1)",
+                      "line '%1': no device after serial: (serial:DEVICE?baud=115200&parity=none&address=1)"},
+    util::CatalogText{"line.baud",
+                      "линия «%1»: baud — скорость в бит/с, 1200..4000000",
+                      "line '%1': baud is a rate in bit/s, 1200..4000000"},
+    util::CatalogText{"line.parity",
+                      "линия «%1»: parity — none, even или odd",
+                      "line '%1': parity is none, even or odd"},
+    util::CatalogText{"line.stop-bits",
+                      "линия «%1»: stop_bits — 1 или 2",
+                      "line '%1': stop_bits is 1 or 2"},
+    util::CatalogText{"line.address",
+                      "линия «%1»: address — адрес станции 1..247",
+                      "line '%1': address is a station address 1..247"},
+    util::CatalogText{"line.key",
+                      "линия «%1»: «%2» — не настройка последовательной линии (baud, parity, stop_bits, address)",
+                      "line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)"},
     // a tool's settings (tool.N.*)
     util::CatalogText{"tool.kind",
                       "«%1» — не вид инструмента (turning, facing, grooving, boring, drill, threading)",
@@ -417,6 +450,9 @@ std::string problemText(const Problem& p, bool russian) {
     std::vector<std::string> all = p.args;
     for (const Problem& w : p.within)
         all.push_back(problemText(w, russian));
+    // A file's or the system's reason (a machine file that cannot be read).
+    if (!problemTexts().find(p.id) && util::systemTexts().find(p.id))
+        return util::systemTexts().render(p.id, all, russian);
     return problemTexts().render(p.id, all, russian);
 }
 

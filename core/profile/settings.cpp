@@ -317,8 +317,7 @@ Problem simulationValueProblem(std::string_view key, std::string_view value) {
         if (const std::string item = englishItem(key); !item.empty())
             return englishTextProblem(item, value);
         if (key == "line")
-            if (std::string e = lineError(value); !e.empty())
-                return problem("value.line", {e});
+            return lineProblem(value);
         return {};
     }
     return {};

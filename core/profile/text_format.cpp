@@ -456,10 +456,27 @@ std::string writeMachineText(const MachineProfile& p) {
     return o.str();
 }
 
+namespace {
+
+Problem systemProblem(const util::Message& m) {
+    Problem p = problem(m.id, m.args);
+    for (const util::Message& w : m.within)
+        p.within.push_back(systemProblem(w));
+    return p;
+}
+
+} // namespace
+
 MachineProfile readMachineFile(const std::filesystem::path& path) {
-    std::string text, error, reason;
-    if (!util::readInputFile(path.string(), text, error, util::kMaxInputBytes, &reason))
-        throw FileError(path.string(), 0, problem("file.cannot-read", {reason}));
+    std::string text;
+    util::Message error;
+    if (!util::readInputFile(path.string(), text, error)) {
+        // Why (util/system_texts.h: problemText says it from that catalog);
+        // the path is the FileError's.
+        Problem p = problem("file.cannot-read");
+        p.within.push_back(systemProblem(error.within.front()));
+        throw FileError(path.string(), 0, std::move(p));
+    }
     return readMachineText(text, path.string());
 }
 

@@ -1,7 +1,6 @@
 #include "util/input_file.h"
 
 #include <cerrno>
-#include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -10,31 +9,25 @@ namespace k528::util {
 
 namespace {
 
-std::string kindOf(mode_t mode) {
+Message kindOf(mode_t mode) {
     if (S_ISDIR(mode))
-        return "a directory";
+        return message("io.kind.directory");
     if (S_ISCHR(mode))
-        return "a character device";
+        return message("io.kind.character-device");
     if (S_ISBLK(mode))
-        return "a block device";
+        return message("io.kind.block-device");
     if (S_ISFIFO(mode))
-        return "a FIFO (named pipe)";
+        return message("io.kind.fifo");
     if (S_ISSOCK(mode))
-        return "a socket";
-    return "not a regular file";
+        return message("io.kind.socket");
+    return message("io.kind.other");
 }
 
-std::string mib(std::size_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
-
-std::string tooLarge(std::size_t maxBytes) {
-    return "it is larger than " + mib(maxBytes) +
-           ", the most k528 reads (a K528-05 holds at most 99 programs of 999 frames, "
-           "about 3 MB of text)";
-}
+Message tooLarge(std::size_t maxBytes) { return message("io.too-large", {std::to_string(maxBytes >> 20)}); }
 
 // Reads fd to its end, at most maxBytes; false with `error` (the reason)
 // set otherwise.
-bool readAll(int fd, std::string& contents, std::string& error, std::size_t maxBytes,
+bool readAll(int fd, std::string& contents, Message& error, std::size_t maxBytes,
              std::size_t sizeHint) {
     std::string buf;
     try {
@@ -45,7 +38,7 @@ bool readAll(int fd, std::string& contents, std::string& error, std::size_t maxB
             if (n < 0) {
                 if (errno == EINTR)
                     continue;
-                error = std::strerror(errno);
+                error = systemError(errno);
                 return false;
             }
             if (n == 0)
@@ -57,7 +50,7 @@ bool readAll(int fd, std::string& contents, std::string& error, std::size_t maxB
             buf.append(chunk, static_cast<std::size_t>(n));
         }
     } catch (const std::bad_alloc&) {
-        error = "not enough memory";
+        error = message("io.no-memory");
         return false;
     }
     contents = std::move(buf);
@@ -66,26 +59,24 @@ bool readAll(int fd, std::string& contents, std::string& error, std::size_t maxB
 
 } // namespace
 
-bool readInputFile(const std::string& path, std::string& contents, std::string& error,
-                   std::size_t maxBytes, std::string* reason) {
-    std::string why;
-    const char* verb = "cannot read ";
+bool readInputFile(const std::string& path, std::string& contents, Message& error, std::size_t maxBytes) {
+    Message why;
+    const char* verb = "io.cannot-read";
     // O_NONBLOCK: opening a FIFO must not wait for a writer before it is refused.
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     struct stat st {};
     if (fd < 0) {
         const int e = errno;
         if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) {
-            why = "it is a directory";
+            why = message("io.directory");
         } else {
-            verb = "cannot open ";
-            why = std::strerror(e);
+            verb = "io.cannot-open";
+            why = systemError(e);
         }
     } else if (::fstat(fd, &st) != 0) {
-        why = std::strerror(errno);
+        why = systemError(errno);
     } else if (!S_ISREG(st.st_mode)) {
-        why = "it is " + kindOf(st.st_mode) +
-              ", not a regular file (k528 reads program and machine files only)";
+        why = message("io.not-regular", {}, {kindOf(st.st_mode)});
     } else if (static_cast<unsigned long long>(st.st_size) > maxBytes) {
         why = tooLarge(maxBytes);
     } else {
@@ -98,18 +89,23 @@ bool readInputFile(const std::string& path, std::string& contents, std::string& 
     }
     if (fd >= 0)
         ::close(fd);
-    error = verb + path + ": " + why;
-    if (reason)
-        *reason = why;
+    error = message(verb, {path}, {std::move(why)});
     return false;
 }
 
-bool readInputStream(std::FILE* in, const std::string& name, std::string& contents,
-                     std::string& error, std::size_t maxBytes) {
-    std::string why;
+bool readInputFile(const std::string& path, std::string& contents, std::string& error, std::size_t maxBytes) {
+    Message m;
+    if (readInputFile(path, contents, m, maxBytes))
+        return true;
+    error = systemText(m, false);
+    return false;
+}
+
+bool readInputStream(std::FILE* in, std::string& contents, Message& error, std::size_t maxBytes) {
+    Message why;
     if (readAll(::fileno(in), contents, why, maxBytes, 0))
         return true;
-    error = "cannot read " + name + ": " + why;
+    error = message("io.cannot-read-stdin", {}, {std::move(why)});
     return false;
 }
 

@@ -10,6 +10,8 @@
 // pipe or a terminal, is read up to the same limit. (docs/cli-decisions.md)
 #pragma once
 
+#include "util/system_texts.h"
+
 #include <cstddef>
 #include <cstdio>
 #include <string>
@@ -19,15 +21,17 @@ namespace k528::util {
 inline constexpr std::size_t kMaxInputBytes = std::size_t{16} << 20;
 
 // Reads the regular file `path` into `contents`. On failure returns false and
-// sets `error` to "cannot open|read <path>: <why>" (the reason in words, with
-// the system's errno text where there is one) and, if given, `reason` to the
-// <why> alone. `contents` is left unchanged then.
+// sets `error` to io.cannot-open or io.cannot-read of system_texts.h with the
+// path and, as its one `within`, why (a text of the catalog or the system's
+// reason, systemError). `contents` is left unchanged then.
+bool readInputFile(const std::string& path, std::string& contents, Message& error,
+                   std::size_t maxBytes = kMaxInputBytes);
+// The same with the error in English: "cannot open|read <path>: <why>".
 bool readInputFile(const std::string& path, std::string& contents, std::string& error,
-                   std::size_t maxBytes = kMaxInputBytes, std::string* reason = nullptr);
+                   std::size_t maxBytes = kMaxInputBytes);
 
-// Reads the stream `in` (standard input) to its end, named `name` in errors,
-// up to `maxBytes`.
-bool readInputStream(std::FILE* in, const std::string& name, std::string& contents,
-                     std::string& error, std::size_t maxBytes = kMaxInputBytes);
+// Reads standard input (`in`) to its end, up to `maxBytes`; the error is
+// io.cannot-read-stdin with why.
+bool readInputStream(std::FILE* in, std::string& contents, Message& error, std::size_t maxBytes = kMaxInputBytes);
 
 } // namespace k528::util

@@ -107,7 +107,7 @@ private slots:
         QVERIFY(QFileInfo::exists("/dev/full"));
         const auto r = runK528ToFile(args, "/dev/full");
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("k528: cannot write standard output: No space left on device"),
+        QVERIFY2(r.err.contains(QStringLiteral("k528: не удаётся записать стандартный вывод: на устройстве не осталось места")),
                  qPrintable(r.err));
         // The same command to a real file succeeds (or reports its errors: 1).
         const auto ok = runK528ToFile(args, dir.filePath("out.txt"));
@@ -138,13 +138,13 @@ private slots:
         };
         auto r = call("/dev/zero");
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("/dev/zero") && r.err.contains("a character device, not a regular file"),
+        QVERIFY2(r.err.contains("/dev/zero") && r.err.contains(QStringLiteral("это символьное устройство, а не обычный файл")),
                  qPrintable(r.err));
         const QString fifo = dir.filePath("fifo");
         QCOMPARE(::mkfifo(fifo.toLocal8Bit().constData(), 0600), 0);
         r = call(fifo);
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("a FIFO (named pipe), not a regular file"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("это FIFO (именованный канал), а не обычный файл")), qPrintable(r.err));
         // 17 MiB (sparse): beyond the 16 MiB limit, refused before it is read.
         const QString big = dir.filePath("big.k528");
         QFile f(big);
@@ -153,7 +153,7 @@ private slots:
         f.close();
         r = call(big);
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("larger than 16 MiB") && r.err.contains("99 programs of 999 frames"),
+        QVERIFY2(r.err.contains(QStringLiteral("он больше 16 МиБ")) && r.err.contains(QStringLiteral("99 программ по 999 кадров")),
                  qPrintable(r.err));
         if (command != "panel") {
             QCOMPARE(call(dir.path()).exitCode, 2);
@@ -163,7 +163,7 @@ private slots:
         QByteArray huge(17 << 20, 'M');
         const auto r = runK528({"check", "-"}, huge);
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("cannot read standard input: it is larger than 16 MiB"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("не удаётся прочитать стандартный ввод: он больше 16 МиБ")), qPrintable(r.err));
     }
 
     // Running out of memory ends in a message and exit 2, not an

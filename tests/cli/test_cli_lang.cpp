@@ -6,12 +6,16 @@
 #include "cli_runner.h"
 #include "cli_texts.h"
 #include "db/db_test_util.h"
+#include "profile/problem.h"
+#include "util/system_texts.h"
 
 #include <QDir>
 #include <QFile>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <cerrno>
+#include <cstring>
 #include <set>
 
 using k528::testing::hasEnglishSentence;
@@ -85,6 +89,45 @@ private slots:
             QVERIFY2(!hasCyrillic(enOwn), qPrintable(id + ": " + en));
             QVERIFY2(placeholders(ru) == placeholders(en), qPrintable(id + ": " + ru + " | " + en));
         }
+    }
+
+    // Core's texts the command line passes on — a file that cannot be read or
+    // written and the system's reason, an MQTT address (util/system_texts.h),
+    // a line= value (profile's line.* problems) — have both languages with
+    // the same arguments, and a reason of the system the C library would say
+    // in English only is said from the catalog: every errno of it in Russian.
+    void coreTextsHaveBothLanguages() {
+        std::vector<k528::util::CatalogText> texts(k528::util::systemTexts().texts().begin(),
+                                                   k528::util::systemTexts().texts().end());
+        QVERIFY(texts.size() > 40);
+        int lines = 0;
+        for (const k528::util::CatalogText& t : k528::profile::problemTexts().texts())
+            if (t.id.starts_with("line.")) {
+                texts.push_back(t);
+                ++lines;
+            }
+        QVERIFY(lines >= 10);
+        std::set<std::string_view> ids;
+        for (const k528::util::CatalogText& t : texts) {
+            const QString id = fromView(t.id), ru = fromView(t.ru), en = fromView(t.en);
+            QVERIFY2(ids.insert(t.id).second, qPrintable(id + ": twice"));
+            QVERIFY2(!ru.isEmpty() && !en.isEmpty() && ru != en, qPrintable(id));
+            QVERIFY2(hasCyrillic(ru) && !hasEnglishSentence(ru), qPrintable(id + ": " + ru));
+            QVERIFY2(!hasCyrillic(en), qPrintable(id + ": " + en));
+            QVERIFY2(placeholders(ru) == placeholders(en), qPrintable(id + ": " + ru + " | " + en));
+        }
+        // The English of a system's reason is the C library's own (the
+        // command line said strerror() before, and says it with --lang en).
+        for (const int e : {ENOENT, EACCES, ENOSPC, EROFS, EISDIR, ENOTDIR, EDQUOT, EIO, ELOOP}) {
+            const k528::util::Message m = k528::util::systemError(e);
+            QVERIFY2(m.id.starts_with("errno.E"), m.id.c_str());
+            QCOMPARE(QString::fromStdString(k528::util::systemText(m, false)), QString::fromUtf8(std::strerror(e)));
+            QVERIFY(hasCyrillic(QString::fromStdString(k528::util::systemText(m, true))));
+        }
+        // One the catalog does not name: its number and the C library's words, quoted.
+        const k528::util::Message other = k528::util::systemError(ENOEXEC);
+        QCOMPARE(QString::fromStdString(k528::util::systemText(other, true)),
+                 QStringLiteral("системная ошибка %1 («%2»)").arg(ENOEXEC).arg(QString::fromUtf8(std::strerror(ENOEXEC))));
     }
 
     // Each id the commands say is in the catalog (else the id itself would be
@@ -280,6 +323,88 @@ private slots:
         QVERIFY2(r.out.contains("\"online\":false") && r.out.contains("\"state\":\"offline\""), qPrintable(r.out));
         r = runK528({"shop", "status", "grinder-205", "--json"});
         QVERIFY2(r.out.contains("\"online\":false") && r.out.contains("\"state\":\"offline\""), qPrintable(r.out));
+    }
+
+    // What goes wrong with a file, a line= value, a --param, an --as, a
+    // --blank or an --mqtt address: said in the command's language, Russian
+    // without an English sentence, English without a Russian word.
+    void failures_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("stdoutFile"); // standard output to this file, else a pipe
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("ru");
+        QTest::addColumn<QString>("en");
+        const auto row = [](const char* name, QStringList args, const char* out, int code, const char* ru, const char* en) {
+            QTest::newRow(name) << args << QString::fromUtf8(out) << code << QString::fromUtf8(ru) << QString::fromUtf8(en);
+        };
+        const QString shaft = QStringLiteral(K528_SOURCE_DIR "/resources/samples/lathe-shaft.k528");
+        row("check /nonexistent", {"check", "/nonexistent"}, "", 2,
+            "k528: не удаётся открыть /nonexistent: нет такого файла или папки",
+            "k528: cannot open /nonexistent: No such file or directory");
+        row("check /dev/zero", {"check", "/dev/zero"}, "", 2,
+            "k528: не удаётся прочитать /dev/zero: это символьное устройство, а не обычный файл "
+            "(k528 читает только файлы программ и станков)",
+            "k528: cannot read /dev/zero: it is a character device, not a regular file "
+            "(k528 reads program and machine files only)");
+        row("run --trace /dev/full", {"run", "--trace", "/dev/full", shaft}, "/dev/null", 2,
+            "k528: файл трассы: не удаётся записать /dev/full: на устройстве не осталось места",
+            "k528: the trace: cannot write /dev/full: No space left on device");
+        row("path > /dev/full", {"path", shaft}, "/dev/full", 2,
+            "k528: не удаётся записать стандартный вывод: на устройстве не осталось места",
+            "k528: cannot write standard output: No space left on device");
+        row("run --profile /dev/zero", {"run", "--profile", "/dev/zero", shaft}, "", 2,
+            "k528: /dev/zero: файл нельзя прочитать: это символьное устройство, а не обычный файл",
+            "k528: /dev/zero: cannot read the file: it is a character device, not a regular file");
+        row("db export --out /dev/full", {"db", "export", "grinder-205", "--out", "/dev/full"}, "", 2,
+            "k528: не удаётся записать /dev/full: на устройстве не осталось места",
+            "k528: cannot write /dev/full: No space left on device");
+        row("db set line=", {"db", "set", "grinder-205", "line=tcp://10.0.0.5:0/1"}, "", 1,
+            "линия «tcp://10.0.0.5:0/1»: порт после хоста — 1..65535",
+            "line 'tcp://10.0.0.5:0/1': the port after the host is 1..65535");
+        row("db set line= serial", {"db", "set", "grinder-205", "line=serial:/dev/ttyS0?speed=9600"}, "", 1,
+            "линия «serial:/dev/ttyS0?speed=9600»: «speed» — не настройка последовательной линии",
+            "line 'serial:/dev/ttyS0?speed=9600': 'speed' is not a setting of a serial line");
+        row("run --param", {"run", "--param", "1=5", shaft}, "", 2,
+            "k528: --param 1=5: C001 = 5 вне диапазона 0...1 константы «НАЛИЧ.ОСИ»",
+            "k528: --param 1=5: C001 = 5 is outside the range 0...1 of");
+        row("db import --as", {"db", "import", "--as", "1 x", shaft}, "", 2,
+            "k528: --as 1 x: в имени «1 x» есть символ, кроме a-z",
+            "k528: --as 1 x: ");
+        row("check --blank", {"check", "--profile", "training-lathe", "--blank", "UCG,x", shaft}, "", 2,
+            "k528: --blank UCG,x: UCG: после «UCG,» ожидался тип N",
+            "k528: --blank UCG,x: UCG: expected the type N after UCG,");
+#ifdef K528_CLI_LANG_SHOP
+        row("shop publish --mqtt", {"shop", "publish", "--mqtt", "http://127.0.0.1:1883"}, "", 2,
+            "k528: --mqtt: «http://127.0.0.1:1883» — не mqtt://ХОСТ[:ПОРТ] (MQTT без шифрования; TLS не поддерживается)",
+            "k528: --mqtt: 'http://127.0.0.1:1883' is not mqtt://HOST[:PORT] (plain MQTT; TLS is not supported)");
+        row("shop publish --mqtt port", {"shop", "publish", "--mqtt", "mqtt://127.0.0.1:0"}, "", 2,
+            "k528: --mqtt: «mqtt://127.0.0.1:0»: порт — 1..65535", "k528: --mqtt: 'mqtt://127.0.0.1:0': the port is 1..65535");
+        row("shop publish --mqtt host", {"shop", "publish", "--mqtt", "mqtt://:1883"}, "", 2,
+            "k528: --mqtt: «mqtt://:1883»: после mqtt:// нет имени или адреса хоста",
+            "k528: --mqtt: 'mqtt://:1883': no host name or address after mqtt://");
+#endif
+    }
+    // (After shopStatus: a machine has a line, so `shop publish` checks --mqtt.)
+    void failures() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, stdoutFile);
+        QFETCH(int, exitCode);
+        QFETCH(QString, ru);
+        QFETCH(QString, en);
+        QCOMPARE(runK528({"db", "init"}).exitCode, 0);
+        const auto call = [&](const QStringList& a) {
+            return stdoutFile.isEmpty() ? runK528(a) : runK528ToFile(a, stdoutFile);
+        };
+        CliResult r = call(args);
+        QCOMPARE(r.exitCode, exitCode);
+        // A finding's label stays English (`  error simulation line: …`, as check's).
+        QString said = r.err;
+        said.remove(QRegularExpression(QStringLiteral("(?m)^\\s+error [\\w. ]+:")));
+        QVERIFY2(r.err.contains(ru) && !hasEnglishSentence(said), qPrintable(r.err));
+        r = call(args + QStringList{"--lang", "en"});
+        QCOMPARE(r.exitCode, exitCode);
+        QVERIFY2(r.err.contains(en) && !hasCyrillic(r.err.remove(QRegularExpression(QStringLiteral("«[^«»]*»")))),
+                 qPrintable(r.err));
     }
 };
 

@@ -337,8 +337,8 @@ private slots:
         // A trace that cannot be written: exit 2 with the reason.
         const auto bad = runK528({"run", "--no-home", "--trace", f.dir.filePath("no/such/t.csv"), p});
         QCOMPARE(bad.exitCode, 2);
-        QVERIFY2(bad.err.contains("the trace: cannot write " + f.dir.filePath("no/such/t.csv")) &&
-                     bad.err.contains("No such file or directory"),
+        QVERIFY2(bad.err.contains(QStringLiteral("файл трассы: не удаётся записать ") + f.dir.filePath("no/such/t.csv")) &&
+                     bad.err.contains(QStringLiteral("нет такого файла или папки")),
                  qPrintable(bad.err));
     }
 
@@ -349,7 +349,7 @@ private slots:
         const QString p = f.write("move.k528", "%L1\nN1 G1 Z-20 FZ6000\nN2 G0 X40\n");
         auto r = runK528({"run", "--no-home", "--trace", "/dev/full", p});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("cannot write /dev/full: No space left on device"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("не удаётся записать /dev/full: на устройстве не осталось места")), qPrintable(r.err));
         const QString csv = f.dir.filePath("t.csv");
         {
             QFile old(csv);
@@ -364,9 +364,9 @@ private slots:
         QCOMPARE(QDir(f.dir.path()).entryList({"*.k528-*"}, QDir::Hidden | QDir::Files).size(), 0);
         r = runK528ToFile({"path", "--json", p}, "/dev/full");
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("cannot write standard output: No space left on device"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("не удаётся записать стандартный вывод: на устройстве не осталось места")), qPrintable(r.err));
         r = runK528ToFile({"path", p}, "/dev/full");
-        QVERIFY2(r.err.contains("No space left on device"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("на устройстве не осталось места")), qPrintable(r.err));
     }
 };
 

@@ -320,11 +320,11 @@ private slots:
 
         r = db({"export", "grinder-205", "--out", dir_.path()});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("cannot write " + dir_.path() + ": it is a directory"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("не удаётся записать ") + dir_.path() + QStringLiteral(": это папка")), qPrintable(r.err));
         QVERIFY(!r.err.contains("Success"));
         r = db({"export", "grinder-205", "--out", "/dev/full"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("cannot write /dev/full: No space left on device"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("не удаётся записать /dev/full: на устройстве не осталось места")), qPrintable(r.err));
         QVERIFY(QFileInfo("/dev/full").exists() && !QFileInfo("/dev/full").isFile());
     }
 
@@ -337,7 +337,7 @@ private slots:
                                         QStringList{"db", "show", "grinder-205"}}) {
             const auto r = runK528ToFile(args + QStringList{"--db", db_}, "/dev/full");
             QVERIFY2(r.exitCode == 2, qPrintable(args.join(' ')));
-            QVERIFY2(r.err.contains("cannot write standard output: No space left on device"),
+            QVERIFY2(r.err.contains(QStringLiteral("не удаётся записать стандартный вывод: на устройстве не осталось места")),
                      qPrintable(r.err));
         }
     }

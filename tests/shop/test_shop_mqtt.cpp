@@ -195,7 +195,7 @@ private slots:
     void badBrokersAreClear() {
         CliResult r = k528({"shop", "publish", "--mqtt", "http://127.0.0.1:1883"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("is not mqtt://HOST[:PORT]"), qPrintable(r.err));
+        QVERIFY2(r.err.contains(QStringLiteral("» — не mqtt://ХОСТ[:ПОРТ]")), qPrintable(r.err));
         r = k528({"shop", "publish", "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains("needs --mqtt"), qPrintable(r.err));

@@ -330,6 +330,33 @@ private slots:
         }
     }
 
+    // A broker's address that is not one is refused in the window's language
+    // (core's mqtt.url-* texts through the window's translations).
+    void badBrokerInTheWindowsLanguage() {
+#ifndef K528_STUDIO_MQTT
+        QSKIP("built without MQTT");
+#endif
+        QVERIFY(setLanguage("ru"));
+        {
+            MainWindow w(loadMachine("training-lathe"));
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.workspaces()->activate("shop"));
+            ShopView* shop = w.shopView();
+            auto* state = shop->findChild<QLabel*>("shop.publishState");
+            QVERIFY(state);
+            shop->brokerBox()->setText("http://127.0.0.1:1883");
+            shop->publishBox()->setChecked(true);
+            QVERIFY(!shop->publishing());
+            QCOMPARE(state->toolTip(), QStringLiteral("«http://127.0.0.1:1883» — не mqtt://ХОСТ[:ПОРТ] (MQTT без "
+                                                      "шифрования; TLS не поддерживается)"));
+            shop->brokerBox()->setText("mqtt://127.0.0.1:99999");
+            shop->publishBox()->setChecked(true);
+            QCOMPARE(state->toolTip(), QStringLiteral("«mqtt://127.0.0.1:99999»: порт — 1..65535"));
+        }
+        QVERIFY(setLanguage("en"));
+    }
+
     // Publish to MQTT: the same topics as k528 shop publish, into a broker
     // started here; the poller goes on while the page is hidden.
     void publishesToMqtt() {

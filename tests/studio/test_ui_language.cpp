@@ -49,7 +49,9 @@
 #include "proveout/proveout.h"
 #include "plc/description_texts.h"
 #include "profile/csv.h"
+#include "profile/line.h"
 #include "profile/problem.h"
+#include "util/system_texts.h"
 #include "profile/text_format.h"
 #include "profile/tools.h"
 #include "db/notes.h"
@@ -904,7 +906,15 @@ QStringList fileSyntax() {
             "format, name, title", "UTF-8", "U+FEFF", "a-z", "LF", "true/false", "cat", "%MESSAGES",
             "turning, facing, grooving, boring, drill, threading", "+z+x, -z+x, +z-x, -z-x",
             "tool.<позиция 1..8>.<ключ>", "tool.%1.kind", "tool.1.kind", "tool.1.width_mm", "x.kv",
-            "training-lathe", "grinder-205", "number;axis;name;value;unit"};
+            "training-lathe", "grinder-205", "number;axis;name;value;unit",
+            // a line= value (profile/line.h) and an MQTT broker's address, as typed
+            // (also as the walker reads it, '&' being a mnemonic's mark)
+            "tcp://ХОСТ:ПОРТ/УСТРОЙСТВО", "serial:УСТРОЙСТВО?baud=115200&parity=none&address=1",
+            "serial:УСТРОЙСТВО?baud=115200parity=noneaddress=1", "tcp://", "serial:",
+            "baud, parity, stop_bits, address", "baud", "parity", "none", "even", "odd", "stop_bits", "address",
+            "mqtt://ХОСТ[:ПОРТ]", "mqtt://",
+            // the kinds of file a name may be and a protocol it is not
+            "FIFO", "TLS"};
 }
 
 QString writeFile(const QTemporaryDir& dir, const QString& name, const std::string& text) {
@@ -955,6 +965,36 @@ void TestUiLanguage::russianCoreTexts() {
     }, &walker, QStringLiteral("core problem %1"));
     if (QTest::currentTestFailed())
         return;
+    // A file that cannot be read or written, the system's reason, an MQTT
+    // broker's address (util/system_texts.h): the same Russian as core's
+    // catalog (what `k528 --lang ru` prints).
+    checkCatalog(util::systemTexts(), studio::hasSystemText, [&](std::string_view id) {
+        const util::Message m = util::message(std::string(id), {"/dev/full", "12"});
+        return std::pair(studio::systemText(m), util::systemText(m, true));
+    }, &walker, QStringLiteral("system text %1"));
+    if (QTest::currentTestFailed())
+        return;
+    QCOMPARE(studio::systemText(util::message("io.cannot-write", {"/dev/full"}, {util::systemError(ENOSPC)})),
+             QStringLiteral("не удаётся записать /dev/full: на устройстве не осталось места"));
+    // A line= value of the machine's settings (the controller dialog, the
+    // database's refusal of a revision): core's line.* problems in Russian.
+    QCOMPARE(studio::problemText(profile::lineProblem("tcp://10.0.0.5:0/1")),
+             QStringLiteral("линия «tcp://10.0.0.5:0/1»: порт после хоста — 1..65535"));
+    walker.check("a line= value", studio::problemText(profile::lineProblem("serial:/dev/ttyS0?baud=1")));
+    // A machine file that is a device: the file's problem with the system's reason.
+    try {
+        profile::readMachineFile("/dev/zero");
+        QFAIL("/dev/zero read as a machine file");
+    } catch (const std::exception& e) {
+        QCOMPARE(studio::coreErrorText(e), QStringLiteral("/dev/zero: файл нельзя прочитать: это символьное устройство, а не "
+                                                          "обычный файл (k528 читает только файлы программ и станков)"));
+    }
+    {
+        std::string text;
+        QString error;
+        QVERIFY(!studio::readTextFile(dir_.filePath("absent.k528m"), text, error));
+        QCOMPARE(error, dir_.filePath("absent.k528m") + QStringLiteral(" не читается: нет такого файла или папки"));
+    }
     for (const db::NoteText& t : db::noteTexts()) {
         QVERIFY2(studio::hasNoteText(t.id), t.id.data());
         // As stored (English), read back and said in the window's language.

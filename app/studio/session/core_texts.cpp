@@ -19,7 +19,6 @@
 #include "util/input_file.h"
 
 #include <QCoreApplication>
-#include <QFileInfo>
 
 #include <optional>
 #include <string>
@@ -122,7 +121,17 @@ const TranslatedText kProblems[] = {
         {"value.integer", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "value '%1' is not a whole number")},
         {"value.number", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "value '%1' is not a number")},
         {"value.bool", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "value '%1' is not true/false")},
-        {"value.line", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "%1")},
+        {"line.form", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1' is not tcp://HOST:PORT/UNIT or serial:DEVICE?baud=115200&parity=none&address=1")},
+        {"line.unit", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': the unit id after '/' is a station address 1..247")},
+        {"line.host-port", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': no HOST:PORT after tcp:// (tcp://HOST:PORT/UNIT)")},
+        {"line.port", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': the port after the host is 1..65535")},
+        {"line.host", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': '%2' is not a host name or address")},
+        {"line.device", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': no device after serial: (serial:DEVICE?baud=115200&parity=none&address=1)")},
+        {"line.baud", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': baud is a rate in bit/s, 1200..4000000")},
+        {"line.parity", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': parity is none, even or odd")},
+        {"line.stop-bits", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': stop_bits is 1 or 2")},
+        {"line.address", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': address is a station address 1..247")},
+        {"line.key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)")},
         {"tool.kind", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "'%1' is not a tool kind (turning, facing, grooving, boring, drill, threading)")},
         {"tool.value", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "%1")},
         {"tool.orientation", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "'%1' is not one of +z+x, -z+x, +z-x, -z-x")},
@@ -307,7 +316,71 @@ const TranslatedText kRefusals[] = {
         {"zero-offset-range", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the zero offset would leave the 32-bit range")},
 };
 
+// util/system_texts.h's catalog: a file that cannot be read or written, the
+// system's reason, an MQTT broker's address that is not one.
+const TranslatedText kSystem[] = {
+        {"io.cannot-open", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "cannot open %1: %2")},
+        {"io.cannot-read", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "cannot read %1: %2")},
+        {"io.cannot-write", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "cannot write %1: %2")},
+        {"io.cannot-read-stdin", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "cannot read standard input: %1")},
+        {"io.cannot-write-stdout", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "cannot write standard output: %1")},
+        {"io.directory", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "it is a directory")},
+        {"io.not-regular", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "it is %1, not a regular file (k528 reads program and machine files only)")},
+        {"io.kind.directory", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a directory")},
+        {"io.kind.character-device", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a character device")},
+        {"io.kind.block-device", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a block device")},
+        {"io.kind.fifo", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a FIFO (named pipe)")},
+        {"io.kind.socket", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a socket")},
+        {"io.kind.other", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a special file")},
+        {"io.too-large", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "it is larger than %1 MiB, the most k528 reads (a K528-05 holds at most 99 programs of 999 frames, about 3 MB of text)")},
+        {"io.no-memory", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "not enough memory")},
+        {"io.write-directory", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "it is a directory; give a file name")},
+        {"io.write-kind", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "it is not a regular file, a FIFO or a character device")},
+        {"io.create-in-folder", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "cannot create a file in its folder %1: %2")},
+        {"io.not-open", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "it is not open")},
+        {"io.write-failed", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "a write failed")},
+        {"mqtt.url-scheme", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "'%1' is not mqtt://HOST[:PORT] (plain MQTT; TLS is not supported)")},
+        {"mqtt.url-port", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "'%1': the port is 1..65535")},
+        {"mqtt.url-host", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "'%1': no host name or address after mqtt://")},
+        {"errno.EPERM", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Operation not permitted")},
+        {"errno.ENOENT", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "No such file or directory")},
+        {"errno.EINTR", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Interrupted system call")},
+        {"errno.EIO", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Input/output error")},
+        {"errno.ENXIO", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "No such device or address")},
+        {"errno.EBADF", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Bad file descriptor")},
+        {"errno.EAGAIN", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Resource temporarily unavailable")},
+        {"errno.ENOMEM", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Cannot allocate memory")},
+        {"errno.EACCES", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Permission denied")},
+        {"errno.EBUSY", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Device or resource busy")},
+        {"errno.EEXIST", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "File exists")},
+        {"errno.EXDEV", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Invalid cross-device link")},
+        {"errno.ENODEV", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "No such device")},
+        {"errno.ENOTDIR", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Not a directory")},
+        {"errno.EISDIR", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Is a directory")},
+        {"errno.EINVAL", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Invalid argument")},
+        {"errno.ENFILE", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Too many open files in system")},
+        {"errno.EMFILE", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Too many open files")},
+        {"errno.ETXTBSY", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Text file busy")},
+        {"errno.EFBIG", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "File too large")},
+        {"errno.ENOSPC", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "No space left on device")},
+        {"errno.ESPIPE", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Illegal seek")},
+        {"errno.EROFS", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Read-only file system")},
+        {"errno.EMLINK", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Too many links")},
+        {"errno.EPIPE", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Broken pipe")},
+        {"errno.ENAMETOOLONG", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "File name too long")},
+        {"errno.ELOOP", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Too many levels of symbolic links")},
+        {"errno.ENOTEMPTY", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Directory not empty")},
+        {"errno.EDQUOT", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Disk quota exceeded")},
+        {"errno.ESTALE", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Stale file handle")},
+        {"errno.EOVERFLOW", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Value too large for defined data type")},
+        {"errno.ENOTSUP", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Operation not supported")},
+        {"errno.ECONNREFUSED", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Connection refused")},
+        {"errno.ETIMEDOUT", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "Connection timed out")},
+        {"errno.other", QT_TRANSLATE_NOOP("k528::studio::SystemTexts", "%2 (error %1)")},
+};
+
 const TranslatedTexts kProblemTexts("k528::studio::CoreTexts", kProblems);
+const TranslatedTexts kSystemTexts("k528::studio::SystemTexts", kSystem);
 const TranslatedTexts kNoteTexts("k528::studio::RevisionNotes", kNotes);
 const TranslatedTexts kFindingTexts("k528::studio::ProveoutTexts", kFindings);
 const TranslatedTexts kDescriptionTexts("k528::studio::DescriptionTexts", kDescriptions);
@@ -318,6 +391,17 @@ QString fromStd(const std::string& s) { return QString::fromUtf8(s.data(), stati
 } // namespace
 
 bool hasProblemText(std::string_view id) { return kProblemTexts.has(id); }
+
+bool hasSystemText(std::string_view id) { return kSystemTexts.has(id); }
+
+QString systemText(const util::Message& m) {
+    std::vector<std::string> args = m.args;
+    for (const util::Message& w : m.within)
+        args.push_back(systemText(w).toStdString());
+    if (const std::optional<QString> text = kSystemTexts.text(m.id, args))
+        return *text;
+    return fromStd(util::systemText(m, false)); // an id without a translation: core's English
+}
 
 bool hasNoteText(std::string_view id) { return kNoteTexts.has(id); }
 
@@ -394,6 +478,8 @@ QString problemText(const profile::Problem& p) {
         args.push_back(problemText(w).toStdString());
     if (const std::optional<QString> text = kProblemTexts.text(p.id, args))
         return *text;
+    if (const std::optional<QString> text = kSystemTexts.text(p.id, args))
+        return *text; // a machine file's reason why it cannot be read
     return fromStd(p.text()); // an id without a translation: core's English
 }
 
@@ -439,25 +525,12 @@ QString coreErrorText(const std::exception& e) {
 }
 
 bool readTextFile(const QString& path, std::string& text, QString& error) {
-    const QFileInfo info(path);
-    QString why;
-    if (!info.exists())
-        why = QCoreApplication::translate("k528::studio::CoreTexts", "there is no such file");
-    else if (info.isDir())
-        why = QCoreApplication::translate("k528::studio::CoreTexts", "it is a folder");
-    else if (!info.isFile())
-        why = QCoreApplication::translate("k528::studio::CoreTexts", "it is not a regular file (a device, a pipe or a socket)");
-    else if (!info.isReadable())
-        why = QCoreApplication::translate("k528::studio::CoreTexts", "this user may not read it");
-    else if (static_cast<std::size_t>(info.size()) > util::kMaxInputBytes)
-        why = QCoreApplication::translate("k528::studio::CoreTexts", "it is larger than 16 MiB");
-    else {
-        std::string err, reason;
-        if (util::readInputFile(path.toStdString(), text, err, util::kMaxInputBytes, &reason))
-            return true;
-        why = fromStd(reason); // the system's own words (the C library's, in the window's language)
-    }
-    error = QCoreApplication::translate("k528::studio::CoreTexts", "%1 cannot be read: %2").arg(path, why);
+    util::Message m;
+    if (util::readInputFile(path.toStdString(), text, m))
+        return true;
+    // Core's reason (util/system_texts.h) in the window's language, the system's too.
+    error = QCoreApplication::translate("k528::studio::CoreTexts", "%1 cannot be read: %2")
+                .arg(path, m.within.empty() ? systemText(m) : systemText(m.within.front()));
     return false;
 }
 

@@ -25,6 +25,9 @@ struct OpResult;
 namespace k528::proveout {
 struct Finding;
 } // namespace k528::proveout
+namespace k528::util {
+struct Message;
+} // namespace k528::util
 
 namespace k528::studio {
 
@@ -38,9 +41,14 @@ QString fileErrorText(const profile::FileError& e);
 // database's refusal of an item), a database's (databaseErrorText), else
 // core's own words.
 QString coreErrorText(const std::exception& e);
+// A file that cannot be read or written, the system's reason, an MQTT
+// broker's address that is not one (util/system_texts.h's ids), e.g.
+// «не удаётся записать /dev/full: на устройстве не осталось места».
+QString systemText(const util::Message& m);
+bool hasSystemText(std::string_view id);
 // Reads the text file at `path` as core does (util::readInputFile: a
 // regular file of at most 16 MiB); false with `error` saying why in the
-// window's language («нет такого файла», «это папка», …).
+// window's language («нет такого файла или папки», «это папка», …).
 bool readTextFile(const QString& path, std::string& text, QString& error);
 // A revision's note in the window's language: one core or the desktop
 // wrote (db/notes.h: «встроенный профиль training-lathe (первый запуск)»),

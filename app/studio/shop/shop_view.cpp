@@ -5,6 +5,7 @@
 #include "controller/link_texts.h"
 #include "database/database_ui.h"
 #include "session/catalog_texts.h"
+#include "session/core_texts.h"
 #include "main_window.h"
 #include "session/shop_database.h"
 #include "db/state_times.h"
@@ -555,11 +556,16 @@ void ShopView::setPublishing(bool on) {
         return;
     const QString url = broker_->text().trimmed();
     QSettings().setValue("shop/broker", url);
-    std::string error;
+    util::Message error;
     if (!mqtt::parseUrl(url.toStdString(), error)) {
         publishKind_ = 3;
-        setPublishState(QString(), QString::fromStdString(error));
+        setPublishState(QString(), systemText(error)); // in the window's language
+        // Unchecked quietly, as when the broker cannot be reached: toggled()
+        // would come back to the switching off above and clear why.
+        const QSignalBlocker quiet(publish_);
         publish_->setChecked(false);
+        QSettings().setValue("shop/publish", false);
+        emit publishingChanged(false);
         return;
     }
     auto p = std::make_shared<shop::MqttPublisher>();
