@@ -202,6 +202,46 @@ constexpr std::array kTexts = {
     CatalogText{"opt.blank-profile",
                 "--blank нужен --profile (станок, на котором программа проверяется)",
                 "--blank needs --profile (the machine the program is proved on)"},
+    // `db calc`'s report: the head line, the current value beside each result,
+    // the steps' heading and the remarks on the accelerations' formulas.
+    CatalogText{"calc.head", "Ось %1, дискрета %2 мм", "Axis %1, discrete %2 mm"},
+    CatalogText{"calc.head.diameter", ", индикация диаметра", ", diameter display"},
+    CatalogText{"calc.head.machine", ", данные станка %1", ", data of machine %1"},
+    CatalogText{"calc.as-now", "  (как сейчас)", "  (as now)"},
+    CatalogText{"calc.now", "  (сейчас %1)", "  (now %1)"},
+    CatalogText{"calc.how", "Как получено:", "How:"},
+    CatalogText{"calc.remark.1",
+                "%1 по формуле 1: напечатанная формула 0.8533·Vmax/T даёт %2, что K528 Studio (единица 25600·A/Kd "
+                "формул 2 и 3) читает как %3 м/с², вдвое больше %4 м/с², которые описывает разгон; согласованное "
+                "значение — %5. ",
+                "%1 by formula 1: the printed formula 0.8533·Vmax/T gives %2, which K528 Studio (unit 25600·A/Kd of "
+                "formulas 2 and 3) reads as %3 m/s², twice the %4 m/s² the run-up describes; the consistent value "
+                "is %5. "},
+    CatalogText{"calc.remark.2",
+                "%1 по формуле 2: напечатанная 3.556e-6·Vmax²/S даёт %2, точный коэффициент 3.5556e-6 даёт %3. ",
+                "%1 by formula 2: printed 3.556e-6·Vmax²/S gives %2, the exact coefficient 3.5556e-6 gives %3. "},
+    CatalogText{"calc.remark.3", "%1 по формуле 3: 25600·A/Kd = %2.", "%1 by formula 3: 25600·A/Kd = %2."},
+    CatalogText{"calc.remark.printed", "Введено напечатанное (--as-printed).", "Entered as printed (--as-printed)."},
+    CatalogText{"calc.remark.consistent", "Введено согласованное значение (--as-printed вводит напечатанное).",
+                "Entered: the consistent value (--as-printed enters the printed one)."},
+    CatalogText{"calc.remark.formula1",
+                "Формула 1 в напечатанном виде даёт вдвое большее ускорение, чем формулы 2 и 3, для того же "
+                "движения (значение 2000 оси X из приложения «Ж» здесь — 0.078 м/с²); выбор объясняет "
+                "docs/machine-constants.md.",
+                "Formula 1 as printed gives twice the acceleration of formulas 2 and 3 for the same motion "
+                "(the X value 2000 of appendix «Ж» is 0.078 m/s² here); docs/machine-constants.md explains the choice."},
+    CatalogText{"calc.not-number", "%1: «%2» — не число", "%1: '%2' is not a number"},
+    CatalogText{"calc.out-of-range", "%1 %2 вне диапазона: допустимо %3", "%1 %2 is out of range: give %3"},
+    CatalogText{"calc.accel-form", "%1 %2: ожидалось runup:ММ_В_МИН:МС, braking:ММ_В_МИН:ММ или value:М_НА_С2",
+                "%1 %2: expected runup:MM_PER_MIN:MS, braking:MM_PER_MIN:MM or value:M_PER_S2"},
+    CatalogText{"calc.accel-number", "%1 %2: «%3» — не число", "%1 %2: '%3' is not a number"},
+    CatalogText{"calc.machine-data", "--machine %1: %2 (задайте физические данные параметрами)",
+                "--machine %1: %2 (give the physical data as options)"},
+    CatalogText{"unit.mm", "мм", "mm"},
+    CatalogText{"unit.lines", "штрихов", "lines"},
+    CatalogText{"unit.volts", "В", "V"},
+    CatalogText{"unit.mm-per-min", "мм/мин", "mm/min"},
+    CatalogText{"unit.kv", "(м/мин)/мм", "(m/min)/mm"},
     CatalogText{"run.trace-error", "файл трассы: %1", "the trace: %1"},
     CatalogText{"opt.file-blank", "заготовка файла: %1", "the file's blank: %1"},
     CatalogText{"format.usage",

@@ -9,6 +9,7 @@
 #include "db/location.h"
 #include "db_cli.h"
 #include "profile/calculator.h"
+#include "profile/error_text.h"
 #include "profile/settings.h"
 #include "profile/text_format.h"
 #include "util/json.h"
@@ -64,7 +65,7 @@ bool parseAccel(const std::string& option, const std::string& text, calc::AccelS
     for (std::size_t i = 1; i < parts.size(); ++i) {
         const auto v = parseNumber(parts[i]);
         if (!v) {
-            error = option + " " + text + ": '" + parts[i] + "' is not a number";
+            error = cliText("calc.accel-number", {option, text, parts[i]});
             return false;
         }
         nums.push_back(*v);
@@ -81,29 +82,29 @@ bool parseAccel(const std::string& option, const std::string& text, calc::AccelS
         a.by = calc::AccelSpec::By::Value;
         a.aMPerS2 = nums[0];
     } else {
-        error = option + " " + text +
-                ": expected runup:MM_PER_MIN:MS, braking:MM_PER_MIN:MM or value:M_PER_S2";
+        error = cliText("calc.accel-form", {option, text});
         return false;
     }
     return true;
 }
 
-std::string remark(const calc::AccelResult& r, const char* which, bool asPrinted) {
-    std::string s = std::string(which) + " by formula " + std::to_string(r.formula) + ": ";
+// The remark on an acceleration's formula; `param` names it (C022 or C023).
+std::string remark(const calc::AccelResult& r, int param, bool asPrinted, bool russian) {
+    const cat::CParamDef& def = cat::cParam(param);
+    const std::string which(russian ? def.name : def.nameEn);
+    std::string s;
     if (r.formula == 1)
-        s += "the printed formula 0.8533·Vmax/T gives " + std::to_string(r.printedValue) +
-             ", which K528 Studio (unit 25600·A/Kd of formulas 2 and 3) reads as " +
-             fixed(r.printedMPerS2, 4) + " m/s², twice the " + fixed(r.describedMPerS2, 4) +
-             " m/s² the run-up describes; the consistent value is " +
-             std::to_string(r.consistentValue) + ". ";
+        s = cliText("calc.remark.1",
+                    {which, std::to_string(r.printedValue), fixed(r.printedMPerS2, 4), fixed(r.describedMPerS2, 4),
+                     std::to_string(r.consistentValue)},
+                    russian);
     else if (r.formula == 2)
-        s += "printed 3.556e-6·Vmax²/S gives " + std::to_string(r.printedValue) +
-             ", the exact coefficient 3.5556e-6 gives " + std::to_string(r.consistentValue) + ". ";
+        s = cliText("calc.remark.2", {which, std::to_string(r.printedValue), std::to_string(r.consistentValue)},
+                    russian);
     else
-        s += "25600·A/Kd = " + std::to_string(r.consistentValue) + ".";
+        s = cliText("calc.remark.3", {which, std::to_string(r.consistentValue)}, russian);
     if (r.formula != 3)
-        s += asPrinted ? "Entered as printed (--as-printed)."
-                       : "Entered: the consistent value (--as-printed enters the printed one).";
+        s += cliText(asPrinted ? "calc.remark.printed" : "calc.remark.consistent", {}, russian);
     return s;
 }
 
@@ -128,17 +129,17 @@ struct OptionRange {
     std::string_view unit;
 };
 constexpr OptionRange kOptionRanges[] = {
-    {"--screw-lead", "x.screw_lead_mm", 0, 0, "mm"},
+    {"--screw-lead", "x.screw_lead_mm", 0, 0, "unit.mm"},
     {"--gear", "x.gear_ratio", 0, 0, ""},
-    {"--encoder-lines", "x.encoder_lines", 0, 0, "lines"},
-    {"--drive-volts", "x.drive_max_volts", 0, 0, "V"},
-    {"--drive-speed", "x.drive_max_speed_mm_per_min", 0, 0, "mm/min"},
-    {"--kv", "x.kv", 0, 0, "(m/min)/mm"},
-    {"--feed", "", 0, 200000, "mm/min"},
-    {"--rapid", "", 0, 200000, "mm/min"},
-    {"--auto-rapid", "", 0, 200000, "mm/min"},
-    {"--home-start", "", 0, 200000, "mm/min"},
-    {"--home-creep", "", 0, 200000, "mm/min"},
+    {"--encoder-lines", "x.encoder_lines", 0, 0, "unit.lines"},
+    {"--drive-volts", "x.drive_max_volts", 0, 0, "unit.volts"},
+    {"--drive-speed", "x.drive_max_speed_mm_per_min", 0, 0, "unit.mm-per-min"},
+    {"--kv", "x.kv", 0, 0, "unit.kv"},
+    {"--feed", "", 0, 200000, "unit.mm-per-min"},
+    {"--rapid", "", 0, 200000, "unit.mm-per-min"},
+    {"--auto-rapid", "", 0, 200000, "unit.mm-per-min"},
+    {"--home-start", "", 0, 200000, "unit.mm-per-min"},
+    {"--home-creep", "", 0, 200000, "unit.mm-per-min"},
     {"--dac-max", "", 0, 2047, ""},
     {"--dac-limit-percent", "", 0, 100, "%"},
 };
@@ -155,7 +156,8 @@ std::string calcNumber(std::string_view option, const std::string& text, double&
     if (range) {
         lo = range->min;
         hi = range->max;
-        unit = std::string(range->unit);
+        // A unit's id of the catalog (a per cent sign is said as it is).
+        unit = range->unit.starts_with("unit.") ? cliText(range->unit) : std::string(range->unit);
         if (const profile::SimulationKey* k =
                 range->key.empty() ? nullptr : profile::findSimulationKey(range->key)) {
             lo = k->min;
@@ -176,11 +178,11 @@ std::string calcNumber(std::string_view option, const std::string& text, double&
     const auto [ptr, ec] = std::from_chars(b, e, v, std::chars_format::general);
     const bool whole = b != e && ptr == e;
     if (whole && ec == std::errc::result_out_of_range)
-        return std::string(option) + " " + text + " is out of range: give " + rangeText;
+        return cliText("calc.out-of-range", {std::string(option), text, rangeText});
     if (!whole || ec != std::errc() || !std::isfinite(v))
-        return std::string(option) + ": '" + text + "' is not a number";
+        return cliText("calc.not-number", {std::string(option), text});
     if (v < lo || v > hi)
-        return std::string(option) + " " + text + " is out of range: give " + rangeText;
+        return cliText("calc.out-of-range", {std::string(option), text, rangeText});
     target = v;
     return {};
 }
@@ -243,10 +245,9 @@ int runDbCalc(std::span<const std::string> argv) {
                 d.accel2 = a2;
             }
         } catch (const profile::SettingError& e) {
-            return calcFail("--machine " + *m + ": " + e.what() +
-                            " (give the physical data as options)");
+            return calcFail(cliText("calc.machine-data", {*m, profile::errorText(e, russianCommandLine())}));
         } catch (const profile::FileError& e) {
-            return calcFail(e.what());
+            return calcFail(profile::errorText(e, russianCommandLine()));
         } catch (const db::Error& e) {
             return calcFail(e.text(russianCommandLine() ? db::Lang::Ru : db::Lang::En));
         }
@@ -305,18 +306,19 @@ int runDbCalc(std::span<const std::string> argv) {
     try {
         r = calc::designAxis(d);
     } catch (const calc::CalcError& e) {
-        return calcFail(std::string("calc: ") + e.what(), ExitInputErrors);
+        return calcFail("calc: " + profile::errorText(e, russianCommandLine()), ExitInputErrors);
     }
 
+    // The report is read by a technologist: in --lang; --json keeps English
+    // (the same in both languages, as every --json).
+    const bool russian = russianCommandLine() && !a.has("--json");
     std::vector<std::string> remarks;
-    remarks.push_back(remark(r.accel1, "ACCELERATION 1", asPrinted));
+    remarks.push_back(remark(r.accel1, cc::kAccel1, asPrinted, russian));
     if (r.accel2)
-        remarks.push_back(remark(*r.accel2, "ACCELERATION 2", asPrinted));
+        remarks.push_back(remark(*r.accel2, cc::kAccel2, asPrinted, russian));
     // The remark on formula 1 is printed always: it is what a technologist
     // checking appendix Ж's figures needs to know.
-    remarks.push_back("Formula 1 as printed gives twice the acceleration of formulas 2 and 3 "
-                      "for the same motion (appendix Ж's X value 2000 is 0.078 m/s² here); "
-                      "docs/machine-constants.md explains the choice.");
+    remarks.push_back(cliText("calc.remark.formula1", {}, russian));
 
     if (a.has("--json")) {
         Json root;
@@ -347,7 +349,7 @@ int runDbCalc(std::span<const std::string> argv) {
             root["accel2"] = accelJson(*r.accel2);
         Json steps = Json::array();
         for (const auto& s : r.steps)
-            steps.push_back(s);
+            steps.push_back(calc::stepText(s, axis, false));
         root["steps"] = std::move(steps);
         Json rem = Json::array();
         for (const auto& s : remarks)
@@ -358,23 +360,22 @@ int runDbCalc(std::span<const std::string> argv) {
         return ExitOk;
     }
 
-    std::string s = "Axis " + std::string(cat::axisName(axis)) + ", discrete " +
-                    fmt(d.scale.discreteMm()) + " mm" +
-                    (d.scale.diameter ? ", diameter display" : "") +
-                    (machine ? ", data of machine " + machine->name : "") + "\n\n";
+    std::string s = cliText("calc.head", {std::string(cat::axisName(axis)), fmt(d.scale.discreteMm())}) +
+                    (d.scale.diameter ? cliText("calc.head.diameter") : "") +
+                    (machine ? cliText("calc.head.machine", {machine->name}) : "") + "\n\n";
     for (const auto& [x, v] : r.values) {
         const int n = cat::axisParam(x, axis);
         const auto& def = cat::cParam(n);
         s += def.key() + "  " + pad(std::string(def.name), 20) + " " + pad(std::to_string(v), 8);
         if (machine) {
             const auto cur = machine->cValue(n);
-            s += cur == v ? "  (as now)" : "  (now " + std::to_string(cur) + ")";
+            s += cur == v ? cliText("calc.as-now") : cliText("calc.now", {std::to_string(cur)});
         }
         s += "\n";
     }
-    s += "\nHow:\n";
+    s += "\n" + cliText("calc.how") + "\n";
     for (const auto& step : r.steps)
-        s += "  " + step + "\n";
+        s += "  " + calc::stepText(step, axis, russian) + "\n";
     s += "\n";
     for (const auto& rm : remarks)
         s += rm + "\n";

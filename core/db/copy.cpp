@@ -14,7 +14,7 @@ namespace {
 constexpr std::string_view kTables[] = {
     "meta",          "c_definitions", "machines",       "revisions",         "c_values",
     "r_values",      "messages",      "plc_messages",   "settings",          "program_revisions",
-    "changes",       "audit",         "message_runs",   "message_history",   "program_states",
+    "changes",       "item_history", "audit",         "message_runs",   "message_history",   "program_states",
     "transfers",     "transfer_items", "training_attempts", "state_times",
 };
 
@@ -39,6 +39,8 @@ std::string_view orderOf(std::string_view table) {
         return "machine_id, position";
     if (table == "changes")
         return "machine_id, key, revision DESC, seq";
+    if (table == "item_history")
+        return "machine_id, key";
     if (table == "transfer_items")
         return "transfer_id, seq";
     if (table == "state_times")

@@ -356,7 +356,7 @@ std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
                         "TO k528_operator;"
                         "GRANT USAGE ON ALL SEQUENCES IN SCHEMA " + schema + " TO k528_operator;"
                         "GRANT INSERT, UPDATE, DELETE ON machines, c_values, r_values, messages, "
-                        "plc_messages, settings, revisions, changes, program_revisions, "
+                        "plc_messages, settings, revisions, changes, item_history, program_revisions, "
                         "program_states, audit TO k528_technologist;");
             tx.commit();
         } catch (const Error& e) {

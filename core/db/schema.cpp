@@ -408,6 +408,67 @@ BEGIN
 END $$;
 )SQL";
 
+// Version 9: the whole history of each item (machine and key) in one row
+// of its own, kept beside `changes` by the transaction that writes a
+// revision (each change appended to its item's row). The history of one
+// item — the constants dock's, `k528 db show --history` — is then one row
+// read by its key and sent as one value: on PostgreSQL each of the
+// hundreds of rows of `changes` cost the server a scan step and a row
+// formatted and sent, more than the rest of the call together. `entries`:
+// each change's revision, seq, author, at, section, label, before and
+// after, in that order, each written as its length in bytes, ':' and its
+// bytes, or '-' for none (sql_history.cpp writes and reads it). The rows
+// of the changes made before are built here from them (in any order: the
+// reader orders them by revision and seq). docs/database.md: Speed.
+constexpr std::string_view kSchemaV9 = R"SQL(
+CREATE TABLE item_history (
+    machine_id INTEGER NOT NULL REFERENCES machines(id) ON DELETE CASCADE,
+    key        TEXT NOT NULL,
+    entries    TEXT NOT NULL,
+    PRIMARY KEY (machine_id, key)
+) WITHOUT ROWID;
+)SQL";
+
+constexpr std::string_view kSchemaV9Sqlite = R"SQL(
+INSERT INTO item_history (machine_id, key, entries)
+SELECT machine_id, key, group_concat(
+    length(CAST(revision AS TEXT)) || ':' || revision ||
+    length(CAST(seq AS TEXT)) || ':' || seq ||
+    length(CAST(author AS BLOB)) || ':' || author ||
+    length(CAST(at AS BLOB)) || ':' || at ||
+    length(CAST(section AS BLOB)) || ':' || section ||
+    length(CAST(label AS BLOB)) || ':' || label ||
+    CASE WHEN before IS NULL THEN '-' ELSE length(CAST(before AS BLOB)) || ':' || before END ||
+    CASE WHEN after IS NULL THEN '-' ELSE length(CAST(after AS BLOB)) || ':' || after END, '')
+FROM changes GROUP BY machine_id, key;
+)SQL";
+
+// The roles of `k528 db roles`, when set up before: the new table's rights
+// as the other tables of the history have them.
+constexpr std::string_view kSchemaV9Postgres = R"SQL(
+INSERT INTO item_history (machine_id, key, entries)
+SELECT machine_id, key, string_agg(
+    octet_length(revision::text) || ':' || revision ||
+    octet_length(seq::text) || ':' || seq ||
+    octet_length(author) || ':' || author ||
+    octet_length(at) || ':' || at ||
+    octet_length(section) || ':' || section ||
+    octet_length(label) || ':' || label ||
+    CASE WHEN before IS NULL THEN '-' ELSE octet_length(before) || ':' || before END ||
+    CASE WHEN after IS NULL THEN '-' ELSE octet_length(after) || ':' || after END, ''
+    ORDER BY revision, seq)
+FROM changes GROUP BY machine_id, key;
+DO $$
+BEGIN
+    IF EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'k528_viewer') THEN
+        GRANT SELECT ON item_history TO k528_viewer;
+    END IF;
+    IF EXISTS (SELECT 1 FROM pg_roles WHERE rolname = 'k528_technologist') THEN
+        GRANT INSERT, UPDATE, DELETE ON item_history TO k528_technologist;
+    END IF;
+END $$;
+)SQL";
+
 const Migration kMigrations[] = {
     {1,
      "machines, C-parameter definitions and values, R presets, programs with revisions, "
@@ -423,6 +484,7 @@ const Migration kMigrations[] = {
     {7, "each change keeps its revision's author and time: the history without a join",
      kSchemaV7, {}, kSchemaV7Postgres},
     {8, "the history of one item read from its index alone", {}, {}, kSchemaV8Postgres},
+    {9, "the whole history of each item in one row", kSchemaV9, kSchemaV9Sqlite, kSchemaV9Postgres},
 };
 
 bool wordAt(std::string_view s, std::size_t i, std::string_view word) {

@@ -3,8 +3,141 @@
 #include "db/sha256.h"
 #include "db/sql_store.h"
 
+#include <algorithm>
+#include <charconv>
+#include <map>
 
 namespace k528::db {
+
+namespace {
+
+// An entry of item_history (schema version 9): revision, seq, author, at,
+// section, label, before, after, each as its length in bytes, ':' and its
+// bytes, or '-' for none — what the schema's migration builds with SQL from
+// the changes written before.
+void appendField(std::string& out, std::string_view v) {
+    char digits[24];
+    const auto [end, ec] = std::to_chars(digits, digits + sizeof digits, v.size());
+    out.append(digits, end);
+    out += ':';
+    out.append(v);
+}
+
+void appendOptField(std::string& out, const std::optional<std::string>& v) {
+    if (v)
+        appendField(out, std::string_view(*v));
+    else
+        out += '-';
+}
+
+std::string itemEntry(int revision, int seq, std::string_view author, std::string_view at,
+                      std::string_view section, std::string_view label,
+                      const std::optional<std::string>& before,
+                      const std::optional<std::string>& after) {
+    std::string out;
+    appendField(out, std::to_string(revision));
+    appendField(out, std::to_string(seq));
+    appendField(out, author);
+    appendField(out, at);
+    appendField(out, section);
+    appendField(out, label);
+    appendOptField(out, before);
+    appendOptField(out, after);
+    return out;
+}
+
+// The next field of `s` (consumed): false when `s` does not begin with one.
+bool readField(std::string_view& s, std::optional<std::string_view>& field) {
+    if (!s.empty() && s.front() == '-') {
+        field.reset();
+        s.remove_prefix(1);
+        return true;
+    }
+    std::size_t n = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), n);
+    const std::size_t at = static_cast<std::size_t>(end - s.data()) + 1; // after the ':'
+    if (ec != std::errc() || end == s.data() + s.size() || *end != ':' || s.size() - at < n)
+        return false;
+    field = s.substr(at, n);
+    s.remove_prefix(at + n);
+    return true;
+}
+
+bool readInt(std::string_view& s, int& v) {
+    std::optional<std::string_view> f;
+    if (!readField(s, f) || !f)
+        return false;
+    const auto [end, ec] = std::from_chars(f->data(), f->data() + f->size(), v);
+    return ec == std::errc() && end == f->data() + f->size();
+}
+
+bool readText(std::string_view& s, std::string& v) {
+    std::optional<std::string_view> f;
+    if (!readField(s, f) || !f)
+        return false;
+    v.assign(*f);
+    return true;
+}
+
+bool readOptText(std::string_view& s, std::optional<std::string>& v) {
+    std::optional<std::string_view> f;
+    if (!readField(s, f))
+        return false;
+    if (f)
+        v.emplace(*f);
+    else
+        v.reset();
+    return true;
+}
+
+// An entry of item_history read, with its place in its revision.
+struct ItemEntry {
+    int seq = 0;
+    ChangeRow row;
+};
+
+// An item's entries, the oldest first (by revision and seq); nullopt when
+// they are not in their form. Written in that order, one revision after the
+// other, or in any order by the migration that built them.
+std::optional<std::vector<ItemEntry>> readEntries(std::string_view s, const std::string& key) {
+    std::vector<ItemEntry> entries;
+    while (!s.empty()) {
+        ItemEntry e;
+        if (!readInt(s, e.row.revision) || !readInt(s, e.seq) || !readText(s, e.row.author) ||
+            !readText(s, e.row.at) || !readText(s, e.row.section) || !readText(s, e.row.label) ||
+            !readOptText(s, e.row.before) || !readOptText(s, e.row.after))
+            return std::nullopt;
+        e.row.key = key;
+        entries.push_back(std::move(e));
+    }
+    const auto oldestFirst = [](const ItemEntry& a, const ItemEntry& b) {
+        return a.row.revision != b.row.revision ? a.row.revision < b.row.revision : a.seq < b.seq;
+    };
+    if (!std::is_sorted(entries.begin(), entries.end(), oldestFirst))
+        std::stable_sort(entries.begin(), entries.end(), oldestFirst);
+    return entries;
+}
+
+// The same in the history's order: the newest revision first, a revision's
+// changes in their order.
+std::optional<std::vector<ChangeRow>> itemEntries(std::string_view s, const std::string& key) {
+    auto entries = readEntries(s, key);
+    if (!entries)
+        return std::nullopt;
+    std::vector<ChangeRow> out;
+    out.reserve(entries->size());
+    for (std::size_t end = entries->size(); end > 0;) {
+        std::size_t begin = end - 1;
+        while (begin > 0 && (*entries)[begin - 1].row.revision == (*entries)[end - 1].row.revision)
+            --begin;
+        for (std::size_t i = begin; i < end; ++i)
+            out.push_back(std::move((*entries)[i].row));
+        end = begin;
+    }
+    return out;
+}
+
+} // namespace
 
 void SqlStore::insertRevision(std::int64_t id, int revision, const std::string& author,
                                  const std::string& at, const std::string& summary,
@@ -41,6 +174,15 @@ void SqlStore::insertChange(std::int64_t id, int revision, int seq, const std::s
     if (changesKeepAuthors())
         q.bind(9, author).bind(10, at);
     connection().runLater(q);
+    if (!itemHistoryKept())
+        return;
+    auto& h = query("INSERT INTO item_history (machine_id, key, entries) VALUES (?1, ?2, ?3) ON "
+                    "CONFLICT (machine_id, key) DO UPDATE SET entries = item_history.entries || "
+                    "excluded.entries");
+    h.bind(1, id).bind(2, c.key).bind(3, itemEntry(revision, seq, author, at,
+                                                   profile::diffSectionName(c.section), c.label,
+                                                   c.before, c.after));
+    connection().runLater(h);
 }
 
 std::vector<ChangeRow> SqlStore::changesUpTo(std::int64_t id, int revision) {
@@ -179,11 +321,26 @@ std::optional<std::vector<ChangeRow>> SqlStore::historyNamed(std::string_view na
         return history(row->id,
                        limitRevisions > 0 ? row->info.revision - limitRevisions + 1 : 1, key);
     }
+    const bool limited = limitRevisions > 0;
+    if (key && !limited && itemHistoryKept()) {
+        // The item's whole history: its one row, one value sent (schema
+        // version 9) rather than a row of changes for each entry.
+        auto& q = query("SELECT h.entries FROM item_history h WHERE h.machine_id = (SELECT id FROM "
+                        "machines WHERE name = ?1) AND h.key = ?2");
+        q.bind(1, name).bind(2, *key);
+        // No row: no such machine, or no such item. A row not in its form
+        // (SQL that altered it; checkIntegrity names it): the history is
+        // still there in the changes. The caller then reads those.
+        if (!q.step())
+            return std::nullopt;
+        const std::string entries = q.text(0);
+        q.reset();
+        return itemEntries(entries, *key);
+    }
     // The machine's row and its changes in one statement.
     static const std::string kTexts[2][2] = {
         {historyByNameText(false, false), historyByNameText(false, true)},
         {historyByNameText(true, false), historyByNameText(true, true)}};
-    const bool limited = limitRevisions > 0;
     auto& q = query(kTexts[key ? 1 : 0][limited ? 1 : 0]);
     q.bind(1, name);
     int next = 2;
@@ -245,6 +402,38 @@ std::string SqlStore::checkRows() {
             add("machine " + q.text(0) + " revision " + std::to_string(q.i32(1)) + ": " +
                 std::to_string(q.i64(2)) +
                 " of its changes do not name the revision's author and time");
+    }
+    if (itemHistoryKept()) {
+        // Each item's row of item_history holds its changes, no more, no
+        // fewer, as they are: SQL that changed one and not the other would
+        // show a history that is not the revisions'.
+        std::map<std::pair<std::string, std::string>, std::string> expected;
+        auto& c = query("SELECT m.name, c.key, c.revision, c.seq, c.author, c.at, c.section, "
+                        "c.label, c.before, c.after FROM changes c JOIN machines m ON m.id = "
+                        "c.machine_id ORDER BY c.machine_id, c.key, c.revision, c.seq");
+        while (c.step())
+            expected[{c.text(0), c.text(1)}] += itemEntry(
+                c.i32(2), c.i32(3), c.text(4), c.text(5), c.text(6), c.text(7), c.optText(8),
+                c.optText(9));
+        auto& h = query("SELECT m.name, h.key, h.entries FROM item_history h JOIN machines m ON "
+                        "m.id = h.machine_id ORDER BY m.name, h.key");
+        while (h.step()) {
+            const std::string name = h.text(0), key = h.text(1);
+            std::string kept;
+            if (const auto entries = readEntries(h.text(2), key))
+                for (const ItemEntry& e : *entries)
+                    kept += itemEntry(e.row.revision, e.seq, e.row.author, e.row.at,
+                                      e.row.section, e.row.label, e.row.before, e.row.after);
+            const auto it = expected.find({name, key});
+            if (it == expected.end() || it->second != kept)
+                add("machine " + name + ": the history of " + key +
+                    " in item_history is not that of its changes");
+            if (it != expected.end())
+                expected.erase(it);
+        }
+        for (const auto& [item, entries] : expected)
+            add("machine " + item.first + ": the history of " + item.second +
+                " is missing from item_history");
     }
     auto& r = query("SELECT m.name, m.revision, (SELECT max(r.revision) FROM revisions r WHERE "
                     "r.machine_id = m.id), (SELECT count(*) FROM revisions r WHERE r.machine_id = "

@@ -74,6 +74,9 @@ protected:
     // (schema version 7); an older database read as it is (read-only, or
     // opened with the older migrations) has them in its revisions only.
     bool changesKeepAuthors() const { return report_.version >= 7; }
+    // Whether each item's whole history is kept in one row of item_history
+    // too (schema version 9).
+    bool itemHistoryKept() const { return report_.version >= 9; }
     // "machine NAME in PATH", for messages about stored rows.
     std::string where(const MachineRow& row) const;
     // Runs the schema's steps above `from` up to the last of `migrations`

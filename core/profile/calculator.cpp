@@ -211,23 +211,53 @@ AccelResult accel(const AccelSpec& a, const units::AxisScale& s) {
     return {};
 }
 
-std::string describe(const AccelSpec& a, const AccelResult& r) {
-    std::string s;
+// An acceleration's step: how it was given, A, the formula as printed and
+// the consistent value, and the value entered.
+Step accelStep(int param, const AccelSpec& a, const AccelResult& r, std::int64_t entered) {
+    Step s;
+    s.param = param;
     switch (a.by) {
     case AccelSpec::By::RunUp:
-        s = "run-up 0 -> " + fmt(a.vmaxMmPerMin) + " mm/min in " + fmt(a.runUpMs) + " ms";
+        s.id = "accel.run-up";
+        s.args = {fmt(a.vmaxMmPerMin), fmt(a.runUpMs)};
         break;
     case AccelSpec::By::Braking:
-        s = "braking " + fmt(a.vmaxMmPerMin) + " mm/min -> 0 in " + fmt(a.brakingMm) + " mm";
+        s.id = "accel.braking";
+        s.args = {fmt(a.vmaxMmPerMin), fmt(a.brakingMm)};
         break;
     case AccelSpec::By::Value:
-        s = "A = " + fmt(a.aMPerS2) + " m/s²";
+        s.id = "accel.value";
+        s.args = {fmt(a.aMPerS2)};
         break;
     }
-    s += ": A = " + fmt(r.describedMPerS2) + " m/s², formula " + std::to_string(r.formula) +
-         " as printed " + fmt(r.printedRaw) + ", 25600·A/Kd = " + fmt(r.consistentRaw);
+    for (std::string v : {fmt(r.describedMPerS2), std::to_string(r.formula), fmt(r.printedRaw),
+                          fmt(r.consistentRaw), std::to_string(entered)})
+        s.args.push_back(std::move(v));
     return s;
 }
+
+// The steps as the technologist reads them (`k528 db calc`); %1 is the
+// constant's panel name, the rest the step's arguments.
+constexpr util::CatalogText kStepTexts[] = {
+    {"ratio", "L/N: %2 мм на оборот винта = %3 дискрет; %4 об. двигателя x %5 штрихов x 4 = %6 импульсов -> %7/%8",
+     "L/N: %2 mm per screw rev = %3 discretes; %4 motor rev x %5 lines x 4 = %6 pulses -> %7/%8"},
+    {"ratio.nearest",
+     "L/N: %2 мм на оборот винта = %3 дискрет; %4 об. двигателя x %5 штрихов x 4 = %6 импульсов -> %7/%8 "
+     "(ближайшее, %9 ppm)",
+     "L/N: %2 mm per screw rev = %3 discretes; %4 motor rev x %5 lines x 4 = %6 pulses -> %7/%8 (nearest, %9 ppm)"},
+    {"accel.run-up", "%1: разгон 0 -> %2 мм/мин за %3 мс: A = %4 м/с², формула %5 по напечатанному %6, 25600·A/Kd = %7 -> %8",
+     "%1: run-up 0 -> %2 mm/min in %3 ms: A = %4 m/s², formula %5 as printed %6, 25600·A/Kd = %7 -> %8"},
+    {"accel.braking",
+     "%1: торможение %2 мм/мин -> 0 на %3 мм: A = %4 м/с², формула %5 по напечатанному %6, 25600·A/Kd = %7 -> %8",
+     "%1: braking %2 mm/min -> 0 in %3 mm: A = %4 m/s², formula %5 as printed %6, 25600·A/Kd = %7 -> %8"},
+    {"accel.value", "%1: A = %2 м/с²: A = %3 м/с², формула %4 по напечатанному %5, 25600·A/Kd = %6 -> %7",
+     "%1: A = %2 m/s²: A = %3 m/s², formula %4 as printed %5, 25600·A/Kd = %6 -> %7"},
+    {"speed-gain", "%1 = 262 x Kd %2 x %3 В / %4 м/мин = %5", "%1 = 262 x Kd %2 x %3 V / %4 m/min = %5"},
+    {"error-gain", "%1 = 26.2 x Kd %2 x Kv %3 x %4 В / %5 м/мин = %6",
+     "%1 = 26.2 x Kd %2 x Kv %3 x %4 V / %5 m/min = %6"},
+    {"dac-limit", "%1 = %2 x (1 + %3 %) = %4", "%1 = %2 x (1 + %3 %) = %4"},
+    {"feed", "%1: %2 мм/мин = %3 x 10 дискрет/мин", "%1: %2 mm/min = %3 x 10 discretes/min"},
+};
 
 } // namespace
 
@@ -242,25 +272,24 @@ AxisConstants designAxis(const AxisDesign& d) {
     out.ratio = encoderRatio(d.screwLeadMm, d.gearRatio, d.encoderLines, s);
     out.values[cc::kEncoderL] = out.ratio.l;
     out.values[cc::kEncoderN] = out.ratio.n;
-    out.steps.push_back(
-        "L/N: " + fmt(d.screwLeadMm) +
-        " mm per screw rev = " + fmt(d.screwLeadMm * static_cast<double>(s.discretesPerMm())) +
-        " discretes; " + fmt(d.gearRatio) + " motor rev x " + std::to_string(d.encoderLines) +
-        " lines x 4 = " + fmt(d.gearRatio * 4.0 * static_cast<double>(d.encoderLines)) +
-        " pulses -> " + std::to_string(out.ratio.l) + "/" + std::to_string(out.ratio.n) +
-        (out.ratio.exact ? "" : " (nearest, " + fmt(out.ratio.errorPpm) + " ppm)"));
+    Step ratio{out.ratio.exact ? "ratio" : "ratio.nearest", 0,
+               {fmt(d.screwLeadMm), fmt(d.screwLeadMm * static_cast<double>(s.discretesPerMm())),
+                fmt(d.gearRatio), std::to_string(d.encoderLines),
+                fmt(d.gearRatio * 4.0 * static_cast<double>(d.encoderLines)), std::to_string(out.ratio.l),
+                std::to_string(out.ratio.n)}};
+    if (!out.ratio.exact)
+        ratio.args.push_back(fmt(out.ratio.errorPpm));
+    out.steps.push_back(std::move(ratio));
 
     out.accel1 = accel(d.accel1, s);
     out.values[cc::kAccel1] =
         d.accel1.asPrinted ? out.accel1.printedValue : out.accel1.consistentValue;
-    out.steps.push_back("ACCELERATION 1: " + describe(d.accel1, out.accel1) + " -> " +
-                        std::to_string(out.values[cc::kAccel1]));
+    out.steps.push_back(accelStep(cc::kAccel1, d.accel1, out.accel1, out.values[cc::kAccel1]));
     if (d.accel2) {
         out.accel2 = accel(*d.accel2, s);
         out.values[cc::kAccel2] =
             d.accel2->asPrinted ? out.accel2->printedValue : out.accel2->consistentValue;
-        out.steps.push_back("ACCELERATION 2: " + describe(*d.accel2, *out.accel2) + " -> " +
-                            std::to_string(out.values[cc::kAccel2]));
+        out.steps.push_back(accelStep(cc::kAccel2, *d.accel2, *out.accel2, out.values[cc::kAccel2]));
     } else {
         out.values[cc::kAccel2] = 0;
     }
@@ -268,18 +297,16 @@ AxisConstants designAxis(const AxisDesign& d) {
     const double vmaxMPerMin = d.driveMaxSpeedMmPerMin / 1000.0;
     out.values[cc::kKs] = speedGain(d.driveMaxVolts, vmaxMPerMin, s);
     out.values[cc::kKe] = errorGain(d.kv, d.driveMaxVolts, vmaxMPerMin, s);
-    out.steps.push_back("K(SPEED) = 262 x Kd " + fmt(s.kd()) + " x " + fmt(d.driveMaxVolts) +
-                        " V / " + fmt(vmaxMPerMin) +
-                        " m/min = " + std::to_string(out.values[cc::kKs]));
-    out.steps.push_back("K(ERROR) = 26.2 x Kd " + fmt(s.kd()) + " x Kv " + fmt(d.kv) + " x " +
-                        fmt(d.driveMaxVolts) + " V / " + fmt(vmaxMPerMin) +
-                        " m/min = " + std::to_string(out.values[cc::kKe]));
+    out.steps.push_back({"speed-gain", cc::kKs,
+                         {fmt(s.kd()), fmt(d.driveMaxVolts), fmt(vmaxMPerMin), std::to_string(out.values[cc::kKs])}});
+    out.steps.push_back({"error-gain", cc::kKe,
+                         {fmt(s.kd()), fmt(d.kv), fmt(d.driveMaxVolts), fmt(vmaxMPerMin),
+                          std::to_string(out.values[cc::kKe])}});
 
     out.values[cc::kDacMax] = d.dacMax;
     out.values[cc::kDacLimit] = dacLimit(d.dacMax, d.dacLimitPercent);
-    out.steps.push_back("DAC LIMIT = " + std::to_string(d.dacMax) + " x (1 + " +
-                        fmt(d.dacLimitPercent) +
-                        " %) = " + std::to_string(out.values[cc::kDacLimit]));
+    out.steps.push_back({"dac-limit", cc::kDacLimit,
+                         {std::to_string(d.dacMax), fmt(d.dacLimitPercent), std::to_string(out.values[cc::kDacLimit])}});
 
     const std::pair<int, double> feeds[] = {{cc::kFeedNormal, d.feedNormalMmPerMin},
                                             {cc::kFeedRapid, d.feedRapidMmPerMin},
@@ -288,8 +315,7 @@ AxisConstants designAxis(const AxisDesign& d) {
                                             {cc::kFeedHomeCreep, d.feedHomeCreepMmPerMin}};
     for (const auto& [n, mm] : feeds) {
         out.values[n] = speedParam(mm, s);
-        out.steps.push_back(std::string(cat::cParam(n).nameEn) + ": " + fmt(mm) +
-                            " mm/min = " + std::to_string(out.values[n]) + " x 10 discretes/min");
+        out.steps.push_back({"feed", n, {fmt(mm), std::to_string(out.values[n])}});
     }
     // The drive reaches driveMaxSpeed at driveMaxVolts; МАКС.ЦАП caps the
     // command at dacMax/2047 of 10 V.
@@ -304,6 +330,20 @@ AxisConstants designAxis(const AxisDesign& d) {
         if (!cat::cParam(n).inRange(v))
             throw CalcError(cValueProblem(n, v));
     return out;
+}
+
+util::TextCatalog stepTexts() { return util::TextCatalog(kStepTexts); }
+
+std::string stepText(const Step& s, cat::Axis axis, bool russian) {
+    std::vector<std::string> args;
+    if (s.param > 0) {
+        const cat::CParamDef& def = cat::cParam(cat::axisParam(s.param, axis));
+        args.emplace_back(russian ? def.name : def.nameEn);
+    } else {
+        args.emplace_back();
+    }
+    args.insert(args.end(), s.args.begin(), s.args.end());
+    return stepTexts().render(s.id, args, russian);
 }
 
 AxisDesign designFromSettings(const MachineProfile& p, cat::Axis axis) {

@@ -119,14 +119,29 @@ struct AxisDesign {
     double dacLimitPercent = 17;
 };
 
+// How one value was obtained: an id of stepTexts() and its arguments (the
+// numbers as printed); `param` (X numbering, 0 for none) names the constant
+// the line begins with, in the language the step is said in.
+struct Step {
+    std::string id;
+    int param = 0;
+    std::vector<std::string> args;
+};
+
 struct AxisConstants {
     // X numbers (1..52) -> value: 4..7, 19, 20, 22, 23, 26..29, 40..44.
     std::map<int, std::int64_t> values;
     EncoderRatio ratio;
     AccelResult accel1;
     std::optional<AccelResult> accel2;
-    std::vector<std::string> steps; // how each value was obtained (English)
+    std::vector<Step> steps; // how each value was obtained (stepText)
 };
+
+// The steps' texts in Russian and English (%1 the constant's panel name).
+util::TextCatalog stepTexts();
+// `s` in a language, e.g. «УСКОРЕНИЕ 1: разгон 0 -> 5000 мм/мин за 2000 мс: …»;
+// `axis` numbers the constant.
+std::string stepText(const Step& s, catalog::Axis axis, bool russian);
 
 // Throws CalcError when an input is out of its domain or a result does not
 // fit its parameter's range.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <iterator>
 #include <string>
 
 #include "program/gfunctions.h"
@@ -25,6 +26,15 @@ constexpr int kMaxErrorsPerLine = 8;
 // whole UTF-8 characters, bad bytes as \xHH (a text is valid UTF-8 whatever
 // the input).
 std::string quoted(std::string_view s) { return text::printable(s); }
+
+// The bytes skipTriviaAndComments() reads past: blanks and comment starts
+// (one load where skipTrivia() tested each of them on every word).
+constexpr std::array<bool, 256> kTriviaStart = [] {
+    std::array<bool, 256> a{};
+    for (int c = 0; c < 256; ++c)
+        a[static_cast<std::size_t>(c)] = isSpace(static_cast<char>(c)) || c == ';' || c == '(';
+    return a;
+}();
 
 class Parser {
 public:
@@ -142,7 +152,7 @@ private:
         // Most calls meet a word or a single blank: no call for them.
         while (i < line_.size() && line_[i] == ' ')
             ++i;
-        if (i < line_.size() && (isSpace(line_[i]) || line_[i] == ';' || line_[i] == '('))
+        if (i < line_.size() && kTriviaStart[static_cast<unsigned char>(line_[i])])
             skipTriviaAndComments(i, comments);
     }
     void skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comments);
@@ -192,6 +202,7 @@ private:
     void frameLine(std::size_t i);
     void reportBadCharacter(std::size_t i, Frame& f);
     std::vector<Comment> fc_; // the comments of the frame being read
+    IsoFrame iso_;            // the data of the ISO frame being read
     void crLineEndHint();
 
     // Words of a frame. Each returns false after reporting an error.
@@ -538,16 +549,18 @@ void Parser::messageLine(std::size_t start) {
 // --- frames -------------------------------------------------------------------------------
 
 void Parser::frameLine(std::size_t i) {
-    std::vector<Comment> comments;
-    skipTrivia(i, comments);
+    // fc_ is empty here: the comments go straight where the frame's are read.
+    skipTrivia(i, fc_);
     if (i >= line_.size()) {
         // Comments only: not a frame.
         TriviaLine t;
-        t.comments = std::move(comments);
+        t.comments.assign(std::make_move_iterator(fc_.begin()), std::make_move_iterator(fc_.end()));
+        fc_.clear();
         pending_.push_back(std::move(t));
         return;
     }
     if (section_ == Section::Messages) {
+        fc_.clear();
         report(Rule::MessageSyntax, 0, i, line_.size(), "message-syntax.section");
         return;
     }
@@ -555,7 +568,6 @@ void Parser::frameLine(std::size_t i) {
         current_.frames.reserve(estimateFrames());
     Frame& f = current_.frames.emplace_back();
     f.span.line = lineNo_;
-    fc_ = std::move(comments);
     const std::size_t errorsBefore = out_.diagnostics.size();
     const std::size_t contentBegin = i;
     std::size_t contentEnd = i;
@@ -590,18 +602,36 @@ void Parser::frameLine(std::size_t i) {
         gotoFrame(i, f, body, contentEnd);
         f.body = body;
     } else {
-        IsoFrame body;
+        // One IsoFrame for every frame, emptied (not built) each time.
+        IsoFrame& body = iso_;
+        body.g.clear();
+        body.m.clear();
+        body.message.reset();
+        body.call.reset();
+        body.x.reset();
+        body.fx.reset();
+        body.z.reset();
+        body.fz.reset();
         isoFrame(i, f, body, contentEnd);
         f.body = body;
     }
-    f.comments = std::move(fc_);
+    // Most frames have no comments and no lines above: a new frame's are
+    // empty already, so nothing is moved in then. Comments are moved into a
+    // vector of their size, and fc_ keeps its room for the next line's (no
+    // growing it again comment by comment).
+    if (!fc_.empty()) {
+        std::vector<Comment>& comments = f.comments.edit();
+        comments.reserve(fc_.size());
+        comments.insert(comments.end(), std::make_move_iterator(fc_.begin()), std::make_move_iterator(fc_.end()));
+    }
     fc_.clear();
     if (out_.diagnostics.size() != errorsBefore)
         f.malformed = true;
     const ColSpan s = span(contentBegin, contentEnd);
     f.span.column = s.column;
     f.span.endColumn = s.endColumn;
-    f.leading = std::move(pending_);
+    if (!pending_.empty())
+        f.leading = std::move(pending_);
     pending_.clear();
     if (section_ == Section::Implicit && current_.frames.size() == 1)
         implicitFirst_ = f.span;

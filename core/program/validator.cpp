@@ -213,6 +213,43 @@ std::vector<int> cyclePath(const CallAnalysis& a, int from, int to) {
     return path;
 }
 
+// The ranges the checks of a frame's values ask, for both the full check
+// and the quick one of ProgramChecker::plainIso.
+bool rInRange(std::int64_t index) { return index >= 0 && index < kRCount; }
+// A limit in thousandths (limits have at most 3 decimals).
+constexpr std::int64_t milli(const Decimal& d) {
+    return d.scale == 0 ? d.mantissa * 1000 : d.scale == 1 ? d.mantissa * 100 : d.scale == 2 ? d.mantissa * 10 : d.mantissa;
+}
+static_assert(kMaxCoordinate.scale <= 3 && kMinFeed.scale <= 3 && kMaxFeed.scale <= 3);
+// d within [lo, hi] thousandths: nearly every value has at most 3 decimals
+// and is compared as an integer; the rest exactly as decimals.
+bool withinMilli(const Decimal& d, std::int64_t lo, std::int64_t hi) {
+    if (d.scale >= 0 && d.scale <= 3 && d.mantissa > -1000000000 && d.mantissa < 1000000000) {
+        const std::int64_t m = milli(d);
+        return m >= lo && m <= hi;
+    }
+    return !(d < Decimal::fromScaled(lo, 3) || d > Decimal::fromScaled(hi, 3));
+}
+bool coordinateInRange(const Decimal& d) { return withinMilli(d, -milli(kMaxCoordinate), milli(kMaxCoordinate)); }
+bool feedInRange(const Decimal& d) { return withinMilli(d, milli(kMinFeed), milli(kMaxFeed)); }
+bool mInRange(std::int64_t m) { return m >= 0 && m <= kMaxM; }
+
+// Whether the table refuses a frame whose only words of it are X and Z
+// (index: 1 CoordinateX, 2 Z), computed once from the table.
+bool refusedXZ(int index) {
+    static const std::array<bool, 4> refused = [] {
+        std::array<bool, 4> a{};
+        for (int i = 0; i < 4; ++i) {
+            const refusal::Words w = static_cast<refusal::Words>(((i & 1) ? refusal::CoordinateX : 0) |
+                                                                 ((i & 2) ? refusal::Z : 0));
+            for (const Refusal& r : refusals())
+                a[static_cast<std::size_t>(i)] = a[static_cast<std::size_t>(i)] || r.matches(w);
+        }
+        return a;
+    }();
+    return refused[static_cast<std::size_t>(index)];
+}
+
 // The word a refusal points at (the table names it; the frame has it).
 ColSpan refusalSpan(const Frame& f, const IsoFrame& iso, RefusalSpot spot) {
     const Word* m = nullptr;
@@ -294,6 +331,11 @@ private:
     }
 
     void frameNumbers();
+    bool plainIso(const Frame& f, const IsoFrame& iso) const;
+    IsoFrame iso_; // the current ISO frame, decoded into the same place frame after frame
+    // Per frame: an ISO frame with M02, M30 or M17 (control flow ends there),
+    // noted while it is decoded for the checks.
+    std::vector<char> ends_;
     void isoFrame(const Frame& f, const IsoFrame& iso);
     std::array<GInfo, kMaxGPerFrame> gInfo_{}; // classifyG of the current ISO frame's G words
     void gWords(const Frame& f, const IsoFrame& iso);
@@ -326,11 +368,24 @@ void ProgramChecker::run() {
     }
     frameNumbers();
     lastOfSubprogram_ = graph_.isCalled(p_.number);
+    ends_.assign(p_.frames.size(), 0);
     for (const Frame& f : p_.frames) {
         switch (f.kind()) {
         case FrameKind::Iso: {
-            const auto iso = f.iso(); // decoded once, read in place
-            isoFrame(f, *iso);
+            iso_.g.clear();
+            iso_.m.clear();
+            iso_.message.reset();
+            iso_.call.reset();
+            iso_.x.reset();
+            iso_.fx.reset();
+            iso_.z.reset();
+            iso_.fz.reset();
+            f.body.decode(iso_);
+            for (const Word& m : iso_.m)
+                if (m.number == mfunc::kEnd || m.number == mfunc::kEndRewind || m.number == mfunc::kSubprogramEnd)
+                    ends_[static_cast<std::size_t>(&f - p_.frames.data())] = 1;
+            if (!plainIso(f, iso_))
+                isoFrame(f, iso_);
             break;
         }
         case FrameKind::Compute: {
@@ -385,8 +440,54 @@ void ProgramChecker::frameNumbers() {
     }
 }
 
+// True when an ISO frame certainly gets no diagnostic from isoFrame(): most
+// frames, found so by a few questions on their numbers instead of every
+// check written for each word (that was the larger part of checking a store).
+// Whatever is out of the ordinary — a dwell, a call, an end word, the last
+// frame, a G or M the checks question, a value out of range, an axis
+// function without its value, a message the table lacks — goes the full
+// way, which says what is wrong.
+bool ProgramChecker::plainIso(const Frame& f, const IsoFrame& iso) const {
+    if (&f == &p_.frames.back() || iso.call)
+        return false;
+    if (iso.message) {
+        const int k = iso.message->number;
+        if (k < 1 || k > kMaxMessages || (store_.messages.present && !store_.messages.find(k)))
+            return false;
+    }
+    for (int i = 0; i < iso.m.size(); ++i) {
+        const int m = iso.m[i].number;
+        if (!mInRange(m) || m == mfunc::kEnd || m == mfunc::kSubprogramEnd || m == mfunc::kEndRewind)
+            return false;
+        for (int j = 0; j < i; ++j)
+            if (iso.m[j].number == m)
+                return false;
+    }
+    std::array<GGroup, kMaxGPerFrame> groups{};
+    for (int i = 0; i < iso.g.size(); ++i) {
+        const GInfo info = classifyG(iso.g[i].number);
+        if (!info.known() || info.function == GFunction::Dwell)
+            return false;
+        for (int j = 0; j < i; ++j)
+            if (groups[static_cast<std::size_t>(j)] == info.group)
+                return false;
+        groups[static_cast<std::size_t>(i)] = info.group;
+        if ((info.function == GFunction::SetPosition || info.function == GFunction::OscillationStart ||
+             info.function == GFunction::StopOnSignal) &&
+            !(info.axis == Axis::X ? iso.x.has_value() : info.axis == Axis::Z ? iso.z.has_value() : true))
+            return false;
+    }
+    auto fine = [](const std::optional<Value>& v, bool (*inRange)(const Decimal&)) {
+        return !v || (v->isR() ? rInRange(v->rIndex) : inRange(v->literal));
+    };
+    if (!fine(iso.x, coordinateInRange) || !fine(iso.z, coordinateInRange) || !fine(iso.fx, feedInRange) ||
+        !fine(iso.fz, feedInRange))
+        return false;
+    return !refusedXZ((iso.x ? 1 : 0) | (iso.z ? 2 : 0));
+}
+
 void ProgramChecker::rIndex(const Frame& f, int index, ColSpan s) {
-    if (index < 0 || index >= kRCount)
+    if (!rInRange(index))
         error(Rule::RIndexRange, 0, f, s, "r-index-range", {std::to_string(index)});
 }
 
@@ -429,8 +530,7 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
                 error(Rule::CoordinateRange, 33, f, v->span, "dwell-range", {d.toString()});
             return;
         }
-        constexpr Decimal neg = Decimal::fromScaled(-kMaxCoordinate.mantissa, kMaxCoordinate.scale);
-        if (d > kMaxCoordinate || d < neg) {
+        if (!coordinateInRange(d)) {
             error(Rule::CoordinateRange, manual, f, v->span, "coordinate-range", {std::string(1, axis), d.toString()});
         }
     };
@@ -442,7 +542,7 @@ void ProgramChecker::values(const Frame& f, const IsoFrame& iso) {
             return;
         }
         const Decimal& d = v->literal;
-        if (d < kMinFeed || d > kMaxFeed)
+        if (!feedInRange(d))
             error(Rule::FeedRange, 0, f, v->span, "feed-range", {name, d.toString()});
     };
     coordinate(iso.x, 'X', 33);
@@ -502,7 +602,7 @@ void ProgramChecker::isoFrame(const Frame& f, const IsoFrame& iso) {
     gWords(f, iso);
     for (int i = 0; i < iso.m.size(); ++i) {
         const Word& w = iso.m[i];
-        if (w.number < 0 || w.number > kMaxM)
+        if (!mInRange(w.number))
             error(Rule::MRange, 0, f, w.span, "m-range", {std::to_string(w.number)});
         for (int j = 0; j < i; ++j)
             if (iso.m[j].number == w.number) {
@@ -612,7 +712,7 @@ void ProgramChecker::reachability() {
             if (!f.skip) {
                 switch (f.kind()) {
                 case FrameKind::Iso: {
-                    if (f.body.hasAnyM({mfunc::kEnd, mfunc::kEndRewind, mfunc::kSubprogramEnd}))
+                    if (ends_[i])
                         next = false;
                     break;
                 }

@@ -225,6 +225,33 @@ private slots:
         }
     }
 
+    // `db calc`'s report is read by a technologist: its head line, the steps
+    // and the remarks in the language; --json the same in both.
+    void calcReport() {
+        const QStringList axis = {"db", "calc", "--screw-lead", "5", "--encoder-lines", "2500", "--drive-speed", "10000",
+                                  "--feed", "5000", "--rapid", "8000", "--accel", "runup:5000:2000"};
+        CliResult r = runK528(axis);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.startsWith(QStringLiteral("Ось X, дискрета 0.001 мм\n")) &&
+                     r.out.contains(QStringLiteral("C022  УСКОРЕНИЕ 1          1066")) &&
+                     r.out.contains(QStringLiteral("\nКак получено:\n")) &&
+                     r.out.contains(QStringLiteral("  УСКОРЕНИЕ 1: разгон 0 -> 5000 мм/мин за 2000 мс: A = ")) &&
+                     r.out.contains(QStringLiteral("  К(СКОР) = 262 x Kd ")) &&
+                     r.out.contains(QStringLiteral("УСКОРЕНИЕ 1 по формуле 1: напечатанная формула 0.8533·Vmax/T даёт 2133")) &&
+                     !hasEnglishSentence(r.out),
+                 qPrintable(r.out));
+        r = runK528(axis + QStringList{"--lang", "en"});
+        QVERIFY2(r.out.startsWith("Axis X, discrete 0.001 mm\n") && r.out.contains("\nHow:\n") &&
+                     r.out.contains("  ACCELERATION 1: run-up 0 -> 5000 mm/min in 2000 ms: A = ") &&
+                     r.out.contains("the printed formula 0.8533·Vmax/T gives 2133"),
+                 qPrintable(r.out));
+        QCOMPARE(runK528(axis + QStringList{"--json"}).out, runK528(axis + QStringList{"--json", "--lang", "en"}).out);
+        r = runK528(axis + QStringList{"--gear", "two"});
+        QVERIFY2(r.err.contains(QStringLiteral("--gear: «two» — не число")), qPrintable(r.err));
+        r = runK528(axis + QStringList{"--feed", "-5"});
+        QVERIFY2(r.err.contains(QStringLiteral("--feed -5 вне диапазона: допустимо 0..200000 мм/мин")), qPrintable(r.err));
+    }
+
     // The usage errors of the commands' own options: Russian, and English with
     // --lang en (never the other language's words).
     void optionErrors_data() {

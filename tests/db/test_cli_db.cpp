@@ -654,7 +654,7 @@ private slots:
                                   "--feed",        "5000", "--rapid",         "8000",
                                   "--auto-rapid",  "5000", "--home-start",    "50",
                                   "--home-creep",  "5",    "--accel",         "runup:5000:2000",
-                                  "--diameter"};
+                                  "--diameter", "--lang", "en"};
         auto r = runK528(QStringList{"db", "calc"} + axis);
         QCOMPARE(r.exitCode, 0);
         QVERIFY2(r.out.contains("C022  УСКОРЕНИЕ 1          1066"), qPrintable(r.out));
@@ -680,13 +680,13 @@ private slots:
         QVERIFY(found);
         // From a machine of the database.
         QCOMPARE(db({"init"}).exitCode, 0);
-        r = db({"calc", "--machine", "grinder-205", "--axis", "Z"});
+        r = db({"calc", "--machine", "grinder-205", "--axis", "Z", "--lang", "en"});
         QCOMPARE(r.exitCode, 0);
         QVERIFY2(r.out.contains("C078  К(СКОР)              131       (as now)"),
                  qPrintable(r.out));
         QVERIFY(r.out.contains("data of machine grinder-205"));
         // Errors.
-        r = runK528({"db", "calc", "--screw-lead", "5"});
+        r = runK528({"db", "calc", "--screw-lead", "5", "--lang", "ru"});
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(QStringLiteral("db calc нужен --encoder-lines")), qPrintable(r.err));
         QVERIFY(runK528({"db", "calc", "--screw-lead", "5", "--lang", "en"}).err.contains("needs --encoder-lines"));

@@ -2,7 +2,8 @@
 // schema version 6 to the latest (version 7: every recorded change takes its
 // revision's author and time — new columns of `changes` and an UPDATE of all
 // its rows; version 8: on PostgreSQL the history's index rebuilt with the
-// columns the history reads; all in the one transaction of the upgrade, then
+// columns the history reads; version 9: each item's whole history built into
+// its row of item_history; all in the one transaction of the upgrade, then
 // on PostgreSQL a VACUUM of `changes` after it) never leaves a database that
 // later commands refuse, nor a half-upgraded one: after each kill the
 // database opens read-only at version 6 untouched or at the latest version

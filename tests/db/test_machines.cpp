@@ -531,6 +531,71 @@ private slots:
         QVERIFY(sameHistory(std::vector(now.begin() + 1, now.end()), ofKey));
     }
 
+    // A database of schema version 8 opened by this program: upgraded to
+    // version 9, each item's whole history built into its row of
+    // item_history from the recorded changes by the upgrade's SQL — Cyrillic
+    // authors and labels, counted in bytes as the program counts them — so
+    // the history of every item, of the last revisions and whole, reads as
+    // before; a new revision is appended to its items' rows. The integrity
+    // check compares those rows with the changes: a row altered by SQL is
+    // named; a row no longer in its form, or gone, leaves the history of its
+    // item read from the changes themselves (PostgreSQL reads the history of
+    // one item from its row).
+    void itemHistoryFromVersion8() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "v8.db");
+        std::map<std::string, std::vector<db::HistoryEntry>> items;
+        std::vector<db::HistoryEntry> lastThree, whole;
+        {
+            db::Database d = databaseOfVersion(where, 8, 20, [](int i) { return i % 2 ? "Петров" : "Иванов И.И."; });
+            QCOMPARE(d.schemaVersion(), 8);
+            whole = d.history("grinder-205");
+            lastThree = d.history("grinder-205", std::nullopt, 3);
+            for (const db::HistoryEntry& e : whole)
+                items[e.change.key];
+            for (auto& [key, h] : items)
+                h = d.history("grinder-205", key);
+        }
+        QVERIFY(items.size() >= 21); // C022 and R0 … R19 at least
+        QCOMPARE(items.at("C022").size(), std::size_t(21));
+        const int latest = db::latestSchemaVersion();
+        QVERIFY(latest >= 9);
+        db::Database d = db::Database::open(where, testOptions());
+        QCOMPARE(d.openReport().fromVersion, 8);
+        QCOMPARE(d.audit(1).front().detail, "schema version 8 -> " + std::to_string(latest));
+        for (const auto& [key, h] : items)
+            QVERIFY2(sameHistory(d.history("grinder-205", key), h), key.c_str());
+        QVERIFY(sameHistory(d.history("grinder-205", std::nullopt, 3), lastThree));
+        QVERIFY(sameHistory(d.history("grinder-205"), whole));
+        QCOMPARE(d.checkIntegrity(), std::string());
+
+        db::Edit e;
+        e.c[22] = 1500;
+        d.applyEdit("grinder-205", e, by("Сидоров"));
+        const auto now = d.history("grinder-205", std::string("C022"));
+        QCOMPARE(now.size(), items.at("C022").size() + 1);
+        QCOMPARE(now[0].author, std::string("Сидоров"));
+        QCOMPARE(*now[0].change.after, std::string("1500"));
+        QVERIFY(sameHistory(std::vector(now.begin() + 1, now.end()), items.at("C022")));
+        QCOMPARE(d.checkIntegrity(), std::string());
+
+        // An entry of C022 cut off by SQL.
+        QCOMPARE(runSql(where, "UPDATE item_history SET entries = substr(entries, 1, 10) WHERE key "
+                               "= 'C022'"),
+                 std::string());
+        const std::string problems = d.checkIntegrity();
+        QVERIFY2(problems.find("machine grinder-205: the history of C022 in item_history is not "
+                               "that of its changes") != std::string::npos,
+                 problems.c_str());
+        QVERIFY(sameHistory(d.history("grinder-205", std::string("C022")), now));
+        // The row of R3 gone: named as missing.
+        QCOMPARE(runSql(where, "DELETE FROM item_history WHERE key = 'R3'"), std::string());
+        QVERIFY2(d.checkIntegrity().find("machine grinder-205: the history of R3 is missing from "
+                                         "item_history") != std::string::npos,
+                 d.checkIntegrity().c_str());
+        QVERIFY(sameHistory(d.history("grinder-205", std::string("R3")), items.at("R3")));
+    }
+
     // The longest texts one change can carry — a setting's key of 64
     // characters, its values of 200 characters of four UTF-8 bytes each
     // before and after, an author of 256 bytes; a title of 120 such

@@ -440,6 +440,67 @@ private slots:
         QVERIFY(a.size() > 100);
     }
 
+    // Roles set up on a database of schema version 8: after the upgrade to 9
+    // (each item's history in a row of item_history, a new table) a
+    // technologist still changes a machine — the upgrade gives the roles
+    // the new table's rights — and a viewer reads the history from it.
+    void rolesSetUpBeforeVersion9KeepTheirRights() {
+        if (!onPostgres())
+            QSKIP("PostgreSQL only");
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "roles8");
+        const std::string dbName = where.uri().substr(where.uri().rfind('/') + 1);
+        {
+            auto o = testOptions();
+            o.migrations = db::schemaMigrations().subspan(0, 8);
+            db::Database owner = db::Database::open(where, o);
+            QCOMPARE(owner.schemaVersion(), 8);
+            // The roles as the program of version 8 set them up, its grants
+            // without item_history: this program's name it, so a stand-in
+            // table takes its grant and goes.
+            sqlOf(owner).exec("CREATE TABLE item_history (stand_in INTEGER)");
+            owner.setUpRoles();
+            sqlOf(owner).exec("DROP TABLE item_history");
+            const std::string password = qgetenv("PGPASSWORD").toStdString();
+            for (const char* user : {"tech8", "view8"})
+                sqlOf(owner).exec("DO $$ BEGIN IF NOT EXISTS (SELECT 1 FROM pg_roles WHERE rolname = '" +
+                                  std::string(user) + "') THEN CREATE ROLE " + user + " LOGIN PASSWORD '" +
+                                  password + "'; END IF; END $$");
+            owner.grantRole("tech8", "technologist");
+            owner.grantRole("view8", "k528_viewer");
+        }
+        // Roles are the cluster's: the other tests' members lists stay as
+        // they expect them, whatever this test ends with.
+        struct Leave {
+            db::Location where;
+            ~Leave() {
+                try {
+                    db::Database owner = db::Database::open(where, testOptions());
+                    sqlOf(owner).exec("REVOKE k528_technologist FROM tech8; REVOKE k528_viewer FROM view8");
+                } catch (const db::Error&) {
+                }
+            }
+        } leave{where};
+        {
+            db::Database owner = db::Database::open(where, testOptions());
+            QCOMPARE(owner.openReport().fromVersion, 8);
+            QVERIFY(owner.schemaVersion() >= 9);
+        }
+        const auto as = [&](const char* user) {
+            return db::Database::open(db::Location::parse("postgresql://" + std::string(user) + "@/" + dbName),
+                                      testOptions());
+        };
+        db::Database tech = as("tech8");
+        const auto before = tech.history("grinder-205", std::string("C022"));
+        QCOMPARE(tech.applyEdit("grinder-205", editC(22, 2133)).revision, 2);
+        db::Database view = as("view8");
+        const auto h = view.history("grinder-205", std::string("C022"));
+        QCOMPARE(h.size(), before.size() + 1);
+        QCOMPARE(h.front().author, std::string("tech8"));
+        QCOMPARE(h.front().change.after, std::optional<std::string>("2133"));
+        QCOMPARE(view.checkIntegrity(), std::string());
+    }
+
     // PostgreSQL's roles: each may what it must and is refused the rest, with
     // a message naming the role needed; the transfer log's user is the
     // server's, whatever a client says.
