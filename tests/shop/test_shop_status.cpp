@@ -141,12 +141,16 @@ private slots:
 
     void linesAreCheckedAndNamed() {
         // A value that is not a line is refused when it is set; nothing changes.
-        CliResult r = k528({"db", "set", "m01", "line=tcp://127.0.0.1/1"});
+        CliResult r = k528({"db", "set", "m01", "line=tcp://127.0.0.1/1", "--lang", "en"});
         QVERIFY(r.exitCode != 0);
         QVERIFY2(r.err.contains("no HOST:PORT after tcp://"), qPrintable(r.err));
-        r = k528({"db", "set", "m01", "line=serial:/dev/ttyUSB0?baud=fast"});
+        r = k528({"db", "set", "m01", "line=serial:/dev/ttyUSB0?baud=fast", "--lang", "en"});
         QVERIFY(r.exitCode != 0);
         QVERIFY2(r.err.contains("baud is a rate in bit/s"), qPrintable(r.err));
+        // In Russian by default, as every report of k528 db.
+        r = k528({"db", "set", "m01", "line=tcp://127.0.0.1/1"});
+        QVERIFY(r.exitCode != 0);
+        QVERIFY2(r.err.contains("после tcp:// нет ХОСТ:ПОРТ"), qPrintable(r.err));
         r = k528({"shop", "status", "--json", "m01"});
         QVERIFY2(r.exitCode == 0 && jsonList(r.out).size() == 1, qPrintable(r.out + r.err));
         QCOMPARE(jsonList(r.out)[0].toObject()["line"].toString(), "tcp://127.0.0.1:" + QString::number(shop_.ports[0]) + "/1");
