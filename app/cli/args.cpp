@@ -58,7 +58,7 @@ Args::Args(std::span<const std::string> args, std::vector<std::string_view> flag
         }
         if (std::find(flags.begin(), flags.end(), name) != flags.end()) {
             if (inlineValue) {
-                error_ = ru ? "параметр " + name + " не принимает значения" : "option " + name + " takes no value";
+                error_ = cliText("opt.no-value", {name}, ru);
                 return;
             }
             given_.emplace_back(name, "");
@@ -68,11 +68,11 @@ Args::Args(std::span<const std::string> args, std::vector<std::string_view> flag
             } else if (i + 1 < args.size()) {
                 given_.emplace_back(name, args[++i]);
             } else {
-                error_ = ru ? "параметру " + name + " нужно значение" : "option " + name + " needs a value";
+                error_ = cliText("opt.needs-value", {name}, ru);
                 return;
             }
         } else {
-            error_ = ru ? "неизвестный параметр " + name : "unknown option " + name;
+            error_ = cliText("opt.unknown", {name}, ru);
             return;
         }
     }

@@ -462,6 +462,68 @@ constexpr std::array kTexts = {
     CatalogText{"opt.lang", "--lang — ru или en, а не «%1»", "--lang is ru or en, not '%1'"},
     CatalogText{"opt.timeout", "после --timeout-ms нужно 10..60000", "--timeout-ms takes 10..60000"},
     CatalogText{"opt.seconds", "после --seconds нужна длительность в секундах", "--seconds takes a duration in seconds"},
+    CatalogText{"opt.no-value", "параметр %1 не принимает значения", "option %1 takes no value"},
+    CatalogText{"opt.needs-value", "параметру %1 нужно значение", "option %1 needs a value"},
+    CatalogText{"opt.unknown", "неизвестный параметр %1", "unknown option %1"},
+
+    // ---- A program file and its run.
+    CatalogText{"file.no-program", "в файле %1 нет ни одной программы", "%1 holds no program"},
+    CatalogText{"run.from-never",
+                "--from %1: программа не доходит до L%2 N%3 (её предпросмотр закончился: %4)",
+                "--from %1: the program never reaches L%2 N%3 (its preview ended: %4)"},
+    CatalogText{"run.from-never-pass",
+                "--from %1: программа не доходит до L%2 N%3 в %5-й раз (её предпросмотр закончился: %4)",
+                "--from %1: the program never reaches L%2 N%3 for the %5. time (its preview ended: %4)"},
+    CatalogText{"run.from-oscillating",
+                "--from %1: L%2 N%3 выполняется, пока ось %4 осциллирует (от Gx81 до её Gx80); "
+                "начните с кадра Gx81 или после Gx80",
+                "--from %1: L%2 N%3 runs while %4 oscillates (Gx81 up to its Gx80); "
+                "start from the frame of the Gx81 or after the Gx80"},
+    CatalogText{"preview.completed", "программа выполнена до конца", "completed"},
+    CatalogText{"preview.alarm", "авария", "alarm"},
+    CatalogText{"preview.limit", "предел кадров или времени", "limit"},
+    CatalogText{"preview.cancelled", "прервано", "cancelled"},
+    CatalogText{"path.cycle-time", "время цикла не посчитано: %1", "the cycle time: %1"},
+    CatalogText{"grade.exercise", "упражнение %1: %2", "exercise %1: %2"},
+    // The helper programs k528 runs (the renderers, k528-link).
+    CatalogText{"helper.missing",
+                "%1: нужна программа отрисовки %2 (ставится вместе с настольной программой; искали: %3)",
+                "%1 needs the renderer %2 (built with the desktop program; looked for %3)"},
+    CatalogText{"helper.no-link",
+                "%1: нужна программа k528-link (половина командной строки на Qt SerialBus), она не "
+                "установлена (искали: %2)",
+                "%1 needs k528-link (the Qt SerialBus half of the command line), which is not "
+                "installed (looked for %2)"},
+    CatalogText{"helper.unknown-folder", "(папка самой k528 неизвестна)", "(k528's own folder is unknown)"},
+    CatalogText{"helper.cannot-run", "не удаётся запустить %1: %2", "cannot run %1: %2"},
+    CatalogText{"helper.cannot-start", "не удаётся запустить программу отрисовки (%1): %2",
+                "cannot start the renderer (%1): %2"},
+    CatalogText{"helper.abnormal", "программа отрисовки %1 завершилась аварийно", "the renderer %1 stopped abnormally"},
+
+    // ---- k528 db: its subcommands.
+    CatalogText{"db.no-subcommand", "db нужна подкоманда: %1", "db needs a subcommand: %1"},
+    CatalogText{"db.unknown-subcommand", "неизвестная подкоманда db «%1» (%2)", "unknown db subcommand '%1' (%2)"},
+    // `db check`: the verdict and each finding (db::IntegrityProblem).
+    CatalogText{"db.check.args", "db check не принимает аргументов", "db check takes no arguments"},
+    CatalogText{"db.check.ok", "проверка    нарушений нет", "check     no problems"},
+    CatalogText{"db.check.found", "проверка    нарушений: %1", "check     problems found: %1"},
+    CatalogText{"db.check.pages", "страницы файла (SQLite): %1", "the file's pages (SQLite): %1"},
+    CatalogText{"db.check.foreign-key", "строка %2 таблицы %1 ссылается на строку, которой нет",
+                "row %2 of table %1 refers to a row that does not exist"},
+    CatalogText{"db.check.program-checksum",
+                "станок %1: программа L%2 ревизии %3 не совпадает со своей контрольной суммой SHA-256",
+                "machine %1: program L%2 of revision %3 does not match its SHA-256 checksum"},
+    CatalogText{"db.check.change-authors",
+                "станок %1, ревизия %2: изменений, где автор и время не те, что у ревизии: %3",
+                "machine %1 revision %2: %3 of its changes do not name the revision's author and time"},
+    CatalogText{"db.check.item-history-differs",
+                "станок %1: история %2 в item_history — не та, что в его изменениях",
+                "machine %1: the history of %2 in item_history is not that of its changes"},
+    CatalogText{"db.check.item-history-missing", "станок %1: истории %2 нет в item_history",
+                "machine %1: the history of %2 is missing from item_history"},
+    CatalogText{"db.check.revisions",
+                "станок %1 на ревизии %2, а в его истории ревизий %3, последняя — %4",
+                "machine %1 is at revision %2 but its history holds %3 revisions up to %4"},
 };
 
 } // namespace

@@ -192,7 +192,7 @@ int runGrade(std::span<const std::string> argv) {
     try {
         grader.emplace(*e);
     } catch (const std::exception& err) {
-        std::fprintf(stderr, "k528: exercise %s: %s\n", e->id.c_str(), err.what());
+        std::fprintf(stderr, "k528: %s\n", cliText("grade.exercise", {e->id, err.what()}).c_str());
         return ExitUsage;
     }
     std::vector<training::Grade> grades(items.size());

@@ -4,7 +4,9 @@
 // command: next to k528 in the build tree, in /usr/lib/k528studio when
 // installed (helper_path.h).
 #include "cli.h"
+#include "cli_texts.h"
 #include "helper_path.h"
+#include "util/system_texts.h"
 
 #include <cerrno>
 #include <cstring>
@@ -25,13 +27,12 @@ int forward(const char* command, std::span<const std::string> args) {
             argv.push_back(s.data());
         argv.push_back(nullptr);
         ::execv(helper.c_str(), argv.data());
-        std::fprintf(stderr, "k528: cannot run %s: %s\n", helper.c_str(), std::strerror(errno));
+        std::fprintf(stderr, "k528: %s\n",
+                     cliText("helper.cannot-run", {helper.string(), util::systemText(util::systemError(errno), russianCommandLine())})
+                         .c_str());
         return ExitUsage;
     }
-    std::fprintf(stderr,
-                 "k528: %s needs k528-link (the Qt SerialBus half of the command line), which is not "
-                 "installed (looked for %s)\n",
-                 command, helperSearchText("k528-link").c_str());
+    std::fprintf(stderr, "k528: %s\n", cliText("helper.no-link", {command, helperSearchText("k528-link")}).c_str());
     return ExitUsage;
 }
 

@@ -233,7 +233,7 @@ int runPath(std::span<const std::string> argv) {
             cycle.seconds = t.seconds;
             cycle.run = engine::runStatusName(t.run.status);
         } catch (const std::exception& e) { // the machine cannot run it as set up
-            std::fprintf(stderr, "k528: the cycle time: %s\n", e.what());
+            std::fprintf(stderr, "k528: %s\n", cliText("path.cycle-time", {e.what()}).c_str());
         }
     }
     if (asJson)

@@ -33,6 +33,18 @@ namespace k528::cli {
 
 namespace {
 
+// How a preview ended, in the command line's language.
+std::string previewEnded(engine::PreviewStatus status) {
+    switch (status) {
+    case engine::PreviewStatus::Completed: return cliText("preview.completed");
+    case engine::PreviewStatus::Alarm: return cliText("preview.alarm");
+    case engine::PreviewStatus::Limit: return cliText("preview.limit");
+    case engine::PreviewStatus::Cancelled: return cliText("preview.cancelled");
+    }
+    return std::string(engine::previewStatusName(status));
+}
+
+
 Json resultJson(const engine::RunResult& r) {
     Json root;
     root["status"] = engine::runStatusName(r.status);
@@ -368,7 +380,7 @@ int runRun(std::span<const std::string> argv) {
         return ExitInputErrors;
     }
     if (parsed.store.empty()) {
-        std::fprintf(stderr, "k528: %s holds no program\n", displayName(path).c_str());
+        std::fprintf(stderr, "k528: %s\n", cliText("file.no-program", {displayName(path)}).c_str());
         return ExitInputErrors;
     }
     if (checked.hasErrors()) {
@@ -424,18 +436,18 @@ int runRun(std::span<const std::string> argv) {
         const engine::StartSearch found =
             engine::findStartPoint(prof, parsed.store, number, {fromProgram, index, pass}, po);
         if (found.outcome == engine::StartSearch::Outcome::NotReached) {
-            std::fprintf(stderr,
-                         "k528: --from %s: the program never reaches L%d N%d%s (its preview ended: %s)\n",
-                         from->c_str(), fromProgram, fromN,
-                         pass > 1 ? (" for the " + std::to_string(pass) + ". time").c_str() : "",
-                         std::string(engine::previewStatusName(found.preview.status)).c_str());
+            const std::string ended = previewEnded(found.preview.status);
+            std::fprintf(stderr, "k528: %s\n",
+                         cliText(pass > 1 ? "run.from-never-pass" : "run.from-never",
+                                 {*from, std::to_string(fromProgram), std::to_string(fromN), ended, std::to_string(pass)})
+                             .c_str());
             return ExitInputErrors;
         }
         if (found.outcome == engine::StartSearch::Outcome::Oscillating) {
-            std::fprintf(stderr,
-                         "k528: --from %s: L%d N%d runs while %s oscillates (Gx81 up to its Gx80); "
-                         "start from the frame of the Gx81 or after the Gx80\n",
-                         from->c_str(), fromProgram, fromN, found.oscillatingAxis == 0 ? "X" : "Z");
+            std::fprintf(stderr, "k528: %s\n",
+                         cliText("run.from-oscillating", {*from, std::to_string(fromProgram), std::to_string(fromN),
+                                                          found.oscillatingAxis == 0 ? "X" : "Z"})
+                             .c_str());
             return ExitInputErrors;
         }
         options.from = found.point;

@@ -45,7 +45,7 @@ std::span<const Command> commands() {
          "A file with syntax errors is not formatted: they are printed on stderr (exit 1).\n"
          "FILE '-' reads standard input.\n",
          runFormat},
-        {"db", "db init|machines|show|set|export|import|diff|calc|audit|copy|release|withdraw|log|roles [--db LOCATION] ...",
+        {"db", "db init|machines|show|set|trial|export|import|diff|calc|audit|copy|release|withdraw|log|roles|check [--db LOCATION] ...",
          "The database of machines: constants, R-parameters, programs, messages, history.",
          kDbDetails, runDb},
         {"run",

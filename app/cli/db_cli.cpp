@@ -70,6 +70,9 @@ const char* const kDbDetails =
     "                               the transfers to and from controllers, newest first\n"
     "  roles [grant USER ROLE]      PostgreSQL: create the roles k528_technologist,\n"
     "                               k528_operator, k528_viewer with their GRANTs; list members\n"
+    "  check [--json]               everything the database can check of itself: every page\n"
+    "                               (SQLite), keys, program checksums, the history against the\n"
+    "                               revisions; opened read-only. Exit 1 when it finds a problem\n"
     "--allow-errors accepts cross-check errors (a deliberately faulty training machine);\n"
     "values outside their definitions are never accepted. set refuses a simulation key\n"
     "not in the registry (a typo), naming the known keys close to it; --allow-unknown\n"
@@ -242,9 +245,10 @@ std::optional<db::Database> openDbOf(const Args& a, DbTarget& t, bool mayCreate,
 }
 
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
-                                   const std::string& author, Lang lang) {
+                                   const std::string& author, Lang lang, bool readOnly) {
     db::OpenOptions o;
     o.author = author;
+    o.readOnly = readOnly;
     if (t.where.isFile()) {
         const fs::path& file = t.where.file();
         std::error_code ec;
@@ -460,6 +464,11 @@ std::string savedText(const std::string& machine, const db::SaveResult& r, Lang 
 
 } // namespace dbcli
 
+namespace {
+constexpr const char* kDbSubcommands =
+    "init, machines, show, set, trial, export, import, diff, calc, audit, copy, release, withdraw, log, roles, check";
+} // namespace
+
 int runDb(std::span<const std::string> args) {
     std::vector<std::string> rest(args.begin(), args.end());
     // "--db PATH" may also come before the subcommand.
@@ -467,7 +476,7 @@ int runDb(std::span<const std::string> args) {
     while (!rest.empty() && (rest[0] == "--db" || rest[0].rfind("--db=", 0) == 0)) {
         if (rest[0] == "--db") {
             if (rest.size() < 2)
-                return usageError(russianCommandLine() ? "параметру --db нужно значение" : "option --db needs a value");
+                return usageError(cliText("opt.needs-value", {"--db"}));
             dbOpt = {"--db", rest[1]};
             rest.erase(rest.begin(), rest.begin() + 2);
         } else {
@@ -476,11 +485,7 @@ int runDb(std::span<const std::string> args) {
         }
     }
     if (rest.empty())
-        return usageError(russianCommandLine()
-                              ? "db нужна подкоманда: init, machines, show, set, export, import, diff, calc, audit, "
-                                "copy, release, withdraw, log, roles"
-                              : "db needs a subcommand: init, machines, show, set, export, import, diff, calc, audit, "
-                                "copy, release, withdraw, log, roles");
+        return usageError(cliText("db.no-subcommand", {kDbSubcommands}));
     const std::string sub = rest[0];
     std::vector<std::string> subArgs(rest.begin() + 1, rest.end());
     subArgs.insert(subArgs.end(), dbOpt.begin(), dbOpt.end());
@@ -512,13 +517,9 @@ int runDb(std::span<const std::string> args) {
         return dbcli::cmdLog(subArgs);
     if (sub == "roles")
         return dbcli::cmdRoles(subArgs);
-    return usageError(russianCommandLine()
-                          ? "неизвестная подкоманда db «" + sub +
-                                "» (init, machines, show, set, export, import, diff, calc, audit, copy, release, "
-                                "withdraw, log, roles)"
-                          : "unknown db subcommand '" + sub +
-                                "' (init, machines, show, set, export, import, diff, calc, audit, copy, release, "
-                                "withdraw, log, roles)");
+    if (sub == "check")
+        return dbcli::cmdCheck(subArgs);
+    return usageError(cliText("db.unknown-subcommand", {sub, kDbSubcommands}));
 }
 
 } // namespace k528::cli

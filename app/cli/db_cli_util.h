@@ -71,9 +71,10 @@ Lang langOf(const Args& a);
 bool dbTarget(const Args& a, DbTarget& t);
 
 // Opens the database. The default location is created on first use (with its
-// folder); an explicit --db path only by init and import.
+// folder); an explicit --db path only by init and import. `readOnly`: never
+// written, not even upgraded (db check).
 std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
-                                   const std::string& author = {}, Lang lang = Lang::Ru);
+                                   const std::string& author = {}, Lang lang = Lang::Ru, bool readOnly = false);
 
 // dbTarget and openDb together: the database the command's --db names (its
 // path into `t`), or nullopt after printing why (exit ExitUsage).
@@ -123,6 +124,7 @@ int cmdImport(std::span<const std::string> argv);
 int cmdDiff(std::span<const std::string> argv);
 int cmdAudit(std::span<const std::string> argv);
 int cmdCopy(std::span<const std::string> argv);
+int cmdCheck(std::span<const std::string> argv); // cmd_db_check.cpp
 int cmdRelease(std::span<const std::string> argv, bool release);
 int cmdLog(std::span<const std::string> argv);
 int cmdRoles(std::span<const std::string> argv);

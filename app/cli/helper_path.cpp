@@ -1,4 +1,7 @@
 #include "helper_path.h"
+#include "cli.h"
+#include "cli_texts.h"
+#include "util/system_texts.h"
 
 #include <cerrno>
 #include <csignal>
@@ -12,6 +15,11 @@
 #endif
 
 namespace k528::cli {
+
+namespace {
+// The system's reason for `errnum` in the command line's language.
+std::string reason(int errnum) { return util::systemText(util::systemError(errnum), russianCommandLine()); }
+} // namespace
 
 std::vector<std::filesystem::path> helperCandidates(std::string_view name) {
     std::error_code ec;
@@ -36,27 +44,26 @@ std::string helperSearchText(std::string_view name) {
             text += ", ";
         text += c.string();
     }
-    return text.empty() ? std::string("(k528's own folder is unknown)") : text;
+    return text.empty() ? cliText("helper.unknown-folder") : text;
 }
 
 bool runHelperWithInput(std::string_view name, std::string_view command, const std::vector<std::string>& args,
                         const std::function<bool(std::FILE*)>& write) {
     const std::string helper = findHelper(name).string();
     if (helper.empty()) {
-        std::fprintf(stderr, "k528: %.*s needs the renderer %.*s (built with the desktop program; looked for %s)\n",
-                     static_cast<int>(command.size()), command.data(), static_cast<int>(name.size()), name.data(),
-                     helperSearchText(name).c_str());
+        std::fprintf(stderr, "k528: %s\n",
+                     cliText("helper.missing", {std::string(command), std::string(name), helperSearchText(name)}).c_str());
         return false;
     }
     int fd[2];
     if (pipe(fd) != 0) {
-        std::fprintf(stderr, "k528: pipe: %s\n", std::strerror(errno));
+        std::fprintf(stderr, "k528: %s\n", cliText("helper.cannot-start", {"pipe", reason(errno)}).c_str());
         return false;
     }
     std::fflush(stdout);
     const pid_t pid = fork();
     if (pid < 0) {
-        std::fprintf(stderr, "k528: fork: %s\n", std::strerror(errno));
+        std::fprintf(stderr, "k528: %s\n", cliText("helper.cannot-start", {"fork", reason(errno)}).c_str());
         close(fd[0]);
         close(fd[1]);
         return false;
@@ -70,7 +77,7 @@ bool runHelperWithInput(std::string_view name, std::string_view command, const s
             argv.push_back(a.c_str());
         argv.push_back(nullptr);
         execv(helper.c_str(), const_cast<char* const*>(argv.data()));
-        std::fprintf(stderr, "k528: cannot run %s: %s\n", helper.c_str(), std::strerror(errno));
+        std::fprintf(stderr, "k528: %s\n", cliText("helper.cannot-run", {helper, reason(errno)}).c_str());
         _exit(2);
     }
     close(fd[0]);
@@ -84,7 +91,7 @@ bool runHelperWithInput(std::string_view name, std::string_view command, const s
     int status = 0;
     waitpid(pid, &status, 0);
     if (!WIFEXITED(status))
-        std::fprintf(stderr, "k528: the renderer %s stopped abnormally\n", helper.c_str());
+        std::fprintf(stderr, "k528: %s\n", cliText("helper.abnormal", {helper}).c_str());
     return WIFEXITED(status) && WEXITSTATUS(status) == 0 && written;
 }
 

@@ -72,7 +72,7 @@ int loadProgramSetup(const Args& args, ProgramSetup& out, std::FILE* diagOut) {
         return ExitInputErrors;
     }
     if (parsed.store.empty()) {
-        std::fprintf(stderr, "k528: %s holds no program\n", displayName(path).c_str());
+        std::fprintf(stderr, "k528: %s\n", cliText("file.no-program", {displayName(path)}).c_str());
         return ExitInputErrors;
     }
     if (checked.hasErrors()) {

@@ -428,7 +428,21 @@ std::vector<AuditEntry> Database::audit(int limit, std::string_view machine) con
     return d_->store->audit(limit, machine);
 }
 
-std::string Database::checkIntegrity() const {
+std::string_view integrityProblemName(IntegrityProblem::Kind kind) {
+    using K = IntegrityProblem::Kind;
+    switch (kind) {
+    case K::Pages: return "pages";
+    case K::ForeignKey: return "foreign-key";
+    case K::ProgramChecksum: return "program-checksum";
+    case K::ChangeAuthors: return "change-authors";
+    case K::ItemHistoryDiffers: return "item-history-differs";
+    case K::ItemHistoryMissing: return "item-history-missing";
+    case K::Revisions: return "revisions";
+    }
+    return "?";
+}
+
+std::vector<IntegrityProblem> Database::checkIntegrity() const {
     return d_->store->checkIntegrity();
 }
 

@@ -100,6 +100,27 @@ std::string postgresSchemaSql(std::string_view sql);
 std::span<const Migration> schemaMigrations();
 int latestSchemaVersion();
 
+// One thing checkIntegrity() found wrong: what kind, and the names and
+// numbers it concerns (never words of a language: the command line says it
+// in its --lang from the kind, cli_texts.cpp `db.check.*`).
+struct IntegrityProblem {
+    enum class Kind {
+        Pages,              // SQLite's integrity_check: its own line (args: the line)
+        ForeignKey,         // a row whose key names no row (args: table, rowid)
+        ProgramChecksum,    // a program's text is not its SHA-256 (machine, program number, revision)
+        ChangeAuthors,      // changes that do not name their revision's author and time (machine, revision, count)
+        ItemHistoryDiffers, // an item's row of item_history is not its changes (machine, key)
+        ItemHistoryMissing, // an item with changes has no row in item_history (machine, key)
+        Revisions,          // a machine's revision is not its history's (machine, revision, count, highest)
+    };
+    Kind kind;
+    std::vector<std::string> args;
+    bool operator==(const IntegrityProblem&) const = default;
+};
+// "pages", "foreign-key", "program-checksum", "change-authors",
+// "item-history-differs", "item-history-missing", "revisions".
+std::string_view integrityProblemName(IntegrityProblem::Kind kind);
+
 struct OpenOptions {
     bool create = true;        // create the file when it does not exist
     int busyTimeoutMs = 10000; // how long to wait for another process
@@ -439,9 +460,13 @@ public:
     // Whether this session may do what `role` may (SQLite: always).
     bool mayActAs(std::string_view role) const;
 
-    // Runs PRAGMA integrity_check and foreign_key_check (SQLite), the
-    // checksums of the stored programs (both): "" when fine.
-    std::string checkIntegrity() const;
+    // Everything the database can check of itself (`k528 db check`):
+    // SQLite's integrity_check of every page (the message history's too,
+    // which an open skips) and foreign_key_check, and on both backends the
+    // rules no server knows: programs against their SHA-256, each change
+    // against its revision, item_history against the changes, each machine's
+    // revision against its history. Empty when fine.
+    std::vector<IntegrityProblem> checkIntegrity() const;
 
     // The storage, for the other parts of core/db on this database
     // (db::MessageLog); not for use outside core/db.

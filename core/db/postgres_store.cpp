@@ -159,7 +159,7 @@ int PostgresStore::schemaVersion() {
     return static_cast<int>(conn_->queryInt("SELECT version FROM k528_schema"));
 }
 
-std::string PostgresStore::checkIntegrity() {
+std::vector<IntegrityProblem> PostgresStore::checkIntegrity() {
     // The server keeps its pages and keys; what it cannot know is ours.
     return checkRows();
 }

@@ -20,7 +20,7 @@ public:
 
     bool snapshotOutdated() const override { return false; }
     int schemaVersion() override;
-    std::string checkIntegrity() override;
+    std::vector<IntegrityProblem> checkIntegrity() override;
     Backend backend() const override { return Backend::Postgres; }
     sql::Connection& connection() override { return *conn_; }
     std::string sessionUser() override { return user_; }

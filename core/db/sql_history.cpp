@@ -375,20 +375,17 @@ std::optional<ProgramRow> SqlStore::programAt(std::int64_t id, int number, int r
     return r;
 }
 
-std::string SqlStore::checkRows() {
-    std::string problems;
-    const auto add = [&](const std::string& p) {
-        problems += (problems.empty() ? "" : "; ") + p;
-    };
+std::vector<IntegrityProblem> SqlStore::checkRows() {
+    using K = IntegrityProblem::Kind;
+    std::vector<IntegrityProblem> problems;
+    const auto add = [&](K kind, std::vector<std::string> args) { problems.push_back({kind, std::move(args)}); };
     {
         auto& q = query("SELECT m.name, p.number, p.revision, p.text, p.sha256 FROM "
                         "program_revisions p JOIN machines m ON m.id = p.machine_id WHERE "
                         "p.text IS NOT NULL ORDER BY m.name, p.number, p.revision");
         while (q.step())
             if (sha256Hex(q.text(3)) != q.text(4))
-                add("machine " + q.text(0) + " program L" + std::to_string(q.i32(1)) +
-                    " of revision " + std::to_string(q.i32(2)) +
-                    " does not match its SHA-256 checksum");
+                add(K::ProgramChecksum, {q.text(0), std::to_string(q.i32(1)), std::to_string(q.i32(2))});
     }
     if (changesKeepAuthors()) {
         // Each change carries its revision's author and time (copies made in
@@ -399,9 +396,7 @@ std::string SqlStore::checkRows() {
                         "ON m.id = c.machine_id WHERE c.author <> r.author OR c.at <> r.at "
                         "GROUP BY m.name, c.revision ORDER BY m.name, c.revision");
         while (q.step())
-            add("machine " + q.text(0) + " revision " + std::to_string(q.i32(1)) + ": " +
-                std::to_string(q.i64(2)) +
-                " of its changes do not name the revision's author and time");
+            add(K::ChangeAuthors, {q.text(0), std::to_string(q.i32(1)), std::to_string(q.i64(2))});
     }
     if (itemHistoryKept()) {
         // Each item's row of item_history holds its changes, no more, no
@@ -426,23 +421,20 @@ std::string SqlStore::checkRows() {
                                       e.row.section, e.row.label, e.row.before, e.row.after);
             const auto it = expected.find({name, key});
             if (it == expected.end() || it->second != kept)
-                add("machine " + name + ": the history of " + key +
-                    " in item_history is not that of its changes");
+                add(K::ItemHistoryDiffers, {name, key});
             if (it != expected.end())
                 expected.erase(it);
         }
         for (const auto& [item, entries] : expected)
-            add("machine " + item.first + ": the history of " + item.second +
-                " is missing from item_history");
+            add(K::ItemHistoryMissing, {item.first, item.second});
     }
     auto& r = query("SELECT m.name, m.revision, (SELECT max(r.revision) FROM revisions r WHERE "
                     "r.machine_id = m.id), (SELECT count(*) FROM revisions r WHERE r.machine_id = "
                     "m.id) FROM machines m ORDER BY m.name");
     while (r.step())
         if (r.i64(1) != r.i64(2) || r.i64(1) != r.i64(3))
-            add("machine " + r.text(0) + " is at revision " + std::to_string(r.i64(1)) +
-                " but its history holds " + std::to_string(r.i64(3)) + " revisions up to " +
-                std::to_string(r.i64(2)));
+            add(K::Revisions, {r.text(0), std::to_string(r.i64(1)), std::to_string(r.i64(3)),
+                               std::to_string(r.i64(2))});
     return problems;
 }
 

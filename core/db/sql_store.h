@@ -97,8 +97,8 @@ protected:
     bool definitionsCurrent();
     // What no backend checks by itself: every program version's text
     // against its SHA-256, every machine's revision against its history.
-    // "" when fine.
-    std::string checkRows();
+    // Empty when fine.
+    std::vector<IntegrityProblem> checkRows();
 
     std::filesystem::path path_;
     OpenReport report_;

@@ -619,23 +619,25 @@ void SqliteStore::refreshDefinitions(const std::string& author) {
     }
 }
 
-std::string SqliteStore::checkIntegrity() {
-    std::string problems;
+std::vector<IntegrityProblem> SqliteStore::checkIntegrity() {
+    using K = IntegrityProblem::Kind;
+    std::vector<IntegrityProblem> problems;
     sql::Stmt ic(db_, "PRAGMA integrity_check");
     while (ic.step())
         if (const std::string line = ic.text(0); line != "ok")
-            problems += (problems.empty() ? "" : "; ") + line;
+            problems.push_back({K::Pages, {line}});
     try {
         sql::Stmt fk(db_, "PRAGMA foreign_key_check");
         while (fk.step())
-            problems += (problems.empty() ? "" : "; ") + std::string("foreign key: ") + fk.text(0) +
-                        " row " + std::to_string(fk.i64(1));
+            problems.push_back({K::ForeignKey, {fk.text(0), std::to_string(fk.i64(1))}});
     } catch (const Error& e) {
-        // Damage the integrity check listed can stop the key check: say it.
+        // Damage the integrity check listed can stop the key check: say
+        // SQLite's words of it.
         if (e.kind() == ErrorKind::Busy)
             throw;
-        problems += (problems.empty() ? "" : "; ") + std::string(e.what());
+        problems.push_back({K::Pages, {e.detail().empty() ? std::string(e.what()) : e.detail()}});
     }
+    // Rows read from damaged pages would add findings of the damage itself.
     if (problems.empty())
         problems = checkRows();
     return problems;

@@ -26,7 +26,7 @@ public:
 
     bool snapshotOutdated() const override;
     int schemaVersion() override;
-    std::string checkIntegrity() override;
+    std::vector<IntegrityProblem> checkIntegrity() override;
     Backend backend() const override { return Backend::Sqlite; }
     sql::Connection& connection() override { return conn_; }
     bool changedElsewhere(std::vector<std::string>& machines) override;

@@ -57,7 +57,7 @@ public:
     virtual ReadOnlyReason readOnly() const = 0;
     virtual bool snapshotOutdated() const = 0;
     virtual int schemaVersion() = 0;
-    virtual std::string checkIntegrity() = 0;
+    virtual std::vector<IntegrityProblem> checkIntegrity() = 0;
     virtual Backend backend() const = 0;
     // The connection, for the other stores of core/db on this database
     // (db::MessageLog) and for copying.

@@ -400,6 +400,24 @@ private slots:
         row("check --blank", {"check", "--profile", "training-lathe", "--blank", "UCG,x", shaft}, "", 2,
             "k528: --blank UCG,x: UCG: после «UCG,» ожидался тип N",
             "k528: --blank UCG,x: UCG: expected the type N after UCG,");
+        // A file of comments only: read, but no program to run.
+        const QString empty = dir_.filePath("comments-only.k528");
+        {
+            QFile f(empty);
+            QVERIFY(f.open(QIODevice::WriteOnly) && f.write("; RU: пусто\n; EN: nothing here\n") > 0);
+        }
+        row("run: no program", {"run", empty}, "", 1, "comments-only.k528 нет ни одной программы",
+            "comments-only.k528 holds no program");
+        row("path: no program", {"path", empty}, "", 1, "comments-only.k528 нет ни одной программы",
+            "comments-only.k528 holds no program");
+        row("unknown option", {"check", "--nosuch", shaft}, "", 2, "неизвестный параметр --nosuch",
+            "unknown option --nosuch");
+        row("option that takes no value", {"check", "--json=yes", shaft}, "", 2,
+            "параметр --json не принимает значения", "option --json takes no value");
+        row("db: unknown subcommand", {"db", "nosuch"}, "", 2, "неизвестная подкоманда db «nosuch» (init, machines",
+            "unknown db subcommand 'nosuch' (init, machines");
+        row("db check: an argument", {"db", "check", "extra"}, "", 2, "db check не принимает аргументов",
+            "db check takes no arguments");
 #ifdef K528_CLI_LANG_SHOP
         row("shop publish --mqtt", {"shop", "publish", "--mqtt", "http://127.0.0.1:1883"}, "", 2,
             "k528: --mqtt: «http://127.0.0.1:1883» — не mqtt://ХОСТ[:ПОРТ] (MQTT без шифрования; TLS не поддерживается)",

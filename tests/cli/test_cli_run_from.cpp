@@ -66,12 +66,21 @@ private slots:
         QCOMPARE(bad.exitCode, 2);
         const CliResult pass = runK528({"run", "--pass", "2", kShaft});
         QCOMPARE(pass.exitCode, 2);
-        const CliResult never = runK528({"run", "--from", "L2:N2", "--pass", "6", kShaft});
+        const CliResult never = runK528({"run", "--from", "L2:N2", "--pass", "6", kShaft, "--lang", "en"});
         QCOMPARE(never.exitCode, 1);
-        QVERIFY2(never.err.contains("never reaches"), qPrintable(never.err));
-        const CliResult osc = runK528({"run", "--profile", "grinder-205", "--from", "N6", kGrinder});
+        QVERIFY2(never.err.contains("the program never reaches L2 N2 for the 6. time (its preview ended: completed)"),
+                 qPrintable(never.err));
+        const CliResult neverRu = runK528({"run", "--from", "L2:N2", "--pass", "6", kShaft});
+        QCOMPARE(neverRu.exitCode, 1);
+        QVERIFY2(neverRu.err.contains(QStringLiteral("программа не доходит до L2 N2 в 6-й раз (её предпросмотр "
+                                                     "закончился: программа выполнена до конца)")),
+                 qPrintable(neverRu.err));
+        const CliResult osc = runK528({"run", "--profile", "grinder-205", "--from", "N6", kGrinder, "--lang", "en"});
         QCOMPARE(osc.exitCode, 1);
         QVERIFY2(osc.err.contains("oscillates"), qPrintable(osc.err));
+        const CliResult oscRu = runK528({"run", "--profile", "grinder-205", "--from", "N6", kGrinder});
+        QCOMPARE(oscRu.exitCode, 1);
+        QVERIFY2(oscRu.err.contains(QStringLiteral("осциллирует")), qPrintable(oscRu.err));
     }
 
     void helpNamesIt() {

@@ -7,6 +7,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <sqlite3.h>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,16 @@
 namespace QTest {
 template <> inline char* toString(const std::string& s) {
     return qstrdup(s.c_str());
+}
+// ... and what a check found, kind and arguments.
+template <> inline char* toString(const std::vector<k528::db::IntegrityProblem>& problems) {
+    std::string s;
+    for (const auto& p : problems) {
+        s += (s.empty() ? "" : "; ") + std::string(k528::db::integrityProblemName(p.kind));
+        for (const std::string& a : p.args)
+            s += " " + a;
+    }
+    return qstrdup(s.empty() ? "(none)" : s.c_str());
 }
 } // namespace QTest
 
@@ -67,6 +78,29 @@ inline double envNumber(const char* name, double fallback) {
 // cluster; the PG* variables point at it) with K528_TEST_BACKEND=postgresql.
 inline bool onPostgres() {
     return qgetenv("K528_TEST_BACKEND") == "postgresql";
+}
+
+// Runs `sql` on the database as a program other than K528 Studio would
+// (psql, or SQLite's library): "" or the error.
+inline std::string runSql(const db::Location& where, const std::string& sql) {
+    if (onPostgres()) {
+        QProcess p;
+        p.start("psql", {"-XAtq", "-v", "ON_ERROR_STOP=1", QString::fromStdString(where.uri()),
+                         "-c", QString::fromStdString(sql)});
+        if (!p.waitForFinished(60000) || p.exitCode() != 0)
+            return "psql failed: " + p.readAllStandardError().toStdString();
+        return {};
+    }
+    sqlite3* db = nullptr;
+    if (sqlite3_open(where.file().c_str(), &db) != SQLITE_OK)
+        return "cannot open";
+    char* err = nullptr;
+    std::string out;
+    if (sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err) != SQLITE_OK)
+        out = err ? err : "error";
+    sqlite3_free(err);
+    sqlite3_close(db);
+    return out;
 }
 
 // A database of its own for one test: the SQLite file `name` in `dir`, or on

@@ -50,6 +50,7 @@ class TestCliDb : public QObject {
 
     QTemporaryDir dir_;
     QString db_;
+    k528::db::Location where_;
 
     CliResult db(QStringList args, const QByteArray& in = {}) {
         args.prepend("db");
@@ -65,8 +66,8 @@ private slots:
     void init() {
         static int n = 0;
         // On PostgreSQL (db.cli.postgresql) a new database for each test.
-        db_ = QString::fromStdString(
-            testLocation(dir_, QString("t%1.db").arg(++n).toStdString()).text());
+        where_ = testLocation(dir_, QString("t%1.db").arg(++n).toStdString());
+        db_ = QString::fromStdString(where_.text());
         QFile::remove(db_);
     }
 
@@ -728,13 +729,61 @@ private slots:
         QCOMPARE(db({"audit", "--limit", "x"}).exitCode, 2);
     }
 
+    // `db check`: a database as written has no problem; SQL that changed
+    // one change's author and not its revision's is named, in the
+    // command's language, exit 1; the check itself writes nothing.
+    void checkNamesWhatIsWrong() {
+        QCOMPARE(db({"init"}).exitCode, 0);
+        QCOMPARE(db({"set", "grinder-205", "C022=2133", "--author", "Петров"}).exitCode, 0);
+        auto r = db({"check"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains(QStringLiteral("проверка    нарушений нет")), qPrintable(r.out));
+        r = db({"check", "--lang", "en", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value("ok").toBool(), true);
+
+        QCOMPARE(runSql(where_, "UPDATE changes SET author = 'X' WHERE revision = 2 AND key = 'C022' AND "
+                                "machine_id = (SELECT id FROM machines WHERE name = 'grinder-205')"),
+                 std::string());
+        const QByteArray before = onPostgres() ? QByteArray() : readAll(db_);
+        r = db({"check", "--lang", "en"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains("check     problems found: "), qPrintable(r.out));
+        QVERIFY2(r.out.contains("machine grinder-205 revision 2: 1 of its changes do not name the revision's "
+                                "author and time"),
+                 qPrintable(r.out));
+        r = db({"check"});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains(QStringLiteral("станок grinder-205, ревизия 2: изменений, где автор и время не те, "
+                                               "что у ревизии: 1")),
+                 qPrintable(r.out));
+        QVERIFY2(!hasEnglishSentence(r.out), qPrintable(r.out));
+        r = db({"check", "--json"});
+        QCOMPARE(r.exitCode, 1);
+        const QJsonObject j = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(j.value("ok").toBool(), false);
+        bool named = false;
+        for (const auto p : j.value("problems").toArray())
+            named = named || (p.toObject().value("kind").toString() == "change-authors" &&
+                              p.toObject().value("args").toArray().at(0).toString() == "grinder-205");
+        QVERIFY2(named, qPrintable(r.out));
+        if (!onPostgres())
+            QCOMPARE(readAll(db_), before);
+        // Usage: no arguments; a database that is not there is not created.
+        QCOMPARE(db({"check", "extra"}).exitCode, 2);
+        const QString absent = dir_.filePath("absent.db");
+        r = runK528({"db", "check", "--db", absent});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(!QFile::exists(absent));
+    }
+
     void unusableDatabaseIsLeftAlone() {
         K528_SQLITE_ONLY();
         const QByteArray junk = "not a database at all\n" + QByteArray(200, 'x');
         QVERIFY(writeFile(db_, junk));
         for (const QStringList& args :
              {QStringList{"init"}, QStringList{"machines"}, QStringList{"show", "grinder-205"},
-              QStringList{"set", "grinder-205", "C022=2133"}}) {
+              QStringList{"set", "grinder-205", "C022=2133"}, QStringList{"check"}}) {
             auto r = db(args + QStringList{"--lang", "en"});
             QCOMPARE(r.exitCode, 2);
             QVERIFY2(r.err.contains("not a K528 Studio database"), qPrintable(r.err));

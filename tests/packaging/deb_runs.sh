@@ -45,7 +45,7 @@ echo "$splugins" | grep -q "^plugin modbus-rtu .*($tmp/root/usr/lib/k528studio/p
     fail "k528studio does not find the installed plugin: $splugins"
 # k528 plot finds its renderer in the helper folder (it may then fail for
 # want of an X server, but not for want of k528-plot).
-plot=$($nodisplay "$tmp/root/usr/bin/k528" plot --out "$tmp/p.png" "$program" 2>&1) || true
+plot=$($nodisplay "$tmp/root/usr/bin/k528" plot --lang en --out "$tmp/p.png" "$program" 2>&1) || true
 case $plot in *"needs the renderer"*) fail "k528 plot does not find the installed k528-plot: $plot" ;; esac
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "$depends" | grep -q libqt6serialbus6 || fail "Depends lacks Qt SerialBus (the link plugin): $depends"

@@ -179,9 +179,12 @@ private slots:
         QSKIP("this build has the renderer k528-sheet");
 #else
         const QString pdf = dir_.filePath("none.pdf");
-        const CliResult r = runK528({"setup-sheet", "--db", db_, "--profile", "training-lathe", "--out", pdf, kShaft});
+        const CliResult r = runK528({"setup-sheet", "--db", db_, "--profile", "training-lathe", "--out", pdf, kShaft,
+                                     "--lang", "en"});
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.err.contains("needs the renderer k528-sheet"), qPrintable(r.err));
+        QVERIFY2(r.err.contains("setup-sheet needs the renderer k528-sheet"), qPrintable(r.err));
+        const CliResult ru = runK528({"setup-sheet", "--db", db_, "--profile", "training-lathe", "--out", pdf, kShaft});
+        QVERIFY2(ru.err.contains(QStringLiteral("setup-sheet: нужна программа отрисовки k528-sheet")), qPrintable(ru.err));
         QVERIFY(!QFile::exists(pdf));
 #endif
     }
