@@ -5,6 +5,7 @@
 // studio from the X server shows wide vertical lines clean (no hatched
 // fringe), as the same scene offscreen does.
 #include "backplot/backplot_widget.h"
+#include "rig/widgets.h"
 #include "backplot/path_job.h"
 #include "backplot/vtk_gl_widget.h"
 #include "editor/editor_tab.h"
@@ -429,8 +430,8 @@ private slots:
             QTest::qWait(150); // laid out and painted
             if (s.view->computing()) {
                 QVERIFY2(within(busy) && within(cancel), "the progress row is outside the window");
-                QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
-                    dir + QStringLiteral("/backplot-progress-%1-%2.png").arg(language, size)));
+                K528_VERIFY_SHOT(s.w.screen()->grabWindow(s.w.winId()),
+                                 QStringLiteral("backplot-progress-%1-%2.png").arg(language, size));
             } else {
                 qInfo("the path was computed before its progress could be photographed");
             }
@@ -439,8 +440,8 @@ private slots:
             QVERIFY(shown.count() > 0 || shown.wait(120000));
             QTRY_VERIFY_WITH_TIMEOUT(!status->text().isEmpty(), 20000); // laid out with its text
             QVERIFY2(within(status), "the note is outside the window");
-            QVERIFY(s.w.screen()->grabWindow(s.w.winId()).save(
-                dir + QStringLiteral("/backplot-cut-off-%1-%2.png").arg(language, size)));
+            K528_VERIFY_SHOT(s.w.screen()->grabWindow(s.w.winId()),
+                             QStringLiteral("backplot-cut-off-%1-%2.png").arg(language, size));
         }
         QVERIFY(k528::studio::setLanguage(QStringLiteral("en")));
     }
@@ -473,12 +474,11 @@ private slots:
         gl->doneCurrent();
         const QImage shot = s.w.screen()->grabWindow(s.w.winId()).toImage();
         QVERIFY(!shot.isNull());
-        const QString out = QStringLiteral(K528_BINARY_DIR "/tests/backplot/studio_backplot.png");
-        QVERIFY(shot.save(out));
+        K528_VERIFY_SHOT(shot, QStringLiteral("studio_backplot.png"));
         {
             const QPoint c = gl->mapTo(&s.w, s.pixelOf(-40, 50));
-            shot.copy(c.x() - 30, c.y() - 30, 60, 60).scaled(480, 480).save(
-                QStringLiteral(K528_BINARY_DIR "/tests/backplot/studio_backplot_zoom.png"));
+            K528_VERIFY_SHOT(shot.copy(c.x() - 30, c.y() - 30, 60, 60).scaled(480, 480),
+                             QStringLiteral("studio_backplot_zoom.png"));
         }
         // The feed N3 runs vertically at Z-40 from X60 to X20, 2 px wide as
         // offscreen. Every row across it must hold the same amount of the

@@ -103,6 +103,14 @@ inline std::string runSql(const db::Location& where, const std::string& sql) {
     return out;
 }
 
+// What Database::checkIntegrity() finds, as one line ("" when fine): a
+// QCOMPARE with "" prints what was found.
+inline std::string integrityText(const db::Database& d) {
+    const std::unique_ptr<char[]> text(QTest::toString(d.checkIntegrity()));
+    const std::string s = text.get();
+    return s == "(none)" ? std::string() : s;
+}
+
 // A database of its own for one test: the SQLite file `name` in `dir`, or on
 // PostgreSQL a new database (UTF-8) named after the test process, `dir` and
 // `name` — the same location for the same dir and name, created empty on

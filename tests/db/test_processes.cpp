@@ -80,7 +80,7 @@ db::OpenOptions opts(int busyMs = 20000) {
 // Opens after a crash: open() runs integrity_check and refuses a damaged file.
 std::string reopenCheck(const db::Location& p) {
     db::Database d = db::Database::open(p, opts());
-    return d.checkIntegrity();
+    return integrityText(d);
 }
 
 } // namespace
@@ -265,7 +265,7 @@ private slots:
             byWriter0 += r.author == "writer0";
         QCOMPARE(byWriter0, kEach);
         QCOMPARE(static_cast<int>(d.history("grinder-205", "C022").size()), kEach + 1);
-        QCOMPARE(d.checkIntegrity(), std::string());
+        QCOMPARE(integrityText(d), std::string());
     }
 
     // Two processes start on a database that does not exist yet: it is

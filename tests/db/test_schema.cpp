@@ -147,7 +147,7 @@ void checkUpgradedFrom(const fs::path& p, int version,
                                             std::to_string(db::latestSchemaVersion()));
     if (more)
         more(d);
-    QVERIFY(d.checkIntegrity().empty());
+    QVERIFY(integrityText(d).empty());
 }
 
 const char* const kV2Sql =
@@ -544,7 +544,7 @@ private slots:
             QVERIFY(d.openReport().recovered);
             QVERIFY(d.openReport().created);
             QCOMPARE(d.machines().size(), std::size_t(2));
-            QCOMPARE(d.checkIntegrity(), std::string());
+            QCOMPARE(integrityText(d), std::string());
         }
         QVERIFY(!fs::exists(p.string() + "-journal"));
         Raw raw(p);
@@ -579,7 +579,7 @@ private slots:
             db::Database d = db::Database::open(p, testOptions());
             QVERIFY(!d.openReport().created);
             QCOMPARE(d.machines().size(), std::size_t(2));
-            QCOMPARE(d.checkIntegrity(), std::string());
+            QCOMPARE(integrityText(d), std::string());
         }
         QVERIFY(!fs::exists(p.string() + "-journal"));
         Raw raw(p);

@@ -53,6 +53,25 @@ public:
         sub.start("mosquitto_sub", {"-h", "127.0.0.1", "-p", QString::number(port_), "-t", topic, "-v", "-C",
                                     QString::number(count), "-W", QString::number(seconds)});
     }
+    // The same, returning once the broker has acknowledged the subscription
+    // (mosquitto_sub -d says "received SUBACK"), so that what is published
+    // next reaches it; what it printed so far (debug lines among the
+    // messages: read them with the topic's prefix) into `out`. False if no
+    // acknowledgement came within `ms`.
+    bool subscribeAcknowledged(QProcess& sub, const QString& topic, int count, int seconds, QByteArray& out,
+                               int ms = 10000) const {
+        sub.start("mosquitto_sub", {"-d", "-h", "127.0.0.1", "-p", QString::number(port_), "-t", topic, "-v", "-C",
+                                    QString::number(count), "-W", QString::number(seconds)});
+        if (!sub.waitForStarted())
+            return false;
+        QElapsedTimer t;
+        t.start();
+        while (!out.contains("received SUBACK") && t.elapsed() < ms && sub.state() == QProcess::Running) {
+            sub.waitForReadyRead(50);
+            out += sub.readAllStandardOutput();
+        }
+        return out.contains("received SUBACK");
+    }
 
 private:
     QProcess p_;

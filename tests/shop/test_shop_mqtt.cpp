@@ -24,7 +24,8 @@ namespace {
 
 const QString kCli = QStringLiteral(K528_CLI);
 
-// What mosquitto_sub -v prints: "TOPIC PAYLOAD" a line.
+// What mosquitto_sub -v prints: "TOPIC PAYLOAD" a line (with -d, among
+// its debug lines: only lines of our topics are messages).
 struct Message {
     QString topic;
     QJsonObject payload;
@@ -34,7 +35,7 @@ QList<Message> messages(const QByteArray& out) {
     QList<Message> list;
     for (const QByteArray& line : out.split('\n')) {
         const qsizetype space = line.indexOf(' ');
-        if (space <= 0)
+        if (space <= 0 || !line.startsWith("k528/"))
             continue;
         list.push_back({QString::fromUtf8(line.left(space)), QJsonDocument::fromJson(line.mid(space + 1)).object()});
     }
@@ -56,8 +57,7 @@ class TestShopMqtt : public QObject {
         broker_.subscribe(sub, topic, count, seconds);
         QVERIFY(sub.waitForStarted());
     }
-    QByteArray readUntil(QProcess& p, const std::function<bool(const QByteArray&)>& done, int ms) {
-        QByteArray out;
+    QByteArray readUntil(QProcess& p, const std::function<bool(const QByteArray&)>& done, int ms, QByteArray out = {}) {
         QElapsedTimer t;
         t.start();
         while (!done(out) && t.elapsed() < ms) {
@@ -133,25 +133,26 @@ private slots:
 
         // A state change on a controller's K923 (a2: F1) reaches its topic.
         QProcess change;
-        subscribe(change, "k528/a2/state", 2, 10); // the retained one, then the change
-        QTest::qWait(300);
+        QByteArray out;
+        // The retained one, then the change.
+        QVERIFY2(broker_.subscribeAcknowledged(change, "k528/a2/state", 2, 10, out), out.constData());
         shop_.serves[1]->process().write("F1\n");
         QVERIFY(shop_.serves[1]->process().waitForBytesWritten(3000));
-        QByteArray out = readUntil(change, [](const QByteArray& o) { return o.count('\n') >= 2; }, 10000);
+        out = readUntil(change, [](const QByteArray& o) { return messages(o).size() >= 2; }, 10000, out);
         QList<Message> c = messages(out);
         QCOMPARE(c.size(), 2);
         QCOMPARE(c[1].payload["mode"].toInt(), 1);
 
         // An alarm: a3 comes back on a machine beyond its limit switch (raised), then as it was (cleared).
         QProcess alarms;
-        subscribe(alarms, "k528/a3/alarms", 2, 30);
-        QTest::qWait(300);
+        out.clear();
+        QVERIFY2(broker_.subscribeAcknowledged(alarms, "k528/a3/alarms", 2, 30, out), out.constData());
         shop_.serves[2]->kill();
         QVERIFY2(shop_.serves[2]->start({"--keys", kWorkWithPcKeys, "--profile", overrun_, "--db", shop_.db}, &said), said.constData());
-        out = readUntil(alarms, [](const QByteArray& o) { return o.count('\n') >= 1; }, 10000);
+        out = readUntil(alarms, [](const QByteArray& o) { return messages(o).size() >= 1; }, 10000, out);
         shop_.serves[2]->kill();
         QVERIFY2(shop_.serves[2]->start({"--keys", kWorkWithPcKeys}, &said), said.constData());
-        out += readUntil(alarms, [](const QByteArray& o) { return o.count('\n') >= 1; }, 10000);
+        out = readUntil(alarms, [](const QByteArray& o) { return messages(o).size() >= 2; }, 10000, out);
         const QList<Message> a = messages(out);
         QCOMPARE(a.size(), 2);
         QCOMPARE(a[0].payload["event"].toString(), QStringLiteral("raised"));
@@ -180,12 +181,13 @@ private slots:
         QByteArray said;
         QTRY_VERIFY_WITH_TIMEOUT((said += pub.readAllStandardError()).contains("k528 shop publish:"), 10000);
         QProcess will;
-        subscribe(will, "k528/_publisher/victim", 2, 10); // online (retained), then the will
-        QTest::qWait(300);
+        QByteArray out;
+        // Online (retained), then the will.
+        QVERIFY2(broker_.subscribeAcknowledged(will, "k528/_publisher/victim", 2, 10, out), out.constData());
         pub.kill();
         pub.waitForFinished(3000);
         QVERIFY(will.waitForFinished(15000));
-        const QList<Message> w = messages(will.readAllStandardOutput());
+        const QList<Message> w = messages(out + will.readAllStandardOutput());
         QCOMPARE(w.size(), 2);
         QVERIFY(w[0].payload["online"].toBool());
         QCOMPARE(w[1].payload["online"].toBool(), false);

@@ -333,11 +333,9 @@ private slots:
         QVERIFY2(!en.isEmpty() && en != ru, qPrintable(en));
         QCOMPARE(means(), en);
         QVERIFY(setLanguage(QStringLiteral("ru")));
-        QTest::qWait(20); // the language change reaches the pane
-        QCOMPARE(means(), ru);
+        QTRY_COMPARE_WITH_TIMEOUT(means(), ru, 5000); // once the language change reaches the pane
         QVERIFY(setLanguage(QStringLiteral("en")));
-        QTest::qWait(20);
-        QCOMPARE(means(), en);
+        QTRY_COMPARE_WITH_TIMEOUT(means(), en, 5000);
     }
 
     void importExportAndDiff() {

@@ -163,8 +163,8 @@ private slots:
                                                                     .arg(inDock.right()).arg(dock->width())));
             QVERIFY2(label->minimumSizeHint().width() <= label->width(),
                      qPrintable(QStringLiteral("needs %1 of %2").arg(label->minimumSizeHint().width()).arg(label->width())));
-            QVERIFY(w.grab().save(QDir::current().filePath(
-                QStringLiteral("connect_failure_%1_%2.png").arg(QLatin1String(c.plugin), QLatin1String(c.lang)))));
+            K528_VERIFY_SHOT(w.grab(),
+                             QStringLiteral("connect_failure_%1_%2.png").arg(QLatin1String(c.plugin), QLatin1String(c.lang)));
         }
         QVERIFY(setLanguage("en"));
     }

@@ -6,6 +6,7 @@
 // differences and the change applied again on top. Runs on SQLite, and as
 // studio.database_ui.postgresql inside its own pg_virtualenv cluster.
 #include "db/db_test_util.h"
+#include "rig/widgets.h"
 
 #include "constants/constants_dialogs.h"
 #include "constants/constants_dock.h"
@@ -92,9 +93,7 @@ void screenshot(QMainWindow& w, const char* dock, const QString& name) {
     for (const QSize size : {QSize(1366, 768), QSize(1920, 1080)}) {
         w.resize(size);
         QTest::qWait(400);
-        const QString file = QStringLiteral("%1/%2-%3x%4.png").arg(dir, name).arg(size.width()).arg(size.height());
-        if (!w.grab().save(file))
-            qWarning("cannot save %s", qPrintable(file));
+        K528_VERIFY_SHOT(w.grab(), QStringLiteral("%1-%2x%3.png").arg(name).arg(size.width()).arg(size.height()));
     }
 }
 
@@ -167,7 +166,7 @@ private slots:
         QVERIFY(follow);
         QSignalSpy followed(follow, &ConstantsFollow::followed);
         QSignalSpy told(DatabaseWatch::instance(), &DatabaseWatch::revision);
-        QTest::qWait(2 * DatabaseWatch::kPollMs); // the watch has seen the database as it is
+        DatabaseWatch::instance()->check(); // the watch has seen the database as it is (its timer may not have yet)
 
         const std::int64_t before = pane.editor().values()[22];
         const std::int64_t wanted = before == 5000 ? 6000 : 5000;

@@ -374,9 +374,7 @@ private slots:
         QVERIFY(b.executingMarkerAt(8)); // the breakpoint's line, inside L5
         QTest::qWait(50);
         const QImage img = b.window.grab().toImage();
-        const QString out = QStringLiteral(K528_BINARY_DIR) + "/tests/studio/debugger-screenshot.png";
-        QVERIFY(img.save(out));
-        qInfo("screenshot: %s", qPrintable(out));
+        K528_VERIFY_SHOT(img, QStringLiteral("debugger-screenshot.png"));
     }
 };
 

@@ -4,6 +4,7 @@
 // checked too; colours come from core's tokens; unsaved changes survive a
 // cancelled close; a screenshot of the editor with diagnostics.
 #include "db/database.h"
+#include "rig/widgets.h"
 #include "editor/cycle_time_label.h"
 #include "editor/editor_tab.h"
 #include "editor/refactor_actions.h"
@@ -647,9 +648,7 @@ private slots:
         QVERIFY(tab->problems()->model()->rowCount() >= 2);
         QTest::qWait(50);
         const QImage img = window.grab().toImage();
-        const QString out = QStringLiteral(K528_BINARY_DIR) + "/tests/studio/editor-screenshot.png";
-        QVERIFY(img.save(out));
-        qInfo("screenshot: %s", qPrintable(out));
+        K528_VERIFY_SHOT(img, QStringLiteral("editor-screenshot.png"));
     }
 };
 

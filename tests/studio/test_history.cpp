@@ -4,6 +4,7 @@
 // its worker thread, the history survives closing and reopening the
 // database, the main window has the dock; a screenshot of the dock.
 #include "catalog/messages.h"
+#include "rig/widgets.h"
 #include "history/history_dock.h"
 #include "history/history_model.h"
 #include "history/history_service.h"
@@ -111,9 +112,7 @@ private slots:
             // The screenshot of the dock.
             view.searchBox()->setText("");
             QTest::qWait(50);
-            const QString png = QString(K528_BINARY_DIR) + "/screenshots/history-dock.png";
-            QDir().mkpath(QString(K528_BINARY_DIR) + "/screenshots");
-            QVERIFY(view.grab().save(png));
+            K528_VERIFY_SHOT(view.grab(), QStringLiteral("history-dock.png"));
         }
         // Closed and reopened: the same rows, the acknowledgement kept.
         SimulationSession session(lathe());

@@ -5,6 +5,7 @@
 // at a point of the panel reaches the key under it.
 #define QTEST_QPA_MOUSE_HANDLING
 #include "k923/k923_widget.h"
+#include "rig/widgets.h"
 #include "k923/key_face.h"
 #include "k923/key_map.h"
 #include "k923/keyboard_map_dialog.h"
@@ -644,11 +645,8 @@ private slots:
             d.leds.override = 0b0001;
             s.w.setDisplay(d);
             const QImage img = s.w.grab().toImage();
-            QVERIFY(img.save(
-                QStringLiteral(K528_BINARY_DIR "/test-output/k923-sample-%1.png").arg(++n)));
-            const QImage lcdImg = s.w.lcd()->grab().toImage();
-            QVERIFY(
-                lcdImg.save(QStringLiteral(K528_BINARY_DIR "/test-output/k923-lcd-%1.png").arg(n)));
+            K528_VERIFY_SHOT(img, QStringLiteral("k923-sample-%1.png").arg(++n));
+            K528_VERIFY_SHOT(s.w.lcd()->grab(), QStringLiteral("k923-lcd-%1.png").arg(n));
         }
     }
 };

@@ -3,6 +3,7 @@
 // its lamps follow the machine; the messages and axes docks show it; the
 // session advances with real time, pauses and runs faster.
 #include "engine/interface_words.h"
+#include "rig/widgets.h"
 #include "k923/k923_widget.h"
 #include "k923/panel_key.h"
 #include "language.h"
@@ -572,7 +573,7 @@ private slots:
                 ownPanel = std::make_unique<MachinePanelWidget>(*s);
                 ownPanel->resize(560, 520);
                 s->advance(10);
-                QVERIFY(ownPanel->grab().save(dir + "/grinder-panel.png"));
+                K528_VERIFY_SHOT(ownPanel->grab(), QStringLiteral("grinder-panel.png"));
             } else {
                 sim.selectHandwheel(machine::HandwheelAxis::Z);
                 sim.setOverrideSwitch(9);
@@ -581,10 +582,10 @@ private slots:
                 s->advance(700);
                 w.axesDock()->raise();
                 QApplication::processEvents();
-                QVERIFY(w.grab().save(dir + "/lathe-axes.png"));
+                K528_VERIFY_SHOT(w.grab(), QStringLiteral("lathe-axes.png"));
                 w.messagesDock()->raise();
                 QApplication::processEvents();
-                QVERIFY(w.grab().save(dir + "/lathe-running.png"));
+                K528_VERIFY_SHOT(w.grab(), QStringLiteral("lathe-running.png"));
             }
         }
         QVERIFY(setLanguage("en"));

@@ -132,8 +132,9 @@ bool switchTo(MainWindow& w, const QString& id, QString* why) {
     if (!reachable(button, why))
         return false;
     QTest::mouseClick(button, Qt::LeftButton);
-    QTest::qWait(50); // the deferred share of the docks
-    return w.workspaces()->current() == id;
+    // Switched; the deferred share of the docks is awaited by REACH, the
+    // checks that follow.
+    return until([&] { return w.workspaces()->current() == id; }, 5000);
 }
 
 void screenshot(MainWindow& w, const QString& what) {

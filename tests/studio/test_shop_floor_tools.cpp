@@ -3,6 +3,7 @@
 // as the machine's preset (the R-parameter dock), and teach-in in the editor
 // (the viewed controller's position as a frame or into a preset R-parameter).
 #include "constants/constants_dock.h"
+#include "rig/widgets.h"
 #include "constants/cutting_dialog.h"
 #include "constants/machine_store.h"
 #include "controller/simulated_controller.h"
@@ -96,7 +97,7 @@ private slots:
             TrialPartDialog* fresh = pane.trialPartDialog();
             fresh->show();
             QTest::qWait(50);
-            QVERIFY(fresh->grab().save(shots + "/trial-dialog-" + lang + ".png"));
+            K528_VERIFY_SHOT(fresh->grab(), "trial-dialog-" + lang + ".png");
             if (lang == "ru")
                 QVERIFY2(fresh->result()->text().startsWith(QStringLiteral("Введите")), qPrintable(fresh->result()->text()));
             fresh->close();

@@ -245,11 +245,10 @@ private slots:
                 QApplication::processEvents();
                 if (!shots.isEmpty()) {
                     QDir().mkpath(QString::fromLocal8Bit(shots));
-                    QVERIFY(w.grab().save(QStringLiteral("%1/shop16_%2x%3_%4.png")
-                                              .arg(QString::fromLocal8Bit(shots))
-                                              .arg(size.width())
-                                              .arg(size.height())
-                                              .arg(lang)));
+                    K528_VERIFY_SHOT(w.grab(), QStringLiteral("shop16_%1x%2_%3.png")
+                                                   .arg(size.width())
+                                                   .arg(size.height())
+                                                   .arg(lang));
                 }
             }
         QVERIFY(setLanguage("en"));

@@ -4,6 +4,7 @@
 // the class's table and its CSV; the main window places the dock in the
 // Training workspace and its View menu toggles it.
 #include "editor/editor_tab.h"
+#include "rig/widgets.h"
 #include "editor/program_editor.h"
 #include "language.h"
 #include "main_window.h"
@@ -298,8 +299,8 @@ private slots:
             const QString dir = QStringLiteral(K528_BINARY_DIR "/tests/screenshots");
             QDir().mkpath(dir);
             const QSize screen = w.screen()->size();
-            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-attempt.png")
-                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            K528_VERIFY_SHOT(w.grab(), QStringLiteral("training-pane-%1-%2x%3-attempt.png")
+                                             .arg(lang).arg(screen.width()).arg(screen.height()));
             pane->tabs()->setCurrentIndex(2);
             QApplication::processEvents();
             QVERIFY(pane->attemptsTable()->rowCount() >= 1);
@@ -311,8 +312,8 @@ private slots:
                 const QRect r(c->mapTo(&w, QPoint(0, 0)), c->size());
                 QVERIFY2(inside.contains(r), qPrintable(c->objectName()));
             }
-            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-class.png")
-                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            K528_VERIFY_SHOT(w.grab(), QStringLiteral("training-pane-%1-%2x%3-class.png")
+                                             .arg(lang).arg(screen.width()).arg(screen.height()));
             // The class report as PDF in the window's language, kept beside the screenshots.
             const QString report = dir + QStringLiteral("/training-class-report-%1-%2x%3.pdf")
                                              .arg(lang).arg(screen.width()).arg(screen.height());
@@ -329,13 +330,13 @@ private slots:
                      QString());
             QApplication::processEvents();
             QVERIFY(pane->lockNote()->text().contains(QStringLiteral("-21")));
-            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-locked.png")
-                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            K528_VERIFY_SHOT(w.grab(), QStringLiteral("training-pane-%1-%2x%3-locked.png")
+                                             .arg(lang).arg(screen.width()).arg(screen.height()));
             QCOMPARE(pane->unlockConstants(), QString());
             pane->tabs()->setCurrentIndex(0);
             QApplication::processEvents();
-            QVERIFY(w.grab().save(dir + QStringLiteral("/training-pane-%1-%2x%3-task.png")
-                                            .arg(lang).arg(screen.width()).arg(screen.height())));
+            K528_VERIFY_SHOT(w.grab(), QStringLiteral("training-pane-%1-%2x%3-task.png")
+                                             .arg(lang).arg(screen.width()).arg(screen.height()));
         }
         QVERIFY(setLanguage(QStringLiteral("en")));
     }
