@@ -60,8 +60,11 @@ public:
     // acknowledgement came within `ms`.
     bool subscribeAcknowledged(QProcess& sub, const QString& topic, int count, int seconds, QByteArray& out,
                                int ms = 10000) const {
-        sub.start("mosquitto_sub", {"-d", "-h", "127.0.0.1", "-p", QString::number(port_), "-t", topic, "-v", "-C",
-                                    QString::number(count), "-W", QString::number(seconds)});
+        // Line-buffered (coreutils' stdbuf): into a pipe mosquitto_sub flushes
+        // only after a message, and a topic with none retained would hide
+        // the acknowledgement until the first.
+        sub.start("stdbuf", {"-oL", "mosquitto_sub", "-d", "-h", "127.0.0.1", "-p", QString::number(port_), "-t", topic,
+                             "-v", "-C", QString::number(count), "-W", QString::number(seconds)});
         if (!sub.waitForStarted())
             return false;
         QElapsedTimer t;
