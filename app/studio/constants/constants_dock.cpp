@@ -15,6 +15,7 @@
 #include "profile/text_format.h"
 #include "controller/controller.h"
 #include "controller/push_preview.h"
+#include "parameters/cell_text_delegate.h"
 #include "widgets.h"
 
 #include <QApplication>
@@ -31,7 +32,6 @@
 #include <QProgressBar>
 #include <QPromise>
 #include <QSaveFile>
-#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QToolButton>
 #include <QUndoStack>
@@ -44,10 +44,11 @@ namespace {
 // The value column's editor: every keystroke is checked as the controller
 // would check the value (range and cross-checks); a value it would refuse
 // is shown red with the manual's message, and Enter does not commit it.
-class ValueDelegate : public QStyledItemDelegate {
+// Its cells are drawn as the table's others (CellTextDelegate).
+class ValueDelegate : public CellTextDelegate {
 public:
     ValueDelegate(ConstantsEditor& e, std::function<void(const QString&, bool)> say, QObject* parent)
-        : QStyledItemDelegate(parent), editor_(e), say_(std::move(say)) {}
+        : CellTextDelegate(parent), editor_(e), say_(std::move(say)) {}
 
     QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex& index) const override {
         auto* line = new QLineEdit(parent);
