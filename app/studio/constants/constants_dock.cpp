@@ -1,4 +1,5 @@
 #include "constants/constants_dock.h"
+#include "session/file_problem.h"
 #include "constants/cutting_dialog.h"
 #include "db/notes.h"
 #include "session/core_texts.h"
@@ -352,11 +353,11 @@ void ConstantsPane::exportFile(const QString& path) {
                 p.c = values; // the constants the controller runs
                 text = profile::writeMachineText(p);
             }
-            QSaveFile f(path);
+            SaveFile f(path);
             if (!f.open(QIODevice::WriteOnly) ||
                 f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
                 !f.commit()) {
-                r.error = ConstantsPane::tr("cannot write %1: %2").arg(path, f.errorString());
+                r.error = ConstantsPane::tr("cannot write %1: %2").arg(path, fileProblem(f));
                 return r;
             }
         } catch (const std::exception& e) {
