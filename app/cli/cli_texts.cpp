@@ -182,7 +182,6 @@ constexpr std::array kTexts = {
                 "k528 shop publish: the broker did not acknowledge every message"},
     CatalogText{"shop.publish.stopped", "k528 shop publish: остановлен; отправлено сообщений: %1",
                 "k528 shop publish: stopped after %1 messages"},
-    CatalogText{"shop.stdout-lost", "k528: стандартный вывод не записывается", "k528: cannot write standard output"},
     // Usage errors of k528-link's half.
     CatalogText{"shop.usage.sub", "shop принимает status или publish", "shop takes status or publish"},
     CatalogText{"shop.usage.line", "после --line нужно СТАНОК=ЛИНИЯ, а не «%1»", "--line takes MACHINE=LINE, not '%1'"},

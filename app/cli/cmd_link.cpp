@@ -21,9 +21,7 @@
 #include <QDateTime>
 #include <QElapsedTimer>
 #include <QThread>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 
 namespace k528::cli {
 
@@ -140,16 +138,6 @@ std::string liveText(const link::LiveState& s) {
             t += " «" + std::string(m->textRu) + "»";
     }
     return t;
-}
-
-// Standard output was lost (a full disk, a closed pipe): say why, and stop now.
-bool outputLost() {
-    errno = 0;
-    if (std::fflush(stdout) == 0 && !std::ferror(stdout))
-        return false;
-    std::fprintf(stderr, "k528: cannot write standard output: %s\n", errno ? std::strerror(errno) : "a write failed");
-    std::clearerr(stdout); // said once; the exit status tells the rest
-    return true;
 }
 
 // A machine file begins with a [section]; a program file with %L or %MESSAGES.
@@ -275,7 +263,7 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
             } else {
                 std::printf(say("%d бит/с, %s\n", "%d bit/s, %s\n"), baud, link::describe(s, ru).c_str());
             }
-            if (outputLost())
+            if (standardOutputLost())
                 return ExitUsage;
         }
         lineReport(l, *t, baud);
@@ -529,7 +517,7 @@ int runLinkQt(std::span<const std::string> argv) {
                     std::printf("%s\n", text.c_str());
                 last = text;
             }
-            if (outputLost())
+            if (standardOutputLost())
                 return done(ExitUsage);
             const qint64 spent = clock.elapsed() - start;
             if (spent < interval)

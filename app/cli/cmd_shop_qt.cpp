@@ -10,6 +10,7 @@
 #include "cli_texts.h"
 #include "link_line.h"
 #include "mqtt_client.h"
+#include "output_file.h"
 #include "shop_publisher.h"
 #include "profile/line.h"
 #include "db/state_times.h"
@@ -81,14 +82,6 @@ std::string stateText(const shop::MachineState& s, std::int64_t nowMs, const lin
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.1f", static_cast<double>(nowMs - s.sinceMs) / 1000.0);
     return t + cliText("shop.since", {clockOf(s.sinceMs), seconds}) + "; " + s.line;
-}
-
-bool outputLost() {
-    if (std::fflush(stdout) == 0 && !std::ferror(stdout))
-        return false;
-    std::fprintf(stderr, "%s\n", cliText("shop.stdout-lost").c_str());
-    std::clearerr(stdout);
-    return true;
 }
 
 // The polls of every worker, handed to the main thread in order of arrival.
@@ -198,7 +191,7 @@ int runShopQt(std::span<const std::string> argv) {
         }
         if (asJson)
             std::printf("%s\n", json::dump(all).c_str());
-        return outputLost() ? ExitUsage : ExitOk;
+        return standardOutputLost() ? ExitUsage : ExitOk;
     }
 
     // Continuous: status --watch prints, publish publishes.
@@ -298,7 +291,7 @@ int runShopQt(std::span<const std::string> argv) {
                                                 .c_str());
                     else
                         std::printf("%s\n", json::dump(shop::alarmJson(e)).c_str());
-                if ((changed || !events.empty()) && outputLost()) {
+                if ((changed || !events.empty()) && standardOutputLost()) {
                     poller.stop();
                     writeTimes(shop::unixMsNow());
                     return ExitUsage;

@@ -189,18 +189,24 @@ bool readStandardInput(std::string& contents, std::string& error) {
     return false;
 }
 
-int finishStandardOutput(int exitCode) {
+bool standardOutputLost() {
     errno = 0;
     const bool flushFailed = std::fflush(stdout) != 0;
     const int flushErrno = errno;
-    if (flushFailed || std::ferror(stdout)) {
-        const util::Message why = flushFailed && flushErrno != 0 ? util::systemError(flushErrno)
-                                                                 : util::message("io.write-failed");
-        std::fprintf(stderr, "k528: %s\n",
-                     util::systemText(util::message("io.cannot-write-stdout", {}, {why}), russianCommandLine()).c_str());
-        return ExitUsage;
-    }
-    return exitCode;
+    if (!flushFailed && !std::ferror(stdout))
+        return false;
+    // A write that failed before this flush (stdio flushes a full buffer by
+    // itself) left no errno to read here: its reason is lost, only the fact is not.
+    const util::Message why = flushFailed && flushErrno != 0 ? util::systemError(flushErrno)
+                                                             : util::message("io.write-failed");
+    std::fprintf(stderr, "k528: %s\n",
+                 util::systemText(util::message("io.cannot-write-stdout", {}, {why}), russianCommandLine()).c_str());
+    std::clearerr(stdout);
+    return true;
+}
+
+int finishStandardOutput(int exitCode) {
+    return standardOutputLost() ? ExitUsage : exitCode;
 }
 
 } // namespace k528::cli

@@ -57,10 +57,18 @@ private:
     mode_t mode_ = 0;
 };
 
+// Flushes standard output and says a lost write (a full disk, /dev/full, a
+// closed pipe) on stderr: «k528: cannot write standard output: <why>» in the
+// command line's language, with the system's reason. The one place that says
+// it: at the end of every command (finishStandardOutput) and in the commands
+// that print as they go and must stop at the first lost line (link watch,
+// link scan, shop status). True when the write was lost; the stream's error
+// is cleared then, so the loss is said once and the exit status tells the rest.
+bool standardOutputLost();
+
 // Everything a command printed reaches standard output, or the run fails:
-// the one place that flushes it and checks for a lost write (a full disk,
-// /dev/full, a closed pipe) — main() of k528 and of k528-link. Returns
-// `exitCode`, or ExitUsage (2) after «k528: cannot write standard output: …».
+// main() of k528 and of k528-link. Returns `exitCode`, or ExitUsage (2)
+// after standardOutputLost() said why.
 int finishStandardOutput(int exitCode);
 
 } // namespace k528::cli

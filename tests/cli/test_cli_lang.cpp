@@ -7,6 +7,9 @@
 #include "cli_texts.h"
 #include "db/db_test_util.h"
 #include "profile/problem.h"
+#ifdef K528_CLI_LANG_SHOP
+#include "rig/tcp_serve.h"
+#endif
 #include "util/system_texts.h"
 
 #include <QDir>
@@ -352,6 +355,35 @@ private slots:
         QVERIFY2(r.out.contains("\"online\":false") && r.out.contains("\"state\":\"offline\""), qPrintable(r.out));
     }
 
+    // `k528 link watch` and `scan` print as they go and stop at the first
+    // line standard output loses: said as every other command says it, in
+    // the command's language, with the system's reason.
+    void linkLostOutput() {
+#ifndef K528_CLI_LANG_SHOP
+        QSKIP("built without the link plugins (K528_LINK_PLUGINS)");
+#else
+        const std::vector<quint16> ports = k528::testrig::freePorts(1);
+        QCOMPARE(ports.size(), std::size_t{1});
+        k528::testrig::Serve serve(QStringLiteral(K528_CLI), ports[0]);
+        QByteArray said;
+        QVERIFY2(serve.start({}, &said), said.constData());
+        const QStringList line{"link", "--tcp", serve.address()};
+        for (const QStringList& c : {QStringList{"watch", "--seconds", "5"}, QStringList{"scan", "--addresses", "1"}}) {
+            CliResult r = runK528ToFile(line + c, "/dev/full");
+            QVERIFY2(r.exitCode == 2 &&
+                         r.err.contains(
+                             QStringLiteral("k528: не удаётся записать стандартный вывод: на устройстве не осталось места")) &&
+                         !hasEnglishSentence(r.err),
+                     qPrintable(c.join(' ') + ": " + r.err));
+            QCOMPARE(r.err.count(QStringLiteral("стандартный вывод")), 1); // said once, though main() flushes again
+            r = runK528ToFile(line + c + QStringList{"--lang", "en"}, "/dev/full");
+            QVERIFY2(r.exitCode == 2 && r.err.contains("k528: cannot write standard output: No space left on device") &&
+                         !hasCyrillic(r.err),
+                     qPrintable(c.join(' ') + ": " + r.err));
+        }
+#endif
+    }
+
     // What goes wrong with a file, a line= value, a --param, an --as, a
     // --blank or an --mqtt address: said in the command's language, Russian
     // without an English sentence, English without a Russian word.
@@ -427,6 +459,10 @@ private slots:
         row("shop publish --mqtt host", {"shop", "publish", "--mqtt", "mqtt://:1883"}, "", 2,
             "k528: --mqtt: «mqtt://:1883»: после mqtt:// нет имени или адреса хоста",
             "k528: --mqtt: 'mqtt://:1883': no host name or address after mqtt://");
+        // A machine offline (line= to a closed port): its status line is printed, and lost.
+        row("shop status > /dev/full", {"shop", "status", "grinder-205"}, "/dev/full", 2,
+            "k528: не удаётся записать стандартный вывод: на устройстве не осталось места",
+            "k528: cannot write standard output: No space left on device");
 #endif
     }
     // (After shopStatus: a machine has a line, so `shop publish` checks --mqtt.)
