@@ -399,10 +399,6 @@
 <context>
     <name>k528::studio</name>
     <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>%1 cannot be read: %2</translation>
-    </message>
-    <message>
         <source>%1 has errors: nothing was loaded.</source>
         <translation>%1 has errors: nothing was loaded.</translation>
     </message>
@@ -4529,10 +4525,6 @@ Details: %3</translation>
         <translation>%1 has unsaved changes. Save them?</translation>
     </message>
     <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>%1 cannot be read: %2</translation>
-    </message>
-    <message>
         <source>Open program</source>
         <translation>Open program</translation>
     </message>
@@ -6441,10 +6433,6 @@ Its comment stays: %3</translation>
     <message>
         <source>The debugger steps programs on the simulated machine; the controller on the line runs them itself. Show the simulation again (Controller dock) to debug.</source>
         <translation>The debugger steps programs on the simulated machine; the controller on the line runs them itself. Show the simulation again (Controller dock) to debug.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>%1 cannot be read: %2</translation>
     </message>
     <message>
         <source>Reading the controller's memory to keep it in the database...</source>
@@ -8623,10 +8611,6 @@ Details: %3</translation>
     <message>
         <source>Training</source>
         <translation>Training</translation>
-    </message>
-    <message>
-        <source>Cannot read %1: %2</source>
-        <translation>Cannot read %1: %2</translation>
     </message>
     <message>
         <source>Grading: the program runs on the simulated machine…</source>

@@ -399,10 +399,6 @@
 <context>
     <name>k528::studio</name>
     <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>%1 не читается: %2</translation>
-    </message>
-    <message>
         <source>%1 has errors: nothing was loaded.</source>
         <translation>В %1 есть ошибки: ничего не загружено.</translation>
     </message>
@@ -4529,10 +4525,6 @@ Details: %3</source>
         <translation>В %1 есть несохранённые изменения. Сохранить их?</translation>
     </message>
     <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>%1 не читается: %2</translation>
-    </message>
-    <message>
         <source>Open program</source>
         <translation>Открыть программу</translation>
     </message>
@@ -6441,10 +6433,6 @@ Its comment stays: %3</source>
     <message>
         <source>The debugger steps programs on the simulated machine; the controller on the line runs them itself. Show the simulation again (Controller dock) to debug.</source>
         <translation>Отладчик выполняет программы по шагам на моделируемом станке; контроллер на линии выполняет их сам. Чтобы отлаживать, снова покажите модель (панель «Контроллер»).</translation>
-    </message>
-    <message>
-        <source>%1 cannot be read: %2</source>
-        <translation>%1 не читается: %2</translation>
     </message>
     <message>
         <source>Reading the controller's memory to keep it in the database...</source>
@@ -8623,10 +8611,6 @@ Details: %3</source>
     <message>
         <source>Training</source>
         <translation>Обучение</translation>
-    </message>
-    <message>
-        <source>Cannot read %1: %2</source>
-        <translation>Не удаётся прочитать %1: %2</translation>
     </message>
     <message>
         <source>Grading: the program runs on the simulated machine…</source>

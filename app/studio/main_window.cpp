@@ -438,15 +438,13 @@ void MainWindow::loadPrograms() {
 
 bool MainWindow::loadProgramsFrom(const QString& path) {
     const QString file = QFileInfo(path).fileName();
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        const QString m = tr("%1 cannot be read: %2").arg(path, f.errorString());
+    std::string text;
+    QString m;
+    if (!readTextFile(path, text, m)) { // why in the window's language
         QMessageBox::warning(this, tr("Load programs"), m);
         emit programsLoaded(false, m);
         return false;
     }
-    const QByteArray bytes = f.readAll();
-    const std::string text(bytes.constData(), static_cast<std::size_t>(bytes.size()));
     QStringList names;
     for (const program::Program* p : program::parse(text).store.inWrittenOrder())
         names << QStringLiteral("L%1").arg(p->number);

@@ -1,6 +1,7 @@
 #include "program/model.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <limits>
 #include <utility>
@@ -42,66 +43,92 @@ char arithOpChar(ArithOp op) {
 
 // --- FrameBody: the compact form -----------------------------------------------------------
 //
-// A sequence of items. Integers are variable-length (7 bits a byte, the
-// signed ones zigzag-coded); a span is written as the distance of its
-// column from the end of the item before (0 for the first) and its width.
-//   ISO:     items in the order L, #, m..., g..., X, FX, Z, FZ, each a tag
-//            byte (slot, | 0x10 for an R-parameter) then the number (a
-//            literal value: mantissa and a scale byte) and the span.
+// Integers are variable-length (7 bits a byte, the signed ones
+// zigzag-coded). A span is the distance of its column from the end of the
+// item before (0 for the first) and its width: one byte when the distance
+// is 0..7 and the width 1..16 (words one blank apart, as a text is
+// written), else a 0x80 byte and the two as integers.
+//   ISO:     two bytes (low byte first) saying which items follow: the
+//            counts of G and M words (2 bits each), then a bit for each of
+//            #, L, X, FX, Z, FZ, then one for each value that is an
+//            R-parameter; then the items in the order of the canonical
+//            text: g..., m..., #, L, X, FX, Z, FZ. A word is its number and
+//            span, a value its R index or its mantissa and a scale byte,
+//            and its span. An empty ISO frame has no bytes.
 //   Compute: target word, operand a, op byte, operand b (operand: kind byte,
 //            literal or R index, span).
 //   IfGoto:  r word, target word.   Goto: target word.
+// The two bytes first let a reader go straight to what it wants (no tag to
+// test a word), and the order of the text keeps spans in their one byte.
 namespace {
 
-// In this order in the bytes: L first and the M words early, so that
-// callTarget() and hasM() read only the start of a frame.
-enum IsoSlot : std::uint8_t { SlotCall, SlotMessage, SlotM, SlotG, SlotX, SlotFX, SlotZ, SlotFZ };
-constexpr std::uint8_t kRFlag = 0x10;
+// The bits of the two bytes first.
+constexpr unsigned kMShift = 2;          // G count in bits 0-1, M count in 2-3
+constexpr unsigned kHasMessage = 1u << 4;
+constexpr unsigned kHasCall = 1u << 5;
+constexpr unsigned kHasValue = 1u << 6;  // X, FX, Z, FZ: bits 6-9
+constexpr unsigned kValueIsR = 1u << 10; // X, FX, Z, FZ: bits 10-13
 
 std::uint64_t zig(std::int64_t v) {
     return (static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63);
 }
 std::int64_t unzig(std::uint64_t u) { return static_cast<std::int64_t>(u >> 1) ^ -static_cast<std::int64_t>(u & 1); }
 
-class Writer {
-public:
-    void byte(std::uint8_t b) { buf_[n_++] = b; }
-    void uvar(std::uint64_t v) {
-        while (v >= 0x80) {
-            buf_[n_++] = static_cast<std::uint8_t>(v | 0x80);
-            v >>= 7;
-        }
-        buf_[n_++] = static_cast<std::uint8_t>(v);
-    }
-    void svar(std::int64_t v) { uvar(zig(v)); }
-    void span(const ColSpan& s) {
-        svar(static_cast<std::int64_t>(s.column) - prevEnd_);
-        svar(static_cast<std::int64_t>(s.endColumn) - s.column);
-        prevEnd_ = s.endColumn;
-    }
-    void word(const Word& w) {
-        svar(w.number);
-        span(w.span);
-    }
-    void operand(const Operand& o) {
-        byte(static_cast<std::uint8_t>(o.kind));
-        svar(o.isR() ? o.rIndex : o.literal);
-        span(o.span);
-    }
-    const std::uint8_t* data() const { return buf_; }
-    std::size_t size() const { return n_; }
-
-private:
-    // The longest item is 1 + 10 + 1 + 2 * 5 bytes; a frame has at most 12.
-    std::uint8_t buf_[512];
-    std::size_t n_ = 0;
-    std::int64_t prevEnd_ = 0;
+// Writing goes through a local pointer, not a member: a byte stored
+// through a member pointer may change any member for all the compiler
+// knows, so each byte would reload and store the position again.
+struct Out {
+    std::uint8_t* p;
+    std::int64_t prevEnd = 0;
 };
+[[gnu::always_inline]] inline void putByte(Out& o, std::uint8_t b) { *o.p++ = b; }
+[[gnu::always_inline]] inline void putU(Out& o, std::uint64_t v) {
+    std::uint8_t* p = o.p;
+    while (v >= 0x80) {
+        *p++ = static_cast<std::uint8_t>(v | 0x80);
+        v >>= 7;
+    }
+    *p++ = static_cast<std::uint8_t>(v);
+    o.p = p;
+}
+[[gnu::always_inline]] inline void putS(Out& o, std::int64_t v) { putU(o, zig(v)); }
+[[gnu::always_inline]] inline void putSpan(Out& o, const ColSpan& s) {
+    const std::int64_t delta = static_cast<std::int64_t>(s.column) - o.prevEnd;
+    const std::int64_t width = static_cast<std::int64_t>(s.endColumn) - s.column;
+    if (delta >= 0 && delta <= 7 && width >= 1 && width <= 16) {
+        putByte(o, static_cast<std::uint8_t>(delta << 4 | (width - 1)));
+    } else {
+        putByte(o, 0x80);
+        putS(o, delta);
+        putS(o, width);
+    }
+    o.prevEnd = s.endColumn;
+}
+[[gnu::always_inline]] inline void putWord(Out& o, const Word& w) {
+    putS(o, w.number);
+    putSpan(o, w.span);
+}
+[[gnu::always_inline]] inline void putValue(Out& o, const Value& v) {
+    if (v.isR()) {
+        putS(o, v.rIndex);
+    } else {
+        putS(o, v.literal.mantissa);
+        putByte(o, static_cast<std::uint8_t>(v.literal.scale));
+    }
+    putSpan(o, v.span);
+}
+inline void putOperand(Out& o, const Operand& x) {
+    putByte(o, static_cast<std::uint8_t>(x.kind));
+    putS(o, x.isR() ? x.rIndex : x.literal);
+    putSpan(o, x.span);
+}
+// The longest item is 10 + 1 + 1 + 2 * 10 bytes; a frame has at most 12,
+// after two bytes.
+constexpr std::size_t kMaxEncoded = 512;
 
 class Reader {
 public:
-    Reader(const std::uint8_t* p, std::size_t n) : p_(p), end_(p + n) {}
-    bool done() const { return p_ >= end_; }
+    explicit Reader(const std::uint8_t* p) : p_(p) {}
     std::uint8_t byte() { return *p_++; }
     std::uint64_t uvar() {
         if (!(*p_ & 0x80)) // one byte: most spans and small numbers
@@ -120,16 +147,42 @@ public:
     int ivar() { return static_cast<int>(svar()); }
     ColSpan span() {
         ColSpan s;
-        s.column = static_cast<int>(prevEnd_ + svar());
-        s.endColumn = static_cast<int>(s.column + svar());
+        const std::uint8_t b = *p_++;
+        if (!(b & 0x80)) {
+            s.column = static_cast<int>(prevEnd_ + (b >> 4));
+            s.endColumn = static_cast<int>(s.column + (b & 0x0F) + 1);
+        } else {
+            s.column = static_cast<int>(prevEnd_ + svar());
+            s.endColumn = static_cast<int>(s.column + svar());
+        }
         prevEnd_ = s.endColumn;
         return s;
+    }
+    void skipSpan() {
+        if (*p_++ & 0x80) {
+            uvar();
+            uvar();
+        }
+    }
+    void skipWord() {
+        uvar();
+        skipSpan();
     }
     Word word() {
         Word w;
         w.number = ivar();
         w.span = span();
         return w;
+    }
+    void value(Value& v, bool isR) {
+        if (isR) {
+            v.kind = Value::Kind::RParam;
+            v.rIndex = ivar();
+        } else {
+            v.literal.mantissa = svar();
+            v.literal.scale = byte();
+        }
+        v.span = span();
     }
     Operand operand() {
         Operand o;
@@ -145,24 +198,8 @@ public:
 
 private:
     const std::uint8_t* p_;
-    const std::uint8_t* end_;
     std::int64_t prevEnd_ = 0;
 };
-
-// Inlined: four calls a frame, each mostly testing an empty slot.
-[[gnu::always_inline]] inline void writeValue(Writer& w, IsoSlot slot, const std::optional<Value>& v) {
-    if (!v)
-        return;
-    if (v->isR()) {
-        w.byte(static_cast<std::uint8_t>(slot | kRFlag));
-        w.svar(v->rIndex);
-    } else {
-        w.byte(slot);
-        w.svar(v->literal.mantissa);
-        w.byte(static_cast<std::uint8_t>(v->literal.scale));
-    }
-    w.span(v->span);
-}
 
 } // namespace
 
@@ -205,113 +242,116 @@ void FrameBody::assign(FrameKind kind, const std::uint8_t* bytes, std::size_t n)
 }
 
 FrameBody& FrameBody::operator=(const IsoFrame& v) {
-    Writer w;
-    if (v.call) {
-        w.byte(SlotCall);
-        w.word(*v.call);
+    std::uint8_t buf[kMaxEncoded];
+    Out o{buf};
+    const std::optional<Word>* const words[] = {&v.message, &v.call};
+    const std::optional<Value>* const values[] = {&v.x, &v.fx, &v.z, &v.fz};
+    unsigned head = static_cast<unsigned>(v.g.size()) | static_cast<unsigned>(v.m.size()) << kMShift;
+#pragma GCC unroll 2
+    for (int k = 0; k < 2; ++k)
+        head |= *words[k] ? kHasMessage << k : 0;
+#pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k)
+        head |= *values[k] ? (kHasValue << k) | ((*values[k])->isR() ? kValueIsR << k : 0) : 0;
+    if (head != 0) {
+        putByte(o, static_cast<std::uint8_t>(head));
+        putByte(o, static_cast<std::uint8_t>(head >> 8));
+        for (const Word& g : v.g)
+            putWord(o, g);
+        for (const Word& m : v.m)
+            putWord(o, m);
+        for (const auto* w : words)
+            if (*w)
+                putWord(o, **w);
+        for (unsigned present = (head / kHasValue) & 15; present != 0; present &= present - 1)
+            putValue(o, **values[std::countr_zero(present)]);
     }
-    if (v.message) {
-        w.byte(SlotMessage);
-        w.word(*v.message);
+    const auto n = static_cast<std::size_t>(o.p - buf);
+    if (n <= kInline && !heap_) {
+        // Nearly every frame: a copy of fixed size (the buffer is longer),
+        // without the general assign().
+        std::memcpy(inline_, buf, kInline);
+        size_ = static_cast<std::uint16_t>(n);
+        kind_ = FrameKind::Iso;
+    } else {
+        assign(FrameKind::Iso, buf, n);
     }
-    for (const Word& m : v.m) {
-        w.byte(SlotM);
-        w.word(m);
-    }
-    for (const Word& g : v.g) {
-        w.byte(SlotG);
-        w.word(g);
-    }
-    writeValue(w, SlotX, v.x);
-    writeValue(w, SlotFX, v.fx);
-    writeValue(w, SlotZ, v.z);
-    writeValue(w, SlotFZ, v.fz);
-    assign(FrameKind::Iso, w.data(), w.size());
     return *this;
 }
 
 FrameBody& FrameBody::operator=(const ComputeFrame& v) {
-    Writer w;
-    w.word(v.target);
-    w.operand(v.a);
-    w.byte(static_cast<std::uint8_t>(v.op));
-    w.operand(v.b);
-    assign(FrameKind::Compute, w.data(), w.size());
+    std::uint8_t buf[kMaxEncoded];
+    Out o{buf};
+    putWord(o, v.target);
+    putOperand(o, v.a);
+    putByte(o, static_cast<std::uint8_t>(v.op));
+    putOperand(o, v.b);
+    assign(FrameKind::Compute, buf, static_cast<std::size_t>(o.p - buf));
     return *this;
 }
 
 FrameBody& FrameBody::operator=(const IfGotoFrame& v) {
-    Writer w;
-    w.word(v.r);
-    w.word(v.target);
-    assign(FrameKind::IfGoto, w.data(), w.size());
+    std::uint8_t buf[kMaxEncoded];
+    Out o{buf};
+    putWord(o, v.r);
+    putWord(o, v.target);
+    assign(FrameKind::IfGoto, buf, static_cast<std::size_t>(o.p - buf));
     return *this;
 }
 
 FrameBody& FrameBody::operator=(const GotoFrame& v) {
-    Writer w;
-    w.word(v.target);
-    assign(FrameKind::Goto, w.data(), w.size());
+    std::uint8_t buf[kMaxEncoded];
+    Out o{buf};
+    putWord(o, v.target);
+    assign(FrameKind::Goto, buf, static_cast<std::size_t>(o.p - buf));
     return *this;
 }
 
+namespace {
+unsigned isoHead(const std::uint8_t* p) { return p[0] | static_cast<unsigned>(p[1]) << 8; }
+int gCount(unsigned head) { return static_cast<int>(head & 3); }
+int mCount(unsigned head) { return static_cast<int>((head >> kMShift) & 3); }
+} // namespace
+
 bool FrameBody::hasAnyM(std::initializer_list<int> numbers) const {
-    if (kind_ != FrameKind::Iso)
+    if (kind_ != FrameKind::Iso || size_ == 0)
         return false;
-    Reader r(data(), size_);
-    while (!r.done()) {
-        const auto slot = static_cast<IsoSlot>(r.byte() & 0x0F);
-        if (slot > SlotM)
-            break;
+    const unsigned head = isoHead(data());
+    Reader r(data() + 2);
+    for (int k = gCount(head); k > 0; --k)
+        r.skipWord();
+    for (int k = mCount(head); k > 0; --k) {
         const int n = r.ivar();
-        if (slot == SlotM && std::find(numbers.begin(), numbers.end(), n) != numbers.end())
+        if (std::find(numbers.begin(), numbers.end(), n) != numbers.end())
             return true;
-        r.uvar(); // span
-        r.uvar();
+        r.skipSpan();
     }
     return false;
 }
 
 void FrameBody::decode(IsoFrame& f) const {
-    Reader r(data(), size_);
-    while (!r.done()) {
-        const std::uint8_t tag = r.byte();
-        const auto slot = static_cast<IsoSlot>(tag & 0x0F);
-        switch (slot) {
-        case SlotG:
-            f.g.push_back(r.word());
-            break;
-        case SlotM:
-            f.m.push_back(r.word());
-            break;
-        case SlotMessage:
-            f.message = r.word();
-            break;
-        case SlotCall:
-            f.call = r.word();
-            break;
-        case SlotX:
-        case SlotFX:
-        case SlotZ:
-        case SlotFZ: {
-            Value& v = (slot == SlotX ? f.x : slot == SlotFX ? f.fx : slot == SlotZ ? f.z : f.fz).emplace();
-            if (tag & kRFlag) {
-                v.kind = Value::Kind::RParam;
-                v.rIndex = r.ivar();
-            } else {
-                v.literal.mantissa = r.svar();
-                v.literal.scale = r.byte();
-            }
-            v.span = r.span();
-            break;
-        }
-        }
+    if (size_ == 0)
+        return;
+    const unsigned head = isoHead(data());
+    Reader r(data() + 2);
+    for (int k = gCount(head); k > 0; --k)
+        f.g.push_back(r.word());
+    for (int k = mCount(head); k > 0; --k)
+        f.m.push_back(r.word());
+    if (head & kHasMessage)
+        f.message = r.word();
+    if (head & kHasCall)
+        f.call = r.word();
+    std::optional<Value>* const values[] = {&f.x, &f.fx, &f.z, &f.fz};
+    for (unsigned present = (head / kHasValue) & 15; present != 0; present &= present - 1) {
+        const int k = std::countr_zero(present);
+        r.value(values[k]->emplace(), (head & (kValueIsR << k)) != 0);
     }
 }
 
 ComputeFrame FrameBody::computeFrame() const {
     ComputeFrame c;
-    Reader r(data(), size_);
+    Reader r(data());
     c.target = r.word();
     c.a = r.operand();
     c.op = static_cast<ArithOp>(r.byte());
@@ -321,7 +361,7 @@ ComputeFrame FrameBody::computeFrame() const {
 
 IfGotoFrame FrameBody::ifGotoFrame() const {
     IfGotoFrame j;
-    Reader r(data(), size_);
+    Reader r(data());
     j.r = r.word();
     j.target = r.word();
     return j;
@@ -329,21 +369,19 @@ IfGotoFrame FrameBody::ifGotoFrame() const {
 
 GotoFrame FrameBody::gotoFrame() const {
     GotoFrame j;
-    Reader r(data(), size_);
+    Reader r(data());
     j.target = r.word();
     return j;
 }
 
 int FrameBody::jumpTarget() const {
     if (kind_ == FrameKind::Goto) {
-        Reader r(data(), size_);
+        Reader r(data());
         return r.ivar();
     }
     if (kind_ == FrameKind::IfGoto) {
-        Reader r(data(), size_);
-        r.ivar();
-        r.uvar();
-        r.uvar();
+        Reader r(data());
+        r.skipWord();
         return r.ivar();
     }
     return 0;
@@ -352,9 +390,12 @@ int FrameBody::jumpTarget() const {
 std::optional<int> FrameBody::callTarget() const {
     if (kind_ != FrameKind::Iso || size_ == 0)
         return std::nullopt;
-    Reader r(data(), size_);
-    if (static_cast<IsoSlot>(r.byte() & 0x0F) != SlotCall) // L comes first
+    const unsigned head = isoHead(data());
+    if (!(head & kHasCall))
         return std::nullopt;
+    Reader r(data() + 2);
+    for (int k = gCount(head) + mCount(head) + ((head & kHasMessage) ? 1 : 0); k > 0; --k)
+        r.skipWord();
     return r.ivar();
 }
 

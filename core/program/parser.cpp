@@ -98,6 +98,13 @@ private:
             s.endColumn = s.column + 1;
         return s;
     }
+    // span() of a word read whole: b < e <= line_.size(). (An ASCII line's
+    // prefix is all of it, so one test says a column is a byte.)
+    [[gnu::always_inline]] ColSpan wordSpan(std::size_t b, std::size_t e) {
+        if (e > asciiPrefix_)
+            return spanCounted(b, e);
+        return {static_cast<int>(b) + 1, static_cast<int>(e) + 1};
+    }
     [[gnu::noinline]] ColSpan spanCounted(std::size_t b, std::size_t e) {
         ColSpan s;
         s.column = col(b);
@@ -125,6 +132,26 @@ private:
         d.args = std::move(args);
         d.within = std::move(within);
         out_.diagnostics.push_back(std::move(d));
+    }
+
+    // The line is well-formed UTF-8 from `from` on. Two-byte sequences (the
+    // Cyrillic of comments) and ASCII are taken here; from the first other
+    // lead byte the rest is left to utf8::isValid.
+    bool validUtf8From(std::size_t from) const {
+        const auto* const p = reinterpret_cast<const unsigned char*>(line_.data());
+        const std::size_t n = line_.size();
+        std::size_t k = from;
+        while (k < n) {
+            const unsigned char b = p[k];
+            if (b < 0x80) {
+                ++k;
+            } else if (b >= 0xC2 && b <= 0xDF && k + 1 < n && (p[k + 1] & 0xC0) == 0x80) {
+                k += 2; // U+0080..U+07FF: no overlong, no surrogate
+            } else {
+                return utf8::isValid(line_.substr(k));
+            }
+        }
+        return true;
     }
 
     // --- lexing helpers ----------------------------------------------------------------
@@ -156,6 +183,53 @@ private:
             skipTriviaAndComments(i, comments);
     }
     void skipTriviaAndComments(std::size_t& i, std::vector<Comment>& comments);
+    // A number at i as one scan reads it: [sign] digits [. digits], the
+    // digits gathered into one integer on the way. Every word's number is
+    // read by it (intWord, value, operand); what it does not take whole
+    // (ends false, too many digits, a second point) goes to numberEnd() and
+    // the general lexeme's checks.
+    struct NumberScan {
+        std::uint64_t digits = 0; // the digits read, the point left out (below 10^19: no overflow)
+        std::size_t end = 0;      // where the scan stopped
+        int count = 0;            // digits read, leading zeros too (at most kMaxDigits + 1)
+        int fraction = -1;        // digits after the point; -1: no point
+        bool sign = false;        // a '+' or '-' first
+        bool negative = false;    // ... a '-'
+        bool ends = false;        // the number lexeme (numberEnd) ends at `end`
+        // Digits only, fewer than 10 significant: a whole number as parseUnsigned reads it.
+        bool whole() const { return count > 0 && ends && !sign && fraction < 0 && digits < 1000000000; }
+    };
+    [[gnu::always_inline]] NumberScan scanNumber(std::size_t i) const {
+        NumberScan s;
+        const char* const p = line_.data();
+        const std::size_t n = line_.size();
+        std::size_t k = i;
+        if (k < n && (p[k] == '-' || p[k] == '+')) {
+            s.sign = true;
+            s.negative = p[k] == '-';
+            ++k;
+        }
+        std::uint64_t v = 0;
+        int count = 0;
+        while (k < n && isDigit(p[k]) && count <= Decimal::kMaxDigits) {
+            v = v * 10 + static_cast<std::uint64_t>(p[k++] - '0');
+            ++count;
+        }
+        if (k < n && p[k] == '.' && count <= Decimal::kMaxDigits) {
+            ++k;
+            const int before = count;
+            while (k < n && isDigit(p[k]) && count <= Decimal::kMaxDigits) {
+                v = v * 10 + static_cast<std::uint64_t>(p[k++] - '0');
+                ++count;
+            }
+            s.fraction = count - before;
+        }
+        s.digits = v;
+        s.count = count;
+        s.end = k;
+        s.ends = k >= n || (!isDigit(p[k]) && p[k] != '.');
+        return s;
+    }
     // The end of a number lexeme: sign, digits and points.
     std::size_t numberEnd(std::size_t i) const {
         if (i < line_.size() && (line_[i] == '+' || line_[i] == '-'))
@@ -307,7 +381,7 @@ void Parser::processLine() {
     colPos_ = 0;
     colCol_ = 1;
     invalidUtf8At_ = std::string_view::npos;
-    if (!lineAscii_ && !utf8::isValid(line_.substr(asciiPrefix_))) { // (the ASCII start is valid)
+    if (!lineAscii_ && !validUtf8From(asciiPrefix_)) { // (the ASCII start is valid)
         const std::size_t bad = text::firstInvalidUtf8(line_);
         invalidUtf8At_ = bad;
         report(Rule::InvalidUtf8, 0, bad, bad + 1, "invalid-utf8",
@@ -643,22 +717,13 @@ inline bool Parser::intWord(std::size_t& i, std::size_t start, std::string_view 
         ++i;
         skipSpaces(i);
     }
-    const std::size_t b = i;
-    {
-        // Plain digits (what nearly every word is): the value as they are read.
-        const char* const p = line_.data();
-        const std::size_t n = line_.size();
-        std::size_t k = b;
-        std::int64_t v = 0;
-        while (k < n && isDigit(p[k]) && v < 1000000000)
-            v = v * 10 + (p[k++] - '0');
-        // Fewer than 10 significant digits, and the number lexeme ends here.
-        if (k > b && v < 1000000000 && at(k) != '.' && !isDigit(at(k))) {
-            i = k;
-            w.number = static_cast<int>(v);
-            w.span = span(start, k);
-            return true;
-        }
+    // Plain digits, fewer than 10 significant (what nearly every word is).
+    const NumberScan n = scanNumber(i);
+    if (n.whole()) {
+        i = n.end;
+        w.number = static_cast<int>(n.digits);
+        w.span = wordSpan(start, n.end);
+        return true;
     }
     return intWordRest(i, start, name, w, manual);
 }
@@ -701,40 +766,14 @@ inline bool Parser::value(std::size_t& i, std::size_t start, std::string_view na
         v.span = span(start, i);
         return true;
     }
-    const std::size_t b = i;
-    {
-        // [sign] up to 18 digits with at most one point (what nearly every
-        // value is): read as scanned; anything else goes the long way below.
-        const char* const p = line_.data();
-        const std::size_t n = line_.size();
-        std::size_t k = b;
-        const bool negative = k < n && p[k] == '-';
-        if (k < n && (p[k] == '-' || p[k] == '+'))
-            ++k;
-        std::uint64_t m = 0; // below 10^19: no overflow
-        int digits = 0;
-        int fraction = -1; // digits after the point; -1 before it
-        for (; k < n && digits <= Decimal::kMaxDigits; ++k) {
-            const char c = p[k];
-            if (isDigit(c)) {
-                m = m * 10 + (c - '0');
-                ++digits;
-                if (fraction >= 0)
-                    ++fraction;
-            } else if (c == '.' && fraction < 0) {
-                fraction = 0;
-            } else {
-                break;
-            }
-        }
-        // The number lexeme (numberEnd) ends here.
-        if (digits > 0 && digits <= Decimal::kMaxDigits && (k >= n || (!isDigit(p[k]) && p[k] != '.'))) {
-            i = k;
-            const auto value = static_cast<std::int64_t>(m); // at most 18 digits
-            v = Value::lit(Decimal::fromScaled(negative ? -value : value, fraction > 0 ? fraction : 0));
-            v.span = span(start, k);
-            return true;
-        }
+    // [sign] up to 18 digits with at most one point (what nearly every value is).
+    const NumberScan n = scanNumber(i);
+    if (n.count > 0 && n.count <= Decimal::kMaxDigits && n.ends) {
+        i = n.end;
+        const auto m = static_cast<std::int64_t>(n.digits); // at most 18 digits
+        v = Value::lit(Decimal::fromScaled(n.negative ? -m : m, n.fraction > 0 ? n.fraction : 0));
+        v.span = wordSpan(start, n.end);
+        return true;
     }
     return valueRest(i, start, name, v, manual);
 }
@@ -798,7 +837,12 @@ void Parser::reportBadCharacter(std::size_t i, Frame& f) {
     report(Rule::Syntax, 0, i, i + len, "unexpected-character", {quoted(line_.substr(i, len))});
 }
 
-void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& contentEnd) {
+void Parser::isoFrame(std::size_t& at_, Frame& f, IsoFrame& iso, std::size_t& contentEnd_) {
+    // The positions in locals: a store through a reference to a size_t may
+    // change line_'s size for all the compiler knows, so each one would
+    // reload the line at every step of the words' loops.
+    std::size_t i = at_;
+    std::size_t contentEnd = contentEnd_;
     Axis lastAxis = Axis::None; // the word just before was X or Z
     auto duplicate = [&](std::size_t s, std::size_t e, std::string_view sv) {
         report(Rule::DuplicateWord, 0, s, e, "duplicate-word", {std::string(sv)});
@@ -950,6 +994,8 @@ void Parser::isoFrame(std::size_t& i, Frame& f, IsoFrame& iso, std::size_t& cont
         lastAxis = ok ? thisAxis : Axis::None;
         contentEnd = i;
     }
+    at_ = i;
+    contentEnd_ = contentEnd;
 }
 
 bool Parser::operand(std::size_t& i, Operand& o, std::vector<Comment>& comments) {
@@ -962,6 +1008,18 @@ bool Parser::operand(std::size_t& i, Operand& o, std::vector<Comment>& comments)
             return false;
         o = Operand::rParam(r.number);
         o.span = span(s, i);
+        return true;
+    }
+    if (const NumberScan n = scanNumber(i); n.count > 0 && n.count <= Decimal::kMaxDigits && n.ends && n.fraction < 0) {
+        // [sign] digits (nearly every literal): the value as scanned.
+        i = n.end;
+        const auto m = static_cast<std::int64_t>(n.digits);
+        if (m > (n.negative ? -static_cast<std::int64_t>(INT32_MIN) : static_cast<std::int64_t>(INT32_MAX))) {
+            report(Rule::LiteralRange, 0, s, n.end, "literal-range", {std::string(line_.substr(s, n.end - s))});
+            return false;
+        }
+        o = Operand::lit(static_cast<std::int32_t>(n.negative ? -m : m));
+        o.span = wordSpan(s, n.end);
         return true;
     }
     const std::size_t e = numberEnd(i);
@@ -1081,6 +1139,12 @@ bool Parser::jumpTarget(std::size_t& i, Word& target, std::vector<Comment>& comm
         else
             report(Rule::Syntax, 0, s, i, "jump.with-n-only");
         return false;
+    }
+    if (const NumberScan n = scanNumber(i); n.whole()) {
+        i = n.end;
+        target.number = static_cast<int>(n.digits);
+        target.span = wordSpan(s, n.end);
+        return true;
     }
     const std::size_t e = numberEnd(i);
     const std::string_view lex = line_.substr(s, e - s);

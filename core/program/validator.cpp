@@ -224,7 +224,7 @@ constexpr std::int64_t milli(const Decimal& d) {
 static_assert(kMaxCoordinate.scale <= 3 && kMinFeed.scale <= 3 && kMaxFeed.scale <= 3);
 // d within [lo, hi] thousandths: nearly every value has at most 3 decimals
 // and is compared as an integer; the rest exactly as decimals.
-bool withinMilli(const Decimal& d, std::int64_t lo, std::int64_t hi) {
+[[gnu::always_inline]] inline bool withinMilli(const Decimal& d, std::int64_t lo, std::int64_t hi) {
     if (d.scale >= 0 && d.scale <= 3 && d.mantissa > -1000000000 && d.mantissa < 1000000000) {
         const std::int64_t m = milli(d);
         return m >= lo && m <= hi;
@@ -234,6 +234,18 @@ bool withinMilli(const Decimal& d, std::int64_t lo, std::int64_t hi) {
 bool coordinateInRange(const Decimal& d) { return withinMilli(d, -milli(kMaxCoordinate), milli(kMaxCoordinate)); }
 bool feedInRange(const Decimal& d) { return withinMilli(d, milli(kMinFeed), milli(kMaxFeed)); }
 bool mInRange(std::int64_t m) { return m >= 0 && m <= kMaxM; }
+
+// classifyG() of every G the language has, as a table: one load for each G
+// word of a frame instead of a branching switch.
+GInfo gInfoOf(int g) {
+    static constexpr auto table = [] {
+        std::array<GInfo, kMaxG + 1> a{};
+        for (int n = 0; n <= kMaxG; ++n)
+            a[static_cast<std::size_t>(n)] = classifyG(n);
+        return a;
+    }();
+    return g >= 0 && g <= kMaxG ? table[static_cast<std::size_t>(g)] : classifyG(g);
+}
 
 // Whether the table refuses a frame whose only words of it are X and Z
 // (index: 1 CoordinateX, 2 Z), computed once from the table.
@@ -476,7 +488,7 @@ bool ProgramChecker::plainIso(const Frame& f, const IsoFrame& iso) const {
     }
     std::array<GGroup, kMaxGPerFrame> groups{};
     for (int i = 0; i < iso.g.size(); ++i) {
-        const GInfo info = classifyG(iso.g[i].number);
+        const GInfo info = gInfoOf(iso.g[i].number);
         if (!info.known() || info.function == GFunction::Dwell)
             return false;
         for (int j = 0; j < i; ++j)
@@ -504,7 +516,7 @@ void ProgramChecker::rIndex(const Frame& f, int index, ColSpan s) {
 
 void ProgramChecker::gWords(const Frame& f, const IsoFrame& iso) {
     for (int i = 0; i < iso.g.size(); ++i)
-        gInfo_[static_cast<std::size_t>(i)] = classifyG(iso.g[i].number);
+        gInfo_[static_cast<std::size_t>(i)] = gInfoOf(iso.g[i].number);
     for (int i = 0; i < iso.g.size(); ++i) {
         const Word& w = iso.g[i];
         const GInfo& info = gInfo_[static_cast<std::size_t>(i)];

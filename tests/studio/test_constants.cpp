@@ -20,6 +20,7 @@
 #include "language.h"
 #include "machine/run.h"
 #include "main_window.h"
+#include "parameters/cell_text_delegate.h"
 #include "profile/builtin.h"
 #include "profile/csv.h"
 #include "program/parser.h"
@@ -40,6 +41,7 @@
 #include <QLineEdit>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QTableWidget>
 #include <QPlainTextEdit>
@@ -338,6 +340,64 @@ private slots:
         QVERIFY(setLanguage(QStringLiteral("en")));
         QTest::qWait(20);
         QCOMPARE(means(), en);
+    }
+
+    // The parameter tables keep each cell's text shaped (CellTextDelegate):
+    // what they show is what Qt's own delegate draws, pixel for pixel — a
+    // selected row, greyed reserved rows, bold right-aligned values, long
+    // meanings elided in a narrow table, in both languages — and painting
+    // the same cells again shapes nothing anew.
+    void theTablesDrawTheirCellsAsQtDoes() {
+        SimulatedSeam sim(lathe("lathe-cells"));
+        ConstantsPane constants(sim.seam, sim.session.simulation().profile());
+        RParamsPane rparams(sim.seam, sim.session.simulation().profile());
+        const auto sameAsQt = [](ParameterTablePane& pane, int valueColumn) {
+            QTableView* t = pane.table();
+            const QImage ours = t->viewport()->grab().toImage();
+            QAbstractItemDelegate* all = t->itemDelegate();
+            QAbstractItemDelegate* value = t->itemDelegateForColumn(valueColumn);
+            QStyledItemDelegate qt;
+            t->setItemDelegate(&qt);
+            t->setItemDelegateForColumn(valueColumn, &qt);
+            const QImage theirs = t->viewport()->grab().toImage();
+            t->setItemDelegate(all);
+            t->setItemDelegateForColumn(valueColumn, value);
+            return !ours.isNull() && ours == theirs;
+        };
+        for (const char* lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(QString::fromLatin1(lang)));
+            for (const QSize size : {QSize(1250, 700), QSize(620, 400)}) {
+                for (ParameterTablePane* pane : {static_cast<ParameterTablePane*>(&constants),
+                                                 static_cast<ParameterTablePane*>(&rparams)}) {
+                    const int valueColumn = pane == &constants ? int(ConstantsModel::Value) : int(RParamsModel::Value);
+                    pane->resize(size);
+                    pane->show();
+                    pane->table()->selectRow(14); // among C015, C016: reserved, grey
+                    QTest::qWait(20);
+                    QVERIFY2(sameAsQt(*pane, valueColumn), lang);
+                    pane->searchField()->setText(QStringLiteral("ускор"));
+                    QTest::qWait(20);
+                    QVERIFY2(sameAsQt(*pane, valueColumn), lang);
+                    pane->searchField()->clear();
+                    QTest::qWait(20);
+                }
+            }
+        }
+        QVERIFY(setLanguage(QStringLiteral("en")));
+        // Shaped once: typing again what was typed before paints from the cache.
+        auto* cells = qobject_cast<CellTextDelegate*>(constants.table()->itemDelegate());
+        QVERIFY(cells);
+        for (const QString& typed : {QStringLiteral("c0"), QString(), QStringLiteral("mm"), QString()}) {
+            constants.searchField()->setText(typed);
+            constants.table()->viewport()->repaint();
+        }
+        const int shaped = cells->shapedTexts();
+        QVERIFY(shaped > 0);
+        for (const QString& typed : {QStringLiteral("c0"), QString(), QStringLiteral("mm"), QString()}) {
+            constants.searchField()->setText(typed);
+            constants.table()->viewport()->repaint();
+        }
+        QCOMPARE(cells->shapedTexts(), shaped);
     }
 
     void importExportAndDiff() {

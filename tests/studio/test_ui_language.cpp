@@ -82,6 +82,7 @@
 #include "workspace/workspaces.h"
 
 #include <QAbstractButton>
+#include <QSignalSpy>
 #include <QAbstractItemView>
 #include <QAbstractSpinBox>
 #include <QAction>
@@ -528,6 +529,12 @@ private slots:
     // tr() (the positioner's messages, the modes, the kinds of tool): in
     // Russian letter by letter core's Russian, in English core's English.
     void catalogTextsAsCore();
+    // A file the window cannot read or write says why in the window's
+    // language — core's catalog of the system's reasons, not the C
+    // library's English that Qt's errorString() gives: the editor saving
+    // into a folder that is not there (the tests run as root, who may write
+    // anywhere else) or over a folder, opening a file that is not there.
+    void fileProblemsInTheWindowsLanguage();
 
 private:
     QTemporaryDir dir_;
@@ -1347,4 +1354,34 @@ void TestUiLanguage::catalogTextsAsCore() {
 }
 
 QTEST_MAIN(TestUiLanguage)
+
+void TestUiLanguage::fileProblemsInTheWindowsLanguage() {
+    studio::SimulationSession session(profile::builtin("training-lathe"));
+    studio::SimulatedController sim(session);
+    studio::ViewedController seam(sim);
+    studio::EditorTab tab(&seam);
+    tab.newFile();
+    tab.currentEditor()->setText(QStringLiteral("%L1\nN1 M30\n"));
+    QSignalSpy said(&tab, &studio::EditorTab::statusMessage);
+    const QString nowhere = dir_.filePath(QStringLiteral("no-such-folder/part.k528"));
+    const QString folder = dir_.path();
+    const QString absent = dir_.filePath(QStringLiteral("absent.k528"));
+    const auto last = [&] { return said.isEmpty() ? QString() : said.last().at(0).toString(); };
+    for (const bool ru : {true, false}) {
+        QVERIFY(studio::setLanguage(ru ? QStringLiteral("ru") : QStringLiteral("en")));
+        QVERIFY(!tab.saveTo(0, nowhere));
+        QCOMPARE(last(), ru ? nowhere + QStringLiteral(" не записывается: нет такого файла или папки")
+                            : nowhere + QStringLiteral(" cannot be written: No such file or directory"));
+        QVERIFY(!tab.saveTo(0, folder));
+        QCOMPARE(last(), ru ? folder + QStringLiteral(" не записывается: это папка; укажите имя файла")
+                            : folder + QStringLiteral(" cannot be written: it is a directory; give a file name"));
+        QVERIFY(!tab.openFile(absent));
+        QCOMPARE(last(), ru ? absent + QStringLiteral(" не читается: нет такого файла или папки")
+                            : absent + QStringLiteral(" cannot be read: No such file or directory"));
+    }
+    // Written where it can be: nothing said against it.
+    QVERIFY(tab.saveTo(0, dir_.filePath(QStringLiteral("part.k528"))));
+    QVERIFY(QFile::exists(dir_.filePath(QStringLiteral("part.k528"))));
+}
+
 #include "test_ui_language.moc"

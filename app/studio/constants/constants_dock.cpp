@@ -1,4 +1,5 @@
 #include "constants/constants_dock.h"
+#include "session/file_problem.h"
 #include "constants/cutting_dialog.h"
 #include "db/notes.h"
 #include "session/core_texts.h"
@@ -15,6 +16,7 @@
 #include "profile/text_format.h"
 #include "controller/controller.h"
 #include "controller/push_preview.h"
+#include "parameters/cell_text_delegate.h"
 #include "widgets.h"
 
 #include <QApplication>
@@ -31,7 +33,6 @@
 #include <QProgressBar>
 #include <QPromise>
 #include <QSaveFile>
-#include <QStyledItemDelegate>
 #include <QTableView>
 #include <QToolButton>
 #include <QUndoStack>
@@ -44,10 +45,11 @@ namespace {
 // The value column's editor: every keystroke is checked as the controller
 // would check the value (range and cross-checks); a value it would refuse
 // is shown red with the manual's message, and Enter does not commit it.
-class ValueDelegate : public QStyledItemDelegate {
+// Its cells are drawn as the table's others (CellTextDelegate).
+class ValueDelegate : public CellTextDelegate {
 public:
     ValueDelegate(ConstantsEditor& e, std::function<void(const QString&, bool)> say, QObject* parent)
-        : QStyledItemDelegate(parent), editor_(e), say_(std::move(say)) {}
+        : CellTextDelegate(parent), editor_(e), say_(std::move(say)) {}
 
     QWidget* createEditor(QWidget* parent, const QStyleOptionViewItem&, const QModelIndex& index) const override {
         auto* line = new QLineEdit(parent);
@@ -351,11 +353,11 @@ void ConstantsPane::exportFile(const QString& path) {
                 p.c = values; // the constants the controller runs
                 text = profile::writeMachineText(p);
             }
-            QSaveFile f(path);
+            SaveFile f(path);
             if (!f.open(QIODevice::WriteOnly) ||
                 f.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size()) ||
                 !f.commit()) {
-                r.error = ConstantsPane::tr("cannot write %1: %2").arg(path, f.errorString());
+                r.error = ConstantsPane::tr("cannot write %1: %2").arg(path, fileProblem(f));
                 return r;
             }
         } catch (const std::exception& e) {

@@ -1,4 +1,5 @@
 #include "controller/controller_dock.h"
+#include "session/file_problem.h"
 #include "session/core_texts.h"
 
 #include "controller/link_controller.h"
@@ -669,10 +670,10 @@ void ControllerDock::saveFrameLog(const QString& given) {
     link_->frameLog([self, path](const QString& text) {
         if (!self)
             return;
-        QSaveFile f(path);
+        SaveFile f(path);
         const QByteArray bytes = text.toUtf8();
         if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
-            self->say(tr("The frame log was not saved: %1").arg(f.errorString()));
+            self->say(tr("The frame log was not saved: %1").arg(fileProblem(f)));
             emit self->frameLogSaved(false, path);
             return;
         }

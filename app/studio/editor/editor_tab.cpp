@@ -1,4 +1,5 @@
 #include "editor/editor_tab.h"
+#include "session/file_problem.h"
 #include "editor/cycle_time_label.h"
 
 #include "editor/database_programs.h"
@@ -359,12 +360,13 @@ bool EditorTab::openFile(const QString& path) {
         emit statusMessage(tr("%1 is the database this window uses: it is not opened as a program").arg(abs));
         return false;
     }
-    QFile f(abs);
-    if (!f.open(QIODevice::ReadOnly)) {
-        emit statusMessage(tr("%1 cannot be read: %2").arg(abs, f.errorString()));
+    std::string text;
+    QString error;
+    if (!readTextFile(abs, text, error)) { // why in the window's language
+        emit statusMessage(error);
         return false;
     }
-    addDocument(abs, QString::fromUtf8(f.readAll()));
+    addDocument(abs, QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
     watcher_.addPath(abs);
     addRecent(abs);
     return true;
@@ -388,14 +390,13 @@ bool EditorTab::saveTo(int index, const QString& path) {
     const QString old = pathOf(index);
     if (!old.isEmpty())
         watcher_.removePath(old);
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate) || f.write(ed->text().toUtf8()) < 0) {
-        emit statusMessage(tr("%1 cannot be written: %2").arg(path, f.errorString()));
+    SaveFile f(path); // the old text stays whole until the new one is
+    if (!f.open(QIODevice::WriteOnly) || f.write(ed->text().toUtf8()) < 0 || !f.commit()) {
+        emit statusMessage(tr("%1 cannot be written: %2").arg(path, fileProblem(f)));
         if (!old.isEmpty())
             watcher_.addPath(old);
         return false;
     }
-    f.close();
     const QString abs = QFileInfo(path).absoluteFilePath();
     ed->setProperty(kPathProperty, abs);
     ed->setModified(false);

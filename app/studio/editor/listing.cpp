@@ -1,4 +1,5 @@
 #include "editor/listing.h"
+#include "session/file_problem.h"
 
 #include "language.h"
 #include "session/diagnostic_texts.h"
@@ -130,23 +131,32 @@ int printListing(const QString& text, const std::vector<program::Diagnostic>& di
 
 int exportListingPdf(const QString& text, const std::vector<program::Diagnostic>& diagnostics,
                      const ListingInfo& info, const QString& path, QString* error) {
+    SaveFile f(path); // a listing that is not written whole leaves the file as it was
+    const auto cannot = [&] {
+        if (error)
+            *error = tr("%1 cannot be written: %2").arg(path, fileProblem(f));
+        return 0;
+    };
+    if (!f.open(QIODevice::WriteOnly))
+        return cannot();
+    int pages = 0;
     {
-        QFile probe(path);
-        if (!probe.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-            if (error)
-                *error = tr("%1 cannot be written: %2").arg(path, probe.errorString());
-            return 0;
-        }
+        QPdfWriter pdf(&f);
+        pdf.setResolution(300);
+        pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait, QMarginsF(15, 12, 12, 12),
+                                      QPageLayout::Millimeter));
+        pdf.setTitle(info.file);
+        pdf.setCreator(QStringLiteral("K528 Studio"));
+        pages = printListing(text, diagnostics, info, pdf);
     }
-    QPdfWriter pdf(path);
-    pdf.setResolution(300);
-    pdf.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait, QMarginsF(15, 12, 12, 12),
-                                  QPageLayout::Millimeter));
-    pdf.setTitle(info.file);
-    pdf.setCreator(QStringLiteral("K528 Studio"));
-    const int pages = printListing(text, diagnostics, info, pdf);
-    if (pages == 0 && error)
-        *error = tr("%1 cannot be written").arg(path);
+    if (pages == 0) {
+        f.cancelWriting();
+        if (error)
+            *error = tr("%1 cannot be written").arg(path);
+        return 0;
+    }
+    if (!f.commit())
+        return cannot();
     return pages;
 }
 

@@ -1,4 +1,5 @@
 #include "history/history_dock.h"
+#include "session/file_problem.h"
 
 #include "database/database_ui.h"
 
@@ -158,9 +159,9 @@ QString HistoryView::writeCsv(const QString& dbPath, const db::MessageFilter& f,
         // The window's connection, a page at a time: the recorder and the
         // dock write and read between the pages.
         const auto shop = ShopDatabase::atText(dbPath);
-        QSaveFile out(path);
+        SaveFile out(path);
         if (!out.open(QIODevice::WriteOnly))
-            return tr("Cannot write %1: %2").arg(path, out.errorString());
+            return tr("Cannot write %1: %2").arg(path, fileProblem(out));
         QByteArray buf = QByteArray::fromStdString(db::MessageLog::csvHeader() + "\r\n");
         bool stopped = false;
         for (std::int64_t before = 0; !stopped;) {
@@ -190,7 +191,7 @@ QString HistoryView::writeCsv(const QString& dbPath, const db::MessageFilter& f,
         }
         out.write(buf);
         if (!out.commit())
-            return tr("Cannot write %1: %2").arg(path, out.errorString());
+            return tr("Cannot write %1: %2").arg(path, fileProblem(out));
     } catch (const std::exception& e) {
         return tr("Cannot export to %1: %2").arg(path, coreErrorText(e));
     }

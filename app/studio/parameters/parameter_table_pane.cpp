@@ -1,6 +1,7 @@
 #include "parameters/parameter_table_pane.h"
 
 #include "controller/view_notice.h"
+#include "parameters/cell_text_delegate.h"
 #include "parameters/parameter_table_model.h"
 #include "widgets.h"
 #include "workspace/flow_layout.h"
@@ -62,6 +63,8 @@ void ParameterTablePane::build(ParameterTableModel* model, ParameterFilter* filt
     table_ = new QTableView(this);
     table_->setObjectName(prefix_ + ".table");
     table_->setModel(filter_);
+    // A search repaints the whole table: its texts are shaped once, not at every paint.
+    table_->setItemDelegate(new CellTextDelegate(table_));
     table_->setSelectionBehavior(QAbstractItemView::SelectRows);
     table_->setSelectionMode(QAbstractItemView::SingleSelection);
     table_->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed |

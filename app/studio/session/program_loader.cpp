@@ -1,4 +1,5 @@
 #include "session/program_loader.h"
+#include "session/core_texts.h"
 
 #include "engine/load_programs.h"
 #include "session/diagnostic_texts.h"
@@ -31,14 +32,10 @@ ProgramLoad loadProgramFile(SimulationSession& session, const QString& path) {
         r.problem = tr("%1 is the database this window uses: it is not read as a program").arg(path);
         return r;
     }
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        r.problem = tr("%1 cannot be read: %2").arg(path, f.errorString());
+    std::string text;
+    if (!readTextFile(path, text, r.problem)) // why in the window's language
         return r;
-    }
-    const QByteArray bytes = f.readAll();
-    return loadProgramText(session, std::string(bytes.constData(), static_cast<std::size_t>(bytes.size())),
-                           QFileInfo(path).fileName());
+    return loadProgramText(session, text, QFileInfo(path).fileName());
 }
 
 ProgramLoad loadProgramText(SimulationSession& session, const std::string& text, const QString& name) {

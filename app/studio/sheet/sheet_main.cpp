@@ -3,6 +3,7 @@
 // input (proveout::sheetJson). A helper, not a command; it needs no display
 // (the offscreen platform unless QT_QPA_PLATFORM says otherwise).
 #include "sheet/sheet_render.h"
+#include "util/system_texts.h"
 
 #include <QGuiApplication>
 
@@ -55,7 +56,10 @@ int main(int argc, char** argv) {
     }
     const QString error = k528::studio::writeSetupSheetPdf(sheet, russian, out);
     if (!error.isEmpty()) {
-        std::fprintf(stderr, "k528: cannot write %s: %s\n", qPrintable(out), qPrintable(error));
+        // The reason comes in the command's language: the sentence too.
+        const std::string text = k528::util::systemText(
+            k528::util::message("io.cannot-write", {out.toStdString(), error.toStdString()}), russian);
+        std::fprintf(stderr, "k528: %s\n", text.c_str());
         return 2;
     }
     return 0;

@@ -1,4 +1,5 @@
 #include "sheet/sheet_render.h"
+#include "session/save_file.h"
 
 #include <QFont>
 #include <QAbstractTextDocumentLayout>
@@ -162,9 +163,9 @@ int printSetupSheet(const proveout::SetupSheet& sheet, bool russian, QPagedPaint
 }
 
 QString writeSetupSheetPdf(const proveout::SetupSheet& sheet, bool russian, const QString& path) {
-    QSaveFile f(path);
+    SaveFile f(path);
     if (!f.open(QIODevice::WriteOnly))
-        return f.errorString();
+        return q(util::systemText(f.reason(), russian));
     {
         QPdfWriter writer(&f);
         writer.setPageSize(QPageSize(QPageSize::A4));
@@ -176,7 +177,7 @@ QString writeSetupSheetPdf(const proveout::SetupSheet& sheet, bool russian, cons
         printSetupSheet(sheet, russian, writer);
     }
     if (!f.commit())
-        return f.errorString();
+        return q(util::systemText(f.reason(), russian));
     return {};
 }
 

@@ -1,4 +1,5 @@
 #include "training/training_pane.h"
+#include "session/file_problem.h"
 
 #include "training/training_texts.h"
 
@@ -458,14 +459,15 @@ void TrainingPane::gradeFile() {
                                                       tr("K528 programs (*.k528 *.txt);;All files (*)"));
     if (path.isEmpty())
         return;
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        QMessageBox::warning(this, tr("Training"), tr("Cannot read %1: %2").arg(path, f.errorString()));
+    std::string text;
+    QString error;
+    if (!readTextFile(path, text, error)) { // why in the window's language
+        QMessageBox::warning(this, tr("Training"), error);
         return;
     }
     if (student_->text().trimmed().isEmpty())
         student_->setText(QFileInfo(path).completeBaseName());
-    grade(QString::fromUtf8(f.readAll()), QFileInfo(path).fileName());
+    grade(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())), QFileInfo(path).fileName());
 }
 
 bool TrainingPane::grade(const QString& text, const QString& file) {
@@ -600,12 +602,12 @@ QString TrainingPane::exportCsv(const QString& path) const {
                    .join(QLatin1Char(',')) +
                QLatin1Char('\n');
     }
-    QSaveFile f(path);
+    SaveFile f(path);
     if (!f.open(QIODevice::WriteOnly))
-        return f.errorString();
+        return fileProblem(f);
     f.write(out.toUtf8());
     if (!f.commit())
-        return f.errorString();
+        return fileProblem(f);
     return {};
 }
 
@@ -657,9 +659,9 @@ QString TrainingPane::exportPdf(const QString& path) const {
         html += QStringLiteral("</tr>");
     }
     html += QStringLiteral("</table></body></html>");
-    QSaveFile f(path);
+    SaveFile f(path);
     if (!f.open(QIODevice::WriteOnly))
-        return f.errorString();
+        return fileProblem(f);
     {
         QPdfWriter writer(&f);
         writer.setPageSize(QPageSize(QPageSize::A4));
@@ -676,7 +678,7 @@ QString TrainingPane::exportPdf(const QString& path) const {
         doc.print(&writer);
     }
     if (!f.commit())
-        return f.errorString();
+        return fileProblem(f);
     return {};
 }
 
