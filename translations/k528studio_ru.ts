@@ -2990,6 +2990,10 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>release them (k528 db release %1 L&lt;n&gt;), or push as a technologist (the machine allows drafts: push.unreleased)</source>
         <translation>выпустите их (k528 db release %1 L&lt;n&gt;) или передайте их как технолог (станок разрешает черновики: push.unreleased)</translation>
     </message>
+    <message>
+        <source>an unexpected database error (please report it): %1</source>
+        <translation>непредвиденная ошибка базы данных (пожалуйста, сообщите о ней): «%1»</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DatabaseUi</name>

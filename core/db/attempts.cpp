@@ -79,7 +79,8 @@ AttemptEntry Database::recordAttempt(AttemptEntry entry) {
             .bind(12, entry.cycleTimeMs)
             .bind(13, entry.grade);
         if (!q.step())
-            throw Error(ErrorKind::Sql, path().string() + ": the attempt of \"" + entry.student + "\" at \"" + entry.exercise + "\" has no id");
+            throw sql::internalError("the attempt of \"" + entry.student + "\" at \"" + entry.exercise + "\" has no id",
+                                     path().string());
         entry.id = q.i64(0);
         q.reset();
         tx.commit();

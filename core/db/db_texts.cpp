@@ -58,6 +58,10 @@ constexpr std::array kTexts = {
     util::CatalogText{"corrupt.program",
                 "станок %1: программа L%2 не совпадает со своей контрольной суммой SHA-256",
                 "machine %1: program L%2 does not match its SHA-256 checksum"},
+    // A bug of core/db's own code (sql::internalError): %1 its English, for the report.
+    util::CatalogText{"internal",
+                "непредвиденная ошибка базы данных (пожалуйста, сообщите о ней): «%1»",
+                "an unexpected database error (please report it): %1"},
     // A schema older than what a table needs.
     util::CatalogText{"schema-lacks.messages",
                 "%1: в базе данных нет истории сообщений (версия схемы %2 ниже %3: откройте её один раз "

@@ -518,15 +518,15 @@ PgPart::PgPart(const PgQuery& q, int tag)
     : result_(q.result_), tag_(std::to_string(tag)), rows_(q.result_ ? PQntuples(q.result_) : 0) {}
 
 Query& PgPart::bind(int, std::int64_t) {
-    throw Error(ErrorKind::Sql, "a part of a result takes no parameters");
+    throw internalError("a part of a result takes no parameters");
 }
 
 Query& PgPart::bind(int, std::string_view) {
-    throw Error(ErrorKind::Sql, "a part of a result takes no parameters");
+    throw internalError("a part of a result takes no parameters");
 }
 
 Query& PgPart::bindNull(int) {
-    throw Error(ErrorKind::Sql, "a part of a result takes no parameters");
+    throw internalError("a part of a result takes no parameters");
 }
 
 bool PgPart::step() {

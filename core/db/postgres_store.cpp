@@ -64,7 +64,7 @@ std::unique_ptr<PostgresStore> PostgresStore::open(const Location& where,
                                                    const OpenOptions& options, const Fill& fill) {
     const auto& migrations = options.migrations;
     if (migrations.empty())
-        throw Error(ErrorKind::Sql, "no schema migrations given");
+        throw sql::internalError("no schema migrations given");
     const int latest = migrations.back().version;
     std::unique_ptr<PostgresStore> s(new PostgresStore);
     s->uri_ = where.uri();

@@ -4,6 +4,12 @@
 
 namespace k528::db::sql {
 
+Error internalError(std::string what, std::string at) {
+    ErrorText t("internal", {std::move(what)});
+    t.at = std::move(at);
+    return Error(ErrorKind::Sql, std::move(t));
+}
+
 Query& Query::bind(int i, const Value& v) {
     if (const auto* n = std::get_if<std::int64_t>(&v))
         return bind(i, *n);
@@ -15,7 +21,7 @@ Query& Query::bind(int i, const Value& v) {
 std::int64_t Connection::queryInt(std::string_view text) {
     Query& q = (*this)(text);
     if (!q.step())
-        throw Error(ErrorKind::Sql, "\"" + std::string(text) + "\" returned no row");
+        throw internalError("\"" + std::string(text) + "\" returned no row");
     const std::int64_t v = q.i64(0);
     q.reset();
     return v;
@@ -25,15 +31,15 @@ IntegerPairs::IntegerPairs(std::string packed, std::string what)
     : packed_(std::move(packed)), what_(std::move(what)) {}
 
 Query& IntegerPairs::bind(int, std::int64_t) {
-    throw Error(ErrorKind::Sql, "packed rows take no parameters");
+    throw internalError("packed rows take no parameters");
 }
 
 Query& IntegerPairs::bind(int, std::string_view) {
-    throw Error(ErrorKind::Sql, "packed rows take no parameters");
+    throw internalError("packed rows take no parameters");
 }
 
 Query& IntegerPairs::bindNull(int) {
-    throw Error(ErrorKind::Sql, "packed rows take no parameters");
+    throw internalError("packed rows take no parameters");
 }
 
 std::int64_t IntegerPairs::next() {

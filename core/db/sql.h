@@ -24,6 +24,15 @@ using Value = std::variant<std::monostate, std::int64_t, std::string>;
 
 enum class Dialect { Sqlite, Postgres };
 
+// An error of core/db's own code, not of the database or its data: a query
+// that always returns a row returned none, a packed row asked to bind, no
+// schema migrations given. Kind Sql, the catalog's "internal" in the
+// reader's language around `what` — our English for the bug report, kept as
+// written, as PostgreSQL keeps its "cannot happen" messages untranslated:
+// the words are for whoever fixes it, the sentence around them for the user.
+// `at`: the database it concerns, "" if none.
+Error internalError(std::string what, std::string at = {});
+
 class Query {
 public:
     virtual ~Query() = default;

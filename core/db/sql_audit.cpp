@@ -68,7 +68,7 @@ std::int64_t SqlStore::insertTransfer(const TransferEntry& t) {
     if (!server)
         q.bind(9, t.user);
     if (!q.step())
-        throw Error(ErrorKind::Sql, path_.string() + ": the transfer's row has no id");
+        throw sql::internalError("the transfer's row has no id", path_.string());
     const std::int64_t id = q.i64(0);
     q.reset();
     auto& item = query("INSERT INTO transfer_items (transfer_id, seq, kind, number, crc32, sha256, "

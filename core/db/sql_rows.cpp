@@ -210,7 +210,7 @@ std::int64_t SqlStore::insertMachine(const MachineProfile& p, const std::string&
                     "changed_by) VALUES (?1, ?2, 1, ?3, ?3, ?4) RETURNING id");
     q.bind(1, p.name).bind(2, p.title).bind(3, at).bind(4, author);
     if (!q.step())
-        throw Error(ErrorKind::Sql, path_.string() + ": the new machine's row has no id");
+        throw sql::internalError("the new machine's row has no id", path_.string());
     const std::int64_t id = q.i64(0);
     q.reset();
     return id;

@@ -169,7 +169,7 @@ void exec(sqlite3* db, std::string_view sqlText) {
 std::int64_t queryInt(sqlite3* db, std::string_view sqlText) {
     Stmt st(db, sqlText);
     if (!st.step())
-        throw Error(ErrorKind::Sql, "\"" + std::string(sqlText) + "\" returned no row");
+        throw internalError("\"" + std::string(sqlText) + "\" returned no row");
     return st.i64(0);
 }
 

@@ -286,7 +286,7 @@ std::unique_ptr<SqliteStore> SqliteStore::open(const fs::path& path, const OpenO
                                                const Fill& fill) {
     const auto& migrations = options.migrations;
     if (migrations.empty())
-        throw Error(ErrorKind::Sql, "no schema migrations given");
+        throw sql::internalError("no schema migrations given");
     const int latest = migrations.back().version;
     const bool exists = databaseFileExists(path);
     if (!exists && (!options.create || options.readOnly))

@@ -26,6 +26,7 @@ const TranslatedText kTexts[] = {
     {"corrupt.revision-program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1 revision %2 in %3: program L%4 of revision %5 does not match its SHA-256 checksum")},
     {"corrupt.history-section", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: history has an unknown section %2")},
     {"corrupt.program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: program L%2 does not match its SHA-256 checksum")},
+    {"internal", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "an unexpected database error (please report it): %1")},
     {"schema-lacks.messages", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no message history (schema version %2 below %3: open it once with write access to upgrade it)")},
     {"schema-lacks.attempts", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no training attempts (schema version %2 below %3: open it once with write access to upgrade it)")},
     {"schema-lacks.state-times", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no time in each state of the shop's machines (schema version %2 below %3: open it once with write access to upgrade it)")},
