@@ -397,12 +397,9 @@ bool hasProblemText(std::string_view id) { return kProblemTexts.has(id); }
 bool hasSystemText(std::string_view id) { return kSystemTexts.has(id); }
 
 QString systemText(const util::Message& m) {
-    std::vector<std::string> args = m.args;
-    for (const util::Message& w : m.within)
-        args.push_back(systemText(w).toStdString());
-    if (const std::optional<QString> text = kSystemTexts.text(m.id, args))
-        return *text;
-    return fromStd(util::systemText(m, false)); // an id without a translation: core's English
+    return sayWithin({&kSystemTexts}, m.id, m.args, m.within,
+                     [](const util::Message& w) { return systemText(w); },
+                     [&] { return fromStd(util::systemText(m, false)); });
 }
 
 bool hasNoteText(std::string_view id) { return kNoteTexts.has(id); }
@@ -410,12 +407,9 @@ bool hasNoteText(std::string_view id) { return kNoteTexts.has(id); }
 bool hasDescriptionText(std::string_view id) { return kDescriptionTexts.has(id); }
 
 QString descriptionProblemText(const profile::Problem& p) {
-    std::vector<std::string> args = p.args;
-    for (const profile::Problem& w : p.within)
-        args.push_back(descriptionProblemText(w).toStdString());
-    if (const std::optional<QString> text = kDescriptionTexts.text(p.id, args))
-        return *text;
-    return fromStd(plc::descriptionText(p, false)); // an id without a translation: core's words
+    return sayWithin({&kDescriptionTexts}, p.id, p.args, p.within,
+                     [](const profile::Problem& w) { return descriptionProblemText(w); },
+                     [&] { return fromStd(plc::descriptionText(p, false)); });
 }
 
 QString descriptionErrorText(const plc::DescriptionError& e) {
@@ -475,14 +469,9 @@ QString revisionNoteText(const std::string& summary) {
 }
 
 QString problemText(const profile::Problem& p) {
-    std::vector<std::string> args = p.args;
-    for (const profile::Problem& w : p.within)
-        args.push_back(problemText(w).toStdString());
-    if (const std::optional<QString> text = kProblemTexts.text(p.id, args))
-        return *text;
-    if (const std::optional<QString> text = kSystemTexts.text(p.id, args))
-        return *text; // a machine file's reason why it cannot be read
-    return fromStd(p.text()); // an id without a translation: core's English
+    // The system's texts too: a machine file's reason why it cannot be read.
+    return sayWithin({&kProblemTexts, &kSystemTexts}, p.id, p.args, p.within,
+                     [](const profile::Problem& w) { return problemText(w); }, [&] { return fromStd(p.text()); });
 }
 
 QString fileErrorText(const profile::FileError& e) {

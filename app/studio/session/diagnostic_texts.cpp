@@ -148,12 +148,9 @@ QString render(const Part& part, std::string_view id, const std::vector<std::str
                const std::vector<program::DiagnosticPart>& within) {
     if (id.empty())
         return {};
-    std::vector<std::string> all = args;
-    for (const program::DiagnosticPart& w : within)
-        all.push_back(diagnosticText(w).toStdString());
-    if (const std::optional<QString> text = kDiagnosticTexts.text(id, all))
-        return *text;
-    return fromStd(program::diagnosticText(part, false)); // an id without a translation: core's English
+    return sayWithin({&kDiagnosticTexts}, id, args, within,
+                     [](const program::DiagnosticPart& w) { return diagnosticText(w); },
+                     [&] { return fromStd(program::diagnosticText(part, false)); });
 }
 
 } // namespace

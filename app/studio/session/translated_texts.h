@@ -12,10 +12,12 @@
 #include <QString>
 
 #include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace k528::studio {
 
@@ -46,5 +48,24 @@ private:
     const char* context_;
     std::span<const TranslatedText> table_;
 };
+
+// A text of core's that holds other texts (`within`: «в кадре N5» inside a
+// diagnostic, a system error inside a file's problem), as core renders it:
+// each part said first (`sayPart`, in the window's language too) and added
+// after the text's own arguments; then the first table of `tables` with
+// the id says it. An id none has is said in core's own words (`coreWords()`),
+// so a text core gains before the desktop does still reads.
+template <class Part, class SayPart, class CoreWords>
+QString sayWithin(std::initializer_list<const TranslatedTexts*> tables, std::string_view id,
+                  std::span<const std::string> args, const std::vector<Part>& within, SayPart&& sayPart,
+                  CoreWords&& coreWords) {
+    std::vector<std::string> all(args.begin(), args.end());
+    for (const Part& w : within)
+        all.push_back(sayPart(w).toStdString());
+    for (const TranslatedTexts* table : tables)
+        if (std::optional<QString> text = table->text(id, all))
+            return *std::move(text);
+    return coreWords();
+}
 
 } // namespace k528::studio
