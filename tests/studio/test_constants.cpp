@@ -21,6 +21,7 @@
 #include "machine/run.h"
 #include "main_window.h"
 #include "parameters/cell_text_delegate.h"
+#include "parameters/parameter_table_pane.h"
 #include "profile/builtin.h"
 #include "profile/csv.h"
 #include "program/parser.h"
@@ -36,6 +37,7 @@
 
 #include <QComboBox>
 #include <QDockWidget>
+#include <QHeaderView>
 #include <QDir>
 #include <QFile>
 #include <QLineEdit>
@@ -537,6 +539,41 @@ private slots:
         pane.filter()->setSearch(QString());
         pane.filter()->setShow(RParamsFilter::Show::ReadOnly);
         QCOMPARE(pane.filter()->rowCount(), 31);
+    }
+
+    // Every column's title is readable whole in both languages (a column
+    // narrower than its title shows it clipped at both ends); the short
+    // «Address» says over its column what it stands for.
+    void everyTitleFitsItsColumn() {
+        MainWindow w;
+        w.resize(1366, 768);
+        for (const char* name : {"dock.constants", "dock.rparams"}) {
+            auto* pane = w.findChild<QDockWidget*>(name)->findChild<ParameterTablePane*>();
+            QVERIFY(pane);
+            QHeaderView* header = pane->table()->horizontalHeader();
+            header->resizeSection(0, 2); // narrower than any title: the language's change widens it again
+            for (const char* lang : {"ru", "en", "ru"}) {
+                QVERIFY(setLanguage(QString::fromLatin1(lang)));
+                QApplication::processEvents();
+                for (int c = 0; c < header->count(); ++c) {
+                    const QString title = header->model()->headerData(c, Qt::Horizontal).toString();
+                    QVERIFY2(header->sectionSize(c) >= header->sectionSizeHint(c),
+                             qPrintable(QStringLiteral("%1 %2: «%3» %4 < %5 px")
+                                            .arg(name, lang, title)
+                                            .arg(header->sectionSize(c))
+                                            .arg(header->sectionSizeHint(c))));
+                }
+            }
+        }
+        auto* constants = w.findChild<ConstantsPane*>();
+        const QAbstractItemModel* m = constants->table()->model();
+        for (const char* lang : {"en", "ru"}) {
+            QVERIFY(setLanguage(QString::fromLatin1(lang)));
+            QVERIFY(m->headerData(ConstantsModel::Address, Qt::Horizontal, Qt::ToolTipRole).toString().contains("Е.1") ||
+                    m->headerData(ConstantsModel::Address, Qt::Horizontal, Qt::ToolTipRole).toString().contains("E.1"));
+            QVERIFY(!m->headerData(ConstantsModel::Value, Qt::Horizontal, Qt::ToolTipRole).isValid());
+        }
+        QVERIFY(setLanguage("en"));
     }
 
     void docksInTheWindowAndScreenshots() {

@@ -148,8 +148,16 @@ QVariant ConstantsModel::data(const QModelIndex& index, int role) const {
 }
 
 QStringList ConstantsModel::columnTitles() const {
-    return {tr("No."),   tr("Axis"),  tr("Panel name"),          tr("Meaning"),        tr("Unit"),
-            tr("Range"), tr("Address (table E.1)"), tr("Value"), tr("The value means")};
+    return {tr("No."),   tr("Axis"),    tr("Panel name"), tr("Meaning"),        tr("Unit"),
+            tr("Range"), tr("Address"), tr("Value"),      tr("The value means")};
+}
+
+QStringList ConstantsModel::columnToolTips() const {
+    QStringList tips(ColumnCount);
+    // The manual's column «Адрес в БП»: the title alone would not say whose memory.
+    tips[Address] = tr("Where the constant lives in the positioner's memory, as table E.1 prints it: "
+                       "the word Z…, its bit or byte");
+    return tips;
 }
 
 Qt::ItemFlags ConstantsModel::flags(const QModelIndex& index) const {

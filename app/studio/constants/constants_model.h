@@ -42,6 +42,7 @@ public slots:
 
 protected:
     QStringList columnTitles() const override;
+    QStringList columnToolTips() const override;
 
 private:
     void fillTexts();

@@ -12,10 +12,11 @@ int ParameterTableModel::columnCount(const QModelIndex& parent) const {
 }
 
 QVariant ParameterTableModel::headerData(int section, Qt::Orientation o, int role) const {
-    if (o != Qt::Horizontal || role != Qt::DisplayRole)
+    if (o != Qt::Horizontal || (role != Qt::DisplayRole && role != Qt::ToolTipRole))
         return QAbstractTableModel::headerData(section, o, role);
-    const QStringList titles = columnTitles();
-    return section >= 0 && section < titles.size() ? QVariant(titles[section]) : QVariant();
+    const QStringList titles = role == Qt::DisplayRole ? columnTitles() : columnToolTips();
+    return section >= 0 && section < titles.size() && !titles[section].isEmpty() ? QVariant(titles[section])
+                                                                                 : QVariant();
 }
 
 const QFont& ParameterTableModel::valueFont() {

@@ -36,6 +36,9 @@ protected:
     ParameterTableModel(int columns, QObject* parent);
     // The titles of the columns, in their order, in the UI's language.
     virtual QStringList columnTitles() const = 0;
+    // What a short title stands for, shown over its column ("" or none: the
+    // title says it all).
+    virtual QStringList columnToolTips() const { return {}; }
     // The value column's font (bold).
     static const QFont& valueFont();
     // The values of `now` from number `from` up to `to` (not included) that

@@ -78,6 +78,11 @@ void ParameterTablePane::build(ParameterTableModel* model, ParameterFilter* filt
     int column = 0;
     for (int width : columnEms)
         table_->setColumnWidth(column++, width * em);
+    fitHeaders();
+    // A title is as long as its language makes it: Russian's are longer.
+    // (The R-parameters' model says its new language by a reset.)
+    connect(model_, &QAbstractItemModel::headerDataChanged, this, &ParameterTablePane::fitHeaders);
+    connect(model_, &QAbstractItemModel::modelReset, this, &ParameterTablePane::fitHeaders);
 
     // The status line: kept in view below the table when the dock scrolls
     // (workspace/screen_fit.h).
@@ -106,6 +111,15 @@ void ParameterTablePane::build(ParameterTableModel* model, ParameterFilter* filt
     connect(search_, &QLineEdit::textChanged, filter_, &ParameterFilter::setSearch);
     connect(&viewed_, &ViewedController::changed, this, &ParameterTablePane::followController);
     followController();
+}
+
+void ParameterTablePane::fitHeaders() {
+    // A column narrower than its title shows the title clipped at both ends;
+    // widened, never narrowed, so a column the user made wider stays so.
+    QHeaderView* header = table_->horizontalHeader();
+    for (int c = 0; c < model_->columnCount(); ++c)
+        if (header->sectionSize(c) < header->sectionSizeHint(c))
+            header->resizeSection(c, header->sectionSizeHint(c));
 }
 
 void ParameterTablePane::followController() {

@@ -84,6 +84,8 @@ protected:
 private:
     friend QDockWidget* addParameterTableDock(QMainWindow* window, ParameterTablePane* pane);
     void followController();
+    // Each column at least as wide as its title.
+    void fitHeaders();
     QString prefix_;
     MemoryArea area_;
     DockTexts dockTexts_;
