@@ -1290,8 +1290,12 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>C%1: «%2» is not a whole number</translation>
     </message>
     <message>
-        <source>Address (table E.1)</source>
-        <translation>Address (table E.1)</translation>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Where the constant lives in the positioner's memory, as table E.1 prints it: the word Z…, its bit or byte</source>
+        <translation>Where the constant lives in the positioner's memory, as table E.1 prints it: the word Z…, its bit or byte</translation>
     </message>
 </context>
 <context>
@@ -2556,10 +2560,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>Cycle time: measuring on the simulated machine…</translation>
     </message>
     <message>
-        <source>Cycle time of L%1 (%2): %3</source>
-        <translation>Cycle time of L%1 (%2): %3</translation>
-    </message>
-    <message>
         <source>the run ends in an alarm</source>
         <translation>the run ends in an alarm</translation>
     </message>
@@ -2572,8 +2572,12 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>the program cannot be started on this machine</translation>
     </message>
     <message>
-        <source>Cycle time of L%1 (%2): none, %3</source>
-        <translation>Cycle time of L%1 (%2): none, %3</translation>
+        <source>Cycle time of L%1: %2 (%3)</source>
+        <translation>Cycle time of L%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1: none, %2 (%3)</source>
+        <translation>Cycle time of L%1: none, %2 (%3)</translation>
     </message>
 </context>
 <context>
@@ -6261,6 +6265,10 @@ Its comment stays: %3</translation>
     <message>
         <source>not in the database %1</source>
         <translation>not in the database %1</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
     </message>
 </context>
 <context>

@@ -1290,8 +1290,12 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>C%1: «%2» — не целое число</translation>
     </message>
     <message>
-        <source>Address (table E.1)</source>
-        <translation>Адрес (Е.1)</translation>
+        <source>Address</source>
+        <translation>Адрес</translation>
+    </message>
+    <message>
+        <source>Where the constant lives in the positioner's memory, as table E.1 prints it: the word Z…, its bit or byte</source>
+        <translation>Где параметр лежит в памяти БП, как в таблице Е.1: слово Z…, его бит или байт</translation>
     </message>
 </context>
 <context>
@@ -2556,10 +2560,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>Время цикла: измеряется на модели станка…</translation>
     </message>
     <message>
-        <source>Cycle time of L%1 (%2): %3</source>
-        <translation>Время цикла L%1 (%2): %3</translation>
-    </message>
-    <message>
         <source>the run ends in an alarm</source>
         <translation>прогон заканчивается аварией</translation>
     </message>
@@ -2572,8 +2572,12 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>программу нельзя запустить на этом станке</translation>
     </message>
     <message>
-        <source>Cycle time of L%1 (%2): none, %3</source>
-        <translation>Время цикла L%1 (%2): нет, %3</translation>
+        <source>Cycle time of L%1: %2 (%3)</source>
+        <translation>Время цикла L%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>Cycle time of L%1: none, %2 (%3)</source>
+        <translation>Время цикла L%1: нет, %2 (%3)</translation>
     </message>
 </context>
 <context>
@@ -6261,6 +6265,10 @@ Its comment stays: %3</source>
     <message>
         <source>not in the database %1</source>
         <translation>нет в базе данных %1</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
     </message>
 </context>
 <context>

@@ -514,7 +514,7 @@ int MainWindow::keepInDatabase() {
 }
 
 void MainWindow::updateMachineLabel() {
-    const QString name = QString::fromStdString(machine_.profile.name);
+    const QString name = machineTitle(machine_.profile);
     const QString source = machine_.source.text();
     machineLabel_->setText(source.isEmpty() ? tr("Machine: %1").arg(name) : tr("Machine: %1 (%2)").arg(name, source));
     machineLabel_->setToolTip(machine_.warning);
@@ -549,9 +549,9 @@ void MainWindow::followDatabase() {
 void MainWindow::fillMachineMenu() {
     machineMenu_->clear();
     QString warning;
-    const QStringList names = machineNames(&warning);
-    for (const QString& n : names) {
-        QAction* a = machineMenu_->addAction(n);
+    for (const TitledMachine& m : titledMachines(&warning)) {
+        const QString n = m.name;
+        QAction* a = machineMenu_->addAction(m.title);
         a->setObjectName("action.machine." + n);
         a->setCheckable(true);
         a->setChecked(QString::fromStdString(machine_.profile.name) == n);

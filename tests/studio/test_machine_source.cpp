@@ -5,10 +5,14 @@
 #include "cli_runner.h"
 #include "language.h"
 #include "main_window.h"
+#include "db/database.h"
 #include "profile/builtin.h"
+#include "profile/english.h"
+#include "resources/embedded.h"
 #include "profile/text_format.h"
 #include "program/parser.h"
 #include "session/machine_source.h"
+#include "session/shop_database.h"
 #include "session/simulation_session.h"
 
 #include <QAction>
@@ -16,6 +20,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QMenu>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -68,7 +73,7 @@ private slots:
         MainWindow w(c);
         QCOMPARE(w.session()->controller().c()[94], 300000);
         const QLabel* label = w.findChild<QLabel*>("status.machine");
-        QVERIFY(label->text().contains("training-lathe"));
+        QVERIFY2(label->text().contains("Training lathe with the K528-05"), qPrintable(label->text()));
         QVERIFY2(label->text().contains("(database " + db_), qPrintable(label->text()));
         // The label says where the machine came from in the window's language,
         // also after the language is changed while the window is open.
@@ -118,6 +123,74 @@ private slots:
         QCOMPARE(startMachineName(), QString("grinder-205")); // the next start
         g->close();
         rememberMachine("training-lathe");
+    }
+
+    // A window names the machine by its title in the window's language (the
+    // machine file's `title`, its `title.en` in English), never by the bare
+    // name: the status line, File > Machine, the editor's machine of a file.
+    void theMachineIsNamedByItsTitle() {
+        const profile::MachineProfile lathe = profile::builtin("training-lathe");
+        MainWindow w(loadMachine("training-lathe"));
+        auto* label = w.findChild<QLabel*>("status.machine");
+        QVERIFY(label);
+        for (const char* lang : {"ru", "en"}) {
+            QVERIFY(setLanguage(lang));
+            QApplication::processEvents(); // LanguageChange reaches every widget
+            const QString title = QString::fromStdString(profile::titleText(lathe, QLatin1String(lang) == "en"));
+            QVERIFY(title.contains(QLatin1String(lang) == "en" ? "Training lathe" : "Учебный токарный"));
+            QVERIFY2(label->text().contains(title), qPrintable(label->text()));
+            QVERIFY2(!label->text().contains("training-lathe"), qPrintable(label->text()));
+            emit w.machineMenu()->aboutToShow();
+            QAction* a = w.machineMenu()->findChild<QAction*>("action.machine.training-lathe");
+            QVERIFY(a);
+            QCOMPARE(a->text(), title);
+            QCOMPARE(machineTitle(lathe), title);
+        }
+        QVERIFY(setLanguage("en"));
+        // A machine without a title is named by its name.
+        profile::MachineProfile bare = lathe;
+        bare.name = "lathe-7";
+        bare.title.clear();
+        bare.simulation.erase(profile::englishKey("title"));
+        QCOMPARE(machineTitle(bare), QStringLiteral("lathe-7"));
+    }
+
+    // Two machines of one title (a second lathe made from the same machine
+    // file) are told apart by their names; the rest keep the title alone.
+    void twoMachinesOfOneTitleAreToldApart() {
+        QVERIFY(setLanguage("ru"));
+        ShopDatabase::at()->use([](db::Database& d) {
+            profile::MachineProfile p = d.loadMachine("training-lathe");
+            p.name = "lathe-2";
+            d.createMachine(p);
+        });
+        const QString title = QString::fromStdString(profile::builtin("training-lathe").title);
+        QStringList said;
+        for (const TitledMachine& m : titledMachines())
+            said << m.name + '=' + m.title;
+        const QString grinder = QString::fromStdString(profile::builtin("grinder-205").title);
+        QCOMPARE(said, (QStringList{"grinder-205=" + grinder, "lathe-2=" + title + " — lathe-2",
+                                    "training-lathe=" + title + " — training-lathe"}));
+        ShopDatabase::at()->use([](db::Database& d) { d.removeMachine("lathe-2"); });
+        QVERIFY(setLanguage("en"));
+    }
+
+    // The sample programs are data shipped for Russian shops: the titles the
+    // program lists and tabs show are Russian (their English is in the
+    // file's «; EN:» comments).
+    void theSamplesProgramTitlesAreRussian() {
+        int titles = 0;
+        for (const auto& r : resources::under("samples/")) {
+            const program::ParseResult parsed = program::parse(r.data);
+            for (const program::Program& p : parsed.store.programs()) {
+                QVERIFY2(p.title, qPrintable(QStringLiteral("%1: L%2").arg(QString::fromUtf8(r.path.data(), r.path.size())).arg(p.number)));
+                const QString t = QString::fromStdString(*p.title);
+                QVERIFY2(t.contains(QRegularExpression("[а-яё]")), qPrintable(t));
+                QVERIFY2(!t.contains(QRegularExpression("[A-Za-z]")), qPrintable(t));
+                ++titles;
+            }
+        }
+        QVERIFY(titles >= 7);
     }
 
     // File > Keep: the controller's memory becomes the next revision of the

@@ -264,8 +264,10 @@ void ControllerDock::build() {
     pushMachineMenu_->setObjectName("menu.controller.pushMachine");
     connect(pushMachineMenu_, &QMenu::aboutToShow, this, [this] {
         pushMachineMenu_->clear();
-        for (const QString& n : machineNames())
-            pushMachineMenu_->addAction(n, this, [this, n] { pushMachine(n); })->setObjectName("action.controller.push." + n);
+        for (const TitledMachine& m : titledMachines()) {
+            const QString n = m.name;
+            pushMachineMenu_->addAction(m.title, this, [this, n] { pushMachine(n); })->setObjectName("action.controller.push." + n);
+        }
     });
     menu_->addSeparator();
     clearCAction_ = menu_->addAction(QString(), this, [this] { clearMemory(MemoryArea::C); });

@@ -3,6 +3,7 @@
 #include "editor/program_editor.h"
 #include "machine/run.h"
 #include "program/diagnostic.h"
+#include "session/machine_source.h"
 
 #include <QCoreApplication>
 #include <QEvent>
@@ -59,11 +60,11 @@ void CycleTimeLabel::start() {
     }
     running_ = true;
     const std::uint64_t gen = generation_;
-    auto profile = *editor_->machine();
+    auto profile = std::make_shared<const profile::MachineProfile>(*editor_->machine());
     auto store = editor_->store();
     const int number = store.programs().front().number;
     program_ = number;
-    machine_ = QString::fromStdString(profile.name);
+    machine_ = profile;
     std::weak_ptr<bool> alive = alive_;
     QPointer<CycleTimeLabel> self(this);
     QThreadPool::globalInstance()->start([profile = std::move(profile), store = std::move(store), number, gen,
@@ -71,7 +72,7 @@ void CycleTimeLabel::start() {
         std::optional<double> seconds;
         QString status;
         try {
-            const machine::CycleTime t = machine::cycleTime(profile, store, number, {});
+            const machine::CycleTime t = machine::cycleTime(*profile, store, number, {});
             seconds = t.seconds;
             status = QString::fromUtf8(engine::runStatusName(t.run.status).data());
         } catch (const std::exception&) {
@@ -112,7 +113,8 @@ void CycleTimeLabel::retranslate() {
         setText(tr("Cycle time: measuring on the simulated machine…"));
         break;
     case State::Measured:
-        setText(tr("Cycle time of L%1 (%2): %3").arg(program_).arg(machine_, durationText(*seconds_)));
+        // The figure before the machine's title: a narrow line cuts the title, not the figure.
+        setText(tr("Cycle time of L%1: %2 (%3)").arg(program_).arg(durationText(*seconds_), machineTitle(*machine_)));
         break;
     case State::NotCompleted: {
         QString why = runStatus_;
@@ -122,7 +124,7 @@ void CycleTimeLabel::retranslate() {
             why = tr("the run does not end within an hour");
         else if (runStatus_ == "blocked")
             why = tr("the program cannot be started on this machine");
-        setText(tr("Cycle time of L%1 (%2): none, %3").arg(program_).arg(machine_, why));
+        setText(tr("Cycle time of L%1: none, %2 (%3)").arg(program_).arg(why, machineTitle(*machine_)));
         break;
     }
     }

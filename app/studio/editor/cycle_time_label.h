@@ -1,6 +1,6 @@
 // The cycle time of the current file's first program, in the editor's status
-// line beside the count of problems («Время цикла L1 (training-lathe):
-// 3 мин 32.2 с»): the program run on the simulated machine the file is
+// line beside the count of problems («Время цикла L1: 3 мин 32.2 с
+// (Учебный токарный станок…)»): the program run on the simulated machine the file is
 // checked for, as `k528 path` gives it (machine::cycleTime: the same
 // deterministic run as `k528 run` — servo acceleration and lag, feeds,
 // dwells, the PLC's M-function answers). Measured on a worker thread after
@@ -9,6 +9,7 @@
 // newer text is dropped. Nothing runs while the file does not change.
 #pragma once
 
+#include "profile/profile.h"
 #include "workspace/elided_label.h"
 
 #include <QTimer>
@@ -53,7 +54,9 @@ private:
     // What the text says, kept to be said again in the other language.
     enum class State { None, Errors, NoMachine, Measuring, Measured, NotCompleted } state_ = State::None;
     int program_ = 0;
-    QString machine_, runStatus_;
+    QString runStatus_;
+    // The machine measured on, named by its title in either language.
+    std::shared_ptr<const profile::MachineProfile> machine_;
     std::shared_ptr<bool> alive_ = std::make_shared<bool>(true);
 };
 

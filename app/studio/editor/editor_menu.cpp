@@ -101,7 +101,7 @@ void EditorMenu::retranslate() {
     tab_.teachIn()->fillTargetsMenu(teachRMenu_);
     fileMachineMenu_->setTitle(tr("Machine of this file"));
     const int i = tab_.currentIndex();
-    const QString m = i >= 0 ? tab_.checkedMachineName(i) : QString();
+    const QString m = i >= 0 ? tab_.checkedMachineTitle(i) : QString();
     fileMachineAction_->setText(tr("Machine: %1").arg(m.isEmpty() ? tr("none") : m));
     fileMachineAction_->setToolTip(tr("The machine this file is checked for: its limits, feeds and axes"));
     openDbAction_->setText(tr("Open from the database…"));
@@ -123,14 +123,14 @@ void EditorMenu::fillFileMachineMenu() {
         a->setObjectName("action.fileMachine." + (choice.isEmpty() ? QStringLiteral("workstation") : choice));
         connect(a, &QAction::triggered, &tab_, [this, i, choice] { tab_.setFileMachine(i, choice); });
     };
-    add(viewed_ ? tr("The workstation's machine (%1)").arg(QString::fromStdString(viewed_->current().profile().name))
+    add(viewed_ ? tr("The workstation's machine (%1)").arg(machineTitle(viewed_->current().profile()))
                  : tr("The workstation's machine (none)"),
         QString());
     add(tr("None: the language only"), EditorTab::kNoMachine);
     fileMachineMenu_->addSeparator();
     QString warning;
-    for (const QString& n : machineNames(&warning))
-        add(n, n);
+    for (const TitledMachine& m : titledMachines(&warning))
+        add(m.title, m.name);
     if (!warning.isEmpty())
         fileMachineMenu_->addAction(warning)->setEnabled(false);
 }

@@ -860,6 +860,11 @@ QString EditorTab::checkedMachineName(int index) const {
     return QString::fromStdString(ed->machine()->name);
 }
 
+QString EditorTab::checkedMachineTitle(int index) const {
+    ProgramEditor* ed = editorAt(index);
+    return ed && ed->machine() ? machineTitle(*ed->machine()) : QString();
+}
+
 // --- Database machines ---------------------------------------------------------------
 
 QString EditorTab::databaseMachine(int index) const {

@@ -105,6 +105,8 @@ public:
     QString fileMachine(int index) const;
     // The name of the machine the document is checked for now ("" = none).
     QString checkedMachineName(int index) const;
+    // Its title in the window's language (machineTitle()), "" = none.
+    QString checkedMachineTitle(int index) const;
     // The Editor menu (refactoring, listing, setup sheet, teach-in, database,
     // machine) for the menu bar.
     QMenu* editorMenu() const;

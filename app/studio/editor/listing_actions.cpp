@@ -21,7 +21,7 @@ int ListingActions::exportPdf(const QString& path) {
     ed->validateNow();
     const int i = tab_.currentIndex();
     const ListingInfo info{tab_.pathOf(i).isEmpty() ? tab_.documentName(i) : tab_.pathOf(i),
-                           tab_.checkedMachineName(i), QDateTime::currentDateTime()};
+                           tab_.checkedMachineTitle(i), QDateTime::currentDateTime()};
     QString error;
     const int pages = exportListingPdf(ed->text(), ed->diagnostics(), info, path, &error);
     emit statusMessage(pages > 0 ? tr("Listing of %1 pages written to %2").arg(pages).arg(path) : error);
@@ -51,7 +51,7 @@ void ListingActions::printDialog() {
         return;
     const int i = tab_.currentIndex();
     const ListingInfo info{tab_.pathOf(i).isEmpty() ? tab_.documentName(i) : tab_.pathOf(i),
-                           tab_.checkedMachineName(i), QDateTime::currentDateTime()};
+                           tab_.checkedMachineTitle(i), QDateTime::currentDateTime()};
     const int pages = printListing(ed->text(), ed->diagnostics(), info, printer);
     emit statusMessage(pages > 0 ? tr("Printed %1 pages").arg(pages) : tr("The listing could not be printed"));
 }

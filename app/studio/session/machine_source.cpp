@@ -4,10 +4,13 @@
 #include "db/database.h"
 #include "machine/simulation.h"
 #include "profile/builtin.h"
+#include "profile/english.h"
 #include "profile/validate.h"
 #include "session/shop_database.h"
+#include "window_language.h"
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QSettings>
 #include <exception>
 
@@ -89,6 +92,50 @@ QStringList machineNames(QString* warning) {
     for (const std::string& n : profile::builtinNames())
         names << fromStd(n);
     return names;
+}
+
+QString machineTitle(const profile::MachineProfile& p) {
+    const std::string title = profile::titleText(p, !russianWindow());
+    return fromStd(title.empty() ? p.name : title);
+}
+
+namespace {
+
+// Two machines of one title (two lathes made from one machine file) are
+// told apart by their names.
+std::vector<TitledMachine> distinct(std::vector<TitledMachine> machines) {
+    QHash<QString, int> count;
+    for (const TitledMachine& m : machines)
+        ++count[m.title];
+    for (TitledMachine& m : machines)
+        if (count.value(m.title) > 1 && m.title != m.name)
+            m.title = QCoreApplication::translate("k528::studio::MachineSource", "%1 — %2").arg(m.title, m.name);
+    return machines;
+}
+
+} // namespace
+
+std::vector<TitledMachine> titledMachines(QString* warning) {
+    const bool english = !russianWindow();
+    try {
+        return distinct(ShopDatabase::at()->use([&](db::Database& d) {
+            std::vector<TitledMachine> out;
+            for (const db::MachineInfo& m : d.machines()) {
+                // The list has the Russian title; the English one is a setting
+                // of the machine's (text.en.title), read with its profile.
+                std::string title = english ? profile::titleText(d.loadMachine(m.name), true) : m.title;
+                out.push_back({fromStd(m.name), fromStd(title.empty() ? m.name : title)});
+            }
+            return out;
+        }));
+    } catch (const std::exception& e) {
+        if (warning)
+            *warning = databaseProblem(e);
+    }
+    std::vector<TitledMachine> out;
+    for (const std::string& n : profile::builtinNames())
+        out.push_back({fromStd(n), machineTitle(profile::builtin(n))});
+    return out;
 }
 
 MachineSave saveMachine(const profile::MachineProfile& p) {

@@ -11,6 +11,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <vector>
+
 namespace k528::studio {
 
 // Where a machine came from, said in the window's language when asked (the
@@ -35,6 +37,18 @@ MachineChoice loadMachine(const QString& nameOrPath);
 
 // The machines to choose from: the database's, else the built-in ones.
 QStringList machineNames(QString* warning = nullptr);
+
+// How the window names a machine: its title in the window's language (the
+// machine file's `title`, or its `title.en` in English), its name where it
+// has no title. The name is the shop's identifier, not words for a reader.
+QString machineTitle(const profile::MachineProfile& p);
+
+// The machines to choose from (as machineNames()) with their titles.
+struct TitledMachine {
+    QString name;
+    QString title; // machineTitle() of its profile
+};
+std::vector<TitledMachine> titledMachines(QString* warning = nullptr);
 
 // Keeps `p` as the current state of machine p.name in the database (a new
 // revision, with its history; a new machine if the database has none of that
