@@ -141,6 +141,8 @@ const QStringList kAllowedLatin = {
     "Vmax", "Tразг", "Kд",
     // Qt's Russian translation keeps "OK" (qtbase_ru: QPlatformTheme, QDialogButtonBox)
     "OK",
+    // SQLite's header field a foreign file's refusal names (it has no other name)
+    "application_id",
     // the PC keyboard's keys as printed on them
     "Ctrl", "Shift", "Alt", "Esc", "Tab", "Enter", "Return", "Backspace", "Ins", "Del", "PgUp",
     "PgDown", "Home", "End", "Num",
