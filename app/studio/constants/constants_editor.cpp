@@ -25,10 +25,6 @@ namespace k528::studio {
 
 namespace {
 
-QString fromStd(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
-
 using ErrorKey = std::pair<std::string, int>; // subject, message
 
 std::set<ErrorKey> errorKeys(const std::vector<profile::Finding>& fs) {
