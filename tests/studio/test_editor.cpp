@@ -540,7 +540,7 @@ private slots:
         ed->setText(QString::fromUtf8(sample.readAll()));
         QTRY_VERIFY_WITH_TIMEOUT(cycle->seconds().has_value(), 30000);
         QCOMPARE(std::llround(*cycle->seconds() * 1000), 212184LL);
-        QVERIFY2(cycle->text().contains("L1") && cycle->text().contains("training-lathe") &&
+        QVERIFY2(cycle->text().contains("L1") && cycle->text().contains("Training lathe with the K528-05") &&
                      cycle->text().contains("3 min 32.2 s"),
                  qPrintable(cycle->text()));
         // One more roughing pass (R12=6): a longer cycle, measured again.
