@@ -32,6 +32,29 @@ constexpr std::array kTexts = {
     CatalogText{"db.machines.none", "(станков нет: k528 db import ФАЙЛ добавляет станок)",
                 "(no machines: k528 db import FILE adds one)"},
     // A machine's head lines (`db show`) and its programs.
+    // `db show --c N`: the labels of a constant's lines (the values start in one column).
+    CatalogText{"db.show.c.axis", " (ось %1)", " (axis %1)"},
+    CatalogText{"db.show.c.meaning", "  значение:  %1", "  meaning:   %1"},
+    CatalogText{"db.show.c.unit", "  единица:   %1", "  unit:      %1"},
+    CatalogText{"db.show.c.range", "  диапазон:  %1...%2", "  range:     %1...%2"},
+    CatalogText{"db.show.c.kind", "  тип:       %1", "  kind:      %1"},
+    CatalogText{"db.show.c.address", "  адрес в БП: %1", "  address:   %1"},
+    CatalogText{"db.show.c.hint", "  подсказка: %1", "  hint:      %1"},
+    // `db show --r N`.
+    CatalogText{"db.show.r.not-preset", "(не задан)", "(not preset)"},
+    CatalogText{"db.show.r.read-only", "только чтение (R232..R262)", "read only (R232..R262)"},
+    CatalogText{"db.show.r.user", "параметр пользователя", "user parameter"},
+    CatalogText{"db.show.r.system", "системный параметр", "system parameter"},
+    CatalogText{"db.show.r.screen", "  УСТАНОВОЧНЫЕ ДАННЫЕ %1 %2", "  preset screen %1 %2"},
+    // `db show` of the whole machine, `--programs`, `--messages`.
+    CatalogText{"db.show.axis", "; ось %1", "; axis %1"},
+    CatalogText{"db.show.common", "; общие", "; common"},
+    CatalogText{"db.show.r-presets", "R-параметры (предустановки):", "R-parameter presets:"},
+    CatalogText{"db.show.programs", "программы: %1", "programs: %1"},
+    CatalogText{"db.show.messages-count", "; сообщения: %1; тексты ПЛК: %2", "; messages: %1; PLC texts: %2"},
+    CatalogText{"db.show.no-programs", "(нет программ)", "(no programs)"},
+    CatalogText{"db.show.messages", "Технологические сообщения:", "Technological messages:"},
+    CatalogText{"db.show.checks", "проверка:", "checks:"},
     CatalogText{"db.show.machine", "станок      %1", "machine   %1"},
     CatalogText{"db.show.revision-of", "ревизия     %1 (текущая %2)", "revision  %1 (current %2)"},
     CatalogText{"db.show.revision", "ревизия     %1, изменил %3, %2", "revision  %1, changed %2 by %3"},
@@ -115,6 +138,21 @@ constexpr std::array kTexts = {
                 "read the class's training attempts"},
 
     // ---- k528 db: usage errors.
+    CatalogText{"db.usage.no-args", "db %1 не принимает аргументов", "db %1 takes no arguments"},
+    CatalogText{"db.usage.one-machine", "db %1 нужен один СТАНОК (или СТАНОК@РЕВ)",
+                "db %1 needs one MACHINE (or MACHINE@REV)"},
+    CatalogText{"db.usage.copy-args", "db copy не принимает аргументов: k528 db copy --to МЕСТО",
+                "db copy takes no arguments: k528 db copy --to LOCATION"},
+    CatalogText{"db.usage.copy-to", "db copy нужен --to МЕСТО (новый файл, sqlite:ПУТЬ или postgresql://…)",
+                "db copy needs --to LOCATION (a new file, sqlite:PATH or postgresql://…)"},
+    CatalogText{"db.usage.set", "db set нужны СТАНОК и хотя бы один ПУНКТ=ЗНАЧЕНИЕ (например, C022=2133)",
+                "db set needs MACHINE and at least one ITEM=VALUE (e.g. C022=2133)"},
+    CatalogText{"db.usage.diff", "db diff нужны две стороны: СТАНОК, СТАНОК@РЕВ или ФАЙЛ",
+                "db diff needs two sides: MACHINE, MACHINE@REV or FILE"},
+    CatalogText{"db.usage.db", "после --db нужен путь к файлу или URI postgresql://",
+                "--db needs a file path or a postgresql:// URI"},
+    CatalogText{"db.no-folder", "нельзя создать папку %1: «%2»", "cannot create the folder %1: %2"},
+    CatalogText{"db.import.nothing", "%1 (ничего не импортировано)", "%1 (nothing was imported)"},
     CatalogText{"db.usage.revision", "«%1»: после @ нужен номер ревизии больше 0",
                 "'%1': the revision after @ must be a positive number"},
     CatalogText{"db.usage.release", "db %1 нужны станок и программа: k528 db %1 СТАНОК L<n> [--note ТЕКСТ]",
@@ -241,6 +279,7 @@ constexpr std::array kTexts = {
     CatalogText{"unit.volts", "В", "V"},
     CatalogText{"unit.mm-per-min", "мм/мин", "mm/min"},
     CatalogText{"unit.kv", "(м/мин)/мм", "(m/min)/mm"},
+    CatalogText{"unit.s", "с", "s"},
     CatalogText{"run.trace-error", "файл трассы: %1", "the trace: %1"},
     CatalogText{"opt.file-blank", "заготовка файла: %1", "the file's blank: %1"},
     CatalogText{"format.usage",
@@ -464,6 +503,25 @@ constexpr std::array kTexts = {
     CatalogText{"opt.no-value", "параметр %1 не принимает значения", "option %1 takes no value"},
     CatalogText{"opt.needs-value", "параметру %1 нужно значение", "option %1 needs a value"},
     CatalogText{"opt.unknown", "неизвестный параметр %1", "unknown option %1"},
+    CatalogText{"link.tcp", "после --tcp нужен ХОСТ:ПОРТ (например, 192.168.1.20:502, порт 1..65535), а не «%1»",
+                "--tcp takes HOST:PORT (e.g. 192.168.1.20:502, a port 1..65535), not '%1'"},
+    CatalogText{"link.address", "после --address нужен адрес станции 1..247, а не «%1»",
+                "--address takes a station address 1..247, not '%1'"},
+    CatalogText{"link.baud", "после --baud нужна скорость в бит/с (1200..4000000), а не «%1»",
+                "--baud takes a rate in bit/s (1200..4000000), not '%1'"},
+    CatalogText{"link.parity", "после --parity нужно none, even или odd, а не «%1»",
+                "--parity takes none, even or odd, not '%1'"},
+
+    // ---- k528 itself: its commands, the hint to the help, what ends a command.
+    CatalogText{"cli.try-help", "Справка: k528 --help.", "Try 'k528 --help'."},
+    CatalogText{"cli.unknown-command", "неизвестная команда «%1»", "unknown command '%1'"},
+    CatalogText{"cli.no-args", "%1 не принимает аргументов, а здесь «%2»", "%1 takes no arguments, not '%2'"},
+    CatalogText{"cli.help-one", "help принимает одну КОМАНДУ, а здесь ещё «%1»", "help takes one COMMAND, not '%1'"},
+    CatalogText{"cli.no-memory", "k528: не хватило памяти, чтобы выполнить команду",
+                "k528: not enough memory to finish the command"},
+    CatalogText{"cli.internal", "k528: внутренняя ошибка: %1", "k528: internal error: %1"},
+    CatalogText{"cli.internal-unknown", "k528: внутренняя ошибка: неизвестное исключение",
+                "k528: internal error: an unknown exception"},
 
     // ---- A program file and its run.
     CatalogText{"file.no-program", "в файле %1 нет ни одной программы", "%1 holds no program"},
@@ -484,6 +542,77 @@ constexpr std::array kTexts = {
     CatalogText{"preview.cancelled", "прервано", "cancelled"},
     CatalogText{"path.cycle-time", "время цикла не посчитано: %1", "the cycle time: %1"},
     CatalogText{"grade.exercise", "упражнение %1: %2", "exercise %1: %2"},
+    CatalogText{"path.cycle-time-s", "время цикла %1 с", "cycle time %1 s"},
+    CatalogText{"path.cycle-time-none", "время цикла: нет (прогон на станке: %1)",
+                "cycle time: none (the run on the machine: %1)"},
+    CatalogText{"format.not-formatted", "текст не отформатирован: исправьте синтаксические ошибки",
+                "not formatted: fix the syntax errors first"},
+    CatalogText{"format.not-canonical", "текст не в каноническом виде", "not in canonical form"},
+    // A machine's description (PLC) or tools that cannot be used (check, serve, db trial).
+    CatalogText{"machine.description", "k528: описание станка %1", "k528: machine description %1"},
+    CatalogText{"machine.tools", "k528: инструменты станка: %1", "k528: the machine's tools: %1"},
+    CatalogText{"trial.no-tool", "k528: у станка %1 нет инструмента в позиции %2", "k528: %1 has no tool at station %2"},
+    CatalogText{"trial.correction", "T%1 %2: измерено %3, по чертежу %4, ошибка %5 мм: R%6 %7 -> %8 (%9 мм)",
+                "T%1 %2: measured %3, drawing %4, error %5 mm: R%6 %7 -> %8 (%9 mm)"},
+    CatalogText{"panel.locked",
+                "k528: клавиша %1 не принята: константы станка заблокированы преподавателем для группы «%2» "
+                "(настройка constants.lock станка)",
+                "k528: key %1 refused: the machine constants are locked by the trainer for the class «%2» "
+                "(setting constants.lock of the machine)"},
+    // `k528 serve` on standard error.
+    CatalogText{"serve.cannot", "k528: не удаётся обслуживать линию %1: %2", "k528: cannot serve on %1: %2"},
+    CatalogText{"serve.tcp", "k528 serve: %1 на Modbus TCP %2, устройство %3; SIGINT/SIGTERM останавливает",
+                "k528 serve: %1 on Modbus TCP %2, unit %3; SIGINT/SIGTERM stops"},
+    CatalogText{"serve.serial", "k528 serve: %1 на %2, адрес %3, %4 %5%6; SIGINT/SIGTERM останавливает",
+                "k528 serve: %1 on %2, address %3, %4 %5%6; SIGINT/SIGTERM stops"},
+    CatalogText{"serve.stdin-key", "k528 serve: неизвестная клавиша «%1» со стандартного ввода пропущена",
+                "k528 serve: unknown key '%1' on standard input: ignored"},
+    CatalogText{"serve.stopped", "k528 serve: остановлен; запросов: %1, принято текстов: %2",
+                "k528 serve: stopped after %1 requests, %2 texts committed"},
+    // The course's exercises (`exercise show`, `exercise attempts`) and the grades (`grade`):
+    // the labels of a report's lines and the columns of a table.
+    CatalogText{"exercise.machine", "Станок:", "Machine:"},
+    CatalogText{"exercise.blank", "Заготовка:", "Blank:"},
+    CatalogText{"exercise.drawing-contour", "Чертёж (Z, Ø, допуск элемента до точки):",
+                "Drawing (Z, Ø, the tolerance of the element up to the point):"},
+    CatalogText{"exercise.drawing-bore", "Отверстие:", "Bore:"},
+    CatalogText{"exercise.drawing-reference", "Чертёж: деталь эталонной программы, допуск",
+                "Drawing: the reference program's part, tolerance"},
+    CatalogText{"exercise.cycle-time", "Время цикла не более", "Cycle time at most"},
+    CatalogText{"exercise.steps", "Действия оператора:", "Operator's steps:"},
+    CatalogText{"exercise.hint", "Подсказка:", "Hint:"},
+    CatalogText{"exercise.given", "Программа к заданию:", "The program handed out:"},
+    CatalogText{"exercise.attempts", "Попыток:", "Attempts:"},
+    CatalogText{"training.at", "время", "at"},
+    CatalogText{"training.student", "ученик", "student"},
+    CatalogText{"training.exercise", "упражнение", "exercise"},
+    CatalogText{"training.score", "балл", "score"},
+    CatalogText{"training.result", "итог", "result"},
+    CatalogText{"training.run", "выполнение", "run"},
+    CatalogText{"training.passed", "зачтено", "passed"},
+    CatalogText{"training.failed", "незачёт", "failed"},
+    CatalogText{"grade.file", "Файл", "File"},
+    CatalogText{"grade.score", "Оценка", "Score"},
+    CatalogText{"grade.not-passed", "не зачтено", "not passed"},
+    CatalogText{"grade.run", "Выполнение:", "Run:"},
+    CatalogText{"grade.cycle-time", "время цикла", "cycle time"},
+    CatalogText{"grade.limit", "норма", "limit"},
+    CatalogText{"grade.fails", "[не зачтено]", "[fails]"},
+    CatalogText{"grade.no-deductions", "замечаний нет", "no deductions"},
+    CatalogText{"grade.line", "строка", "line"},
+    CatalogText{"grade.cycle-s", "цикл, с", "cycle, s"},
+    CatalogText{"grade.main-deduction", "главное замечание", "main deduction"},
+    CatalogText{"grade.passed-count", "Зачтено:", "Passed:"},
+    CatalogText{"grade.not-recorded", "k528: %1: оценено, но попытка не записана: %2",
+                "k528: %1: graded, but the attempt was not recorded: %2"},
+    // How an attempt's run ended (the grade's status), in words: "grade.status." and the status.
+    CatalogText{"grade.status.completed", "программа выполнена до конца", "the program ran to its end"},
+    CatalogText{"grade.status.alarm", "остановлена сообщением", "stopped by a message"},
+    CatalogText{"grade.status.interrupted", "прервана", "interrupted"},
+    CatalogText{"grade.status.timeout", "не закончилась за отведённое время", "did not end in the time allowed"},
+    CatalogText{"grade.status.not_started", "программа не запускалась", "the program was not started"},
+    CatalogText{"grade.status.procedure", "только действия оператора", "the operator's procedure only"},
+    CatalogText{"grade.status.errors", "станок не принял файл", "the machine does not take the file"},
     // The helper programs k528 runs (the renderers, k528-link).
     CatalogText{"helper.missing",
                 "%1: нужна программа отрисовки %2 (ставится вместе с настольной программой; искали: %3)",
@@ -503,7 +632,6 @@ constexpr std::array kTexts = {
     CatalogText{"db.no-subcommand", "db нужна подкоманда: %1", "db needs a subcommand: %1"},
     CatalogText{"db.unknown-subcommand", "неизвестная подкоманда db «%1» (%2)", "unknown db subcommand '%1' (%2)"},
     // `db check`: the verdict and each finding (db::IntegrityProblem).
-    CatalogText{"db.check.args", "db check не принимает аргументов", "db check takes no arguments"},
     CatalogText{"db.check.ok", "проверка    нарушений нет", "check     no problems"},
     CatalogText{"db.check.found", "проверка    нарушений: %1", "check     problems found: %1"},
     CatalogText{"db.check.pages", "страницы файла (SQLite): %1", "the file's pages (SQLite): %1"},
@@ -531,6 +659,11 @@ util::TextCatalog cliTexts() { return util::TextCatalog(kTexts); }
 
 std::string cliText(std::string_view id, std::initializer_list<std::string> args, bool russian) {
     return cliTexts().render(id, std::span<const std::string>(args.begin(), args.size()), russian);
+}
+
+std::string_view cliWords(std::string_view id, bool russian) {
+    const CatalogText* t = cliTexts().find(id);
+    return t ? t->in(russian) : id;
 }
 
 } // namespace k528::cli
