@@ -35,12 +35,10 @@ bool isTcpLine(const Args& args) { return args.value("--tcp").has_value(); }
 std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
     linkplugin::LineSettings s;
     const bool ru = russianCommandLine();
-    const auto say = [ru](const char* russian, const char* english) { return std::string(ru ? russian : english); };
     const auto port = args.value("--port");
     const auto tcp = args.value("--tcp");
     if (port && tcp) {
-        usageError(say("--port УСТРОЙСТВО и --tcp ХОСТ:ПОРТ называют две линии: укажите одну",
-                       "--port DEVICE and --tcp HOST:PORT name two lines: give one"));
+        usageError(cliText("link.two-lines", {}, ru));
         return std::nullopt;
     }
     if (tcp) {
@@ -52,14 +50,12 @@ std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
         }
         for (const char* serial : {"--baud", "--parity", "--stop-bits"})
             if (args.value(serial)) {
-                usageError(std::string(serial) + say(" — настройка последовательной линии, а не --tcp",
-                                                      " is a setting of a serial line, not of --tcp"));
+                usageError(cliText("link.serial-setting", {serial}, ru));
                 return std::nullopt;
             }
         s.port = QString::fromStdString(*tcp);
     } else if (!port || port->empty()) {
-        usageError(say("нужен --port УСТРОЙСТВО (последовательный порт или конец пары pty) или --tcp ХОСТ:ПОРТ (Modbus TCP)",
-                       "--port DEVICE (a serial port, or one end of a pty pair) or --tcp HOST:PORT (Modbus TCP) is needed"));
+        usageError(cliText("link.no-line", {}, ru));
         return std::nullopt;
     } else {
         s.port = QString::fromStdString(*port);
@@ -94,7 +90,7 @@ std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
     }
     if (const auto st = args.value("--stop-bits")) {
         if (*st != "1" && *st != "2") {
-            usageError(say("после --stop-bits нужно 1 или 2", "--stop-bits takes 1 or 2"));
+            usageError(cliText("link.stop-bits", {}, ru));
             return std::nullopt;
         }
         s.stopBits = *st == "2" ? 2 : 1;

@@ -1,5 +1,6 @@
 #include "link_record.h"
 
+#include "cli_texts.h"
 #include "db/location.h"
 
 #include <cstdio>
@@ -22,12 +23,11 @@ std::string said(const db::Error& e, bool ru) {
 
 bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
                           std::optional<TransferRecord>& record) {
-    const auto say = [ru](const char* russian, const char* english) { return ru ? russian : english; };
     const auto given = args.value("--db");
     const char* env = std::getenv("K528_DB");
     const auto machine = args.value("--machine");
     const bool required = given || (env && *env) || machine;
-    std::string where = given ? *given : say("базы данных по умолчанию", "the default database");
+    std::string where = given ? *given : cliText("link.record.default-db", {}, ru);
     try {
         const db::Location loc = given ? db::Location::parse(*given) : db::defaultDatabaseLocation();
         where = loc.text();
@@ -36,12 +36,7 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
             std::error_code ec;
             if (!fs::exists(loc.file(), ec)) {
                 if (given) {
-                    std::fprintf(stderr,
-                                 say("k528 link: нет базы данных %s для журнала передач (создайте её: "
-                                     "k528 db init --db %s); ничего не отправлено\n",
-                                     "k528 link: no database at %s for the transfer log (create one "
-                                     "with: k528 db init --db %s); nothing was sent\n"),
-                                 where.c_str(), where.c_str());
+                    std::fprintf(stderr, "%s\n", cliText("link.record.no-db", {where}, ru).c_str());
                     return false;
                 }
                 fs::create_directories(loc.file().parent_path(), ec);
@@ -54,9 +49,7 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
             const auto m = d.machine(*machine);
             if (!m) {
                 std::fprintf(stderr,
-                             say("k528 link: в %2$s нет станка «%1$s»; ничего не отправлено\n",
-                                 "k528 link: no machine \"%1$s\" in %2$s; nothing was sent\n"),
-                             machine->c_str(), where.c_str());
+                             "%s\n", cliText("link.record.no-machine", {*machine, where}, ru).c_str());
                 return false;
             }
             c.machine = *machine;
@@ -66,15 +59,10 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
         return true;
     } catch (const db::Error& e) {
         if (required) {
-            std::fprintf(stderr, say("k528 link: журнал передач: %s; ничего не отправлено\n",
-                                     "k528 link: the transfer log: %s; nothing was sent\n"),
-                         said(e, ru).c_str());
+            std::fprintf(stderr, "%s\n", cliText("link.record.failed", {said(e, ru)}, ru).c_str());
             return false;
         }
-        std::fprintf(stderr,
-                     say("k528 link: предупреждение: эта передача не записана в журнал (%s: %s)\n",
-                         "k528 link: warning: this transfer is not on record (%s: %s)\n"),
-                     where.c_str(), said(e, ru).c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.not-recorded", {where, said(e, ru)}, ru).c_str());
         return true;
     }
 }
