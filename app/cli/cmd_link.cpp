@@ -276,10 +276,9 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
         lineReport(l, *t, baud);
         frames += link::formatFrameLog(t->frameLog());
     }
-    if (ru)
-        std::fprintf(stderr, "поиск: ответивших станций: %d\n", found);
-    else
-        std::fprintf(stderr, "scan: %d station%s answered\n", found, found == 1 ? "" : "s");
+    std::fprintf(stderr, "%s\n",
+                 (found == 1 ? say("link.report.scan-found-one") : say("link.report.scan-found", {std::to_string(found)}))
+                     .c_str());
     if (!saveFrames(framesPath, frames))
         return ExitUsage;
     return stopRequested() ? ExitUsage : ExitOk;

@@ -78,11 +78,7 @@ bool TransferRecord::releasedPlan(link::PushPlan& plan) {
         return false;
     }
     if (plan.programs.empty())
-        std::fprintf(stderr,
-                     ru_ ? "k528 link: у станка %s нет выпущенных программ: передаются только его C, R и "
-                           "сообщения\n"
-                         : "k528 link: machine %s has no released program: pushing its C, R and messages only\n",
-                     where_.machine.c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.no-released", {where_.machine}, ru_).c_str());
     return true;
 }
 
@@ -92,19 +88,12 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
     try {
         const transfer::ReleaseCheck check = transfer::checkReleased(db_, where_.machine, plan);
         if (check.overridden)
-            std::fprintf(stderr,
-                         ru_ ? "k528 link: передаются невыпущенные программы (станок %s это разрешает: "
-                               "push.unreleased)\n"
-                             : "k528 link: pushing programs that are not released (machine %s allows it: "
-                               "push.unreleased)\n",
-                         where_.machine.c_str());
+            std::fprintf(stderr, "%s\n", cliText("link.record.unreleased", {where_.machine}, ru_).c_str());
         if (!check.allowed)
-            std::fprintf(stderr, ru_ ? "k528 link: %s\nничего не отправлено\n" : "k528 link: %s\nnothing was sent\n",
-                         check.message(ru_).c_str());
+            std::fprintf(stderr, "%s\n", cliText("link.record.refused", {check.message(ru_)}, ru_).c_str());
         return check.allowed;
     } catch (const db::Error& e) {
-        std::fprintf(stderr, ru_ ? "k528 link: %s; ничего не отправлено\n" : "k528 link: %s; nothing was sent\n",
-                     said(e, ru_).c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.nothing-sent", {said(e, ru_)}, ru_).c_str());
         return false;
     }
 }
@@ -112,13 +101,10 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
 void TransferRecord::record(const db::TransferEntry& e) {
     try {
         const db::TransferEntry stored = db_.recordTransfer(e);
-        std::fprintf(stderr, ru_ ? "в журнале: передача %lld в %s\n" : "on record: transfer %lld in %s\n",
-                     static_cast<long long>(stored.id),
-                     db_.location().text().c_str());
+        std::fprintf(stderr, "%s\n",
+                     cliText("link.record.recorded", {std::to_string(stored.id), db_.location().text()}, ru_).c_str());
     } catch (const db::Error& err) {
-        std::fprintf(stderr,
-                     ru_ ? "k528 link: передача не записана в журнал: %s\n" : "k528 link: the transfer was not recorded: %s\n",
-                     said(err, ru_).c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.not-recorded-after", {said(err, ru_)}, ru_).c_str());
     }
 }
 
