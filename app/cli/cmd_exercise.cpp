@@ -123,7 +123,7 @@ int show(const Args& args, Lang lang, const std::string& id) {
                     toleranceText(d.tolerance).c_str());
     }
     if (e->limits.cycleTimeS > 0)
-        std::printf("%s %g s\n", word("exercise.cycle-time").c_str(), e->limits.cycleTimeS);
+        std::printf("%s %g %s\n", word("exercise.cycle-time").c_str(), e->limits.cycleTimeS, word("unit.s").c_str());
     if (!e->steps.empty()) {
         std::string s;
         for (const training::OperatorStep& st : e->steps)
