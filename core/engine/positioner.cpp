@@ -134,7 +134,7 @@ void Positioner::tick() {
         // programControl(), whose condition holds here).
         programControlAgain();
         if (checkShortcuts_) [[unlikely]]
-            checkRoutineTick();
+            checkShortcut(&Positioner::readAll);
     } else {
         readAll();
     }
@@ -200,13 +200,16 @@ Positioner::TickInputs Positioner::tickInputs() const {
     return t;
 }
 
+bool Positioner::inputsAsRead() const {
+    return routine_.valid && !operatorActed_ && tickInputs() == routine_.inputs;
+}
+
 bool Positioner::routineInputs() const {
     // A reading of the same inputs would: count no handwheel pulse, decode
     // the same signals, raise or clear no message, find no edge (so start,
     // stop, reset, acknowledge nothing and keep mode and override) and, out
     // of РУЧНОЙ with no pulse, move no axis by hand.
-    return routine_.valid && !operatorActed_ && c_.mode != Mode::Manual && wheelDelta_[0] == 0 &&
-           wheelDelta_[1] == 0 && tickInputs() == routine_.inputs;
+    return c_.mode != Mode::Manual && wheelDelta_[0] == 0 && wheelDelta_[1] == 0 && inputsAsRead();
 }
 
 void Positioner::noteRoutineInputs() {
@@ -272,15 +275,13 @@ Positioner::Observed Positioner::observed() const {
     return o;
 }
 
-void Positioner::checkRoutineTick() {
-    // The routine path ran (programControlAgain); the full reading of the
-    // same inputs must find nothing more to do.
-    const Observed routine = observed();
-    readAll();
+void Positioner::checkShortcut(void (Positioner::*full)()) {
+    const Observed shortcut = observed();
+    (this->*full)();
     ++shortcutChecks_;
-    const bool agree = observed() == routine;
+    const bool agree = observed() == shortcut;
     shortcutDisagreements_ += agree ? 0 : 1;
-    assert(agree && "the routine tick's shortcut and the full reading disagree");
+    assert(agree && "a shortcut of the tick and the full reading of the same inputs disagree");
 }
 
 void Positioner::readInputs() {
@@ -530,18 +531,24 @@ void Positioner::programControlAgain() {
 }
 
 void Positioner::programControl() {
+    // A full reading runs in РУЧНОЙ, with a handwheel pulse or after another
+    // input changed; with the inputs of the last one and no operator
+    // function since, no edge: nothing resets, acknowledges, stops or
+    // starts, and the mode and the override stay what it made them.
+    if (inputsAsRead()) {
+        programControlAgain();
+        if (checkShortcuts_) [[unlikely]]
+            checkShortcut(&Positioner::programControlInFull);
+        return;
+    }
+    programControlInFull();
+}
+
+void Positioner::programControlInFull() {
     const std::uint16_t w = c_.words.word(1000), before = c_.lastZ1000;
     const std::uint16_t w1 = c_.words.word(1001), before1 = c_.lastZ1001;
     const std::array<std::uint8_t, 2> fi = c_.io.fastInputs;
-    if (!operatorActed_ && w == before && w1 == before1 && fi == controlFastInputs_) {
-        // The same inputs as the last tick, and no operator function since:
-        // no edge, so nothing resets, acknowledges, stops or starts; the mode
-        // and the override stay what the last tick made them.
-        programControlAgain();
-        return;
-    }
     operatorActed_ = false;
-    controlFastInputs_ = fi;
     c_.lastZ1000 = w;
     c_.lastZ1001 = w1;
 

@@ -138,11 +138,12 @@ public:
         chooseOutput();
     }
     DebugGate* debugGate() const { return debugGate_; }
-    // The routine tick's two paths (docs/engine.md, "Speed"): with this on,
+    // The shortcuts' two paths (docs/engine.md, "Speed"): with this on,
     // a routine tick also takes the full path — the reading of the inputs,
     // Z2000, the wheel's bits and the sums of the offsets computed anew —
-    // and compares what both leave; a debug build has it on and asserts
-    // they agree. Counts the ticks checked and those that disagreed.
+    // and so does program control where it took its shortcut within a full
+    // reading; each compares what both leave; a debug build has it on and
+    // asserts they agree. Counts the checks and those that disagreed.
     void setCheckShortcuts(bool on) { checkShortcuts_ = on; }
     std::int64_t shortcutChecks() const { return shortcutChecks_; }
     std::int64_t shortcutDisagreements() const { return shortcutDisagreements_; }
@@ -167,7 +168,12 @@ private:
     const AxisUnit& unit(AxisId a) const { return c_.axes[static_cast<std::size_t>(axisIndex(a))]; }
     void readInputs();
     void systemChecks();
+    // Program control: with the inputs of the last full reading and no
+    // operator function since (inputsAsRead()), programControlAgain(); else
+    // programControlInFull(), which reads the edges of Z1000/Z1001 and the
+    // fast inputs.
     void programControl();
+    void programControlInFull();
     // What program control does again each tick with unchanged inputs.
     [[gnu::always_inline]] inline void programControlAgain();
     void resetSystem();
@@ -238,15 +244,18 @@ private:
     std::array<bool, 65> configMessages_{};
     std::uint64_t lastSystemInputs_ = ~0ull; // systemChecks(): the inputs last applied
     std::array<bool, kAxisCount> servoRKnown_{}; // axisR(): the servo's R values are written
-    // programControl(): an operator function acted since it last ran, and
-    // the fast inputs it last read (with Z1000/Z1001 in c_.lastZ1000/1001).
+    // An operator function acted since program control last read its inputs
+    // in full.
     bool operatorActed_ = true;
-    std::array<std::uint8_t, 2> controlFastInputs_{};
     // The routine tick (docs/engine.md, "Speed"): the inputs the last full
     // reading of inputs, PLC messages, system checks, program control and
     // manual functions saw. While they stay, with no operator function, no
     // handwheel pulse and not in РУЧНОЙ, that reading would change nothing.
     bool routineInputs() const;
+    // The same inputs as that reading, and no operator function since: the
+    // condition of both shortcuts (the routine tick's, program control's
+    // within a full reading), one snapshot compared as one block.
+    bool inputsAsRead() const;
     void noteRoutineInputs();
     // What that reading depends on, as one snapshot with one equality: the
     // words the positioner reads (Z1000..Z1907), the fast inputs and module
@@ -270,11 +279,14 @@ private:
         bool valid = false;
         TickInputs inputs;
     } routine_;
-    // Both paths of a routine tick (setCheckShortcuts): what the full
-    // reading, run after the routine one, would change.
+    // Both paths of a shortcut (setCheckShortcuts): what the full reading,
+    // run after the shortcut, would change.
     struct Observed;
     Observed observed() const;
-    void checkRoutineTick();
+    // A shortcut ran (the routine tick's: programControlAgain instead of
+    // readAll; program control's: instead of programControlInFull); `full`,
+    // the long way with the same inputs, must find nothing more to do.
+    void checkShortcut(void (Positioner::*full)());
 #ifdef NDEBUG
     bool checkShortcuts_ = false;
 #else

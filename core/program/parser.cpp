@@ -135,26 +135,6 @@ private:
         out_.diagnostics.push_back(std::move(d));
     }
 
-    // The line is well-formed UTF-8 from `from` on. Two-byte sequences (the
-    // Cyrillic of comments) and ASCII are taken here; from the first other
-    // lead byte the rest is left to utf8::isValid.
-    bool validUtf8From(std::size_t from) const {
-        const auto* const p = reinterpret_cast<const unsigned char*>(line_.data());
-        const std::size_t n = line_.size();
-        std::size_t k = from;
-        while (k < n) {
-            const unsigned char b = p[k];
-            if (b < 0x80) {
-                ++k;
-            } else if (b >= 0xC2 && b <= 0xDF && k + 1 < n && (p[k + 1] & 0xC0) == 0x80) {
-                k += 2; // U+0080..U+07FF: no overlong, no surrogate
-            } else {
-                return utf8::isValid(line_.substr(k));
-            }
-        }
-        return true;
-    }
-
     // --- lexing helpers ----------------------------------------------------------------
     char at(std::size_t i) const { return i < line_.size() ? line_[i] : '\0'; }
     // The end of the character at i (whole UTF-8 sequences; i + 1 at the end).
@@ -384,7 +364,7 @@ void Parser::processLine() {
     colPos_ = 0;
     colCol_ = 1;
     invalidUtf8At_ = std::string_view::npos;
-    if (!lineAscii_ && !validUtf8From(asciiPrefix_)) { // (the ASCII start is valid)
+    if (!lineAscii_ && !utf8::isValid(line_.substr(asciiPrefix_))) { // (the ASCII start is valid)
         const std::size_t bad = text::firstInvalidUtf8(line_);
         invalidUtf8At_ = bad;
         report(Rule::InvalidUtf8, 0, bad, bad + 1, "invalid-utf8",

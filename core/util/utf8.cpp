@@ -49,7 +49,19 @@ std::size_t validLength(std::string_view s, std::size_t i) {
 }
 
 bool isValid(std::string_view s) {
+    const auto* const p = reinterpret_cast<const unsigned char*>(s.data());
     for (std::size_t i = 0; i < s.size();) {
+        // ASCII and two-byte sequences (U+0080..U+07FF: the Cyrillic of
+        // comments and texts) without decoding: no overlong form, no
+        // surrogate among them. Anything else is decoded and checked whole.
+        if (p[i] < 0x80) {
+            ++i;
+            continue;
+        }
+        if (p[i] >= 0xC2 && p[i] <= 0xDF && i + 1 < s.size() && (p[i + 1] & 0xC0) == 0x80) {
+            i += 2;
+            continue;
+        }
         char32_t cp;
         const std::size_t n = decodeOne(s, i, cp);
         if (n == 0)

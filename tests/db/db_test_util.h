@@ -23,15 +23,7 @@ template <> inline char* toString(const std::string& s) {
     return qstrdup(s.c_str());
 }
 // ... and what a check found, kind and arguments.
-template <> inline char* toString(const std::vector<k528::db::IntegrityProblem>& problems) {
-    std::string s;
-    for (const auto& p : problems) {
-        s += (s.empty() ? "" : "; ") + std::string(k528::db::integrityProblemName(p.kind));
-        for (const std::string& a : p.args)
-            s += " " + a;
-    }
-    return qstrdup(s.empty() ? "(none)" : s.c_str());
-}
+template <> inline char* toString(const std::vector<k528::db::IntegrityProblem>& problems);
 } // namespace QTest
 
 namespace k528::testing {
@@ -103,13 +95,19 @@ inline std::string runSql(const db::Location& where, const std::string& sql) {
     return out;
 }
 
-// What Database::checkIntegrity() finds, as one line ("" when fine): a
-// QCOMPARE with "" prints what was found.
-inline std::string integrityText(const db::Database& d) {
-    const std::unique_ptr<char[]> text(QTest::toString(d.checkIntegrity()));
-    const std::string s = text.get();
-    return s == "(none)" ? std::string() : s;
+// What Database::checkIntegrity() found, as one line: each kind and its
+// arguments, "; " between them ("" when nothing).
+inline std::string integrityText(const std::vector<db::IntegrityProblem>& problems) {
+    std::string s;
+    for (const auto& p : problems) {
+        s += (s.empty() ? "" : "; ") + std::string(db::integrityProblemName(p.kind));
+        for (const std::string& a : p.args)
+            s += " " + a;
+    }
+    return s;
 }
+// ... of a database: a QCOMPARE with "" prints what was found.
+inline std::string integrityText(const db::Database& d) { return integrityText(d.checkIntegrity()); }
 
 // A database of its own for one test: the SQLite file `name` in `dir`, or on
 // PostgreSQL a new database (UTF-8) named after the test process, `dir` and
@@ -165,3 +163,7 @@ inline bool hasEnglishSentence(QString text, bool quotedToo = true) {
 }
 
 } // namespace k528::testing
+
+template <> inline char* QTest::toString(const std::vector<k528::db::IntegrityProblem>& problems) {
+    return qstrdup(k528::testing::integrityText(problems).c_str());
+}

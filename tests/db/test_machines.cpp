@@ -571,7 +571,7 @@ private slots:
         const auto problems = d.checkIntegrity();
         QVERIFY2(std::ranges::find(problems, db::IntegrityProblem{K::ItemHistoryMissing, {"grinder-205", "R3"}}) !=
                      problems.end(),
-                 std::unique_ptr<char[]>(QTest::toString(problems)).get());
+                 integrityText(problems).c_str());
         QVERIFY(std::ranges::find(problems, db::IntegrityProblem{K::ItemHistoryDiffers, {"grinder-205", "R3"}}) ==
                 problems.end());
         QVERIFY(sameHistory(d.history("grinder-205", std::string("R3")), items.at("R3")));

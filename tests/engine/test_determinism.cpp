@@ -91,6 +91,36 @@ private slots:
             QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
         }
     }
+    // Both paths of program control within a full reading: in РУЧНОЙ every
+    // tick reads its inputs in full (a hand may move an axis), and while a
+    // jog is held and nothing else changes, program control takes its
+    // shortcut; with the check on it also reads the edges in full, and the
+    // two must leave the same. Then «Сброс» and a mode from the PLC still act
+    // in the tick that reads them.
+    void programControlBothPathsAgree() {
+        EngineRig r;
+        r.ctl->setCheckShortcuts(true);
+        QVERIFY(r.home());
+        QVERIFY(r.ctl->selectMode(Mode::Manual).ok());
+        r.tick();
+        const std::int64_t checks = r.ctl->shortcutChecks();
+        r.m->setJog(engine::AxisId::X, -1);
+        r.advance(300);
+        r.m->setJog(engine::AxisId::X, 0);
+        r.advance(300);
+        QVERIFY2(r.ctl->shortcutChecks() - checks > 400, std::to_string(r.ctl->shortcutChecks() - checks).c_str());
+        QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
+        // A word of program control changes while a jog is held: the PLC's
+        // mode code acts in the tick that reads it, and stops the jog.
+        r.m->setJog(engine::AxisId::X, 1);
+        r.advance(50);
+        QVERIFY(r.ctl->servo(engine::AxisId::X).moving());
+        r.m->setModeCode(static_cast<int>(Mode::Auto));
+        r.tick();
+        QCOMPARE(r.ctl->mode(), Mode::Auto);
+        QVERIFY(r.bit(engine::z::ModeAuto));
+        QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
+    }
     // The routine tick: while a program moves the axes and nothing else
     // changes, a changed word or an operator function acts in the next tick.
     void routineTick() {

@@ -10,6 +10,7 @@
 #include "catalog/messages.h"
 #include "constants/constants_dialogs.h"
 #include "constants/constants_dock.h"
+#include "session/catalog_texts.h"
 #include "constants/constants_editor.h"
 #include "constants/constants_lock.h"
 #include "constants/constants_model.h"
@@ -184,7 +185,11 @@ private slots:
         line->selectAll();
         QTest::keyClicks(line, "99999");
         QVERIFY(line->property("refused").toBool());
-        const QString m15 = QString::fromUtf8(catalog::positionerMessage(15).panelText().c_str());
+        // The controller's message in the window's language (English here;
+        // in Russian the panel's text, studio.ui_language checks all 64).
+        const QString m15 = positionerMessageLine(15);
+        QVERIFY2(m15.startsWith(QStringLiteral("15. ")) && !m15.contains(QRegularExpression(QStringLiteral("[А-Яа-яЁё]"))),
+                 qPrintable(m15));
         QVERIFY2(pane.statusText().contains(m15), qPrintable(pane.statusText()));
         QVERIFY(pane.statusText().contains(QStringLiteral("0...32767")));
         QTest::keyClick(line, Qt::Key_Escape);
@@ -199,17 +204,23 @@ private slots:
         // A cross-check: X's encoder on the channel of Z's (37).
         const std::int64_t z = sim.session.controller().c()[69];
         QVERIFY(!pane.filter()->setData(valueIndex(pane, 17), QString::number(z)));
-        const QString m37 = QString::fromUtf8(catalog::positionerMessage(37).panelText().c_str());
+        const QString m37 = positionerMessageLine(37);
         QVERIFY2(pane.statusText().contains(m37), qPrintable(pane.statusText()));
         QCOMPARE(sim.session.controller().c()[17], std::int64_t(1));
         // L ИМП.ДОС = 0: message 13.
         QVERIFY(!pane.editor().set(19, 0));
-        QVERIFY(pane.statusText().contains(QString::fromUtf8(catalog::positionerMessage(13).panelText().c_str())));
+        QVERIFY(pane.statusText().contains(positionerMessageLine(13)));
         QVERIFY(sim.session.controller().alarms().empty());
         QCOMPARE(revisionCount(pane), revs);
         // Not a number.
         QVERIFY(!pane.filter()->setData(i, QStringLiteral("12a")));
         QCOMPARE(sim.session.controller().c()[22], std::int64_t(10666));
+        // A Russian window says the panel's text letter by letter.
+        QVERIFY(setLanguage(QStringLiteral("ru")));
+        QVERIFY(!pane.filter()->setData(i, QStringLiteral("99999")));
+        const QString panel15 = QString::fromUtf8(catalog::positionerMessage(15).panelText().c_str());
+        QVERIFY2(pane.statusText().startsWith(panel15 + QStringLiteral(" — ")), qPrintable(pane.statusText()));
+        QVERIFY(setLanguage(QStringLiteral("en")));
     }
 
     void undoAndRedo() {

@@ -141,13 +141,17 @@ const QStringList kAllowedLatin = {
     "Vmax", "Tразг", "Kд",
     // Qt's Russian translation keeps "OK" (qtbase_ru: QPlatformTheme, QDialogButtonBox)
     "OK",
+    // A foreign database file's refusal: the library that wrote it and the
+    // header field that says whose it is (they have no other names)
+    "SQLite", "application_id",
     // the PC keyboard's keys as printed on them
     "Ctrl", "Shift", "Alt", "Esc", "Tab", "Enter", "Return", "Backspace", "Ins", "Del", "PgUp",
     "PgDown", "Home", "End", "Num",
 };
 // G01, M03, R12, C022, L5, N15, X, Z, FX, FZ, Gx81, Z1000, A01, F1: an address letter
 // (or two) and its number; a lone capital is an axis or an address.
-const QRegularExpression kCode(QStringLiteral("^(?:[A-Z]{1,2}[a-z]?\\d+[A-Z]?|[A-Z]|FX|FZ)$"));
+// A hexadecimal number (0x4B353238: a file's application_id) is a code too.
+const QRegularExpression kCode(QStringLiteral("^(?:[A-Z]{1,2}[a-z]?\\d+[A-Z]?|[A-Z]|FX|FZ|0x[0-9A-Fa-f]+)$"));
 const QRegularExpression kWord(QStringLiteral("[\\p{L}\\p{N}_µ]+"));
 const QRegularExpression kLatin(QStringLiteral("[A-Za-z]"));
 const QRegularExpression kCyrillic(QStringLiteral("[\\x{0400}-\\x{04FF}]"));

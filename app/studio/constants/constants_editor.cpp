@@ -6,6 +6,7 @@
 #include "catalog/messages.h"
 #include "engine/positioner.h"
 #include "db/notes.h"
+#include "session/catalog_texts.h"
 #include "window_language.h"
 #include "profile/validate.h"
 #include "controller/controller.h"
@@ -23,10 +24,6 @@
 namespace k528::studio {
 
 namespace {
-
-QString fromStd(std::string_view s) {
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 
 using ErrorKey = std::pair<std::string, int>; // subject, message
 
@@ -142,8 +139,9 @@ CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t 
         if (r.ok) {
             r.ok = false;
             r.message = f.message.value_or(15);
-            const catalog::PositionerMessage& m = catalog::positionerMessage(r.message);
-            r.text = fromStd(m.panelText()) + QStringLiteral(" — ") + why;
+            // The controller's message as the window says it (in Russian the
+            // panel's text letter by letter), then why.
+            r.text = positionerMessageLine(r.message) + QStringLiteral(" — ") + why;
         }
     }
     return r;

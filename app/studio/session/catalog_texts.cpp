@@ -134,6 +134,11 @@ QString alarmMessage(const engine::AlarmView& a) {
     return QString::fromStdString(a.textEn); // outside the catalog: the same in both languages
 }
 
+QString positionerMessageLine(int number) {
+    return QString::fromStdString(
+        catalog::numberedMessage(number, positionerMessageText(number).toStdString(), inWindowLanguage(true, false)));
+}
+
 QString alarmLine(const engine::AlarmView& a) {
     return QString::fromStdString(
         catalog::numberedMessage(a.number, alarmMessage(a).toStdString(), inWindowLanguage(true, false)));

@@ -27,6 +27,9 @@ QString positionerMessageText(int number);
 QString alarmMessage(const engine::AlarmView& a);
 // An alarm as one line with its number, e.g. «10. Конечник оси X в «-»».
 QString alarmLine(const engine::AlarmView& a);
+// Message `number` of table М.1 as one line with its number in the window's
+// language (in Russian the panel's text, «15.Разрушены С-параметры»).
+QString positionerMessageLine(int number);
 // «АВТОМАТ» / "automatic", «РУЧНОЙ» / "manual", …
 QString modeName(engine::Mode m);
 // The name of the R-parameters' preset group 1..9, «КООРД.И СМЕЩЕНИЯ» /

@@ -213,6 +213,11 @@ QString failedText(const db::Error& error, const std::exception& e) {
 // English window says it as it is; a Russian window says its own sentence
 // around the library's words.
 QString databaseErrorDetail(const std::exception& e) {
+    // An error of the database's catalog is said whole in the window's
+    // language (its detail is empty: quoting it gave «» in Russian).
+    if (const auto* error = dynamic_cast<const db::Error*>(&e); error && !error->textId().empty())
+        if (const QString text = databaseText(error->catalogText()); !text.isEmpty())
+            return text;
     return inWindowLanguage(quotedDetail(e), QString::fromUtf8(e.what()));
 }
 
