@@ -2991,6 +2991,18 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>release them (k528 db release %1 L&lt;n&gt;), or push as a technologist (the machine allows drafts: push.unreleased)</translation>
     </message>
     <message>
+        <source>column %1 holds a value that is neither an integer nor a text (query: %2)</source>
+        <translation>column %1 holds a value that is neither an integer nor a text (query: %2)</translation>
+    </message>
+    <message>
+        <source>column %1 holds a value where an integer belongs: %2</source>
+        <translation>column %1 holds a value where an integer belongs: %2</translation>
+    </message>
+    <message>
+        <source>; the migration to schema version %1 failed, nothing was changed</source>
+        <translation>; the migration to schema version %1 failed, nothing was changed</translation>
+    </message>
+    <message>
         <source>an unexpected database error (please report it): %1</source>
         <translation>an unexpected database error (please report it): %1</translation>
     </message>

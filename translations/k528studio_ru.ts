@@ -2991,6 +2991,18 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>выпустите их (k528 db release %1 L&lt;n&gt;) или передайте их как технолог (станок разрешает черновики: push.unreleased)</translation>
     </message>
     <message>
+        <source>column %1 holds a value that is neither an integer nor a text (query: %2)</source>
+        <translation>столбец %1 содержит значение, которое не является ни целым числом, ни текстом (запрос «%2»)</translation>
+    </message>
+    <message>
+        <source>column %1 holds a value where an integer belongs: %2</source>
+        <translation>столбец %1 содержит значение там, где должно быть целое число: «%2»</translation>
+    </message>
+    <message>
+        <source>; the migration to schema version %1 failed, nothing was changed</source>
+        <translation>; переход на версию схемы %1 не удался, ничего не изменено</translation>
+    </message>
+    <message>
         <source>an unexpected database error (please report it): %1</source>
         <translation>непредвиденная ошибка базы данных (пожалуйста, сообщите о ней): «%1»</translation>
     </message>

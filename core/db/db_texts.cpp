@@ -58,6 +58,18 @@ constexpr std::array kTexts = {
     util::CatalogText{"corrupt.program",
                 "станок %1: программа L%2 не совпадает со своей контрольной суммой SHA-256",
                 "machine %1: program L%2 does not match its SHA-256 checksum"},
+    // A value of a type we never store, written by another program: SQLite
+    // (%2 the query, as written) and PostgreSQL (%2 the value, as stored).
+    util::CatalogText{"corrupt.column-type",
+                "столбец %1 содержит значение, которое не является ни целым числом, ни текстом (запрос «%2»)",
+                "column %1 holds a value that is neither an integer nor a text (query: %2)"},
+    util::CatalogText{"corrupt.column-integer",
+                "столбец %1 содержит значение там, где должно быть целое число: «%2»",
+                "column %1 holds a value where an integer belongs: %2"},
+    // Said after why a step of a schema upgrade failed.
+    util::CatalogText{"migrate.failed",
+                "; переход на версию схемы %1 не удался, ничего не изменено",
+                "; the migration to schema version %1 failed, nothing was changed"},
     // A bug of core/db's own code (sql::internalError): %1 its English, for the report.
     util::CatalogText{"internal",
                 "непредвиденная ошибка базы данных (пожалуйста, сообщите о ней): «%1»",

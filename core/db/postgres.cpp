@@ -40,8 +40,7 @@ std::int64_t integerAt(PGresult* r, int row, int col) {
     std::int64_t v = 0;
     const auto [end, ec] = std::from_chars(s, s + len, v);
     if (ec != std::errc() || end != s + len)
-        throw Error(ErrorKind::Corrupt, std::string("column ") + PQfname(r, col) + " holds \"" +
-                                            std::string(s, len) + "\" where an integer belongs");
+        throw Error(ErrorKind::Corrupt, ErrorText{"corrupt.column-integer", {PQfname(r, col), std::string(s, len)}});
     return v;
 }
 

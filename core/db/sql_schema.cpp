@@ -1,5 +1,6 @@
 // The schema's steps and the C-parameter definitions, for both backends.
 #include "catalog/cparams.h"
+#include "db/db_texts.h"
 #include "db/sha256.h"
 #include "db/sql_store.h"
 
@@ -59,9 +60,16 @@ void SqlStore::migrate(std::span<const Migration> migrations, std::int64_t from)
                     connection().exec(m.sqliteOnly);
             }
         } catch (const Error& e) {
-            throw Error(ErrorKind::Sql, path_.string() + ": migration to schema version " +
-                                            std::to_string(m.version) + " failed (" + e.what() +
-                                            "); nothing was changed");
+            // What failed as it was said (its kind, its text or the
+            // library's words), where, and that the upgrade changed nothing.
+            ErrorText t = e.catalogText();
+            t.at = path_.string();
+            t.tail = "migrate.failed";
+            t.tailArgs = {std::to_string(m.version)};
+            if (!t.id.empty())
+                throw Error(e.kind(), std::move(t), e.detail());
+            const std::string message = path_.string() + ": " + e.what() + dbText(t.tail, t.tailArgs, false);
+            throw Error(e.kind(), message, e.detail(), std::move(t));
         }
     }
 }

@@ -124,9 +124,10 @@ Value Stmt::value(int col) const {
     case SQLITE_INTEGER: return i64(col);
     case SQLITE_TEXT: return text(col);
     default:
-        throw Error(ErrorKind::Corrupt, "column " + std::string(sqlite3_column_name(st_, col)) +
-                                            " of \"" + sql_.substr(0, 60) +
-                                            "\" holds a value that is neither an integer nor a text");
+        // A value written by another program (SQLite's columns take any
+        // type): a real or a blob where we store integers and texts.
+        throw Error(ErrorKind::Corrupt,
+                    ErrorText{"corrupt.column-type", {sqlite3_column_name(st_, col), sql_.substr(0, 60)}});
     }
 }
 

@@ -200,8 +200,10 @@ Checked inspect(sqlite3* db, int latest) {
         sql::Stmt what(db, "SELECT (SELECT application_id FROM pragma_application_id), "
                            "(SELECT user_version FROM pragma_user_version), "
                            "(SELECT count(*) FROM sqlite_schema)");
+        // Scalar subqueries without FROM: one row whatever the file holds
+        // (a file SQLite cannot read fails in step() with its own words).
         if (!what.step())
-            throw Error(ErrorKind::Corrupt, "the database's header could not be read");
+            throw sql::internalError("the header's query returned no row");
         c.appId = what.i64(0);
         c.version = what.i64(1);
         c.objects = what.i64(2);

@@ -73,6 +73,9 @@ public:
     // The words the positioner reads, Z1000..Z1013, Z1300..Z1307, Z1900..Z1907, in slot order.
     static constexpr int kInputWords = 30;
     const std::uint16_t* inputs() const { return w_.data(); }
+    // The positioner's own words, Z2000..Z2008, in slot order.
+    static constexpr int kOutputWords = kWordCount - kInputWords;
+    const std::uint16_t* outputs() const { return w_.data() + kInputWords; }
     // Whether the words the positioner reads (Z1000..Z1013, Z1300..Z1307,
     // Z1900..Z1907) are those of `o`; its own Z2000..Z2008 are not compared.
     bool sameInputs(const InterfaceWords& o) const {

@@ -118,8 +118,12 @@ void Positioner::advance(std::int64_t ms) {
 void Positioner::tick() {
     if (!c_.powered)
         powerOn();
-    const bool inputsAsLeft = quiet_.valid && c_.words == quiet_.words && c_.io == quiet_.io;
+    const bool inputsAsLeft = quiet_.valid && settledInputs() == quiet_.left;
     if (inputsAsLeft && quiet_.ticks >= 2) {
+        if (checkShortcuts_) [[unlikely]] {
+            checkSettledTick();
+            return;
+        }
         // Settled: what a full tick would do (see positioner.h).
         c_.nowMs += c_.tickMs;
         for (AxisUnit& u : c_.axes)
@@ -127,6 +131,10 @@ void Positioner::tick() {
                 u.servo.quietTick(c_.dtMs);
         return;
     }
+    fullTick(inputsAsLeft);
+}
+
+void Positioner::fullTick(bool inputsAsLeft) {
     c_.nowMs += c_.tickMs;
     const bool routine = routineInputs();
     if (routine) {
@@ -173,20 +181,41 @@ void Positioner::noteSettled(bool inputsAsLeft) {
         unsettle();
         return;
     }
-    const std::span<const std::int32_t> r = c_.r.values();
-    const bool unchanged = inputsAsLeft && c_.words == quiet_.words && c_.io == quiet_.io &&
-                           std::equal(r.begin(), r.end(), quiet_.r.begin()) &&
-                           c_.alarms.latchedMask() == quiet_.latched &&
-                           c_.alarms.activeMask() == quiet_.active;
+    const SettledInputs now = settledInputs();
+    const bool unchanged = inputsAsLeft && now == quiet_.left && c_.r == quiet_.r;
     quiet_.ticks = unchanged ? quiet_.ticks + 1 : 0;
     if (!unchanged) {
-        quiet_.words = c_.words;
-        quiet_.io = c_.io;
-        std::copy(r.begin(), r.end(), quiet_.r.begin());
-        quiet_.latched = c_.alarms.latchedMask();
-        quiet_.active = c_.alarms.activeMask();
+        quiet_.left = now;
+        quiet_.r = c_.r;
     }
     quiet_.valid = true;
+}
+
+// MachineIo and InterfaceWords as SettledInputs copies them: a field added
+// to either must be added there too, or a settled tick would not see it
+// change.
+static_assert(sizeof(PulseChannel) == 24 && sizeof(MachineIo) == 128,
+              "SettledInputs copies every field of MachineIo");
+static_assert(sizeof(InterfaceWords) == InterfaceWords::kWordCount * sizeof(std::uint16_t),
+              "SettledInputs copies every interface word");
+
+Positioner::SettledInputs Positioner::settledInputs() const {
+    SettledInputs s;
+    s.reading = tickInputs();
+    for (std::size_t k = 0; k < c_.io.pulse.size(); ++k) {
+        const PulseChannel& p = c_.io.pulse[k];
+        s.counts[k] = p.count;
+        s.markCounts[k] = p.zeroMarkCount;
+        s.lines[3 * k] = p.line1Ok;
+        s.lines[3 * k + 1] = p.line2Ok;
+        s.lines[3 * k + 2] = p.zeroMark;
+    }
+    s.latched = c_.alarms.latchedMask();
+    s.active = c_.alarms.activeMask();
+    std::copy(c_.io.dac.begin(), c_.io.dac.end(), s.dac.begin());
+    std::memcpy(s.outputs.data(), c_.words.outputs(), sizeof s.outputs);
+    s.regulatorEnable = {c_.io.regulatorEnable[0], c_.io.regulatorEnable[1]};
+    return s;
 }
 
 Positioner::TickInputs Positioner::tickInputs() const {
@@ -227,9 +256,11 @@ void Positioner::readAll() {
 }
 
 // What the full reading of the inputs can change, for the check of a
-// routine tick: the words, the machine I/O, the R-parameters, the messages,
-// the mode, program and override state, and each axis' signals, servo
-// inputs, motion owner and commanded motion.
+// routine tick, and what a full tick could change beyond the settled tick's
+// clock and servos' time at rest: the words, the machine I/O, the
+// R-parameters, the messages, the mode, program and override state, and
+// each axis' signals, servo inputs, motion owner, commanded motion and what
+// its servo shows (position, DAC code, regulator, loop, fault, quiet).
 struct Positioner::Observed {
     InterfaceWords words;
     MachineIo io;
@@ -247,6 +278,11 @@ struct Positioner::Observed {
         MotionOwner owner;
         int jogDir;
         double target, setpoint;
+        double actual;
+        int dac;
+        std::int64_t pulses;
+        axis::Fault fault;
+        bool regulatorOn, loopClosed, inPosition, quiet;
         bool operator==(const Axis&) const = default;
     };
     std::array<Axis, kAxisCount> axes{};
@@ -271,7 +307,9 @@ Positioner::Observed Positioner::observed() const {
     for (const AxisUnit& u : c_.axes)
         o.axes[static_cast<std::size_t>(u.index)] = {
             u.limitPlus, u.limitMinus,     u.cam,      u.driveReady,        u.feedEnableWords,
-            u.erase,     u.owner,          u.jogDir,   u.servo.target(),    u.servo.setpoint()};
+            u.erase,     u.owner,          u.jogDir,   u.servo.target(),    u.servo.setpoint(),
+            u.servo.actual(), u.servo.dac(), u.servo.pulsesLastTick(), u.servo.fault(),
+            u.servo.regulatorOn(), u.servo.loopClosed(), u.servo.inPosition(), u.servo.quiet()};
     return o;
 }
 
@@ -282,6 +320,20 @@ void Positioner::checkShortcut(void (Positioner::*full)()) {
     const bool agree = observed() == shortcut;
     shortcutDisagreements_ += agree ? 0 : 1;
     assert(agree && "a shortcut of the tick and the full reading of the same inputs disagree");
+}
+
+void Positioner::checkSettledTick() {
+    // The settled tick would advance the clock and the servos' time at rest
+    // and leave all else as it is; the full tick, run instead, must leave
+    // the same and find nothing changed (the shortcut holds for the next).
+    const Observed before = observed();
+    const std::int64_t clock = c_.nowMs + c_.tickMs;
+    fullTick(true);
+    ++shortcutChecks_;
+    ++settledChecks_;
+    const bool agree = observed() == before && c_.nowMs == clock && quiet_.ticks > 0;
+    shortcutDisagreements_ += agree ? 0 : 1;
+    assert(agree && "the settled tick and the full tick of the same inputs disagree");
 }
 
 void Positioner::readInputs() {

@@ -142,10 +142,13 @@ public:
     // a routine tick also takes the full path — the reading of the inputs,
     // Z2000, the wheel's bits and the sums of the offsets computed anew —
     // and so does program control where it took its shortcut within a full
-    // reading; each compares what both leave; a debug build has it on and
-    // asserts they agree. Counts the checks and those that disagreed.
+    // reading; and a settled tick runs the full tick instead and compares it
+    // with what the settled tick leaves. Each compares what both leave; a
+    // debug build has it on and asserts they agree. Counts the checks (of
+    // the settled tick also apart) and those that disagreed.
     void setCheckShortcuts(bool on) { checkShortcuts_ = on; }
     std::int64_t shortcutChecks() const { return shortcutChecks_; }
+    std::int64_t settledChecks() const { return settledChecks_; }
     std::int64_t shortcutDisagreements() const { return shortcutDisagreements_; }
     const Interpreter& interpreter() const { return interp_; }
     // Start from a frame (engine/start_point.h): the next «Пуск» of АВТОМАТ
@@ -210,6 +213,13 @@ private:
     // word or of the I/O, ends it.
     bool settled() const;
     void noteSettled(bool inputsAsLeft);
+    // The tick past the settled shortcut: the clock, the routine or full
+    // reading, the axes, the interpreter, the outputs.
+    void fullTick(bool inputsAsLeft);
+    // Both paths of the settled tick (setCheckShortcuts): the full tick with
+    // the same inputs must change nothing the settled tick leaves as it was
+    // (observed()) and find the machine still settled.
+    void checkSettledTick();
     // An operator function acted (or a door was used): the next tick is a
     // full one, and programControl() reads its inputs again.
     void wake() {
@@ -273,6 +283,31 @@ private:
                                             2 * sizeof(std::int64_t),
                   "TickInputs has no padding");
     TickInputs tickInputs() const;
+    // What the settled tick depends on: the same snapshot of the inputs,
+    // and the rest of the machine's side a tick reads or writes (every
+    // pulse channel, the positioner's words Z2000..Z2008, the DAC codes and
+    // regulator enables) and the messages, again with one equality. The
+    // R-parameters are not in it: they change only within a full tick or by
+    // an operator function, which ends the shortcut anyway, so a settled tick
+    // need not copy them; noteSettled() compares them after a full tick.
+    struct SettledInputs {
+        TickInputs reading;
+        std::array<std::int64_t, kPulseChannels> counts{}, markCounts{};
+        std::uint64_t latched = 0, active = 0;
+        std::array<std::int32_t, kDacChannels> dac{};
+        std::array<std::uint16_t, InterfaceWords::kOutputWords> outputs{};
+        std::array<std::uint8_t, 3 * kPulseChannels> lines{}; // line 1, line 2, zero mark of each channel
+        std::array<std::uint8_t, 2> regulatorEnable{};
+        friend bool operator==(const SettledInputs& a, const SettledInputs& b) {
+            return util::sameBytes<sizeof(SettledInputs)>(&a, &b);
+        }
+    };
+    static_assert(sizeof(SettledInputs) ==
+                      sizeof(TickInputs) + 2 * kPulseChannels * sizeof(std::int64_t) + 2 * sizeof(std::uint64_t) +
+                          kDacChannels * sizeof(std::int32_t) +
+                          2 * InterfaceWords::kOutputWords + 3 * kPulseChannels + 2,
+                  "SettledInputs has no padding");
+    SettledInputs settledInputs() const;
     // The full reading of the inputs (the other path of a routine tick).
     void readAll();
     struct {
@@ -292,7 +327,7 @@ private:
 #else
     bool checkShortcuts_ = true;
 #endif
-    std::int64_t shortcutChecks_ = 0, shortcutDisagreements_ = 0;
+    std::int64_t shortcutChecks_ = 0, shortcutDisagreements_ = 0, settledChecks_ = 0;
     // writeOutputs(): Z2000, the wheel's bits of Z2005 and the state they
     // were computed for (see there).
     struct CommonOutputs {
@@ -319,12 +354,10 @@ private:
     int overrideFactorPercent_ = -1; // overrideFactor_ = overridePercent / 100 of this percent
     double overrideFactor_ = 1.0;
     struct QuietState {
-        bool valid = false; // words/io/r/masks are those the last full tick left
+        bool valid = false; // `left` and `r` are what the last full tick left
         int ticks = 0;      // full settled ticks in a row that changed nothing
-        InterfaceWords words;
-        MachineIo io;
-        std::array<std::int32_t, kRCount> r{};
-        std::uint64_t latched = 0, active = 0;
+        SettledInputs left;
+        RStore r;
     } quiet_;
 };
 

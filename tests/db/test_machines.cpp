@@ -824,6 +824,68 @@ private slots:
         QCOMPARE(d.machines().size(), std::size_t(2));
     }
 
+    // What another program left in a database, said by the catalog in either
+    // language with no English sentence of ours in the Russian: a value of a
+    // type we never store — SQLite's columns take any (a blob where the meta
+    // table keeps texts, met by a copy of the database), PostgreSQL's only
+    // after their type was changed (a text where the revision belongs, met
+    // by reading the machines) — and, SQLite only, a file whose header
+    // SQLite cannot read (its bytes after the magic overwritten in a copy).
+    void corruptDataIsSaidInBothLanguages() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "corrupt.db");
+        db::Database d = db::Database::open(where, testOptions());
+        const auto check = [](const db::Error& e, const char* id, const QString& ru, const QString& en) {
+            QCOMPARE(e.kind(), db::ErrorKind::Corrupt);
+            QCOMPARE(e.textId(), std::string(id));
+            const QString saidRu = QString::fromStdString(e.text(db::Lang::Ru));
+            const QString saidEn = QString::fromStdString(e.text(db::Lang::En));
+            QVERIFY2(saidRu.contains(ru) && !hasEnglishSentence(saidRu, false), qPrintable(saidRu));
+            QVERIFY2(saidEn.contains(en), qPrintable(saidEn));
+            QCOMPARE(saidEn, QString::fromUtf8(e.what()));
+        };
+        if (onPostgres()) {
+            QCOMPARE(runSql(where, "ALTER TABLE machines DROP CONSTRAINT machines_revision_check; "
+                                   "ALTER TABLE machines ALTER COLUMN revision TYPE text USING 'first'"),
+                     std::string());
+            try {
+                // A new connection: the old one's prepared statements keep the old type.
+                db::Database::open(where, testOptions()).machines();
+                QFAIL("a revision that is no number was read");
+            } catch (const db::Error& e) {
+                check(e, "corrupt.column-integer",
+                      QStringLiteral("столбец revision содержит значение там, где должно быть целое число: «first»"),
+                      QStringLiteral("column revision holds a value where an integer belongs: first"));
+            }
+            return;
+        }
+        QCOMPARE(runSql(where, "UPDATE meta SET value = x'00ff' WHERE key = 'created_at'"), std::string());
+        try {
+            d.copyTo(testLocation(dir, "copy.db"));
+            QFAIL("a blob was copied");
+        } catch (const db::Error& e) {
+            check(e, "corrupt.column-type",
+                  QStringLiteral("столбец value содержит значение, которое не является ни целым числом, ни текстом "
+                                 "(запрос «SELECT * FROM meta ORDER BY "),
+                  QStringLiteral("column value holds a value that is neither an integer nor a text (query: "
+                                 "SELECT * FROM meta ORDER BY "));
+        }
+
+        std::string bytes = fileBytes(where.file());
+        for (std::size_t i = 16; i < 24; ++i)
+            bytes[i] = '\xa5'; // page size, format versions, reserved space: none SQLite accepts
+        const fs::path header = tempPath(dir, "header.db");
+        writeBytes(header, bytes);
+        try {
+            db::Database::open(db::Location(header), testOptions());
+            QFAIL("a file with a broken header was opened");
+        } catch (const db::Error& e) {
+            check(e, "open.not-database", QStringLiteral("файл не читается как база данных (SQLite: «"),
+                  QStringLiteral("cannot be read as a database ("));
+        }
+        QVERIFY(fileBytes(header) == bytes);
+    }
+
     void staleWriterIsRefused() {
         QTemporaryDir dir;
         db::Database d = db::Database::open(testLocation(dir, "x.db"), testOptions());

@@ -362,6 +362,19 @@ private slots:
                      std::string::npos,
                  e.c_str());
         QVERIFY2(e.find("no such table: missing") != std::string::npos, e.c_str());
+        // Said in Russian too: where, what kind of error and SQLite's words,
+        // then that the migration failed and changed nothing.
+        try {
+            db::Database::open(p, o);
+            QFAIL("a broken migration succeeded");
+        } catch (const db::Error& error) {
+            const QString ru = QString::fromStdString(error.text(db::Lang::Ru));
+            QVERIFY2(ru.startsWith(QString::fromStdString(p.string() + ": ")) && ru.contains(QStringLiteral("«")) &&
+                         ru.endsWith(QStringLiteral("; переход на версию схемы %1 не удался, ничего не изменено")
+                                         .arg(latest + 1)) &&
+                         !hasEnglishSentence(ru, false),
+                     qPrintable(ru));
+        }
         QVERIFY(fileBytes(p) == bytes);
         db::Database d = db::Database::open(p, testOptions());
         QCOMPARE(d.schemaVersion(), latest);

@@ -121,6 +121,85 @@ private slots:
         QVERIFY(r.bit(engine::z::ModeAuto));
         QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
     }
+    // Both paths of the settled tick: with the check on, every tick that
+    // would be a settled one runs in full instead, and must leave what the
+    // settled tick would (words, I/O, R-parameters, messages, servos) and
+    // find the machine still settled. A key, a changed input word, a
+    // message, the machine's I/O (a health flag, an encoder's count) and an
+    // R-parameter each end the state and act in the next tick; the machine
+    // then settles again, checked again.
+    void settledTickBothPathsAgree() {
+        EngineRig r;
+        r.ctl->setCheckShortcuts(true);
+        QVERIFY(r.home());
+        // Ticks of the last `ms` that were settled (checked), and whether the
+        // tick just taken was (it must not be, after a change).
+        const auto settledIn = [&](std::int64_t ms) {
+            const std::int64_t before = r.ctl->settledChecks();
+            r.advance(ms);
+            return r.ctl->settledChecks() - before;
+        };
+        const auto tickIsFull = [&] {
+            const std::int64_t before = r.ctl->settledChecks();
+            r.tick();
+            return r.ctl->settledChecks() == before;
+        };
+        QVERIFY2(settledIn(1000) > 900, std::to_string(r.ctl->settledChecks()).c_str());
+        QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
+
+        // A key: АВТОМАТ.
+        QVERIFY(!r.bit(engine::z::ModeAuto));
+        QVERIFY(r.ctl->selectMode(Mode::Auto).ok());
+        QVERIFY(tickIsFull());
+        QVERIFY(r.bit(engine::z::ModeAuto));
+        QVERIFY(settledIn(500) > 400);
+
+        // An input word: the PLC's override switch (R249 shows its percent).
+        int code = 0;
+        while (code <= 10 && units::overrideCodeToPercent(code) == r.ctl->r(engine::r::Override))
+            ++code;
+        QVERIFY(code <= 10);
+        r.m->setOverrideCode(code);
+        QVERIFY(tickIsFull());
+        QCOMPARE(r.ctl->r(engine::r::Override), units::overrideCodeToPercent(code));
+        QVERIFY(settledIn(500) > 400);
+
+        // A message: a system message of the PLC (55) comes and goes.
+        QVERIFY(!r.hasAlarm(55));
+        r.m->setPlcSystem(1, true);
+        QVERIFY(tickIsFull());
+        QVERIFY(r.hasAlarm(55));
+        QVERIFY(settledIn(500) > 400);
+        r.m->setPlcSystem(1, false);
+        QVERIFY(tickIsFull());
+        QVERIFY(settledIn(500) > 400);
+
+        // A health flag of the machine I/O: message 30 (memory test).
+        QVERIFY(!r.hasAlarm(30));
+        r.ctl->io().memoryOk = false;
+        QVERIFY(tickIsFull());
+        QVERIFY(r.hasAlarm(30));
+        r.ctl->io().memoryOk = true;
+        QVERIFY(tickIsFull());
+        QVERIFY(settledIn(500) > 400);
+
+        // An encoder's count: the slide of X pushed by 2 µm at rest (within ДОПУСК КП).
+        const double actual = r.ctl->servo(engine::AxisId::X).actual();
+        r.m->mechanics(engine::AxisId::X)->pushSlide(0.002);
+        QVERIFY(tickIsFull());
+        QVERIFY(r.ctl->servo(engine::AxisId::X).actual() != actual);
+        QVERIFY(settledIn(1000) > 500);
+
+        // An R-parameter set by the operator.
+        QVERIFY(r.ctl->setR(1, 4711).ok());
+        QVERIFY(tickIsFull());
+        QCOMPARE(r.ctl->r(1), 4711);
+        QVERIFY(settledIn(500) > 400);
+        QCOMPARE(r.ctl->r(1), 4711);
+
+        QVERIFY2(r.ctl->settledChecks() > 3000, std::to_string(r.ctl->settledChecks()).c_str());
+        QCOMPARE(r.ctl->shortcutDisagreements(), std::int64_t(0));
+    }
     // The routine tick: while a program moves the axes and nothing else
     // changes, a changed word or an operator function acts in the next tick.
     void routineTick() {
