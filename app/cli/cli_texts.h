@@ -21,5 +21,8 @@ util::TextCatalog cliTexts();
 std::string cliText(std::string_view id, std::initializer_list<std::string> args, bool russian);
 // The same in the command line's language (russianCommandLine(), args.cpp).
 std::string cliText(std::string_view id, std::initializer_list<std::string> args = {});
+// A text without arguments as the catalog holds it, nothing allocated: what
+// is said when memory ran out. An id the catalog lacks is said itself.
+std::string_view cliWords(std::string_view id, bool russian);
 
 } // namespace k528::cli

@@ -65,14 +65,12 @@ Json fileJson(const std::string& file, const program::CheckResult& r) {
 
 void printDescriptionError(const plc::DescriptionError& e, Lang lang) {
     const bool ru = lang == Lang::Ru;
-    std::fprintf(stderr, ru ? "k528: описание станка %s\n" : "k528: machine description %s\n",
-                 e.text(ru).c_str());
+    std::fprintf(stderr, "%s\n", cliText("machine.description", {e.text(ru)}, ru).c_str());
 }
 
 void printToolError(const std::exception& e, Lang lang) {
     const bool ru = lang == Lang::Ru;
-    std::fprintf(stderr, ru ? "k528: инструменты станка: %s\n" : "k528: the machine's tools: %s\n",
-                 profile::errorText(e, ru).c_str());
+    std::fprintf(stderr, "%s\n", cliText("machine.tools", {profile::errorText(e, ru)}, ru).c_str());
 }
 
 bool parseLang(const std::string& text, Lang& lang) {

@@ -22,7 +22,7 @@ int cmdAudit(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError(russianCommandLine() ? "db audit не принимает аргументов" : "db audit takes no arguments");
+        return usageError(cliText("db.usage.no-args", {"audit"}));
     int limit = 50;
     if (const auto v = a.value("--limit")) {
         const auto n = parseInt(*v);

@@ -27,7 +27,7 @@ int cmdCheck(std::span<const std::string> argv) {
     if (!parseLangOption(a, lang))
         return ExitUsage;
     if (!a.positional().empty())
-        return usageError(cliText("db.check.args", {}, lang == Lang::Ru));
+        return usageError(cliText("db.usage.no-args", {"check"}, lang == Lang::Ru));
     DbTarget t;
     if (!dbTarget(a, t))
         return ExitUsage;

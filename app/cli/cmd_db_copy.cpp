@@ -12,12 +12,10 @@ int cmdCopy(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError(russianCommandLine() ? "db copy не принимает аргументов: k528 db copy --to МЕСТО"
-                                                : "db copy takes no arguments: k528 db copy --to LOCATION");
+        return usageError(cliText("db.usage.copy-args"));
     const auto to = a.value("--to");
     if (!to || to->empty())
-        return usageError(russianCommandLine() ? "db copy нужен --to МЕСТО (новый файл, sqlite:ПУТЬ или postgresql://…)"
-                                                : "db copy needs --to LOCATION (a new file, sqlite:PATH or postgresql://…)");
+        return usageError(cliText("db.usage.copy-to"));
     db::Location target;
     try {
         target = db::Location::parse(*to);

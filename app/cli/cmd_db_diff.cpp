@@ -70,8 +70,7 @@ int cmdDiff(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 2)
-        return usageError(russianCommandLine() ? "db diff нужны две стороны: СТАНОК, СТАНОК@РЕВ или ФАЙЛ"
-                                                : "db diff needs two sides: MACHINE, MACHINE@REV or FILE");
+        return usageError(cliText("db.usage.diff"));
     DbTarget t;
     auto d = openDbOf(a, t, false);
     if (!d)

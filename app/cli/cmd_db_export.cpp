@@ -24,7 +24,7 @@ int cmdExport(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
-        return usageError(russianCommandLine() ? "db export нужен один СТАНОК (или СТАНОК@РЕВ)" : "db export needs one MACHINE (or MACHINE@REV)");
+        return usageError(cliText("db.usage.one-machine", {"export"}));
     const std::string format = a.value("--format").value_or("k528m");
     if (format != "k528m" && format != "csv")
         return usageError(cliText("db.usage.format", {format}));

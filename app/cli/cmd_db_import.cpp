@@ -117,8 +117,7 @@ int cmdImport(std::span<const std::string> argv) {
                 p.name = *asName;
         }
     } catch (const profile::FileError& e) {
-        return fail(profile::fileErrorText(e, lang == Lang::Ru) +
-                        (lang == Lang::Ru ? " (ничего не импортировано)" : " (nothing was imported)"),
+        return fail(cliText("db.import.nothing", {profile::fileErrorText(e, lang == Lang::Ru)}, lang == Lang::Ru),
                     ExitInputErrors);
     }
     DbTarget t;

@@ -22,7 +22,7 @@ int cmdInit(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError(russianCommandLine() ? "db init не принимает аргументов" : "db init takes no arguments");
+        return usageError(cliText("db.usage.no-args", {"init"}));
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;

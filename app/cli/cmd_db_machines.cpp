@@ -23,7 +23,7 @@ int cmdMachines(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (!a.positional().empty())
-        return usageError(russianCommandLine() ? "db machines не принимает аргументов" : "db machines takes no arguments");
+        return usageError(cliText("db.usage.no-args", {"machines"}));
     DbTarget t;
     auto d = openDbOf(a, t, false);
     if (!d)

@@ -31,9 +31,7 @@ int cmdRoles(std::span<const std::string> argv) {
     const auto& pos = a.positional();
     const bool grant = !pos.empty() && pos[0] == "grant";
     if (!(pos.empty() || (grant && pos.size() == 3)))
-        return usageError(russianCommandLine()
-                              ? "db roles не принимает аргументов, кроме: k528 db roles grant ПОЛЬЗОВАТЕЛЬ technologist|operator|viewer"
-                              : "db roles takes nothing, or: k528 db roles grant USER technologist|operator|viewer");
+        return usageError(cliText("db.usage.roles"));
     DbTarget t;
     auto d = openDbOf(a, t, false);
     if (!d)

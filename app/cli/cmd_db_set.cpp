@@ -1,6 +1,7 @@
 // k528 db set (docs/database.md); helpers in db_cli_util.h.
 #include "db_cli_util.h"
 #include "args.h"
+#include "cli_texts.h"
 #include "catalog/cparams.h"
 #include "catalog/messages.h"
 #include "catalog/rparams.h"
@@ -181,8 +182,7 @@ int cmdSet(std::span<const std::string> argv) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() < 2)
-        return usageError(russianCommandLine() ? "db set нужны СТАНОК и хотя бы один ПУНКТ=ЗНАЧЕНИЕ (например, C022=2133)"
-                                                : "db set needs MACHINE and at least one ITEM=VALUE (e.g. C022=2133)");
+        return usageError(cliText("db.usage.set"));
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;

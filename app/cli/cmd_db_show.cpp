@@ -171,7 +171,7 @@ int cmdShow(std::span<const std::string> argvIn) {
     if (!a.ok())
         return usageError(a.error());
     if (a.positional().size() != 1)
-        return usageError(russianCommandLine() ? "db show нужен один СТАНОК (или СТАНОК@РЕВ)" : "db show needs one MACHINE (or MACHINE@REV)");
+        return usageError(cliText("db.usage.one-machine", {"show"}));
     Lang lang;
     if (!parseLangOption(a, lang))
         return ExitUsage;
@@ -290,24 +290,19 @@ int cmdShow(std::span<const std::string> argvIn) {
             const auto& def = cat::cParam(*cNumber);
             s += "\n" + def.key() + " " + std::string(ru ? def.name : def.nameEn);
             if (def.axis != cat::Axis::Common)
-                s += std::string(ru ? " (ось " : " (axis ") + std::string(cat::axisName(def.axis)) +
-                     ")";
+                s += cliText("db.show.c.axis", {std::string(cat::axisName(def.axis))}, ru);
             s += " = " + std::to_string(p.cValue(*cNumber)) + "\n";
             const std::string ex = db::explainCValue(p, *cNumber, lang);
             if (!ex.empty())
-                s += std::string(ru ? "  значение:  " : "  meaning:   ") + ex + "\n";
-            s += std::string(ru ? "  единица:   " : "  unit:      ") + unitText(def.unit, lang) +
-                 "\n";
-            s += std::string(ru ? "  диапазон:  " : "  range:     ") + std::to_string(def.min) +
-                 "..." + std::to_string(def.max) + "\n";
-            s += std::string(ru ? "  тип:       " : "  kind:      ") +
-                 std::string(cat::kindName(def.kind)) + "\n";
+                s += cliText("db.show.c.meaning", {ex}, ru) + "\n";
+            s += cliText("db.show.c.unit", {unitText(def.unit, lang)}, ru) + "\n";
+            s += cliText("db.show.c.range", {std::to_string(def.min), std::to_string(def.max)}, ru) + "\n";
+            s += cliText("db.show.c.kind", {std::string(cat::kindName(def.kind))}, ru) + "\n";
             if (!def.address.text().empty())
-                s += std::string(ru ? "  адрес в БП: " : "  address:   ") +
-                     (ru ? def.address.text() : def.address.textEn()) + "\n";
+                s += cliText("db.show.c.address", {ru ? def.address.text() : def.address.textEn()}, ru) + "\n";
             const std::string hint(ru ? def.hintRu : def.hintEn);
             if (!hint.empty())
-                s += std::string(ru ? "  подсказка: " : "  hint:      ") + hint + "\n";
+                s += cliText("db.show.c.hint", {hint}, ru) + "\n";
             s += "  " + std::string(ru ? def.descriptionRu : def.descriptionEn) + "\n";
             if (!def.note.empty())
                 s += cliText("db.show.note", {std::string(def.note)}) + "\n";
@@ -319,22 +314,22 @@ int cmdShow(std::span<const std::string> argvIn) {
             const cat::RParamDef& def = cat::rParam(*rNumber);
             const auto it = p.r.find(*rNumber);
             s += "\nR" + std::to_string(*rNumber) + " = " +
-                 (it == p.r.end() ? std::string(ru ? "(не задан)" : "(not preset)")
+                 (it == p.r.end() ? cliText("db.show.r.not-preset", {}, ru)
                                   : std::to_string(it->second) + " " +
                                         rValueText(p, *rNumber, it->second, lang)) +
                  "\n";
             const std::string meaning = rMeaning(*rNumber, lang);
             if (!meaning.empty())
                 s += "  " + meaning + "\n";
-            s += std::string("  ") +
-                 (def.readOnly() ? (ru ? "только чтение (R232..R262)" : "read only (R232..R262)")
-                  : def.user() ? (ru ? "параметр пользователя" : "user parameter")
-                               : (ru ? "системный параметр" : "system parameter")) +
+            s += "  " +
+                 cliText(def.readOnly() ? "db.show.r.read-only" : def.user() ? "db.show.r.user" : "db.show.r.system",
+                         {}, ru) +
                  ", " + std::string(ru ? cat::rUnitRu(def.unit) : cat::rUnitEn(def.unit)) + "\n";
             if (def.group > 0)
-                s += std::string(ru ? "  УСТАНОВОЧНЫЕ ДАННЫЕ " : "  preset screen ") +
-                     std::to_string(def.group) + " " +
-                     std::string(ru ? cat::rGroupNameRu(def.group) : cat::rGroupNameEn(def.group)) +
+                s += cliText("db.show.r.screen",
+                             {std::to_string(def.group),
+                              std::string(ru ? cat::rGroupNameRu(def.group) : cat::rGroupNameEn(def.group))},
+                             ru) +
                      "\n";
             s += historyText(*d, info.name, historyKey, historyLimit.value_or(0));
         } else if (programNumber) {
@@ -373,9 +368,9 @@ int cmdShow(std::span<const std::string> argvIn) {
                 s += line;
             }
             if (p.programs.empty())
-                s += ru ? "(нет программ)\n" : "(no programs)\n";
+                s += cliText("db.show.no-programs", {}, ru) + "\n";
         } else if (a.has("--messages")) {
-            s += ru ? "\nТехнологические сообщения:\n" : "\nTechnological messages:\n";
+            s += "\n" + cliText("db.show.messages", {}, ru) + "\n";
             for (const auto& [n, text] : p.messages)
                 s += "  #" + pad(std::to_string(n), 3) + text + "\n";
             for (cat::PlcGroup g : cat::kPlcGroups) {
@@ -390,22 +385,22 @@ int cmdShow(std::span<const std::string> argvIn) {
             s += "\n";
             for (const auto& def : cat::cParams()) {
                 if (def.number == 1)
-                    s += ru ? "; ось X\n" : "; axis X\n";
+                    s += cliText("db.show.axis", {"X"}, ru) + "\n";
                 else if (def.number == 53)
-                    s += ru ? "; ось Z\n" : "; axis Z\n";
+                    s += cliText("db.show.axis", {"Z"}, ru) + "\n";
                 else if (def.number == 105)
-                    s += ru ? "; общие\n" : "; common\n";
+                    s += cliText("db.show.common", {}, ru) + "\n";
                 s += cLine(p, def, lang);
             }
-            s += ru ? "\nR-параметры (предустановки):\n" : "\nR-parameter presets:\n";
+            s += "\n" + cliText("db.show.r-presets", {}, ru) + "\n";
             for (const auto& [n, v] : p.r) {
                 const std::string vt = rValueText(p, n, v, lang);
                 s += "R" + pad(std::to_string(n), 4) + " " + padLeft(std::to_string(v), 11) + "  " +
                      pad(vt, 18) + " " + rMeaning(n, lang) + "\n";
             }
             if (p.r.empty())
-                s += ru ? "(нет)\n" : "(none)\n";
-            s += (ru ? "\nпрограммы: " : "\nprograms: ") + std::to_string(p.programs.size());
+                s += cliText("db.change.none", {}, ru) + "\n";
+            s += "\n" + cliText("db.show.programs", {std::to_string(p.programs.size())}, ru);
             if (!p.programs.empty()) {
                 s += " (";
                 bool first = true;
@@ -415,14 +410,16 @@ int cmdShow(std::span<const std::string> argvIn) {
                 }
                 s += ")";
             }
-            s += (ru ? "; сообщения: " : "; messages: ") + std::to_string(p.messages.size()) +
-                 (ru ? "; тексты ПЛК: " : "; PLC texts: ") +
-                 std::to_string(p.plcAlarm.size() + p.plcWork.size() + p.plcSystem.size()) + "\n";
+            s += cliText("db.show.messages-count",
+                         {std::to_string(p.messages.size()),
+                          std::to_string(p.plcAlarm.size() + p.plcWork.size() + p.plcSystem.size())},
+                         ru) +
+                 "\n";
         }
         if (!cNumber) {
             const auto findings = profile::validate(p);
             if (!findings.empty()) {
-                s += ru ? "\nпроверка:\n" : "\nchecks:\n";
+                s += "\n" + cliText("db.show.checks", {}, ru) + "\n";
                 for (const auto& f : findings)
                     s += "  " + findingText(f, lang) + "\n";
             }

@@ -65,14 +65,12 @@ int cmdTrial(std::span<const std::string> argv) {
         try {
             tool = profile::toolAt(profile::tools(p), static_cast<int>(*station));
         } catch (const profile::ToolError& e) {
-            std::fprintf(stderr, ru ? "k528: инструменты станка: %s\n" : "k528: the machine's tools: %s\n",
-                         profile::errorText(e, ru).c_str());
+            std::fprintf(stderr, "%s\n", cliText("machine.tools", {profile::errorText(e, ru)}, ru).c_str());
             return ExitUsage;
         }
         if (!tool) {
-            std::fprintf(stderr, ru ? "k528: у станка %s нет инструмента в позиции %d\n"
-                                    : "k528: %s has no tool at station %d\n",
-                         machine.c_str(), static_cast<int>(*station));
+            std::fprintf(stderr, "%s\n",
+                         cliText("trial.no-tool", {machine, std::to_string(static_cast<int>(*station))}, ru).c_str());
             return ExitUsage;
         }
         profile::cutting::TrialCorrection c;
@@ -83,13 +81,17 @@ int cmdTrial(std::span<const std::string> argv) {
             std::fprintf(stderr, "k528: %s\n", profile::errorText(e, ru).c_str());
             return ExitUsage;
         }
-        char line[256];
-        std::snprintf(line, sizeof line,
-                      ru ? "T%d %s: измерено %.3f, по чертежу %.3f, ошибка %+.3f мм: R%d %lld -> %lld (%+.3f мм)\n"
-                         : "T%d %s: measured %.3f, drawing %.3f, error %+.3f mm: R%d %lld -> %lld (%+.3f mm)\n",
-                      tool->station, x ? "X" : "Z", *measured, *drawing, c.errorMm, c.rNumber,
-                      static_cast<long long>(c.oldValue), static_cast<long long>(c.newValue), c.changeMm);
-        out(line);
+        const auto mm = [](const char* format, double v) {
+            char b[64];
+            std::snprintf(b, sizeof b, format, v);
+            return std::string(b);
+        };
+        out(cliText("trial.correction",
+                    {std::to_string(tool->station), x ? "X" : "Z", mm("%.3f", *measured), mm("%.3f", *drawing),
+                     mm("%+.3f", c.errorMm), std::to_string(c.rNumber), std::to_string(c.oldValue),
+                     std::to_string(c.newValue), mm("%+.3f", c.changeMm)},
+                    ru) +
+            "\n");
         if (a.has("--dry-run") || c.newValue == c.oldValue)
             return ExitOk;
         db::Edit edit;

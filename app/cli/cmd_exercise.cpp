@@ -104,36 +104,37 @@ int show(const Args& args, Lang lang, const std::string& id) {
         return ExitOk;
     }
     std::printf("%s — %s\n", e->id.c_str(), e->title.in(l).c_str());
-    std::printf("%s %s\n", ru ? "Станок:" : "Machine:", e->machine.c_str());
+    const auto word = [ru](std::string_view id) { return cliText(id, {}, ru); };
+    std::printf("%s %s\n", word("exercise.machine").c_str(), e->machine.c_str());
     if (!e->ucg.empty())
-        std::printf("%s %s\n", ru ? "Заготовка:" : "Blank:", e->ucg.c_str());
+        std::printf("%s %s\n", word("exercise.blank").c_str(), e->ucg.c_str());
     std::printf("\n%s\n", e->task.in(l).c_str());
     const training::Drawing& d = e->drawing;
     if (d.kind == training::Drawing::Kind::Contour) {
-        std::printf("%s\n", ru ? "Чертёж (Z, Ø, допуск элемента до точки):" : "Drawing (Z, Ø, the tolerance of the element up to the point):");
+        std::printf("%s\n", word("exercise.drawing-contour").c_str());
         for (const training::ContourPoint& p : d.contour)
             std::printf("  Z%-10g Ø%-10g %s\n", p.zMm, p.dMm,
                         toleranceText(p.tol.value_or(d.tolerance)).c_str());
     } else if (d.kind == training::Drawing::Kind::Bore) {
-        std::printf("%s Ø%g %s\n", ru ? "Отверстие:" : "Bore:", d.boreMm,
+        std::printf("%s Ø%g %s\n", word("exercise.drawing-bore").c_str(), d.boreMm,
                     toleranceText(d.boreTol).c_str());
     } else if (d.kind == training::Drawing::Kind::Reference) {
-        std::printf("%s %s\n", ru ? "Чертёж: деталь эталонной программы, допуск" : "Drawing: the reference program's part, tolerance",
+        std::printf("%s %s\n", word("exercise.drawing-reference").c_str(),
                     toleranceText(d.tolerance).c_str());
     }
     if (e->limits.cycleTimeS > 0)
-        std::printf("%s %g s\n", ru ? "Время цикла не более" : "Cycle time at most", e->limits.cycleTimeS);
+        std::printf("%s %g %s\n", word("exercise.cycle-time").c_str(), e->limits.cycleTimeS, word("unit.s").c_str());
     if (!e->steps.empty()) {
         std::string s;
         for (const training::OperatorStep& st : e->steps)
             s += (s.empty() ? "" : ", ") + std::string(training::stepName(st.kind));
-        std::printf("%s %s\n", ru ? "Действия оператора:" : "Operator's steps:", s.c_str());
+        std::printf("%s %s\n", word("exercise.steps").c_str(), s.c_str());
     }
     for (const training::Bilingual& h : e->hints)
-        std::printf("%s %s\n", ru ? "Подсказка:" : "Hint:", h.in(l).c_str());
+        std::printf("%s %s\n", word("exercise.hint").c_str(), h.in(l).c_str());
     if (!e->given.empty())
         std::printf("%s k528 exercise show %s --given\n",
-                    ru ? "Программа к заданию:" : "The program handed out:", e->id.c_str());
+                    word("exercise.given").c_str(), e->id.c_str());
     return ExitOk;
 }
 
@@ -213,14 +214,15 @@ int attempts(const Args& args, Lang lang, const std::string& exercise) {
                         field(deductionsText(r)).c_str());
         return ExitOk;
     }
-    std::printf("%-6s %-20s %-20s %-26s %5s  %-10s %s\n", "id", ru ? "время" : "at", ru ? "ученик" : "student",
-                ru ? "упражнение" : "exercise", ru ? "балл" : "score", ru ? "итог" : "result",
-                ru ? "выполнение" : "run");
+    const auto word = [ru](std::string_view id) { return cliText(id, {}, ru); };
+    std::printf("%-6s %-20s %-20s %-26s %5s  %-10s %s\n", "id", word("training.at").c_str(),
+                word("training.student").c_str(), word("training.exercise").c_str(), word("training.score").c_str(),
+                word("training.result").c_str(), word("training.run").c_str());
     for (const db::AttemptEntry& r : rows)
         std::printf("%-6lld %-20s %-20s %-26s %5d  %-10s %s\n", static_cast<long long>(r.id), r.at.c_str(),
                     r.student.c_str(), r.exercise.c_str(), r.score,
-                    r.passed ? (ru ? "зачтено" : "passed") : (ru ? "незачёт" : "failed"), r.status.c_str());
-    std::printf("%s %zu\n", ru ? "Попыток:" : "Attempts:", rows.size());
+                    word(r.passed ? "training.passed" : "training.failed").c_str(), r.status.c_str());
+    std::printf("%s %zu\n", word("exercise.attempts").c_str(), rows.size());
     return ExitOk;
 }
 

@@ -61,8 +61,7 @@ int runFormat(std::span<const std::string> argv) {
         // Formatting would lose what could not be read: say why and stop.
         printDiagnostics(stderr, displayName(path), parsed.diagnostics, lang);
         std::fprintf(stderr, "k528: %s: %s\n", displayName(path).c_str(),
-                     lang == Lang::Ru ? "текст не отформатирован: исправьте синтаксические ошибки"
-                                      : "not formatted: fix the syntax errors first");
+                     cliText("format.not-formatted", {}, lang == Lang::Ru).c_str());
         return ExitInputErrors;
     }
     program::ProgramStore store = parsed.store;
@@ -81,7 +80,7 @@ int runFormat(std::span<const std::string> argv) {
         if (canonical == text)
             return ExitOk;
         std::fprintf(stderr, "k528: %s: %s\n", displayName(path).c_str(),
-                     lang == Lang::Ru ? "текст не в каноническом виде" : "not in canonical form");
+                     cliText("format.not-canonical", {}, lang == Lang::Ru).c_str());
         return ExitInputErrors;
     }
     if (args.has("--in-place")) {

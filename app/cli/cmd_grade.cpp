@@ -29,57 +29,51 @@ namespace k528::cli {
 
 namespace {
 
-// How the attempt's run ended (Grade::status, the JSON's "status"), in words.
-const char* statusText(const std::string& status, bool ru) {
-    static const struct {
-        const char *id, *ru, *en;
-    } kStatus[] = {
-        {"completed", "программа выполнена до конца", "the program ran to its end"},
-        {"alarm", "остановлена сообщением", "stopped by a message"},
-        {"interrupted", "прервана", "interrupted"},
-        {"timeout", "не закончилась за отведённое время", "did not end in the time allowed"},
-        {"not_started", "программа не запускалась", "the program was not started"},
-        {"procedure", "только действия оператора", "the operator's procedure only"},
-        {"errors", "станок не принял файл", "the machine does not take the file"},
-    };
-    for (const auto& t : kStatus)
-        if (status == t.id)
-            return ru ? t.ru : t.en;
-    return status.c_str();
+// How the attempt's run ended (Grade::status, the JSON's "status"), in
+// words: "grade.status." and the status in the catalog, a status it does
+// not name as it is.
+std::string statusText(const std::string& status, bool ru) {
+    if (const util::CatalogText* t = cliTexts().find("grade.status." + status))
+        return std::string(t->in(ru));
+    return status;
 }
+
+// A word of the catalog, for a column or a label printed with a width.
+std::string word(std::string_view id, bool ru) { return cliText(id, {}, ru); }
 
 void printReport(const training::Grade& g, Lang lang) {
     const training::Language l = lang == Lang::Ru ? training::Language::Ru : training::Language::En;
     const bool ru = lang == Lang::Ru;
-    std::printf("%s %s", ru ? "Файл" : "File", g.file.c_str());
+    std::printf("%s %s", word("grade.file", ru).c_str(), g.file.c_str());
     if (!g.student.empty())
         std::printf(" (%s)", g.student.c_str());
-    std::printf(" — %s %s\n", ru ? "упражнение" : "exercise", g.exercise.c_str());
-    std::printf("%s %d/100, %s\n", ru ? "Оценка" : "Score", g.score,
-                g.passed ? (ru ? "зачтено" : "passed") : (ru ? "не зачтено" : "not passed"));
-    std::printf("%s %s", ru ? "Выполнение:" : "Run:", statusText(g.status, ru));
-    const char* s = ru ? "с" : "s";
+    std::printf(" — %s %s\n", word("training.exercise", ru).c_str(), g.exercise.c_str());
+    std::printf("%s %d/100, %s\n", word("grade.score", ru).c_str(), g.score,
+                word(g.passed ? "training.passed" : "grade.not-passed", ru).c_str());
+    std::printf("%s %s", word("grade.run", ru).c_str(), statusText(g.status, ru).c_str());
+    const std::string s = word("unit.s", ru);
     if (g.cycleTimeS > 0)
-        std::printf(", %s %.3f %s", ru ? "время цикла" : "cycle time", g.cycleTimeS, s);
+        std::printf(", %s %.3f %s", word("grade.cycle-time", ru).c_str(), g.cycleTimeS, s.c_str());
     if (g.limitS > 0)
-        std::printf(" (%s %g %s)", ru ? "норма" : "limit", g.limitS, s);
+        std::printf(" (%s %g %s)", word("grade.limit", ru).c_str(), g.limitS, s.c_str());
     std::printf("\n");
     for (const training::Deduction& d : g.deductions)
         std::printf("  -%-5g %s%s\n", d.points, training::render(d.text, l).c_str(),
-                    d.fails ? (ru ? " [не зачтено]" : " [fails]") : "");
+                    d.fails ? (" " + word("grade.fails", ru)).c_str() : "");
     if (g.deductions.empty())
-        std::printf("  %s\n", ru ? "замечаний нет" : "no deductions");
+        std::printf("  %s\n", word("grade.no-deductions", ru).c_str());
     for (const training::StepNote& n : g.notes)
-        std::printf("  %s %d «%s»: %s\n", ru ? "строка" : "line", n.line, n.token.c_str(),
+        std::printf("  %s %d «%s»: %s\n", word("grade.line", ru).c_str(), n.line, n.token.c_str(),
                     training::render(n.text, l).c_str());
 }
 
 void printTable(const std::vector<training::Grade>& grades, Lang lang) {
     const bool ru = lang == Lang::Ru;
     const training::Language l = ru ? training::Language::Ru : training::Language::En;
-    std::printf("%-24s %5s  %-10s %-12s %9s  %s\n", ru ? "ученик" : "student", ru ? "балл" : "score",
-                ru ? "итог" : "result", ru ? "выполнение" : "run", ru ? "цикл, с" : "cycle, s",
-                ru ? "главное замечание" : "main deduction");
+    std::printf("%-24s %5s  %-10s %-12s %9s  %s\n", word("training.student", ru).c_str(),
+                word("training.score", ru).c_str(), word("training.result", ru).c_str(),
+                word("training.run", ru).c_str(), word("grade.cycle-s", ru).c_str(),
+                word("grade.main-deduction", ru).c_str());
     int passed = 0;
     for (const training::Grade& g : grades) {
         passed += g.passed;
@@ -89,11 +83,11 @@ void printTable(const std::vector<training::Grade>& grades, Lang lang) {
                 worst = &d;
         const std::string who = g.student.empty() ? g.file : g.student;
         std::printf("%-24s %5d  %-10s %-12s %9.3f  %s\n", who.c_str(), g.score,
-                    g.passed ? (ru ? "зачтено" : "passed") : (ru ? "незачёт" : "failed"),
+                    word(g.passed ? "training.passed" : "training.failed", ru).c_str(),
                     g.status.c_str(), g.cycleTimeS,
                     worst ? training::render(worst->text, l).c_str() : "");
     }
-    std::printf("%s %d/%zu\n", ru ? "Зачтено:" : "Passed:", passed, grades.size());
+    std::printf("%s %d/%zu\n", word("grade.passed-count", ru).c_str(), passed, grades.size());
 }
 
 // One CSV field (RFC 4180): quoted when it holds a comma, a quote or a line break.
@@ -230,9 +224,11 @@ int runGrade(std::span<const std::string> argv) {
                 database->recordAttempt(training::attemptEntry(grades[i], items[i].text));
             } catch (const db::Error& err) {
                 ++notRecorded;
-                std::fprintf(stderr, lang == Lang::Ru ? "k528: %s: оценено, но попытка не записана: %s\n"
-                                                      : "k528: %s: graded, but the attempt was not recorded: %s\n",
-                             items[i].file.c_str(), err.text(lang == Lang::Ru ? db::Lang::Ru : db::Lang::En).c_str());
+                std::fprintf(stderr, "%s\n",
+                             cliText("grade.not-recorded",
+                                     {items[i].file, err.text(lang == Lang::Ru ? db::Lang::Ru : db::Lang::En)},
+                                     lang == Lang::Ru)
+                                 .c_str());
             }
         }
     if (args.has("--json")) {

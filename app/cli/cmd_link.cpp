@@ -30,7 +30,14 @@ namespace {
 // The language of the command's messages (--lang, Russian unless en); the
 // --json outputs are the same in both.
 bool ru = true;
-const char* say(const char* russian, const char* english) { return ru ? russian : english; }
+// A text of the command line's catalog in the command's language.
+std::string say(std::string_view id, std::initializer_list<std::string> args = {}) { return cliText(id, args, ru); }
+// A number with `digits` decimals, as the reports print seconds and milliseconds.
+std::string fixed(double v, int digits) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*f", digits, v);
+    return b;
+}
 std::string said(const link::Said& s) { return link::render(s, ru); }
 // A plugin's error: a line failure of core's catalog, or the system's words.
 std::string lineError(const QString& error) { return said(link::decodeSaid(error.toStdString())); }
@@ -62,17 +69,17 @@ int fail(const link::LinkError& e) {
 void lineReport(const link::Link& l, const linkplugin::ClientTransport& t, int baud) {
     const linkplugin::WireCount w = t.wire();
     if (baud == 0) {
-        std::fprintf(stderr, say("линия: %s; транзакций: %lld, байт: %lld (Modbus TCP)\n",
-                                 "line: %s; %lld transactions, %lld bytes (Modbus TCP)\n"),
-                     link::describe(l.stats(), ru).c_str(),
-                     static_cast<long long>(w.transactions), static_cast<long long>(w.bytes));
+        std::fprintf(stderr, "%s\n",
+                     say("link.report.line-tcp", {link::describe(l.stats(), ru), std::to_string(w.transactions),
+                                                  std::to_string(w.bytes)})
+                         .c_str());
         return;
     }
-    std::fprintf(stderr,
-                 say("линия: %s; транзакций: %lld, байт: %lld, время на линии %.3f с при %d бит/с\n",
-                     "line: %s; %lld transactions, %lld bytes, wire time %.3f s at %d bit/s\n"),
-                 link::describe(l.stats(), ru).c_str(), static_cast<long long>(w.transactions),
-                 static_cast<long long>(w.bytes), link::wireSeconds(w.bytes, w.frames, baud), baud);
+    std::fprintf(stderr, "%s\n",
+                 say("link.report.line", {link::describe(l.stats(), ru), std::to_string(w.transactions),
+                                          std::to_string(w.bytes), fixed(link::wireSeconds(w.bytes, w.frames, baud), 3),
+                                          std::to_string(baud)})
+                     .c_str());
 }
 
 std::string clockText(const QDateTime& t) { return t.toString(QStringLiteral("HH:mm:ss")).toStdString(); }
@@ -122,18 +129,16 @@ Json liveJson(const link::LiveState& s) {
 }
 
 std::string liveText(const link::LiveState& s) {
-    std::string t = say("режим F", "mode F") + std::to_string(s.mode) + (s.pcReady ? " (РАБОТА С ПЭВМ)" : "") +
-                    (s.running ? say(", выполняется", ", running") : "") + say(", программа ", ", program ") +
-                    std::to_string(s.program) + " N" + std::to_string(s.frame) + say(", коррекция ", ", override ") +
-                    std::to_string(s.overridePercent) + "%";
-    char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  say(", X %d Z %d (машинные X %d Z %d, рассогласование X %d Z %d дискрет)",
-                      ", X %d Z %d (machine X %d Z %d, error X %d Z %d disc)"),
-                  s.xCurrent, s.zCurrent, s.xMachine, s.zMachine, s.xError, s.zError);
-    t += buf;
+    // The panel's own name of mode 7 «РАБОТА С ПЭВМ» is the same in both languages.
+    std::string t = say("link.live.mode", {std::to_string(s.mode)}) + (s.pcReady ? " (РАБОТА С ПЭВМ)" : "") +
+                    (s.running ? say("link.live.running") : "") +
+                    say("link.live.program", {std::to_string(s.program), std::to_string(s.frame),
+                                              std::to_string(s.overridePercent)}) +
+                    say("link.live.axes", {std::to_string(s.xCurrent), std::to_string(s.zCurrent),
+                                           std::to_string(s.xMachine), std::to_string(s.zMachine),
+                                           std::to_string(s.xError), std::to_string(s.zError)});
     for (int n : s.alarms) {
-        t += say("; авария ", "; alarm ") + std::to_string(n);
+        t += say("link.live.alarm", {std::to_string(n)});
         if (const catalog::PositionerMessage* m = catalog::findPositionerMessage(n))
             t += " «" + std::string(m->textRu) + "»";
     }
@@ -227,14 +232,16 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
         QString error;
         std::unique_ptr<linkplugin::ClientTransport> t = plugin.openClient(line, error);
         if (!t) {
-            std::fprintf(stderr, say("k528 link: не удаётся открыть %s при %d бит/с: %s\n",
-                                     "k528 link: cannot open %s at %d bit/s: %s\n"),
-                         line.port.toUtf8().constData(), baud, lineError(error).c_str());
+            std::fprintf(stderr, "%s\n",
+                         say("link.report.cannot-open-at", {line.port.toStdString(), std::to_string(baud),
+                                                            lineError(error)})
+                             .c_str());
             return ExitUsage;
         }
-        std::fprintf(stderr, say("поиск: %d бит/с, адресов: %zu, %d мс на каждый без ответа\n",
-                                 "scan: %d bit/s, %zu addresses, %d ms each without an answer\n"),
-                     baud, addresses.size(), line.timeoutMs);
+        std::fprintf(stderr, "%s\n",
+                     say("link.report.scan", {std::to_string(baud), std::to_string(addresses.size()),
+                                              std::to_string(line.timeoutMs)})
+                         .c_str());
         link::Link l(*t, link::k528Map(), 1);
         for (int a : addresses) {
             if (stopRequested())
@@ -261,7 +268,7 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
                 j["round_trip_ms"] = s.roundTripMs;
                 std::printf("%s\n", json::dump(j).c_str());
             } else {
-                std::printf(say("%d бит/с, %s\n", "%d bit/s, %s\n"), baud, link::describe(s, ru).c_str());
+                std::printf("%s\n", say("link.report.station", {std::to_string(baud), link::describe(s, ru)}).c_str());
             }
             if (standardOutputLost())
                 return ExitUsage;
@@ -269,10 +276,9 @@ int runScan(const Args& args, linkplugin::LinkPlugin& plugin, linkplugin::LineSe
         lineReport(l, *t, baud);
         frames += link::formatFrameLog(t->frameLog());
     }
-    if (ru)
-        std::fprintf(stderr, "поиск: ответивших станций: %d\n", found);
-    else
-        std::fprintf(stderr, "scan: %d station%s answered\n", found, found == 1 ? "" : "s");
+    std::fprintf(stderr, "%s\n",
+                 (found == 1 ? say("link.report.scan-found-one") : say("link.report.scan-found", {std::to_string(found)}))
+                     .c_str());
     if (!saveFrames(framesPath, frames))
         return ExitUsage;
     return stopRequested() ? ExitUsage : ExitOk;
@@ -391,8 +397,7 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     std::unique_ptr<linkplugin::ClientTransport> t = plugin->openClient(*line, error);
     if (!t) {
-        std::fprintf(stderr, say("k528 link: не удаётся открыть %s: %s\n", "k528 link: cannot open %s: %s\n"),
-                     line->port.toUtf8().constData(), lineError(error).c_str());
+        std::fprintf(stderr, "%s\n", say("link.report.cannot-open", {line->port.toStdString(), lineError(error)}).c_str());
         return ExitUsage;
     }
     link::Link l(*t);
@@ -410,11 +415,11 @@ int runLinkQt(std::span<const std::string> argv) {
             return done(fail(e));
         link::ServerId id;
         const bool named = !l.serverId(id);
-        const std::string name = named ? say("; называет себя «", "; it names itself «") + id.data + "»" : "";
-        std::printf(say("K528-05 (карта %s) отвечает на %s, адрес %d: %s; время отклика %.1f мс%s\n",
-                        "K528-05 (map %s) answers on %s at address %d: %s; round trip %.1f ms%s\n"),
-                    l.map().name.c_str(), line->port.toUtf8().constData(), line->address, liveText(s).c_str(),
-                    l.stats().roundTrip.median(), name.c_str());
+        const std::string name = named ? say("link.report.names-itself", {id.data}) : "";
+        std::printf("%s\n", say("link.report.ping", {l.map().name, line->port.toStdString(),
+                                                     std::to_string(line->address), liveText(s),
+                                                     fixed(l.stats().roundTrip.median(), 1), name})
+                                .c_str());
         return done(ExitOk);
     }
     if (cmd == "status") {
@@ -434,9 +439,7 @@ int runLinkQt(std::span<const std::string> argv) {
                 j[link::modbus::counterName(link::modbus::kCounters[i])] = c.values[i];
             std::printf("%s\n", json::dump(j).c_str());
         } else {
-            std::printf(say("счётчики шины станции %d (функция Modbus 08):\n",
-                            "station %d's bus counters (Modbus function 08):\n"),
-                        line->address);
+            std::printf("%s\n", say("link.report.counters", {std::to_string(line->address)}).c_str());
             for (std::size_t i = 0; i < c.values.size(); ++i)
                 std::printf("  %-26s %u\n", link::modbus::counterName(link::modbus::kCounters[i]),
                             static_cast<unsigned>(c.values[i]));
@@ -444,7 +447,7 @@ int runLinkQt(std::span<const std::string> argv) {
         if (args.has("--clear")) {
             if (link::LinkError e = link::clearBusCounters(l))
                 return done(fail(e));
-            std::printf("%s\n", say("счётчики сброшены", "counters cleared"));
+            std::printf("%s\n", say("link.report.counters-cleared").c_str());
         }
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
@@ -453,10 +456,9 @@ int runLinkQt(std::span<const std::string> argv) {
         const bool c = args.positional()[1] == "c";
         if (link::LinkError e = link::clearArea(l, c ? link::BlockKind::C : link::BlockKind::R))
             return done(fail(e));
-        std::printf(say("область %s контроллера очищена (%s)\n", "cleared the %s area of the controller (%s)\n"),
-                    c ? "C" : "R",
-                    c ? say("все 152 константы станка равны 0", "all 152 machine constants are 0")
-                      : say("все R-параметры равны 0", "every R-parameter is 0"));
+        std::printf("%s\n", say("link.report.cleared", {c ? "C" : "R",
+                                                        say(c ? "link.report.cleared-c" : "link.report.cleared-r")})
+                                .c_str());
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
@@ -498,18 +500,20 @@ int runLinkQt(std::span<const std::string> argv) {
                     j["stale"] = lastState ? liveJson(*lastState) : Json();
                     std::printf("%s\n", json::dump(j).c_str());
                 } else if (first) {
-                    std::printf(say("линия потеряна в %s (%s); последние значения, устаревшие: %s\n",
-                                    "line lost at %s (%s); last values, stale: %s\n"),
-                                clockText(*lostSince).c_str(), e.text(ru).c_str(),
-                                lastState ? liveText(*lastState).c_str() : say("пока нет", "none yet"));
+                    std::printf("%s\n", say("link.report.lost", {clockText(*lostSince), e.text(ru),
+                                                                 lastState ? liveText(*lastState)
+                                                                           : say("link.report.none-yet")})
+                                            .c_str());
                 }
                 last.clear();
             } else {
                 if (lostSince && !asJson)
-                    std::printf(say("линия снова отвечает в %s после %.1f с без ответа\n",
-                                    "line back at %s after %.1f s without an answer\n"),
-                                clockText(QDateTime::currentDateTime()).c_str(),
-                                static_cast<double>(lostSince->msecsTo(QDateTime::currentDateTime())) / 1000.0);
+                    std::printf(
+                        "%s\n",
+                        say("link.report.back",
+                            {clockText(QDateTime::currentDateTime()),
+                             fixed(static_cast<double>(lostSince->msecsTo(QDateTime::currentDateTime())) / 1000.0, 1)})
+                            .c_str());
                 lostSince.reset();
                 lastState = s;
                 const std::string text = asJson ? json::dump(liveJson(s)) : liveText(s);
@@ -525,8 +529,7 @@ int runLinkQt(std::span<const std::string> argv) {
         }
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         if (lostSince) {
-            std::fprintf(stderr, say("k528 link: линия не отвечает с %s\n", "k528 link: the line has not answered since %s\n"),
-                         clockText(*lostSince).c_str());
+            std::fprintf(stderr, "%s\n", say("link.report.silent", {clockText(*lostSince)}).c_str());
             return done(ExitUsage);
         }
         return done(ExitOk);
@@ -534,7 +537,7 @@ int runLinkQt(std::span<const std::string> argv) {
     if (cmd == "pull") {
         link::PullResult r;
         const link::LinkError e = link::pull(l, r, [](const std::string& what, int, int) {
-            std::fprintf(stderr, say("чтение: %s\n", "pull: %s\n"), partText(what).c_str());
+            std::fprintf(stderr, "%s\n", say("link.report.pulling", {partText(what)}).c_str());
         });
         if (record)
             record->recordPull(l, r, e);
@@ -547,9 +550,9 @@ int runLinkQt(std::span<const std::string> argv) {
             std::fprintf(stderr, "k528 link: %s\n", werror.c_str());
             return done(ExitUsage);
         }
-        std::printf(say("считаны 152 C-параметра, 300 R-параметров, программ: %zu, сообщений: %zu, в %s\n",
-                        "pulled 152 C-parameters, 300 R-parameters, %zu programs, %zu messages into %s\n"),
-                    p.programs.size(), p.messages.size(), args.value("--out")->c_str());
+        std::printf("%s\n", say("link.report.pulled", {std::to_string(p.programs.size()),
+                                                       std::to_string(p.messages.size()), *args.value("--out")})
+                                .c_str());
         lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
         return done(ExitOk);
     }
@@ -562,7 +565,7 @@ int runLinkQt(std::span<const std::string> argv) {
     }
     link::PushReport rep;
     const link::LinkError e = link::push(l, plan, rep, [](const std::string& what, int, int) {
-        std::fprintf(stderr, say("передача: %s\n", "push: %s\n"), partText(what).c_str());
+        std::fprintf(stderr, "%s\n", say("link.report.pushing", {partText(what)}).c_str());
     });
     if (record)
         record->recordPush(l, plan, rep, e);
@@ -570,10 +573,10 @@ int runLinkQt(std::span<const std::string> argv) {
         std::string names;
         for (const link::PushReport::Part& p : rep.parts)
             names += (names.empty() ? "" : ", ") + said(p.said);
-        std::printf(say("записано и проверено: %s\n", "written and verified: %s\n"),
-                    names.empty() ? say("ничего (файл пуст)", "nothing (the file is empty)") : names.c_str());
+        std::printf("%s\n",
+                    say("link.report.pushed", {names.empty() ? say("link.report.pushed-nothing") : names}).c_str());
     } else if (rep.anyNew() || e.kind != link::LinkError::Kind::Input) {
-        std::printf(say("передача остановлена: %s\n", "push stopped: %s\n"), said(rep.summary()).c_str());
+        std::printf("%s\n", say("link.report.push-stopped", {said(rep.summary())}).c_str());
     }
     lineReport(l, *t, isTcpLine(args) ? 0 : line->baud);
     if (e)

@@ -242,12 +242,9 @@ int runPanel(std::span<const std::string> argv) {
         for (const Step& s : steps) {
             if (const auto* k = std::get_if<panel::KeyPress>(&s)) {
                 if (refusedByLock(*k))
-                    std::fprintf(stderr,
-                                 ru ? "k528: клавиша %s не принята: константы станка заблокированы "
-                                      "преподавателем для группы «%s» (настройка constants.lock станка)\n"
-                                    : "k528: key %s refused: the machine constants are locked by the trainer for "
-                                      "the class «%s» (setting constants.lock of the machine)\n",
-                                 k->key == panel::Key::F5 ? "F5" : "ENTER", lockedFor.c_str());
+                    std::fprintf(stderr, "%s\n",
+                                 cliText("panel.locked", {k->key == panel::Key::F5 ? "F5" : "ENTER", lockedFor}, ru)
+                                     .c_str());
                 else
                     k923.press(*k);
             }

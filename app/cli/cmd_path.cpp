@@ -177,13 +177,9 @@ void printPlain(const toolpath::ProgrammedPath& p, const proveout::Result& proof
                  mm(p.end.z).c_str(), p.run.frames,
                  std::string(engine::previewStatusName(p.run.status)).c_str());
     if (cycle.seconds)
-        std::fprintf(stdout, lang == Lang::Ru ? "время цикла %s с\n" : "cycle time %s s\n",
-                     seconds(cycle.seconds).c_str());
+        std::fprintf(stdout, "%s\n", cliText("path.cycle-time-s", {seconds(cycle.seconds)}, lang == Lang::Ru).c_str());
     else
-        std::fprintf(stdout,
-                     lang == Lang::Ru ? "время цикла: нет (прогон на станке: %s)\n"
-                                      : "cycle time: none (the run on the machine: %s)\n",
-                     cycle.run.c_str());
+        std::fprintf(stdout, "%s\n", cliText("path.cycle-time-none", {cycle.run}, lang == Lang::Ru).c_str());
 }
 
 } // namespace

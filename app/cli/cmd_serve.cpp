@@ -77,7 +77,7 @@ int runServeQt(std::span<const std::string> argv) {
     try {
         sim = std::make_unique<machine::Simulation>(*prof);
     } catch (const plc::DescriptionError& e) {
-        std::fprintf(stderr, ru ? "k528: описание станка %s\n" : "k528: machine description %s\n", e.text(ru).c_str());
+        std::fprintf(stderr, "%s\n", cliText("machine.description", {e.text(ru)}, ru).c_str());
         return ExitUsage;
     }
     sim->powerOn();
@@ -105,22 +105,23 @@ int runServeQt(std::span<const std::string> argv) {
     const QString identity = QStringLiteral("K528-05 simulated by k528 serve: %1").arg(QString::fromStdString(prof->name));
     std::unique_ptr<linkplugin::Server> server = plugin->openServer(*line, handler, identity, error);
     if (!server) {
-        std::fprintf(stderr, ru ? "k528: не удаётся обслуживать линию %s: %s\n" : "k528: cannot serve on %s: %s\n",
-                     line->port.toUtf8().constData(),
-                     link::render(link::decodeSaid(error.toStdString()), ru).c_str());
+        std::fprintf(stderr, "%s\n",
+                     cliText("serve.cannot",
+                             {line->port.toStdString(), link::render(link::decodeSaid(error.toStdString()), ru)}, ru)
+                         .c_str());
         return ExitUsage;
     }
     if (isTcpLine(args))
-        std::fprintf(stderr,
-                     ru ? "k528 serve: %s на Modbus TCP %s, устройство %d; SIGINT/SIGTERM останавливает\n"
-                        : "k528 serve: %s on Modbus TCP %s, unit %d; SIGINT/SIGTERM stops\n",
-                     prof->name.c_str(), line->port.toUtf8().constData(), line->address);
+        std::fprintf(stderr, "%s\n",
+                     cliText("serve.tcp", {prof->name, line->port.toStdString(), std::to_string(line->address)}, ru)
+                         .c_str());
     else
-        std::fprintf(stderr,
-                     ru ? "k528 serve: %s на %s, адрес %d, %d %c%d; SIGINT/SIGTERM останавливает\n"
-                        : "k528 serve: %s on %s, address %d, %d %c%d; SIGINT/SIGTERM stops\n",
-                     prof->name.c_str(), line->port.toUtf8().constData(), line->address, line->baud,
-                     line->parity, line->stopBits);
+        std::fprintf(stderr, "%s\n",
+                     cliText("serve.serial",
+                             {prof->name, line->port.toStdString(), std::to_string(line->address),
+                              std::to_string(line->baud), std::string(1, line->parity), std::to_string(line->stopBits)},
+                             ru)
+                         .c_str());
     std::fflush(stderr);
 
     // --stdin-keys: K923 keys read from standard input while serving, a line
@@ -145,10 +146,7 @@ int runServeQt(std::span<const std::string> argv) {
                     if (const auto k = panel::parseKey(token))
                         k923.press(*k);
                     else
-                        std::fprintf(stderr,
-                                     ru ? "k528 serve: неизвестная клавиша «%s» со стандартного ввода пропущена\n"
-                                        : "k528 serve: unknown key '%s' on standard input: ignored\n",
-                                     token.c_str());
+                        std::fprintf(stderr, "%s\n", cliText("serve.stdin-key", {token}, ru).c_str());
                 }
             }
         });
@@ -171,10 +169,9 @@ int runServeQt(std::span<const std::string> argv) {
     });
     tick.start(5);
     QCoreApplication::exec();
-    std::fprintf(stderr,
-                 ru ? "k528 serve: остановлен; запросов: %lld, принято текстов: %d\n"
-                    : "k528 serve: stopped after %lld requests, %d texts committed\n",
-                 static_cast<long long>(server->requests()), image.commits());
+    std::fprintf(stderr, "%s\n",
+                 cliText("serve.stopped", {std::to_string(server->requests()), std::to_string(image.commits())}, ru)
+                     .c_str());
     return ExitOk;
 }
 

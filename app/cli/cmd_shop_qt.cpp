@@ -219,16 +219,16 @@ int runShopQt(std::span<const std::string> argv) {
     // (source shop@HOST) once a minute, when a state changes and at the end.
     std::optional<db::Database> times;
     const db::Lang lang = russianCommandLine() ? db::Lang::Ru : db::Lang::En;
-    const char* const timesNotKept = lang == db::Lang::Ru
-                                         ? "k528 shop: время станков в каждом состоянии не записывается: %s\n"
-                                         : "k528 shop: the time in each state is not kept: %s\n";
+    const auto timesNotKept = [](const std::string& why) {
+        std::fprintf(stderr, "%s\n", cliText("shop.times-not-kept", {why}).c_str());
+    };
     if (const auto where = args.value("--db")) {
         try {
             times.emplace(db::Database::open(db::Location::parse(*where)));
         } catch (const db::Error& e) {
-            std::fprintf(stderr, timesNotKept, e.text(lang).c_str());
+            timesNotKept(e.text(lang));
         } catch (const std::exception& e) {
-            std::fprintf(stderr, timesNotKept, e.what());
+            timesNotKept(e.what());
         }
     }
     char host[256] = {};
@@ -252,7 +252,7 @@ int runShopQt(std::span<const std::string> argv) {
             if (e.kind() == db::ErrorKind::Busy || e.kind() == db::ErrorKind::Io)
                 tally.putBack(rows); // the next minute
             if (!timesSaid)
-                std::fprintf(stderr, timesNotKept, e.text(lang).c_str());
+                timesNotKept(e.text(lang));
             timesSaid = true;
         }
     };

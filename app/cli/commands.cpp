@@ -2,6 +2,7 @@
 // a run function, declare it in cli.h (or here) and add one row.
 
 #include "cli.h"
+#include "cli_texts.h"
 #include "db_cli.h"
 #include "program_cli.h"
 
@@ -45,7 +46,7 @@ std::span<const Command> commands() {
          "A file with syntax errors is not formatted: they are printed on stderr (exit 1).\n"
          "FILE '-' reads standard input.\n",
          runFormat},
-        {"db", "db init|machines|show|set|trial|export|import|diff|calc|audit|copy|release|withdraw|log|roles|check [--db LOCATION] ...",
+        {"db", dbUsage(),
          "The database of machines: constants, R-parameters, programs, messages, history.",
          kDbDetails, runDb},
         {"run",
@@ -258,7 +259,7 @@ int usageError(std::string_view message) {
 
 int usageError(std::string_view message, bool russian) {
     std::fprintf(stderr, "k528: %.*s\n", static_cast<int>(message.size()), message.data());
-    std::fprintf(stderr, "%s\n", russian ? "Справка: k528 --help." : "Try 'k528 --help'.");
+    std::fprintf(stderr, "%s\n", cliText("cli.try-help", {}, russian).c_str());
     return ExitUsage;
 }
 

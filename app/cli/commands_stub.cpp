@@ -1,6 +1,7 @@
 // k528-link's copy of the one helper of commands.cpp its commands use (the
 // command table itself belongs to k528).
 #include "cli.h"
+#include "cli_texts.h"
 
 namespace k528::cli {
 
@@ -10,7 +11,7 @@ int usageError(std::string_view message) {
 
 int usageError(std::string_view message, bool russian) {
     std::fprintf(stderr, "k528: %.*s\n", static_cast<int>(message.size()), message.data());
-    std::fprintf(stderr, "%s\n", russian ? "Справка: k528 --help." : "Try 'k528 --help'.");
+    std::fprintf(stderr, "%s\n", cliText("cli.try-help", {}, russian).c_str());
     return ExitUsage;
 }
 

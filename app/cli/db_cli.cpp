@@ -217,8 +217,7 @@ bool dbTarget(const Args& a, DbTarget& t) {
     try {
         if (const auto p = a.value("--db")) {
             if (p->empty()) {
-                usageError(langOf(a) == Lang::Ru ? "после --db нужен путь к файлу или URI postgresql://"
-                                                 : "--db needs a file path or a postgresql:// URI");
+                usageError(cliText("db.usage.db", {}, langOf(a) == Lang::Ru));
                 return false;
             }
             t.where = db::Location::parse(*p);
@@ -260,8 +259,7 @@ std::optional<db::Database> openDb(const DbTarget& t, bool mayCreate,
         if (!exists && !t.explicitPath) {
             fs::create_directories(file.parent_path(), ec);
             if (ec) {
-                fail(lang == Lang::Ru ? "нельзя создать папку " + file.parent_path().string() + ": «" + ec.message() + "»"
-                                      : "cannot create the folder " + file.parent_path().string() + ": " + ec.message());
+                fail(cliText("db.no-folder", {file.parent_path().string(), ec.message()}, lang == Lang::Ru));
                 return std::nullopt;
             }
         }
@@ -364,14 +362,14 @@ std::string rValueText(const MachineProfile& p, int n, std::int64_t v, Lang lang
     switch (d->unit) {
     case cat::RUnit::DiscX:
     case cat::RUnit::DiscZ:
-        return "= " + units::formatDisc(v, s) + (ru ? " мм" : " mm");
+        return "= " + units::formatDisc(v, s) + " " + cliText("unit.mm", {}, ru);
     case cat::RUnit::DiscXPerMin:
     case cat::RUnit::DiscZPerMin:
-        return "= " + units::formatDisc(v, s) + (ru ? " мм/мин" : " mm/min");
+        return "= " + units::formatDisc(v, s) + " " + cliText("unit.mm-per-min", {}, ru);
     case cat::RUnit::Ms: {
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.3f", static_cast<double>(v) / 1000.0);
-        return std::string("= ") + buf + (ru ? " с" : " s");
+        return std::string("= ") + buf + " " + cliText("unit.s", {}, ru);
     }
     default:
         return {};
@@ -465,9 +463,46 @@ std::string savedText(const std::string& machine, const db::SaveResult& r, Lang 
 } // namespace dbcli
 
 namespace {
-constexpr const char* kDbSubcommands =
-    "init, machines, show, set, trial, export, import, diff, calc, audit, copy, release, withdraw, log, roles, check";
+
+// The subcommands of `k528 db`, in the order its usage line and its errors
+// name them: the one list both are made of.
+struct DbSubcommand {
+    std::string_view name;
+    int (*run)(std::span<const std::string> args);
+};
+
+constexpr DbSubcommand kDbSubcommands[] = {
+    {"init", dbcli::cmdInit},
+    {"machines", dbcli::cmdMachines},
+    {"show", dbcli::cmdShow},
+    {"set", dbcli::cmdSet},
+    {"trial", dbcli::cmdTrial},
+    {"export", dbcli::cmdExport},
+    {"import", dbcli::cmdImport},
+    {"diff", dbcli::cmdDiff},
+    {"calc", runDbCalc},
+    {"audit", dbcli::cmdAudit},
+    {"copy", dbcli::cmdCopy},
+    {"release", [](std::span<const std::string> a) { return dbcli::cmdRelease(a, true); }},
+    {"withdraw", [](std::span<const std::string> a) { return dbcli::cmdRelease(a, false); }},
+    {"log", dbcli::cmdLog},
+    {"roles", dbcli::cmdRoles},
+    {"check", dbcli::cmdCheck},
+};
+
+std::string dbSubcommandNames(std::string_view separator) {
+    std::string names;
+    for (const DbSubcommand& c : kDbSubcommands)
+        names += (names.empty() ? "" : std::string(separator)) + std::string(c.name);
+    return names;
+}
+
 } // namespace
+
+std::string_view dbUsage() {
+    static const std::string usage = "db " + dbSubcommandNames("|") + " [--db LOCATION] ...";
+    return usage;
+}
 
 int runDb(std::span<const std::string> args) {
     std::vector<std::string> rest(args.begin(), args.end());
@@ -485,41 +520,14 @@ int runDb(std::span<const std::string> args) {
         }
     }
     if (rest.empty())
-        return usageError(cliText("db.no-subcommand", {kDbSubcommands}));
+        return usageError(cliText("db.no-subcommand", {dbSubcommandNames(", ")}));
     const std::string sub = rest[0];
     std::vector<std::string> subArgs(rest.begin() + 1, rest.end());
     subArgs.insert(subArgs.end(), dbOpt.begin(), dbOpt.end());
-    if (sub == "init")
-        return dbcli::cmdInit(subArgs);
-    if (sub == "machines")
-        return dbcli::cmdMachines(subArgs);
-    if (sub == "show")
-        return dbcli::cmdShow(subArgs);
-    if (sub == "set")
-        return dbcli::cmdSet(subArgs);
-    if (sub == "trial")
-        return dbcli::cmdTrial(subArgs);
-    if (sub == "export")
-        return dbcli::cmdExport(subArgs);
-    if (sub == "import")
-        return dbcli::cmdImport(subArgs);
-    if (sub == "diff")
-        return dbcli::cmdDiff(subArgs);
-    if (sub == "calc")
-        return runDbCalc(subArgs);
-    if (sub == "audit")
-        return dbcli::cmdAudit(subArgs);
-    if (sub == "copy")
-        return dbcli::cmdCopy(subArgs);
-    if (sub == "release" || sub == "withdraw")
-        return dbcli::cmdRelease(subArgs, sub == "release");
-    if (sub == "log")
-        return dbcli::cmdLog(subArgs);
-    if (sub == "roles")
-        return dbcli::cmdRoles(subArgs);
-    if (sub == "check")
-        return dbcli::cmdCheck(subArgs);
-    return usageError(cliText("db.unknown-subcommand", {sub, kDbSubcommands}));
+    for (const DbSubcommand& c : kDbSubcommands)
+        if (c.name == sub)
+            return c.run(subArgs);
+    return usageError(cliText("db.unknown-subcommand", {sub, dbSubcommandNames(", ")}));
 }
 
 } // namespace k528::cli

@@ -5,10 +5,13 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace k528::cli {
 
 int runDb(std::span<const std::string> args);
+// The usage line of `k528 db` (its subcommands, from the table runDb dispatches by).
+std::string_view dbUsage();
 // `k528 db calc ...` (args after "calc"); `dbPath` is "" for the default.
 int runDbCalc(std::span<const std::string> args);
 

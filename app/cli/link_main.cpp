@@ -4,6 +4,7 @@
 // (next to it in the build tree, in /usr/lib/k528studio when installed:
 // helper_path.h) with the same arguments.
 #include "cli.h"
+#include "cli_texts.h"
 #include "link_line.h"
 #include "output_file.h"
 
@@ -34,32 +35,27 @@ bool isTcpLine(const Args& args) { return args.value("--tcp").has_value(); }
 std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
     linkplugin::LineSettings s;
     const bool ru = russianCommandLine();
-    const auto say = [ru](const char* russian, const char* english) { return std::string(ru ? russian : english); };
     const auto port = args.value("--port");
     const auto tcp = args.value("--tcp");
     if (port && tcp) {
-        usageError(say("--port УСТРОЙСТВО и --tcp ХОСТ:ПОРТ называют две линии: укажите одну",
-                       "--port DEVICE and --tcp HOST:PORT name two lines: give one"));
+        usageError(cliText("link.two-lines", {}, ru));
         return std::nullopt;
     }
     if (tcp) {
         const std::size_t colon = tcp->rfind(':');
         const auto p = colon == std::string::npos ? std::nullopt : parseInt(tcp->substr(colon + 1));
         if (colon == 0 || !p || *p < 1 || *p > 65535) {
-            usageError(ru ? "после --tcp нужен ХОСТ:ПОРТ (например, 192.168.1.20:502, порт 1..65535), а не «" + *tcp + "»"
-                          : "--tcp takes HOST:PORT (e.g. 192.168.1.20:502, a port 1..65535), not '" + *tcp + "'");
+            usageError(cliText("link.tcp", {*tcp}, ru));
             return std::nullopt;
         }
         for (const char* serial : {"--baud", "--parity", "--stop-bits"})
             if (args.value(serial)) {
-                usageError(std::string(serial) + say(" — настройка последовательной линии, а не --tcp",
-                                                      " is a setting of a serial line, not of --tcp"));
+                usageError(cliText("link.serial-setting", {serial}, ru));
                 return std::nullopt;
             }
         s.port = QString::fromStdString(*tcp);
     } else if (!port || port->empty()) {
-        usageError(say("нужен --port УСТРОЙСТВО (последовательный порт или конец пары pty) или --tcp ХОСТ:ПОРТ (Modbus TCP)",
-                       "--port DEVICE (a serial port, or one end of a pty pair) or --tcp HOST:PORT (Modbus TCP) is needed"));
+        usageError(cliText("link.no-line", {}, ru));
         return std::nullopt;
     } else {
         s.port = QString::fromStdString(*port);
@@ -67,8 +63,7 @@ std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
     if (const auto a = args.value("--address")) {
         const auto v = parseInt(*a);
         if (!v || *v < 1 || *v > 247) {
-            usageError(ru ? "после --address нужен адрес станции 1..247, а не «" + *a + "»"
-                          : "--address takes a station address 1..247, not '" + *a + "'");
+            usageError(cliText("link.address", {*a}, ru));
             return std::nullopt;
         }
         s.address = static_cast<int>(*v);
@@ -76,8 +71,7 @@ std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
     if (const auto b = args.value("--baud")) {
         const auto v = parseInt(*b);
         if (!v || *v < 1200 || *v > 4000000) {
-            usageError(ru ? "после --baud нужна скорость в бит/с (1200..4000000), а не «" + *b + "»"
-                          : "--baud takes a rate in bit/s (1200..4000000), not '" + *b + "'");
+            usageError(cliText("link.baud", {*b}, ru));
             return std::nullopt;
         }
         s.baud = static_cast<int>(*v);
@@ -90,14 +84,13 @@ std::optional<linkplugin::LineSettings> lineSettings(const Args& args) {
         else if (*p == "odd")
             s.parity = 'O';
         else {
-            usageError(ru ? "после --parity нужно none, even или odd, а не «" + *p + "»"
-                          : "--parity takes none, even or odd, not '" + *p + "'");
+            usageError(cliText("link.parity", {*p}, ru));
             return std::nullopt;
         }
     }
     if (const auto st = args.value("--stop-bits")) {
         if (*st != "1" && *st != "2") {
-            usageError(say("после --stop-bits нужно 1 или 2", "--stop-bits takes 1 or 2"));
+            usageError(cliText("link.stop-bits", {}, ru));
             return std::nullopt;
         }
         s.stopBits = *st == "2" ? 2 : 1;

@@ -1,5 +1,6 @@
 #include "link_record.h"
 
+#include "cli_texts.h"
 #include "db/location.h"
 
 #include <cstdio>
@@ -22,12 +23,11 @@ std::string said(const db::Error& e, bool ru) {
 
 bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
                           std::optional<TransferRecord>& record) {
-    const auto say = [ru](const char* russian, const char* english) { return ru ? russian : english; };
     const auto given = args.value("--db");
     const char* env = std::getenv("K528_DB");
     const auto machine = args.value("--machine");
     const bool required = given || (env && *env) || machine;
-    std::string where = given ? *given : say("базы данных по умолчанию", "the default database");
+    std::string where = given ? *given : cliText("link.record.default-db", {}, ru);
     try {
         const db::Location loc = given ? db::Location::parse(*given) : db::defaultDatabaseLocation();
         where = loc.text();
@@ -36,12 +36,7 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
             std::error_code ec;
             if (!fs::exists(loc.file(), ec)) {
                 if (given) {
-                    std::fprintf(stderr,
-                                 say("k528 link: нет базы данных %s для журнала передач (создайте её: "
-                                     "k528 db init --db %s); ничего не отправлено\n",
-                                     "k528 link: no database at %s for the transfer log (create one "
-                                     "with: k528 db init --db %s); nothing was sent\n"),
-                                 where.c_str(), where.c_str());
+                    std::fprintf(stderr, "%s\n", cliText("link.record.no-db", {where}, ru).c_str());
                     return false;
                 }
                 fs::create_directories(loc.file().parent_path(), ec);
@@ -54,9 +49,7 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
             const auto m = d.machine(*machine);
             if (!m) {
                 std::fprintf(stderr,
-                             say("k528 link: в %2$s нет станка «%1$s»; ничего не отправлено\n",
-                                 "k528 link: no machine \"%1$s\" in %2$s; nothing was sent\n"),
-                             machine->c_str(), where.c_str());
+                             "%s\n", cliText("link.record.no-machine", {*machine, where}, ru).c_str());
                 return false;
             }
             c.machine = *machine;
@@ -66,15 +59,10 @@ bool TransferRecord::open(const Args& args, const std::string& line, bool ru,
         return true;
     } catch (const db::Error& e) {
         if (required) {
-            std::fprintf(stderr, say("k528 link: журнал передач: %s; ничего не отправлено\n",
-                                     "k528 link: the transfer log: %s; nothing was sent\n"),
-                         said(e, ru).c_str());
+            std::fprintf(stderr, "%s\n", cliText("link.record.failed", {said(e, ru)}, ru).c_str());
             return false;
         }
-        std::fprintf(stderr,
-                     say("k528 link: предупреждение: эта передача не записана в журнал (%s: %s)\n",
-                         "k528 link: warning: this transfer is not on record (%s: %s)\n"),
-                     where.c_str(), said(e, ru).c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.not-recorded", {where, said(e, ru)}, ru).c_str());
         return true;
     }
 }
@@ -90,11 +78,7 @@ bool TransferRecord::releasedPlan(link::PushPlan& plan) {
         return false;
     }
     if (plan.programs.empty())
-        std::fprintf(stderr,
-                     ru_ ? "k528 link: у станка %s нет выпущенных программ: передаются только его C, R и "
-                           "сообщения\n"
-                         : "k528 link: machine %s has no released program: pushing its C, R and messages only\n",
-                     where_.machine.c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.no-released", {where_.machine}, ru_).c_str());
     return true;
 }
 
@@ -104,19 +88,12 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
     try {
         const transfer::ReleaseCheck check = transfer::checkReleased(db_, where_.machine, plan);
         if (check.overridden)
-            std::fprintf(stderr,
-                         ru_ ? "k528 link: передаются невыпущенные программы (станок %s это разрешает: "
-                               "push.unreleased)\n"
-                             : "k528 link: pushing programs that are not released (machine %s allows it: "
-                               "push.unreleased)\n",
-                         where_.machine.c_str());
+            std::fprintf(stderr, "%s\n", cliText("link.record.unreleased", {where_.machine}, ru_).c_str());
         if (!check.allowed)
-            std::fprintf(stderr, ru_ ? "k528 link: %s\nничего не отправлено\n" : "k528 link: %s\nnothing was sent\n",
-                         check.message(ru_).c_str());
+            std::fprintf(stderr, "%s\n", cliText("link.record.refused", {check.message(ru_)}, ru_).c_str());
         return check.allowed;
     } catch (const db::Error& e) {
-        std::fprintf(stderr, ru_ ? "k528 link: %s; ничего не отправлено\n" : "k528 link: %s; nothing was sent\n",
-                     said(e, ru_).c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.nothing-sent", {said(e, ru_)}, ru_).c_str());
         return false;
     }
 }
@@ -124,13 +101,10 @@ bool TransferRecord::mayPush(const link::PushPlan& plan) {
 void TransferRecord::record(const db::TransferEntry& e) {
     try {
         const db::TransferEntry stored = db_.recordTransfer(e);
-        std::fprintf(stderr, ru_ ? "в журнале: передача %lld в %s\n" : "on record: transfer %lld in %s\n",
-                     static_cast<long long>(stored.id),
-                     db_.location().text().c_str());
+        std::fprintf(stderr, "%s\n",
+                     cliText("link.record.recorded", {std::to_string(stored.id), db_.location().text()}, ru_).c_str());
     } catch (const db::Error& err) {
-        std::fprintf(stderr,
-                     ru_ ? "k528 link: передача не записана в журнал: %s\n" : "k528 link: the transfer was not recorded: %s\n",
-                     said(err, ru_).c_str());
+        std::fprintf(stderr, "%s\n", cliText("link.record.not-recorded-after", {said(err, ru_)}, ru_).c_str());
     }
 }
 

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_texts.h"
 #include "output_file.h"
 #include "util/version.h"
 
@@ -47,26 +48,22 @@ int dispatch(int argc, char** argv) {
     const std::string first = argv[1];
     if (first == "--version" || first == "version") {
         if (argc > 2)
-            return usageError(ru ? first + " не принимает аргументов, а здесь «" + argv[2] + "»"
-                                 : first + " takes no arguments, not '" + argv[2] + "'");
+            return usageError(cliText("cli.no-args", {first, argv[2]}, ru));
         printVersion();
         return ExitOk;
     }
     if (first == "--help" || first == "-h" || first == "help") {
         if (first != "help" && argc > 2)
-            return usageError(ru ? first + " не принимает аргументов, а здесь «" + argv[2] + "»"
-                                 : first + " takes no arguments, not '" + argv[2] + "'");
+            return usageError(cliText("cli.no-args", {first, argv[2]}, ru));
         if (first == "help" && argc > 3)
-            return usageError(ru ? std::string("help принимает одну КОМАНДУ, а здесь ещё «") + argv[3] + "»"
-                                 : std::string("help takes one COMMAND, not '") + argv[3] + "'");
+            return usageError(cliText("cli.help-one", {argv[3]}, ru));
         if (first == "help" && argc > 2) {
             for (const auto& c : commands())
                 if (c.name == argv[2]) {
                     printCommandHelp(c, stdout);
                     return ExitOk;
                 }
-            return usageError(ru ? std::string("неизвестная команда «") + argv[2] + "»"
-                                 : std::string("unknown command '") + argv[2] + "'");
+            return usageError(cliText("cli.unknown-command", {argv[2]}, ru));
         }
         printHelp();
         return ExitOk;
@@ -83,8 +80,8 @@ int dispatch(int argc, char** argv) {
         return c.run(args);
     }
     if (first.rfind("-", 0) == 0)
-        return usageError(ru ? "неизвестный параметр " + first : "unknown option " + first);
-    return usageError(ru ? "неизвестная команда «" + first + "»" : "unknown command '" + first + "'");
+        return usageError(cliText("opt.unknown", {first}, ru));
+    return usageError(cliText("cli.unknown-command", {first}, ru));
 }
 
 } // namespace
@@ -106,17 +103,16 @@ int main(int argc, char** argv) {
         rc = dispatch(argc, argv);
     } catch (const std::bad_alloc&) {
         std::fflush(stdout);
-        std::fprintf(stderr, ru ? "k528: не хватило памяти, чтобы выполнить команду\n"
-                                : "k528: not enough memory to finish the command\n");
+        const std::string_view said = cliWords("cli.no-memory", ru);
+        std::fprintf(stderr, "%.*s\n", static_cast<int>(said.size()), said.data());
         return ExitUsage;
     } catch (const std::exception& e) {
         std::fflush(stdout);
-        std::fprintf(stderr, ru ? "k528: внутренняя ошибка: %s\n" : "k528: internal error: %s\n", e.what());
+        std::fprintf(stderr, "%s\n", cliText("cli.internal", {e.what()}, ru).c_str());
         return ExitUsage;
     } catch (...) {
         std::fflush(stdout);
-        std::fprintf(stderr, ru ? "k528: внутренняя ошибка: неизвестное исключение\n"
-                                : "k528: internal error: an unknown exception\n");
+        std::fprintf(stderr, "%s\n", cliText("cli.internal-unknown", {}, ru).c_str());
         return ExitUsage;
     }
     return finishStandardOutput(rc);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "program/gfunctions.h"
+#include "program/iso_frame.h"
 #include "program/text_util.h"
 #include "util/utf8.h"
 
@@ -189,20 +190,22 @@ private:
             s.negative = p[k] == '-';
             ++k;
         }
+        // At most kMaxDigits + 1 digits in all: the loops stop at a limit
+        // set before them (one test a digit) and count by position.
+        constexpr std::size_t kScanDigits = Decimal::kMaxDigits + 1;
         std::uint64_t v = 0;
-        int count = 0;
-        while (k < n && isDigit(p[k]) && count <= Decimal::kMaxDigits) {
-            v = v * 10 + static_cast<std::uint64_t>(p[k++] - '0');
-            ++count;
-        }
+        const std::size_t first = k;
+        for (const std::size_t stop = std::min(n, k + kScanDigits); k < stop && isDigit(p[k]); ++k)
+            v = v * 10 + static_cast<std::uint64_t>(p[k] - '0');
+        int count = static_cast<int>(k - first);
         if (k < n && p[k] == '.' && count <= Decimal::kMaxDigits) {
             ++k;
-            const int before = count;
-            while (k < n && isDigit(p[k]) && count <= Decimal::kMaxDigits) {
-                v = v * 10 + static_cast<std::uint64_t>(p[k++] - '0');
-                ++count;
-            }
-            s.fraction = count - before;
+            const std::size_t point = k;
+            for (const std::size_t stop = std::min(n, k + (kScanDigits - static_cast<std::size_t>(count)));
+                 k < stop && isDigit(p[k]); ++k)
+                v = v * 10 + static_cast<std::uint64_t>(p[k] - '0');
+            s.fraction = static_cast<int>(k - point);
+            count += s.fraction;
         }
         s.digits = v;
         s.count = count;
@@ -658,14 +661,7 @@ void Parser::frameLine(std::size_t i) {
     } else {
         // One IsoFrame for every frame, emptied (not built) each time.
         IsoFrame& body = iso_;
-        body.g.clear();
-        body.m.clear();
-        body.message.reset();
-        body.call.reset();
-        body.x.reset();
-        body.fx.reset();
-        body.z.reset();
-        body.fz.reset();
+        clearIsoFrame(body);
         isoFrame(i, f, body, contentEnd);
         f.body = body;
     }

@@ -287,6 +287,28 @@ private slots:
         QCOMPARE(d->line, 1);
     }
 
+    // A column is a code point wherever the line's first non-ASCII character
+    // stands: in its first eight bytes, further on, in its last bytes, on
+    // lines shorter and longer than eight bytes.
+    void columnsAfterTheFirstNonAsciiCharacter() {
+        for (int k = 0; k <= 20; ++k) {
+            const std::string a(static_cast<std::size_t>(k), 'a');
+            // "(" a..a "ж) " is k + 4 code points: Q5 starts at column k + 5.
+            const ParseResult before = parse("(" + a + "\xD0\xB6) Q5\n");
+            const Diagnostic* d = find(before, Rule::UnknownAddress);
+            QVERIFY2(d, qPrintable(QString::number(k)));
+            QCOMPARE(d->column, k + 5);
+            QCOMPARE(d->endColumn, k + 6);
+            // The comment runs to the line's end, its last character the
+            // non-ASCII one: k + 5 code points in all.
+            const ParseResult last = parse("Q5 (" + a + "\xD0\xB6\n");
+            d = find(last, Rule::UnclosedComment);
+            QVERIFY2(d, qPrintable(QString::number(k)));
+            QCOMPARE(d->column, 4);
+            QCOMPARE(d->endColumn, k + 6);
+        }
+    }
+
     // --- Errors: each rule triggers, its near miss does not, and parsing goes on ------
     void syntaxRules_data() {
         QTest::addColumn<QByteArray>("bad");

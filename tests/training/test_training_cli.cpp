@@ -60,6 +60,10 @@ private slots:
         const CliResult task = runK528({"exercise", "show", "lathe-03-step", "--lang", "en"});
         QCOMPARE(task.exitCode, 0);
         QVERIFY2(task.out.contains("Cycle time at most 120 s"), qPrintable(task.out));
+        // The unit is the window's too: a Russian page said «не более 120 s».
+        const CliResult taskRu = runK528({"exercise", "show", "lathe-03-step", "--lang", "ru"});
+        QCOMPARE(taskRu.exitCode, 0);
+        QVERIFY2(taskRu.out.contains(QStringLiteral("Время цикла не более 120 с\n")), qPrintable(taskRu.out));
         QVERIFY(task.out.contains("Z-40"));
         const CliResult ref = runK528({"exercise", "show", "lathe-03-step", "--reference"});
         QCOMPARE(ref.exitCode, 0);
