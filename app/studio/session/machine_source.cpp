@@ -95,7 +95,7 @@ QStringList machineNames(QString* warning) {
 }
 
 QString machineTitle(const profile::MachineProfile& p) {
-    const std::string title = profile::titleText(p, !russianWindow());
+    const std::string title = profile::titleText(p, inWindowLanguage(false, true));
     return fromStd(title.empty() ? p.name : title);
 }
 
@@ -116,7 +116,7 @@ std::vector<TitledMachine> distinct(std::vector<TitledMachine> machines) {
 } // namespace
 
 std::vector<TitledMachine> titledMachines(QString* warning) {
-    const bool english = !russianWindow();
+    const bool english = inWindowLanguage(false, true);
     try {
         return distinct(ShopDatabase::at()->use([&](db::Database& d) {
             std::vector<TitledMachine> out;
