@@ -144,7 +144,7 @@ int cmdImport(std::span<const std::string> argv) {
         out(savedText(machine, r, lang));
         return ExitOk;
     } catch (const db::ValidationError& e) {
-        std::fprintf(stderr, "k528: %s\n", rejectionHead(e, lang).c_str());
+        std::fprintf(stderr, "k528: %s\n", e.head(lang).c_str());
         for (const auto& f : e.findings()) {
             int line = 0;
             if (format == "k528m")

@@ -170,7 +170,7 @@ int itemError(const std::string& text, Lang lang) {
 }
 
 void printRejection(const db::ValidationError& e, Lang lang, const std::string& where) {
-    std::fprintf(stderr, "k528: %s\n", rejectionHead(e, lang).c_str());
+    std::fprintf(stderr, "k528: %s\n", e.head(lang).c_str());
     for (const auto& f : e.findings())
         std::fprintf(stderr, "%s%s\n", where.c_str(), findingText(f, lang).c_str());
 }

@@ -116,12 +116,7 @@ std::string padLeft(const std::string& s, std::size_t width) {
 }
 
 std::string findingText(const profile::Finding& f, Lang lang) {
-    std::string s = f.severity == profile::Severity::Error ? "error" : "warning";
-    if (f.message)
-        s += " [M" + std::to_string(*f.message) + "]";
-    if (!f.subject.empty())
-        s += " " + f.subject;
-    return s + ": " + (lang == Lang::Ru ? f.textRu : f.textEn);
+    return profile::formatFinding(f, lang == Lang::Ru);
 }
 
 Json findingJson(const profile::Finding& f) {
@@ -157,33 +152,8 @@ int fail(const std::string& message, int code) {
     return code;
 }
 
-std::string rejectionHead(const db::ValidationError& e, Lang lang) {
-    if (!e.textId().empty())
-        return e.text(lang); // the catalog's, whole
-    const std::string what = e.what();
-    const std::string first = what.substr(0, what.find('\n'));
-    if (lang != Lang::Ru || (e.findings().empty() && e.problem().empty()))
-        return first;
-    // Core's first words are "machine NAME: …".
-    std::string text;
-    if (what.rfind("machine ", 0) == 0 && what.find(": ") != std::string::npos)
-        text = "станок " + what.substr(8, what.find(": ") - 8) + ": ";
-    if (!e.findings().empty())
-        return text + "отклонено, ничего не записано (ошибок: " + std::to_string(e.findings().size()) + "):";
-    return text + "отклонено, ничего не записано: " + profile::problemText(e.problem(), true);
-}
-
 int dbFail(const db::Error& e, Lang lang) {
-    if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty()) {
-        std::string text = rejectionHead(*v, lang);
-        for (const profile::Finding& f : v->findings())
-            text += "\n  " + findingText(f, lang);
-        return fail(text, ExitInputErrors);
-    }
-    if (const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e))
-        return fail(r->text(lang), ExitUsage);
-    if (const auto* v = dynamic_cast<const db::ValidationError*>(&e))
-        return fail(rejectionHead(*v, lang), ExitInputErrors);
+    // A rejection with its findings, a read-only refusal: core's text in `lang` (Error::text).
     return fail(e.text(lang), e.kind() == db::ErrorKind::Invalid ? ExitInputErrors : ExitUsage);
 }
 

@@ -55,10 +55,8 @@ Json changeJson(const profile::Change& c);
 
 int fail(const std::string& message, int code = ExitUsage);
 
-// Prints the error (a read-only database in `lang`); returns the exit code.
-// The first line of a rejected write in `lang` ("machine NAME: rejected,
-// nothing was written (N errors):" / «станок NAME: отклонено, …»).
-std::string rejectionHead(const db::ValidationError& e, Lang lang);
+// Prints the error in `lang` (a rejected write with its findings); returns
+// the exit code.
 int dbFail(const db::Error& e, Lang lang = Lang::Ru);
 
 bool parseLangOption(const Args& a, Lang& lang);

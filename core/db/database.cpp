@@ -62,7 +62,7 @@ void checkConstantsLock(Store& s, const MachineProfile* old, const MachineProfil
                           s.rolesOfUser(), "K528 Studio's rule: only a trainer locks and unlocks the constants");
     if (!locked.empty() && !constants.empty())
         throw ValidationError(
-            ErrorText{"constants-locked", {neu.name, locked, std::string(kConstantsLockKey), constants}}, {});
+            ErrorText{"constants-locked", {neu.name, locked, std::string(kConstantsLockKey), constants}});
 }
 
 // Makes `neu` the state of the machine `row` (nullopt: a new machine) whose
@@ -124,8 +124,6 @@ MachineProfile loadAt(Store& s, const MachineRow& row, int revision) {
     if (revision < 1 || revision > row.info.revision)
         throw Error(ErrorKind::NoRevision, ErrorText{"no-revision", {row.info.name, std::to_string(row.info.revision),
                                                                      std::to_string(revision)}});
-    const std::string where = "machine " + row.info.name + " revision " + std::to_string(revision) +
-                              " in " + s.path().string();
     // The machine, the revision and the file, then what is wrong.
     const auto corrupt = [&](std::string id, std::vector<std::string> args) {
         args.insert(args.begin(), {row.info.name, std::to_string(revision), s.path().string()});
@@ -140,8 +138,8 @@ MachineProfile loadAt(Store& s, const MachineRow& row, int revision) {
     const auto order = s.settingsOrder(row.id, revision);
     if (!order)
         throw corrupt("corrupt.revision-missing", {});
-    if (const std::string wrong = revision::orderSettings(p, *order); !wrong.empty())
-        throw Error(ErrorKind::Corrupt, where + ": " + wrong);
+    if (auto [id, args] = revision::orderSettings(p, *order); !id.empty())
+        throw corrupt(std::move(id), std::move(args));
     for (const ProgramRow& v : s.programsAt(row.id, revision)) {
         if (!v.text || sha256Hex(*v.text) != v.sha256.value_or(""))
             throw corrupt("corrupt.revision-program", {std::to_string(v.number), std::to_string(v.revision)});
@@ -302,7 +300,7 @@ namespace {
 // The item of `edit` its machine cannot hold (Edit::applyTo threw), as a
 // problem: a C-parameter that does not exist, a simulation key or value that
 // is not one.
-profile::Problem editProblem(const std::string& machine, const Edit& edit) {
+profile::Problem editProblem(const Edit& edit) {
     profile::Problem item;
     for (const auto& [n, v] : edit.c)
         if (!catalog::findCParam(n)) {
@@ -320,11 +318,15 @@ profile::Problem editProblem(const std::string& machine, const Edit& edit) {
             item.within.push_back(std::move(e2));
         }
     }
-    if (item.empty())
-        return {};
-    profile::Problem p = profile::problem("machine.item", {machine});
-    p.within.push_back(std::move(item));
-    return p;
+    return item;
+}
+
+// The refusal of an edit the machine cannot hold: the item's problem, or the
+// library's words when no item says it (an error without an id).
+[[noreturn]] void throwEditRejection(const std::string& machine, const Edit& edit, const std::exception& e) {
+    if (profile::Problem item = editProblem(edit); !item.empty())
+        throw ValidationError(machine, std::move(item));
+    throw Error(ErrorKind::Invalid, "machine " + machine + ": " + e.what(), e.what(), machine);
 }
 
 } // namespace
@@ -343,9 +345,9 @@ SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOpt
         try {
             edit.applyTo(neu);
         } catch (const profile::SettingError& e) {
-            throw ValidationError("machine " + row.info.name + ": " + e.what(), {}, editProblem(row.info.name, edit));
+            throwEditRejection(row.info.name, edit, e);
         } catch (const std::out_of_range& e) {
-            throw ValidationError("machine " + row.info.name + ": " + e.what(), {}, editProblem(row.info.name, edit));
+            throwEditRejection(row.info.name, edit, e);
         }
         if (options.summary.empty())
             options.summary = noteText({"set", {edit.describe()}});

@@ -72,6 +72,51 @@ Error::Error(ErrorKind kind, ErrorText text, std::string detail)
     : std::runtime_error(renderText(text, false)), kind_(kind), detail_(std::move(detail)),
       text_(std::move(text)) {}
 
+Error::Error(const std::string& what, ErrorKind kind, ErrorText text)
+    : std::runtime_error(what), kind_(kind), text_(std::move(text)) {}
+
+namespace {
+
+ErrorText rejectionText(const std::string& machine, std::size_t errors) {
+    return ErrorText{errors == 1 ? "rejected.error" : "rejected.errors", {machine, std::to_string(errors)}};
+}
+
+std::string rejectionLines(const ErrorText& head, const std::vector<profile::Finding>& findings, bool russian) {
+    std::string s = renderText(head, russian);
+    for (const profile::Finding& f : findings)
+        s += "\n  " + profile::formatFinding(f, russian);
+    return s;
+}
+
+std::string problemRejection(const ErrorText& head, const profile::Problem& problem, bool russian) {
+    return renderText(head, russian) + " " + profile::problemText(problem, russian);
+}
+
+} // namespace
+
+ValidationError::ValidationError(const std::string& machine, std::vector<profile::Finding> findings)
+    : Error(rejectionLines(rejectionText(machine, findings.size()), findings, false), ErrorKind::Invalid,
+            rejectionText(machine, findings.size())),
+      findings_(std::move(findings)) {}
+
+ValidationError::ValidationError(const std::string& machine, profile::Problem problem)
+    : Error(problemRejection(ErrorText{"rejected.problem", {machine}}, problem, false), ErrorKind::Invalid,
+            ErrorText{"rejected.problem", {machine}}),
+      problem_(std::move(problem)) {}
+
+std::string ValidationError::head(Lang lang) const {
+    const bool russian = lang == Lang::Ru;
+    if (!problem_.empty())
+        return problemRejection(catalogText(), problem_, russian);
+    return renderText(catalogText(), russian);
+}
+
+std::string ValidationError::text(Lang lang) const {
+    if (!problem_.empty() || findings_.empty())
+        return head(lang);
+    return rejectionLines(catalogText(), findings_, lang == Lang::Ru);
+}
+
 namespace {
 
 // By ErrorKind: what an error without a text of the catalog is, in Russian.

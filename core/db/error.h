@@ -68,6 +68,9 @@ public:
     }
     // An error said by the catalog: what() is its English.
     Error(ErrorKind kind, ErrorText text, std::string detail = {});
+    // The same with what() given (the English of a text longer than the
+    // catalog's: a rejection with its findings).
+    Error(const std::string& what, ErrorKind kind, ErrorText text);
     ErrorKind kind() const { return kind_; }
     // The catalog's id and arguments ("" when the message has no id).
     const std::string& textId() const { return text_.id; }
@@ -152,17 +155,25 @@ private:
 // numbers). Nothing was written.
 class ValidationError : public Error {
 public:
-    ValidationError(const std::string& message, std::vector<profile::Finding> findings,
-                    profile::Problem problem = {})
-        : Error(ErrorKind::Invalid, message), findings_(std::move(findings)), problem_(std::move(problem)) {}
-    ValidationError(ErrorText text, std::vector<profile::Finding> findings, profile::Problem problem = {})
-        : Error(ErrorKind::Invalid, std::move(text)), findings_(std::move(findings)), problem_(std::move(problem)) {}
+    // The machine's findings of severity Error rejected the write: "machine
+    // NAME: rejected, nothing was written (N errors):" and a line a finding.
+    ValidationError(const std::string& machine, std::vector<profile::Finding> findings);
+    // An item the machine cannot even hold (a C-parameter that does not
+    // exist, a simulation key or value that is not one): "machine NAME:
+    // rejected, nothing was written: " and the problem.
+    ValidationError(const std::string& machine, profile::Problem problem);
+    // A rejection the catalog says whole (its id and arguments).
+    explicit ValidationError(ErrorText text) : Error(ErrorKind::Invalid, std::move(text)) {}
     // The errors that caused the rejection (severity Error).
     const std::vector<profile::Finding>& findings() const { return findings_; }
-    // A rejection without findings (an item the edit cannot even hold): what
-    // is wrong, as core's problem ids say it ("machine.item": the machine and
-    // the item's problem); empty when the findings say it.
+    // A rejection without findings: what is wrong, as core's problem ids say
+    // it; empty when the findings or the catalog's text say it.
     const profile::Problem& problem() const { return problem_; }
+    // The first line in `lang`: the catalog's sentence, with the problem when
+    // there is one (the command line puts its own finding lines after it).
+    std::string head(Lang lang) const;
+    // head() and a line a finding ("  error [M37] C017,C069: …").
+    std::string text(Lang lang) const override;
 
 private:
     std::vector<profile::Finding> findings_;

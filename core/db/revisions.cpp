@@ -47,13 +47,6 @@ bool itemFinding(const profile::Finding& f, const MachineProfile& p) {
     return false;
 }
 
-std::string formatFindings(const std::vector<profile::Finding>& fs) {
-    std::string s;
-    for (const auto& f : fs)
-        s += "\n  " + profile::formatFinding(f);
-    return s;
-}
-
 } // namespace
 
 std::string plcKey(cat::PlcGroup g, int k) {
@@ -118,11 +111,7 @@ std::vector<profile::Finding> checkWrite(const MachineProfile* old, const Machin
             rejected.push_back(f);
     }
     if (!rejected.empty())
-        throw ValidationError("machine " + neu.name + ": rejected, nothing was written (" +
-                                  std::to_string(rejected.size()) +
-                                  (rejected.size() == 1 ? " error" : " errors") +
-                                  "):" + formatFindings(rejected),
-                              rejected);
+        throw ValidationError(neu.name, std::move(rejected));
     return found;
 }
 
@@ -227,7 +216,7 @@ bool applyRecorded(MachineProfile& p, DiffSection section, const std::string& ke
     return false;
 }
 
-std::string orderSettings(MachineProfile& p, const std::string& order) {
+std::pair<std::string, std::vector<std::string>> orderSettings(MachineProfile& p, const std::string& order) {
     profile::Settings sorted;
     std::size_t pos = 0;
     while (pos < order.size()) {
@@ -237,12 +226,12 @@ std::string orderSettings(MachineProfile& p, const std::string& order) {
         const std::string key = order.substr(pos, end - pos);
         const auto v = p.simulation.find(key);
         if (!v)
-            return "simulation key " + key + " of the stored order has no value";
+            return {"corrupt.settings-order-key", {key}};
         sorted.set(key, *v);
         pos = end + 1;
     }
     if (sorted.size() != p.simulation.size())
-        return "the stored order of the simulation settings does not list every key";
+        return {"corrupt.settings-order-incomplete", {}};
     p.simulation = std::move(sorted);
     return {};
 }

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace k528::db::revision {
@@ -47,7 +48,10 @@ std::vector<profile::Change> computeChanges(const profile::MachineProfile* old,
 bool applyRecorded(profile::MachineProfile& p, profile::DiffSection section, const std::string& key,
                    const std::optional<std::string>& after);
 // Puts the simulation keys of `p` in the recorded `order` ("\n" between
-// keys); "" or what is wrong.
-std::string orderSettings(profile::MachineProfile& p, const std::string& order);
+// keys); "" or what is wrong: an id of the database's catalog
+// ("corrupt.settings-order-key" with the key as its argument, or
+// "corrupt.settings-order-incomplete").
+std::pair<std::string, std::vector<std::string>> orderSettings(profile::MachineProfile& p,
+                                                               const std::string& order);
 
 } // namespace k528::db::revision

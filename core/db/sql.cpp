@@ -27,8 +27,8 @@ std::int64_t Connection::queryInt(std::string_view text) {
     return v;
 }
 
-IntegerPairs::IntegerPairs(std::string packed, std::string what)
-    : packed_(std::move(packed)), what_(std::move(what)) {}
+IntegerPairs::IntegerPairs(std::string packed, std::string idStem, std::vector<std::string> args)
+    : packed_(std::move(packed)), idStem_(std::move(idStem)), args_(std::move(args)) {}
 
 Query& IntegerPairs::bind(int, std::int64_t) {
     throw internalError("packed rows take no parameters");
@@ -48,8 +48,11 @@ std::int64_t IntegerPairs::next() {
     std::int64_t v = 0;
     const auto [stop, ec] = std::from_chars(begin, end, v);
     if (ec != std::errc() || (stop != end && *stop != ' '))
-        throw Error(ErrorKind::Corrupt, what_ + ": \"" + packed_.substr(at_, 40) +
-                                            "\" where integer pairs belong");
+    {
+        std::vector<std::string> args = args_;
+        args.push_back(packed_.substr(at_, 40));
+        throw Error(ErrorKind::Corrupt, ErrorText{idStem_ + ".pairs", std::move(args)});
+    }
     at_ = static_cast<std::size_t>(stop - packed_.data()) + (stop != end ? 1 : 0);
     return v;
 }
@@ -59,7 +62,7 @@ bool IntegerPairs::step() {
         return false;
     first_ = next();
     if (at_ >= packed_.size())
-        throw Error(ErrorKind::Corrupt, what_ + ": a number without its value");
+        throw Error(ErrorKind::Corrupt, ErrorText{idStem_ + ".odd", args_});
     second_ = next();
     return true;
 }

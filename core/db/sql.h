@@ -79,10 +79,12 @@ public:
 // The rows of a table of two integer columns packed by the server into one
 // text, "n v n v …" (string_agg): one row of the result instead of one a
 // pair. Read with step() as a query of its own; it binds nothing. A text
-// that is not such pairs is Corrupt, named by `what`.
+// that is not such pairs is Corrupt, said by the database's catalog:
+// `idStem` + ".pairs" (its `args` and the text found) or ".odd" (a number
+// without its value, its `args`).
 class IntegerPairs final : public Query {
 public:
-    IntegerPairs(std::string packed, std::string what);
+    IntegerPairs(std::string packed, std::string idStem, std::vector<std::string> args);
     Query& bind(int i, std::int64_t v) override;
     Query& bind(int i, std::string_view v) override;
     Query& bindNull(int i) override;
@@ -97,7 +99,8 @@ public:
 
 private:
     std::int64_t next();
-    std::string packed_, what_;
+    std::string packed_, idStem_;
+    std::vector<std::string> args_;
     std::size_t at_ = 0;
     std::int64_t first_ = 0, second_ = 0;
 };

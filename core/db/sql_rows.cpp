@@ -15,8 +15,8 @@ using profile::Change;
 using profile::DiffSection;
 using profile::MachineProfile;
 
-std::string SqlStore::where(const MachineRow& row) const {
-    return "machine " + row.info.name + " in " + path_.string();
+std::vector<std::string> SqlStore::where(const MachineRow& row) const {
+    return {row.info.name, path_.string()};
 }
 
 std::vector<MachineInfo> SqlStore::machines() {
@@ -136,8 +136,8 @@ std::optional<LoadedMachine> SqlStore::loadNamed(std::string_view name) {
     for (std::size_t i = 0; i < 2; ++i) {
         sql::PgPart& packed = *parts[i];
         std::string text = packed.step() && !packed.isNull(0) ? packed.text(0) : std::string();
-        queries[i] = &pairs[i].emplace(std::move(text),
-                                       where(row) + (i == 0 ? ": C values" : ": R presets"));
+        queries[i] = &pairs[i].emplace(std::move(text), i == 0 ? "corrupt.c-values" : "corrupt.r-presets",
+                                       where(row));
     }
     MachineProfile p = readCurrent(row, queries);
     q.reset(); // the rows (the programs' texts) are not kept
@@ -148,7 +148,12 @@ MachineProfile SqlStore::readCurrent(const MachineRow& row, std::span<sql::Query
     MachineProfile p;
     p.name = row.info.name;
     p.title = row.info.title;
-    const std::string at = where(row);
+    // The machine and the file, then what is wrong.
+    const auto corrupt = [&](std::string id, std::vector<std::string> args) {
+        std::vector<std::string> all = where(row);
+        all.insert(all.end(), args.begin(), args.end());
+        return Error(ErrorKind::Corrupt, ErrorText{std::move(id), std::move(all)});
+    };
     // Each row of table i (of kCurrentById).
     const auto rows = [&](std::size_t i, const auto& take) {
         sql::Query& q = *queries[i];
@@ -160,14 +165,12 @@ MachineProfile SqlStore::readCurrent(const MachineRow& row, std::span<sql::Query
     rows(0, [&](const sql::Query& q) {
         const int n = q.i32(0);
         if (n < 1 || n > cat::kCParamCount)
-            throw Error(ErrorKind::Corrupt,
-                        at + ": C-parameter number " + std::to_string(n) + " is not 1..152");
+            throw corrupt("corrupt.c-number", {std::to_string(n)});
         p.c[static_cast<std::size_t>(n)] = q.i64(1);
         ++count;
     });
     if (count != cat::kCParamCount)
-        throw Error(ErrorKind::Corrupt,
-                    at + ": " + std::to_string(count) + " of the 152 C-parameter values are stored");
+        throw corrupt("corrupt.c-count", {std::to_string(count)});
     rows(1,
          [&](const sql::Query& q) { p.r[q.i32(0)] = q.i64(1); });
     // The programs' texts against their SHA-256: here, or by the backend
@@ -177,11 +180,7 @@ MachineProfile SqlStore::readCurrent(const MachineRow& row, std::span<sql::Query
              std::string text = q.text(1);
              const bool checked = q.columns() > 4 && !q.isNull(4);
              if (checked ? q.text(4) != "true" : sha256Hex(text) != q.text(2))
-                 throw Error(ErrorKind::Corrupt,
-                             at + ": program L" + std::to_string(q.i32(0)) + " of revision " +
-                                 std::to_string(q.i32(3)) +
-                                 " does not match its SHA-256 checksum (the text was altered "
-                                 "outside K528 Studio)");
+                 throw corrupt("corrupt.current-program", {std::to_string(q.i32(0)), std::to_string(q.i32(3))});
              p.programs[q.i32(0)] = std::move(text);
          });
     rows(3,
@@ -190,15 +189,15 @@ MachineProfile SqlStore::readCurrent(const MachineRow& row, std::span<sql::Query
         const std::string g = q.text(0);
         const auto group = revision::plcGroupOf(g.empty() ? '?' : g[0]);
         if (!group)
-            throw Error(ErrorKind::Corrupt, at + ": unknown PLC message group " + g);
+            throw corrupt("corrupt.plc-group", {g});
         p.plcTexts(*group)[q.i32(1)] = q.text(2);
     });
     rows(5,
          [&](const sql::Query& q) {
              try {
                  p.simulation.set(q.text(0), q.text(1));
-             } catch (const profile::SettingError& e) {
-                 throw Error(ErrorKind::Corrupt, at + ": simulation setting: " + e.what());
+             } catch (const profile::SettingError&) {
+                 throw corrupt("corrupt.setting", {q.text(0), q.text(1)});
              }
          });
     return p;

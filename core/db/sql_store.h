@@ -77,8 +77,9 @@ protected:
     // Whether each item's whole history is kept in one row of item_history
     // too (schema version 9).
     bool itemHistoryKept() const { return report_.version >= 9; }
-    // "machine NAME in PATH", for messages about stored rows.
-    std::string where(const MachineRow& row) const;
+    // The machine's name and the database's path: the first arguments of
+    // the catalog's texts about stored rows ("machine %1 in %2: …").
+    std::vector<std::string> where(const MachineRow& row) const;
     // Runs the schema's steps above `from` up to the last of `migrations`
     // (inside the caller's transaction); a failing step is Error(Sql)
     // "migration to schema version N failed (…); nothing was changed".

@@ -73,18 +73,18 @@ Problem within(Problem outer, Problem inner) {
     return outer;
 }
 
+// The findings, each said by core's catalog of problems (its "check.*" ids).
 struct Collector {
     std::vector<Finding> out;
-    void add(Severity s, std::vector<int> cs, std::optional<int> msg, std::string subject,
-             std::string ru, std::string en) {
+    void add(Severity s, std::vector<int> cs, std::optional<int> msg, std::string subject, Problem p) {
         std::sort(cs.begin(), cs.end());
-        out.push_back(
-            Finding{s, std::move(cs), msg, std::move(subject), std::move(ru), std::move(en)});
+        std::string ru = problemText(p, true), en = problemText(p, false);
+        out.push_back(Finding{s, std::move(cs), msg, std::move(subject), std::move(p), std::move(ru), std::move(en)});
     }
-    void addC(Severity s, std::vector<int> cs, std::optional<int> msg, std::string ru,
-              std::string en) {
+    void addC(Severity s, std::vector<int> cs, std::optional<int> msg, std::string id,
+              std::vector<std::string> args = {}) {
         std::string subject = keys(cs);
-        add(s, std::move(cs), msg, std::move(subject), std::move(ru), std::move(en));
+        add(s, std::move(cs), msg, std::move(subject), problem(std::move(id), std::move(args)));
     }
 };
 
@@ -116,77 +116,48 @@ void checkAxis(Collector& col, std::span<const std::int64_t> c, cat::Axis axis) 
     const auto P = [&](int x) { return cat::axisParam(x, axis); };
     const auto V = [&](int x) { return c[static_cast<std::size_t>(P(x))]; };
     const std::string ax(cat::axisName(axis));
-    const std::string osi = "Ось " + ax + ": ";
-    const std::string axisEn = "Axis " + ax + ": ";
 
     // One display discrete (message 15: the manual has no message of its own).
     const int flags = static_cast<int>((V(cc::kDiscrete0001) == 1) + (V(cc::kDiscrete001) == 1) +
                                        (V(cc::kDiscrete01) == 1));
     if (flags != 1)
-        col.addC(Severity::Error, {P(4), P(5), P(6)}, 15,
-                 osi + "должна быть задана ровно одна дискрета (" + keys({P(4), P(5), P(6)}) +
-                     "), задано " + std::to_string(flags),
-                 axisEn + "exactly one display discrete must be set (" + keys({P(4), P(5), P(6)}) +
-                     "), " + std::to_string(flags) + " set");
+        col.addC(Severity::Error, {P(4), P(5), P(6)}, 15, "check.axis-discrete",
+                 {ax, keys({P(4), P(5), P(6)}), std::to_string(flags)});
 
     // L/N: the range check reports 0 or > 32767 with 13/29; a ratio above 1
     // means one encoder pulse is more than one discrete.
     const std::int64_t L = V(cc::kEncoderL), N = V(cc::kEncoderN);
     if (L >= 1 && N >= 1 && L <= 32767 && N <= 32767 && L > N)
-        col.addC(Severity::Warning, {P(19), P(20)}, std::nullopt,
-                 osi + "L/N = " + num(L) + "/" + num(N) +
-                     " больше 1: один импульс ДОС больше дискреты, ось не позиционируется точнее " +
-                     "импульса",
-                 axisEn + "L/N = " + num(L) + "/" + num(N) +
-                     " is above 1: one encoder pulse is more than a discrete, the axis cannot "
-                     "position " +
-                     "finer than a pulse");
+        col.addC(Severity::Warning, {P(19), P(20)}, std::nullopt, "check.axis-ratio", {ax, num(L), num(N)});
 
     // ПРЕДЕЛ ЦАП against МАКС.ЦАП: 15-20 % above (table Е.1, parameter 28).
     const std::int64_t limit = V(cc::kDacLimit), dmax = V(cc::kDacMax);
     const int alarm = axis == cat::Axis::X ? 6 : 22;
     if (dmax == 0) {
-        col.addC(Severity::Warning, {P(29)}, std::nullopt,
-                 osi + "МАКС.ЦАП = 0: привод не получит напряжения",
-                 axisEn + "DAC MAX = 0: the drive gets no voltage");
+        col.addC(Severity::Warning, {P(29)}, std::nullopt, "check.dac-max-zero", {ax});
     } else if (limit < dmax) {
-        col.addC(Severity::Error, {P(28), P(29)}, alarm,
-                 osi + "ПРЕДЕЛ ЦАП " + num(limit) + " меньше МАКС.ЦАП " + num(dmax) +
-                     ": на максимальной скорости будет сообщение " + std::to_string(alarm),
-                 axisEn + "DAC LIMIT " + num(limit) + " is below DAC MAX " + num(dmax) +
-                     ": message " + std::to_string(alarm) + " at full speed");
+        col.addC(Severity::Error, {P(28), P(29)}, alarm, "check.dac-limit-below",
+                 {ax, num(limit), num(dmax), std::to_string(alarm)});
     } else {
         const auto lo = units::roundHalfAway(1.15 * static_cast<double>(dmax));
         const auto hi = units::roundHalfAway(1.20 * static_cast<double>(dmax));
         if (limit < lo || limit > hi)
-            col.addC(Severity::Warning, {P(28), P(29)}, std::nullopt,
-                     osi + "ПРЕДЕЛ ЦАП " + num(limit) + " не на 15-20 % выше МАКС.ЦАП " +
-                         num(dmax) + " (рекомендуется " + num(lo) + "..." + num(hi) + ")",
-                     axisEn + "DAC LIMIT " + num(limit) + " is not 15-20 % above DAC MAX " +
-                         num(dmax) + " (recommended " + num(lo) + "..." + num(hi) + ")");
+            col.addC(Severity::Warning, {P(28), P(29)}, std::nullopt, "check.dac-limit-margin",
+                     {ax, num(limit), num(dmax), num(lo), num(hi)});
     }
 
     // Motion constants a working axis needs.
     if (V(cc::kAccel1) == 0)
-        col.addC(Severity::Warning, {P(22)}, std::nullopt, osi + "УСКОРЕНИЕ 1 = 0",
-                 axisEn + "ACCELERATION 1 = 0");
+        col.addC(Severity::Warning, {P(22)}, std::nullopt, "check.accel-zero", {ax});
     for (int x : {cc::kFeedNormal, cc::kFeedAutoRapid})
         if (V(x) == 0)
-            col.addC(Severity::Warning, {P(x)}, std::nullopt,
-                     osi + std::string(cat::cParam(P(x)).name) + " = 0: ось не будет двигаться",
-                     axisEn + std::string(cat::cParam(P(x)).nameEn) +
-                         " = 0: the axis will not move");
+            col.addC(Severity::Warning, {P(x)}, std::nullopt, "check.feed-zero",
+                     {ax, std::string(cat::cParam(P(x)).name), std::string(cat::cParam(P(x)).nameEn)});
     if (V(cc::kAutoWithoutHoming) == 0) {
         if (V(cc::kFeedHomeStart) == 0 || V(cc::kFeedHomeCreep) == 0)
-            col.addC(
-                Severity::Warning, {P(43), P(44)}, std::nullopt,
-                osi +
-                    "нулевая скорость привязки к базовой точке, а пуск программы требует привязки",
-                axisEn + "a homing speed is zero, yet programs need the axis homed");
+            col.addC(Severity::Warning, {P(43), P(44)}, std::nullopt, "check.homing-speed-zero", {ax});
         else if (V(cc::kFeedHomeCreep) > V(cc::kFeedHomeStart))
-            col.addC(Severity::Warning, {P(43), P(44)}, std::nullopt,
-                     osi + "F ОТКЛ.БТ больше F СТАРТ БТ",
-                     axisEn + "F HOME CREEP is above F HOME START");
+            col.addC(Severity::Warning, {P(43), P(44)}, std::nullopt, "check.homing-creep", {ax});
     }
 
     // Software limits.
@@ -194,15 +165,10 @@ void checkAxis(Collector& col, std::span<const std::int64_t> c, cat::Axis axis) 
         const std::int64_t lo = V(cc::kLimitMinus), hi = V(cc::kLimitPlus),
                            home = V(cc::kHomeValue);
         if (lo >= hi)
-            col.addC(Severity::Error, {P(46), P(47)}, std::nullopt,
-                     osi + "-ОГРАНИЧЕН " + num(lo) + " не меньше +ОГРАНИЧЕН " + num(hi),
-                     axisEn + "-LIMIT " + num(lo) + " is not below +LIMIT " + num(hi));
+            col.addC(Severity::Error, {P(46), P(47)}, std::nullopt, "check.limits-order", {ax, num(lo), num(hi)});
         else if (home < lo || home > hi)
-            col.addC(Severity::Warning, {P(45), P(46), P(47)}, std::nullopt,
-                     osi + "ЗНАЧЕНИЕ БТ " + num(home) + " вне программных конечников " + num(lo) +
-                         "..." + num(hi),
-                     axisEn + "HOME VALUE " + num(home) + " is outside the soft limits " + num(lo) +
-                         "..." + num(hi));
+            col.addC(Severity::Warning, {P(45), P(46), P(47)}, std::nullopt, "check.home-outside",
+                     {ax, num(home), num(lo), num(hi)});
     }
 
     // Fast inputs of the axis' module: one function per input.
@@ -213,9 +179,8 @@ void checkAxis(Collector& col, std::span<const std::int64_t> c, cat::Axis axis) 
             continue;
         for (int j = i + 1; j < 8; ++j)
             if (c[static_cast<std::size_t>(first + j)] == fi)
-                col.addC(Severity::Warning, {first + i, first + j}, std::nullopt,
-                         osi + "функция " + num(fi) + " назначена двум быстрым входам",
-                         axisEn + "function " + num(fi) + " is assigned to two fast inputs");
+                col.addC(Severity::Warning, {first + i, first + j}, std::nullopt, "check.fast-input-twice",
+                         {ax, num(fi)});
     }
 }
 
@@ -225,8 +190,7 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
                                   const std::map<int, std::string>* programs) {
     Collector col;
     if (c.size() < static_cast<std::size_t>(cat::kCParamCount + 1)) {
-        col.add(Severity::Error, {}, 15, "C", "Неполный набор С-параметров",
-                "Incomplete set of C-parameters");
+        col.add(Severity::Error, {}, 15, "C", problem("check.incomplete"));
         return col.out;
     }
     const auto V = [&](int n) { return c[static_cast<std::size_t>(n)]; };
@@ -236,10 +200,8 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
         const std::int64_t v = V(d.number);
         if (d.inRange(v))
             continue;
-        col.addC(
-            Severity::Error, {d.number}, rangeMessage(d.number),
-            d.key() + " «" + std::string(d.name) + "» = " + num(v) + " вне диапазона " + range(d),
-            d.key() + " " + std::string(d.nameEn) + " = " + num(v) + " is outside " + range(d));
+        col.addC(Severity::Error, {d.number}, rangeMessage(d.number), "check.range",
+                 {d.key(), std::string(d.name), num(v), range(d), std::string(d.nameEn)});
     }
 
     const bool px = V(cc::kAxisPresent) == 1;
@@ -249,8 +211,7 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
     if (pz)
         checkAxis(col, c, cat::Axis::Z);
     if (!px && !pz)
-        col.addC(Severity::Warning, {1, 53}, std::nullopt, "Нет ни одной оси (НАЛИЧ.ОСИ = 0)",
-                 "No axis is present (AXIS PRESENT = 0)");
+        col.addC(Severity::Warning, {1, 53}, std::nullopt, "check.no-axis");
 
     // Channels of the two СР34.23 modules: encoders of present axes each need
     // their own channel (37); DACs of present axes their own DAC channel
@@ -261,31 +222,22 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
     const int dacX = cc::kDacChannel, dacZ = cat::axisParam(cc::kDacChannel, cat::Axis::Z);
     const auto valid14 = [&](int n) { return V(n) >= 1 && V(n) <= 4; };
     if (px && pz && valid14(encX) && V(encX) == V(encZ))
-        col.addC(Severity::Error, {encX, encZ}, 37,
-                 "Оба ДОС подключены к одному каналу " + num(V(encX)) + " (" + named(encX) + ", " +
-                     named(encZ) + ")",
-                 "Both encoders are on channel " + num(V(encX)) + " (" + keys({encX, encZ}) + ")");
+        col.addC(Severity::Error, {encX, encZ}, 37, "check.encoders-channel",
+                 {num(V(encX)), named(encX), named(encZ), keys({encX, encZ})});
     for (int wheel : {cc::kWheel1Channel, cc::kWheel2Channel}) {
         if (!valid14(wheel))
             continue;
         for (auto [present, enc] : {std::pair{px, encX}, std::pair{pz, encZ}})
             if (present && V(enc) == V(wheel))
-                col.addC(Severity::Error, {enc, wheel}, 39,
-                         "Маховик и ДОС подключены к одному каналу " + num(V(wheel)) + " (" +
-                             named(wheel) + ", " + named(enc) + ")",
-                         "A handwheel and an encoder are on channel " + num(V(wheel)) + " (" +
-                             keys({wheel, enc}) + ")");
+                col.addC(Severity::Error, {enc, wheel}, 39, "check.wheel-encoder-channel",
+                         {num(V(wheel)), named(wheel), named(enc), keys({wheel, enc})});
     }
     if (px && pz && valid14(dacX) && V(dacX) == V(dacZ))
-        col.addC(Severity::Error, {dacX, dacZ}, 38,
-                 "Оба привода подключены к одному каналу ЦАП " + num(V(dacX)) + " (" + named(dacX) +
-                     ", " + named(dacZ) + ")",
-                 "Both drives are on DAC channel " + num(V(dacX)) + " (" + keys({dacX, dacZ}) +
-                     ")");
+        col.addC(Severity::Error, {dacX, dacZ}, 38, "check.drives-channel",
+                 {num(V(dacX)), named(dacX), named(dacZ), keys({dacX, dacZ})});
     if (valid14(cc::kWheel1Channel) && V(cc::kWheel1Channel) == V(cc::kWheel2Channel))
-        col.addC(Severity::Error, {cc::kWheel1Channel, cc::kWheel2Channel}, 39,
-                 "Оба маховика подключены к одному каналу " + num(V(cc::kWheel1Channel)),
-                 "Both handwheels are on channel " + num(V(cc::kWheel1Channel)));
+        col.addC(Severity::Error, {cc::kWheel1Channel, cc::kWheel2Channel}, 39, "check.wheels-channel",
+                 {num(V(cc::kWheel1Channel))});
 
     // Manual cycles started by the PLC run programs of the profile (45).
     if (programs) {
@@ -293,11 +245,7 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
             const int n = cc::kManualCycle1 + k;
             const auto prog = V(n);
             if (prog >= 1 && prog <= 99 && !programs->contains(static_cast<int>(prog)))
-                col.addC(Severity::Warning, {n}, 45,
-                         "Ручной цикл " + std::to_string(k + 1) + ": программы L" + num(prog) +
-                             " нет",
-                         "Manual cycle " + std::to_string(k + 1) + ": program L" + num(prog) +
-                             " does not exist");
+                col.addC(Severity::Warning, {n}, 45, "check.manual-cycle", {std::to_string(k + 1), num(prog)});
         }
     }
     return col.out;
@@ -447,10 +395,10 @@ std::string checkSetting(std::string_view key, std::string_view value) { return 
 std::vector<Finding> validate(const MachineProfile& p) {
     std::vector<Finding> out = checkCParams(p.cValues(), &p.programs);
     Collector col;
-    // An item's problem in both languages (core's catalog of problems).
-    const auto item = [&](const Problem& problem, std::string subject) {
+    // An item's problem (core's catalog of problems).
+    const auto item = [&](Problem problem, std::string subject) {
         if (!problem.empty())
-            col.add(Severity::Error, {}, std::nullopt, std::move(subject), problemText(problem, true), problem.text());
+            col.add(Severity::Error, {}, std::nullopt, std::move(subject), std::move(problem));
     };
     for (const auto& [n, v] : p.r)
         item(rPresetProblem(n, v), "R" + std::to_string(n));
@@ -466,8 +414,7 @@ std::vector<Finding> validate(const MachineProfile& p) {
         item(settingProblem(key, value), "simulation " + key);
         if (Settings::keyError(key).empty() && !findSimulationKey(key))
             col.add(Severity::Warning, {}, std::nullopt, "simulation " + key,
-                    "Параметр моделирования " + key + " не из реестра (опечатка?)",
-                    "Simulation setting " + key + " is not in the registry (a typo?)");
+                    problem("check.setting-unknown", {key}));
     }
     item(nameProblem(p.name), "name");
     item(titleProblem(p.title), "title");
@@ -480,13 +427,13 @@ bool hasErrors(const std::vector<Finding>& findings) {
                        [](const Finding& f) { return f.severity == Severity::Error; });
 }
 
-std::string formatFinding(const Finding& f) {
+std::string formatFinding(const Finding& f, bool russian) {
     std::string s = f.severity == Severity::Error ? "error" : "warning";
     if (f.message)
         s += " [M" + std::to_string(*f.message) + "]";
     if (!f.subject.empty())
         s += " " + f.subject;
-    return s + ": " + f.textEn;
+    return s + ": " + (russian ? f.textRu : f.textEn);
 }
 
 } // namespace k528::profile

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "catalog/messages.h"
+#include "profile/problem.h"
 #include "profile/profile.h"
 
 #include <cstdint>
@@ -33,6 +34,11 @@ struct Finding {
     std::optional<int> message; // appendix М number the controller reports, if any
     std::string
         subject; // "C022", "C017,C069", "R204", "L11", "#3", "A01", "simulation x.kv", "name"
+    // What is wrong, as an id of core's problems and its arguments (the
+    // desktop says it by the id in its window's language) ...
+    Problem problem;
+    // ... and as the catalog says it in Russian and English (the command
+    // line, --json, the database's rejection).
     std::string textRu;
     std::string textEn;
 };
@@ -48,8 +54,10 @@ std::vector<Finding> checkCParams(std::span<const std::int64_t> c,
                                   const std::map<int, std::string>* programs = nullptr);
 
 bool hasErrors(const std::vector<Finding>& findings);
-// "error [M37] C017,C069: ..." (English) — one line per finding.
-std::string formatFinding(const Finding& f);
+// "error [M37] C017,C069: ..." — one line per finding, its text in Russian
+// or English (the label "error"/"warning" stays English in both, as the
+// command line's findings do: docs/database.md).
+std::string formatFinding(const Finding& f, bool russian = false);
 
 // Item checks: "" if fine, otherwise what is wrong.
 std::string checkName(std::string_view name);

@@ -648,6 +648,74 @@ private slots:
         QVERIFY(d.loadMachine("training-lathe") == profile::builtin("training-lathe"));
     }
 
+    // A write the machine's rules reject is said by the database's catalog
+    // in either language, the machine named once; the findings follow a line
+    // each, said by their own ids.
+    void rejectionsAreSaidByTheCatalog() {
+        QTemporaryDir dir;
+        db::Database d = db::Database::open(testLocation(dir, "rejected.db"), testOptions());
+        try {
+            d.applyEdit("grinder-205", editC(69, 1), by("x")); // both encoders on channel 1
+            QFAIL("a cross-check error was written");
+        } catch (const db::ValidationError& v) {
+            QCOMPARE(v.textId(), std::string("rejected.error"));
+            QCOMPARE(v.head(db::Lang::En), std::string("machine grinder-205: rejected, nothing was written (1 error):"));
+            QCOMPARE(v.head(db::Lang::Ru), std::string("станок grinder-205: отклонено, ничего не записано (ошибок: 1):"));
+            QCOMPARE(v.findings().at(0).problem.id, std::string("check.encoders-channel"));
+            const std::string ru = v.text(db::Lang::Ru);
+            QVERIFY2(ru.find("\n  error [M37] C017,C069: Оба ДОС подключены к одному каналу 1") != std::string::npos,
+                     ru.c_str());
+            QVERIFY2(!hasEnglishSentence(QString::fromStdString(ru), false), ru.c_str());
+            QCOMPARE(std::string(v.what()), v.text(db::Lang::En));
+        }
+        db::Edit e;
+        e.simulation["Tilte"] = "oops"; // not a key at all
+        try {
+            d.applyEdit("training-lathe", e, by("x"));
+            QFAIL("a bad simulation key was kept");
+        } catch (const db::ValidationError& v) {
+            QVERIFY(v.findings().empty());
+            QCOMPARE(v.textId(), std::string("rejected.problem"));
+            const QString ru = QString::fromStdString(v.text(db::Lang::Ru));
+            const QString en = QString::fromStdString(v.text(db::Lang::En));
+            QVERIFY2(ru.startsWith(QStringLiteral("станок training-lathe: отклонено, ничего не записано: ")) &&
+                         ru.count(QStringLiteral("станок")) == 1 && !hasEnglishSentence(ru, false),
+                     qPrintable(ru));
+            QVERIFY2(en.startsWith("machine training-lathe: rejected, nothing was written: ") &&
+                         en.count("machine") == 1 && en.contains("Tilte"),
+                     qPrintable(en));
+            QCOMPARE(en, QString::fromUtf8(v.what()));
+        }
+        QCOMPARE(d.machine("grinder-205")->revision, 1);
+        QCOMPARE(d.machine("training-lathe")->revision, 1);
+    }
+
+    // Stored rows that break their own rules (another program's SQL): said
+    // by the catalog, the machine and the file first.
+    void storedRowsThatBreakTheirRulesAreSaid() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "rows.db");
+        { db::Database d = db::Database::open(where, testOptions()); }
+        QCOMPARE(runSql(where, "DELETE FROM c_values WHERE number = 22 AND machine_id = "
+                               "(SELECT id FROM machines WHERE name = 'grinder-205')"),
+                 std::string());
+        db::Database d = db::Database::open(where, testOptions());
+        try {
+            d.loadMachine("grinder-205");
+            QFAIL("a machine with 151 C values was loaded");
+        } catch (const db::Error& e) {
+            QCOMPARE(e.kind(), db::ErrorKind::Corrupt);
+            QCOMPARE(e.textId(), std::string("corrupt.c-count"));
+            const QString ru = QString::fromStdString(e.text(db::Lang::Ru));
+            QVERIFY2(ru.startsWith(QStringLiteral("станок grinder-205 в ")) &&
+                         ru.endsWith(QStringLiteral(": хранится значений C-параметров: 151 из 152")) &&
+                         !hasEnglishSentence(ru, false),
+                     qPrintable(ru));
+            QVERIFY2(std::string(e.what()).ends_with(": 151 of the 152 C-parameter values are stored"), e.what());
+        }
+        QVERIFY(d.loadMachine("training-lathe") == profile::builtin("training-lathe"));
+    }
+
     void equalProfileWritesNothing() {
         QTemporaryDir dir;
         db::Database d = db::Database::open(testLocation(dir, "n.db"), testOptions());

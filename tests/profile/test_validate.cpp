@@ -38,6 +38,11 @@ void expectOne(const MachineProfile& p, Severity sev, std::optional<int> message
     QVERIFY2(fs[0].message == message, dump(fs).c_str());
     QVERIFY2(fs[0].cParams == cs, dump(fs).c_str());
     QVERIFY(!fs[0].textRu.empty() && !fs[0].textEn.empty());
+    // Said by core's catalog of problems: the id the desktop translates, and
+    // both texts rendered from it (no pair written beside the check).
+    QVERIFY2(problemTexts().find(fs[0].problem.id) != nullptr, fs[0].problem.id.c_str());
+    QCOMPARE(fs[0].textRu, problemText(fs[0].problem, true));
+    QCOMPARE(fs[0].textEn, problemText(fs[0].problem, false));
 }
 
 void expectNone(const MachineProfile& p) {
@@ -149,6 +154,25 @@ private slots:
                                            "simulation x.screw_lead", "name"}));
         QVERIFY(hasErrors(fs));
         QVERIFY(fs[5].severity == Severity::Warning); // unknown key: maybe a typo
+        QCOMPARE(fs[5].problem.id, std::string("check.setting-unknown"));
+        QCOMPARE(fs[5].textRu, std::string("Параметр моделирования x.screw_lead не из реестра (опечатка?)"));
+        QCOMPARE(fs[6].problem.id, std::string("name.start"));
+    }
+
+    // The cross-checks' texts, each from its id: the manual's names of the
+    // constants in Russian, the English names in English; a per cent sign
+    // kept.
+    void findingsAreSaidByTheirIds() {
+        auto fs = validate(with({{69, 1}})); // both encoders on channel 1
+        QVERIFY2(fs.size() == 1, dump(fs).c_str());
+        QCOMPARE(fs[0].problem.id, std::string("check.encoders-channel"));
+        QCOMPARE(fs[0].textEn, std::string("Both encoders are on channel 1 (C017,C069)"));
+        QVERIFY2(fs[0].textRu.starts_with("Оба ДОС подключены к одному каналу 1 («"), fs[0].textRu.c_str());
+        fs = validate(with({{28, 2353}})); // 14.9 % above
+        QVERIFY2(fs.size() == 1, dump(fs).c_str());
+        QCOMPARE(fs[0].problem.id, std::string("check.dac-limit-margin"));
+        QVERIFY2(fs[0].textEn.find("is not 15-20 % above DAC MAX") != std::string::npos, fs[0].textEn.c_str());
+        QVERIFY2(fs[0].textRu.find("не на 15-20 % выше МАКС.ЦАП") != std::string::npos, fs[0].textRu.c_str());
     }
 
     void programTextChecks() {

@@ -7,6 +7,7 @@
 #include "engine/positioner.h"
 #include "db/notes.h"
 #include "session/catalog_texts.h"
+#include "session/core_texts.h"
 #include "window_language.h"
 #include "profile/validate.h"
 #include "controller/controller.h"
@@ -129,7 +130,7 @@ CEditCheck checkCEdit(std::span<const std::int64_t> c, int number, std::int64_t 
             std::find(f.cParams.begin(), f.cParams.end(), number) != f.cParams.end();
         if (!involves)
             continue;
-        const QString why = coreText(f.textRu, f.textEn);
+        const QString why = problemText(f.problem);
         if (f.severity == profile::Severity::Warning) {
             r.warnings << why;
             continue;

@@ -14,6 +14,7 @@
 #include "proveout/proveout.h"
 #include "profile/validate.h"
 #include "profile/text_format.h"
+#include "session/database_texts.h"
 #include "session/shop_database.h"
 #include "session/translated_texts.h"
 #include "util/input_file.h"
@@ -142,7 +143,27 @@ const TranslatedText kProblems[] = {
         {"tool.key", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "a tool key is tool.<station 1..8>.<key>")},
         {"tool.field", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "'%1' is not a key of a tool")},
         {"tool.no-kind", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the tool of station %1 has no kind (tool.%1.kind)")},
-        {"machine.item", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "machine %1: %2")},
+        {"check.incomplete", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Incomplete set of C-parameters")},
+        {"check.range", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "%1 %5 = %3 is outside %4")},
+        {"check.axis-discrete", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: exactly one display discrete must be set (%2), %3 set")},
+        {"check.axis-ratio", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: L/N = %2/%3 is above 1: one encoder pulse is more than a discrete, the axis cannot position finer than a pulse")},
+        {"check.dac-max-zero", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: DAC MAX = 0: the drive gets no voltage")},
+        {"check.dac-limit-below", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: DAC LIMIT %2 is below DAC MAX %3: message %4 at full speed")},
+        {"check.dac-limit-margin", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: DAC LIMIT %2 is not 15-20 %% above DAC MAX %3 (recommended %4...%5)")},
+        {"check.accel-zero", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: ACCELERATION 1 = 0")},
+        {"check.feed-zero", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: %3 = 0: the axis will not move")},
+        {"check.homing-speed-zero", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: a homing speed is zero, yet programs need the axis homed")},
+        {"check.homing-creep", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: F HOME CREEP is above F HOME START")},
+        {"check.limits-order", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: -LIMIT %2 is not below +LIMIT %3")},
+        {"check.home-outside", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: HOME VALUE %2 is outside the soft limits %3...%4")},
+        {"check.fast-input-twice", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Axis %1: function %2 is assigned to two fast inputs")},
+        {"check.no-axis", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "No axis is present (AXIS PRESENT = 0)")},
+        {"check.encoders-channel", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Both encoders are on channel %1 (%4)")},
+        {"check.wheel-encoder-channel", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "A handwheel and an encoder are on channel %1 (%4)")},
+        {"check.drives-channel", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Both drives are on DAC channel %1 (%4)")},
+        {"check.wheels-channel", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Both handwheels are on channel %1")},
+        {"check.manual-cycle", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Manual cycle %1: program L%2 does not exist")},
+        {"check.setting-unknown", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Simulation setting %1 is not in the registry (a typo?)")},
         {"calc.vmax", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "Vmax must be a positive number")},
         {"calc.run-up", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the run-up time must be a positive number")},
         {"calc.braking", QT_TRANSLATE_NOOP("k528::studio::CoreTexts", "the braking distance must be a positive number")},
@@ -496,19 +517,17 @@ QString coreErrorText(const std::exception& e) {
         return problemText(c->problem);
     if (const auto* t = dynamic_cast<const profile::ToolError*>(&e))
         return problemText(t->problem());
-    if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && v->findings().empty() && !v->problem().empty())
-        return QCoreApplication::translate("k528::studio::CoreTexts", "rejected, nothing was written: %1")
-            .arg(problemText(v->problem()));
+    if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->problem().empty())
+        return databaseText(v->catalogText()) + QStringLiteral(" ") + problemText(v->problem());
     if (const auto* v = dynamic_cast<const db::ValidationError*>(&e); v && !v->findings().empty()) {
-        // The cross-checks' findings: core says each in both languages.
-        QString text = QCoreApplication::translate("k528::studio::CoreTexts",
-                                                   "rejected, nothing was written (errors: %1):")
-                           .arg(v->findings().size());
+        // The head by the database's catalog id; the cross-checks' findings
+        // a line each, by their problems' ids.
+        QString text = databaseText(v->catalogText());
         for (const profile::Finding& f : v->findings()) {
             QString line = fromStd(f.subject);
             if (f.message)
                 line += QCoreApplication::translate("k528::studio::CoreTexts", " (message %1)").arg(*f.message);
-            text += QStringLiteral("\n") + line + QStringLiteral(": ") + coreText(f.textRu, f.textEn);
+            text += QStringLiteral("\n") + line + QStringLiteral(": ") + problemText(f.problem);
         }
         return text;
     }
