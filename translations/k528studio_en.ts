@@ -2262,20 +2262,12 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>%1: %2</translation>
     </message>
     <message>
-        <source>rejected, nothing was written (errors: %1):</source>
-        <translation>rejected, nothing was written (errors: %1):</translation>
-    </message>
-    <message>
         <source> (message %1)</source>
         <translation> (message %1)</translation>
     </message>
     <message>
         <source>%1 cannot be read: %2</source>
         <translation>%1 cannot be read: %2</translation>
-    </message>
-    <message>
-        <source>machine %1: %2</source>
-        <translation>machine %1: %2</translation>
     </message>
     <message>
         <source>Vmax must be a positive number</source>
@@ -2328,10 +2320,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</source>
         <translation>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</translation>
-    </message>
-    <message>
-        <source>rejected, nothing was written: %1</source>
-        <translation>rejected, nothing was written: %1</translation>
     </message>
     <message>
         <source>the PLC sets the mode</source>
@@ -2468,6 +2456,90 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)</source>
         <translation>line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)</translation>
+    </message>
+    <message>
+        <source>Incomplete set of C-parameters</source>
+        <translation>Incomplete set of C-parameters</translation>
+    </message>
+    <message>
+        <source>%1 %5 = %3 is outside %4</source>
+        <translation>%1 %5 = %3 is outside %4</translation>
+    </message>
+    <message>
+        <source>Axis %1: exactly one display discrete must be set (%2), %3 set</source>
+        <translation>Axis %1: exactly one display discrete must be set (%2), %3 set</translation>
+    </message>
+    <message>
+        <source>Axis %1: L/N = %2/%3 is above 1: one encoder pulse is more than a discrete, the axis cannot position finer than a pulse</source>
+        <translation>Axis %1: L/N = %2/%3 is above 1: one encoder pulse is more than a discrete, the axis cannot position finer than a pulse</translation>
+    </message>
+    <message>
+        <source>Axis %1: DAC MAX = 0: the drive gets no voltage</source>
+        <translation>Axis %1: DAC MAX = 0: the drive gets no voltage</translation>
+    </message>
+    <message>
+        <source>Axis %1: DAC LIMIT %2 is below DAC MAX %3: message %4 at full speed</source>
+        <translation>Axis %1: DAC LIMIT %2 is below DAC MAX %3: message %4 at full speed</translation>
+    </message>
+    <message>
+        <source>Axis %1: DAC LIMIT %2 is not 15-20 %% above DAC MAX %3 (recommended %4...%5)</source>
+        <translation>Axis %1: DAC LIMIT %2 is not 15-20 %% above DAC MAX %3 (recommended %4...%5)</translation>
+    </message>
+    <message>
+        <source>Axis %1: ACCELERATION 1 = 0</source>
+        <translation>Axis %1: ACCELERATION 1 = 0</translation>
+    </message>
+    <message>
+        <source>Axis %1: %3 = 0: the axis will not move</source>
+        <translation>Axis %1: %3 = 0: the axis will not move</translation>
+    </message>
+    <message>
+        <source>Axis %1: a homing speed is zero, yet programs need the axis homed</source>
+        <translation>Axis %1: a homing speed is zero, yet programs need the axis homed</translation>
+    </message>
+    <message>
+        <source>Axis %1: F HOME CREEP is above F HOME START</source>
+        <translation>Axis %1: F HOME CREEP is above F HOME START</translation>
+    </message>
+    <message>
+        <source>Axis %1: -LIMIT %2 is not below +LIMIT %3</source>
+        <translation>Axis %1: -LIMIT %2 is not below +LIMIT %3</translation>
+    </message>
+    <message>
+        <source>Axis %1: HOME VALUE %2 is outside the soft limits %3...%4</source>
+        <translation>Axis %1: HOME VALUE %2 is outside the soft limits %3...%4</translation>
+    </message>
+    <message>
+        <source>Axis %1: function %2 is assigned to two fast inputs</source>
+        <translation>Axis %1: function %2 is assigned to two fast inputs</translation>
+    </message>
+    <message>
+        <source>No axis is present (AXIS PRESENT = 0)</source>
+        <translation>No axis is present (AXIS PRESENT = 0)</translation>
+    </message>
+    <message>
+        <source>Both encoders are on channel %1 (%4)</source>
+        <translation>Both encoders are on channel %1 (%4)</translation>
+    </message>
+    <message>
+        <source>A handwheel and an encoder are on channel %1 (%4)</source>
+        <translation>A handwheel and an encoder are on channel %1 (%4)</translation>
+    </message>
+    <message>
+        <source>Both drives are on DAC channel %1 (%4)</source>
+        <translation>Both drives are on DAC channel %1 (%4)</translation>
+    </message>
+    <message>
+        <source>Both handwheels are on channel %1</source>
+        <translation>Both handwheels are on channel %1</translation>
+    </message>
+    <message>
+        <source>Manual cycle %1: program L%2 does not exist</source>
+        <translation>Manual cycle %1: program L%2 does not exist</translation>
+    </message>
+    <message>
+        <source>Simulation setting %1 is not in the registry (a typo?)</source>
+        <translation>Simulation setting %1 is not in the registry (a typo?)</translation>
     </message>
 </context>
 <context>
@@ -3009,6 +3081,62 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>an unexpected database error (please report it): %1</source>
         <translation>an unexpected database error (please report it): %1</translation>
+    </message>
+    <message>
+        <source>machine %1: rejected, nothing was written (%2 error):</source>
+        <translation>machine %1: rejected, nothing was written (%2 error):</translation>
+    </message>
+    <message>
+        <source>machine %1: rejected, nothing was written (%2 errors):</source>
+        <translation>machine %1: rejected, nothing was written (%2 errors):</translation>
+    </message>
+    <message>
+        <source>machine %1: rejected, nothing was written:</source>
+        <translation>machine %1: rejected, nothing was written:</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: simulation key %4 of the stored order has no value</source>
+        <translation>machine %1 revision %2 in %3: simulation key %4 of the stored order has no value</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: the stored order of the simulation settings does not list every key</source>
+        <translation>machine %1 revision %2 in %3: the stored order of the simulation settings does not list every key</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: C values: "%3" where integer pairs belong</source>
+        <translation>machine %1 in %2: C values: "%3" where integer pairs belong</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: C values: a number without its value</source>
+        <translation>machine %1 in %2: C values: a number without its value</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: R presets: "%3" where integer pairs belong</source>
+        <translation>machine %1 in %2: R presets: "%3" where integer pairs belong</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: R presets: a number without its value</source>
+        <translation>machine %1 in %2: R presets: a number without its value</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: C-parameter number %3 is not 1..152</source>
+        <translation>machine %1 in %2: C-parameter number %3 is not 1..152</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: %3 of the 152 C-parameter values are stored</source>
+        <translation>machine %1 in %2: %3 of the 152 C-parameter values are stored</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: program L%3 of revision %4 does not match its SHA-256 checksum (the text was altered outside K528 Studio)</source>
+        <translation>machine %1 in %2: program L%3 of revision %4 does not match its SHA-256 checksum (the text was altered outside K528 Studio)</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: unknown PLC message group %3</source>
+        <translation>machine %1 in %2: unknown PLC message group %3</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: the simulation setting %3=%4 cannot be read</source>
+        <translation>machine %1 in %2: the simulation setting %3=%4 cannot be read</translation>
     </message>
 </context>
 <context>

@@ -2262,20 +2262,12 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <source>rejected, nothing was written (errors: %1):</source>
-        <translation>отклонено, ничего не записано (ошибок: %1):</translation>
-    </message>
-    <message>
         <source> (message %1)</source>
         <translation> (сообщение %1)</translation>
     </message>
     <message>
         <source>%1 cannot be read: %2</source>
         <translation>%1 не читается: %2</translation>
-    </message>
-    <message>
-        <source>machine %1: %2</source>
-        <translation>станок %1: %2</translation>
     </message>
     <message>
         <source>Vmax must be a positive number</source>
@@ -2328,10 +2320,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</source>
         <translation>наибольшая подача %1 мм/мин больше той, что привод даёт при МАКС.ЦАП (%2 мм/мин)</translation>
-    </message>
-    <message>
-        <source>rejected, nothing was written: %1</source>
-        <translation>отклонено, ничего не записано: %1</translation>
     </message>
     <message>
         <source>the PLC sets the mode</source>
@@ -2468,6 +2456,90 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>line '%1': '%2' is not a setting of a serial line (baud, parity, stop_bits, address)</source>
         <translation>линия «%1»: «%2» — не настройка последовательной линии (baud, parity, stop_bits, address)</translation>
+    </message>
+    <message>
+        <source>Incomplete set of C-parameters</source>
+        <translation>Неполный набор С-параметров</translation>
+    </message>
+    <message>
+        <source>%1 %5 = %3 is outside %4</source>
+        <translation>%1 «%2» = %3 вне диапазона %4</translation>
+    </message>
+    <message>
+        <source>Axis %1: exactly one display discrete must be set (%2), %3 set</source>
+        <translation>Ось %1: должна быть задана ровно одна дискрета (%2), задано %3</translation>
+    </message>
+    <message>
+        <source>Axis %1: L/N = %2/%3 is above 1: one encoder pulse is more than a discrete, the axis cannot position finer than a pulse</source>
+        <translation>Ось %1: L/N = %2/%3 больше 1: один импульс ДОС больше дискреты, ось не позиционируется точнее импульса</translation>
+    </message>
+    <message>
+        <source>Axis %1: DAC MAX = 0: the drive gets no voltage</source>
+        <translation>Ось %1: МАКС.ЦАП = 0: привод не получит напряжения</translation>
+    </message>
+    <message>
+        <source>Axis %1: DAC LIMIT %2 is below DAC MAX %3: message %4 at full speed</source>
+        <translation>Ось %1: ПРЕДЕЛ ЦАП %2 меньше МАКС.ЦАП %3: на максимальной скорости будет сообщение %4</translation>
+    </message>
+    <message>
+        <source>Axis %1: DAC LIMIT %2 is not 15-20 %% above DAC MAX %3 (recommended %4...%5)</source>
+        <translation>Ось %1: ПРЕДЕЛ ЦАП %2 не на 15-20 %% выше МАКС.ЦАП %3 (рекомендуется %4...%5)</translation>
+    </message>
+    <message>
+        <source>Axis %1: ACCELERATION 1 = 0</source>
+        <translation>Ось %1: УСКОРЕНИЕ 1 = 0</translation>
+    </message>
+    <message>
+        <source>Axis %1: %3 = 0: the axis will not move</source>
+        <translation>Ось %1: %2 = 0: ось не будет двигаться</translation>
+    </message>
+    <message>
+        <source>Axis %1: a homing speed is zero, yet programs need the axis homed</source>
+        <translation>Ось %1: нулевая скорость привязки к базовой точке, а пуск программы требует привязки</translation>
+    </message>
+    <message>
+        <source>Axis %1: F HOME CREEP is above F HOME START</source>
+        <translation>Ось %1: F ОТКЛ.БТ больше F СТАРТ БТ</translation>
+    </message>
+    <message>
+        <source>Axis %1: -LIMIT %2 is not below +LIMIT %3</source>
+        <translation>Ось %1: -ОГРАНИЧЕН %2 не меньше +ОГРАНИЧЕН %3</translation>
+    </message>
+    <message>
+        <source>Axis %1: HOME VALUE %2 is outside the soft limits %3...%4</source>
+        <translation>Ось %1: ЗНАЧЕНИЕ БТ %2 вне программных конечников %3...%4</translation>
+    </message>
+    <message>
+        <source>Axis %1: function %2 is assigned to two fast inputs</source>
+        <translation>Ось %1: функция %2 назначена двум быстрым входам</translation>
+    </message>
+    <message>
+        <source>No axis is present (AXIS PRESENT = 0)</source>
+        <translation>Нет ни одной оси (НАЛИЧ.ОСИ = 0)</translation>
+    </message>
+    <message>
+        <source>Both encoders are on channel %1 (%4)</source>
+        <translation>Оба ДОС подключены к одному каналу %1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>A handwheel and an encoder are on channel %1 (%4)</source>
+        <translation>Маховик и ДОС подключены к одному каналу %1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>Both drives are on DAC channel %1 (%4)</source>
+        <translation>Оба привода подключены к одному каналу ЦАП %1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>Both handwheels are on channel %1</source>
+        <translation>Оба маховика подключены к одному каналу %1</translation>
+    </message>
+    <message>
+        <source>Manual cycle %1: program L%2 does not exist</source>
+        <translation>Ручной цикл %1: программы L%2 нет</translation>
+    </message>
+    <message>
+        <source>Simulation setting %1 is not in the registry (a typo?)</source>
+        <translation>Параметр моделирования %1 не из реестра (опечатка?)</translation>
     </message>
 </context>
 <context>
@@ -3009,6 +3081,62 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>an unexpected database error (please report it): %1</source>
         <translation>непредвиденная ошибка базы данных (пожалуйста, сообщите о ней): «%1»</translation>
+    </message>
+    <message>
+        <source>machine %1: rejected, nothing was written (%2 error):</source>
+        <translation>станок %1: отклонено, ничего не записано (ошибок: %2):</translation>
+    </message>
+    <message>
+        <source>machine %1: rejected, nothing was written (%2 errors):</source>
+        <translation>станок %1: отклонено, ничего не записано (ошибок: %2):</translation>
+    </message>
+    <message>
+        <source>machine %1: rejected, nothing was written:</source>
+        <translation>станок %1: отклонено, ничего не записано:</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: simulation key %4 of the stored order has no value</source>
+        <translation>станок %1, ревизия %2 в %3: у ключа моделирования %4 из сохранённого порядка нет значения</translation>
+    </message>
+    <message>
+        <source>machine %1 revision %2 in %3: the stored order of the simulation settings does not list every key</source>
+        <translation>станок %1, ревизия %2 в %3: сохранённый порядок настроек моделирования перечисляет не все ключи</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: C values: "%3" where integer pairs belong</source>
+        <translation>станок %1 в %2: значения C-параметров: «%3» там, где должны быть пары целых чисел</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: C values: a number without its value</source>
+        <translation>станок %1 в %2: значения C-параметров: номер без значения</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: R presets: "%3" where integer pairs belong</source>
+        <translation>станок %1 в %2: предустановки R-параметров: «%3» там, где должны быть пары целых чисел</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: R presets: a number without its value</source>
+        <translation>станок %1 в %2: предустановки R-параметров: номер без значения</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: C-parameter number %3 is not 1..152</source>
+        <translation>станок %1 в %2: номер C-параметра %3 — не из 1..152</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: %3 of the 152 C-parameter values are stored</source>
+        <translation>станок %1 в %2: хранится значений C-параметров: %3 из 152</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: program L%3 of revision %4 does not match its SHA-256 checksum (the text was altered outside K528 Studio)</source>
+        <translation>станок %1 в %2: программа L%3 ревизии %4 не совпадает со своей контрольной суммой SHA-256 (текст изменён не в K528 Studio)</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: unknown PLC message group %3</source>
+        <translation>станок %1 в %2: неизвестная группа сообщений ПЛК %3</translation>
+    </message>
+    <message>
+        <source>machine %1 in %2: the simulation setting %3=%4 cannot be read</source>
+        <translation>станок %1 в %2: настройку моделирования %3=%4 прочитать нельзя</translation>
     </message>
 </context>
 <context>

@@ -515,9 +515,13 @@ int MainWindow::keepInDatabase() {
 
 void MainWindow::updateMachineLabel() {
     const QString name = machineTitle(machine_.profile);
-    const QString source = machine_.source.text();
+    // A machine of the database open (followDatabase): the status line's
+    // database label beside it names the database, once; elsewhere from
+    // (built-in, a file, not in the database open) is said here.
+    const QString source =
+        machine_.source.kind == MachineSource::Kind::Database ? QString() : machine_.source.text();
     machineLabel_->setText(source.isEmpty() ? tr("Machine: %1").arg(name) : tr("Machine: %1 (%2)").arg(name, source));
-    machineLabel_->setToolTip(machine_.warning);
+    machineLabel_->setToolTip(machine_.warning.isEmpty() ? machine_.source.text() : machine_.warning);
 }
 
 void MainWindow::followDatabase() {

@@ -74,13 +74,20 @@ private slots:
         QCOMPARE(w.session()->controller().c()[94], 300000);
         const QLabel* label = w.findChild<QLabel*>("status.machine");
         QVERIFY2(label->text().contains("Training lathe with the K528-05"), qPrintable(label->text()));
-        QVERIFY2(label->text().contains("(database " + db_), qPrintable(label->text()));
-        // The label says where the machine came from in the window's language,
-        // also after the language is changed while the window is open.
+        // The database is named once in the status line, by its own label;
+        // the machine's says where it came from in its tooltip, in the
+        // window's language, also after the language is changed while the
+        // window is open.
+        const QLabel* database = w.findChild<QLabel*>("status.database");
+        QVERIFY(database);
+        QVERIFY2(!label->text().contains(db_) && database->toolTip() == db_, qPrintable(label->text()));
+        QCOMPARE(label->toolTip(), "database " + db_);
         QVERIFY(setLanguage("ru"));
-        QTRY_VERIFY2(label->text().contains("(база данных " + db_), qPrintable(label->text()));
+        QTRY_COMPARE(label->toolTip(), "база данных " + db_);
+        QVERIFY2(label->text().startsWith(QStringLiteral("Станок: ")) && !label->text().contains(db_),
+                 qPrintable(label->text()));
         QVERIFY(setLanguage("en"));
-        QTRY_VERIFY2(label->text().contains("(database " + db_), qPrintable(label->text()));
+        QTRY_COMPARE(label->toolTip(), "database " + db_);
         QVERIFY_THROWS_EXCEPTION(profile::FileError, loadMachine("no-such-machine"));
     }
 
