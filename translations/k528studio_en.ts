@@ -3138,6 +3138,114 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <source>machine %1 in %2: the simulation setting %3=%4 cannot be read</source>
         <translation>machine %1 in %2: the simulation setting %3=%4 cannot be read</translation>
     </message>
+    <message>
+        <source>the database is read-only: %1 (%2); nothing was written</source>
+        <translation>the database is read-only: %1 (%2); nothing was written</translation>
+    </message>
+    <message>
+        <source>the database is read-only: %1 (%2); a new database cannot be created there</source>
+        <translation>the database is read-only: %1 (%2); a new database cannot be created there</translation>
+    </message>
+    <message>
+        <source>the database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded</source>
+        <translation>the database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded</translation>
+    </message>
+    <message>
+        <source>the database is read-only: %1 (%2); it has an unfinished transaction (a hot -journal) that only a user who may write the file can roll back; the file was left untouched</source>
+        <translation>the database is read-only: %1 (%2); it has an unfinished transaction (a hot -journal) that only a user who may write the file can roll back; the file was left untouched</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>permission denied</translation>
+    </message>
+    <message>
+        <source>no permission to create files in its folder</source>
+        <translation>no permission to create files in its folder</translation>
+    </message>
+    <message>
+        <source>read-only file system</source>
+        <translation>read-only file system</translation>
+    </message>
+    <message>
+        <source>opened read-only</source>
+        <translation>opened read-only</translation>
+    </message>
+    <message>
+        <source>the database %1 refused the user %2: %4 needs %5; the user has %3; nothing was written</source>
+        <translation>the database %1 refused the user %2: %4 needs %5; the user has %3; nothing was written</translation>
+    </message>
+    <message>
+        <source>the database %1 refused the user %2: %3 needs %4; the user has no K528 Studio role; nothing was written</source>
+        <translation>the database %1 refused the user %2: %3 needs %4; the user has no K528 Studio role; nothing was written</translation>
+    </message>
+    <message>
+        <source>creating a machine</source>
+        <translation>creating a machine</translation>
+    </message>
+    <message>
+        <source>changing a machine</source>
+        <translation>changing a machine</translation>
+    </message>
+    <message>
+        <source>deleting a machine</source>
+        <translation>deleting a machine</translation>
+    </message>
+    <message>
+        <source>releasing a program</source>
+        <translation>releasing a program</translation>
+    </message>
+    <message>
+        <source>withdrawing a program</source>
+        <translation>withdrawing a program</translation>
+    </message>
+    <message>
+        <source>recording a transfer</source>
+        <translation>recording a transfer</translation>
+    </message>
+    <message>
+        <source>recording messages</source>
+        <translation>recording messages</translation>
+    </message>
+    <message>
+        <source>recording a training attempt</source>
+        <translation>recording a training attempt</translation>
+    </message>
+    <message>
+        <source>creating the database's tables</source>
+        <translation>creating the database's tables</translation>
+    </message>
+    <message>
+        <source>setting up the roles</source>
+        <translation>setting up the roles</translation>
+    </message>
+    <message>
+        <source>granting a role</source>
+        <translation>granting a role</translation>
+    </message>
+    <message>
+        <source>setting or clearing the constants lock</source>
+        <translation>setting or clearing the constants lock</translation>
+    </message>
+    <message>
+        <source>recording the machines' time in each state</source>
+        <translation>recording the machines' time in each state</translation>
+    </message>
+    <message>
+        <source>the role %1</source>
+        <translation>the role %1</translation>
+    </message>
+    <message>
+        <source>the owner of the database</source>
+        <translation>the owner of the database</translation>
+    </message>
+    <message>
+        <source>the owner of the database's tables with CREATEROLE</source>
+        <translation>the owner of the database's tables with CREATEROLE</translation>
+    </message>
+    <message>
+        <source>the role's admin (its creator, or CREATEROLE)</source>
+        <translation>the role's admin (its creator, or CREATEROLE)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DatabaseUi</name>
@@ -6806,10 +6914,6 @@ Its comment stays: %3</translation>
         <translation>Released L%1 of %2 as of revision %3 by %4 at %5</translation>
     </message>
     <message>
-        <source>Releasing a program needs the role %1: %2</source>
-        <translation>Releasing a program needs the role %1: %2</translation>
-    </message>
-    <message>
         <source>L%1 was not released: %2</source>
         <translation>L%1 was not released: %2</translation>
     </message>
@@ -6824,10 +6928,6 @@ Its comment stays: %3</translation>
     <message>
         <source>Withdrew L%1 of %2 by %3 at %4</source>
         <translation>Withdrew L%1 of %2 by %3 at %4</translation>
-    </message>
-    <message>
-        <source>Withdrawing a program needs the role %1: %2</source>
-        <translation>Withdrawing a program needs the role %1: %2</translation>
     </message>
     <message>
         <source>L%1 was not withdrawn: %2</source>
@@ -8049,38 +8149,6 @@ Its comment stays: %3</translation>
 <context>
     <name>k528::studio::ShopDatabase</name>
     <message>
-        <source>permission denied</source>
-        <translation>permission denied</translation>
-    </message>
-    <message>
-        <source>no permission to create files in its folder</source>
-        <translation>no permission to create files in its folder</translation>
-    </message>
-    <message>
-        <source>read-only file system</source>
-        <translation>read-only file system</translation>
-    </message>
-    <message>
-        <source>opened read-only</source>
-        <translation>opened read-only</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); nothing was written.</source>
-        <translation>The database is read-only: %1 (%2); nothing was written.</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); a new database cannot be created there.</source>
-        <translation>The database is read-only: %1 (%2); a new database cannot be created there.</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
-        <translation>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
-        <translation>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</translation>
-    </message>
-    <message>
         <source>The database %1 failed: %2.</source>
         <translation>The database %1 failed: %2.</translation>
     </message>
@@ -8089,66 +8157,6 @@ Its comment stays: %3</translation>
 Details: %3</source>
         <translation>The database %1 failed: %2.
 Details: %3</translation>
-    </message>
-    <message>
-        <source>creating a machine</source>
-        <translation>creating a machine</translation>
-    </message>
-    <message>
-        <source>changing a machine</source>
-        <translation>changing a machine</translation>
-    </message>
-    <message>
-        <source>deleting a machine</source>
-        <translation>deleting a machine</translation>
-    </message>
-    <message>
-        <source>releasing a program</source>
-        <translation>releasing a program</translation>
-    </message>
-    <message>
-        <source>withdrawing a program</source>
-        <translation>withdrawing a program</translation>
-    </message>
-    <message>
-        <source>recording a transfer</source>
-        <translation>recording a transfer</translation>
-    </message>
-    <message>
-        <source>recording messages</source>
-        <translation>recording messages</translation>
-    </message>
-    <message>
-        <source>recording a training attempt</source>
-        <translation>recording a training attempt</translation>
-    </message>
-    <message>
-        <source>creating the database's tables</source>
-        <translation>creating the database's tables</translation>
-    </message>
-    <message>
-        <source>setting up the roles</source>
-        <translation>setting up the roles</translation>
-    </message>
-    <message>
-        <source>granting a role</source>
-        <translation>granting a role</translation>
-    </message>
-    <message>
-        <source>no K528 Studio role</source>
-        <translation>no K528 Studio role</translation>
-    </message>
-    <message>
-        <source>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</source>
-        <translation>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</translation>
-    </message>
-    <message>
-        <source>setting or clearing the constants lock</source>
-        <translation>setting or clearing the constants lock</translation>
-    </message>
-    <message>
-        <source>recording the machines' time in each state</source>
-        <translation>recording the machines' time in each state</translation>
     </message>
 </context>
 <context>

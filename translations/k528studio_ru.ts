@@ -3138,6 +3138,114 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <source>machine %1 in %2: the simulation setting %3=%4 cannot be read</source>
         <translation>станок %1 в %2: настройку моделирования %3=%4 прочитать нельзя</translation>
     </message>
+    <message>
+        <source>the database is read-only: %1 (%2); nothing was written</source>
+        <translation>база данных доступна только для чтения: %1 (%2); ничего не записано</translation>
+    </message>
+    <message>
+        <source>the database is read-only: %1 (%2); a new database cannot be created there</source>
+        <translation>база данных доступна только для чтения: %1 (%2); создать там новую базу данных нельзя</translation>
+    </message>
+    <message>
+        <source>the database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded</source>
+        <translation>база данных доступна только для чтения: %1 (%2); её схема старше схемы этой программы, и обновить её нельзя</translation>
+    </message>
+    <message>
+        <source>the database is read-only: %1 (%2); it has an unfinished transaction (a hot -journal) that only a user who may write the file can roll back; the file was left untouched</source>
+        <translation>база данных доступна только для чтения: %1 (%2); в ней незавершённая транзакция (горячий журнал -journal), откатить которую может только пользователь с правом записи; файл не изменён</translation>
+    </message>
+    <message>
+        <source>permission denied</source>
+        <translation>нет права на запись</translation>
+    </message>
+    <message>
+        <source>no permission to create files in its folder</source>
+        <translation>нет права создавать файлы в её папке</translation>
+    </message>
+    <message>
+        <source>read-only file system</source>
+        <translation>файловая система только для чтения</translation>
+    </message>
+    <message>
+        <source>opened read-only</source>
+        <translation>открыта только для чтения</translation>
+    </message>
+    <message>
+        <source>the database %1 refused the user %2: %4 needs %5; the user has %3; nothing was written</source>
+        <translation>база данных %1 отказала пользователю %2: для действия «%4» требуется %5; у пользователя: %3; ничего не записано</translation>
+    </message>
+    <message>
+        <source>the database %1 refused the user %2: %3 needs %4; the user has no K528 Studio role; nothing was written</source>
+        <translation>база данных %1 отказала пользователю %2: для действия «%3» требуется %4; у пользователя нет ни одной роли K528 Studio; ничего не записано</translation>
+    </message>
+    <message>
+        <source>creating a machine</source>
+        <translation>создание станка</translation>
+    </message>
+    <message>
+        <source>changing a machine</source>
+        <translation>изменение станка</translation>
+    </message>
+    <message>
+        <source>deleting a machine</source>
+        <translation>удаление станка</translation>
+    </message>
+    <message>
+        <source>releasing a program</source>
+        <translation>выпуск программы</translation>
+    </message>
+    <message>
+        <source>withdrawing a program</source>
+        <translation>отзыв программы</translation>
+    </message>
+    <message>
+        <source>recording a transfer</source>
+        <translation>запись передачи в журнал</translation>
+    </message>
+    <message>
+        <source>recording messages</source>
+        <translation>запись сообщений</translation>
+    </message>
+    <message>
+        <source>recording a training attempt</source>
+        <translation>запись учебной попытки</translation>
+    </message>
+    <message>
+        <source>creating the database's tables</source>
+        <translation>создание таблиц базы данных</translation>
+    </message>
+    <message>
+        <source>setting up the roles</source>
+        <translation>настройка ролей</translation>
+    </message>
+    <message>
+        <source>granting a role</source>
+        <translation>выдача роли</translation>
+    </message>
+    <message>
+        <source>setting or clearing the constants lock</source>
+        <translation>установка или снятие блокировки констант</translation>
+    </message>
+    <message>
+        <source>recording the machines' time in each state</source>
+        <translation>запись времени станков в каждом состоянии</translation>
+    </message>
+    <message>
+        <source>the role %1</source>
+        <translation>роль %1</translation>
+    </message>
+    <message>
+        <source>the owner of the database</source>
+        <translation>владелец базы данных</translation>
+    </message>
+    <message>
+        <source>the owner of the database's tables with CREATEROLE</source>
+        <translation>владелец таблиц базы данных с правом CREATEROLE</translation>
+    </message>
+    <message>
+        <source>the role's admin (its creator, or CREATEROLE)</source>
+        <translation>администратор роли (её создатель или CREATEROLE)</translation>
+    </message>
 </context>
 <context>
     <name>k528::studio::DatabaseUi</name>
@@ -6806,10 +6914,6 @@ Its comment stays: %3</source>
         <translation>L%1 станка %2 выпущена в ревизии %3: %4, %5</translation>
     </message>
     <message>
-        <source>Releasing a program needs the role %1: %2</source>
-        <translation>Для выпуска программы нужна роль %1: %2</translation>
-    </message>
-    <message>
         <source>L%1 was not released: %2</source>
         <translation>L%1 не выпущена: %2</translation>
     </message>
@@ -6824,10 +6928,6 @@ Its comment stays: %3</source>
     <message>
         <source>Withdrew L%1 of %2 by %3 at %4</source>
         <translation>L%1 станка %2 отозвана: %3, %4</translation>
-    </message>
-    <message>
-        <source>Withdrawing a program needs the role %1: %2</source>
-        <translation>Для отзыва программы нужна роль %1: %2</translation>
     </message>
     <message>
         <source>L%1 was not withdrawn: %2</source>
@@ -8049,38 +8149,6 @@ Its comment stays: %3</source>
 <context>
     <name>k528::studio::ShopDatabase</name>
     <message>
-        <source>permission denied</source>
-        <translation>нет права на запись</translation>
-    </message>
-    <message>
-        <source>no permission to create files in its folder</source>
-        <translation>нет права создавать файлы в её папке</translation>
-    </message>
-    <message>
-        <source>read-only file system</source>
-        <translation>файловая система только для чтения</translation>
-    </message>
-    <message>
-        <source>opened read-only</source>
-        <translation>открыта только для чтения</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); nothing was written.</source>
-        <translation>База данных доступна только для чтения: %1 (%2); ничего не записано.</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); a new database cannot be created there.</source>
-        <translation>База данных доступна только для чтения: %1 (%2); создать там новую базу данных нельзя.</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded.</source>
-        <translation>База данных доступна только для чтения: %1 (%2); её схема старше схемы этой программы, и обновить её нельзя.</translation>
-    </message>
-    <message>
-        <source>The database is read-only: %1 (%2); it has an unfinished transaction that only a user who may write the file can roll back.</source>
-        <translation>База данных доступна только для чтения: %1 (%2); в ней незавершённая транзакция, откатить которую может только пользователь с правом записи.</translation>
-    </message>
-    <message>
         <source>The database %1 failed: %2.</source>
         <translation>Ошибка базы данных %1: %2.</translation>
     </message>
@@ -8089,66 +8157,6 @@ Its comment stays: %3</source>
 Details: %3</source>
         <translation>Ошибка базы данных %1: %2.
 Подробности: %3</translation>
-    </message>
-    <message>
-        <source>creating a machine</source>
-        <translation>создание станка</translation>
-    </message>
-    <message>
-        <source>changing a machine</source>
-        <translation>изменение станка</translation>
-    </message>
-    <message>
-        <source>deleting a machine</source>
-        <translation>удаление станка</translation>
-    </message>
-    <message>
-        <source>releasing a program</source>
-        <translation>выпуск программы</translation>
-    </message>
-    <message>
-        <source>withdrawing a program</source>
-        <translation>отзыв программы</translation>
-    </message>
-    <message>
-        <source>recording a transfer</source>
-        <translation>запись передачи в журнал</translation>
-    </message>
-    <message>
-        <source>recording messages</source>
-        <translation>запись сообщений</translation>
-    </message>
-    <message>
-        <source>recording a training attempt</source>
-        <translation>запись попытки обучения</translation>
-    </message>
-    <message>
-        <source>creating the database's tables</source>
-        <translation>создание таблиц базы данных</translation>
-    </message>
-    <message>
-        <source>setting up the roles</source>
-        <translation>создание ролей</translation>
-    </message>
-    <message>
-        <source>granting a role</source>
-        <translation>выдача роли</translation>
-    </message>
-    <message>
-        <source>no K528 Studio role</source>
-        <translation>нет ролей K528 Studio</translation>
-    </message>
-    <message>
-        <source>The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.</source>
-        <translation>База данных %1 отказала пользователю %2: %3 — нужна роль %4; у пользователя: %5; ничего не записано.</translation>
-    </message>
-    <message>
-        <source>setting or clearing the constants lock</source>
-        <translation>установка и снятие блокировки констант</translation>
-    </message>
-    <message>
-        <source>recording the machines' time in each state</source>
-        <translation>запись времени станков в каждом состоянии</translation>
     </message>
 </context>
 <context>

@@ -59,7 +59,7 @@ AttemptEntry Database::recordAttempt(AttemptEntry entry) {
     if (entry.host.empty())
         entry.host = hostName();
     entry.sha256 = sha256Hex(entry.program);
-    return asRole(s, "recording a training attempt", kOperator, [&] {
+    return asRole(s, DeniedAction::RecordAttempt, kOperator, [&] {
         WriteTransaction tx(s);
         auto& q = s.connection()(
             "INSERT INTO training_attempts (at, recorded_by, host, student, exercise, file, program, "

@@ -58,7 +58,7 @@ void checkConstantsLock(Store& s, const MachineProfile* old, const MachineProfil
             constants += (constants.empty() ? "" : ", ") + c.key;
     }
     if (lockChanged && !s.mayActAs(kTrainer))
-        throw DeniedError("setting or clearing the constants lock", std::string(kTrainer), s.sessionUser(),
+        throw DeniedError(s.path().string(), DeniedAction::LockConstants, std::string(kTrainer), s.sessionUser(),
                           s.rolesOfUser(), "K528 Studio's rule: only a trainer locks and unlocks the constants");
     if (!locked.empty() && !constants.empty())
         throw ValidationError(
@@ -272,7 +272,7 @@ SaveResult Database::createMachine(const MachineProfile& p, WriteOptions options
     if (options.action == "save")
         options.action = "create";
     Store& s = *d_->store;
-    return asRole(s, "creating a machine", kTechnologist, [&] {
+    return asRole(s, DeniedAction::CreateMachine, kTechnologist, [&] {
         WriteTransaction tx(s);
         SaveResult r = write(s, d_->clock, std::nullopt, nullptr, p, options);
         tx.commit();
@@ -283,7 +283,7 @@ SaveResult Database::createMachine(const MachineProfile& p, WriteOptions options
 SaveResult Database::saveMachine(std::string_view name, const MachineProfile& p,
                                  WriteOptions options) {
     Store& s = *d_->store;
-    return asRole(s, "changing a machine", kTechnologist, [&] {
+    return asRole(s, DeniedAction::ChangeMachine, kTechnologist, [&] {
         WriteTransaction tx(s);
         const LoadedMachine loaded = requireLoaded(s, name);
         const MachineRow& row = loaded.row;
@@ -335,7 +335,7 @@ SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOpt
     if (options.action == "save")
         options.action = "set";
     Store& s = *d_->store;
-    return asRole(s, "changing a machine", kTechnologist, [&] {
+    return asRole(s, DeniedAction::ChangeMachine, kTechnologist, [&] {
         WriteTransaction tx(s);
         const LoadedMachine loaded = requireLoaded(s, name);
         const MachineRow& row = loaded.row;
@@ -360,7 +360,7 @@ SaveResult Database::applyEdit(std::string_view name, const Edit& edit, WriteOpt
 void Database::removeMachine(std::string_view name, WriteOptions options) {
     Store& s = *d_->store;
     const std::string author = authorOf(s, options.author);
-    asRole(s, "deleting a machine", kTechnologist, [&] {
+    asRole(s, DeniedAction::DeleteMachine, kTechnologist, [&] {
         WriteTransaction tx(s);
         const auto row = requireMachine(s, name);
         s.deleteMachine(row.id);

@@ -25,7 +25,7 @@ inline constexpr std::string_view kConstantsLockKey = "constants.lock";
 // Runs `f`; a refusal of the server's privileges becomes a DeniedError that
 // names the action and the role it needs.
 template <typename F>
-decltype(auto) asRole(Store& s, std::string_view action, std::string_view role, F&& f) {
+decltype(auto) asRole(Store& s, DeniedAction action, std::string_view role, F&& f) {
     try {
         return f();
     } catch (const DeniedError&) {
@@ -33,7 +33,7 @@ decltype(auto) asRole(Store& s, std::string_view action, std::string_view role, 
     } catch (const Error& e) {
         if (e.kind() != ErrorKind::Denied)
             throw;
-        throw DeniedError(std::string(action), std::string(role), s.sessionUser(), s.rolesOfUser(),
+        throw DeniedError(s.path().string(), action, std::string(role), s.sessionUser(), s.rolesOfUser(),
                           e.what());
     }
 }

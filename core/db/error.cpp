@@ -19,52 +19,37 @@ std::string_view errorKindName(ErrorKind k) {
 
 namespace {
 
-struct Text {
-    const char* en;
-    const char* ru;
-};
-
 // By ReadOnlyReason.
-constexpr Text kReasons[] = {
-    {"", ""},
-    {"permission denied", "нет права на запись"},
-    {"no permission to create files in its folder", "нет права создавать файлы в её папке"},
-    {"read-only file system", "файловая система только для чтения"},
-    {"opened read-only", "открыта только для чтения"},
+constexpr std::string_view kReasonIds[] = {
+    "", "read-only.permission", "read-only.folder", "read-only.file-system", "read-only.requested",
 };
 
 // By ReadOnlyRefusal.
-constexpr Text kRefusals[] = {
-    {"; nothing was written", "; ничего не записано"},
-    {"; a new database cannot be created there", "; создать там новую базу данных нельзя"},
-    {"; its schema is older than this program's and cannot be upgraded",
-     "; её схема старше схемы этой программы, и обновить её нельзя"},
-    {"; it has an unfinished transaction (a hot -journal) that only a user who may write the "
-     "file can roll back; the file was left untouched",
-     "; в ней незавершённая транзакция (горячий журнал -journal), откатить которую может только "
-     "пользователь с правом записи; файл не изменён"},
+constexpr std::string_view kRefusalIds[] = {
+    "read-only.write", "read-only.create", "read-only.upgrade", "read-only.recover",
 };
 
-const char* pick(const Text& t, Lang lang) {
-    return lang == Lang::Ru ? t.ru : t.en;
-}
-
-std::string readOnlyMessage(const fs::path& path, ReadOnlyReason reason, ReadOnlyRefusal refusal,
-                            Lang lang) {
-    return std::string(lang == Lang::Ru ? "база данных доступна только для чтения: "
-                                        : "the database is read-only: ") +
-           path.string() + " (" + pick(kReasons[static_cast<int>(reason)], lang) + ")" +
-           pick(kRefusals[static_cast<int>(refusal)], lang);
+ErrorText readOnlyText(const fs::path& path, ReadOnlyReason reason, ReadOnlyRefusal refusal) {
+    ErrorText t{std::string(kRefusalIds[static_cast<int>(refusal)]), {path.string()}};
+    t.within.push_back(ErrorText{std::string(readOnlyReasonId(reason))});
+    return t;
 }
 
 } // namespace
 
-std::string_view readOnlyReasonText(ReadOnlyReason r, Lang lang) {
-    return pick(kReasons[static_cast<int>(r)], lang);
+std::string_view readOnlyReasonId(ReadOnlyReason r) {
+    return kReasonIds[static_cast<int>(r)];
+}
+
+std::string readOnlyReasonText(ReadOnlyReason r, Lang lang) {
+    return dbTexts().render(readOnlyReasonId(r), {}, lang == Lang::Ru);
 }
 
 std::string renderText(const ErrorText& t, bool russian) {
-    return (t.at.empty() ? std::string() : t.at + ": ") + dbTexts().render(t.id, t.args, russian) +
+    std::vector<std::string> args = t.args;
+    for (const ErrorText& part : t.within)
+        args.push_back(renderText(part, russian));
+    return (t.at.empty() ? std::string() : t.at + ": ") + dbTexts().render(t.id, args, russian) +
            dbTexts().render(t.tail, t.tailArgs, russian);
 }
 
@@ -72,8 +57,8 @@ Error::Error(ErrorKind kind, ErrorText text, std::string detail)
     : std::runtime_error(renderText(text, false)), kind_(kind), detail_(std::move(detail)),
       text_(std::move(text)) {}
 
-Error::Error(const std::string& what, ErrorKind kind, ErrorText text)
-    : std::runtime_error(what), kind_(kind), text_(std::move(text)) {}
+Error::Error(const std::string& what, ErrorKind kind, ErrorText text, std::string detail)
+    : std::runtime_error(what), kind_(kind), detail_(std::move(detail)), text_(std::move(text)) {}
 
 namespace {
 
@@ -136,35 +121,6 @@ constexpr const char* kKindsRu[] = {
     "сервер базы данных отказал этому пользователю",
 };
 
-// A role refusal's action (DeniedError::action) and the role it needs when
-// that is no role's name, in Russian.
-constexpr Text kDeniedWords[] = {
-    {"creating a machine", "создание станка"},
-    {"changing a machine", "изменение станка"},
-    {"deleting a machine", "удаление станка"},
-    {"releasing a program", "выпуск программы"},
-    {"withdrawing a program", "отзыв программы"},
-    {"recording a transfer", "запись передачи в журнал"},
-    {"recording messages", "запись сообщений"},
-    {"recording a training attempt", "запись учебной попытки"},
-    {"creating the database's tables", "создание таблиц базы данных"},
-    {"setting up the roles", "настройка ролей"},
-    {"granting a role", "выдача роли"},
-    {"setting or clearing the constants lock", "установка или снятие блокировки констант"},
-    {"recording the machines' time in each state", "запись времени станков в каждом состоянии"},
-    {"the owner of the database", "владелец базы данных"},
-    {"the owner of the database's tables with CREATEROLE", "владелец таблиц базы данных с правом CREATEROLE"},
-    {"the role's admin (its creator, or CREATEROLE)", "администратор роли (её создатель или CREATEROLE)"},
-};
-
-std::string deniedWord(const std::string& en, Lang lang) {
-    if (lang == Lang::Ru)
-        for (const Text& t : kDeniedWords)
-            if (en == t.en)
-                return t.ru;
-    return en;
-}
-
 } // namespace
 
 std::string Error::text(Lang lang) const {
@@ -181,30 +137,55 @@ std::string Error::text(Lang lang) const {
 }
 
 ReadOnlyError::ReadOnlyError(fs::path path, ReadOnlyReason reason, ReadOnlyRefusal refusal)
-    : Error(ErrorKind::ReadOnly, readOnlyMessage(path, reason, refusal, Lang::En)),
-      path_(std::move(path)), reason_(reason), refusal_(refusal) {}
+    : Error(ErrorKind::ReadOnly, readOnlyText(path, reason, refusal)), path_(std::move(path)), reason_(reason),
+      refusal_(refusal) {}
 
-std::string ReadOnlyError::text(Lang lang) const {
-    return readOnlyMessage(path_, reason_, refusal_, lang);
+namespace {
+
+// By DeniedAction.
+constexpr std::string_view kActionIds[] = {
+    "denied.create-machine",  "denied.change-machine",   "denied.delete-machine",  "denied.release-program",
+    "denied.withdraw-program", "denied.record-transfer", "denied.record-messages", "denied.record-attempt",
+    "denied.create-tables",   "denied.set-up-roles",     "denied.grant-role",      "denied.lock-constants",
+    "denied.record-state-times",
+};
+
+// By DeniedHolder.
+constexpr std::string_view kHolderIds[] = {
+    "denied.role", "denied.database-owner", "denied.tables-creator", "denied.role-admin",
+};
+
+ErrorText deniedText(const std::string& database, DeniedAction action, DeniedHolder holder, const std::string& role,
+                     const std::string& user, const std::string& userRoles) {
+    ErrorText t = userRoles.empty() ? ErrorText{"denied.no-role", {database, user}}
+                                    : ErrorText{"denied", {database, user, userRoles}};
+    t.within.push_back(ErrorText{std::string(kActionIds[static_cast<int>(action)])});
+    t.within.push_back(holder == DeniedHolder::Role ? ErrorText{"denied.role", {role}}
+                                                     : ErrorText{std::string(kHolderIds[static_cast<int>(holder)])});
+    return t;
 }
 
-DeniedError::DeniedError(std::string action, std::string role, std::string user,
+// The English text and the server's words (kept in what() for a log; the
+// texts leave them out).
+std::string withServerWords(const ErrorText& t, const std::string& serverMessage) {
+    std::string s = renderText(t, false);
+    return serverMessage.empty() ? s : s + " (the server said: " + serverMessage + ")";
+}
+
+} // namespace
+
+DeniedError::DeniedError(std::string database, DeniedAction action, std::string role, std::string user,
                          std::string userRoles, const std::string& serverMessage)
-    : Error(ErrorKind::Denied, "permission denied: " + action + " needs the role " + role +
-                                   " (the database user " + user + " has " +
-                                   (userRoles.empty() ? std::string("no K528 Studio role")
-                                                      : userRoles) +
-                                   "; the server said: " + serverMessage + "); nothing was written"),
-      action_(std::move(action)), role_(std::move(role)), user_(std::move(user)),
-      userRoles_(std::move(userRoles)) {}
+    : DeniedError(database, action, DeniedHolder::Role, std::move(role), std::move(user), userRoles, serverMessage) {}
 
-std::string DeniedError::text(Lang lang) const {
-    if (lang != Lang::Ru)
-        return what();
-    return "отказано: для действия «" + deniedWord(action_, lang) + "» нужна роль " +
-           deniedWord(role_, lang) + " (у пользователя базы данных " + user_ + ": " +
-           (userRoles_.empty() ? std::string("ни одной роли K528 Studio") : userRoles_) +
-           "); ничего не записано";
-}
+DeniedError::DeniedError(std::string database, DeniedAction action, DeniedHolder holder, std::string user,
+                         std::string userRoles, const std::string& serverMessage)
+    : DeniedError(database, action, holder, std::string(), std::move(user), userRoles, serverMessage) {}
+
+DeniedError::DeniedError(const std::string& database, DeniedAction action, DeniedHolder holder, std::string role,
+                         std::string user, const std::string& userRoles, const std::string& serverMessage)
+    : Error(withServerWords(deniedText(database, action, holder, role, user, userRoles), serverMessage),
+            ErrorKind::Denied, deniedText(database, action, holder, role, user, userRoles), serverMessage),
+      action_(action), holder_(holder), role_(std::move(role)), user_(std::move(user)) {}
 
 } // namespace k528::db

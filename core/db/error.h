@@ -47,6 +47,10 @@ struct ErrorText {
     // A text said after it ("; the file was left untouched"), "" if none.
     std::string tail;
     std::vector<std::string> tailArgs;
+    // Texts of the catalog it holds (the reason of a read-only database, the
+    // action a role refusal was about): each said in the same language and
+    // added after `args` (%N+1, %N+2, …).
+    std::vector<ErrorText> within;
 };
 // `t` in a language (Russian or English).
 std::string renderText(const ErrorText& t, bool russian);
@@ -70,7 +74,7 @@ public:
     Error(ErrorKind kind, ErrorText text, std::string detail = {});
     // The same with what() given (the English of a text longer than the
     // catalog's: a rejection with its findings).
-    Error(const std::string& what, ErrorKind kind, ErrorText text);
+    Error(const std::string& what, ErrorKind kind, ErrorText text, std::string detail = {});
     ErrorKind kind() const { return kind_; }
     // The catalog's id and arguments ("" when the message has no id).
     const std::string& textId() const { return text_.id; }
@@ -101,8 +105,11 @@ enum class ReadOnlyReason {
     Requested,  // opened read-only on purpose (OpenOptions::readOnly)
 };
 // "permission denied", "no permission to create files in its folder",
-// "read-only file system", "opened read-only" ("" for None).
-std::string_view readOnlyReasonText(ReadOnlyReason r, Lang lang = Lang::En);
+// "read-only file system", "opened read-only" ("" for None): the catalog's
+// text of the reason (readOnlyReasonId).
+std::string readOnlyReasonText(ReadOnlyReason r, Lang lang = Lang::En);
+// The catalog's id of a reason ("read-only.permission", …; "" for None).
+std::string_view readOnlyReasonId(ReadOnlyReason r);
 
 // What a read-only database refused.
 enum class ReadOnlyRefusal {
@@ -114,8 +121,8 @@ enum class ReadOnlyRefusal {
 
 // A write refused because the database can only be read: names the file and
 // why ("the database is read-only: /srv/k528.db (permission denied);
-// nothing was written"), never the SQL that failed. The command line and the
-// desktop render it in their language from path(), reason() and refusal().
+// nothing was written"), never the SQL that failed. Said by the catalog:
+// the refusal's id ("read-only.write", …) holding the reason's.
 class ReadOnlyError : public Error {
 public:
     ReadOnlyError(std::filesystem::path path, ReadOnlyReason reason,
@@ -123,8 +130,6 @@ public:
     const std::filesystem::path& path() const { return path_; }
     ReadOnlyReason reason() const { return reason_; }
     ReadOnlyRefusal refusal() const { return refusal_; }
-    // The message in `lang` (what() is the English one).
-    std::string text(Lang lang) const override;
 
 private:
     std::filesystem::path path_;
@@ -132,22 +137,56 @@ private:
     ReadOnlyRefusal refusal_;
 };
 
+// What a role refusal was about (DeniedError::action).
+enum class DeniedAction {
+    CreateMachine,
+    ChangeMachine,
+    DeleteMachine,
+    ReleaseProgram,
+    WithdrawProgram,
+    RecordTransfer,
+    RecordMessages,
+    RecordAttempt,
+    CreateTables,
+    SetUpRoles,
+    GrantRole,
+    LockConstants,
+    RecordStateTimes,
+};
+// Who may do it when that is no role's name (DeniedError's role()).
+enum class DeniedHolder {
+    Role,            // the role role() (k528_technologist, …)
+    DatabaseOwner,   // the owner of the database
+    TablesCreator,   // the owner of the database's tables with CREATEROLE
+    RoleAdmin,       // the role's admin (its creator, or CREATEROLE)
+};
+
 // An action the server refused for this user (PostgreSQL's privileges):
-// names the action and the role that may do it ("releasing a program needs
-// the role k528_technologist; ivanov has k528_operator").
+// names the database, the user, the action and the role that may do it
+// ("the database postgresql:///shop refused the user ivanov: releasing a
+// program needs the role k528_technologist; the user has k528_operator;
+// nothing was written"). Said by the catalog ("denied", its action and
+// holder ids within); what() adds the server's own words (detail()), which
+// the texts leave out: they may be in any language (the server's
+// lc_messages) and say nothing the user can act on.
 class DeniedError : public Error {
 public:
-    DeniedError(std::string action, std::string role, std::string user, std::string userRoles,
-                const std::string& serverMessage);
-    const std::string& action() const { return action_; }
+    DeniedError(std::string database, DeniedAction action, std::string role, std::string user,
+                std::string userRoles, const std::string& serverMessage);
+    DeniedError(std::string database, DeniedAction action, DeniedHolder holder, std::string user,
+                std::string userRoles, const std::string& serverMessage);
+    DeniedAction action() const { return action_; }
+    DeniedHolder holder() const { return holder_; }
+    // The role it needs ("" when the holder is not a role).
     const std::string& role() const { return role_; }
-    // The message in `lang` (what() is the English one, with the server's
-    // words; the Russian one leaves them out, as the desktop does: they may
-    // be in any language and say nothing the user can act on).
-    std::string text(Lang lang) const override;
+    const std::string& user() const { return user_; }
 
 private:
-    std::string action_, role_, user_, userRoles_;
+    DeniedError(const std::string& database, DeniedAction action, DeniedHolder holder, std::string role,
+                std::string user, const std::string& userRoles, const std::string& serverMessage);
+    DeniedAction action_;
+    DeniedHolder holder_;
+    std::string role_, user_;
 };
 
 // A write rejected by validation: values outside their definitions, or

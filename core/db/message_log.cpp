@@ -203,7 +203,7 @@ std::int64_t MessageLog::beginRun(std::string_view machine, std::int64_t dayMs,
                                   std::string author) {
     d_->db.requireWritable();
     Store& s = d_->store;
-    return asRole(s, "recording messages", kOperator, [&] {
+    return asRole(s, DeniedAction::RecordMessages, kOperator, [&] {
         auto& q = d_->st("INSERT INTO message_runs (machine, started_at, started_ms, author) "
                          "VALUES (?1, ?2, ?3, ?4) RETURNING id");
         q.bind(1, machine)
@@ -229,7 +229,7 @@ void MessageLog::write(std::int64_t runId, std::span<const MessageEvent> events)
         throw Error(ErrorKind::Invalid, said(d_->db, ErrorText{"messages.no-run", {std::to_string(runId)}}));
     const std::string machine = run.text(0);
     run.reset();
-    asRole(s, "recording messages", kOperator, [&] {
+    asRole(s, DeniedAction::RecordMessages, kOperator, [&] {
         try {
             s.beginWrite();
         } catch (const Error& e) {

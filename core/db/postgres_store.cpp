@@ -114,7 +114,7 @@ std::unique_ptr<PostgresStore> PostgresStore::open(const Location& where,
                 } catch (const Error& e) {
                     if (e.kind() != ErrorKind::Denied)
                         throw;
-                    throw DeniedError("creating the database's tables", "the owner of the database",
+                    throw DeniedError(s->path_.string(), DeniedAction::CreateTables, DeniedHolder::DatabaseOwner,
                                       s->user_, s->rolesOfUser(), e.what());
                 }
             }
@@ -365,8 +365,7 @@ std::vector<RoleInfo> PostgresStore::roles(bool setUp) {
             denied = e;
         }
         if (denied)
-            throw DeniedError("setting up the roles",
-                              "the owner of the database's tables with CREATEROLE", user_,
+            throw DeniedError(path_.string(), DeniedAction::SetUpRoles, DeniedHolder::TablesCreator, user_,
                               rolesOfUser(), denied->what());
     }
     std::vector<RoleInfo> out;
@@ -396,7 +395,7 @@ void PostgresStore::grantRole(const std::string& user, const std::string& role) 
     } catch (const Error& e) {
         if (e.kind() != ErrorKind::Denied)
             throw;
-        throw DeniedError("granting a role", "the role's admin (its creator, or CREATEROLE)", user_,
+        throw DeniedError(path_.string(), DeniedAction::GrantRole, DeniedHolder::RoleAdmin, user_,
                           rolesOfUser(), e.what());
     }
 }

@@ -42,7 +42,7 @@ ProgramRelease stateOf(int number, int current, const std::optional<ReleaseEntry
 ReleaseEntry Database::releaseProgram(std::string_view name, int number, const std::string& note,
                                       WriteOptions options) {
     Store& s = *d_->store;
-    return asRole(s, "releasing a program", kTechnologist, [&] {
+    return asRole(s, DeniedAction::ReleaseProgram, kTechnologist, [&] {
         WriteTransaction tx(s);
         const MachineRow row = requireMachine(s, name);
         const auto v = s.programAt(row.id, number, row.info.revision);
@@ -71,7 +71,7 @@ ReleaseEntry Database::releaseProgram(std::string_view name, int number, const s
 ReleaseEntry Database::withdrawProgram(std::string_view name, int number, const std::string& note,
                                        WriteOptions options) {
     Store& s = *d_->store;
-    return asRole(s, "withdrawing a program", kTechnologist, [&] {
+    return asRole(s, DeniedAction::WithdrawProgram, kTechnologist, [&] {
         WriteTransaction tx(s);
         const MachineRow row = requireMachine(s, name);
         const auto states = s.programStates(row.id, number);
@@ -135,7 +135,7 @@ TransferEntry Database::recordTransfer(TransferEntry entry) {
         entry.user = authorOf(s, {});
     if (entry.host.empty())
         entry.host = hostName();
-    return asRole(s, "recording a transfer", kOperator, [&] {
+    return asRole(s, DeniedAction::RecordTransfer, kOperator, [&] {
         WriteTransaction tx(s);
         entry.id = s.insertTransfer(entry);
         TransferFilter f;

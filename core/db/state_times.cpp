@@ -25,7 +25,7 @@ void addStateTimes(Database& d, const std::vector<StateTime>& rows) {
     if (rows.empty())
         return;
     const std::string at = formatTimestamp(systemClock()());
-    asRole(s, "recording the machines' time in each state", kOperator, [&] {
+    asRole(s, DeniedAction::RecordStateTimes, kOperator, [&] {
         WriteTransaction tx(s);
         auto& q = s.connection()(
             "INSERT INTO state_times (machine, day, source, state, ms, changed_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6) "

@@ -3,6 +3,7 @@
 // the audit log, explanations of values, and the engine's profile hook.
 #include "catalog/cparams.h"
 #include "db/database.h"
+#include "db/db_texts.h"
 #include "db/explain.h"
 #include "db/location.h"
 #include "db/sha256.h"
@@ -688,6 +689,77 @@ private slots:
         }
         QCOMPARE(d.machine("grinder-205")->revision, 1);
         QCOMPARE(d.machine("training-lathe")->revision, 1);
+    }
+
+    // A write to a database this process may only read, and a role refusal,
+    // are said by the catalog: the refusal's id holding the reason's (the
+    // action's and the role's), whole in either language; the server's words
+    // stay out of the texts (what() keeps them for a log).
+    void refusalsAreSaidByTheCatalog() {
+        QTemporaryDir dir;
+        const db::Location where = testLocation(dir, "read-only.db");
+        const std::string path = where.text();
+        { db::Database::open(where, testOptions()); }
+        db::OpenOptions o = testOptions();
+        o.readOnly = true;
+        db::Database d = db::Database::open(where, o);
+        try {
+            d.applyEdit("grinder-205", editC(22, 2133), by("x"));
+            QFAIL("a read-only database was written");
+        } catch (const db::ReadOnlyError& e) {
+            QCOMPARE(e.textId(), std::string("read-only.write"));
+            QCOMPARE(e.catalogText().within.size(), std::size_t(1));
+            QCOMPARE(e.catalogText().within[0].id, std::string("read-only.requested"));
+            QCOMPARE(e.text(db::Lang::Ru),
+                     "база данных доступна только для чтения: " + path + " (открыта только для чтения); ничего не записано");
+            QCOMPARE(e.text(db::Lang::En), "the database is read-only: " + path + " (opened read-only); nothing was written");
+            QCOMPARE(std::string(e.what()), e.text(db::Lang::En));
+        }
+        QCOMPARE(db::readOnlyReasonText(db::ReadOnlyReason::Folder, db::Lang::Ru),
+                 std::string("нет права создавать файлы в её папке"));
+        // Every action and holder a refusal can name is a text of the catalog.
+        const util::TextCatalog catalog = db::dbTexts();
+        for (int a = 0; a <= int(db::DeniedAction::RecordStateTimes); ++a)
+            for (int h = 0; h <= int(db::DeniedHolder::RoleAdmin); ++h)
+                for (const std::string roles : {"k528_operator", ""}) {
+                    const auto holder = db::DeniedHolder(h);
+                    const db::DeniedError e =
+                        holder == db::DeniedHolder::Role
+                            ? db::DeniedError("postgresql:///shop", db::DeniedAction(a), "k528_technologist", "ivanov",
+                                              roles, "permission denied for table machines")
+                            : db::DeniedError("postgresql:///shop", db::DeniedAction(a), holder, "ivanov", roles,
+                                              "permission denied for table machines");
+                    QCOMPARE(e.kind(), db::ErrorKind::Denied);
+                    for (const db::ErrorText& part : e.catalogText().within)
+                        QVERIFY2(catalog.find(part.id), part.id.c_str());
+                    const QString ru = QString::fromStdString(e.text(db::Lang::Ru));
+                    const std::string en = e.text(db::Lang::En);
+                    QVERIFY2(ru.startsWith(QStringLiteral("база данных postgresql:///shop отказала пользователю ivanov: "
+                                                          "для действия «")) &&
+                                 ru.endsWith(QStringLiteral("; ничего не записано")) && !hasEnglishSentence(ru, false),
+                             qPrintable(ru));
+                    QVERIFY2(en.find("the database postgresql:///shop refused the user ivanov: ") == 0 &&
+                                 en.find("for table") == std::string::npos,
+                             en.c_str());
+                    QCOMPARE(std::string(e.what()), en + " (the server said: permission denied for table machines)");
+                    QCOMPARE(e.detail(), std::string("permission denied for table machines"));
+                }
+        const db::DeniedError release("postgresql:///shop", db::DeniedAction::ReleaseProgram, "k528_technologist",
+                                      "ivanov", "k528_operator", "");
+        QCOMPARE(release.role(), std::string("k528_technologist"));
+        QCOMPARE(release.text(db::Lang::Ru),
+                 std::string("база данных postgresql:///shop отказала пользователю ivanov: для действия «выпуск "
+                             "программы» требуется роль k528_technologist; у пользователя: k528_operator; ничего не "
+                             "записано"));
+        QCOMPARE(release.text(db::Lang::En),
+                 std::string("the database postgresql:///shop refused the user ivanov: releasing a program needs the "
+                             "role k528_technologist; the user has k528_operator; nothing was written"));
+        const db::DeniedError grant("postgresql:///shop", db::DeniedAction::GrantRole, db::DeniedHolder::RoleAdmin,
+                                    "ivanov", "", "");
+        QCOMPARE(grant.role(), std::string());
+        QCOMPARE(grant.text(db::Lang::En),
+                 std::string("the database postgresql:///shop refused the user ivanov: granting a role needs the role's "
+                             "admin (its creator, or CREATEROLE); the user has no K528 Studio role; nothing was written"));
     }
 
     // Stored rows that break their own rules (another program's SQL): said

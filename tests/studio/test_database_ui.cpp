@@ -667,11 +667,11 @@ private slots:
             const QString said = pane->statusText();
             QVERIFY2(said.contains("k528_technologist") && said.contains("view1"), qPrintable(said));
             if (QLatin1String(lang) == QLatin1String("en"))
-                QVERIFY2(said.contains("needs the role k528_technologist") && said.contains("the user has: k528_viewer") &&
+                QVERIFY2(said.contains("needs the role k528_technologist") && said.contains("the user has k528_viewer") &&
                              said.contains("nothing was written"),
                          qPrintable(said));
             else
-                QVERIFY2(said.contains(QStringLiteral("нужна роль k528_technologist")) &&
+                QVERIFY2(said.contains(QStringLiteral("требуется роль k528_technologist")) &&
                              said.contains(QStringLiteral("у пользователя: k528_viewer")) &&
                              said.contains(QStringLiteral("ничего не записано")),
                          qPrintable(said));

@@ -153,9 +153,9 @@ private slots:
             const QString ru = MachineStore(profile::builtin("grinder-205")).keep(e, "x").error;
             QVERIFY(setLanguage("en"));
             const QString en = MachineStore(profile::builtin("grinder-205")).keep(e, "x").error;
-            if (!failed && !ru.contains("База данных доступна только для чтения: " + file + " (нет права на запись)"))
+            if (!failed && !ru.contains("база данных доступна только для чтения: " + file + " (нет права на запись)"))
                 failed = 3;
-            if (!failed && !en.contains("The database is read-only: " + file + " (permission denied)"))
+            if (!failed && !en.contains("the database is read-only: " + file + " (permission denied)"))
                 failed = 4;
             if (!failed && (en.contains("PRAGMA") || en.contains("attempt to write")))
                 failed = 5;

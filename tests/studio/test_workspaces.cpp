@@ -432,8 +432,8 @@ private slots:
         MainWindow w;
         QVERIFY(shownIn(w, QStringLiteral("operator")));
         const QString refusal = QStringLiteral(
-            "База данных postgresql:///shop отказала пользователю view1: изменение станка — нужна роль "
-            "k528_technologist; у пользователя: k528_viewer; ничего не записано.");
+            "база данных postgresql:///shop отказала пользователю view1: для действия «изменение станка» "
+            "требуется роль k528_technologist; у пользователя: k528_viewer; ничего не записано");
         for (const char* name : {"dock.constants", "dock.rparams"}) {
             auto* d = w.findChild<QDockWidget*>(name);
             QVERIFY2(d, name);

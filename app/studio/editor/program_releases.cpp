@@ -187,7 +187,7 @@ QString ProgramReleases::release(int number, const QString& note) {
                 .arg(e.revision)
                 .arg(fromStd(e.author), fromStd(e.at));
         },
-        tr("Releasing a program needs the role %1: %2"), tr("L%1 was not released: %2"));
+        tr("L%1 was not released: %2"));
 }
 
 QString ProgramReleases::withdraw(int number, const QString& note) {
@@ -203,11 +203,11 @@ QString ProgramReleases::withdraw(int number, const QString& note) {
         [&](const db::ReleaseEntry& e) {
             return tr("Withdrew L%1 of %2 by %3 at %4").arg(number).arg(machine_).arg(fromStd(e.author), fromStd(e.at));
         },
-        tr("Withdrawing a program needs the role %1: %2"), tr("L%1 was not withdrawn: %2"));
+        tr("L%1 was not withdrawn: %2"));
 }
 
 QString ProgramReleases::change(int number, QString why, const Write& write,
-                                const std::function<QString(const db::ReleaseEntry&)>& done, const QString& needsRole,
+                                const std::function<QString(const db::ReleaseEntry&)>& done,
                                 const QString& notDone) {
     if (why.isEmpty()) {
         try {
@@ -216,8 +216,6 @@ QString ProgramReleases::change(int number, QString why, const Write& write,
             refresh();
             emit statusMessage(done(e));
             return {};
-        } catch (const db::DeniedError& e) {
-            why = needsRole.arg(fromStd(e.role()), databaseErrorText(e));
         } catch (const std::exception& e) {
             why = databaseErrorText(e);
         }

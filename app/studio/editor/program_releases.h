@@ -62,12 +62,11 @@ private:
     void act(bool release);
     // What release() and withdraw() share: with `why` empty, `write` runs on
     // the database (the machine's name given) and its entry is said with
-    // `done`; a refusal is said with `needsRole` (%1 the role, %2 the
-    // server's words), any failure with `notDone` (%1 L, %2 why).
+    // `done`; a failure (a role refusal names the role itself) with
+    // `notDone` (%1 L, %2 why).
     using Write = std::function<db::ReleaseEntry(db::Database&, const std::string&)>;
     QString change(int number, QString why, const Write& write,
-                   const std::function<QString(const db::ReleaseEntry&)>& done, const QString& needsRole,
-                   const QString& notDone);
+                   const std::function<QString(const db::ReleaseEntry&)>& done, const QString& notDone);
 
     QString machine_;
     QLabel* title_ = nullptr;

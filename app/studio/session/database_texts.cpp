@@ -43,6 +43,33 @@ const TranslatedText kTexts[] = {
     {"corrupt.column-type", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "column %1 holds a value that is neither an integer nor a text (query: %2)")},
     {"corrupt.column-integer", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "column %1 holds a value where an integer belongs: %2")},
     {"migrate.failed", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "; the migration to schema version %1 failed, nothing was changed")},
+    {"read-only.write", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database is read-only: %1 (%2); nothing was written")},
+    {"read-only.create", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database is read-only: %1 (%2); a new database cannot be created there")},
+    {"read-only.upgrade", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database is read-only: %1 (%2); its schema is older than this program's and cannot be upgraded")},
+    {"read-only.recover", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database is read-only: %1 (%2); it has an unfinished transaction (a hot -journal) that only a user who may write the file can roll back; the file was left untouched")},
+    {"read-only.permission", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "permission denied")},
+    {"read-only.folder", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no permission to create files in its folder")},
+    {"read-only.file-system", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "read-only file system")},
+    {"read-only.requested", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "opened read-only")},
+    {"denied", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database %1 refused the user %2: %4 needs %5; the user has %3; nothing was written")},
+    {"denied.no-role", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the database %1 refused the user %2: %3 needs %4; the user has no K528 Studio role; nothing was written")},
+    {"denied.create-machine", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "creating a machine")},
+    {"denied.change-machine", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "changing a machine")},
+    {"denied.delete-machine", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "deleting a machine")},
+    {"denied.release-program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "releasing a program")},
+    {"denied.withdraw-program", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "withdrawing a program")},
+    {"denied.record-transfer", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "recording a transfer")},
+    {"denied.record-messages", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "recording messages")},
+    {"denied.record-attempt", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "recording a training attempt")},
+    {"denied.create-tables", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "creating the database's tables")},
+    {"denied.set-up-roles", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "setting up the roles")},
+    {"denied.grant-role", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "granting a role")},
+    {"denied.lock-constants", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "setting or clearing the constants lock")},
+    {"denied.record-state-times", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "recording the machines' time in each state")},
+    {"denied.role", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the role %1")},
+    {"denied.database-owner", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the owner of the database")},
+    {"denied.tables-creator", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the owner of the database's tables with CREATEROLE")},
+    {"denied.role-admin", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "the role's admin (its creator, or CREATEROLE)")},
     {"internal", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "an unexpected database error (please report it): %1")},
     {"schema-lacks.messages", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no message history (schema version %2 below %3: open it once with write access to upgrade it)")},
     {"schema-lacks.attempts", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "%1: the database has no training attempts (schema version %2 below %3: open it once with write access to upgrade it)")},
@@ -148,8 +175,17 @@ QString databaseText(std::string_view id, const std::vector<std::string>& args) 
 QString databaseText(const db::ErrorText& t) {
     if (!hasDatabaseText(t.id) || (!t.tail.empty() && !hasDatabaseText(t.tail)))
         return {};
+    bool said = true;
     QString s = t.at.empty() ? QString() : QString::fromStdString(t.at) + QStringLiteral(": ");
-    s += databaseText(t.id, t.args);
+    s += sayWithin({&kDatabaseTexts}, t.id, t.args, t.within,
+                   [&](const db::ErrorText& part) {
+                       QString text = databaseText(part);
+                       said = said && !text.isEmpty();
+                       return text;
+                   },
+                   [] { return QString(); });
+    if (!said)
+        return {}; // a part the desktop lacks: the caller says core's words
     if (!t.tail.empty())
         s += databaseText(t.tail, t.tailArgs);
     return s;

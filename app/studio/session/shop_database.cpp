@@ -221,98 +221,16 @@ QString databaseErrorDetail(const std::exception& e) {
     return inWindowLanguage(quotedDetail(e), QString::fromUtf8(e.what()));
 }
 
-namespace {
-
-// What a role refusal was about (db::DeniedError::action), in the window's language.
-QString deniedAction(const std::string& action) {
-    static const char* const kActions[] = {
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "creating a machine"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "changing a machine"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "deleting a machine"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "releasing a program"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "withdrawing a program"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording a transfer"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording messages"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording a training attempt"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "creating the database's tables"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "setting up the roles"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "granting a role"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "setting or clearing the constants lock"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "recording the machines' time in each state"),
-    };
-    for (const char* a : kActions)
-        if (action == a)
-            return QCoreApplication::translate("k528::studio::ShopDatabase", a);
-    return QString::fromStdString(action);
-}
-
-// A role refusal in the window's language: who was refused
-// what, the role it needs, the roles the user has, that nothing was written.
-QString deniedText(const db::DeniedError& e) {
-    std::string user;
-    QStringList roles; // the K528 Studio roles the user is a member of
-    try {
-        ShopDatabase::at()->use([&](db::Database& d) {
-            user = d.sessionUser();
-            for (const db::RoleInfo& r : d.roles())
-                if (std::find(r.members.begin(), r.members.end(), user) != r.members.end())
-                    roles << QString::fromStdString(r.role);
-            return 0;
-        });
-    } catch (const std::exception&) {
-    }
-    roles.sort();
-    const QString has = roles.isEmpty()
-                            ? QCoreApplication::translate("k528::studio::ShopDatabase", "no K528 Studio role")
-                            : roles.join(QStringLiteral(", "));
-    return QCoreApplication::translate(
-               "k528::studio::ShopDatabase",
-               "The database %1 refused the user %2: %3 needs the role %4; the user has: %5; nothing was written.")
-        .arg(ShopDatabase::currentText(), QString::fromStdString(user), deniedAction(e.action()),
-             QString::fromStdString(e.role()), has);
-}
-
-} // namespace
-
 QString databaseErrorText(const std::exception& e) {
-    const auto* r = dynamic_cast<const db::ReadOnlyError*>(&e);
-    // A role refusal in our words only: the server's message may be in any
-    // language (its lc_messages) and says nothing the user can act on.
-    if (const auto* denied = dynamic_cast<const db::DeniedError*>(&e))
-        return deniedText(*denied);
-    if (!r) {
-        const auto* error = dynamic_cast<const db::Error*>(&e);
-        // A text of the database's catalog: its sentence in the window's language.
-        if (error && !error->textId().empty())
-            if (const QString text = databaseText(error->catalogText()); !text.isEmpty())
-                return text;
-        if (!error)
-            return QString::fromUtf8(e.what());
-        return inWindowLanguage(failedText(*error, e), QString::fromUtf8(e.what()));
-    }
-    // By db::ReadOnlyReason and db::ReadOnlyRefusal.
-    static const char* const kReasons[] = {
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "permission denied"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "permission denied"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "no permission to create files in its folder"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "read-only file system"),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase", "opened read-only"),
-    };
-    static const char* const kTexts[] = {
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
-                          "The database is read-only: %1 (%2); nothing was written."),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
-                          "The database is read-only: %1 (%2); a new database cannot be created there."),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
-                          "The database is read-only: %1 (%2); its schema is older than this "
-                          "program's and cannot be upgraded."),
-        QT_TRANSLATE_NOOP("k528::studio::ShopDatabase",
-                          "The database is read-only: %1 (%2); it has an unfinished transaction that "
-                          "only a user who may write the file can roll back."),
-    };
-    const auto translated = [](const char* s) { return QCoreApplication::translate("k528::studio::ShopDatabase", s); };
-    return translated(kTexts[static_cast<int>(r->refusal())])
-        .arg(QString::fromStdString(r->path().string()), translated(kReasons[static_cast<int>(r->reason())]));
+    const auto* error = dynamic_cast<const db::Error*>(&e);
+    if (!error)
+        return QString::fromUtf8(e.what());
+    // A text of the database's catalog (a read-only file, a role refusal, …):
+    // its sentence in the window's language.
+    if (!error->textId().empty())
+        if (const QString text = databaseText(error->catalogText()); !text.isEmpty())
+            return text;
+    return inWindowLanguage(failedText(*error, e), QString::fromUtf8(e.what()));
 }
 
 } // namespace k528::studio

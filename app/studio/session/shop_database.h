@@ -122,11 +122,12 @@ private:
     ino_t inode_ = 0;
 };
 
-// The text of a database error for the window, in its language: a
-// read-only database («База данных доступна только для чтения: …»); any
-// other in English as core says it, in Russian a sentence naming the
-// database and what is wrong (databaseErrorKindText), with the library's
-// own words quoted (databaseErrorDetail).
+// The text of a database error for the window, in its language: an error
+// of the database's catalog (a read-only file, a role refusal, a rejected
+// write, …) by its id (databaseText); any other in English as core says
+// it, in Russian a sentence naming the database and what is wrong
+// (databaseErrorKindText), with the library's own words quoted
+// (databaseErrorDetail).
 QString databaseErrorText(const std::exception& e);
 // What is wrong with a database, by the kind of its error («она повреждена…»).
 QString databaseErrorKindText(db::ErrorKind kind);
