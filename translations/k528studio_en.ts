@@ -2322,46 +2322,6 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
         <translation>the fastest feed %1 mm/min is above what the drive reaches at DAC MAX (%2 mm/min)</translation>
     </message>
     <message>
-        <source>the PLC sets the mode</source>
-        <translation>the PLC sets the mode</translation>
-    </message>
-    <message>
-        <source>not in this mode</source>
-        <translation>not in this mode</translation>
-    </message>
-    <message>
-        <source>a program is active</source>
-        <translation>a program is active</translation>
-    </message>
-    <message>
-        <source>read-only parameter</source>
-        <translation>read-only parameter</translation>
-    </message>
-    <message>
-        <source>no such parameter</source>
-        <translation>no such parameter</translation>
-    </message>
-    <message>
-        <source>value out of range</source>
-        <translation>value out of range</translation>
-    </message>
-    <message>
-        <source>no such program</source>
-        <translation>no such program</translation>
-    </message>
-    <message>
-        <source>the axis is not present</source>
-        <translation>the axis is not present</translation>
-    </message>
-    <message>
-        <source>no such key</source>
-        <translation>no such key</translation>
-    </message>
-    <message>
-        <source>the controller is off</source>
-        <translation>the controller is off</translation>
-    </message>
-    <message>
         <source>the cutting speed must be a positive number</source>
         <translation>the cutting speed must be a positive number</translation>
     </message>
@@ -3245,6 +3205,10 @@ Your change was based on revision %4; revision %5 is the newest now.</translatio
     <message>
         <source>the role's admin (its creator, or CREATEROLE)</source>
         <translation>the role's admin (its creator, or CREATEROLE)</translation>
+    </message>
+    <message>
+        <source>machine %1: %2</source>
+        <translation>machine %1: %2</translation>
     </message>
 </context>
 <context>
@@ -7636,6 +7600,46 @@ Its comment stays: %3</translation>
     <message>
         <source>the zero offset would leave the 32-bit range</source>
         <translation>the zero offset would leave the 32-bit range</translation>
+    </message>
+    <message>
+        <source>the PLC sets the mode</source>
+        <translation>the PLC sets the mode</translation>
+    </message>
+    <message>
+        <source>not in this mode</source>
+        <translation>not in this mode</translation>
+    </message>
+    <message>
+        <source>a program is active</source>
+        <translation>a program is active</translation>
+    </message>
+    <message>
+        <source>read-only parameter</source>
+        <translation>read-only parameter</translation>
+    </message>
+    <message>
+        <source>no such parameter</source>
+        <translation>no such parameter</translation>
+    </message>
+    <message>
+        <source>value out of range</source>
+        <translation>value out of range</translation>
+    </message>
+    <message>
+        <source>no such program</source>
+        <translation>no such program</translation>
+    </message>
+    <message>
+        <source>the axis is not present</source>
+        <translation>the axis is not present</translation>
+    </message>
+    <message>
+        <source>no such key</source>
+        <translation>no such key</translation>
+    </message>
+    <message>
+        <source>the controller is off</source>
+        <translation>the controller is off</translation>
     </message>
 </context>
 <context>

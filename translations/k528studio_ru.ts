@@ -2322,46 +2322,6 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
         <translation>наибольшая подача %1 мм/мин больше той, что привод даёт при МАКС.ЦАП (%2 мм/мин)</translation>
     </message>
     <message>
-        <source>the PLC sets the mode</source>
-        <translation>Режим задан из ПЛК</translation>
-    </message>
-    <message>
-        <source>not in this mode</source>
-        <translation>Не в этом режиме</translation>
-    </message>
-    <message>
-        <source>a program is active</source>
-        <translation>Выполняется программа</translation>
-    </message>
-    <message>
-        <source>read-only parameter</source>
-        <translation>Параметр только для чтения</translation>
-    </message>
-    <message>
-        <source>no such parameter</source>
-        <translation>Нет такого параметра</translation>
-    </message>
-    <message>
-        <source>value out of range</source>
-        <translation>Значение вне диапазона</translation>
-    </message>
-    <message>
-        <source>no such program</source>
-        <translation>L отсутствует</translation>
-    </message>
-    <message>
-        <source>the axis is not present</source>
-        <translation>Ось отсутствует</translation>
-    </message>
-    <message>
-        <source>no such key</source>
-        <translation>Нет такой клавиши</translation>
-    </message>
-    <message>
-        <source>the controller is off</source>
-        <translation>Устройство выключено</translation>
-    </message>
-    <message>
         <source>the cutting speed must be a positive number</source>
         <translation>скорость резания должна быть положительным числом</translation>
     </message>
@@ -3245,6 +3205,10 @@ Your change was based on revision %4; revision %5 is the newest now.</source>
     <message>
         <source>the role's admin (its creator, or CREATEROLE)</source>
         <translation>администратор роли (её создатель или CREATEROLE)</translation>
+    </message>
+    <message>
+        <source>machine %1: %2</source>
+        <translation>станок %1: %2</translation>
     </message>
 </context>
 <context>
@@ -7636,6 +7600,46 @@ Its comment stays: %3</source>
     <message>
         <source>the zero offset would leave the 32-bit range</source>
         <translation>смещение нуля вышло бы за 32-разрядный диапазон</translation>
+    </message>
+    <message>
+        <source>the PLC sets the mode</source>
+        <translation>режим задан из ПЛК</translation>
+    </message>
+    <message>
+        <source>not in this mode</source>
+        <translation>не в этом режиме</translation>
+    </message>
+    <message>
+        <source>a program is active</source>
+        <translation>выполняется программа</translation>
+    </message>
+    <message>
+        <source>read-only parameter</source>
+        <translation>параметр только для чтения</translation>
+    </message>
+    <message>
+        <source>no such parameter</source>
+        <translation>нет такого параметра</translation>
+    </message>
+    <message>
+        <source>value out of range</source>
+        <translation>значение вне диапазона</translation>
+    </message>
+    <message>
+        <source>no such program</source>
+        <translation>программа отсутствует</translation>
+    </message>
+    <message>
+        <source>the axis is not present</source>
+        <translation>ось отсутствует</translation>
+    </message>
+    <message>
+        <source>no such key</source>
+        <translation>нет такой клавиши</translation>
+    </message>
+    <message>
+        <source>the controller is off</source>
+        <translation>устройство выключено</translation>
     </message>
 </context>
 <context>

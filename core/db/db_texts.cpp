@@ -17,6 +17,10 @@ constexpr std::array kTexts = {
     util::CatalogText{"machine-exists",
                 "станок с именем %1 уже есть в %2",
                 "a machine named %1 already exists in %2"},
+    // A text of another module about a machine ("machine NAME: the text").
+    util::CatalogText{"machine.said",
+                "станок %1: %2",
+                "machine %1: %2"},
     util::CatalogText{"rename-exists",
                 "нельзя переименовать %1 в %2: станок с таким именем уже есть",
                 "cannot rename %1 to %2: a machine of that name exists"},

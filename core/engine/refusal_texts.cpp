@@ -10,6 +10,38 @@ namespace k528::engine {
 namespace {
 
 constexpr std::array kTexts = {
+    // A refusal of its kind only (an OpResult without an id of its own):
+    // refusalKindId.
+    util::CatalogText{"kind.mode-from-plc",
+                "режим задан из ПЛК",
+                "the PLC sets the mode"},
+    util::CatalogText{"kind.wrong-mode",
+                "не в этом режиме",
+                "not in this mode"},
+    util::CatalogText{"kind.program-active",
+                "выполняется программа",
+                "a program is active"},
+    util::CatalogText{"kind.read-only",
+                "параметр только для чтения",
+                "read-only parameter"},
+    util::CatalogText{"kind.no-parameter",
+                "нет такого параметра",
+                "no such parameter"},
+    util::CatalogText{"kind.out-of-range",
+                "значение вне диапазона",
+                "value out of range"},
+    util::CatalogText{"kind.no-program",
+                "программа отсутствует",
+                "no such program"},
+    util::CatalogText{"kind.axis-absent",
+                "ось отсутствует",
+                "the axis is not present"},
+    util::CatalogText{"kind.no-key",
+                "нет такой клавиши",
+                "no such key"},
+    util::CatalogText{"kind.not-powered",
+                "устройство выключено",
+                "the controller is off"},
     util::CatalogText{"mode-key",
                 "F%1 не выбирает режим",
                 "F%1 selects no mode"},
@@ -70,12 +102,40 @@ constexpr std::array kTexts = {
 
 util::TextCatalog refusalTexts() { return util::TextCatalog(kTexts); }
 
+std::string_view refusalKindId(Refusal r) {
+    switch (r) {
+    case Refusal::None:
+        return {};
+    case Refusal::ModeFromPlc:
+        return "kind.mode-from-plc";
+    case Refusal::WrongMode:
+        return "kind.wrong-mode";
+    case Refusal::ProgramActive:
+        return "kind.program-active";
+    case Refusal::ReadOnly:
+        return "kind.read-only";
+    case Refusal::NoSuchParameter:
+        return "kind.no-parameter";
+    case Refusal::ValueOutOfRange:
+        return "kind.out-of-range";
+    case Refusal::NoSuchProgram:
+        return "kind.no-program";
+    case Refusal::AxisAbsent:
+        return "kind.axis-absent";
+    case Refusal::NoSuchKey:
+        return "kind.no-key";
+    case Refusal::NotPowered:
+        return "kind.not-powered";
+    }
+    return {};
+}
+
 std::string refusalText(const OpResult& r, bool russian) {
     if (r.ok())
         return {};
     if (!r.id.empty())
         return refusalTexts().render(r.id, r.args, russian);
-    std::string s(russian ? refusalTextRu(r.refusal) : refusalTextEn(r.refusal));
+    std::string s = refusalTexts().render(refusalKindId(r.refusal), {}, russian);
     for (const std::string& a : r.args)
         s += " " + a;
     return s;

@@ -95,7 +95,5 @@ struct OpResult {
         return {r, std::move(id), std::move(args)};
     }
 };
-std::string_view refusalTextEn(Refusal r);
-std::string_view refusalTextRu(Refusal r);
 
 } // namespace k528::engine

@@ -1,5 +1,7 @@
 #include "transfer/transfer.h"
 
+#include "db/db_texts.h"
+
 #include "db/sha256.h"
 
 #include <cstdio>
@@ -173,11 +175,11 @@ std::string ReleaseCheck::message(bool russian) const {
 }
 
 PlanError::PlanError(std::string machine, link::LinkError error)
-    : std::runtime_error("machine " + machine + ": " + error.text(false)), machine_(std::move(machine)),
-      error_(std::move(error)) {}
+    : std::runtime_error(db::dbText("machine.said", std::vector<std::string>{machine, error.text(false)}, false)),
+      machine_(std::move(machine)), error_(std::move(error)) {}
 
 std::string PlanError::text(bool russian) const {
-    return (russian ? "станок " : "machine ") + machine_ + ": " + error_.text(russian);
+    return db::dbText("machine.said", std::vector<std::string>{machine_, error_.text(russian)}, russian);
 }
 
 link::PushPlan releasedPlan(const db::Database& db, const std::string& machine,

@@ -134,6 +134,16 @@ private slots:
         r.start(1);
         QCOMPARE(r.ctl->setR(1, 5).refusal, k528::engine::Refusal::ProgramActive);
     }
+    // A refusal without an id of its own says its kind, from the same catalog.
+    void aRefusalOfItsKindOnly() {
+        k528::engine::OpResult off;
+        off.refusal = k528::engine::Refusal::NotPowered;
+        QCOMPARE(off.text(), std::string("the controller is off"));
+        QCOMPARE(off.text(true), std::string("устройство выключено"));
+        off.args = {"X"};
+        QCOMPARE(off.text(), std::string("the controller is off X"));
+        QVERIFY(k528::engine::OpResult::accepted().text(true).empty());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestCoordinates)

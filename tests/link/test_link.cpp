@@ -13,6 +13,7 @@
 #include "program/formatter.h"
 #include "program/parser.h"
 #include "resources/embedded.h"
+#include "transfer/transfer.h"
 
 #include <QtTest>
 #include <algorithm>
@@ -740,6 +741,19 @@ private slots:
         QCOMPARE(b.image->commits(), commits);
         e = planProgramFile(link, "N1 G1 X1\n", "none.k528", plan);
         QCOMPARE(e.kind, LinkError::Kind::Input);
+    }
+    // A stored machine the controller would refuse: the machine first, then
+    // the link's words, in either language (transfer::PlanError).
+    void aMachineThePlanRefusesIsNamed() {
+        profile::MachineProfile p = profile::builtin("grinder-205");
+        p.r[5] = std::int64_t(1) << 40; // outside the controller's 32 bits
+        PushPlan plan;
+        const LinkError e = planMachineFile(k528Map(), p, plan);
+        QCOMPARE(e.kind, LinkError::Kind::Input);
+        const transfer::PlanError refused("grinder-205", e);
+        QCOMPARE(refused.text(true), "станок grinder-205: " + e.text(true));
+        QCOMPARE(refused.text(false), "machine grinder-205: " + e.text(false));
+        QCOMPARE(std::string(refused.what()), refused.text(false));
     }
     void monitorReadsEveryViewsDataAndSaysWhatChanged() {
         Bench b;

@@ -319,6 +319,16 @@ const TranslatedText kDescriptions[] = {
 // core/engine/refusal_texts.cpp's catalog (why the controller refused an
 // operator function), each text marked for the translators.
 const TranslatedText kRefusals[] = {
+        {"kind.mode-from-plc", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the PLC sets the mode")},
+        {"kind.wrong-mode", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "not in this mode")},
+        {"kind.program-active", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "a program is active")},
+        {"kind.read-only", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "read-only parameter")},
+        {"kind.no-parameter", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "no such parameter")},
+        {"kind.out-of-range", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "value out of range")},
+        {"kind.no-program", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "no such program")},
+        {"kind.axis-absent", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the axis is not present")},
+        {"kind.no-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "no such key")},
+        {"kind.not-powered", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the controller is off")},
         {"mode-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "F%1 selects no mode")},
         {"mode-from-plc", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "the PLC sets the mode (Z1000.8-10 = %1)")},
         {"override-key", QT_TRANSLATE_NOOP("k528::studio::RefusalTexts", "override keys are L1..L4, not L%1")},
@@ -450,20 +460,7 @@ QString findingText(const proveout::Finding& f) {
 }
 
 QString refusalText(engine::Refusal r) {
-    switch (r) {
-    case engine::Refusal::None: return {};
-    case engine::Refusal::ModeFromPlc: return QCoreApplication::translate("k528::studio::CoreTexts", "the PLC sets the mode");
-    case engine::Refusal::WrongMode: return QCoreApplication::translate("k528::studio::CoreTexts", "not in this mode");
-    case engine::Refusal::ProgramActive: return QCoreApplication::translate("k528::studio::CoreTexts", "a program is active");
-    case engine::Refusal::ReadOnly: return QCoreApplication::translate("k528::studio::CoreTexts", "read-only parameter");
-    case engine::Refusal::NoSuchParameter: return QCoreApplication::translate("k528::studio::CoreTexts", "no such parameter");
-    case engine::Refusal::ValueOutOfRange: return QCoreApplication::translate("k528::studio::CoreTexts", "value out of range");
-    case engine::Refusal::NoSuchProgram: return QCoreApplication::translate("k528::studio::CoreTexts", "no such program");
-    case engine::Refusal::AxisAbsent: return QCoreApplication::translate("k528::studio::CoreTexts", "the axis is not present");
-    case engine::Refusal::NoSuchKey: return QCoreApplication::translate("k528::studio::CoreTexts", "no such key");
-    case engine::Refusal::NotPowered: return QCoreApplication::translate("k528::studio::CoreTexts", "the controller is off");
-    }
-    return {};
+    return kRefusalTexts.text(engine::refusalKindId(r), {}).value_or(QString());
 }
 
 bool hasRefusalText(std::string_view id) { return kRefusalTexts.has(id); }

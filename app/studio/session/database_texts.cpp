@@ -15,6 +15,7 @@ const TranslatedText kTexts[] = {
     {"no-machine", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no machine \"%1\" in %2 (machines: %3)")},
     {"no-machine.none", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "no machine \"%1\" in %2 (machines: none)")},
     {"machine-exists", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "a machine named %1 already exists in %2")},
+    {"machine.said", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: %2")},
     {"rename-exists", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "cannot rename %1 to %2: a machine of that name exists")},
     {"constants-locked", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: the machine constants are locked by the trainer for the class «%2» (setting %3): %4 not changed; nothing was written (the trainer unlocks them first: k528 db set %1 %3=)")},
     {"rejected.error", QT_TRANSLATE_NOOP("k528::studio::DatabaseTexts", "machine %1: rejected, nothing was written (%2 error):")},
