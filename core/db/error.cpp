@@ -165,11 +165,13 @@ ErrorText deniedText(const std::string& database, DeniedAction action, DeniedHol
     return t;
 }
 
-// The English text and the server's words (kept in what() for a log; the
-// texts leave them out).
-std::string withServerWords(const ErrorText& t, const std::string& serverMessage) {
-    std::string s = renderText(t, false);
-    return serverMessage.empty() ? s : s + " (the server said: " + serverMessage + ")";
+// The refusal as an Error: said by the catalog (`t`); what() is its English
+// and the server's words (kept for a log; the texts leave them out).
+Error deniedError(ErrorText t, const std::string& serverMessage) {
+    std::string what = renderText(t, false);
+    if (!serverMessage.empty())
+        what += " (the server said: " + serverMessage + ")";
+    return Error(what, ErrorKind::Denied, std::move(t), serverMessage);
 }
 
 } // namespace
@@ -184,8 +186,7 @@ DeniedError::DeniedError(std::string database, DeniedAction action, DeniedHolder
 
 DeniedError::DeniedError(const std::string& database, DeniedAction action, DeniedHolder holder, std::string role,
                          std::string user, const std::string& userRoles, const std::string& serverMessage)
-    : Error(withServerWords(deniedText(database, action, holder, role, user, userRoles), serverMessage),
-            ErrorKind::Denied, deniedText(database, action, holder, role, user, userRoles), serverMessage),
+    : Error(deniedError(deniedText(database, action, holder, role, user, userRoles), serverMessage)),
       action_(action), holder_(holder), role_(std::move(role)), user_(std::move(user)) {}
 
 } // namespace k528::db
